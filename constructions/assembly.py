@@ -1,0 +1,452 @@
+"""Position by compass: assemble a mechanism one dyad at a time, recording every act.
+
+The order is the student's: mark the frame, lay off the crank at θ2, then find each
+joint from two things already drawn:
+
+* two arcs (a pin between two links, RRR): circle–circle;
+* an arc and a guide (a pin on a slider, RRP): line–circle;
+* two guides (a pin in a slot and on a slider): line–line;
+* a slot swung through a located block (the slotted lever, R-P-R): the line from
+  the pivot through the block, or the tangent from the block to the offset circle;
+* a point of a link already drawn: two arcs from two of its points.
+
+When nothing more can be found this way the mechanism needs a triad, and tarsim
+says so.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from . import geometry as g
+from .errors import AssemblyError, DegenerateInput, NoIntersection, TarsimError
+from .model import Mechanism, Slide, SlideKind
+from .record import VERBS, Construction, Ref, Role
+
+__all__ = ["Assembly", "assemble", "point_ref"]
+
+
+def point_ref(name: str) -> Ref:
+    """The id of the step that locates point ``name``."""
+    return f"P:{name}"
+
+
+@dataclass
+class Assembly:
+    """A mechanism drawn at one position: its construction and where each point is."""
+
+    mechanism: Mechanism
+    construction: Construction
+    points: dict[str, Ref]
+    guides: dict[int, Ref]
+    axes: dict[int, Ref]
+
+    def point(self, name: str) -> g.Point:
+        """The located point ``name``."""
+        return self.construction.output(self.points[name])
+
+    def xy(self, name: str) -> tuple[float, float]:
+        """Cartesian coordinates (metres) of point ``name``."""
+        return self.point(name).xy
+
+    def guide(self, index: int) -> g.Line:
+        """The global line of slide ``index`` (``mechanism.slides[index]``)."""
+        return self.construction.output(self.guides[index])
+
+
+def assemble(mech: Mechanism) -> Assembly:
+    """Locate every point of ``mech`` by recorded compass constructions.
+
+    Raises
+    ------
+    AssemblyError
+        If a dyad cannot close at this input angle, or no dyad order exists.
+    """
+    return _Assembler(mech).run()
+
+
+class _Assembler:
+    def __init__(self, mech: Mechanism):
+        self.m = mech
+        self.c = Construction()
+        self.known: dict[str, Ref] = {}
+        self.axes: dict[int, Ref] = {}
+        self.guides: dict[int, Ref] = {}
+        self.theta = mech.drive.angle
+        self.size = max([1e-9] + [math.hypot(*xy) for _, xy in mech.frame.points]
+                        + [k.span(a, b) for k in mech.links for a in k.names for b in k.names])
+
+    # ----- wording -------------------------------------------------------------
+    def L(self, metres: float) -> str:
+        return self.m.units.length_text(metres)
+
+    def angle_text(self, rad: float) -> str:
+        if self.m.units.angle == "rad":
+            return f"{rad:.4f} rad"
+        return f"{math.degrees(rad):.4f}".rstrip("0").rstrip(".") + "°"
+
+    def at(self) -> str:
+        return f"at θ{self.m.drive.link} = {self.angle_text(self.theta)}"
+
+    # ----- bookkeeping ---------------------------------------------------------
+    def found(self, name: str, verb: str, *inputs: Ref, sentence: str, **params) -> None:
+        self.known[name] = self.c.draw(point_ref(name), verb, *inputs, label=name,
+                                       sentence=sentence, role=Role.RESULT, **params)
+
+    def posed(self, number: int) -> bool:
+        if number == 1:
+            return True
+        k = self.m.link(number)
+        return sum(n in self.known for n in k.names) >= 2 or (
+            number in self.axes and any(n in self.known for n in k.names))
+
+    def branch(self, point: str, default: str | None, choices: tuple[str, str],
+               context: str) -> str | tuple[float, float]:
+        b = self.m.branches.get(point, default)
+        if b is None:
+            raise AssemblyError(
+                f"point {point} has two positions ({context}); choose one in [assembly]: "
+                f'{point} = "{choices[0]}" or "{choices[1]}"', joint=point)
+        if isinstance(b, str) and b not in choices:
+            raise AssemblyError(f"[assembly] {point} = \"{b}\" does not apply here ({context}); "
+                                f'use "{choices[0]}" or "{choices[1]}"', joint=point)
+        return b
+
+    def pick_near(self, verb: str, inputs: tuple[Ref, ...], choices: tuple[str, str],
+                  near: tuple[float, float]) -> str:
+        """Turn a near-point branch into the explicit pick it means."""
+        args = [self.c.output(r) for r in inputs]
+        best = None
+        for pick in choices:
+            p, _ = VERBS[verb](*args, pick=pick)
+            d = math.dist(p.xy, near)
+            if best is None or d < best[0]:
+                best = (d, pick)
+        return best[1]
+
+    # ----- the run -------------------------------------------------------------
+    def run(self) -> Assembly:
+        self.mark_frame()
+        self.lay_off_input()
+        rules = (self.rigid_point, self.slot_through_block, self.two_guides,
+                 self.arc_and_guide, self.two_arcs)
+        wanted = [n for n in self.m.point_names]
+        while any(n not in self.known for n in wanted):
+            if not any(rule() for rule in rules):
+                missing = ", ".join(n for n in wanted if n not in self.known)
+                raise AssemblyError(
+                    f"no dyad locates {missing}: this mechanism needs a triad, which tarsim "
+                    "cannot yet construct by compass")
+        return Assembly(self.m, self.c, dict(self.known), dict(self.guides), dict(self.axes))
+
+    def mark_frame(self) -> None:
+        for name, (x, y) in self.m.frame.points:
+            self.known[name] = self.c.give(
+                point_ref(name), g.Point(x, y), label=name,
+                sentence=f"Mark the frame point {name} at ({self.L(x)}, {self.L(y)}).")
+        for i, s in enumerate(self.m.slides):
+            if s.guide_link == 1:
+                (tx, ty), (dx, dy) = s.through, s.direction
+                line, _ = g.line_through(g.Point(tx, ty), g.Point(dx, dy, 0.0))
+                if (line.direction[0] * dx + line.direction[1] * dy) < 0:
+                    line = g.Line(-line.a, -line.b, -line.c)
+                self.guides[i] = self.c.give(
+                    f"guide:{i}", line, label=f"guide of {s.point}",
+                    sentence=f"Draw the guide of {s.point} on the frame at "
+                             f"{self.angle_text(math.atan2(dy, dx))}.")
+
+    def lay_off_input(self) -> None:
+        d = self.m.drive
+        k = self.m.link(d.link)
+        if len(k.names) < 2 or k.names[0] not in self.known:
+            raise AssemblyError(f"the input {k.label} must turn about a frame point, listed "
+                                "first among its points, and carry a second point", link=k.number)
+        pivot, tip = k.names[0], k.names[1]
+        x, y = self.c.output(self.known[pivot]).xy
+        ux, uy = math.cos(d.angle), math.sin(d.angle)
+        ray = self.c.give(f"ray:{d.link}", g.Line(-uy, ux, uy * x - ux * y),
+                          label=f"θ{d.link}", sentence=f"Through {pivot} draw the ray at "
+                          f"θ{d.link} = {self.angle_text(d.angle)}.")
+        self.found(tip, "lay_off", self.known[pivot], ray, length=k.span(pivot, tip),
+                   sentence=f"With centre {pivot} and radius {pivot}{tip} = "
+                            f"{self.L(k.span(pivot, tip))}, lay off {tip} {self.at()}.")
+        self.axes[d.link] = self.c.draw(f"axis:{d.link}", "line_through", self.known[pivot],
+                                        self.known[tip], label=f"link {d.link}")
+
+    # ----- rules: each locates something and returns True, or returns False -----
+    def rigid_point(self) -> bool:
+        for k in self.m.links:
+            if k.number == 1 or not self.posed(k.number):
+                continue
+            for name in k.names:
+                if name not in self.known:
+                    self.locate_on_link(k.number, name)
+                    return True
+        return False
+
+    def locate_on_link(self, number: int, name: str) -> None:
+        k = self.m.link(number)
+        on = [n for n in k.names if n in self.known]
+        px, py = k.local(name)
+        if len(on) >= 2:
+            a, b = on[0], on[1]
+            (ax, ay), (bx, by) = k.local(a), k.local(b)
+            ux, uy = bx - ax, by - ay
+            cross = ux * (py - ay) - uy * (px - ax)
+            if abs(cross) <= 1e-12 * (ux * ux + uy * uy):
+                along = (ux * (px - ax) + uy * (py - ay)) / math.hypot(ux, uy)
+                self.found(name, "lay_off", self.known[a], self.known[b], length=along,
+                           sentence=f"{name} lies on line {a}{b} of link {number}: lay off "
+                                    f"{a}{name} = {self.L(abs(along))} from {a}.")
+                return
+            ra, rb = k.span(a, name), k.span(b, name)
+            arc_a = self.c.draw(f"arc:{name}@{a}", "swing_arc", self.known[a], radius=ra,
+                                label=f"arc {a}{name}")
+            arc_b = self.c.draw(f"arc:{name}@{b}", "swing_arc", self.known[b], radius=rb,
+                                label=f"arc {b}{name}")
+            self.found(name, "intersect_circles", arc_a, arc_b,
+                       pick="left" if cross > 0 else "right",
+                       sentence=f"{name} is a point of link {number}: with centres {a} and {b} "
+                                f"and radii {a}{name} = {self.L(ra)} and {b}{name} = {self.L(rb)}, "
+                                f"cut arcs at {name}.")
+            return
+        base = on[0]
+        bx, by = k.local(base)
+        du, dv = px - bx, py - by
+        along = f"Along link {number}, lay off {base}{name} = {self.L(abs(du))} from {base}."
+        if dv == 0.0:
+            self.found(name, "lay_off", self.known[base], self.axes[number], length=du,
+                       sentence=along)
+            return
+        foot = self.c.draw(f"foot:{name}", "lay_off", self.known[base], self.axes[number],
+                           length=du, sentence=along)
+        perp = self.c.draw(f"perp:{name}", "perpendicular_through", foot, self.axes[number])
+        self.found(name, "lay_off", foot, perp, length=dv,
+                   sentence=f"Square off {self.L(abs(dv))} from the axis to mark {name}.")
+
+    def two_arcs(self) -> bool:
+        for name in self.m.point_names:
+            if name in self.known or self.slides_at(name):
+                continue
+            carriers = [n for n in self.m.links_at(name)
+                        if not self.posed(n) and any(p in self.known for p in self.m.link(n).names)]
+            if len(carriers) < 2:
+                continue
+            i, j = sorted(carriers)[:2]
+            x = self.one_known(i)
+            y = self.one_known(j)
+            ri, rj = self.m.link(i).span(x, name), self.m.link(j).span(y, name)
+            arc_i = self.c.draw(f"arc:{name}@{x}", "swing_arc", self.known[x], radius=ri,
+                                label=f"arc {x}{name}",
+                                sentence=f"With centre {x} and radius {x}{name} = {self.L(ri)}, "
+                                         f"swing an arc.")
+            arc_j = self.c.draw(f"arc:{name}@{y}", "swing_arc", self.known[y], radius=rj,
+                                label=f"locus of {name}",
+                                sentence=f"With centre {y} and radius {y}{name} = {self.L(rj)}, "
+                                         f"draw the locus of {name}.")
+            pick = self.branch(name, None, ("left", "right"), f"left or right of {x} → {y}")
+            if not isinstance(pick, str):
+                pick = self.pick_near("intersect_circles", (arc_i, arc_j), ("left", "right"), pick)
+            try:
+                self.found(name, "intersect_circles", arc_i, arc_j, pick=pick,
+                           sentence=f"The arcs cut at {name} ({pick} of {x} → {y}); "
+                                    f"join {x}{name} and {y}{name}.")
+            except NoIntersection:
+                raise self.cannot_reach(name, i, x, ri, y, rj) from None
+            return True
+        return False
+
+    def cannot_reach(self, name: str, i: int, x: str, ri: float, y: str, rj: float) -> AssemblyError:
+        d = g.distance(self.c.output(self.known[x]), self.c.output(self.known[y]))
+        if d > ri + rj:
+            why = f"|{y}{x}| = {self.L(d)} > {self.L(ri)} + {self.L(rj)}"
+        else:
+            why = f"|{y}{x}| = {self.L(d)} < |{self.L(ri)} − {self.L(rj)}|"
+        return AssemblyError(
+            f"{self.m.link(i).label} ({x}{name} = {self.L(ri)}) cannot reach the circle of "
+            f"{name} about {y} {self.at()}: {why}", link=i, joint=name,
+            angle_deg=math.degrees(self.theta))
+
+    def arc_and_guide(self) -> bool:
+        for name in self.m.point_names:
+            if name in self.known:
+                continue
+            lines = self.known_guides(name)
+            carriers = [n for n in self.m.links_at(name)
+                        if not self.posed(n) and any(p in self.known for p in self.m.link(n).names)]
+            if len(lines) != 1 or not carriers:
+                continue
+            i = min(carriers)
+            x = self.one_known(i)
+            r = self.m.link(i).span(x, name)
+            arc = self.c.draw(f"arc:{name}@{x}", "swing_arc", self.known[x], radius=r,
+                              label=f"arc {x}{name}",
+                              sentence=f"With centre {x} and radius {x}{name} = {self.L(r)}, "
+                                       f"swing an arc.")
+            guide = self.guides[lines[0]]
+            pick = self.branch(name, None, ("forward", "backward"),
+                               f"forward or backward along the guide of {name}")
+            if not isinstance(pick, str):
+                pick = self.pick_near("intersect_line_circle", (guide, arc),
+                                      ("forward", "backward"), pick)
+            try:
+                self.found(name, "intersect_line_circle", guide, arc, pick=pick,
+                           sentence=f"The arc cuts the guide at {name} (the {pick} cut).")
+            except NoIntersection as e:
+                raise AssemblyError(
+                    f"{self.m.link(i).label} ({x}{name} = {self.L(r)}) cannot reach the guide "
+                    f"of {name} {self.at()}: it passes {self.L(e.margin)} beyond the arc",
+                    link=i, joint=name, angle_deg=math.degrees(self.theta)) from None
+            return True
+        return False
+
+    def two_guides(self) -> bool:
+        for name in self.m.point_names:
+            if name in self.known:
+                continue
+            lines = self.known_guides(name)
+            if len(lines) < 2:
+                continue
+            try:
+                self.found(name, "intersect_lines", self.guides[lines[0]], self.guides[lines[1]],
+                           sentence=f"{name} runs on two guides: it is where they cross.")
+            except DegenerateInput:
+                raise AssemblyError(f"the two guides of {name} coincide {self.at()}, so "
+                                    f"{name} is not fixed", joint=name) from None
+            if self.c.output(self.known[name]).is_at_infinity:
+                raise AssemblyError(f"the two guides of {name} are parallel {self.at()}, so "
+                                    f"{name} is at infinity", joint=name)
+            return True
+        return False
+
+    def slot_through_block(self) -> bool:
+        for i, s in enumerate(self.m.slides):
+            if i in self.guides or s.point not in self.known or self.posed(s.guide_link):
+                continue
+            k = self.m.link(s.guide_link)
+            on = [n for n in k.names if n in self.known]
+            if len(on) != 1:
+                continue
+            self.swing_slot(i, s, on[0])
+            return True
+        return False
+
+    def swing_slot(self, i: int, s: Slide, pivot: str) -> None:
+        k = self.m.link(s.guide_link)
+        qx, qy = k.local(pivot)
+        (tx, ty), (dx, dy) = s.through, s.direction
+        offset = dx * (ty - qy) - dy * (tx - qx)  # pivot lies this far right of the slot
+        pick = self.branch(s.point, "forward", ("forward", "backward"),
+                           f"the block ahead of or behind the foot of {pivot} on the slot")
+        if not isinstance(pick, str):
+            raise AssemblyError(f"[assembly] {s.point}: give \"forward\" or \"backward\" for a "
+                                "block in a swinging slot", joint=s.point)
+        q, p = self.known[pivot], self.known[s.point]
+        if g.distance(self.c.output(q), self.c.output(p)) == 0.0:
+            raise AssemblyError(f"the block {s.point} sits on the pivot {pivot} {self.at()}, so "
+                                f"the slot of link {k.number} has no direction", link=k.number)
+        name = f"slot of link {k.number}"
+        if abs(offset) <= 1e-12 * self.size:
+            ends = (q, p) if pick == "forward" else (p, q)
+            slot = self.c.draw(f"guide:{i}", "line_through", *ends, label=name,
+                               sentence=f"The slot of link {k.number} passes through {pivot} "
+                                        f"and the block {s.point}: draw line {pivot}{s.point}.")
+        else:
+            slot = self.tangent_slot(i, s, pivot, offset, pick)
+        self.guides[i] = slot
+        # The link's axis is the slot moved back onto its local origin.
+        if abs(offset) <= 1e-12 * self.size and k.names[0] == pivot and dx > 0:
+            self.axes[k.number] = slot
+        else:
+            self.axes[k.number] = self.axis_from_slot(k.number, slot, s, pivot)
+
+    def tangent_slot(self, i: int, s: Slide, pivot: str, offset: float, pick: str) -> Ref:
+        q, p = self.known[pivot], self.known[s.point]
+        mid = self.c.draw(f"mid:{s.point}{pivot}", "midpoint", q, p,
+                          sentence=f"Bisect {pivot}{s.point}.")
+        thales = self.c.draw(f"thales:{s.point}", "circle_through", mid, q,
+                             sentence=f"Draw the circle on diameter {pivot}{s.point}.")
+        off = self.c.draw(f"offset:{pivot}", "swing_arc", q, radius=abs(offset),
+                          sentence=f"With centre {pivot} and radius {self.L(abs(offset))} "
+                                   "(the slot's offset), swing an arc.")
+        for side in ("left", "right"):
+            try:
+                t, _ = g.intersect_circles(self.c.output(thales), self.c.output(off), side)
+            except NoIntersection:
+                raise AssemblyError(
+                    f"the block {s.point} comes within {self.L(abs(offset))} of {pivot} "
+                    f"{self.at()}, closer than the slot's offset", joint=s.point) from None
+            ends = (t, self.c.output(p)) if pick == "forward" else (self.c.output(p), t)
+            line, _ = g.line_through(*ends)
+            if line.signed_distance(self.c.output(q)) * offset < 0:
+                foot = self.c.draw(f"tangent:{s.point}", "intersect_circles", thales, off,
+                                   pick=side, sentence="The arcs cut at the foot of the slot.")
+                ordered = (foot, p) if pick == "forward" else (p, foot)
+                return self.c.draw(f"guide:{i}", "line_through", *ordered,
+                                   label=f"slot of link {s.guide_link}",
+                                   sentence=f"Draw the slot through {s.point}, tangent to the arc.")
+        raise TarsimError(f"no tangent from {s.point} leaves {pivot} on the slot's side")
+
+    def axis_from_slot(self, number: int, slot: Ref, s: Slide, pivot: str) -> Ref:
+        k = self.m.link(number)
+        dx, dy = s.direction
+        if dy != 0.0 or dx < 0.0 or k.names[0] != pivot:
+            raise AssemblyError(f"the slot of {k.label} must run along the link's axis, and the "
+                                f"link must list its pivot {pivot} first", link=number)
+        return self.c.draw(f"axis:{number}", "parallel_through", self.known[pivot], slot,
+                           label=f"link {number}")
+
+    # ----- helpers ---------------------------------------------------------------
+    def slides_at(self, name: str) -> list[int]:
+        return [i for i, s in enumerate(self.m.slides) if s.point == name]
+
+    def known_guides(self, name: str) -> list[int]:
+        out = []
+        for i in self.slides_at(name):
+            s = self.m.slides[i]
+            if i not in self.guides and s.guide_link != 1 and self.posed(s.guide_link):
+                self.place_slot(i, s)
+            if i in self.guides:
+                out.append(i)
+        return out
+
+    def place_slot(self, i: int, s: Slide) -> None:
+        """Draw the slot of an already-drawn moving link."""
+        number = s.guide_link
+        axis = self.axis_of(number)
+        k = self.m.link(number)
+        ox, oy = k.local(k.names[0])
+        (tx, ty), (dx, dy) = s.through, s.direction
+        if abs(dy) > 0.0 or dx < 0:
+            raise AssemblyError(f"the slot of {k.label} must run along the link's axis",
+                                link=number)
+        off = ty - oy
+        if off == 0.0:
+            self.guides[i] = axis
+            return
+        base = self.c.draw(f"slotfoot:{i}", "perpendicular_through", self.known[k.names[0]], axis)
+        at = self.c.draw(f"slotpt:{i}", "lay_off", self.known[k.names[0]], base, length=off)
+        self.guides[i] = self.c.draw(f"guide:{i}", "parallel_through", at, axis,
+                                     label=f"slot of link {number}")
+
+    def axis_of(self, number: int) -> Ref:
+        """The oriented axis line of a drawn link (through its first point)."""
+        if number in self.axes:
+            return self.axes[number]
+        k = self.m.link(number)
+        if len(k.names) >= 2 and all(n in self.known for n in k.names[:2]):
+            self.axes[number] = self.c.draw(f"axis:{number}", "line_through",
+                                            self.known[k.names[0]], self.known[k.names[1]],
+                                            label=f"link {number}")
+            return self.axes[number]
+        for i, s in enumerate(self.m.slides):
+            if s.link == number and s.kind is SlideKind.BLOCK and i in self.guides:
+                self.axes[number] = self.guides[i]
+                return self.guides[i]
+        raise AssemblyError(f"{self.m.link(number).label} has no direction: give it two points "
+                            "or a slide", link=number)
+
+    def one_known(self, number: int) -> str:
+        return next(n for n in self.m.link(number).names if n in self.known)
+

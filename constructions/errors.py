@@ -1,0 +1,83 @@
+"""The error classes of tarsim: every failure a user can cause is one of these.
+
+Each ``__str__`` is a single line that says what is wrong, where, and how to fix
+it; the command line prints it after ``Error:`` and exits non-zero.
+"""
+
+from __future__ import annotations
+
+__all__ = [
+    "TarsimError",
+    "InputError",
+    "GeometryError",
+    "NoIntersection",
+    "DegenerateInput",
+    "AssemblyError",
+    "CheckMismatch",
+    "RenderError",
+]
+
+
+class TarsimError(Exception):
+    """Root of every error tarsim raises on purpose; the CLI catches only this."""
+
+
+class InputError(TarsimError):
+    """A mechanism or exercise file is malformed or names something unknown."""
+
+    def __init__(self, message: str, *, file: str | None = None,
+                 line: int | None = None, column: int | None = None,
+                 key: str | None = None):
+        self.message = message
+        self.file = file
+        self.line = line
+        self.column = column
+        self.key = key
+        super().__init__(str(self))
+
+    def __str__(self) -> str:
+        where = ""
+        if self.file:
+            where = self.file
+            if self.line is not None:
+                where += f":{self.line}"
+                if self.column is not None:
+                    where += f":{self.column}"
+            where += ": "
+        key = f"[{self.key}] " if self.key else ""
+        return f"{where}{key}{self.message}"
+
+
+class GeometryError(TarsimError):
+    """A drafting act has no answer for the objects it was given."""
+
+
+class NoIntersection(GeometryError):
+    """Two carriers do not meet; ``margin`` says by how much they miss."""
+
+    def __init__(self, message: str, margin: float):
+        self.margin = margin
+        super().__init__(message)
+
+
+class DegenerateInput(GeometryError):
+    """The inputs of a drafting act are degenerate (coincident points, parallel lines)."""
+
+
+class AssemblyError(TarsimError):
+    """The mechanism cannot be put together at this input position."""
+
+    def __init__(self, message: str, *, link: int | None = None,
+                 joint: str | None = None, angle_deg: float | None = None):
+        self.link = link
+        self.joint = joint
+        self.angle_deg = angle_deg
+        super().__init__(message)
+
+
+class CheckMismatch(TarsimError):
+    """The construction and the analytic solution disagree beyond tolerance."""
+
+
+class RenderError(TarsimError):
+    """A figure cannot be written in the format asked for (e.g. no libcairo)."""

@@ -1,0 +1,1 @@
+"""Mechanism and exercise files, the bundled catalog, and the ``tarsim`` command line."""

@@ -1,0 +1,3 @@
+from exercises.cli import cli
+
+cli(prog_name="tarsim")

@@ -1,0 +1,39 @@
+"""The bundled mechanisms and exercises, one TOML file each, found by id."""
+
+from __future__ import annotations
+
+from importlib import resources
+from pathlib import Path
+
+from constructions.errors import InputError
+
+__all__ = ["bundled", "resolve"]
+
+
+def bundled() -> dict[str, Path]:
+    """Map each bundled id (the file name without ``.toml``) to its path."""
+    root = resources.files(__name__)
+    return {p.name[:-5]: Path(str(p)) for p in sorted(root.iterdir(), key=lambda p: p.name)
+            if p.name.endswith(".toml")}
+
+
+def resolve(name: str) -> Path:
+    """Return the file ``name`` names: a path on disk, or else a bundled id.
+
+    Raises
+    ------
+    InputError
+        If it is neither, with the closest bundled ids.
+    """
+    path = Path(name)
+    if path.is_file():
+        return path
+    ids = bundled()
+    if name in ids:
+        return ids[name]
+    if path.suffix or "/" in name:
+        raise InputError(f"no such file '{name}'")
+    import difflib
+    close = difflib.get_close_matches(name, list(ids), n=1)
+    hint = f"did you mean '{close[0]}'?" if close else f"bundled: {', '.join(ids)}"
+    raise InputError(f"no file or bundled example called '{name}'; {hint}")

@@ -1,0 +1,373 @@
+"""Read a mechanism file (TOML) into the SI model, with errors that say file:line.
+
+The format is documented in the README. Lengths are keyed by the two point names
+run together, as a textbook writes them (``O2A = 100``, ``AB = 250``).
+"""
+
+from __future__ import annotations
+
+import difflib
+import math
+import re
+import tomllib
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from constructions.errors import InputError
+from constructions.model import LENGTH_UNITS, Drive, Link, Mechanism, Slide, SlideKind, Units
+
+__all__ = ["load_mechanism", "parse_mechanism", "SourceMap"]
+
+_NAME = re.compile(r"^[A-Za-z][A-Za-z0-9_']*$")
+_TOP = ("name", "source", "description", "units", "frame", "link", "slider", "input", "assembly")
+_BRANCHES = ("left", "right", "forward", "backward")
+
+
+def load_mechanism(path: str | Path) -> Mechanism:
+    """Read ``path`` and return the mechanism it describes.
+
+    Raises
+    ------
+    InputError
+        If the file cannot be read, is not valid TOML, or describes an
+        impossible or incomplete mechanism; the message names file:line.
+    """
+    path = Path(path)
+    try:
+        text = path.read_text(encoding="utf-8")
+    except (OSError, UnicodeDecodeError) as e:
+        raise InputError(f"cannot read the file: {e.strerror or e}", file=str(path)) from None
+    return parse_mechanism(text, str(path))
+
+
+def parse_mechanism(text: str, filename: str = "<string>") -> Mechanism:
+    """Parse TOML text into a :class:`Mechanism` (see :func:`load_mechanism`)."""
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as e:
+        raise _toml_error(e, filename) from None
+    return _Reader(data, SourceMap(text), filename).mechanism()
+
+
+def _toml_error(e: tomllib.TOMLDecodeError, filename: str) -> InputError:
+    msg = str(e)
+    m = re.search(r"\(at line (\d+), column (\d+)\)", msg)
+    if m:
+        return InputError(f"not valid TOML: {msg[:m.start()].strip()}", file=filename,
+                          line=int(m.group(1)), column=int(m.group(2)))
+    m = re.search(r"\(at end of document\)", msg)
+    return InputError(f"not valid TOML: {msg[:m.start()].strip() if m else msg}", file=filename)
+
+
+@dataclass
+class SourceMap:
+    """Finds the line of a table or key, since tomllib keeps no positions."""
+
+    text: str
+
+    def __post_init__(self) -> None:
+        self.lines = self.text.splitlines()
+
+    def header(self, table: str, index: int = 0) -> int | None:
+        """Line (1-based) of the ``index``-th ``[table]`` or ``[[table]]`` header."""
+        pat = re.compile(r"^\s*\[\[?\s*" + re.escape(table) + r"\s*\]\]?\s*(#.*)?$")
+        hits = [i + 1 for i, line in enumerate(self.lines) if pat.match(line)]
+        return hits[index] if index < len(hits) else None
+
+    def key(self, key: str, table: str | None = None, index: int = 0) -> int | None:
+        """Line of ``key`` inside the ``index``-th ``table`` (or the top level)."""
+        start = self.header(table, index) if table else 0
+        if table and start is None:
+            return None
+        pat = re.compile(r"(^|[\s{,])" + re.escape(key) + r"\s*=")
+        for i in range(start or 0, len(self.lines)):
+            line = self.lines[i]
+            if i >= (start or 0) + (1 if table else 0) and re.match(r"^\s*\[", line):
+                break
+            if pat.search(line.split("#", 1)[0]):
+                return i + 1
+        return start
+
+
+class _Reader:
+    def __init__(self, data: dict[str, Any], where: SourceMap, filename: str):
+        self.d = data
+        self.where = where
+        self.file = filename
+
+    # ----- errors --------------------------------------------------------------
+    def fail(self, message: str, *, table: str | None = None, index: int = 0,
+             key: str | None = None) -> InputError:
+        line = (self.where.key(key, table, index) if key
+                else self.where.header(table, index) if table else None)
+        label = table if table else None
+        if table in ("link", "slider"):
+            label = f"{table} #{index + 1}"
+        if key:
+            label = f"{label}.{key}" if label else key
+        return InputError(message, file=self.file, line=line, key=label)
+
+    def unknown(self, got: str, valid: list[str] | tuple[str, ...], what: str, **where) -> InputError:
+        close = difflib.get_close_matches(got, list(valid), n=1)
+        hint = f"; did you mean '{close[0]}'?" if close else f"; expected one of: {', '.join(valid)}"
+        return self.fail(f"unknown {what} '{got}'{hint}", **where)
+
+    # ----- top level -------------------------------------------------------------
+    def mechanism(self) -> Mechanism:
+        for k in self.d:
+            if k not in _TOP:
+                raise self.unknown(k, _TOP, "setting", key=k)
+        self.units = self.read_units()
+        frame = self.read_frame()
+        links = [frame] + self.read_links(frame)
+        mech_links = tuple(links)
+        self.links = {k.number: k for k in mech_links}
+        slides = tuple(self.read_slider(i, s) for i, s in enumerate(self.list_of("slider")))
+        drive = self.read_input()
+        branches = self.read_assembly(mech_links, slides)
+        mech = Mechanism(mech_links, drive, slides, branches, self.units,
+                         str(self.d.get("name", Path(self.file).stem)), self.file)
+        dof, n, f1, f2 = mech.mobility()
+        if dof != 1:
+            raise self.fail(
+                f"the mechanism has {dof} degrees of freedom (Grübler: 3({n} − 1) − 2·{f1} − {f2}"
+                f" = {dof}) but [input] drives one link; "
+                + ("add a link or joint to constrain it" if dof > 1 else
+                   "it cannot move: check the links and joints"), table="input")
+        return mech
+
+    def list_of(self, table: str) -> list[dict[str, Any]]:
+        v = self.d.get(table, [])
+        if not isinstance(v, list) or not all(isinstance(x, dict) for x in v):
+            raise self.fail(f"write each {table} as its own [[{table}]] table", table=table)
+        return v
+
+    def table(self, name: str, required: bool) -> dict[str, Any]:
+        v = self.d.get(name)
+        if v is None:
+            if required:
+                raise InputError(f"the file has no [{name}] table", file=self.file)
+            return {}
+        if not isinstance(v, dict):
+            raise self.fail(f"[{name}] must be a table", key=name)
+        return v
+
+    def read_units(self) -> Units:
+        u = self.table("units", False)
+        allowed = {"length": tuple(LENGTH_UNITS), "angle": ("deg", "rad"),
+                   "angular_velocity": ("rad/s", "rpm")}
+        for k, v in u.items():
+            if k not in allowed:
+                raise self.unknown(k, tuple(allowed), "unit setting", table="units", key=k)
+            if v not in allowed[k]:
+                raise self.unknown(str(v), allowed[k], f"{k} unit", table="units", key=k)
+        return Units(u.get("length", "mm"), u.get("angle", "deg"),
+                     u.get("angular_velocity", "rad/s"))
+
+    # ----- numbers ---------------------------------------------------------------
+    def number(self, v: Any, what: str, **where) -> float:
+        if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v):
+            raise self.fail(f"{what} must be a number, got {v!r}", **where)
+        return float(v)
+
+    def length(self, v: Any, what: str, **where) -> float:
+        x = self.number(v, what, **where)
+        if x <= 0:
+            raise self.fail(f"{what} must be a positive length, got {v:g}", **where)
+        return x * self.units.metres
+
+    def xy(self, v: Any, what: str, **where) -> tuple[float, float]:
+        if not (isinstance(v, list) and len(v) == 2):
+            raise self.fail(f"{what} must be a pair [x, y], got {v!r}", **where)
+        s = self.units.metres
+        return (self.number(v[0], what, **where) * s, self.number(v[1], what, **where) * s)
+
+    def angle(self, v: Any, what: str, **where) -> float:
+        x = self.number(v, what, **where)
+        return x if self.units.angle == "rad" else math.radians(x)
+
+    def name(self, v: Any, what: str, **where) -> str:
+        if not (isinstance(v, str) and _NAME.match(v)):
+            raise self.fail(f"{what} must be a point name such as \"A\" or \"O2\", got {v!r}",
+                            **where)
+        return v
+
+    # ----- frame and links -----------------------------------------------------------
+    def read_frame(self) -> Link:
+        f = self.table("frame", True)
+        pts = []
+        for k, v in f.items():
+            self.name(k, "a frame point", table="frame", key=k)
+            pts.append((k, self.xy(v, f"frame point {k}", table="frame", key=k)))
+        if not pts:
+            raise self.fail("[frame] names no fixed point", table="frame")
+        return Link(1, tuple(pts), "frame")
+
+    def read_links(self, frame: Link) -> list[Link]:
+        out: list[Link] = []
+        seen = {1}
+        for i, t in enumerate(self.list_of("link")):
+            where = {"table": "link", "index": i}
+            for k in t:
+                if k not in ("number", "name", "points", "lengths", "sides"):
+                    raise self.unknown(k, ("number", "name", "points", "lengths", "sides"),
+                                       "link setting", key=k, **where)
+            if "number" not in t:
+                raise self.fail("a link needs its number (the frame is 1)", **where)
+            n = t["number"]
+            if isinstance(n, bool) or not isinstance(n, int) or n < 2:
+                raise self.fail(f"a moving link's number is a whole number from 2 up, got {n!r}",
+                                key="number", **where)
+            if n in seen:
+                raise self.fail(f"link {n} is defined twice", key="number", **where)
+            seen.add(n)
+            names = t.get("points")
+            if not (isinstance(names, list) and names):
+                raise self.fail(f"link {n} needs points = [\"…\", …]", **where)
+            names = [self.name(p, f"a point of link {n}", key="points", **where) for p in names]
+            if len(set(names)) != len(names):
+                raise self.fail(f"link {n} lists a point twice", key="points", **where)
+            local = self.shape(n, names, t, where)
+            out.append(Link(n, tuple(zip(names, local)), str(t.get("name", ""))))
+        return out
+
+    def shape(self, n: int, names: list[str], t: dict[str, Any], where: dict) -> list[tuple[float, float]]:
+        lengths = t.get("lengths", {})
+        if not isinstance(lengths, dict):
+            raise self.fail(f"lengths of link {n} must be a table such as {{ AB = 250 }}",
+                            key="lengths", **where)
+        table: dict[frozenset[str], float] = {}
+        for key, v in lengths.items():
+            pair = _split_pair(key, names)
+            if pair is None:
+                pairs = [a + b for a in names for b in names if a != b]
+                raise self.unknown(key, pairs, f"length of link {n}", key=key, **where)
+            table[frozenset(pair)] = self.length(v, f"length {key} of link {n}", key=key, **where)
+        sides = t.get("sides", {})
+
+        def span(a: str, b: str) -> float:
+            v = table.get(frozenset((a, b)))
+            if v is None:
+                raise self.fail(f"link {n} needs the length {a}{b}", key="lengths", **where)
+            return v
+
+        if len(names) == 1:
+            return [(0.0, 0.0)]
+        base = span(names[0], names[1])
+        local = [(0.0, 0.0), (base, 0.0)]
+        for p in names[2:]:
+            r0, r1 = span(names[0], p), span(names[1], p)
+            x = (r0 * r0 - r1 * r1 + base * base) / (2 * base)
+            h2 = r0 * r0 - x * x
+            if h2 < -1e-9 * base * base:
+                raise self.fail(f"the lengths {names[0]}{p}, {names[1]}{p} and "
+                                f"{names[0]}{names[1]} of link {n} do not close a triangle",
+                                key="lengths", **where)
+            h = math.sqrt(max(h2, 0.0))
+            side = sides.get(p) if isinstance(sides, dict) else None
+            if h > 1e-9 * base and side not in ("left", "right"):
+                raise self.fail(f"say on which side of {names[0]}→{names[1]} point {p} lies: "
+                                f'sides = {{ {p} = "left" }} or "right"', key="lengths", **where)
+            local.append((x, h if side == "left" else -h))
+        return local
+
+    # ----- sliders, input, assembly ---------------------------------------------------
+    def read_slider(self, i: int, t: dict[str, Any]) -> Slide:
+        where = {"table": "slider", "index": i}
+        allowed = ("kind", "link", "point", "on", "through", "angle", "offset")
+        for k in t:
+            if k not in allowed:
+                raise self.unknown(k, allowed, "slider setting", key=k, **where)
+        kind = t.get("kind", "block")
+        if kind not in ("block", "pin"):
+            raise self.unknown(str(kind), ("block", "pin"), "slider kind", key="kind", **where)
+        link = self.link_number(t.get("link"), "link", where)
+        point = self.name(t.get("point"), "the sliding point", key="point", **where)
+        if point not in self.links[link].names:
+            raise self.unknown(point, self.links[link].names, f"point of link {link}",
+                               key="point", **where)
+        on = self.link_number(t.get("on", 1), "on", where)
+        if on == link:
+            raise self.fail(f"link {link} cannot slide on itself", key="on", **where)
+        if kind == "block" and len(self.links[link].names) != 1:
+            raise self.fail(f"a sliding block carries one point; link {link} has "
+                            f"{len(self.links[link].names)}", key="link", **where)
+        offset = self.number(t.get("offset", 0.0), "offset", key="offset", **where) * self.units.metres
+        if on == 1:
+            through = t.get("through")
+            if isinstance(through, str):
+                if through not in self.links[1].names:
+                    raise self.unknown(through, self.links[1].names, "frame point",
+                                       key="through", **where)
+                base = self.links[1].local(through)
+            elif through is None:
+                raise self.fail("a guide on the frame needs through = \"O2\" or [x, y]", **where)
+            else:
+                base = self.xy(through, "through", key="through", **where)
+            if "angle" not in t:
+                raise self.fail("a guide on the frame needs its angle", **where)
+            a = self.angle(t["angle"], "angle", key="angle", **where)
+            d = (math.cos(a), math.sin(a))
+            return Slide(SlideKind(kind), link, point, 1,
+                         (base[0] - offset * d[1], base[1] + offset * d[0]), d)
+        for k in ("through", "angle"):
+            if k in t:
+                raise self.fail(f"a slot on moving link {on} runs along its axis; give only "
+                                "offset, not " + k, key=k, **where)
+        return Slide(SlideKind(kind), link, point, on, (0.0, offset), (1.0, 0.0))
+
+    def link_number(self, v: Any, key: str, where: dict) -> int:
+        if isinstance(v, bool) or not isinstance(v, int):
+            raise self.fail(f"{key} must be a link number, got {v!r}", key=key, **where)
+        if v not in self.links:
+            raise self.unknown(str(v), [str(n) for n in sorted(self.links)], "link",
+                               key=key, **where)
+        return v
+
+    def read_input(self) -> Drive:
+        t = self.table("input", True)
+        where = {"table": "input"}
+        for k in t:
+            if k not in ("link", "angle", "omega", "alpha"):
+                raise self.unknown(k, ("link", "angle", "omega", "alpha"), "input setting",
+                                   key=k, **where)
+        if "link" not in t:
+            raise self.fail("[input] must name the input link, e.g. link = 2", **where)
+        link = self.link_number(t["link"], "link", where)
+        if link == 1:
+            raise self.fail("the frame (link 1) cannot be the input", key="link", **where)
+        if "angle" not in t:
+            raise self.fail(f"[input] needs the angle of link {link}", **where)
+        angle = self.angle(t["angle"], "angle", key="angle", **where)
+        omega = self.number(t.get("omega", 0.0), "omega", key="omega", **where)
+        if self.units.angular_velocity == "rpm":
+            omega *= 2 * math.pi / 60
+        alpha = self.number(t.get("alpha", 0.0), "alpha", key="alpha", **where)
+        return Drive(link, angle, omega, alpha, "alpha" in t)
+
+    def read_assembly(self, links: tuple[Link, ...], slides: tuple[Slide, ...]) -> dict:
+        t = self.table("assembly", False)
+        names = {n for k in links for n in k.names}
+        out: dict[str, str | tuple[float, float]] = {}
+        for k, v in t.items():
+            if k not in names:
+                raise self.unknown(k, sorted(names), "point", table="assembly", key=k)
+            if isinstance(v, str):
+                if v not in _BRANCHES:
+                    raise self.unknown(v, _BRANCHES, "branch", table="assembly", key=k)
+                out[k] = v
+            else:
+                out[k] = self.xy(v, f"the point {k} should be near", table="assembly", key=k)
+        return out
+
+
+def _split_pair(key: str, names: list[str]) -> tuple[str, str] | None:
+    """Split "O2A" into ("O2", "A") using the link's point names; None if no unique split."""
+    hits = {(a, b) for a in names for b in names if a != b and a + b == key}
+    if len(hits) == 1:
+        return hits.pop()
+    m = re.fullmatch(r"([^-\s]+)\s*-\s*([^-\s]+)", key)
+    if m and m.group(1) in names and m.group(2) in names and m.group(1) != m.group(2):
+        return (m.group(1), m.group(2))
+    return None

@@ -1,0 +1,94 @@
+"""Put the construction beside the analytic solution: the numbers `tarsim check` prints.
+
+Position errors are relative to the size of the mechanism (its largest distance
+between two points), since a point near the origin has no size of its own.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from constructions import analytic
+from constructions.assembly import Assembly, assemble
+from constructions.model import Mechanism
+
+__all__ = ["PointCheck", "PositionCheck", "check_positions", "format_check", "describe_grashof"]
+
+
+@dataclass(frozen=True)
+class PointCheck:
+    """One joint: where the compass put it, where the vector loops put it."""
+
+    name: str
+    construction: tuple[float, float]
+    analytic: tuple[float, float]
+    rel_error: float
+    conditioning: float
+
+
+@dataclass(frozen=True)
+class PositionCheck:
+    """Every joint of one position, with the mechanism's mobility and Grashof class."""
+
+    mechanism: Mechanism
+    assembly: Assembly
+    points: tuple[PointCheck, ...]
+    size: float
+    mobility: tuple[int, int, int, int]
+    grashof: analytic.GrashofResult | None
+
+    @property
+    def worst(self) -> float:
+        """The largest relative error over all joints."""
+        return max(p.rel_error for p in self.points)
+
+
+def check_positions(mech: Mechanism) -> PositionCheck:
+    """Assemble ``mech`` by compass, solve it by vector loops, and compare every joint."""
+    asm = assemble(mech)
+    kin = analytic.solve(mech)
+    names = mech.point_names
+    xy = {n: asm.xy(n) for n in names}
+    size = max([math.dist(xy[a], xy[b]) for a in names for b in names] + [1e-300])
+    rows = []
+    for n in names:
+        c, a = xy[n], kin.points[n]
+        step = asm.construction[asm.points[n]]
+        rows.append(PointCheck(n, c, a, math.dist(c, a) / size, step.conditioning))
+    return PositionCheck(mech, asm, tuple(rows), size, mech.mobility(), analytic.grashof_class(mech))
+
+
+def format_check(check: PositionCheck) -> str:
+    """The report as text: a heading, one row per joint, and the verdict."""
+    m = check.mechanism
+    u = m.units
+    d = m.drive
+    k = u.metres
+    dof, n, f1, f2 = check.mobility
+    angle = (f"{d.angle:.6g} rad" if u.angle == "rad" else f"{math.degrees(d.angle):.6g}°")
+    lines = [f"{m.name}  ({m.source})" if m.source else m.name,
+             f"θ{d.link} = {angle}    DOF = {dof}  (Grübler: 3({n} − 1) − 2·{f1} − {f2})"]
+    if check.grashof is not None:
+        lines.append(f"Grashof: {describe_grashof(check.grashof, u)}")
+    head = f"by construction ({u.length})"
+    ref = f"analytic ({u.length})"
+    lines.append("")
+    lines.append(f"{'point':<7}{head:<30}{ref:<30}{'rel. error':>11}{'cond.':>9}")
+    for p in check.points:
+        c = f"({p.construction[0] / k:.6f}, {p.construction[1] / k:.6f})"
+        a = f"({p.analytic[0] / k:.6f}, {p.analytic[1] / k:.6f})"
+        lines.append(f"{p.name:<7}{c:<30}{a:<30}{p.rel_error:>11.1e}{p.conditioning:>9.3g}")
+    lines.append("")
+    lines.append(f"largest relative error {check.worst:.1e} "
+                 f"(relative to the mechanism's size, {u.length_text(check.size)})")
+    return "\n".join(lines)
+
+
+def describe_grashof(g: analytic.GrashofResult, units) -> str:
+    """One line: the class, the sums that decide it, and the shortest link."""
+    ls = sorted(g.lengths)
+    sl, pq = ls[0] + ls[3], ls[1] + ls[2]
+    rel = "=" if g.kind == "change-point" else ("<" if sl < pq else ">")
+    return (f"{g.kind}  (s + l = {units.length_text(sl)} {rel} p + q = {units.length_text(pq)};"
+            f" shortest is link {g.shortest})")

@@ -1,0 +1,1 @@
+"""Figures: panels, scales, textbook symbols, SVG via svgwrite, PDF/PNG via cairosvg."""

@@ -1,0 +1,302 @@
+"""The kinematic diagram: the mechanism at one position, in textbook style.
+
+It draws what the assembly located (the construction's outputs), never
+recomputing geometry: ground pivots with hatching, pins, bars and plates, slider
+blocks on hatched guides, the input's θ and ω, link numbers, point labels, and a
+scale bar that measures true on the printed page.
+"""
+
+from __future__ import annotations
+
+import math
+
+from shapely.geometry import MultiPoint, Point as SPoint
+
+from constructions.assembly import Assembly
+from constructions.model import Mechanism, SlideKind
+
+from .figure import Figure, Path, Text, View, text_width
+from .labels import LabelPlacer
+from .scales import draw_scale_bar, nice_per_cm, scale_text
+from .symbols import (PIN_RADIUS, draw_block, draw_ground_pivot, draw_guide,
+                      draw_pin, draw_turning_arrow, mark_angle, unit)
+
+__all__ = ["draw_kinematic_diagram", "subscript"]
+
+_SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
+_ROOM = (150.0, 130.0)     # largest drawing area, mm
+_MARGIN = 8.0              # white round the drawing, mm
+_CAPTION = 15.0            # band under the drawing for the caption and scale bar, mm
+_BLOCK = (9.0, 5.0)        # slider block on paper, mm
+
+
+def subscript(name: str) -> str:
+    """Write trailing digits as subscripts, as a textbook prints them ("O2" → "O₂").
+
+    Examples
+    --------
+    >>> subscript("O24")
+    'O₂₄'
+    """
+    head = name.rstrip("0123456789")
+    return head + name[len(head):].translate(_SUB)
+
+
+def draw_kinematic_diagram(asm: Assembly) -> Figure:
+    """Draw the kinematic diagram of an assembled mechanism."""
+    return _Diagram(asm).draw()
+
+
+class _Diagram:
+    def __init__(self, asm: Assembly):
+        self.asm = asm
+        self.m: Mechanism = asm.mechanism
+        self.world = {n: asm.xy(n) for n in self.m.point_names}
+
+    # ----- layout ------------------------------------------------------------------
+    def layout(self) -> None:
+        xs = [p[0] for p in self.world.values()]
+        ys = [p[1] for p in self.world.values()]
+        unit_m = self.m.units.metres
+        w = max(max(xs) - min(xs), 1e-9) / unit_m
+        h = max(max(ys) - min(ys), 1e-9) / unit_m
+        self.per_cm = max(nice_per_cm(w, _ROOM[0]), nice_per_cm(h, _ROOM[1]))
+        s = 10.0 / (self.per_cm * unit_m)   # paper mm per world metre
+        self.view = View(s, (0.0, 0.0))
+        self.fig = Figure(0.0, 0.0, title=self.m.name)
+        self.placer = LabelPlacer(self.fig)
+        self.paper = {n: self.view(p) for n, p in self.world.items()}
+
+    # ----- drawing ---------------------------------------------------------------------
+    def draw(self) -> Figure:
+        self.layout()
+        self.draw_frame_guides()
+        self.draw_ground_pivots()
+        self.draw_links()
+        self.draw_blocks()
+        self.draw_pins()
+        self.draw_input()
+        self.label_links()
+        self.label_points()
+        self.fit_page()
+        return self.fig
+
+    def fit_page(self) -> None:
+        """Size the page to the drawing plus margins, and set the caption under it."""
+        x0, y0, x1, y1 = self.fig.bounds()
+        self.fig.shift(_MARGIN - x0, _MARGIN - y0)
+        d = self.m.drive
+        u = self.m.units
+        angle = (f"{d.angle:.4g} rad" if u.angle == "rad"
+                 else f"{math.degrees(d.angle):.6g}°")
+        sub = subscript(str(d.link))
+        params = f"θ{sub} = {angle}"
+        if d.omega:
+            w = abs(d.omega) if u.angular_velocity == "rad/s" else abs(d.omega) * 60 / (2 * math.pi)
+            params += f",  ω{sub} = {w:.6g} {u.angular_velocity} {'ccw' if d.omega > 0 else 'cw'}"
+        scale = f"Scale {scale_text(self.per_cm, u.length)}"
+        left = max(text_width(self.m.name, 3.6), text_width(params, 3.2))
+        right = max(text_width(scale, 3.2), 40.0 + text_width(f" {u.length}", 2.6) + 6.0)
+        width = max(x1 - x0 + 2 * _MARGIN, left + right + 2 * _MARGIN + 8.0)
+        self.fig.shift((width - (x1 - x0) - 2 * _MARGIN) / 2, 0.0)
+        top = y1 - y0 + 2 * _MARGIN
+        self.fig.width = round(width, 1)
+        self.fig.height = round(top + _CAPTION, 1)
+        y = top + 3.0
+        self.fig.add(Text((_MARGIN, y), self.m.name, 3.6, "start", italic=False, weight="bold"))
+        self.fig.add(Text((_MARGIN, y + 5.2), params, 3.2, "start", italic=False))
+        bar_x = width - _MARGIN - right
+        self.fig.add(Text((bar_x, y), scale, 3.2, "start", italic=False))
+        draw_scale_bar(self.fig, (bar_x, y + 5.0), self.per_cm, u.length)
+
+    def slot_reach(self, number: int) -> list[tuple[float, float]]:
+        """Paper points a slotted link must reach: its own points and what runs in its slot."""
+        pts = [self.paper[n] for n in self.m.link(number).names]
+        pts += [self.paper[s.point] for s in self.m.slides if s.guide_link == number]
+        return pts
+
+    def draw_frame_guides(self) -> None:
+        centre = _centroid([self.paper[n] for n in self.m.frame.names])
+        for i, s in enumerate(self.m.slides):
+            if s.guide_link != 1 or s.kind is not SlideKind.BLOCK:
+                continue
+            line = self.asm.guide(i)
+            d = unit(self.view.direction(line.direction))
+            n = (-d[1], d[0])
+            p = self.paper[s.point]
+            # The guide lies on the far side of the block from the frame pivots.
+            away = (p[0] - centre[0]) * n[0] + (p[1] - centre[1]) * n[1]
+            side = n if away >= 0 else (-n[0], -n[1])
+            off = _BLOCK[1] / 2
+            half = max(22.0, 0.5 * self.travel(s.point, d))
+            a = (p[0] + off * side[0] - half * d[0], p[1] + off * side[1] - half * d[1])
+            b = (p[0] + off * side[0] + half * d[0], p[1] + off * side[1] + half * d[1])
+            band = draw_guide(self.fig, a, b, side)
+            self.placer.block(band.buffer(0.3))
+            self.placer.block_segment(a, b)
+
+    def travel(self, point: str, d: tuple[float, float]) -> float:
+        """A guide long enough to look like a guide: the drawing's width along it."""
+        ps = list(self.paper.values())
+        proj = [q[0] * d[0] + q[1] * d[1] for q in ps]
+        return 0.6 * (max(proj) - min(proj))
+
+    def draw_ground_pivots(self) -> None:
+        for name in self.m.frame.names:
+            moving = [k for k in self.m.links_at(name) if k != 1]
+            if not moving:
+                continue
+            at = self.paper[name]
+            dirs = []
+            for k in moving:
+                for other in self.m.link(k).names:
+                    if other != name:
+                        dirs.append(unit(_sub(self.paper[other], at)))
+                for s in self.m.slides:
+                    if s.guide_link == k and s.point in self.paper:
+                        dirs.append(unit(_sub(self.paper[s.point], at)))
+            down = _clearest_direction(dirs)
+            foot = draw_ground_pivot(self.fig, at, down)
+            self.placer.block(foot)
+
+    def draw_links(self) -> None:
+        for k in self.m.links:
+            if k.number == 1:
+                continue
+            slotted = any(s.guide_link == k.number for s in self.m.slides)
+            pts = self.slot_reach(k.number) if slotted else [self.paper[n] for n in k.names]
+            if len(pts) < 2:
+                continue
+            hull = MultiPoint(pts).convex_hull
+            if hull.geom_type == "Polygon" and hull.area > 4.0 and not slotted:
+                ring = tuple(hull.exterior.coords)[:-1]
+                self.fig.add(Path(ring, "plate", closed=True))
+                self.placer.block(hull.buffer(0.5))
+                continue
+            a, b = _extremes(pts)
+            if slotted:
+                a, b = self.overhang(k.number, a, b)
+            self.fig.line(a, b, "link")
+            self.placer.block_segment(a, b, 0.6)
+
+    def overhang(self, number: int, a, b):
+        """Run a slotted lever from its pivot a little past the last block in its slot."""
+        k = self.m.link(number)
+        pivot = self.paper[k.names[0]]
+        far = b if math.dist(pivot, b) >= math.dist(pivot, a) else a
+        own = any(math.dist(far, self.paper[n]) < 1e-9 for n in k.names)
+        d = unit(_sub(far, pivot))
+        extra = 0.0 if own else 2.0
+        return pivot, (far[0] + extra * d[0], far[1] + extra * d[1])
+
+    def draw_blocks(self) -> None:
+        for i, s in enumerate(self.m.slides):
+            if s.kind is not SlideKind.BLOCK:
+                continue
+            d = unit(self.view.direction(self.asm.guide(i).direction))
+            shape = draw_block(self.fig, self.paper[s.point], d, *_BLOCK)
+            self.placer.block(shape)
+
+    def draw_pins(self) -> None:
+        for name, at in self.paper.items():
+            on = self.m.links_at(name)
+            slid = any(s.point == name for s in self.m.slides)
+            if 1 in on:
+                continue  # drawn with its ground symbol
+            if len(on) >= 2 or slid:
+                draw_pin(self.fig, at)
+                self.placer.block(SPoint(at).buffer(PIN_RADIUS + 0.4))
+
+    def draw_input(self) -> None:
+        d = self.m.drive
+        k = self.m.link(d.link)
+        centre = self.paper[k.names[0]]
+        theta = math.atan2(math.sin(d.angle), math.cos(d.angle))
+        # θ: a dashed reference along +x and an arc up to the crank.
+        ref_end = (centre[0] + 13.0, centre[1])
+        self.fig.line(centre, ref_end, "reference")
+        self.placer.block_segment(centre, ref_end, 0.3)
+        mid = mark_angle(self.fig, centre, 8.0, 0.0, theta)
+        half = theta / 2
+        self.placer.place(f"θ{subscript(str(d.link))}", mid, prefer=half, gap=1.2, size=3.2)
+        if d.omega == 0.0:
+            return
+        # ω: an arc arrow beside the crank, away from the θ mark; its sense is ω's alone.
+        low = theta + 0.45 if theta >= 0 else theta - 1.65
+        start, sweep = (low, 1.2) if d.omega > 0 else (low + 1.2, -1.2)
+        label_at = draw_turning_arrow(self.fig, centre, 12.0, start, sweep)
+        self.placer.block(SPoint(label_at).buffer(1.0))
+        self.placer.place(f"ω{subscript(str(d.link))}", label_at,
+                          prefer=start + sweep / 2, gap=1.4, size=3.2)
+
+    def label_links(self) -> None:
+        for k in self.m.links:
+            if k.number == 1:
+                continue
+            slotted = any(s.guide_link == k.number for s in self.m.slides)
+            pts = self.slot_reach(k.number) if slotted else [self.paper[n] for n in k.names]
+            if len(pts) == 1:
+                at, prefer = pts[0], math.pi / 2
+                gap = 4.2
+            else:
+                hull = MultiPoint(pts).convex_hull
+                if hull.geom_type == "Polygon" and hull.area > 4.0 and not slotted:
+                    c = hull.centroid
+                    self.fig.add(Text((c.x, c.y), str(k.number), 3.4, italic=False))
+                    continue
+                a, b = _extremes(pts)
+                if slotted:
+                    a, b = self.overhang(k.number, a, b)
+                at = [(a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]))
+                      for t in (0.55, 0.4, 0.7, 0.25, 0.85)]
+                dx, dy = unit(_sub(b, a))
+                prefer = math.atan2(dx, dy)  # the paper normal (−dy, dx) as a paper angle
+                gap = 1.6
+            self.placer.place(str(k.number), at, prefer=(prefer, prefer + math.pi),
+                              spread=math.pi / 4, gap=gap, size=3.4, italic=False)
+        pivots = [n for n in self.m.frame.names if len(self.m.links_at(n)) > 1]
+        if pivots:
+            self.placer.place("1", self.paper[pivots[0]], prefer=-math.pi / 2, gap=7.5,
+                              size=3.4, italic=False)
+
+    def label_points(self) -> None:
+        centre = _centroid(list(self.paper.values()))
+        for name, at in self.paper.items():
+            away = _sub(at, centre)
+            prefer = math.atan2(-away[1], away[0]) if math.hypot(*away) > 1e-6 else math.pi / 4
+            self.placer.place(subscript(name), at, prefer=prefer, gap=2.0, size=3.6)
+
+
+# ----- small helpers ---------------------------------------------------------------------
+def _sub(p, q):
+    return (p[0] - q[0], p[1] - q[1])
+
+
+def _centroid(pts):
+    return (sum(p[0] for p in pts) / len(pts), sum(p[1] for p in pts) / len(pts))
+
+
+def _extremes(pts):
+    best = (0.0, pts[0], pts[-1])
+    for i, p in enumerate(pts):
+        for q in pts[i + 1:]:
+            d = math.dist(p, q)
+            if d > best[0]:
+                best = (d, p, q)
+    return best[1], best[2]
+
+
+def _clearest_direction(dirs: list[tuple[float, float]]) -> tuple[float, float]:
+    """The paper direction for a ground symbol: straight down unless a link is in the way."""
+    candidates = [(0.0, 1.0), (0.7071, 0.7071), (-0.7071, 0.7071), (1.0, 0.0), (-1.0, 0.0),
+                  (0.0, -1.0)]
+    best = None
+    for rank, c in enumerate(candidates):
+        clear = min((math.acos(max(-1.0, min(1.0, c[0] * d[0] + c[1] * d[1]))) for d in dirs),
+                    default=math.pi)
+        score = clear - 0.05 * rank
+        if clear >= math.radians(40):
+            return c
+        if best is None or score > best[0]:
+            best = (score, c)
+    return best[1]

@@ -1,0 +1,81 @@
+"""Write a figure to .svg, .pdf or .png, all or nothing.
+
+SVG needs no system library. PDF and PNG go through cairosvg, imported only here
+and only when asked for; without libcairo2 the user gets one line saying so. The
+file is written to a temporary name beside the target and renamed into place, so
+a failure leaves nothing half-written.
+"""
+
+from __future__ import annotations
+
+import os
+import tempfile
+from pathlib import Path
+
+from constructions.errors import RenderError
+
+from .figure import Figure
+from .svg import to_svg
+
+__all__ = ["FORMATS", "write_figure", "svg_to"]
+
+FORMATS = ("svg", "pdf", "png")
+
+_NO_CAIRO = ("PDF and PNG output need the cairo library (libcairo2), which is not installed: "
+             "install it (Debian/Ubuntu: apt-get install libcairo2) or write .svg instead")
+
+
+def svg_to(svg: str, fmt: str, *, dpi: float = 200.0) -> bytes:
+    """Convert SVG text to PDF or PNG bytes with cairosvg.
+
+    Raises
+    ------
+    RenderError
+        If cairosvg or libcairo2 is missing.
+    """
+    try:
+        import cairosvg  # noqa: PLC0415  (lazy: SVG output must not need libcairo)
+    except (ImportError, OSError):
+        raise RenderError(_NO_CAIRO) from None
+    data = svg.encode("utf-8")
+    if fmt == "pdf":
+        return cairosvg.svg2pdf(bytestring=data)
+    if fmt == "png":
+        return cairosvg.svg2png(bytestring=data, dpi=dpi, background_color="white")
+    raise RenderError(f"cannot convert to '{fmt}'; choose one of {', '.join(FORMATS)}")
+
+
+def write_figure(fig: Figure | str, path: str | Path) -> Path:
+    """Write ``fig`` (a Figure or SVG text) to ``path``; the suffix picks the format.
+
+    Raises
+    ------
+    RenderError
+        For an unknown suffix, a missing libcairo2, or a path that cannot be written.
+    """
+    path = Path(path)
+    fmt = path.suffix.lower().lstrip(".")
+    if fmt not in FORMATS:
+        raise RenderError(f"cannot write '{path.name}': the name must end in "
+                          f"{', '.join('.' + f for f in FORMATS)}")
+    svg = fig if isinstance(fig, str) else to_svg(fig)
+    data = svg.encode("utf-8") if fmt == "svg" else svg_to(svg, fmt)
+    _write_atomically(path, data)
+    return path
+
+
+def _write_atomically(path: Path, data: bytes) -> None:
+    folder = path.parent if str(path.parent) else Path(".")
+    if not folder.is_dir():
+        raise RenderError(f"cannot write '{path}': the folder '{folder}' does not exist")
+    try:
+        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", dir=folder)
+    except OSError as e:
+        raise RenderError(f"cannot write '{path}': {e.strerror}") from None
+    try:
+        with os.fdopen(fd, "wb") as f:
+            f.write(data)
+        os.replace(tmp, path)
+    except OSError as e:
+        Path(tmp).unlink(missing_ok=True)
+        raise RenderError(f"cannot write '{path}': {e.strerror}") from None
