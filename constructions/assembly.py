@@ -214,7 +214,8 @@ class _Assembler:
         base = on[0]
         bx, by = k.local(base)
         du, dv = px - bx, py - by
-        along = f"Along link {number}, lay off {base}{name} = {self.L(abs(du))} from {base}."
+        along = (f"Along link {number}, lay off {base}{name} = {self.L(abs(du))} from {base} "
+                 f"to mark {name}.")
         if dv == 0.0:
             self.found(name, "lay_off", self.known[base], self.axes[number], length=du,
                        sentence=along)

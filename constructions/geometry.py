@@ -137,6 +137,9 @@ class Line:
         a, b, c = float(self.a), float(self.b), float(self.c)
         if not all(math.isfinite(v) for v in (a, b, c)):
             raise DegenerateInput("a line needs finite coefficients")
+        big = max(abs(a), abs(b), abs(c))
+        if big > 0.0:  # rescale first so a² + b² can neither overflow nor underflow
+            a, b, c = a / big, b / big, c / big
         n = math.hypot(a, b)
         if n == 0.0:
             if c == 0.0:
@@ -144,6 +147,9 @@ class Line:
             a, b, c = 0.0, 0.0, 1.0
         else:
             a, b, c = a / n, b / n, c / n
+            if not math.isfinite(c):
+                raise DegenerateInput("the line lies too far away to represent; "
+                                      "treat it as the line at infinity")
         object.__setattr__(self, "a", a + 0.0)
         object.__setattr__(self, "b", b + 0.0)
         object.__setattr__(self, "c", c + 0.0)
@@ -312,7 +318,9 @@ def parallel_through(p: Point, line: Line) -> tuple[Line, float]:
     if line.is_at_infinity:
         raise DegenerateInput("the line at infinity has no parallels")
     if p.is_at_infinity:
-        return line, 1.0
+        if p == Point(line.b, -line.a, 0.0):
+            raise DegenerateInput("every parallel passes through the line's own direction")
+        return Line(0.0, 0.0, 1.0), 1.0
     x, y = p.xy
     return Line(line.a, line.b, -(line.a * x + line.b * y)), 1.0
 
@@ -367,8 +375,10 @@ def intersect_lines(g: Line, h: Line) -> tuple[Point, float]:
     sine = abs(w) if not (g.is_at_infinity or h.is_at_infinity) else 1.0
     if max(abs(x), abs(y), abs(w)) <= _TANGENT_SLACK * max(1.0, abs(g.c), abs(h.c)):
         raise DegenerateInput("the two lines coincide, so they have no single intersection")
-    if abs(w) <= _TANGENT_SLACK * math.hypot(x, y):
-        return Point(x, y, 0.0), sine
+    # With unit normals |w| is the sine of the angle between the lines, so parallelism
+    # is judged by angle alone, however far from the origin the lines run.
+    if abs(w) <= _TANGENT_SLACK and not (g.is_at_infinity or h.is_at_infinity):
+        return Point(x, y, 0.0), 0.0
     return Point(x, y, w), sine
 
 

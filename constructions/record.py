@@ -125,6 +125,9 @@ class Construction:
         TarsimError
             Whatever the verb raises (``NoIntersection``, ``DegenerateInput``).
         """
+        if verb not in VERBS:
+            raise TarsimError(f"step '{ref}' names '{verb}', which is not a drafting verb; "
+                              f"the verbs are {', '.join(VERBS)}")
         for ref_in in inputs:
             if ref_in not in self.steps:
                 raise TarsimError(f"step '{ref}' uses '{ref_in}', which is not yet drawn")
