@@ -37,6 +37,7 @@ __all__ = [
     "SingularPosition",
     "SINGULAR_RCOND",
     "solve",
+    "solve_positions",
     "point_velocity",
     "point_acceleration",
     "dof",
@@ -90,6 +91,8 @@ class Kinematics:
     follows the order of ``Mechanism.slides``. ``residual`` is ``max |Φ|`` (m or
     rad) at the solution and ``conditioning`` the reciprocal condition number of
     the length-scaled Jacobian (1 is ideal, below ``SINGULAR_RCOND`` is raised).
+    ``origins`` and their rates are each link's local origin, the frame included.
+    Angles are wrapped to ``[−π, π]``.
     """
 
     points: dict[str, tuple[float, float]]
@@ -108,7 +111,13 @@ class Kinematics:
 
 @dataclass(frozen=True, slots=True)
 class GrashofResult:
-    """Grashof class of a 4R four-bar; ``lengths`` are (ground, input, coupler, output)."""
+    """Grashof class of a 4R four-bar.
+
+    ``kind`` is ``"crank-rocker"``, ``"double-crank"``, ``"double-rocker"``,
+    ``"change-point"`` or ``"triple-rocker"``; ``is_grashof`` is S + L ≤ P + Q;
+    ``shortest`` is the number of the shortest link; ``links`` and ``lengths`` run
+    round the loop (ground, input, coupler, output); ``margin`` is (P + Q) − (S + L).
+    """
 
     kind: str
     is_grashof: bool
@@ -147,7 +156,8 @@ def _unit(v) -> np.ndarray:
 
 def _check(mech: Mechanism) -> None:
     d = mech.drive
-    numbers = [d.angle, d.omega, d.alpha, *(c for k in mech.links for _, xy in k.points for c in xy)]
+    numbers = [d.angle, d.omega, d.alpha]
+    numbers += [c for k in mech.links for _, xy in k.points for c in xy]
     numbers += [c for s in mech.slides for c in (*s.through, *s.direction)]
     if not all(math.isfinite(v) for v in numbers):
         raise InputError("a coordinate or an input value is not a finite number",
@@ -305,15 +315,15 @@ class _Assembly:
         """Global lines (point, unit direction) the unlocated point ``name`` must lie on."""
         out = []
         for s in self.m.slides:
-            l, g, d = s.link, s.guide_link, _unit(s.direction)
+            sl, g, d = s.link, s.guide_link, _unit(s.direction)
             through = np.asarray(s.through, dtype=float)
             if g in self.pose:
                 origin, phi = self.pose[g]
                 base, dg = origin + _rot(phi) @ through, _rot(phi) @ d
                 if s.point == name:
                     out.append((base, dg, s))
-                elif name in self.names[l] and l in self.phi:
-                    shift = _rot(self.phi[l]) @ (self.loc[l, name] - self.loc[l, s.point])
+                elif name in self.names[sl] and sl in self.phi:
+                    shift = _rot(self.phi[sl]) @ (self.loc[sl, name] - self.loc[sl, s.point])
                     out.append((base + shift, dg, s))
             elif g in self.phi and s.point in self.at and name in self.names[g]:
                 rg = _rot(self.phi[g])
@@ -604,7 +614,7 @@ def solve(mech: Mechanism) -> Kinematics:
 
     Examples
     --------
-    A crank-rocker four-bar with a 3-4-5 triangle at θ2 = 90°:
+    A parallelogram four-bar (ground and coupler 4, crank and rocker 3) at θ2 = 90°:
 
     >>> from constructions.model import Drive, Link, Mechanism
     >>> import math
@@ -637,6 +647,39 @@ def solve(mech: Mechanism) -> Kinematics:
     qd = np.linalg.solve(jac, rhs)
     qdd = np.linalg.solve(jac, system.gamma(q, qd))
     return _pack(system, q, qd, qdd, rcond)
+
+
+def solve_positions(mech: Mechanism) -> dict[str, tuple[float, float]]:
+    """Solve only where every point is: the vector loops without their derivatives.
+
+    At or near a dead point the velocities are undefined but the position is not,
+    so this does not refuse it: the closed-form start is polished by Newton only
+    where the Jacobian is well conditioned.
+
+    Raises
+    ------
+    AssemblyError
+        As :func:`solve`, except at dead points.
+    """
+    _check(mech)
+    system = _System(mech)
+    poses = _Assembly(mech).run()
+    q = np.zeros(3 * len(system.moving))
+    for k in system.moving:
+        (x, y), phi = poses[k]
+        q[system.col[k]:system.col[k] + 3] = (x, y, phi)
+    jac = system.jacobian(q)
+    if _singular(system, jac)[1] is None:
+        q = _newton(system, q, jac)
+    return {n: _point(system, q, n) for n in mech.point_names}
+
+
+def _point(system: _System, q: np.ndarray, name: str) -> tuple[float, float]:
+    at = system.m.links_at(name)
+    k = 1 if 1 in at else at[0]
+    t, f = system.state(q, k)
+    p = t + _rot(f) @ system.loc[k, name]
+    return (float(p[0]), float(p[1]))
 
 
 def _pack(system: _System, q, qd, qdd, rcond: float) -> Kinematics:
@@ -747,8 +790,8 @@ def grashof(lengths, *, links: tuple[int, int, int, int] = (1, 2, 3, 4)) -> Gras
     if len(ls) != 4 or min(ls) <= 0.0:
         raise InputError("a four-bar needs four positive lengths")
     order = sorted(range(4), key=lambda i: ls[i])
-    s, p, q, l = (ls[i] for i in order)
-    margin = (p + q) - (s + l)
+    short, p, q, long_ = (ls[i] for i in order)
+    margin = (p + q) - (short + long_)
     if abs(margin) <= 1e-12 * (p + q):
         kind = "change-point"
     elif margin < 0.0:

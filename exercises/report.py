@@ -47,13 +47,13 @@ class PositionCheck:
 def check_positions(mech: Mechanism) -> PositionCheck:
     """Assemble ``mech`` by compass, solve it by vector loops, and compare every joint."""
     asm = assemble(mech)
-    kin = analytic.solve(mech)
+    reference = analytic.solve_positions(mech)
     names = mech.point_names
     xy = {n: asm.xy(n) for n in names}
     size = max([math.dist(xy[a], xy[b]) for a in names for b in names] + [1e-300])
     rows = []
     for n in names:
-        c, a = xy[n], kin.points[n]
+        c, a = xy[n], reference[n]
         step = asm.construction[asm.points[n]]
         rows.append(PointCheck(n, c, a, math.dist(c, a) / size, step.conditioning))
     return PositionCheck(mech, asm, tuple(rows), size, mech.mobility(), analytic.grashof_class(mech))

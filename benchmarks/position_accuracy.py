@@ -1,0 +1,119 @@
+"""Position by compass against the analytic solver: run time, and error near toggle.
+
+Run:  python benchmarks/position_accuracy.py
+
+Part 1 times one position of each bundled example by construction (the recorded
+compass acts) and by the analytic solver (closed-form guess + Newton on the full
+loop equations), as medians of repeated runs in one process, and reports their
+ratio and the largest disagreement.
+
+Part 2 drives a four-bar towards its toggle (coupler and rocker collinear, where
+the two arcs that locate B become tangent) and reports, for each distance from
+toggle, the construction's conditioning and the disagreement between the two
+solutions. The error should grow like eps / conditioning, never faster, and the
+exact toggle should fail with a clear error rather than NaN.
+"""
+
+from __future__ import annotations
+
+import math
+import platform
+import statistics
+import sys
+import time
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+
+from constructions import analytic  # noqa: E402
+from constructions.assembly import assemble  # noqa: E402
+from constructions.errors import TarsimError  # noqa: E402
+from constructions.model import Drive  # noqa: E402
+from exercises.catalog import bundled  # noqa: E402
+from exercises.mechanism_file import load_mechanism, parse_mechanism  # noqa: E402
+
+
+def median_time(fn, repeat: int = 200) -> float:
+    """Median wall time of ``fn()`` in microseconds."""
+    times = []
+    for _ in range(repeat):
+        t0 = time.perf_counter()
+        fn()
+        times.append(time.perf_counter() - t0)
+    return statistics.median(times) * 1e6
+
+
+def disagreement(mech) -> tuple[float, float]:
+    asm = assemble(mech)
+    ref = analytic.solve_positions(mech)
+    names = mech.point_names
+    size = max(math.dist(asm.xy(a), asm.xy(b)) for a in names for b in names)
+    err = max(math.dist(asm.xy(n), ref[n]) for n in names) / size
+    return err, min(s.conditioning for s in asm.construction)
+
+
+def part1() -> None:
+    print("## 1. One position: construction vs analytic (median of 200 runs)\n")
+    print(f"{'example':<22}{'construction µs':>17}{'analytic µs':>13}{'ratio':>8}{'max rel. error':>16}")
+    for name, path in bundled().items():
+        mech = load_mechanism(path)
+        tc = median_time(lambda: assemble(mech))
+        ta = median_time(lambda: analytic.solve_positions(mech))
+        err, _ = disagreement(mech)
+        print(f"{name:<22}{tc:>17.1f}{ta:>13.1f}{tc / ta:>8.2f}{err:>16.1e}")
+
+
+TOGGLE = """
+[frame]
+O2 = [0, 0]
+O4 = [300, 0]
+[[link]]
+number = 2
+points = ["O2", "A"]
+lengths = {{ O2A = 100 }}
+[[link]]
+number = 3
+points = ["A", "B"]
+lengths = {{ AB = {ab} }}
+[[link]]
+number = 4
+points = ["O4", "B"]
+lengths = {{ O4B = 200 }}
+[input]
+link = 2
+angle = 180
+omega = 1
+[assembly]
+B = "left"
+"""
+
+
+def part2() -> None:
+    print("\n## 2. Approaching toggle: four-bar 100/AB/200 on 300 mm at θ2 = 180°\n")
+    print("At θ2 = 180°, |O4A| = 400 mm; with AB = 200 + δ the arcs about A and O4 touch")
+    print("at δ = 0 (coupler and rocker collinear).\n")
+    print(f"{'δ (mm)':>10}{'conditioning':>15}{'rel. error':>13}{'eps/cond':>12}")
+    for k in range(1, 15):
+        delta = 10.0 ** (2 - k)
+        mech = parse_mechanism(TOGGLE.format(ab=200 + delta), "toggle.toml")
+        try:
+            err, cond = disagreement(mech)
+        except TarsimError as e:
+            print(f"{delta:>10.0e}  {type(e).__name__}: {e}")
+            continue
+        print(f"{delta:>10.0e}{cond:>15.2e}{err:>13.1e}{2.2e-16 / cond:>12.1e}")
+    mech = parse_mechanism(TOGGLE.format(ab=200), "toggle.toml")
+    for label, fn in (("construction", assemble), ("analytic positions", analytic.solve_positions),
+                      ("analytic velocities", analytic.solve)):
+        try:
+            fn(mech)
+            print(f"exact toggle, {label}: solved (tangent arcs meet once)")
+        except TarsimError as e:
+            print(f"exact toggle, {label}: {type(e).__name__}: {e}")
+
+
+if __name__ == "__main__":
+    print(f"# Position accuracy and cost\n\nmachine: {platform.processor() or platform.machine()}, "
+          f"{platform.system()}, Python {platform.python_version()}\n")
+    part1()
+    part2()
