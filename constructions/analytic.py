@@ -554,6 +554,18 @@ def _singular(system: _System, jac: np.ndarray) -> tuple[float, SingularPosition
         link=free[0], angle_deg=deg)
 
 
+def _start(mech: Mechanism) -> tuple[_System, np.ndarray]:
+    """The loop equations and the closed-form start vector of body coordinates."""
+    _check(mech)
+    system = _System(mech)
+    poses = _Assembly(mech).run()
+    q = np.zeros(3 * len(system.moving))
+    for k in system.moving:
+        (x, y), phi = poses[k]
+        q[system.col[k]:system.col[k] + 3] = (x, y, phi)
+    return system, q
+
+
 def _conditioned(system: _System, q: np.ndarray) -> tuple[np.ndarray, float]:
     """Return the Jacobian at ``q`` and its rcond; raise at a dead point."""
     jac = system.jacobian(q)
@@ -629,13 +641,7 @@ def solve(mech: Mechanism) -> Kinematics:
     >>> round(kin.omegas[3], 12) + 0.0, round(kin.omegas[4], 12) + 0.0
     (0.0, 1.0)
     """
-    _check(mech)
-    system = _System(mech)
-    poses = _Assembly(mech).run()
-    q = np.zeros(3 * len(system.moving))
-    for k in system.moving:
-        (x, y), phi = poses[k]
-        q[system.col[k]:system.col[k] + 3] = (x, y, phi)
+    system, q = _start(mech)
     q = _newton(system, q, _conditioned(system, q)[0])
     jac, rcond = _conditioned(system, q)
     if system.scaled_residual(q) > 1e-10:
@@ -661,13 +667,7 @@ def solve_positions(mech: Mechanism) -> dict[str, tuple[float, float]]:
     AssemblyError
         As :func:`solve`, except at dead points.
     """
-    _check(mech)
-    system = _System(mech)
-    poses = _Assembly(mech).run()
-    q = np.zeros(3 * len(system.moving))
-    for k in system.moving:
-        (x, y), phi = poses[k]
-        q[system.col[k]:system.col[k] + 3] = (x, y, phi)
+    system, q = _start(mech)
     jac = system.jacobian(q)
     if _singular(system, jac)[1] is None:
         q = _newton(system, q, jac)

@@ -89,6 +89,12 @@ class _Assembler:
     def at(self) -> str:
         return f"at θ{self.m.drive.link} = {self.angle_text(self.theta)}"
 
+    def with_length(self, number: int, span: str, metres: float) -> str:
+        """Name a link with the length that matters: "link 3 (coupler, AB = 250 mm)"."""
+        k = self.m.link(number)
+        named = f"{k.name}, " if k.name else ""
+        return f"link {number} ({named}{span} = {self.L(metres)})"
+
     # ----- bookkeeping ---------------------------------------------------------
     def found(self, name: str, verb: str, *inputs: Ref, sentence: str, **params) -> None:
         self.known[name] = self.c.draw(point_ref(name), verb, *inputs, label=name,
@@ -265,7 +271,7 @@ class _Assembler:
         else:
             why = f"|{y}{x}| = {self.L(d)} < |{self.L(ri)} − {self.L(rj)}|"
         return AssemblyError(
-            f"{self.m.link(i).label} ({x}{name} = {self.L(ri)}) cannot reach the circle of "
+            f"{self.with_length(i, x + name, ri)} cannot reach the circle of "
             f"{name} about {y} {self.at()}: {why}", link=i, joint=name,
             angle_deg=math.degrees(self.theta))
 
@@ -296,7 +302,7 @@ class _Assembler:
                            sentence=f"The arc cuts the guide at {name} (the {pick} cut).")
             except NoIntersection as e:
                 raise AssemblyError(
-                    f"{self.m.link(i).label} ({x}{name} = {self.L(r)}) cannot reach the guide "
+                    f"{self.with_length(i, x + name, r)} cannot reach the guide "
                     f"of {name} {self.at()}: it passes {self.L(e.margin)} beyond the arc",
                     link=i, joint=name, angle_deg=math.degrees(self.theta)) from None
             return True

@@ -470,7 +470,9 @@ def intersect_circles(c1: Circle, c2: Circle, pick: Branch | str) -> tuple[Point
                 f"the circles (radii {r1:.6g} and {r2:.6g}, centres {d:.6g} apart) miss "
                 f"by {margin:.6g}: they lie {where}", margin)
     # Product form of the half-chord: stable near tangency.
-    h2 = max(0.0, (r1 + r2 - d) * (r1 + r2 + d) * (d - r1 + r2) * (d + r1 - r2)) / (4.0 * d * d)
+    # Each small factor is divided by 2d on its own, so d² never underflows.
+    h2 = max(0.0, (r1 + r2 - d) * (r1 + r2 + d)
+             * ((d - r1 + r2) / (2.0 * d)) * ((d + r1 - r2) / (2.0 * d)))
     a = (d * d + r1 * r1 - r2 * r2) / (2.0 * d)
     ux, uy = dx / d, dy / d
     h = math.sqrt(h2)

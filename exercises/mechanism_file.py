@@ -46,18 +46,20 @@ def parse_mechanism(text: str, filename: str = "<string>") -> Mechanism:
     try:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as e:
-        raise _toml_error(e, filename) from None
+        raise _toml_error(e, text, filename) from None
     return _Reader(data, SourceMap(text), filename).mechanism()
 
 
-def _toml_error(e: tomllib.TOMLDecodeError, filename: str) -> InputError:
+def _toml_error(e: tomllib.TOMLDecodeError, text: str, filename: str) -> InputError:
     msg = str(e)
     m = re.search(r"\(at line (\d+), column (\d+)\)", msg)
     if m:
         return InputError(f"not valid TOML: {msg[:m.start()].strip()}", file=filename,
                           line=int(m.group(1)), column=int(m.group(2)))
     m = re.search(r"\(at end of document\)", msg)
-    return InputError(f"not valid TOML: {msg[:m.start()].strip() if m else msg}", file=filename)
+    # The file ended too soon: point at its last character.
+    return InputError(f"not valid TOML: {msg[:m.start()].strip() if m else msg}", file=filename,
+                      line=text.count("\n") + 1, column=len(text) - text.rfind("\n"))
 
 
 @dataclass
@@ -79,7 +81,8 @@ class SourceMap:
         """Line of ``key`` inside the ``index``-th ``table`` (or the top level)."""
         start = self.header(table, index) if table else 0
         if table and start is None:
-            return None
+            # Written inline (``input = { … }``): the line that opens it.
+            return self._assignment(table)
         pat = re.compile(r"(^|[\s{,])" + re.escape(key) + r"\s*=")
         for i in range(start or 0, len(self.lines)):
             line = self.lines[i]
@@ -87,7 +90,13 @@ class SourceMap:
                 break
             if pat.search(line.split("#", 1)[0]):
                 return i + 1
+        if not table:
+            return self.header(key) or self._assignment(key)
         return start
+
+    def _assignment(self, key: str) -> int | None:
+        pat = re.compile(r"^\s*" + re.escape(key) + r"\s*=")
+        return next((i + 1 for i, line in enumerate(self.lines) if pat.match(line)), None)
 
 
 class _Reader:
@@ -201,7 +210,7 @@ class _Reader:
             self.name(k, "a frame point", table="frame", key=k)
             pts.append((k, self.xy(v, f"frame point {k}", table="frame", key=k)))
         if not pts:
-            raise self.fail("[frame] names no fixed point", table="frame")
+            raise self.fail("names no fixed point", table="frame")
         return Link(1, tuple(pts), "frame")
 
     def read_links(self, frame: Link) -> list[Link]:
@@ -333,7 +342,7 @@ class _Reader:
                 raise self.unknown(k, ("link", "angle", "omega", "alpha"), "input setting",
                                    key=k, **where)
         if "link" not in t:
-            raise self.fail("[input] must name the input link, e.g. link = 2", **where)
+            raise self.fail("must name the input link, e.g. link = 2", **where)
         link = self.link_number(t["link"], "link", where)
         if link == 1:
             raise self.fail("the frame (link 1) cannot be the input", key="link", **where)

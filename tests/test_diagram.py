@@ -1,0 +1,287 @@
+"""Tests for graphics.diagram (with graphics.svg and graphics.export): the kinematic diagram.
+
+Every bundled example, and a four-bar whose coupler is a plate carrying a coupler
+point C, is assembled, drawn and written as SVG; the SVG is read back with
+xml.etree and checked for its symbols, its labels and a scale that measures true.
+"""
+
+import io
+import math
+import os
+import re
+import subprocess
+import sys
+import xml.etree.ElementTree as ET
+
+import pytest
+
+from constructions.assembly import assemble
+from exercises.catalog import bundled
+from exercises.mechanism_file import load_mechanism, parse_mechanism
+from graphics.diagram import draw_kinematic_diagram, subscript
+from graphics.export import svg_to
+from graphics.figure import Circle, Path
+from graphics.svg import to_svg
+
+SVG = "{http://www.w3.org/2000/svg}"
+
+# The bundled four-bar with a 3-4-5-scaled plate for its coupler: AB = 250, AC = 200,
+# BC = 150 mm, C left of A → B.
+PLATE = (bundled()["four-bar"].read_text(encoding="utf-8")
+         .replace('points = ["A", "B"]\nlengths = { AB = 250 }',
+                  'points = ["A", "B", "C"]\nlengths = { AB = 250, AC = 200, BC = 150 }\n'
+                  'sides = { C = "left" }'))
+assert "AC = 200" in PLATE
+
+EXAMPLES = [*bundled(), "plate-coupler"]
+
+
+def mechanism(name):
+    if name == "plate-coupler":
+        return parse_mechanism(PLATE, "plate-coupler.toml")
+    return load_mechanism(bundled()[name])
+
+
+class Drawn:
+    """One example drawn: the mechanism, the Figure, its SVG text and parsed root."""
+
+    def __init__(self, name):
+        self.mech = mechanism(name)
+        self.fig = draw_kinematic_diagram(assemble(self.mech))
+        self.svg = to_svg(self.fig)
+        self.root = ET.fromstring(self.svg)
+
+    def groups(self, cls):
+        return [g for g in self.root.iter(SVG + "g") if g.get("class") == cls]
+
+    @property
+    def classes(self):
+        return {g.get("class") for g in self.root.iter(SVG + "g")}
+
+    @property
+    def texts(self):
+        return [t.text for t in self.root.iter(SVG + "text")]
+
+    def stated_scale(self):
+        """The caption's "Scale 1 cm = N unit" as (N, unit)."""
+        (m,) = [re.fullmatch(r"Scale 1 cm = ([\d.]+) (\w+)", t) for t in self.texts
+                if t.startswith("Scale ")]
+        return float(m.group(1)), m.group(2)
+
+
+@pytest.fixture(scope="module", params=EXAMPLES)
+def drawn(request):
+    return Drawn(request.param)
+
+
+# ----- the page ---------------------------------------------------------------------------
+def test_page_is_sized_in_mm_with_a_matching_viewbox(drawn):
+    w, h = drawn.root.get("width"), drawn.root.get("height")
+    assert w.endswith("mm") and h.endswith("mm")
+    assert drawn.root.get("viewBox") == f"0 0 {w[:-2]} {h[:-2]}"
+    assert (float(w[:-2]), float(h[:-2])) == pytest.approx((drawn.fig.width, drawn.fig.height))
+    # It fits an A4 page in landscape with room to spare.
+    assert 40 < float(w[:-2]) < 280 and 40 < float(h[:-2]) < 200
+
+
+def test_everything_drawn_lies_on_the_page(drawn):
+    x0, y0, x1, y1 = drawn.fig.bounds()
+    assert 0 <= x0 and 0 <= y0 and x1 <= drawn.fig.width and y1 <= drawn.fig.height
+
+
+# ----- symbols ------------------------------------------------------------------------------
+def test_the_textbook_symbols_are_drawn(drawn):
+    m = drawn.mech
+    want = {"ground", "hatch", "pin", "link", "text", "scale", "scale_fill"}
+    assert want <= drawn.classes
+    has_block = any(s.kind == "block" for s in m.slides)
+    assert ("block" in drawn.classes) == has_block
+    assert ("guide" in drawn.classes) == any(s.kind == "block" and s.guide_link == 1
+                                              for s in m.slides)
+    plates = [k for k in m.links if k.number != 1 and len(k.names) >= 3]
+    assert ("plate" in drawn.classes) == bool(plates)
+
+
+def test_one_ground_symbol_per_fixed_pivot(drawn):
+    m = drawn.mech
+    pivots = [n for n in m.frame.names if len(m.links_at(n)) > 1]
+    triangles = [p for g in drawn.groups("ground") for p in g.iter(SVG + "path")]
+    assert len(triangles) == len(pivots)
+    assert all(len(g) > 0 for g in drawn.groups("hatch"))
+
+
+def test_a_pin_at_every_joint(drawn):
+    m = drawn.mech
+    joints = [n for n in m.point_names
+              if len(m.links_at(n)) >= 2 or any(s.point == n for s in m.slides)]
+    circles = [c for g in drawn.groups("pin") for c in g.iter(SVG + "circle")]
+    assert len(circles) == len(joints)
+
+
+def test_a_plate_is_drawn_through_its_three_points():
+    d = Drawn("plate-coupler")
+    (plate,) = [it for it in d.fig.items if isinstance(it, Path) and it.style == "plate"]
+    assert len(plate.points) == 3 and plate.closed
+    n, unit = d.stated_scale()
+    s = 10.0 / n  # paper mm per mm
+    sides = sorted(math.dist(p, q) / s for p, q in zip(plate.points, plate.points[1:] +
+                                                          plate.points[:1]))
+    assert sides == pytest.approx([150.0, 200.0, 250.0], rel=1e-9)
+
+
+# ----- labels ---------------------------------------------------------------------------------
+def test_every_point_and_link_is_labelled(drawn):
+    m = drawn.mech
+    texts = drawn.texts
+    for name in m.point_names:
+        assert subscript(name) in texts, name
+    for k in m.links:
+        assert str(k.number) in texts, k.number
+    assert "θ₂" in texts and "ω₂" in texts
+
+
+def test_trailing_digits_are_subscripts():
+    assert subscript("O2") == "O₂"
+    assert subscript("O24") == "O₂₄"
+    assert subscript("A") == "A"
+    assert subscript("B2x") == "B2x"
+
+
+def test_caption_states_name_input_and_scale(drawn):
+    m = drawn.mech
+    texts = drawn.texts
+    assert m.name in texts
+    (params,) = [t for t in texts if t.startswith("θ₂ = ")]
+    d = m.drive
+    assert params == (f"θ₂ = {math.degrees(d.angle):.6g}°,  ω₂ = {abs(d.omega):.6g} rad/s "
+                      f"{'ccw' if d.omega > 0 else 'cw'}")
+    n, unit = drawn.stated_scale()
+    assert unit == m.units.length
+    # The bar's labels, drawn last: 0, 2N and 4N with the unit.
+    assert texts[-3:] == ["0", f"{2 * n:g}", f"{4 * n:g} {unit}"]
+
+
+@pytest.mark.parametrize("units, angle, omega, caption", [
+    ('angle = "rad"', 0.5, -2.0, "θ₂ = 0.5 rad,  ω₂ = 2 rad/s cw"),
+    ('angular_velocity = "rpm"', 60, 120, "θ₂ = 60°,  ω₂ = 120 rpm ccw"),
+    ('angle = "deg"', 60, 0, "θ₂ = 60°"),
+])
+def test_caption_speaks_the_files_units(units, angle, omega, caption):
+    text = (bundled()["four-bar"].read_text(encoding="utf-8")
+            .replace('angle = "deg"\nangular_velocity = "rad/s"', units)
+            .replace("angle = 60 ", f"angle = {angle} ")
+            .replace("omega = 10 ", f"omega = {omega} "))
+    fig = draw_kinematic_diagram(assemble(parse_mechanism(text, "units.toml")))
+    texts = [t.text for t in ET.fromstring(to_svg(fig)).iter(SVG + "text")]
+    assert caption in texts
+    assert ("ω₂" in texts) == bool(omega)
+
+
+# ----- determinism ------------------------------------------------------------------------------
+def test_same_input_gives_byte_identical_svg(drawn):
+    again = to_svg(draw_kinematic_diagram(assemble(drawn.mech)))
+    assert again == drawn.svg
+
+
+def test_svg_does_not_depend_on_the_hash_seed():
+    code = ("import sys; from exercises.catalog import bundled; "
+            "from exercises.mechanism_file import load_mechanism; "
+            "from constructions.assembly import assemble; "
+            "from graphics.diagram import draw_kinematic_diagram; from graphics.svg import to_svg; "
+            "sys.stdout.buffer.write(to_svg(draw_kinematic_diagram(assemble("
+            "load_mechanism(bundled()['slotted-lever-p37'])))).encode())")
+    runs = [subprocess.run([sys.executable, "-c", code], capture_output=True, check=True,
+                           timeout=120, env={**os.environ, "PYTHONHASHSEED": seed}).stdout
+            for seed in ("1", "2")]
+    assert runs[0] == runs[1]
+    assert runs[0] == Drawn("slotted-lever-p37").svg.encode()
+
+
+# ----- the scale is true ----------------------------------------------------------------------
+def _rect(d):
+    xs, ys = zip(*((float(x), float(y)) for x, y in re.findall(r"([-\d.]+),([-\d.]+)", d)))
+    return min(xs), min(ys), max(xs), max(ys)
+
+
+def test_scale_bar_cells_are_one_centimetre(drawn):
+    cells = sorted(_rect(p.get("d")) for cls in ("scale", "scale_fill")
+                   for g in drawn.groups(cls) for p in g.iter(SVG + "path"))
+    assert len(cells) == 4
+    for (x0, y0, x1, y1), nxt in zip(cells, cells[1:] + [None]):
+        assert x1 - x0 == pytest.approx(10.0, abs=2e-3)  # 1 cm; coordinates printed to 0.001
+        if nxt is not None:
+            assert nxt[0] == pytest.approx(x1, abs=1e-9)  # contiguous
+    fills = [_rect(p.get("d"))[0] for g in drawn.groups("scale_fill") for p in g.iter(SVG + "path")]
+    assert sorted(fills) == [cells[0][0], cells[2][0]]  # alternate centimetres filled
+
+
+def _crank(fig):
+    """Paper positions of the input link's pivot and tip, from the Figure itself.
+
+    The pivot is where the dashed θ reference starts; the tip is the other end of the
+    link bar that starts or ends there, and both carry a pin circle.
+    """
+    (ref,) = [it for it in fig.items if isinstance(it, Path) and it.style == "reference"]
+    pivot = ref.points[0]
+    pins = [it.centre for it in fig.items if isinstance(it, Circle) and it.style == "pin"]
+    assert min(math.dist(pivot, c) for c in pins) < 1e-9
+    bars = [it.points for it in fig.items if isinstance(it, Path) and it.style == "link"]
+    ends = [q if math.dist(p, pivot) < 1e-9 else p for p, q in bars
+            if min(math.dist(p, pivot), math.dist(q, pivot)) < 1e-9]
+    tips = [e for e in ends if min(math.dist(e, c) for c in pins) < 1e-9]
+    assert len(tips) == 1
+    return pivot, tips[0]
+
+
+def test_stated_scale_is_the_drawn_crank_over_its_true_length(drawn):
+    m = drawn.mech
+    n, unit = drawn.stated_scale()
+    k = m.link(m.drive.link)
+    true = k.span(k.names[0], k.names[1]) / m.units.metres  # in the file's unit
+    pivot, tip = _crank(drawn.fig)
+    # In the Figure, coordinates are unrounded floats: a few ulps of 100 mm.
+    assert math.dist(pivot, tip) * n / 10.0 == pytest.approx(true, rel=1e-9)
+    # In the SVG, each coordinate is printed to 0.001 mm, so the distance between two
+    # pin centres is good to 2·√2·0.0005 < 0.0015 mm of paper.
+    centres = [(float(c.get("cx")), float(c.get("cy")))
+               for g in drawn.groups("pin") for c in g.iter(SVG + "circle")]
+    near = [min(centres, key=lambda c: math.dist(c, p)) for p in (pivot, tip)]
+    assert all(math.dist(c, p) < 1e-3 for c, p in zip(near, (pivot, tip)))  # the SVG is the Figure
+    assert math.dist(*near) * n / 10.0 == pytest.approx(true, abs=0.0015 * n / 10.0)
+
+
+def test_four_bar_crank_measures_100_mm_at_the_stated_scale():
+    d = Drawn("four-bar")
+    n, unit = d.stated_scale()
+    assert (n, unit) == (20.0, "mm")  # 1 cm = 20 mm: 337.9 mm wide fits 150 mm of paper
+    pivot, tip = _crank(d.fig)
+    assert math.dist(pivot, tip) == pytest.approx(50.0, rel=1e-12)  # 100 mm at 1:2
+    assert math.dist(pivot, tip) * n / 10.0 == pytest.approx(100.0, rel=1e-12)
+
+
+# ----- PDF and PNG --------------------------------------------------------------------------------
+def test_pdf_page_is_the_svg_page_in_points(drawn):
+    pdf = svg_to(drawn.svg, "pdf")
+    assert pdf.startswith(b"%PDF")
+    boxes = re.findall(rb"/MediaBox\s*\[\s*([-\d.]+)\s+([-\d.]+)\s+([-\d.]+)\s+([-\d.]+)\s*\]", pdf)
+    assert len(boxes) == 1
+    x0, y0, x1, y1 = map(float, boxes[0])
+    pt = 72 / 25.4
+    # cairo prints the box to 6 decimals of a point.
+    assert (x0, y0) == (0.0, 0.0)
+    assert (x1, y1) == pytest.approx((drawn.fig.width * pt, drawn.fig.height * pt), abs=1e-5)
+
+
+def test_png_renders_and_is_not_blank(drawn):
+    from PIL import Image
+
+    png = svg_to(drawn.svg, "png", dpi=200)
+    img = Image.open(io.BytesIO(png))
+    px = 200 / 25.4
+    assert img.size[0] == pytest.approx(drawn.fig.width * px, abs=1)
+    assert img.size[1] == pytest.approx(drawn.fig.height * px, abs=1)
+    grey = img.convert("L")
+    hist = grey.histogram()
+    inked = sum(hist[:250]) / sum(hist)
+    # A thin-line drawing: a few percent of the page, never empty and never a black page.
+    assert 0.01 < inked < 0.60, inked
