@@ -201,6 +201,14 @@ class Circle:
         object.__setattr__(self, "radius", r)
 
 
+def _branch(pick: Branch | str) -> Branch:
+    try:
+        return Branch(pick)
+    except ValueError:
+        raise DegenerateInput(f"'{pick}' is not a valid branch, must be one of "
+                              f"{', '.join(b.value for b in Branch)}") from None
+
+
 class Branch(StrEnum):
     """Which of two intersections to take.
 
@@ -318,7 +326,7 @@ def parallel_through(p: Point, line: Line) -> tuple[Line, float]:
     if line.is_at_infinity:
         raise DegenerateInput("the line at infinity has no parallels")
     if p.is_at_infinity:
-        if p == Point(line.b, -line.a, 0.0):
+        if abs(p.x * line.a + p.y * line.b) <= _TANGENT_SLACK:
             raise DegenerateInput("every parallel passes through the line's own direction")
         return Line(0.0, 0.0, 1.0), 1.0
     x, y = p.xy
@@ -405,7 +413,7 @@ def intersect_line_circle(line: Line, circle: Circle, pick: Branch | str) -> tup
     >>> p.xy, cond
     ((4.0, 0.0), 0.8)
     """
-    pick = Branch(pick)
+    pick = _branch(pick)
     if pick not in (Branch.FORWARD, Branch.BACKWARD):
         raise DegenerateInput(f"a line and a circle take 'forward' or 'backward', not '{pick}'")
     if line.is_at_infinity:
@@ -450,7 +458,7 @@ def intersect_circles(c1: Circle, c2: Circle, pick: Branch | str) -> tuple[Point
     >>> p.xy, round(cond, 12)
     ((3.0, 4.0), 0.96)
     """
-    pick = Branch(pick)
+    pick = _branch(pick)
     if pick not in (Branch.LEFT, Branch.RIGHT):
         raise DegenerateInput(f"two circles take 'left' or 'right', not '{pick}'")
     (x1, y1), (x2, y2) = c1.centre.xy, c2.centre.xy
@@ -460,8 +468,9 @@ def intersect_circles(c1: Circle, c2: Circle, pick: Branch | str) -> tuple[Point
     if d == 0.0:
         raise DegenerateInput("concentric circles have no single intersection")
     scale = max(r1, r2, d, c1.centre.size(), c2.centre.size())
+    dr = r1 - r2
     outside = d - (r1 + r2)
-    inside = abs(r1 - r2) - d
+    inside = abs(dr) - d
     if outside > 0.0 or inside > 0.0:
         margin = max(outside, inside)
         if margin > _TANGENT_SLACK * scale:
@@ -471,9 +480,10 @@ def intersect_circles(c1: Circle, c2: Circle, pick: Branch | str) -> tuple[Point
                 f"by {margin:.6g}: they lie {where}", margin)
     # Product form of the half-chord: stable near tangency.
     # Each small factor is divided by 2d on its own, so d² never underflows.
+    # Written with r1 − r2 kept whole, so nearly concentric circles lose nothing.
     h2 = max(0.0, (r1 + r2 - d) * (r1 + r2 + d)
-             * ((d - r1 + r2) / (2.0 * d)) * ((d + r1 - r2) / (2.0 * d)))
-    a = (d * d + r1 * r1 - r2 * r2) / (2.0 * d)
+             * ((d - dr) / (2.0 * d)) * ((d + dr) / (2.0 * d)))
+    a = (d + dr * (r1 + r2) / d) / 2.0
     ux, uy = dx / d, dy / d
     h = math.sqrt(h2)
     s = h if pick is Branch.LEFT else -h
@@ -490,6 +500,8 @@ def rotate_about(p: Point, centre: Point, angle: float) -> tuple[Point, float]:
     >>> tuple(round(v, 12) for v in q.xy)
     (0.0, 1.0)
     """
+    if not math.isfinite(angle):
+        raise DegenerateInput(f"a rotation needs a finite angle, got {angle}")
     c, s = math.cos(angle), math.sin(angle)
     if p.is_at_infinity:
         dx, dy = p.direction

@@ -70,8 +70,9 @@ VERBS: Mapping[str, Callable[..., tuple[Any, float]]] = {
 class Step:
     """One drafting act: ``output = verb(*inputs, **params)``.
 
-    ``conditioning`` is the worst conditioning along the step's DAG path, so a
-    result inherits the ill-conditioning of every act it rests on.
+    ``conditioning`` is the step's own conditioning times the worst of its
+    inputs', so a result inherits, and compounds, the ill-conditioning of the acts
+    it rests on.
     """
 
     id: Ref
@@ -132,7 +133,9 @@ class Construction:
             if ref_in not in self.steps:
                 raise TarsimError(f"step '{ref}' uses '{ref_in}', which is not yet drawn")
         out, cond = VERBS[verb](*(self.steps[r].output for r in inputs), **params)
-        worst = min([cond] + [self.steps[r].conditioning for r in inputs])
+        # Chained acts compound: an ill-conditioned cut of ill-conditioned lines is
+        # worse than either, so the act's own conditioning multiplies the worst input's.
+        worst = cond * min([1.0] + [self.steps[r].conditioning for r in inputs])
         self._add(Step(ref, verb, tuple(inputs), out, label, role, panel, sentence,
                        worst, tuple(sorted(params.items()))))
         return ref

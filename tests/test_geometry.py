@@ -394,6 +394,13 @@ def test_verbs_carry_directions():
     assert lay_off(Point(1, 1), Point.at_infinity(-1, 0), 2.0) == (Point(3, 1), 1.0)
 
 
+def test_parallel_through_the_line_s_own_computed_direction_raises():
+    g, _ = line_through(Point(1, 2), Point(7, -3))
+    own, _ = intersect_lines(g, parallel_through(Point(-4, 9), g)[0])  # 1 ulp off g's
+    with pytest.raises(DegenerateInput):
+        parallel_through(own, g)
+
+
 # ---- rotate, project, lay off, perpendicular
 
 

@@ -42,10 +42,10 @@ def test_draw_records_the_act(figure):
     assert figure["O"].role == Role.GIVEN and figure["l"].role == Role.CONSTRUCTION
 
 
-# ---- conditioning is the worst along the DAG path
+# ---- conditioning compounds along the DAG path
 
 
-def test_conditioning_is_the_worst_along_the_path():
+def test_conditioning_compounds_along_the_path():
     c = Construction()
     for ref, xy in ("O", (0, 0)), ("C", (5, 0)), ("A", (0, 9)), ("Z", (1, 1)):
         _give(c, ref, *xy)
@@ -60,7 +60,9 @@ def test_conditioning_is_the_worst_along_the_path():
     near_tangent = c["T"].conditioning
     assert 0 < near_tangent < 1e-4
     assert near_tangent == intersect_circles(c.output("k1"), c.output("k2"), "left")[1]
-    assert c["M"].conditioning == c["N"].conditioning == c["R"].conditioning == near_tangent
+    assert c["M"].conditioning == c["N"].conditioning == near_tangent
+    own_r = VERBS["line_through"](c.output("S"), c.output("N"))[1]
+    assert c["R"].conditioning == own_r * near_tangent
     assert c["l"].conditioning == c["S"].conditioning == c["O"].conditioning == 1.0
 
 
@@ -121,7 +123,7 @@ def test_replay_reproduces_every_step(made):
 
 
 @given(constructions())
-def test_every_step_carries_the_worst_conditioning_of_its_ancestry(made):
+def test_every_step_compounds_its_own_conditioning_with_its_worst_input(made):
     c, _ = made
     for step in c:
         assert 0.0 <= step.conditioning <= 1.0
@@ -129,7 +131,7 @@ def test_every_step_carries_the_worst_conditioning_of_its_ancestry(made):
             assert step.conditioning == 1.0
             continue
         own = VERBS[step.verb](*(c.output(r) for r in step.inputs), **dict(step.params))[1]
-        assert step.conditioning == min([own] + [c[r].conditioning for r in step.inputs])
+        assert step.conditioning == own * min([1.0] + [c[r].conditioning for r in step.inputs])
 
 
 def _ancestors(c):
