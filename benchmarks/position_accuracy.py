@@ -31,6 +31,7 @@ from constructions.errors import TarsimError  # noqa: E402
 from constructions.model import Drive  # noqa: E402
 from exercises.catalog import bundled  # noqa: E402
 from exercises.mechanism_file import load_mechanism, parse_mechanism  # noqa: E402
+from tests.common import four_bar_toml  # noqa: E402
 
 
 def median_time(fn, repeat: int = 200) -> float:
@@ -63,29 +64,6 @@ def part1() -> None:
         print(f"{name:<22}{tc:>17.1f}{ta:>13.1f}{tc / ta:>8.2f}{err:>16.1e}")
 
 
-TOGGLE = """
-[frame]
-O2 = [0, 0]
-O4 = [300, 0]
-[[link]]
-number = 2
-points = ["O2", "A"]
-lengths = {{ O2A = 100 }}
-[[link]]
-number = 3
-points = ["A", "B"]
-lengths = {{ AB = {ab} }}
-[[link]]
-number = 4
-points = ["O4", "B"]
-lengths = {{ O4B = 200 }}
-[input]
-link = 2
-angle = 180
-omega = 1
-[assembly]
-B = "left"
-"""
 
 
 def part2() -> None:
@@ -95,14 +73,14 @@ def part2() -> None:
     print(f"{'δ (mm)':>10}{'conditioning':>15}{'rel. error':>13}{'eps/cond':>12}")
     for k in range(1, 15):
         delta = 10.0 ** (2 - k)
-        mech = parse_mechanism(TOGGLE.format(ab=200 + delta), "toggle.toml")
+        mech = parse_mechanism(four_bar_toml(coupler=200 + delta, angle=180), "toggle.toml")
         try:
             err, cond = disagreement(mech)
         except TarsimError as e:
             print(f"{delta:>10.0e}  {type(e).__name__}: {e}")
             continue
         print(f"{delta:>10.0e}{cond:>15.2e}{err:>13.1e}{2.2e-16 / cond:>12.1e}")
-    mech = parse_mechanism(TOGGLE.format(ab=200), "toggle.toml")
+    mech = parse_mechanism(four_bar_toml(coupler=200, angle=180), "toggle.toml")
     for label, fn in (("construction", assemble), ("analytic positions", analytic.solve_positions),
                       ("analytic velocities", analytic.solve)):
         try:

@@ -103,3 +103,37 @@ def scotch_yoke(theta2: float, *, crank=0.1, omega2=0.0, alpha2=0.0) -> Mechanis
         (Slide(SlideKind.BLOCK, 3, "A", 4, (0.0, 0.0), (0.0, 1.0)),
          Slide(SlideKind.BLOCK, 4, "Y", 1, (0.0, 0.0), (1.0, 0.0))),
         units=Units("m"), name="Scotch yoke")
+
+
+FOUR_BAR_TOML = """\
+[frame]
+O2 = [0, 0]
+O4 = [{ground}, 0]
+
+[[link]]
+number = 2
+points = ["O2", "A"]
+lengths = {{ O2A = {crank} }}
+
+[[link]]
+number = 3
+points = ["A", "B"]
+lengths = {{ AB = {coupler} }}
+
+[[link]]
+number = 4
+points = ["O4", "B"]
+lengths = {{ O4B = {rocker} }}
+
+[input]
+link = 2
+angle = {angle}
+{assembly}"""
+
+
+def four_bar_toml(*, ground=300, crank=100, coupler=250, rocker=200, angle=60,
+                  branch: str | None = 'B = "left"') -> str:
+    """A four-bar mechanism file (mm, deg) as text; ``branch=None`` leaves out [assembly]."""
+    assembly = f"\n[assembly]\n{branch}\n" if branch else ""
+    return FOUR_BAR_TOML.format(ground=ground, crank=crank, coupler=coupler, rocker=rocker,
+                                angle=angle, assembly=assembly)

@@ -11,39 +11,13 @@ from constructions.errors import AssemblyError
 from constructions.model import Drive
 from exercises.catalog import bundled
 from exercises.mechanism_file import load_mechanism, parse_mechanism
+from tests.common import four_bar_toml
 
 BUNDLED = sorted(bundled())
 
-FOUR_BAR = """
-name = "four-bar"
-[units]
-length = "mm"
-[frame]
-O2 = [0, 0]
-O4 = [{ground}, 0]
-[[link]]
-number = 2
-points = ["O2", "A"]
-lengths = {{ O2A = {crank} }}
-[[link]]
-number = 3
-points = ["A", "B"]
-lengths = {{ AB = {coupler} }}
-[[link]]
-number = 4
-points = ["O4", "B"]
-lengths = {{ O4B = {rocker} }}
-[input]
-link = 2
-angle = {angle}
-omega = 10
-{assembly}
-"""
-
-
 def four_bar(ground=300, crank=100, coupler=250, rocker=200, angle=60, branch='B = "left"'):
-    text = FOUR_BAR.format(ground=ground, crank=crank, coupler=coupler, rocker=rocker,
-                           angle=angle, assembly=f"[assembly]\n{branch}" if branch else "")
+    text = four_bar_toml(ground=ground, crank=crank, coupler=coupler, rocker=rocker,
+                         angle=angle, branch=branch)
     return parse_mechanism(text, "four-bar.toml")
 
 

@@ -18,35 +18,10 @@ from click.testing import CliRunner
 
 from constructions.errors import RenderError
 from exercises.cli import cli
+from tests.common import four_bar_toml
 from graphics import export
 
-FOUR_BAR = """\
-[frame]
-O2 = [0, 0]
-O4 = [300, 0]
-
-[[link]]
-number = 2
-points = ["O2", "A"]
-lengths = { O2A = 100 }
-
-[[link]]
-number = 3
-points = ["A", "B"]
-lengths = { AB = 150 }
-
-[[link]]
-number = 4
-points = ["O4", "B"]
-lengths = { O4B = 200 }
-
-[input]
-link = 2
-angle = 180
-
-[assembly]
-B = "left"
-"""
+FOUR_BAR = four_bar_toml(coupler=150, angle=180)
 # At θ2 = 180° A is at (−100, 0): |O4A| = 400 mm > AB + O4B = 150 + 200 mm.
 UNREACHABLE = ("Error: link 3 (AB = 150 mm) cannot reach the circle of B about O4 at "
                "θ2 = 180°: |O4A| = 400 mm > 150 mm + 200 mm\n")
