@@ -40,6 +40,10 @@ __all__ = [
     "project_onto",
     "lay_off",
     "midpoint",
+    "mark",
+    "normal_direction",
+    "join",
+    "Segment",
     "distance",
     "side_of",
 ]
@@ -199,6 +203,29 @@ class Circle:
         if not (math.isfinite(r) and r > 0.0):
             raise DegenerateInput(f"a circle needs a positive radius, got {r}")
         object.__setattr__(self, "radius", r)
+
+
+@dataclass(frozen=True, slots=True)
+class Segment:
+    """A drawn segment from ``start`` to ``end``: a vector when its sense matters.
+
+    A velocity laid off at a point is the segment from the point to the tip, and
+    the figure draws it as an arrow.
+    """
+
+    start: Point
+    end: Point
+
+    @property
+    def vector(self) -> tuple[float, float]:
+        """``end − start`` (both finite)."""
+        (x0, y0), (x1, y1) = self.start.xy, self.end.xy
+        return x1 - x0, y1 - y0
+
+    @property
+    def length(self) -> float:
+        """The segment's length."""
+        return math.hypot(*self.vector)
 
 
 def _branch(pick: Branch | str) -> Branch:
@@ -574,3 +601,45 @@ def midpoint(p: Point, q: Point) -> tuple[Point, float]:
     """
     (px, py), (qx, qy) = p.xy, q.xy
     return Point((px + qx) / 2.0, (py + qy) / 2.0), 1.0
+
+
+def mark(p: Point) -> tuple[Point, float]:
+    """Name a point already drawn: a pin is the instant centre of the links it joins.
+
+    Examples
+    --------
+    >>> mark(Point(1, 2))[0].xy
+    (1.0, 2.0)
+    """
+    return p, 1.0
+
+
+def normal_direction(line: Line) -> tuple[Point, float]:
+    """The direction perpendicular to ``line``, as a point at infinity.
+
+    A block on a straight guide has its instant centre here.
+
+    Examples
+    --------
+    >>> base, _ = line_through(Point(0, 0), Point(1, 0))
+    >>> p, _ = normal_direction(base)
+    >>> p.is_at_infinity, p.direction
+    (True, (0.0, 1.0))
+    """
+    if line.is_at_infinity:
+        raise DegenerateInput("the line at infinity has no normal direction")
+    a, b = line.normal
+    return Point.at_infinity(a, b), 1.0
+
+
+def join(p: Point, q: Point) -> tuple[Segment, float]:
+    """Join ``p`` to ``q``: the segment (a vector, when drawn with an arrow) from p to q.
+
+    Examples
+    --------
+    >>> join(Point(0, 0), Point(3, 4))[0].length
+    5.0
+    """
+    if p.is_at_infinity or q.is_at_infinity:
+        raise DegenerateInput("a segment needs two finite end points")
+    return Segment(p, q), 1.0

@@ -62,6 +62,9 @@ VERBS: Mapping[str, Callable[..., tuple[Any, float]]] = {
     "project_onto": g.project_onto,
     "lay_off": g.lay_off,
     "midpoint": g.midpoint,
+    "mark": g.mark,
+    "normal_direction": g.normal_direction,
+    "join": g.join,
 }
 """The drafting verbs a step may name, by name."""
 

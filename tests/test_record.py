@@ -9,7 +9,7 @@ from hypothesis import strategies as st
 
 from constructions import record
 from constructions.errors import GeometryError, NoIntersection, TarsimError
-from constructions.geometry import Circle, Line, Point, intersect_circles, line_through
+from constructions.geometry import Circle, Line, Point, Segment, intersect_circles, line_through
 from constructions.record import VERBS, Construction, Panel, Role, Step, replay, toposort
 
 
@@ -83,8 +83,11 @@ SIGNATURES = {
     "project_onto": (("point", "line"), {}),
     "lay_off": (("point", "point"), {"length": st.floats(-20, 20)}),
     "midpoint": (("point", "point"), {}),
+    "mark": (("point",), {}),
+    "normal_direction": (("line",), {}),
+    "join": (("point", "point"), {}),
 }
-KINDS = {Point: "point", Line: "line", Circle: "circle"}
+KINDS = {Point: "point", Line: "line", Circle: "circle", Segment: "segment"}
 # Small integers make coincidences, parallels and tangencies likely; floats make the rest.
 COORDS = st.one_of(st.integers(-6, 6).map(float), st.floats(-20, 20))
 
