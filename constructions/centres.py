@@ -1,0 +1,321 @@
+"""Instant centres: the primaries by inspection, the rest by Kennedy through the circle diagram.
+
+The order is the lecture notes' (000-part1 §2.7–2.9):
+
+1. *By inspection.* A pin is the centre of the links it joins; a block on a
+   straight guide has its centre at infinity, perpendicular to the guide. A pin in
+   a slot, or a direct contact, gives no centre but a locus: the common normal at
+   the contact, on which the centre lies (rule 5).
+2. *By Kennedy.* On the circle diagram a centre is a chord; it is found when two
+   triangles with that chord as a side have their other sides known. Each triangle
+   gives a line through two known centres, and the centre is where the lines meet.
+   The scan restarts from the lowest pair after every find, so the order of
+   discovery is the one a student following the circle diagram would take. When two
+   triangles give the same line (a multiple joint), another triangle is taken.
+
+Every centre is a recorded step (``I:13``) of the assembly's construction, so a
+figure draws it, a scene slices back through it, and a centre at infinity is just
+a point with w = 0.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from itertools import combinations
+
+from . import geometry as g
+from .assembly import Assembly
+from .errors import DegenerateInput, TarsimError
+from .model import SlideKind
+from .record import Ref, Role
+
+__all__ = ["Centre", "Centres", "locate_centres", "omega_ratio", "centre_ref", "pair_label",
+           "WELL_CROSSED", "ILL_CONDITIONED"]
+
+WELL_CROSSED = 0.1
+"""Sine of the crossing angle (about 6°) below which another triangle pair is sought."""
+
+ILL_CONDITIONED = 1e-3
+"""Conditioning below which a centre is reported as ill-conditioned."""
+
+_SAME = 1e-9  # relative slack for "these two lines (or points) are the same"
+
+
+def pair_label(i: int, j: int) -> str:
+    """The centre's name as the notes write it: ``I13`` (lower number first)."""
+    i, j = sorted((i, j))
+    return f"I{i}{j}" if max(i, j) < 10 else f"I{i},{j}"
+
+
+def centre_ref(i: int, j: int) -> Ref:
+    """The id of the step that locates centre ``I_ij``."""
+    i, j = sorted((i, j))
+    return f"I:{i}{j}" if max(i, j) < 10 else f"I:{i},{j}"
+
+
+@dataclass(frozen=True)
+class Centre:
+    """One instant centre and how it was found.
+
+    ``rule`` is ``"pin"``, ``"block"`` (at infinity, perpendicular to a straight
+    guide) or ``"kennedy"``. ``lines`` are the refs of the two lines it was cut
+    from, and ``triangles`` the third link of each triangle (``None`` for the
+    common normal of a pin in a slot or a contact). ``order`` numbers the
+    secondaries in discovery order (0 for a primary).
+    """
+
+    pair: tuple[int, int]
+    ref: Ref
+    rule: str
+    lines: tuple[Ref, ...] = ()
+    triangles: tuple[int | None, ...] = ()
+    order: int = 0
+    crossing: float = 1.0
+
+    @property
+    def label(self) -> str:
+        """``I13``."""
+        return pair_label(*self.pair)
+
+    @property
+    def primary(self) -> bool:
+        """Found by inspection rather than by Kennedy's theorem."""
+        return self.rule != "kennedy"
+
+
+@dataclass
+class Centres:
+    """Every instant centre of an assembled mechanism, in order of discovery."""
+
+    assembly: Assembly
+    found: dict[tuple[int, int], Centre] = field(default_factory=dict)
+    loci: dict[tuple[int, int], list[Ref]] = field(default_factory=dict)
+
+    def centre(self, i: int, j: int) -> Centre:
+        """The centre of links ``i`` and ``j`` (either order)."""
+        return self.found[tuple(sorted((i, j)))]
+
+    def point(self, i: int, j: int) -> g.Point:
+        """Where ``I_ij`` is (possibly at infinity)."""
+        return self.assembly.construction.output(self.centre(i, j).ref)
+
+    def conditioning(self, i: int, j: int) -> float:
+        """The conditioning of ``I_ij``'s step, compounded along its construction."""
+        return self.assembly.construction[self.centre(i, j).ref].conditioning
+
+    @property
+    def links(self) -> tuple[int, ...]:
+        """The link numbers, ascending."""
+        return tuple(sorted(self.assembly.mechanism.numbers))
+
+    @property
+    def primaries(self) -> list[Centre]:
+        """The centres found by inspection."""
+        return [c for c in self.found.values() if c.primary]
+
+    @property
+    def secondaries(self) -> list[Centre]:
+        """The centres found by Kennedy's theorem, in discovery order."""
+        return sorted((c for c in self.found.values() if not c.primary), key=lambda c: c.order)
+
+    def warnings(self) -> list[str]:
+        """One line for each ill-conditioned centre, saying how the lines meet."""
+        out = []
+        for c in self.secondaries:
+            if self.point(*c.pair).is_at_infinity:
+                continue
+            cond = self.conditioning(*c.pair)
+            if cond < ILL_CONDITIONED:
+                angle = math.degrees(math.asin(min(1.0, c.crossing)))
+                out.append(f"{c.label} is ill-conditioned: its lines meet at {angle:.3g}° "
+                           f"(conditioning {cond:.2g})")
+        return out
+
+
+def locate_centres(asm: Assembly) -> Centres:
+    """Find all n(n − 1)/2 instant centres of ``asm`` as recorded construction steps.
+
+    Raises
+    ------
+    TarsimError
+        If the mechanism's mobility is not 1, or some centre cannot be reached by
+        Kennedy's theorem (every line for it coincides).
+    """
+    dof = asm.mechanism.mobility()[0]
+    if dof != 1:
+        raise TarsimError(f"instant centres need a mechanism of one degree of freedom; this "
+                          f"one has {dof} (Grübler)")
+    return _Kennedy(asm).run()
+
+
+class _Kennedy:
+    def __init__(self, asm: Assembly):
+        self.asm = asm
+        self.c = asm.construction
+        self.m = asm.mechanism
+        self.out = Centres(asm)
+        xy = [asm.xy(n) for n in self.m.point_names]
+        self.size = max([1e-300] + [math.dist(p, q) for p in xy for q in xy])
+
+    # ----- 1. by inspection ------------------------------------------------------
+    def inspect(self) -> None:
+        for name in self.m.point_names:
+            for i, j in combinations(sorted(self.m.links_at(name)), 2):
+                if (i, j) in self.out.found:
+                    continue
+                ref = self.c.draw(centre_ref(i, j), "mark", self.asm.points[name],
+                                  label=pair_label(i, j), role=Role.RESULT,
+                                  sentence=f"The pin {name} joins links {i} and {j}, so it is "
+                                           f"{pair_label(i, j)}.")
+                self.out.found[(i, j)] = Centre((i, j), ref, "pin")
+        for k, s in enumerate(self.m.slides):
+            i, j = sorted((s.link, s.guide_link))
+            if s.kind is SlideKind.BLOCK:
+                if (i, j) in self.out.found:
+                    continue
+                on = "the frame" if s.guide_link == 1 else f"link {s.guide_link}"
+                ref = self.c.draw(centre_ref(i, j), "normal_direction", self.asm.guides[k],
+                                  label=pair_label(i, j), role=Role.RESULT,
+                                  sentence=f"Block {s.point} of link {s.link} slides on a straight "
+                                           f"guide of {on}, so {pair_label(i, j)} is at infinity, "
+                                           "perpendicular to the guide.")
+                self.out.found[(i, j)] = Centre((i, j), ref, "block")
+            else:
+                what = "contact" if getattr(s, "contact", None) is not None else "slot"
+                ref = self.c.draw(f"N:{i}{j}:{k}", "perpendicular_through",
+                                  self.asm.points[s.point], self.asm.guides[k],
+                                  sentence=f"{pair_label(i, j)} lies on the common normal at "
+                                           f"{s.point}: through {s.point} draw the perpendicular "
+                                           f"to the {what} of link {s.guide_link}.")
+                self.out.loci.setdefault((i, j), []).append(ref)
+
+    # ----- 2. by Kennedy ------------------------------------------------------------
+    def run(self) -> Centres:
+        self.inspect()
+        links = self.out.links
+        pairs = list(combinations(links, 2))
+        order = 0
+        while True:
+            todo = [p for p in pairs if p not in self.out.found]
+            if not todo:
+                return self.out
+            for pair in todo:
+                choice = self.choose_lines(pair)
+                if choice is not None:
+                    order += 1
+                    self.cut(pair, choice, order)
+                    break
+            else:
+                names = ", ".join(pair_label(*p) for p in todo)
+                raise TarsimError(f"Kennedy's theorem cannot reach {names}: no two distinct "
+                                  "lines are known for them (check the mechanism's joints)")
+
+    def candidates(self, pair: tuple[int, int]) -> list[tuple[Ref, int | None]]:
+        """Lines known to carry the centre: common normals, then one per usable triangle."""
+        i, j = pair
+        lines: list[tuple[Ref, int | None]] = [(r, None) for r in self.out.loci.get(pair, [])]
+        for k in self.out.links:
+            if k in pair:
+                continue
+            a, b = tuple(sorted((i, k))), tuple(sorted((j, k)))
+            if a not in self.out.found or b not in self.out.found:
+                continue
+            pa, pb = self.c.output(self.out.found[a].ref), self.c.output(self.out.found[b].ref)
+            if self.same_point(pa, pb):
+                continue  # the triangle's two centres coincide: its line is not fixed
+            ref = f"K:{i}{j}/{k}"
+            if ref not in self.c:
+                self.c.draw(ref, "line_through", self.out.found[a].ref, self.out.found[b].ref,
+                            sentence=f"Triangle {_tri(i, j, k)}: by Kennedy, {pair_label(i, j)} "
+                                     f"lies on the line through {pair_label(i, k)} and "
+                                     f"{pair_label(j, k)}.")
+            lines.append((ref, k))
+        return lines
+
+    def choose_lines(self, pair):
+        """The first two lines that cross well, else the best-crossing distinct pair."""
+        lines = self.candidates(pair)
+        best = None
+        for (r1, k1), (r2, k2) in combinations(lines, 2):
+            l1, l2 = self.c.output(r1), self.c.output(r2)
+            if self.same_line(l1, l2):
+                continue
+            sine = _crossing(l1, l2)
+            if sine >= WELL_CROSSED:
+                return (r1, k1), (r2, k2), sine
+            if best is None or sine > best[2]:
+                best = ((r1, k1), (r2, k2), sine)
+        return best
+
+    def cut(self, pair, choice, order: int) -> None:
+        (r1, k1), (r2, k2), sine = choice
+        i, j = pair
+        ref = self.c.draw(centre_ref(i, j), "intersect_lines", r1, r2, label=pair_label(i, j),
+                          role=Role.RESULT,
+                          sentence=f"{pair_label(i, j)} is where the two lines meet.")
+        self.out.found[pair] = Centre(pair, ref, "kennedy", (r1, r2), (k1, k2), order, sine)
+
+    # ----- tests of sameness ----------------------------------------------------------
+    def same_point(self, p: g.Point, q: g.Point) -> bool:
+        if p.is_at_infinity or q.is_at_infinity:
+            if not (p.is_at_infinity and q.is_at_infinity):
+                return False
+            (a, b), (c, d) = p.direction, q.direction
+            return abs(a * d - b * c) <= _SAME
+        return math.dist(p.xy, q.xy) <= _SAME * self.size
+
+    def same_line(self, l1: g.Line, l2: g.Line) -> bool:
+        if l1.is_at_infinity or l2.is_at_infinity:
+            return l1.is_at_infinity and l2.is_at_infinity
+        if _crossing(l1, l2) > _SAME:
+            return False
+        x, y = l1.anchor()
+        return abs(l2.signed_distance(g.Point(x, y))) <= _SAME * max(self.size, math.hypot(x, y))
+
+
+def _crossing(l1: g.Line, l2: g.Line) -> float:
+    """Sine of the angle between two lines (1 if either is the line at infinity)."""
+    if l1.is_at_infinity or l2.is_at_infinity:
+        return 1.0
+    return abs(l1.a * l2.b - l1.b * l2.a)
+
+
+def _tri(i: int, j: int, k: int) -> str:
+    return "Δ" + "".join(str(n) for n in (i, k, j))
+
+
+def omega_ratio(centres: Centres, i: int, j: int) -> float:
+    """``ω_j / ω_i`` from the centres: ``(I_ij − I_1i)/(I_ij − I_1j)`` along the line of centres.
+
+    The ratio is negative (opposite senses) when I_ij lies between I_1i and I_1j.
+
+    Raises
+    ------
+    DegenerateInput
+        If ω_i is zero at this position (its link translates) or ω_j is unbounded
+        (I_ij falls on I_1j).
+    """
+    if i == j:
+        return 1.0
+    p_ij, p_i, p_j = centres.point(i, j), centres.point(1, i), centres.point(1, j)
+    if p_i.is_at_infinity:
+        raise DegenerateInput(f"link {i} translates (I1{i} is at infinity), so ω{i} = 0 and "
+                              f"no ratio to it exists")
+    if p_j.is_at_infinity:
+        return 0.0
+    if p_ij.is_at_infinity:
+        return 1.0
+    (x, y), (xi, yi), (xj, yj) = p_ij.xy, p_i.xy, p_j.xy
+    ux, uy = xj - xi, yj - yi
+    if math.hypot(ux, uy) == 0.0:
+        # I1i ≡ I1j: measure along the line from them to I_ij instead.
+        ux, uy = x - xi, y - yi
+    num = (x - xi) * ux + (y - yi) * uy
+    den = (x - xj) * ux + (y - yj) * uy
+    scale = max(abs(num), abs(den), 1e-300)
+    if abs(den) <= 1e-12 * scale:
+        raise DegenerateInput(f"{pair_label(i, j)} falls on {pair_label(1, j)}: ω{j} would be "
+                              "unbounded at this position")
+    return num / den
+
