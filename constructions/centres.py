@@ -59,7 +59,8 @@ class Centre:
     """One instant centre and how it was found.
 
     ``rule`` is ``"pin"``, ``"block"`` (at infinity, perpendicular to a straight
-    guide) or ``"kennedy"``. ``lines`` are the refs of the two lines it was cut
+    guide), ``"kennedy"``, or ``"velocities"`` (on its one Kennedy line where the
+    two links' velocities agree, when every triangle gives that same line). ``lines`` are the refs of the two lines it was cut
     from, and ``triangles`` the third link of each triangle (``None`` for the
     common normal of a pin in a slot or a contact). ``order`` numbers the
     secondaries in discovery order (0 for a primary).
@@ -81,7 +82,7 @@ class Centre:
     @property
     def primary(self) -> bool:
         """Found by inspection rather than by Kennedy's theorem."""
-        return self.rule != "kennedy"
+        return self.rule in ("pin", "block")
 
 
 @dataclass
@@ -207,6 +208,10 @@ class _Kennedy:
                     self.cut(pair, choice, order)
                     break
             else:
+                placed = next((p for p in todo if self.place_by_velocities(p, order + 1)), None)
+                if placed is not None:
+                    order += 1
+                    continue
                 names = ", ".join(pair_label(*p) for p in todo)
                 raise TarsimError(f"Kennedy's theorem cannot reach {names}: no two distinct "
                                   "lines are known for them (check the mechanism's joints)")
@@ -255,6 +260,99 @@ class _Kennedy:
                           role=Role.RESULT,
                           sentence=f"{pair_label(i, j)} is where the two lines meet.")
         self.out.found[pair] = Centre(pair, ref, "kennedy", (r1, r2), (k1, k2), order, sine)
+
+    # ----- 3. when every Kennedy line coincides ------------------------------------
+    def place_by_velocities(self, pair: tuple[int, int], order: int) -> bool:
+        """Place a centre on its one Kennedy line where the two links' velocities agree.
+
+        At some positions every triangle gives the same line (the crank-shaper with
+        its crank along the lever: all finite centres on one line). Kennedy then
+        fixes only the line; the point on it is where links i and j have equal
+        velocity, which the known centres give through ω ratios (rule 2 of the notes).
+        """
+        lines = self.candidates(pair)
+        if not lines:
+            return False
+        fields = [self.velocity_field(n) for n in pair]
+        if None in fields:
+            return False
+        (wi, bi), (wj, bj) = fields
+        if abs(wi - wj) <= 1e-12 * max(abs(wi), abs(wj)):
+            return False
+        # ω_i J P + b_i = ω_j J P + b_j  ⇒  P = −J (b_j − b_i) / (ω_i − ω_j)
+        dx, dy = bj[0] - bi[0], bj[1] - bi[1]
+        px, py = dy / (wi - wj), -dx / (wi - wj)
+        ref_line, _ = lines[0]
+        line = self.c.output(ref_line)
+        start = self.finite_centre_on(line)
+        if start is None:
+            return False
+        (sx, sy) = self.c.output(start).xy
+        tx, ty = line.direction
+        along = (px - sx) * tx + (py - sy) * ty
+        i, j = pair
+        ref = self.c.draw(
+            centre_ref(i, j), "lay_off", start, ref_line, length=along,
+            label=pair_label(i, j), role=Role.RESULT,
+            sentence=f"Every Kennedy line for {pair_label(i, j)} is this one line, so "
+                     f"{pair_label(i, j)} is placed on it where links {i} and {j} have equal "
+                     f"velocities (from the ω ratios of the known centres): "
+                     f"{self.c[start].label or start} to {pair_label(i, j)} is "
+                     f"{self.m.units.length_text(abs(along))}.")
+        self.out.found[pair] = Centre(pair, ref, "velocities", (ref_line,), (lines[0][1],),
+                                      order, 0.0)
+        return True
+
+    def finite_centre_on(self, line: g.Line) -> Ref | None:
+        for c in self.out.found.values():
+            p = self.c.output(c.ref)
+            if not p.is_at_infinity and abs(line.signed_distance(p)) <= _SAME * self.size:
+                return c.ref
+        return None
+
+    def omega(self, n: int) -> float | None:
+        """ω_n relative to the input's ω = 1, through the known centres."""
+        d = self.m.drive.link
+        if n == d:
+            return 1.0
+        if n == 1:
+            return 0.0
+        for k in (d, *self.out.links):
+            if k == 1 or k == n:
+                continue
+            needed = [(1, k), (1, n), tuple(sorted((k, n)))] + ([] if k == d else [tuple(sorted((d, k)))])
+            if all(p in self.out.found for p in needed):
+                try:
+                    wk = 1.0 if k == d else omega_ratio(self.out, d, k)
+                    return wk * omega_ratio(self.out, k, n)
+                except DegenerateInput:
+                    continue
+        return None
+
+    def velocity_field(self, n: int):
+        """``(ω_n, b_n)`` with v_n(P) = ω_n J P + b_n, or None if the centres cannot tell."""
+        if n == 1:
+            return 0.0, (0.0, 0.0)
+        if (1, n) not in self.out.found:
+            return None
+        ground = self.out.point(1, n)
+        if not ground.is_at_infinity:
+            w = self.omega(n)
+            if w is None:
+                return None
+            cx, cy = ground.xy
+            return w, (w * cy, -w * cx)          # −ω J c
+        for k in self.out.links:               # a translating link: borrow a point's velocity
+            pair = tuple(sorted((k, n)))
+            if k in (1, n) or pair not in self.out.found or (1, k) not in self.out.found:
+                continue
+            pk, x = self.out.point(1, k), self.out.point(*pair)
+            wk = self.omega(k)
+            if pk.is_at_infinity or x.is_at_infinity or wk is None:
+                continue
+            (ax, ay), (bx, by) = pk.xy, x.xy
+            return 0.0, (-wk * (by - ay), wk * (bx - ax))
+        return None
 
     # ----- tests of sameness ----------------------------------------------------------
     def same_point(self, p: g.Point, q: g.Point) -> bool:

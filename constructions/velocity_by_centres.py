@@ -1,0 +1,262 @@
+"""Velocities by instant centres: the radius-rotation and parallel-line constructions.
+
+Both follow Hinkle's chapter 5 and the notes' 8-step line-of-centres procedure
+(000-part2 §2.5, 004 §3–4):
+
+* the known velocity (at a point of the input link) is carried to the *transfer
+  point* I_ij, the centre common to the input link i and the link j that carries
+  the asked point, along the line of centres I_1i–I_ij–I_1j (Kennedy): swing the
+  known point onto the line about I_1i, lay off its speed there, draw the gauge
+  line of link i from I_1i through the tip, and erect the perpendicular at I_ij;
+* then, on link j, the asked point is reached
+  - by **radius rotation**: swing it about I_1j onto the line of centres, cut the
+    gauge line of link j with the perpendicular there, and rotate the velocity back;
+  - by **parallel lines**: turn V_Iij through 90° onto its radius toward I_1j,
+    draw through its tip the parallel to the line I_ij–D, cut the radius D–I_1j,
+    and turn the piece cut off back through 90° the other way.
+
+A link that translates (I_1j at infinity) moves as a whole: every point has the
+transfer point's velocity.
+"""
+
+from __future__ import annotations
+
+import math
+
+from . import geometry as g
+from .assembly import Assembly
+from .centres import Centres, pair_label
+from .errors import DegenerateInput, TarsimError
+from .record import Ref, Role
+from .velocity_drawing import VelocityResult, draw_input_velocity, speed_text, vector_label
+
+__all__ = ["velocity_by_radius_rotation", "velocity_by_parallel_lines", "METHODS"]
+
+
+def velocity_by_radius_rotation(asm: Assembly, centres: Centres, point: str, *,
+                                scale: float, link: int | None = None) -> VelocityResult:
+    """Find V of ``point`` by rotating radii onto the line of centres (Hinkle Figs 5.1, 5.2, 5.4)."""
+    return _Method(asm, centres, "radius-rotation", "rr", scale).run(point, link)
+
+
+def velocity_by_parallel_lines(asm: Assembly, centres: Centres, point: str, *,
+                               scale: float, link: int | None = None) -> VelocityResult:
+    """Find V of ``point`` by the parallel-line method (Hinkle Fig 5.3, notes §2.7)."""
+    return _Method(asm, centres, "parallel-line", "pl", scale).run(point, link)
+
+
+class _Method:
+    def __init__(self, asm: Assembly, centres: Centres, method: str, prefix: str, scale: float):
+        self.asm, self.cs, self.method, self.scale = asm, centres, method, scale
+        self.c = asm.construction
+        self.m = asm.mechanism
+        self.steps: list[Ref] = []
+        self.prefix = prefix
+
+    # ----- bookkeeping ------------------------------------------------------------
+    def draw(self, name: str, verb: str, *inputs: Ref, **kw) -> Ref:
+        ref = f"{self.prefix}:{self.point}:{name}"
+        self.c.draw(ref, verb, *inputs, **kw)
+        self.steps.append(ref)
+        return ref
+
+    def centre(self, i: int, j: int) -> Ref:
+        return self.cs.centre(i, j).ref
+
+    def is_infinite(self, ref: Ref) -> bool:
+        return self.c.output(ref).is_at_infinity
+
+    def speed(self, ref: Ref) -> str:
+        return speed_text(self.c.output(ref).length / self.scale, self.m.units)
+
+    # ----- the run --------------------------------------------------------------
+    def run(self, point: str, link: int | None) -> VelocityResult:
+        self.point = point
+        d = self.m.drive.link
+        known, v_known = draw_input_velocity(self.asm, self.scale)
+        self.steps += [f"v:perp:{known}", f"v:tip:{known}", v_known]
+        j = self.carrier(point, link)
+        try:
+            if j == d:
+                v = self.on_link(j, self.asm.points[known], v_known, point,
+                                 transfer_label=known)
+            else:
+                t, v_t = self.transfer(d, j, known, v_known)
+                v = self.on_link(j, t, v_t, point, transfer_label=pair_label(d, j))
+        except DegenerateInput as e:
+            raise TarsimError(f"the {self.method} construction of V_{point} breaks down at this "
+                              f"position: {e}") from None
+        return VelocityResult(self.method, point, j, v, self.scale, self.steps)
+
+    def carrier(self, point: str, link: int | None) -> int:
+        """The link to take ``point`` on: the input's, else one whose transfer centre is a pin."""
+        links = [k for k in self.m.links_at(point) if k != 1]
+        if not links:
+            slides = [s.link for s in self.m.slides if s.point == point]
+            links = slides
+        if link is not None:
+            if link not in links:
+                raise TarsimError(f"point {point} is not on link {link}; it is on "
+                                  f"{', '.join(f'link {k}' for k in links) or 'the frame only'}")
+            return link
+        if not links:
+            raise TarsimError(f"point {point} is on the frame: its velocity is zero")
+        d = self.m.drive.link
+        if d in links:
+            return d
+
+        def cost(k: int) -> tuple:
+            return (self.is_infinite(self.centre(1, k)), not self.cs.centre(d, k).primary, k)
+        return min(links, key=cost)
+
+    def transfer(self, i: int, j: int, known: str, v_known: Ref) -> tuple[Ref, Ref]:
+        """Carry the known velocity on link i to the transfer point I_ij (notes §2.5, steps 1–4)."""
+        i1, ij = self.centre(1, i), self.centre(i, j)
+        lab_i1, lab_ij = pair_label(1, i), pair_label(i, j)
+        if _same(self.c.output(ij), self.c.output(self.asm.points[known])):
+            return ij, v_known  # the known point is the transfer point (a pin)
+        if self.is_infinite(ij):
+            raise DegenerateInput(f"{lab_ij} is at infinity (links {i} and {j} turn together)")
+        loc = self.draw("loc", "line_through", i1, ij,
+                        sentence=f"Draw the line of centres through {lab_i1} and {lab_ij}; "
+                                 f"{pair_label(1, j)} lies on it too (Kennedy).")
+        tip = self.gauge_tip(i1, loc, known, v_known, lab_i1, f"link {i}")
+        perp = self.draw("perp:t", "perpendicular_through", ij, loc,
+                         sentence=f"At {lab_ij} erect the perpendicular to the line of centres.")
+        t_tip = self.draw("tip:t", "intersect_lines", perp, tip,
+                          sentence=f"It meets the gauge line of link {i} at the tip of "
+                                   f"V_{lab_ij}.")
+        v_t = self.draw("V:t", "join", ij, t_tip, label=vector_label(lab_ij),
+                        sentence="")
+        self.c.steps[v_t] = _with_sentence(self.c[v_t], f"V_{lab_ij} = {self.speed(v_t)}: "
+                                           f"{lab_ij} is a point of both link {i} and link {j}.")
+        return ij, v_t
+
+    def gauge_tip(self, centre: Ref, loc: Ref, known: str, v_known: Ref, lab_c: str,
+                  what: str) -> Ref:
+        """Swing ``known`` onto the line of centres, lay off its speed there, draw the gauge line."""
+        p = self.asm.points[known]
+        arc = self.draw("arc:k", "circle_through", centre, p,
+                        sentence=f"With centre {lab_c} and radius {lab_c}{known} swing {known} "
+                                 f"onto the line of centres at {known}′.")
+        at = self.draw("rot:k", "intersect_line_circle", loc, arc, pick="forward", label=f"{known}′")
+        perp = self.draw("perp:k", "perpendicular_through", at, loc)
+        sense = self.sense_of(centre, p, v_known)
+        tip = self.draw("tip:k", "lay_off", at, perp,
+                        length=sense * self.c.output(v_known).length,
+                        sentence=f"At {known}′ lay off V_{known} = {self.speed(v_known)} "
+                                 "perpendicular to the line of centres, in the same sense.")
+        return self.draw("gauge:i", "line_through", centre, tip, label=f"gauge line of {what}",
+                         sentence=f"Draw the gauge line of {what} from {lab_c} through the tip.")
+
+    def sense_of(self, centre: Ref, p: Ref, v: Ref) -> float:
+        """+1 if V at ``p`` turns counter-clockwise about ``centre``, else −1 (read off the figure)."""
+        (cx, cy), (px, py) = self.c.output(centre).xy, self.c.output(p).xy
+        vx, vy = self.c.output(v).vector
+        return 1.0 if (px - cx) * vy - (py - cy) * vx >= 0 else -1.0
+
+    # ----- on link j ---------------------------------------------------------------
+    def on_link(self, j: int, t: Ref, v_t: Ref, point: str, transfer_label: str) -> Ref:
+        target = self.asm.points[point]
+        j1 = self.centre(1, j)
+        label = vector_label(point)
+        if self.is_infinite(j1):
+            along = self.draw("dir", "line_through", t, self.tip_of(v_t))
+            par = self.draw("par", "parallel_through", target, along)
+            tip = self.draw("tip", "lay_off", target, par, length=self.c.output(v_t).length,
+                            sentence=f"Link {j} translates ({pair_label(1, j)} is at infinity), "
+                                     f"so every point of it has V_{transfer_label}: lay it off "
+                                     f"at {point}.")
+            return self.result(point, tip, label)
+        if g.distance(self.c.output(target), self.c.output(j1)) <= 1e-12 * self.size():
+            raise DegenerateInput(f"{point} is at {pair_label(1, j)}, so V_{point} = 0")
+        if self.method == "radius-rotation":
+            return self.rotate_radius(j, j1, t, v_t, point, target, label)
+        return self.draw_parallels(j, j1, t, v_t, point, target, label)
+
+    def tip_of(self, v: Ref) -> Ref:
+        """The ref of a vector's tip point (the input of its ``join``)."""
+        return self.c[v].inputs[1]
+
+    def size(self) -> float:
+        xy = [self.asm.xy(n) for n in self.m.point_names]
+        return max([1e-300] + [math.dist(p, q) for p in xy for q in xy])
+
+    def rotate_radius(self, j, j1, t, v_t, point, target, label) -> Ref:
+        lab = pair_label(1, j)
+        if self.c.output(t) == self.c.output(target) or _same(self.c.output(t),
+                                                               self.c.output(target)):
+            return v_t
+        loc = self.draw("loc:j", "line_through", j1, t,
+                        sentence=f"The line of centres of link {j} runs through {lab} and the "
+                                 "transfer point.")
+        gauge = self.draw("gauge:j", "line_through", j1, self.tip_of(v_t),
+                          label=f"gauge line of link {j}",
+                          sentence=f"Draw the gauge line of link {j} from {lab} through the tip "
+                                   "of the known velocity.")
+        arc = self.draw("arc:d", "circle_through", j1, target,
+                        sentence=f"With centre {lab} and radius {lab}{point} swing {point} onto "
+                                 f"the line of centres at {point}′.")
+        at = self.draw("rot:d", "intersect_line_circle", loc, arc, pick="forward",
+                       label=f"{point}′")
+        perp = self.draw("perp:d", "perpendicular_through", at, loc,
+                         sentence=f"At {point}′ erect the perpendicular to the line of centres.")
+        tip = self.draw("tip:d", "intersect_lines", perp, gauge,
+                        sentence=f"It meets the gauge line of link {j}: its length there is "
+                                 f"|V_{point}|.")
+        (cx, cy), (dx, dy), (ax, ay) = (self.c.output(j1).xy, self.c.output(target).xy,
+                                        self.c.output(at).xy)
+        back = math.atan2(dy - cy, dx - cx) - math.atan2(ay - cy, ax - cx)
+        tip_back = self.draw("back", "rotate_about", tip, j1, angle=back,
+                             sentence=f"With centre {lab} rotate it back to {point}: V_{point} "
+                                      f"is perpendicular to {lab}{point}.")
+        return self.result(point, tip_back, label)
+
+    def draw_parallels(self, j, j1, t, v_t, point, target, label) -> Ref:
+        lab = pair_label(1, j)
+        if _same(self.c.output(t), self.c.output(target)):
+            return v_t
+        turned = self.draw("turn:t", "lay_off", t, j1, length=self.c.output(v_t).length,
+                           sentence=f"Turn the known velocity through 90° so that it lies along "
+                                    f"its radius towards {lab}.")
+        side = self.draw("td", "line_through", t, target,
+                         sentence=f"Join the transfer point to {point}.")
+        par = self.draw("par", "parallel_through", turned, side,
+                        sentence=f"Through the tip of the turned velocity draw the parallel to "
+                                 f"that line.")
+        radius = self.draw("rad", "line_through", target, j1,
+                           sentence=f"Draw the radius {point}–{lab}.")
+        cut = self.draw("cut", "intersect_lines", par, radius,
+                        sentence=f"The parallel cuts the radius: the piece from {point} is "
+                                 f"|V_{point}| turned through 90°.")
+        # The known velocity was turned onto its radius by ±90°; turn back the other way.
+        (tx, ty), (cx, cy) = self.c.output(t).xy, self.c.output(j1).xy
+        vx, vy = self.c.output(v_t).vector
+        turned_by = math.copysign(math.pi / 2, vx * (cy - ty) - vy * (cx - tx))
+        tip = self.draw("back", "rotate_about", cut, target, angle=-turned_by,
+                        sentence=f"Turn it back through 90° the other way: V_{point} is "
+                                 f"perpendicular to {point}–{lab}.")
+        return self.result(point, tip, label)
+
+    def result(self, point: str, tip: Ref, label: str) -> Ref:
+        ref = self.draw("V", "join", self.asm.points[point], tip, label=label, role=Role.RESULT)
+        self.c.steps[ref] = _with_sentence(self.c[ref], f"V_{point} = {self.speed(ref)}.")
+        return ref
+
+
+def _same(p: g.Point, q: g.Point) -> bool:
+    if p.is_at_infinity or q.is_at_infinity:
+        return False
+    return math.dist(p.xy, q.xy) <= 1e-12 * max(1.0, p.size(), q.size())
+
+
+def _with_sentence(step, sentence: str):
+    from dataclasses import replace
+    return replace(step, sentence=sentence)
+
+
+METHODS = {
+    "radius-rotation": velocity_by_radius_rotation,
+    "parallel-line": velocity_by_parallel_lines,
+}
+"""The centre-based velocity methods, by the name an exercise file uses."""
