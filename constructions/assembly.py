@@ -135,7 +135,7 @@ class _Assembler:
     def run(self) -> Assembly:
         self.mark_frame()
         self.lay_off_input()
-        rules = (self.rigid_point, self.slot_through_block, self.two_guides,
+        rules = (self.rigid_point, self.slot_through_block, self.slot_of_a_block, self.two_guides,
                  self.arc_and_guide, self.two_arcs)
         wanted = [n for n in self.m.point_names]
         while any(n not in self.known for n in wanted):
@@ -336,6 +336,65 @@ class _Assembler:
             if len(on) != 1:
                 continue
             self.swing_slot(i, s, on[0])
+            return True
+        return False
+
+    def slot_of_a_block(self) -> bool:
+        """Draw the slot of a translating block through its located pin, then the block.
+
+        A block's own +x runs along its guide, so its slot (say the equivalent slot of a
+        flat-faced follower) is the guide turned by the slot's angle, through the pin.
+        The block's point lies on the parallel to the slot at its offset (the face),
+        where that cuts the block's guide.
+        """
+        for i, s in enumerate(self.m.slides):
+            k = self.m.link(s.guide_link)
+            if i in self.guides or k.number == 1 or s.point not in self.known or len(k.names) != 1:
+                continue
+            j = next((j for j, b in enumerate(self.m.slides) if b.link == k.number
+                      and b.kind is SlideKind.BLOCK and j in self.guides), None)
+            if j is None or k.names[0] in self.known:
+                continue
+            guide, pin, name = self.guides[j], self.known[s.point], k.names[0]
+            (tx, ty), (dx, dy) = s.through, s.direction
+            if abs(dx) <= 1e-12:
+                slot = self.c.draw(f"guide:{i}", "perpendicular_through", pin, guide,
+                                   label=f"slot of link {k.number}",
+                                   sentence=f"Through {s.point} draw the perpendicular to the "
+                                            f"guide of {name}: the slot of link {k.number}.")
+            else:
+                n = self.c.draw(f"normal:{i}", "normal_direction", guide)
+                turned = self.c.draw(f"turn:{i}", "rotate_about", n, pin,
+                                     angle=math.atan2(dy, dx) - math.pi / 2)
+                slot = self.c.draw(f"guide:{i}", "line_through", pin, turned,
+                                   label=f"slot of link {k.number}",
+                                   sentence=f"Through {s.point} draw the line at "
+                                            f"{self.angle_text(math.atan2(dy, dx))} to the guide "
+                                            f"of {name}: the slot of link {k.number}.")
+            self.guides[i] = slot
+            px, py = k.local(name)
+            # The block's point lies this far left of the slot; a drawn line may run the
+            # other way (a perpendicular turns +90°, a direction has no sense).
+            across = dx * (py - ty) - dy * (px - tx)
+            (gx, gy), (sx, sy) = self.c.output(guide).direction, self.c.output(slot).direction
+            if (gx * dx - gy * dy) * sx + (gy * dx + gx * dy) * sy < 0.0:
+                across = -across
+            line = slot
+            if across != 0.0:
+                perp = self.c.draw(f"perp:{i}", "perpendicular_through", pin, slot)
+                foot = self.c.draw(f"foot:{i}", "lay_off", pin, perp, length=across)
+                line = self.c.draw(f"face:{i}", "parallel_through", foot, slot,
+                                   sentence=f"Lay off {self.L(abs(across))} square to the slot: "
+                                            f"the parallel through it carries {name}.")
+            try:
+                self.found(name, "intersect_lines", line, guide,
+                           sentence=f"{name} is where that line cuts the guide of {name}.")
+            except DegenerateInput:
+                pass
+            if name not in self.known or self.c.output(self.known[name]).is_at_infinity:
+                raise AssemblyError(f"the slot of {k.label} runs along its guide {self.at()}, "
+                                    f"so {name} is not fixed", link=k.number, joint=name)
+            self.axes[k.number] = guide
             return True
         return False
 

@@ -391,7 +391,9 @@ def intersect_lines(g: Line, h: Line) -> tuple[Point, float]:
     Returns
     -------
     (Point, conditioning)
-        Conditioning is the sine of the angle between the lines.
+        Conditioning is the sine of the angle between the lines. For parallel
+        lines, whose meet is their direction at infinity, it is how far apart they
+        are relative to their distance from the origin.
 
     Raises
     ------
@@ -413,7 +415,10 @@ def intersect_lines(g: Line, h: Line) -> tuple[Point, float]:
     # With unit normals |w| is the sine of the angle between the lines, so parallelism
     # is judged by angle alone, however far from the origin the lines run.
     if abs(w) <= _TANGENT_SLACK and not (g.is_at_infinity or h.is_at_infinity):
-        return Point(x, y, 0.0), 0.0
+        # Parallel lines meet in their common direction, known as well as the lines are
+        # apart: the conditioning is their separation over their distance from the origin.
+        sep = math.hypot(x, y)
+        return Point(x, y, 0.0), sep / max(sep, abs(g.c), abs(h.c))
     return Point(x, y, w), sine
 
 

@@ -13,6 +13,13 @@ of a slider or the slot of a slotted lever. ``BLOCK`` is a prismatic pair (the
 sliding link turns with the guide); ``PIN`` is a pin in a slot (it turns freely, a
 two-freedom joint).
 
+A **contact** is direct (sliding-rolling) contact of a circular profile on a flat
+face: a cam's circle on a flat-faced follower, or a roller on a flat cam face.
+Kinematically it is exactly a pin at the circle's centre running in a slot of the
+face's link, parallel to the face and offset from it by the radius (the
+equivalent linkage, lecture notes §2.13); :func:`contact_slide` builds that slide,
+so assembly and the analytic solver see only a ``PIN`` slide.
+
 A **branch** says which of two assemblies to take for a point: ``left``/``right`` of
 the line joining the two centres it is cut from, ``forward``/``backward`` along a
 guide, or the solution nearest a point.
@@ -31,6 +38,9 @@ __all__ = [
     "Link",
     "SlideKind",
     "Slide",
+    "Profile",
+    "Contact",
+    "contact_slide",
     "Drive",
     "Mechanism",
     "LENGTH_UNITS",
@@ -102,11 +112,54 @@ class SlideKind(StrEnum):
 
 
 @dataclass(frozen=True, slots=True)
+class Profile:
+    """A working surface of link ``link``: a circular arc or a flat face.
+
+    A circle is ``centre`` (a point name of the link) and ``radius`` (m, > 0); a
+    flat face is ``through`` (a point name of the link lying on the face) and
+    ``angle``, the face's direction in the link's local frame (rad, CCW +). The
+    common normal at a contact runs through the centre and square to the face,
+    which is all the kinematics needs of either.
+    """
+
+    link: int
+    centre: str | None = None
+    radius: float | None = None
+    through: str | None = None
+    angle: float | None = None
+
+    @property
+    def is_circle(self) -> bool:
+        """True for a circular profile (it has a centre)."""
+        return self.centre is not None
+
+
+@dataclass(frozen=True, slots=True)
+class Contact:
+    """Direct contact of a circular profile on a flat face.
+
+    ``side`` is ``"left"`` or ``"right"``: the side of the face's direction on
+    which the circle lies, so that the equivalent slot is offset to that side.
+    """
+
+    circle: Profile
+    face: Profile
+    side: str
+
+    @property
+    def label(self) -> str:
+        """How messages name the contact: "contact of link 2 on link 3"."""
+        return f"contact of link {self.circle.link} on link {self.face.link}"
+
+
+@dataclass(frozen=True, slots=True)
 class Slide:
     """Point ``point`` of link ``link`` runs on a straight line fixed in link ``guide_link``.
 
     The line passes through ``through`` with unit ``direction``, both in the guide
-    link's local coordinates (global ones for the frame).
+    link's local coordinates (global ones for the frame). ``contact`` is set when
+    the slide is the equivalent of a circle-on-face :class:`Contact` (see
+    :func:`contact_slide`), so that figures draw the profiles, not a slot.
     """
 
     kind: SlideKind
@@ -115,12 +168,51 @@ class Slide:
     guide_link: int
     through: tuple[float, float]
     direction: tuple[float, float]
+    contact: Contact | None = None
 
     @property
     def label(self) -> str:
         """How messages name the joint."""
         what = "block" if self.kind is SlideKind.BLOCK else "pin"
         return f"{what} {self.point} of link {self.link} on link {self.guide_link}"
+
+
+def contact_slide(contact: Contact, face_link: Link) -> Slide:
+    """Replace a circle-on-face contact by its equivalent pin in a slot.
+
+    The circle's centre keeps a constant distance, the radius, from the face, so
+    it runs on the parallel to the face offset by the radius towards the circle:
+    a ``PIN`` slide of the centre in that line, fixed in the face's link.
+
+    Parameters
+    ----------
+    contact : Contact
+        The contact; its face's ``through`` point must be a point of ``face_link``.
+    face_link : Link
+        The link that carries the flat face (local coordinates, metres).
+
+    Returns
+    -------
+    Slide
+        ``PIN`` slide of ``contact.circle.centre`` on ``face_link``, with ``contact``
+        set.
+
+    Examples
+    --------
+    A circle of radius 1 below a face along +x through the origin of the frame:
+
+    >>> c = Contact(Profile(2, centre="C", radius=1.0), Profile(1, through="O", angle=0.0),
+    ...             "right")
+    >>> s = contact_slide(c, Link(1, (("O", (0.0, 0.0)),)))
+    >>> s.point, s.guide_link, s.through, s.direction
+    ('C', 1, (0.0, -1.0), (1.0, 0.0))
+    """
+    circle, face = contact.circle, contact.face
+    d = (math.cos(face.angle), math.sin(face.angle))
+    r = circle.radius if contact.side == "left" else -circle.radius
+    x, y = face_link.local(face.through)
+    return Slide(SlideKind.PIN, circle.link, circle.centre, face.link,
+                 (x - r * d[1], y + r * d[0]), d, contact)
 
 
 @dataclass(frozen=True, slots=True)

@@ -169,7 +169,10 @@ class _Method:
                                      f"at {point}.")
             return self.result(point, tip, label)
         if g.distance(self.c.output(target), self.c.output(j1)) <= 1e-12 * self.size():
-            raise DegenerateInput(f"{point} is at {pair_label(1, j)}, so V_{point} = 0")
+            at_rest = self.draw("rest", "mark", target,
+                                sentence=f"{point} is at {pair_label(1, j)}, the centre link {j} "
+                                         f"turns about at this instant, so V_{point} = 0.")
+            return self.result(point, at_rest, label)
         if self.method == "radius-rotation":
             return self.rotate_radius(j, j1, t, v_t, point, target, label)
         return self.draw_parallels(j, j1, t, v_t, point, target, label)

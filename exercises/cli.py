@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import functools
 import math
+from dataclasses import replace
 from pathlib import Path
 
 import click
@@ -34,12 +35,24 @@ def _mechanism(source: str, angle: float | None) -> Mechanism:
     from exercises.catalog import resolve
     from exercises.mechanism_file import load_mechanism
 
-    mech = load_mechanism(resolve(source))
-    if angle is not None:
-        d = mech.drive
-        rad = angle if mech.units.angle == "rad" else math.radians(angle)
-        mech = mech.with_drive(Drive(d.link, rad, d.omega, d.alpha, d.alpha_given))
-    return mech
+    return _at_angle(load_mechanism(resolve(source)), angle)
+
+
+def _at_angle(mech: Mechanism, angle: float | None) -> Mechanism:
+    """The mechanism with its input turned to ``angle`` (file units), if one is given."""
+    if angle is None:
+        return mech
+    d = mech.drive
+    rad = angle if mech.units.angle == "rad" else math.radians(angle)
+    return mech.with_drive(Drive(d.link, rad, d.omega, d.alpha, d.alpha_given))
+
+
+def _exercise(source: str, angle: float | None):
+    from exercises.catalog import resolve
+    from exercises.exercise_file import load_exercise
+
+    ex = load_exercise(resolve(source), Path(source).stem if Path(source).suffix else source)
+    return replace(ex, mechanism=_at_angle(ex.mechanism, angle))
 
 
 _source = click.argument("source", metavar="FILE")
@@ -111,6 +124,60 @@ def check(source, angle):
     from exercises.report import check_positions, format_check
 
     click.echo(format_check(check_positions(_mechanism(source, angle))))
+
+
+@cli.command()
+@_source
+@click.option("-o", "--output", "out_dir", type=click.Path(file_okay=False), default=None,
+              metavar="DIR", help="Folder for the solution (default: <id>-solution/ here).")
+@_angle
+@click.option("--pdf/--no-pdf", default=True, show_default=True,
+              help="Also write a PDF of each figure (needs libcairo2).")
+@_fails_cleanly
+def solve(source, out_dir, angle, pdf):
+    """Solve an exercise by graphical construction and check every number.
+
+    FILE is a mechanism file whose [ask] table names what to find (see the
+    README), or a bundled id. Instant centres come from inspection and
+    Kennedy's theorem (the circle diagram); angular velocities from the
+    centres; point velocities by radius rotation, parallel lines or
+    components. Each construction is drawn as its own figure with numbered
+    steps, and each number is compared with the independent analytic solver.
+
+    \b
+    Writes into DIR:
+      centres.svg, circle-diagram.svg, V_<P>-<method>.svg (and .pdf)
+      steps.md       the numbered steps, matching the numbers on the figures
+      results.json   every quantity (SI) with its analytic reference and error
+
+    \b
+    Example:
+      tarsim solve four-bar -o four-bar-solution
+      tarsim solve my-exercise.toml --angle 120 --no-pdf
+
+    The exit status is 2 if any constructed number disagrees with the analytic
+    one beyond the tolerance its conditioning allows.
+    """
+    from exercises.solution_files import solve_to_files, write_solution
+    from graphics.export import cairo_missing
+
+    ex = _exercise(source, angle)
+    sol, files = solve_to_files(ex)
+    reason = cairo_missing() if pdf else None
+    out = Path(out_dir or f"{ex.id}-solution")
+    written = write_solution(files, out, pdf=pdf and reason is None)
+    for name, q in sol.quantities.items():
+        click.echo(f"{name:<8} rel. error {q.rel_error:.1e}  {'ok' if q.passed else 'FAILED'}"
+                   f"  ({q.method})")
+    for note in sol.notes:
+        click.echo(f"note: {note}")
+    click.echo(f"wrote {len(written)} files to {out}/")
+    if reason:
+        click.echo(f"PDF skipped: {reason}", err=True)
+    if sol.failures:
+        names = ", ".join(q.name for q in sol.failures)
+        click.echo(f"Error: {names} disagree with the analytic solution beyond tolerance", err=True)
+        raise SystemExit(2)
 
 
 @cli.command(name="list")

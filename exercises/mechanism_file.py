@@ -15,12 +15,14 @@ from pathlib import Path
 from typing import Any
 
 from constructions.errors import InputError
-from constructions.model import LENGTH_UNITS, Drive, Link, Mechanism, Slide, SlideKind, Units
+from constructions.model import (LENGTH_UNITS, Contact, Drive, Link, Mechanism, Profile, Slide,
+                                 SlideKind, Units, contact_slide)
 
 __all__ = ["load_mechanism", "parse_mechanism", "SourceMap"]
 
 _NAME = re.compile(r"^[A-Za-z][A-Za-z0-9_']*$")
-_TOP = ("name", "source", "description", "units", "frame", "link", "slider", "input", "assembly")
+_TOP = ("name", "source", "description", "units", "frame", "link", "slider", "contact", "input",
+        "assembly", "ask")
 _BRANCHES = ("left", "right", "forward", "backward")
 
 
@@ -111,7 +113,7 @@ class _Reader:
         line = (self.where.key(key, table, index) if key
                 else self.where.header(table, index) if table else None)
         label = table if table else None
-        if table in ("link", "slider"):
+        if table in ("link", "slider", "contact"):
             label = f"{table} #{index + 1}"
         if key:
             label = f"{label}.{key}" if label else key
@@ -133,6 +135,8 @@ class _Reader:
         mech_links = tuple(links)
         self.links = {k.number: k for k in mech_links}
         slides = tuple(self.read_slider(i, s) for i, s in enumerate(self.list_of("slider")))
+        slides += tuple(contact_slide(c, self.links[c.face.link]) for c in
+                        (self.read_contact(i, t) for i, t in enumerate(self.list_of("contact"))))
         drive = self.read_input()
         branches = self.read_assembly(mech_links, slides)
         mech = Mechanism(mech_links, drive, slides, branches, self.units,
@@ -325,6 +329,80 @@ class _Reader:
                 raise self.fail(f"a slot on moving link {on} runs along its axis; give only "
                                 "offset, not " + k, key=k, **where)
         return Slide(SlideKind(kind), link, point, on, (0.0, offset), (1.0, 0.0))
+
+    def read_contact(self, i: int, t: dict[str, Any]) -> Contact:
+        """Read a circle-on-face contact; the caller turns it into its equivalent slide."""
+        where = {"table": "contact", "index": i}
+        for k in t:
+            if k not in ("circle", "face", "side"):
+                raise self.unknown(k, ("circle", "face", "side"), "contact setting", key=k,
+                                   **where)
+        for k in ("circle", "face"):
+            if k not in t:
+                raise self.fail(f"a contact needs its {k}, e.g. "
+                                + ('circle = { link = 2, centre = "C", radius = 40 }'
+                                   if k == "circle" else
+                                   'face = { link = 3, through = "F", angle = 0 }'), **where)
+        circle = self.read_profile(t["circle"], "circle", where)
+        face = self.read_profile(t["face"], "face", where)
+        if circle.link == face.link:
+            raise self.fail(f"the circle and the face are both on link {face.link}; a contact "
+                            "joins two links", key="face", **where)
+        side = t.get("side")
+        if side is None:
+            raise self.fail(f"say on which side of the face of link {face.link} the circle "
+                            'lies: side = "left" or "right" of the face\'s direction', **where)
+        if side not in ("left", "right"):
+            raise self.unknown(str(side), ("left", "right"), "side", key="side", **where)
+        return Contact(circle, face, side)
+
+    def read_profile(self, v: Any, key: str, where: dict) -> Profile:
+        """Read ``circle = { … }`` or ``face = { … }``: only a circle on a flat face."""
+        if not isinstance(v, dict):
+            raise self.fail(f"{key} must be an inline table such as "
+                            + ('{ link = 2, centre = "C", radius = 40 }' if key == "circle"
+                               else '{ link = 3, through = "F", angle = 0 }'), key=key, **where)
+        allowed = ("link", "centre", "radius", "through", "angle")
+        for k in v:
+            if k not in allowed:
+                raise self.unknown(k, allowed, f"{key} setting", key=key, **where)
+        if "link" not in v:
+            raise self.fail(f"the {key} needs the number of the link that carries it, "
+                            "e.g. link = 2", key=key, **where)
+        link = self.link_number(v["link"], key, where)
+        round_, flat = "centre" in v or "radius" in v, "through" in v or "angle" in v
+        if (key == "face" and round_) or (key == "circle" and flat):
+            given = "a centre and a radius" if key == "face" else "a point and an angle"
+            raise self.fail(f"the {key} of link {link} is given {given}: only a circle on a "
+                            "flat face is supported (a roller on a flat cam face is written the "
+                            "same way, with the roller's centre as the circle)", key=key, **where)
+        names = self.links[link].names
+
+        def point(name_key: str, what: str) -> str:
+            p = self.name(v[name_key], what, key=key, **where)
+            if p not in names:
+                raise self.unknown(p, names, f"point of link {link}", key=key, **where)
+            return p
+
+        if key == "circle":
+            if "centre" not in v:
+                raise self.fail(f"the circular profile of link {link} needs a centre, a point "
+                                "of that link (the common normal runs through it)", key=key,
+                                **where)
+            if "radius" not in v:
+                raise self.fail(f"the circular profile of link {link} needs a radius (the "
+                                "common normal runs through its centre)", key=key, **where)
+            return Profile(link, centre=point("centre", "the circle's centre"),
+                           radius=self.length(v["radius"], f"the radius of the circle of link "
+                                              f"{link}", key=key, **where))
+        if "through" not in v:
+            raise self.fail(f"the flat face of link {link} needs a point of that link it runs "
+                            "through (through = \"F\")", key=key, **where)
+        if "angle" not in v:
+            raise self.fail(f"the flat face of link {link} needs an angle in the link's own frame "
+                            "(the common normal is perpendicular to it)", key=key, **where)
+        return Profile(link, through=point("through", "the face's point"),
+                       angle=self.angle(v["angle"], "the face's angle", key=key, **where))
 
     def link_number(self, v: Any, key: str, where: dict) -> int:
         if isinstance(v, bool) or not isinstance(v, int):

@@ -4,18 +4,23 @@ It draws what the assembly located (the construction's outputs), never
 recomputing geometry: ground pivots with hatching, pins, bars and plates, slider
 blocks on hatched guides, the input's θ and ω, link numbers, point labels, and a
 scale bar that measures true on the printed page.
+
+A contact of a circle on a flat face is assembled as its equivalent pin in a slot,
+but drawn as what the student sees: the cam's circle, the follower's face and the
+contact point P where the common normal meets the face.
 """
 
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 from shapely.geometry import MultiPoint, Point as SPoint
 
 from constructions.assembly import Assembly
-from constructions.model import Mechanism, SlideKind
+from constructions.model import Mechanism, Slide, SlideKind
 
-from .figure import Figure, Path, Text, View, text_width
+from .figure import Circle, Figure, Path, Text, View, text_width
 from .labels import LabelPlacer
 from .scales import draw_scale_bar, nice_per_cm, scale_text
 from .symbols import (PIN_RADIUS, draw_block, draw_ground_pivot, draw_guide,
@@ -28,6 +33,30 @@ _ROOM = (150.0, 130.0)     # largest drawing area, mm
 _MARGIN = 8.0              # white round the drawing, mm
 _CAPTION = 15.0            # band under the drawing for the caption and scale bar, mm
 _BLOCK = (9.0, 5.0)        # slider block on paper, mm
+_DOT = 0.55                # a marked point (circle centre, contact point) on paper, mm
+_FACE_REACH = 0.8          # the face runs this many radii either side of the contact point
+_FACE_MARGIN = 4.0         # and this far (paper mm) past its own point, under a block
+
+
+@dataclass(frozen=True, slots=True)
+class _Contact:
+    """A circle-on-face contact in world metres: what the diagram draws for it."""
+
+    slide: Slide
+    centre: tuple[float, float]
+    radius: float
+    point: tuple[float, float]        # P, the foot of the common normal
+    through: tuple[float, float]      # the face's own point
+    direction: tuple[float, float]    # unit, along the face
+    away: tuple[float, float]         # unit normal from the circle across the face
+
+    def face(self, margin: float = 0.0) -> tuple[tuple[float, float], tuple[float, float]]:
+        """The face's ends: round P by the reach, and ``margin`` (m) round its own point."""
+        (fx, fy), (dx, dy) = self.through, self.direction
+        t = (self.point[0] - fx) * dx + (self.point[1] - fy) * dy
+        lo = min(t - _FACE_REACH * self.radius, -margin)
+        hi = max(t + _FACE_REACH * self.radius, margin)
+        return (fx + lo * dx, fy + lo * dy), (fx + hi * dx, fy + hi * dy)
 
 
 def subscript(name: str) -> str:
@@ -52,11 +81,32 @@ class _Diagram:
         self.asm = asm
         self.m: Mechanism = asm.mechanism
         self.world = {n: asm.xy(n) for n in self.m.point_names}
+        self.contacts = [self.contact(i, s) for i, s in enumerate(self.m.slides)
+                         if s.contact is not None]
+
+    def contact(self, index: int, s: Slide) -> _Contact:
+        """Where a contact's circle, face and P lie, from the assembled slot and points.
+
+        The face passes through its named point parallel to the equivalent slot; P is
+        the foot of the perpendicular from the centre, since the common normal of a
+        circle and a line runs through the centre square to the line.
+        """
+        c, r = self.world[s.point], s.contact.circle.radius
+        f = self.world[s.contact.face.through]
+        d = unit(self.asm.guide(index).direction)
+        t = (c[0] - f[0]) * d[0] + (c[1] - f[1]) * d[1]
+        p = (f[0] + t * d[0], f[1] + t * d[1])
+        away = unit(_sub(p, c)) if math.dist(p, c) > 0.0 else (-d[1], d[0])
+        return _Contact(s, c, r, p, f, d, away)
 
     # ----- layout ------------------------------------------------------------------
     def layout(self) -> None:
-        xs = [p[0] for p in self.world.values()]
-        ys = [p[1] for p in self.world.values()]
+        pts = list(self.world.values())
+        for k in self.contacts:
+            (cx, cy), r = k.centre, k.radius
+            pts += [(cx - r, cy - r), (cx + r, cy + r), *k.face()]
+        xs = [p[0] for p in pts]
+        ys = [p[1] for p in pts]
         unit_m = self.m.units.metres
         w = max(max(xs) - min(xs), 1e-9) / unit_m
         h = max(max(ys) - min(ys), 1e-9) / unit_m
@@ -73,6 +123,7 @@ class _Diagram:
         self.draw_frame_guides()
         self.draw_ground_pivots()
         self.draw_links()
+        self.draw_contacts()
         self.draw_blocks()
         self.draw_pins()
         self.draw_input()
@@ -112,8 +163,57 @@ class _Diagram:
     def slot_reach(self, number: int) -> list[tuple[float, float]]:
         """Paper points a slotted link must reach: its own points and what runs in its slot."""
         pts = [self.paper[n] for n in self.m.link(number).names]
-        pts += [self.paper[s.point] for s in self.m.slides if s.guide_link == number]
+        pts += [self.paper[s.point] for s in self.m.slides
+                if s.guide_link == number and _is_slot(s)]
         return pts
+
+    def slotted(self, number: int) -> bool:
+        """True if a pin or block runs in a slot of link ``number`` (a contact is no slot)."""
+        return any(s.guide_link == number and _is_slot(s) for s in self.m.slides)
+
+    def block_lift(self, s: Slide) -> tuple[tuple[float, float], float]:
+        """How far (mm) a block is drawn off its point, and along which paper direction.
+
+        A flat-faced follower's block point lies on its face; centred there, the
+        block would cover the face and the cam. It is drawn standing on the face
+        instead, as the follower's stem, which the rigid link allows.
+        """
+        d = unit(self.view.direction(self.asm.guide(self.m.slides.index(s)).direction))
+        for k in self.contacts:
+            if k.slide.guide_link != s.link or k.slide.contact.face.through != s.point:
+                continue
+            n = self.view.direction(k.away)
+            along = d[0] * n[0] + d[1] * n[1]
+            if abs(along) < 1e-6:
+                break  # the face runs along the guide: nothing to stand on
+            # Clear the face with the block's near corners, however the face is tilted.
+            lift = _BLOCK[0] / 2 + _BLOCK[1] / 2 * math.sqrt(1.0 - along * along) / abs(along)
+            return (d if along > 0 else (-d[0], -d[1])), lift
+        return d, 0.0
+
+    def block_centre(self, s: Slide) -> tuple[float, float]:
+        """Where a block is drawn (see :meth:`block_lift`)."""
+        (ux, uy), lift = self.block_lift(s)
+        p = self.paper[s.point]
+        return (p[0] + lift * ux, p[1] + lift * uy)
+
+    def draw_contacts(self) -> None:
+        """Draw each cam circle, its flat face and the contact point P (dots, not pins)."""
+        for k in self.contacts:
+            c, r = self.view(k.centre), k.radius * self.view.scale
+            self.fig.add(Circle(c, r, "link"))
+            self.placer.block(SPoint(c).buffer(r + 0.6).difference(SPoint(c).buffer(r - 0.6)))
+            # Past its own point only if that is a bare dot (under a block), not a pivot.
+            margin = _FACE_MARGIN if self.marked(k.slide.contact.face.through) else 0.0
+            a, b = (self.view(e) for e in k.face(margin / self.view.scale))
+            self.fig.line(a, b, "link")
+            self.placer.block_segment(a, b, 0.6)
+            dots = [self.view(k.point)] + [self.paper[n] for n in
+                                           (k.slide.point, k.slide.contact.face.through)
+                                           if self.marked(n)]
+            for at in dots:
+                self.fig.add(Circle(at, _DOT, "arrowhead"))  # a filled dot
+                self.placer.block(SPoint(at).buffer(_DOT + 0.3))
 
     def draw_frame_guides(self) -> None:
         centre = _centroid([self.paper[n] for n in self.m.frame.names])
@@ -123,14 +223,17 @@ class _Diagram:
             line = self.asm.guide(i)
             d = unit(self.view.direction(line.direction))
             n = (-d[1], d[0])
-            p = self.paper[s.point]
+            p = self.block_centre(s)
             # The guide lies on the far side of the block from the frame pivots.
             away = (p[0] - centre[0]) * n[0] + (p[1] - centre[1]) * n[1]
             side = n if away >= 0 else (-n[0], -n[1])
             off = _BLOCK[1] / 2
             half = max(22.0, 0.5 * self.travel(s.point, d))
-            a = (p[0] + off * side[0] - half * d[0], p[1] + off * side[1] - half * d[1])
-            b = (p[0] + off * side[0] + half * d[0], p[1] + off * side[1] + half * d[1])
+            # A block standing on a face has its guide above the face only.
+            u, lift = self.block_lift(s)
+            lo, hi = (-half, half) if lift == 0.0 else (1.0 - _BLOCK[0] / 2, half + _BLOCK[0])
+            a = (p[0] + off * side[0] + lo * u[0], p[1] + off * side[1] + lo * u[1])
+            b = (p[0] + off * side[0] + hi * u[0], p[1] + off * side[1] + hi * u[1])
             band = draw_guide(self.fig, a, b, side)
             self.placer.block(band.buffer(0.3))
             self.placer.block_segment(a, b)
@@ -163,7 +266,7 @@ class _Diagram:
         for k in self.m.links:
             if k.number == 1:
                 continue
-            slotted = any(s.guide_link == k.number for s in self.m.slides)
+            slotted = self.slotted(k.number)
             pts = self.slot_reach(k.number) if slotted else [self.paper[n] for n in k.names]
             if len(pts) < 2:
                 continue
@@ -194,18 +297,23 @@ class _Diagram:
             if s.kind is not SlideKind.BLOCK:
                 continue
             d = unit(self.view.direction(self.asm.guide(i).direction))
-            shape = draw_block(self.fig, self.paper[s.point], d, *_BLOCK)
+            shape = draw_block(self.fig, self.block_centre(s), d, *_BLOCK)
             self.placer.block(shape)
 
     def draw_pins(self) -> None:
         for name, at in self.paper.items():
             on = self.m.links_at(name)
-            slid = any(s.point == name for s in self.m.slides)
-            if 1 in on:
-                continue  # drawn with its ground symbol
+            slid = any(s.point == name and _is_slot(s) for s in self.m.slides)
+            if 1 in on or self.marked(name):
+                continue  # drawn with its ground symbol, or as a dot
             if len(on) >= 2 or slid:
                 draw_pin(self.fig, at)
                 self.placer.block(SPoint(at).buffer(PIN_RADIUS + 0.4))
+
+    def marked(self, name: str) -> bool:
+        """True for a point drawn as a dot: a circle's centre or a face's point, not a joint."""
+        return len(self.m.links_at(name)) < 2 and any(
+            name in (k.slide.point, k.slide.contact.face.through) for k in self.contacts)
 
     def draw_input(self) -> None:
         d = self.m.drive
@@ -233,11 +341,15 @@ class _Diagram:
         for k in self.m.links:
             if k.number == 1:
                 continue
-            slotted = any(s.guide_link == k.number for s in self.m.slides)
+            slotted = self.slotted(k.number)
             pts = self.slot_reach(k.number) if slotted else [self.paper[n] for n in k.names]
             if len(pts) == 1:
                 at, prefer = pts[0], math.pi / 2
                 gap = 4.2
+                lifted = [s for s in self.m.slides if s.link == k.number
+                          and s.kind is SlideKind.BLOCK and self.block_lift(s)[1] > 0.0]
+                if lifted:  # beside the block standing on the face, not under it
+                    at, prefer = self.block_centre(lifted[0]), (math.pi, 0.0)
             else:
                 hull = MultiPoint(pts).convex_hull
                 if hull.geom_type == "Polygon" and hull.area > 4.0 and not slotted:
@@ -252,7 +364,8 @@ class _Diagram:
                 dx, dy = unit(_sub(b, a))
                 prefer = math.atan2(dx, dy)  # the paper normal (−dy, dx) as a paper angle
                 gap = 1.6
-            self.placer.place(str(k.number), at, prefer=(prefer, prefer + math.pi),
+            prefer = prefer if isinstance(prefer, tuple) else (prefer, prefer + math.pi)
+            self.placer.place(str(k.number), at, prefer=prefer,
                               spread=math.pi / 4, gap=gap, size=3.4, italic=False)
         pivots = [n for n in self.m.frame.names if len(self.m.links_at(n)) > 1]
         if pivots:
@@ -265,9 +378,20 @@ class _Diagram:
             away = _sub(at, centre)
             prefer = math.atan2(-away[1], away[0]) if math.hypot(*away) > 1e-6 else math.pi / 4
             self.placer.place(subscript(name), at, prefer=prefer, gap=2.0, size=3.6)
+        for k in self.contacts:
+            # P goes beside the face, off the common normal that runs through it.
+            d = self.view.direction(k.away)
+            along = (-d[1], d[0])
+            prefer = tuple(math.atan2(-v[1], v[0]) for v in (along, (-along[0], -along[1])))
+            self.placer.place("P", self.view(k.point), prefer=prefer, gap=1.6, size=3.6)
 
 
 # ----- small helpers ---------------------------------------------------------------------
+def _is_slot(s: Slide) -> bool:
+    """A slide drawn as a slot or guide; a contact's equivalent slide is drawn as profiles."""
+    return s.contact is None
+
+
 def _sub(p, q):
     return (p[0] - q[0], p[1] - q[1])
 

@@ -17,12 +17,21 @@ from constructions.errors import RenderError
 from .figure import Figure
 from .svg import to_svg
 
-__all__ = ["FORMATS", "write_figure", "svg_to"]
+__all__ = ["FORMATS", "write_figure", "write_text", "svg_to", "cairo_missing"]
 
 FORMATS = ("svg", "pdf", "png")
 
 _NO_CAIRO = ("PDF and PNG output need the cairo library (libcairo2), which is not installed: "
              "install it (Debian/Ubuntu: apt-get install libcairo2) or write .svg instead")
+
+
+def cairo_missing() -> str | None:
+    """The one-line reason PDF/PNG cannot be made here, or None when they can."""
+    try:
+        import cairosvg  # noqa: F401, PLC0415
+    except (ImportError, OSError):
+        return _NO_CAIRO
+    return None
 
 
 def svg_to(svg: str, fmt: str, *, dpi: float = 200.0) -> bytes:
@@ -61,6 +70,19 @@ def write_figure(fig: Figure | str, path: str | Path) -> Path:
     svg = fig if isinstance(fig, str) else to_svg(fig)
     data = svg.encode("utf-8") if fmt == "svg" else svg_to(svg, fmt)
     _write_atomically(path, data)
+    return path
+
+
+def write_text(path: str | Path, data: str | bytes) -> Path:
+    """Write text (UTF-8) or bytes to ``path`` atomically: results.json, steps.md, a PDF.
+
+    Raises
+    ------
+    RenderError
+        If the path cannot be written.
+    """
+    path = Path(path)
+    _write_atomically(path, data.encode("utf-8") if isinstance(data, str) else data)
     return path
 
 

@@ -384,3 +384,98 @@ def test_load_mechanism_of_a_missing_file_is_an_input_error(tmp_path):
     with pytest.raises(InputError) as info:
         load_mechanism(path)
     assert str(info.value).startswith(f"{path}: cannot read the file")
+
+
+# ----- contacts: a circle on a flat face -------------------------------------------------------
+# Line numbers: 16 [[contact]], 17 circle, 18 face, 19 side.
+CAM = """\
+[frame]
+O2 = [0, 0]
+[[link]]
+number = 2
+name = "cam"
+points = ["O2", "C"]
+lengths = { O2C = 25 }
+[[link]]
+number = 3
+points = ["F"]
+[[slider]]
+link = 3
+point = "F"
+through = "O2"
+angle = 90
+[[contact]]
+circle = { link = 2, centre = "C", radius = 40 }
+face = { link = 3, through = "F", angle = -90 }
+side = "right"
+[input]
+link = 2
+angle = 30
+"""
+
+
+def test_a_contact_is_read_as_its_equivalent_pin_in_a_slot():
+    m = parse_mechanism(CAM, FILE)
+    guide, slot = m.slides
+    c = slot.contact
+    assert (c.circle.link, c.circle.centre, c.circle.radius) == (2, "C", pytest.approx(0.04))
+    assert (c.face.link, c.face.through, c.side) == (3, "F", "right")
+    assert c.face.angle == pytest.approx(-math.pi / 2)
+    assert (slot.kind, slot.link, slot.point, slot.guide_link) == ("pin", 2, "C", 3)
+    # The face runs along the follower's −y (global +x); the cam below it, to its right,
+    # so the slot is 40 mm along the follower's −x (global −y) from F.
+    assert slot.direction == pytest.approx((0.0, -1.0), abs=1e-15)
+    assert slot.through == pytest.approx((-0.04, 0.0), abs=1e-15)
+    assert guide.contact is None
+    assert m.mobility() == (1, 3, 2, 1)
+
+
+def test_a_contact_radius_is_in_the_files_unit():
+    m = parse_mechanism("[units]\nlength = \"cm\"\nangle = \"rad\"\n" + CAM.replace(
+        "angle = -90", "angle = 1.5"), FILE)
+    assert m.slides[1].contact.circle.radius == pytest.approx(0.40)
+    assert m.slides[1].contact.face.angle == 1.5
+
+
+@pytest.mark.parametrize("old, new, line, words", [
+    # what is missing, and on which link
+    (", radius = 40 }", " }", 17,
+     ["the circular profile of link 2 needs a radius", "common normal runs through its centre"]),
+    ('centre = "C", ', "", 17, ["the circular profile of link 2 needs a centre"]),
+    ('through = "F", angle', "angle", 18, ["the flat face of link 3 needs a point"]),
+    (', angle = -90 }', " }", 18,
+     ["the flat face of link 3 needs an angle", "common normal is perpendicular to it"]),
+    ('side = "right"', "# no side", 16, ["which side of the face of link 3", '"left" or "right"']),
+    ("circle = { link = 2, ", "circle = { ", 17, ["the circle needs the number of the link"]),
+    ('circle = { link = 2, centre = "C", radius = 40 }', "# no circle", 16,
+     ["a contact needs its circle"]),
+    # bad values
+    ("radius = 40", "radius = 0", 17, ["radius of the circle of link 2",
+                                        "must be a positive length", "got 0"]),
+    ("radius = 40", "radius = -40", 17, ["must be a positive length", "got -40"]),
+    ('side = "right"', 'side = "rigth"', 19, ["unknown side 'rigth'", "did you mean 'right'?"]),
+    # names
+    ('centre = "C"', 'centre = "F"', 17, ["unknown point of link 2 'F'", "O2, C"]),
+    ('through = "F"', 'through = "C"', 18, ["unknown point of link 3 'C'", "one of: F"]),
+    ("circle = { link = 2", "circle = { link = 7", 17, ["unknown link '7'", "1, 2, 3"]),
+    ('face = { link = 3, through = "F"', 'face = { link = 2, through = "C"', 18,
+     ["both on link 2", "a contact joins two links"]),
+    ("radius = 40", "raduis = 40", 17, ["unknown circle setting 'raduis'",
+                                         "did you mean 'radius'?"]),
+    ('side = "right"', 'sied = "right"', 19, ["unknown contact setting 'sied'",
+                                               "did you mean 'side'?"]),
+    # only a circle on a flat face
+    ('face = { link = 3, through = "F", angle = -90 }', 'face = { link = 3, centre = "F", '
+     'radius = 10 }', 18, ["the face of link 3 is given a centre and a radius",
+                          "only a circle on a flat face", "roller", "roller's centre"]),
+    ('circle = { link = 2, centre = "C", radius = 40 }', 'circle = { link = 2, through = "C", '
+     'angle = 0 }', 17, ["the circle of link 2 is given a point and an angle",
+                        "only a circle on a flat face"]),
+])
+def test_contact_errors_name_the_link_and_what_is_missing(old, new, line, words):
+    e = parse_error(edit(CAM, old, new))
+    assert (e.file, e.line) == (FILE, line), str(e)
+    assert str(e).startswith(f"{FILE}:{line}: [contact #1"), str(e)
+    assert "\n" not in str(e)
+    for w in words:
+        assert w in str(e), str(e)
