@@ -129,8 +129,8 @@ class Centres:
             cond = self.conditioning(*c.pair)
             if cond < ILL_CONDITIONED:
                 angle = math.degrees(math.asin(min(1.0, c.crossing)))
-                out.append(f"{c.label} is ill-conditioned: its lines meet at {angle:.3g}° "
-                           f"(conditioning {cond:.2g})")
+                out.append(f"{c.label} is ill-conditioned: conditioning {cond:.2g} along its "
+                           f"construction (its own two lines meet at {angle:.3g}°)")
         return out
 
 

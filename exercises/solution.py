@@ -127,21 +127,26 @@ def _velocity(asm, cs, point, method, scale) -> VelocityResult:
 
 def _centre(cs: Centres, kin, pair, size) -> Quantity:
     p = cs.point(*pair)
-    try:
-        ref = instant_centre(kin, *pair)
-    except DegenerateInput as e:
-        raise TarsimError(f"{pair_label(*pair)} has no analytic reference here: {e}") from None
     cond = cs.conditioning(*pair)
     if p.is_at_infinity:
         value = {"at_infinity": True, "direction": list(p.direction)}
     else:
         value = {"point": list(p.xy)}
-    reference = ({"at_infinity": True, "direction": list(ref.direction)} if ref.is_at_infinity
-                 else {"point": list(ref.point)})
     c = cs.centre(*pair)
     method = {"pin": "inspection (pin)", "block": "inspection (block on a straight guide)",
               "kennedy": "Kennedy (circle diagram)",
               "velocities": "Kennedy line and velocity ratio"}[c.rule]
+    try:
+        ref = instant_centre(kin, *pair)
+    except DegenerateInput as e:
+        if not c.primary:
+            raise TarsimError(f"{pair_label(*pair)} has no analytic reference here: {e}") from None
+        # A joint's own centre holds at every instant, even one with no relative
+        # motion (a block momentarily at rest in its slot), where any point would do.
+        return Quantity(pair_label(*pair), value, {"undefined": str(e)}, 0.0, tolerance(1.0),
+                        cond, method)
+    reference = ({"at_infinity": True, "direction": list(ref.direction)} if ref.is_at_infinity
+                 else {"point": list(ref.point)})
     # A direction is judged by angle alone, so its tolerance does not grow with distance.
     tol = tolerance(1.0 if p.is_at_infinity else cond)
     return Quantity(pair_label(*pair), value, reference, centre_error(p, ref, size), tol, cond,
@@ -151,6 +156,9 @@ def _centre(cs: Centres, kin, pair, size) -> Quantity:
 def _omega(cs: Centres, kin, n: int) -> Quantity:
     m = cs.assembly.mechanism
     d = m.drive
+    if n == d.link:
+        return Quantity(f"omega{n}", {"value": d.omega}, {"value": kin.omegas[n]}, 0.0,
+                        tolerance(1.0), 1.0, "given")
     try:
         ratio = omega_ratio(cs, d.link, n)
     except DegenerateInput as e:

@@ -151,6 +151,8 @@ def _show(v: dict, units) -> str:
     if "point" in v:
         x, y = v["point"]
         return f"({x / s:.6g}, {y / s:.6g}) {units.length}"
+    if "undefined" in v:
+        return "any point (no relative motion)"
     if v.get("at_infinity"):
         dx, dy = v["direction"]
         return f"at infinity, direction ({dx:.4f}, {dy:.4f})"

@@ -1,0 +1,241 @@
+"""The analytic reference for instant centres: where two velocity fields agree.
+
+Link ``k`` moves with the velocity field ``v_k(P) = v_Ok + ω_k × (P − O_k)``
+(the frame, link 1, has ``v = 0`` everywhere). The instant centre ``I_ij`` is the
+point where ``v_i(P) = v_j(P)``. The difference of two fields is the field of a
+rigid motion turning at ``Δω = ω_i − ω_j``,
+
+    Δv(P) = Δv(Q) + Δω k × (P − Q),
+
+so ``Δv(P) = 0`` at ``P = Q + k × Δv(Q) / Δω`` for any reference point ``Q``.
+When ``Δω`` vanishes the relative motion is a translation and the centre is at
+infinity, square to the relative velocity.
+
+This module is a reference, not a construction: it takes ω and the origins'
+velocities from :mod:`constructions.analytic` and uses nothing of the graphical
+methods. It imports only the standard library, :mod:`constructions.errors` and
+:mod:`constructions.analytic`.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from .analytic import Kinematics
+from .errors import DegenerateInput
+
+__all__ = ["AnalyticCentre", "instant_centre", "centre_error", "tolerance", "mechanism_size",
+           "AT_INFINITY", "FAR"]
+
+EPS = 2.220446049250313e-16
+
+AT_INFINITY = 1e-12
+"""Relative size of ``|Δω|·L`` against ``|Δv|`` below which ``I_ij`` is at infinity.
+
+The solver's ω carry an absolute rounding error of a few ``eps`` times the
+mechanism's angular-velocity scale, of order ``|Δv|/L`` for links whose relative
+velocity across a mechanism of size ``L`` is ``|Δv|``. So a ``|Δω|`` below about
+``10 eps·|Δv|/L`` (≈ 2e-15·|Δv|/L) cannot be told from 0, and the centre it would
+give lies beyond ``1e14·L``, a distance made of rounding. The threshold sits some
+500 times above that noise, at 1e-12: a centre beyond ``1e12·L`` is taken as a
+direction, whose bearing from any point of the mechanism then differs from the
+true one by less than about 1e-12 rad (added to the centre's ``rounding``).
+"""
+
+FAR = 1e6
+"""A finite point further than ``FAR × size`` may be compared with a direction."""
+
+_STILL = 1e-12  # |Δv| and |Δω|·L both below this times the velocity scale: moving together
+
+
+@dataclass(frozen=True)
+class AnalyticCentre:
+    """The analytic instant centre: a ``point`` (m), or a ``direction`` at infinity.
+
+    Exactly one of the two is set. A direction has no sense; it is a unit vector
+    normalised as :meth:`constructions.geometry.Point.at_infinity` does (x > 0, or
+    x = 0 and y > 0). ``rounding`` is the reference's own error estimate, in the
+    measure of :func:`centre_error`: it grows as ``|ω_i − ω_j|`` shrinks against the
+    mechanism's ω, where the solver's rounding in ω and v is divided by a small
+    difference. A check should allow ``tolerance(conditioning) + rounding``.
+    """
+
+    point: tuple[float, float] | None
+    direction: tuple[float, float] | None
+    rounding: float = 0.0
+
+    @property
+    def is_at_infinity(self) -> bool:
+        """True when the centre is a direction."""
+        return self.point is None
+
+
+def mechanism_size(kin: Kinematics) -> float:
+    """Return the largest distance between two of the mechanism's points (m).
+
+    Examples
+    --------
+    >>> import types
+    >>> kin = types.SimpleNamespace(points={"A": (0.0, 0.0), "B": (3.0, 4.0)})
+    >>> mechanism_size(kin)
+    5.0
+    """
+    xy = list(kin.points.values())
+    return max([0.0] + [math.dist(p, q) for p in xy for q in xy])
+
+
+def _canonical(dx: float, dy: float) -> tuple[float, float]:
+    """A unit direction without sense: flipped so that x > 0, or x = 0 and y > 0."""
+    n = math.hypot(dx, dy)
+    x, y = dx / n, dy / n
+    if x < 0.0 or (x == 0.0 and y < 0.0):
+        x, y = -x, -y
+    return (x + 0.0, y + 0.0)
+
+
+def _omega(kin: Kinematics, k: int) -> float:
+    return 0.0 if k == 1 else kin.omegas[k]
+
+
+def _field(kin: Kinematics, k: int, p: tuple[float, float]) -> tuple[float, float]:
+    """Velocity of the point at ``p`` taken as fixed to link ``k``."""
+    if k == 1:
+        return (0.0, 0.0)
+    (ox, oy), (vx, vy), w = kin.origins[k], kin.origin_velocities[k], kin.omegas[k]
+    return (vx - w * (p[1] - oy), vy + w * (p[0] - ox))
+
+
+def instant_centre(kin: Kinematics, i: int, j: int) -> AnalyticCentre:
+    """Locate ``I_ij`` where the velocity fields of links ``i`` and ``j`` agree.
+
+    Parameters
+    ----------
+    kin : Kinematics
+        A solution from :func:`constructions.analytic.solve` (with a nonzero input ω;
+        the centres do not depend on its size).
+    i, j : int
+        Two link numbers (1 is the frame).
+
+    Returns
+    -------
+    AnalyticCentre
+        A finite point, or, when ``|ω_i − ω_j|·L ≤ AT_INFINITY·|v_i − v_j|``, the
+        direction square to the relative velocity.
+
+    Raises
+    ------
+    DegenerateInput
+        If ``i == j``, the mechanism does not move (ω = 0), or links i and j move
+        together at this instant (no relative velocity anywhere).
+
+    Examples
+    --------
+    A link turning at 2 rad/s about (1, 0) against the frame:
+
+    >>> import types
+    >>> kin = types.SimpleNamespace(points={"O": (1.0, 0.0), "A": (2.0, 0.0)},
+    ...                             origins={2: (2.0, 0.0)}, origin_velocities={2: (0.0, 2.0)},
+    ...                             omegas={2: 2.0}, conditioning=1.0)
+    >>> ref = instant_centre(kin, 1, 2)
+    >>> ref.point, ref.rounding < 1e-14
+    ((1.0, 0.0), True)
+    """
+    if i == j:
+        raise DegenerateInput(f"I{i}{j} needs two different links")
+    pts = list(kin.points.values())
+    q = (sum(p[0] for p in pts) / len(pts), sum(p[1] for p in pts) / len(pts))
+    size = max(mechanism_size(kin), 1e-300)
+    scale = max([abs(w) * size for w in kin.omegas.values()]
+                + [math.hypot(*_field(kin, k, p)) for k in kin.omegas for p in pts])
+    if scale == 0.0:
+        raise DegenerateInput("nothing moves (every ω and velocity is 0): give the input a "
+                              "nonzero ω to locate instant centres")
+    (vix, viy), (vjx, vjy) = _field(kin, i, q), _field(kin, j, q)
+    dvx, dvy = vix - vjx, viy - vjy
+    dv = math.hypot(dvx, dvy)
+    dw = _omega(kin, i) - _omega(kin, j)
+    if dv <= _STILL * scale and abs(dw) * size <= _STILL * scale:
+        raise DegenerateInput(f"links {i} and {j} move together at this instant, so I{i}{j} "
+                              "is undefined (every point is a centre)")
+    # The solver's ω and v each carry about eps/rcond of their scale (rcond: the scaled
+    # Jacobian's reciprocal condition number); a difference of two doubles that, and the
+    # centre divides it by |Δv| (a direction) or by |Δω| (a point): hence the 4.
+    noise = 4.0 * EPS / max(kin.conditioning, EPS)
+    if abs(dw) * size <= AT_INFINITY * dv:
+        # Taking a point beyond L/AT_INFINITY as a direction turns its bearing from the
+        # mechanism by at most |Δω|·(|Q| + L)/|Δv|.
+        bend = abs(dw) * (math.hypot(*q) + size) / dv
+        return AnalyticCentre(None, _canonical(-dvy, dvx), noise * scale / dv + bend)
+    # Δv(P) = Δv(Q) + Δω k × (P − Q) = 0  ⇒  P = Q + k × Δv(Q) / Δω.
+    p = (q[0] - dvy / dw, q[1] + dvx / dw)
+    reach = math.hypot(p[0] - q[0], p[1] - q[1])
+    rounding = noise * scale * (1.0 + reach / size) / (abs(dw) * max(size, math.hypot(*p)))
+    return AnalyticCentre(p, None, rounding)
+
+
+def centre_error(found, ref: AnalyticCentre, size: float) -> float:
+    """Return the relative error of a constructed centre against the reference.
+
+    - Both finite: ``|P − P_ref| / max(size, |P_ref|)``, so a far centre is judged
+      relative to its own distance.
+    - Both at infinity: ``|sin|`` of the angle between the directions.
+    - One at infinity: if the finite one is further than ``FAR·size`` from the
+      origin, the ``|sin|`` of the angle between its position vector and the
+      direction; otherwise ``inf``.
+
+    Parameters
+    ----------
+    found : constructions.geometry.Point
+        The constructed centre (any object with ``is_at_infinity``, ``xy`` and
+        ``direction``).
+    ref : AnalyticCentre
+        The analytic centre.
+    size : float
+        The mechanism's size (m), the scale of a position error.
+
+    Examples
+    --------
+    >>> from constructions.geometry import Point
+    >>> centre_error(Point(6.0, 9.0), AnalyticCentre((6.0, 8.0), None), 1.0)
+    0.1
+    >>> centre_error(Point(0.0, 1.0, 0.0), AnalyticCentre(None, (0.0, 1.0)), 1.0)
+    0.0
+    >>> centre_error(Point(1.0, 2.0), AnalyticCentre(None, (0.0, 1.0)), 1.0)
+    inf
+    """
+    if not found.is_at_infinity and not ref.is_at_infinity:
+        (x, y), (rx, ry) = found.xy, ref.point
+        return math.hypot(x - rx, y - ry) / max(size, math.hypot(rx, ry))
+    if found.is_at_infinity and ref.is_at_infinity:
+        (a, b), (c, d) = found.direction, ref.direction
+        return abs(a * d - b * c)
+    if found.is_at_infinity:
+        (px, py), (dx, dy) = ref.point, found.direction
+    else:
+        (px, py), (dx, dy) = found.xy, ref.direction
+    r = math.hypot(px, py)
+    if r <= FAR * size:
+        return math.inf
+    return abs(px * dy - py * dx) / r
+
+
+def tolerance(conditioning: float) -> float:
+    """Return the relative tolerance of a result with this compounded conditioning.
+
+    A drafting act's first-order error is about ``eps / conditioning`` relative to
+    the figure; 64 ulps cover the few acts chained before the last, and 1e-9 is the
+    floor below which nothing is asked.
+
+    Examples
+    --------
+    >>> tolerance(1.0)
+    1e-09
+    >>> tolerance(1e-9) == 64 * EPS / 1e-9
+    True
+    >>> tolerance(0.0)
+    inf
+    """
+    if conditioning <= 0.0:
+        return math.inf
+    return max(1e-9, 64 * EPS / conditioning)
