@@ -148,7 +148,8 @@ def _centre(cs: Centres, kin, pair, size) -> Quantity:
     reference = ({"at_infinity": True, "direction": list(ref.direction)} if ref.is_at_infinity
                  else {"point": list(ref.point)})
     # A direction is judged by angle alone, so its tolerance does not grow with distance.
-    tol = tolerance(1.0 if p.is_at_infinity else cond)
+    # The reference's own rounding (large when ω_i ≈ ω_j) is added to the tolerance.
+    tol = tolerance(1.0 if p.is_at_infinity else cond) + ref.rounding
     return Quantity(pair_label(*pair), value, reference, centre_error(p, ref, size), tol, cond,
                     method)
 

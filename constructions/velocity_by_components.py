@@ -1,0 +1,412 @@
+"""Velocities by components: the lecture notes' §2.6 and Hinkle's §5-8, step for step.
+
+Two points of a rigid link have equal velocity components along the line joining
+them. From the input velocity the method walks the mechanism link by link and
+finds each new velocity's tip where two of its loci meet, or by a whole
+construction of the notes:
+
+* case 1: V_K′ (along KX) laid off at X; the perpendicular to KX at its tip meets
+  the path of X (⟂ the radius from a frame pivot, or a frame guide);
+* case 2: two such perpendiculars meet at the tip of V_X (not the vector sum!);
+* case 3: X on line AB: the line through the tips of V_A″ and V_B″ (⟂ AB) gives
+  V_X″; V_X′ = V_A′; V_X = V_X′ + V_X″ by the parallelogram;
+* slot (Hinkle Fig. 5.8): V_Pi − V_Pj lies along the slot, so the parallel to the
+  slot through one tip meets the other's path;
+* translation (Hinkle Fig. 5.9): all points of a block on a frame guide share V.
+
+A node is a velocity: of a point itself (on every link that lists it) or of the
+coincident point of another link (``V_A4``: A taken on link 4). The method plans
+which node follows from which, as a student surveys the figure, then draws only
+what the asked point rests on. Every act is a ``cm:`` step, named by what it is,
+so a second call on the same construction reuses what the first one drew.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from itertools import combinations
+
+from . import geometry as g
+from .assembly import Assembly
+from .errors import DegenerateInput, TarsimError
+from .model import SlideKind
+from .record import Ref, Role, slice as backward_slice
+from .velocity_drawing import VelocityResult, draw_input_velocity, speed_text
+
+__all__ = ["velocity_by_components"]
+
+WELL_CROSSED = 0.1
+"""Sine of the crossing angle (about 6°) from which a pair of loci is taken at once."""
+
+_ON_LINE = 1e-9  # relative sine below which three points count as collinear (case 3)
+
+
+@dataclass(frozen=True)
+class _Node:
+    """A velocity to find: point ``point`` itself, or taken on link ``link``."""
+
+    point: str
+    link: int | None = None
+
+    @property
+    def tag(self) -> str:
+        return self.point if self.link is None else f"{self.point}@{self.link}"
+
+    @property
+    def name(self) -> str:
+        return self.point if self.link is None else f"{self.point}{self.link}"
+
+
+@dataclass(frozen=True)
+class _Rule:
+    """How a node is found: ``cross`` two loci, ``case3`` or ``translate``."""
+
+    kind: str
+    args: tuple
+    needs: tuple[_Node, ...]
+    quality: float
+
+
+def velocity_by_components(asm: Assembly, point: str, *, scale: float,
+                           link: int | None = None) -> VelocityResult:
+    """Find the velocity of ``point`` by resolving known velocities into components.
+
+    Parameters
+    ----------
+    asm : Assembly
+        The mechanism drawn at one position, with the drive's ω.
+    point : str
+        The point asked for.
+    scale : float
+        Drawing metres per m/s of the velocity vectors.
+    link : int, optional
+        The link the point is taken on; a link that does not list the point gives
+        its coincident point (``V_A4``). By default, the point itself.
+
+    Returns
+    -------
+    VelocityResult
+        Method ``"components"``; ``vector`` is the ``V_<point>`` result step and
+        ``steps`` every step the answer rests on, the input vector first.
+
+    Raises
+    ------
+    TarsimError
+        If no case of the method reaches the point, or the construction
+        degenerates (two loci of a tip are parallel, at a dead point).
+
+    See Also
+    --------
+    constructions.velocity_drawing.draw_input_velocity : the vector it starts from.
+
+    Examples
+    --------
+    A parallelogram four-bar at θ2 = 90°: the coupler translates, so V_B = V_A.
+
+    >>> import math
+    >>> from constructions.assembly import assemble
+    >>> from constructions.model import Drive, Link, Mechanism
+    >>> m = Mechanism((Link(1, (("O2", (0, 0)), ("O4", (4, 0)))),
+    ...                Link(2, (("O2", (0, 0)), ("A", (3, 0)))),
+    ...                Link(3, (("A", (0, 0)), ("B", (4, 0)))),
+    ...                Link(4, (("O4", (0, 0)), ("B", (3, 0))))),
+    ...               Drive(2, math.pi / 2, omega=1.0), branches={"B": "left"})
+    >>> asm = assemble(m)
+    >>> r = velocity_by_components(asm, "B", scale=1.0)
+    >>> tuple(round(v, 12) + 0.0 for v in r.value(asm.construction))
+    (-3.0, 0.0)
+    >>> asm.construction["cm:B:path@O4"].sentence
+    'At B draw the perpendicular to O4B: the path of B.'
+    """
+    if not (math.isfinite(scale) and scale > 0.0):
+        raise TarsimError(f"the velocity scale must be a positive number, got {scale}")
+    m = asm.mechanism
+    if point not in m.point_names:
+        raise TarsimError(f"there is no point {point}; the points are {', '.join(m.point_names)}")
+    if link is not None:
+        m.link(link)
+    target = _Node(point, None if link is None or point in m.link(link).names else link)
+    return _Components(asm, scale, target).run()
+
+
+class _Components:
+    def __init__(self, asm: Assembly, scale: float, target: _Node):
+        self.asm, self.c, self.m, self.scale, self.target = (
+            asm, asm.construction, asm.mechanism, scale, target)
+        start, vec = draw_input_velocity(asm, scale)
+        k = self.m.link(self.m.drive.link)
+        drawn, want = self.c.output(vec).length, abs(self.m.drive.omega) * k.span(*k.names[:2])
+        if abs(drawn - want * scale) > 1e-9 * drawn:
+            raise TarsimError(f"this construction's velocities are drawn at {drawn / want:.6g} "
+                              f"m per m/s, not {scale:.6g}; use that scale")
+        self.input_refs = {f"v:perp:{start}", f"v:tip:{start}", vec}
+        nodes = [_Node(n) for n in self.m.point_names] + [
+            _Node(s.point, s.guide_link) for s in self.m.slides
+            if s.guide_link != 1 and s.point not in self.m.link(s.guide_link).names]
+        self.nodes = list(dict.fromkeys(nodes + [target]))
+        self.known: dict[_Node, Ref] = {_Node(start): self.c[vec].inputs[1]}
+        self.known |= {n: f"cm:{n.tag}:tip" for n in self.nodes  # drawn by a previous call
+                       if f"cm:{n.tag}:tip" in self.c and n not in self.known}
+
+    # ----- the mechanism as the method sees it ------------------------------------
+    def carriers(self, n: _Node) -> tuple[int, ...]:
+        if n.link is not None:
+            return (n.link,)
+        at = set(self.m.links_at(n.point)) | {s.link for s in self.m.slides if s.point == n.point}
+        return tuple(sorted(at))
+
+    def zero(self, n: _Node) -> bool:
+        return 1 in self.carriers(n)
+
+    def members(self, c: int) -> list[_Node]:
+        out = [_Node(p) for p in self.m.link(c).names]
+        out += [_Node(s.point) for s in self.m.slides if s.link == c]
+        return list(dict.fromkeys(out + [n for n in self.nodes if n.link == c]))
+
+    def frame_guide(self, c: int) -> int | None:
+        """The slide index if link ``c`` is a block on a frame guide (so it translates)."""
+        return next((i for i, s in enumerate(self.m.slides) if s.link == c and s.guide_link == 1
+                     and s.kind is SlideKind.BLOCK), None)
+
+    def normal_to(self, a: _Node | str, b: _Node) -> tuple[float, float] | None:
+        """The unit normal to line ab (the direction of a component locus), if a ≠ b."""
+        (ax, ay), (bx, by) = self.asm.xy(getattr(a, "point", a)), self.asm.xy(b.point)
+        d = math.hypot(bx - ax, by - ay)
+        big = max(1.0, abs(ax), abs(ay), abs(bx), abs(by))
+        return None if d <= 1e-12 * big else ((ay - by) / d, (bx - ax) / d)
+
+    def collinear(self, a: _Node, b: _Node, x: _Node) -> bool:
+        pa, pb, px = (self.asm.point(n.point) for n in (a, b, x))
+        ab, ax, bx = g.distance(pa, pb), g.distance(pa, px), g.distance(pb, px)
+        return min(ab, ax, bx) > 0.0 and abs(g.side_of(px, pa, pb)) <= _ON_LINE * ab * ax
+
+    # ----- planning: which velocity follows from which ----------------------------
+    def loci(self, x: _Node, known) -> list[tuple[tuple, tuple[float, float]]]:
+        """Lines known to carry the tip of V_x, in the notes' order: components, slot, path."""
+        comp, slot, path = [], [], []
+        for c in self.carriers(x):
+            comp += [(("component", k, c), self.normal_to(k, x)) for k in self.members(c)
+                     if k != x and k in known and not self.zero(k) and self.normal_to(k, x)]
+            path += [(("path", o, c), self.normal_to(o, x)) for o in self.m.link(c).names
+                     if o in self.m.frame.names and self.normal_to(o, x)]
+            i = self.frame_guide(c)
+            if i is not None and self.m.slides[i].point != x.point:
+                path.append((("glide", i, c), self.asm.guide(i).direction))
+        for i, s in enumerate(self.m.slides):
+            if s.point == x.point and s.guide_link == 1 and x.link is None:
+                path.append((("guide", i), self.asm.guide(i).direction))
+            elif s.point == x.point and s.guide_link != 1 and x.link in (None, s.guide_link):
+                other = _Node(s.point, s.guide_link if x.link is None else None)
+                if other in known:
+                    slot.append((("slide", other, i), self.asm.guide(i).direction))
+        return comp + slot + path
+
+    def rules(self, x: _Node, known) -> list[_Rule]:
+        """Every way to find V_x from what is known, in the order a student would try them."""
+        whole, cross, case3 = [], [], []
+        for c in self.carriers(x):
+            ready = [k for k in self.members(c) if k != x and (k in known or self.zero(k))]
+            if self.frame_guide(c) is not None:
+                whole += [_Rule("translate", (c, k), (k,), 1.0) for k in ready if not self.zero(k)]
+            case3 += [_Rule("case3", (c, a, b), (a, b), 1.0) for a, b in combinations(ready, 2)
+                      if not (self.zero(a) and self.zero(b)) and self.collinear(a, b, x)]
+        for (l1, d1), (l2, d2) in combinations(self.loci(x, known), 2):
+            needs = tuple(lo[1] for lo in (l1, l2) if lo[0] in ("component", "slide"))
+            cross.append(_Rule("cross", (l1, l2), needs, abs(d1[0] * d2[1] - d1[1] * d2[0])))
+        return whole + cross + case3
+
+    def plan(self) -> list[tuple[_Node, _Rule]]:
+        """Survey the figure in rounds from what is known, then keep what the target needs.
+
+        Each round finds every node that follows well-crossed from the last round's
+        knowns (so each takes the shortest route), or else the one best-crossed node.
+        """
+        known, chosen = set(self.known), {}
+        while self.target not in known and not self.zero(self.target):
+            found, best = {}, None
+            for n in (n for n in self.nodes if n not in known and not self.zero(n)):
+                rules = self.rules(n, known)
+                r = next((r for r in rules if r.quality >= WELL_CROSSED), None)
+                if r is not None:
+                    found[n] = r
+                elif rules and (best is None or max(q.quality for q in rules) > best[1].quality):
+                    best = (n, max(rules, key=lambda q: q.quality))
+            if not found and best is None:
+                x = self.target
+                on = "" if x.link is None else f" as a point of link {x.link}"
+                raise TarsimError(f"the component method cannot reach {x.point}{on}: no link "
+                                  "carrying it has two known velocities or a known path")
+            found = found or dict([best])
+            known |= found.keys()
+            chosen |= found
+        need, stack = set(), [self.target]
+        while stack:
+            n = stack.pop()
+            if n in chosen and n not in need:
+                need.add(n)
+                stack.extend(chosen[n].needs)
+        return [(n, r) for n, r in chosen.items() if n in need]
+
+    # ----- drafting ---------------------------------------------------------------
+    def act(self, ref: Ref, verb: str, *inputs: Ref, sentence: str, label: str = "",
+            role: Role = Role.CONSTRUCTION, **params) -> Ref:
+        """Do one drafting act, or reuse it if this construction already holds it."""
+        if ref not in self.c:
+            self.c.draw(ref, verb, *inputs, label=label, sentence=sentence, role=role, **params)
+        return ref
+
+    def at(self, n: _Node | str) -> Ref:
+        return self.asm.points[n.point if isinstance(n, _Node) else n]
+
+    def tip(self, n: _Node) -> Ref:
+        return self.at(n) if self.zero(n) else self.known[n]
+
+    def run(self) -> VelocityResult:
+        x = self.target
+        try:
+            for n, rule in self.plan():
+                self.known[n] = getattr(self, f"draw_{rule.kind}")(n, *rule.args)
+                if n != x and f"cm:V:{n.tag}:result" not in self.c:
+                    self.draw_arrow(n, f"cm:V:{n.tag}", Role.CONSTRUCTION)
+            vector = self.draw_arrow(x, f"cm:V:{x.tag}:result", Role.RESULT)
+        except DegenerateInput as e:
+            d = self.m.drive
+            raise TarsimError(f"the component method cannot find V_{x.name} at θ{d.link} = "
+                              f"{math.degrees(d.angle):.6g}°: {e}") from None
+        on = backward_slice(self.c, [vector])
+        steps = [s.id for s in self.c if s.id in self.input_refs or s.id.startswith("cm:") and (
+            s.id in on or s.verb == "join" and set(s.inputs) <= on)]
+        link = x.link if x.link is not None else next((c for c in self.carriers(x) if c != 1), 1)
+        return VelocityResult("components", x.point, link, vector, self.scale, steps)
+
+    def draw_arrow(self, x: _Node, ref: Ref, role: Role) -> Ref:
+        speed = math.dist(*(self.c.output(r).xy for r in (self.at(x), self.tip(x)))) / self.scale
+        return self.act(ref, "join", self.at(x), self.tip(x), label=f"V_{x.name}", role=role,
+                        sentence=f"Join {x.name} to the tip: V_{x.name} = "
+                                 f"{speed_text(speed, self.m.units)}.")
+
+    def draw_line(self, p: _Node | str, q: _Node, sentence: str) -> Ref:
+        """Draw the line through two points, once per construction whoever needs it."""
+        p = p.point if isinstance(p, _Node) else p
+        return self.act(f"cm:line:{p}-{q.point}", "line_through", self.at(p), self.at(q),
+                        sentence=sentence)
+
+    def transfer_along(self, x: _Node, k: _Node, line: Ref, kx: str, mark: str = "′") -> Ref:
+        """Project V_k onto ``line`` and lay the component off at x; return its tip."""
+        t, on, K, X = f"cm:{x.tag}:", line.removeprefix("cm:line:"), k.name, x.name
+        foot = self.act(f"cm:{k.tag}:foot@{on}", "project_onto", self.tip(k), line,
+                        sentence=f"Project the tip of V_{K} onto {kx}: V_{K}′ is the component "
+                                 f"of V_{K} along {kx}.")
+        self.act(f"cm:{k.tag}:arrow@{on}", "join", self.at(k), foot, label=f"V_{K}′",
+                 sentence=f"Draw V_{K}′ at {K} along {kx}.")
+        mid = self.act(f"{t}mid@{k.tag}", "midpoint", foot, self.at(x),
+                       sentence=f"To take V_{K}′ to {X} with dividers, bisect the segment from "
+                                f"its tip to {X}.")
+        along = self.act(f"{t}along@{k.tag}", "rotate_about", self.at(k), mid, angle=math.pi,
+                         sentence=f"Lay off V_{X}{mark} = V_{K}′ at {X} along {kx} (the "
+                                  f"half-turn of {K} about that midpoint).")
+        self.act(f"{t}along-arrow@{k.tag}", "join", self.at(x), along, label=f"V_{X}{mark}",
+                 sentence=f"V_{X}{mark} = V_{K}′: points of a rigid link have equal components "
+                          "along the line joining them.")
+        return along
+
+    def draw_locus(self, x: _Node, locus: tuple, mark: str) -> tuple[Ref, str]:
+        """Draw one line carrying the tip of V_x; return it and how the text names it."""
+        kind, t, X = locus[0], f"cm:{x.tag}:", x.name
+        if kind == "component":
+            (k, c), kx = locus[1:], f"{locus[1].name}{X}"
+            line = self.draw_line(k, x, f"Draw line {kx} of link {c}.")
+            along = self.transfer_along(x, k, line, kx, mark)
+            perp = self.act(f"{t}perp@{k.tag}", "perpendicular_through", along, line,
+                            sentence=f"From the tip of V_{X}{mark} draw the perpendicular to {kx}.")
+            return perp, f"the perpendicular to {kx} from the tip of V_{X}{mark}"
+        if kind == "path":
+            o, c = locus[1:]
+            radius = self.draw_line(o, x, f"Draw the radius {o}{X} of link {c} about its fixed "
+                                          f"pivot {o}.")
+            path = self.act(f"{t}path@{o}", "perpendicular_through", self.at(x), radius,
+                            sentence=f"At {X} draw the perpendicular to {o}{X}: the path of {X}.")
+            return path, f"the path of {X} (⟂ {o}{X})"
+        if kind == "guide":
+            return self.asm.guides[locus[1]], f"the guide of {X}"
+        if kind == "glide":
+            i, c = locus[1:]
+            glide = self.act(f"{t}glide@{i}", "parallel_through", self.at(x), self.asm.guides[i],
+                             sentence=f"Link {c} slides on a frame guide without turning, so {X} "
+                                      f"moves parallel to the guide: draw it through {X}.")
+            return glide, f"the path of {X} (∥ the guide of link {c})"
+        (other, i), p = locus[1:], self.m.slides[locus[2]].point
+        j = self.m.slides[i].guide_link
+        slide = self.act(f"{t}slide@{i}", "parallel_through", self.tip(other), self.asm.guides[i],
+                         sentence=f"Through the tip of V_{other.name} draw the parallel to the "
+                                  f"slot of link {j}: V_{p} − V_{p}{j} lies along the slot.")
+        return slide, f"the parallel to the slot of link {j} through the tip of V_{other.name}"
+
+    def draw_cross(self, x: _Node, first: tuple, second: tuple) -> Ref:
+        """Cases 1 and 2 and the slot: two loci of the tip meet at it."""
+        both = first[0] == second[0] == "component"
+        (l1, say1), (l2, say2) = (self.draw_locus(x, lo, f"′({lo[1].name}{x.name})" if both
+                                                  else "′") for lo in (first, second))
+        note = " (not the vector sum of the two components!)" if both else ""
+        tip = self.act(f"cm:{x.tag}:tip", "intersect_lines", l1, l2,
+                       sentence=f"{say1[0].upper()}{say1[1:]} meets {say2} at the tip of "
+                                f"V_{x.name}{note}.")
+        if self.c.output(tip).is_at_infinity:
+            raise DegenerateInput(f"{say1} and {say2} are parallel (a dead point)")
+        return tip
+
+    def component_normal(self, k: _Node, ab: Ref, ab_name: str) -> Ref:
+        """The tip of V_k″, the component of V_k ⟂ AB (k itself when k is at rest)."""
+        if self.zero(k):
+            return self.at(k)
+        on, K = ab.removeprefix("cm:line:"), k.name
+        n = self.act(f"cm:{k.tag}:normal@{on}", "perpendicular_through", self.at(k), ab,
+                     sentence=f"At {K} draw the perpendicular to {ab_name}.")
+        tip = self.act(f"cm:{k.tag}:ncomp@{on}", "project_onto", self.tip(k), n,
+                       sentence=f"Project the tip of V_{K} onto it: V_{K}″ is the component of "
+                                f"V_{K} ⟂ {ab_name}.")
+        self.act(f"cm:{k.tag}:narrow@{on}", "join", self.at(k), tip, label=f"V_{K}″",
+                 sentence=f"Draw V_{K}″ at {K}.")
+        return tip
+
+    def draw_case3(self, x: _Node, c: int, a: _Node, b: _Node) -> Ref:
+        """Case 3: X on line AB, from the components ⟂ AB and the one along it."""
+        t, X, ab_name = f"cm:{x.tag}:", x.name, f"{a.name}{b.name}"
+        ab = self.draw_line(a, b, f"Draw line {ab_name} of link {c}; {X} lies on it.")
+        ta, tb = (self.component_normal(k, ab, ab_name) for k in (a, b))
+        rest = a if self.zero(a) else b
+        through = (f"{rest.name} (at rest) and the tip of V_{(b if rest == a else a).name}″"
+                   if self.zero(rest) else f"the tips of V_{a.name}″ and V_{b.name}″")
+        gauge = self.act(f"{t}gauge", "line_through", ta, tb,
+                         sentence=f"Draw the gauge line through {through}.")
+        nx = self.act(f"{t}normal@{x.tag}", "perpendicular_through", self.at(x), ab,
+                      sentence=f"At {X} draw the perpendicular to {ab_name}.")
+        tx = self.act(f"{t}ncomp", "intersect_lines", gauge, nx,
+                      sentence=f"It cuts the gauge line at the tip of V_{X}″, the component of "
+                               f"V_{X} ⟂ {ab_name}.")
+        self.act(f"{t}narrow@{x.tag}", "join", self.at(x), tx, label=f"V_{X}″",
+                 sentence=f"Draw V_{X}″ at {X}.")
+        if self.zero(rest):  # V_X′ = 0: X turns about the fixed pivot, as on Hinkle's gauge line
+            return self.act(f"{t}tip", "mark", tx, sentence=f"V_{X}′ = V_{rest.name}′ = 0 "
+                            f"({rest.name} is at rest), so V_{X} = V_{X}″.")
+        along = self.transfer_along(x, a, ab, ab_name)
+        l1 = self.act(f"{t}pgram′", "perpendicular_through", along, ab,
+                      sentence=f"Through the tip of V_{X}′ draw the parallel to V_{X}″ "
+                               f"(⟂ {ab_name}).")
+        l2 = self.act(f"{t}pgram″", "parallel_through", tx, ab,
+                      sentence=f"Through the tip of V_{X}″ draw the parallel to V_{X}′ (along "
+                               f"{ab_name}).")
+        return self.act(f"{t}tip", "intersect_lines", l1, l2, sentence=f"They meet at the tip "
+                        f"of V_{X} = V_{X}′ + V_{X}″ (the parallelogram).")
+
+    def draw_translate(self, x: _Node, c: int, k: _Node) -> Ref:
+        """Hinkle Fig. 5.9: a block on a frame guide translates, so V_x = V_k."""
+        K, X = k.name, x.name
+        mid = self.act(f"cm:{x.tag}:mid@{k.tag}", "midpoint", self.tip(k), self.at(x),
+                       sentence=f"Link {c} slides on a frame guide without turning, so all its "
+                                f"points have V_{K}: bisect the segment from the tip of V_{K} "
+                                f"to {X}.")
+        return self.act(f"cm:{x.tag}:tip", "rotate_about", self.at(k), mid, angle=math.pi,
+                        sentence=f"Lay off V_{X} = V_{K} at {X} (the half-turn of {K} about "
+                                 "that midpoint).")
