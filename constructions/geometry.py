@@ -409,7 +409,7 @@ def intersect_lines(g: Line, h: Line) -> tuple[Point, float]:
     ((3.0, 0.0), 1.0)
     """
     x, y, w = _cross((g.a, g.b, g.c), (h.a, h.b, h.c))
-    sine = abs(w) if not (g.is_at_infinity or h.is_at_infinity) else 1.0
+    sine = min(1.0, abs(w)) if not (g.is_at_infinity or h.is_at_infinity) else 1.0
     if max(abs(x), abs(y), abs(w)) <= _TANGENT_SLACK * max(1.0, abs(g.c), abs(h.c)):
         raise DegenerateInput("the two lines coincide, so they have no single intersection")
     # With unit normals |w| is the sine of the angle between the lines, so parallelism

@@ -101,8 +101,8 @@ def _read_ask(ask, mech: Mechanism, where: SourceMap, filename: str, exercise_id
         raise fail("[ask] must be a table")
     for k in ask:
         if k not in _ASK_KEYS:
-            close = difflib.get_close_matches(k, _ASK_KEYS, n=1)
-            hint = f"did you mean '{close[0]}'?" if close else f"expected {' or '.join(_ASK_KEYS)}"
+            close = _closest(k, _ASK_KEYS)
+            hint = f"did you mean '{close}'?" if close else f"expected {' or '.join(_ASK_KEYS)}"
             raise fail(f"unknown setting '{k}' in [ask]; {hint}", k)
     find = ask.get("find")
     if not (isinstance(find, list) and find and all(isinstance(q, str) for q in find)):
@@ -111,8 +111,8 @@ def _read_ask(ask, mech: Mechanism, where: SourceMap, filename: str, exercise_id
     valid = _valid_quantities(mech)
     for q in find:
         if q not in valid:
-            close = difflib.get_close_matches(q, sorted(valid), n=1)
-            hint = (f"did you mean '{close[0]}'?" if close
+            close = _closest(q, sorted(valid))
+            hint = (f"did you mean '{close}'?" if close
                     else 'use "centres", "I<i><j>", "omega<n>" or "V_<point>"')
             raise fail(f"cannot find '{q}' for this mechanism; {hint}", "find")
     methods = ask.get("methods", ["radius-rotation"])
@@ -120,10 +120,18 @@ def _read_ask(ask, mech: Mechanism, where: SourceMap, filename: str, exercise_id
         raise fail('methods must be a list such as ["radius-rotation", "components"]', "methods")
     for m in methods:
         if m not in VELOCITY_METHODS:
-            close = difflib.get_close_matches(m, VELOCITY_METHODS, n=1)
-            hint = f"did you mean '{close[0]}'?" if close else f"use {', '.join(VELOCITY_METHODS)}"
+            close = _closest(m, VELOCITY_METHODS)
+            hint = f"did you mean '{close}'?" if close else f"use {', '.join(VELOCITY_METHODS)}"
             raise fail(f"unknown velocity method '{m}'; {hint}", "methods")
     return Exercise(exercise_id, mech, tuple(dict.fromkeys(find)), tuple(dict.fromkeys(methods)))
+
+
+def _closest(got: str, valid) -> str | None:
+    """The valid name nearest ``got``: a spelling neighbour, or one it abbreviates."""
+    close = difflib.get_close_matches(got, list(valid), n=1)
+    if close:
+        return close[0]
+    return next((v for v in valid if got and v.startswith(got)), None)
 
 
 def _valid_quantities(mech: Mechanism) -> set[str]:

@@ -99,8 +99,7 @@ def _figures(sol: Solution, position_steps: set[Ref]) -> list[SolutionFigure]:
             out.append(SolutionFigure("circle-diagram", "Circle diagram",
                                       draw_circle_diagram(sol.centres), []))
     for r in sol.velocities:
-        refs = [ref for ref in _drawn(c, [r.vector], position_steps)
-                if not ref.startswith(("K:", "N:"))]
+        refs = _drawn(c, [r.vector], position_steps)
         fig = draw_scene(asm, refs, title=f"{name}: V_{r.point} by {r.method}",
                          velocity_scale=r.scale)
         out.append(SolutionFigure(f"V_{r.point}-{r.method}", f"V_{r.point} by {r.method}",

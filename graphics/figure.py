@@ -10,7 +10,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
-__all__ = ["Style", "STYLES", "View", "Path", "Circle", "Text", "Figure", "FONT", "text_width"]
+__all__ = ["Style", "STYLES", "View", "Path", "Circle", "Text", "Figure", "FONT", "text_width",
+           "SUB_SIZE", "SUB_DROP", "arc_points", "clip_line", "ray_to_edge"]
 
 FONT = "DejaVu Serif"
 """One family that covers Latin, Greek, subscripts and ⊥ ∥ ∞ (cairosvg has no fallback)."""
@@ -38,6 +39,24 @@ STYLES: dict[str, Style] = {
     "block": Style(width=0.45, fill="#fff", join="miter", cap="butt"),
     "guide": Style(width=0.4, cap="butt"),
     "construction": Style(width=0.18, dash=(3.0, 1.0, 0.6, 1.0)),
+    # Scene layers (graphics.scene): each kind of working line reads differently in
+    # black and grey alone.
+    "kennedy": Style(width=0.2, dash=(4.0, 1.0, 0.7, 1.0)),
+    "normal": Style(width=0.28, dash=(6.0, 1.5)),
+    "gauge": Style(width=0.22, stroke="#555"),
+    "working": Style(width=0.18, stroke="#444", dash=(1.6, 1.0)),
+    "compass": Style(width=0.18, stroke="#444"),
+    "vector": Style(width=0.35, cap="butt"),
+    "vector_result": Style(width=0.55, cap="butt"),
+    "edge_arrow": Style(width=0.3, cap="butt"),
+    "dot": Style(stroke=None, fill="#000"),
+    "badge": Style(width=0.18, fill="#fff"),
+    "chord": Style(width=0.4),
+    "chord_secondary": Style(width=0.4, dash=(2.2, 1.3), cap="butt"),
+    "chord_current": Style(width=0.6, dash=(2.2, 1.3), cap="butt"),
+    "triangle": Style(stroke=None, fill="#e4e4e4"),
+    "triangle_alt": Style(stroke=None, fill="#cdcdcd"),
+    "node_circle": Style(width=0.25, stroke="#777"),
     "reference": Style(width=0.18, dash=(1.5, 1.0)),
     "dimension": Style(width=0.2),
     "arrow": Style(width=0.35),
@@ -85,7 +104,12 @@ class Circle:
 
 @dataclass(frozen=True, slots=True)
 class Text:
-    """A label; ``anchor`` is start, middle or end; ``at`` is the visual centre-left/middle/right."""
+    """A label; ``anchor`` is start, middle or end; ``at`` is the visual centre-left/middle/right.
+
+    ``sub`` is set after ``text`` as a true subscript (smaller, dropped below the
+    baseline): ``Text(at, "V", sub="A")`` prints V with subscript A; ``tail``
+    follows the subscript back on the baseline ("V_B by radius rotation").
+    """
 
     at: tuple[float, float]
     text: str
@@ -93,20 +117,55 @@ class Text:
     anchor: str = "middle"
     italic: bool = True
     weight: str = "normal"
+    sub: str = ""
+    tail: str = ""
+
+    @property
+    def width(self) -> float:
+        """Approximate advance width on paper, the subscript and tail included."""
+        bold = 1.1 if self.weight == "bold" else 1.0
+        return bold * (text_width(self.text, self.size) + text_width(self.sub, SUB_SIZE * self.size)
+                       + text_width(self.tail, self.size))
 
     def box(self) -> tuple[float, float, float, float]:
         """Approximate extent (x0, y0, x1, y1) on paper, for collision checks."""
-        w = text_width(self.text, self.size)
+        w = self.width
         x, y = self.at
         x0 = x - w / 2 if self.anchor == "middle" else (x - w if self.anchor == "end" else x)
         h = self.size * 0.75
-        return (x0, y - h / 2, x0 + w, y + h / 2)
+        drop = SUB_DROP * self.size if self.sub else 0.0
+        return (x0, y - h / 2, x0 + w, y + h / 2 + drop)
+
+
+SUB_SIZE = 0.72
+"""A subscript's size relative to its text."""
+
+SUB_DROP = 0.28
+"""How far (in ems of the text) a subscript's baseline drops below the text's."""
+
+
+# Advance widths of DejaVu Serif in ems (measured from the font), grouped by width.
+_ADVANCE_GROUPS = {
+    0.23: "′", 0.27: "'", 0.31: "j", 0.32: " ,.il·", 0.34: "-/:;\\|", 0.37: "f", 0.39: "()[]",
+    0.40: "!IJt₀₁₂₃₄₅₆₇₈₉", 0.46: '"∥', 0.48: "r", 0.50: "*_`°–", 0.51: "s", 0.53: "z",
+    0.54: "?", 0.56: "cvxy", 0.59: "e", 0.60: "aoθ", 0.61: "k",
+    0.64: "$0123456789bdghnpqu{}", 0.66: "LY", 0.67: "PT", 0.68: "α", 0.69: "FSZ",
+    0.71: "X", 0.72: "AVΔ", 0.73: "BE", 0.75: "KR", 0.77: "C", 0.80: "DG", 0.82: "OQω",
+    0.83: "∞", 0.84: "#+<=>U^~→≡−×", 0.86: "w", 0.87: "H", 0.88: "N", 0.89: "&",
+    0.94: "⊥", 0.95: "%m", 1.00: "@—", 1.02: "M", 1.03: "W",
+}
+_ADVANCE = {ch: w for w, chars in _ADVANCE_GROUPS.items() for ch in chars}
 
 
 def text_width(text: str, size: float) -> float:
-    """Rough advance width of ``text`` in DejaVu Serif at ``size`` mm."""
-    narrow = set("il.,:;'|!()[]₀₁₂₃₄₅₆₇₈₉ ")
-    return sum(0.33 if ch in narrow else 0.62 for ch in text) * size
+    """Advance width of ``text`` in DejaVu Serif at ``size`` mm (0.62 em for unlisted glyphs).
+
+    Examples
+    --------
+    >>> round(text_width("VI", 10.0), 2)
+    11.2
+    """
+    return sum(_ADVANCE.get(ch, 0.62) for ch in text) * size
 
 
 @dataclass
@@ -160,4 +219,64 @@ def _shifted(it: Path | Circle | Text, dx: float, dy: float) -> Path | Circle | 
         return Path(tuple((x + dx, y + dy) for x, y in it.points), it.style, it.closed, it.d)
     if isinstance(it, Circle):
         return Circle((it.centre[0] + dx, it.centre[1] + dy), it.radius, it.style)
-    return Text((it.at[0] + dx, it.at[1] + dy), it.text, it.size, it.anchor, it.italic, it.weight)
+    return Text((it.at[0] + dx, it.at[1] + dy), it.text, it.size, it.anchor, it.italic, it.weight,
+                it.sub, it.tail)
+
+
+Box = tuple[float, float, float, float]
+
+
+def arc_points(centre: tuple[float, float], r: float, start: float, sweep: float,
+               chord: float = 1.2) -> list[tuple[float, float]]:
+    """Points of a paper arc from angle ``start`` through ``sweep`` (rad, CCW as seen).
+
+    Chords are about ``chord`` mm long, so a large arc stays round.
+
+    Examples
+    --------
+    >>> pts = arc_points((0.0, 0.0), 10.0, 0.0, math.pi / 2)
+    >>> [tuple(round(v, 12) + 0.0 for v in p) for p in (pts[0], pts[-1])]
+    [(10.0, 0.0), (0.0, -10.0)]
+    """
+    n = max(8, min(720, int(abs(sweep) * r / chord) + 1))
+    return [(centre[0] + r * math.cos(start + sweep * i / n),
+             centre[1] - r * math.sin(start + sweep * i / n)) for i in range(n + 1)]
+
+
+def clip_line(base: tuple[float, float], d: tuple[float, float], lo: float, hi: float,
+              box: Box) -> tuple[tuple[float, float], tuple[float, float]] | None:
+    """Clip the piece ``base + t·d``, ``lo ≤ t ≤ hi``, of a paper line to ``box`` (x0, y0, x1, y1).
+
+    Working in the parameter keeps far ends (a centre kilometres off) exact.
+    Returns the two ends, or None if nothing is left.
+
+    Examples
+    --------
+    >>> clip_line((0.0, 5.0), (1.0, 0.0), -1e12, 1e12, (0.0, 0.0, 10.0, 10.0))
+    ((0.0, 5.0), (10.0, 5.0))
+    """
+    for k in (0, 1):
+        if abs(d[k]) < 1e-15:
+            if not box[k] <= base[k] <= box[k + 2]:
+                return None
+            continue
+        t0, t1 = (box[k] - base[k]) / d[k], (box[k + 2] - base[k]) / d[k]
+        lo, hi = max(lo, min(t0, t1)), min(hi, max(t0, t1))
+    if hi - lo <= 1e-9:
+        return None
+    return ((base[0] + lo * d[0], base[1] + lo * d[1]), (base[0] + hi * d[0], base[1] + hi * d[1]))
+
+
+def ray_to_edge(start: tuple[float, float], u: tuple[float, float], box: Box
+                ) -> tuple[float, float]:
+    """Where the ray from ``start`` (inside ``box``) along ``u`` leaves the box.
+
+    Examples
+    --------
+    >>> ray_to_edge((5.0, 5.0), (0.0, -1.0), (0.0, 0.0, 10.0, 10.0))
+    (5.0, 0.0)
+    """
+    ts = [((box[k + 2] if u[k] > 0 else box[k]) - start[k]) / u[k]
+          for k in (0, 1) if abs(u[k]) > 1e-12]
+    t = max(0.0, min(ts)) if ts else 0.0
+    return (start[0] + t * u[0], start[1] + t * u[1])

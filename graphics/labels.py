@@ -8,14 +8,16 @@ least overlap. Placed labels become obstacles for the next.
 from __future__ import annotations
 
 import math
+import re
 
 from shapely.geometry import LineString, box
 from shapely.geometry.base import BaseGeometry
 from shapely.strtree import STRtree
 
 from .figure import Figure, Text
+from .symbols import badge_radius, draw_badge
 
-__all__ = ["LabelPlacer"]
+__all__ = ["LabelPlacer", "typeset"]
 
 
 class LabelPlacer:
@@ -24,47 +26,66 @@ class LabelPlacer:
     def __init__(self, fig: Figure):
         self.fig = fig
         self.obstacles: list[BaseGeometry] = []
+        self.keys: list[object] = []
         self._tree: STRtree | None = None
         self.clearance = 0.8
         # A page that is fitted to its content afterwards has no edge to avoid.
         self.page = box(1.0, 1.0, fig.width - 1.0, fig.height - 1.0) if fig.width else None
 
-    def block(self, geom: BaseGeometry) -> None:
-        """Mark an area (a link, a symbol, a placed label) as taken."""
+    def block(self, geom: BaseGeometry, key: object = None) -> None:
+        """Mark an area (a link, a symbol, a placed label) as taken; ``key`` names it."""
         self.obstacles.append(geom)
+        self.keys.append(key)
         self._tree = None
+
+    def block_path(self, points, width: float = 0.4) -> None:
+        """Mark a drawn polyline (with a little clearance) as taken."""
+        if len(points) >= 2:
+            self.block(LineString(points).buffer(width / 2 + 0.3, cap_style="flat"))
 
     def block_segment(self, p: tuple[float, float], q: tuple[float, float], width: float = 0.8) -> None:
         """Mark a drawn segment (with a little clearance) as taken."""
         self.block(LineString([p, q]).buffer(width / 2 + 0.3, cap_style="flat"))
 
-    def overlap(self, geom: BaseGeometry) -> float:
-        """Area of ``geom`` covered by obstacles or off the page."""
+    def overlap(self, geom: BaseGeometry, ignore: object = None) -> float:
+        """Area of ``geom`` covered by obstacles (but those keyed ``ignore``) or off the page."""
         if self._tree is None:
             self._tree = STRtree(self.obstacles) if self.obstacles else None
         area = 0.0 if self.page is None else geom.area - geom.intersection(self.page).area
         if self._tree is not None:
             for i in self._tree.query(geom):
-                area += geom.intersection(self.obstacles[int(i)]).area
+                if ignore is None or self.keys[int(i)] != ignore:
+                    area += geom.intersection(self.obstacles[int(i)]).area
         return area
 
-    def place(self, text: str, anchor: tuple[float, float] | list[tuple[float, float]], *,
-              prefer: float | tuple[float, ...] = math.pi / 4, spread: float = math.pi,
-              gap: float = 2.6, size: float = 3.5, italic: bool = True,
-              rings: tuple[float, ...] = (1.0, 1.6, 2.3)) -> Text:
-        """Put ``text`` near ``anchor`` (or the first of several anchors that has room).
+    def clearest(self, shapes: list[BaseGeometry], ignore: object = None) -> int:
+        """Index of the first of ``shapes`` clear of every obstacle, else of the least covered."""
+        best = None
+        for k, shape in enumerate(shapes):
+            cost = self.overlap(shape, ignore)
+            if cost <= 1e-9:
+                return k
+            if best is None or cost < best[0]:
+                best = (cost, k)
+        return best[1]
+
+    def spot(self, width: float, height: float,
+             anchor: tuple[float, float] | list[tuple[float, float]], *,
+             prefer: float | tuple[float, ...] = math.pi / 4, spread: float = math.pi,
+             gap: float = 2.6, rings: tuple[float, ...] = (1.0, 1.6, 2.3)
+             ) -> tuple[tuple[float, float], float]:
+        """Find the centre of a ``width`` × ``height`` box near ``anchor``; nothing is drawn.
 
         Directions are tried from each ``prefer`` angle (paper, rad) outwards, up to
-        ``spread`` either side.
+        ``spread`` either side; the box's edge, not its centre, stands ``gap`` off
+        the anchor. Returns the centre and the overlap left (0 when clear).
         """
         prefers = prefer if isinstance(prefer, tuple) else (prefer,)
         turns = [(k + 1) // 2 * (1 if k % 2 else -1) * math.pi / 8 for k in range(16)]
         angles = [p + t for t in turns if abs(t) <= spread + 1e-9 for p in prefers]
         anchors = anchor if isinstance(anchor, list) else [anchor]
-        probe = Text((0.0, 0.0), text, size, "middle", italic)
-        x0, y0, x1, y1 = probe.box()
-        hw, hh = (x1 - x0) / 2, (y1 - y0) / 2
-        best: tuple[float, int, Text] | None = None
+        hw, hh = width / 2, height / 2
+        best: tuple[float, int, tuple[float, float]] | None = None
         order = 0
         for ring in rings:
             for base in anchors:
@@ -72,19 +93,95 @@ class LabelPlacer:
                     ux, uy = math.cos(a), -math.sin(a)
                     # Push the box out until its edge, not its centre, is ``gap`` away.
                     reach = gap * ring + min(hw / max(abs(ux), 1e-9), hh / max(abs(uy), 1e-9))
-                    t = Text((base[0] + reach * ux, base[1] + reach * uy), text, size,
-                             "middle", italic)
-                    shape = box(*t.box())
+                    c = (base[0] + reach * ux, base[1] + reach * uy)
+                    shape = box(c[0] - hw, c[1] - hh, c[0] + hw, c[1] + hh)
                     cost = self.overlap(shape.buffer(self.clearance))
                     if cost <= 1e-9:
-                        return self._commit(t, shape)
+                        return c, 0.0
                     if best is None or (cost, order) < best[:2]:
-                        best = (cost, order, t)
+                        best = (cost, order, c)
                     order += 1
-        t = best[2]
+        return best[2], best[0]
+
+    def place(self, text: str, anchor: tuple[float, float] | list[tuple[float, float]], *,
+              prefer: float | tuple[float, ...] = math.pi / 4, spread: float = math.pi,
+              gap: float = 2.6, size: float = 3.5, italic: bool = True,
+              rings: tuple[float, ...] = (1.0, 1.6, 2.3), sub: str = "") -> Text:
+        """Put ``text`` (subscript ``sub``) near ``anchor``, or the first of several with room.
+
+        Directions are tried from each ``prefer`` angle (paper, rad) outwards, up to
+        ``spread`` either side.
+        """
+        probe = Text((0.0, 0.0), text, size, "middle", italic, sub=sub)
+        x0, y0, x1, y1 = probe.box()
+        # The box of a subscripted label hangs below its centre line: aim the box.
+        dy = (y0 + y1) / 2
+        c, _ = self.spot(x1 - x0, y1 - y0, anchor, prefer=prefer, spread=spread, gap=gap,
+                         rings=rings)
+        t = Text((c[0], c[1] - dy), text, size, "middle", italic, sub=sub)
         return self._commit(t, box(*t.box()))
+
+    def place_numbered(self, text: str, anchor: tuple[float, float] | list[tuple[float, float]],
+                       numbers: list[int], *, sub: str = "",
+                       prefer: float | tuple[float, ...] = math.pi / 4, spread: float = math.pi,
+                       gap: float = 1.4, size: float = 3.4) -> tuple[float, float] | None:
+        """Place a label followed by circled step numbers, as one unit clear of everything.
+
+        Either part may be empty. Returns the unit's centre, or None if there was
+        nothing to place.
+        """
+        if not text and not numbers:
+            return None
+        t = Text((0.0, 0.0), text, size, "middle", sub=sub) if text else None
+        x0, y0, x1, y1 = t.box() if t else (0.0, 0.0, 0.0, 0.0)
+        radii = [badge_radius(n) for n in numbers]
+        w = (x1 - x0) + sum(2 * r + 0.6 for r in radii) - (0.0 if t else 0.6)
+        h = max(y1 - y0, 2 * max(radii, default=0.0))
+        c, _ = self.spot(w, h, anchor, prefer=prefer, spread=spread, gap=gap,
+                         rings=(1.0, 1.6, 2.4, 3.4, 4.6, 6.0, 8.0))
+        x = c[0] - w / 2
+        if t:
+            self.fig.add(Text((x + (x1 - x0) / 2, c[1] - (y0 + y1) / 2), text, size, "middle",
+                              sub=sub))
+            x += (x1 - x0) + 0.6
+        for n, r in zip(numbers, radii):
+            draw_badge(self.fig, (x + r, c[1]), n)
+            x += 2 * r + 0.6
+        self.block(box(c[0] - w / 2, c[1] - h / 2, c[0] + w / 2, c[1] + h / 2).buffer(0.4))
+        return c
 
     def _commit(self, t: Text, shape: BaseGeometry) -> Text:
         self.block(shape.buffer(0.4))
         self.fig.add(t)
         return t
+
+
+_SUBSCRIPT = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
+_TRAILING = re.compile(r"^(.*?[^\d,])([\d,]+)$")
+
+
+def typeset(label: str) -> tuple[str, str]:
+    """Split a recorded label into text and true subscript, as a textbook prints it.
+
+    ``V_A`` is V with subscript A; digits that end a name become Unicode
+    subscripts (``I13`` → I₁₃, ``ω2`` → ω₂), inside a subscript too
+    (``V_I23`` → V with subscript I₂₃).
+
+    Examples
+    --------
+    >>> typeset("V_I23")
+    ('V', 'I₂₃')
+    >>> typeset("I13")
+    ('I₁₃', '')
+    >>> typeset("A_B/A")
+    ('A', 'B/A')
+    """
+    head, _, sub = label.partition("_")
+    return _digits_down(head), _digits_down(sub)
+
+
+def _digits_down(name: str) -> str:
+    m = _TRAILING.match(name)
+    if m is None or " " in name or not m.group(1).strip():
+        return name
+    return m.group(1) + m.group(2).translate(_SUBSCRIPT)

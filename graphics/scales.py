@@ -7,10 +7,12 @@ millimetres, so on a PDF printed at 100 % it measures true with a ruler.
 from __future__ import annotations
 
 import math
+import re
+from collections.abc import Sequence
 
-from .figure import Figure, Path, Text
+from .figure import Figure, Path, Text, text_width
 
-__all__ = ["nice_per_cm", "scale_text", "draw_scale_bar", "number_text"]
+__all__ = ["nice_per_cm", "scale_text", "draw_scale_bar", "number_text", "draw_caption"]
 
 
 def nice_per_cm(extent: float, room_mm: float) -> float:
@@ -71,3 +73,54 @@ def draw_scale_bar(fig: Figure, at: tuple[float, float], per_cm: float, unit: st
         fig.add(Text((x0 + 10.0 * i, y0 + h / 2 + 2.4), label, size=2.6,
                      anchor="middle" if i < cm else "start", italic=False))
     return 10.0 * cm
+
+
+def _heading(text: str) -> Text:
+    """A bold heading, its first ``X_Y`` set with a true subscript ("V_B by …")."""
+    m = re.search(r"\b([A-Za-zωα])_(\w+)", text)
+    if m is None:
+        return Text((0.0, 0.0), text, 3.6, "start", italic=False, weight="bold")
+    return Text((0.0, 0.0), text[:m.start(2) - 1], 3.6, "start", italic=False, weight="bold",
+                sub=m.group(2), tail=text[m.end(2):])
+
+
+def draw_caption(fig: Figure, heading: str, lines: Sequence[str], *, per_cm: float, unit: str,
+                 legend: Sequence[tuple[str, str]] = (), notes: Sequence[str] = (),
+                 margin: float = 8.0) -> None:
+    """Move the drawing in from a ``margin`` and set the caption under it; size the page.
+
+    Left: the bold ``heading`` and ``lines``. Right: the scale statement and its
+    bar. Under both: a ``legend`` of (style, name) line samples, then ``notes``.
+    """
+    x0, y0, x1, y1 = fig.bounds()
+    fig.shift(margin - x0, margin - y0)
+    head = _heading(heading)
+    scale = f"Scale {scale_text(per_cm, unit)}"
+    left = max([head.width] + [text_width(t, 3.2) for t in lines])
+    right = max(text_width(scale, 3.2), 40.0 + text_width(f" {unit}", 2.6) + 6.0)
+    legend_w = sum(18.0 + text_width(name, 2.8) for _, name in legend)
+    notes_w = max([text_width(n, 3.0) for n in notes], default=0.0)
+    width = max(x1 - x0, left + right + 8.0, legend_w, notes_w) + 2 * margin
+    fig.shift((width - (x1 - x0) - 2 * margin) / 2, 0.0)
+    top = y1 - y0 + 2 * margin
+    y = top + 3.0
+    fig.add(Text((margin, y), head.text, head.size, "start", False, "bold", head.sub, head.tail))
+    for text in lines:
+        y += 5.2
+        fig.add(Text((margin, y), text, 3.2, "start", italic=False))
+    bar_x = width - margin - right
+    fig.add(Text((bar_x, top + 3.0), scale, 3.2, "start", italic=False))
+    draw_scale_bar(fig, (bar_x, top + 8.0), per_cm, unit)
+    y = max(y + 5.2, top + 15.0)
+    if legend:
+        x = margin
+        for style, name in legend:
+            fig.add(Path(((x, y), (x + 10.0, y)), style))
+            fig.add(Text((x + 12.0, y), name, 2.8, "start", italic=False))
+            x += 18.0 + text_width(name, 2.8)
+        y += 4.8
+    for note in notes:
+        fig.add(Text((margin, y), note, 3.0, "start", italic=False))
+        y += 4.4
+    fig.width = round(width, 1)
+    fig.height = round(y + 1.0, 1)

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import svgwrite
 
-from .figure import FONT, STYLES, Circle, Figure, Path, Style, Text
+from .figure import FONT, STYLES, SUB_DROP, SUB_SIZE, Circle, Figure, Path, Style, Text
 
 __all__ = ["to_svg"]
 
@@ -42,6 +42,9 @@ def to_svg(fig: Figure) -> str:
     >>> f.add(Text((10, 5), "A"))
     >>> to_svg(f).count("<text")
     1
+    >>> f.add(Text((10, 5), "V", sub="A"))
+    >>> '<tspan dy="0.98" font-size="2.52">A</tspan>' in to_svg(f)
+    True
     """
     dwg = svgwrite.Drawing(size=(f"{_n(fig.width)}mm", f"{_n(fig.height)}mm"),
                            viewBox=f"0 0 {_n(fig.width)} {_n(fig.height)}", profile="full",
@@ -79,10 +82,24 @@ def _element(dwg: svgwrite.Drawing, item: Path | Circle | Text):
         return dwg.circle((_n(item.centre[0]), _n(item.centre[1])), _n(item.radius))
     # Text: ``at`` is the visual centre line; the baseline sits 0.35 em below it.
     x, y = item.at
+    anchor = item.anchor
+    if (item.sub or item.tail) and anchor != "start":
+        # cairosvg anchors a <text> by its own characters and ignores the tspan's,
+        # so a subscripted label is set from its computed left end instead.
+        x -= item.width / 2 if anchor == "middle" else item.width
+        anchor = "start"
     attrs = {"x": [_n(x)], "y": [_n(y + 0.35 * item.size)], "font-size": _n(item.size),
-             "text-anchor": item.anchor}
+             "text-anchor": anchor}
     if item.italic:
         attrs["font-style"] = "italic"
     if item.weight != "normal":
         attrs["font-weight"] = item.weight
-    return dwg.text(item.text, **attrs)
+    text = dwg.text(item.text, **attrs)
+    if item.sub:
+        # A true subscript: cairosvg ignores baseline-shift, so drop it with dy.
+        text.add(dwg.tspan(item.sub, dy=[_n(SUB_DROP * item.size)],
+                           font_size=_n(SUB_SIZE * item.size)))
+    if item.tail:
+        rise = -SUB_DROP * item.size if item.sub else 0.0
+        text.add(dwg.tspan(item.tail, dy=[_n(rise)], font_size=_n(item.size)))
+    return text

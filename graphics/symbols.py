@@ -10,7 +10,7 @@ import math
 
 from shapely.geometry import LineString, MultiLineString, Polygon
 
-from .figure import Circle, Figure, Path
+from .figure import Circle, Figure, Path, Text
 
 __all__ = [
     "PIN_RADIUS",
@@ -22,6 +22,9 @@ __all__ = [
     "draw_arrowhead",
     "draw_turning_arrow",
     "mark_angle",
+    "draw_arrow",
+    "draw_badge",
+    "badge_radius",
     "ground_footprint",
     "unit",
 ]
@@ -146,3 +149,30 @@ def mark_angle(fig: Figure, centre: tuple[float, float], radius: float, start: f
     fig.arc(centre, radius, start, end, "dimension")
     mid = (start + end) / 2
     return (centre[0] + radius * math.cos(mid), centre[1] - radius * math.sin(mid))
+
+
+def draw_arrow(fig: Figure, tail: tuple[float, float], tip: tuple[float, float],
+               style: str = "arrow", head: float = 2.6, width: float = 1.5) -> None:
+    """A straight arrow: a shaft from ``tail`` stopping inside a filled head at ``tip``.
+
+    The shaft ends in the head's notch, so a thick shaft never shows past the point.
+    """
+    d = (tip[0] - tail[0], tip[1] - tail[1])
+    n = math.hypot(*d)
+    if n == 0.0:
+        return
+    ux, uy = d[0] / n, d[1] / n
+    stop = min(0.7 * head, n)
+    fig.line(tail, (tip[0] - stop * ux, tip[1] - stop * uy), style)
+    draw_arrowhead(fig, tip, (ux, uy), length=min(head, n), width=width)
+
+
+def badge_radius(number: int) -> float:
+    """Radius (mm) of the circle round a step number."""
+    return 1.55 if number < 10 else 1.85
+
+
+def draw_badge(fig: Figure, at: tuple[float, float], number: int) -> None:
+    """A step number in a small circle, as a worked construction numbers its acts."""
+    fig.add(Circle(at, badge_radius(number), "badge"))
+    fig.add(Text(at, str(number), 2.1 if number < 10 else 1.95, italic=False))

@@ -1,0 +1,625 @@
+"""A scene: the space diagram with a chosen set of recorded steps drawn on it.
+
+The kinematic diagram is drawn as :func:`~graphics.diagram.draw_kinematic_diagram`
+draws it; each step of the scene is then drawn by what its output is, never by
+recomputing geometry:
+
+* a line is a thin working line spanning the points that lie on it, in a style
+  that tells its kind (Kennedy line, common normal, gauge line, other);
+* a circle is a compass arc through the points that lie on it, with an arrowhead
+  where a radius was swung to;
+* a segment is a vector arrow with its label and a true subscript;
+* a point is a dot and its label; coincident points share one dot and one
+  label ("I₁₃ ≡ I₃₄"); an instant centre at infinity is a two-headed arrow
+  marked "I₁₄ → ∞" across its guide; a point beyond the page's frame is an
+  arrow at the page's edge, on each line that runs to it, with its distance.
+
+The page's frame is sized from the mechanism and takes in the scene's points up
+to :data:`FRAME_CAP` mechanism extents (or :data:`FRAME_MIN` mm of paper); the
+space scale is the kinematic diagram's, so :func:`choose_velocity_scale` can
+state a velocity scale before the scene is drawn.
+
+Every step that draws something and is narrated, other than a given, carries
+its number in a small circle; :func:`numbered_steps` is the one source of those
+numbers, so a written solution numbers its sentences the same way.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from collections.abc import Iterable, Sequence
+
+from shapely.geometry import LineString, box
+from shapely.geometry import Point as SPoint
+
+from constructions import geometry as g
+from constructions.assembly import Assembly
+from constructions.centres import Centres
+from constructions.errors import TarsimError
+from constructions.model import SlideKind
+from constructions.record import Construction, Panel, Ref, Role, Step
+
+from .diagram import _Diagram, subscript
+from .figure import Circle, Figure, Path, arc_points, clip_line, ray_to_edge
+from .labels import typeset
+from .scales import draw_caption, number_text
+from .symbols import PIN_RADIUS, draw_arrow, draw_arrowhead, unit
+
+__all__ = ["draw_scene", "numbered_steps", "choose_velocity_scale", "centre_steps", "line_kind",
+           "FRAME_CAP", "FRAME_MIN", "LINE_KINDS"]
+
+FRAME_CAP = 1.6
+"""The page's frame grows to take in the scene's points up to this many mechanism extents..."""
+
+FRAME_MIN = 190.0
+"""...or this many millimetres of paper, whichever is more; beyond, a point is off the page."""
+
+LINE_KINDS = {
+    "kennedy": ("kennedy", "Kennedy line"),
+    "normal": ("normal", "common normal"),
+    "gauge": ("gauge", "gauge line"),
+    "working": ("working", "construction line"),
+}
+"""Each kind of line: its style and its name in the legend."""
+
+_PRIORITY = ("normal", "gauge", "kennedy", "working")   # which kind shows when lines coincide
+_MARGIN = 8.0       # white round the drawing, mm (as the kinematic diagram)
+_EDGE = 9.0         # room between the frame's points and the clip edge, mm
+_OVERHANG = 4.0     # a line runs this far past its last point, mm
+_LONE = 12.0        # a line through one point runs this far either side, mm
+_TRACE = 4.0        # a compass trace through one point runs this far either side, mm
+_DOT = 0.6          # a marked point, mm
+_INF_ARROW = 11.0   # each half of the arrow of a centre at infinity, mm
+_SAME = 1e-9        # relative slack for "lies on" and "coincides"
+_ROTATES = re.compile(r"\b(rotat|swing|swung|turn)", re.IGNORECASE)
+
+
+# ----- the public functions -----------------------------------------------------------------
+def line_kind(step: Step) -> str:
+    """Tell a line step's kind: ``kennedy`` (``K:``), ``normal`` (``N:``), ``gauge`` or ``working``.
+
+    Examples
+    --------
+    >>> line_kind(Step("K:13/2", "line_through", (), None, "", Role.CONSTRUCTION,
+    ...                Panel.SPACE, ""))
+    'kennedy'
+    """
+    if step.id.startswith("K:"):
+        return "kennedy"
+    if step.id.startswith("N:"):
+        return "normal"
+    if "gauge" in step.label.lower():
+        return "gauge"
+    return "working"
+
+
+def numbered_steps(construction: Construction, refs: Iterable[Ref]) -> list[tuple[int, Step]]:
+    """Number the steps of a scene as its figure does: 1, 2, … in the order of ``refs``.
+
+    Only steps that draw something on the space diagram and say so in a sentence
+    are counted; givens are not numbered, and neither is a point the act before
+    it already named (B′ where the swung arc cuts the line: its step has no
+    sentence of its own), though both are drawn. A set of refs (as
+    :func:`~constructions.record.slice` returns) is taken in record order. A
+    steps.md writer uses these numbers, so its sentences match the figure's
+    circled numbers.
+
+    Raises
+    ------
+    TarsimError
+        If a ref names no step of the construction.
+    """
+    out: list[tuple[int, Step]] = []
+    for step in _ordered(construction, refs):
+        if step.role is not Role.GIVEN and step.sentence and _draws(step):
+            out.append((len(out) + 1, step))
+    return out
+
+
+def choose_velocity_scale(asm: Assembly, speed: float) -> float:
+    """Return a velocity scale (drawing metres per m/s) for a scene of ``asm``.
+
+    The scale draws ``speed`` (m/s) about 20–35 mm long on the scene's page and
+    reads as a nice statement, "1 cm = N unit/s" with N = 1, 2 or 5 × 10^k in
+    the file's length unit. Pass it to the construction before drawing it.
+
+    Raises
+    ------
+    TarsimError
+        If ``speed`` is not positive and finite.
+    """
+    if not (math.isfinite(speed) and speed > 0.0):
+        raise TarsimError(f"a velocity scale needs a positive speed, got {speed}")
+    per_m = _space_view_scale(asm)            # paper mm per drawing metre
+    unit_m = asm.mechanism.units.metres
+    v = speed / unit_m                         # file units per second
+    k = math.floor(math.log10(v / 3.0))
+    best = None
+    for e in range(k - 1, k + 2):
+        for base in (1.0, 2.0, 5.0):
+            n = float(f"{base * 10.0 ** e:.12g}")
+            mm = 10.0 * v / n
+            # Inside 20–35 mm is best; outside, the nearer by ratio.
+            miss = 0.0 if 20.0 <= mm <= 35.0 else abs(math.log(mm / (20.0 if mm < 20 else 35.0)))
+            key = (miss, abs(math.log(mm / 27.0)))
+            if best is None or key < best[0]:
+                best = (key, n)
+    paper_per_mps = 10.0 / (best[1] * unit_m)   # paper mm per m/s
+    return paper_per_mps / per_m
+
+
+def centre_steps(centres: Centres) -> list[Ref]:
+    """The refs of a complete instant-centre construction, in the order a student draws it.
+
+    The centres by inspection first, then for each centre found by Kennedy its
+    two lines and the centre itself, in the order of discovery.
+    """
+    out = [c.ref for c in centres.primaries]
+    for c in centres.secondaries:
+        out += [r for r in c.lines if r not in out] + [c.ref]
+    return out
+
+
+def draw_scene(asm: Assembly, refs: Iterable[Ref], *, title: str | None = None,
+               velocity_scale: float | None = None, notes: Sequence[str] = ()) -> Figure:
+    """Draw the kinematic diagram of ``asm`` with the steps ``refs`` on it.
+
+    Parameters
+    ----------
+    asm
+        The assembled mechanism whose construction holds the steps.
+    refs
+        The steps to draw, in narration order (a set is taken in record order).
+    title
+        The caption's heading; the mechanism's name when None.
+    velocity_scale
+        Drawing metres per m/s of the velocity vectors among the steps; the
+        caption then states it as "Velocity scale 1 cm = N unit/s".
+    notes
+        Short lines printed under the caption (warnings, remarks).
+
+    Raises
+    ------
+    TarsimError
+        If a ref names no step of the construction.
+    """
+    return _Scene(asm, _ordered(asm.construction, refs), title, velocity_scale, notes).draw()
+
+
+# ----- what a step draws --------------------------------------------------------------------
+def _ordered(construction: Construction, refs: Iterable[Ref]) -> list[Step]:
+    if isinstance(refs, (set, frozenset)):
+        missing = sorted(r for r in refs if r not in construction)
+        wanted = set(refs)
+        ordered = [s for s in construction if s.id in wanted]
+    else:
+        seen: set[Ref] = set()
+        ordered, missing = [], []
+        for r in refs:
+            if r in seen:
+                continue
+            seen.add(r)
+            if r not in construction:
+                missing.append(r)
+            else:
+                ordered.append(construction[r])
+    if missing:
+        raise TarsimError(f"nothing in the construction is called '{missing[0]}'")
+    return [s for s in ordered if s.panel is Panel.SPACE]
+
+
+def _segment_ends(steps: list[Step]) -> list[g.Point]:
+    return [p for s in steps if isinstance(s.output, g.Segment)
+            for p in (s.output.start, s.output.end)]
+
+
+def _is_mechanism_point(step: Step) -> bool:
+    return step.id.startswith("P:")
+
+
+def _draws(step: Step) -> bool:
+    """True if the step puts something on the page beyond the kinematic diagram.
+
+    A mechanism's own point (``P:``) is the diagram's; a line at infinity has no
+    trace. Everything else is drawn: a point at a vector's tip or at a pin is
+    not dotted, but its number stands beside it.
+    """
+    out = step.output
+    if isinstance(out, g.Line):
+        return not out.is_at_infinity
+    if isinstance(out, (g.Circle, g.Segment)):
+        return True
+    return isinstance(out, g.Point) and not _is_mechanism_point(step)
+
+
+def _coincide(p: g.Point, q: g.Point) -> bool:
+    if p.is_at_infinity or q.is_at_infinity:
+        return False
+    return math.dist(p.xy, q.xy) <= _SAME * max(1.0, p.size(), q.size())
+
+
+def _space_view_scale(asm: Assembly) -> float:
+    """Paper mm per drawing metre of the scene (the kinematic diagram's own scale)."""
+    d = _Diagram(asm)
+    d.layout()
+    return d.view.scale
+
+
+# ----- the figure ------------------------------------------------------------------------------
+class _Scene(_Diagram):
+    """The kinematic diagram, then the scene's layers: working lines under it, marks over it."""
+
+    def __init__(self, asm: Assembly, steps: list[Step], title: str | None,
+                 velocity_scale: float | None, notes: Sequence[str]):
+        super().__init__(asm)
+        self.steps = steps
+        self.title = title
+        self.velocity_scale = velocity_scale
+        self.notes = tuple(notes)
+        self.c = asm.construction
+        self.numbers = {s.id: n for n, s in numbered_steps(self.c, [s.id for s in steps])}
+        self.ends = _segment_ends(steps)
+        self.kinds: list[str] = []
+
+    # ----- planning, before the diagram places its own labels ------------------------------
+    def layout(self) -> None:
+        super().layout()
+        xy = list(self.world.values())
+        self.size = max([1e-300] + [math.dist(p, q) for p in xy for q in xy])
+        self.centre = _mid(list(self.paper.values()))
+        self.points = [(-1, p) for p in xy] + [(i, p) for i, s in enumerate(self.steps)
+                                               for p in _finite_points(s)]
+        self.plan_frame()
+        # Each drawn line: the steps that drew it (coincident lines are drawn once) and its ends.
+        self.lines: list[tuple[list[Step], tuple | None]] = []
+        self.arcs: list[tuple[Step, list[tuple[float, float]], bool]] = []
+        for step in self.steps:
+            if isinstance(step.output, g.Line) and not step.output.is_at_infinity:
+                self.plan_line(step)
+            elif isinstance(step.output, g.Circle):
+                self.plan_circle(step)
+        self.plan_far()
+        self.draw_working()
+
+    def plan_frame(self) -> None:
+        """The frame: the mechanism, grown to take in the scene's points up to the cap."""
+        xs = [p[0] for p in self.world.values()]
+        ys = [p[1] for p in self.world.values()]
+        b = [min(xs), min(ys), max(xs), max(ys)]
+        extent = max(b[2] - b[0], b[3] - b[1], 1e-9)
+        cap = max(FRAME_CAP * extent, FRAME_MIN / self.view.scale)
+
+        def beyond(p):
+            return max(b[0] - p[0], p[0] - b[2], b[1] - p[1], p[1] - b[3])
+
+        self.far: list[tuple[Step, tuple[float, float]]] = []
+        for i, p in sorted(((i, p) for i, p in self.points if i >= 0),
+                           key=lambda ip: beyond(ip[1])):
+            grown = [min(b[0], p[0]), min(b[1], p[1]), max(b[2], p[0]), max(b[3], p[1])]
+            if max(grown[2] - grown[0], grown[3] - grown[1]) <= cap * (1 + 1e-12):
+                b = grown
+            elif isinstance(self.steps[i].output, g.Point):
+                self.far.append((self.steps[i], p))
+        # A flat mechanism (all its pins in a line) still gets room for its labels.
+        least = 0.4 * extent
+        for lo, hi in ((0, 2), (1, 3)):
+            grow = max(0.0, least - (b[hi] - b[lo])) / 2
+            b[lo], b[hi] = b[lo] - grow, b[hi] + grow
+        (x0, y0), (x1, y1) = self.view((b[0], b[3])), self.view((b[2], b[1]))
+        self.clip = (x0 - _EDGE, y0 - _EDGE, x1 + _EDGE, y1 + _EDGE)
+        self.clip_box = box(*self.clip)
+        # Labels stay on the page the frame makes, or just about.
+        self.placer.page = self.clip_box.buffer(4.0, join_style="mitre")
+
+    def on_line(self, line: g.Line, p: tuple[float, float]) -> bool:
+        return abs(line.signed_distance(g.Point(*p))) <= _SAME * max(self.size, math.hypot(*p))
+
+    def is_pin(self, p: tuple[float, float]) -> bool:
+        return any(math.dist(p, q) <= _SAME * max(self.size, 1.0) for q in self.world.values())
+
+    def plan_line(self, step: Step) -> None:
+        """Span the points on the line, clipped to the frame; the same line again gains a number."""
+        line: g.Line = step.output
+        for steps, _ in self.lines:
+            other = steps[0].output
+            if (abs(other.a * line.b - other.b * line.a) <= _SAME
+                    and self.on_line(other, line.anchor())):
+                steps.append(step)
+                return
+        d = self.view.direction(line.direction)
+        # The paper line, measured from the foot of the frame's centre.
+        a = self.view(line.anchor())
+        mid = ((self.clip[0] + self.clip[2]) / 2, (self.clip[1] + self.clip[3]) / 2)
+        t_mid = (mid[0] - a[0]) * d[0] + (mid[1] - a[1]) * d[1]
+        base = (a[0] + t_mid * d[0], a[1] + t_mid * d[1])
+        on = [(i, p) for i, p in self.points if self.on_line(line, p)]
+        ts = [(self.view(p)[0] - base[0]) * d[0] + (self.view(p)[1] - base[1]) * d[1]
+              for _, p in on]
+        if not ts:
+            lo, hi = -2 * _LONE, 2 * _LONE
+        elif max(ts) - min(ts) < 1e-6:
+            lo, hi = ts[0] - _LONE, ts[0] + _LONE
+        else:
+            # Past a constructed point the line runs on a little, to show the cut;
+            # at a pin it stops under the pin's circle.
+            def reach(t):
+                pin = any(self.is_pin(p) for (_, p), u in zip(on, ts) if abs(u - t) < 1e-6)
+                return PIN_RADIUS if pin else _OVERHANG
+            lo, hi = min(ts) - reach(min(ts)), max(ts) + reach(max(ts))
+        self.lines.append(([step], clip_line(base, d, lo, hi, self.clip)))
+
+    def plan_circle(self, step: Step) -> None:
+        """An arc through the points on the circle; a swing ends in an arrow at its new place."""
+        circle: g.Circle = step.output
+        cw = circle.centre.xy
+        tol = _SAME * max(self.size, circle.radius, math.hypot(*cw))
+        on = [(i, p) for i, p in self.points if abs(math.dist(p, cw) - circle.radius) <= tol]
+        c, r = self.view(cw), circle.radius * self.view.scale
+        angles = sorted({round(math.atan2(p[1] - cw[1], p[0] - cw[0]), 12) for _, p in on})
+        if not angles:
+            self.arcs.append((step, arc_points(c, r, 0.0, 2 * math.pi), False))
+            return
+        if len(angles) == 1:       # a compass trace through the one point
+            half = min(_TRACE / r, math.radians(20))
+            self.arcs.append((step, arc_points(c, r, angles[0] - half, 2 * half), False))
+            return
+        gaps = [(angles[(k + 1) % len(angles)] - angles[k]) % (2 * math.pi)
+                for k in range(len(angles))]
+        k = max(range(len(gaps)), key=gaps.__getitem__)
+        start, sweep = angles[(k + 1) % len(angles)], 2 * math.pi - gaps[k]
+        swung = bool(_ROTATES.search(step.sentence))
+        if swung:
+            # The swung-to end is the point located last that is neither a pin nor a
+            # vector's end; the arc runs to it.
+            def rank(ip):
+                i, p = ip
+                return -1 if i < 0 or self.is_pin(p) or not isinstance(
+                    self.steps[i].output, g.Point) else i
+            last = max(on, key=rank)[1]
+            if abs(math.remainder(math.atan2(last[1] - cw[1], last[0] - cw[0]) - start,
+                                  2 * math.pi)) < 1e-9:
+                start, sweep = start + sweep, -sweep
+        self.arcs.append((step, arc_points(c, r, start, sweep), swung))
+
+    def plan_far(self) -> None:
+        """Arrows at the page's edge toward each far point: on its lines, else from mid-page."""
+        self.edge_arrows: list[tuple[Step, tuple[float, float], list[tuple]]] = []
+        for step, p in self.far:
+            q = self.view(p)
+            arrows = []
+            for steps, ends in self.lines:
+                if ends is None or not self.on_line(steps[0].output, p):
+                    continue
+                end = min(ends, key=lambda e: math.dist(e, q))
+                u = unit((q[0] - end[0], q[1] - end[1]))
+                arrows.append(((end[0] - 7.0 * u[0], end[1] - 7.0 * u[1]), end))
+            if not arrows:
+                mid = ((self.clip[0] + self.clip[2]) / 2, (self.clip[1] + self.clip[3]) / 2)
+                u = unit((q[0] - mid[0], q[1] - mid[1]))
+                tip = ray_to_edge(mid, u, self.clip)
+                arrows.append(((tip[0] - 9.0 * u[0], tip[1] - 9.0 * u[1]), tip))
+            arrows.sort(key=lambda a: math.dist(a[1], q))
+            self.edge_arrows.append((step, p, arrows))
+
+    def draw_working(self) -> None:
+        """Lines and arcs go in first, under the mechanism; the labels will keep clear."""
+        for steps, ends in self.lines:
+            # Lines drawn over one another show as the most telling of their kinds.
+            kind = min((line_kind(st) for st in steps), key=_PRIORITY.index)
+            if ends is not None:
+                self.kinds += [kind] if kind not in self.kinds else []
+                self.fig.add(Path(ends, LINE_KINDS[kind][0]))
+                self.placer.block_path(ends, 0.3)
+        for _, pts, _ in self.arcs:
+            for part in self.clipped(pts):
+                self.fig.add(Path(tuple(part), "compass"))
+                self.placer.block_path(part, 0.3)
+        # Vectors, dots and edge arrows are drawn on top later; their room is taken now.
+        for step in self.steps:
+            out = step.output
+            if isinstance(out, g.Segment) and out.length > 0:
+                self.placer.block_path([self.view(out.start.xy), self.view(out.end.xy)], 1.0)
+            elif isinstance(out, g.Point) and not out.is_at_infinity and _draws(step):
+                self.placer.block(SPoint(self.view(out.xy)).buffer(_DOT + 0.6))
+        for _, _, arrows in self.edge_arrows:
+            for tail, tip in arrows:
+                self.placer.block_path([tail, tip], 1.6)
+
+    def clipped(self, pts: list[tuple[float, float]]) -> list[list[tuple[float, float]]]:
+        """The parts of a paper polyline inside the frame."""
+        cut = LineString(pts).intersection(self.clip_box)
+        return [list(p.coords) for p in getattr(cut, "geoms", [cut])
+                if isinstance(p, LineString) and not p.is_empty and p.length > 0.2]
+
+    # ----- over the diagram, then the caption ---------------------------------------------
+    def fit_page(self) -> None:
+        # The diagram's θ and ω marks take room its placer was not told of.
+        for it in self.fig.items:
+            if isinstance(it, Path) and it.style in ("arrow", "arrowhead", "dimension"):
+                self.placer.block_path(list(it.points) + ([it.points[0]] if it.closed else []),
+                                       0.4)
+        self.draw_arc_heads()
+        self.draw_vectors()
+        self.draw_infinities()
+        self.draw_points()
+        self.draw_far()
+        self.number_lines()
+        self.caption()
+
+    def label(self, text: str, anchor, steps: Sequence[Step] = (), **kw) -> None:
+        """A label with the circled numbers of its steps, placed as one."""
+        numbers = [self.numbers[s.id] for s in steps if s.id in self.numbers]
+        self.placer.place_numbered(text, anchor, numbers, **kw)
+
+    def draw_arc_heads(self) -> None:
+        for _, pts, swung in self.arcs:
+            if swung and self.clip_box.contains(SPoint(pts[-1])):
+                d = unit((pts[-1][0] - pts[-2][0], pts[-1][1] - pts[-2][1]))
+                draw_arrowhead(self.fig, pts[-1], d, length=2.2, width=1.2)
+
+    def draw_vectors(self) -> None:
+        for step in self.steps:
+            out = step.output
+            if not isinstance(out, g.Segment):
+                continue
+            a, b = self.view(out.start.xy), self.view(out.end.xy)
+            text, sub = typeset(step.label) if step.label else ("", "")
+            if math.dist(a, b) < 0.5:
+                self.label(f"{text}{sub} = 0" if text else "", a, [step])
+                continue
+            result = step.role is Role.RESULT
+            draw_arrow(self.fig, a, b, "vector_result" if result else "vector",
+                       head=3.2 if result else 2.8, width=1.6 if result else 1.4)
+            d = unit((b[0] - a[0], b[1] - a[1]))
+            normal = math.atan2(d[0], d[1])     # the paper normal (−dy, dx) as a paper angle
+            anchors = [(a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]))
+                       for t in (0.6, 0.45, 0.75, 0.3, 0.9)]
+            self.label(text, anchors, [step], sub=sub, prefer=(normal, normal + math.pi),
+                       spread=math.pi / 3, gap=1.2, size=3.6)
+
+    def draw_points(self) -> None:
+        """Dots and labels; coincident points share one dot and one joined label."""
+        groups: list[list[Step]] = []
+        far = {s.id for s, _ in self.far}
+        for step in self.steps:
+            out = step.output
+            if not isinstance(out, g.Point) or out.is_at_infinity or not _draws(step) \
+                    or step.id in far:
+                continue
+            for grp in groups:
+                if _coincide(grp[0].output, out):
+                    grp.append(step)
+                    break
+            else:
+                groups.append([step])
+        for grp in groups:
+            p = grp[0].output.xy
+            at = self.view(p)
+            pin = self.is_pin(p)
+            if not pin and not any(_coincide(grp[0].output, e) for e in self.ends):
+                self.fig.add(Circle(at, _DOT, "dot"))
+            names = list(dict.fromkeys(typeset(s.label)[0] for s in grp if s.label))
+            away = (at[0] - self.centre[0], at[1] - self.centre[1])
+            prefer = math.atan2(-away[1], away[0]) if math.hypot(*away) > 1e-6 else math.pi / 4
+            self.label(" ≡ ".join(names), at, grp, prefer=prefer, gap=2.2 if pin else 1.2)
+
+    def draw_infinities(self) -> None:
+        """A centre at infinity: a two-headed arrow across its guide, marked "I₁₄ → ∞"."""
+        for step in self.steps:
+            out = step.output
+            if not isinstance(out, g.Point) or not out.is_at_infinity:
+                continue
+            at, along, clear = self.infinity_anchor(step)
+            u = unit(self.view.direction(out.direction))
+            along = along or (-u[1], u[0])
+            best = None
+            for rank, off in enumerate((clear, -clear, clear + 5, -clear - 5, clear + 10,
+                                        -clear - 10)):
+                base = (at[0] + off * along[0], at[1] + off * along[1])
+                a = (base[0] - _INF_ARROW * u[0], base[1] - _INF_ARROW * u[1])
+                b = (base[0] + _INF_ARROW * u[0], base[1] + _INF_ARROW * u[1])
+                cost = self.placer.overlap(LineString([a, b]).buffer(1.0))
+                if best is None or (cost, rank) < best[:2]:
+                    best = (cost, rank, base, a, b)
+            _, _, base, a, b = best
+            draw_arrow(self.fig, base, b, "arrow", head=2.4, width=1.3)
+            draw_arrow(self.fig, base, a, "arrow", head=2.4, width=1.3)
+            self.placer.block_path([a, b], 1.6)
+            text = (typeset(step.label)[0] + " → ∞") if step.label else "→ ∞"
+            self.label(text, [b, a], [step],
+                       prefer=(math.atan2(-u[1], u[0]), math.atan2(u[1], -u[0])), gap=1.0)
+
+    def infinity_anchor(self, step: Step):
+        """Where a centre at infinity is drawn: beside its block, else on its line, else mid-page.
+
+        Returns the paper point, the direction to step aside along (or None) and how far.
+        """
+        m = re.fullmatch(r"I:(\d+),(\d+)", step.id) or re.fullmatch(r"I:(\d)(\d+)", step.id)
+        if m:
+            pair = tuple(sorted((int(m.group(1)), int(m.group(2)))))
+            for i, s in enumerate(self.m.slides):
+                if s.kind is SlideKind.BLOCK and tuple(sorted((s.link, s.guide_link))) == pair:
+                    at = (self.block_centre(s) if hasattr(self, "block_centre")
+                          else self.paper[s.point])
+                    return at, unit(self.view.direction(self.asm.guide(i).direction)), 7.5
+        for r in step.inputs:
+            line = self.c.output(r)
+            if isinstance(line, g.Line) and not line.is_at_infinity:
+                on = [self.paper[n] for n, p in self.world.items() if self.on_line(line, p)]
+                if on:
+                    return min(on, key=lambda q: math.dist(q, self.centre)), None, 6.0
+        return self.centre, None, 0.0
+
+    def draw_far(self) -> None:
+        for step, p, arrows in self.edge_arrows:
+            for tail, tip in arrows:
+                draw_arrow(self.fig, tail, tip, "edge_arrow", head=2.8, width=1.5)
+            near, dist = min(((n, math.dist(p, q)) for n, q in self.world.items()),
+                             key=lambda nd: nd[1])
+            name = typeset(step.label)[0] if step.label else "a point"
+            text = f"to {name}, {_length(dist, self.m.units)} from {subscript(near)}"
+            tail, tip = arrows[0]
+            ahead = math.atan2(tail[1] - tip[1], tip[0] - tail[0])
+            # The label reads on from the arrow, past the page's frame if need be.
+            page, self.placer.page = self.placer.page, None
+            self.label(text, [tip, tail], [step], prefer=(ahead, ahead + math.pi / 2,
+                                                          ahead - math.pi / 2),
+                       gap=1.0, size=3.2, spread=math.pi / 2)
+            self.placer.page = page
+
+    def number_lines(self) -> None:
+        """Each line's numbers beside it, toward its far end; each arc's beside its middle."""
+        for steps, ends in self.lines:
+            if ends is None:
+                continue
+            a, b = sorted(ends, key=lambda e: math.dist(e, self.centre))
+            d = unit((b[0] - a[0], b[1] - a[1]))
+            normal = math.atan2(d[0], d[1])
+            anchors = [(a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]))
+                       for t in (0.92, 0.8, 0.68, 0.56, 0.44, 0.32, 0.2, 0.08)]
+            self.label("", anchors, steps, prefer=(normal, normal + math.pi),
+                       spread=math.pi / 4, gap=0.6)
+        for step, pts, _ in self.arcs:
+            self.label("", [pts[len(pts) // 2], pts[-1], pts[0]], [step], gap=0.6)
+
+    def caption(self) -> None:
+        """The diagram's caption, with the velocity scale, a legend of lines and the notes."""
+        d, u = self.m.drive, self.m.units
+        angle = (f"{d.angle:.4g} rad" if u.angle == "rad" else f"{math.degrees(d.angle):.6g}°")
+        sub = subscript(str(d.link))
+        params = f"θ{sub} = {angle.replace('-', '−')}"
+        if d.omega:
+            w = abs(d.omega) if u.angular_velocity == "rad/s" else abs(d.omega) * 60 / (2 * math.pi)
+            params += f",  ω{sub} = {w:.6g} {u.angular_velocity} {'ccw' if d.omega > 0 else 'cw'}"
+        lines = [params]
+        if self.velocity_scale:
+            # A vector is velocity_scale × view scale paper mm per m/s: state 1 cm in unit/s.
+            per_cm = 10.0 / (self.velocity_scale * self.view.scale) / u.metres
+            lines.append(f"Velocity scale 1 cm = {number_text(per_cm)} {u.length}/s")
+        legend = [LINE_KINDS[k] for k in LINE_KINDS if k in self.kinds]
+        if legend == [LINE_KINDS["working"]]:
+            legend = []           # plain construction lines need no key
+        draw_caption(self.fig, self.title or self.m.name, lines, per_cm=self.per_cm,
+                     unit=u.length, legend=legend, notes=self.notes, margin=_MARGIN)
+
+
+# ----- small helpers ---------------------------------------------------------------------------
+def _finite_points(s: Step) -> list[tuple[float, float]]:
+    """The finite points a step puts on the page (a mechanism point is the diagram's)."""
+    out = s.output
+    if isinstance(out, g.Point) and not out.is_at_infinity and not _is_mechanism_point(s):
+        return [out.xy]
+    if isinstance(out, g.Segment):
+        return [out.start.xy, out.end.xy]
+    return []
+
+
+def _mid(pts):
+    return (sum(p[0] for p in pts) / len(pts), sum(p[1] for p in pts) / len(pts))
+
+
+def _length(metres: float, units) -> str:
+    value = metres / units.metres
+    text = f"{value:.4g}" if value < 1e4 else f"{value:.0f}"
+    return f"{text} {units.length}"
