@@ -43,6 +43,7 @@ __all__ = [
     "mark",
     "normal_direction",
     "join",
+    "transfer",
     "Segment",
     "distance",
     "side_of",
@@ -648,3 +649,20 @@ def join(p: Point, q: Point) -> tuple[Segment, float]:
     if p.is_at_infinity or q.is_at_infinity:
         raise DegenerateInput("a segment needs two finite end points")
     return Segment(p, q), 1.0
+
+
+def transfer(p: Point, a: Point, b: Point) -> tuple[Point, float]:
+    """Carry the segment ``a → b`` with dividers to start at ``p``: return ``p + (b − a)``.
+
+    This is how a velocity component is laid off again at another point of the
+    same link.
+
+    Examples
+    --------
+    >>> transfer(Point(10, 0), Point(0, 0), Point(3, 4))[0].xy
+    (13.0, 4.0)
+    """
+    if p.is_at_infinity or a.is_at_infinity or b.is_at_infinity:
+        raise DegenerateInput("dividers carry a segment between finite points only")
+    (px, py), (ax, ay), (bx, by) = p.xy, a.xy, b.xy
+    return Point(px + bx - ax, py + by - ay), 1.0

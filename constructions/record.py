@@ -65,6 +65,7 @@ VERBS: Mapping[str, Callable[..., tuple[Any, float]]] = {
     "mark": g.mark,
     "normal_direction": g.normal_direction,
     "join": g.join,
+    "transfer": g.transfer,
 }
 """The drafting verbs a step may name, by name."""
 

@@ -177,6 +177,15 @@ class _Method:
             return self.rotate_radius(j, j1, t, v_t, point, target, label)
         return self.draw_parallels(j, j1, t, v_t, point, target, label)
 
+    def name_of(self, ref: Ref) -> str:
+        """How the text names a drawn point: its label ("I23"), or a point name ("A")."""
+        step = self.c[ref]
+        at = step.inputs[0] if step.verb == "mark" else ref   # a pin named as a centre
+        names = [n for n, r in self.asm.points.items() if r == at]
+        label = self.c[ref].label
+        return f"{label} ({names[0]})" if names and label and label != names[0] else (
+            label or (names[0] if names else ref))
+
     def tip_of(self, v: Ref) -> Ref:
         """The ref of a vector's tip point (the input of its ``join``)."""
         return self.c[v].inputs[1]
@@ -191,8 +200,8 @@ class _Method:
                                                                self.c.output(target)):
             return v_t
         loc = self.draw("loc:j", "line_through", j1, t,
-                        sentence=f"The line of centres of link {j} runs through {lab} and the "
-                                 "transfer point.")
+                        sentence=f"Draw the line of centres of link {j} through {lab} and "
+                                 f"{self.name_of(t)}.")
         gauge = self.draw("gauge:j", "line_through", j1, self.tip_of(v_t),
                           label=f"gauge line of link {j}",
                           sentence=f"Draw the gauge line of link {j} from {lab} through the tip "
@@ -223,7 +232,7 @@ class _Method:
                            sentence=f"Turn the known velocity through 90° so that it lies along "
                                     f"its radius towards {lab}.")
         side = self.draw("td", "line_through", t, target,
-                         sentence=f"Join the transfer point to {point}.")
+                         sentence=f"Join {self.name_of(t)} to {point}.")
         par = self.draw("par", "parallel_through", turned, side,
                         sentence=f"Through the tip of the turned velocity draw the parallel to "
                                  f"that line.")

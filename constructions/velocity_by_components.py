@@ -300,12 +300,9 @@ class _Components:
                                  f"of V_{K} along {kx}.")
         self.act(f"cm:{k.tag}:arrow@{on}", "join", self.at(k), foot, label=f"V_{K}′",
                  sentence=f"Draw V_{K}′ at {K} along {kx}.")
-        mid = self.act(f"{t}mid@{k.tag}", "midpoint", foot, self.at(x),
-                       sentence=f"To take V_{K}′ to {X} with dividers, bisect the segment from "
-                                f"its tip to {X}.")
-        along = self.act(f"{t}along@{k.tag}", "rotate_about", self.at(k), mid, angle=math.pi,
-                         sentence=f"Lay off V_{X}{mark} = V_{K}′ at {X} along {kx} (the "
-                                  f"half-turn of {K} about that midpoint).")
+        along = self.act(f"{t}along@{k.tag}", "transfer", self.at(x), self.at(k), foot,
+                         sentence=f"With dividers lay off V_{X}{mark} = V_{K}′ at {X} along "
+                                  f"{kx}.")
         self.act(f"{t}along-arrow@{k.tag}", "join", self.at(x), along, label=f"V_{X}{mark}",
                  sentence=f"V_{X}{mark} = V_{K}′: points of a rigid link have equal components "
                           "along the line joining them.")
@@ -403,10 +400,6 @@ class _Components:
     def draw_translate(self, x: _Node, c: int, k: _Node) -> Ref:
         """Hinkle Fig. 5.9: a block on a frame guide translates, so V_x = V_k."""
         K, X = k.name, x.name
-        mid = self.act(f"cm:{x.tag}:mid@{k.tag}", "midpoint", self.tip(k), self.at(x),
-                       sentence=f"Link {c} slides on a frame guide without turning, so all its "
-                                f"points have V_{K}: bisect the segment from the tip of V_{K} "
-                                f"to {X}.")
-        return self.act(f"cm:{x.tag}:tip", "rotate_about", self.at(k), mid, angle=math.pi,
-                        sentence=f"Lay off V_{X} = V_{K} at {X} (the half-turn of {K} about "
-                                 "that midpoint).")
+        return self.act(f"cm:{x.tag}:tip", "transfer", self.at(x), self.at(k), self.tip(k),
+                        sentence=f"Link {c} slides on a frame guide without turning, so all its "
+                                 f"points have V_{K}: with dividers lay it off at {X}.")

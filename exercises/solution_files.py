@@ -99,7 +99,9 @@ def _figures(sol: Solution, position_steps: set[Ref]) -> list[SolutionFigure]:
             out.append(SolutionFigure("circle-diagram", "Circle diagram",
                                       draw_circle_diagram(sol.centres), []))
     for r in sol.velocities:
-        refs = _drawn(c, [r.vector], position_steps)
+        # The method's own vectors (V_A, V_I23) feed no later act, so no slice reaches
+        # them: they are added from the method's list of what it drew.
+        refs = _drawn(c, [r.vector, *r.steps], position_steps)
         fig = draw_scene(asm, refs, title=f"{name}: V_{r.point} by {r.method}",
                          velocity_scale=r.scale)
         out.append(SolutionFigure(f"V_{r.point}-{r.method}", f"V_{r.point} by {r.method}",

@@ -86,6 +86,7 @@ SIGNATURES = {
     "mark": (("point",), {}),
     "normal_direction": (("line",), {}),
     "join": (("point", "point"), {}),
+    "transfer": (("point", "point", "point"), {}),
 }
 KINDS = {Point: "point", Line: "line", Circle: "circle", Segment: "segment"}
 # Small integers make coincidences, parallels and tangencies likely; floats make the rest.

@@ -141,7 +141,7 @@ def test_four_bar_rocker_pin_by_case_1(deg):
     # the notes' case 1: V_A′ along AB, laid off at B, ⟂ AB at its tip, meets ⟂ O4B
     assert c["cm:A:foot@A-B"].sentence == ("Project the tip of V_A onto AB: V_A′ is the "
                                            "component of V_A along AB.")
-    assert c["cm:B:along@A"].sentence.startswith("Lay off V_B′ = V_A′ at B along AB")
+    assert c["cm:B:along@A"].sentence == "With dividers lay off V_B′ = V_A′ at B along AB."
     assert c["cm:B:tip"].sentence == ("The perpendicular to AB from the tip of V_B′ meets the "
                                       "path of B (⟂ O4B) at the tip of V_B.")
     assert {"cm:line:A-B", "cm:line:O4-B", "cm:B:path@O4", "cm:B:perp@A"} <= set(r.steps)
@@ -289,14 +289,14 @@ def test_scotch_yoke_translates(deg):
     r = check(asm, "Y")
     c = asm.construction
     assert c["cm:A@4:tip"].inputs == ("cm:A@4:slide@0", "cm:A@4:glide@1")
-    assert c["cm:Y:tip"].verb == "rotate_about" and "without turning" in c["cm:Y:mid@A@4"].sentence
+    assert c["cm:Y:tip"].verb == "transfer" and "without turning" in c["cm:Y:tip"].sentence
     assert r.value(c)[1] == pytest.approx(0.0, abs=1e-15)
 
 
 def test_block_point_taken_on_the_slider_translates():
     asm = assemble(offset_slider_crank(0.7, omega2=2.0))
     r = check(asm, "A", link=4)
-    assert asm.construction["cm:A@4:tip"].verb == "rotate_about"
+    assert asm.construction["cm:A@4:tip"].verb == "transfer"
     assert r.value(asm.construction) == pytest.approx(
         velocity_by_components(asm, "C", scale=2.0).value(asm.construction), abs=1e-15)
 
