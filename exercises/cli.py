@@ -167,8 +167,9 @@ def solve(source, out_dir, angle, pdf):
     out = Path(out_dir or f"{ex.id}-solution")
     written = write_solution(files, out, pdf=pdf and reason is None)
     for name, q in sol.quantities.items():
-        click.echo(f"{name:<8} rel. error {q.rel_error:.1e}  {'ok' if q.passed else 'FAILED'}"
-                   f"  ({q.method})")
+        for qq in (q, *q.alternatives.values()):
+            click.echo(f"{name:<8} rel. error {qq.rel_error:.1e}  "
+                       f"{'ok' if qq.rel_error <= qq.tolerance else 'FAILED'}  ({qq.method})")
     for note in sol.notes:
         click.echo(f"note: {note}")
     click.echo(f"wrote {len(written)} files to {out}/")
