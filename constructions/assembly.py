@@ -50,6 +50,15 @@ class Assembly:
         """Cartesian coordinates (metres) of point ``name``."""
         return self.point(name).xy
 
+    @property
+    def size(self) -> float:
+        """The mechanism's size at this position: its largest distance between two points (m).
+
+        Tolerances for "the same point" or "on this line" are taken relative to it.
+        """
+        xy = [self.xy(n) for n in self.mechanism.point_names]
+        return max([1e-300] + [math.dist(p, q) for p in xy for q in xy])
+
     def guide(self, index: int) -> g.Line:
         """The global line of slide ``index`` (``mechanism.slides[index]``)."""
         return self.construction.output(self.guides[index])

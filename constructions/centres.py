@@ -156,8 +156,7 @@ class _Kennedy:
         self.c = asm.construction
         self.m = asm.mechanism
         self.out = Centres(asm)
-        xy = [asm.xy(n) for n in self.m.point_names]
-        self.size = max([1e-300] + [math.dist(p, q) for p in xy for q in xy])
+        self.size = asm.size
 
     # ----- 1. by inspection ------------------------------------------------------
     def inspect(self) -> None:

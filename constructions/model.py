@@ -296,6 +296,12 @@ class Mechanism:
         f1 = pins + blocks
         return 3 * (n - 1) - 2 * f1 - f2, n, f1, f2
 
+    @property
+    def input_speed(self) -> float:
+        """|ω|·r of the input link's second point: the known velocity every method starts from."""
+        k = self.link(self.drive.link)
+        return abs(self.drive.omega) * k.span(k.names[0], k.names[1])
+
     def with_drive(self, drive: Drive) -> Mechanism:
         """Return the same mechanism at another input position."""
         return Mechanism(self.links, drive, self.slides, dict(self.branches), self.units,

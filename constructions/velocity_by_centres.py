@@ -66,8 +66,10 @@ class _Method:
     def is_infinite(self, ref: Ref) -> bool:
         return self.c.output(ref).is_at_infinity
 
-    def speed(self, ref: Ref) -> str:
-        return speed_text(self.c.output(ref).length / self.scale, self.m.units)
+    def speed(self, start: Ref, tip: Ref) -> str:
+        """The speed a vector from ``start`` to ``tip`` stands for, read at the scale."""
+        length = g.distance(self.c.output(start), self.c.output(tip))
+        return speed_text(length / self.scale, self.m.units)
 
     # ----- the run --------------------------------------------------------------
     def run(self, point: str, link: int | None) -> VelocityResult:
@@ -127,9 +129,8 @@ class _Method:
                           sentence=f"It meets the gauge line of link {i} at the tip of "
                                    f"V_{lab_ij}.")
         v_t = self.draw("V:t", "join", ij, t_tip, label=vector_label(lab_ij),
-                        sentence="")
-        self.c.steps[v_t] = _with_sentence(self.c[v_t], f"V_{lab_ij} = {self.speed(v_t)}: "
-                                           f"{lab_ij} is a point of both link {i} and link {j}.")
+                        sentence=f"V_{lab_ij} = {self.speed(ij, t_tip)}: {lab_ij} is a point "
+                                 f"of both link {i} and link {j}.")
         return ij, v_t
 
     def gauge_tip(self, centre: Ref, loc: Ref, known: str, v_known: Ref, lab_c: str,
@@ -144,7 +145,8 @@ class _Method:
         sense = self.sense_of(centre, p, v_known)
         tip = self.draw("tip:k", "lay_off", at, perp,
                         length=sense * self.c.output(v_known).length,
-                        sentence=f"At {known}′ lay off V_{known} = {self.speed(v_known)} "
+                        sentence=f"At {known}′ lay off V_{known} = "
+                                 f"{self.speed(*self.c[v_known].inputs)} "
                                  "perpendicular to the line of centres, in the same sense.")
         return self.draw("gauge:i", "line_through", centre, tip, label=f"gauge line of {what}",
                          sentence=f"Draw the gauge line of {what} from {lab_c} through the tip.")
@@ -168,7 +170,7 @@ class _Method:
                                      f"so every point of it has V_{transfer_label}: lay it off "
                                      f"at {point}.")
             return self.result(point, tip, label)
-        if g.distance(self.c.output(target), self.c.output(j1)) <= 1e-12 * self.size():
+        if g.distance(self.c.output(target), self.c.output(j1)) <= 1e-12 * self.asm.size:
             at_rest = self.draw("rest", "mark", target,
                                 sentence=f"{point} is at {pair_label(1, j)}, the centre link {j} "
                                          f"turns about at this instant, so V_{point} = 0.")
@@ -189,10 +191,6 @@ class _Method:
     def tip_of(self, v: Ref) -> Ref:
         """The ref of a vector's tip point (the input of its ``join``)."""
         return self.c[v].inputs[1]
-
-    def size(self) -> float:
-        xy = [self.asm.xy(n) for n in self.m.point_names]
-        return max([1e-300] + [math.dist(p, q) for p in xy for q in xy])
 
     def rotate_radius(self, j, j1, t, v_t, point, target, label) -> Ref:
         lab = pair_label(1, j)
@@ -234,8 +232,8 @@ class _Method:
         side = self.draw("td", "line_through", t, target,
                          sentence=f"Join {self.name_of(t)} to {point}.")
         par = self.draw("par", "parallel_through", turned, side,
-                        sentence=f"Through the tip of the turned velocity draw the parallel to "
-                                 f"that line.")
+                        sentence="Through the tip of the turned velocity draw the parallel to "
+                                 "that line.")
         radius = self.draw("rad", "line_through", target, j1,
                            sentence=f"Draw the radius {point}–{lab}.")
         cut = self.draw("cut", "intersect_lines", par, radius,
@@ -251,20 +249,15 @@ class _Method:
         return self.result(point, tip, label)
 
     def result(self, point: str, tip: Ref, label: str) -> Ref:
-        ref = self.draw("V", "join", self.asm.points[point], tip, label=label, role=Role.RESULT)
-        self.c.steps[ref] = _with_sentence(self.c[ref], f"V_{point} = {self.speed(ref)}.")
-        return ref
+        at = self.asm.points[point]
+        return self.draw("V", "join", at, tip, label=label, role=Role.RESULT,
+                         sentence=f"V_{point} = {self.speed(at, tip)}.")
 
 
 def _same(p: g.Point, q: g.Point) -> bool:
     if p.is_at_infinity or q.is_at_infinity:
         return False
     return math.dist(p.xy, q.xy) <= 1e-12 * max(1.0, p.size(), q.size())
-
-
-def _with_sentence(step, sentence: str):
-    from dataclasses import replace
-    return replace(step, sentence=sentence)
 
 
 METHODS = {

@@ -135,8 +135,7 @@ class _Components:
         self.asm, self.c, self.m, self.scale, self.target = (
             asm, asm.construction, asm.mechanism, scale, target)
         start, vec = draw_input_velocity(asm, scale)
-        k = self.m.link(self.m.drive.link)
-        drawn, want = self.c.output(vec).length, abs(self.m.drive.omega) * k.span(*k.names[:2])
+        drawn, want = self.c.output(vec).length, self.m.input_speed
         if abs(drawn - want * scale) > 1e-9 * drawn:
             raise TarsimError(f"this construction's velocities are drawn at {drawn / want:.6g} "
                               f"m per m/s, not {scale:.6g}; use that scale")

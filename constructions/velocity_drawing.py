@@ -63,7 +63,7 @@ def draw_input_velocity(asm: Assembly, scale: float) -> tuple[str, Ref]:
     if ref in c:
         return point, ref
     r = k.span(pivot, point)
-    speed = abs(d.omega) * r
+    speed = m.input_speed
     units = m.units
     sense = "ccw" if d.omega > 0 else "cw"
     perp = c.draw(f"v:perp:{point}", "perpendicular_through", asm.points[point],

@@ -50,7 +50,7 @@ def check_positions(mech: Mechanism) -> PositionCheck:
     reference = analytic.solve_positions(mech)
     names = mech.point_names
     xy = {n: asm.xy(n) for n in names}
-    size = max([math.dist(xy[a], xy[b]) for a in names for b in names] + [1e-300])
+    size = asm.size
     rows = []
     for n in names:
         c, a = xy[n], reference[n]

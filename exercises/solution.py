@@ -2,8 +2,9 @@
 
 Each asked quantity is found graphically (its construction is recorded), read
 off the drawing, and put beside the independent analytic value with the relative
-error and the tolerance its conditioning allows. Nothing here draws: the figures
-and files are made from a :class:`Solution` by :mod:`exercises.solution_files`.
+error and the tolerance its conditioning allows. Nothing here draws (only the
+velocity scale is the scene's choice): the figures and files are made from a
+:class:`Solution` by :mod:`exercises.solution_files`.
 """
 
 from __future__ import annotations
@@ -18,7 +19,9 @@ from constructions.assembly import Assembly, assemble
 from constructions.centres import Centres, locate_centres, omega_ratio, pair_label
 from constructions.errors import DegenerateInput, TarsimError
 from constructions.velocity_by_centres import METHODS as CENTRE_METHODS
+from constructions.record import Ref
 from constructions.velocity_drawing import VelocityResult
+from graphics.scene import choose_velocity_scale
 
 from .exercise_file import Exercise
 
@@ -60,6 +63,8 @@ class Solution:
     quantities: dict[str, Quantity]
     velocity_scale: float | None
     notes: list[str]
+    position_steps: frozenset[Ref]
+    """The steps that located the mechanism; a figure's own steps are the others."""
 
     @property
     def failures(self) -> list[Quantity]:
@@ -71,7 +76,7 @@ def solve_exercise(ex: Exercise, velocity_scale: float | None = None) -> Solutio
     """Solve ``ex`` at its stated position.
 
     ``velocity_scale`` (drawing metres per m/s) fixes how long velocity vectors
-    are drawn; by default the input velocity is drawn a fifth of the mechanism's size.
+    are drawn; by default it is the scene's nice scale for the input velocity.
 
     Raises
     ------
@@ -84,6 +89,7 @@ def solve_exercise(ex: Exercise, velocity_scale: float | None = None) -> Solutio
         raise TarsimError("the exercise asks for velocities but [input] gives no omega; "
                           "state the input's angular velocity")
     asm = assemble(mech)
+    position_steps = frozenset(asm.construction.steps)
     kin = analytic.solve(mech)
     size = mechanism_size(kin)
     quantities: dict[str, Quantity] = {}
@@ -96,7 +102,9 @@ def solve_exercise(ex: Exercise, velocity_scale: float | None = None) -> Solutio
         quantities[pair_label(*pair)] = _centre(cs, kin, pair, size)
     for n in ex.omegas:
         quantities[f"omega{n}"] = _omega(cs, kin, n)
-    scale = velocity_scale or _default_scale(asm)
+    scale = velocity_scale
+    if scale is None and ex.velocities:
+        scale = choose_velocity_scale(asm, mech.input_speed)
     results: list[VelocityResult] = []
     for p in ex.velocities:
         found = []
@@ -106,16 +114,8 @@ def solve_exercise(ex: Exercise, velocity_scale: float | None = None) -> Solutio
             found.append(_velocity_quantity(asm, kin, r))
         first, rest = found[0], found[1:]
         quantities[f"V_{p}"] = _with_alternatives(first, {q.method: q for q in rest})
-    return Solution(ex, asm, kin, cs, results, quantities, scale if results else None, notes)
-
-
-def _default_scale(asm: Assembly) -> float:
-    m = asm.mechanism
-    k = m.link(m.drive.link)
-    speed = abs(m.drive.omega) * k.span(k.names[0], k.names[1])
-    xy = [asm.xy(n) for n in m.point_names]
-    size = max(math.dist(p, q) for p in xy for q in xy)
-    return 0.2 * size / speed if speed else 1.0
+    return Solution(ex, asm, kin, cs, results, quantities, scale if results else None, notes,
+                    position_steps)
 
 
 def _velocity(asm, cs, point, method, scale) -> VelocityResult:
@@ -176,10 +176,8 @@ def _velocity_quantity(asm, kin, r: VelocityResult) -> Quantity:
     m = asm.mechanism
     vx, vy = r.value(asm.construction)
     rx, ry = analytic.point_velocity(kin, m, r.link, r.point)
-    k = m.link(m.drive.link)
-    v_in = abs(m.drive.omega) * k.span(k.names[0], k.names[1])
     # Relative to the input speed too, so a point at rest (dead centre) has a scale.
-    err = math.hypot(vx - rx, vy - ry) / max(math.hypot(rx, ry), v_in)
+    err = math.hypot(vx - rx, vy - ry) / max(math.hypot(rx, ry), m.input_speed)
     cond = asm.construction[r.vector].conditioning
     return Quantity(f"V_{r.point}", _vector(vx, vy), _vector(rx, ry), err, tolerance(cond),
                     cond, r.method)

@@ -14,14 +14,13 @@ import math
 from dataclasses import dataclass
 from pathlib import Path
 
-from constructions.assembly import assemble
 from constructions.centres import centre_ref
 from constructions.errors import RenderError
 from constructions.record import Ref, slice as backward_slice, toposort
 from graphics.circle_diagram import draw_circle_diagram
 from graphics.export import svg_to, write_text
 from graphics.figure import Figure
-from graphics.scene import choose_velocity_scale, draw_scene, numbered_steps
+from graphics.scene import draw_scene, numbered_steps
 from graphics.svg import to_svg
 
 from .exercise_file import Exercise
@@ -43,13 +42,8 @@ class SolutionFigure:
 
 def solve_to_files(ex: Exercise) -> tuple[Solution, dict[str, str]]:
     """Solve ``ex`` and render every file, in memory: ``{file name: text}``."""
-    mech = ex.mechanism
-    k = mech.link(mech.drive.link)
-    speed = abs(mech.drive.omega) * k.span(k.names[0], k.names[1])
-    scale = choose_velocity_scale(assemble(mech), speed) if ex.velocities and speed else None
-    position_steps = set(assemble(mech).construction.steps)
-    sol = solve_exercise(ex, velocity_scale=scale)
-    figures = _figures(sol, position_steps)
+    sol = solve_exercise(ex)
+    figures = _figures(sol)
     files = {f"{f.stem}.svg": to_svg(f.figure) for f in figures}
     files["steps.md"] = _steps_markdown(sol, figures)
     files["results.json"] = results_json([sol], ex.id)
@@ -80,7 +74,7 @@ def write_solution(files: dict[str, str], out_dir: str | Path, *, pdf: bool = Tr
 
 
 # ----- figures ---------------------------------------------------------------------------
-def _figures(sol: Solution, position_steps: set[Ref]) -> list[SolutionFigure]:
+def _figures(sol: Solution) -> list[SolutionFigure]:
     ex, asm = sol.exercise, sol.assembly
     c = asm.construction
     name = ex.mechanism.name
@@ -91,7 +85,7 @@ def _figures(sol: Solution, position_steps: set[Ref]) -> list[SolutionFigure]:
         pairs += [(1, d), (1, n), tuple(sorted((d, n)))]
     if pairs:
         targets = [centre_ref(*p) for p in dict.fromkeys(pairs)]
-        refs = _drawn(c, targets, position_steps)
+        refs = _drawn(c, targets, sol.position_steps)
         heading = ("Instant centres" if ex.centres else "Centres for the angular velocities")
         fig = draw_scene(asm, refs, title=f"{name}: {heading.lower()}", notes=sol.notes)
         out.append(SolutionFigure("centres", heading, fig, refs))
@@ -101,7 +95,7 @@ def _figures(sol: Solution, position_steps: set[Ref]) -> list[SolutionFigure]:
     for r in sol.velocities:
         # The method's own vectors (V_A, V_I23) feed no later act, so no slice reaches
         # them: they are added from the method's list of what it drew.
-        refs = _drawn(c, [r.vector, *r.steps], position_steps)
+        refs = _drawn(c, [r.vector, *r.steps], sol.position_steps)
         fig = draw_scene(asm, refs, title=f"{name}: V_{r.point} by {r.method}",
                          velocity_scale=r.scale)
         out.append(SolutionFigure(f"V_{r.point}-{r.method}", f"V_{r.point} by {r.method}",
@@ -109,7 +103,7 @@ def _figures(sol: Solution, position_steps: set[Ref]) -> list[SolutionFigure]:
     return out
 
 
-def _drawn(c, targets: list[Ref], position_steps: set[Ref]) -> list[Ref]:
+def _drawn(c, targets: list[Ref], position_steps: frozenset[Ref]) -> list[Ref]:
     """The slice of ``targets`` in record order, less the position construction."""
     wanted = backward_slice(c, targets)
     return [s.id for s in toposort(c, wanted) if s.id not in position_steps]

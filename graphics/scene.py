@@ -266,7 +266,7 @@ class _Scene(_Diagram):
     def layout(self) -> None:
         super().layout()
         xy = list(self.world.values())
-        self.size = max([1e-300] + [math.dist(p, q) for p in xy for q in xy])
+        self.size = self.asm.size
         self.centre = _mid(list(self.paper.values()))
         self.points = [(-1, p) for p in xy] + [(i, p) for i, s in enumerate(self.steps)
                                                for p in _finite_points(s)]

@@ -142,12 +142,18 @@ def test_solve_writes_figures_steps_and_results(tmp_path):
     assert q["I13"]["point"] == pytest.approx(q["I13"]["reference"]["point"], abs=1e-12)
 
 
-def test_steps_md_numbers_match_the_figure(tmp_path):
+def solve_v_b_by_radius_rotation(tmp_path):
+    """Run `tarsim solve` on a four-bar asking V_B by radius rotation; return the folder."""
     path = tmp_path / "ex.toml"
     path.write_text(exercise_text(find='["V_B"]', methods='["radius-rotation"]'),
                     encoding="utf-8")
     out = tmp_path / "out"
     assert run("solve", path, "-o", out, "--no-pdf").exit_code == 0
+    return out
+
+
+def test_steps_md_numbers_match_the_figure(tmp_path):
+    out = solve_v_b_by_radius_rotation(tmp_path)
     steps = (out / "steps.md").read_text(encoding="utf-8")
     section = steps.split("## V_B by radius-rotation", 1)[1].split("## ", 1)[0]
     numbers = [int(n) for n in re.findall(r"^(\d+)\. ", section, re.M)]
@@ -158,11 +164,7 @@ def test_steps_md_numbers_match_the_figure(tmp_path):
 
 
 def test_asking_for_one_velocity_draws_no_unused_centres(tmp_path):
-    path = tmp_path / "ex.toml"
-    path.write_text(exercise_text(find='["V_B"]', methods='["radius-rotation"]'),
-                    encoding="utf-8")
-    out = tmp_path / "out"
-    assert run("solve", path, "-o", out, "--no-pdf").exit_code == 0
+    out = solve_v_b_by_radius_rotation(tmp_path)
     assert sorted(p.name for p in out.iterdir()) == ["V_B-radius-rotation.svg", "results.json",
                                                      "steps.md"]
     svg = (out / "V_B-radius-rotation.svg").read_text(encoding="utf-8")
