@@ -2,7 +2,8 @@
 
 Run:  python benchmarks/centres_accuracy.py
 
-Part 1 times, for each bundled example, the whole solve an exercise asks for
+Part 1 times, for each bundled example and the test files for curved and rolling
+joints, the whole solve an exercise asks for
 (assembly, every centre by Kennedy, the ω ratios, each velocity method) against
 the analytic solution (positions, velocities and every centre from the velocity
 fields), as medians in one process, with the worst relative error.
@@ -48,13 +49,16 @@ def reference(mech) -> None:
 
 def part1() -> None:
     print("Part 1: one position of each bundled exercise (medians of 30 runs, µs)")
-    print(f"{'exercise':<22}{'construction':>14}{'analytic':>12}{'ratio':>8}{'worst rel. error':>18}")
-    for name, path in bundled().items():
-        ex = load_exercise(path, name)
+    print(f"{'exercise':<34}{'construction':>14}{'analytic':>12}{'ratio':>8}{'worst rel. error':>18}")
+    data = Path(__file__).resolve().parents[1] / "tests" / "data"
+    joints = {f"{n} (tests)": data / f"{n}.toml" for n in
+              ("roller-cam", "curved-slot", "curved-guide-slider-crank", "rolling-wheel")}
+    for name, path in {**bundled(), **joints}.items():
+        ex = load_exercise(path, name.split()[0])
         t_c = median_time(lambda: solve_exercise(ex), 30)
         t_a = median_time(lambda: reference(ex.mechanism), 30)
         worst = max(q.rel_error for q in solve_exercise(ex).quantities.values())
-        print(f"{name:<22}{t_c:>14.0f}{t_a:>12.0f}{t_c / t_a:>8.2f}{worst:>18.1e}")
+        print(f"{name:<34}{t_c:>14.0f}{t_a:>12.0f}{t_c / t_a:>8.2f}{worst:>18.1e}")
     print("(the construction side also checks every number against its own analytic solve)")
 
 

@@ -28,7 +28,6 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 from constructions import analytic  # noqa: E402
 from constructions.assembly import assemble  # noqa: E402
 from constructions.errors import TarsimError  # noqa: E402
-from constructions.model import Drive  # noqa: E402
 from exercises.catalog import bundled  # noqa: E402
 from exercises.mechanism_file import load_mechanism, parse_mechanism  # noqa: E402
 from tests.common import four_bar_toml  # noqa: E402

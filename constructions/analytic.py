@@ -7,7 +7,10 @@ position of its local origin and the angle of its local +x axis (CCW-positive fr
 - pin: ``R(φi) p_i + t_i − R(φj) p_j − t_j = 0`` (the frame is the identity);
 - slide: ``cross(D, P − G) = 0`` with the guide's global point ``G`` and unit
   direction ``D``; a ``BLOCK`` adds ``φ_link − φ_guide − atan2(direction) = 0``,
-  wrapped to ``[−π, π]``;
+  wrapped to ``[−π, π]``; a rolling contact adds the no-slip condition
+  ``D·(P − G) + σ r (φ_wheel − φ_face) = 0`` (see ``Contact.roll_sign``);
+- arc: ``(|P − C|² − ρ²) / 2ρ = 0`` for a point ``P`` kept ``ρ`` from a point
+  ``C`` of another link (a pin in a curved slot, two circles in contact);
 - drive: ``φ_input − angle = 0``, wrapped the same way.
 
 The position is first found in closed form, dyad by dyad, honouring the branches
@@ -28,7 +31,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .errors import AssemblyError, InputError
-from .model import Mechanism, Slide, SlideKind
+from .model import Arc, Mechanism, Slide, SlideKind
 
 __all__ = [
     "Kinematics",
@@ -173,6 +176,14 @@ def _check(mech: Mechanism) -> None:
                              f"link", file=mech.source or None)
         mech.link(s.guide_link)
         _unit(s.direction)
+    for a in mech.arcs:
+        for k, name in ((a.link, a.point), (a.guide_link, a.centre)):
+            if name not in mech.link(k).names:
+                raise InputError(f"{a.label}: link {k} has no point {name}",
+                                 file=mech.source or None)
+        if a.link == a.guide_link or not a.radius > 0.0:
+            raise InputError(f"{a.label}: an arc joins two links at a positive radius",
+                             file=mech.source or None)
     n = dof(mech)
     if n != 1:
         raise AssemblyError(f"the mechanism has {n} degrees of freedom by Grübler; the analytic "
@@ -198,9 +209,19 @@ def dof(mech: Mechanism) -> int:
     1
     """
     f1 = sum(max(0, len(mech.links_at(n)) - 1) for n in mech.point_names)
-    f1 += sum(1 for s in mech.slides if s.kind is SlideKind.BLOCK)
-    f2 = sum(1 for s in mech.slides if s.kind is SlideKind.PIN)
+    f1 += sum(1 for s in mech.slides if s.kind is SlideKind.BLOCK or _rolls(s))
+    f2 = sum(1 for s in mech.slides if s.kind is SlideKind.PIN and not _rolls(s))
+    f2 += sum(1 for a in _pin_arcs(mech))
     return 3 * (len(mech.links) - 1) - 2 * f1 - f2
+
+
+def _rolls(s: Slide) -> bool:
+    return s.contact is not None and s.contact.rolling
+
+
+def _pin_arcs(mech: Mechanism) -> list[Arc]:
+    """The arcs that constrain: a curved block is already its pin at the centre."""
+    return [a for a in mech.arcs if a.kind is SlideKind.PIN]
 
 
 # ----------------------------------------------------------------------------- closed form
@@ -251,6 +272,15 @@ class _Assembly:
                     changed = True
                 elif s.link in self.phi and s.guide_link not in self.phi:
                     self.phi[s.guide_link] = self.phi[s.link] - off
+                    changed = True
+            for s in self.m.slides:
+                if _rolls(s) and s.link not in self.phi and s.guide_link in self.pose \
+                        and s.point in self.at:
+                    origin, phi = self.pose[s.guide_link]
+                    d = _rot(phi) @ _unit(s.direction)
+                    along = float(d @ (self.at[s.point] - origin - _rot(phi) @ np.asarray(
+                        s.through, dtype=float)))
+                    self.phi[s.link] = phi - along / (s.contact.roll_sign * s.contact.circle.radius)
                     changed = True
             for k, names in self.names.items():
                 if k in self.pose:
@@ -309,6 +339,11 @@ class _Assembly:
                 r = float(np.linalg.norm(self.loc[k, name] - self.loc[k, known[0]]))
                 if r > 0.0:
                     out.append((k, known[0], r))
+        for a in _pin_arcs(self.m):
+            for here, there, k in ((a.point, a.centre, a.guide_link),
+                                   (a.centre, a.point, a.link)):
+                if here == name and there in self.at:
+                    out.append((k, there, a.radius))
         return out
 
     def _lines(self, name: str) -> list[tuple[np.ndarray, np.ndarray, Slide]]:
@@ -447,12 +482,20 @@ class _System:
                      for at in [mech.links_at(n)] for j in at[1:]]
         self.slides = [(s, np.asarray(s.through, dtype=float), _unit(s.direction),
                         math.atan2(s.direction[1], s.direction[0])) for s in mech.slides]
+        # A rolling contact's no-slip row D·(P − G) is the slide's cross row taken with
+        # the direction turned −90° (cross(S⁻¹D, e) = D·e), plus σ r (φ_wheel − φ_face).
+        self.rolls = [(s, through, np.array([d[1], -d[0]]),
+                       s.contact.roll_sign * s.contact.circle.radius)
+                      for s, through, d, _ in self.slides if _rolls(s)]
+        self.arcs = _pin_arcs(mech)
         is_len = [True] * (2 * len(self.pins))
         for s, *_ in self.slides:
             is_len += [True, False] if s.kind is SlideKind.BLOCK else [True]
+        is_len += [True] * (len(self.rolls) + len(self.arcs))
         self.is_len = np.array(is_len + [False])
         sizes = [abs(c) for v in self.loc.values() for c in v]
         sizes += [abs(c) for s in mech.slides for c in s.through]
+        sizes += [a.radius for a in self.arcs]
         self.lc = max(sizes, default=0.0) or 1.0
 
     def state(self, q, k: int) -> tuple[np.ndarray, float]:
@@ -476,8 +519,22 @@ class _System:
             out.append(_cross(dg, p - g))
             if s.kind is SlideKind.BLOCK:
                 out.append(_wrap(self.state(q, s.link)[1] - self.state(q, s.guide_link)[1] - off))
+        for s, through, u, k in self.rolls:
+            p, g, ug, _, _ = self._slide_terms(q, s, through, u)
+            turned = self.state(q, s.link)[1] - self.state(q, s.guide_link)[1]
+            out.append(_cross(ug, p - g) + k * turned)
+        for a in self.arcs:
+            e = self._arc_terms(q, a)[0]
+            out.append((float(e @ e) - a.radius ** 2) / (2.0 * a.radius))
         out.append(_wrap(self.state(q, self.m.drive.link)[1] - self.m.drive.angle))
         return np.array(out)
+
+    def _arc_terms(self, q, a: Arc):
+        """``e = P − C`` and the arms of P and C from their links' origins."""
+        (tl, fl), (tg, fg) = self.state(q, a.link), self.state(q, a.guide_link)
+        arm_l, arm_g = _rot(fl) @ self.loc[a.link, a.point], _rot(fg) @ self.loc[a.guide_link,
+                                                                                a.centre]
+        return tl + arm_l - tg - arm_g, arm_l, arm_g
 
     def jacobian(self, q) -> np.ndarray:
         jac = np.zeros((len(self.is_len), 3 * len(self.moving)))
@@ -488,6 +545,12 @@ class _System:
                 jac[row, c:c + 2] += sign * np.asarray(dt)
                 jac[row, c + 2] += sign * dphi
 
+        def line_row(row: int, s: Slide, through, d) -> None:
+            p, g, dg, arm_l, arm_g = self._slide_terms(q, s, through, d)
+            put(row, s.link, (-dg[1], dg[0]), _cross(dg, _S @ arm_l))
+            put(row, s.guide_link, (dg[1], -dg[0]),
+                _cross(_S @ dg, p - g) - _cross(dg, _S @ arm_g))
+
         row = 0
         for n, i, j in self.pins:
             for k, sign in ((i, 1.0), (j, -1.0)):
@@ -496,15 +559,22 @@ class _System:
                 put(row + 1, k, (0.0, 1.0), arm[1], sign)
             row += 2
         for s, through, d, _ in self.slides:
-            p, g, dg, arm_l, arm_g = self._slide_terms(q, s, through, d)
-            put(row, s.link, (-dg[1], dg[0]), _cross(dg, _S @ arm_l))
-            put(row, s.guide_link, (dg[1], -dg[0]),
-                _cross(_S @ dg, p - g) - _cross(dg, _S @ arm_g))
+            line_row(row, s, through, d)
             row += 1
             if s.kind is SlideKind.BLOCK:
                 put(row, s.link, (0.0, 0.0), 1.0)
                 put(row, s.guide_link, (0.0, 0.0), -1.0)
                 row += 1
+        for s, through, u, k in self.rolls:
+            line_row(row, s, through, u)
+            put(row, s.link, (0.0, 0.0), k)
+            put(row, s.guide_link, (0.0, 0.0), -k)
+            row += 1
+        for a in self.arcs:
+            e, arm_l, arm_g = self._arc_terms(q, a)
+            put(row, a.link, e / a.radius, float(e @ (_S @ arm_l)) / a.radius)
+            put(row, a.guide_link, -e / a.radius, -float(e @ (_S @ arm_g)) / a.radius)
+            row += 1
         put(row, self.m.drive.link, (0.0, 0.0), 1.0)
         return jac
 
@@ -515,14 +585,24 @@ class _System:
             (_, fi), (_, fj) = self.state(q, i), self.state(q, j)
             wi, wj = self.state(qd, i)[1], self.state(qd, j)[1]
             out += list(_rot(fi) @ self.loc[i, n] * wi ** 2 - _rot(fj) @ self.loc[j, n] * wj ** 2)
-        for s, through, d, _ in self.slides:
+        def line_gamma(s: Slide, through, d) -> float:
             p, g, dg, arm_l, arm_g = self._slide_terms(q, s, through, d)
             (vl, wl), (vg, wg) = self.state(qd, s.link), self.state(qd, s.guide_link)
             e_dot = vl + wl * (_S @ arm_l) - vg - wg * (_S @ arm_g)
-            out.append(wg ** 2 * _cross(dg, p - g) - 2.0 * wg * _cross(_S @ dg, e_dot)
-                       - _cross(dg, wg ** 2 * arm_g - wl ** 2 * arm_l))
+            return (wg ** 2 * _cross(dg, p - g) - 2.0 * wg * _cross(_S @ dg, e_dot)
+                    - _cross(dg, wg ** 2 * arm_g - wl ** 2 * arm_l))
+
+        for s, through, d, _ in self.slides:
+            out.append(line_gamma(s, through, d))
             if s.kind is SlideKind.BLOCK:
                 out.append(0.0)
+        out += [line_gamma(s, through, u) for s, through, u, _ in self.rolls]
+        for a in self.arcs:
+            e, arm_l, arm_g = self._arc_terms(q, a)
+            (vl, wl), (vg, wg) = self.state(qd, a.link), self.state(qd, a.guide_link)
+            e_dot = vl + wl * (_S @ arm_l) - vg - wg * (_S @ arm_g)
+            out.append((float(e @ (wl ** 2 * arm_l - wg ** 2 * arm_g)) - float(e_dot @ e_dot))
+                       / a.radius)
         out.append(self.m.drive.alpha)
         return np.array(out)
 

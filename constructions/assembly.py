@@ -21,10 +21,20 @@ from dataclasses import dataclass
 
 from . import geometry as g
 from .errors import AssemblyError, DegenerateInput, NoIntersection, TarsimError
-from .model import Mechanism, Slide, SlideKind
+from .model import Arc, Mechanism, Slide, SlideKind
 from .record import VERBS, Construction, Ref, Role
 
-__all__ = ["Assembly", "assemble", "point_ref"]
+__all__ = ["Assembly", "assemble", "point_ref", "arc_why"]
+
+
+def arc_why(a: Arc) -> str:
+    """Why a point keeps its distance: "the roller's centre stays r1 + r2 from the cam's"."""
+    c = a.contact
+    if c is None:
+        return f"{a.point} runs in the curved slot of link {a.guide_link} about {a.centre}"
+    op = "+" if c.side == "outside" else "−"
+    return (f"the circles of links {c.circle.link} and {c.face.link} touch: their centres "
+            f"{a.point} and {a.centre} stay r{c.circle.link} {op} r{c.face.link} apart")
 
 
 def point_ref(name: str) -> Ref:
@@ -144,8 +154,8 @@ class _Assembler:
     def run(self) -> Assembly:
         self.mark_frame()
         self.lay_off_input()
-        rules = (self.rigid_point, self.slot_through_block, self.slot_of_a_block, self.two_guides,
-                 self.arc_and_guide, self.two_arcs)
+        rules = (self.rigid_point, self.roll_wheel, self.slot_through_block, self.slot_of_a_block,
+                 self.two_guides, self.arc_and_guide, self.two_arcs)
         wanted = [n for n in self.m.point_names]
         while any(n not in self.known for n in wanted):
             if not any(rule() for rule in rules):
@@ -241,26 +251,41 @@ class _Assembler:
         self.found(name, "lay_off", foot, perp, length=dv,
                    sentence=f"Square off {self.L(abs(dv))} from the axis to mark {name}.")
 
+    def circles_of(self, name: str) -> list[tuple[int, str, float, str]]:
+        """The arcs ``name`` must lie on, as ``(link, centre, radius, why)``, lowest link first.
+
+        An arc comes from a link not yet drawn with one point located (its span to
+        ``name``), or from a curved slot or circle contact whose other end is located.
+        """
+        out = []
+        for n in self.m.links_at(name):
+            if not self.posed(n) and any(p in self.known for p in self.m.link(n).names):
+                x = self.one_known(n)
+                r = self.m.link(n).span(x, name)
+                out.append((n, x, r, f"{x}{name} = {self.L(r)}"))
+        for a in self.m.arcs:
+            if a.kind is not SlideKind.PIN:
+                continue
+            for here, there, k in ((a.point, a.centre, a.guide_link), (a.centre, a.point, a.link)):
+                if here == name and there in self.known:
+                    out.append((k, there, a.radius, f"{self.L(a.radius)}, as {arc_why(a)}"))
+        return sorted(out)
+
     def two_arcs(self) -> bool:
         for name in self.m.point_names:
             if name in self.known or self.slides_at(name):
                 continue
-            carriers = [n for n in self.m.links_at(name)
-                        if not self.posed(n) and any(p in self.known for p in self.m.link(n).names)]
-            if len(carriers) < 2:
+            circles = self.circles_of(name)
+            if len(circles) < 2:
                 continue
-            i, j = sorted(carriers)[:2]
-            x = self.one_known(i)
-            y = self.one_known(j)
-            ri, rj = self.m.link(i).span(x, name), self.m.link(j).span(y, name)
+            (i, x, ri, why_i), (j, y, rj, why_j) = circles[:2]
             arc_i = self.c.draw(f"arc:{name}@{x}", "swing_arc", self.known[x], radius=ri,
                                 label=f"arc {x}{name}",
-                                sentence=f"With centre {x} and radius {x}{name} = {self.L(ri)}, "
-                                         f"swing an arc.")
+                                sentence=f"With centre {x} and radius {why_i}, swing an arc.")
             arc_j = self.c.draw(f"arc:{name}@{y}", "swing_arc", self.known[y], radius=rj,
                                 label=f"locus of {name}",
-                                sentence=f"With centre {y} and radius {y}{name} = {self.L(rj)}, "
-                                         f"draw the locus of {name}.")
+                                sentence=f"With centre {y} and radius {why_j}, draw the locus "
+                                         f"of {name}.")
             pick = self.branch(name, None, ("left", "right"), f"left or right of {x} → {y}")
             if not isinstance(pick, str):
                 pick = self.pick_near("intersect_circles", (arc_i, arc_j), ("left", "right"), pick)
@@ -289,17 +314,13 @@ class _Assembler:
             if name in self.known:
                 continue
             lines = self.known_guides(name)
-            carriers = [n for n in self.m.links_at(name)
-                        if not self.posed(n) and any(p in self.known for p in self.m.link(n).names)]
-            if len(lines) != 1 or not carriers:
+            circles = self.circles_of(name)
+            if len(lines) != 1 or not circles:
                 continue
-            i = min(carriers)
-            x = self.one_known(i)
-            r = self.m.link(i).span(x, name)
+            i, x, r, why = circles[0]
             arc = self.c.draw(f"arc:{name}@{x}", "swing_arc", self.known[x], radius=r,
                               label=f"arc {x}{name}",
-                              sentence=f"With centre {x} and radius {x}{name} = {self.L(r)}, "
-                                       f"swing an arc.")
+                              sentence=f"With centre {x} and radius {why}, swing an arc.")
             guide = self.guides[lines[0]]
             pick = self.branch(name, None, ("forward", "backward"),
                                f"forward or backward along the guide of {name}")
@@ -335,6 +356,56 @@ class _Assembler:
                                     f"{name} is at infinity", joint=name)
             return True
         return False
+
+    def roll_wheel(self) -> bool:
+        """Turn a wheel that rolls without slip through the distance rolled over its radius.
+
+        Once the wheel's centre is drawn on its path (the face's parallel at the
+        radius), the distance s it stands from the start (square over the face's
+        ``through`` point) is measured with dividers along the face; the wheel has
+        turned through s / r, clockwise when it rides on the left of the face.
+        """
+        for i, s in enumerate(self.m.slides):
+            if not s.rolling or s.point not in self.known or s.link in self.axes:
+                continue
+            pose = self.pose_of(s.guide_link)
+            if pose is None:
+                continue
+            phi, origin = pose
+            c, sn = math.cos(phi), math.sin(phi)
+            (tx, ty), (dx, dy) = s.through, s.direction
+            gx, gy = origin[0] + c * tx - sn * ty, origin[1] + sn * tx + c * ty
+            ux, uy = c * dx - sn * dy, sn * dx + c * dy
+            px, py = self.c.output(self.known[s.point]).xy
+            rolled = ux * (px - gx) + uy * (py - gy)
+            r = s.contact.circle.radius
+            turn = -rolled / (s.contact.roll_sign * r)
+            wheel = phi + turn
+            k = self.m.link(s.link)
+            self.axes[s.link] = self.c.give(
+                f"axis:{s.link}", g.Line(-math.sin(wheel), math.cos(wheel),
+                                         math.sin(wheel) * px - math.cos(wheel) * py),
+                label=f"link {s.link}",
+                sentence=f"{k.label.capitalize()} rolls without slip: its centre {s.point} stands "
+                         f"{self.L(abs(rolled))} from where it started, so it has turned "
+                         f"{self.angle_text(abs(turn))} {'clockwise' if turn < 0 else 'counter-clockwise'}"
+                         f" ({self.L(abs(rolled))} ÷ r = {self.L(r)}); draw its axis through "
+                         f"{s.point}.")
+            return True
+        return False
+
+    def pose_of(self, number: int) -> tuple[float, tuple[float, float]] | None:
+        """(angle, origin) of a drawn link, or None if it is not drawn yet."""
+        if number == 1:
+            return 0.0, (0.0, 0.0)
+        k = self.m.link(number)
+        if not self.posed(number) or len(k.names) < 2 or not all(n in self.known
+                                                                   for n in k.names[:2]):
+            return None
+        (ax, ay), (bx, by) = (self.c.output(self.known[n]).xy for n in k.names[:2])
+        (lx, ly) = k.local(k.names[1])
+        phi = math.atan2(by - ay, bx - ax) - math.atan2(ly, lx)
+        return phi, (ax, ay)
 
     def slot_through_block(self) -> bool:
         for i, s in enumerate(self.m.slides):
@@ -492,7 +563,7 @@ class _Assembler:
         axis = self.axis_of(number)
         k = self.m.link(number)
         ox, oy = k.local(k.names[0])
-        (tx, ty), (dx, dy) = s.through, s.direction
+        ty, (dx, dy) = s.through[1], s.direction
         if abs(dy) > 0.0 or dx < 0:
             raise AssemblyError(f"the slot of {k.label} must run along the link's axis",
                                 link=number)

@@ -3,9 +3,12 @@
 The order is the lecture notes' (000-part1 §2.7–2.9):
 
 1. *By inspection.* A pin is the centre of the links it joins; a block on a
-   straight guide has its centre at infinity, perpendicular to the guide. A pin in
-   a slot, or a direct contact, gives no centre but a locus: the common normal at
-   the contact, on which the centre lies (rule 5).
+   straight guide has its centre at infinity, perpendicular to the guide, and on a
+   curved guide at the guide's centre of curvature; a wheel rolling without slip
+   has its centre at the contact point. A pin in a straight or curved slot, or a
+   direct contact, gives no centre but a locus: the common normal at the contact,
+   on which the centre lies (rule 5). For a curved slot or two circles in contact
+   the normal is the line through the two centres of curvature.
 2. *By Kennedy.* On the circle diagram a centre is a chord; it is found when two
    triangles with that chord as a side have their other sides known. Each triangle
    gives a line through two known centres, and the centre is where the lines meet.
@@ -31,13 +34,16 @@ from .model import SlideKind
 from .record import Ref, Role
 
 __all__ = ["Centre", "Centres", "locate_centres", "omega_ratio", "centre_ref", "pair_label",
-           "WELL_CROSSED", "ILL_CONDITIONED"]
+           "WELL_CROSSED", "ILL_CONDITIONED", "PRIMARY_RULES"]
 
 WELL_CROSSED = 0.1
 """Sine of the crossing angle (about 6°) below which another triangle pair is sought."""
 
 ILL_CONDITIONED = 1e-3
 """Conditioning below which a centre is reported as ill-conditioned."""
+
+PRIMARY_RULES = ("pin", "block", "curved", "rolling")
+"""The rules of inspection, as :attr:`Centre.rule` names them."""
 
 _SAME = 1e-9  # relative slack for "these two lines (or points) are the same"
 
@@ -59,7 +65,8 @@ class Centre:
     """One instant centre and how it was found.
 
     ``rule`` is ``"pin"``, ``"block"`` (at infinity, perpendicular to a straight
-    guide), ``"kennedy"``, or ``"velocities"`` (on its one Kennedy line where the
+    guide), ``"curved"`` (a block on a curved guide: the centre of curvature),
+    ``"rolling"`` (the contact point of a wheel rolling without slip), ``"kennedy"``, or ``"velocities"`` (on its one Kennedy line where the
     two links' velocities agree, when every triangle gives that same line). ``lines`` are the refs of the two lines it was cut
     from, and ``triangles`` the third link of each triangle (``None`` for the
     common normal of a pin in a slot or a contact). ``order`` numbers the
@@ -82,7 +89,7 @@ class Centre:
     @property
     def primary(self) -> bool:
         """Found by inspection rather than by Kennedy's theorem."""
-        return self.rule in ("pin", "block")
+        return self.rule in PRIMARY_RULES
 
 
 @dataclass
@@ -150,6 +157,10 @@ def locate_centres(asm: Assembly) -> Centres:
     return _Kennedy(asm).run()
 
 
+def _on(link: int) -> str:
+    return "the frame" if link == 1 else f"link {link}"
+
+
 class _Kennedy:
     def __init__(self, asm: Assembly):
         self.asm = asm
@@ -160,35 +171,67 @@ class _Kennedy:
 
     # ----- 1. by inspection ------------------------------------------------------
     def inspect(self) -> None:
+        curved = {(a.centre, *sorted((a.link, a.guide_link))): a for a in self.m.arcs
+                  if a.kind is SlideKind.BLOCK}
         for name in self.m.point_names:
             for i, j in combinations(sorted(self.m.links_at(name)), 2):
                 if (i, j) in self.out.found:
                     continue
+                a = curved.get((name, i, j))
+                said = (f"The pin {name} joins links {i} and {j}, so it is {pair_label(i, j)}."
+                        if a is None else
+                        f"Block {a.point} of link {a.link} slides on a guide of "
+                        f"{_on(a.guide_link)} curved about {name}, so {pair_label(i, j)} is "
+                        f"at the centre of curvature {name}.")
                 ref = self.c.draw(centre_ref(i, j), "mark", self.asm.points[name],
-                                  label=pair_label(i, j), role=Role.RESULT,
-                                  sentence=f"The pin {name} joins links {i} and {j}, so it is "
-                                           f"{pair_label(i, j)}.")
-                self.out.found[(i, j)] = Centre((i, j), ref, "pin")
+                                  label=pair_label(i, j), role=Role.RESULT, sentence=said)
+                self.out.found[(i, j)] = Centre((i, j), ref, "pin" if a is None else "curved")
         for k, s in enumerate(self.m.slides):
             i, j = sorted((s.link, s.guide_link))
+            if (i, j) in self.out.found:
+                continue
             if s.kind is SlideKind.BLOCK:
-                if (i, j) in self.out.found:
-                    continue
-                on = "the frame" if s.guide_link == 1 else f"link {s.guide_link}"
                 ref = self.c.draw(centre_ref(i, j), "normal_direction", self.asm.guides[k],
                                   label=pair_label(i, j), role=Role.RESULT,
                                   sentence=f"Block {s.point} of link {s.link} slides on a straight "
-                                           f"guide of {on}, so {pair_label(i, j)} is at infinity, "
-                                           "perpendicular to the guide.")
+                                           f"guide of {_on(s.guide_link)}, so {pair_label(i, j)} "
+                                           "is at infinity, perpendicular to the guide.")
                 self.out.found[(i, j)] = Centre((i, j), ref, "block")
+            elif s.rolling:
+                self.out.found[(i, j)] = self.rolling_contact(k, s, (i, j))
             else:
-                what = "contact" if getattr(s, "contact", None) is not None else "slot"
+                what = "contact" if s.contact is not None else "slot"
                 ref = self.c.draw(f"N:{i}{j}:{k}", "perpendicular_through",
                                   self.asm.points[s.point], self.asm.guides[k],
                                   sentence=f"{pair_label(i, j)} lies on the common normal at "
                                            f"{s.point}: through {s.point} draw the perpendicular "
                                            f"to the {what} of link {s.guide_link}.")
                 self.out.loci.setdefault((i, j), []).append(ref)
+        for k, a in enumerate(self.m.arcs):
+            i, j = sorted((a.link, a.guide_link))
+            if a.kind is SlideKind.BLOCK or (i, j) in self.out.found:
+                continue
+            what = ("the line of centres of the two circles" if a.contact is not None
+                    else f"the radius of the curved slot of link {a.guide_link}")
+            ref = self.c.draw(f"N:{i}{j}:a{k}", "line_through", self.asm.points[a.centre],
+                              self.asm.points[a.point],
+                              sentence=f"{pair_label(i, j)} lies on the common normal at the "
+                                       f"contact, {what}: draw line {a.centre}{a.point}.")
+            self.out.loci.setdefault((i, j), []).append(ref)
+
+    def rolling_contact(self, k: int, s, pair: tuple[int, int]) -> Centre:
+        """A wheel rolling without slip: the contact point is the centre (notes §2.7 (4))."""
+        face = s.contact.face
+        line = self.c.draw(f"face:{k}", "parallel_through", self.asm.points[face.through],
+                           self.asm.guides[k],
+                           sentence=f"Through {face.through} draw the face of link {face.link}, "
+                                    f"parallel to the path of {s.point}.")
+        ref = self.c.draw(centre_ref(*pair), "project_onto", self.asm.points[s.point], line,
+                          label=pair_label(*pair), role=Role.RESULT,
+                          sentence=f"Link {s.link} rolls on link {s.guide_link} without slip, so "
+                                   f"the contact point, the foot of {s.point} on the face, is "
+                                   f"{pair_label(*pair)}.")
+        return Centre(pair, ref, "rolling")
 
     # ----- 2. by Kennedy ------------------------------------------------------------
     def run(self) -> Centres:
@@ -266,40 +309,71 @@ class _Kennedy:
 
         At some positions every triangle gives the same line (the crank-shaper with
         its crank along the lever: all finite centres on one line). Kennedy then
-        fixes only the line; the point on it is where links i and j have equal
-        velocity, which the known centres give through ω ratios (rule 2 of the notes).
+        fixes only the line, and the notes' rule 2 finishes it: at a point X of the
+        line lay off, square to it, the velocities links i and j would give X (their
+        ω from the ratios of the known centres); each link's velocity profile runs
+        from its ground centre through its tip (parallel to the line for a
+        translating link); the profiles cross where the velocities are equal, and
+        the foot of that crossing on the line is I_ij.
         """
         lines = self.candidates(pair)
-        if not lines:
-            return False
         fields = [self.velocity_field(n) for n in pair]
-        if None in fields:
+        if not lines or None in fields:
             return False
-        (wi, bi), (wj, bj) = fields
+        (wi, _), (wj, _) = fields
         if abs(wi - wj) <= 1e-12 * max(abs(wi), abs(wj)):
             return False
-        # ω_i J P + b_i = ω_j J P + b_j  ⇒  P = −J (b_j − b_i) / (ω_i − ω_j)
-        dx, dy = bj[0] - bi[0], bj[1] - bi[1]
-        px, py = dy / (wi - wj), -dx / (wi - wj)
-        ref_line, _ = lines[0]
-        line = self.c.output(ref_line)
-        start = self.finite_centre_on(line)
+        ref_line, third = lines[0]
+        start = self.finite_centre_on(self.c.output(ref_line))
         if start is None:
             return False
-        (sx, sy) = self.c.output(start).xy
-        tx, ty = line.direction
-        along = (px - sx) * tx + (py - sy) * ty
         i, j = pair
-        ref = self.c.draw(
-            centre_ref(i, j), "lay_off", start, ref_line, length=along,
-            label=pair_label(i, j), role=Role.RESULT,
-            sentence=f"Every Kennedy line for {pair_label(i, j)} is this one line, so "
-                     f"{pair_label(i, j)} is placed on it where links {i} and {j} have equal "
-                     f"velocities (from the ω ratios of the known centres): "
-                     f"{self.c[start].label or start} to {pair_label(i, j)} is "
-                     f"{self.m.units.length_text(abs(along))}.")
-        self.out.found[pair] = Centre(pair, ref, "velocities", (ref_line,), (lines[0][1],),
-                                      order, 0.0)
+        tag = f"rule2:{i}{j}:{order}"
+        name = pair_label(i, j)
+        reach = 0.4 * self.size
+        base = self.c.draw(f"{tag}:X", "lay_off", start, ref_line, length=reach,
+                           sentence=f"Every Kennedy line for {name} is this one line, so use "
+                                    f"the velocities (rule 2): mark X on it, "
+                                    f"{self.m.units.length_text(reach)} from "
+                                    f"{self.c[start].label or start}.")
+        square = self.c.draw(f"{tag}:normal", "perpendicular_through", base, ref_line)
+        b = self.c.output(base).xy
+        nx, ny = self.c.output(square).direction
+        speeds = {}
+        for n, (w, off) in zip(pair, fields):
+            vx, vy = -w * b[1] + off[0], w * b[0] + off[1]    # ω J B + b
+            speeds[n] = vx * nx + vy * ny
+        scale = 0.3 * self.size / max(abs(v) for v in speeds.values())
+        profiles = []
+        for n in pair:
+            tip = self.c.draw(f"{tag}:tip{n}", "lay_off", base, square, length=scale * speeds[n],
+                              sentence=f"Square to the line at X lay off the velocity X would "
+                                       f"have as a point of link {n} (from its ω ratio).")
+            ground = self.out.centre(1, n).ref
+            try:
+                if self.c.output(ground).is_at_infinity:
+                    profile = self.c.draw(f"{tag}:profile{n}", "parallel_through", tip, ref_line,
+                                          sentence=f"Link {n} translates: its velocity profile "
+                                                   "is the parallel to the line through the tip.")
+                else:
+                    profile = self.c.draw(f"{tag}:profile{n}", "line_through", ground, tip,
+                                          sentence=f"Join {pair_label(1, n)} to the tip: the "
+                                                   f"velocity profile of link {n}.")
+            except DegenerateInput:
+                return False
+            profiles.append(profile)
+        try:
+            meet = self.c.draw(f"{tag}:meet", "intersect_lines", *profiles,
+                               sentence=f"The profiles cross where links {i} and {j} have equal "
+                                        "velocities.")
+            ref = self.c.draw(centre_ref(i, j), "project_onto", meet, ref_line, label=name,
+                              role=Role.RESULT,
+                              sentence=f"Square back onto the line: that point is {name}.")
+        except DegenerateInput:
+            return False
+        if self.c.output(ref).is_at_infinity:
+            return False
+        self.out.found[pair] = Centre(pair, ref, "velocities", (ref_line,), (third,), order, 0.0)
         return True
 
     def finite_centre_on(self, line: g.Line) -> Ref | None:

@@ -13,12 +13,24 @@ of a slider or the slot of a slotted lever. ``BLOCK`` is a prismatic pair (the
 sliding link turns with the guide); ``PIN`` is a pin in a slot (it turns freely, a
 two-freedom joint).
 
+An **arc** keeps a point of one link at a fixed distance from a point of another:
+a pin in a curved slot (the slot's centre of curvature is the second point), or
+two circles in contact, whose centres stay the sum (or difference) of the radii
+apart. A *block* on a curved guide turns with the radius of the guide, so it is
+exactly a pin at the centre of curvature (notes 000-part1 §2.7 (3b)): the file
+reader gives the block that point, and the arc only tells figures and the centre
+rule what the pin stands for.
+
 A **contact** is direct (sliding-rolling) contact of a circular profile on a flat
-face: a cam's circle on a flat-faced follower, or a roller on a flat cam face.
-Kinematically it is exactly a pin at the circle's centre running in a slot of the
-face's link, parallel to the face and offset from it by the radius (the
-equivalent linkage, lecture notes §2.13); :func:`contact_slide` builds that slide,
-so assembly and the analytic solver see only a ``PIN`` slide.
+face or on another circle: a cam's circle on a flat-faced follower, a roller on a
+flat cam face, or a roller on a circular cam. Kinematically it is exactly a pin at
+the circle's centre running in a slot of the other link: for a face, the parallel
+to the face offset by the radius; for a circle, the circle through the roller's
+centre about the cam's centre (the equivalent linkage, lecture notes §2.13).
+:func:`contact_slide` and :func:`contact_arc` build those, so assembly and the
+analytic solver see only a ``PIN`` slide or an arc. A **rolling** contact (a
+wheel on a flat face, without slip) adds one more constraint: the distance rolled
+along the face equals the arc turned on the wheel.
 
 A **branch** says which of two assemblies to take for a point: ``left``/``right`` of
 the line joining the two centres it is cut from, ``forward``/``backward`` along a
@@ -41,6 +53,8 @@ __all__ = [
     "Profile",
     "Contact",
     "contact_slide",
+    "contact_arc",
+    "Arc",
     "Drive",
     "Mechanism",
     "LENGTH_UNITS",
@@ -136,20 +150,70 @@ class Profile:
 
 @dataclass(frozen=True, slots=True)
 class Contact:
-    """Direct contact of a circular profile on a flat face.
+    """Direct contact of a circular profile on a flat face or on a second circle.
 
-    ``side`` is ``"left"`` or ``"right"``: the side of the face's direction on
-    which the circle lies, so that the equivalent slot is offset to that side.
+    For a face, ``side`` is ``"left"`` or ``"right"``: the side of the face's
+    direction on which the circle lies, so that the equivalent slot is offset to
+    that side. For two circles it is ``"outside"`` (they touch externally: a roller
+    on a cam) or ``"inside"`` (the first circle runs inside the second).
+    ``rolling`` says the circle rolls on a face without slip, which makes the
+    contact point the two links' instant centre.
+
+    The convention that fixes a rolling wheel's angle: the wheel's points are given
+    as they are when its centre stands square over the face's ``through`` point with
+    its local axis parallel to the face. The wheel turns by the distance rolled
+    over its radius from there.
     """
 
     circle: Profile
     face: Profile
     side: str
+    rolling: bool = False
 
     @property
     def label(self) -> str:
         """How messages name the contact: "contact of link 2 on link 3"."""
-        return f"contact of link {self.circle.link} on link {self.face.link}"
+        what = "rolling contact" if self.rolling else "contact"
+        return f"{what} of link {self.circle.link} on link {self.face.link}"
+
+    @property
+    def roll_sign(self) -> float:
+        """σ in the no-slip condition s + σ·r·(φ_wheel − φ_face) = 0.
+
+        A wheel on the left of the face's direction turns clockwise as it rolls
+        forward (σ = +1); on the right, counter-clockwise (σ = −1).
+        """
+        return 1.0 if self.side == "left" else -1.0
+
+
+@dataclass(frozen=True, slots=True)
+class Arc:
+    """Point ``point`` of link ``link`` stays ``radius`` from point ``centre`` of ``guide_link``.
+
+    ``kind`` is ``PIN`` for a pin in a curved slot or two circles in contact (a
+    two-freedom joint), and ``BLOCK`` for a block on a curved guide, which the
+    reader has already turned into a pin at ``centre`` (so it adds no constraint of
+    its own). ``contact`` is set when the arc is the equivalent of a circle-on-circle
+    :class:`Contact`; ``side`` says on which side of a curved block's axis the
+    centre of curvature lies.
+    """
+
+    kind: SlideKind
+    link: int
+    point: str
+    guide_link: int
+    centre: str
+    radius: float
+    contact: Contact | None = None
+    side: str = "left"
+
+    @property
+    def label(self) -> str:
+        """How messages name the joint."""
+        if self.contact is not None:
+            return self.contact.label
+        what = "block" if self.kind is SlideKind.BLOCK else "pin"
+        return f"{what} {self.point} of link {self.link} on the curved guide of link {self.guide_link}"
 
 
 @dataclass(frozen=True, slots=True)
@@ -173,8 +237,15 @@ class Slide:
     @property
     def label(self) -> str:
         """How messages name the joint."""
+        if self.contact is not None:
+            return self.contact.label
         what = "block" if self.kind is SlideKind.BLOCK else "pin"
         return f"{what} {self.point} of link {self.link} on link {self.guide_link}"
+
+    @property
+    def rolling(self) -> bool:
+        """True for a wheel rolling without slip on a face (see :class:`Contact`)."""
+        return self.contact is not None and self.contact.rolling
 
 
 def contact_slide(contact: Contact, face_link: Link) -> Slide:
@@ -215,6 +286,27 @@ def contact_slide(contact: Contact, face_link: Link) -> Slide:
                  (x - r * d[1], y + r * d[0]), d, contact)
 
 
+def contact_arc(contact: Contact) -> Arc:
+    """Replace a circle-on-circle contact by its equivalent arc.
+
+    The first circle's centre stays r1 + r2 (``outside``) or |r2 − r1| (``inside``)
+    from the second's: a ``PIN`` arc of the first centre about the second.
+
+    Examples
+    --------
+    >>> c = Contact(Profile(3, centre="R", radius=10.0), Profile(2, centre="C", radius=40.0),
+    ...             "outside")
+    >>> a = contact_arc(c)
+    >>> a.point, a.guide_link, a.centre, a.radius
+    ('R', 2, 'C', 50.0)
+    """
+    first, second = contact.circle, contact.face
+    radius = (first.radius + second.radius if contact.side == "outside"
+              else abs(second.radius - first.radius))
+    return Arc(SlideKind.PIN, first.link, first.centre, second.link, second.centre, radius,
+               contact)
+
+
 @dataclass(frozen=True, slots=True)
 class Drive:
     """The input: link ``link`` at axis angle ``angle`` (rad) turning at ω, α (CCW +)."""
@@ -241,6 +333,7 @@ class Mechanism:
     units: Units = Units()
     name: str = ""
     source: str = ""
+    arcs: tuple[Arc, ...] = ()
 
     def __post_init__(self) -> None:
         numbers = [k.number for k in self.links]
@@ -286,13 +379,15 @@ class Mechanism:
     def mobility(self) -> tuple[int, int, int, int]:
         """Grübler's count: ``(dof, n, F1, F2)`` with DOF = 3(n − 1) − 2·F1 − F2.
 
-        A pin on K links is K − 1 joints; a block is one F1 joint, a pin in a slot
-        one F2 joint.
+        A pin on K links is K − 1 joints; a block and a rolling contact are one F1
+        joint each; a pin in a straight or curved slot, and a sliding-rolling
+        contact, one F2 joint. A block on a curved guide is counted by its pin.
         """
         n = len(self.links)
         pins = sum(max(0, len(self.links_at(p)) - 1) for p in self.point_names)
-        blocks = sum(1 for s in self.slides if s.kind is SlideKind.BLOCK)
-        f2 = sum(1 for s in self.slides if s.kind is SlideKind.PIN)
+        blocks = sum(1 for s in self.slides if s.kind is SlideKind.BLOCK or s.rolling)
+        f2 = sum(1 for s in self.slides if s.kind is SlideKind.PIN and not s.rolling)
+        f2 += sum(1 for a in self.arcs if a.kind is SlideKind.PIN)
         f1 = pins + blocks
         return 3 * (n - 1) - 2 * f1 - f2, n, f1, f2
 
@@ -305,4 +400,4 @@ class Mechanism:
     def with_drive(self, drive: Drive) -> Mechanism:
         """Return the same mechanism at another input position."""
         return Mechanism(self.links, drive, self.slides, dict(self.branches), self.units,
-                         self.name, self.source)
+                         self.name, self.source, self.arcs)

@@ -29,8 +29,8 @@ from itertools import combinations
 
 from . import geometry as g
 from .assembly import Assembly
+from .coincident import Node, Walk
 from .errors import DegenerateInput, TarsimError
-from .model import SlideKind
 from .record import Ref, Role, slice as backward_slice
 from .velocity_drawing import VelocityResult, draw_input_velocity, speed_text
 
@@ -43,28 +43,12 @@ _ON_LINE = 1e-9  # relative sine below which three points count as collinear (ca
 
 
 @dataclass(frozen=True)
-class _Node:
-    """A velocity to find: point ``point`` itself, or taken on link ``link``."""
-
-    point: str
-    link: int | None = None
-
-    @property
-    def tag(self) -> str:
-        return self.point if self.link is None else f"{self.point}@{self.link}"
-
-    @property
-    def name(self) -> str:
-        return self.point if self.link is None else f"{self.point}{self.link}"
-
-
-@dataclass(frozen=True)
 class _Rule:
     """How a node is found: ``cross`` two loci, ``case3`` or ``translate``."""
 
     kind: str
     args: tuple
-    needs: tuple[_Node, ...]
+    needs: tuple[Node, ...]
     quality: float
 
 
@@ -126,12 +110,12 @@ def velocity_by_components(asm: Assembly, point: str, *, scale: float,
         raise TarsimError(f"there is no point {point}; the points are {', '.join(m.point_names)}")
     if link is not None:
         m.link(link)
-    target = _Node(point, None if link is None or point in m.link(link).names else link)
+    target = Node(point, None if link is None or point in m.link(link).names else link)
     return _Components(asm, scale, target).run()
 
 
-class _Components:
-    def __init__(self, asm: Assembly, scale: float, target: _Node):
+class _Components(Walk):
+    def __init__(self, asm: Assembly, scale: float, target: Node):
         self.asm, self.c, self.m, self.scale, self.target = (
             asm, asm.construction, asm.mechanism, scale, target)
         start, vec = draw_input_velocity(asm, scale)
@@ -140,48 +124,29 @@ class _Components:
             raise TarsimError(f"this construction's velocities are drawn at {drawn / want:.6g} "
                               f"m per m/s, not {scale:.6g}; use that scale")
         self.input_refs = {f"v:perp:{start}", f"v:tip:{start}", vec}
-        nodes = [_Node(n) for n in self.m.point_names] + [
-            _Node(s.point, s.guide_link) for s in self.m.slides
+        nodes = [Node(n) for n in self.m.point_names] + [
+            Node(s.point, s.guide_link) for s in self.m.slides
             if s.guide_link != 1 and s.point not in self.m.link(s.guide_link).names]
         self.nodes = list(dict.fromkeys(nodes + [target]))
-        self.known: dict[_Node, Ref] = {_Node(start): self.c[vec].inputs[1]}
+        self.known: dict[Node, Ref] = {Node(start): self.c[vec].inputs[1]}
         self.known |= {n: f"cm:{n.tag}:tip" for n in self.nodes  # drawn by a previous call
                        if f"cm:{n.tag}:tip" in self.c and n not in self.known}
 
     # ----- the mechanism as the method sees it ------------------------------------
-    def carriers(self, n: _Node) -> tuple[int, ...]:
-        if n.link is not None:
-            return (n.link,)
-        at = set(self.m.links_at(n.point)) | {s.link for s in self.m.slides if s.point == n.point}
-        return tuple(sorted(at))
-
-    def zero(self, n: _Node) -> bool:
-        return 1 in self.carriers(n)
-
-    def members(self, c: int) -> list[_Node]:
-        out = [_Node(p) for p in self.m.link(c).names]
-        out += [_Node(s.point) for s in self.m.slides if s.link == c]
-        return list(dict.fromkeys(out + [n for n in self.nodes if n.link == c]))
-
-    def frame_guide(self, c: int) -> int | None:
-        """The slide index if link ``c`` is a block on a frame guide (so it translates)."""
-        return next((i for i, s in enumerate(self.m.slides) if s.link == c and s.guide_link == 1
-                     and s.kind is SlideKind.BLOCK), None)
-
-    def normal_to(self, a: _Node | str, b: _Node) -> tuple[float, float] | None:
+    def normal_to(self, a: Node | str, b: Node) -> tuple[float, float] | None:
         """The unit normal to line ab (the direction of a component locus), if a ≠ b."""
         (ax, ay), (bx, by) = self.asm.xy(getattr(a, "point", a)), self.asm.xy(b.point)
         d = math.hypot(bx - ax, by - ay)
         big = max(1.0, abs(ax), abs(ay), abs(bx), abs(by))
         return None if d <= 1e-12 * big else ((ay - by) / d, (bx - ax) / d)
 
-    def collinear(self, a: _Node, b: _Node, x: _Node) -> bool:
+    def collinear(self, a: Node, b: Node, x: Node) -> bool:
         pa, pb, px = (self.asm.point(n.point) for n in (a, b, x))
         ab, ax, bx = g.distance(pa, pb), g.distance(pa, px), g.distance(pb, px)
         return min(ab, ax, bx) > 0.0 and abs(g.side_of(px, pa, pb)) <= _ON_LINE * ab * ax
 
     # ----- planning: which velocity follows from which ----------------------------
-    def loci(self, x: _Node, known) -> list[tuple[tuple, tuple[float, float]]]:
+    def loci(self, x: Node, known) -> list[tuple[tuple, tuple[float, float]]]:
         """Lines known to carry the tip of V_x, in the notes' order: components, slot, path."""
         comp, slot, path = [], [], []
         for c in self.carriers(x):
@@ -196,12 +161,12 @@ class _Components:
             if s.point == x.point and s.guide_link == 1 and x.link is None:
                 path.append((("guide", i), self.asm.guide(i).direction))
             elif s.point == x.point and s.guide_link != 1 and x.link in (None, s.guide_link):
-                other = _Node(s.point, s.guide_link if x.link is None else None)
+                other = Node(s.point, s.guide_link if x.link is None else None)
                 if other in known:
                     slot.append((("slide", other, i), self.asm.guide(i).direction))
         return comp + slot + path
 
-    def rules(self, x: _Node, known) -> list[_Rule]:
+    def rules(self, x: Node, known) -> list[_Rule]:
         """Every way to find V_x from what is known, in the order a student would try them."""
         whole, cross, case3 = [], [], []
         for c in self.carriers(x):
@@ -215,7 +180,7 @@ class _Components:
             cross.append(_Rule("cross", (l1, l2), needs, abs(d1[0] * d2[1] - d1[1] * d2[0])))
         return whole + cross + case3
 
-    def plan(self) -> list[tuple[_Node, _Rule]]:
+    def plan(self) -> list[tuple[Node, _Rule]]:
         """Survey the figure in rounds from what is known, then keep what the target needs.
 
         Each round finds every node that follows well-crossed from the last round's
@@ -234,8 +199,11 @@ class _Components:
             if not found and best is None:
                 x = self.target
                 on = "" if x.link is None else f" as a point of link {x.link}"
+                hint = ("; across a curved slot, a circle contact or a rolling wheel use "
+                        "radius-rotation or parallel-line"
+                        if self.m.arcs or any(s.rolling for s in self.m.slides) else "")
                 raise TarsimError(f"the component method cannot reach {x.point}{on}: no link "
-                                  "carrying it has two known velocities or a known path")
+                                  f"carrying it has two known velocities or a known path{hint}")
             found = found or dict([best])
             known |= found.keys()
             chosen |= found
@@ -255,10 +223,10 @@ class _Components:
             self.c.draw(ref, verb, *inputs, label=label, sentence=sentence, role=role, **params)
         return ref
 
-    def at(self, n: _Node | str) -> Ref:
-        return self.asm.points[n.point if isinstance(n, _Node) else n]
+    def at(self, n: Node | str) -> Ref:
+        return self.asm.points[n.point if isinstance(n, Node) else n]
 
-    def tip(self, n: _Node) -> Ref:
+    def tip(self, n: Node) -> Ref:
         return self.at(n) if self.zero(n) else self.known[n]
 
     def run(self) -> VelocityResult:
@@ -279,19 +247,19 @@ class _Components:
         link = x.link if x.link is not None else next((c for c in self.carriers(x) if c != 1), 1)
         return VelocityResult("components", x.point, link, vector, self.scale, steps)
 
-    def draw_arrow(self, x: _Node, ref: Ref, role: Role) -> Ref:
+    def draw_arrow(self, x: Node, ref: Ref, role: Role) -> Ref:
         speed = math.dist(*(self.c.output(r).xy for r in (self.at(x), self.tip(x)))) / self.scale
         return self.act(ref, "join", self.at(x), self.tip(x), label=f"V_{x.name}", role=role,
                         sentence=f"Join {x.name} to the tip: V_{x.name} = "
                                  f"{speed_text(speed, self.m.units)}.")
 
-    def draw_line(self, p: _Node | str, q: _Node, sentence: str) -> Ref:
+    def draw_line(self, p: Node | str, q: Node, sentence: str) -> Ref:
         """Draw the line through two points, once per construction whoever needs it."""
-        p = p.point if isinstance(p, _Node) else p
+        p = p.point if isinstance(p, Node) else p
         return self.act(f"cm:line:{p}-{q.point}", "line_through", self.at(p), self.at(q),
                         sentence=sentence)
 
-    def transfer_along(self, x: _Node, k: _Node, line: Ref, kx: str, mark: str = "′") -> Ref:
+    def transfer_along(self, x: Node, k: Node, line: Ref, kx: str, mark: str = "′") -> Ref:
         """Project V_k onto ``line`` and lay the component off at x; return its tip."""
         t, on, K, X = f"cm:{x.tag}:", line.removeprefix("cm:line:"), k.name, x.name
         foot = self.act(f"cm:{k.tag}:foot@{on}", "project_onto", self.tip(k), line,
@@ -307,7 +275,7 @@ class _Components:
                           "along the line joining them.")
         return along
 
-    def draw_locus(self, x: _Node, locus: tuple, mark: str) -> tuple[Ref, str]:
+    def draw_locus(self, x: Node, locus: tuple, mark: str) -> tuple[Ref, str]:
         """Draw one line carrying the tip of V_x; return it and how the text names it."""
         kind, t, X = locus[0], f"cm:{x.tag}:", x.name
         if kind == "component":
@@ -339,7 +307,7 @@ class _Components:
                                   f"slot of link {j}: V_{p} − V_{p}{j} lies along the slot.")
         return slide, f"the parallel to the slot of link {j} through the tip of V_{other.name}"
 
-    def draw_cross(self, x: _Node, first: tuple, second: tuple) -> Ref:
+    def draw_cross(self, x: Node, first: tuple, second: tuple) -> Ref:
         """Cases 1 and 2 and the slot: two loci of the tip meet at it."""
         both = first[0] == second[0] == "component"
         (l1, say1), (l2, say2) = (self.draw_locus(x, lo, f"′({lo[1].name}{x.name})" if both
@@ -352,7 +320,7 @@ class _Components:
             raise DegenerateInput(f"{say1} and {say2} are parallel (a dead point)")
         return tip
 
-    def component_normal(self, k: _Node, ab: Ref, ab_name: str) -> Ref:
+    def component_normal(self, k: Node, ab: Ref, ab_name: str) -> Ref:
         """The tip of V_k″, the component of V_k ⟂ AB (k itself when k is at rest)."""
         if self.zero(k):
             return self.at(k)
@@ -366,7 +334,7 @@ class _Components:
                  sentence=f"Draw V_{K}″ at {K}.")
         return tip
 
-    def draw_case3(self, x: _Node, c: int, a: _Node, b: _Node) -> Ref:
+    def draw_case3(self, x: Node, c: int, a: Node, b: Node) -> Ref:
         """Case 3: X on line AB, from the components ⟂ AB and the one along it."""
         t, X, ab_name = f"cm:{x.tag}:", x.name, f"{a.name}{b.name}"
         ab = self.draw_line(a, b, f"Draw line {ab_name} of link {c}; {X} lies on it.")
@@ -396,7 +364,7 @@ class _Components:
         return self.act(f"{t}tip", "intersect_lines", l1, l2, sentence=f"They meet at the tip "
                         f"of V_{X} = V_{X}′ + V_{X}″ (the parallelogram).")
 
-    def draw_translate(self, x: _Node, c: int, k: _Node) -> Ref:
+    def draw_translate(self, x: Node, c: int, k: Node) -> Ref:
         """Hinkle Fig. 5.9: a block on a frame guide translates, so V_x = V_k."""
         K, X = k.name, x.name
         return self.act(f"cm:{x.tag}:tip", "transfer", self.at(x), self.at(k), self.tip(k),

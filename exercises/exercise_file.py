@@ -95,7 +95,7 @@ def _read_ask(ask, mech: Mechanism, where: SourceMap, filename: str, exercise_id
         return InputError(message, file=filename, line=line, key=f"ask.{key}" if key else "ask")
 
     if ask is None:
-        moving = tuple(f"omega{n}" for n in sorted(mech.numbers) if n != 1)
+        moving = tuple(f"omega{n}" for n in sorted(mech.numbers) if n not in (1, mech.drive.link))
         return Exercise(exercise_id, mech, ("centres",) + moving, ("radius-rotation",))
     if not isinstance(ask, dict):
         raise fail("[ask] must be a table")

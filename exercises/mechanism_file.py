@@ -15,8 +15,8 @@ from pathlib import Path
 from typing import Any
 
 from constructions.errors import InputError
-from constructions.model import (LENGTH_UNITS, Contact, Drive, Link, Mechanism, Profile, Slide,
-                                 SlideKind, Units, contact_slide)
+from constructions.model import (LENGTH_UNITS, Arc, Contact, Drive, Link, Mechanism, Profile,
+                                 Slide, SlideKind, Units, contact_arc, contact_slide)
 
 __all__ = ["load_mechanism", "parse_mechanism", "SourceMap"]
 
@@ -134,13 +134,22 @@ class _Reader:
         links = [frame] + self.read_links(frame)
         mech_links = tuple(links)
         self.links = {k.number: k for k in mech_links}
-        slides = tuple(self.read_slider(i, s) for i, s in enumerate(self.list_of("slider")))
-        slides += tuple(contact_slide(c, self.links[c.face.link]) for c in
-                        (self.read_contact(i, t) for i, t in enumerate(self.list_of("contact"))))
+        slides: list[Slide] = []
+        arcs: list[Arc] = []
+        for i, t in enumerate(self.list_of("slider")):
+            joint = self.read_slider(i, t)
+            (arcs if isinstance(joint, Arc) else slides).append(joint)
+        for i, t in enumerate(self.list_of("contact")):
+            c = self.read_contact(i, t)
+            if c.face.is_circle:
+                arcs.append(contact_arc(c))
+            else:
+                slides.append(contact_slide(c, self.links[c.face.link]))
+        mech_links = tuple(self.links.values())
         drive = self.read_input()
-        branches = self.read_assembly(mech_links, slides)
-        mech = Mechanism(mech_links, drive, slides, branches, self.units,
-                         str(self.d.get("name", Path(self.file).stem)), self.file)
+        branches = self.read_assembly(mech_links, tuple(slides))
+        mech = Mechanism(mech_links, drive, tuple(slides), branches, self.units,
+                         str(self.d.get("name", Path(self.file).stem)), self.file, tuple(arcs))
         dof, n, f1, f2 = mech.mobility()
         if dof != 1:
             raise self.fail(
@@ -286,9 +295,10 @@ class _Reader:
         return local
 
     # ----- sliders, input, assembly ---------------------------------------------------
-    def read_slider(self, i: int, t: dict[str, Any]) -> Slide:
+    def read_slider(self, i: int, t: dict[str, Any]) -> Slide | Arc:
         where = {"table": "slider", "index": i}
-        allowed = ("kind", "link", "point", "on", "through", "angle", "offset")
+        allowed = ("kind", "link", "point", "on", "through", "angle", "offset", "centre",
+                   "radius", "side")
         for k in t:
             if k not in allowed:
                 raise self.unknown(k, allowed, "slider setting", key=k, **where)
@@ -306,6 +316,12 @@ class _Reader:
         if kind == "block" and len(self.links[link].names) != 1:
             raise self.fail(f"a sliding block carries one point; link {link} has "
                             f"{len(self.links[link].names)}", key="link", **where)
+        if "centre" in t or "radius" in t:
+            return self.curved_guide(kind, link, point, on, t, where)
+        for k in ("side",):
+            if k in t:
+                raise self.fail("side applies to a curved guide (with centre and radius)",
+                                key=k, **where)
         offset = self.number(t.get("offset", 0.0), "offset", key="offset", **where) * self.units.metres
         if on == 1:
             through = t.get("through")
@@ -330,13 +346,45 @@ class _Reader:
                                 "offset, not " + k, key=k, **where)
         return Slide(SlideKind(kind), link, point, on, (0.0, offset), (1.0, 0.0))
 
+    def curved_guide(self, kind: str, link: int, point: str, on: int, t: dict[str, Any],
+                     where: dict) -> Arc:
+        """Read a slider on a circular guide: its centre of curvature and radius.
+
+        A block turns with the guide's radius, so it is given a pin at the centre of
+        curvature, on the ``side`` of its axis (its local +x, the tangent at its point).
+        """
+        for k in ("through", "angle", "offset"):
+            if k in t:
+                raise self.fail(f"a curved guide is given by its centre and radius, not {k}",
+                                key=k, **where)
+        for k in ("centre", "radius"):
+            if k not in t:
+                raise self.fail(f"a curved guide needs its {k}: centre = a point of link {on} "
+                                f"(the centre of curvature) and radius = its radius", **where)
+        guide = self.links[on]
+        centre = self.name(t["centre"], "the centre of curvature", key="centre", **where)
+        if centre not in guide.names:
+            raise self.unknown(centre, guide.names, f"point of link {on}", key="centre", **where)
+        radius = self.length(t["radius"], "the guide's radius", key="radius", **where)
+        side = t.get("side", "left")
+        if side not in ("left", "right"):
+            raise self.unknown(str(side), ("left", "right"), "side", key="side", **where)
+        if kind == "block":
+            block = self.links[link]
+            if centre in block.names:
+                raise self.fail(f"link {link} already has a point {centre}; the block's pin at "
+                                "the centre of curvature takes that name", key="centre", **where)
+            across = radius if side == "left" else -radius
+            self.links[link] = Link(link, block.points + ((centre, (0.0, across)),), block.name)
+        return Arc(SlideKind(kind), link, point, on, centre, radius, side=side)
+
     def read_contact(self, i: int, t: dict[str, Any]) -> Contact:
         """Read a circle-on-face contact; the caller turns it into its equivalent slide."""
         where = {"table": "contact", "index": i}
+        allowed = ("circle", "face", "side", "rolling")
         for k in t:
-            if k not in ("circle", "face", "side"):
-                raise self.unknown(k, ("circle", "face", "side"), "contact setting", key=k,
-                                   **where)
+            if k not in allowed:
+                raise self.unknown(k, allowed, "contact setting", key=k, **where)
         for k in ("circle", "face"):
             if k not in t:
                 raise self.fail(f"a contact needs its {k}, e.g. "
@@ -348,13 +396,26 @@ class _Reader:
         if circle.link == face.link:
             raise self.fail(f"the circle and the face are both on link {face.link}; a contact "
                             "joins two links", key="face", **where)
+        rolling = t.get("rolling", False)
+        if not isinstance(rolling, bool):
+            raise self.fail(f"rolling must be true or false, got {rolling!r}", key="rolling",
+                            **where)
         side = t.get("side")
-        if side is None:
-            raise self.fail(f"say on which side of the face of link {face.link} the circle "
-                            'lies: side = "left" or "right" of the face\'s direction', **where)
-        if side not in ("left", "right"):
-            raise self.unknown(str(side), ("left", "right"), "side", key="side", **where)
-        return Contact(circle, face, side)
+        if face.is_circle:
+            if rolling:
+                raise self.fail("rolling is supported for a circle on a flat face; give a "
+                                "circle on a circle as a sliding-rolling contact (rolling = "
+                                "false)", key="rolling", **where)
+            sides = ("outside", "inside")
+            side = "outside" if side is None else side
+        else:
+            sides = ("left", "right")
+            if side is None:
+                raise self.fail(f"say on which side of the face of link {face.link} the circle "
+                                'lies: side = "left" or "right" of the face\'s direction', **where)
+        if side not in sides:
+            raise self.unknown(str(side), sides, "side", key="side", **where)
+        return Contact(circle, face, side, rolling)
 
     def read_profile(self, v: Any, key: str, where: dict) -> Profile:
         """Read ``circle = { … }`` or ``face = { … }``: only a circle on a flat face."""
@@ -371,11 +432,15 @@ class _Reader:
                             "e.g. link = 2", key=key, **where)
         link = self.link_number(v["link"], key, where)
         round_, flat = "centre" in v or "radius" in v, "through" in v or "angle" in v
-        if (key == "face" and round_) or (key == "circle" and flat):
-            given = "a centre and a radius" if key == "face" else "a point and an angle"
-            raise self.fail(f"the {key} of link {link} is given {given}: only a circle on a "
-                            "flat face is supported (a roller on a flat cam face is written the "
-                            "same way, with the roller's centre as the circle)", key=key, **where)
+        if round_ and flat:
+            raise self.fail(f"the {key} of link {link} is given both a centre and radius (a "
+                            "circle) and a point and angle (a flat face): give one", key=key,
+                            **where)
+        if key == "circle" and flat:
+            raise self.fail(f"the circle of link {link} is given a point and an angle: a contact "
+                            "puts a circle (centre and radius) on a face or on another circle "
+                            "(a roller on a flat cam face is written with the roller as the "
+                            "circle)", key=key, **where)
         names = self.links[link].names
 
         def point(name_key: str, what: str) -> str:
@@ -384,7 +449,7 @@ class _Reader:
                 raise self.unknown(p, names, f"point of link {link}", key=key, **where)
             return p
 
-        if key == "circle":
+        if key == "circle" or round_:
             if "centre" not in v:
                 raise self.fail(f"the circular profile of link {link} needs a centre, a point "
                                 "of that link (the common normal runs through it)", key=key,

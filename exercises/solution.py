@@ -134,6 +134,8 @@ def _centre(cs: Centres, kin, pair, size) -> Quantity:
         value = {"point": list(p.xy)}
     c = cs.centre(*pair)
     method = {"pin": "inspection (pin)", "block": "inspection (block on a straight guide)",
+              "curved": "inspection (block on a curved guide: centre of curvature)",
+              "rolling": "inspection (rolling contact: the contact point)",
               "kennedy": "Kennedy (circle diagram)",
               "velocities": "Kennedy line and velocity ratio"}[c.rule]
     try:

@@ -82,7 +82,7 @@ def _figures(sol: Solution) -> list[SolutionFigure]:
     pairs = list(ex.centres)
     d = ex.mechanism.drive.link
     for n in ex.omegas:
-        pairs += [(1, d), (1, n), tuple(sorted((d, n)))]
+        pairs += [(1, d)] if n == d else [(1, d), (1, n), tuple(sorted((d, n)))]
     if pairs:
         targets = [centre_ref(*p) for p in dict.fromkeys(pairs)]
         refs = _drawn(c, targets, sol.position_steps)

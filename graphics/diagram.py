@@ -7,7 +7,14 @@ scale bar that measures true on the printed page.
 
 A contact of a circle on a flat face is assembled as its equivalent pin in a slot,
 but drawn as what the student sees: the cam's circle, the follower's face and the
-contact point P where the common normal meets the face.
+contact point P where the common normal meets the face. Two circles in contact
+(a roller on a circular cam) are drawn as both circles and P on their line of
+centres.
+
+A pin in a curved slot is drawn in a slot about its centre of curvature, carried
+by its link's body; a block on a curved guide stands tangent to a hatched arc. The
+block's pin at the centre of curvature, which the file reader adds to the block
+(its kinematic equivalent), is not drawn: that centre is a bare dot.
 """
 
 from __future__ import annotations
@@ -18,13 +25,14 @@ from dataclasses import dataclass
 from shapely.geometry import MultiPoint, Point as SPoint
 
 from constructions.assembly import Assembly
-from constructions.model import Mechanism, Slide, SlideKind
+from constructions.model import Arc, Mechanism, Slide, SlideKind
 
-from .figure import Circle, Figure, Path, Text, View, text_width
+from .figure import Circle, Figure, Path, Text, View, arc_points, text_width
 from .labels import LabelPlacer
 from .scales import draw_scale_bar, nice_per_cm, scale_text
-from .symbols import (PIN_RADIUS, draw_block, draw_ground_pivot, draw_guide,
-                      draw_pin, draw_turning_arrow, mark_angle, unit)
+from .symbols import (PIN_RADIUS, draw_block, draw_curved_guide, draw_curved_slot,
+                      draw_ground_pivot, draw_guide, draw_pin, draw_turning_arrow, mark_angle,
+                      unit)
 
 __all__ = ["draw_kinematic_diagram", "subscript"]
 
@@ -36,6 +44,8 @@ _BLOCK = (9.0, 5.0)        # slider block on paper, mm
 _DOT = 0.55                # a marked point (circle centre, contact point) on paper, mm
 _FACE_REACH = 0.8          # the face runs this many radii either side of the contact point
 _FACE_MARGIN = 4.0         # and this far (paper mm) past its own point, under a block
+_SLOT_HALF = 20.0          # a curved slot runs this far (paper mm) either side of its middle
+_SLOT_WIDTH = PIN_RADIUS + 0.35   # half its width, so the pin just fits
 
 
 @dataclass(frozen=True, slots=True)
@@ -57,6 +67,33 @@ class _Contact:
         lo = min(t - _FACE_REACH * self.radius, -margin)
         hi = max(t + _FACE_REACH * self.radius, margin)
         return (fx + lo * dx, fy + lo * dy), (fx + hi * dx, fy + hi * dy)
+
+
+@dataclass(frozen=True, slots=True)
+class _Pair:
+    """Two circles in contact, in world metres: both circles and P on their line of centres."""
+
+    cam: tuple[float, float]
+    cam_radius: float
+    roller: tuple[float, float]
+    roller_radius: float
+    point: tuple[float, float]        # P
+    normal: tuple[float, float]       # unit, from the cam's centre toward the roller's
+
+
+@dataclass(frozen=True, slots=True)
+class _Track:
+    """A curved slot or guide on paper: an arc about its centre of curvature.
+
+    ``root`` is where the carrying link's body meets it (None on the frame).
+    """
+
+    arc: Arc
+    centre: tuple[float, float]
+    radius: float                     # mm
+    start: float                      # paper angle, rad, CCW as seen
+    sweep: float
+    root: tuple[float, float] | None
 
 
 def subscript(name: str) -> str:
@@ -83,6 +120,18 @@ class _Diagram:
         self.world = {n: asm.xy(n) for n in self.m.point_names}
         self.contacts = [self.contact(i, s) for i, s in enumerate(self.m.slides)
                          if s.contact is not None]
+        self.pairs = [self.pair(a) for a in self.m.arcs if a.contact is not None]
+        # A block on a curved guide carries the centre of curvature as its pin: a
+        # kinematic stand-in, not a part of the block to draw.
+        self.synthetic = {(a.link, a.centre) for a in self.m.arcs if a.kind is SlideKind.BLOCK}
+
+    def links_at(self, name: str) -> list[int]:
+        """The links drawn at a point (a block's stand-in pin left out)."""
+        return [k for k in self.m.links_at(name) if (k, name) not in self.synthetic]
+
+    def names(self, number: int) -> list[str]:
+        """The points drawn on a link (a block's stand-in pin left out)."""
+        return [n for n in self.m.link(number).names if (number, n) not in self.synthetic]
 
     def contact(self, index: int, s: Slide) -> _Contact:
         """Where a contact's circle, face and P lie, from the assembled slot and points.
@@ -99,12 +148,50 @@ class _Diagram:
         away = unit(_sub(p, c)) if math.dist(p, c) > 0.0 else (-d[1], d[0])
         return _Contact(s, c, r, p, f, d, away)
 
+    def pair(self, a: Arc) -> _Pair:
+        """Where two touching circles and P lie, from the assembled centres.
+
+        P is on the line of centres, on the cam's rim toward the roller (whether the
+        roller runs outside or inside it); only a cam inside a larger roller has P on
+        its far side.
+        """
+        c, r = self.world[a.centre], self.world[a.point]
+        cam, roller = a.contact.face.radius, a.contact.circle.radius
+        n = unit(_sub(r, c)) if math.dist(r, c) > 0.0 else (1.0, 0.0)
+        s = -1.0 if a.contact.side == "inside" and roller > cam else 1.0
+        return _Pair(c, cam, r, roller, (c[0] + s * cam * n[0], c[1] + s * cam * n[1]), n)
+
+    def track(self, a: Arc) -> _Track:
+        """Lay out a curved slot or guide on paper about its centre of curvature.
+
+        It is centred on its pin or block, where the figure shows it: on the frame as
+        long as a straight guide, on a moving link a shorter slot. The link's body
+        (a bar from its pivot) holds the slot at its middle, on the edge that faces
+        the pivot; the centre of curvature is a point of the link's plane, not of its
+        body, so the bar does not run to it.
+        """
+        c, p = self.paper[a.centre], self.paper[a.point]
+        r = a.radius * self.view.scale
+        at = _angle(c, p)
+        if a.guide_link == 1:
+            half = min(math.pi / 6, max(22.0, 0.5 * self.travel(a.point, _tangent(at))) / r)
+            return _Track(a, c, r, at - half, 2 * half, None)
+        half = min(math.pi / 6, _SLOT_HALF / r)
+        w = _SLOT_WIDTH if a.kind is SlideKind.PIN else 0.0
+        pivot = next((self.paper[n] for n in self.names(a.guide_link) if n != a.centre), c)
+        root = min(((c[0] + e * math.cos(at), c[1] - e * math.sin(at)) for e in (r - w, r + w)),
+                   key=lambda q: math.dist(q, pivot))
+        return _Track(a, c, r, at - half, 2 * half, root)
+
     # ----- layout ------------------------------------------------------------------
     def layout(self) -> None:
         pts = list(self.world.values())
         for k in self.contacts:
             (cx, cy), r = k.centre, k.radius
             pts += [(cx - r, cy - r), (cx + r, cy + r), *k.face()]
+        for k in self.pairs:
+            for (cx, cy), r in ((k.cam, k.cam_radius), (k.roller, k.roller_radius)):
+                pts += [(cx - r, cy - r), (cx + r, cy + r)]
         xs = [p[0] for p in pts]
         ys = [p[1] for p in pts]
         unit_m = self.m.units.metres
@@ -116,6 +203,7 @@ class _Diagram:
         self.fig = Figure(0.0, 0.0, title=self.m.name)
         self.placer = LabelPlacer(self.fig)
         self.paper = {n: self.view(p) for n, p in self.world.items()}
+        self.tracks = [self.track(a) for a in self.m.arcs if a.contact is None]
 
     # ----- drawing ---------------------------------------------------------------------
     def draw(self) -> Figure:
@@ -161,10 +249,16 @@ class _Diagram:
         draw_scale_bar(self.fig, (bar_x, y + 5.0), self.per_cm, u.length)
 
     def slot_reach(self, number: int) -> list[tuple[float, float]]:
-        """Paper points a slotted link must reach: its own points and what runs in its slot."""
-        pts = [self.paper[n] for n in self.m.link(number).names]
+        """Paper points a link must reach: its own, what runs in its slot, its curved tracks.
+
+        A curved track's centre is left out unless a link is pinned there.
+        """
+        bare = {t.arc.centre for t in self.tracks if t.arc.guide_link == number}
+        pts = [self.paper[n] for n in self.names(number)
+               if n not in bare or len(self.links_at(n)) > 1]
         pts += [self.paper[s.point] for s in self.m.slides
                 if s.guide_link == number and _is_slot(s)]
+        pts += [t.root for t in self.tracks if t.arc.guide_link == number]
         return pts
 
     def slotted(self, number: int) -> bool:
@@ -198,22 +292,43 @@ class _Diagram:
         return (p[0] + lift * ux, p[1] + lift * uy)
 
     def draw_contacts(self) -> None:
-        """Draw each cam circle, its flat face and the contact point P (dots, not pins)."""
+        """Draw each cam circle, its flat face or second circle, and P (dots, not pins).
+
+        A face on the frame that a wheel rolls on is the ground: it is hatched.
+        """
         for k in self.contacts:
-            c, r = self.view(k.centre), k.radius * self.view.scale
-            self.fig.add(Circle(c, r, "link"))
-            self.placer.block(SPoint(c).buffer(r + 0.6).difference(SPoint(c).buffer(r - 0.6)))
+            self.draw_circle(k.centre, k.radius)
             # Past its own point only if that is a bare dot (under a block), not a pivot.
             margin = _FACE_MARGIN if self.marked(k.slide.contact.face.through) else 0.0
             a, b = (self.view(e) for e in k.face(margin / self.view.scale))
-            self.fig.line(a, b, "link")
+            if k.slide.rolling and k.slide.guide_link == 1:
+                self.placer.block(draw_guide(self.fig, a, b, self.view.direction(k.away)))
+            else:
+                self.fig.line(a, b, "link")
             self.placer.block_segment(a, b, 0.6)
-            dots = [self.view(k.point)] + [self.paper[n] for n in
-                                           (k.slide.point, k.slide.contact.face.through)
-                                           if self.marked(n)]
-            for at in dots:
-                self.fig.add(Circle(at, _DOT, "arrowhead"))  # a filled dot
-                self.placer.block(SPoint(at).buffer(_DOT + 0.3))
+            self.draw_dot(self.view(k.point))
+            for n in (k.slide.point, k.slide.contact.face.through):
+                if self.marked(n):
+                    self.draw_dot(self.paper[n])
+        for k in self.pairs:
+            self.draw_circle(k.cam, k.cam_radius)
+            self.draw_circle(k.roller, k.roller_radius)
+            self.draw_dot(self.view(k.point))
+        # A cam's centre and a centre of curvature are bare dots, unless a link is pinned there.
+        for n in dict.fromkeys(a.centre for a in self.m.arcs):
+            if self.marked(n):
+                self.draw_dot(self.paper[n])
+
+    def draw_circle(self, centre: tuple[float, float], radius: float) -> None:
+        """A circular profile (world centre and radius) as a link outline."""
+        c, r = self.view(centre), radius * self.view.scale
+        self.fig.add(Circle(c, r, "link"))
+        self.placer.block(SPoint(c).buffer(r + 0.6).difference(SPoint(c).buffer(r - 0.6)))
+
+    def draw_dot(self, at: tuple[float, float]) -> None:
+        """A marked point on paper that is not a joint: a small filled dot."""
+        self.fig.add(Circle(at, _DOT, "arrowhead"))
+        self.placer.block(SPoint(at).buffer(_DOT + 0.3))
 
     def draw_frame_guides(self) -> None:
         centre = _centroid([self.paper[n] for n in self.m.frame.names])
@@ -237,6 +352,32 @@ class _Diagram:
             band = draw_guide(self.fig, a, b, side)
             self.placer.block(band.buffer(0.3))
             self.placer.block_segment(a, b)
+        for t in self.tracks:
+            if t.arc.guide_link == 1:
+                self.draw_track(t)
+
+    def draw_track(self, t: _Track) -> None:
+        """A curved slot (an outline), or a guide: hatched on the frame, the link's arc if not.
+
+        A frame guide is offset by half the block's height to the side away from the
+        frame's other points, as a straight guide is.
+        """
+        a = t.arc
+        if a.kind is SlideKind.PIN:
+            style = "guide" if a.guide_link == 1 else "link"
+            shape = draw_curved_slot(self.fig, t.centre, t.radius, t.start, t.sweep,
+                                     _SLOT_WIDTH, style)
+        elif a.guide_link == 1:
+            others = [self.paper[n] for n in self.m.frame.names if n != a.centre]
+            inside = math.dist(_centroid(others or [self.paper[a.point]]), t.centre) < t.radius
+            side = 1.0 if inside else -1.0
+            shape = draw_curved_guide(self.fig, t.centre, t.radius + side * _BLOCK[1] / 2,
+                                      t.start, t.sweep, side)
+        else:
+            rim = arc_points(t.centre, t.radius, t.start, t.sweep)
+            self.fig.add(Path(tuple(rim), "link"))
+            shape = MultiPoint(rim).convex_hull
+        self.placer.block(shape.buffer(0.5))
 
     def travel(self, point: str, d: tuple[float, float]) -> float:
         """A guide long enough to look like a guide: the drawing's width along it."""
@@ -246,13 +387,13 @@ class _Diagram:
 
     def draw_ground_pivots(self) -> None:
         for name in self.m.frame.names:
-            moving = [k for k in self.m.links_at(name) if k != 1]
+            moving = [k for k in self.links_at(name) if k != 1]
             if not moving:
                 continue
             at = self.paper[name]
             dirs = []
             for k in moving:
-                for other in self.m.link(k).names:
+                for other in self.names(k):
                     if other != name:
                         dirs.append(unit(_sub(self.paper[other], at)))
                 for s in self.m.slides:
@@ -266,8 +407,11 @@ class _Diagram:
         for k in self.m.links:
             if k.number == 1:
                 continue
+            for t in self.tracks:
+                if t.arc.guide_link == k.number:
+                    self.draw_track(t)
             slotted = self.slotted(k.number)
-            pts = self.slot_reach(k.number) if slotted else [self.paper[n] for n in k.names]
+            pts = self.slot_reach(k.number)
             if len(pts) < 2:
                 continue
             hull = MultiPoint(pts).convex_hull
@@ -299,11 +443,17 @@ class _Diagram:
             d = unit(self.view.direction(self.asm.guide(i).direction))
             shape = draw_block(self.fig, self.block_centre(s), d, *_BLOCK)
             self.placer.block(shape)
+        for t in self.tracks:
+            if t.arc.kind is SlideKind.BLOCK:  # tangent to its arc, square to the radius
+                at = self.paper[t.arc.point]
+                self.placer.block(draw_block(self.fig, at, _tangent(_angle(t.centre, at)),
+                                             *_BLOCK))
 
     def draw_pins(self) -> None:
         for name, at in self.paper.items():
-            on = self.m.links_at(name)
-            slid = any(s.point == name and _is_slot(s) for s in self.m.slides)
+            on = self.links_at(name)
+            slid = (any(s.point == name and _is_slot(s) for s in self.m.slides)
+                    or any(a.point == name and a.kind is SlideKind.PIN for a in self.m.arcs))
             if 1 in on or self.marked(name):
                 continue  # drawn with its ground symbol, or as a dot
             if len(on) >= 2 or slid:
@@ -311,9 +461,10 @@ class _Diagram:
                 self.placer.block(SPoint(at).buffer(PIN_RADIUS + 0.4))
 
     def marked(self, name: str) -> bool:
-        """True for a point drawn as a dot: a circle's centre or a face's point, not a joint."""
-        return len(self.m.links_at(name)) < 2 and any(
-            name in (k.slide.point, k.slide.contact.face.through) for k in self.contacts)
+        """True for a point drawn as a bare dot: a circle's or arc's centre, a face's point."""
+        return len(self.links_at(name)) < 2 and (
+            any(name in (k.slide.point, k.slide.contact.face.through) for k in self.contacts)
+            or any(a.centre == name for a in self.m.arcs))
 
     def draw_input(self) -> None:
         d = self.m.drive
@@ -342,7 +493,7 @@ class _Diagram:
             if k.number == 1:
                 continue
             slotted = self.slotted(k.number)
-            pts = self.slot_reach(k.number) if slotted else [self.paper[n] for n in k.names]
+            pts = self.slot_reach(k.number)
             if len(pts) == 1:
                 at, prefer = pts[0], math.pi / 2
                 gap = 4.2
@@ -367,7 +518,7 @@ class _Diagram:
             prefer = prefer if isinstance(prefer, tuple) else (prefer, prefer + math.pi)
             self.placer.place(str(k.number), at, prefer=prefer,
                               spread=math.pi / 4, gap=gap, size=3.4, italic=False)
-        pivots = [n for n in self.m.frame.names if len(self.m.links_at(n)) > 1]
+        pivots = [n for n in self.m.frame.names if len(self.links_at(n)) > 1]
         if pivots:
             self.placer.place("1", self.paper[pivots[0]], prefer=-math.pi / 2, gap=7.5,
                               size=3.4, italic=False)
@@ -378,12 +529,17 @@ class _Diagram:
             away = _sub(at, centre)
             prefer = math.atan2(-away[1], away[0]) if math.hypot(*away) > 1e-6 else math.pi / 4
             self.placer.place(subscript(name), at, prefer=prefer, gap=2.0, size=3.6)
-        for k in self.contacts:
-            # P goes beside the face, off the common normal that runs through it.
-            d = self.view.direction(k.away)
+        # P goes beside the contact, off the common normal that runs through it; between
+        # two circles, out along the tangent in the gap that opens between them.
+        for point, normal, spread, rings in (
+                [(k.point, k.away, math.pi, (1.0, 1.6, 2.3)) for k in self.contacts]
+                + [(k.point, k.normal, math.pi / 8, (1.0, 1.6, 2.3, 3.2, 4.2))
+                   for k in self.pairs]):
+            d = self.view.direction(normal)
             along = (-d[1], d[0])
             prefer = tuple(math.atan2(-v[1], v[0]) for v in (along, (-along[0], -along[1])))
-            self.placer.place("P", self.view(k.point), prefer=prefer, gap=1.6, size=3.6)
+            self.placer.place("P", self.view(point), prefer=prefer, spread=spread, gap=1.6,
+                              size=3.6, rings=rings)
 
 
 # ----- small helpers ---------------------------------------------------------------------
@@ -394,6 +550,16 @@ def _is_slot(s: Slide) -> bool:
 
 def _sub(p, q):
     return (p[0] - q[0], p[1] - q[1])
+
+
+def _angle(centre, p) -> float:
+    """The paper angle (rad, CCW as seen) of ``p`` about ``centre``."""
+    return math.atan2(centre[1] - p[1], p[0] - centre[0])
+
+
+def _tangent(angle: float) -> tuple[float, float]:
+    """The paper direction along a circle at ``angle``, the way the angle grows."""
+    return (-math.sin(angle), -math.cos(angle))
 
 
 def _centroid(pts):

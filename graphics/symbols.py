@@ -10,7 +10,7 @@ import math
 
 from shapely.geometry import LineString, MultiLineString, Polygon
 
-from .figure import Circle, Figure, Path, Text
+from .figure import Circle, Figure, Path, Text, arc_points
 
 __all__ = [
     "PIN_RADIUS",
@@ -18,6 +18,8 @@ __all__ = [
     "draw_ground_pivot",
     "draw_hatched_band",
     "draw_guide",
+    "draw_curved_guide",
+    "draw_curved_slot",
     "draw_block",
     "draw_arrowhead",
     "draw_turning_arrow",
@@ -50,14 +52,20 @@ def draw_hatched_band(fig: Figure, a: tuple[float, float], b: tuple[float, float
     sx, sy = unit(side)
     band = Polygon([a, b, (b[0] + depth * sx, b[1] + depth * sy),
                     (a[0] + depth * sx, a[1] + depth * sy)])
-    x0, y0, x1, y1 = band.bounds
-    # 45° lines x + y = c on paper (they rise to the right, as "/"), clipped to the band.
-    step = _HATCH_PITCH * math.sqrt(2.0)
-    lines = []
-    c = x0 + y0 + step / 2
-    while c < x1 + y1:
-        lines.append(((c - y0 + 1.0, y0 - 1.0), (c - y1 - 1.0, y1 + 1.0)))
-        c += step
+    return _hatch(fig, band)
+
+
+def _hatch(fig: Figure, band: Polygon, lines: list | None = None) -> Polygon:
+    """Draw ``lines`` clipped to ``band`` (by default 45° hatching across it); return it."""
+    if lines is None:
+        x0, y0, x1, y1 = band.bounds
+        # 45° lines x + y = c on paper (they rise to the right, as "/").
+        step = _HATCH_PITCH * math.sqrt(2.0)
+        lines = []
+        c = x0 + y0 + step / 2
+        while c < x1 + y1:
+            lines.append(((c - y0 + 1.0, y0 - 1.0), (c - y1 - 1.0, y1 + 1.0)))
+            c += step
     clipped = MultiLineString(lines).intersection(band)
     for seg in getattr(clipped, "geoms", [clipped]):
         if isinstance(seg, LineString) and not seg.is_empty and seg.length > 0.2:
@@ -99,6 +107,49 @@ def draw_guide(fig: Figure, a: tuple[float, float], b: tuple[float, float],
     band = draw_hatched_band(fig, a, b, side, depth=1.8)
     fig.line(a, b, "guide")
     return band
+
+
+def draw_curved_guide(fig: Figure, centre: tuple[float, float], radius: float, start: float,
+                      sweep: float, side: float) -> Polygon:
+    """A fixed circular guide about ``centre`` (paper angles, rad, CCW as seen).
+
+    It is hatched outside the arc for ``side`` > 0 and inside it otherwise, as
+    :func:`draw_guide` hatches a straight one on its far side. The strokes lean 45°
+    to the radius, not to the page, so none runs along the arc where it curves.
+    """
+    depth = math.copysign(1.8, side)
+    rim = arc_points(centre, radius, start, sweep)
+    back = arc_points(centre, radius + depth, start + sweep, -sweep)
+    step = _HATCH_PITCH * math.sqrt(2.0) / radius
+    strokes = []
+    for i in range(int(abs(sweep) / step) + 2):
+        a = start + math.copysign(i * step, sweep)
+        p = (centre[0] + radius * math.cos(a), centre[1] - radius * math.sin(a))
+        # Out along the radius by the depth and on along the arc by as much: 45°.
+        q = (p[0] + 1.5 * depth * (math.cos(a) - math.sin(a)),
+             p[1] - 1.5 * depth * (math.sin(a) + math.cos(a)))
+        strokes.append((p, q))
+    band = _hatch(fig, Polygon(rim + back), strokes)
+    fig.add(Path(tuple(rim), "guide"))
+    return band
+
+
+def draw_curved_slot(fig: Figure, centre: tuple[float, float], radius: float, start: float,
+                     sweep: float, half_width: float, style: str = "link") -> Polygon:
+    """A curved slot: its outline ``half_width`` either side of the arc, with round ends.
+
+    The ends are half circles about the arc's ends, as a milled slot has.
+    """
+    turn = math.copysign(math.pi, sweep)
+    end = start + sweep
+    ends = [(centre[0] + radius * math.cos(a), centre[1] - radius * math.sin(a))
+            for a in (start, end)]
+    ring = (arc_points(centre, radius + half_width, start, sweep)
+            + arc_points(ends[1], half_width, end, turn)
+            + arc_points(centre, radius - half_width, end, -sweep)
+            + arc_points(ends[0], half_width, start + math.pi, turn))
+    fig.add(Path(tuple(ring), style, closed=True))
+    return Polygon(ring)
 
 
 def draw_block(fig: Figure, centre: tuple[float, float], along: tuple[float, float],

@@ -137,3 +137,12 @@ def four_bar_toml(*, ground=300, crank=100, coupler=250, rocker=200, angle=60,
     assembly = f"\n[assembly]\n{branch}\n" if branch else ""
     return FOUR_BAR_TOML.format(ground=ground, crank=crank, coupler=coupler, rocker=rocker,
                                 angle=angle, assembly=assembly)
+
+
+def coupler_four_bar(theta2, *, omega2=2.0):
+    """The peers.md four-bar with a coupler point C off AB and D on AB (beyond B)."""
+    m = four_bar(theta2, omega2=omega2)
+    coupler = Link(3, (("A", (0.0, 0.0)), ("B", (0.25, 0.0)), ("C", (0.1, 0.08)),
+                       ("D", (0.32, 0.0))), "coupler")
+    links = tuple(coupler if k.number == 3 else k for k in m.links)
+    return Mechanism(links, m.drive, m.slides, dict(m.branches), m.units, "coupler four-bar")

@@ -25,6 +25,7 @@ from constructions.assembly import Assembly, assemble
 from constructions.centres import ILL_CONDITIONED, Centres, locate_centres, omega_ratio
 from constructions.errors import DegenerateInput, TarsimError
 from constructions.model import Drive, Link, Mechanism, SlideKind, Units
+from constructions.record import slice as backward_slice
 from exercises.mechanism_file import load_mechanism, parse_mechanism
 from tests.common import (crank_shaper, four_bar, four_bar_toml, offset_slider_crank,
                           scotch_yoke, slotted_lever_p37)
@@ -585,3 +586,22 @@ def test_random_crank_rockers_match_the_reference(mech):
     except SingularPosition:
         assume(False)
     check_all(s)
+
+
+def test_when_every_kennedy_line_coincides_rule_2_draws_the_velocity_profiles():
+    """Crank-shaper at θ2 = 90°: every finite centre is on the y-axis, so I25 comes from
+    the links' velocity profiles along that line (notes' rule 2), not from two lines."""
+    m = crank_shaper(math.radians(90))
+    asm = assemble(m)
+    cs = locate_centres(asm)
+    c = cs.centre(2, 5)
+    assert c.rule == "velocities"
+    kin = solve(m)
+    assert centre_error(cs.point(2, 5), instant_centre(kin, 2, 5), asm.size) < 1e-15
+    steps = backward_slice(asm.construction, [c.ref])
+    verbs = [asm.construction[r].verb for r in steps if r.startswith("rule2:")]
+    assert verbs.count("lay_off") == 3          # X and the two velocity tips
+    assert "intersect_lines" in verbs            # the profiles cross
+    # both ground centres feed the profiles: I12 (a pin) and I15 (at infinity, a parallel)
+    assert {"I:12", "I:15"} <= set(steps)
+    assert asm.construction[c.ref].verb == "project_onto"

@@ -12,8 +12,10 @@ import re
 import subprocess
 import sys
 import xml.etree.ElementTree as ET
+from pathlib import Path as FilePath
 
 import pytest
+from shapely.geometry import Point as SPoint, Polygon
 
 from constructions.assembly import assemble
 from exercises.catalog import bundled
@@ -24,6 +26,7 @@ from graphics.figure import Circle, Path
 from graphics.svg import to_svg
 
 SVG = "{http://www.w3.org/2000/svg}"
+DATA = FilePath(__file__).parent / "data"
 
 # The bundled four-bar with a 3-4-5-scaled plate for its coupler: AB = 250, AC = 200,
 # BC = 150 mm, C left of A → B.
@@ -39,6 +42,8 @@ EXAMPLES = [*bundled(), "plate-coupler"]
 def mechanism(name):
     if name == "plate-coupler":
         return parse_mechanism(PLATE, "plate-coupler.toml")
+    if name.endswith(".toml"):
+        return load_mechanism(DATA / name)
     return load_mechanism(bundled()[name])
 
 
@@ -47,7 +52,8 @@ class Drawn:
 
     def __init__(self, name):
         self.mech = mechanism(name)
-        self.fig = draw_kinematic_diagram(assemble(self.mech))
+        self.asm = assemble(self.mech)
+        self.fig = draw_kinematic_diagram(self.asm)
         self.svg = to_svg(self.fig)
         self.root = ET.fromstring(self.svg)
 
@@ -67,6 +73,31 @@ class Drawn:
         (m,) = [re.fullmatch(r"Scale 1 cm = ([\d.]+) (\w+)", t) for t in self.texts
                 if t.startswith("Scale ")]
         return float(m.group(1)), m.group(2)
+
+    @property
+    def mm_per_metre(self):
+        """Paper mm per world metre, from the stated scale."""
+        n, _ = self.stated_scale()
+        return 10.0 / (n * self.mech.units.metres)
+
+    def paper(self, name_or_xy):
+        """Where a point (a name or world xy) is on the page: the stated scale, laid off from
+        the θ reference, which starts at the input link's pivot."""
+        (ref,) = self.items(Path, "reference")
+        o = self.asm.xy(self.mech.link(self.mech.drive.link).names[0])
+        x, y = self.asm.xy(name_or_xy) if isinstance(name_or_xy, str) else name_or_xy
+        s = self.mm_per_metre
+        return (ref.points[0][0] + s * (x - o[0]), ref.points[0][1] - s * (y - o[1]))
+
+    def items(self, cls, style):
+        return [it for it in self.fig.items if isinstance(it, cls) and it.style == style]
+
+    def at(self, cls, style, p, tol=1e-6):
+        """The ``style`` circles centred at paper point ``p``, or paths with an end there."""
+        if cls is Circle:
+            return [c for c in self.items(Circle, style) if math.dist(c.centre, p) < tol]
+        return [q for q in self.items(Path, style)
+                if min(math.dist(q.points[0], p), math.dist(q.points[-1], p)) < tol]
 
 
 @pytest.fixture(scope="module", params=EXAMPLES)
@@ -285,3 +316,101 @@ def test_png_renders_and_is_not_blank(drawn):
     inked = sum(hist[:250]) / sum(hist)
     # A thin-line drawing: a few percent of the page, never empty and never a black page.
     assert 0.01 < inked < 0.60, inked
+
+
+# ----- curved guides, curved slots, circle contacts, rolling --------------------------------
+def test_a_block_on_a_curved_guide_rides_a_hatched_arc_with_its_centre_a_bare_dot():
+    d = Drawn("curved-guide-slider-crank.toml")
+    (arc,) = d.mech.arcs
+    b, c = d.paper(arc.point), d.paper(arc.centre)
+    # The block's stand-in pin at the centre is no part of the figure: no bar B–C, no
+    # pin or ground pivot at C (the one ground symbol is O2's), only a dot.
+    assert not [q for q in d.at(Path, "link", b)
+                if min(math.dist(e, c) for e in q.points) < 1e-6]
+    assert not d.at(Circle, "pin", c) and d.at(Circle, "pin", b)
+    assert len(d.items(Path, "ground")) == 1 and d.at(Circle, "arrowhead", c)
+    # The guide is an arc about C, half the block's height (2.5 mm) off B's path.
+    r = arc.radius * d.mm_per_metre
+    (guide,) = d.items(Path, "guide")
+    offs = [math.dist(p, c) - r for p in guide.points]
+    assert offs == pytest.approx([offs[0]] * len(offs), abs=1e-9)
+    assert abs(offs[0]) == pytest.approx(2.5, abs=1e-9)
+    assert any(math.dist(p, b) < 25.0 for p in guide.points)  # round the block, not elsewhere
+    # Hatched on its far side from B, in the band 1.8 mm deep.
+    side = math.copysign(1.0, offs[0])
+    hatch = [p for h in d.items(Path, "hatch") for p in h.points
+             if abs(math.dist(p, c) - r) < 5.0]
+    assert len(hatch) > 20
+    # (The band is a polygon of 1.2 mm chords, so it cuts inside the arc by up to 0.002 mm.)
+    assert all(-0.01 <= side * (math.dist(p, c) - r - offs[0]) <= 1.8 + 0.01 for p in hatch)
+    # The block stands at B tangent to the arc: its long sides square to the radius CB.
+    (block,) = d.items(Path, "block")
+    corners = block.points
+    assert math.dist(_centroid(corners), b) < 1e-9
+    e = max(((p, q) for p, q in zip(corners, corners[1:] + corners[:1])),
+            key=lambda pq: math.dist(*pq))
+    along = (e[1][0] - e[0][0], e[1][1] - e[0][1])
+    assert abs(along[0] * (b[0] - c[0]) + along[1] * (b[1] - c[1])) < 1e-9 * r * r
+    assert "C" in d.texts
+
+
+def test_a_roller_on_a_circular_cam_is_two_circles_touching_at_p():
+    d = Drawn("roller-cam.toml")
+    (arc,) = d.mech.arcs
+    s = d.mm_per_metre
+    cam, roller = d.paper(arc.centre), d.paper(arc.point)
+    circles = d.items(Circle, "link")
+    for centre, radius in ((cam, arc.contact.face.radius), (roller, arc.contact.circle.radius)):
+        assert [c for c in circles if math.dist(c.centre, centre) < 1e-6
+                and c.radius == pytest.approx(radius * s, rel=1e-12)], radius
+    # P is on the line of centres, on the cam's rim: the circles' radii add to CR.
+    assert math.dist(cam, roller) == pytest.approx(
+        (arc.contact.face.radius + arc.contact.circle.radius) * s, rel=1e-9)
+    f = arc.contact.face.radius * s / math.dist(cam, roller)
+    p = (cam[0] + f * (roller[0] - cam[0]), cam[1] + f * (roller[1] - cam[1]))
+    assert d.at(Circle, "arrowhead", p) and "P" in d.texts
+    # The roller's centre is the follower's pin; the cam's centre, no joint, is a dot.
+    assert d.at(Circle, "pin", roller) and not d.at(Circle, "pin", cam)
+    assert d.at(Circle, "arrowhead", cam)
+
+
+def test_a_pin_in_a_curved_slot_sits_in_a_slot_about_k_carried_by_the_lever():
+    d = Drawn("curved-slot.toml")
+    (arc,) = d.mech.arcs
+    k, a = d.paper(arc.centre), d.paper(arc.point)
+    r = arc.radius * d.mm_per_metre
+    lever = d.mech.link(arc.guide_link)
+    pivot = d.paper(lever.names[0])
+    # The slot: a closed outline within a pin's width of the arc about K, round the pin.
+    slots = [q for q in d.items(Path, "link") if q.closed]
+    (slot,) = slots
+    assert all(abs(math.dist(p, k) - r) <= 1.6 + 1e-9 for p in slot.points)
+    assert Polygon(slot.points).contains(SPoint(a).buffer(1.25))
+    assert d.at(Circle, "pin", a)
+    # The lever runs from its pivot to the slot, not to K, which is a bare dot.
+    (bar,) = d.at(Path, "link", pivot)
+    end = bar.points[-1] if math.dist(bar.points[0], pivot) < 1e-6 else bar.points[0]
+    assert abs(math.dist(end, k) - r) == pytest.approx(1.6, abs=1e-9)
+    assert not d.at(Path, "link", k) and not d.at(Circle, "pin", k)
+    assert d.at(Circle, "arrowhead", k)
+
+
+def test_the_ground_a_wheel_rolls_on_is_hatched_on_the_far_side():
+    d = Drawn("rolling-wheel.toml")
+    (s,) = d.mech.slides
+    g, wheel = d.paper(s.contact.face.through), d.paper(s.point)
+    (ground,) = d.items(Path, "guide")
+    ys = [p[1] for p in ground.points]
+    assert ys == pytest.approx([g[1]] * 2, abs=1e-9)  # the face through G, level
+    lo, hi = sorted(p[0] for p in ground.points)
+    assert lo <= wheel[0] <= hi
+    # The wheel stands above the face (paper y grows down), so the hatching is below it.
+    assert wheel[1] < g[1]
+    hatch = [p for h in d.items(Path, "hatch") for p in h.points if lo - 1 <= p[0] <= hi + 1
+             and abs(p[1] - g[1]) < 3.0]
+    assert len(hatch) > 40
+    assert all(g[1] - 1e-6 <= p[1] <= g[1] + 1.8 + 1e-6 for p in hatch)
+
+
+def _centroid(pts):
+    return (sum(p[0] for p in pts) / len(pts), sum(p[1] for p in pts) / len(pts))

@@ -464,13 +464,16 @@ def test_a_contact_radius_is_in_the_files_unit():
                                          "did you mean 'radius'?"]),
     ('side = "right"', 'sied = "right"', 19, ["unknown contact setting 'sied'",
                                                "did you mean 'side'?"]),
-    # only a circle on a flat face
+    # a circle on a face or on a circle, never a mixture
     ('face = { link = 3, through = "F", angle = -90 }', 'face = { link = 3, centre = "F", '
-     'radius = 10 }', 18, ["the face of link 3 is given a centre and a radius",
-                          "only a circle on a flat face", "roller", "roller's centre"]),
+     'radius = 10 }', 19, ["unknown side 'right'", "outside, inside"]),
+    ('face = { link = 3, through = "F", angle = -90 }', 'face = { link = 3, centre = "F", '
+     'radius = 10, angle = 0 }', 18, ["the face of link 3 is given both a centre and radius",
+                                     "give one"]),
     ('circle = { link = 2, centre = "C", radius = 40 }', 'circle = { link = 2, through = "C", '
      'angle = 0 }', 17, ["the circle of link 2 is given a point and an angle",
-                        "only a circle on a flat face"]),
+                        "a circle (centre and radius) on a face or on another circle"]),
+    ('side = "right"', 'side = "right"\nrolling = 1', 20, ["rolling must be true or false"]),
 ])
 def test_contact_errors_name_the_link_and_what_is_missing(old, new, line, words):
     e = parse_error(edit(CAM, old, new))

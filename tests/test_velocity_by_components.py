@@ -25,21 +25,12 @@ from constructions.record import slice as backward_slice
 from constructions.velocity_by_components import velocity_by_components
 from exercises.catalog import bundled
 from exercises.mechanism_file import load_mechanism, parse_mechanism
-from tests.common import (crank_shaper, four_bar, four_bar_toml, offset_slider_crank,
-                          scotch_yoke, slotted_lever_p37)
+from tests.common import (coupler_four_bar, crank_shaper, four_bar, four_bar_toml,
+                          offset_slider_crank, scotch_yoke, slotted_lever_p37)
 
 EPS = 2.220446049250313e-16
 MM = 1e-3
 DATA = Path(__file__).parent / "data"
-
-
-def coupler_four_bar(theta2, *, omega2=2.0):
-    """The peers.md four-bar with a coupler point C off AB and D on AB (beyond B)."""
-    m = four_bar(theta2, omega2=omega2)
-    coupler = Link(3, (("A", (0.0, 0.0)), ("B", (0.25, 0.0)), ("C", (0.1, 0.08)),
-                       ("D", (0.32, 0.0))), "coupler")
-    links = tuple(coupler if k.number == 3 else k for k in m.links)
-    return Mechanism(links, m.drive, m.slides, dict(m.branches), m.units, "coupler four-bar")
 
 
 def seed_slider_crank():
