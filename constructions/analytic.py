@@ -209,19 +209,10 @@ def dof(mech: Mechanism) -> int:
     1
     """
     f1 = sum(max(0, len(mech.links_at(n)) - 1) for n in mech.point_names)
-    f1 += sum(1 for s in mech.slides if s.kind is SlideKind.BLOCK or _rolls(s))
-    f2 = sum(1 for s in mech.slides if s.kind is SlideKind.PIN and not _rolls(s))
-    f2 += sum(1 for a in _pin_arcs(mech))
+    f1 += sum(1 for s in mech.slides if s.kind is SlideKind.BLOCK or s.rolling)
+    f2 = sum(1 for s in mech.slides if s.kind is SlideKind.PIN and not s.rolling)
+    f2 += len(mech.pin_arcs)
     return 3 * (len(mech.links) - 1) - 2 * f1 - f2
-
-
-def _rolls(s: Slide) -> bool:
-    return s.contact is not None and s.contact.rolling
-
-
-def _pin_arcs(mech: Mechanism) -> list[Arc]:
-    """The arcs that constrain: a curved block is already its pin at the centre."""
-    return [a for a in mech.arcs if a.kind is SlideKind.PIN]
 
 
 # ----------------------------------------------------------------------------- closed form
@@ -274,7 +265,7 @@ class _Assembly:
                     self.phi[s.guide_link] = self.phi[s.link] - off
                     changed = True
             for s in self.m.slides:
-                if _rolls(s) and s.link not in self.phi and s.guide_link in self.pose \
+                if s.rolling and s.link not in self.phi and s.guide_link in self.pose \
                         and s.point in self.at:
                     origin, phi = self.pose[s.guide_link]
                     d = _rot(phi) @ _unit(s.direction)
@@ -339,7 +330,7 @@ class _Assembly:
                 r = float(np.linalg.norm(self.loc[k, name] - self.loc[k, known[0]]))
                 if r > 0.0:
                     out.append((k, known[0], r))
-        for a in _pin_arcs(self.m):
+        for a in self.m.pin_arcs:
             for here, there, k in ((a.point, a.centre, a.guide_link),
                                    (a.centre, a.point, a.link)):
                 if here == name and there in self.at:
@@ -486,8 +477,8 @@ class _System:
         # the direction turned −90° (cross(S⁻¹D, e) = D·e), plus σ r (φ_wheel − φ_face).
         self.rolls = [(s, through, np.array([d[1], -d[0]]),
                        s.contact.roll_sign * s.contact.circle.radius)
-                      for s, through, d, _ in self.slides if _rolls(s)]
-        self.arcs = _pin_arcs(mech)
+                      for s, through, d, _ in self.slides if s.rolling]
+        self.arcs = mech.pin_arcs
         is_len = [True] * (2 * len(self.pins))
         for s, *_ in self.slides:
             is_len += [True, False] if s.kind is SlideKind.BLOCK else [True]
@@ -585,6 +576,7 @@ class _System:
             (_, fi), (_, fj) = self.state(q, i), self.state(q, j)
             wi, wj = self.state(qd, i)[1], self.state(qd, j)[1]
             out += list(_rot(fi) @ self.loc[i, n] * wi ** 2 - _rot(fj) @ self.loc[j, n] * wj ** 2)
+
         def line_gamma(s: Slide, through, d) -> float:
             p, g, dg, arm_l, arm_g = self._slide_terms(q, s, through, d)
             (vl, wl), (vg, wg) = self.state(qd, s.link), self.state(qd, s.guide_link)

@@ -24,10 +24,10 @@ from .errors import AssemblyError, DegenerateInput, NoIntersection, TarsimError
 from .model import Arc, Mechanism, Slide, SlideKind
 from .record import VERBS, Construction, Ref, Role
 
-__all__ = ["Assembly", "assemble", "point_ref", "arc_why"]
+__all__ = ["Assembly", "assemble", "point_ref"]
 
 
-def arc_why(a: Arc) -> str:
+def _arc_why(a: Arc) -> str:
     """Why a point keeps its distance: "the roller's centre stays r1 + r2 from the cam's"."""
     c = a.contact
     if c is None:
@@ -263,12 +263,10 @@ class _Assembler:
                 x = self.one_known(n)
                 r = self.m.link(n).span(x, name)
                 out.append((n, x, r, f"{x}{name} = {self.L(r)}"))
-        for a in self.m.arcs:
-            if a.kind is not SlideKind.PIN:
-                continue
+        for a in self.m.pin_arcs:
             for here, there, k in ((a.point, a.centre, a.guide_link), (a.centre, a.point, a.link)):
                 if here == name and there in self.known:
-                    out.append((k, there, a.radius, f"{self.L(a.radius)}, as {arc_why(a)}"))
+                    out.append((k, there, a.radius, f"{self.L(a.radius)}, as {_arc_why(a)}"))
         return sorted(out)
 
     def two_arcs(self) -> bool:
@@ -382,14 +380,15 @@ class _Assembler:
             turn = -rolled / (s.contact.roll_sign * r)
             wheel = phi + turn
             k = self.m.link(s.link)
+            sense = "clockwise" if turn < 0 else "counter-clockwise"
             self.axes[s.link] = self.c.give(
                 f"axis:{s.link}", g.Line(-math.sin(wheel), math.cos(wheel),
                                          math.sin(wheel) * px - math.cos(wheel) * py),
                 label=f"link {s.link}",
                 sentence=f"{k.label.capitalize()} rolls without slip: its centre {s.point} stands "
                          f"{self.L(abs(rolled))} from where it started, so it has turned "
-                         f"{self.angle_text(abs(turn))} {'clockwise' if turn < 0 else 'counter-clockwise'}"
-                         f" ({self.L(abs(rolled))} ÷ r = {self.L(r)}); draw its axis through "
+                         f"{self.angle_text(abs(turn))} {sense} ({self.L(abs(rolled))} ÷ r = "
+                         f"{self.L(r)}); draw its axis through "
                          f"{s.point}.")
             return True
         return False

@@ -66,9 +66,10 @@ class Centre:
 
     ``rule`` is ``"pin"``, ``"block"`` (at infinity, perpendicular to a straight
     guide), ``"curved"`` (a block on a curved guide: the centre of curvature),
-    ``"rolling"`` (the contact point of a wheel rolling without slip), ``"kennedy"``, or ``"velocities"`` (on its one Kennedy line where the
-    two links' velocities agree, when every triangle gives that same line). ``lines`` are the refs of the two lines it was cut
-    from, and ``triangles`` the third link of each triangle (``None`` for the
+    ``"rolling"`` (the contact point of a wheel rolling without slip),
+    ``"kennedy"``, or ``"velocities"`` (rule 2 on its one Kennedy line, where the
+    two links' velocities agree, when every triangle gives that same line).
+    ``lines`` are the refs of the two lines it was cut from, and ``triangles`` the third link of each triangle (``None`` for the
     common normal of a pin in a slot or a contact). ``order`` numbers the
     secondaries in discovery order (0 for a primary).
     """
@@ -207,9 +208,9 @@ class _Kennedy:
                                            f"{s.point}: through {s.point} draw the perpendicular "
                                            f"to the {what} of link {s.guide_link}.")
                 self.out.loci.setdefault((i, j), []).append(ref)
-        for k, a in enumerate(self.m.arcs):
+        for k, a in enumerate(self.m.pin_arcs):
             i, j = sorted((a.link, a.guide_link))
-            if a.kind is SlideKind.BLOCK or (i, j) in self.out.found:
+            if (i, j) in self.out.found:
                 continue
             what = ("the line of centres of the two circles" if a.contact is not None
                     else f"the radius of the curved slot of link {a.guide_link}")

@@ -210,10 +210,7 @@ class Arc:
     @property
     def label(self) -> str:
         """How messages name the joint."""
-        if self.contact is not None:
-            return self.contact.label
-        what = "block" if self.kind is SlideKind.BLOCK else "pin"
-        return f"{what} {self.point} of link {self.link} on the curved guide of link {self.guide_link}"
+        return _joint_label(self, f"the curved guide of link {self.guide_link}")
 
 
 @dataclass(frozen=True, slots=True)
@@ -237,15 +234,20 @@ class Slide:
     @property
     def label(self) -> str:
         """How messages name the joint."""
-        if self.contact is not None:
-            return self.contact.label
-        what = "block" if self.kind is SlideKind.BLOCK else "pin"
-        return f"{what} {self.point} of link {self.link} on link {self.guide_link}"
+        return _joint_label(self, f"link {self.guide_link}")
 
     @property
     def rolling(self) -> bool:
         """True for a wheel rolling without slip on a face (see :class:`Contact`)."""
         return self.contact is not None and self.contact.rolling
+
+
+def _joint_label(joint: Arc | Slide, on: str) -> str:
+    """"block B of link 4 on link 1", or the contact's own name for a contact's equivalent."""
+    if joint.contact is not None:
+        return joint.contact.label
+    what = "block" if joint.kind is SlideKind.BLOCK else "pin"
+    return f"{what} {joint.point} of link {joint.link} on {on}"
 
 
 def contact_slide(contact: Contact, face_link: Link) -> Slide:
@@ -387,9 +389,14 @@ class Mechanism:
         pins = sum(max(0, len(self.links_at(p)) - 1) for p in self.point_names)
         blocks = sum(1 for s in self.slides if s.kind is SlideKind.BLOCK or s.rolling)
         f2 = sum(1 for s in self.slides if s.kind is SlideKind.PIN and not s.rolling)
-        f2 += sum(1 for a in self.arcs if a.kind is SlideKind.PIN)
+        f2 += len(self.pin_arcs)
         f1 = pins + blocks
         return 3 * (n - 1) - 2 * f1 - f2, n, f1, f2
+
+    @property
+    def pin_arcs(self) -> tuple[Arc, ...]:
+        """The arcs that constrain: a curved block is already its pin at the centre."""
+        return tuple(a for a in self.arcs if a.kind is SlideKind.PIN)
 
     @property
     def input_speed(self) -> float:

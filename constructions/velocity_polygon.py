@@ -171,8 +171,8 @@ class _Polygon(Walk):
     def __init__(self, asm: Assembly, scale: float, pole: tuple[float, float]):
         self.asm, self.m, self.c, self.scale = asm, asm.mechanism, asm.construction, scale
         m = self.m
-        if any(a.kind is SlideKind.PIN for a in m.arcs):
-            a = next(a for a in m.arcs if a.kind is SlideKind.PIN)
+        if m.pin_arcs:
+            a = m.pin_arcs[0]
             raise TarsimError(f"the velocity polygon does not yet handle the {a.label} (a curved "
                               "slot or circle contact); use radius-rotation or parallel-line")
         if any(s.rolling for s in m.slides):

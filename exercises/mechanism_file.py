@@ -131,9 +131,9 @@ class _Reader:
                 raise self.unknown(k, _TOP, "setting", key=k)
         self.units = self.read_units()
         frame = self.read_frame()
-        links = [frame] + self.read_links(frame)
-        mech_links = tuple(links)
-        self.links = {k.number: k for k in mech_links}
+        # A curved block gains its pin at the centre of curvature while the sliders
+        # are read, so the links are final only after them.
+        self.links = {k.number: k for k in [frame] + self.read_links(frame)}
         slides: list[Slide] = []
         arcs: list[Arc] = []
         for i, t in enumerate(self.list_of("slider")):
@@ -318,10 +318,9 @@ class _Reader:
                             f"{len(self.links[link].names)}", key="link", **where)
         if "centre" in t or "radius" in t:
             return self.curved_guide(kind, link, point, on, t, where)
-        for k in ("side",):
-            if k in t:
-                raise self.fail("side applies to a curved guide (with centre and radius)",
-                                key=k, **where)
+        if "side" in t:
+            raise self.fail("side applies to a curved guide (with centre and radius)",
+                            key="side", **where)
         offset = self.number(t.get("offset", 0.0), "offset", key="offset", **where) * self.units.metres
         if on == 1:
             through = t.get("through")

@@ -453,7 +453,7 @@ class _Diagram:
         for name, at in self.paper.items():
             on = self.links_at(name)
             slid = (any(s.point == name and _is_slot(s) for s in self.m.slides)
-                    or any(a.point == name and a.kind is SlideKind.PIN for a in self.m.arcs))
+                    or any(a.point == name for a in self.m.pin_arcs))
             if 1 in on or self.marked(name):
                 continue  # drawn with its ground symbol, or as a dot
             if len(on) >= 2 or slid:

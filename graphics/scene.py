@@ -294,13 +294,27 @@ class _Scene(_Diagram):
             return max(b[0] - p[0], p[0] - b[2], b[1] - p[1], p[1] - b[3])
 
         self.far: list[tuple[Step, tuple[float, float]]] = []
-        for i, p in sorted(((i, p) for i, p in self.points if i >= 0),
-                           key=lambda ip: beyond(ip[1])):
-            grown = [min(b[0], p[0]), min(b[1], p[1]), max(b[2], p[0]), max(b[3], p[1])]
+        self.off_page: set[Ref] = set()
+        # Each step's points grow the frame together: a vector fits whole or not at all,
+        # since one cut at the frame would misstate its length. One that does not fit
+        # (drawn at a far centre) is left out; the centre's edge arrow says where it is.
+        steps = [(i, [p for j, p in self.points if j == i]) for i in range(len(self.steps))]
+        for i, pts in sorted((ip for ip in steps if ip[1]),
+                             key=lambda ip: max(beyond(p) for p in ip[1])):
+            grown = [min([b[0]] + [p[0] for p in pts]), min([b[1]] + [p[1] for p in pts]),
+                     max([b[2]] + [p[0] for p in pts]), max([b[3]] + [p[1] for p in pts])]
             if max(grown[2] - grown[0], grown[3] - grown[1]) <= cap * (1 + 1e-12):
                 b = grown
             elif isinstance(self.steps[i].output, g.Point):
-                self.far.append((self.steps[i], p))
+                self.far.append((self.steps[i], pts[0]))
+            else:
+                self.off_page.add(self.steps[i].id)
+        for i, step in enumerate(self.steps):     # only a vector at a far centre stays off
+            if step.id in self.off_page and self.far_base(step) is None:
+                self.off_page.discard(step.id)
+                pts = [p for j, p in self.points if j == i]
+                b = [min([b[0]] + [p[0] for p in pts]), min([b[1]] + [p[1] for p in pts]),
+                     max([b[2]] + [p[0] for p in pts]), max([b[3]] + [p[1] for p in pts])]
         # A flat mechanism (all its pins in a line) still gets room for its labels.
         least = 0.4 * extent
         for lo, hi in ((0, 2), (1, 3)):
@@ -311,6 +325,10 @@ class _Scene(_Diagram):
         self.clip_box = box(*self.clip)
         # Labels stay on the page the frame makes, or just about.
         self.placer.page = self.clip_box.buffer(4.0, join_style="mitre")
+
+    def far_base(self, step: Step) -> Step | None:
+        """The far point a vector is drawn from, if it starts at one."""
+        return next((f for f, _ in self.far if _coincide(f.output, step.output.start)), None)
 
     def on_line(self, line: g.Line, p: tuple[float, float]) -> bool:
         return abs(line.signed_distance(g.Point(*p))) <= _SAME * max(self.size, math.hypot(*p))
@@ -461,7 +479,7 @@ class _Scene(_Diagram):
     def draw_vectors(self) -> None:
         for step in self.steps:
             out = step.output
-            if not isinstance(out, g.Segment):
+            if not isinstance(out, g.Segment) or step.id in self.off_page:
                 continue
             a, b = self.view(out.start.xy), self.view(out.end.xy)
             text, sub = typeset(step.label) if step.label else ("", "")
@@ -559,11 +577,13 @@ class _Scene(_Diagram):
                              key=lambda nd: nd[1])
             name = typeset(step.label)[0] if step.label else "a point"
             text = f"to {name}, {_length(dist, self.m.units)} from {subscript(near)}"
+            # A vector drawn at the far point is off the page too: its number goes here.
+            riders = [v for v in self.steps if v.id in self.off_page and self.far_base(v) is step]
             tail, tip = arrows[0]
             ahead = math.atan2(tail[1] - tip[1], tip[0] - tail[0])
             # The label reads on from the arrow, past the page's frame if need be.
             page, self.placer.page = self.placer.page, None
-            self.label(text, [tip, tail], [step], prefer=(ahead, ahead + math.pi / 2,
+            self.label(text, [tip, tail], [step, *riders], prefer=(ahead, ahead + math.pi / 2,
                                                           ahead - math.pi / 2),
                        gap=1.0, size=3.2, spread=math.pi / 2)
             self.placer.page = page

@@ -17,11 +17,12 @@ from constructions.analytic import solve
 from constructions.assembly import assemble
 from constructions.centres import locate_centres
 from constructions.errors import TarsimError
-from constructions.record import Role, slice as backward
+from constructions.record import Role, slice as backward, toposort
 from constructions.velocity_by_centres import velocity_by_radius_rotation
 from exercises.catalog import bundled
 from exercises.mechanism_file import load_mechanism
 from graphics.circle_diagram import draw_circle_diagram, triangle_text
+from graphics.diagram import draw_kinematic_diagram
 from graphics.figure import Figure, Path, Text
 from graphics.labels import typeset
 from graphics.scene import (centre_steps, choose_velocity_scale, draw_scene, line_kind,
@@ -337,3 +338,24 @@ def test_a_subscript_is_a_tspan_dropped_below_the_baseline_and_set_from_its_left
     assert float(text.get("x")) == pytest.approx(20 - Text((20, 10), "V", 4.0, sub="I₂₃").width / 2,
                                                 abs=1e-3)
     assert float(tspan.get("dy")) > 0 and float(tspan.get("font-size")) < 4.0
+
+
+def test_a_vector_at_a_far_centre_stays_off_the_page_and_its_number_rides_the_edge_arrow():
+    """Rolling wheel at 70°: V_M by radius rotation transfers through I24, 342 mm off the
+    page. Drawn whole, V_I24 would stretch the page several times over; it is left out,
+    and its step number goes beside the edge arrow pointing to I24."""
+    mech = load_mechanism(DATA / "rolling-wheel.toml")
+    asm, cs = centres_of(mech)
+    scale = choose_velocity_scale(asm, mech.input_speed)
+    r = velocity_by_radius_rotation(asm, cs, "M", scale=scale)
+    refs = [s.id for s in toposort(asm.construction, backward(asm.construction,
+                                                              [r.vector, *r.steps]))]
+    plain = Read(to_svg(draw_kinematic_diagram(asm)))
+    read = Read(to_svg(draw_scene(asm, refs, velocity_scale=scale)))
+    assert read.page[0] < 1.6 * plain.page[0] and read.page[1] < 1.6 * plain.page[1]
+    at_i24 = next(s for s in r.steps if asm.construction[s].label.startswith("V_I"))
+    numbers = dict(numbered_steps(asm.construction, refs))
+    number = next(n for n, s in numbers.items() if s.id == at_i24)
+    assert number in read.badges()
+    far = next(t for t in read.texts if t.startswith("to I"))
+    assert "342.2 mm" in far
