@@ -27,27 +27,15 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from itertools import combinations
 
-from . import geometry as g
 from .assembly import Assembly
-from .coincident import Node, Walk
-from .errors import AssemblyError, DegenerateInput, TarsimError
-from .model import SlideKind
+from .coincident import Node
+from .errors import TarsimError
+from .polygon_walk import DEAD_POINT, PolygonWalk, nice_scale, sense_of
 from .record import Construction, Panel, Ref, Role
 from .velocity_drawing import speed_text
 
 __all__ = ["VelocityPolygon", "draw_velocity_polygon", "nice_scale", "DEAD_POINT"]
-
-DEAD_POINT = 1e-7
-"""Sine of the crossing angle below which two lines of a tip count as parallel (a dead point).
-
-At a toggle reached through rounding the two lines lean about ``sqrt(eps) ≈ 1.5e-8``
-apart, so a smaller threshold would draw a dead point as a far, meaningless tip.
-"""
-
-_ON_LINE = 1e-9  # relative sine below which three points count as collinear
-_APART = 1e-12   # relative distance below which two points count as one
 
 
 @dataclass
@@ -87,21 +75,6 @@ class VelocityPolygon:
                               f"{', '.join(self.tips)}")
         (px, py), (tx, ty) = (self.construction.output(r).xy for r in (self.pole, self.tips[key]))
         return (tx - px) / self.scale, (ty - py) / self.scale
-
-
-def nice_scale(raw: float) -> float:
-    """The largest 1, 2 or 5 × 10^k not above ``raw``.
-
-    Examples
-    --------
-    >>> nice_scale(0.037), nice_scale(4.0), nice_scale(1.0)
-    (0.02, 2.0, 1.0)
-    """
-    k = math.floor(math.log10(raw))
-    for m in (5.0, 2.0, 1.0):
-        if m * 10.0 ** k <= raw * (1 + 1e-12):
-            return m * 10.0 ** k
-    return 10.0 ** k
 
 
 def draw_velocity_polygon(asm: Assembly, scale: float | None = None, *,
@@ -161,169 +134,21 @@ def draw_velocity_polygon(asm: Assembly, scale: float | None = None, *,
         scale = 1.0 if speed == 0.0 else nice_scale(asm.size / (2.0 * speed))
     if not (isinstance(scale, (int, float)) and math.isfinite(scale) and scale > 0.0):
         raise TarsimError(f"the velocity scale must be a positive number, got {scale}")
-    if "vp:o_v" in asm.construction:
-        raise TarsimError("this construction already holds a velocity polygon; assemble the "
-                          "mechanism again to draw another")
     return _Polygon(asm, float(scale), pole).run()
 
 
-class _Polygon(Walk):
-    def __init__(self, asm: Assembly, scale: float, pole: tuple[float, float]):
-        self.asm, self.m, self.c, self.scale = asm, asm.mechanism, asm.construction, scale
-        m = self.m
-        if m.pin_arcs:
-            a = m.pin_arcs[0]
-            raise TarsimError(f"the velocity polygon does not yet handle the {a.label} (a curved "
-                              "slot or circle contact); use radius-rotation or parallel-line")
-        if any(s.rolling for s in m.slides):
-            s = next(s for s in m.slides if s.rolling)
-            raise TarsimError(f"the velocity polygon does not yet handle the {s.label}; use "
-                              "radius-rotation or parallel-line")
-        self.pole_xy = (float(pole[0]), float(pole[1]))
-        self.size = asm.size
-        nodes = [Node(n) for n in m.point_names]
-        nodes += [Node(s.point, s.guide_link) for s in m.slides
-                  if s.guide_link != 1 and s.point not in m.link(s.guide_link).names]
-        self.nodes = list(dict.fromkeys(nodes))
-        self.known: dict[Node, Ref] = {}
-        self.steps: list[Ref] = []
-        self.space_steps: list[Ref] = []
+class _Polygon(PolygonWalk):
+    prefix, pole_name, panel, symbol, noun = "vp", "o_v", Panel.VELOCITY, "V", "velocity"
 
-    # ----- the mechanism as the polygon sees it -----------------------------------
-    def name(self, n: Node) -> str:
-        """The textbook name: B, or A2 and A4 where a slot makes A two points."""
-        if n.link is not None:
-            return f"{n.point}{n.link}"
-        if any(k.point == n.point and k.link is not None for k in self.nodes):
-            moving = [c for c in self.carriers(n) if c != 1]
-            return f"{n.point}{moving[0]}" if moving else n.point
-        return n.point
-
-    def tip_label(self, n: Node) -> str:
-        return "o_v" if self.zero(n) else self.name(n).lower()
-
-    def xy(self, n: Node) -> tuple[float, float]:
-        return self.asm.xy(n.point)
-
-    def apart(self, a: Node, b: Node) -> bool:
-        return math.dist(self.xy(a), self.xy(b)) > _APART * self.size
-
-    def normal(self, a: Node, b: Node) -> tuple[float, float]:
-        (ax, ay), (bx, by) = self.xy(a), self.xy(b)
-        d = math.hypot(bx - ax, by - ay)
-        return (ay - by) / d, (bx - ax) / d
-
-    def ready(self, n: Node, known) -> bool:
-        return n in known or self.zero(n)
-
-    def tip(self, n: Node) -> Ref:
-        return "vp:o_v" if self.zero(n) else self.known[n]
-
-    def speed(self, ref: Ref) -> float:
-        return math.dist(self.c.output(ref).xy, self.pole_xy) / self.scale
+    def run(self) -> VelocityPolygon:
+        self.walk()
+        omegas = self.draw_results()
+        tips, aliases = self.tips()
+        return VelocityPolygon(self.pole_ref, self.scale, tips, omegas, self.steps,
+                               self.space_steps, self.c, aliases)
 
     def say(self, v: float) -> str:
         return speed_text(v, self.m.units)
-
-    # ----- planning: which tip follows from which ---------------------------------
-    def loci(self, x: Node, known) -> list[tuple[tuple, tuple[float, float]]]:
-        """Lines known to carry the tip of x, with their directions in space."""
-        out = []
-        for c in self.carriers(x):
-            out += [(("rel", k, c), self.normal(k, x)) for k in self.members(c)
-                    if k != x and self.ready(k, known) and self.apart(k, x)]
-            i = self.frame_guide(c)
-            if i is not None and not (x.link is None and self.m.slides[i].point == x.point):
-                out.append((("glide", i, c), self.asm.guide(i).direction))
-        for i, s in enumerate(self.m.slides):
-            if s.point != x.point:
-                continue
-            if s.guide_link == 1:
-                if x.link is None:
-                    out.append((("guide", i), self.asm.guide(i).direction))
-                continue
-            if x.link is None:
-                other = Node(s.point, s.guide_link)
-            elif x.link == s.guide_link:
-                other = Node(s.point)
-            else:
-                continue
-            if other != x and other in self.nodes and self.ready(other, known):
-                if i not in self.asm.guides:
-                    raise TarsimError(f"the slot of {s.label} was not drawn by the assembly")
-                out.append((("slot", other, i), self.asm.guide(i).direction))
-        return list(dict.fromkeys(out))
-
-    def rules(self, x: Node, known) -> list[tuple[str, tuple, float]]:
-        """Every way to find x's tip, as (kind, args, quality), the crossing-free ones first."""
-        whole, cross = [], []
-        for c in self.carriers(x):
-            if self.frame_guide(c) is not None:
-                whole += [("translate", (c, k), 1.0) for k in self.members(c)
-                          if k != x and k in known and not self.zero(k)]
-            ready = [k for k in self.members(c)
-                     if k != x and self.ready(k, known) and self.apart(k, x)]
-            for a, b in combinations(ready, 2):
-                if not (self.zero(a) and self.zero(b)) and self.apart(a, b) and \
-                        self.collinear(a, b, x):
-                    whole.append(("divide", (c, a, b), 1.0))
-        for (l1, d1), (l2, d2) in combinations(self.loci(x, known), 2):
-            cross.append(("cross", (l1, l2), abs(d1[0] * d2[1] - d1[1] * d2[0])))
-        return whole + cross
-
-    def collinear(self, a: Node, b: Node, x: Node) -> bool:
-        pa, pb, px = (g.Point(*self.xy(n)) for n in (a, b, x))
-        return abs(g.side_of(px, pa, pb)) <= _ON_LINE * g.distance(pa, pb) * g.distance(pa, px)
-
-    # ----- the run ----------------------------------------------------------------
-    def run(self) -> VelocityPolygon:
-        self.c.give("vp:o_v", g.Point(*self.pole_xy), label="o_v", panel=Panel.VELOCITY,
-                    sentence="Choose the velocity pole o_v: every vector drawn from it is an "
-                             "absolute velocity.")
-        self.steps.append("vp:o_v")
-        self.draw_input()
-        while True:
-            todo = [n for n in self.nodes if n not in self.known and not self.zero(n)]
-            if not todo:
-                break
-            best = None
-            for n in todo:
-                for rule in self.rules(n, self.known):
-                    if best is None or rule[2] > best[1][2]:
-                        best = (n, rule)
-            if best is None:
-                names = ", ".join(self.name(n) for n in todo)
-                raise TarsimError(f"the velocity polygon cannot reach {names}: no link carrying "
-                                  "it has two known velocities or a known direction")
-            x, (kind, args, quality) = best
-            self.known[x] = getattr(self, f"draw_{kind}")(x, *args)
-        omegas = self.draw_results()
-        tips = {n.point if n.link is None else self.name(n): self.tip(n) for n in self.nodes}
-        aliases = {}
-        for n in self.nodes:
-            if n.link is None:
-                for c in self.carriers(n):
-                    alias = f"{n.point}{c}"
-                    if c != 1 and alias not in tips:
-                        aliases[alias] = n.point
-        return VelocityPolygon("vp:o_v", self.scale, tips, omegas, self.steps,
-                               self.space_steps, self.c, aliases)
-
-    def act(self, ref: Ref, verb: str, *inputs: Ref, sentence: str, label: str = "",
-            role: Role = Role.CONSTRUCTION, **params) -> Ref:
-        self.c.draw(ref, verb, *inputs, label=label, sentence=sentence, role=role,
-                    panel=Panel.VELOCITY, **params)
-        self.steps.append(ref)
-        return ref
-
-    def space_line(self, k: Node, x: Node, c: int) -> Ref:
-        """The space-diagram line KX of link c, drawn once."""
-        ref = f"vp:line:{k.point}-{x.point}"
-        if ref not in self.c:
-            self.c.draw(ref, "line_through", self.asm.points[k.point], self.asm.points[x.point],
-                        sentence=f"Draw line {k.point}{x.point} of link {c}.")
-            self.space_steps.append(ref)
-        return ref
 
     def draw_input(self) -> None:
         d = self.m.drive
@@ -344,7 +169,6 @@ class _Polygon(Walk):
                      f"{self.say(self.m.input_speed)} ⟂ {pivot}{point}, in the sense of "
                      f"ω{d.link} ({sense}).")
 
-    # ----- the acts ---------------------------------------------------------------
     def draw_locus(self, x: Node, locus: tuple) -> tuple[Ref, str]:
         kind, X = locus[0], self.name(x)
         if kind == "rel":
@@ -375,49 +199,6 @@ class _Polygon(Walk):
                                 "velocity).")
         return ref, f"the parallel to the slot through {self.tip_label(other)}"
 
-    def draw_cross(self, x: Node, first: tuple, second: tuple) -> Ref:
-        (l1, say1), (l2, say2) = (self.draw_locus(x, lo) for lo in (first, second))
-        X = self.name(x)
-        d = self.m.drive
-        dead = (f"dead point at θ{d.link} = {math.degrees(d.angle):.6g}°: {say1} and {say2} "
-                f"are parallel, so V_{X} and ω are undefined; move the input off it")
-        try:
-            tip = self.act(f"vp:tip:{X}", "intersect_lines", l1, l2, label=X.lower(),
-                           sentence=f"The two lines meet at {X.lower()}: o_v {X.lower()} = V_{X}.")
-        except DegenerateInput:
-            raise AssemblyError(dead, joint=x.point,
-                                angle_deg=math.degrees(d.angle)) from None
-        step = self.c[tip]
-        (a1, b1), (a2, b2) = (self.c.output(r).normal for r in (l1, l2))
-        if step.output.is_at_infinity or abs(a1 * b2 - b1 * a2) < DEAD_POINT:
-            raise AssemblyError(dead, joint=x.point, angle_deg=math.degrees(d.angle))
-        return tip
-
-    def draw_divide(self, x: Node, c: int, a: Node, b: Node) -> Ref:
-        """X on line AB of link c: x divides ab as X divides AB (the velocity image)."""
-        (ax, ay), (bx, by), (px, py) = self.xy(a), self.xy(b), self.xy(x)
-        ratio = ((px - ax) * (bx - ax) + (py - ay) * (by - ay)) / ((bx - ax) ** 2 + (by - ay) ** 2)
-        X = self.name(x)
-        xl, al, bl = X.lower(), self.tip_label(a), self.tip_label(b)
-        ta, tb = self.tip(a), self.tip(b)
-        side = math.dist(self.c.output(ta).xy, self.c.output(tb).xy)
-        why = (f"{x.point} lies on line {a.point}{b.point} of link {c}, so {xl} lies on "
-               f"{al} {bl} with {al} {xl} : {al} {bl} = {a.point}{x.point} : "
-               f"{a.point}{b.point} = {ratio:.6g} (the velocity image)")
-        if side == 0.0:
-            return self.act(f"vp:tip:{X}", "mark", ta, label=xl,
-                            sentence=f"{why}; {al} {bl} has no length, so {xl} is at {al}.")
-        return self.act(f"vp:tip:{X}", "lay_off", ta, tb, length=ratio * side, label=xl,
-                        sentence=f"{why}: lay off {al} {xl} = {ratio:.6g} × {al} {bl} "
-                                 f"along {al} {bl}.")
-
-    def draw_translate(self, x: Node, c: int, k: Node) -> Ref:
-        X, K = self.name(x), self.name(k)
-        return self.act(f"vp:tip:{X}", "mark", self.tip(k), label=X.lower(),
-                        sentence=f"Link {c} slides on a frame guide without turning, so V_{X} = "
-                                 f"V_{K}: {X.lower()} is at {K.lower()}.")
-
-    # ----- results ----------------------------------------------------------------
     def draw_results(self) -> dict[int, float]:
         """Draw V of every point from o_v, and read ω of every link off the polygon.
 
@@ -432,11 +213,11 @@ class _Polygon(Walk):
             c = k.number
             if c == 1:
                 continue
-            pair = self.omega_pair(c)
+            pair = self.read_pair(c)
             if pair is None:
                 later.append(c)
                 continue
-            p, q = pair if self.zero(pair[0]) or not self.zero(pair[1]) else pair[::-1]
+            p, q = pair
             (px, py), (qx, qy) = self.xy(p), self.xy(q)
             (tpx, tpy), (tqx, tqy) = (self.c.output(self.tip(n)).xy for n in (p, q))
             rx, ry, vx, vy = qx - px, qy - py, (tqx - tpx) / self.scale, (tqy - tpy) / self.scale
@@ -445,7 +226,9 @@ class _Polygon(Walk):
             P, Q = self.name(p), self.name(q)
             rel = f"V_{Q}" if self.zero(p) else f"V_{Q}/{P}"
             side = f"o_v {Q.lower()}" if self.zero(p) else f"{P.lower()} {Q.lower()}"
-            sense = "ccw" if omega > 0 else "cw" if omega < 0 else "at rest"
+            sense = sense_of(omega, abs(self.m.drive.omega))
+            if sense == "at rest":
+                omega = 0.0
             text = (f"ω{c} = {rel} / {p.point}{q.point} = {side} / {p.point}{q.point} = "
                     f"{self.say(math.hypot(vx, vy))} ÷ "
                     f"{self.m.units.length_text(math.hypot(rx, ry))} = {abs(omega):.6g} rad/s "
@@ -462,30 +245,11 @@ class _Polygon(Walk):
             self.act(f"vp:V:{X}", "join", "vp:o_v", self.known[n], label=f"V_{X}",
                      role=Role.GIVEN if n == drive else Role.RESULT,
                      sentence=" ".join([f"o_v {X.lower()} = V_{X} = "
-                                        f"{self.say(self.speed(self.known[n]))}."]
+                                        f"{self.say(self.length(self.known[n]))}."]
                                        + said.get(n, [])))
         for c, p, q, rel, text in relative:
             self.act(f"vp:omega:{c}", "join", self.tip(p), self.tip(q), label=rel,
                      role=Role.RESULT, sentence=f"{self.tip_label(p)} {self.tip_label(q)} is "
                                                 f"{rel}. {text}")
-        while later:  # one-point blocks turn with their guide, or not at all on the frame
-            for c in later:
-                s = next((s for s in self.m.slides if s.link == c and s.kind is SlideKind.BLOCK
-                          and (s.guide_link == 1 or s.guide_link in omegas)), None)
-                if s is not None:
-                    omegas[c] = 0.0 if s.guide_link == 1 else omegas[s.guide_link]
-                    later.remove(c)
-                    break
-            else:
-                break
+        self.block_rates(omegas, later)
         return omegas
-
-    def omega_pair(self, c: int) -> tuple[Node, Node] | None:
-        nodes = [n for n in self.members(c) if n in self.known or self.zero(n)]
-        pairs = [(a, b) for a, b in combinations(nodes, 2)
-                 if not (self.zero(a) and self.zero(b)) and self.apart(a, b)]
-        if not pairs:
-            return None
-        # The textbook's pair: a fixed pivot and the farthest point, else the two farthest.
-        return max(pairs, key=lambda p: (self.zero(p[0]) or self.zero(p[1]),
-                                         math.dist(self.xy(p[0]), self.xy(p[1]))))

@@ -52,7 +52,9 @@ def _exercise(source: str, angle: float | None):
     from exercises.exercise_file import load_exercise
 
     ex = load_exercise(resolve(source), Path(source).stem if Path(source).suffix else source)
-    return replace(ex, mechanism=_at_angle(ex.mechanism, angle))
+    if angle is None:
+        return ex
+    return replace(ex, mechanism=_at_angle(ex.mechanism, angle), positions=())
 
 
 _source = click.argument("source", metavar="FILE")
@@ -141,18 +143,25 @@ def solve(source, out_dir, angle, pdf):
     README), or a bundled id. Instant centres come from inspection and
     Kennedy's theorem (the circle diagram); angular velocities from the
     centres; point velocities by radius rotation, parallel lines or
-    components. Each construction is drawn as its own figure with numbered
-    steps, and each number is compared with the independent analytic solver.
+    components; relative velocities, accelerations, α and Coriolis
+    components from the velocity and acceleration polygons. Each
+    construction is drawn with numbered steps, and each number is compared
+    with the independent analytic solver.
 
     \b
     Writes into DIR:
       centres.svg, circle-diagram.svg, V_<P>-<method>.svg (and .pdf)
+      worked.svg     space diagram, velocity and acceleration polygons and
+                     the results table on one page (when polygons are asked)
       steps.md       the numbered steps, matching the numbers on the figures
       results.json   every quantity (SI) with its analytic reference and error
+    With several positions ([ask] at = [...]) each figure's name ends in the
+    position (worked-t-2.34s.svg); --angle solves one angle instead.
 
     \b
     Example:
       tarsim solve four-bar -o four-bar-solution
+      tarsim solve crank-shaper -o shaper      # θ2 = 90° and t = 2.34 s
       tarsim solve my-exercise.toml --angle 120 --no-pdf
 
     The exit status is 2 if any constructed number disagrees with the analytic
@@ -162,21 +171,26 @@ def solve(source, out_dir, angle, pdf):
     from graphics.export import cairo_missing
 
     ex = _exercise(source, angle)
-    sol, files = solve_to_files(ex)
+    sols, files = solve_to_files(ex)
     reason = cairo_missing() if pdf else None
     out = Path(out_dir or f"{ex.id}-solution")
     written = write_solution(files, out, pdf=pdf and reason is None)
-    for name, q in sol.quantities.items():
-        for qq in (q, *q.alternatives.values()):
-            click.echo(f"{name:<8} rel. error {qq.rel_error:.1e}  "
-                       f"{'ok' if qq.rel_error <= qq.tolerance else 'FAILED'}  ({qq.method})")
-    for note in sol.notes:
-        click.echo(f"note: {note}")
+    failures = []
+    for sol in sols:
+        if len(sols) > 1:
+            click.echo(f"at {sol.position.label}:")
+        for name, q in sol.quantities.items():
+            for qq in (q, *q.alternatives.values()):
+                click.echo(f"{name:<8} rel. error {qq.rel_error:.1e}  "
+                           f"{'ok' if qq.rel_error <= qq.tolerance else 'FAILED'}  ({qq.method})")
+        for note in sol.notes:
+            click.echo(f"note: {note}")
+        failures += [q.name for q in sol.failures]
     click.echo(f"wrote {len(written)} files to {out}/")
     if reason:
         click.echo(f"PDF skipped: {reason}", err=True)
-    if sol.failures:
-        names = ", ".join(q.name for q in sol.failures)
+    if failures:
+        names = ", ".join(dict.fromkeys(failures))
         click.echo(f"Error: {names} disagree with the analytic solution beyond tolerance", err=True)
         raise SystemExit(2)
 

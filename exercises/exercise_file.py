@@ -5,32 +5,51 @@
     [ask]
     find = ["centres", "omega3", "omega4", "V_D"]     # what the exercise asks for
     methods = ["radius-rotation", "components"]       # how to find each velocity
+    at = [{ angle = 90 }, { time = 2.34 }]            # optional: the positions to solve
 
 ``find`` names quantities as results.json does: ``centres`` (all of them), a
-single centre ``I24``, an angular velocity ``omega3``, a point's velocity ``V_D``.
-``methods`` are the velocity constructions, each drawn as its own figure:
-``radius-rotation``, ``parallel-line``, ``components``. A file without ``[ask]``
-asks for every centre and the ω of every moving link.
+single centre ``I24``, an angular velocity ``omega3``, a point's velocity ``V_D``,
+an angular acceleration ``alpha4``, a point's acceleration ``A_B`` (``A_B4`` for
+the point of link 4 under B, where B slides in a slot of link 4), a relative
+velocity or acceleration ``V_B/A``, ``A_B/A``, and a Coriolis component
+``A_cor_B``. ``methods`` are the velocity constructions, each drawn as its own
+figure: ``radius-rotation``, ``parallel-line``, ``components``, ``polygon``
+(relative velocities). Accelerations are always found by the polygon.
+``at`` lists positions: an input ``angle`` (the file's angle unit), or a
+``time`` in seconds after the ``[input]`` angle (θ = θ0 + ω t + α t²/2). A file
+without ``[ask]`` asks for every centre and the ω of every moving link.
 """
 
 from __future__ import annotations
 
 import difflib
+import math
 import re
 import tomllib
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 
 from constructions.errors import InputError
-from constructions.model import Mechanism
+from constructions.model import Drive, Mechanism
 
 from .mechanism_file import SourceMap, _Reader, _toml_error
 
-__all__ = ["Exercise", "load_exercise", "parse_exercise", "VELOCITY_METHODS"]
+__all__ = ["Exercise", "Position", "load_exercise", "parse_exercise", "VELOCITY_METHODS"]
 
-VELOCITY_METHODS = ("radius-rotation", "parallel-line", "components")
-_ASK_KEYS = ("find", "methods")
+VELOCITY_METHODS = ("radius-rotation", "parallel-line", "components", "polygon")
+_ASK_KEYS = ("find", "methods", "at")
 _QUANTITY = re.compile(r"^(centres|I(\d)(\d)|I(\d+),(\d+)|omega(\d+)|V_([A-Za-z][A-Za-z0-9_']*))$")
+
+
+@dataclass(frozen=True)
+class Position:
+    """One position an exercise is solved at: the input's state and how the file gave it."""
+
+    drive: Drive
+    label: str
+    """As the figures and steps.md say it: "θ2 = 90°" or "t = 2.34 s (θ2 = −44.07°)"."""
+    slug: str
+    """As file names carry it: "theta2-90" or "t-2.34s"."""
 
 
 @dataclass(frozen=True)
@@ -41,6 +60,12 @@ class Exercise:
     mechanism: Mechanism
     find: tuple[str, ...]
     methods: tuple[str, ...]
+    positions: tuple[Position, ...] = ()
+    """The positions to solve; empty means the [input] angle alone."""
+
+    def at(self, position: Position) -> Exercise:
+        """The same exercise at one of its positions (and only that one)."""
+        return replace(self, mechanism=self.mechanism.with_drive(position.drive), positions=())
 
     @property
     def centres(self) -> tuple[tuple[int, int], ...]:
@@ -58,7 +83,39 @@ class Exercise:
     @property
     def velocities(self) -> tuple[str, ...]:
         """Points whose velocity is asked."""
-        return tuple(q[2:] for q in self.find if q.startswith("V_"))
+        return tuple(q[2:] for q in self.find if q.startswith("V_") and "/" not in q)
+
+    @property
+    def alphas(self) -> tuple[int, ...]:
+        """Links whose angular acceleration is asked."""
+        return tuple(int(q[5:]) for q in self.find if q.startswith("alpha"))
+
+    @property
+    def accelerations(self) -> tuple[str, ...]:
+        """Points (or coincident points, ``B4``) whose acceleration is asked."""
+        return tuple(q[2:] for q in self.find
+                     if q.startswith("A_") and "/" not in q and not q.startswith("A_cor_"))
+
+    @property
+    def relatives(self) -> tuple[str, ...]:
+        """Relative velocities and accelerations asked, as named: ``V_B/A``, ``A_B/A``."""
+        return tuple(q for q in self.find if q[:2] in ("V_", "A_") and "/" in q)
+
+    @property
+    def coriolis(self) -> tuple[str, ...]:
+        """Points whose Coriolis component is asked (``A_cor_B`` gives ``B``)."""
+        return tuple(q[6:] for q in self.find if q.startswith("A_cor_"))
+
+    @property
+    def wants_accelerations(self) -> bool:
+        """True if anything asked needs the acceleration polygon."""
+        return bool(self.alphas or self.accelerations or self.coriolis
+                    or any(q.startswith("A_") for q in self.relatives))
+
+    @property
+    def wants_polygon(self) -> bool:
+        """True if anything asked needs the velocity polygon."""
+        return self.wants_accelerations or bool(self.relatives) or "polygon" in self.methods
 
 
 def load_exercise(path: str | Path, exercise_id: str | None = None) -> Exercise:
@@ -113,7 +170,8 @@ def _read_ask(ask, mech: Mechanism, where: SourceMap, filename: str, exercise_id
         if q not in valid:
             close = _closest(q, sorted(valid))
             hint = (f"did you mean '{close}'?" if close
-                    else 'use "centres", "I<i><j>", "omega<n>" or "V_<point>"')
+                    else 'use "centres", "I<i><j>", "omega<n>", "alpha<n>", "V_<point>", '
+                         '"A_<point>", "V_<point>/<point>" or "A_cor_<point>"')
             raise fail(f"cannot find '{q}' for this mechanism; {hint}", "find")
     methods = ask.get("methods", ["radius-rotation"])
     if not (isinstance(methods, list) and methods and all(isinstance(m, str) for m in methods)):
@@ -123,7 +181,47 @@ def _read_ask(ask, mech: Mechanism, where: SourceMap, filename: str, exercise_id
             close = _closest(m, VELOCITY_METHODS)
             hint = f"did you mean '{close}'?" if close else f"use {', '.join(VELOCITY_METHODS)}"
             raise fail(f"unknown velocity method '{m}'; {hint}", "methods")
-    return Exercise(exercise_id, mech, tuple(dict.fromkeys(find)), tuple(dict.fromkeys(methods)))
+    positions = _read_positions(ask.get("at"), mech, fail)
+    return Exercise(exercise_id, mech, tuple(dict.fromkeys(find)), tuple(dict.fromkeys(methods)),
+                    positions)
+
+
+def _read_positions(at, mech: Mechanism, fail) -> tuple[Position, ...]:
+    """``at = [{ angle = 90 }, { time = 2.34 }]``: each a Position of the input."""
+    if at is None:
+        return ()
+    shape = 'at must be a list of positions such as [{ angle = 90 }, { time = 2.34 }]'
+    if not (isinstance(at, list) and at and all(isinstance(p, dict) for p in at)):
+        raise fail(shape, "at")
+    d = mech.drive
+    deg = mech.units.angle != "rad"
+    out = []
+    for p in at:
+        if len(p) != 1 or next(iter(p)) not in ("angle", "time"):
+            raise fail(f"each position in at gives one of angle or time, got {p}", "at")
+        (key, value), = p.items()
+        if isinstance(value, bool) or not isinstance(value, (int, float)) or \
+                not math.isfinite(value):
+            raise fail(f"{key} in at must be a number, got {value!r}", "at")
+        if key == "angle":
+            angle = math.radians(value) if deg else float(value)
+            drive = Drive(d.link, angle, d.omega, d.alpha, d.alpha_given)
+            label = f"θ{d.link} = {_angle_text(angle, deg)}"
+            slug = f"theta{d.link}-{value:g}"
+        else:
+            angle = d.angle + d.omega * value + 0.5 * d.alpha * value ** 2
+            drive = Drive(d.link, angle, d.omega + d.alpha * value, d.alpha, d.alpha_given)
+            label = f"t = {value:g} s (θ{d.link} = {_angle_text(angle, deg)})"
+            slug = f"t-{value:g}s"
+        out.append(Position(drive, label, slug))
+    slugs = [p.slug for p in out]
+    if len(set(slugs)) != len(slugs):
+        raise fail("at lists the same position twice", "at")
+    return tuple(out)
+
+
+def _angle_text(angle: float, deg: bool) -> str:
+    return (f"{math.degrees(angle):.6g}°" if deg else f"{angle:.6g} rad").replace("-", "−")
 
 
 def _closest(got: str, valid) -> str | None:
@@ -141,7 +239,19 @@ def _valid_quantities(mech: Mechanism) -> set[str]:
         for b in nums[i + 1:]:
             out.add(f"I{a}{b}" if b < 10 else f"I{a},{b}")
     out |= {f"omega{n}" for n in nums if n != 1}
-    out |= {f"V_{p}" for p in mech.point_names if set(mech.links_at(p)) != {1}}
+    out |= {f"alpha{n}" for n in nums if n != 1}
+    moving = [p for p in mech.point_names if set(mech.links_at(p)) != {1}]
+    out |= {f"V_{p}" for p in moving}
+    slotted = [s for s in mech.slides
+               if s.guide_link != 1 and s.point not in mech.link(s.guide_link).names]
+    coincident = {f"{s.point}{s.guide_link}" for s in slotted}
+    carried = {f"{s.point}{c}" for s in slotted
+               for c in set(mech.links_at(s.point)) | {t.link for t in mech.slides
+                                                        if t.point == s.point} if c != 1}
+    named = set(moving) | coincident | carried
+    out |= {f"A_{p}" for p in named}
+    out |= {f"{v}_{p}/{q}" for v in "VA" for p in named for q in named if p != q}
+    out |= {f"A_cor_{s.point}" for s in slotted}
     return out
 
 

@@ -45,6 +45,7 @@ def _position(s: Solution) -> dict[str, Any]:
     return {
         "input": {"link": d.link, "angle_deg": float(f"{math.degrees(d.angle):.12g}"), "omega": d.omega,
                   "alpha": d.alpha, "alpha_given": d.alpha_given},
+        **({"position": s.position.label} if s.position else {}),
         "quantities": {name: _quantity(q) for name, q in s.quantities.items()},
         "notes": list(s.notes),
     }

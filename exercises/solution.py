@@ -18,14 +18,17 @@ from constructions.analytic_centres import centre_error, instant_centre, mechani
 from constructions.assembly import Assembly, assemble
 from constructions.centres import Centres, locate_centres, omega_ratio, pair_label
 from constructions.errors import DegenerateInput, TarsimError
+from constructions.polygon_walk import NOISE
+from constructions.acceleration_polygon import AccelerationPolygon, draw_acceleration_polygon
 from constructions.velocity_by_centres import METHODS as CENTRE_METHODS
+from constructions.velocity_polygon import VelocityPolygon, draw_velocity_polygon
 from constructions.record import Ref
 from constructions.velocity_drawing import VelocityResult
 from graphics.scene import choose_velocity_scale
 
-from .exercise_file import Exercise
+from .exercise_file import Exercise, Position
 
-__all__ = ["Quantity", "Solution", "solve_exercise"]
+__all__ = ["Quantity", "Solution", "solve_exercise", "solve_positions"]
 
 
 @dataclass(frozen=True)
@@ -65,11 +68,36 @@ class Solution:
     notes: list[str]
     position_steps: frozenset[Ref]
     """The steps that located the mechanism; a figure's own steps are the others."""
+    velocity_polygon: VelocityPolygon | None = None
+    acceleration_polygon: AccelerationPolygon | None = None
+    position: Position | None = None
+    """Which of the exercise's positions this is (None: the file's [input] angle)."""
 
     @property
     def failures(self) -> list[Quantity]:
         """Quantities whose construction disagrees with the reference."""
         return [q for q in self.quantities.values() if not q.passed]
+
+
+def solve_positions(ex: Exercise) -> list[Solution]:
+    """Solve ``ex`` at each of its positions (or at its [input] angle if it lists none).
+
+    Raises
+    ------
+    TarsimError
+        As :func:`solve_exercise`, with the position named.
+    """
+    if not ex.positions:
+        return [solve_exercise(ex)]
+    out = []
+    for p in ex.positions:
+        try:
+            sol = solve_exercise(ex.at(p))
+        except TarsimError as e:
+            raise type(e)(f"at {p.label}: {e}") from None
+        sol.position = p
+        out.append(sol)
+    return out
 
 
 def solve_exercise(ex: Exercise, velocity_scale: float | None = None) -> Solution:
@@ -95,27 +123,151 @@ def solve_exercise(ex: Exercise, velocity_scale: float | None = None) -> Solutio
     quantities: dict[str, Quantity] = {}
     notes: list[str] = []
     cs = None
-    if ex.centres or ex.omegas or ex.velocities:
+    drawn = [m_ for m_ in ex.methods if m_ != "polygon"]   # the polygon is drawn once, below
+    if ex.centres or ((ex.omegas or ex.velocities) and drawn):
         cs = locate_centres(asm)
         notes += cs.warnings()
     for pair in ex.centres:
         quantities[pair_label(*pair)] = _centre(cs, kin, pair, size)
-    for n in ex.omegas:
+    for n in ex.omegas if drawn else ():
         quantities[f"omega{n}"] = _omega(cs, kin, n)
     scale = velocity_scale
-    if scale is None and ex.velocities:
+    if scale is None and ex.velocities and drawn:
         scale = choose_velocity_scale(asm, mech.input_speed)
     results: list[VelocityResult] = []
-    for p in ex.velocities:
+    for p in ex.velocities if drawn else ():
         found = []
-        for method in ex.methods:
+        for method in drawn:
             r = _velocity(asm, cs, p, method, scale)
             results.append(r)
             found.append(_velocity_quantity(asm, kin, r))
         first, rest = found[0], found[1:]
         quantities[f"V_{p}"] = _with_alternatives(first, {q.method: q for q in rest})
+    vp = ap = None
+    if ex.wants_polygon:
+        vp, ap = _polygons(asm, ex.wants_accelerations)
+        _polygon_quantities(ex, asm, kin, vp, ap, quantities)
+        if ap is not None and not mech.drive.alpha_given:
+            notes.append(f"α{mech.drive.link} is not given, so it is taken as 0.")
     return Solution(ex, asm, kin, cs, results, quantities, scale if results else None, notes,
-                    position_steps)
+                    position_steps, vp, ap)
+
+
+def _polygons(asm, accelerations: bool) -> tuple[VelocityPolygon, AccelerationPolygon | None]:
+    vp = draw_velocity_polygon(asm)
+    return vp, (draw_acceleration_polygon(asm, vp) if accelerations else None)
+
+
+def _polygon_quantities(ex: Exercise, asm, kin, vp: VelocityPolygon,
+                        ap: AccelerationPolygon | None, quantities: dict) -> None:
+    """Every quantity read off the polygons, beside its analytic value.
+
+    An ω already found from the centres gets the polygon's as an alternative;
+    with ``polygon`` the only method, the polygon's is the answer.
+    """
+    m = asm.mechanism
+    c = asm.construction
+    d = m.drive
+    v_scale = m.input_speed
+    a_scale = _input_acceleration(m)
+    only = ex.methods == ("polygon",)
+    for n in ex.omegas:
+        q = _scalar(f"omega{n}", vp.omegas.get(n), kin.omegas[n], abs(d.omega),
+                    _worst(c, vp.tips.values()), "velocity polygon")
+        if only or f"omega{n}" not in quantities:
+            quantities[f"omega{n}"] = q
+        else:
+            first = quantities[f"omega{n}"]
+            quantities[f"omega{n}"] = _with_alternatives(first, {**first.alternatives,
+                                                                 "velocity polygon": q})
+    if "polygon" in ex.methods:
+        for p in ex.velocities:
+            link, point = _taken(m, p)
+            q = _vector_quantity(f"V_{p}", vp.velocity(p),
+                                 analytic.point_velocity(kin, m, link, point), v_scale,
+                                 _cond(c, vp.tips[vp.aliases.get(p, p)]), "velocity polygon")
+            first = quantities.get(f"V_{p}")
+            quantities[f"V_{p}"] = q if first is None or only else _with_alternatives(
+                first, {**first.alternatives, "velocity polygon": q})
+    for name in ex.relatives:
+        kind, pair = name.split("_", 1)
+        p, r = pair.split("/")
+        poly, read, ref_of, scale = ((vp, vp.velocity, analytic.point_velocity, v_scale)
+                                     if kind == "V" else
+                                     (ap, ap.acceleration, analytic.point_acceleration, a_scale))
+        (px, py), (rx, ry) = read(p), read(r)
+        (ax, ay), (bx, by) = (ref_of(kin, m, *_taken(m, n)) for n in (p, r))
+        cond = min(_cond(c, poly.tips[poly.aliases.get(n, n)]) for n in (p, r))
+        quantities[name] = _vector_quantity(name, (px - rx, py - ry), (ax - bx, ay - by), scale,
+                                            cond, f"{'velocity' if kind == 'V' else 'acceleration'}"
+                                                  " polygon")
+    if ap is None:
+        return
+    for n in ex.alphas:
+        quantities[f"alpha{n}"] = _scalar(f"alpha{n}", ap.alphas.get(n), kin.alphas[n],
+                                          math.hypot(d.omega ** 2, d.alpha),
+                                          _worst(c, ap.tips.values()), "acceleration polygon")
+    for p in ex.accelerations:
+        link, point = _taken(m, p)
+        quantities[f"A_{p}"] = _vector_quantity(
+            f"A_{p}", ap.acceleration(p), analytic.point_acceleration(kin, m, link, point),
+            a_scale, _cond(c, ap.tips[ap.aliases.get(p, p)]), "acceleration polygon")
+    rates = {r.slide.point: r for r in kin.slide_rates if r.slide.guide_link != 1}
+    for p in ex.coriolis:
+        quantities[f"A_cor_{p}"] = _vector_quantity(
+            f"A_cor_{p}", ap.coriolis_of(p), rates[p].coriolis, a_scale,
+            _cond(c, ap.coriolis[p][1]), "acceleration polygon (2ω×v_rel)")
+
+
+def _input_acceleration(m) -> float:
+    """|A| of the input's crank pin: the scale an acceleration error is judged against."""
+    d = m.drive
+    r = m.link(d.link).span(*m.link(d.link).names[:2])
+    return r * math.hypot(d.omega ** 2, d.alpha)
+
+
+def _taken(m, name: str) -> tuple[int, str]:
+    """The link a named point is taken on, and the point: ``B`` on its first moving carrier,
+    ``A4`` as point A taken on link 4 (a coincident point under a slot)."""
+    if name in m.point_names:
+        carriers = [c for c in m.links_at(name) if c != 1] + \
+                   [s.link for s in m.slides if s.point == name]
+        return (carriers[0] if carriers else 1), name
+    i = len(name.rstrip("0123456789"))
+    return int(name[i:]), name[:i]
+
+
+def _cond(c, ref) -> float:
+    return c[ref].conditioning
+
+
+def _worst(c, refs) -> float:
+    """The worst conditioning of a polygon's tips: an ω or α read off it inherits it."""
+    return min(c[r].conditioning for r in refs)
+
+
+def _scalar(name: str, value: float | None, ref: float, scale: float, cond: float,
+            method: str) -> Quantity:
+    if value is None:
+        raise TarsimError(f"{name} could not be read off the polygon")
+    err = abs(value - ref) / max(abs(ref), scale, 1e-300)
+    value, ref = (_quiet(v, scale) for v in (value, ref))
+    return Quantity(name, {"value": value}, {"value": ref}, err, tolerance(cond), cond, method)
+
+
+def _vector_quantity(name: str, value, ref, scale: float, cond: float, method: str) -> Quantity:
+    (vx, vy), (rx, ry) = value, ref
+    err = math.hypot(vx - rx, vy - ry) / max(math.hypot(rx, ry), scale, 1e-300)
+    if math.hypot(vx, vy) <= NOISE * scale:
+        vx = vy = 0.0
+    if math.hypot(rx, ry) <= NOISE * scale:
+        rx = ry = 0.0
+    return Quantity(name, _vector(vx, vy), _vector(rx, ry), err, tolerance(cond), cond, method)
+
+
+def _quiet(x: float, scale: float) -> float:
+    """``x`` or 0 when it is rounding noise beside ``scale`` (the error is measured first)."""
+    return 0.0 if abs(x) <= NOISE * scale else x + 0.0
 
 
 def _velocity(asm, cs, point, method, scale) -> VelocityResult:

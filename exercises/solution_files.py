@@ -14,18 +14,21 @@ import math
 from dataclasses import dataclass
 from pathlib import Path
 
+from constructions import geometry as g
 from constructions.centres import centre_ref
 from constructions.errors import RenderError
-from constructions.record import Ref, slice as backward_slice, toposort
+from constructions.record import Panel, Ref, slice as backward_slice, toposort
 from graphics.circle_diagram import draw_circle_diagram
 from graphics.export import svg_to, write_text
 from graphics.figure import Figure
+from graphics.polygon_panel import draw_polygon_panel
 from graphics.scene import draw_scene, numbered_steps
 from graphics.svg import to_svg
+from graphics.worked_page import compose_worked_page
 
 from .exercise_file import Exercise
 from .results_json import results_json
-from .solution import Solution, solve_exercise
+from .solution import Solution, solve_positions
 
 __all__ = ["SolutionFigure", "solve_to_files", "write_solution"]
 
@@ -38,16 +41,27 @@ class SolutionFigure:
     heading: str
     figure: Figure
     refs: list[Ref]
+    panels: tuple[tuple[str, Panel, list[Ref]], ...] = ()
+    """For a worked page: each polygon's heading, panel and steps, narrated in turn."""
 
 
-def solve_to_files(ex: Exercise) -> tuple[Solution, dict[str, str]]:
-    """Solve ``ex`` and render every file, in memory: ``{file name: text}``."""
-    sol = solve_exercise(ex)
-    figures = _figures(sol)
-    files = {f"{f.stem}.svg": to_svg(f.figure) for f in figures}
-    files["steps.md"] = _steps_markdown(sol, figures)
-    files["results.json"] = results_json([sol], ex.id)
-    return sol, files
+def solve_to_files(ex: Exercise) -> tuple[list[Solution], dict[str, str]]:
+    """Solve ``ex`` at each position and render every file, in memory: ``{file name: text}``.
+
+    With several positions each figure's stem ends in the position's slug
+    (``worked-t-2.34s``); steps.md has a part per position.
+    """
+    sols = solve_positions(ex)
+    files: dict[str, str] = {}
+    parts = []
+    for sol in sols:
+        suffix = f"-{sol.position.slug}" if len(sols) > 1 else ""
+        figures = _figures(sol, suffix)
+        files.update({f"{f.stem}.svg": to_svg(f.figure) for f in figures})
+        parts.append(_steps_markdown(sol, figures, heading=len(sols) > 1))
+    files["steps.md"] = _steps_title(ex) + "\n".join(parts)
+    files["results.json"] = results_json(sols, ex.id)
+    return sols, files
 
 
 def write_solution(files: dict[str, str], out_dir: str | Path, *, pdf: bool = True) -> list[Path]:
@@ -74,7 +88,14 @@ def write_solution(files: dict[str, str], out_dir: str | Path, *, pdf: bool = Tr
 
 
 # ----- figures ---------------------------------------------------------------------------
-def _figures(sol: Solution) -> list[SolutionFigure]:
+def _figures(sol: Solution, suffix: str = "") -> list[SolutionFigure]:
+    out = _construction_figures(sol)
+    if sol.velocity_polygon is not None:
+        out.append(_worked_page(sol))
+    return [SolutionFigure(f.stem + suffix, f.heading, f.figure, f.refs, f.panels) for f in out]
+
+
+def _construction_figures(sol: Solution) -> list[SolutionFigure]:
     ex, asm = sol.exercise, sol.assembly
     c = asm.construction
     name = ex.mechanism.name
@@ -82,6 +103,8 @@ def _figures(sol: Solution) -> list[SolutionFigure]:
     pairs = list(ex.centres)
     d = ex.mechanism.drive.link
     for n in ex.omegas:
+        if sol.quantities[f"omega{n}"].method == "velocity polygon":
+            continue                    # read off the polygon: no centres to draw
         pairs += [(1, d)] if n == d else [(1, d), (1, n), tuple(sorted((d, n)))]
     if pairs:
         targets = [centre_ref(*p) for p in dict.fromkeys(pairs)]
@@ -103,6 +126,91 @@ def _figures(sol: Solution) -> list[SolutionFigure]:
     return out
 
 
+def _worked_page(sol: Solution) -> SolutionFigure:
+    """The space diagram, the polygons and the results table on one page.
+
+    Each polygon shows the backward slice of what is asked from it, and every
+    vector whose two ends that slice draws (the absolute vectors from the pole,
+    the components, the relative velocities ω is read from).
+    """
+    ex, asm = sol.exercise, sol.assembly
+    c = asm.construction
+    m = ex.mechanism
+    name = m.name
+    where = f" at {sol.position.label}" if sol.position else ""
+    space = draw_scene(asm, [], title=f"{name}: space diagram{where}")
+    panels, figures = [], [space]
+    for poly, panel, heading in ((sol.velocity_polygon, Panel.VELOCITY, "Velocity polygon"),
+                                 (sol.acceleration_polygon, Panel.ACCELERATION,
+                                  "Acceleration polygon")):
+        if poly is None:
+            continue
+        refs = _polygon_refs(c, poly, _polygon_targets(sol, poly, panel))
+        notes = [n for n in sol.notes if panel is Panel.ACCELERATION and "α" in n]
+        figures.append(draw_polygon_panel(c, refs, panel=panel, scale=poly.scale, units=m.units,
+                                          title=heading, notes=notes))
+        panels.append((heading, panel, refs))
+    table = [("quantity", "method", "construction", "analytic", "relative error")]
+    for qname, q in sol.quantities.items():
+        for qq in (q, *q.alternatives.values()):
+            table.append((_symbol(qname), qq.method, _show(qq.value, m.units, qname),
+                          _show(qq.reference, m.units, qname), f"{qq.rel_error:.1e}"))
+    page = compose_worked_page(f"{name}: worked solution{where}", figures, table, sol.notes)
+    return SolutionFigure("worked", "Worked solution", page, [], tuple(panels))
+
+
+def _symbol(name: str) -> str:
+    """A results.json name as the course writes it: omega4 → ω4, A_cor_B → Aᶜ_B."""
+    for word, letter in (("omega", "ω"), ("alpha", "α"), ("A_cor_", "Aᶜ_")):
+        if name.startswith(word):
+            return letter + name[len(word):]
+    return name
+
+
+def _polygon_targets(sol: Solution, poly, panel: Panel) -> list[Ref]:
+    """The steps of ``poly`` that answer the exercise: tips of asked points and of the links
+    whose ω or α is asked. The acceleration polygon takes every ω and sliding velocity
+    from the velocity polygon, so with accelerations asked the whole of it is needed."""
+    ex = sol.exercise
+    if panel is Panel.VELOCITY and sol.acceleration_polygon is not None:
+        return list(poly.tips.values())
+    letter = "V" if panel is Panel.VELOCITY else "A"
+    names = list(ex.velocities if letter == "V" and "polygon" in ex.methods else ())
+    names += ex.accelerations if letter == "A" else ()
+    names += [n for q in ex.relatives if q[0] == letter for n in q[2:].split("/")]
+    links = ex.omegas if letter == "V" else ex.alphas
+    targets = [poly.tips[poly.aliases.get(n, n)] for n in names]
+    if letter == "A":
+        targets += [poly.coriolis[p][1] for p in ex.coriolis]
+    targets += [r for key, r in poly.tips.items() for n in links
+                if _on_link(ex.mechanism, key, n)]
+    return list(dict.fromkeys(targets)) or [poly.pole]
+
+
+def _on_link(m, key: str, n: int) -> bool:
+    """True if tip ``key`` ("B", "A4") is a point carried by link ``n``."""
+    if key in m.point_names:
+        return n in m.links_at(key) or any(s.point == key and s.link == n for s in m.slides)
+    return key.endswith(str(n)) and key[:-len(str(n))] in m.point_names
+
+
+def _polygon_refs(c, poly, targets: list[Ref]) -> list[Ref]:
+    """The polygon's steps in the slice of ``targets``, with every vector between two drawn points.
+
+    The acceleration polygon reads ω and sliding velocities as numbers, not as
+    steps, so the velocity tips it needs are named in ``targets`` by the caller.
+    """
+    wanted = backward_slice(c, targets)
+    out = []
+    for r in poly.steps:
+        step = c[r]
+        if r in wanted or (isinstance(step.output, g.Segment)
+                           and all(i in wanted for i in step.inputs)):
+            out.append(r)
+            wanted.add(r)
+    return out
+
+
 def _drawn(c, targets: list[Ref], position_steps: frozenset[Ref]) -> list[Ref]:
     """The slice of ``targets`` in record order, less the position construction."""
     wanted = backward_slice(c, targets)
@@ -110,38 +218,48 @@ def _drawn(c, targets: list[Ref], position_steps: frozenset[Ref]) -> list[Ref]:
 
 
 # ----- steps.md -------------------------------------------------------------------------
-def _steps_markdown(sol: Solution, figures: list[SolutionFigure]) -> str:
+def _steps_title(ex: Exercise) -> str:
+    return f"# {ex.mechanism.name}: worked solution\n\n"
+
+
+def _steps_markdown(sol: Solution, figures: list[SolutionFigure], *, heading: bool) -> str:
+    """One position's part of steps.md: its figures' numbered steps, then its results.
+
+    ``heading`` puts the position's own heading first (several positions)."""
     ex = sol.exercise
     m = ex.mechanism
     d = m.drive
-    lines = [f"# {m.name}: worked solution", ""]
     angle = f"{math.degrees(d.angle):.6g}°" if m.units.angle == "deg" else f"{d.angle:.6g} rad"
     sense = "ccw" if d.omega > 0 else "cw"
-    lines += [f"Position: θ{d.link} = {angle}, ω{d.link} = {abs(d.omega):.6g} rad/s {sense}.", ""]
+    lines = [f"# At {sol.position.label}", ""] if heading else []
+    alpha = f", α{d.link} = {d.alpha:.6g} rad/s²" + ("" if d.alpha_given else " (not given: 0)")
+    lines += [f"Position: θ{d.link} = {angle}, ω{d.link} = {abs(d.omega):.6g} rad/s {sense}"
+              f"{alpha}.", ""]
     c = sol.assembly.construction
     for f in figures:
-        if not f.refs:
-            continue
-        lines += [f"## {f.heading} (`{f.stem}.svg`)", ""]
-        for number, step in numbered_steps(c, f.refs):
-            if step.sentence:
+        parts = [(f.heading, Panel.SPACE, f.refs)] if f.refs else []
+        parts += list(f.panels)
+        for title, panel, refs in parts:
+            lines += [f"## {title} (`{f.stem}.svg`)", ""]
+            for number, step in numbered_steps(c, refs, panel=panel):
                 lines.append(f"{number}. {step.sentence}")
-        lines.append("")
+            lines.append("")
     for note in sol.notes:
         lines.append(f"> {note}")
-    lines += ["## Results", "",
+    lines += ["", "## Results", "",
               "| quantity | construction | analytic | relative error | method |",
               "|---|---|---|---|---|"]
     for name, q in sol.quantities.items():
         rows = [(name, q)] + [(f"{name} ({m_})", a) for m_, a in q.alternatives.items()]
         for label, qq in rows:
-            lines.append(f"| {label} | {_show(qq.value, m.units)} | {_show(qq.reference, m.units)}"
-                         f" | {qq.rel_error:.2g} | {qq.method} |")
+            lines.append(f"| {label} | {_show(qq.value, m.units, name)} | "
+                         f"{_show(qq.reference, m.units, name)} | {qq.rel_error:.2g} | "
+                         f"{qq.method} |")
     return "\n".join(lines) + "\n"
 
 
-def _show(v: dict, units) -> str:
-    """A quantity in the file's units, for the results table."""
+def _show(v: dict, units, name: str = "") -> str:
+    """A quantity in the file's units, for the results tables; ``name`` tells its kind."""
     s = units.metres
     if "point" in v:
         x, y = v["point"]
@@ -153,7 +271,7 @@ def _show(v: dict, units) -> str:
         return f"at infinity, direction ({dx:.4f}, {dy:.4f})"
     if "vector" in v:
         x, y = v["vector"]
-        return (f"{v['value'] / s:.6g} {units.length}/s at "
-                f"{math.degrees(math.atan2(y, x)):.4g}°")
-    return f"{v['value']:.6g} rad/s"
-
+        per = "/s²" if name.startswith("A_") else "/s"
+        return (f"{v['value'] / s:.6g} {units.length}{per} at "
+                f"{math.degrees(math.atan2(y, x)) + 0.0:.4g}°")
+    return f"{v['value']:.6g} rad/s" + ("²" if name.startswith("alpha") else "")

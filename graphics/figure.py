@@ -11,7 +11,7 @@ import math
 from dataclasses import dataclass, field
 
 __all__ = ["Style", "STYLES", "View", "Path", "Circle", "Text", "Figure", "FONT", "text_width",
-           "SUB_SIZE", "SUB_DROP", "arc_points", "clip_line", "ray_to_edge"]
+           "SUB_SIZE", "SUB_DROP", "arc_points", "clip_line", "ray_to_edge", "span_line"]
 
 FONT = "DejaVu Serif"
 """One family that covers Latin, Greek, subscripts and ⊥ ∥ ∞ (cairosvg has no fallback)."""
@@ -146,8 +146,9 @@ SUB_DROP = 0.28
 
 # Advance widths of DejaVu Serif in ems (measured from the font), grouped by width.
 _ADVANCE_GROUPS = {
-    0.23: "′", 0.27: "'", 0.31: "j", 0.32: " ,.il·", 0.34: "-/:;\\|", 0.37: "f", 0.39: "()[]",
-    0.40: "!IJt₀₁₂₃₄₅₆₇₈₉", 0.46: '"∥', 0.48: "r", 0.50: "*_`°–", 0.51: "s", 0.53: "z",
+    0.23: "′", 0.25: "ᵗ", 0.27: "'", 0.31: "j", 0.32: " ,.il·", 0.34: "-/:;\\|ˢ", 0.35: "ᶜ",
+    0.37: "f", 0.39: "()[]", 0.40: "!IJt₀₁₂₃₄₅₆₇₈₉²", 0.43: "ⁿ", 0.46: '"∥', 0.48: "r",
+    0.50: "*_`°–", 0.51: "s", 0.53: "z",
     0.54: "?", 0.56: "cvxy", 0.59: "e", 0.60: "aoθ", 0.61: "k",
     0.64: "$0123456789bdghnpqu{}", 0.66: "LY", 0.67: "PT", 0.68: "α", 0.69: "FSZ",
     0.71: "X", 0.72: "AVΔ", 0.73: "BE", 0.75: "KR", 0.77: "C", 0.80: "DG", 0.82: "OQω",
@@ -280,3 +281,33 @@ def ray_to_edge(start: tuple[float, float], u: tuple[float, float], box: Box
           for k in (0, 1) if abs(u[k]) > 1e-12]
     t = max(0.0, min(ts)) if ts else 0.0
     return (start[0] + t * u[0], start[1] + t * u[1])
+
+
+def span_line(base: tuple[float, float], d: tuple[float, float],
+              stops: list[tuple[tuple[float, float], float]], lone: float) -> tuple[float, float]:
+    """Find the stretch ``lo ≤ t ≤ hi`` of the paper line ``base + t·d`` that shows its points.
+
+    A working line is drawn only as far as the points it carries (``stops``:
+    each paper point with how far the line runs on past it), as a student draws
+    just enough of it to make the cut; where points coincide at an end, the
+    shortest overhang wins (a line stops under a pin's circle). A line through
+    one point runs ``lone`` either side of it, one through none ``2·lone`` either
+    side of ``base``. ``d`` is a unit vector.
+
+    Examples
+    --------
+    >>> span_line((0.0, 0.0), (1.0, 0.0), [((2.0, 0.0), 4.0), ((10.0, 3.0), 1.0)], 12.0)
+    (-2.0, 11.0)
+    >>> span_line((0.0, 0.0), (0.0, 1.0), [((0.0, 5.0), 4.0)], 12.0)
+    (-7.0, 17.0)
+    """
+    if not stops:
+        return -2 * lone, 2 * lone
+    ts = [(p[0] - base[0]) * d[0] + (p[1] - base[1]) * d[1] for p, _ in stops]
+    if max(ts) - min(ts) < 1e-6:
+        return ts[0] - lone, ts[0] + lone
+
+    def reach(t: float) -> float:
+        return min(over for u, (_, over) in zip(ts, stops) if abs(u - t) < 1e-6)
+
+    return min(ts) - reach(min(ts)), max(ts) + reach(max(ts))

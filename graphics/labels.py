@@ -27,35 +27,45 @@ class LabelPlacer:
         self.fig = fig
         self.obstacles: list[BaseGeometry] = []
         self.keys: list[object] = []
+        self.weights: list[float] = []
         self._tree: STRtree | None = None
         self.clearance = 0.8
         # A page that is fitted to its content afterwards has no edge to avoid.
         self.page = box(1.0, 1.0, fig.width - 1.0, fig.height - 1.0) if fig.width else None
 
-    def block(self, geom: BaseGeometry, key: object = None) -> None:
-        """Mark an area (a link, a symbol, a placed label) as taken; ``key`` names it."""
+    def block(self, geom: BaseGeometry, key: object = None, weight: float = 1.0) -> None:
+        """Mark an area (a link, a symbol, a placed label) as taken; ``key`` names it.
+
+        ``weight`` prices covering it: below 1 for a thin working line a label may
+        cross sooner than it would stray from its anchor or touch another label.
+        """
         self.obstacles.append(geom)
         self.keys.append(key)
+        self.weights.append(weight)
         self._tree = None
 
-    def block_path(self, points, width: float = 0.4) -> None:
+    def block_path(self, points, width: float = 0.4, weight: float = 1.0) -> None:
         """Mark a drawn polyline (with a little clearance) as taken."""
         if len(points) >= 2:
-            self.block(LineString(points).buffer(width / 2 + 0.3, cap_style="flat"))
+            self.block(LineString(points).buffer(width / 2 + 0.3, cap_style="flat"),
+                       weight=weight)
 
     def block_segment(self, p: tuple[float, float], q: tuple[float, float], width: float = 0.8) -> None:
         """Mark a drawn segment (with a little clearance) as taken."""
         self.block(LineString([p, q]).buffer(width / 2 + 0.3, cap_style="flat"))
 
     def overlap(self, geom: BaseGeometry, ignore: object = None) -> float:
-        """Area of ``geom`` covered by obstacles (but those keyed ``ignore``) or off the page."""
+        """Area of ``geom`` covered by obstacles (but those keyed ``ignore``) or off the page.
+
+        Each obstacle's area counts times its weight.
+        """
         if self._tree is None:
             self._tree = STRtree(self.obstacles) if self.obstacles else None
         area = 0.0 if self.page is None else geom.area - geom.intersection(self.page).area
         if self._tree is not None:
             for i in self._tree.query(geom):
                 if ignore is None or self.keys[int(i)] != ignore:
-                    area += geom.intersection(self.obstacles[int(i)]).area
+                    area += self.weights[int(i)] * geom.intersection(self.obstacles[int(i)]).area
         return area
 
     def clearest(self, shapes: list[BaseGeometry], ignore: object = None) -> int:
@@ -124,25 +134,28 @@ class LabelPlacer:
     def place_numbered(self, text: str, anchor: tuple[float, float] | list[tuple[float, float]],
                        numbers: list[int], *, sub: str = "",
                        prefer: float | tuple[float, ...] = math.pi / 4, spread: float = math.pi,
-                       gap: float = 1.4, size: float = 3.4) -> tuple[float, float] | None:
+                       gap: float = 1.4, size: float = 3.4, tail: str = "",
+                       rings: tuple[float, ...] = (1.0, 1.6, 2.4, 3.4, 4.6, 6.0, 8.0)
+                       ) -> tuple[float, float] | None:
         """Place a label followed by circled step numbers, as one unit clear of everything.
 
-        Either part may be empty. Returns the unit's centre, or None if there was
-        nothing to place.
+        Either part may be empty. ``tail`` follows the subscript on the baseline
+        ("Aⁿ" sub "B/A" tail " = 0"). ``rings`` are the distances tried, in
+        ``gap``s: fewer keep a label by its anchor at the cost of some overlap.
+        Returns the unit's centre, or None if there was nothing to place.
         """
         if not text and not numbers:
             return None
-        t = Text((0.0, 0.0), text, size, "middle", sub=sub) if text else None
+        t = Text((0.0, 0.0), text, size, "middle", sub=sub, tail=tail) if text else None
         x0, y0, x1, y1 = t.box() if t else (0.0, 0.0, 0.0, 0.0)
         radii = [badge_radius(n) for n in numbers]
         w = (x1 - x0) + sum(2 * r + 0.6 for r in radii) - (0.0 if t else 0.6)
         h = max(y1 - y0, 2 * max(radii, default=0.0))
-        c, _ = self.spot(w, h, anchor, prefer=prefer, spread=spread, gap=gap,
-                         rings=(1.0, 1.6, 2.4, 3.4, 4.6, 6.0, 8.0))
+        c, _ = self.spot(w, h, anchor, prefer=prefer, spread=spread, gap=gap, rings=rings)
         x = c[0] - w / 2
         if t:
             self.fig.add(Text((x + (x1 - x0) / 2, c[1] - (y0 + y1) / 2), text, size, "middle",
-                              sub=sub))
+                              sub=sub, tail=tail))
             x += (x1 - x0) + 0.6
         for n, r in zip(numbers, radii):
             draw_badge(self.fig, (x + r, c[1]), n)
@@ -157,7 +170,7 @@ class LabelPlacer:
 
 
 _SUBSCRIPT = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
-_TRAILING = re.compile(r"^(.*?[^\d,])([\d,]+)$")
+_TRAILING = re.compile(r"^(.*?[^\d,])([\d,]+)([′″]*)$")
 
 
 def typeset(label: str) -> tuple[str, str]:
@@ -165,7 +178,9 @@ def typeset(label: str) -> tuple[str, str]:
 
     ``V_A`` is V with subscript A; digits that end a name become Unicode
     subscripts (``I13`` → I₁₃, ``ω2`` → ω₂), inside a subscript too
-    (``V_I23`` → V with subscript I₂₃).
+    (``V_I23`` → V with subscript I₂₃), before primes too (``a4′`` → a₄′, an
+    acceleration tip), and on each side of a relative vector's slash
+    (``A_A3/A4`` → A with subscript A₃/A₄).
 
     Examples
     --------
@@ -175,13 +190,15 @@ def typeset(label: str) -> tuple[str, str]:
     ('I₁₃', '')
     >>> typeset("A_B/A")
     ('A', 'B/A')
+    >>> typeset("Aᶜ_A3/A4"), typeset("a4′")
+    (('Aᶜ', 'A₃/A₄'), ('a₄′', ''))
     """
     head, _, sub = label.partition("_")
-    return _digits_down(head), _digits_down(sub)
+    return _digits_down(head), "/".join(_digits_down(part) for part in sub.split("/"))
 
 
 def _digits_down(name: str) -> str:
     m = _TRAILING.match(name)
     if m is None or " " in name or not m.group(1).strip():
         return name
-    return m.group(1) + m.group(2).translate(_SUBSCRIPT)
+    return m.group(1) + m.group(2).translate(_SUBSCRIPT) + m.group(3)

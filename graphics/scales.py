@@ -86,16 +86,17 @@ def _heading(text: str) -> Text:
 
 def draw_caption(fig: Figure, heading: str, lines: Sequence[str], *, per_cm: float, unit: str,
                  legend: Sequence[tuple[str, str]] = (), notes: Sequence[str] = (),
-                 margin: float = 8.0) -> None:
+                 margin: float = 8.0, scale_name: str = "Scale") -> None:
     """Move the drawing in from a ``margin`` and set the caption under it; size the page.
 
-    Left: the bold ``heading`` and ``lines``. Right: the scale statement and its
-    bar. Under both: a ``legend`` of (style, name) line samples, then ``notes``.
+    Left: the bold ``heading`` and ``lines``. Right: the scale statement, which
+    ``scale_name`` opens ("Velocity scale 1 cm = 5 mm/s"), and its bar. Under
+    both: a ``legend`` of (style, name) line samples, then ``notes``.
     """
     x0, y0, x1, y1 = fig.bounds()
     fig.shift(margin - x0, margin - y0)
     head = _heading(heading)
-    scale = f"Scale {scale_text(per_cm, unit)}"
+    scale = f"{scale_name} {scale_text(per_cm, unit)}"
     left = max([head.width] + [text_width(t, 3.2) for t in lines])
     right = max(text_width(scale, 3.2), 40.0 + text_width(f" {unit}", 2.6) + 6.0)
     legend_w = sum(18.0 + text_width(name, 2.8) for _, name in legend)

@@ -41,13 +41,13 @@ from constructions.model import SlideKind
 from constructions.record import Construction, Panel, Ref, Role, Step
 
 from .diagram import _Diagram, subscript
-from .figure import Circle, Figure, Path, arc_points, clip_line, ray_to_edge
+from .figure import Circle, Figure, Path, arc_points, clip_line, ray_to_edge, span_line
 from .labels import typeset
 from .scales import draw_caption, number_text
 from .symbols import PIN_RADIUS, draw_arrow, draw_arrowhead, unit
 
-__all__ = ["draw_scene", "numbered_steps", "choose_velocity_scale", "centre_steps", "line_kind",
-           "FRAME_CAP", "FRAME_MIN", "LINE_KINDS"]
+__all__ = ["draw_scene", "numbered_steps", "panel_steps", "choose_velocity_scale", "centre_steps",
+           "line_kind", "FRAME_CAP", "FRAME_MIN", "LINE_KINDS"]
 
 FRAME_CAP = 1.6
 """The page's frame grows to take in the scene's points up to this many mechanism extents..."""
@@ -94,10 +94,12 @@ def line_kind(step: Step) -> str:
     return "working"
 
 
-def numbered_steps(construction: Construction, refs: Iterable[Ref]) -> list[tuple[int, Step]]:
-    """Number the steps of a scene as its figure does: 1, 2, … in the order of ``refs``.
+def numbered_steps(construction: Construction, refs: Iterable[Ref], *,
+                   panel: Panel = Panel.SPACE) -> list[tuple[int, Step]]:
+    """Number the steps of a figure as it does: 1, 2, … in the order of ``refs``.
 
-    Only steps that draw something on the space diagram and say so in a sentence
+    Only steps that draw something on the figure's ``panel`` (the space diagram
+    by default, or a velocity or acceleration polygon) and say so in a sentence
     are counted; givens are not numbered, and neither is a point the act before
     it already named (B′ where the swung arc cuts the line: its step has no
     sentence of its own), though both are drawn. A set of refs (as
@@ -111,7 +113,7 @@ def numbered_steps(construction: Construction, refs: Iterable[Ref]) -> list[tupl
         If a ref names no step of the construction.
     """
     out: list[tuple[int, Step]] = []
-    for step in _ordered(construction, refs):
+    for step in panel_steps(construction, refs, panel):
         if step.role is not Role.GIVEN and step.sentence and _draws(step):
             out.append((len(out) + 1, step))
     return out
@@ -184,11 +186,23 @@ def draw_scene(asm: Assembly, refs: Iterable[Ref], *, title: str | None = None,
     TarsimError
         If a ref names no step of the construction.
     """
-    return _Scene(asm, _ordered(asm.construction, refs), title, velocity_scale, notes).draw()
+    return _Scene(asm, panel_steps(asm.construction, refs), title, velocity_scale, notes).draw()
 
 
 # ----- what a step draws --------------------------------------------------------------------
-def _ordered(construction: Construction, refs: Iterable[Ref]) -> list[Step]:
+def panel_steps(construction: Construction, refs: Iterable[Ref],
+                panel: Panel = Panel.SPACE) -> list[Step]:
+    """Return the steps of ``refs`` drawn in ``panel``, in narration order, each once.
+
+    A list is taken in its own order, a set (as
+    :func:`~constructions.record.slice` returns) in record order; steps of other
+    panels are left out, so one slice serves every panel's figure.
+
+    Raises
+    ------
+    TarsimError
+        If a ref names no step of the construction.
+    """
     if isinstance(refs, (set, frozenset)):
         missing = sorted(r for r in refs if r not in construction)
         wanted = set(refs)
@@ -206,7 +220,7 @@ def _ordered(construction: Construction, refs: Iterable[Ref]) -> list[Step]:
                 ordered.append(construction[r])
     if missing:
         raise TarsimError(f"nothing in the construction is called '{missing[0]}'")
-    return [s for s in ordered if s.panel is Panel.SPACE]
+    return [s for s in ordered if s.panel is panel]
 
 
 def _segment_ends(steps: list[Step]) -> list[g.Point]:
@@ -351,20 +365,11 @@ class _Scene(_Diagram):
         mid = ((self.clip[0] + self.clip[2]) / 2, (self.clip[1] + self.clip[3]) / 2)
         t_mid = (mid[0] - a[0]) * d[0] + (mid[1] - a[1]) * d[1]
         base = (a[0] + t_mid * d[0], a[1] + t_mid * d[1])
-        on = [(i, p) for i, p in self.points if self.on_line(line, p)]
-        ts = [(self.view(p)[0] - base[0]) * d[0] + (self.view(p)[1] - base[1]) * d[1]
-              for _, p in on]
-        if not ts:
-            lo, hi = -2 * _LONE, 2 * _LONE
-        elif max(ts) - min(ts) < 1e-6:
-            lo, hi = ts[0] - _LONE, ts[0] + _LONE
-        else:
-            # Past a constructed point the line runs on a little, to show the cut;
-            # at a pin it stops under the pin's circle.
-            def reach(t):
-                pin = any(self.is_pin(p) for (_, p), u in zip(on, ts) if abs(u - t) < 1e-6)
-                return PIN_RADIUS if pin else _OVERHANG
-            lo, hi = min(ts) - reach(min(ts)), max(ts) + reach(max(ts))
+        # Past a constructed point the line runs on a little, to show the cut; at a
+        # pin it stops under the pin's circle.
+        stops = [(self.view(p), PIN_RADIUS if self.is_pin(p) else _OVERHANG)
+                 for _, p in self.points if self.on_line(line, p)]
+        lo, hi = span_line(base, d, stops, _LONE)
         self.lines.append(([step], clip_line(base, d, lo, hi, self.clip)))
 
     def plan_circle(self, step: Step) -> None:

@@ -146,3 +146,25 @@ def coupler_four_bar(theta2, *, omega2=2.0):
                        ("D", (0.32, 0.0))), "coupler")
     links = tuple(coupler if k.number == 3 else k for k in m.links)
     return Mechanism(links, m.drive, m.slides, dict(m.branches), m.units, "coupler four-bar")
+
+
+def inverted_slider_crank(theta2: float, *, ground=0.3, crank=0.12, lever=0.5, offset=0.0,
+                          omega2=0.0, alpha2=0.0) -> Mechanism:
+    """Return an inverted slider-crank: the crank-shaper's driving chain without the ram.
+
+    Links: 1 frame (O2 at the origin, O4 ``ground`` along +x), 2 crank O2A, 3 block
+    pinned to the crank at A and sliding in the slot of lever 4, 4 slotted lever
+    pivoted at O4 with a point B ``lever`` along its axis. The slot runs along the
+    lever's axis, ``offset`` to its left (0: through O4). With ``crank`` < ``ground``
+    the lever rocks (the crank-shaper's chain); with ``crank`` > ``ground`` it turns
+    fully, the driving chain of a Whitworth quick-return. Dimensions assumed, in
+    metres (figures in mm).
+    """
+    return Mechanism(
+        (Link(1, (("O2", (0.0, 0.0)), ("O4", (ground, 0.0)))),
+         Link(2, (("O2", (0.0, 0.0)), ("A", (crank, 0.0))), "crank"),
+         Link(3, (("A", (0.0, 0.0)),), "block"),
+         Link(4, (("O4", (0.0, 0.0)), ("B", (lever, 0.0))), "slotted lever")),
+        Drive(2, theta2, omega2, alpha2),
+        (Slide(SlideKind.BLOCK, 3, "A", 4, (0.0, offset), (1.0, 0.0)),),
+        units=Units("mm"), name="inverted slider-crank")

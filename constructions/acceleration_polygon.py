@@ -1,0 +1,420 @@
+"""The acceleration polygon: relative accelerations and Coriolis, the lecture notes §2.10–2.11.
+
+Every acceleration is drawn from one pole ``o_a``; the tip of A_X is ``x′``. The
+polygon walks the mechanism as the velocity polygon did, and takes from it every
+ω and every relative velocity, so each known component is drawn before the
+unknown one:
+
+* a point X of link c with a known point K: ``A_X = A_K + Aⁿ_X/K + Aᵗ_X/K``.
+  From k′ lay off the normal component ω_c²·KX parallel to XK, pointing from X
+  toward K; through its end draw the tangential component's line ⟂ KX, of
+  unknown length.
+* a block or pin on a frame guide (or any point of a link that slides on it
+  without turning): the parallel to the guide through ``o_a``.
+* coincident points on a slot of a moving link j (the notes' A2 and A4):
+  ``A_A2 = A_A4 + Aᶜ + Aˢ``. From a4′ lay off the Coriolis component
+  2ω_j·v_rel, its direction v_rel = V_A2/A4 turned 90° the way ω_j turns; through
+  its end draw the parallel to the slot, the sliding acceleration of unknown
+  length.
+
+Two lines cross at the tip; images and translating links follow as in the
+velocity polygon. α of each link is read off a tangential component,
+α = Aᵗ_X/K / KX with the sense of Aᵗ_X/K about K.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+from .assembly import Assembly
+from .coincident import Node
+from .errors import TarsimError
+from .polygon_walk import NOISE, PolygonWalk, nice_scale, sense_of
+from .record import Construction, Panel, Ref, Role
+from .velocity_polygon import VelocityPolygon
+
+__all__ = ["AccelerationPolygon", "draw_acceleration_polygon", "accel_text"]
+
+
+
+def accel_text(a: float, units) -> str:
+    """An acceleration (m/s²) in the file's length unit: "535.6 mm/s²"."""
+    return f"{a / units.metres:.6g} {units.length}/s²"
+
+
+@dataclass
+class AccelerationPolygon:
+    """A drawn acceleration polygon: its pole, scale, tips, α and Coriolis components.
+
+    ``tips`` maps a point name (or coincident point ``"A4"``) to its tip step, as
+    :class:`~constructions.velocity_polygon.VelocityPolygon` does. ``alphas``
+    maps each moving link to α (rad/s², counter-clockwise positive).
+    ``coriolis`` maps the point of each slot to its (start, end) steps: the
+    Coriolis component 2ω_j × V_P/Pj of the sliding point P relative to the
+    coincident point Pj of the slotted link j. ``components`` maps each drawn
+    component's label ("Aⁿ_B/A", "Aᵗ_B/A") to its segment step.
+    """
+
+    pole: Ref
+    scale: float
+    tips: dict[str, Ref]
+    alphas: dict[int, float]
+    steps: list[Ref]
+    space_steps: list[Ref] = field(default_factory=list)
+    construction: Construction = field(default_factory=Construction, repr=False)
+    aliases: dict[str, str] = field(default_factory=dict)
+    coriolis: dict[str, tuple[Ref, Ref, float]] = field(default_factory=dict)
+    components: dict[str, Ref] = field(default_factory=dict)
+
+    def acceleration(self, name: str) -> tuple[float, float]:
+        """Read A of ``name`` (m/s²) off the polygon: the vector o_a → its tip.
+
+        Raises
+        ------
+        TarsimError
+            If the polygon has no tip of that name.
+        """
+        key = self.aliases.get(name, name)
+        if key not in self.tips:
+            raise TarsimError(f"the acceleration polygon has no tip for {name}; it has "
+                              f"{', '.join(self.tips)}")
+        return self._vector(self.pole, self.tips[key])
+
+    def coriolis_of(self, point: str) -> tuple[float, float]:
+        """The Coriolis component 2ω_j × v_rel at slot point ``point`` (m/s²), as drawn.
+
+        Raises
+        ------
+        TarsimError
+            If no point of that name slides in a moving slot.
+        """
+        if point not in self.coriolis:
+            raise TarsimError(f"no Coriolis component at {point}; the polygon has one at "
+                              f"{', '.join(self.coriolis) or 'no point'}")
+        start, end, sign = self.coriolis[point]
+        x, y = self._vector(start, end)
+        return sign * x + 0.0, sign * y + 0.0
+
+    def _vector(self, start: Ref, end: Ref) -> tuple[float, float]:
+        (sx, sy), (ex, ey) = (self.construction.output(r).xy for r in (start, end))
+        return (ex - sx) / self.scale, (ey - sy) / self.scale
+
+
+def draw_acceleration_polygon(asm: Assembly, vp: VelocityPolygon, scale: float | None = None, *,
+                              pole: tuple[float, float] = (0.0, 0.0)) -> AccelerationPolygon:
+    """Draw the acceleration polygon of ``asm`` from its velocity polygon ``vp``.
+
+    Parameters
+    ----------
+    asm : Assembly
+        The mechanism drawn at one position, with the drive's ω and α (α is 0
+        unless the file gives it).
+    vp : VelocityPolygon
+        The velocity polygon drawn on the same construction: it gives every ω and
+        every sliding velocity.
+    scale : float, optional
+        Drawing metres per m/s². By default a 1, 2 or 5 × 10^k that makes the input
+        pin's acceleration about half the mechanism's size.
+    pole : (float, float)
+        Where ``o_a`` stands in the acceleration panel (drawing metres).
+
+    Returns
+    -------
+    AccelerationPolygon
+
+    Raises
+    ------
+    AssemblyError
+        At a dead point (the two lines of a tip are parallel).
+    TarsimError
+        If the scale is not a positive number, a polygon is already drawn on this
+        construction, or ``vp`` belongs to another construction.
+
+    Examples
+    --------
+    A crank turning at a steady 2 rad/s: A_A is ω²·O2A = 12 toward O2.
+
+    >>> import math
+    >>> from constructions.assembly import assemble
+    >>> from constructions.model import Drive, Link, Mechanism, Slide, SlideKind
+    >>> from constructions.velocity_polygon import draw_velocity_polygon
+    >>> m = Mechanism((Link(1, (("O2", (0, 0)),)), Link(2, (("O2", (0, 0)), ("A", (3, 0)))),
+    ...                Link(3, (("A", (0, 0)), ("B", (8, 0)))), Link(4, (("B", (0, 0)),))),
+    ...               Drive(2, math.pi / 2, omega=2.0),
+    ...               (Slide(SlideKind.BLOCK, 4, "B", 1, (0, 0), (1, 0)),),
+    ...               branches={"B": "forward"})
+    >>> asm = assemble(m)
+    >>> ap = draw_acceleration_polygon(asm, draw_velocity_polygon(asm, 1.0), 1.0)
+    >>> tuple(round(v, 12) + 0.0 for v in ap.acceleration("A"))
+    (0.0, -12.0)
+    """
+    if vp.construction is not asm.construction:
+        raise TarsimError("the velocity polygon belongs to another construction; draw both "
+                          "on one assembly")
+    if scale is None:
+        d, m = asm.mechanism.drive, asm.mechanism
+        r = m.link(d.link).span(*m.link(d.link).names[:2])
+        accel = r * math.hypot(d.omega ** 2, d.alpha)
+        scale = 1.0 if accel == 0.0 else nice_scale(asm.size / (2.0 * accel))
+    if not (isinstance(scale, (int, float)) and math.isfinite(scale) and scale > 0.0):
+        raise TarsimError(f"the acceleration scale must be a positive number, got {scale}")
+    return _Polygon(asm, vp, float(scale), pole).run()
+
+
+class _Polygon(PolygonWalk):
+    prefix, pole_name, panel, symbol, noun, prime = (
+        "ap", "o_a", Panel.ACCELERATION, "A", "acceleration", "′")
+
+    def __init__(self, asm: Assembly, vp: VelocityPolygon, scale: float,
+                 pole: tuple[float, float]):
+        super().__init__(asm, scale, pole)
+        self.vp = vp
+        self.omegas = vp.omegas
+        self.normals: dict[tuple[Node, int], list[tuple[Node, Ref]]] = {}
+        self.coriolis: dict[str, tuple[Ref, Ref, float]] = {}
+        self.components: dict[str, Ref] = {}
+        self.slides_drawn: list[tuple[Node, Node, Ref, float]] = []
+
+    def run(self) -> AccelerationPolygon:
+        self.walk()
+        alphas = self.draw_results()
+        tips, aliases = self.tips()
+        return AccelerationPolygon(self.pole_ref, self.scale, tips, alphas, self.steps,
+                                   self.space_steps, self.c, aliases, self.coriolis,
+                                   self.components)
+
+    def say(self, a: float) -> str:
+        return accel_text(a, self.m.units)
+
+    def velocity(self, n: Node) -> tuple[float, float]:
+        return (0.0, 0.0) if self.zero(n) else self.vp.velocity(self.name(n))
+
+    def component(self, ref: Ref, start: Ref, end: Ref, label: str) -> None:
+        """Draw a known or found component as an arrow (no sentence: the act before it said it)."""
+        if math.dist(self.c.output(start).xy, self.c.output(end).xy) > 0.0:
+            self.c.draw(ref, "join", start, end, label=label, panel=self.panel)
+            self.steps.append(ref)
+            self.components[label] = ref
+
+    # ----- the input ----------------------------------------------------------------
+    def draw_input(self) -> None:
+        d = self.m.drive
+        k = self.m.link(d.link)
+        pivot, point = k.names[0], k.names[1]
+        x, o = Node(point), Node(pivot)
+        X, r = self.name(x), k.span(pivot, point)
+        line = self.space_line(o, x, d.link)
+        w = f"ω{d.link}"
+        normal = self.act(
+            f"ap:{X}:n", "lay_off", self.pole_ref, line, length=-d.omega ** 2 * r * self.scale,
+            sentence=f"From o_a lay off Aⁿ_{X} = {w}²·{pivot}{point} = ({abs(d.omega):.6g} "
+                     f"rad/s)² × {self.m.units.length_text(r)} = {self.say(d.omega ** 2 * r)} "
+                     f"parallel to {point}{pivot}, pointing from {point} toward {pivot} (the "
+                     "normal component).")
+        self.component(f"ap:{X}:n:vec", self.pole_ref, normal, f"Aⁿ_{X}")
+        given = "given" if d.alpha_given else "not given, so taken as 0"
+        a = f"α{d.link}"
+        if d.alpha == 0.0:
+            tip = self.act(f"ap:tip:{X}", "mark", normal, label=self.tip_name(X),
+                           sentence=f"{a} = 0 ({given}), so Aᵗ_{X} = {a}·{pivot}{point} = 0: "
+                                    f"{self.tip_name(X)} is at the end of Aⁿ_{X}.")
+        else:
+            perp = self.act(f"ap:{X}:t:perp", "perpendicular_through", normal, line,
+                            sentence=f"Through its end draw a line ⟂ {pivot}{point} (the "
+                                     f"direction of Aᵗ_{X}).")
+            sense = "ccw" if d.alpha > 0 else "cw"
+            tip = self.act(
+                f"ap:tip:{X}", "lay_off", normal, perp, length=d.alpha * r * self.scale,
+                label=self.tip_name(X),
+                sentence=f"Along it lay off Aᵗ_{X} = {a}·{pivot}{point} = {abs(d.alpha):.6g} "
+                         f"rad/s² × {self.m.units.length_text(r)} = "
+                         f"{self.say(abs(d.alpha) * r)}, in the sense of {a} ({sense}); its "
+                         f"end is {self.tip_name(X)}.")
+            self.component(f"ap:{X}:t:vec", normal, tip, f"Aᵗ_{X}")
+        self.known[x] = tip
+
+    # ----- the lines that carry a tip ---------------------------------------------
+    def draw_locus(self, x: Node, locus: tuple) -> tuple[Ref, str]:
+        kind, X = locus[0], self.name(x)
+        if kind == "rel":
+            return self.draw_relative(x, *locus[1:])
+        if kind in ("guide", "glide"):
+            i = locus[1]
+            why = (f"the guide of {X}" if kind == "guide" else
+                   f"the guide of link {locus[2]}, which slides on it without turning")
+            ref = self.act(f"ap:{X}:{kind}@{i}", "parallel_through", self.pole_ref,
+                           self.asm.guides[i],
+                           sentence=f"Through o_a draw the parallel to {why} (the direction of "
+                                    f"A_{X}, as the guide is straight and fixed).")
+            return ref, "the parallel to the guide through o_a"
+        return self.draw_slot(x, *locus[1:])
+
+    def draw_relative(self, x: Node, k: Node, c: int) -> tuple[Ref, str]:
+        """Aⁿ_X/K laid off from k′ toward K, then the line of Aᵗ_X/K ⟂ KX through its end."""
+        line = self.space_line(k, x, c)
+        X, K = self.name(x), self.name(k)
+        kx, xk = f"{k.point}{x.point}", f"{x.point}{k.point}"
+        rel = X if self.zero(k) else f"{X}/{K}"
+        w = self.omegas.get(c)
+        if w is None:
+            raise TarsimError(f"the velocity polygon gave no ω of link {c}, which A_{X} needs")
+        r = math.dist(self.xy(k), self.xy(x))
+        start = self.tip(k)
+        if w == 0.0:
+            ref = self.act(f"ap:{X}:t@{K}", "perpendicular_through", start, line,
+                           sentence=f"ω{c} = 0, so Aⁿ_{rel} = 0: through "
+                                    f"{self.tip_label(k)} draw a line ⟂ {kx} (the direction "
+                                    f"of Aᵗ_{rel}, length unknown).")
+            self.normals.setdefault((x, c), []).append((k, start))
+            return ref, f"the line ⟂ {kx} through {self.tip_label(k)}"
+        end = self.act(
+            f"ap:{X}:n@{K}", "lay_off", start, line, length=-w * w * r * self.scale,
+            sentence=f"From {self.tip_label(k)} lay off Aⁿ_{rel} = ω{c}²·{kx} = "
+                     f"({abs(w):.6g} rad/s)² × {self.m.units.length_text(r)} = "
+                     f"{self.say(w * w * r)} parallel to {xk}, pointing from {x.point} toward "
+                     f"{k.point}.")
+        self.component(f"ap:{X}:n@{K}:vec", start, end, f"Aⁿ_{rel}")
+        ref = self.act(f"ap:{X}:t@{K}", "perpendicular_through", end, line,
+                       sentence=f"Through its end draw a line ⟂ {kx} (the direction of "
+                                f"Aᵗ_{rel}, length unknown).")
+        self.normals.setdefault((x, c), []).append((k, end))
+        return ref, f"the line ⟂ {kx} through the end of Aⁿ_{rel}"
+
+    def draw_slot(self, x: Node, other: Node, i: int) -> tuple[Ref, str]:
+        """Coriolis 2ω_j·v_rel laid off from the other point's tip, then the parallel to the slot."""
+        s = self.m.slides[i]
+        j = s.guide_link
+        slider, carried = (x, other) if x.link is None else (other, x)
+        P, Pj = self.name(slider), self.name(carried)
+        (vsx, vsy), (vcx, vcy) = self.velocity(slider), self.velocity(carried)
+        tx, ty = self.asm.guide(i).direction
+        u = (vsx - vcx) * tx + (vsy - vcy) * ty          # V_P/Pj along the slot
+        w = self.omegas[j]
+        sign = 1.0 if x.link is None else -1.0              # A_Pj = A_P − Aᶜ − Aˢ
+        start = self.tip(other)
+        X, O = self.name(x), self.tip_label(other)
+        still = sense_of(w, abs(self.m.drive.omega)) == "at rest"
+        stuck = abs(u) <= NOISE * self.m.input_speed
+        cor = 0.0 if still or stuck else 2.0 * w * u
+        label = f"Aᶜ_{P}/{Pj}" if sign > 0 else f"−Aᶜ_{P}/{Pj}"
+        if cor == 0.0:
+            why = (f"ω{j} = 0 (link {j} is at rest for this instant)" if still else
+                   f"V_{P}/{Pj} = 0 (no sliding at this instant)")
+            end = self.act(f"ap:{X}:cor", "mark", start,
+                           sentence=f"The Coriolis component 2ω{j}·V_{P}/{Pj} is zero, as "
+                                    f"{why}.")
+        else:
+            perp = self.act(f"ap:{X}:cor:perp", "perpendicular_through", start,
+                            self.asm.guides[i],
+                            sentence=f"Through {O} draw a line ⟂ the slot of link {j} (the "
+                                     f"direction of the Coriolis component).")
+            sense = "ccw" if w > 0 else "cw"
+            toward = "" if sign > 0 else ", reversed, as it is subtracted"
+            end = self.act(
+                f"ap:{X}:cor", "lay_off", start, perp, length=sign * cor * self.scale,
+                sentence=f"Along it lay off the Coriolis component Aᶜ_{P}/{Pj} = "
+                         f"2ω{j}·V_{P}/{Pj} = 2 × {abs(w):.6g} rad/s × "
+                         f"{self.vp_say(abs(u))} = {self.say(abs(cor))}, in the direction of "
+                         f"V_{P}/{Pj} turned 90° the way ω{j} turns ({sense}){toward}.")
+            self.component(f"ap:{X}:cor:vec", start, end, label)
+        self.coriolis[slider.point] = (start, end, sign)
+        ref = self.act(f"ap:{X}:slot@{i}", "parallel_through", end, self.asm.guides[i],
+                       sentence=f"Through its end draw the parallel to the slot of link {j} (the "
+                                f"direction of the sliding acceleration Aˢ_{P}/{Pj}, length "
+                                "unknown).")
+        self.slides_drawn.append((slider, carried, end, sign))
+        return ref, f"the parallel to the slot through the end of {label}"
+
+    def vp_say(self, v: float) -> str:
+        return f"{v / self.m.units.metres:.6g} {self.m.units.length}/s"
+
+    # ----- results ----------------------------------------------------------------
+    def draw_results(self) -> dict[int, float]:
+        """Draw A of every point from o_a and the found components; read α of every link.
+
+        α of a link comes from a tangential component where one was drawn on it
+        (α4 = Aᵗ_B / O4B), else from the relative acceleration of its two points
+        (its part ⟂ the line joining them).
+        """
+        alphas: dict[int, float] = {}
+        said: dict[Node, list[str]] = {}
+        later = []
+        for (x, c), ends in self.normals.items():
+            for k, end in ends:
+                rel = self.name(x) if self.zero(k) else f"{self.name(x)}/{self.name(k)}"
+                self.component(f"ap:{self.name(x)}:t@{self.name(k)}:vec", end, self.known[x],
+                               f"Aᵗ_{rel}")
+        for s_, c_, end, sign in self.slides_drawn:
+            P, Pj = self.name(s_), self.name(c_)
+            tip = self.known[s_] if sign > 0 else self.known[c_]
+            self.component(f"ap:{P}:slide:vec", end, tip,
+                           f"Aˢ_{P}/{Pj}" if sign > 0 else f"−Aˢ_{P}/{Pj}")
+        d = self.m.drive
+        alphas[d.link] = d.alpha        # given (or taken as 0), not read back
+        for k in self.m.links:
+            c = k.number
+            if c in (1, d.link):
+                continue
+            found = self.alpha_from_tangent(c)
+            if found is None:
+                pair = self.read_pair(c)
+                if pair is None:
+                    later.append(c)
+                    continue
+                found = self.alpha_from_pair(c, *pair)
+            alpha, node, text = found
+            alphas[c] = alpha
+            said.setdefault(node, []).append(text)
+        self.block_rates(alphas, later)
+        drive = Node(self.m.link(self.m.drive.link).names[1])
+        for n in self.nodes:
+            if self.zero(n):
+                continue
+            X = self.name(n)
+            self.act(f"ap:A:{X}", "join", self.pole_ref, self.known[n], label=f"A_{X}",
+                     role=Role.GIVEN if n == drive else Role.RESULT,
+                     sentence=" ".join([f"o_a {self.tip_name(X)} = A_{X} = "
+                                        f"{self.say(self.length(self.known[n]))}."]
+                                       + said.get(n, [])))
+        return alphas
+
+    def alpha_from_tangent(self, c: int) -> tuple[float, Node, str] | None:
+        """α_c = Aᵗ_X/K / KX from the tangential component on link c, with its sense about K."""
+        best = None
+        for (x, cc), ends in self.normals.items():
+            if cc != c:
+                continue
+            for k, end in ends:
+                r = math.dist(self.xy(k), self.xy(x))
+                key = (self.zero(k), r)
+                if best is None or key > best[0]:
+                    best = (key, x, k, end)
+        if best is None:
+            return None
+        _, x, k, end = best
+        (kx, ky), (xx, xy) = self.xy(k), self.xy(x)
+        rx, ry = xx - kx, xy - ky
+        ax, ay = self.vector(end, self.known[x])
+        alpha = (rx * ay - ry * ax) / (rx * rx + ry * ry)
+        rel = self.name(x) if self.zero(k) else f"{self.name(x)}/{self.name(k)}"
+        return alpha, x, self.alpha_text(c, f"Aᵗ_{rel}", k, x, math.hypot(ax, ay), alpha)
+
+    def alpha_from_pair(self, c: int, p: Node, q: Node) -> tuple[float, Node, str]:
+        (px, py), (qx, qy) = self.xy(p), self.xy(q)
+        rx, ry = qx - px, qy - py
+        ax, ay = self.vector(self.tip(p), self.tip(q))
+        alpha = (rx * ay - ry * ax) / (rx * rx + ry * ry)
+        r = math.hypot(rx, ry)
+        rel = self.name(q) if self.zero(p) else f"{self.name(q)}/{self.name(p)}"
+        return alpha, q, self.alpha_text(c, f"the part of A_{rel} ⟂ {p.point}{q.point}", p, q,
+                                         abs(alpha) * r, alpha)
+
+    def alpha_text(self, c: int, what: str, k: Node, x: Node, tangent: float,
+                   alpha: float) -> str:
+        r = math.dist(self.xy(k), self.xy(x))
+        sense = sense_of(alpha, math.hypot(self.m.drive.omega ** 2, self.m.drive.alpha))
+        sense = "no angular acceleration" if sense == "at rest" else sense
+        return (f"α{c} = {what} / {k.point}{x.point} = {self.say(tangent)} ÷ "
+                f"{self.m.units.length_text(r)} = {abs(alpha):.6g} rad/s² ({sense}: the sense "
+                f"of {what} about {k.point}).")

@@ -1,0 +1,328 @@
+"""What the velocity and the acceleration polygon share: the walk from tip to tip.
+
+Both polygons find the same points in the same order, each as the crossing of two
+lines that carry its tip (the notes §2.8 and §2.10); only what stands on those
+lines differs. A line ⟂ KX through k is the velocity polygon's V_X/K, and in the
+acceleration polygon the tangential component drawn from the end of the normal
+one; a parallel to a slot is the sliding velocity, or the sliding acceleration
+laid beyond the Coriolis component. So the planning (which tip follows from
+which), the image rules (divide a side, share a tip) and the crossing with its
+dead-point check live here, and each polygon says how it draws a line and what
+it reads off at the end.
+"""
+
+from __future__ import annotations
+
+import math
+from itertools import combinations
+
+from . import geometry as g
+from .assembly import Assembly
+from .coincident import Node, Walk
+from .errors import AssemblyError, DegenerateInput, TarsimError
+from .model import SlideKind
+from .record import Panel, Ref, Role
+
+__all__ = ["PolygonWalk", "DEAD_POINT", "NOISE", "nice_scale", "sense_of"]
+
+DEAD_POINT = 1e-7
+"""Sine of the crossing angle below which two lines of a tip count as parallel (a dead point).
+
+At a toggle reached through rounding the two lines lean about ``sqrt(eps) ≈ 1.5e-8``
+apart, so a smaller threshold would draw a dead point as a far, meaningless tip.
+"""
+
+_ON_LINE = 1e-9  # relative sine below which three points count as collinear
+_APART = 1e-12   # relative distance below which two points count as one
+NOISE = 1e-12
+"""A rate below this fraction of the input's is rounding, not motion: it is said as zero.
+
+At a limit position ω of the lever comes out near 1e-17 of the input's; a sentence
+giving it a sense would take the sense from noise.
+"""
+
+
+def nice_scale(raw: float) -> float:
+    """The largest 1, 2 or 5 × 10^k not above ``raw``.
+
+    Examples
+    --------
+    >>> nice_scale(0.037), nice_scale(4.0), nice_scale(1.0)
+    (0.02, 2.0, 1.0)
+    """
+    k = math.floor(math.log10(raw))
+    for m in (5.0, 2.0, 1.0):
+        if m * 10.0 ** k <= raw * (1 + 1e-12):
+            return m * 10.0 ** k
+    return 10.0 ** k
+
+
+def sense_of(rate: float, scale: float) -> str:
+    """"ccw", "cw", or "at rest" when ``rate`` is rounding noise beside ``scale``."""
+    if abs(rate) <= NOISE * scale:
+        return "at rest"
+    return "ccw" if rate > 0 else "cw"
+
+
+class PolygonWalk(Walk):
+    """One polygon drawn point by point from its pole; subclasses draw the lines.
+
+    A subclass sets ``prefix`` (step ids), ``pole_name`` (``o_v``), ``panel``,
+    ``symbol`` (V or A), ``noun`` (velocity) and ``prime`` (the tip mark), and
+    provides ``draw_input``, ``draw_locus`` and ``draw_results``.
+    """
+
+    prefix: str
+    pole_name: str
+    panel: Panel
+    symbol: str
+    noun: str
+    prime: str = ""
+
+    def __init__(self, asm: Assembly, scale: float, pole: tuple[float, float]):
+        self.asm, self.m, self.c, self.scale = asm, asm.mechanism, asm.construction, scale
+        m = self.m
+        if m.pin_arcs:
+            a = m.pin_arcs[0]
+            raise TarsimError(f"the {self.noun} polygon does not yet handle the {a.label} (a "
+                              "curved slot or circle contact); use radius-rotation or "
+                              "parallel-line")
+        if any(s.rolling for s in m.slides):
+            s = next(s for s in m.slides if s.rolling)
+            raise TarsimError(f"the {self.noun} polygon does not yet handle the {s.label}; use "
+                              "radius-rotation or parallel-line")
+        if self.pole_ref in self.c:
+            article = "an" if self.noun[0] in "aeiou" else "a"
+            raise TarsimError(f"this construction already holds {article} {self.noun} polygon; "
+                              "assemble the mechanism again to draw another")
+        self.pole_xy = (float(pole[0]), float(pole[1]))
+        self.size = asm.size
+        nodes = [Node(n) for n in m.point_names]
+        nodes += [Node(s.point, s.guide_link) for s in m.slides
+                  if s.guide_link != 1 and s.point not in m.link(s.guide_link).names]
+        self.nodes = list(dict.fromkeys(nodes))
+        self.known: dict[Node, Ref] = {}
+        self.steps: list[Ref] = []
+        self.space_steps: list[Ref] = []
+
+    @property
+    def pole_ref(self) -> Ref:
+        return f"{self.prefix}:{self.pole_name}"
+
+    # ----- the mechanism as the polygon sees it -----------------------------------
+    def name(self, n: Node) -> str:
+        """The textbook name: B, or A2 and A4 where a slot makes A two points."""
+        if n.link is not None:
+            return f"{n.point}{n.link}"
+        if any(k.point == n.point and k.link is not None for k in self.nodes):
+            moving = [c for c in self.carriers(n) if c != 1]
+            return f"{n.point}{moving[0]}" if moving else n.point
+        return n.point
+
+    def tip_name(self, name: str) -> str:
+        """The tip of point ``name`` in this polygon: b, or b′."""
+        return name.lower() + self.prime
+
+    def tip_label(self, n: Node) -> str:
+        return self.pole_name if self.zero(n) else self.tip_name(self.name(n))
+
+    def xy(self, n: Node) -> tuple[float, float]:
+        return self.asm.xy(n.point)
+
+    def apart(self, a: Node, b: Node) -> bool:
+        return math.dist(self.xy(a), self.xy(b)) > _APART * self.size
+
+    def normal(self, a: Node, b: Node) -> tuple[float, float]:
+        (ax, ay), (bx, by) = self.xy(a), self.xy(b)
+        d = math.hypot(bx - ax, by - ay)
+        return (ay - by) / d, (bx - ax) / d
+
+    def ready(self, n: Node, known) -> bool:
+        return n in known or self.zero(n)
+
+    def tip(self, n: Node) -> Ref:
+        return self.pole_ref if self.zero(n) else self.known[n]
+
+    def length(self, ref: Ref) -> float:
+        """The drawn vector o → ``ref`` in m/s (or m/s²)."""
+        return math.dist(self.c.output(ref).xy, self.pole_xy) / self.scale
+
+    def vector(self, start: Ref, end: Ref) -> tuple[float, float]:
+        """The drawn vector ``start`` → ``end`` in m/s (or m/s²)."""
+        (sx, sy), (ex, ey) = (self.c.output(r).xy for r in (start, end))
+        return (ex - sx) / self.scale, (ey - sy) / self.scale
+
+    # ----- planning: which tip follows from which ---------------------------------
+    def loci(self, x: Node, known) -> list[tuple[tuple, tuple[float, float]]]:
+        """Lines known to carry the tip of x, with their directions in space."""
+        out = []
+        for c in self.carriers(x):
+            out += [(("rel", k, c), self.normal(k, x)) for k in self.members(c)
+                    if k != x and self.ready(k, known) and self.apart(k, x)]
+            i = self.frame_guide(c)
+            if i is not None and not (x.link is None and self.m.slides[i].point == x.point):
+                out.append((("glide", i, c), self.asm.guide(i).direction))
+        for i, s in enumerate(self.m.slides):
+            if s.point != x.point:
+                continue
+            if s.guide_link == 1:
+                if x.link is None:
+                    out.append((("guide", i), self.asm.guide(i).direction))
+                continue
+            if x.link is None:
+                other = Node(s.point, s.guide_link)
+            elif x.link == s.guide_link:
+                other = Node(s.point)
+            else:
+                continue
+            if other != x and other in self.nodes and self.ready(other, known):
+                if i not in self.asm.guides:
+                    raise TarsimError(f"the slot of {s.label} was not drawn by the assembly")
+                out.append((("slot", other, i), self.asm.guide(i).direction))
+        return list(dict.fromkeys(out))
+
+    def rules(self, x: Node, known) -> list[tuple[str, tuple, float]]:
+        """Every way to find x's tip, as (kind, args, quality), the crossing-free ones first."""
+        whole, cross = [], []
+        for c in self.carriers(x):
+            if self.frame_guide(c) is not None:
+                whole += [("translate", (c, k), 1.0) for k in self.members(c)
+                          if k != x and k in known and not self.zero(k)]
+            ready = [k for k in self.members(c)
+                     if k != x and self.ready(k, known) and self.apart(k, x)]
+            for a, b in combinations(ready, 2):
+                if not (self.zero(a) and self.zero(b)) and self.apart(a, b) and \
+                        self.collinear(a, b, x):
+                    whole.append(("divide", (c, a, b), 1.0))
+        for (l1, d1), (l2, d2) in combinations(self.loci(x, known), 2):
+            cross.append(("cross", (l1, l2), abs(d1[0] * d2[1] - d1[1] * d2[0])))
+        return whole + cross
+
+    def collinear(self, a: Node, b: Node, x: Node) -> bool:
+        pa, pb, px = (g.Point(*self.xy(n)) for n in (a, b, x))
+        return abs(g.side_of(px, pa, pb)) <= _ON_LINE * g.distance(pa, pb) * g.distance(pa, px)
+
+    # ----- the walk ---------------------------------------------------------------
+    def walk(self) -> None:
+        """Set the pole, draw the input, then every other tip, the best-crossing first."""
+        self.c.give(self.pole_ref, g.Point(*self.pole_xy), label=self.pole_name,
+                    panel=self.panel,
+                    sentence=f"Choose the {self.noun} pole {self.pole_name}: every vector drawn "
+                             f"from it is an absolute {self.noun}.")
+        self.steps.append(self.pole_ref)
+        self.draw_input()
+        while True:
+            todo = [n for n in self.nodes if n not in self.known and not self.zero(n)]
+            if not todo:
+                return
+            best = None
+            for n in todo:
+                for rule in self.rules(n, self.known):
+                    if best is None or rule[2] > best[1][2]:
+                        best = (n, rule)
+            if best is None:
+                names = ", ".join(self.name(n) for n in todo)
+                raise TarsimError(f"the {self.noun} polygon cannot reach {names}: no link "
+                                  "carrying it has two known points or a known direction")
+            x, (kind, args, _) = best
+            self.known[x] = getattr(self, f"draw_{kind}")(x, *args)
+
+    def tips(self) -> tuple[dict[str, Ref], dict[str, str]]:
+        """Every tip by name, and the names a carrying link gives a pin (A2 for A)."""
+        tips = {n.point if n.link is None else self.name(n): self.tip(n) for n in self.nodes}
+        aliases = {}
+        for n in self.nodes:
+            if n.link is None:
+                for c in self.carriers(n):
+                    alias = f"{n.point}{c}"
+                    if c != 1 and alias not in tips:
+                        aliases[alias] = n.point
+        return tips, aliases
+
+    def act(self, ref: Ref, verb: str, *inputs: Ref, sentence: str, label: str = "",
+            role: Role = Role.CONSTRUCTION, **params) -> Ref:
+        self.c.draw(ref, verb, *inputs, label=label, sentence=sentence, role=role,
+                    panel=self.panel, **params)
+        self.steps.append(ref)
+        return ref
+
+    def space_line(self, k: Node, x: Node, c: int) -> Ref:
+        """The space-diagram line KX of link c, directed K → X, drawn once for both polygons."""
+        ref = f"vp:line:{k.point}-{x.point}"
+        if ref not in self.c:
+            self.c.draw(ref, "line_through", self.asm.points[k.point], self.asm.points[x.point],
+                        sentence=f"Draw line {k.point}{x.point} of link {c}.")
+        if ref not in self.space_steps:
+            self.space_steps.append(ref)
+        return ref
+
+    # ----- the acts both polygons share ---------------------------------------------
+    def draw_cross(self, x: Node, first: tuple, second: tuple) -> Ref:
+        (l1, say1), (l2, say2) = (self.draw_locus(x, lo) for lo in (first, second))
+        X = self.name(x)
+        xl = self.tip_name(X)
+        d = self.m.drive
+        dead = (f"dead point at θ{d.link} = {math.degrees(d.angle):.6g}°: {say1} and {say2} "
+                f"are parallel, so {self.symbol}_{X} is undefined; move the input off it")
+        try:
+            tip = self.act(f"{self.prefix}:tip:{X}", "intersect_lines", l1, l2, label=xl,
+                           sentence=f"The two lines meet at {xl}: {self.pole_name} {xl} = "
+                                    f"{self.symbol}_{X}.")
+        except DegenerateInput:
+            raise AssemblyError(dead, joint=x.point, angle_deg=math.degrees(d.angle)) from None
+        step = self.c[tip]
+        (a1, b1), (a2, b2) = (self.c.output(r).normal for r in (l1, l2))
+        if step.output.is_at_infinity or abs(a1 * b2 - b1 * a2) < DEAD_POINT:
+            raise AssemblyError(dead, joint=x.point, angle_deg=math.degrees(d.angle))
+        return tip
+
+    def draw_divide(self, x: Node, c: int, a: Node, b: Node) -> Ref:
+        """X on line AB of link c: x divides ab as X divides AB (the image)."""
+        (ax, ay), (bx, by), (px, py) = self.xy(a), self.xy(b), self.xy(x)
+        ratio = ((px - ax) * (bx - ax) + (py - ay) * (by - ay)) / ((bx - ax) ** 2 + (by - ay) ** 2)
+        X = self.name(x)
+        xl, al, bl = self.tip_name(X), self.tip_label(a), self.tip_label(b)
+        ta, tb = self.tip(a), self.tip(b)
+        side = math.dist(self.c.output(ta).xy, self.c.output(tb).xy)
+        why = (f"{x.point} lies on line {a.point}{b.point} of link {c}, so {xl} lies on "
+               f"{al} {bl} with {al} {xl} : {al} {bl} = {a.point}{x.point} : "
+               f"{a.point}{b.point} = {ratio:.6g} (the {self.noun} image)")
+        ref = f"{self.prefix}:tip:{X}"
+        if side == 0.0:
+            return self.act(ref, "mark", ta, label=xl,
+                            sentence=f"{why}; {al} {bl} has no length, so {xl} is at {al}.")
+        return self.act(ref, "lay_off", ta, tb, length=ratio * side, label=xl,
+                        sentence=f"{why}: lay off {al} {xl} = {ratio:.6g} × {al} {bl} "
+                                 f"along {al} {bl}.")
+
+    def draw_translate(self, x: Node, c: int, k: Node) -> Ref:
+        X, K = self.name(x), self.name(k)
+        s = self.symbol
+        return self.act(f"{self.prefix}:tip:{X}", "mark", self.tip(k), label=self.tip_name(X),
+                        sentence=f"Link {c} slides on a frame guide without turning, so {s}_{X} "
+                                 f"= {s}_{K}: {self.tip_name(X)} is at {self.tip_name(K)}.")
+
+    def read_pair(self, c: int) -> tuple[Node, Node] | None:
+        """The two points of link c its ω or α is read from: a fixed pivot and the farthest point,
+        else the two farthest; the fixed one (if any) first."""
+        nodes = [n for n in self.members(c) if n in self.known or self.zero(n)]
+        pairs = [(a, b) for a, b in combinations(nodes, 2)
+                 if not (self.zero(a) and self.zero(b)) and self.apart(a, b)]
+        if not pairs:
+            return None
+        p, q = max(pairs, key=lambda p: (self.zero(p[0]) or self.zero(p[1]),
+                                         math.dist(self.xy(p[0]), self.xy(p[1]))))
+        return (q, p) if self.zero(q) else (p, q)
+
+    def block_rates(self, rates: dict[int, float], later: list[int]) -> None:
+        """A one-point block turns with its guide (or not at all on the frame): fill its rate."""
+        while later:
+            for c in later:
+                s = next((s for s in self.m.slides if s.link == c and s.kind is SlideKind.BLOCK
+                          and (s.guide_link == 1 or s.guide_link in rates)), None)
+                if s is not None:
+                    rates[c] = 0.0 if s.guide_link == 1 else rates[s.guide_link]
+                    later.remove(c)
+                    break
+            else:
+                return
