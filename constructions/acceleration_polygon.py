@@ -30,7 +30,8 @@ from dataclasses import dataclass, field
 from .assembly import Assembly
 from .coincident import Node
 from .errors import TarsimError
-from .polygon_walk import NOISE, PolygonWalk, nice_scale, sense_of
+from .polygon_walk import NOISE, DrawnPolygon, PolygonWalk, nice_scale, sense_of
+from .velocity_drawing import speed_text
 from .record import Construction, Panel, Ref, Role
 from .velocity_polygon import VelocityPolygon
 
@@ -44,7 +45,7 @@ def accel_text(a: float, units) -> str:
 
 
 @dataclass
-class AccelerationPolygon:
+class AccelerationPolygon(DrawnPolygon):
     """A drawn acceleration polygon: its pole, scale, tips, α and Coriolis components.
 
     ``tips`` maps a point name (or coincident point ``"A4"``) to its tip step, as
@@ -67,6 +68,8 @@ class AccelerationPolygon:
     coriolis: dict[str, tuple[Ref, Ref, float]] = field(default_factory=dict)
     components: dict[str, Ref] = field(default_factory=dict)
 
+    noun = "acceleration"
+
     def acceleration(self, name: str) -> tuple[float, float]:
         """Read A of ``name`` (m/s²) off the polygon: the vector o_a → its tip.
 
@@ -75,11 +78,7 @@ class AccelerationPolygon:
         TarsimError
             If the polygon has no tip of that name.
         """
-        key = self.aliases.get(name, name)
-        if key not in self.tips:
-            raise TarsimError(f"the acceleration polygon has no tip for {name}; it has "
-                              f"{', '.join(self.tips)}")
-        return self._vector(self.pole, self.tips[key])
+        return self.tip_vector(name)
 
     def coriolis_of(self, point: str) -> tuple[float, float]:
         """The Coriolis component 2ω_j × v_rel at slot point ``point`` (m/s²), as drawn.
@@ -93,12 +92,8 @@ class AccelerationPolygon:
             raise TarsimError(f"no Coriolis component at {point}; the polygon has one at "
                               f"{', '.join(self.coriolis) or 'no point'}")
         start, end, sign = self.coriolis[point]
-        x, y = self._vector(start, end)
+        x, y = self.between(start, end)
         return sign * x + 0.0, sign * y + 0.0
-
-    def _vector(self, start: Ref, end: Ref) -> tuple[float, float]:
-        (sx, sy), (ex, ey) = (self.construction.output(r).xy for r in (start, end))
-        return (ex - sx) / self.scale, (ey - sy) / self.scale
 
 
 def draw_acceleration_polygon(asm: Assembly, vp: VelocityPolygon, scale: float | None = None, *,
@@ -174,7 +169,7 @@ class _Polygon(PolygonWalk):
         self.normals: dict[tuple[Node, int], list[tuple[Node, Ref]]] = {}
         self.coriolis: dict[str, tuple[Ref, Ref, float]] = {}
         self.components: dict[str, Ref] = {}
-        self.slides_drawn: list[tuple[Node, Node, Ref, float]] = []
+        self.slides_drawn: list[tuple[Node, Node, Ref, float, str]] = []
 
     def run(self) -> AccelerationPolygon:
         self.walk()
@@ -248,10 +243,12 @@ class _Polygon(PolygonWalk):
                            sentence=f"Through o_a draw the parallel to {why} (the direction of "
                                     f"A_{X}, as the guide is straight and fixed).")
             return ref, "the parallel to the guide through o_a"
+        if kind == "curve":
+            return self.draw_curve(x, *locus[1:])
         return self.draw_slot(x, *locus[1:])
 
     def draw_relative(self, x: Node, k: Node, c: int) -> tuple[Ref, str]:
-        """Aⁿ_X/K laid off from k′ toward K, then the line of Aᵗ_X/K ⟂ KX through its end."""
+        """Aⁿ_X/K laid off from k′ toward K, then the line of Aᵗ_X/K ⟂ KX through it."""
         line = self.space_line(k, x, c)
         X, K = self.name(x), self.name(k)
         kx, xk = f"{k.point}{x.point}", f"{x.point}{k.point}"
@@ -282,7 +279,7 @@ class _Polygon(PolygonWalk):
         return ref, f"the line ⟂ {kx} through the end of Aⁿ_{rel}"
 
     def draw_slot(self, x: Node, other: Node, i: int) -> tuple[Ref, str]:
-        """Coriolis 2ω_j·v_rel laid off from the other point's tip, then the parallel to the slot."""
+        """Coriolis 2ω_j·v_rel laid off from the other point's tip, then the slot's parallel."""
         s = self.m.slides[i]
         j = s.guide_link
         slider, carried = (x, other) if x.link is None else (other, x)
@@ -315,19 +312,76 @@ class _Polygon(PolygonWalk):
                 f"ap:{X}:cor", "lay_off", start, perp, length=sign * cor * self.scale,
                 sentence=f"Along it lay off the Coriolis component Aᶜ_{P}/{Pj} = "
                          f"2ω{j}·V_{P}/{Pj} = 2 × {abs(w):.6g} rad/s × "
-                         f"{self.vp_say(abs(u))} = {self.say(abs(cor))}, in the direction of "
-                         f"V_{P}/{Pj} turned 90° the way ω{j} turns ({sense}){toward}.")
+                         f"{speed_text(abs(u), self.m.units)} = {self.say(abs(cor))}, in "
+                         f"the direction of V_{P}/{Pj} turned 90° the way ω{j} turns "
+                         f"({sense}){toward}.")
             self.component(f"ap:{X}:cor:vec", start, end, label)
         self.coriolis[slider.point] = (start, end, sign)
         ref = self.act(f"ap:{X}:slot@{i}", "parallel_through", end, self.asm.guides[i],
                        sentence=f"Through its end draw the parallel to the slot of link {j} (the "
                                 f"direction of the sliding acceleration Aˢ_{P}/{Pj}, length "
                                 "unknown).")
-        self.slides_drawn.append((slider, carried, end, sign))
+        self.slides_drawn.append((slider, carried, end, sign, f"Aˢ_{P}/{Pj}"))
         return ref, f"the parallel to the slot through the end of {label}"
 
-    def vp_say(self, v: float) -> str:
-        return f"{v / self.m.units.metres:.6g} {self.m.units.length}/s"
+    def draw_curve(self, x: Node, other: Node, i: int) -> tuple[Ref, str]:
+        """A pin P in a slot curved about K of link j (the notes §2.11–2.12).
+
+        ``A_P = A_Pj + Aᶜ + Aⁿ + Aᵗ``: the Coriolis component 2ω_j × v_rel and the
+        relative path's normal component v_rel²/ρ toward K both lie along KP, so both
+        are laid off along it from the other point's tip; the tangential one, of
+        unknown length, is the line ⟂ KP through their end.
+        """
+        a = self.m.pin_arcs[i]
+        j, rho = a.guide_link, a.radius
+        K, Pn = a.centre, a.point
+        line = self.space_line(Node(K), Node(Pn), j)
+        slider, carried, rel = self.curve_nodes(x, other)
+        (vsx, vsy), (vcx, vcy) = self.velocity(slider), self.velocity(carried)
+        ex, ey = self.asm.xy(Pn)[0] - self.asm.xy(K)[0], self.asm.xy(Pn)[1] - self.asm.xy(K)[1]
+        e = math.hypot(ex, ey)
+        u = ((vsx - vcx) * -ey + (vsy - vcy) * ex) / e        # v_rel along the tangent (+90°)
+        w = 0.0 if j == 1 else self.omegas[j]
+        sign = 1.0 if x.link is None else -1.0
+        X, start = self.name(x), self.tip(other)
+        kp, pk = f"{K}{Pn}", f"{Pn}{K}"
+        end = start
+        if j != 1:
+            still = sense_of(w, abs(self.m.drive.omega)) == "at rest"
+            stuck = abs(u) <= NOISE * self.m.input_speed
+            cor = 0.0 if still or stuck else 2.0 * w * u     # along −e: the tangent turned +90°
+            if cor == 0.0:
+                why = f"ω{j} = 0" if still else f"V_{rel} = 0"
+                end = self.act(f"ap:{X}:cor", "mark", start,
+                               sentence=f"The Coriolis component 2ω{j}·V_{rel} is zero, as "
+                                        f"{why} at this instant.")
+            else:
+                sense = "ccw" if w > 0 else "cw"
+                end = self.act(
+                    f"ap:{X}:cor", "lay_off", start, line, length=-sign * cor * self.scale,
+                    sentence=f"From {self.tip_label(other)} lay off along {kp} the Coriolis "
+                             f"component Aᶜ_{rel} = 2ω{j}·V_{rel} = 2 × {abs(w):.6g} rad/s × "
+                             f"{speed_text(abs(u), self.m.units)} = {self.say(abs(cor))}, "
+                             f"in the direction of V_{rel} turned 90° the way ω{j} turns "
+                             f"({sense}){'' if sign > 0 else ', reversed, as it is subtracted'}.")
+                self.component(f"ap:{X}:cor:vec", start, end,
+                               f"{'' if sign > 0 else '−'}Aᶜ_{rel}")
+            self.coriolis[Pn] = (start, end, sign)
+        normal = u * u / rho
+        first = end
+        end = self.act(
+            f"ap:{X}:n@curve", "lay_off", first, line, length=-sign * normal * self.scale,
+            sentence=f"From its end lay off the normal component of the relative path "
+                     f"Aⁿ_{rel} = V_{rel}²/ρ = ({speed_text(abs(u), self.m.units)})² ÷ "
+                     f"{self.m.units.length_text(rho)} = {self.say(normal)} parallel to {pk}, "
+                     f"pointing from {Pn} toward the centre of curvature {K}"
+                     f"{'' if sign > 0 else ', reversed, as it is subtracted'}.")
+        self.component(f"ap:{X}:n@curve:vec", first, end, f"{'' if sign > 0 else '−'}Aⁿ_{rel}")
+        ref = self.act(f"ap:{X}:t@curve", "perpendicular_through", end, line,
+                       sentence=f"Through its end draw a line ⟂ {kp}, the tangent of the slot "
+                                f"(the direction of Aᵗ_{rel}, length unknown).")
+        self.slides_drawn.append((slider, carried, end, sign, f"Aᵗ_{rel}"))
+        return ref, f"the line ⟂ {kp} through the end of Aⁿ_{rel}"
 
     # ----- results ----------------------------------------------------------------
     def draw_results(self) -> dict[int, float]:
@@ -345,11 +399,10 @@ class _Polygon(PolygonWalk):
                 rel = self.name(x) if self.zero(k) else f"{self.name(x)}/{self.name(k)}"
                 self.component(f"ap:{self.name(x)}:t@{self.name(k)}:vec", end, self.known[x],
                                f"Aᵗ_{rel}")
-        for s_, c_, end, sign in self.slides_drawn:
-            P, Pj = self.name(s_), self.name(c_)
+        for s_, c_, end, sign, label in self.slides_drawn:
             tip = self.known[s_] if sign > 0 else self.known[c_]
-            self.component(f"ap:{P}:slide:vec", end, tip,
-                           f"Aˢ_{P}/{Pj}" if sign > 0 else f"−Aˢ_{P}/{Pj}")
+            self.component(f"ap:{self.name(s_)}:slide:vec", end, tip,
+                           label if sign > 0 else f"−{label}")
         d = self.m.drive
         alphas[d.link] = d.alpha        # given (or taken as 0), not read back
         for k in self.m.links:

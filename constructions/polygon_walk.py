@@ -23,7 +23,7 @@ from .errors import AssemblyError, DegenerateInput, TarsimError
 from .model import SlideKind
 from .record import Panel, Ref, Role
 
-__all__ = ["PolygonWalk", "DEAD_POINT", "NOISE", "nice_scale", "sense_of"]
+__all__ = ["PolygonWalk", "DrawnPolygon", "DEAD_POINT", "NOISE", "nice_scale", "sense_of"]
 
 DEAD_POINT = 1e-7
 """Sine of the crossing angle below which two lines of a tip count as parallel (a dead point).
@@ -57,6 +57,35 @@ def nice_scale(raw: float) -> float:
     return 10.0 ** k
 
 
+class DrawnPolygon:
+    """What a drawn polygon answers: the vector from its pole to a named tip, at its scale.
+
+    The dataclasses using it have ``pole``, ``scale``, ``tips``, ``aliases`` and
+    ``construction``; ``noun`` names the polygon in messages.
+    """
+
+    noun = "velocity"
+
+    def tip_vector(self, name: str) -> tuple[float, float]:
+        """The vector pole → tip of ``name`` (a tip, or a point taken on a link: ``A2``).
+
+        Raises
+        ------
+        TarsimError
+            If the polygon has no tip of that name.
+        """
+        key = self.aliases.get(name, name)
+        if key not in self.tips:
+            raise TarsimError(f"the {self.noun} polygon has no tip for {name}; it has "
+                              f"{', '.join(self.tips)}")
+        return self.between(self.pole, self.tips[key])
+
+    def between(self, start: Ref, end: Ref) -> tuple[float, float]:
+        """The drawn vector ``start`` → ``end`` read at the polygon's scale."""
+        (sx, sy), (ex, ey) = (self.construction.output(r).xy for r in (start, end))
+        return (ex - sx) / self.scale, (ey - sy) / self.scale
+
+
 def sense_of(rate: float, scale: float) -> str:
     """"ccw", "cw", or "at rest" when ``rate`` is rounding noise beside ``scale``."""
     if abs(rate) <= NOISE * scale:
@@ -82,11 +111,6 @@ class PolygonWalk(Walk):
     def __init__(self, asm: Assembly, scale: float, pole: tuple[float, float]):
         self.asm, self.m, self.c, self.scale = asm, asm.mechanism, asm.construction, scale
         m = self.m
-        if m.pin_arcs:
-            a = m.pin_arcs[0]
-            raise TarsimError(f"the {self.noun} polygon does not yet handle the {a.label} (a "
-                              "curved slot or circle contact); use radius-rotation or "
-                              "parallel-line")
         if any(s.rolling for s in m.slides):
             s = next(s for s in m.slides if s.rolling)
             raise TarsimError(f"the {self.noun} polygon does not yet handle the {s.label}; use "
@@ -98,7 +122,7 @@ class PolygonWalk(Walk):
         self.pole_xy = (float(pole[0]), float(pole[1]))
         self.size = asm.size
         nodes = [Node(n) for n in m.point_names]
-        nodes += [Node(s.point, s.guide_link) for s in m.slides
+        nodes += [Node(s.point, s.guide_link) for s in (*m.slides, *m.pin_arcs)
                   if s.guide_link != 1 and s.point not in m.link(s.guide_link).names]
         self.nodes = list(dict.fromkeys(nodes))
         self.known: dict[Node, Ref] = {}
@@ -179,7 +203,28 @@ class PolygonWalk(Walk):
                 if i not in self.asm.guides:
                     raise TarsimError(f"the slot of {s.label} was not drawn by the assembly")
                 out.append((("slot", other, i), self.asm.guide(i).direction))
+        for i, a in enumerate(self.m.pin_arcs):
+            if a.guide_link == 1:      # a slot of the frame: P moves on the circle about K
+                other = Node(a.centre) if x == Node(a.point) else None
+            else:
+                other = self.partner(x, a.point, a.guide_link)
+            if other is not None and self.ready(other, known):
+                out.append((("curve", other, i), self.normal(Node(a.centre), Node(a.point))))
         return list(dict.fromkeys(out))
+
+    def curve_nodes(self, x: Node, other: Node) -> tuple[Node, Node, str]:
+        """Of the two points a curved slot makes, (the sliding point P, the slot's point Pj)
+        and the relative motion's name: "A2/A4", or "A" on a slot of the frame."""
+        slider, carried = (x, other) if x.link is None else (other, x)
+        P = self.name(slider)
+        return slider, carried, P if self.zero(carried) else f"{P}/{self.name(carried)}"
+
+    def partner(self, x: Node, point: str, j: int) -> Node | None:
+        """The other of the two coincident points a joint of ``point`` on link j makes."""
+        if x.point != point or j == 1:
+            return None
+        other = Node(point, j) if x.link is None else Node(point) if x.link == j else None
+        return other if other is not None and other != x and other in self.nodes else None
 
     def rules(self, x: Node, known) -> list[tuple[str, tuple, float]]:
         """Every way to find x's tip, as (kind, args, quality), the crossing-free ones first."""

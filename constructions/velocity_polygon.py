@@ -8,7 +8,9 @@ is the lower-case ``x``. Each tip is found where two lines that carry it meet:
 * a block or pin on a frame guide: the parallel to the guide through ``o_v``;
 * coincident points on a slot of a moving link (the notes' A2 and A4):
   ``V_A4 = V_A2 + V_A4/A2`` with V_A4/A2 along the slot, so the parallel to the
-  slot through ``a2``;
+  slot through ``a2``; in a slot curved about K the sliding velocity is along
+  the slot's tangent, so the line ⟂ KA through ``a2`` (K is the centre of
+  curvature, a point of the slotted link: the notes §2.11);
 * any point of a link that slides on a frame guide without turning: the
   parallel to the guide through ``o_v``.
 
@@ -31,7 +33,7 @@ from dataclasses import dataclass, field
 from .assembly import Assembly
 from .coincident import Node
 from .errors import TarsimError
-from .polygon_walk import DEAD_POINT, PolygonWalk, nice_scale, sense_of
+from .polygon_walk import DEAD_POINT, DrawnPolygon, PolygonWalk, nice_scale, sense_of
 from .record import Construction, Panel, Ref, Role
 from .velocity_drawing import speed_text
 
@@ -39,7 +41,7 @@ __all__ = ["VelocityPolygon", "draw_velocity_polygon", "nice_scale", "DEAD_POINT
 
 
 @dataclass
-class VelocityPolygon:
+class VelocityPolygon(DrawnPolygon):
     """A drawn velocity polygon: its pole, scale, tips and the ω read off it.
 
     ``tips`` maps a point name (``"B"``), or a coincident point taken on a link
@@ -69,12 +71,7 @@ class VelocityPolygon:
         TarsimError
             If the polygon has no tip of that name.
         """
-        key = self.aliases.get(name, name)
-        if key not in self.tips:
-            raise TarsimError(f"the velocity polygon has no tip for {name}; it has "
-                              f"{', '.join(self.tips)}")
-        (px, py), (tx, ty) = (self.construction.output(r).xy for r in (self.pole, self.tips[key]))
-        return (tx - px) / self.scale, (ty - py) / self.scale
+        return self.tip_vector(name)
 
 
 def draw_velocity_polygon(asm: Assembly, scale: float | None = None, *,
@@ -105,7 +102,7 @@ def draw_velocity_polygon(asm: Assembly, scale: float | None = None, *,
     TarsimError
         If a polygon is already drawn on this construction, the scale is not a
         positive number, or the mechanism has a joint the polygon does not handle
-        (a curved slot, a circle contact, a rolling wheel).
+        (a rolling wheel).
 
     See Also
     --------
@@ -191,6 +188,8 @@ class _Polygon(PolygonWalk):
                            sentence=f"Through o_v draw the parallel to {why} (the direction of "
                                     f"V_{X}).")
             return ref, "the parallel to the guide through o_v"
+        if kind == "curve":
+            return self.draw_curve(x, *locus[1:])
         other, i = locus[1:]
         O, j = self.name(other), self.m.slides[i].guide_link
         ref = self.act(f"vp:{X}:slot@{i}", "parallel_through", self.tip(other), self.asm.guides[i],
@@ -198,6 +197,20 @@ class _Polygon(PolygonWalk):
                                 f"of link {j} (the direction of V_{X}/{O}, the sliding "
                                 "velocity).")
         return ref, f"the parallel to the slot through {self.tip_label(other)}"
+
+    def draw_curve(self, x: Node, other: Node, i: int) -> tuple[Ref, str]:
+        """A pin in a curved slot about K slides along the slot's tangent, ⟂ KP."""
+        a = self.m.pin_arcs[i]
+        k, p = Node(a.centre), Node(a.point)
+        line = self.space_line(k, p, a.guide_link)
+        _, _, rel = self.curve_nodes(x, other)
+        kp = f"{a.centre}{a.point}"
+        X = self.name(x)
+        ref = self.act(f"vp:{X}:curve@{i}", "perpendicular_through", self.tip(other), line,
+                       sentence=f"Through {self.tip_label(other)} draw a line ⟂ {kp}, the "
+                                f"tangent at {a.point} of the curved slot about {a.centre} (the "
+                                f"direction of V_{rel}, the sliding velocity).")
+        return ref, f"the line ⟂ {kp} through {self.tip_label(other)}"
 
     def draw_results(self) -> dict[int, float]:
         """Draw V of every point from o_v, and read ω of every link off the polygon.

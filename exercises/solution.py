@@ -212,11 +212,20 @@ def _polygon_quantities(ex: Exercise, asm, kin, vp: VelocityPolygon,
         quantities[f"A_{p}"] = _vector_quantity(
             f"A_{p}", ap.acceleration(p), analytic.point_acceleration(kin, m, link, point),
             a_scale, _cond(c, ap.tips[ap.aliases.get(p, p)]), "acceleration polygon")
-    rates = {r.slide.point: r for r in kin.slide_rates if r.slide.guide_link != 1}
     for p in ex.coriolis:
         quantities[f"A_cor_{p}"] = _vector_quantity(
-            f"A_cor_{p}", ap.coriolis_of(p), rates[p].coriolis, a_scale,
+            f"A_cor_{p}", ap.coriolis_of(p), _coriolis(kin, m, p), a_scale,
             _cond(c, ap.coriolis[p][1]), "acceleration polygon (2ω×v_rel)")
+
+
+def _coriolis(kin, m, point: str) -> tuple[float, float]:
+    """The analytic 2ω_j × (V_P − V_Pj) at the slot (straight or curved) ``point`` runs in."""
+    joint = next(s for s in (*m.slides, *m.pin_arcs) if s.point == point and s.guide_link != 1
+                 and point not in m.link(s.guide_link).names)
+    j = joint.guide_link
+    (px, py), (qx, qy) = (analytic.point_velocity(kin, m, k, point) for k in (joint.link, j))
+    w = kin.omegas[j]
+    return -2.0 * w * (py - qy), 2.0 * w * (px - qx)
 
 
 def _input_acceleration(m) -> float:

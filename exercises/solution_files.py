@@ -140,13 +140,15 @@ def _worked_page(sol: Solution) -> SolutionFigure:
     where = f" at {sol.position.label}" if sol.position else ""
     space = draw_scene(asm, [], title=f"{name}: space diagram{where}")
     panels, figures = [], [space]
+    # "α2 is not given, so it is taken as 0" belongs under the acceleration polygon.
+    under_polygon = [n for n in sol.notes if "α" in n] if sol.acceleration_polygon else []
     for poly, panel, heading in ((sol.velocity_polygon, Panel.VELOCITY, "Velocity polygon"),
                                  (sol.acceleration_polygon, Panel.ACCELERATION,
                                   "Acceleration polygon")):
         if poly is None:
             continue
         refs = _polygon_refs(c, poly, _polygon_targets(sol, poly, panel))
-        notes = [n for n in sol.notes if panel is Panel.ACCELERATION and "α" in n]
+        notes = under_polygon if panel is Panel.ACCELERATION else []
         figures.append(draw_polygon_panel(c, refs, panel=panel, scale=poly.scale, units=m.units,
                                           title=heading, notes=notes))
         panels.append((heading, panel, refs))
@@ -155,7 +157,8 @@ def _worked_page(sol: Solution) -> SolutionFigure:
         for qq in (q, *q.alternatives.values()):
             table.append((_symbol(qname), qq.method, _show(qq.value, m.units, qname),
                           _show(qq.reference, m.units, qname), f"{qq.rel_error:.1e}"))
-    page = compose_worked_page(f"{name}: worked solution{where}", figures, table, sol.notes)
+    page = compose_worked_page(f"{name}: worked solution{where}", figures, table,
+                               [n for n in sol.notes if n not in under_polygon])
     return SolutionFigure("worked", "Worked solution", page, [], tuple(panels))
 
 

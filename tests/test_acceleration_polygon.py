@@ -589,3 +589,65 @@ def test_random_four_bars_match_the_analytic_solver(crank, theta, rocker, phi, o
     ap, _, _ = polygons(mech)
     tips, alphas, _ = errors(mech, ap, kin)
     assert tips <= 1e-8 and alphas <= 1e-8
+
+
+# ----- curved slots and circle contacts (the notes §2.11–2.12) ----------------------------
+def frame_slot_four_bar(theta):
+    """The peers four-bar with its rocker replaced by a pin B in a frame slot about O4."""
+    from constructions.model import Arc, Mechanism, SlideKind
+    m = four_bar(theta, omega2=10.0, alpha2=3.0)
+    links = tuple(k for k in m.links if k.number != 4)
+    return Mechanism(links, m.drive, (), dict(m.branches), m.units, "frame slot",
+                     arcs=(Arc(SlideKind.PIN, 3, "B", 1, "O4", 0.2),))
+
+
+CURVED = {
+    "pin in a curved slot": from_file(DATA / "curved-slot.toml", alpha=3.0),
+    "roller on a circular cam": from_file(DATA / "roller-cam.toml", alpha=-4.0),
+    "block on a curved guide": from_file(DATA / "curved-guide-slider-crank.toml", alpha=2.0),
+    "pin in a frame slot": frame_slot_four_bar,
+}
+
+
+def curved_coriolis(kin, mech, arc):
+    """2ω_j × (V_P − V_Pj) from the analytic velocities of P on its link and on the slot's."""
+    (px, py), (qx, qy) = (analytic.point_velocity(kin, mech, k, arc.point)
+                          for k in (arc.link, arc.guide_link))
+    w = kin.omegas[arc.guide_link]
+    return -2.0 * w * (py - qy), 2.0 * w * (px - qx)
+
+
+@pytest.mark.parametrize("theta", SWEEP[::2], ids=[f"{round(math.degrees(t))}deg"
+                                                    for t in SWEEP[::2]])
+@pytest.mark.parametrize("name", list(CURVED))
+def test_curved_slots_match_the_analytic_solver(name, theta):
+    mech = CURVED[name](theta)
+    kin = analytic.solve(mech)
+    ap, vp, asm = polygons(mech)
+    tips, alphas, _ = errors(mech, ap, kin)
+    assert tips <= REL and alphas <= REL
+    a_in = input_accel(mech)
+    for arc in mech.pin_arcs:
+        if arc.guide_link == 1:
+            continue
+        ref = curved_coriolis(kin, mech, arc)
+        assert math.dist(ap.coriolis_of(arc.point), ref) <= REL * max(math.hypot(*ref), a_in)
+
+
+def test_a_curved_slot_adds_v_rel_squared_over_rho_toward_its_centre():
+    mech = CURVED["pin in a curved slot"](math.radians(40))
+    kin = analytic.solve(mech)
+    ap, vp, asm = polygons(mech)
+    arc = mech.pin_arcs[0]
+    (px, py), (qx, qy) = (analytic.point_velocity(kin, mech, k, "A") for k in (2, 4))
+    v_rel2 = (px - qx) ** 2 + (py - qy) ** 2
+    normal = [label for label in ap.components if label.lstrip("−").startswith("Aⁿ_A2/A4")]
+    assert len(normal) == 1
+    ax, ay = vector(ap, asm, normal[0])
+    assert math.hypot(ax, ay) == pytest.approx(v_rel2 / arc.radius, rel=1e-12)
+    # Along AK, toward K (reversed when the slot's own point is the one being found).
+    (kx, ky), (x, y) = asm.xy(arc.centre), asm.xy("A")
+    toward = ((kx - x) * ax + (ky - y) * ay) / math.dist((kx, ky), (x, y)) / math.hypot(ax, ay)
+    assert toward == pytest.approx(1.0 if not normal[0].startswith("−") else -1.0, abs=1e-12)
+    said = " ".join(sentences(ap, asm))
+    assert "V_A2/A4²/ρ" in said and "centre of curvature K" in said
