@@ -69,8 +69,7 @@ def worst_error(mech) -> float:
     _, _, ap = polygons(mech)
     kin = analytic.solve(mech)
     d = mech.drive
-    k = mech.link(d.link)
-    a_in = k.span(*k.names[:2]) * math.hypot(d.omega ** 2, d.alpha)
+    a_in = mech.input_acceleration
     worst = 0.0
     for key in ap.tips:
         if key in kin.accelerations:

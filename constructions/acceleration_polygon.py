@@ -148,9 +148,7 @@ def draw_acceleration_polygon(asm: Assembly, vp: VelocityPolygon, scale: float |
         raise TarsimError("the velocity polygon belongs to another construction; draw both "
                           "on one assembly")
     if scale is None:
-        d, m = asm.mechanism.drive, asm.mechanism
-        r = m.link(d.link).span(*m.link(d.link).names[:2])
-        accel = r * math.hypot(d.omega ** 2, d.alpha)
+        accel = asm.mechanism.input_acceleration
         scale = 1.0 if accel == 0.0 else nice_scale(asm.size / (2.0 * accel))
     if not (isinstance(scale, (int, float)) and math.isfinite(scale) and scale > 0.0):
         raise TarsimError(f"the acceleration scale must be a positive number, got {scale}")
@@ -280,49 +278,17 @@ class _Polygon(PolygonWalk):
 
     def draw_slot(self, x: Node, other: Node, i: int) -> tuple[Ref, str]:
         """Coriolis 2ω_j·v_rel laid off from the other point's tip, then the slot's parallel."""
-        s = self.m.slides[i]
-        j = s.guide_link
-        slider, carried = (x, other) if x.link is None else (other, x)
-        P, Pj = self.name(slider), self.name(carried)
-        (vsx, vsy), (vcx, vcy) = self.velocity(slider), self.velocity(carried)
-        tx, ty = self.asm.guide(i).direction
-        u = (vsx - vcx) * tx + (vsy - vcy) * ty          # V_P/Pj along the slot
-        w = self.omegas[j]
-        sign = 1.0 if x.link is None else -1.0              # A_Pj = A_P − Aᶜ − Aˢ
-        start = self.tip(other)
-        X, O = self.name(x), self.tip_label(other)
-        still = sense_of(w, abs(self.m.drive.omega)) == "at rest"
-        stuck = abs(u) <= NOISE * self.m.input_speed
-        cor = 0.0 if still or stuck else 2.0 * w * u
-        label = f"Aᶜ_{P}/{Pj}" if sign > 0 else f"−Aᶜ_{P}/{Pj}"
-        if cor == 0.0:
-            why = (f"ω{j} = 0 (link {j} is at rest for this instant)" if still else
-                   f"V_{P}/{Pj} = 0 (no sliding at this instant)")
-            end = self.act(f"ap:{X}:cor", "mark", start,
-                           sentence=f"The Coriolis component 2ω{j}·V_{P}/{Pj} is zero, as "
-                                    f"{why}.")
-        else:
-            perp = self.act(f"ap:{X}:cor:perp", "perpendicular_through", start,
-                            self.asm.guides[i],
-                            sentence=f"Through {O} draw a line ⟂ the slot of link {j} (the "
-                                     f"direction of the Coriolis component).")
-            sense = "ccw" if w > 0 else "cw"
-            toward = "" if sign > 0 else ", reversed, as it is subtracted"
-            end = self.act(
-                f"ap:{X}:cor", "lay_off", start, perp, length=sign * cor * self.scale,
-                sentence=f"Along it lay off the Coriolis component Aᶜ_{P}/{Pj} = "
-                         f"2ω{j}·V_{P}/{Pj} = 2 × {abs(w):.6g} rad/s × "
-                         f"{speed_text(abs(u), self.m.units)} = {self.say(abs(cor))}, in "
-                         f"the direction of V_{P}/{Pj} turned 90° the way ω{j} turns "
-                         f"({sense}){toward}.")
-            self.component(f"ap:{X}:cor:vec", start, end, label)
-        self.coriolis[slider.point] = (start, end, sign)
-        ref = self.act(f"ap:{X}:slot@{i}", "parallel_through", end, self.asm.guides[i],
+        j = self.m.slides[i].guide_link
+        slider, carried, rel = self.curve_nodes(x, other)
+        guide = self.asm.guides[i]
+        end = self.draw_coriolis(x, other, slider, carried, rel, j, self.asm.guide(i).direction,
+                                 guide, None)
+        ref = self.act(f"ap:{self.name(x)}:slot@{i}", "parallel_through", end, guide,
                        sentence=f"Through its end draw the parallel to the slot of link {j} (the "
-                                f"direction of the sliding acceleration Aˢ_{P}/{Pj}, length "
+                                f"direction of the sliding acceleration Aˢ_{rel}, length "
                                 "unknown).")
-        self.slides_drawn.append((slider, carried, end, sign, f"Aˢ_{P}/{Pj}"))
-        return ref, f"the parallel to the slot through the end of {label}"
+        self.slides_drawn.append((slider, carried, end, self.sign(x), f"Aˢ_{rel}"))
+        return ref, f"the parallel to the slot through the end of {self.signed('Aᶜ_' + rel, x)}"
 
     def draw_curve(self, x: Node, other: Node, i: int) -> tuple[Ref, str]:
         """A pin P in a slot curved about K of link j (the notes §2.11–2.12).
@@ -333,55 +299,92 @@ class _Polygon(PolygonWalk):
         unknown length, is the line ⟂ KP through their end.
         """
         a = self.m.pin_arcs[i]
-        j, rho = a.guide_link, a.radius
-        K, Pn = a.centre, a.point
+        j, K, Pn = a.guide_link, a.centre, a.point
         line = self.space_line(Node(K), Node(Pn), j)
         slider, carried, rel = self.curve_nodes(x, other)
-        (vsx, vsy), (vcx, vcy) = self.velocity(slider), self.velocity(carried)
-        ex, ey = self.asm.xy(Pn)[0] - self.asm.xy(K)[0], self.asm.xy(Pn)[1] - self.asm.xy(K)[1]
-        e = math.hypot(ex, ey)
-        u = ((vsx - vcx) * -ey + (vsy - vcy) * ex) / e        # v_rel along the tangent (+90°)
-        w = 0.0 if j == 1 else self.omegas[j]
-        sign = 1.0 if x.link is None else -1.0
-        X, start = self.name(x), self.tip(other)
-        kp, pk = f"{K}{Pn}", f"{Pn}{K}"
-        end = start
-        if j != 1:
-            still = sense_of(w, abs(self.m.drive.omega)) == "at rest"
-            stuck = abs(u) <= NOISE * self.m.input_speed
-            cor = 0.0 if still or stuck else 2.0 * w * u     # along −e: the tangent turned +90°
-            if cor == 0.0:
-                why = f"ω{j} = 0" if still else f"V_{rel} = 0"
-                end = self.act(f"ap:{X}:cor", "mark", start,
-                               sentence=f"The Coriolis component 2ω{j}·V_{rel} is zero, as "
-                                        f"{why} at this instant.")
-            else:
-                sense = "ccw" if w > 0 else "cw"
-                end = self.act(
-                    f"ap:{X}:cor", "lay_off", start, line, length=-sign * cor * self.scale,
-                    sentence=f"From {self.tip_label(other)} lay off along {kp} the Coriolis "
-                             f"component Aᶜ_{rel} = 2ω{j}·V_{rel} = 2 × {abs(w):.6g} rad/s × "
-                             f"{speed_text(abs(u), self.m.units)} = {self.say(abs(cor))}, "
-                             f"in the direction of V_{rel} turned 90° the way ω{j} turns "
-                             f"({sense}){'' if sign > 0 else ', reversed, as it is subtracted'}.")
-                self.component(f"ap:{X}:cor:vec", start, end,
-                               f"{'' if sign > 0 else '−'}Aᶜ_{rel}")
-            self.coriolis[Pn] = (start, end, sign)
-        normal = u * u / rho
-        first = end
+        (kx, ky), (px, py) = self.asm.xy(K), self.asm.xy(Pn)
+        e = math.hypot(px - kx, py - ky)
+        tangent = (-(py - ky) / e, (px - kx) / e)            # KP turned +90°
+        X, kp = self.name(x), f"{K}{Pn}"
+        first = self.tip(other)
+        if j != 1:                                           # a frame slot does not turn
+            first = self.draw_coriolis(x, other, slider, carried, rel, j, tangent, None,
+                                       (line, kp))
+        u = self.sliding(slider, carried, tangent)
+        normal = u * u / a.radius
         end = self.act(
-            f"ap:{X}:n@curve", "lay_off", first, line, length=-sign * normal * self.scale,
+            f"ap:{X}:n@curve", "lay_off", first, line, length=-self.sign(x) * normal * self.scale,
             sentence=f"From its end lay off the normal component of the relative path "
                      f"Aⁿ_{rel} = V_{rel}²/ρ = ({speed_text(abs(u), self.m.units)})² ÷ "
-                     f"{self.m.units.length_text(rho)} = {self.say(normal)} parallel to {pk}, "
-                     f"pointing from {Pn} toward the centre of curvature {K}"
-                     f"{'' if sign > 0 else ', reversed, as it is subtracted'}.")
-        self.component(f"ap:{X}:n@curve:vec", first, end, f"{'' if sign > 0 else '−'}Aⁿ_{rel}")
+                     f"{self.m.units.length_text(a.radius)} = {self.say(normal)} parallel to "
+                     f"{Pn}{K}, pointing from {Pn} toward the centre of curvature {K}"
+                     f"{self.reversed(x)}.")
+        self.component(f"ap:{X}:n@curve:vec", first, end, self.signed(f"Aⁿ_{rel}", x))
         ref = self.act(f"ap:{X}:t@curve", "perpendicular_through", end, line,
                        sentence=f"Through its end draw a line ⟂ {kp}, the tangent of the slot "
                                 f"(the direction of Aᵗ_{rel}, length unknown).")
-        self.slides_drawn.append((slider, carried, end, sign, f"Aᵗ_{rel}"))
+        self.slides_drawn.append((slider, carried, end, self.sign(x), f"Aᵗ_{rel}"))
         return ref, f"the line ⟂ {kp} through the end of Aⁿ_{rel}"
+
+    def draw_coriolis(self, x: Node, other: Node, slider: Node, carried: Node, rel: str,
+                      j: int, tangent: tuple[float, float], slot: Ref | None,
+                      normal_line: tuple[Ref, str] | None) -> Ref:
+        """Lay off 2ω_j·v_rel from the other point's tip: v_rel turned 90° the way ω_j turns.
+
+        v_rel runs along ``tangent``, so the component lies along the tangent turned
+        +90°: the perpendicular to a straight ``slot`` (drawn here), or the line KP of a
+        curved one (``normal_line``: the line, directed K → P, which is the turned
+        tangent reversed, and its name). It is subtracted when the slot's own point
+        is the one found. At an instant with no sliding or no turning the step says
+        the component is zero.
+        """
+        X, O, start = self.name(x), self.tip_label(other), self.tip(other)
+        w = self.omegas[j]
+        u = self.sliding(slider, carried, tangent)
+        still = sense_of(w, abs(self.m.drive.omega)) == "at rest"
+        stuck = abs(u) <= NOISE * self.m.input_speed
+        cor = 0.0 if still or stuck else 2.0 * w * u
+        if cor == 0.0:
+            why = (f"ω{j} = 0 (link {j} is at rest for this instant)" if still else
+                   f"V_{rel} = 0 (no sliding at this instant)")
+            end = self.act(f"ap:{X}:cor", "mark", start,
+                           sentence=f"The Coriolis component 2ω{j}·V_{rel} is zero, as {why}.")
+        else:
+            if slot is not None:
+                along, turn = self.act(
+                    f"ap:{X}:cor:perp", "perpendicular_through", start, slot,
+                    sentence=f"Through {O} draw a line ⟂ the slot of link {j} (the direction of "
+                             "the Coriolis component)."), 1.0
+                where = "Along it"
+            else:
+                (along, name), turn = normal_line, -1.0
+                where = f"From {O} along {name}"
+            end = self.act(
+                f"ap:{X}:cor", "lay_off", start, along,
+                length=turn * self.sign(x) * cor * self.scale,
+                sentence=f"{where} lay off the Coriolis component Aᶜ_{rel} = 2ω{j}·V_{rel} = "
+                         f"2 × {abs(w):.6g} rad/s × {speed_text(abs(u), self.m.units)} = "
+                         f"{self.say(abs(cor))}, in the direction of V_{rel} turned 90° the way "
+                         f"ω{j} turns ({'ccw' if w > 0 else 'cw'}){self.reversed(x)}.")
+            self.component(f"ap:{X}:cor:vec", start, end, self.signed(f"Aᶜ_{rel}", x))
+        self.coriolis[slider.point] = (start, end, self.sign(x))
+        return end
+
+    def sliding(self, slider: Node, carried: Node, tangent: tuple[float, float]) -> float:
+        """V_P/Pj along the slot's ``tangent``, from the velocity polygon."""
+        (sx, sy), (cx, cy) = self.velocity(slider), self.velocity(carried)
+        return (sx - cx) * tangent[0] + (sy - cy) * tangent[1]
+
+    @staticmethod
+    def sign(x: Node) -> float:
+        """+1 when the sliding point is found (A_P = A_Pj + …), −1 for the slot's point."""
+        return 1.0 if x.link is None else -1.0
+
+    def signed(self, label: str, x: Node) -> str:
+        return label if self.sign(x) > 0 else f"−{label}"
+
+    def reversed(self, x: Node) -> str:
+        return "" if self.sign(x) > 0 else ", reversed, as it is subtracted"
 
     # ----- results ----------------------------------------------------------------
     def draw_results(self) -> dict[int, float]:

@@ -404,6 +404,13 @@ class Mechanism:
         k = self.link(self.drive.link)
         return abs(self.drive.omega) * k.span(k.names[0], k.names[1])
 
+    @property
+    def input_acceleration(self) -> float:
+        """|A| of that point, r·√(ω⁴ + α²): the acceleration the polygon starts from."""
+        k = self.link(self.drive.link)
+        return math.hypot(self.drive.omega ** 2, self.drive.alpha) * k.span(k.names[0],
+                                                                            k.names[1])
+
     def with_drive(self, drive: Drive) -> Mechanism:
         """Return the same mechanism at another input position."""
         return Mechanism(self.links, drive, self.slides, dict(self.branches), self.units,

@@ -169,7 +169,7 @@ def _polygon_quantities(ex: Exercise, asm, kin, vp: VelocityPolygon,
     c = asm.construction
     d = m.drive
     v_scale = m.input_speed
-    a_scale = _input_acceleration(m)
+    a_scale = m.input_acceleration
     only = ex.methods == ("polygon",)
     for n in ex.omegas:
         q = _scalar(f"omega{n}", vp.omegas.get(n), kin.omegas[n], abs(d.omega),
@@ -226,13 +226,6 @@ def _coriolis(kin, m, point: str) -> tuple[float, float]:
     (px, py), (qx, qy) = (analytic.point_velocity(kin, m, k, point) for k in (joint.link, j))
     w = kin.omegas[j]
     return -2.0 * w * (py - qy), 2.0 * w * (px - qx)
-
-
-def _input_acceleration(m) -> float:
-    """|A| of the input's crank pin: the scale an acceleration error is judged against."""
-    d = m.drive
-    r = m.link(d.link).span(*m.link(d.link).names[:2])
-    return r * math.hypot(d.omega ** 2, d.alpha)
 
 
 def _taken(m, name: str) -> tuple[int, str]:

@@ -135,13 +135,15 @@ class LabelPlacer:
                        numbers: list[int], *, sub: str = "",
                        prefer: float | tuple[float, ...] = math.pi / 4, spread: float = math.pi,
                        gap: float = 1.4, size: float = 3.4, tail: str = "",
-                       rings: tuple[float, ...] = (1.0, 1.6, 2.4, 3.4, 4.6, 6.0, 8.0)
-                       ) -> tuple[float, float] | None:
+                       rings: tuple[float, ...] = (1.0, 1.6, 2.4, 3.4, 4.6, 6.0, 8.0),
+                       farther: tuple[float, ...] = ()) -> tuple[float, float] | None:
         """Place a label followed by circled step numbers, as one unit clear of everything.
 
         Either part may be empty. ``tail`` follows the subscript on the baseline
         ("Aⁿ" sub "B/A" tail " = 0"). ``rings`` are the distances tried, in
-        ``gap``s: fewer keep a label by its anchor at the cost of some overlap.
+        ``gap``s: fewer keep a label by its anchor at the cost of some overlap;
+        ``farther`` rings are tried after them when none of theirs is clear, for a
+        figure where covering a label is worse than standing a little off.
         Returns the unit's centre, or None if there was nothing to place.
         """
         if not text and not numbers:
@@ -151,7 +153,12 @@ class LabelPlacer:
         radii = [badge_radius(n) for n in numbers]
         w = (x1 - x0) + sum(2 * r + 0.6 for r in radii) - (0.0 if t else 0.6)
         h = max(y1 - y0, 2 * max(radii, default=0.0))
-        c, _ = self.spot(w, h, anchor, prefer=prefer, spread=spread, gap=gap, rings=rings)
+        c, cost = self.spot(w, h, anchor, prefer=prefer, spread=spread, gap=gap, rings=rings)
+        if cost > 0.0 and farther:
+            c2, cost2 = self.spot(w, h, anchor, prefer=prefer, spread=spread, gap=gap,
+                                  rings=farther)
+            if cost2 < cost:
+                c = c2
         x = c[0] - w / 2
         if t:
             self.fig.add(Text((x + (x1 - x0) / 2, c[1] - (y0 + y1) / 2), text, size, "middle",

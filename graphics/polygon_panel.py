@@ -57,6 +57,7 @@ _SAME = 1e-9        # relative slack for "lies on" and "coincides"
 _ZERO = 0.05        # a vector shorter than this on paper (mm) is drawn as "= 0"
 _HERE = 1e-6        # paper points closer than this (mm) are one
 _NEAR = (1.0, 1.6, 2.4, 3.4, 4.6)   # a vector's label stays this many gaps from its shaft
+_FARTHER = (6.0, 8.0, 11.0, 15.0)   # ...unless every spot there covers another label
 _CROSSABLE = 0.02   # what covering a thin working line costs a label, against 1 for ink
 
 
@@ -355,7 +356,7 @@ class _PolygonPanel:
             rays = self.rays_at(at)
             self.placer.place_numbered(text, at, self.numbered(grp), sub=sub, tail=tail,
                                        prefer=_free_direction(at, rays, self.centre), gap=1.0,
-                                       size=3.8)
+                                       size=3.8, farther=_FARTHER)
 
     def label_vectors(self) -> None:
         """Each vector's label beside its own stretch of shaft; a null one as "… = 0".
@@ -381,7 +382,7 @@ class _PolygonPanel:
                        for t in _own_stretch(a, b, [(p, q) for s, p, q in drawn if s is not step])]
             self.placer.place_numbered(text, anchors, self.numbered([step]), sub=sub,
                                        prefer=(normal, normal + math.pi), spread=math.pi / 3,
-                                       gap=1.0, size=3.4, rings=_NEAR)
+                                       gap=1.0, size=3.4, rings=_NEAR, farther=_FARTHER)
 
     def number_lines(self) -> None:
         """Each line's numbers beside its middle, or the middle of the stretch no arrow covers.
