@@ -215,6 +215,23 @@ def dof(mech: Mechanism) -> int:
     return 3 * (len(mech.links) - 1) - 2 * f1 - f2
 
 
+def mobility_by_rank(mech: Mechanism) -> int:
+    """Return the mobility as the nullity of the loop equations' Jacobian at this position.
+
+    Independent of Grübler's count (:func:`dof`): the columns are the moving links'
+    x, y, φ, the rows every joint's constraints without the input's. A redundant
+    constraint (a parallelogram's extra link) or a joint that does not constrain
+    makes the two differ.
+    """
+    system, q = _start(mech)
+    jac = system.scaled(system.jacobian(q))[:-1]        # the last row is the input's
+    if jac.size == 0:
+        return 3 * len(system.moving)
+    sv = np.linalg.svd(jac, compute_uv=False)
+    rank = int(np.sum(sv > SINGULAR_RCOND * sv[0])) if sv[0] > 0.0 else 0
+    return jac.shape[1] - rank
+
+
 # ----------------------------------------------------------------------------- closed form
 
 class _Assembly:

@@ -336,6 +336,9 @@ class Mechanism:
     name: str = ""
     source: str = ""
     arcs: tuple[Arc, ...] = ()
+    scale: float | None = None
+    """The space scale the exercise states, file length units per paper cm ("1 cm = 4 cm"
+    is 4.0); None lets the figures choose."""
 
     def __post_init__(self) -> None:
         numbers = [k.number for k in self.links]
@@ -414,4 +417,4 @@ class Mechanism:
     def with_drive(self, drive: Drive) -> Mechanism:
         """Return the same mechanism at another input position."""
         return Mechanism(self.links, drive, self.slides, dict(self.branches), self.units,
-                         self.name, self.source, self.arcs)
+                         self.name, self.source, self.arcs, self.scale)

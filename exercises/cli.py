@@ -9,6 +9,8 @@ from __future__ import annotations
 
 import functools
 import math
+import re
+import sys
 from dataclasses import replace
 from pathlib import Path
 
@@ -167,15 +169,18 @@ def solve(source, out_dir, angle, pdf):
     The exit status is 2 if any constructed number disagrees with the analytic
     one beyond the tolerance its conditioning allows.
     """
-    from exercises.solution_files import solve_to_files, write_solution
+    from exercises.solution_files import overall_text, solve_all, write_solution
     from graphics.export import cairo_missing
 
     ex = _exercise(source, angle)
-    sols, files = solve_to_files(ex)
+    sols, overall, files = solve_all(ex)
     reason = cairo_missing() if pdf else None
     out = Path(out_dir or f"{ex.id}-solution")
     written = write_solution(files, out, pdf=pdf and reason is None)
-    failures = []
+    failures = [q.name for q in overall.quantities.values() if not q.passed]
+    for name, q in overall.quantities.items():
+        click.echo(f"{name:<10} {overall_text(name, q.value, ex.mechanism.units)}  "
+                   f"rel. error {q.rel_error:.1e}  {'ok' if q.passed else 'FAILED'}  ({q.method})")
     for sol in sols:
         if len(sols) > 1:
             click.echo(f"at {sol.position.label}:")
@@ -195,9 +200,68 @@ def solve(source, out_dir, angle, pdf):
         raise SystemExit(2)
 
 
+@cli.command()
+@_source
+@click.option("-o", "--output", "out_dir", type=click.Path(file_okay=False), default=None,
+              metavar="DIR", help="Folder for the sweep (default: <id>-sweep/ here).")
+@click.option("--of", "of", default=None, metavar="NAME",
+              help="The output: V_B or A_B (point B), omega4, alpha4 or theta4 (link 4). "
+                   "Default: the first V_/A_ the exercise asks, else the point on a frame "
+                   "slider guide, else ω of the highest-numbered link.")
+@click.option("--steps", type=click.IntRange(4, 100000), default=360, show_default=True,
+              help="Equal steps of the input angle over the revolution.")
+@click.option("--pdf/--no-pdf", default=True, show_default=True,
+              help="Also write a PDF of each plot (needs libcairo2).")
+@_fails_cleanly
+def sweep(source, out_dir, of, steps, pdf):
+    """Check the graphical solution against the output's curves over a revolution.
+
+    Turns the input through one revolution in equal steps (from the [input]
+    angle, the way ω turns) and solves each position with the independent
+    analytic solver: the output's position, velocity and acceleration, or a
+    link's θ, ω and α. A position that cannot be assembled, or a dead point,
+    is a gap in the curves and a row in the table that says why. The positions
+    the exercise solves by construction ([ask] at, or the [input] angle) are
+    marked on the curves with the constructed values, and the table beside
+    them gives each one's distance from the curve. Where the velocity is zero
+    the position is extreme (the stroke of a ram, the swing of a lever); where
+    the acceleration is zero the velocity peaks: both are found to the
+    solver's precision, not the step's.
+
+    \b
+    Writes into DIR:
+      sweep.csv              one row per step (angle, t, position, V, A)
+      sweep-points.csv       graphical values against the curve's
+      sweep-position.svg, sweep-velocity.svg, sweep-acceleration.svg (and .pdf)
+
+    \b
+    Example:
+      tarsim sweep crank-shaper -o shaper-sweep
+      tarsim sweep four-bar --of omega4 --steps 720 --no-pdf
+      tarsim sweep my-linkage.toml --of V_C
+    """
+    from exercises.sweep import format_sweep, sweep_exercise, sweep_to_files, write_sweep
+    from graphics.export import cairo_missing
+
+    ex = _exercise(source, None)
+    reason = cairo_missing() if pdf else None
+    if sys.stderr.isatty():
+        with click.progressbar(length=steps, label="sweeping", file=sys.stderr) as bar:
+            result = sweep_exercise(ex, steps, of=of, progress=bar.update)
+    else:
+        result = sweep_exercise(ex, steps, of=of)
+    files = sweep_to_files(result, pdf=pdf and reason is None)
+    out = Path(out_dir or f"{ex.id}-sweep")
+    written = write_sweep(files, out)
+    click.echo(format_sweep(result))
+    click.echo(f"wrote {len(written)} files to {out}/")
+    if reason:
+        click.echo(f"PDF skipped: {reason}", err=True)
+
+
 @cli.command(name="list")
 def list_():
-    """List the bundled examples: their ids and where they come from.
+    """List the bundled examples: their ids, where they come from, what they ask.
 
     \b
     Example:
@@ -206,9 +270,26 @@ def list_():
     import tomllib
 
     from exercises.catalog import bundled
+    from exercises.exercise_file import load_exercise
 
-    for name, path in bundled().items():
-        data = tomllib.loads(Path(path).read_text(encoding="utf-8"))
-        click.echo(f"{name:<22}{data.get('name', '')}")
-        if data.get("source"):
-            click.echo(f"{'':<22}from {data['source']}")
+    found = bundled()
+    pad = max(map(len, found), default=0) + 2
+    for name, path in found.items():
+        try:
+            ex = load_exercise(path, name)
+            source = tomllib.loads(Path(path).read_text(encoding="utf-8")).get("source")
+        except (TarsimError, tomllib.TOMLDecodeError, OSError) as e:
+            click.echo(f"{name:<{pad}}(cannot be read: {e})")
+            continue
+        click.echo(f"{name:<{pad}}{ex.mechanism.name}")
+        if source:
+            click.echo(f"{'':<{pad}}from {source}")
+        click.echo(f"{'':<{pad}}asks: {_asks(ex)}")
+
+
+def _asks(ex) -> str:
+    """The find list as a textbook writes it, then the positions: "ω4, V_B at θ2 = 90°"."""
+    names = ", ".join(re.sub(r"^A_cor_", "Aᶜ_", re.sub(r"^(omega|alpha)", lambda m: {
+        "omega": "ω", "alpha": "α"}[m.group(1)], q)) for q in ex.find)
+    at = ", ".join(p.label.split(" (")[0] for p in ex.positions)
+    return f"{names} at {at}" if at else names

@@ -6,6 +6,7 @@
     find = ["centres", "omega3", "omega4", "V_D"]     # what the exercise asks for
     methods = ["radius-rotation", "components"]       # how to find each velocity
     at = [{ angle = 90 }, { time = 2.34 }]            # optional: the positions to solve
+    scale = "1 cm = 4 cm"                             # optional: the space scale stated
 
 ``find`` names quantities as results.json does: ``centres`` (all of them), a
 single centre ``I24``, an angular velocity ``omega3``, a point's velocity ``V_D``,
@@ -30,14 +31,28 @@ from dataclasses import dataclass, replace
 from pathlib import Path
 
 from constructions.errors import InputError
-from constructions.model import Drive, Mechanism
+from constructions.limit_positions import limit_kind, stroke_point
+from constructions.rotatability import four_bar_spans
+from constructions.model import LENGTH_UNITS, Drive, Mechanism
 
 from .mechanism_file import SourceMap, _Reader, _toml_error
 
 __all__ = ["Exercise", "Position", "load_exercise", "parse_exercise", "VELOCITY_METHODS"]
 
 VELOCITY_METHODS = ("radius-rotation", "parallel-line", "components", "polygon")
-_ASK_KEYS = ("find", "methods", "at")
+_ASK_KEYS = ("find", "methods", "at", "scale")
+_SCALE = re.compile(r"^\s*1\s*cm\s*=\s*([0-9]*\.?[0-9]+(?:[eE][-+]?[0-9]+)?)\s*(mm|cm|m|in)\s*$")
+OVERALL = ("dof", "grashof", "time_ratio", "stroke")
+"""Names asked of the mechanism as a whole, beside ``range_<XY>`` (see exercises.overall)."""
+_WHY_NOT = {
+    "grashof": "Grashof's rule classifies a four-bar of four pins, and this is not one",
+    "time_ratio": "the limit positions are drawn where the crank drives a rod to a block on a "
+                  "frame guide (slider-crank), a rod to a rocker (crank-rocker) or a block in "
+                  "the slot of a lever through its pivot (slotted lever), and this crank drives "
+                  "none of these",
+    "stroke": "the stroke is measured on a block that slides on a frame guide, driven through "
+              "the limit positions, and this mechanism has none",
+}
 _QUANTITY = re.compile(r"^(centres|I(\d)(\d)|I(\d+),(\d+)|omega(\d+)|V_([A-Za-z][A-Za-z0-9_']*))$")
 
 
@@ -107,6 +122,17 @@ class Exercise:
         return tuple(q[6:] for q in self.find if q.startswith("A_cor_"))
 
     @property
+    def overall(self) -> tuple[str, ...]:
+        """Asked of the mechanism as a whole: ``dof``, ``grashof``, ``range_AB``,
+        ``time_ratio``, ``stroke`` (results.json's top-level quantities)."""
+        return tuple(q for q in self.find if q in OVERALL or q.startswith("range_"))
+
+    @property
+    def at_positions(self) -> bool:
+        """True if anything asked belongs to a position (a centre, ω, V, A …)."""
+        return len(self.overall) < len(self.find)
+
+    @property
     def wants_accelerations(self) -> bool:
         """True if anything asked needs the acceleration polygon."""
         return bool(self.alphas or self.accelerations or self.coriolis
@@ -167,11 +193,14 @@ def _read_ask(ask, mech: Mechanism, where: SourceMap, filename: str, exercise_id
                    '"omega4", "V_D"', "find" if "find" in ask else None)
     valid = _valid_quantities(mech)
     for q in find:
+        if q in _WHY_NOT and q not in valid:
+            raise fail(f"cannot find '{q}' for this mechanism: {_WHY_NOT[q]}", "find")
         if q not in valid:
             close = _closest(q, sorted(valid))
             hint = (f"did you mean '{close}'?" if close
                     else 'use "centres", "I<i><j>", "omega<n>", "alpha<n>", "V_<point>", '
-                         '"A_<point>", "V_<point>/<point>" or "A_cor_<point>"')
+                         '"A_<point>", "V_<point>/<point>", "A_cor_<point>", "dof", '
+                         '"grashof", "range_<XY>", "time_ratio" or "stroke"')
             raise fail(f"cannot find '{q}' for this mechanism; {hint}", "find")
     methods = ask.get("methods", ["radius-rotation"])
     if not (isinstance(methods, list) and methods and all(isinstance(m, str) for m in methods)):
@@ -182,6 +211,8 @@ def _read_ask(ask, mech: Mechanism, where: SourceMap, filename: str, exercise_id
             hint = f"did you mean '{close}'?" if close else f"use {', '.join(VELOCITY_METHODS)}"
             raise fail(f"unknown velocity method '{m}'; {hint}", "methods")
     positions = _read_positions(ask.get("at"), mech, fail)
+    if "scale" in ask:
+        mech = replace(mech, scale=_read_scale(ask["scale"], mech, fail))
     return Exercise(exercise_id, mech, tuple(dict.fromkeys(find)), tuple(dict.fromkeys(methods)),
                     positions)
 
@@ -220,6 +251,15 @@ def _read_positions(at, mech: Mechanism, fail) -> tuple[Position, ...]:
     return tuple(out)
 
 
+def _read_scale(text, mech: Mechanism, fail) -> float:
+    """``scale = "1 cm = 4 cm"``: the space scale the exercise states, in file units per cm."""
+    m = _SCALE.match(text) if isinstance(text, str) else None
+    if m is None or float(m.group(1)) <= 0.0:
+        raise fail(f'scale must read like "1 cm = 4 cm" (a positive length per paper '
+                   f'centimetre, in mm, cm, m or in), got {text!r}', "scale")
+    return float(m.group(1)) * LENGTH_UNITS[m.group(2)] / mech.units.metres
+
+
 def _angle_text(angle: float, deg: bool) -> str:
     return (f"{math.degrees(angle):.6g}°" if deg else f"{angle:.6g} rad").replace("-", "−")
 
@@ -252,6 +292,14 @@ def _valid_quantities(mech: Mechanism) -> set[str]:
     out |= {f"A_{p}" for p in named}
     out |= {f"{v}_{p}/{q}" for v in "VA" for p in named for q in named if p != q}
     out |= {f"A_cor_{s.point}" for s in slotted}
+    out.add("dof")
+    spans = four_bar_spans(mech)
+    if spans is not None:
+        out |= {"grashof"} | {f"range_{span}" for span in spans}
+    if limit_kind(mech) is not None:
+        out.add("time_ratio")
+        if stroke_point(mech) is not None:
+            out.add("stroke")
     return out
 
 

@@ -25,19 +25,22 @@ from .solution import Quantity, Solution
 __all__ = ["results_document", "results_json"]
 
 
-def results_document(solutions: list[Solution], exercise_id: str) -> dict[str, Any]:
-    """The results.json document for one or more positions of an exercise."""
+def results_document(solutions: list[Solution], exercise_id: str,
+                     overall: dict[str, Quantity] | None = None) -> dict[str, Any]:
+    """The results.json document: each position's quantities, and ``overall`` (the
+    mechanism's DOF, Grashof class, time ratio, stroke) at the top level."""
     return {
         "exercise": exercise_id,
         "positions": [_position(s) for s in solutions],
-        "quantities": {},
+        "quantities": {name: _quantity(q) for name, q in (overall or {}).items()},
     }
 
 
-def results_json(solutions: list[Solution], exercise_id: str) -> str:
+def results_json(solutions: list[Solution], exercise_id: str,
+                 overall: dict[str, Quantity] | None = None) -> str:
     """The document as stable, indented JSON text."""
-    return json.dumps(results_document(solutions, exercise_id), indent=2, ensure_ascii=False,
-                      allow_nan=False) + "\n"
+    return json.dumps(results_document(solutions, exercise_id, overall), indent=2,
+                      ensure_ascii=False, allow_nan=False) + "\n"
 
 
 def _position(s: Solution) -> dict[str, Any]:

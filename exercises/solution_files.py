@@ -15,22 +15,24 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from constructions import geometry as g
+from constructions.assembly import assemble
 from constructions.centres import centre_ref
 from constructions.errors import RenderError
 from constructions.record import Panel, Ref, slice as backward_slice, toposort
 from graphics.circle_diagram import draw_circle_diagram
-from graphics.export import svg_to, write_text
-from graphics.figure import Figure
+from graphics.export import pdf_pages, svg_to, write_text
+from graphics.figure import Figure, stack_pages
 from graphics.polygon_panel import draw_polygon_panel
 from graphics.scene import draw_scene, numbered_steps
 from graphics.svg import to_svg
 from graphics.worked_page import compose_worked_page
 
 from .exercise_file import Exercise
+from .overall import Overall, solve_overall
 from .results_json import results_json
 from .solution import Solution, solve_positions
 
-__all__ = ["SolutionFigure", "solve_to_files", "write_solution"]
+__all__ = ["SolutionFigure", "overall_text", "solve_all", "solve_to_files", "write_solution"]
 
 
 @dataclass
@@ -46,26 +48,41 @@ class SolutionFigure:
 
 
 def solve_to_files(ex: Exercise) -> tuple[list[Solution], dict[str, str]]:
-    """Solve ``ex`` at each position and render every file, in memory: ``{file name: text}``.
-
-    With several positions each figure's stem ends in the position's slug
-    (``worked-t-2.34s``); steps.md has a part per position.
-    """
-    sols = solve_positions(ex)
-    files: dict[str, str] = {}
-    parts = []
-    for sol in sols:
-        suffix = f"-{sol.position.slug}" if len(sols) > 1 else ""
-        figures = _figures(sol, suffix)
-        files.update({f"{f.stem}.svg": to_svg(f.figure) for f in figures})
-        parts.append(_steps_markdown(sol, figures, heading=len(sols) > 1))
-    files["steps.md"] = _steps_title(ex) + "\n".join(parts)
-    files["results.json"] = results_json(sols, ex.id)
+    """Solve ``ex`` and render every file, in memory: ``{file name: text}`` (see :func:`solve_all`)."""
+    sols, _, files = solve_all(ex)
     return sols, files
 
 
+def solve_all(ex: Exercise) -> tuple[list[Solution], Overall, dict[str, str]]:
+    """Solve ``ex`` as a whole and at each position, and render every file in memory.
+
+    The whole-mechanism answers (DOF, Grashof, time ratio, stroke) come first,
+    with the limit positions' figure; then each position's figures, their stems
+    ending in the position's slug when there are several (``worked-t-2.34s``).
+    ``solution.svg`` holds every figure, one page under another; steps.md has a
+    part for the whole mechanism and one per position.
+    """
+    overall = solve_overall(ex.mechanism, ex.overall)
+    sols = solve_positions(ex) if ex.at_positions else []
+    figures = _overall_figures(ex, overall)
+    parts = [_overall_markdown(ex, overall, figures)] if overall.quantities else []
+    for sol in sols:
+        suffix = f"-{sol.position.slug}" if len(sols) > 1 else ""
+        mine = _figures(sol, suffix)
+        figures += mine
+        parts.append(_steps_markdown(sol, mine, heading=len(sols) > 1))
+    files = {f"{f.stem}.svg": to_svg(f.figure) for f in figures}
+    if figures:
+        files["solution.svg"] = to_svg(stack_pages([f.figure for f in figures]))
+    files["steps.md"] = _steps_title(ex) + "\n".join(parts)
+    files["results.json"] = results_json(sols, ex.id, overall.quantities)
+    return sols, overall, files
+
+
 def write_solution(files: dict[str, str], out_dir: str | Path, *, pdf: bool = True) -> list[Path]:
-    """Write the rendered files into ``out_dir`` (made if missing), with a PDF per SVG.
+    """Write the rendered files into ``out_dir`` (made if missing), with a PDF per figure.
+
+    ``solution.pdf`` has those figures as its pages, in order.
 
     Raises
     ------
@@ -77,7 +94,9 @@ def write_solution(files: dict[str, str], out_dir: str | Path, *, pdf: bool = Tr
     pdfs = {}
     if pdf:
         pdfs = {name[:-4] + ".pdf": svg_to(text, "pdf") for name, text in files.items()
-                if name.endswith(".svg")}
+                if name.endswith(".svg") and name != "solution.svg"}
+        if pdfs:
+            pdfs["solution.pdf"] = pdf_pages(list(pdfs.values()))
     try:
         out.mkdir(parents=True, exist_ok=True)
     except OSError as e:
@@ -218,6 +237,66 @@ def _drawn(c, targets: list[Ref], position_steps: frozenset[Ref]) -> list[Ref]:
     """The slice of ``targets`` in record order, less the position construction."""
     wanted = backward_slice(c, targets)
     return [s.id for s in toposort(c, wanted) if s.id not in position_steps]
+
+
+def _overall_figures(ex: Exercise, overall: Overall) -> list[SolutionFigure]:
+    """The limit positions, when the time ratio or stroke is asked."""
+    lp = overall.limits
+    m = ex.mechanism
+    if lp is None:
+        if ex.at_positions:
+            return []
+        # Nothing asked at a position: the mechanism itself is the figure.
+        fig = draw_scene(assemble(m), [], title=m.name)
+        return [SolutionFigure("mechanism", "The mechanism", fig, [])]
+    notes = [_time_ratio_words(m, lp)]
+    if lp.stroke is not None:
+        notes.append(f"Stroke of {lp.point}: {m.units.length_text(lp.stroke)}.")
+    fig = draw_scene(lp.assembly, lp.steps, title=f"{m.name}: limit positions", notes=notes)
+    return [SolutionFigure("limits", "Limit positions", fig, list(lp.steps))]
+
+
+def _time_ratio_words(m, lp) -> str:
+    """"The crank turns 222.2° (A″ to A′, cw) in the slow stroke and 137.8° in the quick one"."""
+    a = m.link(m.drive.link).names[1]
+    start, end = (f"{a}′", f"{a}″") if lp.slow_from == 0 else (f"{a}″", f"{a}′")
+    sense = "ccw" if m.drive.omega >= 0 else "cw"
+    return (f"The crank turns {math.degrees(lp.slow):.4g}° from {start} to {end} ({sense}) in "
+            f"the slow stroke and {math.degrees(lp.quick):.4g}° in the quick one: time ratio "
+            f"{math.degrees(lp.slow):.4g}/{math.degrees(lp.quick):.4g} = {lp.time_ratio:.5g}.")
+
+
+def _overall_markdown(ex: Exercise, overall: Overall, figures: list[SolutionFigure]) -> str:
+    """steps.md's part for the mechanism as a whole: the limit positions, then the answers."""
+    lines = ["# The mechanism as a whole", ""]
+    lp = overall.limits
+    for f in figures if lp is not None else ():
+        lines += [f"## {f.heading} (`{f.stem}.svg`)", ""]
+        for number, step in numbered_steps(lp.assembly.construction, f.refs):
+            lines.append(f"{number}. {step.sentence}")
+        lines += ["", _time_ratio_words(ex.mechanism, lp), ""]
+    lines += ["## Results", "", "| quantity | answer | check | relative error | method |",
+              "|---|---|---|---|---|"]
+    for name, q in overall.quantities.items():
+        lines.append(f"| {name} | {overall_text(name, q.value, ex.mechanism.units)} | "
+                     f"{overall_text(name, q.reference, ex.mechanism.units)} | "
+                     f"{q.rel_error:.2g} | {q.method} |")
+    return "\n".join(lines) + "\n"
+
+
+def overall_text(name: str, v: dict, units) -> str:
+    """A whole-mechanism answer in the file's units: "65 mm < AB < 135 mm (crank-rocker)"."""
+    if "class" in v and "low" in v:
+        span = name[len("range_"):]
+        hi = "" if v["high"] is None else f" < {units.length_text(v['high'])}"
+        return f"{units.length_text(v['low'])} < {span}{hi} ({v['class']})"
+    if "class" in v:
+        return v["class"]
+    if "point" in v:
+        return units.length_text(v["value"])
+    if "slow_deg" in v:
+        return f"{v['value']:.6g} ({v['slow_deg']:.5g}° / {v['quick_deg']:.5g}°)"
+    return f"{v['value']}"
 
 
 # ----- steps.md -------------------------------------------------------------------------

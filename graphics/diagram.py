@@ -197,7 +197,7 @@ class _Diagram:
         unit_m = self.m.units.metres
         w = max(max(xs) - min(xs), 1e-9) / unit_m
         h = max(max(ys) - min(ys), 1e-9) / unit_m
-        self.per_cm = max(nice_per_cm(w, _ROOM[0]), nice_per_cm(h, _ROOM[1]))
+        self.per_cm = self.m.scale or max(nice_per_cm(w, _ROOM[0]), nice_per_cm(h, _ROOM[1]))
         s = 10.0 / (self.per_cm * unit_m)   # paper mm per world metre
         self.view = View(s, (0.0, 0.0))
         self.fig = Figure(0.0, 0.0, title=self.m.name)

@@ -17,7 +17,7 @@ from constructions.errors import RenderError
 from .figure import Figure
 from .svg import to_svg
 
-__all__ = ["FORMATS", "write_figure", "write_text", "svg_to", "cairo_missing"]
+__all__ = ["FORMATS", "write_figure", "write_text", "svg_to", "cairo_missing", "pdf_pages"]
 
 FORMATS = ("svg", "pdf", "png")
 
@@ -52,6 +52,21 @@ def svg_to(svg: str, fmt: str, *, dpi: float = 200.0) -> bytes:
     if fmt == "png":
         return cairosvg.svg2png(bytestring=data, dpi=dpi, background_color="white")
     raise RenderError(f"cannot convert to '{fmt}'; choose one of {', '.join(FORMATS)}")
+
+
+def pdf_pages(pdfs: list[bytes]) -> bytes:
+    """Join one-page PDFs into one document, a page each, in order (pypdf copies the pages
+    as they are, so every page keeps its own size and true scale)."""
+    import io
+
+    from pypdf import PdfWriter  # noqa: PLC0415  (only PDF output needs it)
+
+    writer = PdfWriter()
+    for data in pdfs:
+        writer.append(io.BytesIO(data))
+    out = io.BytesIO()
+    writer.write(out)
+    return out.getvalue()
 
 
 def write_figure(fig: Figure | str, path: str | Path) -> Path:

@@ -11,7 +11,8 @@ import math
 from dataclasses import dataclass, field
 
 __all__ = ["Style", "STYLES", "View", "Path", "Circle", "Text", "Figure", "FONT", "text_width",
-           "SUB_SIZE", "SUB_DROP", "arc_points", "clip_line", "ray_to_edge", "span_line"]
+           "SUB_SIZE", "SUB_DROP", "arc_points", "clip_line", "ray_to_edge", "span_line",
+           "stack_pages"]
 
 FONT = "DejaVu Serif"
 """One family that covers Latin, Greek, subscripts and ⊥ ∥ ∞ (cairosvg has no fallback)."""
@@ -65,6 +66,16 @@ STYLES: dict[str, Style] = {
     "scale_fill": Style(width=0.3, fill="#000", cap="butt", join="miter"),
     "frame": Style(width=0.25, stroke="#999"),
     "text": Style(stroke=None, fill="#000"),
+    # Plots against crank angle (graphics.plot).
+    "plot_frame": Style(width=0.3, cap="butt", join="miter"),
+    "plot_tick": Style(width=0.25, cap="butt"),
+    "plot_grid": Style(width=0.12, stroke="#b8b8b8", cap="butt"),
+    "plot_zero": Style(width=0.25, cap="butt"),
+    "plot_curve": Style(width=0.5),
+    "plot_curve_dashed": Style(width=0.35, dash=(3.0, 1.2), cap="butt"),
+    "plot_curve_dotted": Style(width=0.35, stroke="#555", dash=(0.6, 0.9)),
+    "plot_mark": Style(width=0.3, fill="#fff"),
+    "plot_leader": Style(width=0.15, cap="butt"),
 }
 
 
@@ -311,3 +322,20 @@ def span_line(base: tuple[float, float], d: tuple[float, float],
         return min(over for u, (_, over) in zip(ts, stops) if abs(u - t) < 1e-6)
 
     return min(ts) - reach(min(ts)), max(ts) + reach(max(ts))
+
+
+def stack_pages(pages: list[Figure], gap: float = 12.0) -> Figure:
+    """Set whole figures one under another on one tall sheet, each at its own scale.
+
+    A thin rule parts them; nothing is rescaled, so every scale bar still measures true.
+    """
+    width = max(p.width for p in pages)
+    out = Figure(width, sum(p.height for p in pages) + gap * (len(pages) - 1),
+                 title=pages[0].title)
+    y = 0.0
+    for i, page in enumerate(pages):
+        if i:
+            out.line((0.0, y - gap / 2), (width, y - gap / 2), "frame")
+        out.items += [_shifted(it, 0.0, y) for it in page.items]
+        y += page.height + gap
+    return out

@@ -129,7 +129,10 @@ def test_the_textbook_symbols_are_drawn(drawn):
     assert ("block" in drawn.classes) == has_block
     assert ("guide" in drawn.classes) == any(s.kind == "block" and s.guide_link == 1
                                               for s in m.slides)
-    plates = [k for k in m.links if k.number != 1 and len(k.names) >= 3]
+    # Three or more points make a plate, unless they lie on one line (a straight lever
+    # with a third pin is drawn as a bar).
+    plates = [k for k in m.links if k.number != 1 and len(k.names) >= 3
+              and any(abs(y) > 1e-12 for _, (x, y) in k.points)]
     assert ("plate" in drawn.classes) == bool(plates)
 
 
@@ -246,7 +249,7 @@ def test_scale_bar_cells_are_one_centimetre(drawn):
     assert sorted(fills) == [cells[0][0], cells[2][0]]  # alternate centimetres filled
 
 
-def _crank(fig):
+def _crank(fig, angle=None):
     """Paper positions of the input link's pivot and tip, from the Figure itself.
 
     The pivot is where the dashed θ reference starts; the tip is the other end of the
@@ -257,9 +260,15 @@ def _crank(fig):
     pins = [it.centre for it in fig.items if isinstance(it, Circle) and it.style == "pin"]
     assert min(math.dist(pivot, c) for c in pins) < 1e-9
     bars = [it.points for it in fig.items if isinstance(it, Path) and it.style == "link"]
+    # A plate (a ternary input link) is drawn as a closed outline: its edges are bars too.
+    bars += [(p, q) for it in fig.items if isinstance(it, Path) and it.style == "plate"
+             for p, q in zip(it.points, it.points[1:] + it.points[:1])]
     ends = [q if math.dist(p, pivot) < 1e-9 else p for p, q in bars
             if min(math.dist(p, pivot), math.dist(q, pivot)) < 1e-9]
     tips = [e for e in ends if min(math.dist(e, c) for c in pins) < 1e-9]
+    if len(tips) > 1 and angle is not None:     # the one along the input's axis, at θ
+        tips = [e for e in tips if abs(math.remainder(
+            math.atan2(pivot[1] - e[1], e[0] - pivot[0]) - angle, math.tau)) < 1e-9]
     assert len(tips) == 1
     return pivot, tips[0]
 
@@ -269,7 +278,7 @@ def test_stated_scale_is_the_drawn_crank_over_its_true_length(drawn):
     n, unit = drawn.stated_scale()
     k = m.link(m.drive.link)
     true = k.span(k.names[0], k.names[1]) / m.units.metres  # in the file's unit
-    pivot, tip = _crank(drawn.fig)
+    pivot, tip = _crank(drawn.fig, m.drive.angle)
     # In the Figure, coordinates are unrounded floats: a few ulps of 100 mm.
     assert math.dist(pivot, tip) * n / 10.0 == pytest.approx(true, rel=1e-9)
     # In the SVG, each coordinate is printed to 0.001 mm, so the distance between two

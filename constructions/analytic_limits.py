@@ -1,0 +1,100 @@
+"""The reference for the limit positions: where the output's velocity changes sign.
+
+Independent of the compass construction in :mod:`.limit_positions`, which draws
+the limits from their geometry (rod and crank in line, lever tangent to the
+crank circle). Here the analytic solver is run round the crank's revolution; the
+output's velocity (a block's along its frame guide, or a link's ω) is bracketed
+where it changes sign and each zero bisected to the last bit. The stroke is the
+distance between the block's two places there, the time ratio the crank angles
+between the zeros.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from .analytic import SingularPosition, solve
+from .errors import AssemblyError, InputError
+from .model import Drive, Mechanism
+
+__all__ = ["LimitReference", "limit_reference"]
+
+SAMPLES = 360
+"""Crank angles sampled to bracket the reversals: far more than a linkage's two."""
+
+
+@dataclass(frozen=True)
+class LimitReference:
+    """The output's two reversals over a revolution (SI, radians)."""
+
+    crank_angles: tuple[float, float]
+    slow: float
+    quick: float
+    stroke: float | None
+
+    @property
+    def time_ratio(self) -> float:
+        """Slow stroke over quick stroke."""
+        return self.slow / self.quick
+
+
+def limit_reference(mech: Mechanism, *, point: str | None = None,
+                    link: int | None = None) -> LimitReference:
+    """Find where the output reverses: block ``point`` on its frame guide, or link ``link``.
+
+    Raises
+    ------
+    InputError
+        If the crank cannot turn fully, or the output does not reverse exactly twice.
+    """
+    d = mech.drive
+    sense = 1.0 if d.omega >= 0 else -1.0
+    slide = None
+    if point is not None:
+        slide = next(i for i, s in enumerate(mech.slides) if s.point == point and s.guide_link == 1)
+
+    def state(theta: float) -> tuple[float, float]:
+        """(output velocity, block position along its guide) at crank angle ``theta``."""
+        try:
+            kin = solve(mech.with_drive(Drive(d.link, theta, sense, 0.0)))
+        except (SingularPosition, AssemblyError) as e:
+            raise InputError(f"the crank cannot turn fully (at θ{d.link} = "
+                             f"{math.degrees(theta):.4g}°: {e}), so it has no limit "
+                             "positions to pass") from None
+        if slide is None:
+            return kin.omegas[link], 0.0
+        rate = kin.slide_rates[slide]
+        return rate.velocity, rate.position
+
+    thetas = [d.angle + sense * 2 * math.pi * k / SAMPLES for k in range(SAMPLES + 1)]
+    speeds = [state(t)[0] for t in thetas]
+    zeros = []
+    for k in range(SAMPLES):
+        if speeds[k] == 0.0:
+            zeros.append(thetas[k])
+        elif speeds[k] * speeds[k + 1] < 0.0:
+            zeros.append(_bisect(lambda t: state(t)[0], thetas[k], thetas[k + 1], speeds[k]))
+    if len(zeros) != 2:
+        raise InputError(f"the output reverses {len(zeros)} times in a revolution, not twice; "
+                         "a time ratio needs exactly two limit positions")
+    first = (sense * (zeros[1] - zeros[0])) % (2 * math.pi)
+    slow, quick = max(first, 2 * math.pi - first), min(first, 2 * math.pi - first)
+    stroke = abs(state(zeros[1])[1] - state(zeros[0])[1]) if slide is not None else None
+    return LimitReference((zeros[0], zeros[1]), slow, quick, stroke)
+
+
+def _bisect(f, lo: float, hi: float, f_lo: float) -> float:
+    """A zero of ``f`` between ``lo`` and ``hi`` (``f(lo) = f_lo``), to the last bit."""
+    for _ in range(80):
+        mid = 0.5 * (lo + hi)
+        if mid in (lo, hi):
+            break
+        f_mid = f(mid)
+        if f_mid == 0.0:
+            return mid
+        if (f_mid < 0.0) == (f_lo < 0.0):
+            lo, f_lo = mid, f_mid
+        else:
+            hi = mid
+    return 0.5 * (lo + hi)

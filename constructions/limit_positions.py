@@ -1,0 +1,344 @@
+"""The limit positions of a crank-driven mechanism: its time ratio and its stroke.
+
+The output reverses where the dyad driven by the crank stops turning the output
+link, and the notes (000-part2 §2.2) draw those two positions by compass:
+
+* a **slider-crank** or **crank-rocker**: crank and rod in line, extended (the
+  rod's far end on an arc of radius AB + O2A about O2) and folded (AB − O2A);
+* a **crank and slotted lever**: the lever tangent to the crank circle, where
+  O2A ⟂ O4A; A is cut from the crank circle by the circle on O2O4 as diameter.
+
+The rest of the chain is then carried to each limit: a point of the lever or
+rocker swings with it about its pivot, a ram pin in the lever's slot lies where
+the lever's line cuts the ram's guide, and a rod's far end is cut from its guide
+by an arc. The crank angles between the two limit positions give the time ratio
+(slow stroke over quick stroke, at constant crank speed), the two places of the
+output point give the stroke. Every act is recorded in the assembly's
+construction, so the figure draws it and steps.md narrates it.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from .assembly import Assembly, assemble, point_ref
+from .errors import InputError, NoIntersection
+from .model import Mechanism, SlideKind
+from .record import VERBS, Ref, Role
+
+__all__ = ["LimitPositions", "draw_limit_positions", "limit_kind", "stroke_point"]
+
+_PRIMES = ("′", "″")
+
+
+@dataclass
+class LimitPositions:
+    """The two limit positions as drawn on the mechanism at its stated position."""
+
+    assembly: Assembly
+    """The mechanism at its stated position; its construction holds the steps below."""
+    steps: list[Ref]
+    kind: str
+    """"slider-crank", "crank-rocker" or "slotted lever"."""
+    crank_angles: tuple[float, float]
+    """θ of the crank (rad) at the first and second limit, A′ and A″."""
+    slow: float
+    """Crank angle (rad) turned in the slow stroke, in the sense of ω."""
+    quick: float
+    point: str | None
+    """The point whose stroke is measured (a block on a frame guide), if any."""
+    stroke: float | None
+    """|P′P″| in metres."""
+    stroke_ref: Ref | None
+    slow_from: int
+    """Which limit (0 for ′, 1 for ″) the slow stroke starts from, turning with ω."""
+    conditioning: float
+    output: int | None = None
+    """The lever or rocker the crank's dyad swings (None for a slider-crank)."""
+
+    @property
+    def time_ratio(self) -> float:
+        """Slow stroke over quick stroke: their crank angles at constant speed."""
+        return self.slow / self.quick
+
+
+def limit_kind(mech: Mechanism) -> str | None:
+    """Which limit construction applies to ``mech``, or None if none does.
+
+    The crank is the input; the dyad at its pin decides: a rod to a block on a
+    frame guide (slider-crank), a rod to a rocker about a frame pivot
+    (crank-rocker), or a block or pin in the slot of a lever about a frame pivot
+    (slotted lever).
+    """
+    try:
+        return _Dyad(mech).kind
+    except InputError:
+        return None
+
+
+def stroke_point(mech: Mechanism) -> str | None:
+    """The point whose stroke the limit positions measure: the last block on a frame guide."""
+    on_frame = [s.point for s in mech.slides if s.guide_link == 1 and s.kind is SlideKind.BLOCK
+                and s.contact is None]
+    return on_frame[-1] if on_frame else None
+
+
+def draw_limit_positions(mech: Mechanism) -> LimitPositions:
+    """Draw both limit positions on ``mech`` at its stated position (see the module).
+
+    Raises
+    ------
+    InputError
+        If the crank's dyad is none of the three kinds, or the crank cannot turn
+        fully (no limit positions for it to pass).
+    TarsimError
+        If an arc misses its line (the mechanism cannot reach a limit position).
+    """
+    return _Limits(mech).run()
+
+
+class _Dyad:
+    """The crank and the dyad at its pin, read off the mechanism."""
+
+    def __init__(self, mech: Mechanism):
+        self.m = mech
+        d = mech.drive.link
+        crank = mech.link(d)
+        if len(crank.names) < 2:
+            raise InputError(f"the input link {d} carries no pin to drive a dyad")
+        self.crank, self.o2, self.a = d, crank.names[0], crank.names[1]
+        self.r = crank.span(self.o2, self.a)
+        lever = [s for s in mech.slides if s.point == self.a and s.guide_link != 1
+                 and s.contact is None and _pivot(mech, s.guide_link)]
+        rods = [k for k in mech.links_at(self.a) if k not in (1, d) and len(mech.link(k).names) == 2]
+        if lever:
+            self.kind, self.out = "slotted lever", lever[0].guide_link
+            self.o4 = _pivot(mech, self.out)
+            k, s = mech.link(self.out), lever[0]
+            px, py = k.local(self.o4)
+            (tx, ty), (dx, dy) = s.through, s.direction
+            if abs(dx * (py - ty) - dy * (px - tx)) > 1e-9 * max(1e-300, math.hypot(px, py), self.r):
+                raise InputError(f"the slot of link {self.out} does not run through its pivot "
+                                 f"{self.o4}; the lever's limit positions are drawn for a slot "
+                                 "through the pivot")
+            return
+        for k in rods:
+            b = next(n for n in mech.link(k).names if n != self.a)
+            self.rod, self.b, self.l = k, b, mech.link(k).span(self.a, b)
+            guide = [i for i, s in enumerate(mech.slides) if s.point == b and s.guide_link == 1
+                     and s.kind is SlideKind.BLOCK and s.contact is None]
+            rocker = [n for n in mech.links_at(b) if n not in (1, k) and _pivot(mech, n)]
+            if guide:
+                self.kind, self.guide = "slider-crank", guide[0]
+                return
+            if rocker:
+                self.kind, self.out = "crank-rocker", rocker[0]
+                self.o4 = _pivot(mech, self.out)
+                return
+        raise InputError(
+            "the time ratio and stroke are drawn for a slider-crank, a crank-rocker or a "
+            f"crank and slotted lever; the dyad at the crank's pin {self.a} is none of these")
+
+
+def _pivot(mech: Mechanism, number: int) -> str | None:
+    """The frame point link ``number`` turns about, if it is pinned to the frame."""
+    if number == 1:
+        return None
+    return next((n for n in mech.link(number).names if 1 in mech.links_at(n)), None)
+
+
+class _Limits(_Dyad):
+    def __init__(self, mech: Mechanism):
+        super().__init__(mech)
+        self.asm = assemble(mech)
+        self.c = self.asm.construction
+        self.steps: list[Ref] = []
+        self.cond = 1.0
+
+    def L(self, metres: float) -> str:
+        return self.m.units.length_text(metres)
+
+    def P(self, name: str) -> Ref:
+        return point_ref(name)
+
+    def act(self, ref: str, verb: str, *inputs: Ref, label: str = "", sentence: str = "",
+            result: bool = False, near: tuple[float, float] | None = None, **params) -> Ref:
+        """Record one act; with ``near`` the pick of two cuts is the one nearer that point."""
+        if near is not None:
+            args = [self.c.output(r) for r in inputs]
+            picks = ("forward", "backward") if verb == "intersect_line_circle" else ("left", "right")
+            params["pick"] = min(picks, key=lambda p: math.dist(
+                VERBS[verb](*args, pick=p)[0].xy, near))
+        self.c.draw(f"limit:{ref}", verb, *inputs, label=label, sentence=sentence,
+                    role=Role.RESULT if result else Role.CONSTRUCTION, **params)
+        self.steps.append(f"limit:{ref}")
+        self.cond = min(self.cond, self.c[f"limit:{ref}"].conditioning)
+        return f"limit:{ref}"
+
+    def xy(self, ref: Ref) -> tuple[float, float]:
+        return self.c.output(ref).xy
+
+    # ----- the run ------------------------------------------------------------------------
+    def run(self) -> LimitPositions:
+        if self.kind == "slotted lever":
+            pins = self.tangent_lever()
+        else:
+            pins = self.rod_in_line()
+        angles = tuple(math.atan2(*_sub(self.xy(p), self.xy(self.P(self.o2)))[::-1]) for p in pins)
+        sense = 1.0 if self.m.drive.omega >= 0 else -1.0
+        first = (sense * (angles[1] - angles[0])) % (2 * math.pi)      # from ′ to ″ with ω
+        slow_from = 0 if first >= math.pi else 1
+        slow, quick = (first, 2 * math.pi - first) if slow_from == 0 else (2 * math.pi - first,
+                                                                            first)
+        point, stroke, stroke_ref = self.carry_output(pins)
+        return LimitPositions(self.asm, self.steps, self.kind, angles, slow, quick, point,
+                              stroke, stroke_ref, slow_from, self.cond,
+                              None if self.kind == "slider-crank" else self.out)
+
+    def rod_in_line(self) -> tuple[Ref, Ref]:
+        """Crank and rod in line: B on arcs of AB ± O2A about O2, A on the line O2B."""
+        o2, a, b = self.o2, self.a, self.b
+        r, l = self.r, self.l
+        if l <= r:
+            raise InputError(f"the rod {a}{b} ({self.L(l)}) is not longer than the crank "
+                             f"{o2}{a} ({self.L(r)}): the crank cannot turn fully")
+        pins = []
+        for i, (length, how) in enumerate(((l + r, "extended"), (l - r, "folded"))):
+            mark = _PRIMES[i]
+            span = f"{a}{b} {'+' if i == 0 else '−'} {o2}{a}"
+            arc = self.act(f"arc{i}", "swing_arc", self.P(o2), radius=length,
+                           label=f"arc {span}")
+            where = self.path_of_b(arc, b + mark, i, length)
+            sentence = (f"With centre {o2} and radius {span} = {self.L(length)} draw an arc to "
+                        f"cut {where[1]} at {b}{mark}: crank and rod in line, {how}.")
+            try:
+                bp = self.act(f"{b}{i}", where[0], *where[2], label=f"{b}{mark}",
+                              sentence=sentence, near=where[3])
+            except NoIntersection as e:
+                raise InputError(
+                    f"crank and rod cannot lie in line, {how}: the arc of radius {span} = "
+                    f"{self.L(length)} about {o2} misses {where[1]} by {self.L(e.margin)}, so "
+                    f"{b} never reverses there and there is no limit position to draw") from None
+            self.act(f"line{i}", "line_through", self.P(o2), bp, label=f"{o2}{b}{mark}")
+            ap = self.act(f"{a}{i}", "lay_off", self.P(o2), bp, length=r if i == 0 else -r,
+                          label=f"{a}{mark}", result=True,
+                          sentence=(f"Join {o2}{b}{mark}; the crank lies along it: {a}{mark} is "
+                                    f"{o2}{a} = {self.L(r)} from {o2} toward {b}{mark}."
+                                    if i == 0 else
+                                    f"Join {b}{mark}{o2} and produce it beyond {o2}: {a}{mark} is "
+                                    f"{o2}{a} = {self.L(r)} from {o2} on the far side."))
+            pins.append(ap)
+        return pins[0], pins[1]
+
+    def path_of_b(self, arc: Ref, name: str, i: int, length: float):
+        """(verb, words, inputs, near) for cutting B's path with the arc about O2."""
+        here = self.asm.xy(self.b)
+        if self.kind == "slider-crank":
+            return ("intersect_line_circle", f"the path of {self.b}",
+                    (self.asm.guides[self.guide], arc), here)
+        o4 = self.o4
+        rocker = self.act(f"rocker-arc{i}", "swing_arc", self.P(o4),
+                          radius=self.m.link(self.out).span(o4, self.b),
+                          label=f"arc {o4}{self.b}")
+        return ("intersect_circles", f"the arc of {self.b} about {o4}", (arc, rocker), here)
+
+    def tangent_lever(self) -> tuple[Ref, Ref]:
+        """The lever tangent to the crank circle: the circle on O2O4 cuts it at A′, A″."""
+        o2, o4, a = self.o2, self.o4, self.a
+        mid = self.act("mid", "midpoint", self.P(o2), self.P(o4), label="M",
+                       sentence=f"Bisect {o2}{o4} at M.")
+        self.act("thales", "circle_through", mid, self.P(o2), label=f"circle on {o2}{o4}",
+                 sentence=f"With centre M and radius M{o2} draw the circle on {o2}{o4} as "
+                          f"diameter: from any point of it {o2} and {o4} are seen at 90°.")
+        self.act("crank-circle", "circle_through", self.P(o2), self.P(a), label="crank circle",
+                 sentence=f"With centre {o2} and radius {o2}{a} = {self.L(self.r)} draw the "
+                          f"crank circle.")
+        pins = [self.act(f"{a}{i}", "intersect_circles", "limit:crank-circle", "limit:thales",
+                         pick=pick, label=f"{a}{_PRIMES[i]}", result=True,
+                         sentence=(f"The two circles cut at {a}′ and {a}″ (one each side of "
+                                   f"{o2}{o4}), where {o2}{a} ⟂ {o4}{a}." if i == 0 else
+                                   f"{a}″ is the second cut."))
+                for i, pick in enumerate(("left", "right"))]
+        for i, ap in enumerate(pins):
+            self.act(f"lever{i}", "line_through", self.P(o4), ap, label=f"{o4}{a}{_PRIMES[i]}",
+                     sentence=f"Join {o4}{a}{_PRIMES[i]}: the lever tangent to the crank circle, "
+                              f"its {'first' if i == 0 else 'second'} limit position.")
+        return pins[0], pins[1]
+
+    # ----- the output at each limit ----------------------------------------------------
+    def carry_output(self, pins: tuple[Ref, Ref]):
+        """Carry the chain to the stroke point at each limit; its two places give the stroke."""
+        target = stroke_point(self.m)
+        if target is None:
+            return None, None, None
+        if self.kind == "slider-crank":
+            if target != self.b:
+                return None, None, None
+            ends = [f"limit:{self.b}0", f"limit:{self.b}1"]
+        else:
+            ends = [self.carry(target, pins[i], i) for i in range(2)]
+            if None in ends:
+                return None, None, None
+        length = math.dist(self.xy(ends[0]), self.xy(ends[1]))
+        ref = self.act("stroke", "join", ends[1], ends[0], label="stroke", result=True,
+                       sentence=f"The stroke of {target} is {target}″{target}′ = "
+                                f"{self.L(length)}.")
+        return target, length, ref
+
+    def carry(self, name: str, pin: Ref, i: int) -> Ref | None:
+        """Place ``name`` at limit ``i`` (the lever or rocker through ``pin``), or None."""
+        mark = _PRIMES[i]
+        out = self.out
+        o4 = self.o4
+        lever_line = (f"limit:lever{i}" if self.kind == "slotted lever"
+                      else self.act(f"rocker{i}", "line_through", self.P(o4), f"limit:{self.b}{i}",
+                                    label=f"{o4}{self.b}{mark}"))
+        guide = next((j for j, s in enumerate(self.m.slides) if s.point == name
+                      and s.guide_link == 1), None)
+        slot = any(s.point == name and s.guide_link == out for s in self.m.slides)
+        if slot and guide is not None:
+            return self.act(f"{name}{i}", "intersect_lines", lever_line, self.asm.guides[guide],
+                            label=f"{name}{mark}", result=True,
+                            sentence=f"Produce {o4}{self.a if self.kind == 'slotted lever' else self.b}"
+                                     f"{mark} to cut the path of {name} at {name}{mark}.")
+        # A rod from a point X of the lever to the block's pin.
+        for k in self.m.links_at(name):
+            rod = self.m.link(k)
+            if k == 1 or len(rod.names) != 2 or guide is None:
+                continue
+            x = next(n for n in rod.names if n != name)
+            if out not in self.m.links_at(x):
+                continue
+            xp = self.swing(x, pin, i)
+            arc = self.act(f"arc-{name}{i}", "swing_arc", xp, radius=rod.span(x, name),
+                           label=f"arc {x}{mark}{name}{mark}")
+            end = self.act(f"{name}{i}", "intersect_line_circle", self.asm.guides[guide], arc,
+                           label=f"{name}{mark}", result=True, near=self.asm.xy(name),
+                           sentence=f"With centre {x}{mark} and radius {x}{name} = "
+                                    f"{self.L(rod.span(x, name))} cut the path of {name} "
+                                    f"at {name}{mark}.")
+            self.act(f"rod-{name}{i}", "line_through", xp, end, label=f"{x}{mark}{name}{mark}",
+                     sentence=f"Join {x}{mark}{name}{mark}: link {k} in that limit position.")
+            return end
+        return None
+
+    def swing(self, x: str, pin: Ref, i: int) -> Ref:
+        """Point ``x`` of the lever or rocker, swung about its pivot into limit ``i``."""
+        mark = _PRIMES[i]
+        o4 = self.o4
+        if self.kind != "slotted lever" and x == self.b:
+            return f"limit:{self.b}{i}"
+        via = self.a if self.kind == "slotted lever" else self.b
+        here = _sub(self.asm.xy(via), self.asm.xy(o4))
+        there = _sub(self.xy(pin if self.kind == "slotted lever" else f"limit:{self.b}{i}"),
+                     self.asm.xy(o4))
+        turn = math.atan2(there[1], there[0]) - math.atan2(here[1], here[0])
+        return self.act(f"{x}{i}", "rotate_about", self.P(x), self.P(o4), angle=turn,
+                        label=f"{x}{mark}",
+                        sentence=f"With centre {o4} swing {x} with the lever through the angle "
+                                 f"{via}{o4}{via}{mark} to {x}{mark}.")
+
+
+def _sub(p, q) -> tuple[float, float]:
+    return (p[0] - q[0], p[1] - q[1])

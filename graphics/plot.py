@@ -1,0 +1,406 @@
+"""Line plots of a quantity against the input angle, in the textbook's look.
+
+A plot is a framed box with ticks, light grid lines, a zero line, one or more
+curves in black and grey (solid, dashed, dotted: they read apart without colour),
+open-circle marks with their labels, and the axis labels with true subscripts.
+The y axis label stands over the axis, so no text is turned. Everything is placed
+in paper millimetres on a :class:`~graphics.figure.Figure`, like every other
+figure of tarsim; nothing here knows about mechanisms.
+
+Text given to this module marks a subscript with an underscore, as results.json
+names quantities: ``"V_B (mm/s)"`` prints V with subscript B, ``"θ_2 (°)"`` θ
+with subscript 2; each ``X_Y`` in a string is set this way.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+from .figure import Circle, Figure, Path, Text, text_width
+
+__all__ = ["Series", "PlotMark", "nice_ticks", "tick_text", "rich_text", "draw_line_plot",
+           "CURVE_STYLES"]
+
+CURVE_STYLES = ("plot_curve", "plot_curve_dashed", "plot_curve_dotted")
+"""Curve styles in the order series take them: solid black, dashed black, dotted grey."""
+
+_WIDTH = 170.0        # page width, mm (fits A4 portrait inside its margins)
+_MARGIN = 10.0        # white round the page, mm
+_PLOT_H = 82.0        # height of the plotting box, mm
+_TICK = 1.5           # tick length, mm (inward)
+_TITLE = 4.2          # title size, mm
+_SUBTITLE = 3.4       # second title line, mm
+_LABEL = 3.4          # axis labels, mm
+_NUMBER = 2.9         # tick numbers, mm
+_MARK_R = 1.1         # radius of a mark's open circle, mm
+_MARK_TEXT = 2.7      # a mark's label, mm
+_NOTE = 3.0           # notes under the plot, mm
+
+Point = tuple[float, float]
+Box = tuple[float, float, float, float]
+
+
+@dataclass(frozen=True)
+class Series:
+    """One curve: its legend label and its points; ``None`` breaks the line (a gap)."""
+
+    label: str
+    points: tuple[Point | None, ...]
+    style: str = "plot_curve"
+
+
+@dataclass(frozen=True)
+class PlotMark:
+    """A value found another way, drawn as an open circle at (x, y); ``label`` may be ""."""
+
+    x: float
+    y: float
+    label: str = ""
+
+
+# ----- numbers -----------------------------------------------------------------------------
+def nice_ticks(lo: float, hi: float, count: int = 6) -> list[float]:
+    """Return ticks at a nice step (1, 2 or 5 × 10^k) that span ``lo`` … ``hi``.
+
+    About ``count`` intervals; the first tick is at or below ``lo``, the last at
+    or above ``hi``. An empty range is widened first.
+
+    Examples
+    --------
+    >>> nice_ticks(-339.6, 339.6)
+    [-400.0, -200.0, 0.0, 200.0, 400.0]
+    >>> nice_ticks(0.0, 0.93)
+    [0.0, 0.2, 0.4, 0.6, 0.8, 1.0]
+    >>> nice_ticks(5.0, 5.0)
+    [4.0, 4.5, 5.0, 5.5, 6.0]
+    """
+    if not (math.isfinite(lo) and math.isfinite(hi)):
+        raise ValueError("ticks need a finite range")
+    if hi < lo:
+        lo, hi = hi, lo
+    if hi - lo <= 1e-12 * max(abs(lo), abs(hi), 1e-300):
+        pad = abs(lo) * 0.2 if lo else 1.0
+        lo, hi = lo - pad, hi + pad
+    raw = (hi - lo) / max(count, 1)
+    k = math.floor(math.log10(raw))
+    step = next(b * 10.0 ** k for b in (1.0, 2.0, 5.0, 10.0) if b * 10.0 ** k >= raw * (1 - 1e-9))
+    first, last = math.floor(lo / step + 1e-9), math.ceil(hi / step - 1e-9)
+    return [float(f"{i * step:.12g}") + 0.0 for i in range(first, last + 1)]
+
+
+def tick_text(value: float, step: float) -> str:
+    """A tick's number with as many decimals as the step needs, with a true minus.
+
+    Examples
+    --------
+    >>> tick_text(-0.4000000000000001, 0.2), tick_text(300.0, 100.0), tick_text(-0.0, 0.05)
+    ('−0.4', '300', '0.00')
+    """
+    decimals = max(0, -math.floor(math.log10(abs(step)) + 1e-9)) if step else 0
+    text = f"{value:.{decimals}f}"
+    if float(text) == 0.0:
+        text = text.lstrip("-")
+    return text.replace("-", "−")
+
+
+# ----- text ----------------------------------------------------------------------------------
+_SUB = re.compile(r"([^\s_]+)_(\w+)")
+
+
+def rich_text(at: Point, text: str, size: float, anchor: str = "start", *,
+              italic: bool = False, weight: str = "normal") -> list[Text]:
+    """Set ``text`` at ``at``, each ``X_Y`` with Y as a true subscript.
+
+    Returns the pieces, laid end to end: one :class:`Text` per subscript, the
+    words after it in its tail (so no piece opens with a space, which SVG would
+    drop).
+
+    Examples
+    --------
+    >>> [(t.text, t.sub, t.tail) for t in rich_text((0.0, 0.0), "V_B along x, θ_2 (°)", 3.0)]
+    [('V', 'B', ' along x, '), ('θ', '2', ' (°)')]
+    >>> [(t.text, t.sub, t.tail) for t in rich_text((0.0, 0.0), "t = 2 s", 3.0)]
+    [('t = 2 s', '', '')]
+    """
+    matches = list(_SUB.finditer(text))
+    if not matches:
+        pieces = [(text, "", "")]
+    else:
+        pieces = []
+        for i, m in enumerate(matches):
+            head = (text[:m.start()] if i == 0 else "") + m.group(1)
+            end = matches[i + 1].start() if i + 1 < len(matches) else len(text)
+            pieces.append((head, m.group(2), text[m.end():end]))
+    texts = [Text((0.0, 0.0), head, size, "start", italic, weight, sub, tail)
+             for head, sub, tail in pieces]
+    total = sum(t.width for t in texts)
+    x = at[0] - (total / 2 if anchor == "middle" else total if anchor == "end" else 0.0)
+    out = []
+    for t in texts:
+        out.append(Text((x, at[1]), t.text, size, "start", italic, weight, t.sub, t.tail))
+        x += t.width
+    return out
+
+
+def _rich_width(text: str, size: float) -> float:
+    """Width on paper of ``text`` set by :func:`rich_text`."""
+    return sum(t.width for t in rich_text((0.0, 0.0), text, size))
+
+
+def _add_text(fig: Figure, at: Point, text: str, size: float, anchor: str = "start",
+              **kw) -> None:
+    for t in rich_text(at, text, size, anchor, **kw):
+        fig.add(t)
+
+
+# ----- the plot ------------------------------------------------------------------------------
+def draw_line_plot(title: str, x_label: str, y_label: str, series: Sequence[Series],
+                   marks: Sequence[PlotMark] = (), *, x_range: tuple[float, float],
+                   x_ticks: Sequence[tuple[float, str]], subtitle: str = "",
+                   notes: Sequence[str] = (), mark_legend: str = "",
+                   include_zero: bool = True, y_ticks: Sequence[float] = ()) -> Figure:
+    """Draw ``series`` against x in a framed plot, with ``marks`` as labelled open circles.
+
+    Parameters
+    ----------
+    title, subtitle
+        The heading (bold) and a line under it, ``X_Y`` subscripted.
+    x_label, y_label
+        Axis labels with units, ``"θ_2 (°)"``, ``"V_B (mm/s)"``; the y label stands
+        over the axis.
+    series
+        The curves; a series' points outside ``x_range`` are clipped at its ends, so
+        a periodic curve may run a step past each end. With more than one series,
+        or marks and a ``mark_legend``, a legend follows the plot.
+    marks
+        Values found another way (the graphical solution), each an open circle with
+        its label placed clear of the curves and of the other labels.
+    x_range, x_ticks
+        The x axis' extent and its ticks as (value, text).
+    notes
+        Lines under the plot.
+    mark_legend
+        The legend's words for the open circle ("solved graphically").
+    include_zero
+        Stretch the y axis to 0, so the zero line shows.
+    y_ticks
+        The y ticks, evenly spaced, when the caller knows them (0°, 90°, … 360° for
+        a link that turns fully); by default nice ones that hold every value.
+
+    Returns
+    -------
+    Figure
+        A page 170 mm wide.
+
+    Raises
+    ------
+    ValueError
+        If no series has a point inside ``x_range``.
+
+    Examples
+    --------
+    >>> xs = [i * 10.0 for i in range(37)]
+    >>> s = Series("V_B", tuple((x, math.sin(math.radians(x))) for x in xs))
+    >>> fig = draw_line_plot("Sine", "θ_2 (°)", "V_B (mm/s)", [s], [PlotMark(90.0, 1.0, "top")],
+    ...                      x_range=(0.0, 360.0), x_ticks=[(0.0, "0"), (360.0, "360")])
+    >>> fig.width, sum(1 for t in fig.items if isinstance(t, Text) and t.text == "top")
+    (170.0, 1)
+    """
+    x0, x1 = x_range
+    runs = [(s, _clip_runs(s.points, x0, x1)) for s in series]
+    ys = [p[1] for _, rs in runs for r in rs for p in r] + [m.y for m in marks]
+    if not ys:
+        raise ValueError("nothing to plot inside the x range")
+    lo, hi = min(ys), max(ys)
+    if include_zero:
+        lo, hi = min(lo, 0.0), max(hi, 0.0)
+    yt = [float(v) for v in y_ticks] if len(y_ticks) > 1 else nice_ticks(lo, hi)
+    y0, y1 = yt[0], yt[-1]
+    step = yt[1] - yt[0]
+    y_texts = [tick_text(v, step) for v in yt]
+
+    fig = Figure(_WIDTH, 0.0)
+    top = _MARGIN + _TITLE * 0.5
+    _add_text(fig, (_MARGIN, top), title, _TITLE, weight="bold")
+    if subtitle:
+        top += _TITLE + 1.4
+        _add_text(fig, (_MARGIN, top), subtitle, _SUBTITLE)
+    number_w = max(text_width(t, _NUMBER) for t in y_texts)
+    left = _MARGIN + number_w + 2.5
+    right = _WIDTH - _MARGIN - 2.0
+    plot_top = top + _SUBTITLE + 9.0
+    bottom = plot_top + _PLOT_H
+    _add_text(fig, (left - 1.0, plot_top - 4.2), y_label, _LABEL, italic=False)
+    frame: Box = (left, plot_top, right, bottom)
+
+    def px(x: float) -> float:
+        return left + (x - x0) / (x1 - x0) * (right - left)
+
+    def py(y: float) -> float:
+        return bottom - (y - y0) / (y1 - y0) * (bottom - plot_top)
+
+    for x, _ in x_ticks:
+        if x0 < x < x1:
+            fig.line((px(x), plot_top), (px(x), bottom), "plot_grid")
+    for y in yt[1:-1]:
+        if y != 0.0:
+            fig.line((left, py(y)), (right, py(y)), "plot_grid")
+    if y0 < 0.0 < y1:
+        fig.line((left, py(0.0)), (right, py(0.0)), "plot_zero")
+    fig.add(Path(((left, plot_top), (right, plot_top), (right, bottom), (left, bottom)),
+                 "plot_frame", closed=True))
+    for x, text in x_ticks:
+        fig.line((px(x), bottom), (px(x), bottom - _TICK), "plot_tick")
+        fig.line((px(x), plot_top), (px(x), plot_top + _TICK), "plot_tick")
+        fig.add(Text((px(x), bottom + 3.6), text, _NUMBER, "middle", italic=False))
+    for y, text in zip(yt, y_texts):
+        fig.line((left, py(y)), (left + _TICK, py(y)), "plot_tick")
+        fig.line((right, py(y)), (right - _TICK, py(y)), "plot_tick")
+        fig.add(Text((left - 1.8, py(y)), text, _NUMBER, "end", italic=False))
+    y = bottom + 10.0
+    _add_text(fig, ((left + right) / 2, y), x_label, _LABEL, "middle")
+
+    paper_runs = []
+    for s, rs in runs:
+        for r in rs:
+            pts = tuple((px(a), py(b)) for a, b in r)
+            paper_runs.append(pts)
+            if len(pts) > 1:
+                fig.add(Path(pts, s.style))
+    _draw_marks(fig, [(px(m.x), py(m.y), m.label) for m in marks], paper_runs, frame)
+
+    legend = [(s.style, s.label) for s in series] if len(series) > 1 else []
+    if marks and mark_legend:
+        legend.append(("plot_mark", mark_legend))
+    x = _WIDTH
+    for style, label in legend:
+        w = 18.0 + _rich_width(label, _NOTE)
+        if x + w > _WIDTH - _MARGIN + 6.0:
+            x, y = _MARGIN, y + 6.5 if x == _WIDTH else y + 5.0
+        if style == "plot_mark":
+            fig.add(Circle((x + 5.0, y), _MARK_R, style))
+            _add_text(fig, (x + 8.0, y), label, _NOTE)
+        else:
+            fig.line((x, y), (x + 10.0, y), style)
+            _add_text(fig, (x + 12.0, y), label, _NOTE)
+        x += w
+    for note in notes:
+        for line in _wrap(note, _NOTE, _WIDTH - 2 * _MARGIN):
+            y += 5.0
+            _add_text(fig, (_MARGIN, y), line, _NOTE)
+    fig.height = round(y + _MARGIN, 1)
+    fig.title = title.replace("_", "")
+    return fig
+
+
+def _wrap(text: str, size: float, width: float) -> list[str]:
+    """Break ``text`` at spaces into lines no wider than ``width`` (a word stays whole)."""
+    lines: list[str] = []
+    for word in text.split(" "):
+        if lines and _rich_width(f"{lines[-1]} {word}", size) <= width:
+            lines[-1] += f" {word}"
+        else:
+            lines.append(("  " if lines else "") + word)
+    return lines
+
+
+def _clip_runs(points: Sequence[Point | None], x0: float, x1: float) -> list[list[Point]]:
+    """Split at the breaks and keep what lies in x0 ≤ x ≤ x1, cutting segments at the edges."""
+    runs: list[list[Point]] = []
+    current: list[Point] = []
+    prev: Point | None = None
+    for p in (*points, None):
+        if p is None or not (math.isfinite(p[0]) and math.isfinite(p[1])):
+            if current:
+                runs.append(current)
+            current, prev = [], None
+            continue
+        inside = x0 <= p[0] <= x1
+        if prev is not None and (x0 <= prev[0] <= x1) != inside:
+            edge = x0 if min(p[0], prev[0]) < x0 else x1
+            t = (edge - prev[0]) / (p[0] - prev[0])
+            cut = (edge, prev[1] + t * (p[1] - prev[1]))
+            if inside:
+                current = [cut]
+            else:
+                current.append(cut)
+                runs.append(current)
+                current = []
+        if inside:
+            current.append(p)
+        prev = p
+    return [r for r in runs if r]
+
+
+def _draw_marks(fig: Figure, marks: list[tuple[float, float, str]],
+                runs: list[tuple[Point, ...]], frame: Box) -> None:
+    """Open circles at the marks; each label at the nearest clear spot round its circle.
+
+    The spots lie on rings ever farther out; a label set off its first ring gets a
+    thin leader to its circle.
+    """
+    taken: list[Box] = [(x - _MARK_R, y - _MARK_R, x + _MARK_R, y + _MARK_R)
+                        for x, y, _ in marks]
+    for x, y, _ in marks:
+        fig.add(Circle((x, y), _MARK_R, "plot_mark"))
+    h = _MARK_TEXT
+    for x, y, label in marks:
+        if not label:
+            continue
+        w = _rich_width(label, _MARK_TEXT)
+        best, best_cost, best_ring = None, math.inf, 1.0
+        for ring in (1.0, 1.8, 2.6, 3.6, 4.8, 6.2):
+            for dx, dy in ((0.0, -1.0), (1.0, -0.8), (1.0, 0.8), (0.0, 1.0), (-1.0, -0.8),
+                           (-1.0, 0.8), (1.0, 0.0), (-1.0, 0.0)):
+                cx = x + dx * (ring * (_MARK_R + 1.4) + w / 2)
+                cy = y + dy * (ring * (_MARK_R + 0.9) + h / 2)
+                b = (cx - w / 2 - 0.3, cy - h / 2 - 0.3, cx + w / 2 + 0.3, cy + h / 2 + 0.3)
+                cost = _overlap(b, taken, runs, frame) + 0.05 * ring
+                if cost < best_cost:
+                    best, best_cost, best_ring = b, cost, ring
+        cx, cy = (best[0] + best[2]) / 2, (best[1] + best[3]) / 2
+        if best_ring > 1.0:
+            ex = min(max(x, best[0]), best[2])
+            ey = min(max(y, best[1]), best[3])
+            d = math.hypot(ex - x, ey - y)
+            if d > _MARK_R + 0.3:
+                u = ((ex - x) / d, (ey - y) / d)
+                fig.line((x + u[0] * _MARK_R, y + u[1] * _MARK_R),
+                         (ex - u[0] * 0.3, ey - u[1] * 0.3), "plot_leader")
+        for t in rich_text((cx, cy), label, _MARK_TEXT, "middle"):
+            fig.add(t)
+        taken.append(best)
+
+
+def _overlap(b: Box, taken: list[Box], runs: list[tuple[Point, ...]], frame: Box) -> float:
+    """How badly box ``b`` collides: with placed boxes, the curves, or the frame's edge."""
+    cost = 0.0
+    if b[0] < frame[0] or b[1] < frame[1] or b[2] > frame[2] or b[3] > frame[3]:
+        cost += 10.0
+    cost += sum(5.0 for t in taken if b[0] < t[2] and t[0] < b[2] and b[1] < t[3] and t[1] < b[3])
+    for r in runs:
+        for p, q in zip(r, r[1:]):
+            if _segment_hits(p, q, b):
+                cost += 1.0
+                break
+    return cost
+
+
+def _segment_hits(p: Point, q: Point, b: Box) -> bool:
+    """Whether the segment pq meets the box (Liang–Barsky clipping)."""
+    if max(p[0], q[0]) < b[0] or min(p[0], q[0]) > b[2] or \
+            max(p[1], q[1]) < b[1] or min(p[1], q[1]) > b[3]:
+        return False
+    lo, hi = 0.0, 1.0
+    d = (q[0] - p[0], q[1] - p[1])
+    for k in (0, 1):
+        if abs(d[k]) < 1e-12:
+            if not b[k] <= p[k] <= b[k + 2]:
+                return False
+            continue
+        t0, t1 = (b[k] - p[k]) / d[k], (b[k + 2] - p[k]) / d[k]
+        lo, hi = max(lo, min(t0, t1)), min(hi, max(t0, t1))
+    return lo <= hi
