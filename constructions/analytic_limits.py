@@ -18,7 +18,7 @@ from .analytic import SingularPosition, solve
 from .errors import AssemblyError, InputError
 from .model import Drive, Mechanism
 
-__all__ = ["LimitReference", "limit_reference"]
+__all__ = ["LimitReference", "limit_reference", "bisect_zero"]
 
 SAMPLES = 360
 """Crank angles sampled to bracket the reversals: far more than a linkage's two."""
@@ -74,7 +74,7 @@ def limit_reference(mech: Mechanism, *, point: str | None = None,
         if speeds[k] == 0.0:
             zeros.append(thetas[k])
         elif speeds[k] * speeds[k + 1] < 0.0:
-            zeros.append(_bisect(lambda t: state(t)[0], thetas[k], thetas[k + 1], speeds[k]))
+            zeros.append(bisect_zero(lambda t: state(t)[0], thetas[k], thetas[k + 1], speeds[k]))
     if len(zeros) != 2:
         raise InputError(f"the output reverses {len(zeros)} times in a revolution, not twice; "
                          "a time ratio needs exactly two limit positions")
@@ -84,8 +84,9 @@ def limit_reference(mech: Mechanism, *, point: str | None = None,
     return LimitReference((zeros[0], zeros[1]), slow, quick, stroke)
 
 
-def _bisect(f, lo: float, hi: float, f_lo: float) -> float:
-    """A zero of ``f`` between ``lo`` and ``hi`` (``f(lo) = f_lo``), to the last bit."""
+def bisect_zero(f, lo: float, hi: float, f_lo: float) -> float:
+    """A zero of ``f`` between ``lo`` and ``hi`` (``f(lo) = f_lo``, ``f(hi)`` of the other
+    sign), halving until the two ends are neighbouring floats."""
     for _ in range(80):
         mid = 0.5 * (lo + hi)
         if mid in (lo, hi):

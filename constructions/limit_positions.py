@@ -191,7 +191,7 @@ class _Limits(_Dyad):
         slow_from = 0 if first >= math.pi else 1
         slow, quick = (first, 2 * math.pi - first) if slow_from == 0 else (2 * math.pi - first,
                                                                             first)
-        point, stroke, stroke_ref = self.carry_output(pins)
+        point, stroke, stroke_ref = self.carry_output()
         return LimitPositions(self.asm, self.steps, self.kind, angles, slow, quick, point,
                               stroke, stroke_ref, slow_from, self.cond,
                               None if self.kind == "slider-crank" else self.out)
@@ -267,7 +267,7 @@ class _Limits(_Dyad):
         return pins[0], pins[1]
 
     # ----- the output at each limit ----------------------------------------------------
-    def carry_output(self, pins: tuple[Ref, Ref]):
+    def carry_output(self):
         """Carry the chain to the stroke point at each limit; its two places give the stroke."""
         target = stroke_point(self.m)
         if target is None:
@@ -277,7 +277,7 @@ class _Limits(_Dyad):
                 return None, None, None
             ends = [f"limit:{self.b}0", f"limit:{self.b}1"]
         else:
-            ends = [self.carry(target, pins[i], i) for i in range(2)]
+            ends = [self.carry(target, i) for i in range(2)]
             if None in ends:
                 return None, None, None
         length = math.dist(self.xy(ends[0]), self.xy(ends[1]))
@@ -286,22 +286,26 @@ class _Limits(_Dyad):
                                 f"{self.L(length)}.")
         return target, length, ref
 
-    def carry(self, name: str, pin: Ref, i: int) -> Ref | None:
-        """Place ``name`` at limit ``i`` (the lever or rocker through ``pin``), or None."""
+    @property
+    def held(self) -> str:
+        """The point whose limit place sets the lever or rocker: A in its slot, or B."""
+        return self.a if self.kind == "slotted lever" else self.b
+
+    def carry(self, name: str, i: int) -> Ref | None:
+        """Place ``name`` at limit ``i`` of the lever or rocker, or None if tarsim cannot."""
         mark = _PRIMES[i]
-        out = self.out
-        o4 = self.o4
+        out, o4, held = self.out, self.o4, self.held
         lever_line = (f"limit:lever{i}" if self.kind == "slotted lever"
-                      else self.act(f"rocker{i}", "line_through", self.P(o4), f"limit:{self.b}{i}",
-                                    label=f"{o4}{self.b}{mark}"))
+                      else self.act(f"rocker{i}", "line_through", self.P(o4), f"limit:{held}{i}",
+                                    label=f"{o4}{held}{mark}"))
         guide = next((j for j, s in enumerate(self.m.slides) if s.point == name
                       and s.guide_link == 1), None)
         slot = any(s.point == name and s.guide_link == out for s in self.m.slides)
         if slot and guide is not None:
             return self.act(f"{name}{i}", "intersect_lines", lever_line, self.asm.guides[guide],
                             label=f"{name}{mark}", result=True,
-                            sentence=f"Produce {o4}{self.a if self.kind == 'slotted lever' else self.b}"
-                                     f"{mark} to cut the path of {name} at {name}{mark}.")
+                            sentence=f"Produce {o4}{held}{mark} to cut the path of {name} at "
+                                     f"{name}{mark}.")
         # A rod from a point X of the lever to the block's pin.
         for k in self.m.links_at(name):
             rod = self.m.link(k)
@@ -310,7 +314,7 @@ class _Limits(_Dyad):
             x = next(n for n in rod.names if n != name)
             if out not in self.m.links_at(x):
                 continue
-            xp = self.swing(x, pin, i)
+            xp = self.swing(x, i)
             arc = self.act(f"arc-{name}{i}", "swing_arc", xp, radius=rod.span(x, name),
                            label=f"arc {x}{mark}{name}{mark}")
             end = self.act(f"{name}{i}", "intersect_line_circle", self.asm.guides[guide], arc,
@@ -323,21 +327,19 @@ class _Limits(_Dyad):
             return end
         return None
 
-    def swing(self, x: str, pin: Ref, i: int) -> Ref:
+    def swing(self, x: str, i: int) -> Ref:
         """Point ``x`` of the lever or rocker, swung about its pivot into limit ``i``."""
         mark = _PRIMES[i]
-        o4 = self.o4
-        if self.kind != "slotted lever" and x == self.b:
-            return f"limit:{self.b}{i}"
-        via = self.a if self.kind == "slotted lever" else self.b
-        here = _sub(self.asm.xy(via), self.asm.xy(o4))
-        there = _sub(self.xy(pin if self.kind == "slotted lever" else f"limit:{self.b}{i}"),
-                     self.asm.xy(o4))
+        o4, held = self.o4, self.held
+        if x == held:
+            return f"limit:{held}{i}"
+        here = _sub(self.asm.xy(held), self.asm.xy(o4))
+        there = _sub(self.xy(f"limit:{held}{i}"), self.asm.xy(o4))
         turn = math.atan2(there[1], there[0]) - math.atan2(here[1], here[0])
         return self.act(f"{x}{i}", "rotate_about", self.P(x), self.P(o4), angle=turn,
                         label=f"{x}{mark}",
                         sentence=f"With centre {o4} swing {x} with the lever through the angle "
-                                 f"{via}{o4}{via}{mark} to {x}{mark}.")
+                                 f"{held}{o4}{held}{mark} to {x}{mark}.")
 
 
 def _sub(p, q) -> tuple[float, float]:

@@ -240,7 +240,8 @@ def sweep(source, out_dir, of, steps, pdf):
       tarsim sweep four-bar --of omega4 --steps 720 --no-pdf
       tarsim sweep my-linkage.toml --of V_C
     """
-    from exercises.sweep import format_sweep, sweep_exercise, sweep_to_files, write_sweep
+    from exercises.sweep import sweep_exercise
+    from exercises.sweep_files import format_sweep, sweep_to_files, write_sweep
     from graphics.export import cairo_missing
 
     ex = _exercise(source, None)

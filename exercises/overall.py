@@ -105,7 +105,8 @@ def _mm(mech: Mechanism, metres: float) -> str:
 
 
 def _same_class(by_rule: str, by_turning: str) -> bool:
-    """A change-point linkage turns like the class it borders; it matches any with two cranks."""
+    """A change-point linkage turns like a class it borders, so the turning test may name
+    any; it is judged by the inequality alone."""
     return by_rule == by_turning or by_rule == "change-point"
 
 

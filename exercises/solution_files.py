@@ -340,6 +340,15 @@ def _steps_markdown(sol: Solution, figures: list[SolutionFigure], *, heading: bo
     return "\n".join(lines) + "\n"
 
 
+def _direction(x: float, y: float) -> float:
+    """A vector's angle in degrees, (−180°, 180°]: a leftward vector reads 180° whatever the
+    sign of its rounding-noise y, and a direction within 1e-9° of 0 reads 0."""
+    deg = math.degrees(math.atan2(y, x))
+    if deg <= -180.0 + 1e-9:
+        return 180.0
+    return 0.0 if abs(deg) < 1e-9 else deg
+
+
 def _show(v: dict, units, name: str = "") -> str:
     """A quantity in the file's units, for the results tables; ``name`` tells its kind."""
     s = units.metres
@@ -354,6 +363,5 @@ def _show(v: dict, units, name: str = "") -> str:
     if "vector" in v:
         x, y = v["vector"]
         per = "/s²" if name.startswith("A_") else "/s"
-        return (f"{v['value'] / s:.6g} {units.length}{per} at "
-                f"{math.degrees(math.atan2(y, x)) + 0.0:.4g}°")
+        return f"{v['value'] / s:.6g} {units.length}{per} at {_direction(x, y):.4g}°"
     return f"{v['value']:.6g} rad/s" + ("²" if name.startswith("alpha") else "")

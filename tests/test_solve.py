@@ -182,3 +182,15 @@ def test_bundled_examples_solve_and_check():
         sol = solve_exercise(load_exercise(path, name))
         assert sol.failures == [], name
         assert all(math.isfinite(q.rel_error) for q in sol.quantities.values())
+
+
+def test_a_leftward_vector_reads_180_degrees_in_both_columns():
+    # Whitworth's ram acceleration points left; the analytic one has a y of rounding
+    # noise below zero, which atan2 would give as −180°.
+    from exercises.catalog import resolve
+    from exercises.exercise_file import load_exercise
+    from exercises.solution_files import solve_to_files
+    _, files = solve_to_files(load_exercise(resolve("whitworth")))
+    row = next(r for r in files["steps.md"].splitlines() if r.startswith("| A_C |"))
+    assert row.count("211.482 mm/s² at 180°") == 2
+    assert "−180°" not in files["steps.md"] and "-180°" not in files["steps.md"]

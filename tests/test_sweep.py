@@ -18,7 +18,8 @@ from constructions.errors import AssemblyError, InputError
 from exercises.catalog import resolve
 from exercises.cli import cli
 from exercises.exercise_file import load_exercise
-from exercises.sweep import pick_output, sweep_exercise, sweep_to_files
+from exercises.sweep import pick_output, sweep_exercise
+from exercises.sweep_files import sweep_to_files
 from graphics.plot import PlotMark, Series, draw_line_plot, nice_ticks
 from tests.common import four_bar_toml
 
