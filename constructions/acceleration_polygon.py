@@ -69,6 +69,7 @@ class AccelerationPolygon(DrawnPolygon):
     components: dict[str, Ref] = field(default_factory=dict)
 
     noun = "acceleration"
+    symbol, prefix, panel, unit = "A", "ap", Panel.ACCELERATION, "/s²"
 
     def acceleration(self, name: str) -> tuple[float, float]:
         """Read A of ``name`` (m/s²) off the polygon: the vector o_a → its tip.

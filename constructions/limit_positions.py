@@ -25,6 +25,7 @@ from dataclasses import dataclass
 from .assembly import Assembly, assemble, point_ref
 from .errors import InputError, NoIntersection
 from .model import Mechanism, SlideKind
+from .measures import measure_angle
 from .record import VERBS, Ref, Role
 
 __all__ = ["LimitPositions", "draw_limit_positions", "limit_kind", "stroke_point"]
@@ -186,15 +187,43 @@ class _Limits(_Dyad):
         else:
             pins = self.rod_in_line()
         angles = tuple(math.atan2(*_sub(self.xy(p), self.xy(self.P(self.o2)))[::-1]) for p in pins)
-        sense = 1.0 if self.m.drive.omega >= 0 else -1.0
-        first = (sense * (angles[1] - angles[0])) % (2 * math.pi)      # from ′ to ″ with ω
-        slow_from = 0 if first >= math.pi else 1
-        slow, quick = (first, 2 * math.pi - first) if slow_from == 0 else (2 * math.pi - first,
-                                                                            first)
+        slow_from, slow, quick = self.crank_angles(pins)
         point, stroke, stroke_ref = self.carry_output()
         return LimitPositions(self.asm, self.steps, self.kind, angles, slow, quick, point,
                               stroke, stroke_ref, slow_from, self.cond,
                               None if self.kind == "slider-crank" else self.out)
+
+    def crank_angles(self, pins: tuple[Ref, Ref]) -> tuple[int, float, float]:
+        """Measure at O2 the two angles the crank turns, with ω, between its limit positions.
+
+        Returns the limit (0 for ′, 1 for ″) the slow stroke starts from, and the slow
+        and quick angles (rad).
+        """
+        o2, d = self.o2, self.m.drive
+        names = [self.c[p].label for p in pins]
+        if self.kind == "slotted lever":
+            for i, pin in enumerate(pins):
+                self.act(f"crank{i}", "line_through", self.P(o2), pin, label=f"{o2}{names[i]}",
+                         sentence=(f"Join {o2}{names[0]} and {o2}{names[1]}: the crank at its "
+                                   f"two limit positions." if i == 0 else ""))
+        sense = 1.0 if d.omega >= 0 else -1.0
+        centre, *ends = (self.c.output(p) for p in (self.P(o2), *pins))
+
+        def turned(a: int) -> float:
+            return measure_angle(centre, ends[a], ends[1 - a], turn=sense)[0].degrees
+
+        slow_from = 0 if turned(0) >= 180.0 else 1
+        way = "ccw" if sense > 0 else "cw"
+        out = []
+        for stroke, a in (("slow", slow_from), ("quick", 1 - slow_from)):
+            b = 1 - a
+            ref = self.act(stroke, "measure_angle", self.P(o2), pins[a], pins[b], turn=sense,
+                           label=stroke, result=True,
+                           sentence=f"Measure the angle {names[a]}{o2}{names[b]} the crank turns "
+                                    f"from {names[a]} to {names[b]} ({way}, with ω{d.link}): "
+                                    f"{turned(a):.2f}°, the {stroke} stroke.")
+            out.append(abs(self.c.output(ref).sweep))
+        return slow_from, out[0], out[1]
 
     def rod_in_line(self) -> tuple[Ref, Ref]:
         """Crank and rod in line: B on arcs of AB ± O2A about O2, A on the line O2B."""
@@ -281,8 +310,8 @@ class _Limits(_Dyad):
             if None in ends:
                 return None, None, None
         length = math.dist(self.xy(ends[0]), self.xy(ends[1]))
-        ref = self.act("stroke", "join", ends[1], ends[0], label="stroke", result=True,
-                       sentence=f"The stroke of {target} is {target}″{target}′ = "
+        ref = self.act("stroke", "measure", ends[1], ends[0], label="stroke", result=True,
+                       sentence=f"Measure {target}″{target}′: the stroke of {target}, "
                                 f"{self.L(length)}.")
         return target, length, ref
 

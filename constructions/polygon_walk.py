@@ -65,6 +65,7 @@ class DrawnPolygon:
     """
 
     noun = "velocity"
+    symbol, prefix, panel, unit = "V", "vp", Panel.VELOCITY, "/s"
 
     def tip_vector(self, name: str) -> tuple[float, float]:
         """The vector pole → tip of ``name`` (a tip, or a point taken on a link: ``A2``).
@@ -79,6 +80,31 @@ class DrawnPolygon:
             raise TarsimError(f"the {self.noun} polygon has no tip for {name}; it has "
                               f"{', '.join(self.tips)}")
         return self.between(self.pole, self.tips[key])
+
+    def draw_relative(self, name: str, of: str, units) -> Ref:
+        """Join the tip of ``of`` to the tip of ``name``: the vector V_name/of (A_… in the
+        acceleration polygon), drawn and narrated when an exercise asks for it. The
+        step joins the polygon's ``steps``; its ref is returned.
+
+        Raises
+        ------
+        TarsimError
+            If the polygon has no tip for either name.
+        """
+        ref = f"{self.prefix}:rel:{name}/{of}"
+        c = self.construction
+        if ref in c:
+            return ref
+        for n in (name, of):
+            self.tip_vector(n)                          # raises if n has no tip
+        start, end = (self.tips[self.aliases.get(n, n)] for n in (of, name))
+        size = math.hypot(*self.between(start, end)) / units.metres
+        symbol = f"{self.symbol}_{name}/{of}"
+        c.draw(ref, "join", start, end, label=symbol, role=Role.RESULT, panel=self.panel,
+               sentence=f"Join {c[start].label} to {c[end].label}: {symbol} = "
+                        f"{size:.6g} {units.length}{self.unit}.")
+        self.steps.append(ref)
+        return ref
 
     def between(self, start: Ref, end: Ref) -> tuple[float, float]:
         """The drawn vector ``start`` → ``end`` read at the polygon's scale."""

@@ -15,6 +15,7 @@ from typing import Any
 
 from . import geometry as g
 from .errors import TarsimError
+from .measures import measure, measure_angle
 
 __all__ = [
     "Ref",
@@ -66,6 +67,8 @@ VERBS: Mapping[str, Callable[..., tuple[Any, float]]] = {
     "normal_direction": g.normal_direction,
     "join": g.join,
     "transfer": g.transfer,
+    "measure": measure,
+    "measure_angle": measure_angle,
 }
 """The drafting verbs a step may name, by name."""
 

@@ -259,21 +259,33 @@ class _Components(Walk):
         return self.act(f"cm:line:{p}-{q.point}", "line_through", self.at(p), self.at(q),
                         sentence=sentence)
 
-    def transfer_along(self, x: Node, k: Node, line: Ref, kx: str, mark: str = "′") -> Ref:
-        """Project V_k onto ``line`` and lay the component off at x; return its tip."""
+    def transfer_along(self, x: Node, k: Node, line: Ref, kx: str,
+                       mark: str = "′") -> tuple[Ref, str]:
+        """Project V_k onto ``line`` and lay the component off at x; return its tip and
+        what the component at x is called."""
         t, on, K, X = f"cm:{x.tag}:", line.removeprefix("cm:line:"), k.name, x.name
+        vk = self.component_name(f"cm:{k.tag}:arrow@{on}", f"V_{K}′", kx)
+        vx = self.component_name(f"{t}along-arrow@{k.tag}", f"V_{X}{mark}", kx)
         foot = self.act(f"cm:{k.tag}:foot@{on}", "project_onto", self.tip(k), line,
-                        sentence=f"Project the tip of V_{K} onto {kx}: V_{K}′ is the component "
+                        sentence=f"Project the tip of V_{K} onto {kx}: {vk} is the component "
                                  f"of V_{K} along {kx}.")
-        self.act(f"cm:{k.tag}:arrow@{on}", "join", self.at(k), foot, label=f"V_{K}′",
-                 sentence=f"Draw V_{K}′ at {K} along {kx}.")
+        self.act(f"cm:{k.tag}:arrow@{on}", "join", self.at(k), foot, label=vk,
+                 sentence=f"Draw {vk} at {K} along {kx}.")
         along = self.act(f"{t}along@{k.tag}", "transfer", self.at(x), self.at(k), foot,
-                         sentence=f"With dividers lay off V_{X}{mark} = V_{K}′ at {X} along "
-                                  f"{kx}.")
-        self.act(f"{t}along-arrow@{k.tag}", "join", self.at(x), along, label=f"V_{X}{mark}",
-                 sentence=f"V_{X}{mark} = V_{K}′: points of a rigid link have equal components "
+                         sentence=f"With dividers lay off {vx} = {vk} at {X} along {kx}.")
+        self.act(f"{t}along-arrow@{k.tag}", "join", self.at(x), along, label=vx,
+                 sentence=f"{vx} = {vk}: points of a rigid link have equal components "
                           "along the line joining them.")
-        return along
+        return along, vx
+
+    def component_name(self, ref: Ref, name: str, line: str) -> str:
+        """``name`` ("V_A′"), or "V_A′(AE)" if another component of the construction already
+        goes by it: one figure may hold V_A's components along AB and along AE."""
+        if ref in self.c:
+            return self.c[ref].label
+        if name.endswith(")") or not any(st.label == name for st in self.c):
+            return name
+        return f"{name}({line})"
 
     def draw_locus(self, x: Node, locus: tuple, mark: str) -> tuple[Ref, str]:
         """Draw one line carrying the tip of V_x; return it and how the text names it."""
@@ -281,10 +293,10 @@ class _Components(Walk):
         if kind == "component":
             (k, c), kx = locus[1:], f"{locus[1].name}{X}"
             line = self.draw_line(k, x, f"Draw line {kx} of link {c}.")
-            along = self.transfer_along(x, k, line, kx, mark)
+            along, vx = self.transfer_along(x, k, line, kx, mark)
             perp = self.act(f"{t}perp@{k.tag}", "perpendicular_through", along, line,
-                            sentence=f"From the tip of V_{X}{mark} draw the perpendicular to {kx}.")
-            return perp, f"the perpendicular to {kx} from the tip of V_{X}{mark}"
+                            sentence=f"From the tip of {vx} draw the perpendicular to {kx}.")
+            return perp, f"the perpendicular to {kx} from the tip of {vx}"
         if kind == "path":
             o, c = locus[1:]
             radius = self.draw_line(o, x, f"Draw the radius {o}{X} of link {c} about its fixed "
@@ -327,11 +339,12 @@ class _Components(Walk):
         on, K = ab.removeprefix("cm:line:"), k.name
         n = self.act(f"cm:{k.tag}:normal@{on}", "perpendicular_through", self.at(k), ab,
                      sentence=f"At {K} draw the perpendicular to {ab_name}.")
+        vk = self.component_name(f"cm:{k.tag}:narrow@{on}", f"V_{K}″", ab_name)
         tip = self.act(f"cm:{k.tag}:ncomp@{on}", "project_onto", self.tip(k), n,
-                       sentence=f"Project the tip of V_{K} onto it: V_{K}″ is the component of "
+                       sentence=f"Project the tip of V_{K} onto it: {vk} is the component of "
                                 f"V_{K} ⟂ {ab_name}.")
-        self.act(f"cm:{k.tag}:narrow@{on}", "join", self.at(k), tip, label=f"V_{K}″",
-                 sentence=f"Draw V_{K}″ at {K}.")
+        self.act(f"cm:{k.tag}:narrow@{on}", "join", self.at(k), tip, label=vk,
+                 sentence=f"Draw {vk} at {K}.")
         return tip
 
     def draw_case3(self, x: Node, c: int, a: Node, b: Node) -> Ref:
@@ -346,23 +359,24 @@ class _Components(Walk):
                          sentence=f"Draw the gauge line through {through}.")
         nx = self.act(f"{t}normal@{x.tag}", "perpendicular_through", self.at(x), ab,
                       sentence=f"At {X} draw the perpendicular to {ab_name}.")
+        nx_name = self.component_name(f"{t}narrow@{x.tag}", f"V_{X}″", ab_name)
         tx = self.act(f"{t}ncomp", "intersect_lines", gauge, nx,
-                      sentence=f"It cuts the gauge line at the tip of V_{X}″, the component of "
-                               f"V_{X} ⟂ {ab_name}.")
-        self.act(f"{t}narrow@{x.tag}", "join", self.at(x), tx, label=f"V_{X}″",
-                 sentence=f"Draw V_{X}″ at {X}.")
+                      sentence=f"It cuts the gauge line at the tip of {nx_name}, the component "
+                               f"of V_{X} ⟂ {ab_name}.")
+        self.act(f"{t}narrow@{x.tag}", "join", self.at(x), tx, label=nx_name,
+                 sentence=f"Draw {nx_name} at {X}.")
         if self.zero(rest):  # V_X′ = 0: X turns about the fixed pivot, as on Hinkle's gauge line
             return self.act(f"{t}tip", "mark", tx, sentence=f"V_{X}′ = V_{rest.name}′ = 0 "
-                            f"({rest.name} is at rest), so V_{X} = V_{X}″.")
-        along = self.transfer_along(x, a, ab, ab_name)
+                            f"({rest.name} is at rest), so V_{X} = {nx_name}.")
+        along, vx = self.transfer_along(x, a, ab, ab_name)
         l1 = self.act(f"{t}pgram′", "perpendicular_through", along, ab,
-                      sentence=f"Through the tip of V_{X}′ draw the parallel to V_{X}″ "
+                      sentence=f"Through the tip of {vx} draw the parallel to {nx_name} "
                                f"(⟂ {ab_name}).")
         l2 = self.act(f"{t}pgram″", "parallel_through", tx, ab,
-                      sentence=f"Through the tip of V_{X}″ draw the parallel to V_{X}′ (along "
+                      sentence=f"Through the tip of {nx_name} draw the parallel to {vx} (along "
                                f"{ab_name}).")
         return self.act(f"{t}tip", "intersect_lines", l1, l2, sentence=f"They meet at the tip "
-                        f"of V_{X} = V_{X}′ + V_{X}″ (the parallelogram).")
+                        f"of V_{X} = {vx} + {nx_name} (the parallelogram).")
 
     def draw_translate(self, x: Node, c: int, k: Node) -> Ref:
         """Hinkle Fig. 5.9: a block on a frame guide translates, so V_x = V_k."""

@@ -6,7 +6,7 @@
     find = ["centres", "omega3", "omega4", "V_D"]     # what the exercise asks for
     methods = ["radius-rotation", "components"]       # how to find each velocity
     at = [{ angle = 90 }, { time = 2.34 }]            # optional: the positions to solve
-    scale = "1 cm = 4 cm"                             # optional: the space scale stated
+    scale = ["1 cm = 4 cm", "1 cm = 50 mm/s"]         # optional: the scales stated
 
 ``find`` names quantities as results.json does: ``centres`` (all of them), a
 single centre ``I24``, an angular velocity ``omega3``, a point's velocity ``V_D``,
@@ -17,7 +17,11 @@ velocity or acceleration ``V_B/A``, ``A_B/A``, and a Coriolis component
 figure: ``radius-rotation``, ``parallel-line``, ``components``, ``polygon``
 (relative velocities). Accelerations are always found by the polygon.
 ``at`` lists positions: an input ``angle`` (the file's angle unit), or a
-``time`` in seconds after the ``[input]`` angle (θ = θ0 + ω t + α t²/2). A file
+``time`` in seconds after the ``[input]`` angle (θ = θ0 + ω t + α t²/2).
+``scale`` is one statement or a list, each "1 cm = N unit" or "3 cm = 18 cm/s" (the
+paper side in cm, mm or in) as the exercise words it: a length unit
+states the space scale, ``unit/s`` the velocity scale, ``unit/s²`` (or ``/s^2``)
+the acceleration scale; a scale not stated is chosen to fit the page. A file
 without ``[ask]`` asks for every centre and the ω of every moving link.
 """
 
@@ -41,7 +45,12 @@ __all__ = ["Exercise", "Position", "load_exercise", "parse_exercise", "VELOCITY_
 
 VELOCITY_METHODS = ("radius-rotation", "parallel-line", "components", "polygon")
 _ASK_KEYS = ("find", "methods", "at", "scale")
-_SCALE = re.compile(r"^\s*1\s*cm\s*=\s*([0-9]*\.?[0-9]+(?:[eE][-+]?[0-9]+)?)\s*(mm|cm|m|in)\s*$")
+_NUMBER = r"([0-9]*\.?[0-9]+(?:[eE][-+]?[0-9]+)?)"
+_SCALE = re.compile(rf"^\s*{_NUMBER}\s*(cm|mm|in)\s*=\s*{_NUMBER}\s*(mm|cm|m|in|ft)"
+                    r"\s*(/\s*s\s*(?:²|\^\s*2|2)?)?\s*$")
+_PAPER_CM = {"cm": 1.0, "mm": 0.1, "in": 2.54}
+_SCALE_UNITS = {**LENGTH_UNITS, "ft": 0.3048}
+_SCALE_KINDS = {"": "space", "/s": "velocity", "/s2": "acceleration"}
 OVERALL = ("dof", "grashof", "time_ratio", "stroke")
 """Names asked of the mechanism as a whole, beside ``range_<XY>`` (see exercises.overall)."""
 _WHY_NOT = {
@@ -77,6 +86,10 @@ class Exercise:
     methods: tuple[str, ...]
     positions: tuple[Position, ...] = ()
     """The positions to solve; empty means the [input] angle alone."""
+    velocity_per_cm: float | None = None
+    """The stated velocity scale, file length units per second per paper cm."""
+    acceleration_per_cm: float | None = None
+    """The stated acceleration scale, file length units per s² per paper cm."""
 
     def at(self, position: Position) -> Exercise:
         """The same exercise at one of its positions (and only that one)."""
@@ -211,10 +224,11 @@ def _read_ask(ask, mech: Mechanism, where: SourceMap, filename: str, exercise_id
             hint = f"did you mean '{close}'?" if close else f"use {', '.join(VELOCITY_METHODS)}"
             raise fail(f"unknown velocity method '{m}'; {hint}", "methods")
     positions = _read_positions(ask.get("at"), mech, fail)
-    if "scale" in ask:
-        mech = replace(mech, scale=_read_scale(ask["scale"], mech, fail))
+    scales = _read_scales(ask.get("scale", []), mech, fail)
+    if "space" in scales:
+        mech = replace(mech, scale=scales["space"])
     return Exercise(exercise_id, mech, tuple(dict.fromkeys(find)), tuple(dict.fromkeys(methods)),
-                    positions)
+                    positions, scales.get("velocity"), scales.get("acceleration"))
 
 
 def _read_positions(at, mech: Mechanism, fail) -> tuple[Position, ...]:
@@ -251,13 +265,28 @@ def _read_positions(at, mech: Mechanism, fail) -> tuple[Position, ...]:
     return tuple(out)
 
 
-def _read_scale(text, mech: Mechanism, fail) -> float:
-    """``scale = "1 cm = 4 cm"``: the space scale the exercise states, in file units per cm."""
-    m = _SCALE.match(text) if isinstance(text, str) else None
-    if m is None or float(m.group(1)) <= 0.0:
-        raise fail(f'scale must read like "1 cm = 4 cm" (a positive length per paper '
-                   f'centimetre, in mm, cm, m or in), got {text!r}', "scale")
-    return float(m.group(1)) * LENGTH_UNITS[m.group(2)] / mech.units.metres
+def _read_scales(given, mech: Mechanism, fail) -> dict[str, float]:
+    """``scale = ["7 cm = 500 mm", "3 cm = 18 cm/s", "1 cm = 2 m/s²"]``: the scales the
+    exercise states, by kind (space, velocity, acceleration), in file length units (per s,
+    per s²) per paper cm. The unit says the kind, so the order is free."""
+    shape = ('scale must read like "1 cm = 4 cm", "3 cm = 18 cm/s" or "1 in = 1 ft/s²" '
+             '(positive amounts; paper in cm, mm or in; lengths in mm, cm, m, in or ft), '
+             'or be a list of these')
+    texts = [given] if isinstance(given, str) else given
+    if not isinstance(texts, list):
+        raise fail(f"{shape}, got {given!r}", "scale")
+    out: dict[str, float] = {}
+    for text in texts:
+        m = _SCALE.match(text) if isinstance(text, str) else None
+        if m is None or float(m.group(1)) <= 0.0 or float(m.group(3)) <= 0.0:
+            raise fail(f"{shape}, got {text!r}", "scale")
+        paper = float(m.group(1)) * _PAPER_CM[m.group(2)]
+        amount, unit, per = float(m.group(3)), m.group(4), m.group(5)
+        kind = _SCALE_KINDS[re.sub(r"[\s^]", "", per or "").replace("²", "2")]
+        if kind in out:
+            raise fail(f"scale states the {kind} scale twice", "scale")
+        out[kind] = amount * _SCALE_UNITS[unit] / mech.units.metres / paper
+    return out
 
 
 def _angle_text(angle: float, deg: bool) -> str:

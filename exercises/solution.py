@@ -24,7 +24,7 @@ from constructions.velocity_by_centres import METHODS as CENTRE_METHODS
 from constructions.velocity_polygon import VelocityPolygon, draw_velocity_polygon
 from constructions.record import Ref
 from constructions.velocity_drawing import VelocityResult
-from graphics.scene import choose_velocity_scale
+from graphics.scene import choose_velocity_scale, velocity_scale_for
 
 from .exercise_file import Exercise, Position
 
@@ -104,7 +104,8 @@ def solve_exercise(ex: Exercise, velocity_scale: float | None = None) -> Solutio
     """Solve ``ex`` at its stated position.
 
     ``velocity_scale`` (drawing metres per m/s) fixes how long velocity vectors
-    are drawn; by default it is the scene's nice scale for the input velocity.
+    are drawn; by default it is the exercise's stated scale, or else the scene's
+    nice scale for the input velocity.
 
     Raises
     ------
@@ -133,7 +134,8 @@ def solve_exercise(ex: Exercise, velocity_scale: float | None = None) -> Solutio
         quantities[f"omega{n}"] = _omega(cs, kin, n)
     scale = velocity_scale
     if scale is None and ex.velocities and drawn:
-        scale = choose_velocity_scale(asm, mech.input_speed)
+        scale = (velocity_scale_for(asm, ex.velocity_per_cm) if ex.velocity_per_cm
+                 else choose_velocity_scale(asm, mech.input_speed))
     results: list[VelocityResult] = []
     for p in ex.velocities if drawn else ():
         found = []
@@ -192,13 +194,13 @@ def _polygon_quantities(ex: Exercise, asm, kin, vp: VelocityPolygon,
     for name in ex.relatives:
         kind, pair = name.split("_", 1)
         p, r = pair.split("/")
-        poly, read, ref_of, scale = ((vp, vp.velocity, analytic.point_velocity, v_scale)
-                                     if kind == "V" else
-                                     (ap, ap.acceleration, analytic.point_acceleration, a_scale))
-        (px, py), (rx, ry) = read(p), read(r)
+        poly, ref_of, scale = ((vp, analytic.point_velocity, v_scale) if kind == "V" else
+                               (ap, analytic.point_acceleration, a_scale))
+        # The answer is the arrow drawn from r's tip to p's, read at the polygon's scale.
+        drawn = poly.between(*c[poly.draw_relative(p, r, m.units)].inputs)
         (ax, ay), (bx, by) = (ref_of(kin, m, *_taken(m, n)) for n in (p, r))
         cond = min(_cond(c, poly.tips[poly.aliases.get(n, n)]) for n in (p, r))
-        quantities[name] = _vector_quantity(name, (px - rx, py - ry), (ax - bx, ay - by), scale,
+        quantities[name] = _vector_quantity(name, drawn, (ax - bx, ay - by), scale,
                                             cond, f"{'velocity' if kind == 'V' else 'acceleration'}"
                                                   " polygon")
     if ap is None:

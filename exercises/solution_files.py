@@ -168,8 +168,9 @@ def _worked_page(sol: Solution) -> SolutionFigure:
             continue
         refs = _polygon_refs(c, poly, _polygon_targets(sol, poly, panel))
         notes = under_polygon if panel is Panel.ACCELERATION else []
+        stated = ex.velocity_per_cm if panel is Panel.VELOCITY else ex.acceleration_per_cm
         figures.append(draw_polygon_panel(c, refs, panel=panel, scale=poly.scale, units=m.units,
-                                          title=heading, notes=notes))
+                                          title=heading, notes=notes, per_cm=stated))
         panels.append((heading, panel, refs))
     table = [("quantity", "method", "construction", "analytic", "relative error")]
     for qname, q in sol.quantities.items():
@@ -261,9 +262,9 @@ def _time_ratio_words(m, lp) -> str:
     a = m.link(m.drive.link).names[1]
     start, end = (f"{a}′", f"{a}″") if lp.slow_from == 0 else (f"{a}″", f"{a}′")
     sense = "ccw" if m.drive.omega >= 0 else "cw"
-    return (f"The crank turns {math.degrees(lp.slow):.4g}° from {start} to {end} ({sense}) in "
-            f"the slow stroke and {math.degrees(lp.quick):.4g}° in the quick one: time ratio "
-            f"{math.degrees(lp.slow):.4g}/{math.degrees(lp.quick):.4g} = {lp.time_ratio:.5g}.")
+    return (f"The crank turns {math.degrees(lp.slow):.2f}° from {start} to {end} ({sense}) in "
+            f"the slow stroke and {math.degrees(lp.quick):.2f}° in the quick one: time ratio "
+            f"{math.degrees(lp.slow):.2f}/{math.degrees(lp.quick):.2f} = {lp.time_ratio:.4f}.")
 
 
 def _overall_markdown(ex: Exercise, overall: Overall, figures: list[SolutionFigure]) -> str:
@@ -350,18 +351,35 @@ def _direction(x: float, y: float) -> float:
 
 
 def _show(v: dict, units, name: str = "") -> str:
-    """A quantity in the file's units, for the results tables; ``name`` tells its kind."""
+    """A quantity in the file's units, for the results tables; ``name`` tells its kind.
+
+    Numbers are set with a true minus, and a coordinate that is rounding noise beside
+    the other (a centre at (−3e−14, −500)) is set as 0.
+    """
     s = units.metres
     if "point" in v:
-        x, y = v["point"]
-        return f"({x / s:.6g}, {y / s:.6g}) {units.length}"
+        x, y = _quiet_pair(v["point"])
+        return f"({_num(x / s)}, {_num(y / s)}) {units.length}"
     if "undefined" in v:
         return "any point (no relative motion)"
     if v.get("at_infinity"):
-        dx, dy = v["direction"]
-        return f"at infinity, direction ({dx:.4f}, {dy:.4f})"
+        dx, dy = _quiet_pair(v["direction"])
+        return f"at infinity, direction ({_num(dx, '.4f')}, {_num(dy, '.4f')})"
     if "vector" in v:
         x, y = v["vector"]
         per = "/s²" if name.startswith("A_") else "/s"
-        return f"{v['value'] / s:.6g} {units.length}{per} at {_direction(x, y):.4g}°"
-    return f"{v['value']:.6g} rad/s" + ("²" if name.startswith("alpha") else "")
+        return f"{_num(v['value'] / s)} {units.length}{per} at {_num(_direction(x, y), '.4g')}°"
+    return f"{_num(v['value'])} rad/s" + ("²" if name.startswith("alpha") else "")
+
+
+def _quiet_pair(xy) -> tuple[float, float]:
+    big = max(abs(xy[0]), abs(xy[1]))
+    return tuple(0.0 if abs(c) <= 1e-9 * big else c for c in xy)
+
+
+def _num(x: float, spec: str = ".6g") -> str:
+    """``x`` as the tables print it: a true minus sign, and never "−0"."""
+    text = format(x, spec)
+    if text.startswith("-") and float(text) == 0.0:
+        text = text[1:]
+    return text.replace("-", "−")

@@ -29,7 +29,7 @@ from constructions.model import Arc, Mechanism, Slide, SlideKind
 
 from .figure import Circle, Figure, Path, Text, View, arc_points, text_width
 from .labels import LabelPlacer
-from .scales import draw_scale_bar, nice_per_cm, scale_text
+from .scales import bar_room, draw_scale_bar, nice_per_cm, scale_text
 from .symbols import (PIN_RADIUS, draw_block, draw_curved_guide, draw_curved_slot,
                       draw_ground_pivot, draw_guide, draw_pin, draw_turning_arrow, mark_angle,
                       unit)
@@ -235,7 +235,7 @@ class _Diagram:
             params += f",  ω{sub} = {w:.6g} {u.angular_velocity} {'ccw' if d.omega > 0 else 'cw'}"
         scale = f"Scale {scale_text(self.per_cm, u.length)}"
         left = max(text_width(self.m.name, 3.6), text_width(params, 3.2))
-        right = max(text_width(scale, 3.2), 40.0 + text_width(f" {u.length}", 2.6) + 6.0)
+        right = max(text_width(scale, 3.2), bar_room(self.per_cm, u.length))
         width = max(x1 - x0 + 2 * _MARGIN, left + right + 2 * _MARGIN + 8.0)
         self.fig.shift((width - (x1 - x0) - 2 * _MARGIN) / 2, 0.0)
         top = y1 - y0 + 2 * _MARGIN
@@ -417,6 +417,9 @@ class _Diagram:
             hull = MultiPoint(pts).convex_hull
             if hull.geom_type == "Polygon" and hull.area > 4.0 and not slotted:
                 ring = tuple(hull.exterior.coords)[:-1]
+                # The tint goes under the construction lines drawn before it; the outline
+                # stays in its place.
+                self.fig.add_under(Path(ring, "plate_fill", closed=True))
                 self.fig.add(Path(ring, "plate", closed=True))
                 self.placer.block(hull.buffer(0.5))
                 continue
@@ -427,14 +430,17 @@ class _Diagram:
             self.placer.block_segment(a, b, 0.6)
 
     def overhang(self, number: int, a, b):
-        """Run a slotted lever from its pivot a little past the last block in its slot."""
-        k = self.m.link(number)
-        pivot = self.paper[k.names[0]]
-        far = b if math.dist(pivot, b) >= math.dist(pivot, a) else a
-        own = any(math.dist(far, self.paper[n]) < 1e-9 for n in k.names)
-        d = unit(_sub(far, pivot))
-        extra = 0.0 if own else 2.0
-        return pivot, (far[0] + extra * d[0], far[1] + extra * d[1])
+        """Run a slotted lever between its farthest points, a little past a block at either
+        end: a block behind the pivot keeps the bar running through the pivot to it."""
+        names = self.m.link(number).names
+
+        def past(end, other):
+            if any(math.dist(end, self.paper[n]) < 1e-9 for n in names):
+                return end
+            d = unit(_sub(end, other))
+            return (end[0] + 2.0 * d[0], end[1] + 2.0 * d[1])
+
+        return past(a, b), past(b, a)
 
     def draw_blocks(self) -> None:
         for i, s in enumerate(self.m.slides):

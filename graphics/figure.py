@@ -32,7 +32,8 @@ class Style:
 
 STYLES: dict[str, Style] = {
     "link": Style(width=0.6),
-    "plate": Style(width=0.6, fill="#e8e8e8"),
+    "plate": Style(width=0.6),
+    "plate_fill": Style(stroke=None, fill="#e8e8e8"),
     "pin": Style(width=0.35, fill="#fff"),
     "ground": Style(width=0.35, fill="#fff"),
     "ground_base": Style(width=0.4, cap="butt"),
@@ -192,6 +193,10 @@ class Figure:
     def add(self, item: Path | Circle | Text) -> None:
         """Append a primitive."""
         self.items.append(item)
+
+    def add_under(self, item: Path | Circle | Text) -> None:
+        """Put a primitive beneath everything drawn so far: a tint that must hide no line."""
+        self.items.insert(0, item)
 
     def line(self, p: tuple[float, float], q: tuple[float, float], style: str) -> None:
         """Add a straight segment."""

@@ -64,7 +64,7 @@ _CROSSABLE = 0.02   # what covering a thin working line costs a label, against 1
 # ----- the public function ----------------------------------------------------------------
 def draw_polygon_panel(construction: Construction, refs: Iterable[Ref], *, panel: Panel,
                        scale: float, units: Units, title: str,
-                       notes: Sequence[str] = ()) -> Figure:
+                       notes: Sequence[str] = (), per_cm: float | None = None) -> Figure:
     """Draw the steps ``refs`` of a velocity or acceleration polygon as a figure.
 
     Parameters
@@ -86,6 +86,10 @@ def draw_polygon_panel(construction: Construction, refs: Iterable[Ref], *, panel
         The caption's heading.
     notes
         Short lines printed under the caption.
+    per_cm
+        The scale to draw at, file length units per second (per s²) per paper
+        cm, when the exercise states one; by default the nice scale that fits
+        :data:`POLYGON_BOX`.
 
     Returns
     -------
@@ -129,13 +133,15 @@ def draw_polygon_panel(construction: Construction, refs: Iterable[Ref], *, panel
                           f"{' or '.join(str(p) for p in QUANTITIES)}")
     if not (isinstance(scale, (int, float)) and math.isfinite(scale) and scale > 0.0):
         raise TarsimError(f"a polygon's scale must be a positive number, got {scale}")
+    if per_cm is not None and not (math.isfinite(per_cm) and per_cm > 0.0):
+        raise TarsimError(f"a stated polygon scale must be a positive number, got {per_cm}")
     steps = panel_steps(construction, refs, panel)
     if not any(_finite_points(s) for s in steps):
         raise TarsimError(f"nothing to draw: no point or vector of the {panel} polygon is "
                           "among the steps asked for")
     numbers = {s.id: n for n, s in numbered_steps(construction, [s.id for s in steps],
                                                   panel=panel)}
-    return _PolygonPanel(steps, numbers, panel, float(scale), units).draw(title, notes)
+    return _PolygonPanel(steps, numbers, panel, float(scale), units, per_cm).draw(title, notes)
 
 
 # ----- what the steps put on paper ----------------------------------------------------------
@@ -209,7 +215,7 @@ class _PolygonPanel:
     """Working lines first, then the arrows and the pole over them, then every label."""
 
     def __init__(self, steps: list[Step], numbers: dict[Ref, int], panel: Panel, scale: float,
-                 units: Units):
+                 units: Units, per_cm: float | None = None):
         self.steps = steps
         self.numbers = numbers
         self.panel = panel
@@ -220,7 +226,7 @@ class _PolygonPanel:
         # The yardstick of "lies on" and "coincides": the panel's reach from the origin.
         self.size = max(1.0, max(xs) - min(xs), max(ys) - min(ys),
                         max(math.hypot(*p) for p in self.world))
-        self.per_cm = _per_cm(self.world, scale, units)
+        self.per_cm = per_cm or _per_cm(self.world, scale, units)
         # Paper mm per drawing metre: 10 mm stands for per_cm file units per second.
         self.view = View(10.0 / (self.per_cm * units.metres * scale), (0.0, 0.0))
         self.fig = Figure(0.0, 0.0)

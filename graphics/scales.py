@@ -12,7 +12,8 @@ from collections.abc import Sequence
 
 from .figure import Figure, Path, Text, text_width
 
-__all__ = ["nice_per_cm", "scale_text", "draw_scale_bar", "number_text", "draw_caption"]
+__all__ = ["nice_per_cm", "scale_text", "paper_ratio", "bar_room", "draw_scale_bar", "number_text",
+           "draw_caption"]
 
 
 def nice_per_cm(extent: float, room_mm: float) -> float:
@@ -50,25 +51,54 @@ def number_text(value: float) -> str:
     return f"{value:.6g}"
 
 
+def paper_ratio(per_cm: float) -> tuple[int, float]:
+    """Return (k, N) with k centimetres standing for N, the fewest centimetres that make N a
+    number of four figures or fewer: a stated "7 cm = 500 mm" reads back as itself, not as
+    "1 cm = 71.4286 mm". A ratio no k up to 10 makes round is given per one centimetre.
+
+    Examples
+    --------
+    >>> paper_ratio(500 / 7)
+    (7, 500.0)
+    >>> paper_ratio(60.0)
+    (1, 60.0)
+    """
+    for k in range(1, 11):
+        amount = per_cm * k
+        if abs(amount - float(f"{amount:.4g}")) <= 1e-9 * amount:
+            return k, float(f"{amount:.4g}")
+    return 1, per_cm
+
+
 def scale_text(per_cm: float, unit: str) -> str:
-    """Return the statement printed on the figure, e.g. "1 cm = 50 mm"."""
-    return f"1 cm = {number_text(per_cm)} {unit}"
+    """Return the statement printed on the figure, e.g. "1 cm = 50 mm" or "7 cm = 500 mm"."""
+    k, amount = paper_ratio(per_cm)
+    return f"{k} cm = {number_text(amount)} {unit}"
+
+
+def bar_room(per_cm: float, unit: str) -> float:
+    """The width (paper mm) :func:`draw_scale_bar` takes with its unit after the last number."""
+    k, _ = paper_ratio(per_cm)
+    return 10.0 * (k if k > 1 else 4) + text_width(f" {unit}", 2.6) + 6.0
 
 
 def draw_scale_bar(fig: Figure, at: tuple[float, float], per_cm: float, unit: str,
                    cm: int = 4) -> float:
     """Draw a ``cm``-centimetre bar with alternate filled centimetres; return its width.
 
-    ``at`` is the bar's left end on its centre line.
+    ``at`` is the bar's left end on its centre line. A scale stated over k > 1
+    centimetres (:func:`paper_ratio`) gets a bar k long, numbered at its two ends.
     """
     x0, y0 = at
     h = 1.4
+    k, _ = paper_ratio(per_cm)
+    cm, ticks = (k, (0, k)) if k > 1 else (cm, range(0, cm + 1, 2 if cm > 3 else 1))
     for i in range(cm):
         style = "scale_fill" if i % 2 == 0 else "scale"
         xa, xb = x0 + 10.0 * i, x0 + 10.0 * (i + 1)
         fig.add(Path(((xa, y0 - h / 2), (xb, y0 - h / 2), (xb, y0 + h / 2), (xa, y0 + h / 2)),
                      style, closed=True))
-    for i in range(0, cm + 1, 2 if cm > 3 else 1):
+    for i in ticks:
         label = number_text(per_cm * i) + (f" {unit}" if i == cm else "")
         fig.add(Text((x0 + 10.0 * i, y0 + h / 2 + 2.4), label, size=2.6,
                      anchor="middle" if i < cm else "start", italic=False))
@@ -98,7 +128,7 @@ def draw_caption(fig: Figure, heading: str, lines: Sequence[str], *, per_cm: flo
     head = _heading(heading)
     scale = f"{scale_name} {scale_text(per_cm, unit)}"
     left = max([head.width] + [text_width(t, 3.2) for t in lines])
-    right = max(text_width(scale, 3.2), 40.0 + text_width(f" {unit}", 2.6) + 6.0)
+    right = max(text_width(scale, 3.2), bar_room(per_cm, unit))
     legend_w = sum(18.0 + text_width(name, 2.8) for _, name in legend)
     notes_w = max([text_width(n, 3.0) for n in notes], default=0.0)
     width = max(x1 - x0, left + right + 8.0, legend_w, notes_w) + 2 * margin

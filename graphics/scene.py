@@ -37,16 +37,18 @@ from constructions import geometry as g
 from constructions.assembly import Assembly
 from constructions.centres import Centres
 from constructions.errors import TarsimError
+from constructions.measures import Angle, Dimension
 from constructions.model import SlideKind
 from constructions.record import Construction, Panel, Ref, Role, Step
 
 from .diagram import _Diagram, subscript
 from .figure import Circle, Figure, Path, arc_points, clip_line, ray_to_edge, span_line
 from .labels import typeset
-from .scales import draw_caption, number_text
-from .symbols import PIN_RADIUS, draw_arrow, draw_arrowhead, unit
+from .scales import draw_caption, scale_text
+from .symbols import PIN_RADIUS, draw_arrow, draw_arrowhead, draw_dimension, draw_turning_arrow, unit
 
-__all__ = ["draw_scene", "numbered_steps", "panel_steps", "choose_velocity_scale", "centre_steps",
+__all__ = ["draw_scene", "numbered_steps", "panel_steps", "choose_velocity_scale",
+           "velocity_scale_for", "centre_steps",
            "line_kind", "FRAME_CAP", "FRAME_MIN", "LINE_KINDS"]
 
 FRAME_CAP = 1.6
@@ -133,7 +135,6 @@ def choose_velocity_scale(asm: Assembly, speed: float) -> float:
     """
     if not (math.isfinite(speed) and speed > 0.0):
         raise TarsimError(f"a velocity scale needs a positive speed, got {speed}")
-    per_m = _space_view_scale(asm)            # paper mm per drawing metre
     unit_m = asm.mechanism.units.metres
     v = speed / unit_m                         # file units per second
     k = math.floor(math.log10(v / 3.0))
@@ -147,8 +148,14 @@ def choose_velocity_scale(asm: Assembly, speed: float) -> float:
             key = (miss, abs(math.log(mm / 27.0)))
             if best is None or key < best[0]:
                 best = (key, n)
-    paper_per_mps = 10.0 / (best[1] * unit_m)   # paper mm per m/s
-    return paper_per_mps / per_m
+    return velocity_scale_for(asm, best[1])
+
+
+def velocity_scale_for(asm: Assembly, per_cm: float) -> float:
+    """Return the velocity scale (drawing metres per m/s) that draws "1 cm = ``per_cm``
+    unit/s" on a scene of ``asm`` (unit: the file's length unit), as an exercise states it."""
+    paper_per_mps = 10.0 / (per_cm * asm.mechanism.units.metres)   # paper mm per m/s
+    return paper_per_mps / _space_view_scale(asm)
 
 
 def centre_steps(centres: Centres) -> list[Ref]:
@@ -242,7 +249,7 @@ def _draws(step: Step) -> bool:
     out = step.output
     if isinstance(out, g.Line):
         return not out.is_at_infinity
-    if isinstance(out, (g.Circle, g.Segment)):
+    if isinstance(out, (g.Circle, g.Segment, Dimension, Angle)):
         return True
     return isinstance(out, g.Point) and not _is_mechanism_point(step)
 
@@ -463,6 +470,7 @@ class _Scene(_Diagram):
                 self.placer.block_path(list(it.points) + ([it.points[0]] if it.closed else []),
                                        0.4)
         self.draw_arc_heads()
+        self.draw_measures()
         self.draw_vectors()
         self.draw_infinities()
         self.draw_points()
@@ -480,6 +488,41 @@ class _Scene(_Diagram):
             if swung and self.clip_box.contains(SPoint(pts[-1])):
                 d = unit((pts[-1][0] - pts[-2][0], pts[-1][1] - pts[-2][1]))
                 draw_arrowhead(self.fig, pts[-1], d, length=2.2, width=1.2)
+
+    def draw_measures(self) -> None:
+        """Readings: a dimension line with its length, an angle's arc with its degrees.
+
+        A dimension stands off its points on the side away from the mechanism. An
+        angle's arc runs just outside the points it was read at (the crank's limit
+        places: the arcs lie along the crank circle, as the notes mark them); its
+        head shows the sense it was read in.
+        """
+        for step in self.steps:
+            out = step.output
+            if isinstance(out, Dimension):
+                a, b = self.view(out.start.xy), self.view(out.end.xy)
+                u = unit((b[0] - a[0], b[1] - a[1]))
+                n = (-u[1], u[0])
+                mid = ((a[0] + b[0]) / 2 - self.centre[0], (a[1] + b[1]) / 2 - self.centre[1])
+                if n[0] * mid[0] + n[1] * mid[1] < 0 or (abs(n[0] * mid[0] + n[1] * mid[1])
+                                                         < 1e-9 and n[1] > 0):
+                    n = (-n[0], -n[1])
+                at = draw_dimension(self.fig, a, b, n)
+                ends = [(a[0] + 8 * n[0], a[1] + 8 * n[1]), (b[0] + 8 * n[0], b[1] + 8 * n[1])]
+                self.placer.block_path(ends, 1.4)
+                text = f"{step.label} {_length(out.length, self.m.units)}".strip()
+                # The reading stands beyond the line, outside the frame of the points.
+                page, self.placer.page = self.placer.page, None
+                self.label(text, at, [step], prefer=math.atan2(-n[1], n[0]), gap=1.0, size=3.4)
+                self.placer.page = page
+            elif isinstance(out, Angle):
+                centre = self.view(out.vertex.xy)
+                radius = out.reach * self.view.scale + 4.0
+                at = draw_turning_arrow(self.fig, centre, radius, out.start, out.sweep)
+                self.placer.block_path(arc_points(centre, radius, out.start, out.sweep), 0.6)
+                text = f"{out.degrees:.2f}° {step.label}".strip()
+                self.label(text, at, [step], prefer=out.start + out.sweep / 2, gap=1.2,
+                           size=3.2)
 
     def draw_vectors(self) -> None:
         for step in self.steps:
@@ -621,7 +664,7 @@ class _Scene(_Diagram):
         if self.velocity_scale:
             # A vector is velocity_scale × view scale paper mm per m/s: state 1 cm in unit/s.
             per_cm = 10.0 / (self.velocity_scale * self.view.scale) / u.metres
-            lines.append(f"Velocity scale 1 cm = {number_text(per_cm)} {u.length}/s")
+            lines.append(f"Velocity scale {scale_text(per_cm, u.length + '/s')}")
         legend = [LINE_KINDS[k] for k in LINE_KINDS if k in self.kinds]
         if legend == [LINE_KINDS["working"]]:
             legend = []           # plain construction lines need no key
@@ -635,7 +678,7 @@ def _finite_points(s: Step) -> list[tuple[float, float]]:
     out = s.output
     if isinstance(out, g.Point) and not out.is_at_infinity and not _is_mechanism_point(s):
         return [out.xy]
-    if isinstance(out, g.Segment):
+    if isinstance(out, (g.Segment, Dimension)):
         return [out.start.xy, out.end.xy]
     return []
 

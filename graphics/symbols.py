@@ -15,6 +15,7 @@ from .figure import Circle, Figure, Path, Text, arc_points
 __all__ = [
     "PIN_RADIUS",
     "draw_pin",
+    "draw_dimension",
     "draw_ground_pivot",
     "draw_hatched_band",
     "draw_guide",
@@ -200,6 +201,23 @@ def mark_angle(fig: Figure, centre: tuple[float, float], radius: float, start: f
     fig.arc(centre, radius, start, end, "dimension")
     mid = (start + end) / 2
     return (centre[0] + radius * math.cos(mid), centre[1] - radius * math.sin(mid))
+
+
+def draw_dimension(fig: Figure, a: tuple[float, float], b: tuple[float, float],
+                   side: tuple[float, float], offset: float = 7.0) -> tuple[float, float]:
+    """A dimension line for the distance ``ab``: extension lines out to the ``side`` (a unit
+    paper vector across ``ab``), the line ``offset`` mm out with a head at each end.
+
+    Returns the line's midpoint, where its reading goes.
+    """
+    nx, ny = side
+    p, q = ((x + offset * nx, y + offset * ny) for x, y in (a, b))
+    for (x, y), (ex, ey) in ((a, p), (b, q)):
+        fig.line((x + 1.2 * nx, y + 1.2 * ny), (ex + 1.6 * nx, ey + 1.6 * ny), "dimension")
+    mid = ((p[0] + q[0]) / 2, (p[1] + q[1]) / 2)
+    draw_arrow(fig, mid, q, "dimension", head=2.4, width=1.2)
+    draw_arrow(fig, mid, p, "dimension", head=2.4, width=1.2)
+    return mid
 
 
 def draw_arrow(fig: Figure, tail: tuple[float, float], tip: tuple[float, float],

@@ -8,6 +8,7 @@ CCW-positive from +x.
 from __future__ import annotations
 
 from constructions.model import Drive, Link, Mechanism, Slide, SlideKind, Units
+from graphics.figure import Circle, Text
 
 __all__ = ["four_bar", "offset_slider_crank", "crank_shaper", "slotted_lever_p37", "scotch_yoke"]
 
@@ -168,3 +169,9 @@ def inverted_slider_crank(theta2: float, *, ground=0.3, crank=0.12, lever=0.5, o
         Drive(2, theta2, omega2, alpha2),
         (Slide(SlideKind.BLOCK, 3, "A", 4, (0.0, offset), (1.0, 0.0)),),
         units=Units("mm"), name="inverted slider-crank")
+
+
+def badge_numbers(fig) -> list[int]:
+    """The circled step numbers on a figure, in ascending order."""
+    centres = [it.centre for it in fig.items if isinstance(it, Circle) and it.style == "badge"]
+    return sorted(int(t.text) for t in fig.items if isinstance(t, Text) and t.at in centres)

@@ -220,9 +220,9 @@ def test_svg_to_without_cairo_raises_render_error(no_cairo):
 def test_draw_without_cairo_is_one_line_and_svg_still_works(tmp_path, no_cairo, fmt):
     out = tmp_path / f"fig.{fmt}"
     err = assert_one_line_error(run("draw", "four-bar", "-o", out))
-    assert err == (f"Error: PDF and PNG output need the cairo library (libcairo2), which is not "
-                   f"installed: install it (Debian/Ubuntu: apt-get install libcairo2) or write "
-                   f".svg instead\n")
+    assert err == ("Error: PDF and PNG output need the cairo library (libcairo2), which is not "
+                   "installed: install it (Debian/Ubuntu: apt-get install libcairo2) or write "
+                   ".svg instead\n")
     assert listing(tmp_path) == []
     svg = tmp_path / "fig.svg"
     assert run("draw", "four-bar", "-o", svg).exit_code == 0

@@ -423,3 +423,33 @@ def test_the_ground_a_wheel_rolls_on_is_hatched_on_the_far_side():
 
 def _centroid(pts):
     return (sum(p[0] for p in pts) / len(pts), sum(p[1] for p in pts) / len(pts))
+
+
+def test_a_lever_with_its_block_behind_the_pivot_runs_through_the_pivot_to_the_block():
+    """The block A rides the slot on the far side of O4 from B: the bar is B → O4 → A, not
+    O4 → B with the block left floating."""
+    from dataclasses import replace
+
+    from tests.common import inverted_slider_crank
+    m = replace(inverted_slider_crank(math.radians(60)), branches={"A": "backward"})
+    asm = assemble(m)
+    fig = draw_kinematic_diagram(asm)
+    (per_cm,) = [float(t.text.split("=")[1].split()[0]) for t in fig.items
+                 if getattr(t, "text", "").startswith("Scale 1 cm =")]
+    bars = [math.dist(*it.points) for it in fig.items if isinstance(it, Path)
+            and it.style == "link"]
+    span_ab = math.dist(asm.xy("A"), asm.xy("B")) * 1000.0 * 10.0 / per_cm   # paper mm
+    assert max(bars) >= span_ab - 1e-9 and max(bars) <= span_ab + 2.0 + 1e-9
+
+
+def test_a_plates_tint_lies_under_every_construction_line():
+    """A Kennedy line across the coupler plate shows through it: the tint is drawn first."""
+    from constructions.centres import locate_centres
+    from graphics.scene import draw_scene
+    asm = assemble(load_mechanism(bundled()["hinkle-four-bar"]))
+    locate_centres(asm)
+    refs = [r for r in asm.construction.steps if r.startswith(("I:", "K:"))]
+    styles = [getattr(it, "style", "") for it in draw_scene(asm, refs).items]
+    assert "plate_fill" in styles and "plate" in styles
+    lines = [i for i, s in enumerate(styles) if s in ("kennedy", "construction", "working")]
+    assert lines and max(i for i, s in enumerate(styles) if s == "plate_fill") < min(lines)

@@ -1,4 +1,5 @@
-"""An exercise's stated space scale ("1 cm = 4 cm") is the scale its figures are drawn at."""
+"""An exercise's stated scales ("1 cm = 4 cm", "3 cm = 18 cm/s", "1 cm = 2 m/s²") are the
+scales its figures are drawn at: the statement printed on each, and what a ruler measures."""
 
 from __future__ import annotations
 
@@ -7,10 +8,17 @@ import re
 
 import pytest
 
+from constructions import analytic
 from constructions.assembly import assemble
 from constructions.errors import InputError
-from exercises.exercise_file import parse_exercise
+from constructions.record import Panel
+from exercises.catalog import bundled
+from exercises.exercise_file import load_exercise, parse_exercise
+from exercises.solution import solve_exercise
+from exercises.solution_files import solve_all
 from graphics.diagram import draw_kinematic_diagram
+from graphics.polygon_panel import draw_polygon_panel
+from graphics.scene import draw_scene
 from tests.common import four_bar_toml
 
 
@@ -32,8 +40,79 @@ def test_the_stated_scale_is_drawn_true(stated, per_cm_mm):
     assert any(abs(d - 10 * 100 / per_cm_mm) < 1e-6 for d in lengths)
 
 
-@pytest.mark.parametrize("bad", ["4 cm", "1 cm = -4 cm", "1 cm = 4 furlongs", "2 cm = 4 cm"])
+@pytest.mark.parametrize("bad", ["4 cm", "1 cm = -4 cm", "1 cm = 4 furlongs", "0 cm = 4 cm"])
 def test_a_malformed_scale_is_named_at_its_line(bad):
     with pytest.raises(InputError, match=r"ex.toml:\d+: \[ask.scale\] scale must read like "
                                          r"\"1 cm = 4 cm\""):
         parse_exercise(_with_scale(bad), "ex.toml")
+
+
+# ----- velocity and acceleration scales ---------------------------------------------------
+def _with_scales(*stated: str, find='["V_B"]', methods='["radius-rotation"]') -> str:
+    listed = ", ".join(f'"{s}"' for s in stated)
+    moving = four_bar_toml().replace("[input]\n", "[input]\nomega = 10\n")
+    return moving + f'\n[ask]\nfind = {find}\nmethods = {methods}\nscale = [{listed}]\n'
+
+
+@pytest.mark.parametrize("stated, kind, per_cm", [
+    ("1 cm = 50 mm/s", "velocity", 50.0), ("3 cm = 18 cm/s", "velocity", 60.0),
+    ("1 in = 1 ft/s", "velocity", 304.8 / 2.54), ("1 cm = 2 m/s²", "acceleration", 2000.0),
+    ("2 cm = 1 m/s^2", "acceleration", 500.0), ("10 mm = 5 mm/s2", "acceleration", 5.0)])
+def test_the_unit_says_which_scale_is_stated(stated, kind, per_cm):
+    ex = parse_exercise(_with_scales(stated))
+    got = {"velocity": ex.velocity_per_cm, "acceleration": ex.acceleration_per_cm}
+    assert got[kind] == pytest.approx(per_cm, rel=1e-12)          # mm (per s, per s²) per cm
+    assert ex.mechanism.scale is None and sum(v is not None for v in got.values()) == 1
+
+
+def test_a_scale_stated_over_several_centimetres_reads_back_as_stated():
+    ex = parse_exercise(_with_scale("7 cm = 500 mm"))
+    fig = draw_kinematic_diagram(assemble(ex.mechanism))
+    texts = [t.text for t in fig.items if hasattr(t, "text")]
+    assert "Scale 7 cm = 500 mm" in texts and "500 mm" in texts
+    # The bar is the seven stated centimetres, alternately filled.
+    cells = [it for it in fig.items if getattr(it, "style", "") in ("scale", "scale_fill")]
+    xs = [x for it in cells for x, _ in it.points]
+    assert len(cells) == 7 and max(xs) - min(xs) == pytest.approx(70.0)
+
+
+@pytest.mark.parametrize("bad, says", [
+    ('"1 cm = 50 mm/s", "2 cm = 1 cm/s"', "scale states the velocity scale twice"),
+    ("4", "scale must read like"), ('"1 cm = 50 mm/h"', "scale must read like")])
+def test_a_bad_scale_list_is_named_at_its_line(bad, says):
+    text = four_bar_toml() + f'\n[ask]\nfind = ["omega4"]\nscale = [{bad}]\n'
+    with pytest.raises(InputError, match=rf"ex.toml:\d+: \[ask.scale\] {says}"):
+        parse_exercise(text.replace("scale = [4]", "scale = 4"), "ex.toml")
+
+
+def test_a_stated_velocity_scale_sets_the_vectors_drawn_by_centres():
+    # With the space scale also stated, the drawing's paper mm per world metre is
+    # 10 / (S u) and a vector's is 10 / (V u) per m/s: the vector scale is S / V seconds.
+    ex = parse_exercise(_with_scales("1 cm = 40 mm", "1 cm = 20 mm/s"))
+    sol = solve_exercise(ex)
+    assert sol.velocity_scale == pytest.approx(40.0 / 20.0, rel=1e-12)
+    fig = draw_scene(sol.assembly, [r.vector for r in sol.velocities], velocity_scale=sol.velocity_scale)
+    assert "Velocity scale 1 cm = 20 mm/s" in [t.text for t in fig.items if hasattr(t, "text")]
+
+
+def test_a_stated_velocity_scale_draws_the_polygon_true_to_it():
+    ex = parse_exercise(_with_scales("1 cm = 20 mm/s", methods='["polygon"]'))
+    sol = solve_exercise(ex)
+    vp = sol.velocity_polygon
+    fig = draw_polygon_panel(vp.construction, ["vp:o_v", "vp:tip:B", "vp:V:B"],
+                             panel=Panel.VELOCITY, scale=vp.scale, units=ex.mechanism.units,
+                             title="V_B", per_cm=ex.velocity_per_cm)
+    assert "Velocity scale 1 cm = 20 mm/s" in [t.text for t in fig.items if hasattr(t, "text")]
+    shaft = next(p for p in fig.items if getattr(p, "style", "") == "vector_result")
+    head = next(p for p in fig.items if getattr(p, "style", "") == "arrowhead")
+    speed = math.hypot(*analytic.point_velocity(sol.kinematics, ex.mechanism, 3, "B")) * 1000
+    assert math.dist(shaft.points[0], head.points[0]) == pytest.approx(10.0 * speed / 20.0,
+                                                                        rel=1e-9)
+
+
+def test_the_crank_shaper_is_drawn_at_the_projects_scales():
+    # 003 steps 3 and 7: 3 cm of polygon for V_A = 18 cm/s, 7 cm of drawing for 500 mm.
+    _, _, files = solve_all(load_exercise(bundled()["crank-shaper"]))
+    for stem in ("worked-theta2-90", "V_B-radius-rotation-theta2-90"):
+        svg = files[f"{stem}.svg"]
+        assert "Scale 7 cm = 500 mm" in svg and "Velocity scale 1 cm = 60 mm/s" in svg

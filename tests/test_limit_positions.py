@@ -25,8 +25,7 @@ from exercises.exercise_file import load_exercise, parse_exercise
 from exercises.overall import solve_overall
 from exercises.solution_files import solve_all
 from graphics.scene import draw_scene, numbered_steps
-from tests.common import four_bar_toml
-from tests.test_polygon_panel import badge_numbers
+from tests.common import badge_numbers, four_bar_toml
 
 SLIDER_CRANK = """
 name = "slider-crank"
@@ -272,3 +271,33 @@ def test_solution_pdf_has_a_page_per_figure(tmp_path):
     # A page keeps its figure's size: true scale on paper (1 mm = 72/25.4 pt).
     width_mm = float(re.search(r'width="([\d.]+)mm"', files["limits.svg"]).group(1))
     assert float(pages[0].mediabox.width) == pytest.approx(width_mm * 72 / 25.4, rel=1e-3)
+
+
+@pytest.mark.parametrize("exercise_id, slow, stroke_text", [
+    ("crank-shaper", "222.20° slow", "stroke 679.1 mm"),
+    ("offset-slider-crank", "198.46° slow", "stroke 63.34 cm"),
+    ("slotted-lever-p37", "224.05° slow", "stroke 19.5 cm")])
+def test_the_limit_figure_reads_its_angles_and_its_stroke_as_a_drafter_marks_them(
+        exercise_id, slow, stroke_text):
+    """The crank's two angles as arcs at O2 with their degrees, the stroke as a dimension line
+    whose two heads stand exactly the stroke apart at the figure's scale."""
+    ex = load_exercise(resolve(exercise_id))
+    lp = draw_limit_positions(ex.mechanism)
+    c = lp.assembly.construction
+    angles = [c.output(f"limit:{k}") for k in ("slow", "quick")]
+    assert [math.radians(a.degrees) for a in angles] == pytest.approx([lp.slow, lp.quick],
+                                                                      abs=1e-12)
+    assert sum(a.degrees for a in angles) == pytest.approx(360.0, abs=1e-9)
+    # Each arc turns with ω from the limit the stroke starts at.
+    assert all(math.copysign(1.0, a.sweep) == math.copysign(1.0, ex.mechanism.drive.omega)
+               for a in angles)
+    fig = draw_scene(lp.assembly, lp.steps)
+    texts = [t.text for t in fig.items if hasattr(t, "text")]
+    assert slow in texts and stroke_text in texts
+    per_cm = float(re.search(r"Scale (\d+) cm = ([\d.]+)", " ".join(texts)).group(2)) / \
+        float(re.search(r"Scale (\d+) cm", " ".join(texts)).group(1))
+    paper = 10.0 * lp.stroke / (per_cm * ex.mechanism.units.metres)
+    dims = [p for p in fig.items if getattr(p, "style", "") == "dimension"]
+    heads = [p.points[0] for p in fig.items if getattr(p, "style", "") == "arrowhead"]
+    assert any(math.dist(h, k) == pytest.approx(paper, abs=1e-6) for h in heads for k in heads)
+    assert len(dims) >= 4                          # two extension lines, two half-shafts

@@ -30,7 +30,7 @@ from graphics.labels import typeset
 from graphics.polygon_panel import POLYGON_BOX, draw_polygon_panel
 from graphics.scene import numbered_steps
 from graphics.svg import to_svg
-from tests.common import coupler_four_bar, crank_shaper
+from tests.common import badge_numbers, coupler_four_bar, crank_shaper
 
 SHAPER_T = math.pi / 2 - 2.34       # seed 003 §2: t = 2.34 s, θ2 = 90° − t, ω2 = −1 rad/s
 SHAPER_STILL = -math.asin(0.18 / 0.5)   # seed 003 §5: the ram's extreme, ω4 = 0
@@ -361,11 +361,6 @@ def test_each_line_spans_its_points_and_runs_a_little_past_them():
                 and min(math.dist(e, d) for e in p) < 5.0)
     assert sorted(min(math.dist(e, q) for e in line) for q in (a, d)) == pytest.approx([4.0, 4.0])
     assert math.dist(*line) == pytest.approx(math.dist(a, d) + 8.0)
-
-
-def badge_numbers(fig):
-    centres = [it.centre for it in fig.items if isinstance(it, Circle) and it.style == "badge"]
-    return sorted(int(t.text) for t in texts(fig) if t.at in centres)
 
 
 @pytest.mark.parametrize("which", ["velocity", "acceleration"])

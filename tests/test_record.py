@@ -10,6 +10,7 @@ from hypothesis import strategies as st
 from constructions import record
 from constructions.errors import GeometryError, NoIntersection, TarsimError
 from constructions.geometry import Circle, Line, Point, Segment, intersect_circles, line_through
+from constructions.measures import Angle, Dimension
 from constructions.record import VERBS, Construction, Panel, Role, Step, replay, toposort
 
 
@@ -87,8 +88,11 @@ SIGNATURES = {
     "normal_direction": (("line",), {}),
     "join": (("point", "point"), {}),
     "transfer": (("point", "point", "point"), {}),
+    "measure": (("point", "point"), {}),
+    "measure_angle": (("point", "point", "point"), {"turn": st.sampled_from([-1.0, 1.0])}),
 }
-KINDS = {Point: "point", Line: "line", Circle: "circle", Segment: "segment"}
+KINDS = {Point: "point", Line: "line", Circle: "circle", Segment: "segment",
+         Dimension: "dimension", Angle: "angle"}
 # Small integers make coincidences, parallels and tangencies likely; floats make the rest.
 COORDS = st.one_of(st.integers(-6, 6).map(float), st.floats(-20, 20))
 

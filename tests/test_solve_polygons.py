@@ -193,3 +193,22 @@ def test_dead_point_is_one_line_and_writes_nothing(tmp_path):
     assert "Traceback" not in r.output and len(r.output.strip().splitlines()) == 1
     assert "dead point" in r.output and "86.4167" in r.output
     assert not (tmp_path / "out").exists()
+
+
+@pytest.mark.parametrize("asked, prefix", [("V_B/A", "vp"), ("A_B/A", "ap")])
+def test_an_asked_relative_vector_is_drawn_from_one_tip_to_the_other_and_named(asked, prefix):
+    """V_B/A is the arrow a → b of the polygon; the answer is that arrow, read at its scale,
+    and it is narrated ("Join a to b: V_B/A = …")."""
+    (sol,) = solve_positions(four_bar_exercise(f'["{asked}"]'))
+    poly = sol.velocity_polygon if prefix == "vp" else sol.acceleration_polygon
+    c = sol.assembly.construction
+    step = c[f"{prefix}:rel:B/A"]
+    assert step.label == asked and step.inputs == (poly.tips["A"], poly.tips["B"])
+    assert f"{prefix}:rel:B/A" in poly.steps
+    assert step.sentence.startswith(f"Join {c[poly.tips['A']].label} to {c[poly.tips['B']].label}")
+    drawn = poly.between(*step.inputs)
+    assert sol.quantities[asked].value["vector"] == pytest.approx(list(drawn), abs=1e-15)
+    kin, m = sol.kinematics, sol.exercise.mechanism
+    read = analytic.point_velocity if prefix == "vp" else analytic.point_acceleration
+    ref = [b - a for a, b in zip(read(kin, m, 3, "A"), read(kin, m, 3, "B"))]
+    assert drawn == pytest.approx(ref, rel=1e-12, abs=1e-12)

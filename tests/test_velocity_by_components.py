@@ -408,3 +408,18 @@ def test_four_bar_points_match_analytic_anywhere(theta, omega, sign, branch):
 @given(theta=st.floats(-math.pi, math.pi), omega=st.floats(0.1, 50.0))
 def test_slider_crank_piston_matches_analytic_anywhere(theta, omega):
     check(assemble(offset_slider_crank(theta, omega2=omega)), "C", scale=0.2)
+
+
+def test_each_vector_of_a_figure_has_a_name_of_its_own():
+    """V_E of the coupler plate takes V_A's component along AB (for V_B) and along AE: the
+    second is V_A′(AE), and V_B's component along BE is V_B′(BE), not a second V_B′."""
+    asm = assemble(load_mechanism(bundled()["hinkle-four-bar"]))
+    speed = asm.mechanism.input_speed
+    for point in ("B", "D", "E"):
+        r = velocity_by_components(asm, point, scale=0.05 / speed)
+        names = [asm.construction[s].label for s in r.steps
+                 if asm.construction[s].verb == "join" and asm.construction[s].label]
+        assert len(names) == len(set(names)), names
+    c = asm.construction
+    said = " ".join(s.sentence for s in c)
+    assert "V_E′(AE) = V_A′(AE)" in said and "V_E′(BE) = V_B′(BE)" in said
