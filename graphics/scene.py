@@ -492,37 +492,48 @@ class _Scene(_Diagram):
     def draw_measures(self) -> None:
         """Readings: a dimension line with its length, an angle's arc with its degrees.
 
-        A dimension stands off its points on the side away from the mechanism. An
-        angle's arc runs just outside the points it was read at (the crank's limit
-        places: the arcs lie along the crank circle, as the notes mark them); its
-        head shows the sense it was read in.
+        A dimension stands off its points on the side away from the mechanism, as
+        near as it can be without crossing what is drawn. An angle's arc is thin and
+        runs through the points it was read at (the crank's limit places: the arcs
+        lie on the crank circle, as the notes mark them); its head shows the sense
+        it was read in. Dimensions go first, so the degrees keep clear of them.
         """
-        for step in self.steps:
+        measures = [s for s in self.steps if isinstance(s.output, (Dimension, Angle))]
+        for step in sorted(measures, key=lambda s: isinstance(s.output, Angle)):
             out = step.output
             if isinstance(out, Dimension):
-                a, b = self.view(out.start.xy), self.view(out.end.xy)
-                u = unit((b[0] - a[0], b[1] - a[1]))
-                n = (-u[1], u[0])
-                mid = ((a[0] + b[0]) / 2 - self.centre[0], (a[1] + b[1]) / 2 - self.centre[1])
-                if n[0] * mid[0] + n[1] * mid[1] < 0 or (abs(n[0] * mid[0] + n[1] * mid[1])
-                                                         < 1e-9 and n[1] > 0):
-                    n = (-n[0], -n[1])
-                at = draw_dimension(self.fig, a, b, n)
-                ends = [(a[0] + 8 * n[0], a[1] + 8 * n[1]), (b[0] + 8 * n[0], b[1] + 8 * n[1])]
-                self.placer.block_path(ends, 1.4)
-                text = f"{step.label} {_length(out.length, self.m.units)}".strip()
-                # The reading stands beyond the line, outside the frame of the points.
-                page, self.placer.page = self.placer.page, None
-                self.label(text, at, [step], prefer=math.atan2(-n[1], n[0]), gap=1.0, size=3.4)
-                self.placer.page = page
-            elif isinstance(out, Angle):
-                centre = self.view(out.vertex.xy)
-                radius = out.reach * self.view.scale + 4.0
-                at = draw_turning_arrow(self.fig, centre, radius, out.start, out.sweep)
-                self.placer.block_path(arc_points(centre, radius, out.start, out.sweep), 0.6)
-                text = f"{out.degrees:.2f}° {step.label}".strip()
-                self.label(text, at, [step], prefer=out.start + out.sweep / 2, gap=1.2,
-                           size=3.2)
+                self.draw_dimension(step, out)
+                continue
+            centre = self.view(out.vertex.xy)
+            radius = out.reach * self.view.scale
+            at = draw_turning_arrow(self.fig, centre, radius, out.start, out.sweep, "dimension")
+            self.placer.block_path(arc_points(centre, radius, out.start, out.sweep), 0.4)
+            text = f"{out.degrees:.2f}° {step.label}".strip()
+            self.label(text, at, [step], prefer=out.start + out.sweep / 2, gap=1.6, size=3.2)
+
+    def draw_dimension(self, step: Step, out: Dimension) -> None:
+        a, b = self.view(out.start.xy), self.view(out.end.xy)
+        u = unit((b[0] - a[0], b[1] - a[1]))
+        n = (-u[1], u[0])
+        mid = ((a[0] + b[0]) / 2 - self.centre[0], (a[1] + b[1]) / 2 - self.centre[1])
+        lean = n[0] * mid[0] + n[1] * mid[1]
+        if lean < 0 or (abs(lean) < 1e-9 and n[1] > 0):
+            n = (-n[0], -n[1])
+
+        def line_at(off):
+            return [(a[0] + off * n[0], a[1] + off * n[1]), (b[0] + off * n[0], b[1] + off * n[1])]
+
+        # The line and its reading stand outside the frame of the points: the page's
+        # edge is no obstacle. The nearest offset that crosses nothing drawn is taken.
+        page, self.placer.page = self.placer.page, None
+        offset = min((7.0, 11.0, 15.0, 19.0),
+                     key=lambda off: (self.placer.overlap(LineString(line_at(off)).buffer(2.5))
+                                      > 1e-6, off))
+        at = draw_dimension(self.fig, a, b, n, offset)
+        self.placer.block_path(line_at(offset), 1.0)
+        text = f"{step.label} {self.m.units.length_text(out.length)}".strip()
+        self.label(text, at, [step], prefer=math.atan2(-n[1], n[0]), gap=1.0, size=3.4)
+        self.placer.page = page
 
     def draw_vectors(self) -> None:
         for step in self.steps:

@@ -179,13 +179,13 @@ def draw_arrowhead(fig: Figure, tip: tuple[float, float], direction: tuple[float
 
 
 def draw_turning_arrow(fig: Figure, centre: tuple[float, float], radius: float,
-                       start: float, sweep: float) -> tuple[float, float]:
+                       start: float, sweep: float, style: str = "arrow") -> tuple[float, float]:
     """An arc arrow about ``centre`` from paper angle ``start`` through ``sweep`` (rad, CCW +).
 
     Returns the arc's midpoint, where its label goes.
     """
     end = start + sweep
-    fig.arc(centre, radius, start, end - math.copysign(0.6 / radius, sweep), "arrow")
+    fig.arc(centre, radius, start, end - math.copysign(0.6 / radius, sweep), style)
     tip = (centre[0] + radius * math.cos(end), centre[1] - radius * math.sin(end))
     # Tangent direction on paper (y down) for increasing angle, signed by sweep.
     s = 1.0 if sweep > 0 else -1.0
