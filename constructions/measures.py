@@ -34,7 +34,7 @@ class Dimension:
 class Angle:
     """The angle at ``vertex`` from the direction ``start`` (rad) turning ``sweep`` rad,
     counter-clockwise positive, as a protractor reads it. ``reach`` is the length of its
-    first arm, so a figure can mark the angle just outside the points it was read at."""
+    first arm, so a figure can draw the angle's arc through the points it was read at."""
 
     vertex: Point
     start: float

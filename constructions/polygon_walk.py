@@ -75,11 +75,21 @@ class DrawnPolygon:
         TarsimError
             If the polygon has no tip of that name.
         """
+        return self.between(self.pole, self.tip(name))
+
+    def tip(self, name: str) -> Ref:
+        """The step of ``name``'s tip (``A2`` is the tip of the point A, taken on link 2).
+
+        Raises
+        ------
+        TarsimError
+            If the polygon has no tip of that name.
+        """
         key = self.aliases.get(name, name)
         if key not in self.tips:
             raise TarsimError(f"the {self.noun} polygon has no tip for {name}; it has "
                               f"{', '.join(self.tips)}")
-        return self.between(self.pole, self.tips[key])
+        return self.tips[key]
 
     def draw_relative(self, name: str, of: str, units) -> Ref:
         """Join the tip of ``of`` to the tip of ``name``: the vector V_name/of (A_… in the
@@ -95,9 +105,7 @@ class DrawnPolygon:
         c = self.construction
         if ref in c:
             return ref
-        for n in (name, of):
-            self.tip_vector(n)                          # raises if n has no tip
-        start, end = (self.tips[self.aliases.get(n, n)] for n in (of, name))
+        start, end = self.tip(of), self.tip(name)
         size = math.hypot(*self.between(start, end)) / units.metres
         symbol = f"{self.symbol}_{name}/{of}"
         c.draw(ref, "join", start, end, label=symbol, role=Role.RESULT, panel=self.panel,

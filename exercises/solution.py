@@ -187,7 +187,7 @@ def _polygon_quantities(ex: Exercise, asm, kin, vp: VelocityPolygon,
             link, point = _taken(m, p)
             q = _vector_quantity(f"V_{p}", vp.velocity(p),
                                  analytic.point_velocity(kin, m, link, point), v_scale,
-                                 _cond(c, vp.tips[vp.aliases.get(p, p)]), "velocity polygon")
+                                 _cond(c, vp.tip(p)), "velocity polygon")
             first = quantities.get(f"V_{p}")
             quantities[f"V_{p}"] = q if first is None or only else _with_alternatives(
                 first, {**first.alternatives, "velocity polygon": q})
@@ -199,7 +199,7 @@ def _polygon_quantities(ex: Exercise, asm, kin, vp: VelocityPolygon,
         # The answer is the arrow drawn from r's tip to p's, read at the polygon's scale.
         drawn = poly.between(*c[poly.draw_relative(p, r, m.units)].inputs)
         (ax, ay), (bx, by) = (ref_of(kin, m, *_taken(m, n)) for n in (p, r))
-        cond = min(_cond(c, poly.tips[poly.aliases.get(n, n)]) for n in (p, r))
+        cond = min(_cond(c, poly.tip(n)) for n in (p, r))
         quantities[name] = _vector_quantity(name, drawn, (ax - bx, ay - by), scale,
                                             cond, f"{'velocity' if kind == 'V' else 'acceleration'}"
                                                   " polygon")
@@ -213,7 +213,7 @@ def _polygon_quantities(ex: Exercise, asm, kin, vp: VelocityPolygon,
         link, point = _taken(m, p)
         quantities[f"A_{p}"] = _vector_quantity(
             f"A_{p}", ap.acceleration(p), analytic.point_acceleration(kin, m, link, point),
-            a_scale, _cond(c, ap.tips[ap.aliases.get(p, p)]), "acceleration polygon")
+            a_scale, _cond(c, ap.tip(p)), "acceleration polygon")
     for p in ex.coriolis:
         quantities[f"A_cor_{p}"] = _vector_quantity(
             f"A_cor_{p}", ap.coriolis_of(p), _coriolis(kin, m, p), a_scale,

@@ -202,7 +202,7 @@ def _polygon_targets(sol: Solution, poly, panel: Panel) -> list[Ref]:
     names += ex.accelerations if letter == "A" else ()
     names += [n for q in ex.relatives if q[0] == letter for n in q[2:].split("/")]
     links = ex.omegas if letter == "V" else ex.alphas
-    targets = [poly.tips[poly.aliases.get(n, n)] for n in names]
+    targets = [poly.tip(n) for n in names]
     if letter == "A":
         targets += [poly.coriolis[p][1] for p in ex.coriolis]
     targets += [r for key, r in poly.tips.items() for n in links

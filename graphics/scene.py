@@ -45,7 +45,8 @@ from .diagram import _Diagram, subscript
 from .figure import Circle, Figure, Path, arc_points, clip_line, ray_to_edge, span_line
 from .labels import typeset
 from .scales import draw_caption, scale_text
-from .symbols import PIN_RADIUS, draw_arrow, draw_arrowhead, draw_dimension, draw_turning_arrow, unit
+from .symbols import (PIN_RADIUS, draw_arrow, draw_arrowhead, draw_dimension, draw_turning_arrow,
+                      unit)
 
 __all__ = ["draw_scene", "numbered_steps", "panel_steps", "choose_velocity_scale",
            "velocity_scale_for", "centre_steps",
