@@ -25,19 +25,19 @@ from pathlib import Path
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
 from benchmarks.position_accuracy import median_time  # noqa: E402
-from constructions import analytic  # noqa: E402
-from constructions.analytic_centres import centre_error, instant_centre, mechanism_size  # noqa: E402
-from constructions.assembly import assemble  # noqa: E402
-from constructions.centres import locate_centres  # noqa: E402
-from exercises.catalog import bundled  # noqa: E402
-from exercises.exercise_file import load_exercise  # noqa: E402
-from exercises.solution import solve_exercise  # noqa: E402
+from tarsim.constructions.reference import solver  # noqa: E402
+from tarsim.constructions.reference.centres import centre_error, instant_centre, mechanism_size  # noqa: E402
+from tarsim.constructions.assembly import assemble  # noqa: E402
+from tarsim.constructions.centres import locate_centres  # noqa: E402
+from tarsim.exercises.catalog import bundled  # noqa: E402
+from tarsim.exercises.exercise_file import load_exercise  # noqa: E402
+from tarsim.exercises.solution import solve_exercise  # noqa: E402
 from tests.common import four_bar  # noqa: E402
 
 
 def reference(mech) -> None:
     """The analytic side: kinematics and every centre from the velocity fields."""
-    kin = analytic.solve(mech)
+    kin = solver.solve(mech)
     for i in mech.numbers:
         for j in mech.numbers:
             if i < j:
@@ -68,7 +68,7 @@ def parallel_angle() -> float:
     Found by bisection on the analytic positions, to the last bit.
     """
     def cross(theta: float) -> float:
-        pts = analytic.solve_positions(four_bar(theta))
+        pts = solver.solve_positions(four_bar(theta))
         (ax, ay), (bx, by), (ox, oy) = pts["A"], pts["B"], pts["O4"]
         return ax * (by - oy) - ay * (bx - ox)
     grid = [math.radians(d) for d in range(0, 361, 2)]
@@ -89,7 +89,7 @@ def part2() -> None:
         mech = four_bar(theta0 + delta, omega2=10.0)
         cs = locate_centres(assemble(mech))
         p, cond = cs.point(1, 3), cs.conditioning(1, 3)
-        kin = analytic.solve(mech)
+        kin = solver.solve(mech)
         err = centre_error(p, instant_centre(kin, 1, 3), mechanism_size(kin))
         far = "∞" if p.is_at_infinity else f"{math.hypot(*p.xy):.3g}"
         bound = 2.2e-16 / cond if cond else math.inf

@@ -27,13 +27,13 @@ from pathlib import Path
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
 from benchmarks.position_accuracy import median_time  # noqa: E402
-from constructions import analytic  # noqa: E402
-from constructions.acceleration_polygon import draw_acceleration_polygon  # noqa: E402
-from constructions.assembly import assemble  # noqa: E402
-from constructions.errors import AssemblyError  # noqa: E402
-from constructions.model import Drive  # noqa: E402
-from constructions.velocity_polygon import draw_velocity_polygon  # noqa: E402
-from exercises.mechanism_file import load_mechanism  # noqa: E402
+from tarsim.constructions.reference import solver  # noqa: E402
+from tarsim.constructions.acceleration_polygon import draw_acceleration_polygon  # noqa: E402
+from tarsim.constructions.assembly import assemble  # noqa: E402
+from tarsim.constructions.errors import AssemblyError  # noqa: E402
+from tarsim.constructions.model import Drive  # noqa: E402
+from tarsim.constructions.velocity_polygon import draw_velocity_polygon  # noqa: E402
+from tarsim.exercises.mechanism_file import load_mechanism  # noqa: E402
 from tests.common import (coupler_four_bar, crank_shaper, four_bar,  # noqa: E402
                           inverted_slider_crank, slotted_lever_p37)
 
@@ -67,7 +67,7 @@ def polygons(mech):
 def worst_error(mech) -> float:
     """Worst relative error of every tip (and coincident point), α and Coriolis component."""
     _, _, ap = polygons(mech)
-    kin = analytic.solve(mech)
+    kin = solver.solve(mech)
     d = mech.drive
     a_in = mech.input_acceleration
     worst = 0.0
@@ -76,14 +76,14 @@ def worst_error(mech) -> float:
             ref = kin.accelerations[key]
         else:
             i = len(key.rstrip("0123456789"))
-            ref = analytic.point_acceleration(kin, mech, int(key[i:]), key[:i])
+            ref = solver.point_acceleration(kin, mech, int(key[i:]), key[:i])
         worst = max(worst, math.dist(ap.acceleration(key), ref) / max(math.hypot(*ref), a_in))
     scale = math.hypot(d.omega ** 2, d.alpha)
     for c, a in ap.alphas.items():
         worst = max(worst, abs(a - kin.alphas[c]) / max(abs(kin.alphas[c]), scale))
     for joint in (*mech.slides, *mech.pin_arcs):
         if joint.point in ap.coriolis and joint.guide_link != 1:
-            (px, py), (qx, qy) = (analytic.point_velocity(kin, mech, j, joint.point)
+            (px, py), (qx, qy) = (solver.point_velocity(kin, mech, j, joint.point)
                                   for j in (joint.link, joint.guide_link))
             w = kin.omegas[joint.guide_link]
             ref = (-2 * w * (py - qy), 2 * w * (px - qx))
@@ -99,7 +99,7 @@ def part1() -> None:
     for name, build in MECHANISMS.items():
         mech = build(1.0)
         t_c = median_time(lambda: polygons(mech), 30)
-        t_a = median_time(lambda: analytic.solve(mech), 30)
+        t_a = median_time(lambda: solver.solve(mech), 30)
         worst = 0.0
         for deg in range(0, 360, 30):
             try:

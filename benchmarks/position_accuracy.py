@@ -25,11 +25,11 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
-from constructions import analytic  # noqa: E402
-from constructions.assembly import assemble  # noqa: E402
-from constructions.errors import TarsimError  # noqa: E402
-from exercises.catalog import bundled  # noqa: E402
-from exercises.mechanism_file import load_mechanism, parse_mechanism  # noqa: E402
+from tarsim.constructions.reference import solver  # noqa: E402
+from tarsim.constructions.assembly import assemble  # noqa: E402
+from tarsim.constructions.errors import TarsimError  # noqa: E402
+from tarsim.exercises.catalog import bundled  # noqa: E402
+from tarsim.exercises.mechanism_file import load_mechanism, parse_mechanism  # noqa: E402
 from tests.common import four_bar_toml  # noqa: E402
 
 
@@ -45,7 +45,7 @@ def median_time(fn, repeat: int = 200) -> float:
 
 def disagreement(mech) -> tuple[float, float]:
     asm = assemble(mech)
-    ref = analytic.solve_positions(mech)
+    ref = solver.solve_positions(mech)
     names = mech.point_names
     size = max(math.dist(asm.xy(a), asm.xy(b)) for a in names for b in names)
     err = max(math.dist(asm.xy(n), ref[n]) for n in names) / size
@@ -58,7 +58,7 @@ def part1() -> None:
     for name, path in bundled().items():
         mech = load_mechanism(path)
         tc = median_time(lambda: assemble(mech))
-        ta = median_time(lambda: analytic.solve_positions(mech))
+        ta = median_time(lambda: solver.solve_positions(mech))
         err, _ = disagreement(mech)
         print(f"{name:<22}{tc:>17.1f}{ta:>13.1f}{tc / ta:>8.2f}{err:>16.1e}")
 
@@ -80,8 +80,8 @@ def part2() -> None:
             continue
         print(f"{delta:>10.0e}{cond:>15.2e}{err:>13.1e}{2.2e-16 / cond:>12.1e}")
     mech = parse_mechanism(four_bar_toml(coupler=200, angle=180), "toggle.toml")
-    for label, fn in (("construction", assemble), ("analytic positions", analytic.solve_positions),
-                      ("analytic velocities", analytic.solve)):
+    for label, fn in (("construction", assemble), ("analytic positions", solver.solve_positions),
+                      ("analytic velocities", solver.solve)):
         try:
             fn(mech)
             print(f"exact toggle, {label}: solved (tangent arcs meet once)")

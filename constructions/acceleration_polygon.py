@@ -132,9 +132,9 @@ def draw_acceleration_polygon(asm: Assembly, vp: VelocityPolygon, scale: float |
     A crank turning at a steady 2 rad/s: A_A is ω²·O2A = 12 toward O2.
 
     >>> import math
-    >>> from constructions.assembly import assemble
-    >>> from constructions.model import Drive, Link, Mechanism, Slide, SlideKind
-    >>> from constructions.velocity_polygon import draw_velocity_polygon
+    >>> from tarsim.constructions.assembly import assemble
+    >>> from tarsim.constructions.model import Drive, Link, Mechanism, Slide, SlideKind
+    >>> from tarsim.constructions.velocity_polygon import draw_velocity_polygon
     >>> m = Mechanism((Link(1, (("O2", (0, 0)),)), Link(2, (("O2", (0, 0)), ("A", (3, 0)))),
     ...                Link(3, (("A", (0, 0)), ("B", (8, 0)))), Link(4, (("B", (0, 0)),))),
     ...               Drive(2, math.pi / 2, omega=2.0),

@@ -89,8 +89,8 @@ def velocity_by_components(asm: Assembly, point: str, *, scale: float,
     A parallelogram four-bar at θ2 = 90°: the coupler translates, so V_B = V_A.
 
     >>> import math
-    >>> from constructions.assembly import assemble
-    >>> from constructions.model import Drive, Link, Mechanism
+    >>> from tarsim.constructions.assembly import assemble
+    >>> from tarsim.constructions.model import Drive, Link, Mechanism
     >>> m = Mechanism((Link(1, (("O2", (0, 0)), ("O4", (4, 0)))),
     ...                Link(2, (("O2", (0, 0)), ("A", (3, 0)))),
     ...                Link(3, (("A", (0, 0)), ("B", (4, 0)))),

@@ -113,8 +113,8 @@ def draw_velocity_polygon(asm: Assembly, scale: float | None = None, *,
     A parallelogram four-bar at θ2 = 90°: the coupler translates, so b = a.
 
     >>> import math
-    >>> from constructions.assembly import assemble
-    >>> from constructions.model import Drive, Link, Mechanism
+    >>> from tarsim.constructions.assembly import assemble
+    >>> from tarsim.constructions.model import Drive, Link, Mechanism
     >>> m = Mechanism((Link(1, (("O2", (0, 0)), ("O4", (4, 0)))),
     ...                Link(2, (("O2", (0, 0)), ("A", (3, 0)))),
     ...                Link(3, (("A", (0, 0)), ("B", (4, 0)))),

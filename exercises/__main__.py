@@ -1,3 +1,3 @@
-from exercises.cli import cli
+from .cli import cli
 
 cli(prog_name="tarsim")

@@ -16,8 +16,8 @@ from pathlib import Path
 
 import click
 
-from constructions.errors import TarsimError
-from constructions.model import Drive, Mechanism
+from ..constructions.errors import TarsimError
+from ..constructions.model import Drive, Mechanism
 
 __all__ = ["cli"]
 
@@ -34,8 +34,8 @@ def _fails_cleanly(fn):
 
 
 def _mechanism(source: str, angle: float | None) -> Mechanism:
-    from exercises.catalog import resolve
-    from exercises.mechanism_file import load_mechanism
+    from .catalog import resolve
+    from .mechanism_file import load_mechanism
 
     return _at_angle(load_mechanism(resolve(source)), angle)
 
@@ -50,8 +50,8 @@ def _at_angle(mech: Mechanism, angle: float | None) -> Mechanism:
 
 
 def _exercise(source: str, angle: float | None):
-    from exercises.catalog import resolve
-    from exercises.exercise_file import load_exercise
+    from .catalog import resolve
+    from .exercise_file import load_exercise
 
     ex = load_exercise(resolve(source), Path(source).stem if Path(source).suffix else source)
     if angle is None:
@@ -98,9 +98,9 @@ def draw(source, output, angle):
       tarsim draw four-bar -o four-bar.pdf
       tarsim draw my-linkage.toml -o fig.svg --angle 120
     """
-    from constructions.assembly import assemble
-    from graphics.diagram import draw_kinematic_diagram
-    from graphics.export import write_figure
+    from ..constructions.assembly import assemble
+    from ..graphics.diagram import draw_kinematic_diagram
+    from ..graphics.export import write_figure
 
     mech = _mechanism(source, angle)
     path = write_figure(draw_kinematic_diagram(assemble(mech)), output)
@@ -125,7 +125,7 @@ def check(source, angle):
       tarsim check four-bar
       tarsim check crank-shaper --angle -44.072
     """
-    from exercises.report import check_positions, format_check
+    from .report import check_positions, format_check
 
     click.echo(format_check(check_positions(_mechanism(source, angle))))
 
@@ -169,8 +169,8 @@ def solve(source, out_dir, angle, pdf):
     The exit status is 2 if any constructed number disagrees with the analytic
     one beyond the tolerance its conditioning allows.
     """
-    from exercises.solution_files import overall_text, solve_all, write_solution
-    from graphics.export import cairo_missing
+    from .solution_files import overall_text, solve_all, write_solution
+    from ..graphics.export import cairo_missing
 
     ex = _exercise(source, angle)
     sols, overall, files = solve_all(ex)
@@ -240,9 +240,9 @@ def sweep(source, out_dir, of, steps, pdf):
       tarsim sweep four-bar --of omega4 --steps 720 --no-pdf
       tarsim sweep my-linkage.toml --of V_C
     """
-    from exercises.sweep import sweep_exercise
-    from exercises.sweep_files import format_sweep, sweep_to_files, write_sweep
-    from graphics.export import cairo_missing
+    from .sweep import sweep_exercise
+    from .sweep_files import format_sweep, sweep_to_files, write_sweep
+    from ..graphics.export import cairo_missing
 
     ex = _exercise(source, None)
     reason = cairo_missing() if pdf else None
@@ -270,8 +270,8 @@ def list_():
     """
     import tomllib
 
-    from exercises.catalog import bundled
-    from exercises.exercise_file import load_exercise
+    from .catalog import bundled
+    from .exercise_file import load_exercise
 
     found = bundled()
     pad = max(map(len, found), default=0) + 2

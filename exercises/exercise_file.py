@@ -34,10 +34,10 @@ import tomllib
 from dataclasses import dataclass, replace
 from pathlib import Path
 
-from constructions.errors import InputError
-from constructions.limit_positions import limit_kind, stroke_point
-from constructions.rotatability import four_bar_spans
-from constructions.model import LENGTH_UNITS, Drive, Mechanism
+from ..constructions.errors import InputError
+from ..constructions.limit_positions import limit_kind, stroke_point
+from ..constructions.reference.rotatability import four_bar_spans
+from ..constructions.model import LENGTH_UNITS, Drive, Mechanism
 
 from .mechanism_file import SourceMap, _Reader, _toml_error
 

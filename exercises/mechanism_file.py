@@ -14,8 +14,8 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from constructions.errors import InputError
-from constructions.model import (LENGTH_UNITS, Arc, Contact, Drive, Link, Mechanism, Profile,
+from ..constructions.errors import InputError
+from ..constructions.model import (LENGTH_UNITS, Arc, Contact, Drive, Link, Mechanism, Profile,
                                  Slide, SlideKind, Units, contact_arc, contact_slide)
 
 __all__ = ["load_mechanism", "parse_mechanism", "SourceMap"]

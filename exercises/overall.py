@@ -17,13 +17,13 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
-from constructions import analytic
-from constructions.analytic_centres import tolerance
-from constructions.analytic_limits import limit_reference
-from constructions.errors import InputError
-from constructions.limit_positions import LimitPositions, draw_limit_positions
-from constructions.model import Mechanism
-from constructions.rotatability import (class_by_rotation, four_bar_spans, length_range,
+from ..constructions.reference.mobility import mobility_by_rank
+from ..constructions.reference.centres import tolerance
+from ..constructions.reference.limits import limit_reference
+from ..constructions.errors import InputError
+from ..constructions.limit_positions import LimitPositions, draw_limit_positions
+from ..constructions.model import Mechanism
+from ..constructions.reference.rotatability import (class_by_rotation, grashof_class, four_bar_spans, length_range,
                                         length_range_by_rotation)
 
 from .solution import Quantity
@@ -84,13 +84,13 @@ def solve_overall(mech: Mechanism, asked: tuple[str, ...]) -> Overall:
 
 def _dof(mech: Mechanism) -> Quantity:
     dof, n, f1, f2 = mech.mobility()
-    rank = analytic.mobility_by_rank(mech)
+    rank = mobility_by_rank(mech)
     return Quantity("dof", {"value": dof}, {"value": rank}, float(abs(dof - rank)), 0.0, 1.0,
                     f"Grübler: 3({n} − 1) − 2·{f1} − {f2}")
 
 
 def _grashof(mech: Mechanism) -> Quantity:
-    gc = analytic.grashof_class(mech)
+    gc = grashof_class(mech)
     by_turning = class_by_rotation(gc.lengths)
     s, p, q_, l_ = sorted(gc.lengths)
     value = {"class": gc.kind, "s_plus_l": s + l_, "p_plus_q": p + q_}
@@ -111,7 +111,7 @@ def _same_class(by_rule: str, by_turning: str) -> bool:
 
 
 def _range(mech: Mechanism, span: str) -> Quantity:
-    gc = analytic.grashof_class(mech)
+    gc = grashof_class(mech)
     index = four_bar_spans(mech)[span]
     lo, hi = length_range(gc.lengths, index)
     rlo, rhi = length_range_by_rotation(gc.lengths, index)

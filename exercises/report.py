@@ -9,9 +9,10 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from constructions import analytic
-from constructions.assembly import Assembly, assemble
-from constructions.model import Mechanism
+from ..constructions.reference import solver
+from ..constructions.reference.rotatability import GrashofResult, grashof_class
+from ..constructions.assembly import Assembly, assemble
+from ..constructions.model import Mechanism
 
 __all__ = ["PointCheck", "PositionCheck", "check_positions", "format_check", "describe_grashof"]
 
@@ -36,7 +37,7 @@ class PositionCheck:
     points: tuple[PointCheck, ...]
     size: float
     mobility: tuple[int, int, int, int]
-    grashof: analytic.GrashofResult | None
+    grashof: GrashofResult | None
 
     @property
     def worst(self) -> float:
@@ -47,7 +48,7 @@ class PositionCheck:
 def check_positions(mech: Mechanism) -> PositionCheck:
     """Assemble ``mech`` by compass, solve it by vector loops, and compare every joint."""
     asm = assemble(mech)
-    reference = analytic.solve_positions(mech)
+    reference = solver.solve_positions(mech)
     names = mech.point_names
     xy = {n: asm.xy(n) for n in names}
     size = asm.size
@@ -56,7 +57,7 @@ def check_positions(mech: Mechanism) -> PositionCheck:
         c, a = xy[n], reference[n]
         step = asm.construction[asm.points[n]]
         rows.append(PointCheck(n, c, a, math.dist(c, a) / size, step.conditioning))
-    return PositionCheck(mech, asm, tuple(rows), size, mech.mobility(), analytic.grashof_class(mech))
+    return PositionCheck(mech, asm, tuple(rows), size, mech.mobility(), grashof_class(mech))
 
 
 def format_check(check: PositionCheck) -> str:
@@ -85,7 +86,7 @@ def format_check(check: PositionCheck) -> str:
     return "\n".join(lines)
 
 
-def describe_grashof(g: analytic.GrashofResult, units) -> str:
+def describe_grashof(g: GrashofResult, units) -> str:
     """One line: the class, the sums that decide it, and the shortest link."""
     ls = sorted(g.lengths)
     sl, pq = ls[0] + ls[3], ls[1] + ls[2]

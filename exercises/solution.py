@@ -13,18 +13,18 @@ import math
 from dataclasses import dataclass, field
 from typing import Any
 
-from constructions import analytic
-from constructions.analytic_centres import centre_error, instant_centre, mechanism_size, tolerance
-from constructions.assembly import Assembly, assemble
-from constructions.centres import Centres, locate_centres, omega_ratio, pair_label
-from constructions.errors import DegenerateInput, TarsimError
-from constructions.polygon_walk import NOISE
-from constructions.acceleration_polygon import AccelerationPolygon, draw_acceleration_polygon
-from constructions.velocity_by_centres import METHODS as CENTRE_METHODS
-from constructions.velocity_polygon import VelocityPolygon, draw_velocity_polygon
-from constructions.record import Ref
-from constructions.velocity_drawing import VelocityResult
-from graphics.scene import choose_velocity_scale, velocity_scale_for
+from ..constructions.reference import solver
+from ..constructions.reference.centres import centre_error, instant_centre, mechanism_size, tolerance
+from ..constructions.assembly import Assembly, assemble
+from ..constructions.centres import Centres, locate_centres, omega_ratio, pair_label
+from ..constructions.errors import DegenerateInput, TarsimError
+from ..constructions.polygon_walk import NOISE
+from ..constructions.acceleration_polygon import AccelerationPolygon, draw_acceleration_polygon
+from ..constructions.velocity_by_centres import METHODS as CENTRE_METHODS
+from ..constructions.velocity_polygon import VelocityPolygon, draw_velocity_polygon
+from ..constructions.record import Ref
+from ..constructions.velocity_drawing import VelocityResult
+from ..graphics.scene import choose_velocity_scale, velocity_scale_for
 
 from .exercise_file import Exercise, Position
 
@@ -60,7 +60,7 @@ class Solution:
 
     exercise: Exercise
     assembly: Assembly
-    kinematics: analytic.Kinematics
+    kinematics: solver.Kinematics
     centres: Centres | None
     velocities: list[VelocityResult]
     quantities: dict[str, Quantity]
@@ -119,7 +119,7 @@ def solve_exercise(ex: Exercise, velocity_scale: float | None = None) -> Solutio
                           "state the input's angular velocity")
     asm = assemble(mech)
     position_steps = frozenset(asm.construction.steps)
-    kin = analytic.solve(mech)
+    kin = solver.solve(mech)
     size = mechanism_size(kin)
     quantities: dict[str, Quantity] = {}
     notes: list[str] = []
@@ -186,7 +186,7 @@ def _polygon_quantities(ex: Exercise, asm, kin, vp: VelocityPolygon,
         for p in ex.velocities:
             link, point = _taken(m, p)
             q = _vector_quantity(f"V_{p}", vp.velocity(p),
-                                 analytic.point_velocity(kin, m, link, point), v_scale,
+                                 solver.point_velocity(kin, m, link, point), v_scale,
                                  _cond(c, vp.tip(p)), "velocity polygon")
             first = quantities.get(f"V_{p}")
             quantities[f"V_{p}"] = q if first is None or only else _with_alternatives(
@@ -194,8 +194,8 @@ def _polygon_quantities(ex: Exercise, asm, kin, vp: VelocityPolygon,
     for name in ex.relatives:
         kind, pair = name.split("_", 1)
         p, r = pair.split("/")
-        poly, ref_of, scale = ((vp, analytic.point_velocity, v_scale) if kind == "V" else
-                               (ap, analytic.point_acceleration, a_scale))
+        poly, ref_of, scale = ((vp, solver.point_velocity, v_scale) if kind == "V" else
+                               (ap, solver.point_acceleration, a_scale))
         # The answer is the arrow drawn from r's tip to p's, read at the polygon's scale.
         drawn = poly.between(*c[poly.draw_relative(p, r, m.units)].inputs)
         (ax, ay), (bx, by) = (ref_of(kin, m, *_taken(m, n)) for n in (p, r))
@@ -212,7 +212,7 @@ def _polygon_quantities(ex: Exercise, asm, kin, vp: VelocityPolygon,
     for p in ex.accelerations:
         link, point = _taken(m, p)
         quantities[f"A_{p}"] = _vector_quantity(
-            f"A_{p}", ap.acceleration(p), analytic.point_acceleration(kin, m, link, point),
+            f"A_{p}", ap.acceleration(p), solver.point_acceleration(kin, m, link, point),
             a_scale, _cond(c, ap.tip(p)), "acceleration polygon")
     for p in ex.coriolis:
         quantities[f"A_cor_{p}"] = _vector_quantity(
@@ -225,7 +225,7 @@ def _coriolis(kin, m, point: str) -> tuple[float, float]:
     joint = next(s for s in (*m.slides, *m.pin_arcs) if s.point == point and s.guide_link != 1
                  and point not in m.link(s.guide_link).names)
     j = joint.guide_link
-    (px, py), (qx, qy) = (analytic.point_velocity(kin, m, k, point) for k in (joint.link, j))
+    (px, py), (qx, qy) = (solver.point_velocity(kin, m, k, point) for k in (joint.link, j))
     w = kin.omegas[j]
     return -2.0 * w * (py - qy), 2.0 * w * (px - qx)
 
@@ -277,7 +277,7 @@ def _quiet(x: float, scale: float) -> float:
 def _velocity(asm, cs, point, method, scale) -> VelocityResult:
     if method in CENTRE_METHODS:
         return CENTRE_METHODS[method](asm, cs, point, scale=scale)
-    from constructions.velocity_by_components import velocity_by_components
+    from ..constructions.velocity_by_components import velocity_by_components
     return velocity_by_components(asm, point, scale=scale)
 
 
@@ -333,7 +333,7 @@ def _omega(cs: Centres, kin, n: int) -> Quantity:
 def _velocity_quantity(asm, kin, r: VelocityResult) -> Quantity:
     m = asm.mechanism
     vx, vy = r.value(asm.construction)
-    rx, ry = analytic.point_velocity(kin, m, r.link, r.point)
+    rx, ry = solver.point_velocity(kin, m, r.link, r.point)
     # Relative to the input speed too, so a point at rest (dead centre) has a scale.
     err = math.hypot(vx - rx, vy - ry) / max(math.hypot(rx, ry), m.input_speed)
     cond = asm.construction[r.vector].conditioning

@@ -24,12 +24,12 @@ import re
 from collections.abc import Callable
 from dataclasses import dataclass, replace
 
-from constructions import analytic
-from constructions.analytic_limits import bisect_zero
-from constructions.assembly import assemble
-from constructions.errors import AssemblyError, InputError, TarsimError
-from constructions.limit_positions import stroke_point
-from constructions.model import Drive, Mechanism, Slide
+from ..constructions.reference import solver
+from ..constructions.reference.limits import bisect_zero
+from ..constructions.assembly import assemble
+from ..constructions.errors import AssemblyError, InputError, TarsimError
+from ..constructions.limit_positions import stroke_point
+from ..constructions.model import Drive, Mechanism, Slide
 
 from .exercise_file import Exercise
 from .solution import solve_positions
@@ -183,13 +183,13 @@ def pick_output(ex: Exercise, name: str | None = None) -> Output:
 def _evaluate(mech: Mechanism, out: Output, drive: Drive) -> dict[str, float]:
     """The output's values (SI) with the input at ``drive``; AssemblyError if it will not go."""
     m = mech.with_drive(drive)
-    kin = analytic.solve(m)
+    kin = solver.solve(m)
     if out.kind == "link":
         n = out.link
         return {"theta": kin.angles[n], "omega": kin.omegas[n], "alpha": kin.alphas[n]}
     x, y = kin.points[out.point]
-    vx, vy = analytic.point_velocity(kin, m, out.link, out.point)
-    ax, ay = analytic.point_acceleration(kin, m, out.link, out.point)
+    vx, vy = solver.point_velocity(kin, m, out.link, out.point)
+    ax, ay = solver.point_acceleration(kin, m, out.link, out.point)
     if out.kind == "slider":
         (dx, dy), (gx, gy) = out.direction, out.guide.through
         return {"x": x, "y": y, "s": (x - gx) * dx + (y - gy) * dy, "v": vx * dx + vy * dy,
@@ -237,7 +237,7 @@ def sweep_exercise(ex: Exercise, steps: int = 360, *, of: str | None = None,
         angle = d.angle + i * step
         try:
             samples.append(Sample(angle, _evaluate(mech, out, _drive_at(mech, angle))))
-        except analytic.SingularPosition as e:
+        except solver.SingularPosition as e:
             samples.append(Sample(angle, {}, f"dead point: {e}"))
         except AssemblyError as e:
             samples.append(Sample(angle, {}, f"cannot assemble: {e}"))

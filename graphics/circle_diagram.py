@@ -15,7 +15,7 @@ import math
 from shapely.geometry import LineString
 from shapely.geometry import Point as SPoint
 
-from constructions.centres import Centre, Centres
+from ..constructions.centres import Centre, Centres
 
 from .figure import Circle, Figure, Path, Text, text_width
 from .labels import LabelPlacer, typeset

@@ -24,8 +24,8 @@ from dataclasses import dataclass
 
 from shapely.geometry import MultiPoint, Point as SPoint
 
-from constructions.assembly import Assembly
-from constructions.model import Arc, Mechanism, Slide, SlideKind
+from ..constructions.assembly import Assembly
+from ..constructions.model import Arc, Mechanism, Slide, SlideKind
 
 from .figure import Circle, Figure, Path, Text, View, arc_points, text_width
 from .labels import LabelPlacer

@@ -12,7 +12,7 @@ import os
 import tempfile
 from pathlib import Path
 
-from constructions.errors import RenderError
+from ..constructions.errors import RenderError
 
 from .figure import Figure
 from .svg import to_svg

@@ -29,10 +29,10 @@ from collections.abc import Iterable, Sequence
 
 from shapely.geometry import Point as SPoint, box
 
-from constructions import geometry as g
-from constructions.errors import TarsimError
-from constructions.model import Units
-from constructions.record import Construction, Panel, Ref, Role, Step
+from ..constructions import geometry as g
+from ..constructions.errors import TarsimError
+from ..constructions.model import Units
+from ..constructions.record import Construction, Panel, Ref, Role, Step
 
 from .figure import Circle, Figure, Path, View, arc_points, span_line
 from .labels import LabelPlacer, typeset
@@ -112,7 +112,7 @@ def draw_polygon_panel(construction: Construction, refs: Iterable[Ref], *, panel
     --------
     V_B of 50 mm/s on a 3-4-5 triangle, laid off at 1 drawing metre per m/s:
 
-    >>> from constructions.record import Construction
+    >>> from tarsim.constructions.record import Construction
     >>> c = Construction()
     >>> _ = c.give("vp:o_v", g.Point(0, 0), label="o_v", sentence="", panel=Panel.VELOCITY)
     >>> _ = c.give("vp:tip:B", g.Point(0.03, 0.04), label="b", sentence="",

@@ -33,13 +33,13 @@ from collections.abc import Iterable, Sequence
 from shapely.geometry import LineString, box
 from shapely.geometry import Point as SPoint
 
-from constructions import geometry as g
-from constructions.assembly import Assembly
-from constructions.centres import Centres
-from constructions.errors import TarsimError
-from constructions.measures import Angle, Dimension
-from constructions.model import SlideKind
-from constructions.record import Construction, Panel, Ref, Role, Step
+from ..constructions import geometry as g
+from ..constructions.assembly import Assembly
+from ..constructions.centres import Centres
+from ..constructions.errors import TarsimError
+from ..constructions.measures import Angle, Dimension
+from ..constructions.model import SlideKind
+from ..constructions.record import Construction, Panel, Ref, Role, Step
 
 from .diagram import _Diagram, subscript
 from .figure import Circle, Figure, Path, arc_points, clip_line, ray_to_edge, span_line

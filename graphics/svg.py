@@ -37,7 +37,7 @@ def to_svg(fig: Figure) -> str:
 
     Examples
     --------
-    >>> from graphics.figure import Figure, Text
+    >>> from tarsim.graphics.figure import Figure, Text
     >>> f = Figure(20, 10)
     >>> f.add(Text((10, 5), "A"))
     >>> to_svg(f).count("<text")

@@ -14,7 +14,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from itertools import product
 
-from constructions.errors import TarsimError
+from ..constructions.errors import TarsimError
 
 from .figure import Figure, Path, Text, text_width
 from .labels import typeset

@@ -7,8 +7,8 @@ CCW-positive from +x.
 
 from __future__ import annotations
 
-from constructions.model import Drive, Link, Mechanism, Slide, SlideKind, Units
-from graphics.figure import Circle, Text
+from tarsim.constructions.model import Drive, Link, Mechanism, Slide, SlideKind, Units
+from tarsim.graphics.figure import Circle, Text
 
 __all__ = ["four_bar", "offset_slider_crank", "crank_shaper", "slotted_lever_p37", "scotch_yoke"]
 

@@ -19,16 +19,16 @@ import pytest
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
-from constructions import analytic
-from constructions import geometry as g
-from constructions.acceleration_polygon import AccelerationPolygon, draw_acceleration_polygon
-from constructions.analytic_centres import tolerance
-from constructions.assembly import assemble
-from constructions.errors import AssemblyError, TarsimError
-from constructions.model import Drive
-from constructions.record import Panel, Role, replay
-from constructions.velocity_polygon import VelocityPolygon, draw_velocity_polygon
-from exercises.mechanism_file import load_mechanism
+from tarsim.constructions.reference import solver
+from tarsim.constructions import geometry as g
+from tarsim.constructions.acceleration_polygon import AccelerationPolygon, draw_acceleration_polygon
+from tarsim.constructions.reference.centres import tolerance
+from tarsim.constructions.assembly import assemble
+from tarsim.constructions.errors import AssemblyError, TarsimError
+from tarsim.constructions.model import Drive
+from tarsim.constructions.record import Panel, Role, replay
+from tarsim.constructions.velocity_polygon import VelocityPolygon, draw_velocity_polygon
+from tarsim.exercises.mechanism_file import load_mechanism
 from tests.common import (coupler_four_bar, crank_shaper, four_bar, inverted_slider_crank,
                           offset_slider_crank, scotch_yoke, slotted_lever_p37)
 
@@ -81,7 +81,7 @@ def reference(kin, mech, key):
     if key in kin.accelerations:
         return kin.accelerations[key]
     point, link = split(mech, key)
-    return analytic.point_acceleration(kin, mech, link, point)
+    return solver.point_acceleration(kin, mech, link, point)
 
 
 def input_accel(mech) -> float:
@@ -126,7 +126,7 @@ def sentences(ap, asm):
 def test_every_tip_alpha_and_coriolis_matches_the_analytic_solver(name, theta):
     mech = MECHANISMS[name](theta)
     try:
-        kin = analytic.solve(mech)
+        kin = solver.solve(mech)
     except AssemblyError:
         # The Stephenson six-bar cannot close over part of the turn: the assembly
         # under the polygons must refuse it too, in one line.
@@ -266,7 +266,7 @@ def test_coriolis_vector_vanishes(where, omega2):
         va, va4 = vp.velocity("A"), vp.velocity("A4")
         assert math.dist(va, va4) <= REL * mech.input_speed
     # The rest of the polygon is still right there.
-    tips, alphas, cors = errors(mech, ap, analytic.solve(mech))
+    tips, alphas, cors = errors(mech, ap, solver.solve(mech))
     assert max(tips, alphas, cors) <= REL
 
 
@@ -306,10 +306,10 @@ def test_coriolis_is_v_rel_turned_the_way_the_slot_turns(case, theta):
     drawn = {}
     for w in (-1.5, 1.5):
         mech = build(theta, w)
-        kin = analytic.solve(mech)
+        kin = solver.solve(mech)
         ap, vp, asm = polygons(mech)
-        v_rel = [a - b for a, b in zip(analytic.point_velocity(kin, mech, block, p),
-                                       analytic.point_velocity(kin, mech, slot, p))]
+        v_rel = [a - b for a, b in zip(solver.point_velocity(kin, mech, block, p),
+                                       solver.point_velocity(kin, mech, slot, p))]
         w4 = kin.omegas[slot]
         by_hand = tuple(2.0 * abs(w4) * c for c in turned(v_rel, w4))
         cor = ap.coriolis_of(p)
@@ -351,7 +351,7 @@ def test_near_dead_point_agrees_within_its_conditioning(off):
     # The tip's conditioning is reported, and small: the two lines of b′ nearly coincide.
     assert 0.0 < cond < 1e-3
     tol = tolerance(cond)
-    tips, alphas, _ = errors(mech, ap, analytic.solve(mech))
+    tips, alphas, _ = errors(mech, ap, solver.solve(mech))
     assert tips <= tol and alphas <= tol
     # α grows like 1/off here (≈ 3e5 rad/s² at 1e-4): the check is not vacuous.
     assert abs(ap.alphas[3]) > 1.0 / off
@@ -407,7 +407,7 @@ def test_a_file_without_alpha_takes_it_as_zero():
     assert mech.drive.alpha_given is False
     ap, _, asm = polygons(mech)
     assert any("(not given, so taken as 0)" in s for s in sentences(ap, asm))
-    tips, alphas, _ = errors(mech, ap, analytic.solve(mech))
+    tips, alphas, _ = errors(mech, ap, solver.solve(mech))
     assert tips <= REL and alphas <= REL
 
 
@@ -449,7 +449,7 @@ def test_components_are_the_textbook_terms(theta):
     # Aⁿ_X/K = −ω²·KX (from X toward K) and Aᵗ_X/K = α k × KX, each against the solver.
     mech = four_bar(theta, omega2=-4.0, alpha2=9.0)
     ap, _, asm = polygons(mech)
-    kin = analytic.solve(mech)
+    kin = solver.solve(mech)
     P = kin.points
     a_in = input_accel(mech)
     for label, (k, x, link) in {"A": ("O2", "A", 2), "B/A": ("A", "B", 3),
@@ -472,7 +472,7 @@ def test_coupler_image_is_similar_same_handed_and_divided(theta):
     assert ratio[1] == pytest.approx(ratio[0], rel=1e-12)
     assert ratio[2] == pytest.approx(ratio[0], rel=1e-12)
     # The image side is √(α3² + ω3⁴) times the link side, at the polygon's scale.
-    kin = analytic.solve(mech)
+    kin = solver.solve(mech)
     assert ratio[0] == pytest.approx(math.hypot(kin.alphas[3], kin.omegas[3] ** 2) * ap.scale,
                                      rel=1e-9)
 
@@ -571,7 +571,7 @@ def test_input_at_rest_gives_a_polygon_at_the_pole():
        alpha=st.floats(-100.0, 100.0))
 def test_random_four_bars_match_the_analytic_solver(crank, theta, rocker, phi, omega, alpha):
     # Ground O2O4 = 1. Pick B directly (at angle φ from O4), so the four-bar always
-    # closes: the coupler is |AB| and the branch is B's side of A → O4 (analytic.solve).
+    # closes: the coupler is |AB| and the branch is B's side of A → O4 (solver.solve).
     a = (crank * math.cos(theta), crank * math.sin(theta))
     b = (1.0 + rocker * math.cos(phi), rocker * math.sin(phi))
     coupler = math.dist(a, b)
@@ -584,7 +584,7 @@ def test_random_four_bars_match_the_analytic_solver(crank, theta, rocker, phi, o
     side = (1.0 - a[0]) * (b[1] - a[1]) - (0.0 - a[1]) * (b[0] - a[0])
     mech = four_bar(theta, o4=(1.0, 0.0), crank=crank, coupler=coupler, rocker=rocker,
                     omega2=omega, alpha2=alpha, branch="left" if side > 0 else "right")
-    kin = analytic.solve(mech)
+    kin = solver.solve(mech)
     assert math.dist(kin.points["B"], b) <= 1e-9      # the same assembly as was drawn
     ap, _, _ = polygons(mech)
     tips, alphas, _ = errors(mech, ap, kin)
@@ -594,7 +594,7 @@ def test_random_four_bars_match_the_analytic_solver(crank, theta, rocker, phi, o
 # ----- curved slots and circle contacts (the notes §2.11–2.12) ----------------------------
 def frame_slot_four_bar(theta):
     """The peers four-bar with its rocker replaced by a pin B in a frame slot about O4."""
-    from constructions.model import Arc, Mechanism, SlideKind
+    from tarsim.constructions.model import Arc, Mechanism, SlideKind
     m = four_bar(theta, omega2=10.0, alpha2=3.0)
     links = tuple(k for k in m.links if k.number != 4)
     return Mechanism(links, m.drive, (), dict(m.branches), m.units, "frame slot",
@@ -611,7 +611,7 @@ CURVED = {
 
 def curved_coriolis(kin, mech, arc):
     """2ω_j × (V_P − V_Pj) from the analytic velocities of P on its link and on the slot's."""
-    (px, py), (qx, qy) = (analytic.point_velocity(kin, mech, k, arc.point)
+    (px, py), (qx, qy) = (solver.point_velocity(kin, mech, k, arc.point)
                           for k in (arc.link, arc.guide_link))
     w = kin.omegas[arc.guide_link]
     return -2.0 * w * (py - qy), 2.0 * w * (px - qx)
@@ -622,7 +622,7 @@ def curved_coriolis(kin, mech, arc):
 @pytest.mark.parametrize("name", list(CURVED))
 def test_curved_slots_match_the_analytic_solver(name, theta):
     mech = CURVED[name](theta)
-    kin = analytic.solve(mech)
+    kin = solver.solve(mech)
     ap, vp, asm = polygons(mech)
     tips, alphas, _ = errors(mech, ap, kin)
     assert tips <= REL and alphas <= REL
@@ -636,10 +636,10 @@ def test_curved_slots_match_the_analytic_solver(name, theta):
 
 def test_a_curved_slot_adds_v_rel_squared_over_rho_toward_its_centre():
     mech = CURVED["pin in a curved slot"](math.radians(40))
-    kin = analytic.solve(mech)
+    kin = solver.solve(mech)
     ap, vp, asm = polygons(mech)
     arc = mech.pin_arcs[0]
-    (px, py), (qx, qy) = (analytic.point_velocity(kin, mech, k, "A") for k in (2, 4))
+    (px, py), (qx, qy) = (solver.point_velocity(kin, mech, k, "A") for k in (2, 4))
     v_rel2 = (px - qx) ** 2 + (py - qy) ** 2
     normal = [label for label in ap.components if label.lstrip("−").startswith("Aⁿ_A2/A4")]
     assert len(normal) == 1

@@ -5,12 +5,12 @@ import re
 
 import pytest
 
-from constructions import analytic
-from constructions.assembly import assemble
-from constructions.errors import AssemblyError
-from constructions.model import Drive
-from exercises.catalog import bundled
-from exercises.mechanism_file import load_mechanism, parse_mechanism
+from tarsim.constructions.reference import solver
+from tarsim.constructions.assembly import assemble
+from tarsim.constructions.errors import AssemblyError
+from tarsim.constructions.model import Drive
+from tarsim.exercises.catalog import bundled
+from tarsim.exercises.mechanism_file import load_mechanism, parse_mechanism
 from tests.common import four_bar_toml
 
 BUNDLED = sorted(bundled())
@@ -29,7 +29,7 @@ def at_angle(mech, deg):
 def worst_error(mech):
     """Largest joint distance between construction and analytic, over the mechanism's size."""
     asm = assemble(mech)
-    kin = analytic.solve(mech)
+    kin = solver.solve(mech)
     names = mech.point_names
     size = max(math.dist(asm.xy(a), asm.xy(b)) for a in names for b in names)
     return max(math.dist(asm.xy(n), kin.points[n]) for n in names) / size, asm

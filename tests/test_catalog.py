@@ -13,9 +13,9 @@ import math
 
 import pytest
 
-from exercises.catalog import bundled
-from exercises.exercise_file import load_exercise
-from exercises.solution import solve_positions
+from tarsim.exercises.catalog import bundled
+from tarsim.exercises.exercise_file import load_exercise
+from tarsim.exercises.solution import solve_positions
 
 MM = 1e-3      # metres per millimetre
 

@@ -17,16 +17,16 @@ import pytest
 from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
-from constructions import geometry as g
-from constructions.analytic import Kinematics, SingularPosition, solve
-from constructions.analytic_centres import (AnalyticCentre, centre_error, instant_centre,
+from tarsim.constructions import geometry as g
+from tarsim.constructions.reference.solver import Kinematics, SingularPosition, solve
+from tarsim.constructions.reference.centres import (AnalyticCentre, centre_error, instant_centre,
                                             mechanism_size, tolerance)
-from constructions.assembly import Assembly, assemble
-from constructions.centres import ILL_CONDITIONED, Centres, locate_centres, omega_ratio
-from constructions.errors import DegenerateInput, TarsimError
-from constructions.model import Drive, Link, Mechanism, SlideKind, Units
-from constructions.record import slice as backward_slice
-from exercises.mechanism_file import load_mechanism, parse_mechanism
+from tarsim.constructions.assembly import Assembly, assemble
+from tarsim.constructions.centres import ILL_CONDITIONED, Centres, locate_centres, omega_ratio
+from tarsim.constructions.errors import DegenerateInput, TarsimError
+from tarsim.constructions.model import Drive, Link, Mechanism, SlideKind, Units
+from tarsim.constructions.record import slice as backward_slice
+from tarsim.exercises.mechanism_file import load_mechanism, parse_mechanism
 from tests.common import (crank_shaper, four_bar, four_bar_toml, offset_slider_crank,
                           scotch_yoke, slotted_lever_p37)
 

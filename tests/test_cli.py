@@ -16,10 +16,10 @@ import sys
 import pytest
 from click.testing import CliRunner
 
-from constructions.errors import RenderError
-from exercises.cli import cli
+from tarsim.constructions.errors import RenderError
+from tarsim.exercises.cli import cli
 from tests.common import four_bar_toml
-from graphics import export
+from tarsim.graphics import export
 
 FOUR_BAR = four_bar_toml(coupler=150, angle=180)
 # At θ2 = 180° A is at (−100, 0): |O4A| = 400 mm > AB + O4B = 150 + 200 mm.

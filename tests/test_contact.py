@@ -17,15 +17,15 @@ from pathlib import Path
 
 import pytest
 
-from constructions import analytic
-from constructions.assembly import assemble
-from constructions.model import (Contact, Drive, Link, Mechanism, Profile, SlideKind,
+from tarsim.constructions.reference import solver
+from tarsim.constructions.assembly import assemble
+from tarsim.constructions.model import (Contact, Drive, Link, Mechanism, Profile, SlideKind,
                                  contact_slide)
-from exercises.mechanism_file import load_mechanism, parse_mechanism
-from exercises.report import check_positions
-from graphics.diagram import draw_kinematic_diagram
-from graphics.figure import Circle, Path as FigPath
-from graphics.svg import to_svg
+from tarsim.exercises.mechanism_file import load_mechanism, parse_mechanism
+from tarsim.exercises.report import check_positions
+from tarsim.graphics.diagram import draw_kinematic_diagram
+from tarsim.graphics.figure import Circle, Path as FigPath
+from tarsim.graphics.svg import to_svg
 
 DATA = Path(__file__).parent / "data"
 E, R, OMEGA = 0.025, 0.040, 10.0
@@ -90,7 +90,7 @@ def test_a_contact_is_one_higher_pair():
 @pytest.mark.parametrize("deg", ANGLES)
 def test_a_centred_follower_rises_e_sin_theta_plus_r(deg):
     th = math.radians(deg)
-    kin = analytic.solve(at(cam("circular-cam"), deg))
+    kin = solver.solve(at(cam("circular-cam"), deg))
     # Round-off of a few ulps of 65 mm; the Jacobian is well conditioned everywhere.
     assert kin.points["F"] == pytest.approx((0.0, E * math.sin(th) + R), abs=1e-15)
     assert kin.velocities["F"] == pytest.approx((0.0, E * OMEGA * math.cos(th)), abs=1e-14)
@@ -104,7 +104,7 @@ def test_a_centred_follower_rises_e_sin_theta_plus_r(deg):
 def test_a_tilted_face_stays_r_from_the_centre(deg):
     # The face's upward normal n = (−sin 10°, cos 10°): n·F = n·C + r with F on x = −15 mm.
     th = math.radians(deg)
-    kin = analytic.solve(at(cam("offset-cam"), deg))
+    kin = solver.solve(at(cam("offset-cam"), deg))
     n = (-math.sin(TILT), math.cos(TILT))
     c = (E * math.cos(th), E * math.sin(th))
     vc = (-E * OMEGA * math.sin(th), E * OMEGA * math.cos(th))

@@ -20,15 +20,15 @@ from pathlib import Path
 
 import pytest
 
-from constructions.analytic import solve
-from constructions.analytic_centres import centre_error, instant_centre, tolerance
-from constructions.assembly import assemble
-from constructions.centres import locate_centres, omega_ratio
-from constructions.errors import InputError, TarsimError
-from constructions.model import Drive
-from constructions.velocity_by_centres import METHODS
-from constructions.velocity_by_components import velocity_by_components
-from exercises.mechanism_file import load_mechanism, parse_mechanism
+from tarsim.constructions.reference.solver import solve
+from tarsim.constructions.reference.centres import centre_error, instant_centre, tolerance
+from tarsim.constructions.assembly import assemble
+from tarsim.constructions.centres import locate_centres, omega_ratio
+from tarsim.constructions.errors import InputError, TarsimError
+from tarsim.constructions.model import Drive
+from tarsim.constructions.velocity_by_centres import METHODS
+from tarsim.constructions.velocity_by_components import velocity_by_components
+from tarsim.exercises.mechanism_file import load_mechanism, parse_mechanism
 
 DATA = Path(__file__).parent / "data"
 ANGLES = range(0, 360, 30)

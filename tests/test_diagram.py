@@ -17,13 +17,13 @@ from pathlib import Path as FilePath
 import pytest
 from shapely.geometry import Point as SPoint, Polygon
 
-from constructions.assembly import assemble
-from exercises.catalog import bundled
-from exercises.mechanism_file import load_mechanism, parse_mechanism
-from graphics.diagram import draw_kinematic_diagram, subscript
-from graphics.export import svg_to
-from graphics.figure import Circle, Path
-from graphics.svg import to_svg
+from tarsim.constructions.assembly import assemble
+from tarsim.exercises.catalog import bundled
+from tarsim.exercises.mechanism_file import load_mechanism, parse_mechanism
+from tarsim.graphics.diagram import draw_kinematic_diagram, subscript
+from tarsim.graphics.export import svg_to
+from tarsim.graphics.figure import Circle, Path
+from tarsim.graphics.svg import to_svg
 
 SVG = "{http://www.w3.org/2000/svg}"
 DATA = FilePath(__file__).parent / "data"
@@ -218,10 +218,10 @@ def test_same_input_gives_byte_identical_svg(drawn):
 
 
 def test_svg_does_not_depend_on_the_hash_seed():
-    code = ("import sys; from exercises.catalog import bundled; "
-            "from exercises.mechanism_file import load_mechanism; "
-            "from constructions.assembly import assemble; "
-            "from graphics.diagram import draw_kinematic_diagram; from graphics.svg import to_svg; "
+    code = ("import sys; from tarsim.exercises.catalog import bundled; "
+            "from tarsim.exercises.mechanism_file import load_mechanism; "
+            "from tarsim.constructions.assembly import assemble; "
+            "from tarsim.graphics.diagram import draw_kinematic_diagram; from tarsim.graphics.svg import to_svg; "
             "sys.stdout.buffer.write(to_svg(draw_kinematic_diagram(assemble("
             "load_mechanism(bundled()['slotted-lever-p37'])))).encode())")
     runs = [subprocess.run([sys.executable, "-c", code], capture_output=True, check=True,
@@ -444,8 +444,8 @@ def test_a_lever_with_its_block_behind_the_pivot_runs_through_the_pivot_to_the_b
 
 def test_a_plates_tint_lies_under_every_construction_line():
     """A Kennedy line across the coupler plate shows through it: the tint is drawn first."""
-    from constructions.centres import locate_centres
-    from graphics.scene import draw_scene
+    from tarsim.constructions.centres import locate_centres
+    from tarsim.graphics.scene import draw_scene
     asm = assemble(load_mechanism(bundled()["hinkle-four-bar"]))
     locate_centres(asm)
     refs = [r for r in asm.construction.steps if r.startswith(("I:", "K:"))]

@@ -16,8 +16,8 @@ import pytest
 from hypothesis import assume, given
 from hypothesis import strategies as st
 
-from constructions.errors import DegenerateInput, NoIntersection
-from constructions.geometry import (
+from tarsim.constructions.errors import DegenerateInput, NoIntersection
+from tarsim.constructions.geometry import (
     Branch, Circle, Line, Point, distance, intersect_circles, intersect_line_circle,
     intersect_lines, lay_off, line_through, midpoint, parallel_through, perpendicular_through,
     project_onto, rotate_about, side_of,

@@ -16,15 +16,15 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from constructions.analytic_limits import limit_reference
-from constructions.errors import InputError, TarsimError
-from constructions.limit_positions import draw_limit_positions, limit_kind
-from constructions.rotatability import class_by_rotation, length_range, length_range_by_rotation
-from exercises.catalog import resolve
-from exercises.exercise_file import load_exercise, parse_exercise
-from exercises.overall import solve_overall
-from exercises.solution_files import solve_all
-from graphics.scene import draw_scene, numbered_steps
+from tarsim.constructions.reference.limits import limit_reference
+from tarsim.constructions.errors import InputError, TarsimError
+from tarsim.constructions.limit_positions import draw_limit_positions, limit_kind
+from tarsim.constructions.reference.rotatability import class_by_rotation, length_range, length_range_by_rotation
+from tarsim.exercises.catalog import resolve
+from tarsim.exercises.exercise_file import load_exercise, parse_exercise
+from tarsim.exercises.overall import solve_overall
+from tarsim.exercises.solution_files import solve_all
+from tarsim.graphics.scene import draw_scene, numbered_steps
 from tests.common import badge_numbers, four_bar_toml
 
 SLIDER_CRANK = """
@@ -262,7 +262,7 @@ def test_solution_pdf_has_a_page_per_figure(tmp_path):
     pytest.importorskip("cairosvg")
     from pypdf import PdfReader
 
-    from exercises.solution_files import write_solution
+    from tarsim.exercises.solution_files import write_solution
     ex = load_exercise(resolve("slotted-lever-p37"))
     _, _, files = solve_all(ex)
     write_solution(files, tmp_path)

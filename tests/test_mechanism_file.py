@@ -9,8 +9,8 @@ import math
 
 import pytest
 
-from constructions.errors import InputError, TarsimError
-from exercises.mechanism_file import load_mechanism, parse_mechanism
+from tarsim.constructions.errors import InputError, TarsimError
+from tarsim.exercises.mechanism_file import load_mechanism, parse_mechanism
 
 FILE = "bench.toml"
 

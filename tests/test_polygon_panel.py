@@ -19,17 +19,18 @@ import re
 
 import pytest
 
-from constructions import analytic, geometry as g
-from constructions.assembly import assemble
-from constructions.errors import TarsimError
-from constructions.model import Drive, Units
-from constructions.record import Construction, Panel, Role
-from constructions.velocity_polygon import draw_velocity_polygon
-from graphics.figure import Circle, Path, Text
-from graphics.labels import typeset
-from graphics.polygon_panel import POLYGON_BOX, draw_polygon_panel
-from graphics.scene import numbered_steps
-from graphics.svg import to_svg
+from tarsim.constructions import geometry as g
+from tarsim.constructions.reference import solver
+from tarsim.constructions.assembly import assemble
+from tarsim.constructions.errors import TarsimError
+from tarsim.constructions.model import Drive, Units
+from tarsim.constructions.record import Construction, Panel, Role
+from tarsim.constructions.velocity_polygon import draw_velocity_polygon
+from tarsim.graphics.figure import Circle, Path, Text
+from tarsim.graphics.labels import typeset
+from tarsim.graphics.polygon_panel import POLYGON_BOX, draw_polygon_panel
+from tarsim.graphics.scene import numbered_steps
+from tarsim.graphics.svg import to_svg
 from tests.common import badge_numbers, coupler_four_bar, crank_shaper
 
 SHAPER_T = math.pi / 2 - 2.34       # seed 003 §2: t = 2.34 s, θ2 = 90° − t, ω2 = −1 rad/s
@@ -90,13 +91,13 @@ def shaper_acceleration(theta2=SHAPER_T, scale=1.0):
     A_B5 = A_B4 + Aᶜ_B5/B4 + Aˢ_B5/B4 with A_B5 along the ram's guide.
     """
     mech = crank_shaper(theta2)
-    kin = analytic.solve(mech)
+    kin = solver.solve(mech)
     P, w4 = kin.points, kin.omegas[4]
     cor_a, cor_b = kin.slide_rates[0].coriolis, kin.slide_rates[2].coriolis
     b = _Builder(scale)
     slot = b.space_line("s:O4A", P["O4"], P["A"])
     guide = b.space_line("s:guide", (0.0, 0.38), (1.0, 0.38))
-    b.lay("ap:tip:A2", "ap:o_a", analytic.point_acceleration(kin, mech, 2, "A"), label="a2′")
+    b.lay("ap:tip:A2", "ap:o_a", solver.point_acceleration(kin, mech, 2, "A"), label="a2′")
     b.lay("ap:n:A4", "ap:o_a", _times(-w4 * w4, _sub(P["A"], P["O4"])))
     b.act("ap:A4:t", "perpendicular_through", "ap:n:A4", slot)
     b.lay("ap:k:A", "ap:tip:A2", _times(-1.0, cor_a))
@@ -126,7 +127,7 @@ def four_bar_acceleration(theta2=math.radians(60), omega2=2.0, alpha2=3.0, scale
     """The coupler four-bar's polygon: normal and tangential components, d′ by the image."""
     base = coupler_four_bar(theta2, omega2=omega2)
     mech = base.with_drive(Drive(2, theta2, omega2, alpha2))
-    kin = analytic.solve(mech)
+    kin = solver.solve(mech)
     P, w = kin.points, kin.omegas
     b = _Builder(scale)
     ab = b.space_line("s:AB", P["A"], P["B"])

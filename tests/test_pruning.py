@@ -11,9 +11,9 @@ import xml.etree.ElementTree as ET
 
 import pytest
 
-from exercises.catalog import bundled
-from exercises.exercise_file import load_exercise, parse_exercise
-from exercises.solution_files import solve_to_files
+from tarsim.exercises.catalog import bundled
+from tarsim.exercises.exercise_file import load_exercise, parse_exercise
+from tarsim.exercises.solution_files import solve_to_files
 
 SVG = "{http://www.w3.org/2000/svg}"
 SUBSCRIPT = str.maketrans("₀₁₂₃₄₅₆₇₈₉", "0123456789")

@@ -7,11 +7,11 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from constructions import record
-from constructions.errors import GeometryError, NoIntersection, TarsimError
-from constructions.geometry import Circle, Line, Point, Segment, intersect_circles, line_through
-from constructions.measures import Angle, Dimension
-from constructions.record import VERBS, Construction, Panel, Role, Step, replay, toposort
+from tarsim.constructions import record
+from tarsim.constructions.errors import GeometryError, NoIntersection, TarsimError
+from tarsim.constructions.geometry import Circle, Line, Point, Segment, intersect_circles, line_through
+from tarsim.constructions.measures import Angle, Dimension
+from tarsim.constructions.record import VERBS, Construction, Panel, Role, Step, replay, toposort
 
 
 def _give(c, ref, x, y):

@@ -13,21 +13,21 @@ from dataclasses import replace
 
 import pytest
 
-from constructions.analytic import solve
-from constructions.assembly import assemble
-from constructions.centres import locate_centres
-from constructions.errors import TarsimError
-from constructions.record import Role, slice as backward, toposort
-from constructions.velocity_by_centres import velocity_by_radius_rotation
-from exercises.catalog import bundled
-from exercises.mechanism_file import load_mechanism
-from graphics.circle_diagram import draw_circle_diagram, triangle_text
-from graphics.diagram import draw_kinematic_diagram
-from graphics.figure import Figure, Path, Text
-from graphics.labels import typeset
-from graphics.scene import (centre_steps, choose_velocity_scale, draw_scene, line_kind,
+from tarsim.constructions.reference.solver import solve
+from tarsim.constructions.assembly import assemble
+from tarsim.constructions.centres import locate_centres
+from tarsim.constructions.errors import TarsimError
+from tarsim.constructions.record import Role, slice as backward, toposort
+from tarsim.constructions.velocity_by_centres import velocity_by_radius_rotation
+from tarsim.exercises.catalog import bundled
+from tarsim.exercises.mechanism_file import load_mechanism
+from tarsim.graphics.circle_diagram import draw_circle_diagram, triangle_text
+from tarsim.graphics.diagram import draw_kinematic_diagram
+from tarsim.graphics.figure import Figure, Path, Text
+from tarsim.graphics.labels import typeset
+from tarsim.graphics.scene import (centre_steps, choose_velocity_scale, draw_scene, line_kind,
                             numbered_steps)
-from graphics.svg import to_svg
+from tarsim.graphics.svg import to_svg
 from tests.common import four_bar, offset_slider_crank
 
 SVG = "{http://www.w3.org/2000/svg}"

@@ -11,10 +11,10 @@ import re
 import pytest
 from click.testing import CliRunner
 
-from constructions import analytic
-from exercises.cli import cli
-from exercises.exercise_file import parse_exercise
-from exercises.solution import solve_exercise
+from tarsim.constructions.reference import solver
+from tarsim.exercises.cli import cli
+from tarsim.exercises.exercise_file import parse_exercise
+from tarsim.exercises.solution import solve_exercise
 from tests.common import four_bar_toml
 
 ASK = '\n[ask]\nfind = {find}\nmethods = {methods}\n'
@@ -37,7 +37,7 @@ def run(*args):
 def test_every_asked_quantity_matches_the_analytic_solver(angle):
     ex = parse_exercise(exercise_text(angle=angle), "fb.toml", "fb")
     sol = solve_exercise(ex)
-    kin = analytic.solve(ex.mechanism)
+    kin = solver.solve(ex.mechanism)
     assert len([q for q in sol.quantities if q.startswith("I")]) == 6
     assert sol.failures == []
     for n in (3, 4):
@@ -45,7 +45,7 @@ def test_every_asked_quantity_matches_the_analytic_solver(angle):
             kin.omegas[n], rel=1e-9, abs=1e-12)
     v = sol.quantities["V_B"]
     assert set(v.alternatives) == {"parallel-line", "components"}
-    ref = analytic.point_velocity(kin, ex.mechanism, 4, "B")
+    ref = solver.point_velocity(kin, ex.mechanism, 4, "B")
     for q in [v, *v.alternatives.values()]:
         assert q.value["vector"] == pytest.approx(list(ref), rel=1e-9, abs=1e-12)
 
@@ -61,7 +61,7 @@ def test_peers_benchmark_omegas():
 def test_crank_shaper_ram_at_t_2_34_s():
     # 003 §2: at t = 2.34 s (θ2 = 90° − 2.34 rad, ω2 = 1 rad/s cw) ṗ = −189.192 mm/s and
     # ω4 = 0.19212, printed to 6 and 5 digits.
-    from exercises.catalog import resolve
+    from tarsim.exercises.catalog import resolve
     theta = math.degrees(math.pi / 2 - 2.34)
     text = resolve("crank-shaper").read_text(encoding="utf-8").replace("angle = 90",
                                                                        f"angle = {theta!r}")
@@ -74,7 +74,7 @@ def test_crank_shaper_ram_at_t_2_34_s():
 
 def test_dead_centre_slider_velocity_is_zero_and_checked():
     # 000-part1 §3.8 Q1: at dead centre I13 ≡ I34 and I24 ≡ I12; the slider is at rest.
-    from exercises.catalog import resolve
+    from tarsim.exercises.catalog import resolve
     text = (resolve("offset-slider-crank").read_text(encoding="utf-8")
             .replace("offset = 20", "offset = 0").replace("angle = 45", "angle = 0"))
     sol = solve_exercise(parse_exercise(text, "sc.toml", "sc"))
@@ -176,8 +176,8 @@ def test_asking_for_one_velocity_draws_no_unused_centres(tmp_path):
 
 
 def test_bundled_examples_solve_and_check():
-    from exercises.catalog import bundled
-    from exercises.exercise_file import load_exercise
+    from tarsim.exercises.catalog import bundled
+    from tarsim.exercises.exercise_file import load_exercise
     for name, path in bundled().items():
         sol = solve_exercise(load_exercise(path, name))
         assert sol.failures == [], name
@@ -187,9 +187,9 @@ def test_bundled_examples_solve_and_check():
 def test_a_leftward_vector_reads_180_degrees_in_both_columns():
     # Whitworth's ram acceleration points left; the analytic one has a y of rounding
     # noise below zero, which atan2 would give as −180°.
-    from exercises.catalog import resolve
-    from exercises.exercise_file import load_exercise
-    from exercises.solution_files import solve_to_files
+    from tarsim.exercises.catalog import resolve
+    from tarsim.exercises.exercise_file import load_exercise
+    from tarsim.exercises.solution_files import solve_to_files
     _, files = solve_to_files(load_exercise(resolve("whitworth")))
     row = next(r for r in files["steps.md"].splitlines() if r.startswith("| A_C |"))
     assert row.count("211.482 mm/s² at 180°") == 2

@@ -11,11 +11,11 @@ import re
 import pytest
 from click.testing import CliRunner
 
-from constructions import analytic
-from exercises.catalog import resolve
-from exercises.cli import cli
-from exercises.exercise_file import load_exercise, parse_exercise
-from exercises.solution import solve_positions
+from tarsim.constructions.reference import solver
+from tarsim.exercises.catalog import resolve
+from tarsim.exercises.cli import cli
+from tarsim.exercises.exercise_file import load_exercise, parse_exercise
+from tarsim.exercises.solution import solve_positions
 from tests.common import four_bar_toml
 
 T = 2.34  # s: the course project's hand-solved instant, θ2 = 90° − 2.34 rad
@@ -84,7 +84,7 @@ def test_every_polygon_number_agrees_with_the_analytic_solver(shaper):
         ap = s.acceleration_polygon
         for name, link in (("A", 2), ("A4", 4), ("B", 5), ("B4", 4)):
             point = name[0]
-            ref = analytic.point_acceleration(kin, m, link, point)
+            ref = solver.point_acceleration(kin, m, link, point)
             assert ap.acceleration(name) == pytest.approx(ref, rel=1e-9, abs=1e-12)
         for n in (3, 4, 5):
             assert ap.alphas[n] == pytest.approx(kin.alphas[n], rel=1e-9, abs=1e-12)
@@ -96,8 +96,8 @@ def test_relative_velocity_and_acceleration_of_the_coupler():
     ex = four_bar_exercise('["V_B/A", "A_B/A", "alpha3", "alpha4", "omega3"]', alpha=5)
     s = solve_positions(ex)[0]
     m, kin = ex.mechanism, s.kinematics
-    vb, va = (analytic.point_velocity(kin, m, 3, p) for p in "BA")
-    ab, aa = (analytic.point_acceleration(kin, m, 3, p) for p in "BA")
+    vb, va = (solver.point_velocity(kin, m, 3, p) for p in "BA")
+    ab, aa = (solver.point_acceleration(kin, m, 3, p) for p in "BA")
     q = s.quantities
     assert q["V_B/A"].value["vector"] == pytest.approx([vb[0] - va[0], vb[1] - va[1]], rel=1e-9)
     assert q["A_B/A"].value["vector"] == pytest.approx([ab[0] - aa[0], ab[1] - aa[1]], rel=1e-9)
@@ -209,6 +209,6 @@ def test_an_asked_relative_vector_is_drawn_from_one_tip_to_the_other_and_named(a
     drawn = poly.between(*step.inputs)
     assert sol.quantities[asked].value["vector"] == pytest.approx(list(drawn), abs=1e-15)
     kin, m = sol.kinematics, sol.exercise.mechanism
-    read = analytic.point_velocity if prefix == "vp" else analytic.point_acceleration
+    read = solver.point_velocity if prefix == "vp" else solver.point_acceleration
     ref = [b - a for a, b in zip(read(kin, m, 3, "A"), read(kin, m, 3, "B"))]
     assert drawn == pytest.approx(ref, rel=1e-12, abs=1e-12)

@@ -14,13 +14,13 @@ import xml.etree.ElementTree as ET
 import pytest
 from click.testing import CliRunner
 
-from constructions.errors import AssemblyError, InputError
-from exercises.catalog import resolve
-from exercises.cli import cli
-from exercises.exercise_file import load_exercise
-from exercises.sweep import pick_output, sweep_exercise
-from exercises.sweep_files import sweep_to_files
-from graphics.plot import PlotMark, Series, draw_line_plot, nice_ticks
+from tarsim.constructions.errors import AssemblyError, InputError
+from tarsim.exercises.catalog import resolve
+from tarsim.exercises.cli import cli
+from tarsim.exercises.exercise_file import load_exercise
+from tarsim.exercises.sweep import pick_output, sweep_exercise
+from tarsim.exercises.sweep_files import sweep_to_files
+from tarsim.graphics.plot import PlotMark, Series, draw_line_plot, nice_ticks
 from tests.common import four_bar_toml
 
 R1, R2, H = 500.0, 180.0, 380.0
@@ -186,7 +186,7 @@ def test_a_link_that_turns_fully_is_shown_in_one_turn():
 
 
 def _exercise_text(text):
-    from exercises.exercise_file import parse_exercise
+    from tarsim.exercises.exercise_file import parse_exercise
     return parse_exercise(text, "m.toml", "m")
 
 

@@ -15,16 +15,16 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from constructions import analytic
-from constructions import geometry as g
-from constructions.assembly import Assembly, assemble
-from constructions.errors import AssemblyError, TarsimError
-from constructions.model import Drive, Link, Mechanism, Slide, SlideKind, Units
-from constructions.record import Construction, Role
-from constructions.record import slice as backward_slice
-from constructions.velocity_by_components import velocity_by_components
-from exercises.catalog import bundled
-from exercises.mechanism_file import load_mechanism, parse_mechanism
+from tarsim.constructions.reference import solver
+from tarsim.constructions import geometry as g
+from tarsim.constructions.assembly import Assembly, assemble
+from tarsim.constructions.errors import AssemblyError, TarsimError
+from tarsim.constructions.model import Drive, Link, Mechanism, Slide, SlideKind, Units
+from tarsim.constructions.record import Construction, Role
+from tarsim.constructions.record import slice as backward_slice
+from tarsim.constructions.velocity_by_components import velocity_by_components
+from tarsim.exercises.catalog import bundled
+from tarsim.exercises.mechanism_file import load_mechanism, parse_mechanism
 from tests.common import (coupler_four_bar, crank_shaper, four_bar, four_bar_toml,
                           offset_slider_crank, scotch_yoke, slotted_lever_p37)
 
@@ -56,7 +56,7 @@ def hand_assembled(mech, guides):
     """
     c = Construction()
     points = {n: c.give(f"P:{n}", g.Point(*xy), label=n, sentence=f"Mark {n}.")
-              for n, xy in analytic.solve_positions(mech).items()}
+              for n, xy in solver.solve_positions(mech).items()}
     lines = {}
     for i, (through, (dx, dy)) in guides.items():
         line, _ = g.line_through(c.output(points[through]), g.Point(dx, dy, 0.0))
@@ -76,8 +76,8 @@ def check(asm, point, *, link=None, scale=2.0, cond_floor=0.0):
     """Run the method, compare with the analytic solver, check the record; return the result."""
     m = asm.mechanism
     r = velocity_by_components(asm, point, scale=scale, link=link)
-    kin = analytic.solve(m)
-    want = analytic.point_velocity(kin, m, r.link, point)
+    kin = solver.solve(m)
+    want = solver.point_velocity(kin, m, r.link, point)
     got = r.value(asm.construction)
     step = asm.construction[r.vector]
     assert step.conditioning > cond_floor
@@ -220,7 +220,7 @@ def test_seed_004_slider_crank_components():
     vx, vy = c.output("cm:B:narrow@B-C").vector
     signed = ((bx - px) * vy - (by - py) * vx) / ((bx - px) ** 2 + (by - py) ** 2) / scale
     assert signed == pytest.approx(-omega3, rel=1e-12)
-    assert analytic.solve(m).omegas[3] == pytest.approx(signed, rel=1e-12)
+    assert solver.solve(m).omegas[3] == pytest.approx(signed, rel=1e-12)
     assert "cm:B:narrow@B-C" in rd.steps and "cm:C:narrow@B-C" in rd.steps
 
 
@@ -370,8 +370,8 @@ def test_dead_point_is_one_line_naming_point_and_position():
                        match=r"^the component method cannot find V_B at θ2 = 0°: ") as e:
         velocity_by_components(asm, "B", scale=1.0)
     assert "\n" not in str(e.value) and "parallel" in str(e.value)
-    with pytest.raises(analytic.SingularPosition):
-        analytic.solve(m)
+    with pytest.raises(solver.SingularPosition):
+        solver.solve(m)
 
 
 @pytest.mark.parametrize("kwargs, words", [

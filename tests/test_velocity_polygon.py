@@ -15,14 +15,14 @@ from pathlib import Path
 
 import pytest
 
-from constructions import analytic
-from constructions.assembly import assemble
-from constructions.errors import AssemblyError, TarsimError
-from constructions.model import Drive
-from constructions.record import Panel, Role, replay
-from constructions.velocity_polygon import VelocityPolygon, draw_velocity_polygon, nice_scale
-from exercises.catalog import bundled
-from exercises.mechanism_file import load_mechanism
+from tarsim.constructions.reference import solver
+from tarsim.constructions.assembly import assemble
+from tarsim.constructions.errors import AssemblyError, TarsimError
+from tarsim.constructions.model import Drive
+from tarsim.constructions.record import Panel, Role, replay
+from tarsim.constructions.velocity_polygon import VelocityPolygon, draw_velocity_polygon, nice_scale
+from tarsim.exercises.catalog import bundled
+from tarsim.exercises.mechanism_file import load_mechanism
 from tests.common import (coupler_four_bar, crank_shaper, four_bar, offset_slider_crank,
                           scotch_yoke, slotted_lever_p37)
 
@@ -56,7 +56,7 @@ def reference(kin, mech, key):
     if key in kin.velocities:
         return kin.velocities[key]
     point, link = re.fullmatch(r"(.+?)(\d+)", key).groups()
-    return analytic.point_velocity(kin, mech, int(link), point)
+    return solver.point_velocity(kin, mech, int(link), point)
 
 
 def polygon(mech, **kw) -> tuple[VelocityPolygon, object]:
@@ -65,7 +65,7 @@ def polygon(mech, **kw) -> tuple[VelocityPolygon, object]:
 
 
 def worst_errors(mech, vp):
-    kin = analytic.solve(mech)
+    kin = solver.solve(mech)
     v_in = mech.input_speed
     tips = max(math.dist(vp.velocity(k), reference(kin, mech, k))
                / max(math.hypot(*reference(kin, mech, k)), v_in) for k in vp.tips)
@@ -80,7 +80,7 @@ def worst_errors(mech, vp):
 def test_every_tip_and_omega_matches_the_analytic_solver(name, theta):
     mech = MECHANISMS[name](theta)
     try:
-        analytic.solve(mech)
+        solver.solve(mech)
     except AssemblyError:
         # The Stephenson six-bar cannot close over part of the turn: the polygon's
         # assembly must refuse it too, in one line.
@@ -256,7 +256,7 @@ def test_dead_point_is_one_line_not_nan():
     assert "\n" not in msg and "dead point" in msg and "nan" not in msg.lower()
     assert e.value.joint == "B" and e.value.angle_deg == pytest.approx(90.0)
     with pytest.raises(AssemblyError):   # the analytic solver agrees it is singular
-        analytic.solve(mech)
+        solver.solve(mech)
 
 
 def test_near_dead_point_still_matches():

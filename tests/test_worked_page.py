@@ -10,15 +10,15 @@ import math
 
 import pytest
 
-from constructions.assembly import assemble
-from constructions.errors import TarsimError
-from constructions.record import Panel
-from constructions.velocity_polygon import draw_velocity_polygon
-from graphics.figure import Circle, Figure, Path, Text
-from graphics.polygon_panel import draw_polygon_panel
-from graphics.scene import draw_scene
-from graphics.svg import to_svg
-from graphics.worked_page import A3, compose_worked_page
+from tarsim.constructions.assembly import assemble
+from tarsim.constructions.errors import TarsimError
+from tarsim.constructions.record import Panel
+from tarsim.constructions.velocity_polygon import draw_velocity_polygon
+from tarsim.graphics.figure import Circle, Figure, Path, Text
+from tarsim.graphics.polygon_panel import draw_polygon_panel
+from tarsim.graphics.scene import draw_scene
+from tarsim.graphics.svg import to_svg
+from tarsim.graphics.worked_page import A3, compose_worked_page
 from tests.common import crank_shaper
 from tests.test_polygon_panel import SHAPER_T, boxes_overlap, draw_acceleration, shaper_acceleration
 

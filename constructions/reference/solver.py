@@ -30,22 +30,19 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .errors import AssemblyError, InputError
-from .model import Arc, Mechanism, Slide, SlideKind
+from ..errors import AssemblyError, InputError
+from ..model import Arc, Mechanism, Slide, SlideKind
 
 __all__ = [
     "Kinematics",
     "SlideRate",
-    "GrashofResult",
     "SingularPosition",
     "SINGULAR_RCOND",
     "solve",
     "solve_positions",
     "point_velocity",
     "point_acceleration",
-    "dof",
-    "grashof",
-    "grashof_class",
+    "constraint_jacobian",
 ]
 
 _EPS = float(np.finfo(float).eps)
@@ -112,23 +109,6 @@ class Kinematics:
     origin_accelerations: dict[int, tuple[float, float]]
 
 
-@dataclass(frozen=True, slots=True)
-class GrashofResult:
-    """Grashof class of a 4R four-bar.
-
-    ``kind`` is ``"crank-rocker"``, ``"double-crank"``, ``"double-rocker"``,
-    ``"change-point"`` or ``"triple-rocker"``; ``is_grashof`` is S + L ≤ P + Q;
-    ``shortest`` is the number of the shortest link; ``links`` and ``lengths`` run
-    round the loop (ground, input, coupler, output); ``margin`` is (P + Q) − (S + L).
-    """
-
-    kind: str
-    is_grashof: bool
-    shortest: int
-    links: tuple[int, int, int, int]
-    lengths: tuple[float, float, float, float]
-    margin: float
-
 
 def _rot(phi: float) -> np.ndarray:
     c, s = math.cos(phi), math.sin(phi)
@@ -184,52 +164,11 @@ def _check(mech: Mechanism) -> None:
         if a.link == a.guide_link or not a.radius > 0.0:
             raise InputError(f"{a.label}: an arc joins two links at a positive radius",
                              file=mech.source or None)
-    n = dof(mech)
+    n = mech.mobility()[0]
     if n != 1:
         raise AssemblyError(f"the mechanism has {n} degrees of freedom by Grübler; the analytic "
                             f"solver needs exactly one (one input)", link=mech.drive.link)
 
-
-def dof(mech: Mechanism) -> int:
-    """Return the mobility by Grübler's count ``3(n − 1) − 2 F1 − F2``.
-
-    A pin shared by K links counts as K − 1 lower pairs, a ``BLOCK`` slide as one
-    lower pair and a ``PIN`` slide (pin in a slot) as one higher pair.
-
-    Examples
-    --------
-    A four-bar has 4 links and 4 pins:
-
-    >>> from constructions.model import Drive, Link, Mechanism
-    >>> m = Mechanism((Link(1, (("O2", (0, 0)), ("O4", (3, 0)))),
-    ...                Link(2, (("O2", (0, 0)), ("A", (1, 0)))),
-    ...                Link(3, (("A", (0, 0)), ("B", (3, 0)))),
-    ...                Link(4, (("O4", (0, 0)), ("B", (2, 0))))), Drive(2, 0.0))
-    >>> dof(m)
-    1
-    """
-    f1 = sum(max(0, len(mech.links_at(n)) - 1) for n in mech.point_names)
-    f1 += sum(1 for s in mech.slides if s.kind is SlideKind.BLOCK or s.rolling)
-    f2 = sum(1 for s in mech.slides if s.kind is SlideKind.PIN and not s.rolling)
-    f2 += len(mech.pin_arcs)
-    return 3 * (len(mech.links) - 1) - 2 * f1 - f2
-
-
-def mobility_by_rank(mech: Mechanism) -> int:
-    """Return the mobility as the nullity of the loop equations' Jacobian at this position.
-
-    Independent of Grübler's count (:func:`dof`): the columns are the moving links'
-    x, y, φ, the rows every joint's constraints without the input's. A redundant
-    constraint (a parallelogram's extra link) or a joint that does not constrain
-    makes the two differ.
-    """
-    system, q = _start(mech)
-    jac = system.scaled(system.jacobian(q))[:-1]        # the last row is the input's
-    if jac.size == 0:
-        return 3 * len(system.moving)
-    sv = np.linalg.svd(jac, compute_uv=False)
-    rank = int(np.sum(sv > SINGULAR_RCOND * sv[0])) if sv[0] > 0.0 else 0
-    return jac.shape[1] - rank
 
 
 # ----------------------------------------------------------------------------- closed form
@@ -643,6 +582,16 @@ def _singular(system: _System, jac: np.ndarray) -> tuple[float, SingularPosition
         link=free[0], angle_deg=deg)
 
 
+def constraint_jacobian(mech: Mechanism) -> np.ndarray:
+    """The length-scaled Jacobian of every joint's constraints at ``mech``'s position.
+
+    Columns are the moving links' x, y, φ; rows every constraint but the input's,
+    so its nullity is the mechanism's mobility (:mod:`.mobility`).
+    """
+    system, q = _start(mech)
+    return system.scaled(system.jacobian(q))[:-1]        # the last row is the input's
+
+
 def _start(mech: Mechanism) -> tuple[_System, np.ndarray]:
     """The loop equations and the closed-form start vector of body coordinates."""
     _check(mech)
@@ -717,7 +666,7 @@ def solve(mech: Mechanism) -> Kinematics:
     --------
     A parallelogram four-bar (ground and coupler 4, crank and rocker 3) at θ2 = 90°:
 
-    >>> from constructions.model import Drive, Link, Mechanism
+    >>> from tarsim.constructions.model import Drive, Link, Mechanism
     >>> import math
     >>> m = Mechanism((Link(1, (("O2", (0, 0)), ("O4", (4, 0)))),
     ...                Link(2, (("O2", (0, 0)), ("A", (3, 0)))),
@@ -856,59 +805,3 @@ def point_acceleration(kin: Kinematics, mech: Mechanism, link: int,
     """
     return _acceleration(_where(kin, mech, link, point), kin.origins[link],
                          kin.origin_accelerations[link], kin.omegas[link], kin.alphas[link])
-
-
-# ----------------------------------------------------------------------------- Grashof
-
-def grashof(lengths, *, links: tuple[int, int, int, int] = (1, 2, 3, 4)) -> GrashofResult:
-    """Classify a four-bar by Grashof's rule from its lengths in loop order.
-
-    ``lengths`` are (ground, input, coupler, output). With S + L < P + Q the
-    shortest link decides: the ground gives a double-crank, a link next to the
-    ground a crank-rocker, the coupler a (Grashof) double-rocker. S + L = P + Q (to
-    a relative 1e-12) is a change-point mechanism; S + L > P + Q a triple-rocker.
-
-    Examples
-    --------
-    >>> grashof((0.3, 0.1, 0.25, 0.2)).kind
-    'crank-rocker'
-    >>> grashof((1.0, 2.0, 1.0, 2.0)).kind
-    'change-point'
-    """
-    ls = tuple(float(x) for x in lengths)
-    if len(ls) != 4 or min(ls) <= 0.0:
-        raise InputError("a four-bar needs four positive lengths")
-    order = sorted(range(4), key=lambda i: ls[i])
-    short, p, q, long_ = (ls[i] for i in order)
-    margin = (p + q) - (short + long_)
-    if abs(margin) <= 1e-12 * (p + q):
-        kind = "change-point"
-    elif margin < 0.0:
-        kind = "triple-rocker"
-    else:
-        kind = ("double-crank", "crank-rocker", "double-rocker", "crank-rocker")[order[0]]
-    return GrashofResult(kind, margin >= -1e-12 * (p + q), links[order[0]], links, ls, margin)
-
-
-def grashof_class(mech: Mechanism) -> GrashofResult | None:
-    """Classify ``mech`` by :func:`grashof` if it is a 4R four-bar, else return None."""
-    if len(mech.links) != 4 or mech.slides:
-        return None
-    pins = {n: mech.links_at(n) for n in mech.point_names if len(mech.links_at(n)) > 1}
-    if len(pins) != 4 or any(len(at) != 2 for at in pins.values()):
-        return None
-    ends = {k.number: [n for n in k.names if n in pins] for k in mech.links}
-    if any(len(v) != 2 for v in ends.values()):
-        return None
-    side = sorted(at[0] if at[1] == 1 else at[1] for at in pins.values() if 1 in at)
-    if len(side) != 2 or side[0] == side[1]:
-        return None
-    first = mech.drive.link if mech.drive.link in side else side[0]
-    last = side[1] if first == side[0] else side[0]
-    coupler = next(k for k in ends if k not in (1, first, last))
-    order = (1, first, coupler, last)
-
-    def span(k: int) -> float:
-        return mech.link(k).span(*ends[k])
-
-    return grashof(tuple(span(k) for k in order), links=order)

@@ -14,9 +14,9 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from .analytic import SingularPosition, solve
-from .errors import AssemblyError, InputError
-from .model import Drive, Mechanism
+from .solver import SingularPosition, solve
+from ..errors import AssemblyError, InputError
+from ..model import Drive, Mechanism
 
 __all__ = ["LimitReference", "limit_reference", "bisect_zero"]
 

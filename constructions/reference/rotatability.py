@@ -1,6 +1,6 @@
 """Which links of a four-bar turn fully, found by turning them: the check on Grashof's rule.
 
-:func:`~constructions.analytic.grashof` classifies a four-bar by its inequality
+:func:`grashof` classifies a four-bar by its inequality
 S + L ≤ P + Q. The course checks such answers by sweeping the crank round and
 asking whether the loop still closes (001 §3, "my check"). This module is that
 sweep, and the range of one length over which a class holds, found both ways:
@@ -11,13 +11,87 @@ from __future__ import annotations
 
 import math
 
-from .analytic import grashof, grashof_class
-from .model import Mechanism
+from dataclasses import dataclass
 
-__all__ = ["four_bar_spans", "turns_fully", "class_by_rotation", "length_range", "length_range_by_rotation"]
+from ..errors import InputError
+from ..model import Mechanism
+
+__all__ = ["GrashofResult", "grashof", "grashof_class", "four_bar_spans", "turns_fully", "class_by_rotation", "length_range", "length_range_by_rotation"]
 
 SAMPLES = 720
 """Crank angles per sweep; the diagonal's extremes lie on the ground line, which is sampled."""
+
+
+@dataclass(frozen=True, slots=True)
+class GrashofResult:
+    """Grashof class of a 4R four-bar.
+
+    ``kind`` is ``"crank-rocker"``, ``"double-crank"``, ``"double-rocker"``,
+    ``"change-point"`` or ``"triple-rocker"``; ``is_grashof`` is S + L ≤ P + Q;
+    ``shortest`` is the number of the shortest link; ``links`` and ``lengths`` run
+    round the loop (ground, input, coupler, output); ``margin`` is (P + Q) − (S + L).
+    """
+
+    kind: str
+    is_grashof: bool
+    shortest: int
+    links: tuple[int, int, int, int]
+    lengths: tuple[float, float, float, float]
+    margin: float
+
+
+def grashof(lengths, *, links: tuple[int, int, int, int] = (1, 2, 3, 4)) -> GrashofResult:
+    """Classify a four-bar by Grashof's rule from its lengths in loop order.
+
+    ``lengths`` are (ground, input, coupler, output). With S + L < P + Q the
+    shortest link decides: the ground gives a double-crank, a link next to the
+    ground a crank-rocker, the coupler a (Grashof) double-rocker. S + L = P + Q (to
+    a relative 1e-12) is a change-point mechanism; S + L > P + Q a triple-rocker.
+
+    Examples
+    --------
+    >>> grashof((0.3, 0.1, 0.25, 0.2)).kind
+    'crank-rocker'
+    >>> grashof((1.0, 2.0, 1.0, 2.0)).kind
+    'change-point'
+    """
+    ls = tuple(float(x) for x in lengths)
+    if len(ls) != 4 or min(ls) <= 0.0:
+        raise InputError("a four-bar needs four positive lengths")
+    order = sorted(range(4), key=lambda i: ls[i])
+    short, p, q, long_ = (ls[i] for i in order)
+    margin = (p + q) - (short + long_)
+    if abs(margin) <= 1e-12 * (p + q):
+        kind = "change-point"
+    elif margin < 0.0:
+        kind = "triple-rocker"
+    else:
+        kind = ("double-crank", "crank-rocker", "double-rocker", "crank-rocker")[order[0]]
+    return GrashofResult(kind, margin >= -1e-12 * (p + q), links[order[0]], links, ls, margin)
+
+
+def grashof_class(mech: Mechanism) -> GrashofResult | None:
+    """Classify ``mech`` by :func:`grashof` if it is a 4R four-bar, else return None."""
+    if len(mech.links) != 4 or mech.slides:
+        return None
+    pins = {n: mech.links_at(n) for n in mech.point_names if len(mech.links_at(n)) > 1}
+    if len(pins) != 4 or any(len(at) != 2 for at in pins.values()):
+        return None
+    ends = {k.number: [n for n in k.names if n in pins] for k in mech.links}
+    if any(len(v) != 2 for v in ends.values()):
+        return None
+    side = sorted(at[0] if at[1] == 1 else at[1] for at in pins.values() if 1 in at)
+    if len(side) != 2 or side[0] == side[1]:
+        return None
+    first = mech.drive.link if mech.drive.link in side else side[0]
+    last = side[1] if first == side[0] else side[0]
+    coupler = next(k for k in ends if k not in (1, first, last))
+    order = (1, first, coupler, last)
+
+    def span(k: int) -> float:
+        return mech.link(k).span(*ends[k])
+
+    return grashof(tuple(span(k) for k in order), links=order)
 
 
 def turns_fully(ground: float, crank: float, coupler: float, rocker: float) -> bool:

@@ -22,8 +22,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from .analytic import Kinematics
-from .errors import DegenerateInput
+from .solver import Kinematics
+from ..errors import DegenerateInput
 
 __all__ = ["AnalyticCentre", "instant_centre", "centre_error", "tolerance", "mechanism_size",
            "AT_INFINITY", "FAR"]
@@ -196,7 +196,7 @@ def centre_error(found, ref: AnalyticCentre, size: float) -> float:
 
     Examples
     --------
-    >>> from constructions.geometry import Point
+    >>> from tarsim.constructions.geometry import Point
     >>> centre_error(Point(6.0, 9.0), AnalyticCentre((6.0, 8.0), None), 1.0)
     0.1
     >>> centre_error(Point(0.0, 1.0, 0.0), AnalyticCentre(None, (0.0, 1.0)), 1.0)

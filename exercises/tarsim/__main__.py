@@ -1,0 +1,3 @@
+from tarsim.exercises.cli import cli
+
+cli(prog_name="tarsim")
