@@ -1,7 +1,9 @@
 """The error classes of tarsim: every failure a user can cause is one of these.
 
 Each ``__str__`` is a single line that says what is wrong, where, and how to fix
-it; the command line prints it after ``Error:`` and exits non-zero.
+it; the command line prints it after ``Error:`` and exits 1, or 3 for a
+:class:`CheckMismatch` (2 is click's, for a bad option). An error writing a figure
+is :class:`tarsim.graphics.export.RenderError`, a kind of :class:`TarsimError`.
 """
 
 from __future__ import annotations
@@ -14,7 +16,6 @@ __all__ = [
     "DegenerateInput",
     "AssemblyError",
     "CheckMismatch",
-    "RenderError",
 ]
 
 
@@ -76,8 +77,9 @@ class AssemblyError(TarsimError):
 
 
 class CheckMismatch(TarsimError):
-    """The construction and the analytic solution disagree beyond tolerance."""
+    """A constructed number disagrees with the analytic one beyond its tolerance."""
 
-
-class RenderError(TarsimError):
-    """A figure cannot be written in the format asked for (e.g. no libcairo)."""
+    def __init__(self, names: list[str]):
+        self.names = list(dict.fromkeys(names))
+        super().__init__(f"{', '.join(self.names)} disagree{'s' if len(self.names) == 1 else ''} "
+                         "with the analytic solution beyond tolerance")

@@ -1,8 +1,10 @@
 """The ``tarsim`` command line: a thin click layer over the library.
 
 Each command parses its arguments, makes one library call, writes its output and
-turns a :class:`~constructions.errors.TarsimError` into one line on stderr with a
-non-zero exit; no traceback reaches the user.
+turns a :class:`~tarsim.constructions.errors.TarsimError` into one line on stderr;
+no traceback reaches the user. The exit status is 1 for bad input, 2 for a bad
+option or argument (click's usage error) and 3 when a constructed number fails its
+check against the analytic solution.
 """
 
 from __future__ import annotations
@@ -16,18 +18,28 @@ from pathlib import Path
 
 import click
 
-from ..constructions.errors import TarsimError
+from ..constructions.errors import CheckMismatch, TarsimError
 from ..constructions.model import Drive, Mechanism
 
 __all__ = ["cli"]
 
 
+EXIT_CHECK_FAILED = 3
+"""The exit status when a constructed number disagrees with the analytic one."""
+
+
+class _CheckFailed(click.ClickException):
+    exit_code = EXIT_CHECK_FAILED
+
+
 def _fails_cleanly(fn):
-    """Map tarsim's errors to ``Error: …`` and exit code 1."""
+    """Map tarsim's errors to ``Error: …``: exit 3 for a failed check, else 1."""
     @functools.wraps(fn)
     def wrapper(*args, **kwargs):
         try:
             return fn(*args, **kwargs)
+        except CheckMismatch as e:
+            raise _CheckFailed(str(e)) from None
         except TarsimError as e:
             raise click.ClickException(str(e)) from None
     return wrapper
@@ -166,8 +178,9 @@ def solve(source, out_dir, angle, pdf):
       tarsim solve crank-shaper -o shaper      # θ2 = 90° and t = 2.34 s
       tarsim solve my-exercise.toml --angle 120 --no-pdf
 
-    The exit status is 2 if any constructed number disagrees with the analytic
-    one beyond the tolerance its conditioning allows.
+    The exit status is 3 if any constructed number disagrees with the analytic
+    one beyond the tolerance its conditioning allows (the files are written all
+    the same, so the disagreement can be seen); 1 for bad input.
     """
     from .solution_files import overall_text, solve_all, write_solution
     from ..graphics.export import cairo_missing
@@ -195,9 +208,7 @@ def solve(source, out_dir, angle, pdf):
     if reason:
         click.echo(f"PDF skipped: {reason}", err=True)
     if failures:
-        names = ", ".join(dict.fromkeys(failures))
-        click.echo(f"Error: {names} disagree with the analytic solution beyond tolerance", err=True)
-        raise SystemExit(2)
+        raise CheckMismatch(failures)
 
 
 @cli.command()

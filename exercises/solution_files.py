@@ -17,10 +17,9 @@ from pathlib import Path
 from ..constructions import geometry as g
 from ..constructions.assembly import assemble
 from ..constructions.centres import centre_ref
-from ..constructions.errors import RenderError
 from ..constructions.record import Panel, Ref, slice as backward_slice, toposort
 from ..graphics.circle_diagram import draw_circle_diagram
-from ..graphics.export import pdf_pages, svg_to, write_text
+from ..graphics.export import pdf_pages, RenderError, svg_to, write_text
 from ..graphics.figure import Figure, stack_pages
 from ..graphics.polygon_panel import draw_polygon_panel
 from ..graphics.scene import draw_scene, numbered_steps

@@ -12,9 +12,8 @@ import math
 import re
 from pathlib import Path
 
-from ..constructions.errors import RenderError
 from ..constructions.model import Mechanism
-from ..graphics.export import svg_to, write_text
+from ..graphics.export import RenderError, svg_to, write_text
 from ..graphics.figure import Figure
 from ..graphics.plot import CURVE_STYLES, PlotMark, Series, draw_line_plot
 from ..graphics.svg import to_svg

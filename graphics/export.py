@@ -12,14 +12,18 @@ import os
 import tempfile
 from pathlib import Path
 
-from ..constructions.errors import RenderError
+from ..constructions.errors import TarsimError
 
 from .figure import Figure
 from .svg import to_svg
 
-__all__ = ["FORMATS", "write_figure", "write_text", "svg_to", "cairo_missing", "pdf_pages"]
+__all__ = ["RenderError", "FORMATS", "write_figure", "write_text", "svg_to", "cairo_missing", "pdf_pages"]
 
 FORMATS = ("svg", "pdf", "png")
+
+
+class RenderError(TarsimError):
+    """A figure or file cannot be written: an unknown format, no libcairo, a folder that fails."""
 
 _NO_CAIRO = ("PDF and PNG output need the cairo library (libcairo2), which is not installed: "
              "install it (Debian/Ubuntu: apt-get install libcairo2) or write .svg instead")

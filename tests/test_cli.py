@@ -16,7 +16,7 @@ import sys
 import pytest
 from click.testing import CliRunner
 
-from tarsim.constructions.errors import RenderError
+from tarsim.graphics.export import RenderError
 from tarsim.exercises.cli import cli
 from tests.common import four_bar_toml
 from tarsim.graphics import export

@@ -194,3 +194,17 @@ def test_a_leftward_vector_reads_180_degrees_in_both_columns():
     row = next(r for r in files["steps.md"].splitlines() if r.startswith("| A_C |"))
     assert row.count("211.482 mm/s² at 180°") == 2
     assert "−180°" not in files["steps.md"] and "-180°" not in files["steps.md"]
+
+
+def test_a_failed_check_exits_3_and_still_writes_the_files(tmp_path, monkeypatch):
+    # A reference that disagrees with every drawn velocity: the check must say so.
+    from tarsim.constructions.reference import solver
+    monkeypatch.setattr(solver, "point_velocity", lambda *args: (9.0, 9.0))
+    path = tmp_path / "ex.toml"
+    path.write_text(exercise_text(), encoding="utf-8")
+    result = run("solve", path, "-o", tmp_path / "out", "--no-pdf")
+    assert result.exit_code == 3
+    assert result.stderr == ("Error: V_B disagrees with the analytic solution beyond "
+                             "tolerance\n")
+    assert "V_B      rel. error" in result.stdout and "FAILED" in result.stdout
+    assert (tmp_path / "out" / "results.json").exists()
