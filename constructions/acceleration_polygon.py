@@ -30,18 +30,12 @@ from dataclasses import dataclass, field
 from .assembly import Assembly
 from .coincident import Node
 from .errors import TarsimError
+from .narration import Number, Phrase, Quantity, Word, phrase
 from .polygon_walk import NOISE, DrawnPolygon, PolygonWalk, nice_scale, sense_of
-from .velocity_drawing import speed_text
 from .record import Construction, Panel, Ref, Role
 from .velocity_polygon import VelocityPolygon
 
-__all__ = ["AccelerationPolygon", "draw_acceleration_polygon", "accel_text"]
-
-
-
-def accel_text(a: float, units) -> str:
-    """An acceleration (m/s²) in the file's length unit: "535.6 mm/s²"."""
-    return f"{a / units.metres:.6g} {units.length}/s²"
+__all__ = ["AccelerationPolygon", "draw_acceleration_polygon"]
 
 
 @dataclass
@@ -178,8 +172,8 @@ class _Polygon(PolygonWalk):
                                    self.space_steps, self.c, aliases, self.coriolis,
                                    self.components)
 
-    def say(self, a: float) -> str:
-        return accel_text(a, self.m.units)
+    def say(self, a: float) -> Quantity:
+        return self.m.units.acceleration_said(a)
 
     def velocity(self, n: Node) -> tuple[float, float]:
         return (0.0, 0.0) if self.zero(n) else self.vp.velocity(self.name(n))
@@ -187,7 +181,7 @@ class _Polygon(PolygonWalk):
     def component(self, ref: Ref, start: Ref, end: Ref, label: str) -> None:
         """Draw a known or found component as an arrow (no sentence: the act before it said it)."""
         if math.dist(self.c.output(start).xy, self.c.output(end).xy) > 0.0:
-            self.c.draw(ref, "join", start, end, label=label, panel=self.panel)
+            self.c.draw(ref, "join", start, end, label=label, panel=self.panel, phrase=None)
             self.steps.append(ref)
             self.components[label] = ref
 
@@ -199,54 +193,51 @@ class _Polygon(PolygonWalk):
         x, o = Node(point), Node(pivot)
         X, r = self.name(x), k.span(pivot, point)
         line = self.space_line(o, x, d.link)
-        w = f"ω{d.link}"
+        radius = self.m.units.length_said(r)
         normal = self.act(
             f"ap:{X}:n", "lay_off", self.pole_ref, line, length=-d.omega ** 2 * r * self.scale,
-            sentence=f"From o_a lay off Aⁿ_{X} = {w}²·{pivot}{point} = ({abs(d.omega):.6g} "
-                     f"rad/s)² × {self.m.units.length_text(r)} = {self.say(d.omega ** 2 * r)} "
-                     f"parallel to {point}{pivot}, pointing from {point} toward {pivot} (the "
-                     "normal component).")
+            said=phrase("apolygon.input_normal", point=X, link=d.link, pivot=pivot, p=point,
+                        omega=Number(abs(d.omega)), radius=radius,
+                        accel=self.say(d.omega ** 2 * r)))
         self.component(f"ap:{X}:n:vec", self.pole_ref, normal, f"Aⁿ_{X}")
-        given = "given" if d.alpha_given else "not given, so taken as 0"
-        a = f"α{d.link}"
+        given = phrase("apolygon.given" if d.alpha_given else "apolygon.not_given")
         if d.alpha == 0.0:
             tip = self.act(f"ap:tip:{X}", "mark", normal, label=self.tip_name(X),
-                           sentence=f"{a} = 0 ({given}), so Aᵗ_{X} = {a}·{pivot}{point} = 0: "
-                                    f"{self.tip_name(X)} is at the end of Aⁿ_{X}.")
+                           said=phrase("apolygon.input_no_tangential", link=d.link, given=given,
+                                       point=X, pivot=pivot, p=point, tip=self.tip_name(X)))
         else:
             perp = self.act(f"ap:{X}:t:perp", "perpendicular_through", normal, line,
-                            sentence=f"Through its end draw a line ⟂ {pivot}{point} (the "
-                                     f"direction of Aᵗ_{X}).")
+                            said=phrase("apolygon.tangential_direction", pivot=pivot, p=point,
+                                        point=X))
             sense = "ccw" if d.alpha > 0 else "cw"
             tip = self.act(
                 f"ap:tip:{X}", "lay_off", normal, perp, length=d.alpha * r * self.scale,
                 label=self.tip_name(X),
-                sentence=f"Along it lay off Aᵗ_{X} = {a}·{pivot}{point} = {abs(d.alpha):.6g} "
-                         f"rad/s² × {self.m.units.length_text(r)} = "
-                         f"{self.say(abs(d.alpha) * r)}, in the sense of {a} ({sense}); its "
-                         f"end is {self.tip_name(X)}.")
+                said=phrase("apolygon.input_tangential", point=X, link=d.link, pivot=pivot,
+                            p=point, alpha=Number(abs(d.alpha)), radius=radius,
+                            accel=self.say(abs(d.alpha) * r), sense=Word(sense),
+                            tip=self.tip_name(X)))
             self.component(f"ap:{X}:t:vec", normal, tip, f"Aᵗ_{X}")
         self.known[x] = tip
 
     # ----- the lines that carry a tip ---------------------------------------------
-    def draw_locus(self, x: Node, locus: tuple) -> tuple[Ref, str]:
+    def draw_locus(self, x: Node, locus: tuple) -> tuple[Ref, Phrase]:
         kind, X = locus[0], self.name(x)
         if kind == "rel":
             return self.draw_relative(x, *locus[1:])
         if kind in ("guide", "glide"):
             i = locus[1]
-            why = (f"the guide of {X}" if kind == "guide" else
-                   f"the guide of link {locus[2]}, which slides on it without turning")
+            why = (phrase("polygon.why_guide", point=X) if kind == "guide" else
+                   phrase("polygon.why_glide", link=locus[2]))
             ref = self.act(f"ap:{X}:{kind}@{i}", "parallel_through", self.pole_ref,
                            self.asm.guides[i],
-                           sentence=f"Through o_a draw the parallel to {why} (the direction of "
-                                    f"A_{X}, as the guide is straight and fixed).")
-            return ref, "the parallel to the guide through o_a"
+                           said=phrase("apolygon.parallel_guide", why=why, point=X))
+            return ref, phrase("polygon.say_guide", pole="o_a")
         if kind == "curve":
             return self.draw_curve(x, *locus[1:])
         return self.draw_slot(x, *locus[1:])
 
-    def draw_relative(self, x: Node, k: Node, c: int) -> tuple[Ref, str]:
+    def draw_relative(self, x: Node, k: Node, c: int) -> tuple[Ref, Phrase]:
         """Aⁿ_X/K laid off from k′ toward K, then the line of Aᵗ_X/K ⟂ KX through it."""
         line = self.space_line(k, x, c)
         X, K = self.name(x), self.name(k)
@@ -259,25 +250,22 @@ class _Polygon(PolygonWalk):
         start = self.tip(k)
         if w == 0.0:
             ref = self.act(f"ap:{X}:t@{K}", "perpendicular_through", start, line,
-                           sentence=f"ω{c} = 0, so Aⁿ_{rel} = 0: through "
-                                    f"{self.tip_label(k)} draw a line ⟂ {kx} (the direction "
-                                    f"of Aᵗ_{rel}, length unknown).")
+                           said=phrase("apolygon.no_normal", link=c, rel=rel,
+                                       tip=self.tip_label(k), line=kx))
             self.normals.setdefault((x, c), []).append((k, start))
-            return ref, f"the line ⟂ {kx} through {self.tip_label(k)}"
+            return ref, phrase("polygon.say_perpendicular", line=kx, tip=self.tip_label(k))
         end = self.act(
             f"ap:{X}:n@{K}", "lay_off", start, line, length=-w * w * r * self.scale,
-            sentence=f"From {self.tip_label(k)} lay off Aⁿ_{rel} = ω{c}²·{kx} = "
-                     f"({abs(w):.6g} rad/s)² × {self.m.units.length_text(r)} = "
-                     f"{self.say(w * w * r)} parallel to {xk}, pointing from {x.point} toward "
-                     f"{k.point}.")
+            said=phrase("apolygon.normal", tip=self.tip_label(k), rel=rel, link=c, line=kx,
+                        omega=Number(abs(w)), length=self.m.units.length_said(r),
+                        accel=self.say(w * w * r), back=xk, x=x.point, k=k.point))
         self.component(f"ap:{X}:n@{K}:vec", start, end, f"Aⁿ_{rel}")
         ref = self.act(f"ap:{X}:t@{K}", "perpendicular_through", end, line,
-                       sentence=f"Through its end draw a line ⟂ {kx} (the direction of "
-                                f"Aᵗ_{rel}, length unknown).")
+                       said=phrase("apolygon.tangential_line", line=kx, rel=rel))
         self.normals.setdefault((x, c), []).append((k, end))
-        return ref, f"the line ⟂ {kx} through the end of Aⁿ_{rel}"
+        return ref, phrase("apolygon.say_tangential", line=kx, rel=rel)
 
-    def draw_slot(self, x: Node, other: Node, i: int) -> tuple[Ref, str]:
+    def draw_slot(self, x: Node, other: Node, i: int) -> tuple[Ref, Phrase]:
         """Coriolis 2ω_j·v_rel laid off from the other point's tip, then the slot's parallel."""
         j = self.m.slides[i].guide_link
         slider, carried, rel = self.curve_nodes(x, other)
@@ -285,13 +273,11 @@ class _Polygon(PolygonWalk):
         end = self.draw_coriolis(x, other, slider, carried, rel, j, self.asm.guide(i).direction,
                                  guide, None)
         ref = self.act(f"ap:{self.name(x)}:slot@{i}", "parallel_through", end, guide,
-                       sentence=f"Through its end draw the parallel to the slot of link {j} (the "
-                                f"direction of the sliding acceleration Aˢ_{rel}, length "
-                                "unknown).")
+                       said=phrase("apolygon.slot", link=j, rel=rel))
         self.slides_drawn.append((slider, carried, end, self.sign(x), f"Aˢ_{rel}"))
-        return ref, f"the parallel to the slot through the end of {self.signed('Aᶜ_' + rel, x)}"
+        return ref, phrase("apolygon.say_slot", component=self.signed("Aᶜ_" + rel, x))
 
-    def draw_curve(self, x: Node, other: Node, i: int) -> tuple[Ref, str]:
+    def draw_curve(self, x: Node, other: Node, i: int) -> tuple[Ref, Phrase]:
         """A pin P in a slot curved about K of link j (the notes §2.11–2.12).
 
         ``A_P = A_Pj + Aᶜ + Aⁿ + Aᵗ``: the Coriolis component 2ω_j × v_rel and the
@@ -315,17 +301,15 @@ class _Polygon(PolygonWalk):
         normal = u * u / a.radius
         end = self.act(
             f"ap:{X}:n@curve", "lay_off", first, line, length=-self.sign(x) * normal * self.scale,
-            sentence=f"From its end lay off the normal component of the relative path "
-                     f"Aⁿ_{rel} = V_{rel}²/ρ = ({speed_text(abs(u), self.m.units)})² ÷ "
-                     f"{self.m.units.length_text(a.radius)} = {self.say(normal)} parallel to "
-                     f"{Pn}{K}, pointing from {Pn} toward the centre of curvature {K}"
-                     f"{self.reversed(x)}.")
+            said=phrase("apolygon.curve_normal", rel=rel,
+                        speed=self.m.units.speed_said(abs(u)),
+                        radius=self.m.units.length_said(a.radius), accel=self.say(normal), p=Pn,
+                        k=K, reversed=self.reversed(x)))
         self.component(f"ap:{X}:n@curve:vec", first, end, self.signed(f"Aⁿ_{rel}", x))
         ref = self.act(f"ap:{X}:t@curve", "perpendicular_through", end, line,
-                       sentence=f"Through its end draw a line ⟂ {kp}, the tangent of the slot "
-                                f"(the direction of Aᵗ_{rel}, length unknown).")
+                       said=phrase("apolygon.curve_tangent", line=kp, rel=rel))
         self.slides_drawn.append((slider, carried, end, self.sign(x), f"Aᵗ_{rel}"))
-        return ref, f"the line ⟂ {kp} through the end of Aⁿ_{rel}"
+        return ref, phrase("apolygon.say_tangential", line=kp, rel=rel)
 
     def draw_coriolis(self, x: Node, other: Node, slider: Node, carried: Node, rel: str,
                       j: int, tangent: tuple[float, float], slot: Ref | None,
@@ -346,27 +330,26 @@ class _Polygon(PolygonWalk):
         stuck = abs(u) <= NOISE * self.m.input_speed
         cor = 0.0 if still or stuck else 2.0 * w * u
         if cor == 0.0:
-            why = (f"ω{j} = 0 (link {j} is at rest for this instant)" if still else
-                   f"V_{rel} = 0 (no sliding at this instant)")
+            why = (phrase("apolygon.still", link=j) if still else
+                   phrase("apolygon.stuck", rel=rel))
             end = self.act(f"ap:{X}:cor", "mark", start,
-                           sentence=f"The Coriolis component 2ω{j}·V_{rel} is zero, as {why}.")
+                           said=phrase("apolygon.coriolis_zero", link=j, rel=rel, why=why))
         else:
             if slot is not None:
                 along, turn = self.act(
                     f"ap:{X}:cor:perp", "perpendicular_through", start, slot,
-                    sentence=f"Through {O} draw a line ⟂ the slot of link {j} (the direction of "
-                             "the Coriolis component)."), 1.0
-                where = "Along it"
+                    said=phrase("apolygon.coriolis_direction", tip=O, link=j)), 1.0
+                where = phrase("apolygon.along_it")
             else:
                 (along, name), turn = normal_line, -1.0
-                where = f"From {O} along {name}"
+                where = phrase("apolygon.from_along", tip=O, line=name)
             end = self.act(
                 f"ap:{X}:cor", "lay_off", start, along,
                 length=turn * self.sign(x) * cor * self.scale,
-                sentence=f"{where} lay off the Coriolis component Aᶜ_{rel} = 2ω{j}·V_{rel} = "
-                         f"2 × {abs(w):.6g} rad/s × {speed_text(abs(u), self.m.units)} = "
-                         f"{self.say(abs(cor))}, in the direction of V_{rel} turned 90° the way "
-                         f"ω{j} turns ({'ccw' if w > 0 else 'cw'}){self.reversed(x)}.")
+                said=phrase("apolygon.coriolis", where=where, rel=rel, link=j,
+                            omega=Number(abs(w)), speed=self.m.units.speed_said(abs(u)),
+                            accel=self.say(abs(cor)), sense=Word("ccw" if w > 0 else "cw"),
+                            reversed=self.reversed(x)))
             self.component(f"ap:{X}:cor:vec", start, end, self.signed(f"Aᶜ_{rel}", x))
         self.coriolis[slider.point] = (start, end, self.sign(x))
         return end
@@ -384,8 +367,8 @@ class _Polygon(PolygonWalk):
     def signed(self, label: str, x: Node) -> str:
         return label if self.sign(x) > 0 else f"−{label}"
 
-    def reversed(self, x: Node) -> str:
-        return "" if self.sign(x) > 0 else ", reversed, as it is subtracted"
+    def reversed(self, x: Node) -> Phrase | None:
+        return None if self.sign(x) > 0 else phrase("apolygon.reversed")
 
     # ----- results ----------------------------------------------------------------
     def draw_results(self) -> dict[int, float]:
@@ -396,7 +379,7 @@ class _Polygon(PolygonWalk):
         (its part ⟂ the line joining them).
         """
         alphas: dict[int, float] = {}
-        said: dict[Node, list[str]] = {}
+        said: dict[Node, list[Phrase]] = {}
         later = []
         for (x, c), ends in self.normals.items():
             for k, end in ends:
@@ -429,11 +412,12 @@ class _Polygon(PolygonWalk):
             if self.zero(n):
                 continue
             X = self.name(n)
+            then = said.get(n)
             self.act(f"ap:A:{X}", "join", self.pole_ref, self.known[n], label=f"A_{X}",
                      role=Role.GIVEN if n == drive else Role.RESULT,
-                     sentence=" ".join([f"o_a {self.tip_name(X)} = A_{X} = "
-                                        f"{self.say(self.length(self.known[n]))}."]
-                                       + said.get(n, [])))
+                     said=phrase("apolygon.vector", tip=self.tip_name(X), point=X,
+                                 accel=self.say(self.length(self.known[n])),
+                                 then=phrase("then", sentences=tuple(then)) if then else None))
         return alphas
 
     def alpha_from_tangent(self, c: int) -> tuple[float, Node, str] | None:
@@ -455,7 +439,8 @@ class _Polygon(PolygonWalk):
         ax, ay = self.vector(end, self.known[x])
         alpha = (rx * ay - ry * ax) / (rx * rx + ry * ry)
         rel = self.name(x) if self.zero(k) else f"{self.name(x)}/{self.name(k)}"
-        return alpha, x, self.alpha_text(c, f"Aᵗ_{rel}", k, x, math.hypot(ax, ay), alpha)
+        return alpha, x, self.alpha_text(c, phrase("apolygon.what_tangential", rel=rel), k, x,
+                                         math.hypot(ax, ay), alpha)
 
     def alpha_from_pair(self, c: int, p: Node, q: Node) -> tuple[float, Node, str]:
         (px, py), (qx, qy) = self.xy(p), self.xy(q)
@@ -464,14 +449,15 @@ class _Polygon(PolygonWalk):
         alpha = (rx * ay - ry * ax) / (rx * rx + ry * ry)
         r = math.hypot(rx, ry)
         rel = self.name(q) if self.zero(p) else f"{self.name(q)}/{self.name(p)}"
-        return alpha, q, self.alpha_text(c, f"the part of A_{rel} ⟂ {p.point}{q.point}", p, q,
+        return alpha, q, self.alpha_text(c, phrase("apolygon.what_part", rel=rel,
+                                                   line=f"{p.point}{q.point}"), p, q,
                                          abs(alpha) * r, alpha)
 
-    def alpha_text(self, c: int, what: str, k: Node, x: Node, tangent: float,
-                   alpha: float) -> str:
+    def alpha_text(self, c: int, what: Phrase, k: Node, x: Node, tangent: float,
+                   alpha: float) -> Phrase:
         r = math.dist(self.xy(k), self.xy(x))
         sense = sense_of(alpha, math.hypot(self.m.drive.omega ** 2, self.m.drive.alpha))
         sense = "no angular acceleration" if sense == "at rest" else sense
-        return (f"α{c} = {what} / {k.point}{x.point} = {self.say(tangent)} ÷ "
-                f"{self.m.units.length_text(r)} = {abs(alpha):.6g} rad/s² ({sense}: the sense "
-                f"of {what} about {k.point}).")
+        return phrase("apolygon.alpha", link=c, what=what, line=f"{k.point}{x.point}",
+                      accel=self.say(tangent), length=self.m.units.length_said(r),
+                      alpha=Number(abs(alpha)), sense=Word(sense), about=k.point)

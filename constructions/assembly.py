@@ -22,19 +22,21 @@ from dataclasses import dataclass
 from . import geometry as g
 from .errors import AssemblyError, DegenerateInput, NoIntersection, TarsimError
 from .model import Arc, Mechanism, Slide, SlideKind
-from .record import VERBS, Construction, Ref, Role
+from .narration import Phrase, Word, narrate, phrase
+from .record import VERBS, Construction, Kind, Ref, Role
 
 __all__ = ["Assembly", "assemble", "point_ref"]
 
 
-def _arc_why(a: Arc) -> str:
-    """Why a point keeps its distance: "the roller's centre stays r1 + r2 from the cam's"."""
+def _arc_why(a: Arc) -> Phrase:
+    """Why a point keeps its distance: "the circles of links 3 and 2 touch: their centres
+    R and C stay r3 + r2 apart"."""
     c = a.contact
     if c is None:
-        return f"{a.point} runs in the curved slot of link {a.guide_link} about {a.centre}"
-    op = "+" if c.side == "outside" else "−"
-    return (f"the circles of links {c.circle.link} and {c.face.link} touch: their centres "
-            f"{a.point} and {a.centre} stay r{c.circle.link} {op} r{c.face.link} apart")
+        return phrase("position.why_curved_slot", point=a.point, link=a.guide_link,
+                      centre=a.centre)
+    return phrase("position.why_circles_touch", i=c.circle.link, j=c.face.link, p=a.point,
+                  q=a.centre, op="+" if c.side == "outside" else "−")
 
 
 def point_ref(name: str) -> Ref:
@@ -51,6 +53,9 @@ class Assembly:
     points: dict[str, Ref]
     guides: dict[int, Ref]
     axes: dict[int, Ref]
+    position_steps: frozenset[Ref] = frozenset()
+    """The steps that located the mechanism: the kinematic diagram draws them, so a figure's
+    slice stops there (:func:`~.record.slice`'s ``base``)."""
 
     def point(self, name: str) -> g.Point:
         """The located point ``name``."""
@@ -98,15 +103,24 @@ class _Assembler:
 
     # ----- wording -------------------------------------------------------------
     def L(self, metres: float) -> str:
+        """A length as an error message writes it."""
         return self.m.units.length_text(metres)
 
-    def angle_text(self, rad: float) -> str:
-        if self.m.units.angle == "rad":
-            return f"{rad:.4f} rad"
-        return f"{math.degrees(rad):.4f}".rstrip("0").rstrip(".") + "°"
+    def length(self, metres: float):
+        """A length as a step says it."""
+        return self.m.units.length_said(metres)
+
+    def angle(self, rad: float):
+        """An angle as a step says it."""
+        return self.m.units.angle_said(rad)
 
     def at(self) -> str:
-        return f"at θ{self.m.drive.link} = {self.angle_text(self.theta)}"
+        """The input position, as an error message writes it."""
+        return narrate(self.at_said())
+
+    def at_said(self) -> Phrase:
+        """The input position, as a step says it: "at θ2 = 60°"."""
+        return phrase("position.at", link=self.m.drive.link, angle=self.angle(self.theta))
 
     def with_length(self, number: int, span: str, metres: float) -> str:
         """Name a link with the length that matters: "link 3 (coupler, AB = 250 mm)"."""
@@ -115,9 +129,9 @@ class _Assembler:
         return f"link {number} ({named}{span} = {self.L(metres)})"
 
     # ----- bookkeeping ---------------------------------------------------------
-    def found(self, name: str, verb: str, *inputs: Ref, sentence: str, **params) -> None:
-        self.known[name] = self.c.draw(point_ref(name), verb, *inputs, label=name,
-                                       sentence=sentence, role=Role.RESULT, **params)
+    def found(self, name: str, verb: str, *inputs: Ref, said: Phrase, **params) -> None:
+        self.known[name] = self.c.draw(point_ref(name), verb, *inputs, label=name, phrase=said,
+                                       kind=Kind.JOINT, role=Role.RESULT, **params)
 
     def posed(self, number: int) -> bool:
         if number == 1:
@@ -163,13 +177,15 @@ class _Assembler:
                 raise AssemblyError(
                     f"no dyad locates {missing}: this mechanism needs a triad, which tarsim "
                     "cannot yet construct by compass")
-        return Assembly(self.m, self.c, dict(self.known), dict(self.guides), dict(self.axes))
+        return Assembly(self.m, self.c, dict(self.known), dict(self.guides), dict(self.axes),
+                        frozenset(self.c.steps))
 
     def mark_frame(self) -> None:
         for name, (x, y) in self.m.frame.points:
             self.known[name] = self.c.give(
-                point_ref(name), g.Point(x, y), label=name,
-                sentence=f"Mark the frame point {name} at ({self.L(x)}, {self.L(y)}).")
+                point_ref(name), g.Point(x, y), label=name, kind=Kind.JOINT,
+                phrase=phrase("position.frame_point", point=name, x=self.length(x),
+                              y=self.length(y)))
         for i, s in enumerate(self.m.slides):
             if s.guide_link == 1:
                 (tx, ty), (dx, dy) = s.through, s.direction
@@ -177,9 +193,9 @@ class _Assembler:
                 if (line.direction[0] * dx + line.direction[1] * dy) < 0:
                     line = g.Line(-line.a, -line.b, -line.c)
                 self.guides[i] = self.c.give(
-                    f"guide:{i}", line, label=f"guide of {s.point}",
-                    sentence=f"Draw the guide of {s.point} on the frame at "
-                             f"{self.angle_text(math.atan2(dy, dx))}.")
+                    f"guide:{i}", line, label=f"guide of {s.point}", kind=Kind.GUIDE,
+                    phrase=phrase("position.frame_guide", point=s.point,
+                                  angle=self.angle(math.atan2(dy, dx))))
 
     def lay_off_input(self) -> None:
         d = self.m.drive
@@ -191,13 +207,14 @@ class _Assembler:
         x, y = self.c.output(self.known[pivot]).xy
         ux, uy = math.cos(d.angle), math.sin(d.angle)
         ray = self.c.give(f"ray:{d.link}", g.Line(-uy, ux, uy * x - ux * y),
-                          label=f"θ{d.link}", sentence=f"Through {pivot} draw the ray at "
-                          f"θ{d.link} = {self.angle_text(d.angle)}.")
+                          label=f"θ{d.link}",
+                          phrase=phrase("position.input_ray", pivot=pivot, link=d.link,
+                                        angle=self.angle(d.angle)))
         self.found(tip, "lay_off", self.known[pivot], ray, length=k.span(pivot, tip),
-                   sentence=f"With centre {pivot} and radius {pivot}{tip} = "
-                            f"{self.L(k.span(pivot, tip))}, lay off {tip} {self.at()}.")
+                   said=phrase("position.input_point", pivot=pivot, point=tip,
+                               radius=self.length(k.span(pivot, tip)), at=self.at_said()))
         self.axes[d.link] = self.c.draw(f"axis:{d.link}", "line_through", self.known[pivot],
-                                        self.known[tip], label=f"link {d.link}")
+                                        self.known[tip], label=f"link {d.link}", kind=Kind.GUIDE)
 
     # ----- rules: each locates something and returns True, or returns False -----
     def rigid_point(self) -> bool:
@@ -222,8 +239,8 @@ class _Assembler:
             if abs(cross) <= 1e-12 * (ux * ux + uy * uy):
                 along = (ux * (px - ax) + uy * (py - ay)) / math.hypot(ux, uy)
                 self.found(name, "lay_off", self.known[a], self.known[b], length=along,
-                           sentence=f"{name} lies on line {a}{b} of link {number}: lay off "
-                                    f"{a}{name} = {self.L(abs(along))} from {a}.")
+                           said=phrase("position.on_link_line", point=name, a=a, b=b,
+                                       link=number, length=self.length(abs(along))))
                 return
             ra, rb = k.span(a, name), k.span(b, name)
             arc_a = self.c.draw(f"arc:{name}@{a}", "swing_arc", self.known[a], radius=ra,
@@ -232,26 +249,25 @@ class _Assembler:
                                 label=f"arc {b}{name}")
             self.found(name, "intersect_circles", arc_a, arc_b,
                        pick="left" if cross > 0 else "right",
-                       sentence=f"{name} is a point of link {number}: with centres {a} and {b} "
-                                f"and radii {a}{name} = {self.L(ra)} and {b}{name} = {self.L(rb)}, "
-                                f"cut arcs at {name}.")
+                       said=phrase("position.rigid_point", point=name, link=number, a=a, b=b,
+                                   ra=self.length(ra), rb=self.length(rb)))
             return
         base = on[0]
         bx, by = k.local(base)
         du, dv = px - bx, py - by
-        along = (f"Along link {number}, lay off {base}{name} = {self.L(abs(du))} from {base} "
-                 f"to mark {name}.")
+        along = phrase("position.along_link", link=number, base=base, point=name,
+                       length=self.length(abs(du)))
         if dv == 0.0:
             self.found(name, "lay_off", self.known[base], self.axes[number], length=du,
-                       sentence=along)
+                       said=along)
             return
         foot = self.c.draw(f"foot:{name}", "lay_off", self.known[base], self.axes[number],
-                           length=du, sentence=along)
+                           length=du, phrase=along)
         perp = self.c.draw(f"perp:{name}", "perpendicular_through", foot, self.axes[number])
         self.found(name, "lay_off", foot, perp, length=dv,
-                   sentence=f"Square off {self.L(abs(dv))} from the axis to mark {name}.")
+                   said=phrase("position.square_off", length=self.length(abs(dv)), point=name))
 
-    def circles_of(self, name: str) -> list[tuple[int, str, float, str]]:
+    def circles_of(self, name: str) -> list[tuple[int, str, float, Phrase]]:
         """The arcs ``name`` must lie on, as ``(link, centre, radius, why)``, lowest link first.
 
         An arc comes from a link not yet drawn with one point located (its span to
@@ -262,12 +278,15 @@ class _Assembler:
             if not self.posed(n) and any(p in self.known for p in self.m.link(n).names):
                 x = self.one_known(n)
                 r = self.m.link(n).span(x, name)
-                out.append((n, x, r, f"{x}{name} = {self.L(r)}"))
+                out.append((n, x, r, phrase("position.radius_span", a=x, b=name,
+                                            length=self.length(r))))
         for a in self.m.pin_arcs:
             for here, there, k in ((a.point, a.centre, a.guide_link), (a.centre, a.point, a.link)):
                 if here == name and there in self.known:
-                    out.append((k, there, a.radius, f"{self.L(a.radius)}, as {_arc_why(a)}"))
-        return sorted(out)
+                    out.append((k, there, a.radius, phrase("position.radius_because",
+                                                           length=self.length(a.radius),
+                                                           why=_arc_why(a))))
+        return sorted(out, key=lambda c: c[:3])
 
     def two_arcs(self) -> bool:
         for name in self.m.point_names:
@@ -279,18 +298,18 @@ class _Assembler:
             (i, x, ri, why_i), (j, y, rj, why_j) = circles[:2]
             arc_i = self.c.draw(f"arc:{name}@{x}", "swing_arc", self.known[x], radius=ri,
                                 label=f"arc {x}{name}",
-                                sentence=f"With centre {x} and radius {why_i}, swing an arc.")
+                                phrase=phrase("position.swing_arc", centre=x, radius=why_i))
             arc_j = self.c.draw(f"arc:{name}@{y}", "swing_arc", self.known[y], radius=rj,
                                 label=f"locus of {name}",
-                                sentence=f"With centre {y} and radius {why_j}, draw the locus "
-                                         f"of {name}.")
+                                phrase=phrase("position.locus", centre=y, radius=why_j,
+                                              point=name))
             pick = self.branch(name, None, ("left", "right"), f"left or right of {x} → {y}")
             if not isinstance(pick, str):
                 pick = self.pick_near("intersect_circles", (arc_i, arc_j), ("left", "right"), pick)
             try:
                 self.found(name, "intersect_circles", arc_i, arc_j, pick=pick,
-                           sentence=f"The arcs cut at {name} ({pick} of {x} → {y}); "
-                                    f"join {x}{name} and {y}{name}.")
+                           said=phrase("position.arcs_cut", point=name, pick=Word(pick), a=x,
+                                       b=y))
             except NoIntersection:
                 raise self.cannot_reach(name, i, x, ri, y, rj) from None
             return True
@@ -318,7 +337,7 @@ class _Assembler:
             i, x, r, why = circles[0]
             arc = self.c.draw(f"arc:{name}@{x}", "swing_arc", self.known[x], radius=r,
                               label=f"arc {x}{name}",
-                              sentence=f"With centre {x} and radius {why}, swing an arc.")
+                              phrase=phrase("position.swing_arc", centre=x, radius=why))
             guide = self.guides[lines[0]]
             pick = self.branch(name, None, ("forward", "backward"),
                                f"forward or backward along the guide of {name}")
@@ -327,7 +346,7 @@ class _Assembler:
                                       ("forward", "backward"), pick)
             try:
                 self.found(name, "intersect_line_circle", guide, arc, pick=pick,
-                           sentence=f"The arc cuts the guide at {name} (the {pick} cut).")
+                           said=phrase("position.arc_cuts_guide", point=name, pick=Word(pick)))
             except NoIntersection as e:
                 raise AssemblyError(
                     f"{self.with_length(i, x + name, r)} cannot reach the guide "
@@ -345,7 +364,7 @@ class _Assembler:
                 continue
             try:
                 self.found(name, "intersect_lines", self.guides[lines[0]], self.guides[lines[1]],
-                           sentence=f"{name} runs on two guides: it is where they cross.")
+                           said=phrase("position.two_guides", point=name))
             except DegenerateInput:
                 raise AssemblyError(f"the two guides of {name} coincide {self.at()}, so "
                                     f"{name} is not fixed", joint=name) from None
@@ -384,12 +403,12 @@ class _Assembler:
             self.axes[s.link] = self.c.give(
                 f"axis:{s.link}", g.Line(-math.sin(wheel), math.cos(wheel),
                                          math.sin(wheel) * px - math.cos(wheel) * py),
-                label=f"link {s.link}",
-                sentence=f"{k.label.capitalize()} rolls without slip: its centre {s.point} stands "
-                         f"{self.L(abs(rolled))} from where it started, so it has turned "
-                         f"{self.angle_text(abs(turn))} {sense} ({self.L(abs(rolled))} ÷ r = "
-                         f"{self.L(r)}); draw its axis through "
-                         f"{s.point}.")
+                label=f"link {s.link}", kind=Kind.GUIDE,
+                phrase=phrase("position.wheel_rolls", link=s.link,
+                              name=phrase("link_name", name=k.name) if k.name else None,
+                              point=s.point, rolled=self.length(abs(rolled)),
+                              turn=self.angle(abs(turn)), sense=Word(sense),
+                              radius=self.length(r)))
             return True
         return False
 
@@ -438,18 +457,18 @@ class _Assembler:
             (tx, ty), (dx, dy) = s.through, s.direction
             if abs(dx) <= 1e-12:
                 slot = self.c.draw(f"guide:{i}", "perpendicular_through", pin, guide,
-                                   label=f"slot of link {k.number}",
-                                   sentence=f"Through {s.point} draw the perpendicular to the "
-                                            f"guide of {name}: the slot of link {k.number}.")
+                                   label=f"slot of link {k.number}", kind=Kind.GUIDE,
+                                   phrase=phrase("position.slot_square_to_guide", point=s.point,
+                                                 block=name, link=k.number))
             else:
                 n = self.c.draw(f"normal:{i}", "normal_direction", guide)
                 turned = self.c.draw(f"turn:{i}", "rotate_about", n, pin,
                                      angle=math.atan2(dy, dx) - math.pi / 2)
                 slot = self.c.draw(f"guide:{i}", "line_through", pin, turned,
-                                   label=f"slot of link {k.number}",
-                                   sentence=f"Through {s.point} draw the line at "
-                                            f"{self.angle_text(math.atan2(dy, dx))} to the guide "
-                                            f"of {name}: the slot of link {k.number}.")
+                                   label=f"slot of link {k.number}", kind=Kind.GUIDE,
+                                   phrase=phrase("position.slot_at_angle", point=s.point,
+                                                 angle=self.angle(math.atan2(dy, dx)),
+                                                 block=name, link=k.number))
             self.guides[i] = slot
             px, py = k.local(name)
             # The block's point lies this far left of the slot; a drawn line may run the
@@ -463,11 +482,11 @@ class _Assembler:
                 perp = self.c.draw(f"perp:{i}", "perpendicular_through", pin, slot)
                 foot = self.c.draw(f"foot:{i}", "lay_off", pin, perp, length=across)
                 line = self.c.draw(f"face:{i}", "parallel_through", foot, slot,
-                                   sentence=f"Lay off {self.L(abs(across))} square to the slot: "
-                                            f"the parallel through it carries {name}.")
+                                   phrase=phrase("position.face_offset",
+                                                 length=self.length(abs(across)), point=name))
             try:
                 self.found(name, "intersect_lines", line, guide,
-                           sentence=f"{name} is where that line cuts the guide of {name}.")
+                           said=phrase("position.cut_guide", point=name))
             except DegenerateInput:
                 pass
             if name not in self.known or self.c.output(self.known[name]).is_at_infinity:
@@ -494,9 +513,9 @@ class _Assembler:
         name = f"slot of link {k.number}"
         if abs(offset) <= 1e-12 * self.size:
             ends = (q, p) if pick == "forward" else (p, q)
-            slot = self.c.draw(f"guide:{i}", "line_through", *ends, label=name,
-                               sentence=f"The slot of link {k.number} passes through {pivot} "
-                                        f"and the block {s.point}: draw line {pivot}{s.point}.")
+            slot = self.c.draw(f"guide:{i}", "line_through", *ends, label=name, kind=Kind.GUIDE,
+                               phrase=phrase("position.slot_through_block", link=k.number,
+                                             pivot=pivot, point=s.point))
         else:
             slot = self.tangent_slot(i, s, pivot, offset, pick)
         self.guides[i] = slot
@@ -509,12 +528,12 @@ class _Assembler:
     def tangent_slot(self, i: int, s: Slide, pivot: str, offset: float, pick: str) -> Ref:
         q, p = self.known[pivot], self.known[s.point]
         mid = self.c.draw(f"mid:{s.point}{pivot}", "midpoint", q, p,
-                          sentence=f"Bisect {pivot}{s.point}.")
+                          phrase=phrase("position.bisect", a=pivot, b=s.point))
         thales = self.c.draw(f"thales:{s.point}", "circle_through", mid, q,
-                             sentence=f"Draw the circle on diameter {pivot}{s.point}.")
+                             phrase=phrase("position.circle_on_diameter", a=pivot, b=s.point))
         off = self.c.draw(f"offset:{pivot}", "swing_arc", q, radius=abs(offset),
-                          sentence=f"With centre {pivot} and radius {self.L(abs(offset))} "
-                                   "(the slot's offset), swing an arc.")
+                          phrase=phrase("position.offset_arc", centre=pivot,
+                                        radius=self.length(abs(offset))))
         for side in ("left", "right"):
             try:
                 t, _ = g.intersect_circles(self.c.output(thales), self.c.output(off), side)
@@ -526,11 +545,11 @@ class _Assembler:
             line, _ = g.line_through(*ends)
             if line.signed_distance(self.c.output(q)) * offset < 0:
                 foot = self.c.draw(f"tangent:{s.point}", "intersect_circles", thales, off,
-                                   pick=side, sentence="The arcs cut at the foot of the slot.")
+                                   pick=side, phrase=phrase("position.foot_of_slot"))
                 ordered = (foot, p) if pick == "forward" else (p, foot)
                 return self.c.draw(f"guide:{i}", "line_through", *ordered,
-                                   label=f"slot of link {s.guide_link}",
-                                   sentence=f"Draw the slot through {s.point}, tangent to the arc.")
+                                   label=f"slot of link {s.guide_link}", kind=Kind.GUIDE,
+                                   phrase=phrase("position.slot_tangent", point=s.point))
         raise TarsimError(f"no tangent from {s.point} leaves {pivot} on the slot's side")
 
     def axis_from_slot(self, number: int, slot: Ref, s: Slide, pivot: str) -> Ref:
@@ -540,7 +559,7 @@ class _Assembler:
             raise AssemblyError(f"the slot of {k.label} must run along the link's axis, and the "
                                 f"link must list its pivot {pivot} first", link=number)
         return self.c.draw(f"axis:{number}", "parallel_through", self.known[pivot], slot,
-                           label=f"link {number}")
+                           label=f"link {number}", kind=Kind.GUIDE)
 
     # ----- helpers ---------------------------------------------------------------
     def slides_at(self, name: str) -> list[int]:
@@ -573,7 +592,7 @@ class _Assembler:
         base = self.c.draw(f"slotfoot:{i}", "perpendicular_through", self.known[k.names[0]], axis)
         at = self.c.draw(f"slotpt:{i}", "lay_off", self.known[k.names[0]], base, length=off)
         self.guides[i] = self.c.draw(f"guide:{i}", "parallel_through", at, axis,
-                                     label=f"slot of link {number}")
+                                     label=f"slot of link {number}", kind=Kind.GUIDE)
 
     def axis_of(self, number: int) -> Ref:
         """The oriented axis line of a drawn link (through its first point)."""
@@ -583,7 +602,7 @@ class _Assembler:
         if len(k.names) >= 2 and all(n in self.known for n in k.names[:2]):
             self.axes[number] = self.c.draw(f"axis:{number}", "line_through",
                                             self.known[k.names[0]], self.known[k.names[1]],
-                                            label=f"link {number}")
+                                            label=f"link {number}", kind=Kind.GUIDE)
             return self.axes[number]
         for i, s in enumerate(self.m.slides):
             if s.link == number and s.kind is SlideKind.BLOCK and i in self.guides:

@@ -31,7 +31,8 @@ from . import geometry as g
 from .assembly import Assembly
 from .errors import DegenerateInput, TarsimError
 from .model import SlideKind
-from .record import Ref, Role
+from .narration import Phrase, Word, phrase
+from .record import Kind, Ref, Role
 
 __all__ = ["Centre", "Centres", "locate_centres", "omega_ratio", "centre_ref", "pair_label",
            "WELL_CROSSED", "ILL_CONDITIONED", "PRIMARY_RULES"]
@@ -128,6 +129,15 @@ class Centres:
         """The centres found by Kennedy's theorem, in discovery order."""
         return sorted((c for c in self.found.values() if not c.primary), key=lambda c: c.order)
 
+    def construction_refs(self) -> list[Ref]:
+        """The refs of the whole construction in the order a student draws it: the centres by
+        inspection, then for each centre found by Kennedy its two lines and the centre itself,
+        in the order of discovery."""
+        out = [c.ref for c in self.primaries]
+        for c in self.secondaries:
+            out += [r for r in c.lines if r not in out] + [c.ref]
+        return out
+
     def warnings(self) -> list[str]:
         """One line for each ill-conditioned centre, saying how the lines meet."""
         out = []
@@ -158,8 +168,8 @@ def locate_centres(asm: Assembly) -> Centres:
     return _Kennedy(asm).run()
 
 
-def _on(link: int) -> str:
-    return "the frame" if link == 1 else f"link {link}"
+def _on(link: int) -> Phrase:
+    return phrase("on_frame") if link == 1 else phrase("on_link", link=link)
 
 
 class _Kennedy:
@@ -179,45 +189,42 @@ class _Kennedy:
                 if (i, j) in self.out.found:
                     continue
                 a = curved.get((name, i, j))
-                said = (f"The pin {name} joins links {i} and {j}, so it is {pair_label(i, j)}."
+                said = (phrase("centres.pin", point=name, i=i, j=j, centre=pair_label(i, j))
                         if a is None else
-                        f"Block {a.point} of link {a.link} slides on a guide of "
-                        f"{_on(a.guide_link)} curved about {name}, so {pair_label(i, j)} is "
-                        f"at the centre of curvature {name}.")
-                ref = self.c.draw(centre_ref(i, j), "mark", self.asm.points[name],
-                                  label=pair_label(i, j), role=Role.RESULT, sentence=said)
-                self.out.found[(i, j)] = Centre((i, j), ref, "pin" if a is None else "curved")
+                        phrase("centres.curved_block", point=a.point, link=a.link,
+                               on=_on(a.guide_link), at=name, centre=pair_label(i, j)))
+                self.record(Centre((i, j), centre_ref(i, j), "pin" if a is None else "curved"),
+                            "mark", self.asm.points[name], said=said)
         for k, s in enumerate(self.m.slides):
             i, j = sorted((s.link, s.guide_link))
             if (i, j) in self.out.found:
                 continue
             if s.kind is SlideKind.BLOCK:
-                ref = self.c.draw(centre_ref(i, j), "normal_direction", self.asm.guides[k],
-                                  label=pair_label(i, j), role=Role.RESULT,
-                                  sentence=f"Block {s.point} of link {s.link} slides on a straight "
-                                           f"guide of {_on(s.guide_link)}, so {pair_label(i, j)} "
-                                           "is at infinity, perpendicular to the guide.")
-                self.out.found[(i, j)] = Centre((i, j), ref, "block")
+                self.record(Centre((i, j), centre_ref(i, j), "block"), "normal_direction",
+                            self.asm.guides[k],
+                            said=phrase("centres.straight_block", point=s.point, link=s.link,
+                                        on=_on(s.guide_link), centre=pair_label(i, j)))
             elif s.rolling:
-                self.out.found[(i, j)] = self.rolling_contact(k, s, (i, j))
+                self.rolling_contact(k, s, (i, j))
             else:
                 what = "contact" if s.contact is not None else "slot"
                 ref = self.c.draw(f"N:{i}{j}:{k}", "perpendicular_through",
                                   self.asm.points[s.point], self.asm.guides[k],
-                                  sentence=f"{pair_label(i, j)} lies on the common normal at "
-                                           f"{s.point}: through {s.point} draw the perpendicular "
-                                           f"to the {what} of link {s.guide_link}.")
+                                  kind=Kind.COMMON_NORMAL,
+                                  phrase=phrase("centres.common_normal", centre=pair_label(i, j),
+                                                point=s.point, what=Word(what),
+                                                link=s.guide_link))
                 self.out.loci.setdefault((i, j), []).append(ref)
         for k, a in enumerate(self.m.pin_arcs):
             i, j = sorted((a.link, a.guide_link))
             if (i, j) in self.out.found:
                 continue
-            what = ("the line of centres of the two circles" if a.contact is not None
-                    else f"the radius of the curved slot of link {a.guide_link}")
+            what = (phrase("centres.line_of_centres") if a.contact is not None
+                    else phrase("centres.curved_radius", link=a.guide_link))
             ref = self.c.draw(f"N:{i}{j}:a{k}", "line_through", self.asm.points[a.centre],
-                              self.asm.points[a.point],
-                              sentence=f"{pair_label(i, j)} lies on the common normal at the "
-                                       f"contact, {what}: draw line {a.centre}{a.point}.")
+                              self.asm.points[a.point], kind=Kind.COMMON_NORMAL,
+                              phrase=phrase("centres.contact_normal", centre=pair_label(i, j),
+                                            what=what, a=a.centre, b=a.point))
             self.out.loci.setdefault((i, j), []).append(ref)
 
     def rolling_contact(self, k: int, s, pair: tuple[int, int]) -> Centre:
@@ -225,14 +232,19 @@ class _Kennedy:
         face = s.contact.face
         line = self.c.draw(f"face:{k}", "parallel_through", self.asm.points[face.through],
                            self.asm.guides[k],
-                           sentence=f"Through {face.through} draw the face of link {face.link}, "
-                                    f"parallel to the path of {s.point}.")
-        ref = self.c.draw(centre_ref(*pair), "project_onto", self.asm.points[s.point], line,
-                          label=pair_label(*pair), role=Role.RESULT,
-                          sentence=f"Link {s.link} rolls on link {s.guide_link} without slip, so "
-                                   f"the contact point, the foot of {s.point} on the face, is "
-                                   f"{pair_label(*pair)}.")
-        return Centre(pair, ref, "rolling")
+                           phrase=phrase("centres.face", point=face.through, link=face.link,
+                                         path_of=s.point))
+        return self.record(Centre(pair, centre_ref(*pair), "rolling"), "project_onto",
+                           self.asm.points[s.point], line,
+                           said=phrase("centres.rolling", link=s.link, on=s.guide_link,
+                                       point=s.point, centre=pair_label(*pair)))
+
+    def record(self, centre: Centre, verb: str, *inputs: Ref, said: Phrase, **params) -> Centre:
+        """Draw the step that locates ``centre`` (it carries the centre as what it is about)."""
+        self.c.draw(centre.ref, verb, *inputs, label=centre.label, role=Role.RESULT,
+                    kind=Kind.CENTRE, phrase=said, about=centre, **params)
+        self.out.found[centre.pair] = centre
+        return centre
 
     # ----- 2. by Kennedy ------------------------------------------------------------
     def run(self) -> Centres:
@@ -275,9 +287,10 @@ class _Kennedy:
             ref = f"K:{i}{j}/{k}"
             if ref not in self.c:
                 self.c.draw(ref, "line_through", self.out.found[a].ref, self.out.found[b].ref,
-                            sentence=f"Triangle {_tri(i, j, k)}: by Kennedy, {pair_label(i, j)} "
-                                     f"lies on the line through {pair_label(i, k)} and "
-                                     f"{pair_label(j, k)}.")
+                            kind=Kind.KENNEDY_LINE,
+                            phrase=phrase("centres.kennedy_line", triangle=_tri(i, j, k),
+                                          centre=pair_label(i, j), a=pair_label(i, k),
+                                          b=pair_label(j, k)))
             lines.append((ref, k))
         return lines
 
@@ -298,11 +311,9 @@ class _Kennedy:
 
     def cut(self, pair, choice, order: int) -> None:
         (r1, k1), (r2, k2), sine = choice
-        i, j = pair
-        ref = self.c.draw(centre_ref(i, j), "intersect_lines", r1, r2, label=pair_label(i, j),
-                          role=Role.RESULT,
-                          sentence=f"{pair_label(i, j)} is where the two lines meet.")
-        self.out.found[pair] = Centre(pair, ref, "kennedy", (r1, r2), (k1, k2), order, sine)
+        self.record(Centre(pair, centre_ref(*pair), "kennedy", (r1, r2), (k1, k2), order, sine),
+                    "intersect_lines", r1, r2,
+                    said=phrase("centres.lines_meet", centre=pair_label(*pair)))
 
     # ----- 3. when every Kennedy line coincides ------------------------------------
     def place_by_velocities(self, pair: tuple[int, int], order: int) -> bool:
@@ -333,10 +344,9 @@ class _Kennedy:
         name = pair_label(i, j)
         reach = 0.4 * self.size
         base = self.c.draw(f"{tag}:X", "lay_off", start, ref_line, length=reach,
-                           sentence=f"Every Kennedy line for {name} is this one line, so use "
-                                    f"the velocities (rule 2): mark X on it, "
-                                    f"{self.m.units.length_text(reach)} from "
-                                    f"{self.c[start].label or start}.")
+                           phrase=phrase("centres.rule2_mark", centre=name,
+                                         length=self.m.units.length_said(reach),
+                                         start=self.c[start].label or start))
         square = self.c.draw(f"{tag}:normal", "perpendicular_through", base, ref_line)
         b = self.c.output(base).xy
         nx, ny = self.c.output(square).direction
@@ -348,33 +358,29 @@ class _Kennedy:
         profiles = []
         for n in pair:
             tip = self.c.draw(f"{tag}:tip{n}", "lay_off", base, square, length=scale * speeds[n],
-                              sentence=f"Square to the line at X lay off the velocity X would "
-                                       f"have as a point of link {n} (from its ω ratio).")
+                              phrase=phrase("centres.rule2_tip", link=n))
             ground = self.out.centre(1, n).ref
             try:
                 if self.c.output(ground).is_at_infinity:
                     profile = self.c.draw(f"{tag}:profile{n}", "parallel_through", tip, ref_line,
-                                          sentence=f"Link {n} translates: its velocity profile "
-                                                   "is the parallel to the line through the tip.")
+                                          phrase=phrase("centres.rule2_translating", link=n))
                 else:
                     profile = self.c.draw(f"{tag}:profile{n}", "line_through", ground, tip,
-                                          sentence=f"Join {pair_label(1, n)} to the tip: the "
-                                                   f"velocity profile of link {n}.")
+                                          phrase=phrase("centres.rule2_profile",
+                                                        centre=pair_label(1, n), link=n))
             except DegenerateInput:
                 return False
             profiles.append(profile)
         try:
             meet = self.c.draw(f"{tag}:meet", "intersect_lines", *profiles,
-                               sentence=f"The profiles cross where links {i} and {j} have equal "
-                                        "velocities.")
-            ref = self.c.draw(centre_ref(i, j), "project_onto", meet, ref_line, label=name,
-                              role=Role.RESULT,
-                              sentence=f"Square back onto the line: that point is {name}.")
+                               phrase=phrase("centres.rule2_meet", i=i, j=j))
+            if self.c.output(meet).is_at_infinity:
+                return False
+            self.record(Centre(pair, centre_ref(i, j), "velocities", (ref_line,), (third,), order,
+                               0.0), "project_onto", meet, ref_line,
+                        said=phrase("centres.rule2_centre", centre=name))
         except DegenerateInput:
             return False
-        if self.c.output(ref).is_at_infinity:
-            return False
-        self.out.found[pair] = Centre(pair, ref, "velocities", (ref_line,), (third,), order, 0.0)
         return True
 
     def finite_centre_on(self, line: g.Line) -> Ref | None:

@@ -26,6 +26,7 @@ from .assembly import Assembly, assemble, point_ref
 from .errors import InputError, NoIntersection
 from .model import Mechanism, SlideKind
 from .measures import measure_angle
+from .narration import Number, Phrase, Word, narrate, phrase
 from .record import VERBS, Ref, Role
 
 __all__ = ["LimitPositions", "draw_limit_positions", "limit_kind", "stroke_point"]
@@ -158,12 +159,17 @@ class _Limits(_Dyad):
         self.cond = 1.0
 
     def L(self, metres: float) -> str:
+        """A length as an error message writes it."""
         return self.m.units.length_text(metres)
+
+    def length(self, metres: float):
+        """A length as a step says it."""
+        return self.m.units.length_said(metres)
 
     def P(self, name: str) -> Ref:
         return point_ref(name)
 
-    def act(self, ref: str, verb: str, *inputs: Ref, label: str = "", sentence: str = "",
+    def act(self, ref: str, verb: str, *inputs: Ref, label: str = "", said: Phrase | None = None,
             result: bool = False, near: tuple[float, float] | None = None, **params) -> Ref:
         """Record one act; with ``near`` the pick of two cuts is the one nearer that point."""
         if near is not None:
@@ -171,7 +177,7 @@ class _Limits(_Dyad):
             picks = ("forward", "backward") if verb == "intersect_line_circle" else ("left", "right")
             params["pick"] = min(picks, key=lambda p: math.dist(
                 VERBS[verb](*args, pick=p)[0].xy, near))
-        self.c.draw(f"limit:{ref}", verb, *inputs, label=label, sentence=sentence,
+        self.c.draw(f"limit:{ref}", verb, *inputs, label=label, phrase=said,
                     role=Role.RESULT if result else Role.CONSTRUCTION, **params)
         self.steps.append(f"limit:{ref}")
         self.cond = min(self.cond, self.c[f"limit:{ref}"].conditioning)
@@ -204,8 +210,8 @@ class _Limits(_Dyad):
         if self.kind == "slotted lever":
             for i, pin in enumerate(pins):
                 self.act(f"crank{i}", "line_through", self.P(o2), pin, label=f"{o2}{names[i]}",
-                         sentence=(f"Join {o2}{names[0]} and {o2}{names[1]}: the crank at its "
-                                   f"two limit positions." if i == 0 else ""))
+                         said=(phrase("limits.join_cranks", pivot=o2, a=names[0], b=names[1])
+                               if i == 0 else None))
         sense = 1.0 if d.omega >= 0 else -1.0
         centre, *ends = (self.c.output(p) for p in (self.P(o2), *pins))
 
@@ -219,9 +225,9 @@ class _Limits(_Dyad):
             b = 1 - a
             ref = self.act(stroke, "measure_angle", self.P(o2), pins[a], pins[b], turn=sense,
                            label=stroke, result=True,
-                           sentence=f"Measure the angle {names[a]}{o2}{names[b]} the crank turns "
-                                    f"from {names[a]} to {names[b]} ({way}, with ω{d.link}): "
-                                    f"{turned(a):.2f}°, the {stroke} stroke.")
+                           said=phrase("limits.measure", a=names[a], pivot=o2, b=names[b],
+                                       sense=Word(way), link=d.link,
+                                       degrees=Number(turned(a), ".2f"), stroke=Word(stroke)))
             out.append(abs(self.c.output(ref).sweep))
         return slow_from, out[0], out[1]
 
@@ -236,27 +242,28 @@ class _Limits(_Dyad):
         for i, (length, how) in enumerate(((l + r, "extended"), (l - r, "folded"))):
             mark = _PRIMES[i]
             span = f"{a}{b} {'+' if i == 0 else '−'} {o2}{a}"
+            spoken = phrase("limits.span_sum" if i == 0 else "limits.span_difference", a=a, b=b,
+                            pivot=o2)
             arc = self.act(f"arc{i}", "swing_arc", self.P(o2), radius=length,
                            label=f"arc {span}")
             where = self.path_of_b(arc, b + mark, i, length)
-            sentence = (f"With centre {o2} and radius {span} = {self.L(length)} draw an arc to "
-                        f"cut {where[1]} at {b}{mark}: crank and rod in line, {how}.")
+            said = phrase("limits.in_line", pivot=o2, span=spoken, radius=self.length(length),
+                          path=where[1], point=f"{b}{mark}", how=Word(how))
             try:
                 bp = self.act(f"{b}{i}", where[0], *where[2], label=f"{b}{mark}",
-                              sentence=sentence, near=where[3])
+                              said=said, near=where[3])
             except NoIntersection as e:
                 raise InputError(
                     f"crank and rod cannot lie in line, {how}: the arc of radius {span} = "
-                    f"{self.L(length)} about {o2} misses {where[1]} by {self.L(e.margin)}, so "
+                    f"{self.L(length)} about {o2} misses {narrate(where[1])} by "
+                    f"{self.L(e.margin)}, so "
                     f"{b} never reverses there and there is no limit position to draw") from None
             self.act(f"line{i}", "line_through", self.P(o2), bp, label=f"{o2}{b}{mark}")
             ap = self.act(f"{a}{i}", "lay_off", self.P(o2), bp, length=r if i == 0 else -r,
                           label=f"{a}{mark}", result=True,
-                          sentence=(f"Join {o2}{b}{mark}; the crank lies along it: {a}{mark} is "
-                                    f"{o2}{a} = {self.L(r)} from {o2} toward {b}{mark}."
-                                    if i == 0 else
-                                    f"Join {b}{mark}{o2} and produce it beyond {o2}: {a}{mark} is "
-                                    f"{o2}{a} = {self.L(r)} from {o2} on the far side."))
+                          said=phrase("limits.crank_along" if i == 0 else "limits.crank_beyond",
+                                      pivot=o2, point=f"{b}{mark}", pin=f"{a}{mark}", crank=a,
+                                      radius=self.length(r)))
             pins.append(ap)
         return pins[0], pins[1]
 
@@ -264,35 +271,33 @@ class _Limits(_Dyad):
         """(verb, words, inputs, near) for cutting B's path with the arc about O2."""
         here = self.asm.xy(self.b)
         if self.kind == "slider-crank":
-            return ("intersect_line_circle", f"the path of {self.b}",
+            return ("intersect_line_circle", phrase("limits.path_of", point=self.b),
                     (self.asm.guides[self.guide], arc), here)
         o4 = self.o4
         rocker = self.act(f"rocker-arc{i}", "swing_arc", self.P(o4),
                           radius=self.m.link(self.out).span(o4, self.b),
                           label=f"arc {o4}{self.b}")
-        return ("intersect_circles", f"the arc of {self.b} about {o4}", (arc, rocker), here)
+        return ("intersect_circles", phrase("limits.arc_about", point=self.b, centre=o4),
+                (arc, rocker), here)
 
     def tangent_lever(self) -> tuple[Ref, Ref]:
         """The lever tangent to the crank circle: the circle on O2O4 cuts it at A′, A″."""
         o2, o4, a = self.o2, self.o4, self.a
         mid = self.act("mid", "midpoint", self.P(o2), self.P(o4), label="M",
-                       sentence=f"Bisect {o2}{o4} at M.")
+                       said=phrase("limits.bisect", a=o2, b=o4))
         self.act("thales", "circle_through", mid, self.P(o2), label=f"circle on {o2}{o4}",
-                 sentence=f"With centre M and radius M{o2} draw the circle on {o2}{o4} as "
-                          f"diameter: from any point of it {o2} and {o4} are seen at 90°.")
+                 said=phrase("limits.thales", a=o2, b=o4))
         self.act("crank-circle", "circle_through", self.P(o2), self.P(a), label="crank circle",
-                 sentence=f"With centre {o2} and radius {o2}{a} = {self.L(self.r)} draw the "
-                          f"crank circle.")
+                 said=phrase("limits.crank_circle", pivot=o2, pin=a, radius=self.length(self.r)))
         pins = [self.act(f"{a}{i}", "intersect_circles", "limit:crank-circle", "limit:thales",
                          pick=pick, label=f"{a}{_PRIMES[i]}", result=True,
-                         sentence=(f"The two circles cut at {a}′ and {a}″ (one each side of "
-                                   f"{o2}{o4}), where {o2}{a} ⟂ {o4}{a}." if i == 0 else
-                                   f"{a}″ is the second cut."))
+                         said=(phrase("limits.tangent_cuts", pin=a, a=o2, b=o4) if i == 0 else
+                               phrase("limits.second_cut", pin=a)))
                 for i, pick in enumerate(("left", "right"))]
         for i, ap in enumerate(pins):
             self.act(f"lever{i}", "line_through", self.P(o4), ap, label=f"{o4}{a}{_PRIMES[i]}",
-                     sentence=f"Join {o4}{a}{_PRIMES[i]}: the lever tangent to the crank circle, "
-                              f"its {'first' if i == 0 else 'second'} limit position.")
+                     said=phrase("limits.lever", pivot=o4, pin=f"{a}{_PRIMES[i]}",
+                                 which=Word("first" if i == 0 else "second")))
         return pins[0], pins[1]
 
     # ----- the output at each limit ----------------------------------------------------
@@ -311,8 +316,7 @@ class _Limits(_Dyad):
                 return None, None, None
         length = math.dist(self.xy(ends[0]), self.xy(ends[1]))
         ref = self.act("stroke", "measure", ends[1], ends[0], label="stroke", result=True,
-                       sentence=f"Measure {target}″{target}′: the stroke of {target}, "
-                                f"{self.L(length)}.")
+                       said=phrase("limits.stroke", point=target, length=self.length(length)))
         return target, length, ref
 
     @property
@@ -333,8 +337,8 @@ class _Limits(_Dyad):
         if slot and guide is not None:
             return self.act(f"{name}{i}", "intersect_lines", lever_line, self.asm.guides[guide],
                             label=f"{name}{mark}", result=True,
-                            sentence=f"Produce {o4}{held}{mark} to cut the path of {name} at "
-                                     f"{name}{mark}.")
+                            said=phrase("limits.produce_lever", pivot=o4, held=f"{held}{mark}",
+                                        point=name, end=f"{name}{mark}"))
         # A rod from a point X of the lever to the block's pin.
         for k in self.m.links_at(name):
             rod = self.m.link(k)
@@ -348,11 +352,11 @@ class _Limits(_Dyad):
                            label=f"arc {x}{mark}{name}{mark}")
             end = self.act(f"{name}{i}", "intersect_line_circle", self.asm.guides[guide], arc,
                            label=f"{name}{mark}", result=True, near=self.asm.xy(name),
-                           sentence=f"With centre {x}{mark} and radius {x}{name} = "
-                                    f"{self.L(rod.span(x, name))} cut the path of {name} "
-                                    f"at {name}{mark}.")
+                           said=phrase("limits.rod_cuts_path", x=f"{x}{mark}", span=f"{x}{name}",
+                                       radius=self.length(rod.span(x, name)), point=name,
+                                       end=f"{name}{mark}"))
             self.act(f"rod-{name}{i}", "line_through", xp, end, label=f"{x}{mark}{name}{mark}",
-                     sentence=f"Join {x}{mark}{name}{mark}: link {k} in that limit position.")
+                     said=phrase("limits.rod", a=f"{x}{mark}", b=f"{name}{mark}", link=k))
             return end
         return None
 
@@ -367,8 +371,8 @@ class _Limits(_Dyad):
         turn = math.atan2(there[1], there[0]) - math.atan2(here[1], here[0])
         return self.act(f"{x}{i}", "rotate_about", self.P(x), self.P(o4), angle=turn,
                         label=f"{x}{mark}",
-                        sentence=f"With centre {o4} swing {x} with the lever through the angle "
-                                 f"{held}{o4}{held}{mark} to {x}{mark}.")
+                        said=phrase("limits.swing", pivot=o4, point=x, held=held,
+                                    held_there=f"{held}{mark}", there=f"{x}{mark}"))
 
 
 def _sub(p, q) -> tuple[float, float]:

@@ -44,6 +44,7 @@ from dataclasses import dataclass, field
 from enum import StrEnum
 
 from .errors import InputError
+from .narration import Quantity
 
 __all__ = [
     "Units",
@@ -80,6 +81,24 @@ class Units:
     def length_text(self, metres: float, digits: int = 4) -> str:
         """Format a length given in metres in the file's unit ("250 mm")."""
         return f"{_fmt(metres / self.metres, digits)} {self.length}"
+
+    def length_said(self, metres: float) -> Quantity:
+        """A length (m) as a step says it, in the file's unit: "250 mm"."""
+        return Quantity(metres / self.metres, self.length)
+
+    def speed_said(self, v: float) -> Quantity:
+        """A speed (m/s) as a step says it: "406.712 mm/s"."""
+        return Quantity(v / self.metres, self.length, "/s", "rate")
+
+    def acceleration_said(self, a: float) -> Quantity:
+        """An acceleration (m/s²) as a step says it: "535.64 mm/s²"."""
+        return Quantity(a / self.metres, self.length, "/s²", "rate")
+
+    def angle_said(self, rad: float) -> Quantity:
+        """An angle (rad) as a step says it, in the file's angle unit: "60°" or "1.0472 rad"."""
+        if self.angle == "rad":
+            return Quantity(rad, "rad", style="fixed")
+        return Quantity(math.degrees(rad), "°")
 
 
 def _fmt(value: float, digits: int) -> str:

@@ -21,7 +21,8 @@ from .assembly import Assembly
 from .coincident import Node, Walk
 from .errors import AssemblyError, DegenerateInput, TarsimError
 from .model import SlideKind
-from .record import Panel, Ref, Role
+from .narration import Number, Phrase, Quantity, Word, narrate, phrase
+from .record import Kind, Panel, Ref, Role
 
 __all__ = ["PolygonWalk", "DrawnPolygon", "DEAD_POINT", "NOISE", "nice_scale", "sense_of"]
 
@@ -109,8 +110,8 @@ class DrawnPolygon:
         size = math.hypot(*self.between(start, end)) / units.metres
         symbol = f"{self.symbol}_{name}/{of}"
         c.draw(ref, "join", start, end, label=symbol, role=Role.RESULT, panel=self.panel,
-               sentence=f"Join {c[start].label} to {c[end].label}: {symbol} = "
-                        f"{size:.6g} {units.length}{self.unit}.")
+               phrase=phrase("polygon.relative", a=c[start].label, b=c[end].label, symbol=symbol,
+                             size=Quantity(size, units.length, self.unit, "rate")))
         self.steps.append(ref)
         return ref
 
@@ -285,9 +286,8 @@ class PolygonWalk(Walk):
     def walk(self) -> None:
         """Set the pole, draw the input, then every other tip, the best-crossing first."""
         self.c.give(self.pole_ref, g.Point(*self.pole_xy), label=self.pole_name,
-                    panel=self.panel,
-                    sentence=f"Choose the {self.noun} pole {self.pole_name}: every vector drawn "
-                             f"from it is an absolute {self.noun}.")
+                    panel=self.panel, kind=Kind.POLE,
+                    phrase=phrase("polygon.pole", noun=Word(self.noun), pole=self.pole_name))
         self.steps.append(self.pole_ref)
         self.draw_input()
         while True:
@@ -318,9 +318,9 @@ class PolygonWalk(Walk):
                         aliases[alias] = n.point
         return tips, aliases
 
-    def act(self, ref: Ref, verb: str, *inputs: Ref, sentence: str, label: str = "",
+    def act(self, ref: Ref, verb: str, *inputs: Ref, said: Phrase | None, label: str = "",
             role: Role = Role.CONSTRUCTION, **params) -> Ref:
-        self.c.draw(ref, verb, *inputs, label=label, sentence=sentence, role=role,
+        self.c.draw(ref, verb, *inputs, label=label, phrase=said, role=role,
                     panel=self.panel, **params)
         self.steps.append(ref)
         return ref
@@ -330,7 +330,7 @@ class PolygonWalk(Walk):
         ref = f"vp:line:{k.point}-{x.point}"
         if ref not in self.c:
             self.c.draw(ref, "line_through", self.asm.points[k.point], self.asm.points[x.point],
-                        sentence=f"Draw line {k.point}{x.point} of link {c}.")
+                        phrase=phrase("polygon.space_line", a=k.point, b=x.point, link=c))
         if ref not in self.space_steps:
             self.space_steps.append(ref)
         return ref
@@ -341,12 +341,13 @@ class PolygonWalk(Walk):
         X = self.name(x)
         xl = self.tip_name(X)
         d = self.m.drive
-        dead = (f"dead point at θ{d.link} = {math.degrees(d.angle):.6g}°: {say1} and {say2} "
-                f"are parallel, so {self.symbol}_{X} is undefined; move the input off it")
+        dead = (f"dead point at θ{d.link} = {math.degrees(d.angle):.6g}°: {narrate(say1)} and "
+                f"{narrate(say2)} are parallel, so {self.symbol}_{X} is undefined; move the input "
+                "off it")
         try:
             tip = self.act(f"{self.prefix}:tip:{X}", "intersect_lines", l1, l2, label=xl,
-                           sentence=f"The two lines meet at {xl}: {self.pole_name} {xl} = "
-                                    f"{self.symbol}_{X}.")
+                           said=phrase("polygon.lines_meet", tip=xl, pole=self.pole_name,
+                                       symbol=self.symbol, point=X))
         except DegenerateInput:
             raise AssemblyError(dead, joint=x.point, angle_deg=math.degrees(d.angle)) from None
         step = self.c[tip]
@@ -363,23 +364,22 @@ class PolygonWalk(Walk):
         xl, al, bl = self.tip_name(X), self.tip_label(a), self.tip_label(b)
         ta, tb = self.tip(a), self.tip(b)
         side = math.dist(self.c.output(ta).xy, self.c.output(tb).xy)
-        why = (f"{x.point} lies on line {a.point}{b.point} of link {c}, so {xl} lies on "
-               f"{al} {bl} with {al} {xl} : {al} {bl} = {a.point}{x.point} : "
-               f"{a.point}{b.point} = {ratio:.6g} (the {self.noun} image)")
+        why = phrase("polygon.image_why", x=x.point, a=a.point, b=b.point, link=c, tip=xl,
+                     ta=al, tb=bl, ratio=Number(ratio), noun=Word(self.noun))
         ref = f"{self.prefix}:tip:{X}"
         if side == 0.0:
             return self.act(ref, "mark", ta, label=xl,
-                            sentence=f"{why}; {al} {bl} has no length, so {xl} is at {al}.")
+                            said=phrase("polygon.image_collapsed", why=why, ta=al, tb=bl, tip=xl))
         return self.act(ref, "lay_off", ta, tb, length=ratio * side, label=xl,
-                        sentence=f"{why}: lay off {al} {xl} = {ratio:.6g} × {al} {bl} "
-                                 f"along {al} {bl}.")
+                        said=phrase("polygon.image_lay_off", why=why, ta=al, tip=xl,
+                                    ratio=Number(ratio), tb=bl))
 
     def draw_translate(self, x: Node, c: int, k: Node) -> Ref:
         X, K = self.name(x), self.name(k)
         s = self.symbol
         return self.act(f"{self.prefix}:tip:{X}", "mark", self.tip(k), label=self.tip_name(X),
-                        sentence=f"Link {c} slides on a frame guide without turning, so {s}_{X} "
-                                 f"= {s}_{K}: {self.tip_name(X)} is at {self.tip_name(K)}.")
+                        said=phrase("polygon.translate", link=c, symbol=s, point=X, known=K,
+                                    tip=self.tip_name(X), known_tip=self.tip_name(K)))
 
     def read_pair(self, c: int) -> tuple[Node, Node] | None:
         """The two points of link c its ω or α is read from: a fixed pivot and the farthest point,

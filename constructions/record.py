@@ -1,27 +1,37 @@
 """The construction record: every drafting act as a step in a DAG.
 
 A figure is a rendering of a :class:`Construction`; a worked solution is its
-sentences; a scene is the backward :func:`slice` of the asked results. Each step
-stores the verb and parameters that made it, so :func:`replay` can redo it from
-its inputs and confirm the stored output (the replay invariant).
+steps' words; what one figure shows is the :func:`slice` of its answers. Each
+step stores the verb and parameters that made it, so :func:`replay` can redo it
+from its inputs and confirm the stored output (the replay invariant).
+
+A step says *what* it is by its :class:`Kind` (a Kennedy line, a gauge line, an
+arc a point is swung along, a vector, an instant centre, ...), so a figure styles
+it without reading its id or its words, and what it *says* by a
+:class:`~.narration.Phrase`, rendered in any language by
+:func:`~.narration.narrate`. The numbers a figure circles and the numbers of the
+written steps are one numbering, :meth:`Slice.numbered`.
 """
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterable, Mapping
+from collections.abc import Callable, Iterable, Iterator, Mapping
 from dataclasses import dataclass, field
 from enum import StrEnum
 from typing import Any
 
 from . import geometry as g
 from .errors import TarsimError
-from .measures import measure, measure_angle
+from .measures import Angle, Dimension, measure, measure_angle
+from .narration import Phrase
 
 __all__ = [
     "Ref",
     "Role",
     "Panel",
+    "Kind",
     "Step",
+    "Slice",
     "Construction",
     "VERBS",
     "slice",
@@ -48,6 +58,64 @@ class Panel(StrEnum):
     CIRCLE = "circle"
     VELOCITY = "velocity"
     ACCELERATION = "acceleration"
+
+
+class Kind(StrEnum):
+    """What a step is on a figure: the one thing graphics styles it by.
+
+    A step that does not say takes the kind of its output: a line is a
+    construction ``LINE``, a circle an ``ARC``, a segment a ``VECTOR``, a point a
+    ``POINT``, a reading a ``DIMENSION`` or an ``ANGLE``.
+    """
+
+    JOINT = "joint"
+    """A point of the mechanism itself, drawn by the kinematic diagram."""
+    GUIDE = "guide"
+    """A guide or slot of the mechanism, or a link's axis: the diagram's, not a working line."""
+    POINT = "point"
+    """A constructed point: a cut, a foot, a tip."""
+    CENTRE = "centre"
+    """An instant centre."""
+    POLE = "pole"
+    """The pole of a velocity or acceleration polygon."""
+    LINE = "line"
+    """A working (construction) line."""
+    KENNEDY_LINE = "Kennedy line"
+    """A line through two known centres that carries a third (Kennedy's theorem)."""
+    COMMON_NORMAL = "common normal"
+    """The common normal at a slot or a contact: a locus of the two links' centre."""
+    GAUGE_LINE = "gauge line"
+    """The line from a link's fixed centre through the tip of a known velocity."""
+    ARC = "arc"
+    """A compass arc or circle."""
+    SWING = "swing"
+    """An arc a point is swung along to a new place: it ends in an arrowhead there."""
+    VECTOR = "vector"
+    """A vector drawn as an arrow from its start to its tip."""
+    DIMENSION = "dimension"
+    """A distance read off the drawing: a dimension line with its length."""
+    ANGLE = "angle"
+    """An angle read with the protractor: an arc with its degrees."""
+
+    @property
+    def is_line(self) -> bool:
+        """True for the kinds of working line a figure draws thin, each in its own style."""
+        return self in (Kind.LINE, Kind.KENNEDY_LINE, Kind.COMMON_NORMAL, Kind.GAUGE_LINE)
+
+
+def _kind_of(output: Any) -> Kind:
+    """The kind a step takes from its output when it does not say."""
+    if isinstance(output, g.Line):
+        return Kind.LINE
+    if isinstance(output, g.Circle):
+        return Kind.ARC
+    if isinstance(output, g.Segment):
+        return Kind.VECTOR
+    if isinstance(output, Dimension):
+        return Kind.DIMENSION
+    if isinstance(output, Angle):
+        return Kind.ANGLE
+    return Kind.POINT
 
 
 VERBS: Mapping[str, Callable[..., tuple[Any, float]]] = {
@@ -79,7 +147,10 @@ class Step:
 
     ``conditioning`` is the step's own conditioning times the worst of its
     inputs', so a result inherits, and compounds, the ill-conditioning of the acts
-    it rests on.
+    it rests on. ``phrase`` is what the step says (None: it is not narrated, as a
+    point the act before it already named). ``about`` is what the step locates, for
+    a figure that draws it by more than its geometry (an instant centre's
+    :class:`~.centres.Centre`: its links, its rule, its triangles).
     """
 
     id: Ref
@@ -89,10 +160,23 @@ class Step:
     label: str
     role: Role
     panel: Panel
-    sentence: str
+    kind: Kind
+    phrase: Phrase | None = None
     conditioning: float = 1.0
     params: tuple[tuple[str, Any], ...] = ()
-    number: int | None = None
+    about: Any = None
+
+    @property
+    def draws(self) -> bool:
+        """True if the step puts a mark on a figure beyond the kinematic diagram.
+
+        A point of the mechanism is the diagram's, and a line at infinity has no
+        trace; everything else is drawn (a point at a vector's tip or at a pin is
+        not dotted, but its number stands beside it).
+        """
+        if self.kind is Kind.JOINT:
+            return False
+        return not (isinstance(self.output, g.Line) and self.output.is_at_infinity)
 
 
 @dataclass
@@ -117,15 +201,17 @@ class Construction:
         """Return the geometric object a step made."""
         return self.steps[ref].output
 
-    def give(self, ref: Ref, obj: Any, *, label: str, sentence: str,
-             panel: Panel = Panel.SPACE) -> Ref:
+    def give(self, ref: Ref, obj: Any, *, label: str, phrase: Phrase | None = None,
+             kind: Kind | None = None, panel: Panel = Panel.SPACE, about: Any = None) -> Ref:
         """Record a datum (a frame point, a guide line) as a given step."""
-        self._add(Step(ref, "given", (), obj, label, Role.GIVEN, panel, sentence))
+        self._add(Step(ref, "given", (), obj, label, Role.GIVEN, panel, kind or _kind_of(obj),
+                       phrase, about=about))
         return ref
 
     def draw(self, ref: Ref, verb: str, *inputs: Ref, label: str = "",
-             sentence: str = "", role: Role = Role.CONSTRUCTION,
-             panel: Panel = Panel.SPACE, **params: Any) -> Ref:
+             phrase: Phrase | None = None, kind: Kind | None = None,
+             role: Role = Role.CONSTRUCTION, panel: Panel = Panel.SPACE, about: Any = None,
+             **params: Any) -> Ref:
         """Do the drafting act ``verb`` on the outputs of ``inputs`` and record it.
 
         Raises
@@ -143,8 +229,8 @@ class Construction:
         # Chained acts compound: an ill-conditioned cut of ill-conditioned lines is
         # worse than either, so the act's own conditioning multiplies the worst input's.
         worst = cond * min([1.0] + [self.steps[r].conditioning for r in inputs])
-        self._add(Step(ref, verb, tuple(inputs), out, label, role, panel, sentence,
-                       worst, tuple(sorted(params.items()))))
+        self._add(Step(ref, verb, tuple(inputs), out, label, role, panel, kind or _kind_of(out),
+                       phrase, worst, tuple(sorted(params.items())), about))
         return ref
 
     def _add(self, step: Step) -> None:
@@ -152,47 +238,102 @@ class Construction:
             raise TarsimError(f"step '{step.id}' is recorded twice")
         self.steps[step.id] = step
 
-    def numbered(self, refs: Iterable[Ref]) -> list[Step]:
-        """Return the steps in ``refs`` in record order, numbered 1, 2, … for narration."""
-        wanted = set(refs)
-        out: list[Step] = []
-        for step in self.steps.values():
-            if step.id in wanted:
-                out.append(_renumber(step, len(out) + 1))
+
+@dataclass(frozen=True)
+class Slice:
+    """What one figure shows of a record: its steps in record order, and their numbers.
+
+    Made by :func:`slice`; the figure draws :meth:`steps`, and the written solution
+    narrates :meth:`numbered`, so the numbers circled on the figure and the
+    numbers of the written steps are one numbering.
+    """
+
+    construction: Construction
+    refs: tuple[Ref, ...]
+
+    def __iter__(self) -> Iterator[Step]:
+        return (self.construction[r] for r in self.refs)
+
+    def __contains__(self, ref: Ref) -> bool:
+        return ref in self.refs
+
+    def __len__(self) -> int:
+        return len(self.refs)
+
+    def steps(self, panel: Panel | None = None) -> list[Step]:
+        """The steps, in record order; with ``panel``, only those drawn in it."""
+        return [s for s in self if panel is None or s.panel is panel]
+
+    def numbered(self, panel: Panel = Panel.SPACE) -> list[tuple[int, Step]]:
+        """Number the narrated steps drawn in ``panel``: 1, 2, … in record order.
+
+        A given is not numbered, nor a step that says nothing (the point the act
+        before it named: B′ where the swung arc cuts the line), nor one that puts
+        no mark on the figure; all of them are drawn.
+        """
+        out: list[tuple[int, Step]] = []
+        for step in self.steps(panel):
+            if step.role is not Role.GIVEN and step.phrase is not None and step.draws:
+                out.append((len(out) + 1, step))
         return out
 
+    def numbers(self, panel: Panel = Panel.SPACE) -> dict[Ref, int]:
+        """Each numbered step's number, by ref."""
+        return {s.id: n for n, s in self.numbered(panel)}
 
-def _renumber(step: Step, n: int) -> Step:
-    return Step(step.id, step.verb, step.inputs, step.output, step.label, step.role,
-                step.panel, step.sentence, step.conditioning, step.params, n)
 
+def slice(construction: Construction, targets: Iterable[Ref], *,  # noqa: A001
+          base: Iterable[Ref] = (), arrows: Iterable[Ref] = ()) -> Slice:
+    """Return what a figure of ``targets`` shows: every step they rest on, in record order.
 
-def slice(construction: Construction, targets: Iterable[Ref]) -> set[Ref]:  # noqa: A001
-    """Return every step the ``targets`` rest on, the targets included.
+    The walk back from the targets stops at ``base``, the steps already on the
+    page (the mechanism's own position, which the kinematic diagram draws). Of
+    ``arrows``, the vectors a construction drew beside its answer (a polygon's
+    absolute vectors and components, the arrows a method drew on its way), each
+    whose two ends the figure holds (its steps, or the base steps they stand on)
+    is in it too: it feeds no later act but belongs to the figure. Nothing else
+    is drawn or narrated.
 
-    This is what a scene needs: nothing outside it is drawn or narrated.
+    Raises
+    ------
+    TarsimError
+        If a target names no step of the construction.
 
     Examples
     --------
     >>> c = Construction()
-    >>> _ = c.give("O", g.Point(0, 0), label="O", sentence="")
-    >>> _ = c.give("P", g.Point(3, 4), label="P", sentence="")
-    >>> _ = c.give("Q", g.Point(9, 9), label="Q", sentence="")
+    >>> _ = c.give("O", g.Point(0, 0), label="O")
+    >>> _ = c.give("P", g.Point(3, 4), label="P")
+    >>> _ = c.give("Q", g.Point(9, 9), label="Q")
     >>> _ = c.draw("k", "circle_through", "O", "P")
-    >>> sorted(slice(c, ["k"]))
-    ['O', 'P', 'k']
+    >>> _ = c.draw("v", "join", "O", "P")
+    >>> slice(c, ["k"]).refs
+    ('O', 'P', 'k')
+    >>> slice(c, ["k"], base=["O", "P"], arrows=["v"]).refs
+    ('k', 'v')
     """
+    base = set(base)
     needed: set[Ref] = set()
+    stood_on: set[Ref] = set()
     stack = list(targets)
     while stack:
         ref = stack.pop()
+        if ref in base:
+            stood_on.add(ref)
+            continue
         if ref in needed:
             continue
         if ref not in construction.steps:
             raise TarsimError(f"nothing in the construction is called '{ref}'")
         needed.add(ref)
         stack.extend(construction.steps[ref].inputs)
-    return needed
+    held = needed | stood_on
+    for ref in arrows:
+        step = construction[ref]
+        if step.kind is Kind.VECTOR and all(r in held for r in step.inputs):
+            needed.add(ref)
+    return Slice(construction, tuple(s.id for s in construction if s.id in needed))
+
 
 
 def toposort(construction: Construction, refs: Iterable[Ref] | None = None) -> list[Step]:

@@ -27,8 +27,9 @@ from . import geometry as g
 from .assembly import Assembly
 from .centres import Centres, pair_label
 from .errors import DegenerateInput, TarsimError
-from .record import Ref, Role
-from .velocity_drawing import VelocityResult, draw_input_velocity, speed_text, vector_label
+from .narration import Quantity, phrase
+from .record import Kind, Ref, Role
+from .velocity_drawing import VelocityResult, draw_input_velocity, vector_label, velocity_result
 
 __all__ = ["velocity_by_radius_rotation", "velocity_by_parallel_lines", "METHODS"]
 
@@ -50,15 +51,12 @@ class _Method:
         self.asm, self.cs, self.method, self.scale = asm, centres, method, scale
         self.c = asm.construction
         self.m = asm.mechanism
-        self.steps: list[Ref] = []
         self.prefix = prefix
 
     # ----- bookkeeping ------------------------------------------------------------
     def draw(self, name: str, verb: str, *inputs: Ref, **kw) -> Ref:
         ref = f"{self.prefix}:{self.point}:{name}"
-        self.c.draw(ref, verb, *inputs, **kw)
-        self.steps.append(ref)
-        return ref
+        return self.c.draw(ref, verb, *inputs, **kw)
 
     def centre(self, i: int, j: int) -> Ref:
         return self.cs.centre(i, j).ref
@@ -66,29 +64,30 @@ class _Method:
     def is_infinite(self, ref: Ref) -> bool:
         return self.c.output(ref).is_at_infinity
 
-    def speed(self, start: Ref, tip: Ref) -> str:
+    def speed(self, start: Ref, tip: Ref) -> Quantity:
         """The speed a vector from ``start`` to ``tip`` stands for, read at the scale."""
         length = g.distance(self.c.output(start), self.c.output(tip))
-        return speed_text(length / self.scale, self.m.units)
+        return self.m.units.speed_said(length / self.scale)
 
     # ----- the run --------------------------------------------------------------
     def run(self, point: str, link: int | None) -> VelocityResult:
         self.point = point
         d = self.m.drive.link
         known, v_known = draw_input_velocity(self.asm, self.scale)
-        self.steps += [f"v:perp:{known}", f"v:tip:{known}", v_known]
         j = self.carrier(point, link)
+        carried = (v_known,)
         try:
             if j == d:
                 v = self.on_link(j, self.asm.points[known], v_known, point,
                                  transfer_label=known)
             else:
                 t, v_t = self.transfer(d, j, known, v_known)
+                carried = tuple(dict.fromkeys((v_known, v_t)))
                 v = self.on_link(j, t, v_t, point, transfer_label=pair_label(d, j))
         except DegenerateInput as e:
             raise TarsimError(f"the {self.method} construction of V_{point} breaks down at this "
                               f"position: {e}") from None
-        return VelocityResult(self.method, point, j, v, self.scale, self.steps)
+        return velocity_result(self.asm, self.method, point, j, v, self.scale, carried)
 
     def carrier(self, point: str, link: int | None) -> int:
         """The link to take ``point`` on: the input's, else one whose transfer centre is a pin."""
@@ -120,36 +119,34 @@ class _Method:
         if self.is_infinite(ij):
             raise DegenerateInput(f"{lab_ij} is at infinity (links {i} and {j} turn together)")
         loc = self.draw("loc", "line_through", i1, ij,
-                        sentence=f"Draw the line of centres through {lab_i1} and {lab_ij}; "
-                                 f"{pair_label(1, j)} lies on it too (Kennedy).")
-        tip = self.gauge_tip(i1, loc, known, v_known, lab_i1, f"link {i}")
+                        phrase=phrase("velocity.line_of_centres", a=lab_i1, b=lab_ij,
+                                      c=pair_label(1, j)))
+        tip = self.gauge_tip(i1, loc, known, v_known, lab_i1, i)
         perp = self.draw("perp:t", "perpendicular_through", ij, loc,
-                         sentence=f"At {lab_ij} erect the perpendicular to the line of centres.")
+                         phrase=phrase("velocity.erect_perpendicular", at=lab_ij))
         t_tip = self.draw("tip:t", "intersect_lines", perp, tip,
-                          sentence=f"It meets the gauge line of link {i} at the tip of "
-                                   f"V_{lab_ij}.")
+                          phrase=phrase("velocity.meets_gauge_at_tip", link=i, centre=lab_ij))
         v_t = self.draw("V:t", "join", ij, t_tip, label=vector_label(lab_ij),
-                        sentence=f"V_{lab_ij} = {self.speed(ij, t_tip)}: {lab_ij} is a point "
-                                 f"of both link {i} and link {j}.")
+                        phrase=phrase("velocity.transfer_point", centre=lab_ij,
+                                      speed=self.speed(ij, t_tip), i=i, j=j))
         return ij, v_t
 
     def gauge_tip(self, centre: Ref, loc: Ref, known: str, v_known: Ref, lab_c: str,
-                  what: str) -> Ref:
+                  link: int) -> Ref:
         """Swing ``known`` onto the line of centres, lay off its speed there, draw the gauge line."""
         p = self.asm.points[known]
-        arc = self.draw("arc:k", "circle_through", centre, p,
-                        sentence=f"With centre {lab_c} and radius {lab_c}{known} swing {known} "
-                                 f"onto the line of centres at {known}′.")
+        arc = self.draw("arc:k", "circle_through", centre, p, kind=Kind.SWING,
+                        phrase=phrase("velocity.swing_onto_line", centre=lab_c, point=known))
         at = self.draw("rot:k", "intersect_line_circle", loc, arc, pick="forward", label=f"{known}′")
         perp = self.draw("perp:k", "perpendicular_through", at, loc)
         sense = self.sense_of(centre, p, v_known)
         tip = self.draw("tip:k", "lay_off", at, perp,
                         length=sense * self.c.output(v_known).length,
-                        sentence=f"At {known}′ lay off V_{known} = "
-                                 f"{self.speed(*self.c[v_known].inputs)} "
-                                 "perpendicular to the line of centres, in the same sense.")
-        return self.draw("gauge:i", "line_through", centre, tip, label=f"gauge line of {what}",
-                         sentence=f"Draw the gauge line of {what} from {lab_c} through the tip.")
+                        phrase=phrase("velocity.lay_off_known", point=known,
+                                      speed=self.speed(*self.c[v_known].inputs)))
+        return self.draw("gauge:i", "line_through", centre, tip, label=f"gauge line of link {link}",
+                         kind=Kind.GAUGE_LINE,
+                         phrase=phrase("velocity.gauge_line", link=link, centre=lab_c))
 
     def sense_of(self, centre: Ref, p: Ref, v: Ref) -> float:
         """+1 if V at ``p`` turns counter-clockwise about ``centre``, else −1 (read off the figure)."""
@@ -166,14 +163,13 @@ class _Method:
             along = self.draw("dir", "line_through", t, self.tip_of(v_t))
             par = self.draw("par", "parallel_through", target, along)
             tip = self.draw("tip", "lay_off", target, par, length=self.c.output(v_t).length,
-                            sentence=f"Link {j} translates ({pair_label(1, j)} is at infinity), "
-                                     f"so every point of it has V_{transfer_label}: lay it off "
-                                     f"at {point}.")
+                            phrase=phrase("velocity.translates", link=j, centre=pair_label(1, j),
+                                          known=transfer_label, point=point))
             return self.result(point, tip, label)
         if g.distance(self.c.output(target), self.c.output(j1)) <= 1e-12 * self.asm.size:
             at_rest = self.draw("rest", "mark", target,
-                                sentence=f"{point} is at {pair_label(1, j)}, the centre link {j} "
-                                         f"turns about at this instant, so V_{point} = 0.")
+                                phrase=phrase("velocity.at_rest", point=point,
+                                              centre=pair_label(1, j), link=j))
             return self.result(point, at_rest, label)
         if self.method == "radius-rotation":
             return self.rotate_radius(j, j1, t, v_t, point, target, label)
@@ -198,28 +194,24 @@ class _Method:
                                                                self.c.output(target)):
             return v_t
         loc = self.draw("loc:j", "line_through", j1, t,
-                        sentence=f"Draw the line of centres of link {j} through {lab} and "
-                                 f"{self.name_of(t)}.")
+                        phrase=phrase("velocity.line_of_centres_of_link", link=j, a=lab,
+                                      b=self.name_of(t)))
         gauge = self.draw("gauge:j", "line_through", j1, self.tip_of(v_t),
-                          label=f"gauge line of link {j}",
-                          sentence=f"Draw the gauge line of link {j} from {lab} through the tip "
-                                   "of the known velocity.")
-        arc = self.draw("arc:d", "circle_through", j1, target,
-                        sentence=f"With centre {lab} and radius {lab}{point} swing {point} onto "
-                                 f"the line of centres at {point}′.")
+                          label=f"gauge line of link {j}", kind=Kind.GAUGE_LINE,
+                          phrase=phrase("velocity.gauge_line_known", link=j, centre=lab))
+        arc = self.draw("arc:d", "circle_through", j1, target, kind=Kind.SWING,
+                        phrase=phrase("velocity.swing_onto_line", centre=lab, point=point))
         at = self.draw("rot:d", "intersect_line_circle", loc, arc, pick="forward",
                        label=f"{point}′")
         perp = self.draw("perp:d", "perpendicular_through", at, loc,
-                         sentence=f"At {point}′ erect the perpendicular to the line of centres.")
+                         phrase=phrase("velocity.erect_perpendicular", at=f"{point}′"))
         tip = self.draw("tip:d", "intersect_lines", perp, gauge,
-                        sentence=f"It meets the gauge line of link {j}: its length there is "
-                                 f"|V_{point}|.")
+                        phrase=phrase("velocity.meets_gauge_length", link=j, point=point))
         (cx, cy), (dx, dy), (ax, ay) = (self.c.output(j1).xy, self.c.output(target).xy,
                                         self.c.output(at).xy)
         back = math.atan2(dy - cy, dx - cx) - math.atan2(ay - cy, ax - cx)
         tip_back = self.draw("back", "rotate_about", tip, j1, angle=back,
-                             sentence=f"With centre {lab} rotate it back to {point}: V_{point} "
-                                      f"is perpendicular to {lab}{point}.")
+                             phrase=phrase("velocity.rotate_back", centre=lab, point=point))
         return self.result(point, tip_back, label)
 
     def draw_parallels(self, j, j1, t, v_t, point, target, label) -> Ref:
@@ -227,31 +219,27 @@ class _Method:
         if _same(self.c.output(t), self.c.output(target)):
             return v_t
         turned = self.draw("turn:t", "lay_off", t, j1, length=self.c.output(v_t).length,
-                           sentence=f"Turn the known velocity through 90° so that it lies along "
-                                    f"its radius towards {lab}.")
+                           phrase=phrase("velocity.turn_known", centre=lab))
         side = self.draw("td", "line_through", t, target,
-                         sentence=f"Join {self.name_of(t)} to {point}.")
+                         phrase=phrase("velocity.join", a=self.name_of(t), b=point))
         par = self.draw("par", "parallel_through", turned, side,
-                        sentence="Through the tip of the turned velocity draw the parallel to "
-                                 "that line.")
+                        phrase=phrase("velocity.parallel_through_turned"))
         radius = self.draw("rad", "line_through", target, j1,
-                           sentence=f"Draw the radius {point}–{lab}.")
+                           phrase=phrase("velocity.radius", point=point, centre=lab))
         cut = self.draw("cut", "intersect_lines", par, radius,
-                        sentence=f"The parallel cuts the radius: the piece from {point} is "
-                                 f"|V_{point}| turned through 90°.")
+                        phrase=phrase("velocity.parallel_cuts_radius", point=point))
         # The known velocity was turned onto its radius by ±90°; turn back the other way.
         (tx, ty), (cx, cy) = self.c.output(t).xy, self.c.output(j1).xy
         vx, vy = self.c.output(v_t).vector
         turned_by = math.copysign(math.pi / 2, vx * (cy - ty) - vy * (cx - tx))
         tip = self.draw("back", "rotate_about", cut, target, angle=-turned_by,
-                        sentence=f"Turn it back through 90° the other way: V_{point} is "
-                                 f"perpendicular to {point}–{lab}.")
+                        phrase=phrase("velocity.turn_back", point=point, centre=lab))
         return self.result(point, tip, label)
 
     def result(self, point: str, tip: Ref, label: str) -> Ref:
         at = self.asm.points[point]
         return self.draw("V", "join", at, tip, label=label, role=Role.RESULT,
-                         sentence=f"V_{point} = {self.speed(at, tip)}.")
+                         phrase=phrase("velocity.result", point=point, speed=self.speed(at, tip)))
 
 
 def _same(p: g.Point, q: g.Point) -> bool:

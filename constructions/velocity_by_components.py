@@ -31,8 +31,9 @@ from . import geometry as g
 from .assembly import Assembly
 from .coincident import Node, Walk
 from .errors import DegenerateInput, TarsimError
-from .record import Ref, Role, slice as backward_slice
-from .velocity_drawing import VelocityResult, draw_input_velocity, speed_text
+from .narration import Capitalized, Phrase, narrate, phrase
+from .record import Kind, Ref, Role
+from .velocity_drawing import VelocityResult, draw_input_velocity, velocity_result
 
 __all__ = ["velocity_by_components"]
 
@@ -100,7 +101,8 @@ def velocity_by_components(asm: Assembly, point: str, *, scale: float,
     >>> r = velocity_by_components(asm, "B", scale=1.0)
     >>> tuple(round(v, 12) + 0.0 for v in r.value(asm.construction))
     (-3.0, 0.0)
-    >>> asm.construction["cm:B:path@O4"].sentence
+    >>> from tarsim.constructions.narration import narrate
+    >>> narrate(asm.construction["cm:B:path@O4"])
     'At B draw the perpendicular to O4B: the path of B.'
     """
     if not (math.isfinite(scale) and scale > 0.0):
@@ -123,7 +125,7 @@ class _Components(Walk):
         if abs(drawn - want * scale) > 1e-9 * drawn:
             raise TarsimError(f"this construction's velocities are drawn at {drawn / want:.6g} "
                               f"m per m/s, not {scale:.6g}; use that scale")
-        self.input_refs = {f"v:perp:{start}", f"v:tip:{start}", vec}
+        self.given = vec
         nodes = [Node(n) for n in self.m.point_names] + [
             Node(s.point, s.guide_link) for s in self.m.slides
             if s.guide_link != 1 and s.point not in self.m.link(s.guide_link).names]
@@ -216,11 +218,11 @@ class _Components(Walk):
         return [(n, r) for n, r in chosen.items() if n in need]
 
     # ----- drafting ---------------------------------------------------------------
-    def act(self, ref: Ref, verb: str, *inputs: Ref, sentence: str, label: str = "",
+    def act(self, ref: Ref, verb: str, *inputs: Ref, said: Phrase | None, label: str = "",
             role: Role = Role.CONSTRUCTION, **params) -> Ref:
         """Do one drafting act, or reuse it if this construction already holds it."""
         if ref not in self.c:
-            self.c.draw(ref, verb, *inputs, label=label, sentence=sentence, role=role, **params)
+            self.c.draw(ref, verb, *inputs, label=label, phrase=said, role=role, **params)
         return ref
 
     def at(self, n: Node | str) -> Ref:
@@ -241,23 +243,24 @@ class _Components(Walk):
             d = self.m.drive
             raise TarsimError(f"the component method cannot find V_{x.name} at θ{d.link} = "
                               f"{math.degrees(d.angle):.6g}°: {e}") from None
-        on = backward_slice(self.c, [vector])
-        steps = [s.id for s in self.c if s.id in self.input_refs or s.id.startswith("cm:") and (
-            s.id in on or s.verb == "join" and set(s.inputs) <= on)]
         link = x.link if x.link is not None else next((c for c in self.carriers(x) if c != 1), 1)
-        return VelocityResult("components", x.point, link, vector, self.scale, steps)
+        # The method's arrows on this construction, whichever call drew them: a velocity
+        # found for an earlier point is a known one here.
+        arrows = tuple(s.id for s in self.c if s.id.startswith("cm:") and s.kind is Kind.VECTOR)
+        return velocity_result(self.asm, "components", x.point, link, vector, self.scale,
+                               (self.given,), arrows)
 
     def draw_arrow(self, x: Node, ref: Ref, role: Role) -> Ref:
         speed = math.dist(*(self.c.output(r).xy for r in (self.at(x), self.tip(x)))) / self.scale
         return self.act(ref, "join", self.at(x), self.tip(x), label=f"V_{x.name}", role=role,
-                        sentence=f"Join {x.name} to the tip: V_{x.name} = "
-                                 f"{speed_text(speed, self.m.units)}.")
+                        said=phrase("components.arrow", point=x.name,
+                                    speed=self.m.units.speed_said(speed)))
 
-    def draw_line(self, p: Node | str, q: Node, sentence: str) -> Ref:
+    def draw_line(self, p: Node | str, q: Node, said: Phrase) -> Ref:
         """Draw the line through two points, once per construction whoever needs it."""
         p = p.point if isinstance(p, Node) else p
         return self.act(f"cm:line:{p}-{q.point}", "line_through", self.at(p), self.at(q),
-                        sentence=sentence)
+                        said=said)
 
     def transfer_along(self, x: Node, k: Node, line: Ref, kx: str,
                        mark: str = "′") -> tuple[Ref, str]:
@@ -267,15 +270,13 @@ class _Components(Walk):
         vk = self.component_name(f"cm:{k.tag}:arrow@{on}", f"V_{K}′", kx)
         vx = self.component_name(f"{t}along-arrow@{k.tag}", f"V_{X}{mark}", kx)
         foot = self.act(f"cm:{k.tag}:foot@{on}", "project_onto", self.tip(k), line,
-                        sentence=f"Project the tip of V_{K} onto {kx}: {vk} is the component "
-                                 f"of V_{K} along {kx}.")
+                        said=phrase("components.project_along", point=K, line=kx, component=vk))
         self.act(f"cm:{k.tag}:arrow@{on}", "join", self.at(k), foot, label=vk,
-                 sentence=f"Draw {vk} at {K} along {kx}.")
+                 said=phrase("components.draw_component_along", component=vk, point=K, line=kx))
         along = self.act(f"{t}along@{k.tag}", "transfer", self.at(x), self.at(k), foot,
-                         sentence=f"With dividers lay off {vx} = {vk} at {X} along {kx}.")
+                         said=phrase("components.dividers", a=vx, b=vk, point=X, line=kx))
         self.act(f"{t}along-arrow@{k.tag}", "join", self.at(x), along, label=vx,
-                 sentence=f"{vx} = {vk}: points of a rigid link have equal components "
-                          "along the line joining them.")
+                 said=phrase("components.equal_components", a=vx, b=vk))
         return along, vx
 
     def component_name(self, ref: Ref, name: str, line: str) -> str:
@@ -287,49 +288,49 @@ class _Components(Walk):
             return name
         return f"{name}({line})"
 
-    def draw_locus(self, x: Node, locus: tuple, mark: str) -> tuple[Ref, str]:
+    def draw_locus(self, x: Node, locus: tuple, mark: str) -> tuple[Ref, Phrase]:
         """Draw one line carrying the tip of V_x; return it and how the text names it."""
         kind, t, X = locus[0], f"cm:{x.tag}:", x.name
         if kind == "component":
             (k, c), kx = locus[1:], f"{locus[1].name}{X}"
-            line = self.draw_line(k, x, f"Draw line {kx} of link {c}.")
+            line = self.draw_line(k, x, phrase("components.line_of_link", line=kx, link=c))
             along, vx = self.transfer_along(x, k, line, kx, mark)
             perp = self.act(f"{t}perp@{k.tag}", "perpendicular_through", along, line,
-                            sentence=f"From the tip of {vx} draw the perpendicular to {kx}.")
-            return perp, f"the perpendicular to {kx} from the tip of {vx}"
+                            said=phrase("components.perpendicular_from_tip", component=vx,
+                                        line=kx))
+            return perp, phrase("components.say_perpendicular", line=kx, component=vx)
         if kind == "path":
             o, c = locus[1:]
-            radius = self.draw_line(o, x, f"Draw the radius {o}{X} of link {c} about its fixed "
-                                          f"pivot {o}.")
+            radius = self.draw_line(o, x, phrase("components.radius", pivot=o, point=X, link=c))
             path = self.act(f"{t}path@{o}", "perpendicular_through", self.at(x), radius,
-                            sentence=f"At {X} draw the perpendicular to {o}{X}: the path of {X}.")
-            return path, f"the path of {X} (⟂ {o}{X})"
+                            said=phrase("components.path", point=X, pivot=o))
+            return path, phrase("components.say_path", point=X, pivot=o)
         if kind == "guide":
-            return self.asm.guides[locus[1]], f"the guide of {X}"
+            return self.asm.guides[locus[1]], phrase("components.say_guide", point=X)
         if kind == "glide":
             i, c = locus[1:]
             glide = self.act(f"{t}glide@{i}", "parallel_through", self.at(x), self.asm.guides[i],
-                             sentence=f"Link {c} slides on a frame guide without turning, so {X} "
-                                      f"moves parallel to the guide: draw it through {X}.")
-            return glide, f"the path of {X} (∥ the guide of link {c})"
+                             said=phrase("components.glide", link=c, point=X))
+            return glide, phrase("components.say_glide", point=X, link=c)
         (other, i), p = locus[1:], self.m.slides[locus[2]].point
         j = self.m.slides[i].guide_link
         slide = self.act(f"{t}slide@{i}", "parallel_through", self.tip(other), self.asm.guides[i],
-                         sentence=f"Through the tip of V_{other.name} draw the parallel to the "
-                                  f"slot of link {j}: V_{p} − V_{p}{j} lies along the slot.")
-        return slide, f"the parallel to the slot of link {j} through the tip of V_{other.name}"
+                         said=phrase("components.slot_parallel", other=other.name, link=j,
+                                     point=p))
+        return slide, phrase("components.say_slot", link=j, other=other.name)
 
     def draw_cross(self, x: Node, first: tuple, second: tuple) -> Ref:
         """Cases 1 and 2 and the slot: two loci of the tip meet at it."""
         both = first[0] == second[0] == "component"
         (l1, say1), (l2, say2) = (self.draw_locus(x, lo, f"′({lo[1].name}{x.name})" if both
                                                   else "′") for lo in (first, second))
-        note = " (not the vector sum of the two components!)" if both else ""
+        note = phrase("components.not_vector_sum") if both else None
         tip = self.act(f"cm:{x.tag}:tip", "intersect_lines", l1, l2,
-                       sentence=f"{say1[0].upper()}{say1[1:]} meets {say2} at the tip of "
-                                f"V_{x.name}{note}.")
+                       said=phrase("components.loci_meet", first=Capitalized(say1), second=say2,
+                                   point=x.name, note=note))
         if self.c.output(tip).is_at_infinity:
-            raise DegenerateInput(f"{say1} and {say2} are parallel (a dead point)")
+            raise DegenerateInput(f"{narrate(say1)} and {narrate(say2)} are parallel (a dead "
+                                  "point)")
         return tip
 
     def component_normal(self, k: Node, ab: Ref, ab_name: str) -> Ref:
@@ -338,49 +339,49 @@ class _Components(Walk):
             return self.at(k)
         on, K = ab.removeprefix("cm:line:"), k.name
         n = self.act(f"cm:{k.tag}:normal@{on}", "perpendicular_through", self.at(k), ab,
-                     sentence=f"At {K} draw the perpendicular to {ab_name}.")
+                     said=phrase("components.perpendicular_at", point=K, line=ab_name))
         vk = self.component_name(f"cm:{k.tag}:narrow@{on}", f"V_{K}″", ab_name)
         tip = self.act(f"cm:{k.tag}:ncomp@{on}", "project_onto", self.tip(k), n,
-                       sentence=f"Project the tip of V_{K} onto it: {vk} is the component of "
-                                f"V_{K} ⟂ {ab_name}.")
+                       said=phrase("components.project_normal", point=K, component=vk,
+                                   line=ab_name))
         self.act(f"cm:{k.tag}:narrow@{on}", "join", self.at(k), tip, label=vk,
-                 sentence=f"Draw {vk} at {K}.")
+                 said=phrase("components.draw_component", component=vk, point=K))
         return tip
 
     def draw_case3(self, x: Node, c: int, a: Node, b: Node) -> Ref:
         """Case 3: X on line AB, from the components ⟂ AB and the one along it."""
         t, X, ab_name = f"cm:{x.tag}:", x.name, f"{a.name}{b.name}"
-        ab = self.draw_line(a, b, f"Draw line {ab_name} of link {c}; {X} lies on it.")
+        ab = self.draw_line(a, b, phrase("components.line_carries", line=ab_name, link=c,
+                                         point=X))
         ta, tb = (self.component_normal(k, ab, ab_name) for k in (a, b))
         rest = a if self.zero(a) else b
-        through = (f"{rest.name} (at rest) and the tip of V_{(b if rest == a else a).name}″"
-                   if self.zero(rest) else f"the tips of V_{a.name}″ and V_{b.name}″")
+        through = (phrase("components.through_rest_and_tip", rest=rest.name,
+                          other=(b if rest == a else a).name)
+                   if self.zero(rest) else phrase("components.through_tips", a=a.name, b=b.name))
         gauge = self.act(f"{t}gauge", "line_through", ta, tb,
-                         sentence=f"Draw the gauge line through {through}.")
+                         said=phrase("components.gauge_through", through=through))
         nx = self.act(f"{t}normal@{x.tag}", "perpendicular_through", self.at(x), ab,
-                      sentence=f"At {X} draw the perpendicular to {ab_name}.")
+                      said=phrase("components.perpendicular_at", point=X, line=ab_name))
         nx_name = self.component_name(f"{t}narrow@{x.tag}", f"V_{X}″", ab_name)
         tx = self.act(f"{t}ncomp", "intersect_lines", gauge, nx,
-                      sentence=f"It cuts the gauge line at the tip of {nx_name}, the component "
-                               f"of V_{X} ⟂ {ab_name}.")
+                      said=phrase("components.cuts_gauge", component=nx_name, point=X,
+                                  line=ab_name))
         self.act(f"{t}narrow@{x.tag}", "join", self.at(x), tx, label=nx_name,
-                 sentence=f"Draw {nx_name} at {X}.")
+                 said=phrase("components.draw_component", component=nx_name, point=X))
         if self.zero(rest):  # V_X′ = 0: X turns about the fixed pivot, as on Hinkle's gauge line
-            return self.act(f"{t}tip", "mark", tx, sentence=f"V_{X}′ = V_{rest.name}′ = 0 "
-                            f"({rest.name} is at rest), so V_{X} = {nx_name}.")
+            return self.act(f"{t}tip", "mark", tx,
+                            said=phrase("components.rest_gives", point=X, rest=rest.name,
+                                        component=nx_name))
         along, vx = self.transfer_along(x, a, ab, ab_name)
         l1 = self.act(f"{t}pgram′", "perpendicular_through", along, ab,
-                      sentence=f"Through the tip of {vx} draw the parallel to {nx_name} "
-                               f"(⟂ {ab_name}).")
+                      said=phrase("components.pgram_first", a=vx, b=nx_name, line=ab_name))
         l2 = self.act(f"{t}pgram″", "parallel_through", tx, ab,
-                      sentence=f"Through the tip of {nx_name} draw the parallel to {vx} (along "
-                               f"{ab_name}).")
-        return self.act(f"{t}tip", "intersect_lines", l1, l2, sentence=f"They meet at the tip "
-                        f"of V_{X} = {vx} + {nx_name} (the parallelogram).")
+                      said=phrase("components.pgram_second", a=nx_name, b=vx, line=ab_name))
+        return self.act(f"{t}tip", "intersect_lines", l1, l2,
+                        said=phrase("components.pgram_meet", point=X, a=vx, b=nx_name))
 
     def draw_translate(self, x: Node, c: int, k: Node) -> Ref:
         """Hinkle Fig. 5.9: a block on a frame guide translates, so V_x = V_k."""
         K, X = k.name, x.name
         return self.act(f"cm:{x.tag}:tip", "transfer", self.at(x), self.at(k), self.tip(k),
-                        sentence=f"Link {c} slides on a frame guide without turning, so all its "
-                                 f"points have V_{K}: with dividers lay it off at {X}.")
+                        said=phrase("components.translate", link=c, known=K, point=X))

@@ -9,12 +9,14 @@ ends with a :class:`VelocityResult` whose ``vector`` step is the answer.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 from .assembly import Assembly
-from .record import Construction, Ref, Role
+from .narration import Number, Word, phrase
+from .record import Construction, Kind, Ref, Role, slice
 
-__all__ = ["VelocityResult", "draw_input_velocity", "velocity_value", "vector_label", "speed_text"]
+__all__ = ["VelocityResult", "velocity_result", "draw_input_velocity", "velocity_value",
+           "vector_label"]
 
 
 def vector_label(point: str) -> str:
@@ -26,8 +28,11 @@ def vector_label(point: str) -> str:
 class VelocityResult:
     """One point's velocity found by one graphical method.
 
-    ``steps`` are the refs the method drew, in order (the input vector first); a
-    figure of the method draws these and the centres they rest on, nothing more.
+    Its ``answer`` is the ``vector`` it found and the vectors it carried there:
+    the given one it started from and any it transferred (a length taken with
+    the dividers is a number to the record, not a step). A figure of the method is
+    the slice of the answer, ``steps``: the method's lines and the centres they
+    rest on, nothing more.
     """
 
     method: str
@@ -35,7 +40,8 @@ class VelocityResult:
     link: int
     vector: Ref
     scale: float
-    steps: list[Ref] = field(default_factory=list)
+    answer: tuple[Ref, ...]
+    steps: list[Ref]
 
     def value(self, construction: Construction) -> tuple[float, float]:
         """The velocity in m/s, read off the drawn vector at the drawing's scale."""
@@ -46,6 +52,22 @@ def velocity_value(construction: Construction, ref: Ref, scale: float) -> tuple[
     """Read a drawn velocity segment back as m/s."""
     vx, vy = construction.output(ref).vector
     return vx / scale, vy / scale
+
+
+def velocity_result(asm: Assembly, method: str, point: str, link: int, vector: Ref,
+                    scale: float, carried: tuple[Ref, ...],
+                    arrows: tuple[Ref, ...] = ()) -> VelocityResult:
+    """The result of a velocity method, with the slice of its answer as its steps.
+
+    ``arrows`` are the vectors the method drew on its way (components of the
+    known velocities, the velocities of the points it passed): those standing
+    on the points the found vector rests on belong to it.
+    """
+    c, base = asm.construction, asm.position_steps
+    found = slice(c, [vector], base=base, arrows=arrows).refs
+    answer = tuple(dict.fromkeys((*carried, *(r for r in found if r in arrows), vector)))
+    return VelocityResult(method, point, link, vector, scale, answer,
+                          list(slice(c, answer, base=base).refs))
 
 
 def draw_input_velocity(asm: Assembly, scale: float) -> tuple[str, Ref]:
@@ -68,17 +90,13 @@ def draw_input_velocity(asm: Assembly, scale: float) -> tuple[str, Ref]:
     sense = "ccw" if d.omega > 0 else "cw"
     perp = c.draw(f"v:perp:{point}", "perpendicular_through", asm.points[point],
                   asm.axes[d.link],
-                  sentence=f"At {point} draw the perpendicular to {pivot}{point}.")
+                  phrase=phrase("velocity.input_perpendicular", point=point, pivot=pivot))
     tip = c.draw(f"v:tip:{point}", "lay_off", asm.points[point], perp,
                  length=d.omega * r * scale,
-                 sentence=f"Lay off V_{point} = ω{d.link}·{pivot}{point} = {abs(d.omega):.6g} "
-                          f"rad/s × {units.length_text(r)} = {speed_text(speed, units)} along it, "
-                          f"in the sense of ω{d.link} ({sense}).")
+                 phrase=phrase("velocity.input_vector", point=point, link=d.link, pivot=pivot,
+                               omega=Number(abs(d.omega)), radius=units.length_said(r),
+                               speed=units.speed_said(speed), sense=Word(sense)))
     c.draw(ref, "join", asm.points[point], tip, label=vector_label(point), role=Role.GIVEN,
-           sentence=f"V_{point} is the known velocity.")
+           kind=Kind.VECTOR, phrase=phrase("velocity.known", point=point))
     return point, ref
 
-
-def speed_text(v: float, units) -> str:
-    """A speed (m/s) in the file's length unit per second: "250 mm/s"."""
-    return f"{v / units.metres:.6g} {units.length}/s"

@@ -34,8 +34,8 @@ from .assembly import Assembly
 from .coincident import Node
 from .errors import TarsimError
 from .polygon_walk import DEAD_POINT, DrawnPolygon, PolygonWalk, nice_scale, sense_of
+from .narration import Number, Phrase, Quantity, Word, phrase
 from .record import Construction, Panel, Ref, Role
-from .velocity_drawing import speed_text
 
 __all__ = ["VelocityPolygon", "draw_velocity_polygon", "nice_scale", "DEAD_POINT"]
 
@@ -144,8 +144,8 @@ class _Polygon(PolygonWalk):
         return VelocityPolygon(self.pole_ref, self.scale, tips, omegas, self.steps,
                                self.space_steps, self.c, aliases)
 
-    def say(self, v: float) -> str:
-        return speed_text(v, self.m.units)
+    def say(self, v: float) -> Quantity:
+        return self.m.units.speed_said(v)
 
     def draw_input(self) -> None:
         d = self.m.drive
@@ -155,50 +155,45 @@ class _Polygon(PolygonWalk):
         r = k.span(pivot, point)
         X = self.name(x)
         perp = self.act(f"vp:{X}:perp", "perpendicular_through", "vp:o_v", self.asm.axes[d.link],
-                        sentence=f"Through o_v draw a line ⟂ {pivot}{point} (the direction of "
-                                 f"V_{X}).")
+                        said=phrase("vpolygon.input_direction", pivot=pivot, p=point, point=X))
         sense = "ccw" if d.omega > 0 else "cw"
         self.known[x] = self.act(
             f"vp:tip:{X}", "lay_off", "vp:o_v", perp, length=d.omega * r * self.scale,
             label=X.lower(),
-            sentence=f"From o_v lay off o_v {X.lower()} = V_{X} = ω{d.link}·{pivot}{point} = "
-                     f"{abs(d.omega):.6g} rad/s × {self.m.units.length_text(r)} = "
-                     f"{self.say(self.m.input_speed)} ⟂ {pivot}{point}, in the sense of "
-                     f"ω{d.link} ({sense}).")
+            said=phrase("vpolygon.input", tip=X.lower(), point=X, link=d.link, pivot=pivot,
+                        p=point, omega=Number(abs(d.omega)),
+                        radius=self.m.units.length_said(r), speed=self.say(self.m.input_speed),
+                        sense=Word(sense)))
 
-    def draw_locus(self, x: Node, locus: tuple) -> tuple[Ref, str]:
+    def draw_locus(self, x: Node, locus: tuple) -> tuple[Ref, Phrase]:
         kind, X = locus[0], self.name(x)
         if kind == "rel":
             k, c = locus[1:]
             line = self.space_line(k, x, c)
             K, kx = self.name(k), f"{k.point}{x.point}"
-            if self.zero(k):
-                why = f"V_{X}, as {K} is fixed"
-            else:
-                why = f"V_{X}/{K}"
+            why = phrase("vpolygon.why_fixed" if self.zero(k) else "vpolygon.why_relative",
+                         point=X, known=K)
             ref = self.act(f"vp:{X}:perp@{K}", "perpendicular_through", self.tip(k), line,
-                           sentence=f"Through {self.tip_label(k)} draw a line ⟂ {kx} (the "
-                                    f"direction of {why}).")
-            return ref, f"the line ⟂ {kx} through {self.tip_label(k)}"
+                           said=phrase("vpolygon.perpendicular", tip=self.tip_label(k), line=kx,
+                                       why=why))
+            return ref, phrase("polygon.say_perpendicular", line=kx, tip=self.tip_label(k))
         if kind in ("guide", "glide"):
             i = locus[1]
-            why = (f"the guide of {X}" if kind == "guide" else
-                   f"the guide of link {locus[2]}, which slides on it without turning")
+            why = (phrase("polygon.why_guide", point=X) if kind == "guide" else
+                   phrase("polygon.why_glide", link=locus[2]))
             ref = self.act(f"vp:{X}:{kind}@{i}", "parallel_through", "vp:o_v", self.asm.guides[i],
-                           sentence=f"Through o_v draw the parallel to {why} (the direction of "
-                                    f"V_{X}).")
-            return ref, "the parallel to the guide through o_v"
+                           said=phrase("vpolygon.parallel_guide", why=why, point=X))
+            return ref, phrase("polygon.say_guide", pole="o_v")
         if kind == "curve":
             return self.draw_curve(x, *locus[1:])
         other, i = locus[1:]
         O, j = self.name(other), self.m.slides[i].guide_link
         ref = self.act(f"vp:{X}:slot@{i}", "parallel_through", self.tip(other), self.asm.guides[i],
-                       sentence=f"Through {self.tip_label(other)} draw the parallel to the slot "
-                                f"of link {j} (the direction of V_{X}/{O}, the sliding "
-                                "velocity).")
-        return ref, f"the parallel to the slot through {self.tip_label(other)}"
+                       said=phrase("vpolygon.slot", tip=self.tip_label(other), link=j, point=X,
+                                   other=O))
+        return ref, phrase("polygon.say_slot", tip=self.tip_label(other))
 
-    def draw_curve(self, x: Node, other: Node, i: int) -> tuple[Ref, str]:
+    def draw_curve(self, x: Node, other: Node, i: int) -> tuple[Ref, Phrase]:
         """A pin in a curved slot about K slides along the slot's tangent, ⟂ KP."""
         a = self.m.pin_arcs[i]
         k, p = Node(a.centre), Node(a.point)
@@ -207,10 +202,9 @@ class _Polygon(PolygonWalk):
         kp = f"{a.centre}{a.point}"
         X = self.name(x)
         ref = self.act(f"vp:{X}:curve@{i}", "perpendicular_through", self.tip(other), line,
-                       sentence=f"Through {self.tip_label(other)} draw a line ⟂ {kp}, the "
-                                f"tangent at {a.point} of the curved slot about {a.centre} (the "
-                                f"direction of V_{rel}, the sliding velocity).")
-        return ref, f"the line ⟂ {kp} through {self.tip_label(other)}"
+                       said=phrase("vpolygon.curve", tip=self.tip_label(other), line=kp,
+                                   point=a.point, centre=a.centre, rel=rel))
+        return ref, phrase("polygon.say_perpendicular", line=kp, tip=self.tip_label(other))
 
     def draw_results(self) -> dict[int, float]:
         """Draw V of every point from o_v, and read ω of every link off the polygon.
@@ -219,7 +213,7 @@ class _Polygon(PolygonWalk):
         whose sentence says so; any other from a relative one drawn between two tips.
         """
         omegas: dict[int, float] = {}
-        said: dict[Node, list[str]] = {}
+        said: dict[Node, list[Phrase]] = {}
         relative = []
         later = []
         for k in self.m.links:
@@ -242,10 +236,10 @@ class _Polygon(PolygonWalk):
             sense = sense_of(omega, abs(self.m.drive.omega))
             if sense == "at rest":
                 omega = 0.0
-            text = (f"ω{c} = {rel} / {p.point}{q.point} = {side} / {p.point}{q.point} = "
-                    f"{self.say(math.hypot(vx, vy))} ÷ "
-                    f"{self.m.units.length_text(math.hypot(rx, ry))} = {abs(omega):.6g} rad/s "
-                    f"({sense}: the sense of {rel} about {p.point}).")
+            text = phrase("vpolygon.omega", link=c, rel=rel, line=f"{p.point}{q.point}",
+                          side=side, speed=self.say(math.hypot(vx, vy)),
+                          length=self.m.units.length_said(math.hypot(rx, ry)),
+                          omega=Number(abs(omega)), sense=Word(sense), about=p.point)
             if self.zero(p):
                 said.setdefault(q, []).append(text)
             else:
@@ -255,14 +249,15 @@ class _Polygon(PolygonWalk):
             if self.zero(n):
                 continue
             X = self.name(n)
+            then = said.get(n)
             self.act(f"vp:V:{X}", "join", "vp:o_v", self.known[n], label=f"V_{X}",
                      role=Role.GIVEN if n == drive else Role.RESULT,
-                     sentence=" ".join([f"o_v {X.lower()} = V_{X} = "
-                                        f"{self.say(self.length(self.known[n]))}."]
-                                       + said.get(n, [])))
+                     said=phrase("vpolygon.vector", tip=X.lower(), point=X,
+                                 speed=self.say(self.length(self.known[n])),
+                                 then=phrase("then", sentences=tuple(then)) if then else None))
         for c, p, q, rel, text in relative:
             self.act(f"vp:omega:{c}", "join", self.tip(p), self.tip(q), label=rel,
-                     role=Role.RESULT, sentence=f"{self.tip_label(p)} {self.tip_label(q)} is "
-                                                f"{rel}. {text}")
+                     role=Role.RESULT, said=phrase("vpolygon.relative", a=self.tip_label(p),
+                                                   b=self.tip_label(q), rel=rel, omega=text))
         self.block_rates(omegas, later)
         return omegas

@@ -1,9 +1,9 @@
 """The files of a worked solution: one figure per construction, steps.md and results.json.
 
-Each figure shows only the backward slice of what it answers: the centres figure
-the centres asked (or needed for an ω), each velocity figure its own method's
-lines and the centres it uses. The numbers beside the drawn lines are the step
-numbers of steps.md, both taken from :func:`graphics.scene.numbered_steps`.
+Each figure shows only the slice of what it answers: the centres figure the
+centres asked (or needed for an ω), each velocity figure its own method's lines
+and the centres it uses. The numbers beside the drawn lines are the step numbers
+of steps.md, both the slice's own numbering.
 Everything is made in memory first, then written file by file atomically, so an
 error leaves nothing half-written.
 """
@@ -14,15 +14,15 @@ import math
 from dataclasses import dataclass
 from pathlib import Path
 
-from ..constructions import geometry as g
 from ..constructions.assembly import assemble
 from ..constructions.centres import centre_ref
-from ..constructions.record import Panel, Ref, slice as backward_slice, toposort
+from ..constructions.narration import narrate
+from ..constructions.record import Panel, Ref, Slice, slice
 from ..graphics.circle_diagram import draw_circle_diagram
 from ..graphics.export import pdf_pages, RenderError, svg_to, write_text
 from ..graphics.figure import Figure, stack_pages
 from ..graphics.polygon_panel import draw_polygon_panel
-from ..graphics.scene import draw_scene, numbered_steps
+from ..graphics.scene import draw_scene
 from ..graphics.svg import to_svg
 from ..graphics.worked_page import compose_worked_page
 
@@ -41,9 +41,10 @@ class SolutionFigure:
     stem: str
     heading: str
     figure: Figure
-    refs: list[Ref]
-    panels: tuple[tuple[str, Panel, list[Ref]], ...] = ()
-    """For a worked page: each polygon's heading, panel and steps, narrated in turn."""
+    shown: Slice | None
+    """What the figure shows of the space diagram's construction, narrated in steps.md."""
+    panels: tuple[tuple[str, Panel, Slice], ...] = ()
+    """For a worked page: each polygon's heading, panel and slice, narrated in turn."""
 
 
 def solve_to_files(ex: Exercise) -> tuple[list[Solution], dict[str, str]]:
@@ -110,7 +111,7 @@ def _figures(sol: Solution, suffix: str = "") -> list[SolutionFigure]:
     out = _construction_figures(sol)
     if sol.velocity_polygon is not None:
         out.append(_worked_page(sol))
-    return [SolutionFigure(f.stem + suffix, f.heading, f.figure, f.refs, f.panels) for f in out]
+    return [SolutionFigure(f.stem + suffix, f.heading, f.figure, f.shown, f.panels) for f in out]
 
 
 def _construction_figures(sol: Solution) -> list[SolutionFigure]:
@@ -126,21 +127,21 @@ def _construction_figures(sol: Solution) -> list[SolutionFigure]:
         pairs += [(1, d)] if n == d else [(1, d), (1, n), tuple(sorted((d, n)))]
     if pairs:
         targets = [centre_ref(*p) for p in dict.fromkeys(pairs)]
-        refs = _drawn(c, targets, sol.position_steps)
+        shown = slice(c, targets, base=sol.position_steps)
         heading = ("Instant centres" if ex.centres else "Centres for the angular velocities")
-        fig = draw_scene(asm, refs, title=f"{name}: {heading.lower()}", notes=sol.notes)
-        out.append(SolutionFigure("centres", heading, fig, refs))
+        fig = draw_scene(asm, shown, title=f"{name}: {heading.lower()}", notes=sol.notes)
+        out.append(SolutionFigure("centres", heading, fig, shown))
         if ex.centres:
+            every = slice(c, [centre.ref for centre in sol.centres.found.values()],
+                          base=sol.position_steps)
             out.append(SolutionFigure("circle-diagram", "Circle diagram",
-                                      draw_circle_diagram(sol.centres), []))
+                                      draw_circle_diagram(every, title=name), None))
     for r in sol.velocities:
-        # The method's own vectors (V_A, V_I23) feed no later act, so no slice reaches
-        # them: they are added from the method's list of what it drew.
-        refs = _drawn(c, [r.vector, *r.steps], sol.position_steps)
-        fig = draw_scene(asm, refs, title=f"{name}: V_{r.point} by {r.method}",
+        shown = slice(c, r.answer, base=sol.position_steps)
+        fig = draw_scene(asm, shown, title=f"{name}: V_{r.point} by {r.method}",
                          velocity_scale=r.scale)
         out.append(SolutionFigure(f"V_{r.point}-{r.method}", f"V_{r.point} by {r.method}",
-                                  fig, refs))
+                                  fig, shown))
     return out
 
 
@@ -156,7 +157,7 @@ def _worked_page(sol: Solution) -> SolutionFigure:
     m = ex.mechanism
     name = m.name
     where = f" at {sol.position.label}" if sol.position else ""
-    space = draw_scene(asm, [], title=f"{name}: space diagram{where}")
+    space = draw_scene(asm, Slice(c, ()), title=f"{name}: space diagram{where}")
     panels, figures = [], [space]
     # "α2 is not given, so it is taken as 0" belongs under the acceleration polygon.
     under_polygon = [n for n in sol.notes if "α" in n] if sol.acceleration_polygon else []
@@ -165,12 +166,13 @@ def _worked_page(sol: Solution) -> SolutionFigure:
                                   "Acceleration polygon")):
         if poly is None:
             continue
-        refs = _polygon_refs(c, poly, _polygon_targets(sol, poly, panel))
+        shown = slice(c, _polygon_targets(sol, poly, panel), base=sol.position_steps,
+                      arrows=poly.steps)
         notes = under_polygon if panel is Panel.ACCELERATION else []
         stated = ex.velocity_per_cm if panel is Panel.VELOCITY else ex.acceleration_per_cm
-        figures.append(draw_polygon_panel(c, refs, panel=panel, scale=poly.scale, units=m.units,
+        figures.append(draw_polygon_panel(shown, panel=panel, scale=poly.scale, units=m.units,
                                           title=heading, notes=notes, per_cm=stated))
-        panels.append((heading, panel, refs))
+        panels.append((heading, panel, shown))
     table = [("quantity", "method", "construction", "analytic", "relative error")]
     for qname, q in sol.quantities.items():
         for qq in (q, *q.alternatives.values()):
@@ -178,7 +180,7 @@ def _worked_page(sol: Solution) -> SolutionFigure:
                           _show(qq.reference, m.units, qname), f"{qq.rel_error:.1e}"))
     page = compose_worked_page(f"{name}: worked solution{where}", figures, table,
                                [n for n in sol.notes if n not in under_polygon])
-    return SolutionFigure("worked", "Worked solution", page, [], tuple(panels))
+    return SolutionFigure("worked", "Worked solution", page, None, tuple(panels))
 
 
 def _symbol(name: str) -> str:
@@ -216,29 +218,6 @@ def _on_link(m, key: str, n: int) -> bool:
     return key.endswith(str(n)) and key[:-len(str(n))] in m.point_names
 
 
-def _polygon_refs(c, poly, targets: list[Ref]) -> list[Ref]:
-    """The polygon's steps in the slice of ``targets``, with every vector between two drawn points.
-
-    The acceleration polygon reads ω and sliding velocities as numbers, not as
-    steps, so the velocity tips it needs are named in ``targets`` by the caller.
-    """
-    wanted = backward_slice(c, targets)
-    out = []
-    for r in poly.steps:
-        step = c[r]
-        if r in wanted or (isinstance(step.output, g.Segment)
-                           and all(i in wanted for i in step.inputs)):
-            out.append(r)
-            wanted.add(r)
-    return out
-
-
-def _drawn(c, targets: list[Ref], position_steps: frozenset[Ref]) -> list[Ref]:
-    """The slice of ``targets`` in record order, less the position construction."""
-    wanted = backward_slice(c, targets)
-    return [s.id for s in toposort(c, wanted) if s.id not in position_steps]
-
-
 def _overall_figures(ex: Exercise, overall: Overall) -> list[SolutionFigure]:
     """The limit positions, when the time ratio or stroke is asked."""
     lp = overall.limits
@@ -247,13 +226,16 @@ def _overall_figures(ex: Exercise, overall: Overall) -> list[SolutionFigure]:
         if ex.at_positions:
             return []
         # Nothing asked at a position: the mechanism itself is the figure.
-        fig = draw_scene(assemble(m), [], title=m.name)
-        return [SolutionFigure("mechanism", "The mechanism", fig, [])]
+        asm = assemble(m)
+        fig = draw_scene(asm, Slice(asm.construction, ()), title=m.name)
+        return [SolutionFigure("mechanism", "The mechanism", fig, None)]
     notes = [_time_ratio_words(m, lp)]
     if lp.stroke is not None:
         notes.append(f"Stroke of {lp.point}: {m.units.length_text(lp.stroke)}.")
-    fig = draw_scene(lp.assembly, lp.steps, title=f"{m.name}: limit positions", notes=notes)
-    return [SolutionFigure("limits", "Limit positions", fig, list(lp.steps))]
+    c = lp.assembly.construction
+    shown = slice(c, lp.steps, base=[s.id for s in c if s.id not in lp.steps])
+    fig = draw_scene(lp.assembly, shown, title=f"{m.name}: limit positions", notes=notes)
+    return [SolutionFigure("limits", "Limit positions", fig, shown)]
 
 
 def _time_ratio_words(m, lp) -> str:
@@ -272,8 +254,8 @@ def _overall_markdown(ex: Exercise, overall: Overall, figures: list[SolutionFigu
     lp = overall.limits
     for f in figures if lp is not None else ():
         lines += [f"## {f.heading} (`{f.stem}.svg`)", ""]
-        for number, step in numbered_steps(lp.assembly.construction, f.refs):
-            lines.append(f"{number}. {step.sentence}")
+        for number, step in f.shown.numbered():
+            lines.append(f"{number}. {narrate(step)}")
         lines += ["", _time_ratio_words(ex.mechanism, lp), ""]
     lines += ["## Results", "", "| quantity | answer | check | relative error | method |",
               "|---|---|---|---|---|"]
@@ -317,14 +299,13 @@ def _steps_markdown(sol: Solution, figures: list[SolutionFigure], *, heading: bo
     alpha = f", α{d.link} = {d.alpha:.6g} rad/s²" + ("" if d.alpha_given else " (not given: 0)")
     lines += [f"Position: θ{d.link} = {angle}, ω{d.link} = {abs(d.omega):.6g} rad/s {sense}"
               f"{alpha}.", ""]
-    c = sol.assembly.construction
     for f in figures:
-        parts = [(f.heading, Panel.SPACE, f.refs)] if f.refs else []
+        parts = [(f.heading, Panel.SPACE, f.shown)] if f.shown else []
         parts += list(f.panels)
-        for title, panel, refs in parts:
+        for title, panel, shown in parts:
             lines += [f"## {title} (`{f.stem}.svg`)", ""]
-            for number, step in numbered_steps(c, refs, panel=panel):
-                lines.append(f"{number}. {step.sentence}")
+            for number, step in shown.numbered(panel):
+                lines.append(f"{number}. {narrate(step)}")
             lines.append("")
     for note in sol.notes:
         lines.append(f"> {note}")

@@ -15,7 +15,8 @@ import math
 from shapely.geometry import LineString
 from shapely.geometry import Point as SPoint
 
-from ..constructions.centres import Centre, Centres
+from ..constructions.centres import Centre
+from ..constructions.record import Kind, Slice
 
 from .figure import Circle, Figure, Path, Text, text_width
 from .labels import LabelPlacer, typeset
@@ -44,23 +45,29 @@ def secondary_text(centre: Centre) -> str:
     return f"{centre.order}. {typeset(centre.label)[0]}: {', '.join(triangle_text(centre))}"
 
 
-def draw_circle_diagram(centres: Centres, *, upto: int | None = None) -> Figure:
-    """Draw the circle diagram of a mechanism's instant centres.
+def draw_circle_diagram(shown: Slice, *, title: str, upto: int | None = None) -> Figure:
+    """Draw the circle diagram of the instant centres a slice of the record holds.
 
     Parameters
     ----------
-    centres
-        The located centres (:func:`~constructions.centres.locate_centres`).
+    shown
+        A slice holding every centre of the mechanism (the steps of kind
+        ``CENTRE``, each about its :class:`~tarsim.constructions.centres.Centre`).
+    title
+        The mechanism's name, which heads the caption.
     upto
         Draw the diagram as it stands once this many centres have been found by
         Kennedy's theorem, the last of them with its two triangles shaded; all of
         them when None.
     """
-    links = centres.links
+    centres = [s.about for s in shown if s.kind is Kind.CENTRE and isinstance(s.about, Centre)]
+    links = sorted({k for c in centres for k in c.pair})
     n = len(links)
-    found = [c for c in centres.secondaries if upto is None or c.order <= upto]
+    primaries = [c for c in centres if c.primary]
+    secondaries = sorted((c for c in centres if not c.primary), key=lambda c: c.order)
+    found = [c for c in secondaries if upto is None or c.order <= upto]
     current = found[-1] if upto is not None and found else None
-    fig = Figure(0.0, 0.0, title=f"{centres.assembly.mechanism.name}: circle diagram")
+    fig = Figure(0.0, 0.0, title=f"{title}: circle diagram")
     node = {k: _node_at(i, n) for i, k in enumerate(links)}
 
     # Node circle, then the shaded triangles of the centre being found, then chords.
@@ -72,7 +79,7 @@ def draw_circle_diagram(centres: Centres, *, upto: int | None = None) -> Figure:
                 fig.add(Path((node[i], node[k], node[j]), ("triangle", "triangle_alt")[shade % 2],
                              closed=True))
     chords: list[tuple[Centre, LineString]] = []
-    for c in [*centres.primaries, *found]:
+    for c in [*primaries, *found]:
         a, b = node[c.pair[0]], node[c.pair[1]]
         style = ("chord" if c.primary else
                  "chord_current" if c is current else "chord_secondary")
@@ -84,7 +91,7 @@ def draw_circle_diagram(centres: Centres, *, upto: int | None = None) -> Figure:
         fig.add(Text((at[0] + _NUMBER_OUT * ux, at[1] + _NUMBER_OUT * uy), str(k), 3.8,
                      italic=False))
     _number_chords(fig, chords, node)
-    _caption(fig, centres, found, n, upto)
+    _caption(fig, title, len(primaries), found, n, upto)
     return fig
 
 
@@ -115,13 +122,11 @@ def _number_chords(fig: Figure, chords, node) -> None:
         placer.block(p.buffer(r + 0.2))
 
 
-def _caption(fig: Figure, centres: Centres, found: list[Centre], n: int,
+def _caption(fig: Figure, head: str, primaries: int, found: list[Centre], n: int,
              upto: int | None) -> None:
     x0, y0, x1, y1 = fig.bounds()
-    primaries = len(centres.primaries)
     total = n * (n - 1) // 2
     kennedy = total - primaries
-    head = centres.assembly.mechanism.name
     count = (f"n = {n} links, N = n(n−1)/2 = {total} centres: {primaries} by inspection, "
              f"{kennedy} by Kennedy")
     items = [secondary_text(c) for c in found]

@@ -17,9 +17,10 @@ geometry:
 The panel has its own nice scale, "1 cm = N mm/s" (or mm/s²) with N = 1, 2 or
 5 × 10^k in the file's length unit, chosen so the polygon fills about
 :data:`POLYGON_BOX` of paper; the statement is true, so a vector of v m/s
-measures v / N cm. Each narrated step carries its circled number, counted by
-:func:`graphics.scene.numbered_steps` with the panel, so steps.md can number
-its sentences the same way.
+measures v / N cm. Each narrated step carries its circled number, the slice's
+own numbering for the panel
+(:meth:`~tarsim.constructions.record.Slice.numbered`), so steps.md numbers its
+steps the same way.
 """
 
 from __future__ import annotations
@@ -32,12 +33,11 @@ from shapely.geometry import Point as SPoint, box
 from ..constructions import geometry as g
 from ..constructions.errors import TarsimError
 from ..constructions.model import Units
-from ..constructions.record import Construction, Panel, Ref, Role, Step
+from ..constructions.record import Panel, Ref, Role, Slice, Step
 
 from .figure import Circle, Figure, Path, View, arc_points, span_line
 from .labels import LabelPlacer, typeset
 from .scales import draw_caption, nice_per_cm
-from .scene import numbered_steps, panel_steps
 from .symbols import draw_arrow, unit
 
 __all__ = ["draw_polygon_panel", "POLYGON_BOX", "QUANTITIES"]
@@ -62,18 +62,16 @@ _CROSSABLE = 0.02   # what covering a thin working line costs a label, against 1
 
 
 # ----- the public function ----------------------------------------------------------------
-def draw_polygon_panel(construction: Construction, refs: Iterable[Ref], *, panel: Panel,
-                       scale: float, units: Units, title: str,
+def draw_polygon_panel(shown: Slice, *, panel: Panel, scale: float, units: Units, title: str,
                        notes: Sequence[str] = (), per_cm: float | None = None) -> Figure:
-    """Draw the steps ``refs`` of a velocity or acceleration polygon as a figure.
+    """Draw the steps of a velocity or acceleration polygon that ``shown`` holds as a figure.
 
     Parameters
     ----------
-    construction
-        The record that holds the steps.
-    refs
-        The steps to draw, in narration order (a set is taken in record order);
-        those of other panels are left out, so a whole slice can be passed.
+    shown
+        A slice of the record; its steps in ``panel`` are drawn in its order and
+        numbered as it numbers them (those of other panels are left out, so a
+        whole figure's slice can be passed).
     panel
         ``Panel.VELOCITY`` or ``Panel.ACCELERATION``; it also names the quantity
         in the scale statement and its unit (mm/s or mm/s²).
@@ -100,26 +98,24 @@ def draw_polygon_panel(construction: Construction, refs: Iterable[Ref], *, panel
     ------
     TarsimError
         If ``panel`` is not a polygon panel, ``scale`` is not a positive number,
-        a ref names no step of the construction, or no point of the panel is
-        among the refs.
+        or no point of the panel is among the steps shown.
 
     See Also
     --------
-    graphics.scene.numbered_steps : the circled numbers, for a steps.md writer.
-    graphics.worked_page.compose_worked_page : a page of several panels.
+    tarsim.constructions.record.Slice.numbered : the circled numbers, for a steps.md writer.
+    tarsim.graphics.worked_page.compose_worked_page : a page of several panels.
 
     Examples
     --------
     V_B of 50 mm/s on a 3-4-5 triangle, laid off at 1 drawing metre per m/s:
 
-    >>> from tarsim.constructions.record import Construction
+    >>> from tarsim.constructions.record import Construction, slice
     >>> c = Construction()
-    >>> _ = c.give("vp:o_v", g.Point(0, 0), label="o_v", sentence="", panel=Panel.VELOCITY)
-    >>> _ = c.give("vp:tip:B", g.Point(0.03, 0.04), label="b", sentence="",
-    ...            panel=Panel.VELOCITY)
+    >>> _ = c.give("vp:o_v", g.Point(0, 0), label="o_v", panel=Panel.VELOCITY)
+    >>> _ = c.give("vp:tip:B", g.Point(0.03, 0.04), label="b", panel=Panel.VELOCITY)
     >>> _ = c.draw("vp:V:B", "join", "vp:o_v", "vp:tip:B", label="V_B", role=Role.RESULT,
-    ...            panel=Panel.VELOCITY, sentence="o_v b = V_B.")
-    >>> fig = draw_polygon_panel(c, ["vp:o_v", "vp:tip:B", "vp:V:B"], panel=Panel.VELOCITY,
+    ...            panel=Panel.VELOCITY)
+    >>> fig = draw_polygon_panel(slice(c, ["vp:V:B"]), panel=Panel.VELOCITY,
     ...                          scale=1.0, units=Units("mm"), title="V_B")
     >>> [t.text for t in fig.items if getattr(t, "text", "").startswith("Velocity")]
     ['Velocity scale 1 cm = 5 mm/s']
@@ -135,13 +131,12 @@ def draw_polygon_panel(construction: Construction, refs: Iterable[Ref], *, panel
         raise TarsimError(f"a polygon's scale must be a positive number, got {scale}")
     if per_cm is not None and not (math.isfinite(per_cm) and per_cm > 0.0):
         raise TarsimError(f"a stated polygon scale must be a positive number, got {per_cm}")
-    steps = panel_steps(construction, refs, panel)
+    steps = shown.steps(panel)
     if not any(_finite_points(s) for s in steps):
         raise TarsimError(f"nothing to draw: no point or vector of the {panel} polygon is "
                           "among the steps asked for")
-    numbers = {s.id: n for n, s in numbered_steps(construction, [s.id for s in steps],
-                                                  panel=panel)}
-    return _PolygonPanel(steps, numbers, panel, float(scale), units, per_cm).draw(title, notes)
+    return _PolygonPanel(steps, shown.numbers(panel), panel, float(scale), units,
+                         per_cm).draw(title, notes)
 
 
 # ----- what the steps put on paper ----------------------------------------------------------

@@ -19,27 +19,29 @@ to :data:`FRAME_CAP` mechanism extents (or :data:`FRAME_MIN` mm of paper); the
 space scale is the kinematic diagram's, so :func:`choose_velocity_scale` can
 state a velocity scale before the scene is drawn.
 
-Every step that draws something and is narrated, other than a given, carries
-its number in a small circle; :func:`numbered_steps` is the one source of those
-numbers, so a written solution numbers its sentences the same way.
+What the scene shows is a :class:`~tarsim.constructions.record.Slice` of the
+record, and every step is styled by its :class:`~tarsim.constructions.record.Kind`
+alone. Every step that draws something and is narrated, other than a given,
+carries its number in a small circle: the slice's own numbering
+(:meth:`~tarsim.constructions.record.Slice.numbered`), so a written solution
+numbers its steps the same way.
 """
 
 from __future__ import annotations
 
 import math
-import re
-from collections.abc import Iterable, Sequence
+from collections.abc import Sequence
 
 from shapely.geometry import LineString, box
 from shapely.geometry import Point as SPoint
 
 from ..constructions import geometry as g
 from ..constructions.assembly import Assembly
-from ..constructions.centres import Centres
+from ..constructions.centres import Centre
 from ..constructions.errors import TarsimError
 from ..constructions.measures import Angle, Dimension
 from ..constructions.model import SlideKind
-from ..constructions.record import Construction, Panel, Ref, Role, Step
+from ..constructions.record import Kind, Panel, Ref, Role, Slice, Step
 
 from .diagram import _Diagram, subscript
 from .figure import Circle, Figure, Path, arc_points, clip_line, ray_to_edge, span_line
@@ -48,9 +50,8 @@ from .scales import draw_caption, scale_text
 from .symbols import (PIN_RADIUS, draw_arrow, draw_arrowhead, draw_dimension, draw_turning_arrow,
                       unit)
 
-__all__ = ["draw_scene", "numbered_steps", "panel_steps", "choose_velocity_scale",
-           "velocity_scale_for", "centre_steps",
-           "line_kind", "FRAME_CAP", "FRAME_MIN", "LINE_KINDS"]
+__all__ = ["draw_scene", "choose_velocity_scale", "velocity_scale_for", "line_style",
+           "FRAME_CAP", "FRAME_MIN", "LINE_KINDS"]
 
 FRAME_CAP = 1.6
 """The page's frame grows to take in the scene's points up to this many mechanism extents..."""
@@ -59,14 +60,15 @@ FRAME_MIN = 190.0
 """...or this many millimetres of paper, whichever is more; beyond, a point is off the page."""
 
 LINE_KINDS = {
-    "kennedy": ("kennedy", "Kennedy line"),
-    "normal": ("normal", "common normal"),
-    "gauge": ("gauge", "gauge line"),
-    "working": ("working", "construction line"),
+    Kind.KENNEDY_LINE: ("kennedy", "Kennedy line"),
+    Kind.COMMON_NORMAL: ("normal", "common normal"),
+    Kind.GAUGE_LINE: ("gauge", "gauge line"),
+    Kind.LINE: ("working", "construction line"),
 }
 """Each kind of line: its style and its name in the legend."""
 
-_PRIORITY = ("normal", "gauge", "kennedy", "working")   # which kind shows when lines coincide
+_PRIORITY = (Kind.COMMON_NORMAL, Kind.GAUGE_LINE, Kind.KENNEDY_LINE, Kind.LINE)
+"""Which kind shows when lines drawn by several steps coincide."""
 _MARGIN = 8.0       # white round the drawing, mm (as the kinematic diagram)
 _EDGE = 9.0         # room between the frame's points and the clip edge, mm
 _OVERHANG = 4.0     # a line runs this far past its last point, mm
@@ -75,51 +77,22 @@ _TRACE = 4.0        # a compass trace through one point runs this far either sid
 _DOT = 0.6          # a marked point, mm
 _INF_ARROW = 11.0   # each half of the arrow of a centre at infinity, mm
 _SAME = 1e-9        # relative slack for "lies on" and "coincides"
-_ROTATES = re.compile(r"\b(rotat|swing|swung|turn)", re.IGNORECASE)
 
 
 # ----- the public functions -----------------------------------------------------------------
-def line_kind(step: Step) -> str:
-    """Tell a line step's kind: ``kennedy`` (``K:``), ``normal`` (``N:``), ``gauge`` or ``working``.
+def line_style(step: Step) -> str:
+    """The style a line step is drawn in, by its kind: a guide or axis of the mechanism
+    drawn as a working line, as any line the kinds do not name.
 
     Examples
     --------
-    >>> line_kind(Step("K:13/2", "line_through", (), None, "", Role.CONSTRUCTION,
-    ...                Panel.SPACE, ""))
+    >>> from tarsim.constructions.record import Construction
+    >>> c = Construction()
+    >>> _ = c.give("l", g.Line(0.0, 1.0, 0.0), label="", kind=Kind.KENNEDY_LINE)
+    >>> line_style(c["l"])
     'kennedy'
     """
-    if step.id.startswith("K:"):
-        return "kennedy"
-    if step.id.startswith("N:"):
-        return "normal"
-    if "gauge" in step.label.lower():
-        return "gauge"
-    return "working"
-
-
-def numbered_steps(construction: Construction, refs: Iterable[Ref], *,
-                   panel: Panel = Panel.SPACE) -> list[tuple[int, Step]]:
-    """Number the steps of a figure as it does: 1, 2, … in the order of ``refs``.
-
-    Only steps that draw something on the figure's ``panel`` (the space diagram
-    by default, or a velocity or acceleration polygon) and say so in a sentence
-    are counted; givens are not numbered, and neither is a point the act before
-    it already named (B′ where the swung arc cuts the line: its step has no
-    sentence of its own), though both are drawn. A set of refs (as
-    :func:`~constructions.record.slice` returns) is taken in record order. A
-    steps.md writer uses these numbers, so its sentences match the figure's
-    circled numbers.
-
-    Raises
-    ------
-    TarsimError
-        If a ref names no step of the construction.
-    """
-    out: list[tuple[int, Step]] = []
-    for step in panel_steps(construction, refs, panel):
-        if step.role is not Role.GIVEN and step.sentence and _draws(step):
-            out.append((len(out) + 1, step))
-    return out
+    return LINE_KINDS.get(step.kind, LINE_KINDS[Kind.LINE])[0]
 
 
 def choose_velocity_scale(asm: Assembly, speed: float) -> float:
@@ -159,28 +132,17 @@ def velocity_scale_for(asm: Assembly, per_cm: float) -> float:
     return paper_per_mps / _space_view_scale(asm)
 
 
-def centre_steps(centres: Centres) -> list[Ref]:
-    """The refs of a complete instant-centre construction, in the order a student draws it.
-
-    The centres by inspection first, then for each centre found by Kennedy its
-    two lines and the centre itself, in the order of discovery.
-    """
-    out = [c.ref for c in centres.primaries]
-    for c in centres.secondaries:
-        out += [r for r in c.lines if r not in out] + [c.ref]
-    return out
-
-
-def draw_scene(asm: Assembly, refs: Iterable[Ref], *, title: str | None = None,
+def draw_scene(asm: Assembly, shown: Slice, *, title: str | None = None,
                velocity_scale: float | None = None, notes: Sequence[str] = ()) -> Figure:
-    """Draw the kinematic diagram of ``asm`` with the steps ``refs`` on it.
+    """Draw the kinematic diagram of ``asm`` with the steps of ``shown`` on it.
 
     Parameters
     ----------
     asm
         The assembled mechanism whose construction holds the steps.
-    refs
-        The steps to draw, in narration order (a set is taken in record order).
+    shown
+        What the figure shows: a slice of the construction (its space-panel steps
+        are drawn, in its order, and numbered as it numbers them).
     title
         The caption's heading; the mechanism's name when None.
     velocity_scale
@@ -192,67 +154,17 @@ def draw_scene(asm: Assembly, refs: Iterable[Ref], *, title: str | None = None,
     Raises
     ------
     TarsimError
-        If a ref names no step of the construction.
+        If ``shown`` is a slice of another construction.
     """
-    return _Scene(asm, panel_steps(asm.construction, refs), title, velocity_scale, notes).draw()
+    if shown.construction is not asm.construction:
+        raise TarsimError("the slice to draw is of another construction than the mechanism's")
+    return _Scene(asm, shown, title, velocity_scale, notes).draw()
 
 
 # ----- what a step draws --------------------------------------------------------------------
-def panel_steps(construction: Construction, refs: Iterable[Ref],
-                panel: Panel = Panel.SPACE) -> list[Step]:
-    """Return the steps of ``refs`` drawn in ``panel``, in narration order, each once.
-
-    A list is taken in its own order, a set (as
-    :func:`~constructions.record.slice` returns) in record order; steps of other
-    panels are left out, so one slice serves every panel's figure.
-
-    Raises
-    ------
-    TarsimError
-        If a ref names no step of the construction.
-    """
-    if isinstance(refs, (set, frozenset)):
-        missing = sorted(r for r in refs if r not in construction)
-        wanted = set(refs)
-        ordered = [s for s in construction if s.id in wanted]
-    else:
-        seen: set[Ref] = set()
-        ordered, missing = [], []
-        for r in refs:
-            if r in seen:
-                continue
-            seen.add(r)
-            if r not in construction:
-                missing.append(r)
-            else:
-                ordered.append(construction[r])
-    if missing:
-        raise TarsimError(f"nothing in the construction is called '{missing[0]}'")
-    return [s for s in ordered if s.panel is panel]
-
-
 def _segment_ends(steps: list[Step]) -> list[g.Point]:
     return [p for s in steps if isinstance(s.output, g.Segment)
             for p in (s.output.start, s.output.end)]
-
-
-def _is_mechanism_point(step: Step) -> bool:
-    return step.id.startswith("P:")
-
-
-def _draws(step: Step) -> bool:
-    """True if the step puts something on the page beyond the kinematic diagram.
-
-    A mechanism's own point (``P:``) is the diagram's; a line at infinity has no
-    trace. Everything else is drawn: a point at a vector's tip or at a pin is
-    not dotted, but its number stands beside it.
-    """
-    out = step.output
-    if isinstance(out, g.Line):
-        return not out.is_at_infinity
-    if isinstance(out, (g.Circle, g.Segment, Dimension, Angle)):
-        return True
-    return isinstance(out, g.Point) and not _is_mechanism_point(step)
 
 
 def _coincide(p: g.Point, q: g.Point) -> bool:
@@ -272,15 +184,16 @@ def _space_view_scale(asm: Assembly) -> float:
 class _Scene(_Diagram):
     """The kinematic diagram, then the scene's layers: working lines under it, marks over it."""
 
-    def __init__(self, asm: Assembly, steps: list[Step], title: str | None,
+    def __init__(self, asm: Assembly, shown: Slice, title: str | None,
                  velocity_scale: float | None, notes: Sequence[str]):
         super().__init__(asm)
-        self.steps = steps
+        self.steps = shown.steps(Panel.SPACE)
+        steps = self.steps
         self.title = title
         self.velocity_scale = velocity_scale
         self.notes = tuple(notes)
         self.c = asm.construction
-        self.numbers = {s.id: n for n, s in numbered_steps(self.c, [s.id for s in steps])}
+        self.numbers = shown.numbers(Panel.SPACE)
         self.ends = _segment_ends(steps)
         self.kinds: list[str] = []
 
@@ -399,7 +312,7 @@ class _Scene(_Diagram):
                 for k in range(len(angles))]
         k = max(range(len(gaps)), key=gaps.__getitem__)
         start, sweep = angles[(k + 1) % len(angles)], 2 * math.pi - gaps[k]
-        swung = bool(_ROTATES.search(step.sentence))
+        swung = step.kind is Kind.SWING
         if swung:
             # The swung-to end is the point located last that is neither a pin nor a
             # vector's end; the arc runs to it.
@@ -437,7 +350,8 @@ class _Scene(_Diagram):
         """Lines and arcs go in first, under the mechanism; the labels will keep clear."""
         for steps, ends in self.lines:
             # Lines drawn over one another show as the most telling of their kinds.
-            kind = min((line_kind(st) for st in steps), key=_PRIORITY.index)
+            kind = min((st.kind if st.kind in LINE_KINDS else Kind.LINE for st in steps),
+                       key=_PRIORITY.index)
             if ends is not None:
                 self.kinds += [kind] if kind not in self.kinds else []
                 self.fig.add(Path(ends, LINE_KINDS[kind][0]))
@@ -451,7 +365,7 @@ class _Scene(_Diagram):
             out = step.output
             if isinstance(out, g.Segment) and out.length > 0:
                 self.placer.block_path([self.view(out.start.xy), self.view(out.end.xy)], 1.0)
-            elif isinstance(out, g.Point) and not out.is_at_infinity and _draws(step):
+            elif isinstance(out, g.Point) and not out.is_at_infinity and step.draws:
                 self.placer.block(SPoint(self.view(out.xy)).buffer(_DOT + 0.6))
         for _, _, arrows in self.edge_arrows:
             for tail, tip in arrows:
@@ -562,7 +476,7 @@ class _Scene(_Diagram):
         far = {s.id for s, _ in self.far}
         for step in self.steps:
             out = step.output
-            if not isinstance(out, g.Point) or out.is_at_infinity or not _draws(step) \
+            if not isinstance(out, g.Point) or out.is_at_infinity or not step.draws \
                     or step.id in far:
                 continue
             for grp in groups:
@@ -613,9 +527,8 @@ class _Scene(_Diagram):
 
         Returns the paper point, the direction to step aside along (or None) and how far.
         """
-        m = re.fullmatch(r"I:(\d+),(\d+)", step.id) or re.fullmatch(r"I:(\d)(\d+)", step.id)
-        if m:
-            pair = tuple(sorted((int(m.group(1)), int(m.group(2)))))
+        if isinstance(step.about, Centre):
+            pair = step.about.pair
             for i, s in enumerate(self.m.slides):
                 if s.kind is SlideKind.BLOCK and tuple(sorted((s.link, s.guide_link))) == pair:
                     at = (self.block_centre(s) if hasattr(self, "block_centre")
@@ -678,7 +591,7 @@ class _Scene(_Diagram):
             per_cm = 10.0 / (self.velocity_scale * self.view.scale) / u.metres
             lines.append(f"Velocity scale {scale_text(per_cm, u.length + '/s')}")
         legend = [LINE_KINDS[k] for k in LINE_KINDS if k in self.kinds]
-        if legend == [LINE_KINDS["working"]]:
+        if legend == [LINE_KINDS[Kind.LINE]]:
             legend = []           # plain construction lines need no key
         draw_caption(self.fig, self.title or self.m.name, lines, per_cm=self.per_cm,
                      unit=u.length, legend=legend, notes=self.notes, margin=_MARGIN)
@@ -688,7 +601,7 @@ class _Scene(_Diagram):
 def _finite_points(s: Step) -> list[tuple[float, float]]:
     """The finite points a step puts on the page (a mechanism point is the diagram's)."""
     out = s.output
-    if isinstance(out, g.Point) and not out.is_at_infinity and not _is_mechanism_point(s):
+    if isinstance(out, g.Point) and not out.is_at_infinity and s.kind is not Kind.JOINT:
         return [out.xy]
     if isinstance(out, (g.Segment, Dimension)):
         return [out.start.xy, out.end.xy]

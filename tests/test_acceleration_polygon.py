@@ -29,6 +29,7 @@ from tarsim.constructions.model import Drive
 from tarsim.constructions.record import Panel, Role, replay
 from tarsim.constructions.velocity_polygon import VelocityPolygon, draw_velocity_polygon
 from tarsim.exercises.mechanism_file import load_mechanism
+from tarsim.constructions.narration import narrate
 from tests.common import (coupler_four_bar, crank_shaper, four_bar, inverted_slider_crank,
                           offset_slider_crank, scotch_yoke, slotted_lever_p37)
 
@@ -117,7 +118,7 @@ def vector(ap, asm, label):
 
 
 def sentences(ap, asm):
-    return [asm.construction[r].sentence for r in ap.steps]
+    return [narrate(asm.construction[r]) for r in ap.steps]
 
 
 # ----- parity with the analytic solver ------------------------------------------------
@@ -377,7 +378,7 @@ def test_the_acceleration_polygon_checks_its_own_crossing():
     c = asm.construction
     for ref, xy in (("vp:o_v", (0.0, 0.0)), ("vp:tip:A", (-0.3, 0.0)),
                     ("vp:tip:B", (-0.1, 0.2))):
-        c.give(ref, g.Point(*xy), label=ref, sentence="Given.", panel=Panel.VELOCITY)
+        c.give(ref, g.Point(*xy), label=ref, panel=Panel.VELOCITY)
     tips = {"O2": "vp:o_v", "O4": "vp:o_v", "A": "vp:tip:A", "B": "vp:tip:B"}
     vp = VelocityPolygon("vp:o_v", 1.0, tips, {2: 1.0, 3: 0.5, 4: 0.25}, [], construction=c)
     with pytest.raises(AssemblyError) as e:
@@ -503,7 +504,7 @@ def test_every_step_is_in_the_acceleration_panel_and_replays(name):
         assert step.panel is Panel.ACCELERATION
         assert replay(c, ref) == step.output
         if ref not in arrows:           # a component arrow is said by the act before it
-            assert len(step.sentence) > 20 and step.sentence.endswith("."), step.sentence
+            assert len(narrate(step)) > 20 and narrate(step).endswith("."), narrate(step)
     # The polygon rests only on the space diagram and on its own steps: it takes the
     # velocity polygon's numbers (ω, V_rel), never its tips.
     ours = set(ap.steps) | set(ap.space_steps)

@@ -16,7 +16,7 @@ from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
 from tarsim.constructions.reference.rotatability import grashof, grashof_class
-from tarsim.constructions.reference.solver import (SINGULAR_RCOND, Kinematics, SingularPosition,
+from tarsim.constructions.reference.solver import (Kinematics, SingularPosition,
                                                    point_acceleration, point_velocity, solve)
 from tarsim.constructions.errors import AssemblyError, InputError, TarsimError
 from tarsim.constructions.model import Drive, Link, Mechanism, Slide, SlideKind

@@ -11,6 +11,7 @@ from tarsim.constructions.errors import AssemblyError
 from tarsim.constructions.model import Drive
 from tarsim.exercises.catalog import bundled
 from tarsim.exercises.mechanism_file import load_mechanism, parse_mechanism
+from tarsim.constructions.narration import narrate
 from tests.common import four_bar_toml
 
 BUNDLED = sorted(bundled())
@@ -185,7 +186,7 @@ def test_every_step_has_a_sentence_or_is_a_bare_line():
     results = [s for s in asm.construction if s.role == "result"]
     assert {s.label for s in results} == {"A", "B", "C"}
     for s in results:
-        assert s.sentence and re.search(r"\b" + s.label + r"\b", s.sentence)
+        assert narrate(s) and re.search(r"\b" + s.label + r"\b", narrate(s))
 
 
 @pytest.mark.parametrize("name", ["watt-six-bar", "stephenson-six-bar"])

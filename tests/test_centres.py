@@ -598,7 +598,7 @@ def test_when_every_kennedy_line_coincides_rule_2_draws_the_velocity_profiles():
     assert c.rule == "velocities"
     kin = solve(m)
     assert centre_error(cs.point(2, 5), instant_centre(kin, 2, 5), asm.size) < 1e-15
-    steps = backward_slice(asm.construction, [c.ref])
+    steps = backward_slice(asm.construction, [c.ref]).refs
     verbs = [asm.construction[r].verb for r in steps if r.startswith("rule2:")]
     assert verbs.count("lay_off") == 3          # X and the two velocity tips
     assert "intersect_lines" in verbs            # the profiles cross

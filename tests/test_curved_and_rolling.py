@@ -29,6 +29,7 @@ from tarsim.constructions.model import Drive
 from tarsim.constructions.velocity_by_centres import METHODS
 from tarsim.constructions.velocity_by_components import velocity_by_components
 from tarsim.exercises.mechanism_file import load_mechanism, parse_mechanism
+from tarsim.constructions.narration import narrate
 
 DATA = Path(__file__).parent / "data"
 ANGLES = range(0, 360, 30)
@@ -152,7 +153,7 @@ def test_a_block_on_a_curved_guide_has_its_centre_at_the_centre_of_curvature():
     c = cs.centre(1, 4)
     assert c.rule == "curved" and c.primary
     assert cs.point(1, 4).xy == pytest.approx((0.150, -0.200), abs=1e-15)
-    sentence = asm.construction[c.ref].sentence
+    sentence = narrate(asm.construction[c.ref])
     assert "curved about C" in sentence and "centre of curvature C" in sentence
 
 

@@ -445,11 +445,13 @@ def test_a_lever_with_its_block_behind_the_pivot_runs_through_the_pivot_to_the_b
 def test_a_plates_tint_lies_under_every_construction_line():
     """A Kennedy line across the coupler plate shows through it: the tint is drawn first."""
     from tarsim.constructions.centres import locate_centres
+    from tarsim.constructions.record import Kind, Slice
     from tarsim.graphics.scene import draw_scene
     asm = assemble(load_mechanism(bundled()["hinkle-four-bar"]))
     locate_centres(asm)
-    refs = [r for r in asm.construction.steps if r.startswith(("I:", "K:"))]
-    styles = [getattr(it, "style", "") for it in draw_scene(asm, refs).items]
+    c = asm.construction
+    shown = Slice(c, tuple(s.id for s in c if s.kind in (Kind.CENTRE, Kind.KENNEDY_LINE)))
+    styles = [getattr(it, "style", "") for it in draw_scene(asm, shown).items]
     assert "plate_fill" in styles and "plate" in styles
     lines = [i for i, s in enumerate(styles) if s in ("kennedy", "construction", "working")]
     assert lines and max(i for i, s in enumerate(styles) if s == "plate_fill") < min(lines)

@@ -11,7 +11,7 @@ import pytest
 from tarsim.constructions.reference import solver
 from tarsim.constructions.assembly import assemble
 from tarsim.constructions.errors import InputError
-from tarsim.constructions.record import Panel
+from tarsim.constructions.record import Panel, Slice
 from tarsim.exercises.catalog import bundled
 from tarsim.exercises.exercise_file import load_exercise, parse_exercise
 from tarsim.exercises.solution import solve_exercise
@@ -91,7 +91,8 @@ def test_a_stated_velocity_scale_sets_the_vectors_drawn_by_centres():
     ex = parse_exercise(_with_scales("1 cm = 40 mm", "1 cm = 20 mm/s"))
     sol = solve_exercise(ex)
     assert sol.velocity_scale == pytest.approx(40.0 / 20.0, rel=1e-12)
-    fig = draw_scene(sol.assembly, [r.vector for r in sol.velocities], velocity_scale=sol.velocity_scale)
+    shown = Slice(sol.assembly.construction, tuple(r.vector for r in sol.velocities))
+    fig = draw_scene(sol.assembly, shown, velocity_scale=sol.velocity_scale)
     assert "Velocity scale 1 cm = 20 mm/s" in [t.text for t in fig.items if hasattr(t, "text")]
 
 
@@ -99,7 +100,7 @@ def test_a_stated_velocity_scale_draws_the_polygon_true_to_it():
     ex = parse_exercise(_with_scales("1 cm = 20 mm/s", methods='["polygon"]'))
     sol = solve_exercise(ex)
     vp = sol.velocity_polygon
-    fig = draw_polygon_panel(vp.construction, ["vp:o_v", "vp:tip:B", "vp:V:B"],
+    fig = draw_polygon_panel(Slice(vp.construction, ("vp:o_v", "vp:tip:B", "vp:V:B")),
                              panel=Panel.VELOCITY, scale=vp.scale, units=ex.mechanism.units,
                              title="V_B", per_cm=ex.velocity_per_cm)
     assert "Velocity scale 1 cm = 20 mm/s" in [t.text for t in fig.items if hasattr(t, "text")]

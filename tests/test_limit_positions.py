@@ -24,7 +24,8 @@ from tarsim.exercises.catalog import resolve
 from tarsim.exercises.exercise_file import load_exercise, parse_exercise
 from tarsim.exercises.overall import solve_overall
 from tarsim.exercises.solution_files import solve_all
-from tarsim.graphics.scene import draw_scene, numbered_steps
+from tarsim.constructions.record import Slice
+from tarsim.graphics.scene import draw_scene
 from tests.common import badge_numbers, four_bar_toml
 
 SLIDER_CRANK = """
@@ -245,11 +246,11 @@ def test_crank_shaper_files_carry_the_whole_mechanism():
     assert len(doc["positions"]) == 2
     # The limit figure's circled numbers are steps.md's numbers for it.
     lp = overall.limits
-    narrated = numbered_steps(lp.assembly.construction, lp.steps)
+    narrated = Slice(lp.assembly.construction, tuple(lp.steps)).numbered()
     part = files["steps.md"].split("## Limit positions")[1].split("## Results")[0]
     listed = [int(n) for n in re.findall(r"^(\d+)\. ", part, re.M)]
     assert listed == [n for n, _ in narrated] == list(range(1, len(narrated) + 1))
-    fig = draw_scene(lp.assembly, lp.steps)
+    fig = draw_scene(lp.assembly, Slice(lp.assembly.construction, tuple(lp.steps)))
     assert badge_numbers(fig) == listed
     # solution.svg holds every figure, one under another.
     stems = [n[:-4] for n in files if n.endswith(".svg") and n != "solution.svg"]
@@ -291,7 +292,7 @@ def test_the_limit_figure_reads_its_angles_and_its_stroke_as_a_drafter_marks_the
     # Each arc turns with ω from the limit the stroke starts at.
     assert all(math.copysign(1.0, a.sweep) == math.copysign(1.0, ex.mechanism.drive.omega)
                for a in angles)
-    fig = draw_scene(lp.assembly, lp.steps)
+    fig = draw_scene(lp.assembly, Slice(lp.assembly.construction, tuple(lp.steps)))
     texts = [t.text for t in fig.items if hasattr(t, "text")]
     assert slow in texts and stroke_text in texts
     per_cm = float(re.search(r"Scale (\d+) cm = ([\d.]+)", " ".join(texts)).group(2)) / \

@@ -3,7 +3,7 @@
 The checks are on what a reader with a ruler sees: the stated scale is nice and
 true (an arrow measures |V| / N cm), every arrowhead sits at its tip and points
 away from its tail, every tip is named once, no two labels overlap, the circled
-numbers are 1..k as :func:`graphics.scene.numbered_steps` counts them, a vector
+numbers are 1..k as :meth:`Slice.numbered` counts them, a vector
 of no length is written "= 0", and the same input gives the same SVG.
 
 The acceleration polygons are built here by hand, as
@@ -24,12 +24,12 @@ from tarsim.constructions.reference import solver
 from tarsim.constructions.assembly import assemble
 from tarsim.constructions.errors import TarsimError
 from tarsim.constructions.model import Drive, Units
-from tarsim.constructions.record import Construction, Panel, Role
+from tarsim.constructions.narration import Phrase
+from tarsim.constructions.record import Construction, Panel, Role, Slice, slice
 from tarsim.constructions.velocity_polygon import draw_velocity_polygon
 from tarsim.graphics.figure import Circle, Path, Text
 from tarsim.graphics.labels import typeset
 from tarsim.graphics.polygon_panel import POLYGON_BOX, draw_polygon_panel
-from tarsim.graphics.scene import numbered_steps
 from tarsim.graphics.svg import to_svg
 from tests.common import badge_numbers, coupler_four_bar, crank_shaper
 
@@ -47,17 +47,17 @@ class _Builder:
         self.scale = scale
         self.refs: list[str] = []
         self.c.give("ap:o_a", g.Point(0.0, 0.0), label="o_a", panel=Panel.ACCELERATION,
-                    sentence="Choose the acceleration pole o_a.")
+                    phrase=Phrase("test.pole"))
         self.refs.append("ap:o_a")
 
     def space_line(self, ref, p, q):
         """A line of the space diagram (not drawn in the panel) to take directions from."""
-        self.c.give(ref, g.line_through(g.Point(*p), g.Point(*q))[0], label="", sentence="")
+        self.c.give(ref, g.line_through(g.Point(*p), g.Point(*q))[0], label="")
         return ref
 
     def act(self, ref, verb, *inputs, label="", role=Role.CONSTRUCTION, **params):
         self.c.draw(ref, verb, *inputs, label=label, role=role, panel=Panel.ACCELERATION,
-                    sentence=f"Step {ref}.", **params)
+                    phrase=Phrase("test.step", (("ref", ref),)), **params)
         self.refs.append(ref)
         return ref
 
@@ -65,7 +65,7 @@ class _Builder:
         """Lay off ``vector`` (m/s²) from ``start``; a null one marks the start again."""
         if math.hypot(*vector) == 0.0:
             return self.act(ref, "mark", start, label=label)
-        self.c.give(ref + ":dir", g.Point.at_infinity(*vector), label="", sentence="")
+        self.c.give(ref + ":dir", g.Point.at_infinity(*vector), label="")
         u = self.c.output(ref + ":dir").direction
         length = (vector[0] * u[0] + vector[1] * u[1]) * self.scale
         return self.act(ref, "lay_off", start, ref + ":dir", length=length, label=label)
@@ -163,12 +163,14 @@ def shaper_velocity(theta2=SHAPER_T):
 
 
 def draw_velocity(vp, mech):
-    return draw_polygon_panel(vp.construction, vp.steps, panel=Panel.VELOCITY, scale=vp.scale,
+    return draw_polygon_panel(Slice(vp.construction, tuple(vp.steps)), panel=Panel.VELOCITY,
+                              scale=vp.scale,
                               units=mech.units, title=f"{mech.name}: velocity polygon")
 
 
 def draw_acceleration(c, refs, mech, scale=1.0, **kw):
-    return draw_polygon_panel(c, refs, panel=Panel.ACCELERATION, scale=scale, units=mech.units,
+    return draw_polygon_panel(Slice(c, tuple(refs)), panel=Panel.ACCELERATION, scale=scale,
+                              units=mech.units,
                               title=f"{mech.name}: acceleration polygon", **kw)
 
 
@@ -372,20 +374,20 @@ def test_the_circled_numbers_are_those_numbered_steps_gives_for_the_panel(which)
     else:
         c, refs, _, mech = four_bar_acceleration()
         panel, fig = Panel.ACCELERATION, draw_acceleration(c, refs, mech)
-    numbered = numbered_steps(c, refs, panel=panel)
+    numbered = Slice(c, tuple(refs)).numbered(panel)
     # Every narrated act but the givens (the pole, the input's vector) is numbered.
     given = [r for r in refs if c[r].role is Role.GIVEN]
     assert [s.id for _, s in numbered] == [r for r in refs if r not in given]
     assert badge_numbers(fig) == list(range(1, len(numbered) + 1))
     # The space panel's numbering is unchanged: none of these steps are in it.
-    assert numbered_steps(c, refs) == []
+    assert Slice(c, tuple(refs)).numbered() == []
 
 
-def test_a_set_of_refs_is_drawn_in_record_order_and_other_panels_are_left_out():
+def test_a_slice_is_drawn_in_record_order_and_other_panels_are_left_out():
     vp, mech = shaper_velocity()
     whole = to_svg(draw_velocity(vp, mech))
-    mixed = set(vp.steps) | set(vp.space_steps)
-    assert to_svg(draw_polygon_panel(vp.construction, mixed, panel=Panel.VELOCITY,
+    mixed = slice(vp.construction, [*vp.steps, *vp.space_steps])
+    assert to_svg(draw_polygon_panel(mixed, panel=Panel.VELOCITY,
                                      scale=vp.scale, units=mech.units,
                                      title=f"{mech.name}: velocity polygon")) == whole
 
@@ -410,7 +412,7 @@ def test_a_polygon_at_rest_is_drawn_at_a_stated_scale():
     b = _Builder(1.0)
     b.act("ap:tip:B", "mark", "ap:o_a", label="b′")
     b.vector("ap:A:B", "ap:o_a", "ap:tip:B", "A_B", Role.RESULT)
-    fig = draw_polygon_panel(b.c, b.refs, panel=Panel.ACCELERATION, scale=1.0,
+    fig = draw_polygon_panel(Slice(b.c, tuple(b.refs)), panel=Panel.ACCELERATION, scale=1.0,
                              units=Units("mm"), title="at rest")
     assert stated_per_cm(fig, "Acceleration", "mm/s²") == 1.0
     written = [(t.text, t.sub, t.tail) for t in texts(fig)]
@@ -425,19 +427,18 @@ def test_a_polygon_at_rest_is_drawn_at_a_stated_scale():
 def test_a_wrong_panel_or_scale_is_refused(panel, scale, match):
     vp, mech = shaper_velocity()
     with pytest.raises(TarsimError, match=match):
-        draw_polygon_panel(vp.construction, vp.steps, panel=panel, scale=scale,
+        draw_polygon_panel(Slice(vp.construction, tuple(vp.steps)), panel=panel, scale=scale,
                            units=mech.units, title="x")
 
 
 def test_refs_with_nothing_in_the_panel_are_refused():
     vp, mech = shaper_velocity()
     with pytest.raises(TarsimError, match="nothing to draw"):
-        draw_polygon_panel(vp.construction, vp.space_steps, panel=Panel.VELOCITY,
+        draw_polygon_panel(Slice(vp.construction, tuple(vp.space_steps)), panel=Panel.VELOCITY,
                            scale=vp.scale, units=mech.units, title="x")
 
 
 def test_an_unknown_ref_is_refused():
     vp, mech = shaper_velocity()
     with pytest.raises(TarsimError, match="vp:tip:Z"):
-        draw_polygon_panel(vp.construction, [*vp.steps, "vp:tip:Z"], panel=Panel.VELOCITY,
-                           scale=vp.scale, units=mech.units, title="x")
+        slice(vp.construction, [*vp.steps, "vp:tip:Z"])

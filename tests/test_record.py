@@ -11,11 +11,13 @@ from tarsim.constructions import record
 from tarsim.constructions.errors import GeometryError, NoIntersection, TarsimError
 from tarsim.constructions.geometry import Circle, Line, Point, Segment, intersect_circles, line_through
 from tarsim.constructions.measures import Angle, Dimension
-from tarsim.constructions.record import VERBS, Construction, Panel, Role, Step, replay, toposort
+from tarsim.constructions.narration import Phrase
+from tarsim.constructions.record import (VERBS, Construction, Panel, Role, Slice, Step, replay,
+                                         toposort)
 
 
 def _give(c, ref, x, y):
-    return c.give(ref, Point(x, y), label=ref, sentence=f"Mark {ref}.")
+    return c.give(ref, Point(x, y), label=ref)
 
 
 @pytest.fixture
@@ -28,7 +30,7 @@ def figure():
     c.draw("k2", "swing_arc", "A", radius=4.0)
     c.draw("P", "intersect_circles", "k1", "k2", pick="left", role=Role.RESULT)
     c.draw("l", "line_through", "O", "A")
-    c.draw("Q", "project_onto", "P", "l", label="Q", sentence="Drop a perpendicular.")
+    c.draw("Q", "project_onto", "P", "l", label="Q")
     c.draw("m", "line_through", "F", "B")
     return c
 
@@ -156,7 +158,9 @@ def test_slice_is_exactly_the_ancestry(made, data):
     refs = [s.id for s in c]
     targets = data.draw(st.lists(st.sampled_from(refs), max_size=3))
     anc = _ancestors(c)
-    assert record.slice(c, targets) == set().union(*(anc[t] for t in targets))
+    shown = record.slice(c, targets)
+    assert set(shown.refs) == set().union(*(anc[t] for t in targets))
+    assert list(shown.refs) == [s.id for s in c if s.id in shown]       # record order
 
 
 @given(constructions(), st.data())
@@ -168,10 +172,14 @@ def test_toposort_puts_inputs_first_and_numbered_counts_in_record_order(made, da
     assert order == refs
     assert all(order.index(r) < order.index(s.id) for s in c for r in s.inputs)
     assert [s.id for s in toposort(c, wanted)] == [r for r in refs if r in wanted]
-    numbered = c.numbered(wanted)
-    assert [s.id for s in numbered] == [r for r in refs if r in wanted]
-    assert [s.number for s in numbered] == list(range(1, len(wanted) + 1))
-    assert all(s.number is None for s in c)  # numbering copies; the record is untouched
+    # A slice numbers its narrated acts 1, 2, … in record order: not the givens, nor an
+    # act that says nothing.
+    said = {r for r in wanted if c[r].role is not Role.GIVEN and data.draw(st.booleans())}
+    for r in said:
+        c.steps[r] = dataclasses.replace(c[r], phrase=Phrase("test.step"))
+    numbered = Slice(c, tuple(r for r in refs if r in wanted)).numbered()
+    assert [s.id for _, s in numbered] == [r for r in refs if r in said and c[r].draws]
+    assert [n for n, _ in numbered] == list(range(1, len(numbered) + 1))
 
 
 # ---- slice, replay and errors on the fixed figure
@@ -186,7 +194,15 @@ def test_toposort_puts_inputs_first_and_numbered_counts_in_record_order(made, da
     ([], set()),
 ])
 def test_slice_returns_exactly_the_ancestors(figure, targets, expected):
-    assert record.slice(figure, targets) == expected
+    assert set(record.slice(figure, targets).refs) == expected
+
+
+def test_slice_stops_at_the_base_and_takes_the_arrows_between_its_points(figure):
+    figure.draw("v", "join", "P", "Q", label="V_P")        # an arrow: both ends in the slice
+    figure.draw("w", "join", "F", "B")                      # one whose ends it does not hold
+    shown = record.slice(figure, ["Q"], base=["O", "A", "B"], arrows=["v", "w"])
+    assert shown.refs == ("k1", "k2", "P", "l", "Q", "v")
+    assert record.slice(figure, ["Q"]).refs == ("O", "A", "B", "k1", "k2", "P", "l", "Q")
 
 
 def test_replay_recomputes_from_the_current_inputs(figure):

@@ -17,7 +17,7 @@ from tarsim.constructions.reference.solver import solve
 from tarsim.constructions.assembly import assemble
 from tarsim.constructions.centres import locate_centres
 from tarsim.constructions.errors import TarsimError
-from tarsim.constructions.record import Role, slice as backward, toposort
+from tarsim.constructions.record import Role, Slice, slice
 from tarsim.constructions.velocity_by_centres import velocity_by_radius_rotation
 from tarsim.exercises.catalog import bundled
 from tarsim.exercises.mechanism_file import load_mechanism
@@ -25,8 +25,7 @@ from tarsim.graphics.circle_diagram import draw_circle_diagram, triangle_text
 from tarsim.graphics.diagram import draw_kinematic_diagram
 from tarsim.graphics.figure import Figure, Path, Text
 from tarsim.graphics.labels import typeset
-from tarsim.graphics.scene import (centre_steps, choose_velocity_scale, draw_scene, line_kind,
-                            numbered_steps)
+from tarsim.graphics.scene import choose_velocity_scale, draw_scene, line_style
 from tarsim.graphics.svg import to_svg
 from tests.common import four_bar, offset_slider_crank
 
@@ -36,6 +35,18 @@ DATA = __import__("pathlib").Path(__file__).parent / "data"
 
 def D(deg):
     return math.radians(deg)
+
+
+def every_centre(cs) -> Slice:
+    """The whole centre construction, in the order a student draws it."""
+    return Slice(cs.assembly.construction, tuple(cs.construction_refs()))
+
+
+def circle_diagram(cs, **kw):
+    """The circle diagram of every centre ``cs`` found."""
+    c = cs.assembly.construction
+    return draw_circle_diagram(slice(c, [x.ref for x in cs.found.values()]),
+                               title=cs.assembly.mechanism.name, **kw)
 
 
 class Read:
@@ -98,7 +109,7 @@ def watt():
 ])
 def test_circle_diagram_has_a_chord_per_centre_dashed_for_the_secondaries(make, n):
     asm, cs = make()
-    read = Read(to_svg(draw_circle_diagram(cs)))
+    read = Read(to_svg(circle_diagram(cs)))
     solid, dashed = read.paths("chord"), read.paths("chord_secondary")
     assert len(dashed) == len(cs.secondaries)
     assert len(solid) == len(cs.primaries)
@@ -115,7 +126,7 @@ def test_circle_diagram_has_a_chord_per_centre_dashed_for_the_secondaries(make, 
 
 def test_circle_diagram_caption_counts_and_lists_the_secondaries_as_the_notes_do():
     asm, cs = watt()
-    texts = Read(to_svg(draw_circle_diagram(cs))).texts
+    texts = Read(to_svg(circle_diagram(cs))).texts
     assert "n = 6 links, N = n(n−1)/2 = 15 centres: 7 by inspection, 8 by Kennedy" in texts
     # 000-part1 §3.8, homework 3 (Watt-I six-bar): I15 from Δ125 and Δ165, I14 from Δ124, Δ134.
     listed = [t for t in texts if re.match(r"\d+\. I", t)]
@@ -129,12 +140,12 @@ def test_a_common_normal_is_named_in_the_list():
     asm, cs = centres_of(mech.with_drive(replace(mech.drive, angle=D(-44.072))))
     i45 = cs.centre(4, 5)
     assert triangle_text(i45) == ["common normal", "Δ415"]
-    assert "3. I₄₅: common normal, Δ415" in Read(to_svg(draw_circle_diagram(cs))).texts
+    assert "3. I₄₅: common normal, Δ415" in Read(to_svg(circle_diagram(cs))).texts
 
 
 def test_circle_diagram_up_to_a_discovery_shades_its_two_triangles():
     asm, cs = watt()
-    read = Read(to_svg(draw_circle_diagram(cs, upto=4)))
+    read = Read(to_svg(circle_diagram(cs, upto=4)))
     assert len(read.paths("chord_secondary")) == 3
     assert len(read.paths("chord_current")) == 1
     triangles = read.paths("triangle") + read.paths("triangle_alt")
@@ -146,14 +157,14 @@ def test_circle_diagram_up_to_a_discovery_shades_its_two_triangles():
 # ----- the scene: centres ---------------------------------------------------------------
 def test_every_centre_of_the_four_bar_is_labelled_and_numbered_in_order():
     asm, cs = centres_of(four_bar(D(60), omega2=10))
-    refs = centre_steps(cs)
-    read = Read(to_svg(draw_scene(asm, refs)))
+    shown = every_centre(cs)
+    read = Read(to_svg(draw_scene(asm, shown)))
     for c in cs.found.values():
         assert typeset(c.label)[0] in read.texts
-    numbered = numbered_steps(asm.construction, refs)
+    numbered = shown.numbered()
     # 4 pins, then for I13 and I24 two Kennedy lines and the centre: 10 steps.
     assert [n for n, _ in numbered] == list(range(1, 11))
-    assert [s.id for _, s in numbered] == refs
+    assert [s.id for _, s in numbered] == list(shown.refs)
     assert sorted(read.badges()) == list(range(1, 11))
     assert len(read.paths("kennedy")) == 4 + 1          # and the legend's sample
     assert "Kennedy line" in read.texts
@@ -161,7 +172,7 @@ def test_every_centre_of_the_four_bar_is_labelled_and_numbered_in_order():
 
 def test_a_centre_at_infinity_gets_the_infinity_marker():
     asm, cs = centres_of(offset_slider_crank(D(60), omega2=10))
-    read = Read(to_svg(draw_scene(asm, centre_steps(cs))))
+    read = Read(to_svg(draw_scene(asm, every_centre(cs))))
     assert "I₁₄ → ∞" in read.texts
     # A two-headed arrow: two arrowheads whose tips lie in opposite senses across the guide.
     heads = read.paths("arrowhead")
@@ -174,7 +185,7 @@ def test_a_far_centre_is_an_arrow_at_the_edge_and_nothing_leaves_the_page():
     asm, cs = centres_of(four_bar(D(130), omega2=10))
     far = cs.point(1, 3).xy
     assert math.dist(far, asm.xy("O4")) > 10.0
-    read = Read(to_svg(draw_scene(asm, centre_steps(cs))))
+    read = Read(to_svg(draw_scene(asm, every_centre(cs))))
     assert read.paths("edge_arrow")
     (label,) = [t for t in read.texts if t.startswith("to I₁₃")]
     metres = float(re.search(r"([\d.]+) m from", label).group(1))
@@ -188,7 +199,7 @@ def test_a_far_centre_is_an_arrow_at_the_edge_and_nothing_leaves_the_page():
 def test_coincident_centres_share_one_label():
     # An in-line slider-crank at dead centre: I13 ≡ I34 at the piston pin, I24 ≡ I12 at O2.
     asm, cs = centres_of(offset_slider_crank(0.0, offset=0.0, omega2=5))
-    texts = Read(to_svg(draw_scene(asm, centre_steps(cs)))).texts
+    texts = Read(to_svg(draw_scene(asm, every_centre(cs)))).texts
     assert "I₁₂ ≡ I₂₄" in texts
     assert "I₃₄ ≡ I₁₃" in texts
 
@@ -197,7 +208,7 @@ def test_common_normals_and_kennedy_lines_read_differently_with_a_legend():
     mech = load_mechanism(bundled()["crank-shaper"])
     asm, cs = centres_of(mech.with_drive(replace(mech.drive, angle=D(-44.072))))
     notes = ["I24 is ill-conditioned: lines meet at 0.002°"]
-    read = Read(to_svg(draw_scene(asm, centre_steps(cs), notes=notes)))
+    read = Read(to_svg(draw_scene(asm, every_centre(cs), notes=notes)))
     assert read.paths("normal") and read.paths("kennedy")
     styles = {g.get("class"): g.get("stroke-dasharray") for g in read.root.iter(SVG + "g")}
     assert styles["normal"] != styles["kennedy"]
@@ -209,8 +220,8 @@ def test_common_normals_and_kennedy_lines_read_differently_with_a_legend():
 def test_the_output_is_byte_identical_on_repeat():
     def once():
         asm, cs = watt()
-        return to_svg(draw_scene(asm, centre_steps(cs), notes=cs.warnings())), \
-            to_svg(draw_circle_diagram(cs))
+        return to_svg(draw_scene(asm, every_centre(cs), notes=cs.warnings())), \
+            to_svg(circle_diagram(cs))
     assert once() == once()
 
 
@@ -223,8 +234,9 @@ def velocity_scene(theta=60.0):
     r = velocity_by_radius_rotation(asm, cs, "B", scale=scale)
     refs = [cs.centre(1, 2).ref, cs.centre(2, 3).ref, cs.centre(3, 4).ref,
             *cs.centre(1, 3).lines, cs.centre(1, 3).ref, *r.steps]
-    fig = draw_scene(asm, refs, title="V_B by radius rotation", velocity_scale=scale)
-    return mech, asm, refs, fig, scale
+    shown = Slice(asm.construction, tuple(dict.fromkeys(refs)))
+    fig = draw_scene(asm, shown, title="V_B by radius rotation", velocity_scale=scale)
+    return mech, asm, shown, fig, scale
 
 
 def arrow_length(read, cls):
@@ -291,35 +303,35 @@ def test_the_swung_radius_ends_in_an_arrowhead_at_the_rotated_point():
 
 
 def test_step_numbers_run_from_one_and_skip_givens_and_the_mechanism():
-    _, asm, refs, fig, _ = velocity_scene()
-    numbered = numbered_steps(asm.construction, refs)
+    _, asm, shown, fig, _ = velocity_scene()
+    numbered = shown.numbered()
     k = len(numbered)
     assert [n for n, _ in numbered] == list(range(1, k + 1))
     assert all(s.role is not Role.GIVEN for _, s in numbered)
-    assert "V:A" in refs and "V:A" not in [s.id for _, s in numbered]   # the given V_A
+    assert "V:A" in shown and "V:A" not in [s.id for _, s in numbered]   # the given V_A
     assert sorted(Read(to_svg(fig)).badges()) == list(range(1, k + 1))
 
 
 def test_numbered_steps_of_a_slice_follow_the_record():
-    _, asm, refs, _, _ = velocity_scene()
+    _, asm, _, _, _ = velocity_scene()
     c = asm.construction
-    sliced = backward(c, ["rr:B:V"])
-    numbered = numbered_steps(c, sliced)
+    numbered = slice(c, ["rr:B:V"]).numbered()
     order = list(c.steps)
     ids = [s.id for _, s in numbered]
     assert ids == sorted(ids, key=order.index)
     assert not any(i.startswith("P:") for i in ids)
     with pytest.raises(TarsimError, match="nothing in the construction is called 'nope'"):
-        numbered_steps(c, ["nope"])
+        slice(c, ["nope"])
 
 
-def test_line_kinds_by_ref_and_label():
+def test_line_styles_follow_the_kind_of_step():
     asm, cs = centres_of(four_bar(D(60)))
     c = asm.construction
-    assert line_kind(c["K:13/2"]) == "kennedy"
+    assert line_style(c["K:13/2"]) == "kennedy"
+    assert line_style(c["axis:2"]) == "working"          # the mechanism's own line
     _, asm, _, _, _ = velocity_scene()
-    assert line_kind(asm.construction["rr:B:gauge:j"]) == "gauge"
-    assert line_kind(asm.construction["v:perp:A"]) == "working"
+    assert line_style(asm.construction["rr:B:gauge:j"]) == "gauge"
+    assert line_style(asm.construction["v:perp:A"]) == "working"
 
 
 def test_typeset_sets_subscripts_as_the_notes_write_them():
@@ -348,13 +360,12 @@ def test_a_vector_at_a_far_centre_stays_off_the_page_and_its_number_rides_the_ed
     asm, cs = centres_of(mech)
     scale = choose_velocity_scale(asm, mech.input_speed)
     r = velocity_by_radius_rotation(asm, cs, "M", scale=scale)
-    refs = [s.id for s in toposort(asm.construction, backward(asm.construction,
-                                                              [r.vector, *r.steps]))]
+    shown = slice(asm.construction, r.answer)
     plain = Read(to_svg(draw_kinematic_diagram(asm)))
-    read = Read(to_svg(draw_scene(asm, refs, velocity_scale=scale)))
+    read = Read(to_svg(draw_scene(asm, shown, velocity_scale=scale)))
     assert read.page[0] < 1.6 * plain.page[0] and read.page[1] < 1.6 * plain.page[1]
     at_i24 = next(s for s in r.steps if asm.construction[s].label.startswith("V_I"))
-    numbers = dict(numbered_steps(asm.construction, refs))
+    numbers = dict(shown.numbered())
     number = next(n for n, s in numbers.items() if s.id == at_i24)
     assert number in read.badges()
     far = next(t for t in read.texts if t.startswith("to I"))

@@ -16,6 +16,7 @@ from tarsim.exercises.catalog import resolve
 from tarsim.exercises.cli import cli
 from tarsim.exercises.exercise_file import load_exercise, parse_exercise
 from tarsim.exercises.solution import solve_positions
+from tarsim.constructions.narration import narrate
 from tests.common import four_bar_toml
 
 T = 2.34  # s: the course project's hand-solved instant, θ2 = 90° − 2.34 rad
@@ -205,7 +206,7 @@ def test_an_asked_relative_vector_is_drawn_from_one_tip_to_the_other_and_named(a
     step = c[f"{prefix}:rel:B/A"]
     assert step.label == asked and step.inputs == (poly.tips["A"], poly.tips["B"])
     assert f"{prefix}:rel:B/A" in poly.steps
-    assert step.sentence.startswith(f"Join {c[poly.tips['A']].label} to {c[poly.tips['B']].label}")
+    assert narrate(step).startswith(f"Join {c[poly.tips['A']].label} to {c[poly.tips['B']].label}")
     drawn = poly.between(*step.inputs)
     assert sol.quantities[asked].value["vector"] == pytest.approx(list(drawn), abs=1e-15)
     kin, m = sol.kinematics, sol.exercise.mechanism

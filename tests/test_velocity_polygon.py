@@ -23,6 +23,7 @@ from tarsim.constructions.record import Panel, Role, replay
 from tarsim.constructions.velocity_polygon import VelocityPolygon, draw_velocity_polygon, nice_scale
 from tarsim.exercises.catalog import bundled
 from tarsim.exercises.mechanism_file import load_mechanism
+from tarsim.constructions.narration import narrate
 from tests.common import (coupler_four_bar, crank_shaper, four_bar, offset_slider_crank,
                           scotch_yoke, slotted_lever_p37)
 
@@ -145,9 +146,9 @@ def test_every_polygon_step_is_in_the_velocity_panel_with_a_sentence(name):
     for ref in vp.steps:
         step = c[ref]
         assert step.panel is Panel.VELOCITY
-        assert len(step.sentence) > 20 and step.sentence.endswith("."), step.sentence
+        assert len(narrate(step)) > 20 and narrate(step).endswith("."), narrate(step)
     for ref in vp.space_steps:
-        assert c[ref].panel is Panel.SPACE and c[ref].sentence
+        assert c[ref].panel is Panel.SPACE and narrate(c[ref])
     # The polygon draws only what rests on the space diagram and on its own steps.
     ours = set(vp.steps) | set(vp.space_steps)
     for ref in vp.steps:
@@ -160,7 +161,7 @@ def test_every_polygon_step_is_in_the_velocity_panel_with_a_sentence(name):
 
 def test_sentences_speak_the_course():
     vp, asm = polygon(MECHANISMS["catalog four-bar"](math.radians(60)))   # in mm
-    said = [asm.construction[r].sentence for r in vp.steps]
+    said = [narrate(asm.construction[r]) for r in vp.steps]
     assert "Through a draw a line ⟂ AB (the direction of V_B/A)." in said
     assert "Through o_v draw a line ⟂ O4B (the direction of V_B, as O4 is fixed)." in said
     assert any(s.startswith("From o_v lay off o_v a = V_A = ω2·O2A = 10 rad/s × 100 mm = "
@@ -170,7 +171,7 @@ def test_sentences_speak_the_course():
 
 def test_slot_sentences_name_the_coincident_points():
     vp, asm = polygon(crank_shaper(math.pi / 2 - 2.34))
-    said = [asm.construction[r].sentence for r in vp.steps]
+    said = [narrate(asm.construction[r]) for r in vp.steps]
     assert ("Through a2 draw the parallel to the slot of link 4 (the direction of V_A4/A2, "
             "the sliding velocity).") in said
     assert any(s.startswith("B lies on line O4A of link 4, so b4 lies on o_v a4") for s in said)

@@ -1,0 +1,180 @@
+"""The words of a construction: a phrase key and its arguments, rendered from a catalogue.
+
+A step does not hold prose. It holds a :class:`Phrase`: a key naming what the
+sentence says ("velocity.swing_onto_line_of_centres") and the arguments it says
+it of, typed so that a language can render them in its own way:
+
+* point and link names are plain strings, written as the notes write them in every
+  language (O2, A, I13);
+* a number is a :class:`Number` (a format spec and the value);
+* a length, speed, acceleration or angle is a :class:`Quantity` in the unit the
+  exercise speaks (mm, cm, °, ...): "250 mm", "406.712 mm/s", "60°";
+* a small word the catalogue may translate (ccw, left, forward) is a :class:`Word`;
+* a clause is itself a :class:`Phrase` (or None, which reads as nothing).
+
+:func:`narrate` renders a step's phrase from the catalogue of a language. Each
+catalogue is a module of :mod:`.phrases` with ``PHRASES`` (key → template, in
+:meth:`str.format` syntax), ``WORDS`` and ``UNITS`` (what a word or unit is
+called), ``digits`` (how the language writes the ASCII digits of a number) and
+``capitalized`` (how a clause opens a sentence). A new language is a new
+catalogue and nothing else.
+"""
+
+from __future__ import annotations
+
+import importlib
+from collections.abc import Iterable
+from dataclasses import dataclass
+from functools import cache
+from types import ModuleType
+from typing import Any
+
+from .errors import TarsimError
+
+__all__ = ["Phrase", "phrase", "Number", "Quantity", "Word", "Capitalized", "narrate", "render",
+           "catalogue", "LANGUAGES"]
+
+LANGUAGES = ("en",)
+"""The languages with a catalogue, the first the default."""
+
+
+@dataclass(frozen=True, slots=True)
+class Phrase:
+    """What a sentence says: a catalogue key and the arguments it says it of."""
+
+    key: str
+    args: tuple[tuple[str, Any], ...] = ()
+
+    def arg(self, name: str) -> Any:
+        """The argument ``name`` (a test or a tooltip may want one)."""
+        return dict(self.args)[name]
+
+
+def phrase(key: str, **args: Any) -> Phrase:
+    """Make a :class:`Phrase` with keyword arguments.
+
+    Examples
+    --------
+    >>> narrate(phrase("position.bisect", a="O2", b="O4"))
+    'Bisect O2O4.'
+    """
+    return Phrase(key, tuple(args.items()))
+
+
+@dataclass(frozen=True, slots=True)
+class Number:
+    """A number as the sentence prints it: ``spec`` is a :func:`format` spec ("", ".6g")."""
+
+    value: float
+    spec: str = ".6g"
+
+
+@dataclass(frozen=True, slots=True)
+class Quantity:
+    """A length, speed, acceleration or angle: ``value`` in ``unit`` per ``per``.
+
+    ``style`` is ``"length"`` (up to four decimals, trailing zeros dropped: "250
+    mm", "12.5 cm", "60°"), ``"rate"`` (six significant figures: "406.712 mm/s") or
+    ``"fixed"`` (four decimals kept: "1.0472 rad").
+    """
+
+    value: float
+    unit: str
+    per: str = ""
+    style: str = "length"
+
+
+@dataclass(frozen=True, slots=True)
+class Word:
+    """A small word a language may say in its own way: ``ccw``, ``left``, ``forward``."""
+
+    text: str
+
+
+@dataclass(frozen=True, slots=True)
+class Capitalized:
+    """A clause that opens a sentence: English sets its first letter in capitals."""
+
+    clause: Phrase
+
+
+def _fixed(value: float, digits: int) -> str:
+    text = f"{value:.{digits}f}".rstrip("0").rstrip(".")
+    return "0" if text in ("-0", "") else text
+
+
+def render(arg: Any, lang: str = "en") -> str:
+    """Render one argument of a phrase in ``lang``.
+
+    Examples
+    --------
+    >>> render(Quantity(250.0, "mm"))
+    '250 mm'
+    >>> render(Quantity(406.712, "mm", "/s", "rate"))
+    '406.712 mm/s'
+    >>> render(Quantity(60.00000000000001, "°"))
+    '60°'
+    """
+    cat = catalogue(lang)
+    if arg is None:
+        return ""
+    if isinstance(arg, Phrase):
+        return narrate(arg, lang)
+    if isinstance(arg, Capitalized):
+        return cat.capitalized(narrate(arg.clause, lang))
+    if isinstance(arg, str):
+        return arg
+    if isinstance(arg, Word):
+        return cat.WORDS.get(arg.text, arg.text)
+    if isinstance(arg, Number):
+        return cat.digits(format(arg.value, arg.spec))
+    if isinstance(arg, Quantity):
+        text = {"length": lambda v: _fixed(v, 4), "rate": lambda v: f"{v:.6g}",
+                "fixed": lambda v: f"{v:.4f}"}[arg.style](arg.value)
+        unit = cat.UNITS.get(arg.unit, arg.unit) + cat.UNITS.get(arg.per, arg.per)
+        return cat.digits(text) + ("" if arg.unit == "°" else " ") + unit
+    if isinstance(arg, (list, tuple)):
+        return " ".join(t for t in (render(a, lang) for a in arg) if t)
+    if isinstance(arg, int):
+        return cat.digits(str(arg))
+    raise TarsimError(f"a phrase argument must be a name, a number, a quantity, a word or a "
+                      f"clause, not {type(arg).__name__}")
+
+
+def narrate(item: Any, lang: str = "en") -> str:
+    """Render the words of a step (or of a :class:`Phrase`) in ``lang``; "" if it has none.
+
+    Raises
+    ------
+    TarsimError
+        If ``lang`` has no catalogue, or the catalogue has no phrase of that key.
+    """
+    p = item if isinstance(item, Phrase) or item is None else item.phrase
+    if p is None:
+        return ""
+    cat = catalogue(lang)
+    try:
+        template = cat.PHRASES[p.key]
+    except KeyError:
+        raise TarsimError(f"the '{lang}' catalogue has no phrase '{p.key}'") from None
+    return template.format(**{name: render(value, lang) for name, value in p.args})
+
+
+@cache
+def catalogue(lang: str) -> ModuleType:
+    """The phrase catalogue of ``lang`` (a module of :mod:`.phrases`).
+
+    Raises
+    ------
+    TarsimError
+        If there is none.
+    """
+    if lang not in LANGUAGES:
+        raise TarsimError(f"there are no words for the language '{lang}'; choose one of "
+                          f"{', '.join(LANGUAGES)}")
+    return importlib.import_module(f"{__package__}.phrases.{lang}")
+
+
+def keys(lang: str = "en") -> Iterable[str]:
+    """Every phrase key of ``lang``'s catalogue (a test holds the catalogues to one set)."""
+    return catalogue(lang).PHRASES.keys()

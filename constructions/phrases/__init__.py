@@ -1,0 +1,1 @@
+"""The phrase catalogues, one module per language (see :mod:`..narration`)."""

@@ -1,0 +1,299 @@
+"""English: the words of every step, as the lecture notes and Hinkle's chapter word them.
+
+Each template is :meth:`str.format` text whose fields are the phrase's arguments;
+a field that is a clause renders as that clause's own template.
+"""
+
+from __future__ import annotations
+
+__all__ = ["PHRASES", "WORDS", "UNITS", "digits", "capitalized"]
+
+
+def digits(text: str) -> str:
+    """English writes numbers in ASCII digits, as formatted."""
+    return text
+
+
+def capitalized(text: str) -> str:
+    """A clause that opens a sentence takes a capital: "the path of B" → "The path of B"."""
+    return text[:1].upper() + text[1:]
+
+
+UNITS: dict[str, str] = {}
+"""Unit names as the language writes them (English: as the file states them)."""
+
+WORDS: dict[str, str] = {"at rest": "at rest"}
+"""Small words as the language says them (English: as they are)."""
+
+PHRASES: dict[str, str] = {
+    # ----- position by compass (constructions.assembly) -----------------------------------
+    "position.at": "at θ{link} = {angle}",
+    "position.frame_point": "Mark the frame point {point} at ({x}, {y}).",
+    "position.frame_guide": "Draw the guide of {point} on the frame at {angle}.",
+    "position.input_ray": "Through {pivot} draw the ray at θ{link} = {angle}.",
+    "position.input_point": "With centre {pivot} and radius {pivot}{point} = {radius}, lay off "
+                            "{point} {at}.",
+    "position.on_link_line": "{point} lies on line {a}{b} of link {link}: lay off {a}{point} = "
+                             "{length} from {a}.",
+    "position.rigid_point": "{point} is a point of link {link}: with centres {a} and {b} and "
+                            "radii {a}{point} = {ra} and {b}{point} = {rb}, cut arcs at {point}.",
+    "position.along_link": "Along link {link}, lay off {base}{point} = {length} from {base} to "
+                           "mark {point}.",
+    "position.square_off": "Square off {length} from the axis to mark {point}.",
+    "position.radius_span": "{a}{b} = {length}",
+    "position.radius_because": "{length}, as {why}",
+    "position.why_curved_slot": "{point} runs in the curved slot of link {link} about {centre}",
+    "position.why_circles_touch": "the circles of links {i} and {j} touch: their centres {p} and "
+                                  "{q} stay r{i} {op} r{j} apart",
+    "position.swing_arc": "With centre {centre} and radius {radius}, swing an arc.",
+    "position.locus": "With centre {centre} and radius {radius}, draw the locus of {point}.",
+    "position.arcs_cut": "The arcs cut at {point} ({pick} of {a} → {b}); join {a}{point} and "
+                         "{b}{point}.",
+    "position.arc_cuts_guide": "The arc cuts the guide at {point} (the {pick} cut).",
+    "position.two_guides": "{point} runs on two guides: it is where they cross.",
+    "position.wheel_rolls": "Link {link}{name} rolls without slip: its centre {point} stands "
+                            "{rolled} from where it started, so it has turned {turn} {sense} "
+                            "({rolled} ÷ r = {radius}); draw its axis through {point}.",
+    "link_name": " ({name})",
+    "position.slot_square_to_guide": "Through {point} draw the perpendicular to the guide of "
+                                     "{block}: the slot of link {link}.",
+    "position.slot_at_angle": "Through {point} draw the line at {angle} to the guide of {block}: "
+                              "the slot of link {link}.",
+    "position.face_offset": "Lay off {length} square to the slot: the parallel through it "
+                            "carries {point}.",
+    "position.cut_guide": "{point} is where that line cuts the guide of {point}.",
+    "position.slot_through_block": "The slot of link {link} passes through {pivot} and the block "
+                                   "{point}: draw line {pivot}{point}.",
+    "position.bisect": "Bisect {a}{b}.",
+    "position.circle_on_diameter": "Draw the circle on diameter {a}{b}.",
+    "position.offset_arc": "With centre {centre} and radius {radius} (the slot's offset), swing "
+                           "an arc.",
+    "position.foot_of_slot": "The arcs cut at the foot of the slot.",
+    "position.slot_tangent": "Draw the slot through {point}, tangent to the arc.",
+    # ----- instant centres (constructions.centres) ----------------------------------------
+    "on_frame": "the frame",
+    "on_link": "link {link}",
+    "centres.pin": "The pin {point} joins links {i} and {j}, so it is {centre}.",
+    "centres.curved_block": "Block {point} of link {link} slides on a guide of {on} curved about "
+                            "{at}, so {centre} is at the centre of curvature {at}.",
+    "centres.straight_block": "Block {point} of link {link} slides on a straight guide of {on}, "
+                              "so {centre} is at infinity, perpendicular to the guide.",
+    "centres.common_normal": "{centre} lies on the common normal at {point}: through {point} "
+                             "draw the perpendicular to the {what} of link {link}.",
+    "centres.contact_normal": "{centre} lies on the common normal at the contact, {what}: draw "
+                              "line {a}{b}.",
+    "centres.line_of_centres": "the line of centres of the two circles",
+    "centres.curved_radius": "the radius of the curved slot of link {link}",
+    "centres.face": "Through {point} draw the face of link {link}, parallel to the path of "
+                    "{path_of}.",
+    "centres.rolling": "Link {link} rolls on link {on} without slip, so the contact point, the "
+                       "foot of {point} on the face, is {centre}.",
+    "centres.kennedy_line": "Triangle {triangle}: by Kennedy, {centre} lies on the line through "
+                            "{a} and {b}.",
+    "centres.lines_meet": "{centre} is where the two lines meet.",
+    "centres.rule2_mark": "Every Kennedy line for {centre} is this one line, so use the "
+                          "velocities (rule 2): mark X on it, {length} from {start}.",
+    "centres.rule2_tip": "Square to the line at X lay off the velocity X would have as a point "
+                         "of link {link} (from its ω ratio).",
+    "centres.rule2_translating": "Link {link} translates: its velocity profile is the parallel "
+                                 "to the line through the tip.",
+    "centres.rule2_profile": "Join {centre} to the tip: the velocity profile of link {link}.",
+    "centres.rule2_meet": "The profiles cross where links {i} and {j} have equal velocities.",
+    "centres.rule2_centre": "Square back onto the line: that point is {centre}.",
+    # ----- velocities by instant centres (velocity_drawing, velocity_by_centres) -----------
+    "velocity.input_perpendicular": "At {point} draw the perpendicular to {pivot}{point}.",
+    "velocity.input_vector": "Lay off V_{point} = ω{link}·{pivot}{point} = {omega} rad/s × "
+                             "{radius} = {speed} along it, in the sense of ω{link} ({sense}).",
+    "velocity.known": "V_{point} is the known velocity.",
+    "velocity.line_of_centres": "Draw the line of centres through {a} and {b}; {c} lies on it "
+                                "too (Kennedy).",
+    "velocity.erect_perpendicular": "At {at} erect the perpendicular to the line of centres.",
+    "velocity.meets_gauge_at_tip": "It meets the gauge line of link {link} at the tip of "
+                                   "V_{centre}.",
+    "velocity.transfer_point": "V_{centre} = {speed}: {centre} is a point of both link {i} and "
+                               "link {j}.",
+    "velocity.swing_onto_line": "With centre {centre} and radius {centre}{point} swing {point} "
+                                "onto the line of centres at {point}′.",
+    "velocity.lay_off_known": "At {point}′ lay off V_{point} = {speed} perpendicular to the line "
+                              "of centres, in the same sense.",
+    "velocity.gauge_line": "Draw the gauge line of link {link} from {centre} through the tip.",
+    "velocity.translates": "Link {link} translates ({centre} is at infinity), so every point of "
+                           "it has V_{known}: lay it off at {point}.",
+    "velocity.at_rest": "{point} is at {centre}, the centre link {link} turns about at this "
+                        "instant, so V_{point} = 0.",
+    "velocity.line_of_centres_of_link": "Draw the line of centres of link {link} through {a} and "
+                                        "{b}.",
+    "velocity.gauge_line_known": "Draw the gauge line of link {link} from {centre} through the "
+                                 "tip of the known velocity.",
+    "velocity.meets_gauge_length": "It meets the gauge line of link {link}: its length there is "
+                                   "|V_{point}|.",
+    "velocity.rotate_back": "With centre {centre} rotate it back to {point}: V_{point} is "
+                            "perpendicular to {centre}{point}.",
+    "velocity.turn_known": "Turn the known velocity through 90° so that it lies along its radius "
+                           "towards {centre}.",
+    "velocity.join": "Join {a} to {b}.",
+    "velocity.parallel_through_turned": "Through the tip of the turned velocity draw the "
+                                        "parallel to that line.",
+    "velocity.radius": "Draw the radius {point}–{centre}.",
+    "velocity.parallel_cuts_radius": "The parallel cuts the radius: the piece from {point} is "
+                                     "|V_{point}| turned through 90°.",
+    "velocity.turn_back": "Turn it back through 90° the other way: V_{point} is perpendicular "
+                          "to {point}–{centre}.",
+    "velocity.result": "V_{point} = {speed}.",
+    # ----- velocities by components (constructions.velocity_by_components) -----------------
+    "components.arrow": "Join {point} to the tip: V_{point} = {speed}.",
+    "components.project_along": "Project the tip of V_{point} onto {line}: {component} is the "
+                                "component of V_{point} along {line}.",
+    "components.draw_component_along": "Draw {component} at {point} along {line}.",
+    "components.dividers": "With dividers lay off {a} = {b} at {point} along {line}.",
+    "components.equal_components": "{a} = {b}: points of a rigid link have equal components "
+                                   "along the line joining them.",
+    "components.line_of_link": "Draw line {line} of link {link}.",
+    "components.perpendicular_from_tip": "From the tip of {component} draw the perpendicular to "
+                                         "{line}.",
+    "components.say_perpendicular": "the perpendicular to {line} from the tip of {component}",
+    "components.radius": "Draw the radius {pivot}{point} of link {link} about its fixed pivot "
+                         "{pivot}.",
+    "components.path": "At {point} draw the perpendicular to {pivot}{point}: the path of {point}.",
+    "components.say_path": "the path of {point} (⟂ {pivot}{point})",
+    "components.say_guide": "the guide of {point}",
+    "components.glide": "Link {link} slides on a frame guide without turning, so {point} moves "
+                        "parallel to the guide: draw it through {point}.",
+    "components.say_glide": "the path of {point} (∥ the guide of link {link})",
+    "components.slot_parallel": "Through the tip of V_{other} draw the parallel to the slot of "
+                                "link {link}: V_{point} − V_{point}{link} lies along the slot.",
+    "components.say_slot": "the parallel to the slot of link {link} through the tip of V_{other}",
+    "components.loci_meet": "{first} meets {second} at the tip of V_{point}{note}.",
+    "components.not_vector_sum": " (not the vector sum of the two components!)",
+    "components.perpendicular_at": "At {point} draw the perpendicular to {line}.",
+    "components.project_normal": "Project the tip of V_{point} onto it: {component} is the "
+                                 "component of V_{point} ⟂ {line}.",
+    "components.draw_component": "Draw {component} at {point}.",
+    "components.line_carries": "Draw line {line} of link {link}; {point} lies on it.",
+    "components.through_rest_and_tip": "{rest} (at rest) and the tip of V_{other}″",
+    "components.through_tips": "the tips of V_{a}″ and V_{b}″",
+    "components.gauge_through": "Draw the gauge line through {through}.",
+    "components.cuts_gauge": "It cuts the gauge line at the tip of {component}, the component "
+                              "of V_{point} ⟂ {line}.",
+    "components.rest_gives": "V_{point}′ = V_{rest}′ = 0 ({rest} is at rest), so V_{point} = "
+                             "{component}.",
+    "components.pgram_first": "Through the tip of {a} draw the parallel to {b} (⟂ {line}).",
+    "components.pgram_second": "Through the tip of {a} draw the parallel to {b} (along {line}).",
+    "components.pgram_meet": "They meet at the tip of V_{point} = {a} + {b} (the parallelogram).",
+    "components.translate": "Link {link} slides on a frame guide without turning, so all its "
+                            "points have V_{known}: with dividers lay it off at {point}.",
+    # ----- both polygons (constructions.polygon_walk) --------------------------------------
+    "then": " {sentences}",
+    "polygon.pole": "Choose the {noun} pole {pole}: every vector drawn from it is an absolute "
+                    "{noun}.",
+    "polygon.relative": "Join {a} to {b}: {symbol} = {size}.",
+    "polygon.space_line": "Draw line {a}{b} of link {link}.",
+    "polygon.lines_meet": "The two lines meet at {tip}: {pole} {tip} = {symbol}_{point}.",
+    "polygon.image_why": "{x} lies on line {a}{b} of link {link}, so {tip} lies on {ta} {tb} with "
+                         "{ta} {tip} : {ta} {tb} = {a}{x} : {a}{b} = {ratio} (the {noun} image)",
+    "polygon.image_collapsed": "{why}; {ta} {tb} has no length, so {tip} is at {ta}.",
+    "polygon.image_lay_off": "{why}: lay off {ta} {tip} = {ratio} × {ta} {tb} along {ta} {tb}.",
+    "polygon.translate": "Link {link} slides on a frame guide without turning, so {symbol}_{point} "
+                         "= {symbol}_{known}: {tip} is at {known_tip}.",
+    "polygon.say_perpendicular": "the line ⟂ {line} through {tip}",
+    "polygon.say_guide": "the parallel to the guide through {pole}",
+    "polygon.say_slot": "the parallel to the slot through {tip}",
+    "polygon.why_guide": "the guide of {point}",
+    "polygon.why_glide": "the guide of link {link}, which slides on it without turning",
+    # ----- the velocity polygon (constructions.velocity_polygon) ---------------------------
+    "vpolygon.input_direction": "Through o_v draw a line ⟂ {pivot}{p} (the direction of "
+                                "V_{point}).",
+    "vpolygon.input": "From o_v lay off o_v {tip} = V_{point} = ω{link}·{pivot}{p} = {omega} "
+                      "rad/s × {radius} = {speed} ⟂ {pivot}{p}, in the sense of ω{link} ({sense}).",
+    "vpolygon.why_fixed": "V_{point}, as {known} is fixed",
+    "vpolygon.why_relative": "V_{point}/{known}",
+    "vpolygon.perpendicular": "Through {tip} draw a line ⟂ {line} (the direction of {why}).",
+    "vpolygon.parallel_guide": "Through o_v draw the parallel to {why} (the direction of "
+                               "V_{point}).",
+    "vpolygon.slot": "Through {tip} draw the parallel to the slot of link {link} (the direction "
+                     "of V_{point}/{other}, the sliding velocity).",
+    "vpolygon.curve": "Through {tip} draw a line ⟂ {line}, the tangent at {point} of the curved "
+                      "slot about {centre} (the direction of V_{rel}, the sliding velocity).",
+    "vpolygon.omega": "ω{link} = {rel} / {line} = {side} / {line} = {speed} ÷ {length} = {omega} "
+                      "rad/s ({sense}: the sense of {rel} about {about}).",
+    "vpolygon.vector": "o_v {tip} = V_{point} = {speed}.{then}",
+    "vpolygon.relative": "{a} {b} is {rel}. {omega}",
+    # ----- the acceleration polygon (constructions.acceleration_polygon) -------------------
+    "apolygon.input_normal": "From o_a lay off Aⁿ_{point} = ω{link}²·{pivot}{p} = ({omega} "
+                             "rad/s)² × {radius} = {accel} parallel to {p}{pivot}, pointing from "
+                             "{p} toward {pivot} (the normal component).",
+    "apolygon.given": "given",
+    "apolygon.not_given": "not given, so taken as 0",
+    "apolygon.input_no_tangential": "α{link} = 0 ({given}), so Aᵗ_{point} = α{link}·{pivot}{p} = "
+                                    "0: {tip} is at the end of Aⁿ_{point}.",
+    "apolygon.tangential_direction": "Through its end draw a line ⟂ {pivot}{p} (the direction "
+                                     "of Aᵗ_{point}).",
+    "apolygon.input_tangential": "Along it lay off Aᵗ_{point} = α{link}·{pivot}{p} = {alpha} "
+                                 "rad/s² × {radius} = {accel}, in the sense of α{link} ({sense}); "
+                                 "its end is {tip}.",
+    "apolygon.parallel_guide": "Through o_a draw the parallel to {why} (the direction of "
+                               "A_{point}, as the guide is straight and fixed).",
+    "apolygon.no_normal": "ω{link} = 0, so Aⁿ_{rel} = 0: through {tip} draw a line ⟂ {line} "
+                          "(the direction of Aᵗ_{rel}, length unknown).",
+    "apolygon.normal": "From {tip} lay off Aⁿ_{rel} = ω{link}²·{line} = ({omega} rad/s)² × "
+                       "{length} = {accel} parallel to {back}, pointing from {x} toward {k}.",
+    "apolygon.tangential_line": "Through its end draw a line ⟂ {line} (the direction of "
+                                "Aᵗ_{rel}, length unknown).",
+    "apolygon.say_tangential": "the line ⟂ {line} through the end of Aⁿ_{rel}",
+    "apolygon.slot": "Through its end draw the parallel to the slot of link {link} (the "
+                     "direction of the sliding acceleration Aˢ_{rel}, length unknown).",
+    "apolygon.say_slot": "the parallel to the slot through the end of {component}",
+    "apolygon.curve_normal": "From its end lay off the normal component of the relative path "
+                             "Aⁿ_{rel} = V_{rel}²/ρ = ({speed})² ÷ {radius} = {accel} parallel to "
+                             "{p}{k}, pointing from {p} toward the centre of curvature "
+                             "{k}{reversed}.",
+    "apolygon.reversed": ", reversed, as it is subtracted",
+    "apolygon.curve_tangent": "Through its end draw a line ⟂ {line}, the tangent of the slot "
+                              "(the direction of Aᵗ_{rel}, length unknown).",
+    "apolygon.still": "ω{link} = 0 (link {link} is at rest for this instant)",
+    "apolygon.stuck": "V_{rel} = 0 (no sliding at this instant)",
+    "apolygon.coriolis_zero": "The Coriolis component 2ω{link}·V_{rel} is zero, as {why}.",
+    "apolygon.coriolis_direction": "Through {tip} draw a line ⟂ the slot of link {link} (the "
+                                   "direction of the Coriolis component).",
+    "apolygon.along_it": "Along it",
+    "apolygon.from_along": "From {tip} along {line}",
+    "apolygon.coriolis": "{where} lay off the Coriolis component Aᶜ_{rel} = 2ω{link}·V_{rel} = "
+                         "2 × {omega} rad/s × {speed} = {accel}, in the direction of V_{rel} "
+                         "turned 90° the way ω{link} turns ({sense}){reversed}.",
+    "apolygon.vector": "o_a {tip} = A_{point} = {accel}.{then}",
+    "apolygon.what_tangential": "Aᵗ_{rel}",
+    "apolygon.what_part": "the part of A_{rel} ⟂ {line}",
+    "apolygon.alpha": "α{link} = {what} / {line} = {accel} ÷ {length} = {alpha} rad/s² "
+                      "({sense}: the sense of {what} about {about}).",
+    # ----- limit positions (constructions.limit_positions) ---------------------------------
+    "limits.join_cranks": "Join {pivot}{a} and {pivot}{b}: the crank at its two limit positions.",
+    "limits.measure": "Measure the angle {a}{pivot}{b} the crank turns from {a} to {b} ({sense}, "
+                      "with ω{link}): {degrees}°, the {stroke} stroke.",
+    "limits.in_line": "With centre {pivot} and radius {span} = {radius} draw an arc to cut "
+                      "{path} at {point}: crank and rod in line, {how}.",
+    "limits.span_sum": "{a}{b} + {pivot}{a}",
+    "limits.span_difference": "{a}{b} − {pivot}{a}",
+    "limits.path_of": "the path of {point}",
+    "limits.arc_about": "the arc of {point} about {centre}",
+    "limits.crank_along": "Join {pivot}{point}; the crank lies along it: {pin} is {pivot}{crank} "
+                          "= {radius} from {pivot} toward {point}.",
+    "limits.crank_beyond": "Join {point}{pivot} and produce it beyond {pivot}: {pin} is "
+                           "{pivot}{crank} = {radius} from {pivot} on the far side.",
+    "limits.bisect": "Bisect {a}{b} at M.",
+    "limits.thales": "With centre M and radius M{a} draw the circle on {a}{b} as diameter: from "
+                     "any point of it {a} and {b} are seen at 90°.",
+    "limits.crank_circle": "With centre {pivot} and radius {pivot}{pin} = {radius} draw the crank "
+                           "circle.",
+    "limits.tangent_cuts": "The two circles cut at {pin}′ and {pin}″ (one each side of {a}{b}), "
+                           "where {a}{pin} ⟂ {b}{pin}.",
+    "limits.second_cut": "{pin}″ is the second cut.",
+    "limits.lever": "Join {pivot}{pin}: the lever tangent to the crank circle, its {which} limit "
+                    "position.",
+    "limits.stroke": "Measure {point}″{point}′: the stroke of {point}, {length}.",
+    "limits.produce_lever": "Produce {pivot}{held} to cut the path of {point} at {end}.",
+    "limits.rod_cuts_path": "With centre {x} and radius {span} = {radius} cut the path of {point} "
+                            "at {end}.",
+    "limits.rod": "Join {a}{b}: link {link} in that limit position.",
+    "limits.swing": "With centre {pivot} swing {point} with the lever through the angle "
+                    "{held}{pivot}{held_there} to {there}.",
+}
