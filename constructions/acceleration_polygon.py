@@ -27,15 +27,18 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
+from . import asks as A
 from .assembly import Assembly
+from .checks import Answer, vector_value
 from .coincident import Node
 from .errors import TarsimError
 from .narration import Number, Phrase, Quantity, Word, phrase
 from .polygon_walk import NOISE, DrawnPolygon, PolygonWalk, nice_scale, sense_of
 from .record import Construction, Panel, Ref, Role
-from .velocity_polygon import VelocityPolygon
+from .velocity_polygon import WORKED, VelocityPolygon, drawn_velocity_polygon
 
-__all__ = ["AccelerationPolygon", "draw_acceleration_polygon"]
+__all__ = ["AccelerationPolygon", "draw_acceleration_polygon", "drawn_acceleration_polygon",
+           "answer"]
 
 
 @dataclass
@@ -461,3 +464,48 @@ class _Polygon(PolygonWalk):
         return phrase("apolygon.alpha", link=c, what=what, line=f"{k.point}{x.point}",
                       accel=self.say(tangent), length=self.m.units.length_said(r),
                       alpha=Number(abs(alpha)), sense=Word(sense), about=k.point)
+
+
+# ----- as a method of the registry -------------------------------------------------------------
+def drawn_acceleration_polygon(work) -> AccelerationPolygon:
+    """The position's acceleration polygon, drawn once on its velocity polygon; an α of the
+    input not given is noted as taken as 0."""
+    def make() -> AccelerationPolygon:
+        d = work.mechanism.drive
+        if not d.alpha_given:
+            work.note(f"α{d.link} is not given, so it is taken as 0.", Panel.ACCELERATION)
+        return draw_acceleration_polygon(work.assembly, drawn_velocity_polygon(work))
+    return work.shared("acceleration polygon", make)
+
+
+def answer(work, ask) -> Answer:
+    """α, A, a relative acceleration or a Coriolis component read off the acceleration polygon.
+
+    Every tip of the velocity polygon is part of the answer: the acceleration polygon
+    takes each ω and sliding velocity from it.
+    """
+    ap = drawn_acceleration_polygon(work)
+    velocities = tuple(drawn_velocity_polygon(work).tips.values())
+    m, c = work.mechanism, work.assembly.construction
+    arrows = tuple(drawn_velocity_polygon(work).steps) + tuple(ap.steps)
+    if isinstance(ask, A.AngularAcceleration):
+        a = ap.alphas.get(ask.link)
+        if a is None:
+            raise TarsimError(f"{ask.name} could not be read off the polygon")
+        value, cond, refs = {"value": a}, ap.worst(), tuple(ap.tips_on(ask.link, m))
+        method = "acceleration polygon"
+    elif isinstance(ask, A.Relative):
+        ref = ap.draw_relative(ask.point, ask.of, m.units)
+        value = vector_value(*ap.between(*c[ref].inputs))
+        cond = min(c[ap.tip(n)].conditioning for n in (ask.point, ask.of))
+        refs, method = (ref,), "acceleration polygon"
+    elif isinstance(ask, A.Coriolis):
+        end = ap.coriolis[ask.point][1]
+        value, cond, refs = vector_value(*ap.coriolis_of(ask.point)), c[end].conditioning, (end,)
+        method = "acceleration polygon (2ω×v_rel)"
+    else:
+        tip = ap.tip(ask.point)
+        value, cond, refs = vector_value(*ap.acceleration(ask.point)), c[tip].conditioning, (tip,)
+        method = "acceleration polygon"
+    return Answer(ask, value, cond, method, refs=refs + velocities, arrows=arrows,
+                  figures=(WORKED,), panel=Panel.ACCELERATION)

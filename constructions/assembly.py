@@ -17,7 +17,7 @@ says so.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 from . import geometry as g
 from .errors import AssemblyError, DegenerateInput, NoIntersection, TarsimError
@@ -56,6 +56,9 @@ class Assembly:
     position_steps: frozenset[Ref] = frozenset()
     """The steps that located the mechanism: the kinematic diagram draws them, so a figure's
     slice stops there (:func:`~.record.slice`'s ``base``)."""
+    contacts: dict[Slide | Arc, Ref] = field(default_factory=dict)
+    """The contact point P of each joint that stands for a direct contact (a cam's circle
+    on a flat face or on a roller): where the diagram draws the two profiles touching."""
 
     def point(self, name: str) -> g.Point:
         """The located point ``name``."""
@@ -177,8 +180,40 @@ class _Assembler:
                 raise AssemblyError(
                     f"no dyad locates {missing}: this mechanism needs a triad, which tarsim "
                     "cannot yet construct by compass")
+        contacts = self.touch()
         return Assembly(self.m, self.c, dict(self.known), dict(self.guides), dict(self.axes),
-                        frozenset(self.c.steps))
+                        frozenset(self.c.steps), contacts)
+
+    def touch(self) -> dict[Slide | Arc, Ref]:
+        """Mark where each contact's profiles touch, P.
+
+        On a flat face P is the foot of the circle's centre, since the common normal
+        runs through the centre square to the face; between two circles it is on
+        their line of centres, on the cam's rim toward the roller (on its far side
+        only for a cam inside a larger roller).
+        """
+        out: dict[Slide | Arc, Ref] = {}
+        for i, s in enumerate(self.m.slides):
+            if s.contact is not None:
+                face = self.c.draw(f"profile:face:{i}", "parallel_through",
+                                   self.known[s.contact.face.through], self.guides[i],
+                                   kind=Kind.GUIDE, label=f"face of link {s.contact.face.link}")
+                out[s] = self.c.draw(f"contact:{i}", "project_onto", self.known[s.point], face,
+                                     label="P", kind=Kind.CONTACT)
+        for k, a in enumerate(self.m.arcs):
+            if a.contact is None:
+                continue
+            cam, roller = a.contact.face.radius, a.contact.circle.radius
+            reach = -cam if a.contact.side == "inside" and roller > cam else cam
+            c, r = self.known[a.centre], self.known[a.point]
+            if g.distance(self.c.output(c), self.c.output(r)) == 0.0:   # concentric: any rim point
+                x, y = self.c.output(c).xy
+                out[a] = self.c.give(f"contact:a{k}", g.Point(x + reach, y), label="P",
+                                     kind=Kind.CONTACT)
+            else:
+                out[a] = self.c.draw(f"contact:a{k}", "lay_off", c, r, length=reach, label="P",
+                                     kind=Kind.CONTACT)
+        return out
 
     def mark_frame(self) -> None:
         for name, (x, y) in self.m.frame.points:

@@ -27,15 +27,18 @@ import math
 from dataclasses import dataclass, field
 from itertools import combinations
 
+from . import asks as A
 from . import geometry as g
 from .assembly import Assembly
+from .checks import Answer, FigureSpec
 from .errors import DegenerateInput, TarsimError
 from .model import SlideKind
 from .narration import Phrase, Word, phrase
 from .record import Kind, Ref, Role
 
 __all__ = ["Centre", "Centres", "locate_centres", "omega_ratio", "centre_ref", "pair_label",
-           "WELL_CROSSED", "ILL_CONDITIONED", "PRIMARY_RULES"]
+           "WELL_CROSSED", "ILL_CONDITIONED", "PRIMARY_RULES", "located", "answer_centre",
+           "answer_omega"]
 
 WELL_CROSSED = 0.1
 """Sine of the crossing angle (about 6°) below which another triangle pair is sought."""
@@ -497,3 +500,55 @@ def omega_ratio(centres: Centres, i: int, j: int) -> float:
                               "unbounded at this position")
     return num / den
 
+
+
+# ----- as a method of the registry -------------------------------------------------------------
+_RULE_WORDS = {"pin": "inspection (pin)", "block": "inspection (block on a straight guide)",
+               "curved": "inspection (block on a curved guide: centre of curvature)",
+               "rolling": "inspection (rolling contact: the contact point)",
+               "kennedy": "Kennedy (circle diagram)",
+               "velocities": "Kennedy line and velocity ratio"}
+
+
+def located(work) -> Centres:
+    """Every centre of the work's position, located once; ill-conditioned ones are noted."""
+    def make() -> Centres:
+        cs = locate_centres(work.assembly)
+        for warning in cs.warnings():
+            work.note(warning)
+        return cs
+    return work.shared("centres", make)
+
+
+def answer_centre(work, ask: A.Centre) -> Answer:
+    """An instant centre, drawn on the centres figure and the circle diagram."""
+    cs = located(work)
+    c, p = cs.centre(*ask.pair), cs.point(*ask.pair)
+    value = ({"at_infinity": True, "direction": list(p.direction)} if p.is_at_infinity
+             else {"point": list(p.xy)})
+    return Answer(ask, value, cs.conditioning(*ask.pair), _RULE_WORDS[c.rule], refs=(c.ref,),
+                  figures=(CENTRES_FIGURE, CIRCLE_FIGURE), found=p, holds_always=c.primary)
+
+
+def answer_omega(work, ask: A.AngularVelocity) -> Answer:
+    """ω of a link from the centres: ω_n / ω_d = (I_dn − I_1d) / (I_dn − I_1n) on their line."""
+    cs = located(work)
+    d = work.mechanism.drive
+    n = ask.link
+    if n == d.link:
+        return Answer(ask, {"value": d.omega}, 1.0, "given", refs=(cs.centre(1, d.link).ref,),
+                      figures=(OMEGA_FIGURE,))
+    try:
+        ratio = omega_ratio(cs, d.link, n)
+    except DegenerateInput as e:
+        raise TarsimError(f"ω{n} from the instant centres: {e}") from None
+    pairs = [(1, d.link), (1, n), tuple(sorted((d.link, n)))]
+    cond = min(cs.conditioning(*pair) for pair in pairs)
+    return Answer(ask, {"value": ratio * d.omega + 0.0}, cond, "instant centres (ω ratio)",
+                  refs=tuple(cs.centre(*pair).ref for pair in pairs), figures=(OMEGA_FIGURE,))
+
+
+CENTRES_FIGURE = FigureSpec("centres", "Instant centres", "instant centres")
+OMEGA_FIGURE = FigureSpec("centres", "Centres for the angular velocities",
+                          "centres for the angular velocities")
+CIRCLE_FIGURE = FigureSpec("circle-diagram", "Circle diagram", kind="circle diagram")

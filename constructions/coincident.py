@@ -12,7 +12,7 @@ from dataclasses import dataclass
 
 from .model import Mechanism, SlideKind
 
-__all__ = ["Node", "Walk"]
+__all__ = ["Node", "Walk", "taken"]
 
 
 @dataclass(frozen=True)
@@ -64,3 +64,23 @@ class Walk:
         """The slide index if link ``c`` is a block on a frame guide (so it translates)."""
         return next((i for i, s in enumerate(self.m.slides) if s.link == c and s.guide_link == 1
                      and s.kind is SlideKind.BLOCK), None)
+
+
+def taken(m: Mechanism, name: str) -> tuple[int, str]:
+    """The link a named point is taken on, and the point: ``B`` on its first moving carrier,
+    ``A4`` as point A taken on link 4 (a coincident point under a slot).
+
+    Examples
+    --------
+    >>> from tarsim.constructions.model import Drive, Link
+    >>> m = Mechanism((Link(1, (("O", (0, 0)),)), Link(2, (("O", (0, 0)), ("A", (1, 0))))),
+    ...               Drive(2, 0.0))
+    >>> taken(m, "A"), taken(m, "A2")
+    ((2, 'A'), (2, 'A'))
+    """
+    if name in m.point_names:
+        carriers = [c for c in m.links_at(name) if c != 1] + \
+                   [s.link for s in m.slides if s.point == name]
+        return (carriers[0] if carriers else 1), name
+    i = len(name.rstrip("0123456789"))
+    return int(name[i:]), name[:i]

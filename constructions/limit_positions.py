@@ -22,14 +22,17 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from . import asks as A
 from .assembly import Assembly, assemble, point_ref
+from .checks import Answer, FigureSpec
 from .errors import InputError, NoIntersection
 from .model import Mechanism, SlideKind
 from .measures import measure_angle
 from .narration import Number, Phrase, Word, narrate, phrase
 from .record import VERBS, Ref, Role
 
-__all__ = ["LimitPositions", "draw_limit_positions", "limit_kind", "stroke_point"]
+__all__ = ["LimitPositions", "draw_limit_positions", "limit_kind", "stroke_point",
+           "drawn_limits", "answer", "askable", "WHY_NOT", "LIMITS"]
 
 _PRIMES = ("′", "″")
 
@@ -86,8 +89,9 @@ def stroke_point(mech: Mechanism) -> str | None:
     return on_frame[-1] if on_frame else None
 
 
-def draw_limit_positions(mech: Mechanism) -> LimitPositions:
-    """Draw both limit positions on ``mech`` at its stated position (see the module).
+def draw_limit_positions(drawn: Mechanism | Assembly) -> LimitPositions:
+    """Draw both limit positions on the mechanism as drawn at its stated position (see the
+    module); a mechanism not yet drawn is assembled first.
 
     Raises
     ------
@@ -97,7 +101,7 @@ def draw_limit_positions(mech: Mechanism) -> LimitPositions:
     TarsimError
         If an arc misses its line (the mechanism cannot reach a limit position).
     """
-    return _Limits(mech).run()
+    return _Limits(drawn if isinstance(drawn, Assembly) else assemble(drawn)).run()
 
 
 class _Dyad:
@@ -151,9 +155,9 @@ def _pivot(mech: Mechanism, number: int) -> str | None:
 
 
 class _Limits(_Dyad):
-    def __init__(self, mech: Mechanism):
-        super().__init__(mech)
-        self.asm = assemble(mech)
+    def __init__(self, asm: Assembly):
+        super().__init__(asm.mechanism)
+        self.asm = asm
         self.c = self.asm.construction
         self.steps: list[Ref] = []
         self.cond = 1.0
@@ -377,3 +381,48 @@ class _Limits(_Dyad):
 
 def _sub(p, q) -> tuple[float, float]:
     return (p[0] - q[0], p[1] - q[1])
+
+
+# ----- as a method of the registry -------------------------------------------------------------
+LIMITS = FigureSpec("limits", "Limit positions", "limit positions", kind="limits")
+"""The figure of both limit positions: the crank's angles and the stroke."""
+
+WHY_NOT = {
+    A.TimeRatio: "the limit positions are drawn where the crank drives a rod to a block on a "
+                 "frame guide (slider-crank), a rod to a rocker (crank-rocker) or a block in the "
+                 "slot of a lever through its pivot (slotted lever), and this crank drives none "
+                 "of these",
+    A.Stroke: "the stroke is measured on a block that slides on a frame guide, driven through "
+              "the limit positions, and this mechanism has none",
+}
+"""Why a mechanism the limit construction does not fit has no time ratio or stroke."""
+
+
+def askable(mech: Mechanism) -> set[str]:
+    """The time ratio where the construction fits the crank's dyad, the stroke where it also
+    drives a block on a frame guide."""
+    if limit_kind(mech) is None:
+        return set()
+    return {"time_ratio"} | ({"stroke"} if stroke_point(mech) is not None else set())
+
+
+def drawn_limits(work) -> LimitPositions:
+    """Both limit positions, drawn once on the mechanism at its stated position."""
+    return work.shared("limits", lambda: draw_limit_positions(work.assembly))
+
+
+def answer(work, ask) -> Answer:
+    """The time ratio or the stroke, read off the limit positions."""
+    lp = drawn_limits(work)
+    how = ("lever tangent to the crank circle" if lp.kind == "slotted lever"
+           else "crank and rod in line")
+    method = f"limit positions by compass ({how})"
+    if isinstance(ask, A.TimeRatio):
+        value = {"value": lp.time_ratio, "slow_deg": math.degrees(lp.slow),
+                 "quick_deg": math.degrees(lp.quick)}
+    else:
+        if lp.stroke is None:
+            raise InputError("the stroke is measured on a block that slides on a frame guide "
+                             "and is driven through the limit positions; this mechanism has none")
+        value = {"value": lp.stroke, "point": lp.point}
+    return Answer(ask, value, lp.conditioning, method, refs=tuple(lp.steps), figures=(LIMITS,))

@@ -115,6 +115,20 @@ class DrawnPolygon:
         self.steps.append(ref)
         return ref
 
+    def tips_on(self, link: int, mech) -> list[Ref]:
+        """The tips of the points link ``link`` carries (``B``, or ``A4`` on a slot of link 4):
+        what its ω or α is read from."""
+        def on(key: str) -> bool:
+            if key in mech.point_names:
+                return link in mech.links_at(key) or any(s.point == key and s.link == link
+                                                         for s in mech.slides)
+            return key.endswith(str(link)) and key[:-len(str(link))] in mech.point_names
+        return [r for key, r in self.tips.items() if on(key)]
+
+    def worst(self) -> float:
+        """The worst conditioning of the polygon's tips: an ω or α read off it inherits it."""
+        return min(self.construction[r].conditioning for r in self.tips.values())
+
     def between(self, start: Ref, end: Ref) -> tuple[float, float]:
         """The drawn vector ``start`` → ``end`` read at the polygon's scale."""
         (sx, sy), (ex, ey) = (self.construction.output(r).xy for r in (start, end))

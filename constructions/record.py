@@ -96,6 +96,8 @@ class Kind(StrEnum):
     """A distance read off the drawing: a dimension line with its length."""
     ANGLE = "angle"
     """An angle read with the protractor: an arc with its degrees."""
+    CONTACT = "contact point"
+    """Where two profiles of the mechanism touch (a cam on its follower): the diagram's P."""
 
     @property
     def is_line(self) -> bool:

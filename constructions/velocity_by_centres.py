@@ -25,13 +25,16 @@ import math
 
 from . import geometry as g
 from .assembly import Assembly
-from .centres import Centres, pair_label
+from .centres import Centres, located, pair_label
 from .errors import DegenerateInput, TarsimError
 from .narration import Quantity, phrase
 from .record import Kind, Ref, Role
-from .velocity_drawing import VelocityResult, draw_input_velocity, vector_label, velocity_result
+from .checks import Answer
+from .velocity_drawing import (VelocityResult, answer, draw_input_velocity, vector_label,
+                               velocity_result)
 
-__all__ = ["velocity_by_radius_rotation", "velocity_by_parallel_lines", "METHODS"]
+__all__ = ["velocity_by_radius_rotation", "velocity_by_parallel_lines", "METHODS",
+           "answer_velocity"]
 
 
 def velocity_by_radius_rotation(asm: Assembly, centres: Centres, point: str, *,
@@ -253,3 +256,9 @@ METHODS = {
     "parallel-line": velocity_by_parallel_lines,
 }
 """The centre-based velocity methods, by the name an exercise file uses."""
+
+
+def answer_velocity(work, ask, method: str) -> Answer:
+    """V of the asked point by ``method`` through the position's centres (the registry's)."""
+    result = METHODS[method](work.assembly, located(work), ask.point, scale=work.scales.vector)
+    return answer(work, ask, result)

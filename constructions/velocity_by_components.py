@@ -33,9 +33,10 @@ from .coincident import Node, Walk
 from .errors import DegenerateInput, TarsimError
 from .narration import Capitalized, Phrase, narrate, phrase
 from .record import Kind, Ref, Role
-from .velocity_drawing import VelocityResult, draw_input_velocity, velocity_result
+from .checks import Answer
+from .velocity_drawing import VelocityResult, answer, draw_input_velocity, velocity_result
 
-__all__ = ["velocity_by_components"]
+__all__ = ["velocity_by_components", "answer_velocity"]
 
 WELL_CROSSED = 0.1
 """Sine of the crossing angle (about 6°) from which a pair of loci is taken at once."""
@@ -385,3 +386,9 @@ class _Components(Walk):
         K, X = k.name, x.name
         return self.act(f"cm:{x.tag}:tip", "transfer", self.at(x), self.at(k), self.tip(k),
                         said=phrase("components.translate", link=c, known=K, point=X))
+
+
+def answer_velocity(work, ask) -> Answer:
+    """V of the asked point by components (the registry's)."""
+    return answer(work, ask, velocity_by_components(work.assembly, ask.point,
+                                                    scale=work.scales.vector))

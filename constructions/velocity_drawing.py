@@ -12,11 +12,12 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from .assembly import Assembly
+from .checks import Answer, FigureSpec, vector_value
 from .narration import Number, Word, phrase
 from .record import Construction, Kind, Ref, Role, slice
 
 __all__ = ["VelocityResult", "velocity_result", "draw_input_velocity", "velocity_value",
-           "vector_label"]
+           "vector_label", "answer"]
 
 
 def vector_label(point: str) -> str:
@@ -100,3 +101,13 @@ def draw_input_velocity(asm: Assembly, scale: float) -> tuple[str, Ref]:
            kind=Kind.VECTOR, phrase=phrase("velocity.known", point=point))
     return point, ref
 
+
+
+def answer(work, ask, result: VelocityResult) -> Answer:
+    """A velocity found by a method of the space diagram, as the registry takes it: drawn on
+    its own figure, ``V_<point>-<method>``, at the position's velocity scale."""
+    c = work.assembly.construction
+    said = f"V_{ask.point} by {result.method}"
+    spec = FigureSpec(f"V_{ask.point}-{result.method}", said, said, velocity_scale=result.scale)
+    return Answer(ask, vector_value(*result.value(c)), c[result.vector].conditioning,
+                  result.method, refs=result.answer, figures=(spec,))

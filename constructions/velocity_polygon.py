@@ -30,14 +30,17 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
+from . import asks as A
 from .assembly import Assembly
+from .checks import Answer, FigureSpec, vector_value
 from .coincident import Node
 from .errors import TarsimError
 from .polygon_walk import DEAD_POINT, DrawnPolygon, PolygonWalk, nice_scale, sense_of
 from .narration import Number, Phrase, Quantity, Word, phrase
 from .record import Construction, Panel, Ref, Role
 
-__all__ = ["VelocityPolygon", "draw_velocity_polygon", "nice_scale", "DEAD_POINT"]
+__all__ = ["VelocityPolygon", "draw_velocity_polygon", "nice_scale", "DEAD_POINT", "WORKED",
+           "wants_polygon", "drawn_velocity_polygon", "answer"]
 
 
 @dataclass
@@ -261,3 +264,42 @@ class _Polygon(PolygonWalk):
                                                    b=self.tip_label(q), rel=rel, omega=text))
         self.block_rates(omegas, later)
         return omegas
+
+
+# ----- as a method of the registry -------------------------------------------------------------
+WORKED = FigureSpec("worked", "Worked solution", "worked solution", kind="polygons")
+"""The worked page: the space diagram, the polygons and the results table."""
+
+
+def wants_polygon(work) -> bool:
+    """True if the exercise draws the velocity polygon: chosen, or needed for what it asks."""
+    return "polygon" in work.chosen or bool(work.asked(
+        (A.Relative, A.AngularAcceleration, A.Acceleration, A.Coriolis)))
+
+
+def drawn_velocity_polygon(work) -> VelocityPolygon:
+    """The position's velocity polygon, drawn once."""
+    return work.shared("velocity polygon", lambda: draw_velocity_polygon(work.assembly))
+
+
+def answer(work, ask) -> Answer:
+    """ω, V or a relative velocity read off the velocity polygon."""
+    vp = drawn_velocity_polygon(work)
+    m, c = work.mechanism, work.assembly.construction
+    if isinstance(ask, A.AngularVelocity):
+        w = vp.omegas.get(ask.link)
+        if w is None:
+            raise TarsimError(f"{ask.name} could not be read off the polygon")
+        return Answer(ask, {"value": w}, vp.worst(), "velocity polygon",
+                      refs=tuple(vp.tips_on(ask.link, m)) or (vp.pole,), arrows=tuple(vp.steps),
+                      figures=(WORKED,), panel=Panel.VELOCITY)
+    if isinstance(ask, A.Relative):
+        ref = vp.draw_relative(ask.point, ask.of, m.units)
+        cond = min(c[vp.tip(n)].conditioning for n in (ask.point, ask.of))
+        return Answer(ask, vector_value(*vp.between(*c[ref].inputs)), cond, "velocity polygon",
+                      refs=(ref,), arrows=tuple(vp.steps), figures=(WORKED,),
+                      panel=Panel.VELOCITY)
+    tip = vp.tip(ask.point)
+    return Answer(ask, vector_value(*vp.velocity(ask.point)), c[tip].conditioning,
+                  "velocity polygon", refs=(tip,), arrows=tuple(vp.steps), figures=(WORKED,),
+                  panel=Panel.VELOCITY)

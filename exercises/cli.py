@@ -11,7 +11,6 @@ from __future__ import annotations
 
 import functools
 import math
-import re
 import sys
 from dataclasses import replace
 from pathlib import Path
@@ -301,7 +300,8 @@ def list_():
 
 def _asks(ex) -> str:
     """The find list as a textbook writes it, then the positions: "ω4, V_B at θ2 = 90°"."""
-    names = ", ".join(re.sub(r"^A_cor_", "Aᶜ_", re.sub(r"^(omega|alpha)", lambda m: {
-        "omega": "ω", "alpha": "α"}[m.group(1)], q)) for q in ex.find)
+    from ..constructions.asks import symbol
+
+    names = ", ".join(symbol(q) for q in ex.find)
     at = ", ".join(p.label.split(" (")[0] for p in ex.positions)
     return f"{names} at {at}" if at else names

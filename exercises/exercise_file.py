@@ -34,16 +34,15 @@ import tomllib
 from dataclasses import dataclass, replace
 from pathlib import Path
 
+from ..constructions import asks as A
+from ..constructions import registry
 from ..constructions.errors import InputError
-from ..constructions.limit_positions import limit_kind, stroke_point
-from ..constructions.reference.rotatability import four_bar_spans
 from ..constructions.model import LENGTH_UNITS, Drive, Mechanism
 
 from .mechanism_file import SourceMap, _Reader, _toml_error
 
-__all__ = ["Exercise", "Position", "load_exercise", "parse_exercise", "VELOCITY_METHODS"]
+__all__ = ["Exercise", "Position", "load_exercise", "parse_exercise", "asks_of"]
 
-VELOCITY_METHODS = ("radius-rotation", "parallel-line", "components", "polygon")
 _ASK_KEYS = ("find", "methods", "at", "scale")
 _NUMBER = r"([0-9]*\.?[0-9]+(?:[eE][-+]?[0-9]+)?)"
 _SCALE = re.compile(rf"^\s*{_NUMBER}\s*(cm|mm|in)\s*=\s*{_NUMBER}\s*(mm|cm|m|in|ft)"
@@ -51,20 +50,6 @@ _SCALE = re.compile(rf"^\s*{_NUMBER}\s*(cm|mm|in)\s*=\s*{_NUMBER}\s*(mm|cm|m|in|
 _PAPER_CM = {"cm": 1.0, "mm": 0.1, "in": 2.54}
 _SCALE_UNITS = {**LENGTH_UNITS, "ft": 0.3048}
 _SCALE_KINDS = {"": "space", "/s": "velocity", "/s2": "acceleration"}
-OVERALL = ("dof", "grashof", "time_ratio", "stroke")
-"""Names asked of the mechanism as a whole, beside ``range_<XY>`` (see exercises.overall)."""
-_WHY_NOT = {
-    "grashof": "Grashof's rule classifies a four-bar of four pins, and this is not one",
-    "time_ratio": "the limit positions are drawn where the crank drives a rod to a block on a "
-                  "frame guide (slider-crank), a rod to a rocker (crank-rocker) or a block in "
-                  "the slot of a lever through its pivot (slotted lever), and this crank drives "
-                  "none of these",
-    "stroke": "the stroke is measured on a block that slides on a frame guide, driven through "
-              "the limit positions, and this mechanism has none",
-}
-_QUANTITY = re.compile(r"^(centres|I(\d)(\d)|I(\d+),(\d+)|omega(\d+)|V_([A-Za-z][A-Za-z0-9_']*))$")
-
-
 @dataclass(frozen=True)
 class Position:
     """One position an exercise is solved at: the input's state and how the file gave it."""
@@ -78,7 +63,11 @@ class Position:
 
 @dataclass(frozen=True)
 class Exercise:
-    """What to solve: the mechanism, the quantities asked, the velocity methods to draw."""
+    """What to solve: the mechanism, the quantities asked, the velocity methods to draw.
+
+    ``find`` holds the names as the file writes them ("centres", "omega4"), for a
+    reader; ``asks`` the same parsed once, "centres" as every centre, each once.
+    """
 
     id: str
     mechanism: Mechanism
@@ -90,71 +79,47 @@ class Exercise:
     """The stated velocity scale, file length units per second per paper cm."""
     acceleration_per_cm: float | None = None
     """The stated acceleration scale, file length units per s² per paper cm."""
+    asks: tuple[A.Ask, ...] = ()
+
+    def __post_init__(self) -> None:
+        if not self.asks:
+            object.__setattr__(self, "asks", asks_of(self.find, self.mechanism))
 
     def at(self, position: Position) -> Exercise:
         """The same exercise at one of its positions (and only that one)."""
         return replace(self, mechanism=self.mechanism.with_drive(position.drive), positions=())
 
-    @property
-    def centres(self) -> tuple[tuple[int, int], ...]:
-        """The centres asked for, as link pairs; every pair when ``centres`` is asked."""
-        if "centres" in self.find:
-            n = sorted(self.mechanism.numbers)
-            return tuple((a, b) for i, a in enumerate(n) for b in n[i + 1:])
-        return tuple(_pair(q) for q in self.find if q.startswith("I"))
+    def asking(self, names: tuple[str, ...]) -> Exercise:
+        """The same exercise asking only ``names``."""
+        return replace(self, find=names, asks=asks_of(names, self.mechanism))
 
     @property
-    def omegas(self) -> tuple[int, ...]:
-        """Links whose angular velocity is asked."""
-        return tuple(int(q[5:]) for q in self.find if q.startswith("omega"))
+    def position_asks(self) -> tuple[A.Ask, ...]:
+        """What is asked at each position (centres, ω, V, A …)."""
+        return tuple(a for a in self.asks if a.scope == "position")
 
     @property
-    def velocities(self) -> tuple[str, ...]:
-        """Points whose velocity is asked."""
-        return tuple(q[2:] for q in self.find if q.startswith("V_") and "/" not in q)
+    def mechanism_asks(self) -> tuple[A.Ask, ...]:
+        """What is asked of the mechanism as a whole (results.json's top-level quantities)."""
+        return tuple(a for a in self.asks if a.scope == "mechanism")
 
     @property
-    def alphas(self) -> tuple[int, ...]:
-        """Links whose angular acceleration is asked."""
-        return tuple(int(q[5:]) for q in self.find if q.startswith("alpha"))
+    def stated(self) -> dict[str, float]:
+        """The velocity and acceleration scales the exercise states."""
+        return {k: v for k, v in (("velocity", self.velocity_per_cm),
+                                  ("acceleration", self.acceleration_per_cm)) if v is not None}
 
-    @property
-    def accelerations(self) -> tuple[str, ...]:
-        """Points (or coincident points, ``B4``) whose acceleration is asked."""
-        return tuple(q[2:] for q in self.find
-                     if q.startswith("A_") and "/" not in q and not q.startswith("A_cor_"))
 
-    @property
-    def relatives(self) -> tuple[str, ...]:
-        """Relative velocities and accelerations asked, as named: ``V_B/A``, ``A_B/A``."""
-        return tuple(q for q in self.find if q[:2] in ("V_", "A_") and "/" in q)
-
-    @property
-    def coriolis(self) -> tuple[str, ...]:
-        """Points whose Coriolis component is asked (``A_cor_B`` gives ``B``)."""
-        return tuple(q[6:] for q in self.find if q.startswith("A_cor_"))
-
-    @property
-    def overall(self) -> tuple[str, ...]:
-        """Asked of the mechanism as a whole: ``dof``, ``grashof``, ``range_AB``,
-        ``time_ratio``, ``stroke`` (results.json's top-level quantities)."""
-        return tuple(q for q in self.find if q in OVERALL or q.startswith("range_"))
-
-    @property
-    def at_positions(self) -> bool:
-        """True if anything asked belongs to a position (a centre, ω, V, A …)."""
-        return len(self.overall) < len(self.find)
-
-    @property
-    def wants_accelerations(self) -> bool:
-        """True if anything asked needs the acceleration polygon."""
-        return bool(self.alphas or self.accelerations or self.coriolis
-                    or any(q.startswith("A_") for q in self.relatives))
-
-    @property
-    def wants_polygon(self) -> bool:
-        """True if anything asked needs the velocity polygon."""
-        return self.wants_accelerations or bool(self.relatives) or "polygon" in self.methods
+def asks_of(names, mech: Mechanism) -> tuple[A.Ask, ...]:
+    """Parse names into asks, once each: "centres" is every centre of ``mech``."""
+    out: list[A.Ask] = []
+    for name in names:
+        if name == "centres":
+            nums = sorted(mech.numbers)
+            out += [A.Centre((a, b)) for i, a in enumerate(nums) for b in nums[i + 1:]]
+        else:
+            out.append(A.parse_ask(name))
+    return tuple(dict.fromkeys(out))
 
 
 def load_exercise(path: str | Path, exercise_id: str | None = None) -> Exercise:
@@ -204,10 +169,11 @@ def _read_ask(ask, mech: Mechanism, where: SourceMap, filename: str, exercise_id
     if not (isinstance(find, list) and find and all(isinstance(q, str) for q in find)):
         raise fail('[ask] needs find = [...], a list of quantities such as "centres", "I13", '
                    '"omega4", "V_D"', "find" if "find" in ask else None)
-    valid = _valid_quantities(mech)
+    valid = registry.askable(mech)
     for q in find:
-        if q in _WHY_NOT and q not in valid:
-            raise fail(f"cannot find '{q}' for this mechanism: {_WHY_NOT[q]}", "find")
+        why = registry.why_not(q)
+        if q not in valid and why is not None:
+            raise fail(f"cannot find '{q}' for this mechanism: {why}", "find")
         if q not in valid:
             close = _closest(q, sorted(valid))
             hint = (f"did you mean '{close}'?" if close
@@ -219,9 +185,9 @@ def _read_ask(ask, mech: Mechanism, where: SourceMap, filename: str, exercise_id
     if not (isinstance(methods, list) and methods and all(isinstance(m, str) for m in methods)):
         raise fail('methods must be a list such as ["radius-rotation", "components"]', "methods")
     for m in methods:
-        if m not in VELOCITY_METHODS:
-            close = _closest(m, VELOCITY_METHODS)
-            hint = f"did you mean '{close}'?" if close else f"use {', '.join(VELOCITY_METHODS)}"
+        if m not in registry.CHOSEN:
+            close = _closest(m, registry.CHOSEN)
+            hint = f"did you mean '{close}'?" if close else f"use {', '.join(registry.CHOSEN)}"
             raise fail(f"unknown velocity method '{m}'; {hint}", "methods")
     positions = _read_positions(ask.get("at"), mech, fail)
     scales = _read_scales(ask.get("scale", []), mech, fail)
@@ -299,41 +265,3 @@ def _closest(got: str, valid) -> str | None:
     if close:
         return close[0]
     return next((v for v in valid if got and v.startswith(got)), None)
-
-
-def _valid_quantities(mech: Mechanism) -> set[str]:
-    nums = sorted(mech.numbers)
-    out = {"centres"}
-    for i, a in enumerate(nums):
-        for b in nums[i + 1:]:
-            out.add(f"I{a}{b}" if b < 10 else f"I{a},{b}")
-    out |= {f"omega{n}" for n in nums if n != 1}
-    out |= {f"alpha{n}" for n in nums if n != 1}
-    moving = [p for p in mech.point_names if set(mech.links_at(p)) != {1}]
-    out |= {f"V_{p}" for p in moving}
-    slotted = [s for s in (*mech.slides, *mech.pin_arcs)
-               if s.guide_link != 1 and s.point not in mech.link(s.guide_link).names]
-    coincident = {f"{s.point}{s.guide_link}" for s in slotted}
-    carried = {f"{s.point}{c}" for s in slotted
-               for c in set(mech.links_at(s.point)) | {t.link for t in mech.slides
-                                                        if t.point == s.point} if c != 1}
-    named = set(moving) | coincident | carried
-    out |= {f"A_{p}" for p in named}
-    out |= {f"{v}_{p}/{q}" for v in "VA" for p in named for q in named if p != q}
-    out |= {f"A_cor_{s.point}" for s in slotted}
-    out.add("dof")
-    spans = four_bar_spans(mech)
-    if spans is not None:
-        out |= {"grashof"} | {f"range_{span}" for span in spans}
-    if limit_kind(mech) is not None:
-        out.add("time_ratio")
-        if stroke_point(mech) is not None:
-            out.add("stroke")
-    return out
-
-
-def _pair(q: str) -> tuple[int, int]:
-    m = _QUANTITY.match(q)
-    if m.group(2):
-        return int(m.group(2)), int(m.group(3))
-    return int(m.group(4)), int(m.group(5))

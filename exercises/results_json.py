@@ -20,7 +20,9 @@ import json
 import math
 from typing import Any
 
-from .solution import Quantity, Solution
+from ..constructions.checks import Quantity
+
+from .solution import Solution
 
 __all__ = ["results_document", "results_json"]
 

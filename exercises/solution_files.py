@@ -1,11 +1,12 @@
 """The files of a worked solution: one figure per construction, steps.md and results.json.
 
-Each figure shows only the slice of what it answers: the centres figure the
-centres asked (or needed for an ω), each velocity figure its own method's lines
-and the centres it uses. The numbers beside the drawn lines are the step numbers
-of steps.md, both the slice's own numbering.
-Everything is made in memory first, then written file by file atomically, so an
-error leaves nothing half-written.
+Each answer names the figures it is drawn in (:class:`~tarsim.constructions.checks.FigureSpec`);
+a figure shows only the slice of its answers: the centres figure the centres asked
+(or needed for an ω), each velocity figure its own method's lines and the centres
+it uses, the worked page the polygons. The numbers beside the drawn lines are the
+step numbers of steps.md, both the slice's own numbering. Everything is made in
+memory first, then written file by file atomically, so an error leaves nothing
+half-written.
 """
 
 from __future__ import annotations
@@ -14,12 +15,15 @@ import math
 from dataclasses import dataclass
 from pathlib import Path
 
-from ..constructions.assembly import assemble
-from ..constructions.centres import centre_ref
+from ..constructions.acceleration_polygon import drawn_acceleration_polygon
+from ..constructions.asks import symbol
+from ..constructions.checks import FigureSpec
+from ..constructions.limit_positions import drawn_limits
 from ..constructions.narration import narrate
-from ..constructions.record import Panel, Ref, Slice, slice
+from ..constructions.record import Kind, Panel, Slice, slice
+from ..constructions.velocity_polygon import drawn_velocity_polygon
 from ..graphics.circle_diagram import draw_circle_diagram
-from ..graphics.export import pdf_pages, RenderError, svg_to, write_text
+from ..graphics.export import RenderError, pdf_pages, svg_to, write_text
 from ..graphics.figure import Figure, stack_pages
 from ..graphics.polygon_panel import draw_polygon_panel
 from ..graphics.scene import draw_scene
@@ -27,16 +31,15 @@ from ..graphics.svg import to_svg
 from ..graphics.worked_page import compose_worked_page
 
 from .exercise_file import Exercise
-from .overall import Overall, solve_overall
 from .results_json import results_json
-from .solution import Solution, solve_positions
+from .solution import Overall, Solution, notes_under, solve_overall, solve_positions
 
 __all__ = ["SolutionFigure", "overall_text", "solve_all", "solve_to_files", "write_solution"]
 
 
 @dataclass
 class SolutionFigure:
-    """One figure of a solution: its file stem, its heading, the steps it draws."""
+    """One figure of a solution: its file stem, its heading, what it shows."""
 
     stem: str
     heading: str
@@ -62,8 +65,8 @@ def solve_all(ex: Exercise) -> tuple[list[Solution], Overall, dict[str, str]]:
     ``solution.svg`` holds every figure, one page under another; steps.md has a
     part for the whole mechanism and one per position.
     """
-    overall = solve_overall(ex.mechanism, ex.overall)
-    sols = solve_positions(ex) if ex.at_positions else []
+    overall = solve_overall(ex)
+    sols = solve_positions(ex) if ex.position_asks else []
     figures = _overall_figures(ex, overall)
     parts = [_overall_markdown(ex, overall, figures)] if overall.quantities else []
     for sol in sols:
@@ -107,135 +110,101 @@ def write_solution(files: dict[str, str], out_dir: str | Path, *, pdf: bool = Tr
 
 
 # ----- figures ---------------------------------------------------------------------------
+def _specs(answers) -> list[tuple[FigureSpec, list]]:
+    """Each figure the answers are drawn in, with its answers: the space diagram's figures in
+    the order they are first drawn, then the worked page."""
+    out: dict[str, tuple[FigureSpec, list]] = {}
+    for a in answers:
+        for spec in a.figures:
+            out.setdefault(spec.stem, (spec, []))[1].append(a)
+    return sorted(out.values(), key=lambda sa: sa[0].kind == "polygons")
+
+
 def _figures(sol: Solution, suffix: str = "") -> list[SolutionFigure]:
-    out = _construction_figures(sol)
-    if sol.velocity_polygon is not None:
-        out.append(_worked_page(sol))
+    out = [_figure(sol, spec, answers) for spec, answers in _specs(sol.answers)]
     return [SolutionFigure(f.stem + suffix, f.heading, f.figure, f.shown, f.panels) for f in out]
 
 
-def _construction_figures(sol: Solution) -> list[SolutionFigure]:
-    ex, asm = sol.exercise, sol.assembly
-    c = asm.construction
-    name = ex.mechanism.name
-    out: list[SolutionFigure] = []
-    pairs = list(ex.centres)
-    d = ex.mechanism.drive.link
-    for n in ex.omegas:
-        if sol.quantities[f"omega{n}"].method == "velocity polygon":
-            continue                    # read off the polygon: no centres to draw
-        pairs += [(1, d)] if n == d else [(1, d), (1, n), tuple(sorted((d, n)))]
-    if pairs:
-        targets = [centre_ref(*p) for p in dict.fromkeys(pairs)]
-        shown = slice(c, targets, base=sol.position_steps)
-        heading = ("Instant centres" if ex.centres else "Centres for the angular velocities")
-        fig = draw_scene(asm, shown, title=f"{name}: {heading.lower()}", notes=sol.notes)
-        out.append(SolutionFigure("centres", heading, fig, shown))
-        if ex.centres:
-            every = slice(c, [centre.ref for centre in sol.centres.found.values()],
-                          base=sol.position_steps)
-            out.append(SolutionFigure("circle-diagram", "Circle diagram",
-                                      draw_circle_diagram(every, title=name), None))
-    for r in sol.velocities:
-        shown = slice(c, r.answer, base=sol.position_steps)
-        fig = draw_scene(asm, shown, title=f"{name}: V_{r.point} by {r.method}",
-                         velocity_scale=r.scale)
-        out.append(SolutionFigure(f"V_{r.point}-{r.method}", f"V_{r.point} by {r.method}",
-                                  fig, shown))
-    return out
+def _figure(sol: Solution, spec: FigureSpec, answers) -> SolutionFigure:
+    """Draw one figure of a position from the answers it holds."""
+    asm, work = sol.assembly, sol.work
+    c, name = asm.construction, sol.exercise.mechanism.name
+    if spec.kind == "polygons":
+        return _worked_page(sol, answers)
+    if spec.kind == "circle diagram":
+        every = slice(c, [s.id for s in c if s.kind is Kind.CENTRE], base=asm.position_steps)
+        return SolutionFigure(spec.stem, spec.heading, draw_circle_diagram(every, title=name),
+                              None)
+    shown = _shown(c, answers, asm.position_steps)
+    notes = notes_under(sol, Panel.SPACE) if spec.velocity_scale is None else []
+    fig = draw_scene(asm, shown, title=f"{name}: {spec.caption}", notes=notes,
+                     velocity_scale=spec.velocity_scale, per_cm=work.scales.space)
+    return SolutionFigure(spec.stem, spec.heading, fig, shown)
 
 
-def _worked_page(sol: Solution) -> SolutionFigure:
+def _shown(c, answers, base, panel: Panel | None = None) -> Slice:
+    """The slice of the answers' steps (those of ``panel`` only, if given)."""
+    refs = [r for a in answers for r in a.refs if panel is None or c[r].panel is panel]
+    arrows = [r for a in answers for r in a.arrows]
+    return slice(c, list(dict.fromkeys(refs)), base=base, arrows=list(dict.fromkeys(arrows)))
+
+
+def _worked_page(sol: Solution, answers) -> SolutionFigure:
     """The space diagram, the polygons and the results table on one page.
 
-    Each polygon shows the backward slice of what is asked from it, and every
-    vector whose two ends that slice draws (the absolute vectors from the pole,
-    the components, the relative velocities ω is read from).
+    Each polygon shows the slice of what is asked of it, and every vector whose two
+    ends that slice draws (the absolute vectors from the pole, the components, the
+    relative velocities ω is read from).
     """
-    ex, asm = sol.exercise, sol.assembly
-    c = asm.construction
-    m = ex.mechanism
-    name = m.name
+    ex, asm, work = sol.exercise, sol.assembly, sol.work
+    c, m = asm.construction, ex.mechanism
     where = f" at {sol.position.label}" if sol.position else ""
-    space = draw_scene(asm, Slice(c, ()), title=f"{name}: space diagram{where}")
+    space = draw_scene(asm, Slice(c, ()), title=f"{m.name}: space diagram{where}",
+                       per_cm=work.scales.space)
     panels, figures = [], [space]
-    # "α2 is not given, so it is taken as 0" belongs under the acceleration polygon.
-    under_polygon = [n for n in sol.notes if "α" in n] if sol.acceleration_polygon else []
-    for poly, panel, heading in ((sol.velocity_polygon, Panel.VELOCITY, "Velocity polygon"),
-                                 (sol.acceleration_polygon, Panel.ACCELERATION,
-                                  "Acceleration polygon")):
-        if poly is None:
-            continue
-        shown = slice(c, _polygon_targets(sol, poly, panel), base=sol.position_steps,
-                      arrows=poly.steps)
-        notes = under_polygon if panel is Panel.ACCELERATION else []
-        stated = ex.velocity_per_cm if panel is Panel.VELOCITY else ex.acceleration_per_cm
+    polygons = [(drawn_velocity_polygon(work), Panel.VELOCITY, "Velocity polygon",
+                 work.scales.velocity_polygon)]
+    if work.has("acceleration polygon"):
+        polygons.append((drawn_acceleration_polygon(work), Panel.ACCELERATION,
+                         "Acceleration polygon", work.scales.acceleration_polygon))
+    for poly, panel, heading, stated in polygons:
+        shown = _shown(c, answers, asm.position_steps, panel)
+        if not shown.steps(panel):           # nothing asked of it: the pole stands alone
+            shown = slice(c, [poly.pole], base=asm.position_steps)
         figures.append(draw_polygon_panel(shown, panel=panel, scale=poly.scale, units=m.units,
-                                          title=heading, notes=notes, per_cm=stated))
+                                          title=heading, notes=notes_under(sol, panel),
+                                          per_cm=stated))
         panels.append((heading, panel, shown))
     table = [("quantity", "method", "construction", "analytic", "relative error")]
     for qname, q in sol.quantities.items():
         for qq in (q, *q.alternatives.values()):
-            table.append((_symbol(qname), qq.method, _show(qq.value, m.units, qname),
+            table.append((symbol(qname), qq.method, _show(qq.value, m.units, qname),
                           _show(qq.reference, m.units, qname), f"{qq.rel_error:.1e}"))
-    page = compose_worked_page(f"{name}: worked solution{where}", figures, table,
-                               [n for n in sol.notes if n not in under_polygon])
+    page = compose_worked_page(f"{m.name}: worked solution{where}", figures, table,
+                               notes_under(sol, Panel.SPACE))
     return SolutionFigure("worked", "Worked solution", page, None, tuple(panels))
 
 
-def _symbol(name: str) -> str:
-    """A results.json name as the course writes it: omega4 → ω4, A_cor_B → Aᶜ_B."""
-    for word, letter in (("omega", "ω"), ("alpha", "α"), ("A_cor_", "Aᶜ_")):
-        if name.startswith(word):
-            return letter + name[len(word):]
-    return name
-
-
-def _polygon_targets(sol: Solution, poly, panel: Panel) -> list[Ref]:
-    """The steps of ``poly`` that answer the exercise: tips of asked points and of the links
-    whose ω or α is asked. The acceleration polygon takes every ω and sliding velocity
-    from the velocity polygon, so with accelerations asked the whole of it is needed."""
-    ex = sol.exercise
-    if panel is Panel.VELOCITY and sol.acceleration_polygon is not None:
-        return list(poly.tips.values())
-    letter = "V" if panel is Panel.VELOCITY else "A"
-    names = list(ex.velocities if letter == "V" and "polygon" in ex.methods else ())
-    names += ex.accelerations if letter == "A" else ()
-    names += [n for q in ex.relatives if q[0] == letter for n in q[2:].split("/")]
-    links = ex.omegas if letter == "V" else ex.alphas
-    targets = [poly.tip(n) for n in names]
-    if letter == "A":
-        targets += [poly.coriolis[p][1] for p in ex.coriolis]
-    targets += [r for key, r in poly.tips.items() for n in links
-                if _on_link(ex.mechanism, key, n)]
-    return list(dict.fromkeys(targets)) or [poly.pole]
-
-
-def _on_link(m, key: str, n: int) -> bool:
-    """True if tip ``key`` ("B", "A4") is a point carried by link ``n``."""
-    if key in m.point_names:
-        return n in m.links_at(key) or any(s.point == key and s.link == n for s in m.slides)
-    return key.endswith(str(n)) and key[:-len(str(n))] in m.point_names
-
-
 def _overall_figures(ex: Exercise, overall: Overall) -> list[SolutionFigure]:
-    """The limit positions, when the time ratio or stroke is asked."""
-    lp = overall.limits
-    m = ex.mechanism
-    if lp is None:
-        if ex.at_positions:
+    """The limit positions, when the time ratio or stroke is asked; the mechanism itself when
+    nothing is asked at a position."""
+    work, m = overall.work, ex.mechanism
+    if work is None or not work.has("limits"):
+        if ex.position_asks or work is None:
             return []
-        # Nothing asked at a position: the mechanism itself is the figure.
-        asm = assemble(m)
-        fig = draw_scene(asm, Slice(asm.construction, ()), title=m.name)
+        asm = work.assembly
+        fig = draw_scene(asm, Slice(asm.construction, ()), title=m.name, per_cm=work.scales.space)
         return [SolutionFigure("mechanism", "The mechanism", fig, None)]
+    lp = drawn_limits(work)
     notes = [_time_ratio_words(m, lp)]
     if lp.stroke is not None:
         notes.append(f"Stroke of {lp.point}: {m.units.length_text(lp.stroke)}.")
-    c = lp.assembly.construction
-    shown = slice(c, lp.steps, base=[s.id for s in c if s.id not in lp.steps])
-    fig = draw_scene(lp.assembly, shown, title=f"{m.name}: limit positions", notes=notes)
-    return [SolutionFigure("limits", "Limit positions", fig, shown)]
+    answers = [a for a in overall.answers if a.figures]
+    shown = _shown(work.assembly.construction, answers, work.assembly.position_steps)
+    spec = answers[0].figures[0]
+    fig = draw_scene(work.assembly, shown, title=f"{m.name}: {spec.caption}", notes=notes,
+                     per_cm=work.scales.space)
+    return [SolutionFigure(spec.stem, spec.heading, fig, shown)]
 
 
 def _time_ratio_words(m, lp) -> str:
@@ -251,7 +220,7 @@ def _time_ratio_words(m, lp) -> str:
 def _overall_markdown(ex: Exercise, overall: Overall, figures: list[SolutionFigure]) -> str:
     """steps.md's part for the mechanism as a whole: the limit positions, then the answers."""
     lines = ["# The mechanism as a whole", ""]
-    lp = overall.limits
+    lp = drawn_limits(overall.work) if overall.work.has("limits") else None
     for f in figures if lp is not None else ():
         lines += [f"## {f.heading} (`{f.stem}.svg`)", ""]
         for number, step in f.shown.numbered():

@@ -24,6 +24,7 @@ import re
 from collections.abc import Callable
 from dataclasses import dataclass, replace
 
+from ..constructions.asks import Acceleration, Velocity
 from ..constructions.reference import solver
 from ..constructions.reference.limits import bisect_zero
 from ..constructions.assembly import assemble
@@ -161,7 +162,8 @@ def pick_output(ex: Exercise, name: str | None = None) -> Output:
     valid = output_names(mech)
     if name is None:
         points = _moving_points(mech)
-        name = next((q for q in ex.find if q[:2] in ("V_", "A_") and q[2:] in points), None)
+        name = next((a.name for a in ex.asks if isinstance(a, (Velocity, Acceleration))
+                     and a.point in points), None)
         ram = stroke_point(mech)
         if name is None and ram is not None:
             name = f"V_{ram}"
@@ -401,7 +403,7 @@ def _graphical(sw: Sweep) -> tuple[list[Check], list[tuple], list[str]]:
             marks.append((key, drive.angle, value, label))
         for names in groups:
             try:
-                sol = solve_positions(replace(ex, find=names, positions=(p,) if p else ()))[0]
+                sol = solve_positions(replace(ex.asking(names), positions=(p,) if p else ()))[0]
             except TarsimError as e:
                 notes.append(f"{label}: {', '.join(names)} not constructed: {e}")
                 continue

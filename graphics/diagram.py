@@ -7,9 +7,8 @@ scale bar that measures true on the printed page.
 
 A contact of a circle on a flat face is assembled as its equivalent pin in a slot,
 but drawn as what the student sees: the cam's circle, the follower's face and the
-contact point P where the common normal meets the face. Two circles in contact
-(a roller on a circular cam) are drawn as both circles and P on their line of
-centres.
+contact point P, where the assembly marked it. Two circles in contact (a roller
+on a circular cam) are drawn as both circles and P on their line of centres.
 
 A pin in a curved slot is drawn in a slot about its centre of curvature, carried
 by its link's body; a block on a curved guide stands tangent to a hatched arc. The
@@ -26,10 +25,11 @@ from shapely.geometry import MultiPoint, Point as SPoint
 
 from ..constructions.assembly import Assembly
 from ..constructions.model import Arc, Mechanism, Slide, SlideKind
+from ..constructions.scales import face_ends, space_per_cm
 
 from .figure import Circle, Figure, Path, Text, View, arc_points, text_width
 from .labels import LabelPlacer
-from .scales import bar_room, draw_scale_bar, nice_per_cm, scale_text
+from .scales import bar_room, draw_scale_bar, scale_text
 from .symbols import (PIN_RADIUS, draw_block, draw_curved_guide, draw_curved_slot,
                       draw_ground_pivot, draw_guide, draw_pin, draw_turning_arrow, mark_angle,
                       unit)
@@ -37,13 +37,11 @@ from .symbols import (PIN_RADIUS, draw_block, draw_curved_guide, draw_curved_slo
 __all__ = ["draw_kinematic_diagram", "subscript"]
 
 _SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
-_ROOM = (150.0, 130.0)     # largest drawing area, mm
 _MARGIN = 8.0              # white round the drawing, mm
 _CAPTION = 15.0            # band under the drawing for the caption and scale bar, mm
 _BLOCK = (9.0, 5.0)        # slider block on paper, mm
 _DOT = 0.55                # a marked point (circle centre, contact point) on paper, mm
-_FACE_REACH = 0.8          # the face runs this many radii either side of the contact point
-_FACE_MARGIN = 4.0         # and this far (paper mm) past its own point, under a block
+_FACE_MARGIN = 4.0         # a face runs this far (paper mm) past its own point, under a block
 _SLOT_HALF = 20.0          # a curved slot runs this far (paper mm) either side of its middle
 _SLOT_WIDTH = PIN_RADIUS + 0.35   # half its width, so the pin just fits
 
@@ -56,17 +54,7 @@ class _Contact:
     centre: tuple[float, float]
     radius: float
     point: tuple[float, float]        # P, the foot of the common normal
-    through: tuple[float, float]      # the face's own point
-    direction: tuple[float, float]    # unit, along the face
     away: tuple[float, float]         # unit normal from the circle across the face
-
-    def face(self, margin: float = 0.0) -> tuple[tuple[float, float], tuple[float, float]]:
-        """The face's ends: round P by the reach, and ``margin`` (m) round its own point."""
-        (fx, fy), (dx, dy) = self.through, self.direction
-        t = (self.point[0] - fx) * dx + (self.point[1] - fy) * dy
-        lo = min(t - _FACE_REACH * self.radius, -margin)
-        hi = max(t + _FACE_REACH * self.radius, margin)
-        return (fx + lo * dx, fy + lo * dy), (fx + hi * dx, fy + hi * dy)
 
 
 @dataclass(frozen=True, slots=True)
@@ -108,14 +96,19 @@ def subscript(name: str) -> str:
     return head + name[len(head):].translate(_SUB)
 
 
-def draw_kinematic_diagram(asm: Assembly) -> Figure:
-    """Draw the kinematic diagram of an assembled mechanism."""
-    return _Diagram(asm).draw()
+def draw_kinematic_diagram(asm: Assembly, *, per_cm: float | None = None) -> Figure:
+    """Draw the kinematic diagram of an assembled mechanism.
+
+    ``per_cm`` is the space scale (file units per paper cm) the solution chose; by
+    default the one that fits the mechanism (:func:`~tarsim.constructions.scales.space_per_cm`).
+    """
+    return _Diagram(asm, per_cm).draw()
 
 
 class _Diagram:
-    def __init__(self, asm: Assembly):
+    def __init__(self, asm: Assembly, per_cm: float | None = None):
         self.asm = asm
+        self.per_cm = per_cm or space_per_cm(asm)
         self.m: Mechanism = asm.mechanism
         self.world = {n: asm.xy(n) for n in self.m.point_names}
         self.contacts = [self.contact(i, s) for i, s in enumerate(self.m.slides)
@@ -134,32 +127,25 @@ class _Diagram:
         return [n for n in self.m.link(number).names if (number, n) not in self.synthetic]
 
     def contact(self, index: int, s: Slide) -> _Contact:
-        """Where a contact's circle, face and P lie, from the assembled slot and points.
-
-        The face passes through its named point parallel to the equivalent slot; P is
-        the foot of the perpendicular from the centre, since the common normal of a
-        circle and a line runs through the centre square to the line.
-        """
+        """Where a contact's circle, face and P lie: P as the assembly marked it."""
         c, r = self.world[s.point], s.contact.circle.radius
-        f = self.world[s.contact.face.through]
+        ref = self.asm.contacts[s]
+        p = self.asm.construction.output(ref).xy
         d = unit(self.asm.guide(index).direction)
-        t = (c[0] - f[0]) * d[0] + (c[1] - f[1]) * d[1]
-        p = (f[0] + t * d[0], f[1] + t * d[1])
         away = unit(_sub(p, c)) if math.dist(p, c) > 0.0 else (-d[1], d[0])
-        return _Contact(s, c, r, p, f, d, away)
+        return _Contact(s, c, r, p, away)
+
+    def face(self, k: _Contact, margin: float) -> tuple[tuple[float, float], tuple[float, float]]:
+        """The face's ends as drawn: round P, and ``margin`` (m) round its own point."""
+        return face_ends(self.asm, k.slide, self.asm.contacts[k.slide], margin)
 
     def pair(self, a: Arc) -> _Pair:
-        """Where two touching circles and P lie, from the assembled centres.
-
-        P is on the line of centres, on the cam's rim toward the roller (whether the
-        roller runs outside or inside it); only a cam inside a larger roller has P on
-        its far side.
-        """
+        """Where two touching circles and P lie: P as the assembly marked it, on their line
+        of centres."""
         c, r = self.world[a.centre], self.world[a.point]
         cam, roller = a.contact.face.radius, a.contact.circle.radius
         n = unit(_sub(r, c)) if math.dist(r, c) > 0.0 else (1.0, 0.0)
-        s = -1.0 if a.contact.side == "inside" and roller > cam else 1.0
-        return _Pair(c, cam, r, roller, (c[0] + s * cam * n[0], c[1] + s * cam * n[1]), n)
+        return _Pair(c, cam, r, roller, self.asm.construction.output(self.asm.contacts[a]).xy, n)
 
     def track(self, a: Arc) -> _Track:
         """Lay out a curved slot or guide on paper about its centre of curvature.
@@ -185,20 +171,7 @@ class _Diagram:
 
     # ----- layout ------------------------------------------------------------------
     def layout(self) -> None:
-        pts = list(self.world.values())
-        for k in self.contacts:
-            (cx, cy), r = k.centre, k.radius
-            pts += [(cx - r, cy - r), (cx + r, cy + r), *k.face()]
-        for k in self.pairs:
-            for (cx, cy), r in ((k.cam, k.cam_radius), (k.roller, k.roller_radius)):
-                pts += [(cx - r, cy - r), (cx + r, cy + r)]
-        xs = [p[0] for p in pts]
-        ys = [p[1] for p in pts]
-        unit_m = self.m.units.metres
-        w = max(max(xs) - min(xs), 1e-9) / unit_m
-        h = max(max(ys) - min(ys), 1e-9) / unit_m
-        self.per_cm = self.m.scale or max(nice_per_cm(w, _ROOM[0]), nice_per_cm(h, _ROOM[1]))
-        s = 10.0 / (self.per_cm * unit_m)   # paper mm per world metre
+        s = 10.0 / (self.per_cm * self.m.units.metres)   # paper mm per world metre
         self.view = View(s, (0.0, 0.0))
         self.fig = Figure(0.0, 0.0, title=self.m.name)
         self.placer = LabelPlacer(self.fig)
@@ -300,7 +273,7 @@ class _Diagram:
             self.draw_circle(k.centre, k.radius)
             # Past its own point only if that is a bare dot (under a block), not a pivot.
             margin = _FACE_MARGIN if self.marked(k.slide.contact.face.through) else 0.0
-            a, b = (self.view(e) for e in k.face(margin / self.view.scale))
+            a, b = (self.view(e) for e in self.face(k, margin / self.view.scale))
             if k.slide.rolling and k.slide.guide_link == 1:
                 self.placer.block(draw_guide(self.fig, a, b, self.view.direction(k.away)))
             else:

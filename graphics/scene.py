@@ -16,8 +16,8 @@ recomputing geometry:
 
 The page's frame is sized from the mechanism and takes in the scene's points up
 to :data:`FRAME_CAP` mechanism extents (or :data:`FRAME_MIN` mm of paper); the
-space scale is the kinematic diagram's, so :func:`choose_velocity_scale` can
-state a velocity scale before the scene is drawn.
+space scale is the kinematic diagram's, chosen with the velocity scale before
+anything is drawn (:mod:`tarsim.constructions.scales`).
 
 What the scene shows is a :class:`~tarsim.constructions.record.Slice` of the
 record, and every step is styled by its :class:`~tarsim.constructions.record.Kind`
@@ -50,8 +50,7 @@ from .scales import draw_caption, scale_text
 from .symbols import (PIN_RADIUS, draw_arrow, draw_arrowhead, draw_dimension, draw_turning_arrow,
                       unit)
 
-__all__ = ["draw_scene", "choose_velocity_scale", "velocity_scale_for", "line_style",
-           "FRAME_CAP", "FRAME_MIN", "LINE_KINDS"]
+__all__ = ["draw_scene", "line_style", "FRAME_CAP", "FRAME_MIN", "LINE_KINDS"]
 
 FRAME_CAP = 1.6
 """The page's frame grows to take in the scene's points up to this many mechanism extents..."""
@@ -95,45 +94,9 @@ def line_style(step: Step) -> str:
     return LINE_KINDS.get(step.kind, LINE_KINDS[Kind.LINE])[0]
 
 
-def choose_velocity_scale(asm: Assembly, speed: float) -> float:
-    """Return a velocity scale (drawing metres per m/s) for a scene of ``asm``.
-
-    The scale draws ``speed`` (m/s) about 20–35 mm long on the scene's page and
-    reads as a nice statement, "1 cm = N unit/s" with N = 1, 2 or 5 × 10^k in
-    the file's length unit. Pass it to the construction before drawing it.
-
-    Raises
-    ------
-    TarsimError
-        If ``speed`` is not positive and finite.
-    """
-    if not (math.isfinite(speed) and speed > 0.0):
-        raise TarsimError(f"a velocity scale needs a positive speed, got {speed}")
-    unit_m = asm.mechanism.units.metres
-    v = speed / unit_m                         # file units per second
-    k = math.floor(math.log10(v / 3.0))
-    best = None
-    for e in range(k - 1, k + 2):
-        for base in (1.0, 2.0, 5.0):
-            n = float(f"{base * 10.0 ** e:.12g}")
-            mm = 10.0 * v / n
-            # Inside 20–35 mm is best; outside, the nearer by ratio.
-            miss = 0.0 if 20.0 <= mm <= 35.0 else abs(math.log(mm / (20.0 if mm < 20 else 35.0)))
-            key = (miss, abs(math.log(mm / 27.0)))
-            if best is None or key < best[0]:
-                best = (key, n)
-    return velocity_scale_for(asm, best[1])
-
-
-def velocity_scale_for(asm: Assembly, per_cm: float) -> float:
-    """Return the velocity scale (drawing metres per m/s) that draws "1 cm = ``per_cm``
-    unit/s" on a scene of ``asm`` (unit: the file's length unit), as an exercise states it."""
-    paper_per_mps = 10.0 / (per_cm * asm.mechanism.units.metres)   # paper mm per m/s
-    return paper_per_mps / _space_view_scale(asm)
-
-
 def draw_scene(asm: Assembly, shown: Slice, *, title: str | None = None,
-               velocity_scale: float | None = None, notes: Sequence[str] = ()) -> Figure:
+               velocity_scale: float | None = None, notes: Sequence[str] = (),
+               per_cm: float | None = None) -> Figure:
     """Draw the kinematic diagram of ``asm`` with the steps of ``shown`` on it.
 
     Parameters
@@ -150,6 +113,9 @@ def draw_scene(asm: Assembly, shown: Slice, *, title: str | None = None,
         caption then states it as "Velocity scale 1 cm = N unit/s".
     notes
         Short lines printed under the caption (warnings, remarks).
+    per_cm
+        The space scale (file units per paper cm), as the solution chose it; by
+        default the kinematic diagram's own.
 
     Raises
     ------
@@ -158,7 +124,7 @@ def draw_scene(asm: Assembly, shown: Slice, *, title: str | None = None,
     """
     if shown.construction is not asm.construction:
         raise TarsimError("the slice to draw is of another construction than the mechanism's")
-    return _Scene(asm, shown, title, velocity_scale, notes).draw()
+    return _Scene(asm, shown, title, velocity_scale, notes, per_cm).draw()
 
 
 # ----- what a step draws --------------------------------------------------------------------
@@ -173,20 +139,13 @@ def _coincide(p: g.Point, q: g.Point) -> bool:
     return math.dist(p.xy, q.xy) <= _SAME * max(1.0, p.size(), q.size())
 
 
-def _space_view_scale(asm: Assembly) -> float:
-    """Paper mm per drawing metre of the scene (the kinematic diagram's own scale)."""
-    d = _Diagram(asm)
-    d.layout()
-    return d.view.scale
-
-
 # ----- the figure ------------------------------------------------------------------------------
 class _Scene(_Diagram):
     """The kinematic diagram, then the scene's layers: working lines under it, marks over it."""
 
     def __init__(self, asm: Assembly, shown: Slice, title: str | None,
-                 velocity_scale: float | None, notes: Sequence[str]):
-        super().__init__(asm)
+                 velocity_scale: float | None, notes: Sequence[str], per_cm: float | None):
+        super().__init__(asm, per_cm)
         self.steps = shown.steps(Panel.SPACE)
         steps = self.steps
         self.title = title

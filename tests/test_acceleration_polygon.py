@@ -22,7 +22,7 @@ from hypothesis import strategies as st
 from tarsim.constructions.reference import solver
 from tarsim.constructions import geometry as g
 from tarsim.constructions.acceleration_polygon import AccelerationPolygon, draw_acceleration_polygon
-from tarsim.constructions.reference.centres import tolerance
+from tarsim.constructions.checks import tolerance
 from tarsim.constructions.assembly import assemble
 from tarsim.constructions.errors import AssemblyError, TarsimError
 from tarsim.constructions.model import Drive

@@ -19,8 +19,9 @@ from hypothesis import strategies as st
 
 from tarsim.constructions import geometry as g
 from tarsim.constructions.reference.solver import Kinematics, SingularPosition, solve
+from tarsim.constructions.checks import tolerance
 from tarsim.constructions.reference.centres import (AnalyticCentre, centre_error, instant_centre,
-                                            mechanism_size, tolerance)
+                                                    mechanism_size)
 from tarsim.constructions.assembly import Assembly, assemble
 from tarsim.constructions.centres import ILL_CONDITIONED, Centres, locate_centres, omega_ratio
 from tarsim.constructions.errors import DegenerateInput, TarsimError

@@ -21,7 +21,8 @@ from pathlib import Path
 import pytest
 
 from tarsim.constructions.reference.solver import solve
-from tarsim.constructions.reference.centres import centre_error, instant_centre, tolerance
+from tarsim.constructions.checks import tolerance
+from tarsim.constructions.reference.centres import centre_error, instant_centre
 from tarsim.constructions.assembly import assemble
 from tarsim.constructions.centres import locate_centres, omega_ratio
 from tarsim.constructions.errors import InputError, TarsimError

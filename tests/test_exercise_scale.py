@@ -90,9 +90,10 @@ def test_a_stated_velocity_scale_sets_the_vectors_drawn_by_centres():
     # 10 / (S u) and a vector's is 10 / (V u) per m/s: the vector scale is S / V seconds.
     ex = parse_exercise(_with_scales("1 cm = 40 mm", "1 cm = 20 mm/s"))
     sol = solve_exercise(ex)
-    assert sol.velocity_scale == pytest.approx(40.0 / 20.0, rel=1e-12)
-    shown = Slice(sol.assembly.construction, tuple(r.vector for r in sol.velocities))
-    fig = draw_scene(sol.assembly, shown, velocity_scale=sol.velocity_scale)
+    assert sol.work.scales.vector == pytest.approx(40.0 / 20.0, rel=1e-12)
+    answers = [a for a in sol.answers if a.figures and a.figures[0].velocity_scale]
+    shown = Slice(sol.assembly.construction, tuple(a.refs[-1] for a in answers))
+    fig = draw_scene(sol.assembly, shown, velocity_scale=sol.work.scales.vector)
     assert "Velocity scale 1 cm = 20 mm/s" in [t.text for t in fig.items if hasattr(t, "text")]
 
 

@@ -18,11 +18,11 @@ from hypothesis import strategies as st
 
 from tarsim.constructions.reference.limits import limit_reference
 from tarsim.constructions.errors import InputError, TarsimError
-from tarsim.constructions.limit_positions import draw_limit_positions, limit_kind
+from tarsim.constructions.limit_positions import draw_limit_positions, drawn_limits, limit_kind
 from tarsim.constructions.reference.rotatability import class_by_rotation, length_range, length_range_by_rotation
 from tarsim.exercises.catalog import resolve
 from tarsim.exercises.exercise_file import load_exercise, parse_exercise
-from tarsim.exercises.overall import solve_overall
+from tarsim.exercises.solution import solve_overall
 from tarsim.exercises.solution_files import solve_all
 from tarsim.constructions.record import Slice
 from tarsim.graphics.scene import draw_scene
@@ -66,7 +66,7 @@ find = ["time_ratio", "stroke"]
 
 def _overall(exercise_id: str):
     ex = load_exercise(resolve(exercise_id))
-    return ex, solve_overall(ex.mechanism, ex.overall)
+    return ex, solve_overall(ex)
 
 
 def _printed(value: float, published: str) -> bool:
@@ -180,7 +180,7 @@ def test_a_double_crank_has_no_limit_positions():
     ex = parse_exercise(four_bar_toml(ground=20, crank=50, coupler=100, rocker=90)
                         + '\n[ask]\nfind = ["grashof"]\n')
     with pytest.raises(TarsimError, match=r"crank and rod cannot lie in line, extended: the arc of radius AB \+ O2A = 150 mm about O2 misses the arc of B about O4 by 40 mm"):
-        solve_overall(ex.mechanism, ("time_ratio",))
+        solve_overall(ex.asking(("time_ratio",)))
 
 
 def test_stroke_is_not_offered_without_a_block():
@@ -245,7 +245,7 @@ def test_crank_shaper_files_carry_the_whole_mechanism():
     assert doc["quantities"]["time_ratio"]["reference"]["value"] == pytest.approx(1.61249, abs=1e-5)
     assert len(doc["positions"]) == 2
     # The limit figure's circled numbers are steps.md's numbers for it.
-    lp = overall.limits
+    lp = drawn_limits(overall.work)
     narrated = Slice(lp.assembly.construction, tuple(lp.steps)).numbered()
     part = files["steps.md"].split("## Limit positions")[1].split("## Results")[0]
     listed = [int(n) for n in re.findall(r"^(\d+)\. ", part, re.M)]

@@ -25,7 +25,8 @@ from tarsim.graphics.circle_diagram import draw_circle_diagram, triangle_text
 from tarsim.graphics.diagram import draw_kinematic_diagram
 from tarsim.graphics.figure import Figure, Path, Text
 from tarsim.graphics.labels import typeset
-from tarsim.graphics.scene import choose_velocity_scale, draw_scene, line_style
+from tarsim.constructions.scales import choose_scales, velocity_per_cm
+from tarsim.graphics.scene import draw_scene, line_style
 from tarsim.graphics.svg import to_svg
 from tests.common import four_bar, offset_slider_crank
 
@@ -229,8 +230,7 @@ def test_the_output_is_byte_identical_on_repeat():
 def velocity_scene(theta=60.0):
     mech = four_bar(D(theta), omega2=10)
     asm, cs = centres_of(mech)
-    speed = 10 * 0.1                       # V_A = ω2·O2A = 1 m/s
-    scale = choose_velocity_scale(asm, speed)
+    scale = choose_scales(asm).vector      # for V_A = ω2·O2A = 1 m/s
     r = velocity_by_radius_rotation(asm, cs, "B", scale=scale)
     refs = [cs.centre(1, 2).ref, cs.centre(2, 3).ref, cs.centre(3, 4).ref,
             *cs.centre(1, 3).lines, cs.centre(1, 3).ref, *r.steps]
@@ -262,14 +262,15 @@ def test_the_stated_velocity_scale_is_true_on_the_drawn_vectors():
     assert v_a / 10 * per_cm == pytest.approx(math.hypot(*kin.velocities["A"]), rel=3e-4)
     (v_b,) = arrow_length(read, "vector_result")
     assert v_b / 10 * per_cm == pytest.approx(math.hypot(*kin.velocities["B"]), rel=3e-4)
-    # The input speed is drawn 20–35 mm long, as choose_velocity_scale promises.
+    # The input speed is drawn 20–35 mm long, as velocity_per_cm promises.
     assert 20.0 - 1e-2 <= v_a <= 35.0
 
 
-@pytest.mark.parametrize("speed", [0.0123, 0.3, 1.0, 2.72, 7.7, 40.0, 950.0])
-def test_choose_velocity_scale_is_nice_and_about_20_to_35_mm(speed):
-    asm = assemble(four_bar(D(60)))
-    scale = choose_velocity_scale(asm, speed)
+@pytest.mark.parametrize("omega", [0.123, 3.0, 10.0, 27.2, 77.0, 400.0, 9500.0])
+def test_the_chosen_velocity_scale_is_nice_and_about_20_to_35_mm(omega):
+    asm = assemble(four_bar(D(60), omega2=omega))
+    speed = omega * 0.1                             # V_A = ω2·O2A, m/s
+    scale = choose_scales(asm).vector
     mm_per_m = 10.0 / 0.02                          # the four-bar is drawn at 1 cm = 0.02 m
     mm = speed * scale * mm_per_m
     per_cm = 10.0 * speed / mm                      # m/s per cm of paper
@@ -278,9 +279,10 @@ def test_choose_velocity_scale_is_nice_and_about_20_to_35_mm(speed):
     assert 16.0 <= mm <= 44.0                       # within a nice step of the 20–35 band
 
 
-def test_choose_velocity_scale_rejects_a_zero_speed():
+def test_a_velocity_scale_needs_a_moving_input():
     with pytest.raises(TarsimError, match="positive speed"):
-        choose_velocity_scale(assemble(four_bar(D(60))), 0.0)
+        velocity_per_cm(0.0)
+    assert choose_scales(assemble(four_bar(D(60)))).velocity is None
 
 
 def test_a_vector_label_has_a_true_subscript():
@@ -358,7 +360,7 @@ def test_a_vector_at_a_far_centre_stays_off_the_page_and_its_number_rides_the_ed
     and its step number goes beside the edge arrow pointing to I24."""
     mech = load_mechanism(DATA / "rolling-wheel.toml")
     asm, cs = centres_of(mech)
-    scale = choose_velocity_scale(asm, mech.input_speed)
+    scale = choose_scales(asm).vector
     r = velocity_by_radius_rotation(asm, cs, "M", scale=scale)
     shown = slice(asm.construction, r.answer)
     plain = Read(to_svg(draw_kinematic_diagram(asm)))

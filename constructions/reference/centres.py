@@ -25,7 +25,7 @@ from dataclasses import dataclass
 from .solver import Kinematics
 from ..errors import DegenerateInput
 
-__all__ = ["AnalyticCentre", "instant_centre", "centre_error", "tolerance", "mechanism_size",
+__all__ = ["AnalyticCentre", "instant_centre", "centre_error", "mechanism_size",
            "AT_INFINITY", "FAR"]
 
 EPS = 2.220446049250313e-16
@@ -218,24 +218,3 @@ def centre_error(found, ref: AnalyticCentre, size: float) -> float:
     if r <= FAR * size:
         return math.inf
     return abs(px * dy - py * dx) / r
-
-
-def tolerance(conditioning: float) -> float:
-    """Return the relative tolerance of a result with this compounded conditioning.
-
-    A drafting act's first-order error is about ``eps / conditioning`` relative to
-    the figure; 64 ulps cover the few acts chained before the last, and 1e-9 is the
-    floor below which nothing is asked.
-
-    Examples
-    --------
-    >>> tolerance(1.0)
-    1e-09
-    >>> tolerance(1e-9) == 64 * EPS / 1e-9
-    True
-    >>> tolerance(0.0)
-    inf
-    """
-    if conditioning <= 0.0:
-        return math.inf
-    return max(1e-9, 64 * EPS / conditioning)

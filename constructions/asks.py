@@ -1,0 +1,280 @@
+"""What an exercise asks for, typed: each name results.json uses, parsed once into an :class:`Ask`.
+
+An exercise writes its asks as results.json names them (``I13``, ``omega4``,
+``V_B``, ``A_B4``, ``V_B/A``, ``A_cor_B``, ``time_ratio`` …). :func:`parse_ask`
+reads one into its type, which knows its name, its symbol as the course writes
+it (ω4, Aᶜ_B) and its place in a solution's order; the methods that answer it
+are found by its type (:mod:`.registry`).
+
+The asks of one position come in the order the course takes them: centres,
+angular velocities, velocities, relative vectors, angular accelerations,
+accelerations, Coriolis components. Those of the mechanism as a whole (DOF,
+Grashof, the length ranges, time ratio, stroke) come first, before any position.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+from typing import ClassVar
+
+from .errors import TarsimError
+from .model import Mechanism
+
+__all__ = ["Ask", "Centre", "AngularVelocity", "Velocity", "Relative", "AngularAcceleration",
+           "Acceleration", "Coriolis", "Mobility", "GrashofClass", "LengthRange", "TimeRatio",
+           "Stroke", "parse_ask", "ask_names", "SYMBOLS", "symbol", "ordered"]
+
+SYMBOLS = {"omega": "ω", "alpha": "α", "theta": "θ", "A_cor_": "Aᶜ_"}
+"""The course's letters for the words results.json spells: omega4 is ω4, A_cor_B is Aᶜ_B."""
+
+
+def symbol(name: str) -> str:
+    """A results.json name as the course writes it.
+
+    Examples
+    --------
+    >>> symbol("omega4"), symbol("A_cor_B"), symbol("V_B/A")
+    ('ω4', 'Aᶜ_B', 'V_B/A')
+    """
+    for word, letter in SYMBOLS.items():
+        if name.startswith(word):
+            return letter + name[len(word):]
+    return name
+
+
+@dataclass(frozen=True)
+class Ask:
+    """One quantity asked for. ``scope`` is "position" (found at each position solved) or
+    "mechanism" (of the mechanism as a whole); ``order`` places it in a solution."""
+
+    scope: ClassVar[str] = "position"
+    order: ClassVar[int] = 0
+
+    @property
+    def name(self) -> str:
+        """The name results.json and the exercise file use."""
+        raise NotImplementedError
+
+    @property
+    def symbol(self) -> str:
+        """The name as the course writes it: ω4, Aᶜ_B."""
+        return symbol(self.name)
+
+    def __str__(self) -> str:
+        return self.name
+
+
+@dataclass(frozen=True)
+class Centre(Ask):
+    """An instant centre ``I_ij`` (``pair`` ascending)."""
+
+    pair: tuple[int, int]
+    order: ClassVar[int] = 0
+
+    @property
+    def name(self) -> str:
+        i, j = self.pair
+        return f"I{i}{j}" if j < 10 else f"I{i},{j}"
+
+
+@dataclass(frozen=True)
+class AngularVelocity(Ask):
+    """ω of link ``link``."""
+
+    link: int
+    order: ClassVar[int] = 1
+
+    @property
+    def name(self) -> str:
+        return f"omega{self.link}"
+
+
+@dataclass(frozen=True)
+class Velocity(Ask):
+    """The velocity of point ``point`` (``A4``: the point of link 4 under A)."""
+
+    point: str
+    order: ClassVar[int] = 2
+
+    @property
+    def name(self) -> str:
+        return f"V_{self.point}"
+
+
+@dataclass(frozen=True)
+class Relative(Ask):
+    """A relative velocity ``V_P/Q`` or acceleration ``A_P/Q`` (``letter`` V or A)."""
+
+    letter: str
+    point: str
+    of: str
+    order: ClassVar[int] = 3
+
+    @property
+    def name(self) -> str:
+        return f"{self.letter}_{self.point}/{self.of}"
+
+
+@dataclass(frozen=True)
+class AngularAcceleration(Ask):
+    """α of link ``link``."""
+
+    link: int
+    order: ClassVar[int] = 4
+
+    @property
+    def name(self) -> str:
+        return f"alpha{self.link}"
+
+
+@dataclass(frozen=True)
+class Acceleration(Ask):
+    """The acceleration of point ``point`` (``B4``: the point of link 4 under B)."""
+
+    point: str
+    order: ClassVar[int] = 5
+
+    @property
+    def name(self) -> str:
+        return f"A_{self.point}"
+
+
+@dataclass(frozen=True)
+class Coriolis(Ask):
+    """The Coriolis component at ``point``, which slides in a slot of a moving link."""
+
+    point: str
+    order: ClassVar[int] = 6
+
+    @property
+    def name(self) -> str:
+        return f"A_cor_{self.point}"
+
+
+@dataclass(frozen=True)
+class _Whole(Ask):
+    """An ask of the mechanism as a whole, named by one word."""
+
+    scope: ClassVar[str] = "mechanism"
+    word: ClassVar[str] = ""
+
+    @property
+    def name(self) -> str:
+        return self.word
+
+
+@dataclass(frozen=True)
+class Mobility(_Whole):
+    """The degrees of freedom (Grübler)."""
+
+    word: ClassVar[str] = "dof"
+    order: ClassVar[int] = 0
+
+
+@dataclass(frozen=True)
+class GrashofClass(_Whole):
+    """The four-bar's Grashof class."""
+
+    word: ClassVar[str] = "grashof"
+    order: ClassVar[int] = 1
+
+
+@dataclass(frozen=True)
+class LengthRange(Ask):
+    """The lengths of ``span`` (a link's two pins, ``O2O4`` for the frame) that keep the class."""
+
+    span: str
+    scope: ClassVar[str] = "mechanism"
+    order: ClassVar[int] = 2
+
+    @property
+    def name(self) -> str:
+        return f"range_{self.span}"
+
+
+@dataclass(frozen=True)
+class TimeRatio(_Whole):
+    """The quick-return time ratio, from the limit positions."""
+
+    word: ClassVar[str] = "time_ratio"
+    order: ClassVar[int] = 3
+
+
+@dataclass(frozen=True)
+class Stroke(_Whole):
+    """The stroke of the block driven through the limit positions."""
+
+    word: ClassVar[str] = "stroke"
+    order: ClassVar[int] = 4
+
+
+_POINT = r"([A-Za-z][A-Za-z0-9_']*)"
+_GRAMMAR: tuple[tuple[re.Pattern, callable], ...] = tuple(
+    (re.compile(f"^{pattern}$"), make) for pattern, make in (
+        (r"I(\d)(\d)", lambda m: Centre((int(m[1]), int(m[2])))),
+        (r"I(\d+),(\d+)", lambda m: Centre((int(m[1]), int(m[2])))),
+        (r"omega(\d+)", lambda m: AngularVelocity(int(m[1]))),
+        (r"alpha(\d+)", lambda m: AngularAcceleration(int(m[1]))),
+        (f"A_cor_{_POINT}", lambda m: Coriolis(m[1])),
+        (f"([VA])_{_POINT}/{_POINT}", lambda m: Relative(m[1], m[2], m[3])),
+        (f"V_{_POINT}", lambda m: Velocity(m[1])),
+        (f"A_{_POINT}", lambda m: Acceleration(m[1])),
+        (r"range_(\w+)", lambda m: LengthRange(m[1])),
+        (r"dof", lambda m: Mobility()),
+        (r"grashof", lambda m: GrashofClass()),
+        (r"time_ratio", lambda m: TimeRatio()),
+        (r"stroke", lambda m: Stroke()),
+    ))
+
+
+def parse_ask(name: str) -> Ask:
+    """Read one results.json name into its :class:`Ask` ("centres" is every centre: see
+    :func:`ask_names`).
+
+    Raises
+    ------
+    TarsimError
+        If the name is none of the grammar's.
+
+    Examples
+    --------
+    >>> parse_ask("A_B4"), parse_ask("I13").pair, parse_ask("V_B/A").of
+    (Acceleration(point='B4'), (1, 3), 'A')
+    """
+    for pattern, make in _GRAMMAR:
+        m = pattern.match(name)
+        if m:
+            return make(m)
+    raise TarsimError(f"'{name}' is not the name of a quantity")
+
+
+def ask_names(mech: Mechanism) -> set[str]:
+    """Every name an exercise on ``mech`` may ask by the grammar of points and links.
+
+    Whether a method can answer it (a four-bar's Grashof class, a quick-return's
+    time ratio) is the registry's to say, not the grammar's.
+    """
+    nums = sorted(mech.numbers)
+    out = {"centres"}
+    out |= {Centre((a, b)).name for i, a in enumerate(nums) for b in nums[i + 1:]}
+    out |= {f"{w}{n}" for n in nums if n != 1 for w in ("omega", "alpha")}
+    moving = [p for p in mech.point_names if set(mech.links_at(p)) != {1}]
+    out |= {f"V_{p}" for p in moving}
+    slotted = [s for s in (*mech.slides, *mech.pin_arcs)
+               if s.guide_link != 1 and s.point not in mech.link(s.guide_link).names]
+    coincident = {f"{s.point}{s.guide_link}" for s in slotted}
+    carried = {f"{s.point}{c}" for s in slotted
+               for c in set(mech.links_at(s.point)) | {t.link for t in mech.slides
+                                                        if t.point == s.point} if c != 1}
+    named = set(moving) | coincident | carried
+    out |= {f"A_{p}" for p in named}
+    out |= {f"{v}_{p}/{q}" for v in "VA" for p in named for q in named if p != q}
+    out |= {f"A_cor_{s.point}" for s in slotted}
+    return out
+
+
+def ordered(asks) -> list[Ask]:
+    """The asks in a solution's order: the mechanism's first, then a position's by kind, each
+    kind in the order the exercise gives them."""
+    return sorted(asks, key=lambda a: (a.scope != "mechanism", a.order))

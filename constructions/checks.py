@@ -1,0 +1,241 @@
+"""The check of every answer: the constructed value beside the analytic one, and how far apart.
+
+A construction's first-order error is about eps over its conditioning, so an
+answer passes when its relative error is within :func:`tolerance` of the
+conditioning its construction reports. How the error is measured depends on
+what the quantity is, so :func:`check` keeps one rule per kind of ask:
+
+* a rate (ω, α) and a vector (V, A, a relative vector, Coriolis) relative to its
+  reference, or to the input's own rate where the reference is near zero (a point
+  at rest at a dead centre still has a scale);
+* an instant centre by distance relative to the mechanism's size, a centre at
+  infinity by the angle of its direction;
+* the mechanism's DOF and Grashof class exactly, the length ranges relative to
+  the longest link, the time ratio and stroke relative to themselves.
+
+A rate or vector within ``NOISE`` of zero beside its scale is reported as zero,
+after its error is measured.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from dataclasses import dataclass, field, replace
+from typing import Any
+
+from . import asks as A
+from .errors import TarsimError
+from .record import Panel, Ref
+from .reference.centres import centre_error
+
+__all__ = ["Quantity", "Expected", "Answer", "FigureSpec", "tolerance", "check", "vector_value",
+           "NOISE", "EPS"]
+
+EPS = 2.220446049250313e-16
+"""The unit roundoff of a float."""
+
+NOISE = 1e-12
+"""A rate below this fraction of the input's is rounding, not motion: it is said as zero."""
+
+
+@dataclass(frozen=True)
+class Quantity:
+    """One asked quantity: by construction, by the analytic solver, and how far apart.
+
+    ``value`` and ``reference`` are in results.json's shape (SI units).
+    ``alternatives`` are the same quantity found by other methods, by method.
+    """
+
+    name: str
+    value: dict[str, Any]
+    reference: dict[str, Any]
+    rel_error: float
+    tolerance: float
+    conditioning: float
+    method: str
+    alternatives: dict[str, Quantity] = field(default_factory=dict)
+
+    @property
+    def passed(self) -> bool:
+        """Whether the construction agrees with the reference within its tolerance."""
+        return self.rel_error <= self.tolerance and all(
+            q.passed for q in self.alternatives.values())
+
+    def with_alternatives(self, others: list[Quantity]) -> Quantity:
+        """This answer, with the same quantity by other methods beside it."""
+        return replace(self, alternatives={**self.alternatives, **{q.method: q for q in others}})
+
+
+@dataclass(frozen=True)
+class FigureSpec:
+    """The figure an answer is drawn in: its file stem, heading, caption, and kind of figure.
+
+    ``kind`` is "scene" (the space diagram with the answer's construction on it),
+    "circle diagram", "polygons" (the worked page: space diagram, polygons and
+    results table) or "limits" (the limit positions). The figure's title is the
+    mechanism's name and the ``caption``. ``velocity_scale`` is the scale (drawing
+    metres per m/s) of the velocities a scene draws, which its caption states.
+    """
+
+    stem: str
+    heading: str
+    caption: str = ""
+    kind: str = "scene"
+    velocity_scale: float | None = None
+
+
+@dataclass(frozen=True)
+class Answer:
+    """What a method drew for one ask: the value read off the drawing, and where it stands.
+
+    ``value`` is in results.json's shape; ``method`` is how results.json names the
+    method. ``refs`` are the steps the answer is (the slice of each of its
+    ``figures`` is cut from them) and ``arrows`` the vectors drawn beside it that
+    belong to its figure; ``panel`` is the panel it is read in. ``found`` is the geometric answer itself
+    where the check compares geometry (a centre, possibly at infinity), and
+    ``holds_always`` marks a joint's own centre, true at every instant.
+    """
+
+    ask: A.Ask
+    value: dict[str, Any]
+    conditioning: float
+    method: str
+    refs: tuple[Ref, ...] = ()
+    figures: tuple[FigureSpec, ...] = ()
+    panel: Panel = Panel.SPACE
+    arrows: tuple[Ref, ...] = ()
+    found: Any = None
+    holds_always: bool = False
+
+
+@dataclass(frozen=True)
+class Expected:
+    """An analytic reference in results.json's shape, with the rounding it carries itself
+    (large for a centre where two links turn at nearly the same rate) and, where the check
+    compares geometry, the reference's own object (an analytic centre)."""
+
+    value: dict[str, Any]
+    rounding: float = 0.0
+    exact: Any = None
+
+
+def tolerance(conditioning: float) -> float:
+    """Return the relative tolerance of a result with this compounded conditioning.
+
+    A drafting act's first-order error is about ``eps / conditioning`` relative to
+    the figure; 64 ulps cover the few acts chained before the last, and 1e-9 is the
+    floor below which nothing is asked.
+
+    Examples
+    --------
+    >>> tolerance(1.0)
+    1e-09
+    >>> tolerance(1e-9) == 64 * EPS / 1e-9
+    True
+    >>> tolerance(0.0)
+    inf
+    """
+    if conditioning <= 0.0:
+        return math.inf
+    return max(1e-9, 64 * EPS / conditioning)
+
+
+def vector_value(x: float, y: float) -> dict[str, Any]:
+    """A vector in results.json's shape: its magnitude and its components."""
+    return {"value": math.hypot(x, y), "vector": [x + 0.0, y + 0.0]}
+
+
+def _quiet(x: float, scale: float) -> float:
+    """``x``, or 0 when it is rounding noise beside ``scale``."""
+    return 0.0 if abs(x) <= NOISE * scale else x + 0.0
+
+
+def _rate(value: dict, ref: dict, scale: float) -> tuple[dict, dict, float]:
+    v, r = value["value"], ref["value"]
+    err = abs(v - r) / max(abs(r), scale, 1e-300)
+    return {"value": _quiet(v, scale)}, {"value": _quiet(r, scale)}, err
+
+
+def _vector(value: dict, ref: dict, scale: float) -> tuple[dict, dict, float]:
+    (vx, vy), (rx, ry) = value["vector"], ref["vector"]
+    err = math.hypot(vx - rx, vy - ry) / max(math.hypot(rx, ry), scale, 1e-300)
+    if math.hypot(vx, vy) <= NOISE * scale:
+        vx = vy = 0.0
+    if math.hypot(rx, ry) <= NOISE * scale:
+        rx = ry = 0.0
+    return vector_value(vx, vy), vector_value(rx, ry), err
+
+
+def _relative(value: dict, ref: dict, scale: float) -> tuple[dict, dict, float]:
+    """A positive number relative to itself: the time ratio, the stroke."""
+    return value, ref, abs(value["value"] - ref["value"]) / max(abs(ref["value"]), 1e-300)
+
+
+def _exact(value: dict, ref: dict, scale: float) -> tuple[dict, dict, float]:
+    """An integer that must be the same: the mobility."""
+    return value, ref, float(abs(value["value"] - ref["value"]))
+
+
+def _same_class(value: dict, ref: dict, scale: float) -> tuple[dict, dict, float]:
+    """The Grashof class. A change-point linkage turns like a class it borders, so the
+    turning test may name any; it is judged by the inequality alone."""
+    same = value["class"] == ref["class"] or value["class"] == "change-point"
+    return value, ref, 0.0 if same else 1.0
+
+
+def _interval(value: dict, ref: dict, scale: float) -> tuple[dict, dict, float]:
+    """A range of lengths, its ends relative to the longest link (``scale``)."""
+    lo, hi, rlo, rhi = value["low"], value["high"], ref["low"], ref["high"]
+    far = 0.0 if hi is None and rhi is None else abs((hi or math.inf) - (rhi or math.inf))
+    err = max(abs(lo - rlo), far) / scale
+    return value, ref, err if math.isfinite(err) else 1.0
+
+
+_RULES: dict[type, Callable[[dict, dict, float], tuple[dict, dict, float]]] = {
+    A.AngularVelocity: _rate, A.AngularAcceleration: _rate,
+    A.Velocity: _vector, A.Acceleration: _vector, A.Relative: _vector, A.Coriolis: _vector,
+    A.TimeRatio: _relative, A.Stroke: _relative, A.Mobility: _exact,
+    A.GrashofClass: _same_class, A.LengthRange: _interval,
+}
+
+
+_EXACT = {A.Mobility: 0.0, A.GrashofClass: 0.0, A.LengthRange: 1e-9}
+"""Tolerances of answers that are counted or found at breakpoints, not drawn."""
+
+
+def check(answer: Answer, expected: Expected, *, scale: float) -> Quantity:
+    """Put a constructed answer beside its analytic ``expected`` one, by the rule for its ask.
+
+    ``scale`` is what an error is relative to where the reference is near zero
+    (the input's rate, speed or acceleration; the mechanism's size for a centre;
+    the longest link for a range).
+
+    Raises
+    ------
+    TarsimError
+        If the reference is undefined for an answer that needs one.
+    """
+    ask = answer.ask
+    if isinstance(ask, A.Centre):
+        return _check_centre(answer, expected, scale)
+    shown, ref, err = _RULES[type(ask)](answer.value, expected.value, scale)
+    tol = _EXACT.get(type(ask), tolerance(answer.conditioning))
+    return Quantity(ask.name, shown, ref, err, tol, answer.conditioning, answer.method)
+
+
+def _check_centre(answer: Answer, expected: Expected, size: float) -> Quantity:
+    name, found = answer.ask.name, answer.found
+    if "undefined" in expected.value:
+        if not answer.holds_always:
+            raise TarsimError(f"{name} has no analytic reference here: "
+                              f"{expected.value['undefined']}")
+        # A joint's own centre holds at every instant, even one with no relative
+        # motion (a block momentarily at rest in its slot), where any point would do.
+        return Quantity(name, answer.value, expected.value, 0.0, tolerance(1.0),
+                        answer.conditioning, answer.method)
+    # A direction is judged by angle alone, so its tolerance does not grow with distance;
+    # the reference's own rounding (large when ω_i ≈ ω_j) is added to the tolerance.
+    tol = tolerance(1.0 if found.is_at_infinity else answer.conditioning) + expected.rounding
+    return Quantity(name, answer.value, expected.value, centre_error(found, expected.exact, size),
+                    tol, answer.conditioning, answer.method)

@@ -1,0 +1,124 @@
+"""The analytic value each kind of ask is checked against, read from the independent reference.
+
+Every function takes the work of a position (or of the mechanism) and an ask,
+and returns an :class:`~.checks.Expected` in results.json's shape. They read
+only :mod:`.reference` (the vector-loop solver, its instant centres, limits,
+rotatability and mobility), never a construction: a method names one of these
+as its reference when it registers (:mod:`.registry`).
+"""
+
+from __future__ import annotations
+
+import math
+
+from . import asks as A
+from .checks import Expected, vector_value
+from .coincident import taken
+from .errors import DegenerateInput, InputError
+from .limit_positions import drawn_limits
+from .reference import solver
+from .reference.centres import instant_centre
+from .reference.limits import limit_reference
+from .reference.mobility import mobility_by_rank
+from .reference.rotatability import (class_by_rotation, four_bar_spans, grashof_class,
+                                     length_range_by_rotation)
+
+__all__ = ["centre", "omega", "alpha", "velocity", "acceleration", "relative", "coriolis",
+           "mobility", "grashof", "length_range", "time_ratio", "stroke"]
+
+
+def centre(work, ask: A.Centre) -> Expected:
+    """Where the two links' analytic velocity fields agree (undefined if they move together)."""
+    try:
+        ref = instant_centre(work.kinematics, *ask.pair)
+    except DegenerateInput as e:
+        return Expected({"undefined": str(e)})
+    value = ({"at_infinity": True, "direction": list(ref.direction)} if ref.is_at_infinity
+             else {"point": list(ref.point)})
+    return Expected(value, ref.rounding, ref)
+
+
+def omega(work, ask: A.AngularVelocity) -> Expected:
+    """ω of the link."""
+    return Expected({"value": work.kinematics.omegas[ask.link]})
+
+
+def alpha(work, ask: A.AngularAcceleration) -> Expected:
+    """α of the link."""
+    return Expected({"value": work.kinematics.alphas[ask.link]})
+
+
+def velocity(work, ask: A.Velocity) -> Expected:
+    """The velocity of the point, taken on its link (``A4``: A as a point of link 4)."""
+    m = work.mechanism
+    return Expected(vector_value(*solver.point_velocity(work.kinematics, m, *taken(m, ask.point))))
+
+
+def acceleration(work, ask: A.Acceleration) -> Expected:
+    """The acceleration of the point, taken on its link."""
+    m = work.mechanism
+    return Expected(vector_value(*solver.point_acceleration(work.kinematics, m,
+                                                            *taken(m, ask.point))))
+
+
+def relative(work, ask: A.Relative) -> Expected:
+    """V_P − V_Q (or A_P − A_Q), each point taken on its link."""
+    m, kin = work.mechanism, work.kinematics
+    of = solver.point_velocity if ask.letter == "V" else solver.point_acceleration
+    (ax, ay), (bx, by) = (of(kin, m, *taken(m, n)) for n in (ask.point, ask.of))
+    return Expected(vector_value(ax - bx, ay - by))
+
+
+def coriolis(work, ask: A.Coriolis) -> Expected:
+    """2ω_j × (V_P − V_Pj) at the slot, straight or curved, of link j that P runs in."""
+    m, kin = work.mechanism, work.kinematics
+    joint = next(s for s in (*m.slides, *m.pin_arcs) if s.point == ask.point
+                 and s.guide_link != 1 and ask.point not in m.link(s.guide_link).names)
+    j = joint.guide_link
+    (px, py), (qx, qy) = (solver.point_velocity(kin, m, k, ask.point) for k in (joint.link, j))
+    w = kin.omegas[j]
+    return Expected(vector_value(-2.0 * w * (py - qy), 2.0 * w * (px - qx)))
+
+
+def mobility(work, ask: A.Mobility) -> Expected:
+    """The nullity of the loop equations' Jacobian."""
+    return Expected({"value": mobility_by_rank(work.mechanism)})
+
+
+def grashof(work, ask: A.GrashofClass) -> Expected:
+    """The class found by turning each link a revolution."""
+    gc = grashof_class(work.mechanism)
+    s, p, q, l_ = sorted(gc.lengths)
+    return Expected({"class": class_by_rotation(gc.lengths), "s_plus_l": s + l_,
+                     "p_plus_q": p + q})
+
+
+def length_range(work, ask: A.LengthRange) -> Expected:
+    """The lengths that keep the class, by bisecting the turning test."""
+    gc = grashof_class(work.mechanism)
+    lo, hi = length_range_by_rotation(gc.lengths, four_bar_spans(work.mechanism)[ask.span])
+    return Expected({"low": lo, "high": hi, "class": class_by_rotation(gc.lengths)})
+
+
+def _limits(work):
+    """Where the analytic output's velocity changes sign, found once for time ratio and stroke:
+    the output the limit construction measures (a block's travel, a lever's swing)."""
+    lp = drawn_limits(work)
+    return work.shared("limit reference",
+                       lambda: limit_reference(work.mechanism, point=lp.point, link=lp.output))
+
+
+def time_ratio(work, ask: A.TimeRatio) -> Expected:
+    """Slow stroke over quick stroke, between the output's reversals."""
+    ref = _limits(work)
+    return Expected({"value": ref.time_ratio, "slow_deg": math.degrees(ref.slow),
+                     "quick_deg": math.degrees(ref.quick)})
+
+
+def stroke(work, ask: A.Stroke) -> Expected:
+    """The block's travel between its two reversals."""
+    point = drawn_limits(work).point
+    if point is None:
+        raise InputError("the stroke is measured on a block that slides on a frame guide and is "
+                         "driven through the limit positions; this mechanism has none")
+    return Expected({"value": _limits(work).stroke, "point": point})

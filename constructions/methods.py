@@ -1,0 +1,188 @@
+"""A registry of methods: what each answers, how it constructs, and its analytic reference.
+
+A :class:`Method` answers some kinds of :class:`~.asks.Ask`. For each ask it
+*constructs* an :class:`~.checks.Answer` (drawing steps into the record and
+returning the refs of its answer, the figure and panel it belongs in) and names
+its independent *reference*. :func:`answer_all` walks the asks of one position
+(or of the mechanism as a whole) in a solution's order and, for each, every
+method the exercise uses for it, putting each answer beside its reference
+(:func:`~.checks.check`). The first method's answer is the quantity; the others
+stand beside it.
+
+A :class:`Work` is what the methods of one position share: the mechanism drawn
+there, its analytic solution, its scales, and constructions several methods use
+(the instant centres, the polygons), each made once.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass, field
+from functools import cached_property
+from typing import Any
+
+from . import asks as A
+from .assembly import Assembly, assemble
+from .checks import Answer, Expected, Quantity, check
+from .errors import TarsimError
+from .model import Mechanism
+from .record import Panel
+from .reference import solver
+from .reference.centres import mechanism_size
+from .reference.rotatability import grashof_class
+from .scales import Scales, choose_scales
+
+__all__ = ["Method", "Work", "answer_all"]
+
+
+def _always(work: Work, ask: A.Ask) -> bool:
+    return True
+
+
+@dataclass(frozen=True)
+class Method:
+    """One graphical method, as the registry knows it.
+
+    ``references`` names, for each kind of ask it answers, the independent analytic
+    value its answer is checked against (:mod:`.expected`); ``construct`` draws one
+    answer into the work's record. ``stage`` orders a solution: methods of a lower stage construct first,
+    and of several methods for one ask the first is the quantity's answer. ``used``
+    says whether the exercise uses the method for an ask (a velocity method it
+    chose, a polygon it draws); ``chosen_as`` is the name an exercise's
+    ``[ask] methods`` chooses it by, if it is chosen. ``askable`` names the asks it
+    answers of a mechanism beyond those its points and links give (a four-bar's
+    Grashof class, a quick-return's time ratio), and ``why_not`` says why a
+    mechanism it does not fit has none.
+    """
+
+    name: str
+    references: Mapping[type[A.Ask], Callable[[Work, A.Ask], Expected]]
+    construct: Callable[[Work, A.Ask], Answer]
+    stage: int
+    used: Callable[[Work, A.Ask], bool] = _always
+    chosen_as: str | None = None
+    askable: Callable[[Mechanism], set[str]] | None = None
+    why_not: dict[type[A.Ask], str] = field(default_factory=dict)
+
+    @property
+    def answers(self) -> tuple[type[A.Ask], ...]:
+        """The kinds of ask the method answers."""
+        return tuple(self.references)
+
+    def reference(self, work: Work, ask: A.Ask) -> Expected:
+        """The analytic value ``ask`` is checked against."""
+        return self.references[type(ask)](work, ask)
+
+
+class Work:
+    """What the methods of one position (or of the mechanism as a whole) share.
+
+    ``chosen`` are the velocity methods the exercise chose, in its order;
+    ``stated`` the scales it states (``velocity``, ``velocity_polygon``,
+    ``acceleration_polygon``, in file units per paper cm). The mechanism is
+    assembled and solved analytically when first needed, the assembly first, so a
+    position that cannot be drawn says so before anything else.
+    """
+
+    def __init__(self, mechanism: Mechanism, asks: tuple[A.Ask, ...], chosen: tuple[str, ...],
+                 stated: dict[str, float] | None = None):
+        self.mechanism = mechanism
+        self.asks = asks
+        self.chosen = chosen
+        self.stated = dict(stated or {})
+        self.notes: list[tuple[Panel, str]] = []
+        self._shared: dict[str, Any] = {}
+
+    @cached_property
+    def assembly(self) -> Assembly:
+        """The mechanism drawn by compass at this position."""
+        return assemble(self.mechanism)
+
+    @cached_property
+    def kinematics(self) -> solver.Kinematics:
+        """The analytic solution at this position."""
+        return solver.solve(self.mechanism)
+
+    @cached_property
+    def scales(self) -> Scales:
+        """The position's scales, chosen once (:func:`~.scales.choose_scales`)."""
+        v = self.stated.get("velocity")
+        return choose_scales(self.assembly, velocity=v, velocity_polygon=v,
+                             acceleration_polygon=self.stated.get("acceleration"))
+
+    def prepare(self) -> None:
+        """Draw the position, then solve it analytically: a position that cannot be drawn
+        says so first."""
+        _ = self.assembly
+        _ = self.kinematics
+
+    def shared(self, key: str, make: Callable[[], Any]) -> Any:
+        """The construction ``key`` several methods use, made by ``make`` the first time."""
+        if key not in self._shared:
+            self._shared[key] = make()
+        return self._shared[key]
+
+    def has(self, key: str) -> bool:
+        """True if the shared construction ``key`` has been made."""
+        return key in self._shared
+
+    def made(self, key: str) -> Any:
+        """The shared construction ``key`` if it has been made, else None."""
+        return self._shared.get(key)
+
+    def note(self, text: str, panel: Panel = Panel.SPACE) -> None:
+        """Say something under the figures of ``panel`` (a warning, an assumption)."""
+        if (panel, text) not in self.notes:
+            self.notes.append((panel, text))
+
+    def asked(self, kind: type[A.Ask] | tuple[type[A.Ask], ...]) -> list[A.Ask]:
+        """The asks of this kind."""
+        return [a for a in self.asks if isinstance(a, kind)]
+
+    def scale_of(self, ask: A.Ask) -> float:
+        """What an error of ``ask`` is relative to where its reference is near zero."""
+        m, d = self.mechanism, self.mechanism.drive
+        if isinstance(ask, A.AngularVelocity):
+            return abs(d.omega)
+        if isinstance(ask, A.AngularAcceleration):
+            return math.hypot(d.omega ** 2, d.alpha)
+        if isinstance(ask, A.Velocity) or isinstance(ask, A.Relative) and ask.letter == "V":
+            return m.input_speed
+        if isinstance(ask, (A.Acceleration, A.Relative, A.Coriolis)):
+            return m.input_acceleration
+        if isinstance(ask, A.Centre):
+            return mechanism_size(self.kinematics)
+        if isinstance(ask, A.LengthRange):
+            return max(grashof_class(m).lengths)
+        return 1.0
+
+
+def answer_all(work: Work, methods: tuple[Method, ...]) -> tuple[dict[str, Quantity], list[Answer]]:
+    """Answer every ask of ``work`` by the methods that answer it, each beside its reference.
+
+    ``methods`` is the registry. Returns each asked quantity by name (the first
+    method's answer, with the others beside it), in a solution's order, and every
+    answer drawn, for the figures.
+
+    Raises
+    ------
+    TarsimError
+        If no method the exercise uses answers an ask, or a construction breaks down.
+    """
+    quantities: dict[str, Quantity] = {}
+    answers: list[Answer] = []
+    for ask in A.ordered(work.asks):
+        chosen = {name: i for i, name in enumerate(work.chosen)}
+        using = sorted((m for m in methods if isinstance(ask, m.answers) and m.used(work, ask)),
+                       key=lambda m: (m.stage, chosen.get(m.chosen_as, 0)))
+        if not using:
+            raise TarsimError(f"no method the exercise uses answers {ask.name}; choose one in "
+                              "[ask] methods")
+        found = []
+        for m in using:
+            answer = m.construct(work, ask)
+            found.append(check(answer, m.reference(work, ask), scale=work.scale_of(ask)))
+            answers.append(answer)
+        quantities[ask.name] = found[0].with_alternatives(found[1:])
+    return quantities, answers

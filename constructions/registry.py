@@ -1,0 +1,105 @@
+"""The registry: every method tarsim draws, what it answers, and its analytic reference.
+
+A solution walks it (:func:`~.methods.answer_all`). To add a method, write its
+module (the construction and a ``construct(work, ask)`` that returns an
+:class:`~.checks.Answer`), name its reference in :mod:`.expected`, and add one
+:class:`~.methods.Method` here: see CONTRIBUTING.md.
+
+The stages order a solution as the course does: centres, then angular
+velocities from them, the velocities by the space diagram's methods (in the
+order the exercise chooses them), the velocity polygon, the acceleration polygon;
+and of the mechanism as a whole, its DOF, its Grashof class, its limit positions.
+"""
+
+from __future__ import annotations
+
+from functools import partial
+
+from . import asks as A
+from . import expected
+from .acceleration_polygon import answer as from_acceleration_polygon
+from .centres import answer_centre, answer_omega
+from .limit_positions import WHY_NOT as LIMITS_WHY_NOT
+from .limit_positions import answer as from_limits
+from .limit_positions import askable as limits_askable
+from .errors import TarsimError
+from .methods import Method, Work
+from .model import Mechanism
+from .overall import GRASHOF_WHY_NOT, answer_grashof, answer_mobility, grashof_askable
+from .velocity_by_centres import answer_velocity as by_centres
+from .velocity_by_components import answer_velocity as by_components
+from .velocity_polygon import answer as from_velocity_polygon, wants_polygon
+
+__all__ = ["METHODS", "CHOSEN", "askable", "why_not"]
+
+
+def _chosen(work: Work, ask: A.Ask, name: str) -> bool:
+    return name in work.chosen
+
+
+def _by_centres_chosen(work: Work, ask: A.Ask) -> bool:
+    return any(m in work.chosen for m in ("radius-rotation", "parallel-line", "components"))
+
+
+def _velocity_polygon(work: Work, ask: A.Ask) -> bool:
+    if isinstance(ask, A.Velocity):
+        return "polygon" in work.chosen
+    if isinstance(ask, A.Relative):
+        return ask.letter == "V"
+    return wants_polygon(work)
+
+
+def _acceleration_polygon(work: Work, ask: A.Ask) -> bool:
+    return not isinstance(ask, A.Relative) or ask.letter == "A"
+
+
+def _velocity(name: str, construct) -> Method:
+    return Method(name, {A.Velocity: expected.velocity}, construct, stage=2,
+                  used=partial(_chosen, name=name), chosen_as=name)
+
+
+METHODS: tuple[Method, ...] = (
+    Method("instant centres", {A.Centre: expected.centre}, answer_centre, stage=0),
+    Method("instant centres (ω ratio)", {A.AngularVelocity: expected.omega}, answer_omega,
+           stage=1, used=_by_centres_chosen),
+    _velocity("radius-rotation", partial(by_centres, method="radius-rotation")),
+    _velocity("parallel-line", partial(by_centres, method="parallel-line")),
+    _velocity("components", by_components),
+    Method("velocity polygon", {A.AngularVelocity: expected.omega, A.Velocity: expected.velocity,
+                                A.Relative: expected.relative},
+           from_velocity_polygon, stage=3, used=_velocity_polygon, chosen_as="polygon"),
+    Method("acceleration polygon", {A.AngularAcceleration: expected.alpha,
+                                    A.Acceleration: expected.acceleration,
+                                    A.Relative: expected.relative, A.Coriolis: expected.coriolis},
+           from_acceleration_polygon, stage=4, used=_acceleration_polygon),
+    Method("Grübler", {A.Mobility: expected.mobility}, answer_mobility, stage=5,
+           askable=lambda mech: {"dof"}),
+    Method("Grashof", {A.GrashofClass: expected.grashof, A.LengthRange: expected.length_range},
+           answer_grashof, stage=6, askable=grashof_askable, why_not=GRASHOF_WHY_NOT),
+    Method("limit positions", {A.TimeRatio: expected.time_ratio, A.Stroke: expected.stroke},
+           from_limits, stage=7, askable=limits_askable, why_not=LIMITS_WHY_NOT),
+)
+"""Every method, in the order a solution takes them."""
+
+CHOSEN: tuple[str, ...] = tuple(m.chosen_as for m in METHODS if m.chosen_as)
+"""The names an exercise's ``[ask] methods`` chooses velocity methods by."""
+
+
+def askable(mech: Mechanism) -> set[str]:
+    """Every name an exercise on ``mech`` may ask: its points' and links', and those of the
+    methods that fit it as a whole."""
+    out = A.ask_names(mech)
+    for m in METHODS:
+        if m.askable is not None:
+            out |= m.askable(mech)
+    return out
+
+
+def why_not(name: str) -> str | None:
+    """Why a mechanism may not be asked ``name`` (a time ratio of a mechanism with no limit
+    construction), if a method says."""
+    try:
+        kind = type(A.parse_ask(name))
+    except TarsimError:
+        return None
+    return next((m.why_not[kind] for m in METHODS if kind in m.why_not), None)
