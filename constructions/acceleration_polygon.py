@@ -25,7 +25,6 @@ velocity polygon. α of each link is read off a tangential component,
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
 
 from . import asks as A
 from .assembly import Assembly
@@ -33,69 +32,17 @@ from .checks import Answer, vector_value
 from .coincident import Node
 from .errors import TarsimError
 from .narration import Number, Phrase, Quantity, Word, phrase
-from .polygon_walk import NOISE, DrawnPolygon, PolygonWalk, nice_scale, sense_of
-from .record import Construction, Panel, Ref, Role
-from .velocity_polygon import WORKED, VelocityPolygon, drawn_velocity_polygon
+from .polygon_walk import ACCELERATION, NOISE, Polygon, PolygonWalk, sense_of
+from .record import Panel, Ref, Role
+from .scales import nice
+from .velocity_polygon import WORKED, drawn_velocity_polygon
 
-__all__ = ["AccelerationPolygon", "draw_acceleration_polygon", "drawn_acceleration_polygon",
+__all__ = ["draw_acceleration_polygon", "drawn_acceleration_polygon",
            "answer"]
 
 
-@dataclass
-class AccelerationPolygon(DrawnPolygon):
-    """A drawn acceleration polygon: its pole, scale, tips, α and Coriolis components.
-
-    ``tips`` maps a point name (or coincident point ``"A4"``) to its tip step, as
-    :class:`~constructions.velocity_polygon.VelocityPolygon` does. ``alphas``
-    maps each moving link to α (rad/s², counter-clockwise positive).
-    ``coriolis`` maps the point of each slot to its (start, end) steps: the
-    Coriolis component 2ω_j × V_P/Pj of the sliding point P relative to the
-    coincident point Pj of the slotted link j. ``components`` maps each drawn
-    component's label ("Aⁿ_B/A", "Aᵗ_B/A") to its segment step.
-    """
-
-    pole: Ref
-    scale: float
-    tips: dict[str, Ref]
-    alphas: dict[int, float]
-    steps: list[Ref]
-    space_steps: list[Ref] = field(default_factory=list)
-    construction: Construction = field(default_factory=Construction, repr=False)
-    aliases: dict[str, str] = field(default_factory=dict)
-    coriolis: dict[str, tuple[Ref, Ref, float]] = field(default_factory=dict)
-    components: dict[str, Ref] = field(default_factory=dict)
-
-    noun = "acceleration"
-    symbol, prefix, panel, unit = "A", "ap", Panel.ACCELERATION, "/s²"
-
-    def acceleration(self, name: str) -> tuple[float, float]:
-        """Read A of ``name`` (m/s²) off the polygon: the vector o_a → its tip.
-
-        Raises
-        ------
-        TarsimError
-            If the polygon has no tip of that name.
-        """
-        return self.tip_vector(name)
-
-    def coriolis_of(self, point: str) -> tuple[float, float]:
-        """The Coriolis component 2ω_j × v_rel at slot point ``point`` (m/s²), as drawn.
-
-        Raises
-        ------
-        TarsimError
-            If no point of that name slides in a moving slot.
-        """
-        if point not in self.coriolis:
-            raise TarsimError(f"no Coriolis component at {point}; the polygon has one at "
-                              f"{', '.join(self.coriolis) or 'no point'}")
-        start, end, sign = self.coriolis[point]
-        x, y = self.between(start, end)
-        return sign * x + 0.0, sign * y + 0.0
-
-
-def draw_acceleration_polygon(asm: Assembly, vp: VelocityPolygon, scale: float | None = None, *,
-                              pole: tuple[float, float] = (0.0, 0.0)) -> AccelerationPolygon:
+def draw_acceleration_polygon(asm: Assembly, vp: Polygon, scale: float | None = None, *,
+                              pole: tuple[float, float] = (0.0, 0.0)) -> Polygon:
     """Draw the acceleration polygon of ``asm`` from its velocity polygon ``vp``.
 
     Parameters
@@ -103,7 +50,7 @@ def draw_acceleration_polygon(asm: Assembly, vp: VelocityPolygon, scale: float |
     asm : Assembly
         The mechanism drawn at one position, with the drive's ω and α (α is 0
         unless the file gives it).
-    vp : VelocityPolygon
+    vp : Polygon
         The velocity polygon drawn on the same construction: it gives every ω and
         every sliding velocity.
     scale : float, optional
@@ -114,7 +61,7 @@ def draw_acceleration_polygon(asm: Assembly, vp: VelocityPolygon, scale: float |
 
     Returns
     -------
-    AccelerationPolygon
+    Polygon
 
     Raises
     ------
@@ -139,7 +86,7 @@ def draw_acceleration_polygon(asm: Assembly, vp: VelocityPolygon, scale: float |
     ...               branches={"B": "forward"})
     >>> asm = assemble(m)
     >>> ap = draw_acceleration_polygon(asm, draw_velocity_polygon(asm, 1.0), 1.0)
-    >>> tuple(round(v, 12) + 0.0 for v in ap.acceleration("A"))
+    >>> tuple(round(v, 12) + 0.0 for v in ap.vector("A"))
     (0.0, -12.0)
     """
     if vp.construction is not asm.construction:
@@ -147,39 +94,35 @@ def draw_acceleration_polygon(asm: Assembly, vp: VelocityPolygon, scale: float |
                           "on one assembly")
     if scale is None:
         accel = asm.mechanism.input_acceleration
-        scale = 1.0 if accel == 0.0 else nice_scale(asm.size / (2.0 * accel))
+        scale = 1.0 if accel == 0.0 else nice(asm.size / (2.0 * accel), up=False)
     if not (isinstance(scale, (int, float)) and math.isfinite(scale) and scale > 0.0):
         raise TarsimError(f"the acceleration scale must be a positive number, got {scale}")
     return _Polygon(asm, vp, float(scale), pole).run()
 
 
 class _Polygon(PolygonWalk):
-    prefix, pole_name, panel, symbol, noun, prime = (
-        "ap", "o_a", Panel.ACCELERATION, "A", "acceleration", "′")
+    kind = ACCELERATION
 
-    def __init__(self, asm: Assembly, vp: VelocityPolygon, scale: float,
+    def __init__(self, asm: Assembly, vp: Polygon, scale: float,
                  pole: tuple[float, float]):
         super().__init__(asm, scale, pole)
         self.vp = vp
-        self.omegas = vp.omegas
+        self.omegas = vp.rates
         self.normals: dict[tuple[Node, int], list[tuple[Node, Ref]]] = {}
         self.coriolis: dict[str, tuple[Ref, Ref, float]] = {}
         self.components: dict[str, Ref] = {}
         self.slides_drawn: list[tuple[Node, Node, Ref, float, str]] = []
 
-    def run(self) -> AccelerationPolygon:
+    def run(self) -> Polygon:
         self.walk()
-        alphas = self.draw_results()
-        tips, aliases = self.tips()
-        return AccelerationPolygon(self.pole_ref, self.scale, tips, alphas, self.steps,
-                                   self.space_steps, self.c, aliases, self.coriolis,
-                                   self.components)
+        return self.polygon(self.draw_results(), coriolis=self.coriolis,
+                            components=self.components)
 
     def say(self, a: float) -> Quantity:
         return self.m.units.acceleration_said(a)
 
     def velocity(self, n: Node) -> tuple[float, float]:
-        return (0.0, 0.0) if self.zero(n) else self.vp.velocity(self.name(n))
+        return (0.0, 0.0) if self.zero(n) else self.vp.vector(self.name(n))
 
     def component(self, ref: Ref, start: Ref, end: Ref, label: str) -> None:
         """Draw a known or found component as an arrow (no sentence: the act before it said it)."""
@@ -467,10 +410,10 @@ class _Polygon(PolygonWalk):
 
 
 # ----- as a method of the registry -------------------------------------------------------------
-def drawn_acceleration_polygon(work) -> AccelerationPolygon:
+def drawn_acceleration_polygon(work) -> Polygon:
     """The position's acceleration polygon, drawn once on its velocity polygon; an α of the
     input not given is noted as taken as 0."""
-    def make() -> AccelerationPolygon:
+    def make() -> Polygon:
         d = work.mechanism.drive
         if not d.alpha_given:
             work.note(f"α{d.link} is not given, so it is taken as 0.", Panel.ACCELERATION)
@@ -489,7 +432,7 @@ def answer(work, ask) -> Answer:
     m, c = work.mechanism, work.assembly.construction
     arrows = tuple(drawn_velocity_polygon(work).steps) + tuple(ap.steps)
     if isinstance(ask, A.AngularAcceleration):
-        a = ap.alphas.get(ask.link)
+        a = ap.rates.get(ask.link)
         if a is None:
             raise TarsimError(f"{ask.name} could not be read off the polygon")
         value, cond, refs = {"value": a}, ap.worst(), tuple(ap.tips_on(ask.link, m))
@@ -505,7 +448,7 @@ def answer(work, ask) -> Answer:
         method = "acceleration polygon (2ω×v_rel)"
     else:
         tip = ap.tip(ask.point)
-        value, cond, refs = vector_value(*ap.acceleration(ask.point)), c[tip].conditioning, (tip,)
+        value, cond, refs = vector_value(*ap.vector(ask.point)), c[tip].conditioning, (tip,)
         method = "acceleration polygon"
     return Answer(ask, value, cond, method, refs=refs + velocities, arrows=arrows,
                   figures=(WORKED,), panel=Panel.ACCELERATION)

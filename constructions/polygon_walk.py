@@ -14,6 +14,7 @@ it reads off at the end.
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass, field
 from itertools import combinations
 
 from . import geometry as g
@@ -22,9 +23,10 @@ from .coincident import Node, Walk
 from .errors import AssemblyError, DegenerateInput, TarsimError
 from .model import SlideKind
 from .narration import Number, Phrase, Quantity, Word, narrate, phrase
-from .record import Kind, Panel, Ref, Role
+from .record import Construction, Kind, Panel, Ref, Role
 
-__all__ = ["PolygonWalk", "DrawnPolygon", "DEAD_POINT", "NOISE", "nice_scale", "sense_of"]
+__all__ = ["PolygonWalk", "Polygon", "PolygonKind", "VELOCITY", "ACCELERATION", "DEAD_POINT",
+           "NOISE", "sense_of"]
 
 DEAD_POINT = 1e-7
 """Sine of the crossing angle below which two lines of a tip count as parallel (a dead point).
@@ -43,33 +45,56 @@ giving it a sense would take the sense from noise.
 """
 
 
-def nice_scale(raw: float) -> float:
-    """The largest 1, 2 or 5 × 10^k not above ``raw``.
+@dataclass(frozen=True)
+class PolygonKind:
+    """Which polygon: the velocity or the acceleration polygon, and how each names its parts."""
 
-    Examples
-    --------
-    >>> nice_scale(0.037), nice_scale(4.0), nice_scale(1.0)
-    (0.02, 2.0, 1.0)
+    panel: Panel
+    noun: str
+    symbol: str
+    prefix: str
+    pole: str
+    prime: str
+    unit: str
+
+
+VELOCITY = PolygonKind(Panel.VELOCITY, "velocity", "V", "vp", "o_v", "", "/s")
+"""The velocity polygon: pole o_v, tips b, vectors V_B."""
+
+ACCELERATION = PolygonKind(Panel.ACCELERATION, "acceleration", "A", "ap", "o_a", "′", "/s²")
+"""The acceleration polygon: pole o_a, tips b′, vectors A_B."""
+
+
+@dataclass
+class Polygon:
+    """A drawn velocity or acceleration polygon: its pole, scale and tips, and what it reads.
+
+    ``tips`` maps a point name (``"B"``), or a coincident point taken on a link
+    (``"A4"``), to its tip step; frame points map to the pole. ``rates`` maps each
+    moving link it could read to ω (rad/s), or α (rad/s²), counter-clockwise
+    positive. ``steps`` are the polygon's steps in drawing order (all in its panel)
+    and ``space_steps`` the lines of the space diagram they take directions from.
+    ``coriolis`` maps the point of each slot to the (start, end, sign) of its
+    Coriolis component 2ω_j × V_P/Pj, and ``components`` each drawn component's
+    label ("Aⁿ_B/A") to its step (acceleration polygon).
     """
-    k = math.floor(math.log10(raw))
-    for m in (5.0, 2.0, 1.0):
-        if m * 10.0 ** k <= raw * (1 + 1e-12):
-            return m * 10.0 ** k
-    return 10.0 ** k
 
+    kind: PolygonKind
+    pole: Ref
+    scale: float
+    tips: dict[str, Ref]
+    rates: dict[int, float]
+    steps: list[Ref]
+    space_steps: list[Ref] = field(default_factory=list)
+    construction: Construction = field(default_factory=Construction, repr=False)
+    aliases: dict[str, str] = field(default_factory=dict)
+    coriolis: dict[str, tuple[Ref, Ref, float]] = field(default_factory=dict)
+    components: dict[str, Ref] = field(default_factory=dict)
 
-class DrawnPolygon:
-    """What a drawn polygon answers: the vector from its pole to a named tip, at its scale.
-
-    The dataclasses using it have ``pole``, ``scale``, ``tips``, ``aliases`` and
-    ``construction``; ``noun`` names the polygon in messages.
-    """
-
-    noun = "velocity"
-    symbol, prefix, panel, unit = "V", "vp", Panel.VELOCITY, "/s"
-
-    def tip_vector(self, name: str) -> tuple[float, float]:
-        """The vector pole → tip of ``name`` (a tip, or a point taken on a link: ``A2``).
+    def vector(self, name: str) -> tuple[float, float]:
+        """Read the velocity (or acceleration) of ``name`` off the polygon: the vector from the
+        pole to its tip, in m/s (m/s²). ``name`` is a tip (``B``) or a point taken on a link
+        that carries it (``A2`` for the crank pin A).
 
         Raises
         ------
@@ -88,7 +113,7 @@ class DrawnPolygon:
         """
         key = self.aliases.get(name, name)
         if key not in self.tips:
-            raise TarsimError(f"the {self.noun} polygon has no tip for {name}; it has "
+            raise TarsimError(f"the {self.kind.noun} polygon has no tip for {name}; it has "
                               f"{', '.join(self.tips)}")
         return self.tips[key]
 
@@ -102,16 +127,16 @@ class DrawnPolygon:
         TarsimError
             If the polygon has no tip for either name.
         """
-        ref = f"{self.prefix}:rel:{name}/{of}"
+        ref = f"{self.kind.prefix}:rel:{name}/{of}"
         c = self.construction
         if ref in c:
             return ref
         start, end = self.tip(of), self.tip(name)
         size = math.hypot(*self.between(start, end)) / units.metres
-        symbol = f"{self.symbol}_{name}/{of}"
-        c.draw(ref, "join", start, end, label=symbol, role=Role.RESULT, panel=self.panel,
+        symbol = f"{self.kind.symbol}_{name}/{of}"
+        c.draw(ref, "join", start, end, label=symbol, role=Role.RESULT, panel=self.kind.panel,
                phrase=phrase("polygon.relative", a=c[start].label, b=c[end].label, symbol=symbol,
-                             size=Quantity(size, units.length, self.unit, "rate")))
+                             size=Quantity(size, units.length, self.kind.unit, "rate")))
         self.steps.append(ref)
         return ref
 
@@ -134,6 +159,21 @@ class DrawnPolygon:
         (sx, sy), (ex, ey) = (self.construction.output(r).xy for r in (start, end))
         return (ex - sx) / self.scale, (ey - sy) / self.scale
 
+    def coriolis_of(self, point: str) -> tuple[float, float]:
+        """The Coriolis component 2ω_j × v_rel at slot point ``point`` (m/s²), as drawn.
+
+        Raises
+        ------
+        TarsimError
+            If no point of that name slides in a moving slot.
+        """
+        if point not in self.coriolis:
+            raise TarsimError(f"no Coriolis component at {point}; the polygon has one at "
+                              f"{', '.join(self.coriolis) or 'no point'}")
+        start, end, sign = self.coriolis[point]
+        x, y = self.between(start, end)
+        return sign * x + 0.0, sign * y + 0.0
+
 
 def sense_of(rate: float, scale: float) -> str:
     """"ccw", "cw", or "at rest" when ``rate`` is rounding noise beside ``scale``."""
@@ -145,17 +185,42 @@ def sense_of(rate: float, scale: float) -> str:
 class PolygonWalk(Walk):
     """One polygon drawn point by point from its pole; subclasses draw the lines.
 
-    A subclass sets ``prefix`` (step ids), ``pole_name`` (``o_v``), ``panel``,
-    ``symbol`` (V or A), ``noun`` (velocity) and ``prime`` (the tip mark), and
-    provides ``draw_input``, ``draw_locus`` and ``draw_results``.
+    A subclass sets ``kind`` (:data:`VELOCITY` or :data:`ACCELERATION`, which names
+    its steps, pole and tips) and provides ``draw_input``, ``draw_locus`` and
+    ``draw_results``.
     """
 
-    prefix: str
-    pole_name: str
-    panel: Panel
-    symbol: str
-    noun: str
-    prime: str = ""
+    kind: PolygonKind
+
+    @property
+    def prefix(self) -> str:
+        return self.kind.prefix
+
+    @property
+    def pole_name(self) -> str:
+        return self.kind.pole
+
+    @property
+    def panel(self) -> Panel:
+        return self.kind.panel
+
+    @property
+    def symbol(self) -> str:
+        return self.kind.symbol
+
+    @property
+    def noun(self) -> str:
+        return self.kind.noun
+
+    @property
+    def prime(self) -> str:
+        return self.kind.prime
+
+    def polygon(self, rates: dict[int, float], **parts) -> Polygon:
+        """The drawn polygon, with the rates it read and any further parts (Coriolis)."""
+        tips, aliases = self.tips()
+        return Polygon(self.kind, self.pole_ref, self.scale, tips, rates, self.steps,
+                       self.space_steps, self.c, aliases, **parts)
 
     def __init__(self, asm: Assembly, scale: float, pole: tuple[float, float]):
         self.asm, self.m, self.c, self.scale = asm, asm.mechanism, asm.construction, scale

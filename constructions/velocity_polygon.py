@@ -28,57 +28,23 @@ perpendiculars are taken from (``KX``) are ``vp:line:`` steps in the space panel
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
 
 from . import asks as A
 from .assembly import Assembly
 from .checks import Answer, FigureSpec, vector_value
 from .coincident import Node
 from .errors import TarsimError
-from .polygon_walk import DEAD_POINT, DrawnPolygon, PolygonWalk, nice_scale, sense_of
+from .polygon_walk import DEAD_POINT, VELOCITY, Polygon, PolygonWalk, sense_of
 from .narration import Number, Phrase, Quantity, Word, phrase
-from .record import Construction, Panel, Ref, Role
+from .record import Panel, Ref, Role
+from .scales import nice
 
-__all__ = ["VelocityPolygon", "draw_velocity_polygon", "nice_scale", "DEAD_POINT", "WORKED",
+__all__ = ["draw_velocity_polygon", "DEAD_POINT", "WORKED",
            "wants_polygon", "drawn_velocity_polygon", "answer"]
 
 
-@dataclass
-class VelocityPolygon(DrawnPolygon):
-    """A drawn velocity polygon: its pole, scale, tips and the ω read off it.
-
-    ``tips`` maps a point name (``"B"``), or a coincident point taken on a link
-    (``"A4"``), to its tip step; frame points map to the pole. ``omegas`` maps each
-    moving link it could read to ω (rad/s, counter-clockwise positive). ``steps``
-    are the polygon's steps in drawing order (all in the velocity panel) and
-    ``space_steps`` the lines of the space diagram they take directions from.
-    """
-
-    pole: Ref
-    scale: float
-    tips: dict[str, Ref]
-    omegas: dict[int, float]
-    steps: list[Ref]
-    space_steps: list[Ref] = field(default_factory=list)
-    construction: Construction = field(default_factory=Construction, repr=False)
-    aliases: dict[str, str] = field(default_factory=dict)
-
-    def velocity(self, name: str) -> tuple[float, float]:
-        """Read the velocity of ``name`` (m/s) off the polygon: the vector o_v → its tip.
-
-        ``name`` is a key of ``tips`` or a point taken on a link that carries it
-        (``"A2"`` for the crank pin A).
-
-        Raises
-        ------
-        TarsimError
-            If the polygon has no tip of that name.
-        """
-        return self.tip_vector(name)
-
-
 def draw_velocity_polygon(asm: Assembly, scale: float | None = None, *,
-                          pole: tuple[float, float] = (0.0, 0.0)) -> VelocityPolygon:
+                          pole: tuple[float, float] = (0.0, 0.0)) -> Polygon:
     """Draw the velocity polygon of ``asm`` by relative velocities, from the input outward.
 
     Parameters
@@ -93,7 +59,7 @@ def draw_velocity_polygon(asm: Assembly, scale: float | None = None, *,
 
     Returns
     -------
-    VelocityPolygon
+    Polygon
         The pole, the tips of every point (and coincident point on a slot), ω of
         every link it can read, and the steps drawn.
 
@@ -124,28 +90,25 @@ def draw_velocity_polygon(asm: Assembly, scale: float | None = None, *,
     ...                Link(4, (("O4", (0, 0)), ("B", (3, 0))))),
     ...               Drive(2, math.pi / 2, omega=1.0), branches={"B": "left"})
     >>> vp = draw_velocity_polygon(assemble(m), scale=1.0)
-    >>> tuple(round(v, 12) + 0.0 for v in vp.velocity("B"))
+    >>> tuple(round(v, 12) + 0.0 for v in vp.vector("B"))
     (-3.0, 0.0)
-    >>> round(vp.omegas[3], 12) + 0.0, round(vp.omegas[4], 12) + 0.0
+    >>> round(vp.rates[3], 12) + 0.0, round(vp.rates[4], 12) + 0.0
     (0.0, 1.0)
     """
     if scale is None:
         speed = asm.mechanism.input_speed
-        scale = 1.0 if speed == 0.0 else nice_scale(asm.size / (2.0 * speed))
+        scale = 1.0 if speed == 0.0 else nice(asm.size / (2.0 * speed), up=False)
     if not (isinstance(scale, (int, float)) and math.isfinite(scale) and scale > 0.0):
         raise TarsimError(f"the velocity scale must be a positive number, got {scale}")
     return _Polygon(asm, float(scale), pole).run()
 
 
 class _Polygon(PolygonWalk):
-    prefix, pole_name, panel, symbol, noun = "vp", "o_v", Panel.VELOCITY, "V", "velocity"
+    kind = VELOCITY
 
-    def run(self) -> VelocityPolygon:
+    def run(self) -> Polygon:
         self.walk()
-        omegas = self.draw_results()
-        tips, aliases = self.tips()
-        return VelocityPolygon(self.pole_ref, self.scale, tips, omegas, self.steps,
-                               self.space_steps, self.c, aliases)
+        return self.polygon(self.draw_results())
 
     def say(self, v: float) -> Quantity:
         return self.m.units.speed_said(v)
@@ -277,7 +240,7 @@ def wants_polygon(work) -> bool:
         (A.Relative, A.AngularAcceleration, A.Acceleration, A.Coriolis)))
 
 
-def drawn_velocity_polygon(work) -> VelocityPolygon:
+def drawn_velocity_polygon(work) -> Polygon:
     """The position's velocity polygon, drawn once."""
     return work.shared("velocity polygon", lambda: draw_velocity_polygon(work.assembly))
 
@@ -287,7 +250,7 @@ def answer(work, ask) -> Answer:
     vp = drawn_velocity_polygon(work)
     m, c = work.mechanism, work.assembly.construction
     if isinstance(ask, A.AngularVelocity):
-        w = vp.omegas.get(ask.link)
+        w = vp.rates.get(ask.link)
         if w is None:
             raise TarsimError(f"{ask.name} could not be read off the polygon")
         return Answer(ask, {"value": w}, vp.worst(), "velocity polygon",
@@ -300,6 +263,6 @@ def answer(work, ask) -> Answer:
                       refs=(ref,), arrows=tuple(vp.steps), figures=(WORKED,),
                       panel=Panel.VELOCITY)
     tip = vp.tip(ask.point)
-    return Answer(ask, vector_value(*vp.velocity(ask.point)), c[tip].conditioning,
+    return Answer(ask, vector_value(*vp.vector(ask.point)), c[tip].conditioning,
                   "velocity polygon", refs=(tip,), arrows=tuple(vp.steps), figures=(WORKED,),
                   panel=Panel.VELOCITY)

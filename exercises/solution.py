@@ -15,15 +15,14 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from ..constructions import asks as A
-from ..constructions.acceleration_polygon import AccelerationPolygon
 from ..constructions.assembly import Assembly
 from ..constructions.checks import Answer, Quantity
 from ..constructions.errors import TarsimError
 from ..constructions.methods import Work, answer_all
+from ..constructions.polygon_walk import Polygon
 from ..constructions.record import Panel
 from ..constructions.reference.solver import Kinematics
 from ..constructions.registry import METHODS
-from ..constructions.velocity_polygon import VelocityPolygon
 
 from .exercise_file import Exercise, Position
 
@@ -52,12 +51,12 @@ class Solution:
         return self.work.kinematics
 
     @property
-    def velocity_polygon(self) -> VelocityPolygon | None:
+    def velocity_polygon(self) -> Polygon | None:
         """The velocity polygon, if the solution drew one."""
         return self.work.made("velocity polygon")
 
     @property
-    def acceleration_polygon(self) -> AccelerationPolygon | None:
+    def acceleration_polygon(self) -> Polygon | None:
         """The acceleration polygon, if the solution drew one."""
         return self.work.made("acceleration polygon")
 

@@ -24,7 +24,7 @@ import re
 from collections.abc import Callable
 from dataclasses import dataclass, replace
 
-from ..constructions.asks import Acceleration, Velocity
+from ..constructions.asks import SYMBOLS, Acceleration, Velocity
 from ..constructions.reference import solver
 from ..constructions.reference.limits import bisect_zero
 from ..constructions.assembly import assemble
@@ -63,7 +63,7 @@ class Output:
     def symbol(self, key: str) -> str:
         """The column's symbol, ``X_Y`` for a subscript: "V_B", "x_B", "ω_4"."""
         if self.kind == "link":
-            return {"theta": "θ", "omega": "ω", "alpha": "α"}[key] + f"_{self.link}"
+            return SYMBOLS[key] + f"_{self.link}"
         head = {"v": "V", "vx": "V", "vy": "V", "a": "A", "ax": "A", "ay": "A"}.get(key, key)
         return f"{head}_{self.point}" + {"vx": ",x", "vy": ",y", "ax": ",x", "ay": ",y"}.get(key, "")
 

@@ -19,6 +19,8 @@ import re
 from collections.abc import Sequence
 from dataclasses import dataclass
 
+from ..constructions.scales import nice
+
 from .figure import Circle, Figure, Path, Text, text_width
 
 __all__ = ["Series", "PlotMark", "nice_ticks", "tick_text", "rich_text", "draw_line_plot",
@@ -84,9 +86,7 @@ def nice_ticks(lo: float, hi: float, count: int = 6) -> list[float]:
     if hi - lo <= 1e-12 * max(abs(lo), abs(hi), 1e-300):
         pad = abs(lo) * 0.2 if lo else 1.0
         lo, hi = lo - pad, hi + pad
-    raw = (hi - lo) / max(count, 1)
-    k = math.floor(math.log10(raw))
-    step = next(b * 10.0 ** k for b in (1.0, 2.0, 5.0, 10.0) if b * 10.0 ** k >= raw * (1 - 1e-9))
+    step = nice((hi - lo) / max(count, 1))
     first, last = math.floor(lo / step + 1e-9), math.ceil(hi / step - 1e-9)
     return [float(f"{i * step:.12g}") + 0.0 for i in range(first, last + 1)]
 

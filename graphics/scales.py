@@ -6,9 +6,10 @@ millimetres, so on a PDF printed at 100 % it measures true with a ruler.
 
 from __future__ import annotations
 
-import math
 import re
 from collections.abc import Sequence
+
+from ..constructions.scales import nice
 
 from .figure import Figure, Path, Text, text_width
 
@@ -31,13 +32,7 @@ def nice_per_cm(extent: float, room_mm: float) -> float:
     """
     if extent <= 0 or room_mm <= 0:
         raise ValueError("a scale needs a positive extent and room")
-    need = extent * 10.0 / room_mm
-    k = math.floor(math.log10(need))
-    for base in (1.0, 2.0, 5.0, 10.0):
-        value = base * 10.0 ** k
-        if value >= need * (1 - 1e-12):
-            return float(f"{value:.12g}")
-    return float(f"{10.0 ** (k + 1):.12g}")
+    return nice(extent * 10.0 / room_mm)
 
 
 def number_text(value: float) -> str:

@@ -21,13 +21,14 @@ from hypothesis import strategies as st
 
 from tarsim.constructions.reference import solver
 from tarsim.constructions import geometry as g
-from tarsim.constructions.acceleration_polygon import AccelerationPolygon, draw_acceleration_polygon
+from tarsim.constructions.acceleration_polygon import draw_acceleration_polygon
+from tarsim.constructions.polygon_walk import VELOCITY, Polygon
 from tarsim.constructions.checks import tolerance
 from tarsim.constructions.assembly import assemble
 from tarsim.constructions.errors import AssemblyError, TarsimError
 from tarsim.constructions.model import Drive
 from tarsim.constructions.record import Panel, Role, replay
-from tarsim.constructions.velocity_polygon import VelocityPolygon, draw_velocity_polygon
+from tarsim.constructions.velocity_polygon import draw_velocity_polygon
 from tarsim.exercises.mechanism_file import load_mechanism
 from tarsim.constructions.narration import narrate
 from tests.common import (coupler_four_bar, crank_shaper, four_bar, inverted_slider_crank,
@@ -63,7 +64,7 @@ MECHANISMS = {
 }
 
 
-def polygons(mech, **kw) -> tuple[AccelerationPolygon, VelocityPolygon, object]:
+def polygons(mech, **kw) -> tuple[Polygon, Polygon, object]:
     asm = assemble(mech)
     vp = draw_velocity_polygon(asm)
     return draw_acceleration_polygon(asm, vp, **kw), vp, asm
@@ -98,11 +99,11 @@ def alpha_scale(mech) -> float:
 def errors(mech, ap, kin) -> tuple[float, float, float]:
     """The worst relative errors of the tips (and aliases), the α and the Coriolis components."""
     a_in = input_accel(mech)
-    tips = max(math.dist(ap.acceleration(k), reference(kin, mech, k))
+    tips = max(math.dist(ap.vector(k), reference(kin, mech, k))
                / max(math.hypot(*reference(kin, mech, k)), a_in)
                for k in list(ap.tips) + list(ap.aliases))
     alphas = max(abs(a - kin.alphas[c]) / max(abs(kin.alphas[c]), alpha_scale(mech))
-                 for c, a in ap.alphas.items())
+                 for c, a in ap.rates.items())
     cors = [math.dist(ap.coriolis_of(s.point), rate.coriolis)
             / max(math.hypot(*rate.coriolis), a_in)
             for s, rate in zip(mech.slides, kin.slide_rates) if s.guide_link != 1]
@@ -142,7 +143,7 @@ def test_every_tip_alpha_and_coriolis_matches_the_analytic_solver(name, theta):
     assert cors <= REL
     # Every moving link has its α, every point and every coincident point a tip, and
     # every slot on a moving link its Coriolis component.
-    assert set(ap.alphas) == set(kin.alphas) - {1}
+    assert set(ap.rates) == set(kin.alphas) - {1}
     assert set(mech.point_names) <= set(ap.tips)
     slots = {s.point: s for s in mech.slides if s.guide_link != 1}
     assert set(ap.coriolis) == set(slots)
@@ -196,11 +197,11 @@ def test_crank_shaper_seed_003_at_t_2_34():
     ux, uy, r3 = lever_unit(asm)
     assert math.atan2(uy, ux) == pytest.approx(1.23854, abs=0.5e-5)
     assert r3 * 1e3 == pytest.approx(396.483, abs=0.5e-3)
-    assert vp.omegas[4] == pytest.approx(0.19212, abs=0.5e-5)
-    assert vp.velocity("B")[0] * 1e3 == pytest.approx(-189.192, abs=0.5e-3)
-    assert ap.alphas[4] == pytest.approx(0.56939, abs=0.5e-5)
-    assert ap.alphas[3] == ap.alphas[4] and ap.alphas[5] == 0.0 and ap.alphas[2] == 0.0
-    bx, by = ap.acceleration("B")
+    assert vp.rates[4] == pytest.approx(0.19212, abs=0.5e-5)
+    assert vp.vector("B")[0] * 1e3 == pytest.approx(-189.192, abs=0.5e-3)
+    assert ap.rates[4] == pytest.approx(0.56939, abs=0.5e-5)
+    assert ap.rates[3] == ap.rates[4] and ap.rates[5] == 0.0 and ap.rates[2] == 0.0
+    bx, by = ap.vector("B")
     assert bx * 1e3 == pytest.approx(-535.635, abs=0.5e-3)
     assert by == pytest.approx(0.0, abs=1e-15)       # the ram's guide is horizontal
     assert math.hypot(*ap.coriolis_of("A")) * 1e3 == pytest.approx(62.665, abs=0.5e-3)
@@ -227,10 +228,10 @@ def test_crank_shaper_seed_003_at_the_start_position():
     ux, uy, r3 = lever_unit(asm)
     assert math.atan2(uy, ux) == pytest.approx(1.57080, abs=0.5e-5)
     assert r3 * 1e3 == pytest.approx(680.0, abs=0.5e-3)
-    assert vp.omegas[4] == pytest.approx(-0.26471, abs=0.5e-5)
-    assert vp.velocity("B")[0] * 1e3 == pytest.approx(232.941, abs=0.5e-3)
-    assert ap.alphas[4] == pytest.approx(0.0, abs=0.5e-5)
-    assert ap.acceleration("B")[0] * 1e3 == pytest.approx(0.0, abs=0.5e-3)
+    assert vp.rates[4] == pytest.approx(-0.26471, abs=0.5e-5)
+    assert vp.vector("B")[0] * 1e3 == pytest.approx(232.941, abs=0.5e-3)
+    assert ap.rates[4] == pytest.approx(0.0, abs=0.5e-5)
+    assert ap.vector("B")[0] * 1e3 == pytest.approx(0.0, abs=0.5e-3)
     assert dot(sliding(ap, asm, "A2", "A4"), (ux, uy)) * 1e3 == pytest.approx(-132.353,
                                                                               abs=0.5e-3)
     assert dot(sliding(ap, asm, "B5", "B4"), (ux, uy)) * 1e3 == pytest.approx(61.661, abs=0.5e-3)
@@ -258,13 +259,13 @@ def test_coriolis_vector_vanishes(where, omega2):
     for p in ("A", "B"):
         assert math.hypot(*ap.coriolis_of(p)) <= REL * a_in
     if where in LIMITS:
-        assert abs(vp.omegas[4]) <= REL * abs(omega2)
+        assert abs(vp.rates[4]) <= REL * abs(omega2)
         # seed 003 §10: the lever's extremes are θ4 = 1.20253 and 1.93906 rad.
         ux, uy, _ = lever_unit(asm)
         assert math.atan2(uy, ux) == pytest.approx(
             1.20253 if where == "right limit" else 1.93906, abs=0.5e-5)
     else:
-        va, va4 = vp.velocity("A"), vp.velocity("A4")
+        va, va4 = vp.vector("A"), vp.vector("A4")
         assert math.dist(va, va4) <= REL * mech.input_speed
     # The rest of the polygon is still right there.
     tips, alphas, cors = errors(mech, ap, solver.solve(mech))
@@ -355,7 +356,7 @@ def test_near_dead_point_agrees_within_its_conditioning(off):
     tips, alphas, _ = errors(mech, ap, solver.solve(mech))
     assert tips <= tol and alphas <= tol
     # α grows like 1/off here (≈ 3e5 rad/s² at 1e-4): the check is not vacuous.
-    assert abs(ap.alphas[3]) > 1.0 / off
+    assert abs(ap.rates[3]) > 1.0 / off
 
 
 def test_dead_point_is_refused_in_one_line():
@@ -380,7 +381,7 @@ def test_the_acceleration_polygon_checks_its_own_crossing():
                     ("vp:tip:B", (-0.1, 0.2))):
         c.give(ref, g.Point(*xy), label=ref, panel=Panel.VELOCITY)
     tips = {"O2": "vp:o_v", "O4": "vp:o_v", "A": "vp:tip:A", "B": "vp:tip:B"}
-    vp = VelocityPolygon("vp:o_v", 1.0, tips, {2: 1.0, 3: 0.5, 4: 0.25}, [], construction=c)
+    vp = Polygon(VELOCITY, "vp:o_v", 1.0, tips, {2: 1.0, 3: 0.5, 4: 0.25}, [], construction=c)
     with pytest.raises(AssemblyError) as e:
         draw_acceleration_polygon(asm, vp)
     msg = str(e.value)
@@ -395,10 +396,10 @@ def test_input_alpha_defaults_to_zero_and_says_so(given, text):
     ap, _, asm = polygons(mech)
     said = sentences(ap, asm)
     assert sum(text in s for s in said) == 1
-    assert ap.alphas[2] == 0.0
+    assert ap.rates[2] == 0.0
     # Aᵗ_A is not drawn; a′ is the end of Aⁿ_A = ω2²·O2A toward O2.
     assert "Aᵗ_A" not in ap.components
-    ax, ay = ap.acceleration("A")
+    ax, ay = ap.vector("A")
     assert (ax, ay) == pytest.approx((-4.0 * 0.1 * math.cos(1.0), -4.0 * 0.1 * math.sin(1.0)),
                                      rel=1e-14)
 
@@ -436,7 +437,7 @@ def test_tips_are_primed_and_components_are_labelled():
     c = asm.construction
     assert {k: c[ap.tips[k]].label for k in ("A", "A4", "B", "B4")} == {
         "A": "a2′", "A4": "a4′", "B": "b5′", "B4": "b4′"}
-    assert ap.acceleration("A2") == ap.acceleration("A3") == ap.acceleration("A")
+    assert ap.vector("A2") == ap.vector("A3") == ap.vector("A")
     labels = set(ap.components)
     assert {"Aⁿ_A2", "Aⁿ_A4", "Aᵗ_A4"} <= labels
     assert {"−Aᶜ_A2/A4", "Aᶜ_B5/B4"} <= labels     # A4 = A2 − Aᶜ − Aˢ; B5 = B4 + Aᶜ + Aˢ
@@ -526,8 +527,8 @@ def test_scale_is_chosen_nice_and_an_explicit_one_is_kept():
     other, _, _ = polygons(mech, scale=0.001, pole=(3.0, -2.0))
     assert other.scale == 0.001
     for k in ap.tips:
-        assert other.acceleration(k) == pytest.approx(ap.acceleration(k), rel=1e-12, abs=1e-12)
-    assert other.alphas == pytest.approx(ap.alphas, rel=1e-12)
+        assert other.vector(k) == pytest.approx(ap.vector(k), rel=1e-12, abs=1e-12)
+    assert other.rates == pytest.approx(ap.rates, rel=1e-12)
 
 
 @pytest.mark.parametrize("bad", [0.0, -1.0, math.inf, math.nan])
@@ -550,7 +551,7 @@ def test_polygons_on_other_or_used_constructions_are_refused():
 def test_unknown_names_are_refused_with_what_there_is():
     ap, _, _ = polygons(crank_shaper(SEED_ANGLE))
     with pytest.raises(TarsimError, match="no tip for Z"):
-        ap.acceleration("Z")
+        ap.vector("Z")
     with pytest.raises(TarsimError,
                        match="no Coriolis component at C; the polygon has one at A, B"):
         ap.coriolis_of("C")
@@ -561,7 +562,7 @@ def test_unknown_names_are_refused_with_what_there_is():
 
 def test_input_at_rest_gives_a_polygon_at_the_pole():
     ap, _, _ = polygons(four_bar(1.0, omega2=0.0, alpha2=0.0))
-    assert ap.acceleration("B") == (0.0, 0.0) and ap.alphas[4] == 0.0
+    assert ap.vector("B") == (0.0, 0.0) and ap.rates[4] == 0.0
 
 
 # ----- property: random four-bars away from toggle ------------------------------------

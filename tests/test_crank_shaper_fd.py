@@ -156,22 +156,22 @@ def test_the_steps_sit_where_the_error_estimate_says():
 # ----- the polygons against the reference -----------------------------------------------
 def test_velocity_polygon_matches_the_finite_differences(fd, drawn):
     asm, vp, _ = drawn
-    assert vp.omegas[4] == pytest.approx(fd["theta4_dot"], rel=FIRST)
-    assert vp.omegas[3] == vp.omegas[4]
-    vx, vy = vp.velocity("B")
+    assert vp.rates[4] == pytest.approx(fd["theta4_dot"], rel=FIRST)
+    assert vp.rates[3] == vp.rates[4]
+    vx, vy = vp.vector("B")
     assert vx * 1e3 == pytest.approx(fd["p_dot"], rel=FIRST)
     assert vy == pytest.approx(0.0, abs=1e-15)
     # The sliding velocities: V_A2/A4 = ṙ3 u and V_B5/B4 = ṙ4 u.
     u = (math.cos(fd["theta4"]), math.sin(fd["theta4"]))
     for a, b, key in (("A", "A4", "r3_dot"), ("B", "B4", "r4_dot")):
-        (px, py), (qx, qy) = vp.velocity(a), vp.velocity(b)
+        (px, py), (qx, qy) = vp.vector(a), vp.vector(b)
         assert ((px - qx) * u[0] + (py - qy) * u[1]) * 1e3 == pytest.approx(fd[key], rel=FIRST)
 
 
 def test_acceleration_polygon_matches_the_finite_differences(fd, drawn):
     asm, _, ap = drawn
-    assert ap.alphas[4] == pytest.approx(fd["theta4_ddot"], rel=SECOND)
-    bx, by = ap.acceleration("B")
+    assert ap.rates[4] == pytest.approx(fd["theta4_ddot"], rel=SECOND)
+    bx, by = ap.vector("B")
     assert bx * 1e3 == pytest.approx(fd["p_ddot"], rel=SECOND)
     assert by == pytest.approx(0.0, abs=1e-15)
     # The Coriolis components, as vectors (direction and sense included).
@@ -191,5 +191,5 @@ def test_acceleration_polygon_matches_the_finite_differences(fd, drawn):
     r3, w4, a4 = fd["r3"], fd["theta4_dot"], fd["theta4_ddot"]
     ux, uy = u
     want = (-r3 * w4 ** 2 * ux - a4 * r3 * uy, -r3 * w4 ** 2 * uy + a4 * r3 * ux)
-    got = tuple(v * 1e3 for v in ap.acceleration("A4"))
+    got = tuple(v * 1e3 for v in ap.vector("A4"))
     assert math.dist(got, want) <= SECOND * math.hypot(*want)

@@ -224,7 +224,7 @@ def test_the_velocity_scale_is_nice_and_a_ruler_confirms_it_on_v_b():
     n = stated_per_cm(fig, "Velocity", "mm/s")
     assert is_nice(n)
     # seed 003 §2 at t = 2.34 s: the ram moves at ṗ = −189.192 mm/s (printed to 1e-3).
-    vb = vp.velocity("B")
+    vb = vp.vector("B")
     assert vb[0] * 1000 == pytest.approx(-189.192, abs=5e-4) and vb[1] == pytest.approx(0.0)
     length = 10.0 * 189.1924275387919 / n          # mm on paper: |V| / N cm
     ox, oy = pole_on_paper(fig)

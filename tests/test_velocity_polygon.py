@@ -20,7 +20,9 @@ from tarsim.constructions.assembly import assemble
 from tarsim.constructions.errors import AssemblyError, TarsimError
 from tarsim.constructions.model import Drive
 from tarsim.constructions.record import Panel, Role, replay
-from tarsim.constructions.velocity_polygon import VelocityPolygon, draw_velocity_polygon, nice_scale
+from tarsim.constructions.scales import nice
+from tarsim.constructions.polygon_walk import Polygon
+from tarsim.constructions.velocity_polygon import draw_velocity_polygon
 from tarsim.exercises.catalog import bundled
 from tarsim.exercises.mechanism_file import load_mechanism
 from tarsim.constructions.narration import narrate
@@ -60,7 +62,7 @@ def reference(kin, mech, key):
     return solver.point_velocity(kin, mech, int(link), point)
 
 
-def polygon(mech, **kw) -> tuple[VelocityPolygon, object]:
+def polygon(mech, **kw) -> tuple[Polygon, object]:
     asm = assemble(mech)
     return draw_velocity_polygon(asm, **kw), asm
 
@@ -68,10 +70,10 @@ def polygon(mech, **kw) -> tuple[VelocityPolygon, object]:
 def worst_errors(mech, vp):
     kin = solver.solve(mech)
     v_in = mech.input_speed
-    tips = max(math.dist(vp.velocity(k), reference(kin, mech, k))
+    tips = max(math.dist(vp.vector(k), reference(kin, mech, k))
                / max(math.hypot(*reference(kin, mech, k)), v_in) for k in vp.tips)
     omegas = max(abs(w - kin.omegas[c]) / max(abs(kin.omegas[c]), abs(mech.drive.omega))
-                 for c, w in vp.omegas.items())
+                 for c, w in vp.rates.items())
     return tips, omegas, kin
 
 
@@ -94,7 +96,7 @@ def test_every_tip_and_omega_matches_the_analytic_solver(name, theta):
     assert tips <= REL
     assert omegas <= REL
     # Every moving link's ω is read off, and every point and coincident point has a tip.
-    assert set(vp.omegas) == set(kin.omegas) - {1}
+    assert set(vp.rates) == set(kin.omegas) - {1}
     assert set(mech.point_names) <= set(vp.tips)
 
 
@@ -104,13 +106,13 @@ def test_coincident_points_on_a_slot_are_both_drawn(name):
     assert "A4" in vp.tips and vp.tips["A4"] != vp.tips["A"]
     assert asm.construction[vp.tips["A4"]].label == "a4"
     assert asm.construction[vp.tips["A"]].label == "a2"   # the notes' A2 = A3
-    assert vp.velocity("A2") == vp.velocity("A3") == vp.velocity("A")
+    assert vp.vector("A2") == vp.vector("A3") == vp.vector("A")
 
 
 def test_frame_points_are_at_the_pole():
     vp, _ = polygon(four_bar(1.0, omega2=3.0))
     assert vp.tips["O2"] == vp.tips["O4"] == vp.pole
-    assert vp.velocity("O4") == (0.0, 0.0)
+    assert vp.vector("O4") == (0.0, 0.0)
 
 
 # ----- golden numbers -----------------------------------------------------------------
@@ -119,11 +121,11 @@ def test_crank_shaper_seed_003():
     # MATLAB run): ω4 = +0.19212 rad/s and V_B5 = ṗ = −189.192 mm/s (the ram moves left),
     # printed to 5 decimals and to 0.001 mm/s: tolerance half a unit in the last digit.
     vp, _ = polygon(crank_shaper(math.pi / 2 - 2.34, omega2=-1.0))
-    assert vp.omegas[4] == pytest.approx(0.19212, abs=0.5e-5)
-    vx, vy = vp.velocity("B")
+    assert vp.rates[4] == pytest.approx(0.19212, abs=0.5e-5)
+    vx, vy = vp.vector("B")
     assert vx * 1e3 == pytest.approx(-189.192, abs=0.5e-3)
     assert vy == pytest.approx(0.0, abs=1e-15)
-    assert vp.omegas[3] == vp.omegas[4] and vp.omegas[5] == 0.0
+    assert vp.rates[3] == vp.rates[4] and vp.rates[5] == 0.0
 
 
 def test_four_bar_peers_benchmark():
@@ -131,9 +133,9 @@ def test_four_bar_peers_benchmark():
     # ω3 = −2.578464796446, ω4 = 2.915957761501 (12 decimals; the construction is
     # good to a few eps, so 1e-11 relative is ample and still checks every digit).
     vp, _ = polygon(four_bar(math.radians(60), omega2=10.0))
-    assert vp.omegas[3] == pytest.approx(-2.578464796446, rel=1e-11)
-    assert vp.omegas[4] == pytest.approx(2.915957761501, rel=1e-11)
-    assert vp.omegas[2] == pytest.approx(10.0, rel=1e-14)
+    assert vp.rates[3] == pytest.approx(-2.578464796446, rel=1e-11)
+    assert vp.rates[4] == pytest.approx(2.915957761501, rel=1e-11)
+    assert vp.rates[2] == pytest.approx(10.0, rel=1e-14)
 
 
 # ----- the record ---------------------------------------------------------------------
@@ -197,7 +199,7 @@ def test_coupler_image_is_similar_and_same_handed(theta):
     assert ratio[1] == pytest.approx(ratio[0], rel=1e-12)
     assert ratio[2] == pytest.approx(ratio[0], rel=1e-12)
     # The image side is |ω3| times the link side, at the polygon's scale.
-    assert ratio[0] == pytest.approx(abs(vp.omegas[3]) * vp.scale, rel=1e-12)
+    assert ratio[0] == pytest.approx(abs(vp.rates[3]) * vp.scale, rel=1e-12)
 
     def turn(q):
         (ax, ay), (bx, by), (cx, cy) = q["A"], q["B"], q["C"]
@@ -222,8 +224,8 @@ def test_scale_is_chosen_nice_and_an_explicit_one_is_kept():
     other, _ = polygon(mech, scale=0.01, pole=(3.0, -2.0))
     assert other.scale == 0.01
     for k in vp.tips:
-        assert other.velocity(k) == pytest.approx(vp.velocity(k), rel=1e-12, abs=1e-14)
-    assert nice_scale(0.037) == 0.02 and nice_scale(5.0) == 5.0
+        assert other.vector(k) == pytest.approx(vp.vector(k), rel=1e-12, abs=1e-14)
+    assert nice(0.037, up=False) == 0.02 and nice(5.0, up=False) == 5.0
 
 
 @pytest.mark.parametrize("bad", [0.0, -1.0, math.inf, math.nan])
@@ -242,7 +244,7 @@ def test_a_second_polygon_on_one_construction_is_refused():
 def test_unknown_tip_names_the_tips():
     vp, _ = polygon(four_bar(1.0, omega2=1.0))
     with pytest.raises(TarsimError, match="no tip for Z"):
-        vp.velocity("Z")
+        vp.vector("Z")
 
 
 # ----- degenerate and unsupported -----------------------------------------------------
@@ -278,4 +280,4 @@ def test_unsupported_joints_say_so_in_one_line(file):
 
 def test_input_at_rest_gives_a_polygon_at_the_pole():
     vp, _ = polygon(four_bar(1.0, omega2=0.0))
-    assert vp.velocity("B") == (0.0, 0.0) and vp.omegas[4] == 0.0
+    assert vp.vector("B") == (0.0, 0.0) and vp.rates[4] == 0.0
