@@ -10,13 +10,17 @@ joint from two things already drawn:
   the pivot through the block, or the tangent from the block to the offset circle;
 * a point of a link already drawn: two arcs from two of its points.
 
-When nothing more can be found this way the mechanism needs a triad, and tarsim
+Each of these is a dyad rule, registered with :func:`dyad_rule` in
+:data:`DYAD_RULES`: a new joint plugs in as one more rule. The rules are tried in
+their order, the first that locates something wins, and the walk starts again.
+When no rule can locate anything more the mechanism needs a triad, and tarsim
 says so.
 """
 
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass, field
 
 from . import geometry as g
@@ -25,7 +29,29 @@ from .model import Arc, Mechanism, Slide, SlideKind
 from .narration import Phrase, Word, narrate, phrase
 from .record import VERBS, Construction, Kind, Ref, Role
 
-__all__ = ["Assembly", "assemble", "point_ref"]
+__all__ = ["Assembly", "assemble", "point_ref", "DYAD_RULES", "dyad_rule"]
+
+
+@dataclass(frozen=True)
+class DyadRule:
+    """One way to locate a joint from what is drawn: ``locate`` draws it and returns True,
+    or returns False; ``order`` is its place among the rules (lower is tried first)."""
+
+    name: str
+    order: int
+    locate: Callable[[_Assembler], bool]
+
+
+DYAD_RULES: dict[str, DyadRule] = {}
+"""Every dyad rule of position by compass, by name."""
+
+
+def dyad_rule(name: str, order: int):
+    """Register a method of the assembler as the dyad rule ``name``, tried at ``order``."""
+    def register(locate: Callable[[_Assembler], bool]) -> Callable[[_Assembler], bool]:
+        DYAD_RULES[name] = DyadRule(name, order, locate)
+        return locate
+    return register
 
 
 def _arc_why(a: Arc) -> Phrase:
@@ -171,11 +197,10 @@ class _Assembler:
     def run(self) -> Assembly:
         self.mark_frame()
         self.lay_off_input()
-        rules = (self.rigid_point, self.roll_wheel, self.slot_through_block, self.slot_of_a_block,
-                 self.two_guides, self.arc_and_guide, self.two_arcs)
+        rules = sorted(DYAD_RULES.values(), key=lambda r: r.order)
         wanted = [n for n in self.m.point_names]
         while any(n not in self.known for n in wanted):
-            if not any(rule() for rule in rules):
+            if not any(rule.locate(self) for rule in rules):
                 missing = ", ".join(n for n in wanted if n not in self.known)
                 raise AssemblyError(
                     f"no dyad locates {missing}: this mechanism needs a triad, which tarsim "
@@ -252,6 +277,7 @@ class _Assembler:
                                         self.known[tip], label=f"link {d.link}", kind=Kind.GUIDE)
 
     # ----- rules: each locates something and returns True, or returns False -----
+    @dyad_rule("a point of a drawn link", 0)
     def rigid_point(self) -> bool:
         for k in self.m.links:
             if k.number == 1 or not self.posed(k.number):
@@ -323,6 +349,7 @@ class _Assembler:
                                                            why=_arc_why(a))))
         return sorted(out, key=lambda c: c[:3])
 
+    @dyad_rule("two arcs (RRR)", 6)
     def two_arcs(self) -> bool:
         for name in self.m.point_names:
             if name in self.known or self.slides_at(name):
@@ -361,6 +388,7 @@ class _Assembler:
             f"{name} about {y} {self.at()}: {why}", link=i, joint=name,
             angle_deg=math.degrees(self.theta))
 
+    @dyad_rule("an arc and a guide (RRP)", 5)
     def arc_and_guide(self) -> bool:
         for name in self.m.point_names:
             if name in self.known:
@@ -390,6 +418,7 @@ class _Assembler:
             return True
         return False
 
+    @dyad_rule("two guides (RPP)", 4)
     def two_guides(self) -> bool:
         for name in self.m.point_names:
             if name in self.known:
@@ -409,6 +438,7 @@ class _Assembler:
             return True
         return False
 
+    @dyad_rule("a wheel rolling without slip", 1)
     def roll_wheel(self) -> bool:
         """Turn a wheel that rolls without slip through the distance rolled over its radius.
 
@@ -460,6 +490,7 @@ class _Assembler:
         phi = math.atan2(by - ay, bx - ax) - math.atan2(ly, lx)
         return phi, (ax, ay)
 
+    @dyad_rule("a slot swung through its block (RPR)", 2)
     def slot_through_block(self) -> bool:
         for i, s in enumerate(self.m.slides):
             if i in self.guides or s.point not in self.known or self.posed(s.guide_link):
@@ -472,6 +503,7 @@ class _Assembler:
             return True
         return False
 
+    @dyad_rule("the slot of a translating block", 3)
     def slot_of_a_block(self) -> bool:
         """Draw the slot of a translating block through its located pin, then the block.
 
