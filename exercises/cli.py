@@ -61,10 +61,9 @@ def _at_angle(mech: Mechanism, angle: float | None) -> Mechanism:
 
 
 def _exercise(source: str, angle: float | None):
-    from .catalog import resolve
-    from .exercise_file import load_exercise
+    from .catalog import load
 
-    ex = load_exercise(resolve(source), Path(source).stem if Path(source).suffix else source)
+    ex = load(source)
     if angle is None:
         return ex
     return replace(ex, mechanism=_at_angle(ex.mechanism, angle), positions=())
@@ -181,15 +180,15 @@ def solve(source, out_dir, angle, pdf):
     one beyond the tolerance its conditioning allows (the files are written all
     the same, so the disagreement can be seen); 1 for bad input.
     """
-    from .solution_files import overall_text, solve_all, write_solution
+    from .solution_files import overall_text, solve_worked
     from ..graphics.export import cairo_missing
 
     ex = _exercise(source, angle)
-    sols, overall, files = solve_all(ex)
+    worked = solve_worked(ex)
+    sols, overall = worked.positions, worked.overall
     reason = cairo_missing() if pdf else None
     out = Path(out_dir or f"{ex.id}-solution")
-    written = write_solution(files, out, pdf=pdf and reason is None)
-    failures = [q.name for q in overall.quantities.values() if not q.passed]
+    written = worked.write(out, pdf=pdf and reason is None)
     for name, q in overall.quantities.items():
         click.echo(f"{name:<10} {overall_text(name, q.value, ex.mechanism.units)}  "
                    f"rel. error {q.rel_error:.1e}  {'ok' if q.passed else 'FAILED'}  ({q.method})")
@@ -202,12 +201,11 @@ def solve(source, out_dir, angle, pdf):
                            f"{'ok' if qq.rel_error <= qq.tolerance else 'FAILED'}  ({qq.method})")
         for note in sol.notes:
             click.echo(f"note: {note}")
-        failures += [q.name for q in sol.failures]
     click.echo(f"wrote {len(written)} files to {out}/")
     if reason:
         click.echo(f"PDF skipped: {reason}", err=True)
-    if failures:
-        raise CheckMismatch(failures)
+    if worked.failures:
+        raise CheckMismatch([q.name for q in worked.failures])
 
 
 @cli.command()

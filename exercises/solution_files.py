@@ -17,7 +17,7 @@ from pathlib import Path
 
 from ..constructions.acceleration_polygon import drawn_acceleration_polygon
 from ..constructions.asks import symbol
-from ..constructions.checks import FigureSpec
+from ..constructions.checks import FigureSpec, Quantity
 from ..constructions.limit_positions import drawn_limits
 from ..constructions.narration import narrate
 from ..constructions.record import Kind, Panel, Slice, slice
@@ -31,10 +31,11 @@ from ..graphics.svg import to_svg
 from ..graphics.worked_page import compose_worked_page
 
 from .exercise_file import Exercise
-from .results_json import results_json
+from .results_json import results_document, results_json
 from .solution import Overall, Solution, notes_under, solve_overall, solve_positions
 
-__all__ = ["SolutionFigure", "overall_text", "solve_all", "solve_to_files", "write_solution"]
+__all__ = ["SolutionFigure", "WorkedSolution", "solve_worked", "overall_text", "solve_all",
+           "solve_to_files", "write_solution"]
 
 
 @dataclass
@@ -48,38 +49,112 @@ class SolutionFigure:
     """What the figure shows of the space diagram's construction, narrated in steps.md."""
     panels: tuple[tuple[str, Panel, Slice], ...] = ()
     """For a worked page: each polygon's heading, panel and slice, narrated in turn."""
+    owner: Solution | None = None
+    """The position the figure belongs to (None: the mechanism as a whole)."""
 
 
-def solve_to_files(ex: Exercise) -> tuple[list[Solution], dict[str, str]]:
-    """Solve ``ex`` and render every file, in memory: ``{file name: text}`` (see :func:`solve_all`)."""
-    sols, _, files = solve_all(ex)
-    return sols, files
+@dataclass
+class WorkedSolution:
+    """A solved exercise: its answers, its figures, its steps, and the files they make.
+
+    ``overall`` answers what is asked of the mechanism as a whole and
+    ``positions`` each position's; ``pages`` are the figures in order, the whole
+    mechanism's first.
+    """
+
+    exercise: Exercise
+    overall: Overall
+    positions: list[Solution]
+    pages: list[SolutionFigure]
+
+    @property
+    def results(self) -> dict:
+        """The results.json document: every quantity beside its analytic reference (SI)."""
+        return results_document(self.positions, self.exercise.id, self.overall.quantities)
+
+    @property
+    def figures(self) -> dict[str, Figure]:
+        """Each figure by its file stem (``centres``, ``V_B-radius-rotation``, ``worked``)."""
+        return {f.stem: f.figure for f in self.pages}
+
+    @property
+    def failures(self) -> list[Quantity]:
+        """The quantities whose construction disagrees with the analytic reference."""
+        return ([q for q in self.overall.quantities.values() if not q.passed]
+                + [q for sol in self.positions for q in sol.failures])
+
+    @property
+    def passed(self) -> bool:
+        """True when every constructed number agrees with the analytic one."""
+        return not self.failures
+
+    def steps(self, lang: str = "en") -> str:
+        """steps.md: the numbered steps of every figure, in ``lang``, then the results."""
+        ex, overall = self.exercise, self.overall
+        mine = [f for f in self.pages if f.owner is None]
+        parts = [_overall_markdown(ex, overall, mine, lang)] if overall.quantities else []
+        several = len(self.positions) > 1
+        for sol in self.positions:
+            figures = [f for f in self.pages if f.owner is sol]
+            parts.append(_steps_markdown(sol, figures, heading=several, lang=lang))
+        return _steps_title(ex) + "\n".join(parts)
+
+    def files(self) -> dict[str, str]:
+        """Every file as text, by name: each figure's SVG, solution.svg with all of them,
+        steps.md and results.json."""
+        files = {f"{f.stem}.svg": to_svg(f.figure) for f in self.pages}
+        if self.pages:
+            files["solution.svg"] = to_svg(stack_pages([f.figure for f in self.pages]))
+        files["steps.md"] = self.steps()
+        files["results.json"] = results_json(self.positions, self.exercise.id,
+                                             self.overall.quantities)
+        return files
+
+    def write(self, folder: str | Path, *, pdf: bool = True) -> list[Path]:
+        """Write every file into ``folder`` (made if missing), with a PDF of each figure when
+        ``pdf``; return the paths written.
+
+        Raises
+        ------
+        RenderError
+            If the folder cannot be made or written, or PDF is asked and libcairo2 is
+            missing (checked before anything is written).
+        """
+        return write_solution(self.files(), folder, pdf=pdf)
 
 
-def solve_all(ex: Exercise) -> tuple[list[Solution], Overall, dict[str, str]]:
-    """Solve ``ex`` as a whole and at each position, and render every file in memory.
+def solve_worked(ex: Exercise) -> WorkedSolution:
+    """Solve ``ex`` as a whole and at each position, and draw every figure (in memory).
 
     The whole-mechanism answers (DOF, Grashof, time ratio, stroke) come first,
     with the limit positions' figure; then each position's figures, their stems
     ending in the position's slug when there are several (``worked-t-2.34s``).
-    ``solution.svg`` holds every figure, one page under another; steps.md has a
-    part for the whole mechanism and one per position.
+
+    Raises
+    ------
+    TarsimError
+        If the mechanism cannot be assembled or a construction breaks down, saying
+        which and where.
     """
     overall = solve_overall(ex)
     sols = solve_positions(ex) if ex.position_asks else []
-    figures = _overall_figures(ex, overall)
-    parts = [_overall_markdown(ex, overall, figures)] if overall.quantities else []
+    pages = _overall_figures(ex, overall)
     for sol in sols:
         suffix = f"-{sol.position.slug}" if len(sols) > 1 else ""
-        mine = _figures(sol, suffix)
-        figures += mine
-        parts.append(_steps_markdown(sol, mine, heading=len(sols) > 1))
-    files = {f"{f.stem}.svg": to_svg(f.figure) for f in figures}
-    if figures:
-        files["solution.svg"] = to_svg(stack_pages([f.figure for f in figures]))
-    files["steps.md"] = _steps_title(ex) + "\n".join(parts)
-    files["results.json"] = results_json(sols, ex.id, overall.quantities)
-    return sols, overall, files
+        pages += _figures(sol, suffix)
+    return WorkedSolution(ex, overall, sols, pages)
+
+
+def solve_to_files(ex: Exercise) -> tuple[list[Solution], dict[str, str]]:
+    """Solve ``ex`` and render every file, in memory: ``{file name: text}``."""
+    worked = solve_worked(ex)
+    return worked.positions, worked.files()
+
+
+def solve_all(ex: Exercise) -> tuple[list[Solution], Overall, dict[str, str]]:
+    """Solve ``ex`` and render every file in memory (see :func:`solve_worked`)."""
+    worked = solve_worked(ex)
+    return worked.positions, worked.overall, worked.files()
 
 
 def write_solution(files: dict[str, str], out_dir: str | Path, *, pdf: bool = True) -> list[Path]:
@@ -122,7 +197,8 @@ def _specs(answers) -> list[tuple[FigureSpec, list]]:
 
 def _figures(sol: Solution, suffix: str = "") -> list[SolutionFigure]:
     out = [_figure(sol, spec, answers) for spec, answers in _specs(sol.answers)]
-    return [SolutionFigure(f.stem + suffix, f.heading, f.figure, f.shown, f.panels) for f in out]
+    return [SolutionFigure(f.stem + suffix, f.heading, f.figure, f.shown, f.panels, sol)
+            for f in out]
 
 
 def _figure(sol: Solution, spec: FigureSpec, answers) -> SolutionFigure:
@@ -217,14 +293,15 @@ def _time_ratio_words(m, lp) -> str:
             f"{math.degrees(lp.slow):.2f}/{math.degrees(lp.quick):.2f} = {lp.time_ratio:.4f}.")
 
 
-def _overall_markdown(ex: Exercise, overall: Overall, figures: list[SolutionFigure]) -> str:
+def _overall_markdown(ex: Exercise, overall: Overall, figures: list[SolutionFigure],
+                      lang: str = "en") -> str:
     """steps.md's part for the mechanism as a whole: the limit positions, then the answers."""
     lines = ["# The mechanism as a whole", ""]
     lp = drawn_limits(overall.work) if overall.work.has("limits") else None
     for f in figures if lp is not None else ():
         lines += [f"## {f.heading} (`{f.stem}.svg`)", ""]
         for number, step in f.shown.numbered():
-            lines.append(f"{number}. {narrate(step)}")
+            lines.append(f"{number}. {narrate(step, lang)}")
         lines += ["", _time_ratio_words(ex.mechanism, lp), ""]
     lines += ["## Results", "", "| quantity | answer | check | relative error | method |",
               "|---|---|---|---|---|"]
@@ -255,7 +332,8 @@ def _steps_title(ex: Exercise) -> str:
     return f"# {ex.mechanism.name}: worked solution\n\n"
 
 
-def _steps_markdown(sol: Solution, figures: list[SolutionFigure], *, heading: bool) -> str:
+def _steps_markdown(sol: Solution, figures: list[SolutionFigure], *, heading: bool,
+                    lang: str = "en") -> str:
     """One position's part of steps.md: its figures' numbered steps, then its results.
 
     ``heading`` puts the position's own heading first (several positions)."""
@@ -274,7 +352,7 @@ def _steps_markdown(sol: Solution, figures: list[SolutionFigure], *, heading: bo
         for title, panel, shown in parts:
             lines += [f"## {title} (`{f.stem}.svg`)", ""]
             for number, step in shown.numbered(panel):
-                lines.append(f"{number}. {narrate(step)}")
+                lines.append(f"{number}. {narrate(step, lang)}")
             lines.append("")
     for note in sol.notes:
         lines.append(f"> {note}")

@@ -8,6 +8,7 @@ measures. A :class:`View` maps world metres to paper for one panel.
 from __future__ import annotations
 
 import math
+import pathlib
 from dataclasses import dataclass, field
 
 __all__ = ["Style", "STYLES", "View", "Path", "Circle", "Text", "Figure", "FONT", "text_width",
@@ -193,6 +194,25 @@ class Figure:
     def add(self, item: Path | Circle | Text) -> None:
         """Append a primitive."""
         self.items.append(item)
+
+    def save(self, path) -> pathlib.Path:
+        """Write the figure to ``path``: .svg, .pdf or .png by its suffix (PDF and PNG need
+        libcairo2), all or nothing.
+
+        Raises
+        ------
+        RenderError
+            For an unknown suffix, a missing libcairo2, or a path that cannot be written.
+        """
+        from .export import write_figure     # export draws on this module
+
+        return write_figure(self, path)
+
+    def _repr_svg_(self) -> str:
+        """The figure as SVG, so that a notebook shows it."""
+        from .svg import to_svg              # svg draws on this module
+
+        return to_svg(self)
 
     def add_under(self, item: Path | Circle | Text) -> None:
         """Put a primitive beneath everything drawn so far: a tint that must hide no line."""

@@ -7,7 +7,7 @@ from pathlib import Path
 
 from ...constructions.errors import InputError
 
-__all__ = ["bundled", "resolve"]
+__all__ = ["bundled", "resolve", "load"]
 
 
 def bundled() -> dict[str, Path]:
@@ -37,3 +37,22 @@ def resolve(name: str) -> Path:
     close = difflib.get_close_matches(name, list(ids), n=1)
     hint = f"did you mean '{close[0]}'?" if close else f"bundled: {', '.join(ids)}"
     raise InputError(f"no file or bundled example called '{name}'; {hint}")
+
+
+def load(source: str | Path):
+    """Read the exercise ``source`` names: a TOML file's path, or a bundled id.
+
+    An exercise file is a mechanism file with an ``[ask]`` table (see the
+    README); without one it asks for every centre and each link's ω. Its id is
+    the file's stem, or the bundled id.
+
+    Raises
+    ------
+    InputError
+        If it is neither a file nor a bundled id, or the file is not a valid
+        exercise (the message names file:line).
+    """
+    from ..exercise_file import load_exercise
+
+    source = str(source)
+    return load_exercise(resolve(source), Path(source).stem if Path(source).suffix else source)

@@ -1,7 +1,50 @@
 """tarsim (ترسیم, "graphical construction"): the compass-and-ruler methods of planar
 mechanism kinematics, drawn as textbook figures and checked against an analytic solution.
 
+>>> import tarsim
+>>> solution = tarsim.solve(tarsim.load("four-bar"))
+>>> solution.passed, sorted(solution.figures)[:2]
+(True, ['V_B-components', 'V_B-parallel-line'])
+
 Installed, this file is the ``tarsim`` package itself; the repository keeps the
-three layers in its top-level folders, installed as ``tarsim.constructions``,
-``tarsim.graphics`` and ``tarsim.exercises`` (pyproject's ``package-dir``).
+three layers in its top-level folders, installed as ``tarsim.constructions``
+(the geometry kernel, the construction record, the methods and the analytic
+reference), ``tarsim.graphics`` (figures) and ``tarsim.exercises`` (files, the
+bundled catalog, the command line).
 """
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from tarsim.exercises.catalog import load as _load
+from tarsim.exercises.exercise_file import Exercise
+from tarsim.exercises.solution_files import WorkedSolution, solve_worked
+
+__all__ = ["load", "solve", "Exercise", "WorkedSolution"]
+
+
+def load(source: str | Path) -> Exercise:
+    """Read an exercise: a TOML file's path, or the id of a bundled one (``tarsim list``).
+
+    Raises
+    ------
+    tarsim.constructions.errors.InputError
+        If it cannot be read, naming file:line and what to fix.
+    """
+    return _load(source)
+
+
+def solve(exercise: Exercise) -> WorkedSolution:
+    """Solve an exercise by construction and check every number against the analytic solver.
+
+    The solution has ``.results`` (the results.json document), ``.figures``
+    (file stem → figure, each with ``.save(path)``, shown inline in a notebook),
+    ``.steps(lang="en")`` (steps.md), ``.passed`` and ``.write(folder)``.
+
+    Raises
+    ------
+    tarsim.constructions.errors.TarsimError
+        If the mechanism cannot be assembled or a construction breaks down.
+    """
+    return solve_worked(exercise)

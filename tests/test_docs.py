@@ -1,0 +1,48 @@
+"""The README teaches what the software does: its Python example runs, its commands exist.
+
+The README's Python API section is run as a doctest in a fresh folder, so a
+changed API, a changed number or a missing file shows here. Every command has
+``--help`` text with an example, and an example in the README.
+"""
+
+from __future__ import annotations
+
+import doctest
+import re
+from pathlib import Path
+
+import pytest
+from click.testing import CliRunner
+
+from tarsim.exercises.cli import cli
+
+README = (Path(__file__).resolve().parents[1] / "README.md").read_text(encoding="utf-8")
+
+
+def _section(heading: str) -> str:
+    start = README.index(f"\n## {heading}\n")
+    end = README.find("\n## ", start + 1)
+    return README[start:end if end >= 0 else None]
+
+
+def test_the_python_api_example_runs_as_written(tmp_path, monkeypatch):
+    blocks = re.findall(r"```pycon\n(.*?)```", _section("Python API"), re.S)
+    assert blocks, "the Python API section shows an interactive example"
+    monkeypatch.chdir(tmp_path)
+    parser = doctest.DocTestParser()
+    test = parser.get_doctest("\n".join(blocks), {}, "README Python API", "README.md", 0)
+    assert len(test.examples) >= 8
+    runner = doctest.DocTestRunner(optionflags=doctest.ELLIPSIS)
+    report = []
+    runner.run(test, out=report.append)
+    assert runner.failures == 0, "".join(report)
+    assert (tmp_path / "centres.svg").stat().st_size > 1000
+    assert (tmp_path / "four-bar-solution" / "results.json").exists()
+
+
+@pytest.mark.parametrize("command", sorted(cli.commands))
+def test_every_command_teaches_with_an_example(command):
+    result = CliRunner().invoke(cli, [command, "--help"])
+    assert result.exit_code == 0
+    assert "Example:" in result.output, f"tarsim {command} --help shows no example"
+    assert re.search(rf"^tarsim {command}\b", README, re.M), f"the README has no `tarsim {command}`"
