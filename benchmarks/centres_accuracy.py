@@ -48,15 +48,17 @@ def reference(mech) -> None:
 
 
 def part1() -> None:
+    """Print the centres of every bundled exercise beside the analytic ones, with run times."""
     print("Part 1: one position of each bundled exercise (medians of 30 runs, µs)")
-    print(f"{'exercise':<34}{'construction':>14}{'analytic':>12}{'ratio':>8}{'worst rel. error':>18}")
+    print(f"{'exercise':<34}{'construction':>14}{'analytic':>12}{'ratio':>8}"
+          f"{'worst rel. error':>18}")
     data = Path(__file__).resolve().parents[1] / "tests" / "data"
     joints = {f"{n} (tests)": data / f"{n}.toml" for n in
               ("roller-cam", "curved-slot", "curved-guide-slider-crank", "rolling-wheel")}
     for name, path in {**bundled(), **joints}.items():
         ex = load_exercise(path, name.split()[0])
-        t_c = median_time(lambda: solve_exercise(ex), 30)
-        t_a = median_time(lambda: reference(ex.mechanism), 30)
+        t_c = median_time(lambda ex=ex: solve_exercise(ex), 30)
+        t_a = median_time(lambda ex=ex: reference(ex.mechanism), 30)
         worst = max(q.rel_error for q in solve_exercise(ex).quantities.values())
         print(f"{name:<34}{t_c:>14.0f}{t_a:>12.0f}{t_c / t_a:>8.2f}{worst:>18.1e}")
     print("(the construction side also checks every number against its own analytic solve)")
@@ -80,6 +82,7 @@ def parallel_angle() -> float:
 
 
 def part2() -> None:
+    """Print the error near a centre at infinity, as the Kennedy lines turn parallel."""
     theta0 = parallel_angle()
     print(f"\nPart 2: I13 of the peers.md four-bar as crank and rocker turn parallel "
           f"(at θ2 = {math.degrees(theta0):.10f}°)")

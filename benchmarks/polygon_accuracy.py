@@ -42,6 +42,7 @@ EPS = sys.float_info.epsilon
 
 
 def from_file(name: str, alpha: float):
+    """A bundled mechanism, with its input's α set."""
     m = load_mechanism(DATA / f"{name}.toml")
     d = m.drive
     return lambda t: m.with_drive(Drive(d.link, t, d.omega or 1.0, alpha))
@@ -59,6 +60,7 @@ MECHANISMS = {
 
 
 def polygons(mech):
+    """Both polygons of ``mech``, drawn on one assembly."""
     asm = assemble(mech)
     vp = draw_velocity_polygon(asm)
     return asm, vp, draw_acceleration_polygon(asm, vp)
@@ -93,13 +95,14 @@ def worst_error(mech) -> float:
 
 
 def part1() -> None:
+    """Print each mechanism's worst polygon error and the time to draw both polygons."""
     print("Part 1: assembly and both polygons vs the analytic solve (medians of 30 runs, µs)")
     print(f"{'mechanism':<28}{'polygons':>10}{'analytic':>10}{'ratio':>8}"
           f"{'worst rel. error (12 positions)':>33}")
     for name, build in MECHANISMS.items():
         mech = build(1.0)
-        t_c = median_time(lambda: polygons(mech), 30)
-        t_a = median_time(lambda: solver.solve(mech), 30)
+        t_c = median_time(lambda mech=mech: polygons(mech), 30)
+        t_a = median_time(lambda mech=mech: solver.solve(mech), 30)
         worst = 0.0
         for deg in range(0, 360, 30):
             try:
@@ -115,10 +118,12 @@ def dead_point() -> float:
 
 
 def toggle(theta: float):
+    """The four-bar near its toggle, where the polygon's lines turn parallel."""
     return four_bar(theta, o4=(0.3, 0.0), crank=0.2, coupler=0.15, rocker=0.2, omega2=1.0)
 
 
 def part2() -> None:
+    """Print the polygon's error as the input nears the dead point."""
     print("\nPart 2: a triple-rocker turned towards its dead point θ* = acos(1/16)")
     print(f"{'θ* − θ2 (rad)':>14}{'cond(b′)':>12}{'α4 (rad/s²)':>14}{'rel. error':>12}"
           f"{'eps/cond':>11}")
@@ -136,6 +141,7 @@ def part2() -> None:
 
 
 def part3() -> None:
+    """Print the time per position of the polygons against the analytic solver's."""
     print("\nPart 3: crank-shaper where Coriolis vanishes (|2ω4·v_rel| in mm/s²)")
     r2, r1 = 0.18, 0.5
     for label, theta in (("crank on the line of centres", math.pi / 2),

@@ -269,7 +269,7 @@ class _Polygon(PolygonWalk):
         is the one found. At an instant with no sliding or no turning the step says
         the component is zero.
         """
-        X, O, start = self.name(x), self.tip_label(other), self.tip(other)
+        X, tip, start = self.name(x), self.tip_label(other), self.tip(other)
         w = self.omegas[j]
         u = self.sliding(slider, carried, tangent)
         still = sense_of(w, abs(self.m.drive.omega)) == "at rest"
@@ -284,11 +284,11 @@ class _Polygon(PolygonWalk):
             if slot is not None:
                 along, turn = self.act(
                     f"ap:{X}:cor:perp", "perpendicular_through", start, slot,
-                    said=phrase("apolygon.coriolis_direction", tip=O, link=j)), 1.0
+                    said=phrase("apolygon.coriolis_direction", tip=tip, link=j)), 1.0
                 where = phrase("apolygon.along_it")
             else:
                 (along, name), turn = normal_line, -1.0
-                where = phrase("apolygon.from_along", tip=O, line=name)
+                where = phrase("apolygon.from_along", tip=tip, line=name)
             end = self.act(
                 f"ap:{X}:cor", "lay_off", start, along,
                 length=turn * self.sign(x) * cor * self.scale,
@@ -327,7 +327,7 @@ class _Polygon(PolygonWalk):
         alphas: dict[int, float] = {}
         said: dict[Node, list[Phrase]] = {}
         later = []
-        for (x, c), ends in self.normals.items():
+        for (x, _), ends in self.normals.items():
             for k, end in ends:
                 rel = self.name(x) if self.zero(k) else f"{self.name(x)}/{self.name(k)}"
                 self.component(f"ap:{self.name(x)}:t@{self.name(k)}:vec", end, self.known[x],

@@ -74,6 +74,7 @@ class Centre(Ask):
 
     @property
     def name(self) -> str:
+        """``I13``; ``I1,10`` past link 9."""
         i, j = self.pair
         return f"I{i}{j}" if j < 10 else f"I{i},{j}"
 
@@ -87,6 +88,7 @@ class AngularVelocity(Ask):
 
     @property
     def name(self) -> str:
+        """``omega4``."""
         return f"omega{self.link}"
 
 
@@ -99,6 +101,7 @@ class Velocity(Ask):
 
     @property
     def name(self) -> str:
+        """``V_B``."""
         return f"V_{self.point}"
 
 
@@ -113,6 +116,7 @@ class Relative(Ask):
 
     @property
     def name(self) -> str:
+        """``V_B/A``."""
         return f"{self.letter}_{self.point}/{self.of}"
 
 
@@ -125,6 +129,7 @@ class AngularAcceleration(Ask):
 
     @property
     def name(self) -> str:
+        """``alpha4``."""
         return f"alpha{self.link}"
 
 
@@ -137,6 +142,7 @@ class Acceleration(Ask):
 
     @property
     def name(self) -> str:
+        """``A_B``."""
         return f"A_{self.point}"
 
 
@@ -149,6 +155,7 @@ class Coriolis(Ask):
 
     @property
     def name(self) -> str:
+        """``A_cor_B``."""
         return f"A_cor_{self.point}"
 
 
@@ -161,6 +168,7 @@ class _Whole(Ask):
 
     @property
     def name(self) -> str:
+        """Its word: ``dof``, ``grashof``."""
         return self.word
 
 
@@ -190,6 +198,7 @@ class LengthRange(Ask):
 
     @property
     def name(self) -> str:
+        """``range_AB``."""
         return f"range_{self.span}"
 
 

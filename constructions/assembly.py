@@ -377,7 +377,8 @@ class _Assembler:
             return True
         return False
 
-    def cannot_reach(self, name: str, i: int, x: str, ri: float, y: str, rj: float) -> AssemblyError:
+    def cannot_reach(self, name: str, i: int, x: str, ri: float, y: str,
+                     rj: float) -> AssemblyError:
         d = g.distance(self.c.output(self.known[x]), self.c.output(self.known[y]))
         if d > ri + rj:
             why = f"|{y}{x}| = {self.L(d)} > {self.L(ri)} + {self.L(rj)}"
@@ -447,7 +448,7 @@ class _Assembler:
         ``through`` point) is measured with dividers along the face; the wheel has
         turned through s / r, clockwise when it rides on the left of the face.
         """
-        for i, s in enumerate(self.m.slides):
+        for s in self.m.slides:
             if not s.rolling or s.point not in self.known or s.link in self.axes:
                 continue
             pose = self.pose_of(s.guide_link)

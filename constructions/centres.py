@@ -73,9 +73,10 @@ class Centre:
     ``"rolling"`` (the contact point of a wheel rolling without slip),
     ``"kennedy"``, or ``"velocities"`` (rule 2 on its one Kennedy line, where the
     two links' velocities agree, when every triangle gives that same line).
-    ``lines`` are the refs of the two lines it was cut from, and ``triangles`` the third link of each triangle (``None`` for the
-    common normal of a pin in a slot or a contact). ``order`` numbers the
-    secondaries in discovery order (0 for a primary).
+    ``lines`` are the refs of the two lines it was cut from, and ``triangles`` the
+    third link of each triangle (``None`` for the common normal of a pin in a slot
+    or a contact). ``order`` numbers the secondaries in discovery order (0 for a
+    primary).
     """
 
     pair: tuple[int, int]
@@ -403,7 +404,8 @@ class _Kennedy:
         for k in (d, *self.out.links):
             if k == 1 or k == n:
                 continue
-            needed = [(1, k), (1, n), tuple(sorted((k, n)))] + ([] if k == d else [tuple(sorted((d, k)))])
+            needed = [(1, k), (1, n), tuple(sorted((k, n)))]
+            needed += [] if k == d else [tuple(sorted((d, k)))]
             if all(p in self.out.found for p in needed):
                 try:
                     wk = 1.0 if k == d else omega_ratio(self.out, d, k)

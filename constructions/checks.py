@@ -63,7 +63,7 @@ class Quantity:
             q.passed for q in self.alternatives.values())
 
     def with_alternatives(self, others: list[Quantity]) -> Quantity:
-        """This answer, with the same quantity by other methods beside it."""
+        """The same answer, with the quantity by other methods beside it."""
         return replace(self, alternatives={**self.alternatives, **{q.method: q for q in others}})
 
 
@@ -92,8 +92,8 @@ class Answer:
     ``value`` is in results.json's shape; ``method`` is how results.json names the
     method. ``refs`` are the steps the answer is (the slice of each of its
     ``figures`` is cut from them) and ``arrows`` the vectors drawn beside it that
-    belong to its figure; ``panel`` is the panel it is read in. ``found`` is the geometric answer itself
-    where the check compares geometry (a centre, possibly at infinity), and
+    belong to its figure; ``panel`` is the panel it is read in. ``found`` is the
+    geometric answer itself where the check compares geometry (a centre, possibly at infinity), and
     ``holds_always`` marks a joint's own centre, true at every instant.
     """
 

@@ -251,7 +251,8 @@ class Branch(StrEnum):
     BACKWARD = "backward"
 
 
-def _cross(u: tuple[float, float, float], v: tuple[float, float, float]) -> tuple[float, float, float]:
+def _cross(u: tuple[float, float, float],
+           v: tuple[float, float, float]) -> tuple[float, float, float]:
     return (u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0])
 
 

@@ -117,21 +117,23 @@ class _Dyad:
         self.r = crank.span(self.o2, self.a)
         lever = [s for s in mech.slides if s.point == self.a and s.guide_link != 1
                  and s.contact is None and _pivot(mech, s.guide_link)]
-        rods = [k for k in mech.links_at(self.a) if k not in (1, d) and len(mech.link(k).names) == 2]
+        rods = [k for k in mech.links_at(self.a)
+                if k not in (1, d) and len(mech.link(k).names) == 2]
         if lever:
             self.kind, self.out = "slotted lever", lever[0].guide_link
             self.o4 = _pivot(mech, self.out)
             k, s = mech.link(self.out), lever[0]
             px, py = k.local(self.o4)
             (tx, ty), (dx, dy) = s.through, s.direction
-            if abs(dx * (py - ty) - dy * (px - tx)) > 1e-9 * max(1e-300, math.hypot(px, py), self.r):
+            reach = max(1e-300, math.hypot(px, py), self.r)
+            if abs(dx * (py - ty) - dy * (px - tx)) > 1e-9 * reach:
                 raise InputError(f"the slot of link {self.out} does not run through its pivot "
                                  f"{self.o4}; the lever's limit positions are drawn for a slot "
                                  "through the pivot")
             return
         for k in rods:
             b = next(n for n in mech.link(k).names if n != self.a)
-            self.rod, self.b, self.l = k, b, mech.link(k).span(self.a, b)
+            self.rod, self.b, self.rod_length = k, b, mech.link(k).span(self.a, b)
             guide = [i for i, s in enumerate(mech.slides) if s.point == b and s.guide_link == 1
                      and s.kind is SlideKind.BLOCK and s.contact is None]
             rocker = [n for n in mech.links_at(b) if n not in (1, k) and _pivot(mech, n)]
@@ -178,7 +180,8 @@ class _Limits(_Dyad):
         """Record one act; with ``near`` the pick of two cuts is the one nearer that point."""
         if near is not None:
             args = [self.c.output(r) for r in inputs]
-            picks = ("forward", "backward") if verb == "intersect_line_circle" else ("left", "right")
+            picks = (("forward", "backward") if verb == "intersect_line_circle"
+                     else ("left", "right"))
             params["pick"] = min(picks, key=lambda p: math.dist(
                 VERBS[verb](*args, pick=p)[0].xy, near))
         self.c.draw(f"limit:{ref}", verb, *inputs, label=label, phrase=said,
@@ -238,12 +241,12 @@ class _Limits(_Dyad):
     def rod_in_line(self) -> tuple[Ref, Ref]:
         """Crank and rod in line: B on arcs of AB ± O2A about O2, A on the line O2B."""
         o2, a, b = self.o2, self.a, self.b
-        r, l = self.r, self.l
-        if l <= r:
-            raise InputError(f"the rod {a}{b} ({self.L(l)}) is not longer than the crank "
+        r, rod = self.r, self.rod_length
+        if rod <= r:
+            raise InputError(f"the rod {a}{b} ({self.L(rod)}) is not longer than the crank "
                              f"{o2}{a} ({self.L(r)}): the crank cannot turn fully")
         pins = []
-        for i, (length, how) in enumerate(((l + r, "extended"), (l - r, "folded"))):
+        for i, (length, how) in enumerate(((rod + r, "extended"), (rod - r, "folded"))):
             mark = _PRIMES[i]
             span = f"{a}{b} {'+' if i == 0 else '−'} {o2}{a}"
             spoken = phrase("limits.span_sum" if i == 0 else "limits.span_difference", a=a, b=b,

@@ -27,6 +27,7 @@ class Dimension:
 
     @property
     def length(self) -> float:
+        """The distance read (m)."""
         return math.dist(self.start.xy, self.end.xy)
 
 
@@ -43,6 +44,7 @@ class Angle:
 
     @property
     def degrees(self) -> float:
+        """The angle read, in degrees, without its sense."""
         return math.degrees(abs(self.sweep))
 
 

@@ -46,8 +46,9 @@ class Method:
 
     ``references`` names, for each kind of ask it answers, the independent analytic
     value its answer is checked against (:mod:`.expected`); ``construct`` draws one
-    answer into the work's record. ``stage`` orders a solution: methods of a lower stage construct first,
-    and of several methods for one ask the first is the quantity's answer. ``used``
+    answer into the work's record. ``stage`` orders a solution: methods of a lower
+    stage construct first, and of several methods for one ask the first is the
+    quantity's answer. ``used``
     says whether the exercise uses the method for an ask (a velocity method it
     chose, a polygon it draws); ``chosen_as`` is the name an exercise's
     ``[ask] methods`` chooses it by, if it is chosen. ``askable`` names the asks it

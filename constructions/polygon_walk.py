@@ -194,26 +194,32 @@ class PolygonWalk(Walk):
 
     @property
     def prefix(self) -> str:
+        """The polygon's step ids begin so: ``vp`` or ``ap``."""
         return self.kind.prefix
 
     @property
     def pole_name(self) -> str:
+        """The pole: ``o_v`` or ``o_a``."""
         return self.kind.pole
 
     @property
     def panel(self) -> Panel:
+        """The panel the polygon is drawn in."""
         return self.kind.panel
 
     @property
     def symbol(self) -> str:
+        """The vectors' letter: V or A."""
         return self.kind.symbol
 
     @property
     def noun(self) -> str:
+        """What the polygon draws, in messages: velocity or acceleration."""
         return self.kind.noun
 
     @property
     def prime(self) -> str:
+        """The mark on a tip's letter: none (b) or a prime (b′)."""
         return self.kind.prime
 
     def polygon(self, rates: dict[int, float], **parts) -> Polygon:
@@ -245,6 +251,7 @@ class PolygonWalk(Walk):
 
     @property
     def pole_ref(self) -> Ref:
+        """The step of the pole."""
         return f"{self.prefix}:{self.pole_name}"
 
     # ----- the mechanism as the polygon sees it -----------------------------------
@@ -262,23 +269,29 @@ class PolygonWalk(Walk):
         return name.lower() + self.prime
 
     def tip_label(self, n: Node) -> str:
+        """How the polygon names the tip of ``n``: its letter, or the pole for a fixed point."""
         return self.pole_name if self.zero(n) else self.tip_name(self.name(n))
 
     def xy(self, n: Node) -> tuple[float, float]:
+        """Where the point ``n`` stands in the space diagram."""
         return self.asm.xy(n.point)
 
     def apart(self, a: Node, b: Node) -> bool:
+        """True if the two points are not one."""
         return math.dist(self.xy(a), self.xy(b)) > _APART * self.size
 
     def normal(self, a: Node, b: Node) -> tuple[float, float]:
+        """The unit normal to ``ab``, turned +90° from it."""
         (ax, ay), (bx, by) = self.xy(a), self.xy(b)
         d = math.hypot(bx - ax, by - ay)
         return (ay - by) / d, (bx - ax) / d
 
     def ready(self, n: Node, known) -> bool:
+        """True if the tip of ``n`` is drawn, or is the pole."""
         return n in known or self.zero(n)
 
     def tip(self, n: Node) -> Ref:
+        """The step of the tip of ``n`` (the pole for a fixed point)."""
         return self.pole_ref if self.zero(n) else self.known[n]
 
     def length(self, ref: Ref) -> float:
@@ -358,6 +371,7 @@ class PolygonWalk(Walk):
         return whole + cross
 
     def collinear(self, a: Node, b: Node, x: Node) -> bool:
+        """True if ``x`` lies on the line ``ab``."""
         pa, pb, px = (g.Point(*self.xy(n)) for n in (a, b, x))
         return abs(g.side_of(px, pa, pb)) <= _ON_LINE * g.distance(pa, pb) * g.distance(pa, px)
 
@@ -399,6 +413,7 @@ class PolygonWalk(Walk):
 
     def act(self, ref: Ref, verb: str, *inputs: Ref, said: Phrase | None, label: str = "",
             role: Role = Role.CONSTRUCTION, **params) -> Ref:
+        """Do one drafting act in the polygon's panel and count it among its steps."""
         self.c.draw(ref, verb, *inputs, label=label, phrase=said, role=role,
                     panel=self.panel, **params)
         self.steps.append(ref)
@@ -416,6 +431,7 @@ class PolygonWalk(Walk):
 
     # ----- the acts both polygons share ---------------------------------------------
     def draw_cross(self, x: Node, first: tuple, second: tuple) -> Ref:
+        """Find the tip of ``x`` where two lines that carry it meet, or say it is a dead point."""
         (l1, say1), (l2, say2) = (self.draw_locus(x, lo) for lo in (first, second))
         X = self.name(x)
         xl = self.tip_name(X)
@@ -454,6 +470,7 @@ class PolygonWalk(Walk):
                                     ratio=Number(ratio), tb=bl))
 
     def draw_translate(self, x: Node, c: int, k: Node) -> Ref:
+        """A point of a link that slides without turning has the tip of the point ``k`` of it."""
         X, K = self.name(x), self.name(k)
         s = self.symbol
         return self.act(f"{self.prefix}:tip:{X}", "mark", self.tip(k), label=self.tip_name(X),

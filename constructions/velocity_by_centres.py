@@ -39,7 +39,8 @@ __all__ = ["velocity_by_radius_rotation", "velocity_by_parallel_lines", "METHODS
 
 def velocity_by_radius_rotation(asm: Assembly, centres: Centres, point: str, *,
                                 scale: float, link: int | None = None) -> VelocityResult:
-    """Find V of ``point`` by rotating radii onto the line of centres (Hinkle Figs 5.1, 5.2, 5.4)."""
+    """Find V of ``point`` by rotating radii onto the line of centres (Hinkle Figs 5.1, 5.2,
+    5.4)."""
     return _Method(asm, centres, "radius-rotation", "rr", scale).run(point, link)
 
 
@@ -136,11 +137,13 @@ class _Method:
 
     def gauge_tip(self, centre: Ref, loc: Ref, known: str, v_known: Ref, lab_c: str,
                   link: int) -> Ref:
-        """Swing ``known`` onto the line of centres, lay off its speed there, draw the gauge line."""
+        """Swing ``known`` onto the line of centres, lay off its speed there, draw the gauge
+        line."""
         p = self.asm.points[known]
         arc = self.draw("arc:k", "circle_through", centre, p, kind=Kind.SWING,
                         phrase=phrase("velocity.swing_onto_line", centre=lab_c, point=known))
-        at = self.draw("rot:k", "intersect_line_circle", loc, arc, pick="forward", label=f"{known}′")
+        at = self.draw("rot:k", "intersect_line_circle", loc, arc, pick="forward",
+                       label=f"{known}′")
         perp = self.draw("perp:k", "perpendicular_through", at, loc)
         sense = self.sense_of(centre, p, v_known)
         tip = self.draw("tip:k", "lay_off", at, perp,
@@ -152,7 +155,8 @@ class _Method:
                          phrase=phrase("velocity.gauge_line", link=link, centre=lab_c))
 
     def sense_of(self, centre: Ref, p: Ref, v: Ref) -> float:
-        """+1 if V at ``p`` turns counter-clockwise about ``centre``, else −1 (read off the figure)."""
+        """+1 if V at ``p`` turns counter-clockwise about ``centre``, else −1 (read off the
+        figure)."""
         (cx, cy), (px, py) = self.c.output(centre).xy, self.c.output(p).xy
         vx, vy = self.c.output(v).vector
         return 1.0 if (px - cx) * vy - (py - cy) * vx >= 0 else -1.0

@@ -153,10 +153,10 @@ class _Polygon(PolygonWalk):
         if kind == "curve":
             return self.draw_curve(x, *locus[1:])
         other, i = locus[1:]
-        O, j = self.name(other), self.m.slides[i].guide_link
+        j = self.m.slides[i].guide_link
         ref = self.act(f"vp:{X}:slot@{i}", "parallel_through", self.tip(other), self.asm.guides[i],
                        said=phrase("vpolygon.slot", tip=self.tip_label(other), link=j, point=X,
-                                   other=O))
+                                   other=self.name(other)))
         return ref, phrase("polygon.say_slot", tip=self.tip_label(other))
 
     def draw_curve(self, x: Node, other: Node, i: int) -> tuple[Ref, Phrase]:

@@ -138,7 +138,8 @@ def load_exercise(path: str | Path, exercise_id: str | None = None) -> Exercise:
     return parse_exercise(text, str(path), exercise_id or path.stem)
 
 
-def parse_exercise(text: str, filename: str = "<string>", exercise_id: str = "exercise") -> Exercise:
+def parse_exercise(text: str, filename: str = "<string>",
+                   exercise_id: str = "exercise") -> Exercise:
     """Parse an exercise from TOML text (see :func:`load_exercise`)."""
     try:
         data = tomllib.loads(text)

@@ -119,9 +119,11 @@ class _Reader:
             label = f"{label}.{key}" if label else key
         return InputError(message, file=self.file, line=line, key=label)
 
-    def unknown(self, got: str, valid: list[str] | tuple[str, ...], what: str, **where) -> InputError:
+    def unknown(self, got: str, valid: list[str] | tuple[str, ...], what: str,
+                **where) -> InputError:
         close = difflib.get_close_matches(got, list(valid), n=1)
-        hint = f"; did you mean '{close[0]}'?" if close else f"; expected one of: {', '.join(valid)}"
+        hint = (f"; did you mean '{close[0]}'?" if close
+                else f"; expected one of: {', '.join(valid)}")
         return self.fail(f"unknown {what} '{got}'{hint}", **where)
 
     # ----- top level -------------------------------------------------------------
@@ -254,7 +256,8 @@ class _Reader:
             out.append(Link(n, tuple(zip(names, local)), str(t.get("name", ""))))
         return out
 
-    def shape(self, n: int, names: list[str], t: dict[str, Any], where: dict) -> list[tuple[float, float]]:
+    def shape(self, n: int, names: list[str], t: dict[str, Any],
+              where: dict) -> list[tuple[float, float]]:
         lengths = t.get("lengths", {})
         if not isinstance(lengths, dict):
             raise self.fail(f"lengths of link {n} must be a table such as {{ AB = 250 }}",
@@ -321,7 +324,8 @@ class _Reader:
         if "side" in t:
             raise self.fail("side applies to a curved guide (with centre and radius)",
                             key="side", **where)
-        offset = self.number(t.get("offset", 0.0), "offset", key="offset", **where) * self.units.metres
+        offset = self.number(t.get("offset", 0.0), "offset", key="offset",
+                             **where) * self.units.metres
         if on == 1:
             through = t.get("through")
             if isinstance(through, str):

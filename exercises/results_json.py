@@ -48,7 +48,8 @@ def results_json(solutions: list[Solution], exercise_id: str,
 def _position(s: Solution) -> dict[str, Any]:
     d = s.exercise.mechanism.drive
     return {
-        "input": {"link": d.link, "angle_deg": float(f"{math.degrees(d.angle):.12g}"), "omega": d.omega,
+        "input": {"link": d.link, "angle_deg": float(f"{math.degrees(d.angle):.12g}"),
+                  "omega": d.omega,
                   "alpha": d.alpha, "alpha_given": d.alpha_given},
         **({"position": s.position.label} if s.position else {}),
         "quantities": {name: _quantity(q) for name, q in s.quantities.items()},

@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from functools import cached_property
 from pathlib import Path
 
 from ..constructions.acceleration_polygon import drawn_acceleration_polygon
@@ -58,14 +59,22 @@ class WorkedSolution:
     """A solved exercise: its answers, its figures, its steps, and the files they make.
 
     ``overall`` answers what is asked of the mechanism as a whole and
-    ``positions`` each position's; ``pages`` are the figures in order, the whole
-    mechanism's first.
+    ``positions`` each position's; the figures are drawn when first wanted.
     """
 
     exercise: Exercise
     overall: Overall
     positions: list[Solution]
-    pages: list[SolutionFigure]
+
+    @cached_property
+    def pages(self) -> list[SolutionFigure]:
+        """Every figure in order: the whole mechanism's first, then each position's (their
+        stems ending in the position's slug when there are several: ``worked-t-2.34s``)."""
+        pages = _overall_figures(self.exercise, self.overall)
+        for sol in self.positions:
+            suffix = f"-{sol.position.slug}" if len(self.positions) > 1 else ""
+            pages += _figures(sol, suffix)
+        return pages
 
     @property
     def results(self) -> dict:
@@ -124,11 +133,7 @@ class WorkedSolution:
 
 
 def solve_worked(ex: Exercise) -> WorkedSolution:
-    """Solve ``ex`` as a whole and at each position, and draw every figure (in memory).
-
-    The whole-mechanism answers (DOF, Grashof, time ratio, stroke) come first,
-    with the limit positions' figure; then each position's figures, their stems
-    ending in the position's slug when there are several (``worked-t-2.34s``).
+    """Solve ``ex`` as a whole and at each position; its figures are drawn when wanted.
 
     Raises
     ------
@@ -137,12 +142,7 @@ def solve_worked(ex: Exercise) -> WorkedSolution:
         which and where.
     """
     overall = solve_overall(ex)
-    sols = solve_positions(ex) if ex.position_asks else []
-    pages = _overall_figures(ex, overall)
-    for sol in sols:
-        suffix = f"-{sol.position.slug}" if len(sols) > 1 else ""
-        pages += _figures(sol, suffix)
-    return WorkedSolution(ex, overall, sols, pages)
+    return WorkedSolution(ex, overall, solve_positions(ex) if ex.position_asks else [])
 
 
 def solve_to_files(ex: Exercise) -> tuple[list[Solution], dict[str, str]]:

@@ -65,7 +65,8 @@ class Output:
         if self.kind == "link":
             return SYMBOLS[key] + f"_{self.link}"
         head = {"v": "V", "vx": "V", "vy": "V", "a": "A", "ax": "A", "ay": "A"}.get(key, key)
-        return f"{head}_{self.point}" + {"vx": ",x", "vy": ",y", "ax": ",x", "ay": ",y"}.get(key, "")
+        axis = {"vx": ",x", "vy": ",y", "ax": ",x", "ay": ",y"}.get(key, "")
+        return f"{head}_{self.point}{axis}"
 
     @property
     def direction(self) -> tuple[float, float]:
@@ -473,6 +474,7 @@ def _check(label, angle, key, method, value, ref, scale, vector=None) -> Check:
 
 # ----- numbers and angles, as the graphical checks state them ---------------------------
 def number_text(value: float, digits: int = 6) -> str:
+    """A number as the tables print it: ``digits`` significant figures, a true minus."""
     text = f"{value:.{digits}g}"
     return ("0" if float(text) == 0.0 else text).replace("-", "−")
 

@@ -58,7 +58,8 @@ def _words(sw: Sweep) -> tuple[str, str]:
     dx, dy = out.direction
     named = {(1.0, 0.0): "+x", (-1.0, 0.0): "−x", (0.0, 1.0): "+y", (0.0, -1.0): "−y"}
     way = named.get((round(dx, 12) + 0.0, round(dy, 12) + 0.0))
-    return out.point, f" along its guide ({way or number_text(math.degrees(math.atan2(dy, dx))) + '°'})"
+    way = way or number_text(math.degrees(math.atan2(dy, dx))) + "°"
+    return out.point, f" along its guide ({way})"
 
 
 def _turning(sw: Sweep) -> str:

@@ -17,7 +17,8 @@ from ..constructions.errors import TarsimError
 from .figure import Figure
 from .svg import to_svg
 
-__all__ = ["RenderError", "FORMATS", "write_figure", "write_text", "svg_to", "cairo_missing", "pdf_pages"]
+__all__ = ["RenderError", "FORMATS", "write_figure", "write_text", "svg_to", "cairo_missing",
+           "pdf_pages"]
 
 FORMATS = ("svg", "pdf", "png")
 

@@ -89,6 +89,7 @@ class View:
     origin: tuple[float, float]
 
     def __call__(self, xy: tuple[float, float]) -> tuple[float, float]:
+        """Map a world point (m) to paper (mm)."""
         return (self.origin[0] + self.scale * xy[0], self.origin[1] - self.scale * xy[1])
 
     def direction(self, d: tuple[float, float]) -> tuple[float, float]:

@@ -50,7 +50,8 @@ class LabelPlacer:
             self.block(LineString(points).buffer(width / 2 + 0.3, cap_style="flat"),
                        weight=weight)
 
-    def block_segment(self, p: tuple[float, float], q: tuple[float, float], width: float = 0.8) -> None:
+    def block_segment(self, p: tuple[float, float], q: tuple[float, float],
+                      width: float = 0.8) -> None:
         """Mark a drawn segment (with a little clearance) as taken."""
         self.block(LineString([p, q]).buffer(width / 2 + 0.3, cap_style="flat"))
 

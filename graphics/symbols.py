@@ -197,7 +197,8 @@ def draw_turning_arrow(fig: Figure, centre: tuple[float, float], radius: float,
 
 def mark_angle(fig: Figure, centre: tuple[float, float], radius: float, start: float,
                end: float) -> tuple[float, float]:
-    """Mark an angle with a thin arc from ``start`` to ``end`` (paper angles, rad); return its midpoint."""
+    """Mark an angle with a thin arc from ``start`` to ``end`` (paper angles, rad); return its
+    midpoint."""
     fig.arc(centre, radius, start, end, "dimension")
     mid = (start + end) / 2
     return (centre[0] + radius * math.cos(mid), centre[1] - radius * math.sin(mid))

@@ -14,15 +14,17 @@ import math
 import pytest
 
 from tarsim.exercises.catalog import bundled
-from tarsim.exercises.exercise_file import load_exercise
-from tarsim.exercises.solution import solve_positions
 
 MM = 1e-3      # metres per millimetre
 
 
-def _solved(exercise_id):
-    ex = load_exercise(bundled()[exercise_id])
-    return ex, solve_positions(ex)
+@pytest.fixture
+def _solved(solved):
+    """``_solved(id)``: the bundled exercise and its positions' solutions (solved once a run)."""
+    def get(exercise_id):
+        worked = solved(exercise_id)
+        return worked.exercise, worked.positions
+    return get
 
 
 def _at(sols, slug=None):
@@ -50,11 +52,10 @@ def _numbers(d):
 # ----- every bundled exercise -----------------------------------------------------------------
 
 @pytest.mark.parametrize("exercise_id", sorted(bundled()))
-def test_every_bundled_exercise_solves_and_agrees_with_the_analytic_solver(exercise_id):
-    ex = load_exercise(bundled()[exercise_id])
+def test_every_bundled_exercise_solves_and_agrees_with_the_analytic_solver(exercise_id, _solved):
+    ex, sols = _solved(exercise_id)
     if not ex.position_asks:
         pytest.skip("asks only for whole-mechanism quantities (dof, grashof, …)")
-    sols = solve_positions(ex)
     assert sols
     for sol in sols:
         where = f"{exercise_id} at {sol.position.label if sol.position else 'its [input]'}"
@@ -82,7 +83,7 @@ def test_the_new_exercises_are_bundled():
 
 # ----- peers.md §4: the four-bar benchmark ----------------------------------------------------
 
-def test_four_bar_matches_the_peers_benchmark():
+def test_four_bar_matches_the_peers_benchmark(_solved):
     # peers.md §4, open branch, θ2 = 60°, ω2 = 10 rad/s: printed to 12 decimals.
     _, sols = _solved("four-bar")
     q = _at(sols).quantities
@@ -95,7 +96,7 @@ def test_four_bar_matches_the_peers_benchmark():
 
 # ----- seed 003: the crank-shaper project at t = 2.34 s ----------------------------------------
 
-def test_crank_shaper_matches_the_project_at_t_2_34_s():
+def test_crank_shaper_matches_the_project_at_t_2_34_s(_solved):
     # seed 003 §7 (θ2 = −44.072°, ω2 = −1 rad/s): ω4 = +0.192118 rad/s (ccw), V_B = 189.192
     # mm/s to the left, α4 = +0.56939 rad/s² (ccw), A_B = 535.635 mm/s² to the left, Coriolis
     # 62.6646 mm/s² at A and 23.7113 mm/s² at B. Each is half a unit of its last digit.
@@ -113,7 +114,7 @@ def test_crank_shaper_matches_the_project_at_t_2_34_s():
 
 # ----- seed 004 (Hinkle ch. 5): the digest's §11 checks ----------------------------------------
 
-def test_hinkle_four_bar_matches_the_digest_check():
+def test_hinkle_four_bar_matches_the_digest_check(_solved):
     # seed 004 §11: O2 = (0, 0), O4 = (100, 0), 40/120/80 mm, θ2 = 60°, ω2 = 10 rad/s ccw.
     ex, sols = _solved("hinkle-four-bar")
     q = _at(sols).quantities
@@ -138,7 +139,7 @@ def test_hinkle_four_bar_matches_the_digest_check():
     assert ex.mechanism.link(3).names == ("A", "B", "D", "E")
 
 
-def test_hinkle_slider_crank_matches_the_digest_check():
+def test_hinkle_slider_crank_matches_the_digest_check(_solved):
     # seed 004 §11 (Fig. 5.7 procedure): crank 40, rod 120 mm, in line, θ2 = 60°, ω2 = 10.
     ex, sols = _solved("hinkle-slider-crank")
     sol = _at(sols)
@@ -207,12 +208,13 @@ HOMEWORK = {
 
 
 @pytest.mark.parametrize("exercise_id", sorted(HOMEWORK))
-def test_six_link_homework_finds_the_notes_secondary_centres(exercise_id):
+def test_six_link_homework_finds_the_notes_secondary_centres(exercise_id, _solved):
     table = HOMEWORK[exercise_id]
     ex, sols = _solved(exercise_id)
     sol = _at(sols)
     q = sol.quantities
-    assert len(ex.mechanism.links) == 6 and len([a for a in ex.asks if a.name.startswith("I")]) == 15
+    centres = [a for a in ex.asks if a.name.startswith("I")]
+    assert len(ex.mechanism.links) == 6 and len(centres) == 15
     cs = sol.work.made("centres")
     assert {c.label for c in cs.primaries} == table["primaries"]
     assert {c.label for c in cs.secondaries} == set(table["notes"])
@@ -232,7 +234,7 @@ def test_six_link_homework_finds_the_notes_secondary_centres(exercise_id):
     assert [c.label for c in cs.secondaries] == table["order"]
 
 
-def test_homework_1_has_the_multiple_pin():
+def test_homework_1_has_the_multiple_pin(_solved):
     # 000-part1 §3.8 Homework 1: links 3, 4 and 5 share one pin P (two joints), so DOF = 1.
     ex, sols = _solved("six-link-homework-1")
     m = ex.mechanism
@@ -242,7 +244,7 @@ def test_homework_1_has_the_multiple_pin():
     assert q["I34"].value == q["I35"].value == q["I45"].value
 
 
-def test_homework_3_is_a_watt_six_bar():
+def test_homework_3_is_a_watt_six_bar(_solved):
     # 000-part1 §3.8 Homework (3): ground pivots for 2, 3 and 6; link 2 ternary (1, 4, 5).
     ex, _ = _solved("six-link-homework-3")
     m = ex.mechanism
@@ -253,7 +255,7 @@ def test_homework_3_is_a_watt_six_bar():
 
 # ----- seed 000-part2 §3.9: the homework on p. 292 -------------------------------------------
 
-def test_velocity_homework_292_uses_the_notes_data():
+def test_velocity_homework_292_uses_the_notes_data(_solved):
     # 000-part2 §3.9: V_A = 635 mm/s ccw, O2A = 76.2, AB = 178, CD = 305, CB = 152 mm (the
     # notes print whole mm, so ±0.5 mm/s and exact lengths). No answer is printed for V_D.
     ex, sols = _solved("velocity-homework-292")
@@ -275,7 +277,7 @@ def test_velocity_homework_292_uses_the_notes_data():
 # ----- seed 000-part2 §2.11: the Coriolis exercises -------------------------------------------
 
 @pytest.mark.parametrize("exercise_id, lever", [("inverted-slider-crank", 4), ("whitworth", 4)])
-def test_coriolis_follows_the_notes_rule(exercise_id, lever):
+def test_coriolis_follows_the_notes_rule(exercise_id, lever, _solved):
     # 000-part2 §2.11: the Coriolis component is 2ω·v_rel, its direction v_rel turned 90°
     # the way the slotted link turns. Checked on the solution's own numbers (rounding only).
     _, sols = _solved(exercise_id)

@@ -221,7 +221,8 @@ def test_svg_does_not_depend_on_the_hash_seed():
     code = ("import sys; from tarsim.exercises.catalog import bundled; "
             "from tarsim.exercises.mechanism_file import load_mechanism; "
             "from tarsim.constructions.assembly import assemble; "
-            "from tarsim.graphics.diagram import draw_kinematic_diagram; from tarsim.graphics.svg import to_svg; "
+            "from tarsim.graphics.diagram import draw_kinematic_diagram; "
+            "from tarsim.graphics.svg import to_svg; "
             "sys.stdout.buffer.write(to_svg(draw_kinematic_diagram(assemble("
             "load_mechanism(bundled()['slotted-lever-p37'])))).encode())")
     runs = [subprocess.run([sys.executable, "-c", code], capture_output=True, check=True,
@@ -241,7 +242,7 @@ def test_scale_bar_cells_are_one_centimetre(drawn):
     cells = sorted(_rect(p.get("d")) for cls in ("scale", "scale_fill")
                    for g in drawn.groups(cls) for p in g.iter(SVG + "path"))
     assert len(cells) == 4
-    for (x0, y0, x1, y1), nxt in zip(cells, cells[1:] + [None]):
+    for (x0, _, x1, _), nxt in zip(cells, cells[1:] + [None]):
         assert x1 - x0 == pytest.approx(10.0, abs=2e-3)  # 1 cm; coordinates printed to 0.001
         if nxt is not None:
             assert nxt[0] == pytest.approx(x1, abs=1e-9)  # contiguous

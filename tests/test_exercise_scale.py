@@ -12,10 +12,8 @@ from tarsim.constructions.reference import solver
 from tarsim.constructions.assembly import assemble
 from tarsim.constructions.errors import InputError
 from tarsim.constructions.record import Panel, Slice
-from tarsim.exercises.catalog import bundled
-from tarsim.exercises.exercise_file import load_exercise, parse_exercise
+from tarsim.exercises.exercise_file import parse_exercise
 from tarsim.exercises.solution import solve_exercise
-from tarsim.exercises.solution_files import solve_all
 from tarsim.graphics.diagram import draw_kinematic_diagram
 from tarsim.graphics.polygon_panel import draw_polygon_panel
 from tarsim.graphics.scene import draw_scene
@@ -112,9 +110,8 @@ def test_a_stated_velocity_scale_draws_the_polygon_true_to_it():
                                                                         rel=1e-9)
 
 
-def test_the_crank_shaper_is_drawn_at_the_projects_scales():
+def test_the_crank_shaper_is_drawn_at_the_projects_scales(files):
     # 003 steps 3 and 7: 3 cm of polygon for V_A = 18 cm/s, 7 cm of drawing for 500 mm.
-    _, _, files = solve_all(load_exercise(bundled()["crank-shaper"]))
     for stem in ("worked-theta2-90", "V_B-radius-rotation-theta2-90"):
-        svg = files[f"{stem}.svg"]
+        svg = files("crank-shaper")[f"{stem}.svg"]
         assert "Scale 7 cm = 500 mm" in svg and "Velocity scale 1 cm = 60 mm/s" in svg

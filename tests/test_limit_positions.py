@@ -19,7 +19,8 @@ from hypothesis import strategies as st
 from tarsim.constructions.reference.limits import limit_reference
 from tarsim.constructions.errors import InputError, TarsimError
 from tarsim.constructions.limit_positions import draw_limit_positions, drawn_limits, limit_kind
-from tarsim.constructions.reference.rotatability import class_by_rotation, length_range, length_range_by_rotation
+from tarsim.constructions.reference.rotatability import (class_by_rotation, length_range,
+                                                         length_range_by_rotation)
 from tarsim.exercises.catalog import resolve
 from tarsim.exercises.exercise_file import load_exercise, parse_exercise
 from tarsim.exercises.solution import solve_overall
@@ -118,13 +119,13 @@ def test_crank_shaper_limits_where_the_seed_puts_them():
 def test_slider_crank_against_the_notes_formulas(r, extra, e_frac, omega):
     # S1 = √((L+R)² − e²), S2 = √((L−R)² − e²), stroke S1 − S2, δ = atan(S1/e) − atan(S2/e)
     # in the notes' angles from the perpendicular; forward 180° + |δ|, return 180° − |δ|.
-    l = r + extra
-    e = e_frac * (l - r)
-    ex = parse_exercise(SLIDER_CRANK.format(r=r, l=l, e=e, angle=30, omega=omega))
+    rod = r + extra
+    e = e_frac * (rod - r)
+    ex = parse_exercise(SLIDER_CRANK.format(r=r, l=rod, e=e, angle=30, omega=omega))
     lp = draw_limit_positions(ex.mechanism)
-    s1, s2 = math.sqrt((l + r) ** 2 - e ** 2), math.sqrt((l - r) ** 2 - e ** 2)
+    s1, s2 = math.sqrt((rod + r) ** 2 - e ** 2), math.sqrt((rod - r) ** 2 - e ** 2)
     delta = abs(math.atan2(s1, e) - math.atan2(s2, e))
-    assert lp.stroke * 1000 == pytest.approx(s1 - s2, rel=1e-12, abs=1e-12 * l)
+    assert lp.stroke * 1000 == pytest.approx(s1 - s2, rel=1e-12, abs=1e-12 * rod)
     assert lp.slow == pytest.approx(math.pi + delta, rel=1e-12)
     assert lp.time_ratio == pytest.approx((math.pi + delta) / (math.pi - delta), rel=1e-12)
 
@@ -179,7 +180,9 @@ def test_reversing_the_crank_keeps_the_ratio_and_swaps_the_strokes():
 def test_a_double_crank_has_no_limit_positions():
     ex = parse_exercise(four_bar_toml(ground=20, crank=50, coupler=100, rocker=90)
                         + '\n[ask]\nfind = ["grashof"]\n')
-    with pytest.raises(TarsimError, match=r"crank and rod cannot lie in line, extended: the arc of radius AB \+ O2A = 150 mm about O2 misses the arc of B about O4 by 40 mm"):
+    with pytest.raises(TarsimError, match=r"crank and rod cannot lie in line, extended: the arc "
+                                          r"of radius AB \+ O2A = 150 mm about O2 misses the "
+                                          r"arc of B about O4 by 40 mm"):
         solve_overall(ex.asking(("time_ratio",)))
 
 
@@ -237,9 +240,9 @@ def test_class_by_turning(lengths, kind):
 
 
 # ----- the files ----------------------------------------------------------------------------
-def test_crank_shaper_files_carry_the_whole_mechanism():
-    ex = load_exercise(resolve("crank-shaper"))
-    sols, overall, files = solve_all(ex)
+def test_crank_shaper_files_carry_the_whole_mechanism(solved):
+    worked = solved("crank-shaper")
+    overall, files = worked.overall, worked.files()
     doc = json.loads(files["results.json"])
     assert set(doc["quantities"]) == {"dof", "time_ratio", "stroke"}
     assert doc["quantities"]["time_ratio"]["reference"]["value"] == pytest.approx(1.61249, abs=1e-5)

@@ -123,7 +123,7 @@ def shaper_acceleration(theta2=SHAPER_T, scale=1.0):
     return b.c, b.refs, kin, mech
 
 
-def four_bar_acceleration(theta2=math.radians(60), omega2=2.0, alpha2=3.0, scale=1.0):
+def four_bar_acceleration(theta2=math.pi / 3, omega2=2.0, alpha2=3.0, scale=1.0):
     """The coupler four-bar's polygon: normal and tangential components, d′ by the image."""
     base = coupler_four_bar(theta2, omega2=omega2)
     mech = base.with_drive(Drive(2, theta2, omega2, alpha2))

@@ -11,8 +11,7 @@ import xml.etree.ElementTree as ET
 
 import pytest
 
-from tarsim.exercises.catalog import bundled
-from tarsim.exercises.exercise_file import load_exercise, parse_exercise
+from tarsim.exercises.exercise_file import parse_exercise
 from tarsim.exercises.solution_files import solve_to_files
 
 SVG = "{http://www.w3.org/2000/svg}"
@@ -208,8 +207,8 @@ def test_a_velocity_by_the_polygon_brings_no_acceleration_panel():
 # ----- the crank-shaper's worked page -----------------------------------------------------------
 
 @pytest.fixture(scope="module")
-def crank_shaper_files():
-    return solve_to_files(load_exercise(bundled()["crank-shaper"]))[1]
+def crank_shaper_files(files):
+    return files("crank-shaper")
 
 
 @pytest.mark.parametrize("slug", ["theta2-90", "t-2.34s"])

@@ -9,7 +9,8 @@ from hypothesis import strategies as st
 
 from tarsim.constructions import record
 from tarsim.constructions.errors import GeometryError, NoIntersection, TarsimError
-from tarsim.constructions.geometry import Circle, Line, Point, Segment, intersect_circles, line_through
+from tarsim.constructions.geometry import (Circle, Line, Point, Segment, intersect_circles,
+                                           line_through)
 from tarsim.constructions.measures import Angle, Dimension
 from tarsim.constructions.narration import Phrase
 from tarsim.constructions.record import (VERBS, Construction, Panel, Role, Slice, Step, replay,

@@ -208,3 +208,22 @@ def test_a_failed_check_exits_3_and_still_writes_the_files(tmp_path, monkeypatch
                              "tolerance\n")
     assert "V_B      rel. error" in result.stdout and "FAILED" in result.stdout
     assert (tmp_path / "out" / "results.json").exists()
+
+
+def test_a_solution_is_byte_identical_across_hash_seeds_and_folders(tmp_path):
+    """Every file of a solve, steps.md and results.json included, is the same whatever the
+    hash seed (set and dict order) and wherever it is written."""
+    import os
+    import subprocess
+    import sys
+
+    outputs = []
+    for seed in ("1", "2"):
+        out = tmp_path / f"seed-{seed}" / "solution"
+        subprocess.run([sys.executable, "-m", "tarsim", "solve", "inverted-slider-crank", "-o",
+                        str(out), "--no-pdf"], check=True, capture_output=True, timeout=300,
+                       cwd=tmp_path, env={**os.environ, "PYTHONHASHSEED": seed})
+        outputs.append({p.name: p.read_bytes() for p in sorted(out.iterdir())})
+    first, second = outputs
+    assert {"steps.md", "results.json", "worked.svg"} <= set(first)
+    assert first == second

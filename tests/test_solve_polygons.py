@@ -12,9 +12,8 @@ import pytest
 from click.testing import CliRunner
 
 from tarsim.constructions.reference import solver
-from tarsim.exercises.catalog import resolve
 from tarsim.exercises.cli import cli
-from tarsim.exercises.exercise_file import load_exercise, parse_exercise
+from tarsim.exercises.exercise_file import parse_exercise
 from tarsim.exercises.solution import solve_positions
 from tarsim.constructions.narration import narrate
 from tests.common import four_bar_toml
@@ -38,8 +37,8 @@ def four_bar_exercise(find, *, methods='["polygon"]', alpha=None, at=None):
 
 
 @pytest.fixture(scope="module")
-def shaper():
-    return solve_positions(load_exercise(resolve("crank-shaper"), "crank-shaper"))
+def shaper(solved):
+    return solved("crank-shaper").positions
 
 
 # ----- the course project -------------------------------------------------------------------

@@ -16,7 +16,8 @@ from dataclasses import dataclass
 from ..errors import InputError
 from ..model import Mechanism
 
-__all__ = ["GrashofResult", "grashof", "grashof_class", "four_bar_spans", "turns_fully", "class_by_rotation", "length_range", "length_range_by_rotation"]
+__all__ = ["GrashofResult", "grashof", "grashof_class", "four_bar_spans", "turns_fully",
+           "class_by_rotation", "length_range", "length_range_by_rotation"]
 
 SAMPLES = 720
 """Crank angles per sweep; the diagonal's extremes lie on the ground line, which is sampled."""
@@ -116,7 +117,9 @@ def turns_fully(ground: float, crank: float, coupler: float, rocker: float) -> b
 
 
 def class_by_rotation(lengths) -> str:
-    """The four-bar's class from which links turn fully; ``lengths`` = (ground, input, coupler, output).
+    """The four-bar's class from which links turn fully.
+
+    ``lengths`` are (ground, input, coupler, output).
 
     Examples
     --------

@@ -1,3 +1,5 @@
+"""``python -m tarsim``: the command line."""
+
 from tarsim.exercises.cli import cli
 
 cli(prog_name="tarsim")

@@ -1,0 +1,38 @@
+"""Fixtures shared across modules: the bundled exercises, each solved once per test run.
+
+Solving an exercise (assembly, constructions, figures) is the slowest thing the
+tests do, and several modules read the same solution: the crank-shaper's is read
+by the catalog, limit-position, scale, pruning and polygon tests. A solution is
+not changed by reading it, so one per run serves them all.
+"""
+
+from __future__ import annotations
+
+import pytest
+
+from tarsim.exercises.catalog import load
+from tarsim.exercises.solution_files import WorkedSolution, solve_worked
+
+
+@pytest.fixture(scope="session")
+def solved():
+    """``solved(exercise_id)``: the bundled exercise solved and drawn, once per run."""
+    cache: dict[str, WorkedSolution] = {}
+
+    def get(exercise_id: str) -> WorkedSolution:
+        if exercise_id not in cache:
+            cache[exercise_id] = solve_worked(load(exercise_id))
+        return cache[exercise_id]
+    return get
+
+
+@pytest.fixture(scope="session")
+def files(solved):
+    """``files(exercise_id)``: every file of the bundled exercise's solution, as text, once."""
+    cache: dict[str, dict[str, str]] = {}
+
+    def get(exercise_id: str) -> dict[str, str]:
+        if exercise_id not in cache:
+            cache[exercise_id] = solved(exercise_id).files()
+        return cache[exercise_id]
+    return get
