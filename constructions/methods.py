@@ -36,8 +36,8 @@ from .scales import Scales, choose_scales
 __all__ = ["Method", "Work", "answer_all"]
 
 
-def _always(work: Work, ask: A.Ask) -> bool:
-    return True
+def _chosen(method: Method, work: Work, ask: A.Ask) -> bool:
+    return not method.chosen_by or any(name in work.chosen for name in method.chosen_by)
 
 
 @dataclass(frozen=True)
@@ -48,10 +48,11 @@ class Method:
     value its answer is checked against (:mod:`.expected`); ``construct`` draws one
     answer into the work's record. ``stage`` orders a solution: methods of a lower
     stage construct first, and of several methods for one ask the first is the
-    quantity's answer. ``used``
-    says whether the exercise uses the method for an ask (a velocity method it
-    chose, a polygon it draws); ``chosen_as`` is the name an exercise's
-    ``[ask] methods`` chooses it by, if it is chosen. ``askable`` names the asks it
+    quantity's answer. ``chosen_by`` are the names in an exercise's ``[ask]
+    methods`` that choose it (none: it is always used), the first of them its own;
+    of methods of one stage, the one chosen first answers first. ``used`` says
+    whether the exercise uses the method for an ask (by default, whether it is
+    chosen; a polygon is also drawn when an acceleration needs it). ``askable`` names the asks it
     answers of a mechanism beyond those its points and links give (a four-bar's
     Grashof class, a quick-return's time ratio), and ``why_not`` says why a
     mechanism it does not fit has none.
@@ -61,8 +62,8 @@ class Method:
     references: Mapping[type[A.Ask], Callable[[Work, A.Ask], Expected]]
     construct: Callable[[Work, A.Ask], Answer]
     stage: int
-    used: Callable[[Work, A.Ask], bool] = _always
-    chosen_as: str | None = None
+    chosen_by: tuple[str, ...] = ()
+    when: Callable[[Work, A.Ask], bool] | None = None
     askable: Callable[[Mechanism], set[str]] | None = None
     why_not: dict[type[A.Ask], str] = field(default_factory=dict)
 
@@ -74,6 +75,16 @@ class Method:
     def reference(self, work: Work, ask: A.Ask) -> Expected:
         """The analytic value ``ask`` is checked against."""
         return self.references[type(ask)](work, ask)
+
+    def used(self, work: Work, ask: A.Ask) -> bool:
+        """True if the exercise uses this method for ``ask``: chosen (or always used), and
+        fit for it where the method says when it is (``when``)."""
+        return self.when(work, ask) if self.when is not None else _chosen(self, work, ask)
+
+    def rank(self, work: Work) -> tuple[int, int]:
+        """Its place among the methods of one ask: by stage, then as the exercise chose."""
+        chosen = [work.chosen.index(n) for n in self.chosen_by if n in work.chosen]
+        return self.stage, min(chosen, default=0)
 
 
 class Work:
@@ -174,9 +185,8 @@ def answer_all(work: Work, methods: tuple[Method, ...]) -> tuple[dict[str, Quant
     quantities: dict[str, Quantity] = {}
     answers: list[Answer] = []
     for ask in A.ordered(work.asks):
-        chosen = {name: i for i, name in enumerate(work.chosen)}
         using = sorted((m for m in methods if isinstance(ask, m.answers) and m.used(work, ask)),
-                       key=lambda m: (m.stage, chosen.get(m.chosen_as, 0)))
+                       key=lambda m: m.rank(work))
         if not using:
             raise TarsimError(f"no method the exercise uses answers {ask.name}; choose one in "
                               "[ask] methods")

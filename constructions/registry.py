@@ -26,6 +26,7 @@ from .errors import TarsimError
 from .methods import Method, Work
 from .model import Mechanism
 from .overall import GRASHOF_WHY_NOT, answer_grashof, answer_mobility, grashof_askable
+from .transmission import answer_omega as by_transmission, transmission_links
 from .velocity_by_centres import answer_velocity as by_centres
 from .velocity_by_components import answer_velocity as by_components
 from .velocity_polygon import answer as from_velocity_polygon, wants_polygon
@@ -33,12 +34,13 @@ from .velocity_polygon import answer as from_velocity_polygon, wants_polygon
 __all__ = ["METHODS", "CHOSEN", "askable", "why_not"]
 
 
-def _chosen(work: Work, ask: A.Ask, name: str) -> bool:
-    return name in work.chosen
+_BY_CENTRES = ("radius-rotation", "parallel-line", "components")
+"""The space diagram's velocity methods: choosing any of them draws the centres' ω too."""
 
 
-def _by_centres_chosen(work: Work, ask: A.Ask) -> bool:
-    return any(m in work.chosen for m in ("radius-rotation", "parallel-line", "components"))
+def _transmission(work: Work, ask: A.AngularVelocity) -> bool:
+    return ("line-of-transmission" in work.chosen
+            and transmission_links(work.mechanism, ask.link) is not None)
 
 
 def _velocity_polygon(work: Work, ask: A.Ask) -> bool:
@@ -54,24 +56,25 @@ def _acceleration_polygon(work: Work, ask: A.Ask) -> bool:
 
 
 def _velocity(name: str, construct) -> Method:
-    return Method(name, {A.Velocity: expected.velocity}, construct, stage=2,
-                  used=partial(_chosen, name=name), chosen_as=name)
+    return Method(name, {A.Velocity: expected.velocity}, construct, stage=2, chosen_by=(name,))
 
 
 METHODS: tuple[Method, ...] = (
     Method("instant centres", {A.Centre: expected.centre}, answer_centre, stage=0),
     Method("instant centres (ω ratio)", {A.AngularVelocity: expected.omega}, answer_omega,
-           stage=1, used=_by_centres_chosen),
+           stage=1, chosen_by=_BY_CENTRES),
     _velocity("radius-rotation", partial(by_centres, method="radius-rotation")),
     _velocity("parallel-line", partial(by_centres, method="parallel-line")),
     _velocity("components", by_components),
     Method("velocity polygon", {A.AngularVelocity: expected.omega, A.Velocity: expected.velocity,
                                 A.Relative: expected.relative},
-           from_velocity_polygon, stage=3, used=_velocity_polygon, chosen_as="polygon"),
+           from_velocity_polygon, stage=3, chosen_by=("polygon",), when=_velocity_polygon),
+    Method("line of transmission", {A.AngularVelocity: expected.omega}, by_transmission, stage=1,
+           chosen_by=("line-of-transmission",), when=_transmission),
     Method("acceleration polygon", {A.AngularAcceleration: expected.alpha,
                                     A.Acceleration: expected.acceleration,
                                     A.Relative: expected.relative, A.Coriolis: expected.coriolis},
-           from_acceleration_polygon, stage=4, used=_acceleration_polygon),
+           from_acceleration_polygon, stage=4, when=_acceleration_polygon),
     Method("Grübler", {A.Mobility: expected.mobility}, answer_mobility, stage=5,
            askable=lambda mech: {"dof"}),
     Method("Grashof", {A.GrashofClass: expected.grashof, A.LengthRange: expected.length_range},
@@ -81,8 +84,9 @@ METHODS: tuple[Method, ...] = (
 )
 """Every method, in the order a solution takes them."""
 
-CHOSEN: tuple[str, ...] = tuple(m.chosen_as for m in METHODS if m.chosen_as)
-"""The names an exercise's ``[ask] methods`` chooses velocity methods by."""
+CHOSEN: tuple[str, ...] = tuple(m.chosen_by[0] for m in METHODS
+                                if m.chosen_by and len(m.chosen_by) == 1)
+"""The names an exercise's ``[ask] methods`` chooses methods by."""
 
 
 def askable(mech: Mechanism) -> set[str]:

@@ -265,6 +265,15 @@ PHRASES: dict[str, str] = {
     "apolygon.what_part": "the part of A_{rel} ⟂ {line}",
     "apolygon.alpha": "α{link} = {what} / {line} = {accel} ÷ {length} = {alpha} rad/s² "
                       "({sense}: the sense of {what} about {about}).",
+    # ----- ω by the line of transmission (constructions.transmission) ---------------------
+    "transmission.line": "Draw the line of transmission {a}{b}, along the coupler (link {link}): "
+                         "{a} and {b} have equal velocity components along it.",
+    "transmission.perpendicular": "From {centre} draw the perpendicular to {a}{b}.",
+    "transmission.foot": "It meets {a}{b} at {foot}.",
+    "transmission.measure": "Measure {centre}{foot} = {length}.",
+    "transmission.ratio": "Measure {o_f}H = {length}. The angular velocities are inversely as "
+                          "these perpendiculars: ω{n}/ω{d} = {o_d}G/{o_f}H = {ratio}, and the "
+                          "centres lie on {sides} of the line, so ω{n} = {omega} rad/s ({sense}).",
     # ----- limit positions (constructions.limit_positions) ---------------------------------
     "limits.join_cranks": "Join {pivot}{a} and {pivot}{b}: the crank at its two limit positions.",
     "limits.measure": "Measure the angle {a}{pivot}{b} the crank turns from {a} to {b} ({sense}, "
