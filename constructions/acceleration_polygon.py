@@ -127,7 +127,7 @@ class _Polygon(PolygonWalk):
     def component(self, ref: Ref, start: Ref, end: Ref, label: str) -> None:
         """Draw a known or found component as an arrow (no sentence: the act before it said it)."""
         if math.dist(self.c.output(start).xy, self.c.output(end).xy) > 0.0:
-            self.c.draw(ref, "join", start, end, label=label, panel=self.panel, phrase=None)
+            self.c.draw(ref, "join", start, end, label=label, panel=self.kind.panel, phrase=None)
             self.steps.append(ref)
             self.components[label] = ref
 

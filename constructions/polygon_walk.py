@@ -192,36 +192,6 @@ class PolygonWalk(Walk):
 
     kind: PolygonKind
 
-    @property
-    def prefix(self) -> str:
-        """The polygon's step ids begin so: ``vp`` or ``ap``."""
-        return self.kind.prefix
-
-    @property
-    def pole_name(self) -> str:
-        """The pole: ``o_v`` or ``o_a``."""
-        return self.kind.pole
-
-    @property
-    def panel(self) -> Panel:
-        """The panel the polygon is drawn in."""
-        return self.kind.panel
-
-    @property
-    def symbol(self) -> str:
-        """The vectors' letter: V or A."""
-        return self.kind.symbol
-
-    @property
-    def noun(self) -> str:
-        """What the polygon draws, in messages: velocity or acceleration."""
-        return self.kind.noun
-
-    @property
-    def prime(self) -> str:
-        """The mark on a tip's letter: none (b) or a prime (b′)."""
-        return self.kind.prime
-
     def polygon(self, rates: dict[int, float], **parts) -> Polygon:
         """The drawn polygon, with the rates it read and any further parts (Coriolis)."""
         tips, aliases = self.tips()
@@ -233,12 +203,12 @@ class PolygonWalk(Walk):
         m = self.m
         if any(s.rolling for s in m.slides):
             s = next(s for s in m.slides if s.rolling)
-            raise TarsimError(f"the {self.noun} polygon does not yet handle the {s.label}; use "
-                              "radius-rotation or parallel-line")
+            raise TarsimError(f"the {self.kind.noun} polygon does not yet handle the {s.label}; "
+                              "use radius-rotation or parallel-line")
         if self.pole_ref in self.c:
-            article = "an" if self.noun[0] in "aeiou" else "a"
-            raise TarsimError(f"this construction already holds {article} {self.noun} polygon; "
-                              "assemble the mechanism again to draw another")
+            article = "an" if self.kind.noun[0] in "aeiou" else "a"
+            raise TarsimError(f"this construction already holds {article} {self.kind.noun} "
+                              "polygon; assemble the mechanism again to draw another")
         self.pole_xy = (float(pole[0]), float(pole[1]))
         self.size = asm.size
         nodes = [Node(n) for n in m.point_names]
@@ -252,7 +222,7 @@ class PolygonWalk(Walk):
     @property
     def pole_ref(self) -> Ref:
         """The step of the pole."""
-        return f"{self.prefix}:{self.pole_name}"
+        return f"{self.kind.prefix}:{self.kind.pole}"
 
     # ----- the mechanism as the polygon sees it -----------------------------------
     def name(self, n: Node) -> str:
@@ -266,11 +236,11 @@ class PolygonWalk(Walk):
 
     def tip_name(self, name: str) -> str:
         """The tip of point ``name`` in this polygon: b, or b′."""
-        return name.lower() + self.prime
+        return name.lower() + self.kind.prime
 
     def tip_label(self, n: Node) -> str:
         """How the polygon names the tip of ``n``: its letter, or the pole for a fixed point."""
-        return self.pole_name if self.zero(n) else self.tip_name(self.name(n))
+        return self.kind.pole if self.zero(n) else self.tip_name(self.name(n))
 
     def xy(self, n: Node) -> tuple[float, float]:
         """Where the point ``n`` stands in the space diagram."""
@@ -378,9 +348,9 @@ class PolygonWalk(Walk):
     # ----- the walk ---------------------------------------------------------------
     def walk(self) -> None:
         """Set the pole, draw the input, then every other tip, the best-crossing first."""
-        self.c.give(self.pole_ref, g.Point(*self.pole_xy), label=self.pole_name,
-                    panel=self.panel, kind=Kind.POLE,
-                    phrase=phrase("polygon.pole", noun=Word(self.noun), pole=self.pole_name))
+        self.c.give(self.pole_ref, g.Point(*self.pole_xy), label=self.kind.pole,
+                    panel=self.kind.panel, kind=Kind.POLE,
+                    phrase=phrase("polygon.pole", noun=Word(self.kind.noun), pole=self.kind.pole))
         self.steps.append(self.pole_ref)
         self.draw_input()
         while True:
@@ -394,7 +364,7 @@ class PolygonWalk(Walk):
                         best = (n, rule)
             if best is None:
                 names = ", ".join(self.name(n) for n in todo)
-                raise TarsimError(f"the {self.noun} polygon cannot reach {names}: no link "
+                raise TarsimError(f"the {self.kind.noun} polygon cannot reach {names}: no link "
                                   "carrying it has two known points or a known direction")
             x, (kind, args, _) = best
             self.known[x] = getattr(self, f"draw_{kind}")(x, *args)
@@ -415,7 +385,7 @@ class PolygonWalk(Walk):
             role: Role = Role.CONSTRUCTION, **params) -> Ref:
         """Do one drafting act in the polygon's panel and count it among its steps."""
         self.c.draw(ref, verb, *inputs, label=label, phrase=said, role=role,
-                    panel=self.panel, **params)
+                    panel=self.kind.panel, **params)
         self.steps.append(ref)
         return ref
 
@@ -437,12 +407,12 @@ class PolygonWalk(Walk):
         xl = self.tip_name(X)
         d = self.m.drive
         dead = (f"dead point at θ{d.link} = {math.degrees(d.angle):.6g}°: {narrate(say1)} and "
-                f"{narrate(say2)} are parallel, so {self.symbol}_{X} is undefined; move the input "
-                "off it")
+                f"{narrate(say2)} are parallel, so {self.kind.symbol}_{X} is undefined; move the "
+                "input off it")
         try:
-            tip = self.act(f"{self.prefix}:tip:{X}", "intersect_lines", l1, l2, label=xl,
-                           said=phrase("polygon.lines_meet", tip=xl, pole=self.pole_name,
-                                       symbol=self.symbol, point=X))
+            tip = self.act(f"{self.kind.prefix}:tip:{X}", "intersect_lines", l1, l2, label=xl,
+                           said=phrase("polygon.lines_meet", tip=xl, pole=self.kind.pole,
+                                       symbol=self.kind.symbol, point=X))
         except DegenerateInput:
             raise AssemblyError(dead, joint=x.point, angle_deg=math.degrees(d.angle)) from None
         step = self.c[tip]
@@ -460,8 +430,8 @@ class PolygonWalk(Walk):
         ta, tb = self.tip(a), self.tip(b)
         side = math.dist(self.c.output(ta).xy, self.c.output(tb).xy)
         why = phrase("polygon.image_why", x=x.point, a=a.point, b=b.point, link=c, tip=xl,
-                     ta=al, tb=bl, ratio=Number(ratio), noun=Word(self.noun))
-        ref = f"{self.prefix}:tip:{X}"
+                     ta=al, tb=bl, ratio=Number(ratio), noun=Word(self.kind.noun))
+        ref = f"{self.kind.prefix}:tip:{X}"
         if side == 0.0:
             return self.act(ref, "mark", ta, label=xl,
                             said=phrase("polygon.image_collapsed", why=why, ta=al, tb=bl, tip=xl))
@@ -472,8 +442,8 @@ class PolygonWalk(Walk):
     def draw_translate(self, x: Node, c: int, k: Node) -> Ref:
         """A point of a link that slides without turning has the tip of the point ``k`` of it."""
         X, K = self.name(x), self.name(k)
-        s = self.symbol
-        return self.act(f"{self.prefix}:tip:{X}", "mark", self.tip(k), label=self.tip_name(X),
+        s = self.kind.symbol
+        return self.act(f"{self.kind.prefix}:tip:{X}", "mark", self.tip(k), label=self.tip_name(X),
                         said=phrase("polygon.translate", link=c, symbol=s, point=X, known=K,
                                     tip=self.tip_name(X), known_tip=self.tip_name(K)))
 
