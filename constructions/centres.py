@@ -550,7 +550,7 @@ def answer_omega(work, ask: A.AngularVelocity) -> Answer:
                   refs=tuple(cs.centre(*pair).ref for pair in pairs), figures=(OMEGA_FIGURE,))
 
 
-CENTRES_FIGURE = FigureSpec("centres", "Instant centres", "instant centres")
+CENTRES_FIGURE = FigureSpec("centres", "Instant centres", "instant centres", notes=True)
 OMEGA_FIGURE = FigureSpec("centres", "Centres for the angular velocities",
-                          "centres for the angular velocities")
+                          "centres for the angular velocities", notes=True)
 CIRCLE_FIGURE = FigureSpec("circle-diagram", "Circle diagram", kind="circle diagram")

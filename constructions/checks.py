@@ -75,7 +75,8 @@ class FigureSpec:
     "circle diagram", "polygons" (the worked page: space diagram, polygons and
     results table) or "limits" (the limit positions). The figure's title is the
     mechanism's name and the ``caption``. ``velocity_scale`` is the scale (drawing
-    metres per m/s) of the velocities a scene draws, which its caption states.
+    metres per m/s) of the velocities a scene draws, which its caption states;
+    ``notes`` says the position's notes (an ill-conditioned centre) stand under it.
     """
 
     stem: str
@@ -83,6 +84,7 @@ class FigureSpec:
     caption: str = ""
     kind: str = "scene"
     velocity_scale: float | None = None
+    notes: bool = False
 
 
 @dataclass(frozen=True)

@@ -212,7 +212,7 @@ def _figure(sol: Solution, spec: FigureSpec, answers) -> SolutionFigure:
         return SolutionFigure(spec.stem, spec.heading, draw_circle_diagram(every, title=name),
                               None)
     shown = _shown(c, answers, asm.position_steps)
-    notes = notes_under(sol, Panel.SPACE) if spec.velocity_scale is None else []
+    notes = notes_under(sol, Panel.SPACE) if spec.notes else []
     fig = draw_scene(asm, shown, title=f"{name}: {spec.caption}", notes=notes,
                      velocity_scale=spec.velocity_scale, per_cm=work.scales.space)
     return SolutionFigure(spec.stem, spec.heading, fig, shown)

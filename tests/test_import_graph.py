@@ -91,3 +91,23 @@ def test_only_the_command_line_imports_click_and_cairo_is_lazy(name):
             assert name == "tarsim.exercises.cli", f"{name} imports click"
         if root == "cairosvg":
             assert not at_top, f"{name} imports cairosvg when it loads"
+
+
+def test_every_package_folder_is_installed():
+    """pyproject lists each package by hand (the layers map onto ``tarsim``): a folder left
+    off the list would be missing from an install, though an editable one finds it."""
+    import tomllib
+
+    root = Path(__file__).resolve().parents[1]
+    config = tomllib.loads((root / "pyproject.toml").read_text(encoding="utf-8"))
+    listed = set(config["tool"]["setuptools"]["packages"])
+    mapping = config["tool"]["setuptools"]["package-dir"]
+    found = set()
+    for package, folder in mapping.items():
+        base = root / folder
+        for init in base.rglob("__init__.py"):
+            rel = init.parent.relative_to(base).parts
+            if package == "tarsim" or not any(part == "tarsim" for part in rel):
+                found.add(".".join((package, *rel)))
+    found = {f for f in found if not f.startswith("tarsim.exercises.tarsim")}
+    assert found == listed
