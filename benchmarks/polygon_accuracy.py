@@ -79,9 +79,9 @@ def worst_error(mech) -> float:
         else:
             i = len(key.rstrip("0123456789"))
             ref = solver.point_acceleration(kin, mech, int(key[i:]), key[:i])
-        worst = max(worst, math.dist(ap.acceleration(key), ref) / max(math.hypot(*ref), a_in))
+        worst = max(worst, math.dist(ap.vector(key), ref) / max(math.hypot(*ref), a_in))
     scale = math.hypot(d.omega ** 2, d.alpha)
-    for c, a in ap.alphas.items():
+    for c, a in ap.rates.items():
         worst = max(worst, abs(a - kin.alphas[c]) / max(abs(kin.alphas[c]), scale))
     for joint in (*mech.slides, *mech.pin_arcs):
         if joint.point in ap.coriolis and joint.guide_link != 1:
@@ -131,7 +131,7 @@ def part2() -> None:
         mech = toggle(dead_point() - off)
         asm, _, ap = polygons(mech)
         cond = asm.construction[ap.tips["B"]].conditioning
-        print(f"{off:>14.0e}{cond:>12.2e}{ap.alphas[4]:>14.4g}{worst_error(mech):>12.1e}"
+        print(f"{off:>14.0e}{cond:>12.2e}{ap.rates[4]:>14.4g}{worst_error(mech):>12.1e}"
               f"{EPS / cond:>11.1e}")
     try:
         polygons(toggle(dead_point()))
