@@ -130,7 +130,7 @@ def part2() -> None:
     for off in (1e-1, 1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7):
         mech = toggle(dead_point() - off)
         asm, _, ap = polygons(mech)
-        cond = asm.construction[ap.tips["B"]].conditioning
+        cond = asm[ap.tips["B"]].conditioning
         print(f"{off:>14.0e}{cond:>12.2e}{ap.rates[4]:>14.4g}{worst_error(mech):>12.1e}"
               f"{EPS / cond:>11.1e}")
     try:

@@ -50,7 +50,7 @@ def disagreement(mech) -> tuple[float, float]:
     names = mech.point_names
     size = max(math.dist(asm.xy(a), asm.xy(b)) for a in names for b in names)
     err = max(math.dist(asm.xy(n), ref[n]) for n in names) / size
-    return err, min(s.conditioning for s in asm.construction)
+    return err, min(s.conditioning for s in asm)
 
 
 def part1() -> None:

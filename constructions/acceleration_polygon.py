@@ -89,7 +89,7 @@ def draw_acceleration_polygon(asm: Assembly, vp: Polygon, scale: float | None = 
     >>> tuple(round(v, 12) + 0.0 for v in ap.vector("A"))
     (0.0, -12.0)
     """
-    if vp.construction is not asm.construction:
+    if vp.construction is not asm:
         raise TarsimError("the velocity polygon belongs to another construction; draw both "
                           "on one assembly")
     if scale is None:
@@ -429,7 +429,7 @@ def answer(work, ask) -> Answer:
     """
     ap = drawn_acceleration_polygon(work)
     velocities = tuple(drawn_velocity_polygon(work).tips.values())
-    m, c = work.mechanism, work.assembly.construction
+    m, c = work.mechanism, work.assembly
     arrows = tuple(drawn_velocity_polygon(work).steps) + tuple(ap.steps)
     if isinstance(ask, A.AngularAcceleration):
         a = ap.rates.get(ask.link)

@@ -71,14 +71,19 @@ def point_ref(name: str) -> Ref:
 
 
 @dataclass
-class Assembly:
-    """A mechanism drawn at one position: its construction and where each point is."""
+class Assembly(Construction):
+    """The record of a mechanism drawn at one position: every drafting act, and which step
+    locates each point, guide and axis.
 
-    mechanism: Mechanism
-    construction: Construction
-    points: dict[str, Ref]
-    guides: dict[int, Ref]
-    axes: dict[int, Ref]
+    Position by compass draws the mechanism into it; every method then draws its own
+    construction on top (the centres, the velocities, the polygons), so one record
+    holds the whole solution of a position and each figure is a slice of it.
+    """
+
+    mechanism: Mechanism | None = None
+    points: dict[str, Ref] = field(default_factory=dict)
+    guides: dict[int, Ref] = field(default_factory=dict)
+    axes: dict[int, Ref] = field(default_factory=dict)
     position_steps: frozenset[Ref] = frozenset()
     """The steps that located the mechanism: the kinematic diagram draws them, so a figure's
     slice stops there (:func:`~.record.slice`'s ``base``)."""
@@ -88,7 +93,7 @@ class Assembly:
 
     def point(self, name: str) -> g.Point:
         """The located point ``name``."""
-        return self.construction.output(self.points[name])
+        return self.output(self.points[name])
 
     def xy(self, name: str) -> tuple[float, float]:
         """Cartesian coordinates (metres) of point ``name``."""
@@ -105,7 +110,7 @@ class Assembly:
 
     def guide(self, index: int) -> g.Line:
         """The global line of slide ``index`` (``mechanism.slides[index]``)."""
-        return self.construction.output(self.guides[index])
+        return self.output(self.guides[index])
 
 
 def assemble(mech: Mechanism) -> Assembly:
@@ -122,7 +127,7 @@ def assemble(mech: Mechanism) -> Assembly:
 class _Assembler:
     def __init__(self, mech: Mechanism):
         self.m = mech
-        self.c = Construction()
+        self.c = Assembly(mechanism=mech)
         self.known: dict[str, Ref] = {}
         self.axes: dict[int, Ref] = {}
         self.guides: dict[int, Ref] = {}
@@ -205,9 +210,10 @@ class _Assembler:
                 raise AssemblyError(
                     f"no dyad locates {missing}: this mechanism needs a triad, which tarsim "
                     "cannot yet construct by compass")
-        contacts = self.touch()
-        return Assembly(self.m, self.c, dict(self.known), dict(self.guides), dict(self.axes),
-                        frozenset(self.c.steps), contacts)
+        self.c.contacts = self.touch()
+        self.c.points, self.c.guides, self.c.axes = self.known, self.guides, self.axes
+        self.c.position_steps = frozenset(self.c.steps)
+        return self.c
 
     def touch(self) -> dict[Slide | Arc, Ref]:
         """Mark where each contact's profiles touch, P.

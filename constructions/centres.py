@@ -112,11 +112,11 @@ class Centres:
 
     def point(self, i: int, j: int) -> g.Point:
         """Where ``I_ij`` is (possibly at infinity)."""
-        return self.assembly.construction.output(self.centre(i, j).ref)
+        return self.assembly.output(self.centre(i, j).ref)
 
     def conditioning(self, i: int, j: int) -> float:
         """The conditioning of ``I_ij``'s step, compounded along its construction."""
-        return self.assembly.construction[self.centre(i, j).ref].conditioning
+        return self.assembly[self.centre(i, j).ref].conditioning
 
     @property
     def links(self) -> tuple[int, ...]:
@@ -179,7 +179,7 @@ def _on(link: int) -> Phrase:
 class _Kennedy:
     def __init__(self, asm: Assembly):
         self.asm = asm
-        self.c = asm.construction
+        self.c = asm
         self.m = asm.mechanism
         self.out = Centres(asm)
         self.size = asm.size

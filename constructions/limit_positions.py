@@ -160,7 +160,7 @@ class _Limits(_Dyad):
     def __init__(self, asm: Assembly):
         super().__init__(asm.mechanism)
         self.asm = asm
-        self.c = self.asm.construction
+        self.c = self.asm
         self.steps: list[Ref] = []
         self.cond = 1.0
 

@@ -199,7 +199,7 @@ class PolygonWalk(Walk):
                        self.space_steps, self.c, aliases, **parts)
 
     def __init__(self, asm: Assembly, scale: float, pole: tuple[float, float]):
-        self.asm, self.m, self.c, self.scale = asm, asm.mechanism, asm.construction, scale
+        self.asm, self.m, self.c, self.scale = asm, asm.mechanism, asm, scale
         m = self.m
         if any(s.rolling for s in m.slides):
             s = next(s for s in m.slides if s.rolling)

@@ -58,7 +58,7 @@ def answer_omega(work, ask: A.AngularVelocity) -> Answer:
         through the follower's centre (ω unbounded: a dead point).
     """
     m, asm = work.mechanism, work.assembly
-    c, d, n = asm.construction, m.drive, ask.link
+    c, d, n = asm, m.drive, ask.link
     found = transmission_links(m, n)
     if found is None:
         raise TarsimError(f"the line-of-transmission method needs link {n} pinned to the frame "

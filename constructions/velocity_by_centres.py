@@ -53,7 +53,7 @@ def velocity_by_parallel_lines(asm: Assembly, centres: Centres, point: str, *,
 class _Method:
     def __init__(self, asm: Assembly, centres: Centres, method: str, prefix: str, scale: float):
         self.asm, self.cs, self.method, self.scale = asm, centres, method, scale
-        self.c = asm.construction
+        self.c = asm
         self.m = asm.mechanism
         self.prefix = prefix
 

@@ -100,10 +100,10 @@ def velocity_by_components(asm: Assembly, point: str, *, scale: float,
     ...               Drive(2, math.pi / 2, omega=1.0), branches={"B": "left"})
     >>> asm = assemble(m)
     >>> r = velocity_by_components(asm, "B", scale=1.0)
-    >>> tuple(round(v, 12) + 0.0 for v in r.value(asm.construction))
+    >>> tuple(round(v, 12) + 0.0 for v in r.value(asm))
     (-3.0, 0.0)
     >>> from tarsim.constructions.narration import narrate
-    >>> narrate(asm.construction["cm:B:path@O4"])
+    >>> narrate(asm["cm:B:path@O4"])
     'At B draw the perpendicular to O4B: the path of B.'
     """
     if not (math.isfinite(scale) and scale > 0.0):
@@ -120,7 +120,7 @@ def velocity_by_components(asm: Assembly, point: str, *, scale: float,
 class _Components(Walk):
     def __init__(self, asm: Assembly, scale: float, target: Node):
         self.asm, self.c, self.m, self.scale, self.target = (
-            asm, asm.construction, asm.mechanism, scale, target)
+            asm, asm, asm.mechanism, scale, target)
         start, vec = draw_input_velocity(asm, scale)
         drawn, want = self.c.output(vec).length, self.m.input_speed
         if abs(drawn - want * scale) > 1e-9 * drawn:

@@ -64,7 +64,7 @@ def velocity_result(asm: Assembly, method: str, point: str, link: int, vector: R
     known velocities, the velocities of the points it passed): those standing
     on the points the found vector rests on belong to it.
     """
-    c, base = asm.construction, asm.position_steps
+    c, base = asm, asm.position_steps
     found = slice(c, [vector], base=base, arrows=arrows).refs
     answer = tuple(dict.fromkeys((*carried, *(r for r in found if r in arrows), vector)))
     return VelocityResult(method, point, link, vector, scale, answer,
@@ -82,7 +82,7 @@ def draw_input_velocity(asm: Assembly, scale: float) -> tuple[str, Ref]:
     k = m.link(d.link)
     pivot, point = k.names[0], k.names[1]
     ref = f"V:{point}"
-    c = asm.construction
+    c = asm
     if ref in c:
         return point, ref
     r = k.span(pivot, point)
@@ -106,7 +106,7 @@ def draw_input_velocity(asm: Assembly, scale: float) -> tuple[str, Ref]:
 def answer(work, ask, result: VelocityResult) -> Answer:
     """A velocity found by a method of the space diagram, as the registry takes it: drawn on
     its own figure, ``V_<point>-<method>``, at the position's velocity scale."""
-    c = work.assembly.construction
+    c = work.assembly
     said = f"V_{ask.point} by {result.method}"
     spec = FigureSpec(f"V_{ask.point}-{result.method}", said, said, velocity_scale=result.scale)
     return Answer(ask, vector_value(*result.value(c)), c[result.vector].conditioning,

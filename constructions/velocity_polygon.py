@@ -248,7 +248,7 @@ def drawn_velocity_polygon(work) -> Polygon:
 def answer(work, ask) -> Answer:
     """ω, V or a relative velocity read off the velocity polygon."""
     vp = drawn_velocity_polygon(work)
-    m, c = work.mechanism, work.assembly.construction
+    m, c = work.mechanism, work.assembly
     if isinstance(ask, A.AngularVelocity):
         w = vp.rates.get(ask.link)
         if w is None:

@@ -55,7 +55,7 @@ def check_positions(mech: Mechanism) -> PositionCheck:
     rows = []
     for n in names:
         c, a = xy[n], reference[n]
-        step = asm.construction[asm.points[n]]
+        step = asm[asm.points[n]]
         rows.append(PointCheck(n, c, a, math.dist(c, a) / size, step.conditioning))
     return PositionCheck(mech, asm, tuple(rows), size, mech.mobility(), grashof_class(mech))
 

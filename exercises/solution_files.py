@@ -204,7 +204,7 @@ def _figures(sol: Solution, suffix: str = "") -> list[SolutionFigure]:
 def _figure(sol: Solution, spec: FigureSpec, answers) -> SolutionFigure:
     """Draw one figure of a position from the answers it holds."""
     asm, work = sol.assembly, sol.work
-    c, name = asm.construction, sol.exercise.mechanism.name
+    c, name = asm, sol.exercise.mechanism.name
     if spec.kind == "polygons":
         return _worked_page(sol, answers)
     if spec.kind == "circle diagram":
@@ -213,7 +213,7 @@ def _figure(sol: Solution, spec: FigureSpec, answers) -> SolutionFigure:
                               None)
     shown = _shown(c, answers, asm.position_steps)
     notes = notes_under(sol, Panel.SPACE) if spec.notes else []
-    fig = draw_scene(asm, shown, title=f"{name}: {spec.caption}", notes=notes,
+    fig = draw_scene(shown, title=f"{name}: {spec.caption}", notes=notes,
                      velocity_scale=spec.velocity_scale, per_cm=work.scales.space)
     return SolutionFigure(spec.stem, spec.heading, fig, shown)
 
@@ -233,9 +233,9 @@ def _worked_page(sol: Solution, answers) -> SolutionFigure:
     relative velocities ω is read from).
     """
     ex, asm, work = sol.exercise, sol.assembly, sol.work
-    c, m = asm.construction, ex.mechanism
+    c, m = asm, ex.mechanism
     where = f" at {sol.position.label}" if sol.position else ""
-    space = draw_scene(asm, Slice(c, ()), title=f"{m.name}: space diagram{where}",
+    space = draw_scene(Slice(c, ()), title=f"{m.name}: space diagram{where}",
                        per_cm=work.scales.space)
     panels, figures = [], [space]
     polygons = [(drawn_velocity_polygon(work), Panel.VELOCITY, "Velocity polygon",
@@ -269,16 +269,16 @@ def _overall_figures(ex: Exercise, overall: Overall) -> list[SolutionFigure]:
         if ex.position_asks or work is None:
             return []
         asm = work.assembly
-        fig = draw_scene(asm, Slice(asm.construction, ()), title=m.name, per_cm=work.scales.space)
+        fig = draw_scene(Slice(asm, ()), title=m.name, per_cm=work.scales.space)
         return [SolutionFigure("mechanism", "The mechanism", fig, None)]
     lp = drawn_limits(work)
     notes = [_time_ratio_words(m, lp)]
     if lp.stroke is not None:
         notes.append(f"Stroke of {lp.point}: {m.units.length_text(lp.stroke)}.")
     answers = [a for a in overall.answers if a.figures]
-    shown = _shown(work.assembly.construction, answers, work.assembly.position_steps)
+    shown = _shown(work.assembly, answers, work.assembly.position_steps)
     spec = answers[0].figures[0]
-    fig = draw_scene(work.assembly, shown, title=f"{m.name}: {spec.caption}", notes=notes,
+    fig = draw_scene(shown, title=f"{m.name}: {spec.caption}", notes=notes,
                      per_cm=work.scales.space)
     return [SolutionFigure(spec.stem, spec.heading, fig, shown)]
 

@@ -431,7 +431,7 @@ def _compass_position(sw: Sweep, asm, curve: dict[str, float]) -> dict[str, floa
             (lx, ly), (mx, my) = k.local(k.names[0]), k.local(k.names[1])
             t = math.atan2(by - ay, bx - ax) - math.atan2(my - ly, mx - lx)
         elif out.link in asm.axes:   # a lever carrying only its pivot: its slot's line,
-            dx, dy = asm.construction.output(asm.axes[out.link]).direction   # turned as the curve
+            dx, dy = asm.output(asm.axes[out.link]).direction   # turned as the curve
             t = math.atan2(dy, dx)
             t += math.pi * round(math.remainder(curve["theta"] - t, math.tau) / math.pi)
         else:

@@ -96,13 +96,15 @@ def subscript(name: str) -> str:
     return head + name[len(head):].translate(_SUB)
 
 
-def draw_kinematic_diagram(asm: Assembly, *, per_cm: float | None = None) -> Figure:
-    """Draw the kinematic diagram of an assembled mechanism.
+def draw_kinematic_diagram(record: Assembly, *, per_cm: float | None = None) -> Figure:
+    """Draw the kinematic diagram of a mechanism from the record of its position.
 
-    ``per_cm`` is the space scale (file units per paper cm) the solution chose; by
-    default the one that fits the mechanism (:func:`~tarsim.constructions.scales.space_per_cm`).
+    Everything drawn is read off the record: the points, guides and axes the
+    assembly located, the contact points it marked. ``per_cm`` is the space scale
+    (file units per paper cm) the solution chose; by default the one that fits the
+    mechanism (:func:`~tarsim.constructions.scales.space_per_cm`).
     """
-    return _Diagram(asm, per_cm).draw()
+    return _Diagram(record, per_cm).draw()
 
 
 class _Diagram:
@@ -130,7 +132,7 @@ class _Diagram:
         """Where a contact's circle, face and P lie: P as the assembly marked it."""
         c, r = self.world[s.point], s.contact.circle.radius
         ref = self.asm.contacts[s]
-        p = self.asm.construction.output(ref).xy
+        p = self.asm.output(ref).xy
         d = unit(self.asm.guide(index).direction)
         away = unit(_sub(p, c)) if math.dist(p, c) > 0.0 else (-d[1], d[0])
         return _Contact(s, c, r, p, away)
@@ -145,7 +147,7 @@ class _Diagram:
         c, r = self.world[a.centre], self.world[a.point]
         cam, roller = a.contact.face.radius, a.contact.circle.radius
         n = unit(_sub(r, c)) if math.dist(r, c) > 0.0 else (1.0, 0.0)
-        return _Pair(c, cam, r, roller, self.asm.construction.output(self.asm.contacts[a]).xy, n)
+        return _Pair(c, cam, r, roller, self.asm.output(self.asm.contacts[a]).xy, n)
 
     def track(self, a: Arc) -> _Track:
         """Lay out a curved slot or guide on paper about its centre of curvature.

@@ -1,4 +1,4 @@
-"""A scene: the space diagram with a chosen set of recorded steps drawn on it.
+"""A scene: the space diagram with a slice of its record drawn on it.
 
 The kinematic diagram is drawn as :func:`~graphics.diagram.draw_kinematic_diagram`
 draws it; each step of the scene is then drawn by what its output is, never by
@@ -94,18 +94,17 @@ def line_style(step: Step) -> str:
     return LINE_KINDS.get(step.kind, LINE_KINDS[Kind.LINE])[0]
 
 
-def draw_scene(asm: Assembly, shown: Slice, *, title: str | None = None,
+def draw_scene(shown: Slice, *, title: str | None = None,
                velocity_scale: float | None = None, notes: Sequence[str] = (),
                per_cm: float | None = None) -> Figure:
-    """Draw the kinematic diagram of ``asm`` with the steps of ``shown`` on it.
+    """Draw the kinematic diagram of a position's record with the steps of a slice of it.
 
     Parameters
     ----------
-    asm
-        The assembled mechanism whose construction holds the steps.
     shown
-        What the figure shows: a slice of the construction (its space-panel steps
-        are drawn, in its order, and numbered as it numbers them).
+        What the figure shows: a slice of a position's record (an
+        :class:`~tarsim.constructions.assembly.Assembly`). Its space-panel steps are
+        drawn over the mechanism, in its order, and numbered as it numbers them.
     title
         The caption's heading; the mechanism's name when None.
     velocity_scale
@@ -120,11 +119,11 @@ def draw_scene(asm: Assembly, shown: Slice, *, title: str | None = None,
     Raises
     ------
     TarsimError
-        If ``shown`` is a slice of another construction.
+        If the slice is not of a mechanism's record.
     """
-    if shown.construction is not asm.construction:
-        raise TarsimError("the slice to draw is of another construction than the mechanism's")
-    return _Scene(asm, shown, title, velocity_scale, notes, per_cm).draw()
+    if not isinstance(shown.construction, Assembly):
+        raise TarsimError("a scene is a slice of a mechanism's record (an assembly)")
+    return _Scene(shown, title, velocity_scale, notes, per_cm).draw()
 
 
 # ----- what a step draws --------------------------------------------------------------------
@@ -143,15 +142,15 @@ def _coincide(p: g.Point, q: g.Point) -> bool:
 class _Scene(_Diagram):
     """The kinematic diagram, then the scene's layers: working lines under it, marks over it."""
 
-    def __init__(self, asm: Assembly, shown: Slice, title: str | None,
-                 velocity_scale: float | None, notes: Sequence[str], per_cm: float | None):
-        super().__init__(asm, per_cm)
+    def __init__(self, shown: Slice, title: str | None, velocity_scale: float | None,
+                 notes: Sequence[str], per_cm: float | None):
+        super().__init__(shown.construction, per_cm)
         self.steps = shown.steps(Panel.SPACE)
         steps = self.steps
         self.title = title
         self.velocity_scale = velocity_scale
         self.notes = tuple(notes)
-        self.c = asm.construction
+        self.c = self.asm
         self.numbers = shown.numbers(Panel.SPACE)
         self.ends = _segment_ends(steps)
         self.kinds: list[str] = []

@@ -112,14 +112,14 @@ def errors(mech, ap, kin) -> tuple[float, float, float]:
 
 def vector(ap, asm, label):
     """A drawn component (m/s²): the segment of ``components[label]``, start → end."""
-    c = asm.construction
+    c = asm
     start, end = c[ap.components[label]].inputs
     (sx, sy), (ex, ey) = c.output(start).xy, c.output(end).xy
     return (ex - sx) / ap.scale, (ey - sy) / ap.scale
 
 
 def sentences(ap, asm):
-    return [narrate(asm.construction[r]) for r in ap.steps]
+    return [narrate(asm[r]) for r in ap.steps]
 
 
 # ----- parity with the analytic solver ------------------------------------------------
@@ -349,7 +349,7 @@ def toggling_four_bar(theta2, **kw):
 def test_near_dead_point_agrees_within_its_conditioning(off):
     mech = toggling_four_bar(math.pi / 2 - off, omega2=1.0, alpha2=2.0)
     ap, _, asm = polygons(mech)
-    cond = asm.construction[ap.tips["B"]].conditioning
+    cond = asm[ap.tips["B"]].conditioning
     # The tip's conditioning is reported, and small: the two lines of b′ nearly coincide.
     assert 0.0 < cond < 1e-3
     tol = tolerance(cond)
@@ -376,7 +376,7 @@ def test_the_acceleration_polygon_checks_its_own_crossing():
     # refuse its own parallel lines, not draw a far, meaningless b′.
     mech = toggling_four_bar(math.pi / 2, omega2=1.0)
     asm = assemble(mech)
-    c = asm.construction
+    c = asm
     for ref, xy in (("vp:o_v", (0.0, 0.0)), ("vp:tip:A", (-0.3, 0.0)),
                     ("vp:tip:B", (-0.1, 0.2))):
         c.give(ref, g.Point(*xy), label=ref, panel=Panel.VELOCITY)
@@ -427,14 +427,14 @@ def test_a_given_input_alpha_is_laid_off_in_its_sense():
 # ----- labels and components --------------------------------------------------------------
 def test_tips_are_primed_and_components_are_labelled():
     ap, _, asm = polygons(coupler_four_bar(0.7))
-    c = asm.construction
+    c = asm
     assert c[ap.pole].label == "o_a" and ap.tips["O2"] == ap.tips["O4"] == ap.pole
     assert {p: c[ap.tips[p]].label for p in "ABCD"} == {"A": "a′", "B": "b′", "C": "c′",
                                                         "D": "d′"}
     ap, _, asm = polygons(four_bar(0.7, omega2=3.0, alpha2=4.0))
     assert {"Aⁿ_A", "Aᵗ_A", "Aⁿ_B/A", "Aᵗ_B/A", "Aⁿ_B", "Aᵗ_B"} <= set(ap.components)
     ap, _, asm = polygons(crank_shaper(SEED_ANGLE))
-    c = asm.construction
+    c = asm
     assert {k: c[ap.tips[k]].label for k in ("A", "A4", "B", "B4")} == {
         "A": "a2′", "A4": "a4′", "B": "b5′", "B4": "b4′"}
     assert ap.vector("A2") == ap.vector("A3") == ap.vector("A")
@@ -467,7 +467,7 @@ def test_components_are_the_textbook_terms(theta):
 def test_coupler_image_is_similar_same_handed_and_divided(theta):
     mech = coupler_four_bar(theta, omega2=-3.0)
     ap, _, asm = polygons(mech)
-    c = asm.construction
+    c = asm
     P = {n: asm.xy(n) for n in "ABC"}
     p = {n: c.output(ap.tips[n]).xy for n in "ABC"}
     ratio = [math.dist(p[u], p[v]) / math.dist(P[u], P[v]) for u, v in ("AB", "BC", "CA")]
@@ -497,7 +497,7 @@ def test_coupler_image_is_similar_same_handed_and_divided(theta):
                                   "inverted slider-crank"])
 def test_every_step_is_in_the_acceleration_panel_and_replays(name):
     ap, _, asm = polygons(MECHANISMS[name](math.radians(50)))
-    c = asm.construction
+    c = asm
     assert ap.steps[0] == ap.pole
     arrows = set(ap.components.values())
     for ref in ap.steps:
@@ -522,7 +522,7 @@ def test_scale_is_chosen_nice_and_an_explicit_one_is_kept():
     ap, _, asm = polygons(mech)
     mant = ap.scale / 10.0 ** math.floor(math.log10(ap.scale))
     assert round(mant, 9) in (1.0, 2.0, 5.0)
-    drawn = math.dist(*(asm.construction.output(r).xy for r in (ap.pole, ap.tips["A"])))
+    drawn = math.dist(*(asm.output(r).xy for r in (ap.pole, ap.tips["A"])))
     assert asm.size / 5.0 < drawn <= asm.size / 2.0
     other, _, _ = polygons(mech, scale=0.001, pole=(3.0, -2.0))
     assert other.scale == 0.001

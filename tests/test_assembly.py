@@ -54,7 +54,7 @@ def test_bundled_example_matches_analytic_round_the_cycle(name):
             err, asm = worst_error(m)
         except AssemblyError:
             continue  # the crank cannot reach this angle (a rocker input); both agree below
-        worst_cond = min(s.conditioning for s in asm.construction)
+        worst_cond = min(s.conditioning for s in asm)
         # Error grows as eps / conditioning; 1e-12 leaves a margin of ~100 over that.
         assert err < 1e-12 / max(worst_cond, 1e-3), (deg, worst_cond)
         checked += 1
@@ -183,7 +183,7 @@ angle = 30
 
 def test_every_step_has_a_sentence_or_is_a_bare_line():
     asm = assemble(load_mechanism(bundled()["slotted-lever-p37"]))
-    results = [s for s in asm.construction if s.role == "result"]
+    results = [s for s in asm if s.role == "result"]
     assert {s.label for s in results} == {"A", "B", "C"}
     for s in results:
         assert narrate(s) and re.search(r"\b" + s.label + r"\b", narrate(s))
@@ -199,11 +199,11 @@ def test_six_bars_assemble_dyad_by_dyad(name):
             err, asm = worst_error(at_angle(mech, deg))
         except AssemblyError:
             continue
-        assert err < 1e-12 / max(min(s.conditioning for s in asm.construction), 1e-3)
+        assert err < 1e-12 / max(min(s.conditioning for s in asm), 1e-3)
     err, asm = worst_error(mech)
     assert err < 1e-12
     # Each joint is found by its own recorded act; the coupler point of the plate by two arcs.
-    verbs = {s.label: s.verb for s in asm.construction if s.role == "result"}
+    verbs = {s.label: s.verb for s in asm if s.role == "result"}
     assert set(verbs) == {"A", "B", "C", "D"}
 
 

@@ -153,7 +153,7 @@ def test_hinkle_slider_crank_matches_the_digest_check(_solved):
     assert abs(q["omega3"].value["value"]) == pytest.approx(1.74078, abs=5e-6)
     # The components of Fig. 5.7: V_C′ (along BC) = V_B′ = 389.398 mm/s, V_C″ (⟂ BC)
     # = 117.408 mm/s, and P, where the rod has no velocity ⟂ BC, at PB = 52.554 mm.
-    xy = {n: sol.assembly.construction.output(sol.assembly.points[n]).xy for n in "BC"}
+    xy = {n: sol.assembly.output(sol.assembly.points[n]).xy for n in "BC"}
     bc = math.dist(xy["B"], xy["C"])
     ux, uy = ((xy["C"][0] - xy["B"][0]) / bc, (xy["C"][1] - xy["B"][1]) / bc)
     vx, vy = vc.value["vector"]

@@ -105,9 +105,9 @@ def effective_conditioning(s: Solved, pair: tuple[int, int]) -> float:
     from the origin (how well it would fix a point), but a direction is compared by
     angle, and its angle is the lines' own: as well conditioned as the lines are.
     """
-    step = s.asm.construction[s.cs.centre(*pair).ref]
+    step = s.asm[s.cs.centre(*pair).ref]
     if step.output.is_at_infinity and step.verb == "intersect_lines":
-        return min(s.asm.construction[r].conditioning for r in step.inputs)
+        return min(s.asm[r].conditioning for r in step.inputs)
     return step.conditioning
 
 
@@ -599,10 +599,10 @@ def test_when_every_kennedy_line_coincides_rule_2_draws_the_velocity_profiles():
     assert c.rule == "velocities"
     kin = solve(m)
     assert centre_error(cs.point(2, 5), instant_centre(kin, 2, 5), asm.size) < 1e-15
-    steps = backward_slice(asm.construction, [c.ref]).refs
-    verbs = [asm.construction[r].verb for r in steps if r.startswith("rule2:")]
+    steps = backward_slice(asm, [c.ref]).refs
+    verbs = [asm[r].verb for r in steps if r.startswith("rule2:")]
     assert verbs.count("lay_off") == 3          # X and the two velocity tips
     assert "intersect_lines" in verbs            # the profiles cross
     # both ground centres feed the profiles: I12 (a pin) and I15 (at infinity, a parallel)
     assert {"I:12", "I:15"} <= set(steps)
-    assert asm.construction[c.ref].verb == "project_onto"
+    assert asm[c.ref].verb == "project_onto"

@@ -180,7 +180,7 @@ def test_acceleration_polygon_matches_the_finite_differences(fd, drawn):
         got = tuple(c * 1e3 for c in ap.coriolis_of(point))
         assert math.dist(got, want) <= SECOND * math.hypot(*want)
     # The sliding accelerations r̈3 and r̈4, read off the drawn components along O4 → A.
-    c = asm.construction
+    c = asm
     u = (math.cos(fd["theta4"]), math.sin(fd["theta4"]))
     for label, sign, key in (("−Aˢ_A2/A4", -1.0, "r3_ddot"), ("Aˢ_B5/B4", 1.0, "r4_ddot")):
         start, end = c[ap.components[label]].inputs

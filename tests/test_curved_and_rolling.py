@@ -154,7 +154,7 @@ def test_a_block_on_a_curved_guide_has_its_centre_at_the_centre_of_curvature():
     c = cs.centre(1, 4)
     assert c.rule == "curved" and c.primary
     assert cs.point(1, 4).xy == pytest.approx((0.150, -0.200), abs=1e-15)
-    sentence = narrate(asm.construction[c.ref])
+    sentence = narrate(asm[c.ref])
     assert "curved about C" in sentence and "centre of curvature C" in sentence
 
 
@@ -196,7 +196,7 @@ def test_velocity_by_centres_matches_the_analytic_velocity(name, point, method):
         kin, asm = solve(m), assemble(m)
         cs = locate_centres(asm)
         r = METHODS[method](asm, cs, point, scale=1.0)
-        v, ref = r.value(asm.construction), kin.velocities[point]
+        v, ref = r.value(asm), kin.velocities[point]
         assert math.dist(v, ref) <= 1e-9 * math.hypot(*ref), (deg, v, ref)
 
 

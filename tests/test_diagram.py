@@ -450,9 +450,9 @@ def test_a_plates_tint_lies_under_every_construction_line():
     from tarsim.graphics.scene import draw_scene
     asm = assemble(load_mechanism(bundled()["hinkle-four-bar"]))
     locate_centres(asm)
-    c = asm.construction
+    c = asm
     shown = Slice(c, tuple(s.id for s in c if s.kind in (Kind.CENTRE, Kind.KENNEDY_LINE)))
-    styles = [getattr(it, "style", "") for it in draw_scene(asm, shown).items]
+    styles = [getattr(it, "style", "") for it in draw_scene(shown).items]
     assert "plate_fill" in styles and "plate" in styles
     lines = [i for i, s in enumerate(styles) if s in ("kennedy", "construction", "working")]
     assert lines and max(i for i, s in enumerate(styles) if s == "plate_fill") < min(lines)

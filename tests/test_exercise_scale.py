@@ -90,8 +90,8 @@ def test_a_stated_velocity_scale_sets_the_vectors_drawn_by_centres():
     sol = solve_exercise(ex)
     assert sol.work.scales.vector == pytest.approx(40.0 / 20.0, rel=1e-12)
     answers = [a for a in sol.answers if a.figures and a.figures[0].velocity_scale]
-    shown = Slice(sol.assembly.construction, tuple(a.refs[-1] for a in answers))
-    fig = draw_scene(sol.assembly, shown, velocity_scale=sol.work.scales.vector)
+    shown = Slice(sol.assembly, tuple(a.refs[-1] for a in answers))
+    fig = draw_scene(shown, velocity_scale=sol.work.scales.vector)
     assert "Velocity scale 1 cm = 20 mm/s" in [t.text for t in fig.items if hasattr(t, "text")]
 
 

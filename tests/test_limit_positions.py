@@ -249,11 +249,11 @@ def test_crank_shaper_files_carry_the_whole_mechanism(solved):
     assert len(doc["positions"]) == 2
     # The limit figure's circled numbers are steps.md's numbers for it.
     lp = drawn_limits(overall.work)
-    narrated = Slice(lp.assembly.construction, tuple(lp.steps)).numbered()
+    narrated = Slice(lp.assembly, tuple(lp.steps)).numbered()
     part = files["steps.md"].split("## Limit positions")[1].split("## Results")[0]
     listed = [int(n) for n in re.findall(r"^(\d+)\. ", part, re.M)]
     assert listed == [n for n, _ in narrated] == list(range(1, len(narrated) + 1))
-    fig = draw_scene(lp.assembly, Slice(lp.assembly.construction, tuple(lp.steps)))
+    fig = draw_scene(Slice(lp.assembly, tuple(lp.steps)))
     assert badge_numbers(fig) == listed
     # solution.svg holds every figure, one under another.
     stems = [n[:-4] for n in files if n.endswith(".svg") and n != "solution.svg"]
@@ -287,7 +287,7 @@ def test_the_limit_figure_reads_its_angles_and_its_stroke_as_a_drafter_marks_the
     whose two heads stand exactly the stroke apart at the figure's scale."""
     ex = load_exercise(resolve(exercise_id))
     lp = draw_limit_positions(ex.mechanism)
-    c = lp.assembly.construction
+    c = lp.assembly
     angles = [c.output(f"limit:{k}") for k in ("slow", "quick")]
     assert [math.radians(a.degrees) for a in angles] == pytest.approx([lp.slow, lp.quick],
                                                                       abs=1e-12)
@@ -295,7 +295,7 @@ def test_the_limit_figure_reads_its_angles_and_its_stroke_as_a_drafter_marks_the
     # Each arc turns with ω from the limit the stroke starts at.
     assert all(math.copysign(1.0, a.sweep) == math.copysign(1.0, ex.mechanism.drive.omega)
                for a in angles)
-    fig = draw_scene(lp.assembly, Slice(lp.assembly.construction, tuple(lp.steps)))
+    fig = draw_scene(Slice(lp.assembly, tuple(lp.steps)))
     texts = [t.text for t in fig.items if hasattr(t, "text")]
     assert slow in texts and stroke_text in texts
     per_cm = float(re.search(r"Scale (\d+) cm = ([\d.]+)", " ".join(texts)).group(2)) / \

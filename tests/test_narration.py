@@ -63,7 +63,7 @@ def test_every_step_of_a_bundled_solution_is_said_in_full(solved, exercise_id):
     works += [sol.work for sol in worked.positions]
     said = 0
     for work in works:
-        for step in work.assembly.construction:
+        for step in work.assembly:
             words = narrate(step)
             if step.phrase is None:
                 assert words == ""

@@ -40,12 +40,12 @@ def D(deg):
 
 def every_centre(cs) -> Slice:
     """The whole centre construction, in the order a student draws it."""
-    return Slice(cs.assembly.construction, tuple(cs.construction_refs()))
+    return Slice(cs.assembly, tuple(cs.construction_refs()))
 
 
 def circle_diagram(cs, **kw):
     """The circle diagram of every centre ``cs`` found."""
-    c = cs.assembly.construction
+    c = cs.assembly
     return draw_circle_diagram(slice(c, [x.ref for x in cs.found.values()]),
                                title=cs.assembly.mechanism.name, **kw)
 
@@ -159,7 +159,7 @@ def test_circle_diagram_up_to_a_discovery_shades_its_two_triangles():
 def test_every_centre_of_the_four_bar_is_labelled_and_numbered_in_order():
     asm, cs = centres_of(four_bar(D(60), omega2=10))
     shown = every_centre(cs)
-    read = Read(to_svg(draw_scene(asm, shown)))
+    read = Read(to_svg(draw_scene(shown)))
     for c in cs.found.values():
         assert typeset(c.label)[0] in read.texts
     numbered = shown.numbered()
@@ -173,7 +173,7 @@ def test_every_centre_of_the_four_bar_is_labelled_and_numbered_in_order():
 
 def test_a_centre_at_infinity_gets_the_infinity_marker():
     asm, cs = centres_of(offset_slider_crank(D(60), omega2=10))
-    read = Read(to_svg(draw_scene(asm, every_centre(cs))))
+    read = Read(to_svg(draw_scene(every_centre(cs))))
     assert "I₁₄ → ∞" in read.texts
     # A two-headed arrow: two arrowheads whose tips lie in opposite senses across the guide.
     heads = read.paths("arrowhead")
@@ -186,7 +186,7 @@ def test_a_far_centre_is_an_arrow_at_the_edge_and_nothing_leaves_the_page():
     asm, cs = centres_of(four_bar(D(130), omega2=10))
     far = cs.point(1, 3).xy
     assert math.dist(far, asm.xy("O4")) > 10.0
-    read = Read(to_svg(draw_scene(asm, every_centre(cs))))
+    read = Read(to_svg(draw_scene(every_centre(cs))))
     assert read.paths("edge_arrow")
     (label,) = [t for t in read.texts if t.startswith("to I₁₃")]
     metres = float(re.search(r"([\d.]+) m from", label).group(1))
@@ -200,7 +200,7 @@ def test_a_far_centre_is_an_arrow_at_the_edge_and_nothing_leaves_the_page():
 def test_coincident_centres_share_one_label():
     # An in-line slider-crank at dead centre: I13 ≡ I34 at the piston pin, I24 ≡ I12 at O2.
     asm, cs = centres_of(offset_slider_crank(0.0, offset=0.0, omega2=5))
-    texts = Read(to_svg(draw_scene(asm, every_centre(cs)))).texts
+    texts = Read(to_svg(draw_scene(every_centre(cs)))).texts
     assert "I₁₂ ≡ I₂₄" in texts
     assert "I₃₄ ≡ I₁₃" in texts
 
@@ -209,7 +209,7 @@ def test_common_normals_and_kennedy_lines_read_differently_with_a_legend():
     mech = load_mechanism(bundled()["crank-shaper"])
     asm, cs = centres_of(mech.with_drive(replace(mech.drive, angle=D(-44.072))))
     notes = ["I24 is ill-conditioned: lines meet at 0.002°"]
-    read = Read(to_svg(draw_scene(asm, every_centre(cs), notes=notes)))
+    read = Read(to_svg(draw_scene(every_centre(cs), notes=notes)))
     assert read.paths("normal") and read.paths("kennedy")
     styles = {g.get("class"): g.get("stroke-dasharray") for g in read.root.iter(SVG + "g")}
     assert styles["normal"] != styles["kennedy"]
@@ -221,7 +221,7 @@ def test_common_normals_and_kennedy_lines_read_differently_with_a_legend():
 def test_the_output_is_byte_identical_on_repeat():
     def once():
         asm, cs = watt()
-        return to_svg(draw_scene(asm, every_centre(cs), notes=cs.warnings())), \
+        return to_svg(draw_scene(every_centre(cs), notes=cs.warnings())), \
             to_svg(circle_diagram(cs))
     assert once() == once()
 
@@ -234,8 +234,8 @@ def velocity_scene(theta=60.0):
     r = velocity_by_radius_rotation(asm, cs, "B", scale=scale)
     refs = [cs.centre(1, 2).ref, cs.centre(2, 3).ref, cs.centre(3, 4).ref,
             *cs.centre(1, 3).lines, cs.centre(1, 3).ref, *r.steps]
-    shown = Slice(asm.construction, tuple(dict.fromkeys(refs)))
-    fig = draw_scene(asm, shown, title="V_B by radius rotation", velocity_scale=scale)
+    shown = Slice(asm, tuple(dict.fromkeys(refs)))
+    fig = draw_scene(shown, title="V_B by radius rotation", velocity_scale=scale)
     return mech, asm, shown, fig, scale
 
 
@@ -316,7 +316,7 @@ def test_step_numbers_run_from_one_and_skip_givens_and_the_mechanism():
 
 def test_numbered_steps_of_a_slice_follow_the_record():
     _, asm, _, _, _ = velocity_scene()
-    c = asm.construction
+    c = asm
     numbered = slice(c, ["rr:B:V"]).numbered()
     order = list(c.steps)
     ids = [s.id for _, s in numbered]
@@ -328,12 +328,12 @@ def test_numbered_steps_of_a_slice_follow_the_record():
 
 def test_line_styles_follow_the_kind_of_step():
     asm, cs = centres_of(four_bar(D(60)))
-    c = asm.construction
+    c = asm
     assert line_style(c["K:13/2"]) == "kennedy"
     assert line_style(c["axis:2"]) == "working"          # the mechanism's own line
     _, asm, _, _, _ = velocity_scene()
-    assert line_style(asm.construction["rr:B:gauge:j"]) == "gauge"
-    assert line_style(asm.construction["v:perp:A"]) == "working"
+    assert line_style(asm["rr:B:gauge:j"]) == "gauge"
+    assert line_style(asm["v:perp:A"]) == "working"
 
 
 def test_typeset_sets_subscripts_as_the_notes_write_them():
@@ -362,13 +362,23 @@ def test_a_vector_at_a_far_centre_stays_off_the_page_and_its_number_rides_the_ed
     asm, cs = centres_of(mech)
     scale = choose_scales(asm).vector
     r = velocity_by_radius_rotation(asm, cs, "M", scale=scale)
-    shown = slice(asm.construction, r.answer)
+    shown = slice(asm, r.answer)
     plain = Read(to_svg(draw_kinematic_diagram(asm)))
-    read = Read(to_svg(draw_scene(asm, shown, velocity_scale=scale)))
+    read = Read(to_svg(draw_scene(shown, velocity_scale=scale)))
     assert read.page[0] < 1.6 * plain.page[0] and read.page[1] < 1.6 * plain.page[1]
-    at_i24 = next(s for s in r.steps if asm.construction[s].label.startswith("V_I"))
+    at_i24 = next(s for s in r.steps if asm[s].label.startswith("V_I"))
     numbers = dict(shown.numbered())
     number = next(n for n, s in numbers.items() if s.id == at_i24)
     assert number in read.badges()
     far = next(t for t in read.texts if t.startswith("to I"))
     assert "342.2 mm" in far
+
+
+def test_a_scene_is_a_slice_of_a_mechanisms_record():
+    from tarsim.constructions.record import Construction
+    with pytest.raises(TarsimError, match="a scene is a slice of a mechanism's record"):
+        draw_scene(Slice(Construction(), ()))
+    asm = assemble(four_bar(D(60)))          # the position's record itself
+    assert isinstance(asm, Construction) and asm.position_steps == frozenset(asm.steps)
+    read = Read(to_svg(draw_scene(slice(asm, []))))
+    assert not read.paths("working") and not read.badges()   # the mechanism alone

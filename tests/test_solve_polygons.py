@@ -201,7 +201,7 @@ def test_an_asked_relative_vector_is_drawn_from_one_tip_to_the_other_and_named(a
     and it is narrated ("Join a to b: V_B/A = …")."""
     (sol,) = solve_positions(four_bar_exercise(f'["{asked}"]'))
     poly = sol.velocity_polygon if prefix == "vp" else sol.acceleration_polygon
-    c = sol.assembly.construction
+    c = sol.assembly
     step = c[f"{prefix}:rel:B/A"]
     assert step.label == asked and step.inputs == (poly.tips["A"], poly.tips["B"])
     assert f"{prefix}:rel:B/A" in poly.steps

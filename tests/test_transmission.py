@@ -49,7 +49,7 @@ def test_omega_agrees_with_the_analytic_solver_round_the_cycle(angle, branch):
 
 def test_the_perpendiculars_are_drawn_and_measured_as_the_text_says():
     sol = solved(angle=60)
-    c = sol.assembly.construction
+    c = sol.assembly
     o2, o4, g, h = (c.output(r).xy for r in ("P:O2", "P:O4", "lt:4:G", "lt:4:H"))
     a, b = sol.assembly.xy("A"), sol.assembly.xy("B")
     ux, uy = (b[0] - a[0]) / math.dist(a, b), (b[1] - a[1]) / math.dist(a, b)
@@ -68,7 +68,7 @@ def test_centres_on_opposite_sides_turn_the_follower_the_other_way(angle, apart)
     # At θ2 = 300° the coupler runs between O2 and O4: the rocker turns against the crank.
     sol = solved(angle=angle)
     q = sol.quantities["omega4"]
-    said = narrate(sol.assembly.construction["lt:4:O4H"])
+    said = narrate(sol.assembly["lt:4:O4H"])
     assert q.passed and ("opposite sides" in said) == apart == (q.value["value"] < 0)
 
 

@@ -20,7 +20,7 @@ from tarsim.constructions import geometry as g
 from tarsim.constructions.assembly import Assembly, assemble
 from tarsim.constructions.errors import AssemblyError, TarsimError
 from tarsim.constructions.model import Drive, Link, Mechanism, Slide, SlideKind, Units
-from tarsim.constructions.record import Construction, Role
+from tarsim.constructions.record import Role
 from tarsim.constructions.record import slice as backward_slice
 from tarsim.constructions.velocity_by_components import velocity_by_components
 from tarsim.exercises.catalog import bundled
@@ -55,7 +55,7 @@ def hand_assembled(mech, guides):
 
     ``guides`` maps a slide index to (point it passes through, direction).
     """
-    c = Construction()
+    c = Assembly(mechanism=mech)
     points = {n: c.give(f"P:{n}", g.Point(*xy), label=n)
               for n, xy in solver.solve_positions(mech).items()}
     lines = {}
@@ -65,7 +65,8 @@ def hand_assembled(mech, guides):
     k = mech.link(mech.drive.link)
     axes = {k.number: c.draw(f"axis:{k.number}", "line_through", points[k.names[0]],
                              points[k.names[1]])}
-    return Assembly(mech, c, points, lines, axes, frozenset(c.steps))
+    c.points, c.guides, c.axes, c.position_steps = points, lines, axes, frozenset(c.steps)
+    return c
 
 
 def speed_in(mech):
@@ -79,8 +80,8 @@ def check(asm, point, *, link=None, scale=2.0, cond_floor=0.0):
     r = velocity_by_components(asm, point, scale=scale, link=link)
     kin = solver.solve(m)
     want = solver.point_velocity(kin, m, r.link, point)
-    got = r.value(asm.construction)
-    step = asm.construction[r.vector]
+    got = r.value(asm)
+    step = asm[r.vector]
     assert step.conditioning > cond_floor
     tol = max(1e-9, 64 * EPS / step.conditioning)
     assert math.dist(got, want) <= tol * speed_in(m), (point, got, want)
@@ -95,7 +96,7 @@ def input_refs(mech):
 
 
 def check_record(asm, r):
-    c = asm.construction
+    c = asm
     inputs = input_refs(asm.mechanism)
     step = c[r.vector]
     assert r.method == "components"
@@ -129,7 +130,7 @@ def check_record(asm, r):
 def test_four_bar_rocker_pin_by_case_1(deg):
     asm = assemble(four_bar(math.radians(deg), omega2=3.0))
     r = check(asm, "B")
-    c = asm.construction
+    c = asm
     # the notes' case 1: V_A′ along AB, laid off at B, ⟂ AB at its tip, meets ⟂ O4B
     assert narrate(c["cm:A:foot@A-B"]) == ("Project the tip of V_A onto AB: V_A′ is the "
                                            "component of V_A along AB.")
@@ -149,9 +150,9 @@ def test_four_bar_rocker_pin_by_case_1(deg):
 def test_offset_slider_crank_piston_by_case_1_with_the_guide(deg):
     asm = assemble(offset_slider_crank(math.radians(deg), omega2=-4.0))
     r = check(asm, "C", scale=0.5)
-    assert asm.construction["cm:C:tip"].inputs == ("cm:C:perp@A", "guide:0")
-    assert narrate(asm.construction["cm:C:tip"]).endswith("meets the guide of C at the tip of V_C.")
-    vx, vy = r.value(asm.construction)
+    assert asm["cm:C:tip"].inputs == ("cm:C:perp@A", "guide:0")
+    assert narrate(asm["cm:C:tip"]).endswith("meets the guide of C at the tip of V_C.")
+    vx, vy = r.value(asm)
     assert abs(vy) <= 1e-15  # along the guide
 
 
@@ -160,7 +161,7 @@ def test_four_bar_file_units_reach_the_sentences():
     m = m.with_drive(Drive(2, m.drive.angle, 10.0))
     asm = assemble(m)
     r = check(asm, "B", scale=0.1)
-    assert narrate(asm.construction[r.vector]).endswith(" mm/s.")
+    assert narrate(asm[r.vector]).endswith(" mm/s.")
 
 
 # ----------------------------------------------------------------------------- cases 2 and 3
@@ -169,10 +170,10 @@ def test_four_bar_file_units_reach_the_sentences():
 def test_coupler_point_off_ab_by_case_2(deg):
     asm = assemble(coupler_four_bar(math.radians(deg)))
     r = check(asm, "C")
-    tip = asm.construction["cm:C:tip"]
+    tip = asm["cm:C:tip"]
     assert tip.inputs == ("cm:C:perp@A", "cm:C:perp@B")
     assert "not the vector sum" in narrate(tip)
-    labels = {asm.construction[s].label for s in r.steps}
+    labels = {asm[s].label for s in r.steps}
     assert {"V_A′", "V_C′(AC)", "V_B′", "V_C′(BC)", "V_B"} <= labels
 
 
@@ -180,7 +181,7 @@ def test_coupler_point_off_ab_by_case_2(deg):
 def test_coupler_point_on_ab_by_case_3(deg):
     asm = assemble(coupler_four_bar(math.radians(deg)))
     r = check(asm, "D")
-    c = asm.construction
+    c = asm
     assert c["cm:D:gauge"].inputs == ("cm:A:ncomp@A-B", "cm:B:ncomp@A-B")
     assert c["cm:D:tip"].inputs == ("cm:D:pgram′", "cm:D:pgram″")
     labels = {c[s].label for s in r.steps}
@@ -194,7 +195,7 @@ def test_seed_004_slider_crank_components():
     scale = 1e-1  # 1 m/s drawn 100 mm long
     rc = check(asm, "C", scale=scale)
     rd = check(asm, "D", scale=scale)
-    c = asm.construction
+    c = asm
 
     def mm_s(p, q):
         return math.dist(c.output(p).xy, c.output(q).xy) / scale / MM
@@ -235,7 +236,7 @@ def test_seed_004_four_bar_rocker_speed():
                   Drive(2, math.radians(60), 10.0), branches={"B": "left"}, units=Units("mm"))
     asm = assemble(m)
     r = check(asm, "B", scale=0.1)
-    assert math.hypot(*r.value(asm.construction)) / MM == pytest.approx(365.879, abs=5e-4)
+    assert math.hypot(*r.value(asm)) / MM == pytest.approx(365.879, abs=5e-4)
     assert asm.xy("B")[0] / MM == pytest.approx(133.881, abs=5e-4)
 
 
@@ -246,7 +247,7 @@ def test_crank_shaper_ram(deg):
     # Seed 003: the ram B is a block on the frame guide and a pin in the lever's slot.
     asm = assemble(crank_shaper(math.radians(deg)))
     r = check(asm, "B", scale=1.0)
-    c = asm.construction
+    c = asm
     # Hinkle Fig. 5.8: V_A4 ⟂ O4A from the parallel to the slot through the tip of V_A
     assert c["cm:A@4:tip"].inputs == ("cm:A@4:slide@0", "cm:A@4:path@O4")
     # the gauge line from O4 gives V_B4 (case 3 with O4 at rest)
@@ -261,7 +262,7 @@ def test_crank_shaper_ram(deg):
 def test_crank_shaper_coincident_points_of_the_lever(point):
     asm = assemble(crank_shaper(math.radians(30)))
     r = check(asm, point, link=4, scale=1.0)
-    assert r.link == 4 and asm.construction[r.vector].label == f"V_{point}4"
+    assert r.link == 4 and asm[r.vector].label == f"V_{point}4"
 
 
 @pytest.mark.parametrize("deg", range(0, 360, 30))
@@ -279,7 +280,7 @@ def test_scotch_yoke_translates(deg):
     asm = hand_assembled(m, {0: ("A", (0.0, 1.0)), 1: ("O2", (1.0, 0.0))})
     check(asm, "A", link=4)
     r = check(asm, "Y")
-    c = asm.construction
+    c = asm
     assert c["cm:A@4:tip"].inputs == ("cm:A@4:slide@0", "cm:A@4:glide@1")
     assert c["cm:Y:tip"].verb == "transfer" and "without turning" in narrate(c["cm:Y:tip"])
     assert r.value(c)[1] == pytest.approx(0.0, abs=1e-15)
@@ -288,9 +289,9 @@ def test_scotch_yoke_translates(deg):
 def test_block_point_taken_on_the_slider_translates():
     asm = assemble(offset_slider_crank(0.7, omega2=2.0))
     r = check(asm, "A", link=4)
-    assert asm.construction["cm:A@4:tip"].verb == "transfer"
-    assert r.value(asm.construction) == pytest.approx(
-        velocity_by_components(asm, "C", scale=2.0).value(asm.construction), abs=1e-15)
+    assert asm["cm:A@4:tip"].verb == "transfer"
+    assert r.value(asm) == pytest.approx(
+        velocity_by_components(asm, "C", scale=2.0).value(asm), abs=1e-15)
 
 
 @pytest.mark.parametrize("path", [*sorted(bundled().values()), DATA / "stephenson-six-bar.toml",
@@ -315,7 +316,7 @@ def test_every_point_of_the_examples_round_the_cycle(path):
 
 def test_second_call_reuses_what_the_first_drew():
     asm = assemble(coupler_four_bar(math.radians(40)))
-    c = asm.construction
+    c = asm
     rb = velocity_by_components(asm, "B", scale=2.0)
     before = set(c.steps)
     rc = velocity_by_components(asm, "C", scale=2.0)
@@ -330,7 +331,7 @@ def test_second_call_reuses_what_the_first_drew():
 
 def test_point_first_drawn_on_the_way_gets_its_own_result_arrow():
     asm = assemble(crank_shaper(math.radians(30)))
-    c = asm.construction
+    c = asm
     velocity_by_components(asm, "B", scale=1.0)
     assert c["cm:V:A@4"].role is Role.CONSTRUCTION
     r = check(asm, "A", link=4, scale=1.0)
@@ -341,9 +342,9 @@ def test_point_first_drawn_on_the_way_gets_its_own_result_arrow():
 def test_the_input_point_and_a_frame_point():
     asm = assemble(four_bar(1.0, omega2=2.0))
     r = check(asm, "A")
-    assert asm.construction[r.vector].output.vector == asm.construction["V:A"].output.vector
+    assert asm[r.vector].output.vector == asm["V:A"].output.vector
     r = check(asm, "O4")
-    assert r.value(asm.construction) == (0.0, 0.0)
+    assert r.value(asm) == (0.0, 0.0)
 
 
 # ----------------------------------------------------------------------------- errors
@@ -418,9 +419,9 @@ def test_each_vector_of_a_figure_has_a_name_of_its_own():
     speed = asm.mechanism.input_speed
     for point in ("B", "D", "E"):
         r = velocity_by_components(asm, point, scale=0.05 / speed)
-        names = [asm.construction[s].label for s in r.steps
-                 if asm.construction[s].verb == "join" and asm.construction[s].label]
+        names = [asm[s].label for s in r.steps
+                 if asm[s].verb == "join" and asm[s].label]
         assert len(names) == len(set(names)), names
-    c = asm.construction
+    c = asm
     said = " ".join(narrate(s) for s in c)
     assert "V_E′(AE) = V_A′(AE)" in said and "V_E′(BE) = V_B′(BE)" in said

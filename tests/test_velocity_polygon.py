@@ -104,8 +104,8 @@ def test_every_tip_and_omega_matches_the_analytic_solver(name, theta):
 def test_coincident_points_on_a_slot_are_both_drawn(name):
     vp, asm = polygon(MECHANISMS[name](math.radians(40)))
     assert "A4" in vp.tips and vp.tips["A4"] != vp.tips["A"]
-    assert asm.construction[vp.tips["A4"]].label == "a4"
-    assert asm.construction[vp.tips["A"]].label == "a2"   # the notes' A2 = A3
+    assert asm[vp.tips["A4"]].label == "a4"
+    assert asm[vp.tips["A"]].label == "a2"   # the notes' A2 = A3
     assert vp.vector("A2") == vp.vector("A3") == vp.vector("A")
 
 
@@ -143,7 +143,7 @@ def test_four_bar_peers_benchmark():
                                   "Watt six-bar", "offset slider-crank", "Scotch yoke"])
 def test_every_polygon_step_is_in_the_velocity_panel_with_a_sentence(name):
     vp, asm = polygon(MECHANISMS[name](math.radians(50)))
-    c = asm.construction
+    c = asm
     assert vp.steps[0] == vp.pole and c[vp.pole].label == "o_v"
     for ref in vp.steps:
         step = c[ref]
@@ -163,7 +163,7 @@ def test_every_polygon_step_is_in_the_velocity_panel_with_a_sentence(name):
 
 def test_sentences_speak_the_course():
     vp, asm = polygon(MECHANISMS["catalog four-bar"](math.radians(60)))   # in mm
-    said = [narrate(asm.construction[r]) for r in vp.steps]
+    said = [narrate(asm[r]) for r in vp.steps]
     assert "Through a draw a line ⟂ AB (the direction of V_B/A)." in said
     assert "Through o_v draw a line ⟂ O4B (the direction of V_B, as O4 is fixed)." in said
     assert any(s.startswith("From o_v lay off o_v a = V_A = ω2·O2A = 10 rad/s × 100 mm = "
@@ -173,7 +173,7 @@ def test_sentences_speak_the_course():
 
 def test_slot_sentences_name_the_coincident_points():
     vp, asm = polygon(crank_shaper(math.pi / 2 - 2.34))
-    said = [narrate(asm.construction[r]) for r in vp.steps]
+    said = [narrate(asm[r]) for r in vp.steps]
     assert ("Through a2 draw the parallel to the slot of link 4 (the direction of V_A4/A2, "
             "the sliding velocity).") in said
     assert any(s.startswith("B lies on line O4A of link 4, so b4 lies on o_v a4") for s in said)
@@ -181,7 +181,7 @@ def test_slot_sentences_name_the_coincident_points():
 
 def test_every_step_replays_to_its_output():
     vp, asm = polygon(coupler_four_bar(0.7))
-    c = asm.construction
+    c = asm
     for ref in vp.steps + vp.space_steps:
         again, stored = replay(c, ref), c.output(ref)
         assert again == stored
@@ -192,7 +192,7 @@ def test_every_step_replays_to_its_output():
 def test_coupler_image_is_similar_and_same_handed(theta):
     mech = coupler_four_bar(theta, omega2=-3.0)
     vp, asm = polygon(mech)
-    c = asm.construction
+    c = asm
     P = {n: asm.xy(n) for n in "ABC"}
     p = {n: c.output(vp.tips[n]).xy for n in "ABC"}
     ratio = [math.dist(p[u], p[v]) / math.dist(P[u], P[v]) for u, v in ("AB", "BC", "CA")]
@@ -219,7 +219,7 @@ def test_scale_is_chosen_nice_and_an_explicit_one_is_kept():
     mant = vp.scale / 10.0 ** math.floor(math.log10(vp.scale))
     assert round(mant, 9) in (1.0, 2.0, 5.0)
     # The input velocity is drawn between a quarter and a half of the mechanism's size.
-    drawn = math.dist(*(asm.construction.output(r).xy for r in (vp.pole, vp.tips["A"])))
+    drawn = math.dist(*(asm.output(r).xy for r in (vp.pole, vp.tips["A"])))
     assert asm.size / 5.0 < drawn <= asm.size / 2.0
     other, _ = polygon(mech, scale=0.01, pole=(3.0, -2.0))
     assert other.scale == 0.01

@@ -34,8 +34,8 @@ def shaper_panels():
     mech = crank_shaper(SHAPER_T)
     asm = assemble(mech)
     vp = draw_velocity_polygon(asm)
-    space = draw_scene(asm, Slice(asm.construction, ()), title="crank shaper: space diagram")
-    velocity = draw_polygon_panel(Slice(asm.construction, tuple(vp.steps)), panel=Panel.VELOCITY,
+    space = draw_scene(Slice(asm, ()), title="crank shaper: space diagram")
+    velocity = draw_polygon_panel(Slice(asm, tuple(vp.steps)), panel=Panel.VELOCITY,
                                   scale=vp.scale, units=mech.units, title="Velocity polygon")
     c, refs, _, _ = shaper_acceleration()
     return [space, velocity, draw_acceleration(c, refs, mech)]
