@@ -50,12 +50,12 @@ class Method:
     stage construct first, and of several methods for one ask the first is the
     quantity's answer. ``chosen_by`` are the names in an exercise's ``[ask]
     methods`` that choose it (none: it is always used), the first of them its own;
-    of methods of one stage, the one chosen first answers first. ``used`` says
-    whether the exercise uses the method for an ask (by default, whether it is
-    chosen; a polygon is also drawn when an acceleration needs it). ``askable`` names the asks it
-    answers of a mechanism beyond those its points and links give (a four-bar's
-    Grashof class, a quick-return's time ratio), and ``why_not`` says why a
-    mechanism it does not fit has none.
+    of methods of one stage, the one chosen first answers first. ``when`` decides
+    whether the exercise uses the method for an ask where being chosen is not the
+    whole rule (a polygon is also drawn when an acceleration needs it). ``askable``
+    names the asks it answers of a mechanism beyond those its points and links give
+    (a four-bar's Grashof class, a quick-return's time ratio), and ``why_not`` says
+    why a mechanism it does not fit has none.
     """
 
     name: str
