@@ -22,6 +22,14 @@ __all__ = [
 class TarsimError(Exception):
     """Root of every error tarsim raises on purpose; the CLI catches only this."""
 
+    def at(self, where: str) -> TarsimError:
+        """The same error, said to have happened at ``where`` (one of an exercise's listed
+        positions): the same class and attributes, ``where`` leading its line (a line
+        that already names the place is left as it is)."""
+        if where not in str(self):
+            self.args = (f"at {where}: {self}",)
+        return self
+
 
 class InputError(TarsimError):
     """A mechanism or exercise file is malformed or names something unknown."""
@@ -35,6 +43,13 @@ class InputError(TarsimError):
         self.column = column
         self.key = key
         super().__init__(str(self))
+
+    def at(self, where: str) -> InputError:
+        """As :meth:`TarsimError.at`; the file and line still lead the line."""
+        if where not in self.message:
+            self.message = f"at {where}: {self.message}"
+            self.args = (str(self),)
+        return self
 
     def __str__(self) -> str:
         where = ""

@@ -10,14 +10,13 @@ check against the analytic solution.
 from __future__ import annotations
 
 import functools
-import math
 import sys
 from dataclasses import replace
 from pathlib import Path
 
 import click
 
-from ..constructions.errors import CheckMismatch, TarsimError
+from ..constructions.errors import CheckMismatch, InputError, TarsimError
 from ..constructions.model import Drive, Mechanism
 
 __all__ = ["cli"]
@@ -53,10 +52,14 @@ def _mechanism(source: str, angle: float | None) -> Mechanism:
 
 def _at_angle(mech: Mechanism, angle: float | None) -> Mechanism:
     """The mechanism with its input turned to ``angle`` (file units), if one is given."""
+    from .mechanism_file import RANGE, in_range, radians_in_turn
+
     if angle is None:
         return mech
+    if not in_range(angle):
+        raise InputError(f"--angle must be a number {RANGE}, got {angle:g}")
     d = mech.drive
-    rad = angle if mech.units.angle == "rad" else math.radians(angle)
+    rad = radians_in_turn(angle, mech.units.angle)
     return mech.with_drive(Drive(d.link, rad, d.omega, d.alpha, d.alpha_given))
 
 

@@ -30,7 +30,6 @@ from __future__ import annotations
 import difflib
 import math
 import re
-import tomllib
 from dataclasses import dataclass, replace
 from pathlib import Path
 
@@ -39,7 +38,8 @@ from ..constructions import registry
 from ..constructions.errors import InputError
 from ..constructions.model import LENGTH_UNITS, Drive, Mechanism
 
-from .mechanism_file import SourceMap, _Reader, _toml_error
+from .mechanism_file import (RANGE, SourceMap, _float, _Reader, in_range, radians_in_turn,
+                             read_source, read_toml)
 
 __all__ = ["Exercise", "Position", "load_exercise", "parse_exercise", "asks_of"]
 
@@ -131,20 +131,13 @@ def load_exercise(path: str | Path, exercise_id: str | None = None) -> Exercise:
         Naming file:line and the field, with the closest valid name.
     """
     path = Path(path)
-    try:
-        text = path.read_text(encoding="utf-8")
-    except (OSError, UnicodeDecodeError) as e:
-        raise InputError(f"cannot read the file: {e.strerror or e}", file=str(path)) from None
-    return parse_exercise(text, str(path), exercise_id or path.stem)
+    return parse_exercise(read_source(path), str(path), exercise_id or path.stem)
 
 
 def parse_exercise(text: str, filename: str = "<string>",
                    exercise_id: str = "exercise") -> Exercise:
     """Parse an exercise from TOML text (see :func:`load_exercise`)."""
-    try:
-        data = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as e:
-        raise _toml_error(e, text, filename) from None
+    data = read_toml(text, filename)
     where = SourceMap(text)
     ask = data.pop("ask", None)
     mech = _Reader(data, where, filename).mechanism()
@@ -212,11 +205,13 @@ def _read_positions(at, mech: Mechanism, fail) -> tuple[Position, ...]:
         if len(p) != 1 or next(iter(p)) not in ("angle", "time"):
             raise fail(f"each position in at gives one of angle or time, got {p}", "at")
         (key, value), = p.items()
-        if isinstance(value, bool) or not isinstance(value, (int, float)) or \
-                not math.isfinite(value):
-            raise fail(f"{key} in at must be a number, got {value!r}", "at")
+        if isinstance(value, bool) or not isinstance(value, (int, float)):
+            raise fail(f"{key} in at must be a number, got {value!r:.40}", "at")
+        if not (in_range(_float(value)) if key == "time" else math.isfinite(_float(value))):
+            want = RANGE if key == "time" else "finite"
+            raise fail(f"{key} in at must be a number {want}, got {value!r:.40}", "at")
         if key == "angle":
-            angle = math.radians(value) if deg else float(value)
+            angle = radians_in_turn(value, mech.units.angle)
             drive = Drive(d.link, angle, d.omega, d.alpha, d.alpha_given)
             label = f"θ{d.link} = {_angle_text(angle, deg)}"
             slug = f"theta{d.link}-{value:g}"

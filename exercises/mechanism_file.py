@@ -15,10 +15,23 @@ from pathlib import Path
 from typing import Any
 
 from ..constructions.errors import InputError
+from ..constructions.reference.solver import follow_branches
 from ..constructions.model import (LENGTH_UNITS, Arc, Contact, Drive, Link, Mechanism, Profile,
                                  Slide, SlideKind, Units, contact_arc, contact_slide)
 
-__all__ = ["load_mechanism", "parse_mechanism", "SourceMap"]
+__all__ = ["load_mechanism", "parse_mechanism", "SourceMap", "read_source", "read_toml",
+           "LARGEST", "in_range", "radians_in_turn"]
+
+LARGEST = 1e30
+"""The largest size of a number tarsim takes from a file; its reciprocal is the smallest
+non-zero one. Velocities and accelerations multiply and square these (ω² r, |A|²), and
+within this range none of them overflows or underflows a float."""
+
+RANGE = "between 1e-30 and 1e30 in size, or 0"
+""":data:`LARGEST` as an error message says it."""
+
+_CONTROL = re.compile("[\x00-\x1f\x7f-\x9f\u202a-\u202e\u2066-\u2069]")
+"""Control characters, and the bidirectional overrides that reorder what a figure shows."""
 
 _NAME = re.compile(r"^[A-Za-z][A-Za-z0-9_']*$")
 _TOP = ("name", "source", "description", "units", "frame", "link", "slider", "contact", "input",
@@ -35,21 +48,68 @@ def load_mechanism(path: str | Path) -> Mechanism:
         If the file cannot be read, is not valid TOML, or describes an
         impossible or incomplete mechanism; the message names file:line.
     """
-    path = Path(path)
-    try:
-        text = path.read_text(encoding="utf-8")
-    except (OSError, UnicodeDecodeError) as e:
-        raise InputError(f"cannot read the file: {e.strerror or e}", file=str(path)) from None
-    return parse_mechanism(text, str(path))
+    return parse_mechanism(read_source(path), str(path))
 
 
 def parse_mechanism(text: str, filename: str = "<string>") -> Mechanism:
     """Parse TOML text into a :class:`Mechanism` (see :func:`load_mechanism`)."""
+    return _Reader(read_toml(text, filename), SourceMap(text), filename).mechanism()
+
+
+def read_source(path: str | Path) -> str:
+    """The text of the file at ``path``.
+
+    Raises
+    ------
+    InputError
+        If it cannot be read, or is not UTF-8 text (naming the line of the first bad byte).
+    """
+    path = Path(path)
     try:
-        data = tomllib.loads(text)
+        return path.read_text(encoding="utf-8")
+    except UnicodeDecodeError as e:
+        raise InputError(f"is not UTF-8 text (byte 0x{e.object[e.start]:02x}); save it as UTF-8",
+                         file=str(path), line=e.object[:e.start].count(b"\n") + 1) from None
+    except OSError as e:
+        raise InputError(f"cannot read the file: {e.strerror or e}", file=str(path)) from None
+
+
+def read_toml(text: str, filename: str) -> dict[str, Any]:
+    """The tables of a TOML text; an InputError at file:line if it is not valid TOML."""
+    try:
+        return tomllib.loads(text)
     except tomllib.TOMLDecodeError as e:
         raise _toml_error(e, text, filename) from None
-    return _Reader(data, SourceMap(text), filename).mechanism()
+    except RecursionError:
+        raise InputError("nests arrays or tables too deeply to read as a mechanism",
+                         file=filename) from None
+
+
+def _float(v: int | float) -> float:
+    """``v`` as a float; an integer too large for one is infinite."""
+    try:
+        return float(v)
+    except OverflowError:
+        return math.inf
+
+
+def in_range(x: float) -> bool:
+    """True if ``x`` is 0 or finite and of a size within 1/:data:`LARGEST` … :data:`LARGEST`."""
+    return x == 0.0 or (math.isfinite(x) and 1.0 / LARGEST <= abs(x) <= LARGEST)
+
+
+def radians_in_turn(value: float, unit: str) -> float:
+    """An angle in ``unit`` ("deg" or "rad") as radians, less whole turns.
+
+    Degrees are reduced before they are converted, where the remainder is exact, so
+    θ = 1e9° is the 280° it means; the sign is kept (−90° stays −90°).
+
+    >>> round(math.degrees(radians_in_turn(-1e9, "deg")), 9)
+    -280.0
+    """
+    if unit == "rad":
+        return math.fmod(value, math.tau)
+    return math.radians(math.fmod(value, 360.0))
 
 
 def _toml_error(e: tomllib.TOMLDecodeError, text: str, filename: str) -> InputError:
@@ -131,6 +191,10 @@ class _Reader:
         for k in self.d:
             if k not in _TOP:
                 raise self.unknown(k, _TOP, "setting", key=k)
+        for k in ("source", "description"):
+            if k in self.d:
+                self.text(self.d[k], k, lines=True, key=k)
+        name = self.text(self.d.get("name", Path(self.file).stem), "name", key="name")
         self.units = self.read_units()
         frame = self.read_frame()
         # A curved block gains its pin at the centre of curvature while the sliders
@@ -151,7 +215,8 @@ class _Reader:
         drive = self.read_input()
         branches = self.read_assembly(mech_links, tuple(slides))
         mech = Mechanism(mech_links, drive, tuple(slides), branches, self.units,
-                         str(self.d.get("name", Path(self.file).stem)), self.file, tuple(arcs))
+                         name, self.file, tuple(arcs))
+        mech = follow_branches(mech)
         dof, n, f1, f2 = mech.mobility()
         if dof != 1:
             raise self.fail(
@@ -190,13 +255,22 @@ class _Reader:
                      u.get("angular_velocity", "rad/s"))
 
     # ----- numbers ---------------------------------------------------------------
-    def number(self, v: Any, what: str, **where) -> float:
-        if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v):
+    def number(self, v: Any, what: str, *, size: bool = False, bounded: bool = True,
+               **where) -> float:
+        """A finite number, no larger than :data:`LARGEST` if ``bounded``; with ``size`` (a
+        length, a rate) none smaller than its reciprocal either, but 0."""
+        if isinstance(v, bool) or not isinstance(v, (int, float)):
             raise self.fail(f"{what} must be a number, got {v!r}", **where)
-        return float(v)
+        x = _float(v)
+        if not math.isfinite(x):
+            raise self.fail(f"{what} must be a finite number, got {v!r:.40}", **where)
+        if (bounded and abs(x) > LARGEST) or (size and not in_range(x)):
+            raise self.fail(f"{what} = {x:.4g} is out of the range tarsim takes ({RANGE})",
+                            **where)
+        return x
 
     def length(self, v: Any, what: str, **where) -> float:
-        x = self.number(v, what, **where)
+        x = self.number(v, what, size=True, **where)
         if x <= 0:
             raise self.fail(f"{what} must be a positive length, got {v:g}", **where)
         return x * self.units.metres
@@ -208,8 +282,18 @@ class _Reader:
         return (self.number(v[0], what, **where) * s, self.number(v[1], what, **where) * s)
 
     def angle(self, v: Any, what: str, **where) -> float:
-        x = self.number(v, what, **where)
-        return x if self.units.angle == "rad" else math.radians(x)
+        """Any finite angle: it is taken less whole turns (:func:`radians_in_turn`)."""
+        return radians_in_turn(self.number(v, what, bounded=False, **where), self.units.angle)
+
+    def text(self, v: Any, what: str, *, lines: bool = False, **where) -> str:
+        """A free text (a name, a source): a string with no control character in it."""
+        if not isinstance(v, str):
+            raise self.fail(f"{what} must be a string, got {v!r:.40}", **where)
+        bad = next((c for c in _CONTROL.findall(v) if not (lines and c in "\n\t")), None)
+        if bad is not None:
+            raise self.fail(f"{what} holds the control character U+{ord(bad):04X}; "
+                            "remove it", **where)
+        return v
 
     def name(self, v: Any, what: str, **where) -> str:
         if not (isinstance(v, str) and _NAME.match(v)):
@@ -253,7 +337,8 @@ class _Reader:
             if len(set(names)) != len(names):
                 raise self.fail(f"link {n} lists a point twice", key="points", **where)
             local = self.shape(n, names, t, where)
-            out.append(Link(n, tuple(zip(names, local)), str(t.get("name", ""))))
+            label = self.text(t.get("name", ""), f"the name of link {n}", key="name", **where)
+            out.append(Link(n, tuple(zip(names, local)), label))
         return out
 
     def shape(self, n: int, names: list[str], t: dict[str, Any],
@@ -495,10 +580,10 @@ class _Reader:
         if "angle" not in t:
             raise self.fail(f"[input] needs the angle of link {link}", **where)
         angle = self.angle(t["angle"], "angle", key="angle", **where)
-        omega = self.number(t.get("omega", 0.0), "omega", key="omega", **where)
+        omega = self.number(t.get("omega", 0.0), "omega", size=True, key="omega", **where)
         if self.units.angular_velocity == "rpm":
             omega *= 2 * math.pi / 60
-        alpha = self.number(t.get("alpha", 0.0), "alpha", key="alpha", **where)
+        alpha = self.number(t.get("alpha", 0.0), "alpha", size=True, key="alpha", **where)
         return Drive(link, angle, omega, alpha, "alpha" in t)
 
     def read_assembly(self, links: tuple[Link, ...], slides: tuple[Slide, ...]) -> dict:

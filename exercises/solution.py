@@ -110,7 +110,7 @@ def solve_positions(ex: Exercise) -> list[Solution]:
         try:
             sol = solve_exercise(ex.at(p))
         except TarsimError as e:
-            raise type(e)(f"at {p.label}: {e}") from None
+            raise e.at(p.label) from None
         sol.position = p
         out.append(sol)
     return out

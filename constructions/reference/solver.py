@@ -26,7 +26,7 @@ numpy, the standard library, :mod:`constructions.model` and
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -43,6 +43,7 @@ __all__ = [
     "point_velocity",
     "point_acceleration",
     "constraint_jacobian",
+    "follow_branches",
 ]
 
 _EPS = float(np.finfo(float).eps)
@@ -185,6 +186,8 @@ class _Assembly:
         self.pose: dict[int, tuple[np.ndarray, float]] = {1: (np.zeros(2), 0.0)}
         self.phi: dict[int, float] = {1: 0.0, mech.drive.link: mech.drive.angle}
         self.used: set[str] = set()
+        self.picked: dict[str, str] = {}
+        """The word each branch took: a near point's is the side it chose."""
         self.deg = math.degrees(mech.drive.angle)
 
     def run(self) -> dict[int, tuple[np.ndarray, float]]:
@@ -271,10 +274,11 @@ class _Assembly:
         """Take ``first`` for ``words[0]``, ``second`` for ``words[1]``, or the nearer one."""
         b = self._branch(name, words)
         self.used.add(name)
-        if isinstance(b, str):
-            return first if b == words[0] else second
-        near = np.asarray(b, dtype=float)
-        return first if np.linalg.norm(first - near) <= np.linalg.norm(second - near) else second
+        if not isinstance(b, str):
+            near = np.asarray(b, dtype=float)
+            b = words[int(np.linalg.norm(first - near) > np.linalg.norm(second - near))]
+        self.picked[name] = b
+        return first if b == words[0] else second
 
     def _circles(self, name: str) -> list[tuple[int, str, float]]:
         out = []
@@ -396,11 +400,12 @@ class _Assembly:
                 raise InputError(f"'{b}' is not a valid branch for the {s.label}, must be one "
                                  f"of forward, backward or a near point (x, y)",
                                  file=self.m.source or None, key=s.point)
-            if isinstance(b, str):
-                psi = ahead if b == "forward" else behind
-            else:  # near point: the slot direction that points more nearly towards it
+            if not isinstance(b, str):  # the slot direction that points more nearly towards it
                 n = np.asarray(b, dtype=float) - self.at[q]
-                psi = max((ahead, behind), key=lambda t: math.cos(t) * n[0] + math.sin(t) * n[1])
+                b = max((("forward", ahead), ("backward", behind)),
+                        key=lambda t: math.cos(t[1]) * n[0] + math.sin(t[1]) * n[1])[0]
+            self.picked.setdefault(s.point, b)
+            psi = ahead if b == "forward" else behind
             self.phi[g] = psi - math.atan2(d[1], d[0])
             return True
         return False
@@ -590,6 +595,36 @@ def constraint_jacobian(mech: Mechanism) -> np.ndarray:
     """
     system, q = _start(mech)
     return system.scaled(system.jacobian(q))[:-1]        # the last row is the input's
+
+
+def follow_branches(mech: Mechanism) -> Mechanism:
+    """``mech`` with each near-point branch replaced by the side it takes at the stated
+    input position.
+
+    A point says which assembly the drawing shows; turned to another input angle, the
+    linkage stays in that assembly (it cannot jump to the other without being taken
+    apart), while the point nearest a fixed place may lie on the other. A mechanism that
+    will not assemble at its stated position is returned as it is.
+
+    >>> from tarsim.constructions.model import Drive, Link, Mechanism
+    >>> m = Mechanism((Link(1, (("O2", (0, 0)), ("O4", (3, 0)))),
+    ...                Link(2, (("O2", (0, 0)), ("A", (1, 0)))),
+    ...                Link(3, (("A", (0, 0)), ("B", (3, 0)))),
+    ...                Link(4, (("O4", (0, 0)), ("B", (2, 0))))),
+    ...               Drive(2, 1.0, omega=1.0), branches={"B": (5.0, 0.0)})
+    >>> follow_branches(m).branches
+    {'B': 'left'}
+    """
+    if all(isinstance(b, str) for b in mech.branches.values()):
+        return mech
+    _check(mech)
+    try:
+        picked = _Assembly(mech)
+        picked.run()
+    except AssemblyError:
+        return mech
+    return replace(mech, branches={n: picked.picked.get(n, b) if not isinstance(b, str) else b
+                                   for n, b in mech.branches.items()})
 
 
 def _start(mech: Mechanism) -> tuple[_System, np.ndarray]:
