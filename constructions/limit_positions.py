@@ -29,7 +29,7 @@ from .errors import InputError, NoIntersection
 from .model import Mechanism, SlideKind
 from .measures import measure_angle
 from .narration import Number, Phrase, Word, narrate, phrase
-from .record import VERBS, Ref, Role
+from .record import Ref, Role
 
 __all__ = ["LimitPositions", "draw_limit_positions", "limit_kind", "stroke_point",
            "drawn_limits", "answer", "askable", "WHY_NOT", "LIMITS"]
@@ -130,6 +130,12 @@ class _Dyad:
                 raise InputError(f"the slot of link {self.out} does not run through its pivot "
                                  f"{self.o4}; the lever's limit positions are drawn for a slot "
                                  "through the pivot")
+            centres = math.dist(mech.link(1).local(self.o2), mech.link(1).local(self.o4))
+            if self.r >= centres:
+                raise InputError(
+                    f"the crank {self.o2}{self.a} is no shorter than {self.o2}{self.o4}, so the "
+                    f"lever turns a full revolution with it (a Whitworth quick return): it has no "
+                    "limit positions of its own, and those of the links it drives are not drawn")
             return
         for k in rods:
             b = next(n for n in mech.link(k).names if n != self.a)
@@ -176,14 +182,8 @@ class _Limits(_Dyad):
         return point_ref(name)
 
     def act(self, ref: str, verb: str, *inputs: Ref, label: str = "", said: Phrase | None = None,
-            result: bool = False, near: tuple[float, float] | None = None, **params) -> Ref:
-        """Record one act; with ``near`` the pick of two cuts is the one nearer that point."""
-        if near is not None:
-            args = [self.c.output(r) for r in inputs]
-            picks = (("forward", "backward") if verb == "intersect_line_circle"
-                     else ("left", "right"))
-            params["pick"] = min(picks, key=lambda p: math.dist(
-                VERBS[verb](*args, pick=p)[0].xy, near))
+            result: bool = False, **params) -> Ref:
+        """Record one act."""
         self.c.draw(f"limit:{ref}", verb, *inputs, label=label, phrase=said,
                     role=Role.RESULT if result else Role.CONSTRUCTION, **params)
         self.steps.append(f"limit:{ref}")
@@ -192,6 +192,21 @@ class _Limits(_Dyad):
 
     def xy(self, ref: Ref) -> tuple[float, float]:
         return self.c.output(ref).xy
+
+    # A dyad keeps its assembly round the revolution: its far end never crosses the line of
+    # its two centres (that would be a dead point, which a turning crank does not meet). So
+    # each cut at a limit takes the side the drawn position shows, whatever angle it is
+    # drawn at, rather than the cut nearer the drawn point.
+    def side(self, point: str, a: str, b: str) -> str:
+        """"left" or "right": the side of ``a`` → ``b`` that ``point`` is drawn on."""
+        (ax, ay), (bx, by), (px, py) = (self.asm.xy(n) for n in (a, b, point))
+        return "left" if (bx - ax) * (py - ay) - (by - ay) * (px - ax) > 0.0 else "right"
+
+    def along(self, point: str, base: str, guide: Ref) -> str:
+        """"forward" or "backward": where ``point`` is drawn from ``base`` along ``guide``."""
+        tx, ty = self.c.output(guide).direction
+        (bx, by), (px, py) = self.asm.xy(base), self.asm.xy(point)
+        return "forward" if (px - bx) * tx + (py - by) * ty > 0.0 else "backward"
 
     # ----- the run ------------------------------------------------------------------------
     def run(self) -> LimitPositions:
@@ -258,7 +273,7 @@ class _Limits(_Dyad):
                           path=where[1], point=f"{b}{mark}", how=Word(how))
             try:
                 bp = self.act(f"{b}{i}", where[0], *where[2], label=f"{b}{mark}",
-                              said=said, near=where[3])
+                              said=said, pick=where[3])
             except NoIntersection as e:
                 raise InputError(
                     f"crank and rod cannot lie in line, {how}: the arc of radius {span} = "
@@ -275,17 +290,21 @@ class _Limits(_Dyad):
         return pins[0], pins[1]
 
     def path_of_b(self, arc: Ref, name: str, i: int, length: float):
-        """(verb, words, inputs, near) for cutting B's path with the arc about O2."""
-        here = self.asm.xy(self.b)
+        """(verb, words, inputs, pick) for cutting B's path with the arc about O2.
+
+        With the crank in line, A lies on O2B, so B is on the same side of O2 → O4 (or
+        as far along the guide from O2's foot) as it is drawn from A → O4 (from A).
+        """
         if self.kind == "slider-crank":
+            guide = self.asm.guides[self.guide]
             return ("intersect_line_circle", phrase("limits.path_of", point=self.b),
-                    (self.asm.guides[self.guide], arc), here)
+                    (guide, arc), self.along(self.b, self.a, guide))
         o4 = self.o4
         rocker = self.act(f"rocker-arc{i}", "swing_arc", self.P(o4),
                           radius=self.m.link(self.out).span(o4, self.b),
                           label=f"arc {o4}{self.b}")
         return ("intersect_circles", phrase("limits.arc_about", point=self.b, centre=o4),
-                (arc, rocker), here)
+                (arc, rocker), self.side(self.b, self.a, o4))
 
     def tangent_lever(self) -> tuple[Ref, Ref]:
         """The lever tangent to the crank circle: the circle on O2O4 cuts it at A′, A″."""
@@ -357,8 +376,9 @@ class _Limits(_Dyad):
             xp = self.swing(x, i)
             arc = self.act(f"arc-{name}{i}", "swing_arc", xp, radius=rod.span(x, name),
                            label=f"arc {x}{mark}{name}{mark}")
-            end = self.act(f"{name}{i}", "intersect_line_circle", self.asm.guides[guide], arc,
-                           label=f"{name}{mark}", result=True, near=self.asm.xy(name),
+            path = self.asm.guides[guide]
+            end = self.act(f"{name}{i}", "intersect_line_circle", path, arc,
+                           label=f"{name}{mark}", result=True, pick=self.along(name, x, path),
                            said=phrase("limits.rod_cuts_path", x=f"{x}{mark}", span=f"{x}{name}",
                                        radius=self.length(rod.span(x, name)), point=name,
                                        end=f"{name}{mark}"))
@@ -393,8 +413,8 @@ LIMITS = FigureSpec("limits", "Limit positions", "limit positions", kind="limits
 WHY_NOT = {
     A.TimeRatio: "the limit positions are drawn where the crank drives a rod to a block on a "
                  "frame guide (slider-crank), a rod to a rocker (crank-rocker) or a block in the "
-                 "slot of a lever through its pivot (slotted lever), and this crank drives none "
-                 "of these",
+                 "slot of a lever through its pivot, the crank shorter than the distance between "
+                 "the pivots (slotted lever), and this crank drives none of these",
     A.Stroke: "the stroke is measured on a block that slides on a frame guide, driven through "
               "the limit positions, and this mechanism has none",
 }

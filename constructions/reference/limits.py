@@ -14,7 +14,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from .solver import SingularPosition, solve
+from .solver import SingularPosition, follow_branches, solve
 from ..errors import AssemblyError, InputError
 from ..model import Drive, Mechanism
 
@@ -48,6 +48,7 @@ def limit_reference(mech: Mechanism, *, point: str | None = None,
     InputError
         If the crank cannot turn fully, or the output does not reverse exactly twice.
     """
+    mech = follow_branches(mech)
     d = mech.drive
     sense = 1.0 if d.omega >= 0 else -1.0
     slide = None
@@ -68,8 +69,9 @@ def limit_reference(mech: Mechanism, *, point: str | None = None,
         return rate.velocity, rate.position
 
     thetas = [d.angle + sense * 2 * math.pi * k / SAMPLES for k in range(SAMPLES + 1)]
-    speeds = [state(t)[0] for t in thetas]
-    zeros = []
+    speeds = [state(t)[0] for t in thetas[:-1]]
+    speeds.append(speeds[0])     # a turn on is the same position: a reversal at the start,
+    zeros = []                   # rounded two ways, is then seen once, not missed or twice
     for k in range(SAMPLES):
         if speeds[k] == 0.0:
             zeros.append(thetas[k])
