@@ -29,7 +29,14 @@ from .model import Arc, Mechanism, Slide, SlideKind
 from .narration import Phrase, Word, narrate, phrase
 from .record import VERBS, Construction, Kind, Ref, Role
 
-__all__ = ["Assembly", "assemble", "point_ref", "DYAD_RULES", "dyad_rule"]
+__all__ = ["Assembly", "assemble", "point_ref", "DYAD_RULES", "dyad_rule", "MEETING"]
+
+MEETING = 1e-7
+"""A cut whose own conditioning (the sine of the angle it crosses at) is below this
+touches within rounding: a tangency met through rounding keeps about √eps ≈ 1.5e-8."""
+
+_CUTS = ("intersect_circles", "intersect_line_circle")
+"""The acts that choose one of two places: where the two may coincide."""
 
 
 @dataclass(frozen=True)
@@ -111,6 +118,20 @@ class Assembly(Construction):
     def guide(self, index: int) -> g.Line:
         """The global line of slide ``index`` (``mechanism.slides[index]``)."""
         return self.output(self.guides[index])
+
+    @property
+    def meetings(self) -> tuple[str, ...]:
+        """The points whose two places coincide at this position (their arcs, or arc and
+        guide, only touch): there the two assemblies meet, a change point, and the
+        linkage may go on in either."""
+        out = []
+        for name in self.mechanism.point_names:
+            step = self[self.points[name]]
+            if step.verb in _CUTS:
+                args = [self.output(r) for r in step.inputs]
+                if VERBS[step.verb](*args, **dict(step.params))[1] <= MEETING:
+                    out.append(name)
+        return tuple(out)
 
 
 def assemble(mech: Mechanism) -> Assembly:
@@ -372,9 +393,10 @@ class _Assembler:
                                 phrase=phrase("position.locus", centre=y, radius=why_j,
                                               point=name))
             pick = self.branch(name, None, ("left", "right"), f"left or right of {x} → {y}")
-            if not isinstance(pick, str):
-                pick = self.pick_near("intersect_circles", (arc_i, arc_j), ("left", "right"), pick)
             try:
+                if not isinstance(pick, str):
+                    pick = self.pick_near("intersect_circles", (arc_i, arc_j), ("left", "right"),
+                                          pick)
                 self.found(name, "intersect_circles", arc_i, arc_j, pick=pick,
                            said=phrase("position.arcs_cut", point=name, pick=Word(pick), a=x,
                                        b=y))
@@ -411,10 +433,10 @@ class _Assembler:
             guide = self.guides[lines[0]]
             pick = self.branch(name, None, ("forward", "backward"),
                                f"forward or backward along the guide of {name}")
-            if not isinstance(pick, str):
-                pick = self.pick_near("intersect_line_circle", (guide, arc),
-                                      ("forward", "backward"), pick)
             try:
+                if not isinstance(pick, str):
+                    pick = self.pick_near("intersect_line_circle", (guide, arc),
+                                          ("forward", "backward"), pick)
                 self.found(name, "intersect_line_circle", guide, arc, pick=pick,
                            said=phrase("position.arc_cuts_guide", point=name, pick=Word(pick)))
             except NoIntersection as e:

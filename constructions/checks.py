@@ -175,8 +175,10 @@ def _relative(value: dict, ref: dict, scale: float) -> tuple[dict, dict, float]:
 
 
 def _exact(value: dict, ref: dict, scale: float) -> tuple[dict, dict, float]:
-    """An integer that must be the same: the mobility."""
-    return value, ref, float(abs(value["value"] - ref["value"]))
+    """Integers that must be the same: the mobility, and at this position where it differs."""
+    def here(v: dict) -> int:
+        return v.get("here", v["value"])
+    return value, ref, float(abs(value["value"] - ref["value"]) + abs(here(value) - here(ref)))
 
 
 def _same_class(value: dict, ref: dict, scale: float) -> tuple[dict, dict, float]:

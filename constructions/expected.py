@@ -19,7 +19,7 @@ from .limit_positions import drawn_limits
 from .reference import solver
 from .reference.centres import instant_centre
 from .reference.limits import limit_reference
-from .reference.mobility import mobility_by_rank
+from .reference.mobility import mobility_of
 from .reference.rotatability import (class_by_rotation, four_bar_spans, grashof_class,
                                      length_range_by_rotation)
 
@@ -81,8 +81,10 @@ def coriolis(work, ask: A.Coriolis) -> Expected:
 
 
 def mobility(work, ask: A.Mobility) -> Expected:
-    """The nullity of the loop equations' Jacobian."""
-    return Expected({"value": mobility_by_rank(work.mechanism)})
+    """The nullity of the loop equations' Jacobian, turning the input; and at this position,
+    where it differs (a change point)."""
+    m = mobility_of(work.mechanism)
+    return Expected({"value": m.value} if m.here == m.value else {"value": m.value, "here": m.here})
 
 
 def grashof(work, ask: A.GrashofClass) -> Expected:

@@ -15,6 +15,7 @@ from __future__ import annotations
 
 from . import asks as A
 from .checks import Answer
+from .errors import AssemblyError
 from .model import Mechanism
 from .reference.rotatability import four_bar_spans, grashof_class, length_range
 
@@ -31,24 +32,40 @@ def grashof_askable(mech: Mechanism) -> set[str]:
     return set() if spans is None else {"grashof"} | {f"range_{s}" for s in spans}
 
 
+CHANGE_POINT = ("a change-point linkage (S + L = P + Q): twice a revolution its links fall in "
+                "line, where its two assemblies meet and it may go on in either")
+"""What a change-point linkage is, as an answer about one says it."""
+
+
 def answer_mobility(work, ask: A.Mobility) -> Answer:
-    """Grübler's count."""
+    """Grübler's count, and the freedom the position adds where two assemblies meet in it."""
     dof, n, f1, f2 = work.mechanism.mobility()
-    return Answer(ask, {"value": dof}, 1.0, f"Grübler: 3({n} − 1) − 2·{f1} − {f2}")
+    method = f"Grübler: 3({n} − 1) − 2·{f1} − {f2}"
+    try:
+        meeting = work.assembly.meetings
+    except AssemblyError:   # not at this position: Grübler's count stands alone
+        meeting = ()
+    if not meeting:
+        return Answer(ask, {"value": dof}, 1.0, method)
+    return Answer(ask, {"value": dof, "here": dof + len(meeting)}, 1.0,
+                  f"{method}; at this position {' and '.join(meeting)} "
+                  f"{'is' if len(meeting) == 1 else 'are'} where two assemblies meet (a change "
+                  f"point), so the mobility is momentarily {dof + len(meeting)}")
 
 
 def answer_grashof(work, ask: A.GrashofClass | A.LengthRange) -> Answer:
     """The class by S + L against P + Q, or a length's range from the inequalities' breakpoints."""
     m = work.mechanism
     gc = grashof_class(m)
+    which = f"; {CHANGE_POINT}" if gc.kind == "change-point" else ""
     if isinstance(ask, A.LengthRange):
         index = four_bar_spans(m)[ask.span]
         lo, hi = length_range(gc.lengths, index)
         return Answer(ask, {"low": lo, "high": hi, "class": gc.kind, "length": gc.lengths[index]},
                       1.0, "Grashof's inequalities, at their breakpoints; checked by bisecting "
-                           "the turning test")
+                           f"the turning test{which}")
     s, p, q, l_ = sorted(gc.lengths)
     said = m.units.length_text
     return Answer(ask, {"class": gc.kind, "s_plus_l": s + l_, "p_plus_q": p + q}, 1.0,
                   f"Grashof: S + L = {said(s + l_)} against P + Q = {said(p + q)}; checked by "
-                  "turning each link")
+                  f"turning each link{which}")

@@ -316,8 +316,12 @@ def overall_text(name: str, v: dict, units) -> str:
     """A whole-mechanism answer in the file's units: "65 mm < AB < 135 mm (crank-rocker)"."""
     if "class" in v and "low" in v:
         span = name[len("range_"):]
+        if v["low"] == v["high"]:
+            return f"{span} = {units.length_text(v['low'])} only ({v['class']})"
         hi = "" if v["high"] is None else f" < {units.length_text(v['high'])}"
         return f"{units.length_text(v['low'])} < {span}{hi} ({v['class']})"
+    if "here" in v:
+        return f"{v['value']} ({v['here']} at this position)"
     if "class" in v:
         return v["class"]
     if "point" in v:

@@ -10,5 +10,6 @@ it to that (``tests/test_import_graph.py``).
 * :mod:`.centres`: instant centres where two links' velocity fields agree;
 * :mod:`.limits`: the limit positions, where the output's velocity changes sign;
 * :mod:`.rotatability`: Grashof's rule, and which links turn fully by turning them;
-* :mod:`.mobility`: the mobility as the nullity of the loop equations' Jacobian.
+* :mod:`.mobility`: the mobility as the nullity of the loop equations' Jacobian, and where
+  a position adds to it (a change point).
 """

@@ -13,6 +13,8 @@ import math
 
 from dataclasses import dataclass
 
+import numpy as np
+
 from ..errors import InputError
 from ..model import Mechanism
 
@@ -95,6 +97,9 @@ def grashof_class(mech: Mechanism) -> GrashofResult | None:
     return grashof(tuple(span(k) for k in order), links=order)
 
 
+_PHI = np.linspace(0.0, 2.0 * math.pi, SAMPLES, endpoint=False)
+
+
 def turns_fully(ground: float, crank: float, coupler: float, rocker: float) -> bool:
     """True if ``crank`` can turn a full revolution relative to ``ground`` with the loop closed.
 
@@ -108,12 +113,8 @@ def turns_fully(ground: float, crank: float, coupler: float, rocker: float) -> b
     """
     lo, hi = abs(coupler - rocker), coupler + rocker
     slack = 1e-12 * (ground + crank + coupler + rocker)
-    for k in range(SAMPLES):
-        phi = 2 * math.pi * k / SAMPLES
-        d = math.hypot(crank * math.cos(phi) - ground, crank * math.sin(phi))
-        if d < lo - slack or d > hi + slack:
-            return False
-    return True
+    d = np.hypot(crank * np.cos(_PHI) - ground, crank * np.sin(_PHI))
+    return bool(np.all((d >= lo - slack) & (d <= hi + slack)))
 
 
 def class_by_rotation(lengths) -> str:
@@ -139,15 +140,23 @@ def length_range(lengths, index: int) -> tuple[float, float | None]:
     """The open interval of ``lengths[index]`` over which Grashof's class stays as it is.
 
     The class can change only where S + L = P + Q or where two lengths swap order,
-    so the interval is bounded by such breakpoints; ``None`` for no upper bound.
+    so the interval is bounded by such breakpoints; ``None`` for no upper bound. A
+    class is also told by its shortest link: a crank-rocker whose crank is the
+    output is another mechanism than one whose crank is the input. A change-point
+    linkage (S + L = P + Q) is one at that length alone, so its range is the length
+    itself.
 
     Examples
     --------
     >>> length_range((100, 30, 100, 65), 2)       # 001 §3 Ex 1: the coupler AB
     (65.0, 135.0)
+    >>> length_range((300, 100, 300, 100), 2)     # a parallelogram: AB = 300 only
+    (300.0, 300.0)
     """
     others = [x for i, x in enumerate(lengths) if i != index]
     here = _kind(lengths, index, lengths[index])
+    if here[0] == "change-point":
+        return float(lengths[index]), float(lengths[index])
     cuts = {abs(s1 * others[0] + s2 * others[1] + s3 * others[2])
             for s1 in (1, -1) for s2 in (1, -1) for s3 in (1, -1)} | set(others)
     cuts = sorted(float(x) for x in cuts if x > 0.0)
@@ -161,14 +170,33 @@ def length_range(lengths, index: int) -> tuple[float, float | None]:
     return lo, hi
 
 
+STEP = 1.01
+"""Ratio between neighbouring lengths of the outward scan of
+:func:`length_range_by_rotation`: a band of another class narrower than 1 % of the
+length could lie unseen between two of them."""
+
+
 def length_range_by_rotation(lengths, index: int) -> tuple[float, float | None]:
-    """The same interval, bracketed and bisected on :func:`class_by_rotation` alone."""
-    here = class_by_rotation(lengths)
+    """The same interval, found on the turning test alone.
+
+    The length is stepped outward from its value by the ratio :data:`STEP` until
+    the links that turn fully change (so a crank-rocker whose crank becomes the
+    output has left its range, though its name is the same), down to a billionth of
+    the loop and up to four times it; the edge is then bisected.
+
+    >>> lo, hi = length_range_by_rotation((100, 30, 100, 65), 2)
+    >>> round(lo, 6), round(hi, 6)
+    (65.0, 135.0)
+    """
     x0 = lengths[index]
     total = sum(lengths)
 
-    def kind(x: float) -> str:
-        return class_by_rotation([x if i == index else v for i, v in enumerate(lengths)])
+    def kind(x: float) -> tuple[str, bool, bool]:
+        ls = [x if i == index else v for i, v in enumerate(lengths)]
+        g, a, b, c = ls
+        return class_by_rotation(ls), turns_fully(g, a, b, c), turns_fully(g, c, b, a)
+
+    here = kind(x0)
 
     def edge(inside: float, outside: float) -> float:
         for _ in range(60):
@@ -179,15 +207,19 @@ def length_range_by_rotation(lengths, index: int) -> tuple[float, float | None]:
                 outside = mid
         return 0.5 * (inside + outside)
 
-    out = x0
-    while out > 1e-9 * total and kind(out) == here:
-        out *= 0.5
-    lo = 0.0 if kind(out) == here else edge(x0, out)
-    out = x0
-    while out < 4 * total and kind(out) == here:
-        out *= 2.0
-    hi = None if kind(out) == here else edge(x0, out)
-    return lo, hi
+    def scan(ratio: float, stop) -> float | None:
+        """The last length of the class before the first one out of it, or None."""
+        inside = x0
+        while not stop(inside):
+            out = inside * ratio
+            if kind(out) != here:
+                return edge(inside, out)
+            inside = out
+        return None
+
+    lo = scan(1.0 / STEP, lambda x: x < 1e-9 * total)
+    hi = scan(STEP, lambda x: x > 4.0 * total)
+    return (0.0 if lo is None else lo), hi
 
 
 def four_bar_spans(mech: Mechanism) -> dict[str, int] | None:
@@ -204,6 +236,9 @@ def four_bar_spans(mech: Mechanism) -> dict[str, int] | None:
     return out
 
 
-def _kind(lengths, index: int, x: float) -> str:
+def _kind(lengths, index: int, x: float) -> tuple[str, int | None]:
+    """The class with ``lengths[index]`` made ``x``, and the shortest link that sets it."""
     ls = [x if i == index else v for i, v in enumerate(lengths)]
-    return grashof(ls).kind
+    g = grashof(ls)
+    grashof_kind = g.kind not in ("change-point", "triple-rocker")
+    return g.kind, (g.links.index(g.shortest) if grashof_kind else None)
