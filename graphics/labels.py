@@ -17,7 +17,7 @@ from shapely.strtree import STRtree
 from .figure import Figure, Text
 from .symbols import badge_radius, draw_badge
 
-__all__ = ["LabelPlacer", "typeset"]
+__all__ = ["LabelPlacer", "typeset", "typeset_span"]
 
 
 class LabelPlacer:
@@ -203,6 +203,19 @@ def typeset(label: str) -> tuple[str, str]:
     """
     head, _, sub = label.partition("_")
     return _digits_down(head), "/".join(_digits_down(part) for part in sub.split("/"))
+
+
+def typeset_span(label: str) -> str:
+    """A span named by its end points, as a textbook prints it: each number that follows a
+    letter becomes a subscript.
+
+    >>> typeset_span("O2G"), typeset_span("AB + O2A"), typeset_span("stroke")
+    ('O₂G', 'AB + O₂A', 'stroke')
+    """
+    return _NAMED.sub(lambda m: m.group(0).translate(_SUBSCRIPT), label)
+
+
+_NAMED = re.compile(r"(?<=[A-Za-z])\d+")
 
 
 def _digits_down(name: str) -> str:

@@ -45,7 +45,7 @@ from ..constructions.record import Kind, Panel, Ref, Role, Slice, Step
 
 from .diagram import _Diagram, subscript
 from .figure import Circle, Figure, Path, arc_points, clip_line, ray_to_edge, span_line
-from .labels import typeset
+from .labels import typeset, typeset_span
 from .scales import draw_caption, scale_text
 from .symbols import (PIN_RADIUS, draw_arrow, draw_arrowhead, draw_dimension, draw_turning_arrow,
                       unit)
@@ -74,6 +74,8 @@ _OVERHANG = 4.0     # a line runs this far past its last point, mm
 _LONE = 12.0        # a line through one point runs this far either side, mm
 _TRACE = 4.0        # a compass trace through one point runs this far either side, mm
 _DOT = 0.6          # a marked point, mm
+GRAZE = 0.5
+"""Area (mm²) of a dimension line's clearance an obstacle may take and not be crossed."""
 _INF_ARROW = 11.0   # each half of the arrow of a centre at infinity, mm
 _SAME = 1e-9        # relative slack for "lies on" and "coincides"
 
@@ -393,18 +395,32 @@ class _Scene(_Diagram):
         if lean < 0 or (abs(lean) < 1e-9 and n[1] > 0):
             n = (-n[0], -n[1])
 
-        def line_at(off):
-            return [(a[0] + off * n[0], a[1] + off * n[1]), (b[0] + off * n[0], b[1] + off * n[1])]
+        def line_at(off, side):
+            return [(a[0] + off * side[0], a[1] + off * side[1]),
+                    (b[0] + off * side[0], b[1] + off * side[1])]
+
+        def crosses(off, side) -> bool:
+            """Whether the dimension line at ``off`` crosses anything drawn, its ends apart:
+            a span that ends on a line (a foot on the coupler) touches it at its end on
+            either side, and a graze there is no crossing."""
+            trim = min(3.0, math.dist(a, b) / 4)
+            (x0, y0), (x1, y1) = line_at(off, side)
+            inner = LineString([(x0 + trim * u[0], y0 + trim * u[1]),
+                                (x1 - trim * u[0], y1 - trim * u[1])])
+            return self.placer.overlap(inner.buffer(2.5)) > GRAZE
 
         # The line and its reading stand outside the frame of the points: the page's
-        # edge is no obstacle. The nearest offset that crosses nothing drawn is taken.
+        # edge is no obstacle. The nearest offset that crosses nothing drawn is taken, on
+        # the outer side if it has one, else on the inner (a perpendicular dropped from a
+        # pivot has its link beside it on one side).
         page, self.placer.page = self.placer.page, None
-        offset = min((7.0, 11.0, 15.0, 19.0),
-                     key=lambda off: (self.placer.overlap(LineString(line_at(off)).buffer(2.5))
-                                      > 1e-6, off))
+        out_n = n
+        offset, n = min(((off, side) for side in (out_n, (-out_n[0], -out_n[1]))
+                         for off in (7.0, 11.0, 15.0, 19.0)),
+                        key=lambda c: (crosses(*c), c[1] != out_n, c[0]))
         at = draw_dimension(self.fig, a, b, n, offset)
-        self.placer.block_path(line_at(offset), 1.0)
-        text = f"{step.label} {self.m.units.length_text(out.length)}".strip()
+        self.placer.block_path(line_at(offset, n), 1.0)
+        text = f"{typeset_span(step.label)} {self.m.units.length_text(out.length)}".strip()
         self.label(text, at, [step], prefer=math.atan2(-n[1], n[0]), gap=1.0, size=3.4)
         self.placer.page = page
 

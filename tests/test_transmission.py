@@ -8,10 +8,14 @@ dead point), where the conditioning reported grows the tolerance.
 """
 
 import math
+import re
 
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
+from shapely.geometry import LineString, MultiLineString
+
+import tarsim
 
 from tarsim.constructions.errors import TarsimError
 from tarsim.constructions.narration import narrate
@@ -84,3 +88,26 @@ def test_the_method_is_chosen_by_name_in_the_registry():
     assert solve_exercise(ex).quantities["omega4"].method == "line of transmission"
     with pytest.raises(TarsimError, match="no method the exercise uses answers omega3"):
         solve_exercise(parse_exercise(four_bar(only)))
+
+
+def _segments(svg: str, group: str) -> list[list[tuple[float, float]]]:
+    """The polylines of every ``<g class="group">`` in ``svg``, in paper mm."""
+    out = []
+    for body in re.findall(rf'<g class="{group}"[^>]*>(.*?)</g>', svg):
+        for d in re.findall(r'<path d="([^"]+)"', body):
+            out.append([tuple(map(float, p.split(","))) for p in re.findall(r"[-\d.]+,[-\d.]+", d)])
+    return out
+
+
+def test_the_measured_perpendiculars_stand_clear_of_the_links():
+    # O4H runs up from the rocker's pivot with the rocker beside it on its outer side: its
+    # dimension line stands on the inner side, where it crosses no link.
+    figure = tarsim.solve(parse_exercise(four_bar(angle=60), "lot.toml")).figures[
+        "omega4-line-of-transmission"]
+    svg = figure._repr_svg_()
+    links = MultiLineString(_segments(svg, "link"))
+    dimensions = [s for s in _segments(svg, "dimension") if len(s) == 2]
+    assert len(dimensions) == 8       # two spans: two extensions, a line drawn out from its middle
+    for seg in dimensions:
+        assert not LineString(seg).intersects(links), seg
+    assert "O₂G 55.1532 mm" in svg and "O₄H 189.1428 mm" in svg
