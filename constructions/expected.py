@@ -1,10 +1,13 @@
 """The analytic value each kind of ask is checked against, read from the independent reference.
 
 Every function takes the work of a position (or of the mechanism) and an ask,
-and returns an :class:`~.checks.Expected` in results.json's shape. They read
-only :mod:`.reference` (the vector-loop solver, its instant centres, limits,
-rotatability and mobility), never a construction: a method names one of these
-as its reference when it registers (:mod:`.registry`).
+and returns an :class:`~.checks.Expected` in results.json's shape. Their numbers
+come only from :mod:`.reference` (the vector-loop solver, its instant centres,
+limits, rotatability and mobility), never from a construction. Two things are
+read off a construction's names alone, so that both sides speak of the same
+thing: the output the limit positions measure (which block, which lever), and
+the link a coincident point is taken on. A method names one of these as its
+reference when it registers (:mod:`.registry`).
 """
 
 from __future__ import annotations

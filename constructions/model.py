@@ -44,7 +44,7 @@ from dataclasses import dataclass, field
 from enum import StrEnum
 
 from .errors import InputError
-from .narration import Quantity
+from .narration import Quantity, fixed
 
 __all__ = [
     "Units",
@@ -80,7 +80,7 @@ class Units:
 
     def length_text(self, metres: float, digits: int = 4) -> str:
         """Format a length given in metres in the file's unit ("250 mm")."""
-        return f"{_fmt(metres / self.metres, digits)} {self.length}"
+        return f"{fixed(metres / self.metres, digits)} {self.length}"
 
     def length_said(self, metres: float) -> Quantity:
         """A length (m) as a step says it, in the file's unit: "250 mm"."""
@@ -99,11 +99,6 @@ class Units:
         if self.angle == "rad":
             return Quantity(rad, "rad", style="fixed")
         return Quantity(math.degrees(rad), "°")
-
-
-def _fmt(value: float, digits: int) -> str:
-    text = f"{value:.{digits}f}".rstrip("0").rstrip(".")
-    return "0" if text in ("-0", "") else text
 
 
 @dataclass(frozen=True, slots=True)

@@ -32,7 +32,7 @@ from typing import Any
 from .errors import TarsimError
 
 __all__ = ["Phrase", "phrase", "Number", "Quantity", "Word", "Capitalized", "narrate", "render",
-           "catalogue", "LANGUAGES"]
+           "catalogue", "fixed", "LANGUAGES"]
 
 LANGUAGES = ("en",)
 """The languages with a catalogue, the first the default."""
@@ -44,10 +44,6 @@ class Phrase:
 
     key: str
     args: tuple[tuple[str, Any], ...] = ()
-
-    def arg(self, name: str) -> Any:
-        """The argument ``name`` (a test or a tooltip may want one)."""
-        return dict(self.args)[name]
 
 
 def phrase(key: str, **args: Any) -> Phrase:
@@ -98,7 +94,8 @@ class Capitalized:
     clause: Phrase
 
 
-def _fixed(value: float, digits: int) -> str:
+def fixed(value: float, digits: int) -> str:
+    """``value`` to ``digits`` decimals, with trailing zeros dropped ("250", "0.5")."""
     text = f"{value:.{digits}f}".rstrip("0").rstrip(".")
     return "0" if text in ("-0", "") else text
 
@@ -129,7 +126,7 @@ def render(arg: Any, lang: str = "en") -> str:
     if isinstance(arg, Number):
         return cat.digits(format(arg.value, arg.spec))
     if isinstance(arg, Quantity):
-        text = {"length": lambda v: _fixed(v, 4), "rate": lambda v: f"{v:.6g}",
+        text = {"length": lambda v: fixed(v, 4), "rate": lambda v: f"{v:.6g}",
                 "fixed": lambda v: f"{v:.4f}"}[arg.style](arg.value)
         unit = cat.UNITS.get(arg.unit, arg.unit) + cat.UNITS.get(arg.per, arg.per)
         return cat.digits(text) + ("" if arg.unit == "°" else " ") + unit

@@ -99,11 +99,6 @@ class Kind(StrEnum):
     CONTACT = "contact point"
     """Where two profiles of the mechanism touch (a cam on its follower): the diagram's P."""
 
-    @property
-    def is_line(self) -> bool:
-        """True for the kinds of working line a figure draws thin, each in its own style."""
-        return self in (Kind.LINE, Kind.KENNEDY_LINE, Kind.COMMON_NORMAL, Kind.GAUGE_LINE)
-
 
 def _kind_of(output: Any) -> Kind:
     """The kind a step takes from its output when it does not say."""

@@ -10,6 +10,7 @@ check against the analytic solution.
 from __future__ import annotations
 
 import functools
+import math
 import sys
 from dataclasses import replace
 from pathlib import Path
@@ -17,7 +18,7 @@ from pathlib import Path
 import click
 
 from ..constructions.errors import CheckMismatch, InputError, TarsimError
-from ..constructions.model import Drive, Mechanism
+from ..constructions.model import Mechanism
 
 __all__ = ["cli"]
 
@@ -52,15 +53,13 @@ def _mechanism(source: str, angle: float | None) -> Mechanism:
 
 def _at_angle(mech: Mechanism, angle: float | None) -> Mechanism:
     """The mechanism with its input turned to ``angle`` (file units), if one is given."""
-    from .mechanism_file import RANGE, in_range, radians_in_turn
+    from .mechanism_file import radians_in_turn
 
     if angle is None:
         return mech
-    if not in_range(angle):
-        raise InputError(f"--angle must be a number {RANGE}, got {angle:g}")
-    d = mech.drive
-    rad = radians_in_turn(angle, mech.units.angle)
-    return mech.with_drive(Drive(d.link, rad, d.omega, d.alpha, d.alpha_given))
+    if not math.isfinite(angle):
+        raise InputError(f"--angle must be a finite number, as a file's angle is; got {angle:g}")
+    return mech.with_drive(replace(mech.drive, angle=radians_in_turn(angle, mech.units.angle)))
 
 
 def _exercise(source: str, angle: float | None):

@@ -212,12 +212,12 @@ def _read_positions(at, mech: Mechanism, fail) -> tuple[Position, ...]:
             raise fail(f"{key} in at must be a number {want}, got {value!r:.40}", "at")
         if key == "angle":
             angle = radians_in_turn(value, mech.units.angle)
-            drive = Drive(d.link, angle, d.omega, d.alpha, d.alpha_given)
+            drive = replace(d, angle=angle)
             label = f"θ{d.link} = {_angle_text(angle, deg)}"
             slug = f"theta{d.link}-{value:g}"
         else:
             angle = d.angle + d.omega * value + 0.5 * d.alpha * value ** 2
-            drive = Drive(d.link, angle, d.omega + d.alpha * value, d.alpha, d.alpha_given)
+            drive = replace(d, angle=angle, omega=d.omega + d.alpha * value)
             label = f"t = {value:g} s (θ{d.link} = {_angle_text(angle, deg)})"
             slug = f"t-{value:g}s"
         out.append(Position(drive, label, slug))

@@ -22,7 +22,7 @@ from ..constructions.checks import FigureSpec, Quantity
 from ..constructions.limit_positions import drawn_limits
 from ..constructions.narration import narrate
 from ..constructions.record import Kind, Panel, Slice, slice
-from ..constructions.velocity_polygon import drawn_velocity_polygon
+from ..constructions.velocity_polygon import WORKED, drawn_velocity_polygon
 from ..graphics.circle_diagram import draw_circle_diagram
 from ..graphics.export import RenderError, pdf_pages, svg_to, write_text
 from ..graphics.figure import Figure, stack_pages
@@ -258,7 +258,7 @@ def _worked_page(sol: Solution, answers) -> SolutionFigure:
                           _show(qq.reference, m.units, qname), f"{qq.rel_error:.1e}"))
     page = compose_worked_page(f"{m.name}: worked solution{where}", figures, table,
                                notes_under(sol, Panel.SPACE))
-    return SolutionFigure("worked", "Worked solution", page, None, tuple(panels))
+    return SolutionFigure(WORKED.stem, WORKED.heading, page, None, tuple(panels))
 
 
 def _overall_figures(ex: Exercise, overall: Overall) -> list[SolutionFigure]:

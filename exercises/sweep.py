@@ -202,8 +202,7 @@ def _evaluate(mech: Mechanism, out: Output, drive: Drive) -> dict[str, float]:
 
 
 def _drive_at(mech: Mechanism, angle: float) -> Drive:
-    d = mech.drive
-    return Drive(d.link, angle, d.omega, d.alpha, d.alpha_given)
+    return replace(mech.drive, angle=angle)
 
 
 def sweep_exercise(ex: Exercise, steps: int = 360, *, of: str | None = None,

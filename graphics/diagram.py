@@ -28,7 +28,7 @@ from ..constructions.model import Arc, Mechanism, Slide, SlideKind
 from ..constructions.scales import face_ends, space_per_cm
 
 from .figure import Circle, Figure, Path, Text, View, arc_points, text_width
-from .labels import LabelPlacer
+from .labels import LabelPlacer, subscript
 from .scales import bar_room, draw_scale_bar, scale_text
 from .symbols import (PIN_RADIUS, draw_block, draw_curved_guide, draw_curved_slot,
                       draw_ground_pivot, draw_guide, draw_pin, draw_turning_arrow, mark_angle,
@@ -36,7 +36,6 @@ from .symbols import (PIN_RADIUS, draw_block, draw_curved_guide, draw_curved_slo
 
 __all__ = ["draw_kinematic_diagram", "subscript"]
 
-_SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
 _MARGIN = 8.0              # white round the drawing, mm
 _CAPTION = 15.0            # band under the drawing for the caption and scale bar, mm
 _BLOCK = (9.0, 5.0)        # slider block on paper, mm
@@ -84,16 +83,6 @@ class _Track:
     root: tuple[float, float] | None
 
 
-def subscript(name: str) -> str:
-    """Write trailing digits as subscripts, as a textbook prints them ("O2" → "O₂").
-
-    Examples
-    --------
-    >>> subscript("O24")
-    'O₂₄'
-    """
-    head = name.rstrip("0123456789")
-    return head + name[len(head):].translate(_SUB)
 
 
 def draw_kinematic_diagram(record: Assembly, *, per_cm: float | None = None) -> Figure:

@@ -17,7 +17,7 @@ from shapely.strtree import STRtree
 from .figure import Figure, Text
 from .symbols import badge_radius, draw_badge
 
-__all__ = ["LabelPlacer", "typeset", "typeset_span"]
+__all__ = ["LabelPlacer", "typeset", "typeset_span", "subscript"]
 
 
 class LabelPlacer:
@@ -203,6 +203,16 @@ def typeset(label: str) -> tuple[str, str]:
     """
     head, _, sub = label.partition("_")
     return _digits_down(head), "/".join(_digits_down(part) for part in sub.split("/"))
+
+
+def subscript(name: str) -> str:
+    """Write a name's trailing digits as subscripts, as a textbook prints them ("O2" → "O₂").
+
+    >>> subscript("O24")
+    'O₂₄'
+    """
+    head = name.rstrip("0123456789")
+    return head + name[len(head):].translate(_SUBSCRIPT)
 
 
 def typeset_span(label: str) -> str:

@@ -43,9 +43,9 @@ from ..constructions.measures import Angle, Dimension
 from ..constructions.model import SlideKind
 from ..constructions.record import Kind, Panel, Ref, Role, Slice, Step
 
-from .diagram import _Diagram, subscript
+from .diagram import _Diagram
 from .figure import Circle, Figure, Path, arc_points, clip_line, ray_to_edge, span_line
-from .labels import typeset, typeset_span
+from .labels import subscript, typeset, typeset_span
 from .scales import draw_caption, scale_text
 from .symbols import (PIN_RADIUS, draw_arrow, draw_arrowhead, draw_dimension, draw_turning_arrow,
                       unit)

@@ -15,12 +15,12 @@ where the linkage has its own mobility again.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
 from ..errors import AssemblyError
-from ..model import Drive, Mechanism
+from ..model import Mechanism
 from .solver import SINGULAR_RCOND, constraint_jacobian, follow_branches
 
 __all__ = ["mobility_by_rank", "Mobility", "mobility_of", "TURNS"]
@@ -63,8 +63,7 @@ def mobility_of(mech: Mechanism) -> Mobility:
     d = mech.drive
     found = {}
     for k in range(TURNS):
-        turned = mech.with_drive(Drive(d.link, d.angle + 2 * math.pi * k / TURNS, d.omega,
-                                       d.alpha, d.alpha_given))
+        turned = mech.with_drive(replace(d, angle=d.angle + 2 * math.pi * k / TURNS))
         try:
             found[k] = mobility_by_rank(turned)
         except AssemblyError:
