@@ -30,7 +30,7 @@ from .record import Panel, Ref
 from .reference.centres import centre_error
 
 __all__ = ["Quantity", "Expected", "Answer", "FigureSpec", "tolerance", "check", "vector_value",
-           "NOISE", "EPS"]
+           "grashof_value", "time_ratio_value", "NOISE", "EPS"]
 
 EPS = 2.220446049250313e-16
 """The unit roundoff of a float."""
@@ -146,6 +146,18 @@ def tolerance(conditioning: float) -> float:
 def vector_value(x: float, y: float) -> dict[str, Any]:
     """A vector in results.json's shape: its magnitude and its components."""
     return {"value": math.hypot(x, y), "vector": [x + 0.0, y + 0.0]}
+
+
+def grashof_value(kind: str, lengths) -> dict[str, Any]:
+    """A four-bar's class in results.json's shape, with the two sums Grashof's rule compares."""
+    s, p, q, l_ = sorted(lengths)
+    return {"class": kind, "s_plus_l": s + l_, "p_plus_q": p + q}
+
+
+def time_ratio_value(slow: float, quick: float) -> dict[str, Any]:
+    """A time ratio in results.json's shape: slow over quick, and each crank angle (rad in)."""
+    return {"value": slow / quick, "slow_deg": math.degrees(slow),
+            "quick_deg": math.degrees(quick)}
 
 
 def _quiet(x: float, scale: float) -> float:

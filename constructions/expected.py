@@ -12,13 +12,11 @@ reference when it registers (:mod:`.registry`).
 
 from __future__ import annotations
 
-import math
-
 from . import asks as A
-from .checks import Expected, vector_value
+from .checks import Expected, grashof_value, time_ratio_value, vector_value
 from .coincident import taken
 from .errors import DegenerateInput, InputError
-from .limit_positions import drawn_limits
+from .limit_positions import WHY_NOT, drawn_limits
 from .reference import solver
 from .reference.centres import instant_centre
 from .reference.limits import limit_reference
@@ -93,9 +91,7 @@ def mobility(work, ask: A.Mobility) -> Expected:
 def grashof(work, ask: A.GrashofClass) -> Expected:
     """The class found by turning each link a revolution."""
     gc = grashof_class(work.mechanism)
-    s, p, q, l_ = sorted(gc.lengths)
-    return Expected({"class": class_by_rotation(gc.lengths), "s_plus_l": s + l_,
-                     "p_plus_q": p + q})
+    return Expected(grashof_value(class_by_rotation(gc.lengths), gc.lengths))
 
 
 def length_range(work, ask: A.LengthRange) -> Expected:
@@ -116,14 +112,12 @@ def _limits(work):
 def time_ratio(work, ask: A.TimeRatio) -> Expected:
     """Slow stroke over quick stroke, between the output's reversals."""
     ref = _limits(work)
-    return Expected({"value": ref.time_ratio, "slow_deg": math.degrees(ref.slow),
-                     "quick_deg": math.degrees(ref.quick)})
+    return Expected(time_ratio_value(ref.slow, ref.quick))
 
 
 def stroke(work, ask: A.Stroke) -> Expected:
     """The block's travel between its two reversals."""
     point = drawn_limits(work).point
     if point is None:
-        raise InputError("the stroke is measured on a block that slides on a frame guide and is "
-                         "driven through the limit positions; this mechanism has none")
+        raise InputError(WHY_NOT[A.Stroke])
     return Expected({"value": _limits(work).stroke, "point": point})

@@ -24,7 +24,7 @@ from dataclasses import dataclass
 
 from . import asks as A
 from .assembly import Assembly, assemble, point_ref
-from .checks import Answer, FigureSpec
+from .checks import Answer, FigureSpec, time_ratio_value
 from .errors import InputError, NoIntersection
 from .model import Mechanism, SlideKind
 from .measures import measure_angle
@@ -441,11 +441,9 @@ def answer(work, ask) -> Answer:
            else "crank and rod in line")
     method = f"limit positions by compass ({how})"
     if isinstance(ask, A.TimeRatio):
-        value = {"value": lp.time_ratio, "slow_deg": math.degrees(lp.slow),
-                 "quick_deg": math.degrees(lp.quick)}
+        value = time_ratio_value(lp.slow, lp.quick)
     else:
         if lp.stroke is None:
-            raise InputError("the stroke is measured on a block that slides on a frame guide "
-                             "and is driven through the limit positions; this mechanism has none")
+            raise InputError(WHY_NOT[A.Stroke])
         value = {"value": lp.stroke, "point": lp.point}
     return Answer(ask, value, lp.conditioning, method, refs=tuple(lp.steps), figures=(LIMITS,))

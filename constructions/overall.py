@@ -14,7 +14,7 @@ They draw nothing: their answers stand in results.json's top-level quantities.
 from __future__ import annotations
 
 from . import asks as A
-from .checks import Answer
+from .checks import Answer, grashof_value
 from .errors import AssemblyError
 from .model import Mechanism
 from .reference.rotatability import four_bar_spans, grashof_class, length_range
@@ -64,8 +64,7 @@ def answer_grashof(work, ask: A.GrashofClass | A.LengthRange) -> Answer:
         return Answer(ask, {"low": lo, "high": hi, "class": gc.kind, "length": gc.lengths[index]},
                       1.0, "Grashof's inequalities, at their breakpoints; checked by bisecting "
                            f"the turning test{which}")
-    s, p, q, l_ = sorted(gc.lengths)
-    said = m.units.length_text
-    return Answer(ask, {"class": gc.kind, "s_plus_l": s + l_, "p_plus_q": p + q}, 1.0,
-                  f"Grashof: S + L = {said(s + l_)} against P + Q = {said(p + q)}; checked by "
-                  f"turning each link{which}")
+    value, said = grashof_value(gc.kind, gc.lengths), m.units.length_text
+    return Answer(ask, value, 1.0,
+                  f"Grashof: S + L = {said(value['s_plus_l'])} against P + Q = "
+                  f"{said(value['p_plus_q'])}; checked by turning each link{which}")
