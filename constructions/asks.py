@@ -270,8 +270,7 @@ def ask_names(mech: Mechanism) -> set[str]:
     out |= {f"{w}{n}" for n in nums if n != 1 for w in ("omega", "alpha")}
     moving = [p for p in mech.point_names if set(mech.links_at(p)) != {1}]
     out |= {f"V_{p}" for p in moving}
-    slotted = [s for s in (*mech.slides, *mech.pin_arcs)
-               if s.guide_link != 1 and s.point not in mech.link(s.guide_link).names]
+    slotted = mech.slotted
     coincident = {f"{s.point}{s.guide_link}" for s in slotted}
     carried = {f"{s.point}{c}" for s in slotted
                for c in set(mech.links_at(s.point)) | {t.link for t in mech.slides

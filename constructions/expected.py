@@ -73,8 +73,7 @@ def relative(work, ask: A.Relative) -> Expected:
 def coriolis(work, ask: A.Coriolis) -> Expected:
     """2ω_j × (V_P − V_Pj) at the slot, straight or curved, of link j that P runs in."""
     m, kin = work.mechanism, work.kinematics
-    joint = next(s for s in (*m.slides, *m.pin_arcs) if s.point == ask.point
-                 and s.guide_link != 1 and ask.point not in m.link(s.guide_link).names)
+    joint = next(s for s in m.slotted if s.point == ask.point)
     j = joint.guide_link
     (px, py), (qx, qy) = (solver.point_velocity(kin, m, k, ask.point) for k in (joint.link, j))
     w = kin.omegas[j]

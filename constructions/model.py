@@ -416,6 +416,14 @@ class Mechanism:
         return tuple(a for a in self.arcs if a.kind is SlideKind.PIN)
 
     @property
+    def slotted(self) -> tuple[Slide | Arc, ...]:
+        """The joints where a point runs in a slot, straight or curved, of a moving link that
+        does not carry it: there the point has a coincident point on the slotted link, and
+        a Coriolis component."""
+        return tuple(s for s in (*self.slides, *self.pin_arcs)
+                     if s.guide_link != 1 and s.point not in self.link(s.guide_link).names)
+
+    @property
     def input_speed(self) -> float:
         """|ω|·r of the input link's second point: the known velocity every method starts from."""
         k = self.link(self.drive.link)

@@ -212,8 +212,7 @@ class PolygonWalk(Walk):
         self.pole_xy = (float(pole[0]), float(pole[1]))
         self.size = asm.size
         nodes = [Node(n) for n in m.point_names]
-        nodes += [Node(s.point, s.guide_link) for s in (*m.slides, *m.pin_arcs)
-                  if s.guide_link != 1 and s.point not in m.link(s.guide_link).names]
+        nodes += [Node(s.point, s.guide_link) for s in m.slotted]
         self.nodes = list(dict.fromkeys(nodes))
         self.known: dict[Node, Ref] = {}
         self.steps: list[Ref] = []
