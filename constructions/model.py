@@ -41,6 +41,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from functools import cached_property
 from enum import StrEnum
 
 from .errors import InputError
@@ -108,18 +109,25 @@ class Link:
     number: int
     points: tuple[tuple[str, tuple[float, float]], ...]
     name: str = ""
+    _at: dict[str, tuple[float, float]] = field(init=False, repr=False, compare=False)
+
+    def __post_init__(self) -> None:
+        # Looked up by name once per point and per step: a dict keeps a link of many
+        # points linear to read and to solve.
+        object.__setattr__(self, "_at", dict(self.points))
 
     @property
     def names(self) -> tuple[str, ...]:
         """The link's point names, in file order."""
-        return tuple(n for n, _ in self.points)
+        return tuple(self._at)
 
     def local(self, point: str) -> tuple[float, float]:
         """Local coordinates of one of the link's points."""
-        for n, xy in self.points:
-            if n == point:
-                return xy
-        raise KeyError(point)
+        return self._at[point]
+
+    def carries(self, point: str) -> bool:
+        """Whether ``point`` is one of the link's points."""
+        return point in self._at
 
     def span(self, p: str, q: str) -> float:
         """Distance between two of the link's points."""
@@ -382,7 +390,15 @@ class Mechanism:
 
     def links_at(self, point: str) -> tuple[int, ...]:
         """Numbers of the links that carry ``point`` (two or more make a pin)."""
-        return tuple(k.number for k in self.links if point in k.names)
+        return self._carriers.get(point, ())
+
+    @cached_property
+    def _carriers(self) -> dict[str, tuple[int, ...]]:
+        out: dict[str, tuple[int, ...]] = {}
+        for k in self.links:
+            for n in k.names:
+                out[n] = out.get(n, ()) + (k.number,)
+        return out
 
     @property
     def point_names(self) -> tuple[str, ...]:

@@ -20,7 +20,7 @@ from ..constructions.model import (LENGTH_UNITS, Arc, Contact, Drive, Link, Mech
                                  Slide, SlideKind, Units, contact_arc, contact_slide)
 
 __all__ = ["load_mechanism", "parse_mechanism", "SourceMap", "read_source", "read_toml",
-           "LARGEST", "in_range", "radians_in_turn"]
+           "LARGEST", "MOST_BYTES", "MOST_POINTS", "in_range", "radians_in_turn"]
 
 LARGEST = 1e30
 """The largest size of a number tarsim takes from a file; its reciprocal is the smallest
@@ -29,6 +29,15 @@ within this range none of them overflows or underflows a float."""
 
 RANGE = "between 1e-30 and 1e30 in size, or 0"
 """:data:`LARGEST` as an error message says it."""
+
+MOST_BYTES = 1_000_000
+"""The largest file tarsim reads. A textbook mechanism takes a few kilobytes; the cap is
+read, not trusted to a file's stated size, so a device or a pipe cannot run it out of
+memory."""
+
+MOST_POINTS = 100
+"""The most points a mechanism may name. Every point is constructed, labelled and placed
+clear of the others on each figure, and that placing grows faster than the count."""
 
 _CONTROL = re.compile("[\x00-\x1f\x7f-\x9f\u202a-\u202e\u2066-\u2069]")
 """Control characters, and the bidirectional overrides that reorder what a figure shows."""
@@ -66,7 +75,12 @@ def read_source(path: str | Path) -> str:
     """
     path = Path(path)
     try:
-        return path.read_text(encoding="utf-8")
+        with path.open("rb") as f:
+            data = f.read(MOST_BYTES + 1)
+        if len(data) > MOST_BYTES:
+            raise InputError(f"is larger than {MOST_BYTES // 1000:,} kB, the most tarsim reads; "
+                             "a mechanism file takes a few kB", file=str(path))
+        return data.decode("utf-8")
     except UnicodeDecodeError as e:
         raise InputError(f"is not UTF-8 text (byte 0x{e.object[e.start]:02x}); save it as UTF-8",
                          file=str(path), line=e.object[:e.start].count(b"\n") + 1) from None
@@ -172,12 +186,24 @@ class _Reader:
              key: str | None = None) -> InputError:
         line = (self.where.key(key, table, index) if key
                 else self.where.header(table, index) if table else None)
-        label = table if table else None
-        if table in ("link", "slider", "contact"):
-            label = f"{table} #{index + 1}"
+        label = self._entry(table, index) if table else None
         if key:
-            label = f"{label}.{key}" if label else key
+            # A TOML path for a plain table ("input.link"); "link 3, AB" for a numbered one.
+            sep = ", " if table in ("link", "slider", "contact") else "."
+            label = f"{label}{sep}{key}" if label else key
         return InputError(message, file=self.file, line=line, key=label)
+
+    def _entry(self, table: str, index: int) -> str:
+        """How an error names a table: "link 3" by its number, else "slider 2" by its place
+        among the ``[[slider]]`` tables; a plain table by its name."""
+        if table not in ("link", "slider", "contact"):
+            return table
+        entries = self.d.get(table)
+        entry = entries[index] if isinstance(entries, list) and index < len(entries) else None
+        number = entry.get("number") if isinstance(entry, dict) else None
+        if table == "link" and isinstance(number, int) and not isinstance(number, bool):
+            return f"link {number}"
+        return f"{table} {index + 1}"
 
     def unknown(self, got: str, valid: list[str] | tuple[str, ...], what: str,
                 **where) -> InputError:
@@ -212,6 +238,10 @@ class _Reader:
             else:
                 slides.append(contact_slide(c, self.links[c.face.link]))
         mech_links = tuple(self.links.values())
+        named = {n for k in mech_links for n in k.names}
+        if len(named) > MOST_POINTS:
+            raise self.fail(f"names {len(named):,} points; a mechanism may have at most "
+                            f"{MOST_POINTS}, each drawn and labelled on every figure")
         drive = self.read_input()
         branches = self.read_assembly(mech_links, tuple(slides))
         mech = Mechanism(mech_links, drive, tuple(slides), branches, self.units,

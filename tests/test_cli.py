@@ -110,9 +110,9 @@ def test_unreachable_position_via_the_angle_option(mech_file):
 
 @pytest.mark.parametrize("edit, message", [
     (("O4 = [300, 0]", "O4 = [300; 0]"), "{f}:3:10: not valid TOML: "),
-    (("AB = 150", "AB = -150"), "{f}:13: [link #2.AB] length AB of link 3 must be a positive "
+    (("AB = 150", "AB = -150"), "{f}:13: [link 3, AB] length AB of link 3 must be a positive "
                                 "length, got -150"),
-    (("O4B = 200", "O4B = 0"), "{f}:18: [link #3.O4B] length O4B of link 4 must be a positive "
+    (("O4B = 200", "O4B = 0"), "{f}:18: [link 4, O4B] length O4B of link 4 must be a positive "
                                "length, got 0"),
     (("link = 2", "link = 5"),
      "{f}:21: [input.link] unknown link '5'; expected one of: 1, 2, 3, 4"),

@@ -215,7 +215,7 @@ def _edit(name: str, old: str, new: str) -> str:
 
 @pytest.mark.parametrize("name, old, new, words", [
     ("curved-guide-slider-crank", "radius = 220", "# no radius",
-     ["[slider #1]", "a curved guide needs its radius"]),
+     ["[slider 1]", "a curved guide needs its radius"]),
     ("curved-guide-slider-crank", 'centre = "C"', 'centre = "D"',
      ["unknown point of link 1 'D'"]),
     ("curved-guide-slider-crank", 'centre = "C"', 'centre = "C"\nangle = 10',

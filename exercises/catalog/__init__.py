@@ -31,6 +31,12 @@ def resolve(name: str) -> Path:
     ids = bundled()
     if name in ids:
         return ids[name]
+    if path.is_dir():
+        raise InputError(f"'{name}' is a folder; give a mechanism or exercise file (.toml) "
+                         "or a bundled id")
+    if path.exists():
+        raise InputError(f"'{name}' is not an ordinary file; give a mechanism or exercise "
+                         "file (.toml)")
     if path.suffix or "/" in name:
         raise InputError(f"no such file '{name}'")
     import difflib
