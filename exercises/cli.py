@@ -144,7 +144,7 @@ def check(source, angle):
 
 @cli.command()
 @_source
-@click.option("-o", "--output", "out_dir", type=click.Path(file_okay=False), default=None,
+@click.option("-o", "--output", "out_dir", type=click.Path(), default=None,
               metavar="DIR", help="Folder for the solution (default: <id>-solution/ here).")
 @_angle
 @click.option("--pdf/--no-pdf", default=True, show_default=True,
@@ -183,14 +183,15 @@ def solve(source, out_dir, angle, pdf):
     the same, so the disagreement can be seen); 1 for bad input.
     """
     from .solution_files import overall_text, solve_worked
-    from ..graphics.export import cairo_missing
+    from ..graphics.export import cairo_missing, output_folder
 
     ex = _exercise(source, angle)
-    worked = solve_worked(ex)
-    sols, overall = worked.positions, worked.overall
-    reason = cairo_missing() if pdf else None
     out = Path(out_dir or f"{ex.id}-solution")
-    written = worked.write(out, pdf=pdf and reason is None)
+    with output_folder(out):      # a folder that cannot be written fails before the solve
+        worked = solve_worked(ex)
+        reason = cairo_missing() if pdf else None
+        written = worked.write(out, pdf=pdf and reason is None)
+    sols, overall = worked.positions, worked.overall
     for name, q in overall.quantities.items():
         click.echo(f"{name:<10} {overall_text(name, q.value, ex.mechanism.units)}  "
                    f"rel. error {q.rel_error:.1e}  {'ok' if q.passed else 'FAILED'}  ({q.method})")
@@ -212,7 +213,7 @@ def solve(source, out_dir, angle, pdf):
 
 @cli.command()
 @_source
-@click.option("-o", "--output", "out_dir", type=click.Path(file_okay=False), default=None,
+@click.option("-o", "--output", "out_dir", type=click.Path(), default=None,
               metavar="DIR", help="Folder for the sweep (default: <id>-sweep/ here).")
 @click.option("--of", "of", default=None, metavar="NAME",
               help="The output: V_B or A_B (point B), omega4, alpha4 or theta4 (link 4). "
@@ -252,18 +253,19 @@ def sweep(source, out_dir, of, steps, pdf):
     """
     from .sweep import sweep_exercise
     from .sweep_files import format_sweep, sweep_to_files, write_sweep
-    from ..graphics.export import cairo_missing
+    from ..graphics.export import cairo_missing, output_folder
 
     ex = _exercise(source, None)
     reason = cairo_missing() if pdf else None
-    if sys.stderr.isatty():
-        with click.progressbar(length=steps, label="sweeping", file=sys.stderr) as bar:
-            result = sweep_exercise(ex, steps, of=of, progress=bar.update)
-    else:
-        result = sweep_exercise(ex, steps, of=of)
-    files = sweep_to_files(result, pdf=pdf and reason is None)
     out = Path(out_dir or f"{ex.id}-sweep")
-    written = write_sweep(files, out)
+    with output_folder(out):      # a folder that cannot be written fails before the sweep
+        if sys.stderr.isatty():
+            with click.progressbar(length=steps, label="sweeping", file=sys.stderr) as bar:
+                result = sweep_exercise(ex, steps, of=of, progress=bar.update)
+        else:
+            result = sweep_exercise(ex, steps, of=of)
+        files = sweep_to_files(result, pdf=pdf and reason is None)
+        written = write_sweep(files, out)
     click.echo(format_sweep(result))
     click.echo(f"wrote {len(written)} files to {out}/")
     if reason:

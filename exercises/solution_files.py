@@ -5,8 +5,8 @@ a figure shows only the slice of its answers: the centres figure the centres ask
 (or needed for an ω), each velocity figure its own method's lines and the centres
 it uses, the worked page the polygons. The numbers beside the drawn lines are the
 step numbers of steps.md, both the slice's own numbering. Everything is made in
-memory first, then written file by file atomically, so an error leaves nothing
-half-written.
+memory first, then written as one set (:func:`~tarsim.graphics.export.write_folder`),
+so an error leaves the folder as it was.
 """
 
 from __future__ import annotations
@@ -24,7 +24,7 @@ from ..constructions.narration import narrate
 from ..constructions.record import Kind, Panel, Slice, slice
 from ..constructions.velocity_polygon import WORKED, drawn_velocity_polygon
 from ..graphics.circle_diagram import draw_circle_diagram
-from ..graphics.export import RenderError, pdf_pages, svg_to, write_text
+from ..graphics.export import pdf_pages, svg_to, write_folder
 from ..graphics.figure import Figure, stack_pages
 from ..graphics.polygon_panel import draw_polygon_panel
 from ..graphics.scene import draw_scene
@@ -121,13 +121,13 @@ class WorkedSolution:
 
     def write(self, folder: str | Path, *, pdf: bool = True) -> list[Path]:
         """Write every file into ``folder`` (made if missing), with a PDF of each figure when
-        ``pdf``; return the paths written.
+        ``pdf``, as :func:`write_solution` does; return the paths written.
 
         Raises
         ------
         RenderError
-            If the folder cannot be made or written, or PDF is asked and libcairo2 is
-            missing (checked before anything is written).
+            If the folder cannot be made or written, holds a file of one of these names
+            that tarsim did not write, or PDF is asked and libcairo2 is missing.
         """
         return write_solution(self.files(), folder, pdf=pdf)
 
@@ -158,30 +158,26 @@ def solve_all(ex: Exercise) -> tuple[list[Solution], Overall, dict[str, str]]:
 
 
 def write_solution(files: dict[str, str], out_dir: str | Path, *, pdf: bool = True) -> list[Path]:
-    """Write the rendered files into ``out_dir`` (made if missing), with a PDF per figure.
+    """Write the rendered files into ``out_dir`` (made if missing), with a PDF per figure,
+    all or nothing (see :func:`~tarsim.graphics.export.write_folder`).
 
-    ``solution.pdf`` has those figures as its pages, in order.
+    ``solution.pdf`` has those figures as its pages, in order. The previous solution's
+    files in the folder are replaced whole; a file there tarsim did not write is kept.
 
     Raises
     ------
     RenderError
-        If the folder cannot be made or written, or PDF is asked and libcairo2 is
-        missing (checked before anything is written).
+        If the folder cannot be made or written, holds a file of one of these names that
+        tarsim did not write, or PDF is asked and libcairo2 is missing (checked before
+        anything is written).
     """
-    out = Path(out_dir)
     pdfs = {}
     if pdf:
         pdfs = {name[:-4] + ".pdf": svg_to(text, "pdf") for name, text in files.items()
                 if name.endswith(".svg") and name != "solution.svg"}
         if pdfs:
             pdfs["solution.pdf"] = pdf_pages(list(pdfs.values()))
-    try:
-        out.mkdir(parents=True, exist_ok=True)
-    except OSError as e:
-        raise RenderError(f"cannot make the folder '{out}': {e.strerror}") from None
-    written = [write_text(out / name, text) for name, text in files.items()]
-    written += [write_text(out / name, data) for name, data in pdfs.items()]
-    return written
+    return write_folder({**files, **pdfs}, out_dir)
 
 
 # ----- figures ---------------------------------------------------------------------------

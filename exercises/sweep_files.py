@@ -13,7 +13,7 @@ import re
 from pathlib import Path
 
 from ..constructions.model import Mechanism
-from ..graphics.export import RenderError, svg_to, write_text
+from ..graphics.export import svg_to, write_folder
 from ..graphics.figure import Figure
 from ..graphics.plot import CURVE_STYLES, PlotMark, Series, draw_line_plot
 from ..graphics.svg import to_svg
@@ -288,19 +288,16 @@ def sweep_to_files(sw: Sweep, *, pdf: bool = False) -> dict[str, str | bytes]:
 
 
 def write_sweep(files: dict[str, str | bytes], out_dir: str | Path) -> list[Path]:
-    """Write the rendered files into ``out_dir`` (made if missing), each atomically.
+    """Write the rendered files into ``out_dir`` (made if missing), all or nothing, replacing
+    the previous run's (see :func:`~tarsim.graphics.export.write_folder`).
 
     Raises
     ------
     RenderError
-        If the folder cannot be made or a file written.
+        If the folder cannot be made or written, or holds a file of one of these names
+        that tarsim did not write.
     """
-    out = Path(out_dir)
-    try:
-        out.mkdir(parents=True, exist_ok=True)
-    except OSError as e:
-        raise RenderError(f"cannot make the folder '{out}': {e.strerror}") from None
-    return [write_text(out / name, data) for name, data in files.items()]
+    return write_folder(files, out_dir)
 
 
 # ----- the report ----------------------------------------------------------------------------

@@ -127,7 +127,7 @@ def test_solve_writes_figures_steps_and_results(tmp_path):
     names = sorted(p.name for p in out.iterdir())
     assert names == sorted(["centres.svg", "circle-diagram.svg", "V_B-radius-rotation.svg",
                             "V_B-parallel-line.svg", "V_B-components.svg", "steps.md",
-                            "results.json", "solution.svg"])
+                            "results.json", "solution.svg", ".tarsim-manifest.json"])
     doc = json.loads((out / "results.json").read_text(encoding="utf-8"))
     assert doc["exercise"] == "ex" and doc["quantities"] == {}
     (pos,) = doc["positions"]
@@ -165,7 +165,8 @@ def test_steps_md_numbers_match_the_figure(tmp_path):
 
 def test_asking_for_one_velocity_draws_no_unused_centres(tmp_path):
     out = solve_v_b_by_radius_rotation(tmp_path)
-    assert sorted(p.name for p in out.iterdir()) == ["V_B-radius-rotation.svg", "results.json",
+    assert sorted(p.name for p in out.iterdir()) == [".tarsim-manifest.json",
+                                                     "V_B-radius-rotation.svg", "results.json",
                                                      "solution.svg", "steps.md"]
     svg = (out / "V_B-radius-rotation.svg").read_text(encoding="utf-8")
     # B is taken on the coupler (Hinkle Fig 5.1): the transfer point is the pin I23, the

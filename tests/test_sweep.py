@@ -261,7 +261,7 @@ def test_sweep_writes_its_files_and_reports(tmp_path):
     result = run("sweep", "crank-shaper", "-o", out, "--steps", 72, "--no-pdf")
     assert result.exit_code == 0, result.output
     assert sorted(p.name for p in out.iterdir()) == [
-        "sweep-acceleration.svg", "sweep-points.csv", "sweep-position.svg",
+        ".tarsim-manifest.json", "sweep-acceleration.svg", "sweep-points.csv", "sweep-position.svg",
         "sweep-velocity.svg", "sweep.csv"]
     assert len(rows((out / "sweep.csv").read_text(encoding="utf-8"))) == 1 + 72
     text = result.stdout
