@@ -26,7 +26,7 @@ from dataclasses import dataclass, field
 from . import geometry as g
 from .errors import AssemblyError, DegenerateInput, NoIntersection, TarsimError
 from .model import Arc, Mechanism, Slide, SlideKind
-from .narration import Phrase, Word, narrate, phrase
+from .narration import Phrase, Word, phrase
 from .record import VERBS, Construction, Kind, Ref, Role
 
 __all__ = ["Assembly", "assemble", "point_ref", "DYAD_RULES", "dyad_rule", "MEETING"]
@@ -121,17 +121,47 @@ class Assembly(Construction):
 
     @property
     def meetings(self) -> tuple[str, ...]:
-        """The points whose two places coincide at this position (their arcs, or arc and
-        guide, only touch): there the two assemblies meet, a change point, and the
-        linkage may go on in either."""
+        """The points at a change point: where their two places coincide (their arcs, or arc
+        and guide, only touch) and the linkage may go on in either assembly.
+
+        Touching alone is a dead point of the input: the arc's centre C is driven across
+        the line of the touch, so the input stops there. Both assemblies can move on only
+        if C's motion runs along the touch, which, for C carried by a link pinned to the
+        frame at P, is when P lies on the line of the touch (for a four-bar, all four
+        pivots in line).
+        """
         out = []
         for name in self.mechanism.point_names:
             step = self[self.points[name]]
             if step.verb in _CUTS:
                 args = [self.output(r) for r in step.inputs]
-                if VERBS[step.verb](*args, **dict(step.params))[1] <= MEETING:
+                if (VERBS[step.verb](*args, **dict(step.params))[1] <= MEETING
+                        and self._free_along_touch(name, step)):
                     out.append(name)
         return tuple(out)
+
+    def _free_along_touch(self, name: str, step) -> bool:
+        """True if a moving centre of an arc in ``step`` (the cut that found ``name``) runs
+        along the line of the touch: a frame pivot of its link lies on that line."""
+        m = self.mechanism
+        loci = [self.output(r) for r in step.inputs]
+        circles = [c for c in loci if isinstance(c, g.Circle)]
+        if len(circles) == 2:
+            line, _ = g.line_through(circles[0].centre, circles[1].centre)
+        elif circles:
+            guide = next(x for x in loci if isinstance(x, g.Line))
+            line, _ = g.perpendicular_through(circles[0].centre, guide)
+        for circle in circles:
+            centre = next((n for n, r in self.points.items()
+                           if n != name and self.output(r) == circle.centre), None)
+            if centre is None or m.frame.carries(centre):
+                continue
+            pivots = [p for k in m.links_at(centre) if not m.link(k).carries(name)
+                      for p in m.link(k).names if m.frame.carries(p)]
+            if any(abs(line.signed_distance(self.output(self.points[p])))
+                   <= MEETING * circle.radius for p in pivots):
+                return True
+        return False
 
 
 def assemble(mech: Mechanism) -> Assembly:
@@ -159,7 +189,7 @@ class _Assembler:
     # ----- wording -------------------------------------------------------------
     def L(self, metres: float) -> str:
         """A length as an error message writes it."""
-        return self.m.units.length_text(metres)
+        return self.m.units.length_brief(metres)
 
     def length(self, metres: float):
         """A length as a step says it."""
@@ -170,8 +200,8 @@ class _Assembler:
         return self.m.units.angle_said(rad)
 
     def at(self) -> str:
-        """The input position, as an error message writes it."""
-        return narrate(self.at_said())
+        """The input position, as an error message writes it: "at θ2 = 60°"."""
+        return f"at θ{self.m.drive.link} = {self.m.units.angle_brief(self.theta)}"
 
     def at_said(self) -> Phrase:
         """The input position, as a step says it: "at θ2 = 60°"."""
@@ -231,6 +261,10 @@ class _Assembler:
                 raise AssemblyError(
                     f"no dyad locates {missing}: this mechanism needs a triad, which tarsim "
                     "cannot yet construct by compass")
+        # A slot that fixes no point (a lever with only its pivot) is still drawn: the
+        # instant centres and the polygons need its direction.
+        while len(self.guides) < len(self.m.slides) and any(rule.locate(self) for rule in rules):
+            pass
         self.c.contacts = self.touch()
         self.c.points, self.c.guides, self.c.axes = self.known, self.guides, self.axes
         self.c.position_steps = frozenset(self.c.steps)
@@ -402,6 +436,14 @@ class _Assembler:
                                        b=y))
             except NoIntersection:
                 raise self.cannot_reach(name, i, x, ri, y, rj) from None
+            except DegenerateInput:                   # x on y: the two arcs share a centre
+                if ri != rj:
+                    raise self.cannot_reach(name, i, x, ri, y, rj) from None
+                raise AssemblyError(
+                    f"{x} falls on {y} {self.at()}, so the arcs of {name} about them "
+                    f"coincide and {name} is not fixed: a change point, where the linkage's "
+                    "branches meet", link=i, joint=name,
+                    angle_deg=math.degrees(self.theta)) from None
             return True
         return False
 

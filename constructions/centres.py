@@ -272,8 +272,24 @@ class _Kennedy:
                     order += 1
                     continue
                 names = ", ".join(pair_label(*p) for p in todo)
-                raise TarsimError(f"Kennedy's theorem cannot reach {names}: no two distinct "
-                                  "lines are known for them (check the mechanism's joints)")
+                together = self.coincident(todo[0])
+                why = (f": {'; '.join(together)} at this position, so the lines through them "
+                       "are not fixed (is a link of next to no length beside the others?)"
+                       if together else ": no two distinct lines are known for them (check "
+                       "the mechanism's joints)")
+                raise TarsimError(f"Kennedy's theorem cannot reach {names}{why}")
+
+    def coincident(self, pair: tuple[int, int]) -> list[str]:
+        """The triangles of ``pair`` whose two known centres coincide, each as "I12 and I23 of
+        link 2 fall together"."""
+        i, j = pair
+        out = []
+        for k in self.out.links:
+            a, b = tuple(sorted((i, k))), tuple(sorted((j, k)))
+            if k not in pair and a in self.out.found and b in self.out.found and self.same_point(
+                    self.c.output(self.out.found[a].ref), self.c.output(self.out.found[b].ref)):
+                out.append(f"{pair_label(*a)} and {pair_label(*b)} of link {k} fall together")
+        return out
 
     def candidates(self, pair: tuple[int, int]) -> list[tuple[Ref, int | None]]:
         """Lines known to carry the centre: common normals, then one per usable triangle."""

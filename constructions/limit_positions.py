@@ -25,7 +25,7 @@ from dataclasses import dataclass
 from . import asks as A
 from .assembly import Assembly, assemble, point_ref
 from .checks import Answer, FigureSpec, time_ratio_value
-from .errors import InputError, NoIntersection
+from .errors import InputError, NoIntersection, TarsimError
 from .model import Mechanism, SlideKind
 from .measures import measure_angle
 from .narration import Number, Phrase, Word, narrate, phrase
@@ -172,7 +172,7 @@ class _Limits(_Dyad):
 
     def L(self, metres: float) -> str:
         """A length as an error message writes it."""
-        return self.m.units.length_text(metres)
+        return self.m.units.length_brief(metres)
 
     def length(self, metres: float):
         """A length as a step says it."""
@@ -258,8 +258,13 @@ class _Limits(_Dyad):
         o2, a, b = self.o2, self.a, self.b
         r, rod = self.r, self.rod_length
         if rod <= r:
-            raise InputError(f"the rod {a}{b} ({self.L(rod)}) is not longer than the crank "
-                             f"{o2}{a} ({self.L(r)}): the crank cannot turn fully")
+            raise InputError(f"the rod {a}{b} (link {self.rod}, {self.L(rod)}) is not longer "
+                             f"than the crank {o2}{a} (link {self.m.drive.link}, {self.L(r)}): "
+                             "the crank cannot turn fully")
+        # The folded radius AB − O2A carries the rounding of both lengths: relative to itself
+        # it is (AB + O2A) / (AB − O2A) times as uncertain, which a rod barely longer than
+        # its crank makes large.
+        self.cond = min(self.cond, (rod - r) / (rod + r))
         pins = []
         for i, (length, how) in enumerate(((rod + r, "extended"), (rod - r, "folded"))):
             mark = _PRIMES[i]
@@ -441,6 +446,12 @@ def answer(work, ask) -> Answer:
            else "crank and rod in line")
     method = f"limit positions by compass ({how})"
     if isinstance(ask, A.TimeRatio):
+        if min(lp.slow, lp.quick) <= 0.0:
+            theta = work.mechanism.units.angle_brief(lp.crank_angles[0])
+            raise TarsimError(f"both limit positions fall at θ{work.mechanism.drive.link} = "
+                              f"{theta}: the crank turns through no angle between "
+                              "them, so there is no time ratio (the linkage's branches meet "
+                              "there, a change point)")
         value = time_ratio_value(lp.slow, lp.quick)
     else:
         if lp.stroke is None:

@@ -25,7 +25,7 @@ from typing import Any
 from . import asks as A
 from .assembly import Assembly, assemble
 from .checks import Answer, Expected, Quantity, check
-from .errors import TarsimError
+from .errors import GeometryError, NoIntersection, TarsimError
 from .model import Mechanism
 from .record import Panel
 from .reference import solver
@@ -170,6 +170,21 @@ class Work:
         return 1.0
 
 
+def _construct(method: Method, work: Work, ask: A.Ask) -> Answer:
+    """``method``'s answer to ``ask``; a drafting act that breaks down inside it is said with
+    what was being drawn, where, and any miss in the file's units."""
+    try:
+        return method.construct(work, ask)
+    except GeometryError as e:
+        mech = work.mechanism
+        d = mech.drive
+        place = f"{ask.name} by {method.name} at θ{d.link} = {mech.units.angle_brief(d.angle)}"
+        if isinstance(e, NoIntersection):
+            raise TarsimError(f"{place}: two of its lines or arcs miss each other by "
+                              f"{mech.units.length_brief(e.margin)}") from None
+        raise TarsimError(f"{place}: {e}") from None
+
+
 def answer_all(work: Work, methods: tuple[Method, ...]) -> tuple[dict[str, Quantity], list[Answer]]:
     """Answer every ask of ``work`` by the methods that answer it, each beside its reference.
 
@@ -192,7 +207,7 @@ def answer_all(work: Work, methods: tuple[Method, ...]) -> tuple[dict[str, Quant
                               "[ask] methods")
         found = []
         for m in using:
-            answer = m.construct(work, ask)
+            answer = _construct(m, work, ask)
             found.append(check(answer, m.reference(work, ask), scale=work.scale_of(ask)))
             answers.append(answer)
         quantities[ask.name] = found[0].with_alternatives(found[1:])

@@ -45,7 +45,7 @@ from functools import cached_property
 from enum import StrEnum
 
 from .errors import InputError
-from .narration import Quantity, fixed
+from .narration import Quantity, fixed, significant
 
 __all__ = [
     "Units",
@@ -82,6 +82,18 @@ class Units:
     def length_text(self, metres: float, digits: int = 4) -> str:
         """Format a length given in metres in the file's unit ("250 mm")."""
         return f"{fixed(metres / self.metres, digits)} {self.length}"
+
+    def length_brief(self, metres: float) -> str:
+        """A length (m) as an error message gives it: six significant figures, in the
+        file's unit ("264.575 mm")."""
+        return f"{significant(metres / self.metres)} {self.length}"
+
+    def angle_brief(self, rad: float) -> str:
+        """An angle (rad) as an error message gives it, in the file's angle unit, to six
+        significant figures: "-100.335°", "1.0472 rad"."""
+        if self.angle == "rad":
+            return f"{significant(rad)} rad"
+        return f"{significant(math.degrees(rad))}°"
 
     def length_said(self, metres: float) -> Quantity:
         """A length (m) as a step says it, in the file's unit: "250 mm"."""

@@ -24,6 +24,7 @@ from __future__ import annotations
 
 import importlib
 from collections.abc import Iterable
+import re
 from dataclasses import dataclass
 from functools import cache
 from types import ModuleType
@@ -32,7 +33,7 @@ from typing import Any
 from .errors import TarsimError
 
 __all__ = ["Phrase", "phrase", "Number", "Quantity", "Word", "Capitalized", "narrate", "render",
-           "catalogue", "fixed", "LANGUAGES"]
+           "catalogue", "fixed", "significant", "LANGUAGES"]
 
 LANGUAGES = ("en",)
 """The languages with a catalogue, the first the default."""
@@ -95,9 +96,28 @@ class Capitalized:
 
 
 def fixed(value: float, digits: int) -> str:
-    """``value`` to ``digits`` decimals, with trailing zeros dropped ("250", "0.5")."""
+    """``value`` to ``digits`` decimals, with trailing zeros dropped ("250", "0.5").
+
+    A size of a million or more is said to six significant figures instead
+    (:func:`significant`), so no line spells out a 26-digit number.
+
+    >>> fixed(250.0, 4), fixed(1.5e25, 4), fixed(-2.5e-7, 4)
+    ('250', '1.5e25', '0')
+    """
+    if abs(value) >= 1e6:
+        return significant(value)
     text = f"{value:.{digits}f}".rstrip("0").rstrip(".")
     return "0" if text in ("-0", "") else text
+
+
+def significant(value: float, figures: int = 6) -> str:
+    """``value`` to ``figures`` significant figures, an exponent written short ("1.5e25").
+
+    >>> significant(264.57513110645906), significant(1.5e25), significant(-2.5e-7)
+    ('264.575', '1.5e25', '-2.5e-7')
+    """
+    text = re.sub(r"e\+?(-?)0*(\d)", r"e\1\2", f"{value:.{figures}g}")
+    return "0" if text == "-0" else text
 
 
 def render(arg: Any, lang: str = "en") -> str:
@@ -126,7 +146,7 @@ def render(arg: Any, lang: str = "en") -> str:
     if isinstance(arg, Number):
         return cat.digits(format(arg.value, arg.spec))
     if isinstance(arg, Quantity):
-        text = {"length": lambda v: fixed(v, 4), "rate": lambda v: f"{v:.6g}",
+        text = {"length": lambda v: fixed(v, 4), "rate": significant,
                 "fixed": lambda v: f"{v:.4f}"}[arg.style](arg.value)
         unit = cat.UNITS.get(arg.unit, arg.unit) + cat.UNITS.get(arg.per, arg.per)
         return cat.digits(text) + ("" if arg.unit == "°" else " ") + unit

@@ -37,6 +37,7 @@ from ..constructions import asks as A
 from ..constructions import registry
 from ..constructions.errors import InputError
 from ..constructions.model import LENGTH_UNITS, Drive, Mechanism
+from ..constructions.narration import significant
 
 from .mechanism_file import (RANGE, SourceMap, _float, _Reader, in_range, radians_in_turn,
                              read_source, read_toml)
@@ -99,6 +100,22 @@ class Exercise:
         return tuple(a for a in self.asks if a.scope == "position")
 
     @property
+    def without_motion(self) -> str | None:
+        """Why the exercise cannot be solved with the input at rest (ω = 0): it asks for
+        velocities or instant centres, which the input's turning defines; None if it can be
+        or the input turns."""
+        if self.mechanism.drive.omega != 0.0:
+            return None
+        moving = [a.name for a in self.position_asks
+                  if isinstance(a, (A.Centre, A.AngularVelocity, A.Velocity))
+                  or isinstance(a, A.Relative) and a.letter == "V"]
+        if not moving:
+            return None
+        return (f"the exercise asks for {', '.join(moving[:3])}{' …' if len(moving) > 3 else ''}"
+                " but the input does not turn (omega is 0 or not given); state the input's "
+                "angular velocity in [input] omega")
+
+    @property
     def mechanism_asks(self) -> tuple[A.Ask, ...]:
         """What is asked of the mechanism as a whole (results.json's top-level quantities)."""
         return tuple(a for a in self.asks if a.scope == "mechanism")
@@ -141,7 +158,11 @@ def parse_exercise(text: str, filename: str = "<string>",
     where = SourceMap(text)
     ask = data.pop("ask", None)
     mech = _Reader(data, where, filename).mechanism()
-    return _read_ask(ask, mech, where, filename, exercise_id)
+    ex = _read_ask(ask, mech, where, filename, exercise_id)
+    if ask is not None and ex.without_motion:     # a bare mechanism file may still be drawn
+        raise InputError(ex.without_motion, file=filename,
+                         line=where.key("omega", "input") or where.header("input"), key="input")
+    return ex
 
 
 def _read_ask(ask, mech: Mechanism, where: SourceMap, filename: str, exercise_id: str) -> Exercise:
@@ -191,6 +212,11 @@ def _read_ask(ask, mech: Mechanism, where: SourceMap, filename: str, exercise_id
                     positions, scales.get("velocity"), scales.get("acceleration"))
 
 
+MOST_TURNED = 1e9
+"""The largest input turn (rad) a time in ``at`` may give: a float holds an angle this large
+to 1e-7 rad, so the turn's remainder, and so the position, is still the one meant."""
+
+
 def _read_positions(at, mech: Mechanism, fail) -> tuple[Position, ...]:
     """``at = [{ angle = 90 }, { time = 2.34 }]``: each a Position of the input."""
     if at is None:
@@ -216,8 +242,17 @@ def _read_positions(at, mech: Mechanism, fail) -> tuple[Position, ...]:
             label = f"θ{d.link} = {_angle_text(angle, deg)}"
             slug = f"theta{d.link}-{value:g}"
         else:
-            angle = d.angle + d.omega * value + 0.5 * d.alpha * value ** 2
-            drive = replace(d, angle=angle, omega=d.omega + d.alpha * value)
+            turned = d.omega * value + 0.5 * d.alpha * value * value
+            omega = d.omega + d.alpha * value
+            if not abs(turned) <= MOST_TURNED:
+                raise fail(f"at t = {value:g} s the input has turned {turned:.3g} rad, past the "
+                           f"{MOST_TURNED:.0e} rad within which a float keeps its angle to "
+                           "1e-7 rad; give an earlier time", "at")
+            if not in_range(omega):
+                raise fail(f"at t = {value:g} s the input's ω = {omega:.3g} rad/s is out of the "
+                           f"range tarsim takes ({RANGE})", "at")
+            angle = math.fmod(d.angle + turned, math.tau)
+            drive = replace(d, angle=angle, omega=omega)
             label = f"t = {value:g} s (θ{d.link} = {_angle_text(angle, deg)})"
             slug = f"t-{value:g}s"
         out.append(Position(drive, label, slug))
@@ -248,7 +283,22 @@ def _read_scales(given, mech: Mechanism, fail) -> dict[str, float]:
         if kind in out:
             raise fail(f"scale states the {kind} scale twice", "scale")
         out[kind] = amount * _SCALE_UNITS[unit] / mech.units.metres / paper
+        _fits(kind, text, out[kind], mech, fail)
     return out
+
+
+def _fits(kind: str, text: str, per_cm: float, mech: Mechanism, fail) -> None:
+    """Refuse a stated velocity or acceleration scale that draws the input's (ω r, or
+    |α r, ω² r|) shorter than a micrometre or longer than ten kilometres: no figure holds
+    it, and its arrows are lost to rounding beside the mechanism."""
+    size = {"velocity": mech.input_speed, "acceleration": mech.input_acceleration,
+            "space": 0.0}[kind] / mech.units.metres
+    if size == 0.0 or 1e-4 <= size / per_cm <= 1e6:
+        return
+    raise fail(f"the {kind} scale {text!r} draws the input's {kind}, {significant(size)} "
+               f"{mech.units.length}/s{'²' if kind == 'acceleration' else ''}, "
+               f"{significant(size / per_cm)} cm long; state one that draws it a few cm long",
+               "scale")
 
 
 def _angle_text(angle: float, deg: bool) -> str:

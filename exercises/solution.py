@@ -14,7 +14,6 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from ..constructions import asks as A
 from ..constructions.assembly import Assembly
 from ..constructions.checks import Answer, Quantity
 from ..constructions.errors import TarsimError
@@ -127,9 +126,8 @@ def solve_exercise(ex: Exercise) -> Solution:
     """
     mech = ex.mechanism
     work = Work(mech, ex.position_asks, ex.methods, ex.stated)
-    if mech.drive.omega == 0.0 and work.asked((A.AngularVelocity, A.Velocity)):
-        raise TarsimError("the exercise asks for velocities but [input] gives no omega; "
-                          "state the input's angular velocity")
+    if ex.without_motion:
+        raise TarsimError(ex.without_motion)
     work.prepare()
     quantities, answers = answer_all(work, METHODS)
     return Solution(ex, work, quantities, answers)

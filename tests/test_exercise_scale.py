@@ -21,7 +21,8 @@ from tests.common import four_bar_toml
 
 
 def _with_scale(scale: str) -> str:
-    return four_bar_toml() + f'\n[ask]\nfind = ["omega4"]\nscale = "{scale}"\n'
+    moving = four_bar_toml().replace("[input]\n", "[input]\nomega = 10\n")
+    return moving + f'\n[ask]\nfind = ["omega4"]\nscale = "{scale}"\n'
 
 
 @pytest.mark.parametrize("stated, per_cm_mm", [("1 cm = 4 cm", 40.0), ("1 cm = 50 mm", 50.0),

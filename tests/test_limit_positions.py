@@ -194,8 +194,9 @@ def test_stroke_is_not_offered_without_a_block():
 
 def test_a_rod_shorter_than_the_crank_is_refused():
     ex = parse_exercise(SLIDER_CRANK.format(r=30, l=20, e=0, angle=10, omega=1))
-    with pytest.raises(InputError, match=r"the rod AB \(20 mm\) is not longer than the crank "
-                                         r"O2A \(30 mm\): the crank cannot turn fully"):
+    with pytest.raises(InputError, match=r"the rod AB \(link 3, 20 mm\) is not longer than "
+                                         r"the crank O2A \(link 2, 30 mm\): the crank cannot "
+                                         r"turn fully"):
         draw_limit_positions(ex.mechanism)
 
 

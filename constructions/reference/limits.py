@@ -61,7 +61,7 @@ def limit_reference(mech: Mechanism, *, point: str | None = None,
             kin = solve(mech.with_drive(Drive(d.link, theta, sense, 0.0)))
         except (SingularPosition, AssemblyError) as e:
             raise InputError(f"the crank cannot turn fully (at θ{d.link} = "
-                             f"{math.degrees(theta):.4g}°: {e}), so it has no limit "
+                             f"{mech.units.angle_brief(theta)}: {e}), so it has no limit "
                              "positions to pass") from None
         if slide is None:
             return kin.omegas[link], 0.0
@@ -78,8 +78,9 @@ def limit_reference(mech: Mechanism, *, point: str | None = None,
         elif speeds[k] * speeds[k + 1] < 0.0:
             zeros.append(bisect_zero(lambda t: state(t)[0], thetas[k], thetas[k + 1], speeds[k]))
     if len(zeros) != 2:
-        raise InputError(f"the output reverses {len(zeros)} times in a revolution, not twice; "
-                         "a time ratio needs exactly two limit positions")
+        output = f"the block {point}" if point is not None else mech.link(link).label
+        raise InputError(f"{output} reverses {len(zeros)} times in a turn of link {d.link}, "
+                         "not twice; a time ratio needs exactly two limit positions")
     first = (sense * (zeros[1] - zeros[0])) % (2 * math.pi)
     slow, quick = max(first, 2 * math.pi - first), min(first, 2 * math.pi - first)
     stroke = abs(state(zeros[1])[1] - state(zeros[0])[1]) if slide is not None else None

@@ -62,13 +62,16 @@ def mobility_of(mech: Mechanism) -> Mobility:
     mech = follow_branches(mech)
     d = mech.drive
     found = {}
+    why = None
     for k in range(TURNS):
         turned = mech.with_drive(replace(d, angle=d.angle + 2 * math.pi * k / TURNS))
         try:
             found[k] = mobility_by_rank(turned)
-        except AssemblyError:
+        except AssemblyError as e:
+            why = why or e
             continue
     if not found:
-        raise AssemblyError("the mechanism assembles at none of the input angles tried, so it "
-                            "has no mobility to count", link=d.link)
+        raise AssemblyError(f"the mechanism assembles at none of {TURNS} input angles spread over "
+                            f"a turn, so it has no mobility to count; at the first: {why}",
+                            link=d.link)
     return Mobility(min(found.values()), found.get(0, min(found.values())))

@@ -92,7 +92,11 @@ def grashof_class(mech: Mechanism) -> GrashofResult | None:
     order = (1, first, coupler, last)
 
     def span(k: int) -> float:
-        return mech.link(k).span(*ends[k])
+        length = mech.link(k).span(*ends[k])
+        if length <= 0.0:
+            raise InputError(f"{mech.link(k).label} has no length between {ends[k][0]} and "
+                             f"{ends[k][1]}: a four-bar needs four links of positive length")
+        return length
 
     return grashof(tuple(span(k) for k in order), links=order)
 

@@ -203,7 +203,7 @@ class _Assembly:
                              angle_deg=self.deg)
 
     def _len(self, metres: float) -> str:
-        return self.units.length_text(metres)
+        return self.units.length_brief(metres)
 
     def _label(self, k: int) -> str:
         return self.m.link(k).label
@@ -344,8 +344,7 @@ class _Assembly:
             raise self._fail(
                 f"{self._label(i)} with {x}{name} = {self._len(ri)} and {self._label(j)} with "
                 f"{y}{name} = {self._len(rj)} cannot reach {name}: {x} and {y} are "
-                f"{self._len(d)} apart (short by {margin / self.units.metres:.3g} "
-                f"{self.units.length})", i, name)
+                f"{self._len(d)} apart (short by {self._len(margin)})", i, name)
         h2 = max(0.0, (ri + rj - d) * (ri + rj + d) * (d - ri + rj) * (d + ri - rj))
         u = (cy - cx) / d
         foot = cx + (d * d + ri * ri - rj * rj) / (2.0 * d) * u
