@@ -384,6 +384,7 @@ class _Polygon(PolygonWalk):
         rx, ry = xx - kx, xy - ky
         ax, ay = self.vector(end, self.known[x])
         alpha = (rx * ay - ry * ax) / (rx * rx + ry * ry)
+        self.spans[c] = math.hypot(rx, ry)
         rel = self.name(x) if self.zero(k) else f"{self.name(x)}/{self.name(k)}"
         return alpha, x, self.alpha_text(c, phrase("apolygon.what_tangential", rel=rel), k, x,
                                          math.hypot(ax, ay), alpha)
@@ -393,7 +394,7 @@ class _Polygon(PolygonWalk):
         rx, ry = qx - px, qy - py
         ax, ay = self.vector(self.tip(p), self.tip(q))
         alpha = (rx * ay - ry * ax) / (rx * rx + ry * ry)
-        r = math.hypot(rx, ry)
+        r = self.spans[c] = math.hypot(rx, ry)
         rel = self.name(q) if self.zero(p) else f"{self.name(q)}/{self.name(p)}"
         return alpha, q, self.alpha_text(c, phrase("apolygon.what_part", rel=rel,
                                                    line=f"{p.point}{q.point}"), p, q,
@@ -435,20 +436,27 @@ def answer(work, ask) -> Answer:
         a = ap.rates.get(ask.link)
         if a is None:
             raise TarsimError(f"{ask.name} could not be read off the polygon")
-        value, cond, refs = {"value": a}, ap.worst(), tuple(ap.tips_on(ask.link, m))
+        value, refs = {"value": a}, tuple(ap.tips_on(ask.link, m))
         method = "acceleration polygon"
     elif isinstance(ask, A.Relative):
         ref = ap.draw_relative(ask.point, ask.of, m.units)
         value = vector_value(*ap.between(*c[ref].inputs))
-        cond = min(c[ap.tip(n)].conditioning for n in (ask.point, ask.of))
         refs, method = (ref,), "acceleration polygon"
     elif isinstance(ask, A.Coriolis):
         end = ap.coriolis[ask.point][1]
-        value, cond, refs = vector_value(*ap.coriolis_of(ask.point)), c[end].conditioning, (end,)
+        value, refs = vector_value(*ap.coriolis_of(ask.point)), (end,)
         method = "acceleration polygon (2ω×v_rel)"
     else:
         tip = ap.tip(ask.point)
-        value, cond, refs = vector_value(*ap.vector(ask.point)), c[tip].conditioning, (tip,)
+        value, refs = vector_value(*ap.vector(ask.point)), (tip,)
         method = "acceleration polygon"
+    # The walk takes ω and sliding speeds from the velocity polygon, and hands α from tip to
+    # tip, as numbers: every reading inherits the worst of both polygons, compounded (near a
+    # toggle each polygon divides by the same small sine, so an acceleration by its square).
+    cond = ap.worst() * drawn_velocity_polygon(work).worst()
+    if isinstance(ask, A.AngularAcceleration):
+        cond *= ap.reading(max(abs(value["value"]), work.scale_of(ask)), ask.link)
+    else:
+        cond *= ap.reading(max(value["value"], work.scale_of(ask)))
     return Answer(ask, value, cond, method, refs=refs + velocities, arrows=arrows,
                   figures=(WORKED,), panel=Panel.ACCELERATION)

@@ -645,13 +645,17 @@ class _Assembler:
             raise AssemblyError(f"[assembly] {s.point}: give \"forward\" or \"backward\" for a "
                                 "block in a swinging slot", joint=s.point)
         q, p = self.known[pivot], self.known[s.point]
-        if g.distance(self.c.output(q), self.c.output(p)) == 0.0:
+        # As near as the analytic rank test sees a singular Jacobian (solver.SINGULAR_RCOND).
+        if g.distance(self.c.output(q), self.c.output(p)) <= MEETING * self.size:
             raise AssemblyError(f"the block {s.point} sits on the pivot {pivot} {self.at()}, so "
-                                f"the slot of link {k.number} has no direction", link=k.number)
+                                f"the slot of link {k.number} has no direction and the link "
+                                "may turn freely", link=k.number, free=True)
         name = f"slot of link {k.number}"
         if abs(offset) <= 1e-12 * self.size:
             ends = (q, p) if pick == "forward" else (p, q)
+            apart = g.distance(self.c.output(q), self.c.output(p)) / self.size
             slot = self.c.draw(f"guide:{i}", "line_through", *ends, label=name, kind=Kind.GUIDE,
+                               spread=min(1.0, apart),
                                phrase=phrase("position.slot_through_block", link=k.number,
                                              pivot=pivot, point=s.point))
         else:

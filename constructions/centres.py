@@ -520,6 +520,18 @@ def omega_ratio(centres: Centres, i: int, j: int) -> float:
 
 
 
+def _spread(cs: Centres, i: int, j: int) -> float:
+    """How far I_ij stands from I_1j beside the mechanism's size: the ratio's denominator is
+    that distance, and each centre is only known to the rounding of the whole drawing."""
+    p_ij, p_j = cs.point(i, j), cs.point(1, j)
+    if p_ij.is_at_infinity or p_j.is_at_infinity:
+        return 1.0
+    asm = cs.assembly
+    size = max(math.hypot(*asm.output(r).xy) for r in asm.points.values())
+    size = max(size, *(abs(c) for c in (*p_ij.xy, *p_j.xy)), 1e-300)
+    return min(1.0, g.distance(p_ij, p_j) / size)
+
+
 # ----- as a method of the registry -------------------------------------------------------------
 _RULE_WORDS = {"pin": "inspection (pin)", "block": "inspection (block on a straight guide)",
                "curved": "inspection (block on a curved guide: centre of curvature)",
@@ -561,7 +573,12 @@ def answer_omega(work, ask: A.AngularVelocity) -> Answer:
     except DegenerateInput as e:
         raise TarsimError(f"ω{n} from the instant centres: {e}") from None
     pairs = [(1, d.link), (1, n), tuple(sorted((d.link, n)))]
-    cond = min(cs.conditioning(*pair) for pair in pairs)
+    cond = min(cs.conditioning(*pair) for pair in pairs) * _spread(cs, d.link, n)
+    if cond < _SAME:
+        raise TarsimError(f"ω{n} from the instant centres: {pair_label(d.link, n)} and "
+                          f"{pair_label(1, n)} fall together at this position, so the ratio "
+                          f"of their distances is lost to rounding; find ω{n} by the velocity "
+                          "polygon")
     return Answer(ask, {"value": ratio * d.omega + 0.0}, cond, "instant centres (ω ratio)",
                   refs=tuple(cs.centre(*pair).ref for pair in pairs), figures=(OMEGA_FIGURE,))
 

@@ -203,6 +203,12 @@ def _same_class(value: dict, ref: dict, scale: float) -> tuple[dict, dict, float
 def _interval(value: dict, ref: dict, scale: float) -> tuple[dict, dict, float]:
     """A range of lengths, its ends relative to the longest link (``scale``)."""
     lo, hi, rlo, rhi = value["low"], value["high"], ref["low"], ref["high"]
+    if value["class"] == "change-point" and lo == hi:
+        # A change point is where two classes meet: the turning test counts it with the class
+        # it turns like, so it stands at one end of that class's range (both, for a
+        # parallelogram, whose neighbours on either side turn otherwise).
+        err = min(abs(lo - rlo), abs(lo - (math.inf if rhi is None else rhi))) / scale
+        return value, ref, err
     far = 0.0 if hi is None and rhi is None else abs((hi or math.inf) - (rhi or math.inf))
     err = max(abs(lo - rlo), far) / scale
     return value, ref, err if math.isfinite(err) else 1.0

@@ -169,6 +169,7 @@ class _Limits(_Dyad):
         self.c = self.asm
         self.steps: list[Ref] = []
         self.cond = 1.0
+        self.cancel = 1.0
 
     def L(self, metres: float) -> str:
         """A length as an error message writes it."""
@@ -218,7 +219,7 @@ class _Limits(_Dyad):
         slow_from, slow, quick = self.crank_angles(pins)
         point, stroke, stroke_ref = self.carry_output()
         return LimitPositions(self.asm, self.steps, self.kind, angles, slow, quick, point,
-                              stroke, stroke_ref, slow_from, self.cond,
+                              stroke, stroke_ref, slow_from, self.cond * self.cancel,
                               None if self.kind == "slider-crank" else self.out)
 
     def crank_angles(self, pins: tuple[Ref, Ref]) -> tuple[int, float, float]:
@@ -264,7 +265,9 @@ class _Limits(_Dyad):
         # The folded radius AB − O2A carries the rounding of both lengths: relative to itself
         # it is (AB + O2A) / (AB − O2A) times as uncertain, which a rod barely longer than
         # its crank makes large.
-        self.cond = min(self.cond, (rod - r) / (rod + r))
+        # Its error then passes through the cut of that arc with B's path, so the two
+        # compound: a product, not the lesser.
+        self.cancel = (rod - r) / (rod + r)
         pins = []
         for i, (length, how) in enumerate(((rod + r, "extended"), (rod - r, "folded"))):
             mark = _PRIMES[i]

@@ -90,6 +90,8 @@ class Polygon:
     aliases: dict[str, str] = field(default_factory=dict)
     coriolis: dict[str, tuple[Ref, Ref, float]] = field(default_factory=dict)
     components: dict[str, Ref] = field(default_factory=dict)
+    spans: dict[int, float] = field(default_factory=dict)
+    """The length (m) on the space diagram each rate was read over: ω = V_rel / span."""
 
     def vector(self, name: str) -> tuple[float, float]:
         """Read the velocity (or acceleration) of ``name`` off the polygon: the vector from the
@@ -150,8 +152,30 @@ class Polygon:
             return key.endswith(str(link)) and key[:-len(str(link))] in mech.point_names
         return [r for key, r in self.tips.items() if on(key)]
 
+    def extent(self) -> float:
+        """The longest vector drawn from the pole (m/s, m/s²): each tip is drawn to a rounding
+        of about eps times this, however short the vector read off it."""
+        c = self.construction
+        refs = [*self.tips.values(), *(end for _, end, _ in self.coriolis.values())]
+        ends = [c.output(r) for r in refs]
+        return max([math.hypot(*self.between(self.pole, r)) for r, p in zip(refs, ends)
+                    if isinstance(p, g.Point) and not p.is_at_infinity] + [0.0])
+
+    def reading(self, size: float, link: int | None = None) -> float:
+        """What reading ``size`` (a vector's magnitude beside its check's scale; for link
+        ``link``'s rate, that rate's) off the polygon does to its conditioning: the share of
+        the polygon's extent the reading stands above, since a short vector or a rate over a
+        short span read off a large polygon keeps only that share of its digits."""
+        extent = self.extent()
+        if link is not None:
+            size *= self.spans.get(link, 0.0)
+        if extent == 0.0 or size == 0.0:
+            return 1.0
+        return min(1.0, size / extent)
+
     def worst(self) -> float:
-        """The worst conditioning of the polygon's tips: an ω or α read off it inherits it."""
+        """The worst conditioning of the polygon's tips. Every reading off it inherits it: the
+        walk hands ω, α and sliding speeds from tip to tip as numbers, not as drawn steps."""
         return min(self.construction[r].conditioning for r in self.tips.values())
 
     def between(self, start: Ref, end: Ref) -> tuple[float, float]:
@@ -196,7 +220,7 @@ class PolygonWalk(Walk):
         """The drawn polygon, with the rates it read and any further parts (Coriolis)."""
         tips, aliases = self.tips()
         return Polygon(self.kind, self.pole_ref, self.scale, tips, rates, self.steps,
-                       self.space_steps, self.c, aliases, **parts)
+                       self.space_steps, self.c, aliases, spans=self.spans, **parts)
 
     def __init__(self, asm: Assembly, scale: float, pole: tuple[float, float]):
         self.asm, self.m, self.c, self.scale = asm, asm.mechanism, asm, scale
@@ -211,6 +235,7 @@ class PolygonWalk(Walk):
                               "polygon; assemble the mechanism again to draw another")
         self.pole_xy = (float(pole[0]), float(pole[1]))
         self.size = asm.size
+        self.spans: dict[int, float] = {}
         nodes = [Node(n) for n in m.point_names]
         nodes += [Node(s.point, s.guide_link) for s in m.slotted]
         self.nodes = list(dict.fromkeys(nodes))
@@ -362,7 +387,8 @@ class PolygonWalk(Walk):
                     if best is None or rule[2] > best[1][2]:
                         best = (n, rule)
             if best is None:
-                names = ", ".join(self.name(n) for n in todo)
+                names = ", ".join(n.point if n.link is None else f"{n.point} on link {n.link}"
+                                  for n in todo)
                 raise TarsimError(f"the {self.kind.noun} polygon cannot reach {names}: no link "
                                   "carrying it has two known points or a known direction")
             x, (kind, args, _) = best

@@ -208,8 +208,12 @@ class Construction:
     def draw(self, ref: Ref, verb: str, *inputs: Ref, label: str = "",
              phrase: Phrase | None = None, kind: Kind | None = None,
              role: Role = Role.CONSTRUCTION, panel: Panel = Panel.SPACE, about: Any = None,
-             **params: Any) -> Ref:
+             spread: float = 1.0, **params: Any) -> Ref:
         """Do the drafting act ``verb`` on the outputs of ``inputs`` and record it.
+
+        ``spread`` (≤ 1) is what the verb cannot see of its conditioning: how far apart its
+        inputs stand beside the whole drawing, whose rounding they carry (a line through
+        two points close together, near the origin, looks well drawn to the verb alone).
 
         Raises
         ------
@@ -225,7 +229,7 @@ class Construction:
         out, cond = VERBS[verb](*(self.steps[r].output for r in inputs), **params)
         # Chained acts compound: an ill-conditioned cut of ill-conditioned lines is
         # worse than either, so the act's own conditioning multiplies the worst input's.
-        worst = cond * min([1.0] + [self.steps[r].conditioning for r in inputs])
+        worst = cond * spread * min([1.0] + [self.steps[r].conditioning for r in inputs])
         self._add(Step(ref, verb, tuple(inputs), out, label, role, panel, kind or _kind_of(out),
                        phrase, worst, tuple(sorted(params.items())), about))
         return ref

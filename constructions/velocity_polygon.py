@@ -196,6 +196,7 @@ class _Polygon(PolygonWalk):
             rx, ry, vx, vy = qx - px, qy - py, (tqx - tpx) / self.scale, (tqy - tpy) / self.scale
             omega = (rx * vy - ry * vx) / (rx * rx + ry * ry)
             omegas[c] = omega
+            self.spans[c] = math.hypot(rx, ry)
             P, Q = self.name(p), self.name(q)
             rel = f"V_{Q}" if self.zero(p) else f"V_{Q}/{P}"
             side = f"o_v {Q.lower()}" if self.zero(p) else f"{P.lower()} {Q.lower()}"
@@ -253,16 +254,18 @@ def answer(work, ask) -> Answer:
         w = vp.rates.get(ask.link)
         if w is None:
             raise TarsimError(f"{ask.name} could not be read off the polygon")
-        return Answer(ask, {"value": w}, vp.worst(), "velocity polygon",
+        cond = vp.worst() * vp.reading(max(abs(w), work.scale_of(ask)), ask.link)
+        return Answer(ask, {"value": w}, cond, "velocity polygon",
                       refs=tuple(vp.tips_on(ask.link, m)) or (vp.pole,), arrows=tuple(vp.steps),
                       figures=(WORKED,), panel=Panel.VELOCITY)
     if isinstance(ask, A.Relative):
         ref = vp.draw_relative(ask.point, ask.of, m.units)
-        cond = min(c[vp.tip(n)].conditioning for n in (ask.point, ask.of))
-        return Answer(ask, vector_value(*vp.between(*c[ref].inputs)), cond, "velocity polygon",
-                      refs=(ref,), arrows=tuple(vp.steps), figures=(WORKED,),
-                      panel=Panel.VELOCITY)
+        value = vector_value(*vp.between(*c[ref].inputs))
+        return Answer(ask, value, vp.worst() * vp.reading(max(value["value"], work.scale_of(ask))),
+                      "velocity polygon", refs=(ref,), arrows=tuple(vp.steps),
+                      figures=(WORKED,), panel=Panel.VELOCITY)
     tip = vp.tip(ask.point)
-    return Answer(ask, vector_value(*vp.vector(ask.point)), c[tip].conditioning,
-                  "velocity polygon", refs=(tip,), arrows=tuple(vp.steps), figures=(WORKED,),
-                  panel=Panel.VELOCITY)
+    value = vector_value(*vp.vector(ask.point))
+    cond = vp.worst() * vp.reading(max(value["value"], work.scale_of(ask)))
+    return Answer(ask, value, cond, "velocity polygon", refs=(tip,), arrows=tuple(vp.steps),
+                  figures=(WORKED,), panel=Panel.VELOCITY)

@@ -16,7 +16,7 @@ from dataclasses import dataclass, field
 
 from ..constructions.assembly import Assembly
 from ..constructions.checks import Answer, Quantity
-from ..constructions.errors import TarsimError
+from ..constructions.errors import InputError, TarsimError
 from ..constructions.methods import Work, answer_all
 from ..constructions.polygon_walk import Polygon
 from ..constructions.record import Panel
@@ -127,7 +127,7 @@ def solve_exercise(ex: Exercise) -> Solution:
     mech = ex.mechanism
     work = Work(mech, ex.position_asks, ex.methods, ex.stated)
     if ex.without_motion:
-        raise TarsimError(ex.without_motion)
+        raise InputError(ex.without_motion, file=mech.source or None)
     work.prepare()
     quantities, answers = answer_all(work, METHODS)
     return Solution(ex, work, quantities, answers)
