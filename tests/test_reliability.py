@@ -8,9 +8,13 @@ form written out here; every refusal to the words that locate it.
 from __future__ import annotations
 
 import math
+import re
+import tomllib
+from pathlib import Path
 
 import pytest
 
+import tarsim
 from tarsim.constructions.errors import InputError, TarsimError
 from tarsim.constructions.narration import fixed, significant
 from tarsim.exercises.exercise_file import MOST_TURNED, parse_exercise
@@ -179,3 +183,60 @@ def test_an_error_gives_six_significant_figures(value, text):
 
 def test_a_length_of_a_million_or_more_is_not_spelled_out():
     assert fixed(1e25, 4) == "1e25" and fixed(250.5, 4) == "250.5"
+
+
+# ----- near-singular positions, checked at their whole conditioning ------------------------
+EDGE = Path(__file__).parent / "data" / "edge"
+
+
+@pytest.mark.parametrize("name", ["lever-block-near-pivot", "slider-crank-near-toggle",
+                                  "shaper-block-near-pivot", "whitworth-block-on-pivot"])
+def test_a_near_singular_position_passes_every_check(name):
+    worked = tarsim.solve(tarsim.load(EDGE / f"{name}.toml"))
+    assert worked.failures == [] and worked.passed
+
+
+def test_a_lever_pivoted_on_the_crank_circle_turns_at_half_the_crank_speed():
+    # O2O4 equals the crank: the lever's angle is an inscribed angle on the crank circle,
+    # half the crank's, so ω4 = ω2/2 and α4 = 0 at every position, the block 4e-4 of the
+    # crank from the pivot included. α4 is held to its tolerance beside ω2², as checked.
+    worked = tarsim.solve(tarsim.load(EDGE / "lever-block-near-pivot.toml"))
+    sol = worked.positions[0]
+    w2 = sol.exercise.mechanism.drive.omega
+    omega4 = sol.quantities["omega4"]
+    assert omega4.value["value"] == pytest.approx(w2 / 2, rel=omega4.tolerance)
+    alpha4 = sol.quantities["alpha4"]
+    assert abs(alpha4.value["value"]) <= alpha4.tolerance * w2 ** 2
+
+
+def test_a_block_on_its_pivot_frees_the_lever_for_a_moment():
+    q = solve_overall(tarsim.load(EDGE / "whitworth-block-on-pivot.toml")).quantities["dof"]
+    assert q.value == {"value": 1, "here": 2} == q.reference
+    assert "sits on the pivot O4" in q.method
+
+
+def test_a_kite_range_is_judged_at_the_end_of_its_class():
+    # O2O4 = O2A = 1, AB = O4B = 3: a change point (1 + 3 = 1 + 3). Turning, it is a
+    # double-crank for O2A in [1, 5): the change point is that range's low end.
+    text = four_bar_toml(ground=1, crank=1, coupler=3, rocker=3).replace(
+        "[input]\n", "[input]\nomega = 1\n")
+    ex = parse_exercise(text + '\n[ask]\nfind = ["range_O2A"]\n', "kite.toml")
+    q = solve_overall(ex).quantities["range_O2A"]
+    assert q.value["low"] == q.value["high"] == pytest.approx(1e-3)
+    assert q.reference["low"] == pytest.approx(1e-3, rel=1e-9)
+    assert q.reference["high"] == pytest.approx(5e-3, rel=1e-9)
+    assert q.passed
+
+
+def test_coincident_ground_pivots_refuse_omega_by_the_centres():
+    # A Stephenson six-bar whose links 2 and 6 turn about one frame point: I12, I16 and I26
+    # fall together, so the ratio of distances that gives ω6 is lost to rounding.
+    text = (Path(__file__).parent / "data" / "stephenson-six-bar.toml").read_text()
+    data = tomllib.loads(text)
+    o2 = data["frame"]["O2"]
+    moved = re.sub(r"(?m)^O6 = .*$", f"O6 = [{o2[0]}, {o2[1]}]", text)
+    assert "[ask]" not in moved
+    ex = parse_exercise(moved + '\n[ask]\nfind = ["omega6"]\n', "six.toml")
+    with pytest.raises(TarsimError, match=r"ω6 from the instant centres: I26 and I16 fall "
+                                          r"together"):
+        solve_positions(ex)
