@@ -174,9 +174,13 @@ class Polygon:
         return min(1.0, size / extent)
 
     def worst(self) -> float:
-        """The worst conditioning of the polygon's tips. Every reading off it inherits it: the
-        walk hands ω, α and sliding speeds from tip to tip as numbers, not as drawn steps."""
-        return min(self.construction[r].conditioning for r in self.tips.values())
+        """The worst conditioning of the polygon's tips and of the points of the space diagram
+        it takes its directions and images from. Every reading off it inherits it: the walk
+        hands ω, α, sliding speeds and the space diagram's shape from tip to tip as numbers,
+        not as drawn steps (a coupler point cut from nearly tangent arcs skews its image)."""
+        c = self.construction
+        space = c.points.values() if isinstance(c, Assembly) else ()
+        return min(c[r].conditioning for r in (*self.tips.values(), *space))
 
     def between(self, start: Ref, end: Ref) -> tuple[float, float]:
         """The drawn vector ``start`` → ``end`` read at the polygon's scale."""

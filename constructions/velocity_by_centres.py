@@ -118,7 +118,7 @@ class _Method:
         """Carry the known velocity on link i to the transfer point I_ij (notes §2.5, steps 1–4)."""
         i1, ij = self.centre(1, i), self.centre(i, j)
         lab_i1, lab_ij = pair_label(1, i), pair_label(i, j)
-        if _same(self.c.output(ij), self.c.output(self.asm.points[known])):
+        if self.same(ij, self.asm.points[known]):
             return ij, v_known  # the known point is the transfer point (a pin)
         if self.is_infinite(ij):
             raise DegenerateInput(f"{lab_ij} is at infinity (links {i} and {j} turn together)")
@@ -191,14 +191,21 @@ class _Method:
         return f"{label} ({names[0]})" if names and label and label != names[0] else (
             label or (names[0] if names else ref))
 
+    def same(self, a: Ref, b: Ref) -> bool:
+        """True if the points ``a`` and ``b`` coincide to the drawing's rounding (relative to
+        its size, so a mechanism a micrometre across is judged as one a metre across)."""
+        p, q = self.c.output(a), self.c.output(b)
+        if p.is_at_infinity or q.is_at_infinity:
+            return False
+        return math.dist(p.xy, q.xy) <= 1e-12 * self.asm.size
+
     def tip_of(self, v: Ref) -> Ref:
         """The ref of a vector's tip point (the input of its ``join``)."""
         return self.c[v].inputs[1]
 
     def rotate_radius(self, j, j1, t, v_t, point, target, label) -> Ref:
         lab = pair_label(1, j)
-        if self.c.output(t) == self.c.output(target) or _same(self.c.output(t),
-                                                               self.c.output(target)):
+        if self.same(t, target):
             return v_t
         loc = self.draw("loc:j", "line_through", j1, t,
                         phrase=phrase("velocity.line_of_centres_of_link", link=j, a=lab,
@@ -223,7 +230,7 @@ class _Method:
 
     def draw_parallels(self, j, j1, t, v_t, point, target, label) -> Ref:
         lab = pair_label(1, j)
-        if _same(self.c.output(t), self.c.output(target)):
+        if self.same(t, target):
             return v_t
         turned = self.draw("turn:t", "lay_off", t, j1, length=self.c.output(v_t).length,
                            phrase=phrase("velocity.turn_known", centre=lab))
@@ -249,10 +256,6 @@ class _Method:
                          phrase=phrase("velocity.result", point=point, speed=self.speed(at, tip)))
 
 
-def _same(p: g.Point, q: g.Point) -> bool:
-    if p.is_at_infinity or q.is_at_infinity:
-        return False
-    return math.dist(p.xy, q.xy) <= 1e-12 * max(1.0, p.size(), q.size())
 
 
 METHODS = {
