@@ -98,13 +98,14 @@ class Capitalized:
 def fixed(value: float, digits: int) -> str:
     """``value`` to ``digits`` decimals, with trailing zeros dropped ("250", "0.5").
 
-    A size of a million or more is said to six significant figures instead
-    (:func:`significant`), so no line spells out a 26-digit number.
+    A size of a million or more, or too small to show in those decimals, is said to six
+    significant figures instead (:func:`significant`), so no line spells out a 26-digit
+    number or rounds a crank of 4.6e-10 mm to "0 mm".
 
     >>> fixed(250.0, 4), fixed(1.5e25, 4), fixed(-2.5e-7, 4)
-    ('250', '1.5e25', '0')
+    ('250', '1.5e25', '-2.5e-7')
     """
-    if abs(value) >= 1e6:
+    if abs(value) >= 1e6 or 0.0 < abs(value) < 0.5 * 10.0 ** -digits:
         return significant(value)
     text = f"{value:.{digits}f}".rstrip("0").rstrip(".")
     return "0" if text in ("-0", "") else text

@@ -183,6 +183,7 @@ def test_an_error_gives_six_significant_figures(value, text):
 
 def test_a_length_of_a_million_or_more_is_not_spelled_out():
     assert fixed(1e25, 4) == "1e25" and fixed(250.5, 4) == "250.5"
+    assert fixed(4.6e-10, 4) == "4.6e-10" and fixed(0.00004, 4) == "4e-5"
 
 
 # ----- near-singular positions, checked at their whole conditioning ------------------------
