@@ -645,8 +645,10 @@ class _Assembler:
             raise AssemblyError(f"[assembly] {s.point}: give \"forward\" or \"backward\" for a "
                                 "block in a swinging slot", joint=s.point)
         q, p = self.known[pivot], self.known[s.point]
-        # As near as the analytic rank test sees a singular Jacobian (solver.SINGULAR_RCOND).
-        if g.distance(self.c.output(q), self.c.output(p)) <= MEETING * self.size:
+        # As near as the analytic rank test sees a singular Jacobian (solver.SINGULAR_RCOND);
+        # an offset slot cannot come so near its pivot, and says so as it is drawn.
+        if (abs(offset) <= 1e-12 * self.size
+                and g.distance(self.c.output(q), self.c.output(p)) <= MEETING * self.size):
             raise AssemblyError(f"the block {s.point} sits on the pivot {pivot} {self.at()}, so "
                                 f"the slot of link {k.number} has no direction and the link "
                                 "may turn freely", link=k.number, free=True)
@@ -669,6 +671,9 @@ class _Assembler:
 
     def tangent_slot(self, i: int, s: Slide, pivot: str, offset: float, pick: str) -> Ref:
         q, p = self.known[pivot], self.known[s.point]
+        near = g.distance(self.c.output(q), self.c.output(p))
+        if near == 0.0:               # no circle on O4A to cut: say it as a miss
+            raise self.too_near(s.point, pivot, near, offset)
         mid = self.c.draw(f"mid:{s.point}{pivot}", "midpoint", q, p,
                           phrase=phrase("position.bisect", a=pivot, b=s.point))
         thales = self.c.draw(f"thales:{s.point}", "circle_through", mid, q,
@@ -680,9 +685,7 @@ class _Assembler:
             try:
                 t, _ = g.intersect_circles(self.c.output(thales), self.c.output(off), side)
             except NoIntersection:
-                raise AssemblyError(
-                    f"the block {s.point} comes within {self.L(abs(offset))} of {pivot} "
-                    f"{self.at()}, closer than the slot's offset", joint=s.point) from None
+                raise self.too_near(s.point, pivot, near, offset) from None
             ends = (t, self.c.output(p)) if pick == "forward" else (self.c.output(p), t)
             line, _ = g.line_through(*ends)
             if line.signed_distance(self.c.output(q)) * offset < 0:
@@ -693,6 +696,12 @@ class _Assembler:
                                    label=f"slot of link {s.guide_link}", kind=Kind.GUIDE,
                                    phrase=phrase("position.slot_tangent", point=s.point))
         raise TarsimError(f"no tangent from {s.point} leaves {pivot} on the slot's side")
+
+    def too_near(self, point: str, pivot: str, near: float, offset: float) -> AssemblyError:
+        """An offset slot cannot pass its block: the block is nearer its pivot than the offset."""
+        return AssemblyError(f"the block {point} comes within {self.L(near)} of {pivot} "
+                             f"{self.at()}, closer than the slot's offset of "
+                             f"{self.L(abs(offset))}", joint=point)
 
     def axis_from_slot(self, number: int, slot: Ref, s: Slide, pivot: str) -> Ref:
         k = self.m.link(number)

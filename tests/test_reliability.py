@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import math
 import re
+from dataclasses import replace
 import tomllib
 from pathlib import Path
 
@@ -241,3 +242,13 @@ def test_coincident_ground_pivots_refuse_omega_by_the_centres():
     with pytest.raises(TarsimError, match=r"ω6 from the instant centres: I26 and I16 fall "
                                           r"together"):
         solve_positions(ex)
+
+
+def test_an_offset_slot_cannot_pass_its_block_on_the_pivot():
+    ex = tarsim.load(EDGE / "offset-slot-block-on-pivot.toml")
+    q = solve_overall(ex).quantities["dof"]
+    assert q.value == {"value": 1} == q.reference      # not assembled here: Grübler alone
+    with pytest.raises(TarsimError, match=r"the block A comes within 6\.12323e-17 in of O4 at "
+                                          r"θ2 = -1\.5708 rad, closer than the slot's offset "
+                                          r"of 0\.268189 in"):
+        solve_positions(replace(ex.asking(("omega4",)), positions=()))   # at [input]
