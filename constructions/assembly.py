@@ -645,13 +645,12 @@ class _Assembler:
             raise AssemblyError(f"[assembly] {s.point}: give \"forward\" or \"backward\" for a "
                                 "block in a swinging slot", joint=s.point)
         q, p = self.known[pivot], self.known[s.point]
-        # As near as the analytic rank test sees a singular Jacobian (solver.SINGULAR_RCOND);
-        # an offset slot cannot come so near its pivot, and says so as it is drawn.
+        # Nearer than this (the analytic solver's SINGULAR_RCOND) the slot's direction is
+        # rounding; an offset slot cannot come so near its pivot, and says so as it is drawn.
         if (abs(offset) <= 1e-12 * self.size
                 and g.distance(self.c.output(q), self.c.output(p)) <= MEETING * self.size):
             raise AssemblyError(f"the block {s.point} sits on the pivot {pivot} {self.at()}, so "
-                                f"the slot of link {k.number} has no direction and the link "
-                                "may turn freely", link=k.number, free=True)
+                                f"the slot of link {k.number} has no direction", link=k.number)
         name = f"slot of link {k.number}"
         if abs(offset) <= 1e-12 * self.size:
             ends = (q, p) if pick == "forward" else (p, q)

@@ -84,14 +84,10 @@ class AssemblyError(TarsimError):
     """The mechanism cannot be put together at this input position."""
 
     def __init__(self, message: str, *, link: int | None = None,
-                 joint: str | None = None, angle_deg: float | None = None,
-                 free: bool = False):
+                 joint: str | None = None, angle_deg: float | None = None):
         self.link = link
         self.joint = joint
         self.angle_deg = angle_deg
-        self.free = free
-        """The position leaves ``link`` free to turn (a block on its slot's pivot): the
-        mobility there is one more than Grübler's."""
         super().__init__(message)
 
 

@@ -43,10 +43,7 @@ def answer_mobility(work, ask: A.Mobility) -> Answer:
     method = f"Grübler: 3({n} − 1) − 2·{f1} − {f2}"
     try:
         meeting = work.assembly.meetings
-    except AssemblyError as e:   # not at this position: Grübler's count stands alone,
-        if e.free:               # unless the position leaves a link free to turn
-            return Answer(ask, {"value": dof, "here": dof + 1}, 1.0,
-                          f"{method}; {e}: the mobility is momentarily {dof + 1}")
+    except AssemblyError:   # not at this position: Grübler's count stands alone
         meeting = ()
     if not meeting:
         return Answer(ask, {"value": dof}, 1.0, method)

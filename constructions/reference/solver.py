@@ -385,6 +385,12 @@ class _Assembly:
             w = self.at[s.point] - self.at[q]
             c = _cross(d, np.asarray(s.through, dtype=float) - self.loc[g, q])
             reach = float(np.linalg.norm(w))
+            # A block this near the pivot of a slot through it leaves the slot's direction to
+            # rounding: no assembly to solve (the rank test's SINGULAR_RCOND, in lengths).
+            size = max(float(np.max(np.abs(v))) for v in self.loc.values())
+            if abs(c) <= _SLACK * size and reach <= SINGULAR_RCOND * size:
+                raise self._fail(f"the block {s.point} sits on {q}, the pivot of the slot of "
+                                 f"{self._label(g)}, so the slot has no direction", g, s.point)
             if abs(c) - reach > _SLACK * max(abs(c), reach) or reach == 0.0:
                 raise self._fail(f"the slot of {self._label(g)} passes {self._len(abs(c))} from "
                                  f"{q}, but {s.point} is {self._len(reach)} from {q}: the "
