@@ -117,8 +117,13 @@ def significant(value: float, figures: int = 6) -> str:
     >>> significant(264.57513110645906), significant(1.5e25), significant(-2.5e-7)
     ('264.575', '1.5e25', '-2.5e-7')
     """
-    text = re.sub(r"e\+?(-?)0*(\d)", r"e\1\2", f"{value:.{figures}g}")
+    text = _short_exponent(f"{value:.{figures}g}")
     return "0" if text == "-0" else text
+
+
+def _short_exponent(text: str) -> str:
+    """"1.5e+25" as "1.5e25", "2.5e-07" as "2.5e-7": one way to write every exponent."""
+    return re.sub(r"e\+?(-?)0*(\d)", r"e\1\2", text)
 
 
 def render(arg: Any, lang: str = "en") -> str:
@@ -145,7 +150,7 @@ def render(arg: Any, lang: str = "en") -> str:
     if isinstance(arg, Word):
         return cat.WORDS.get(arg.text, arg.text)
     if isinstance(arg, Number):
-        return cat.digits(format(arg.value, arg.spec))
+        return cat.digits(_short_exponent(format(arg.value, arg.spec)))
     if isinstance(arg, Quantity):
         text = {"length": lambda v: fixed(v, 4), "rate": significant,
                 "fixed": lambda v: f"{v:.4f}"}[arg.style](arg.value)

@@ -25,6 +25,7 @@ from shapely.geometry import MultiPoint, Point as SPoint
 
 from ..constructions.assembly import Assembly
 from ..constructions.model import Arc, Mechanism, Slide, SlideKind
+from ..constructions.narration import significant
 from ..constructions.scales import face_ends, space_per_cm
 
 from .figure import Circle, Figure, Path, Text, View, arc_points, text_width
@@ -34,7 +35,7 @@ from .symbols import (PIN_RADIUS, draw_block, draw_curved_guide, draw_curved_slo
                       draw_ground_pivot, draw_guide, draw_pin, draw_turning_arrow, mark_angle,
                       unit)
 
-__all__ = ["draw_kinematic_diagram", "subscript"]
+__all__ = ["draw_kinematic_diagram", "input_caption", "subscript"]
 
 _MARGIN = 8.0              # white round the drawing, mm
 _CAPTION = 15.0            # band under the drawing for the caption and scale bar, mm
@@ -83,6 +84,19 @@ class _Track:
     root: tuple[float, float] | None
 
 
+def input_caption(m: Mechanism) -> str:
+    """The input's position and speed as a caption states them: "θ₂ = 60°,  ω₂ = 10 rad/s ccw"
+    (six significant figures, a true minus)."""
+    d, u = m.drive, m.units
+    angle = (f"{significant(d.angle)} rad" if u.angle == "rad"
+             else f"{significant(math.degrees(d.angle))}°")
+    sub = subscript(str(d.link))
+    params = f"θ{sub} = {angle.replace('-', '−')}"
+    if d.omega:
+        w = abs(d.omega) if u.angular_velocity == "rad/s" else abs(d.omega) * 60 / (2 * math.pi)
+        sense = "ccw" if d.omega > 0 else "cw"
+        params += f",  ω{sub} = {significant(w)} {u.angular_velocity} {sense}"
+    return params
 
 
 def draw_kinematic_diagram(record: Assembly, *, per_cm: float | None = None) -> Figure:
@@ -188,15 +202,8 @@ class _Diagram:
         """Size the page to the drawing plus margins, and set the caption under it."""
         x0, y0, x1, y1 = self.fig.bounds()
         self.fig.shift(_MARGIN - x0, _MARGIN - y0)
-        d = self.m.drive
         u = self.m.units
-        angle = (f"{d.angle:.4g} rad" if u.angle == "rad"
-                 else f"{math.degrees(d.angle):.6g}°")
-        sub = subscript(str(d.link))
-        params = f"θ{sub} = {angle}"
-        if d.omega:
-            w = abs(d.omega) if u.angular_velocity == "rad/s" else abs(d.omega) * 60 / (2 * math.pi)
-            params += f",  ω{sub} = {w:.6g} {u.angular_velocity} {'ccw' if d.omega > 0 else 'cw'}"
+        params = input_caption(self.m)
         scale = f"Scale {scale_text(self.per_cm, u.length)}"
         left = max(text_width(self.m.name, 3.6), text_width(params, 3.2))
         right = max(text_width(scale, 3.2), bar_room(self.per_cm, u.length))

@@ -9,6 +9,7 @@ from __future__ import annotations
 import re
 from collections.abc import Sequence
 
+from ..constructions.narration import significant
 from ..constructions.scales import nice
 
 from .figure import Figure, Path, Text, text_width
@@ -40,10 +41,10 @@ def number_text(value: float) -> str:
 
     Examples
     --------
-    >>> number_text(0.30000000000000004)
-    '0.3'
+    >>> number_text(0.30000000000000004), number_text(2e12)
+    ('0.3', '2e12')
     """
-    return f"{value:.6g}"
+    return significant(value)
 
 
 def paper_ratio(per_cm: float) -> tuple[int, float]:

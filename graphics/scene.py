@@ -43,7 +43,7 @@ from ..constructions.measures import Angle, Dimension
 from ..constructions.model import SlideKind
 from ..constructions.record import Kind, Panel, Ref, Role, Slice, Step
 
-from .diagram import _Diagram
+from .diagram import _Diagram, input_caption
 from .figure import Circle, Figure, Path, arc_points, clip_line, ray_to_edge, span_line
 from .labels import subscript, typeset, typeset_span
 from .scales import draw_caption, scale_text
@@ -134,12 +134,6 @@ def _segment_ends(steps: list[Step]) -> list[g.Point]:
             for p in (s.output.start, s.output.end)]
 
 
-def _coincide(p: g.Point, q: g.Point) -> bool:
-    if p.is_at_infinity or q.is_at_infinity:
-        return False
-    return math.dist(p.xy, q.xy) <= _SAME * max(1.0, p.size(), q.size())
-
-
 # ----- the figure ------------------------------------------------------------------------------
 class _Scene(_Diagram):
     """The kinematic diagram, then the scene's layers: working lines under it, marks over it."""
@@ -223,13 +217,21 @@ class _Scene(_Diagram):
 
     def far_base(self, step: Step) -> Step | None:
         """The far point a vector is drawn from, if it starts at one."""
-        return next((f for f, _ in self.far if _coincide(f.output, step.output.start)), None)
+        return next((f for f, _ in self.far if self.coincide(f.output, step.output.start)), None)
+
+    def coincide(self, p: g.Point, q: g.Point) -> bool:
+        """True if ``p`` and ``q`` are one point to the rounding of the drawing: relative to
+        its size, so a mechanism a micrometre across is judged as one a metre across."""
+        if p.is_at_infinity or q.is_at_infinity:
+            return False
+        return math.dist(p.xy, q.xy) <= _SAME * max(self.size, p.size(), q.size())
 
     def on_line(self, line: g.Line, p: tuple[float, float]) -> bool:
         return abs(line.signed_distance(g.Point(*p))) <= _SAME * max(self.size, math.hypot(*p))
 
     def is_pin(self, p: tuple[float, float]) -> bool:
-        return any(math.dist(p, q) <= _SAME * max(self.size, 1.0) for q in self.world.values())
+        return any(math.dist(p, q) <= _SAME * max(self.size, math.hypot(*p))
+                   for q in self.world.values())
 
     def plan_line(self, step: Step) -> None:
         """Span the points on the line, clipped to the frame; the same line again gains a number."""
@@ -454,7 +456,7 @@ class _Scene(_Diagram):
                     or step.id in far:
                 continue
             for grp in groups:
-                if _coincide(grp[0].output, out):
+                if self.coincide(grp[0].output, out):
                     grp.append(step)
                     break
             else:
@@ -463,7 +465,7 @@ class _Scene(_Diagram):
             p = grp[0].output.xy
             at = self.view(p)
             pin = self.is_pin(p)
-            if not pin and not any(_coincide(grp[0].output, e) for e in self.ends):
+            if not pin and not any(self.coincide(grp[0].output, e) for e in self.ends):
                 self.fig.add(Circle(at, _DOT, "dot"))
             names = list(dict.fromkeys(typeset(s.label)[0] for s in grp if s.label))
             away = (at[0] - self.centre[0], at[1] - self.centre[1])
@@ -552,14 +554,8 @@ class _Scene(_Diagram):
 
     def caption(self) -> None:
         """The diagram's caption, with the velocity scale, a legend of lines and the notes."""
-        d, u = self.m.drive, self.m.units
-        angle = (f"{d.angle:.4g} rad" if u.angle == "rad" else f"{math.degrees(d.angle):.6g}°")
-        sub = subscript(str(d.link))
-        params = f"θ{sub} = {angle.replace('-', '−')}"
-        if d.omega:
-            w = abs(d.omega) if u.angular_velocity == "rad/s" else abs(d.omega) * 60 / (2 * math.pi)
-            params += f",  ω{sub} = {w:.6g} {u.angular_velocity} {'ccw' if d.omega > 0 else 'cw'}"
-        lines = [params]
+        u = self.m.units
+        lines = [input_caption(self.m)]
         if self.velocity_scale:
             # A vector is velocity_scale × view scale paper mm per m/s: state 1 cm in unit/s.
             per_cm = 10.0 / (self.velocity_scale * self.view.scale) / u.metres
