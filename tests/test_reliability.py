@@ -258,3 +258,17 @@ def test_an_offset_slot_cannot_pass_its_block_on_the_pivot():
                                           r"θ2 = -1\.5708 rad, closer than the slot's offset "
                                           r"of 0\.268189 in"):
         solve_positions(replace(ex.asking(("omega4",)), positions=()))   # at [input]
+
+
+def test_a_nanometre_mechanism_labels_its_centres_apart():
+    # The bundled four-bar shrunk a billion times (O2O4 = 0.3 nm): no two of its centres
+    # coincide, so no label joins two of them (I14 ≡ I12 would, were points judged the same
+    # within a fixed nanometre rather than relative to the drawing).
+    text = four_bar_toml(ground=3e-7, crank=1e-7, coupler=2.5e-7, rocker=2e-7).replace(
+        "[input]\n", "[input]\nomega = 10\n")
+    worked = tarsim.solve(parse_exercise(text + '\n[ask]\nfind = ["centres"]\n', "micro.toml"))
+    assert worked.passed
+    svg = worked.files()["centres.svg"]
+    assert "≡" not in svg
+    for label in ("I₁₂", "I₁₃", "I₁₄", "I₂₃", "I₂₄", "I₃₄"):
+        assert label in svg
