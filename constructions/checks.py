@@ -249,11 +249,12 @@ def check(answer: Answer, expected: Expected, *, scale: float) -> Quantity:
 def _check_centre(answer: Answer, expected: Expected, size: float) -> Quantity:
     name, found = answer.ask.name, answer.found
     if "undefined" in expected.value:
-        if not answer.holds_always:
+        if not (answer.holds_always or expected.value.get("anywhere")):
             raise TarsimError(f"{name} has no analytic reference here: "
                               f"{expected.value['undefined']}")
         # A joint's own centre holds at every instant, even one with no relative
-        # motion (a block momentarily at rest in its slot), where any point would do.
+        # motion (a block momentarily at rest in its slot), where any point would do; and
+        # where two links move together, any point is their centre, the drawn one too.
         return Quantity(name, answer.value, expected.value, 0.0, tolerance(1.0),
                         answer.conditioning, answer.method)
     # A direction is judged by angle alone, so its tolerance does not grow with distance;

@@ -18,7 +18,7 @@ from .coincident import taken
 from .errors import DegenerateInput, InputError
 from .limit_positions import WHY_NOT, drawn_limits
 from .reference import solver
-from .reference.centres import instant_centre
+from .reference.centres import MoveTogether, instant_centre
 from .reference.limits import limit_reference
 from .reference.mobility import mobility_of
 from .reference.rotatability import (class_by_rotation, four_bar_spans, grashof_class,
@@ -32,6 +32,8 @@ def centre(work, ask: A.Centre) -> Expected:
     """Where the two links' analytic velocity fields agree (undefined if they move together)."""
     try:
         ref = instant_centre(work.kinematics, *ask.pair)
+    except MoveTogether as e:      # any point is their centre, the one drawn among them
+        return Expected({"undefined": str(e), "anywhere": True})
     except DegenerateInput as e:
         return Expected({"undefined": str(e)})
     value = ({"at_infinity": True, "direction": list(ref.direction)} if ref.is_at_infinity

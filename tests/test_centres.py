@@ -606,3 +606,22 @@ def test_when_every_kennedy_line_coincides_rule_2_draws_the_velocity_profiles():
     # both ground centres feed the profiles: I12 (a pin) and I15 (at infinity, a parallel)
     assert {"I:12", "I:15"} <= set(steps)
     assert asm[c.ref].verb == "project_onto"
+
+
+
+def test_a_centre_of_two_links_at_rest_together_is_drawn_and_reported_undefined():
+    # The crank-shaper at its lever's limit: links 4 and 5 are both momentarily at rest, so
+    # every point is I45. The construction completes, and the reference says why it holds
+    # no single point.
+    from tarsim.exercises.catalog import load
+    from tarsim.exercises.mechanism_file import radians_in_turn
+    from tarsim.exercises.solution import solve_positions
+
+    ex = load("crank-shaper").asking(("centres",))
+    m = ex.mechanism
+    limit = m.with_drive(dataclasses.replace(m.drive, angle=radians_in_turn(
+        -21.100196024093016, "deg")))
+    ex = dataclasses.replace(ex, mechanism=limit, positions=())
+    q = solve_positions(ex)[0].quantities["I45"]
+    assert q.reference["anywhere"] is True and "move together" in q.reference["undefined"]
+    assert q.passed and "point" in q.value

@@ -25,8 +25,8 @@ from dataclasses import dataclass
 from .solver import Kinematics
 from ..errors import DegenerateInput
 
-__all__ = ["AnalyticCentre", "instant_centre", "centre_error", "mechanism_size",
-           "AT_INFINITY", "FAR"]
+__all__ = ["AnalyticCentre", "MoveTogether", "instant_centre", "centre_error",
+           "mechanism_size", "AT_INFINITY", "FAR"]
 
 EPS = 2.220446049250313e-16
 
@@ -47,6 +47,10 @@ FAR = 1e6
 """A finite point further than ``FAR × size`` may be compared with a direction."""
 
 _STILL = 1e-12  # |Δv| and |Δω|·L both below this times the velocity scale: moving together
+
+
+class MoveTogether(DegenerateInput):
+    """Two links have no relative motion at this instant: every point is their centre."""
 
 
 @dataclass(frozen=True)
@@ -156,8 +160,8 @@ def instant_centre(kin: Kinematics, i: int, j: int) -> AnalyticCentre:
     dv = math.hypot(dvx, dvy)
     dw = _omega(kin, i) - _omega(kin, j)
     if dv <= _STILL * scale and abs(dw) * size <= _STILL * scale:
-        raise DegenerateInput(f"links {i} and {j} move together at this instant, so I{i}{j} "
-                              "is undefined (every point is a centre)")
+        raise MoveTogether(f"links {i} and {j} move together at this instant, so I{i}{j} "
+                           "is undefined (every point is a centre)")
     # The solver's ω and v each carry about eps/rcond of their scale (rcond: the scaled
     # Jacobian's reciprocal condition number); a difference of two doubles that, and the
     # centre divides it by |Δv| (a direction) or by |Δω| (a point): hence the 4.
