@@ -16,12 +16,25 @@ bundled catalog, the command line).
 from __future__ import annotations
 
 from pathlib import Path
+from typing import TYPE_CHECKING, Any
 
-from tarsim.exercises.catalog import load as _load
-from tarsim.exercises.exercise_file import Exercise
-from tarsim.exercises.solution_files import WorkedSolution, solve_worked
+if TYPE_CHECKING:
+    from tarsim.exercises.exercise_file import Exercise
+    from tarsim.exercises.solution_files import WorkedSolution
 
 __all__ = ["load", "solve", "Exercise", "WorkedSolution"]
+
+
+def __getattr__(name: str) -> Any:
+    # The solver, the figures and their libraries load on first use, so ``tarsim --help``
+    # and ``import tarsim`` stay quick.
+    if name == "Exercise":
+        from tarsim.exercises.exercise_file import Exercise
+        return Exercise
+    if name == "WorkedSolution":
+        from tarsim.exercises.solution_files import WorkedSolution
+        return WorkedSolution
+    raise AttributeError(f"module 'tarsim' has no attribute {name!r}")
 
 
 def load(source: str | Path) -> Exercise:
@@ -32,6 +45,7 @@ def load(source: str | Path) -> Exercise:
     tarsim.constructions.errors.InputError
         If it cannot be read, naming file:line and what to fix.
     """
+    from tarsim.exercises.catalog import load as _load
     return _load(source)
 
 
@@ -47,4 +61,5 @@ def solve(exercise: Exercise) -> WorkedSolution:
     tarsim.constructions.errors.TarsimError
         If the mechanism cannot be assembled or a construction breaks down.
     """
+    from tarsim.exercises.solution_files import solve_worked
     return solve_worked(exercise)
