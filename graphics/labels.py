@@ -10,6 +10,8 @@ from __future__ import annotations
 import math
 import re
 
+import numpy as np
+import shapely
 from shapely.geometry import LineString, box
 from shapely.geometry.base import BaseGeometry
 from shapely.strtree import STRtree
@@ -60,25 +62,44 @@ class LabelPlacer:
 
         Each obstacle's area counts times its weight.
         """
+        return float(self.overlaps([geom], ignore)[0])
+
+    def overlaps(self, shapes: list[BaseGeometry], ignore: object = None) -> np.ndarray:
+        """:meth:`overlap` of each of ``shapes``, found together: one query of the tree and
+        one pass of intersections for all the candidate spots of a label."""
         if self._tree is None:
             self._tree = STRtree(self.obstacles) if self.obstacles else None
-        area = 0.0 if self.page is None else geom.area - geom.intersection(self.page).area
-        if self._tree is not None:
-            for i in self._tree.query(geom):
-                if ignore is None or self.keys[int(i)] != ignore:
-                    area += self.weights[int(i)] * geom.intersection(self.obstacles[int(i)]).area
+        geoms = np.asarray(shapes, dtype=object)
+        area = np.zeros(len(geoms))
+        if self.page is not None:
+            area += shapely.area(geoms) - shapely.area(shapely.intersection(geoms, self.page))
+        if self._tree is not None and len(geoms):
+            # Only shapes that truly meet an obstacle can share area with it.
+            which, hit = self._tree.query(geoms, predicate="intersects")
+            if ignore is not None:
+                keep = np.array([self.keys[int(i)] != ignore for i in hit], dtype=bool)
+                which, hit = which[keep], hit[keep]
+            covered = shapely.area(shapely.intersection(
+                geoms[which], np.asarray(self.obstacles, dtype=object)[hit]))
+            # Summed per shape in the order the tree gives, as one shape at a time would.
+            for k, h, a in zip(which.tolist(), hit.tolist(), covered.tolist()):
+                area[k] += self.weights[h] * a
         return area
+
+    def _untouched(self, shapes: np.ndarray) -> np.ndarray:
+        """Which of ``shapes`` lie on the page and meet no obstacle at all (overlap 0)."""
+        if self._tree is None:
+            self._tree = STRtree(self.obstacles) if self.obstacles else None
+        free = (np.ones(len(shapes), dtype=bool) if self.page is None
+                else shapely.within(shapes, self.page))
+        if self._tree is not None:
+            which, _ = self._tree.query(shapes, predicate="intersects")
+            free[which] = False
+        return free
 
     def clearest(self, shapes: list[BaseGeometry], ignore: object = None) -> int:
         """Index of the first of ``shapes`` clear of every obstacle, else of the least covered."""
-        best = None
-        for k, shape in enumerate(shapes):
-            cost = self.overlap(shape, ignore)
-            if cost <= 1e-9:
-                return k
-            if best is None or cost < best[0]:
-                best = (cost, k)
-        return best[1]
+        return _first_clear(self.overlaps(shapes, ignore))
 
     def spot(self, width: float, height: float,
              anchor: tuple[float, float] | list[tuple[float, float]], *,
@@ -96,23 +117,33 @@ class LabelPlacer:
         angles = [p + t for t in turns if abs(t) <= spread + 1e-9 for p in prefers]
         anchors = anchor if isinstance(anchor, list) else [anchor]
         hw, hh = width / 2, height / 2
-        best: tuple[float, int, tuple[float, float]] | None = None
-        order = 0
-        for ring in rings:
+        centres: list[tuple[float, float]] = []
+        costs = np.zeros(0)
+        for ring in rings:            # a ring at a time: most labels find room in the first
+            these = []
             for base in anchors:
                 for a in angles:
                     ux, uy = math.cos(a), -math.sin(a)
                     # Push the box out until its edge, not its centre, is ``gap`` away.
                     reach = gap * ring + min(hw / max(abs(ux), 1e-9), hh / max(abs(uy), 1e-9))
-                    c = (base[0] + reach * ux, base[1] + reach * uy)
-                    shape = box(c[0] - hw, c[1] - hh, c[0] + hw, c[1] + hh)
-                    cost = self.overlap(shape.buffer(self.clearance))
-                    if cost <= 1e-9:
-                        return c, 0.0
-                    if best is None or (cost, order) < best[:2]:
-                        best = (cost, order, c)
-                    order += 1
-        return best[2], best[0]
+                    these.append((base[0] + reach * ux, base[1] + reach * uy))
+            xy = np.asarray(these)
+            shapes = shapely.buffer(shapely.box(xy[:, 0] - hw, xy[:, 1] - hh, xy[:, 0] + hw,
+                                                xy[:, 1] + hh), self.clearance, quad_segs=16)
+            free = self._untouched(shapes)
+            # The first spot that meets nothing is clear; one before it may still only graze
+            # (an overlap of no area), so only those are measured.
+            upto = int(np.argmax(free)) if free.any() else len(these)
+            cost = self.overlaps(list(shapes[:upto]))
+            clear = np.flatnonzero(cost <= 1e-9)
+            if len(clear):
+                return these[int(clear[0])], 0.0
+            if upto < len(these):
+                return these[upto], 0.0
+            centres += these
+            costs = np.concatenate([costs, cost])
+        k = int(np.argmin(costs))
+        return centres[k], float(costs[k])
 
     def place(self, text: str, anchor: tuple[float, float] | list[tuple[float, float]], *,
               prefer: float | tuple[float, ...] = math.pi / 4, spread: float = math.pi,
@@ -233,3 +264,9 @@ def _digits_down(name: str) -> str:
     if m is None or " " in name or not m.group(1).strip():
         return name
     return m.group(1) + m.group(2).translate(_SUBSCRIPT) + m.group(3)
+
+
+def _first_clear(costs: np.ndarray) -> int:
+    """The first spot whose overlap is nil, else the first of the least overlap."""
+    clear = np.flatnonzero(costs <= 1e-9)
+    return int(clear[0]) if len(clear) else int(np.argmin(costs))
