@@ -398,6 +398,7 @@ def _well_conditioned(p) -> Kinematics | None:
     return kin if kin.conditioning > 0.05 else None
 
 
+@pytest.mark.slow
 @settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.filter_too_much])
 @given(four_bars())
 def test_four_bar_rates_match_finite_differences(p):

@@ -25,6 +25,7 @@ def _section(heading: str) -> str:
     return README[start:end if end >= 0 else None]
 
 
+@pytest.mark.slow
 def test_the_python_api_example_runs_as_written(tmp_path, monkeypatch):
     blocks = re.findall(r"```pycon\n(.*?)```", _section("Python API"), re.S)
     assert blocks, "the Python API section shows an interactive example"

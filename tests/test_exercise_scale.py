@@ -111,6 +111,7 @@ def test_a_stated_velocity_scale_draws_the_polygon_true_to_it():
                                                                         rel=1e-9)
 
 
+@pytest.mark.slow
 def test_the_crank_shaper_is_drawn_at_the_projects_scales(files):
     # 003 steps 3 and 7: 3 cm of polygon for V_A = 18 cm/s, 7 cm of drawing for 500 mm.
     for stem in ("worked-theta2-90", "V_B-radius-rotation-theta2-90"):

@@ -263,6 +263,7 @@ def test_crank_shaper_files_carry_the_whole_mechanism(solved):
                                                        for s in stems)
 
 
+@pytest.mark.slow
 def test_solution_pdf_has_a_page_per_figure(tmp_path):
     pytest.importorskip("cairosvg")
     from pypdf import PdfReader

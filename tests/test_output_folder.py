@@ -251,6 +251,7 @@ def test_an_output_that_is_a_file_fails_in_one_line_before_solving(tmp_path, no_
     assert path.read_text(encoding="utf-8") == "mine"
 
 
+@pytest.mark.slow
 def test_solving_another_exercise_into_the_folder_replaces_the_solution(tmp_path):
     out = tmp_path / "out"
     out.mkdir()
@@ -267,6 +268,7 @@ def test_solving_another_exercise_into_the_folder_replaces_the_solution(tmp_path
     assert '"exercise": "inverted-slider-crank"' in (out / "results.json").read_text("utf-8")
 
 
+@pytest.mark.slow
 def test_solve_refuses_to_replace_a_users_file(tmp_path):
     out = tmp_path / "out"
     out.mkdir()
@@ -278,6 +280,7 @@ def test_solve_refuses_to_replace_a_users_file(tmp_path):
     assert snapshot(out) == {"steps.md": b"my own steps"}
 
 
+@pytest.mark.slow
 def test_worked_solution_write_goes_through_the_same_path(tmp_path, solved):
     worked = solved("four-bar")
     (tmp_path / "results.json").write_text("mine", encoding="utf-8")

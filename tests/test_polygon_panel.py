@@ -393,6 +393,7 @@ def test_a_slice_is_drawn_in_record_order_and_other_panels_are_left_out():
 
 
 # ----- determinism and errors ----------------------------------------------------------------
+@pytest.mark.slow
 def test_the_same_input_gives_a_byte_identical_svg():
     first = to_svg(draw_velocity(*shaper_velocity()))
     second = to_svg(draw_velocity(*shaper_velocity()))

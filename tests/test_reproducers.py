@@ -99,6 +99,7 @@ def test_the_p37_stroke_does_not_depend_on_the_angle_drawn_from():
     assert q["stroke"]["passed"] and q["time_ratio"]["passed"]
 
 
+@pytest.mark.slow
 def test_the_homework_292_stroke_is_the_blocks_whole_travel():
     ex = tarsim.load(str(HERE / "check-stroke-velocity-homework-292.toml"))
     q = solve_overall(ex).quantities["stroke"]
@@ -192,6 +193,7 @@ def test_every_bundled_quick_return_draws_one_time_ratio_and_stroke_from_twelve_
             assert lp.stroke == pytest.approx(ref.stroke, rel=1e-9), 30 * k
 
 
+@pytest.mark.slow
 def test_the_reference_finds_both_reversals_whichever_angle_it_starts_from():
     # From θ2 = 210° the offset slider-crank starts on a reversal; sampled a turn apart, its
     # speed there rounds to both signs, and the reversal was missed.
@@ -254,6 +256,7 @@ def test_an_angle_option_is_taken_less_whole_turns():
     assert "280°" in result.stdout
 
 
+@pytest.mark.slow
 def test_markup_in_a_name_is_escaped_in_every_figure(tmp_path):
     text = (HERE / "crash-7-control-char-in-name.toml").read_text(encoding="utf-8")
     hostile = "a<script>&amp;</svg>"

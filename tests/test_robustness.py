@@ -19,6 +19,8 @@ from hypothesis import strategies as st
 
 from tests.random_mechanisms import FAMILIES, generate, run_case
 
+pytestmark = pytest.mark.slow
+
 EXAMPLES = 50
 """Cases per family: the file runs in under a minute on two cores. The seeds are fixed
 (``derandomize``) and not shrunk (a smaller seed is no simpler a mechanism), so a failure

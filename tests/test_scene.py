@@ -218,6 +218,7 @@ def test_common_normals_and_kennedy_lines_read_differently_with_a_legend():
     assert {"I₃₄ → ∞", "I₁₅ → ∞"} <= set(read.texts)
 
 
+@pytest.mark.slow
 def test_the_output_is_byte_identical_on_repeat():
     def once():
         asm, cs = watt()

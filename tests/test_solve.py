@@ -118,6 +118,7 @@ def test_an_impossible_position_writes_nothing(tmp_path):
 
 # ----- the files -------------------------------------------------------------------------------
 
+@pytest.mark.slow
 def test_solve_writes_figures_steps_and_results(tmp_path):
     path = tmp_path / "ex.toml"
     path.write_text(exercise_text(), encoding="utf-8")
@@ -185,6 +186,7 @@ def test_bundled_examples_solve_and_check():
         assert all(math.isfinite(q.rel_error) for q in sol.quantities.values())
 
 
+@pytest.mark.slow
 def test_a_leftward_vector_reads_180_degrees_in_both_columns():
     # Whitworth's ram acceleration points left; the analytic one has a y of rounding
     # noise below zero, which atan2 would give as −180°.
@@ -197,6 +199,7 @@ def test_a_leftward_vector_reads_180_degrees_in_both_columns():
     assert "−180°" not in files["steps.md"] and "-180°" not in files["steps.md"]
 
 
+@pytest.mark.slow
 def test_a_failed_check_exits_3_and_still_writes_the_files(tmp_path, monkeypatch):
     # A reference that disagrees with every drawn velocity: the check must say so.
     from tarsim.constructions.reference import solver
@@ -211,6 +214,7 @@ def test_a_failed_check_exits_3_and_still_writes_the_files(tmp_path, monkeypatch
     assert (tmp_path / "out" / "results.json").exists()
 
 
+@pytest.mark.slow
 def test_a_solution_is_byte_identical_across_hash_seeds_and_folders(tmp_path):
     """Every file of a solve, steps.md and results.json included, is the same whatever the
     hash seed (set and dict order) and wherever it is written."""

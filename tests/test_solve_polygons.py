@@ -147,6 +147,7 @@ def test_unknown_acceleration_name_suggests_the_closest():
 
 # ----- the files ----------------------------------------------------------------------------
 
+@pytest.mark.slow
 def test_solve_crank_shaper_writes_a_worked_page_per_position(tmp_path):
     out = tmp_path / "shaper"
     r = run("solve", "crank-shaper", "-o", out, "--no-pdf")

@@ -139,6 +139,7 @@ def test_no_two_labels_on_the_page_overlap():
             assert not boxes_overlap(a, b), (a, b)
 
 
+@pytest.mark.slow
 def test_the_same_panels_give_a_byte_identical_page():
     first = to_svg(compose_worked_page("Crank shaper", shaper_panels(), TABLE, NOTES))
     second = to_svg(compose_worked_page("Crank shaper", shaper_panels(), TABLE, NOTES))
