@@ -1,0 +1,37 @@
+"""No bundled figure may cover more with its labels than tests/data/label_overlaps.json
+records: label over label, over an arrowhead, over a line (tests/label_overlaps.py counts
+them from the figure's primitives). A change that places labels faster or better must
+keep every count at or below its record; lower it in the record when it falls."""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+
+from tarsim.exercises.catalog import bundled
+from tests.label_overlaps import KINDS, RECORD, count
+
+RECORDED = json.loads(RECORD.read_text(encoding="utf-8"))
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("exercise_id", sorted(bundled()))
+def test_no_figure_covers_more_than_its_record(solved, exercise_id):
+    for stem, fig in solved(exercise_id).figures.items():
+        key = f"{exercise_id}/{stem}"
+        assert key in RECORDED, f"{key} is not recorded: run python tests/label_overlaps.py"
+        got = count(fig)
+        for kind in KINDS:
+            assert got[kind] <= RECORDED[key][kind], (key, kind, got, RECORDED[key])
+
+
+def test_the_counter_sees_two_labels_over_one_another():
+    from tarsim.graphics.figure import Figure, Path, Text
+
+    fig = Figure(100.0, 100.0)
+    fig.add(Text((50.0, 50.0), "I13"))
+    fig.add(Text((51.0, 50.5), "I24"))                    # over the first
+    fig.add(Text((80.0, 80.0), "A"))                      # clear
+    fig.add(Path(((75.0, 80.0), (85.0, 80.0)), "link"))   # through "A"
+    assert count(fig) == {"label-label": 1, "label-arrowhead": 0, "label-line": 1}
