@@ -190,6 +190,8 @@ class _Reader:
         if key:
             # A TOML path for a plain table ("input.link"); "link 3, AB" for a numbered one.
             sep = ", " if table in ("link", "slider", "contact") else "."
+            # A key is the file's own text: a bidi override in it would reorder the line.
+            key = _CONTROL.sub(lambda m: f"\\u{ord(m.group()):04x}", key)
             label = f"{label}{sep}{key}" if label else key
         return InputError(message, file=self.file, line=line, key=label)
 
