@@ -453,10 +453,7 @@ def answer(work, ask) -> Answer:
     # The walk takes ω and sliding speeds from the velocity polygon, and hands α from tip to
     # tip, as numbers: every reading inherits the worst of both polygons, compounded (near a
     # toggle each polygon divides by the same small sine, so an acceleration by its square).
-    cond = ap.worst() * drawn_velocity_polygon(work).worst()
-    if isinstance(ask, A.AngularAcceleration):
-        cond *= ap.reading(max(abs(value["value"]), work.scale_of(ask)), ask.link)
-    else:
-        cond *= ap.reading(max(value["value"], work.scale_of(ask)))
+    link = ask.link if isinstance(ask, A.AngularAcceleration) else None
+    cond = ap.conditioning(value, work.scale_of(ask), link) * drawn_velocity_polygon(work).worst()
     return Answer(ask, value, cond, method, refs=refs + velocities, arrows=arrows,
                   figures=(WORKED,), panel=Panel.ACCELERATION)

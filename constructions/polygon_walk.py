@@ -161,17 +161,20 @@ class Polygon:
         return max([math.hypot(*self.between(self.pole, r)) for r, p in zip(refs, ends)
                     if isinstance(p, g.Point) and not p.is_at_infinity] + [0.0])
 
-    def reading(self, size: float, link: int | None = None) -> float:
-        """What reading ``size`` (a vector's magnitude beside its check's scale; for link
-        ``link``'s rate, that rate's) off the polygon does to its conditioning: the share of
-        the polygon's extent the reading stands above, since a short vector or a rate over a
-        short span read off a large polygon keeps only that share of its digits."""
-        extent = self.extent()
+    def conditioning(self, value: dict, scale: float, link: int | None = None) -> float:
+        """The conditioning of ``value`` (results.json's shape: a vector, or link ``link``'s
+        rate) read off the polygon, whose check measures it beside ``scale``.
+
+        It is the polygon's :meth:`worst`, times the share of the polygon's extent the
+        reading stands above: a short vector, or a rate over a short span, read off a large
+        polygon keeps only that share of its digits.
+        """
+        size = max(abs(value["value"]), scale)
         if link is not None:
             size *= self.spans.get(link, 0.0)
-        if extent == 0.0 or size == 0.0:
-            return 1.0
-        return min(1.0, size / extent)
+        extent = self.extent()
+        share = 1.0 if extent == 0.0 or size == 0.0 else min(1.0, size / extent)
+        return self.worst() * share
 
     def worst(self) -> float:
         """The worst conditioning of the polygon's tips and of the points of the space diagram

@@ -250,22 +250,17 @@ def answer(work, ask) -> Answer:
     """ω, V or a relative velocity read off the velocity polygon."""
     vp = drawn_velocity_polygon(work)
     m, c = work.mechanism, work.assembly
+    link = None
     if isinstance(ask, A.AngularVelocity):
         w = vp.rates.get(ask.link)
         if w is None:
             raise TarsimError(f"{ask.name} could not be read off the polygon")
-        cond = vp.worst() * vp.reading(max(abs(w), work.scale_of(ask)), ask.link)
-        return Answer(ask, {"value": w}, cond, "velocity polygon",
-                      refs=tuple(vp.tips_on(ask.link, m)) or (vp.pole,), arrows=tuple(vp.steps),
-                      figures=(WORKED,), panel=Panel.VELOCITY)
-    if isinstance(ask, A.Relative):
+        value, refs, link = {"value": w}, tuple(vp.tips_on(ask.link, m)) or (vp.pole,), ask.link
+    elif isinstance(ask, A.Relative):
         ref = vp.draw_relative(ask.point, ask.of, m.units)
-        value = vector_value(*vp.between(*c[ref].inputs))
-        return Answer(ask, value, vp.worst() * vp.reading(max(value["value"], work.scale_of(ask))),
-                      "velocity polygon", refs=(ref,), arrows=tuple(vp.steps),
-                      figures=(WORKED,), panel=Panel.VELOCITY)
-    tip = vp.tip(ask.point)
-    value = vector_value(*vp.vector(ask.point))
-    cond = vp.worst() * vp.reading(max(value["value"], work.scale_of(ask)))
-    return Answer(ask, value, cond, "velocity polygon", refs=(tip,), arrows=tuple(vp.steps),
+        value, refs = vector_value(*vp.between(*c[ref].inputs)), (ref,)
+    else:
+        value, refs = vector_value(*vp.vector(ask.point)), (vp.tip(ask.point),)
+    return Answer(ask, value, vp.conditioning(value, work.scale_of(ask), link),
+                  "velocity polygon", refs=refs, arrows=tuple(vp.steps),
                   figures=(WORKED,), panel=Panel.VELOCITY)
