@@ -245,12 +245,14 @@ def _read_positions(at, mech: Mechanism, fail) -> tuple[Position, ...]:
             turned = d.omega * value + 0.5 * d.alpha * value * value
             omega = d.omega + d.alpha * value
             if not abs(turned) <= MOST_TURNED:
-                raise fail(f"at t = {value:g} s the input has turned {turned:.3g} rad, past the "
-                           f"{MOST_TURNED:.0e} rad within which a float keeps its angle to "
-                           "1e-7 rad; give an earlier time", "at")
+                raise fail(f"at t = {significant(value)} s the input has turned "
+                           f"{significant(turned, 3)} rad, past the {significant(MOST_TURNED)} "
+                           "rad within which a float keeps its angle to 1e-7 rad; give an "
+                           "earlier time", "at")
             if not in_range(omega):
-                raise fail(f"at t = {value:g} s the input's ω = {omega:.3g} rad/s is out of the "
-                           f"range tarsim takes ({RANGE})", "at")
+                raise fail(f"at t = {significant(value)} s the input's ω = "
+                           f"{significant(omega, 3)} rad/s is out of the range tarsim takes "
+                           f"({RANGE})", "at")
             angle = math.fmod(d.angle + turned, math.tau)
             drive = replace(d, angle=angle, omega=omega)
             label = f"t = {value:g} s (θ{d.link} = {_angle_text(angle, deg)})"
