@@ -67,15 +67,14 @@ class LabelPlacer:
     def overlaps(self, shapes: list[BaseGeometry], ignore: object = None) -> np.ndarray:
         """:meth:`overlap` of each of ``shapes``, found together: one query of the tree and
         one pass of intersections for all the candidate spots of a label."""
-        if self._tree is None:
-            self._tree = STRtree(self.obstacles) if self.obstacles else None
+        tree = self._tree_now()
         geoms = np.asarray(shapes, dtype=object)
         area = np.zeros(len(geoms))
         if self.page is not None:
             area += shapely.area(geoms) - shapely.area(shapely.intersection(geoms, self.page))
-        if self._tree is not None and len(geoms):
+        if tree is not None and len(geoms):
             # Only shapes that truly meet an obstacle can share area with it.
-            which, hit = self._tree.query(geoms, predicate="intersects")
+            which, hit = tree.query(geoms, predicate="intersects")
             if ignore is not None:
                 keep = np.array([self.keys[int(i)] != ignore for i in hit], dtype=bool)
                 which, hit = which[keep], hit[keep]
@@ -86,16 +85,45 @@ class LabelPlacer:
                 area[k] += self.weights[h] * a
         return area
 
-    def _untouched(self, shapes: np.ndarray) -> np.ndarray:
-        """Which of ``shapes`` lie on the page and meet no obstacle at all (overlap 0)."""
+    def _tree_now(self) -> STRtree | None:
         if self._tree is None:
             self._tree = STRtree(self.obstacles) if self.obstacles else None
-        free = (np.ones(len(shapes), dtype=bool) if self.page is None
-                else shapely.within(shapes, self.page))
-        if self._tree is not None:
-            which, _ = self._tree.query(shapes, predicate="intersects")
-            free[which] = False
-        return free
+        return self._tree
+
+    def _first_clear(self, xy: np.ndarray, hw: float, hh: float) -> int | None:
+        """The first of the boxes centred at ``xy`` whose clearance lies on the page and at
+        most touches an obstacle (an overlap of no area), or None.
+
+        Told by predicates, far cheaper than measuring areas, and in two passes: a box grown
+        by half the clearance lies inside the rounded one, so an obstacle it meets crosses
+        that one's interior; only the spots it leaves free are built and tested whole.
+        """
+        tree = self._tree_now()
+        spots = np.arange(len(xy))
+        if tree is not None:
+            m = self.clearance / 2
+            inner = shapely.box(xy[:, 0] - hw - m, xy[:, 1] - hh - m, xy[:, 0] + hw + m,
+                                xy[:, 1] + hh + m)
+            crossed = np.zeros(len(xy), dtype=bool)
+            crossed[tree.query(inner, predicate="intersects")[0]] = True
+            spots = np.flatnonzero(~crossed)
+        shapes = _rounded_boxes(xy[spots], hw, hh, self.clearance)
+        clear = (np.ones(len(spots), dtype=bool) if self.page is None
+                 else shapely.within(shapes, self.page))
+        if tree is not None and len(spots):
+            which, hit = tree.query(shapes, predicate="intersects")
+            met = np.zeros(len(spots), dtype=bool)
+            met[which] = True
+            untouched = np.flatnonzero(clear & ~met)
+            # Only the spots before the first untouched one may still win, by a touch.
+            upto = int(untouched[0]) if len(untouched) else len(spots)
+            near = which < upto
+            which, hit = which[near], hit[near]
+            crossed = ~shapely.touches(shapes[which],
+                                       np.asarray(self.obstacles, dtype=object)[hit])
+            clear[which[crossed]] = False
+        first = np.flatnonzero(clear)
+        return int(spots[first[0]]) if len(first) else None
 
     def clearest(self, shapes: list[BaseGeometry], ignore: object = None) -> int:
         """Index of the first of ``shapes`` clear of every obstacle, else of the least covered."""
@@ -118,7 +146,6 @@ class LabelPlacer:
         anchors = anchor if isinstance(anchor, list) else [anchor]
         hw, hh = width / 2, height / 2
         centres: list[tuple[float, float]] = []
-        costs = np.zeros(0)
         for ring in rings:            # a ring at a time: most labels find room in the first
             these = []
             for base in anchors:
@@ -128,20 +155,12 @@ class LabelPlacer:
                     reach = gap * ring + min(hw / max(abs(ux), 1e-9), hh / max(abs(uy), 1e-9))
                     these.append((base[0] + reach * ux, base[1] + reach * uy))
             xy = np.asarray(these)
-            shapes = shapely.buffer(shapely.box(xy[:, 0] - hw, xy[:, 1] - hh, xy[:, 0] + hw,
-                                                xy[:, 1] + hh), self.clearance, quad_segs=16)
-            free = self._untouched(shapes)
-            # The first spot that meets nothing is clear; one before it may still only graze
-            # (an overlap of no area), so only those are measured.
-            upto = int(np.argmax(free)) if free.any() else len(these)
-            cost = self.overlaps(list(shapes[:upto]))
-            clear = np.flatnonzero(cost <= 1e-9)
-            if len(clear):
-                return these[int(clear[0])], 0.0
-            if upto < len(these):
-                return these[upto], 0.0
+            first = self._first_clear(xy, hw, hh)
+            if first is not None:
+                return these[first], 0.0
             centres += these
-            costs = np.concatenate([costs, cost])
+        # No ring has room: the spot least covered, by area (the only costly measure).
+        costs = self.overlaps(list(_rounded_boxes(np.asarray(centres), hw, hh, self.clearance)))
         k = int(np.argmin(costs))
         return centres[k], float(costs[k])
 
@@ -264,6 +283,12 @@ def _digits_down(name: str) -> str:
     if m is None or " " in name or not m.group(1).strip():
         return name
     return m.group(1) + m.group(2).translate(_SUBSCRIPT) + m.group(3)
+
+
+def _rounded_boxes(xy: np.ndarray, hw: float, hh: float, clearance: float) -> np.ndarray:
+    """The ``2hw`` × ``2hh`` boxes centred at ``xy`` with their clearance about them."""
+    return shapely.buffer(shapely.box(xy[:, 0] - hw, xy[:, 1] - hh, xy[:, 0] + hw,
+                                      xy[:, 1] + hh), clearance, quad_segs=16)
 
 
 def _first_clear(costs: np.ndarray) -> int:
