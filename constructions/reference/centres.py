@@ -11,6 +11,11 @@ so ``Δv(P) = 0`` at ``P = Q + k × Δv(Q) / Δω`` for any reference point ``Q`
 When ``Δω`` vanishes the relative motion is a translation and the centre is at
 infinity, square to the relative velocity.
 
+The fields are those of the mechanism's free motion (:class:`FreeMotion`, the
+motion with the input let go, up to scale) when the solver gives it: centres hang on
+velocity ratios alone, and near a dead point of the input the solved ω and v carry an
+error of ``eps/rcond`` of their size while that direction stays well conditioned.
+
 This module is a reference, not a construction: it takes ω and the origins'
 velocities from :mod:`constructions.analytic` and uses nothing of the graphical
 methods. It imports only the standard library, :mod:`constructions.errors` and
@@ -98,16 +103,23 @@ def _canonical(dx: float, dy: float) -> tuple[float, float]:
     return (x + 0.0, y + 0.0)
 
 
-def _omega(kin: Kinematics, k: int) -> float:
-    return 0.0 if k == 1 else kin.omegas[k]
+def _omega(motion, k: int) -> float:
+    return 0.0 if k == 1 else motion.omegas[k]
 
 
-def _field(kin: Kinematics, k: int, p: tuple[float, float]) -> tuple[float, float]:
-    """Velocity of the point at ``p`` taken as fixed to link ``k``."""
+def _field(kin: Kinematics, motion, k: int, p: tuple[float, float]) -> tuple[float, float]:
+    """Velocity of the point at ``p`` taken as fixed to link ``k`` in ``motion`` (``kin``
+    itself, or its free motion)."""
     if k == 1:
         return (0.0, 0.0)
-    (ox, oy), (vx, vy), w = kin.origins[k], kin.origin_velocities[k], kin.omegas[k]
+    (ox, oy), (vx, vy), w = kin.origins[k], motion.origin_velocities[k], motion.omegas[k]
     return (vx - w * (p[1] - oy), vy + w * (p[0] - ox))
+
+
+def _scale(kin: Kinematics, motion, pts, size: float) -> float:
+    """The motion's velocity scale: its largest ``|ω|·L`` or point speed."""
+    return max([abs(w) * size for w in motion.omegas.values()]
+               + [math.hypot(*_field(kin, motion, k, p)) for k in motion.omegas for p in pts])
 
 
 def instant_centre(kin: Kinematics, i: int, j: int) -> AnalyticCentre:
@@ -150,22 +162,40 @@ def instant_centre(kin: Kinematics, i: int, j: int) -> AnalyticCentre:
     pts = list(kin.points.values())
     q = (sum(p[0] for p in pts) / len(pts), sum(p[1] for p in pts) / len(pts))
     size = max(mechanism_size(kin), 1e-300)
-    scale = max([abs(w) * size for w in kin.omegas.values()]
-                + [math.hypot(*_field(kin, k, p)) for k in kin.omegas for p in pts])
-    if scale == 0.0:
+    if _scale(kin, kin, pts, size) == 0.0:
         raise DegenerateInput("nothing moves (every ω and velocity is 0): give the input a "
                               "nonzero ω to locate instant centres")
-    (vix, viy), (vjx, vjy) = _field(kin, i, q), _field(kin, j, q)
+    # Both motions give the centre, each with its own rounding. Near a dead point of the
+    # input the free motion is sharper by orders of magnitude (see the module's docstring),
+    # except for a centre of the input and the frame, whose |Δω| the free motion nearly
+    # loses there. Elsewhere the two agree to rounding and the driven one, whose zeros are
+    # exact (a block's ω), is kept: the free one must be sharper tenfold to be taken.
+    driven = _located(kin, kin, i, j, q, size)
+    free = getattr(kin, "free", None)
+    if free is None:
+        return driven
+    try:
+        sharper = _located(kin, free, i, j, q, size)
+    except MoveTogether:
+        return driven
+    return sharper if 10.0 * sharper.rounding < driven.rounding else driven
+
+
+def _located(kin: Kinematics, motion, i: int, j: int, q: tuple[float, float],
+             size: float) -> AnalyticCentre:
+    """``I_ij`` from the fields of ``motion``, taken about the reference point ``q``."""
+    scale = _scale(kin, motion, list(kin.points.values()), size)
+    (vix, viy), (vjx, vjy) = _field(kin, motion, i, q), _field(kin, motion, j, q)
     dvx, dvy = vix - vjx, viy - vjy
     dv = math.hypot(dvx, dvy)
-    dw = _omega(kin, i) - _omega(kin, j)
+    dw = _omega(motion, i) - _omega(motion, j)
     if dv <= _STILL * scale and abs(dw) * size <= _STILL * scale:
         raise MoveTogether(f"links {i} and {j} move together at this instant, so I{i}{j} "
                            "is undefined (every point is a centre)")
-    # The solver's ω and v each carry about eps/rcond of their scale (rcond: the scaled
+    # The motion's ω and v each carry about eps/rcond of their scale (rcond: the scaled
     # Jacobian's reciprocal condition number); a difference of two doubles that, and the
     # centre divides it by |Δv| (a direction) or by |Δω| (a point): hence the 4.
-    noise = 4.0 * EPS / max(kin.conditioning, EPS)
+    noise = 4.0 * EPS / max(motion.conditioning, EPS)
     if abs(dw) * size <= AT_INFINITY * dv:
         # Taking a point beyond L/AT_INFINITY as a direction turns its bearing from the
         # mechanism by at most |Δω|·(|Q| + L)/|Δv|.

@@ -35,6 +35,7 @@ from ..model import Arc, Mechanism, Slide, SlideKind
 
 __all__ = [
     "Kinematics",
+    "FreeMotion",
     "SlideRate",
     "SingularPosition",
     "SINGULAR_RCOND",
@@ -82,6 +83,23 @@ class SlideRate:
 
 
 @dataclass(frozen=True)
+class FreeMotion:
+    """The mechanism's one motion with the input let go: ω and origin velocities up to scale.
+
+    The null vector of the loop equations without the input's row, unit in the
+    length-scaled coordinates. Near a dead point of the input the solved ω and v grow
+    without bound and carry an error of ``eps/rcond`` of their size, while this
+    direction stays as well conditioned as the free linkage itself (``conditioning``:
+    its smallest singular value over its largest). Whatever depends on velocity ratios
+    alone, such as the instant centres, is taken from it.
+    """
+
+    omegas: dict[int, float]
+    origin_velocities: dict[int, tuple[float, float]]
+    conditioning: float
+
+
+@dataclass(frozen=True)
 class Kinematics:
     """Positions, velocities and accelerations of a mechanism at one input position (SI).
 
@@ -93,7 +111,8 @@ class Kinematics:
     rad) at the solution and ``conditioning`` the reciprocal condition number of
     the length-scaled Jacobian (1 is ideal, below ``SINGULAR_RCOND`` is raised).
     ``origins`` and their rates are each link's local origin, the frame included.
-    Angles are wrapped to ``[−π, π]``.
+    Angles are wrapped to ``[−π, π]``. ``free`` is the motion with the input let go
+    (see :class:`FreeMotion`).
     """
 
     points: dict[str, tuple[float, float]]
@@ -108,6 +127,7 @@ class Kinematics:
     origins: dict[int, tuple[float, float]]
     origin_velocities: dict[int, tuple[float, float]]
     origin_accelerations: dict[int, tuple[float, float]]
+    free: FreeMotion | None = None
 
 
 
@@ -730,7 +750,7 @@ def solve(mech: Mechanism) -> Kinematics:
     rhs[-1] = mech.drive.omega
     qd = np.linalg.solve(jac, rhs)
     qdd = np.linalg.solve(jac, system.gamma(q, qd))
-    return _pack(system, q, qd, qdd, rcond)
+    return _pack(system, q, qd, qdd, rcond, _free_motion(system, jac))
 
 
 def solve_positions(mech: Mechanism) -> dict[str, tuple[float, float]]:
@@ -760,7 +780,23 @@ def _point(system: _System, q: np.ndarray, name: str) -> tuple[float, float]:
     return (float(p[0]), float(p[1]))
 
 
-def _pack(system: _System, q, qd, qdd, rcond: float) -> Kinematics:
+def _free_motion(system: _System, jac: np.ndarray) -> FreeMotion:
+    """The null vector of the Jacobian without the input's row (see :class:`FreeMotion`),
+    signed so that the input turns as its ω does."""
+    _, sv, vt = np.linalg.svd(system.scaled(jac)[:-1])
+    rates = vt[-1] * np.tile([system.lc, system.lc, 1.0], len(system.moving))
+    w = system.state(rates, system.m.drive.link)[1]
+    if w * system.m.drive.omega < 0.0:
+        rates = -rates
+    omegas, velocities = {}, {}
+    for k in system.moving:
+        v, omegas[k] = system.state(rates, k)
+        velocities[k] = (float(v[0]), float(v[1]))
+    return FreeMotion(omegas, velocities, float(sv[-1] / sv[0]) if sv[0] > 0.0 else 0.0)
+
+
+def _pack(system: _System, q, qd, qdd, rcond: float,
+          free: FreeMotion | None = None) -> Kinematics:
     mech = system.m
     origins, angles, vel0, omegas, acc0, alphas = {}, {}, {}, {}, {}, {}
     for k in [1] + system.moving:
@@ -793,7 +829,8 @@ def _pack(system: _System, q, qd, qdd, rcond: float) -> Kinematics:
         rates.append(SlideRate(s, float(dg @ e), speed, accel, (float(dg[0]), float(dg[1])),
                                (float(cor[0]), float(cor[1]))))
     return Kinematics(points, angles, omegas, alphas, vels, accs, tuple(rates),
-                      float(np.max(np.abs(system.residual(q)))), rcond, origins, vel0, acc0)
+                      float(np.max(np.abs(system.residual(q)))), rcond, origins, vel0, acc0,
+                      free)
 
 
 def _velocity(p, origin, v0, omega) -> tuple[float, float]:
