@@ -18,7 +18,7 @@ from .coincident import taken
 from .errors import DegenerateInput, InputError
 from .limit_positions import WHY_NOT, drawn_limits
 from .reference import solver
-from .reference.centres import MoveTogether, instant_centre
+from .reference.centres import MoveTogether, instant_centre, shared_pin
 from .reference.limits import limit_reference
 from .reference.mobility import mobility_of
 from .reference.rotatability import (class_by_rotation, four_bar_spans, grashof_class,
@@ -29,9 +29,11 @@ __all__ = ["centre", "omega", "alpha", "velocity", "acceleration", "relative", "
 
 
 def centre(work, ask: A.Centre) -> Expected:
-    """Where the two links' analytic velocity fields agree (undefined if they move together)."""
+    """Where the two links' analytic velocity fields agree, or their pin (undefined if they
+    move together)."""
     try:
-        ref = instant_centre(work.kinematics, *ask.pair)
+        ref = instant_centre(work.kinematics, *ask.pair,
+                             pin=shared_pin(work.mechanism, *ask.pair))
     except MoveTogether as e:      # any point is their centre, the one drawn among them
         return Expected({"undefined": str(e), "anywhere": True})
     except DegenerateInput as e:

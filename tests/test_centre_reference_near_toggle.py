@@ -15,8 +15,9 @@ import mpmath as mp
 import pytest
 
 from tarsim.constructions.model import Drive, Link, Mechanism, Units
-from tarsim.constructions.reference.centres import instant_centre, mechanism_size
+from tarsim.constructions.reference.centres import instant_centre, mechanism_size, shared_pin
 from tarsim.constructions.reference.solver import solve
+from tests.common import four_bar
 
 GROUND, CRANK, COUPLER, ROCKER = 4, 3, 2, 2.5      # non-Grashof: 2 + 4 > 3 + 2.5
 # The toggle: coupler and rocker in line, |A − O4| = coupler + rocker.
@@ -72,3 +73,26 @@ def test_reference_centres_near_the_toggle_are_as_sharp_as_the_position(gap):
         # 1e-9 whatever the gap (the driven motion's was 4e-6 for I12 at 1e-9).
         assert error < 64 * 2.2e-16 / math.sqrt(gap), (pair, error)
         assert ref.rounding < 1e-9, (pair, ref.rounding)
+
+
+def test_a_pin_keeps_its_reference_at_a_change_point():
+    # O2O4 300, O2A 100, AB 200 + 1e-8, O4B 200 at θ2 = 180°: all four pins nearly in line,
+    # so the linkage with its input let go is near its own dead point too, and neither
+    # motion's fields give I34 (they gave it 3.3e-6 off). The pin B is I34 by definition.
+    delta, size = 1e-8, 0.4
+    mech = four_bar(math.pi, crank=0.1, coupler=0.2 + delta * 1e-3, rocker=0.2, omega2=1.0)
+    kin = solve(mech)
+    assert kin.free.conditioning < 1e-4          # the free motion is no help here
+    mp.mp.dps = 50
+    # B cut from circles about A = (−0.1, 0) and O4 = (0.3, 0), 0.4 apart, on the left of
+    # A → O4 (y > 0): x from the radical line, y from Pythagoras.
+    ab, o4b = mp.mpf(0.2 + delta * 1e-3), mp.mpf(0.2)
+    x = (mp.mpf(0.4) ** 2 + ab ** 2 - o4b ** 2) / (2 * mp.mpf(0.4))
+    exact = (x - mp.mpf(0.1), mp.sqrt(ab ** 2 - x ** 2))
+    ref = instant_centre(kin, 3, 4, pin=shared_pin(mech, 3, 4))
+    error = float(mp.sqrt((ref.point[0] - exact[0]) ** 2 + (ref.point[1] - exact[1]) ** 2)) / size
+    # B itself is conditioned as √ of the arcs' overlap (1e-8 mm of 400 mm): its error may
+    # reach about eps/√(2.5e-11) ≈ 4e-11 (it is 1.5e-17 here); the fields' was 3.3e-6.
+    assert error < 64 * 2.2e-16 / math.sqrt(delta * 1e-3 / size)
+    assert ref.rounding <= 4 * 2.3e-16
+    assert shared_pin(mech, 1, 3) is None and shared_pin(mech, 2, 1) == "O2"

@@ -12,14 +12,16 @@ When ``Δω`` vanishes the relative motion is a translation and the centre is at
 infinity, square to the relative velocity.
 
 The fields are those of the mechanism's free motion (:class:`FreeMotion`, the
-motion with the input let go, up to scale) when the solver gives it: centres hang on
+motion with the input let go, up to scale) when that is the sharper: centres hang on
 velocity ratios alone, and near a dead point of the input the solved ω and v carry an
-error of ``eps/rcond`` of their size while that direction stays well conditioned.
+error of ``eps/rcond`` of their size while that direction stays well conditioned. A pin
+two links share is their centre by definition; its reference is where the solver puts
+the pin, so that it stays sharp even at a change point, where both motions lose it.
 
-This module is a reference, not a construction: it takes ω and the origins'
-velocities from :mod:`constructions.analytic` and uses nothing of the graphical
-methods. It imports only the standard library, :mod:`constructions.errors` and
-:mod:`constructions.analytic`.
+This module is a reference, not a construction: it takes positions, ω and the origins'
+velocities from :mod:`.solver` and uses nothing of the graphical methods. It imports
+only the standard library, :mod:`constructions.errors`, :mod:`constructions.model` and
+:mod:`.solver`.
 """
 
 from __future__ import annotations
@@ -27,10 +29,11 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from ..model import Mechanism
 from .solver import Kinematics
 from ..errors import DegenerateInput
 
-__all__ = ["AnalyticCentre", "MoveTogether", "instant_centre", "centre_error",
+__all__ = ["AnalyticCentre", "MoveTogether", "instant_centre", "shared_pin", "centre_error",
            "mechanism_size", "AT_INFINITY", "FAR"]
 
 EPS = 2.220446049250313e-16
@@ -122,7 +125,7 @@ def _scale(kin: Kinematics, motion, pts, size: float) -> float:
                + [math.hypot(*_field(kin, motion, k, p)) for k in motion.omegas for p in pts])
 
 
-def instant_centre(kin: Kinematics, i: int, j: int) -> AnalyticCentre:
+def instant_centre(kin: Kinematics, i: int, j: int, *, pin: str | None = None) -> AnalyticCentre:
     """Locate ``I_ij`` where the velocity fields of links ``i`` and ``j`` agree.
 
     Parameters
@@ -132,6 +135,11 @@ def instant_centre(kin: Kinematics, i: int, j: int) -> AnalyticCentre:
         the centres do not depend on its size).
     i, j : int
         Two link numbers (1 is the frame).
+    pin : str, optional
+        A point both links carry (see :func:`shared_pin`): a centre by definition, so
+        its reference is where the solver puts it, whatever the conditioning of the
+        velocities (at a change point, where the free linkage is itself singular, the
+        fields lose it by orders of magnitude).
 
     Returns
     -------
@@ -171,6 +179,8 @@ def instant_centre(kin: Kinematics, i: int, j: int) -> AnalyticCentre:
     # loses there. Elsewhere the two agree to rounding and the driven one, whose zeros are
     # exact (a block's ω), is kept: the free one must be sharper tenfold to be taken.
     driven = _located(kin, kin, i, j, q, size)
+    if pin is not None:
+        return AnalyticCentre(kin.points[pin], None, 4.0 * EPS)
     free = getattr(kin, "free", None)
     if free is None:
         return driven
@@ -206,6 +216,19 @@ def _located(kin: Kinematics, motion, i: int, j: int, q: tuple[float, float],
     reach = math.hypot(p[0] - q[0], p[1] - q[1])
     rounding = noise * scale * (1.0 + reach / size) / (abs(dw) * max(size, math.hypot(*p)))
     return AnalyticCentre(p, None, rounding)
+
+
+def shared_pin(mech: Mechanism, i: int, j: int) -> str | None:
+    """The one point links ``i`` and ``j`` both carry (their pin), or None.
+
+    >>> from tarsim.constructions.model import Drive, Link, Mechanism
+    >>> m = Mechanism((Link(1, (("O2", (0, 0)),)), Link(2, (("O2", (0, 0)), ("A", (1, 0)))),
+    ...                Link(3, (("A", (0, 0)),))), Drive(2, 0.0))
+    >>> shared_pin(m, 2, 1), shared_pin(m, 3, 2), shared_pin(m, 1, 3)
+    ('O2', 'A', None)
+    """
+    both = set(mech.link(i).names) & set(mech.link(j).names)
+    return both.pop() if len(both) == 1 else None
 
 
 def centre_error(found, ref: AnalyticCentre, size: float) -> float:
