@@ -24,7 +24,8 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
-from benchmarks.position_accuracy import median_time  # noqa: E402
+from benchmarks.bench.stiff import parallel_angle  # noqa: E402
+from benchmarks.bench.timing import median_time  # noqa: E402
 from tarsim.constructions.reference import solver  # noqa: E402
 from tarsim.constructions.reference.centres import centre_error, instant_centre, mechanism_size  # noqa: E402
 from tarsim.constructions.assembly import assemble  # noqa: E402
@@ -64,23 +65,6 @@ def part1() -> None:
         worst = max(q.rel_error for q in solve_exercise(ex).quantities.values())
         print(f"{name:<34}{t_c:>14.0f}{t_a:>12.0f}{t_c / t_a:>8.2f}{worst:>18.1e}")
     print("(the construction side also checks every number against its own analytic solve)")
-
-
-def parallel_angle() -> float:
-    """θ2 (rad) where the peers.md four-bar's crank and rocker are parallel (I13 at ∞).
-
-    Found by bisection on the analytic positions, to the last bit.
-    """
-    def cross(theta: float) -> float:
-        pts = solver.solve_positions(four_bar(theta))
-        (ax, ay), (bx, by), (ox, oy) = pts["A"], pts["B"], pts["O4"]
-        return ax * (by - oy) - ay * (bx - ox)
-    grid = [math.radians(d) for d in range(0, 361, 2)]
-    lo, hi = next((a, b) for a, b in zip(grid, grid[1:]) if cross(a) * cross(b) < 0)
-    while hi - lo > 1e-15:
-        mid = (lo + hi) / 2
-        lo, hi = (mid, hi) if cross(lo) * cross(mid) > 0 else (lo, mid)
-    return (lo + hi) / 2
 
 
 def part2() -> None:

@@ -26,7 +26,7 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
-from benchmarks.position_accuracy import median_time  # noqa: E402
+from benchmarks.bench.timing import median_time  # noqa: E402
 from tarsim.constructions.reference import solver  # noqa: E402
 from tarsim.constructions.acceleration_polygon import draw_acceleration_polygon  # noqa: E402
 from tarsim.constructions.assembly import assemble  # noqa: E402

@@ -18,29 +18,18 @@ from __future__ import annotations
 
 import math
 import platform
-import statistics
 import sys
-import time
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
+from benchmarks.bench.timing import median_time  # noqa: E402
 from tarsim.constructions.reference import solver  # noqa: E402
 from tarsim.constructions.assembly import assemble  # noqa: E402
 from tarsim.constructions.errors import TarsimError  # noqa: E402
 from tarsim.exercises.catalog import bundled  # noqa: E402
 from tarsim.exercises.mechanism_file import load_mechanism, parse_mechanism  # noqa: E402
 from tests.common import four_bar_toml  # noqa: E402
-
-
-def median_time(fn, repeat: int = 200) -> float:
-    """Median wall time of ``fn()`` in microseconds."""
-    times = []
-    for _ in range(repeat):
-        t0 = time.perf_counter()
-        fn()
-        times.append(time.perf_counter() - t0)
-    return statistics.median(times) * 1e6
 
 
 def disagreement(mech) -> tuple[float, float]:

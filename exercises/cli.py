@@ -272,6 +272,63 @@ def sweep(source, out_dir, of, steps, pdf):
         click.echo(f"PDF skipped: {reason}", err=True)
 
 
+@cli.command()
+@click.option("--quick", is_flag=True,
+              help="Stated positions only, the ends of each stiff sweep, fewer plot points: "
+                   "seconds, for CI and tests.")
+@click.option("-o", "--out", "out_dir", type=click.Path(file_okay=False), default=None,
+              metavar="DIR", help="Folder for report.md and report/*.svg "
+                                  "(default: the checkout's benchmarks/).")
+def bench(quick, out_dir):
+    """Report each method's error against its run time, and the stiff cases.
+
+    Runs every graphical method (position by compass, centres by Kennedy,
+    radius rotation, parallel lines, components, both polygons, the limit
+    positions) on the bundled exercises and measures each number against
+    the analytic solver and a 50-digit mpmath reference, with its
+    conditioning and run time; plots error against run time where a knob
+    trades one for the other (the pen and the drawing's size, Newton's
+    tolerance, polygon circles, a sweep's step, the working precision); and
+    runs the stiff and extreme suite (toggles, near-parallel Kennedy lines,
+    centres at infinity, extreme lengths and ω, dead centres, Coriolis as
+    ω → 0). It runs from a source checkout, with the test extra installed.
+
+    \b
+    Writes into DIR:
+      report.md        the method table, the plots' headlines, the suite
+      report/*.svg     error against run time, one plot per knob
+
+    \b
+    Example:
+      tarsim bench --quick -o /tmp/bench
+      tarsim bench                      # the full report, into benchmarks/
+    """
+    root = Path(__file__).resolve().parents[1]
+    if not (root / "benchmarks" / "bench" / "__init__.py").is_file():
+        raise click.ClickException("tarsim bench runs from a source checkout: it needs the "
+                                   "benchmarks/ folder beside the package (clone the "
+                                   "repository and `pip install -e '.[test]'` there)")
+    if str(root) not in sys.path:
+        sys.path.insert(0, str(root))
+    try:
+        from benchmarks.bench import write_report
+    except ImportError as e:
+        raise click.ClickException(f"tarsim bench needs the test extra ({e.name} is missing): "
+                                   "pip install -e '.[test]'") from None
+
+    def bar(length: int, label: str):
+        return click.progressbar(length=length, label=label, file=sys.stderr)
+
+    out = Path(out_dir) if out_dir else root / "benchmarks"
+    try:
+        path = write_report(out, quick=quick, bar=bar if sys.stderr.isatty() else None)
+    except OSError as e:
+        raise click.ClickException(f"cannot write the report into {out}: "
+                                   f"{e.strerror or e}") from None
+    plots = sorted((out / "report").glob("*.svg"))
+    click.echo(f"wrote {path} and {len(plots)} plots in {out / 'report'}/")
+
+
 @cli.command(name="list")
 def list_():
     """List the bundled examples: their ids, where they come from, what they ask.

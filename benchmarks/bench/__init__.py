@@ -1,0 +1,10 @@
+"""``tarsim bench``: each method's error against the analytic solver and a 50-digit mpmath
+reference, error against run time as SVG plots, and the stiff and extreme suite.
+
+It runs from a source checkout only (it is not installed with tarsim): the command line
+finds this folder from the package's own place. See :func:`.report.write_report`.
+"""
+
+from .report import write_report
+
+__all__ = ["write_report"]
