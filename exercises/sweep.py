@@ -27,6 +27,7 @@ from dataclasses import dataclass, replace
 from ..constructions.asks import SYMBOLS, Acceleration, Velocity
 from ..constructions.reference import solver
 from ..constructions.reference.limits import bisect_zero
+from ..constructions.reference.turn import Turn, solve_turn
 from ..constructions.assembly import assemble
 from ..constructions.errors import AssemblyError, InputError, TarsimError
 from ..constructions.limit_positions import stroke_point
@@ -189,10 +190,25 @@ def _evaluate(mech: Mechanism, out: Output, drive: Drive) -> dict[str, float]:
     kin = solver.solve(m)
     if out.kind == "link":
         n = out.link
-        return {"theta": kin.angles[n], "omega": kin.omegas[n], "alpha": kin.alphas[n]}
-    x, y = kin.points[out.point]
-    vx, vy = solver.point_velocity(kin, m, out.link, out.point)
-    ax, ay = solver.point_acceleration(kin, m, out.link, out.point)
+        return _values(out, kin.angles[n], kin.omegas[n], kin.alphas[n])
+    return _values(out, kin.points[out.point], solver.point_velocity(kin, m, out.link, out.point),
+                   solver.point_acceleration(kin, m, out.link, out.point))
+
+
+def _turn_values(turn: Turn, out: Output) -> dict[int, dict[str, float]]:
+    """The output's values (SI) at each position of ``turn`` that assembles, by index."""
+    n, p = out.link, out.point
+    columns = ([turn.angles[n], turn.omegas[n], turn.alphas[n]] if out.kind == "link" else
+               [turn.points[p], turn.velocity_on(n, p), turn.acceleration_on(n, p)])
+    rows = zip(*(c.tolist() for c in columns))
+    return {i: _values(out, *row) for i, (ok, row) in enumerate(zip(turn.ok.tolist(), rows)) if ok}
+
+
+def _values(out: Output, position, velocity, acceleration) -> dict[str, float]:
+    """The output's keys from its position, velocity and acceleration (θ, ω, α of a link)."""
+    if out.kind == "link":
+        return {"theta": position, "omega": velocity, "alpha": acceleration}
+    (x, y), (vx, vy), (ax, ay) = position, velocity, acceleration
     if out.kind == "slider":
         (dx, dy), (gx, gy) = out.direction, out.guide.through
         return {"x": x, "y": y, "s": (x - gx) * dx + (y - gy) * dy, "v": vx * dx + vy * dy,
@@ -234,15 +250,16 @@ def sweep_exercise(ex: Exercise, steps: int = 360, *, of: str | None = None,
     out = pick_output(ex, of)
     d = mech.drive
     step = (-1.0 if d.omega < 0 else 1.0) * math.tau / steps
-    samples = []
-    for i in range(steps):
-        angle = d.angle + i * step
-        try:
-            samples.append(Sample(angle, _evaluate(mech, out, _drive_at(mech, angle))))
-        except solver.SingularPosition as e:
-            samples.append(Sample(angle, {}, f"dead point: {e}"))
-        except AssemblyError as e:
-            samples.append(Sample(angle, {}, f"cannot assemble: {e}"))
+    angles = [d.angle + i * step for i in range(steps)]
+    turn = solve_turn(mech, angles)          # the whole revolution at once
+    values, samples = _turn_values(turn, out), []
+    for i, angle in enumerate(angles):
+        if i in values:
+            samples.append(Sample(angle, values[i]))
+        else:
+            e = turn.refusal(i)
+            why = "dead point" if isinstance(e, solver.SingularPosition) else "cannot assemble"
+            samples.append(Sample(angle, {}, f"{why}: {e}"))
         if progress is not None:
             progress(1)
     failed = [s for s in samples if not s.values]

@@ -15,6 +15,7 @@ import math
 from dataclasses import dataclass
 
 from .solver import SingularPosition, follow_branches, solve
+from .turn import solve_turn
 from ..errors import AssemblyError, InputError
 from ..model import Drive, Mechanism
 
@@ -55,21 +56,30 @@ def limit_reference(mech: Mechanism, *, point: str | None = None,
     if point is not None:
         slide = next(i for i, s in enumerate(mech.slides) if s.point == point and s.guide_link == 1)
 
+    mech = mech.with_drive(Drive(d.link, d.angle, sense, 0.0))
+
+    def refused(theta: float, e: AssemblyError) -> InputError:
+        return InputError(f"the crank cannot turn fully (at θ{d.link} = "
+                          f"{mech.units.angle_brief(theta)}: {e}), so it has no limit "
+                          "positions to pass")
+
     def state(theta: float) -> tuple[float, float]:
         """(output velocity, block position along its guide) at crank angle ``theta``."""
         try:
             kin = solve(mech.with_drive(Drive(d.link, theta, sense, 0.0)))
         except (SingularPosition, AssemblyError) as e:
-            raise InputError(f"the crank cannot turn fully (at θ{d.link} = "
-                             f"{mech.units.angle_brief(theta)}: {e}), so it has no limit "
-                             "positions to pass") from None
+            raise refused(theta, e) from None
         if slide is None:
             return kin.omegas[link], 0.0
         rate = kin.slide_rates[slide]
         return rate.velocity, rate.position
 
     thetas = [d.angle + sense * 2 * math.pi * k / SAMPLES for k in range(SAMPLES + 1)]
-    speeds = [state(t)[0] for t in thetas[:-1]]
+    turn = solve_turn(mech, thetas[:-1])        # the scan at once; the bisections one by one
+    if not turn.ok.all():
+        first = int(turn.ok.argmin())
+        raise refused(thetas[first], turn.refusal(first))
+    speeds = (turn.omegas[link] if slide is None else turn.slide_velocities[slide]).tolist()
     speeds.append(speeds[0])     # a turn on is the same position: a reversal at the start,
     zeros = []                   # rounded two ways, is then seen once, not missed or twice
     for k in range(SAMPLES):

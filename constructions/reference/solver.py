@@ -239,9 +239,11 @@ class _Assembly:
                 off = math.atan2(s.direction[1], s.direction[0])
                 if s.guide_link in self.phi and s.link not in self.phi:
                     self.phi[s.link] = self.phi[s.guide_link] + off
+                    self._turned(s.link, s.guide_link, off)
                     changed = True
                 elif s.link in self.phi and s.guide_link not in self.phi:
                     self.phi[s.guide_link] = self.phi[s.link] - off
+                    self._turned(s.guide_link, s.link, -off)
                     changed = True
             for s in self.m.slides:
                 if s.rolling and s.link not in self.phi and s.guide_link in self.pose \
@@ -251,6 +253,7 @@ class _Assembly:
                     along = float(d @ (self.at[s.point] - origin - _rot(phi) @ np.asarray(
                         s.through, dtype=float)))
                     self.phi[s.link] = phi - along / (s.contact.roll_sign * s.contact.circle.radius)
+                    self._rolled(s)
                     changed = True
             for k, names in self.names.items():
                 if k in self.pose:
@@ -263,11 +266,25 @@ class _Assembly:
                 else:
                     continue
                 p = known[0]
+                self._placed(k, known)
                 origin = self.at[p] - _rot(phi) @ self.loc[k, p]
                 self.pose[k], self.phi[k] = (origin, phi), phi
                 for n in names:
                     self.at.setdefault(n, origin + _rot(phi) @ self.loc[k, n])
                 changed = True
+
+    # Hooks for a recorder of the acts in order (.assembly_plan); a solve records nothing.
+    def _turned(self, link: int, by: int, offset: float) -> None:
+        """A block set ``link``'s angle to link ``by``'s plus ``offset``."""
+
+    def _rolled(self, s: Slide) -> None:
+        """The rolling contact ``s`` set its wheel's angle."""
+
+    def _placed(self, k: int, known: list[str]) -> None:
+        """Link ``k`` is about to be posed at ``known[0]`` (its angle known, or from ``known``)."""
+
+    def _slotted(self, s: Slide, q: str, branch) -> None:
+        """The slot of ``s`` is about to be turned about ``q`` to pass its block."""
 
     def _angle_from(self, k: int, known: list[str]) -> float | None:
         a = known[0]
@@ -425,6 +442,7 @@ class _Assembly:
                 raise InputError(f"'{b}' is not a valid branch for the {s.label}, must be one "
                                  f"of forward, backward or a near point (x, y)",
                                  file=self.m.source or None, key=s.point)
+            self._slotted(s, q, b)
             if not isinstance(b, str):  # the slot direction that points more nearly towards it
                 n = np.asarray(b, dtype=float) - self.at[q]
                 b = max((("forward", ahead), ("backward", behind)),
