@@ -12,8 +12,9 @@ so an error leaves the folder as it was.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
-from functools import cached_property
+from functools import cached_property, partial
 from pathlib import Path
 
 from ..constructions.acceleration_polygon import drawn_acceleration_polygon
@@ -24,11 +25,12 @@ from ..constructions.narration import narrate
 from ..constructions.record import Kind, Panel, Slice, slice
 from ..constructions.velocity_polygon import WORKED, drawn_velocity_polygon
 from ..graphics.circle_diagram import draw_circle_diagram
-from ..graphics.export import pdf_pages, svg_to, write_folder
+from ..graphics.export import RenderError, cairo_missing, pdf_pages, svg_to, write_folder
 from ..graphics.figure import Figure, stack_pages
 from ..graphics.polygon_panel import draw_polygon_panel
 from ..graphics.scene import draw_scene
 from ..graphics.svg import to_svg
+from ..graphics.workers import draw_each
 from ..graphics.worked_page import compose_worked_page
 
 from .exercise_file import Exercise
@@ -55,6 +57,18 @@ class SolutionFigure:
 
 
 @dataclass
+class _Sketch:
+    """A figure before it is drawn: all but the drawing, which :func:`draw_each` runs."""
+
+    stem: str
+    heading: str
+    draw: Callable[[], Figure]
+    shown: Slice | None
+    panels: tuple[tuple[str, Panel, Slice], ...] = ()
+    owner: Solution | None = None
+
+
+@dataclass
 class WorkedSolution:
     """A solved exercise: its answers, its figures, its steps, and the files they make.
 
@@ -70,11 +84,13 @@ class WorkedSolution:
     def pages(self) -> list[SolutionFigure]:
         """Every figure in order: the whole mechanism's first, then each position's (their
         stems ending in the position's slug when there are several: ``worked-t-2.34s``)."""
-        pages = _overall_figures(self.exercise, self.overall)
+        sketches = _overall_figures(self.exercise, self.overall)
         for sol in self.positions:
             suffix = f"-{sol.position.slug}" if len(self.positions) > 1 else ""
-            pages += _figures(sol, suffix)
-        return pages
+            sketches += _figures(sol, suffix)
+        figures = draw_each([s.draw for s in sketches])
+        return [SolutionFigure(s.stem, s.heading, fig, s.shown, s.panels, s.owner)
+                for s, fig in zip(sketches, figures)]
 
     @property
     def results(self) -> dict:
@@ -173,10 +189,15 @@ def write_solution(files: dict[str, str], out_dir: str | Path, *, pdf: bool = Tr
     """
     pdfs = {}
     if pdf:
-        pdfs = {name[:-4] + ".pdf": svg_to(text, "pdf") for name, text in files.items()
-                if name.endswith(".svg") and name != "solution.svg"}
-        if pdfs:
-            pdfs["solution.pdf"] = pdf_pages(list(pdfs.values()))
+        figures = {name[:-4] + ".pdf": text for name, text in files.items()
+                   if name.endswith(".svg") and name != "solution.svg"}
+        if figures:
+            missing = cairo_missing()   # loaded here once, for every worker to inherit
+            if missing:
+                raise RenderError(missing)
+            made = draw_each([partial(svg_to, text, "pdf") for text in figures.values()])
+            pdfs = dict(zip(figures, made))
+            pdfs["solution.pdf"] = pdf_pages(made)
     return write_folder({**files, **pdfs}, out_dir)
 
 
@@ -191,27 +212,26 @@ def _specs(answers) -> list[tuple[FigureSpec, list]]:
     return sorted(out.values(), key=lambda sa: sa[0].kind == "polygons")
 
 
-def _figures(sol: Solution, suffix: str = "") -> list[SolutionFigure]:
+def _figures(sol: Solution, suffix: str = "") -> list[_Sketch]:
     out = [_figure(sol, spec, answers) for spec, answers in _specs(sol.answers)]
-    return [SolutionFigure(f.stem + suffix, f.heading, f.figure, f.shown, f.panels, sol)
-            for f in out]
+    return [_Sketch(f.stem + suffix, f.heading, f.draw, f.shown, f.panels, sol) for f in out]
 
 
-def _figure(sol: Solution, spec: FigureSpec, answers) -> SolutionFigure:
-    """Draw one figure of a position from the answers it holds."""
+def _figure(sol: Solution, spec: FigureSpec, answers) -> _Sketch:
+    """Sketch one figure of a position from the answers it holds."""
     asm, work = sol.assembly, sol.work
     c, name = asm, sol.exercise.mechanism.name
     if spec.kind == "polygons":
         return _worked_page(sol, answers)
     if spec.kind == "circle diagram":
         every = slice(c, [s.id for s in c if s.kind is Kind.CENTRE], base=asm.position_steps)
-        return SolutionFigure(spec.stem, spec.heading, draw_circle_diagram(every, title=name),
-                              None)
+        return _Sketch(spec.stem, spec.heading, lambda: draw_circle_diagram(every, title=name),
+                       None)
     shown = _shown(c, answers, asm.position_steps)
     notes = notes_under(sol, Panel.SPACE) if spec.notes else []
-    fig = draw_scene(shown, title=f"{name}: {spec.caption}", notes=notes,
-                     velocity_scale=spec.velocity_scale, per_cm=work.scales.space)
-    return SolutionFigure(spec.stem, spec.heading, fig, shown)
+    return _Sketch(spec.stem, spec.heading, lambda: draw_scene(
+        shown, title=f"{name}: {spec.caption}", notes=notes, velocity_scale=spec.velocity_scale,
+        per_cm=work.scales.space), shown)
 
 
 def _shown(c, answers, base, panel: Panel | None = None) -> Slice:
@@ -221,7 +241,7 @@ def _shown(c, answers, base, panel: Panel | None = None) -> Slice:
     return slice(c, list(dict.fromkeys(refs)), base=base, arrows=list(dict.fromkeys(arrows)))
 
 
-def _worked_page(sol: Solution, answers) -> SolutionFigure:
+def _worked_page(sol: Solution, answers) -> _Sketch:
     """The space diagram, the polygons and the results table on one page.
 
     Each polygon shows the slice of what is asked of it, and every vector whose two
@@ -231,9 +251,7 @@ def _worked_page(sol: Solution, answers) -> SolutionFigure:
     ex, asm, work = sol.exercise, sol.assembly, sol.work
     c, m = asm, ex.mechanism
     where = f" at {sol.position.label}" if sol.position else ""
-    space = draw_scene(Slice(c, ()), title=f"{m.name}: space diagram{where}",
-                       per_cm=work.scales.space)
-    panels, figures = [], [space]
+    panels, drawn = [], []
     polygons = [(drawn_velocity_polygon(work), Panel.VELOCITY, "Velocity polygon",
                  work.scales.velocity_polygon)]
     if work.has("acceleration polygon"):
@@ -243,21 +261,27 @@ def _worked_page(sol: Solution, answers) -> SolutionFigure:
         shown = _shown(c, answers, asm.position_steps, panel)
         if not shown.steps(panel):           # nothing asked of it: the pole stands alone
             shown = slice(c, [poly.pole], base=asm.position_steps)
-        figures.append(draw_polygon_panel(shown, panel=panel, scale=poly.scale, units=m.units,
-                                          title=heading, notes=notes_under(sol, panel),
-                                          per_cm=stated))
+        drawn.append(dict(panel=panel, scale=poly.scale, units=m.units, title=heading,
+                          notes=notes_under(sol, panel), per_cm=stated))
         panels.append((heading, panel, shown))
     table = [("quantity", "method", "construction", "analytic", "relative error")]
     for qname, q in sol.quantities.items():
         for qq in (q, *q.alternatives.values()):
             table.append((symbol(qname), qq.method, _show(qq.value, m.units, qname),
                           _show(qq.reference, m.units, qname), f"{qq.rel_error:.1e}"))
-    page = compose_worked_page(f"{m.name}: worked solution{where}", figures, table,
-                               notes_under(sol, Panel.SPACE))
-    return SolutionFigure(WORKED.stem, WORKED.heading, page, None, tuple(panels))
+
+    def draw() -> Figure:
+        space = draw_scene(Slice(c, ()), title=f"{m.name}: space diagram{where}",
+                           per_cm=work.scales.space)
+        figures = [space] + [draw_polygon_panel(shown, **how)
+                             for (_, _, shown), how in zip(panels, drawn)]
+        return compose_worked_page(f"{m.name}: worked solution{where}", figures, table,
+                                   notes_under(sol, Panel.SPACE))
+
+    return _Sketch(WORKED.stem, WORKED.heading, draw, None, tuple(panels))
 
 
-def _overall_figures(ex: Exercise, overall: Overall) -> list[SolutionFigure]:
+def _overall_figures(ex: Exercise, overall: Overall) -> list[_Sketch]:
     """The limit positions, when the time ratio or stroke is asked; the mechanism itself when
     nothing is asked at a position."""
     work, m = overall.work, ex.mechanism
@@ -265,8 +289,8 @@ def _overall_figures(ex: Exercise, overall: Overall) -> list[SolutionFigure]:
         if ex.position_asks or work is None:
             return []
         asm = work.assembly
-        fig = draw_scene(Slice(asm, ()), title=m.name, per_cm=work.scales.space)
-        return [SolutionFigure("mechanism", "The mechanism", fig, None)]
+        return [_Sketch("mechanism", "The mechanism", lambda: draw_scene(
+            Slice(asm, ()), title=m.name, per_cm=work.scales.space), None)]
     lp = drawn_limits(work)
     notes = [_time_ratio_words(m, lp)]
     if lp.stroke is not None:
@@ -274,9 +298,9 @@ def _overall_figures(ex: Exercise, overall: Overall) -> list[SolutionFigure]:
     answers = [a for a in overall.answers if a.figures]
     shown = _shown(work.assembly, answers, work.assembly.position_steps)
     spec = answers[0].figures[0]
-    fig = draw_scene(shown, title=f"{m.name}: {spec.caption}", notes=notes,
-                     per_cm=work.scales.space)
-    return [SolutionFigure(spec.stem, spec.heading, fig, shown)]
+    return [_Sketch(spec.stem, spec.heading, lambda: draw_scene(
+        shown, title=f"{m.name}: {spec.caption}", notes=notes, per_cm=work.scales.space),
+        shown)]
 
 
 def _time_ratio_words(m, lp) -> str:

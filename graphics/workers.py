@@ -1,0 +1,69 @@
+"""Draw independent figures side by side, one process a core.
+
+Placing a figure's labels is most of the time a solve takes, and a solution's figures do
+not depend on each other. So where the platform forks (Linux), the jobs are shared out
+to forked workers: a fork inherits the jobs as they are (closures over the solution, which
+need no pickling) and only the finished results come back, pickled. Elsewhere, in a
+process that runs other threads (a fork copies their locks mid-use), for one job, or on a
+one-core machine, the jobs run here in turn. Either way the results are the same and in
+the same order.
+"""
+
+from __future__ import annotations
+
+import multiprocessing
+import os
+import threading
+from collections.abc import Callable
+from typing import TypeVar
+
+__all__ = ["draw_each"]
+
+T = TypeVar("T")
+
+_JOBS: list[Callable[[], object]] = []
+"""The jobs of the pool being run, read by its forked workers."""
+
+
+def _cores() -> int:
+    try:
+        return len(os.sched_getaffinity(0))
+    except AttributeError:          # not on Linux: then forking is not used anyway
+        return os.cpu_count() or 1
+
+
+def _forks() -> bool:
+    return ("fork" in multiprocessing.get_all_start_methods()
+            and threading.active_count() == 1
+            and multiprocessing.parent_process() is None)   # no pools inside workers
+
+
+def _run(k: int):
+    """Run job ``k`` in a worker; a failure comes back as None, to be run again at home,
+    where it raises as itself (an exception need not survive pickling)."""
+    try:
+        return True, _JOBS[k]()
+    except BaseException:          # noqa: BLE001 (any failure is re-raised by the parent)
+        return False, None
+
+
+def draw_each(jobs: list[Callable[[], T]]) -> list[T]:
+    """Return each job's result, in order, using every core where that is safe.
+
+    Parameters
+    ----------
+    jobs : list of callables
+        Independent jobs without arguments, each returning a picklable result (a
+        :class:`~tarsim.graphics.figure.Figure`).
+    """
+    workers = min(len(jobs), _cores())
+    if workers < 2 or not _forks():
+        return [job() for job in jobs]
+    global _JOBS
+    _JOBS = list(jobs)
+    try:
+        with multiprocessing.get_context("fork").Pool(workers) as pool:
+            done = pool.map(_run, range(len(jobs)), chunksize=1)
+    finally:
+        _JOBS = []
+    return [result if ok else job() for job, (ok, result) in zip(jobs, done)]
