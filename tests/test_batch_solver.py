@@ -142,8 +142,8 @@ def test_every_bundled_exercise_matches_the_scalar_solver(name):
 
 @pytest.mark.slow
 @pytest.mark.parametrize("name", bundled())
-def test_every_bundled_exercise_matches_the_scalar_solver_over_240_steps(name):
-    worst = assert_like_scalar(_mechanism(name), _turn(_mechanism(name), 240))
+def test_every_bundled_exercise_matches_the_scalar_solver_over_120_steps(name):
+    worst = assert_like_scalar(_mechanism(name), _turn(_mechanism(name), 120))
     print(f"{name}: worst {worst:.1e}")
 
 

@@ -21,8 +21,8 @@ from tests.random_mechanisms import FAMILIES, generate, run_case
 
 pytestmark = pytest.mark.slow
 
-EXAMPLES = 50
-"""Cases per family: the file runs in under a minute on two cores. The seeds are fixed
+EXAMPLES = 30
+"""Cases per family: the file runs in some seconds. The seeds are fixed
 (``derandomize``) and not shrunk (a smaller seed is no simpler a mechanism), so a failure
 names the same case on every run; the benchmark explores beyond them."""
 

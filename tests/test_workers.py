@@ -49,7 +49,7 @@ def test_no_fork_while_another_thread_runs(monkeypatch):
 
 @pytest.mark.slow
 def test_the_figures_are_the_same_drawn_on_one_core_or_on_two(monkeypatch):
-    ex = tarsim.load("hinkle-slider-crank")
+    ex = tarsim.load("velocity-homework-292")
     monkeypatch.setattr(workers, "_cores", lambda: 2)
     shared = [to_svg(p.figure) for p in tarsim.solve(ex).pages]
     monkeypatch.setattr(workers, "_cores", lambda: 1)

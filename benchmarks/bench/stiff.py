@@ -176,16 +176,20 @@ def run_case(case: StiffCase, repeat: int = 1) -> list[StiffRow]:
         fref = FloatReference(mech)
     except (AssemblyError, TarsimError) as e:
         return [StiffRow(case, m, refused=str(e)) for m in case.methods]
-    try:
-        mref = MpReference(mech, fref.places)
-    except (ArithmeticError, Unmodelled, ZeroDivisionError):
-        mref = None
+    runs = {m: run_method(m, mech, repeat) for m in case.methods}
+    readings_of = {m: [r for r in run.readings if case.only is None or r.key[0] == case.only]
+                   for m, run in runs.items()}
+    mref = None
+    if any(readings_of.values()):        # a case every method refuses needs no reference
+        try:
+            mref = MpReference(mech, fref.places)
+        except (ArithmeticError, Unmodelled, ZeroDivisionError):
+            pass
     xy = list(fref.places.values())
     size = max(math.dist(p, q) for p in xy for q in xy)
     rows = []
-    for method in case.methods:
-        run = run_method(method, mech, repeat)
-        readings = [r for r in run.readings if case.only is None or r.key[0] == case.only]
+    for method, run in runs.items():
+        readings = readings_of[method]
         if not readings:
             rows.append(StiffRow(case, method, refused=(run.refused or ["no reading"])[0]))
             continue
