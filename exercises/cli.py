@@ -303,11 +303,15 @@ def bench(quick, out_dir):
       tarsim bench --quick -o /tmp/bench
       tarsim bench                      # the full report, into benchmarks/
     """
-    root = Path(__file__).resolve().parents[1]
-    if not (root / "benchmarks" / "bench" / "__init__.py").is_file():
-        raise click.ClickException("tarsim bench runs from a source checkout: it needs the "
-                                   "benchmarks/ folder beside the package (clone the "
-                                   "repository and `pip install -e '.[test]'` there)")
+    # The checkout is the package's own source (an editable install), or the folder it is
+    # run in, or one above it (an install from the checkout, run inside it).
+    here = Path.cwd().resolve()
+    root = next((r for r in (Path(__file__).resolve().parents[1], here, *here.parents)
+                 if (r / "benchmarks" / "bench" / "__init__.py").is_file()), None)
+    if root is None:
+        raise click.ClickException("tarsim bench runs from a source checkout: run it inside "
+                                   "the repository, whose benchmarks/ folder it needs "
+                                   "(pip install '.[test]' there)")
     if str(root) not in sys.path:
         sys.path.insert(0, str(root))
     try:

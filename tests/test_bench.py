@@ -147,6 +147,7 @@ def test_each_stiff_case_is_within_its_bound_or_refused_as_expected(case):
 
 def test_bench_outside_a_checkout_says_so_in_one_line(monkeypatch, tmp_path):
     monkeypatch.setattr(cli_module, "__file__", str(tmp_path / "tarsim" / "exercises" / "cli.py"))
+    monkeypatch.chdir(tmp_path)
     result = CliRunner().invoke(cli_module.cli, ["bench", "--quick", "-o", str(tmp_path)])
     assert result.exit_code == 1
     assert result.output.startswith("Error: tarsim bench runs from a source checkout")
