@@ -67,6 +67,11 @@ class _Sketch:
     panels: tuple[tuple[str, Panel, Slice], ...] = ()
     owner: Solution | None = None
 
+    @property
+    def weight(self) -> int:
+        """What drawing it is expected to cost: its steps, each a label to place."""
+        return sum(len(s.steps()) for s in [self.shown, *(p[2] for p in self.panels)] if s)
+
 
 @dataclass
 class WorkedSolution:
@@ -88,7 +93,7 @@ class WorkedSolution:
         for sol in self.positions:
             suffix = f"-{sol.position.slug}" if len(self.positions) > 1 else ""
             sketches += _figures(sol, suffix)
-        figures = draw_each([s.draw for s in sketches])
+        figures = draw_each([s.draw for s in sketches], [s.weight for s in sketches])
         return [SolutionFigure(s.stem, s.heading, fig, s.shown, s.panels, s.owner)
                 for s, fig in zip(sketches, figures)]
 
@@ -195,7 +200,8 @@ def write_solution(files: dict[str, str], out_dir: str | Path, *, pdf: bool = Tr
             missing = cairo_missing()   # loaded here once, for every worker to inherit
             if missing:
                 raise RenderError(missing)
-            made = draw_each([partial(svg_to, text, "pdf") for text in figures.values()])
+            made = draw_each([partial(svg_to, text, "pdf") for text in figures.values()],
+                             [len(text) for text in figures.values()])   # the longest first
             pdfs = dict(zip(figures, made))
             pdfs["solution.pdf"] = pdf_pages(made)
     return write_folder({**files, **pdfs}, out_dir)

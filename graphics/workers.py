@@ -47,7 +47,7 @@ def _run(k: int):
         return False, None
 
 
-def draw_each(jobs: list[Callable[[], T]]) -> list[T]:
+def draw_each(jobs: list[Callable[[], T]], weights: list[float] | None = None) -> list[T]:
     """Return each job's result, in order, using every core where that is safe.
 
     Parameters
@@ -55,15 +55,19 @@ def draw_each(jobs: list[Callable[[], T]]) -> list[T]:
     jobs : list of callables
         Independent jobs without arguments, each returning a picklable result (a
         :class:`~tarsim.graphics.figure.Figure`).
+    weights : list of float, optional
+        Each job's expected cost: the heaviest are started first, so that a long one does
+        not start last and keep one core busy while the others idle.
     """
     workers = min(len(jobs), _cores())
     if workers < 2 or not _forks():
         return [job() for job in jobs]
+    order = sorted(range(len(jobs)), key=lambda k: -weights[k]) if weights else range(len(jobs))
     global _JOBS
     _JOBS = list(jobs)
     try:
         with multiprocessing.get_context("fork").Pool(workers) as pool:
-            done = pool.map(_run, range(len(jobs)), chunksize=1)
+            done = dict(zip(order, pool.map(_run, order, chunksize=1)))
     finally:
         _JOBS = []
-    return [result if ok else job() for job, (ok, result) in zip(jobs, done)]
+    return [done[k][1] if done[k][0] else job() for k, job in enumerate(jobs)]

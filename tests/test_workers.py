@@ -22,6 +22,9 @@ def test_results_come_back_in_order_from_other_processes(monkeypatch):
     done = workers.draw_each([_pid_and(k) for k in range(6)])
     assert [v for _, v in done] == list(range(6))
     assert os.getpid() not in {pid for pid, _ in done}       # each drawn by a worker
+    # Started heaviest first, given back in the order asked.
+    weighed = workers.draw_each([_pid_and(k) for k in range(6)], [1, 5, 2, 9, 0, 3])
+    assert [v for _, v in weighed] == list(range(6))
 
 
 def test_a_failing_job_raises_its_own_error_here(monkeypatch):
