@@ -103,7 +103,7 @@ def fixed(value: float, digits: int) -> str:
     number or rounds a crank of 4.6e-10 mm to "0 mm".
 
     >>> fixed(250.0, 4), fixed(1.5e25, 4), fixed(-2.5e-7, 4)
-    ('250', '1.5e25', '-2.5e-7')
+    ('250', '1.5e25', '−2.5e-7')
     """
     if abs(value) >= 1e6 or 0.0 < abs(value) < 0.5 * 10.0 ** -digits:
         return significant(value)
@@ -112,13 +112,14 @@ def fixed(value: float, digits: int) -> str:
 
 
 def significant(value: float, figures: int = 6) -> str:
-    """``value`` to ``figures`` significant figures, an exponent written short ("1.5e25").
+    """``value`` to ``figures`` significant figures, with a true minus, an exponent written
+    short ("1.5e25").
 
     >>> significant(264.57513110645906), significant(1.5e25), significant(-2.5e-7)
-    ('264.575', '1.5e25', '-2.5e-7')
+    ('264.575', '1.5e25', '−2.5e-7')
     """
     text = _short_exponent(f"{value:.{figures}g}")
-    return "0" if text == "-0" else text
+    return "0" if text == "-0" else "−" + text[1:] if text.startswith("-") else text
 
 
 def _short_exponent(text: str) -> str:

@@ -438,9 +438,9 @@ class PolygonWalk(Walk):
         X = self.name(x)
         xl = self.tip_name(X)
         d = self.m.drive
-        dead = (f"dead point at θ{d.link} = {math.degrees(d.angle):.6g}°: {narrate(say1)} and "
-                f"{narrate(say2)} are parallel, so {self.kind.symbol}_{X} is undefined; move the "
-                "input off it")
+        dead = (f"dead point at θ{d.link} = {self.m.units.angle_brief(d.angle)}: "
+                f"{narrate(say1)} and {narrate(say2)} are parallel, so {self.kind.symbol}_{X} is "
+                "undefined; move the input off it")
         try:
             tip = self.act(f"{self.kind.prefix}:tip:{X}", "intersect_lines", l1, l2, label=xl,
                            said=phrase("polygon.lines_meet", tip=xl, pole=self.kind.pole,

@@ -243,7 +243,7 @@ class _Components(Walk):
         except DegenerateInput as e:
             d = self.m.drive
             raise TarsimError(f"the component method cannot find V_{x.name} at θ{d.link} = "
-                              f"{math.degrees(d.angle):.6g}°: {e}") from None
+                              f"{self.m.units.angle_brief(d.angle)}: {e}") from None
         link = x.link if x.link is not None else next((c for c in self.carriers(x) if c != 1), 1)
         # The method's arrows on this construction, whichever call drew them: a velocity
         # found for an earlier point is a known one here.

@@ -163,12 +163,17 @@ def solve(source, out_dir, angle, pdf):
     with the independent analytic solver.
 
     \b
-    Writes into DIR:
-      centres.svg, circle-diagram.svg, V_<P>-<method>.svg (and .pdf)
-      worked.svg     space diagram, velocity and acceleration polygons and
+    Writes into DIR (each figure as .svg, and as .pdf unless --no-pdf):
+      centres, circle-diagram, V_<P>-<method>
+                     the instant centres and each velocity construction
+      worked         space diagram, velocity and acceleration polygons and
                      the results table on one page (when polygons are asked)
+      limits         the limit positions by compass (time ratio, stroke)
+      mechanism      the mechanism alone (when nothing is asked at a position)
+      solution       every figure in one file (a page each in the PDF)
       steps.md       the numbered steps, matching the numbers on the figures
       results.json   every quantity (SI) with its analytic reference and error
+      .tarsim-manifest.json   what this solve wrote (the next one replaces it)
     With several positions ([ask] at = [...]) each figure's name ends in the
     position (worked-t-2.34s.svg); --angle solves one angle instead.
 
@@ -182,7 +187,7 @@ def solve(source, out_dir, angle, pdf):
     one beyond the tolerance its conditioning allows (the files are written all
     the same, so the disagreement can be seen); 1 for bad input.
     """
-    from .solution_files import overall_text, solve_worked
+    from .solution_files import answer_line, solve_worked
     from ..graphics.export import cairo_missing, output_folder
 
     ex = _exercise(source, angle)
@@ -193,15 +198,13 @@ def solve(source, out_dir, angle, pdf):
         written = worked.write(out, pdf=pdf and reason is None)
     sols, overall = worked.positions, worked.overall
     for name, q in overall.quantities.items():
-        click.echo(f"{name:<10} {overall_text(name, q.value, ex.mechanism.units)}  "
-                   f"rel. error {q.rel_error:.1e}  {'ok' if q.passed else 'FAILED'}  ({q.method})")
+        click.echo(answer_line(name, q, ex.mechanism.units, whole=True))
     for sol in sols:
         if len(sols) > 1:
             click.echo(f"at {sol.position.label}:")
         for name, q in sol.quantities.items():
             for qq in (q, *q.alternatives.values()):
-                click.echo(f"{name:<8} rel. error {qq.rel_error:.1e}  "
-                           f"{'ok' if qq.rel_error <= qq.tolerance else 'FAILED'}  ({qq.method})")
+                click.echo(answer_line(name, qq, ex.mechanism.units))
         for note in sol.notes:
             click.echo(f"note: {note}")
     click.echo(f"wrote {len(written)} files to {out}/")

@@ -67,7 +67,8 @@ def format_check(check: PositionCheck) -> str:
     d = m.drive
     k = u.metres
     dof, n, f1, f2 = check.mobility
-    angle = (f"{d.angle:.6g} rad" if u.angle == "rad" else f"{math.degrees(d.angle):.6g}°")
+    angle = _minus(f"{d.angle:.6g} rad" if u.angle == "rad" else
+                   f"{math.degrees(d.angle):.6g}°")
     lines = [f"{m.name}  ({m.source})" if m.source else m.name,
              f"θ{d.link} = {angle}    DOF = {dof}  (Grübler: 3({n} − 1) − 2·{f1} − {f2})"]
     if check.grashof is not None:
@@ -77,8 +78,8 @@ def format_check(check: PositionCheck) -> str:
     lines.append("")
     lines.append(f"{'point':<7}{head:<30}{ref:<30}{'rel. error':>11}{'cond.':>9}")
     for p in check.points:
-        c = f"({p.construction[0] / k:.6f}, {p.construction[1] / k:.6f})"
-        a = f"({p.analytic[0] / k:.6f}, {p.analytic[1] / k:.6f})"
+        c = _minus(f"({p.construction[0] / k:.6f}, {p.construction[1] / k:.6f})")
+        a = _minus(f"({p.analytic[0] / k:.6f}, {p.analytic[1] / k:.6f})")
         lines.append(f"{p.name:<7}{c:<30}{a:<30}{p.rel_error:>11.1e}{p.conditioning:>9.3g}")
     lines.append("")
     lines.append(f"largest relative error {check.worst:.1e} "
@@ -93,3 +94,8 @@ def describe_grashof(g: GrashofResult, units) -> str:
     rel = "=" if g.kind == "change-point" else ("<" if sl < pq else ">")
     return (f"{g.kind}  (s + l = {units.length_text(sl)} {rel} p + q = {units.length_text(pq)};"
             f" shortest is link {g.shortest})")
+
+
+def _minus(text: str) -> str:
+    """Numbers set with a true minus (−), as every other output of tarsim sets them."""
+    return text.replace("-", "−")

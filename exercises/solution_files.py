@@ -38,7 +38,7 @@ from .results_json import results_document, results_json
 from .solution import Overall, Solution, notes_under, solve_overall, solve_positions
 
 __all__ = ["SolutionFigure", "WorkedSolution", "solve_worked", "overall_text", "solve_all",
-           "solve_to_files", "write_solution"]
+           "solve_to_files", "write_solution", "answer_line", "method_words"]
 
 
 @dataclass
@@ -370,7 +370,7 @@ def _steps_markdown(sol: Solution, figures: list[SolutionFigure], *, heading: bo
     ex = sol.exercise
     m = ex.mechanism
     d = m.drive
-    angle = f"{math.degrees(d.angle):.6g}°" if m.units.angle == "deg" else f"{d.angle:.6g} rad"
+    angle = m.units.angle_brief(d.angle)
     sense = "ccw" if d.omega > 0 else "cw"
     lines = [f"# At {sol.position.label}", ""] if heading else []
     alpha = f", α{d.link} = {d.alpha:.6g} rad/s²" + ("" if d.alpha_given else " (not given: 0)")
@@ -426,7 +426,37 @@ def _show(v: dict, units, name: str = "") -> str:
         x, y = v["vector"]
         per = "/s²" if name.startswith("A_") else "/s"
         return f"{_num(v['value'] / s)} {units.length}{per} at {_num(_direction(x, y), '.4g')}°"
-    return f"{_num(v['value'])} rad/s" + ("²" if name.startswith("alpha") else "")
+    w = v["value"]
+    sense = " (ccw)" if w > 0 else " (cw)" if w < 0 else ""
+    return f"{_num(w)} rad/s" + ("²" if name.startswith("alpha") else "") + sense
+
+
+def answer_line(name: str, q: Quantity, units, *, whole: bool = False) -> str:
+    """One answer as ``solve`` prints it: the value with its unit and sense, then its check.
+    ``whole`` marks an answer about the mechanism as a whole (DOF, time ratio, a range).
+
+    >>> from types import SimpleNamespace as Q
+    >>> from tarsim.constructions.model import Units
+    >>> print(answer_line("omega3", Q(value={"value": -2.578}, rel_error=1.3e-16,
+    ...                               tolerance=1e-9, method="velocity polygon"), Units("m")))
+    ω3 = −2.578 rad/s (cw)               check ok 1.3e-16   velocity polygon
+    """
+    if not whole:
+        answer = f"{symbol(name)} = {_show(q.value, units, name)}"
+    elif name.startswith("range_"):        # the text names the span: "65 mm < AB < 135 mm"
+        answer = overall_text(name, q.value, units)
+    else:
+        label = {"dof": "DOF", "grashof": "Grashof class"}.get(name, name.replace("_", " "))
+        answer = f"{label} = {overall_text(name, q.value, units)}"
+    verdict = ("check ok" if q.rel_error <= q.tolerance else
+               f"check FAILED (tolerance {q.tolerance:.1e})")
+    return f"{answer:<36} {verdict} {q.rel_error:.1e}   {method_words(q.method)}"
+
+
+def method_words(method: str) -> str:
+    """A method as the course says it: "radius-rotation" is "radius rotation"."""
+    return method.replace("radius-rotation", "radius rotation").replace(
+        "parallel-line", "parallel lines")
 
 
 def _quiet_pair(xy) -> tuple[float, float]:

@@ -177,7 +177,7 @@ def test_a_mechanism_that_never_assembles_says_why_at_its_stated_angle():
 
 
 @pytest.mark.parametrize("value, text", [(264.57513110645906, "264.575"), (1.5e25, "1.5e25"),
-                                         (-2.5e-7, "-2.5e-7"), (0.0, "0")])
+                                         (-2.5e-7, "−2.5e-7"), (0.0, "0")])
 def test_an_error_gives_six_significant_figures(value, text):
     assert significant(value) == text
 
@@ -218,7 +218,7 @@ def test_a_block_on_its_pivot_leaves_the_slot_without_a_direction():
     ex = tarsim.load(EDGE / "whitworth-block-on-pivot.toml")
     q = solve_overall(ex).quantities["dof"]
     assert q.value == {"value": 1} == q.reference
-    with pytest.raises(TarsimError, match=r"the block A sits on the pivot O4 at θ2 = -90°, so "
+    with pytest.raises(TarsimError, match=r"the block A sits on the pivot O4 at θ2 = −90°, so "
                                           r"the slot of link 4 has no direction"):
         solve_positions(replace(ex.asking(("omega4",)), positions=()))
 
@@ -255,7 +255,7 @@ def test_an_offset_slot_cannot_pass_its_block_on_the_pivot():
     q = solve_overall(ex).quantities["dof"]
     assert q.value == {"value": 1} == q.reference      # not assembled here: Grübler alone
     with pytest.raises(TarsimError, match=r"the block A comes within 6\.12323e-17 in of O4 at "
-                                          r"θ2 = -1\.5708 rad, closer than the slot's offset "
+                                          r"θ2 = −1\.5708 rad, closer than the slot's offset "
                                           r"of 0\.268189 in"):
         solve_positions(replace(ex.asking(("omega4",)), positions=()))   # at [input]
 
