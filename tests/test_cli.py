@@ -284,3 +284,26 @@ def test_installed_tarsim_prints_no_traceback(mech_file, tmp_path):
     assert proc.stdout == ""
     assert proc.stderr == UNREACHABLE
     assert not out.exists()
+
+
+def test_solve_prints_each_answer_with_its_unit_sense_and_check(tmp_path):
+    # peers.md §4 four-bar at θ2 = 60°, ω2 = 10 rad/s ccw: ω3 = −2.57846 (cw), ω4 = 2.91596
+    # (ccw), |V_B| = O4B·|ω4| = 200 mm × 2.91596 = 583.192 mm/s (the analytic solver agrees).
+    result = run("solve", "four-bar", "-o", tmp_path / "out", "--no-pdf")
+    assert result.exit_code == 0, result.output
+    lines = result.output.splitlines()
+    assert any(line.startswith("ω3 = −2.57846 rad/s (cw) ") and "check ok" in line
+               for line in lines)
+    assert any(line.startswith("ω4 = 2.91596 rad/s (ccw) ") for line in lines)
+    by_method = [line for line in lines if line.startswith("V_B = 583.192 mm/s at −172.4°")]
+    assert [line.split("   ")[-1] for line in by_method] == ["radius rotation", "parallel lines",
+                                                              "components"]
+
+
+def test_check_prints_a_true_minus():
+    result = run("check", "crank-shaper", "--angle", "-44.072")
+    assert result.exit_code == 0, result.output
+    assert "θ2 = −44.072°" in result.output
+    table = result.output.split("cond.\n")[1].split("largest")[0].splitlines()
+    assert "(0.000000, −500.000000)" in table[1]                   # O4
+    assert not any("-" in line[:67] for line in table)      # coordinates, before the errors
