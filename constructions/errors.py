@@ -91,6 +91,10 @@ class AssemblyError(TarsimError):
         super().__init__(message)
 
 
+class DeadPoint(AssemblyError):
+    """The input stands at a dead point: the position assembles but ω (or α) is undefined."""
+
+
 class CheckMismatch(TarsimError):
     """A constructed number disagrees with the analytic one beyond its tolerance."""
 

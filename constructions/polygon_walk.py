@@ -20,7 +20,7 @@ from itertools import combinations
 from . import geometry as g
 from .assembly import Assembly
 from .coincident import Node, Walk
-from .errors import AssemblyError, DegenerateInput, TarsimError
+from .errors import DeadPoint, DegenerateInput, TarsimError
 from .model import SlideKind
 from .narration import Number, Phrase, Quantity, Word, narrate, phrase
 from .record import Construction, Kind, Panel, Ref, Role
@@ -446,11 +446,11 @@ class PolygonWalk(Walk):
                            said=phrase("polygon.lines_meet", tip=xl, pole=self.kind.pole,
                                        symbol=self.kind.symbol, point=X))
         except DegenerateInput:
-            raise AssemblyError(dead, joint=x.point, angle_deg=math.degrees(d.angle)) from None
+            raise DeadPoint(dead, joint=x.point, angle_deg=math.degrees(d.angle)) from None
         step = self.c[tip]
         (a1, b1), (a2, b2) = (self.c.output(r).normal for r in (l1, l2))
         if step.output.is_at_infinity or abs(a1 * b2 - b1 * a2) < DEAD_POINT:
-            raise AssemblyError(dead, joint=x.point, angle_deg=math.degrees(d.angle))
+            raise DeadPoint(dead, joint=x.point, angle_deg=math.degrees(d.angle))
         return tip
 
     def draw_divide(self, x: Node, c: int, a: Node, b: Node) -> Ref:

@@ -17,7 +17,7 @@ from pathlib import Path
 
 import click
 
-from ..constructions.errors import CheckMismatch, InputError, TarsimError
+from ..constructions.errors import AssemblyError, CheckMismatch, InputError, TarsimError
 from ..constructions.model import Mechanism
 
 __all__ = ["cli"]
@@ -32,16 +32,32 @@ class _CheckFailed(click.ClickException):
 
 
 def _fails_cleanly(fn):
-    """Map tarsim's errors to ``Error: …``: exit 3 for a failed check, else 1."""
+    """Map tarsim's errors to ``Error: …``: exit 3 for a failed check, else 1. An error
+    of assembly is led by the file:line it concerns, when the command read a file."""
     @functools.wraps(fn)
     def wrapper(*args, **kwargs):
         try:
             return fn(*args, **kwargs)
         except CheckMismatch as e:
             raise _CheckFailed(str(e)) from None
+        except AssemblyError as e:
+            raise click.ClickException(_placed(e, kwargs.get("source"))) from None
         except TarsimError as e:
             raise click.ClickException(str(e)) from None
     return wrapper
+
+
+def _placed(error: AssemblyError, source: str | None) -> str:
+    """``error``'s line, led by the file and line of ``source`` that it concerns."""
+    from .catalog import resolve
+    from .mechanism_file import line_of
+
+    try:
+        path = resolve(source) if source else None
+    except TarsimError:
+        path = None
+    line = line_of(error, path) if path else None
+    return f"{source}:{line}: {error}" if line else str(error)
 
 
 def _mechanism(source: str, angle: float | None) -> Mechanism:

@@ -14,7 +14,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from ..constructions.errors import InputError
+from ..constructions.errors import AssemblyError, DeadPoint, InputError
 from ..constructions.reference.solver import follow_branches
 from ..constructions.model import (LENGTH_UNITS, Arc, Contact, Drive, Link, Mechanism, Profile,
                                  Slide, SlideKind, Units, contact_arc, contact_slide)
@@ -58,6 +58,38 @@ def load_mechanism(path: str | Path) -> Mechanism:
         impossible or incomplete mechanism; the message names file:line.
     """
     return parse_mechanism(read_source(path), str(path))
+
+
+def line_of(error: AssemblyError, path: str | Path) -> int | None:
+    """The line of the file at ``path`` where what ``error`` says is stated, or None.
+
+    A dead point is the input's angle; a missing or unfit branch, the point's key in
+    [assembly] (or that table, or with none the first [[link]] that lists the point);
+    anything else about a link, that link's [[link]] table. Assembly errors arise after
+    the file is read, so it is read again to find the line.
+    """
+    try:
+        text = read_source(path)
+        data = read_toml(text, str(path))
+    except InputError:
+        return None
+    where = SourceMap(text)
+    if isinstance(error, DeadPoint):
+        return where.key("angle", "input")
+    raw = data.get("link")
+    links = [k if isinstance(k, dict) else {} for k in raw] if isinstance(raw, list) else []
+
+    def table_of(wanted) -> int | None:
+        index = next((i for i, k in enumerate(links) if wanted(k)), None)
+        return where.header("link", index) if index is not None else None
+
+    if error.joint and "[assembly]" in str(error):
+        if "assembly" in data:
+            return where.key(error.joint, "assembly")
+        return table_of(lambda k: error.joint in (k.get("points") or ()))
+    if error.link is not None:
+        return table_of(lambda k: k.get("number") == error.link)
+    return None
 
 
 def parse_mechanism(text: str, filename: str = "<string>") -> Mechanism:

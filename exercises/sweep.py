@@ -264,8 +264,9 @@ def sweep_exercise(ex: Exercise, steps: int = 360, *, of: str | None = None,
             progress(1)
     failed = [s for s in samples if not s.values]
     if len(failed) == len(samples):
+        first = turn.refusal(0)               # its link is the one to change
         raise AssemblyError(f"no position of the revolution of link {d.link} assembles; at the "
-                            f"first, {failed[0].reason}", link=d.link)
+                            f"first, {failed[0].reason}", link=first.link, joint=first.joint)
     rotates = False
     if out.kind == "link":
         samples, rotates = _unwrap(samples)

@@ -23,8 +23,13 @@ from tarsim.graphics import export
 
 FOUR_BAR = four_bar_toml(coupler=150, angle=180)
 # At θ2 = 180° A is at (−100, 0): |O4A| = 400 mm > AB + O4B = 150 + 200 mm.
-UNREACHABLE = ("Error: link 3 (AB = 150 mm) cannot reach the circle of B about O4 at "
+UNREACHABLE = ("link 3 (AB = 150 mm) cannot reach the circle of B about O4 at "
                "θ2 = 180°: |O4A| = 400 mm > 150 mm + 200 mm\n")
+
+
+def unreachable(path) -> str:
+    """The one line for FOUR_BAR's link 3, led by the line of its [[link]] table."""
+    return f"Error: {path}:10: {UNREACHABLE}"
 
 MAGIC = {"svg": b"<svg", "pdf": b"%PDF", "png": b"\x89PNG\r\n\x1a\n"}
 
@@ -97,15 +102,15 @@ def test_written_figure_honours_the_umask(tmp_path):
 def test_unreachable_position_names_the_dyad(mech_file, tmp_path):
     path = mech_file()
     out = tmp_path / "fig.svg"
-    assert assert_one_line_error(run("draw", path, "-o", out)) == UNREACHABLE
-    assert assert_one_line_error(run("check", path)) == UNREACHABLE
+    assert assert_one_line_error(run("draw", path, "-o", out)) == unreachable(path)
+    assert assert_one_line_error(run("check", path)) == unreachable(path)
     assert not out.exists()
 
 
 def test_unreachable_position_via_the_angle_option(mech_file):
     path = mech_file(("angle = 180", "angle = 60"))
     assert run("check", path).exit_code == 0
-    assert assert_one_line_error(run("check", path, "--angle", "180")) == UNREACHABLE
+    assert assert_one_line_error(run("check", path, "--angle", "180")) == unreachable(path)
 
 
 @pytest.mark.parametrize("edit, message", [
@@ -282,7 +287,7 @@ def test_installed_tarsim_prints_no_traceback(mech_file, tmp_path):
                           capture_output=True, text=True, encoding="utf-8", timeout=120)
     assert proc.returncode == 1
     assert proc.stdout == ""
-    assert proc.stderr == UNREACHABLE
+    assert proc.stderr == unreachable(mech_file())
     assert not out.exists()
 
 
@@ -307,3 +312,21 @@ def test_check_prints_a_true_minus():
     table = result.output.split("cond.\n")[1].split("largest")[0].splitlines()
     assert "(0.000000, −500.000000)" in table[1]                   # O4
     assert not any("-" in line[:67] for line in table)      # coordinates, before the errors
+
+
+@pytest.mark.parametrize("edit, line, message", [
+    # AB = 150 mm cannot reach: the [[link]] table of link 3 (line 10).
+    (dict(coupler=150, angle=180), 10, "link 3 (AB = 150 mm) cannot reach"),
+    # No [assembly]: the first [[link]] that lists B, link 3's (line 10).
+    (dict(branch=None), 10, "point B has two positions"),
+    # Crank, coupler and rocker in line (100 + 200 + 200 = 300 + 200): the input's angle.
+    (dict(coupler=200, angle=180), 23, "dead point at input angle 180°"),
+])
+def test_an_assembly_error_names_its_file_and_line(tmp_path, edit, line, message):
+    path = tmp_path / "m.toml"
+    path.write_text(four_bar_toml(**edit).replace("[input]\n", "[input]\nomega = 1\n"),
+                    encoding="utf-8")
+    assert path.read_text().splitlines()[line - 1].startswith(("[[link]]", "angle ="))
+    result = run("solve", path, "-o", tmp_path / "out", "--no-pdf")
+    text = assert_one_line_error(result)
+    assert text.startswith(f"Error: {path}:{line}: {message}")

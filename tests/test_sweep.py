@@ -287,7 +287,8 @@ def test_sweep_that_never_assembles_is_one_line(tmp_path):
     out = tmp_path / "never"
     result = run("sweep", path, "-o", out, "--steps", 8)
     assert result.exit_code == 1
-    assert result.stderr.startswith("Error: no position of the revolution")
+    # Led by the [[link]] table of the link that cannot reach (link 3, line 10).
+    assert result.stderr.startswith(f"Error: {path}:10: no position of the revolution")
     assert result.stderr.count("\n") == 1 and "Traceback" not in result.stderr
     assert not out.exists()
 

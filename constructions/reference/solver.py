@@ -30,7 +30,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from ..errors import AssemblyError, InputError
+from ..errors import AssemblyError, DeadPoint, InputError
 from ..model import Arc, Mechanism, Slide, SlideKind
 
 __all__ = [
@@ -59,7 +59,7 @@ _NEWTON_STEPS = 12
 _S = np.array([[0.0, -1.0], [1.0, 0.0]])  # rotation by +90°: d/dφ R(φ) = S R(φ)
 
 
-class SingularPosition(AssemblyError):
+class SingularPosition(DeadPoint):
     """The position is a dead point: the Jacobian is singular, so ω and α are undefined."""
 
 
