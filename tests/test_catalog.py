@@ -10,6 +10,8 @@ so the printed rounding is the only error that matters.
 """
 
 import math
+import re
+import tomllib
 
 import pytest
 
@@ -292,3 +294,13 @@ def test_coriolis_follows_the_notes_rule(exercise_id, lever, _solved):
     assert (cx, cy) == pytest.approx((2 * abs(w) * turned[0], 2 * abs(w) * turned[1]),
                                      abs=1e-12 * scale)
     assert "alpha4" in q and "A_A4" in q
+
+
+def test_every_source_speaks_to_a_student():
+    # A source names the course's text, chapter or section and example, never a digest's
+    # file, line numbers or a seed number that only the developers know.
+    for name, path in bundled().items():
+        source = tomllib.loads(path.read_text(encoding="utf-8"))["source"]
+        assert re.match(r"(course project|a four-bar|exam-prep text, ch\. \d|textbook ch\. \d|"
+                        r"lecture notes, part \d)", source), (name, source)
+        assert not re.search(r"\bseed\b|\bl\.\d|digest|\.md\b|\b00\d\b", source), (name, source)

@@ -303,6 +303,7 @@ def test_list_says_what_each_example_asks():
         if not line.startswith(" "):
             break
         block.append(line.strip())
-    assert block[0].startswith("from course project 003")
+    assert block[0].startswith("from course project, kinematic and dynamic analysis of a "
+                               "crank-shaper, §2")
     asks = next(line for line in block if line.startswith("asks: "))
     assert "ω4, α4, V_B, A_B, Aᶜ_A, Aᶜ_B at θ2 = 90°, t = 2.34 s" in asks
