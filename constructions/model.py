@@ -83,6 +83,11 @@ class Units:
         """Format a length given in metres in the file's unit ("250 mm")."""
         return f"{fixed(metres / self.metres, digits)} {self.length}"
 
+    def length_drawn(self, metres: float) -> str:
+        """A length (m) as a figure sets it, to drafting precision: four significant
+        figures, in the file's unit ("679.1 mm")."""
+        return f"{significant(metres / self.metres, 4)} {self.length}"
+
     def length_brief(self, metres: float) -> str:
         """A length (m) as an error message gives it: six significant figures, in the
         file's unit ("264.575 mm")."""
@@ -90,7 +95,7 @@ class Units:
 
     def angle_brief(self, rad: float) -> str:
         """An angle (rad) as an error message gives it, in the file's angle unit, to six
-        significant figures: "-100.335°", "1.0472 rad"."""
+        significant figures: "−100.335°", "1.0472 rad"."""
         if self.angle == "rad":
             return f"{significant(rad)} rad"
         return f"{significant(math.degrees(rad))}°"

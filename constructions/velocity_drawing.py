@@ -17,7 +17,7 @@ from .narration import Number, Word, phrase
 from .record import Construction, Kind, Ref, Role, slice
 
 __all__ = ["VelocityResult", "velocity_result", "draw_input_velocity", "velocity_value",
-           "vector_label", "answer"]
+           "vector_label", "answer", "method_words"]
 
 
 def vector_label(point: str) -> str:
@@ -103,11 +103,21 @@ def draw_input_velocity(asm: Assembly, scale: float) -> tuple[str, Ref]:
 
 
 
+def method_words(method: str) -> str:
+    """A method as the course says it: "radius-rotation" is "radius rotation".
+
+    >>> method_words("parallel-line"), method_words("velocity polygon")
+    ('parallel lines', 'velocity polygon')
+    """
+    return {"radius-rotation": "radius rotation", "parallel-line": "parallel lines"}.get(
+        method, method)
+
+
 def answer(work, ask, result: VelocityResult) -> Answer:
     """A velocity found by a method of the space diagram, as the registry takes it: drawn on
     its own figure, ``V_<point>-<method>``, at the position's velocity scale."""
     c = work.assembly
-    said = f"V_{ask.point} by {result.method}"
+    said = f"V_{ask.point} by {method_words(result.method)}"
     spec = FigureSpec(f"V_{ask.point}-{result.method}", said, said, velocity_scale=result.scale)
     return Answer(ask, vector_value(*result.value(c)), c[result.vector].conditioning,
                   result.method, refs=result.answer, figures=(spec,))

@@ -23,6 +23,7 @@ from ..constructions.checks import FigureSpec, Quantity
 from ..constructions.limit_positions import drawn_limits
 from ..constructions.narration import narrate
 from ..constructions.record import Kind, Panel, Slice, slice
+from ..constructions.velocity_drawing import method_words
 from ..constructions.velocity_polygon import WORKED, drawn_velocity_polygon
 from ..graphics.circle_diagram import draw_circle_diagram
 from ..graphics.export import RenderError, cairo_missing, pdf_pages, svg_to, write_folder
@@ -39,6 +40,10 @@ from .solution import Overall, Solution, notes_under, solve_overall, solve_posit
 
 __all__ = ["SolutionFigure", "WorkedSolution", "solve_worked", "overall_text", "solve_all",
            "solve_to_files", "write_solution", "answer_line", "method_words"]
+
+
+DRAFTING = 4
+"""Significant figures of a number set on a figure: what a drawing can be read to."""
 
 
 @dataclass
@@ -273,8 +278,9 @@ def _worked_page(sol: Solution, answers) -> _Sketch:
     table = [("quantity", "method", "construction", "analytic", "relative error")]
     for qname, q in sol.quantities.items():
         for qq in (q, *q.alternatives.values()):
-            table.append((symbol(qname), qq.method, _show(qq.value, m.units, qname),
-                          _show(qq.reference, m.units, qname), f"{qq.rel_error:.1e}"))
+            table.append((symbol(qname), method_words(qq.method),
+                          _show(qq.value, m.units, qname, DRAFTING),
+                          _show(qq.reference, m.units, qname, DRAFTING), f"{qq.rel_error:.1e}"))
 
     def draw() -> Figure:
         space = draw_scene(Slice(c, ()), title=f"{m.name}: space diagram{where}",
@@ -300,7 +306,7 @@ def _overall_figures(ex: Exercise, overall: Overall) -> list[_Sketch]:
     lp = drawn_limits(work)
     notes = [_time_ratio_words(m, lp)]
     if lp.stroke is not None:
-        notes.append(f"Stroke of {lp.point}: {m.units.length_text(lp.stroke)}.")
+        notes.append(f"Stroke of {lp.point}: {m.units.length_drawn(lp.stroke)}.")
     answers = [a for a in overall.answers if a.figures]
     shown = _shown(work.assembly, answers, work.assembly.position_steps)
     spec = answers[0].figures[0]
@@ -394,7 +400,7 @@ def _steps_markdown(sol: Solution, figures: list[SolutionFigure], *, heading: bo
         for label, qq in rows:
             lines.append(f"| {label} | {_show(qq.value, m.units, name)} | "
                          f"{_show(qq.reference, m.units, name)} | {qq.rel_error:.2g} | "
-                         f"{qq.method} |")
+                         f"{method_words(qq.method)} |")
     return "\n".join(lines) + "\n"
 
 
@@ -407,16 +413,18 @@ def _direction(x: float, y: float) -> float:
     return 0.0 if abs(deg) < 1e-9 else deg
 
 
-def _show(v: dict, units, name: str = "") -> str:
+def _show(v: dict, units, name: str = "", figures: int = 6) -> str:
     """A quantity in the file's units, for the results tables; ``name`` tells its kind.
 
-    Numbers are set with a true minus, and a coordinate that is rounding noise beside
-    the other (a centre at (−3e−14, −500)) is set as 0.
+    Numbers are set to ``figures`` significant figures (a figure's table takes 4, drafting
+    precision; steps.md 6) with a true minus, and a coordinate that is rounding noise
+    beside the other (a centre at (−3e−14, −500)) is set as 0.
     """
     s = units.metres
+    spec = f".{figures}g"
     if "point" in v:
         x, y = _quiet_pair(v["point"])
-        return f"({_num(x / s)}, {_num(y / s)}) {units.length}"
+        return f"({_num(x / s, spec)}, {_num(y / s, spec)}) {units.length}"
     if "undefined" in v:
         return "any point (no relative motion)"
     if v.get("at_infinity"):
@@ -425,10 +433,11 @@ def _show(v: dict, units, name: str = "") -> str:
     if "vector" in v:
         x, y = v["vector"]
         per = "/s²" if name.startswith("A_") else "/s"
-        return f"{_num(v['value'] / s)} {units.length}{per} at {_num(_direction(x, y), '.4g')}°"
+        return (f"{_num(v['value'] / s, spec)} {units.length}{per} at "
+                f"{_num(_direction(x, y), '.4g')}°")
     w = v["value"]
     sense = " (ccw)" if w > 0 else " (cw)" if w < 0 else ""
-    return f"{_num(w)} rad/s" + ("²" if name.startswith("alpha") else "") + sense
+    return f"{_num(w, spec)} rad/s" + ("²" if name.startswith("alpha") else "") + sense
 
 
 def answer_line(name: str, q: Quantity, units, *, whole: bool = False) -> str:
@@ -452,11 +461,6 @@ def answer_line(name: str, q: Quantity, units, *, whole: bool = False) -> str:
                f"check FAILED (tolerance {q.tolerance:.1e})")
     return f"{answer:<36} {verdict} {q.rel_error:.1e}   {method_words(q.method)}"
 
-
-def method_words(method: str) -> str:
-    """A method as the course says it: "radius-rotation" is "radius rotation"."""
-    return method.replace("radius-rotation", "radius rotation").replace(
-        "parallel-line", "parallel lines")
 
 
 def _quiet_pair(xy) -> tuple[float, float]:

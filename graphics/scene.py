@@ -422,7 +422,7 @@ class _Scene(_Diagram):
                         key=lambda c: (crosses(*c), c[1] != out_n, c[0]))
         at = draw_dimension(self.fig, a, b, n, offset)
         self.placer.block_path(line_at(offset, n), 1.0)
-        text = f"{typeset_span(step.label)} {self.m.units.length_text(out.length)}".strip()
+        text = f"{typeset_span(step.label)} {self.m.units.length_drawn(out.length)}".strip()
         self.label(text, at, [step], prefer=math.atan2(-n[1], n[0]), gap=1.0, size=3.4)
         self.placer.page = page
 

@@ -175,9 +175,10 @@ def test_asking_more_draws_more():
 
 def test_steps_md_numbers_are_the_figures_circled_numbers():
     files = solve(find='["V_B"]', methods='["radius-rotation", "parallel-line"]')
-    for method in ("radius-rotation", "parallel-line"):
+    for method, words in (("radius-rotation", "radius rotation"),
+                          ("parallel-line", "parallel lines")):
         name = f"V_B-{method}.svg"
-        numbers = steps_of(files["steps.md"], f"V_B by {method}", name)
+        numbers = steps_of(files["steps.md"], f"V_B by {words}", name)
         assert numbers == list(range(1, len(numbers) + 1)) and len(numbers) > 5
         # Every step is circled on the figure exactly once, and nothing else is.
         assert circled_numbers(files[name]) == numbers, method

@@ -156,7 +156,7 @@ def solve_v_b_by_radius_rotation(tmp_path):
 def test_steps_md_numbers_match_the_figure(tmp_path):
     out = solve_v_b_by_radius_rotation(tmp_path)
     steps = (out / "steps.md").read_text(encoding="utf-8")
-    section = steps.split("## V_B by radius-rotation", 1)[1].split("## ", 1)[0]
+    section = steps.split("## V_B by radius rotation", 1)[1].split("## ", 1)[0]
     numbers = [int(n) for n in re.findall(r"^(\d+)\. ", section, re.M)]
     assert numbers == list(range(1, len(numbers) + 1)) and numbers
     svg = (out / "V_B-radius-rotation.svg").read_text(encoding="utf-8")
