@@ -76,6 +76,7 @@ class _Method:
     # ----- the run --------------------------------------------------------------
     def run(self, point: str, link: int | None) -> VelocityResult:
         self.point = point
+        self.turned: list[Ref] = []       # the velocities the parallel lines turn through 90°
         d = self.m.drive.link
         known, v_known = draw_input_velocity(self.asm, self.scale)
         j = self.carrier(point, link)
@@ -91,7 +92,8 @@ class _Method:
         except DegenerateInput as e:
             raise TarsimError(f"the {self.method} construction of V_{point} breaks down at this "
                               f"position: {e}") from None
-        return velocity_result(self.asm, self.method, point, j, v, self.scale, carried)
+        return velocity_result(self.asm, self.method, point, j, v, self.scale,
+                               (*carried, *self.turned))
 
     def carrier(self, point: str, link: int | None) -> int:
         """The link to take ``point`` on: the input's, else one whose transfer centre is a pin."""
@@ -234,6 +236,8 @@ class _Method:
             return v_t
         turned = self.draw("turn:t", "lay_off", t, j1, length=self.c.output(v_t).length,
                            phrase=phrase("velocity.turn_known", centre=lab))
+        self.turned.append(self.draw("turned:t", "join", t, turned,
+                                     phrase=phrase("velocity.turned_arrow")))
         side = self.draw("td", "line_through", t, target,
                          phrase=phrase("velocity.join", a=self.name_of(t), b=point))
         par = self.draw("par", "parallel_through", turned, side,
@@ -242,6 +246,8 @@ class _Method:
                            phrase=phrase("velocity.radius", point=point, centre=lab))
         cut = self.draw("cut", "intersect_lines", par, radius,
                         phrase=phrase("velocity.parallel_cuts_radius", point=point))
+        self.turned.append(self.draw("turned", "join", target, cut,
+                                     phrase=phrase("velocity.turned_found", point=point)))
         # The known velocity was turned onto its radius by ±90°; turn back the other way.
         (tx, ty), (cx, cy) = self.c.output(t).xy, self.c.output(j1).xy
         vx, vy = self.c.output(v_t).vector

@@ -131,6 +131,9 @@ PHRASES: dict[str, str] = {
                             "perpendicular to {centre}{point}.",
     "velocity.turn_known": "Turn the known velocity through 90° so that it lies along its radius "
                            "towards {centre}.",
+    "velocity.turned_arrow": "Draw it as an arrow: the known velocity turned through 90°.",
+    "velocity.turned_found": "Draw that piece as an arrow from {point}: V_{point} turned "
+                             "through 90°.",
     "velocity.join": "Join {a} to {b}.",
     "velocity.parallel_through_turned": "Through the tip of the turned velocity draw the "
                                         "parallel to that line.",
