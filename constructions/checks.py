@@ -85,6 +85,8 @@ class FigureSpec:
     kind: str = "scene"
     velocity_scale: float | None = None
     notes: bool = False
+    velocity_stated: float | None = None
+    """The velocity scale the exercise states, per paper cm, worded as it words it."""
 
 
 @dataclass(frozen=True)

@@ -18,8 +18,8 @@ from dataclasses import dataclass
 from .assembly import Assembly
 from .errors import TarsimError
 
-__all__ = ["nice", "Scales", "choose_scales", "space_per_cm", "velocity_per_cm", "drawing_extent",
-           "face_ends", "ROOM", "FACE_REACH"]
+__all__ = ["nice", "Scales", "Stated", "choose_scales", "space_per_cm", "velocity_per_cm",
+           "drawing_extent", "face_ends", "ROOM", "FACE_REACH"]
 
 ROOM = (150.0, 130.0)
 """The largest drawing area of the space diagram, paper mm wide × high."""
@@ -49,6 +49,42 @@ def nice(raw: float, *, up: bool = True) -> float:
     else:
         value = max(v for v in ladder if v <= raw * (1 + 1e-9))
     return float(f"{value:.12g}")
+
+
+class Stated(float):
+    """A scale as the exercise states it: its value (file units per paper cm), with the
+    statement itself, which every figure sets as given ("3 cm = 18 cm/s", not the "1 cm =
+    60 mm/s" it comes to). Its sides are ``paper`` (as written, "3 cm"; ``paper_cm`` in
+    centimetres) and ``amount`` in ``unit``.
+
+    >>> s = Stated(60.0, paper="3 cm", paper_cm=3.0, amount=18.0, unit="cm/s")
+    >>> s * 2, s.words
+    (120.0, '3 cm = 18 cm/s')
+    """
+
+    paper: str
+    paper_cm: float
+    amount: float
+    unit: str
+
+    def __new__(cls, per_cm: float, *, paper: str, paper_cm: float, amount: float,
+                unit: str) -> Stated:
+        """A float, the scale's value, that keeps the statement it came from."""
+        scale = super().__new__(cls, per_cm)
+        scale.paper, scale.paper_cm, scale.amount, scale.unit = paper, paper_cm, amount, unit
+        return scale
+
+    def __reduce__(self):
+        return _stated, (float(self), self.paper, self.paper_cm, self.amount, self.unit)
+
+    @property
+    def words(self) -> str:
+        """The statement as the exercise words it: "3 cm = 18 cm/s"."""
+        return f"{self.paper} = {self.amount:g} {self.unit}"
+
+
+def _stated(per_cm: float, paper: str, paper_cm: float, amount: float, unit: str) -> Stated:
+    return Stated(per_cm, paper=paper, paper_cm=paper_cm, amount=amount, unit=unit)
 
 
 @dataclass(frozen=True)

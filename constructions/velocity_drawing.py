@@ -118,6 +118,7 @@ def answer(work, ask, result: VelocityResult) -> Answer:
     its own figure, ``V_<point>-<method>``, at the position's velocity scale."""
     c = work.assembly
     said = f"V_{ask.point} by {method_words(result.method)}"
-    spec = FigureSpec(f"V_{ask.point}-{result.method}", said, said, velocity_scale=result.scale)
+    spec = FigureSpec(f"V_{ask.point}-{result.method}", said, said, velocity_scale=result.scale,
+                      velocity_stated=work.scales.velocity)
     return Answer(ask, vector_value(*result.value(c)), c[result.vector].conditioning,
                   result.method, refs=result.answer, figures=(spec,))

@@ -38,6 +38,7 @@ from ..constructions import registry
 from ..constructions.errors import InputError
 from ..constructions.model import LENGTH_UNITS, Drive, Mechanism
 from ..constructions.narration import significant
+from ..constructions.scales import Stated
 
 from .mechanism_file import (RANGE, SourceMap, _float, _Reader, in_range, radians_in_turn,
                              read_source, read_toml)
@@ -284,7 +285,10 @@ def _read_scales(given, mech: Mechanism, fail) -> dict[str, float]:
         kind = _SCALE_KINDS[re.sub(r"[\s^]", "", per or "").replace("²", "2")]
         if kind in out:
             raise fail(f"scale states the {kind} scale twice", "scale")
-        out[kind] = amount * _SCALE_UNITS[unit] / mech.units.metres / paper
+        per_cm = amount * _SCALE_UNITS[unit] / mech.units.metres / paper
+        tail = {"space": "", "velocity": "/s", "acceleration": "/s²"}[kind]
+        out[kind] = Stated(per_cm, paper=f"{float(m.group(1)):g} {m.group(2)}", paper_cm=paper,
+                           amount=amount, unit=unit + tail)
         _fits(kind, text, out[kind], mech, fail)
     return out
 

@@ -242,7 +242,7 @@ def _figure(sol: Solution, spec: FigureSpec, answers) -> _Sketch:
     notes = notes_under(sol, Panel.SPACE) if spec.notes else []
     return _Sketch(spec.stem, spec.heading, lambda: draw_scene(
         shown, title=f"{name}: {spec.caption}", notes=notes, velocity_scale=spec.velocity_scale,
-        per_cm=work.scales.space), shown)
+        per_cm=work.scales.space, velocity_stated=spec.velocity_stated), shown)
 
 
 def _shown(c, answers, base, panel: Panel | None = None) -> Slice:

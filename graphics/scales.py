@@ -10,7 +10,7 @@ import re
 from collections.abc import Sequence
 
 from ..constructions.narration import significant
-from ..constructions.scales import nice
+from ..constructions.scales import Stated, nice
 
 from .figure import Figure, Path, Text, text_width
 
@@ -67,14 +67,29 @@ def paper_ratio(per_cm: float) -> tuple[int, float]:
 
 
 def scale_text(per_cm: float, unit: str) -> str:
-    """Return the statement printed on the figure, e.g. "1 cm = 50 mm" or "7 cm = 500 mm"."""
+    """Return the statement printed on the figure, e.g. "1 cm = 50 mm" or "7 cm = 500 mm";
+    a scale the exercise states (:class:`~tarsim.constructions.scales.Stated`) as it states
+    it ("3 cm = 18 cm/s")."""
+    if isinstance(per_cm, Stated):
+        return per_cm.words
     k, amount = paper_ratio(per_cm)
     return f"{k} cm = {number_text(amount)} {unit}"
 
 
+def _bar(per_cm: float, unit: str) -> tuple[int, float, str]:
+    """The bar of a scale: (centimetres it numbers at its ends, or 1, amount a centimetre
+    stands for, unit), in the stated unit when the scale is stated."""
+    if isinstance(per_cm, Stated):
+        k = round(per_cm.paper_cm)
+        whole = abs(per_cm.paper_cm - k) <= 1e-9 and 1 <= k <= 10
+        return (k if whole else 1), per_cm.amount / per_cm.paper_cm, per_cm.unit
+    k, _ = paper_ratio(per_cm)
+    return k, per_cm, unit
+
+
 def bar_room(per_cm: float, unit: str) -> float:
     """The width (paper mm) :func:`draw_scale_bar` takes with its unit after the last number."""
-    k, _ = paper_ratio(per_cm)
+    k, _, unit = _bar(per_cm, unit)
     return 10.0 * (k if k > 1 else 4) + text_width(f" {unit}", 2.6) + 6.0
 
 
@@ -87,7 +102,7 @@ def draw_scale_bar(fig: Figure, at: tuple[float, float], per_cm: float, unit: st
     """
     x0, y0 = at
     h = 1.4
-    k, _ = paper_ratio(per_cm)
+    k, per_cm, unit = _bar(per_cm, unit)
     cm, ticks = (k, (0, k)) if k > 1 else (cm, range(0, cm + 1, 2 if cm > 3 else 1))
     for i in range(cm):
         style = "scale_fill" if i % 2 == 0 else "scale"
@@ -112,19 +127,24 @@ def _heading(text: str) -> Text:
 
 def draw_caption(fig: Figure, heading: str, lines: Sequence[str], *, per_cm: float, unit: str,
                  legend: Sequence[tuple[str, str]] = (), notes: Sequence[str] = (),
-                 margin: float = 8.0, scale_name: str = "Scale") -> None:
+                 margin: float = 8.0, scale_name: str = "Scale",
+                 second: tuple[str, float, str] | None = None) -> None:
     """Move the drawing in from a ``margin`` and set the caption under it; size the page.
 
     Left: the bold ``heading`` and ``lines``. Right: the scale statement, which
-    ``scale_name`` opens ("Velocity scale 1 cm = 5 mm/s"), and its bar. Under
-    both: a ``legend`` of (style, name) line samples, then ``notes``.
+    ``scale_name`` opens ("Velocity scale 1 cm = 5 mm/s"), and its bar; then, if given,
+    a ``second`` scale (name, per cm, unit) and its bar, as for the velocities drawn on
+    a space diagram. Under both: a ``legend`` of (style, name) line samples, then
+    ``notes``.
     """
     x0, y0, x1, y1 = fig.bounds()
     fig.shift(margin - x0, margin - y0)
     head = _heading(heading)
-    scale = f"{scale_name} {scale_text(per_cm, unit)}"
+    scales = [(scale_name, per_cm, unit)] + ([second] if second else [])
+    texts = [f"{name} {scale_text(per, u)}" for name, per, u in scales]
     left = max([head.width] + [text_width(t, 3.2) for t in lines])
-    right = max(text_width(scale, 3.2), bar_room(per_cm, unit))
+    right = max([text_width(t, 3.2) for t in texts]
+                + [bar_room(per, u) for _, per, u in scales])
     legend_w = sum(18.0 + text_width(name, 2.8) for _, name in legend)
     notes_w = max([text_width(n, 3.0) for n in notes], default=0.0)
     width = max(x1 - x0, left + right + 8.0, legend_w, notes_w) + 2 * margin
@@ -136,9 +156,10 @@ def draw_caption(fig: Figure, heading: str, lines: Sequence[str], *, per_cm: flo
         y += 5.2
         fig.add(Text((margin, y), text, 3.2, "start", italic=False))
     bar_x = width - margin - right
-    fig.add(Text((bar_x, top + 3.0), scale, 3.2, "start", italic=False))
-    draw_scale_bar(fig, (bar_x, top + 8.0), per_cm, unit)
-    y = max(y + 5.2, top + 15.0)
+    for k, (text, (_, per, u)) in enumerate(zip(texts, scales)):
+        fig.add(Text((bar_x, top + 3.0 + 13.0 * k), text, 3.2, "start", italic=False))
+        draw_scale_bar(fig, (bar_x, top + 8.0 + 13.0 * k), per, u)
+    y = max(y + 5.2, top + 15.0 + 13.0 * (len(scales) - 1))
     if legend:
         x = margin
         for style, name in legend:

@@ -46,7 +46,7 @@ from ..constructions.record import Kind, Panel, Ref, Role, Slice, Step
 from .diagram import _Diagram, input_caption
 from .figure import Circle, Figure, Path, arc_points, clip_line, ray_to_edge, span_line
 from .labels import subscript, typeset, typeset_span
-from .scales import draw_caption, scale_text
+from .scales import draw_caption
 from .symbols import (PIN_RADIUS, draw_arrow, draw_arrowhead, draw_dimension, draw_turning_arrow,
                       unit)
 
@@ -98,7 +98,7 @@ def line_style(step: Step) -> str:
 
 def draw_scene(shown: Slice, *, title: str | None = None,
                velocity_scale: float | None = None, notes: Sequence[str] = (),
-               per_cm: float | None = None) -> Figure:
+               per_cm: float | None = None, velocity_stated: float | None = None) -> Figure:
     """Draw the kinematic diagram of a position's record with the steps of a slice of it.
 
     Parameters
@@ -117,6 +117,10 @@ def draw_scene(shown: Slice, *, title: str | None = None,
     per_cm
         The space scale (file units per paper cm), as the solution chose it; by
         default the kinematic diagram's own.
+    velocity_stated
+        The velocity scale the exercise states (file units/s per paper cm, a
+        :class:`~tarsim.constructions.scales.Stated`): the caption words it as the
+        exercise does when the vectors are drawn at it.
 
     Raises
     ------
@@ -125,7 +129,7 @@ def draw_scene(shown: Slice, *, title: str | None = None,
     """
     if not isinstance(shown.construction, Assembly):
         raise TarsimError("a scene is a slice of a mechanism's record (an assembly)")
-    return _Scene(shown, title, velocity_scale, notes, per_cm).draw()
+    return _Scene(shown, title, velocity_scale, notes, per_cm, velocity_stated).draw()
 
 
 # ----- what a step draws --------------------------------------------------------------------
@@ -139,8 +143,10 @@ class _Scene(_Diagram):
     """The kinematic diagram, then the scene's layers: working lines under it, marks over it."""
 
     def __init__(self, shown: Slice, title: str | None, velocity_scale: float | None,
-                 notes: Sequence[str], per_cm: float | None):
+                 notes: Sequence[str], per_cm: float | None,
+                 velocity_stated: float | None = None):
         super().__init__(shown.construction, per_cm)
+        self.velocity_stated = velocity_stated
         self.steps = shown.steps(Panel.SPACE)
         steps = self.steps
         self.title = title
@@ -555,16 +561,20 @@ class _Scene(_Diagram):
     def caption(self) -> None:
         """The diagram's caption, with the velocity scale, a legend of lines and the notes."""
         u = self.m.units
-        lines = [input_caption(self.m)]
+        lines, second = [input_caption(self.m)], None
         if self.velocity_scale:
             # A vector is velocity_scale × view scale paper mm per m/s: state 1 cm in unit/s.
             per_cm = 10.0 / (self.velocity_scale * self.view.scale) / u.metres
-            lines.append(f"Velocity scale {scale_text(per_cm, u.length + '/s')}")
+            stated = self.velocity_stated
+            if stated is not None and abs(per_cm - stated) <= 1e-9 * stated:
+                per_cm = stated           # drawn at the stated scale: worded as stated
+            second = ("Velocity scale", per_cm, u.length + "/s")
         legend = [LINE_KINDS[k] for k in LINE_KINDS if k in self.kinds]
         if legend == [LINE_KINDS[Kind.LINE]]:
             legend = []           # plain construction lines need no key
         draw_caption(self.fig, self.title or self.m.name, lines, per_cm=self.per_cm,
-                     unit=u.length, legend=legend, notes=self.notes, margin=_MARGIN)
+                     unit=u.length, legend=legend, notes=self.notes, margin=_MARGIN,
+                     second=second)
 
 
 # ----- small helpers ---------------------------------------------------------------------------
