@@ -318,6 +318,11 @@ class _Diagram:
             # A block standing on a face has its guide above the face only.
             u, lift = self.block_lift(s)
             lo, hi = (-half, half) if lift == 0.0 else (1.0 - _BLOCK[0] / 2, half + _BLOCK[0])
+            if lift == 0.0:
+                # The guide runs past every marked place of the block on it (a limit point).
+                along = [(q[0] - p[0]) * u[0] + (q[1] - p[1]) * u[1] for q in self.marks()
+                         if abs((q[0] - p[0]) * n[0] + (q[1] - p[1]) * n[1]) <= 0.5]
+                lo, hi = min([lo] + [t - 8.0 for t in along]), max([hi] + [t + 8.0 for t in along])
             a = (p[0] + off * side[0] + lo * u[0], p[1] + off * side[1] + lo * u[1])
             b = (p[0] + off * side[0] + hi * u[0], p[1] + off * side[1] + hi * u[1])
             band = draw_guide(self.fig, a, b, side)
@@ -349,6 +354,10 @@ class _Diagram:
             self.fig.add(Path(tuple(rim), "link"))
             shape = MultiPoint(rim).convex_hull
         self.placer.block(shape.buffer(0.5))
+
+    def marks(self) -> list[tuple[float, float]]:
+        """Paper points a figure marks beyond the mechanism's own (none here; a scene's)."""
+        return []
 
     def travel(self, point: str, d: tuple[float, float]) -> float:
         """A guide long enough to look like a guide: the drawing's width along it."""

@@ -339,6 +339,11 @@ class _Scene(_Diagram):
             for tail, tip in arrows:
                 self.placer.block_path([tail, tip], 1.6)
 
+    def marks(self) -> list[tuple[float, float]]:
+        """The points the scene's steps mark, on paper: a guide runs past those on it."""
+        return [self.view(s.output.xy) for s in self.steps if isinstance(s.output, g.Point)
+                and not s.output.is_at_infinity and s.draws]
+
     def clipped(self, pts: list[tuple[float, float]]) -> list[list[tuple[float, float]]]:
         """The parts of a paper polyline inside the frame."""
         cut = LineString(pts).intersection(self.clip_box)
@@ -376,19 +381,24 @@ class _Scene(_Diagram):
         """Readings: a dimension line with its length, an angle's arc with its degrees.
 
         A dimension stands off its points on the side away from the mechanism, as
-        near as it can be without crossing what is drawn. An angle's arc is thin and
-        runs through the points it was read at (the crank's limit places: the arcs
-        lie on the crank circle, as the notes mark them); its head shows the sense
-        it was read in. Dimensions go first, so the degrees keep clear of them.
+        near as it can be without crossing what is drawn. An angle's arc is thin, about
+        the vertex, at the reach of the points it was read at; two angles read at one
+        vertex (the slow and quick turns of a crank between its limit places) stand
+        outside that circle at two radii, so each arc is told by its place, its degrees
+        beside it. Its head shows the sense it was read in. Dimensions go first,
+        so the degrees keep clear of them.
         """
         measures = [s for s in self.steps if isinstance(s.output, (Dimension, Angle))]
+        angles = [s for s in measures if isinstance(s.output, Angle)]
         for step in sorted(measures, key=lambda s: isinstance(s.output, Angle)):
             out = step.output
             if isinstance(out, Dimension):
                 self.draw_dimension(step, out)
                 continue
             centre = self.view(out.vertex.xy)
-            radius = out.reach * self.view.scale
+            twins = [s for s in angles if s.output.vertex.xy == out.vertex.xy]
+            ring = 1.0 if len(twins) < 2 else 1.24 - 0.12 * twins.index(step)
+            radius = out.reach * self.view.scale * ring
             at = draw_turning_arrow(self.fig, centre, radius, out.start, out.sweep, "dimension")
             self.placer.block_path(arc_points(centre, radius, out.start, out.sweep), 0.4)
             text = f"{out.degrees:.2f}° {step.label}".strip()
