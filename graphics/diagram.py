@@ -205,7 +205,8 @@ class _Diagram:
         u = self.m.units
         params = input_caption(self.m)
         scale = f"Scale {scale_text(self.per_cm, u.length)}"
-        left = max(text_width(self.m.name, 3.6), text_width(params, 3.2))
+        head = Text((_MARGIN, 0.0), self.m.name, 3.6, "start", italic=False, weight="bold")
+        left = max(head.width, text_width(params, 3.2))      # a bold heading is the wider
         right = max(text_width(scale, 3.2), bar_room(self.per_cm, u.length))
         width = max(x1 - x0 + 2 * _MARGIN, left + right + 2 * _MARGIN + 8.0)
         self.fig.shift((width - (x1 - x0) - 2 * _MARGIN) / 2, 0.0)
@@ -310,8 +311,15 @@ class _Diagram:
             d = unit(self.view.direction(line.direction))
             n = (-d[1], d[0])
             p = self.block_centre(s)
-            # The guide lies on the far side of the block from the frame pivots.
+            # The guide and its hatching lie on the side of the block no link leaves it by;
+            # with links either way (or none), on the far side from the frame pivots.
+            pin = self.paper[s.point]
+            leave = sum(((q[0] - pin[0]) * n[0] + (q[1] - pin[1]) * n[1])
+                        for k in self.links_at(s.point) if k != 1
+                        for q in (self.paper[o] for o in self.names(k) if o != s.point))
             away = (p[0] - centre[0]) * n[0] + (p[1] - centre[1]) * n[1]
+            if abs(leave) > 1.0:
+                away = -leave
             side = n if away >= 0 else (-n[0], -n[1])
             off = _BLOCK[1] / 2
             half = max(22.0, 0.5 * self.travel(s.point, d))
@@ -563,7 +571,13 @@ def _extremes(pts):
 
 
 def _clearest_direction(dirs: list[tuple[float, float]]) -> tuple[float, float]:
-    """The paper direction for a ground symbol: straight down unless a link is in the way."""
+    """The paper direction for a ground symbol: straight down unless a link is in the way.
+
+    A link within 65° of a direction crosses the symbol's triangle or its hatched base
+    (the base reaches about 60° either side of the symbol's axis), so the symbol turns
+    to the first direction that clears every link by that much, or failing one, the
+    clearest.
+    """
     candidates = [(0.0, 1.0), (0.7071, 0.7071), (-0.7071, 0.7071), (1.0, 0.0), (-1.0, 0.0),
                   (0.0, -1.0)]
     best = None
@@ -571,7 +585,7 @@ def _clearest_direction(dirs: list[tuple[float, float]]) -> tuple[float, float]:
         clear = min((math.acos(max(-1.0, min(1.0, c[0] * d[0] + c[1] * d[1]))) for d in dirs),
                     default=math.pi)
         score = clear - 0.05 * rank
-        if clear >= math.radians(40):
+        if clear >= math.radians(65):
             return c
         if best is None or score > best[0]:
             best = (score, c)
