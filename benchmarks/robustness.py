@@ -188,7 +188,8 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--timeout", type=float, default=60.0, help="seconds before a case hangs")
     ap.add_argument("--render-timeout", type=float, default=600.0,
                     help="seconds before a case that draws its figures hangs: placing the "
-                         "labels of a few dozen figures takes a minute today")
+                         "labels of a few dozen figures takes some seconds, more on a "
+                         "crowded random mechanism")
     ap.add_argument("--render-every", type=int, default=200,
                     help="draw every N-th solved case's files to look for nan/inf (0: never)")
     ap.add_argument("--no-hostile", action="store_true", help="leave out the hostile files")
