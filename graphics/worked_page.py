@@ -12,6 +12,7 @@ never shrink). The results table and the notes follow under the panels.
 from __future__ import annotations
 
 from collections.abc import Sequence
+from dataclasses import replace
 from itertools import product
 
 from ..constructions.errors import TarsimError
@@ -180,10 +181,15 @@ def _place_panel(page: Figure, panel: Figure, at: tuple[float, float], *, frame:
 
 # ----- the results table --------------------------------------------------------------------
 def _cell(text: str, first: bool, bold: bool) -> Text:
-    """Set a cell: a quantity typeset with its subscript, anything else as given."""
+    """Set a cell: a quantity typeset with its subscript, a Coriolis term as 2ω × v with
+    the subscript rel, anything else as given."""
     if first and not bold:
         head, sub = typeset(text)
         return Text((0.0, 0.0), head, _CELL, "start", italic=True, sub=sub)
+    if not bold and "2ω×v_rel" in text:
+        head, _, tail = text.partition("2ω×v_rel")
+        return Text((0.0, 0.0), f"{head}2ω × v", _CELL, "start", italic=False, sub="rel",
+                    tail=tail)
     return Text((0.0, 0.0), text, _CELL, "start", italic=False, weight="bold" if bold else "normal")
 
 
@@ -228,7 +234,7 @@ def _draw_table(page: Figure, table: Sequence[Sequence[str]], at: tuple[float, f
             if _numeric(table, k):
                 page.add(Text((lefts[k] + widths[k], y), t.text, t.size, "end", False, t.weight))
             else:
-                page.add(Text((lefts[k], y), t.text, t.size, "start", t.italic, t.weight, t.sub))
+                page.add(replace(t, at=(lefts[k], y)))
         if r == 0:
             rule = y + 0.5 * _ROW
             page.add(Path(((at[0], rule), (lefts[-1] + widths[-1], rule)), "dimension"))
