@@ -26,7 +26,7 @@ from dataclasses import dataclass, replace
 
 from ..constructions.asks import SYMBOLS, Acceleration, Velocity
 from ..constructions.reference import solver
-from ..constructions.reference.limits import bisect_zero
+from ..constructions.reference.limits import section_zero
 from ..constructions.reference.turn import Turn, solve_turn
 from ..constructions.assembly import assemble
 from ..constructions.errors import AssemblyError, InputError, TarsimError
@@ -354,16 +354,19 @@ def _events(sw: Sweep) -> tuple[Event, ...]:
 
 
 def _bisect(sw: Sweep, key: str, lo: float, flo: float, hi: float) -> Event | None:
-    """The zero of ``key`` between ``lo`` and ``hi``, or None if a position on the way
-    will not assemble."""
+    """The zero of ``key`` between ``lo`` and ``hi`` (narrowed to the last bit, many angles
+    a round), or None if a position on the way will not assemble."""
     mech, out = sw.exercise.mechanism, sw.output
 
-    def at(angle: float) -> dict[str, float]:
-        return _evaluate(mech, out, _drive_at(mech, angle))
+    def along(angles):
+        values = _turn_values(solve_turn(mech, angles), out)
+        if len(values) < len(angles):
+            raise AssemblyError(f"a position between {lo} and {hi} rad will not assemble")
+        return [values[i][key] for i in range(len(angles))]
 
     try:
-        angle = bisect_zero(lambda t: at(t)[key], lo, hi, flo)
-        values = at(angle)
+        angle = section_zero(along, lo, hi, flo)
+        values = _evaluate(mech, out, _drive_at(mech, angle))
     except AssemblyError:
         return None
     return Event(key, angle, _theta_like(sw, values, angle))

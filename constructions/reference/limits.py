@@ -21,7 +21,7 @@ from .turn import solve_turn
 from ..errors import AssemblyError, InputError
 from ..model import Drive, Mechanism
 
-__all__ = ["LimitReference", "limit_reference", "bisect_zero", "section_zero"]
+__all__ = ["LimitReference", "limit_reference", "section_zero"]
 
 SAMPLES = 360
 """Crank angles sampled to bracket the reversals: far more than a linkage's two."""
@@ -104,10 +104,17 @@ def limit_reference(mech: Mechanism, *, point: str | None = None,
 
 
 def section_zero(f, lo: float, hi: float, f_lo: float, parts: int = 32) -> float:
-    """A zero of ``f`` between ``lo`` and ``hi``, as :func:`bisect_zero` finds it, but with
-    ``f`` taken at ``parts − 1`` points of the bracket at once (``f`` maps an array of
-    them to an array): each round narrows the bracket ``parts``-fold, down to neighbouring
-    floats, in a few vectorised solves rather than fifty scalar ones."""
+    """A zero of ``f`` between ``lo`` and ``hi`` (``f(lo) = f_lo``, ``f(hi)`` of the other
+    sign), narrowed until the two ends are neighbouring floats. ``f`` is taken at
+    ``parts − 1`` points of the bracket at once (it maps an array of them to values), so
+    each round narrows the bracket ``parts``-fold: a few vectorised solves rather than
+    fifty scalar ones.
+
+    >>> import math
+    >>> root = section_zero(lambda t: [math.cos(x) for x in t], 0.0, 3.0, 1.0)
+    >>> abs(root - math.pi / 2) < 1e-15
+    True
+    """
     for _ in range(80):
         inner = np.linspace(lo, hi, parts + 1)[1:-1]
         inner = inner[(inner - lo) * (hi - inner) > 0.0]      # strictly inside, either way
@@ -124,21 +131,4 @@ def section_zero(f, lo: float, hi: float, f_lo: float, parts: int = 32) -> float
         hi = float(inner[k])
         if k:
             lo, f_lo = float(inner[k - 1]), float(values[k - 1])
-    return 0.5 * (lo + hi)
-
-
-def bisect_zero(f, lo: float, hi: float, f_lo: float) -> float:
-    """A zero of ``f`` between ``lo`` and ``hi`` (``f(lo) = f_lo``, ``f(hi)`` of the other
-    sign), halving until the two ends are neighbouring floats."""
-    for _ in range(80):
-        mid = 0.5 * (lo + hi)
-        if mid in (lo, hi):
-            break
-        f_mid = f(mid)
-        if f_mid == 0.0:
-            return mid
-        if (f_mid < 0.0) == (f_lo < 0.0):
-            lo, f_lo = mid, f_mid
-        else:
-            hi = mid
     return 0.5 * (lo + hi)
