@@ -140,11 +140,6 @@ def _cross(a, b) -> float:
     return float(a[0] * b[1] - a[1] * b[0])
 
 
-def _degrees(deg: float) -> str:
-    """An angle in degrees as a message gives it: six figures and a true minus."""
-    return f"{deg:.6g}°".replace("-", "−")
-
-
 def _wrap(angle: float) -> float:
     return math.remainder(angle, math.tau)
 
@@ -224,7 +219,8 @@ class _Assembly:
         return self.pose
 
     def _fail(self, message: str, link: int, joint: str | None = None) -> AssemblyError:
-        return AssemblyError(f"{message} at input angle {_degrees(self.deg)}", link=link,
+        return AssemblyError(f"{message} at input angle "
+                             f"{self.units.angle_brief(self.m.drive.angle)}", link=link,
                              joint=joint, angle_deg=self.deg)
 
     def _len(self, metres: float) -> str:
@@ -628,8 +624,9 @@ def _singular(system: _System, jac: np.ndarray) -> tuple[float, SingularPosition
     free = [k for k, v in zip(system.moving, null) if v >= 0.2 * null.max()]
     deg = math.degrees(system.m.drive.angle)
     who = "link" if len(free) == 1 else "links"
+    at = system.m.units.angle_brief(system.m.drive.angle)
     return rcond, SingularPosition(
-        f"dead point at input angle {_degrees(deg)}: {who} {', '.join(map(str, free))} can move "
+        f"dead point at input angle {at}: {who} {', '.join(map(str, free))} can move "
         f"while link {system.m.drive.link} is held (singular Jacobian, rcond {rcond:.1e}), so ω "
         f"and α are undefined; choose another input angle or another input link",
         link=free[0], angle_deg=deg)
@@ -767,7 +764,7 @@ def solve(mech: Mechanism) -> Kinematics:
     jac, rcond = _conditioned(system, q)
     if system.scaled_residual(q) > 1e-10:
         raise AssemblyError(f"the position polish did not converge at input angle "
-                            f"{_degrees(math.degrees(mech.drive.angle))} (residual "
+                            f"{mech.units.angle_brief(mech.drive.angle)} (residual "
                             f"{system.scaled_residual(q):.1e})", link=mech.drive.link)
     rhs = np.zeros(len(system.is_len))
     rhs[-1] = mech.drive.omega
