@@ -24,7 +24,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 
 from . import geometry as g
-from .errors import AssemblyError, DegenerateInput, NoIntersection, TarsimError
+from .errors import AssemblyError, BranchError, DegenerateInput, NoIntersection, TarsimError
 from .model import Arc, Mechanism, Slide, SlideKind
 from .narration import Phrase, Word, phrase
 from .record import VERBS, Construction, Kind, Ref, Role
@@ -229,11 +229,11 @@ class _Assembler:
                context: str) -> str | tuple[float, float]:
         b = self.m.branches.get(point, default)
         if b is None:
-            raise AssemblyError(
+            raise BranchError(
                 f"point {point} has two positions ({context}); choose one in [assembly]: "
                 f'{point} = "{choices[0]}" or "{choices[1]}"', joint=point)
         if isinstance(b, str) and b not in choices:
-            raise AssemblyError(f"[assembly] {point} = \"{b}\" does not apply here ({context}); "
+            raise BranchError(f"[assembly] {point} = \"{b}\" does not apply here ({context}); "
                                 f'use "{choices[0]}" or "{choices[1]}"', joint=point)
         return b
 
@@ -642,8 +642,8 @@ class _Assembler:
         pick = self.branch(s.point, "forward", ("forward", "backward"),
                            f"the block ahead of or behind the foot of {pivot} on the slot")
         if not isinstance(pick, str):
-            raise AssemblyError(f"[assembly] {s.point}: give \"forward\" or \"backward\" for a "
-                                "block in a swinging slot", joint=s.point)
+            raise BranchError(f"[assembly] {s.point}: give \"forward\" or \"backward\" for a "
+                              "block in a swinging slot", joint=s.point)
         q, p = self.known[pivot], self.known[s.point]
         # Nearer than this (the analytic solver's SINGULAR_RCOND) the slot's direction is
         # rounding; an offset slot cannot come so near its pivot, and says so as it is drawn.

@@ -91,6 +91,10 @@ class AssemblyError(TarsimError):
         super().__init__(message)
 
 
+class BranchError(AssemblyError):
+    """A point's branch (its [assembly] entry) is missing, or does not apply where it is."""
+
+
 class DeadPoint(AssemblyError):
     """The input stands at a dead point: the position assembles but ω (or α) is undefined."""
 

@@ -14,7 +14,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from ..constructions.errors import AssemblyError, DeadPoint, InputError
+from ..constructions.errors import AssemblyError, BranchError, DeadPoint, InputError
 from ..constructions.reference.solver import follow_branches
 from ..constructions.model import (LENGTH_UNITS, Arc, Contact, Drive, Link, Mechanism, Profile,
                                  Slide, SlideKind, Units, contact_arc, contact_slide)
@@ -83,7 +83,7 @@ def line_of(error: AssemblyError, path: str | Path) -> int | None:
         index = next((i for i, k in enumerate(links) if wanted(k)), None)
         return where.header("link", index) if index is not None else None
 
-    if error.joint and "[assembly]" in str(error):
+    if isinstance(error, BranchError):
         if "assembly" in data:
             return where.key(error.joint, "assembly")
         return table_of(lambda k: error.joint in (k.get("points") or ()))

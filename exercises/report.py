@@ -67,8 +67,7 @@ def format_check(check: PositionCheck) -> str:
     d = m.drive
     k = u.metres
     dof, n, f1, f2 = check.mobility
-    angle = _minus(f"{d.angle:.6g} rad" if u.angle == "rad" else
-                   f"{math.degrees(d.angle):.6g}°")
+    angle = u.angle_brief(d.angle)
     lines = [f"{m.name}  ({m.source})" if m.source else m.name,
              f"θ{d.link} = {angle}    DOF = {dof}  (Grübler: 3({n} − 1) − 2·{f1} − {f2})"]
     if check.grashof is not None:
