@@ -28,9 +28,9 @@ from ..constructions.model import Arc, Mechanism, Slide, SlideKind
 from ..constructions.narration import significant
 from ..constructions.scales import face_ends, space_per_cm
 
-from .figure import Circle, Figure, Path, Text, View, arc_points, text_width
+from .figure import Circle, Figure, Path, Text, View, arc_points
 from .labels import LabelPlacer, subscript
-from .scales import bar_room, draw_scale_bar, scale_text
+from .scales import draw_caption
 from .symbols import (PIN_RADIUS, draw_block, draw_curved_guide, draw_curved_slot,
                       draw_ground_pivot, draw_guide, draw_pin, draw_turning_arrow, mark_angle,
                       unit)
@@ -38,7 +38,6 @@ from .symbols import (PIN_RADIUS, draw_block, draw_curved_guide, draw_curved_slo
 __all__ = ["draw_kinematic_diagram", "input_caption", "subscript"]
 
 _MARGIN = 8.0              # white round the drawing, mm
-_CAPTION = 15.0            # band under the drawing for the caption and scale bar, mm
 _BLOCK = (9.0, 5.0)        # slider block on paper, mm
 _DOT = 0.55                # a marked point (circle centre, contact point) on paper, mm
 _FACE_MARGIN = 4.0         # a face runs this far (paper mm) past its own point, under a block
@@ -200,25 +199,8 @@ class _Diagram:
 
     def fit_page(self) -> None:
         """Size the page to the drawing plus margins, and set the caption under it."""
-        x0, y0, x1, y1 = self.fig.bounds()
-        self.fig.shift(_MARGIN - x0, _MARGIN - y0)
-        u = self.m.units
-        params = input_caption(self.m)
-        scale = f"Scale {scale_text(self.per_cm, u.length)}"
-        head = Text((_MARGIN, 0.0), self.m.name, 3.6, "start", italic=False, weight="bold")
-        left = max(head.width, text_width(params, 3.2))      # a bold heading is the wider
-        right = max(text_width(scale, 3.2), bar_room(self.per_cm, u.length))
-        width = max(x1 - x0 + 2 * _MARGIN, left + right + 2 * _MARGIN + 8.0)
-        self.fig.shift((width - (x1 - x0) - 2 * _MARGIN) / 2, 0.0)
-        top = y1 - y0 + 2 * _MARGIN
-        self.fig.width = round(width, 1)
-        self.fig.height = round(top + _CAPTION, 1)
-        y = top + 3.0
-        self.fig.add(Text((_MARGIN, y), self.m.name, 3.6, "start", italic=False, weight="bold"))
-        self.fig.add(Text((_MARGIN, y + 5.2), params, 3.2, "start", italic=False))
-        bar_x = width - _MARGIN - right
-        self.fig.add(Text((bar_x, y), scale, 3.2, "start", italic=False))
-        draw_scale_bar(self.fig, (bar_x, y + 5.0), self.per_cm, u.length)
+        draw_caption(self.fig, self.m.name, [input_caption(self.m)], per_cm=self.per_cm,
+                     unit=self.m.units.length, margin=_MARGIN)
 
     def slot_reach(self, number: int) -> list[tuple[float, float]]:
         """Paper points a link must reach: its own, what runs in its slot, its curved tracks.
