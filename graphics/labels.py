@@ -90,7 +90,7 @@ class LabelPlacer:
             self._tree = STRtree(self.obstacles) if self.obstacles else None
         return self._tree
 
-    def _first_clear(self, xy: np.ndarray, hw: float, hh: float) -> int | None:
+    def _first_free(self, xy: np.ndarray, hw: float, hh: float) -> int | None:
         """The first of the boxes centred at ``xy`` whose clearance lies on the page and at
         most touches an obstacle (an overlap of no area), or None.
 
@@ -155,7 +155,7 @@ class LabelPlacer:
                     reach = gap * ring + min(hw / max(abs(ux), 1e-9), hh / max(abs(uy), 1e-9))
                     these.append((base[0] + reach * ux, base[1] + reach * uy))
             xy = np.asarray(these)
-            first = self._first_clear(xy, hw, hh)
+            first = self._first_free(xy, hw, hh)
             if first is not None:
                 return these[first], 0.0
             centres += these
