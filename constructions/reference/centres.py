@@ -173,14 +173,15 @@ def instant_centre(kin: Kinematics, i: int, j: int, *, pin: str | None = None) -
     if _scale(kin, kin, pts, size) == 0.0:
         raise DegenerateInput("nothing moves (every ω and velocity is 0): give the input a "
                               "nonzero ω to locate instant centres")
+    # The driven motion first: two links that move together have no centre, pin or not.
+    driven = _located(kin, kin, i, j, q, size)
+    if pin is not None:
+        return AnalyticCentre(kin.points[pin], None, 4.0 * EPS)
     # Both motions give the centre, each with its own rounding. Near a dead point of the
     # input the free motion is sharper by orders of magnitude (see the module's docstring),
     # except for a centre of the input and the frame, whose |Δω| the free motion nearly
     # loses there. Elsewhere the two agree to rounding and the driven one, whose zeros are
     # exact (a block's ω), is kept: the free one must be sharper tenfold to be taken.
-    driven = _located(kin, kin, i, j, q, size)
-    if pin is not None:
-        return AnalyticCentre(kin.points[pin], None, 4.0 * EPS)
     free = getattr(kin, "free", None)
     if free is None:
         return driven
