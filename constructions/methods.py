@@ -36,6 +36,24 @@ from .scales import Scales, choose_scales
 __all__ = ["Method", "Work", "answer_all"]
 
 
+def drawable_speeds(m: Mechanism, kin: solver.Kinematics) -> list[float]:
+    """Magnitudes (file units/s) of the vectors a method may draw on the space diagram: each
+    point's velocity, and its component along every line to another point of its link (the
+    components a rigid link carries from one end to the other)."""
+    out = []
+    for k in m.links:
+        if k.number == 1:
+            continue
+        v = {n: solver.point_velocity(kin, m, k.number, n) for n in k.names}
+        out += [math.hypot(*w) for w in v.values()]
+        for i, p in enumerate(k.names):
+            for q in k.names[i + 1:]:
+                dx, dy = (b - a for a, b in zip(kin.points[p], kin.points[q]))
+                if math.hypot(dx, dy) > 0.0:
+                    out.append(abs(v[p][0] * dx + v[p][1] * dy) / math.hypot(dx, dy))
+    return [x / m.units.metres for x in out]
+
+
 def _chosen(method: Method, work: Work, ask: A.Ask) -> bool:
     return not method.chosen_by or any(name in work.chosen for name in method.chosen_by)
 
@@ -121,7 +139,9 @@ class Work:
         """The position's scales, chosen once (:func:`~.scales.choose_scales`)."""
         v = self.stated.get("velocity")
         return choose_scales(self.assembly, velocity=v, velocity_polygon=v,
-                             acceleration_polygon=self.stated.get("acceleration"))
+                             acceleration_polygon=self.stated.get("acceleration"),
+                             speeds=() if v else drawable_speeds(self.mechanism,
+                                                                 self.kinematics))
 
     def prepare(self) -> None:
         """Draw the position, then solve it analytically: a position that cannot be drawn

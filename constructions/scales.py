@@ -4,7 +4,9 @@ A figure states each scale as the course does, "1 cm = N unit" with N = 1, 2 or
 5 × 10^k (:func:`nice`, the one rule for such numbers), or as the exercise
 states it. The space scale fits the mechanism, its cams and faces included, in
 the page's drawing area; a velocity drawn on the space diagram is laid off at the
-scale that draws the input's speed about 20–35 mm long. Both are fixed here,
+scale that draws every vector a method may draw there big enough to read: the input
+at least 20 mm, the shortest at least 8 mm, the longest within half the diagram
+(:func:`readable_per_cm`). Both are fixed here,
 before anything is drawn, so the construction and its figure agree and nothing
 is laid out twice. (A polygon's paper scale is its panel's own: a polygon is
 drawn at any construction scale and then fitted to its panel.)
@@ -13,12 +15,14 @@ drawn at any construction scale and then fitted to its panel.)
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 from .assembly import Assembly
 from .errors import TarsimError
 
 __all__ = ["nice", "Scales", "Stated", "choose_scales", "space_per_cm", "velocity_per_cm",
+           "readable_per_cm", "SHORTEST_MM",
            "drawing_extent", "face_ends", "ROOM", "FACE_REACH"]
 
 ROOM = (150.0, 130.0)
@@ -28,6 +32,13 @@ FACE_REACH = 0.8
 """A flat face is drawn this many of its circle's radii either side of the contact point."""
 
 _VECTOR_MM = (20.0, 35.0)   # the input's speed is drawn this long on the space diagram
+
+SHORTEST_MM = 8.0
+"""The shortest vector a velocity construction draws, on paper (mm), where it can."""
+
+LONGEST_MM = (30.0, 0.5)
+"""The longest vector on the space diagram: this many mm, or this part of the diagram's
+larger side, whichever is longer."""
 
 
 def nice(raw: float, *, up: bool = True) -> float:
@@ -181,17 +192,46 @@ def velocity_per_cm(speed: float) -> float:
     return best[1]
 
 
+def readable_per_cm(speed: float, others: Sequence[float], longest: float) -> float:
+    """The nice N of "1 cm = N unit/s" that draws a construction big enough to read.
+
+    ``speed`` is the input's (unit/s), drawn at least 20 mm long; ``others`` are the
+    magnitudes of every other vector a method may draw, the shortest of which is
+    drawn at least :data:`SHORTEST_MM` long; none may pass ``longest`` (mm). The
+    largest N that does all this is taken, so the construction is no bigger than it
+    need be. Where a vector is too short beside the longest for both, the longest is
+    drawn ``longest`` mm long; with no other vector, this is :func:`velocity_per_cm`.
+
+    >>> readable_per_cm(360.0, [360.0, 92.0], 60.0)        # 36 mm, the shortest 9.2 mm
+    100.0
+    >>> readable_per_cm(360.0, [360.0, 10.0], 60.0)        # 10 mm/s cannot be 8 mm here
+    100.0
+    """
+    others = [v for v in others if v > 1e-9 * speed]
+    if not others:
+        return velocity_per_cm(speed)
+    high = max(max(others), speed)
+    readable = nice(10.0 * min(min(others) / SHORTEST_MM, speed / _VECTOR_MM[0]), up=False)
+    roomy = nice(10.0 * high / longest)
+    return readable if readable >= roomy else roomy
+
+
 def choose_scales(asm: Assembly, *, velocity: float | None = None,
                   velocity_polygon: float | None = None,
-                  acceleration_polygon: float | None = None) -> Scales:
+                  acceleration_polygon: float | None = None,
+                  speeds: Sequence[float] = ()) -> Scales:
     """The scales of a position of ``asm``: those the exercise states, the rest chosen.
 
     ``velocity`` is a stated velocity scale for the vectors drawn on the space
     diagram (file units per second per paper cm); without one, and with the input
-    moving, a nice one is chosen for the input's speed. The stated velocity scale
-    also states the velocity polygon's, as the exercise words it once for both.
+    moving, a nice one is chosen that draws the input and every one of ``speeds``
+    (the magnitudes, unit/s, of the vectors the methods may draw there) readably
+    (:func:`readable_per_cm`). The stated velocity scale also states the velocity
+    polygon's, as the exercise words it once for both.
     """
     speed = asm.mechanism.input_speed / asm.mechanism.units.metres
+    space = space_per_cm(asm)
     if velocity is None and speed > 0.0:
-        velocity = velocity_per_cm(speed)
-    return Scales(space_per_cm(asm), velocity, velocity_polygon, acceleration_polygon)
+        extent = max(drawing_extent(asm)) / asm.mechanism.units.metres * 10.0 / space
+        velocity = readable_per_cm(speed, speeds, max(LONGEST_MM[0], LONGEST_MM[1] * extent))
+    return Scales(space, velocity, velocity_polygon, acceleration_polygon)

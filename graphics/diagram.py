@@ -180,6 +180,7 @@ class _Diagram:
         self.fig = Figure(0.0, 0.0, title=self.m.name)
         self.placer = LabelPlacer(self.fig)
         self.paper = {n: self.view(p) for n, p in self.world.items()}
+        self.placer.name_points(self.paper.values())
         self.tracks = [self.track(a) for a in self.m.arcs if a.contact is None]
 
     # ----- drawing ---------------------------------------------------------------------
@@ -504,7 +505,7 @@ class _Diagram:
         for name, at in self.paper.items():
             away = _sub(at, centre)
             prefer = math.atan2(-away[1], away[0]) if math.hypot(*away) > 1e-6 else math.pi / 4
-            self.placer.place(subscript(name), at, prefer=prefer, gap=2.0, size=3.6)
+            self.placer.place(subscript(name), at, prefer=prefer, gap=2.0, size=3.6, own=at)
         # P goes beside the contact, off the common normal that runs through it; between
         # two circles, out along the tangent in the gap that opens between them.
         for point, normal, spread, rings in (

@@ -61,6 +61,7 @@ STYLES: dict[str, Style] = {
     "triangle_alt": Style(stroke=None, fill="#cdcdcd"),
     "node_circle": Style(width=0.25, stroke="#777"),
     "reference": Style(width=0.18, dash=(1.5, 1.0)),
+    "leader": Style(width=0.15, dash=(0.5, 0.7)),
     "dimension": Style(width=0.2),
     "arrow": Style(width=0.35),
     "arrowhead": Style(stroke=None, fill="#000"),
@@ -122,7 +123,9 @@ class Text:
 
     ``sub`` is set after ``text`` as a true subscript (smaller, dropped below the
     baseline): ``Text(at, "V", sub="A")`` prints V with subscript A; ``tail``
-    follows the subscript back on the baseline ("V_B by radius rotation").
+    follows the subscript back on the baseline ("V_B by radius rotation"). ``owner`` is
+    the point a point's label names, kept so that a figure can be held to standing
+    nearer its own point than any other named one.
     """
 
     at: tuple[float, float]
@@ -133,6 +136,7 @@ class Text:
     weight: str = "normal"
     sub: str = ""
     tail: str = ""
+    owner: tuple[float, float] | None = None
 
     @property
     def width(self) -> float:
@@ -257,8 +261,9 @@ def _shifted(it: Path | Circle | Text, dx: float, dy: float) -> Path | Circle | 
         return Path(tuple((x + dx, y + dy) for x, y in it.points), it.style, it.closed, it.d)
     if isinstance(it, Circle):
         return Circle((it.centre[0] + dx, it.centre[1] + dy), it.radius, it.style)
+    owner = None if it.owner is None else (it.owner[0] + dx, it.owner[1] + dy)
     return Text((it.at[0] + dx, it.at[1] + dy), it.text, it.size, it.anchor, it.italic, it.weight,
-                it.sub, it.tail)
+                it.sub, it.tail, owner)
 
 
 Box = tuple[float, float, float, float]

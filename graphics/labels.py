@@ -1,22 +1,26 @@
-"""Place labels where they touch neither each other nor the drawing (shapely boxes).
+"""Place labels where they touch neither each other nor the drawing.
 
-Each label tries a ring of candidate positions around its anchor, preferred
-direction first, and takes the first that is clear; if none is, the one with the
-least overlap. Placed labels become obstacles for the next.
+Each label tries rings of candidate positions around its anchor, preferred direction
+first, and takes the first that is clear; if none is, the one with the least weighted
+ink under it. Placed labels become obstacles for the next. Candidates are priced on a
+raster of the page (:mod:`.occupancy`), all of a label's at once; shapely keeps the
+obstacles' exact shapes for the few callers that weigh a line or a shape of their own.
 """
 
 from __future__ import annotations
 
 import math
 import re
+from dataclasses import replace
 
 import numpy as np
 import shapely
-from shapely.geometry import LineString, box
+from shapely.geometry import LineString, Polygon, box
 from shapely.geometry.base import BaseGeometry
 from shapely.strtree import STRtree
 
-from .figure import Figure, Text
+from .figure import Figure, Path, Text
+from .occupancy import Occupancy
 from .symbols import badge_radius, draw_badge
 
 __all__ = ["LabelPlacer", "typeset", "typeset_span", "subscript"]
@@ -31,6 +35,9 @@ class LabelPlacer:
         self.keys: list[object] = []
         self.weights: list[float] = []
         self._tree: STRtree | None = None
+        self.ink = Occupancy()
+        self.seen = 0                 # fig.items looked through for arrowheads
+        self.named: list[tuple[float, float]] = []
         self.clearance = 0.8
         # A page that is fitted to its content afterwards has no edge to avoid.
         self.page = box(1.0, 1.0, fig.width - 1.0, fig.height - 1.0) if fig.width else None
@@ -45,6 +52,22 @@ class LabelPlacer:
         self.keys.append(key)
         self.weights.append(weight)
         self._tree = None
+        self.ink.paint(geom, weight)
+
+    def name_points(self, points) -> None:
+        """Register points that are (or will be) labelled on this page: a point's label must
+        stand nearer its own point than any of these."""
+        self.named += [tuple(p) for p in points]
+
+    def block_head(self, tip: tuple[float, float], tail: tuple[float, float],
+                   length: float = 3.2) -> None:
+        """Mark the arrowhead an arrow from ``tail`` will end in at ``tip`` as a label's last
+        resort (:data:`HEAD`), before the arrow is drawn."""
+        n = math.dist(tip, tail)
+        if n > 0.0:
+            t = min(length, n) / n
+            back = (tip[0] + t * (tail[0] - tip[0]), tip[1] + t * (tail[1] - tip[1]))
+            self.block(LineString([tip, back]).buffer(1.2), weight=HEAD)
 
     def block_path(self, points, width: float = 0.4, weight: float = 1.0) -> None:
         """Mark a drawn polyline (with a little clearance) as taken."""
@@ -90,41 +113,6 @@ class LabelPlacer:
             self._tree = STRtree(self.obstacles) if self.obstacles else None
         return self._tree
 
-    def _first_free(self, xy: np.ndarray, hw: float, hh: float) -> int | None:
-        """The first of the boxes centred at ``xy`` whose clearance lies on the page and at
-        most touches an obstacle (an overlap of no area), or None.
-
-        Told by predicates, far cheaper than measuring areas, and in two passes: a box grown
-        by half the clearance lies inside the rounded one, so an obstacle it meets crosses
-        that one's interior; only the spots it leaves free are built and tested whole.
-        """
-        tree = self._tree_now()
-        spots = np.arange(len(xy))
-        if tree is not None:
-            m = self.clearance / 2
-            inner = shapely.box(xy[:, 0] - hw - m, xy[:, 1] - hh - m, xy[:, 0] + hw + m,
-                                xy[:, 1] + hh + m)
-            crossed = np.zeros(len(xy), dtype=bool)
-            crossed[tree.query(inner, predicate="intersects")[0]] = True
-            spots = np.flatnonzero(~crossed)
-        shapes = _rounded_boxes(xy[spots], hw, hh, self.clearance)
-        clear = (np.ones(len(spots), dtype=bool) if self.page is None
-                 else shapely.within(shapes, self.page))
-        if tree is not None and len(spots):
-            which, hit = tree.query(shapes, predicate="intersects")
-            met = np.zeros(len(spots), dtype=bool)
-            met[which] = True
-            untouched = np.flatnonzero(clear & ~met)
-            # Only the spots before the first untouched one may still win, by a touch.
-            upto = int(untouched[0]) if len(untouched) else len(spots)
-            near = which < upto
-            which, hit = which[near], hit[near]
-            crossed = ~shapely.touches(shapes[which],
-                                       np.asarray(self.obstacles, dtype=object)[hit])
-            clear[which[crossed]] = False
-        first = np.flatnonzero(clear)
-        return int(spots[first[0]]) if len(first) else None
-
     def clearest(self, shapes: list[BaseGeometry], ignore: object = None) -> int:
         """Index of the first of ``shapes`` clear of every obstacle, else of the least covered."""
         return _first_clear(self.overlaps(shapes, ignore))
@@ -132,54 +120,105 @@ class LabelPlacer:
     def spot(self, width: float, height: float,
              anchor: tuple[float, float] | list[tuple[float, float]], *,
              prefer: float | tuple[float, ...] = math.pi / 4, spread: float = math.pi,
-             gap: float = 2.6, rings: tuple[float, ...] = (1.0, 1.6, 2.3)
-             ) -> tuple[tuple[float, float], float]:
+             gap: float = 2.6, rings: tuple[float, ...] = (1.0, 1.6, 2.3),
+             own: Owned | None = None) -> tuple[tuple[float, float], float]:
         """Find the centre of a ``width`` × ``height`` box near ``anchor``; nothing is drawn.
 
         Directions are tried from each ``prefer`` angle (paper, rad) outwards, up to
         ``spread`` either side; the box's edge, not its centre, stands ``gap`` off
-        the anchor. Returns the centre and the overlap left (0 when clear).
+        the anchor. With ``own``, the name in the box stands nearer its point than any
+        other :meth:`named <name_points>` one. Returns the centre and the overlap left (0
+        when clear).
         """
+        self._see_heads()
         prefers = prefer if isinstance(prefer, tuple) else (prefer,)
-        turns = [(k + 1) // 2 * (1 if k % 2 else -1) * math.pi / 8 for k in range(16)]
-        angles = [p + t for t in turns if abs(t) <= spread + 1e-9 for p in prefers]
-        anchors = anchor if isinstance(anchor, list) else [anchor]
-        hw, hh = width / 2, height / 2
-        centres: list[tuple[float, float]] = []
-        for ring in rings:            # a ring at a time: most labels find room in the first
-            these = []
-            for base in anchors:
-                for a in angles:
-                    ux, uy = math.cos(a), -math.sin(a)
-                    # Push the box out until its edge, not its centre, is ``gap`` away.
-                    reach = gap * ring + min(hw / max(abs(ux), 1e-9), hh / max(abs(uy), 1e-9))
-                    these.append((base[0] + reach * ux, base[1] + reach * uy))
-            xy = np.asarray(these)
-            first = self._first_free(xy, hw, hh)
-            if first is not None:
-                return these[first], 0.0
-            centres += these
-        # No ring has room: the spot least covered, by area (the only costly measure).
-        costs = self.overlaps(list(_rounded_boxes(np.asarray(centres), hw, hh, self.clearance)))
-        k = int(np.argmin(costs))
-        return centres[k], float(costs[k])
+        anchors = np.asarray(anchor if isinstance(anchor, list) else [anchor], dtype=float)
+        xy, costs = self._ring_costs(width / 2, height / 2, anchors, prefers, spread, gap,
+                                     rings, 8, own)
+        free = np.flatnonzero(costs < _NO_INK)
+        if not len(free):
+            # None clear: look again between the rings and the directions before settling
+            # for the least covered.
+            between = sorted({*rings, *((a + b) / 2 for a, b in zip(rings, rings[1:]))})
+            xy, costs = self._ring_costs(width / 2, height / 2, anchors, prefers, spread, gap,
+                                         between, 16, own)
+            free = np.flatnonzero(costs < _NO_INK)
+        k = int(free[0]) if len(free) else int(np.argmin(costs))
+        return (float(xy[k, 0]), float(xy[k, 1])), (0.0 if len(free) else float(costs[k]))
+
+    def _ring_costs(self, hw: float, hh: float, anchors: np.ndarray, prefers, spread: float,
+                    gap: float, rings, steps: int, own: Owned | None
+                    ) -> tuple[np.ndarray, np.ndarray]:
+        """Candidate centres, ring by ring and for each anchor in turn, ``steps`` directions
+        to a half turn from each preferred one, nearest first; and what covers each, with
+        :data:`_ASTRAY` more for a name nearer another named point than its own."""
+        turns = [(k + 1) // 2 * (1 if k % 2 else -1) * math.pi / steps for k in range(2 * steps)]
+        angles = np.array([p + t for t in turns if abs(t) <= spread + 1e-9 for p in prefers])
+        ux, uy = np.cos(angles), -np.sin(angles)
+        # Push each box out until its edge, not its centre, is ``gap`` × ring away.
+        edge = np.minimum(hw / np.maximum(np.abs(ux), 1e-9), hh / np.maximum(np.abs(uy), 1e-9))
+        reach = gap * np.asarray(rings, dtype=float)[:, None, None] + edge
+        xy = np.stack([anchors[None, :, None, 0] + reach * ux,
+                       anchors[None, :, None, 1] + reach * uy], axis=-1).reshape(-1, 2)
+        c = self.clearance
+        # The box with its clearance about it, the corners rounded off: two crossed boxes.
+        wide, tall, inner = self.costs(xy, (hw + c, hh), (hw, hh + c), (hw, hh))
+        cost = wide + tall - inner
+        if own is not None:
+            cost += _ASTRAY * self._astray(xy, own)
+        return xy, cost
+
+    def _astray(self, xy: np.ndarray, own: Owned) -> np.ndarray:
+        """Whether the name in each box centred at ``xy`` stands nearer another named point
+        than its own (points within half a millimetre of it are its own)."""
+        point, dx, hw, hh = own
+        rivals = np.array([p for p in self.named if math.dist(p, point) > 0.5]).reshape(-1, 2)
+        if not len(rivals):
+            return np.zeros(len(xy), dtype=bool)
+        centre = xy + (dx, 0.0)
+        mine = _box_distance(centre, hw, hh, np.asarray(point, dtype=float)[None, :])[:, 0]
+        theirs = _box_distance(centre, hw, hh, rivals).min(axis=1)
+        return theirs < mine - 1e-6
+
+    def _see_heads(self) -> None:
+        """Take the room of every arrowhead drawn since the last look, whoever drew it: a
+        label may cover a line sooner than the head that tells the line's sense."""
+        items = self.fig.items
+        for it in items[self.seen:]:
+            if isinstance(it, Path) and it.closed and it.style in _HEADS:
+                self.block(Polygon(it.points).buffer(0.3), weight=HEAD)
+        self.seen = len(items)
+
+    def costs(self, xy: np.ndarray, *sizes: tuple[float, float]) -> np.ndarray:
+        """Weighted ink (mm²) under boxes centred at ``xy``, and their area off the page: a
+        row for each of ``sizes``, a box's half width and half height."""
+        cost = self.ink.ink(xy, *sizes)
+        if self.page is not None:
+            x0, y0, x1, y1 = self.page.bounds
+            for row, (hw, hh) in zip(cost, sizes):
+                w = np.minimum(xy[:, 0] + hw, x1) - np.maximum(xy[:, 0] - hw, x0)
+                h = np.minimum(xy[:, 1] + hh, y1) - np.maximum(xy[:, 1] - hh, y0)
+                row += 4 * hw * hh - np.maximum(w, 0) * np.maximum(h, 0)
+        return cost
 
     def place(self, text: str, anchor: tuple[float, float] | list[tuple[float, float]], *,
               prefer: float | tuple[float, ...] = math.pi / 4, spread: float = math.pi,
               gap: float = 2.6, size: float = 3.5, italic: bool = True,
-              rings: tuple[float, ...] = (1.0, 1.6, 2.3), sub: str = "") -> Text:
+              rings: tuple[float, ...] = (1.0, 1.6, 2.3), sub: str = "",
+              own: tuple[float, float] | None = None) -> Text:
         """Put ``text`` (subscript ``sub``) near ``anchor``, or the first of several with room.
 
         Directions are tried from each ``prefer`` angle (paper, rad) outwards, up to
-        ``spread`` either side.
+        ``spread`` either side. ``own`` is the point the text names, if it names one.
         """
         probe = Text((0.0, 0.0), text, size, "middle", italic, sub=sub)
         x0, y0, x1, y1 = probe.box()
         # The box of a subscripted label hangs below its centre line: aim the box.
         dy = (y0 + y1) / 2
+        owned = None if own is None else (own, 0.0, (x1 - x0) / 2, (y1 - y0) / 2)
         c, _ = self.spot(x1 - x0, y1 - y0, anchor, prefer=prefer, spread=spread, gap=gap,
-                         rings=rings)
-        t = Text((c[0], c[1] - dy), text, size, "middle", italic, sub=sub)
+                         rings=rings, own=owned)
+        t = Text((c[0], c[1] - dy), text, size, "middle", italic, sub=sub, owner=own)
         return self._commit(t, box(*t.box()))
 
     def place_numbered(self, text: str, anchor: tuple[float, float] | list[tuple[float, float]],
@@ -187,45 +226,78 @@ class LabelPlacer:
                        prefer: float | tuple[float, ...] = math.pi / 4, spread: float = math.pi,
                        gap: float = 1.4, size: float = 3.4, tail: str = "",
                        rings: tuple[float, ...] = (1.0, 1.6, 2.4, 3.4, 4.6, 6.0, 8.0),
-                       farther: tuple[float, ...] = ()) -> tuple[float, float] | None:
+                       farther: tuple[float, ...] = (),
+                       own: tuple[float, float] | None = None,
+                       also: tuple[tuple[str, str], ...] = ()) -> tuple[float, float] | None:
         """Place a label followed by circled step numbers, as one unit clear of everything.
 
         Either part may be empty. ``tail`` follows the subscript on the baseline
         ("Aⁿ" sub "B/A" tail " = 0"). ``rings`` are the distances tried, in
         ``gap``s: fewer keep a label by its anchor at the cost of some overlap;
         ``farther`` rings are tried after them when none of theirs is clear, for a
-        figure where covering a label is worse than standing a little off.
+        figure where covering a label is worse than standing a little off. ``own`` is the
+        point the text names, if it names one. ``also`` are more names, text and subscript,
+        of the same thing, each set after an equals sign ("V_A₂ = V_A₄": one arrow).
         Returns the unit's centre, or None if there was nothing to place.
         """
         if not text and not numbers:
             return None
-        t = Text((0.0, 0.0), text, size, "middle", sub=sub, tail=tail) if text else None
-        x0, y0, x1, y1 = t.box() if t else (0.0, 0.0, 0.0, 0.0)
+        parts = [Text((0.0, 0.0), text, size, "middle", sub=sub, tail=tail)] if text else []
+        parts += [Text((0.0, 0.0), f"= {more}", size, "middle", sub=more_sub)
+                  for more, more_sub in also if text]
+        t = parts[0] if parts else None
+        x0, y0, x1, y1 = _row_box(parts) if parts else (0.0, 0.0, 0.0, 0.0)
         radii = [badge_radius(n) for n in numbers]
-        w = (x1 - x0) + sum(2 * r + 0.6 for r in radii) - (0.0 if t else 0.6)
+        w = (x1 - x0) + sum(2 * r + _SPACE for r in radii) - (0.0 if t else _SPACE)
         h = max(y1 - y0, 2 * max(radii, default=0.0))
-        c, cost = self.spot(w, h, anchor, prefer=prefer, spread=spread, gap=gap, rings=rings)
+        owned = None if own is None or not t else (own, ((x1 - x0) - w) / 2, (x1 - x0) / 2,
+                                                    (y1 - y0) / 2)
+        c, cost = self.spot(w, h, anchor, prefer=prefer, spread=spread, gap=gap, rings=rings,
+                            own=owned)
         if cost > 0.0 and farther:
             c2, cost2 = self.spot(w, h, anchor, prefer=prefer, spread=spread, gap=gap,
-                                  rings=farther)
+                                  rings=farther, own=owned)
             if cost2 < cost:
                 c = c2
         x = c[0] - w / 2
-        if t:
-            self.fig.add(Text((x + (x1 - x0) / 2, c[1] - (y0 + y1) / 2), text, size, "middle",
-                              sub=sub, tail=tail))
-            x += (x1 - x0) + 0.6
+        for part in parts:
+            px0, py0, px1, py1 = part.box()
+            self.fig.add(replace(part, at=(x + (px1 - px0) / 2, c[1] - (y0 + y1) / 2),
+                                 owner=own))
+            x += (px1 - px0) + _SPACE
         for n, r in zip(numbers, radii):
             draw_badge(self.fig, (x + r, c[1]), n)
             x += 2 * r + 0.6
-        self.block(box(c[0] - w / 2, c[1] - h / 2, c[0] + w / 2, c[1] + h / 2).buffer(0.4))
+        self.block(box(c[0] - w / 2, c[1] - h / 2, c[0] + w / 2, c[1] + h / 2).buffer(0.4),
+                   weight=LABEL)
         return c
 
     def _commit(self, t: Text, shape: BaseGeometry) -> Text:
-        self.block(shape.buffer(0.4))
+        self.block(shape.buffer(0.4), weight=LABEL)
         self.fig.add(t)
         return t
 
+
+Owned = tuple[tuple[float, float], float, float, float]
+"""A label's own point, and its name's box within the label: the box centre's offset along
+x from the label's, and its half width and half height."""
+
+_ASTRAY = 100.0
+"""What a spot costs (mm²) whose name stands nearer another named point than its own."""
+
+LABEL = 10.0
+"""What covering a placed label costs, against 1 for a line: only where nothing else is left."""
+
+HEAD = 10.0
+"""What covering an arrowhead costs, against 1 for a line."""
+
+_HEADS = ("arrowhead",)
+
+_SPACE = 0.6
+"""The space (mm) between the parts of a label set in a row: names, then circled numbers."""
+
+_NO_INK = 1e-6
+"""Weighted ink (mm²) below which a spot is clear: a thousandth of the least a cell holds."""
 
 _SUBSCRIPT = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
 _TRAILING = re.compile(r"^(.*?[^\d,])([\d,]+)([′″]*)$")
@@ -285,10 +357,18 @@ def _digits_down(name: str) -> str:
     return m.group(1) + m.group(2).translate(_SUBSCRIPT) + m.group(3)
 
 
-def _rounded_boxes(xy: np.ndarray, hw: float, hh: float, clearance: float) -> np.ndarray:
-    """The ``2hw`` × ``2hh`` boxes centred at ``xy`` with their clearance about them."""
-    return shapely.buffer(shapely.box(xy[:, 0] - hw, xy[:, 1] - hh, xy[:, 0] + hw,
-                                      xy[:, 1] + hh), clearance, quad_segs=16)
+def _row_box(parts: list[Text]) -> tuple[float, float, float, float]:
+    """The box of texts set in a row, :data:`_SPACE` apart, each centred on one line."""
+    boxes = [p.box() for p in parts]
+    width = sum(b[2] - b[0] for b in boxes) + _SPACE * (len(boxes) - 1)
+    return (0.0, min(b[1] for b in boxes), width, max(b[3] for b in boxes))
+
+
+def _box_distance(centres: np.ndarray, hw: float, hh: float, points: np.ndarray) -> np.ndarray:
+    """Distance from each box (centre, half sizes) to each point: a row per box."""
+    dx = np.maximum(np.abs(points[None, :, 0] - centres[:, None, 0]) - hw, 0.0)
+    dy = np.maximum(np.abs(points[None, :, 1] - centres[:, None, 1]) - hh, 0.0)
+    return np.hypot(dx, dy)
 
 
 def _first_clear(costs: np.ndarray) -> int:

@@ -59,6 +59,7 @@ _HERE = 1e-6        # paper points closer than this (mm) are one
 _NEAR = (1.0, 1.6, 2.4, 3.4, 4.6)   # a vector's label stays this many gaps from its shaft
 _FARTHER = (6.0, 8.0, 11.0, 15.0)   # ...unless every spot there covers another label
 _CROSSABLE = 0.02   # what covering a thin working line costs a label, against 1 for ink
+_LANE = 3.0         # mm between collinear arrows drawn side by side (:func:`_lanes`)
 
 
 # ----- the public function ----------------------------------------------------------------
@@ -238,6 +239,7 @@ class _PolygonPanel:
         for step in self.steps:
             if isinstance(step.output, g.Line) and not step.output.is_at_infinity:
                 self.plan_line(step)
+        self.lay_vectors()
         self.draw_lines()
         self.draw_circles()
         self.draw_vectors()
@@ -306,12 +308,28 @@ class _PolygonPanel:
                 self.placer.block_path(pts, 0.3)
 
     def vectors(self) -> list[tuple[Step, tuple[float, float], tuple[float, float]]]:
-        """Each segment step with its paper tail and tip."""
-        return [(s, self.view(s.output.start.xy), self.view(s.output.end.xy))
-                for s in self.steps if isinstance(s.output, g.Segment)]
+        """Each segment step with its paper tail and tip as drawn: in its lane
+        (:func:`_lanes`), beside the points it joins if arrows overlap there."""
+        return [(s, *self.drawn[s.id][:2]) for s in self.steps if s.id in self.drawn]
+
+    def lay_vectors(self) -> None:
+        """Give each vector its lane: collinear arrows that would cover one another are
+        drawn side by side, each true in length and direction, a leader from each end it
+        leaves to the point it stands for."""
+        steps = [s for s in self.steps if isinstance(s.output, g.Segment)]
+        ends = [(self.view(s.output.start.xy), self.view(s.output.end.xy)) for s in steps]
+        lanes = _lanes(ends, [s.role is not Role.CONSTRUCTION for s in steps])
+        self.drawn = {}
+        for s, (a, b), lane in zip(steps, ends, lanes):
+            n = (0.0, 0.0)
+            if lane and math.dist(a, b) >= _ZERO:
+                u = unit((b[0] - a[0], b[1] - a[1]))
+                n = (-u[1] * lane * _LANE, u[0] * lane * _LANE)
+            self.drawn[s.id] = ((a[0] + n[0], a[1] + n[1]), (b[0] + n[0], b[1] + n[1]), a, b)
 
     def draw_vectors(self) -> None:
-        """Arrows with the head at the tip: absolute vectors heavy, components light."""
+        """Arrows with the head at the tip: absolute vectors heavy, components light; one
+        moved into a lane of its own has a leader from each end to its point."""
         for step, a, b in self.vectors():
             if math.dist(a, b) < _ZERO:
                 continue
@@ -319,6 +337,10 @@ class _PolygonPanel:
             draw_arrow(self.fig, a, b, "vector_result" if heavy else "vector",
                        head=3.2 if heavy else 2.8, width=1.6 if heavy else 1.4)
             self.placer.block_path([a, b], 1.6 if heavy else 1.3)
+            for end, true in zip((a, b), self.drawn[step.id][2:]):
+                if math.dist(end, true) > _HERE:
+                    self.fig.add(Path((true, end), "leader"))
+                    self.placer.block_path([true, end], 0.3, weight=_CROSSABLE)
             self.add_rays(a, [b])
             self.add_rays(b, [a])
 
@@ -350,6 +372,8 @@ class _PolygonPanel:
                 groups.append([step])
             else:
                 grp.append(step)
+        self.placer.name_points(self.view(grp[0].output.xy) for grp in groups
+                                if any(s.label for s in grp))
         for grp in groups:
             at = self.view(grp[0].output.xy)
             names = list(dict.fromkeys(typeset(s.label) for s in grp if s.label))
@@ -357,31 +381,49 @@ class _PolygonPanel:
             rays = self.rays_at(at)
             self.placer.place_numbered(text, at, self.numbered(grp), sub=sub, tail=tail,
                                        prefer=_free_direction(at, rays, self.centre), gap=1.0,
-                                       size=3.8, farther=_FARTHER)
+                                       size=3.8, farther=_FARTHER, own=at if names else None)
 
     def label_vectors(self) -> None:
         """Each vector's label beside its own stretch of shaft; a null one as "… = 0".
 
-        The shortest go first: they have the least shaft to choose a place by.
+        The shortest go first: they have the least shaft to choose a place by. Arrows
+        drawn one over another (V_A₂ and V_A₄ when the block does not slide) share one
+        label, "V_A₂ = V_A₄"; one moved into a lane is labelled on its lane's side.
         """
         drawn = self.vectors()
-        for step, a, b in sorted(drawn, key=lambda v: math.dist(v[1], v[2])):
-            text, sub = typeset(step.label) if step.label else ("", "")
+        twins: list[list[tuple[Step, tuple[float, float], tuple[float, float]]]] = []
+        for v in drawn:
+            same = next((t for t in twins if math.dist(t[0][1], v[1]) < _ZERO
+                         and math.dist(t[0][2], v[2]) < _ZERO
+                         and math.dist(v[1], v[2]) >= _ZERO), None)
+            if same is None:
+                twins.append([v])
+            else:
+                same.append(v)
+        for group in sorted(twins, key=lambda t: math.dist(t[0][1], t[0][2])):
+            step, a, b = group[0]
+            names = [typeset(s.label) for s, _, _ in group if s.label]
+            text, sub = names[0] if names else ("", "")
+            numbers = self.numbered(s for s, _, _ in group)
             if math.dist(a, b) < _ZERO:
                 rays = self.rays_at(a)
-                self.placer.place_numbered(text, a, self.numbered([step]), sub=sub,
+                self.placer.place_numbered(text, a, numbers, sub=sub,
                                            tail=" = 0" if text else "",
                                            prefer=_free_direction(a, rays, self.centre), gap=1.6,
                                            size=3.2)
                 continue
             d = unit((b[0] - a[0], b[1] - a[1]))
             normal = math.atan2(d[0], d[1])       # the paper normal (−dy, dx) as a paper angle
+            true_a = self.drawn[step.id][2]
             away = (a[0] + b[0]) / 2 - self.centre[0], (a[1] + b[1]) / 2 - self.centre[1]
+            if math.dist(a, true_a) > _HERE:      # in a lane: its side is the lane's
+                away = (a[0] - true_a[0], a[1] - true_a[1])
             if away[0] * math.cos(normal) - away[1] * math.sin(normal) < 0:
                 normal += math.pi                  # the outer side of the polygon first
+            others = [(p, q) for s, p, q in drawn if all(s is not t for t, _, _ in group)]
             anchors = [(a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]))
-                       for t in _own_stretch(a, b, [(p, q) for s, p, q in drawn if s is not step])]
-            self.placer.place_numbered(text, anchors, self.numbered([step]), sub=sub,
+                       for t in _own_stretch(a, b, others)]
+            self.placer.place_numbered(text, anchors, numbers, sub=sub, also=tuple(names[1:]),
                                        prefer=(normal, normal + math.pi), spread=math.pi / 3,
                                        gap=1.0, size=3.4, rings=_NEAR, farther=_FARTHER)
 
@@ -400,6 +442,48 @@ class _PolygonPanel:
             self.placer.place_numbered("", anchors, self.numbered(steps),
                                        prefer=(normal, normal + math.pi), spread=math.pi / 4,
                                        gap=0.6)
+
+
+def _lanes(ends: list[tuple[tuple[float, float], tuple[float, float]]],
+           heavy: list[bool]) -> list[int]:
+    """The lane of each arrow ``(tail, tip)``: 0 on its points, ±1, ±2 … :data:`_LANE` mm to
+    either side.
+
+    Two arrows on one carrier clash where they overlap, unless one lies within the other
+    from a common tail and the same way (V_A₄ within V_B₄, both from o_v, a textbook's
+    own drawing) or they are one and the same arrow. A polygon that collapses onto a line
+    (the crank-shaper's at θ₂ = 90°) has arrows running back over one another with heads
+    meeting: each goes to the nearest lane where it clashes with none, the absolute
+    vectors (``heavy``) and the longest placed first, so they keep to their points.
+
+    >>> _lanes([((0, 0), (0, 90)), ((0, 90), (0, 24)), ((0, 0), (0, 30)), ((0, 31), (0, 0))],
+    ...        [True, False, True, False])
+    [0, 1, 0, -1]
+    """
+    def clash(i: int, j: int) -> bool:
+        (a, b), (p, q) = ends[i], ends[j]
+        n = math.dist(a, b)
+        if n < _ZERO or math.dist(p, q) < _ZERO:
+            return False
+        d = ((b[0] - a[0]) / n, (b[1] - a[1]) / n)
+        if any(abs((e[0] - a[0]) * d[1] - (e[1] - a[1]) * d[0]) > 0.05 for e in (p, q)):
+            return False                                  # not on one carrier
+        s, t = (((e[0] - a[0]) * d[0] + (e[1] - a[1]) * d[1]) for e in (p, q))
+        if min(max(s, t), n) - max(min(s, t), 0.0) <= 0.5:
+            return False                                  # end to end, or apart
+        same_way = t > s
+        if same_way and (abs(s) < 0.05 or (math.dist(a, p) < 0.05 and math.dist(b, q) < 0.05)):
+            return False                                  # nested from one tail, or one arrow
+        return True
+
+    order = sorted(range(len(ends)), key=lambda i: (not heavy[i], -math.dist(*ends[i])))
+    lane = [0] * len(ends)
+    for k, i in enumerate(order):
+        for candidate in (0, 1, -1, 2, -2, 3, -3, 4, -4):
+            if not any(lane[j] == candidate and clash(i, j) for j in order[:k]):
+                lane[i] = candidate
+                break
+    return lane
 
 
 def _own_stretch(a: tuple[float, float], b: tuple[float, float],

@@ -166,6 +166,9 @@ class _Scene(_Diagram):
         self.points = [(-1, p) for p in xy] + [(i, p) for i, s in enumerate(self.steps)
                                                for p in _finite_points(s)]
         self.plan_frame()
+        self.placer.name_points(self.view(s.output.xy) for s in self.steps
+                                if isinstance(s.output, g.Point) and not s.output.is_at_infinity
+                                and s.draws and s.label)
         # Each drawn line: the steps that drew it (coincident lines are drawn once) and its ends.
         self.lines: list[tuple[list[Step], tuple | None]] = []
         self.arcs: list[tuple[Step, list[tuple[float, float]], bool]] = []
@@ -328,9 +331,13 @@ class _Scene(_Diagram):
             for part in self.clipped(pts):
                 self.fig.add(Path(tuple(part), "compass"))
                 self.placer.block_path(part, 0.3)
-        # Vectors, dots and edge arrows are drawn on top later; their room is taken now.
+        # Vectors, dots, angles' arcs and edge arrows are drawn on top later; their room is
+        # taken now.
         for step in self.steps:
             out = step.output
+            if isinstance(out, Angle):
+                centre, radius = self.angle_arc(step)
+                self.placer.block_path(arc_points(centre, radius, out.start, out.sweep), 0.4)
             if isinstance(out, g.Segment) and out.length > 0:
                 self.placer.block_path([self.view(out.start.xy), self.view(out.end.xy)], 1.0)
             elif isinstance(out, g.Point) and not out.is_at_infinity and step.draws:
@@ -389,20 +396,24 @@ class _Scene(_Diagram):
         so the degrees keep clear of them.
         """
         measures = [s for s in self.steps if isinstance(s.output, (Dimension, Angle))]
-        angles = [s for s in measures if isinstance(s.output, Angle)]
         for step in sorted(measures, key=lambda s: isinstance(s.output, Angle)):
             out = step.output
             if isinstance(out, Dimension):
                 self.draw_dimension(step, out)
                 continue
-            centre = self.view(out.vertex.xy)
-            twins = [s for s in angles if s.output.vertex.xy == out.vertex.xy]
-            ring = 1.0 if len(twins) < 2 else 1.24 - 0.12 * twins.index(step)
-            radius = out.reach * self.view.scale * ring
+            centre, radius = self.angle_arc(step)
             at = draw_turning_arrow(self.fig, centre, radius, out.start, out.sweep, "dimension")
-            self.placer.block_path(arc_points(centre, radius, out.start, out.sweep), 0.4)
             text = f"{out.degrees:.2f}° {step.label}".strip()
             self.label(text, at, [step], prefer=out.start + out.sweep / 2, gap=1.6, size=3.2)
+
+    def angle_arc(self, step: Step) -> tuple[tuple[float, float], float]:
+        """Centre and radius (paper) of an angle's arc: at the reach of its points, or, for two
+        angles read at one vertex, outside that circle at two radii."""
+        out = step.output
+        twins = [s for s in self.steps if isinstance(s.output, Angle)
+                 and s.output.vertex.xy == out.vertex.xy]
+        ring = 1.0 if len(twins) < 2 else 1.24 - 0.12 * twins.index(step)
+        return self.view(out.vertex.xy), out.reach * self.view.scale * ring
 
     def draw_dimension(self, step: Step, out: Dimension) -> None:
         a, b = self.view(out.start.xy), self.view(out.end.xy)
@@ -486,7 +497,8 @@ class _Scene(_Diagram):
             names = list(dict.fromkeys(typeset(s.label)[0] for s in grp if s.label))
             away = (at[0] - self.centre[0], at[1] - self.centre[1])
             prefer = math.atan2(-away[1], away[0]) if math.hypot(*away) > 1e-6 else math.pi / 4
-            self.label(" ≡ ".join(names), at, grp, prefer=prefer, gap=2.2 if pin else 1.2)
+            self.label(" ≡ ".join(names), at, grp, prefer=prefer, gap=2.2 if pin else 1.2,
+                       own=at if names else None)
 
     def draw_infinities(self) -> None:
         """A centre at infinity: a two-headed arrow across its guide, marked "I₁₄ → ∞"."""

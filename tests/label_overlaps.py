@@ -16,6 +16,7 @@ prints the counts of every bundled figure as that file records them.
 from __future__ import annotations
 
 import json
+import math
 import sys
 from pathlib import Path
 
@@ -68,6 +69,22 @@ def count(fig: Figure) -> dict[str, int]:
         for m in marks:
             hits = [k for k in found.query(m) if m.intersection(things[k]).area > GRAZE]
             out[kind] += len(hits) if kind == "label-arrowhead" else bool(hits)
+    return out
+
+
+def strays(fig: Figure, tol: float = 0.05) -> list[tuple[str, tuple, tuple]]:
+    """Each name of a point that stands nearer another named point than its own (by more
+    than ``tol`` mm, its box to the points): (name, its point, the nearer one)."""
+    named = [t for t in fig.items if isinstance(t, Text) and t.owner is not None]
+    points = {t.owner for t in named}
+    out = []
+    for t in named:
+        b = box(*t.box())
+        mine = b.distance(Point(t.owner))
+        for p in points:
+            if math.dist(p, t.owner) > 0.5 and b.distance(Point(p)) < mine - tol:
+                out.append((t.text + t.sub, t.owner, p))
+                break
     return out
 
 

@@ -1,0 +1,136 @@
+"""What a page has drawn on it, as a weighted raster, so that a label's spot is priced by
+array look-ups instead of one polygon intersection per candidate.
+
+Each obstacle adds its weight to the cells whose centres it covers (an even-odd scan of
+its rings, in numpy). The ink under a box is then the weighted area of the cells it
+covers, read from a summed-area table of the few centimetres round the label being
+placed. One cell is a quarter millimetre: the obstacles already carry 0.3 mm or more of
+clearance about their ink, so a cell's error never lets a label onto a line.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import shapely
+from shapely.geometry.base import BaseGeometry
+
+__all__ = ["Occupancy"]
+
+CELL = 0.25
+"""Side of a cell (mm)."""
+
+_GROW = 40.0
+"""How far (mm) the raster grows past whatever first falls outside it."""
+
+
+class Occupancy:
+    """A raster of weights over the plane, grown as obstacles arrive.
+
+    >>> from shapely.geometry import box
+    >>> occ = Occupancy()
+    >>> occ.paint(box(0, 0, 10, 10), 2.0)
+    >>> occ.ink(np.array([[5.0, 5.0], [20.0, 5.0]]), (1.0, 1.0), (2.0, 1.0))
+    array([[ 8.,  0.],
+           [16.,  0.]])
+    """
+
+    def __init__(self) -> None:
+        self.grid = np.zeros((0, 0))
+        self.x0 = self.y0 = 0.0
+
+    def paint(self, geom: BaseGeometry, weight: float = 1.0) -> None:
+        """Add ``weight`` to every cell whose centre lies inside ``geom`` (a polygon or a
+        collection of them; its holes stay clear)."""
+        pts, ring = shapely.get_coordinates(shapely.get_rings(shapely.get_parts(geom)),
+                                            return_index=True)
+        if len(pts) < 3:
+            return
+        x0, y0 = pts.min(axis=0)
+        x1, y1 = pts.max(axis=0)
+        self._cover(x0, y0, x1, y1)
+        r0, r1 = self._rows(y0, y1)
+        if r1 <= r0:
+            return
+        ys = self.y0 + (np.arange(r0, r1) + 0.5) * CELL
+        edge = ring[:-1] == ring[1:]           # no edge joins one ring to the next
+        a, b = pts[:-1][edge], pts[1:][edge]
+        lo, hi = np.minimum(a[:, 1], b[:, 1]), np.maximum(a[:, 1], b[:, 1])
+        # Where each row's centre line crosses each edge (half-open in y, so a vertex on
+        # the line counts once), NaN where it does not; sorted, they pair into spans.
+        crosses = (ys[:, None] >= lo) & (ys[:, None] < hi)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            t = (ys[:, None] - a[:, 1]) / (b[:, 1] - a[:, 1])
+        xs = np.where(crosses, a[:, 0] + t * (b[:, 0] - a[:, 0]), np.nan)
+        xs.sort(axis=1)
+        n = int(crosses.sum(axis=1).max(initial=0))
+        if n < 2:
+            return
+        starts, ends = xs[:, 0:n - 1:2], xs[:, 1:n:2]
+        rows = np.broadcast_to(np.arange(r0, r1)[:, None], starts.shape)
+        ok = ~np.isnan(ends)
+        cols = self.grid.shape[1]
+        c0 = np.maximum(self._column(starts[ok]), 0)
+        c1 = np.minimum(self._column(ends[ok]), cols)
+        keep = c1 > c0
+        rows, c0, c1 = rows[ok][keep], c0[keep], c1[keep]
+        # The cells of every span, as one run of flat indices (spans never share a cell).
+        length = c1 - c0
+        first = rows * cols + c0 - (np.cumsum(length) - length)
+        self.grid.reshape(-1)[np.repeat(first, length) + np.arange(length.sum())] += weight
+
+    def ink(self, xy: np.ndarray, *sizes: tuple[float, float]) -> np.ndarray:
+        """The weighted area (mm²) under boxes centred at ``xy``: a row for each of ``sizes``,
+        a box's half width and half height.
+
+        Only the window the boxes span is summed: a label looks a few centimetres round.
+        """
+        out = np.zeros((len(sizes), len(xy)))
+        if not self.grid.size or not len(xy):
+            return out
+        hw = np.array([s[0] for s in sizes])[:, None]
+        hh = np.array([s[1] for s in sizes])[:, None]
+        r0, r1 = self._row(xy[:, 1] - hh), self._row(xy[:, 1] + hh)
+        c0, c1 = self._column(xy[:, 0] - hw), self._column(xy[:, 0] + hw)
+        rows, cols = self.grid.shape
+        wr0, wr1 = max(int(r0.min()), 0), min(int(r1.max()), rows)
+        wc0, wc1 = max(int(c0.min()), 0), min(int(c1.max()), cols)
+        if wr1 <= wr0 or wc1 <= wc0:
+            return out
+        table = np.zeros((wr1 - wr0 + 1, wc1 - wc0 + 1))
+        np.cumsum(self.grid[wr0:wr1, wc0:wc1], axis=0, out=table[1:, 1:])
+        np.cumsum(table[1:, 1:], axis=1, out=table[1:, 1:])
+        r0, r1 = (np.minimum(np.maximum(r - wr0, 0), wr1 - wr0) for r in (r0, r1))
+        c0, c1 = (np.minimum(np.maximum(c - wc0, 0), wc1 - wc0) for c in (c0, c1))
+        return (table[r1, c1] - table[r0, c1] - table[r1, c0] + table[r0, c0]) * CELL * CELL
+
+    def _row(self, y):
+        """Index of the first row whose centre is at or past ``y``."""
+        return np.ceil((np.asarray(y) - self.y0) / CELL - 0.5).astype(int)
+
+    def _column(self, x):
+        """Index of the first column whose centre is at or past ``x``."""
+        return np.ceil((np.asarray(x) - self.x0) / CELL - 0.5).astype(int)
+
+    def _rows(self, y0: float, y1: float) -> tuple[int, int]:
+        return max(int(self._row(y0)), 0), min(int(self._row(y1)), self.grid.shape[0])
+
+    def _cover(self, x0: float, y0: float, x1: float, y1: float) -> None:
+        """Grow the raster until it holds the box given, with room to spare; its cells stay
+        on one lattice (multiples of :data:`CELL`), so the old grid drops into the new."""
+        rows, cols = self.grid.shape
+        if self.grid.size:
+            gx1, gy1 = self.x0 + cols * CELL, self.y0 + rows * CELL
+            if x0 >= self.x0 and y0 >= self.y0 and x1 <= gx1 and y1 <= gy1:
+                return
+            x0, y0 = min(x0, self.x0), min(y0, self.y0)
+            x1, y1 = max(x1, gx1), max(y1, gy1)
+        nx0 = CELL * math.floor((x0 - _GROW) / CELL)
+        ny0 = CELL * math.floor((y0 - _GROW) / CELL)
+        grid = np.zeros((math.ceil((y1 + _GROW - ny0) / CELL),
+                         math.ceil((x1 + _GROW - nx0) / CELL)))
+        if self.grid.size:
+            dr, dc = round((self.y0 - ny0) / CELL), round((self.x0 - nx0) / CELL)
+            grid[dr:dr + rows, dc:dc + cols] = self.grid
+        self.grid, self.x0, self.y0 = grid, nx0, ny0

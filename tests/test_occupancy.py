@@ -1,0 +1,70 @@
+"""The placer's raster prices a box by the ink under it: against shapely's exact areas, to
+within the cells along the shapes' edges."""
+
+from __future__ import annotations
+
+import numpy as np
+from hypothesis import given, settings
+from hypothesis import strategies as st
+from shapely.geometry import LineString, Point, box
+
+from tarsim.graphics.labels import LabelPlacer
+from tarsim.graphics.figure import Figure
+from tarsim.graphics.occupancy import CELL, Occupancy
+
+coord = st.floats(-60.0, 60.0)
+
+
+@settings(max_examples=60, deadline=None)
+@given(x0=coord, y0=coord, x1=coord, y1=coord, w=st.floats(0.3, 3.0),
+       cx=coord, cy=coord, hw=st.floats(0.5, 8.0), hh=st.floats(0.5, 8.0),
+       weight=st.floats(0.02, 10.0))
+def test_the_ink_under_a_box_is_its_exact_overlap_to_a_cell_about_the_edges(
+        x0, y0, x1, y1, w, cx, cy, hw, hh, weight):
+    line = LineString([(x0, y0), (x1, y1)]).buffer(w, cap_style="flat")
+    ring = Point(x1, y0).buffer(6.0).difference(Point(x1, y0).buffer(4.0))   # a hole kept clear
+    occ = Occupancy()
+    occ.paint(line, weight)
+    occ.paint(ring, 1.0)
+    got = occ.ink(np.array([[cx, cy]]), (hw, hh))[0, 0]
+    b = box(cx - hw, cy - hh, cx + hw, cy + hh)
+    exact = weight * b.intersection(line).area + b.intersection(ring).area
+    # A cell counts whole or not at all by its centre: the error is at most the cells the
+    # edges of the box and of each shape pass through, each weighed.
+    edges = 2 * (2 * hw + 2 * hh) + line.length + ring.length
+    assert abs(got - exact) <= (weight + 1.0) * edges * CELL
+
+
+def test_a_box_clear_of_the_ink_costs_nothing_and_one_on_it_costs_its_area():
+    occ = Occupancy()
+    occ.paint(box(0.0, 0.0, 20.0, 2.0), 1.0)
+    clear, half = occ.ink(np.array([[10.0, 5.0], [10.0, 2.0]]), (3.0, 2.0))[0]
+    assert clear == 0.0
+    assert half == 6.0 * 2.0          # the lower half of a 6 × 4 box lies on the bar
+
+
+def test_the_raster_grows_to_hold_ink_far_off():
+    occ = Occupancy()
+    occ.paint(box(0.0, 0.0, 1.0, 1.0), 1.0)
+    occ.paint(box(500.0, -300.0, 501.0, -299.0), 2.0)
+    got = occ.ink(np.array([[0.5, 0.5], [500.5, -299.5]]), (1.0, 1.0))[0]
+    assert np.allclose(got, [1.0, 2.0])
+
+
+def test_a_label_takes_the_first_clear_spot_of_its_preferred_side():
+    fig = Figure(100.0, 100.0)
+    placer = LabelPlacer(fig)
+    placer.block(box(45.0, 40.0, 80.0, 49.0))        # ink right of and above the anchor
+    c, cost = placer.spot(6.0, 3.0, (50.0, 50.0), prefer=0.0)
+    assert cost == 0.0
+    x0, y0, x1, y1 = c[0] - 3.0, c[1] - 1.5, c[0] + 3.0, c[1] + 1.5
+    assert y0 >= 49.0 + placer.clearance - 1e-9 or x1 <= 45.0 - placer.clearance + 1e-9
+
+
+def test_a_name_is_kept_nearer_its_own_point_than_another():
+    fig = Figure(100.0, 100.0)
+    placer = LabelPlacer(fig)
+    placer.name_points([(50.0, 50.0), (50.0, 44.0)])
+    t = placer.place("A", (50.0, 50.0), prefer=np.pi / 2, own=(50.0, 50.0))   # up: toward B
+    x0, y0, x1, y1 = t.box()
+    assert y0 > 47.0          # above A it would stand nearer B: it goes beside or below
