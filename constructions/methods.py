@@ -31,7 +31,7 @@ from .record import Panel
 from .reference import solver
 from .reference.centres import mechanism_size
 from .reference.rotatability import grashof_class
-from .scales import Scales, choose_scales
+from .scales import ROOM, Scales, choose_scales
 
 __all__ = ["Method", "Work", "answer_all"]
 
@@ -116,8 +116,9 @@ class Work:
     """
 
     def __init__(self, mechanism: Mechanism, asks: tuple[A.Ask, ...], chosen: tuple[str, ...],
-                 stated: dict[str, float] | None = None):
+                 stated: dict[str, float] | None = None, room: tuple[float, float] = ROOM):
         self.mechanism = mechanism
+        self.room = room
         self.asks = asks
         self.chosen = chosen
         self.stated = dict(stated or {})
@@ -140,6 +141,7 @@ class Work:
         v = self.stated.get("velocity")
         return choose_scales(self.assembly, velocity=v, velocity_polygon=v,
                              acceleration_polygon=self.stated.get("acceleration"),
+                             room=self.room,
                              speeds=() if v else drawable_speeds(self.mechanism,
                                                                  self.kinematics))
 

@@ -26,7 +26,8 @@ __all__ = ["nice", "Scales", "Stated", "choose_scales", "space_per_cm", "velocit
            "drawing_extent", "face_ends", "ROOM", "FACE_REACH"]
 
 ROOM = (150.0, 130.0)
-"""The largest drawing area of the space diagram, paper mm wide × high."""
+"""The largest drawing area of the space diagram on A4, paper mm wide × high (a larger sheet
+scales it: ``graphics.paper.room``)."""
 
 FACE_REACH = 0.8
 """A flat face is drawn this many of its circle's radii either side of the contact point."""
@@ -152,14 +153,14 @@ def face_ends(asm: Assembly, joint, contact: str, margin: float = 0.0):
     return (fx + lo * dx, fy + lo * dy), (fx + hi * dx, fy + hi * dy)
 
 
-def space_per_cm(asm: Assembly) -> float:
+def space_per_cm(asm: Assembly, room: tuple[float, float] = ROOM) -> float:
     """The space scale (file units per paper cm): the exercise's, or the nice one that fits
-    the drawing in :data:`ROOM`."""
+    the drawing in ``room`` (paper mm, wide × high; :data:`ROOM` on A4)."""
     m = asm.mechanism
     if m.scale:
         return m.scale
     w, h = (e / m.units.metres for e in drawing_extent(asm))
-    return max(nice(w * 10.0 / ROOM[0]), nice(h * 10.0 / ROOM[1]))
+    return max(nice(w * 10.0 / room[0]), nice(h * 10.0 / room[1]))
 
 
 def velocity_per_cm(speed: float) -> float:
@@ -219,7 +220,7 @@ def readable_per_cm(speed: float, others: Sequence[float], longest: float) -> fl
 def choose_scales(asm: Assembly, *, velocity: float | None = None,
                   velocity_polygon: float | None = None,
                   acceleration_polygon: float | None = None,
-                  speeds: Sequence[float] = ()) -> Scales:
+                  speeds: Sequence[float] = (), room: tuple[float, float] = ROOM) -> Scales:
     """The scales of a position of ``asm``: those the exercise states, the rest chosen.
 
     ``velocity`` is a stated velocity scale for the vectors drawn on the space
@@ -227,10 +228,11 @@ def choose_scales(asm: Assembly, *, velocity: float | None = None,
     moving, a nice one is chosen that draws the input and every one of ``speeds``
     (the magnitudes, unit/s, of the vectors the methods may draw there) readably
     (:func:`readable_per_cm`). The stated velocity scale also states the velocity
-    polygon's, as the exercise words it once for both.
+    polygon's, as the exercise words it once for both. ``room`` is the space diagram's
+    drawing area (:func:`space_per_cm`).
     """
     speed = asm.mechanism.input_speed / asm.mechanism.units.metres
-    space = space_per_cm(asm)
+    space = space_per_cm(asm, room)
     if velocity is None and speed > 0.0:
         extent = max(drawing_extent(asm)) / asm.mechanism.units.metres * 10.0 / space
         velocity = readable_per_cm(speed, speeds, max(LONGEST_MM[0], LONGEST_MM[1] * extent))

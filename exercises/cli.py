@@ -88,6 +88,11 @@ def _exercise(source: str, angle: float | None):
 
 
 _source = click.argument("source", metavar="FILE")
+_paper = click.option("--paper", type=click.Choice(["A4", "A3", "letter"], case_sensitive=False),
+                      default="A4", show_default=True,
+                      help="Sheet to set each figure on; its scales are chosen to fill it. A "
+                           "figure drawn at a scale the exercise states keeps it, on a bigger "
+                           "page if it must.")
 _angle = click.option("--angle", type=float, default=None, metavar="ANGLE",
                       help="Input angle to use instead of the file's, in the file's angle unit.")
 
@@ -112,8 +117,9 @@ def cli():
 @click.option("-o", "--output", "output", required=True, type=click.Path(dir_okay=False),
               help="Figure to write: .svg, .pdf or .png (PDF and PNG need libcairo2).")
 @_angle
+@_paper
 @_fails_cleanly
-def draw(source, output, angle):
+def draw(source, output, angle, paper):
     """Draw the kinematic diagram of FILE at its input position.
 
     Every joint is located by compass construction (arcs and lines, one dyad
@@ -127,11 +133,15 @@ def draw(source, output, angle):
       tarsim draw my-linkage.toml -o fig.svg --angle 120
     """
     from ..constructions.assembly import assemble
+    from ..constructions.scales import space_per_cm
     from ..graphics.diagram import draw_kinematic_diagram
     from ..graphics.export import write_figure
+    from ..graphics.paper import on_sheet, paper as sheet, room
 
     mech = _mechanism(source, angle)
-    path = write_figure(draw_kinematic_diagram(assemble(mech)), output)
+    asm, where = assemble(mech), sheet(paper)
+    fig = draw_kinematic_diagram(asm, per_cm=space_per_cm(asm, room(where)))
+    path = write_figure(on_sheet(fig, where), output)
     click.echo(f"wrote {path}")
 
 
@@ -165,8 +175,9 @@ def check(source, angle):
 @_angle
 @click.option("--pdf/--no-pdf", default=True, show_default=True,
               help="Also write a PDF of each figure (needs libcairo2).")
+@_paper
 @_fails_cleanly
-def solve(source, out_dir, angle, pdf):
+def solve(source, out_dir, angle, pdf, paper):
     """Solve an exercise by graphical construction and check every number.
 
     FILE is a mechanism file whose [ask] table names what to find (see the
@@ -191,13 +202,17 @@ def solve(source, out_dir, angle, pdf):
       results.json   every quantity (SI) with its analytic reference and error
       .tarsim-manifest.json   what this solve wrote (the next one replaces it)
     With several positions ([ask] at = [...]) each figure's name ends in the
-    position (worked-t-2.34s.svg); --angle solves one angle instead.
+    position (worked-t-2.34s.svg); --angle solves one angle instead. Each
+    figure is set on one sheet of --paper, upright or on its side; a worked
+    page that one sheet cannot hold runs on over two or more (a page each in
+    its PDF, one under another in its SVG).
 
     \b
     Example:
       tarsim solve four-bar -o four-bar-solution
       tarsim solve crank-shaper -o shaper      # θ2 = 90° and t = 2.34 s
       tarsim solve my-exercise.toml --angle 120 --no-pdf
+      tarsim solve whitworth --paper A3          # the worked page on one sheet
 
     The exit status is 3 if any constructed number disagrees with the analytic
     one beyond the tolerance its conditioning allows (the files are written all
@@ -206,7 +221,7 @@ def solve(source, out_dir, angle, pdf):
     from .solution_files import answer_line, solve_worked
     from ..graphics.export import cairo_missing, output_folder
 
-    ex = _exercise(source, angle)
+    ex = replace(_exercise(source, angle), paper=paper)
     out = Path(out_dir or f"{ex.id}-solution")
     with output_folder(out):      # a folder that cannot be written fails before the solve
         worked = solve_worked(ex)
@@ -223,6 +238,9 @@ def solve(source, out_dir, angle, pdf):
                 click.echo(answer_line(name, qq, ex.mechanism.units))
         for note in sol.notes:
             click.echo(f"note: {note}")
+    for stem, (w, h) in worked.oversize().items():
+        click.echo(f"note: {stem} at the exercise's scale is {w:.0f} × {h:.0f} mm, more than "
+                   f"{paper} holds; its page is that size (--paper A3 may hold it)")
     click.echo(f"wrote {len(written)} files to {out}/")
     if reason:
         click.echo(f"PDF skipped: {reason}", err=True)

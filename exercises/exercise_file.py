@@ -82,6 +82,9 @@ class Exercise:
     acceleration_per_cm: float | None = None
     """The stated acceleration scale, file length units per s² per paper cm."""
     asks: tuple[A.Ask, ...] = ()
+    paper: str = "A4"
+    """The sheet the figures are set on (``graphics.paper.PAPERS``): their scales are chosen
+    to fill it."""
 
     def __post_init__(self) -> None:
         if not self.asks:

@@ -22,6 +22,7 @@ from ..constructions.polygon_walk import Polygon
 from ..constructions.record import Panel
 from ..constructions.reference.solver import Kinematics
 from ..constructions.registry import METHODS
+from ..graphics.paper import paper, room
 
 from .exercise_file import Exercise, Position
 
@@ -89,7 +90,8 @@ def solve_overall(ex: Exercise) -> Overall:
     """
     if not ex.mechanism_asks:
         return Overall()
-    work = Work(ex.mechanism, ex.mechanism_asks, ex.methods, ex.stated)
+    work = Work(ex.mechanism, ex.mechanism_asks, ex.methods, ex.stated,
+                room(paper(ex.paper)))
     quantities, answers = answer_all(work, METHODS)
     return Overall(work, quantities, answers)
 
@@ -125,7 +127,7 @@ def solve_exercise(ex: Exercise) -> Solution:
         construction breaks down; the message says which and where.
     """
     mech = ex.mechanism
-    work = Work(mech, ex.position_asks, ex.methods, ex.stated)
+    work = Work(mech, ex.position_asks, ex.methods, ex.stated, room(paper(ex.paper)))
     if ex.without_motion:
         raise InputError(ex.without_motion, file=mech.source or None)
     work.prepare()

@@ -23,16 +23,18 @@ from ..constructions.checks import FigureSpec, Quantity
 from ..constructions.limit_positions import drawn_limits
 from ..constructions.narration import narrate
 from ..constructions.record import Kind, Panel, Slice, slice
+from ..constructions.scales import nice
 from ..constructions.velocity_drawing import method_words
 from ..constructions.velocity_polygon import WORKED, drawn_velocity_polygon
 from ..graphics.circle_diagram import draw_circle_diagram
 from ..graphics.export import RenderError, cairo_missing, pdf_pages, svg_to, write_folder
 from ..graphics.figure import Figure, stack_pages
-from ..graphics.polygon_panel import draw_polygon_panel
+from ..graphics.polygon_panel import POLYGON_BOX, draw_polygon_panel
 from ..graphics.scene import draw_scene
 from ..graphics.svg import to_svg
 from ..graphics.workers import draw_each
-from ..graphics.worked_page import compose_worked_page
+from ..graphics.paper import Paper, on_sheet, paper, room, sheet_size
+from ..graphics.worked_page import compose_worked_sheets, holds_panel
 
 from .exercise_file import Exercise
 from .results_json import results_document, results_json
@@ -155,7 +157,22 @@ class WorkedSolution:
             If the folder cannot be made or written, holds a file of one of these names
             that tarsim did not write, or PDF is asked and libcairo2 is missing.
         """
-        return write_solution(self.files(), folder, pdf=pdf)
+        return write_solution(self.files(), folder, pdf=pdf, sheets=self.sheets())
+
+    def oversize(self) -> dict[str, tuple[float, float]]:
+        """Each figure a sheet of the exercise's paper does not hold (drawn at a scale the
+        exercise states), with its page's size (mm)."""
+        sheet = paper(self.exercise.paper)
+        fits = {(sheet.width, sheet.height), sheet.turned}
+        return {f.stem: (s.width, s.height) for f in self.pages
+                for s in (f.figure.sheets or [f.figure])
+                if (round(s.width, 1), round(s.height, 1)) not in fits}
+
+    def sheets(self) -> dict[str, list[str]]:
+        """Each figure that runs over several sheets: its PDF's name, and the SVG of each
+        sheet, a page each."""
+        return {f"{f.stem}.pdf": [to_svg(s) for s in f.figure.sheets]
+                for f in self.pages if f.figure.sheets}
 
 
 def solve_worked(ex: Exercise) -> WorkedSolution:
@@ -183,12 +200,15 @@ def solve_all(ex: Exercise) -> tuple[list[Solution], Overall, dict[str, str]]:
     return worked.positions, worked.overall, worked.files()
 
 
-def write_solution(files: dict[str, str], out_dir: str | Path, *, pdf: bool = True) -> list[Path]:
+def write_solution(files: dict[str, str], out_dir: str | Path, *, pdf: bool = True,
+                   sheets: dict[str, list[str]] | None = None) -> list[Path]:
     """Write the rendered files into ``out_dir`` (made if missing), with a PDF per figure,
     all or nothing (see :func:`~tarsim.graphics.export.write_folder`).
 
-    ``solution.pdf`` has those figures as its pages, in order. The previous solution's
-    files in the folder are replaced whole; a file there tarsim did not write is kept.
+    ``solution.pdf`` has those figures as its pages, in order; a figure that runs over
+    several sheets (``sheets``: its PDF's name and each sheet's SVG) has a page a sheet.
+    The previous solution's files in the folder are replaced whole; a file there tarsim
+    did not write is kept.
 
     Raises
     ------
@@ -199,15 +219,22 @@ def write_solution(files: dict[str, str], out_dir: str | Path, *, pdf: bool = Tr
     """
     pdfs = {}
     if pdf:
-        figures = {name[:-4] + ".pdf": text for name, text in files.items()
+        sheets = sheets or {}
+        figures = {name[:-4] + ".pdf": sheets.get(name[:-4] + ".pdf", [text])
+                   for name, text in files.items()
                    if name.endswith(".svg") and name != "solution.svg"}
-        if figures:
+        pages = [text for texts in figures.values() for text in texts]
+        if pages:
             missing = cairo_missing()   # loaded here once, for every worker to inherit
             if missing:
                 raise RenderError(missing)
-            made = draw_each([partial(svg_to, text, "pdf") for text in figures.values()],
-                             [len(text) for text in figures.values()])   # the longest first
-            pdfs = dict(zip(figures, made))
+            made = draw_each([partial(svg_to, text, "pdf") for text in pages],
+                             [len(text) for text in pages])   # the longest first
+            k = 0
+            for name, texts in figures.items():
+                one = made[k:k + len(texts)]
+                pdfs[name] = one[0] if len(one) == 1 else pdf_pages(one)
+                k += len(texts)
             pdfs["solution.pdf"] = pdf_pages(made)
     return write_folder({**files, **pdfs}, out_dir)
 
@@ -236,13 +263,51 @@ def _figure(sol: Solution, spec: FigureSpec, answers) -> _Sketch:
         return _worked_page(sol, answers)
     if spec.kind == "circle diagram":
         every = slice(c, [s.id for s in c if s.kind is Kind.CENTRE], base=asm.position_steps)
-        return _Sketch(spec.stem, spec.heading, lambda: draw_circle_diagram(every, title=name),
-                       None)
+        sheet = paper(sol.exercise.paper)
+        return _Sketch(spec.stem, spec.heading,
+                       lambda: on_sheet(draw_circle_diagram(every, title=name), sheet), None)
     shown = _shown(c, answers, asm.position_steps)
     notes = notes_under(sol, Panel.SPACE) if spec.notes else []
-    return _Sketch(spec.stem, spec.heading, lambda: draw_scene(
+    sheet = paper(sol.exercise.paper)
+    return _Sketch(spec.stem, spec.heading, lambda: on_sheet(_fitted(lambda per_cm: draw_scene(
         shown, title=f"{name}: {spec.caption}", notes=notes, velocity_scale=spec.velocity_scale,
-        per_cm=work.scales.space, velocity_stated=spec.velocity_stated), shown)
+        per_cm=per_cm, velocity_stated=spec.velocity_stated), work.scales.space,
+        _holds(sheet), fixed=bool(sol.exercise.mechanism.scale) or bool(spec.velocity_stated),
+        grow=spec.velocity_scale is None), sheet), shown)
+
+
+def _fitted(draw: Callable[[float], Figure], per_cm: float,
+            holds: Callable[[Figure], bool], *, fixed: bool = False,
+            grow: bool = False) -> Figure:
+    """``draw`` at ``per_cm`` (the space scale); a figure that ``holds`` refuses is drawn
+    again a nice step coarser, up to three times, and one it holds, with ``grow``, a nice
+    step finer while it still holds it (twice at most), so the drawing fills its sheet.
+    With ``fixed`` (the exercise states the scale) it is drawn once, its page grown if it
+    must be."""
+    fig = draw(per_cm)
+    first = per_cm
+    for _ in range(0 if fixed else 3):
+        if holds(fig):
+            break
+        per_cm = nice(per_cm * 1.01)
+        fig = draw(per_cm)
+    for _ in range(2 if grow and not fixed and per_cm == first and holds(fig) else 0):
+        finer = nice(per_cm * 0.99, up=False)
+        # Only the drawing grows, not its caption: a figure that would not hold even four
+        # fifths of it grown is not drawn to find out.
+        k = 0.8 * per_cm / finer
+        if not holds(Figure(fig.width * k, fig.height * k)):
+            break
+        bigger = draw(finer)
+        if not holds(bigger):
+            break
+        fig, per_cm = bigger, finer
+    return fig
+
+
+def _holds(sheet: Paper) -> Callable[[Figure], bool]:
+    """Whether a figure fits on ``sheet``, upright or on its side."""
+    return lambda fig: sheet_size(fig, sheet) is not None
 
 
 def _shown(c, answers, base, panel: Panel | None = None) -> Slice:
@@ -282,13 +347,18 @@ def _worked_page(sol: Solution, answers) -> _Sketch:
                           _show(qq.value, m.units, qname, DRAFTING),
                           _show(qq.reference, m.units, qname, DRAFTING), f"{qq.rel_error:.1e}"))
 
+    sheet = paper(ex.paper)
+    upright = (sheet.width, sheet.height)
+
     def draw() -> Figure:
-        space = draw_scene(Slice(c, ()), title=f"{m.name}: space diagram{where}",
-                           per_cm=work.scales.space)
-        figures = [space] + [draw_polygon_panel(shown, **how)
+        space = _fitted(lambda per_cm: draw_scene(
+            Slice(c, ()), title=f"{m.name}: space diagram{where}", per_cm=per_cm),
+            work.scales.space, lambda fig: holds_panel(upright, fig), fixed=bool(m.scale))
+        figures = [space] + [draw_polygon_panel(shown, room=room(sheet, POLYGON_BOX), **how)
                              for (_, _, shown), how in zip(panels, drawn)]
-        return compose_worked_page(f"{m.name}: worked solution{where}", figures, table,
-                                   notes_under(sol, Panel.SPACE))
+        sheets = compose_worked_sheets(f"{m.name}: worked solution{where}", figures, table,
+                                       notes_under(sol, Panel.SPACE), sheet=upright)
+        return sheets[0] if len(sheets) == 1 else stack_pages(sheets)
 
     return _Sketch(WORKED.stem, WORKED.heading, draw, None, tuple(panels))
 
@@ -297,12 +367,14 @@ def _overall_figures(ex: Exercise, overall: Overall) -> list[_Sketch]:
     """The limit positions, when the time ratio or stroke is asked; the mechanism itself when
     nothing is asked at a position."""
     work, m = overall.work, ex.mechanism
+    sheet = paper(ex.paper)
     if work is None or not work.has("limits"):
         if ex.position_asks or work is None:
             return []
         asm = work.assembly
-        return [_Sketch("mechanism", "The mechanism", lambda: draw_scene(
-            Slice(asm, ()), title=m.name, per_cm=work.scales.space), None)]
+        return [_Sketch("mechanism", "The mechanism", lambda: on_sheet(_fitted(
+            lambda per_cm: draw_scene(Slice(asm, ()), title=m.name, per_cm=per_cm),
+            work.scales.space, _holds(sheet), fixed=bool(m.scale), grow=True), sheet), None)]
     lp = drawn_limits(work)
     notes = [_time_ratio_words(m, lp)]
     if lp.stroke is not None:
@@ -310,9 +382,10 @@ def _overall_figures(ex: Exercise, overall: Overall) -> list[_Sketch]:
     answers = [a for a in overall.answers if a.figures]
     shown = _shown(work.assembly, answers, work.assembly.position_steps)
     spec = answers[0].figures[0]
-    return [_Sketch(spec.stem, spec.heading, lambda: draw_scene(
-        shown, title=f"{m.name}: {spec.caption}", notes=notes, per_cm=work.scales.space),
-        shown)]
+    return [_Sketch(spec.stem, spec.heading, lambda: on_sheet(_fitted(
+        lambda per_cm: draw_scene(shown, title=f"{m.name}: {spec.caption}", notes=notes,
+                                  per_cm=per_cm),
+        work.scales.space, _holds(sheet), fixed=bool(m.scale), grow=True), sheet), shown)]
 
 
 def _time_ratio_words(m, lp) -> str:

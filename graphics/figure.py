@@ -68,6 +68,7 @@ STYLES: dict[str, Style] = {
     "scale": Style(width=0.3, cap="butt"),
     "scale_fill": Style(width=0.3, fill="#000", cap="butt", join="miter"),
     "frame": Style(width=0.25, stroke="#999"),
+    "page_rule": Style(width=0.25, stroke="#999", dash=(3.0, 2.0)),
     "text": Style(stroke=None, fill="#000"),
     # Plots against crank angle (graphics.plot).
     "plot_frame": Style(width=0.3, cap="butt", join="miter"),
@@ -195,6 +196,9 @@ class Figure:
     height: float
     items: list[Path | Circle | Text] = field(default_factory=list)
     title: str = ""
+    sheets: list[Figure] = field(default_factory=list)
+    """A figure that runs over several sheets: each sheet, in order (a PDF prints a page
+    each); its own items are them stacked (:func:`stack_pages`), for one SVG."""
 
     def add(self, item: Path | Circle | Text) -> None:
         """Append a primitive."""
@@ -362,11 +366,11 @@ def stack_pages(pages: list[Figure], gap: float = 12.0) -> Figure:
     """
     width = max(p.width for p in pages)
     out = Figure(width, sum(p.height for p in pages) + gap * (len(pages) - 1),
-                 title=pages[0].title)
+                 title=pages[0].title, sheets=[s for p in pages for s in (p.sheets or [p])])
     y = 0.0
     for i, page in enumerate(pages):
         if i:
-            out.line((0.0, y - gap / 2), (width, y - gap / 2), "frame")
+            out.line((0.0, y - gap / 2), (width, y - gap / 2), "page_rule")
         out.items += [_shifted(it, 0.0, y) for it in page.items]
         y += page.height + gap
     return out

@@ -64,7 +64,8 @@ _LANE = 3.0         # mm between collinear arrows drawn side by side (:func:`_la
 
 # ----- the public function ----------------------------------------------------------------
 def draw_polygon_panel(shown: Slice, *, panel: Panel, scale: float, units: Units, title: str,
-                       notes: Sequence[str] = (), per_cm: float | None = None) -> Figure:
+                       notes: Sequence[str] = (), per_cm: float | None = None,
+                       room: tuple[float, float] = POLYGON_BOX) -> Figure:
     """Draw the steps of a velocity or acceleration polygon that ``shown`` holds as a figure.
 
     Parameters
@@ -89,6 +90,8 @@ def draw_polygon_panel(shown: Slice, *, panel: Panel, scale: float, units: Units
         The scale to draw at, file length units per second (per s²) per paper
         cm, when the exercise states one; by default the nice scale that fits
         :data:`POLYGON_BOX`.
+    room
+        The paper (mm, wide × high) the polygon is fitted to when no scale is stated.
 
     Returns
     -------
@@ -137,7 +140,7 @@ def draw_polygon_panel(shown: Slice, *, panel: Panel, scale: float, units: Units
         raise TarsimError(f"nothing to draw: no point or vector of the {panel} polygon is "
                           "among the steps asked for")
     return _PolygonPanel(steps, shown.numbers(panel), panel, float(scale), units,
-                         per_cm).draw(title, notes)
+                         per_cm, room).draw(title, notes)
 
 
 # ----- what the steps put on paper ----------------------------------------------------------
@@ -151,15 +154,16 @@ def _finite_points(step: Step) -> list[tuple[float, float]]:
     return []
 
 
-def _per_cm(points: list[tuple[float, float]], scale: float, units: Units) -> float:
-    """Choose the nice N of "1 cm = N unit/s" that fits the polygon in :data:`POLYGON_BOX`.
+def _per_cm(points: list[tuple[float, float]], scale: float, units: Units,
+            box: tuple[float, float] = POLYGON_BOX) -> float:
+    """Choose the nice N of "1 cm = N unit/s" that fits the polygon in ``box`` (mm).
 
     ``points`` are in drawing metres. A polygon of no extent (everything at
     rest) fits any scale; 1 is stated.
     """
     to_units = 1.0 / (scale * units.metres)        # drawing metres → file units per second
     fits = []
-    for k, room in enumerate(POLYGON_BOX):
+    for k, room in enumerate(box):
         extent = (max(p[k] for p in points) - min(p[k] for p in points)) * to_units
         if extent > 0.0:
             fits.append(nice_per_cm(extent, room))
@@ -211,7 +215,8 @@ class _PolygonPanel:
     """Working lines first, then the arrows and the pole over them, then every label."""
 
     def __init__(self, steps: list[Step], numbers: dict[Ref, int], panel: Panel, scale: float,
-                 units: Units, per_cm: float | None = None):
+                 units: Units, per_cm: float | None = None,
+                 room: tuple[float, float] = POLYGON_BOX):
         self.steps = steps
         self.numbers = numbers
         self.panel = panel
@@ -222,7 +227,7 @@ class _PolygonPanel:
         # The yardstick of "lies on" and "coincides": the panel's reach from the origin.
         self.size = max(1.0, max(xs) - min(xs), max(ys) - min(ys),
                         max(math.hypot(*p) for p in self.world))
-        self.per_cm = per_cm or _per_cm(self.world, scale, units)
+        self.per_cm = per_cm or _per_cm(self.world, scale, units, room)
         # Paper mm per drawing metre: 10 mm stands for per_cm file units per second.
         self.view = View(10.0 / (self.per_cm * units.metres * scale), (0.0, 0.0))
         self.fig = Figure(0.0, 0.0)

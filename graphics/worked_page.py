@@ -4,9 +4,11 @@ Each panel arrives as a finished figure with its own caption and scale bar, so i
 is placed on the page by translation only, never rescaled: a scale bar that
 measured true on its own figure measures true on the page. The panels keep their
 order (the space diagram first, at the top left); of the ways to lay them out in
-rows or columns, the most compact one that fits an A3 landscape sheet is taken,
-and if none fits, the smallest page that holds them (the page grows, the panels
-never shrink). The results table and the notes follow under the panels.
+rows or columns, the most compact one that fits the sheet is taken, and if none
+fits, the smallest page that holds them (the page grows, the panels never shrink).
+The results table and the notes follow under the panels. On a sheet too small for
+them all (A4), they run on over as many sheets as they need
+(:func:`compose_worked_sheets`), each holding as many as it can, in order.
 """
 
 from __future__ import annotations
@@ -20,7 +22,7 @@ from ..constructions.errors import TarsimError
 from .figure import Figure, Path, Text, text_width
 from .labels import typeset
 
-__all__ = ["compose_worked_page", "A3"]
+__all__ = ["compose_worked_page", "compose_worked_sheets", "holds_panel", "A3"]
 
 A3 = (420.0, 297.0)
 """An A3 landscape sheet, mm: the page a worked solution is kept to when it fits."""
@@ -84,25 +86,101 @@ def compose_worked_page(title: str, panels: Sequence[Figure], table: Sequence[Se
     >>> sorted(p.points[0] for p in page.items if getattr(p, "style", "") == "frame")
     [(10.0, 20.0), (66.0, 20.0)]
     """
+    results = _results(panels, table, notes)
+    return _sheet(title, panels, results, A3)
+
+
+def compose_worked_sheets(title: str, panels: Sequence[Figure], table: Sequence[Sequence[str]],
+                          notes: Sequence[str] = (), sheet: tuple[float, float] = A3
+                          ) -> list[Figure]:
+    """The panels and the results of :func:`compose_worked_page` over as few sheets of
+    ``sheet`` (width, height in mm, upright; each may be turned) as hold them, in order:
+    each sheet takes as many of what is left as it holds, the results last. A panel no
+    sheet holds has a grown sheet of its own. Every sheet after the first is titled
+    "(continued)".
+
+    >>> square = Figure(150.0, 150.0, [Path(((0.0, 0.0), (150.0, 150.0)), "link")])
+    >>> sheets = compose_worked_sheets("Two panels", [square, square],
+    ...                                [("quantity", "construction"), ("V_B", "1 m/s")],
+    ...                                sheet=(210.0, 297.0))
+    >>> [(s.width, s.height) for s in sheets]          # A4 on its side: a square a sheet
+    [(297.0, 210.0), (297.0, 210.0)]
+    """
+    results = _results(panels, table, notes)
+    items: list[Figure] = [*panels, results]
+    sheets, i = [], 0
+    while i < len(items):
+        j, size = _most_held(items[i:], sheet)
+        head = title if not sheets else f"{title} (continued)"
+        group = items[i:i + j]
+        last = i + j == len(items)
+        sheets.append(_sheet(head, group[:-1] if last else group, results if last else None,
+                             size))
+        i += j
+    return sheets
+
+
+def _results(panels: Sequence[Figure], table: Sequence[Sequence[str]],
+             notes: Sequence[str]) -> Figure:
+    """The results table and notes as a figure, once the panels and the rows are checked."""
     if not panels:
         raise TarsimError("a worked page needs at least one panel to show")
     if any(len(row) != len(table[0]) for row in table):
         bad = next(i for i, row in enumerate(table) if len(row) != len(table[0]))
         raise TarsimError(f"row {bad} of the results table has {len(table[bad])} cells, but the "
                           f"header has {len(table[0])}; give every row as many")
-    results = _draw_results(table, notes)
+    return _draw_results(table, notes)
+
+
+def _room(size: tuple[float, float]) -> tuple[float, float]:
+    """What a sheet of ``size`` holds under its title, within its margins."""
+    return size[0] - 2 * _MARGIN, size[1] - _MARGIN - 2.0 * _TITLE - _MARGIN
+
+
+def holds_panel(sheet: tuple[float, float], panel: Figure) -> bool:
+    """Whether a sheet of ``sheet`` (mm, upright; it may be turned) holds ``panel`` under its
+    title: a worked page's panel drawn too big for it is drawn again smaller."""
+    return any(panel.width <= r[0] + 1e-9 and panel.height <= r[1] + 1e-9
+               for r in (_room((max(sheet), min(sheet))), _room((min(sheet), max(sheet)))))
+
+
+def _most_held(items: Sequence[Figure], sheet: tuple[float, float]
+               ) -> tuple[int, tuple[float, float]]:
+    """How many of ``items`` (panels, the results last) one sheet holds, the most first,
+    and the sheet's size, on its side or upright: landscape first, as panels sit side by
+    side. One at least, on a sheet grown for it if it must be."""
+    sizes = [(max(sheet), min(sheet)), (min(sheet), max(sheet))]
+    for j in range(len(items), 0, -1):
+        group = items[:j]
+        ends = j == len(items)
+        panels = group[:-1] if ends else group
+        foot = (group[-1].width, group[-1].height) if ends else (0.0, 0.0)
+        for size in sizes:
+            room = _room(size)
+            _, (w, h) = _choose_layout([(p.width, p.height) for p in panels] or [(0.0, 0.0)],
+                                       foot, room)
+            if w <= room[0] + 1e-9 and h <= room[1] + 1e-9:
+                return j, size
+    return 1, sizes[0]
+
+
+def _sheet(title: str, panels: Sequence[Figure], results: Figure | None,
+           size: tuple[float, float]) -> Figure:
+    """One sheet of ``size`` (grown if it must be): the title, the panels framed, then the
+    results if given."""
     top = _MARGIN + 2.0 * _TITLE
-    room = (A3[0] - 2 * _MARGIN, A3[1] - top - _MARGIN)
-    spots, (w, h) = _choose_layout([(p.width, p.height) for p in panels],
-                                   (results.width, results.height), room)
-    page = Figure(round(max(A3[0], w + 2 * _MARGIN), 1), round(max(A3[1], top + h + _MARGIN), 1),
-                  title=title)
+    foot = (results.width, results.height) if results is not None else (0.0, 0.0)
+    sizes = [(p.width, p.height) for p in panels] or [(0.0, 0.0)]
+    spots, (w, h) = _choose_layout(sizes, foot, _room(size))
+    page = Figure(round(max(size[0], w + 2 * _MARGIN), 1),
+                  round(max(size[1], top + h + _MARGIN), 1), title=title)
     page.add(Text((_MARGIN, _MARGIN + _TITLE / 2), title, _TITLE, "start", italic=False,
                   weight="bold"))
     for panel, (x, y) in zip(panels, spots):
         _place_panel(page, panel, (_MARGIN + x, top + y), frame=True)
-    x, y = spots[-1]
-    _place_panel(page, results, (_MARGIN + x, top + y), frame=False)
+    if results is not None:
+        x, y = spots[-1]
+        _place_panel(page, results, (_MARGIN + x, top + y), frame=False)
     return page
 
 
