@@ -182,6 +182,7 @@ class _Diagram:
         self.paper = {n: self.view(p) for n, p in self.world.items()}
         self.placer.name_points(self.paper.values())
         self.tracks = [self.track(a) for a in self.m.arcs if a.contact is None]
+        self.downs: dict[str, tuple[float, float]] = {}    # each ground pivot's support
 
     # ----- drawing ---------------------------------------------------------------------
     def draw(self) -> Figure:
@@ -371,6 +372,7 @@ class _Diagram:
                     if s.guide_link == k and s.point in self.paper:
                         dirs.append(unit(_sub(self.paper[s.point], at)))
             down = _clearest_direction(dirs)
+            self.downs[name] = down
             foot = draw_ground_pivot(self.fig, at, down)
             self.placer.block(foot)
 
@@ -497,8 +499,10 @@ class _Diagram:
                               spread=math.pi / 4, gap=gap, size=3.4, italic=False)
         pivots = [n for n in self.m.frame.names if len(self.links_at(n)) > 1]
         if pivots:
-            self.placer.place("1", self.paper[pivots[0]], prefer=-math.pi / 2, gap=7.5,
-                              size=3.4, italic=False)
+            # Past the pivot's hatching, the way its support stands, away from its links.
+            dx, dy = self.downs.get(pivots[0], (0.0, 1.0))
+            self.placer.place("1", self.paper[pivots[0]], prefer=math.atan2(-dy, dx),
+                              spread=math.pi / 2, gap=7.5, size=3.4, italic=False)
 
     def label_points(self) -> None:
         centre = _centroid(list(self.paper.values()))

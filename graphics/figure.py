@@ -125,8 +125,8 @@ class Text:
     ``sub`` is set after ``text`` as a true subscript (smaller, dropped below the
     baseline): ``Text(at, "V", sub="A")`` prints V with subscript A; ``tail``
     follows the subscript back on the baseline ("V_B by radius rotation"). ``owner`` is
-    the point a point's label names, kept so that a figure can be held to standing
-    nearer its own point than any other named one.
+    what the label names, by its points (one for a point, tail and tip for a vector), kept
+    so that a figure can be held to a label standing nearer its own than any other.
     """
 
     at: tuple[float, float]
@@ -137,7 +137,7 @@ class Text:
     weight: str = "normal"
     sub: str = ""
     tail: str = ""
-    owner: tuple[float, float] | None = None
+    owner: tuple[tuple[float, float], ...] | None = None
 
     @property
     def width(self) -> float:
@@ -265,7 +265,7 @@ def _shifted(it: Path | Circle | Text, dx: float, dy: float) -> Path | Circle | 
         return Path(tuple((x + dx, y + dy) for x, y in it.points), it.style, it.closed, it.d)
     if isinstance(it, Circle):
         return Circle((it.centre[0] + dx, it.centre[1] + dy), it.radius, it.style)
-    owner = None if it.owner is None else (it.owner[0] + dx, it.owner[1] + dy)
+    owner = None if it.owner is None else tuple((x + dx, y + dy) for x, y in it.owner)
     return Text((it.at[0] + dx, it.at[1] + dy), it.text, it.size, it.anchor, it.italic, it.weight,
                 it.sub, it.tail, owner)
 

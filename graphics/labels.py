@@ -37,7 +37,7 @@ class LabelPlacer:
         self._tree: STRtree | None = None
         self.ink = Occupancy()
         self.seen = 0                 # fig.items looked through for arrowheads
-        self.named: list[tuple[float, float]] = []
+        self.named: list[Shape] = []
         self.clearance = 0.8
         # A page that is fitted to its content afterwards has no edge to avoid.
         self.page = box(1.0, 1.0, fig.width - 1.0, fig.height - 1.0) if fig.width else None
@@ -57,7 +57,12 @@ class LabelPlacer:
     def name_points(self, points) -> None:
         """Register points that are (or will be) labelled on this page: a point's label must
         stand nearer its own point than any of these."""
-        self.named += [tuple(p) for p in points]
+        self.named += [(tuple(p),) for p in points]
+
+    def name_vectors(self, vectors) -> None:
+        """Register vectors, ``(tail, tip)``, that are (or will be) labelled on this page: a
+        vector's label must stand nearer its own vector than any of these."""
+        self.named += [(tuple(a), tuple(b)) for a, b in vectors]
 
     def block_head(self, tip: tuple[float, float], tail: tuple[float, float],
                    length: float = 3.2) -> None:
@@ -126,8 +131,8 @@ class LabelPlacer:
 
         Directions are tried from each ``prefer`` angle (paper, rad) outwards, up to
         ``spread`` either side; the box's edge, not its centre, stands ``gap`` off
-        the anchor. With ``own``, the name in the box stands nearer its point than any
-        other :meth:`named <name_points>` one. Returns the centre and the overlap left (0
+        the anchor. With ``own``, the name in the box stands nearer its point or vector
+        than any other :meth:`named <name_points>` one. Returns the centre and the overlap left (0
         when clear).
         """
         self._see_heads()
@@ -151,7 +156,7 @@ class LabelPlacer:
                     ) -> tuple[np.ndarray, np.ndarray]:
         """Candidate centres, ring by ring and for each anchor in turn, ``steps`` directions
         to a half turn from each preferred one, nearest first; and what covers each, with
-        :data:`_ASTRAY` more for a name nearer another named point than its own."""
+        :data:`_ASTRAY` more for a name nearer another named point (vector) than its own."""
         turns = [(k + 1) // 2 * (1 if k % 2 else -1) * math.pi / steps for k in range(2 * steps)]
         angles = np.array([p + t for t in turns if abs(t) <= spread + 1e-9 for p in prefers])
         ux, uy = np.cos(angles), -np.sin(angles)
@@ -169,15 +174,16 @@ class LabelPlacer:
         return xy, cost
 
     def _astray(self, xy: np.ndarray, own: Owned) -> np.ndarray:
-        """Whether the name in each box centred at ``xy`` stands nearer another named point
-        than its own (points within half a millimetre of it are its own)."""
-        point, dx, hw, hh = own
-        rivals = np.array([p for p in self.named if math.dist(p, point) > 0.5]).reshape(-1, 2)
-        if not len(rivals):
+        """Whether the name in each box centred at ``xy`` stands nearer another named thing
+        of its kind (point or vector) than its own; those within half a millimetre of it are
+        its own."""
+        shape, dx, hw, hh = own
+        rivals = [r for r in self.named if len(r) == len(shape) and not _same(r, shape)]
+        if not rivals:
             return np.zeros(len(xy), dtype=bool)
         centre = xy + (dx, 0.0)
-        mine = _box_distance(centre, hw, hh, np.asarray(point, dtype=float)[None, :])[:, 0]
-        theirs = _box_distance(centre, hw, hh, rivals).min(axis=1)
+        mine = _box_distance(centre, hw, hh, _samples([shape]))[:, 0]
+        theirs = _box_distance(centre, hw, hh, _samples(rivals)).min(axis=1)
         return theirs < mine - 1e-6
 
     def _see_heads(self) -> None:
@@ -205,16 +211,18 @@ class LabelPlacer:
               prefer: float | tuple[float, ...] = math.pi / 4, spread: float = math.pi,
               gap: float = 2.6, size: float = 3.5, italic: bool = True,
               rings: tuple[float, ...] = (1.0, 1.6, 2.3), sub: str = "",
-              own: tuple[float, float] | None = None) -> Text:
+              own: Shape | tuple[float, float] | None = None) -> Text:
         """Put ``text`` (subscript ``sub``) near ``anchor``, or the first of several with room.
 
         Directions are tried from each ``prefer`` angle (paper, rad) outwards, up to
-        ``spread`` either side. ``own`` is the point the text names, if it names one.
+        ``spread`` either side. ``own`` is the point (or the vector, tail and tip) the text
+        names, if it names one.
         """
         probe = Text((0.0, 0.0), text, size, "middle", italic, sub=sub)
         x0, y0, x1, y1 = probe.box()
         # The box of a subscripted label hangs below its centre line: aim the box.
         dy = (y0 + y1) / 2
+        own = _shape(own)
         owned = None if own is None else (own, 0.0, (x1 - x0) / 2, (y1 - y0) / 2)
         c, _ = self.spot(x1 - x0, y1 - y0, anchor, prefer=prefer, spread=spread, gap=gap,
                          rings=rings, own=owned)
@@ -227,7 +235,7 @@ class LabelPlacer:
                        gap: float = 1.4, size: float = 3.4, tail: str = "",
                        rings: tuple[float, ...] = (1.0, 1.6, 2.4, 3.4, 4.6, 6.0, 8.0),
                        farther: tuple[float, ...] = (),
-                       own: tuple[float, float] | None = None,
+                       own: Shape | tuple[float, float] | None = None,
                        also: tuple[tuple[str, str], ...] = ()) -> tuple[float, float] | None:
         """Place a label followed by circled step numbers, as one unit clear of everything.
 
@@ -236,7 +244,7 @@ class LabelPlacer:
         ``gap``s: fewer keep a label by its anchor at the cost of some overlap;
         ``farther`` rings are tried after them when none of theirs is clear, for a
         figure where covering a label is worse than standing a little off. ``own`` is the
-        point the text names, if it names one. ``also`` are more names, text and subscript,
+        point (or the vector, tail and tip) the text names, if it names one. ``also`` are more names, text and subscript,
         of the same thing, each set after an equals sign ("V_A₂ = V_A₄": one arrow).
         Returns the unit's centre, or None if there was nothing to place.
         """
@@ -250,6 +258,7 @@ class LabelPlacer:
         radii = [badge_radius(n) for n in numbers]
         w = (x1 - x0) + sum(2 * r + _SPACE for r in radii) - (0.0 if t else _SPACE)
         h = max(y1 - y0, 2 * max(radii, default=0.0))
+        own = _shape(own)
         owned = None if own is None or not t else (own, ((x1 - x0) - w) / 2, (x1 - x0) / 2,
                                                     (y1 - y0) / 2)
         c, cost = self.spot(w, h, anchor, prefer=prefer, spread=spread, gap=gap, rings=rings,
@@ -278,12 +287,15 @@ class LabelPlacer:
         return t
 
 
-Owned = tuple[tuple[float, float], float, float, float]
-"""A label's own point, and its name's box within the label: the box centre's offset along
+Shape = tuple[tuple[float, float], ...]
+"""A thing a label names, by its points: one for a point, tail and tip for a vector."""
+
+Owned = tuple[Shape, float, float, float]
+"""What a label names, and its name's box within the label: the box centre's offset along
 x from the label's, and its half width and half height."""
 
 _ASTRAY = 100.0
-"""What a spot costs (mm²) whose name stands nearer another named point than its own."""
+"""What a spot costs (mm²) whose name stands nearer another named thing than its own."""
 
 LABEL = 10.0
 """What covering a placed label costs, against 1 for a line: only where nothing else is left."""
@@ -364,11 +376,50 @@ def _row_box(parts: list[Text]) -> tuple[float, float, float, float]:
     return (0.0, min(b[1] for b in boxes), width, max(b[3] for b in boxes))
 
 
-def _box_distance(centres: np.ndarray, hw: float, hh: float, points: np.ndarray) -> np.ndarray:
-    """Distance from each box (centre, half sizes) to each point: a row per box."""
-    dx = np.maximum(np.abs(points[None, :, 0] - centres[:, None, 0]) - hw, 0.0)
-    dy = np.maximum(np.abs(points[None, :, 1] - centres[:, None, 1]) - hh, 0.0)
-    return np.hypot(dx, dy)
+def _shape(own) -> Shape | None:
+    """A point ``(x, y)`` or a shape ``((x, y), …)`` as a shape."""
+    if own is None:
+        return None
+    return (tuple(own),) if isinstance(own[0], (int, float)) else tuple(tuple(p) for p in own)
+
+
+def _same(own: Shape, other: Shape) -> bool:
+    """Whether ``other`` is no rival of ``own``: a point within half a millimetre of it, or
+    a vector whose shaft holds all of its (one and the same arrow, or V_A₄ within V_B₄ from
+    one pole: beside the shorter, a label is as near the longer)."""
+    if len(own) == 1:
+        return math.dist(own[0], other[0]) <= 0.5
+    (ax, ay), (bx, by) = other
+    n2 = (bx - ax) ** 2 + (by - ay) ** 2
+    for px, py in own:
+        t = 0.0 if n2 == 0.0 else min(max(((px - ax) * (bx - ax) + (py - ay) * (by - ay)) / n2,
+                                          0.0), 1.0)
+        if math.dist((px, py), (ax + t * (bx - ax), ay + t * (by - ay))) > 0.5:
+            return False
+    return True
+
+
+_ALONG = np.linspace(0.0, 1.0, 17)
+
+
+def _samples(shapes: list[Shape]) -> np.ndarray:
+    """Points standing for each shape, a row each: a point itself (repeated), a vector's
+    shaft every sixteenth of its length (a box's distance to them is its distance to the
+    shaft within a thirty-second of the shaft's length)."""
+    out = np.empty((len(shapes), len(_ALONG), 2))
+    for k, shape in enumerate(shapes):
+        a = np.asarray(shape[0], dtype=float)
+        b = np.asarray(shape[-1], dtype=float)
+        out[k] = a + _ALONG[:, None] * (b - a)
+    return out
+
+
+def _box_distance(centres: np.ndarray, hw: float, hh: float, shapes: np.ndarray) -> np.ndarray:
+    """Distance from each box (centre, half sizes) to each shape given by its sample points
+    (:func:`_samples`): a row per box, a column per shape."""
+    dx = np.maximum(np.abs(shapes[None, :, :, 0] - centres[:, None, None, 0]) - hw, 0.0)
+    dy = np.maximum(np.abs(shapes[None, :, :, 1] - centres[:, None, None, 1]) - hh, 0.0)
+    return np.hypot(dx, dy).min(axis=2)
 
 
 def _first_clear(costs: np.ndarray) -> int:

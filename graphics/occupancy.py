@@ -24,6 +24,9 @@ CELL = 0.25
 _GROW = 40.0
 """How far (mm) the raster grows past whatever first falls outside it."""
 
+_MOST = 700.0
+"""The longest side (mm) the raster grows to: some 8 million cells, 60 MB."""
+
 
 class Occupancy:
     """A raster of weights over the plane, grown as obstacles arrive.
@@ -117,20 +120,37 @@ class Occupancy:
         return max(int(self._row(y0)), 0), min(int(self._row(y1)), self.grid.shape[0])
 
     def _cover(self, x0: float, y0: float, x1: float, y1: float) -> None:
-        """Grow the raster until it holds the box given, with room to spare; its cells stay
-        on one lattice (multiples of :data:`CELL`), so the old grid drops into the new."""
+        """Grow the raster until it holds the box given, with room to spare, but never past
+        :data:`_MOST` a side (a point far off the page, an edge arrow's target, is no
+        obstacle worth a gigabyte); its cells stay on one lattice (multiples of
+        :data:`CELL`), so the old grid drops into the new."""
         rows, cols = self.grid.shape
-        if self.grid.size:
-            gx1, gy1 = self.x0 + cols * CELL, self.y0 + rows * CELL
-            if x0 >= self.x0 and y0 >= self.y0 and x1 <= gx1 and y1 <= gy1:
-                return
-            x0, y0 = min(x0, self.x0), min(y0, self.y0)
-            x1, y1 = max(x1, gx1), max(y1, gy1)
-        nx0 = CELL * math.floor((x0 - _GROW) / CELL)
-        ny0 = CELL * math.floor((y0 - _GROW) / CELL)
-        grid = np.zeros((math.ceil((y1 + _GROW - ny0) / CELL),
-                         math.ceil((x1 + _GROW - nx0) / CELL)))
+        have_x = (self.x0, self.x0 + cols * CELL) if self.grid.size else None
+        have_y = (self.y0, self.y0 + rows * CELL) if self.grid.size else None
+        if have_x and x0 >= have_x[0] and x1 <= have_x[1] and y0 >= have_y[0] \
+                and y1 <= have_y[1]:
+            return
+        nx0, nx1 = _span(x0, x1, have_x)
+        ny0, ny1 = _span(y0, y1, have_y)
+        if have_x and (nx0, nx1, ny0, ny1) == (*have_x, *have_y):
+            return                      # at its most: what lies beyond is not kept
+        grid = np.zeros((round((ny1 - ny0) / CELL), round((nx1 - nx0) / CELL)))
         if self.grid.size:
             dr, dc = round((self.y0 - ny0) / CELL), round((self.x0 - nx0) / CELL)
             grid[dr:dr + rows, dc:dc + cols] = self.grid
         self.grid, self.x0, self.y0 = grid, nx0, ny0
+
+
+def _span(lo: float, hi: float, have: tuple[float, float] | None) -> tuple[float, float]:
+    """The extent along one axis that holds ``lo``–``hi`` and what the raster ``have``s,
+    :data:`_GROW` to spare, on the lattice, at most :data:`_MOST` long (the part the raster
+    has, or else the start of what is asked, kept)."""
+    a, b = lo - _GROW, hi + _GROW
+    if have is not None:
+        a, b = min(a, have[0]), max(b, have[1])
+        if b - a > _MOST:
+            a = max(a, have[1] - _MOST)
+            b = min(b, a + _MOST)
+    elif b - a > _MOST:
+        b = a + _MOST
+    return CELL * math.floor(a / CELL), CELL * math.ceil(b / CELL)

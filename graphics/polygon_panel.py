@@ -396,6 +396,8 @@ class _PolygonPanel:
         label, "V_A₂ = V_A₄"; one moved into a lane is labelled on its lane's side.
         """
         drawn = self.vectors()
+        self.placer.name_vectors((a, b) for s, a, b in drawn
+                                 if s.label and math.dist(a, b) >= _ZERO)
         twins: list[list[tuple[Step, tuple[float, float], tuple[float, float]]]] = []
         for v in drawn:
             same = next((t for t in twins if math.dist(t[0][1], v[1]) < _ZERO
@@ -430,7 +432,8 @@ class _PolygonPanel:
                        for t in _own_stretch(a, b, others)]
             self.placer.place_numbered(text, anchors, numbers, sub=sub, also=tuple(names[1:]),
                                        prefer=(normal, normal + math.pi), spread=math.pi / 3,
-                                       gap=1.0, size=3.4, rings=_NEAR, farther=_FARTHER)
+                                       gap=1.0, size=3.4, rings=_NEAR, farther=_FARTHER,
+                                       own=(a, b) if text else None)
 
     def number_lines(self) -> None:
         """Each line's numbers beside its middle, or the middle of the stretch no arrow covers.

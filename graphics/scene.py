@@ -332,7 +332,8 @@ class _Scene(_Diagram):
                 self.fig.add(Path(tuple(part), "compass"))
                 self.placer.block_path(part, 0.3)
         # Vectors, dots, angles' arcs and edge arrows are drawn on top later; their room is
-        # taken now.
+        # taken now (a point past the frame is an edge arrow, not a dot).
+        far = {s.id for s, _ in self.far}
         for step in self.steps:
             out = step.output
             if isinstance(out, Angle):
@@ -340,7 +341,8 @@ class _Scene(_Diagram):
                 self.placer.block_path(arc_points(centre, radius, out.start, out.sweep), 0.4)
             if isinstance(out, g.Segment) and out.length > 0:
                 self.placer.block_path([self.view(out.start.xy), self.view(out.end.xy)], 1.0)
-            elif isinstance(out, g.Point) and not out.is_at_infinity and step.draws:
+            elif isinstance(out, g.Point) and not out.is_at_infinity and step.draws \
+                    and step.id not in far:
                 self.placer.block(SPoint(self.view(out.xy)).buffer(_DOT + 0.6))
         for _, _, arrows in self.edge_arrows:
             for tail, tip in arrows:
@@ -449,15 +451,20 @@ class _Scene(_Diagram):
                         key=lambda c: (crosses(*c), c[1] != out_n, c[0]))
         at = draw_dimension(self.fig, a, b, n, offset)
         self.placer.block_path(line_at(offset, n), 1.0)
+        for end in (a, b):          # and its extension lines, out past the line
+            self.placer.block_path([end, (end[0] + (offset + 1.6) * n[0],
+                                          end[1] + (offset + 1.6) * n[1])], 0.3)
         text = f"{typeset_span(step.label)} {self.m.units.length_drawn(out.length)}".strip()
         self.label(text, at, [step], prefer=math.atan2(-n[1], n[0]), gap=1.0, size=3.4)
         self.placer.page = page
 
     def draw_vectors(self) -> None:
-        for step in self.steps:
+        drawn = [s for s in self.steps if isinstance(s.output, g.Segment)
+                 and s.id not in self.off_page]
+        self.placer.name_vectors((self.view(s.output.start.xy), self.view(s.output.end.xy))
+                                 for s in drawn if s.label)
+        for step in drawn:
             out = step.output
-            if not isinstance(out, g.Segment) or step.id in self.off_page:
-                continue
             a, b = self.view(out.start.xy), self.view(out.end.xy)
             text, sub = typeset(step.label) if step.label else ("", "")
             if math.dist(a, b) < 0.5:
@@ -471,7 +478,7 @@ class _Scene(_Diagram):
             anchors = [(a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]))
                        for t in (0.6, 0.45, 0.75, 0.3, 0.9)]
             self.label(text, anchors, [step], sub=sub, prefer=(normal, normal + math.pi),
-                       spread=math.pi / 3, gap=1.2, size=3.6)
+                       spread=math.pi / 3, gap=1.2, size=3.6, own=(a, b) if text else None)
 
     def draw_points(self) -> None:
         """Dots and labels; coincident points share one dot and one joined label."""

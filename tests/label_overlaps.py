@@ -73,17 +73,28 @@ def count(fig: Figure) -> dict[str, int]:
 
 
 def strays(fig: Figure, tol: float = 0.05) -> list[tuple[str, tuple, tuple]]:
-    """Each name of a point that stands nearer another named point than its own (by more
-    than ``tol`` mm, its box to the points): (name, its point, the nearer one)."""
+    """Each label that stands nearer another named thing of its kind than its own (by more
+    than ``tol`` mm, its box to the point, or to the vector's shaft): (name, its own, the
+    nearer one). A label's own is its text's ``owner``: a point, or a vector's tail and tip;
+    two within half a millimetre of one another are one, and a vector within another's
+    shaft (V_A₄ within V_B₄ from one pole) has no rival in it."""
     named = [t for t in fig.items if isinstance(t, Text) and t.owner is not None]
-    points = {t.owner for t in named}
+    shapes = {t.owner for t in named}
+
+    def geometry(shape):
+        return Point(shape[0]) if len(shape) == 1 else LineString(shape)
+
+    def holds(other, own):
+        """``other`` is ``own``, or (a vector) its shaft holds all of ``own``'s."""
+        return all(geometry(other).distance(Point(p)) <= 0.5 for p in own)
     out = []
     for t in named:
         b = box(*t.box())
-        mine = b.distance(Point(t.owner))
-        for p in points:
-            if math.dist(p, t.owner) > 0.5 and b.distance(Point(p)) < mine - tol:
-                out.append((t.text + t.sub, t.owner, p))
+        mine = b.distance(geometry(t.owner))
+        for other in shapes:
+            if len(other) == len(t.owner) and not holds(other, t.owner) and \
+                    b.distance(geometry(other)) < mine - tol:
+                out.append((t.text + t.sub, t.owner, other))
                 break
     return out
 

@@ -40,10 +40,13 @@ def test_the_counter_sees_two_labels_over_one_another():
     assert count(fig) == {"label-label": 1, "label-arrowhead": 0, "label-line": 1}
 
 
-def test_the_counter_sees_a_name_nearer_another_point():
+def test_the_counter_sees_a_name_nearer_another_point_or_vector():
     from tarsim.graphics.figure import Figure, Text
 
     fig = Figure(100.0, 100.0)
-    fig.add(Text((50.0, 44.0), "A", owner=(50.0, 50.0)))   # 6 mm above its own point
-    fig.add(Text((50.0, 37.0), "B", owner=(50.0, 40.0)))   # but 4 mm below B's
-    assert [name for name, _, _ in strays(fig)] == ["A"]
+    fig.add(Text((50.0, 44.0), "A", owner=((50.0, 50.0),)))   # 6 mm above its own point
+    fig.add(Text((50.0, 37.0), "B", owner=((50.0, 40.0),)))   # but 4 mm below B's
+    v_a, v_b = ((0.0, 80.0), (30.0, 80.0)), ((0.0, 70.0), (30.0, 70.0))
+    fig.add(Text((15.0, 71.5), "V", sub="A", owner=v_a))      # beside V_B's shaft, not V_A's
+    fig.add(Text((15.0, 67.0), "V", sub="B", owner=v_b))
+    assert [name for name, _, _ in strays(fig)] == ["A", "VA"]

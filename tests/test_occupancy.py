@@ -68,3 +68,15 @@ def test_a_name_is_kept_nearer_its_own_point_than_another():
     t = placer.place("A", (50.0, 50.0), prefer=np.pi / 2, own=(50.0, 50.0))   # up: toward B
     x0, y0, x1, y1 = t.box()
     assert y0 > 47.0          # above A it would stand nearer B: it goes beside or below
+
+
+def test_ink_far_off_the_page_does_not_grow_the_raster_past_its_most():
+    from tarsim.graphics.occupancy import _MOST
+
+    occ = Occupancy()
+    occ.paint(box(0.0, 0.0, 10.0, 10.0), 1.0)
+    occ.paint(box(0.0, -5000.0, 10.0, -4990.0), 1.0)      # a point kilometres off
+    rows, cols = occ.grid.shape
+    assert rows * CELL <= _MOST + CELL and cols * CELL <= _MOST + CELL
+    near, far = occ.ink(np.array([[5.0, 5.0], [5.0, -4995.0]]), (1.0, 1.0))[0]
+    assert near == 4.0 and far == 0.0                       # the far one is not kept
