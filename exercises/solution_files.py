@@ -47,6 +47,9 @@ __all__ = ["SolutionFigure", "WorkedSolution", "solve_worked", "overall_text", "
 DRAFTING = 4
 """Significant figures of a number set on a figure: what a drawing can be read to."""
 
+_CIRCLE = 50.0
+"""The circle diagram's radius on A4 (mm), grown with the sheet."""
+
 
 @dataclass
 class SolutionFigure:
@@ -264,8 +267,9 @@ def _figure(sol: Solution, spec: FigureSpec, answers) -> _Sketch:
     if spec.kind == "circle diagram":
         every = slice(c, [s.id for s in c if s.kind is Kind.CENTRE], base=asm.position_steps)
         sheet = paper(sol.exercise.paper)
-        return _Sketch(spec.stem, spec.heading,
-                       lambda: on_sheet(draw_circle_diagram(every, title=name), sheet), None)
+        radius = _CIRCLE * room(sheet, (1.0, 1.0))[0]
+        return _Sketch(spec.stem, spec.heading, lambda: on_sheet(
+            draw_circle_diagram(every, title=name, radius=radius), sheet), None)
     shown = _shown(c, answers, asm.position_steps)
     notes = notes_under(sol, Panel.SPACE) if spec.notes else []
     sheet = paper(sol.exercise.paper)

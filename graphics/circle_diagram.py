@@ -45,7 +45,8 @@ def secondary_text(centre: Centre) -> str:
     return f"{centre.order}. {typeset(centre.label)[0]}: {', '.join(triangle_text(centre))}"
 
 
-def draw_circle_diagram(shown: Slice, *, title: str, upto: int | None = None) -> Figure:
+def draw_circle_diagram(shown: Slice, *, title: str, upto: int | None = None,
+                        radius: float = _R) -> Figure:
     """Draw the circle diagram of the instant centres a slice of the record holds.
 
     Parameters
@@ -59,6 +60,9 @@ def draw_circle_diagram(shown: Slice, *, title: str, upto: int | None = None) ->
         Draw the diagram as it stands once this many centres have been found by
         Kennedy's theorem, the last of them with its two triangles shaded; all of
         them when None.
+    radius
+        The circle's radius (mm): the diagram has no scale, so it is drawn as big as its
+        sheet suits.
     """
     centres = [s.about for s in shown if s.kind is Kind.CENTRE and isinstance(s.about, Centre)]
     links = sorted({k for c in centres for k in c.pair})
@@ -68,10 +72,10 @@ def draw_circle_diagram(shown: Slice, *, title: str, upto: int | None = None) ->
     found = [c for c in secondaries if upto is None or c.order <= upto]
     current = found[-1] if upto is not None and found else None
     fig = Figure(0.0, 0.0, title=f"{title}: circle diagram")
-    node = {k: _node_at(i, n) for i, k in enumerate(links)}
+    node = {k: _node_at(i, n, radius) for i, k in enumerate(links)}
 
     # Node circle, then the shaded triangles of the centre being found, then chords.
-    fig.add(Circle((0.0, 0.0), _R, "node_circle"))
+    fig.add(Circle((0.0, 0.0), radius, "node_circle"))
     if current is not None:
         i, j = current.pair
         for shade, k in enumerate(current.triangles):
@@ -87,7 +91,7 @@ def draw_circle_diagram(shown: Slice, *, title: str, upto: int | None = None) ->
         chords.append((c, LineString([a, b])))
     for k, at in node.items():
         fig.add(Circle(at, _NODE, "dot"))
-        ux, uy = at[0] / _R, at[1] / _R
+        ux, uy = at[0] / radius, at[1] / radius
         fig.add(Text((at[0] + _NUMBER_OUT * ux, at[1] + _NUMBER_OUT * uy), str(k), 3.8,
                      italic=False))
     _number_chords(fig, chords, node)
@@ -95,10 +99,10 @@ def draw_circle_diagram(shown: Slice, *, title: str, upto: int | None = None) ->
     return fig
 
 
-def _node_at(index: int, n: int) -> tuple[float, float]:
+def _node_at(index: int, n: int, radius: float = _R) -> tuple[float, float]:
     """Paper position of the index-th link's point: the first at the top, then clockwise."""
     a = math.pi / 2 - 2 * math.pi * index / n
-    return (_R * math.cos(a), -_R * math.sin(a))
+    return (radius * math.cos(a), -radius * math.sin(a))
 
 
 def _number_chords(fig: Figure, chords, node) -> None:
