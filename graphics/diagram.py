@@ -459,11 +459,23 @@ class _Diagram:
         self.placer.place(f"θ{subscript(str(d.link))}", mid, prefer=half, gap=1.2, size=3.2)
         if d.omega == 0.0:
             return
-        # ω: an arc arrow beside the crank, away from the θ mark; its sense is ω's alone.
-        low = theta + 0.45 if theta >= 0 else theta - 1.65
+        # ω: an arc arrow beside the crank, away from the θ mark and its reference line,
+        # and clear of every point the figure marks (a centre that falls there keeps its
+        # dot clear); its sense is ω's alone.
+        first = (0.45, -1.65) if theta >= 0 else (-1.65, 0.45)
+        lows = [theta + k for k in (*first, 1.9, -3.1, 3.35)]
+        marks = self.marks() + [p for n, p in self.paper.items() if n != k.names[0]]
+
+        def clearance(low: float) -> float:
+            arc = [(centre[0] + 12.0 * math.cos(low + 1.2 * t / 8),
+                    centre[1] - 12.0 * math.sin(low + 1.2 * t / 8)) for t in range(9)]
+            if (-low) % (2 * math.pi) <= 1.2:          # across the reference line
+                return 0.0
+            return min((math.dist(a, m) for a in arc for m in marks), default=math.inf)
+        low = next((w for w in lows if clearance(w) >= 3.0), lows[0])
         start, sweep = (low, 1.2) if d.omega > 0 else (low + 1.2, -1.2)
         label_at = draw_turning_arrow(self.fig, centre, 12.0, start, sweep)
-        self.placer.block(SPoint(label_at).buffer(1.0))
+        self.placer.block_path(arc_points(centre, 12.0, start, sweep), 0.35)
         self.placer.place(f"ω{subscript(str(d.link))}", label_at,
                           prefer=start + sweep / 2, gap=1.4, size=3.2)
 
