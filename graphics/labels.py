@@ -132,31 +132,40 @@ class LabelPlacer:
         Directions are tried from each ``prefer`` angle (paper, rad) outwards, up to
         ``spread`` either side; the box's edge, not its centre, stands ``gap`` off
         the anchor. With ``own``, the name in the box stands nearer its point or vector
-        than any other :meth:`named <name_points>` one. Returns the centre and the overlap left (0
-        when clear).
+        than any other :meth:`named <name_points>` one, or else pays :data:`_ASTRAY`.
+        Returns the centre and the overlap left (0 when clear).
         """
         self._see_heads()
         prefers = prefer if isinstance(prefer, tuple) else (prefer,)
         anchors = np.asarray(anchor if isinstance(anchor, list) else [anchor], dtype=float)
-        xy, costs = self._ring_costs(width / 2, height / 2, anchors, prefers, spread, gap,
-                                     rings, 8, own)
-        free = np.flatnonzero(costs < _NO_INK)
-        if not len(free):
+        xy, ink = self._ring_costs(width / 2, height / 2, anchors, prefers, spread, gap,
+                                   rings, 8)
+        first = self._first_own(xy, ink, own)
+        if first is None:
             # None clear: look again between the rings and the directions before settling
             # for the least covered.
             between = sorted({*rings, *((a + b) / 2 for a, b in zip(rings, rings[1:]))})
-            xy, costs = self._ring_costs(width / 2, height / 2, anchors, prefers, spread, gap,
-                                         between, 16, own)
-            free = np.flatnonzero(costs < _NO_INK)
-        k = int(free[0]) if len(free) else int(np.argmin(costs))
-        return (float(xy[k, 0]), float(xy[k, 1])), (0.0 if len(free) else float(costs[k]))
+            xy, ink = self._ring_costs(width / 2, height / 2, anchors, prefers, spread, gap,
+                                       between, 16)
+            first = self._first_own(xy, ink, own)
+        if first is not None:
+            return (float(xy[first, 0]), float(xy[first, 1])), 0.0
+        costs = ink + (0.0 if own is None else _ASTRAY * self._astray(xy, own))
+        k = int(np.argmin(costs))
+        return (float(xy[k, 0]), float(xy[k, 1])), float(costs[k])
+
+    def _first_own(self, xy: np.ndarray, ink: np.ndarray, own: Owned | None) -> int | None:
+        """The first spot clear of ink whose name stands nearer its own than any other (the
+        nearness asked only of the clear ones), or None."""
+        free = np.flatnonzero(ink < _NO_INK)
+        if own is not None and len(free):
+            free = free[~self._astray(xy[free], own)]
+        return int(free[0]) if len(free) else None
 
     def _ring_costs(self, hw: float, hh: float, anchors: np.ndarray, prefers, spread: float,
-                    gap: float, rings, steps: int, own: Owned | None
-                    ) -> tuple[np.ndarray, np.ndarray]:
+                    gap: float, rings, steps: int) -> tuple[np.ndarray, np.ndarray]:
         """Candidate centres, ring by ring and for each anchor in turn, ``steps`` directions
-        to a half turn from each preferred one, nearest first; and what covers each, with
-        :data:`_ASTRAY` more for a name nearer another named point (vector) than its own."""
+        to a half turn from each preferred one, nearest first; and the ink under each."""
         turns = [(k + 1) // 2 * (1 if k % 2 else -1) * math.pi / steps for k in range(2 * steps)]
         angles = np.array([p + t for t in turns if abs(t) <= spread + 1e-9 for p in prefers])
         ux, uy = np.cos(angles), -np.sin(angles)
@@ -168,10 +177,7 @@ class LabelPlacer:
         c = self.clearance
         # The box with its clearance about it, the corners rounded off: two crossed boxes.
         wide, tall, inner = self.costs(xy, (hw + c, hh), (hw, hh + c), (hw, hh))
-        cost = wide + tall - inner
-        if own is not None:
-            cost += _ASTRAY * self._astray(xy, own)
-        return xy, cost
+        return xy, wide + tall - inner
 
     def _astray(self, xy: np.ndarray, own: Owned) -> np.ndarray:
         """Whether the name in each box centred at ``xy`` stands nearer another named thing
@@ -183,7 +189,14 @@ class LabelPlacer:
             return np.zeros(len(xy), dtype=bool)
         centre = xy + (dx, 0.0)
         mine = _box_distance(centre, hw, hh, _samples([shape]))[:, 0]
-        theirs = _box_distance(centre, hw, hh, _samples(rivals)).min(axis=1)
+        # Only a rival within the farthest of those distances of some box can be nearer.
+        pts = _samples(rivals)
+        reach = float(mine.max()) + max(hw, hh)
+        lo, hi = centre.min(axis=0) - reach, centre.max(axis=0) + reach
+        near = ((pts.max(axis=1) >= lo) & (pts.min(axis=1) <= hi)).all(axis=1)
+        if not near.any():
+            return np.zeros(len(xy), dtype=bool)
+        theirs = _box_distance(centre, hw, hh, pts[near]).min(axis=1)
         return theirs < mine - 1e-6
 
     def _see_heads(self) -> None:
