@@ -351,6 +351,11 @@ class _Diagram:
         """Paper points a figure marks beyond the mechanism's own (none here; a scene's)."""
         return []
 
+    def rays_through(self, at: tuple[float, float]) -> list[tuple[float, float]]:
+        """Paper directions, both ways, of the figure's lines through ``at`` beyond the
+        mechanism's own (none here; a scene's)."""
+        return []
+
     def travel(self, point: str, d: tuple[float, float]) -> float:
         """A guide long enough to look like a guide: the drawing's width along it."""
         ps = list(self.paper.values())
@@ -371,7 +376,7 @@ class _Diagram:
                 for s in self.m.slides:
                     if s.guide_link == k and s.point in self.paper:
                         dirs.append(unit(_sub(self.paper[s.point], at)))
-            down = _clearest_direction(dirs)
+            down = _clearest_direction(dirs, self.rays_through(at))
             self.downs[name] = down
             foot = draw_ground_pivot(self.fig, at, down)
             self.placer.block(foot)
@@ -569,16 +574,30 @@ def _extremes(pts):
     return best[1], best[2]
 
 
-def _clearest_direction(dirs: list[tuple[float, float]]) -> tuple[float, float]:
+def _clearest_direction(dirs: list[tuple[float, float]],
+                        lines: list[tuple[float, float]] = ()) -> tuple[float, float]:
     """The paper direction for a ground symbol: straight down unless a link is in the way.
 
     A link within 65° of a direction crosses the symbol's triangle or its hatched base
     (the base reaches about 60° either side of the symbol's axis), so the symbol turns
-    to the first direction that clears every link by that much, or failing one, the
-    clearest.
+    to the first direction that clears every link by that much and every one of the
+    figure's ``lines`` through the pivot (a Kennedy line, both ways) by 25°; failing one,
+    the first that clears the links, or else the clearest.
+
+    >>> _clearest_direction([(0.0, -1.0)])                         # a link straight up
+    (0.0, 1.0)
+    >>> _clearest_direction([(0.0, -1.0)], [(0.0, 1.0), (0.0, -1.0)])   # and a line through
+    (0.7071, 0.7071)
     """
     candidates = [(0.0, 1.0), (0.7071, 0.7071), (-0.7071, 0.7071), (1.0, 0.0), (-1.0, 0.0),
                   (0.0, -1.0)]
+
+    def angle(c, d):
+        return math.acos(max(-1.0, min(1.0, c[0] * d[0] + c[1] * d[1])))
+    for c in candidates:
+        if all(angle(c, d) >= math.radians(65) for d in dirs) and \
+                all(angle(c, d) >= math.radians(25) for d in lines):
+            return c
     best = None
     for rank, c in enumerate(candidates):
         clear = min((math.acos(max(-1.0, min(1.0, c[0] * d[0] + c[1] * d[1]))) for d in dirs),

@@ -348,6 +348,18 @@ class _Scene(_Diagram):
             for tail, tip in arrows:
                 self.placer.block_path([tail, tip], 1.6)
 
+    def rays_through(self, at: tuple[float, float]) -> list[tuple[float, float]]:
+        out = []
+        for _, ends in self.lines:
+            if ends is None:
+                continue
+            (x0, y0), (x1, y1) = ends
+            n = math.hypot(x1 - x0, y1 - y0)
+            if n > 0 and abs((at[0] - x0) * (y1 - y0) - (at[1] - y0) * (x1 - x0)) / n < 0.5:
+                u = ((x1 - x0) / n, (y1 - y0) / n)
+                out += [u, (-u[0], -u[1])]
+        return out
+
     def marks(self) -> list[tuple[float, float]]:
         """The points the scene's steps mark, on paper: a guide runs past those on it."""
         return [self.view(s.output.xy) for s in self.steps if isinstance(s.output, g.Point)
