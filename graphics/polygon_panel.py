@@ -459,7 +459,8 @@ def _lanes(ends: list[tuple[tuple[float, float], tuple[float, float]]],
 
     Two arrows on one carrier clash where they overlap, unless one lies within the other
     from a common tail and the same way (V_A₄ within V_B₄, both from o_v, a textbook's
-    own drawing) or they are one and the same arrow. A polygon that collapses onto a line
+    own drawing) or they are one and the same arrow; and where they meet head to head,
+    their heads stacked on one point. A polygon that collapses onto a line
     (the crank-shaper's at θ₂ = 90°) has arrows running back over one another with heads
     meeting: each goes to the nearest lane where it clashes with none, the absolute
     vectors (``heavy``) and the longest placed first, so they keep to their points.
@@ -477,6 +478,8 @@ def _lanes(ends: list[tuple[tuple[float, float], tuple[float, float]]],
         if any(abs((e[0] - a[0]) * d[1] - (e[1] - a[1]) * d[0]) > 0.05 for e in (p, q)):
             return False                                  # not on one carrier
         s, t = (((e[0] - a[0]) * d[0] + (e[1] - a[1]) * d[1]) for e in (p, q))
+        if math.dist(b, q) < 0.05 and t < s:
+            return True                                   # head to head: the heads meet
         if min(max(s, t), n) - max(min(s, t), 0.0) <= 0.5:
             return False                                  # end to end, or apart
         same_way = t > s
