@@ -257,8 +257,9 @@ class LabelPlacer:
         ``gap``s: fewer keep a label by its anchor at the cost of some overlap;
         ``farther`` rings are tried after them when none of theirs is clear, for a
         figure where covering a label is worse than standing a little off. ``own`` is the
-        point (or the vector, tail and tip) the text names, if it names one. ``also`` are more names, text and subscript,
-        of the same thing, each set after an equals sign ("V_A₂ = V_A₄": one arrow).
+        point (or the vector, tail and tip) the text names, if it names one. ``also`` are
+        more names, text and subscript, of the same thing, each set after an equals sign
+        ("V_A₂ = V_A₄": one arrow).
         Returns the unit's centre, or None if there was nothing to place.
         """
         if not text and not numbers:

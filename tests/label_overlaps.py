@@ -16,7 +16,6 @@ prints the counts of every bundled figure as that file records them.
 from __future__ import annotations
 
 import json
-import math
 import sys
 from pathlib import Path
 

@@ -57,8 +57,8 @@ def test_a_label_takes_the_first_clear_spot_of_its_preferred_side():
     placer.block(box(45.0, 40.0, 80.0, 49.0))        # ink right of and above the anchor
     c, cost = placer.spot(6.0, 3.0, (50.0, 50.0), prefer=0.0)
     assert cost == 0.0
-    x0, y0, x1, y1 = c[0] - 3.0, c[1] - 1.5, c[0] + 3.0, c[1] + 1.5
-    assert y0 >= 49.0 + placer.clearance - 1e-9 or x1 <= 45.0 - placer.clearance + 1e-9
+    top, right = c[1] - 1.5, c[0] + 3.0          # the box's top edge and right edge
+    assert top >= 49.0 + placer.clearance - 1e-9 or right <= 45.0 - placer.clearance + 1e-9
 
 
 def test_a_name_is_kept_nearer_its_own_point_than_another():
