@@ -9,6 +9,7 @@ from __future__ import annotations
 import difflib
 import math
 import re
+import sys
 import tomllib
 from dataclasses import dataclass
 from pathlib import Path
@@ -21,6 +22,10 @@ from ..constructions.model import (LENGTH_UNITS, Arc, Contact, Drive, Link, Mech
 
 __all__ = ["load_mechanism", "parse_mechanism", "SourceMap", "read_source", "read_toml",
            "LARGEST", "MOST_BYTES", "MOST_POINTS", "in_range", "radians_in_turn"]
+
+_ON_LINE = 64 * sys.float_info.epsilon
+"""A point whose h² off a link's base line is within this many of the largest square of
+the lengths that place it lies on the line: that much is the rounding of h² itself."""
 
 LARGEST = 1e30
 """The largest size of a number tarsim takes from a file; its reciprocal is the smallest
@@ -438,9 +443,13 @@ class _Reader:
                 raise self.fail(f"the lengths {names[0]}{p}, {names[1]}{p} and "
                                 f"{names[0]}{names[1]} of link {n} do not close a triangle",
                                 key="lengths", **where)
-            h = math.sqrt(max(h2, 0.0))
+            # h² is a difference of squares: its rounding is some units of eps in the
+            # largest square, so a point within that of the line is on it (h = 3.7e-9 m
+            # from h² = 1.4e-17 is rounding, whatever order the points are listed in).
+            on_line = h2 <= _ON_LINE * max(r0 * r0, r1 * r1, base * base)
+            h = 0.0 if on_line else math.sqrt(h2)
             side = sides.get(p) if isinstance(sides, dict) else None
-            if h > 1e-9 * base and side not in ("left", "right"):
+            if not on_line and side not in ("left", "right"):
                 raise self.fail(f"say on which side of {names[0]}→{names[1]} point {p} lies: "
                                 f'sides = {{ {p} = "left" }} or "right"', key="lengths", **where)
             local.append((x, h if side == "left" else -h))

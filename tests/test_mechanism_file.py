@@ -482,3 +482,20 @@ def test_contact_errors_name_the_link_and_what_is_missing(old, new, line, words)
     assert "\n" not in str(e)
     for w in words:
         assert w in str(e), str(e)
+
+
+@pytest.mark.parametrize("order", [["B", "A", "G"], ["A", "B", "G"], ["G", "A", "B"]])
+def test_a_point_on_a_links_line_is_on_it_in_any_order(order):
+    # BA = 500, AG = 275, BG = 225: G lies on BA, 225 mm from B. Listed B, A, G, rounding
+    # once left h² = 1.4e-17 m², h = 3.7e-9 m, and the file was refused for want of a side.
+    text = edit(four_bar(), 'points = ["A", "B"]\nlengths = { AB = 250 }',
+                f'points = {order!r}\nlengths = {{ BA = 500, AG = 275, BG = 225 }}'
+                .replace("'", '"'))
+    text = edit(text, "O4B = 200", "O4B = 600")
+    k = parse_mechanism(text, FILE).link(3)
+    assert k.span("B", "G") == pytest.approx(0.225, rel=1e-12)
+    assert k.span("A", "G") == pytest.approx(0.275, rel=1e-12)
+    assert k.span("A", "B") == pytest.approx(0.5, rel=1e-12)
+    # exactly on the line: the triangle A, B, G has no area
+    (ax, ay), (bx, by), (gx, gy) = (k.local(n) for n in "ABG")
+    assert (bx - ax) * (gy - ay) - (by - ay) * (gx - ax) == 0.0
