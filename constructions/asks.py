@@ -21,9 +21,10 @@ from typing import ClassVar
 from .errors import TarsimError
 from .model import Mechanism
 
-__all__ = ["Ask", "Centre", "AngularVelocity", "Velocity", "Relative", "AngularAcceleration",
-           "Acceleration", "Coriolis", "Mobility", "GrashofClass", "LengthRange", "TimeRatio",
-           "Stroke", "parse_ask", "ask_names", "SYMBOLS", "symbol", "ordered"]
+__all__ = ["Ask", "Position", "Centre", "AngularVelocity", "Velocity", "Relative",
+           "AngularAcceleration", "Acceleration", "Coriolis", "Mobility", "GrashofClass",
+           "LengthRange", "TimeRatio", "Stroke", "CentreCount", "parse_ask", "ask_names",
+           "SYMBOLS", "symbol", "ordered"]
 
 SYMBOLS = {"omega": "ω", "alpha": "α", "theta": "θ", "A_cor_": "Aᶜ_"}
 """The course's letters for the words results.json spells: omega4 is ω4, A_cor_B is Aᶜ_B."""
@@ -63,6 +64,19 @@ class Ask:
 
     def __str__(self) -> str:
         return self.name
+
+
+@dataclass(frozen=True)
+class Position(Ask):
+    """Where point ``point`` is, as the compass put it: position before velocity."""
+
+    point: str
+    order: ClassVar[int] = -1
+
+    @property
+    def name(self) -> str:
+        """``pos_B``."""
+        return f"pos_{self.point}"
 
 
 @dataclass(frozen=True)
@@ -218,9 +232,19 @@ class Stroke(_Whole):
     order: ClassVar[int] = 4
 
 
+@dataclass(frozen=True)
+class CentreCount(_Whole):
+    """How many instant centres there are, n(n − 1)/2, and how many of them inspection finds
+    and how many Kennedy's theorem."""
+
+    word: ClassVar[str] = "n_centres"
+    order: ClassVar[int] = 5
+
+
 _POINT = r"([A-Za-z][A-Za-z0-9_']*)"
 _GRAMMAR: tuple[tuple[re.Pattern, callable], ...] = tuple(
     (re.compile(f"^{pattern}$"), make) for pattern, make in (
+        (f"pos_{_POINT}", lambda m: Position(m[1])),
         (r"I(\d)(\d)", lambda m: Centre((int(m[1]), int(m[2])))),
         (r"I(\d+),(\d+)", lambda m: Centre((int(m[1]), int(m[2])))),
         (r"omega(\d+)", lambda m: AngularVelocity(int(m[1]))),
@@ -234,6 +258,7 @@ _GRAMMAR: tuple[tuple[re.Pattern, callable], ...] = tuple(
         (r"grashof", lambda m: GrashofClass()),
         (r"time_ratio", lambda m: TimeRatio()),
         (r"stroke", lambda m: Stroke()),
+        (r"n_centres", lambda m: CentreCount()),
     ))
 
 
@@ -265,7 +290,8 @@ def ask_names(mech: Mechanism) -> set[str]:
     time ratio) is the registry's to say, not the grammar's.
     """
     nums = sorted(mech.numbers)
-    out = {"centres"}
+    out = {"centres", CentreCount.word}
+    out |= {Position(p).name for p in mech.point_names}
     out |= {Centre((a, b)).name for i, a in enumerate(nums) for b in nums[i + 1:]}
     out |= {f"{w}{n}" for n in nums if n != 1 for w in ("omega", "alpha")}
     moving = [p for p in mech.point_names if set(mech.links_at(p)) != {1}]

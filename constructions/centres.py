@@ -38,6 +38,7 @@ from .record import Kind, Ref, Role
 
 __all__ = ["Centre", "Centres", "locate_centres", "omega_ratio", "centre_ref", "pair_label",
            "WELL_CROSSED", "ILL_CONDITIONED", "PRIMARY_RULES", "located", "answer_centre",
+           "answer_count",
            "answer_omega"]
 
 WELL_CROSSED = 0.1
@@ -558,6 +559,18 @@ def answer_centre(work, ask: A.Centre) -> Answer:
              else {"point": list(p.xy)})
     return Answer(ask, value, cs.conditioning(*ask.pair), _RULE_WORDS[c.rule], refs=(c.ref,),
                   figures=(CENTRES_FIGURE, CIRCLE_FIGURE), found=p, holds_always=c.primary)
+
+
+def answer_count(work, ask: A.CentreCount) -> Answer:
+    """How many centres the circle diagram holds: n(n − 1)/2 chords, those drawn solid by
+    inspection, the rest dashed by Kennedy's theorem."""
+    cs = located(work)
+    n = len(cs.links)
+    total, inspected = len(cs.found), len(cs.primaries)
+    return Answer(ask, {"value": total, "by_inspection": inspected,
+                        "by_kennedy": total - inspected}, 1.0,
+                  f"circle diagram, n(n − 1)/2 with n = {n}",
+                  refs=tuple(cs.construction_refs()))
 
 
 def answer_omega(work, ask: A.AngularVelocity) -> Answer:

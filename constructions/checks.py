@@ -72,6 +72,7 @@ class FigureSpec:
     """The figure an answer is drawn in: its file stem, heading, caption, and kind of figure.
 
     ``kind`` is "scene" (the space diagram with the answer's construction on it),
+    "positions" (the same, with the compass work that placed the points),
     "circle diagram", "polygons" (the worked page: space diagram, polygons and
     results table) or "limits" (the limit positions). The figure's title is the
     mechanism's name and the ``caption``. ``velocity_scale`` is the scale (drawing
@@ -195,6 +196,16 @@ def _exact(value: dict, ref: dict, scale: float) -> tuple[dict, dict, float]:
     return value, ref, float(abs(value["value"] - ref["value"]) + abs(here(value) - here(ref)))
 
 
+def _point(value: dict, ref: dict, scale: float) -> tuple[dict, dict, float]:
+    """A point's place, its miss relative to the mechanism's size (``scale``)."""
+    return value, ref, math.dist(value["point"], ref["point"]) / max(scale, 1e-300)
+
+
+def _counts(value: dict, ref: dict, scale: float) -> tuple[dict, dict, float]:
+    """Counts that must be the same, every one of them."""
+    return value, ref, float(sum(abs(value[k] - ref[k]) for k in ref))
+
+
 def _same_class(value: dict, ref: dict, scale: float) -> tuple[dict, dict, float]:
     """The Grashof class. A change-point linkage turns like a class it borders, so the
     turning test may name any; it is judged by the inequality alone."""
@@ -217,6 +228,7 @@ def _interval(value: dict, ref: dict, scale: float) -> tuple[dict, dict, float]:
 
 
 _RULES: dict[type, Callable[[dict, dict, float], tuple[dict, dict, float]]] = {
+    A.Position: _point, A.CentreCount: _counts,
     A.AngularVelocity: _rate, A.AngularAcceleration: _rate,
     A.Velocity: _vector, A.Acceleration: _vector, A.Relative: _vector, A.Coriolis: _vector,
     A.TimeRatio: _relative, A.Stroke: _relative, A.Mobility: _exact,
@@ -224,7 +236,7 @@ _RULES: dict[type, Callable[[dict, dict, float], tuple[dict, dict, float]]] = {
 }
 
 
-_EXACT = {A.Mobility: 0.0, A.GrashofClass: 0.0, A.LengthRange: 1e-9}
+_EXACT = {A.Mobility: 0.0, A.GrashofClass: 0.0, A.LengthRange: 1e-9, A.CentreCount: 0.0}
 """Tolerances of answers that are counted or found at breakpoints, not drawn."""
 
 

@@ -12,11 +12,14 @@ reference when it registers (:mod:`.registry`).
 
 from __future__ import annotations
 
+from itertools import combinations
+
 from . import asks as A
 from .checks import Expected, grashof_value, time_ratio_value, vector_value
 from .coincident import taken
 from .errors import DegenerateInput, InputError
 from .limit_positions import WHY_NOT, drawn_limits
+from .model import SlideKind
 from .reference import solver
 from .reference.centres import MoveTogether, instant_centre, shared_pin
 from .reference.limits import limit_reference
@@ -24,8 +27,29 @@ from .reference.mobility import mobility_of
 from .reference.rotatability import (class_by_rotation, four_bar_spans, grashof_class,
                                      length_range_by_rotation)
 
-__all__ = ["centre", "omega", "alpha", "velocity", "acceleration", "relative", "coriolis",
-           "mobility", "grashof", "length_range", "time_ratio", "stroke"]
+__all__ = ["position", "centre_count", "centre", "omega", "alpha", "velocity", "acceleration",
+           "relative", "coriolis", "mobility", "grashof", "length_range", "time_ratio",
+           "stroke"]
+
+
+def position(work, ask: A.Position) -> Expected:
+    """Where the vector-loop solver puts the point (on the first link that lists it)."""
+    return Expected({"point": list(work.kinematics.points[ask.point])})
+
+
+def centre_count(work, ask: A.CentreCount) -> Expected:
+    """n(n − 1)/2 for n links; by inspection, each pair of links joined directly: by a
+    pin, a block on a guide (straight or curved), or a wheel rolling without slip (a pin
+    in a slot or a cam's contact leaves only a line for its centre)."""
+    m = work.mechanism
+    n = len(m.numbers)
+    joined = {tuple(sorted(pair)) for p in m.point_names
+              for pair in combinations(m.links_at(p), 2)}
+    joined |= {tuple(sorted((s.link, s.guide_link))) for s in m.slides
+               if s.kind is SlideKind.BLOCK or s.rolling}
+    total = n * (n - 1) // 2
+    return Expected({"value": total, "by_inspection": len(joined),
+                     "by_kennedy": total - len(joined)})
 
 
 def centre(work, ask: A.Centre) -> Expected:

@@ -185,7 +185,7 @@ class Work:
             return m.input_speed
         if isinstance(ask, (A.Acceleration, A.Relative, A.Coriolis)):
             return m.input_acceleration
-        if isinstance(ask, A.Centre):
+        if isinstance(ask, (A.Centre, A.Position)):
             return mechanism_size(self.kinematics)
         if isinstance(ask, A.LengthRange):
             return max(grashof_class(m).lengths)

@@ -18,7 +18,7 @@ from functools import partial
 from . import asks as A
 from . import expected
 from .acceleration_polygon import answer as from_acceleration_polygon
-from .centres import answer_centre, answer_omega
+from .centres import answer_centre, answer_count, answer_omega
 from .limit_positions import WHY_NOT as LIMITS_WHY_NOT
 from .limit_positions import answer as from_limits
 from .limit_positions import askable as limits_askable
@@ -26,6 +26,7 @@ from .errors import TarsimError
 from .methods import Method, Work
 from .model import Mechanism
 from .overall import GRASHOF_WHY_NOT, answer_grashof, answer_mobility, grashof_askable
+from .positions import answer_position
 from .transmission import answer_omega as by_transmission, transmission_links
 from .velocity_by_centres import answer_velocity as by_centres
 from .velocity_by_components import answer_velocity as by_components
@@ -60,6 +61,7 @@ def _velocity(name: str, construct) -> Method:
 
 
 METHODS: tuple[Method, ...] = (
+    Method("compass (assembly)", {A.Position: expected.position}, answer_position, stage=0),
     Method("instant centres", {A.Centre: expected.centre}, answer_centre, stage=0),
     Method("instant centres (ω ratio)", {A.AngularVelocity: expected.omega}, answer_omega,
            stage=1, chosen_by=_BY_CENTRES),
@@ -81,6 +83,8 @@ METHODS: tuple[Method, ...] = (
            answer_grashof, stage=6, askable=grashof_askable, why_not=GRASHOF_WHY_NOT),
     Method("limit positions", {A.TimeRatio: expected.time_ratio, A.Stroke: expected.stroke},
            from_limits, stage=7, askable=limits_askable, why_not=LIMITS_WHY_NOT),
+    Method("circle diagram (count)", {A.CentreCount: expected.centre_count}, answer_count,
+           stage=8),
 )
 """Every method, in the order a solution takes them."""
 

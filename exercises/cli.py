@@ -195,6 +195,7 @@ def solve(source, out_dir, angle, pdf, paper):
                      the instant centres and each velocity construction
       worked         space diagram, velocity and acceleration polygons and
                      the results table on one page (when polygons are asked)
+      positions      the compass arcs that placed each asked point (pos_B)
       limits         the limit positions by compass (time ratio, stroke)
       mechanism      the mechanism alone (when nothing is asked at a position)
       solution       every figure in one file (a page each in the PDF)

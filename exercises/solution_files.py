@@ -270,7 +270,9 @@ def _figure(sol: Solution, spec: FigureSpec, answers) -> _Sketch:
         radius = _CIRCLE * room(sheet, (1.0, 1.0))[0]
         return _Sketch(spec.stem, spec.heading, lambda: on_sheet(
             draw_circle_diagram(every, title=name, radius=radius), sheet), None)
-    shown = _shown(c, answers, asm.position_steps)
+    # A position's figure shows the compass work that put the points there: the walk back
+    # from them stops only at the frame.
+    shown = _shown(c, answers, asm.position_steps if spec.kind != "positions" else ())
     notes = notes_under(sol, Panel.SPACE) if spec.notes else []
     sheet = paper(sol.exercise.paper)
     return _Sketch(spec.stem, spec.heading, lambda: on_sheet(_fitted(lambda per_cm: draw_scene(
@@ -435,6 +437,8 @@ def overall_text(name: str, v: dict, units) -> str:
         return v["class"]
     if "point" in v:
         return units.length_text(v["value"])
+    if "by_inspection" in v:
+        return f"{v['value']} ({v['by_inspection']} by inspection, {v['by_kennedy']} by Kennedy)"
     if "slow_deg" in v:
         return f"{v['value']:.6g} ({v['slow_deg']:.5g}° / {v['quick_deg']:.5g}°)"
     return f"{v['value']}"
@@ -532,7 +536,8 @@ def answer_line(name: str, q: Quantity, units, *, whole: bool = False) -> str:
     elif name.startswith("range_"):        # the text names the span: "65 mm < AB < 135 mm"
         answer = overall_text(name, q.value, units)
     else:
-        label = {"dof": "DOF", "grashof": "Grashof class"}.get(name, name.replace("_", " "))
+        label = {"dof": "DOF", "grashof": "Grashof class",
+                 "n_centres": "instant centres"}.get(name, name.replace("_", " "))
         answer = f"{label} = {overall_text(name, q.value, units)}"
     verdict = ("check ok" if q.rel_error <= q.tolerance else
                f"check FAILED (tolerance {q.tolerance:.1e})")
