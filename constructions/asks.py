@@ -22,7 +22,8 @@ from .errors import TarsimError
 from .model import Mechanism
 
 __all__ = ["Ask", "Position", "Centre", "AngularVelocity", "Velocity", "Relative",
-           "AngularAcceleration", "Acceleration", "Coriolis", "Mobility", "GrashofClass",
+           "AngularAcceleration", "Acceleration", "Coriolis", "Sliding", "Mobility",
+           "GrashofClass",
            "LengthRange", "TimeRatio", "Stroke", "CentreCount", "parse_ask", "ask_names",
            "SYMBOLS", "symbol", "ordered"]
 
@@ -174,6 +175,21 @@ class Coriolis(Ask):
 
 
 @dataclass(frozen=True)
+class Sliding(Ask):
+    """The sliding velocity (``letter`` V) or acceleration (A) of ``point`` along the straight
+    slot of a moving link it runs in, relative to the slot."""
+
+    letter: str
+    point: str
+    order: ClassVar[int] = 6
+
+    @property
+    def name(self) -> str:
+        """``V_slide_B``."""
+        return f"{self.letter}_slide_{self.point}"
+
+
+@dataclass(frozen=True)
 class _Whole(Ask):
     """An ask of the mechanism as a whole, named by one word."""
 
@@ -250,6 +266,7 @@ _GRAMMAR: tuple[tuple[re.Pattern, callable], ...] = tuple(
         (r"omega(\d+)", lambda m: AngularVelocity(int(m[1]))),
         (r"alpha(\d+)", lambda m: AngularAcceleration(int(m[1]))),
         (f"A_cor_{_POINT}", lambda m: Coriolis(m[1])),
+        (f"([VA])_slide_{_POINT}", lambda m: Sliding(m[1], m[2])),
         (f"([VA])_{_POINT}/{_POINT}", lambda m: Relative(m[1], m[2], m[3])),
         (f"V_{_POINT}", lambda m: Velocity(m[1])),
         (f"A_{_POINT}", lambda m: Acceleration(m[1])),

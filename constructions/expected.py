@@ -28,7 +28,7 @@ from .reference.rotatability import (class_by_rotation, four_bar_spans, grashof_
                                      length_range_by_rotation)
 
 __all__ = ["position", "centre_count", "centre", "omega", "alpha", "velocity", "acceleration",
-           "relative", "coriolis", "mobility", "grashof", "length_range", "time_ratio",
+           "relative", "coriolis", "sliding", "mobility", "grashof", "length_range", "time_ratio",
            "stroke"]
 
 
@@ -106,6 +106,17 @@ def coriolis(work, ask: A.Coriolis) -> Expected:
     (px, py), (qx, qy) = (solver.point_velocity(kin, m, k, ask.point) for k in (joint.link, j))
     w = kin.omegas[j]
     return Expected(vector_value(-2.0 * w * (py - qy), 2.0 * w * (px - qx)))
+
+
+def sliding(work, ask: A.Sliding) -> Expected:
+    """The point's travel along its slot seen from the slot's link: the slide rate's first (V)
+    or second (A) derivative, along the guide."""
+    from .sliding import slot_of
+
+    i, _ = slot_of(work.mechanism, ask.point)
+    rate = work.kinematics.slide_rates[i]
+    k = rate.velocity if ask.letter == "V" else rate.acceleration
+    return Expected(vector_value(k * rate.direction[0], k * rate.direction[1]))
 
 
 def mobility(work, ask: A.Mobility) -> Expected:

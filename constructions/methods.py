@@ -181,9 +181,10 @@ class Work:
             return abs(d.omega)
         if isinstance(ask, A.AngularAcceleration):
             return math.hypot(d.omega ** 2, d.alpha)
-        if isinstance(ask, A.Velocity) or isinstance(ask, A.Relative) and ask.letter == "V":
+        if isinstance(ask, A.Velocity) or isinstance(ask, (A.Relative, A.Sliding)) \
+                and ask.letter == "V":
             return m.input_speed
-        if isinstance(ask, (A.Acceleration, A.Relative, A.Coriolis)):
+        if isinstance(ask, (A.Acceleration, A.Relative, A.Coriolis, A.Sliding)):
             return m.input_acceleration
         if isinstance(ask, (A.Centre, A.Position)):
             return mechanism_size(self.kinematics)

@@ -27,6 +27,7 @@ from .methods import Method, Work
 from .model import Mechanism
 from .overall import GRASHOF_WHY_NOT, answer_grashof, answer_mobility, grashof_askable
 from .positions import answer_position
+from .sliding import answer_sliding, sliding_askable
 from .transmission import answer_omega as by_transmission, transmission_links
 from .velocity_by_centres import answer_velocity as by_centres
 from .velocity_by_components import answer_velocity as by_components
@@ -77,6 +78,8 @@ METHODS: tuple[Method, ...] = (
                                     A.Acceleration: expected.acceleration,
                                     A.Relative: expected.relative, A.Coriolis: expected.coriolis},
            from_acceleration_polygon, stage=4, when=_acceleration_polygon),
+    Method("polygons (sliding)", {A.Sliding: expected.sliding}, answer_sliding, stage=4,
+           askable=sliding_askable),
     Method("Grübler", {A.Mobility: expected.mobility}, answer_mobility, stage=5,
            askable=lambda mech: {"dof"}),
     Method("Grashof", {A.GrashofClass: expected.grashof, A.LengthRange: expected.length_range},
