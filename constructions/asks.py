@@ -22,13 +22,16 @@ from .errors import TarsimError
 from .model import Mechanism
 
 __all__ = ["Ask", "Position", "Centre", "AngularVelocity", "Velocity", "Relative",
-           "AngularAcceleration", "Acceleration", "Coriolis", "Sliding", "Mobility",
+           "AngularAcceleration", "Acceleration", "AccelerationPart", "Coriolis", "Sliding",
+           "Mobility",
            "GrashofClass",
            "LengthRange", "TimeRatio", "Stroke", "CentreCount", "parse_ask", "ask_names",
            "SYMBOLS", "symbol", "ordered"]
 
-SYMBOLS = {"omega": "ω", "alpha": "α", "theta": "θ", "A_cor_": "Aᶜ_"}
-"""The course's letters for the words results.json spells: omega4 is ω4, A_cor_B is Aᶜ_B."""
+SYMBOLS = {"omega": "ω", "alpha": "α", "theta": "θ", "A_cor_": "Aᶜ_", "An_": "Aⁿ_",
+           "At_": "Aᵗ_"}
+"""The course's letters for the words results.json spells: omega4 is ω4, A_cor_B is Aᶜ_B,
+An_B/A is Aⁿ_B/A."""
 
 
 def symbol(name: str) -> str:
@@ -162,6 +165,23 @@ class Acceleration(Ask):
 
 
 @dataclass(frozen=True)
+class AccelerationPart(Ask):
+    """The normal (``part`` "n") or tangential ("t") part of the acceleration of ``point``:
+    relative to ``of``, a point of the same link (along and across the line joining them),
+    or, with ``of`` None, absolute (across and along the point's path)."""
+
+    part: str
+    point: str
+    of: str | None = None
+    order: ClassVar[int] = 5
+
+    @property
+    def name(self) -> str:
+        """``An_B/A``, ``At_B``."""
+        return f"A{self.part}_{self.point}" + ("" if self.of is None else f"/{self.of}")
+
+
+@dataclass(frozen=True)
 class Coriolis(Ask):
     """The Coriolis component at ``point``, which slides in a slot of a moving link."""
 
@@ -267,6 +287,8 @@ _GRAMMAR: tuple[tuple[re.Pattern, callable], ...] = tuple(
         (r"alpha(\d+)", lambda m: AngularAcceleration(int(m[1]))),
         (f"A_cor_{_POINT}", lambda m: Coriolis(m[1])),
         (f"([VA])_slide_{_POINT}", lambda m: Sliding(m[1], m[2])),
+        (f"A([nt])_{_POINT}/{_POINT}", lambda m: AccelerationPart(m[1], m[2], m[3])),
+        (f"A([nt])_{_POINT}", lambda m: AccelerationPart(m[1], m[2])),
         (f"([VA])_{_POINT}/{_POINT}", lambda m: Relative(m[1], m[2], m[3])),
         (f"V_{_POINT}", lambda m: Velocity(m[1])),
         (f"A_{_POINT}", lambda m: Acceleration(m[1])),
@@ -322,6 +344,9 @@ def ask_names(mech: Mechanism) -> set[str]:
     out |= {f"A_{p}" for p in named}
     out |= {f"{v}_{p}/{q}" for v in "VA" for p in named for q in named if p != q}
     out |= {f"A_cor_{s.point}" for s in slotted}
+    out |= {f"A{part}_{p}" for p in named for part in "nt"}
+    out |= {f"A{part}_{p}/{q}" for k in mech.links if k.number != 1
+            for p in k.names for q in k.names if p != q for part in "nt"}
     return out
 
 

@@ -231,7 +231,7 @@ _RULES: dict[type, Callable[[dict, dict, float], tuple[dict, dict, float]]] = {
     A.Position: _point, A.CentreCount: _counts,
     A.AngularVelocity: _rate, A.AngularAcceleration: _rate,
     A.Velocity: _vector, A.Acceleration: _vector, A.Relative: _vector, A.Coriolis: _vector,
-    A.Sliding: _vector,
+    A.Sliding: _vector, A.AccelerationPart: _vector,
     A.TimeRatio: _relative, A.Stroke: _relative, A.Mobility: _exact,
     A.GrashofClass: _same_class, A.LengthRange: _interval,
 }

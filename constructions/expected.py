@@ -28,8 +28,8 @@ from .reference.rotatability import (class_by_rotation, four_bar_spans, grashof_
                                      length_range_by_rotation)
 
 __all__ = ["position", "centre_count", "centre", "omega", "alpha", "velocity", "acceleration",
-           "relative", "coriolis", "sliding", "mobility", "grashof", "length_range", "time_ratio",
-           "stroke"]
+           "relative", "acceleration_part", "coriolis", "sliding", "mobility", "grashof",
+           "length_range", "time_ratio", "stroke"]
 
 
 def position(work, ask: A.Position) -> Expected:
@@ -96,6 +96,30 @@ def relative(work, ask: A.Relative) -> Expected:
     of = solver.point_velocity if ask.letter == "V" else solver.point_acceleration
     (ax, ay), (bx, by) = (of(kin, m, *taken(m, n)) for n in (ask.point, ask.of))
     return Expected(vector_value(ax - bx, ay - by))
+
+
+def acceleration_part(work, ask: A.AccelerationPart) -> Expected:
+    """Of a relative acceleration on link k: −ω_k² r_B/A and α_k × r_B/A. Of an absolute
+    one: its projection on the point's velocity (tangential) and the rest (normal)."""
+    m, kin = work.mechanism, work.kinematics
+    if ask.of is not None:
+        from .acceleration_parts import common_link
+
+        k = common_link(m, ask.point, ask.of)
+        (_, p), (_, q) = taken(m, ask.point), taken(m, ask.of)
+        rx, ry = (b - a for a, b in zip(kin.points[q], kin.points[p]))
+        w, al = kin.omegas[k], kin.alphas[k]
+        return Expected(vector_value(-w * w * rx, -w * w * ry) if ask.part == "n"
+                        else vector_value(-al * ry, al * rx))
+    ax, ay = solver.point_acceleration(kin, m, *taken(m, ask.point))
+    vx, vy = solver.point_velocity(kin, m, *taken(m, ask.point))
+    n2 = vx * vx + vy * vy
+    if n2 == 0.0:
+        raise InputError(f"{ask.point} is at rest at this instant, so its path has no tangent "
+                         f"to part A_{ask.point} by; ask A_{ask.point} itself")
+    k = (ax * vx + ay * vy) / n2
+    tx, ty = k * vx, k * vy
+    return Expected(vector_value(tx, ty) if ask.part == "t" else vector_value(ax - tx, ay - ty))
 
 
 def coriolis(work, ask: A.Coriolis) -> Expected:

@@ -184,7 +184,8 @@ class Work:
         if isinstance(ask, A.Velocity) or isinstance(ask, (A.Relative, A.Sliding)) \
                 and ask.letter == "V":
             return m.input_speed
-        if isinstance(ask, (A.Acceleration, A.Relative, A.Coriolis, A.Sliding)):
+        if isinstance(ask, (A.Acceleration, A.AccelerationPart, A.Relative, A.Coriolis,
+                            A.Sliding)):
             return m.input_acceleration
         if isinstance(ask, (A.Centre, A.Position)):
             return mechanism_size(self.kinematics)

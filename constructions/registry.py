@@ -17,6 +17,7 @@ from functools import partial
 
 from . import asks as A
 from . import expected
+from .acceleration_parts import answer_part
 from .acceleration_polygon import answer as from_acceleration_polygon
 from .centres import answer_centre, answer_count, answer_omega
 from .limit_positions import WHY_NOT as LIMITS_WHY_NOT
@@ -78,6 +79,8 @@ METHODS: tuple[Method, ...] = (
                                     A.Acceleration: expected.acceleration,
                                     A.Relative: expected.relative, A.Coriolis: expected.coriolis},
            from_acceleration_polygon, stage=4, when=_acceleration_polygon),
+    Method("acceleration polygon (parts)", {A.AccelerationPart: expected.acceleration_part},
+           answer_part, stage=4),
     Method("polygons (sliding)", {A.Sliding: expected.sliding}, answer_sliding, stage=4,
            askable=sliding_askable),
     Method("Grübler", {A.Mobility: expected.mobility}, answer_mobility, stage=5,

@@ -513,7 +513,7 @@ def _show(v: dict, units, name: str = "", figures: int = 6) -> str:
         return f"at infinity, direction ({_num(dx, '.4f')}, {_num(dy, '.4f')})"
     if "vector" in v:
         x, y = v["vector"]
-        per = "/s²" if name.startswith("A_") else "/s"
+        per = "/s²" if name.startswith("A") else "/s"     # A_B, A_cor_B, An_B/A, A_slide_B
         return (f"{_num(v['value'] / s, spec)} {units.length}{per} at "
                 f"{_num(_direction(x, y), '.4g')}°")
     w = v["value"]

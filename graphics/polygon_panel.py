@@ -409,7 +409,7 @@ class _PolygonPanel:
                 same.append(v)
         for group in sorted(twins, key=lambda t: math.dist(t[0][1], t[0][2])):
             step, a, b = group[0]
-            names = [typeset(s.label) for s, _, _ in group if s.label]
+            names = list(dict.fromkeys(typeset(s.label) for s, _, _ in group if s.label))
             text, sub = names[0] if names else ("", "")
             numbers = self.numbered(s for s, _, _ in group)
             if math.dist(a, b) < _ZERO:

@@ -190,6 +190,14 @@ PHRASES: dict[str, str] = {
     "polygon.pole": "Choose the {noun} pole {pole}: every vector drawn from it is an absolute "
                     "{noun}.",
     "polygon.relative": "Join {a} to {b}: {symbol} = {size}.",
+    "apolygon.resolve_relative": "Through {a} draw the parallel to {p}{q}: the normal part of "
+                                 "{a} {b} runs along it.",
+    "apolygon.resolve_absolute": "Through {pole} draw the parallel to the velocity of {point}, "
+                                 "the tangent to its path: the tangential part of {pole} {tip} "
+                                 "runs along it.",
+    "apolygon.resolve_foot": "Drop the perpendicular from {tip} onto it: its foot parts the "
+                             "acceleration into its normal and tangential parts.",
+    "vpolygon.path": "Join o_v to {tip}: the direction of the velocity of {point}.",
     "polygon.space_line": "Draw line {a}{b} of link {link}.",
     "polygon.lines_meet": "The two lines meet at {tip}: {pole} {tip} = {symbol}_{point}.",
     "polygon.image_why": "{x} lies on line {a}{b} of link {link}, so {tip} lies on {ta} {tb} with "
