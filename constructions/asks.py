@@ -23,13 +23,13 @@ from .model import Mechanism
 
 __all__ = ["Ask", "Position", "Centre", "AngularVelocity", "Velocity", "Relative",
            "AngularAcceleration", "Acceleration", "AccelerationPart", "Coriolis", "Sliding",
-           "Mobility",
+           "Ratio", "MechanicalAdvantage", "Distance", "TransmissionAngle", "Mobility",
            "GrashofClass",
            "LengthRange", "TimeRatio", "Stroke", "CentreCount", "parse_ask", "ask_names",
            "SYMBOLS", "symbol", "ordered"]
 
 SYMBOLS = {"omega": "ω", "alpha": "α", "theta": "θ", "A_cor_": "Aᶜ_", "An_": "Aⁿ_",
-           "At_": "Aᵗ_"}
+           "At_": "Aᵗ_", "mu": "μ"}
 """The course's letters for the words results.json spells: omega4 is ω4, A_cor_B is Aᶜ_B,
 An_B/A is Aⁿ_B/A."""
 
@@ -39,9 +39,11 @@ def symbol(name: str) -> str:
 
     Examples
     --------
-    >>> symbol("omega4"), symbol("A_cor_B"), symbol("V_B/A")
-    ('ω4', 'Aᶜ_B', 'V_B/A')
+    >>> symbol("omega4"), symbol("A_cor_B"), symbol("V_B/A"), symbol("omega4/omega2")
+    ('ω4', 'Aᶜ_B', 'V_B/A', 'ω4/ω2')
     """
+    if "/" in name:
+        return "/".join(symbol(part) for part in name.split("/"))
     for word, letter in SYMBOLS.items():
         if name.startswith(word):
             return letter + name[len(word):]
@@ -210,6 +212,64 @@ class Sliding(Ask):
 
 
 @dataclass(frozen=True)
+class Ratio(Ask):
+    """A ratio of two speeds, ``V_C/V_B`` (``letter`` V, points ``a`` over ``b``), or of two
+    angular velocities, ``omega4/omega2`` (``letter`` omega, links), signed."""
+
+    letter: str
+    a: str
+    b: str
+    order: ClassVar[int] = 2
+
+    @property
+    def name(self) -> str:
+        """``V_C/V_B``, ``omega4/omega2``."""
+        sep = "_" if self.letter == "V" else ""
+        return f"{self.letter}{sep}{self.a}/{self.letter}{sep}{self.b}"
+
+
+@dataclass(frozen=True)
+class MechanicalAdvantage(Ask):
+    """The mechanical advantage at output link ``link``: input ω over output ω, as the
+    instant centres give it (friction and inertia left out)."""
+
+    link: int
+    order: ClassVar[int] = 2
+
+    @property
+    def name(self) -> str:
+        """``ma_4``."""
+        return f"ma_{self.link}"
+
+
+@dataclass(frozen=True)
+class Distance(Ask):
+    """The distance from point ``point`` to the instant centre ``I_pair``."""
+
+    point: str
+    pair: tuple[int, int]
+    order: ClassVar[int] = 0
+
+    @property
+    def name(self) -> str:
+        """``dist_B_I13``."""
+        return f"dist_{self.point}_{Centre(self.pair).name}"
+
+
+@dataclass(frozen=True)
+class TransmissionAngle(Ask):
+    """A four-bar's transmission angle μ: between the coupler and the output link, at the pin
+    that joins them."""
+
+    order: ClassVar[int] = 0
+
+    @property
+    def name(self) -> str:
+        """``mu``."""
+        return "mu"
+
+
+@dataclass(frozen=True)
 class _Whole(Ask):
     """An ask of the mechanism as a whole, named by one word."""
 
@@ -278,9 +338,15 @@ class CentreCount(_Whole):
 
 
 _POINT = r"([A-Za-z][A-Za-z0-9_']*)"
+_PLAIN = r"([A-Za-z][A-Za-z0-9']*)"      # a point where an underscore follows
 _GRAMMAR: tuple[tuple[re.Pattern, callable], ...] = tuple(
     (re.compile(f"^{pattern}$"), make) for pattern, make in (
         (f"pos_{_POINT}", lambda m: Position(m[1])),
+        (f"V_{_PLAIN}/V_{_PLAIN}", lambda m: Ratio("V", m[1], m[2])),
+        (r"omega(\d+)/omega(\d+)", lambda m: Ratio("omega", m[1], m[2])),
+        (r"ma_(\d+)", lambda m: MechanicalAdvantage(int(m[1]))),
+        (fr"dist_{_PLAIN}_I(\d)(\d)", lambda m: Distance(m[1], (int(m[2]), int(m[3])))),
+        (r"mu", lambda m: TransmissionAngle()),
         (r"I(\d)(\d)", lambda m: Centre((int(m[1]), int(m[2])))),
         (r"I(\d+),(\d+)", lambda m: Centre((int(m[1]), int(m[2])))),
         (r"omega(\d+)", lambda m: AngularVelocity(int(m[1]))),
@@ -345,6 +411,11 @@ def ask_names(mech: Mechanism) -> set[str]:
     out |= {f"{v}_{p}/{q}" for v in "VA" for p in named for q in named if p != q}
     out |= {f"A_cor_{s.point}" for s in slotted}
     out |= {f"A{part}_{p}" for p in named for part in "nt"}
+    out |= {f"V_{p}/V_{q}" for p in moving for q in moving if p != q}
+    out |= {f"omega{a}/omega{b}" for a in nums for b in nums if a != b and 1 not in (a, b)}
+    out |= {f"ma_{n}" for n in nums if n not in (1, mech.drive.link)}
+    out |= {f"dist_{p}_{Centre((a, b)).name}" for p in mech.point_names
+            for i, a in enumerate(nums) for b in nums[i + 1:] if b < 10}
     out |= {f"A{part}_{p}/{q}" for k in mech.links if k.number != 1
             for p in k.names for q in k.names if p != q for part in "nt"}
     return out

@@ -38,7 +38,7 @@ from .record import Kind, Ref, Role
 
 __all__ = ["Centre", "Centres", "locate_centres", "omega_ratio", "centre_ref", "pair_label",
            "WELL_CROSSED", "ILL_CONDITIONED", "PRIMARY_RULES", "located", "answer_centre",
-           "answer_count",
+           "answer_count", "ratio_by_centres", "CENTRES_FIGURE", "OMEGA_FIGURE",
            "answer_omega"]
 
 WELL_CROSSED = 0.1
@@ -581,19 +581,34 @@ def answer_omega(work, ask: A.AngularVelocity) -> Answer:
     if n == d.link:
         return Answer(ask, {"value": d.omega}, 1.0, "given", refs=(cs.centre(1, d.link).ref,),
                       figures=(OMEGA_FIGURE,))
-    try:
-        ratio = omega_ratio(cs, d.link, n)
-    except DegenerateInput as e:
-        raise TarsimError(f"ω{n} from the instant centres: {e}") from None
-    pairs = [(1, d.link), (1, n), tuple(sorted((d.link, n)))]
-    cond = min(cs.conditioning(*pair) for pair in pairs) * _spread(cs, d.link, n)
-    if cond < _SAME:
-        raise TarsimError(f"ω{n} from the instant centres: {pair_label(d.link, n)} and "
-                          f"{pair_label(1, n)} fall together at this position, so the ratio "
-                          f"of their distances is lost to rounding; find ω{n} by the velocity "
-                          "polygon")
+    ratio, cond, refs = ratio_by_centres(work, d.link, n)
     return Answer(ask, {"value": ratio * d.omega + 0.0}, cond, "instant centres (ω ratio)",
-                  refs=tuple(cs.centre(*pair).ref for pair in pairs), figures=(OMEGA_FIGURE,))
+                  refs=refs, figures=(OMEGA_FIGURE,))
+
+
+def ratio_by_centres(work, i: int, j: int) -> tuple[float, float, tuple[Ref, ...]]:
+    """ω_j / ω_i read off the centres I_1i, I_1j and I_ij on their line, with its
+    conditioning and the centres' refs.
+
+    Raises
+    ------
+    TarsimError
+        If the ratio does not exist here (link i translates, ω_j is unbounded), or I_ij and
+        I_1j fall together, so the ratio of their distances is lost to rounding.
+    """
+    cs = located(work)
+    try:
+        ratio = omega_ratio(cs, i, j)
+    except DegenerateInput as e:
+        raise TarsimError(f"ω{j} from the instant centres: {e}") from None
+    pairs = [(1, i), (1, j), tuple(sorted((i, j)))]
+    cond = min(cs.conditioning(*pair) for pair in pairs) * _spread(cs, i, j)
+    if cond < _SAME:
+        raise TarsimError(f"ω{j} from the instant centres: {pair_label(i, j)} and "
+                          f"{pair_label(1, j)} fall together at this position, so the ratio "
+                          f"of their distances is lost to rounding; find ω{j} by the velocity "
+                          "polygon")
+    return ratio, cond, tuple(cs.centre(*pair).ref for pair in pairs)
 
 
 CENTRES_FIGURE = FigureSpec("centres", "Instant centres", "instant centres", notes=True)

@@ -12,6 +12,7 @@ reference when it registers (:mod:`.registry`).
 
 from __future__ import annotations
 
+import math
 from itertools import combinations
 
 from . import asks as A
@@ -29,7 +30,7 @@ from .reference.rotatability import (class_by_rotation, four_bar_spans, grashof_
 
 __all__ = ["position", "centre_count", "centre", "omega", "alpha", "velocity", "acceleration",
            "relative", "acceleration_part", "coriolis", "sliding", "mobility", "grashof",
-           "length_range", "time_ratio", "stroke"]
+           "length_range", "time_ratio", "stroke", "reading"]
 
 
 def position(work, ask: A.Position) -> Expected:
@@ -141,6 +142,28 @@ def sliding(work, ask: A.Sliding) -> Expected:
     rate = work.kinematics.slide_rates[i]
     k = rate.velocity if ask.letter == "V" else rate.acceleration
     return Expected(vector_value(k * rate.direction[0], k * rate.direction[1]))
+
+
+def reading(work, ask) -> Expected:
+    """A ratio of speeds or of ω, the mechanical advantage ω_in/ω_out, a point's distance to
+    an analytic centre, or μ from the solver's points."""
+    m, kin = work.mechanism, work.kinematics
+    if isinstance(ask, A.Ratio) and ask.letter == "omega":
+        return Expected({"value": kin.omegas[int(ask.a)] / kin.omegas[int(ask.b)]})
+    if isinstance(ask, A.MechanicalAdvantage):
+        return Expected({"value": kin.omegas[m.drive.link] / kin.omegas[ask.link]})
+    if isinstance(ask, A.Ratio):
+        a, b = (solver.point_velocity(kin, m, *taken(m, n)) for n in (ask.a, ask.b))
+        return Expected({"value": (a[0] ** 2 + a[1] ** 2) ** 0.5 / (b[0] ** 2 + b[1] ** 2) ** 0.5})
+    if isinstance(ask, A.Distance):
+        ref = instant_centre(kin, *ask.pair, pin=shared_pin(m, *ask.pair))
+        (px, py), (cx, cy) = kin.points[ask.point], ref.point
+        return Expected({"value": ((px - cx) ** 2 + (py - cy) ** 2) ** 0.5})
+    from .readings import transmission_pin
+
+    b, a, o = (kin.points[n] for n in transmission_pin(m))
+    (ux, uy), (vx, vy) = (a[0] - b[0], a[1] - b[1]), (o[0] - b[0], o[1] - b[1])
+    return Expected({"value": math.atan2(abs(ux * vy - uy * vx), ux * vx + uy * vy)})
 
 
 def mobility(work, ask: A.Mobility) -> Expected:

@@ -28,6 +28,7 @@ from .methods import Method, Work
 from .model import Mechanism
 from .overall import GRASHOF_WHY_NOT, answer_grashof, answer_mobility, grashof_askable
 from .positions import answer_position
+from .readings import MU_WHY_NOT, answer_reading, mu_askable
 from .sliding import answer_sliding, sliding_askable
 from .transmission import answer_omega as by_transmission, transmission_links
 from .velocity_by_centres import answer_velocity as by_centres
@@ -91,6 +92,9 @@ METHODS: tuple[Method, ...] = (
            from_limits, stage=7, askable=limits_askable, why_not=LIMITS_WHY_NOT),
     Method("circle diagram (count)", {A.CentreCount: expected.centre_count}, answer_count,
            stage=8),
+    Method("readings", {A.Ratio: expected.reading, A.MechanicalAdvantage: expected.reading,
+                        A.Distance: expected.reading, A.TransmissionAngle: expected.reading},
+           answer_reading, stage=3, askable=mu_askable, why_not=MU_WHY_NOT),
 )
 """Every method, in the order a solution takes them."""
 

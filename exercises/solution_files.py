@@ -18,7 +18,8 @@ from functools import cached_property, partial
 from pathlib import Path
 
 from ..constructions.acceleration_polygon import drawn_acceleration_polygon
-from ..constructions.asks import symbol
+from ..constructions.asks import (Distance, MechanicalAdvantage, Ratio, TransmissionAngle,
+                                  parse_ask, symbol)
 from ..constructions.checks import FigureSpec, Quantity
 from ..constructions.limit_positions import drawn_limits
 from ..constructions.narration import narrate
@@ -517,6 +518,13 @@ def _show(v: dict, units, name: str = "", figures: int = 6) -> str:
         return (f"{_num(v['value'] / s, spec)} {units.length}{per} at "
                 f"{_num(_direction(x, y), '.4g')}°")
     w = v["value"]
+    kind = type(parse_ask(name)) if name else None
+    if kind in (Ratio, MechanicalAdvantage):
+        return _num(w, spec)
+    if kind is Distance:
+        return f"{_num(w / s, spec)} {units.length}"
+    if kind is TransmissionAngle:
+        return f"{_num(math.degrees(w), spec)}°"
     sense = " (ccw)" if w > 0 else " (cw)" if w < 0 else ""
     return f"{_num(w, spec)} rad/s" + ("²" if name.startswith("alpha") else "") + sense
 

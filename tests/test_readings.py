@@ -1,0 +1,70 @@
+"""Numbers read off a drawn construction: ω ratios and the mechanical advantage from the
+centres, speed ratios from the velocity polygon, a point's distance to a centre with the
+dividers, a four-bar's transmission angle with the protractor. Each against a relation
+a textbook states (V_B = ω3·I13B, μ by the law of cosines) and against the solver."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import replace
+
+import pytest
+
+from tarsim.constructions import asks as A
+from tarsim.constructions.errors import TarsimError
+from tarsim.exercises.catalog import load
+from tarsim.exercises.solution import solve_exercise
+from tarsim.exercises.solution_files import answer_line
+
+ASKED = ("omega3", "omega4", "V_B", "omega4/omega2", "ma_4", "V_B/V_A", "dist_B_I13",
+         "dist_A_I13", "mu")
+
+
+@pytest.fixture(scope="module")
+def four_bar():
+    ex = load("four-bar")
+    return solve_exercise(replace(ex, methods=("radius-rotation", "polygon")).asking(ASKED))
+
+
+def value(sol, name):
+    q = sol.quantities[name]
+    assert q.passed and q.rel_error <= q.tolerance, name
+    return q.value["value"]
+
+
+def test_ratios_of_omega_and_the_mechanical_advantage(four_bar):
+    w4 = value(four_bar, "omega4")
+    assert value(four_bar, "omega4/omega2") == pytest.approx(w4 / 10.0, rel=1e-12)
+    assert value(four_bar, "ma_4") == pytest.approx(10.0 / w4, rel=1e-12)
+    # V_A = ω2·O2A = 10 rad/s × 100 mm = 1 m/s
+    assert value(four_bar, "V_B/V_A") == pytest.approx(value(four_bar, "V_B") / 1.0, rel=1e-12)
+
+
+def test_a_point_moves_at_omega_times_its_distance_from_the_links_centre(four_bar):
+    # Coupler 3 turns about I13: V_B = |ω3|·I13B and V_A = |ω3|·I13A.
+    w3 = abs(value(four_bar, "omega3"))
+    assert value(four_bar, "dist_B_I13") * w3 == pytest.approx(value(four_bar, "V_B"),
+                                                                rel=1e-12)
+    assert value(four_bar, "dist_A_I13") * w3 == pytest.approx(1.0, rel=1e-12)
+
+
+def test_the_transmission_angle_is_the_law_of_cosines(four_bar):
+    # O2A 100, AB 250, O4B 200, O2O4 300 mm at θ2 = 60°: AO4² = 100² + 300² − 2·100·300·½
+    # = 70000, and cos μ = (AB² + O4B² − AO4²) / (2·AB·O4B) = 32500 / 100000.
+    assert math.degrees(value(four_bar, "mu")) == pytest.approx(
+        math.degrees(math.acos(0.325)), abs=1e-12)
+    line = answer_line("mu", four_bar.quantities["mu"], load("four-bar").mechanism.units)
+    assert line.startswith("μ = 71.0344°")
+    assert answer_line("omega4/omega2", four_bar.quantities["omega4/omega2"],
+                       load("four-bar").mechanism.units).startswith("ω4/ω2 = 0.291596 ")
+
+
+def test_readings_are_refused_where_they_mean_nothing():
+    assert A.parse_ask("V_C/V_B") == A.Ratio("V", "C", "B")
+    assert A.parse_ask("dist_B_I13") == A.Distance("B", (1, 3))
+    shaper = load("crank-shaper")
+    ex = replace(shaper, positions=())
+    with pytest.raises(TarsimError, match="transmission angle is asked of a four-bar"):
+        solve_exercise(ex.asking(("mu",)))
+    with pytest.raises(TarsimError, match="I15 is at infinity at this position"):
+        solve_exercise(ex.asking(("dist_B_I15",)))
