@@ -123,7 +123,7 @@ class _Method:
         if self.same(ij, self.asm.points[known]):
             return ij, v_known  # the known point is the transfer point (a pin)
         if self.is_infinite(ij):
-            raise DegenerateInput(f"{lab_ij} is at infinity (links {i} and {j} turn together)")
+            return self.equal_omega(i, j, known, v_known)
         loc = self.draw("loc", "line_through", i1, ij,
                         phrase=phrase("velocity.line_of_centres", a=lab_i1, b=lab_ij,
                                       c=pair_label(1, j)))
@@ -136,6 +136,42 @@ class _Method:
                         phrase=phrase("velocity.transfer_point", centre=lab_ij,
                                       speed=self.speed(ij, t_tip), i=i, j=j))
         return ij, v_t
+
+    def equal_omega(self, i: int, j: int, known: str, v_known: Ref) -> tuple[Ref, Ref]:
+        """Carry the known velocity to link j when I_ij is at infinity (notes §2.5): the two
+        links turn with one ω, so their gauge lines have one slope. On the line through
+        I_1i and I_1j, draw link i's gauge line as usual, link j's through I_1j parallel to
+        it, and read the velocity of I_1i taken as a point of link j. Returns that point
+        and its velocity, for link j's own construction to go on from.
+
+        Raises
+        ------
+        DegenerateInput
+            If link j translates too, or its centre I_1j falls on I_1i.
+        """
+        i1, j1 = self.centre(1, i), self.centre(1, j)
+        lab_i1, lab_j1, lab_ij = pair_label(1, i), pair_label(1, j), pair_label(i, j)
+        if self.is_infinite(j1) or self.same(i1, j1):
+            raise DegenerateInput(f"{lab_ij} is at infinity and {lab_j1} gives no line with "
+                                  f"{lab_i1}: no line carries link {j}'s ω")
+        loc = self.draw("loc", "line_through", i1, j1,
+                        phrase=phrase("velocity.equal_omega_line", centre=lab_ij, i=i, j=j,
+                                      a=lab_i1, b=lab_j1))
+        gauge_i = self.gauge_tip(i1, loc, known, v_known, lab_i1, i)
+        gauge_j = self.draw("gauge:eq", "parallel_through", j1, gauge_i,
+                            label=f"gauge line of link {j}", kind=Kind.GAUGE_LINE,
+                            phrase=phrase("velocity.equal_omega_gauge", centre=lab_j1, i=i, j=j))
+        perp = self.draw("perp:eq", "perpendicular_through", i1, loc)
+        tip = self.draw("tip:eq", "intersect_lines", perp, gauge_j,
+                        phrase=phrase("velocity.equal_omega_point", at=lab_i1, j=j,
+                                      speed=self.speed_to(i1, perp, gauge_j)))
+        return i1, self.draw("V:eq", "join", i1, tip, label=vector_label(lab_i1))
+
+    def speed_to(self, at: Ref, perp: Ref, gauge: Ref) -> Quantity:
+        """The speed the perpendicular at ``at`` cuts off on ``gauge``, read before it is drawn
+        (for the sentence that draws it)."""
+        p = g.intersect_lines(self.c.output(perp), self.c.output(gauge))[0]
+        return self.m.units.speed_said(g.distance(self.c.output(at), p) / self.scale)
 
     def gauge_tip(self, centre: Ref, loc: Ref, known: str, v_known: Ref, lab_c: str,
                   link: int) -> Ref:

@@ -117,6 +117,13 @@ PHRASES: dict[str, str] = {
     "velocity.lay_off_known": "At {point}′ lay off V_{point} = {speed} perpendicular to the line "
                               "of centres, in the same sense.",
     "velocity.gauge_line": "Draw the gauge line of link {link} from {centre} through the tip.",
+    "velocity.equal_omega_line": "{centre} is at infinity: links {i} and {j} turn together, "
+                                 "with one ω. Draw the line through {a} and {b}.",
+    "velocity.equal_omega_gauge": "Through {centre} draw the gauge line of link {j} parallel to "
+                                  "that of link {i}: one ω, one slope.",
+    "velocity.equal_omega_point": "At {at}, taken as a point of link {j}, erect the "
+                                  "perpendicular to the line; it meets the gauge line of link "
+                                  "{j} at the tip of that point's velocity, {speed}.",
     "velocity.translates": "Link {link} translates ({centre} is at infinity), so every point of "
                            "it has V_{known}: lay it off at {point}.",
     "velocity.at_rest": "{point} is at {centre}, the centre link {link} turns about at this "
