@@ -23,7 +23,8 @@ from .model import Mechanism
 
 __all__ = ["Ask", "Position", "Centre", "AngularVelocity", "Velocity", "Relative",
            "AngularAcceleration", "Acceleration", "AccelerationPart", "Coriolis", "Sliding",
-           "Ratio", "MechanicalAdvantage", "Distance", "TransmissionAngle", "Mobility",
+           "Ratio", "MechanicalAdvantage", "Distance", "TransmissionAngle", "LeastVelocity",
+           "Mobility",
            "GrashofClass",
            "LengthRange", "TimeRatio", "Stroke", "CentreCount", "parse_ask", "ask_names",
            "SYMBOLS", "symbol", "ordered"]
@@ -257,6 +258,20 @@ class Distance(Ask):
 
 
 @dataclass(frozen=True)
+class LeastVelocity(Ask):
+    """The point of link ``link``'s line with the least velocity, and that velocity: the
+    foot of the perpendicular from the link's instant centre I_1k."""
+
+    link: int
+    order: ClassVar[int] = 2
+
+    @property
+    def name(self) -> str:
+        """``Vmin_3``."""
+        return f"Vmin_{self.link}"
+
+
+@dataclass(frozen=True)
 class TransmissionAngle(Ask):
     """A four-bar's transmission angle μ: between the coupler and the output link, at the pin
     that joins them."""
@@ -345,6 +360,7 @@ _GRAMMAR: tuple[tuple[re.Pattern, callable], ...] = tuple(
         (f"V_{_PLAIN}/V_{_PLAIN}", lambda m: Ratio("V", m[1], m[2])),
         (r"omega(\d+)/omega(\d+)", lambda m: Ratio("omega", m[1], m[2])),
         (r"ma_(\d+)", lambda m: MechanicalAdvantage(int(m[1]))),
+        (r"Vmin_(\d+)", lambda m: LeastVelocity(int(m[1]))),
         (fr"dist_{_PLAIN}_I(\d)(\d)", lambda m: Distance(m[1], (int(m[2]), int(m[3])))),
         (r"mu", lambda m: TransmissionAngle()),
         (r"I(\d)(\d)", lambda m: Centre((int(m[1]), int(m[2])))),
@@ -414,6 +430,7 @@ def ask_names(mech: Mechanism) -> set[str]:
     out |= {f"V_{p}/V_{q}" for p in moving for q in moving if p != q}
     out |= {f"omega{a}/omega{b}" for a in nums for b in nums if a != b and 1 not in (a, b)}
     out |= {f"ma_{n}" for n in nums if n not in (1, mech.drive.link)}
+    out |= {f"Vmin_{k.number}" for k in mech.links if k.number != 1 and len(k.names) == 2}
     out |= {f"dist_{p}_{Centre((a, b)).name}" for p in mech.point_names
             for i, a in enumerate(nums) for b in nums[i + 1:] if b < 10}
     out |= {f"A{part}_{p}/{q}" for k in mech.links if k.number != 1

@@ -201,6 +201,15 @@ def _point(value: dict, ref: dict, scale: float) -> tuple[dict, dict, float]:
     return value, ref, math.dist(value["point"], ref["point"]) / max(scale, 1e-300)
 
 
+def _point_and_speed(value: dict, ref: dict, scale: float) -> tuple[dict, dict, float]:
+    """A point and its speed: the worse of the point's miss beside the mechanism's size
+    (``scale``) and the speed's beside the reference's own ``floor`` (the link's |ω| times
+    that size: a least velocity may be nil, at a crank's pivot)."""
+    miss = math.dist(value["point"], ref["point"]) / max(scale, 1e-300)
+    slow = abs(value["value"] - ref["value"]) / max(ref["value"], ref["floor"], 1e-300)
+    return value, {"point": ref["point"], "value": ref["value"]}, max(miss, slow)
+
+
 def _counts(value: dict, ref: dict, scale: float) -> tuple[dict, dict, float]:
     """Counts that must be the same, every one of them."""
     return value, ref, float(sum(abs(value[k] - ref[k]) for k in ref))
@@ -229,7 +238,7 @@ def _interval(value: dict, ref: dict, scale: float) -> tuple[dict, dict, float]:
 
 _RULES: dict[type, Callable[[dict, dict, float], tuple[dict, dict, float]]] = {
     A.Position: _point, A.CentreCount: _counts, A.Ratio: _rate, A.MechanicalAdvantage: _rate,
-    A.Distance: _rate, A.TransmissionAngle: _rate,
+    A.Distance: _rate, A.TransmissionAngle: _rate, A.LeastVelocity: _point_and_speed,
     A.AngularVelocity: _rate, A.AngularAcceleration: _rate,
     A.Velocity: _vector, A.Acceleration: _vector, A.Relative: _vector, A.Coriolis: _vector,
     A.Sliding: _vector, A.AccelerationPart: _vector,

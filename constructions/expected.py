@@ -22,7 +22,7 @@ from .errors import DegenerateInput, InputError
 from .limit_positions import WHY_NOT, drawn_limits
 from .model import SlideKind
 from .reference import solver
-from .reference.centres import MoveTogether, instant_centre, shared_pin
+from .reference.centres import MoveTogether, instant_centre, mechanism_size, shared_pin
 from .reference.limits import limit_reference
 from .reference.mobility import mobility_of
 from .reference.rotatability import (class_by_rotation, four_bar_spans, grashof_class,
@@ -155,6 +155,18 @@ def reading(work, ask) -> Expected:
     if isinstance(ask, A.Ratio):
         a, b = (solver.point_velocity(kin, m, *taken(m, n)) for n in (ask.a, ask.b))
         return Expected({"value": (a[0] ** 2 + a[1] ** 2) ** 0.5 / (b[0] ** 2 + b[1] ** 2) ** 0.5})
+    if isinstance(ask, A.LeastVelocity):
+        # |V(P)|² along the line P = A + t·(B − A) is a quadratic in t: its least is where
+        # the velocity is square to the line's own motion, found without any centre.
+        a, b = m.link(ask.link).names
+        (ax, ay), (bx, by) = kin.points[a], kin.points[b]
+        va, vb = (solver.point_velocity(kin, m, ask.link, n) for n in (a, b))
+        dx, dy = vb[0] - va[0], vb[1] - va[1]
+        t = -(va[0] * dx + va[1] * dy) / (dx * dx + dy * dy)
+        vx, vy = va[0] + t * dx, va[1] + t * dy
+        return Expected({"point": [ax + t * (bx - ax), ay + t * (by - ay)],
+                         "value": (vx * vx + vy * vy) ** 0.5,
+                         "floor": abs(kin.omegas[ask.link]) * mechanism_size(kin)})
     if isinstance(ask, A.Distance):
         ref = instant_centre(kin, *ask.pair, pin=shared_pin(m, *ask.pair))
         (px, py), (cx, cy) = kin.points[ask.point], ref.point

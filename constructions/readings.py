@@ -1,5 +1,6 @@
 """Numbers read off a drawn construction: speed and ω ratios, the mechanical advantage, the
-distance from a point to an instant centre, and a four-bar's transmission angle.
+distance from a point to an instant centre, the least velocity along a link, and a
+four-bar's transmission angle.
 
 Each is read the way a student reads it with dividers and a protractor, from what is
 already drawn: ω ratios from the centres on their line (as ω itself is), speed ratios
@@ -15,6 +16,7 @@ from . import asks as A
 from .centres import CENTRES_FIGURE, OMEGA_FIGURE, located, ratio_by_centres
 from .checks import Answer
 from .errors import InputError
+from .narration import phrase
 from .model import Mechanism
 from .record import Panel
 from .reference.rotatability import four_bar_spans
@@ -77,6 +79,8 @@ def answer_reading(work, ask) -> Answer:
                       refs=(vp.tip(ask.a), vp.tip(ask.b)), arrows=tuple(vp.steps),
                       figures=(WORKED,), panel=Panel.VELOCITY)
     asm = work.assembly
+    if isinstance(ask, A.LeastVelocity):
+        return _least_velocity(work, ask)
     if isinstance(ask, A.Distance):
         cs = located(work)
         centre = cs.point(*ask.pair)
@@ -96,6 +100,38 @@ def answer_reading(work, ask) -> Answer:
     cond = min(asm[asm.points[n]].conditioning for n in (a, b, o))
     return Answer(ask, value, cond, f"protractor: angle {a}{b}{o} between coupler and output",
                   refs=tuple(asm.points[n] for n in (a, b, o)))
+
+
+def _least_velocity(work, ask: A.LeastVelocity) -> Answer:
+    """Drop the perpendicular from I_1k onto the link's line: its foot is the point of the
+    line nearest the centre the link turns about, so the slowest, at |ω_k| times that
+    distance (ω_k from the centres)."""
+    m, asm, k = work.mechanism, work.assembly, ask.link
+    names = m.link(k).names
+    if len(names) != 2:
+        raise InputError(f"link {k} has {len(names)} points; the least velocity is asked of a "
+                         "link of two, along the line that joins them")
+    cs = located(work)
+    centre = cs.centre(1, k)
+    if asm.output(centre.ref).is_at_infinity:
+        raise InputError(f"link {k} translates at this instant ({A.Centre((1, k)).name} is at "
+                         "infinity): every point of it has one velocity, none the least")
+    d = m.drive.link
+    ratio, cond, refs = ratio_by_centres(work, d, k) if k != d else (1.0, 1.0, ())
+    a, b = names
+    line = f"vmin:{k}:line"
+    if line not in asm:
+        asm.draw(line, "line_through", asm.points[a], asm.points[b],
+                 phrase=phrase("readings.link_line", a=a, b=b, link=k))
+        asm.draw(f"vmin:{k}", "project_onto", centre.ref, line, label=f"M{k}",
+                 phrase=phrase("readings.least_velocity", centre=centre.label, a=a, b=b,
+                               link=k, point=f"M{k}"))
+    foot = asm.output(f"vmin:{k}").xy
+    speed = abs(ratio * m.drive.omega) * math.dist(foot, asm.output(centre.ref).xy)
+    cond = min(cond, cs.conditioning(1, k), asm[f"vmin:{k}"].conditioning)
+    return Answer(ask, {"point": [foot[0] + 0.0, foot[1] + 0.0], "value": speed}, cond,
+                  f"foot of the perpendicular from {centre.label}",
+                  refs=(f"vmin:{k}", centre.ref, *refs), figures=(OMEGA_FIGURE,))
 
 
 def _angle_at(vertex, p, q) -> float:

@@ -506,7 +506,9 @@ def _show(v: dict, units, name: str = "", figures: int = 6) -> str:
     spec = f".{figures}g"
     if "point" in v:
         x, y = _quiet_pair(v["point"])
-        return f"({_num(x / s, spec)}, {_num(y / s, spec)}) {units.length}"
+        at = f"({_num(x / s, spec)}, {_num(y / s, spec)}) {units.length}"
+        # a point with its speed: the least velocity along a link
+        return at if "value" not in v else f"{_num(v['value'] / s, spec)} {units.length}/s at {at}"
     if "undefined" in v:
         return "any point (no relative motion)"
     if v.get("at_infinity"):

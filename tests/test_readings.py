@@ -68,3 +68,26 @@ def test_readings_are_refused_where_they_mean_nothing():
         solve_exercise(ex.asking(("mu",)))
     with pytest.raises(TarsimError, match="I15 is at infinity at this position"):
         solve_exercise(ex.asking(("dist_B_I15",)))
+
+
+def test_the_least_velocity_along_a_link_is_its_common_component():
+    # Every point of the coupler's line shares V_A's component along AB; the slowest has
+    # nothing else: V_min = |V_A · AB/|AB||, at the foot of the perpendicular from I13.
+    from tarsim.constructions.reference import solver
+
+    ex = load("four-bar")
+    sol = solve_exercise(ex.asking(("Vmin_3", "Vmin_2", "I13")))
+    kin = solver.solve(ex.mechanism)
+    (ax, ay), (bx, by) = kin.points["A"], kin.points["B"]
+    vax, vay = kin.velocities["A"]
+    along = abs(vax * (bx - ax) + vay * (by - ay)) / math.hypot(bx - ax, by - ay)
+    q = sol.quantities["Vmin_3"]
+    assert q.passed and q.value["value"] == pytest.approx(along, rel=1e-12)
+    (fx, fy), (cx, cy) = q.value["point"], sol.quantities["I13"].value["point"]
+    assert (fx - cx) * (bx - ax) + (fy - cy) * (by - ay) == pytest.approx(0.0, abs=1e-15)
+    # the crank's line runs through its pivot: its slowest point is O2, at rest
+    q2 = sol.quantities["Vmin_2"]
+    assert q2.value["point"] == pytest.approx([0.0, 0.0], abs=1e-15)
+    assert q2.value["value"] == pytest.approx(0.0, abs=1e-15) and q2.passed
+    line = answer_line("Vmin_3", q, ex.mechanism.units)
+    assert line.startswith(f"Vmin_3 = {along * 1000:.6g} mm/s at (")

@@ -205,6 +205,10 @@ PHRASES: dict[str, str] = {
     "apolygon.resolve_foot": "Drop the perpendicular from {tip} onto it: its foot parts the "
                              "acceleration into its normal and tangential parts.",
     "vpolygon.path": "Join o_v to {tip}: the direction of the velocity of {point}.",
+    "readings.link_line": "Draw the line {a}{b} of link {link}.",
+    "readings.least_velocity": "Drop the perpendicular from {centre} onto {a}{b}: its foot "
+                               "{point} is the point of the line nearest {centre}, the slowest "
+                               "of link {link}.",
     "polygon.space_line": "Draw line {a}{b} of link {link}.",
     "polygon.lines_meet": "The two lines meet at {tip}: {pole} {tip} = {symbol}_{point}.",
     "polygon.image_why": "{x} lies on line {a}{b} of link {link}, so {tip} lies on {ta} {tb} with "
