@@ -24,6 +24,7 @@ from .model import Mechanism
 __all__ = ["Ask", "Position", "Centre", "AngularVelocity", "Velocity", "Relative",
            "AngularAcceleration", "Acceleration", "AccelerationPart", "Coriolis", "Sliding",
            "Ratio", "MechanicalAdvantage", "Distance", "TransmissionAngle", "LeastVelocity",
+           "Rubbing",
            "Mobility",
            "GrashofClass",
            "LengthRange", "TimeRatio", "Stroke", "CentreCount", "parse_ask", "ask_names",
@@ -272,6 +273,22 @@ class LeastVelocity(Ask):
 
 
 @dataclass(frozen=True)
+class Rubbing(Ask):
+    """The rubbing velocity at pin ``point`` of ``diameter`` (m): the relative angular
+    velocity of the two links it joins times the pin's radius. The diameter is the
+    exercise's (``[ask] pins``); None until it is read."""
+
+    point: str
+    diameter: float | None = None
+    order: ClassVar[int] = 2
+
+    @property
+    def name(self) -> str:
+        """``rub_B``."""
+        return f"rub_{self.point}"
+
+
+@dataclass(frozen=True)
 class TransmissionAngle(Ask):
     """A four-bar's transmission angle μ: between the coupler and the output link, at the pin
     that joins them."""
@@ -361,6 +378,7 @@ _GRAMMAR: tuple[tuple[re.Pattern, callable], ...] = tuple(
         (r"omega(\d+)/omega(\d+)", lambda m: Ratio("omega", m[1], m[2])),
         (r"ma_(\d+)", lambda m: MechanicalAdvantage(int(m[1]))),
         (r"Vmin_(\d+)", lambda m: LeastVelocity(int(m[1]))),
+        (f"rub_{_POINT}", lambda m: Rubbing(m[1])),
         (fr"dist_{_PLAIN}_I(\d)(\d)", lambda m: Distance(m[1], (int(m[2]), int(m[3])))),
         (r"mu", lambda m: TransmissionAngle()),
         (r"I(\d)(\d)", lambda m: Centre((int(m[1]), int(m[2])))),
@@ -431,6 +449,7 @@ def ask_names(mech: Mechanism) -> set[str]:
     out |= {f"omega{a}/omega{b}" for a in nums for b in nums if a != b and 1 not in (a, b)}
     out |= {f"ma_{n}" for n in nums if n not in (1, mech.drive.link)}
     out |= {f"Vmin_{k.number}" for k in mech.links if k.number != 1 and len(k.names) == 2}
+    out |= {f"rub_{p}" for p in mech.point_names if len(mech.links_at(p)) == 2}
     out |= {f"dist_{p}_{Centre((a, b)).name}" for p in mech.point_names
             for i, a in enumerate(nums) for b in nums[i + 1:] if b < 10}
     out |= {f"A{part}_{p}/{q}" for k in mech.links if k.number != 1

@@ -167,6 +167,12 @@ def reading(work, ask) -> Expected:
         return Expected({"point": [ax + t * (bx - ax), ay + t * (by - ay)],
                          "value": (vx * vx + vy * vy) ** 0.5,
                          "floor": abs(kin.omegas[ask.link]) * mechanism_size(kin)})
+    if isinstance(ask, A.Rubbing):
+        from .readings import pin_links
+
+        i, j = pin_links(m, ask.point)
+        w = {1: 0.0, **kin.omegas}
+        return Expected({"value": abs(w[i] - w[j]) * ask.diameter / 2})
     if isinstance(ask, A.Distance):
         ref = instant_centre(kin, *ask.pair, pin=shared_pin(m, *ask.pair))
         (px, py), (cx, cy) = kin.points[ask.point], ref.point

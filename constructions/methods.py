@@ -181,8 +181,8 @@ class Work:
             return abs(d.omega)
         if isinstance(ask, A.AngularAcceleration):
             return math.hypot(d.omega ** 2, d.alpha)
-        if isinstance(ask, A.Velocity) or isinstance(ask, (A.Relative, A.Sliding)) \
-                and ask.letter == "V":
+        if isinstance(ask, (A.Velocity, A.Rubbing)) or \
+                isinstance(ask, (A.Relative, A.Sliding)) and ask.letter == "V":
             return m.input_speed
         if isinstance(ask, (A.Acceleration, A.AccelerationPart, A.Relative, A.Coriolis,
                             A.Sliding)):

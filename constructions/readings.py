@@ -1,6 +1,6 @@
 """Numbers read off a drawn construction: speed and ω ratios, the mechanical advantage, the
-distance from a point to an instant centre, the least velocity along a link, and a
-four-bar's transmission angle.
+distance from a point to an instant centre, the least velocity along a link, the rubbing
+velocity at a pin, and a four-bar's transmission angle.
 
 Each is read the way a student reads it with dividers and a protractor, from what is
 already drawn: ω ratios from the centres on their line (as ω itself is), speed ratios
@@ -22,7 +22,7 @@ from .record import Panel
 from .reference.rotatability import four_bar_spans
 from .velocity_polygon import WORKED, drawn_velocity_polygon
 
-__all__ = ["answer_reading", "transmission_pin", "mu_askable", "MU_WHY_NOT"]
+__all__ = ["answer_reading", "transmission_pin", "pin_links", "mu_askable", "MU_WHY_NOT"]
 
 MU_WHY_NOT = {A.TransmissionAngle: "a transmission angle is asked of a four-bar of four pins, "
                                    "between its coupler and its output link, and this is not one"}
@@ -81,6 +81,8 @@ def answer_reading(work, ask) -> Answer:
     asm = work.assembly
     if isinstance(ask, A.LeastVelocity):
         return _least_velocity(work, ask)
+    if isinstance(ask, A.Rubbing):
+        return _rubbing(work, ask)
     if isinstance(ask, A.Distance):
         cs = located(work)
         centre = cs.point(*ask.pair)
@@ -132,6 +134,40 @@ def _least_velocity(work, ask: A.LeastVelocity) -> Answer:
     return Answer(ask, {"point": [foot[0] + 0.0, foot[1] + 0.0], "value": speed}, cond,
                   f"foot of the perpendicular from {centre.label}",
                   refs=(f"vmin:{k}", centre.ref, *refs), figures=(OMEGA_FIGURE,))
+
+
+def _rubbing(work, ask: A.Rubbing) -> Answer:
+    """The two links' ω from the centres, their difference times the pin's radius."""
+    m = work.mechanism
+    i, j = pin_links(m, ask.point)
+    d = m.drive.link
+    omegas, refs, cond = [], [], 1.0
+    for k in (i, j):
+        if k in (1, d):
+            omegas.append(0.0 if k == 1 else m.drive.omega)
+            continue
+        ratio, c, r = ratio_by_centres(work, d, k)
+        omegas.append(ratio * m.drive.omega)
+        refs += r
+        cond = min(cond, c)
+    value = {"value": abs(omegas[0] - omegas[1]) * ask.diameter / 2}
+    return Answer(ask, value, cond, f"instant centres: |ω{i} − ω{j}| × pin radius",
+                  refs=tuple(dict.fromkeys(refs)), figures=(OMEGA_FIGURE,))
+
+
+def pin_links(m: Mechanism, point: str) -> tuple[int, int]:
+    """The two links pin ``point`` joins.
+
+    Raises
+    ------
+    InputError
+        If it joins other than two (no pin, or a multiple pin).
+    """
+    links = m.links_at(point)
+    if len(links) != 2:
+        raise InputError(f"{point} joins {len(links)} links ({', '.join(map(str, links))}); a "
+                         "rubbing velocity is asked at a pin that joins two")
+    return links[0], links[1]
 
 
 def _angle_at(vertex, p, q) -> float:

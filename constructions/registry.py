@@ -94,7 +94,7 @@ METHODS: tuple[Method, ...] = (
            stage=8),
     Method("readings", {A.Ratio: expected.reading, A.MechanicalAdvantage: expected.reading,
                         A.Distance: expected.reading, A.TransmissionAngle: expected.reading,
-                        A.LeastVelocity: expected.reading},
+                        A.LeastVelocity: expected.reading, A.Rubbing: expected.reading},
            answer_reading, stage=3, askable=mu_askable, why_not=MU_WHY_NOT),
 )
 """Every method, in the order a solution takes them."""

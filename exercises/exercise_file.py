@@ -45,7 +45,7 @@ from .mechanism_file import (RANGE, SourceMap, _float, _Reader, in_range, radian
 
 __all__ = ["Exercise", "Position", "load_exercise", "parse_exercise", "asks_of"]
 
-_ASK_KEYS = ("find", "methods", "at", "scale")
+_ASK_KEYS = ("find", "methods", "at", "scale", "pins")
 _NUMBER = r"([0-9]*\.?[0-9]+(?:[eE][-+]?[0-9]+)?)"
 _SCALE = re.compile(rf"^\s*{_NUMBER}\s*(cm|mm|in)\s*=\s*{_NUMBER}\s*(mm|cm|m|in|ft)"
                     r"\s*(/\s*s\s*(?:²|\^\s*2|2)?)?\s*$")
@@ -82,13 +82,15 @@ class Exercise:
     acceleration_per_cm: float | None = None
     """The stated acceleration scale, file length units per s² per paper cm."""
     asks: tuple[A.Ask, ...] = ()
+    pins: tuple[tuple[str, float], ...] = ()
+    """The pins' diameters (m) the exercise gives, for their rubbing velocities."""
     paper: str = "A4"
     """The sheet the figures are set on (``graphics.paper.PAPERS``): their scales are chosen
     to fill it."""
 
     def __post_init__(self) -> None:
         if not self.asks:
-            object.__setattr__(self, "asks", asks_of(self.find, self.mechanism))
+            object.__setattr__(self, "asks", asks_of(self.find, self.mechanism, self.pins))
 
     def at(self, position: Position) -> Exercise:
         """The same exercise at one of its positions (and only that one)."""
@@ -96,7 +98,7 @@ class Exercise:
 
     def asking(self, names: tuple[str, ...]) -> Exercise:
         """The same exercise asking only ``names``."""
-        return replace(self, find=names, asks=asks_of(names, self.mechanism))
+        return replace(self, find=names, asks=asks_of(names, self.mechanism, self.pins))
 
     @property
     def position_asks(self) -> tuple[A.Ask, ...]:
@@ -131,15 +133,30 @@ class Exercise:
                                   ("acceleration", self.acceleration_per_cm)) if v is not None}
 
 
-def asks_of(names, mech: Mechanism) -> tuple[A.Ask, ...]:
-    """Parse names into asks, once each: "centres" is every centre of ``mech``."""
+def asks_of(names, mech: Mechanism, pins=()) -> tuple[A.Ask, ...]:
+    """Parse names into asks, once each: "centres" is every centre of ``mech``; a rubbing
+    velocity takes its pin's diameter from ``pins`` ((point, metres) pairs).
+
+    Raises
+    ------
+    InputError
+        If a rubbing velocity is asked at a pin whose diameter is not given.
+    """
     out: list[A.Ask] = []
+    diameters = dict(pins)
     for name in names:
         if name == "centres":
             nums = sorted(mech.numbers)
             out += [A.Centre((a, b)) for i, a in enumerate(nums) for b in nums[i + 1:]]
-        else:
-            out.append(A.parse_ask(name))
+            continue
+        ask = A.parse_ask(name)
+        if isinstance(ask, A.Rubbing):
+            if ask.point not in diameters:
+                raise InputError(f"{name} needs the diameter of pin {ask.point}: give it in "
+                                 f"[ask] as pins = {{ {ask.point} = 20 }} (in the file's length "
+                                 "unit)")
+            ask = A.Rubbing(ask.point, diameters[ask.point])
+        out.append(ask)
     return tuple(dict.fromkeys(out))
 
 
@@ -212,8 +229,32 @@ def _read_ask(ask, mech: Mechanism, where: SourceMap, filename: str, exercise_id
     scales = _read_scales(ask.get("scale", []), mech, fail)
     if "space" in scales:
         mech = replace(mech, scale=scales["space"])
-    return Exercise(exercise_id, mech, tuple(dict.fromkeys(find)), tuple(dict.fromkeys(methods)),
-                    positions, scales.get("velocity"), scales.get("acceleration"))
+    pins = _read_pins(ask.get("pins", {}), mech, fail)
+    try:
+        return Exercise(exercise_id, mech, tuple(dict.fromkeys(find)),
+                        tuple(dict.fromkeys(methods)), positions, scales.get("velocity"),
+                        scales.get("acceleration"), pins=pins)
+    except InputError as e:
+        raise fail(str(e), "find") from None
+
+
+def _read_pins(given, mech: Mechanism, fail) -> tuple[tuple[str, float], ...]:
+    """``pins = { B = 20 }``: each pin's diameter, in the file's length unit, as metres."""
+    if not isinstance(given, dict):
+        raise fail("pins must be a table of diameters such as { B = 20 }", "pins")
+    out = []
+    for point, d in given.items():
+        if point not in mech.point_names:
+            close = _closest(point, mech.point_names)
+            hint = f"did you mean '{close}'?" if close else \
+                f"the points are {', '.join(mech.point_names)}"
+            raise fail(f"pins names '{point}', no point of the mechanism; {hint}", "pins")
+        if isinstance(d, bool) or not isinstance(d, (int, float)) or not (
+                math.isfinite(d) and d > 0):
+            raise fail(f"the diameter of pin {point} must be a positive number, got {d!r:.40}",
+                       "pins")
+        out.append((point, float(d) * mech.units.metres))
+    return tuple(out)
 
 
 MOST_TURNED = 1e9

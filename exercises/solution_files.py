@@ -18,8 +18,8 @@ from functools import cached_property, partial
 from pathlib import Path
 
 from ..constructions.acceleration_polygon import drawn_acceleration_polygon
-from ..constructions.asks import (Distance, MechanicalAdvantage, Ratio, TransmissionAngle,
-                                  parse_ask, symbol)
+from ..constructions.asks import (Distance, MechanicalAdvantage, Ratio, Rubbing,
+                                  TransmissionAngle, parse_ask, symbol)
 from ..constructions.checks import FigureSpec, Quantity
 from ..constructions.limit_positions import drawn_limits
 from ..constructions.narration import narrate
@@ -525,6 +525,8 @@ def _show(v: dict, units, name: str = "", figures: int = 6) -> str:
         return _num(w, spec)
     if kind is Distance:
         return f"{_num(w / s, spec)} {units.length}"
+    if kind is Rubbing:
+        return f"{_num(w / s, spec)} {units.length}/s"
     if kind is TransmissionAngle:
         return f"{_num(math.degrees(w), spec)}°"
     sense = " (ccw)" if w > 0 else " (cw)" if w < 0 else ""

@@ -91,3 +91,25 @@ def test_the_least_velocity_along_a_link_is_its_common_component():
     assert q2.value["value"] == pytest.approx(0.0, abs=1e-15) and q2.passed
     line = answer_line("Vmin_3", q, ex.mechanism.units)
     assert line.startswith(f"Vmin_3 = {along * 1000:.6g} mm/s at (")
+
+
+def test_the_rubbing_velocity_is_the_relative_omega_times_the_pin_radius():
+    from tarsim.exercises.catalog import resolve
+    from tarsim.exercises.exercise_file import parse_exercise
+
+    text = resolve("four-bar").read_text(encoding="utf-8")
+    text = text.replace('find = ["centres", "omega3", "omega4", "V_B"]',
+                        'find = ["omega3", "rub_A", "rub_O2"]\npins = { A = 20, O2 = 25 }')
+    ex = parse_exercise(text, "rub.toml", "rub")
+    sol = solve_exercise(ex)
+    w3 = value(sol, "omega3")
+    # At A links 2 and 3 turn at 10 and ω3 rad/s: |10 − ω3| × 10 mm; at O2, 10 × 12.5 mm.
+    assert value(sol, "rub_A") == pytest.approx(abs(10.0 - w3) * 0.010, rel=1e-12)
+    assert value(sol, "rub_O2") == pytest.approx(10.0 * 0.0125, rel=1e-14)
+    line = answer_line("rub_A", sol.quantities["rub_A"], ex.mechanism.units)
+    assert line.startswith("rub_A = 125.785 mm/s ")
+    with pytest.raises(TarsimError, match=r"rub\.toml:\d+: \[ask\.find\] rub_A needs the "
+                                          r"diameter of pin A: give it in \[ask\] as pins"):
+        parse_exercise(text.replace("pins = { A = 20, O2 = 25 }", ""), "rub.toml", "rub")
+    with pytest.raises(TarsimError, match="pins names 'Q', no point of the mechanism"):
+        parse_exercise(text.replace("A = 20,", "Q = 20,"), "rub.toml", "rub")
