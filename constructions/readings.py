@@ -17,16 +17,37 @@ from .centres import CENTRES_FIGURE, OMEGA_FIGURE, located, ratio_by_centres
 from .checks import Answer
 from .errors import InputError
 from .narration import phrase
-from .model import Mechanism
+from .model import Mechanism, SlideKind
 from .record import Panel
 from .reference.rotatability import four_bar_spans
 from .velocity_polygon import WORKED, drawn_velocity_polygon
 
-__all__ = ["answer_reading", "transmission_pin", "pin_links", "mu_askable", "MU_WHY_NOT"]
+__all__ = ["answer_reading", "transmission_pin", "slider_rod", "normal_angle", "pin_links",
+           "mu_askable", "MU_WHY_NOT"]
 
-MU_WHY_NOT = {A.TransmissionAngle: "a transmission angle is asked of a four-bar of four pins, "
-                                   "between its coupler and its output link, and this is not one"}
-"""Why a mechanism that is no four-bar has no transmission angle here."""
+MU_WHY_NOT = {A.TransmissionAngle: "a transmission angle is asked of a four-bar of four pins "
+                                   "(between coupler and output) or of a slider-crank (between "
+                                   "the rod and the normal to the stroke), and this is neither"}
+"""Why a mechanism that is neither a four-bar nor a slider-crank has no transmission angle."""
+
+
+def slider_rod(m: Mechanism) -> tuple[str, str, int] | None:
+    """A slider-crank's block point B on a frame guide, the rod's other pin A on the crank,
+    and the guide's slide index; None if the mechanism is no slider-crank."""
+    if len(m.links) != 4 or four_bar_spans(m) is not None:
+        return None
+    d = m.drive.link
+    for i, s in enumerate(m.slides):
+        if s.guide_link != 1 or s.kind is not SlideKind.BLOCK or s.contact is not None:
+            continue
+        rod = next((k for k in m.links if k.number not in (1, d, s.link)
+                    and s.point in k.names and len(k.names) == 2), None)
+        if rod is None:
+            continue
+        a = next(n for n in rod.names if n != s.point)
+        if d in m.links_at(a):
+            return s.point, a, i
+    return None
 
 
 def transmission_pin(m: Mechanism) -> tuple[str, str, str]:
@@ -52,8 +73,8 @@ def transmission_pin(m: Mechanism) -> tuple[str, str, str]:
 
 
 def mu_askable(m: Mechanism) -> set[str]:
-    """μ, of a four-bar of four pins."""
-    return set() if four_bar_spans(m) is None else {"mu"}
+    """μ, of a four-bar of four pins or of a slider-crank."""
+    return set() if four_bar_spans(m) is None and slider_rod(m) is None else {"mu"}
 
 
 def answer_reading(work, ask) -> Answer:
@@ -97,11 +118,27 @@ def answer_reading(work, ask) -> Answer:
         cond = min(asm[ref].conditioning, cs.conditioning(*ask.pair))
         return Answer(ask, value, cond, "dividers, on the centres figure",
                       refs=(cs.centre(*ask.pair).ref, ref), figures=(CENTRES_FIGURE,))
+    rod = slider_rod(m)
+    if rod is not None:
+        b, a, i = rod
+        (bx, by), (ax, ay) = asm.xy(b), asm.xy(a)
+        dx, dy = asm.guide(i).direction
+        value = {"value": normal_angle(ax - bx, ay - by, dx, dy)}
+        cond = min(asm[asm.points[n]].conditioning for n in (a, b))
+        return Answer(ask, value, cond, f"protractor: rod {b}{a} against the normal to the "
+                                        "stroke", refs=(asm.points[a], asm.points[b]))
     b, a, o = transmission_pin(m)
     value = {"value": _angle_at(asm.xy(b), asm.xy(a), asm.xy(o))}
     cond = min(asm[asm.points[n]].conditioning for n in (a, b, o))
     return Answer(ask, value, cond, f"protractor: angle {a}{b}{o} between coupler and output",
                   refs=tuple(asm.points[n] for n in (a, b, o)))
+
+
+def normal_angle(rx: float, ry: float, dx: float, dy: float) -> float:
+    """The acute angle (rad) between a rod along (rx, ry) and the normal to a guide along
+    (dx, dy): 0 when the rod stands square to the stroke, π/2 when it lies along it."""
+    along = abs(rx * dx + ry * dy) / (math.hypot(rx, ry) * math.hypot(dx, dy))
+    return math.asin(min(1.0, along))
 
 
 def _least_velocity(work, ask: A.LeastVelocity) -> Answer:

@@ -113,3 +113,16 @@ def test_the_rubbing_velocity_is_the_relative_omega_times_the_pin_radius():
         parse_exercise(text.replace("pins = { A = 20, O2 = 25 }", ""), "rub.toml", "rub")
     with pytest.raises(TarsimError, match="pins names 'Q', no point of the mechanism"):
         parse_exercise(text.replace("A = 20,", "Q = 20,"), "rub.toml", "rub")
+
+
+def test_a_slider_cranks_transmission_angle_is_the_rods_against_the_normal_to_the_stroke():
+    from tarsim.constructions.reference import solver
+
+    ex = load("offset-slider-crank")
+    sol = solve_exercise(replace(ex, positions=()).asking(("mu",)))
+    kin = solver.solve(ex.mechanism)
+    (ax, ay), (bx, by) = kin.points["A"], kin.points["B"]
+    # The stroke runs along x: the rod AB = 70 cm stands off its normal by acos(|Δy| / AB).
+    mu = value(sol, "mu")
+    assert math.cos(mu) == pytest.approx(abs(ay - by) / 0.70, rel=1e-12)
+    assert 0.0 <= mu <= math.pi / 2
