@@ -27,6 +27,7 @@ from .errors import TarsimError
 from .methods import Method, Work
 from .model import Mechanism
 from .overall import GRASHOF_WHY_NOT, answer_grashof, answer_mobility, grashof_askable
+from .klein import answer_klein
 from .positions import answer_position
 from .readings import MU_WHY_NOT, answer_reading, mu_askable
 from .sliding import answer_sliding, sliding_askable
@@ -71,6 +72,8 @@ METHODS: tuple[Method, ...] = (
     _velocity("radius-rotation", partial(by_centres, method="radius-rotation")),
     _velocity("parallel-line", partial(by_centres, method="parallel-line")),
     _velocity("components", by_components),
+    Method("klein", {A.Velocity: expected.velocity, A.Acceleration: expected.acceleration},
+           answer_klein, stage=2, chosen_by=("klein",)),
     Method("velocity polygon", {A.AngularVelocity: expected.omega, A.Velocity: expected.velocity,
                                 A.Relative: expected.relative},
            from_velocity_polygon, stage=3, chosen_by=("polygon",), when=_velocity_polygon),

@@ -196,6 +196,7 @@ def solve(source, out_dir, angle, pdf, paper):
       worked         space diagram, velocity and acceleration polygons and
                      the results table on one page (when polygons are asked)
       positions      the compass arcs that placed each asked point (pos_B)
+      klein          Klein's construction of a slider-crank's piston (method klein)
       limits         the limit positions by compass (time ratio, stroke)
       mechanism      the mechanism alone (when nothing is asked at a position)
       solution       every figure in one file (a page each in the PDF)

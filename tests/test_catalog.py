@@ -301,6 +301,6 @@ def test_every_source_speaks_to_a_student():
     # file, line numbers or a seed number that only the developers know.
     for name, path in bundled().items():
         source = tomllib.loads(path.read_text(encoding="utf-8"))["source"]
-        assert re.match(r"(course project|a four-bar|exam-prep text, ch\. \d|textbook ch\. \d|"
-                        r"lecture notes, part \d)", source), (name, source)
+        assert re.match(r"(course project|a four-bar|a slider-crank|exam-prep text, ch\. \d|"
+                        r"textbook ch\. \d|lecture notes, part \d)", source), (name, source)
         assert not re.search(r"\bseed\b|\bl\.\d|digest|\.md\b|\b00\d\b", source), (name, source)

@@ -141,9 +141,9 @@ def test_bad_file_is_one_line_with_file_and_line(mech_file, tmp_path, edit, mess
     ("nothing-like-it", "Error: no file or bundled example called 'nothing-like-it'; bundled: "
                         "crank-shaper, four-bar, grashof-crank-rocker, grashof-double-crank, "
                         "hinkle-four-bar, hinkle-slider-crank, inverted-slider-crank, "
-                        "offset-slider-crank, parallelogram-four-bar, six-link-homework-1, "
-                        "six-link-homework-3, slotted-lever-p37, velocity-homework-292, "
-                        "whitworth\n"),
+                        "klein-slider-crank, offset-slider-crank, parallelogram-four-bar, "
+                        "six-link-homework-1, six-link-homework-3, slotted-lever-p37, "
+                        "velocity-homework-292, whitworth\n"),
     ("missing.toml", "Error: no such file 'missing.toml'\n"),
 ])
 def test_unknown_source_is_one_line(source, message):
@@ -259,7 +259,8 @@ def test_list_shows_the_bundled_examples():
     ids = [line.split()[0] for line in result.stdout.splitlines() if not line.startswith(" ")]
     assert ids == ["crank-shaper", "four-bar", "grashof-crank-rocker", "grashof-double-crank",
                    "hinkle-four-bar", "hinkle-slider-crank", "inverted-slider-crank",
-                   "offset-slider-crank", "parallelogram-four-bar", "six-link-homework-1",
+                   "klein-slider-crank", "offset-slider-crank", "parallelogram-four-bar",
+                   "six-link-homework-1",
                    "six-link-homework-3", "slotted-lever-p37", "velocity-homework-292",
                    "whitworth"]
     assert "Four-bar crank-rocker" in result.stdout

@@ -187,7 +187,10 @@ def test_caption_states_name_input_and_scale(drawn):
     assert m.name in texts
     (params,) = [t for t in texts if t.startswith("θ₂ = ")]
     d = m.drive
-    assert params == (f"θ₂ = {math.degrees(d.angle):.6g}°,  ω₂ = {abs(d.omega):.6g} rad/s "
+    # ω in the file's unit: rad/s, or rpm (60 / 2π of them to the rad/s)
+    rpm = m.units.angular_velocity == "rpm"
+    said = f"{abs(d.omega) * 30 / math.pi:.6g} rpm" if rpm else f"{abs(d.omega):.6g} rad/s"
+    assert params == (f"θ₂ = {math.degrees(d.angle):.6g}°,  ω₂ = {said} "
                       f"{'ccw' if d.omega > 0 else 'cw'}")
     n, unit = drawn.stated_scale()
     assert unit == m.units.length

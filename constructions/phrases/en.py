@@ -206,6 +206,19 @@ PHRASES: dict[str, str] = {
                              "acceleration into its normal and tangential parts.",
     "vpolygon.path": "Join o_v to {tip}: the direction of the velocity of {point}.",
     "readings.link_line": "Draw the line {a}{b} of link {link}.",
+    "klein.square": "Through {o} draw the line square to the line of stroke.",
+    "klein.produce": "Produce the rod {p}{c}.",
+    "klein.m": "It meets the line through {o} at M.",
+    "klein.velocity": "{o}{c}M is the velocity triangle turned through 90°: V_{p} = ω·{o}M, "
+                      "V_{c} = ω·{o}{c}, V_{p}{c} = ω·{c}M.",
+    "klein.circle_cm": "With centre {c} and radius {c}M draw a circle.",
+    "klein.circle_cp": "Draw the circle on {c}{p} as diameter.",
+    "klein.kl": "The two circles meet at K and L.",
+    "klein.join_kl": "Join K and L.",
+    "klein.q": "KL cuts {c}{p} at Q.",
+    "klein.acceleration": "It cuts the line of stroke at N: {o}{c}QN is the acceleration "
+                          "polygon turned through 180°, so a_{p} = ω²·N{o}, from N toward {o} "
+                          "(a_{c} = ω²·{o}{c}, aⁿ_{p}{c} = ω²·{c}Q, aᵗ_{p}{c} = ω²·QN).",
     "readings.least_velocity": "Drop the perpendicular from {centre} onto {a}{b}: its foot "
                                "{point} is the point of the line nearest {centre}, the slowest "
                                "of link {link}.",
