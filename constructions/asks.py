@@ -24,7 +24,7 @@ from .model import Mechanism
 __all__ = ["Ask", "Position", "Centre", "AngularVelocity", "Velocity", "Relative",
            "AngularAcceleration", "Acceleration", "AccelerationPart", "Coriolis", "Sliding",
            "Ratio", "MechanicalAdvantage", "Distance", "TransmissionAngle", "LeastVelocity",
-           "Rubbing",
+           "Rubbing", "Equivalent",
            "Mobility",
            "GrashofClass",
            "LengthRange", "TimeRatio", "Stroke", "CentreCount", "parse_ask", "ask_names",
@@ -289,6 +289,21 @@ class Rubbing(Ask):
 
 
 @dataclass(frozen=True)
+class Equivalent(Ask):
+    """The equivalent linkage of the contact whose circle is centred at ``point``: the link
+    joining the centres of curvature (its length), or the slot parallel to a face (its
+    offset)."""
+
+    point: str
+    order: ClassVar[int] = 0
+
+    @property
+    def name(self) -> str:
+        """``equiv_R``."""
+        return f"equiv_{self.point}"
+
+
+@dataclass(frozen=True)
 class TransmissionAngle(Ask):
     """A four-bar's transmission angle μ: between the coupler and the output link, at the pin
     that joins them."""
@@ -379,6 +394,7 @@ _GRAMMAR: tuple[tuple[re.Pattern, callable], ...] = tuple(
         (r"ma_(\d+)", lambda m: MechanicalAdvantage(int(m[1]))),
         (r"Vmin_(\d+)", lambda m: LeastVelocity(int(m[1]))),
         (f"rub_{_POINT}", lambda m: Rubbing(m[1])),
+        (f"equiv_{_POINT}", lambda m: Equivalent(m[1])),
         (fr"dist_{_PLAIN}_I(\d)(\d)", lambda m: Distance(m[1], (int(m[2]), int(m[3])))),
         (r"mu", lambda m: TransmissionAngle()),
         (r"I(\d)(\d)", lambda m: Centre((int(m[1]), int(m[2])))),

@@ -239,7 +239,7 @@ def _interval(value: dict, ref: dict, scale: float) -> tuple[dict, dict, float]:
 _RULES: dict[type, Callable[[dict, dict, float], tuple[dict, dict, float]]] = {
     A.Position: _point, A.CentreCount: _counts, A.Ratio: _rate, A.MechanicalAdvantage: _rate,
     A.Distance: _rate, A.TransmissionAngle: _rate, A.LeastVelocity: _point_and_speed,
-    A.Rubbing: _rate,
+    A.Rubbing: _rate, A.Equivalent: _rate,
     A.AngularVelocity: _rate, A.AngularAcceleration: _rate,
     A.Velocity: _vector, A.Acceleration: _vector, A.Relative: _vector, A.Coriolis: _vector,
     A.Sliding: _vector, A.AccelerationPart: _vector,

@@ -30,7 +30,7 @@ from .reference.rotatability import (class_by_rotation, four_bar_spans, grashof_
 
 __all__ = ["position", "centre_count", "centre", "omega", "alpha", "velocity", "acceleration",
            "relative", "acceleration_part", "coriolis", "sliding", "mobility", "grashof",
-           "length_range", "time_ratio", "stroke", "reading"]
+           "length_range", "time_ratio", "stroke", "reading", "equivalent"]
 
 
 def position(work, ask: A.Position) -> Expected:
@@ -189,6 +189,22 @@ def reading(work, ask) -> Expected:
     b, a, o = (kin.points[n] for n in transmission_pin(m))
     (ux, uy), (vx, vy) = (a[0] - b[0], a[1] - b[1]), (o[0] - b[0], o[1] - b[1])
     return Expected({"value": math.atan2(abs(ux * vy - uy * vx), ux * vx + uy * vy)})
+
+
+def equivalent(work, ask: A.Equivalent) -> Expected:
+    """The two centres' distance, or the circle's centre's from the face, where the solver
+    puts them: the contact's own invariant, r₁ ± r₂ or r."""
+    from .equivalent import contact_at
+
+    m, kin = work.mechanism, work.kinematics
+    joint, index = contact_at(m, ask.point)
+    if index is None:
+        (px, py), (qx, qy) = kin.points[ask.point], kin.points[joint.centre]
+        return Expected({"value": math.hypot(px - qx, py - qy)})
+    face = joint.contact.face
+    (fx, fy), (px, py) = kin.points[face.through], kin.points[ask.point]
+    ux, uy = kin.slide_rates[index].direction
+    return Expected({"value": abs((px - fx) * uy - (py - fy) * ux)})
 
 
 def mobility(work, ask: A.Mobility) -> Expected:

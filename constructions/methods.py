@@ -187,7 +187,7 @@ class Work:
         if isinstance(ask, (A.Acceleration, A.AccelerationPart, A.Relative, A.Coriolis,
                             A.Sliding)):
             return m.input_acceleration
-        if isinstance(ask, (A.Centre, A.Position, A.Distance, A.LeastVelocity)):
+        if isinstance(ask, (A.Centre, A.Position, A.Distance, A.LeastVelocity, A.Equivalent)):
             return mechanism_size(self.kinematics)
         if isinstance(ask, A.LengthRange):
             return max(grashof_class(m).lengths)

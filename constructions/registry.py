@@ -27,6 +27,7 @@ from .errors import TarsimError
 from .methods import Method, Work
 from .model import Mechanism
 from .overall import GRASHOF_WHY_NOT, answer_grashof, answer_mobility, grashof_askable
+from .equivalent import answer_equivalent, equivalent_askable
 from .klein import answer_klein
 from .positions import answer_position
 from .readings import MU_WHY_NOT, answer_reading, mu_askable
@@ -95,6 +96,8 @@ METHODS: tuple[Method, ...] = (
            from_limits, stage=7, askable=limits_askable, why_not=LIMITS_WHY_NOT),
     Method("circle diagram (count)", {A.CentreCount: expected.centre_count}, answer_count,
            stage=8),
+    Method("equivalent linkage", {A.Equivalent: expected.equivalent}, answer_equivalent,
+           stage=0, askable=equivalent_askable),
     Method("readings", {A.Ratio: expected.reading, A.MechanicalAdvantage: expected.reading,
                         A.Distance: expected.reading, A.TransmissionAngle: expected.reading,
                         A.LeastVelocity: expected.reading, A.Rubbing: expected.reading},

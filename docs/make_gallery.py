@@ -25,7 +25,7 @@ GALLERY = Path(__file__).resolve().parent / "gallery"
 WIDTH = 1000
 """Pixels across a PNG, at most: enough to read the labels, small enough to keep."""
 
-ORDER = ("worked", "V_", "centres", "limits", "mechanism")
+ORDER = ("klein", "worked", "V_", "centres", "limits", "mechanism")
 """The kinds of figure in the order one is taken as an exercise's main figure."""
 
 

@@ -196,6 +196,7 @@ def solve(source, out_dir, angle, pdf, paper):
       worked         space diagram, velocity and acceleration polygons and
                      the results table on one page (when polygons are asked)
       positions      the compass arcs that placed each asked point (pos_B)
+      equivalent-linkage   a contact's equivalent link or slot (equiv_R)
       klein          Klein's construction of a slider-crank's piston (method klein)
       limits         the limit positions by compass (time ratio, stroke)
       mechanism      the mechanism alone (when nothing is asked at a position)

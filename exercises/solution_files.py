@@ -18,7 +18,7 @@ from functools import cached_property, partial
 from pathlib import Path
 
 from ..constructions.acceleration_polygon import drawn_acceleration_polygon
-from ..constructions.asks import (Distance, MechanicalAdvantage, Ratio, Rubbing,
+from ..constructions.asks import (Distance, Equivalent, MechanicalAdvantage, Ratio, Rubbing,
                                   TransmissionAngle, parse_ask, symbol)
 from ..constructions.checks import FigureSpec, Quantity
 from ..constructions.limit_positions import drawn_limits
@@ -523,7 +523,7 @@ def _show(v: dict, units, name: str = "", figures: int = 6) -> str:
     kind = type(parse_ask(name)) if name else None
     if kind in (Ratio, MechanicalAdvantage):
         return _num(w, spec)
-    if kind is Distance:
+    if kind in (Distance, Equivalent):
         return f"{_num(w / s, spec)} {units.length}"
     if kind is Rubbing:
         return f"{_num(w / s, spec)} {units.length}/s"

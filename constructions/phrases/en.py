@@ -206,6 +206,13 @@ PHRASES: dict[str, str] = {
                              "acceleration into its normal and tangential parts.",
     "vpolygon.path": "Join o_v to {tip}: the direction of the velocity of {point}.",
     "readings.link_line": "Draw the line {a}{b} of link {link}.",
+    "equivalent.centres": "{a} and {b} are the centres of curvature of the two profiles in "
+                          "contact (links {i} and {j}); the common normal runs through both.",
+    "equivalent.link": "They stay {length} apart ({how}), so at this instant the contact acts "
+                       "as a link {a}{b} pinned at both centres: the equivalent link, dashed.",
+    "equivalent.slot": "The centre {a} of the circle of link {i} stays {r} from the face of "
+                       "link {j}, so at this instant the contact acts as a block at {a} running "
+                       "in a slot parallel to the face: the equivalent slot, dashed.",
     "klein.square": "Through {o} draw the line square to the line of stroke.",
     "klein.produce": "Produce the rod {p}{c}.",
     "klein.m": "It meets the line through {o} at M.",
