@@ -165,6 +165,21 @@ class _Polygon(PolygonWalk):
                             tip=self.tip_name(X)))
             self.component(f"ap:{X}:t:vec", normal, tip, f"Aᵗ_{X}")
         self.known[x] = tip
+        for n, (_, s) in self.rolls.items():
+            self.known[n] = self.draw_rolling(n, s)
+
+    def draw_rolling(self, n: Node, s) -> Ref:
+        """The contact point of a wheel rolling on the ground: at rest, its acceleration is
+        ω²·r toward the wheel's centre (the centre runs parallel to the ground, the rim
+        point turns about it)."""
+        w, centre = self.omegas[s.link], Node(s.point)
+        P, r = self.name(n), math.dist(self.xy(n), self.xy(centre))
+        line = self.space_line(n, centre, s.link)
+        return self.act(f"ap:tip:{P}", "lay_off", self.pole_ref, line,
+                        length=w * w * r * self.scale, label=self.tip_name(P),
+                        said=phrase("apolygon.rolling", point=P, link=s.link, centre=s.point,
+                                    omega=Number(abs(w)), radius=self.m.units.length_said(r),
+                                    accel=self.say(w * w * r), tip=self.tip_name(P)))
 
     # ----- the lines that carry a tip ---------------------------------------------
     def draw_locus(self, x: Node, locus: tuple) -> tuple[Ref, Phrase]:

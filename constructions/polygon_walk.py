@@ -21,7 +21,7 @@ from . import geometry as g
 from .assembly import Assembly
 from .coincident import Node, Walk
 from .errors import DeadPoint, DegenerateInput, TarsimError
-from .model import SlideKind
+from .model import Slide, SlideKind
 from .narration import Number, Phrase, Quantity, Word, narrate, phrase
 from .record import Construction, Kind, Panel, Ref, Role
 
@@ -232,10 +232,11 @@ class PolygonWalk(Walk):
     def __init__(self, asm: Assembly, scale: float, pole: tuple[float, float]):
         self.asm, self.m, self.c, self.scale = asm, asm.mechanism, asm, scale
         m = self.m
-        if any(s.rolling for s in m.slides):
-            s = next(s for s in m.slides if s.rolling)
-            raise TarsimError(f"the {self.kind.noun} polygon does not yet handle the {s.label}; "
-                              "use radius-rotation or parallel-line")
+        moving = [s for s in m.slides if s.rolling and s.guide_link != 1]
+        if moving:
+            raise TarsimError(f"the {self.kind.noun} polygon does not yet handle the "
+                              f"{moving[0].label}, on a moving face; use radius-rotation or "
+                              "parallel-line")
         if self.pole_ref in self.c:
             article = "an" if self.kind.noun[0] in "aeiou" else "a"
             raise TarsimError(f"this construction already holds {article} {self.kind.noun} "
@@ -245,6 +246,14 @@ class PolygonWalk(Walk):
         self.spans: dict[int, float] = {}
         nodes = [Node(n) for n in m.point_names]
         nodes += [Node(s.point, s.guide_link) for s in m.slotted]
+        # A wheel rolling on the ground touches it at its instant centre: a point of the
+        # wheel at rest, though not without acceleration (ω² r toward the wheel's centre).
+        self.rolls: dict[Node, tuple[Ref, Slide]] = {}
+        for s in m.slides:
+            if s.rolling:
+                name = "P" if "P" not in m.point_names and not self.rolls else f"P{s.link}"
+                self.rolls[Node(name, s.link)] = (asm.contacts[s], s)
+        nodes += list(self.rolls)
         self.nodes = list(dict.fromkeys(nodes))
         self.known: dict[Node, Ref] = {}
         self.steps: list[Ref] = []
@@ -257,7 +266,10 @@ class PolygonWalk(Walk):
 
     # ----- the mechanism as the polygon sees it -----------------------------------
     def name(self, n: Node) -> str:
-        """The textbook name: B, or A2 and A4 where a slot makes A two points."""
+        """The textbook name: B, or A2 and A4 where a slot makes A two points; P for the
+        point of a rolling wheel on the ground."""
+        if n in self.rolls:
+            return n.point
         if n.link is not None:
             return f"{n.point}{n.link}"
         if any(k.point == n.point and k.link is not None for k in self.nodes):
@@ -275,7 +287,18 @@ class PolygonWalk(Walk):
 
     def xy(self, n: Node) -> tuple[float, float]:
         """Where the point ``n`` stands in the space diagram."""
-        return self.asm.xy(n.point)
+        return self.c.output(self.point_ref(n)).xy
+
+    def point_ref(self, n: Node) -> Ref:
+        """The step that put ``n`` on the space diagram: its joint, or a wheel's contact."""
+        return self.rolls[n][0] if n in self.rolls else self.asm.points[n.point]
+
+    def zero(self, n: Node) -> bool:
+        """True for a point at rest: of the frame; or, in the velocity polygon, a rolling
+        wheel's contact point."""
+        if n in self.rolls:
+            return self.kind is VELOCITY
+        return super().zero(n)
 
     def apart(self, a: Node, b: Node) -> bool:
         """True if the two points are not one."""
@@ -425,7 +448,7 @@ class PolygonWalk(Walk):
         """The space-diagram line KX of link c, directed K → X, drawn once for both polygons."""
         ref = f"vp:line:{k.point}-{x.point}"
         if ref not in self.c:
-            self.c.draw(ref, "line_through", self.asm.points[k.point], self.asm.points[x.point],
+            self.c.draw(ref, "line_through", self.point_ref(k), self.point_ref(x),
                         phrase=phrase("polygon.space_line", a=k.point, b=x.point, link=c))
         if ref not in self.space_steps:
             self.space_steps.append(ref)

@@ -131,6 +131,11 @@ class _Components(Walk):
             Node(s.point, s.guide_link) for s in self.m.slides
             if s.guide_link != 1 and s.point not in self.m.link(s.guide_link).names]
         self.nodes = list(dict.fromkeys(nodes + [target]))
+        # A wheel rolling on the ground turns, at the instant, about its contact point P:
+        # a pivot of the wheel as a frame pin is of its link.
+        self.contacts = {("P" if "P" not in self.m.point_names else f"P{s.link}"):
+                         (asm.contacts[s], s.link)
+                         for s in self.m.slides if s.rolling and s.guide_link == 1}
         self.known: dict[Node, Ref] = {Node(start): self.c[vec].inputs[1]}
         self.known |= {n: f"cm:{n.tag}:tip" for n in self.nodes  # drawn by a previous call
                        if f"cm:{n.tag}:tip" in self.c and n not in self.known}
@@ -138,7 +143,7 @@ class _Components(Walk):
     # ----- the mechanism as the method sees it ------------------------------------
     def normal_to(self, a: Node | str, b: Node) -> tuple[float, float] | None:
         """The unit normal to line ab (the direction of a component locus), if a ≠ b."""
-        (ax, ay), (bx, by) = self.asm.xy(getattr(a, "point", a)), self.asm.xy(b.point)
+        (ax, ay), (bx, by) = (self.c.output(self.at(n)).xy for n in (a, b))
         d = math.hypot(bx - ax, by - ay)
         big = max(1.0, abs(ax), abs(ay), abs(bx), abs(by))
         return None if d <= 1e-12 * big else ((ay - by) / d, (bx - ax) / d)
@@ -155,8 +160,10 @@ class _Components(Walk):
         for c in self.carriers(x):
             comp += [(("component", k, c), self.normal_to(k, x)) for k in self.members(c)
                      if k != x and k in known and not self.zero(k) and self.normal_to(k, x)]
-            path += [(("path", o, c), self.normal_to(o, x)) for o in self.m.link(c).names
-                     if o in self.m.frame.names and self.normal_to(o, x)]
+            pivots = [o for o in self.m.link(c).names if o in self.m.frame.names]
+            pivots += [o for o, (_, wheel) in self.contacts.items() if wheel == c]
+            path += [(("path", o, c), self.normal_to(o, x)) for o in pivots
+                     if self.normal_to(o, x)]
             i = self.frame_guide(c)
             if i is not None and self.m.slides[i].point != x.point:
                 path.append((("glide", i, c), self.asm.guide(i).direction))
@@ -227,7 +234,8 @@ class _Components(Walk):
         return ref
 
     def at(self, n: Node | str) -> Ref:
-        return self.asm.points[n.point if isinstance(n, Node) else n]
+        name = n.point if isinstance(n, Node) else n
+        return self.contacts[name][0] if name in self.contacts else self.asm.points[name]
 
     def tip(self, n: Node) -> Ref:
         return self.at(n) if self.zero(n) else self.known[n]

@@ -283,10 +283,11 @@ class LabelPlacer:
             if cost2 < cost:
                 c = c2
         x = c[0] - w / 2
-        for part in parts:
+        for k, part in enumerate(parts):
             px0, py0, px1, py1 = part.box()
+            # the first name stands for the unit: it alone is held near what they name
             self.fig.add(replace(part, at=(x + (px1 - px0) / 2, c[1] - (y0 + y1) / 2),
-                                 owner=own))
+                                 owner=own if k == 0 else None))
             x += (px1 - px0) + _SPACE
         for n, r in zip(numbers, radii):
             draw_badge(self.fig, (x + r, c[1]), n)

@@ -60,6 +60,7 @@ _NEAR = (1.0, 1.6, 2.4, 3.4, 4.6)   # a vector's label stays this many gaps from
 _FARTHER = (6.0, 8.0, 11.0, 15.0)   # ...unless every spot there covers another label
 _CROSSABLE = 0.02   # what covering a thin working line costs a label, against 1 for ink
 _LANE = 3.0         # mm between collinear arrows drawn side by side (:func:`_lanes`)
+_SHORT = 8.0        # mm: an arrow shorter than this may have its name round its ends
 
 
 # ----- the public function ----------------------------------------------------------------
@@ -430,8 +431,10 @@ class _PolygonPanel:
             others = [(p, q) for s, p, q in drawn if all(s is not t for t, _, _ in group)]
             anchors = [(a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]))
                        for t in _own_stretch(a, b, others)]
+            # A short arrow has little shaft to stand beside: its name may go round its ends.
+            spread = math.pi / 3
             self.placer.place_numbered(text, anchors, numbers, sub=sub, also=tuple(names[1:]),
-                                       prefer=(normal, normal + math.pi), spread=math.pi / 3,
+                                       prefer=(normal, normal + math.pi), spread=spread,
                                        gap=1.0, size=3.4, rings=_NEAR, farther=_FARTHER,
                                        own=(a, b) if text else None)
 

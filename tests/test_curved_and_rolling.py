@@ -237,7 +237,16 @@ def test_bad_curved_or_rolling_joints_get_one_line_naming_the_joint(name, old, n
         assert w in text, text
 
 
-@pytest.mark.parametrize("name, point", [("roller-cam", "R"), ("rolling-wheel", "M")])
-def test_components_beyond_a_curved_or_rolling_joint_say_which_method_to_use(name, point):
+def test_components_beyond_a_curved_joint_say_which_method_to_use():
     with pytest.raises(TarsimError, match="use radius-rotation or parallel-line"):
-        velocity_by_components(assemble(at(name, 40)), point, scale=1.0)
+        velocity_by_components(assemble(at("roller-cam", 40)), "R", scale=1.0)
+
+
+def test_components_reach_a_rolling_wheel_through_its_contact_point():
+    # The wheel turns about its contact P at the instant: P is its pivot, as O4 is a rocker's.
+    mech = at("rolling-wheel", 40)
+    asm = assemble(mech)
+    kin = solve(mech)
+    for point in ("B", "M"):
+        v = velocity_by_components(asm, point, scale=1.0).value(asm)
+        assert v == pytest.approx(kin.velocities[point], rel=1e-12, abs=1e-15)

@@ -127,8 +127,9 @@ def test_the_textbook_symbols_are_drawn(drawn):
     assert want <= drawn.classes
     has_block = any(s.kind == "block" for s in m.slides)
     assert ("block" in drawn.classes) == has_block
-    assert ("guide" in drawn.classes) == any(s.kind == "block" and s.guide_link == 1
-                                              for s in m.slides)
+    # a block's frame guide, or the ground a wheel rolls on, is drawn hatched
+    assert ("guide" in drawn.classes) == any((s.kind == "block" or s.rolling) and
+                                             s.guide_link == 1 for s in m.slides)
     # Three or more points make a plate, unless they lie on one line (a straight lever
     # with a third pin is drawn as a bar).
     plates = [k for k in m.links if k.number != 1 and len(k.names) >= 3

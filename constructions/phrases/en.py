@@ -213,6 +213,10 @@ PHRASES: dict[str, str] = {
     "equivalent.slot": "The centre {a} of the circle of link {i} stays {r} from the face of "
                        "link {j}, so at this instant the contact acts as a block at {a} running "
                        "in a slot parallel to the face: the equivalent slot, dashed.",
+    "apolygon.rolling": "{point}, the point of wheel {link} on the ground, is at rest but "
+                        "accelerates toward the centre {centre}: from o_a lay off a_{point} = "
+                        "ω{link}²·r = ({omega} rad/s)² × {radius} = {accel} parallel to "
+                        "{point}{centre}, toward {centre}; its end is {tip}.",
     "klein.square": "Through {o} draw the line square to the line of stroke.",
     "klein.produce": "Produce the rod {p}{c}.",
     "klein.m": "It meets the line through {o} at M.",
