@@ -116,9 +116,11 @@ class Work:
     """
 
     def __init__(self, mechanism: Mechanism, asks: tuple[A.Ask, ...], chosen: tuple[str, ...],
-                 stated: dict[str, float] | None = None, room: tuple[float, float] = ROOM):
+                 stated: dict[str, float] | None = None, room: tuple[float, float] = ROOM,
+                 reference: Mechanism | None = None):
         self.mechanism = mechanism
         self.room = room
+        self.reference = reference or mechanism
         self.asks = asks
         self.chosen = chosen
         self.stated = dict(stated or {})
@@ -132,8 +134,9 @@ class Work:
 
     @cached_property
     def kinematics(self) -> solver.Kinematics:
-        """The analytic solution at this position."""
-        return solver.solve(self.mechanism)
+        """The analytic solution at this position (of the reference mechanism: the same,
+        unless the input's rates were converted from another member's, each its own way)."""
+        return solver.solve(self.reference)
 
     @cached_property
     def scales(self) -> Scales:

@@ -55,7 +55,7 @@ __all__ = [
     "Profile",
     "Contact",
     "contact_slide",
-    "contact_arc",
+    "contact_arc", "GivenRate",
     "Arc",
     "Drive",
     "Mechanism",
@@ -360,6 +360,21 @@ class Drive:
 
 
 @dataclass(frozen=True)
+class GivenRate:
+    """An input given, as textbooks often give it, by another member's motion than the
+    input link's: the speed of ``target`` (a point on a frame guide, m/s along the guide's
+    direction) or the ω of link ``target`` (rad/s, CCW +), with its rate of change
+    (``second``: m/s², rad/s²) when ``second_given``. The input link's ω and α follow from
+    it (:mod:`tarsim.exercises.given_rate`)."""
+
+    kind: str
+    target: str | int
+    value: float
+    second: float = 0.0
+    second_given: bool = False
+
+
+@dataclass(frozen=True)
 class Mechanism:
     """A planar mechanism at one input position, in SI units.
 
@@ -378,6 +393,8 @@ class Mechanism:
     scale: float | None = None
     """The space scale the exercise states, file length units per paper cm ("1 cm = 4 cm"
     is 4.0); None lets the figures choose."""
+    given: GivenRate | None = None
+    """The input's motion as the exercise gives it, when not as the input link's ω."""
 
     def __post_init__(self) -> None:
         numbers = [k.number for k in self.links]

@@ -278,6 +278,10 @@ def _read_positions(at, mech: Mechanism, fail) -> tuple[Position, ...]:
         (key, value), = p.items()
         if isinstance(value, bool) or not isinstance(value, (int, float)):
             raise fail(f"{key} in at must be a number, got {value!r:.40}", "at")
+        if key == "time" and mech.given is not None:
+            raise fail("a time in at needs the input's own ω to turn it through; this input is "
+                       "given by another member's motion, so give the positions as angles",
+                       "at")
         if not (in_range(_float(value)) if key == "time" else math.isfinite(_float(value))):
             want = RANGE if key == "time" else "finite"
             raise fail(f"{key} in at must be a number {want}, got {value!r:.40}", "at")

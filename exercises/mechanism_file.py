@@ -17,8 +17,9 @@ from typing import Any
 
 from ..constructions.errors import AssemblyError, BranchError, DeadPoint, InputError
 from ..constructions.reference.solver import follow_branches
-from ..constructions.model import (LENGTH_UNITS, Arc, Contact, Drive, Link, Mechanism, Profile,
-                                 Slide, SlideKind, Units, contact_arc, contact_slide)
+from ..constructions.model import (LENGTH_UNITS, Arc, Contact, Drive, GivenRate, Link,
+                                  Mechanism, Profile, Slide, SlideKind, Units, contact_arc,
+                                  contact_slide)
 
 __all__ = ["load_mechanism", "parse_mechanism", "SourceMap", "read_source", "read_toml",
            "LARGEST", "MOST_BYTES", "MOST_POINTS", "in_range", "radians_in_turn"]
@@ -217,6 +218,8 @@ class _Reader:
         self.d = data
         self.where = where
         self.file = filename
+        self.given: GivenRate | None = None
+        self._slides: tuple[Slide, ...] = ()
 
     # ----- errors --------------------------------------------------------------
     def fail(self, message: str, *, table: str | None = None, index: int = 0,
@@ -281,10 +284,11 @@ class _Reader:
         if len(named) > MOST_POINTS:
             raise self.fail(f"names {len(named):,} points; a mechanism may have at most "
                             f"{MOST_POINTS}, each drawn and labelled on every figure")
+        self._slides = tuple(slides)
         drive = self.read_input()
         branches = self.read_assembly(mech_links, tuple(slides))
         mech = Mechanism(mech_links, drive, tuple(slides), branches, self.units,
-                         name, self.file, tuple(arcs))
+                         name, self.file, tuple(arcs), given=self.given)
         mech = follow_branches(mech)
         dof, n, f1, f2 = mech.mobility()
         if dof != 1:
@@ -642,9 +646,9 @@ class _Reader:
         t = self.table("input", True)
         where = {"table": "input"}
         for k in t:
-            if k not in ("link", "angle", "omega", "alpha"):
-                raise self.unknown(k, ("link", "angle", "omega", "alpha"), "input setting",
-                                   key=k, **where)
+            if k not in ("link", "angle", "omega", "alpha", "speed"):
+                raise self.unknown(k, ("link", "angle", "omega", "alpha", "speed"),
+                                   "input setting", key=k, **where)
         if "link" not in t:
             raise self.fail("must name the input link, e.g. link = 2", **where)
         link = self.link_number(t["link"], "link", where)
@@ -653,11 +657,57 @@ class _Reader:
         if "angle" not in t:
             raise self.fail(f"[input] needs the angle of link {link}", **where)
         angle = self.angle(t["angle"], "angle", key="angle", **where)
+        self.given = self.read_given(t, link, where)
+        if self.given is not None:
+            # The input's own rates follow from the member given; 1 rad/s stands in for now.
+            return Drive(link, angle, 1.0, 0.0, self.given.second_given)
         omega = self.number(t.get("omega", 0.0), "omega", size=True, key="omega", **where)
         if self.units.angular_velocity == "rpm":
             omega *= 2 * math.pi / 60
         alpha = self.number(t.get("alpha", 0.0), "alpha", size=True, key="alpha", **where)
         return Drive(link, angle, omega, alpha, "alpha" in t)
+
+    def read_given(self, t: dict, link: int, where: dict) -> GivenRate | None:
+        """``speed = { point = "C", value = 3000, acceleration = 0 }`` (a point on a frame
+        guide, along the guide, in the file's length unit per second) or ``omega = { link =
+        3, value = 5, alpha = 0 }`` (another link's ω): the input given by another member."""
+        speed, omega = t.get("speed"), t.get("omega")
+        if speed is None and not isinstance(omega, dict):
+            return None
+        if speed is not None and omega is not None:
+            raise self.fail("give the input's omega or a speed, not both", key="speed", **where)
+        if speed is not None:
+            key, spec, allowed = "speed", speed, ("point", "value", "acceleration")
+        else:
+            key, spec, allowed = "omega", omega, ("link", "value", "alpha")
+        if not isinstance(spec, dict) or "value" not in spec:
+            raise self.fail(f"{key} = {{ {allowed[0]} = …, value = … }} gives the input by "
+                            "another member's motion", key=key, **where)
+        for k in spec:
+            if k not in allowed:
+                raise self.unknown(k, allowed, f"{key} setting", key=key, **where)
+        value = self.number(spec["value"], f"{key} value", size=True, key=key, **where)
+        second_key = allowed[2]
+        second = self.number(spec.get(second_key, 0.0), f"{key} {second_key}", size=True,
+                             key=key, **where)
+        if key == "speed":
+            point = spec.get("point")
+            on_guide = [s for s in self._slides if s.point == point and s.guide_link == 1]
+            if not on_guide:
+                runs = sorted({s.point for s in self._slides if s.guide_link == 1})
+                raise self.fail(f"speed gives the motion of a point on a frame guide (a piston, "
+                                f"a slider, a wheel's centre); '{point}' is none: "
+                                f"{', '.join(runs) or 'this mechanism has none'}", key=key,
+                                **where)
+            m = self.units.metres
+            return GivenRate("speed", point, value * m, second * m, second_key in spec)
+        target = self.link_number(spec.get("link"), key, where)
+        if target in (1, link):
+            raise self.fail(f"omega = {{ link = {target}, … }} gives another link's ω; give the "
+                            f"input link's own as omega = <number>", key=key, **where)
+        if self.units.angular_velocity == "rpm":
+            value *= 2 * math.pi / 60
+        return GivenRate("omega", target, value, second, second_key in spec)
 
     def read_assembly(self, links: tuple[Link, ...], slides: tuple[Slide, ...]) -> dict:
         t = self.table("assembly", False)

@@ -24,6 +24,8 @@ from ..constructions.reference.solver import Kinematics
 from ..constructions.registry import METHODS
 from ..graphics.paper import paper, room
 
+from .given_rate import convert
+
 from .exercise_file import Exercise, Position
 
 __all__ = ["Solution", "Overall", "solve_exercise", "solve_positions", "solve_overall"]
@@ -90,10 +92,22 @@ def solve_overall(ex: Exercise) -> Overall:
     """
     if not ex.mechanism_asks:
         return Overall()
-    work = Work(ex.mechanism, ex.mechanism_asks, ex.methods, ex.stated,
-                room(paper(ex.paper)))
+    work = _work(ex, ex.mechanism_asks)
     quantities, answers = answer_all(work, METHODS)
     return Overall(work, quantities, answers)
+
+
+def _work(ex: Exercise, asks) -> Work:
+    """The work of ``asks``: the input's rates converted first when the exercise gives them
+    by another member (the drawing's conversion for the construction, the solver's for the
+    reference, the drawn one stated under the figures)."""
+    mech, reference, said = ex.mechanism, None, None
+    if mech.given is not None:
+        mech, reference, said = convert(mech)
+    work = Work(mech, asks, ex.methods, ex.stated, room(paper(ex.paper)), reference=reference)
+    if said:
+        work.note(said)
+    return work
 
 
 def solve_positions(ex: Exercise) -> list[Solution]:
@@ -127,7 +141,7 @@ def solve_exercise(ex: Exercise) -> Solution:
         construction breaks down; the message says which and where.
     """
     mech = ex.mechanism
-    work = Work(mech, ex.position_asks, ex.methods, ex.stated, room(paper(ex.paper)))
+    work = _work(ex, ex.position_asks)
     if ex.without_motion:
         raise InputError(ex.without_motion, file=mech.source or None)
     work.prepare()

@@ -34,6 +34,7 @@ _CELL = 3.2         # table text size, mm
 _ROW = 5.6          # table row pitch, mm
 _PAD = 6.0          # white between table columns, mm
 _NOTE = 3.2         # note text size, mm
+_NOTE_WIDTH = 250.0  # the longest line of a note, mm: a long one runs on over lines
 
 Box = tuple[float, float, float, float]
 
@@ -287,14 +288,27 @@ def _draw_results(table: Sequence[Sequence[str]], notes: Sequence[str]) -> Figur
     """Draw the results table and the notes under it as a figure of their own (origin top-left)."""
     fig = Figure(0.0, 0.0)
     y = _draw_table(fig, table, (0.0, 0.5 * _ROW)) + (2.0 if notes else 0.0) if table else 0.0
-    for note in notes:
-        fig.add(Text((0.0, y + 0.7 * _NOTE), note, _NOTE, "start", italic=False))
+    lines = [line for note in notes for line in _wrapped(note, _NOTE_WIDTH)]
+    for line in lines:
+        fig.add(Text((0.0, y + 0.7 * _NOTE), line, _NOTE, "start", italic=False))
         y += 1.4 * _NOTE
     widths = _column_widths(table)
     fig.width = max([sum(widths) + _PAD * max(len(widths) - 1, 0)]
-                    + [text_width(n, _NOTE) for n in notes])
+                    + [text_width(n, _NOTE) for n in lines])
     fig.height = y
     return fig
+
+
+def _wrapped(text: str, width: float) -> list[str]:
+    """``text`` broken between words into lines no wider than ``width`` mm at the notes'
+    size (a word wider than that stands alone)."""
+    lines: list[str] = []
+    for word in text.split():
+        if lines and text_width(f"{lines[-1]} {word}", _NOTE) <= width:
+            lines[-1] += f" {word}"
+        else:
+            lines.append(word)
+    return lines or [""]
 
 
 def _draw_table(page: Figure, table: Sequence[Sequence[str]], at: tuple[float, float]) -> float:

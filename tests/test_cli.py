@@ -142,8 +142,9 @@ def test_bad_file_is_one_line_with_file_and_line(mech_file, tmp_path, edit, mess
                         "crank-shaper, four-bar, grashof-crank-rocker, grashof-double-crank, "
                         "hinkle-four-bar, hinkle-slider-crank, inverted-slider-crank, "
                         "klein-slider-crank, offset-slider-crank, parallelogram-four-bar, "
-                        "rolling-wheel, six-link-homework-1, six-link-homework-3, "
-                        "slotted-lever-p37, velocity-homework-292, whitworth\n"),
+                        "piston-driven-slider-crank, rolling-wheel, six-link-homework-1, "
+                        "six-link-homework-3, slotted-lever-p37, velocity-homework-292, "
+                        "whitworth\n"),
     ("missing.toml", "Error: no such file 'missing.toml'\n"),
 ])
 def test_unknown_source_is_one_line(source, message):
@@ -260,7 +261,7 @@ def test_list_shows_the_bundled_examples():
     assert ids == ["crank-shaper", "four-bar", "grashof-crank-rocker", "grashof-double-crank",
                    "hinkle-four-bar", "hinkle-slider-crank", "inverted-slider-crank",
                    "klein-slider-crank", "offset-slider-crank", "parallelogram-four-bar",
-                   "rolling-wheel", "six-link-homework-1",
+                   "piston-driven-slider-crank", "rolling-wheel", "six-link-homework-1",
                    "six-link-homework-3", "slotted-lever-p37", "velocity-homework-292",
                    "whitworth"]
     assert "Four-bar crank-rocker" in result.stdout

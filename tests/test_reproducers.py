@@ -152,8 +152,8 @@ def test_a_branch_given_as_a_point_is_followed_round_the_revolution():
 
 
 QUICK_RETURNS = ("crank-shaper", "four-bar", "grashof-crank-rocker", "inverted-slider-crank",
-                 "klein-slider-crank", "offset-slider-crank", "slotted-lever-p37",
-                 "velocity-homework-292")
+                 "klein-slider-crank", "offset-slider-crank", "piston-driven-slider-crank",
+                 "slotted-lever-p37", "velocity-homework-292")
 """The bundled mechanisms with two limit positions: their cranks turn fully and drive an
 output that reverses."""
 

@@ -1,0 +1,108 @@
+"""An input given by another member's motion, turned into the input link's ω and α.
+
+Textbooks give "the piston moves at 3 m/s" or "the coupler turns at 5 rad/s" at a crank
+angle. Velocities are linear in ω of the input, accelerations in its α (for a given ω),
+so the input's rates follow from one provisional drawing: the velocity polygon drawn at
+ω = 1 rad/s reads the member's speed per rad/s of the input, and two acceleration
+polygons at that ω, with α = 0 and α = 1 rad/s², its acceleration per rad/s². The
+construction converts so, by drawing; the analytic reference converts its own way, by the
+vector-loop solver at the same provisional rates; each then solves with its own ω and α,
+so a wrong conversion shows as a disagreement.
+"""
+
+from __future__ import annotations
+
+from ..constructions.acceleration_polygon import draw_acceleration_polygon
+from ..constructions.assembly import assemble
+from ..constructions.errors import InputError
+from ..constructions.model import Drive, Mechanism
+from ..constructions.reference import solver
+from ..constructions.velocity_polygon import draw_velocity_polygon
+
+__all__ = ["convert"]
+
+
+def convert(m: Mechanism) -> tuple[Mechanism, Mechanism, str]:
+    """The mechanism with the input's ω and α as the drawing finds them, the same as the
+    solver finds them, and a sentence that states the drawn conversion.
+
+    Raises
+    ------
+    InputError
+        If the member given does not move with the input at this position (its speed per
+        rad/s of the input is nil), so no ω gives it.
+    """
+    g, d = m.given, m.drive
+    per_w, per_w_ref = _rate(m, 1.0, 0.0), _reference(m, 1.0, 0.0)
+    if abs(per_w) <= 1e-12 * max(abs(per_w_ref), 1e-300) or per_w_ref == 0.0:
+        raise InputError(f"the {_what(g)} does not move with link {d.link} at this position, so "
+                         f"no ω{d.link} gives it {_value(m, g)}; choose another member or "
+                         "position")
+    w, w_ref = g.value / per_w, g.value / per_w_ref
+    a = a_ref = 0.0
+    if g.second_given:
+        base, base_ref = _rate(m, w, 0.0, second=True), _reference(m, w_ref, 0.0, second=True)
+        unit = _rate(m, w, 1.0, second=True) - base
+        unit_ref = _reference(m, w_ref, 1.0, second=True) - base_ref
+        a, a_ref = (g.second - base) / unit, (g.second - base_ref) / unit_ref
+    drawn = _driven(m, w, a)
+    said = (f"{_what(g)} = {_value(m, g)} is given: the velocity polygon drawn at "
+            f"ω{d.link} = 1 rad/s gives {_per(m, per_w)}, so ω{d.link} = {_n(w)} rad/s"
+            + (f" ({'ccw' if w > 0 else 'cw'})" if w else "")
+            + (f"; the acceleration polygons drawn at that ω with α{d.link} = 0 and 1 rad/s² "
+               f"give α{d.link} = {_n(a)} rad/s²" if g.second_given else "") + ".")
+    return drawn, _driven(m, w_ref, a_ref), said
+
+
+def _n(x: float) -> str:
+    """A number as the notes set it: six figures, a true minus."""
+    return f"{x:.6g}".replace("-", "−")
+
+
+def _driven(m: Mechanism, w: float, a: float) -> Mechanism:
+    d = m.drive
+    return m.with_drive(Drive(d.link, d.angle, w, a, m.given.second_given))
+
+
+def _rate(m: Mechanism, w: float, a: float, *, second: bool = False) -> float:
+    """The member's speed (or ω; with ``second``, its acceleration or α) as drawn with the
+    input at ω = ``w``, α = ``a``."""
+    asm = assemble(_driven(m, w, a))
+    vp = draw_velocity_polygon(asm)
+    polygon = draw_acceleration_polygon(asm, vp) if second else vp
+    g = m.given
+    if g.kind == "omega":
+        return polygon.rates[g.target]
+    i = next(i for i, s in enumerate(m.slides) if s.point == g.target and s.guide_link == 1)
+    ux, uy = asm.guide(i).direction
+    x, y = polygon.vector(g.target)
+    return x * ux + y * uy
+
+
+def _reference(m: Mechanism, w: float, a: float, *, second: bool = False) -> float:
+    """The same, from the vector-loop solver."""
+    kin = solver.solve(_driven(m, w, a))
+    g = m.given
+    if g.kind == "omega":
+        return (kin.alphas if second else kin.omegas)[g.target]
+    i = next(i for i, s in enumerate(m.slides) if s.point == g.target and s.guide_link == 1)
+    rate = kin.slide_rates[i]
+    return rate.acceleration if second else rate.velocity
+
+
+def _what(g) -> str:
+    return f"V_{g.target} along its guide" if g.kind == "speed" else f"ω{g.target}"
+
+
+def _value(m: Mechanism, g) -> str:
+    if g.kind == "speed":
+        return f"{_n(g.value / m.units.metres)} {m.units.length}/s"
+    return f"{_n(g.value)} rad/s"
+
+
+def _per(m: Mechanism, per: float) -> str:
+    g = m.given
+    if g.kind == "speed":
+        return f"V_{g.target} = {_n(per / m.units.metres)} {m.units.length}/s"
+    return f"ω{g.target} = {_n(per)} rad/s"
+

@@ -1,0 +1,51 @@
+"""An input given by another member's motion (issue: "the velocity of a point", "ω of a link
+that is not pivoted", "a slider as the driver"): the piston's speed and acceleration along
+its stroke, or the coupler's ω and α. The drawing converts it to the crank's ω2 and α2 with
+provisional polygons, the solver its own way; each member given comes back as given."""
+
+from __future__ import annotations
+
+import pytest
+
+from tarsim.constructions.errors import TarsimError
+from tarsim.exercises.catalog import load, resolve
+from tarsim.exercises.exercise_file import parse_exercise
+from tarsim.exercises.solution import solve_exercise
+
+SHAPER = resolve("hinkle-slider-crank").read_text(encoding="utf-8")
+
+
+def test_the_piston_driven_slider_crank_gives_back_its_pistons_motion():
+    sol = solve_exercise(load("piston-driven-slider-crank"))
+    q = sol.quantities
+    assert q["V_C"].value["vector"][0] == pytest.approx(0.300, rel=1e-12)
+    assert q["A_C"].value["vector"][0] == pytest.approx(1.000, rel=1e-11)
+    for name in ("omega2", "omega3", "V_B", "alpha2", "alpha3"):
+        assert q[name].passed, name
+    # the crank's rates are the piston's over its speed per unit crank rate
+    w2 = q["omega2"].value["value"]
+    assert w2 < 0 and any("so ω2 = " in note for note in sol.notes)
+
+
+def test_a_couplers_omega_and_alpha_drive_the_crank():
+    text = (SHAPER.replace("omega = 10", "omega = { link = 3, value = 2, alpha = 5 }")
+            .replace('find = ["centres", "omega3", "V_C", "V_D"]',
+                     'find = ["omega2", "omega3", "alpha3", "V_C"]')
+            .replace('methods = ["radius-rotation", "parallel-line", "components"]',
+                     'methods = ["polygon"]'))
+    sol = solve_exercise(parse_exercise(text, "given.toml", "given"))
+    q = sol.quantities
+    assert q["omega3"].value["value"] == pytest.approx(2.0, rel=1e-12)
+    assert q["alpha3"].value["value"] == pytest.approx(5.0, rel=1e-11)
+    assert all(x.passed for x in q.values())
+
+
+@pytest.mark.parametrize("swap, words", [
+    ('speed = { point = "B", value = 300 }', "'B' is none: C"),
+    ('omega = { link = 2, value = 3 }', "give the input link's own as omega = <number>"),
+    ('omega = { link = 3 }', "gives the input by another member's motion"),
+])
+def test_a_given_input_that_cannot_be_is_refused_at_its_line(swap, words):
+    with pytest.raises(TarsimError, match=r"given\.toml:\d+: \[input\.") as e:
+        parse_exercise(SHAPER.replace("omega = 10", swap), "given.toml", "given")
+    assert words in str(e.value)
