@@ -49,3 +49,14 @@ def test_a_given_input_that_cannot_be_is_refused_at_its_line(swap, words):
     with pytest.raises(TarsimError, match=r"given\.toml:\d+: \[input\.") as e:
         parse_exercise(SHAPER.replace("omega = 10", swap), "given.toml", "given")
     assert words in str(e.value)
+
+
+def test_a_wheels_centre_speed_drives_the_chain_that_rolls_it():
+    # The rolling wheel's centre at 3 m/s to the left: the wheel turns at V_B / r = 3 / 0.03.
+    text = resolve("rolling-wheel").read_text(encoding="utf-8").replace(
+        "omega = 4", 'speed = { point = "B", value = -3000 }')
+    sol = solve_exercise(parse_exercise(text, "wheel.toml", "wheel"))
+    q = sol.quantities
+    assert q["V_B"].value["vector"][0] == pytest.approx(-3.0, rel=1e-12)
+    assert q["omega4"].value["value"] == pytest.approx(100.0, rel=1e-12)
+    assert all(x.passed for x in q.values())
