@@ -35,9 +35,9 @@ def convert(m: Mechanism) -> tuple[Mechanism, Mechanism, str]:
     g, d = m.given, m.drive
     per_w, per_w_ref = _rate(m, 1.0, 0.0), _reference(m, 1.0, 0.0)
     if abs(per_w) <= 1e-12 * max(abs(per_w_ref), 1e-300) or per_w_ref == 0.0:
-        raise InputError(f"the {_what(g)} does not move with link {d.link} at this position, so "
+        raise InputError(f"{_what(g)} does not move with link {d.link} at this position, so "
                          f"no ω{d.link} gives it {_value(m, g)}; choose another member or "
-                         "position")
+                         "position", file=m.source or None)
     w, w_ref = g.value / per_w, g.value / per_w_ref
     a = a_ref = 0.0
     if g.second_given:

@@ -687,6 +687,9 @@ class _Reader:
             if k not in allowed:
                 raise self.unknown(k, allowed, f"{key} setting", key=key, **where)
         value = self.number(spec["value"], f"{key} value", size=True, key=key, **where)
+        if value == 0.0:
+            raise self.fail(f"the {key} given is 0, which leaves the mechanism at rest; give a "
+                            "nonzero one, or the input's own omega = 0", key=key, **where)
         second_key = allowed[2]
         second = self.number(spec.get(second_key, 0.0), f"{key} {second_key}", size=True,
                              key=key, **where)

@@ -44,6 +44,9 @@ def test_a_couplers_omega_and_alpha_drive_the_crank():
     ('speed = { point = "B", value = 300 }', "'B' is none: C"),
     ('omega = { link = 2, value = 3 }', "give the input link's own as omega = <number>"),
     ('omega = { link = 3 }', "gives the input by another member's motion"),
+    ('speed = { point = "C", value = 0 }', "the speed given is 0, which leaves the mechanism"),
+    ('omega = { link = 3, value = 2 }\nspeed = { point = "C", value = 3 }',
+     "give the input's omega or a speed, not both"),
 ])
 def test_a_given_input_that_cannot_be_is_refused_at_its_line(swap, words):
     with pytest.raises(TarsimError, match=r"given\.toml:\d+: \[input\.") as e:
@@ -60,3 +63,12 @@ def test_a_wheels_centre_speed_drives_the_chain_that_rolls_it():
     assert q["V_B"].value["vector"][0] == pytest.approx(-3.0, rel=1e-12)
     assert q["omega4"].value["value"] == pytest.approx(100.0, rel=1e-12)
     assert all(x.passed for x in q.values())
+
+
+def test_at_a_dead_centre_the_piston_gives_no_crank_speed():
+    text = resolve("piston-driven-slider-crank").read_text(encoding="utf-8").replace(
+        "angle = 60", "angle = 0")
+    with pytest.raises(TarsimError, match=r"piston\.toml: V_C along its guide does not move "
+                                          r"with link 2 at this position, so no ω2 gives it "
+                                          r"300 mm/s"):
+        solve_exercise(parse_exercise(text, "piston.toml", "piston"))
