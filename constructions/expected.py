@@ -177,18 +177,16 @@ def reading(work, ask) -> Expected:
         ref = instant_centre(kin, *ask.pair, pin=shared_pin(m, *ask.pair))
         (px, py), (cx, cy) = kin.points[ask.point], ref.point
         return Expected({"value": ((px - cx) ** 2 + (py - cy) ** 2) ** 0.5})
-    from .readings import slider_rod, transmission_pin
+    # μ by the protractor's own geometry, on the solver's points and guide direction
+    from .readings import angle_at, normal_angle, slider_rod, transmission_pin
 
     rod = slider_rod(m)
-    if rod is not None:       # the rod against the normal to the stroke, from the solver
+    if rod is not None:       # the rod against the normal to the stroke
         (bx, by), (ax, ay) = (kin.points[n] for n in rod[:2])
-        dx, dy = kin.slide_rates[rod[2]].direction
-        rx, ry = ax - bx, ay - by
-        along = abs(rx * dx + ry * dy) / (math.hypot(rx, ry) * math.hypot(dx, dy))
-        return Expected({"value": math.asin(min(1.0, along))})
+        return Expected({"value": normal_angle(ax - bx, ay - by,
+                                               *kin.slide_rates[rod[2]].direction)})
     b, a, o = (kin.points[n] for n in transmission_pin(m))
-    (ux, uy), (vx, vy) = (a[0] - b[0], a[1] - b[1]), (o[0] - b[0], o[1] - b[1])
-    return Expected({"value": math.atan2(abs(ux * vy - uy * vx), ux * vx + uy * vy)})
+    return Expected({"value": angle_at(b, a, o)})
 
 
 def equivalent(work, ask: A.Equivalent) -> Expected:

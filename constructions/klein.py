@@ -20,7 +20,7 @@ from __future__ import annotations
 from . import asks as A
 from .checks import Answer, FigureSpec, vector_value
 from .errors import InputError
-from .model import Mechanism, SlideKind
+from .model import Mechanism, slider_crank
 from .narration import phrase
 from .record import Kind, Role
 
@@ -31,7 +31,8 @@ KLEIN_FIGURE = FigureSpec("klein", "Klein's construction", "Klein's construction
 
 
 def klein_parts(m: Mechanism) -> tuple[str, str, str, int]:
-    """The crank's pivot O, the crank pin C, the piston pin P and the guide's slide index.
+    """The crank's pivot O, the crank pin C, the piston pin P and the guide's slide index
+    (:func:`~.model.slider_crank`).
 
     Raises
     ------
@@ -39,19 +40,11 @@ def klein_parts(m: Mechanism) -> tuple[str, str, str, int]:
         If the mechanism is no slider-crank whose crank drives a rod to a block on a frame
         guide.
     """
-    d = m.drive.link
-    crank = m.link(d)
-    for i, s in enumerate(m.slides):
-        if s.guide_link != 1 or s.kind is not SlideKind.BLOCK or s.contact is not None:
-            continue
-        for k in m.links:
-            if k.number in (1, d, s.link) or s.point not in k.names or len(k.names) != 2:
-                continue
-            c = next(n for n in k.names if n != s.point)
-            if c in crank.names and c != crank.names[0]:
-                return crank.names[0], c, s.point, i
-    raise InputError("Klein's construction is drawn on a slider-crank: a crank, a rod and a "
-                     "piston on a frame guide; this mechanism is not one")
+    parts = slider_crank(m)
+    if parts is None:
+        raise InputError("Klein's construction is drawn on a slider-crank: a crank, a rod and "
+                         "a piston on a frame guide; this mechanism is not one")
+    return parts
 
 
 def answer_klein(work, ask) -> Answer:

@@ -55,7 +55,7 @@ __all__ = [
     "Profile",
     "Contact",
     "contact_slide",
-    "contact_arc", "GivenRate",
+    "contact_arc", "GivenRate", "slider_crank",
     "Arc",
     "Drive",
     "Mechanism",
@@ -490,3 +490,22 @@ class Mechanism:
         """Return the same mechanism at another input position."""
         return Mechanism(self.links, drive, self.slides, dict(self.branches), self.units,
                          self.name, self.source, self.arcs, self.scale)
+
+
+def slider_crank(m: Mechanism) -> tuple[str, str, str, int] | None:
+    """The parts of a slider-crank: the crank's pivot, the crank pin, the piston pin, and the
+    index of the piston's frame guide among the slides; None if the input crank drives no
+    two-point rod to a block on a frame guide. Klein's construction and the slider-crank's
+    transmission angle are drawn on them."""
+    d = m.drive.link
+    crank = m.link(d)
+    for i, s in enumerate(m.slides):
+        if s.guide_link != 1 or s.kind is not SlideKind.BLOCK or s.contact is not None:
+            continue
+        for k in m.links:
+            if k.number in (1, d, s.link) or s.point not in k.names or len(k.names) != 2:
+                continue
+            pin = next(n for n in k.names if n != s.point)
+            if pin in crank.names and pin != crank.names[0]:
+                return crank.names[0], pin, s.point, i
+    return None

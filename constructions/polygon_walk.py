@@ -19,7 +19,7 @@ from itertools import combinations
 
 from . import geometry as g
 from .assembly import Assembly
-from .coincident import Node, Walk
+from .coincident import Node, Walk, rolling_contacts
 from .errors import DeadPoint, DegenerateInput, TarsimError
 from .model import Slide, SlideKind
 from .narration import Number, Phrase, Quantity, Word, narrate, phrase
@@ -248,11 +248,8 @@ class PolygonWalk(Walk):
         nodes += [Node(s.point, s.guide_link) for s in m.slotted]
         # A wheel rolling on the ground touches it at its instant centre: a point of the
         # wheel at rest, though not without acceleration (ω² r toward the wheel's centre).
-        self.rolls: dict[Node, tuple[Ref, Slide]] = {}
-        for s in m.slides:
-            if s.rolling:
-                name = "P" if "P" not in m.point_names and not self.rolls else f"P{s.link}"
-                self.rolls[Node(name, s.link)] = (asm.contacts[s], s)
+        self.rolls: dict[Node, tuple[Ref, Slide]] = {
+            Node(name, s.link): (asm.contacts[s], s) for name, s in rolling_contacts(m).items()}
         nodes += list(self.rolls)
         self.nodes = list(dict.fromkeys(nodes))
         self.known: dict[Node, Ref] = {}

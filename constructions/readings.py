@@ -17,12 +17,13 @@ from .centres import CENTRES_FIGURE, OMEGA_FIGURE, located, ratio_by_centres
 from .checks import Answer
 from .errors import InputError
 from .narration import phrase
-from .model import Mechanism, SlideKind
+from .model import Mechanism, slider_crank
 from .record import Panel
 from .reference.rotatability import four_bar_spans
 from .velocity_polygon import WORKED, drawn_velocity_polygon
 
-__all__ = ["answer_reading", "transmission_pin", "slider_rod", "normal_angle", "pin_links",
+__all__ = ["answer_reading", "transmission_pin", "slider_rod", "normal_angle", "angle_at",
+           "pin_links",
            "mu_askable", "MU_WHY_NOT"]
 
 MU_WHY_NOT = {A.TransmissionAngle: "a transmission angle is asked of a four-bar of four pins "
@@ -32,22 +33,10 @@ MU_WHY_NOT = {A.TransmissionAngle: "a transmission angle is asked of a four-bar 
 
 
 def slider_rod(m: Mechanism) -> tuple[str, str, int] | None:
-    """A slider-crank's block point B on a frame guide, the rod's other pin A on the crank,
-    and the guide's slide index; None if the mechanism is no slider-crank."""
-    if len(m.links) != 4 or four_bar_spans(m) is not None:
-        return None
-    d = m.drive.link
-    for i, s in enumerate(m.slides):
-        if s.guide_link != 1 or s.kind is not SlideKind.BLOCK or s.contact is not None:
-            continue
-        rod = next((k for k in m.links if k.number not in (1, d, s.link)
-                    and s.point in k.names and len(k.names) == 2), None)
-        if rod is None:
-            continue
-        a = next(n for n in rod.names if n != s.point)
-        if d in m.links_at(a):
-            return s.point, a, i
-    return None
+    """A plain slider-crank's (four links) piston pin B, the rod's pin A on the crank, and
+    the guide's slide index; None for any other mechanism."""
+    parts = slider_crank(m) if len(m.links) == 4 else None
+    return None if parts is None else (parts[2], parts[1], parts[3])
 
 
 def transmission_pin(m: Mechanism) -> tuple[str, str, str]:
@@ -128,7 +117,7 @@ def answer_reading(work, ask) -> Answer:
         return Answer(ask, value, cond, f"protractor: rod {b}{a} against the normal to the "
                                         "stroke", refs=(asm.points[a], asm.points[b]))
     b, a, o = transmission_pin(m)
-    value = {"value": _angle_at(asm.xy(b), asm.xy(a), asm.xy(o))}
+    value = {"value": angle_at(asm.xy(b), asm.xy(a), asm.xy(o))}
     cond = min(asm[asm.points[n]].conditioning for n in (a, b, o))
     return Answer(ask, value, cond, f"protractor: angle {a}{b}{o} between coupler and output",
                   refs=tuple(asm.points[n] for n in (a, b, o)))
@@ -207,7 +196,7 @@ def pin_links(m: Mechanism, point: str) -> tuple[int, int]:
     return links[0], links[1]
 
 
-def _angle_at(vertex, p, q) -> float:
+def angle_at(vertex, p, q) -> float:
     """The angle pVq (rad, 0 to π)."""
     ux, uy = p[0] - vertex[0], p[1] - vertex[1]
     vx, vy = q[0] - vertex[0], q[1] - vertex[1]

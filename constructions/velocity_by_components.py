@@ -29,7 +29,7 @@ from itertools import combinations
 
 from . import geometry as g
 from .assembly import Assembly
-from .coincident import Node, Walk
+from .coincident import Node, Walk, rolling_contacts
 from .errors import DegenerateInput, TarsimError
 from .narration import Capitalized, Phrase, narrate, phrase
 from .record import Kind, Ref, Role
@@ -133,9 +133,8 @@ class _Components(Walk):
         self.nodes = list(dict.fromkeys(nodes + [target]))
         # A wheel rolling on the ground turns, at the instant, about its contact point P:
         # a pivot of the wheel as a frame pin is of its link.
-        self.contacts = {("P" if "P" not in self.m.point_names else f"P{s.link}"):
-                         (asm.contacts[s], s.link)
-                         for s in self.m.slides if s.rolling and s.guide_link == 1}
+        self.contacts = {name: (asm.contacts[s], s.link)
+                         for name, s in rolling_contacts(self.m).items()}
         self.known: dict[Node, Ref] = {Node(start): self.c[vec].inputs[1]}
         self.known |= {n: f"cm:{n.tag}:tip" for n in self.nodes  # drawn by a previous call
                        if f"cm:{n.tag}:tip" in self.c and n not in self.known}

@@ -73,8 +73,7 @@ def _rate(m: Mechanism, w: float, a: float, *, second: bool = False) -> float:
     g = m.given
     if g.kind == "omega":
         return polygon.rates[g.target]
-    i = next(i for i, s in enumerate(m.slides) if s.point == g.target and s.guide_link == 1)
-    ux, uy = asm.guide(i).direction
+    ux, uy = asm.guide(_guide(m)).direction
     x, y = polygon.vector(g.target)
     return x * ux + y * uy
 
@@ -85,9 +84,14 @@ def _reference(m: Mechanism, w: float, a: float, *, second: bool = False) -> flo
     g = m.given
     if g.kind == "omega":
         return (kin.alphas if second else kin.omegas)[g.target]
-    i = next(i for i, s in enumerate(m.slides) if s.point == g.target and s.guide_link == 1)
-    rate = kin.slide_rates[i]
+    rate = kin.slide_rates[_guide(m)]
     return rate.acceleration if second else rate.velocity
+
+
+def _guide(m: Mechanism) -> int:
+    """The index of the frame guide the given point runs on."""
+    return next(i for i, s in enumerate(m.slides)
+                if s.point == m.given.target and s.guide_link == 1)
 
 
 def _what(g) -> str:
