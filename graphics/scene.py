@@ -69,6 +69,7 @@ LINE_KINDS = {
 _PRIORITY = (Kind.COMMON_NORMAL, Kind.GAUGE_LINE, Kind.KENNEDY_LINE, Kind.LINE)
 """Which kind shows when lines drawn by several steps coincide."""
 _MARGIN = 8.0       # white round the drawing, mm (as the kinematic diagram)
+_REACH = 6.0        # mm a ground symbol reaches from its pivot: a line shorter past it is no ray
 _EDGE = 9.0         # room between the frame's points and the clip edge, mm
 _OVERHANG = 4.0     # a line runs this far past its last point, mm
 _LONE = 12.0        # a line through one point runs this far either side, mm
@@ -349,6 +350,8 @@ class _Scene(_Diagram):
                 self.placer.block_path([tail, tip], 1.6)
 
     def rays_through(self, at: tuple[float, float]) -> list[tuple[float, float]]:
+        """The directions the scene's lines leave ``at`` in, each way a line runs on past it
+        by more than a symbol's reach (a line's short overhang past its end is no ray)."""
         out = []
         for _, ends in self.lines:
             if ends is None:
@@ -356,9 +359,9 @@ class _Scene(_Diagram):
             (x0, y0), (x1, y1) = ends
             n = math.hypot(x1 - x0, y1 - y0)
             if n > 0 and abs((at[0] - x0) * (y1 - y0) - (at[1] - y0) * (x1 - x0)) / n < 0.5:
-                u = ((x1 - x0) / n, (y1 - y0) / n)
-                out += [u, (-u[0], -u[1])]
-        return out
+                out += [((x - at[0]) / n, (y - at[1]) / n) for x, y in ends
+                        if math.hypot(x - at[0], y - at[1]) > _REACH]
+        return [(dx / math.hypot(dx, dy), dy / math.hypot(dx, dy)) for dx, dy in out]
 
     def marks(self) -> list[tuple[float, float]]:
         """The points the scene's steps mark, on paper: a guide runs past those on it."""
