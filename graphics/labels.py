@@ -38,6 +38,7 @@ class LabelPlacer:
         self.ink = Occupancy()
         self.seen = 0                 # fig.items looked through for arrowheads
         self.named: list[Shape] = []
+        self._named_ends: dict[int, np.ndarray] = {}   # by kind, of ``named``
         self.clearance = 0.8
         # A page that is fitted to its content afterwards has no edge to avoid.
         self.page = box(1.0, 1.0, fig.width - 1.0, fig.height - 1.0) if fig.width else None
@@ -58,11 +59,13 @@ class LabelPlacer:
         """Register points that are (or will be) labelled on this page: a point's label must
         stand nearer its own point than any of these."""
         self.named += [(tuple(p),) for p in points]
+        self._named_ends.clear()
 
     def name_vectors(self, vectors) -> None:
         """Register vectors, ``(tail, tip)``, that are (or will be) labelled on this page: a
         vector's label must stand nearer its own vector than any of these."""
         self.named += [(tuple(a), tuple(b)) for a, b in vectors]
+        self._named_ends.clear()
 
     def block_head(self, tip: tuple[float, float], tail: tuple[float, float],
                    length: float = 3.2) -> None:
@@ -150,7 +153,12 @@ class LabelPlacer:
             first = self._first_own(xy, ink, own)
         if first is not None:
             return (float(xy[first, 0]), float(xy[first, 1])), 0.0
-        costs = ink + (0.0 if own is None else _ASTRAY * self._astray(xy, own))
+        costs = ink.copy()
+        if own is not None:
+            # Straying costs _ASTRAY: a spot with that much more ink than the least cannot win.
+            may = np.flatnonzero(ink <= ink.min() + _ASTRAY)
+            costs[ink > ink.min() + _ASTRAY] = np.inf
+            costs[may] += _ASTRAY * self._astray(xy[may], own)
         k = int(np.argmin(costs))
         return (float(xy[k, 0]), float(xy[k, 1])), float(costs[k])
 
@@ -183,21 +191,35 @@ class LabelPlacer:
         """Whether the name in each box centred at ``xy`` stands nearer another named thing
         of its kind (point or vector) than its own; those within half a millimetre of it are
         its own."""
-        shape, dx, hw, hh = own
-        rivals = [r for r in self.named if len(r) == len(shape) and not _same(r, shape)]
-        if not rivals:
-            return np.zeros(len(xy), dtype=bool)
-        centre = xy + (dx, 0.0)
-        mine = _box_distance(centre, hw, hh, _samples([shape]))[:, 0]
-        # Only a rival within the farthest of those distances of some box can be nearer.
-        pts = _samples(rivals)
-        reach = float(mine.max()) + max(hw, hh)
-        lo, hi = centre.min(axis=0) - reach, centre.max(axis=0) + reach
-        near = ((pts.max(axis=1) >= lo) & (pts.min(axis=1) <= hi)).all(axis=1)
-        if not near.any():
-            return np.zeros(len(xy), dtype=bool)
-        theirs = _box_distance(centre, hw, hh, pts[near]).min(axis=1)
-        return theirs < mine - 1e-6
+        shape, dx, dy, hw, hh = own
+        out = np.zeros(len(xy), dtype=bool)
+        named, pts = self._named_of_kind(len(shape))
+        if not named:
+            return out
+        rival = np.array([not _same(r, shape) for r in named])
+        centre = xy + (dx, dy)
+        mine = _box_distance(centre, hw, hh, _ends([shape]))[:, 0]
+        # A rival can be nearer a box only if its bounding box is: test the pairs that may.
+        lo, hi = pts.min(axis=1)[rival], pts.max(axis=1)[rival]
+        gx = np.maximum(np.maximum(lo[None, :, 0] - centre[:, None, 0],
+                                   centre[:, None, 0] - hi[None, :, 0]) - hw, 0.0)
+        gy = np.maximum(np.maximum(lo[None, :, 1] - centre[:, None, 1],
+                                   centre[:, None, 1] - hi[None, :, 1]) - hh, 0.0)
+        may = np.hypot(gx, gy) < mine[:, None] - 1e-6
+        boxes, rivals = np.flatnonzero(may.any(axis=1)), np.flatnonzero(may.any(axis=0))
+        if not len(boxes):
+            return out
+        theirs = _box_distance(centre[boxes], hw, hh, pts[rival][rivals]).min(axis=1)
+        out[boxes] = theirs < mine[boxes] - 1e-6
+        return out
+
+    def _named_of_kind(self, size: int) -> tuple[list[Shape], np.ndarray]:
+        """The named shapes of ``size`` points (1 a point, 2 a vector) and their ends (an
+        array kept for all the labels placed till more are named)."""
+        named = [r for r in self.named if len(r) == size]
+        if size not in self._named_ends:
+            self._named_ends[size] = _ends(named)
+        return named, self._named_ends[size]
 
     def _see_heads(self) -> None:
         """Take the room of every arrowhead drawn since the last look, whoever drew it: a
@@ -236,7 +258,7 @@ class LabelPlacer:
         # The box of a subscripted label hangs below its centre line: aim the box.
         dy = (y0 + y1) / 2
         own = _shape(own)
-        owned = None if own is None else (own, 0.0, (x1 - x0) / 2, (y1 - y0) / 2)
+        owned = None if own is None else (own, 0.0, 0.0, (x1 - x0) / 2, (y1 - y0) / 2)
         c, _ = self.spot(x1 - x0, y1 - y0, anchor, prefer=prefer, spread=spread, gap=gap,
                          rings=rings, own=owned)
         t = Text((c[0], c[1] - dy), text, size, "middle", italic, sub=sub, owner=own)
@@ -273,8 +295,12 @@ class LabelPlacer:
         w = (x1 - x0) + sum(2 * r + _SPACE for r in radii) - (0.0 if t else _SPACE)
         h = max(y1 - y0, 2 * max(radii, default=0.0))
         own = _shape(own)
-        owned = None if own is None or not t else (own, ((x1 - x0) - w) / 2, (x1 - x0) / 2,
-                                                    (y1 - y0) / 2)
+        owned = None
+        if own is not None and t:
+            # Only the first name is held to what it names: its box within the unit's.
+            nx0, ny0, nx1, ny1 = t.box()
+            owned = (own, ((nx1 - nx0) - w) / 2, (ny0 + ny1 - y0 - y1) / 2, (nx1 - nx0) / 2,
+                     (ny1 - ny0) / 2)
         c, cost = self.spot(w, h, anchor, prefer=prefer, spread=spread, gap=gap, rings=rings,
                             own=owned)
         if cost > 0.0 and farther:
@@ -305,9 +331,9 @@ class LabelPlacer:
 Shape = tuple[tuple[float, float], ...]
 """A thing a label names, by its points: one for a point, tail and tip for a vector."""
 
-Owned = tuple[Shape, float, float, float]
-"""What a label names, and its name's box within the label: the box centre's offset along
-x from the label's, and its half width and half height."""
+Owned = tuple[Shape, float, float, float, float]
+"""What a label names, and its name's box within the label: the box centre's offset from
+the label's, along x and y, and its half width and half height."""
 
 _ASTRAY = 100.0
 """What a spot costs (mm²) whose name stands nearer another named thing than its own."""
@@ -414,27 +440,46 @@ def _same(own: Shape, other: Shape) -> bool:
     return True
 
 
-_ALONG = np.linspace(0.0, 1.0, 17)
-
-
-def _samples(shapes: list[Shape]) -> np.ndarray:
-    """Points standing for each shape, a row each: a point itself (repeated), a vector's
-    shaft every sixteenth of its length (a box's distance to them is its distance to the
-    shaft within a thirty-second of the shaft's length)."""
-    out = np.empty((len(shapes), len(_ALONG), 2))
+def _ends(shapes: list[Shape]) -> np.ndarray:
+    """Each shape as a segment, tail and tip, a row each (a point is a segment of no
+    length)."""
+    out = np.empty((len(shapes), 2, 2))
     for k, shape in enumerate(shapes):
-        a = np.asarray(shape[0], dtype=float)
-        b = np.asarray(shape[-1], dtype=float)
-        out[k] = a + _ALONG[:, None] * (b - a)
+        out[k] = shape[0], shape[-1]
     return out
 
 
-def _box_distance(centres: np.ndarray, hw: float, hh: float, shapes: np.ndarray) -> np.ndarray:
-    """Distance from each box (centre, half sizes) to each shape given by its sample points
-    (:func:`_samples`): a row per box, a column per shape."""
-    dx = np.maximum(np.abs(shapes[None, :, :, 0] - centres[:, None, None, 0]) - hw, 0.0)
-    dy = np.maximum(np.abs(shapes[None, :, :, 1] - centres[:, None, None, 1]) - hh, 0.0)
-    return np.hypot(dx, dy).min(axis=2)
+def _box_distance(centres: np.ndarray, hw: float, hh: float, ends: np.ndarray) -> np.ndarray:
+    """Exact distance from each box (centre, half sizes) to each segment (:func:`_ends`): a
+    row per box, a column per segment.
+
+    Nil where the segment meets the box (their bounding boxes overlap and the box's
+    corners are not all on one side of the segment's line); else the nearest of an end to
+    the box and a corner to the segment, as for any two convex shapes apart.
+    """
+    cx, cy = centres[:, 0, None], centres[:, 1, None]
+    ax, ay, bx, by = ends[None, :, 0, 0], ends[None, :, 0, 1], ends[None, :, 1, 0], \
+        ends[None, :, 1, 1]
+
+    def to_box(px, py):
+        return np.hypot(np.maximum(np.abs(px - cx) - hw, 0.0),
+                        np.maximum(np.abs(py - cy) - hh, 0.0))
+
+    near = to_box(ax, ay)
+    dx, dy = bx - ax, by - ay
+    n2 = dx * dx + dy * dy
+    if not n2.any():                              # points only
+        return near
+    near = np.minimum(near, to_box(bx, by))
+    n2 = np.maximum(n2, 1e-300)
+    for px, py in ((cx - hw, cy - hh), (cx - hw, cy + hh), (cx + hw, cy - hh),
+                   (cx + hw, cy + hh)):
+        t = np.clip(((px - ax) * dx + (py - ay) * dy) / n2, 0.0, 1.0)
+        near = np.minimum(near, np.hypot(ax + t * dx - px, ay + t * dy - py))
+    meets = (np.minimum(ax, bx) <= cx + hw) & (np.maximum(ax, bx) >= cx - hw) & \
+        (np.minimum(ay, by) <= cy + hh) & (np.maximum(ay, by) >= cy - hh) & \
+        (np.abs(dx * (cy - ay) - dy * (cx - ax)) <= hw * np.abs(dy) + hh * np.abs(dx))
+    return np.where(meets, 0.0, near)
 
 
 def _first_clear(costs: np.ndarray) -> int:

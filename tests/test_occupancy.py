@@ -76,7 +76,26 @@ def test_ink_far_off_the_page_does_not_grow_the_raster_past_its_most():
     occ = Occupancy()
     occ.paint(box(0.0, 0.0, 10.0, 10.0), 1.0)
     occ.paint(box(0.0, -5000.0, 10.0, -4990.0), 1.0)      # a point kilometres off
+    near, far = occ.ink(np.array([[5.0, 5.0], [5.0, -4995.0]]), (1.0, 1.0))[0]
     rows, cols = occ.grid.shape
     assert rows * CELL <= _MOST + CELL and cols * CELL <= _MOST + CELL
-    near, far = occ.ink(np.array([[5.0, 5.0], [5.0, -4995.0]]), (1.0, 1.0))[0]
     assert near == 4.0 and far == 0.0                       # the far one is not kept
+
+
+@settings(max_examples=200, deadline=None)
+@given(cx=coord, cy=coord, hw=st.floats(0.5, 8.0), hh=st.floats(0.5, 8.0),
+       ax=coord, ay=coord, bx=coord, by=coord, kind=st.sampled_from("point level plumb any"))
+def test_a_box_is_as_far_from_a_named_thing_as_shapely_measures(cx, cy, hw, hh, ax, ay, bx,
+                                                                 by, kind):
+    from tarsim.graphics.labels import _box_distance
+
+    if kind == "point":
+        bx, by = ax, ay
+    elif kind == "level":
+        by = ay
+    elif kind == "plumb":
+        bx = ax
+    thing = Point(ax, ay) if (ax, ay) == (bx, by) else LineString([(ax, ay), (bx, by)])
+    exact = box(cx - hw, cy - hh, cx + hw, cy + hh).distance(thing)
+    got = _box_distance(np.array([[cx, cy]]), hw, hh, np.array([[[ax, ay], [bx, by]]]))[0, 0]
+    assert abs(got - exact) <= 1e-9 * (1.0 + exact)     # a few roundings of coordinates ≤ 60
