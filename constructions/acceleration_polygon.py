@@ -134,12 +134,16 @@ class _Polygon(PolygonWalk):
     # ----- the input ----------------------------------------------------------------
     def draw_input(self) -> None:
         d = self.m.drive
-        k = self.m.link(d.link)
-        pivot, point = k.names[0], k.names[1]
-        x, o = Node(point), Node(pivot)
-        X, r = self.name(x), k.span(pivot, point)
+        o, x, r = self.input_arm()
+        pivot, point = self.name(o), x.point
+        X = self.name(x)
         line = self.space_line(o, x, d.link)
         radius = self.m.units.length_said(r)
+        if self.m.rolling_input is not None:
+            self.known[x] = self.draw_wheel_input(o, x, line, r)
+            for n, (_, s) in self.rolls.items():
+                self.known[n] = self.draw_rolling(n, s)
+            return
         normal = self.act(
             f"ap:{X}:n", "lay_off", self.pole_ref, line, length=-d.omega ** 2 * r * self.scale,
             said=phrase("apolygon.input_normal", point=X, link=d.link, pivot=pivot, p=point,
@@ -167,6 +171,27 @@ class _Polygon(PolygonWalk):
         self.known[x] = tip
         for n, (_, s) in self.rolls.items():
             self.known[n] = self.draw_rolling(n, s)
+
+    def draw_wheel_input(self, o: Node, x: Node, line: Ref, r: float) -> Ref:
+        """The centre of the input wheel, rolling on a straight face, runs along it: its
+        acceleration is α·r along the face, with nothing across it (a = α r)."""
+        d = self.m.drive
+        X, tip = self.name(x), self.tip_name(self.name(x))
+        given = phrase("apolygon.given" if d.alpha_given else "apolygon.not_given")
+        if d.alpha == 0.0:
+            return self.act(f"ap:tip:{X}", "mark", self.pole_ref, label=tip,
+                            said=phrase("apolygon.wheel_centre_still", link=d.link,
+                                        given=given, point=X, tip=tip))
+        perp = self.act(f"ap:{X}:t:perp", "perpendicular_through", self.pole_ref, line,
+                        said=phrase("apolygon.wheel_centre_path", point=X, link=d.link,
+                                    contact=self.name(o)))
+        return self.act(
+            f"ap:tip:{X}", "lay_off", self.pole_ref, perp, length=d.alpha * r * self.scale,
+            label=tip, said=phrase("apolygon.wheel_centre", point=X, link=d.link,
+                                   alpha=Number(abs(d.alpha)),
+                                   radius=self.m.units.length_said(r),
+                                   accel=self.say(abs(d.alpha) * r),
+                                   sense=Word("ccw" if d.alpha > 0 else "cw"), tip=tip))
 
     def draw_rolling(self, n: Node, s) -> Ref:
         """The contact point of a wheel rolling on the ground: at rest, its acceleration is

@@ -25,6 +25,7 @@ from dataclasses import dataclass, field
 
 from . import geometry as g
 from .errors import AssemblyError, BranchError, DegenerateInput, NoIntersection, TarsimError
+from .coincident import rolling_contacts
 from .model import Arc, Mechanism, Slide, SlideKind
 from .narration import Phrase, Word, phrase
 from .record import VERBS, Construction, Kind, Ref, Role
@@ -97,6 +98,24 @@ class Assembly(Construction):
     contacts: dict[Slide | Arc, Ref] = field(default_factory=dict)
     """The contact point P of each joint that stands for a direct contact (a cam's circle
     on a flat face or on a roller): where the diagram draws the two profiles touching."""
+
+    def input_arm(self) -> tuple[str, Ref, str, Ref]:
+        """The input's centre of rotation and its known point, each by name and step, and the
+        line from the one to the other: a crank's pivot and second point, along its axis;
+        for a wheel rolling on the frame, its contact point (at rest at the instant) and
+        its centre, joined here once."""
+        m = self.mechanism
+        d, s = m.drive, m.rolling_input
+        k = m.link(d.link)
+        if s is None:
+            return k.names[0], self.points[k.names[0]], k.names[1], self.axes[d.link]
+        contact = next(n for n, t in rolling_contacts(m).items() if t is s)
+        ref = f"arm:{d.link}"
+        if ref not in self:
+            self.draw(ref, "line_through", self.contacts[s], self.points[s.point],
+                      phrase=phrase("position.wheel_arm", contact=contact, point=s.point,
+                                    link=d.link))
+        return contact, self.contacts[s], s.point, ref
 
     def point(self, name: str) -> g.Point:
         """The located point ``name``."""
@@ -321,6 +340,9 @@ class _Assembler:
     def lay_off_input(self) -> None:
         d = self.m.drive
         k = self.m.link(d.link)
+        if self.m.rolling_input is not None:
+            self.roll_input(self.m.rolling_input)
+            return
         if len(k.names) < 2 or k.names[0] not in self.known:
             raise AssemblyError(f"the input {k.label} must turn about a frame point, listed "
                                 "first among its points, and carry a second point", link=k.number)
@@ -336,6 +358,32 @@ class _Assembler:
                                radius=self.length(k.span(pivot, tip)), at=self.at_said()))
         self.axes[d.link] = self.c.draw(f"axis:{d.link}", "line_through", self.known[pivot],
                                         self.known[tip], label=f"link {d.link}", kind=Kind.GUIDE)
+
+    def roll_input(self, s: Slide) -> None:
+        """The input is a wheel rolling on the frame: its angle θ says how far it has rolled
+        since its centre stood square over the face's ``through`` point (its axis then
+        along the frame's x), so the centre is laid off σ·r·θ back along its path from
+        there, and the wheel's axis drawn through it at θ."""
+        d = self.m.drive
+        i = self.m.slides.index(s)
+        r = s.contact.circle.radius
+        rolled = -s.contact.roll_sign * r * self.theta
+        start = self.c.give(f"roll:{d.link}", g.Point(*s.through), label="", kind=Kind.POINT)
+        k = self.m.link(d.link)
+        self.found(s.point, "lay_off", start, self.guides[i], length=rolled,
+                   said=phrase("position.wheel_input", link=d.link,
+                               name=phrase("link_name", name=k.name) if k.name else None,
+                               point=s.point, face=s.contact.face.through,
+                               turn=self.angle(abs(self.theta)),
+                               sense=Word("counter-clockwise" if self.theta > 0 else "clockwise"),
+                               rolled=self.length(abs(rolled)), radius=self.length(r),
+                               way=Word("forward" if rolled >= 0 else "back")))
+        x, y = self.c.output(self.known[s.point]).xy
+        ux, uy = math.cos(self.theta), math.sin(self.theta)
+        self.axes[d.link] = self.c.give(
+            f"axis:{d.link}", g.Line(-uy, ux, uy * x - ux * y), label=f"link {d.link}",
+            kind=Kind.GUIDE, phrase=phrase("position.wheel_axis", point=s.point, link=d.link,
+                                           angle=self.angle(self.theta)))
 
     # ----- rules: each locates something and returns True, or returns False -----
     @dyad_rule("a point of a drawn link", 0)

@@ -111,6 +111,10 @@ class _Dyad:
         self.m = mech
         d = mech.drive.link
         crank = mech.link(d)
+        if mech.rolling_input is not None:
+            raise InputError(f"the input link {d} is a wheel rolling on the frame, not a crank "
+                             "about a frame pivot: each turn carries it along, so the linkage "
+                             "never comes back to a limit position")
         if len(crank.names) < 2:
             raise InputError(f"the input link {d} carries no pin to drive a dyad")
         self.crank, self.o2, self.a = d, crank.names[0], crank.names[1]
@@ -422,7 +426,8 @@ WHY_NOT = {
     A.TimeRatio: "the limit positions are drawn where the crank drives a rod to a block on a "
                  "frame guide (slider-crank), a rod to a rocker (crank-rocker) or a block in the "
                  "slot of a lever through its pivot, the crank shorter than the distance between "
-                 "the pivots (slotted lever), and this crank drives none of these",
+                 "the pivots (slotted lever), and this crank drives none of these (an input "
+                 "wheel rolling on the frame is no crank: it never comes back)",
     A.Stroke: "the stroke is measured on a block that slides on a frame guide, driven through "
               "the limit positions, and this mechanism has none",
 }

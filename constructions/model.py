@@ -200,8 +200,8 @@ class Contact:
 
     The convention that fixes a rolling wheel's angle: the wheel's points are given
     as they are when its centre stands square over the face's ``through`` point with
-    its local axis parallel to the face. The wheel turns by the distance rolled
-    over its radius from there.
+    its local axis along the x axis of the face's link (the frame's +x). The wheel
+    turns by the distance rolled over its radius from there.
     """
 
     circle: Profile
@@ -473,18 +473,34 @@ class Mechanism:
         return tuple(s for s in (*self.slides, *self.pin_arcs)
                      if s.guide_link != 1 and s.point not in self.link(s.guide_link).names)
 
+    @cached_property
+    def rolling_input(self) -> Slide | None:
+        """The rolling contact on the frame of an input that is a wheel, else None. Such a
+        wheel turns, at the instant, about its contact point, and its angle says how far
+        it has rolled; its centre is the point every method starts from."""
+        return next((s for s in self.slides if s.rolling and s.guide_link == 1
+                     and s.link == self.drive.link), None)
+
+    @property
+    def input_radius(self) -> float:
+        """The radius r of the input's known point: the crank's length to its second point, or
+        the rolling wheel's radius (centre to contact point)."""
+        s = self.rolling_input
+        if s is not None:
+            return s.contact.circle.radius
+        k = self.link(self.drive.link)
+        return k.span(k.names[0], k.names[1])
+
     @property
     def input_speed(self) -> float:
-        """|ω|·r of the input link's second point: the known velocity every method starts from."""
-        k = self.link(self.drive.link)
-        return abs(self.drive.omega) * k.span(k.names[0], k.names[1])
+        """|ω|·r of the input's known point: the velocity every method starts from."""
+        return abs(self.drive.omega) * self.input_radius
 
     @property
     def input_acceleration(self) -> float:
-        """|A| of that point, r·√(ω⁴ + α²): the acceleration the polygon starts from."""
-        k = self.link(self.drive.link)
-        return math.hypot(self.drive.omega ** 2, self.drive.alpha) * k.span(k.names[0],
-                                                                            k.names[1])
+        """r·√(ω⁴ + α²): the acceleration the polygon starts from (the crank pin's; for a
+        rolling wheel, its contact point's and its centre's together)."""
+        return math.hypot(self.drive.omega ** 2, self.drive.alpha) * self.input_radius
 
     def with_drive(self, drive: Drive) -> Mechanism:
         """Return the same mechanism at another input position."""

@@ -256,6 +256,26 @@ class PolygonWalk(Walk):
         self.steps: list[Ref] = []
         self.space_steps: list[Ref] = []
 
+    def input_arm(self) -> tuple[Node, Node, float]:
+        """The input's centre of rotation and its known point, and the distance between: a
+        crank's pivot and second point; a rolling wheel's contact point (at rest at the
+        instant) and its centre."""
+        d = self.m.drive
+        s = self.m.rolling_input
+        if s is None:
+            k = self.m.link(d.link)
+            return Node(k.names[0]), Node(k.names[1]), k.span(k.names[0], k.names[1])
+        contact = next(n for n, (_, t) in self.rolls.items() if t is s)
+        return contact, Node(s.point), s.contact.circle.radius
+
+    def input_line(self) -> Ref:
+        """The space-diagram line from the input's centre of rotation to its known point: the
+        crank's axis, or the line joining a rolling wheel's contact point to its centre."""
+        o, x, _ = self.input_arm()
+        if self.m.rolling_input is None:
+            return self.asm.axes[self.m.drive.link]
+        return self.space_line(o, x, self.m.drive.link)
+
     @property
     def pole_ref(self) -> Ref:
         """The step of the pole."""
@@ -378,6 +398,11 @@ class PolygonWalk(Walk):
         """Every way to find x's tip, as (kind, args, quality), the crossing-free ones first."""
         whole, cross = [], []
         for c in self.carriers(x):
+            # A point standing on a known point of its link is that point (a rim point on the
+            # contact of a rolling wheel): one tip, however the link moves.
+            whole += [("coincide", (c, k), 1.0) for k in self.members(c)
+                      if k != x and self.ready(k, known) and not self.apart(k, x)
+                      and k in self.rolls]
             if self.frame_guide(c) is not None:
                 whole += [("translate", (c, k), 1.0) for k in self.members(c)
                           if k != x and k in known and not self.zero(k)]
@@ -498,6 +523,15 @@ class PolygonWalk(Walk):
         return self.act(f"{self.kind.prefix}:tip:{X}", "mark", self.tip(k), label=self.tip_name(X),
                         said=phrase("polygon.translate", link=c, symbol=s, point=X, known=K,
                                     tip=self.tip_name(X), known_tip=self.tip_name(K)))
+
+    def draw_coincide(self, x: Node, c: int, k: Node) -> Ref:
+        """A point of link c that stands, at the instant, on its known point ``k``."""
+        X, K = self.name(x), self.name(k)
+        return self.act(f"{self.kind.prefix}:tip:{X}", "mark", self.tip(k),
+                        label=self.tip_name(X),
+                        said=phrase("polygon.coincide", link=c, point=X, known=K,
+                                    symbol=self.kind.symbol, tip=self.tip_name(X),
+                                    known_tip=self.tip_label(k)))
 
     def read_pair(self, c: int) -> tuple[Node, Node] | None:
         """The two points of link c its ω or α is read from: a fixed pivot and the farthest point,

@@ -147,8 +147,12 @@ class _Components(Walk):
         big = max(1.0, abs(ax), abs(ay), abs(bx), abs(by))
         return None if d <= 1e-12 * big else ((ay - by) / d, (bx - ax) / d)
 
+    def zero(self, n: Node) -> bool:
+        """True for a point at rest: of the frame, or a rolling wheel's contact point."""
+        return n.point in self.contacts or super().zero(n)
+
     def collinear(self, a: Node, b: Node, x: Node) -> bool:
-        pa, pb, px = (self.asm.point(n.point) for n in (a, b, x))
+        pa, pb, px = (self.c.output(self.at(n)) for n in (a, b, x))
         ab, ax, bx = g.distance(pa, pb), g.distance(pa, px), g.distance(pb, px)
         return min(ab, ax, bx) > 0.0 and abs(g.side_of(px, pa, pb)) <= _ON_LINE * ab * ax
 
@@ -180,6 +184,10 @@ class _Components(Walk):
         whole, cross, case3 = [], [], []
         for c in self.carriers(x):
             ready = [k for k in self.members(c) if k != x and (k in known or self.zero(k))]
+            rest = [Node(o) for o, (_, wheel) in self.contacts.items() if wheel == c]
+            whole += [_Rule("rest", (c, k), (), 1.0) for k in rest
+                      if self.normal_to(k, x) is None]       # x stands on the contact
+            ready += rest
             if self.frame_guide(c) is not None:
                 whole += [_Rule("translate", (c, k), (k,), 1.0) for k in ready if not self.zero(k)]
             case3 += [_Rule("case3", (c, a, b), (a, b), 1.0) for a, b in combinations(ready, 2)
@@ -387,6 +395,12 @@ class _Components(Walk):
                       said=phrase("components.pgram_second", a=nx_name, b=vx, line=ab_name))
         return self.act(f"{t}tip", "intersect_lines", l1, l2,
                         said=phrase("components.pgram_meet", point=X, a=vx, b=nx_name))
+
+    def draw_rest(self, x: Node, c: int, k: Node) -> Ref:
+        """A point of a rolling wheel standing, at the instant, on its contact point is that
+        point: at rest."""
+        return self.act(f"cm:{x.tag}:tip", "mark", self.at(x),
+                        said=phrase("components.on_contact", point=x.name, rest=k.name, link=c))
 
     def draw_translate(self, x: Node, c: int, k: Node) -> Ref:
         """Hinkle Fig. 5.9: a block on a frame guide translates, so V_x = V_k."""

@@ -79,18 +79,16 @@ def draw_input_velocity(asm: Assembly, scale: float) -> tuple[str, Ref]:
     """
     m = asm.mechanism
     d = m.drive
-    k = m.link(d.link)
-    pivot, point = k.names[0], k.names[1]
+    pivot, _, point, arm = asm.input_arm()
     ref = f"V:{point}"
     c = asm
     if ref in c:
         return point, ref
-    r = k.span(pivot, point)
+    r = m.input_radius
     speed = m.input_speed
     units = m.units
     sense = "ccw" if d.omega > 0 else "cw"
-    perp = c.draw(f"v:perp:{point}", "perpendicular_through", asm.points[point],
-                  asm.axes[d.link],
+    perp = c.draw(f"v:perp:{point}", "perpendicular_through", asm.points[point], arm,
                   phrase=phrase("velocity.input_perpendicular", point=point, pivot=pivot))
     tip = c.draw(f"v:tip:{point}", "lay_off", asm.points[point], perp,
                  length=d.omega * r * scale,

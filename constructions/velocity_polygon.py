@@ -115,12 +115,10 @@ class _Polygon(PolygonWalk):
 
     def draw_input(self) -> None:
         d = self.m.drive
-        k = self.m.link(d.link)
-        pivot, point = k.names[0], k.names[1]
-        x = Node(point)
-        r = k.span(pivot, point)
+        o, x, r = self.input_arm()
+        pivot, point = self.name(o), x.point
         X = self.name(x)
-        perp = self.act(f"vp:{X}:perp", "perpendicular_through", "vp:o_v", self.asm.axes[d.link],
+        perp = self.act(f"vp:{X}:perp", "perpendicular_through", "vp:o_v", self.input_line(),
                         said=phrase("vpolygon.input_direction", pivot=pivot, p=point, point=X))
         sense = "ccw" if d.omega > 0 else "cw"
         self.known[x] = self.act(

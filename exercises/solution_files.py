@@ -22,7 +22,7 @@ from ..constructions.asks import (Distance, Equivalent, MechanicalAdvantage, Rat
                                   TransmissionAngle, parse_ask, symbol)
 from ..constructions.checks import FigureSpec, Quantity
 from ..constructions.limit_positions import drawn_limits
-from ..constructions.narration import narrate
+from ..constructions.narration import narrate, significant
 from ..constructions.record import Kind, Panel, Slice, slice
 from ..constructions.scales import nice
 from ..constructions.velocity_drawing import method_words
@@ -455,15 +455,15 @@ def _steps_markdown(sol: Solution, figures: list[SolutionFigure], *, heading: bo
     """One position's part of steps.md: its figures' numbered steps, then its results.
 
     ``heading`` puts the position's own heading first (several positions)."""
-    ex = sol.exercise
-    m = ex.mechanism
+    m = sol.assembly.mechanism           # with the input's rates as drawn (converted, if given)
     d = m.drive
     angle = m.units.angle_brief(d.angle)
     sense = "ccw" if d.omega > 0 else "cw"
     lines = [f"# At {sol.position.label}", ""] if heading else []
-    alpha = f", α{d.link} = {d.alpha:.6g} rad/s²" + ("" if d.alpha_given else " (not given: 0)")
-    lines += [f"Position: θ{d.link} = {angle}, ω{d.link} = {abs(d.omega):.6g} rad/s {sense}"
-              f"{alpha}.", ""]
+    alpha = f", α{d.link} = {significant(d.alpha)} rad/s²" + (
+        "" if d.alpha_given else " (not given: 0)")
+    omega = significant(abs(d.omega))
+    lines += [f"Position: θ{d.link} = {angle}, ω{d.link} = {omega} rad/s {sense}{alpha}.", ""]
     for f in figures:
         parts = [(f.heading, Panel.SPACE, f.shown)] if f.shown else []
         parts += list(f.panels)

@@ -520,6 +520,11 @@ class _Diagram:
             dx, dy = self.downs.get(pivots[0], (0.0, 1.0))
             self.placer.place("1", self.paper[pivots[0]], prefer=math.atan2(-dy, dx),
                               spread=math.pi / 2, gap=7.5, size=3.4, italic=False)
+        elif self.m.frame.names:
+            # No fixed pivot (a wheel rolling on the ground drives): under the ground's
+            # hatching at the frame's first point.
+            self.placer.place("1", self.paper[self.m.frame.names[0]], prefer=-math.pi / 2,
+                              spread=math.pi / 2, gap=7.5, size=3.4, italic=False)
 
     def label_points(self) -> None:
         centre = _centroid(list(self.paper.values()))

@@ -9,9 +9,11 @@ from __future__ import annotations
 
 import math
 import pathlib
+from collections.abc import Callable
 from dataclasses import dataclass, field
 
 __all__ = ["Style", "STYLES", "View", "Path", "Circle", "Text", "Figure", "FONT", "text_width",
+           "wrap_text",
            "SUB_SIZE", "SUB_DROP", "arc_points", "clip_line", "ray_to_edge", "span_line",
            "stack_pages"]
 
@@ -186,6 +188,23 @@ def text_width(text: str, size: float) -> float:
     11.2
     """
     return sum(_ADVANCE.get(ch, 0.62) for ch in text) * size
+
+
+def wrap_text(text: str, size: float, width: float, *, indent: str = "",
+              measure: Callable[[str, float], float] = text_width) -> list[str]:
+    """Break ``text`` between words into lines no wider than ``width`` mm at ``size`` (a word
+    wider than that stands alone); lines after the first open with ``indent``.
+
+    >>> wrap_text("the slow stroke takes longer", 3.0, 30.0)
+    ['the slow stroke', 'takes longer']
+    """
+    lines: list[str] = []
+    for word in text.split():
+        if lines and measure(f"{lines[-1]} {word}", size) <= width:
+            lines[-1] += f" {word}"
+        else:
+            lines.append((indent if lines else "") + word)
+    return lines or [""]
 
 
 @dataclass

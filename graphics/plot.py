@@ -21,7 +21,7 @@ from dataclasses import dataclass
 
 from ..constructions.scales import nice
 
-from .figure import Circle, Figure, Path, Text, text_width
+from .figure import Circle, Figure, Path, Text, text_width, wrap_text
 
 __all__ = ["Series", "PlotMark", "nice_ticks", "tick_text", "rich_text", "draw_line_plot",
            "CURVE_STYLES"]
@@ -288,23 +288,13 @@ def draw_line_plot(title: str, x_label: str, y_label: str, series: Sequence[Seri
             _add_text(fig, (x + 12.0, y), label, _NOTE)
         x += w
     for note in notes:
-        for line in _wrap(note, _NOTE, _WIDTH - 2 * _MARGIN):
+        for line in wrap_text(note, _NOTE, _WIDTH - 2 * _MARGIN, indent="  ",
+                              measure=_rich_width):
             y += 5.0
             _add_text(fig, (_MARGIN, y), line, _NOTE)
     fig.height = round(y + _MARGIN, 1)
     fig.title = title.replace("_", "")
     return fig
-
-
-def _wrap(text: str, size: float, width: float) -> list[str]:
-    """Break ``text`` at spaces into lines no wider than ``width`` (a word stays whole)."""
-    lines: list[str] = []
-    for word in text.split(" "):
-        if lines and _rich_width(f"{lines[-1]} {word}", size) <= width:
-            lines[-1] += f" {word}"
-        else:
-            lines.append(("  " if lines else "") + word)
-    return lines
 
 
 def _clip_runs(points: Sequence[Point | None], x0: float, x1: float) -> list[list[Point]]:

@@ -56,6 +56,8 @@ _ROOM = 16.0        # labels stay within this much of the polygon, mm
 _SAME = 1e-9        # relative slack for "lies on" and "coincides"
 _ZERO = 0.05        # a vector shorter than this on paper (mm) is drawn as "= 0"
 _HERE = 1e-6        # paper points closer than this (mm) are one
+_DOT = 1.0          # a vector shorter than this (mm) is named as the point it nearly is:
+                    # beside so short a shaft a name is as near every arrow from its pole
 _NEAR = (1.0, 1.6, 2.4, 3.4, 4.6)   # a vector's label stays this many gaps from its shaft
 _FARTHER = (6.0, 8.0, 11.0, 15.0)   # ...unless every spot there covers another label
 _CROSSABLE = 0.02   # what covering a thin working line costs a label, against 1 for ink
@@ -398,7 +400,9 @@ class _PolygonPanel:
         """
         drawn = self.vectors()
         self.placer.name_vectors((a, b) for s, a, b in drawn
-                                 if s.label and math.dist(a, b) >= _ZERO)
+                                 if s.label and math.dist(a, b) >= _DOT)
+        self.placer.name_points(_middle(a, b) for s, a, b in drawn
+                                if s.label and _ZERO <= math.dist(a, b) < _DOT)
         twins: list[list[tuple[Step, tuple[float, float], tuple[float, float]]]] = []
         for v in drawn:
             same = next((t for t in twins if math.dist(t[0][1], v[1]) < _ZERO
@@ -433,10 +437,14 @@ class _PolygonPanel:
                        for t in _own_stretch(a, b, others)]
             # A short arrow has little shaft to stand beside: its name may go round its ends.
             spread = math.pi / 3
+            # So short an arrow is found by its name only beside it: no farther rings.
+            dot = math.dist(a, b) < _DOT
             self.placer.place_numbered(text, anchors, numbers, sub=sub, also=tuple(names[1:]),
                                        prefer=(normal, normal + math.pi), spread=spread,
-                                       gap=1.0, size=3.4, rings=_NEAR, farther=_FARTHER,
-                                       own=(a, b) if text else None)
+                                       gap=1.0, size=3.4, rings=_NEAR,
+                                       farther=() if dot else _FARTHER,
+                                       own=None if not text else _middle(a, b) if dot
+                                       else (a, b))
 
     def number_lines(self) -> None:
         """Each line's numbers beside its middle, or the middle of the stretch no arrow covers.
@@ -525,3 +533,7 @@ def _own_stretch(a: tuple[float, float], b: tuple[float, float],
         lo, hi = 0.0, 1.0
     mid = (lo + hi) / 2
     return [mid + k * (hi - lo) for k in (0.0, -0.15, 0.15, -0.3, 0.3, -0.4, 0.4)]
+
+
+def _middle(a: tuple[float, float], b: tuple[float, float]) -> tuple[float, float]:
+    return (a[0] + b[0]) / 2, (a[1] + b[1]) / 2

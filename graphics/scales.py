@@ -12,10 +12,13 @@ from collections.abc import Sequence
 from ..constructions.narration import significant
 from ..constructions.scales import Stated, nice
 
-from .figure import Figure, Path, Text, text_width
+from .figure import Figure, Path, Text, text_width, wrap_text
 
 __all__ = ["nice_per_cm", "scale_text", "paper_ratio", "bar_room", "draw_scale_bar", "number_text",
            "draw_caption"]
+
+_NOTE_COLUMN = 150.0
+"""The narrowest a caption's notes are set to (mm): a measure that still reads as prose."""
 
 
 def nice_per_cm(extent: float, room_mm: float) -> float:
@@ -146,8 +149,12 @@ def draw_caption(fig: Figure, heading: str, lines: Sequence[str], *, per_cm: flo
     right = max([text_width(t, 3.2) for t in texts]
                 + [bar_room(per, u) for _, per, u in scales])
     legend_w = sum(18.0 + text_width(name, 2.8) for _, name in legend)
-    notes_w = max([text_width(n, 3.0) for n in notes], default=0.0)
-    width = max(x1 - x0, left + right + 8.0, legend_w, notes_w) + 2 * margin
+    # Notes wrap to the width the rest needs (a long note must not widen the page and so
+    # shrink the drawing), but never narrower than a column that reads well.
+    width = max(x1 - x0, left + right + 8.0, legend_w) + 2 * margin
+    notes = [line for note in notes
+             for line in wrap_text(note, 3.0, max(width - 2 * margin, _NOTE_COLUMN))]
+    width = max(width, max([text_width(n, 3.0) for n in notes], default=0.0) + 2 * margin)
     fig.shift((width - (x1 - x0) - 2 * margin) / 2, 0.0)
     top = y1 - y0 + 2 * margin
     y = top + 3.0

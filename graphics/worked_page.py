@@ -19,7 +19,7 @@ from itertools import product
 
 from ..constructions.errors import TarsimError
 
-from .figure import Figure, Path, Text, text_width
+from .figure import Figure, Path, Text, text_width, wrap_text
 from .labels import typeset
 
 __all__ = ["compose_worked_page", "compose_worked_sheets", "holds_panel", "A3"]
@@ -288,7 +288,7 @@ def _draw_results(table: Sequence[Sequence[str]], notes: Sequence[str]) -> Figur
     """Draw the results table and the notes under it as a figure of their own (origin top-left)."""
     fig = Figure(0.0, 0.0)
     y = _draw_table(fig, table, (0.0, 0.5 * _ROW)) + (2.0 if notes else 0.0) if table else 0.0
-    lines = [line for note in notes for line in _wrapped(note, _NOTE_WIDTH)]
+    lines = [line for note in notes for line in wrap_text(note, _NOTE, _NOTE_WIDTH)]
     for line in lines:
         fig.add(Text((0.0, y + 0.7 * _NOTE), line, _NOTE, "start", italic=False))
         y += 1.4 * _NOTE
@@ -297,18 +297,6 @@ def _draw_results(table: Sequence[Sequence[str]], notes: Sequence[str]) -> Figur
                     + [text_width(n, _NOTE) for n in lines])
     fig.height = y
     return fig
-
-
-def _wrapped(text: str, width: float) -> list[str]:
-    """``text`` broken between words into lines no wider than ``width`` mm at the notes'
-    size (a word wider than that stands alone)."""
-    lines: list[str] = []
-    for word in text.split():
-        if lines and text_width(f"{lines[-1]} {word}", _NOTE) <= width:
-            lines[-1] += f" {word}"
-        else:
-            lines.append(word)
-    return lines or [""]
 
 
 def _draw_table(page: Figure, table: Sequence[Sequence[str]], at: tuple[float, float]) -> float:

@@ -123,8 +123,11 @@ def test_everything_drawn_lies_on_the_page(drawn):
 # ----- symbols ------------------------------------------------------------------------------
 def test_the_textbook_symbols_are_drawn(drawn):
     m = drawn.mech
-    want = {"ground", "hatch", "pin", "link", "text", "scale", "scale_fill"}
+    want = {"hatch", "pin", "link", "text", "scale", "scale_fill"}
     assert want <= drawn.classes
+    # a ground symbol stands under each fixed pivot; a wheel rolling on the ground as the
+    # input needs none
+    assert ("ground" in drawn.classes) == any(len(m.links_at(n)) > 1 for n in m.frame.names)
     has_block = any(s.kind == "block" for s in m.slides)
     assert ("block" in drawn.classes) == has_block
     # a block's frame guide, or the ground a wheel rolls on, is drawn hatched
@@ -147,8 +150,11 @@ def test_one_ground_symbol_per_fixed_pivot(drawn):
 
 def test_a_pin_at_every_joint(drawn):
     m = drawn.mech
+    # A contact stands for two profiles touching, not a pin: a wheel's centre on no other
+    # link is drawn as its centre's dot.
     joints = [n for n in m.point_names
-              if len(m.links_at(n)) >= 2 or any(s.point == n for s in m.slides)]
+              if len(m.links_at(n)) >= 2 or any(s.point == n and s.contact is None
+                                                for s in m.slides)]
     circles = [c for g in drawn.groups("pin") for c in g.iter(SVG + "circle")]
     assert len(circles) == len(joints)
 
@@ -281,6 +287,13 @@ def _crank(fig, angle=None):
 def test_stated_scale_is_the_drawn_crank_over_its_true_length(drawn):
     m = drawn.mech
     n, unit = drawn.stated_scale()
+    if m.rolling_input is not None:       # no crank: the wheel's circle about its centre
+        (ref,) = [it for it in drawn.fig.items if isinstance(it, Path) and it.style == "reference"]
+        (wheel,) = [it for it in drawn.fig.items if isinstance(it, Circle) and it.style == "link"
+                    and math.dist(it.centre, ref.points[0]) < 1e-9]
+        true = m.rolling_input.contact.circle.radius / m.units.metres
+        assert wheel.radius * n / 10.0 == pytest.approx(true, rel=1e-9)
+        return
     k = m.link(m.drive.link)
     true = k.span(k.names[0], k.names[1]) / m.units.metres  # in the file's unit
     pivot, tip = _crank(drawn.fig, m.drive.angle)

@@ -90,7 +90,12 @@ def check(asm, point, *, link=None, scale=2.0, cond_floor=0.0):
 
 
 def input_refs(mech):
-    """The input vector's steps (draw_input_velocity): at the drive link's second point."""
+    """The input vector's steps (draw_input_velocity): at the drive link's second point, or
+    at a rolling wheel's centre after the line from its contact point."""
+    s = mech.rolling_input
+    if s is not None:
+        return [f"arm:{mech.drive.link}", f"v:perp:{s.point}", f"v:tip:{s.point}",
+                f"V:{s.point}"]
     p = mech.link(mech.drive.link).names[1]
     return [f"v:perp:{p}", f"v:tip:{p}", f"V:{p}"]
 
@@ -103,9 +108,10 @@ def check_record(asm, r):
     assert step.verb == "join" and step.role is Role.RESULT
     assert step.label == f"V_{r.point}" + ("" if r.point in asm.mechanism.link(r.link).names
                                           or r.link == 1 else str(r.link))
-    assert r.steps[:3] == inputs and r.steps[-1] == r.vector
+    n = len(inputs)
+    assert r.steps[:n] == inputs and r.steps[-1] == r.vector
     assert len(set(r.steps)) == len(r.steps)
-    assert all(s.startswith("cm:") for s in r.steps[3:])
+    assert all(s.startswith("cm:") for s in r.steps[n:])
     order = list(c.steps)
     assert [order.index(s) for s in r.steps] == sorted(order.index(s) for s in r.steps)
     on = set(backward_slice(c, [r.vector]).refs)

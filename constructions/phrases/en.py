@@ -54,6 +54,14 @@ PHRASES: dict[str, str] = {
     "position.wheel_rolls": "Link {link}{name} rolls without slip: its centre {point} stands "
                             "{rolled} from where it started, so it has turned {turn} {sense} "
                             "({rolled} ÷ r = {radius}); draw its axis through {point}.",
+    "position.wheel_input": "Link {link}{name}, the input, rolls without slip along the face "
+                            "through {face}: at θ{link} = {turn} {sense} from where its centre "
+                            "stood square over {face}, it has rolled r·θ{link} = {rolled} "
+                            "(r = {radius}). Lay off {rolled} {way} along the path of its centre "
+                            "from there to mark {point}.",
+    "position.wheel_axis": "Through {point} draw the axis of link {link} at θ{link} = {angle}.",
+    "position.wheel_arm": "Join {contact}{point}: wheel {link} turns, at the instant, about "
+                          "{contact}, its point on the face, which is at rest.",
     "link_name": " ({name})",
     "position.slot_square_to_guide": "Through {point} draw the perpendicular to the guide of "
                                      "{block}: the slot of link {link}.",
@@ -151,6 +159,8 @@ PHRASES: dict[str, str] = {
                           "to {point}–{centre}.",
     "velocity.result": "V_{point} = {speed}.",
     # ----- velocities by components (constructions.velocity_by_components) -----------------
+    "components.on_contact": "{point} of wheel {link} stands, at this instant, on {rest}, the "
+                             "wheel's point on the face, which is at rest: V_{point} = 0.",
     "components.arrow": "Join {point} to the tip: V_{point} = {speed}.",
     "components.project_along": "Project the tip of V_{point} onto {line}: {component} is the "
                                 "component of V_{point} along {line}.",
@@ -241,6 +251,9 @@ PHRASES: dict[str, str] = {
     "polygon.image_lay_off": "{why}: lay off {ta} {tip} = {ratio} × {ta} {tb} along {ta} {tb}.",
     "polygon.translate": "Link {link} slides on a frame guide without turning, so {symbol}_{point} "
                          "= {symbol}_{known}: {tip} is at {known_tip}.",
+    "polygon.coincide": "{point} of link {link} stands, at this instant, on {known}: they are "
+                        "one point of the link, so {symbol}_{point} = {symbol}_{known} and "
+                        "{tip} is at {known_tip}.",
     "polygon.say_perpendicular": "the line ⟂ {line} through {tip}",
     "polygon.say_guide": "the parallel to the guide through {pole}",
     "polygon.say_slot": "the parallel to the slot through {tip}",
@@ -268,6 +281,16 @@ PHRASES: dict[str, str] = {
     "apolygon.input_normal": "From o_a lay off Aⁿ_{point} = ω{link}²·{pivot}{p} = ({omega} "
                              "rad/s)² × {radius} = {accel} parallel to {p}{pivot}, pointing from "
                              "{p} toward {pivot} (the normal component).",
+    "apolygon.wheel_centre_path": "The centre {point} of wheel {link} runs along a straight "
+                                  "path, parallel to the face: through o_a draw a line ⟂ "
+                                  "{contact}{point} (the direction of A_{point}).",
+    "apolygon.wheel_centre": "Along it lay off A_{point} = α{link}·r = {alpha} rad/s² × {radius} "
+                             "= {accel}, in the sense of α{link} ({sense}): the centre of a "
+                             "wheel rolling on a straight face has no acceleration across it. "
+                             "Its end is {tip}.",
+    "apolygon.wheel_centre_still": "α{link} = 0 ({given}), and the centre {point} of wheel "
+                                   "{link} runs along a straight path, so A_{point} = "
+                                   "α{link}·r = 0: {tip} is at o_a.",
     "apolygon.given": "given",
     "apolygon.not_given": "not given, so taken as 0",
     "apolygon.input_no_tangential": "α{link} = 0 ({given}), so Aᵗ_{point} = α{link}·{pivot}{p} = "

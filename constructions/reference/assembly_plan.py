@@ -68,6 +68,13 @@ class Rolled:
 
 
 @dataclass(frozen=True, slots=True)
+class RolledOn:
+    """A wheel's centre from its angle: the distance rolled along its face (``slide``)."""
+
+    slide: Slide
+
+
+@dataclass(frozen=True, slots=True)
 class Placed:
     """Link ``link`` posed at its located point ``at``, its angle known or from ``pair``."""
 
@@ -138,6 +145,9 @@ class _Recorder(_Assembly):
 
     def _rolled(self, s):
         self.acts.append(Rolled(s))
+
+    def _rolled_on(self, s):
+        self.acts.append(RolledOn(s))
 
     def _placed(self, k, known):
         pair = None
@@ -312,6 +322,14 @@ class _Replay:
         px, py = self.at[s.point]
         along = dx * (px - ox - tx) + dy * (py - oy - ty)
         self.phi[s.link] = phi - along / (s.contact.roll_sign * s.contact.circle.radius)
+
+    def _rolledon(self, act: RolledOn) -> None:
+        s = act.slide
+        ox, oy, phi = self.pose[s.guide_link]
+        along = -s.contact.roll_sign * s.contact.circle.radius * (self.phi[s.link] - phi)
+        dx, dy = self._turn(phi, _unit(s.direction))
+        tx, ty = self._turn(phi, np.asarray(s.through, dtype=float))
+        self.at[s.point] = (ox + tx + along * dx, oy + ty + along * dy)
 
     def _placed(self, act: Placed) -> None:
         k = act.link

@@ -247,6 +247,16 @@ class _Assembly:
                     self._turned(s.guide_link, s.link, -off)
                     changed = True
             for s in self.m.slides:
+                if s.rolling and s.link in self.phi and s.guide_link in self.pose \
+                        and s.point not in self.at:
+                    # The wheel's angle (the input) says how far its centre has rolled.
+                    origin, phi = self.pose[s.guide_link]
+                    along = -s.contact.roll_sign * s.contact.circle.radius * (
+                        self.phi[s.link] - phi)
+                    self.at[s.point] = origin + _rot(phi) @ (
+                        np.asarray(s.through, dtype=float) + along * _unit(s.direction))
+                    self._rolled_on(s)
+                    changed = True
                 if s.rolling and s.link not in self.phi and s.guide_link in self.pose \
                         and s.point in self.at:
                     origin, phi = self.pose[s.guide_link]
@@ -280,6 +290,9 @@ class _Assembly:
 
     def _rolled(self, s: Slide) -> None:
         """The rolling contact ``s`` set its wheel's angle."""
+
+    def _rolled_on(self, s: Slide) -> None:
+        """The rolling contact ``s`` set its wheel's centre from the wheel's angle."""
 
     def _placed(self, k: int, known: list[str]) -> None:
         """Link ``k`` is about to be posed at ``known[0]`` (its angle known, or from ``known``)."""
