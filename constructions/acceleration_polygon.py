@@ -31,6 +31,7 @@ from .assembly import Assembly
 from .checks import Answer, vector_value
 from .coincident import Node
 from .errors import TarsimError
+from .model import Arc
 from .narration import Number, Phrase, Quantity, Word, phrase
 from .polygon_walk import ACCELERATION, NOISE, Polygon, PolygonWalk, sense_of
 from .record import Panel, Ref, Role
@@ -200,11 +201,22 @@ class _Polygon(PolygonWalk):
         w, centre = self.omegas[s.link], Node(s.point)
         P, r = self.name(n), math.dist(self.xy(n), self.xy(centre))
         line = self.space_line(n, centre, s.link)
+        if isinstance(s, Arc):
+            # Round a circle of radius R the centre's own path curves: ω²·r·R/(R ± r).
+            big = s.contact.face.radius
+            accel = w * w * r * big / abs(s.roll_gain)
+            said = phrase("apolygon.rolling_round", point=P, link=s.link, centre=s.point,
+                          omega=Number(abs(w)), radius=self.m.units.length_said(r),
+                          big=self.m.units.length_said(big),
+                          op=Word("+" if s.contact.side == "outside" else "−"),
+                          accel=self.say(accel), tip=self.tip_name(P))
+        else:
+            accel = w * w * r
+            said = phrase("apolygon.rolling", point=P, link=s.link, centre=s.point,
+                          omega=Number(abs(w)), radius=self.m.units.length_said(r),
+                          accel=self.say(accel), tip=self.tip_name(P))
         return self.act(f"ap:tip:{P}", "lay_off", self.pole_ref, line,
-                        length=w * w * r * self.scale, label=self.tip_name(P),
-                        said=phrase("apolygon.rolling", point=P, link=s.link, centre=s.point,
-                                    omega=Number(abs(w)), radius=self.m.units.length_said(r),
-                                    accel=self.say(w * w * r), tip=self.tip_name(P)))
+                        length=accel * self.scale, label=self.tip_name(P), said=said)
 
     # ----- the lines that carry a tip ---------------------------------------------
     def draw_locus(self, x: Node, locus: tuple) -> tuple[Ref, Phrase]:

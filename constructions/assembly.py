@@ -596,6 +596,41 @@ class _Assembler:
             return True
         return False
 
+    @dyad_rule("a wheel rolling round a circle without slip", 1)
+    def roll_round(self) -> bool:
+        """Turn a wheel that rolls round a circle through the arc rolled over its radius.
+
+        Once the wheel's centre C is drawn, the angle β it has gone round the circle's
+        centre K from the start (on K's +x) is measured with the protractor; the arc
+        rolled, R·β, turns the wheel through R·β/r relative to the line KC, so through
+        β·(R ± r)/r in all (+ outside the circle, − inside).
+        """
+        for a in self.m.rolling_arcs:
+            if a.point not in self.known or a.centre not in self.known or a.link in self.axes:
+                continue
+            pose = self.pose_of(a.guide_link)
+            if pose is None:
+                continue
+            phi, _ = pose
+            (px, py), (kx, ky) = (self.c.output(self.known[n]).xy for n in (a.point, a.centre))
+            beta = (math.atan2(py - ky, px - kx) - phi + math.pi) % math.tau - math.pi
+            r = a.contact.circle.radius
+            turn = a.roll_gain * beta / r
+            wheel = phi + turn
+            k = self.m.link(a.link)
+            self.axes[a.link] = self.c.give(
+                f"axis:{a.link}", g.Line(-math.sin(wheel), math.cos(wheel),
+                                         math.sin(wheel) * px - math.cos(wheel) * py),
+                label=f"link {a.link}", kind=Kind.GUIDE,
+                phrase=phrase("position.wheel_rolls_round", link=a.link,
+                              name=phrase("link_name", name=k.name) if k.name else None,
+                              point=a.point, centre=a.centre, beta=self.angle(beta),
+                              turn=self.angle(turn), ratio=Word(
+                                  "(R + r)/r" if a.contact.side == "outside" else "(r − R)/r"),
+                              big=self.length(a.contact.face.radius), radius=self.length(r)))
+            return True
+        return False
+
     def pose_of(self, number: int) -> tuple[float, tuple[float, float]] | None:
         """(angle, origin) of a drawn link, or None if it is not drawn yet."""
         if number == 1:

@@ -220,6 +220,18 @@ class _Kennedy:
                                                 point=s.point, what=Word(what),
                                                 link=s.guide_link))
                 self.out.loci.setdefault((i, j), []).append(ref)
+        for a in self.m.rolling_arcs:
+            # A wheel rolling round a circle without slip: the contact point, R from the
+            # circle's centre along the line of centres, is the centre.
+            i, j = sorted((a.link, a.guide_link))
+            if (i, j) not in self.out.found:
+                self.record(Centre((i, j), centre_ref(i, j), "rolling"), "lay_off",
+                            self.asm.points[a.centre], self.asm.points[a.point],
+                            length=a.contact.face.radius,
+                            said=phrase("centres.rolling_round", link=a.link, on=a.guide_link,
+                                        point=a.point, circle=a.centre,
+                                        radius=self.m.units.length_said(a.contact.face.radius),
+                                        centre=pair_label(i, j)))
         for k, a in enumerate(self.m.pin_arcs):
             i, j = sorted((a.link, a.guide_link))
             if (i, j) in self.out.found:

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from .model import Mechanism, Slide, SlideKind
+from .model import Arc, Mechanism, Slide, SlideKind
 
 __all__ = ["Node", "Walk", "taken", "rolling_contacts"]
 
@@ -86,10 +86,11 @@ def taken(m: Mechanism, name: str) -> tuple[int, str]:
     return int(name[i:]), name[:i]
 
 
-def rolling_contacts(m: Mechanism) -> dict[str, Slide]:
-    """Each wheel rolling on the ground, by the name its contact point goes by: P, or P4
-    (the wheel's link) where the mechanism has a P of its own or more than one wheel. At the
-    instant it is the wheel's point at rest, the centre the wheel turns about."""
-    wheels = [s for s in m.slides if s.rolling and s.guide_link == 1]
+def rolling_contacts(m: Mechanism) -> dict[str, Slide | Arc]:
+    """Each wheel rolling on the ground or on a fixed circle, by the name its contact point
+    goes by: P, or P4 (the wheel's link) where the mechanism has a P of its own or more than
+    one wheel. At the instant it is the wheel's point at rest, the centre the wheel turns
+    about."""
+    wheels = [s for s in (*m.slides, *m.rolling_arcs) if s.rolling and s.guide_link == 1]
     plain = len(wheels) == 1 and "P" not in m.point_names
     return {("P" if plain else f"P{s.link}"): s for s in wheels}

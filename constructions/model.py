@@ -195,13 +195,14 @@ class Contact:
     direction on which the circle lies, so that the equivalent slot is offset to
     that side. For two circles it is ``"outside"`` (they touch externally: a roller
     on a cam) or ``"inside"`` (the first circle runs inside the second).
-    ``rolling`` says the circle rolls on a face without slip, which makes the
-    contact point the two links' instant centre.
+    ``rolling`` says the circle rolls on the face or circle without slip, which makes
+    the contact point the two links' instant centre.
 
     The convention that fixes a rolling wheel's angle: the wheel's points are given
-    as they are when its centre stands square over the face's ``through`` point with
-    its local axis along the x axis of the face's link (the frame's +x). The wheel
-    turns by the distance rolled over its radius from there.
+    as they are when its centre stands square over the face's ``through`` point (on a
+    circle: on the +x axis of the circle's link from its centre) with its local axis
+    along the x axis of the face's link (the frame's +x). The wheel turns by the
+    distance rolled over its radius from there.
     """
 
     circle: Profile
@@ -250,6 +251,19 @@ class Arc:
     def label(self) -> str:
         """How messages name the joint."""
         return _joint_label(self, f"the curved guide of link {self.guide_link}")
+
+    @property
+    def rolling(self) -> bool:
+        """True for a wheel rolling without slip on a circle (see :class:`Contact`)."""
+        return self.contact is not None and self.contact.rolling
+
+    @property
+    def roll_gain(self) -> float:
+        """The gain k in the no-slip condition r·(φ_wheel − φ_guide) = k·β, β the angle
+        the wheel's centre has gone round the circle's from the guide's +x: r + R rolling
+        outside the circle, r − R inside it (a coin rolled round an equal coin turns twice)."""
+        r, big = self.contact.circle.radius, self.contact.face.radius
+        return r + big if self.contact.side == "outside" else r - big
 
 
 @dataclass(frozen=True, slots=True)
@@ -402,6 +416,16 @@ class Mechanism:
             raise InputError("the mechanism has no frame (link 1)", file=self.source or None)
         if len(set(numbers)) != len(numbers):
             raise InputError("a link number is used twice", file=self.source or None)
+        for a in self.rolling_arcs:
+            arm = next((k for k in self.links if k.number not in (a.link, a.guide_link)
+                        and a.point in k.names and a.centre in k.names), None)
+            if arm is not None and not math.isclose(arm.span(a.point, a.centre), a.radius,
+                                                    rel_tol=1e-9):
+                raise InputError(f"link {arm.number} holds {a.point} and {a.centre} "
+                                 f"{self.units.length_brief(arm.span(a.point, a.centre))} apart, "
+                                 f"but the circles of the {a.contact.label} touch at "
+                                 f"{self.units.length_brief(a.radius)}",
+                                 file=self.source or None)
 
     def link(self, number: int) -> Link:
         """Return link ``number``."""
@@ -449,21 +473,37 @@ class Mechanism:
         """Grübler's count: ``(dof, n, F1, F2)`` with DOF = 3(n − 1) − 2·F1 − F2.
 
         A pin on K links is K − 1 joints; a block and a rolling contact are one F1
-        joint each; a pin in a straight or curved slot, and a sliding-rolling
-        contact, one F2 joint. A block on a curved guide is counted by its pin.
+        joint each; a pin in a straight or curved slot, a sliding-rolling contact,
+        and a rolling contact of circles whose centres an arm holds (a gear pair), one
+        F2 joint. A block on a curved guide is counted by its pin.
         """
         n = len(self.links)
         pins = sum(max(0, len(self.links_at(p)) - 1) for p in self.point_names)
         blocks = sum(1 for s in self.slides if s.kind is SlideKind.BLOCK or s.rolling)
+        blocks += sum(1 for a in self.pin_arcs if a.rolling)
         f2 = sum(1 for s in self.slides if s.kind is SlideKind.PIN and not s.rolling)
-        f2 += len(self.pin_arcs)
+        f2 += sum(1 for a in self.pin_arcs if not a.rolling)
+        f2 += sum(1 for a in self.rolling_arcs if self.held(a))
         f1 = pins + blocks
         return 3 * (n - 1) - 2 * f1 - f2, n, f1, f2
 
     @property
     def pin_arcs(self) -> tuple[Arc, ...]:
-        """The arcs that constrain: a curved block is already its pin at the centre."""
-        return tuple(a for a in self.arcs if a.kind is SlideKind.PIN)
+        """The arcs that constrain a distance: a curved block is already its pin at the
+        centre, and a wheel rolling on a circle whose centre an arm already holds at the
+        distance the circles touch at adds only its no-slip (:meth:`held`)."""
+        return tuple(a for a in self.arcs if a.kind is SlideKind.PIN and not self.held(a))
+
+    @property
+    def rolling_arcs(self) -> tuple[Arc, ...]:
+        """Every wheel rolling on a circle, held by an arm or not."""
+        return tuple(a for a in self.arcs if a.rolling)
+
+    def held(self, a: Arc) -> bool:
+        """True for a rolling contact of circles whose centres a third link (an arm, a
+        planet carrier) carries both of: only its no-slip constrains, a higher pair."""
+        return a.rolling and any(k.number not in (a.link, a.guide_link) and a.point in k.names
+                                 and a.centre in k.names for k in self.links)
 
     @property
     def slotted(self) -> tuple[Slide | Arc, ...]:

@@ -232,7 +232,7 @@ class PolygonWalk(Walk):
     def __init__(self, asm: Assembly, scale: float, pole: tuple[float, float]):
         self.asm, self.m, self.c, self.scale = asm, asm.mechanism, asm, scale
         m = self.m
-        moving = [s for s in m.slides if s.rolling and s.guide_link != 1]
+        moving = [s for s in (*m.slides, *m.rolling_arcs) if s.guide_link != 1 and s.rolling]
         if moving:
             raise TarsimError(f"the {self.kind.noun} polygon does not yet handle the "
                               f"{moving[0].label}, on a moving face; use radius-rotation or "

@@ -241,8 +241,10 @@ def solve(source, out_dir, angle, pdf, paper):
                 click.echo(answer_line(name, qq, ex.mechanism.units))
         for note in sol.notes:
             click.echo(f"note: {note}")
+    at = ("at the exercise's scale" if ex.mechanism.scale
+          else "even at the coarsest scale it is drawn at")
     for stem, (w, h) in worked.oversize().items():
-        click.echo(f"note: {stem} at the exercise's scale is {w:.0f} × {h:.0f} mm, more than "
+        click.echo(f"note: {stem} {at} is {w:.0f} × {h:.0f} mm, more than "
                    f"{paper} holds; its page is that size (--paper A3 may hold it)")
     click.echo(f"wrote {len(written)} files to {out}/")
     if reason:
@@ -310,6 +312,15 @@ def sweep(source, out_dir, of, steps, pdf):
     click.echo(f"wrote {len(written)} files to {out}/")
     if reason:
         click.echo(f"PDF skipped: {reason}", err=True)
+    apart = [f"{c.key} at {c.position}" for c in result.checks if not c.rel_error <= SWEEP_AGREE]
+    if apart:
+        raise CheckMismatch(list(dict.fromkeys(apart)))
+
+
+SWEEP_AGREE = 1e-9
+"""The relative distance from its curve within which a constructed value agrees: the
+construction and the curve's solver round alike at every position the bundled exercises
+sweep (1e-16 to 1e-14), so anything near this is a wrong number, not rounding."""
 
 
 @cli.command()

@@ -567,12 +567,12 @@ class _Reader:
                             **where)
         side = t.get("side")
         if face.is_circle:
-            if rolling:
-                raise self.fail("rolling is supported for a circle on a flat face; give a "
-                                "circle on a circle as a sliding-rolling contact (rolling = "
-                                "false)", key="rolling", **where)
             sides = ("outside", "inside")
             side = "outside" if side is None else side
+            if rolling and side == "inside" and not circle.radius < face.radius:
+                raise self.fail(f"a wheel rolls inside a circle only if it is the smaller: "
+                                f"the circle of link {circle.link} is not smaller than that of "
+                                f"link {face.link}", key="side", **where)
         else:
             sides = ("left", "right")
             if side is None:

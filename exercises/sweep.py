@@ -34,6 +34,7 @@ from ..constructions.limit_positions import stroke_point
 from ..constructions.model import Drive, Mechanism, Slide
 
 from .exercise_file import Exercise
+from .given_rate import convert
 from .solution import solve_positions
 
 __all__ = ["Output", "Sample", "Event", "Check", "Sweep", "output_names", "pick_output",
@@ -246,6 +247,10 @@ def sweep_exercise(ex: Exercise, steps: int = 360, *, of: str | None = None,
     """
     if steps < 4:
         raise InputError(f"a sweep needs at least 4 steps, got {steps}")
+    if ex.mechanism.given is not None:
+        # An input given by another member: its rates at the stated position, as the
+        # solver converts them, held through the turn (the crank at constant ω and α).
+        ex = replace(ex, mechanism=convert(ex.mechanism)[1])
     mech = ex.mechanism
     out = pick_output(ex, of)
     d = mech.drive

@@ -212,6 +212,7 @@ def test_the_dyad_rules_are_tried_in_their_registered_order():
     from tarsim.constructions.assembly import DYAD_RULES
     names = [r.name for r in sorted(DYAD_RULES.values(), key=lambda r: r.order)]
     assert names == ["a point of a drawn link", "a wheel rolling without slip",
+                     "a wheel rolling round a circle without slip",
                      "a slot swung through its block (RPR)", "the slot of a translating block",
                      "two guides (RPP)", "an arc and a guide (RRP)", "two arcs (RRR)"]
 

@@ -225,7 +225,9 @@ def _edit(name: str, old: str, new: str) -> str:
     ("curved-slot", "radius = 110", "radius = -110", ["must be a positive length"]),
     ("rolling-wheel", "rolling = true", 'rolling = "yes"', ["rolling must be true or false"]),
     ("roller-cam", 'side = "outside"', 'side = "outside"\nrolling = true',
-     ["rolling is supported for a circle on a flat face"]),
+     ["0 degrees of freedom", "cannot move"]),       # a roller that may not slip locks its cam
+    ("roller-cam", 'radius = 50 }\nside = "outside"', 'radius = 10 }\nside = "inside"\n'
+     'rolling = true', ["rolls inside a circle only if it is the smaller"]),
     ("roller-cam", 'side = "outside"', 'side = "left"', ["unknown side 'left'", "outside"]),
 ])
 def test_bad_curved_or_rolling_joints_get_one_line_naming_the_joint(name, old, new, words):

@@ -82,9 +82,13 @@ def test_ink_far_off_the_page_does_not_grow_the_raster_past_its_most():
     assert near == 4.0 and far == 0.0                       # the far one is not kept
 
 
+micron = st.integers(-60_000, 60_000).map(lambda i: i / 1000.0)   # paper mm, to a micron
+
+
 @settings(max_examples=200, deadline=None)
-@given(cx=coord, cy=coord, hw=st.floats(0.5, 8.0), hh=st.floats(0.5, 8.0),
-       ax=coord, ay=coord, bx=coord, by=coord, kind=st.sampled_from("point level plumb any"))
+@given(cx=micron, cy=micron, hw=st.floats(0.5, 8.0), hh=st.floats(0.5, 8.0),
+       ax=micron, ay=micron, bx=micron, by=micron,
+       kind=st.sampled_from(("point", "level", "plumb", "any")))
 def test_a_box_is_as_far_from_a_named_thing_as_shapely_measures(cx, cy, hw, hh, ax, ay, bx,
                                                                  by, kind):
     from tarsim.graphics.labels import _box_distance

@@ -307,3 +307,32 @@ def test_list_says_what_each_example_asks():
                                "crank-shaper, §2")
     asks = next(line for line in block if line.startswith("asks: "))
     assert "ω4, α4, V_B, A_B, Aᶜ_A, Aᶜ_B at θ2 = 90°, t = 2.34 s" in asks
+
+
+def test_an_input_given_by_another_member_is_swept_at_its_converted_rates():
+    """The piston's 300 mm/s at θ2 = 60° is ω2 = −7.376 rad/s: the curves turn the crank at
+    that, so the constructed V_B and A_B sit on them."""
+    sw = sweep_exercise(load_exercise(resolve("piston-driven-slider-crank")), 72)
+    w = sw.exercise.mechanism.drive.omega
+    assert w == pytest.approx(-7.37622, rel=1e-5)
+    v = next(c for c in sw.checks if c.method == "velocity polygon")
+    assert abs(v.graphical) == pytest.approx(0.295049, rel=1e-5)      # 295.049 mm/s
+    assert all(c.rel_error <= 1e-12 for c in sw.checks), sw.checks
+
+
+def test_a_sweep_whose_construction_leaves_its_curve_exits_3(monkeypatch, tmp_path):
+    from dataclasses import replace
+
+    from tarsim.exercises import sweep as sweep_module
+
+    real = sweep_module.sweep_exercise
+
+    def off(*args, **kw):
+        sw = real(*args, **kw)
+        return replace(sw, checks=tuple(replace(c, rel_error=0.5) for c in sw.checks))
+    monkeypatch.setattr(sweep_module, "sweep_exercise", off)
+    result = CliRunner().invoke(cli, ["sweep", "four-bar", "-o", str(tmp_path / "out"),
+                                      "--no-pdf", "--steps", "24"])
+    assert result.exit_code == 3
+    assert result.output.splitlines()[-1].endswith("disagree with the analytic solution beyond "
+                                                   "tolerance")

@@ -62,6 +62,11 @@ PHRASES: dict[str, str] = {
     "position.wheel_axis": "Through {point} draw the axis of link {link} at θ{link} = {angle}.",
     "position.wheel_arm": "Join {contact}{point}: wheel {link} turns, at the instant, about "
                           "{contact}, its point on the face, which is at rest.",
+    "position.wheel_rolls_round": "Link {link}{name} rolls round the circle about {centre} "
+                                 "without slip: its centre {point} has gone {beta} round "
+                                 "{centre} from the start, so it has turned {beta} × {ratio} "
+                                 "= {turn} (R = {big}, r = {radius}); draw its axis through "
+                                 "{point}.",
     "link_name": " ({name})",
     "position.slot_square_to_guide": "Through {point} draw the perpendicular to the guide of "
                                      "{block}: the slot of link {link}.",
@@ -96,6 +101,9 @@ PHRASES: dict[str, str] = {
                     "{path_of}.",
     "centres.rolling": "Link {link} rolls on link {on} without slip, so the contact point, the "
                        "foot of {point} on the face, is {centre}.",
+    "centres.rolling_round": "Link {link} rolls round the circle of link {on} without slip, so "
+                             "the contact point, {radius} from {circle} along {circle}{point}, "
+                             "is {centre}.",
     "centres.kennedy_line": "Triangle {triangle}: by Kennedy, {centre} lies on the line through "
                             "{a} and {b}.",
     "centres.lines_meet": "{centre} is where the two lines meet.",
@@ -227,6 +235,11 @@ PHRASES: dict[str, str] = {
                         "accelerates toward the centre {centre}: from o_a lay off a_{point} = "
                         "ω{link}²·r = ({omega} rad/s)² × {radius} = {accel} parallel to "
                         "{point}{centre}, toward {centre}; its end is {tip}.",
+    "apolygon.rolling_round": "{point}, the point of wheel {link} on the circle, is at rest but "
+                              "accelerates toward the centre {centre}: from o_a lay off "
+                              "a_{point} = ω{link}²·r·R/(R {op} r) = ({omega} rad/s)² × "
+                              "{radius} × {big}/({big} {op} {radius}) = {accel} parallel to "
+                              "{point}{centre}, toward {centre}; its end is {tip}.",
     "klein.square": "Through {o} draw the line square to the line of stroke.",
     "klein.produce": "Produce the rod {p}{c}.",
     "klein.m": "It meets the line through {o} at M.",

@@ -24,7 +24,7 @@ import numpy as np
 
 from .solver import SINGULAR_RCOND, _SLACK, _Assembly, _System, _unit
 from ..errors import AssemblyError
-from ..model import Mechanism, Slide
+from ..model import Arc, Mechanism, Slide
 
 __all__ = ["AssemblyPlan", "Placement", "record_plan", "WELL"]
 
@@ -65,6 +65,13 @@ class Rolled:
     """A wheel's angle from the distance rolled along its face (``slide`` is the contact)."""
 
     slide: Slide
+
+
+@dataclass(frozen=True, slots=True)
+class RolledRound:
+    """A wheel's angle from how far its centre has gone round the circle it rolls on."""
+
+    arc: Arc
 
 
 @dataclass(frozen=True, slots=True)
@@ -148,6 +155,9 @@ class _Recorder(_Assembly):
 
     def _rolled_on(self, s):
         self.acts.append(RolledOn(s))
+
+    def _rolled_round(self, a):
+        self.acts.append(RolledRound(a))
 
     def _placed(self, k, known):
         pair = None
@@ -322,6 +332,13 @@ class _Replay:
         px, py = self.at[s.point]
         along = dx * (px - ox - tx) + dy * (py - oy - ty)
         self.phi[s.link] = phi - along / (s.contact.roll_sign * s.contact.circle.radius)
+
+    def _rolledround(self, act: RolledRound) -> None:
+        a = act.arc
+        (px, py), (cx, cy) = self.at[a.point], self.at[a.centre]
+        phi = self.pose[a.guide_link][2]
+        beta = np.remainder(np.arctan2(py - cy, px - cx) - phi + np.pi, 2 * np.pi) - np.pi
+        self.phi[a.link] = phi + a.roll_gain * beta / a.contact.circle.radius
 
     def _rolledon(self, act: RolledOn) -> None:
         s = act.slide

@@ -144,6 +144,12 @@ def _wrap(angle: float) -> float:
     return math.remainder(angle, math.tau)
 
 
+def _round_angle(angle: float) -> float:
+    """The angle a wheel's centre has gone round its circle, in [−π, π): one half-open
+    wrap, the same as the sweeps' vectorised one, so both turn the wheel alike at ±π."""
+    return (angle + math.pi) % math.tau - math.pi
+
+
 def _locals(mech: Mechanism) -> dict[tuple[int, str], np.ndarray]:
     return {(k.number, n): np.array(xy, dtype=float) for k in mech.links for n, xy in k.points}
 
@@ -257,6 +263,17 @@ class _Assembly:
                         np.asarray(s.through, dtype=float) + along * _unit(s.direction))
                     self._rolled_on(s)
                     changed = True
+            for a in self.m.rolling_arcs:
+                if a.rolling and a.link not in self.phi and a.guide_link in self.pose \
+                        and a.point in self.at and a.centre in self.at:
+                    # The angle the centre has gone round says how far the wheel has turned.
+                    e = self.at[a.point] - self.at[a.centre]
+                    phi = self.pose[a.guide_link][1]
+                    beta = _round_angle(math.atan2(e[1], e[0]) - phi)
+                    self.phi[a.link] = phi + a.roll_gain * beta / a.contact.circle.radius
+                    self._rolled_round(a)
+                    changed = True
+            for s in self.m.slides:
                 if s.rolling and s.link not in self.phi and s.guide_link in self.pose \
                         and s.point in self.at:
                     origin, phi = self.pose[s.guide_link]
@@ -290,6 +307,9 @@ class _Assembly:
 
     def _rolled(self, s: Slide) -> None:
         """The rolling contact ``s`` set its wheel's angle."""
+
+    def _rolled_round(self, a: Arc) -> None:
+        """The rolling contact ``a`` on a circle set its wheel's angle."""
 
     def _rolled_on(self, s: Slide) -> None:
         """The rolling contact ``s`` set its wheel's centre from the wheel's angle."""
@@ -497,10 +517,13 @@ class _System:
                        s.contact.roll_sign * s.contact.circle.radius)
                       for s, through, d, _ in self.slides if s.rolling]
         self.arcs = mech.pin_arcs
+        # A wheel rolling on a circle adds r·(φ_wheel − φ_guide) − k·β = 0, β the angle its
+        # centre has gone round the circle's from the guide's +x (see Arc.roll_gain).
+        self.rounds = list(mech.rolling_arcs)
         is_len = [True] * (2 * len(self.pins))
         for s, *_ in self.slides:
             is_len += [True, False] if s.kind is SlideKind.BLOCK else [True]
-        is_len += [True] * (len(self.rolls) + len(self.arcs))
+        is_len += [True] * (len(self.rolls) + len(self.arcs) + len(self.rounds))
         self.is_len = np.array(is_len + [False])
         sizes = [abs(c) for v in self.loc.values() for c in v]
         sizes += [abs(c) for s in mech.slides for c in s.through]
@@ -535,6 +558,11 @@ class _System:
         for a in self.arcs:
             e = self._arc_terms(q, a)[0]
             out.append((float(e @ e) - a.radius ** 2) / (2.0 * a.radius))
+        for a in self.rounds:
+            e = self._arc_terms(q, a)[0]
+            fw, fg = self.state(q, a.link)[1], self.state(q, a.guide_link)[1]
+            out.append(a.contact.circle.radius * (fw - fg)
+                       - a.roll_gain * _round_angle(math.atan2(e[1], e[0]) - fg))
         out.append(_wrap(self.state(q, self.m.drive.link)[1] - self.m.drive.angle))
         return np.array(out)
 
@@ -584,6 +612,13 @@ class _System:
             put(row, a.link, e / a.radius, float(e @ (_S @ arm_l)) / a.radius)
             put(row, a.guide_link, -e / a.radius, -float(e @ (_S @ arm_g)) / a.radius)
             row += 1
+        for a in self.rounds:
+            e, arm_l, arm_g = self._arc_terms(q, a)
+            k, r = a.roll_gain, a.contact.circle.radius
+            m = (_S @ e) / float(e @ e)                # ∂β/∂e
+            put(row, a.link, -k * m, r - k * float(m @ (_S @ arm_l)))
+            put(row, a.guide_link, k * m, k - r + k * float(m @ (_S @ arm_g)))
+            row += 1
         put(row, self.m.drive.link, (0.0, 0.0), 1.0)
         return jac
 
@@ -613,6 +648,14 @@ class _System:
             e_dot = vl + wl * (_S @ arm_l) - vg - wg * (_S @ arm_g)
             out.append((float(e @ (wl ** 2 * arm_l - wg ** 2 * arm_g)) - float(e_dot @ e_dot))
                        / a.radius)
+        for a in self.rounds:
+            e, arm_l, arm_g = self._arc_terms(q, a)
+            (vl, wl), (vg, wg) = self.state(qd, a.link), self.state(qd, a.guide_link)
+            e_dot = vl + wl * (_S @ arm_l) - vg - wg * (_S @ arm_g)
+            ee = float(e @ e)
+            m = (_S @ e) / ee
+            out.append(a.roll_gain * (float(m @ (wg ** 2 * arm_g - wl ** 2 * arm_l))
+                                      - 2.0 * float(e @ e_dot) * _cross(e, e_dot) / ee ** 2))
         out.append(self.m.drive.alpha)
         return np.array(out)
 
