@@ -214,6 +214,18 @@ class _Scene(_Diagram):
                 pts = [p for j, p in self.points if j == i]
                 b = [min([b[0]] + [p[0] for p in pts]), min([b[1]] + [p[1] for p in pts]),
                      max([b[2]] + [p[0] for p in pts]), max([b[3]] + [p[1] for p in pts])]
+        # A circle's arc is drawn whole where the frame can grow to take it in (the circle
+        # on a diameter, in Klein's construction); one about a far centre is cut at the edge.
+        for step in self.steps:
+            if isinstance(step.output, g.Circle):
+                start, sweep, _ = self.arc_of(step)
+                (cx, cy), r = step.output.centre.xy, step.output.radius
+                pts = [(cx + r * math.cos(start + sweep * t / 32),
+                        cy + r * math.sin(start + sweep * t / 32)) for t in range(33)]
+                grown = [min([b[0]] + [p[0] for p in pts]), min([b[1]] + [p[1] for p in pts]),
+                         max([b[2]] + [p[0] for p in pts]), max([b[3]] + [p[1] for p in pts])]
+                if max(grown[2] - grown[0], grown[3] - grown[1]) <= cap * (1 + 1e-12):
+                    b = grown
         # A flat mechanism (all its pins in a line) still gets room for its labels.
         least = 0.4 * extent
         for lo, hi in ((0, 2), (1, 3)):
@@ -265,26 +277,32 @@ class _Scene(_Diagram):
         lo, hi = span_line(base, d, stops, _LONE)
         self.lines.append(([step], clip_line(base, d, lo, hi, self.clip)))
 
-    def plan_circle(self, step: Step) -> None:
-        """An arc through the points on the circle; a swing ends in an arrow at its new place."""
+    def arc_of(self, step: Step) -> tuple[float, float, list[tuple[int, tuple]]]:
+        """The arc a circle is drawn as, (start, sweep) in world angles, and the points it
+        runs through: the whole circle through none, a compass trace through one (neither
+        names its points), else the arc through them all that leaves out the widest gap."""
         circle: g.Circle = step.output
         cw = circle.centre.xy
         tol = _SAME * max(self.size, circle.radius, math.hypot(*cw))
         on = [(i, p) for i, p in self.points if abs(math.dist(p, cw) - circle.radius) <= tol]
-        c, r = self.view(cw), circle.radius * self.view.scale
         angles = sorted({round(math.atan2(p[1] - cw[1], p[0] - cw[0]), 12) for _, p in on})
         if not angles:
-            self.arcs.append((step, arc_points(c, r, 0.0, 2 * math.pi), False))
-            return
+            return 0.0, 2 * math.pi, []
         if len(angles) == 1:       # a compass trace through the one point
-            half = min(_TRACE / r, math.radians(20))
-            self.arcs.append((step, arc_points(c, r, angles[0] - half, 2 * half), False))
-            return
+            half = min(_TRACE / (circle.radius * self.view.scale), math.radians(20))
+            return angles[0] - half, 2 * half, []
         gaps = [(angles[(k + 1) % len(angles)] - angles[k]) % (2 * math.pi)
                 for k in range(len(angles))]
         k = max(range(len(gaps)), key=gaps.__getitem__)
-        start, sweep = angles[(k + 1) % len(angles)], 2 * math.pi - gaps[k]
-        swung = step.kind is Kind.SWING
+        return angles[(k + 1) % len(angles)], 2 * math.pi - gaps[k], on
+
+    def plan_circle(self, step: Step) -> None:
+        """An arc through the points on the circle; a swing ends in an arrow at its new place."""
+        circle: g.Circle = step.output
+        cw = circle.centre.xy
+        c, r = self.view(cw), circle.radius * self.view.scale
+        start, sweep, on = self.arc_of(step)
+        swung = step.kind is Kind.SWING and bool(on)
         if swung:
             # The swung-to end is the point located last that is neither a pin nor a
             # vector's end; the arc runs to it.
