@@ -64,7 +64,20 @@ def _mechanism(source: str, angle: float | None) -> Mechanism:
     from .catalog import resolve
     from .mechanism_file import load_mechanism
 
+    _not_a_train(source)
     return _at_angle(load_mechanism(resolve(source)), angle)
+
+
+def _not_a_train(source: str) -> None:
+    """Refuse a gear train where a command draws or solves linkages, in one line."""
+    from .catalog import resolve
+    from .mechanism_file import read_source, read_toml
+    from .train_file import is_train
+
+    path = resolve(source)
+    if is_train(read_toml(read_source(path), str(path))):
+        raise InputError(f"{source} is a gear train: `tarsim solve {source}` solves it; this "
+                         "command is for linkages")
 
 
 def _at_angle(mech: Mechanism, angle: float | None) -> Mechanism:
@@ -81,6 +94,7 @@ def _at_angle(mech: Mechanism, angle: float | None) -> Mechanism:
 def _exercise(source: str, angle: float | None):
     from .catalog import load
 
+    _not_a_train(source)
     ex = load(source)
     if angle is None:
         return ex
@@ -221,9 +235,16 @@ def solve(source, out_dir, angle, pdf, paper):
     one beyond the tolerance its conditioning allows (the files are written all
     the same, so the disagreement can be seen); 1 for bad input.
     """
+    from .catalog import load
     from .solution_files import answer_line, solve_worked
+    from .train_file import TrainExercise
     from ..graphics.export import cairo_missing, output_folder
 
+    loaded = load(source)
+    if isinstance(loaded, TrainExercise):
+        if angle is not None:
+            raise InputError("a gear train has no input angle: leave out --angle")
+        return _solve_train(loaded, out_dir, pdf)
     ex = replace(_exercise(source, angle), paper=paper)
     out = Path(out_dir or f"{ex.id}-solution")
     with output_folder(out):      # a folder that cannot be written fails before the solve
@@ -323,6 +344,25 @@ construction and the curve's solver round alike at every position the bundled ex
 sweep (1e-16 to 1e-14), so anything near this is a wrong number, not rounding."""
 
 
+def _solve_train(ex, out_dir: str | None, pdf: bool) -> None:
+    """Solve a gear train, print its speeds and ratios, and write its files."""
+    from .train_solution import solve_train
+    from ..graphics.export import cairo_missing, output_folder
+
+    out = Path(out_dir or f"{ex.id}-solution")
+    with output_folder(out):
+        solved = solve_train(ex)
+        reason = cairo_missing() if pdf else None
+        written = solved.write(out, pdf=pdf and reason is None)
+    for line in solved.lines():
+        click.echo(line)
+    click.echo(f"wrote {len(written)} files to {out}/")
+    if reason:
+        click.echo(f"PDF skipped: {reason}", err=True)
+    if solved.failures:
+        raise CheckMismatch([q.name for q in solved.failures])
+
+
 @cli.command()
 @click.option("--quick", is_flag=True,
               help="Stated positions only, the ends of each stiff sweep, fewer plot points: "
@@ -388,28 +428,32 @@ def bench(quick, out_dir):
 def list_():
     """List the bundled examples: their ids, where they come from, what they ask.
 
+    The linkages first, then the gear trains.
+
     \b
     Example:
       tarsim list
     """
     import tomllib
 
-    from .catalog import bundled
-    from .exercise_file import load_exercise
+    from .catalog import bundled, bundled_trains, load
+    from .train_file import TrainExercise, ask_symbol
 
-    found = bundled()
+    found = {**bundled(), **bundled_trains()}
     pad = max(map(len, found), default=0) + 2
     for name, path in found.items():
         try:
-            ex = load_exercise(path, name)
+            ex = load(str(path))
             source = tomllib.loads(Path(path).read_text(encoding="utf-8")).get("source")
         except (TarsimError, tomllib.TOMLDecodeError, OSError) as e:
             click.echo(f"{name:<{pad}}(cannot be read: {e})")
             continue
-        click.echo(f"{name:<{pad}}{ex.mechanism.name}")
+        train = isinstance(ex, TrainExercise)
+        click.echo(f"{name:<{pad}}{ex.name if train else ex.mechanism.name}")
         if source:
             click.echo(f"{'':<{pad}}from {source}")
-        click.echo(f"{'':<{pad}}asks: {_asks(ex)}")
+        asks = ", ".join(ask_symbol(q) for q in ex.asks) if train else _asks(ex)
+        click.echo(f"{'':<{pad}}asks: {asks}")
 
 
 def _asks(ex) -> str:

@@ -67,6 +67,25 @@ PHRASES: dict[str, str] = {
                                  "{centre} from the start, so it has turned {beta} × {ratio} "
                                  "= {turn} (R = {big}, r = {radius}); draw its axis through "
                                  "{point}.",
+    "gears.ordinary_start": "{member}, the input, turns {speed}. Carry one turn of it through "
+                            "the meshes:",
+    "gears.mesh_carries": "{driven} meshes {kind}ly with {driver}, so it turns {way}, "
+                          "N{a}/N{b} = {na}/{nb} as fast: {turns} → {result}.",
+    "gears.shaft_carries": "{member} is on one shaft with {other}: it turns alike, {turns}.",
+    "gears.train_value": "The train value e = ω{last}/ω{first} = ({drivers})/({driven}) = "
+                         "{teeth} = {value}: driver teeth over driven teeth, {externals} "
+                         "external meshes making it {sign}{idlers}.",
+    "gears.locked": "Row 1: lock the whole train, {arm} with it, and turn it +1 "
+                    "(counter-clockwise): every member turns +1.",
+    "gears.held": "Row 2: hold {arm} and turn {fixed}, the fixed member, −1 turn:",
+    "gears.added": "Row 3: add the rows. {fixed} turns +1 − 1 = 0, as it must; each total is "
+                   "its member's turns for one turn of the arm.",
+    "gears.scaled": "{member}, the input, turns {total} in the total row and {speed} in fact: "
+                    "multiply the row by {scale} {unit}.",
+    "gears.xy_rows": "The same by x and y: the arm {arm} turns y and member {fixed} turns x "
+                     "relative to it, so {rows}.",
+    "gears.xy_solved": "Member {fixed} is fixed, so y + x = 0, and member {member} turns "
+                       "{speed}: y = {y} {unit}, x = {x} {unit}.",
     "link_name": " ({name})",
     "position.slot_square_to_guide": "Through {point} draw the perpendicular to the guide of "
                                      "{block}: the slot of link {link}.",

@@ -7,12 +7,20 @@ from pathlib import Path
 
 from ...constructions.errors import InputError
 
-__all__ = ["bundled", "resolve", "load"]
+__all__ = ["bundled", "bundled_trains", "resolve", "load"]
 
 
 def bundled() -> dict[str, Path]:
-    """Map each bundled id (the file name without ``.toml``) to its path."""
-    root = resources.files(__name__)
+    """Map each bundled linkage's id (the file name without ``.toml``) to its path."""
+    return _tomls(resources.files(__name__))
+
+
+def bundled_trains() -> dict[str, Path]:
+    """Map each bundled gear train's id to its path (the catalog's gears/ folder)."""
+    return _tomls(resources.files(__name__) / "gears")
+
+
+def _tomls(root) -> dict[str, Path]:
     return {p.name[:-5]: Path(str(p)) for p in sorted(root.iterdir(), key=lambda p: p.name)
             if p.name.endswith(".toml")}
 
@@ -28,7 +36,7 @@ def resolve(name: str) -> Path:
     path = Path(name)
     if path.is_file():
         return path
-    ids = bundled()
+    ids = {**bundled(), **bundled_trains()}
     if name in ids:
         return ids[name]
     if path.is_dir():
@@ -49,8 +57,9 @@ def load(source: str | Path):
     """Read the exercise ``source`` names: a TOML file's path, or a bundled id.
 
     An exercise file is a mechanism file with an ``[ask]`` table (see the
-    README); without one it asks for every centre and each link's ω. Its id is
-    the file's stem, or the bundled id.
+    README); without one it asks for every centre and each link's ω. A file that
+    lists ``[[gear]]`` tables is a gear train (a :class:`~..train_file.TrainExercise`).
+    Its id is the file's stem, or the bundled id.
 
     Raises
     ------
@@ -59,6 +68,13 @@ def load(source: str | Path):
         exercise (the message names file:line).
     """
     from ..exercise_file import load_exercise
+    from ..mechanism_file import read_source, read_toml
+    from ..train_file import is_train, parse_train
 
     source = str(source)
-    return load_exercise(resolve(source), Path(source).stem if Path(source).suffix else source)
+    path = resolve(source)
+    exercise_id = Path(source).stem if Path(source).suffix else source
+    text = read_source(path)
+    if is_train(read_toml(text, str(path))):
+        return parse_train(text, str(path), exercise_id)
+    return load_exercise(path, exercise_id)

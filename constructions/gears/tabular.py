@@ -1,0 +1,219 @@
+"""Speeds of a gear train as the notes find them (000-part2 §2.14–2.15), exactly.
+
+An **ordinary train** (every axis fixed) carries the input's speed from gear to gear: a
+mesh turns the driven gear N_driver/N_driven as fast, the other way round if the mesh is
+external and the same way if internal; gears on one shaft turn alike. The train value is
+the product of driver teeth over driven teeth with the sign of the external meshes, and
+an idler cancels from it.
+
+A **planetary train** by the tabular (superposition) method:
+
+1. the whole train, locked, with the arm, turned +1 (counter-clockwise);
+2. the arm held and the fixed member turned −1, carried to every gear by the tooth ratios
+   as in an ordinary train (the arm is held, so its axes are fixed);
+3. the two rows added: the fixed member stands still, and each member's total is its turns
+   for one turn of the arm. The input's real speed over its total scales the row.
+
+The other common form writes the arm's speed y and the fixed member's, relative to the
+arm, x: each member turns y + k·x, its k from the second row; the fixed member's 0 and
+the input's speed give x and y.
+
+Every number is a :class:`~fractions.Fraction`; each step is a :class:`Phrase`.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from fractions import Fraction
+
+from ..errors import InputError
+from ..narration import Phrase, phrase
+from .train import GearTrain, Mesh
+
+__all__ = ["Table", "TrainSpeeds", "tabulate", "carry", "fraction_text"]
+
+
+@dataclass(frozen=True)
+class Table:
+    """The tabular method's rows, each member's turns: ``locked`` (+1 each), ``held``
+    (the arm held, the fixed member −1), ``total`` (their sum), and the factor ``scale``
+    (the input's real speed over its total) that makes the totals speeds."""
+
+    members: tuple[int, ...]
+    locked: dict[int, Fraction]
+    held: dict[int, Fraction]
+    total: dict[int, Fraction]
+    scale: Fraction
+
+
+@dataclass(frozen=True)
+class TrainSpeeds:
+    """Every member's speed (exact, CCW-positive, in the file's unit), the steps that found
+    them, and the table when the tabular method did."""
+
+    speeds: dict[int, Fraction]
+    steps: tuple[Phrase, ...]
+    table: Table | None = None
+    method: str = "tabular"
+    xy: tuple[Phrase, ...] = field(default=())
+
+
+def fraction_text(x: Fraction, signed: bool = False) -> str:
+    """An exact number as the notes set it: "7/3", "−5/2", "24"; ``signed`` writes "+1"."""
+    sign = "−" if x < 0 else ("+" if signed and x > 0 else "")
+    x = abs(x)
+    return sign + (str(x.numerator) if x.denominator == 1 else f"{x.numerator}/{x.denominator}")
+
+
+def carry(train: GearTrain, start: dict[int, Fraction], held: tuple[int, ...] = (),
+          steps: list[Phrase] | None = None,
+          via: dict[int, tuple[int, Mesh | None]] | None = None) -> dict[int, Fraction]:
+    """Turns of every member, carried from ``start`` (member: turns) through the shafts and
+    meshes with every axis fixed; ``held`` members stand at 0 and carry nothing. ``via``
+    is filled with the member each was reached from, and the mesh (None: a shaft).
+
+    Raises
+    ------
+    InputError
+        If a member is reached by no mesh or shaft (the train does not hang together).
+    """
+    out: dict[int, Fraction] = {}
+    for m, v in start.items():
+        for k in train.body(m):
+            out[k] = v
+    for m in held:
+        for k in train.body(m):
+            out.setdefault(k, Fraction(0))
+    steps = steps if steps is not None else []
+    grew = True
+    while grew:
+        grew = False
+        for mesh in train.meshes:
+            for a, b in ((mesh.a, mesh.b), (mesh.b, mesh.a)):
+                if a in out and b not in out:
+                    ga, gb = train.gear(a), train.gear(b)
+                    ratio = Fraction(ga.teeth, gb.teeth) * (1 if mesh.internal else -1)
+                    out[b] = out[a] * ratio
+                    if via is not None:
+                        via[b] = (a, mesh)
+                    steps.append(phrase(
+                        "gears.mesh_carries", driven=_cap(train.label(b)), driver=train.label(a),
+                        kind=mesh.word, way="the same way" if mesh.internal else "the other way",
+                        a=a, b=b, na=ga.teeth, nb=gb.teeth, turns=fraction_text(out[a]),
+                        result=fraction_text(out[b])))
+                    for k in train.body(b):
+                        if k != b:
+                            out[k] = out[b]
+                            if via is not None:
+                                via[k] = (b, None)
+                            steps.append(phrase("gears.shaft_carries",
+                                                member=_cap(train.label(k)),
+                                                other=train.label(b),
+                                                turns=fraction_text(out[b])))
+                    grew = True
+    lost = [m for m in train.members if m not in out]
+    if lost:
+        raise InputError(f"{train.label(lost[0])} is joined to the rest of the train by no "
+                         "mesh or shaft", file=train.source or None)
+    return out
+
+
+def tabulate(train: GearTrain) -> TrainSpeeds:
+    """Every member's speed: by the tabular method in a planetary train, by carrying the
+    input's speed through the meshes in an ordinary one."""
+    if not train.planetary or train.fixed is None or train.arm in train.body(train.fixed):
+        return _ordinary(train)
+    return _planetary(train)
+
+
+def _ordinary(train: GearTrain) -> TrainSpeeds:
+    first = train.input_member
+    steps = [phrase("gears.ordinary_start", member=_cap(train.label(first)),
+                    speed=_speed(train, train.input_speed))]
+    via: dict[int, tuple[int, Mesh | None]] = {}
+    turns = carry(train, {first: Fraction(1)}, steps=steps, via=via)
+    last = next(reversed(via)) if via else first
+    steps.append(_train_value(train, first, last, via, turns[last]))
+    speeds = {m: turns[m] * train.input_speed for m in train.members}
+    return TrainSpeeds(speeds, tuple(steps), None, "train value")
+
+
+def _planetary(train: GearTrain) -> TrainSpeeds:
+    arm, fixed, first = train.arm, train.fixed, train.input_member
+    members = train.members
+    steps = [phrase("gears.locked", arm=train.label(arm))]
+    locked = {m: Fraction(1) for m in members}
+    steps.append(phrase("gears.held", arm=train.label(arm), fixed=train.label(fixed)))
+    held = carry(train, {fixed: Fraction(-1)}, held=(arm,), steps=steps)
+    total = {m: locked[m] + held[m] for m in members}
+    steps.append(phrase("gears.added", fixed=train.label(fixed)))
+    if total[first] == 0:
+        raise InputError(f"the input, {train.label(first)}, turns 0 in the table: it stands "
+                         "still with the fixed member, so it cannot drive the train",
+                         file=train.source or None)
+    scale = train.input_speed / total[first]
+    steps.append(phrase("gears.scaled", member=_cap(train.label(first)),
+                        total=fraction_text(total[first]),
+                        speed=_speed(train, train.input_speed), scale=fraction_text(scale),
+                        unit=train.units.speed))
+    speeds = {m: total[m] * scale for m in members}
+    xy = _xy(train, held, speeds)
+    return TrainSpeeds(speeds, tuple(steps), Table(members, locked, held, total, scale),
+                       "tabular", xy)
+
+
+def _train_value(train: GearTrain, first: int, last: int,
+                 via: dict[int, tuple[int, Mesh | None]], value: Fraction) -> Phrase:
+    """The notes' train value from ``first`` to ``last``: driver teeth over driven teeth
+    along the meshes between, the sign of the external ones; a gear that is driven and
+    then drives (an idler) cancels."""
+    drivers, driven, external = [], [], 0
+    m = last
+    while m != first:
+        prev, mesh = via[m]
+        if mesh is not None:
+            drivers.insert(0, prev)
+            driven.insert(0, m)
+            external += not mesh.internal
+        m = prev
+    idlers = [g for g in driven if g in drivers]
+    return phrase("gears.train_value", last=last, first=first,
+                  drivers="·".join(f"N{g}" for g in drivers),
+                  driven="·".join(f"N{g}" for g in driven),
+                  teeth=f"({'·'.join(str(train.gear(g).teeth) for g in drivers)})/"
+                        f"({'·'.join(str(train.gear(g).teeth) for g in driven)})",
+                  value=fraction_text(value), externals=external,
+                  sign="negative: opposite senses" if value < 0 else "positive: one sense",
+                  idlers=(f"; the idler{'s' if len(idlers) > 1 else ''} "
+                          f"{', '.join(map(str, idlers))} cancel{'' if len(idlers) > 1 else 's'}"
+                          if idlers else ""))
+
+
+def _xy(train: GearTrain, held: dict[int, Fraction], speeds: dict[int, Fraction]
+        ) -> tuple[Phrase, ...]:
+    """The x/y form of the same table: each member y + k·x, k from the held row over the
+    fixed member's (so the fixed member is y + x and the arm y)."""
+    k = {m: held[m] / held[train.fixed] for m in train.members}
+    y = speeds[train.arm]
+    x = -y
+    def term(m: int) -> str:
+        if not k[m]:
+            return f"ω{m} = y"
+        size = "" if abs(k[m]) == 1 else f"{fraction_text(abs(k[m]))}·"
+        return f"ω{m} = y {'+' if k[m] > 0 else '−'} {size}x"
+    rows = ", ".join(term(m) for m in train.members)
+    return (phrase("gears.xy_rows", rows=rows, arm=train.arm, fixed=train.fixed),
+            phrase("gears.xy_solved", fixed=train.fixed, member=train.input_member,
+                   speed=_speed(train, train.input_speed), x=fraction_text(x),
+                   y=fraction_text(y), unit=train.units.speed))
+
+
+def _cap(text: str) -> str:
+    """A member's name opening a sentence: "Gear 4 (planet)", "The arm 3"."""
+    return text[:1].upper() + text[1:]
+
+
+def _speed(train: GearTrain, v: Fraction) -> str:
+    """A speed as the steps say it: "80 rpm cw"."""
+    sense = "" if v == 0 else (" ccw" if v > 0 else " cw")
+    return f"{fraction_text(abs(v))} {train.units.speed}{sense}"

@@ -1,0 +1,295 @@
+"""The gear-train model: gears, meshes, shafts, the arm, the fixed member and the input.
+
+A **member** is a gear or the arm (the carrier), numbered as the notes number them. Members
+on one shaft turn together: they are one **body**. A gear with a ``carrier`` is a planet:
+its axis is carried round by the arm; every other gear turns about a fixed axis (the main
+axis, in a planetary train). A **mesh** joins two gears, externally (senses opposite) or
+internally (a planet in a ring: senses alike). One member is **fixed**; in an ordinary
+train (no arm) the housing is, and no gear is.
+
+Speeds and tooth ratios are exact :class:`~fractions.Fraction`: a Ferguson paradox or a
+reverted train with 425/426 has ratios that floating point blurs. :meth:`GearTrain.check`
+refuses a train that cannot be built, each failure in one line that names the gears.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from fractions import Fraction
+
+from ..errors import InputError
+from ..model import LENGTH_UNITS
+
+__all__ = ["Gear", "Mesh", "GearTrain", "SpeedUnits"]
+
+
+@dataclass(frozen=True, slots=True)
+class Gear:
+    """Gear ``number`` with ``teeth``; ``module`` (m, exact) if given; ``carrier`` the arm
+    that carries its axis (a planet), else None (a fixed axis)."""
+
+    number: int
+    teeth: int
+    module: Fraction | None = None
+    carrier: int | None = None
+    name: str = ""
+
+    @property
+    def label(self) -> str:
+        """"gear 4 (planet)"."""
+        return f"gear {self.number}" + (f" ({self.name})" if self.name else "")
+
+
+@dataclass(frozen=True, slots=True)
+class Mesh:
+    """Gears ``a`` and ``b`` in mesh; ``internal`` for a gear inside a ring (the ring is
+    the one with more teeth)."""
+
+    a: int
+    b: int
+    internal: bool = False
+
+    @property
+    def word(self) -> str:
+        """"internal" or "external", as a step says the mesh."""
+        return "internal" if self.internal else "external"
+
+
+@dataclass(frozen=True, slots=True)
+class SpeedUnits:
+    """How the file states speeds: ``rpm`` or ``rad/s``; lengths (the module) in ``length``."""
+
+    speed: str = "rpm"
+    length: str = "mm"
+
+    @property
+    def per_rad_s(self) -> float:
+        """One unit of speed in rad/s."""
+        return 2 * math.pi / 60 if self.speed == "rpm" else 1.0
+
+
+@dataclass(frozen=True)
+class GearTrain:
+    """A gear train: its gears, meshes, shafts, arm and fixed member, and the input's speed
+    (``input_speed``, exact, CCW-positive, in ``units.speed``) on member ``input_member``."""
+
+    gears: tuple[Gear, ...]
+    meshes: tuple[Mesh, ...]
+    shafts: tuple[tuple[int, ...], ...] = ()
+    arm: int | None = None
+    arm_name: str = ""
+    fixed: int | None = None
+    input_member: int = 0
+    input_speed: Fraction = Fraction(0)
+    units: SpeedUnits = SpeedUnits()
+    planets: int = 1
+    name: str = ""
+    source: str = ""
+
+    # ----- the members ----------------------------------------------------------------------
+    def gear(self, number: int) -> Gear:
+        """Gear ``number``."""
+        return next(g for g in self.gears if g.number == number)
+
+    @property
+    def members(self) -> tuple[int, ...]:
+        """Every member's number: the gears, then the arm."""
+        return tuple(g.number for g in self.gears) + ((self.arm,) if self.arm else ())
+
+    def label(self, member: int) -> str:
+        """How the steps name a member: "gear 4 (planet)", "the arm 3"."""
+        if member == self.arm:
+            return f"the arm {member}" + (f" ({self.arm_name})" if self.arm_name and
+                                          self.arm_name != "arm" else "")
+        return self.gear(member).label
+
+    def body(self, member: int) -> tuple[int, ...]:
+        """The members that turn with ``member`` (itself and those on its shafts)."""
+        seen, todo = {member}, [member]
+        while todo:
+            m = todo.pop()
+            for shaft in self.shafts:
+                if m in shaft:
+                    for other in shaft:
+                        if other not in seen:
+                            seen.add(other)
+                            todo.append(other)
+        return tuple(sorted(seen))
+
+    @property
+    def bodies(self) -> tuple[tuple[int, ...], ...]:
+        """The bodies, each once, in the order of their first member."""
+        out: list[tuple[int, ...]] = []
+        for m in self.members:
+            b = self.body(m)
+            if b not in out:
+                out.append(b)
+        return tuple(out)
+
+    def carried(self, member: int) -> bool:
+        """True for a member whose axis the arm carries (a planet, or one on its shaft)."""
+        return any(m != self.arm and self.gear(m).carrier is not None for m in self.body(member))
+
+    @property
+    def planetary(self) -> bool:
+        """True if an arm carries any gear."""
+        return self.arm is not None and any(g.carrier is not None for g in self.gears)
+
+    def mobility(self) -> tuple[int, int, int, int]:
+        """Grübler's count ``(dof, n, f1, f2)``: the bodies and the frame (the fixed member
+        is the frame, or the housing when no member is fixed) are the links; each moving
+        body turns on one pin (about the frame, or about the arm for a planet), and each
+        mesh is a higher pair (the notes' Q1: 3(4 − 1) − 2·3 − 2 = 1)."""
+        moving = [b for b in self.bodies if self.fixed is None or self.fixed not in b]
+        n, f1, f2 = len(moving) + 1, len(moving), len(self.meshes)
+        return 3 * (n - 1) - 2 * f1 - f2, n, f1, f2
+
+    # ----- the checks ---------------------------------------------------------------------
+    def check(self) -> None:
+        """Refuse a train that cannot be built, in one line naming the gears.
+
+        Raises
+        ------
+        InputError
+            For a mesh between gears of different module, coaxial members at different
+            centre distances, planets that do not fit round the sun or cannot be spaced
+            equally, a fixed member or input that is not a member, or a Grübler count
+            other than 1.
+        """
+        numbers = [g.number for g in self.gears]
+        for m in (self.fixed, self.input_member):
+            if m is not None and m not in self.members:
+                raise self._fail(f"there is no member {m}; the members are "
+                                 f"{', '.join(map(str, self.members))}")
+        for g in self.gears:
+            if g.carrier is not None and g.carrier != self.arm:
+                raise self._fail(f"{g.label} is carried by member {g.carrier}, which is not "
+                                 "the arm; name the arm in [arm]")
+        for mesh in self.meshes:
+            for k in (mesh.a, mesh.b):
+                if k not in numbers:
+                    raise self._fail(f"a mesh names gear {k}, which is not listed; the gears "
+                                     f"are {', '.join(map(str, numbers))}")
+            a, b = self.gear(mesh.a), self.gear(mesh.b)
+            if a.module is not None and b.module is not None and a.module != b.module:
+                raise self._fail(f"{a.label} (module {self._length(a.module)}) and "
+                                 f"{b.label} (module {self._length(b.module)}) mesh but "
+                                 "their modules differ")
+            if mesh.internal and a.teeth == b.teeth:
+                raise self._fail(f"{a.label} and {b.label} mesh internally but have the same "
+                                 f"{a.teeth} teeth: a ring has more than the gear inside it")
+        if self.fixed is not None and self.input_member in self.body(self.fixed):
+            raise self._fail(f"the input, member {self.input_member}, is the fixed member; "
+                             "drive another")
+        if self.planetary and self.fixed is None:
+            raise self._fail("the arm carries planets but no member is fixed: say which, "
+                             "fixed = <number> (before the first table)")
+        self._check_joined()
+        if self.planetary:
+            self._check_coaxial()
+        dof, n, f1, f2 = self.mobility()
+        if dof != 1:
+            raise self._fail(f"the train has {dof} degrees of freedom by Grübler (3({n} − 1) − "
+                             f"2·{f1} − {f2} = {dof}), not 1: "
+                             + ("a member turns freely: mesh it, put it on a shaft or fix it"
+                                if dof > 1 else "a member is held twice over"))
+
+    def _check_joined(self) -> None:
+        """Every member hangs together with the input through meshes, shafts and the arm's
+        planets."""
+        joined, todo = set(self.body(self.input_member)), list(self.body(self.input_member))
+        while todo:
+            m = todo.pop()
+            near = [b for mesh in self.meshes for a, b in ((mesh.a, mesh.b), (mesh.b, mesh.a))
+                    if a == m]
+            near += [g.number for g in self.gears if g.carrier == m]
+            if m != self.arm and self.gear(m).carrier is not None:
+                near.append(self.gear(m).carrier)
+            for n in near:
+                for k in self.body(n):
+                    if k not in joined:
+                        joined.add(k)
+                        todo.append(k)
+        lost = [m for m in self.members if m not in joined]
+        if lost:
+            raise self._fail(f"{self.label(lost[0])} is joined to the rest of the train by no "
+                             "mesh or shaft")
+
+    def _check_coaxial(self) -> None:
+        """Every planet body stands as far from the main axis by each of its meshes with a
+        gear on that axis (a reverted train: N2 + N3 = N4 + N5); equally spaced planets
+        clear one another and satisfy the assembly condition."""
+        for body in self.bodies:
+            if not self.carried(body[0]):
+                continue
+            radii = []
+            for mesh in self.meshes:
+                for p, c in ((mesh.a, mesh.b), (mesh.b, mesh.a)):
+                    if p in body and not self.carried(c):
+                        radii.append((self._centre_distance(mesh), p, c))
+            for (r0, p0, c0), (r, p, c) in zip(radii, radii[1:]):
+                if r != r0:
+                    both = (self.gear(p0).label if p == p0 else
+                            f"{self.gear(p0).label} and {self.gear(p).label} on one axis")
+                    raise self._fail(
+                        f"the arm cannot carry {both}: meshing with {self.gear(c0).label} puts it "
+                        f"{self._span(r0)} from the main axis, with "
+                        f"{self.gear(c).label} {self._span(r)}")
+            self._check_planets(body, radii)
+
+    def _centre_distance(self, mesh: Mesh) -> Fraction:
+        """Half the sum (external) or difference (internal) of the pitch diameters, m·N; in
+        teeth (a common module of 1) where no module is given."""
+        a, b = self.gear(mesh.a), self.gear(mesh.b)
+        da, db = (g.teeth * self._module(g) for g in (a, b))
+        return Fraction(abs(da - db), 2) if mesh.internal else Fraction(da + db, 2)
+
+    def _check_planets(self, body: tuple[int, ...], radii) -> None:
+        """With k equally spaced planets: each planet's tip circle clears its neighbours',
+        and the sun and ring teeth sum to a multiple of k (the assembly condition)."""
+        k = self.planets
+        if k < 2 or not radii:
+            return
+        arm_r = radii[0][0]
+        for p in body:
+            g = self.gear(p) if p != self.arm else None
+            if g is None:
+                continue
+            tip = (g.teeth + 2) * self._module(g)   # an addendum of one module each side
+            if 2 * arm_r * math.sin(math.pi / k) <= tip:
+                raise self._fail(f"{k} planets {g.label} do not fit round the sun: their tip "
+                                 f"circles ({self._span(tip)} across) overlap on a "
+                                 f"circle of radius {self._span(arm_r)}")
+        suns = [c for _, p, c in radii if not any(m.internal and c in (m.a, m.b) and
+                                                   p in (m.a, m.b) for m in self.meshes)]
+        rings = [c for _, p, c in radii if c not in suns]
+        if len(body) == 1 and suns and rings:
+            total = self.gear(suns[0]).teeth + self.gear(rings[0]).teeth
+            if total % k:
+                raise self._fail(f"{k} planets cannot be spaced equally: the sun's and the "
+                                 f"ring's teeth, {self.gear(suns[0]).teeth} + "
+                                 f"{self.gear(rings[0]).teeth} = {total}, are not a multiple "
+                                 f"of {k}")
+
+    def _module(self, g: Gear) -> Fraction:
+        """The module the sizes are taken at: the gear's, where every gear gives one; else
+        1 for all (the sizes in modules, the teeth alone deciding)."""
+        return g.module if all(h.module is not None for h in self.gears) else Fraction(1)
+
+    def _span(self, value: Fraction) -> str:
+        """A distance the checks found: in the file's length unit, or in modules where a
+        gear gives none (the teeth then set the sizes, one module a tooth)."""
+        if any(g.module is None for g in self.gears):
+            return f"{_text(value)} modules"
+        return self._length(value)
+
+    def _length(self, metres: Fraction) -> str:
+        return f"{float(metres) / LENGTH_UNITS[self.units.length]:g} {self.units.length}"
+
+    def _fail(self, message: str) -> InputError:
+        return InputError(message, file=self.source or None)
+
+
+def _text(x: Fraction) -> str:
+    return str(x.numerator) if x.denominator == 1 else f"{float(x):g}"

@@ -1,0 +1,82 @@
+"""The independent reference for gear trains: the Willis equation of every mesh, solved as
+one exact linear system.
+
+Relative to the arm c that carries a mesh (the frame, speed 0, for a fixed axis) the
+pitch-line speeds of two meshing gears agree: N_a·(ω_a − ω_c) = ∓N_b·(ω_b − ω_c), minus
+for an external mesh, plus for an internal one. Members on one shaft turn alike, the
+fixed member not at all, and the input at its given speed. Gauss–Jordan elimination over
+:class:`~fractions.Fraction` solves the square system exactly; it shares nothing with the
+tabular method but the train itself.
+"""
+
+from __future__ import annotations
+
+from fractions import Fraction
+
+from ..errors import InputError
+from ..gears.train import GearTrain
+
+__all__ = ["willis_speeds"]
+
+
+def willis_speeds(train: GearTrain) -> dict[int, Fraction]:
+    """Every member's speed (exact, CCW-positive, in the train's unit).
+
+    Raises
+    ------
+    InputError
+        If the equations do not fix every speed (the train is not one degree of freedom).
+    """
+    members = list(train.members)
+    col = {m: i for i, m in enumerate(members)}
+    rows: list[list[Fraction]] = []
+
+    def equation(terms: dict[int, Fraction], rhs: Fraction = Fraction(0)) -> None:
+        row = [Fraction(0)] * (len(members) + 1)
+        for m, c in terms.items():
+            row[col[m]] += c
+        row[-1] = rhs
+        rows.append(row)
+
+    for mesh in train.meshes:
+        a, b = train.gear(mesh.a), train.gear(mesh.b)
+        carrier = next((g.carrier for g in (a, b) if g.carrier is not None), None)
+        if carrier is None:
+            carrier = next((train.arm for m in train.body(mesh.a) + train.body(mesh.b)
+                            if m != train.arm and train.gear(m).carrier is not None), None)
+        sign = 1 if mesh.internal else -1
+        terms = {mesh.a: Fraction(a.teeth), mesh.b: Fraction(-sign * b.teeth)}
+        if carrier is not None:
+            terms[carrier] = terms.get(carrier, Fraction(0)) - a.teeth + sign * b.teeth
+        equation(terms)
+    for shaft in train.shafts:
+        for m in shaft[1:]:
+            equation({shaft[0]: Fraction(1), m: Fraction(-1)})
+    if train.fixed is not None:
+        equation({train.fixed: Fraction(1)})
+    equation({train.input_member: Fraction(1)}, train.input_speed)
+    return dict(zip(members, _solve(rows, len(members), train)))
+
+
+def _solve(rows: list[list[Fraction]], n: int, train: GearTrain) -> list[Fraction]:
+    """Gauss–Jordan on the augmented ``rows``; every unknown must have a pivot, and a row
+    left over must read 0 = 0."""
+    rows = [r[:] for r in rows]
+    pivot_row = 0
+    for c in range(n):
+        p = next((r for r in range(pivot_row, len(rows)) if rows[r][c] != 0), None)
+        if p is None:
+            raise InputError("the gear train's speeds are not fixed by its meshes, shafts, "
+                             "fixed member and input", file=train.source or None)
+        rows[pivot_row], rows[p] = rows[p], rows[pivot_row]
+        head = rows[pivot_row][c]
+        rows[pivot_row] = [v / head for v in rows[pivot_row]]
+        for r in range(len(rows)):
+            if r != pivot_row and rows[r][c] != 0:
+                f = rows[r][c]
+                rows[r] = [v - f * w for v, w in zip(rows[r], rows[pivot_row])]
+        pivot_row += 1
+    if any(row[-1] != 0 for row in rows[n:]):
+        raise InputError("the gear train's meshes, shafts, fixed member and input contradict "
+                         "one another: it cannot move", file=train.source or None)
+    return [rows[i][-1] for i in range(n)]

@@ -1,0 +1,248 @@
+"""Read a gear-train exercise (TOML with ``[[gear]]`` tables) into the exact model.
+
+The format is documented in the README ("Gear trains"). Tooth counts are whole numbers and
+speeds and modules are read exactly (a decimal as written, ``0.5`` as 1/2), so the tabular
+method's fractions are the notes' own. Every failure is one line naming file:line.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from fractions import Fraction
+from pathlib import Path
+from typing import Any
+
+from ..constructions.asks import symbol
+from ..constructions.errors import InputError
+from ..constructions.gears.train import Gear, GearTrain, Mesh, SpeedUnits
+from ..constructions.model import LENGTH_UNITS
+from .mechanism_file import SourceMap, read_source, read_toml
+
+__all__ = ["TrainExercise", "is_train", "load_train", "parse_train"]
+
+_TOP = ("name", "source", "description", "fixed", "units", "gear", "arm", "mesh", "shaft",
+        "input", "ask")
+_SPEEDS = ("rpm", "rad/s")
+
+
+@dataclass(frozen=True)
+class TrainExercise:
+    """A gear train and what is asked of it: speeds ``omega<n>``, ratios
+    ``omega<a>/omega<b>``."""
+
+    id: str
+    train: GearTrain
+    asks: tuple[str, ...]
+    description: str = ""
+
+    @property
+    def name(self) -> str:
+        """The train's name, as the file gives it."""
+        return self.train.name
+
+
+def is_train(data: dict[str, Any]) -> bool:
+    """True for a file that lists gears (a gear train), not links."""
+    return "gear" in data
+
+
+def load_train(path: str | Path, exercise_id: str | None = None) -> TrainExercise:
+    """Read a gear-train exercise file.
+
+    Raises
+    ------
+    InputError
+        Naming file:line and the setting.
+    """
+    path = Path(path)
+    return parse_train(read_source(path), str(path), exercise_id or path.stem)
+
+
+def parse_train(text: str, filename: str = "<string>",
+                exercise_id: str = "train") -> TrainExercise:
+    """Parse a gear-train exercise from TOML text (see :func:`load_train`)."""
+    return _Reader(read_toml(text, filename), SourceMap(text), filename, exercise_id).read()
+
+
+class _Reader:
+    def __init__(self, data: dict[str, Any], where: SourceMap, filename: str, eid: str):
+        self.data, self.where, self.filename, self.id = data, where, filename, eid
+
+    def fail(self, message: str, table: str | None = None, key: str | None = None,
+             index: int = 0) -> InputError:
+        line = (self.where.key(key, table or None, index) if key else None) or (
+            self.where.header(table, index) if table else None)
+        return InputError(message, file=self.filename, line=line,
+                          key=f"{table}.{key}" if table and key else table or key)
+
+    def read(self) -> TrainExercise:
+        for k in self.data:
+            if k not in _TOP:
+                raise self.fail(f"unknown table or setting '{k}' in a gear-train file; expected "
+                                f"{', '.join(_TOP)}", key=k)
+        units = self.units()
+        gears = self.gears(units)
+        arm, arm_name, planets = self.arm()
+        meshes = self.meshes()
+        shafts = self.shafts()
+        fixed = self.fixed()
+        member, speed = self.input(units)
+        train = GearTrain(gears, meshes, shafts, arm, arm_name, fixed, member, speed, units,
+                          planets, self.text("name") or self.id, self.filename)
+        train.check()
+        return TrainExercise(self.id, train, self.asks(train), self.text("description"))
+
+    def text(self, key: str) -> str:
+        v = self.data.get(key, "")
+        if not isinstance(v, str):
+            raise self.fail(f"{key} must be text in quotes", key=key)
+        return v
+
+    def units(self) -> SpeedUnits:
+        t = self.data.get("units", {})
+        if not isinstance(t, dict):
+            raise self.fail("[units] must be a table", table="units")
+        speed, length = t.get("speed", "rpm"), t.get("length", "mm")
+        if speed not in _SPEEDS:
+            raise self.fail(f"unknown speed unit '{speed}'; use rpm or rad/s", "units", "speed")
+        if length not in LENGTH_UNITS:
+            raise self.fail(f"unknown length unit '{length}'; use "
+                            f"{', '.join(LENGTH_UNITS)}", "units", "length")
+        return SpeedUnits(speed, length)
+
+    def integer(self, v: Any, what: str, table: str, key: str, index: int = 0) -> int:
+        if isinstance(v, bool) or not isinstance(v, int) or v <= 0 or v > 100_000:
+            raise self.fail(f"{what} must be a whole number from 1 to 100000, got {v!r}",
+                            table, key, index)
+        return v
+
+    def exact(self, v: Any, what: str, table: str, key: str, index: int = 0) -> Fraction:
+        """A number as written: an integer, or a decimal taken at its digits."""
+        if isinstance(v, bool) or not isinstance(v, (int, float)):
+            raise self.fail(f"{what} must be a number, got {v!r}", table, key, index)
+        if isinstance(v, float) and not (abs(v) < 1e30):
+            raise self.fail(f"{what} must be a finite number below 1e30, got {v!r}", table,
+                            key, index)
+        return Fraction(repr(v)) if isinstance(v, float) else Fraction(v)
+
+    def gears(self, units: SpeedUnits) -> tuple[Gear, ...]:
+        raw = self.data.get("gear")
+        if not isinstance(raw, list) or not raw:
+            raise self.fail("list the gears as [[gear]] tables", key="gear")
+        out: list[Gear] = []
+        for i, t in enumerate(raw):
+            if not isinstance(t, dict):
+                raise self.fail("each [[gear]] must be a table", "gear", index=i)
+            for k in t:
+                if k not in ("number", "name", "teeth", "module", "carrier"):
+                    raise self.fail(f"unknown gear setting '{k}'; expected number, name, teeth, "
+                                    "module, carrier", "gear", k, i)
+            for k in ("number", "teeth"):
+                if k not in t:
+                    raise self.fail(f"a gear needs its {k}", "gear", index=i)
+            n = self.integer(t["number"], "a gear's number", "gear", "number", i)
+            if any(g.number == n for g in out):
+                raise self.fail(f"gear {n} is listed twice", "gear", "number", i)
+            module = None
+            if "module" in t:
+                module = self.exact(t["module"], "a module", "gear", "module", i)
+                if module <= 0:
+                    raise self.fail("a module must be positive", "gear", "module", i)
+                module *= Fraction(repr(LENGTH_UNITS[units.length]))
+            carrier = (self.integer(t["carrier"], "a carrier", "gear", "carrier", i)
+                       if "carrier" in t else None)
+            name = t.get("name", "")
+            if not isinstance(name, str):
+                raise self.fail("a gear's name must be text", "gear", "name", i)
+            out.append(Gear(n, self.integer(t["teeth"], "teeth", "gear", "teeth", i), module,
+                            carrier, name))
+        return tuple(out)
+
+    def arm(self) -> tuple[int | None, str, int]:
+        t = self.data.get("arm")
+        if t is None:
+            return None, "", 1
+        if not isinstance(t, dict) or "number" not in t:
+            raise self.fail("[arm] needs its number, e.g. number = 3", "arm")
+        n = self.integer(t["number"], "the arm's number", "arm", "number")
+        planets = self.integer(t.get("planets", 1), "the number of planets", "arm", "planets")
+        gears = self.data.get("gear") or []
+        if any(isinstance(g, dict) and g.get("number") == n for g in gears):
+            raise self.fail(f"member {n} is both a gear and the arm", "arm", "number")
+        return n, str(t.get("name", "")), planets
+
+    def meshes(self) -> tuple[Mesh, ...]:
+        out = []
+        for i, t in enumerate(self.data.get("mesh") or []):
+            pair = t.get("gears") if isinstance(t, dict) else None
+            if not (isinstance(pair, list) and len(pair) == 2 and all(
+                    isinstance(g, int) and not isinstance(g, bool) for g in pair)):
+                raise self.fail("a mesh names its two gears, gears = [2, 4]", "mesh", "gears", i)
+            kind = t.get("kind", "external")
+            if kind not in ("external", "internal"):
+                raise self.fail(f"unknown mesh kind '{kind}'; use external or internal",
+                                "mesh", "kind", i)
+            if pair[0] == pair[1]:
+                raise self.fail(f"gear {pair[0]} cannot mesh with itself", "mesh", "gears", i)
+            out.append(Mesh(pair[0], pair[1], kind == "internal"))
+        if not out:
+            raise self.fail("list the meshes as [[mesh]] tables, gears = [2, 4]", key="mesh")
+        return tuple(out)
+
+    def shafts(self) -> tuple[tuple[int, ...], ...]:
+        out = []
+        for i, t in enumerate(self.data.get("shaft") or []):
+            members = t.get("members") if isinstance(t, dict) else None
+            if not (isinstance(members, list) and len(members) >= 2 and all(
+                    isinstance(m, int) and not isinstance(m, bool) for m in members)):
+                raise self.fail("a shaft names the members that turn together, members = "
+                                "[3, 4]", "shaft", "members", i)
+            out.append(tuple(members))
+        return tuple(out)
+
+    def fixed(self) -> int | None:
+        v = self.data.get("fixed")
+        if v is None:
+            return None
+        if isinstance(v, list):
+            if len(v) == 1:
+                v = v[0]
+            else:
+                raise self.fail(f"{len(v)} fixed members ({', '.join(map(str, v))}): a train "
+                                "holds one still", key="fixed")
+        return self.integer(v, "the fixed member", "", "fixed")
+
+    def input(self, units: SpeedUnits) -> tuple[int, Fraction]:
+        t = self.data.get("input")
+        if not isinstance(t, dict) or "member" not in t or "speed" not in t:
+            raise self.fail("[input] gives the driving member and its speed: member = 2, "
+                            f"speed = 80 ({units.speed}), sense = \"cw\"", "input")
+        member = self.integer(t["member"], "the input member", "input", "member")
+        speed = self.exact(t["speed"], "the input speed", "input", "speed")
+        sense = t.get("sense", "ccw")
+        if sense not in ("cw", "ccw"):
+            raise self.fail(f"unknown sense '{sense}'; use cw or ccw", "input", "sense")
+        if speed == 0:
+            raise self.fail("the input speed is 0: nothing turns", "input", "speed")
+        return member, speed if sense == "ccw" else -speed
+
+    def asks(self, train: GearTrain) -> tuple[str, ...]:
+        t = self.data.get("ask")
+        every = tuple(f"omega{m}" for m in train.members)
+        if t is None:
+            return every
+        find = t.get("find") if isinstance(t, dict) else None
+        if not (isinstance(find, list) and find and all(isinstance(q, str) for q in find)):
+            raise self.fail('[ask] needs find = [...], such as "omega4" or "omega5/omega2"',
+                            "ask", "find")
+        for q in find:
+            parts = q.split("/")
+            if len(parts) > 2 or any(p not in every for p in parts):
+                raise self.fail(f"cannot find '{q}' for this train; ask {', '.join(every)} or a "
+                                f"ratio such as {every[-1]}/{every[0]}", "ask", "find")
+        return tuple(find)
+
+
+def ask_symbol(name: str) -> str:
+    """"omega5/omega2" as the course writes it: ω5/ω2."""
+    return "/".join(symbol(p) for p in name.split("/"))

@@ -1,0 +1,183 @@
+"""Gear trains: the notes' planetary questions Q1–Q4 and a compound train, answered exactly
+by the notes' own method and checked by the Willis equations solved as a linear system;
+bad trains refused in one line naming the gears."""
+
+from __future__ import annotations
+
+import json
+from fractions import Fraction
+from pathlib import Path
+
+import pytest
+from click.testing import CliRunner
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from tarsim.constructions.errors import InputError
+from tarsim.constructions.gears.tabular import tabulate
+from tarsim.constructions.gears.train import Gear, GearTrain, Mesh
+from tarsim.constructions.reference.willis import willis_speeds
+from tarsim.exercises.catalog import bundled_trains, load
+from tarsim.exercises.cli import cli
+from tarsim.exercises.train_file import parse_train
+from tarsim.exercises.train_solution import solve_train
+
+F = Fraction
+
+
+def solved(name):
+    return solve_train(load(name))
+
+
+def test_q1_the_planet_turns_60_rpm_against_the_sun_and_the_arm_24_with_it():
+    s = solved("planetary-q1")
+    sun, arm, planet = s.found.speeds[2], s.found.speeds[3], s.found.speeds[4]
+    assert (sun, planet, arm) == (F(-80), F(60), F(-24))       # the question's cw sun
+    t = s.found.table
+    # the notes' table: 0, +10/3, −5/2, +1 for the ring, sun, planet and arm
+    assert [t.total[m] for m in (1, 2, 4, 3)] == [0, F(10, 3), F(-5, 2), 1]
+    assert [t.held[m] for m in (1, 2, 4, 3)] == [-1, F(7, 3), F(-7, 2), 0]
+
+
+def test_q2_gives_the_notes_ratio_of_minus_three_sevenths():
+    s = solved("planetary-q2")
+    assert s.quantities["omega5/omega4"].exact == F(-3, 7)
+    assert (s.found.speeds[4], s.found.speeds[5]) == (F(140), F(-60))
+    assert [s.found.table.total[m] for m in (3, 2, 4, 5)] == [1, 0, F(7, 3), -1]
+
+
+def test_q3_the_reverted_train_has_the_notes_train_value_five_ninths():
+    s = solved("planetary-q3")
+    assert s.quantities["omega5/omega6"].exact == F(5, 9)
+    assert s.found.table.held[5] == F(-40 * 40, 60 * 60)        # −(40×40)/(60×60)
+
+
+def test_q4_the_output_ring_turns_a_thirty_sixth_of_the_sun():
+    s = solved("planetary-q4")
+    assert s.quantities["omega5/omega2"].exact == F(1, 36)
+    assert [s.found.table.total[m] for m in (1, 2, 3, 4, 5, 6)] == \
+        [0, 8, F(-4, 3), F(-4, 3), F(2, 9), 1]
+
+
+def test_the_compound_train_value_cancels_its_idler():
+    s = solved("compound-train")
+    assert s.quantities["omega6/omega2"].exact == F(-20 * 25, 60 * 75)      # −1/9
+    assert s.found.speeds[6] == F(100)                                        # 900 cw in
+
+
+@pytest.mark.parametrize("name", sorted(bundled_trains()))
+def test_every_bundled_train_agrees_with_willis_exactly(name):
+    s = solved(name)
+    assert s.passed
+    assert s.found.speeds == s.reference
+
+
+def test_a_near_unity_reverted_train_keeps_its_fraction_exact():
+    """A reverted train of 100/101 and 100/101 teeth: 1 − 10000/10201, which floating point
+    holds to 1e-16 only; the tabular method gives 201/10201 itself."""
+    train = GearTrain(
+        (Gear(2, 100), Gear(3, 101, carrier=6), Gear(4, 100, carrier=6), Gear(5, 101)),
+        (Mesh(2, 3), Mesh(4, 5)), ((3, 4),), arm=6, fixed=2, input_member=6,
+        input_speed=F(1))
+    train.check()
+    assert tabulate(train).speeds[5] == F(201, 10201) == willis_speeds(train)[5]
+
+
+@settings(max_examples=60, deadline=None)
+@given(sun=st.integers(12, 90), planet=st.integers(12, 60),
+       fixed=st.sampled_from(("sun", "ring")), driver=st.sampled_from(("sun", "ring", "arm")),
+       speed=st.integers(-3000, 3000).filter(bool))
+def test_the_tabular_method_is_the_willis_solution(sun, planet, fixed, driver, speed):
+    ring = sun + 2 * planet
+    number = {"ring": 1, "sun": 2, "arm": 3}
+    if fixed == driver:
+        driver = "arm"
+    train = GearTrain((Gear(1, ring), Gear(2, sun), Gear(4, planet, carrier=3)),
+                      (Mesh(2, 4), Mesh(4, 1, internal=True)), arm=3, fixed=number[fixed],
+                      input_member=number[driver], input_speed=F(speed))
+    train.check()
+    assert tabulate(train).speeds == willis_speeds(train)
+
+
+# ----- bad trains ------------------------------------------------------------------------------
+Q1 = (Path(bundled_trains()["planetary-q1"])).read_text(encoding="utf-8")
+
+
+@pytest.mark.parametrize("old, new, words", [
+    ("teeth = 140", "teeth = 141", ["cannot carry gear 4 (planet): meshing with gear 2 (sun) "
+                                    "puts it 50 modules", "gear 1 (ring) 50.5 modules"]),
+    ("fixed = 1", "fixed = [1, 2]", ["2 fixed members (1, 2)"]),
+    ("fixed = 1", "", ["no member is fixed"]),
+    ("teeth = 60", "teeth = 60\nmodule = 2", []),             # one module given: still fits
+    ("[arm]\nnumber = 3", "[arm]\nnumber = 3\nplanets = 3",
+     ["3 planets cannot be spaced equally", "60 + 140 = 200"]),
+    ("[arm]\nnumber = 3", "[arm]\nnumber = 3\nplanets = 8",
+     ["8 planets gear 4 (planet) do not fit round the sun"]),
+    ("member = 2\nspeed", "member = 1\nspeed", ["the input, member 1, is the fixed member"]),
+    ("gears = [2, 4]", "gears = [2, 7]", ["a mesh names gear 7, which is not listed"]),
+    ("[input]", "[[gear]]\nnumber = 9\nteeth = 30\n\n[input]",
+     ["gear 9 is joined to the rest of the train by no mesh or shaft"]),
+    ('sense = "cw"', 'sense = "up"', ["unknown sense 'up'"]),
+])
+def test_a_bad_train_is_refused_in_one_line_naming_the_gears(old, new, words):
+    assert old in Q1
+    text = Q1.replace(old, new, 1)
+    if not words:
+        parse_train(text, "q1.toml")
+        return
+    with pytest.raises(InputError) as e:
+        s = solve_train(parse_train(text, "q1.toml"))
+        s.lines()
+    message = str(e.value)
+    assert "\n" not in message and message.startswith("q1.toml")
+    for w in words:
+        assert w in message, message
+
+
+def test_gears_of_different_modules_may_not_mesh():
+    text = (Q1.replace("teeth = 140", "teeth = 140\nmodule = 3", 1)
+            .replace("teeth = 40", "teeth = 40\nmodule = 2", 1))
+    with pytest.raises(InputError, match=r"^q1\.toml: gear 4 \(planet\) \(module 2 mm\) and "
+                                         r"gear 1 \(ring\) \(module 3 mm\) mesh but their "
+                                         r"modules differ$"):
+        parse_train(text, "q1.toml")
+
+
+def test_modules_given_set_the_centre_distances_in_millimetres():
+    text = Q1.replace("teeth = 140", "teeth = 141\nmodule = 2", 1)
+    for n in ("60", "40"):
+        text = text.replace(f"teeth = {n}", f"teeth = {n}\nmodule = 2", 1)
+    with pytest.raises(InputError, match=r"gear 2 \(sun\) puts it 100 mm from the main axis, "
+                                         r"with gear 1 \(ring\) 101 mm"):
+        parse_train(text, "q1.toml")
+
+
+def test_a_train_with_a_free_planet_has_two_degrees_of_freedom():
+    text = Q1.replace("[arm]", "[[gear]]\nnumber = 9\nteeth = 30\ncarrier = 3\n\n[arm]", 1)
+    with pytest.raises(InputError, match=r"2 degrees of freedom by Grübler \(3\(5 − 1\) − "
+                                         r"2·4 − 2 = 2\), not 1: a member turns freely"):
+        parse_train(text, "q1.toml")
+
+
+# ----- the command line ----------------------------------------------------------------------
+def test_solve_writes_the_table_steps_and_exact_results(tmp_path):
+    out = tmp_path / "q4"
+    result = CliRunner().invoke(cli, ["solve", "planetary-q4", "-o", str(out), "--no-pdf"])
+    assert result.exit_code == 0, result.output
+    assert "ω5/ω2 = 1/36" in result.output
+    doc = json.loads((out / "results.json").read_text(encoding="utf-8"))
+    q = doc["quantities"]["omega5/omega2"]
+    assert (q["exact"], q["reference"]["exact"], q["rel_error"]) == ("1/36", "1/36", 0.0)
+    w5 = doc["quantities"]["omega5"]
+    assert w5["exact"] == "50" and w5["unit"] == "rpm" and w5["rpm"] == 50.0
+    assert w5["value"] == pytest.approx(50 * 2 * 3.141592653589793 / 60, rel=1e-15)
+    steps = (out / "steps.md").read_text(encoding="utf-8")
+    assert "Row 2: hold the arm 6 and turn gear 1 (fixed ring), the fixed member, −1" in steps
+    assert (out / "table.svg").exists()
+
+
+def test_a_linkage_command_refuses_a_train_in_one_line():
+    result = CliRunner().invoke(cli, ["draw", "planetary-q1", "-o", "x.svg"])
+    assert result.exit_code == 1
+    assert result.output == ("Error: planetary-q1 is a gear train: `tarsim solve planetary-q1` "
+                             "solves it; this command is for linkages\n")
