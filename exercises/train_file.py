@@ -87,8 +87,9 @@ class _Reader:
         shafts = self.shafts()
         fixed = self.fixed()
         member, speed = self.input(units)
+        torque, power = self.load()
         train = GearTrain(gears, meshes, shafts, arm, arm_name, fixed, member, speed, units,
-                          planets, self.text("name") or self.id, self.filename)
+                          planets, torque, power, self.text("name") or self.id, self.filename)
         train.check()
         return TrainExercise(self.id, train, self.asks(train), self.text("description"))
 
@@ -224,7 +225,25 @@ class _Reader:
             raise self.fail(f"unknown sense '{sense}'; use cw or ccw", "input", "sense")
         if speed == 0:
             raise self.fail("the input speed is 0: nothing turns", "input", "speed")
+        for k in t:
+            if k not in ("member", "speed", "sense", "torque", "power"):
+                raise self.fail(f"unknown input setting '{k}'; expected member, speed, sense, "
+                                "torque (N·m) or power (W)", "input", k)
         return member, speed if sense == "ccw" else -speed
+
+    def load(self) -> tuple[Fraction | None, Fraction | None]:
+        """The input's torque (N·m) or power (W), if given: one of them, positive."""
+        t = self.data["input"]
+        given = [k for k in ("torque", "power") if k in t]
+        if len(given) > 1:
+            raise self.fail("give the input's torque or its power, not both", "input", "power")
+        if not given:
+            return None, None
+        v = self.exact(t[given[0]], f"the input {given[0]}", "input", given[0])
+        if v <= 0:
+            raise self.fail(f"the input {given[0]} must be positive: it drives the train "
+                            "(its sense is the input's)", "input", given[0])
+        return (v, None) if given[0] == "torque" else (None, v)
 
     def asks(self, train: GearTrain) -> tuple[str, ...]:
         t = self.data.get("ask")
@@ -235,14 +254,29 @@ class _Reader:
         if not (isinstance(find, list) and find and all(isinstance(q, str) for q in find)):
             raise self.fail('[ask] needs find = [...], such as "omega4" or "omega5/omega2"',
                             "ask", "find")
+        torques = tuple(f"torque{m}" for m in train.members)
         for q in find:
             parts = q.split("/")
-            if len(parts) > 2 or any(p not in every for p in parts):
-                raise self.fail(f"cannot find '{q}' for this train; ask {', '.join(every)} or a "
-                                f"ratio such as {every[-1]}/{every[0]}", "ask", "find")
+            if q in torques and train.input_torque is None and train.input_power is None:
+                raise self.fail(f"cannot find '{q}' without the input's torque or power: give "
+                                "torque = … (N·m) or power = … (W) in [input]", "ask", "find")
+            if q not in torques and (len(parts) > 2 or any(p not in every for p in parts)):
+                raise self.fail(f"cannot find '{q}' for this train; ask {', '.join(every)}, a "
+                                f"ratio such as {every[-1]}/{every[0]}, or a torque "
+                                f"{torques[-1]}", "ask", "find")
+        loaded = {int(q.removeprefix("torque")) for q in find if q in torques}
+        loaded -= {train.input_member, train.fixed}
+        if len(loaded) > 1:
+            raise self.fail(f"torques on {len(loaded)} members besides the input and the fixed "
+                            "one: the balance of power gives one output's", "ask", "find")
+        if f"torque{train.fixed}" in find and not loaded:
+            raise self.fail("the fixed member's holding torque needs the output's: ask the "
+                            "output's torque too", "ask", "find")
         return tuple(find)
 
 
 def ask_symbol(name: str) -> str:
-    """"omega5/omega2" as the course writes it: ω5/ω2."""
+    """"omega5/omega2" as the course writes it: ω5/ω2; "torque5" as T5."""
+    if name.startswith("torque"):
+        return f"T{name.removeprefix('torque')}"
     return "/".join(symbol(p) for p in name.split("/"))

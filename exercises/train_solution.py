@@ -16,7 +16,7 @@ from pathlib import Path
 from typing import Any
 
 from ..constructions.gears.tabular import TrainSpeeds, fraction_text, tabulate
-from ..constructions.narration import narrate
+from ..constructions.narration import narrate, phrase, significant
 from ..constructions.reference.willis import willis_speeds
 from ..graphics.svg import to_svg
 from ..graphics.train_table import draw_train_table
@@ -67,7 +67,13 @@ class TrainSolution:
         """Each asked quantity: a member's speed (file units; SI rad/s), or a ratio."""
         out = {}
         per = self.train.units.per_rad_s
+        torques, torques_ref = self._torques(self.found.speeds), self._torques(self.reference)
         for name in self.exercise.asks:
+            if name.startswith("torque"):
+                m = int(name.removeprefix("torque"))
+                out[name] = TrainQuantity(name, torques[m], torques_ref[m], float(torques[m]),
+                                          "balance of power")
+                continue
             parts = [int(p.removeprefix("omega")) for p in name.split("/")]
             if len(parts) == 1:
                 got, ref = self.found.speeds[parts[0]], self.reference[parts[0]]
@@ -78,6 +84,31 @@ class TrainSolution:
                 ref = self.reference[a] / self.reference[b]
                 out[name] = TrainQuantity(name, got, ref, float(got), self.found.method)
         return out
+
+    @property
+    def output(self) -> int | None:
+        """The member whose torque is asked besides the input's and the fixed one's."""
+        t = self.train
+        return next((int(q.removeprefix("torque")) for q in self.exercise.asks
+                     if q.startswith("torque")
+                     and int(q.removeprefix("torque")) not in (t.input_member, t.fixed)), None)
+
+    def _torques(self, speeds: dict[int, Fraction]) -> dict[int, Fraction]:
+        """The torques (N·m, CCW-positive) on the input, the output and the fixed member,
+        with no power lost: T_in·ω_in + T_out·ω_out = 0, and the three sum to nothing."""
+        t, out = self.train, self.output
+        if out is None or (t.input_torque is None and t.input_power is None):
+            return {}
+        w_in = speeds[t.input_member]
+        if t.input_torque is not None:
+            t_in = t.input_torque if w_in > 0 else -t.input_torque
+        else:
+            t_in = Fraction(float(t.input_power) / (float(w_in) * t.units.per_rad_s))
+        t_out = -t_in * w_in / speeds[out]
+        found = {t.input_member: t_in, out: t_out}
+        if t.fixed is not None:
+            found[t.fixed] = -(t_in + t_out)
+        return found
 
     @property
     def passed(self) -> bool:
@@ -95,7 +126,10 @@ class TrainSolution:
         unit = self.train.units.speed
         out = []
         for q in self.quantities.values():
-            if "/" in q.name:
+            if q.name.startswith("torque"):
+                sense = "" if q.exact == 0 else (" ccw" if q.exact > 0 else " cw")
+                value = f"{float(abs(q.exact)):.6g} N·m{sense}"
+            elif "/" in q.name:
                 value = f"{fraction_text(q.exact)} ({float(q.exact):.6g})"
             else:
                 sense = "" if q.exact == 0 else (" ccw" if q.exact > 0 else " cw")
@@ -113,7 +147,8 @@ class TrainSolution:
             lines += [ex.description, ""]
         lines += [f"## {'The tabular method' if self.found.table else 'The train value'} "
                   f"(`{self._stem}.svg`)", ""]
-        lines += [f"{k}. {narrate(p)}" for k, p in enumerate(self.found.steps, 1)]
+        steps = list(self.found.steps) + self._torque_steps()
+        lines += [f"{k}. {narrate(p)}" for k, p in enumerate(steps, 1)]
         if self.found.xy:
             lines += ["", "The other common form:", ""]
             lines += [f"- {narrate(p)}" for p in self.found.xy]
@@ -128,6 +163,22 @@ class TrainSolution:
                          f"{fraction_text(q.reference)} | {'yes' if q.passed else 'NO'} | "
                          f"{q.method} |")
         return "\n".join(lines) + "\n"
+
+    def _torque_steps(self) -> list:
+        """The balance of power and of torques, said with the numbers."""
+        t, torques = self.train, self._torques(self.found.speeds)
+        if not torques:
+            return []
+        i, o, w = t.input_member, self.output, self.found.speeds
+        given = (f"T{i} = {float(t.input_torque):g} N·m" if t.input_torque is not None else
+                 f"T{i} = P/ω{i} = {float(t.input_power):g} W / "
+                 f"{float(w[i]) * t.units.per_rad_s:.6g} rad/s")
+        out = [phrase("gears.power", given=given, i=i, o=o, ratio=fraction_text(w[i] / w[o]),
+                      value=significant(float(torques[o])))]
+        if t.fixed is not None:
+            out.append(phrase("gears.holding", fixed=t.fixed, i=i, o=o,
+                              value=significant(float(torques[t.fixed]))))
+        return out
 
     @property
     def _stem(self) -> str:

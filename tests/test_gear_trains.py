@@ -181,3 +181,33 @@ def test_a_linkage_command_refuses_a_train_in_one_line():
     assert result.exit_code == 1
     assert result.output == ("Error: planetary-q1 is a gear train: `tarsim solve planetary-q1` "
                              "solves it; this command is for linkages\n")
+
+
+Q4 = (Path(bundled_trains()["planetary-q4"])).read_text(encoding="utf-8")
+
+
+@pytest.mark.parametrize("given, t_in", [("torque = 20", F(20)),
+                                         ("power = 3769.911184307752", None)])
+def test_the_output_and_holding_torques_balance_power_and_torque(given, t_in):
+    """The sun at 1800 rpm driven by 20 N·m (or by the power that is, 20 × 1800·2π/60 W):
+    the output ring at 50 rpm takes 20 × 36 = 720 N·m against its motion, and the fixed
+    ring holds the difference, 700 N·m."""
+    text = Q4.replace('sense = "ccw"', f'sense = "ccw"\n{given}', 1).replace(
+        'find = ["omega5/omega2", "omega5", "omega6"]',
+        'find = ["omega5/omega2", "torque5", "torque1", "torque2"]', 1)
+    s = solve_train(parse_train(text, "q4.toml"))
+    q = s.quantities
+    assert s.passed
+    assert float(q["torque5"].exact) == pytest.approx(-720.0, rel=1e-13)
+    assert float(q["torque1"].exact) == pytest.approx(700.0, rel=1e-13)
+    assert float(q["torque2"].exact) == pytest.approx(20.0, rel=1e-13)
+    if t_in is not None:                        # a torque given keeps every torque exact
+        assert (q["torque5"].exact, q["torque1"].exact) == (F(-720), F(700))
+    assert "T1 = −(T2 + T5) = 700 N·m" in s.steps()
+
+
+def test_a_holding_torque_needs_the_output_load():
+    text = Q4.replace('sense = "ccw"', 'sense = "ccw"\ntorque = 20', 1).replace(
+        'find = ["omega5/omega2", "omega5", "omega6"]', 'find = ["torque1"]', 1)
+    with pytest.raises(InputError, match="holding torque needs the output's"):
+        parse_train(text, "q4.toml")

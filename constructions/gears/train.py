@@ -84,6 +84,10 @@ class GearTrain:
     input_speed: Fraction = Fraction(0)
     units: SpeedUnits = SpeedUnits()
     planets: int = 1
+    input_torque: Fraction | None = None
+    """The torque (N·m) driving the input, its sense the input's; or else ``input_power``
+    (W): the torques then follow from the balance of power."""
+    input_power: Fraction | None = None
     name: str = ""
     source: str = ""
 

@@ -75,6 +75,11 @@ PHRASES: dict[str, str] = {
     "gears.train_value": "The train value e = ω{last}/ω{first} = ({drivers})/({driven}) = "
                          "{teeth} = {value}: driver teeth over driven teeth, {externals} "
                          "external meshes making it {sign}{idlers}.",
+    "gears.power": "The input is driven by {given}. With no power lost, T{i}·ω{i} + T{o}·ω{o} = "
+                   "0, so T{o} = −T{i}·ω{i}/ω{o} = −T{i} × {ratio} = {value} N·m "
+                   "(counter-clockwise +).",
+    "gears.holding": "The torques on the train sum to zero, so the fixed member {fixed} is "
+                     "held by T{fixed} = −(T{i} + T{o}) = {value} N·m.",
     "gears.locked": "Row 1: lock the whole train, {arm} with it, and turn it +1 "
                     "(counter-clockwise): every member turns +1.",
     "gears.held": "Row 2: hold {arm} and turn {fixed}, the fixed member, −1 turn:",
