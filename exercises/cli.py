@@ -360,7 +360,7 @@ def _solve_train(ex, out_dir: str | None, pdf: bool) -> None:
     if reason:
         click.echo(f"PDF skipped: {reason}", err=True)
     if solved.failures:
-        raise CheckMismatch([q.name for q in solved.failures])
+        raise CheckMismatch(solved.failures)
 
 
 @cli.command()

@@ -15,10 +15,13 @@ from functools import cached_property
 from pathlib import Path
 from typing import Any
 
+from ..constructions.gears.kutzbach import Kutzbach, draw_kutzbach
 from ..constructions.gears.tabular import TrainSpeeds, fraction_text, tabulate
-from ..constructions.narration import narrate, phrase, significant
+from ..constructions.gears.torques import balance, say_balance
+from ..constructions.narration import narrate
 from ..constructions.reference.willis import willis_speeds
 from ..graphics.svg import to_svg
+from ..graphics.kutzbach_figure import draw_kutzbach_figure
 from ..graphics.train_table import draw_train_table
 from .solution_files import write_solution
 from .train_file import TrainExercise, ask_symbol
@@ -56,6 +59,9 @@ class TrainSolution:
     exercise: TrainExercise
     found: TrainSpeeds
     reference: dict[int, Fraction]
+    diagram: Kutzbach | None = None
+    """The velocity diagram, drawn for a planetary train whose meshes all touch the main
+    axis: its speeds are read as slopes and checked against the table's."""
 
     @property
     def train(self):
@@ -94,31 +100,31 @@ class TrainSolution:
                      and int(q.removeprefix("torque")) not in (t.input_member, t.fixed)), None)
 
     def _torques(self, speeds: dict[int, Fraction]) -> dict[int, Fraction]:
-        """The torques (N·m, CCW-positive) on the input, the output and the fixed member,
-        with no power lost: T_in·ω_in + T_out·ω_out = 0, and the three sum to nothing."""
-        t, out = self.train, self.output
-        if out is None or (t.input_torque is None and t.input_power is None):
-            return {}
-        w_in = speeds[t.input_member]
-        if t.input_torque is not None:
-            t_in = t.input_torque if w_in > 0 else -t.input_torque
-        else:
-            t_in = Fraction(float(t.input_power) / (float(w_in) * t.units.per_rad_s))
-        t_out = -t_in * w_in / speeds[out]
-        found = {t.input_member: t_in, out: t_out}
-        if t.fixed is not None:
-            found[t.fixed] = -(t_in + t_out)
-        return found
+        return balance(self.train, speeds, self.output)
 
     @property
     def passed(self) -> bool:
-        """True when every quantity is the Willis fraction itself."""
-        return all(q.passed for q in self.quantities.values())
+        """True when every quantity is the Willis fraction itself, and every speed the
+        diagram reads agrees with the table's."""
+        return all(q.passed for q in self.quantities.values()) and not self.diagram_misses
 
     @property
-    def failures(self) -> list[TrainQuantity]:
-        """The quantities the Willis system disagrees with."""
-        return [q for q in self.quantities.values() if not q.passed]
+    def diagram_misses(self) -> list[int]:
+        """The members whose ω the velocity diagram reads away from the table's (beyond a
+        drafting act's rounding, relative to the fastest member)."""
+        if self.diagram is None:
+            return []
+        per = self.train.units.per_rad_s
+        scale = max(abs(float(v)) for v in self.found.speeds.values()) * per
+        return [m for m, w in self.diagram.omegas.items()
+                if abs(w - float(self.found.speeds[m]) * per) > 1e-9 * scale]
+
+    @property
+    def failures(self) -> list[str]:
+        """The quantities the Willis system disagrees with, and the speeds the diagram
+        reads wrong."""
+        return ([q.name for q in self.quantities.values() if not q.passed]
+                + [f"omega{m} (velocity diagram)" for m in self.diagram_misses])
 
     # ----- the files --------------------------------------------------------------------------
     def lines(self) -> list[str]:
@@ -147,11 +153,16 @@ class TrainSolution:
             lines += [ex.description, ""]
         lines += [f"## {'The tabular method' if self.found.table else 'The train value'} "
                   f"(`{self._stem}.svg`)", ""]
-        steps = list(self.found.steps) + self._torque_steps()
+        steps = list(self.found.steps) + say_balance(self.train, self.found.speeds,
+                                                     self.output)
         lines += [f"{k}. {narrate(p)}" for k, p in enumerate(steps, 1)]
         if self.found.xy:
             lines += ["", "The other common form:", ""]
             lines += [f"- {narrate(p)}" for p in self.found.xy]
+        if self.diagram is not None:
+            lines += ["", "## The velocity (Kutzbach) diagram (`kutzbach.svg`)", ""]
+            said = [narrate(s) for s in self.diagram.construction.steps.values()]
+            lines += [f"{k}. {t}" for k, t in enumerate((t for t in said if t), 1)]
         heads, rows = self._table()
         lines += ["", "| | " + " | ".join(heads) + " |",
                   "|---|" + "---|" * len(heads)]
@@ -163,22 +174,6 @@ class TrainSolution:
                          f"{fraction_text(q.reference)} | {'yes' if q.passed else 'NO'} | "
                          f"{q.method} |")
         return "\n".join(lines) + "\n"
-
-    def _torque_steps(self) -> list:
-        """The balance of power and of torques, said with the numbers."""
-        t, torques = self.train, self._torques(self.found.speeds)
-        if not torques:
-            return []
-        i, o, w = t.input_member, self.output, self.found.speeds
-        given = (f"T{i} = {float(t.input_torque):g} N·m" if t.input_torque is not None else
-                 f"T{i} = P/ω{i} = {float(t.input_power):g} W / "
-                 f"{float(w[i]) * t.units.per_rad_s:.6g} rad/s")
-        out = [phrase("gears.power", given=given, i=i, o=o, ratio=fraction_text(w[i] / w[o]),
-                      value=significant(float(torques[o])))]
-        if t.fixed is not None:
-            out.append(phrase("gears.holding", fixed=t.fixed, i=i, o=o,
-                              value=significant(float(torques[t.fixed]))))
-        return out
 
     @property
     def _stem(self) -> str:
@@ -208,7 +203,10 @@ class TrainSolution:
         ruled = (2, 3) if self.found.table else ()
         title = f"{self.train.name}: " + ("the tabular method" if self.found.table
                                           else "speeds through the train")
-        return {self._stem: draw_train_table(title, heads, rows, ruled=ruled, notes=notes)}
+        out = {self._stem: draw_train_table(title, heads, rows, ruled=ruled, notes=notes)}
+        if self.diagram is not None:
+            out["kutzbach"] = draw_kutzbach_figure(self.train, self.diagram, self.train.name)
+        return out
 
     def results(self) -> dict[str, Any]:
         """results.json: every asked quantity in SI with its exact value and reference."""
@@ -225,6 +223,11 @@ class TrainSolution:
             qs[q.name] = {**entry, "reference": {
                 "value": ref_si, "exact": fraction_text(q.reference).replace("−", "-")},
                 "rel_error": q.rel_error, "method": q.method}
+            m = q.name.removeprefix("omega")
+            if self.diagram is not None and q.name.startswith("omega") and "/" not in q.name:
+                w = self.diagram.omegas[int(m)]
+                qs[q.name]["velocity_diagram"] = {
+                    "value": w, "rel_error": abs(w - q.si) / max(abs(q.si), 1e-300)}
         return {"exercise": self.exercise.id, "positions": [], "quantities": qs}
 
     def files(self) -> dict[str, str]:
@@ -255,4 +258,9 @@ def solve_train(ex: TrainExercise) -> TrainSolution:
     InputError
         If the train does not hang together or its input cannot drive it.
     """
-    return TrainSolution(ex, tabulate(ex.train), willis_speeds(ex.train))
+    found = tabulate(ex.train)
+    train = ex.train
+    drawable = found.table is not None and not any(
+        train.carried(m.a) and train.carried(m.b) for m in train.meshes)
+    diagram = draw_kutzbach(train, found.speeds) if drawable else None
+    return TrainSolution(ex, found, willis_speeds(train), diagram)

@@ -211,3 +211,56 @@ def test_a_holding_torque_needs_the_output_load():
         'find = ["omega5/omega2", "omega5", "omega6"]', 'find = ["torque1"]', 1)
     with pytest.raises(InputError, match="holding torque needs the output's"):
         parse_train(text, "q4.toml")
+
+
+# ----- the velocity (Kutzbach) diagram ---------------------------------------------------------
+@pytest.mark.parametrize("name", ["planetary-q1", "planetary-q3", "planetary-q4"])
+def test_the_velocity_diagram_reads_every_speed_the_table_gives(name):
+    s = solved(name)
+    k = s.diagram
+    per = s.train.units.per_rad_s
+    fastest = max(abs(float(v)) for v in s.found.speeds.values()) * per
+    for m, v in s.found.speeds.items():
+        # read as slopes of drawn lines: a few roundings of the drawing's coordinates
+        assert abs(k.omegas[m] - float(v) * per) <= 1e-12 * fastest, m
+    assert not s.diagram_misses
+
+
+def test_q1_diagram_draws_the_planet_through_its_two_pitch_points_and_the_arm_through_c():
+    k = solved("planetary-q1").diagram
+    assert k.through[(4,)] == ("kz:pitch:2-4", "kz:pitch:1-4")
+    assert k.through[(3,)] == ("kz:O", "kz:centre")
+    assert k.lines[(1,)] == "kz:radial"                      # the fixed ring: v = 0
+    # the pitch point with the fixed ring stands on the radial line, the centre half way
+    x14 = k.construction.output("kz:pitch:1-4").xy[0]
+    xc = k.construction.output("kz:centre").xy[0]
+    x24 = k.construction.output("kz:pitch:2-4").xy[0]
+    assert x14 == pytest.approx(0.0, abs=1e-15)
+    assert xc == pytest.approx(x24 / 2, rel=1e-12)           # R = 50 is mid-way r2 = 30 … r1 = 70
+
+
+def test_planets_meshing_with_each_other_get_no_diagram():
+    assert solved("planetary-q2").diagram is None
+    from tarsim.constructions.gears.kutzbach import draw_kutzbach
+
+    s = solved("planetary-q2")
+    with pytest.raises(InputError, match="gear 4 \\(planet\\) and gear 5 \\(second planet\\) "
+                                         "are both planets"):
+        draw_kutzbach(s.train, s.found.speeds)
+
+
+def test_a_diagram_that_reads_a_speed_wrong_fails_the_solve():
+    s = solved("planetary-q1")
+    s.diagram.omegas[4] *= 1 + 1e-6
+    assert s.diagram_misses == [4] and not s.passed
+    assert "omega4 (velocity diagram)" in s.failures
+
+
+def test_the_diagram_has_its_figure_and_its_steps():
+    s = solved("planetary-q4")
+    fig = s.figures()["kutzbach"]
+    texts = [t.text for t in fig.items if hasattr(t, "text")]
+    assert "ω₅ = 50 rpm ccw" in texts and "ω₆ = 225 rpm ccw" in texts
+    steps = s.steps()
+    assert "## The velocity (Kutzbach) diagram (`kutzbach.svg`)" in steps
+    assert "The planet 3–4 is one body: its line runs through P13 and" in steps

@@ -97,7 +97,8 @@ def carry(train: GearTrain, start: dict[int, Fraction], held: tuple[int, ...] = 
                     if via is not None:
                         via[b] = (a, mesh)
                     steps.append(phrase(
-                        "gears.mesh_carries", driven=_cap(train.label(b)), driver=train.label(a),
+                        "gears.mesh_carries", driven=train.label(b, opening=True),
+                        driver=train.label(a),
                         kind=mesh.word, way="the same way" if mesh.internal else "the other way",
                         a=a, b=b, na=ga.teeth, nb=gb.teeth, turns=fraction_text(out[a]),
                         result=fraction_text(out[b])))
@@ -107,7 +108,7 @@ def carry(train: GearTrain, start: dict[int, Fraction], held: tuple[int, ...] = 
                             if via is not None:
                                 via[k] = (b, None)
                             steps.append(phrase("gears.shaft_carries",
-                                                member=_cap(train.label(k)),
+                                                member=train.label(k, opening=True),
                                                 other=train.label(b),
                                                 turns=fraction_text(out[b])))
                     grew = True
@@ -128,7 +129,7 @@ def tabulate(train: GearTrain) -> TrainSpeeds:
 
 def _ordinary(train: GearTrain) -> TrainSpeeds:
     first = train.input_member
-    steps = [phrase("gears.ordinary_start", member=_cap(train.label(first)),
+    steps = [phrase("gears.ordinary_start", member=train.label(first, opening=True),
                     speed=_speed(train, train.input_speed))]
     via: dict[int, tuple[int, Mesh | None]] = {}
     turns = carry(train, {first: Fraction(1)}, steps=steps, via=via)
@@ -152,7 +153,7 @@ def _planetary(train: GearTrain) -> TrainSpeeds:
                          "still with the fixed member, so it cannot drive the train",
                          file=train.source or None)
     scale = train.input_speed / total[first]
-    steps.append(phrase("gears.scaled", member=_cap(train.label(first)),
+    steps.append(phrase("gears.scaled", member=train.label(first, opening=True),
                         total=fraction_text(total[first]),
                         speed=_speed(train, train.input_speed), scale=fraction_text(scale),
                         unit=train.units.speed))
@@ -206,11 +207,6 @@ def _xy(train: GearTrain, held: dict[int, Fraction], speeds: dict[int, Fraction]
             phrase("gears.xy_solved", fixed=train.fixed, member=train.input_member,
                    speed=_speed(train, train.input_speed), x=fraction_text(x),
                    y=fraction_text(y), unit=train.units.speed))
-
-
-def _cap(text: str) -> str:
-    """A member's name opening a sentence: "Gear 4 (planet)", "The arm 3"."""
-    return text[:1].upper() + text[1:]
 
 
 def _speed(train: GearTrain, v: Fraction) -> str:

@@ -101,12 +101,15 @@ class GearTrain:
         """Every member's number: the gears, then the arm."""
         return tuple(g.number for g in self.gears) + ((self.arm,) if self.arm else ())
 
-    def label(self, member: int) -> str:
-        """How the steps name a member: "gear 4 (planet)", "the arm 3"."""
+    def label(self, member: int, *, opening: bool = False) -> str:
+        """How the steps name a member: "gear 4 (planet)", "the arm 3"; ``opening`` a
+        sentence, with a capital."""
         if member == self.arm:
-            return f"the arm {member}" + (f" ({self.arm_name})" if self.arm_name and
+            text = f"the arm {member}" + (f" ({self.arm_name})" if self.arm_name and
                                           self.arm_name != "arm" else "")
-        return self.gear(member).label
+        else:
+            text = self.gear(member).label
+        return text[:1].upper() + text[1:] if opening else text
 
     def body(self, member: int) -> tuple[int, ...]:
         """The members that turn with ``member`` (itself and those on its shafts)."""
@@ -280,6 +283,19 @@ class GearTrain:
         """The module the sizes are taken at: the gear's, where every gear gives one; else
         1 for all (the sizes in modules, the teeth alone deciding)."""
         return g.module if all(h.module is not None for h in self.gears) else Fraction(1)
+
+    def size_text(self, value: Fraction) -> str:
+        """A size as the steps say it (see :meth:`_span`): "50 mm", or "50 modules"."""
+        return self._span(value)
+
+    @property
+    def sized(self) -> bool:
+        """True if every gear gives its module (sizes in metres); else sizes are in modules."""
+        return all(g.module is not None for g in self.gears)
+
+    def pitch_radius(self, number: int) -> Fraction:
+        """Gear ``number``'s pitch radius, m·N/2 (in modules where a gear gives none)."""
+        return self.gear(number).teeth * self._module(self.gear(number)) / 2
 
     def _span(self, value: Fraction) -> str:
         """A distance the checks found: in the file's length unit, or in modules where a

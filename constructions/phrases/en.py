@@ -80,6 +80,26 @@ PHRASES: dict[str, str] = {
                    "(counter-clockwise +).",
     "gears.holding": "The torques on the train sum to zero, so the fixed member {fixed} is "
                      "held by T{fixed} = −(T{i} + T{o}) = {value} N·m.",
+    "kutzbach.radial": "Draw the radial line up from the main axis O, radii to scale: every "
+                       "point on it moves square to it, so each velocity is laid across it "
+                       "(counter-clockwise to the right), and each member's velocities lie on "
+                       "a straight line whose slope is its ω.",
+    "kutzbach.radius": "Mark {name} = {radius} ({what}) on the radial line and draw the level "
+                       "through it.",
+    "kutzbach.fixed": "{member} is fixed: its velocities are nil, and its line is the radial "
+                      "line itself.",
+    "kutzbach.input": "{member} turns {omega} rad/s {sense}: at {name} = {radius} lay off its "
+                      "velocity ω·r across the level, at the velocity scale.",
+    "kutzbach.main_line": "Member {member} turns about the main axis: its line runs from O "
+                          "through {point}.",
+    "kutzbach.pitch": "{a} and {b} share the velocity of their pitch point, at {name}: it is "
+                      "where the line of {known} crosses that level.",
+    "kutzbach.planet_line": "The planet {member} is one body: its line runs through {p} and "
+                            "{q}.",
+    "kutzbach.centre": "The planets' centre, at R, moves with the arm: it is where the line of "
+                       "{known} crosses that level.",
+    "kutzbach.read": "Read ω{member} = Δv/Δr, the slope of its line: {omega} rad/s{sense}, "
+                     "{speed}.",
     "gears.locked": "Row 1: lock the whole train, {arm} with it, and turn it +1 "
                     "(counter-clockwise): every member turns +1.",
     "gears.held": "Row 2: hold {arm} and turn {fixed}, the fixed member, −1 turn:",

@@ -1,0 +1,94 @@
+"""The velocity (Kutzbach) diagram of a planetary train as a figure.
+
+It renders the record :func:`~tarsim.constructions.gears.kutzbach.draw_kutzbach` drew:
+the radial line up from the main axis O (heavy), each level a dashed line across it,
+named at its left (r2, R), each member's velocity line (thin, named at its upper end with
+its ω), and the points the lines were drawn through (dots). Radii stand at the radius
+scale and velocities across at the velocity scale, both stated with their bars.
+"""
+
+from __future__ import annotations
+
+from ..constructions import geometry as g
+from ..constructions.gears.kutzbach import Kutzbach
+from ..constructions.gears.train import GearTrain
+from .figure import Circle, Figure, Path
+from .labels import LabelPlacer, subscript
+from .scales import draw_caption
+
+__all__ = ["draw_kutzbach_figure"]
+
+_OVER = 8.0        # how far (mm) a line runs past the points it was drawn through
+
+
+def draw_kutzbach_figure(train: GearTrain, k: Kutzbach, title: str,
+                         notes: tuple[str, ...] = ()) -> Figure:
+    """The diagram ``k`` of ``train`` on a page, with its caption and both scales."""
+    mm = 10.0 / (k.per_cm * k.stated)          # paper mm per drawing metre
+
+    def paper(p: g.Point) -> tuple[float, float]:
+        x, y = p.xy
+        return x * mm, -y * mm
+
+    c = k.construction
+    fig = Figure(0.0, 0.0, title=title)
+    placer = LabelPlacer(fig)
+    points = {ref: paper(c.output(ref)) for ref in c.steps
+              if isinstance(c.output(ref), g.Point) and ref.startswith(("kz:v", "kz:pitch",
+                                                                         "kz:centre", "kz:r:"))}
+    top = min(y for _, y in points.values()) - _OVER
+    xs = [x for x, _ in points.values()] + [0.0]
+    left, right = min(xs) - _OVER, max(xs) + _OVER
+    # The radial line, and each level across the whole width.
+    fig.add(Path(((0.0, 0.0), (0.0, top)), "link"))
+    placer.block_segment((0.0, 0.0), (0.0, top), 1.0)
+    fig.add(Path(((left, 0.0), (right, 0.0)), "dimension"))
+    for name in k.levels:
+        y = points[f"kz:r:{name}"][1]
+        fig.add(Path(((left, y), (right, y)), "construction"))
+        placer.block_segment((left, y), (right, y), 0.3)
+    for name in k.levels:
+        y = points[f"kz:r:{name}"][1]
+        placer.place(subscript(name), (left, y), prefer=3.1416, spread=0.3, gap=1.5, size=3.2)
+    # Each member's line, from its lower point past its upper one.
+    for body, ref in k.lines.items():
+        if ref == "kz:radial":
+            continue
+        ends = [paper(c.output(r)) for r in k.through[body]]
+        lo = max(ends, key=lambda p: p[1])
+        hi = min(ends, key=lambda p: p[1])
+        d = (hi[0] - lo[0], hi[1] - lo[1])
+        n = (d[0] ** 2 + d[1] ** 2) ** 0.5 or 1.0
+        end = (hi[0] + _OVER * d[0] / n, hi[1] + _OVER * d[1] / n)
+        start = lo if lo != (0.0, 0.0) else (0.0, 0.0)
+        fig.add(Path((start, end), "vector"))
+        placer.block_segment(start, end, 0.6)
+        w = k.omegas[body[0]] / train.units.per_rad_s
+        sense = "" if w == 0 else (" ccw" if w > 0 else " cw")
+        names = ", ".join(subscript(f"ω{m}") for m in body)
+        placer.place(f"{names} = {abs(w):.4g} {train.units.speed}{sense}", end,
+                     prefer=(1.57, 0.0, 3.1416), gap=1.5, size=3.0, italic=False)
+    dots: list[tuple[float, float]] = []
+    for ref, p in points.items():
+        if ref.startswith("kz:r:") or any(abs(p[0] - q[0]) + abs(p[1] - q[1]) < 0.1
+                                          for q in dots):
+            continue              # one dot, one name, where two points coincide
+        dots.append(p)
+        fig.add(Circle(p, 0.7, "dot"))
+        placer.block(g_point_box(p))
+        placer.place(subscript(c[ref].label), p, prefer=(0.8, 2.4), gap=1.2, size=3.2)
+    placer.place("O", (0.0, 0.0), prefer=-1.57, gap=1.5, size=3.2)
+    fixed = train.label(train.fixed)
+    draw_caption(fig, f"{train.name}: velocity (Kutzbach) diagram",
+                 [f"{fixed} fixed; velocities across the radial line, ccw to the right",
+                  "each member's ω is the slope Δv/Δr of its line"],
+                 per_cm=k.per_cm, unit=k.unit, scale_name="Radius scale",
+                 second=("Velocity scale", k.velocity_per_cm, f"{k.unit}/s"), notes=notes)
+    return fig
+
+
+def g_point_box(p: tuple[float, float]):
+    """The room a dot takes."""
+    from shapely.geometry import Point
+
+    return Point(p).buffer(1.2)
