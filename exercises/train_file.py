@@ -14,6 +14,7 @@ from typing import Any
 
 from ..constructions.asks import symbol
 from ..constructions.errors import InputError
+from ..constructions.gears.involute import Involute
 from ..constructions.gears.train import Gear, GearTrain, Mesh, SpeedUnits
 from ..constructions.model import LENGTH_UNITS
 from .mechanism_file import SourceMap, read_source, read_toml
@@ -21,7 +22,10 @@ from .mechanism_file import SourceMap, read_source, read_toml
 __all__ = ["TrainExercise", "is_train", "load_train", "parse_train"]
 
 _TOP = ("name", "source", "description", "fixed", "units", "gear", "arm", "mesh", "shaft",
-        "input", "ask")
+        "input", "involute", "ask")
+MESH_ASKS = ("contact_ratio", "path_of_contact", "arc_of_contact", "pressure_angle",
+             "interference")
+"""What the involute mesh answers (with ``[involute]``)."""
 _SPEEDS = ("rpm", "rad/s")
 
 
@@ -34,6 +38,7 @@ class TrainExercise:
     train: GearTrain
     asks: tuple[str, ...]
     description: str = ""
+    involute: Involute | None = None
 
     @property
     def name(self) -> str:
@@ -91,7 +96,9 @@ class _Reader:
         train = GearTrain(gears, meshes, shafts, arm, arm_name, fixed, member, speed, units,
                           planets, torque, power, self.text("name") or self.id, self.filename)
         train.check()
-        return TrainExercise(self.id, train, self.asks(train), self.text("description"))
+        involute = self.involute(train)
+        return TrainExercise(self.id, train, self.asks(train, involute),
+                             self.text("description"), involute)
 
     def text(self, key: str) -> str:
         v = self.data.get(key, "")
@@ -245,7 +252,47 @@ class _Reader:
                             "(its sense is the input's)", "input", given[0])
         return (v, None) if given[0] == "torque" else (None, v)
 
-    def asks(self, train: GearTrain) -> tuple[str, ...]:
+    def involute(self, train: GearTrain) -> Involute | None:
+        """The involute mesh to draw: a meshing pair, driver first, and its tooth form."""
+        t = self.data.get("involute")
+        if t is None:
+            return None
+        if not isinstance(t, dict):
+            raise self.fail("[involute] must be a table", "involute")
+        for k in t:
+            if k not in ("gears", "pressure_angle", "addendum", "dedendum", "centre_distance"):
+                raise self.fail(f"unknown involute setting '{k}'; expected gears, "
+                                "pressure_angle, addendum, dedendum, centre_distance",
+                                "involute", k)
+        pair = t.get("gears")
+        if not (isinstance(pair, list) and len(pair) == 2 and all(
+                isinstance(g, int) and not isinstance(g, bool) for g in pair)):
+            raise self.fail("[involute] names the meshing pair, driver first: gears = [2, 3]",
+                            "involute", "gears")
+        for n in pair:
+            if n not in [g.number for g in train.gears]:
+                raise self.fail(f"there is no gear {n}; the gears are "
+                                f"{', '.join(str(g.number) for g in train.gears)}", "involute",
+                                "gears")
+        angle = float(self.exact(t.get("pressure_angle", 20), "the pressure angle", "involute",
+                                 "pressure_angle"))
+        if not 5.0 <= angle <= 45.0:
+            raise self.fail(f"a pressure angle of {angle:g}° is not a gear's: use 14.5°, 20° "
+                            "or 25° (5° to 45°)", "involute", "pressure_angle")
+        add, ded = (float(self.exact(t.get(k, v), f"the {k}", "involute", k))
+                    for k, v in (("addendum", 1), ("dedendum", 1.25)))
+        if not (0 < add <= 2 and add < ded <= 3):
+            raise self.fail(f"addendum {add:g} and dedendum {ded:g} (in modules) must satisfy "
+                            "0 < addendum ≤ 2 and addendum < dedendum ≤ 3", "involute",
+                            "addendum")
+        distance = None
+        if "centre_distance" in t:
+            distance = float(self.exact(t["centre_distance"], "the centre distance",
+                                        "involute", "centre_distance")) * LENGTH_UNITS[
+                train.units.length]
+        return Involute(pair[0], pair[1], angle, add, ded, distance)
+
+    def asks(self, train: GearTrain, involute: Involute | None = None) -> tuple[str, ...]:
         t = self.data.get("ask")
         every = tuple(f"omega{m}" for m in train.members)
         if t is None:
@@ -256,6 +303,11 @@ class _Reader:
                             "ask", "find")
         torques = tuple(f"torque{m}" for m in train.members)
         for q in find:
+            if q in MESH_ASKS:
+                if involute is None:
+                    raise self.fail(f"cannot find '{q}' without the mesh to draw: give "
+                                    "[involute] gears = [2, 3]", "ask", "find")
+                continue
             parts = q.split("/")
             if q in torques and train.input_torque is None and train.input_power is None:
                 raise self.fail(f"cannot find '{q}' without the input's torque or power: give "

@@ -15,16 +15,19 @@ from functools import cached_property
 from pathlib import Path
 from typing import Any
 
+from ..constructions.gears.involute import InvoluteMesh, draw_involute_mesh
 from ..constructions.gears.kutzbach import Kutzbach, draw_kutzbach
 from ..constructions.gears.tabular import TrainSpeeds, fraction_text, tabulate
 from ..constructions.gears.torques import balance, say_balance
 from ..constructions.narration import narrate
+from ..constructions.reference.gear_mesh import MeshReference, involute_miss, mesh_reference
 from ..constructions.reference.willis import willis_speeds
 from ..graphics.svg import to_svg
+from ..graphics.involute_figure import draw_involute_figure
 from ..graphics.kutzbach_figure import draw_kutzbach_figure
 from ..graphics.train_table import draw_train_table
 from .solution_files import write_solution
-from .train_file import TrainExercise, ask_symbol
+from .train_file import MESH_ASKS, TrainExercise, ask_symbol
 
 __all__ = ["TrainSolution", "solve_train"]
 
@@ -38,16 +41,19 @@ class TrainQuantity:
     reference: Fraction
     si: float
     method: str
+    tolerance: float = 0.0
+    """0 for an exact quantity (a speed, a ratio, a count); a drawn length or angle agrees
+    within this, relative."""
 
     @property
     def passed(self) -> bool:
-        """True when the method's fraction is the reference's."""
-        return self.exact == self.reference
+        """True when the method's value is the reference's (within a drawing's rounding)."""
+        return self.rel_error <= self.tolerance
 
     @property
     def rel_error(self) -> float:
-        """0 when the two fractions are one; else how far apart, relative."""
-        if self.passed:
+        """0 when the two are one; else how far apart, relative."""
+        if self.exact == self.reference:
             return 0.0
         return float(abs(self.exact - self.reference) / max(abs(self.reference), 1))
 
@@ -62,7 +68,9 @@ class TrainSolution:
     diagram: Kutzbach | None = None
     """The velocity diagram, drawn for a planetary train whose meshes all touch the main
     axis: its speeds are read as slopes and checked against the table's."""
-
+    mesh: InvoluteMesh | None = None
+    """The involute mesh drawn, when the exercise gives ``[involute]``."""
+    mesh_reference: MeshReference | None = None
     @property
     def train(self):
         """The train solved."""
@@ -75,6 +83,9 @@ class TrainSolution:
         per = self.train.units.per_rad_s
         torques, torques_ref = self._torques(self.found.speeds), self._torques(self.reference)
         for name in self.exercise.asks:
+            if name in MESH_ASKS:
+                out[name] = self._mesh_quantity(name)
+                continue
             if name.startswith("torque"):
                 m = int(name.removeprefix("torque"))
                 out[name] = TrainQuantity(name, torques[m], torques_ref[m], float(torques[m]),
@@ -99,6 +110,19 @@ class TrainSolution:
                      if q.startswith("torque")
                      and int(q.removeprefix("torque")) not in (t.input_member, t.fixed)), None)
 
+    def _mesh_quantity(self, name: str) -> TrainQuantity:
+        """A number read off the involute mesh, beside the formula's."""
+        got, ref = self.mesh, self.mesh_reference
+        if name == "interference":
+            a, b = Fraction(len(got.interference)), Fraction(len(ref.interference))
+            ok = got.interference == ref.interference
+            return TrainQuantity(name, a, a if ok else b + 1, float(a), "involute mesh")
+        attr = {"contact_ratio": "contact_ratio", "path_of_contact": "path",
+                "arc_of_contact": "arc", "pressure_angle": "pressure_angle"}[name]
+        value, want = getattr(got, attr), getattr(ref, attr)
+        return TrainQuantity(name, Fraction(value), Fraction(want), value, "involute mesh",
+                             1e-9)
+
     def _torques(self, speeds: dict[int, Fraction]) -> dict[int, Fraction]:
         return balance(self.train, speeds, self.output)
 
@@ -106,7 +130,25 @@ class TrainSolution:
     def passed(self) -> bool:
         """True when every quantity is the Willis fraction itself, and every speed the
         diagram reads agrees with the table's."""
-        return all(q.passed for q in self.quantities.values()) and not self.diagram_misses
+        return (all(q.passed for q in self.quantities.values()) and not self.diagram_misses
+                and not self.profile_misses)
+
+    @property
+    def profile_misses(self) -> list[str]:
+        """The drawn tooth-profile points (by step) off the involute their gear's base circle
+        and start give, beyond a drafting act's rounding of the gear's size."""
+        if self.mesh is None:
+            return []
+        out, c = [], self.mesh.construction
+        for gear, refs in self.mesh.profiles.items():
+            centre = self.mesh.centres[gear]
+            base = self.mesh.radii["base2" if gear == self.exercise.involute.pinion
+                                   else "base3"]
+            for ref in refs:
+                if involute_miss(c.output(ref).xy, centre, base, self.mesh.starts[gear]) > \
+                        1e-9 * base:
+                    out.append(ref)
+        return out
 
     @property
     def diagram_misses(self) -> list[int]:
@@ -124,7 +166,8 @@ class TrainSolution:
         """The quantities the Willis system disagrees with, and the speeds the diagram
         reads wrong."""
         return ([q.name for q in self.quantities.values() if not q.passed]
-                + [f"omega{m} (velocity diagram)" for m in self.diagram_misses])
+                + [f"omega{m} (velocity diagram)" for m in self.diagram_misses]
+                + [f"the involute at {r}" for r in self.profile_misses])
 
     # ----- the files --------------------------------------------------------------------------
     def lines(self) -> list[str]:
@@ -132,6 +175,13 @@ class TrainSolution:
         unit = self.train.units.speed
         out = []
         for q in self.quantities.values():
+            if q.name in MESH_ASKS:
+                value = _mesh_text(q.name, float(q.exact), self.mesh)
+                verdict = "check ok" if q.passed else "check FAILED"
+                out.append(f"{q.name} = {value:<30} {verdict} (formula: "
+                           f"{_mesh_text(q.name, float(q.reference), self.mesh_reference)})   "
+                           f"{q.method}")
+                continue
             if q.name.startswith("torque"):
                 sense = "" if q.exact == 0 else (" ccw" if q.exact > 0 else " cw")
                 value = f"{float(abs(q.exact)):.6g} N·m{sense}"
@@ -159,6 +209,10 @@ class TrainSolution:
         if self.found.xy:
             lines += ["", "The other common form:", ""]
             lines += [f"- {narrate(p)}" for p in self.found.xy]
+        if self.mesh is not None:
+            lines += ["", "## The involute mesh (`mesh.svg`)", ""]
+            said = [narrate(s) for s in self.mesh.construction.steps.values()]
+            lines += [f"{k}. {t}" for k, t in enumerate((t for t in said if t), 1)]
         if self.diagram is not None:
             lines += ["", "## The velocity (Kutzbach) diagram (`kutzbach.svg`)", ""]
             said = [narrate(s) for s in self.diagram.construction.steps.values()]
@@ -206,6 +260,8 @@ class TrainSolution:
         out = {self._stem: draw_train_table(title, heads, rows, ruled=ruled, notes=notes)}
         if self.diagram is not None:
             out["kutzbach"] = draw_kutzbach_figure(self.train, self.diagram, self.train.name)
+        if self.mesh is not None:
+            out["mesh"] = draw_involute_figure(self.train, self.mesh, self.train.name)
         return out
 
     def results(self) -> dict[str, Any]:
@@ -213,16 +269,22 @@ class TrainSolution:
         per = self.train.units.per_rad_s
         qs = {}
         for q in self.quantities.values():
-            ratio = "/" in q.name
-            ref_si = float(q.reference) * (1.0 if ratio else per)
-            entry = {"value": q.si, "exact": fraction_text(q.exact).replace("−", "-")}
-            if not ratio:       # the exact value is in the file's unit; rpm for display
+            speed = q.name.startswith("omega") and "/" not in q.name
+            to_si = per if speed else 1.0          # a speed's exact value is in the file's unit
+            entry: dict[str, Any] = {"value": q.si}
+            reference: dict[str, Any] = {"value": float(q.reference) * to_si}
+            if q.name not in MESH_ASKS:            # drawn lengths and angles are not exact
+                entry["exact"] = _plain(q.exact)
+                reference["exact"] = _plain(q.reference)
+            if speed:
                 entry["unit"] = self.train.units.speed
                 entry["rpm"] = (float(q.exact) if entry["unit"] == "rpm"
                                 else q.si * 60 / (2 * math.pi))
-            qs[q.name] = {**entry, "reference": {
-                "value": ref_si, "exact": fraction_text(q.reference).replace("−", "-")},
-                "rel_error": q.rel_error, "method": q.method}
+            if q.name == "interference":
+                entry["gears"] = list(self.mesh.interference)
+                reference["gears"] = list(self.mesh_reference.interference)
+            qs[q.name] = {**entry, "reference": reference, "rel_error": q.rel_error,
+                          "method": q.method}
             m = q.name.removeprefix("omega")
             if self.diagram is not None and q.name.startswith("omega") and "/" not in q.name:
                 w = self.diagram.omegas[int(m)]
@@ -244,6 +306,24 @@ class TrainSolution:
         return write_solution(self.files(), folder, pdf=pdf)
 
 
+def _plain(x: Fraction) -> str:
+    """An exact value as results.json writes it: "-3/7", ASCII minus."""
+    return fraction_text(x).replace("−", "-")
+
+
+def _mesh_text(name: str, value: float, mesh) -> str:
+    """A mesh quantity as the command line says it: mm, degrees, a ratio, the gears."""
+    if name in ("path_of_contact", "arc_of_contact"):
+        return f"{value * 1e3:.6g} mm"
+    if name == "pressure_angle":
+        return f"{math.degrees(value):.6g}°"
+    if name == "interference":
+        gears = mesh.interference
+        return ("none" if not gears else
+                "the tips of gear " + " and ".join(map(str, gears)) + " cut into the other's flank")
+    return f"{value:.6g}"
+
+
 def _head(train, m: int) -> str:
     """A column's heading: "2 sun", "3 arm"."""
     name = (train.arm_name or "arm") if m == train.arm else train.gear(m).name
@@ -263,4 +343,11 @@ def solve_train(ex: TrainExercise) -> TrainSolution:
     drawable = found.table is not None and not any(
         train.carried(m.a) and train.carried(m.b) for m in train.meshes)
     diagram = draw_kutzbach(train, found.speeds) if drawable else None
-    return TrainSolution(ex, found, willis_speeds(train), diagram)
+    mesh = ref = None
+    if ex.involute is not None:
+        d = ex.involute
+        mesh = draw_involute_mesh(train, d)
+        a, b = train.gear(d.pinion), train.gear(d.wheel)
+        ref = mesh_reference(float(a.module), (a.teeth, b.teeth), (a.number, b.number),
+                             d.pressure_angle, d.addendum, d.centre_distance)
+    return TrainSolution(ex, found, willis_speeds(train), diagram, mesh, ref)

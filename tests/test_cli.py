@@ -145,7 +145,8 @@ def test_bad_file_is_one_line_with_file_and_line(mech_file, tmp_path, edit, mess
                         "piston-driven-slider-crank, rolling-wheel, six-link-homework-1, "
                         "six-link-homework-3, slotted-lever-p37, velocity-homework-292, "
                         "wheel-driven-slider, wheel-round-circle, whitworth, compound-train, "
-                        "planetary-q1, planetary-q2, planetary-q3, planetary-q4\n"),
+                        "involute-pair, planetary-q1, planetary-q2, planetary-q3, "
+                        "planetary-q4\n"),
     ("missing.toml", "Error: no such file 'missing.toml'\n"),
 ])
 def test_unknown_source_is_one_line(source, message):
@@ -265,7 +266,8 @@ def test_list_shows_the_bundled_examples():
                    "piston-driven-slider-crank", "rolling-wheel", "six-link-homework-1",
                    "six-link-homework-3", "slotted-lever-p37", "velocity-homework-292",
                    "wheel-driven-slider", "wheel-round-circle", "whitworth", "compound-train",
-                   "planetary-q1", "planetary-q2", "planetary-q3", "planetary-q4"]
+                   "involute-pair", "planetary-q1", "planetary-q2", "planetary-q3",
+                   "planetary-q4"]
     assert "Four-bar crank-rocker" in result.stdout
 
 

@@ -264,3 +264,81 @@ def test_the_diagram_has_its_figure_and_its_steps():
     steps = s.steps()
     assert "## The velocity (Kutzbach) diagram (`kutzbach.svg`)" in steps
     assert "The planet 3–4 is one body: its line runs through P13 and" in steps
+
+
+# ----- the involute mesh -----------------------------------------------------------------------
+PAIR = (Path(bundled_trains()["involute-pair"])).read_text(encoding="utf-8")
+
+
+def test_the_drawn_mesh_reads_the_textbook_path_arc_and_contact_ratio():
+    """Module 10 mm, 20 and 40 teeth at 20°: the path of contact √(110² − 93.97²) +
+    √(210² − 187.9²) − 300 sin 20° = 48.27 mm, its arc 51.37 mm, the ratio 1.635."""
+    s = solved("involute-pair")
+    q = s.quantities
+    assert s.passed
+    assert q["path_of_contact"].si == pytest.approx(0.0482728, rel=1e-6)
+    assert q["arc_of_contact"].si == pytest.approx(0.0513709, rel=1e-6)
+    assert q["contact_ratio"].si == pytest.approx(1.635186, rel=1e-6)
+    for name in ("path_of_contact", "arc_of_contact", "contact_ratio", "pressure_angle"):
+        assert q[name].rel_error <= 1e-12, name         # a few roundings of one construction
+    assert s.mesh.interference == ()
+
+
+def test_every_drawn_profile_point_lies_on_its_involute_and_both_pass_p():
+    from tarsim.constructions.reference.gear_mesh import involute_miss
+
+    s = solved("involute-pair")
+    m = s.mesh
+    assert not s.profile_misses
+    p = m.construction.output("P").xy
+    for gear, base in ((2, m.radii["base2"]), (3, m.radii["base3"])):
+        assert involute_miss(p, m.centres[gear], base, m.starts[gear]) <= 1e-15
+        assert len(m.profiles[gear]) == 9
+
+
+def test_a_wider_centre_distance_keeps_the_ratio_and_leans_the_line_of_action():
+    """Fig 4 of the text: O3 moved out to 305 mm, the base circles are as they were, so the
+    pitch point still divides O2O3 as 1 : 2 and the ratio stays; the working pressure angle
+    grows to acos((93.97 + 187.94)/305) = 22.44°."""
+    import math
+
+    text = PAIR.replace("pressure_angle = 20", "pressure_angle = 20\ncentre_distance = 305")
+    s = solve_train(parse_train(text, "pair.toml"))
+    assert s.passed
+    assert s.quantities["omega3/omega2"].exact == F(-1, 2)
+    want = math.acos(0.300 * math.cos(math.radians(20)) / 0.305)
+    assert s.mesh.pressure_angle == pytest.approx(want, rel=1e-12)
+    c = s.mesh.construction
+    o2p = c.output("P").xy[0]
+    assert (0.305 - o2p) / o2p == pytest.approx(2.0, rel=1e-12)       # O3P′/O2P′ = ω2/ω3
+
+
+def test_a_small_pinion_interferes_as_the_formula_says():
+    """12 teeth against 60 at 20°: fewer than the 16 a 1 : 5 pair needs; the wheel's tips
+    reach past T2 into the pinion's flank, in the drawing and by the formula."""
+    from tarsim.constructions.reference.gear_mesh import least_teeth
+
+    text = PAIR.replace("teeth = 20", "teeth = 12").replace("teeth = 40", "teeth = 60")
+    s = solve_train(parse_train(text, "pair.toml"))
+    assert least_teeth(5, 20) == 16
+    assert s.mesh.interference == s.mesh_reference.interference == (3,)
+    assert s.quantities["interference"].passed
+    assert "the tips of gear 3 cut into the other's flank" in "\n".join(s.lines())
+
+
+@pytest.mark.parametrize("old, new, words", [
+    ("module = 10\n\n[[gear]]", "\n[[gear]]", ["give gear 2 (pinion) and gear 3 (wheel) their "
+                                              "module"]),
+    ("pressure_angle = 20", "pressure_angle = 60", ["a pressure angle of 60° is not a gear's"]),
+    ("pressure_angle = 20", "pressure_angle = 20\ncentre_distance = 250",
+     ["the centre distance 250 mm leaves no line of action"]),
+    ("gears = [2, 3]             # the driver first", "gears = [2, 5]",
+     ["there is no gear 5"]),
+])
+def test_a_bad_involute_mesh_is_refused_in_one_line(old, new, words):
+    assert old in PAIR
+    with pytest.raises(InputError) as e:
+        solve_train(parse_train(PAIR.replace(old, new, 1), "pair.toml"))
+    assert "\n" not in str(e.value)
+    for w in words:
+        assert w in str(e.value), str(e.value)

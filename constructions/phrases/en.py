@@ -100,6 +100,32 @@ PHRASES: dict[str, str] = {
                        "{known} crosses that level.",
     "kutzbach.read": "Read ω{member} = Δv/Δr, the slope of its line: {omega} rad/s{sense}, "
                      "{speed}.",
+    "involute.centres": "Mark the centres O{a} and O{b}, {distance} apart, and join them: the "
+                        "line of centres.",
+    "involute.pitch_point": "By the law of gearing the pitch point P divides O{a}O{b} as the "
+                            "base radii, N{a} : N{b} = {na} : {nb}: lay off O{a}P = {o2p}.",
+    "involute.circle": "Draw the {name}, radius {radius}.",
+    "involute.thales": "Draw the circle on diameter {centre}P (Thales): a tangent from P "
+                       "touches a circle about {centre} where this one cuts it.",
+    "involute.tangent_point": "It cuts the {base} at {point}, where the line of action touches "
+                              "it.",
+    "involute.line_of_action": "Join the tangency points: the line of action, the common "
+                               "internal tangent of the base circles of {a} and {b}, through P.",
+    "involute.common_tangent": "Through P draw the common tangent of the pitch circles, square "
+                               "to the line of centres; the line of action leans from it by "
+                               "the pressure angle.",
+    "involute.start": "The addendum circle of {b} cuts the line of action at A: contact "
+                      "begins there.",
+    "involute.end": "The addendum circle of {a} cuts it at B: contact ends there.",
+    "involute.path": "Measure the path of contact AB = {path}; the pressure angle reads "
+                     "{angle}, so the arc of contact is AB / cos φ = {arc}, and over the base "
+                     "pitch {pitch} the contact ratio is {ratio}.",
+    "involute.start_point": "For the tooth of {gear} through P: step the arc {t}{point} = P{t} "
+                            "= {length} back along its base circle to {point}, where the "
+                            "string starts.",
+    "involute.profile": "Divide the base circle of {gear} from {point} into {divisions} equal "
+                        "arcs of {arc}; at each division lay off the arc from {point} along "
+                        "the tangent, and join the points: the involute.",
     "gears.locked": "Row 1: lock the whole train, {arm} with it, and turn it +1 "
                     "(counter-clockwise): every member turns +1.",
     "gears.held": "Row 2: hold {arm} and turn {fixed}, the fixed member, −1 turn:",
