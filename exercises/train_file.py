@@ -142,9 +142,9 @@ class _Reader:
             if not isinstance(t, dict):
                 raise self.fail("each [[gear]] must be a table", "gear", index=i)
             for k in t:
-                if k not in ("number", "name", "teeth", "module", "carrier"):
+                if k not in ("number", "name", "teeth", "module", "diametral_pitch", "carrier"):
                     raise self.fail(f"unknown gear setting '{k}'; expected number, name, teeth, "
-                                    "module, carrier", "gear", k, i)
+                                    "module (or diametral_pitch), carrier", "gear", k, i)
             for k in ("number", "teeth"):
                 if k not in t:
                     raise self.fail(f"a gear needs its {k}", "gear", index=i)
@@ -152,6 +152,16 @@ class _Reader:
             if any(g.number == n for g in out):
                 raise self.fail(f"gear {n} is listed twice", "gear", "number", i)
             module = None
+            if "module" in t and "diametral_pitch" in t:
+                raise self.fail("give a gear's module or its diametral pitch, not both", "gear",
+                                "diametral_pitch", i)
+            if "diametral_pitch" in t:     # P teeth per inch of pitch diameter: m = 1 in / P
+                pitch = self.exact(t["diametral_pitch"], "a diametral pitch", "gear",
+                                   "diametral_pitch", i)
+                if pitch <= 0:
+                    raise self.fail("a diametral pitch must be positive", "gear",
+                                    "diametral_pitch", i)
+                module = Fraction(254, 10000) / pitch
             if "module" in t:
                 module = self.exact(t["module"], "a module", "gear", "module", i)
                 if module <= 0:

@@ -342,3 +342,10 @@ def test_a_bad_involute_mesh_is_refused_in_one_line(old, new, words):
     assert "\n" not in str(e.value)
     for w in words:
         assert w in str(e.value), str(e.value)
+
+
+def test_a_diametral_pitch_is_a_module_of_one_inch_over_it():
+    text = PAIR.replace("module = 10", "diametral_pitch = 2.54")     # 10 mm exactly
+    s = solve_train(parse_train(text, "pair.toml"))
+    assert s.train.gear(2).module == F(1, 100)
+    assert s.quantities["contact_ratio"].si == pytest.approx(1.635186, rel=1e-6)
