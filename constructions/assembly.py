@@ -369,21 +369,16 @@ class _Assembler:
         r = s.contact.circle.radius
         rolled = -s.contact.roll_sign * r * self.theta
         start = self.c.give(f"roll:{d.link}", g.Point(*s.through), label="", kind=Kind.POINT)
-        k = self.m.link(d.link)
         self.found(s.point, "lay_off", start, self.guides[i], length=rolled,
-                   said=phrase("position.wheel_input", link=d.link,
-                               name=phrase("link_name", name=k.name) if k.name else None,
+                   said=phrase("position.wheel_input", link=d.link, name=self.link_name(d.link),
                                point=s.point, face=s.contact.face.through,
                                turn=self.angle(abs(self.theta)),
                                sense=Word("counter-clockwise" if self.theta > 0 else "clockwise"),
                                rolled=self.length(abs(rolled)), radius=self.length(r),
                                way=Word("forward" if rolled >= 0 else "back")))
-        x, y = self.c.output(self.known[s.point]).xy
-        ux, uy = math.cos(self.theta), math.sin(self.theta)
-        self.axes[d.link] = self.c.give(
-            f"axis:{d.link}", g.Line(-uy, ux, uy * x - ux * y), label=f"link {d.link}",
-            kind=Kind.GUIDE, phrase=phrase("position.wheel_axis", point=s.point, link=d.link,
-                                           angle=self.angle(self.theta)))
+        self.wheel_axis(d.link, self.c.output(self.known[s.point]).xy, self.theta,
+                        phrase("position.wheel_axis", point=s.point, link=d.link,
+                               angle=self.angle(self.theta)))
 
     # ----- rules: each locates something and returns True, or returns False -----
     @dyad_rule("a point of a drawn link", 0)
@@ -582,17 +577,11 @@ class _Assembler:
             r = s.contact.circle.radius
             turn = -rolled / (s.contact.roll_sign * r)
             wheel = phi + turn
-            k = self.m.link(s.link)
             sense = "clockwise" if turn < 0 else "counter-clockwise"
-            self.axes[s.link] = self.c.give(
-                f"axis:{s.link}", g.Line(-math.sin(wheel), math.cos(wheel),
-                                         math.sin(wheel) * px - math.cos(wheel) * py),
-                label=f"link {s.link}", kind=Kind.GUIDE,
-                phrase=phrase("position.wheel_rolls", link=s.link,
-                              name=phrase("link_name", name=k.name) if k.name else None,
-                              point=s.point, rolled=self.length(abs(rolled)),
-                              turn=self.angle(abs(turn)), sense=Word(sense),
-                              radius=self.length(r)))
+            self.wheel_axis(s.link, (px, py), wheel, phrase(
+                "position.wheel_rolls", link=s.link, name=self.link_name(s.link),
+                point=s.point, rolled=self.length(abs(rolled)), turn=self.angle(abs(turn)),
+                sense=Word(sense), radius=self.length(r)))
             return True
         return False
 
@@ -617,19 +606,28 @@ class _Assembler:
             r = a.contact.circle.radius
             turn = a.roll_gain * beta / r
             wheel = phi + turn
-            k = self.m.link(a.link)
-            self.axes[a.link] = self.c.give(
-                f"axis:{a.link}", g.Line(-math.sin(wheel), math.cos(wheel),
-                                         math.sin(wheel) * px - math.cos(wheel) * py),
-                label=f"link {a.link}", kind=Kind.GUIDE,
-                phrase=phrase("position.wheel_rolls_round", link=a.link,
-                              name=phrase("link_name", name=k.name) if k.name else None,
-                              point=a.point, centre=a.centre, beta=self.angle(beta),
-                              turn=self.angle(turn), ratio=Word(
-                                  "(R + r)/r" if a.contact.side == "outside" else "(r − R)/r"),
-                              big=self.length(a.contact.face.radius), radius=self.length(r)))
+            self.wheel_axis(a.link, (px, py), wheel, phrase(
+                "position.wheel_rolls_round", link=a.link, name=self.link_name(a.link),
+                point=a.point, centre=a.centre, beta=self.angle(beta), turn=self.angle(turn),
+                ratio=Word("(R + r)/r" if a.contact.side == "outside" else "(r − R)/r"),
+                big=self.length(a.contact.face.radius), radius=self.length(r)))
             return True
         return False
+
+    def wheel_axis(self, link: int, at: tuple[float, float], angle: float,
+                   said: Phrase) -> None:
+        """Draw a wheel's axis through its centre ``at``, at the ``angle`` rolling turned it
+        to: the line its other points are laid off from."""
+        x, y = at
+        self.axes[link] = self.c.give(
+            f"axis:{link}", g.Line(-math.sin(angle), math.cos(angle),
+                                   math.sin(angle) * x - math.cos(angle) * y),
+            label=f"link {link}", kind=Kind.GUIDE, phrase=said)
+
+    def link_name(self, number: int) -> Phrase | None:
+        """A link's name as a step adds it after the number: " (wheel)"."""
+        k = self.m.link(number)
+        return phrase("link_name", name=k.name) if k.name else None
 
     def pose_of(self, number: int) -> tuple[float, tuple[float, float]] | None:
         """(angle, origin) of a drawn link, or None if it is not drawn yet."""
