@@ -116,8 +116,8 @@ _angle = click.option("--angle", type=float, default=None, metavar="ANGLE",
 def cli():
     """Graphical kinematics of planar mechanisms, drawn as textbook figures.
 
-    FILE is a mechanism file (TOML, see the README) or the id of a bundled
-    example; `tarsim list` shows the bundled ones.
+    FILE is a mechanism or gear-train file (TOML, see the README) or the id
+    of a bundled example; `tarsim list` shows the bundled ones.
 
     \b
     Example:
@@ -224,12 +224,19 @@ def solve(source, out_dir, angle, pdf, paper):
     page that one sheet cannot hold runs on over two or more (a page each in
     its PDF, one under another in its SVG).
 
+    A gear-train file ([[gear]] tables) is solved as the notes do it: speeds
+    in exact fractions through an ordinary train, or by the tabular method
+    in a planetary one, each checked by the Willis equations; it writes
+    table (or train-value), kutzbach (the velocity diagram of a planetary
+    train) and mesh (the involute mesh, with [involute]).
+
     \b
     Example:
       tarsim solve four-bar -o four-bar-solution
       tarsim solve crank-shaper -o shaper      # θ2 = 90° and t = 2.34 s
       tarsim solve my-exercise.toml --angle 120 --no-pdf
       tarsim solve whitworth --paper A3          # the worked page on one sheet
+      tarsim solve planetary-q1                  # the notes' planetary Q1
 
     The exit status is 3 if any constructed number disagrees with the analytic
     one beyond the tolerance its conditioning allows (the files are written all
