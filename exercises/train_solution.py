@@ -19,7 +19,7 @@ from ..constructions.gears.involute import InvoluteMesh, draw_involute_mesh
 from ..constructions.gears.kutzbach import Kutzbach, draw_kutzbach
 from ..constructions.gears.tabular import TrainSpeeds, fraction_text, tabulate
 from ..constructions.gears.torques import balance, say_balance
-from ..constructions.narration import narrate
+from ..constructions.narration import narrate, significant
 from ..constructions.reference.gear_mesh import MeshReference, involute_miss, mesh_reference
 from ..constructions.reference.willis import willis_speeds
 from ..graphics.svg import to_svg
@@ -237,7 +237,7 @@ class TrainSolution:
         """The table's heads and rows, as the notes set them (speeds in the file's unit)."""
         train, found, unit = self.train, self.found, self.train.units.speed
         heads = [_head(train, m) for m in train.members]
-        speeds = [fraction_text(found.speeds[m]) for m in train.members]
+        speeds = [significant(float(found.speeds[m])) for m in train.members]
         t = found.table
         if t is None:
             return heads, [(f"speed ({unit}, ccw +)", speeds)]
@@ -252,11 +252,12 @@ class TrainSolution:
         """Each figure by its file stem: the table (or the speeds of an ordinary train)."""
         heads, rows = self._table()
         unit = self.train.units.speed
-        notes = [f"Speeds in {unit}, counter-clockwise positive; each is the same fraction "
-                 "by the Willis equations solved as a linear system."]
+        notes = [f"Speeds in {unit}, counter-clockwise positive. Each is checked by the "
+                 "Willis equation of every mesh, solved as one linear system: the same "
+                 "fraction."]
         ruled = (2, 3) if self.found.table else ()
-        title = f"{self.train.name}: " + ("the tabular method" if self.found.table
-                                          else "speeds through the train")
+        title = (f"{self.train.name}: the tabular method" if self.found.table
+                 else self.train.name)
         out = {self._stem: draw_train_table(title, heads, rows, ruled=ruled, notes=notes)}
         if self.diagram is not None:
             out["kutzbach"] = draw_kutzbach_figure(self.train, self.diagram, self.train.name)

@@ -32,7 +32,8 @@ from .figure import Circle, Figure, Path, Text, View, arc_points
 from .labels import LabelPlacer, subscript
 from .scales import draw_caption
 from .symbols import (PIN_RADIUS, draw_block, draw_curved_guide, draw_curved_slot,
-                      draw_ground_pivot, draw_guide, draw_pin, draw_turning_arrow, mark_angle,
+                      draw_ground_pivot, draw_guide, draw_hatched_arc, draw_pin, draw_turning_arrow,
+                      mark_angle,
                       unit)
 
 __all__ = ["draw_kinematic_diagram", "input_caption", "subscript"]
@@ -266,10 +267,18 @@ class _Diagram:
             for n in (k.slide.point, k.slide.contact.face.through):
                 if self.marked(n):
                     self.draw_dot(self.paper[n])
-        for k in self.pairs:
+        for k, a in zip(self.pairs, [a for a in self.m.arcs if a.contact is not None]):
             self.draw_circle(k.cam, k.cam_radius)
             self.draw_circle(k.roller, k.roller_radius)
             self.draw_dot(self.view(k.point))
+            if a.rolling and a.guide_link == 1:
+                # The fixed circle a wheel rolls round is the ground: hatched on its far
+                # side from the wheel, either way of the contact.
+                c, p = self.view(k.cam), self.view(k.point)
+                at = math.atan2(c[1] - p[1], p[0] - c[0])
+                self.placer.block(draw_hatched_arc(
+                    self.fig, c, k.cam_radius * self.view.scale, at - 0.7, 1.4,
+                    inward=a.contact.side == "outside"))
         # A cam's centre and a centre of curvature are bare dots, unless a link is pinned there.
         for n in dict.fromkeys(a.centre for a in self.m.arcs):
             if self.marked(n):

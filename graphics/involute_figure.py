@@ -2,9 +2,10 @@
 
 The window holds the line of action from one tangency point to the other, the path of
 contact and both tooth profiles; the gears' circles cross it as arcs (pitch circles
-dash-dotted, base circles dashed, addendum and root circles thin), the line of centres runs
-across it toward O2 and O3. The path of contact is drawn heavy, the pressure angle marked
-at P between the common tangent and the line of action.
+dash-dotted as centre lines, base circles dashed, addendum and root circles thin grey), the
+line of centres runs across it toward O2 and O3. The line of action is solid, the path of
+contact heavy, the pressure angle marked at P between the common tangent and the line of
+action.
 """
 
 from __future__ import annotations
@@ -21,7 +22,9 @@ from .symbols import mark_angle
 __all__ = ["draw_involute_figure"]
 
 _ROOM = (190.0, 120.0)     # paper (mm) the window is fitted to
-_STYLE = {"pitch": "reference", "base": "construction", "addendum": "gauge", "root": "gauge"}
+_STYLE = {"pitch": "construction", "base": "reference", "addendum": "gauge", "root": "gauge"}
+"""How each circle is drawn: pitch circles dash-dotted as centre lines, base circles dashed,
+addendum and root circles thin."""
 
 
 def draw_involute_figure(train: GearTrain, mesh: InvoluteMesh, title: str) -> Figure:
@@ -61,14 +64,14 @@ def draw_involute_figure(train: GearTrain, mesh: InvoluteMesh, title: str) -> Fi
     # The line of centres across the window, toward O2 and O3.
     y = 0.0
     left, right = paper((x0, y)), paper((x1, y))
-    fig.add(Path((left, right), "reference"))
+    fig.add(Path((left, right), "working"))
     for name, at, side in ((f"to {c['O2'].label}", left, math.pi), (f"to {c['O3'].label}",
                                                                     right, 0.0)):
         placer.place(subscript(name), at, prefer=side, spread=0.5, gap=1.0, size=3.0,
                      italic=False)
     # The line of action, the common tangent, the path of contact.
     t2, t3 = paper(c.output("T2").xy), paper(c.output("T3").xy)
-    _line(fig, placer, [t2, t3], "gauge")
+    _line(fig, placer, [t2, t3], "vector")
     p = paper(c.output("P").xy)
     u = paper(c.output("U").xy)
     du = (u[0] - p[0], u[1] - p[1])
@@ -76,14 +79,14 @@ def draw_involute_figure(train: GearTrain, mesh: InvoluteMesh, title: str) -> Fi
     reach = 0.45 * math.dist(t2, t3)
     a_tan = (p[0] - reach * du[0] / n, p[1] - reach * du[1] / n)
     b_tan = (p[0] + reach * du[0] / n, p[1] + reach * du[1] / n)
-    _line(fig, placer, [a_tan, b_tan], "construction")
+    _line(fig, placer, [a_tan, b_tan], "working")
     a, b = paper(c.output("A").xy), paper(c.output("B").xy)
     fig.add(Path((a, b), "vector_result"))
     placer.block_segment(a, b, 1.0)
     # The pressure angle at P, from the common tangent to the line of action.
     up = math.atan2(-(b_tan[1] - p[1]), b_tan[0] - p[0])
     act = math.atan2(-(t3[1] - p[1]), t3[0] - p[0])
-    mid = mark_angle(fig, p, 9.0, up, act - up)
+    mid = mark_angle(fig, p, 9.0, up, act)
     placer.place("φ", mid, prefer=(up + act) / 2, gap=1.0, size=3.2)
     # The tooth profiles, each through P.
     for refs in mesh.profiles.values():
@@ -100,14 +103,16 @@ def draw_involute_figure(train: GearTrain, mesh: InvoluteMesh, title: str) -> Fi
             placer.place(subscript(c[ref].label), paper(c.output(ref).xy),
                          prefer=(0.8, 2.4, -0.8, -2.4), gap=1.2, size=3.2)
     pa, wa = (train.gear(n) for n in mesh.centres)
-    draw_caption(fig, f"{train.name}: the involute mesh",
+    draw_caption(fig, train.name,
                  [f"module {float(pa.module) * 1e3:g} mm, {pa.teeth} and {wa.teeth} teeth, "
                   f"pressure angle {math.degrees(mesh.pressure_angle):.4g}°",
                   f"path of contact AB = {mesh.path * 1e3:.4g} mm, contact ratio "
                   f"{mesh.contact_ratio:.4g}"],
                  per_cm=per_cm, unit="mm",
-                 legend=(("reference", "pitch circles"), ("construction", "base circles"),
-                         ("gauge", "addendum, root circles; line of action")))
+                 legend=(("construction", "pitch circles"), ("reference", "base circles"),
+                         ("gauge", "addendum and root circles"), ("vector", "line of action"),
+                         ("working", "line of centres, common tangent"),
+                         ("vector_result", "path of contact"), ("link", "tooth profiles")))
     return fig
 
 

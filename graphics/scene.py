@@ -214,18 +214,6 @@ class _Scene(_Diagram):
                 pts = [p for j, p in self.points if j == i]
                 b = [min([b[0]] + [p[0] for p in pts]), min([b[1]] + [p[1] for p in pts]),
                      max([b[2]] + [p[0] for p in pts]), max([b[3]] + [p[1] for p in pts])]
-        # A circle's arc is drawn whole where the frame can grow to take it in (the circle
-        # on a diameter, in Klein's construction); one about a far centre is cut at the edge.
-        for step in self.steps:
-            if isinstance(step.output, g.Circle):
-                start, sweep, _ = self.arc_of(step)
-                (cx, cy), r = step.output.centre.xy, step.output.radius
-                pts = [(cx + r * math.cos(start + sweep * t / 32),
-                        cy + r * math.sin(start + sweep * t / 32)) for t in range(33)]
-                grown = [min([b[0]] + [p[0] for p in pts]), min([b[1]] + [p[1] for p in pts]),
-                         max([b[2]] + [p[0] for p in pts]), max([b[3]] + [p[1] for p in pts])]
-                if max(grown[2] - grown[0], grown[3] - grown[1]) <= cap * (1 + 1e-12):
-                    b = grown
         # A flat mechanism (all its pins in a line) still gets room for its labels.
         least = 0.4 * extent
         for lo, hi in ((0, 2), (1, 3)):
@@ -277,6 +265,11 @@ class _Scene(_Diagram):
         lo, hi = span_line(base, d, stops, _LONE)
         self.lines.append(([step], clip_line(base, d, lo, hi, self.clip)))
 
+    def within(self, pts) -> bool:
+        """True if every paper point lies in the frame's clip box."""
+        x0, y0, x1, y1 = self.clip
+        return all(x0 <= x <= x1 and y0 <= y <= y1 for x, y in pts)
+
     def arc_of(self, step: Step) -> tuple[float, float, list[tuple[int, tuple]]]:
         """The arc a circle is drawn as, (start, sweep) in world angles, and the points it
         runs through: the whole circle through none, a compass trace through one (neither
@@ -302,6 +295,14 @@ class _Scene(_Diagram):
         cw = circle.centre.xy
         c, r = self.view(cw), circle.radius * self.view.scale
         start, sweep, on = self.arc_of(step)
+        if on and step.kind is not Kind.SWING and not self.within(arc_points(c, r, start, sweep)):
+            # An arc the frame would cut (Klein's circle on the rod) is drawn as a draftsman
+            # draws it: a compass trace through each point on it, and no more.
+            half = min(_TRACE / r, math.radians(20))
+            for _, p in on:
+                at = math.atan2(p[1] - cw[1], p[0] - cw[0])
+                self.arcs.append((step, arc_points(c, r, at - half, 2 * half), False))
+            return
         swung = step.kind is Kind.SWING and bool(on)
         if swung:
             # The swung-to end is the point located last that is neither a pin nor a
@@ -617,8 +618,11 @@ class _Scene(_Diagram):
                        for t in (0.92, 0.8, 0.68, 0.56, 0.44, 0.32, 0.2, 0.08)]
             self.label("", anchors, steps, prefer=(normal, normal + math.pi),
                        spread=math.pi / 4, gap=0.6)
-        for step, pts, _ in self.arcs:
-            self.label("", [pts[len(pts) // 2], pts[-1], pts[0]], [step], gap=0.6)
+        numbered: set[str] = set()
+        for step, pts, _ in self.arcs:        # a circle drawn as traces is numbered once
+            if step.id not in numbered:
+                numbered.add(step.id)
+                self.label("", [pts[len(pts) // 2], pts[-1], pts[0]], [step], gap=0.6)
 
     def caption(self) -> None:
         """The diagram's caption, with the velocity scale, a legend of lines and the notes."""

@@ -56,6 +56,16 @@ def draw_hatched_band(fig: Figure, a: tuple[float, float], b: tuple[float, float
     return _hatch(fig, band)
 
 
+def draw_hatched_arc(fig: Figure, centre: tuple[float, float], radius: float, start: float,
+                     sweep: float, *, inward: bool, depth: float = 2.0) -> Polygon:
+    """Hatch a band of ``depth`` mm along an arc (paper angles, rad), inside the circle or
+    outside it: a fixed circular profile, ground as a straight face is. Returns its outline."""
+    edge = arc_points(centre, radius, start, sweep)
+    back = arc_points(centre, radius - depth if inward else radius + depth, start + sweep,
+                      -sweep)
+    return _hatch(fig, Polygon(edge + back))
+
+
 def _hatch(fig: Figure, band: Polygon, lines: list | None = None) -> Polygon:
     """Draw ``lines`` clipped to ``band`` (by default 45° hatching across it); return it."""
     if lines is None:

@@ -165,8 +165,9 @@ class _Diagram:
         name, size = self.level_of(m)
         r = float(size) * self.metre
         lvl = self.level(name, size, t.label(m))
+        # The arm's velocity at R is the planets' centre's: it goes by that name, C.
         tip = self.act(f"kz:v:{m}", "lay_off", f"kz:r:{name}", lvl, length=w * r * self.k.per,
-                       label=f"v{m}", said=phrase(
+                       label="C" if m == t.arm else f"v{m}", said=phrase(
                            "kutzbach.input", member=t.label(m, opening=True), name=name,
                            omega=Number(abs(w)), radius=t.size_text(size),
                            sense="ccw" if w > 0 else "cw"))
