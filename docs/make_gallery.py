@@ -18,39 +18,40 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 import cairosvg  # noqa: E402
 
 import tarsim  # noqa: E402
-from tarsim.exercises.catalog import bundled  # noqa: E402
+from tarsim.exercises.catalog import bundled, bundled_trains  # noqa: E402
 from tarsim.graphics.svg import to_svg  # noqa: E402
 
 GALLERY = Path(__file__).resolve().parent / "gallery"
 WIDTH = 1000
 """Pixels across a PNG, at most: enough to read the labels, small enough to keep."""
 
-ORDER = ("klein", "worked", "V_", "centres", "limits", "mechanism")
+ORDER = ("klein", "worked", "V_", "centres", "limits", "mechanism", "mesh", "kutzbach", "table",
+         "train-value")
 """The kinds of figure in the order one is taken as an exercise's main figure."""
 
 
-def main_figure(pages):
-    """The page to show for a solution (see :data:`ORDER`)."""
+def main_figure(figures: dict):
+    """The figure to show for a solution (see :data:`ORDER`): its stem and the figure."""
     for start in ORDER:
-        found = [p for p in pages if p.stem.startswith(start)]
+        found = [stem for stem in figures if stem.startswith(start)]
         if found:
-            return found[0]
-    return pages[0]
+            return found[0], figures[found[0]]
+    return next(iter(figures.items()))
 
 
 def main() -> None:
     """Solve every bundled exercise and write its main figure as docs/gallery/<id>.png."""
     GALLERY.mkdir(exist_ok=True)
-    for name in bundled():
-        page = main_figure(tarsim.solve(tarsim.load(name)).pages)
-        svg = to_svg(page.figure)
-        width_mm = page.figure.width
+    for name in [*bundled(), *bundled_trains()]:
+        stem, figure = main_figure(tarsim.solve(tarsim.load(name)).figures)
+        svg = to_svg(figure)
+        width_mm = figure.width
         # 96 px an inch; a page narrower than WIDTH pixels keeps its true size.
         width = min(WIDTH, round(width_mm / 25.4 * 96 * 1.5))
         out = GALLERY / f"{name}.png"
         cairosvg.svg2png(bytestring=svg.encode("utf-8"), write_to=str(out), output_width=width,
                          background_color="white")
-        print(f"{out.relative_to(GALLERY.parent.parent)}  ({page.stem}, {width} px)")
+        print(f"{out.relative_to(GALLERY.parent.parent)}  ({stem}, {width} px)")
 
 
 if __name__ == "__main__":

@@ -248,6 +248,7 @@ class TrainSolution:
             ("total", [fraction_text(t.total[m], True) for m in t.members]),
             (f"× {fraction_text(t.scale)} {unit}: speed", speeds)]
 
+    @property
     def figures(self) -> dict[str, Any]:
         """Each figure by its file stem: the table (or the speeds of an ordinary train)."""
         heads, rows = self._table()
@@ -265,6 +266,7 @@ class TrainSolution:
             out["mesh"] = draw_involute_figure(self.train, self.mesh, self.train.name)
         return out
 
+    @property
     def results(self) -> dict[str, Any]:
         """results.json: every asked quantity in SI with its exact value and reference."""
         per = self.train.units.per_rad_s
@@ -295,10 +297,10 @@ class TrainSolution:
 
     def files(self) -> dict[str, str]:
         """Every file as text, by name: the figures' SVG, steps.md and results.json."""
-        figures = self.figures()
+        figures = self.figures
         files = {f"{stem}.svg": to_svg(fig) for stem, fig in figures.items()}
         files["steps.md"] = self.steps()
-        files["results.json"] = json.dumps(self.results(), indent=2, ensure_ascii=False) + "\n"
+        files["results.json"] = json.dumps(self.results, indent=2, ensure_ascii=False) + "\n"
         return files
 
     def write(self, folder: str | Path, *, pdf: bool = True) -> list[Path]:

@@ -258,7 +258,7 @@ def test_a_diagram_that_reads_a_speed_wrong_fails_the_solve():
 
 def test_the_diagram_has_its_figure_and_its_steps():
     s = solved("planetary-q4")
-    fig = s.figures()["kutzbach"]
+    fig = s.figures["kutzbach"]
     texts = [t.text for t in fig.items if hasattr(t, "text")]
     assert "ω₅ = 50 rpm ccw" in texts and "ω₆ = 225 rpm ccw" in texts
     steps = s.steps()

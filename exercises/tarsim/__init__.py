@@ -54,7 +54,8 @@ def solve(exercise: Exercise) -> WorkedSolution:
 
     The solution has ``.results`` (the results.json document), ``.figures``
     (file stem → figure, each with ``.save(path)``, shown inline in a notebook),
-    ``.steps(lang="en")`` (steps.md), ``.passed`` and ``.write(folder)``.
+    ``.steps()`` (steps.md), ``.passed`` and ``.write(folder)``; a gear train's
+    (``[[gear]]`` tables) the same, solved by the notes' tabular method.
 
     Raises
     ------
@@ -62,4 +63,8 @@ def solve(exercise: Exercise) -> WorkedSolution:
         If the mechanism cannot be assembled or a construction breaks down.
     """
     from tarsim.exercises.solution_files import solve_worked
+    from tarsim.exercises.train_file import TrainExercise
+    from tarsim.exercises.train_solution import solve_train
+    if isinstance(exercise, TrainExercise):     # a gear train: speeds by the notes' methods
+        return solve_train(exercise)
     return solve_worked(exercise)
