@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import json
 import math
+import re
 from dataclasses import dataclass
 from fractions import Fraction
 from functools import cached_property
@@ -25,6 +26,7 @@ from ..constructions.reference.willis import willis_speeds
 from ..graphics.svg import to_svg
 from ..graphics.involute_figure import draw_involute_figure
 from ..graphics.kutzbach_figure import draw_kutzbach_figure
+from ..graphics.train_schematic import draw_train_schematic
 from ..graphics.train_table import draw_train_table
 from .solution_files import write_solution
 from .train_file import MESH_ASKS, TrainExercise, ask_symbol
@@ -260,6 +262,11 @@ class TrainSolution:
         title = (f"{self.train.name}: the tabular method" if self.found.table
                  else self.train.name)
         out = {self._stem: draw_train_table(title, heads, rows, ruled=ruled, notes=notes)}
+        if self.train.planetary:
+            # The shafts that leave it: the members a ratio or a torque is asked of.
+            ends = {int(n) for q in self.exercise.asks if "/" in q or q.startswith("torque")
+                    for n in re.findall(r"\d+", q)}
+            out["train"] = draw_train_schematic(self.train, self.train.name, tuple(sorted(ends)))
         if self.diagram is not None:
             out["kutzbach"] = draw_kutzbach_figure(self.train, self.diagram, self.train.name)
         if self.mesh is not None:

@@ -349,3 +349,26 @@ def test_a_diametral_pitch_is_a_module_of_one_inch_over_it():
     s = solve_train(parse_train(text, "pair.toml"))
     assert s.train.gear(2).module == F(1, 100)
     assert s.quantities["contact_ratio"].si == pytest.approx(1.635186, rel=1e-6)
+
+
+def test_the_train_is_drawn_in_side_view_with_the_fixed_member_hatched():
+    from tarsim.graphics.figure import Path as FPath
+
+    s = solved("planetary-q4")
+    fig = s.figures["train"]
+    texts = {t.text for t in fig.items if hasattr(t, "text")}
+    assert {"1", "2", "3", "4", "5", "6"} <= texts
+    hatch = [it for it in fig.items if isinstance(it, FPath) and it.style == "hatch"]
+    assert hatch                                       # the fixed ring, held by its rims
+    boxes = [it for it in fig.items if isinstance(it, FPath) and it.style == "link" and it.closed]
+    assert len(boxes) == 2 * 2 + 1 + 2 * 2             # planets 3, 4 twice; sun; two rings' rims
+    # at 1 cm = 20 modules, planet 3 (60 teeth: 30 mm tall) stands at the carrier radius,
+    # 40 modules = 20 mm, above and below the main axis
+    assert "1 cm = 20 modules" in " ".join(texts)
+    tall = [b for b in boxes if abs(max(p[1] for p in b.points) - min(p[1] for p in b.points)
+                                    - 30.0) < 1e-9]
+    (axis,) = [it.points[0][1] for it in fig.items
+               if isinstance(it, FPath) and it.style == "reference"]
+    assert sorted(round((max(p[1] for p in b.points) + min(p[1] for p in b.points)) / 2 - axis,
+                        9) for b in tall) == [-20.0, 20.0]
+    assert "train" not in solved("compound-train").figures       # an ordinary train: no side view

@@ -1,0 +1,185 @@
+"""A gear train in the side-view symbols of the textbooks.
+
+The main axis is a centre line. A gear is a rectangle as tall as its pitch diameter about
+its own axis, its face across; a ring is its two rims, teeth inward, and a web out to its
+hub. A planet stands on the arm's pin at the carrier radius, drawn above the main axis and
+again below it. The arm is a bar from its hub out to the pin, on the side facing the input.
+The input's shaft and those of the members a ratio or torque is asked of leave along the
+axis, the first plane's to the left and the last's to the right. The fixed member is
+hatched to the ground: a ring by its rims, a sun by its face.
+
+The file gives no axial places, so gears in mesh share a plane and each further gear on a
+shaft takes the next; radii are to scale (in modules where no gear gives its module), the
+planes are not.
+"""
+
+from __future__ import annotations
+
+from ..constructions.gears.train import GearTrain
+from ..constructions.model import LENGTH_UNITS
+from .figure import Figure, Path
+from .labels import LabelPlacer
+from .scales import draw_caption, nice_per_cm
+from .symbols import draw_hatched_band
+
+__all__ = ["draw_train_schematic"]
+
+_PLANE = 18.0      # mm between axial planes
+_FACE = 6.0        # a gear's face, mm
+_RIM = 3.0         # a ring's rim, mm
+_ROOM = 55.0       # mm the farthest pitch line is drawn out to, at most
+_SHAFT = 14.0      # mm a shaft runs past the outermost plane
+
+
+def draw_train_schematic(train: GearTrain, title: str, outputs: tuple[int, ...] = ()) -> Figure:
+    """The side view of ``train``, with its caption and radius scale; the input's shaft and
+    those of ``outputs`` leave the drawing along the main axis."""
+    plane = _planes(train)
+    unit = train.units.length if train.sized else "modules"
+    per_unit = 1.0 / LENGTH_UNITS[unit] if train.sized else 1.0
+    radius = {g.number: float(train.pitch_radius(g.number)) * per_unit for g in train.gears}
+    axis = {m: y * per_unit for m, y in _axes(train).items()}
+    reach = max(abs(axis[m]) + r for m, r in radius.items())
+    per_cm = nice_per_cm(reach, _ROOM)
+    mm = 10.0 / per_cm
+    fig = Figure(0.0, 0.0, title=title)
+    placer = LabelPlacer(fig)
+    xs = [p * _PLANE for p in plane.values()]
+    left, right = min(xs) - _SHAFT, max(xs) + _FACE + _SHAFT
+    fig.add(Path(((left - 4.0, 0.0), (right + 4.0, 0.0)), "reference"))
+    rings = {g.number for g in train.gears if _is_ring(train, g.number)}
+    fixed = set(train.body(train.fixed)) if train.fixed is not None else set()
+    labels: list[tuple[str, tuple[float, float]]] = []
+
+    def box(x: float, y0: float, y1: float) -> None:
+        pts = ((x, y0), (x + _FACE, y0), (x + _FACE, y1), (x, y1))
+        fig.add(Path(pts, "link", closed=True))
+        placer.block_path([*pts, pts[0]], 0.6)
+
+    for g in train.gears:
+        x, r, y = plane[g.number] * _PLANE, radius[g.number] * mm, -axis[g.number] * mm
+        if g.number in rings:
+            for s in (1.0, -1.0):                     # the two rims, teeth toward the axis
+                box(x, s * r, s * (r + _RIM))
+            web = x + _FACE
+            if g.number in fixed:                     # held by its rims to the housing
+                for s in (1.0, -1.0):
+                    edge = s * (r + _RIM)
+                    draw_hatched_band(fig, (x - 2.0, edge), (web + 2.0, edge), (0.0, s))
+            else:                                     # a web out to its hub on the axis
+                fig.add(Path(((web, -(r + _RIM)), (web + 3.0, -(r + _RIM)),
+                              (web + 3.0, r + _RIM), (web, r + _RIM)), "link"))
+            labels.append((str(g.number), (web, -(r + _RIM / 2))))
+            continue
+        ys = (y, -y) if train.planetary and train.carried(g.number) else (y,)
+        for cy in ys:
+            box(x, cy - r, cy + r)
+        if g.number in fixed:                          # a fixed sun: its face held
+            draw_hatched_band(fig, (x, y - r), (x, y + r), (-1.0, 0.0), depth=2.5)
+        labels.append((str(g.number), (x + _FACE, y - 0.5 * r)))
+    _shafts(train, fig, plane, axis, mm, (left, right), rings,
+            (train.input_member, *outputs))
+    if train.arm is not None and train.planetary:
+        xa = plane[train.arm] * _PLANE + _FACE / 2
+        pin = -axis[next(g.number for g in train.gears if g.carrier is not None)] * mm
+        reach_x = max(plane[g.number] for g in train.gears if train.carried(g.number)) * _PLANE
+        for cy in (pin, -pin):
+            fig.add(Path(((xa, 0.0), (xa, cy), (reach_x + _FACE, cy)), "link"))
+        if train.arm in fixed:
+            draw_hatched_band(fig, (xa, pin), (xa, -pin), (-1.0, 0.0))
+        labels.append((str(train.arm), (xa, 0.5 * pin)))
+    for text, at in labels:
+        placer.place(text, at, prefer=(0.0, 3.1416, 1.57), spread=0.7, gap=1.5, size=3.6,
+                     italic=False)
+    held = (f"member {train.fixed} fixed (hatched)" if train.fixed is not None
+            else "every axis fixed in the housing")
+    draw_caption(fig, f"{train.name}: the train", [held, "radii to scale, the planes apart"],
+                 per_cm=per_cm, unit=unit, scale_name="Radius scale")
+    return fig
+
+
+def _is_ring(train: GearTrain, number: int) -> bool:
+    """True for a gear that another meshes inside (the one of more teeth in an internal
+    mesh)."""
+    return any(m.internal and number in (m.a, m.b) and train.gear(number).teeth == max(
+        train.gear(m.a).teeth, train.gear(m.b).teeth) for m in train.meshes)
+
+
+def _shafts(train: GearTrain, fig: Figure, plane, axis, mm: float, span: tuple[float, float],
+            rings: set[int], ends: tuple[int, ...]) -> None:
+    """The shafts: a compound gear's between its planes, and those of ``ends`` (the input
+    and the outputs) out along the main axis."""
+    for body in train.bodies:
+        gears = [m for m in body if m != train.arm]
+        if len(gears) > 1:                          # gears on one shaft: joined between planes
+            y = -axis[gears[0]] * mm
+            a = min(plane[m] for m in gears) * _PLANE + _FACE
+            b = max(plane[m] for m in gears) * _PLANE
+            for cy in ((y, -y) if train.planetary and train.carried(gears[0]) else (y,)):
+                fig.add(Path(((a, cy), (b, cy)), "link"))
+    # The shafts that leave along the main axis: the input's and the outputs', the first
+    # (by plane) to the left and the last to the right.
+    leaving = sorted({train.body(m)[0] for m in ends
+                      if not (train.fixed is not None and m in train.body(train.fixed))
+                      and not (train.planetary and train.carried(m))
+                      and (m == train.arm or axis.get(m, 0.0) == 0.0)},
+                     key=lambda m: plane[m])
+    for k, m in enumerate(leaving[:1] + leaving[1:][-1:]):
+        x = plane[m] * _PLANE
+        if k == 0 and (len(leaving) > 1 or m == train.arm):
+            fig.add(Path(((span[0], 0.0), (x + (_FACE / 2 if m == train.arm else 0.0), 0.0)),
+                         "link"))
+        else:
+            start = x + _FACE + (3.0 if m in rings else 0.0)
+            fig.add(Path(((start, 0.0), (span[1], 0.0)), "link"))
+
+
+def _planes(train: GearTrain) -> dict[int, int]:
+    """An axial plane for each member: gears in mesh share one, each further gear on a
+    shaft takes the next, the arm the one before them all."""
+    plane: dict[int, int] = {}
+    todo: list[int] = []
+    for g in train.gears:
+        if g.number in plane:
+            continue
+        plane[g.number] = max(plane.values(), default=0) + 1
+        todo.append(g.number)
+        while todo:
+            m = todo.pop(0)
+            for mesh in train.meshes:
+                for a, b in ((mesh.a, mesh.b), (mesh.b, mesh.a)):
+                    if a == m and b not in plane:
+                        plane[b] = plane[m]
+                        todo.append(b)
+            for k in train.body(m):
+                if k not in plane and k != train.arm:
+                    plane[k] = max(plane.values()) + 1
+                    todo.append(k)
+    if train.arm is not None:
+        plane[train.arm] = 0
+    return plane
+
+
+def _axes(train: GearTrain) -> dict[int, float]:
+    """Each gear's axis above the main axis (size units): 0 on the main axis, the carrier
+    radius for a planet; in an ordinary train the first gear's at 0 and each next one a
+    centre distance above the one that drives it."""
+    y: dict[int, float] = {train.gears[0].number: 0.0}
+    grew = True
+    while grew:
+        grew = False
+        for mesh in train.meshes:
+            for a, b in ((mesh.a, mesh.b), (mesh.b, mesh.a)):
+                if a in y and b not in y:
+                    ra, rb = (float(train.pitch_radius(n)) for n in (a, b))
+                    if train.planetary and not train.carried(b):
+                        y[b] = 0.0
+                    else:
+                        y[b] = y[a] + (abs(ra - rb) if mesh.internal else ra + rb)
+                    grew = True
+        for g in train.gears:
+            for k in train.body(g.number):
+                if g.number not in y and k in y and k != train.arm:
+                    y[g.number] = y[k]
+                    grew = True
+    return {g.number: y.get(g.number, 0.0) for g in train.gears}
