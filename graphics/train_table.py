@@ -9,6 +9,7 @@ and above the total.
 
 from __future__ import annotations
 
+import re
 from collections.abc import Sequence
 
 from .figure import Figure, Path, Text, text_width, wrap_text
@@ -19,6 +20,38 @@ _SIZE = 3.4        # cell text, mm
 _ROW = 6.4         # row pitch, mm
 _PAD = 7.0         # white between columns, mm
 _MARGIN = 10.0
+_TALL = 9.6        # the pitch of a row that holds a stacked fraction, mm
+_FRACTION = re.compile(r"([+−]?)(\d+)/(\d+)")
+"""A cell the notes set as a fraction: a sign, then the numerator over the denominator."""
+
+
+def _cell_width(text: str) -> float:
+    m = _FRACTION.fullmatch(text)
+    if m is None:
+        return text_width(text, _SIZE)
+    sign, num, den = m.groups()
+    return text_width(sign, _SIZE) + max(text_width(num, _SIZE), text_width(den, _SIZE)) + 0.6
+
+
+def _set_cell(fig: Figure, text: str, at: tuple[float, float]) -> None:
+    """Set a cell centred at ``at``: a fraction stacked, numerator over a bar over the
+    denominator, its sign before it; anything else on the line."""
+    m = _FRACTION.fullmatch(text)
+    if m is None:
+        fig.add(Text(at, text, _SIZE, "middle", False))
+        return
+    sign, num, den = m.groups()
+    x, y = at
+    w = _cell_width(text)
+    s = text_width(sign, _SIZE)
+    bar = max(text_width(num, _SIZE), text_width(den, _SIZE)) + 0.6
+    left = x - w / 2
+    if sign:
+        fig.add(Text((left + s / 2, y), sign, _SIZE, "middle", False))
+    mid = left + s + bar / 2
+    fig.add(Text((mid, y - 2.1), num, _SIZE, "middle", False))
+    fig.add(Path(((left + s, y), (left + s + bar, y)), "dimension"))
+    fig.add(Text((mid, y + 2.3), den, _SIZE, "middle", False))
 
 
 def draw_train_table(title: str, heads: Sequence[str], rows: Sequence[tuple[str, Sequence[str]]],
@@ -27,7 +60,7 @@ def draw_train_table(title: str, heads: Sequence[str], rows: Sequence[tuple[str,
     index in ``ruled``; ``title`` over it and ``notes`` under it."""
     names = [name for name, _ in rows]
     first = max(text_width(n, _SIZE) for n in [*names, ""])
-    widths = [max(text_width(c, _SIZE) for c in [h, *(cells[k] for _, cells in rows)])
+    widths = [max([text_width(h, _SIZE)] + [_cell_width(cells[k]) for _, cells in rows])
               for k, h in enumerate(heads)]
     lefts = [_MARGIN + first + _PAD + sum(widths[:k]) + _PAD * k for k in range(len(heads))]
     right = lefts[-1] + widths[-1] if heads else _MARGIN + first
@@ -38,13 +71,16 @@ def draw_train_table(title: str, heads: Sequence[str], rows: Sequence[tuple[str,
     for k, h in enumerate(heads):
         fig.add(Text((lefts[k] + widths[k] / 2, y), h, _SIZE, "middle", False, "bold"))
     fig.add(Path(((_MARGIN, y + 0.5 * _ROW), (right, y + 0.5 * _ROW)), "dimension"))
+    half = 0.5 * _ROW                      # the half pitch of the row above
     for r, (name, cells) in enumerate(rows):
-        y += _ROW
-        if r in ruled:
-            fig.add(Path(((_MARGIN, y - 0.5 * _ROW), (right, y - 0.5 * _ROW)), "dimension"))
+        mine = 0.5 * (_TALL if any(_FRACTION.fullmatch(c) for c in cells) else _ROW)
+        if r in ruled:                     # between the rows, whatever their heights
+            fig.add(Path(((_MARGIN, y + half), (right, y + half)), "dimension"))
+        y += half + mine
+        half = mine
         fig.add(Text((_MARGIN, y), name, _SIZE, "start", False))
         for k, c in enumerate(cells):
-            fig.add(Text((lefts[k] + widths[k] / 2, y), c, _SIZE, "middle", False))
+            _set_cell(fig, c, (lefts[k] + widths[k] / 2, y))
     y += _ROW
     width = max(right, 150.0, _MARGIN + 1.08 * text_width(title, 4.2)) - _MARGIN
     for note in notes:
