@@ -16,12 +16,13 @@ from functools import cached_property
 from pathlib import Path
 from typing import Any
 
-from ..constructions.gears.involute import InvoluteMesh, draw_involute_mesh
+from ..constructions.gears.involute import InvoluteMesh, draw_involute_mesh, least_teeth_drawn
 from ..constructions.gears.kutzbach import Kutzbach, draw_kutzbach
 from ..constructions.gears.tabular import TrainSpeeds, fraction_text, tabulate
 from ..constructions.gears.torques import balance, say_balance
 from ..constructions.narration import narrate, significant
-from ..constructions.reference.gear_mesh import MeshReference, involute_miss, mesh_reference
+from ..constructions.reference.gear_mesh import (MeshReference, involute_miss, least_teeth,
+                                                 mesh_reference)
 from ..constructions.reference.willis import willis_speeds
 from ..graphics.svg import to_svg
 from ..graphics.involute_figure import draw_involute_figure
@@ -115,6 +116,15 @@ class TrainSolution:
     def _mesh_quantity(self, name: str) -> TrainQuantity:
         """A number read off the involute mesh, beside the formula's."""
         got, ref = self.mesh, self.mesh_reference
+        if name == "least_teeth":
+            d = self.exercise.involute
+            a, b = sorted((self.train.gear(d.pinion), self.train.gear(d.wheel)),
+                          key=lambda g: g.teeth)
+            ratio = b.teeth / a.teeth
+            drawn = least_teeth_drawn(float(a.module), ratio, d)
+            return TrainQuantity(name, Fraction(drawn), Fraction(least_teeth(ratio,
+                                 d.pressure_angle, d.addendum)), float(drawn),
+                                 "involute mesh, drawn with fewer teeth until clear")
         if name == "interference":
             a, b = Fraction(len(got.interference)), Fraction(len(ref.interference))
             ok = got.interference == ref.interference
@@ -327,6 +337,8 @@ def _mesh_text(name: str, value: float, mesh) -> str:
         return f"{value * 1e3:.6g} mm"
     if name == "pressure_angle":
         return f"{math.degrees(value):.6g}°"
+    if name == "least_teeth":
+        return f"{value:.0f} teeth on the pinion"
     if name == "interference":
         gears = mesh.interference
         return ("none" if not gears else

@@ -372,3 +372,16 @@ def test_the_train_is_drawn_in_side_view_with_the_fixed_member_hatched():
     assert sorted(round((max(p[1] for p in b.points) + min(p[1] for p in b.points)) / 2 - axis,
                         9) for b in tall) == [-20.0, 20.0]
     assert "train" not in solved("compound-train").figures       # an ordinary train: no side view
+
+
+@pytest.mark.parametrize("ratio, angle, least", [(1, 20, 13), (2, 20, 15), (1000, 20, 18),
+                                                 (1, 14.5, 23), (5, 25, 11)])
+def test_the_fewest_teeth_free_of_interference_drawn_and_by_formula(ratio, angle, least):
+    """The mesh drawn again with a tooth more each time until the wheel's tips clear T2,
+    against N ≥ 2k/((1 + 2G) sin²φ)·(G + √(G² + (1 + 2G) sin²φ)): 13 for a 1 : 1 pair at 20°,
+    18 against a rack, 23 at 14.5°."""
+    from tarsim.constructions.gears.involute import Involute, least_teeth_drawn
+    from tarsim.constructions.reference.gear_mesh import least_teeth
+
+    drawn = least_teeth_drawn(0.005, ratio, Involute(2, 3, angle))
+    assert drawn == least_teeth(ratio, angle) == least

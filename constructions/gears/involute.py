@@ -26,7 +26,7 @@ from ..narration import phrase
 from ..record import Construction, Kind, Panel, Ref
 from .train import GearTrain
 
-__all__ = ["Involute", "InvoluteMesh", "draw_involute_mesh"]
+__all__ = ["Involute", "InvoluteMesh", "draw_involute_mesh", "mesh_of", "least_teeth_drawn"]
 
 _DIVISIONS = 8
 """Equal arcs the base circle is divided into between S and where the profile reaches the
@@ -83,24 +83,43 @@ def draw_involute_mesh(train: GearTrain, data: Involute) -> InvoluteMesh:
     if not any({m.a, m.b} == {p.number, w.number} and not m.internal for m in train.meshes):
         raise InputError(f"{p.label} and {w.label} do not mesh externally in this train",
                          file=train.source or None)
-    m = float(p.module)
-    r2, r3 = m * p.teeth / 2, m * w.teeth / 2
+    return mesh_of(float(p.module), (p.teeth, w.teeth), data, train.source)
+
+
+def mesh_of(module: float, teeth: tuple[float, float], data: Involute, source: str = "",
+            *, profiles: bool = True) -> InvoluteMesh:
+    """Draw the mesh of two gears of ``teeth`` (a gear of no whole number of teeth is
+    drawn all the same, as the least-teeth search needs) at ``module`` (m)."""
+    m = module
+    r2, r3 = m * teeth[0] / 2, m * teeth[1] / 2
     phi = math.radians(data.pressure_angle)
     rb2, rb3 = r2 * math.cos(phi), r3 * math.cos(phi)
     c = data.centre_distance if data.centre_distance is not None else r2 + r3
     if not c > rb2 + rb3:
         raise InputError(f"the centre distance {c * 1e3:g} mm leaves no line of action: the "
                          f"base circles ({2 * rb2 * 1e3:g} and {2 * rb3 * 1e3:g} mm across) "
-                         "must stand apart", file=train.source or None)
+                         "must stand apart", file=source or None)
     out = InvoluteMesh(Construction())
-    _Drafting(out, train, data, m, (r2, r3), (rb2, rb3), c).run()
+    _Drafting(out, teeth, data, m, (r2, r3), (rb2, rb3), c).run(profiles)
     return out
 
 
+def least_teeth_drawn(module: float, ratio: float, data: Involute, most: int = 400) -> int:
+    """The fewest teeth the pinion may have, the wheel ``ratio`` times as many, for no
+    interference: the mesh drawn again with one tooth more until neither gear's tips reach
+    past the other's tangency point."""
+    for n in range(4, most + 1):
+        trial = Involute(data.pinion, data.wheel, data.pressure_angle, data.addendum,
+                         data.dedendum)
+        if not mesh_of(module, (n, n * ratio), trial, profiles=False).interference:
+            return n
+    raise InputError(f"no pinion of up to {most} teeth clears interference at this ratio")
+
+
 class _Drafting:
-    def __init__(self, out: InvoluteMesh, train: GearTrain, data: Involute, m: float,
+    def __init__(self, out: InvoluteMesh, teeth: tuple[float, float], data: Involute, m: float,
                  pitch: tuple[float, float], base: tuple[float, float], c: float):
-        self.out, self.t, self.d, self.c = out, train, data, out.construction
+        self.out, self.teeth, self.d, self.c = out, teeth, data, out.construction
         self.m, self.pitch, self.base, self.distance = m, pitch, base, c
         self.n = (data.pinion, data.wheel)
 
@@ -113,7 +132,7 @@ class _Drafting:
     def mm(self, metres: float) -> str:
         return f"{metres * 1e3:.4g} mm"
 
-    def run(self) -> None:
+    def run(self, profiles: bool = True) -> None:
         c, (a, b) = self.c, self.n
         (r2, r3), (rb2, rb3), dist = self.pitch, self.base, self.distance
         out = self.out
@@ -126,7 +145,7 @@ class _Drafting:
         share = dist * rb2 / (rb2 + rb3)
         self.act("P", "lay_off", "O2", "O3", length=share, label="P", kind=Kind.CENTRE,
                  said=phrase("involute.pitch_point", a=a, b=b, o2p=self.mm(share),
-                             na=self.t.gear(a).teeth, nb=self.t.gear(b).teeth))
+                             na=f"{self.teeth[0]:g}", nb=f"{self.teeth[1]:g}"))
         for ref, centre, radius, name in (("pitch2", "O2", r2, f"pitch circle of {a}"),
                                           ("pitch3", "O3", r3, f"pitch circle of {b}"),
                                           ("base2", "O2", rb2, f"base circle of {a}"),
@@ -167,7 +186,7 @@ class _Drafting:
         path = g.distance(self.c.output("A"), self.c.output("B"))
         out.path = path
         out.arc = path / math.cos(out.pressure_angle)
-        out.base_pitch = 2 * math.pi * rb2 / self.t.gear(a).teeth
+        out.base_pitch = 2 * math.pi * rb2 / self.teeth[0]
         out.contact_ratio = path / out.base_pitch
         self.act("AB", "measure", "A", "B", label="path of contact", kind=Kind.DIMENSION,
                  said=phrase("involute.path", path=self.mm(path), arc=self.mm(out.arc),
@@ -179,7 +198,8 @@ class _Drafting:
             > g.distance(self.c.output("P"), self.c.output(t)) * (1 + 1e-12))
         for n, t, centre, rb, radius in ((a, "T2", "O2", rb2, r2 + add),
                                          (b, "T3", "O3", rb3, r3 + add)):
-            self.profile(n, t, centre, rb, radius)
+            if profiles:
+                self.profile(n, t, centre, rb, radius)
 
     def profile(self, n: int, t: Ref, centre: Ref, rb: float, tip: float) -> None:
         """Gear ``n``'s tooth through P: the string unwound from its base circle."""
