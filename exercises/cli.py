@@ -227,8 +227,9 @@ def solve(source, out_dir, angle, pdf, paper):
     A gear-train file ([[gear]] tables) is solved as the notes do it: speeds
     in exact fractions through an ordinary train, or by the tabular method
     in a planetary one, each checked by the Willis equations; it writes
-    table (or train-value), train (a planetary train in side view), kutzbach
-    (its velocity diagram) and mesh (the involute mesh, with [involute]).
+    table (or train-value), train (the train in side view), kutzbach (a
+    planetary train's velocity diagram) and mesh (the involute mesh, with
+    [involute]).
 
     \b
     Example:

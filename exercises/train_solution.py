@@ -272,11 +272,10 @@ class TrainSolution:
         title = (f"{self.train.name}: the tabular method" if self.found.table
                  else self.train.name)
         out = {self._stem: draw_train_table(title, heads, rows, ruled=ruled, notes=notes)}
-        if self.train.planetary:
-            # The shafts that leave it: the members a ratio or a torque is asked of.
-            ends = {int(n) for q in self.exercise.asks if "/" in q or q.startswith("torque")
-                    for n in re.findall(r"\d+", q)}
-            out["train"] = draw_train_schematic(self.train, self.train.name, tuple(sorted(ends)))
+        # The shafts that leave it: the members a ratio or a torque is asked of.
+        ends = {int(n) for q in self.exercise.asks if "/" in q or q.startswith("torque")
+                for n in re.findall(r"\d+", q)}
+        out["train"] = draw_train_schematic(self.train, self.train.name, tuple(sorted(ends)))
         if self.diagram is not None:
             out["kutzbach"] = draw_kutzbach_figure(self.train, self.diagram, self.train.name)
         if self.mesh is not None:

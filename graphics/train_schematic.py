@@ -1,9 +1,10 @@
 """A gear train in the side-view symbols of the textbooks.
 
-The main axis is a centre line. A gear is a rectangle as tall as its pitch diameter about
-its own axis, its face across; a ring is its two rims, teeth inward, and a web out to its
-hub. A planet stands on the arm's pin at the carrier radius, drawn above the main axis and
-again below it. The arm is a bar from its hub out to the pin, on the side facing the input.
+The main axis is a centre line (an ordinary train's gears each stand on their own, a
+centre distance above the one that drives them). A gear is a rectangle as tall as its pitch
+diameter about its own axis, its face across; a ring is its two rims, teeth inward, and a
+web out to its hub. A planet stands on the arm's pin at the carrier radius, drawn above the
+main axis and again below it. The arm is a bar from its hub out to the pin, on the side facing the input.
 The input's shaft and those of the members a ratio or torque is asked of leave along the
 axis, the first plane's to the left and the last's to the right. The fixed member is
 hatched to the ground: a ring by its rims, a sun by its face.
@@ -46,7 +47,8 @@ def draw_train_schematic(train: GearTrain, title: str, outputs: tuple[int, ...] 
     placer = LabelPlacer(fig)
     xs = [p * _PLANE for p in plane.values()]
     left, right = min(xs) - _SHAFT, max(xs) + _FACE + _SHAFT
-    fig.add(Path(((left - 4.0, 0.0), (right + 4.0, 0.0)), "reference"))
+    for y in sorted({-axis[m] * mm for m in axis} if not train.planetary else {0.0}):
+        fig.add(Path(((left - 4.0, y), (right + 4.0, y)), "reference"))   # the axes
     rings = {g.number for g in train.gears if _is_ring(train, g.number)}
     fixed = set(train.body(train.fixed)) if train.fixed is not None else set()
     labels: list[tuple[str, tuple[float, float]]] = []
@@ -117,21 +119,23 @@ def _shafts(train: GearTrain, fig: Figure, plane, axis, mm: float, span: tuple[f
             b = max(plane[m] for m in gears) * _PLANE
             for cy in ((y, -y) if train.planetary and train.carried(gears[0]) else (y,)):
                 fig.add(Path(((a, cy), (b, cy)), "link"))
-    # The shafts that leave along the main axis: the input's and the outputs', the first
-    # (by plane) to the left and the last to the right.
+    # The shafts that leave: the input's and the outputs', the first (by plane) to the left
+    # and the last to the right; along the main axis, or in an ordinary train each on its
+    # own axis.
     leaving = sorted({train.body(m)[0] for m in ends
                       if not (train.fixed is not None and m in train.body(train.fixed))
                       and not (train.planetary and train.carried(m))
-                      and (m == train.arm or axis.get(m, 0.0) == 0.0)},
+                      and (m == train.arm or not train.planetary
+                           or axis.get(m, 0.0) == 0.0)},
                      key=lambda m: plane[m])
     for k, m in enumerate(leaving[:1] + leaving[1:][-1:]):
-        x = plane[m] * _PLANE
+        x, y = plane[m] * _PLANE, -axis.get(m, 0.0) * mm
         if k == 0 and (len(leaving) > 1 or m == train.arm):
-            fig.add(Path(((span[0], 0.0), (x + (_FACE / 2 if m == train.arm else 0.0), 0.0)),
+            fig.add(Path(((span[0], y), (x + (_FACE / 2 if m == train.arm else 0.0), y)),
                          "link"))
         else:
             start = x + _FACE + (3.0 if m in rings else 0.0)
-            fig.add(Path(((start, 0.0), (span[1], 0.0)), "link"))
+            fig.add(Path(((start, y), (span[1], y)), "link"))
 
 
 def _planes(train: GearTrain) -> dict[int, int]:

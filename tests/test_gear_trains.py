@@ -371,7 +371,15 @@ def test_the_train_is_drawn_in_side_view_with_the_fixed_member_hatched():
                if isinstance(it, FPath) and it.style == "reference"]
     assert sorted(round((max(p[1] for p in b.points) + min(p[1] for p in b.points)) / 2 - axis,
                         9) for b in tall) == [-20.0, 20.0]
-    assert "train" not in solved("compound-train").figures       # an ordinary train: no side view
+    # an ordinary train: each gear on its own axis, a centre distance above the one that
+    # drives it (2; 3 and 4 on one shaft; the idler 5; 6): four axes
+    ordinary = solved("compound-train").figures["train"]
+    axes = sorted(it.points[0][1] for it in ordinary.items
+                  if isinstance(it, FPath) and it.style == "reference")
+    assert len(axes) == 4
+    steps = [round(b - a, 9) for a, b in zip(axes, axes[1:])]
+    # at 1 cm = 50 modules: 57.5, 32.5 and 40 modules apart (r5 + r6, r4 + r5, r2 + r3)
+    assert steps == [11.5, 6.5, 8.0]
 
 
 @pytest.mark.parametrize("ratio, angle, least", [(1, 20, 13), (2, 20, 15), (1000, 20, 18),
