@@ -24,7 +24,7 @@ __all__ = ["TrainExercise", "is_train", "load_train", "parse_train"]
 _TOP = ("name", "source", "description", "fixed", "units", "gear", "arm", "mesh", "shaft",
         "input", "involute", "ask")
 MESH_ASKS = ("contact_ratio", "path_of_contact", "arc_of_contact", "pressure_angle",
-             "interference", "least_teeth")
+             "circular_pitch", "interference", "least_teeth")
 """What the involute mesh answers (with ``[involute]``)."""
 _SPEEDS = ("rpm", "rad/s")
 

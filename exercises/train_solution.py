@@ -130,7 +130,8 @@ class TrainSolution:
             ok = got.interference == ref.interference
             return TrainQuantity(name, a, a if ok else b + 1, float(a), "involute mesh")
         attr = {"contact_ratio": "contact_ratio", "path_of_contact": "path",
-                "arc_of_contact": "arc", "pressure_angle": "pressure_angle"}[name]
+                "arc_of_contact": "arc", "pressure_angle": "pressure_angle",
+                "circular_pitch": "circular_pitch"}[name]
         value, want = getattr(got, attr), getattr(ref, attr)
         return TrainQuantity(name, Fraction(value), Fraction(want), value, "involute mesh",
                              1e-9)
@@ -332,7 +333,7 @@ def _plain(x: Fraction) -> str:
 
 def _mesh_text(name: str, value: float, mesh) -> str:
     """A mesh quantity as the command line says it: mm, degrees, a ratio, the gears."""
-    if name in ("path_of_contact", "arc_of_contact"):
+    if name in ("path_of_contact", "arc_of_contact", "circular_pitch"):
         return f"{value * 1e3:.6g} mm"
     if name == "pressure_angle":
         return f"{math.degrees(value):.6g}°"

@@ -92,13 +92,13 @@ def draw_involute_figure(train: GearTrain, mesh: InvoluteMesh, title: str) -> Fi
     for refs in mesh.profiles.values():
         prof = [paper(c.output(r).xy) for r in refs]
         _line(fig, placer, prof, "link")
-    for ref in ("P", "A", "B", "T2", "T3", "S2", "S3"):
+    for ref in ("P", "A", "B", "T2", "T3", "S2", "S3", "P1"):
         at = paper(c.output(ref).xy)
         if not inside(c.output(ref).xy):
             continue
         fig.add(Circle(at, 0.6, "dot"))
         placer.block_segment(at, at, 1.2)
-    for ref in ("P", "A", "B", "T2", "T3", "S2", "S3"):
+    for ref in ("P", "A", "B", "T2", "T3", "S2", "S3", "P1"):
         if inside(c.output(ref).xy):
             placer.place(subscript(c[ref].label), paper(c.output(ref).xy),
                          prefer=(0.8, 2.4, -0.8, -2.4), gap=1.2, size=3.2)

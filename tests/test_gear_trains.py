@@ -393,3 +393,14 @@ def test_the_fewest_teeth_free_of_interference_drawn_and_by_formula(ratio, angle
 
     drawn = least_teeth_drawn(0.005, ratio, Involute(2, 3, angle))
     assert drawn == least_teeth(ratio, angle) == least
+
+
+def test_the_circular_pitch_is_one_tooth_stepped_round_the_pitch_circle():
+    import math
+
+    s = solved("involute-pair")
+    q = s.quantities["circular_pitch"]
+    assert q.si == pytest.approx(math.pi * 0.010, rel=1e-14) and q.passed
+    c = s.mesh.construction
+    assert math.dist(c.output("P").xy, c.output("P1").xy) == pytest.approx(
+        2 * 0.100 * math.sin(math.pi / 20), rel=1e-14)               # the chord of 18°

@@ -60,6 +60,7 @@ class InvoluteMesh:
     """Each profile's start S on its base circle, as an angle about its centre (rad)."""
     centres: dict[int, tuple[float, float]] = field(default_factory=dict)
     pressure_angle: float = 0.0
+    circular_pitch: float = 0.0
     path: float = 0.0
     arc: float = 0.0
     base_pitch: float = 0.0
@@ -187,6 +188,10 @@ class _Drafting:
         out.path = path
         out.arc = path / math.cos(out.pressure_angle)
         out.base_pitch = 2 * math.pi * rb2 / self.teeth[0]
+        # The circular pitch: P stepped one tooth round the pitch circle of the pinion.
+        self.act("P1", "rotate_about", "P", "O2", angle=2 * math.pi / self.teeth[0], label="P′",
+                 said=phrase("involute.circular_pitch", a=a, teeth=f"{self.teeth[0]:g}"))
+        out.circular_pitch = r2 * 2 * math.pi / self.teeth[0]
         out.contact_ratio = path / out.base_pitch
         self.act("AB", "measure", "A", "B", label="path of contact", kind=Kind.DIMENSION,
                  said=phrase("involute.path", path=self.mm(path), arc=self.mm(out.arc),

@@ -114,6 +114,8 @@ PHRASES: dict[str, str] = {
     "involute.common_tangent": "Through P draw the common tangent of the pitch circles, square "
                                "to the line of centres; the line of action leans from it by "
                                "the pressure angle.",
+    "involute.circular_pitch": "Step P one tooth round the pitch circle of {a}, 360°/{teeth}, "
+                               "to P′: the arc PP′ is the circular pitch.",
     "involute.start": "The addendum circle of {b} cuts the line of action at A: contact "
                       "begins there.",
     "involute.end": "The addendum circle of {a} cuts it at B: contact ends there.",

@@ -5,8 +5,9 @@ r_a and the centre distance C, the working pressure angle is φ′ = acos((r_b2 
 the path of contact √(r_a2² − r_b2²) + √(r_a3² − r_b3²) − C sin φ′, the arc of contact
 that over cos φ′, and the contact ratio the path over the base pitch π m cos φ. An addendum
 circle reaching past the other gear's tangency point, r_a > √(r_b² + (C sin φ′)²), is
-interference. A drawn tooth point at radius ρ lies on the involute from its start S when
-its polar angle is S's less inv φ_ρ = tan φ_ρ − φ_ρ, φ_ρ = acos(r_b/ρ).
+interference. The circular pitch is π m. A drawn tooth point at radius ρ lies on the
+involute from its start S when its polar angle is S's less inv φ_ρ = tan φ_ρ − φ_ρ,
+φ_ρ = acos(r_b/ρ).
 """
 
 from __future__ import annotations
@@ -23,6 +24,7 @@ class MeshReference:
     each gear whose tips reach past the other's tangency point into its flank."""
 
     pressure_angle: float
+    circular_pitch: float
     path: float
     arc: float
     base_pitch: float
@@ -45,7 +47,8 @@ def mesh_reference(module: float, teeth: tuple[int, int], numbers: tuple[int, in
     pitch = math.pi * module * math.cos(phi)
     over = tuple(numbers[k] for k in range(2)
                  if ra[k] > math.sqrt(rb[k] ** 2 + reach ** 2) * (1 + 1e-12))
-    return MeshReference(working, path, path / math.cos(working), pitch, path / pitch, over)
+    return MeshReference(working, math.pi * module, path, path / math.cos(working), pitch,
+                         path / pitch, over)
 
 
 
