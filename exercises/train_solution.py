@@ -214,7 +214,9 @@ class TrainSolution:
         lines = [f"# {train.name}: worked solution", ""]
         if ex.description:
             lines += [ex.description, ""]
-        lines += [f"## {'The tabular method' if self.found.table else 'The train value'} "
+        lines += ["## The train (`train.svg`)", ""]
+        lines += [f"- {narrate(p)}" for p in train.describe()]
+        lines += ["", f"## {'The tabular method' if self.found.table else 'The train value'} "
                   f"(`{self._stem}.svg`)", ""]
         steps = list(self.found.steps) + say_balance(self.train, self.found.speeds,
                                                      self.output)

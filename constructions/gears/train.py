@@ -20,6 +20,7 @@ from fractions import Fraction
 
 from ..errors import InputError
 from ..model import LENGTH_UNITS
+from ..narration import Phrase, phrase
 
 __all__ = ["Gear", "Mesh", "GearTrain", "SpeedUnits"]
 
@@ -151,6 +152,29 @@ class GearTrain:
         moving = [b for b in self.bodies if self.fixed is None or self.fixed not in b]
         n, f1, f2 = len(moving) + 1, len(moving), len(self.meshes)
         return 3 * (n - 1) - 2 * f1 - f2, n, f1, f2
+
+    def describe(self) -> list[Phrase]:
+        """The train as its side view shows it, a sentence a member and a mesh."""
+        out = []
+        for g in self.gears:
+            if self.planetary and self.carried(g.number):
+                where = phrase("gears.on_pin", arm=self.arm)
+            else:
+                where = phrase("gears.on_axis" if self.planetary else "gears.on_own_axis")
+            others = [m for m in self.body(g.number) if m != g.number]
+            out.append(phrase("gears.member", member=self.label(g.number, opening=True),
+                              teeth=g.teeth, where=where,
+                              shaft=", on one shaft with " + ", ".join(map(str, others))
+                              if others else "",
+                              fixed=", fixed" if self.fixed == g.number else ""))
+        if self.arm is not None:
+            out.append(phrase("gears.arm", arm=self.arm,
+                              planets="one planet" if self.planets == 1 else
+                              f"{self.planets} planets, equally spaced",
+                              fixed=", fixed" if self.fixed == self.arm else ""))
+        for m in self.meshes:
+            out.append(phrase("gears.meshes", a=m.a, b=m.b, kind=m.word))
+        return out
 
     # ----- the checks ---------------------------------------------------------------------
     def check(self) -> None:

@@ -128,6 +128,13 @@ PHRASES: dict[str, str] = {
     "involute.profile": "Divide the base circle of {gear} from {point} into {divisions} equal "
                         "arcs of {arc}; at each division lay off the arc from {point} along "
                         "the tangent, and join the points: the involute.",
+    "gears.member": "{member}, {teeth} teeth, {where}{shaft}{fixed}.",
+    "gears.on_axis": "on the main axis",
+    "gears.on_own_axis": "on its own axis in the housing",
+    "gears.on_pin": "on the pin of the arm {arm}, at the carrier radius",
+    "gears.arm": "The arm {arm} turns about the main axis and carries the planets' pin "
+                 "({planets}){fixed}.",
+    "gears.meshes": "Gears {a} and {b} mesh {kind}ly.",
     "gears.locked": "Row 1: lock the whole train, {arm} with it, and turn it +1 "
                     "(counter-clockwise): every member turns +1.",
     "gears.held": "Row 2: hold {arm} and turn {fixed}, the fixed member, −1 turn:",
