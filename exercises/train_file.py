@@ -7,6 +7,7 @@ method's fractions are the notes' own. Every failure is one line naming file:lin
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 from fractions import Fraction
 from pathlib import Path
@@ -95,10 +96,28 @@ class _Reader:
         torque, power = self.load()
         train = GearTrain(gears, meshes, shafts, arm, arm_name, fixed, member, speed, units,
                           planets, torque, power, self.text("name") or self.id, self.filename)
-        train.check()
+        try:
+            train.check()
+        except InputError as e:
+            raise self.placed(e) from None
         involute = self.involute(train)
         return TrainExercise(self.id, train, self.asks(train, involute),
                              self.text("description"), involute)
+
+    def placed(self, error: InputError) -> InputError:
+        """A check of the whole train, led by the line of the first gear it names (or of
+        the arm, or the input)."""
+        gears = [g.get("number") if isinstance(g, dict) else None
+                 for g in self.data.get("gear") or []]
+        m = re.search(r"\bgears? (\d+)", error.message)
+        line = None
+        if m and int(m.group(1)) in gears:
+            line = self.where.header("gear", gears.index(int(m.group(1))))
+        elif "arm" in error.message and "arm" in self.data:
+            line = self.where.header("arm")
+        elif "input" in error.message and "input" in self.data:
+            line = self.where.header("input")
+        return InputError(error.message, file=self.filename, line=line)
 
     def text(self, key: str) -> str:
         v = self.data.get(key, "")
