@@ -51,6 +51,9 @@ def draw_kutzbach_figure(train: GearTrain, k: Kutzbach, title: str,
         y = points[f"kz:r:{name}"][1]
         placer.place(subscript(name), (left, y), prefer=3.1416, spread=0.3, gap=1.5, size=3.2)
     # Each member's line, from its lower point past its upper one.
+    # Every line and dot first, then the names: a name must clear the lines drawn after
+    # the one it names as well.
+    named: list[tuple[str, tuple[float, float]]] = []
     for body, ref in k.lines.items():
         if ref == "kz:radial":
             continue
@@ -60,14 +63,12 @@ def draw_kutzbach_figure(train: GearTrain, k: Kutzbach, title: str,
         d = (hi[0] - lo[0], hi[1] - lo[1])
         n = (d[0] ** 2 + d[1] ** 2) ** 0.5 or 1.0
         end = (hi[0] + _OVER * d[0] / n, hi[1] + _OVER * d[1] / n)
-        start = lo if lo != (0.0, 0.0) else (0.0, 0.0)
-        fig.add(Path((start, end), "vector"))
-        placer.block_segment(start, end, 0.6)
+        fig.add(Path((lo, end), "vector"))
+        placer.block_segment(lo, end, 0.6)
         w = k.omegas[body[0]] / train.units.per_rad_s
         sense = "" if w == 0 else (" ccw" if w > 0 else " cw")
         names = ", ".join(subscript(f"ω{m}") for m in body)
-        placer.place(f"{names} = {abs(w):.4g} {train.units.speed}{sense}", end,
-                     prefer=(1.57, 0.0, 3.1416), gap=1.5, size=3.0, italic=False)
+        named.append((f"{names} = {abs(w):.4g} {train.units.speed}{sense}", end))
     dots: list[tuple[float, float]] = []
     for ref, p in points.items():
         if ref.startswith("kz:r:") or any(abs(p[0] - q[0]) + abs(p[1] - q[1]) < 0.1
@@ -76,7 +77,13 @@ def draw_kutzbach_figure(train: GearTrain, k: Kutzbach, title: str,
         dots.append(p)
         fig.add(Circle(p, 0.7, "dot"))
         placer.block(g_point_box(p))
-        placer.place(subscript(c[ref].label), p, prefer=(0.8, 2.4), gap=1.2, size=3.2)
+    for text, end in named:
+        placer.place(text, end, prefer=(1.57, 0.0, 3.1416), gap=1.5, size=3.0, italic=False,
+                     rings=(1.0, 1.6, 2.3, 3.2, 4.5, 6.0))
+    for ref, p in points.items():
+        if not ref.startswith("kz:r:") and p in dots:      # each dot's first name, once
+            dots.remove(p)
+            placer.place(subscript(c[ref].label), p, prefer=(0.8, 2.4), gap=1.2, size=3.2)
     placer.place("O", (0.0, 0.0), prefer=-1.57, gap=1.5, size=3.2)
     fixed = train.label(train.fixed)
     draw_caption(fig, f"{train.name}: velocity (Kutzbach) diagram",
