@@ -117,6 +117,13 @@ class _Reader:
             line = self.where.header("arm")
         elif "input" in error.message and "input" in self.data:
             line = self.where.header("input")
+        else:                 # a member named that is none: where the file names it
+            m = re.search(r"\bmember (\d+)", error.message)
+            named = int(m.group(1)) if m else None
+            if named is not None and named == self.data.get("fixed"):
+                line = self.where.key("fixed")
+            elif named is not None and named == (self.data.get("input") or {}).get("member"):
+                line = self.where.key("member", "input")
         return InputError(error.message, file=self.filename, line=line)
 
     def text(self, key: str) -> str:

@@ -406,3 +406,19 @@ def test_the_circular_pitch_is_one_tooth_stepped_round_the_pitch_circle():
     c = s.mesh.construction
     assert math.dist(c.output("P").xy, c.output("P1").xy) == pytest.approx(
         2 * 0.100 * math.sin(math.pi / 20), rel=1e-14)               # the chord of 18°
+
+
+def test_a_train_with_its_arm_held_is_an_ordinary_train():
+    """Q1 with the arm fixed instead of the ring: every axis stands still, so the planet
+    turns 80 × 60/40 = 120 rpm against the sun and the ring 80 × 60/140 with the planet."""
+    s = solve_train(parse_train(Q1.replace("fixed = 1", "fixed = 3", 1), "q1.toml"))
+    assert s.found.table is None and s.passed
+    assert s.found.speeds == {1: F(240, 7), 2: F(-80), 4: F(120), 3: F(0)}
+
+
+def test_an_unknown_input_member_is_refused_at_its_line():
+    text = Q1.replace("member = 2\nspeed", "member = 9\nspeed", 1)
+    line = text.splitlines().index("member = 9") + 1
+    with pytest.raises(InputError, match=rf"^q1\.toml:{line}: there is no member 9; the members "
+                                         r"are 1, 2, 4, 3$"):
+        parse_train(text, "q1.toml")

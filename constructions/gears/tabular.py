@@ -132,7 +132,9 @@ def _ordinary(train: GearTrain) -> TrainSpeeds:
     steps = [phrase("gears.ordinary_start", member=train.label(first, opening=True),
                     speed=_speed(train, train.input_speed))]
     via: dict[int, tuple[int, Mesh | None]] = {}
-    turns = carry(train, {first: Fraction(1)}, steps=steps, via=via)
+    # A fixed arm (the planetary train held as an ordinary one) stands still.
+    held = (train.fixed,) if train.fixed is not None else ()
+    turns = carry(train, {first: Fraction(1)}, held=held, steps=steps, via=via)
     last = next(reversed(via)) if via else first
     steps.append(_train_value(train, first, last, via, turns[last]))
     speeds = {m: turns[m] * train.input_speed for m in train.members}
