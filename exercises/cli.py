@@ -139,19 +139,31 @@ def draw(source, output, angle, paper):
     Every joint is located by compass construction (arcs and lines, one dyad
     after another) and drawn in textbook style: hatched ground pivots, pins,
     slider blocks on guides, link numbers, the input's θ and ω, and a scale bar
-    that measures true on the printed PDF.
+    that measures true on the printed PDF. A gear train is drawn in side view.
 
     \b
     Example:
       tarsim draw four-bar -o four-bar.pdf
       tarsim draw my-linkage.toml -o fig.svg --angle 120
+      tarsim draw planetary-q4 -o q4.svg
     """
     from ..constructions.assembly import assemble
     from ..constructions.scales import space_per_cm
     from ..graphics.diagram import draw_kinematic_diagram
     from ..graphics.export import write_figure
     from ..graphics.paper import on_sheet, paper as sheet, room
+    from .catalog import load
+    from .train_file import TrainExercise
 
+    loaded = load(source)
+    if isinstance(loaded, TrainExercise):
+        from ..graphics.train_schematic import draw_train_schematic
+
+        if angle is not None:
+            raise InputError("a gear train has no input angle: leave out --angle")
+        fig = draw_train_schematic(loaded.train, loaded.train.name)
+        click.echo(f"wrote {write_figure(on_sheet(fig, sheet(paper)), output)}")
+        return
     mech = _mechanism(source, angle)
     asm, where = assemble(mech), sheet(paper)
     fig = draw_kinematic_diagram(asm, per_cm=space_per_cm(asm, room(where)))

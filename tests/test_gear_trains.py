@@ -179,10 +179,18 @@ def test_solve_writes_the_table_steps_and_exact_results(tmp_path):
 
 
 def test_a_linkage_command_refuses_a_train_in_one_line():
-    result = CliRunner().invoke(cli, ["draw", "planetary-q1", "-o", "x.svg"])
+    result = CliRunner().invoke(cli, ["check", "planetary-q1"])
     assert result.exit_code == 1
     assert result.output == ("Error: planetary-q1 is a gear train: `tarsim solve planetary-q1` "
                              "solves it; this command is for linkages\n")
+
+
+def test_draw_sets_a_train_in_side_view(tmp_path):
+    out = tmp_path / "q4.svg"
+    result = CliRunner().invoke(cli, ["draw", "planetary-q4", "-o", str(out)])
+    assert result.exit_code == 0, result.output
+    svg = out.read_text(encoding="utf-8")
+    assert "the train" in svg and 'class="hatch"' in svg
 
 
 Q4 = (Path(bundled_trains()["planetary-q4"])).read_text(encoding="utf-8")
