@@ -135,6 +135,23 @@ PHRASES: dict[str, str] = {
     "gears.arm": "The arm {arm} turns about the main axis and carries the planets' pin "
                  "({planets}){fixed}.",
     "gears.meshes": "Gears {a} and {b} mesh {kind}ly.",
+    "cam.axes": "Draw the base line: cam angle across it, the follower's lift up from it.",
+    "cam.ordinates": "Segment {k} ({kind}, {angle}): divide its cam angle into {n} equal parts "
+                     "and draw an ordinate at each division.",
+    "cam.dwell": "Segment {k} is a dwell of {angle}: the follower stands still, a level line.",
+    "cam.uniform": "Segment {k} is uniform velocity: the diagonal from its start to its end; "
+                   "the ordinates cut it at the follower's places.",
+    "cam.harmonic": "Segment {k} is simple harmonic: on the lift of {lift} draw a semicircle "
+                    "at the segment's start and divide it into {n} equal arcs; project each "
+                    "division across to its ordinate.",
+    "cam.parabolic": "Segment {k} is uniform acceleration and retardation: for its {half} half, "
+                     "divide half the lift on the ordinate in the ratio 1 : 3 : 5 … by "
+                     "parallels from a line marked at 1, 4, 9 … equal steps ({m} of them), and "
+                     "project each division across to its ordinate.",
+    "cam.cycloidal": "Segment {k} is cycloidal: about its start draw a circle of radius lift/2π "
+                     "= {radius} and divide it into {n} equal arcs; project each division onto "
+                     "the start ordinate, and from there run a parallel to the segment's "
+                     "diagonal to its ordinate.",
     "gears.locked": "Row 1: lock the whole train, {arm} with it, and turn it +1 "
                     "(counter-clockwise): every member turns +1.",
     "gears.held": "Row 2: hold {arm} and turn {fixed}, the fixed member, −1 turn:",

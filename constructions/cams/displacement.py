@@ -1,0 +1,225 @@
+"""The follower's displacement diagram, drawn by construction as the textbooks draw it.
+
+Cam angle runs across (``per_rad`` drawing metres a radian), lift up (true size). Each
+segment of motion is divided into equal parts by ordinates, and its curve is found where
+they meet the construction of its law:
+
+- **simple harmonic**: a semicircle on the lift at the segment's start, divided into as
+  many equal arcs; each division projected across to its ordinate;
+- **parabolic** (uniform acceleration and retardation): the half lift on the start ordinate
+  divided in the ratio 1 : 3 : 5 … (by parallels from a line marked 1, 4, 9 …), projected
+  across; the second half the same from the top, on the end ordinate;
+- **cycloidal**: a circle of radius h/2π about the start, divided into as many equal arcs;
+  each division projected onto the start ordinate, and from there a parallel to the
+  segment's diagonal run to its ordinate;
+- **uniform velocity**: the diagonal itself; a **dwell**: a level line.
+
+Every act is a recorded step; the points are read back as (cam angle, lift) and checked
+against the closed-form law (:mod:`..reference.cam_laws`).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+from .. import geometry as g
+from ..errors import InputError
+from ..narration import phrase
+from ..record import Construction, Kind, Panel, Ref
+
+__all__ = ["Segment", "Displacement", "draw_displacement"]
+
+
+@dataclass(frozen=True)
+class Segment:
+    """A segment of follower motion: ``kind`` "rise", "dwell" or "return" through the cam
+    angle ``angle`` (rad), lifting ``lift`` (m) by ``law``, drawn in ``divisions`` parts."""
+
+    kind: str
+    angle: float
+    lift: float = 0.0
+    law: str = ""
+    divisions: int = 6
+
+
+@dataclass
+class Displacement:
+    """The drawn diagram: its record and, segment by segment, the curve's points in order
+    as (cam angle from the segment's start in rad, step)."""
+
+    construction: Construction
+    per_rad: float
+    curves: list[list[tuple[float, Ref]]] = field(default_factory=list)
+    starts: list[float] = field(default_factory=list)
+    """Each segment's start, as a cam angle (rad)."""
+
+    def point(self, ref: Ref) -> tuple[float, float]:
+        """A drawn point as (cam angle, lift): rad and m."""
+        x, y = self.construction.output(ref).xy
+        return x / self.per_rad, y
+
+
+def draw_displacement(segments: list[Segment], per_rad: float) -> Displacement:
+    """Draw the displacement diagram of ``segments`` in turn, from lift 0.
+
+    Raises
+    ------
+    InputError
+        For a law the diagram cannot draw, or an odd division of a parabolic segment.
+    """
+    c = Construction()
+    out = Displacement(c, per_rad)
+    c.give("base", g.Line(0.0, 1.0, 0.0), label="", kind=Kind.GUIDE, panel=Panel.SPACE,
+           phrase=phrase("cam.axes"))
+    theta, lift = 0.0, 0.0
+    for k, s in enumerate(segments, start=1):
+        out.starts.append(theta)
+        drafting = _Segment(c, k, s, theta * per_rad, lift, per_rad)
+        out.curves.append(drafting.draw())
+        theta += s.angle
+        lift += s.lift if s.kind == "rise" else -s.lift if s.kind == "return" else 0.0
+    return out
+
+
+class _Segment:
+    def __init__(self, c: Construction, k: int, s: Segment, x0: float, y0: float,
+                 per_rad: float):
+        self.c, self.k, self.s, self.x0, self.y0 = c, k, s, x0, y0
+        self.width = s.angle * per_rad
+        self.h = s.lift if s.kind == "rise" else -s.lift if s.kind == "return" else 0.0
+
+    def act(self, ref: str, verb: str, *inputs: Ref, said=None, label: str = "",
+            kind: Kind | None = None, **params) -> Ref:
+        ref = f"s{self.k}:{ref}"
+        self.c.draw(ref, verb, *inputs, label=label, phrase=said, kind=kind, **params)
+        return ref
+
+    def give(self, ref: str, obj, said=None, label: str = "", kind: Kind | None = None) -> Ref:
+        ref = f"s{self.k}:{ref}"
+        self.c.give(ref, obj, label=label, phrase=said, kind=kind)
+        return ref
+
+    def ordinates(self) -> list[Ref]:
+        """The segment's start and its equal divisions: an ordinate at each."""
+        n = self.s.divisions
+        start = self.give("x0", g.Point(self.x0, 0.0), said=phrase(
+            "cam.ordinates", k=self.k, kind=self.s.kind, n=n,
+            angle=f"{math.degrees(self.s.angle):.4g}°"))
+        out = []
+        for i in range(n + 1):
+            foot = self.act(f"foot{i}", "lay_off", start, "base", length=i * self.width / n)
+            out.append(self.act(f"ord{i}", "perpendicular_through", foot, "base",
+                                kind=Kind.LINE))
+        return out
+
+    def draw(self) -> list[tuple[float, Ref]]:
+        s = self.s
+        if s.kind == "dwell" or self.h == 0.0:
+            return self.dwell()
+        law = {"simple harmonic": self.harmonic, "parabolic": self.parabolic,
+               "cycloidal": self.cycloidal, "uniform velocity": self.uniform}.get(s.law)
+        if law is None:
+            raise InputError(f"segment {self.k}: the displacement diagram draws simple "
+                             "harmonic, parabolic, cycloidal and uniform velocity motion, "
+                             f"not '{s.law}'")
+        return law(self.ordinates())
+
+    def angles(self) -> list[float]:
+        n = self.s.divisions
+        return [i * self.s.angle / n for i in range(n + 1)]
+
+    def level(self, ref: Ref, ordinate: Ref, i: int) -> Ref:
+        """Project the point ``ref`` across to ``ordinate``: the curve's point ``i``."""
+        across = self.act(f"across{i}", "parallel_through", ref, "base", kind=Kind.LINE)
+        return self.act(f"pt{i}", "intersect_lines", across, ordinate, label=str(i))
+
+    def dwell(self) -> list[tuple[float, Ref]]:
+        a = self.give("a", g.Point(self.x0, self.y0), said=phrase(
+            "cam.dwell", k=self.k, angle=f"{math.degrees(self.s.angle):.4g}°"))
+        b = self.give("b", g.Point(self.x0 + self.width, self.y0))
+        self.act("line", "line_through", a, b)
+        return [(0.0, a), (self.s.angle, b)]
+
+    def uniform(self, ordinates: list[Ref]) -> list[tuple[float, Ref]]:
+        a = self.give("a", g.Point(self.x0, self.y0))
+        b = self.give("b", g.Point(self.x0 + self.width, self.y0 + self.h))
+        line = self.act("diagonal", "line_through", a, b, said=phrase("cam.uniform", k=self.k))
+        return [(t, self.act(f"pt{i}", "intersect_lines", line, o, label=str(i)))
+                for i, (t, o) in enumerate(zip(self.angles(), ordinates))]
+
+    def harmonic(self, ordinates: list[Ref]) -> list[tuple[float, Ref]]:
+        n = self.s.divisions
+        centre = self.give("C", g.Point(self.x0, self.y0 + self.h / 2))
+        # The semicircle on the lift, bulging back from the start: from the low end for a
+        # rise, from the top for a return, in n equal arcs.
+        first = self.give("S0", g.Point(self.x0, self.y0), said=phrase(
+            "cam.harmonic", k=self.k, n=n, lift=f"{abs(self.h) * 1e3:.4g} mm"))
+        turn = -math.pi / n if self.h > 0 else math.pi / n
+        self.act("semicircle", "circle_through", centre, first, kind=Kind.ARC)
+        out = []
+        for i, (t, o) in enumerate(zip(self.angles(), ordinates)):
+            s = self.act(f"S{i}", "rotate_about", first, centre, angle=i * turn) if i else first
+            out.append((t, self.level(s, o, i)))
+        return out
+
+    def parabolic(self, ordinates: list[Ref]) -> list[tuple[float, Ref]]:
+        n = self.s.divisions
+        if n % 2:
+            raise InputError(f"segment {self.k}: a parabolic segment is divided into an even "
+                             f"number of parts (the two halves alike), not {n}")
+        half, m = self.h / 2, n // 2
+        out: list[tuple[float, Ref]] = []
+        angles = self.angles()
+        for part, (x, y, sign) in enumerate(((self.x0, self.y0, 1.0),
+                                             (self.x0 + self.width, self.y0 + self.h, -1.0))):
+            # Divide the half lift on the ordinate in the ratio 1 : 3 : 5 …, by parallels
+            # from a line marked at 1, 4, 9 … equal steps.
+            foot = self.give(f"h{part}:O", g.Point(x, y), said=phrase(
+                "cam.parabolic", k=self.k, half="first" if part == 0 else "second", m=m))
+            mid = self.give(f"h{part}:M", g.Point(x, y + sign * half))
+            ordinate = self.act(f"h{part}:ord", "line_through", foot, mid)
+            step = abs(half) / (m * m)
+            ray_to = self.give(f"h{part}:R", g.Point(x - sign * abs(half), y + sign * 0.25 * half))
+            ray = self.act(f"h{part}:ray", "line_through", foot, ray_to, kind=Kind.LINE)
+            marks = [self.act(f"h{part}:m{j}", "lay_off", foot, ray, length=j * j * step)
+                     for j in range(1, m + 1)]
+            closing = self.act(f"h{part}:close", "line_through", marks[-1], mid, kind=Kind.LINE)
+            heights = []
+            for j in range(1, m):
+                par = self.act(f"h{part}:par{j}", "parallel_through", marks[j - 1], closing,
+                               kind=Kind.LINE)
+                heights.append(self.act(f"h{part}:d{j}", "intersect_lines", par, ordinate))
+            heights.append(mid)
+            if part == 0:
+                out.append((angles[0], foot))
+                for j, hgt in enumerate(heights, start=1):
+                    out.append((angles[j], self.level_named(hgt, ordinates[j], j)))
+            else:
+                for j, hgt in reversed(list(enumerate(heights[:-1], start=1))):
+                    out.append((angles[n - j], self.level_named(hgt, ordinates[n - j], n - j)))
+                out.append((angles[n], foot))
+        return out
+
+    def level_named(self, ref: Ref, ordinate: Ref, i: int) -> Ref:
+        return self.level(ref, ordinate, i)
+
+    def cycloidal(self, ordinates: list[Ref]) -> list[tuple[float, Ref]]:
+        n = self.s.divisions
+        radius = abs(self.h) / (2 * math.pi)
+        start = self.give("A", g.Point(self.x0, self.y0), said=phrase(
+            "cam.cycloidal", k=self.k, n=n, radius=f"{radius * 1e3:.4g} mm"))
+        end = self.give("B", g.Point(self.x0 + self.width, self.y0 + self.h))
+        diagonal = self.act("diagonal", "line_through", start, end, kind=Kind.LINE)
+        up = self.act("ordinate", "perpendicular_through", start, "base", kind=Kind.LINE)
+        east = self.give("E", g.Point(self.x0 + radius, self.y0))
+        self.act("circle", "circle_through", start, east, kind=Kind.ARC)
+        sign = -1.0 if self.h > 0 else 1.0
+        out = []
+        for i, (t, o) in enumerate(zip(self.angles(), ordinates)):
+            p = self.act(f"Q{i}", "rotate_about", east, start, angle=sign * 2 * math.pi * i / n)
+            on = self.act(f"q{i}", "intersect_lines",
+                          self.act(f"qa{i}", "parallel_through", p, "base", kind=Kind.LINE), up)
+            run = self.act(f"run{i}", "parallel_through", on, diagonal, kind=Kind.LINE)
+            out.append((t, self.act(f"pt{i}", "intersect_lines", run, o, label=str(i))))
+        return out

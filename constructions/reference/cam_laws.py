@@ -1,0 +1,89 @@
+"""The independent reference for cam follower motion: each law in closed form.
+
+A segment rises (or returns) through ``lift`` h over the cam angle β. With u = θ/β in
+[0, 1], the follower's displacement y and its kinematic coefficients y′ = dy/dθ,
+y″ = d²y/dθ², y‴ = d³y/dθ³ are:
+
+- uniform velocity: y = h·u;
+- simple harmonic: y = h/2·(1 − cos πu);
+- uniform acceleration and retardation (parabolic): y = 2h·u² to u = ½, then
+  h − 2h·(1 − u)²;
+- cycloidal: y = h·(u − sin 2πu / 2π).
+
+A return is the rise mirrored: y = h − y_rise. Time derivatives follow by the chain rule
+(notes 000-part2 §2.16): ẏ = y′ω, ÿ = y″ω² + y′α, y⃛ = y‴ω³ + 3y″ωα + y′α̇ (the notes
+print the last term y′α², which is wrong).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+__all__ = ["LAWS", "Motion", "motion", "peaks", "time_rates"]
+
+LAWS = ("uniform velocity", "simple harmonic", "parabolic", "cycloidal")
+"""The laws the reference knows, by the names the files use."""
+
+
+@dataclass(frozen=True)
+class Motion:
+    """y and its kinematic coefficients at one cam angle (m, m/rad, m/rad², m/rad³)."""
+
+    y: float
+    y1: float
+    y2: float
+    y3: float
+
+
+def motion(law: str, lift: float, beta: float, theta: float, *, rise: bool = True) -> Motion:
+    """The follower's motion ``theta`` (rad) into a segment of ``beta`` lifting ``lift``.
+
+    Raises
+    ------
+    ValueError
+        For a law it does not know.
+    """
+    u = min(max(theta / beta, 0.0), 1.0)
+    h, b = lift, beta
+    if law == "uniform velocity":
+        m = Motion(h * u, h / b, 0.0, 0.0)
+    elif law == "simple harmonic":
+        k = math.pi / b
+        m = Motion(h / 2 * (1 - math.cos(math.pi * u)), h / 2 * k * math.sin(math.pi * u),
+                   h / 2 * k * k * math.cos(math.pi * u), -h / 2 * k ** 3 * math.sin(math.pi * u))
+    elif law == "parabolic":
+        if u <= 0.5:
+            m = Motion(2 * h * u * u, 4 * h * u / b, 4 * h / b ** 2, 0.0)
+        else:
+            m = Motion(h - 2 * h * (1 - u) ** 2, 4 * h * (1 - u) / b, -4 * h / b ** 2, 0.0)
+    elif law == "cycloidal":
+        w = 2 * math.pi * u
+        m = Motion(h * (u - math.sin(w) / (2 * math.pi)), h / b * (1 - math.cos(w)),
+                   2 * math.pi * h / b ** 2 * math.sin(w),
+                   4 * math.pi ** 2 * h / b ** 3 * math.cos(w))
+    else:
+        raise ValueError(f"unknown law '{law}'; the laws are {', '.join(LAWS)}")
+    if rise:
+        return m
+    # A return is the rise run backwards in lift: y = h − y_rise, each coefficient negated.
+    return Motion(h - m.y, -m.y1, -m.y2, -m.y3)
+
+
+def peaks(law: str, lift: float, beta: float) -> tuple[float, float]:
+    """The textbook maxima of |y′| and |y″| over a segment (per rad, per rad²):
+    uniform velocity h/β and — (infinite at the ends, given as inf); simple harmonic πh/2β
+    and π²h/2β²; parabolic 2h/β and 4h/β²; cycloidal 2h/β and 2πh/β²."""
+    h, b = lift, beta
+    return {"uniform velocity": (h / b, math.inf),
+            "simple harmonic": (math.pi * h / (2 * b), math.pi ** 2 * h / (2 * b * b)),
+            "parabolic": (2 * h / b, 4 * h / b ** 2),
+            "cycloidal": (2 * h / b, 2 * math.pi * h / b ** 2)}[law]
+
+
+def time_rates(m: Motion, omega: float, alpha: float = 0.0, alpha_dot: float = 0.0
+               ) -> tuple[float, float, float]:
+    """The follower's velocity, acceleration and jerk from the kinematic coefficients by the
+    chain rule: ẏ = y′ω, ÿ = y″ω² + y′α, y⃛ = y‴ω³ + 3y″ωα + y′α̇."""
+    return (m.y1 * omega, m.y2 * omega ** 2 + m.y1 * alpha,
+            m.y3 * omega ** 3 + 3 * m.y2 * omega * alpha + m.y1 * alpha_dot)
