@@ -69,15 +69,18 @@ def _mechanism(source: str, angle: float | None) -> Mechanism:
 
 
 def _not_a_train(source: str) -> None:
-    """Refuse a gear train where a command draws or solves linkages, in one line."""
+    """Refuse a gear train or a cam where a command draws or solves linkages, in one line."""
+    from .cam_file import is_cam
     from .catalog import resolve
     from .mechanism_file import read_source, read_toml
     from .train_file import is_train
 
     path = resolve(source)
-    if is_train(read_toml(read_source(path), str(path))):
-        raise InputError(f"{source} is a gear train: `tarsim solve {source}` solves it; this "
-                         "command is for linkages")
+    data = read_toml(read_source(path), str(path))
+    for test, what in ((is_train, "a gear train"), (is_cam, "a cam")):
+        if test(data):
+            raise InputError(f"{source} is {what}: `tarsim solve {source}` solves it; this "
+                             "command is for linkages")
 
 
 def _at_angle(mech: Mechanism, angle: float | None) -> Mechanism:
@@ -241,7 +244,9 @@ def solve(source, out_dir, angle, pdf, paper):
     in a planetary one, each checked by the Willis equations; it writes
     table (or train-value), train (the train in side view), kutzbach (a
     planetary train's velocity diagram) and mesh (the involute mesh, with
-    [involute]).
+    [involute]). A cam file ([cam] and [[segment]] tables) gets the
+    follower's displacement diagram by construction, and its velocity and
+    acceleration diagrams.
 
     \b
     Example:
@@ -255,6 +260,7 @@ def solve(source, out_dir, angle, pdf, paper):
     one beyond the tolerance its conditioning allows (the files are written all
     the same, so the disagreement can be seen); 1 for bad input.
     """
+    from .cam_file import CamExercise
     from .catalog import load
     from .solution_files import answer_line, solve_worked
     from .train_file import TrainExercise
@@ -265,6 +271,10 @@ def solve(source, out_dir, angle, pdf, paper):
         if angle is not None:
             raise InputError("a gear train has no input angle: leave out --angle")
         return _solve_train(loaded, out_dir, pdf)
+    if isinstance(loaded, CamExercise):
+        if angle is not None:
+            raise InputError("a cam is solved over its whole turn: leave out --angle")
+        return _solve_cam(loaded, out_dir, pdf)
     ex = replace(_exercise(source, angle), paper=paper)
     out = Path(out_dir or f"{ex.id}-solution")
     with output_folder(out):      # a folder that cannot be written fails before the solve
@@ -367,11 +377,25 @@ sweep (1e-16 to 1e-14), so anything near this is a wrong number, not rounding.""
 def _solve_train(ex, out_dir: str | None, pdf: bool) -> None:
     """Solve a gear train, print its speeds and ratios, and write its files."""
     from .train_solution import solve_train
+
+    _solve_other(ex, solve_train, out_dir, pdf)
+
+
+def _solve_cam(ex, out_dir: str | None, pdf: bool) -> None:
+    """Solve a cam's follower motion, print its peaks, and write its files."""
+    from .cam_solution import solve_cam
+
+    _solve_other(ex, solve_cam, out_dir, pdf)
+
+
+def _solve_other(ex, solve, out_dir: str | None, pdf: bool) -> None:
+    """Solve a gear train or a cam, print its checked numbers, write its files; exit 3 if a
+    number disagrees with its reference."""
     from ..graphics.export import cairo_missing, output_folder
 
     out = Path(out_dir or f"{ex.id}-solution")
     with output_folder(out):
-        solved = solve_train(ex)
+        solved = solve(ex)
         reason = cairo_missing() if pdf else None
         written = solved.write(out, pdf=pdf and reason is None)
     for line in solved.lines():
@@ -456,10 +480,11 @@ def list_():
     """
     import tomllib
 
-    from .catalog import bundled, bundled_trains, load
+    from .cam_file import CamExercise
+    from .catalog import bundled, bundled_cams, bundled_trains, load
     from .train_file import TrainExercise, ask_symbol
 
-    found = {**bundled(), **bundled_trains()}
+    found = {**bundled(), **bundled_trains(), **bundled_cams()}
     pad = max(map(len, found), default=0) + 2
     for name, path in found.items():
         try:
@@ -468,11 +493,12 @@ def list_():
         except (TarsimError, tomllib.TOMLDecodeError, OSError) as e:
             click.echo(f"{name:<{pad}}(cannot be read: {e})")
             continue
-        train = isinstance(ex, TrainExercise)
-        click.echo(f"{name:<{pad}}{ex.name if train else ex.mechanism.name}")
+        train, cam = isinstance(ex, TrainExercise), isinstance(ex, CamExercise)
+        click.echo(f"{name:<{pad}}{ex.name if train or cam else ex.mechanism.name}")
         if source:
             click.echo(f"{'':<{pad}}from {source}")
-        asks = ", ".join(ask_symbol(q) for q in ex.asks) if train else _asks(ex)
+        asks = (", ".join(ask_symbol(q) for q in ex.asks) if train else
+                "the follower's displacement, velocity and acceleration" if cam else _asks(ex))
         click.echo(f"{'':<{pad}}asks: {asks}")
 
 

@@ -7,7 +7,7 @@ from pathlib import Path
 
 from ...constructions.errors import InputError
 
-__all__ = ["bundled", "bundled_trains", "resolve", "load"]
+__all__ = ["bundled", "bundled_trains", "bundled_cams", "resolve", "load"]
 
 
 def bundled() -> dict[str, Path]:
@@ -18,6 +18,11 @@ def bundled() -> dict[str, Path]:
 def bundled_trains() -> dict[str, Path]:
     """Map each bundled gear train's id to its path (the catalog's gears/ folder)."""
     return _tomls(resources.files(__name__) / "gears")
+
+
+def bundled_cams() -> dict[str, Path]:
+    """Map each bundled cam's id to its path (the catalog's cams/ folder)."""
+    return _tomls(resources.files(__name__) / "cams")
 
 
 def _tomls(root) -> dict[str, Path]:
@@ -36,7 +41,7 @@ def resolve(name: str) -> Path:
     path = Path(name)
     if path.is_file():
         return path
-    ids = {**bundled(), **bundled_trains()}
+    ids = {**bundled(), **bundled_trains(), **bundled_cams()}
     if name in ids:
         return ids[name]
     if path.is_dir():
@@ -58,7 +63,8 @@ def load(source: str | Path):
 
     An exercise file is a mechanism file with an ``[ask]`` table (see the
     README); without one it asks for every centre and each link's ω. A file that
-    lists ``[[gear]]`` tables is a gear train (a :class:`~..train_file.TrainExercise`).
+    lists ``[[gear]]`` tables is a gear train (a :class:`~..train_file.TrainExercise`), one
+    with a ``[cam]`` table a cam (a :class:`~..cam_file.CamExercise`).
     Its id is the file's stem, or the bundled id.
 
     Raises
@@ -67,6 +73,7 @@ def load(source: str | Path):
         If it is neither a file nor a bundled id, or the file is not a valid
         exercise (the message names file:line).
     """
+    from ..cam_file import is_cam, parse_cam
     from ..exercise_file import load_exercise
     from ..mechanism_file import read_source, read_toml
     from ..train_file import is_train, parse_train
@@ -75,6 +82,9 @@ def load(source: str | Path):
     path = resolve(source)
     exercise_id = Path(source).stem if Path(source).suffix else source
     text = read_source(path)
-    if is_train(read_toml(text, str(path))):
+    data = read_toml(text, str(path))
+    if is_train(data):
         return parse_train(text, str(path), exercise_id)
+    if is_cam(data):
+        return parse_cam(text, str(path), exercise_id)
     return load_exercise(path, exercise_id)

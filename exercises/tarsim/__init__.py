@@ -65,6 +65,10 @@ def solve(exercise: Exercise) -> WorkedSolution:
     from tarsim.exercises.solution_files import solve_worked
     from tarsim.exercises.train_file import TrainExercise
     from tarsim.exercises.train_solution import solve_train
+    from tarsim.exercises.cam_file import CamExercise
+    from tarsim.exercises.cam_solution import solve_cam
     if isinstance(exercise, TrainExercise):     # a gear train: speeds by the notes' methods
         return solve_train(exercise)
+    if isinstance(exercise, CamExercise):       # a cam: the follower's motion diagrams
+        return solve_cam(exercise)
     return solve_worked(exercise)

@@ -1,0 +1,145 @@
+"""Read a cam exercise (TOML with ``[cam]`` and ``[[segment]]`` tables).
+
+The format is documented in the README ("Cams"). Angles are in degrees, lifts and radii in
+the file's length unit, the cam's speed in rpm or rad/s. Every failure is one line naming
+file:line: segments that do not add to 360°, a negative lift, a cam that does not come back
+to its base circle, a law the diagram does not draw.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from ..constructions.cams.displacement import Segment
+from ..constructions.errors import InputError
+from ..constructions.model import LENGTH_UNITS
+from ..constructions.reference.cam_laws import LAWS
+from .mechanism_file import SourceMap, read_source, read_toml
+
+__all__ = ["CamExercise", "is_cam", "load_cam", "parse_cam"]
+
+_TOP = ("name", "source", "description", "units", "cam", "follower", "segment", "ask")
+_SPEEDS = {"rpm": 2 * math.pi / 60, "rad/s": 1.0}
+
+
+@dataclass(frozen=True)
+class CamExercise:
+    """A cam and its follower's motion: the base circle (m), the cam's ω (rad/s, CCW +),
+    the segments, and how the file states its units."""
+
+    id: str
+    name: str
+    source: str
+    description: str
+    base_radius: float
+    omega: float
+    segments: tuple[Segment, ...]
+    length_unit: str = "mm"
+    speed_unit: str = "rpm"
+    follower: str = "knife-edge"
+
+
+def is_cam(data: dict[str, Any]) -> bool:
+    """True for a file that describes a cam."""
+    return "cam" in data
+
+
+def load_cam(path: str | Path, exercise_id: str | None = None) -> CamExercise:
+    """Read a cam exercise file.
+
+    Raises
+    ------
+    InputError
+        Naming file:line and the setting.
+    """
+    path = Path(path)
+    return parse_cam(read_source(path), str(path), exercise_id or path.stem)
+
+
+def parse_cam(text: str, filename: str = "<string>", exercise_id: str = "cam") -> CamExercise:
+    """Parse a cam exercise from TOML text (see :func:`load_cam`)."""
+    data, where = read_toml(text, filename), SourceMap(text)
+
+    def fail(message: str, table: str | None = None, key: str | None = None,
+             index: int = 0) -> InputError:
+        line = (where.key(key, table, index) if key else None) or (
+            where.header(table, index) if table else None)
+        return InputError(message, file=filename, line=line)
+
+    for k in data:
+        if k not in _TOP:
+            raise fail(f"unknown table or setting '{k}' in a cam file; expected "
+                       f"{', '.join(_TOP)}", key=k)
+    units = data.get("units", {})
+    length, speed = units.get("length", "mm"), units.get("speed", "rpm")
+    if length not in LENGTH_UNITS:
+        raise fail(f"unknown length unit '{length}'; use {', '.join(LENGTH_UNITS)}", "units",
+                   "length")
+    if speed not in _SPEEDS:
+        raise fail(f"unknown speed unit '{speed}'; use rpm or rad/s", "units", "speed")
+    metre = LENGTH_UNITS[length]
+    cam = data.get("cam")
+    if not isinstance(cam, dict):
+        raise fail("[cam] gives the base circle and the cam's speed: base_radius = 40, "
+                   "speed = 300, sense = \"cw\"", "cam")
+
+    def number(t: dict, key: str, table: str, what: str, index: int = 0) -> float:
+        v = t.get(key)
+        if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v):
+            raise fail(f"{what} must be a number, got {v!r}", table, key, index)
+        return float(v)
+
+    base = number(cam, "base_radius", "cam", "the base radius")
+    if not 0 < base < 1e6:
+        raise fail(f"the base radius must be positive, got {base:g}", "cam", "base_radius")
+    rate = number(cam, "speed", "cam", "the cam's speed")
+    sense = cam.get("sense", "ccw")
+    if sense not in ("cw", "ccw") or rate <= 0:
+        raise fail("the cam turns at a positive speed, its sense cw or ccw", "cam", "sense")
+    omega = rate * _SPEEDS[speed] * (1 if sense == "ccw" else -1)
+    follower = (data.get("follower") or {}).get("kind", "knife-edge")
+    raw = data.get("segment")
+    if not isinstance(raw, list) or not raw:
+        raise fail("list the follower's motion as [[segment]] tables (kind, angle, lift, law)",
+                   key="segment")
+    segments, total, height = [], 0.0, 0.0
+    for i, t in enumerate(raw):
+        kind = t.get("kind") if isinstance(t, dict) else None
+        if kind not in ("rise", "dwell", "return"):
+            raise fail(f"a segment is a rise, a dwell or a return, not {kind!r}", "segment",
+                       "kind", i)
+        angle = number(t, "angle", "segment", "a segment's angle", i)
+        if not 0 < angle <= 360:
+            raise fail(f"a segment's angle must be more than 0° and at most 360°, got "
+                       f"{angle:g}°", "segment", "angle", i)
+        lift, law, divisions = 0.0, "", int(t.get("divisions", 6))
+        if kind != "dwell":
+            lift = number(t, "lift", "segment", "a segment's lift", i)
+            if lift < 0:
+                raise fail(f"a negative lift ({lift:g} {length}): a {kind} gives the lift's "
+                           "size, its kind the way", "segment", "lift", i)
+            law = t.get("law", "simple harmonic")
+            if law not in LAWS:
+                raise fail(f"unknown law '{law}'; the laws are {', '.join(LAWS)}", "segment",
+                           "law", i)
+            if not 2 <= divisions <= 24:
+                raise fail("a segment is divided into 2 to 24 equal parts", "segment",
+                           "divisions", i)
+        total += angle
+        height += lift if kind == "rise" else -lift
+        if height < -1e-12 * max(lift, 1.0):
+            raise fail(f"segment {i + 1} returns the follower below the base circle "
+                       f"({height:g} {length})", "segment", "lift", i)
+        segments.append(Segment(kind, math.radians(angle), lift * metre, law, divisions))
+    if abs(total - 360.0) > 1e-9:
+        raise fail(f"the segments add to {total:g}°, not 360°: the cam turns once",
+                   key="segment")
+    if abs(height) > 1e-9 * max(s.lift for s in segments):
+        raise fail(f"the rises and returns leave the follower {height:g} {length} off the "
+                   "base circle after a turn: they must balance", key="segment")
+    return CamExercise(exercise_id, str(data.get("name", exercise_id)),
+                       str(data.get("source", "")), str(data.get("description", "")),
+                       base * metre, omega, tuple(segments), length, speed, follower)

@@ -1,0 +1,230 @@
+"""A cam exercise solved: the follower's displacement diagram by construction, its velocity
+and acceleration against cam angle, and each segment's peaks, every number checked.
+
+The constructed displacement points are checked against the closed-form laws; each
+segment's peak velocity and acceleration by the textbook formulas (h/β, πh/2β, …, times ω
+and ω²) against the law sampled finely. The cam turns at constant speed here (α = 0), so
+the chain rule's α terms vanish and jerk is y‴ω³.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from dataclasses import dataclass
+from functools import cached_property
+from pathlib import Path
+from typing import Any
+
+from ..constructions.cams.displacement import Displacement, draw_displacement
+from ..constructions.narration import narrate
+from ..constructions.reference.cam_laws import motion, peaks
+from ..graphics.plot import PlotMark, Series, draw_line_plot
+from ..graphics.svg import to_svg
+from .cam_file import CamExercise
+from .solution_files import write_solution
+
+__all__ = ["CamSolution", "solve_cam"]
+
+_SAMPLES = 2000
+"""Points a segment's law is sampled at for the reference peaks and the curves."""
+
+_AGREE = 1e-12
+"""How far (relative to the greatest lift) a constructed point may stand off its law: a few
+roundings of the lift."""
+
+
+@dataclass(frozen=True)
+class SegmentPeaks:
+    """One segment's peaks: by the textbook formula, and by the law sampled (m/s, m/s²)."""
+
+    index: int
+    kind: str
+    law: str
+    velocity: float
+    acceleration: float
+    velocity_sampled: float
+    acceleration_sampled: float
+
+    @property
+    def passed(self) -> bool:
+        """The formulas agree with the sampled law (to the sampling's own fineness)."""
+        ok_v = abs(self.velocity - self.velocity_sampled) <= 1e-5 * self.velocity
+        ok_a = (math.isinf(self.acceleration) or
+                abs(self.acceleration - self.acceleration_sampled) <= 1e-5 * self.acceleration)
+        return ok_v and ok_a
+
+
+@dataclass(frozen=True)
+class CamSolution:
+    """A solved cam (see :func:`solve_cam`)."""
+
+    exercise: CamExercise
+    diagram: Displacement
+
+    @cached_property
+    def misses(self) -> list[tuple[int, int, float]]:
+        """Constructed points off their law: (segment, point, miss in m)."""
+        out, lift = [], 0.0
+        biggest = max(s.lift for s in self.exercise.segments) or 1.0
+        for k, (s, curve, start) in enumerate(zip(self.exercise.segments, self.diagram.curves,
+                                                  self.diagram.starts), start=1):
+            for i, (_, ref) in enumerate(curve):
+                theta, y = self.diagram.point(ref)
+                want = lift if s.kind == "dwell" else lift + _y(s, theta - start)
+                if abs(y - want) > _AGREE * biggest:
+                    out.append((k, i, abs(y - want)))
+            lift += _net(s)
+        return out
+
+    @cached_property
+    def peaks(self) -> list[SegmentPeaks]:
+        """Each moving segment's peak velocity and acceleration."""
+        w = abs(self.exercise.omega)
+        out = []
+        for k, s in enumerate(self.exercise.segments, start=1):
+            if s.kind == "dwell":
+                continue
+            v, a = peaks(s.law, s.lift, s.angle)
+            sample = [motion(s.law, s.lift, s.angle, s.angle * i / _SAMPLES)
+                      for i in range(_SAMPLES + 1)]
+            out.append(SegmentPeaks(k, s.kind, s.law, v * w, a * w * w,
+                                    max(abs(m.y1) for m in sample) * w,
+                                    max(abs(m.y2) for m in sample) * w * w))
+        return out
+
+    @property
+    def passed(self) -> bool:
+        """Every constructed point on its law and every peak formula its law's."""
+        return not self.misses and all(p.passed for p in self.peaks)
+
+    @property
+    def failures(self) -> list[str]:
+        """What disagrees, by name."""
+        return ([f"segment {k} point {i}" for k, i, _ in self.misses]
+                + [f"segment {p.index} peaks" for p in self.peaks if not p.passed])
+
+    # ----- what it writes ---------------------------------------------------------------------
+    def lines(self) -> list[str]:
+        """What the command line prints: each segment's peaks, checked."""
+        ex = self.exercise
+        unit = ex.length_unit
+        size = 1.0 / _metres(unit)
+        out = []
+        for p in self.peaks:
+            a = "∞ (at its ends)" if math.isinf(p.acceleration) else \
+                f"{p.acceleration * size:.6g} {unit}/s²"
+            out.append(f"segment {p.index} ({p.kind}, {p.law}): v_max = "
+                       f"{p.velocity * size:.6g} {unit}/s, a_max = {a}   "
+                       f"{'check ok' if p.passed else 'check FAILED'}")
+        worst = max((m for *_, m in self.misses), default=0.0)
+        verdict = "all on their laws" if not self.misses else f"OFF by {worst:.1e} m"
+        out.append(f"displacement diagram: {sum(len(c) for c in self.diagram.curves)} points "
+                   f"constructed, {verdict}")
+        return out
+
+    @cached_property
+    def curves(self) -> tuple[list[float], list[float], list[float], list[float]]:
+        """The follower's lift, velocity and acceleration (SI) against cam angle (degrees),
+        by the laws, each segment sampled at 361 points."""
+        ex = self.exercise
+        w = abs(ex.omega)            # θ is the angle the cam has turned, whichever its sense
+        xs, ys, vs, accs = [], [], [], []
+        lift, start = 0.0, 0.0
+        for s in ex.segments:
+            for i in range(0, 361):
+                t = s.angle * i / 360
+                m = motion(s.law, s.lift, s.angle, t, rise=s.kind == "rise") \
+                    if s.kind != "dwell" else None
+                xs.append(math.degrees(start + t))
+                base = lift - (s.lift if s.kind == "return" else 0.0)
+                ys.append((base + m.y) if m else lift)
+                vs.append(m.y1 * w if m else 0.0)
+                accs.append(m.y2 * w * w if m else 0.0)
+            lift += _net(s)
+            start += s.angle
+        return xs, ys, vs, accs
+
+    @property
+    def figures(self) -> dict[str, Any]:
+        """The displacement, velocity and acceleration diagrams against cam angle."""
+        ex = self.exercise
+        unit, size = ex.length_unit, 1.0 / _metres(ex.length_unit)
+        xs, ys, vs, accs = ([v * size for v in c] if k else c
+                            for k, c in enumerate(self.curves))
+        marks = [PlotMark(math.degrees(th), y * size)
+                 for curve in self.diagram.curves
+                 for th, y in (self.diagram.point(ref) for _, ref in curve)]
+        ticks = [(float(d), f"{d}") for d in range(0, 361, 30)]
+        name = ex.name
+
+        def plot(title, label, values, pts=()):
+            return draw_line_plot(f"{name}: {title}", "cam angle θ (°)", label,
+                                  [Series(title, tuple(zip(xs, values)))], pts,
+                                  x_range=(0.0, 360.0), x_ticks=ticks,
+                                  mark_legend="found by construction" if pts else "")
+        return {"displacement": plot("displacement", f"lift y ({unit})", ys, marks),
+                "velocity": plot("velocity", f"ẏ ({unit}/s)", vs),
+                "acceleration": plot("acceleration", f"ÿ ({unit}/s²)", accs)}
+
+    def steps(self) -> str:
+        """steps.md: the displacement diagram's construction, then each segment's peaks."""
+        ex = self.exercise
+        lines = [f"# {ex.name}: worked solution", ""]
+        if ex.description:
+            lines += [ex.description, ""]
+        lines += ["## The displacement diagram (`displacement.svg`)", ""]
+        said = [narrate(s) for s in self.diagram.construction.steps.values()]
+        lines += [f"{k}. {t}" for k, t in enumerate((t for t in said if t), 1)]
+        lines += ["", "## Peaks (`velocity.svg`, `acceleration.svg`)", "",
+                  "The cam turns at constant speed, so ẏ = y′ω and ÿ = y″ω² (the notes' chain "
+                  "rule with α = 0).", ""]
+        lines += [f"- {line}" for line in self.lines()]
+        return "\n".join(lines) + "\n"
+
+    @property
+    def results(self) -> dict[str, Any]:
+        """results.json: each segment's peaks in SI, beside the sampled law's."""
+        return {"exercise": self.exercise.id, "positions": [], "quantities": {
+            f"v_max_{p.index}": {"value": p.velocity, "reference": {
+                "value": p.velocity_sampled}, "method": f"{p.law} formula"}
+            for p in self.peaks} | {
+            f"a_max_{p.index}": {"value": None if math.isinf(p.acceleration)
+                                 else p.acceleration,
+                                 "reference": {"value": p.acceleration_sampled},
+                                 "method": f"{p.law} formula"}
+            for p in self.peaks}}
+
+    def files(self) -> dict[str, str]:
+        """Every file as text, by name."""
+        files = {f"{stem}.svg": to_svg(fig) for stem, fig in self.figures.items()}
+        files["steps.md"] = self.steps()
+        files["results.json"] = json.dumps(self.results, indent=2, ensure_ascii=False) + "\n"
+        return files
+
+    def write(self, folder: str | Path, *, pdf: bool = True) -> list[Path]:
+        """Write the files into ``folder``, all or nothing."""
+        return write_solution(self.files(), folder, pdf=pdf)
+
+
+def _y(s, theta: float) -> float:
+    """A segment's lift from its start's height at ``theta`` into it."""
+    m = motion(s.law, s.lift, s.angle, theta, rise=s.kind == "rise")
+    return m.y - (s.lift if s.kind == "return" else 0.0)
+
+
+def _net(s) -> float:
+    return s.lift if s.kind == "rise" else -s.lift if s.kind == "return" else 0.0
+
+
+def _metres(unit: str) -> float:
+    from ..constructions.model import LENGTH_UNITS
+
+    return LENGTH_UNITS[unit]
+
+
+def solve_cam(ex: CamExercise) -> CamSolution:
+    """The displacement diagram of ``ex`` by construction, at a cam-angle scale that sets a
+    turn six times the greatest lift across."""
+    biggest = max((s.lift for s in ex.segments), default=0.0) or ex.base_radius
+    return CamSolution(ex, draw_displacement(list(ex.segments), 6 * biggest / (2 * math.pi)))

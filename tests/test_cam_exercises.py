@@ -1,0 +1,79 @@
+"""A cam exercise end to end: the file, its checks in one line, the solve, its files."""
+
+from __future__ import annotations
+
+import json
+import math
+from pathlib import Path
+
+import pytest
+from click.testing import CliRunner
+
+from tarsim.constructions.errors import InputError
+from tarsim.exercises.cam_file import parse_cam
+from tarsim.exercises.cam_solution import solve_cam
+from tarsim.exercises.catalog import bundled_cams, load
+from tarsim.exercises.cli import cli
+
+CAM = Path(bundled_cams()["roller-harmonic-cycloidal"]).read_text(encoding="utf-8")
+
+
+def test_the_peaks_are_the_textbook_formulas_times_the_cams_speed():
+    """40 mm by simple harmonic motion over 120° at 300 rpm: v_max = πh/2β·ω = 942.48 mm/s,
+    a_max = π²h/2β²·ω² = 44.41 m/s²; the cycloidal return over 150°: 2h/β·ω = 960 mm/s."""
+    s = solve_cam(load("roller-harmonic-cycloidal"))
+    assert s.passed and not s.misses
+    w = 300 * 2 * math.pi / 60
+    rise, back = s.peaks
+    assert rise.velocity == pytest.approx(math.pi * 0.040 / (2 * math.radians(120)) * w,
+                                          rel=1e-14)
+    assert rise.velocity == pytest.approx(0.942478, rel=1e-6)
+    assert rise.acceleration == pytest.approx(math.pi ** 2 * 0.040 / (2 * math.radians(120) ** 2)
+                                              * w * w, rel=1e-14)
+    assert back.velocity == pytest.approx(0.960, rel=1e-12)
+    assert back.acceleration == pytest.approx(2 * math.pi * 0.040 / math.radians(150) ** 2
+                                              * w * w, rel=1e-14)
+
+
+def test_the_follower_rises_during_the_rise_whichever_way_the_cam_turns():
+    s = solve_cam(load("roller-harmonic-cycloidal"))
+    assert s.exercise.omega < 0                   # the cam turns clockwise
+    xs, ys, vs, _ = s.curves
+    at = {round(x, 9): (y, v) for x, y, v in zip(xs, ys, vs)}
+    assert at[60.0][1] == pytest.approx(0.942478, rel=1e-6)    # mid-rise: up, at its fastest
+    assert at[225.0][1] == pytest.approx(-0.960, rel=1e-9)     # mid-return: down
+    assert at[60.0][0] == pytest.approx(0.020, rel=1e-12)
+
+
+@pytest.mark.parametrize("old, new, words", [
+    ("angle = 60", "angle = 50", ["the segments add to 350°, not 360°"]),
+    ("lift = 40\nlaw = \"simple harmonic\"", "lift = -40\nlaw = \"simple harmonic\"",
+     ["a negative lift (-40 mm)"]),
+    ("lift = 40\nlaw = \"cycloidal\"", "lift = 30\nlaw = \"cycloidal\"",
+     ["leave the follower 10 mm off the base circle"]),
+    ("law = \"cycloidal\"", "law = \"spline\"", ["unknown law 'spline'"]),
+    ("kind = \"dwell\"\nangle = 30", "kind = \"pause\"\nangle = 30",
+     ["a segment is a rise, a dwell or a return, not 'pause'"]),
+])
+def test_a_bad_cam_is_refused_in_one_line_at_its_place(old, new, words):
+    assert old in CAM
+    with pytest.raises(InputError) as e:
+        parse_cam(CAM.replace(old, new, 1), "cam.toml")
+    message = str(e.value)
+    assert "\n" not in message and message.startswith("cam.toml:")
+    for w in words:
+        assert w in message, message
+
+
+def test_solve_writes_the_diagrams_steps_and_peaks(tmp_path):
+    out = tmp_path / "cam"
+    result = CliRunner().invoke(cli, ["solve", "roller-harmonic-cycloidal", "-o", str(out),
+                                      "--no-pdf"])
+    assert result.exit_code == 0, result.output
+    assert "v_max = 942.478 mm/s" in result.output
+    assert {p.name for p in out.iterdir()} >= {"displacement.svg", "velocity.svg",
+                                              "acceleration.svg", "steps.md", "results.json"}
+    doc = json.loads((out / "results.json").read_text(encoding="utf-8"))
+    assert doc["quantities"]["v_max_1"]["value"] == pytest.approx(0.942478, rel=1e-6)
+    steps = (out / "steps.md").read_text(encoding="utf-8")
+    assert "on the lift of 40 mm draw a semicircle" in steps
