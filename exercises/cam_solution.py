@@ -19,7 +19,8 @@ from typing import Any
 from ..constructions.cams.displacement import Displacement, draw_displacement
 from ..constructions.narration import narrate
 from ..constructions.reference.cam_laws import motion, peaks
-from ..graphics.plot import PlotMark, Series, draw_line_plot
+from ..graphics.displacement_figure import draw_displacement_figure
+from ..graphics.plot import Series, draw_line_plot
 from ..graphics.svg import to_svg
 from .cam_file import CamExercise
 from .solution_files import write_solution
@@ -152,9 +153,6 @@ class CamSolution:
         unit, size = ex.length_unit, 1.0 / _metres(ex.length_unit)
         xs, ys, vs, accs = ([v * size for v in c] if k else c
                             for k, c in enumerate(self.curves))
-        marks = [PlotMark(math.degrees(th), y * size)
-                 for curve in self.diagram.curves
-                 for th, y in (self.diagram.point(ref) for _, ref in curve)]
         ticks = [(float(d), f"{d}") for d in range(0, 361, 30)]
         name = ex.name
 
@@ -163,7 +161,9 @@ class CamSolution:
                                   [Series(title, tuple(zip(xs, values)))], pts,
                                   x_range=(0.0, 360.0), x_ticks=ticks,
                                   mark_legend="found by construction" if pts else "")
-        return {"displacement": plot("displacement", f"lift y ({unit})", ys, marks),
+        curve = [(math.radians(x), y) for x, y in zip(self.curves[0], self.curves[1])]
+        return {"displacement": draw_displacement_figure(
+                    self.diagram, curve, f"{name}: displacement", unit, _metres(unit)),
                 "velocity": plot("velocity", f"ẏ ({unit}/s)", vs),
                 "acceleration": plot("acceleration", f"ÿ ({unit}/s²)", accs)}
 

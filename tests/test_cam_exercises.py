@@ -77,3 +77,27 @@ def test_solve_writes_the_diagrams_steps_and_peaks(tmp_path):
     assert doc["quantities"]["v_max_1"]["value"] == pytest.approx(0.942478, rel=1e-6)
     steps = (out / "steps.md").read_text(encoding="utf-8")
     assert "on the lift of 40 mm draw a semicircle" in steps
+
+
+def test_the_displacement_figure_inks_each_constructed_point_at_its_laws_height():
+    """The figure's dots, read back off the paper, stand at the law's lift: the rise's
+    harmonic y = h/2·(1 − cos πi/6) and the return's cycloid, each to paper rounding; the
+    semicircle and the cycloid's circle are both inked."""
+    from tarsim.constructions.reference.cam_laws import motion
+    from tarsim.graphics.figure import Circle, Path as Stroke
+
+    s = solve_cam(load("roller-harmonic-cycloidal"))
+    fig = s.figures["displacement"]
+    dots = [it.centre for it in fig.items if isinstance(it, Circle) and it.style == "dot"]
+    assert len(dots) == sum(len(c) for c in s.diagram.curves) == 18
+    base = dots[0][1]                                  # the figure is shifted onto its page
+    mm_per_m = (base - min(y for _, y in dots)) / 0.040   # the top of the rise is h = 40 mm
+    rise = [motion("simple harmonic", 0.040, math.radians(120), math.radians(20 * i)).y
+            for i in range(7)]
+    assert [(base - y) / mm_per_m for _, y in dots[:7]] == pytest.approx(rise, abs=1e-12)
+    back = [0.040 - motion("cycloidal", 0.040, math.radians(150), math.radians(25 * i)).y
+            for i in range(7)]
+    assert [(base - y) / mm_per_m for _, y in dots[9:16]] == pytest.approx(back, abs=1e-12)
+    across = [it.points for it in fig.items if isinstance(it, Stroke)
+              and it.style == "construction" and len(it.points) > 8]
+    assert len(across) == 2                               # the semicircle, the cycloid's circle

@@ -53,6 +53,12 @@ class Displacement:
     curves: list[list[tuple[float, Ref]]] = field(default_factory=list)
     starts: list[float] = field(default_factory=list)
     """Each segment's start, as a cam angle (rad)."""
+    strokes: list[tuple[Ref, Ref]] = field(default_factory=list)
+    """The working lines a draftsman inks, each from one drawn point to another: the
+    projections across, the divided line and its parallels, the runs along the diagonal."""
+    arcs: list[tuple[Ref, Ref, float]] = field(default_factory=list)
+    """The arcs inked, each as (centre, first point, sweep in rad): the semicircles, the
+    cycloid's circles."""
 
     def point(self, ref: Ref) -> tuple[float, float]:
         """A drawn point as (cam angle, lift): rad and m."""
@@ -75,7 +81,7 @@ def draw_displacement(segments: list[Segment], per_rad: float) -> Displacement:
     theta, lift = 0.0, 0.0
     for k, s in enumerate(segments, start=1):
         out.starts.append(theta)
-        drafting = _Segment(c, k, s, theta * per_rad, lift, per_rad)
+        drafting = _Segment(c, k, s, theta * per_rad, lift, per_rad, out)
         out.curves.append(drafting.draw())
         theta += s.angle
         lift += s.lift if s.kind == "rise" else -s.lift if s.kind == "return" else 0.0
@@ -84,8 +90,8 @@ def draw_displacement(segments: list[Segment], per_rad: float) -> Displacement:
 
 class _Segment:
     def __init__(self, c: Construction, k: int, s: Segment, x0: float, y0: float,
-                 per_rad: float):
-        self.c, self.k, self.s, self.x0, self.y0 = c, k, s, x0, y0
+                 per_rad: float, out: Displacement):
+        self.c, self.k, self.s, self.x0, self.y0, self.out = c, k, s, x0, y0, out
         self.width = s.angle * per_rad
         self.h = s.lift if s.kind == "rise" else -s.lift if s.kind == "return" else 0.0
 
@@ -132,7 +138,9 @@ class _Segment:
     def level(self, ref: Ref, ordinate: Ref, i: int) -> Ref:
         """Project the point ``ref`` across to ``ordinate``: the curve's point ``i``."""
         across = self.act(f"across{i}", "parallel_through", ref, "base", kind=Kind.LINE)
-        return self.act(f"pt{i}", "intersect_lines", across, ordinate, label=str(i))
+        point = self.act(f"pt{i}", "intersect_lines", across, ordinate, label=str(i))
+        self.out.strokes.append((ref, point))
+        return point
 
     def dwell(self) -> list[tuple[float, Ref]]:
         a = self.give("a", g.Point(self.x0, self.y0), said=phrase(
@@ -145,6 +153,7 @@ class _Segment:
         a = self.give("a", g.Point(self.x0, self.y0))
         b = self.give("b", g.Point(self.x0 + self.width, self.y0 + self.h))
         line = self.act("diagonal", "line_through", a, b, said=phrase("cam.uniform", k=self.k))
+        self.out.strokes.append((a, b))
         return [(t, self.act(f"pt{i}", "intersect_lines", line, o, label=str(i)))
                 for i, (t, o) in enumerate(zip(self.angles(), ordinates))]
 
@@ -157,6 +166,7 @@ class _Segment:
             "cam.harmonic", k=self.k, n=n, lift=f"{abs(self.h) * 1e3:.4g} mm"))
         turn = -math.pi / n if self.h > 0 else math.pi / n
         self.act("semicircle", "circle_through", centre, first, kind=Kind.ARC)
+        self.out.arcs.append((centre, first, n * turn))
         out = []
         for i, (t, o) in enumerate(zip(self.angles(), ordinates)):
             s = self.act(f"S{i}", "rotate_about", first, centre, angle=i * turn) if i else first
@@ -185,11 +195,13 @@ class _Segment:
             marks = [self.act(f"h{part}:m{j}", "lay_off", foot, ray, length=j * j * step)
                      for j in range(1, m + 1)]
             closing = self.act(f"h{part}:close", "line_through", marks[-1], mid, kind=Kind.LINE)
+            self.out.strokes += [(foot, marks[-1]), (marks[-1], mid)]
             heights = []
             for j in range(1, m):
                 par = self.act(f"h{part}:par{j}", "parallel_through", marks[j - 1], closing,
                                kind=Kind.LINE)
                 heights.append(self.act(f"h{part}:d{j}", "intersect_lines", par, ordinate))
+                self.out.strokes.append((marks[j - 1], heights[-1]))
             heights.append(mid)
             if part == 0:
                 out.append((angles[0], foot))
@@ -214,6 +226,8 @@ class _Segment:
         up = self.act("ordinate", "perpendicular_through", start, "base", kind=Kind.LINE)
         east = self.give("E", g.Point(self.x0 + radius, self.y0))
         self.act("circle", "circle_through", start, east, kind=Kind.ARC)
+        self.out.arcs.append((start, east, 2 * math.pi))
+        self.out.strokes.append((start, end))
         sign = -1.0 if self.h > 0 else 1.0
         out = []
         for i, (t, o) in enumerate(zip(self.angles(), ordinates)):
@@ -221,5 +235,7 @@ class _Segment:
             on = self.act(f"q{i}", "intersect_lines",
                           self.act(f"qa{i}", "parallel_through", p, "base", kind=Kind.LINE), up)
             run = self.act(f"run{i}", "parallel_through", on, diagonal, kind=Kind.LINE)
-            out.append((t, self.act(f"pt{i}", "intersect_lines", run, o, label=str(i))))
+            point = self.act(f"pt{i}", "intersect_lines", run, o, label=str(i))
+            self.out.strokes += [(p, on), (on, point)]
+            out.append((t, point))
         return out
