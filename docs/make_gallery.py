@@ -18,7 +18,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 import cairosvg  # noqa: E402
 
 import tarsim  # noqa: E402
-from tarsim.exercises.catalog import bundled, bundled_trains  # noqa: E402
+from tarsim.exercises.catalog import bundled, bundled_cams, bundled_trains  # noqa: E402
 from tarsim.graphics.svg import to_svg  # noqa: E402
 
 GALLERY = Path(__file__).resolve().parent / "gallery"
@@ -26,7 +26,7 @@ WIDTH = 1000
 """Pixels across a PNG, at most: enough to read the labels, small enough to keep."""
 
 ORDER = ("klein", "worked", "V_", "centres", "limits", "mechanism", "mesh", "kutzbach", "table",
-         "train-value")
+         "train-value", "profile")
 """The kinds of figure in the order one is taken as an exercise's main figure."""
 
 
@@ -42,7 +42,7 @@ def main_figure(figures: dict):
 def main() -> None:
     """Solve every bundled exercise and write its main figure as docs/gallery/<id>.png."""
     GALLERY.mkdir(exist_ok=True)
-    for name in [*bundled(), *bundled_trains()]:
+    for name in [*bundled(), *bundled_trains(), *bundled_cams()]:
         stem, figure = main_figure(tarsim.solve(tarsim.load(name)).figures)
         svg = to_svg(figure)
         width_mm = figure.width

@@ -17,6 +17,7 @@ from ..constructions.cams.displacement import Segment
 from ..constructions.errors import InputError
 from ..constructions.model import LENGTH_UNITS
 from ..constructions.reference.cam_laws import LAWS
+from ..constructions.reference.cam_profile import Follower, arm_start, prime_radius
 from .mechanism_file import SourceMap, read_source, read_toml
 
 __all__ = ["CamExercise", "is_cam", "load_cam", "parse_cam"]
@@ -39,7 +40,12 @@ class CamExercise:
     segments: tuple[Segment, ...]
     length_unit: str = "mm"
     speed_unit: str = "rpm"
-    follower: str = "knife-edge"
+    follower: Follower = Follower()
+
+    @property
+    def sigma(self) -> float:
+        """The cam's sense: +1 counter-clockwise."""
+        return 1.0 if self.omega > 0 else -1.0
 
 
 def is_cam(data: dict[str, Any]) -> bool:
@@ -100,7 +106,7 @@ def parse_cam(text: str, filename: str = "<string>", exercise_id: str = "cam") -
     if sense not in ("cw", "ccw") or rate <= 0:
         raise fail("the cam turns at a positive speed, its sense cw or ccw", "cam", "sense")
     omega = rate * _SPEEDS[speed] * (1 if sense == "ccw" else -1)
-    follower = (data.get("follower") or {}).get("kind", "knife-edge")
+    follower = _follower(data.get("follower") or {}, base * metre, metre, length, fail)
     raw = data.get("segment")
     if not isinstance(raw, list) or not raw:
         raise fail("list the follower's motion as [[segment]] tables (kind, angle, lift, law)",
@@ -118,6 +124,8 @@ def parse_cam(text: str, filename: str = "<string>", exercise_id: str = "cam") -
         lift, law, divisions = 0.0, "", int(t.get("divisions", 6))
         if kind != "dwell":
             lift = number(t, "lift", "segment", "a segment's lift", i)
+            if follower.oscillating:               # the arm's swing, as the arc at its end
+                lift = math.radians(lift) * follower.arm / metre
             if lift < 0:
                 raise fail(f"a negative lift ({lift:g} {length}): a {kind} gives the lift's "
                            "size, its kind the way", "segment", "lift", i)
@@ -143,3 +151,64 @@ def parse_cam(text: str, filename: str = "<string>", exercise_id: str = "cam") -
     return CamExercise(exercise_id, str(data.get("name", exercise_id)),
                        str(data.get("source", "")), str(data.get("description", "")),
                        base * metre, omega, tuple(segments), length, speed, follower)
+
+
+_FOLLOWER_KEYS = ("kind", "radius", "motion", "offset", "pivot", "arm")
+_KINDS = ("knife-edge", "roller", "flat-faced")
+
+
+def _follower(t: dict[str, Any], base: float, metre: float, unit: str, fail) -> Follower:
+    """The [follower] table: its kind, roller radius, and a translating line's offset or an
+    oscillating arm's pivot and length (the file's length unit, from the cam centre)."""
+    for k in t:
+        if k not in _FOLLOWER_KEYS:
+            raise fail(f"unknown setting '{k}' in [follower]; expected "
+                       f"{', '.join(_FOLLOWER_KEYS)}", "follower", k)
+    kind, how = t.get("kind", "knife-edge"), t.get("motion", "translating")
+    if kind not in _KINDS:
+        raise fail(f"a follower is {', '.join(_KINDS)}, not {kind!r}", "follower", "kind")
+    if how not in ("translating", "oscillating"):
+        raise fail(f"a follower is translating or oscillating, not {how!r}", "follower",
+                   "motion")
+
+    def size(key: str, what: str) -> float:
+        v = t.get(key, 0)
+        if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v):
+            raise fail(f"{what} must be a number, got {v!r}", "follower", key)
+        return float(v) * metre
+
+    radius = size("radius", "the roller's radius")
+    if kind == "roller" and not radius > 0:
+        raise fail("a roller follower gives its radius: radius = 10", "follower", "radius")
+    if how == "translating":
+        offset = size("offset", "the follower's offset")
+        reach = prime_radius(base, Follower(kind, radius))
+        if abs(offset) >= reach:
+            raise fail(f"an offset of {abs(offset) / metre:g} {unit} puts the follower's line "
+                       f"clear of the prime circle ({reach / metre:g} {unit})", "follower",
+                       "offset")
+        return Follower(kind, radius, offset)
+    if kind == "flat-faced":
+        raise fail("an oscillating flat face is not laid out yet: use a roller or a knife "
+                   "edge on the arm", "follower", "kind")
+    pivot = t.get("pivot")
+    if (not isinstance(pivot, list) or len(pivot) != 2
+            or not all(isinstance(v, (int, float)) and not isinstance(v, bool)
+                       and math.isfinite(v) for v in pivot)):
+        raise fail("an oscillating follower gives its pivot from the cam centre: "
+                   "pivot = [70, 0]", "follower", "pivot")
+    f = Follower(kind, radius, 0.0, (pivot[0] * metre, pivot[1] * metre),
+                 size("arm", "the arm's length"))
+    if not f.arm > 0:
+        raise fail("an oscillating follower gives its arm's length: arm = 50", "follower",
+                   "arm")
+    d, r = math.hypot(*f.pivot), prime_radius(base, f)
+    if not abs(d - f.arm) < r < d + f.arm:
+        raise fail(f"an arm of {f.arm / metre:g} {unit} on a pivot {d / metre:g} {unit} from "
+                   f"the cam centre cannot reach the prime circle ({r / metre:g} {unit})",
+                   "follower", "arm")
+    try:
+        arm_start(base, f)
+    except ValueError as e:
+        raise fail(str(e), "follower", "pivot") from None
+    return f

@@ -1,5 +1,6 @@
 """A cam exercise solved: the follower's displacement diagram by construction, its velocity
-and acceleration against cam angle, and each segment's peaks, every number checked.
+and acceleration against cam angle, each segment's peaks, and the cam's profile laid out by
+inversion (:mod:`.cam_layout`), every number checked.
 
 The constructed displacement points are checked against the closed-form laws; each
 segment's peak velocity and acceleration by the textbook formulas (h/β, πh/2β, …, times ω
@@ -23,6 +24,7 @@ from ..graphics.displacement_figure import draw_displacement_figure
 from ..graphics.plot import Series, draw_line_plot
 from ..graphics.svg import to_svg
 from .cam_file import CamExercise
+from .cam_layout import CamProfile, refuse_undercut
 from .solution_files import write_solution
 
 __all__ = ["CamSolution", "solve_cam"]
@@ -64,6 +66,11 @@ class CamSolution:
     diagram: Displacement
 
     @cached_property
+    def profile(self) -> CamProfile:
+        """The cam's profile laid out by inversion from the diagram."""
+        return CamProfile(self.exercise, self.diagram)
+
+    @cached_property
     def misses(self) -> list[tuple[int, int, float]]:
         """Constructed points off their law: (segment, point, miss in m)."""
         out, lift = [], 0.0
@@ -97,13 +104,14 @@ class CamSolution:
     @property
     def passed(self) -> bool:
         """Every constructed point on its law and every peak formula its law's."""
-        return not self.misses and all(p.passed for p in self.peaks)
+        return not self.misses and all(p.passed for p in self.peaks) and self.profile.passed
 
     @property
     def failures(self) -> list[str]:
         """What disagrees, by name."""
         return ([f"segment {k} point {i}" for k, i, _ in self.misses]
-                + [f"segment {p.index} peaks" for p in self.peaks if not p.passed])
+                + [f"segment {p.index} peaks" for p in self.peaks if not p.passed]
+                + [f"profile station {i}" for i, _ in self.profile.survey.misses])
 
     # ----- what it writes ---------------------------------------------------------------------
     def lines(self) -> list[str]:
@@ -115,14 +123,17 @@ class CamSolution:
         for p in self.peaks:
             a = "∞ (at its ends)" if math.isinf(p.acceleration) else \
                 f"{p.acceleration * size:.6g} {unit}/s²"
+            arm = ex.follower.arm if ex.follower.oscillating else 0.0
+            swing = (f" (the arm: {p.velocity / arm:.6g} rad/s, "
+                     f"{p.acceleration / arm:.6g} rad/s²)") if arm else ""
             out.append(f"segment {p.index} ({p.kind}, {p.law}): v_max = "
-                       f"{p.velocity * size:.6g} {unit}/s, a_max = {a}   "
+                       f"{p.velocity * size:.6g} {unit}/s, a_max = {a}{swing}   "
                        f"{'check ok' if p.passed else 'check FAILED'}")
         worst = max((m for *_, m in self.misses), default=0.0)
         verdict = "all on their laws" if not self.misses else f"OFF by {worst:.1e} m"
         out.append(f"displacement diagram: {sum(len(c) for c in self.diagram.curves)} points "
                    f"constructed, {verdict}")
-        return out
+        return out + self.profile.lines()
 
     @cached_property
     def curves(self) -> tuple[list[float], list[float], list[float], list[float]]:
@@ -165,7 +176,8 @@ class CamSolution:
         return {"displacement": draw_displacement_figure(
                     self.diagram, curve, f"{name}: displacement", unit, _metres(unit)),
                 "velocity": plot("velocity", f"ẏ ({unit}/s)", vs),
-                "acceleration": plot("acceleration", f"ÿ ({unit}/s²)", accs)}
+                "acceleration": plot("acceleration", f"ÿ ({unit}/s²)", accs)
+                } | self.profile.figures()
 
     def steps(self) -> str:
         """steps.md: the displacement diagram's construction, then each segment's peaks."""
@@ -179,7 +191,10 @@ class CamSolution:
         lines += ["", "## Peaks (`velocity.svg`, `acceleration.svg`)", "",
                   "The cam turns at constant speed, so ẏ = y′ω and ÿ = y″ω² (the notes' chain "
                   "rule with α = 0).", ""]
-        lines += [f"- {line}" for line in self.lines()]
+        lines += [f"- {line}" for line in self.lines()[:len(self.peaks) + 1]]
+        lines += ["", "## The profile by inversion (`profile.svg`, `profile-table.svg`)", ""]
+        lines += self.profile.steps() + [""]
+        lines += [f"- {line}" for line in self.profile.lines()]
         return "\n".join(lines) + "\n"
 
     @property
@@ -193,7 +208,7 @@ class CamSolution:
                                  else p.acceleration,
                                  "reference": {"value": p.acceleration_sampled},
                                  "method": f"{p.law} formula"}
-            for p in self.peaks}}
+            for p in self.peaks} | self.profile.quantities()}
 
     def files(self) -> dict[str, str]:
         """Every file as text, by name."""
@@ -223,8 +238,18 @@ def _metres(unit: str) -> float:
     return LENGTH_UNITS[unit]
 
 
-def solve_cam(ex: CamExercise) -> CamSolution:
+def solve_cam(ex: CamExercise, *, allow_undercut: bool = False) -> CamSolution:
     """The displacement diagram of ``ex`` by construction, at a cam-angle scale that sets a
-    turn six times the greatest lift across."""
+    turn six times the greatest lift across, and the profile laid out from it.
+
+    Raises
+    ------
+    InputError
+        If the follower undercuts the cam, unless ``allow_undercut``.
+    """
     biggest = max((s.lift for s in ex.segments), default=0.0) or ex.base_radius
-    return CamSolution(ex, draw_displacement(list(ex.segments), 6 * biggest / (2 * math.pi)))
+    solution = CamSolution(ex, draw_displacement(list(ex.segments),
+                                                 6 * biggest / (2 * math.pi)))
+    if not allow_undercut:
+        refuse_undercut(solution.profile)
+    return solution

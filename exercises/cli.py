@@ -205,8 +205,11 @@ def check(source, angle):
 @click.option("--pdf/--no-pdf", default=True, show_default=True,
               help="Also write a PDF of each figure (needs libcairo2).")
 @_paper
+@click.option("--allow-undercut", is_flag=True,
+              help="A cam whose roller undercuts it, or whose flat face meets a concave "
+                   "profile: draw it with the trouble ringed instead of refusing it.")
 @_fails_cleanly
-def solve(source, out_dir, angle, pdf, paper):
+def solve(source, out_dir, angle, pdf, paper, allow_undercut):
     """Solve an exercise by graphical construction and check every number.
 
     FILE is a mechanism file whose [ask] table names what to find (see the
@@ -244,9 +247,11 @@ def solve(source, out_dir, angle, pdf, paper):
     in a planetary one, each checked by the Willis equations; it writes
     table (or train-value), train (the train in side view), kutzbach (a
     planetary train's velocity diagram) and mesh (the involute mesh, with
-    [involute]). A cam file ([cam] and [[segment]] tables) gets the
-    follower's displacement diagram by construction, and its velocity and
-    acceleration diagrams.
+    [involute]). A cam file ([cam], [follower] and [[segment]] tables) gets
+    the follower's displacement diagram by construction, its velocity and
+    acceleration diagrams, and the profile laid out by inversion (profile,
+    with the pressure angle and curvature at each station in profile-table);
+    a roller that undercuts the cam is refused unless --allow-undercut.
 
     \b
     Example:
@@ -255,6 +260,7 @@ def solve(source, out_dir, angle, pdf, paper):
       tarsim solve my-exercise.toml --angle 120 --no-pdf
       tarsim solve whitworth --paper A3          # the worked page on one sheet
       tarsim solve planetary-q1                  # the notes' planetary Q1
+      tarsim solve eccentric-flat-face           # the notes' §3.20 cam
 
     The exit status is 3 if any constructed number disagrees with the analytic
     one beyond the tolerance its conditioning allows (the files are written all
@@ -274,7 +280,7 @@ def solve(source, out_dir, angle, pdf, paper):
     if isinstance(loaded, CamExercise):
         if angle is not None:
             raise InputError("a cam is solved over its whole turn: leave out --angle")
-        return _solve_cam(loaded, out_dir, pdf)
+        return _solve_cam(loaded, out_dir, pdf, allow_undercut)
     ex = replace(_exercise(source, angle), paper=paper)
     out = Path(out_dir or f"{ex.id}-solution")
     with output_folder(out):      # a folder that cannot be written fails before the solve
@@ -381,11 +387,12 @@ def _solve_train(ex, out_dir: str | None, pdf: bool) -> None:
     _solve_other(ex, solve_train, out_dir, pdf)
 
 
-def _solve_cam(ex, out_dir: str | None, pdf: bool) -> None:
-    """Solve a cam's follower motion, print its peaks, and write its files."""
+def _solve_cam(ex, out_dir: str | None, pdf: bool, allow_undercut: bool) -> None:
+    """Solve a cam's follower motion and profile, print its checks, and write its files."""
     from .cam_solution import solve_cam
 
-    _solve_other(ex, solve_cam, out_dir, pdf)
+    _solve_other(ex, functools.partial(solve_cam, allow_undercut=allow_undercut), out_dir,
+                 pdf)
 
 
 def _solve_other(ex, solve, out_dir: str | None, pdf: bool) -> None:

@@ -146,7 +146,8 @@ def test_bad_file_is_one_line_with_file_and_line(mech_file, tmp_path, edit, mess
                         "six-link-homework-3, slotted-lever-p37, velocity-homework-292, "
                         "wheel-driven-slider, wheel-round-circle, whitworth, compound-train, "
                         "involute-pair, planetary-q1, planetary-q2, planetary-q3, "
-                        "planetary-q4, roller-harmonic-cycloidal\n"),
+                        "planetary-q4, eccentric-flat-face, offset-knife-edge, "
+                        "oscillating-roller, roller-harmonic-cycloidal\n"),
     ("missing.toml", "Error: no such file 'missing.toml'\n"),
 ])
 def test_unknown_source_is_one_line(source, message):
@@ -267,7 +268,8 @@ def test_list_shows_the_bundled_examples():
                    "six-link-homework-3", "slotted-lever-p37", "velocity-homework-292",
                    "wheel-driven-slider", "wheel-round-circle", "whitworth", "compound-train",
                    "involute-pair", "planetary-q1", "planetary-q2", "planetary-q3",
-                   "planetary-q4", "roller-harmonic-cycloidal"]
+                   "planetary-q4", "eccentric-flat-face", "offset-knife-edge",
+                   "oscillating-roller", "roller-harmonic-cycloidal"]
     assert "Four-bar crank-rocker" in result.stdout
 
 

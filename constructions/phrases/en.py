@@ -152,6 +152,30 @@ PHRASES: dict[str, str] = {
                      "= {radius} and divide it into {n} equal arcs; project each division onto "
                      "the start ordinate, and from there run a parallel to the segment's "
                      "diagonal to its ordinate.",
+    "cam.centre": "Mark the cam's centre O; the cam is held still and the follower turned "
+                  "round it the other way (the inversion).",
+    "cam.base": "Draw the base circle about O, radius {r}.",
+    "cam.prime": "Draw the prime circle about O, radius {r}: the base circle grown by the "
+                 "roller's radius {roller}, where the roller's centre rests.",
+    "cam.offset": "Draw the offset circle about O, radius {e}: the follower's line stays "
+                  "tangent to it.",
+    "cam.pivot_circle": "Draw the pivot circle about O through the follower's pivot A; the "
+                        "arm, {arm} long, is turned round with it.",
+    "cam.stations": "Turn the {follower} follower's rest position {turn} about O, against "
+                    "the cam's turning, by each station's cam angle, and number the stations.",
+    "cam.lift": "Station {i} ({deg}): along the follower's line lay off the lift {lift}, taken "
+                "from the displacement diagram{then}.",
+    "cam.swing": "Station {i} ({deg}): about the turned pivot swing the arm through {swing}, "
+                 "the follower's angle from the displacement diagram{then}.",
+    "cam.then.roller": "; about the point so found draw the roller's circle, radius {r}",
+    "cam.then.flat-faced": "; through the point so found draw the face, square to the line",
+    "cam.profile.knife-edge": "Draw the profile as the smooth curve through the knife edge's "
+                              "points: for a knife edge it is the pitch curve itself.",
+    "cam.profile.roller": "Draw the pitch curve through the roller's centres, and the profile "
+                          "as the smooth curve inside every roller circle, touching each (the "
+                          "inner envelope).",
+    "cam.profile.flat-faced": "Draw the profile as the smooth curve inside every face line, "
+                              "touching each (the envelope of the face lines).",
     "gears.locked": "Row 1: lock the whole train, {arm} with it, and turn it +1 "
                     "(counter-clockwise): every member turns +1.",
     "gears.held": "Row 2: hold {arm} and turn {fixed}, the fixed member, −1 turn:",

@@ -55,7 +55,8 @@ def solve(exercise: Exercise) -> WorkedSolution:
     The solution has ``.results`` (the results.json document), ``.figures``
     (file stem → figure, each with ``.save(path)``, shown inline in a notebook),
     ``.steps()`` (steps.md), ``.passed`` and ``.write(folder)``; a gear train's
-    (``[[gear]]`` tables) the same, solved by the notes' tabular method.
+    (``[[gear]]`` tables) the same, solved by the notes' tabular method; a cam's (``[cam]``)
+    its follower's motion and its profile laid out by inversion (an undercut refused).
 
     Raises
     ------
@@ -69,6 +70,6 @@ def solve(exercise: Exercise) -> WorkedSolution:
     from tarsim.exercises.cam_solution import solve_cam
     if isinstance(exercise, TrainExercise):     # a gear train: speeds by the notes' methods
         return solve_train(exercise)
-    if isinstance(exercise, CamExercise):       # a cam: the follower's motion diagrams
+    if isinstance(exercise, CamExercise):       # a cam: the motion diagrams and the profile
         return solve_cam(exercise)
     return solve_worked(exercise)

@@ -1,0 +1,195 @@
+"""A cam's profile solved: laid out by inversion, held to the closed form, surveyed.
+
+The part of a cam solution that is the cam itself rather than its follower's motion: the
+layout figure, the table of pressure angle and curvature at each station, the steps of
+the layout, and its numbers for the command line and ``results.json``. A roller that
+undercuts, or a flat face on a concave profile, is refused in one line naming the cam
+angle, unless the caller allows it, when the figure marks it.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from functools import cached_property
+from typing import Any
+
+from ..constructions.cams.displacement import Displacement
+from ..constructions.cams.inversion import Layout, lay_out_profile
+from ..constructions.cams.survey import Survey, survey
+from ..constructions.errors import InputError
+from ..constructions.narration import narrate
+from ..graphics.cam_layout_figure import draw_cam_layout
+from ..graphics.figure import Figure
+from ..graphics.train_table import draw_train_table
+from .cam_file import CamExercise
+
+__all__ = ["CamProfile", "refuse_undercut"]
+
+
+@dataclass(frozen=True)
+class CamProfile:
+    """The layout of ``exercise``'s cam from its displacement ``diagram``."""
+
+    exercise: CamExercise
+    diagram: Displacement
+
+    @cached_property
+    def layout(self) -> Layout:
+        """The layout by inversion."""
+        ex = self.exercise
+        return lay_out_profile(self.diagram, ex.base_radius, ex.follower, ex.sigma)
+
+    @cached_property
+    def survey(self) -> Survey:
+        """The closed form round the turn, and the layout's misses from it."""
+        ex = self.exercise
+        return survey(self.layout, ex.base_radius, ex.segments, ex.sigma)
+
+    @property
+    def passed(self) -> bool:
+        """Every station of the layout where the closed form puts it."""
+        return not self.survey.misses
+
+    # ----- words ----------------------------------------------------------------------------
+    def length_text(self, v: float) -> str:
+        """A length (m) in the file's unit."""
+        unit = self.exercise.length_unit
+        from ..constructions.model import LENGTH_UNITS
+
+        return f"{v / LENGTH_UNITS[unit]:.4g} {unit}"
+
+    def lines(self) -> list[str]:
+        """What the command line prints of the profile."""
+        s, f = self.survey, self.exercise.follower
+        out = []
+        if f.kind != "flat-faced":
+            st = s.steepest
+            steep = abs(math.degrees(st.pressure_angle))
+            out.append(f"pressure angle: greatest {steep:.2f}° at θ = "
+                       f"{math.degrees(st.theta):.2f}°" + (
+                           " (over the 30° a translating follower is usually held to)"
+                           if steep > 30 and not f.oscillating else ""))
+        st = s.sharpest
+        what = "the profile's" if f.kind == "flat-faced" else "the pitch curve's"
+        out.append(f"{what} least radius of curvature: {self.length_text(st.rho)} at θ = "
+                   f"{math.degrees(st.theta):.2f}°" + (
+                       f" (the roller's radius is {self.length_text(f.radius)})"
+                       if f.kind == "roller" else ""))
+        if f.kind == "flat-faced":
+            lo, hi = s.face
+            text = self.length_text
+            out.append(f"the face is touched from {_signed(text(lo))} to {text(hi)} along it "
+                       f"from the follower's axis: a face at least {text(hi - lo)} wide")
+        if s.undercut:
+            out.append(f"UNDERCUT from θ = {math.degrees(s.undercut[0].theta):.2f}° to "
+                       f"{math.degrees(s.undercut[-1].theta):.2f}° (marked on the layout)")
+        worst = max((m for _, m in s.misses), default=0.0)
+        verdict = "each where the closed form puts it" if not s.misses else \
+            f"OFF by {worst:.1e} m"
+        out.append(f"profile by inversion: {len(self.layout.places)} stations laid out, "
+                   f"{verdict}")
+        return out
+
+    def steps(self) -> list[str]:
+        """The layout's steps for steps.md, numbered."""
+        said = [narrate(st) for st in self.layout.construction.steps.values()]
+        said = [t for t in said if t] + [narrate(self.layout.closing)]
+        return [f"{k}. {t}" for k, t in enumerate(said, 1)]
+
+    # ----- numbers ----------------------------------------------------------------------------
+    def quantities(self) -> dict[str, Any]:
+        """The profile's numbers for results.json, in SI (angles in rad)."""
+        s, f = self.survey, self.exercise.follower
+        out: dict[str, Any] = {}
+        if f.kind != "flat-faced":
+            st = s.steepest
+            m = _textbook_pressure(self.exercise, st.theta)
+            out["pressure_angle_max"] = {
+                "value": abs(st.pressure_angle), "theta": st.theta,
+                "method": "inversion; normal to the pitch curve against the follower's motion",
+                **({"reference": {"value": abs(m), "method": "tan φ = (y′ − σe)/(s₀ + y)"}}
+                   if m is not None else {})}
+        st = s.sharpest
+        out["rho_min"] = {"value": st.rho, "theta": st.theta,
+                          "method": "r_b + y + y″" if f.kind == "flat-faced"
+                          else "|q₁|³ / (−σ q₁ × q₂) of the pitch curve"}
+        if f.kind == "flat-faced":
+            lo, hi = s.face
+            out["face_width"] = {"value": hi - lo, "from": lo, "to": hi,
+                                 "method": "the touch's run x = σy′ along the face"}
+        out["undercut"] = {"value": bool(s.undercut)}
+        return out
+
+    # ----- figures ----------------------------------------------------------------------------
+    def figures(self) -> dict[str, Figure]:
+        """The layout and its table."""
+        ex = self.exercise
+        from ..constructions.model import LENGTH_UNITS
+
+        notes = ["UNDERCUT: ringed where the roller cannot make the profile"] \
+            if self.survey.undercut else []
+        return {"profile": draw_cam_layout(self.layout, self.survey, f"{ex.name}: profile",
+                                           ex.length_unit, LENGTH_UNITS[ex.length_unit],
+                                           notes),
+                "profile-table": self.table()}
+
+    def table(self) -> Figure:
+        """The pressure angle and curvature at each station."""
+        ex, f = self.exercise, self.exercise.follower
+        flat = f.kind == "flat-faced"
+        unit = ex.length_unit
+        heads = ["cam angle", f"lift ({unit})",
+                 *(["face run (" + unit + ")"] if flat else ["pressure angle"]),
+                 f"ρ of the {'profile' if flat else 'pitch curve'} ({unit})"]
+        rows = []
+        for p, st in zip(self.layout.places, self.survey.places):
+            size = self.length_text
+            rows.append((str(p.number), [
+                f"{math.degrees(p.theta):.4g}°", size(p.lift).split()[0],
+                _signed(size(st.face_offset).split()[0]) if flat
+                else _signed(f"{math.degrees(st.pressure_angle):.2f}") + "°",
+                "∞" if math.isinf(st.rho) else size(st.rho).split()[0]]))
+        notes = ["ρ < 0: concave there. Pressure angle signed as tan φ = (y′ − σe)/(s₀ + y)."]
+        return draw_train_table(f"{ex.name}: pressure angle and curvature", heads, rows,
+                                notes=notes)
+
+
+def _signed(text: str) -> str:
+    """A printed number with a true minus, and no minus on a zero."""
+    return "0" + text[2:] if text.startswith("-0") and not text.strip("-0.") else \
+        text.replace("-", "−")
+
+
+def _textbook_pressure(ex: CamExercise, theta: float) -> float | None:
+    """The textbook's formula for a translating follower (None for an oscillating one)."""
+    from ..constructions.reference.cam_profile import (follower_motion,
+                                                       pressure_angle_translating)
+
+    if ex.follower.oscillating:
+        return None
+    m = follower_motion(ex.segments, theta)
+    return pressure_angle_translating(m.y, m.y1, ex.base_radius, ex.follower, ex.sigma)
+
+
+def refuse_undercut(profile: CamProfile) -> None:
+    """Raise if the follower cannot make the profile.
+
+    Raises
+    ------
+    InputError
+        Naming the cam angle and the radius, and what to change.
+    """
+    s, f = profile.survey, profile.exercise.follower
+    if not s.undercut:
+        return
+    worst = min(s.undercut, key=lambda st: st.rho)
+    at, text = f"θ = {math.degrees(worst.theta):.2f}°", profile.length_text
+    if f.kind == "roller":
+        raise InputError(f"the roller (radius {text(f.radius)}) undercuts the cam at {at}: the "
+                         f"pitch curve's radius of curvature there is {text(worst.rho)}; use a "
+                         "smaller roller or a larger base circle, or --allow-undercut to draw "
+                         "it marked")
+    raise InputError(f"the flat face meets a concave profile at {at} (radius of curvature "
+                     f"{text(worst.rho)}): a flat face cannot follow it; use a larger base "
+                     "circle or a gentler law, or --allow-undercut to draw it marked")

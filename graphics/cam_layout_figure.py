@@ -1,0 +1,129 @@
+"""The cam's profile laid out by inversion, as a textbook prints it.
+
+To scale about the cam's centre O: the base circle, the prime, offset or pivot circle,
+each station's follower line (or arm) numbered at its rest point, the follower drawn at
+each station (the knife edge's point, the roller's circle, a stretch of the face), the
+pitch curve and, inked heavy, the profile. The cam's turning is shown by an arrow at O,
+the steepest pressure angle by the normal and the follower's motion at that station, and
+any undercut station by a ring.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+
+from ..constructions.cams.inversion import Layout
+from ..constructions.cams.survey import Survey
+from .figure import Circle, Figure, Path, Text
+from .scales import draw_caption, nice_per_cm
+from .symbols import draw_arrow, draw_turning_arrow
+
+__all__ = ["draw_cam_layout"]
+
+_ROOM = 150.0          # paper (mm) the cam's greatest reach across is fitted to
+
+
+def draw_cam_layout(layout: Layout, s: Survey, title: str, unit: str, metre: float,
+                    notes: Sequence[str] = ()) -> Figure:
+    """The layout ``layout`` with the closed-form curves of ``s``; lengths stated in
+    ``unit`` (``metre`` metres each)."""
+    c, f = layout.construction, layout.follower
+    reach = max(max(math.hypot(*st.pitch) for st in s.stations) + f.radius,
+                math.hypot(*f.pivot) + f.arm if f.oscillating else 0.0)
+    per_cm = nice_per_cm(2 * reach / metre, _ROOM)
+    k = 10.0 / (per_cm * metre)
+
+    def paper(xy) -> tuple[float, float]:
+        return xy[0] * k, -xy[1] * k
+
+    fig = Figure(0.0, 0.0, title=title)
+    o = (0.0, 0.0)
+    for name, ref in layout.circles.items():
+        fig.add(Circle(o, c.output(ref).radius * k, "gauge" if name == "base" else "reference"))
+    for p, st in zip(layout.places, s.places):
+        rest, trace = paper(c.output(p.rest).xy), paper(c.output(p.trace).xy)
+        past = 0.0 if f.oscillating else f.radius * k + 2.0
+        if f.oscillating:
+            start = paper(c.output(p.pivot).xy)
+            fig.add(Circle(start, 0.5, "dot"))
+        else:
+            start = o if not f.offset or f.kind == "flat-faced" else \
+                paper(c.output(p.axis).anchor())
+        fig.add(Path((start, _beyond(start, trace, past)), "construction"))
+        fig.add(Circle(rest, 0.45, "dot"))
+        tag = _beyond(o, start, 3.5) if f.oscillating else _beyond(start, trace, past + 2.6)
+        fig.add(Text((tag[0], tag[1] + 1.0), str(p.number), 2.6, "middle", False))
+        if f.kind == "roller":
+            fig.add(Circle(trace, f.radius * k, "compass"))
+        elif f.kind == "flat-faced":
+            # The face from its foot past the touch, a few mm beyond each.
+            run = abs(st.face_offset) * k
+            if run > 1e-9:
+                d = _unit((st.profile[0] - st.pitch[0], st.pitch[1] - st.profile[1]))
+            else:
+                along = c.output(p.follower).direction
+                d = (along[0], -along[1])
+            fig.add(Path(((trace[0] - 4.0 * d[0], trace[1] - 4.0 * d[1]),
+                          (trace[0] + (run + 4.0) * d[0], trace[1] + (run + 4.0) * d[1])),
+                         "compass"))
+        fig.add(Circle(trace, 0.55, "dot"))
+    ring = [paper(st.pitch) for st in s.stations]
+    if f.kind != "flat-faced":
+        fig.add(Path(tuple(ring), "reference" if f.kind == "roller" else "link", closed=True))
+    fig.add(Path(tuple(paper(st.profile) for st in s.stations), "link", closed=True))
+    fig.add(Circle(o, 0.8, "dot"))
+    fig.add(Text((2.0, 4.5), "O", 3.0, "start", False))
+    sense = 1.0 if s.sigma > 0 else -1.0
+    base = c.output(layout.circles["base"]).radius * k
+    inner = max(abs(f.offset) * k, 0.0)
+    mid = draw_turning_arrow(fig, o, 0.5 * (inner + base) if inner else 0.4 * base,
+                             math.radians(200), sense * math.radians(70))
+    fig.add(Text((mid[0] - 2.5, mid[1]), "ω", 3.0, "end", False))
+    _mark_steepest(fig, s, paper, k)
+    for st in s.undercut[:: max(1, len(s.undercut) // 6)]:
+        fig.add(Circle(paper(st.profile), 2.2, "normal"))
+    legend = [("link", "profile" + (" (the pitch curve)" if f.kind == "knife-edge" else "")),
+              ("gauge", "base circle")]
+    dashed = [w for w, on in (("prime circle", f.kind == "roller"),
+                              ("offset circle", bool(f.offset) and f.kind != "flat-faced"),
+                              ("pivot circle", f.oscillating),
+                              ("pitch curve", f.kind == "roller")) if on]
+    if dashed:
+        legend.append(("reference", ", ".join(dashed)))
+    legend.append(("construction", "the arm at each station" if f.oscillating
+                   else "the follower's line at each station"))
+    if f.kind != "knife-edge":
+        legend.append(("compass", "the roller at each station" if f.kind == "roller"
+                       else "the face at each station"))
+    draw_caption(fig, title, ["the cam held still, the follower turned round it the other "
+                              "way; stations numbered"], per_cm=per_cm, unit=unit,
+                 legend=legend, notes=notes)
+    return fig
+
+
+def _mark_steepest(fig: Figure, s: Survey, paper, k: float) -> None:
+    """At the steepest station: the follower's motion and the profile's normal, the angle
+    between them marked."""
+    st = s.steepest
+    if abs(st.pressure_angle) < 1e-9:
+        return
+    at = paper(st.pitch)
+    n, u = (st.normal[0], -st.normal[1]), (st.motion[0], -st.motion[1])
+    length = 14.0
+    draw_arrow(fig, at, (at[0] + length * n[0], at[1] + length * n[1]), "arrow")
+    draw_arrow(fig, at, (at[0] + length * u[0], at[1] + length * u[1]), "dimension")
+    right = n[0] >= 0
+    fig.add(Text((at[0] + length * n[0] + (1.5 if right else -1.5), at[1] + length * n[1]),
+                 f"φ max = {abs(math.degrees(st.pressure_angle)):.1f}° at θ = "
+                 f"{math.degrees(st.theta):.0f}°", 2.8, "start" if right else "end", False))
+
+
+def _unit(v: tuple[float, float]) -> tuple[float, float]:
+    n = math.hypot(*v)
+    return (v[0] / n, v[1] / n)
+
+
+def _beyond(a: tuple[float, float], b: tuple[float, float], by: float) -> tuple[float, float]:
+    d = _unit((b[0] - a[0], b[1] - a[1]))
+    return (b[0] + by * d[0], b[1] + by * d[1])
