@@ -16,7 +16,7 @@ from typing import Any
 from ..constructions.cams.displacement import Segment
 from ..constructions.errors import InputError
 from ..constructions.model import LENGTH_UNITS
-from ..constructions.reference.cam_laws import LAWS
+from ..constructions.reference.cam_laws import BLEND, LAWS
 from ..constructions.reference.cam_profile import Follower, arm_start, prime_radius
 from .mechanism_file import SourceMap, read_source, read_toml
 
@@ -41,6 +41,8 @@ class CamExercise:
     length_unit: str = "mm"
     speed_unit: str = "rpm"
     follower: Follower = Follower()
+    jerk: bool = False
+    """The jerk is asked for: its diagram and each segment's peak."""
 
     @property
     def sigma(self) -> float:
@@ -121,36 +123,55 @@ def parse_cam(text: str, filename: str = "<string>", exercise_id: str = "cam") -
         if not 0 < angle <= 360:
             raise fail(f"a segment's angle must be more than 0° and at most 360°, got "
                        f"{angle:g}°", "segment", "angle", i)
-        lift, law, divisions = 0.0, "", int(t.get("divisions", 6))
+        lift, law, divisions, blend = 0.0, "", 6, BLEND
         if kind != "dwell":
             lift = number(t, "lift", "segment", "a segment's lift", i)
-            if follower.oscillating:               # the arm's swing, as the arc at its end
-                lift = math.radians(lift) * follower.arm / metre
             if lift < 0:
                 raise fail(f"a negative lift ({lift:g} {length}): a {kind} gives the lift's "
                            "size, its kind the way", "segment", "lift", i)
+            if follower.oscillating:               # the arm's swing, as the arc at its end
+                lift = math.radians(lift) * follower.arm / metre
             law = t.get("law", "simple harmonic")
             if law not in LAWS:
                 raise fail(f"unknown law '{law}'; the laws are {', '.join(LAWS)}", "segment",
                            "law", i)
-            if not 2 <= divisions <= 24:
-                raise fail("a segment is divided into 2 to 24 equal parts", "segment",
-                           "divisions", i)
+            modified = law == "modified uniform velocity"
+            parts = t.get("divisions", 8 if modified else 6)
+            if isinstance(parts, bool) or not isinstance(parts, int) or not 2 <= parts <= 24:
+                raise fail(f"a segment is divided into 2 to 24 equal parts, not {parts!r}",
+                           "segment", "divisions", i)
+            divisions = parts
+            if modified:
+                blend = number(t, "blend", "segment", "the blend", i) if "blend" in t else BLEND
+                if not (0 < blend <= 0.5 and abs(blend * parts - round(blend * parts)) < 1e-9
+                        and round(blend * parts) >= 1):
+                    raise fail(f"the blend at each end is a fraction of the segment up to ½ "
+                               f"covering a whole number of its {parts} divisions, not "
+                               f"{blend:g}", "segment", "blend", i)
+            elif "blend" in t:
+                raise fail("only a modified uniform velocity has a blend", "segment", "blend", i)
         total += angle
         height += lift if kind == "rise" else -lift
         if height < -1e-12 * max(lift, 1.0):
             raise fail(f"segment {i + 1} returns the follower below the base circle "
                        f"({height:g} {length})", "segment", "lift", i)
-        segments.append(Segment(kind, math.radians(angle), lift * metre, law, divisions))
+        segments.append(Segment(kind, math.radians(angle), lift * metre, law, divisions,
+                                blend))
     if abs(total - 360.0) > 1e-9:
         raise fail(f"the segments add to {total:g}°, not 360°: the cam turns once",
                    key="segment")
     if abs(height) > 1e-9 * max(s.lift for s in segments):
         raise fail(f"the rises and returns leave the follower {height:g} {length} off the "
                    "base circle after a turn: they must balance", key="segment")
+    ask = data.get("ask", {})
+    if not isinstance(ask, dict) or any(k != "jerk" for k in ask) or not isinstance(
+            ask.get("jerk", False), bool):
+        raise fail("a cam's [ask] table takes jerk = true (its diagram and peaks); the "
+                   "displacement, velocity, acceleration and profile are always drawn", "ask")
     return CamExercise(exercise_id, str(data.get("name", exercise_id)),
                        str(data.get("source", "")), str(data.get("description", "")),
-                       base * metre, omega, tuple(segments), length, speed, follower)
+                       base * metre, omega, tuple(segments), length, speed, follower,
+                       ask.get("jerk", False))
 
 
 _FOLLOWER_KEYS = ("kind", "radius", "motion", "offset", "pivot", "arm")

@@ -19,7 +19,7 @@ from typing import Any
 
 from ..constructions.cams.displacement import Displacement, draw_displacement
 from ..constructions.narration import narrate
-from ..constructions.reference.cam_laws import motion, peaks
+from ..constructions.reference.cam_laws import jerk_peak, motion, peaks
 from ..graphics.displacement_figure import draw_displacement_figure
 from ..graphics.plot import Series, draw_line_plot
 from ..graphics.svg import to_svg
@@ -48,14 +48,15 @@ class SegmentPeaks:
     acceleration: float
     velocity_sampled: float
     acceleration_sampled: float
+    jerk: float = math.inf
+    jerk_sampled: float = 0.0
 
     @property
     def passed(self) -> bool:
         """The formulas agree with the sampled law (to the sampling's own fineness)."""
-        ok_v = abs(self.velocity - self.velocity_sampled) <= 1e-5 * self.velocity
-        ok_a = (math.isinf(self.acceleration) or
-                abs(self.acceleration - self.acceleration_sampled) <= 1e-5 * self.acceleration)
-        return ok_v and ok_a
+        return all(math.isinf(f) or abs(f - got) <= 1e-5 * f for f, got in (
+            (self.velocity, self.velocity_sampled),
+            (self.acceleration, self.acceleration_sampled), (self.jerk, self.jerk_sampled)))
 
 
 @dataclass(frozen=True)
@@ -93,12 +94,14 @@ class CamSolution:
         for k, s in enumerate(self.exercise.segments, start=1):
             if s.kind == "dwell":
                 continue
-            v, a = peaks(s.law, s.lift, s.angle)
-            sample = [motion(s.law, s.lift, s.angle, s.angle * i / _SAMPLES)
+            v, a = peaks(s.law, s.lift, s.angle, s.blend)
+            sample = [motion(s.law, s.lift, s.angle, s.angle * i / _SAMPLES, blend=s.blend)
                       for i in range(_SAMPLES + 1)]
             out.append(SegmentPeaks(k, s.kind, s.law, v * w, a * w * w,
                                     max(abs(m.y1) for m in sample) * w,
-                                    max(abs(m.y2) for m in sample) * w * w))
+                                    max(abs(m.y2) for m in sample) * w * w,
+                                    jerk_peak(s.law, s.lift, s.angle) * w ** 3,
+                                    max(abs(m.y3) for m in sample) * w ** 3))
         return out
 
     @property
@@ -123,6 +126,9 @@ class CamSolution:
         for p in self.peaks:
             a = "∞ (at its ends)" if math.isinf(p.acceleration) else \
                 f"{p.acceleration * size:.6g} {unit}/s²"
+            if ex.jerk:
+                a += ", j_max = " + ("∞ (where ÿ jumps)" if math.isinf(p.jerk) else
+                                     f"{p.jerk:.6g} m/s³")
             arm = ex.follower.arm if ex.follower.oscillating else 0.0
             swing = (f" (the arm: {p.velocity / arm:.6g} rad/s, "
                      f"{p.acceleration / arm:.6g} rad/s²)") if arm else ""
@@ -136,48 +142,75 @@ class CamSolution:
         return out + self.profile.lines()
 
     @cached_property
-    def curves(self) -> tuple[list[float], list[float], list[float], list[float]]:
-        """The follower's lift, velocity and acceleration (SI) against cam angle (degrees),
-        by the laws, each segment sampled at 361 points."""
+    def curves(self) -> tuple[list[float], ...]:
+        """The follower's lift, velocity, acceleration and jerk (SI) against cam angle
+        (degrees), by the laws, each segment sampled at 361 points."""
         ex = self.exercise
         w = abs(ex.omega)            # θ is the angle the cam has turned, whichever its sense
-        xs, ys, vs, accs = [], [], [], []
+        xs, ys, vs, accs, jerks = [], [], [], [], []
         lift, start = 0.0, 0.0
         for s in ex.segments:
             for i in range(0, 361):
                 t = s.angle * i / 360
-                m = motion(s.law, s.lift, s.angle, t, rise=s.kind == "rise") \
+                m = motion(s.law, s.lift, s.angle, t, rise=s.kind == "rise", blend=s.blend) \
                     if s.kind != "dwell" else None
                 xs.append(math.degrees(start + t))
                 base = lift - (s.lift if s.kind == "return" else 0.0)
                 ys.append((base + m.y) if m else lift)
                 vs.append(m.y1 * w if m else 0.0)
                 accs.append(m.y2 * w * w if m else 0.0)
+                jerks.append(m.y3 * w ** 3 if m else 0.0)
             lift += _net(s)
             start += s.angle
-        return xs, ys, vs, accs
+        return xs, ys, vs, accs, jerks
 
     @property
     def figures(self) -> dict[str, Any]:
         """The displacement, velocity and acceleration diagrams against cam angle."""
         ex = self.exercise
         unit, size = ex.length_unit, 1.0 / _metres(ex.length_unit)
-        xs, ys, vs, accs = ([v * size for v in c] if k else c
-                            for k, c in enumerate(self.curves))
+        xs, ys, vs, accs, _ = ([v * size for v in c] if k else c
+                               for k, c in enumerate(self.curves))
         ticks = [(float(d), f"{d}") for d in range(0, 361, 30)]
         name = ex.name
 
-        def plot(title, label, values, pts=()):
+        def plot(title, label, values, notes=()):
             return draw_line_plot(f"{name}: {title}", "cam angle θ (°)", label,
-                                  [Series(title, tuple(zip(xs, values)))], pts,
-                                  x_range=(0.0, 360.0), x_ticks=ticks,
-                                  mark_legend="found by construction" if pts else "")
+                                  [Series(title, tuple(zip(xs, values)))],
+                                  x_range=(0.0, 360.0), x_ticks=ticks, notes=notes)
+        jumps = self.jumps
+        spikes = [f"ÿ jumps at θ = {', '.join(f'{j:.4g}°' for j in jumps)}: the jerk is "
+                  "infinite there, which no curve can draw"] if jumps else []
         curve = [(math.radians(x), y) for x, y in zip(self.curves[0], self.curves[1])]
         return {"displacement": draw_displacement_figure(
                     self.diagram, curve, f"{name}: displacement", unit, _metres(unit)),
                 "velocity": plot("velocity", f"ẏ ({unit}/s)", vs),
                 "acceleration": plot("acceleration", f"ÿ ({unit}/s²)", accs)
-                } | self.profile.figures()
+                } | ({"jerk": plot("jerk", "jerk (m/s³)", self.curves[4], spikes)}
+                     if ex.jerk else {}
+                     ) | self.profile.figures()
+
+    @property
+    def jumps(self) -> list[float]:
+        """Cam angles (degrees) where the follower's acceleration jumps: a join of segments
+        whose y″ differ, the middle of a parabolic segment, the ends of a blend."""
+        segs = self.exercise.segments
+
+        def y2(s, u: float) -> float:
+            if s.kind == "dwell":
+                return 0.0
+            return motion(s.law, s.lift, s.angle, u * s.angle, rise=s.kind == "rise",
+                          blend=s.blend).y2
+        big = max((abs(a) for a in self.curves[3]), default=0.0)
+        out, start = [], 0.0
+        for k, s in enumerate(segs):
+            if abs(y2(s, 0.0) - y2(segs[k - 1], 1.0)) > 1e-9 * big:
+                out.append(start)
+            inner = {"parabolic": (0.5,),
+                     "modified uniform velocity": (s.blend, 1 - s.blend)}.get(s.law, ())
+            out += [start + f * s.angle for f in inner if s.kind != "dwell" and f < 1]
+            start += s.angle
+        return sorted({round(math.degrees(t), 9) for t in out})
 
     def steps(self) -> str:
         """steps.md: the displacement diagram's construction, then each segment's peaks."""
@@ -192,6 +225,9 @@ class CamSolution:
                   "The cam turns at constant speed, so ẏ = y′ω and ÿ = y″ω² (the notes' chain "
                   "rule with α = 0).", ""]
         lines += [f"- {line}" for line in self.lines()[:len(self.peaks) + 1]]
+        if self.jumps:
+            lines.append(f"- ÿ jumps at θ = {', '.join(f'{j:g}°' for j in self.jumps)}: "
+                         "the jerk is infinite there.")
         lines += ["", "## The profile by inversion (`profile.svg`, `profile-table.svg`)", ""]
         lines += self.profile.steps() + [""]
         lines += [f"- {line}" for line in self.profile.lines()]
@@ -208,7 +244,11 @@ class CamSolution:
                                  else p.acceleration,
                                  "reference": {"value": p.acceleration_sampled},
                                  "method": f"{p.law} formula"}
-            for p in self.peaks} | self.profile.quantities()}
+            for p in self.peaks} | ({
+            f"j_max_{p.index}": {"value": None if math.isinf(p.jerk) else p.jerk,
+                                 "reference": {"value": p.jerk_sampled},
+                                 "method": f"{p.law} formula"}
+            for p in self.peaks} if self.exercise.jerk else {}) | self.profile.quantities()}
 
     def files(self) -> dict[str, str]:
         """Every file as text, by name."""
@@ -224,7 +264,7 @@ class CamSolution:
 
 def _y(s, theta: float) -> float:
     """A segment's lift from its start's height at ``theta`` into it."""
-    m = motion(s.law, s.lift, s.angle, theta, rise=s.kind == "rise")
+    m = motion(s.law, s.lift, s.angle, theta, rise=s.kind == "rise", blend=s.blend)
     return m.y - (s.lift if s.kind == "return" else 0.0)
 
 

@@ -38,7 +38,7 @@ def test_the_peaks_are_the_textbook_formulas_times_the_cams_speed():
 def test_the_follower_rises_during_the_rise_whichever_way_the_cam_turns():
     s = solve_cam(load("roller-harmonic-cycloidal"))
     assert s.exercise.omega < 0                   # the cam turns clockwise
-    xs, ys, vs, _ = s.curves
+    xs, ys, vs, *_ = s.curves
     at = {round(x, 9): (y, v) for x, y, v in zip(xs, ys, vs)}
     assert at[60.0][1] == pytest.approx(0.942478, rel=1e-6)    # mid-rise: up, at its fastest
     assert at[225.0][1] == pytest.approx(-0.960, rel=1e-9)     # mid-return: down
@@ -101,3 +101,54 @@ def test_the_displacement_figure_inks_each_constructed_point_at_its_laws_height(
     across = [it.points for it in fig.items if isinstance(it, Stroke)
               and it.style == "construction" and len(it.points) > 8]
     assert len(across) == 2                               # the semicircle, the cycloid's circle
+
+
+def test_the_modified_uniform_velocity_peaks_are_its_blends():
+    """A 40 mm return over 120° blended by a quarter at each end, at 240 rpm: the run's
+    speed h/(1 − b)β·ω = 640 mm/s, the blends' acceleration h/b(1 − b)β²·ω² = 30.72 m/s²."""
+    s = solve_cam(load("offset-knife-edge"))
+    back = s.peaks[1]
+    assert (back.law, back.kind) == ("modified uniform velocity", "return")
+    assert back.velocity == pytest.approx(0.640, rel=1e-14)
+    assert back.acceleration == pytest.approx(30.72, rel=1e-14)
+    assert back.passed
+
+
+@pytest.mark.parametrize("new, words", [
+    ("blend = 0.3", "covering a whole number of its 8 divisions, not 0.3"),
+    ("blend = 0.75", "up to ½"),
+    ("divisions = 7", "covering a whole number of its 7 divisions, not 0.25"),
+    ("divisions = \"eight\"", "2 to 24 equal parts, not 'eight'"),
+])
+def test_a_bad_blend_is_refused_at_its_line(new, words):
+    text = Path(bundled_cams()["offset-knife-edge"]).read_text(encoding="utf-8")
+    key = new.split(" =")[0]
+    old = next(line for line in text.splitlines() if line.startswith(key + " ="))
+    with pytest.raises(InputError) as e:
+        parse_cam(text.replace(old, new, 1), "cam.toml")
+    assert str(e.value).startswith("cam.toml:") and words in str(e.value), str(e.value)
+
+
+def test_the_jerk_is_given_when_asked_and_its_infinite_spikes_named():
+    """[ask] jerk = true: the harmonic rise peaks at π³h/2β³·ω³ = 2092.92 m/s³, the
+    cycloidal return at 4π²h/β³·ω³ = 2728.75 m/s³ (ω = 10π rad/s); ÿ jumps from the dwells
+    into the harmonic rise and out of it (0°, 120°), not at the cycloid's ends."""
+    s = solve_cam(load("roller-harmonic-cycloidal"))
+    assert s.exercise.jerk and "jerk" in s.figures
+    w = 10 * math.pi
+    rise, back = s.peaks
+    assert rise.jerk == pytest.approx(math.pi ** 3 * 0.04 / (2 * math.radians(120) ** 3)
+                                      * w ** 3, rel=1e-14)
+    assert rise.jerk == pytest.approx(2092.924, rel=1e-6)
+    assert back.jerk == pytest.approx(2728.748, rel=1e-6)
+    assert rise.passed and back.passed                    # the formulas match the sampled law
+    assert s.jumps == [0.0, 120.0]
+    assert s.results["quantities"]["j_max_3"]["value"] == pytest.approx(2728.748, rel=1e-6)
+    knife = solve_cam(load("offset-knife-edge"))
+    assert knife.jumps == [0.0, 60.0, 120.0, 150.0, 180.0, 240.0, 270.0]
+    assert "jerk" not in knife.figures and "j_max_1" not in knife.results["quantities"]
+
+
+def test_a_cam_asks_only_for_jerk():
+    with pytest.raises(InputError, match=r"cam.toml:\d+: a cam's \[ask\] table takes jerk"):
+        parse_cam(CAM.replace("jerk = true", "torque = true"), "cam.toml")

@@ -36,6 +36,36 @@ def test_every_constructed_point_lies_on_its_law(law, kind, divisions):
         assert abs(y - want) <= 4e-16 * 8, (i, y, want)
 
 
+@pytest.mark.parametrize("kind", ["rise", "return"])
+@pytest.mark.parametrize("divisions, blend", [(4, 0.25), (8, 0.25), (12, 0.25), (6, 1 / 3),
+                                              (6, 1 / 6), (4, 0.5)])
+def test_the_modified_uniform_velocity_is_drawn_on_its_law(kind, divisions, blend):
+    """Parabolas over the blended divisions at each end, the straight run between: each
+    point on y = Vθ²/2bβ, straight, h − V(β − θ)²/2bβ, V = h/(1 − b)β. A blend of ½ is the
+    parabolic law itself."""
+    lift, beta = 0.040, math.radians(120)
+    before = [Segment("rise", math.radians(40), lift, "uniform velocity", 2)] \
+        if kind == "return" else []
+    seg = Segment(kind, beta, lift, "modified uniform velocity", divisions, blend)
+    d = draw_displacement([*before, seg], per_rad=0.05)
+    start, curve = d.starts[-1], d.curves[-1]
+    assert len(curve) == divisions + 1
+    for i, (_, ref) in enumerate(curve):
+        theta, y = d.point(ref)
+        assert theta - start == pytest.approx(i * beta / divisions, abs=1e-15)
+        want = motion(seg.law, lift, beta, theta - start, rise=kind == "rise", blend=blend)
+        assert abs(y - want.y) <= 4e-16 * 8, (i, y, want.y)
+        if blend == 0.5:
+            assert want.y == pytest.approx(motion("parabolic", lift, beta, theta - start,
+                                                  rise=kind == "rise").y, abs=1e-17)
+
+
+def test_a_blend_off_the_divisions_is_refused():
+    with pytest.raises(InputError, match="whole number of its 6 divisions"):
+        draw_displacement([Segment("rise", 1.0, 0.01, "modified uniform velocity", 6, 0.25)],
+                          per_rad=0.05)
+
+
 def test_a_parabolic_segment_needs_an_even_division():
     with pytest.raises(InputError, match="even number of parts"):
         draw_displacement([Segment("rise", 1.0, 0.01, "parabolic", 5)], per_rad=0.05)
@@ -53,6 +83,9 @@ def test_each_coefficient_is_the_derivative_of_the_one_before(law, lift, beta, u
     theta, dt = u * beta, 1e-6 * beta
     if law == "parabolic" and abs(u - 0.5) < 0.01:
         u = 0.4                                   # y″ jumps at the half: not across it
+        theta = u * beta
+    if law == "modified uniform velocity" and min(abs(u - 0.25), abs(u - 0.75)) < 0.01:
+        u = 0.5                                   # y″ jumps where the blends end
         theta = u * beta
     m = motion(law, lift, beta, theta, rise=rise)
     a = motion(law, lift, beta, theta - dt, rise=rise)

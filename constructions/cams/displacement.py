@@ -12,7 +12,9 @@ they meet the construction of its law:
 - **cycloidal**: a circle of radius h/2π about the start, divided into as many equal arcs;
   each division projected onto the start ordinate, and from there a parallel to the
   segment's diagonal run to its ordinate;
-- **uniform velocity**: the diagonal itself; a **dwell**: a level line.
+- **uniform velocity**: the diagonal itself; **modified uniform velocity**: a parabola at
+  each end by the divided ordinate, over the blended divisions, and the straight run
+  between their ends; a **dwell**: a level line.
 
 Every act is a recorded step; the points are read back as (cam angle, lift) and checked
 against the closed-form law (:mod:`..reference.cam_laws`).
@@ -41,6 +43,8 @@ class Segment:
     lift: float = 0.0
     law: str = ""
     divisions: int = 6
+    blend: float = 0.25
+    """A modified uniform velocity's blended fraction at each end."""
 
 
 @dataclass
@@ -124,11 +128,12 @@ class _Segment:
         if s.kind == "dwell" or self.h == 0.0:
             return self.dwell()
         law = {"simple harmonic": self.harmonic, "parabolic": self.parabolic,
-               "cycloidal": self.cycloidal, "uniform velocity": self.uniform}.get(s.law)
+               "cycloidal": self.cycloidal, "uniform velocity": self.uniform,
+               "modified uniform velocity": self.modified}.get(s.law)
         if law is None:
             raise InputError(f"segment {self.k}: the displacement diagram draws simple "
-                             "harmonic, parabolic, cycloidal and uniform velocity motion, "
-                             f"not '{s.law}'")
+                             "harmonic, parabolic, cycloidal and (modified) uniform velocity "
+                             f"motion, not '{s.law}'")
         return law(self.ordinates())
 
     def angles(self) -> list[float]:
@@ -173,48 +178,70 @@ class _Segment:
             out.append((t, self.level(s, o, i)))
         return out
 
+    def parabola(self, part: int, x: float, y: float, sign: float, rise: float, m: int
+                 ) -> tuple[Ref, list[Ref]]:
+        """A parabola's heights on the ordinate at (x, y), its vertex there: ``rise`` divided
+        in the ratio 1 : 3 : 5 … by parallels from a line marked at 1, 4, 9 … equal steps
+        (``m`` of them), up (``sign`` +1) or down. Returns the foot and the m divisions."""
+        foot = self.give(f"h{part}:O", g.Point(x, y), said=phrase(
+            "cam.parabolic", k=self.k, half="first" if part == 0 else "second", m=m))
+        top = self.give(f"h{part}:M", g.Point(x, y + sign * rise))
+        ordinate = self.act(f"h{part}:ord", "line_through", foot, top)
+        step = abs(rise) / (m * m)
+        ray_to = self.give(f"h{part}:R", g.Point(x - sign * abs(rise), y + sign * 0.5 * rise))
+        ray = self.act(f"h{part}:ray", "line_through", foot, ray_to, kind=Kind.LINE)
+        marks = [self.act(f"h{part}:m{j}", "lay_off", foot, ray, length=j * j * step)
+                 for j in range(1, m + 1)]
+        closing = self.act(f"h{part}:close", "line_through", marks[-1], top, kind=Kind.LINE)
+        self.out.strokes += [(foot, marks[-1]), (marks[-1], top)]
+        heights = []
+        for j in range(1, m):
+            par = self.act(f"h{part}:par{j}", "parallel_through", marks[j - 1], closing,
+                           kind=Kind.LINE)
+            heights.append(self.act(f"h{part}:d{j}", "intersect_lines", par, ordinate))
+            self.out.strokes.append((marks[j - 1], heights[-1]))
+        return foot, heights + [top]
+
+    def ends(self, ordinates: list[Ref], rise: float, m: int) -> list[tuple[float, Ref]]:
+        """Parabolas of ``rise`` over the first and last ``m`` divisions, each projected
+        across to its ordinates; between them, the straight run joining their ends."""
+        n, angles = self.s.divisions, self.angles()
+        out: list[tuple[float, Ref]] = []
+        foot, heights = self.parabola(0, self.x0, self.y0, 1.0 if self.h > 0 else -1.0,
+                                      rise, m)
+        out.append((angles[0], foot))
+        for j, hgt in enumerate(heights, start=1):
+            out.append((angles[j], self.level(hgt, ordinates[j], j)))
+        foot2, heights2 = self.parabola(1, self.x0 + self.width, self.y0 + self.h,
+                                        -1.0 if self.h > 0 else 1.0, rise, m)
+        if n == 2 * m:
+            heights2 = heights2[:-1]                     # the halves meet at the middle
+        tail = [(angles[n - j], self.level(hgt, ordinates[n - j], n - j))
+                for j, hgt in reversed(list(enumerate(heights2, start=1)))]
+        if n > 2 * m:
+            run = self.act("run", "line_through", out[-1][1], tail[0][1], kind=Kind.LINE,
+                           said=phrase("cam.modified", k=self.k))
+            self.out.strokes.append((out[-1][1], tail[0][1]))
+            for i in range(m + 1, n - m):
+                out.append((angles[i], self.act(f"pt{i}", "intersect_lines", run,
+                                                ordinates[i], label=str(i))))
+        return out + tail + [(angles[n], foot2)]
+
     def parabolic(self, ordinates: list[Ref]) -> list[tuple[float, Ref]]:
         n = self.s.divisions
         if n % 2:
             raise InputError(f"segment {self.k}: a parabolic segment is divided into an even "
                              f"number of parts (the two halves alike), not {n}")
-        half, m = self.h / 2, n // 2
-        out: list[tuple[float, Ref]] = []
-        angles = self.angles()
-        for part, (x, y, sign) in enumerate(((self.x0, self.y0, 1.0),
-                                             (self.x0 + self.width, self.y0 + self.h, -1.0))):
-            # Divide the half lift on the ordinate in the ratio 1 : 3 : 5 …, by parallels
-            # from a line marked at 1, 4, 9 … equal steps.
-            foot = self.give(f"h{part}:O", g.Point(x, y), said=phrase(
-                "cam.parabolic", k=self.k, half="first" if part == 0 else "second", m=m))
-            mid = self.give(f"h{part}:M", g.Point(x, y + sign * half))
-            ordinate = self.act(f"h{part}:ord", "line_through", foot, mid)
-            step = abs(half) / (m * m)
-            ray_to = self.give(f"h{part}:R", g.Point(x - sign * abs(half), y + sign * 0.25 * half))
-            ray = self.act(f"h{part}:ray", "line_through", foot, ray_to, kind=Kind.LINE)
-            marks = [self.act(f"h{part}:m{j}", "lay_off", foot, ray, length=j * j * step)
-                     for j in range(1, m + 1)]
-            closing = self.act(f"h{part}:close", "line_through", marks[-1], mid, kind=Kind.LINE)
-            self.out.strokes += [(foot, marks[-1]), (marks[-1], mid)]
-            heights = []
-            for j in range(1, m):
-                par = self.act(f"h{part}:par{j}", "parallel_through", marks[j - 1], closing,
-                               kind=Kind.LINE)
-                heights.append(self.act(f"h{part}:d{j}", "intersect_lines", par, ordinate))
-                self.out.strokes.append((marks[j - 1], heights[-1]))
-            heights.append(mid)
-            if part == 0:
-                out.append((angles[0], foot))
-                for j, hgt in enumerate(heights, start=1):
-                    out.append((angles[j], self.level_named(hgt, ordinates[j], j)))
-            else:
-                for j, hgt in reversed(list(enumerate(heights[:-1], start=1))):
-                    out.append((angles[n - j], self.level_named(hgt, ordinates[n - j], n - j)))
-                out.append((angles[n], foot))
-        return out
+        return self.ends(ordinates, abs(self.h) / 2, n // 2)
 
-    def level_named(self, ref: Ref, ordinate: Ref, i: int) -> Ref:
-        return self.level(ref, ordinate, i)
+    def modified(self, ordinates: list[Ref]) -> list[tuple[float, Ref]]:
+        n, b = self.s.divisions, self.s.blend
+        m = round(b * n)
+        if not (m >= 1 and abs(m - b * n) < 1e-9 and 2 * m <= n):
+            raise InputError(f"segment {self.k}: the blend ({b:g} of the segment at each end) "
+                             f"must cover a whole number of its {n} divisions")
+        speed = abs(self.h) / (1 - b)                   # lift per unit of the segment's angle
+        return self.ends(ordinates, speed * b / 2, m)
 
     def cycloidal(self, ordinates: list[Ref]) -> list[tuple[float, Ref]]:
         n = self.s.divisions

@@ -148,6 +148,8 @@ PHRASES: dict[str, str] = {
                      "divide half the lift on the ordinate in the ratio 1 : 3 : 5 … by "
                      "parallels from a line marked at 1, 4, 9 … equal steps ({m} of them), and "
                      "project each division across to its ordinate.",
+    "cam.modified": "Segment {k}: join the ends of its two parabolas by a straight line, the "
+                    "uniform velocity between the blends; the ordinates between cut it.",
     "cam.cycloidal": "Segment {k} is cycloidal: about its start draw a circle of radius lift/2π "
                      "= {radius} and divide it into {n} equal arcs; project each division onto "
                      "the start ordinate, and from there run a parallel to the segment's "

@@ -8,7 +8,10 @@ y″ = d²y/dθ², y‴ = d³y/dθ³ are:
 - simple harmonic: y = h/2·(1 − cos πu);
 - uniform acceleration and retardation (parabolic): y = 2h·u² to u = ½, then
   h − 2h·(1 − u)²;
-- cycloidal: y = h·(u − sin 2πu / 2π).
+- cycloidal: y = h·(u − sin 2πu / 2π);
+- modified uniform velocity: uniform velocity V = h/(1 − b)β, its corners blended by
+  parabolas (uniform acceleration V/bβ) over the first and last fraction b of the segment,
+  so y′ is continuous: y = Vθ²/2bβ to θ = bβ, then straight, then h − V(β − θ)²/2bβ.
 
 A return is the rise mirrored: y = h − y_rise. Time derivatives follow by the chain rule
 (notes 000-part2 §2.16): ẏ = y′ω, ÿ = y″ω² + y′α, y⃛ = y‴ω³ + 3y″ωα + y′α̇ (the notes
@@ -20,9 +23,10 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-__all__ = ["LAWS", "Motion", "motion", "peaks", "time_rates"]
+__all__ = ["LAWS", "Motion", "jerk_peak", "motion", "peaks", "time_rates"]
 
-LAWS = ("uniform velocity", "simple harmonic", "parabolic", "cycloidal")
+LAWS = ("uniform velocity", "modified uniform velocity", "simple harmonic", "parabolic",
+        "cycloidal")
 """The laws the reference knows, by the names the files use."""
 
 
@@ -36,8 +40,14 @@ class Motion:
     y3: float
 
 
-def motion(law: str, lift: float, beta: float, theta: float, *, rise: bool = True) -> Motion:
-    """The follower's motion ``theta`` (rad) into a segment of ``beta`` lifting ``lift``.
+BLEND = 0.25
+"""The fraction of a modified-uniform-velocity segment blended at each end, unless given."""
+
+
+def motion(law: str, lift: float, beta: float, theta: float, *, rise: bool = True,
+           blend: float = BLEND) -> Motion:
+    """The follower's motion ``theta`` (rad) into a segment of ``beta`` lifting ``lift``
+    (``blend``: the modified uniform velocity's blended fraction at each end).
 
     Raises
     ------
@@ -48,6 +58,14 @@ def motion(law: str, lift: float, beta: float, theta: float, *, rise: bool = Tru
     h, b = lift, beta
     if law == "uniform velocity":
         m = Motion(h * u, h / b, 0.0, 0.0)
+    elif law == "modified uniform velocity":
+        v, t, edge = h / ((1 - blend) * b), u * b, blend * b
+        if t <= edge:
+            m = Motion(v * t * t / (2 * edge), v * t / edge, v / edge, 0.0)
+        elif t >= b - edge:
+            m = Motion(h - v * (b - t) ** 2 / (2 * edge), v * (b - t) / edge, -v / edge, 0.0)
+        else:
+            m = Motion(v * edge / 2 + v * (t - edge), v, 0.0, 0.0)
     elif law == "simple harmonic":
         k = math.pi / b
         m = Motion(h / 2 * (1 - math.cos(math.pi * u)), h / 2 * k * math.sin(math.pi * u),
@@ -70,15 +88,27 @@ def motion(law: str, lift: float, beta: float, theta: float, *, rise: bool = Tru
     return Motion(h - m.y, -m.y1, -m.y2, -m.y3)
 
 
-def peaks(law: str, lift: float, beta: float) -> tuple[float, float]:
+def peaks(law: str, lift: float, beta: float, blend: float = BLEND) -> tuple[float, float]:
     """The textbook maxima of |y′| and |y″| over a segment (per rad, per rad²):
-    uniform velocity h/β and — (infinite at the ends, given as inf); simple harmonic πh/2β
-    and π²h/2β²; parabolic 2h/β and 4h/β²; cycloidal 2h/β and 2πh/β²."""
+    uniform velocity h/β and — (infinite at the ends, given as inf); modified uniform
+    velocity h/(1 − b)β and h/b(1 − b)β²; simple harmonic πh/2β and π²h/2β²; parabolic 2h/β
+    and 4h/β²; cycloidal 2h/β and 2πh/β²."""
     h, b = lift, beta
     return {"uniform velocity": (h / b, math.inf),
+            "modified uniform velocity": (h / ((1 - blend) * b),
+                                          h / (blend * (1 - blend) * b * b)),
             "simple harmonic": (math.pi * h / (2 * b), math.pi ** 2 * h / (2 * b * b)),
             "parabolic": (2 * h / b, 4 * h / b ** 2),
             "cycloidal": (2 * h / b, 2 * math.pi * h / b ** 2)}[law]
+
+
+def jerk_peak(law: str, lift: float, beta: float) -> float:
+    """The textbook maximum of |y‴| (per rad³): simple harmonic π³h/2β³, cycloidal
+    4π²h/β³; infinite (given as inf) where y″ jumps, as it does at the ends and joins of the
+    uniform velocity, parabolic and modified uniform velocity laws."""
+    h, b = lift, beta
+    return {"simple harmonic": math.pi ** 3 * h / (2 * b ** 3),
+            "cycloidal": 4 * math.pi ** 2 * h / b ** 3}.get(law, math.inf)
 
 
 def time_rates(m: Motion, omega: float, alpha: float = 0.0, alpha_dot: float = 0.0

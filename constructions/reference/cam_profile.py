@@ -80,7 +80,8 @@ def follower_motion(segments, theta: float) -> Motion:
         if theta <= start + s.angle or s is segments[-1]:
             if s.kind == "dwell":
                 return Motion(lift, 0.0, 0.0, 0.0)
-            m = motion(s.law, s.lift, s.angle, theta - start, rise=s.kind == "rise")
+            m = motion(s.law, s.lift, s.angle, theta - start, rise=s.kind == "rise",
+                       blend=s.blend)
             base = lift - (s.lift if s.kind == "return" else 0.0)
             return Motion(base + m.y, m.y1, m.y2, m.y3)
         lift += s.lift if s.kind == "rise" else -s.lift if s.kind == "return" else 0.0
