@@ -142,23 +142,35 @@ def draw(source, output, angle, paper):
     Every joint is located by compass construction (arcs and lines, one dyad
     after another) and drawn in textbook style: hatched ground pivots, pins,
     slider blocks on guides, link numbers, the input's θ and ω, and a scale bar
-    that measures true on the printed PDF. A gear train is drawn in side view.
+    that measures true on the printed PDF. A gear train is drawn in side view;
+    a cam as its profile laid out by inversion (an undercut one with the
+    trouble ringed).
 
     \b
     Example:
       tarsim draw four-bar -o four-bar.pdf
       tarsim draw my-linkage.toml -o fig.svg --angle 120
       tarsim draw planetary-q4 -o q4.svg
+      tarsim draw oscillating-roller -o cam.pdf
     """
     from ..constructions.assembly import assemble
     from ..constructions.scales import space_per_cm
     from ..graphics.diagram import draw_kinematic_diagram
     from ..graphics.export import write_figure
     from ..graphics.paper import on_sheet, paper as sheet, room
+    from .cam_file import CamExercise
     from .catalog import load
     from .train_file import TrainExercise
 
     loaded = load(source)
+    if isinstance(loaded, CamExercise):
+        from .cam_solution import solve_cam
+
+        if angle is not None:
+            raise InputError("a cam is laid out over its whole turn: leave out --angle")
+        fig = solve_cam(loaded, allow_undercut=True).figures["profile"]
+        click.echo(f"wrote {write_figure(on_sheet(fig, sheet(paper)), output)}")
+        return
     if isinstance(loaded, TrainExercise):
         from ..graphics.train_schematic import draw_train_schematic
 
@@ -505,7 +517,8 @@ def list_():
         if source:
             click.echo(f"{'':<{pad}}from {source}")
         asks = (", ".join(ask_symbol(q) for q in ex.asks) if train else
-                "the follower's displacement, velocity and acceleration" if cam else _asks(ex))
+                "the follower's motion diagrams and the profile by inversion" if cam
+                else _asks(ex))
         click.echo(f"{'':<{pad}}asks: {asks}")
 
 

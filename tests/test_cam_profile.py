@@ -258,3 +258,16 @@ def test_an_oscillating_arm_reports_its_angular_peaks():
     rise = s.peaks[0]
     assert rise.velocity == pytest.approx(0.050 * w / 3, rel=1e-14)
     assert f"(the arm: {w / 3:.6g} rad/s" in s.lines()[0]
+
+
+def test_draw_lays_a_cam_out(tmp_path):
+    """`tarsim draw` on a cam writes its layout, the figure solve writes as profile.svg; an
+    input angle means nothing to a cam and is refused."""
+    out = tmp_path / "cam.svg"
+    result = CliRunner().invoke(cli, ["draw", "oscillating-roller", "-o", str(out)])
+    assert result.exit_code == 0, result.output
+    svg = out.read_text(encoding="utf-8")
+    assert "Cam: oscillating roller follower: profile" in svg
+    result = CliRunner().invoke(cli, ["draw", "oscillating-roller", "-o", str(out),
+                                      "--angle", "30"])
+    assert result.exit_code == 1 and "leave out --angle" in result.output
