@@ -36,10 +36,12 @@ from pathlib import Path
 from ..constructions import asks as A
 from ..constructions import registry
 from ..constructions.errors import InputError
+from ..constructions.loads import Loads
 from ..constructions.model import LENGTH_UNITS, Drive, Mechanism
 from ..constructions.narration import significant
 from ..constructions.scales import Stated
 
+from .loads_file import LOAD_TABLES, read_loads
 from .mechanism_file import (RANGE, SourceMap, _float, _Reader, in_range, radians_in_turn,
                              read_source, read_toml)
 
@@ -87,6 +89,8 @@ class Exercise:
     paper: str = "A4"
     """The sheet the figures are set on (``graphics.paper.PAPERS``): their scales are chosen
     to fill it."""
+    loads: Loads | None = None
+    """Masses, external forces and couples, for the force analysis; None if none given."""
 
     def __post_init__(self) -> None:
         if not self.asks:
@@ -178,8 +182,12 @@ def parse_exercise(text: str, filename: str = "<string>",
     data = read_toml(text, filename)
     where = SourceMap(text)
     ask = data.pop("ask", None)
+    loading = {t: data.pop(t) for t in LOAD_TABLES if t in data}
     mech = _Reader(data, where, filename).mechanism()
     ex = _read_ask(ask, mech, where, filename, exercise_id)
+    loads = read_loads(loading, mech, where, filename)
+    if loads is not None:
+        ex = replace(ex, loads=loads)
     if ask is not None and ex.without_motion:     # a bare mechanism file may still be drawn
         raise InputError(ex.without_motion, file=filename,
                          line=where.key("omega", "input") or where.header("input"), key="input")

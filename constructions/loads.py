@@ -1,0 +1,65 @@
+"""What loads a mechanism carries, for its force analysis (SI units, CCW-positive).
+
+Each moving link may have a mass at a centre of mass (a point of the link in its own
+coordinates) and a moment of inertia about it; external forces act at points of links,
+couples on links; gravity pulls along −y. One link, the input, carries the unknown driving
+torque that keeps the motion as given.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+__all__ = ["Couple", "Loads", "Mass", "PointForce", "GRAVITY"]
+
+GRAVITY = 9.81
+"""m/s², the value the course project uses."""
+
+
+@dataclass(frozen=True)
+class Mass:
+    """Link ``link``'s mass (kg), its centre ``centre`` in the link's own coordinates (m)
+    and its moment of inertia about that centre (kg·m²). ``assumed`` says how the inertia
+    was come by when the file did not give it ("slender rod, (1/12)mL²")."""
+
+    link: int
+    mass: float
+    centre: tuple[float, float]
+    inertia: float
+    assumed: str = ""
+    centre_name: str = ""
+    """How the file named the centre: a point ("A"), "mid" or ""."""
+
+
+@dataclass(frozen=True)
+class PointForce:
+    """A force (N, world components) on link ``link`` at ``point``: a point name, or a point
+    in the link's own coordinates (m)."""
+
+    link: int
+    point: str | tuple[float, float]
+    force: tuple[float, float]
+    name: str = ""
+
+
+@dataclass(frozen=True)
+class Couple:
+    """A couple (N·m, CCW +) on link ``link``."""
+
+    link: int
+    moment: float
+    name: str = ""
+
+
+@dataclass(frozen=True)
+class Loads:
+    """Everything that loads the mechanism; ``gravity`` is g (0 for none)."""
+
+    masses: tuple[Mass, ...] = ()
+    forces: tuple[PointForce, ...] = ()
+    couples: tuple[Couple, ...] = ()
+    gravity: float = GRAVITY
+
+    def mass_of(self, link: int) -> Mass | None:
+        """The mass on ``link``, if it has one."""
+        return next((m for m in self.masses if m.link == link), None)

@@ -1,0 +1,233 @@
+"""The independent reference for forces: Newton–Euler for every moving link, one linear
+system, and the driving torque again by the balance of power.
+
+Each moving link j gives three equations (the course project, 003 §9, writes the same):
+
+    Σ F_on_j + Σ F_ext + m_j·g − m_j·a_Gj = 0,
+    Σ (r − O_j) × F + Σ M_ext − I_j·α_j + (G_j − O_j) × (m_j·g − m_j·a_Gj) = 0,
+
+the accelerations from the analytic solver. The unknowns are the joint forces: at a pin
+carried by links c₀ < c₁ < …, the force F_c₀cᵢ of c₀ on each other cᵢ (two components);
+at a slide, the guide's push square to it, and for a block its couple too; and the
+driving torque on the input link. A mechanism of one freedom whose joints constrain it
+just once gives as many equations as unknowns; a redundant joint leaves the system short
+of rank, and the unknowns that move in its null space name the joints.
+
+The driving torque is found a second way, by power: T·ω_in = −Σ F·v − Σ M·ω over every
+load, D'Alembert's inertia included, with no joint force in it.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..errors import InputError
+from ..loads import Loads
+from ..model import Mechanism, SlideKind
+from .solver import Kinematics, point_acceleration, point_velocity
+
+__all__ = ["JointForce", "Statics", "balance", "power_torque", "world_point"]
+
+
+@dataclass(frozen=True)
+class JointForce:
+    """A joint's reaction: ``name`` (F_23: of link 2 on link 3), where it acts (m), and its
+    value: a force (N) or, for a block's couple (T_15), a moment (N·m) in ``moment``."""
+
+    name: str
+    by: int
+    on: int
+    at: tuple[float, float]
+    force: tuple[float, float] = (0.0, 0.0)
+    moment: float = 0.0
+
+    @property
+    def size(self) -> float:
+        """|F| (N), or |T| (N·m) for a couple."""
+        return abs(self.moment) if self.name.startswith("T") else math.hypot(*self.force)
+
+
+@dataclass(frozen=True)
+class Statics:
+    """Every joint's reaction and the driving torque (N·m, CCW +) on ``driver``."""
+
+    joints: tuple[JointForce, ...]
+    torque: float
+    driver: int
+    residual: float
+    conditioning: float
+
+    def joint(self, name: str) -> JointForce:
+        """The reaction called ``name`` (F_23, T_15)."""
+        return next(j for j in self.joints if j.name == name)
+
+
+def world_point(kin: Kinematics, mech: Mechanism, link: int, point) -> tuple[float, float]:
+    """A point of ``link`` in the world: a name, or its own coordinates (m)."""
+    if isinstance(point, str):
+        return kin.points[point]
+    o, a = kin.origins[link], kin.angles[link]
+    c, s = math.cos(a), math.sin(a)
+    return (o[0] + c * point[0] - s * point[1], o[1] + s * point[0] + c * point[1])
+
+
+def _direction(kin: Kinematics, guide: int, d: tuple[float, float]) -> tuple[float, float]:
+    a = kin.angles.get(guide, 0.0) if guide != 1 else 0.0
+    c, s = math.cos(a), math.sin(a)
+    return (c * d[0] - s * d[1], s * d[0] + c * d[1])
+
+
+def _cross(r: tuple[float, float], f: tuple[float, float]) -> float:
+    return r[0] * f[1] - r[1] * f[0]
+
+
+def _loads_on(kin: Kinematics, mech: Mechanism, loads: Loads, link: int
+              ) -> list[tuple[tuple[float, float], tuple[float, float], float]]:
+    """Every known load on ``link`` as (where, force, couple): its weight and inertia
+    force at G with its inertia couple −Iα, and the external forces and couples."""
+    out = []
+    m = loads.mass_of(link)
+    if m is not None:
+        g = world_point(kin, mech, link, m.centre)
+        a = point_acceleration(kin, mech, link, g)
+        out.append((g, (-m.mass * a[0], -m.mass * (a[1] + loads.gravity)),
+                    -m.inertia * kin.alphas[link]))
+    for f in loads.forces:
+        if f.link == link:
+            out.append((world_point(kin, mech, link, f.point), f.force, 0.0))
+    out += [((0.0, 0.0), (0.0, 0.0), c.moment) for c in loads.couples if c.link == link]
+    return out
+
+
+def balance(mech: Mechanism, kin: Kinematics, loads: Loads) -> Statics:
+    """Solve every joint force and the driving torque at the position ``kin`` solves.
+
+    Raises
+    ------
+    InputError
+        If the mechanism rolls or runs in a curved slot (not solved yet), or if its
+        joints constrain it more than once (statically indeterminate), naming them.
+    """
+    if mech.arcs or any(s.rolling for s in mech.slides):
+        raise InputError("forces through a rolling contact or a curved slot are not solved "
+                         "yet", file=mech.source or None)
+    moving = [k.number for k in mech.links if k.number != 1]
+    row = {n: 3 * i for i, n in enumerate(moving)}
+    columns: list[tuple[str, int, int, tuple[float, float], str, tuple[float, float]]] = []
+    cols: list[np.ndarray] = []
+
+    def fresh(name: str) -> str:
+        """A joint's name, primed if the same two links already have one (F_14′)."""
+        while any(c[0] == name for c in columns):
+            name += "′"
+        return name
+
+    def add(name, by, on, at, kind, effect, along=(0.0, 0.0)) -> None:
+        """One unknown: ``effect`` maps a link to its (Fx, Fy, M about origin) per unit."""
+        col = np.zeros(3 * len(moving))
+        for link, (fx, fy, mz) in effect.items():
+            if link in row:
+                r = row[link]
+                col[r:r + 3] += (fx, fy, mz)
+        columns.append((name, by, on, at, kind, along))
+        cols.append(col)
+
+    def arm(link: int, at) -> tuple[float, float]:
+        o = kin.origins[link] if link != 1 else (0.0, 0.0)
+        return (at[0] - o[0], at[1] - o[1])
+
+    for point in mech.point_names:
+        carriers = sorted(mech.links_at(point))
+        at = kin.points.get(point)
+        for other in carriers[1:]:
+            by = carriers[0]
+            name = fresh(f"F_{by}{other}")
+            for axis, unit in (("x", (1.0, 0.0)), ("y", (0.0, 1.0))):
+                add(name, by, other, at, axis, {
+                    other: (unit[0], unit[1], _cross(arm(other, at), unit)),
+                    by: (-unit[0], -unit[1], -_cross(arm(by, at), unit))})
+    for s in mech.slides:
+        at = kin.points[s.point] if s.point in kin.points else world_point(
+            kin, mech, s.link, mech.link(s.link).local(s.point))
+        d = _direction(kin, s.guide_link, s.direction)
+        n = (-d[1], d[0])
+        add(fresh(f"F_{s.guide_link}{s.link}"), s.guide_link, s.link, at, "n", {
+            s.link: (n[0], n[1], _cross(arm(s.link, at), n)),
+            s.guide_link: (-n[0], -n[1], -_cross(arm(s.guide_link, at), n))}, n)
+        if s.kind == SlideKind.BLOCK:
+            add(fresh(f"T_{s.guide_link}{s.link}"), s.guide_link, s.link, at, "m",
+                {s.link: (0.0, 0.0, 1.0), s.guide_link: (0.0, 0.0, -1.0)})
+    driver = mech.drive.link
+    add(f"T_{driver}", 1, driver, kin.origins[driver], "drive", {driver: (0.0, 0.0, 1.0)})
+    a = np.column_stack(cols)
+    b = np.zeros(3 * len(moving))
+    for link in moving:
+        r = row[link]
+        for at, f, mz in _loads_on(kin, mech, loads, link):
+            b[r:r + 3] -= (f[0], f[1], _cross(arm(link, at), f) + mz)
+    _refuse_redundancy(a, columns, mech)
+    x, *_ = np.linalg.lstsq(a, b, rcond=None)
+    sv = np.linalg.svd(a, compute_uv=False)
+    residual = float(np.max(np.abs(a @ x - b))) if len(b) else 0.0
+    joints, i = [], 0
+    while i < len(columns):
+        name, by, on, at, kind, along = columns[i]
+        if kind == "x":
+            joints.append(JointForce(name, by, on, at, (float(x[i]), float(x[i + 1]))))
+            i += 2
+            continue
+        if kind == "n":
+            joints.append(JointForce(name, by, on, at, (float(along[0] * x[i]),
+                                                         float(along[1] * x[i]))))
+        elif kind == "m":
+            joints.append(JointForce(name, by, on, at, moment=float(x[i])))
+        i += 1
+    return Statics(tuple(joints), float(x[-1]), driver, residual,
+                   float(sv[-1] / sv[0]) if len(sv) and sv[0] else 0.0)
+
+
+def _refuse_redundancy(a: np.ndarray, columns, mech: Mechanism) -> None:
+    """Raise if the joints constrain the mechanism more than once, naming them."""
+    rows, unknowns = a.shape
+    u, sv, vt = np.linalg.svd(a)
+    tol = max(a.shape) * np.finfo(float).eps * (sv[0] if len(sv) else 1.0)
+    rank = int(np.sum(sv > tol))
+    if rank == unknowns and unknowns == rows:
+        return
+    if unknowns > rank:
+        null = vt[rank:]
+        weight = np.max(np.abs(null), axis=0)
+        names = list(dict.fromkeys(columns[k][0] for k in range(unknowns)
+                                   if weight[k] > 1e-8))
+        raise InputError(f"the force system is statically indeterminate: the joints "
+                         f"{', '.join(names)} constrain the mechanism more than once, so "
+                         "their forces cannot be told apart", file=mech.source or None)
+    raise InputError(f"the joints leave the mechanism {rows - rank} freedom(s) more than the "
+                     "driver can hold: no force balance", file=mech.source or None)
+
+
+def power_torque(mech: Mechanism, kin: Kinematics, loads: Loads) -> float:
+    """The driving torque by the balance of power, T·ω_in + Σ F·v + Σ M·ω = 0, over every
+    load and inertia load; no joint force enters (frictionless joints do no work).
+
+    Raises
+    ------
+    InputError
+        If the input stands still: power then fixes no torque.
+    """
+    driver = mech.drive.link
+    w_in = kin.omegas[driver]
+    if w_in == 0.0:
+        raise InputError("the input stands still, so the balance of power fixes no torque",
+                         file=mech.source or None)
+    power = 0.0
+    for k in mech.links:
+        if k.number == 1:
+            continue
+        for at, f, mz in _loads_on(kin, mech, loads, k.number):
+            v = point_velocity(kin, mech, k.number, at)
+            power += f[0] * v[0] + f[1] * v[1] + mz * kin.omegas[k.number]
+    return -power / w_in

@@ -1,0 +1,156 @@
+"""Read a mechanism's loads for its force analysis: ``[forces]``, ``[[mass]]``,
+``[[force]]`` and ``[[couple]]`` tables beside the mechanism's own.
+
+Masses are in kg, inertias in kg·m², forces in N and couples in N·m (CCW +); points and
+lengths in the file's length unit. A mass's centre is a point of its link ("A"), "mid"
+(halfway between the link's first two points) or [x, y] in the link's own frame (its
+first point the origin, +x toward its second point or along its slot); its inertia about
+that centre defaults to a slender rod's, (1/12)·m·L², said to be assumed. Every failure is
+one line naming file:line.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+from ..constructions.errors import InputError
+from ..constructions.loads import GRAVITY, Couple, Loads, Mass, PointForce
+from ..constructions.model import LENGTH_UNITS, Mechanism
+from .mechanism_file import SourceMap
+
+__all__ = ["LOAD_TABLES", "read_loads"]
+
+LOAD_TABLES = ("forces", "mass", "force", "couple")
+"""The top-level tables this module reads; the mechanism reader leaves them alone."""
+
+_KEYS = {"forces": ("gravity", "driver"),
+         "mass": ("link", "mass", "centre", "inertia", "length"),
+         "force": ("link", "point", "force", "name"),
+         "couple": ("link", "moment", "name")}
+
+
+def read_loads(data: dict[str, Any], mech: Mechanism, where: SourceMap,
+               filename: str) -> Loads | None:
+    """The loads the file gives (None if it gives none).
+
+    Raises
+    ------
+    InputError
+        Naming file:line: an unknown link or point, a mass or inertia that is not positive,
+        a driver other than the input link, a setting it does not know.
+    """
+    if not any(t in data for t in LOAD_TABLES):
+        return None
+    metre = LENGTH_UNITS[mech.units.length]
+
+    def fail(message: str, table: str, key: str | None = None, index: int = 0) -> InputError:
+        line = (where.key(key, table, index) if key else None) or where.header(table, index)
+        return InputError(message, file=filename, line=line)
+
+    def entries(table: str) -> list[dict[str, Any]]:
+        raw = data.get(table, [])
+        raw = [raw] if isinstance(raw, dict) else raw
+        if not isinstance(raw, list) or not all(isinstance(t, dict) for t in raw):
+            raise fail(f"[[{table}]] must be a list of tables", table)
+        for i, t in enumerate(raw):
+            for k in t:
+                if k not in _KEYS[table]:
+                    raise fail(f"unknown setting '{k}' in [{table}]; expected "
+                               f"{', '.join(_KEYS[table])}", table, k, i)
+        return raw
+
+    def number(t: dict, key: str, table: str, what: str, i: int) -> float:
+        v = t.get(key)
+        if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v):
+            raise fail(f"{what} must be a number, got {v!r}", table, key, i)
+        return float(v)
+
+    def link(t: dict, table: str, i: int) -> int:
+        n = t.get("link")
+        moving = sorted(k.number for k in mech.links if k.number != 1)
+        if n not in moving:
+            raise fail(f"[{table}] names link {n!r}, which is not a moving link of the "
+                       f"mechanism ({', '.join(map(str, moving))})", table, "link", i)
+        return n
+
+    (settings,) = entries("forces") or [{}]
+    gravity = settings.get("gravity", True)
+    if not isinstance(gravity, bool):
+        raise fail("gravity = true pulls each mass down (−y) at 9.81 m/s²; false leaves "
+                   "weight out", "forces", "gravity")
+    driver = settings.get("driver", mech.drive.link)
+    if driver != mech.drive.link:
+        raise fail(f"the driver must be the input link ({mech.drive.link}), whose motion is "
+                   f"given; got {driver!r}", "forces", "driver")
+    masses = []
+    for i, t in enumerate(entries("mass")):
+        n = link(t, "mass", i)
+        k = mech.link(n)
+        m = number(t, "mass", "mass", "a mass", i)
+        if not m > 0:
+            raise fail(f"link {n}'s mass must be positive, got {m:g} kg", "mass", "mass", i)
+        centre, named = _centre(t.get("centre", "mid"), k, metre,
+                                lambda msg, i=i: fail(msg, "mass", "centre", i))
+        if "inertia" in t:
+            inertia = number(t, "inertia", "mass", "a moment of inertia", i)
+            if not inertia > 0:
+                raise fail(f"link {n}'s moment of inertia must be positive, got "
+                           f"{inertia:g} kg·m²", "mass", "inertia", i)
+            assumed = ""
+        else:
+            if "length" in t:
+                length = number(t, "length", "mass", "the rod's length", i) * metre
+            elif len(k.names) >= 2:
+                length = k.span(k.names[0], k.names[1])
+            else:
+                raise fail(f"link {n} has one point: give its inertia, or its length for a "
+                           "slender rod's (1/12)·m·L²", "mass", None, i)
+            if not length > 0:
+                raise fail("a slender rod's length must be positive", "mass", "length", i)
+            inertia = m * length ** 2 / 12
+            assumed = f"slender rod (1/12)·m·L², L = {length / metre:g} {mech.units.length}"
+        masses.append(Mass(n, m, centre, inertia, assumed, named))
+    forces = []
+    for i, t in enumerate(entries("force")):
+        n = link(t, "force", i)
+        point = t.get("point")
+        if isinstance(point, str):
+            if not mech.link(n).carries(point):
+                raise fail(f"link {n} has no point '{point}'; its points are "
+                           f"{', '.join(mech.link(n).names)}", "force", "point", i)
+        elif isinstance(point, list) and len(point) == 2:
+            point = (number({"p": point[0]}, "p", "force", "a point's x", i) * metre,
+                     number({"p": point[1]}, "p", "force", "a point's y", i) * metre)
+        else:
+            raise fail("a force acts at a point of its link: point = \"B\" or [x, y] in the "
+                       "link's own frame", "force", "point", i)
+        f = t.get("force")
+        if not (isinstance(f, list) and len(f) == 2):
+            raise fail("a force gives its components in N: force = [-1000, 0]", "force",
+                       "force", i)
+        fx = number({"f": f[0]}, "f", "force", "a force's x", i)
+        fy = number({"f": f[1]}, "f", "force", "a force's y", i)
+        forces.append(PointForce(n, point, (fx, fy), str(t.get("name", ""))))
+    couples = [Couple(link(t, "couple", i), number(t, "moment", "couple", "a couple", i),
+                      str(t.get("name", ""))) for i, t in enumerate(entries("couple"))]
+    return Loads(tuple(masses), tuple(forces), tuple(couples), GRAVITY if gravity else 0.0)
+
+
+def _centre(v: Any, k, metre: float, fail) -> tuple[tuple[float, float], str]:
+    """A centre of mass in the link's own frame, and how the file named it."""
+    if v == "mid":
+        if len(k.names) < 2:
+            raise fail(f"{k.label} has one point, so no mid-length: give centre = [x, y] "
+                       "in its own frame")
+        (ax, ay), (bx, by) = k.local(k.names[0]), k.local(k.names[1])
+        return ((ax + bx) / 2, (ay + by) / 2), "mid"
+    if isinstance(v, str):
+        if not k.carries(v):
+            raise fail(f"{k.label} has no point '{v}'; its points are {', '.join(k.names)}")
+        return k.local(v), v
+    if (isinstance(v, list) and len(v) == 2 and all(
+            isinstance(c, (int, float)) and not isinstance(c, bool) and math.isfinite(c)
+            for c in v)):
+        return (v[0] * metre, v[1] * metre), ""
+    raise fail(f"a centre of mass is a point of the link, \"mid\" or [x, y], not {v!r}")

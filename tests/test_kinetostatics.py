@@ -1,0 +1,198 @@
+"""The force reference: Newton–Euler for every link as one linear system, against closed
+forms and against the balance of power.
+
+- A slider-crank engine with only a gas force and a reciprocating mass: the textbook's
+  piston effort F_P = F_gas − m·a_P, thrust on the wall F_P·tan φ, and turning moment
+  F_P·r·sin(θ + φ)/cos φ.
+- A four-bar loaded by a couple on its output: the coupler is a two-force member, and
+  T2·ω2 = −T4·ω4.
+- The course project's crank-shaper (003 §9): the torque from 4 on 3 near 1e-4 N·m and the
+  pin force at B near 0.1 N, as the project reports them.
+- The balance of power, which no joint force enters, gives the same driving torque.
+Tolerances: forces of order 1–1000 N from a well-posed 12 × 12 system, ~1e-12 relative.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import replace
+from pathlib import Path
+
+import pytest
+
+from tarsim.constructions.errors import InputError
+from tarsim.constructions.loads import Couple, Loads, Mass, PointForce
+from tarsim.constructions.model import Drive
+from tarsim.constructions.reference import solver
+from tarsim.constructions.reference.kinetostatics import balance, power_torque
+from tarsim.exercises.catalog import bundled, load
+from tarsim.exercises.exercise_file import parse_exercise
+from tarsim.exercises.mechanism_file import parse_mechanism
+
+ENGINE = """\
+name = "In-line engine"
+[units]
+length = "mm"
+[frame]
+O = [0, 0]
+[[link]]
+number = 2
+points = ["O", "A"]
+lengths = { OA = 60 }
+[[link]]
+number = 3
+points = ["A", "P"]
+lengths = { AP = 240 }
+[[link]]
+number = 4
+points = ["P"]
+[[slider]]
+link = 4
+point = "P"
+on = 1
+through = "O"
+angle = 0
+[input]
+link = 2
+angle = 40
+omega = 200
+[assembly]
+P = "forward"
+"""
+
+
+@pytest.mark.parametrize("deg", [20, 40, 75, 130, 200, 300])
+def test_the_engine_gives_the_textbooks_piston_effort_and_turning_moment(deg):
+    """Gas force 5 kN on a 1.2 kg piston, the rod and crank massless, no weight: the rod
+    is a two-force member, so the piston effort F_P = F_gas − m·ẍ_P goes along it and
+    T = F_P·r·sin(θ + φ)/cos φ (sin φ = r sin θ / l, the thrust F_P tan φ on the wall)."""
+    mech = parse_mechanism(ENGINE).with_drive(Drive(2, math.radians(deg), 200.0))
+    kin = solver.solve(mech)
+    gas = -5000.0 if math.sin(math.radians(deg)) > 0 else 5000.0   # against the piston's way
+    loads = Loads((Mass(4, 1.2, (0.0, 0.0), 1e-9),), (PointForce(4, "P", (gas, 0.0)),),
+                  gravity=0.0)
+    s = balance(mech, kin, loads)
+    th, r, length = math.radians(deg), 0.060, 0.240
+    phi = math.asin(r * math.sin(th) / length)
+    effort = gas - 1.2 * kin.accelerations["P"][0]
+    # The turning moment with the piston effort pushing toward the crank (−x) is
+    # −F_P·r·sin(θ + φ)/cos φ on the crank, CCW +; the driver holds it, so T2 is its negative.
+    assert s.torque == pytest.approx(effort * r * math.sin(th + phi) / math.cos(phi),
+                                     rel=1e-12, abs=1e-9)
+    assert s.joint("F_14").force[1] == pytest.approx(-effort * math.tan(phi), rel=1e-12,
+                                                     abs=1e-9)
+    rod = s.joint("F_23").force
+    assert rod[1] == pytest.approx(rod[0] * -math.tan(phi), rel=1e-12, abs=1e-9)
+    assert s.torque == pytest.approx(power_torque(mech, kin, loads), rel=1e-12)
+
+
+@pytest.mark.parametrize("deg", [0, 60, 150, 250])
+def test_a_four_bar_holding_a_couple_on_its_output(deg):
+    """Massless links, 50 N·m on the output: the coupler carries its force along AB, and
+    the input holds T2 = −T4·ω4/ω2."""
+    ex = load("four-bar")
+    mech = ex.mechanism.with_drive(Drive(2, math.radians(deg), 10.0))
+    kin = solver.solve(mech)
+    loads = Loads(couples=(Couple(4, 50.0),), gravity=0.0)
+    s = balance(mech, kin, loads)
+    assert s.torque == pytest.approx(-50.0 * kin.omegas[4] / kin.omegas[2], rel=1e-12)
+    f = s.joint("F_23").force
+    ab = (kin.points["B"][0] - kin.points["A"][0], kin.points["B"][1] - kin.points["A"][1])
+    assert abs(f[0] * ab[1] - f[1] * ab[0]) <= 1e-12 * math.hypot(*f) * math.hypot(*ab)
+
+
+LOADED = """
+[forces]
+gravity = true
+
+[[mass]]
+link = 2
+mass = 1.19                # a slender rod, 180 mm
+
+[[mass]]
+link = 3
+mass = 0.1
+centre = "A"
+inertia = 5.83e-4
+
+[[mass]]
+link = 4
+mass = 4.49
+centre = [440, 0]          # half the lever's 880 mm
+length = 880
+
+[[mass]]
+link = 5
+mass = 0.1
+centre = "B"
+inertia = 1e-4
+"""
+
+
+def _shaper(extra: str = ""):
+    text = Path(bundled()["crank-shaper"]).read_text(encoding="utf-8") + LOADED + extra
+    return parse_exercise(text, "crank-shaper.toml", "crank-shaper")
+
+
+def test_the_crank_shaper_reproduces_the_projects_orders_of_magnitude():
+    """003 §9 without cutting force: the couple from 4 on 3 is ~1e-4 N·m (here I3·α4 =
+    5.83e-4 × 0.5696 = 3.32e-4 N·m at t = 2.34 s), the slot's push on the ram's pin ~0.1 N
+    (here 0.0567 N); the slender-rod inertias are the project's 3.21e-3 and 0.290 kg·m²."""
+    ex = _shaper()
+    masses = {m.link: m for m in ex.loads.masses}
+    assert masses[2].inertia == pytest.approx(3.213e-3, rel=1e-12)
+    assert masses[4].inertia == pytest.approx(4.49 * 0.88 ** 2 / 12, rel=1e-12)
+    assert "slender rod" in masses[4].assumed and masses[3].assumed == ""
+    mech = ex.at(ex.positions[1]).mechanism
+    kin = solver.solve(mech)
+    s = balance(mech, kin, ex.loads)
+    couple = s.joint("T_43").moment
+    assert abs(couple) == pytest.approx(5.83e-4 * abs(kin.alphas[4]), rel=1e-9)
+    assert 1e-4 < abs(couple) < 1e-3
+    assert 0.01 < s.joint("F_45").size < 0.1
+    assert s.torque == pytest.approx(power_torque(mech, kin, ex.loads), rel=1e-11)
+
+
+def test_a_cutting_force_on_the_ram_is_held_by_the_crank():
+    """1000 N against the ram at θ2 = 90° (the ram moving +x, the lever upright): the slot
+    takes it all at B, F_45 = 1000 N, and T2 = −1000 N × (the ram's speed per unit ω2)."""
+    ex = _shaper('\n[[force]]\nlink = 5\npoint = "B"\nforce = [-1000, 0]\n')
+    mech = ex.at(ex.positions[0]).mechanism
+    kin = solver.solve(mech)
+    s = balance(mech, kin, ex.loads)
+    assert s.joint("F_45").force[0] == pytest.approx(1000.0, rel=1e-12)
+    vb = kin.velocities["B"][0]
+    assert s.torque == pytest.approx(-(-1000.0 * vb) / kin.omegas[2], rel=1e-9)
+    assert s.torque == pytest.approx(power_torque(mech, kin, ex.loads), rel=1e-12)
+
+
+def test_a_redundant_guide_is_named():
+    """A second guide for the piston, along the first: the file reader's Grübler count
+    refuses it already, so it is built here; the two guides' pushes cannot be told apart."""
+    single = parse_mechanism(ENGINE)
+    kin = solver.solve(single)                   # the same motion, one guide
+    mech = replace(single, slides=single.slides + (replace(single.slides[0],
+                                                           direction=(-1.0, 0.0)),))
+    with pytest.raises(InputError,
+                       match="statically indeterminate: the joints F_14, T_14, F_14′, T_14′ "):
+        balance(mech, kin, Loads(gravity=9.81))
+
+
+@pytest.mark.parametrize("extra, words", [
+    ("\n[[mass]]\nlink = 9\nmass = 1\n", "names link 9, which is not a moving link"),
+    ("\n[[mass]]\nlink = 2\nmass = -1\n", "link 2's mass must be positive, got -1 kg"),
+    ("\n[[mass]]\nlink = 2\nmass = 1\ninertia = 0\n", "moment of inertia must be positive"),
+    ("\n[[mass]]\nlink = 4\nmass = 1\n", "link 4 (slotted lever) has one point, so no "
+                                          "mid-length"),
+    ("\n[[mass]]\nlink = 4\nmass = 1\ncentre = [10, 0]\n",
+     "link 4 has one point: give its inertia, or its length"),
+    ("\n[[force]]\nlink = 5\npoint = \"Q\"\nforce = [1, 0]\n", "link 5 has no point 'Q'"),
+    ("\n[forces]\ndriver = 4\n", "the driver must be the input link (2)"),
+    ("\n[[couple]]\nlink = 4\nmoment = 1\nsize = 2\n", "unknown setting 'size' in [couple]"),
+])
+def test_bad_loads_are_refused_in_one_line(extra, words):
+    text = Path(bundled()["crank-shaper"]).read_text(encoding="utf-8") + extra
+    with pytest.raises(InputError) as e:
+        parse_exercise(text, "cs.toml", "cs")
+    message = str(e.value)
+    assert "\n" not in message and message.startswith("cs.toml:") and words in message, message
