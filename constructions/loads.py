@@ -34,12 +34,18 @@ class Mass:
 @dataclass(frozen=True)
 class PointForce:
     """A force (N, world components) on link ``link`` at ``point``: a point name, or a point
-    in the link's own coordinates (m)."""
+    in the link's own coordinates (m).
+
+    A resisting force (a cutting force) is given instead by ``resist``, its size against
+    the point's velocity; with ``along`` it acts only while the point moves that way (the
+    cutting stroke), and not at all while the point stands still."""
 
     link: int
     point: str | tuple[float, float]
-    force: tuple[float, float]
+    force: tuple[float, float] = (0.0, 0.0)
     name: str = ""
+    resist: float = 0.0
+    along: tuple[float, float] | None = None
 
 
 @dataclass(frozen=True)
@@ -59,6 +65,10 @@ class Loads:
     forces: tuple[PointForce, ...] = ()
     couples: tuple[Couple, ...] = ()
     gravity: float = GRAVITY
+    speed_fluctuation: float | None = None
+    """The coefficient C_s a flywheel is to hold the speed within, if given."""
+    flywheel: float | None = None
+    """A flywheel's inertia (kg·m²) whose C_s is asked, if given."""
 
     def mass_of(self, link: int) -> Mass | None:
         """The mass on ``link``, if it has one."""

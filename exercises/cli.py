@@ -350,11 +350,19 @@ def sweep(source, out_dir, of, steps, pdf):
     the acceleration is zero the velocity peaks: both are found to the
     solver's precision, not the step's.
 
+    A file with loads ([[mass]], [[force]], [[couple]]) gets the turning-moment
+    diagram too: the driving torque round the turn from every link's Newton–Euler
+    equations, checked at each step by the balance of power; its mean, the
+    energy areas between curve and mean, the greatest fluctuation of energy,
+    and the flywheel for [forces] speed_fluctuation (or the C_s a given
+    flywheel allows).
+
     \b
     Writes into DIR:
       sweep.csv              one row per step (angle, t, position, V, A)
       sweep-points.csv       graphical values against the curve's
       sweep-position.svg, sweep-velocity.svg, sweep-acceleration.svg (and .pdf)
+      turning-moment.svg, turning-moment.csv   with loads: T and every joint force
 
     \b
     Example:
@@ -364,11 +372,13 @@ def sweep(source, out_dir, of, steps, pdf):
     """
     from .sweep import sweep_exercise
     from .sweep_files import format_sweep, sweep_to_files, write_sweep
+    from .turning_moment import POWER_AGREE, moment_files
     from ..graphics.export import cairo_missing, output_folder
 
     ex = _exercise(source, None)
     reason = cairo_missing() if pdf else None
     out = Path(out_dir or f"{ex.id}-sweep")
+    moment = None
     with output_folder(out):      # a folder that cannot be written fails before the sweep
         if sys.stderr.isatty():
             with click.progressbar(length=steps, label="sweeping", file=sys.stderr) as bar:
@@ -376,14 +386,32 @@ def sweep(source, out_dir, of, steps, pdf):
         else:
             result = sweep_exercise(ex, steps, of=of)
         files = sweep_to_files(result, pdf=pdf and reason is None)
+        if ex.loads is not None:
+            moment = _turning_moment(ex, steps)
+            files |= moment_files(moment, pdf=pdf and reason is None)
         written = write_sweep(files, out)
     click.echo(format_sweep(result))
+    if moment is not None:
+        for line in moment.lines():
+            click.echo(line)
     click.echo(f"wrote {len(written)} files to {out}/")
     if reason:
         click.echo(f"PDF skipped: {reason}", err=True)
     apart = [f"{c.key} at {c.position}" for c in result.checks if not c.rel_error <= SWEEP_AGREE]
+    if moment is not None and not moment.power_miss <= POWER_AGREE:
+        apart.append("the driving torque by the balance of power")
     if apart:
         raise CheckMismatch(list(dict.fromkeys(apart)))
+
+
+def _turning_moment(ex, steps: int):
+    """The turning-moment diagram of a loaded exercise, with a progress bar on a terminal."""
+    from .turning_moment import turning_moment
+
+    if sys.stderr.isatty():
+        with click.progressbar(length=steps, label="forces", file=sys.stderr) as bar:
+            return turning_moment(ex, steps, progress=bar.update)
+    return turning_moment(ex, steps)
 
 
 SWEEP_AGREE = 1e-9

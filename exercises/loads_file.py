@@ -24,9 +24,9 @@ __all__ = ["LOAD_TABLES", "read_loads"]
 LOAD_TABLES = ("forces", "mass", "force", "couple")
 """The top-level tables this module reads; the mechanism reader leaves them alone."""
 
-_KEYS = {"forces": ("gravity", "driver"),
+_KEYS = {"forces": ("gravity", "driver", "speed_fluctuation", "flywheel"),
          "mass": ("link", "mass", "centre", "inertia", "length"),
-         "force": ("link", "point", "force", "name"),
+         "force": ("link", "point", "force", "resist", "stroke", "name"),
          "couple": ("link", "moment", "name")}
 
 
@@ -83,6 +83,16 @@ def read_loads(data: dict[str, Any], mech: Mechanism, where: SourceMap,
     if driver != mech.drive.link:
         raise fail(f"the driver must be the input link ({mech.drive.link}), whose motion is "
                    f"given; got {driver!r}", "forces", "driver")
+    wheel = {}
+    for key, what in (("speed_fluctuation", "a coefficient of speed fluctuation"),
+                      ("flywheel", "a flywheel's inertia (kg·m²)")):
+        if key in settings:
+            wheel[key] = number(settings, key, "forces", what, 0)
+            if not wheel[key] > 0:
+                raise fail(f"{what} must be positive, got {wheel[key]:g}", "forces", key)
+    if len(wheel) > 1:
+        raise fail("give speed_fluctuation (the flywheel is found) or flywheel (its C_s is "
+                   "found), not both", "forces", "flywheel")
     masses = []
     for i, t in enumerate(entries("mass")):
         n = link(t, "mass", i)
@@ -125,16 +135,35 @@ def read_loads(data: dict[str, Any], mech: Mechanism, where: SourceMap,
         else:
             raise fail("a force acts at a point of its link: point = \"B\" or [x, y] in the "
                        "link's own frame", "force", "point", i)
+        name = str(t.get("name", ""))
+        if "resist" in t:
+            size = number(t, "resist", "force", "a resisting force", i)
+            if not size > 0 or "force" in t:
+                raise fail("resist = 1000 gives a force's size against the point's motion "
+                           "(N, positive), in place of force = [x, y]", "force", "resist", i)
+            stroke = t.get("stroke", "both")
+            if stroke not in ("both", "slow", "fast"):
+                raise fail(f"stroke is both, slow or fast, not {stroke!r}", "force", "stroke",
+                           i)
+            along = None
+            if stroke != "both":
+                along = _stroke_way(mech, n, point, stroke == "slow")
+                if along is None:
+                    raise fail(f"a {stroke} stroke belongs to a point on a frame guide; "
+                               f"{point!r} of link {n} is not one", "force", "stroke", i)
+            forces.append(PointForce(n, point, name=name, resist=size, along=along))
+            continue
         f = t.get("force")
         if not (isinstance(f, list) and len(f) == 2):
-            raise fail("a force gives its components in N: force = [-1000, 0]", "force",
-                       "force", i)
+            raise fail("a force gives its components in N: force = [-1000, 0] (or resist = "
+                       "1000 against the point's motion)", "force", "force", i)
         fx = number({"f": f[0]}, "f", "force", "a force's x", i)
         fy = number({"f": f[1]}, "f", "force", "a force's y", i)
-        forces.append(PointForce(n, point, (fx, fy), str(t.get("name", ""))))
+        forces.append(PointForce(n, point, (fx, fy), name))
     couples = [Couple(link(t, "couple", i), number(t, "moment", "couple", "a couple", i),
                       str(t.get("name", ""))) for i, t in enumerate(entries("couple"))]
-    return Loads(tuple(masses), tuple(forces), tuple(couples), GRAVITY if gravity else 0.0)
+    return Loads(tuple(masses), tuple(forces), tuple(couples), GRAVITY if gravity else 0.0,
+                 **wheel)
 
 
 def _centre(v: Any, k, metre: float, fail) -> tuple[tuple[float, float], str]:
@@ -154,3 +183,34 @@ def _centre(v: Any, k, metre: float, fail) -> tuple[tuple[float, float], str]:
             for c in v)):
         return (v[0] * metre, v[1] * metre), ""
     raise fail(f"a centre of mass is a point of the link, \"mid\" or [x, y], not {v!r}")
+
+
+_TURN = 360
+"""Crank positions a stroke's way is judged over."""
+
+
+def _stroke_way(mech: Mechanism, link: int, point, slow: bool) -> tuple[float, float] | None:
+    """The way a point on a frame guide moves during its slow (or fast) stroke: the way it
+    moves over more of the input's turn. None if the point runs on no frame guide."""
+    from ..constructions.errors import TarsimError
+    from ..constructions.model import Drive
+    from ..constructions.reference import solver
+
+    guide = next((s for s in mech.slides if s.guide_link == 1 and s.link == link
+                  and s.point == point), None)
+    if guide is None:
+        return None
+    d, drive = guide.direction, mech.drive
+    forward = backward = 0
+    for k in range(_TURN):
+        try:
+            kin = solver.solve(mech.with_drive(Drive(drive.link, 2 * math.pi * k / _TURN,
+                                                     drive.omega or 1.0)))
+        except TarsimError:
+            continue                              # a dead point or a gap: no way there
+        v = kin.velocities[point]
+        w = v[0] * d[0] + v[1] * d[1]
+        forward += w > 0
+        backward += w < 0
+    ahead = forward > backward
+    return d if ahead == slow else (-d[0], -d[1])

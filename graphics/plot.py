@@ -161,7 +161,9 @@ def draw_line_plot(title: str, x_label: str, y_label: str, series: Sequence[Seri
                    marks: Sequence[PlotMark] = (), *, x_range: tuple[float, float],
                    x_ticks: Sequence[tuple[float, str]], subtitle: str = "",
                    notes: Sequence[str] = (), mark_legend: str = "",
-                   include_zero: bool = True, y_ticks: Sequence[float] = ()) -> Figure:
+                   include_zero: bool = True, y_ticks: Sequence[float] = (),
+                   fills: Sequence[tuple[str, Sequence[Point]]] = (),
+                   tags: Sequence[tuple[float, float, str]] = ()) -> Figure:
     """Draw ``series`` against x in a framed plot, with ``marks`` as labelled open circles.
 
     Parameters
@@ -189,6 +191,11 @@ def draw_line_plot(title: str, x_label: str, y_label: str, series: Sequence[Seri
     y_ticks
         The y ticks, evenly spaced, when the caller knows them (0°, 90°, … 360° for
         a link that turns fully); by default nice ones that hold every value.
+    fills
+        Areas shaded under the curves, each (style, its outline in data coordinates):
+        the energy areas of a turning-moment diagram.
+    tags
+        Words set centred at data points (x, y): each area's value.
 
     Returns
     -------
@@ -263,6 +270,8 @@ def draw_line_plot(title: str, x_label: str, y_label: str, series: Sequence[Seri
     y = bottom + 10.0
     _add_text(fig, ((left + right) / 2, y), x_label, _LABEL, "middle")
 
+    for style, outline in fills:
+        fig.add(Path(tuple((px(a), py(b)) for a, b in outline), style, closed=True))
     paper_runs = []
     for s, rs in runs:
         for r in rs:
@@ -271,6 +280,8 @@ def draw_line_plot(title: str, x_label: str, y_label: str, series: Sequence[Seri
             if len(pts) > 1:
                 fig.add(Path(pts, s.style))
     _draw_marks(fig, [(px(m.x), py(m.y), m.label) for m in marks], paper_runs, frame)
+    for tx, ty, text in tags:
+        fig.add(Text((px(tx), py(ty)), text, _NOTE, "middle", italic=False))
 
     legend = [(s.style, s.label) for s in series] if len(series) > 1 else []
     if marks and mark_legend:

@@ -96,8 +96,16 @@ def _loads_on(kin: Kinematics, mech: Mechanism, loads: Loads, link: int
         out.append((g, (-m.mass * a[0], -m.mass * (a[1] + loads.gravity)),
                     -m.inertia * kin.alphas[link]))
     for f in loads.forces:
-        if f.link == link:
-            out.append((world_point(kin, mech, link, f.point), f.force, 0.0))
+        if f.link != link:
+            continue
+        at = world_point(kin, mech, link, f.point)
+        force = f.force
+        if f.resist:
+            v = point_velocity(kin, mech, link, at)
+            speed = math.hypot(*v)
+            moving = speed > 0.0 and (f.along is None or v[0] * f.along[0] + v[1] * f.along[1] > 0)
+            force = (-f.resist * v[0] / speed, -f.resist * v[1] / speed) if moving else (0.0, 0.0)
+        out.append((at, force, 0.0))
     out += [((0.0, 0.0), (0.0, 0.0), c.moment) for c in loads.couples if c.link == link]
     return out
 

@@ -1,0 +1,218 @@
+"""The turning-moment diagram of a loaded mechanism over a turn, and its flywheel.
+
+At equal steps of the input's turn the analytic solver gives the motion and the force
+reference (:mod:`..constructions.reference.kinetostatics`) the driving torque and every
+joint force; the torque is checked at each step by the balance of power, which shares no
+joint force with it. The diagram is read as the textbooks read it
+(:mod:`..constructions.reference.flywheel`): the mean torque, the energy areas between
+curve and mean, the greatest fluctuation of energy, and the flywheel for a coefficient of
+speed fluctuation (or the coefficient a given flywheel allows).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from dataclasses import dataclass, field
+
+from ..constructions.errors import TarsimError
+from ..constructions.model import Drive
+from ..constructions.reference import solver
+from ..constructions.reference.flywheel import (Fluctuation, fluctuation, flywheel_inertia,
+                                                speed_fluctuation)
+from ..constructions.reference.kinetostatics import balance, power_torque
+from ..graphics.figure import Figure
+from ..graphics.plot import Series, draw_line_plot
+from .exercise_file import Exercise
+
+__all__ = ["POWER_AGREE", "TurningMoment", "moment_files", "turning_moment"]
+
+POWER_AGREE = 1e-9
+"""How near (relative to the greatest torque of the turn) the balance of power must come to
+the joint-force system's torque: both round alike, near 1e-14."""
+
+
+@dataclass
+class TurningMoment:
+    """The driving torque and joint forces round a turn, read for the flywheel."""
+
+    exercise: Exercise
+    angles: list[float]
+    """How far the input has turned at each step (rad), from its [input] angle the way
+    it turns."""
+    torques: list[float | None]
+    """The driving torque at each step (N·m), positive in the way the input turns: the
+    driver's work over a step is its torque times the step."""
+    forces: dict[str, list[float | None]] = field(default_factory=dict)
+    """Each joint force's size (N, or N·m for a couple) at each step."""
+    gaps: list[tuple[float, str]] = field(default_factory=list)
+    power_miss: float = 0.0
+    """The worst disagreement of the balance of power, relative to the greatest torque."""
+
+    @property
+    def reading(self) -> Fluctuation | None:
+        """The diagram read for its mean and energy areas; None if the turn has gaps."""
+        if self.gaps:
+            return None
+        return fluctuation(self.angles, self.torques)
+
+    @property
+    def turning(self) -> str:
+        """The way the input turns, as the figures say it."""
+        return "clockwise" if self.exercise.mechanism.drive.omega < 0 else "counter-clockwise"
+
+    def theta(self, turned: float) -> float:
+        """The input's angle (degrees, 0–360) after it has turned ``turned`` (rad)."""
+        drive = self.exercise.mechanism.drive
+        sense = -1.0 if drive.omega < 0 else 1.0
+        return math.degrees(drive.angle + sense * turned) % 360.0
+
+    @property
+    def omega(self) -> float:
+        """The input's mean speed (rad/s)."""
+        return abs(self.exercise.mechanism.drive.omega)
+
+    def lines(self) -> list[str]:
+        """What the command line prints."""
+        r, loads = self.reading, self.exercise.loads
+        if r is None:
+            return [f"turning moment: {len(self.gaps)} positions could not be solved "
+                    f"({self.gaps[0][1]}), so the diagram is not read"]
+        out = [f"mean driving torque {r.mean:.6g} N·m ({self.turning}); greatest "
+               f"fluctuation of energy ΔE = {r.delta_e:.6g} J (between θ = "
+               f"{self.theta(r.lowest):.2f}° and {self.theta(r.highest):.2f}°), from "
+               f"{len(r.areas)} areas"]
+        if loads.speed_fluctuation:
+            i = flywheel_inertia(r.delta_e, self.omega, loads.speed_fluctuation)
+            out.append(f"flywheel for C_s = {loads.speed_fluctuation:g} at ω = "
+                       f"{self.omega:.6g} rad/s: I = ΔE/(C_s·ω²) = {i:.6g} kg·m²")
+        if loads.flywheel:
+            cs = speed_fluctuation(r.delta_e, self.omega, loads.flywheel)
+            out.append(f"a flywheel of {loads.flywheel:g} kg·m² holds the speed within "
+                       f"C_s = ΔE/(I·ω²) = {cs:.6g}")
+        verdict = "agrees" if self.power_miss <= POWER_AGREE else "DISAGREES"
+        out.append(f"driving torque by the balance of power {verdict} at every step "
+                   f"(worst {self.power_miss:.1e} of the greatest torque)")
+        return out
+
+    def figure(self) -> Figure:
+        """The turning-moment diagram: the torque against the input's turn, its mean, the
+        energy areas shaded and each labelled with its joules."""
+        degrees = [math.degrees(a) for a in self.angles]
+        curve = Series("driving torque", tuple(
+            (d, t) if t is not None else None for d, t in zip(degrees, self.torques)) + (
+            (360.0, self.torques[0]) if self.torques[0] is not None else None,))
+        r = self.reading
+        series, fills, tags, notes = [curve], [], [], []
+        if r is not None:
+            series.append(Series(f"mean {r.mean:.4g} N·m", ((0.0, r.mean), (360.0, r.mean)),
+                                 "plot_curve_dashed"))
+            fills, tags = self._areas(r)
+            notes.append(f"ΔE = {r.delta_e:.4g} J, the greatest fluctuation of energy: the "
+                         "highest energy less the lowest, adding the areas in turn (shaded "
+                         "light where the driver gives more than the mean, dark where less)")
+        ticks = [(k * 30.0, f"{k * 30}") for k in range(13)]
+        name = self.exercise.mechanism.name
+        return draw_line_plot(
+            f"{name}: turning-moment diagram", f"input turned {self.turning} from θ = "
+            f"{self.theta(0.0):g}° (°)", "T (N·m)", series, x_range=(0.0, 360.0),
+            x_ticks=ticks, notes=notes, fills=fills, tags=tags,
+            subtitle=f"the driving torque, positive {self.turning}")
+
+    def _areas(self, r: Fluctuation):
+        """Each energy area's outline (between curve and mean) and its label."""
+        degrees = [math.degrees(a) for a in self.angles] + [360.0]
+        torques = list(self.torques) + [self.torques[0]]
+        cuts = sorted(math.degrees(c) % 360.0 for c in r.intercepts)
+        fills, tags = [], []
+        for k, a in enumerate(cuts):
+            b = cuts[k + 1] if k + 1 < len(cuts) else cuts[0] + 360.0
+            pts = [(a, r.mean)]
+            for turn in (0.0, 360.0):
+                pts += [(d + turn, t) for d, t in zip(degrees, torques) if a < d + turn < b]
+            pts.append((b, r.mean))
+            area = sum((x1 - x0) * ((y0 + y1) / 2 - r.mean)
+                       for (x0, y0), (x1, y1) in zip(pts, pts[1:])) * math.pi / 180
+            pieces = _split(pts, r.mean)
+            fills += [("triangle" if area > 0 else "triangle_alt", p) for p in pieces]
+            # The label at the middle of the larger piece, halfway to its peak.
+            big = max(pieces, key=lambda p: p[-1][0] - p[0][0])
+            peak = max(big, key=lambda p: abs(p[1] - r.mean))
+            tags.append(((big[0][0] + big[-1][0]) / 2, (peak[1] + r.mean) / 2,
+                         f"{area:+.4g} J".replace("-", "−")))
+        return fills, tags
+
+    def csv(self) -> str:
+        """One row a step: the angle, the torque and each joint force's size."""
+        names = list(self.forces)
+        rows = ["turned_deg,theta_deg,T_Nm," + ",".join(f"{n}_N" for n in names)]
+        for k, a in enumerate(self.angles):
+            t = self.torques[k]
+            cells = [f"{math.degrees(a):.6f}", f"{self.theta(a):.6f}",
+                     "" if t is None else repr(t)]
+            cells += ["" if self.forces[n][k] is None else repr(self.forces[n][k])
+                      for n in names]
+            rows.append(",".join(cells))
+        return "\n".join(rows) + "\n"
+
+
+def turning_moment(ex: Exercise, steps: int = 360,
+                   progress: Callable[[int], None] | None = None) -> TurningMoment:
+    """Solve the forces at ``steps`` equal steps round the input's turn."""
+    mech, loads = ex.mechanism, ex.loads
+    drive = mech.drive
+    sense = 1.0 if drive.omega >= 0 else -1.0
+    out = TurningMoment(ex, [], [])
+    biggest = 0.0
+    misses = []
+    for k in range(steps):
+        turned = 2 * math.pi * k / steps
+        angle = drive.angle + sense * turned
+        out.angles.append(turned)
+        try:
+            m = mech.with_drive(Drive(drive.link, angle, drive.omega, drive.alpha))
+            kin = solver.solve(m)
+            s = balance(m, kin, loads)
+            vw = power_torque(m, kin, loads)
+        except TarsimError as e:
+            out.torques.append(None)
+            out.gaps.append((angle, str(e)))
+            for values in out.forces.values():
+                values.append(None)
+            continue
+        out.torques.append(sense * s.torque)
+        biggest = max(biggest, abs(s.torque))
+        misses.append(abs(vw - s.torque))
+        for j in s.joints:
+            out.forces.setdefault(j.name, [None] * k).append(j.size)
+        if progress:
+            progress(1)
+    out.power_miss = max(misses, default=0.0) / (biggest or 1.0)
+    return out
+
+
+def _split(pts: list[tuple[float, float]], mean: float) -> list[list[tuple[float, float]]]:
+    """An area's outline cut at 360°: the part past the turn's end goes back to its start."""
+    inside = [p for p in pts if p[0] <= 360.0]
+    past = [(x - 360.0, y) for x, y in pts if x >= 360.0]
+    out = []
+    if len(inside) > 1:
+        if past:
+            inside.append((360.0, past[0][1]))
+        out.append(inside + [(inside[-1][0], mean)])
+    if len(past) > 1:
+        out.append([(0.0, mean), (0.0, past[0][1])] + past)
+    return out
+
+
+def moment_files(tm: TurningMoment, *, pdf: bool = False) -> dict[str, str | bytes]:
+    """The diagram (SVG, and PDF if asked) and its table, by file name."""
+    from ..graphics.export import svg_to
+    from ..graphics.svg import to_svg
+
+    svg = to_svg(tm.figure())
+    files: dict[str, str | bytes] = {"turning-moment.svg": svg,
+                                     "turning-moment.csv": tm.csv()}
+    if pdf:
+        files["turning-moment.pdf"] = svg_to(svg, "pdf")
+    return files

@@ -1,0 +1,89 @@
+"""The turning-moment diagram and the flywheel, against closed forms.
+
+- A torque T_m + A·sin kθ swings the energy through 2A/k (E = −(A/k)·cos kθ); the
+  trapezoid and straight-line intercepts are good to (2π/N)² relative.
+- The crank-shaper cutting 1000 N on its slow stroke: over a turn the driver does the
+  cut's work and nothing else (weight and inertia give back what they take), so the mean
+  torque is 1000 N × stroke / 2π, the stroke 2·880·tan(asin 0.36) mm by the lever's limits.
+  The cut switches on and off between samples, an error of at most the jump times a step
+  over the turn: 1e-3 at 360 steps.
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import pytest
+from click.testing import CliRunner
+
+from tarsim.constructions.errors import InputError
+from tarsim.constructions.reference.flywheel import (fluctuation, flywheel_inertia,
+                                                     speed_fluctuation)
+from tarsim.exercises.cli import cli
+from tarsim.exercises.exercise_file import load_exercise, parse_exercise
+from tarsim.exercises.turning_moment import turning_moment
+
+DATA = Path(__file__).parent / "data"
+SHAPER = DATA / "crank-shaper-forces.toml"
+
+
+@pytest.mark.parametrize("k", [1, 2, 3])
+def test_a_sine_torque_swings_the_energy_by_2a_over_k(k):
+    n = 3600
+    angles = [2 * math.pi * i / n for i in range(n)]
+    r = fluctuation(angles, [80.0 + 25.0 * math.sin(k * t + 0.3) for t in angles])
+    assert r.mean == pytest.approx(80.0, rel=1e-14)
+    assert r.delta_e == pytest.approx(2 * 25.0 / k, rel=1e-5)
+    assert len(r.intercepts) == len(r.areas) == 2 * k
+    assert sum(r.areas) == pytest.approx(0.0, abs=1e-9)
+    assert all(abs(a) == pytest.approx(2 * 25.0 / k, rel=1e-5) for a in r.areas)
+
+
+def test_the_flywheel_formulas_invert_each_other():
+    i = flywheel_inertia(300.0, 20.0, 0.02)
+    assert i == pytest.approx(300.0 / (0.02 * 400.0), rel=1e-15)
+    assert speed_fluctuation(300.0, 20.0, i) == pytest.approx(0.02, rel=1e-15)
+
+
+def test_the_shapers_mean_torque_pays_for_the_cut():
+    tm = turning_moment(load_exercise(SHAPER), 360)
+    stroke = 2 * 0.880 * math.tan(math.asin(0.36))
+    r = tm.reading
+    assert r.mean == pytest.approx(1000.0 * stroke / (2 * math.pi), rel=1e-3)
+    assert tm.power_miss < 1e-12
+    # one rise above the mean while the ram returns, one fall while it cuts
+    assert len(r.areas) == 2 and r.areas[0] == pytest.approx(-r.areas[1], rel=1e-12)
+    assert r.delta_e == pytest.approx(max(abs(a) for a in r.areas), rel=1e-12)
+
+
+def test_sweep_writes_the_turning_moment_and_sizes_the_flywheel(tmp_path):
+    out = tmp_path / "sw"
+    result = CliRunner().invoke(cli, ["sweep", str(SHAPER), "-o", str(out), "--no-pdf",
+                                      "--steps", "120"])
+    assert result.exit_code == 0, result.output
+    assert {"turning-moment.svg", "turning-moment.csv"} <= {p.name for p in out.iterdir()}
+    assert "flywheel for C_s = 0.05 at ω = 1 rad/s: I = ΔE/(C_s·ω²) = " in result.output
+    assert "balance of power agrees at every step" in result.output
+    rows = (out / "turning-moment.csv").read_text(encoding="utf-8").splitlines()
+    assert rows[0].startswith("turned_deg,theta_deg,T_Nm,F_12_N") and len(rows) == 121
+
+
+@pytest.mark.parametrize("old, new, words", [
+    ("speed_fluctuation = 0.05", "speed_fluctuation = 0.05\nflywheel = 2",
+     "give speed_fluctuation (the flywheel is found) or flywheel"),
+    ("speed_fluctuation = 0.05", "speed_fluctuation = -0.05",
+     "a coefficient of speed fluctuation must be positive"),
+    ("resist = 1000\nstroke = \"slow\"", "resist = 1000\nstroke = \"cutting\"",
+     "stroke is both, slow or fast, not 'cutting'"),
+    ("link = 5\npoint = \"B\"\nresist", "link = 3\npoint = \"A\"\nresist",
+     "a slow stroke belongs to a point on a frame guide"),
+    ("resist = 1000", "resist = 1000\nforce = [1, 0]", "in place of force = [x, y]"),
+])
+def test_bad_flywheel_and_cut_settings_are_refused_in_one_line(old, new, words):
+    text = SHAPER.read_text(encoding="utf-8")
+    assert old in text
+    with pytest.raises(InputError) as e:
+        parse_exercise(text.replace(old, new, 1), "cs.toml", "cs")
+    message = str(e.value)
+    assert "\n" not in message and message.startswith("cs.toml:") and words in message, message
