@@ -18,6 +18,7 @@ from ..constructions.cams.displacement import Displacement
 from ..constructions.cams.inversion import Layout, lay_out_profile
 from ..constructions.cams.survey import Survey, survey
 from ..constructions.errors import InputError
+from ..constructions.model import LENGTH_UNITS
 from ..constructions.narration import narrate
 from ..graphics.cam_layout_figure import draw_cam_layout
 from ..graphics.figure import Figure
@@ -55,7 +56,6 @@ class CamProfile:
     def length_text(self, v: float) -> str:
         """A length (m) in the file's unit."""
         unit = self.exercise.length_unit
-        from ..constructions.model import LENGTH_UNITS
 
         return f"{v / LENGTH_UNITS[unit]:.4g} {unit}"
 
@@ -125,8 +125,6 @@ class CamProfile:
     def figures(self) -> dict[str, Figure]:
         """The layout and its table."""
         ex = self.exercise
-        from ..constructions.model import LENGTH_UNITS
-
         notes = ["UNDERCUT: ringed where the roller cannot make the profile"] \
             if self.survey.undercut else []
         return {"profile": draw_cam_layout(self.layout, self.survey, f"{ex.name}: profile",
@@ -135,24 +133,39 @@ class CamProfile:
                 "profile-table": self.table()}
 
     def table(self) -> Figure:
-        """The pressure angle and curvature at each station."""
+        """The pressure angle (or a flat face's run) and the curvature at each station."""
         ex, f = self.exercise, self.exercise.follower
-        flat = f.kind == "flat-faced"
-        unit = ex.length_unit
-        heads = ["cam angle", f"lift ({unit})",
-                 *(["face run (" + unit + ")"] if flat else ["pressure angle"]),
+        flat, unit = f.kind == "flat-faced", ex.length_unit
+        metre = LENGTH_UNITS[unit]
+
+        def length(v: float) -> str:
+            return _signed(f"{v / metre:.4g}" if abs(v) > 1e-9 * ex.base_radius else "0")
+        heads = ["station", "cam angle",
+                 "swing (°)" if f.oscillating else f"lift ({unit})",
+                 f"face run ({unit})" if flat else "pressure angle",
                  f"ρ of the {'profile' if flat else 'pitch curve'} ({unit})"]
         rows = []
         for p, st in zip(self.layout.places, self.survey.places):
-            size = self.length_text
-            rows.append((str(p.number), [
-                f"{math.degrees(p.theta):.4g}°", size(p.lift).split()[0],
-                _signed(size(st.face_offset).split()[0]) if flat
-                else _signed(f"{math.degrees(st.pressure_angle):.2f}") + "°",
-                "∞" if math.isinf(st.rho) else size(st.rho).split()[0]]))
-        notes = ["ρ < 0: concave there. Pressure angle signed as tan φ = (y′ − σe)/(s₀ + y)."]
-        return draw_train_table(f"{ex.name}: pressure angle and curvature", heads, rows,
-                                notes=notes)
+            lift = (f"{math.degrees(p.lift / f.arm):.4g}" if f.oscillating else length(p.lift))
+            rows.append(("", [str(p.number), f"{math.degrees(p.theta):.4g}°", lift,
+                              length(st.face_offset) if flat
+                              else _signed(f"{math.degrees(st.pressure_angle):.2f}") + "°",
+                              "∞" if math.isinf(st.rho) else length(st.rho)]))
+        notes = []
+        if any(st.rho < 0 for st in self.survey.places):
+            notes.append("ρ < 0: the curve is concave there.")
+        if flat:
+            notes.append("The face run is where the face touches, from the follower's axis: "
+                         "σy′, σ = +1 for a counter-clockwise cam.")
+        elif f.oscillating:
+            notes.append("The pressure angle is between the profile's normal and the roller's "
+                         "path, square to the arm.")
+        else:
+            notes.append("The pressure angle is signed as tan φ = (y′ − σe)/(s₀ + y): σ = +1 "
+                         "for a counter-clockwise cam, e the offset, s₀ = √(R_p² − e²).")
+        notes.append("At a join of two segments the values are the second segment's.")
+        what = "face run" if flat else "pressure angle"
+        return draw_train_table(f"{ex.name}: {what} and curvature", heads, rows, notes=notes)
 
 
 def _signed(text: str) -> str:

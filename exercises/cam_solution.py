@@ -21,7 +21,7 @@ from ..constructions.cams.displacement import Displacement, draw_displacement
 from ..constructions.narration import narrate
 from ..constructions.reference.cam_laws import jerk_peak, motion, peaks
 from ..graphics.displacement_figure import draw_displacement_figure
-from ..graphics.plot import Series, draw_line_plot
+from ..graphics.plot import PlotMark, Series, draw_line_plot
 from ..graphics.svg import to_svg
 from .cam_file import CamExercise
 from .cam_layout import CamProfile, refuse_undercut
@@ -166,29 +166,54 @@ class CamSolution:
 
     @property
     def figures(self) -> dict[str, Any]:
-        """The displacement, velocity and acceleration diagrams against cam angle."""
+        """The displacement, velocity, acceleration (and jerk) diagrams against cam angle,
+        each segment's peaks marked; for a swinging arm, its angular velocity and
+        acceleration. Then the profile and its table."""
         ex = self.exercise
-        unit, size = ex.length_unit, 1.0 / _metres(ex.length_unit)
-        xs, ys, vs, accs, _ = ([v * size for v in c] if k else c
-                               for k, c in enumerate(self.curves))
+        unit = ex.length_unit
+        xs, ys, vs, accs, jerks = self.curves
         ticks = [(float(d), f"{d}") for d in range(0, 361, 30)]
         name = ex.name
+        arm = ex.follower.arm if ex.follower.oscillating else 0.0
+        speed = (f"the cam at {abs(ex.omega) * 60 / (2 * math.pi):.4g} rpm"
+                 if ex.speed_unit == "rpm" else f"the cam at {abs(ex.omega):.4g} rad/s")
+        speed += ", clockwise" if ex.omega < 0 else ", counter-clockwise"
 
-        def plot(title, label, values, notes=()):
+        def plot(title, label, values, scale, notes=()):
+            scaled = [v * scale for v in values]
             return draw_line_plot(f"{name}: {title}", "cam angle θ (°)", label,
-                                  [Series(title, tuple(zip(xs, values)))],
-                                  x_range=(0.0, 360.0), x_ticks=ticks, notes=notes)
+                                  [Series(title, tuple(zip(xs, scaled)))],
+                                  self._peak_marks(xs, scaled), x_range=(0.0, 360.0),
+                                  x_ticks=ticks, notes=notes, subtitle=speed,
+                                  mark_legend="each segment's peak")
         jumps = self.jumps
         spikes = [f"ÿ jumps at θ = {', '.join(f'{j:.4g}°' for j in jumps)}: the jerk is "
                   "infinite there, which no curve can draw"] if jumps else []
-        curve = [(math.radians(x), y) for x, y in zip(self.curves[0], self.curves[1])]
+        curve = [(math.radians(x), y) for x, y in zip(xs, ys)]
+        motion_plots = ({"velocity": plot("the arm's angular velocity", "ω (rad/s)", vs,
+                                          1 / arm),
+                         "acceleration": plot("the arm's angular acceleration", "α (rad/s²)",
+                                              accs, 1 / arm)} if arm else
+                        {"velocity": plot("velocity", f"ẏ ({unit}/s)", vs,
+                                          1.0 / _metres(unit)),
+                         "acceleration": plot("acceleration", "ÿ (m/s²)", accs, 1.0)})
         return {"displacement": draw_displacement_figure(
-                    self.diagram, curve, f"{name}: displacement", unit, _metres(unit)),
-                "velocity": plot("velocity", f"ẏ ({unit}/s)", vs),
-                "acceleration": plot("acceleration", f"ÿ ({unit}/s²)", accs)
-                } | ({"jerk": plot("jerk", "jerk (m/s³)", self.curves[4], spikes)}
-                     if ex.jerk else {}
-                     ) | self.profile.figures()
+                    self.diagram, curve, f"{name}: displacement", unit, _metres(unit),
+                    arm=arm)} | motion_plots | (
+            {"jerk": plot("jerk", "jerk (m/s³)", jerks, 1.0, spikes)} if ex.jerk else {}
+        ) | self.profile.figures()
+
+    def _peak_marks(self, xs: list[float], values: list[float]) -> list[PlotMark]:
+        """Each moving segment's greatest value in size, marked where it falls."""
+        marks, start = [], 0.0
+        for s in self.exercise.segments:
+            end = start + math.degrees(s.angle)
+            if s.kind != "dwell":
+                inside = [(abs(v), x, v) for x, v in zip(xs, values) if start <= x <= end]
+                _, x, v = max(inside)
+                marks.append(PlotMark(x, v, f"{v:.4g}".replace("-", "−")))
+            start = end
+        return marks
 
     @property
     def jumps(self) -> list[float]:

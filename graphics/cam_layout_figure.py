@@ -4,7 +4,7 @@ To scale about the cam's centre O: the base circle, the prime, offset or pivot c
 each station's follower line (or arm) numbered at its rest point, the follower drawn at
 each station (the knife edge's point, the roller's circle, a stretch of the face), the
 pitch curve and, inked heavy, the profile. The cam's turning is shown by an arrow at O,
-the steepest pressure angle by the normal and the follower's motion at that station, and
+the steepest pressure angle by the normal n and the follower's path there, and
 any undercut station by a ring.
 """
 
@@ -17,11 +17,16 @@ from ..constructions.cams.inversion import Layout
 from ..constructions.cams.survey import Survey
 from .figure import Circle, Figure, Path, Text
 from .scales import draw_caption, nice_per_cm
-from .symbols import draw_arrow, draw_turning_arrow
+from .symbols import draw_arrow, draw_turning_arrow, mark_angle
 
 __all__ = ["draw_cam_layout"]
 
 _ROOM = 150.0          # paper (mm) the cam's greatest reach across is fitted to
+
+_CIRCLE_STYLE = {"base": "dimension", "prime": "reference", "offset": "reference",
+                 "pivot": "kennedy"}
+"""How each circle about the cam's centre is drawn: the base circle thin and solid, the
+others dashed, the pivot circle apart from the prime circle its arms reach."""
 
 
 def draw_cam_layout(layout: Layout, s: Survey, title: str, unit: str, metre: float,
@@ -40,7 +45,7 @@ def draw_cam_layout(layout: Layout, s: Survey, title: str, unit: str, metre: flo
     fig = Figure(0.0, 0.0, title=title)
     o = (0.0, 0.0)
     for name, ref in layout.circles.items():
-        fig.add(Circle(o, c.output(ref).radius * k, "gauge" if name == "base" else "reference"))
+        fig.add(Circle(o, c.output(ref).radius * k, _CIRCLE_STYLE[name]))
     for p, st in zip(layout.places, s.places):
         rest, trace = paper(c.output(p.rest).xy), paper(c.output(p.trace).xy)
         past = 0.0 if f.oscillating else f.radius * k + 2.0
@@ -52,10 +57,15 @@ def draw_cam_layout(layout: Layout, s: Survey, title: str, unit: str, metre: flo
                 paper(c.output(p.axis).anchor())
         fig.add(Path((start, _beyond(start, trace, past)), "construction"))
         fig.add(Circle(rest, 0.45, "dot"))
-        tag = _beyond(o, start, 3.5) if f.oscillating else _beyond(start, trace, past + 2.6)
+        if f.oscillating:
+            tag = _beyond(o, start, 3.5)
+        elif abs(p.theta - s.steepest.theta) < 1e-9 and abs(s.steepest.pressure_angle) > 1e-9:
+            tag = _beyond(trace, rest, 3.0)       # the pressure angle's arrows run outside
+        else:
+            tag = _beyond(start, trace, past + 2.6)
         fig.add(Text((tag[0], tag[1] + 1.0), str(p.number), 2.6, "middle", False))
         if f.kind == "roller":
-            fig.add(Circle(trace, f.radius * k, "compass"))
+            fig.add(Circle(trace, f.radius * k, "node_circle"))
         elif f.kind == "flat-faced":
             # The face from its foot past the touch, a few mm beyond each.
             run = abs(st.face_offset) * k
@@ -66,11 +76,11 @@ def draw_cam_layout(layout: Layout, s: Survey, title: str, unit: str, metre: flo
                 d = (along[0], -along[1])
             fig.add(Path(((trace[0] - 4.0 * d[0], trace[1] - 4.0 * d[1]),
                           (trace[0] + (run + 4.0) * d[0], trace[1] + (run + 4.0) * d[1])),
-                         "compass"))
+                         "node_circle"))
         fig.add(Circle(trace, 0.55, "dot"))
     ring = [paper(st.pitch) for st in s.stations]
     if f.kind != "flat-faced":
-        fig.add(Path(tuple(ring), "reference" if f.kind == "roller" else "link", closed=True))
+        fig.add(Path(tuple(ring), "normal" if f.kind == "roller" else "link", closed=True))
     fig.add(Path(tuple(paper(st.profile) for st in s.stations), "link", closed=True))
     fig.add(Circle(o, 0.8, "dot"))
     fig.add(Text((2.0, 4.5), "O", 3.0, "start", False))
@@ -84,20 +94,19 @@ def draw_cam_layout(layout: Layout, s: Survey, title: str, unit: str, metre: flo
     for st in s.undercut[:: max(1, len(s.undercut) // 6)]:
         fig.add(Circle(paper(st.profile), 2.2, "normal"))
     legend = [("link", "profile" + (" (the pitch curve)" if f.kind == "knife-edge" else "")),
-              ("gauge", "base circle")]
-    dashed = [w for w, on in (("prime circle", f.kind == "roller"),
-                              ("offset circle", bool(f.offset) and f.kind != "flat-faced"),
-                              ("pivot circle", f.oscillating),
-                              ("pitch curve", f.kind == "roller")) if on]
-    if dashed:
-        legend.append(("reference", ", ".join(dashed)))
+              ("dimension", "base circle")]
+    if f.kind == "roller":
+        legend.append(("normal", "pitch curve"))
+    for name in layout.circles:
+        if name != "base":
+            legend.append((_CIRCLE_STYLE[name], f"{name} circle"))
     legend.append(("construction", "the arm at each station" if f.oscillating
                    else "the follower's line at each station"))
     if f.kind != "knife-edge":
-        legend.append(("compass", "the roller at each station" if f.kind == "roller"
+        legend.append(("node_circle", "the roller at each station" if f.kind == "roller"
                        else "the face at each station"))
-    draw_caption(fig, title, ["the cam held still, the follower turned round it the other "
-                              "way; stations numbered"], per_cm=per_cm, unit=unit,
+    draw_caption(fig, title, ["the cam held still, the follower turned the other way"],
+                 per_cm=per_cm, unit=unit,
                  legend=legend, notes=notes)
     return fig
 
@@ -111,12 +120,20 @@ def _mark_steepest(fig: Figure, s: Survey, paper, k: float) -> None:
     at = paper(st.pitch)
     n, u = (st.normal[0], -st.normal[1]), (st.motion[0], -st.motion[1])
     length = 14.0
-    draw_arrow(fig, at, (at[0] + length * n[0], at[1] + length * n[1]), "arrow")
-    draw_arrow(fig, at, (at[0] + length * u[0], at[1] + length * u[1]), "dimension")
-    right = n[0] >= 0
-    fig.add(Text((at[0] + length * n[0] + (1.5 if right else -1.5), at[1] + length * n[1]),
-                 f"φ max = {abs(math.degrees(st.pressure_angle)):.1f}° at θ = "
-                 f"{math.degrees(st.theta):.0f}°", 2.8, "start" if right else "end", False))
+    tip_n = (at[0] + length * n[0], at[1] + length * n[1])
+    tip_u = (at[0] + length * u[0], at[1] + length * u[1])
+    draw_arrow(fig, at, tip_n, "arrow")
+    draw_arrow(fig, at, tip_u, "dimension")
+    fig.add(Text((tip_n[0] + 2.4 * n[0], tip_n[1] + 2.4 * n[1] + 1.0), "n", 2.8, "middle"))
+    a_n, a_u = math.atan2(-n[1], n[0]), math.atan2(-u[1], u[0])
+    sweep = math.remainder(a_n - a_u, 2 * math.pi)
+    mid = mark_angle(fig, at, 9.0, min(a_u, a_u + sweep), max(a_u, a_u + sweep))
+    # The reading beyond the arc, on the side away from the cam.
+    out = _unit((mid[0] - at[0], mid[1] - at[1]))
+    spot = (at[0] + (length + 4.0) * out[0], at[1] + (length + 4.0) * out[1])
+    fig.add(Text(spot, f"φ max = {abs(math.degrees(st.pressure_angle)):.1f}° at θ = "
+                 f"{math.degrees(st.theta):.0f}°", 2.8, "start" if out[0] >= 0 else "end",
+                 False))
 
 
 def _unit(v: tuple[float, float]) -> tuple[float, float]:

@@ -14,16 +14,18 @@ import math
 from ..constructions.cams.displacement import Displacement
 from .figure import Circle, Figure, Path, Text, arc_points
 from .scales import draw_caption, nice_per_cm
+from .symbols import draw_dimension
 
 __all__ = ["draw_displacement_figure"]
 
-_ROOM = (230.0, 80.0)      # paper (mm) a turn and the greatest lift are fitted to
+_ROOM = (165.0, 60.0)      # paper (mm) a turn and the greatest lift are fitted to
 
 
 def draw_displacement_figure(d: Displacement, curve: list[tuple[float, float]], title: str,
-                             unit: str, metre: float) -> Figure:
+                             unit: str, metre: float, *, arm: float = 0.0) -> Figure:
     """The diagram ``d`` with the smooth ``curve`` (cam angle in rad, lift in m) through its
-    points; lengths stated in ``unit`` (``metre`` metres each)."""
+    points; lengths stated in ``unit`` (``metre`` metres each). For a swinging ``arm`` the
+    lift is the arc its end swings through, and the swing is stated in degrees too."""
     c = d.construction
     top = max(y for _, y in curve) or 1.0
     width = 2 * math.pi * d.per_rad
@@ -36,30 +38,59 @@ def draw_displacement_figure(d: Displacement, curve: list[tuple[float, float]], 
     fig = Figure(0.0, 0.0, title=title)
     right = width * k
     fig.add(Path(((0.0, 0.0), (right, 0.0)), "link"))            # the base line
+    # The tick labels go below any circle of the construction drawn about the base line.
+    below = max([r for _, _, r in _circles(d, paper) if r > 0] + [0.0])
     for deg in range(0, 361, 30):
         x = math.radians(deg) * d.per_rad * k
         fig.add(Path(((x, 0.0), (x, 1.5)), "dimension"))
-        fig.add(Text((x, 4.5), f"{deg}°", 2.8, "middle", False))
+        fig.add(Text((x, max(4.5, below + 3.5)), f"{deg}°", 2.8, "middle", False))
     for start, end in d.strokes:
         fig.add(Path((paper(c.output(start).xy), paper(c.output(end).xy)), "construction"))
-    for centre, first, sweep in d.arcs:
-        cx, cy = paper(c.output(centre).xy)
-        fx, fy = paper(c.output(first).xy)
-        r = math.hypot(fx - cx, fy - cy)
-        start = math.atan2(-(fy - cy), fx - cx)
+    for (cx, cy), r, start, sweep in _arcs(d, paper):
         fig.add(Path(tuple(arc_points((cx, cy), r, start, sweep)), "construction"))
     for segment in d.curves:
+        ys = [paper(c.output(ref).xy)[1] for _, ref in segment]
         for i, (_, ref) in enumerate(segment):
             x, y = paper(c.output(ref).xy)
             fig.add(Path(((x, 0.0), (x, y)), "reference"))          # its ordinate
             fig.add(Circle((x, y), 0.6, "dot"))
             if 0 < i < len(segment) - 1:
-                fig.add(Text((x + 1.6, y - 1.8), str(i), 2.6, "start", False))
+                # Above the curve, on the side it comes down from: clear of the curve, the
+                # ordinate, and the projection that runs in at the point's own height.
+                rising = ys[i + 1] < ys[i - 1]               # paper y runs down
+                fig.add(Text((x - 1.3 if rising else x + 1.3, y - 2.3), str(i), 2.6,
+                             "end" if rising else "start", False))
+    if top > 0:
+        mid = draw_dimension(fig, (right, 0.0), (right, -top * k), (1.0, 0.0), 6.0)
+        fig.add(Text((mid[0] + 1.5, mid[1]), f"{top / metre:.4g} {unit}", 2.8, "start",
+                     False))
+        if arm:
+            fig.add(Text((mid[0] + 1.5, mid[1] + 4.0), f"(a swing of "
+                         f"{math.degrees(top / arm):.4g}°)", 2.8, "start", False))
     fig.add(Path(tuple(paper((t * d.per_rad, y)) for t, y in curve), "vector_result"))
-    draw_caption(fig, title, ["cam angle across, the follower's lift up; the construction "
-                              "of each segment inked thin, its points numbered"],
+    draw_caption(fig, title, ["cam angle across, lift up; each segment's construction"
+                              if not arm else "cam angle across, the arc the arm's end "
+                              f"swings up ({arm / metre:g} {unit} × the swing)"],
                  per_cm=per_cm, unit=unit,
                  legend=(("vector_result", "displacement"), ("construction",
                                                              "construction lines"),
                          ("reference", "ordinates")))
     return fig
+
+
+def _arcs(d: Displacement, paper):
+    """Each inked arc on paper: centre, radius, start angle and sweep."""
+    c = d.construction
+    out = []
+    for centre, first, sweep in d.arcs:
+        cx, cy = paper(c.output(centre).xy)
+        fx, fy = paper(c.output(first).xy)
+        out.append(((cx, cy), math.hypot(fx - cx, fy - cy), math.atan2(-(fy - cy), fx - cx),
+                    sweep))
+    return out
+
+
+def _circles(d: Displacement, paper):
+    """The arcs drawn about a point of the base line: how far below it each reaches."""
+    return [(cx, cy, r + cy) for (cx, cy), r, _, sweep in _arcs(d, paper)
+            if abs(cy) < 1e-9 and abs(sweep) > math.pi]

@@ -128,6 +128,25 @@ def _heading(text: str) -> Text:
                 sub=m.group(2), tail=text[m.end(2):])
 
 
+_LEGEND_ROW = 160.0
+"""The widest a legend's row runs (mm) before it wraps, unless the drawing is wider."""
+
+
+def _legend_rows(legend: Sequence[tuple[str, str]], room: float
+                 ) -> list[list[tuple[str, str]]]:
+    """The legend's samples in rows no wider than ``room`` (one at least in each)."""
+    rows: list[list[tuple[str, str]]] = []
+    used = room
+    for item in legend:
+        w = 18.0 + text_width(item[1], 2.8)
+        if used + w > room + 6.0:
+            rows.append([])
+            used = 0.0
+        rows[-1].append(item)
+        used += w
+    return rows
+
+
 def draw_caption(fig: Figure, heading: str, lines: Sequence[str], *, per_cm: float, unit: str,
                  legend: Sequence[tuple[str, str]] = (), notes: Sequence[str] = (),
                  margin: float = 8.0, scale_name: str = "Scale",
@@ -148,7 +167,9 @@ def draw_caption(fig: Figure, heading: str, lines: Sequence[str], *, per_cm: flo
     left = max([head.width] + [text_width(t, 3.2) for t in lines])
     right = max([text_width(t, 3.2) for t in texts]
                 + [bar_room(per, u) for _, per, u in scales])
-    legend_w = sum(18.0 + text_width(name, 2.8) for _, name in legend)
+    legend_w = max((sum(18.0 + text_width(name, 2.8) for _, name in row)
+                    for row in _legend_rows(legend, max(x1 - x0, left + right + 8.0,
+                                                        _LEGEND_ROW))), default=0.0)
     # Notes wrap to the width the rest needs (a long note must not widen the page and so
     # shrink the drawing), but never narrower than a column that reads well.
     width = max(x1 - x0, left + right + 8.0, legend_w) + 2 * margin
@@ -167,9 +188,9 @@ def draw_caption(fig: Figure, heading: str, lines: Sequence[str], *, per_cm: flo
         fig.add(Text((bar_x, top + 3.0 + 13.0 * k), text, 3.2, "start", italic=False))
         draw_scale_bar(fig, (bar_x, top + 8.0 + 13.0 * k), per, u)
     y = max(y + 5.2, top + 15.0 + 13.0 * (len(scales) - 1))
-    if legend:
+    for row in _legend_rows(legend, width - 2 * margin):
         x = margin
-        for style, name in legend:
+        for style, name in row:
             fig.add(Path(((x, y), (x + 10.0, y)), style))
             fig.add(Text((x + 12.0, y), name, 2.8, "start", italic=False))
             x += 18.0 + text_width(name, 2.8)

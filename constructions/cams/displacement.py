@@ -182,13 +182,19 @@ class _Segment:
                  ) -> tuple[Ref, list[Ref]]:
         """A parabola's heights on the ordinate at (x, y), its vertex there: ``rise`` divided
         in the ratio 1 : 3 : 5 … by parallels from a line marked at 1, 4, 9 … equal steps
-        (``m`` of them), up (``sign`` +1) or down. Returns the foot and the m divisions."""
-        foot = self.give(f"h{part}:O", g.Point(x, y), said=phrase(
-            "cam.parabolic", k=self.k, half="first" if part == 0 else "second", m=m))
+        (``m`` of them), up (``sign`` +1) or down. The marked line leans into the segment,
+        clear of its neighbours' constructions. Returns the foot and the m divisions."""
+        words = dict(k=self.k, half="first" if part == 0 else "second", m=m,
+                     where="start" if part == 0 else "end",
+                     way="up from the foot" if sign > 0 else "down from the top")
+        said = (phrase("cam.blend", rise=f"{abs(rise) * 1e3:.4g} mm", **words)
+                if self.s.law == "modified uniform velocity" else phrase("cam.parabolic", **words))
+        foot = self.give(f"h{part}:O", g.Point(x, y), said=said)
         top = self.give(f"h{part}:M", g.Point(x, y + sign * rise))
         ordinate = self.act(f"h{part}:ord", "line_through", foot, top)
         step = abs(rise) / (m * m)
-        ray_to = self.give(f"h{part}:R", g.Point(x - sign * abs(rise), y + sign * 0.5 * rise))
+        inward = 1.0 if part == 0 else -1.0
+        ray_to = self.give(f"h{part}:R", g.Point(x + inward * abs(rise), y + sign * 0.5 * rise))
         ray = self.act(f"h{part}:ray", "line_through", foot, ray_to, kind=Kind.LINE)
         marks = [self.act(f"h{part}:m{j}", "lay_off", foot, ray, length=j * j * step)
                  for j in range(1, m + 1)]

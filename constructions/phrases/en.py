@@ -145,9 +145,13 @@ PHRASES: dict[str, str] = {
                     "at the segment's start and divide it into {n} equal arcs; project each "
                     "division across to its ordinate.",
     "cam.parabolic": "Segment {k} is uniform acceleration and retardation: for its {half} half, "
-                     "divide half the lift on the ordinate in the ratio 1 : 3 : 5 … by "
-                     "parallels from a line marked at 1, 4, 9 … equal steps ({m} of them), and "
-                     "project each division across to its ordinate.",
+                     "divide half the lift on its {where} ordinate in the ratio 1 : 3 : 5 … "
+                     "{way} by parallels from a line marked at 1, 4, 9 … equal steps ({m} of "
+                     "them), and project each division across to its ordinate.",
+    "cam.blend": "Segment {k} is modified uniform velocity: for its {half} blend, divide its "
+                 "share of the lift, {rise}, on its {where} ordinate in the ratio 1 : 3 : 5 … "
+                 "{way} by parallels from a line marked at 1, 4, 9 … equal steps ({m} of "
+                 "them), and project each division across to its ordinate.",
     "cam.modified": "Segment {k}: join the ends of its two parabolas by a straight line, the "
                     "uniform velocity between the blends; the ordinates between cut it.",
     "cam.cycloidal": "Segment {k} is cycloidal: about its start draw a circle of radius lift/2π "

@@ -77,7 +77,8 @@ def follower_motion(segments, theta: float) -> Motion:
     theta %= 2 * math.pi
     lift, start = 0.0, 0.0
     for s in segments:
-        if theta <= start + s.angle or s is segments[-1]:
+        # At a join (to rounding) the later segment's: its y″ where y″ jumps.
+        if theta < start + s.angle - 1e-12 or s is segments[-1]:
             if s.kind == "dwell":
                 return Motion(lift, 0.0, 0.0, 0.0)
             m = motion(s.law, s.lift, s.angle, theta - start, rise=s.kind == "rise",
