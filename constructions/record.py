@@ -58,6 +58,8 @@ class Panel(StrEnum):
     CIRCLE = "circle"
     VELOCITY = "velocity"
     ACCELERATION = "acceleration"
+    FORCE = "force"
+    COUPLE = "couple"
 
 
 class Kind(StrEnum):

@@ -18,15 +18,16 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 import cairosvg  # noqa: E402
 
 import tarsim  # noqa: E402
-from tarsim.exercises.catalog import bundled, bundled_cams, bundled_trains  # noqa: E402
+from tarsim.exercises.catalog import (bundled, bundled_balancing, bundled_cams,  # noqa: E402
+                                      bundled_trains)
 from tarsim.graphics.svg import to_svg  # noqa: E402
 
 GALLERY = Path(__file__).resolve().parent / "gallery"
 WIDTH = 1000
 """Pixels across a PNG, at most: enough to read the labels, small enough to keep."""
 
-ORDER = ("klein", "worked", "V_", "centres", "limits", "mechanism", "mesh", "kutzbach", "table",
-         "train-value", "profile")
+ORDER = ("klein", "worked", "V_", "centres", "limits", "mechanism", "mesh", "kutzbach",
+         "force-polygon", "table", "train-value", "profile", "primary-force", "forces")
 """The kinds of figure in the order one is taken as an exercise's main figure."""
 
 
@@ -42,7 +43,7 @@ def main_figure(figures: dict):
 def main() -> None:
     """Solve every bundled exercise and write its main figure as docs/gallery/<id>.png."""
     GALLERY.mkdir(exist_ok=True)
-    for name in [*bundled(), *bundled_trains(), *bundled_cams()]:
+    for name in [*bundled(), *bundled_trains(), *bundled_cams(), *bundled_balancing()]:
         stem, figure = main_figure(tarsim.solve(tarsim.load(name)).figures)
         svg = to_svg(figure)
         width_mm = figure.width

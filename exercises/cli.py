@@ -69,15 +69,18 @@ def _mechanism(source: str, angle: float | None) -> Mechanism:
 
 
 def _not_a_train(source: str) -> None:
-    """Refuse a gear train or a cam where a command draws or solves linkages, in one line."""
+    """Refuse a gear train, a cam or a rotor where a command draws or solves linkages, in one
+    line."""
     from .cam_file import is_cam
     from .catalog import resolve
     from .mechanism_file import read_source, read_toml
+    from .rotor_file import is_balance
     from .train_file import is_train
 
     path = resolve(source)
     data = read_toml(read_source(path), str(path))
-    for test, what in ((is_train, "a gear train"), (is_cam, "a cam")):
+    for test, what in ((is_train, "a gear train"), (is_cam, "a cam"),
+                       (is_balance, "a balancing exercise")):
         if test(data):
             raise InputError(f"{source} is {what}: `tarsim solve {source}` solves it; this "
                              "command is for linkages")
@@ -144,7 +147,8 @@ def draw(source, output, angle, paper):
     slider blocks on guides, link numbers, the input's θ and ω, and a scale bar
     that measures true on the printed PDF. A gear train is drawn in side view;
     a cam as its profile laid out by inversion (an undercut one with the
-    trouble ringed).
+    trouble ringed); a rotor as its space diagram (an engine as its primary
+    force polygon, or a single cylinder's forces against crank angle).
 
     \b
     Example:
@@ -160,9 +164,18 @@ def draw(source, output, angle, paper):
     from ..graphics.paper import on_sheet, paper as sheet, room
     from .cam_file import CamExercise
     from .catalog import load
+    from .rotor_file import BalanceExercise
     from .train_file import TrainExercise
 
     loaded = load(source)
+    if isinstance(loaded, BalanceExercise):
+        from .balance_solution import solve_balance
+
+        if angle is not None:
+            raise InputError("a balancing exercise has no input angle: leave out --angle")
+        fig = next(iter(solve_balance(loaded).figures.values()))
+        click.echo(f"wrote {write_figure(on_sheet(fig, sheet(paper)), output)}")
+        return
     if isinstance(loaded, CamExercise):
         from .cam_solution import solve_cam
 
@@ -263,7 +276,10 @@ def solve(source, out_dir, angle, pdf, paper, allow_undercut):
     the follower's displacement diagram by construction, its velocity and
     acceleration diagrams, and the profile laid out by inversion (profile,
     with the pressure angle and curvature at each station in profile-table);
-    a roller that undercuts the cam is refused unless --allow-undercut.
+    a roller that undercuts the cam is refused unless --allow-undercut. A
+    balancing file ([rotor] or [engine]) gets its force polygon (and couple
+    polygon for two planes) closed on the balancing masses, or an engine's
+    primary and secondary forces and couples.
 
     \b
     Example:
@@ -273,6 +289,7 @@ def solve(source, out_dir, angle, pdf, paper, allow_undercut):
       tarsim solve whitworth --paper A3          # the worked page on one sheet
       tarsim solve planetary-q1                  # the notes' planetary Q1
       tarsim solve eccentric-flat-face           # the notes' §3.20 cam
+      tarsim solve notes-example-1               # 001 ch. 7 Example 1, corrected
 
     The exit status is 3 if any constructed number disagrees with the analytic
     one beyond the tolerance its conditioning allows (the files are written all
@@ -280,6 +297,7 @@ def solve(source, out_dir, angle, pdf, paper, allow_undercut):
     """
     from .cam_file import CamExercise
     from .catalog import load
+    from .rotor_file import BalanceExercise
     from .solution_files import answer_line, solve_worked
     from .train_file import TrainExercise
     from ..graphics.export import cairo_missing, output_folder
@@ -289,6 +307,13 @@ def solve(source, out_dir, angle, pdf, paper, allow_undercut):
         if angle is not None:
             raise InputError("a gear train has no input angle: leave out --angle")
         return _solve_train(loaded, out_dir, pdf)
+    if isinstance(loaded, BalanceExercise):
+        if angle is not None:
+            raise InputError("a balancing exercise has no input angle: leave out --angle "
+                             "(an engine's crank angle is its [engine] at)")
+        from .balance_solution import solve_balance
+
+        return _solve_other(loaded, solve_balance, out_dir, pdf)
     if isinstance(loaded, CamExercise):
         if angle is not None:
             raise InputError("a cam is solved over its whole turn: leave out --angle")
@@ -528,10 +553,11 @@ def list_():
     import tomllib
 
     from .cam_file import CamExercise
-    from .catalog import bundled, bundled_cams, bundled_trains, load
+    from .catalog import bundled, bundled_balancing, bundled_cams, bundled_trains, load
+    from .rotor_file import BalanceExercise
     from .train_file import TrainExercise, ask_symbol
 
-    found = {**bundled(), **bundled_trains(), **bundled_cams()}
+    found = {**bundled(), **bundled_trains(), **bundled_cams(), **bundled_balancing()}
     pad = max(map(len, found), default=0) + 2
     for name, path in found.items():
         try:
@@ -541,13 +567,24 @@ def list_():
             click.echo(f"{name:<{pad}}(cannot be read: {e})")
             continue
         train, cam = isinstance(ex, TrainExercise), isinstance(ex, CamExercise)
-        click.echo(f"{name:<{pad}}{ex.name if train or cam else ex.mechanism.name}")
+        rotor = isinstance(ex, BalanceExercise)
+        click.echo(f"{name:<{pad}}{ex.name if train or cam or rotor else ex.mechanism.name}")
         if source:
             click.echo(f"{'':<{pad}}from {source}")
         asks = (", ".join(ask_symbol(q) for q in ex.asks) if train else
                 "the follower's motion diagrams and the profile by inversion" if cam
-                else _asks(ex))
+                else _balance_asks(ex) if rotor else _asks(ex))
         click.echo(f"{'':<{pad}}asks: {asks}")
+
+
+def _balance_asks(ex) -> str:
+    """What a balancing exercise finds, in a few words."""
+    if ex.rotor is not None:
+        return ("the balancing mass by the force polygon" if len(ex.rotor.planes) == 1 else
+                "the two balancing masses by the couple and force polygons")
+    if len(ex.engine.cranks) == 1:
+        return "the primary and secondary forces, partly balanced"
+    return "the primary and secondary forces and couples by their polygons"
 
 
 def _asks(ex) -> str:

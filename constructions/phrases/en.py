@@ -182,6 +182,19 @@ PHRASES: dict[str, str] = {
                           "inner envelope).",
     "cam.profile.flat-faced": "Draw the profile as the smooth curve inside every face line, "
                               "touching each (the envelope of the face lines).",
+    "balance.space": "Draw the end view: from the shaft's centre O a radial line to each "
+                     "mass, at its angle.",
+    "balance.couple": "The couple polygon, plane {a} the reference: lay off each mᵢrᵢlᵢ, lᵢ "
+                      "from {a}, head to tail, each parallel to its mass's radial line (the "
+                      "other way where lᵢ < 0).",
+    "balance.force": "The force polygon: lay off each mᵢrᵢ head to tail, each parallel to its "
+                     "mass's radial line (ω² is common to all, so it is left out).",
+    "balance.close": "Close the polygon from its last tip back to its start: the closing side "
+                     "is plane {plane}'s balancing vector, the resultant turned through 180°.",
+    "balance.cranks": "Draw the end view of the cranks: from the shaft's centre O each "
+                      "crank's line at θᵢ, and the secondary (direct) cranks at 2θᵢ.",
+    "balance.engine": "The {kind} polygon: lay off each cylinder's vector along its crank at "
+                      "{order}, head to tail.",
     "gears.locked": "Row 1: lock the whole train, {arm} with it, and turn it +1 "
                     "(counter-clockwise): every member turns +1.",
     "gears.held": "Row 2: hold {arm} and turn {fixed}, the fixed member, −1 turn:",

@@ -7,7 +7,8 @@ from pathlib import Path
 
 from ...constructions.errors import InputError
 
-__all__ = ["bundled", "bundled_trains", "bundled_cams", "resolve", "load"]
+__all__ = ["bundled", "bundled_trains", "bundled_cams", "bundled_balancing", "resolve",
+           "load"]
 
 
 def bundled() -> dict[str, Path]:
@@ -23,6 +24,11 @@ def bundled_trains() -> dict[str, Path]:
 def bundled_cams() -> dict[str, Path]:
     """Map each bundled cam's id to its path (the catalog's cams/ folder)."""
     return _tomls(resources.files(__name__) / "cams")
+
+
+def bundled_balancing() -> dict[str, Path]:
+    """Map each bundled rotor or engine's id to its path (the catalog's balancing/ folder)."""
+    return _tomls(resources.files(__name__) / "balancing")
 
 
 def _tomls(root) -> dict[str, Path]:
@@ -41,7 +47,7 @@ def resolve(name: str) -> Path:
     path = Path(name)
     if path.is_file():
         return path
-    ids = {**bundled(), **bundled_trains(), **bundled_cams()}
+    ids = {**bundled(), **bundled_trains(), **bundled_cams(), **bundled_balancing()}
     if name in ids:
         return ids[name]
     if path.is_dir():
@@ -64,7 +70,9 @@ def load(source: str | Path):
     An exercise file is a mechanism file with an ``[ask]`` table (see the
     README); without one it asks for every centre and each link's ω. A file that
     lists ``[[gear]]`` tables is a gear train (a :class:`~..train_file.TrainExercise`), one
-    with a ``[cam]`` table a cam (a :class:`~..cam_file.CamExercise`).
+    with a ``[cam]`` table a cam (a :class:`~..cam_file.CamExercise`), one with a
+    ``[rotor]`` or ``[engine]`` table a balancing exercise
+    (a :class:`~..rotor_file.BalanceExercise`).
     Its id is the file's stem, or the bundled id.
 
     Raises
@@ -76,6 +84,7 @@ def load(source: str | Path):
     from ..cam_file import is_cam, parse_cam
     from ..exercise_file import load_exercise
     from ..mechanism_file import read_source, read_toml
+    from ..rotor_file import is_balance, parse_balance
     from ..train_file import is_train, parse_train
 
     source = str(source)
@@ -87,4 +96,6 @@ def load(source: str | Path):
         return parse_train(text, str(path), exercise_id)
     if is_cam(data):
         return parse_cam(text, str(path), exercise_id)
+    if is_balance(data):
+        return parse_balance(text, str(path), exercise_id)
     return load_exercise(path, exercise_id)

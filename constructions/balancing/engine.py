@@ -1,0 +1,67 @@
+"""An in-line engine's primary and secondary forces and couples, by their polygons.
+
+Each cylinder's reciprocating mass m at crank radius r gives a primary force m·ω²·r·cos θ
+along the line of stroke: the x-component of a vector m·r·ω² turning with the crank. Its
+secondary force m·ω²·r·cos 2θ / n is the component of one turning at twice the speed, a
+crank at 2θ of size m·r/n (the direct crank). So the primary forces cancel at every angle
+when the vectors m·r along the cranks close their polygon, and the primary couples when
+m·r·lᵢ do (lᵢ from the reference plane, a vector reversed where lᵢ < 0); the secondary
+ones likewise with the cranks at 2θᵢ. Each polygon is drawn as the rotor's are, and its
+closing side, if any, is what is left unbalanced.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+from .. import geometry as g
+from ..narration import phrase
+from ..record import Construction, Kind, Panel, Ref
+from .polygons import lay_polygon
+from .rotor import Engine
+
+__all__ = ["EnginePolygons", "draw_engine"]
+
+KINDS = ("primary force", "primary couple", "secondary force", "secondary couple")
+
+
+@dataclass
+class EnginePolygons:
+    """The four polygons' records: tips in order and closing sides, by kind."""
+
+    construction: Construction
+    tips: dict[str, list[tuple[str, Ref]]] = field(default_factory=dict)
+    closing: dict[str, Ref] = field(default_factory=dict)
+
+    def left(self, kind: str) -> float:
+        """What the closing side leaves unbalanced (kg·m, or kg·m² for a couple)."""
+        seg = self.construction.output(self.closing[kind])
+        return math.dist(seg.start.xy, seg.end.xy)
+
+
+def draw_engine(e: Engine, reference: float | None = None) -> EnginePolygons:
+    """Draw the cranks and their doubled directions in the end view, then the four
+    polygons; couples about the plane at ``reference`` (default: the engine's central
+    plane, midway between its end cylinders, about which the textbooks take them)."""
+    ref = (min(e.planes) + max(e.planes)) / 2 if reference is None else reference
+    c = Construction()
+    out = EnginePolygons(c)
+    o = c.give("O", g.Point(0.0, 0.0), label="O", phrase=phrase("balance.cranks"))
+    lines = {}
+    for i, theta in enumerate(e.cranks, start=1):
+        for kind, angle in (("1", theta), ("2", 2 * theta)):
+            at = c.give(f"C{kind}{i}", g.Point(math.cos(angle), math.sin(angle)), label="")
+            lines[kind, i] = c.draw(f"crank{kind}{i}", "line_through", o, at, kind=Kind.LINE)
+    mr, n = e.reciprocating * e.crank, e.rod / e.crank
+    for k, kind in enumerate(KINDS):
+        order = "1" if kind.startswith("primary") else "2"
+        size = mr if order == "1" else mr / n
+        vectors = [(str(i), size * ((p - ref) if kind.endswith("couple") else 1.0),
+                    lines[order, i]) for i, p in enumerate(e.planes, start=1)]
+        tag = f"e{k}"
+        out.tips[kind] = []
+        panel = Panel.COUPLE if kind.endswith("couple") else Panel.FORCE
+        out.closing[kind] = lay_polygon(c, out.tips[kind], tag, panel, vectors, phrase(
+            "balance.engine", kind=kind, order="θᵢ" if order == "1" else "2θᵢ"), kind)
+    return out

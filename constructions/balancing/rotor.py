@@ -1,0 +1,71 @@
+"""What a balancing exercise is made of (SI units, angles CCW from the reference radius).
+
+A rotor carries masses, each at a radius and an angle about the shaft and in a plane at
+an axial position; balancing masses go in one plane (static balance) or two (dynamic).
+An engine has cylinders in line, each with its crank's angle and its plane, the same crank
+radius, connecting rod and reciprocating mass.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+__all__ = ["Engine", "Mass", "Plane", "Rotor"]
+
+
+@dataclass(frozen=True)
+class Mass:
+    """A mass ``mass`` (kg) at ``radius`` (m) and ``angle`` (rad) in the plane at ``plane``
+    (m along the shaft)."""
+
+    name: str
+    mass: float
+    radius: float
+    angle: float
+    plane: float = 0.0
+
+    @property
+    def mr(self) -> tuple[float, float]:
+        """Its mass–radius product as a vector (kg·m)."""
+        import math
+
+        return (self.mass * self.radius * math.cos(self.angle),
+                self.mass * self.radius * math.sin(self.angle))
+
+
+@dataclass(frozen=True)
+class Plane:
+    """A balancing plane at ``position`` (m along the shaft), with the radius its mass goes
+    at, or the mass it carries (the other is found)."""
+
+    name: str
+    position: float
+    radius: float | None = None
+    mass: float | None = None
+
+
+@dataclass(frozen=True)
+class Rotor:
+    """Masses on a shaft turning at ``speed`` (rad/s), and its balancing planes."""
+
+    masses: tuple[Mass, ...]
+    planes: tuple[Plane, ...]
+    speed: float
+
+
+@dataclass(frozen=True)
+class Engine:
+    """An in-line engine: each cylinder's crank angle (rad) and plane (m), the crank radius
+    and connecting rod (m), the reciprocating mass a cylinder (kg), its speed (rad/s); a
+    single cylinder may be partly balanced by a rotating mass opposite its crank, the
+    fraction ``balanced`` of the reciprocating mass at the crank radius, and its forces are
+    asked at the crank angle ``at`` (rad)."""
+
+    cranks: tuple[float, ...]
+    planes: tuple[float, ...]
+    crank: float
+    rod: float
+    reciprocating: float
+    speed: float
+    balanced: float = 0.0
+    at: float = 0.0

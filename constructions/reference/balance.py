@@ -1,0 +1,89 @@
+"""The independent reference for balancing: vector sums in closed form.
+
+- Static balance (001 ch. 7 eq. 15–17): ΣF_x = Σ mᵢrᵢω² cos θᵢ, ΣF_y = Σ mᵢrᵢω² sin θᵢ, the
+  resultant's size √(ΣF_x² + ΣF_y²) and its angle from tan θ = ΣF_y/ΣF_x with the quadrant
+  read off the signs (Note 2); the balancing mass–radius product is the resultant's,
+  turned through 180°.
+- Dynamic balance in two planes A and B: moments about A give (m r)_B = −Σ mᵢrᵢlᵢ / l_B,
+  lᵢ measured from A; then forces give (m r)_A = −Σ mᵢrᵢ − (m r)_B.
+- An engine's unbalanced inertia forces: primary m·ω²·r·cos θ and secondary
+  m·ω²·r·cos 2θ / n along the line of stroke (n = l/r); a rotating mass c·m opposite the
+  crank leaves (1 − c)·m·ω²·r·cos θ along it and c·m·ω²·r·sin θ across it. For cylinders in
+  line, the primary forces and couples sum as vectors at the crank angles θᵢ, the
+  secondary ones at 2θᵢ (the direct-crank reading), each a 1/n of the primary's size.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from ..balancing.rotor import Engine, Mass
+
+__all__ = ["EngineSums", "quadrant_angle", "resultant", "single_cylinder", "engine_sums",
+           "two_planes"]
+
+
+def resultant(masses: tuple[Mass, ...] | list[Mass]) -> tuple[float, float]:
+    """Σ mᵢrᵢ as a vector (kg·m): the x and y sums of eq. (15) without ω²."""
+    return (math.fsum(m.mr[0] for m in masses), math.fsum(m.mr[1] for m in masses))
+
+
+def quadrant_angle(x: float, y: float) -> float:
+    """The notes' eq. (17) and Note 2: θ′ = tan⁻¹|y/x|, then put in its quadrant by the
+    signs of x and y (degrees, 0 to 360)."""
+    if x == 0.0:
+        return 90.0 if y > 0 else 270.0 if y < 0 else 0.0
+    base = math.degrees(math.atan(abs(y / x)))
+    if x > 0:
+        return base if y >= 0 else 360.0 - base
+    return 180.0 - base if y >= 0 else 180.0 + base
+
+
+def two_planes(masses, a: float, b: float) -> tuple[tuple[float, float], tuple[float, float]]:
+    """The mass–radius products (kg·m vectors) to put in the planes at ``a`` and ``b``."""
+    lever = b - a
+    couple = (math.fsum(m.mr[0] * (m.plane - a) for m in masses),
+              math.fsum(m.mr[1] * (m.plane - a) for m in masses))
+    in_b = (-couple[0] / lever, -couple[1] / lever)
+    sx, sy = resultant(masses)
+    return (-sx - in_b[0], -sy - in_b[1]), in_b
+
+
+def single_cylinder(e: Engine, theta: float) -> tuple[float, float, float, float]:
+    """At crank angle θ: the primary and secondary forces along the stroke (N), and with the
+    rotating balance mass, the unbalanced force along and across the stroke (N)."""
+    f = e.reciprocating * e.speed ** 2 * e.crank
+    n = e.rod / e.crank
+    return (f * math.cos(theta), f * math.cos(2 * theta) / n,
+            (1 - e.balanced) * f * math.cos(theta), e.balanced * f * math.sin(theta))
+
+
+@dataclass(frozen=True)
+class EngineSums:
+    """An in-line engine's unbalanced primary and secondary force and couple, as the
+    vector sums of its cranks (N, N·m: the sizes of the rotating vectors' resultants)."""
+
+    primary_force: float
+    primary_couple: float
+    secondary_force: float
+    secondary_couple: float
+
+
+def engine_sums(e: Engine, reference: float | None = None) -> EngineSums:
+    """Sum each cylinder's primary (at θᵢ) and secondary (at 2θᵢ, a 1/n share) force and
+    couple, the couples about the plane at ``reference`` (default: the central plane,
+    midway between the end cylinders)."""
+    if reference is None:
+        reference = (min(e.planes) + max(e.planes)) / 2
+    f = e.reciprocating * e.speed ** 2 * e.crank
+    n = e.rod / e.crank
+
+    def size(angles, arms) -> float:
+        return math.hypot(math.fsum(a * math.cos(t) for t, a in zip(angles, arms)),
+                          math.fsum(a * math.sin(t) for t, a in zip(angles, arms)))
+    ones = [1.0] * len(e.cranks)
+    arms = [p - reference for p in e.planes]
+    twice = [2 * t for t in e.cranks]
+    return EngineSums(f * size(e.cranks, ones), f * size(e.cranks, arms),
+                      f / n * size(twice, ones), f / n * size(twice, arms))

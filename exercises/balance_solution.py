@@ -1,0 +1,344 @@
+"""A balancing exercise solved: a rotor by the force (and couple) polygon, or an engine's
+unbalanced forces and couples, every closing side checked against the vector sums.
+
+A rotor's balancing products, drawn as the polygons' closing sides, are checked against the
+closed form (:mod:`..constructions.reference.balance`), and the balanced rotor's residual
+force and couple (its masses and the balancing masses summed) must vanish to a few
+roundings of the largest product. An engine's four polygons are checked the same way, each
+closing side against the sum of its cylinders' vectors.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from dataclasses import dataclass
+from functools import cached_property
+from pathlib import Path
+from typing import Any
+
+from ..constructions.balancing.engine import KINDS, EnginePolygons, draw_engine
+from ..constructions.balancing.polygons import Balance, draw_balance
+from ..constructions.model import LENGTH_UNITS
+from ..constructions.narration import narrate
+from ..constructions.reference.balance import (engine_sums, quadrant_angle, resultant,
+                                               single_cylinder, two_planes)
+from ..graphics.balance_figures import draw_end_view, draw_polygon, draw_side_view
+from ..graphics.plot import Series, draw_line_plot
+from ..graphics.svg import to_svg
+from ..graphics.train_table import draw_train_table
+from .rotor_file import BalanceExercise
+from .solution_files import write_solution
+
+__all__ = ["BalanceSolution", "solve_balance"]
+
+AGREE = 1e-12
+"""How near (relative to the largest vector drawn) a closing side must come to its sum: a
+few roundings of the vectors laid off."""
+
+
+def _angle(v: tuple[float, float]) -> float:
+    return math.degrees(math.atan2(v[1], v[0])) % 360.0
+
+
+@dataclass(frozen=True)
+class BalanceSolution:
+    """A solved balancing exercise (see :func:`solve_balance`)."""
+
+    exercise: BalanceExercise
+
+    # ----- a rotor ------------------------------------------------------------------------------
+    @cached_property
+    def balance(self) -> Balance | None:
+        """The rotor's polygons, drawn (None for an engine)."""
+        r = self.exercise.rotor
+        return draw_balance(r) if r else None
+
+    @cached_property
+    def expected(self) -> dict[str, tuple[float, float]]:
+        """Each balancing plane's product by the closed form (kg·m)."""
+        r = self.exercise.rotor
+        if len(r.planes) == 1:
+            x, y = resultant(r.masses)
+            return {r.planes[0].name: (-x, -y)}
+        a, b = r.planes
+        in_a, in_b = two_planes(r.masses, a.position, b.position)
+        return {a.name: in_a, b.name: in_b}
+
+    @cached_property
+    def engine_polygons(self) -> EnginePolygons | None:
+        """The engine's four polygons, drawn (None for a rotor, or a single cylinder)."""
+        e = self.exercise.engine
+        return draw_engine(e) if e and len(e.cranks) > 1 else None
+
+    # ----- checks -------------------------------------------------------------------------------
+    @cached_property
+    def misses(self) -> list[tuple[str, float]]:
+        """What disagrees: (name, miss relative to the largest vector)."""
+        out = []
+        if self.balance is not None:
+            r = self.exercise.rotor
+            size = max(m.mass * m.radius * max(1.0, abs(m.plane)) for m in r.masses)
+            for name, want in self.expected.items():
+                got = self.balance.product(name)
+                miss = math.dist(got, want) / size
+                if miss > AGREE:
+                    out.append((f"plane {name}", miss))
+            force, couple = self.residual
+            if force / size > AGREE or couple / size > AGREE:
+                out.append(("the balanced rotor", max(force, couple) / size))
+        if self.engine_polygons is not None:
+            e = self.exercise.engine
+            sums = engine_sums(e)
+            w2 = e.speed ** 2
+            values = dict(zip(KINDS, (sums.primary_force, sums.primary_couple,
+                                      sums.secondary_force, sums.secondary_couple)))
+            size = e.reciprocating * e.crank * max(1.0, max(abs(p) for p in e.planes))
+            for kind in KINDS:
+                miss = abs(self.engine_polygons.left(kind) * w2 - values[kind]) / (size * w2)
+                if miss > AGREE:
+                    out.append((kind, miss))
+        return out
+
+    @cached_property
+    def residual(self) -> tuple[float, float]:
+        """The balanced rotor's leftover force and couple (kg·m, kg·m²): its masses and the
+        drawn balancing products summed; the couple about the first balancing plane."""
+        r = self.exercise.rotor
+        vectors = [(m.mr, m.plane) for m in r.masses]
+        vectors += [(self.balance.product(p.name), p.position) for p in r.planes]
+        ref = r.planes[0].position
+        fx = math.fsum(v[0] for v, _ in vectors)
+        fy = math.fsum(v[1] for v, _ in vectors)
+        cx = math.fsum(v[0] * (z - ref) for v, z in vectors)
+        cy = math.fsum(v[1] * (z - ref) for v, z in vectors)
+        return math.hypot(fx, fy), (math.hypot(cx, cy) if len(r.planes) == 2 else 0.0)
+
+    @property
+    def passed(self) -> bool:
+        """Every closing side where the vector sum puts it."""
+        return not self.misses
+
+    @property
+    def failures(self) -> list[str]:
+        """What disagrees, by name."""
+        return [name for name, _ in self.misses]
+
+    # ----- words --------------------------------------------------------------------------------
+    def _length(self, v: float) -> str:
+        unit = self.exercise.length_unit
+        return f"{v / LENGTH_UNITS[unit]:.6g} {unit}"
+
+    def lines(self) -> list[str]:
+        """What the command line prints."""
+        ex = self.exercise
+        if ex.engine is not None:
+            return self._engine_lines()
+        out = []
+        r = ex.rotor
+        x, y = resultant(r.masses)
+        out.append(f"ΣF_x = {x:.6g}ω², ΣF_y = {y:.6g}ω² (kg·m): the resultant "
+                   f"{math.hypot(x, y):.6g} kg·m at {quadrant_angle(x, y):.2f}° "
+                   f"({math.hypot(x, y) * r.speed ** 2:.6g} N at ω = {r.speed:.6g} rad/s)")
+        for p in r.planes:
+            v = self.balance.product(p.name)
+            size = math.hypot(*v)
+            if p.radius is not None:
+                put = f"{size / p.radius:.6g} kg at {self._length(p.radius)}"
+            else:
+                put = f"{p.mass:g} kg at {self._length(size / p.mass)}"
+            out.append(f"plane {p.name}: balancing m·r = {size:.6g} kg·m at {_angle(v):.2f}°, "
+                       f"so {put}")
+        if len(r.planes) == 1 and len({m.plane for m in r.masses}) > 1:
+            couple = math.hypot(*(math.fsum(m.mr[i] * (m.plane - r.planes[0].position)
+                                            for m in r.masses) for i in (0, 1)))
+            out.append(f"one plane balances the forces only: a couple of {couple:.6g} kg·m² "
+                       "(× ω²) is left, for a second plane to take")
+        verdict = "each where the vector sum puts it" if self.passed else \
+            f"OFF: {', '.join(self.failures)}"
+        out.append(f"polygons closed: {verdict}; the balanced rotor's residual force "
+                   f"{self.residual[0]:.1e} kg·m")
+        return out
+
+    def _engine_lines(self) -> list[str]:
+        e = self.exercise.engine
+        if len(e.cranks) == 1:
+            prim, sec, along, across = single_cylinder(e, e.at)
+            f = e.reciprocating * e.speed ** 2 * e.crank
+            at = math.degrees(e.at)
+            return [f"at θ = {at:g}°: primary force {prim:.6g} N, secondary {sec:.6g} N along "
+                    f"the line of stroke (n = l/r = {e.rod / e.crank:.6g})",
+                    f"with {e.balanced:g} of the reciprocating mass balanced by a rotating "
+                    f"mass: {along:.6g} N along the line of stroke and {across:.6g} N across "
+                    f"it",
+                    f"at most {(1 - e.balanced) * f:.6g} N along (θ = 0°, 180°) and "
+                    f"{e.balanced * f:.6g} N across (θ = 90°, 270°)"]
+        sums = engine_sums(e)
+        out = []
+        for kind, value in zip(KINDS, (sums.primary_force, sums.primary_couple,
+                                       sums.secondary_force, sums.secondary_couple)):
+            unit = "N·m" if kind.endswith("couple") else "N"
+            left = self.engine_polygons.left(kind) * e.speed ** 2
+            balanced = left <= AGREE * e.reciprocating * e.crank * e.speed ** 2 * max(
+                1.0, max(abs(p) for p in e.planes))
+            out.append(f"{kind}: " + ("balanced (its polygon closes)" if balanced else
+                                      f"unbalanced, {left:.6g} {unit} at most "
+                                      f"(the vector sum: {value:.6g} {unit})"))
+        return out
+
+    def steps(self) -> str:
+        """steps.md: the construction, numbered, and the results."""
+        ex = self.exercise
+        lines = [f"# {ex.name}: worked solution", ""]
+        if ex.description:
+            lines += [ex.description, ""]
+        record = self.balance.construction if self.balance else (
+            self.engine_polygons.construction if self.engine_polygons else None)
+        if record is not None:
+            said = [narrate(s) for s in record.steps.values()]
+            lines += ["## The construction", ""]
+            lines += [f"{k}. {t}" for k, t in enumerate((t for t in said if t), 1)]
+            lines.append("")
+        lines += ["## Results", ""] + [f"- {t}" for t in self.lines()]
+        return "\n".join(lines) + "\n"
+
+    # ----- numbers and figures ------------------------------------------------------------------
+    @property
+    def results(self) -> dict[str, Any]:
+        """results.json: in SI."""
+        ex = self.exercise
+        q: dict[str, Any] = {}
+        if ex.rotor is not None:
+            for name, want in self.expected.items():
+                got = self.balance.product(name)
+                q[f"mr_{name}"] = {"value": list(got), "angle_deg": _angle(got),
+                                   "reference": {"value": list(want)},
+                                   "method": "force polygon" if len(self.expected) == 1
+                                   else "couple and force polygons"}
+        elif len(ex.engine.cranks) == 1:
+            prim, sec, along, across = single_cylinder(ex.engine, ex.engine.at)
+            q |= {"primary_force": {"value": prim}, "secondary_force": {"value": sec},
+                  "unbalanced_along": {"value": along}, "unbalanced_across": {"value": across}}
+        else:
+            sums = engine_sums(ex.engine)
+            for kind, value in zip(KINDS, (sums.primary_force, sums.primary_couple,
+                                           sums.secondary_force, sums.secondary_couple)):
+                q[kind.replace(" ", "_")] = {
+                    "value": self.engine_polygons.left(kind) * ex.engine.speed ** 2,
+                    "reference": {"value": value}, "method": f"{kind} polygon"}
+        return {"exercise": ex.id, "positions": [], "quantities": q}
+
+    @property
+    def figures(self) -> dict[str, Any]:
+        """The space diagram, the table and the polygons (a rotor's); the polygons or the
+        forces against crank angle (an engine's)."""
+        ex = self.exercise
+        unit, metre = ex.length_unit, LENGTH_UNITS[ex.length_unit]
+        if ex.rotor is not None:
+            return self._rotor_figures(unit, metre)
+        e = ex.engine
+        if len(e.cranks) == 1:
+            return {"forces": self._single_cylinder_plot()}
+        out = {}
+        p = self.engine_polygons
+        for kind in KINDS:
+            left = p.left(kind) * e.speed ** 2
+            word = "N·m" if kind.endswith("couple") else "N"
+            reading = ("closed: balanced", "", "") if left < 1e-9 * e.reciprocating * \
+                e.crank * e.speed ** 2 else (f"{left:.4g} {word} unbalanced", "", "")
+            out[kind.replace(" ", "-")] = draw_polygon(
+                p.construction, p.tips[kind], p.closing[kind], f"{ex.name}: {kind}",
+                "kg·m²" if kind.endswith("couple") else "kg·m", reading,
+                notes=["couples about the central plane; secondary vectors along the cranks "
+                       "at 2θᵢ, each m·r/n"], names={str(i): f"cyl. {i}" for i in
+                                                     range(1, len(e.cranks) + 1)})
+        return out
+
+    def _rotor_figures(self, unit: str, metre: float) -> dict[str, Any]:
+        ex, r, b = self.exercise, self.exercise.rotor, self.balance
+        masses = [(m.name, m.radius, f"{m.name}: {m.mass:g} kg at {m.radius / metre:g} {unit}, "
+                   f"{math.degrees(m.angle):g}°") for m in r.masses]
+        found = []
+        for p in r.planes:
+            v = b.product(p.name)
+            size = math.hypot(*v)
+            radius = p.radius if p.radius is not None else size / p.mass
+            mass = p.mass if p.mass is not None else size / p.radius
+            found.append((f"{p.name}: {mass:.4g} kg at {radius / metre:.4g} {unit}, "
+                          f"{_angle(v):.2f}°", math.atan2(v[1], v[0]), radius))
+        out = {"space": draw_end_view(b.construction, masses, f"{ex.name}: space diagram",
+                                      unit, metre, found)}
+        if len(r.planes) == 2 or len({m.plane for m in r.masses}) > 1:
+            planes = [(f"{m.name}", m.plane, "link") for m in r.masses]
+            planes += [(p.name, p.position, "normal") for p in r.planes]
+            out["side"] = draw_side_view(planes, f"{ex.name}: side view", unit, metre)
+        out["table"] = self._table(unit, metre)
+        if len(r.planes) == 2:
+            bname = r.planes[1].name
+            v = b.vector(b.closing[f"{bname}·l"])
+            out["couple-polygon"] = draw_polygon(
+                b.construction, b.couple, b.closing[f"{bname}·l"],
+                f"{ex.name}: couple polygon (reference plane {r.planes[0].name})", "kg·m²",
+                ("(m r l)", bname, f" = {math.hypot(*v):.4g} kg·m² at {_angle(v):.1f}°"))
+        a = r.planes[0].name
+        v = b.product(a)
+        out["force-polygon"] = draw_polygon(
+            b.construction, b.force, b.closing[a], f"{ex.name}: force polygon", "kg·m",
+            ("(m r)", a, f" = {math.hypot(*v):.4g} kg·m at {_angle(v):.1f}°"))
+        return out
+
+    def _table(self, unit: str, metre: float):
+        r = self.exercise.rotor
+        ref = r.planes[0].position
+        two = len(r.planes) == 2
+        heads = ["m (kg)", f"r ({unit})", "θ", f"l ({unit})", "m·r (kg·m)"] + (
+            ["m·r·l (kg·m²)"] if two else [])
+        rows = []
+        for m in r.masses:
+            rows.append((m.name, [f"{m.mass:g}", f"{m.radius / metre:g}",
+                                  f"{math.degrees(m.angle):g}°", f"{(m.plane - ref) / metre:g}",
+                                  f"{m.mass * m.radius:.4g}"] + (
+                [f"{m.mass * m.radius * (m.plane - ref):.4g}"] if two else [])))
+        for p in r.planes:
+            v = self.balance.product(p.name)
+            size = math.hypot(*v)
+            mass = p.mass if p.mass is not None else size / p.radius
+            radius = p.radius if p.radius is not None else size / p.mass
+            rows.append((p.name, [f"{mass:.4g}", f"{radius / metre:.4g}", f"{_angle(v):.2f}°",
+                                  f"{(p.position - ref) / metre:g}", f"{size:.4g}"] + (
+                [f"{size * (p.position - ref):.4g}"] if two else [])))
+        return draw_train_table(f"{self.exercise.name}: the table", heads, rows,
+                                ruled=[len(r.masses)], notes=[
+                                    f"l from the reference plane {r.planes[0].name}; the "
+                                    "rows under the rule are the balancing masses found"])
+
+    def _single_cylinder_plot(self):
+        e, ex = self.exercise.engine, self.exercise
+        xs = [float(d) for d in range(0, 361, 2)]
+        values = [single_cylinder(e, math.radians(d)) for d in xs]
+        series = [Series("primary", tuple((x, v[0]) for x, v in zip(xs, values))),
+                  Series("secondary", tuple((x, v[1]) for x, v in zip(xs, values)),
+                         "plot_curve_dashed"),
+                  Series("unbalanced across the stroke",
+                         tuple((x, v[3]) for x, v in zip(xs, values)), "plot_curve_dotted")]
+        return draw_line_plot(f"{ex.name}: unbalanced forces", "crank angle θ (°)", "F (N)",
+                              series, x_range=(0.0, 360.0),
+                              x_ticks=[(float(d), f"{d}") for d in range(0, 361, 30)],
+                              subtitle=f"{e.balanced:g} of the reciprocating mass balanced "
+                                       "by a rotating mass opposite the crank")
+
+    def files(self) -> dict[str, str]:
+        """Every file as text, by name."""
+        files = {f"{stem}.svg": to_svg(fig) for stem, fig in self.figures.items()}
+        files["steps.md"] = self.steps()
+        files["results.json"] = json.dumps(self.results, indent=2, ensure_ascii=False) + "\n"
+        return files
+
+    def write(self, folder: str | Path, *, pdf: bool = True) -> list[Path]:
+        """Write the files into ``folder``, all or nothing."""
+        return write_solution(self.files(), folder, pdf=pdf)
+
+
+def solve_balance(ex: BalanceExercise) -> BalanceSolution:
+    """Solve a balancing exercise by its polygons."""
+    return BalanceSolution(ex)

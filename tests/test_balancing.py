@@ -1,0 +1,153 @@
+"""Balancing by the force and couple polygons (001 ch. 7), against the vector sums.
+
+- The notes' Example 1: the book prints 61.4 N at 124.4° (its numbers take sin 225° as
+  +√2/2); the true balancing product is 1.3907 kg·m at 3.90°, the polygon's vertices
+  (0.17321, 0.1), (−0.32679, 0.96603), (−1.38746, −0.09463) kg·m (the digest's).
+- Two planes: the balanced rotor's force and couple vanish, and a pure couple (two equal
+  masses opposite, apart along the shaft) is held by equal and opposite masses.
+- Engines: the single cylinder's forces by the textbook formulas; the in-line four's
+  primary forces and couples balanced, its secondary forces 4·m·ω²·r/n.
+Tolerances: sums of a few products of order 1 kg·m, 1e-12 relative.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from pathlib import Path
+
+import pytest
+from click.testing import CliRunner
+
+from tarsim.constructions.balancing.rotor import Engine, Mass, Plane, Rotor
+from tarsim.constructions.balancing.engine import draw_engine
+from tarsim.constructions.balancing.polygons import draw_balance
+from tarsim.constructions.errors import InputError
+from tarsim.constructions.reference.balance import quadrant_angle, resultant
+from tarsim.exercises.balance_solution import solve_balance
+from tarsim.exercises.catalog import bundled_balancing, load
+from tarsim.exercises.cli import cli
+from tarsim.exercises.rotor_file import parse_balance
+
+
+def test_the_notes_example_balances_at_1_3907_kg_m_and_3_90_degrees():
+    s = solve_balance(load("notes-example-1"))
+    assert s.passed, s.failures
+    v = s.balance.product("B")
+    assert math.hypot(*v) == pytest.approx(1.39068, abs=5e-6)
+    assert math.degrees(math.atan2(v[1], v[0])) == pytest.approx(3.9020, abs=5e-4)
+    c = s.balance.construction
+    tips = [c.output(r).xy for _, r in s.balance.force]
+    want = [(0.17321, 0.10000), (-0.32679, 0.96603), (-1.38746, -0.09463)]
+    for got, w in zip(tips, want):
+        assert got == pytest.approx(w, abs=5e-6)
+    x, y = resultant(s.exercise.rotor.masses)
+    assert quadrant_angle(x, y) == pytest.approx(183.902, abs=5e-4)     # third quadrant
+    assert math.hypot(x, y) * 25 == pytest.approx(34.767, abs=5e-4)      # N at 5 rad/s
+    assert math.hypot(*v) / 0.1 == pytest.approx(13.9068, abs=5e-4)       # kg at 0.1 m
+
+
+def test_the_books_erratum_is_sin_225_taken_positive():
+    """With sin 225° = +√2/2 the sums are the book's: ΣF_y = 2.0267, 61.40 N at 124.4°."""
+    wrong_y = 0.2 * math.sin(math.radians(30)) + 1.0 * math.sin(math.radians(120)) \
+        + 1.5 * math.sqrt(2) / 2
+    x, _ = resultant(load("notes-example-1").rotor.masses)
+    assert wrong_y == pytest.approx(2.0267, abs=5e-5)
+    assert math.hypot(x, wrong_y) * 25 == pytest.approx(61.40, abs=5e-3)
+    assert quadrant_angle(x, wrong_y) == pytest.approx(124.4, abs=0.05)
+
+
+def test_two_planes_leave_no_force_and_no_couple():
+    s = solve_balance(load("four-mass-shaft"))
+    assert s.passed, s.failures
+    force, couple = s.residual
+    assert force < 1e-12 * 60 and couple < 1e-12 * 60
+
+
+def test_a_pure_couple_is_held_by_equal_and_opposite_masses():
+    """Two 1 kg masses at 0.1 m, at 0° and 180°, in planes 0.2 and 0.4 m: no resultant
+    force, a couple 0.02 kg·m²; planes at 0 and 0.6 m take 0.0333 kg·m each, opposite."""
+    rotor = Rotor((Mass("1", 1, 0.1, 0.0, 0.2), Mass("2", 1, 0.1, math.pi, 0.4)),
+                  (Plane("A", 0.0, 0.1), Plane("B", 0.6, 0.1)), 10.0)
+    b = draw_balance(rotor)
+    a, bb = b.product("A"), b.product("B")
+    assert a == pytest.approx((-0.1 * 0.2 / 0.6, 0.0), abs=1e-15)
+    assert bb == pytest.approx((0.1 * 0.2 / 0.6, 0.0), abs=1e-15)
+
+
+def test_the_single_cylinder_forces_are_the_textbooks():
+    """m·ω²·r = 1.5 × (60π)² × 0.05 = 2664.79 N; at 30°: primary 2664.79·cos 30°, secondary
+    2664.79·cos 60°/4; two thirds balanced: (1/3)·2664.79·cos 30° along, (2/3)·2664.79·sin 30°
+    across."""
+    s = solve_balance(load("single-cylinder"))
+    f = 1.5 * (60 * math.pi) ** 2 * 0.05
+    q = s.results["quantities"]
+    assert q["primary_force"]["value"] == pytest.approx(f * math.cos(math.radians(30)),
+                                                        rel=1e-12)
+    assert q["secondary_force"]["value"] == pytest.approx(f * 0.5 / 4, rel=1e-12)
+    assert q["unbalanced_along"]["value"] == pytest.approx(f / 3 * math.cos(math.pi / 6),
+                                                           rel=1e-12)
+    assert q["unbalanced_across"]["value"] == pytest.approx(2 * f / 3 * 0.5, rel=1e-12)
+
+
+def test_the_inline_four_leaves_only_its_secondary_forces():
+    s = solve_balance(load("inline-four"))
+    assert s.passed, s.failures
+    q = s.results["quantities"]
+    f = 1.5 * (60 * math.pi) ** 2 * 0.05
+    assert q["primary_force"]["value"] < 1e-9 * f
+    assert q["primary_couple"]["value"] < 1e-9 * f
+    assert q["secondary_force"]["value"] == pytest.approx(4 * f / 4, rel=1e-12)
+    assert q["secondary_couple"]["value"] < 1e-9 * f
+    assert "secondary force: unbalanced" in "\n".join(s.lines())
+
+
+def test_a_three_cylinder_engine_balances_its_forces_not_its_couples():
+    """Cranks 120° apart: both force polygons close (an equilateral triangle); the couples
+    about the central plane do not: primary √3·m·r·a, a the pitch."""
+    e = Engine(tuple(math.radians(a) for a in (0, 120, 240)), (0.0, 0.1, 0.2), 0.05, 0.2,
+               1.0, 100.0)
+    p = draw_engine(e)
+    assert p.left("primary force") < 1e-15 and p.left("secondary force") < 1e-15
+    assert p.left("primary couple") == pytest.approx(math.sqrt(3) * 0.05 * 0.1, rel=1e-12)
+
+
+TEXT = Path(bundled_balancing()["four-mass-shaft"]).read_text(encoding="utf-8")
+
+
+@pytest.mark.parametrize("old, new, words", [
+    ("plane = 900\nradius = 100", "plane = 900\nradius = 0",
+     "balancing plane B's radius must be positive"),
+    ("plane = 900", "plane = 0", "stand at the same axial position"),
+    ("radius = 80\nangle = 0", "radius = 80\nangle = 0\ncolour = 1", "unknown setting 'colour'"),
+    ("plane = 900\nradius = 100", "plane = 900\nradius = 100\nmass = 3",
+     "gives the radius its mass goes at, or the mass"),
+])
+def test_a_bad_rotor_is_refused_in_one_line(old, new, words):
+    assert old in TEXT
+    with pytest.raises(InputError) as e:
+        parse_balance(TEXT.replace(old, new, 1), "rotor.toml")
+    message = str(e.value)
+    assert "\n" not in message and message.startswith("rotor.toml:") and words in message, \
+        message
+
+
+def test_a_rotor_with_no_balancing_plane_is_refused():
+    cut = TEXT[:TEXT.index("[[balance]]")]
+    with pytest.raises(InputError, match=r"rotor.toml:\d+: name a balancing plane"):
+        parse_balance(cut, "rotor.toml")
+
+
+def test_solve_writes_the_polygons_table_and_steps(tmp_path):
+    out = tmp_path / "b"
+    result = CliRunner().invoke(cli, ["solve", "four-mass-shaft", "-o", str(out), "--no-pdf"])
+    assert result.exit_code == 0, result.output
+    assert {"space.svg", "side.svg", "table.svg", "couple-polygon.svg",
+            "force-polygon.svg"} <= {p.name for p in out.iterdir()}
+    steps = (out / "steps.md").read_text(encoding="utf-8")
+    assert "The couple polygon, plane A the reference" in steps
+    doc = json.loads((out / "results.json").read_text(encoding="utf-8"))
+    got, want = doc["quantities"]["mr_B"]["value"], doc["quantities"]["mr_B"]["reference"]["value"]
+    assert got == pytest.approx(want, abs=1e-12)
+    result = CliRunner().invoke(cli, ["check", "four-mass-shaft"])
+    assert result.exit_code == 1 and "is a balancing exercise" in result.output
