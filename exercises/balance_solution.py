@@ -21,8 +21,8 @@ from ..constructions.balancing.engine import KINDS, EnginePolygons, draw_engine
 from ..constructions.balancing.polygons import Balance, draw_balance
 from ..constructions.model import LENGTH_UNITS
 from ..constructions.narration import narrate
-from ..constructions.reference.balance import (engine_sums, quadrant_angle, resultant,
-                                               single_cylinder, two_planes)
+from ..constructions.reference.balance import (engine_sums, one_axial_plane, quadrant_angle,
+                                               resultant, single_cylinder, two_planes)
 from ..graphics.balance_figures import draw_end_view, draw_polygon, draw_side_view
 from ..graphics.plot import Series, draw_line_plot
 from ..graphics.svg import to_svg
@@ -152,8 +152,21 @@ class BalanceSolution:
         if len(r.planes) == 1 and len({m.plane for m in r.masses}) > 1:
             couple = math.hypot(*(math.fsum(m.mr[i] * (m.plane - r.planes[0].position)
                                             for m in r.masses) for i in (0, 1)))
-            out.append(f"one plane balances the forces only: a couple of {couple:.6g} kg·m² "
-                       "(× ω²) is left, for a second plane to take")
+            single = one_axial_plane(r.masses)
+            if single is not None:
+                v, place = single
+                planes = [m.plane for m in r.masses]
+                case = "2-1, between" if min(planes) <= place <= max(planes) else \
+                    "2-2, outside"
+                out.append(f"the masses lie in one axial plane: one mass of m·r = "
+                           f"{math.hypot(*v):.6g} kg·m at {_angle(v):.2f}° in the plane at "
+                           f"{self._length(place)} balances force and couple together (the "
+                           f"notes' case {case} the masses' planes: moments about each "
+                           "mass's plane fix it)")
+            if couple > 1e-12 * max(m.mass * m.radius for m in r.masses):
+                out.append(f"at {self._length(r.planes[0].position)} one plane balances the "
+                           f"forces only: a couple of {couple:.6g} kg·m² (× ω²) is left, "
+                           "for a second plane to take")
         verdict = "each where the vector sum puts it" if self.passed else \
             f"OFF: {', '.join(self.failures)}"
         out.append(f"polygons closed: {verdict}; the balanced rotor's residual force "

@@ -151,3 +151,25 @@ def test_solve_writes_the_polygons_table_and_steps(tmp_path):
     assert got == pytest.approx(want, abs=1e-12)
     result = CliRunner().invoke(cli, ["check", "four-mass-shaft"])
     assert result.exit_code == 1 and "is a balancing exercise" in result.output
+
+
+@pytest.mark.parametrize("second, place, case", [(3.0, 0.6, "2-1, between"),
+                                                  (-3.0, 3.0, "2-2, outside")])
+def test_masses_in_one_axial_plane_take_one_mass_for_force_and_couple(second, place, case):
+    """The notes' cases 2-1 and 2-2: m₁r₁ = 2 kg·m at l = 0 and m₂r₂ = ±3 kg·m at l = 1 m
+    (the same way, or opposite). Moments about each mass's plane: M r·L₁ = m₁r₁·L and so on,
+    so M r = 5 kg·m at 0.6 m (between them), or 1 kg·m at 3 m (outside, L_S = 2 m beyond
+    m₂: (L + L_S)·M r = L·m₂r₂ gives 3 × 1 = 1 × 3)."""
+    masses = (Mass("1", 2.0, 1.0, 0.0, 0.0),
+              Mass("2", abs(second), 1.0, 0.0 if second > 0 else math.pi, 1.0))
+    text = "\n".join(f"[[mass]]\nname = \"{m.name}\"\nmass = {m.mass}\nradius = 1\n"
+                     f"angle = {math.degrees(m.angle)}\nplane = {m.plane}" for m in masses)
+    ex = parse_balance(f"[rotor]\nspeed = 10\n{text}\n[[balance]]\nplane = {place}\n"
+                       "radius = 1\n", "axial.toml")
+    s = solve_balance(ex)
+    words = "\n".join(s.lines())
+    assert f"the notes' case {case}" in words
+    v = s.balance.product("A")
+    assert math.hypot(*v) == pytest.approx(abs(2.0 + second), rel=1e-14)
+    # no couple left: the plane is where the moments vanish
+    assert "a couple of" not in words

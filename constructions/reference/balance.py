@@ -21,7 +21,7 @@ from dataclasses import dataclass
 from ..balancing.rotor import Engine, Mass
 
 __all__ = ["EngineSums", "quadrant_angle", "resultant", "single_cylinder", "engine_sums",
-           "two_planes"]
+           "one_axial_plane", "two_planes"]
 
 
 def resultant(masses: tuple[Mass, ...] | list[Mass]) -> tuple[float, float]:
@@ -48,6 +48,24 @@ def two_planes(masses, a: float, b: float) -> tuple[tuple[float, float], tuple[f
     in_b = (-couple[0] / lever, -couple[1] / lever)
     sx, sy = resultant(masses)
     return (-sx - in_b[0], -sy - in_b[1]), in_b
+
+
+def one_axial_plane(masses) -> tuple[tuple[float, float], float] | None:
+    """The notes' cases 2-1 and 2-2: masses in one axial plane (their radii 0° or 180°
+    apart) are balanced, force and couple together, by one mass in the plane where the
+    moments vanish. Returns its mass–radius product (kg·m) and that plane's position (m),
+    or None if the masses are not in one axial plane or their forces cancel already."""
+    if not masses:
+        return None
+    base = masses[0].angle
+    if any(abs(math.sin(m.angle - base)) > 1e-12 for m in masses):
+        return None
+    along = [m.mass * m.radius * math.cos(m.angle - base) for m in masses]
+    total = math.fsum(along)
+    if abs(total) <= 1e-12 * max(abs(a) for a in along):
+        return None
+    place = math.fsum(a * m.plane for a, m in zip(along, masses)) / total
+    return (-total * math.cos(base), -total * math.sin(base)), place
 
 
 def single_cylinder(e: Engine, theta: float) -> tuple[float, float, float, float]:
