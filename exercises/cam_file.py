@@ -18,7 +18,7 @@ from ..constructions.errors import InputError
 from ..constructions.model import LENGTH_UNITS
 from ..constructions.reference.cam_laws import BLEND, LAWS
 from ..constructions.reference.cam_profile import Follower, arm_start, prime_radius
-from .mechanism_file import SourceMap, read_source, read_toml
+from .mechanism_file import SourceMap, file_number, read_source, read_toml
 
 __all__ = ["CamExercise", "is_cam", "load_cam", "parse_cam"]
 
@@ -95,10 +95,10 @@ def parse_cam(text: str, filename: str = "<string>", exercise_id: str = "cam") -
                    "speed = 300, sense = \"cw\"", "cam")
 
     def number(t: dict, key: str, table: str, what: str, index: int = 0) -> float:
-        v = t.get(key)
-        if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v):
-            raise fail(f"{what} must be a number, got {v!r}", table, key, index)
-        return float(v)
+        try:
+            return file_number(t.get(key), what)
+        except ValueError as e:
+            raise fail(str(e), table, key, index) from None
 
     base = number(cam, "base_radius", "cam", "the base radius")
     if not 0 < base < 1e6:
@@ -193,10 +193,10 @@ def _follower(t: dict[str, Any], base: float, metre: float, unit: str, fail) -> 
                    "motion")
 
     def size(key: str, what: str) -> float:
-        v = t.get(key, 0)
-        if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v):
-            raise fail(f"{what} must be a number, got {v!r}", "follower", key)
-        return float(v) * metre
+        try:
+            return file_number(t.get(key, 0), what) * metre
+        except ValueError as e:
+            raise fail(str(e), "follower", key) from None
 
     radius = size("radius", "the roller's radius")
     if kind == "roller" and not radius > 0:
@@ -213,13 +213,14 @@ def _follower(t: dict[str, Any], base: float, metre: float, unit: str, fail) -> 
         raise fail("an oscillating flat face is not laid out yet: use a roller or a knife "
                    "edge on the arm", "follower", "kind")
     pivot = t.get("pivot")
-    if (not isinstance(pivot, list) or len(pivot) != 2
-            or not all(isinstance(v, (int, float)) and not isinstance(v, bool)
-                       and math.isfinite(v) for v in pivot)):
+    if not isinstance(pivot, list) or len(pivot) != 2:
         raise fail("an oscillating follower gives its pivot from the cam centre: "
                    "pivot = [70, 0]", "follower", "pivot")
-    f = Follower(kind, radius, 0.0, (pivot[0] * metre, pivot[1] * metre),
-                 size("arm", "the arm's length"))
+    try:
+        at = tuple(file_number(v, "the pivot's coordinate") * metre for v in pivot)
+    except ValueError as e:
+        raise fail(str(e), "follower", "pivot") from None
+    f = Follower(kind, radius, 0.0, at, size("arm", "the arm's length"))
     if not f.arm > 0:
         raise fail("an oscillating follower gives its arm's length: arm = 50", "follower",
                    "arm")

@@ -17,7 +17,7 @@ from typing import Any
 from ..constructions.errors import InputError
 from ..constructions.loads import GRAVITY, Couple, Loads, Mass, PointForce
 from ..constructions.model import LENGTH_UNITS, Mechanism
-from .mechanism_file import SourceMap
+from .mechanism_file import SourceMap, file_number
 
 __all__ = ["LOAD_TABLES", "read_loads"]
 
@@ -61,10 +61,10 @@ def read_loads(data: dict[str, Any], mech: Mechanism, where: SourceMap,
         return raw
 
     def number(t: dict, key: str, table: str, what: str, i: int) -> float:
-        v = t.get(key)
-        if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v):
-            raise fail(f"{what} must be a number, got {v!r}", table, key, i)
-        return float(v)
+        try:
+            return file_number(t.get(key), what)
+        except ValueError as e:
+            raise fail(str(e), table, key, i) from None
 
     def link(t: dict, table: str, i: int) -> int:
         n = t.get("link")
@@ -130,8 +130,8 @@ def read_loads(data: dict[str, Any], mech: Mechanism, where: SourceMap,
                 raise fail(f"link {n} has no point '{point}'; its points are "
                            f"{', '.join(mech.link(n).names)}", "force", "point", i)
         elif isinstance(point, list) and len(point) == 2:
-            point = (number({"p": point[0]}, "p", "force", "a point's x", i) * metre,
-                     number({"p": point[1]}, "p", "force", "a point's y", i) * metre)
+            point = (number({"point": point[0]}, "point", "force", "a point's x", i) * metre,
+                     number({"point": point[1]}, "point", "force", "a point's y", i) * metre)
         else:
             raise fail("a force acts at a point of its link: point = \"B\" or [x, y] in the "
                        "link's own frame", "force", "point", i)
@@ -157,8 +157,8 @@ def read_loads(data: dict[str, Any], mech: Mechanism, where: SourceMap,
         if not (isinstance(f, list) and len(f) == 2):
             raise fail("a force gives its components in N: force = [-1000, 0] (or resist = "
                        "1000 against the point's motion)", "force", "force", i)
-        fx = number({"f": f[0]}, "f", "force", "a force's x", i)
-        fy = number({"f": f[1]}, "f", "force", "a force's y", i)
+        fx = number({"force": f[0]}, "force", "force", "a force's x", i)
+        fy = number({"force": f[1]}, "force", "force", "a force's y", i)
         forces.append(PointForce(n, point, (fx, fy), name))
     couples = [Couple(link(t, "couple", i), number(t, "moment", "couple", "a couple", i),
                       str(t.get("name", ""))) for i, t in enumerate(entries("couple"))]
@@ -178,10 +178,11 @@ def _centre(v: Any, k, metre: float, fail) -> tuple[tuple[float, float], str]:
         if not k.carries(v):
             raise fail(f"{k.label} has no point '{v}'; its points are {', '.join(k.names)}")
         return k.local(v), v
-    if (isinstance(v, list) and len(v) == 2 and all(
-            isinstance(c, (int, float)) and not isinstance(c, bool) and math.isfinite(c)
-            for c in v)):
-        return (v[0] * metre, v[1] * metre), ""
+    if isinstance(v, list) and len(v) == 2:
+        try:
+            return tuple(file_number(c, "a centre's coordinate") * metre for c in v), ""
+        except ValueError as e:
+            raise fail(str(e)) from None
     raise fail(f"a centre of mass is a point of the link, \"mid\" or [x, y], not {v!r}")
 
 

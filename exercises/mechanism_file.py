@@ -145,6 +145,28 @@ def _float(v: int | float) -> float:
         return math.inf
 
 
+SIZES = (1e-6, 1e6)
+"""The sizes a cam, rotor or load file's numbers may have (0 aside), in the file's own
+units: wide enough for any textbook part, narrow enough that every figure can be drawn."""
+
+
+def file_number(v, what: str) -> float:
+    """A cam, rotor or load file's number: finite, and 0 or of a size within :data:`SIZES`.
+
+    Raises
+    ------
+    ValueError
+        Saying what is wrong, for the caller to place at its file:line.
+    """
+    if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v):
+        raise ValueError(f"{what} must be a number, got {v!r}")
+    low, high = SIZES
+    if v != 0 and not low <= abs(v) <= high:
+        raise ValueError(f"{what} must be between {low:g} and {high:g} in size (or 0), "
+                         f"got {v:g}")
+    return float(v)
+
+
 def in_range(x: float) -> bool:
     """True if ``x`` is 0 or finite and of a size within 1/:data:`LARGEST` … :data:`LARGEST`."""
     return x == 0.0 or (math.isfinite(x) and 1.0 / LARGEST <= abs(x) <= LARGEST)

@@ -16,7 +16,7 @@ from typing import Any
 from ..constructions.balancing.rotor import Engine, Mass, Plane, Rotor
 from ..constructions.errors import InputError
 from ..constructions.model import LENGTH_UNITS
-from .mechanism_file import SourceMap, read_source, read_toml
+from .mechanism_file import SourceMap, file_number, read_source, read_toml
 
 __all__ = ["BalanceExercise", "is_balance", "load_balance", "parse_balance"]
 
@@ -101,10 +101,10 @@ def parse_balance(text: str, filename: str = "<string>",
 
     def number(t: dict, key: str, table: str, what: str, i: int = 0,
                default: float | None = None) -> float:
-        v = t.get(key, default)
-        if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v):
-            raise fail(f"{what} must be a number, got {v!r}", table, key, i)
-        return float(v)
+        try:
+            return file_number(t.get(key, default), what)
+        except ValueError as e:
+            raise fail(str(e), table, key, i) from None
 
     def speed(table: str) -> float:
         (t,) = entries(table)

@@ -173,3 +173,13 @@ def test_masses_in_one_axial_plane_take_one_mass_for_force_and_couple(second, pl
     assert math.hypot(*v) == pytest.approx(abs(2.0 + second), rel=1e-14)
     # no couple left: the plane is where the moments vanish
     assert "a couple of" not in words
+
+
+@pytest.mark.parametrize("old, new", [("plane = 900", "plane = 1e308"),
+                                      ("radius = 80", "radius = 1e-300")])
+def test_sizes_no_figure_can_hold_are_refused_in_one_line(old, new):
+    """Found by fuzzing the bundled files: a plane 1e308 away made the side view's scale
+    infinite, and a radius of 1e-300 a circle no arc could be drawn on."""
+    with pytest.raises(InputError, match=r"rotor.toml:\d+: .* must be between 1e-06 and "
+                                          r"1e\+06 in size \(or 0\)"):
+        parse_balance(TEXT.replace(old, new, 1), "rotor.toml")

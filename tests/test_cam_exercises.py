@@ -152,3 +152,9 @@ def test_the_jerk_is_given_when_asked_and_its_infinite_spikes_named():
 def test_a_cam_asks_only_for_jerk():
     with pytest.raises(InputError, match=r"cam.toml:\d+: a cam's \[ask\] table takes jerk"):
         parse_cam(CAM.replace("jerk = true", "torque = true"), "cam.toml")
+
+
+def test_a_base_circle_too_small_to_draw_is_refused_in_one_line():
+    """Found by fuzzing: a base radius of 1e-300 mm left the turning arrow no radius."""
+    with pytest.raises(InputError, match=r"cam.toml:\d+: the base radius must be between"):
+        parse_cam(CAM.replace("base_radius = 40", "base_radius = 1e-300"), "cam.toml")
