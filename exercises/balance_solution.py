@@ -10,11 +10,9 @@ closing side against the sum of its cylinders' vectors.
 
 from __future__ import annotations
 
-import json
 import math
 from dataclasses import dataclass
 from functools import cached_property
-from pathlib import Path
 from typing import Any
 
 from ..constructions.balancing.engine import KINDS, EnginePolygons, draw_engine
@@ -25,10 +23,9 @@ from ..constructions.reference.balance import (engine_sums, one_axial_plane, qua
                                                resultant, single_cylinder, two_planes)
 from ..graphics.balance_figures import draw_end_view, draw_polygon, draw_side_view
 from ..graphics.plot import Series, draw_line_plot
-from ..graphics.svg import to_svg
 from ..graphics.train_table import draw_train_table
 from .rotor_file import BalanceExercise
-from .solution_files import write_solution
+from .solution_files import ChapterFiles
 
 __all__ = ["BalanceSolution", "solve_balance"]
 
@@ -42,7 +39,7 @@ def _angle(v: tuple[float, float]) -> float:
 
 
 @dataclass(frozen=True)
-class BalanceSolution:
+class BalanceSolution(ChapterFiles):
     """A solved balancing exercise (see :func:`solve_balance`)."""
 
     exercise: BalanceExercise
@@ -340,16 +337,6 @@ class BalanceSolution:
                               subtitle=f"{e.balanced:g} of the reciprocating mass balanced "
                                        "by a rotating mass opposite the crank")
 
-    def files(self) -> dict[str, str]:
-        """Every file as text, by name."""
-        files = {f"{stem}.svg": to_svg(fig) for stem, fig in self.figures.items()}
-        files["steps.md"] = self.steps()
-        files["results.json"] = json.dumps(self.results, indent=2, ensure_ascii=False) + "\n"
-        return files
-
-    def write(self, folder: str | Path, *, pdf: bool = True) -> list[Path]:
-        """Write the files into ``folder``, all or nothing."""
-        return write_solution(self.files(), folder, pdf=pdf)
 
 
 def solve_balance(ex: BalanceExercise) -> BalanceSolution:

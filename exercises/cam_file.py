@@ -14,16 +14,15 @@ from pathlib import Path
 from typing import Any
 
 from ..constructions.cams.displacement import Segment
-from ..constructions.errors import InputError
 from ..constructions.model import LENGTH_UNITS
 from ..constructions.reference.cam_laws import BLEND, LAWS
 from ..constructions.reference.cam_profile import Follower, arm_start, prime_radius
-from .mechanism_file import SourceMap, file_number, read_source, read_toml
+from .mechanism_file import file_number, read_source
+from .table_file import SPEEDS, Tables
 
 __all__ = ["CamExercise", "is_cam", "load_cam", "parse_cam"]
 
 _TOP = ("name", "source", "description", "units", "cam", "follower", "segment", "ask")
-_SPEEDS = {"rpm": 2 * math.pi / 60, "rad/s": 1.0}
 
 
 @dataclass(frozen=True)
@@ -69,36 +68,16 @@ def load_cam(path: str | Path, exercise_id: str | None = None) -> CamExercise:
 
 def parse_cam(text: str, filename: str = "<string>", exercise_id: str = "cam") -> CamExercise:
     """Parse a cam exercise from TOML text (see :func:`load_cam`)."""
-    data, where = read_toml(text, filename), SourceMap(text)
-
-    def fail(message: str, table: str | None = None, key: str | None = None,
-             index: int = 0) -> InputError:
-        line = (where.key(key, table, index) if key else None) or (
-            where.header(table, index) if table else None)
-        return InputError(message, file=filename, line=line)
-
-    for k in data:
-        if k not in _TOP:
-            raise fail(f"unknown table or setting '{k}' in a cam file; expected "
-                       f"{', '.join(_TOP)}", key=k)
-    units = data.get("units", {})
-    length, speed = units.get("length", "mm"), units.get("speed", "rpm")
-    if length not in LENGTH_UNITS:
-        raise fail(f"unknown length unit '{length}'; use {', '.join(LENGTH_UNITS)}", "units",
-                   "length")
-    if speed not in _SPEEDS:
-        raise fail(f"unknown speed unit '{speed}'; use rpm or rad/s", "units", "speed")
+    tables = Tables.read(text, filename, "cam", _TOP, {})
+    data, fail = tables.data, tables.fail
+    length, speed = tables.units("mm", "rpm")
     metre = LENGTH_UNITS[length]
     cam = data.get("cam")
     if not isinstance(cam, dict):
         raise fail("[cam] gives the base circle and the cam's speed: base_radius = 40, "
                    "speed = 300, sense = \"cw\"", "cam")
 
-    def number(t: dict, key: str, table: str, what: str, index: int = 0) -> float:
-        try:
-            return file_number(t.get(key), what)
-        except ValueError as e:
-            raise fail(str(e), table, key, index) from None
+    number = tables.number
 
     base = number(cam, "base_radius", "cam", "the base radius")
     if not 0 < base < 1e6:
@@ -107,7 +86,7 @@ def parse_cam(text: str, filename: str = "<string>", exercise_id: str = "cam") -
     sense = cam.get("sense", "ccw")
     if sense not in ("cw", "ccw") or rate <= 0:
         raise fail("the cam turns at a positive speed, its sense cw or ccw", "cam", "sense")
-    omega = rate * _SPEEDS[speed] * (1 if sense == "ccw" else -1)
+    omega = rate * SPEEDS[speed] * (1 if sense == "ccw" else -1)
     follower = _follower(data.get("follower") or {}, base * metre, metre, length, fail)
     raw = data.get("segment")
     if not isinstance(raw, list) or not raw:

@@ -10,11 +10,9 @@ the chain rule's α terms vanish and jerk is y‴ω³.
 
 from __future__ import annotations
 
-import json
 import math
 from dataclasses import dataclass
 from functools import cached_property
-from pathlib import Path
 from typing import Any
 
 from ..constructions.cams.displacement import Displacement, draw_displacement
@@ -22,10 +20,9 @@ from ..constructions.narration import narrate
 from ..constructions.reference.cam_laws import jerk_peak, motion, peaks
 from ..graphics.displacement_figure import draw_displacement_figure
 from ..graphics.plot import PlotMark, Series, draw_line_plot
-from ..graphics.svg import to_svg
 from .cam_file import CamExercise
 from .cam_layout import CamProfile, refuse_undercut
-from .solution_files import write_solution
+from .solution_files import ChapterFiles
 
 __all__ = ["CamSolution", "solve_cam"]
 
@@ -60,7 +57,7 @@ class SegmentPeaks:
 
 
 @dataclass(frozen=True)
-class CamSolution:
+class CamSolution(ChapterFiles):
     """A solved cam (see :func:`solve_cam`)."""
 
     exercise: CamExercise
@@ -275,16 +272,6 @@ class CamSolution:
                                  "method": f"{p.law} formula"}
             for p in self.peaks} if self.exercise.jerk else {}) | self.profile.quantities()}
 
-    def files(self) -> dict[str, str]:
-        """Every file as text, by name."""
-        files = {f"{stem}.svg": to_svg(fig) for stem, fig in self.figures.items()}
-        files["steps.md"] = self.steps()
-        files["results.json"] = json.dumps(self.results, indent=2, ensure_ascii=False) + "\n"
-        return files
-
-    def write(self, folder: str | Path, *, pdf: bool = True) -> list[Path]:
-        """Write the files into ``folder``, all or nothing."""
-        return write_solution(self.files(), folder, pdf=pdf)
 
 
 def _y(s, theta: float) -> float:

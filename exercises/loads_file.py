@@ -14,10 +14,10 @@ from __future__ import annotations
 import math
 from typing import Any
 
-from ..constructions.errors import InputError
 from ..constructions.loads import GRAVITY, Couple, Loads, Mass, PointForce
 from ..constructions.model import LENGTH_UNITS, Mechanism
 from .mechanism_file import SourceMap, file_number
+from .table_file import Tables
 
 __all__ = ["LOAD_TABLES", "read_loads"]
 
@@ -44,27 +44,8 @@ def read_loads(data: dict[str, Any], mech: Mechanism, where: SourceMap,
         return None
     metre = LENGTH_UNITS[mech.units.length]
 
-    def fail(message: str, table: str, key: str | None = None, index: int = 0) -> InputError:
-        line = (where.key(key, table, index) if key else None) or where.header(table, index)
-        return InputError(message, file=filename, line=line)
-
-    def entries(table: str) -> list[dict[str, Any]]:
-        raw = data.get(table, [])
-        raw = [raw] if isinstance(raw, dict) else raw
-        if not isinstance(raw, list) or not all(isinstance(t, dict) for t in raw):
-            raise fail(f"[[{table}]] must be a list of tables", table)
-        for i, t in enumerate(raw):
-            for k in t:
-                if k not in _KEYS[table]:
-                    raise fail(f"unknown setting '{k}' in [{table}]; expected "
-                               f"{', '.join(_KEYS[table])}", table, k, i)
-        return raw
-
-    def number(t: dict, key: str, table: str, what: str, i: int) -> float:
-        try:
-            return file_number(t.get(key), what)
-        except ValueError as e:
-            raise fail(str(e), table, key, i) from None
+    tables = Tables(data, where, filename, _KEYS)
+    fail, entries, number = tables.fail, tables.entries, tables.number
 
     def link(t: dict, table: str, i: int) -> int:
         n = t.get("link")

@@ -14,15 +14,14 @@ from pathlib import Path
 from typing import Any
 
 from ..constructions.balancing.rotor import Engine, Mass, Plane, Rotor
-from ..constructions.errors import InputError
 from ..constructions.model import LENGTH_UNITS
-from .mechanism_file import SourceMap, file_number, read_source, read_toml
+from .mechanism_file import read_source
+from .table_file import SPEEDS, Tables
 
 __all__ = ["BalanceExercise", "is_balance", "load_balance", "parse_balance"]
 
 _TOP = ("name", "source", "description", "units", "rotor", "mass", "balance", "engine",
         "cylinder")
-_SPEEDS = {"rpm": 2 * math.pi / 60, "rad/s": 1.0}
 _KEYS = {"rotor": ("speed",), "mass": ("name", "mass", "radius", "angle", "plane"),
          "balance": ("name", "plane", "radius", "mass"),
          "engine": ("speed", "crank", "rod", "reciprocating", "balanced", "at"),
@@ -64,54 +63,19 @@ def load_balance(path: str | Path, exercise_id: str | None = None) -> BalanceExe
 def parse_balance(text: str, filename: str = "<string>",
                   exercise_id: str = "rotor") -> BalanceExercise:
     """Parse a balancing exercise from TOML text (see :func:`load_balance`)."""
-    data, where = read_toml(text, filename), SourceMap(text)
-
-    def fail(message: str, table: str | None = None, key: str | None = None,
-             index: int = 0) -> InputError:
-        line = (where.key(key, table, index) if key else None) or (
-            where.header(table, index) if table else None)
-        return InputError(message, file=filename, line=line)
-
-    for k in data:
-        if k not in _TOP:
-            raise fail(f"unknown table or setting '{k}' in a balancing file; expected "
-                       f"{', '.join(_TOP)}", key=k)
+    t = Tables.read(text, filename, "balancing", _TOP, _KEYS)
+    data, fail, entries, number = t.data, t.fail, t.entries, t.number
     if "rotor" in data and "engine" in data:
         raise fail("a file is a rotor or an engine, not both", "engine")
-    units = data.get("units", {})
-    length, speed_unit = units.get("length", "m"), units.get("speed", "rad/s")
-    if length not in LENGTH_UNITS:
-        raise fail(f"unknown length unit '{length}'; use {', '.join(LENGTH_UNITS)}", "units",
-                   "length")
-    if speed_unit not in _SPEEDS:
-        raise fail(f"unknown speed unit '{speed_unit}'; use rpm or rad/s", "units", "speed")
+    length, speed_unit = t.units("m", "rad/s")
     metre = LENGTH_UNITS[length]
-
-    def entries(table: str) -> list[dict[str, Any]]:
-        raw = data.get(table, [])
-        raw = [raw] if isinstance(raw, dict) else raw
-        if not isinstance(raw, list) or not all(isinstance(t, dict) for t in raw):
-            raise fail(f"[[{table}]] must be a list of tables", table)
-        for i, t in enumerate(raw):
-            for k in t:
-                if k not in _KEYS[table]:
-                    raise fail(f"unknown setting '{k}' in [{table}]; expected "
-                               f"{', '.join(_KEYS[table])}", table, k, i)
-        return raw
-
-    def number(t: dict, key: str, table: str, what: str, i: int = 0,
-               default: float | None = None) -> float:
-        try:
-            return file_number(t.get(key, default), what)
-        except ValueError as e:
-            raise fail(str(e), table, key, i) from None
 
     def speed(table: str) -> float:
         (t,) = entries(table)
         v = number(t, "speed", table, "the speed")
         if not v > 0:
             raise fail(f"the speed must be positive, got {v:g}", table, "speed")
-        return v * _SPEEDS[speed_unit]
+        return v * SPEEDS[speed_unit]
 
     common = dict(id=exercise_id, name=str(data.get("name", exercise_id)),
                   source=str(data.get("source", "")),

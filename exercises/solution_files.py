@@ -11,6 +11,7 @@ so an error leaves the folder as it was.
 
 from __future__ import annotations
 
+import json
 import math
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -241,6 +242,24 @@ def write_solution(files: dict[str, str], out_dir: str | Path, *, pdf: bool = Tr
                 k += len(texts)
             pdfs["solution.pdf"] = pdf_pages(made)
     return write_folder({**files, **pdfs}, out_dir)
+
+
+class ChapterFiles:
+    """The files of a chapter's solution (a gear train's, a cam's, a rotor's): each figure's
+    SVG, steps.md and results.json, written as a linkage's are. The solution gives
+    ``figures``, ``steps()`` and ``results``."""
+
+    def files(self) -> dict[str, str]:
+        """Every file as text, by name."""
+        files = {f"{stem}.svg": to_svg(fig) for stem, fig in self.figures.items()}
+        files["steps.md"] = self.steps()
+        files["results.json"] = json.dumps(self.results, indent=2, ensure_ascii=False) + "\n"
+        return files
+
+    def write(self, folder: str | Path, *, pdf: bool = True) -> list[Path]:
+        """Write the files into ``folder`` (with a PDF of each figure when ``pdf``), all or
+        nothing."""
+        return write_solution(self.files(), folder, pdf=pdf)
 
 
 # ----- figures ---------------------------------------------------------------------------

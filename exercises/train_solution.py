@@ -7,13 +7,11 @@ two are the same fraction: its relative error is 0, or the check fails.
 
 from __future__ import annotations
 
-import json
 import math
 import re
 from dataclasses import dataclass
 from fractions import Fraction
 from functools import cached_property
-from pathlib import Path
 from typing import Any
 
 from ..constructions.gears.involute import InvoluteMesh, draw_involute_mesh, least_teeth_drawn
@@ -24,12 +22,11 @@ from ..constructions.narration import narrate, significant
 from ..constructions.reference.gear_mesh import (MeshReference, involute_miss, least_teeth,
                                                  mesh_reference)
 from ..constructions.reference.willis import willis_speeds
-from ..graphics.svg import to_svg
 from ..graphics.involute_figure import draw_involute_figure
 from ..graphics.kutzbach_figure import draw_kutzbach_figure
 from ..graphics.train_schematic import draw_train_schematic
 from ..graphics.train_table import draw_train_table
-from .solution_files import write_solution
+from .solution_files import ChapterFiles
 from .train_file import MESH_ASKS, TrainExercise, ask_symbol
 
 __all__ = ["TrainSolution", "solve_train"]
@@ -62,7 +59,7 @@ class TrainQuantity:
 
 
 @dataclass(frozen=True)
-class TrainSolution:
+class TrainSolution(ChapterFiles):
     """A solved gear train (see :func:`solve_train`)."""
 
     exercise: TrainExercise
@@ -314,18 +311,6 @@ class TrainSolution:
                     "value": w, "rel_error": abs(w - q.si) / max(abs(q.si), 1e-300)}
         return {"exercise": self.exercise.id, "positions": [], "quantities": qs}
 
-    def files(self) -> dict[str, str]:
-        """Every file as text, by name: the figures' SVG, steps.md and results.json."""
-        figures = self.figures
-        files = {f"{stem}.svg": to_svg(fig) for stem, fig in figures.items()}
-        files["steps.md"] = self.steps()
-        files["results.json"] = json.dumps(self.results, indent=2, ensure_ascii=False) + "\n"
-        return files
-
-    def write(self, folder: str | Path, *, pdf: bool = True) -> list[Path]:
-        """Write the files into ``folder`` (with a PDF of each figure when ``pdf``), all or
-        nothing, as a linkage's solution is written."""
-        return write_solution(self.files(), folder, pdf=pdf)
 
 
 def _plain(x: Fraction) -> str:
