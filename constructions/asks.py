@@ -27,7 +27,8 @@ __all__ = ["Ask", "Position", "Centre", "AngularVelocity", "Velocity", "Relative
            "Rubbing", "Equivalent",
            "Mobility",
            "GrashofClass",
-           "LengthRange", "TimeRatio", "Stroke", "CentreCount", "parse_ask", "ask_names",
+           "LengthRange", "TimeRatio", "Stroke", "CentreCount", "JointForce", "DrivingTorque",
+           "parse_ask", "ask_names",
            "SYMBOLS", "symbol", "ordered"]
 
 SYMBOLS = {"omega": "ω", "alpha": "α", "theta": "θ", "A_cor_": "Aᶜ_", "An_": "Aⁿ_",
@@ -384,6 +385,35 @@ class CentreCount(_Whole):
     order: ClassVar[int] = 5
 
 
+@dataclass(frozen=True)
+class JointForce(Ask):
+    """The force of link ``by`` on link ``on`` at their joint (``F_23``), or, for a block on
+    a guide, the guide's couple on it (``T_14``)."""
+
+    by: int
+    on: int
+    letter: str = "F"
+    order: ClassVar[int] = 9
+
+    @property
+    def name(self) -> str:
+        """``F_23`` or ``T_14``."""
+        return f"{self.letter}_{self.by}{self.on}"
+
+
+@dataclass(frozen=True)
+class DrivingTorque(Ask):
+    """The torque the driver must put on the input link ``link`` (``T2``)."""
+
+    link: int
+    order: ClassVar[int] = 9
+
+    @property
+    def name(self) -> str:
+        """``T2``."""
+        return f"T{self.link}"
+
+
 _POINT = r"([A-Za-z][A-Za-z0-9_']*)"
 _PLAIN = r"([A-Za-z][A-Za-z0-9']*)"      # a point where an underscore follows
 _GRAMMAR: tuple[tuple[re.Pattern, callable], ...] = tuple(
@@ -414,6 +444,8 @@ _GRAMMAR: tuple[tuple[re.Pattern, callable], ...] = tuple(
         (r"time_ratio", lambda m: TimeRatio()),
         (r"stroke", lambda m: Stroke()),
         (r"n_centres", lambda m: CentreCount()),
+        (r"([FT])_(\d)(\d)", lambda m: JointForce(int(m[2]), int(m[3]), m[1])),
+        (r"T(\d+)", lambda m: DrivingTorque(int(m[1]))),
     ))
 
 

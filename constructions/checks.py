@@ -245,6 +245,8 @@ _RULES: dict[type, Callable[[dict, dict, float], tuple[dict, dict, float]]] = {
     A.Sliding: _vector, A.AccelerationPart: _vector,
     A.TimeRatio: _relative, A.Stroke: _relative, A.Mobility: _exact,
     A.GrashofClass: _same_class, A.LengthRange: _interval,
+    A.JointForce: lambda v, r, scale: (_vector if "vector" in r else _rate)(v, r, scale),
+    A.DrivingTorque: _rate,
 }
 
 

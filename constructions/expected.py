@@ -30,7 +30,8 @@ from .reference.rotatability import (class_by_rotation, four_bar_spans, grashof_
 
 __all__ = ["position", "centre_count", "centre", "omega", "alpha", "velocity", "acceleration",
            "relative", "acceleration_part", "coriolis", "sliding", "mobility", "grashof",
-           "length_range", "time_ratio", "stroke", "reading", "equivalent"]
+           "length_range", "time_ratio", "stroke", "reading", "equivalent", "joint_force",
+           "driving_torque"]
 
 
 def position(work, ask: A.Position) -> Expected:
@@ -245,3 +246,23 @@ def stroke(work, ask: A.Stroke) -> Expected:
     if point is None:
         raise InputError(WHY_NOT[A.Stroke])
     return Expected({"value": _limits(work).stroke, "point": point})
+
+
+def _statics(work):
+    """The Newton–Euler solution of the position's forces, solved once."""
+    from .reference.kinetostatics import balance
+
+    return work.shared("statics", lambda: balance(work.reference, work.kinematics,
+                                                  work.loads))
+
+
+def joint_force(work, ask: A.JointForce) -> Expected:
+    """The joint's force (or a block's couple) by every link's Newton–Euler equations."""
+    j = _statics(work).joint(ask.name)
+    return Expected({"value": j.moment} if ask.letter == "T" else vector_value(*j.force))
+
+
+def driving_torque(work, ask: A.DrivingTorque) -> Expected:
+    """The driving torque by the same equations (the balance of power agrees with it: see
+    :func:`~.reference.kinetostatics.power_torque`)."""
+    return Expected({"value": _statics(work).torque})

@@ -117,8 +117,10 @@ class Work:
 
     def __init__(self, mechanism: Mechanism, asks: tuple[A.Ask, ...], chosen: tuple[str, ...],
                  stated: dict[str, float] | None = None, room: tuple[float, float] = ROOM,
-                 reference: Mechanism | None = None):
+                 reference: Mechanism | None = None, loads=None):
         self.mechanism = mechanism
+        self.loads = loads
+        """The masses, forces and couples the force polygons take (:class:`~.loads.Loads`)."""
         self.room = room
         self.reference = reference or mechanism
         self.asks = asks
@@ -194,6 +196,13 @@ class Work:
             return mechanism_size(self.kinematics)
         if isinstance(ask, A.LengthRange):
             return max(grashof_class(m).lengths)
+        if isinstance(ask, (A.JointForce, A.DrivingTorque)):
+            # Beside the largest joint force (times the mechanism's size, for a moment).
+            from .expected import _statics
+
+            biggest = max(math.hypot(*j.force) for j in _statics(self).joints)
+            return biggest * (mechanism_size(self.kinematics)
+                              if isinstance(ask, A.DrivingTorque) or ask.letter == "T" else 1.0)
         return 1.0
 
 

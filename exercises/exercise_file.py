@@ -188,6 +188,10 @@ def parse_exercise(text: str, filename: str = "<string>",
     loads = read_loads(loading, mech, where, filename)
     if loads is not None:
         ex = replace(ex, loads=loads)
+    elif any(isinstance(a, (A.JointForce, A.DrivingTorque)) for a in ex.asks):
+        raise InputError("forces are asked, but the file gives no loads: add [[mass]], "
+                         "[[force]] or [[couple]] tables (see the README)", file=filename,
+                         line=where.key("find", "ask") or where.header("ask"), key="ask.find")
     if ask is not None and ex.without_motion:     # a bare mechanism file may still be drawn
         raise InputError(ex.without_motion, file=filename,
                          line=where.key("omega", "input") or where.header("input"), key="input")

@@ -104,7 +104,8 @@ def _work(ex: Exercise, asks) -> Work:
     mech, reference, said = ex.mechanism, None, None
     if mech.given is not None:
         mech, reference, said = convert(mech)
-    work = Work(mech, asks, ex.methods, ex.stated, room(paper(ex.paper)), reference=reference)
+    work = Work(mech, asks, ex.methods, ex.stated, room(paper(ex.paper)), reference=reference,
+                loads=ex.loads)
     if said:
         work.note(said)
     return work

@@ -284,6 +284,17 @@ def _figure(sol: Solution, spec: FigureSpec, answers) -> _Sketch:
     c, name = asm, sol.exercise.mechanism.name
     if spec.kind == "polygons":
         return _worked_page(sol, answers)
+    if spec.kind == "forces":
+        from ..constructions.force_polygons import drawn_forces
+        from ..graphics.force_figure import draw_force_figure
+
+        forces, sheet = drawn_forces(work), paper(sol.exercise.paper)
+        where = f" at {sol.position.label}" if sol.position else ""
+        shown = _shown(c, answers, asm.position_steps)
+        return _Sketch(spec.stem, spec.heading, lambda: on_sheet(draw_force_figure(
+            c, forces.scale, f"{name}: force polygons{where}"), sheet), shown,
+            (("Inertia loads read off the acceleration polygon", Panel.ACCELERATION, shown),
+             ("The force polygons", Panel.FORCE, shown)))
     if spec.kind == "circle diagram":
         every = slice(c, [s.id for s in c if s.kind is Kind.CENTRE], base=asm.position_steps)
         sheet = paper(sol.exercise.paper)
@@ -533,6 +544,13 @@ def _show(v: dict, units, name: str = "", figures: int = 6) -> str:
     if v.get("at_infinity"):
         dx, dy = _quiet_pair(v["direction"])
         return f"at infinity, direction ({_num(dx, '.4f')}, {_num(dy, '.4f')})"
+    if "vector" in v and name.startswith("F_"):        # a joint force, in newtons
+        x, y = v["vector"]
+        return f"{_num(v['value'], spec)} N at {_num(_direction(x, y), '.4g')}°"
+    if name.startswith("T") and name[1:2] in "_0123456789" and name != "T":
+        w = v["value"]                                  # a couple or the driving torque
+        sense = " (ccw)" if w > 0 else " (cw)" if w < 0 else ""
+        return f"{_num(w, spec)} N·m{sense}"
     if "vector" in v:
         x, y = v["vector"]
         per = "/s²" if name.startswith("A") else "/s"     # A_B, A_cor_B, An_B/A, A_slide_B

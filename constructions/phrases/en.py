@@ -195,6 +195,25 @@ PHRASES: dict[str, str] = {
                       "crank's line at θᵢ, and the secondary (direct) cranks at 2θᵢ.",
     "balance.engine": "The {kind} polygon: lay off each cylinder's vector along its crank at "
                       "{order}, head to tail.",
+    "force.centre": "Mark link {link}'s centre of mass G{link} and join it to {k}.",
+    "force.image": "On the acceleration polygon, from the tip of {k} lay off the normal part "
+                   "ω²·{k}G{link} = {n} toward {k}, then the tangential part α·{k}G{link} = "
+                   "{t} square to it: g{link}′, the image of G{link}. Link {link}'s inertia "
+                   "force is −m·a_G, a_G read from o_a to g{link}′; its inertia couple −I·α.",
+    "force.lay": "Lay off {label} = {size} at the force scale, from the last tip.",
+    "force.torque": "Link {d}'s moments about {o}: the driving torque T{d} = {torque}.",
+    "force.dyad": "The force polygon of links {i} and {j} together: lay off every known load "
+                  "on them head to tail (weights, inertia forces, external forces), at the "
+                  "force scale.",
+    "force.tangential": "{name}ᵗ, the part of {name} square to the line from {pin} to {about}: "
+                        "link {link}'s moments about {about} give it (Fᵗ·length = −ΣM); lay it "
+                        "off next.",
+    "force.close": "Close the polygon of links {i} and {j}: through its end a line along the "
+                   "unknown part at the far joint, through its start a line along the coupler; "
+                   "where they cross gives both parts, and so each joint force.",
+    "force.driver": "Link {d}'s polygon (the crank): its own loads and the pull of link {i} on it, "
+                    "closed by the frame's force at {o}; its moments about {o} give the "
+                    "driving torque.",
     "gears.locked": "Row 1: lock the whole train, {arm} with it, and turn it +1 "
                     "(counter-clockwise): every member turns +1.",
     "gears.held": "Row 2: hold {arm} and turn {fixed}, the fixed member, −1 turn:",

@@ -1,0 +1,417 @@
+"""Graphical kinetostatics: the joint forces and the driving torque by force polygons, link by
+link, as the textbooks teach it, the inertia loads read off the acceleration polygon.
+
+**Inertia (D'Alembert).** Each link's centre of mass G gets its image g′ on the acceleration
+polygon: from the tip k′ of a point K of the link, the normal part ω²·KG toward K, then the
+tangential part α·KG square to it. Its inertia force −m·a_G is the vector g′ → o_a times
+m; its inertia couple is −I·α. With its weight and the external loads, every load on each
+link is then known.
+
+**The dyad, from the output back to the driver** (a four-bar's coupler and rocker, or a
+slider-crank's rod and block). The pin force F_A at the coupler's outer pin A is split
+into its part square to AB, found from the coupler's moments about the middle pin B
+(F_Aᵗ·AB = −ΣM_B), and its part along AB, unknown. A rocker's pin at its frame pivot C is
+split the same way about B; a block's guide pushes square to the guide. The dyad's force
+polygon lays every known load and the two square parts head to tail; a line along AB
+through its start and a line along CB (or square to the guide) through its end close it
+where they cross. The middle pin's force is read off one link's own polygon, and a block's
+couple from its moments about B.
+
+**The driver.** The coupler's pull on the crank and the crank's loads close on the frame's
+force at its pivot, and the moments about the pivot give the driving torque.
+
+Each act is a recorded step in the FORCE panel, drawn at a force scale (drawing metres per
+newton); the forces are read back off it.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+from . import geometry as g
+from . import asks as A
+from .acceleration_polygon import drawn_acceleration_polygon
+from .checks import Answer, FigureSpec, vector_value
+from .errors import TarsimError
+from .loads import Loads
+from .model import Mechanism, SlideKind
+from .narration import phrase
+from .record import Construction, Kind, Panel, Ref, Role
+from .scales import nice
+from .velocity_polygon import drawn_velocity_polygon
+
+__all__ = ["FORCES", "Forces", "answer", "draw_forces", "force_names", "forces_askable",
+           "drawn_forces"]
+
+Vec = tuple[float, float]
+
+FORCES = FigureSpec("forces", "Force polygons", "force polygons", kind="forces")
+"""The figure the force polygons are drawn in."""
+
+
+@dataclass
+class Forces:
+    """The drawn force analysis: each joint force (N, on link ``on`` from ``by``) as read off
+    its polygon, each block's couple (N·m), the driving torque (N·m, CCW +), the scale, and
+    the steps that are each answer."""
+
+    scale: float
+    joints: dict[str, Vec] = field(default_factory=dict)
+    couples: dict[str, float] = field(default_factory=dict)
+    torque: float = 0.0
+    refs: dict[str, tuple[Ref, ...]] = field(default_factory=dict)
+    inertia: dict[int, tuple[Vec, float]] = field(default_factory=dict)
+    """Each massive link's inertia force (N) and couple (N·m), as read off the polygon."""
+    every: tuple[Ref, ...] = ()
+    """Every step of the analysis, for its figure and its steps: each answer shows it all."""
+
+
+@dataclass(frozen=True)
+class _Shape:
+    """The mechanism as the dyad method sees it: driver d (pivot O, pin A to the coupler),
+    coupler i (pins A and B), output j (pin B; pivot C, or a block on a frame guide)."""
+
+    d: int
+    i: int
+    j: int
+    o: str
+    a: str
+    b: str
+    c: str | None
+    guide: tuple[float, float] | None
+
+
+def force_names(mech: Mechanism) -> set[str]:
+    """Every joint force, block couple and driving torque of ``mech``, as an exercise asks
+    them: F_23 (of link 2 on link 3), T_14 (a block's couple from its guide), T2."""
+    out = {f"T{mech.drive.link}"}
+    for point in mech.point_names:
+        carriers = sorted(mech.links_at(point))
+        out |= {f"F_{carriers[0]}{other}" for other in carriers[1:]}
+    for s in mech.slides:
+        out.add(f"F_{s.guide_link}{s.link}")
+        if s.kind is SlideKind.BLOCK:
+            out.add(f"T_{s.guide_link}{s.link}")
+    return out
+
+
+def shape_of(mech: Mechanism) -> _Shape:
+    """The driver and its dyad.
+
+    Raises
+    ------
+    TarsimError
+        If the mechanism is not a four-bar or a slider-crank (the dyads drawn so far).
+    """
+    why = ("the force polygons are drawn for a four-bar and a slider-crank so far (a crank "
+           "and one dyad); this mechanism's forces are in the analytic reference only")
+    moving = [k.number for k in mech.links if k.number != 1]
+    d = mech.drive.link
+    if len(moving) != 3 or mech.arcs or any(s.rolling or s.contact for s in mech.slides):
+        raise TarsimError(why)
+    crank = mech.link(d)
+    if len(crank.names) != 2 or mech.links_at(crank.names[0]) != tuple(sorted((1, d))):
+        raise TarsimError(why)
+    o, a = crank.names
+    coupler = [n for n in mech.links_at(a) if n != d]
+    if len(coupler) != 1:
+        raise TarsimError(why)
+    i = coupler[0]
+    j = next(n for n in moving if n not in (d, i))
+    shared = [p for p in mech.link(i).names if p != a and j in mech.links_at(p)]
+    if len(mech.link(i).names) != 2 or len(shared) != 1:
+        raise TarsimError(why)
+    b = shared[0]
+    if not mech.slides:
+        rest = [p for p in mech.link(j).names if p != b]
+        if len(mech.link(j).names) != 2 or set(mech.links_at(rest[0])) != {1, j}:
+            raise TarsimError(why)
+        return _Shape(d, i, j, o, a, b, rest[0], None)
+    (s,) = mech.slides if len(mech.slides) == 1 else (None,)
+    if (s is None or s.kind is not SlideKind.BLOCK or s.guide_link != 1 or s.link != j
+            or s.point != b or mech.link(j).names != (b,)):
+        raise TarsimError(why)
+    return _Shape(d, i, j, o, a, b, None, s.direction)
+
+
+def draw_forces(work) -> Forces:
+    """Draw the force analysis of the work's position (its loads in ``work.loads``).
+
+    Raises
+    ------
+    TarsimError
+        If the mechanism is not one the dyad method here draws, or has no loads.
+    """
+    mech: Mechanism = work.mechanism
+    loads: Loads | None = getattr(work, "loads", None)
+    if loads is None:
+        raise TarsimError("forces need loads: give [[mass]], [[force]] or [[couple]] tables")
+    sh = shape_of(mech)
+    c: Construction = work.assembly
+    at = {name: c.point(name).xy for name in mech.point_names}
+    inertia = _inertia(work, loads, at)
+    known = {k: _loads(work, loads, k, at, inertia) for k in (sh.d, sh.i, sh.j)}
+    biggest = max([math.hypot(*f) for ls in known.values() for _, f, _, _ in ls] + [1e-300])
+    scale = 0.08 / nice(biggest)                   # the largest load about 80 drawing mm
+    out = Forces(scale)
+    out.inertia = inertia
+    draw = _Drafter(c, scale)
+    space = {key: c.draw(f"force:line:{key}", "line_through", c.points[p], c.points[q],
+                         kind=Kind.LINE)
+             for key, (p, q) in {"AB": (sh.a, sh.b)}.items()}
+    # ----- the dyad ------------------------------------------------------------------------
+    pole = c.give("force:S", g.Point(0.0, 0.0), label="", panel=Panel.FORCE)
+    c.draw("force:say:dyad", "mark", pole, panel=Panel.FORCE,
+           phrase=phrase("force.dyad", i=sh.i, j=sh.j))
+    tip = pole
+    for k in (sh.i, sh.j):
+        for n, (_, f, _, name) in enumerate(known[k]):
+            if f != (0.0, 0.0):
+                tip = draw.vector(f"{k}:{n}", tip, f, label=name)
+    t_a = _square(at[sh.a], at[sh.b], known[sh.i])       # F_{d i}ᵗ on i at A
+    tip = draw.vector(f"t:{sh.d}{sh.i}", tip, t_a, phrase(
+        "force.tangential", name=f"F_{sh.d}{sh.i}", pin=sh.a, link=sh.i, about=sh.b),
+        label=f"F_{sh.d}{sh.i}ᵗ")
+    if sh.c is not None:
+        t_c = _square(at[sh.c], at[sh.b], known[sh.j])   # F_{1 j}ᵗ on j at C
+        tip = draw.vector(f"t:1{sh.j}", tip, t_c, phrase(
+            "force.tangential", name=f"F_1{sh.j}", pin=sh.c, link=sh.j, about=sh.b),
+            label=f"F_1{sh.j}ᵗ")
+        far = c.draw("force:line:CB", "line_through", c.points[sh.c], c.points[sh.b],
+                     kind=Kind.LINE)
+    else:
+        t_c = (0.0, 0.0)
+        guide = c.give("force:guide", g.Line(-sh.guide[1], sh.guide[0], 0.0), label="",
+                       panel=Panel.FORCE)
+        far = c.draw("force:line:N", "perpendicular_through", pole, guide, kind=Kind.LINE,
+                     panel=Panel.FORCE)
+    along_end = c.draw("force:n:end", "parallel_through", tip, far, kind=Kind.LINE,
+                       panel=Panel.FORCE)
+    along_start = c.draw("force:n:start", "parallel_through", pole, space["AB"],
+                         kind=Kind.LINE, panel=Panel.FORCE)
+    cross = c.draw("force:X", "intersect_lines", along_end, along_start, label="x",
+                   panel=Panel.FORCE, phrase=phrase("force.close", i=sh.i, j=sh.j))
+    end_vec = draw.join("n:far", tip, cross, label=f"F_1{sh.j}" + ("ⁿ" if sh.c else ""))
+    start_vec = draw.join("n:AB", cross, pole, label=f"F_{sh.d}{sh.i}ⁿ")
+    n_far, n_a = draw.read(end_vec), draw.read(start_vec)
+    f_di = (t_a[0] + n_a[0], t_a[1] + n_a[1])
+    joint_j = (t_c[0] + n_far[0], t_c[1] + n_far[1])
+    out.joints[f"F_{min(sh.d, sh.i)}{max(sh.d, sh.i)}"] = _on(f_di, sh.d < sh.i)
+    frame_j = f"F_1{sh.j}"
+    out.joints[frame_j] = joint_j
+    # The middle pin, from the output's own balance: F_ij = −(its loads + the frame's).
+    loads_j = _sum(f for _, f, _, _ in known[sh.j])
+    f_ij = (-(loads_j[0] + joint_j[0]), -(loads_j[1] + joint_j[1]))    # i on j
+    out.joints[f"F_{min(sh.i, sh.j)}{max(sh.i, sh.j)}"] = _on(f_ij, sh.i < sh.j)
+    refs_dyad = (cross, end_vec, start_vec)
+    out.refs = {name: refs_dyad for name in out.joints}
+    if sh.c is None:
+        # The block's couple from the guide: its moments about B vanish.
+        couple = -_moment(at[sh.b], known[sh.j])
+        out.couples[f"T_1{sh.j}"] = couple
+        out.refs[f"T_1{sh.j}"] = refs_dyad
+    # ----- the driver ----------------------------------------------------------------------
+    f_id = (-f_di[0], -f_di[1])                        # the coupler on the crank, at A
+    # The crank's polygon to the right of the dyad's, clear of it.
+    drawn = [s.output.xy for s in c if s.panel is Panel.FORCE and isinstance(s.output, g.Point)
+             and not s.output.is_at_infinity and not s.id.startswith(("force:o:", "force:h:"))]
+    chain = [(0.0, 0.0)]
+    for f in [f for _, f, _, _ in known[sh.d]] + [f_id]:
+        chain.append((chain[-1][0] + f[0] * scale, chain[-1][1] + f[1] * scale))
+    right = max(x for x, _ in drawn) - min(x for x, _ in chain) + 0.03
+    start = c.give("force:S2", g.Point(right, 0.0), label="", panel=Panel.FORCE)
+    c.draw("force:say:driver", "mark", start, panel=Panel.FORCE,
+           phrase=phrase("force.driver", d=sh.d, i=sh.i, o=sh.o))
+    tip = start
+    for n, (_, f, _, name) in enumerate(known[sh.d]):
+        if f != (0.0, 0.0):
+            tip = draw.vector(f"{sh.d}:{n}", tip, f, label=name)
+    tip = draw.vector(f"{sh.i}on{sh.d}", tip, f_id, label=f"F_{sh.i}{sh.d}")
+    closing = draw.join("frame", tip, start, role=Role.RESULT, label=f"F_1{sh.d}")
+    f_1d = draw.read(closing)
+    out.joints[f"F_1{sh.d}"] = f_1d
+    out.refs[f"F_1{sh.d}"] = (closing,)
+    arm = (at[sh.a][0] - at[sh.o][0], at[sh.a][1] - at[sh.o][1])
+    torque = -(_moment(at[sh.o], known[sh.d]) + arm[0] * f_id[1] - arm[1] * f_id[0])
+    out.torque = torque
+    said = c.draw("force:say:torque", "mark", start, panel=Panel.FORCE, phrase=phrase(
+        "force.torque", d=sh.d, o=sh.o, torque=f"{torque:.6g} N·m"))
+    out.refs[f"T{sh.d}"] = (closing, said)
+    out.every = tuple(s.id for s in c if s.id.startswith("force:"))
+    return out
+
+
+def _on(f: Vec, forward: bool) -> Vec:
+    """A pin force named F_lo hi (of the lower-numbered link on the higher): ``f`` is of the
+    first-named link on the second when ``forward``, else turned round."""
+    return f if forward else (-f[0], -f[1])
+
+
+class _Drafter:
+    """Lays vectors head to tail in the FORCE panel at a force scale."""
+
+    def __init__(self, c: Construction, scale: float):
+        self.c, self.scale, self.count = c, scale, 0
+
+    def vector(self, name: str, tip: Ref, f: Vec, said=None, label: str = "") -> Ref:
+        """From ``tip`` lay off ``f`` (N): carried with dividers to the tip."""
+        self.count += 1
+        base = self.c.give(f"force:o:{self.count}", g.Point(0.0, 0.0), label="",
+                           panel=Panel.FORCE)
+        head = self.c.give(f"force:h:{self.count}", g.Point(f[0] * self.scale,
+                                                            f[1] * self.scale),
+                           label="", panel=Panel.FORCE)
+        nxt = self.c.draw(f"force:{name}", "transfer", tip, base, head, panel=Panel.FORCE)
+        self.c.draw(f"force:v:{name}", "join", tip, nxt, panel=Panel.FORCE, label=label,
+                    phrase=said or phrase("force.lay", label=label or "the load",
+                                          size=f"{math.hypot(*f):.4g} N"))
+        return nxt
+
+    def join(self, name: str, a: Ref, b: Ref, role: Role = Role.CONSTRUCTION,
+             label: str = "") -> Ref:
+        return self.c.draw(f"force:v:{name}", "join", a, b, panel=Panel.FORCE, role=role,
+                           label=label)
+
+    def read(self, seg: Ref) -> Vec:
+        s = self.c.output(seg)
+        (ax, ay), (bx, by) = s.start.xy, s.end.xy
+        return ((bx - ax) / self.scale, (by - ay) / self.scale)
+
+
+def _sum(vectors) -> Vec:
+    vs = list(vectors)
+    return (math.fsum(v[0] for v in vs), math.fsum(v[1] for v in vs))
+
+
+def _moment(about: Vec, loads) -> float:
+    """Σ (p − about) × F + Σ M of ``loads`` (where, force, couple, name)."""
+    return math.fsum((p[0] - about[0]) * f[1] - (p[1] - about[1]) * f[0] + m
+                     for p, f, m, _ in loads)
+
+
+def _square(pin: Vec, middle: Vec, loads) -> Vec:
+    """The part of a pin force at ``pin`` square to pin → middle that holds the link's other
+    loads about ``middle``: F ᵗ·|pin middle| balances their moment."""
+    dx, dy = pin[0] - middle[0], pin[1] - middle[1]
+    length = math.hypot(dx, dy)
+    u = (-dy / length, dx / length)                # square to the line
+    t = -_moment(middle, loads) / (dx * u[1] - dy * u[0])
+    return (t * u[0], t * u[1])
+
+
+def _world(work, link: int, local: Vec, at) -> Vec:
+    """A point of ``link`` given in its own frame, where the compass drew the link."""
+    k = work.mechanism.link(link)
+    names = k.names
+    (ox, oy) = at[names[0]]
+    if len(names) >= 2:
+        (lx, ly), (mx, my) = k.local(names[0]), k.local(names[1])
+        (px, py) = at[names[1]]
+        turn = math.atan2(py - oy, px - ox) - math.atan2(my - ly, mx - lx)
+    else:
+        (lx, ly), turn = k.local(names[0]), 0.0
+        s = next((s for s in work.mechanism.slides if s.link == link), None)
+        if s is not None:
+            turn = math.atan2(s.direction[1], s.direction[0])
+    cx, cy = math.cos(turn), math.sin(turn)
+    rx, ry = local[0] - lx, local[1] - ly
+    return (ox + cx * rx - cy * ry, oy + cy * rx + cx * ry)
+
+
+def _inertia(work, loads: Loads, at) -> dict[int, tuple[Vec, float]]:
+    """Each massive link's inertia force and couple, its a_G read off the acceleration
+    polygon (G's image drawn by the normal and tangential parts from a tip of the link)."""
+    mech = work.mechanism
+    ap, vp = drawn_acceleration_polygon(work), drawn_velocity_polygon(work)
+    c: Construction = work.assembly
+    out = {}
+    for m in loads.masses:
+        k = mech.link(m.link)
+        g_at = _world(work, m.link, m.centre, at)
+        omega = mech.drive.omega if m.link == mech.drive.link else vp.rates.get(m.link, 0.0)
+        alpha = mech.drive.alpha if m.link == mech.drive.link else ap.rates.get(m.link, 0.0)
+        ref = next(n for n in k.names if n in ap.tips or 1 in mech.links_at(n))
+        k_tip = ap.tips[ref] if ref in ap.tips else ap.pole
+        r = (g_at[0] - at[ref][0], g_at[1] - at[ref][1])
+        size = math.hypot(*r)
+        if size == 0.0:
+            image = k_tip
+        else:
+            gp = c.give(f"force:G{m.link}", g.Point(*g_at), label=f"G{m.link}")
+            line = c.draw(f"force:KG{m.link}", "line_through", gp, c.points[ref],
+                          kind=Kind.LINE, phrase=phrase("force.centre", link=m.link, k=ref))
+            normal = c.draw(f"force:an{m.link}", "parallel_through", k_tip, line,
+                            kind=Kind.LINE, panel=Panel.ACCELERATION)
+            n_end = c.draw(f"force:anG{m.link}", "lay_off", k_tip, normal,
+                           length=omega * omega * size * ap.scale, panel=Panel.ACCELERATION)
+            across = c.draw(f"force:at{m.link}", "perpendicular_through", n_end, normal,
+                            kind=Kind.LINE, panel=Panel.ACCELERATION)
+            d = c.output(across).direction
+            want = (-r[1] * alpha, r[0] * alpha)             # α × r
+            sign = 1.0 if d[0] * want[0] + d[1] * want[1] >= 0 else -1.0
+            image = c.draw(f"force:g{m.link}", "lay_off", n_end, across,
+                           length=sign * abs(alpha) * size * ap.scale, label=f"g{m.link}′",
+                           panel=Panel.ACCELERATION, phrase=phrase(
+                               "force.image", link=m.link, k=ref,
+                               n=f"{omega * omega * size:.4g} m/s²",
+                               t=f"{abs(alpha) * size:.4g} m/s²"))
+        a_g = ap.between(ap.pole, image)
+        out[m.link] = ((-m.mass * a_g[0], -m.mass * a_g[1]), -m.inertia * alpha)
+    return out
+
+
+def _loads(work, loads: Loads, link: int, at, inertia) -> list[tuple[Vec, Vec, float, str]]:
+    """Every load on ``link`` as (where, force N, couple N·m, its name): its inertia force
+    and couple, its weight, the external forces and couples."""
+    out = []
+    m = loads.mass_of(link)
+    if m is not None:
+        g_at = _world(work, link, m.centre, at)
+        force, couple = inertia[link]
+        out.append((g_at, force, couple, f"Fi{link}"))
+        if loads.gravity:
+            out.append((g_at, (0.0, -m.mass * loads.gravity), 0.0, f"W{link}"))
+    for f in loads.forces:
+        if f.link != link:
+            continue
+        p = at[f.point] if isinstance(f.point, str) else _world(work, link, f.point, at)
+        if f.resist:
+            raise TarsimError("a resisting force is drawn over a sweep only: give its "
+                              "components with force = [x, y] for the force polygons")
+        out.append((p, f.force, 0.0, f.name or f"P{link}"))
+    out += [(at[work.mechanism.link(link).names[0]], (0.0, 0.0), cp.moment, cp.name or "M")
+            for cp in loads.couples if cp.link == link]
+    return out
+
+
+def forces_askable(mech: Mechanism) -> set[str]:
+    """The forces an exercise may ask of ``mech``: its joints' and the driving torque."""
+    return force_names(mech)
+
+
+def drawn_forces(work) -> Forces:
+    """The position's force polygons, drawn once."""
+    return work.shared("forces", lambda: draw_forces(work))
+
+
+def answer(work, ask) -> Answer:
+    """A joint force, a block's couple or the driving torque, read off the force polygons.
+
+    Its conditioning is the worst of the acts it rests on: the crossing that closes the
+    dyad's polygon, and the acceleration polygon the inertia loads are read off.
+    """
+    forces = drawn_forces(work)
+    c = work.assembly
+    if isinstance(ask, A.DrivingTorque):
+        value = {"value": forces.torque}
+    elif ask.letter == "T":
+        value = {"value": forces.couples[ask.name]}
+    else:
+        value = vector_value(*forces.joints[ask.name])
+    refs = forces.refs.get(ask.name, ())
+    cond = min([c[r].conditioning for r in refs] + [1.0])
+    if work.has("acceleration polygon"):
+        cond *= drawn_acceleration_polygon(work).worst()
+    return Answer(ask, value, cond, "force polygons", refs=forces.every, figures=(FORCES,),
+                  panel=Panel.FORCE)

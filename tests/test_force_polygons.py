@@ -1,0 +1,108 @@
+"""The force polygons, drawn link by link with the inertia loads read off the acceleration
+polygon, against every link's Newton–Euler equations and against closed forms.
+
+- The engine (tests/data/engine-forces.toml) and the loaded four-bar: every joint force and
+  the driving torque as constructed, beside the analytic system: a few roundings of the
+  largest force (the checks' own tolerance, from the drawing's conditioning).
+- With only a piston mass and a gas force, the rod is a two-force member, and the driving
+  torque is the textbook's F_P·r·sin(θ + φ)/cos φ.
+- The image g′ of each centre of mass gives the solver's a_G.
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import pytest
+from click.testing import CliRunner
+
+import tarsim
+from tarsim.constructions.errors import InputError
+from tarsim.constructions.force_polygons import drawn_forces
+from tarsim.constructions.reference import solver
+from tarsim.exercises.cli import cli
+from tarsim.exercises.exercise_file import load_exercise, parse_exercise
+
+DATA = Path(__file__).parent / "data"
+
+
+@pytest.mark.parametrize("name", ["engine-forces", "four-bar-forces"])
+def test_every_force_drawn_is_the_newton_euler_one(name):
+    worked = tarsim.solve(load_exercise(DATA / f"{name}.toml"))
+    assert worked.passed
+    (sol,) = worked.positions
+    asked = {q for q in sol.quantities}
+    assert {"F_12", "F_23", "F_34", "F_14", "T2"} <= asked
+    for q in sol.quantities.values():
+        assert q.rel_error <= 1e-13, (q.name, q.rel_error)
+
+
+@pytest.mark.parametrize("deg", [30, 75, 140, 250])
+def test_the_engines_torque_is_the_textbooks_turning_moment(deg):
+    """Only the piston's 1.2 kg and 5 kN of gas, no weight: the crank effort is the
+    piston effort F_P = F_gas − m·ẍ_P along the rod, and T2 = F_P·r·sin(θ + φ)/cos φ."""
+    text = (DATA / "engine-forces.toml").read_text(encoding="utf-8")
+    text = text.replace("angle = 40", f"angle = {deg}").replace("gravity = true",
+                                                                  "gravity = false")
+    cut = text.index("[[mass]]")
+    text = text[:cut] + "[[mass]]\nlink = 4\nmass = 1.2\ncentre = \"P\"\ninertia = 1e-3\n" + \
+        text[text.index("[[force]]"):]
+    ex = parse_exercise(text, "engine.toml")
+    (sol,) = tarsim.solve(ex).positions
+    kin = solver.solve(ex.mechanism)
+    th, r, rod = math.radians(deg), 0.060, 0.240
+    phi = math.asin(r * math.sin(th) / rod)
+    effort = -5000.0 - 1.2 * kin.accelerations["P"][0]
+    want = effort * r * math.sin(th + phi) / math.cos(phi)
+    assert sol.quantities["T2"].value["value"] == pytest.approx(want, rel=1e-12)
+
+
+def test_the_image_of_each_centre_gives_the_solvers_acceleration():
+    ex = load_exercise(DATA / "four-bar-forces.toml")
+    worked = tarsim.solve(ex)
+    (sol,) = worked.positions
+    forces = drawn_forces(sol.work)
+    kin = sol.work.kinematics
+    for m in ex.loads.masses:
+        o, a = kin.origins[m.link], kin.angles[m.link]
+        g = (o[0] + math.cos(a) * m.centre[0] - math.sin(a) * m.centre[1],
+             o[1] + math.sin(a) * m.centre[0] + math.cos(a) * m.centre[1])
+        a_g = solver.point_acceleration(kin, ex.mechanism, m.link, g)
+        force, couple = forces.inertia[m.link]
+        assert force == pytest.approx((-m.mass * a_g[0], -m.mass * a_g[1]), rel=1e-12)
+        assert couple == pytest.approx(-m.inertia * kin.alphas[m.link], rel=1e-12)
+
+
+def test_forces_asked_without_loads_are_refused_at_the_ask():
+    text = (DATA / "four-bar-forces.toml").read_text(encoding="utf-8")
+    text = text[:text.index("[forces]")]
+    with pytest.raises(InputError, match=r"fb.toml:\d+: \[ask.find\] forces are asked, but "
+                                         "the file gives no loads"):
+        parse_exercise(text, "fb.toml")
+
+
+def test_a_mechanism_the_dyads_do_not_cover_is_refused_in_one_line(tmp_path):
+    text = (DATA / "crank-shaper-forces.toml").read_text(encoding="utf-8")
+    text = text.replace('find = ["dof"', 'find = ["T2", "dof"').replace(
+        "resist = 1000\nstroke = \"slow\"", "force = [-1000, 0]")
+    path = tmp_path / "cs.toml"
+    path.write_text(text, encoding="utf-8")
+    result = CliRunner().invoke(cli, ["solve", str(path), "-o", str(tmp_path / "o"),
+                                      "--no-pdf"])
+    assert result.exit_code == 1
+    assert "the force polygons are drawn for a four-bar and a slider-crank so far" in \
+        result.output
+    assert "Traceback" not in result.output
+
+
+def test_solve_writes_the_force_polygons_and_their_steps(tmp_path):
+    out = tmp_path / "f"
+    result = CliRunner().invoke(cli, ["solve", str(DATA / "engine-forces.toml"), "-o",
+                                      str(out), "--no-pdf"])
+    assert result.exit_code == 0, result.output
+    assert "T2 = −64.9688 N·m (cw)" in result.output
+    assert (out / "forces.svg").exists()
+    steps = (out / "steps.md").read_text(encoding="utf-8")
+    assert "link 3's moments about P give it" in steps
+    assert "the driving torque T2 = -64.9688 N·m" in steps
