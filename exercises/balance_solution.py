@@ -11,6 +11,7 @@ closing side against the sum of its cylinders' vectors.
 from __future__ import annotations
 
 import math
+from fractions import Fraction
 from dataclasses import dataclass
 from functools import cached_property
 from typing import Any
@@ -22,7 +23,7 @@ from ..constructions.narration import narrate
 from ..constructions.reference.balance import (engine_sums, one_axial_plane, quadrant_angle,
                                                resultant, single_cylinder, two_planes)
 from ..graphics.balance_figures import draw_end_view, draw_polygon, draw_side_view
-from ..graphics.plot import Series, draw_line_plot
+from ..graphics.plot import PlotMark, Series, draw_line_plot
 from ..graphics.train_table import draw_train_table
 from .rotor_file import BalanceExercise
 from .solution_files import ChapterFiles
@@ -301,41 +302,54 @@ class BalanceSolution(ChapterFiles):
         r = self.exercise.rotor
         ref = r.planes[0].position
         two = len(r.planes) == 2
-        heads = ["m (kg)", f"r ({unit})", "θ", f"l ({unit})", "m·r (kg·m)"] + (
-            ["m·r·l (kg·m²)"] if two else [])
+        flat = not two and len({m.plane for m in r.masses} | {ref}) == 1   # one plane: no l
+        heads = ["m (kg)", f"r ({unit})", "θ"] + ([] if flat else [f"l ({unit})"]) + [
+            "m·r (kg·m)"] + (["m·r·l (kg·m²)"] if two else [])
         rows = []
         for m in r.masses:
             rows.append((m.name, [f"{m.mass:g}", f"{m.radius / metre:g}",
-                                  f"{math.degrees(m.angle):g}°", f"{(m.plane - ref) / metre:g}",
-                                  f"{m.mass * m.radius:.4g}"] + (
+                                  f"{math.degrees(m.angle):g}°"]
+                         + ([] if flat else [f"{(m.plane - ref) / metre:g}"])
+                         + [f"{m.mass * m.radius:.4g}"] + (
                 [f"{m.mass * m.radius * (m.plane - ref):.4g}"] if two else [])))
         for p in r.planes:
             v = self.balance.product(p.name)
             size = math.hypot(*v)
             mass = p.mass if p.mass is not None else size / p.radius
             radius = p.radius if p.radius is not None else size / p.mass
-            rows.append((p.name, [f"{mass:.4g}", f"{radius / metre:.4g}", f"{_angle(v):.2f}°",
-                                  f"{(p.position - ref) / metre:g}", f"{size:.4g}"] + (
-                [f"{size * (p.position - ref):.4g}"] if two else [])))
+            rows.append((p.name, [f"{mass:.4g}", f"{radius / metre:.4g}", f"{_angle(v):.2f}°"]
+                         + ([] if flat else [f"{(p.position - ref) / metre:g}"])
+                         + [f"{size:.4g}"] + ([f"{size * (p.position - ref):.4g}"] if two
+                                              else [])))
         return draw_train_table(f"{self.exercise.name}: the table", heads, rows,
                                 ruled=[len(r.masses)], notes=[
-                                    f"l from the reference plane {r.planes[0].name}; the "
-                                    "rows under the rule are the balancing masses found"])
+                                    ("" if flat else f"l from the reference plane "
+                                     f"{r.planes[0].name}; ") + "the rows under the rule are "
+                                    "the balancing masses found"])
 
     def _single_cylinder_plot(self):
-        e, ex = self.exercise.engine, self.exercise
+        e = self.exercise.engine
         xs = [float(d) for d in range(0, 361, 2)]
         values = [single_cylinder(e, math.radians(d)) for d in xs]
-        series = [Series("primary", tuple((x, v[0]) for x, v in zip(xs, values))),
+        series = [Series("primary", tuple((x, v[0]) for x, v in zip(xs, values)),
+                         "plot_curve_dotted"),
                   Series("secondary", tuple((x, v[1]) for x, v in zip(xs, values)),
                          "plot_curve_dashed"),
-                  Series("unbalanced across the stroke",
-                         tuple((x, v[3]) for x, v in zip(xs, values)), "plot_curve_dotted")]
-        return draw_line_plot(f"{ex.name}: unbalanced forces", "crank angle θ (°)", "F (N)",
-                              series, x_range=(0.0, 360.0),
+                  Series("left along the stroke", tuple((x, v[2]) for x, v in zip(xs, values))),
+                  Series("left across the stroke",
+                         tuple((x, v[3]) for x, v in zip(xs, values)), "chord_secondary")]
+        at = math.degrees(e.at)
+        here = single_cylinder(e, e.at)
+        marks = [PlotMark(at, here[2], f"{here[2]:.4g} N"),
+                 PlotMark(at, here[3], f"{here[3]:.4g} N")]
+        share = Fraction(e.balanced).limit_denominator(12)
+        share = share if abs(float(share) - e.balanced) < 1e-9 else f"{e.balanced:g}"
+        return draw_line_plot("Unbalanced forces", "crank angle θ (°)", "F (N)",
+                              series, marks, x_range=(0.0, 360.0),
                               x_ticks=[(float(d), f"{d}") for d in range(0, 361, 30)],
-                              subtitle=f"{e.balanced:g} of the reciprocating mass balanced "
-                                       "by a rotating mass opposite the crank")
+                              subtitle=f"{share} of the reciprocating mass balanced by a "
+                                       "rotating mass opposite the crank",
+                              mark_legend=f"at θ = {at:g}°")
 
 
 

@@ -113,11 +113,16 @@ class TurningMoment:
                          "light where the driver gives more than the mean, dark where less)")
         ticks = [(k * 30.0, f"{k * 30}") for k in range(13)]
         name = self.exercise.mechanism.name
+        if r is not None:           # where the energy is highest and lowest, on this axis
+            notes.append(f"The energy is lowest at {math.degrees(r.lowest) % 360:.4g}° turned "
+                         f"(θ = {self.theta(r.lowest):.4g}°) and highest at "
+                         f"{math.degrees(r.highest) % 360:.4g}° (θ = "
+                         f"{self.theta(r.highest):.4g}°).")
         return draw_line_plot(
-            f"{name}: turning-moment diagram", f"input turned {self.turning} from θ = "
+            "Turning-moment diagram", f"input turned {self.turning} from θ = "
             f"{self.theta(0.0):g}° (°)", "T (N·m)", series, x_range=(0.0, 360.0),
             x_ticks=ticks, notes=notes, fills=fills, tags=tags,
-            subtitle=f"the driving torque, positive {self.turning}")
+            subtitle=f"{name}: the driving torque, positive {self.turning}")
 
     def _areas(self, r: Fluctuation):
         """Each energy area's outline (between curve and mean) and its label."""

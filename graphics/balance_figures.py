@@ -43,13 +43,19 @@ def draw_polygon(c: Construction, tips: Sequence[tuple[str, Ref]], closing: Ref,
     centre = [paper(p) for p in points]          # the corners, to keep words outside
     prev = paper(points[0])
     fig.add(Circle(prev, 0.7, "dot"))
-    fig.add(Text((prev[0] + 1.5, prev[1] - 2.5), "o", 3.0, "start", True))
-    for (name, _), xy in zip(tips, points[1:]):
+    # "o" behind the pole, away from the first vector and the closing side.
+    first, last = paper(points[1]), paper(points[-1])
+    away = (2 * prev[0] - first[0] - last[0], 2 * prev[1] - first[1] - last[1])
+    n = math.hypot(*away) or 1.0
+    fig.add(Text((prev[0] + 3.0 * away[0] / n, prev[1] + 3.0 * away[1] / n + 1.0), "o", 3.0,
+                 "middle", True))
+    for turn, ((name, _), xy) in enumerate(zip(tips, points[1:])):
         tip = paper(xy)
         if math.dist(prev, tip) > 0.3:
             draw_arrow(fig, prev, tip, "vector")
             mid = ((prev[0] + tip[0]) / 2, (prev[1] + tip[1]) / 2)
-            side = _outward(prev, tip, centre, 3.2, up=True)
+            # a flat polygon retraces its own line: its names go above and below in turn
+            side = _outward(prev, tip, centre, 3.2 + 2.0 * (turn // 2 % 2), up=turn % 2 == 0)
             fig.add(Text((mid[0] + side[0], mid[1] + side[1]), names.get(name, name), 2.8,
                          "middle", False))
         prev = tip
@@ -62,8 +68,8 @@ def draw_polygon(c: Construction, tips: Sequence[tuple[str, Ref]], closing: Ref,
                      "start" if side[0] >= 0 else "end", False, "normal", reading[1],
                      reading[2]))
     else:
-        fig.add(Text((prev[0] + 2.0, prev[1] - 5.0), reading[0], 3.0, "start", False,
-                     "normal", reading[1], reading[2]))
+        fig.add(Text((prev[0], prev[1] + 10.0), reading[0], 3.0, "middle", False,
+                     "normal", reading[1], reading[2]))      # under the names below the line
     draw_caption(fig, title, ["head to tail, each parallel to its radial line; the heavy "
                               "side closes it"], per_cm=per_cm, unit=unit,
                  legend=(("vector", "the vectors"), ("vector_result", "the closing side")),
@@ -99,7 +105,15 @@ def draw_end_view(c: Construction, masses: Sequence[tuple[str, float, str]], tit
     k = 10.0 / (per_cm * metre)
     fig = Figure(0.0, 0.0, title=title)
     fig.add(Circle((0.0, 0.0), 0.9, "dot"))
-    fig.add(Text((-2.0, 4.0), "O", 3.0, "end", True))
+    # "O" in the widest gap between the radial lines (the 0° one among them).
+    rays = sorted([0.0] + [math.atan2(c.output(f"P{name}").xy[1], c.output(f"P{name}").xy[0])
+                           % (2 * math.pi) for name, _, _ in masses]
+                  + [a % (2 * math.pi) for _, a, _ in found])
+    gaps = [((rays[(i + 1) % len(rays)] - a) % (2 * math.pi) or 2 * math.pi, a)
+            for i, a in enumerate(rays)]
+    width, at = max(gaps)
+    mid = at + width / 2
+    fig.add(Text((4.2 * math.cos(mid), -4.2 * math.sin(mid) + 1.0), "O", 3.0, "middle", True))
     fig.add(Path(((0.0, 0.0), (reach * k * 0.35, 0.0)), "reference"))   # the 0° radius
     for name, _, label in masses:
         x, y = c.output(f"P{name}").xy

@@ -63,5 +63,6 @@ def draw_engine(e: Engine, reference: float | None = None) -> EnginePolygons:
         out.tips[kind] = []
         panel = Panel.COUPLE if kind.endswith("couple") else Panel.FORCE
         out.closing[kind] = lay_polygon(c, out.tips[kind], tag, panel, vectors, phrase(
-            "balance.engine", kind=kind, order="θᵢ" if order == "1" else "2θᵢ"), kind)
+            "balance.engine", kind=kind, order="θᵢ" if order == "1" else "2θᵢ"), kind,
+            closing="balance.left")
     return out

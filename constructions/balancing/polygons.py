@@ -101,7 +101,8 @@ def _ends(c: Construction, seg: Ref) -> tuple[Ref, Ref]:
 
 
 def lay_polygon(c: Construction, tips: list[tuple[str, Ref]], tag: str, panel: Panel,
-                vectors: list[tuple[str, float, Ref]], said, plane: str) -> Ref:
+                vectors: list[tuple[str, float, Ref]], said, plane: str,
+                closing: str = "balance.close") -> Ref:
     """Lay ``vectors`` (name, signed size, the line it is parallel to) head to tail from a
     pole, and close the polygon back to it: the closing side is ``plane``'s balancing
     vector (or, for an engine, what is left unbalanced). Returns the closing side."""
@@ -116,4 +117,4 @@ def lay_polygon(c: Construction, tips: list[tuple[str, Ref]], tag: str, panel: P
         tips.append((name, nxt))
         tip = nxt
     return c.draw(f"{tag}:close", "join", tip, pole, panel=panel, role=Role.RESULT,
-                  phrase=phrase("balance.close", plane=plane))
+                  phrase=phrase(closing, plane=plane))

@@ -191,6 +191,8 @@ PHRASES: dict[str, str] = {
                      "mass's radial line (ω² is common to all, so it is left out).",
     "balance.close": "Close the polygon from its last tip back to its start: the closing side "
                      "is plane {plane}'s balancing vector, the resultant turned through 180°.",
+    "balance.left": "Close the {plane} polygon from its last tip back to its start: a "
+                    "closing side is the {plane} left unbalanced; none, and it is balanced.",
     "balance.cranks": "Draw the end view of the cranks: from the shaft's centre O each "
                       "crank's line at θᵢ, and the secondary (direct) cranks at 2θᵢ.",
     "balance.engine": "The {kind} polygon: lay off each cylinder's vector along its crank at "
