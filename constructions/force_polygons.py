@@ -136,39 +136,67 @@ def shape_of(mech: Mechanism) -> _Shape:
 
 
 def draw_forces(work) -> Forces:
-    """Draw the force analysis of the work's position (its loads in ``work.loads``).
+    """Draw the force analysis of the work's position (its loads in ``work.loads``): the
+    group the crank drives (a dyad, or a slotted lever with its block and ram), then the
+    crank.
 
     Raises
     ------
     TarsimError
-        If the mechanism is not one the dyad method here draws, or has no loads.
+        If the mechanism is not one drawn here, or has no loads.
     """
     mech: Mechanism = work.mechanism
     loads: Loads | None = getattr(work, "loads", None)
     if loads is None:
         raise TarsimError("forces need loads: give [[mass]], [[force]] or [[couple]] tables")
-    sh = shape_of(mech)
+    group = _group_of(mech)
     c: Construction = work.assembly
     at = {name: c.point(name).xy for name in mech.point_names}
     inertia = _inertia(work, loads, at)
-    known = {k: _loads(work, loads, k, at, inertia) for k in (sh.d, sh.i, sh.j)}
+    known = {k.number: _loads(work, loads, k.number, at, inertia) for k in mech.links
+             if k.number != 1}
     biggest = max([math.hypot(*f) for ls in known.values() for _, f, _, _ in ls] + [1e-300])
     scale = 0.08 / nice(biggest)                   # the largest load about 80 drawing mm
     out = Forces(scale)
     out.inertia = inertia
     draw = _Drafter(c, scale)
-    space = {key: c.draw(f"force:line:{key}", "line_through", c.points[p], c.points[q],
-                         kind=Kind.LINE)
-             for key, (p, q) in {"AB": (sh.a, sh.b)}.items()}
-    # ----- the dyad ------------------------------------------------------------------------
+    if isinstance(group, _Shape):
+        crank_pin, pull, o, a = _dyad(c, draw, out, group, at, known)
+    else:
+        crank_pin, pull, o, a = _slotted(c, draw, out, group, at, known)
+    _crank(c, draw, out, mech.drive.link, crank_pin, pull, o, a, at, known)
+    out.every = tuple(s.id for s in c if s.id.startswith("force:"))
+    return out
+
+
+_WHY = ("the force polygons are drawn for a four-bar, a slider-crank and a slotted lever "
+        "(with or without a ram on a frame guide) so far; this mechanism's forces are in the "
+        "analytic reference and the turning-moment diagram only")
+
+
+def _group_of(mech: Mechanism):
+    """The group the crank drives: a dyad, or a slotted lever."""
+    try:
+        return shape_of(mech)
+    except TarsimError:
+        pass
+    try:
+        return slotted_of(mech)
+    except TarsimError:
+        raise TarsimError(_WHY) from None
+
+
+def _dyad(c, draw, out: Forces, sh: _Shape, at, known):
+    """A four-bar's or slider-crank's dyad: returns the coupler's link, its pull on the
+    crank at A, and the crank's pivot and pin."""
+    line_ab = c.draw("force:line:AB", "line_through", c.points[sh.a], c.points[sh.b],
+                     kind=Kind.LINE)
     pole = c.give("force:S", g.Point(0.0, 0.0), label="", panel=Panel.FORCE)
     c.draw("force:say:dyad", "mark", pole, panel=Panel.FORCE,
            phrase=phrase("force.dyad", i=sh.i, j=sh.j))
     tip = pole
     for k in (sh.i, sh.j):
-        for n, (_, f, _, name) in enumerate(known[k]):
-            if f != (0.0, 0.0):
-                tip = draw.vector(f"{k}:{n}", tip, f, label=name)
+        tip = draw.loads(k, tip, known[k])
     t_a = _square(at[sh.a], at[sh.b], known[sh.i])       # F_{d i}ᵗ on i at A
     tip = draw.vector(f"t:{sh.d}{sh.i}", tip, t_a, phrase(
         "force.tangential", name=f"F_{sh.d}{sh.i}", pin=sh.a, link=sh.i, about=sh.b),
@@ -182,64 +210,195 @@ def draw_forces(work) -> Forces:
                      kind=Kind.LINE)
     else:
         t_c = (0.0, 0.0)
-        guide = c.give("force:guide", g.Line(-sh.guide[1], sh.guide[0], 0.0), label="",
-                       panel=Panel.FORCE)
-        far = c.draw("force:line:N", "perpendicular_through", pole, guide, kind=Kind.LINE,
-                     panel=Panel.FORCE)
-    along_end = c.draw("force:n:end", "parallel_through", tip, far, kind=Kind.LINE,
-                       panel=Panel.FORCE)
-    along_start = c.draw("force:n:start", "parallel_through", pole, space["AB"],
-                         kind=Kind.LINE, panel=Panel.FORCE)
-    cross = c.draw("force:X", "intersect_lines", along_end, along_start, label="x",
-                   panel=Panel.FORCE, phrase=phrase("force.close", i=sh.i, j=sh.j))
-    end_vec = draw.join("n:far", tip, cross, label=f"F_1{sh.j}" + ("ⁿ" if sh.c else ""))
-    start_vec = draw.join("n:AB", cross, pole, label=f"F_{sh.d}{sh.i}ⁿ")
+        far = draw.square_to(pole, sh.guide, "N")
+    cross, end_vec, start_vec = draw.close(tip, far, pole, line_ab, phrase(
+        "force.close", i=sh.i, j=sh.j), f"F_1{sh.j}" + ("ⁿ" if sh.c else ""),
+        f"F_{sh.d}{sh.i}ⁿ")
     n_far, n_a = draw.read(end_vec), draw.read(start_vec)
     f_di = (t_a[0] + n_a[0], t_a[1] + n_a[1])
     joint_j = (t_c[0] + n_far[0], t_c[1] + n_far[1])
     out.joints[f"F_{min(sh.d, sh.i)}{max(sh.d, sh.i)}"] = _on(f_di, sh.d < sh.i)
-    frame_j = f"F_1{sh.j}"
-    out.joints[frame_j] = joint_j
+    out.joints[f"F_1{sh.j}"] = joint_j
     # The middle pin, from the output's own balance: F_ij = −(its loads + the frame's).
     loads_j = _sum(f for _, f, _, _ in known[sh.j])
     f_ij = (-(loads_j[0] + joint_j[0]), -(loads_j[1] + joint_j[1]))    # i on j
     out.joints[f"F_{min(sh.i, sh.j)}{max(sh.i, sh.j)}"] = _on(f_ij, sh.i < sh.j)
-    refs_dyad = (cross, end_vec, start_vec)
-    out.refs = {name: refs_dyad for name in out.joints}
+    refs = (cross, end_vec, start_vec)
+    out.refs = {name: refs for name in out.joints}
     if sh.c is None:
         # The block's couple from the guide: its moments about B vanish.
-        couple = -_moment(at[sh.b], known[sh.j])
-        out.couples[f"T_1{sh.j}"] = couple
-        out.refs[f"T_1{sh.j}"] = refs_dyad
-    # ----- the driver ----------------------------------------------------------------------
-    f_id = (-f_di[0], -f_di[1])                        # the coupler on the crank, at A
-    # The crank's polygon to the right of the dyad's, clear of it.
+        out.couples[f"T_1{sh.j}"] = -_moment(at[sh.b], known[sh.j])
+        out.refs[f"T_1{sh.j}"] = refs
+    return sh.i, (-f_di[0], -f_di[1]), sh.o, sh.a
+
+
+def _crank(c, draw, out: Forces, d: int, i: int, f_id: Vec, o: str, a: str, at, known):
+    """The crank's polygon, to the right of the rest and clear of it: its loads and the pull
+    ``f_id`` of link ``i`` at ``a``, closed by the frame's force at ``o``; its moments about
+    ``o`` give the driving torque."""
     drawn = [s.output.xy for s in c if s.panel is Panel.FORCE and isinstance(s.output, g.Point)
              and not s.output.is_at_infinity and not s.id.startswith(("force:o:", "force:h:"))]
     chain = [(0.0, 0.0)]
-    for f in [f for _, f, _, _ in known[sh.d]] + [f_id]:
-        chain.append((chain[-1][0] + f[0] * scale, chain[-1][1] + f[1] * scale))
+    for f in [f for _, f, _, _ in known[d]] + [f_id]:
+        chain.append((chain[-1][0] + f[0] * out.scale, chain[-1][1] + f[1] * out.scale))
     right = max(x for x, _ in drawn) - min(x for x, _ in chain) + 0.03
     start = c.give("force:S2", g.Point(right, 0.0), label="", panel=Panel.FORCE)
     c.draw("force:say:driver", "mark", start, panel=Panel.FORCE,
-           phrase=phrase("force.driver", d=sh.d, i=sh.i, o=sh.o))
-    tip = start
-    for n, (_, f, _, name) in enumerate(known[sh.d]):
-        if f != (0.0, 0.0):
-            tip = draw.vector(f"{sh.d}:{n}", tip, f, label=name)
-    tip = draw.vector(f"{sh.i}on{sh.d}", tip, f_id, label=f"F_{sh.i}{sh.d}")
-    closing = draw.join("frame", tip, start, role=Role.RESULT, label=f"F_1{sh.d}")
-    f_1d = draw.read(closing)
-    out.joints[f"F_1{sh.d}"] = f_1d
-    out.refs[f"F_1{sh.d}"] = (closing,)
-    arm = (at[sh.a][0] - at[sh.o][0], at[sh.a][1] - at[sh.o][1])
-    torque = -(_moment(at[sh.o], known[sh.d]) + arm[0] * f_id[1] - arm[1] * f_id[0])
+           phrase=phrase("force.driver", d=d, i=i, o=o))
+    tip = draw.loads(d, start, known[d])
+    tip = draw.vector(f"{i}on{d}", tip, f_id, label=f"F_{i}{d}")
+    closing = draw.join("frame", tip, start, role=Role.RESULT, label=f"F_1{d}")
+    out.joints[f"F_1{d}"] = draw.read(closing)
+    out.refs[f"F_1{d}"] = (closing,)
+    arm = (at[a][0] - at[o][0], at[a][1] - at[o][1])
+    torque = -(_moment(at[o], known[d]) + arm[0] * f_id[1] - arm[1] * f_id[0])
     out.torque = torque
     said = c.draw("force:say:torque", "mark", start, panel=Panel.FORCE, phrase=phrase(
-        "force.torque", d=sh.d, o=sh.o, torque=f"{torque:.6g} N·m"))
-    out.refs[f"T{sh.d}"] = (closing, said)
-    out.every = tuple(s.id for s in c if s.id.startswith("force:"))
-    return out
+        "force.torque", d=d, o=o, torque=f"{torque:.6g} N·m"))
+    out.refs[f"T{d}"] = (closing, said)
+
+
+@dataclass(frozen=True)
+class _Lever:
+    """A slotted lever: crank d (pivot o, pin a) drives block b in the slot of lever l.
+
+    The lever turns about p; a ram r may ride on a frame guide (direction ``guide``) with
+    its pin q in the same slot."""
+
+    d: int
+    b: int
+    l: int  # noqa: E741 - the lever, as the notes number it
+    o: str
+    a: str
+    p: str
+    r: int | None = None
+    q: str | None = None
+    guide: tuple[float, float] | None = None
+
+
+def slotted_of(mech: Mechanism) -> _Lever:
+    """The crank and the slotted lever it drives, with its ram if it has one.
+
+    Raises
+    ------
+    TarsimError
+        If the mechanism is not a slotted lever whose slot runs through its pivot.
+    """
+    d = mech.drive.link
+    crank = mech.link(d)
+    if mech.arcs or len(crank.names) != 2 or set(mech.links_at(crank.names[0])) != {1, d}:
+        raise TarsimError(_WHY)
+    o, a = crank.names
+    block = [s for s in mech.slides if s.point == a and s.kind is SlideKind.BLOCK
+             and s.guide_link != 1 and not s.contact]
+    if len(block) != 1 or mech.link(block[0].link).names != (a,):
+        raise TarsimError(_WHY)
+    s = block[0]
+    lever = mech.link(s.guide_link)
+    if (len(lever.names) != 1 or set(mech.links_at(lever.names[0])) != {1, lever.number}
+            or s.through != (0.0, 0.0)):
+        raise TarsimError(_WHY)
+    rest = [k.number for k in mech.links if k.number not in (1, d, s.link, lever.number)]
+    if not rest:
+        if len(mech.slides) != 1:
+            raise TarsimError(_WHY)
+        return _Lever(d, s.link, lever.number, o, a, lever.names[0])
+    ram = mech.link(rest[0]) if len(rest) == 1 else None
+    if ram is None or len(ram.names) != 1 or len(mech.slides) != 3:
+        raise TarsimError(_WHY)
+    q = ram.names[0]
+    pin = [t for t in mech.slides if t.link == ram.number and t.point == q
+           and t.kind is SlideKind.PIN and t.guide_link == lever.number
+           and t.through == s.through and t.direction == s.direction]
+    frame = [t for t in mech.slides if t.link == ram.number and t.point == q
+             and t.kind is SlideKind.BLOCK and t.guide_link == 1]
+    if len(pin) != 1 or len(frame) != 1:
+        raise TarsimError(_WHY)
+    return _Lever(d, s.link, lever.number, o, a, lever.names[0], ram.number, q,
+                  frame[0].direction)
+
+
+def _slotted(c, draw, out: Forces, lv: _Lever, at, known):
+    """The slotted lever's group, in the order its unknowns allow.
+
+    1. the ram: its loads closed by the slot's push and the guide's, each square to its
+       line, crossing; its guide couple from its moments about its pin;
+    2. the block's couple from the slot, from the block's moments about A;
+    3. the slot's push on the block, from the lever's moments about its pivot;
+    4. the block's polygon closed by the crank's force on it, the lever's by its pivot's.
+
+    Returns the block's link, its pull on the crank at A, and the crank's pivot and pin.
+    """
+    slot = c.draw("force:line:slot", "line_through", c.points[lv.p], c.points[lv.a],
+                  kind=Kind.LINE)
+    u = _unit((at[lv.a][0] - at[lv.p][0], at[lv.a][1] - at[lv.p][1]))
+    n = (-u[1], u[0])                                    # square to the slot
+    f_rl = (0.0, 0.0)
+    origin = c.give("force:S", g.Point(0.0, 0.0), label="", panel=Panel.FORCE)
+    refs: list[str] = []
+    if lv.r is not None:
+        c.draw("force:say:ram", "mark", origin, panel=Panel.FORCE,
+               phrase=phrase("force.ram", r=lv.r, l=lv.l))
+        tip = draw.loads(lv.r, origin, known[lv.r])
+        guide = draw.square_to(origin, lv.guide, "N")
+        across = c.draw("force:line:slotN", "perpendicular_through", origin, slot,
+                        kind=Kind.LINE, panel=Panel.FORCE)
+        cross, end_vec, start_vec = draw.close(tip, guide, origin, across, phrase(
+            "force.ram_close", r=lv.r, l=lv.l), f"F_1{lv.r}", f"F_{lv.l}{lv.r}")
+        n_guide, n_slot = draw.read(end_vec), draw.read(start_vec)
+        out.joints[f"F_1{lv.r}"] = n_guide
+        out.joints[f"F_{lv.l}{lv.r}"] = n_slot
+        out.couples[f"T_1{lv.r}"] = -_moment(at[lv.q], known[lv.r])
+        f_rl = (-n_slot[0], -n_slot[1])                  # the ram's pin on the lever
+        refs += [cross, end_vec, start_vec]
+    # The block: its couple from the slot (the slot's push and the crank's pin both at A).
+    t_lb = -_moment(at[lv.a], known[lv.b])
+    out.couples[f"T_{lv.l}{lv.b}"] = t_lb
+    # The lever's moments about its pivot give the slot's push ν·n on the block.
+    pa = (at[lv.a][0] - at[lv.p][0], at[lv.a][1] - at[lv.p][1])
+    ram_moment = 0.0
+    if lv.r is not None:
+        pq = (at[lv.q][0] - at[lv.p][0], at[lv.q][1] - at[lv.p][1])
+        ram_moment = pq[0] * f_rl[1] - pq[1] * f_rl[0]
+    nu = (_moment(at[lv.p], known[lv.l]) + ram_moment - t_lb) / (pa[0] * n[1] - pa[1] * n[0])
+    n_lb = (nu * n[0], nu * n[1])
+    out.joints[f"F_{lv.l}{lv.b}"] = n_lb
+    # The block's polygon: its loads and the slot's push, closed by the crank's force.
+    low = min([s.output.xy[1] for s in c if s.panel is Panel.FORCE
+               and isinstance(s.output, g.Point) and not s.id.startswith(("force:o:",
+                                                                          "force:h:"))]
+              + [0.0])
+    start_b = c.give("force:Sb", g.Point(0.0, low - 0.03), label="", panel=Panel.FORCE)
+    c.draw("force:say:block", "mark", start_b, panel=Panel.FORCE, phrase=phrase(
+        "force.block", b=lv.b, l=lv.l, p=lv.p, nu=f"{abs(nu):.4g} N"))
+    tip = draw.loads(lv.b, start_b, known[lv.b])
+    tip = draw.vector(f"{lv.l}on{lv.b}", tip, n_lb, label=f"F_{lv.l}{lv.b}")
+    closing_b = draw.join("crank", tip, start_b, role=Role.RESULT, label=f"F_{lv.d}{lv.b}")
+    f_db = draw.read(closing_b)
+    out.joints[f"F_{min(lv.d, lv.b)}{max(lv.d, lv.b)}"] = _on(f_db, lv.d < lv.b)
+    # The lever's polygon: its loads, the block's and the ram's pushes, closed at its pivot,
+    # below the block's.
+    low = min(s.output.xy[1] for s in c if s.panel is Panel.FORCE
+              and isinstance(s.output, g.Point) and not s.id.startswith(("force:o:",
+                                                                         "force:h:")))
+    start_l = c.give("force:Sl", g.Point(0.0, low - 0.03), label="", panel=Panel.FORCE)
+    c.draw("force:say:lever", "mark", start_l, panel=Panel.FORCE,
+           phrase=phrase("force.lever", l=lv.l, p=lv.p))
+    tip = draw.loads(lv.l, start_l, known[lv.l])
+    tip = draw.vector(f"{lv.b}on{lv.l}", tip, (-n_lb[0], -n_lb[1]), label=f"F_{lv.b}{lv.l}")
+    if lv.r is not None:
+        tip = draw.vector(f"{lv.r}on{lv.l}", tip, f_rl, label=f"F_{lv.r}{lv.l}")
+    closing_l = draw.join("pivot", tip, start_l, role=Role.RESULT, label=f"F_1{lv.l}")
+    out.joints[f"F_1{lv.l}"] = draw.read(closing_l)
+    refs += [closing_b, closing_l]
+    for name in list(out.joints) + list(out.couples):
+        out.refs[name] = tuple(refs)
+    return lv.b, (-f_db[0], -f_db[1]), lv.o, lv.a
+
+
+def _unit(v: Vec) -> Vec:
+    n = math.hypot(*v)
+    return (v[0] / n, v[1] / n)
 
 
 def _on(f: Vec, forward: bool) -> Vec:
@@ -267,6 +426,36 @@ class _Drafter:
                     phrase=said or phrase("force.lay", label=label or "the load",
                                           size=f"{math.hypot(*f):.4g} N"))
         return nxt
+
+    def loads(self, link: int, tip: Ref, loads) -> Ref:
+        """Lay off each load of ``link`` with a force, head to tail from ``tip``."""
+        for n, (_, f, _, name) in enumerate(loads):
+            if f != (0.0, 0.0):
+                tip = self.vector(f"{link}:{n}", tip, f, label=name)
+        return tip
+
+    def square_to(self, through: Ref, direction: Vec, name: str) -> Ref:
+        """The line through ``through`` square to a frame guide of ``direction``: the
+        guide's push, which has no part along it."""
+        guide = self.c.give(f"force:guide:{name}", g.Line(-direction[1], direction[0], 0.0),
+                            label="", panel=Panel.FORCE)
+        return self.c.draw(f"force:line:{name}", "perpendicular_through", through, guide,
+                           kind=Kind.LINE, panel=Panel.FORCE)
+
+    def close(self, tip: Ref, far: Ref, start: Ref, near: Ref, said, far_name: str,
+              near_name: str) -> tuple[Ref, Ref, Ref]:
+        """Close a polygon from ``start`` to ``tip`` with two forces of known lines: a
+        parallel to ``far`` through its end, to ``near`` through its start; returns where
+        they cross and the two forces drawn."""
+        n = self.count = self.count + 1
+        along_end = self.c.draw(f"force:n:end{n}", "parallel_through", tip, far,
+                                kind=Kind.LINE, panel=Panel.FORCE)
+        along_start = self.c.draw(f"force:n:start{n}", "parallel_through", start, near,
+                                  kind=Kind.LINE, panel=Panel.FORCE)
+        cross = self.c.draw(f"force:X{n}", "intersect_lines", along_end, along_start,
+                            label="x", panel=Panel.FORCE, phrase=said)
+        return (cross, self.join(f"far{n}", tip, cross, label=far_name),
+                self.join(f"near{n}", cross, start, label=near_name))
 
     def join(self, name: str, a: Ref, b: Ref, role: Role = Role.CONSTRUCTION,
              label: str = "") -> Ref:
@@ -310,10 +499,18 @@ def _world(work, link: int, local: Vec, at) -> Vec:
         (px, py) = at[names[1]]
         turn = math.atan2(py - oy, px - ox) - math.atan2(my - ly, mx - lx)
     else:
+        # A one-point link takes its axis from a slot cut in it (its point on the slot's
+        # line as drawn), or, a block, from the frame guide it runs on.
         (lx, ly), turn = k.local(names[0]), 0.0
-        s = next((s for s in work.mechanism.slides if s.link == link), None)
-        if s is not None:
-            turn = math.atan2(s.direction[1], s.direction[0])
+        slot = next((s for s in work.mechanism.slides if s.guide_link == link
+                     and s.through == (0.0, 0.0)), None)
+        block = next((s for s in work.mechanism.slides if s.link == link), None)
+        if slot is not None:
+            (px, py) = at[slot.point]
+            turn = math.atan2(py - oy, px - ox) - math.atan2(slot.direction[1],
+                                                             slot.direction[0])
+        elif block is not None and block.guide_link == 1:
+            turn = math.atan2(block.direction[1], block.direction[0])
     cx, cy = math.cos(turn), math.sin(turn)
     rx, ry = local[0] - lx, local[1] - ly
     return (ox + cx * rx - cy * ry, oy + cy * rx + cx * ry)
@@ -376,10 +573,19 @@ def _loads(work, loads: Loads, link: int, at, inertia) -> list[tuple[Vec, Vec, f
         if f.link != link:
             continue
         p = at[f.point] if isinstance(f.point, str) else _world(work, link, f.point, at)
+        force = f.force
         if f.resist:
-            raise TarsimError("a resisting force is drawn over a sweep only: give its "
-                              "components with force = [x, y] for the force polygons")
-        out.append((p, f.force, 0.0, f.name or f"P{link}"))
+            # Against the point's velocity as the velocity polygon draws it, on its stroke.
+            if not isinstance(f.point, str):
+                raise TarsimError("a resisting force acts at a named point of its link")
+            v = drawn_velocity_polygon(work).vector(f.point)
+            speed = math.hypot(*v)
+            moving = speed > 0.0 and (f.along is None or
+                                      v[0] * f.along[0] + v[1] * f.along[1] > 0.0)
+            if not moving:
+                continue                                # the return stroke: no cut
+            force = (-f.resist * v[0] / speed, -f.resist * v[1] / speed)
+        out.append((p, force, 0.0, f.name or f"P{link}"))
     out += [(at[work.mechanism.link(link).names[0]], (0.0, 0.0), cp.moment, cp.name or "M")
             for cp in loads.couples if cp.link == link]
     return out

@@ -1,6 +1,6 @@
 """The force polygons as a textbook prints them: each load an arrow head to tail at the
-force scale, the two lines that close the dyad's polygon crossing at x, and the crank's
-polygon closed by the frame's force, heavy.
+force scale, the two lines that close a polygon crossing at x, and a polygon closed by its
+last side drawn heavy (the frame's force on the crank, the crank's on a block).
 """
 
 from __future__ import annotations
@@ -10,7 +10,7 @@ from collections.abc import Sequence
 
 from ..constructions import geometry as g
 from ..constructions.record import Construction, Panel, Role
-from .figure import Circle, Figure, Path, Text, clip_line
+from .figure import Circle, Figure, Path, Text
 from .scales import draw_caption, nice_per_cm
 from .symbols import draw_arrow
 
@@ -35,17 +35,20 @@ def draw_force_figure(c: Construction, scale: float, title: str,
         return xy[0] * k, -xy[1] * k
 
     fig = Figure(0.0, 0.0, title=title)
-    # The closing lines run across the dyad's polygon only (the joins before the crank's).
-    first = [s for s in joins if not s.id.startswith(("force:v:2", "force:v:frame"))] or joins
-    dyad = [p for s in first for p in (s.output.start.xy, s.output.end.xy)]
-    box = (min(x for x, _ in dyad) * k - 6.0, -max(y for _, y in dyad) * k - 6.0,
-           max(x for x, _ in dyad) * k + 6.0, -min(y for _, y in dyad) * k + 6.0)
+    # Each closing line runs from the tip it is drawn through to a little past the crossing
+    # it makes, not across the whole sheet.
+    crossings = [paper(s.output.xy) for s in steps if s.verb == "intersect_lines"]
     for s in steps:
-        if s.verb == "parallel_through" and isinstance(s.output, g.Line):
-            a, d = s.output.anchor(), s.output.direction
-            seg = clip_line((a[0] * k, -a[1] * k), (d[0], -d[1]), -1e9, 1e9, box)
-            if seg:
-                fig.add(Path(seg, "construction"))
+        if s.verb == "parallel_through" and isinstance(s.output, g.Line) and crossings:
+            start = paper(c.output(s.inputs[0]).xy)
+            cross = min(crossings, key=lambda x: math.dist(x, start))
+            d = (cross[0] - start[0], cross[1] - start[1])
+            n = math.hypot(*d)
+            if n < 1e-9:
+                continue
+            u = (d[0] / n, d[1] / n)
+            fig.add(Path(((start[0] - 5.0 * u[0], start[1] - 5.0 * u[1]),
+                          (cross[0] + 5.0 * u[0], cross[1] + 5.0 * u[1])), "construction"))
     for s in joins:
         a, b = paper(s.output.start.xy), paper(s.output.end.xy)
         if math.dist(a, b) < 0.3:
@@ -63,11 +66,10 @@ def draw_force_figure(c: Construction, scale: float, title: str,
             at = paper(s.output.xy)
             fig.add(Circle(at, 0.7, "dot"))
             fig.add(Text((at[0] + 2.0, at[1] - 2.0), "x", 3.0, "start", True))
-    draw_caption(fig, title, ["every load head to tail; the dyad's polygon closed by the "
-                              "two lines crossing at x, the crank's by the frame's force"],
+    draw_caption(fig, title, ["every load head to tail; a polygon closed by two lines "
+                              "crossing at x, or by its heavy closing side"],
                  per_cm=per_cm, unit="N", legend=(("vector", "a force"),
-                                                  ("vector_result", "the frame's force on "
-                                                                    "the crank"),
+                                                  ("vector_result", "a closing side"),
                                                   ("construction", "a closing line")),
                  notes=notes, scale_name="Force scale")
     return fig

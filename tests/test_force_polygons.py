@@ -82,17 +82,20 @@ def test_forces_asked_without_loads_are_refused_at_the_ask():
         parse_exercise(text, "fb.toml")
 
 
-def test_a_mechanism_the_dyads_do_not_cover_is_refused_in_one_line(tmp_path):
-    text = (DATA / "crank-shaper-forces.toml").read_text(encoding="utf-8")
-    text = text.replace('find = ["dof"', 'find = ["T2", "dof"').replace(
-        "resist = 1000\nstroke = \"slow\"", "force = [-1000, 0]")
-    path = tmp_path / "cs.toml"
+def test_a_mechanism_the_polygons_do_not_cover_is_refused_in_one_line(tmp_path):
+    """A six-bar's forces are asked: refused in one line, naming what is drawn."""
+    from tarsim.exercises.catalog import bundled
+
+    text = Path(bundled()["six-link-homework-1"]).read_text(encoding="utf-8")
+    text = text.replace("find = [", 'find = ["T2", ', 1) + (
+        "\n[[couple]]\nlink = 4\nmoment = 1\n")
+    path = tmp_path / "six.toml"
     path.write_text(text, encoding="utf-8")
     result = CliRunner().invoke(cli, ["solve", str(path), "-o", str(tmp_path / "o"),
                                       "--no-pdf"])
-    assert result.exit_code == 1
-    assert "the force polygons are drawn for a four-bar and a slider-crank so far" in \
-        result.output
+    assert result.exit_code == 1, result.output
+    assert "the force polygons are drawn for a four-bar, a slider-crank and a slotted " \
+           "lever" in result.output
     assert "Traceback" not in result.output
 
 
@@ -106,3 +109,21 @@ def test_solve_writes_the_force_polygons_and_their_steps(tmp_path):
     steps = (out / "steps.md").read_text(encoding="utf-8")
     assert "link 3's moments about P give it" in steps
     assert "the driving torque T2 = -64.9688 N·m" in steps
+
+
+def test_the_course_projects_crank_shaper_by_its_force_polygons():
+    """003 §9's crank-shaper: at θ2 = 90° (the cutting stroke) 1000 N against the ram, held
+    by the slot at B (F_45 = 1000 N) and by the crank, T2 = −1000 N × 232.941 mm/s / 1 rad/s;
+    at t = 2.34 s (the return: no cut) the torque from 4 on 3 is I3·α4 = 3.32e-4 N·m and
+    the slot's push on the ram's pin 0.0567 N, the project's orders of magnitude."""
+    worked = tarsim.solve(load_exercise(DATA / "crank-shaper-forces.toml"))
+    assert worked.passed
+    cut, back = worked.positions
+    assert cut.quantities["F_45"].value["value"] == pytest.approx(1000.0, rel=1e-12)
+    assert cut.quantities["T2"].value["value"] == pytest.approx(-232.941176, rel=1e-8)
+    assert back.quantities["T_43"].value["value"] == pytest.approx(3.31954e-4, rel=1e-5)
+    assert back.quantities["F_45"].value["value"] == pytest.approx(0.0566625, rel=1e-5)
+    for sol in (cut, back):
+        for name, q in sol.quantities.items():
+            if name.startswith(("F_", "T")):
+                assert q.rel_error <= 1e-13, (name, q.rel_error)

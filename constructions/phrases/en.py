@@ -203,6 +203,16 @@ PHRASES: dict[str, str] = {
                    "{t} square to it: g{link}′, the image of G{link}. Link {link}'s inertia "
                    "force is −m·a_G, a_G read from o_a to g{link}′; its inertia couple −I·α.",
     "force.lay": "Lay off {label} = {size} at the force scale, from the last tip.",
+    "force.ram": "The ram {r}: lay off its loads head to tail; the slot of link {l} and the "
+                 "frame's guide each push it square to themselves.",
+    "force.ram_close": "Close the ram's polygon: through its end a line square to the guide, "
+                       "through its start a line square to the slot; where they cross gives "
+                       "both pushes. Its moments about its pin give the guide's couple.",
+    "force.block": "The block {b}: its moments about A give the slot's couple on it; link "
+                   "{l}'s moments about {p} give the slot's push, {nu}. Lay off the block's "
+                   "loads and that push; the closing side is the crank's force on the block.",
+    "force.lever": "Link {l}'s polygon: its loads, the block's push and the ram's, closed by "
+                   "the frame's force at {p}.",
     "force.torque": "Link {d}'s moments about {o}: the driving torque T{d} = {torque}.",
     "force.dyad": "The force polygon of links {i} and {j} together: lay off every known load "
                   "on them head to tail (weights, inertia forces, external forces), at the "
