@@ -552,10 +552,20 @@ def _inertia(work, loads: Loads, at) -> dict[int, tuple[Vec, float]]:
                            panel=Panel.ACCELERATION, phrase=phrase(
                                "force.image", link=m.link, k=ref,
                                n=f"{omega * omega * size:.4g} m/s²",
-                               t=f"{abs(alpha) * size:.4g} m/s²"))
+                               t=f"{abs(alpha) * size:.4g} m/s²",
+                               h=_offset(m, alpha, ap.between(ap.pole, n_end),
+                                         (-r[1] * alpha, r[0] * alpha))))
         a_g = ap.between(ap.pole, image)
         out[m.link] = ((-m.mass * a_g[0], -m.mass * a_g[1]), -m.inertia * alpha)
     return out
+
+
+def _offset(m, alpha: float, normal: Vec, tangential: Vec) -> str:
+    """Where the inertia force and couple act as one force: h = I·α/(m·a_G) from G."""
+    a_g = math.hypot(normal[0] + tangential[0], normal[1] + tangential[1])
+    if a_g == 0.0 or alpha == 0.0:
+        return "0 (no couple)"
+    return f"{m.inertia * abs(alpha) / (m.mass * a_g) * 1e3:.4g} mm"
 
 
 def _loads(work, loads: Loads, link: int, at, inertia) -> list[tuple[Vec, Vec, float, str]]:

@@ -22,7 +22,7 @@ from ..constructions.reference.flywheel import (Fluctuation, fluctuation, flywhe
                                                 speed_fluctuation)
 from ..constructions.reference.kinetostatics import balance, power_torque
 from ..graphics.figure import Figure
-from ..graphics.plot import Series, draw_line_plot
+from ..graphics.plot import PlotMark, Series, draw_line_plot
 from .exercise_file import Exercise
 
 __all__ = ["POWER_AGREE", "TurningMoment", "moment_files", "turning_moment"]
@@ -48,6 +48,10 @@ class TurningMoment:
     gaps: list[tuple[float, str]] = field(default_factory=list)
     power_miss: float = 0.0
     """The worst disagreement of the balance of power, relative to the greatest torque."""
+    marks: list[tuple[float, float, float, str]] = field(default_factory=list)
+    """The driving torque by the force polygons at the positions the exercise solves:
+    (turned angle in rad, its torque and the curve's there, both positive the way the input
+    turns, N·m; the position's label)."""
 
     @property
     def reading(self) -> Fluctuation | None:
@@ -90,6 +94,10 @@ class TurningMoment:
             cs = speed_fluctuation(r.delta_e, self.omega, loads.flywheel)
             out.append(f"a flywheel of {loads.flywheel:g} kg·m² holds the speed within "
                        f"C_s = ΔE/(I·ω²) = {cs:.6g}")
+        for _, drawn, curve, label in self.marks:
+            out.append(f"T by the force polygons at {label}: {drawn:.6g} N·m, the curve's "
+                       f"{curve:.6g} N·m (relative error "
+                       f"{abs(drawn - curve) / max(abs(curve), 1e-300):.1e})")
         verdict = "agrees" if self.power_miss <= POWER_AGREE else "DISAGREES"
         out.append(f"driving torque by the balance of power {verdict} at every step "
                    f"(worst {self.power_miss:.1e} of the greatest torque)")
@@ -113,6 +121,8 @@ class TurningMoment:
                          "light where the driver gives more than the mean, dark where less)")
         ticks = [(k * 30.0, f"{k * 30}") for k in range(13)]
         name = self.exercise.mechanism.name
+        marks = [PlotMark(math.degrees(turned), drawn, label.split(" (")[0])
+                 for turned, drawn, _, label in self.marks]
         if r is not None:           # where the energy is highest and lowest, on this axis
             notes.append(f"The energy is lowest at {math.degrees(r.lowest) % 360:.4g}° turned "
                          f"(θ = {self.theta(r.lowest):.4g}°) and highest at "
@@ -121,7 +131,8 @@ class TurningMoment:
         return draw_line_plot(
             "Turning-moment diagram", f"input turned {self.turning} from θ = "
             f"{self.theta(0.0):g}° (°)", "T (N·m)", series, x_range=(0.0, 360.0),
-            x_ticks=ticks, notes=notes, fills=fills, tags=tags,
+            x_ticks=ticks, notes=notes, fills=fills, tags=tags, marks=marks,
+            mark_legend="by the force polygons" if marks else "",
             subtitle=f"{name}: the driving torque, positive {self.turning}")
 
     def _areas(self, r: Fluctuation):
@@ -193,6 +204,29 @@ def turning_moment(ex: Exercise, steps: int = 360,
         if progress:
             progress(1)
     out.power_miss = max(misses, default=0.0) / (biggest or 1.0)
+    out.marks = _drawn_marks(ex)
+    return out
+
+
+def _drawn_marks(ex: Exercise) -> list[tuple[float, float, float, str]]:
+    """The driving torque the force polygons give at each position the exercise solves, if
+    it asks for it, beside the curve's at the same angle."""
+    from ..constructions.asks import DrivingTorque
+    from .solution_files import solve_worked
+
+    if not any(isinstance(a, DrivingTorque) for a in ex.asks):
+        return []
+    drive = ex.mechanism.drive
+    sense = 1.0 if drive.omega >= 0 else -1.0
+    out = []
+    for sol in solve_worked(ex).positions:
+        q = sol.quantities.get(f"T{drive.link}")
+        if q is None:
+            continue
+        theta = sol.assembly.mechanism.drive.angle
+        turned = (sense * (theta - drive.angle)) % (2 * math.pi)
+        label = sol.position.label if sol.position else f"θ{drive.link}"
+        out.append((turned, sense * q.value["value"], sense * q.reference["value"], label))
     return out
 
 

@@ -87,3 +87,13 @@ def test_bad_flywheel_and_cut_settings_are_refused_in_one_line(old, new, words):
         parse_exercise(text.replace(old, new, 1), "cs.toml", "cs")
     message = str(e.value)
     assert "\n" not in message and message.startswith("cs.toml:") and words in message, message
+
+
+def test_the_force_polygons_fall_on_the_turning_moment_curve():
+    """The driving torque the force polygons draw at the exercise's two positions stands on
+    the curve (the Newton–Euler torque at the same angle), to a few roundings."""
+    tm = turning_moment(load_exercise(SHAPER), 36)
+    assert [label.split(" (")[0] for *_, label in tm.marks] == ["θ2 = 90°", "t = 2.34 s"]
+    for _, drawn, curve, _ in tm.marks:
+        assert drawn == pytest.approx(curve, rel=1e-12)
+    assert tm.marks[0][1] == pytest.approx(232.941176, rel=1e-8)    # clockwise positive

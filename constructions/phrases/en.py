@@ -201,7 +201,8 @@ PHRASES: dict[str, str] = {
     "force.image": "On the acceleration polygon, from the tip of {k} lay off the normal part "
                    "ω²·{k}G{link} = {n} toward {k}, then the tangential part α·{k}G{link} = "
                    "{t} square to it: g{link}′, the image of G{link}. Link {link}'s inertia "
-                   "force is −m·a_G, a_G read from o_a to g{link}′; its inertia couple −I·α.",
+                   "force is −m·a_G, a_G read from o_a to g{link}′; its inertia couple −I·α "
+                   "(the two as one force, offset h = I·α/(m·a_G) = {h} from G{link}).",
     "force.lay": "Lay off {label} = {size} at the force scale, from the last tip.",
     "force.ram": "The ram {r}: lay off its loads head to tail; the slot of link {l} and the "
                  "frame's guide each push it square to themselves.",
