@@ -54,6 +54,19 @@ def test_the_follower_rises_during_the_rise_whichever_way_the_cam_turns():
     ("law = \"cycloidal\"", "law = \"spline\"", ["unknown law 'spline'"]),
     ("kind = \"dwell\"\nangle = 30", "kind = \"pause\"\nangle = 30",
      ["a segment is a rise, a dwell or a return, not 'pause'"]),
+    # the follower
+    ("kind = \"roller\"", "kind = \"mushroom\"", ["a follower is knife-edge, roller"]),
+    ("radius = 10 ", "radius = 0 ", ["a roller follower gives its radius"]),
+    ("radius = 10 ", "radius = 10\noffset = 60 ", ["puts the follower's line clear of the "
+                                                   "prime circle (50 mm)"]),
+    ("radius = 10 ", "radius = 10\nmotion = \"rocking\" ", ["translating or oscillating"]),
+    ("radius = 10 ", "radius = 10\nmotion = \"oscillating\"\npivot = [200, 0]\narm = 50 ",
+     ["cannot reach the prime circle"]),
+    ("radius = 10 ", "radius = 10\nmotion = \"oscillating\"\narm = 50 ",
+     ["gives its pivot from the cam centre"]),
+    ("kind = \"roller\"\nradius = 10 ", "kind = \"flat-faced\"\nmotion = \"oscillating\" ",
+     ["an oscillating flat face is not laid out yet"]),
+    ("radius = 10 ", "radius = 10\ncolour = \"red\" ", ["unknown setting 'colour'"]),
 ])
 def test_a_bad_cam_is_refused_in_one_line_at_its_place(old, new, words):
     assert old in CAM
