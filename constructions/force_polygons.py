@@ -41,13 +41,16 @@ from .record import Construction, Kind, Panel, Ref, Role
 from .scales import nice
 from .velocity_polygon import drawn_velocity_polygon
 
-__all__ = ["FORCES", "Forces", "answer", "draw_forces", "force_names", "forces_askable",
+__all__ = ["BODIES", "FORCES", "Forces", "answer", "draw_forces", "force_names", "forces_askable",
            "drawn_forces"]
 
 Vec = tuple[float, float]
 
 FORCES = FigureSpec("forces", "Force polygons", "force polygons", kind="forces")
 """The figure the force polygons are drawn in."""
+
+BODIES = FigureSpec("free-bodies", "Free bodies", "free-body diagrams", kind="bodies")
+"""Each link alone with every force on it."""
 
 
 @dataclass
@@ -65,6 +68,9 @@ class Forces:
     """Each massive link's inertia force (N) and couple (N·m), as read off the polygon."""
     every: tuple[Ref, ...] = ()
     """Every step of the analysis, for its figure and its steps: each answer shows it all."""
+    bodies: dict[int, list[tuple[Vec, Vec, float, str]]] = field(default_factory=dict)
+    """Each moving link as a free body: every force on it (where, force N, couple N·m, its
+    name), the loads and the joints' forces as the polygons found them."""
 
 
 @dataclass(frozen=True)
@@ -166,7 +172,35 @@ def draw_forces(work) -> Forces:
         crank_pin, pull, o, a = _slotted(c, draw, out, group, at, known)
     _crank(c, draw, out, mech.drive.link, crank_pin, pull, o, a, at, known)
     out.every = tuple(s.id for s in c if s.id.startswith("force:"))
+    out.bodies = _bodies(mech, out, at, known)
     return out
+
+
+def _bodies(mech: Mechanism, out: Forces, at, known) -> dict[int, list]:
+    """Every force on each moving link: its loads, each joint's force on it (F_ab on b, its
+    reaction on a) and each block's couple, with the driving torque on the input."""
+    where = {}
+    for point in mech.point_names:
+        carriers = sorted(mech.links_at(point))
+        where |= {f"F_{carriers[0]}{other}": point for other in carriers[1:]}
+    where |= {f"F_{s.guide_link}{s.link}": s.point for s in mech.slides}
+    bodies = {k: list(v) for k, v in known.items()}
+    for name, f in out.joints.items():
+        by, on = int(name[2]), int(name[3])
+        p = at[where[name]]
+        if on != 1:
+            bodies[on].append((p, f, 0.0, name))
+        if by != 1:
+            bodies[by].append((p, (-f[0], -f[1]), 0.0, f"F_{on}{by}"))
+    for name, m in out.couples.items():
+        by, on = int(name[2]), int(name[3])
+        p = at[where[f"F_{by}{on}"]]
+        bodies[on].append((p, (0.0, 0.0), m, name))
+        if by != 1:
+            bodies[by].append((p, (0.0, 0.0), -m, f"T_{on}{by}"))
+    d = mech.drive.link
+    bodies[d].append((at[mech.link(d).names[0]], (0.0, 0.0), out.torque, f"T{d}"))
+    return bodies
 
 
 _WHY = ("the force polygons are drawn for a four-bar, a slider-crank and a slotted lever "
@@ -629,5 +663,5 @@ def answer(work, ask) -> Answer:
     cond = min([c[r].conditioning for r in refs] + [1.0])
     if work.has("acceleration polygon"):
         cond *= drawn_acceleration_polygon(work).worst()
-    return Answer(ask, value, cond, "force polygons", refs=forces.every, figures=(FORCES,),
-                  panel=Panel.FORCE)
+    return Answer(ask, value, cond, "force polygons", refs=forces.every,
+                  figures=(FORCES, BODIES), panel=Panel.FORCE)

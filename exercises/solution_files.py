@@ -295,6 +295,16 @@ def _figure(sol: Solution, spec: FigureSpec, answers) -> _Sketch:
             c, forces.scale, f"{name}: force polygons{where}"), sheet), shown,
             (("Inertia loads read off the acceleration polygon", Panel.ACCELERATION, shown),
              ("The force polygons", Panel.FORCE, shown)))
+    if spec.kind == "bodies":
+        from ..constructions.force_polygons import drawn_forces
+        from ..graphics.free_body_figure import draw_free_bodies
+
+        forces, sheet = drawn_forces(work), paper(sol.exercise.paper)
+        where = f" at {sol.position.label}" if sol.position else ""
+        at = {n: c.point(n).xy for n in c.mechanism.point_names}
+        return _Sketch(spec.stem, spec.heading, lambda: on_sheet(draw_free_bodies(
+            c.mechanism, at, forces.bodies, f"{name}: free bodies{where}",
+            c.mechanism.units.length), sheet), None)
     if spec.kind == "circle diagram":
         every = slice(c, [s.id for s in c if s.kind is Kind.CENTRE], base=asm.position_steps)
         sheet = paper(sol.exercise.paper)

@@ -127,3 +127,19 @@ def test_the_course_projects_crank_shaper_by_its_force_polygons():
         for name, q in sol.quantities.items():
             if name.startswith(("F_", "T")):
                 assert q.rel_error <= 1e-13, (name, q.rel_error)
+
+
+@pytest.mark.parametrize("name", ["engine-forces", "four-bar-forces", "crank-shaper-forces"])
+def test_every_free_body_is_in_balance(name):
+    """Each link drawn alone with its loads and the joint forces the polygons found: its
+    forces add to nothing and so do their moments, to a few roundings of the largest."""
+    worked = tarsim.solve(load_exercise(DATA / f"{name}.toml"))
+    for sol in worked.positions:
+        bodies = drawn_forces(sol.work).bodies
+        biggest = max(math.hypot(*f) for b in bodies.values() for _, f, _, _ in b)
+        for link, forces in bodies.items():
+            fx = math.fsum(f[0] for _, f, _, _ in forces)
+            fy = math.fsum(f[1] for _, f, _, _ in forces)
+            m = math.fsum(w[0] * f[1] - w[1] * f[0] + c for w, f, c, _ in forces)
+            assert abs(fx) < 1e-12 * biggest and abs(fy) < 1e-12 * biggest, (link, fx, fy)
+            assert abs(m) < 1e-12 * biggest, (link, m)
