@@ -108,10 +108,9 @@ def shape_of(mech: Mechanism) -> _Shape:
     Raises
     ------
     TarsimError
-        If the mechanism is not a four-bar or a slider-crank (the dyads drawn so far).
+        If the mechanism is not a four-bar or a slider-crank.
     """
-    why = ("the force polygons are drawn for a four-bar and a slider-crank so far (a crank "
-           "and one dyad); this mechanism's forces are in the analytic reference only")
+    why = _WHY
     moving = [k.number for k in mech.links if k.number != 1]
     d = mech.drive.link
     if len(moving) != 3 or mech.arcs or any(s.rolling or s.contact for s in mech.slides):

@@ -98,6 +98,15 @@ class BalanceSolution(ChapterFiles):
                     out.append((kind, miss))
         return out
 
+    def placed(self, p) -> tuple[tuple[float, float], float, float]:
+        """Plane ``p``'s balancing product as drawn (kg·m), and the mass (kg) and radius (m)
+        it comes to: the file gives one, the product the other."""
+        v = self.balance.product(p.name)
+        size = math.hypot(*v)
+        if p.radius is not None:
+            return v, size / p.radius, p.radius
+        return v, p.mass, size / p.mass
+
     @cached_property
     def residual(self) -> tuple[float, float]:
         """The balanced rotor's leftover force and couple (kg·m, kg·m²): its masses and the
@@ -139,14 +148,9 @@ class BalanceSolution(ChapterFiles):
                    f"{math.hypot(x, y):.6g} kg·m at {quadrant_angle(x, y):.2f}° "
                    f"({math.hypot(x, y) * r.speed ** 2:.6g} N at ω = {r.speed:.6g} rad/s)")
         for p in r.planes:
-            v = self.balance.product(p.name)
-            size = math.hypot(*v)
-            if p.radius is not None:
-                put = f"{size / p.radius:.6g} kg at {self._length(p.radius)}"
-            else:
-                put = f"{p.mass:g} kg at {self._length(size / p.mass)}"
-            out.append(f"plane {p.name}: balancing m·r = {size:.6g} kg·m at {_angle(v):.2f}°, "
-                       f"so {put}")
+            v, mass, radius = self.placed(p)
+            out.append(f"plane {p.name}: balancing m·r = {math.hypot(*v):.6g} kg·m at "
+                       f"{_angle(v):.2f}°, so {mass:.6g} kg at {self._length(radius)}")
         if len(r.planes) == 1 and len({m.plane for m in r.masses}) > 1:
             couple = math.hypot(*(math.fsum(m.mr[i] * (m.plane - r.planes[0].position)
                                             for m in r.masses) for i in (0, 1)))
@@ -271,10 +275,7 @@ class BalanceSolution(ChapterFiles):
                    f"{math.degrees(m.angle):g}°") for m in r.masses]
         found = []
         for p in r.planes:
-            v = b.product(p.name)
-            size = math.hypot(*v)
-            radius = p.radius if p.radius is not None else size / p.mass
-            mass = p.mass if p.mass is not None else size / p.radius
+            v, mass, radius = self.placed(p)
             found.append((f"{p.name}: {mass:.4g} kg at {radius / metre:.4g} {unit}, "
                           f"{_angle(v):.2f}°", math.atan2(v[1], v[0]), radius))
         out = {"space": draw_end_view(b.construction, masses, f"{ex.name}: space diagram",
@@ -313,10 +314,8 @@ class BalanceSolution(ChapterFiles):
                          + [f"{m.mass * m.radius:.4g}"] + (
                 [f"{m.mass * m.radius * (m.plane - ref):.4g}"] if two else [])))
         for p in r.planes:
-            v = self.balance.product(p.name)
+            v, mass, radius = self.placed(p)
             size = math.hypot(*v)
-            mass = p.mass if p.mass is not None else size / p.radius
-            radius = p.radius if p.radius is not None else size / p.mass
             rows.append((p.name, [f"{mass:.4g}", f"{radius / metre:.4g}", f"{_angle(v):.2f}°"]
                          + ([] if flat else [f"{(p.position - ref) / metre:g}"])
                          + [f"{size:.4g}"] + ([f"{size * (p.position - ref):.4g}"] if two
