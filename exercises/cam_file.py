@@ -44,6 +44,11 @@ class CamExercise:
     """The jerk is asked for: its diagram and each segment's peak."""
 
     @property
+    def metre(self) -> float:
+        """Metres in one of the file's length units."""
+        return LENGTH_UNITS[self.length_unit]
+
+    @property
     def sigma(self) -> float:
         """The cam's sense: +1 counter-clockwise."""
         return 1.0 if self.omega > 0 else -1.0

@@ -18,7 +18,6 @@ from ..constructions.cams.displacement import Displacement
 from ..constructions.cams.inversion import Layout, lay_out_profile
 from ..constructions.cams.survey import Survey, survey
 from ..constructions.errors import InputError
-from ..constructions.model import LENGTH_UNITS
 from ..constructions.narration import narrate
 from ..graphics.cam_layout_figure import draw_cam_layout
 from ..graphics.figure import Figure
@@ -55,9 +54,7 @@ class CamProfile:
     # ----- words ----------------------------------------------------------------------------
     def length_text(self, v: float) -> str:
         """A length (m) in the file's unit."""
-        unit = self.exercise.length_unit
-
-        return f"{v / LENGTH_UNITS[unit]:.4g} {unit}"
+        return f"{v / self.exercise.metre:.4g} {self.exercise.length_unit}"
 
     def lines(self) -> list[str]:
         """What the command line prints of the profile."""
@@ -128,7 +125,7 @@ class CamProfile:
         notes = ["UNDERCUT: ringed where the roller cannot make the profile"] \
             if self.survey.undercut else []
         return {"profile": draw_cam_layout(self.layout, self.survey, f"{ex.name}: profile",
-                                           ex.length_unit, LENGTH_UNITS[ex.length_unit],
+                                           ex.length_unit, ex.metre,
                                            notes),
                 "profile-table": self.table()}
 
@@ -136,7 +133,7 @@ class CamProfile:
         """The pressure angle (or a flat face's run) and the curvature at each station."""
         ex, f = self.exercise, self.exercise.follower
         flat, unit = f.kind == "flat-faced", ex.length_unit
-        metre = LENGTH_UNITS[unit]
+        metre = ex.metre
 
         def length(v: float) -> str:
             return _signed(f"{v / metre:.4g}" if abs(v) > 1e-9 * ex.base_radius else "0")

@@ -118,7 +118,7 @@ class CamSolution(ChapterFiles):
         """What the command line prints: each segment's peaks, checked."""
         ex = self.exercise
         unit = ex.length_unit
-        size = 1.0 / _metres(unit)
+        size = 1.0 / ex.metre
         out = []
         for p in self.peaks:
             a = "∞ (at its ends)" if math.isinf(p.acceleration) else \
@@ -192,10 +192,10 @@ class CamSolution(ChapterFiles):
                          "acceleration": plot("the arm's angular acceleration", "α (rad/s²)",
                                               accs, 1 / arm)} if arm else
                         {"velocity": plot("velocity", f"ẏ ({unit}/s)", vs,
-                                          1.0 / _metres(unit)),
+                                          1.0 / ex.metre),
                          "acceleration": plot("acceleration", "ÿ (m/s²)", accs, 1.0)})
         return {"displacement": draw_displacement_figure(
-                    self.diagram, curve, f"{name}: displacement", unit, _metres(unit),
+                    self.diagram, curve, f"{name}: displacement", unit, ex.metre,
                     arm=arm)} | motion_plots | (
             {"jerk": plot("jerk", "jerk (m/s³)", jerks, 1.0, spikes)} if ex.jerk else {}
         ) | self.profile.figures()
@@ -282,12 +282,6 @@ def _y(s, theta: float) -> float:
 
 def _net(s) -> float:
     return s.lift if s.kind == "rise" else -s.lift if s.kind == "return" else 0.0
-
-
-def _metres(unit: str) -> float:
-    from ..constructions.model import LENGTH_UNITS
-
-    return LENGTH_UNITS[unit]
 
 
 def solve_cam(ex: CamExercise, *, allow_undercut: bool = False) -> CamSolution:
