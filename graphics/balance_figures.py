@@ -13,7 +13,7 @@ import math
 from collections.abc import Sequence
 
 from ..constructions.record import Construction, Ref
-from .figure import Circle, Figure, Path, Text
+from .figure import Circle, Figure, Path, Text, clear_of
 from .scales import draw_caption, nice_per_cm
 from .symbols import draw_arrow
 
@@ -115,6 +115,7 @@ def draw_end_view(c: Construction, masses: Sequence[tuple[str, float, str]], tit
     mid = at + width / 2
     fig.add(Text((4.2 * math.cos(mid), -4.2 * math.sin(mid) + 1.0), "O", 3.0, "middle", True))
     fig.add(Path(((0.0, 0.0), (reach * k * 0.35, 0.0)), "reference"))   # the 0° radius
+    taken: list = []                    # the names set so far: each moved out till clear
     for name, _, label in masses:
         x, y = c.output(f"P{name}").xy
         at = (x * k, -y * k)
@@ -122,17 +123,19 @@ def draw_end_view(c: Construction, masses: Sequence[tuple[str, float, str]], tit
         fig.add(Circle(at, 1.6, "pin"))
         d = math.hypot(*at) or 1.0
         out = (at[0] / d, at[1] / d)
-        fig.add(Text((at[0] + 4.5 * out[0], at[1] + 4.5 * out[1] + 1.0), label, 2.8,
-                     "start" if out[0] > 0.2 else "end" if out[0] < -0.2 else "middle",
-                     False))
+        fig.add(clear_of(Text((at[0] + 4.5 * out[0], at[1] + 4.5 * out[1] + 1.0), label,
+                              2.8, "start" if out[0] > 0.2 else "end" if out[0] < -0.2
+                              else "middle", False), taken, keep=True,
+                         step=(1.5 * out[0], 1.5 * out[1] or 1.5)))
     for label, angle, radius in found:
         at = (radius * k * math.cos(angle), -radius * k * math.sin(angle))
         fig.add(Path(((0.0, 0.0), at), "normal"))
         fig.add(Circle(at, 1.6, "badge"))
         out = (math.cos(angle), -math.sin(angle))
-        fig.add(Text((at[0] + 4.5 * out[0], at[1] + 4.5 * out[1] + 1.0), label, 2.8,
-                     "start" if out[0] > 0.2 else "end" if out[0] < -0.2 else "middle",
-                     False))
+        fig.add(clear_of(Text((at[0] + 4.5 * out[0], at[1] + 4.5 * out[1] + 1.0), label,
+                              2.8, "start" if out[0] > 0.2 else "end" if out[0] < -0.2
+                              else "middle", False), taken, keep=True,
+                         step=(1.5 * out[0], 1.5 * out[1] or 1.5)))
     draw_caption(fig, title, ["end view: each mass on its radial line, angles from the "
                               "reference radius (the short dashed one), counter-clockwise"],
                  per_cm=per_cm, unit=unit, notes=notes,

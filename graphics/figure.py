@@ -10,7 +10,7 @@ from __future__ import annotations
 import math
 import pathlib
 from collections.abc import Callable
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 __all__ = ["Style", "STYLES", "View", "Path", "Circle", "Text", "Figure", "FONT", "text_width",
            "wrap_text",
@@ -177,6 +177,21 @@ _ADVANCE_GROUPS = {
     0.94: "⊥", 0.95: "%m", 1.00: "@—", 1.02: "M", 1.03: "W",
 }
 _ADVANCE = {ch: w for w, chars in _ADVANCE_GROUPS.items() for ch in chars}
+
+
+def clear_of(label: Text, taken: list, *, keep: bool = False,
+             step: tuple[float, float] = (0.0, 3.4)) -> Text:
+    """``label`` moved by ``step`` at a time until its box meets none of the boxes
+    ``taken``; with ``keep`` its box is taken too. For a few names round one drawing, where
+    the label placer's search would be more than the figure needs."""
+    for _ in range(200):
+        x0, y0, x1, y1 = label.box()
+        if not any(x0 < b[2] and b[0] < x1 and y0 < b[3] and b[1] < y1 for b in taken):
+            break
+        label = replace(label, at=(label.at[0] + step[0], label.at[1] + step[1]))
+    if keep:
+        taken.append(label.box())
+    return label
 
 
 def text_width(text: str, size: float) -> float:

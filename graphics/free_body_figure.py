@@ -10,9 +10,8 @@ the force polygons: each body's forces add to nothing.
 from __future__ import annotations
 
 import math
-from dataclasses import replace
 
-from .figure import Figure, Path, Text
+from .figure import Figure, Path, Text, clear_of
 from .scales import draw_caption, nice_per_cm
 from .symbols import draw_arrow, draw_turning_arrow
 
@@ -76,8 +75,8 @@ def draw_free_bodies(mech, at: dict, bodies: dict, title: str, unit: str) -> Fig
                 label = Text((head[0] + 2.5 * u[0], head[1] + 2.5 * u[1] + 1.0), text, 2.6,
                              "start" if u[0] >= 0 else "end", False, "normal", sub,
                              f"{tail_text} = {size:.4g} N")
-                spot = _clear(label, taken).at
-                fig.add(_clear(label, taken, keep=True))
+                spot = clear_of(label, taken).at
+                fig.add(clear_of(label, taken, keep=True))
                 lowest = max(lowest, head[1], spot[1])
             elif size > 0:
                 small.append(f"{name.replace('_', '')} = {size:.3g} N on link {link}")
@@ -85,7 +84,7 @@ def draw_free_bodies(mech, at: dict, bodies: dict, title: str, unit: str) -> Fig
                 mid = draw_turning_arrow(fig, tail, 5.0, math.radians(30),
                                          math.copysign(math.radians(240), couple))
                 text, sub, tail_text = _name(name.replace("Fi", "Mi"))
-                fig.add(_clear(Text((mid[0] - 2.0, mid[1] - 3.0), text, 2.6, "end", False,
+                fig.add(clear_of(Text((mid[0] - 2.0, mid[1] - 3.0), text, 2.6, "end", False,
                                     "normal", sub, f"{tail_text} = {abs(couple):.4g} N·m"),
                                taken, keep=True))
         fig.add(Text((x, lowest + 9.0), f"link {link}", 3.0, "middle", False, "bold"))
@@ -100,19 +99,6 @@ def draw_free_bodies(mech, at: dict, bodies: dict, title: str, unit: str) -> Fig
 def _reach(mech, link: int, at: dict, bodies: dict) -> list:
     """The points a body's drawing spans: its own and those its forces act at."""
     return [at[n] for n in mech.link(link).names] + [w for w, _, _, _ in bodies[link]]
-
-
-def _clear(label: Text, taken: list, *, keep: bool = False) -> Text:
-    """``label`` moved down, a line at a time, until its box meets none of ``taken``; with
-    ``keep`` its box is taken too."""
-    while True:
-        x0, y0, x1, y1 = label.box()
-        if not any(x0 < b[2] and b[0] < x1 and y0 < b[3] and b[1] < y1 for b in taken):
-            break
-        label = replace(label, at=(label.at[0], label.at[1] + 3.4))
-    if keep:
-        taken.append(label.box())
-    return label
 
 
 def _name(name: str) -> tuple[str, str, str]:
