@@ -31,8 +31,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
 import tarsim  # noqa: E402
 from tarsim.exercises import solution_files  # noqa: E402
-from tarsim.exercises.catalog import (bundled, bundled_balancing, bundled_cams,  # noqa: E402
-                                      bundled_trains)
+from tarsim.exercises.catalog import bundled, everything  # noqa: E402
 from tarsim.graphics import workers  # noqa: E402
 from tarsim.graphics.export import svg_to  # noqa: E402
 from tarsim.graphics.svg import to_svg  # noqa: E402
@@ -126,17 +125,11 @@ def main(argv: list[str] | None = None) -> None:
           f"{wall(cli + ['solve', 'four-bar', '-o', 'out', '--no-pdf'], r):>8.2f}")
     for name in bundled():
         print(f"{'tarsim solve ' + name:<40}{wall(cli + ['solve', name, '-o', 'out'], r):>8.2f}")
-    # The other chapters: gear trains, cams, balancing, and the loaded mechanisms' forces
-    # (their files are the tests' own).
-    for name in [*bundled_trains(), *bundled_cams(), *bundled_balancing()]:
+    # The other chapters: the loaded mechanisms' forces, gear trains, cams, balancing.
+    for name in [n for n in everything() if n not in bundled()]:
         print(f"{'tarsim solve ' + name:<40}{wall(cli + ['solve', name, '-o', 'out'], r):>8.2f}")
-    data = Path(__file__).resolve().parents[1] / "tests" / "data"
-    for stem in ("engine-forces", "crank-shaper-forces"):
-        path = str(data / f"{stem}.toml")
-        print(f"{'tarsim solve ' + stem:<40}{wall(cli + ['solve', path, '-o', 'out'], r):>8.2f}")
-    path = str(data / "crank-shaper-forces.toml")
     print(f"{'tarsim sweep crank-shaper-forces':<40}"
-          f"{wall(cli + ['sweep', path, '-o', 'out'], r):>8.2f}")
+          f"{wall(cli + ['sweep', 'crank-shaper-forces', '-o', 'out'], r):>8.2f}")
 
     heads = ("solve", "draw", "draw, 1 core", "svg", "write + pdf")
     print(f"\n{'in one process (s)':<26}" + "".join(f"{h:>14}" for h in heads))

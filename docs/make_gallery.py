@@ -18,8 +18,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 import cairosvg  # noqa: E402
 
 import tarsim  # noqa: E402
-from tarsim.exercises.catalog import (bundled, bundled_balancing, bundled_cams,  # noqa: E402
-                                      bundled_trains)
+from tarsim.exercises.catalog import everything  # noqa: E402
 from tarsim.graphics.svg import to_svg  # noqa: E402
 
 GALLERY = Path(__file__).resolve().parent / "gallery"
@@ -43,7 +42,7 @@ def main_figure(figures: dict):
 def main() -> None:
     """Solve every bundled exercise and write its main figure as docs/gallery/<id>.png."""
     GALLERY.mkdir(exist_ok=True)
-    for name in [*bundled(), *bundled_trains(), *bundled_cams(), *bundled_balancing()]:
+    for name in everything():
         stem, figure = main_figure(tarsim.solve(tarsim.load(name)).figures)
         svg = to_svg(figure)
         width_mm = figure.width

@@ -553,11 +553,11 @@ def list_():
     import tomllib
 
     from .cam_file import CamExercise
-    from .catalog import bundled, bundled_balancing, bundled_cams, bundled_trains, load
+    from .catalog import everything, load
     from .rotor_file import BalanceExercise
     from .train_file import TrainExercise, ask_symbol
 
-    found = {**bundled(), **bundled_trains(), **bundled_cams(), **bundled_balancing()}
+    found = everything()
     pad = max(map(len, found), default=0) + 2
     for name, path in found.items():
         try:

@@ -10,7 +10,8 @@ from collections.abc import Sequence
 
 from ..constructions import geometry as g
 from ..constructions.record import Construction, Panel, Role
-from .figure import Circle, Figure, Path, Text
+from .figure import Circle, Figure, Path
+from .labels import LabelPlacer
 from .scales import draw_caption, nice_per_cm
 from .symbols import draw_arrow
 
@@ -49,23 +50,18 @@ def draw_force_figure(c: Construction, scale: float, title: str,
             u = (d[0] / n, d[1] / n)
             fig.add(Path(((start[0] - 5.0 * u[0], start[1] - 5.0 * u[1]),
                           (cross[0] + 5.0 * u[0], cross[1] + 5.0 * u[1])), "construction"))
+    named = []
     for s in joins:
         a, b = paper(s.output.start.xy), paper(s.output.end.xy)
         if math.dist(a, b) < 0.3:
             continue
         draw_arrow(fig, a, b, "vector_result" if s.role is Role.RESULT else "vector")
         if s.label and math.dist(a, b) > 4.0:      # a shorter one is named in the steps
-            mid = ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)
-            n = math.dist(a, b)
-            side = ((b[1] - a[1]) / n * 3.2, -(b[0] - a[0]) / n * 3.2)
-            text, sub, tail = _split(s.label)
-            fig.add(Text((mid[0] + side[0], mid[1] + side[1]), text, 2.8, "middle", False,
-                         "normal", sub, tail))
-    for s in steps:
-        if s.verb == "intersect_lines":
-            at = paper(s.output.xy)
-            fig.add(Circle(at, 0.7, "dot"))
-            fig.add(Text((at[0] + 2.0, at[1] - 2.0), "x", 3.0, "start", True))
+            named.append((a, b, s.label))
+    crosses = [paper(s.output.xy) for s in steps if s.verb == "intersect_lines"]
+    for at in crosses:
+        fig.add(Circle(at, 0.7, "dot"))
+    _name_forces(fig, named, crosses)
     draw_caption(fig, title, ["every load head to tail; a polygon closed by two lines "
                               "crossing at x, or by its heavy closing side"],
                  per_cm=per_cm, unit="N", legend=(("vector", "a force"),
@@ -73,6 +69,29 @@ def draw_force_figure(c: Construction, scale: float, title: str,
                                                   ("construction", "a closing line")),
                  notes=notes, scale_name="Force scale")
     return fig
+
+
+def _name_forces(fig: Figure, named, crosses) -> None:
+    """Name each force beside its own shaft, the shortest first (they have least room), and
+    each crossing x, every name clear of every line, head and other name."""
+    placer = LabelPlacer(fig)
+    placer.block_drawn()
+    placer.name_vectors((a, b) for a, b, _ in named)
+    placer.name_points(crosses)
+    for a, b, label in sorted(named, key=lambda v: math.dist(v[0], v[1])):
+        n = math.dist(a, b)
+        normal = math.atan2((b[0] - a[0]) / n, (b[1] - a[1]) / n)   # square to it, on paper
+        anchors = [(a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])) for t in _ALONG]
+        text, sub, tail = _split(label)
+        placer.place_numbered(text, anchors, [], sub=sub, tail=tail, size=2.8, gap=1.0,
+                              prefer=(normal, normal + math.pi), spread=math.pi / 3,
+                              own=(a, b))
+    for at in crosses:
+        placer.place("x", at, size=3.0, prefer=-math.pi / 4, own=at)
+
+
+_ALONG = (0.5, 0.35, 0.65, 0.2, 0.8)
+"""Where along its shaft a force's name is tried, the middle first."""
 
 
 def _split(label: str) -> tuple[str, str, str]:

@@ -11,7 +11,10 @@ from __future__ import annotations
 
 import math
 
-from .figure import Figure, Path, Text, clear_of
+from shapely.geometry import Point as SPoint
+
+from .figure import Figure, Path, Text
+from .labels import LabelPlacer
 from .scales import draw_caption, nice_per_cm
 from .symbols import draw_arrow, draw_turning_arrow
 
@@ -25,7 +28,8 @@ of under a millimetre shows nothing."""
 
 def draw_free_bodies(mech, at: dict, bodies: dict, title: str, unit: str) -> Figure:
     """Each link of ``bodies`` (link → [(where, force N, couple N·m, name)]) drawn from its
-    points ``at`` (world m), at a space scale that gives the longest link 40 mm."""
+    points ``at`` (world m), at a space scale that gives the longest link 60 mm, the bodies
+    set in rows no wider than a landscape sheet."""
     links = sorted(bodies)
     spans = [max([math.dist(p, q) for p in _reach(mech, k, at, bodies)
                   for q in _reach(mech, k, at, bodies)] + [0.0]) for k in links]
@@ -34,66 +38,100 @@ def draw_free_bodies(mech, at: dict, bodies: dict, title: str, unit: str) -> Fig
     k_space = 10.0 / (per_cm * metre)                  # paper mm a metre
     biggest = max([math.hypot(*f) for b in bodies.values() for _, f, _, _ in b] + [1e-300])
     force_cm = nice_per_cm(biggest, _ARROW)             # newtons a paper cm
-    k_force = 10.0 / force_cm
-    fig = Figure(0.0, 0.0, title=title)
-    x = 0.0
     small: list[str] = []
-    for link in links:
-        names = mech.link(link).names
-        pts = [at[n] for n in names]
-        acting = [w for w, _, _, _ in bodies[link]]
-        every = pts + acting
-        cx = sum(p[0] for p in every) / len(every)
-        cy = sum(p[1] for p in every) / len(every)
-
-        def paper(xy, cx=cx, cy=cy, x=x):
-            return (x + (xy[0] - cx) * k_space, -(xy[1] - cy) * k_space)
-        if len(pts) >= 2:
-            fig.add(Path(tuple(paper(p) for p in pts), "link", closed=len(pts) > 2))
-        elif any(s.guide_link == link for s in mech.slides):
-            # A lever that carries only its pivot: the bar from it along its slot, as far as
-            # the forces on it reach.
-            far = max(acting, key=lambda w: math.dist(w, pts[0]))
-            fig.add(Path((paper(pts[0]), paper(far)), "link"))
-        else:
-            (px, py) = paper(pts[0])
-            fig.add(Path(((px - 3, py - 2), (px + 3, py - 2), (px + 3, py + 2), (px - 3, py + 2)),
-                         "block", closed=True))
-        for n, p in zip(names, pts):
-            fig.add(Text((paper(p)[0] - 1.5, paper(p)[1] + 3.5), n, 2.6, "end", True))
-        lowest = max(paper(p)[1] for p in pts)
-        taken: list[tuple[float, float, float, float]] = []   # the names set on this body
-        for where, f, couple, name in bodies[link]:
-            tail = paper(where)
-            size = math.hypot(*f)
-            if size > _SMALL * biggest:
-                head = (tail[0] + f[0] * k_force, tail[1] - f[1] * k_force)
-                draw_arrow(fig, tail, head, "vector")
-                u = ((head[0] - tail[0]) / math.dist(tail, head),
-                     (head[1] - tail[1]) / math.dist(tail, head))
-                text, sub, tail_text = _name(name)
-                label = Text((head[0] + 2.5 * u[0], head[1] + 2.5 * u[1] + 1.0), text, 2.6,
-                             "start" if u[0] >= 0 else "end", False, "normal", sub,
-                             f"{tail_text} = {size:.4g} N")
-                spot = clear_of(label, taken).at
-                fig.add(clear_of(label, taken, keep=True))
-                lowest = max(lowest, head[1], spot[1])
-            elif size > 0:
-                small.append(f"{name.replace('_', '')} = {size:.3g} N on link {link}")
-            if abs(couple) > 1e-12 * max(biggest, 1.0):
-                mid = draw_turning_arrow(fig, tail, 5.0, math.radians(30),
-                                         math.copysign(math.radians(240), couple))
-                text, sub, tail_text = _name(name.replace("Fi", "Mi"))
-                fig.add(clear_of(Text((mid[0] - 2.0, mid[1] - 3.0), text, 2.6, "end", False,
-                                    "normal", sub, f"{tail_text} = {abs(couple):.4g} N·m"),
-                               taken, keep=True))
-        fig.add(Text((x, lowest + 9.0), f"link {link}", 3.0, "middle", False, "bold"))
-        x += max(spans[links.index(link)] * k_space, 10.0) + 2 * _ARROW + 40.0
+    drawn = [_draw_body(mech, link, at, bodies[link], k_space, 10.0 / force_cm, biggest, small)
+             for link in links]
+    fig = Figure(0.0, 0.0, title=title)
+    x = y = row_height = 0.0
+    for body in drawn:
+        x0, y0, x1, y1 = body.bounds()
+        if x > 0.0 and x + (x1 - x0) > _ROW:
+            x, y, row_height = 0.0, y + row_height + _GAP, 0.0
+        body.shift(x - x0, y - y0)
+        fig.items += body.items
+        x += (x1 - x0) + _GAP
+        row_height = max(row_height, y1 - y0)
     notes = [f"Too small to draw: {', '.join(small)}."] if small else []
     draw_caption(fig, title, ["each link alone with every force on it; its forces add to "
                               "nothing"], per_cm=per_cm, unit=unit, scale_name="Scale",
                  second=("Force scale", force_cm, "N"), notes=notes)
     return fig
+
+
+_ROW = 215.0
+"""The widest a row of bodies runs (mm): a landscape A4's drawing width."""
+
+_GAP = 14.0
+"""Paper (mm) between two bodies, and between rows."""
+
+
+def _draw_body(mech, link: int, at: dict, forces: list, k_space: float, k_force: float,
+               biggest: float, small: list[str]) -> Figure:
+    """One link alone: its outline, every force an arrow from where it acts and every couple
+    a turning arrow, then all their names, placed clear of the drawing and of each other,
+    and the link's number under it. Forces too small to draw are added to ``small``."""
+    names = mech.link(link).names
+    pts = [at[n] for n in names]
+    every = pts + [w for w, _, _, _ in forces]
+    cx = sum(p[0] for p in every) / len(every)
+    cy = sum(p[1] for p in every) / len(every)
+
+    def paper(xy):
+        return ((xy[0] - cx) * k_space, -(xy[1] - cy) * k_space)
+    fig = Figure(0.0, 0.0)
+    if len(pts) >= 2:
+        fig.add(Path(tuple(paper(p) for p in pts), "link", closed=len(pts) > 2))
+    elif any(s.guide_link == link for s in mech.slides):
+        # A lever that carries only its pivot: the bar from it along its slot, as far as the
+        # forces on it reach.
+        far = max(every, key=lambda w: math.dist(w, pts[0]))
+        fig.add(Path((paper(pts[0]), paper(far)), "link"))
+    else:
+        (px, py) = paper(pts[0])
+        fig.add(Path(((px - 3, py - 2), (px + 3, py - 2), (px + 3, py + 2), (px - 3, py + 2)),
+                     "block", closed=True))
+    arrows, turns = [], []
+    for where, f, couple, name in forces:
+        tail = paper(where)
+        size = math.hypot(*f)
+        if size > _SMALL * biggest:
+            head = (tail[0] + f[0] * k_force, tail[1] - f[1] * k_force)
+            draw_arrow(fig, tail, head, "vector")
+            arrows.append((tail, head, name, f"{_tail(name)} = {size:.4g} N"))
+        elif size > 0:
+            small.append(f"{name.replace('_', '')} = {size:.3g} N on link {link}")
+        if abs(couple) > 1e-12 * max(biggest, 1.0):
+            # Couples at one point turn on circles one inside the other.
+            r = 5.0 + 2.5 * sum(math.dist(tail, t[0]) < 0.5 for t in turns)
+            turns.append((tail, draw_turning_arrow(fig, tail, r, math.radians(30),
+                                                   math.copysign(math.radians(240), couple)),
+                          name.replace("Fi", "Mi"), f" = {abs(couple):.4g} N·m", r))
+    placer = LabelPlacer(fig)
+    placer.block_drawn()
+    for centre, _, _, _, r in turns:
+        placer.block(SPoint(centre).buffer(r + 0.6))
+    placer.name_points([paper(p) for p in pts])
+    placer.name_vectors((a, b) for a, b, _, _ in arrows)
+    for n, p in zip(names, pts):
+        placer.place(n, paper(p), size=2.6, prefer=3 * math.pi / 4, own=paper(p))
+    for tail, head, name, said in arrows:
+        text, sub, _ = _name(name)
+        ahead = math.atan2(tail[1] - head[1], head[0] - tail[0])   # the arrow's paper angle
+        placer.place_numbered(text, head, [], sub=sub, tail=said, size=2.6, gap=1.0,
+                              prefer=ahead, spread=math.pi / 2, own=(tail, head))
+    for centre, mid, name, said, _ in turns:
+        text, sub, tail_text = _name(name)
+        out = math.atan2(centre[1] - mid[1], mid[0] - centre[0])
+        placer.place_numbered(text, mid, [], sub=sub, tail=f"{tail_text}{said}", size=2.6,
+                              gap=1.0, prefer=out, spread=math.pi / 2)
+    x0, _, x1, y1 = fig.bounds()
+    fig.add(Text(((x0 + x1) / 2, y1 + 6.0), f"link {link}", 3.0, "middle", False, "bold"))
+    return fig
+
+
+def _tail(name: str) -> str:
+    """What follows a force's subscript on its baseline: F_23ᵗ's ᵗ, or nothing."""
+    return _name(name)[2]
 
 
 def _reach(mech, link: int, at: dict, bodies: dict) -> list:

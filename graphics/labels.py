@@ -16,10 +16,11 @@ from dataclasses import replace
 import numpy as np
 import shapely
 from shapely.geometry import LineString, Polygon, box
+from shapely.geometry import Point as SPoint
 from shapely.geometry.base import BaseGeometry
 from shapely.strtree import STRtree
 
-from .figure import Figure, Path, Text
+from .figure import Circle, Figure, Path, Text
 from .occupancy import Occupancy
 from .symbols import badge_radius, draw_badge
 
@@ -37,6 +38,7 @@ class LabelPlacer:
         self._tree: STRtree | None = None
         self.ink = Occupancy()
         self.seen = 0                 # fig.items looked through for arrowheads
+        self._drawn = 0               # and for lines, by block_drawn
         self.named: list[Shape] = []
         self._named_ends: dict[int, np.ndarray] = {}   # by kind, of ``named``
         self.clearance = 0.8
@@ -220,6 +222,22 @@ class LabelPlacer:
         if size not in self._named_ends:
             self._named_ends[size] = _ends(named)
         return named, self._named_ends[size]
+
+    def block_drawn(self) -> None:
+        """Take the room of everything drawn on the figure since the last look: each line and
+        outline with a little clearance, each dot or circle as a disc (an arc, drawn with
+        its own path, the caller blocks). For a figure drawn first and named after, where
+        every name must keep off every line."""
+        self._see_heads()
+        for it in self.fig.items[self._drawn:]:
+            if isinstance(it, Path) and it.d is None and it.style not in _HEADS:
+                if it.closed and len(it.points) >= 3:
+                    self.block(Polygon(it.points).buffer(0.3))
+                else:
+                    self.block_path(it.points)
+            elif isinstance(it, Circle):
+                self.block(SPoint(it.centre).buffer(it.radius + 0.3))
+        self._drawn = len(self.fig.items)
 
     def _see_heads(self) -> None:
         """Take the room of every arrowhead drawn since the last look, whoever drew it: a

@@ -100,10 +100,10 @@ def strays(fig: Figure, tol: float = 0.05) -> list[tuple[str, tuple, tuple]]:
 
 def bundled_counts() -> dict[str, dict[str, int]]:
     """``{"<exercise>/<figure stem>": counts}`` for every bundled exercise's figures."""
-    from tarsim.exercises.catalog import bundled, load
+    from tarsim.exercises.catalog import bundled, bundled_forces, load
     from tarsim.exercises.solution_files import solve_worked
 
-    return {f"{name}/{stem}": count(fig) for name in bundled()
+    return {f"{name}/{stem}": count(fig) for name in [*bundled(), *bundled_forces()]
             for stem, fig in solve_worked(load(name)).figures.items()}
 
 

@@ -1,7 +1,7 @@
 """The force polygons, drawn link by link with the inertia loads read off the acceleration
 polygon, against every link's Newton–Euler equations and against closed forms.
 
-- The engine (tests/data/engine-forces.toml) and the loaded four-bar: every joint force and
+- The engine (the bundled engine-forces) and the loaded four-bar: every joint force and
   the driving torque as constructed, beside the analytic system: a few roundings of the
   largest force (the checks' own tolerance, from the drawing's conditioning).
 - With only a piston mass and a gas force, the rod is a two-force member, and the driving
@@ -21,15 +21,16 @@ import tarsim
 from tarsim.constructions.errors import InputError
 from tarsim.constructions.force_polygons import drawn_forces
 from tarsim.constructions.reference import solver
+from tarsim.exercises.catalog import bundled_forces
 from tarsim.exercises.cli import cli
 from tarsim.exercises.exercise_file import load_exercise, parse_exercise
 
-DATA = Path(__file__).parent / "data"
+FORCES = {name: Path(path) for name, path in bundled_forces().items()}
 
 
 @pytest.mark.parametrize("name", ["engine-forces", "four-bar-forces"])
 def test_every_force_drawn_is_the_newton_euler_one(name):
-    worked = tarsim.solve(load_exercise(DATA / f"{name}.toml"))
+    worked = tarsim.solve(load_exercise(FORCES[name]))
     assert worked.passed
     (sol,) = worked.positions
     asked = {q for q in sol.quantities}
@@ -42,7 +43,7 @@ def test_every_force_drawn_is_the_newton_euler_one(name):
 def test_the_engines_torque_is_the_textbooks_turning_moment(deg):
     """Only the piston's 1.2 kg and 5 kN of gas, no weight: the crank effort is the
     piston effort F_P = F_gas − m·ẍ_P along the rod, and T2 = F_P·r·sin(θ + φ)/cos φ."""
-    text = (DATA / "engine-forces.toml").read_text(encoding="utf-8")
+    text = (FORCES["engine-forces"]).read_text(encoding="utf-8")
     text = text.replace("angle = 40", f"angle = {deg}").replace("gravity = true",
                                                                   "gravity = false")
     cut = text.index("[[mass]]")
@@ -59,7 +60,7 @@ def test_the_engines_torque_is_the_textbooks_turning_moment(deg):
 
 
 def test_the_image_of_each_centre_gives_the_solvers_acceleration():
-    ex = load_exercise(DATA / "four-bar-forces.toml")
+    ex = load_exercise(FORCES["four-bar-forces"])
     worked = tarsim.solve(ex)
     (sol,) = worked.positions
     forces = drawn_forces(sol.work)
@@ -75,7 +76,7 @@ def test_the_image_of_each_centre_gives_the_solvers_acceleration():
 
 
 def test_forces_asked_without_loads_are_refused_at_the_ask():
-    text = (DATA / "four-bar-forces.toml").read_text(encoding="utf-8")
+    text = (FORCES["four-bar-forces"]).read_text(encoding="utf-8")
     text = text[:text.index("[forces]")]
     with pytest.raises(InputError, match=r"fb.toml:\d+: \[ask.find\] forces are asked, but "
                                          "the file gives no loads"):
@@ -101,7 +102,7 @@ def test_a_mechanism_the_polygons_do_not_cover_is_refused_in_one_line(tmp_path):
 
 def test_solve_writes_the_force_polygons_and_their_steps(tmp_path):
     out = tmp_path / "f"
-    result = CliRunner().invoke(cli, ["solve", str(DATA / "engine-forces.toml"), "-o",
+    result = CliRunner().invoke(cli, ["solve", str(FORCES["engine-forces"]), "-o",
                                       str(out), "--no-pdf"])
     assert result.exit_code == 0, result.output
     assert "T2 = −64.9688 N·m (cw)" in result.output
@@ -116,7 +117,7 @@ def test_the_course_projects_crank_shaper_by_its_force_polygons():
     by the slot at B (F_45 = 1000 N) and by the crank, T2 = −1000 N × 232.941 mm/s / 1 rad/s;
     at t = 2.34 s (the return: no cut) the torque from 4 on 3 is I3·α4 = 3.32e-4 N·m and
     the slot's push on the ram's pin 0.0567 N, the project's orders of magnitude."""
-    worked = tarsim.solve(load_exercise(DATA / "crank-shaper-forces.toml"))
+    worked = tarsim.solve(load_exercise(FORCES["crank-shaper-forces"]))
     assert worked.passed
     cut, back = worked.positions
     assert cut.quantities["F_45"].value["value"] == pytest.approx(1000.0, rel=1e-12)
@@ -129,11 +130,31 @@ def test_the_course_projects_crank_shaper_by_its_force_polygons():
                 assert q.rel_error <= 1e-13, (name, q.rel_error)
 
 
+def test_the_cut_adds_its_own_power_to_the_crank_shapers_torque():
+    """The project's run once without and once with the cut: the two bundled crank-shapers
+    differ only by 1000 N against the ram, so by superposition and the balance of power
+    their driving torques differ by F·V_B/ω2, V_B from the analytic velocities. With no cut
+    the return at t = 2.34 s is the same in both."""
+    cut = tarsim.solve(tarsim.load("crank-shaper-forces")).positions
+    bare = tarsim.solve(tarsim.load("crank-shaper-inertia")).positions
+    assert all(q.rel_error <= 1e-13 for sol in bare for q in sol.quantities.values())
+    sol = cut[0]
+    (vx, vy), omega = sol.work.kinematics.velocities["B"], sol.work.mechanism.drive.omega
+    # The cut resists the ram's motion: the driver puts in F·|V_B| more, T2·ω2 of it.
+    extra = 1000.0 * math.hypot(vx, vy) / omega
+    assert cut[0].quantities["T2"].value["value"] - bare[0].quantities["T2"].value["value"] \
+        == pytest.approx(extra, rel=1e-12)
+    for name, q in bare[1].quantities.items():
+        same = cut[1].quantities[name].value
+        for key in q.value:
+            assert q.value[key] == pytest.approx(same[key], rel=1e-12, abs=1e-15), name
+
+
 @pytest.mark.parametrize("name", ["engine-forces", "four-bar-forces", "crank-shaper-forces"])
 def test_every_free_body_is_in_balance(name):
     """Each link drawn alone with its loads and the joint forces the polygons found: its
     forces add to nothing and so do their moments, to a few roundings of the largest."""
-    worked = tarsim.solve(load_exercise(DATA / f"{name}.toml"))
+    worked = tarsim.solve(load_exercise(FORCES[name]))
     for sol in worked.positions:
         bodies = drawn_forces(sol.work).bodies
         biggest = max(math.hypot(*f) for b in bodies.values() for _, f, _, _ in b)

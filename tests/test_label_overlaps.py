@@ -10,14 +10,14 @@ import json
 
 import pytest
 
-from tarsim.exercises.catalog import bundled
+from tarsim.exercises.catalog import bundled, bundled_forces
 from tests.label_overlaps import KINDS, RECORD, count, strays
 
 RECORDED = json.loads(RECORD.read_text(encoding="utf-8"))
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("exercise_id", sorted(bundled()))
+@pytest.mark.parametrize("exercise_id", sorted([*bundled(), *bundled_forces()]))
 def test_no_figure_covers_more_than_its_record(solved, exercise_id):
     for stem, fig in solved(exercise_id).figures.items():
         key = f"{exercise_id}/{stem}"

@@ -20,12 +20,13 @@ from click.testing import CliRunner
 from tarsim.constructions.errors import InputError
 from tarsim.constructions.reference.flywheel import (fluctuation, flywheel_inertia,
                                                      speed_fluctuation)
+from tarsim.exercises.catalog import bundled_forces
 from tarsim.exercises.cli import cli
 from tarsim.exercises.exercise_file import load_exercise, parse_exercise
 from tarsim.exercises.turning_moment import turning_moment
 
-DATA = Path(__file__).parent / "data"
-SHAPER = DATA / "crank-shaper-forces.toml"
+FORCES = {name: Path(path) for name, path in bundled_forces().items()}
+SHAPER = FORCES["crank-shaper-forces"]
 
 
 @pytest.mark.parametrize("k", [1, 2, 3])

@@ -7,8 +7,8 @@ from pathlib import Path
 
 from ...constructions.errors import InputError
 
-__all__ = ["bundled", "bundled_trains", "bundled_cams", "bundled_balancing", "resolve",
-           "load"]
+__all__ = ["bundled", "bundled_trains", "bundled_cams", "bundled_balancing", "bundled_forces",
+           "everything", "resolve", "load"]
 
 
 def bundled() -> dict[str, Path]:
@@ -31,6 +31,19 @@ def bundled_balancing() -> dict[str, Path]:
     return _tomls(resources.files(__name__) / "balancing")
 
 
+def bundled_forces() -> dict[str, Path]:
+    """Map each bundled loaded linkage's id to its path (the catalog's forces/ folder): the
+    force analysis's exercises, kept apart so the kinematics' own stay quick to check."""
+    return _tomls(resources.files(__name__) / "forces")
+
+
+def everything() -> dict[str, Path]:
+    """Every bundled id, chapter by chapter: the linkages, the loaded linkages, the gear
+    trains, the cams, the rotors and engines."""
+    return {**bundled(), **bundled_forces(), **bundled_trains(), **bundled_cams(),
+            **bundled_balancing()}
+
+
 def _tomls(root) -> dict[str, Path]:
     return {p.name[:-5]: Path(str(p)) for p in sorted(root.iterdir(), key=lambda p: p.name)
             if p.name.endswith(".toml")}
@@ -47,7 +60,7 @@ def resolve(name: str) -> Path:
     path = Path(name)
     if path.is_file():
         return path
-    ids = {**bundled(), **bundled_trains(), **bundled_cams(), **bundled_balancing()}
+    ids = everything()
     if name in ids:
         return ids[name]
     if path.is_dir():
