@@ -28,6 +28,7 @@ __all__ = ["Ask", "Position", "Centre", "AngularVelocity", "Velocity", "Relative
            "Mobility",
            "GrashofClass",
            "LengthRange", "TimeRatio", "Stroke", "CentreCount", "JointForce", "DrivingTorque",
+           "Effort", "EFFORTS",
            "parse_ask", "ask_names",
            "SYMBOLS", "symbol", "ordered"]
 
@@ -414,6 +415,26 @@ class DrivingTorque(Ask):
         return f"T{self.link}"
 
 
+@dataclass(frozen=True)
+class Effort(Ask):
+    """An engine's force as the textbooks name it, from the force polygons: the piston
+    effort (its loads along the stroke, + toward the crank), the wall's thrust on the
+    piston (its size), the crank effort (the rod's push on the crank pin square to the
+    crank, + CCW) and the turning moment it gives (N·m, CCW +)."""
+
+    word: str
+    order: ClassVar[int] = 9
+
+    @property
+    def name(self) -> str:
+        """``piston_effort``, ``wall_thrust``, ``crank_effort`` or ``turning_moment``."""
+        return self.word
+
+
+EFFORTS = ("piston_effort", "wall_thrust", "crank_effort", "turning_moment")
+"""The efforts an exercise may ask: the first two of a slider-crank only."""
+
+
 _POINT = r"([A-Za-z][A-Za-z0-9_']*)"
 _PLAIN = r"([A-Za-z][A-Za-z0-9']*)"      # a point where an underscore follows
 _GRAMMAR: tuple[tuple[re.Pattern, callable], ...] = tuple(
@@ -446,6 +467,7 @@ _GRAMMAR: tuple[tuple[re.Pattern, callable], ...] = tuple(
         (r"n_centres", lambda m: CentreCount()),
         (r"([FT])_(\d)(\d)", lambda m: JointForce(int(m[2]), int(m[3]), m[1])),
         (r"T(\d+)", lambda m: DrivingTorque(int(m[1]))),
+        ("|".join(EFFORTS), lambda m: Effort(m[0])),
     ))
 
 

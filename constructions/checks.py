@@ -247,6 +247,7 @@ _RULES: dict[type, Callable[[dict, dict, float], tuple[dict, dict, float]]] = {
     A.GrashofClass: _same_class, A.LengthRange: _interval,
     A.JointForce: lambda v, r, scale: (_vector if "vector" in r else _rate)(v, r, scale),
     A.DrivingTorque: _rate,
+    A.Effort: _rate,
 }
 
 

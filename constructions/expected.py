@@ -262,6 +262,15 @@ def joint_force(work, ask: A.JointForce) -> Expected:
     return Expected({"value": j.moment} if ask.letter == "T" else vector_value(*j.force))
 
 
+def effort(work, ask: A.Effort) -> Expected:
+    """An engine's effort by its textbook definition, from the same equations' joint
+    forces and the loads' closed forms."""
+    from .reference.kinetostatics import efforts
+
+    return Expected({"value": efforts(work.reference, work.kinematics, work.loads,
+                                      _statics(work))[ask.word]})
+
+
 def driving_torque(work, ask: A.DrivingTorque) -> Expected:
     """The driving torque by the same equations (the balance of power agrees with it: see
     :func:`~.reference.kinetostatics.power_torque`)."""

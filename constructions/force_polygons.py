@@ -34,7 +34,7 @@ from . import asks as A
 from .acceleration_polygon import drawn_acceleration_polygon
 from .checks import Answer, FigureSpec, vector_value
 from .errors import TarsimError
-from .loads import Loads
+from .loads import Loads, crank_tangent, stroke_axis
 from .model import Mechanism, SlideKind
 from .narration import phrase
 from .record import Construction, Kind, Panel, Ref, Role
@@ -68,6 +68,8 @@ class Forces:
     """Each massive link's inertia force (N) and couple (N·m), as read off the polygon."""
     every: tuple[Ref, ...] = ()
     """Every step of the analysis, for its figure and its steps: each answer shows it all."""
+    efforts: dict[str, float] = field(default_factory=dict)
+    """The engine's efforts as the textbooks name them (:class:`~.asks.Effort`)."""
     bodies: dict[int, list[tuple[Vec, Vec, float, str]]] = field(default_factory=dict)
     """Each moving link as a free body: every force on it (where, force N, couple N·m, its
     name), the loads and the joints' forces as the polygons found them."""
@@ -262,7 +264,22 @@ def _dyad(c, draw, out: Forces, sh: _Shape, at, known):
         # The block's couple from the guide: its moments about B vanish.
         out.couples[f"T_1{sh.j}"] = -_moment(at[sh.b], known[sh.j])
         out.refs[f"T_1{sh.j}"] = refs
+        _piston_effort(c, out, sh, at, known[sh.j], joint_j, refs)
     return sh.i, (-f_di[0], -f_di[1]), sh.o, sh.a
+
+
+def _piston_effort(c, out: Forces, sh: _Shape, at, loads, wall: Vec, refs) -> None:
+    """A slider-crank's piston effort, its loads along the stroke (laid off head to tail in
+    the polygon, so their sum runs from its start to the end of the piston's part), and the
+    wall's thrust, the guide's push the polygon closed on."""
+    u = stroke_axis(at[sh.o], at[sh.b], sh.guide)
+    piston = _sum(f for _, f, _, _ in loads)
+    out.efforts["piston_effort"] = piston[0] * u[0] + piston[1] * u[1]
+    out.efforts["wall_thrust"] = math.hypot(*wall)
+    said = c.draw("force:say:piston", "mark", c.points[sh.b], phrase=phrase(
+        "force.piston", j=sh.j, effort=f"{out.efforts['piston_effort']:.6g} N",
+        thrust=f"{out.efforts['wall_thrust']:.6g} N"))
+    out.refs["piston_effort"] = out.refs["wall_thrust"] = (*refs, said)
 
 
 def _crank(c, draw, out: Forces, d: int, i: int, f_id: Vec, o: str, a: str, at, known):
@@ -279,7 +296,9 @@ def _crank(c, draw, out: Forces, d: int, i: int, f_id: Vec, o: str, a: str, at, 
     c.draw("force:say:driver", "mark", start, panel=Panel.FORCE,
            phrase=phrase("force.driver", d=d, i=i, o=o))
     tip = draw.loads(d, start, known[d])
+    pulled = tip
     tip = draw.vector(f"{i}on{d}", tip, f_id, label=f"F_{i}{d}")
+    _crank_effort(c, draw, out, pulled, tip, f"F_{i}{d}", o, a, at)
     closing = draw.join("frame", tip, start, role=Role.RESULT, label=f"F_1{d}")
     out.joints[f"F_1{d}"] = draw.read(closing)
     out.refs[f"F_1{d}"] = (closing,)
@@ -289,6 +308,35 @@ def _crank(c, draw, out: Forces, d: int, i: int, f_id: Vec, o: str, a: str, at, 
     said = c.draw("force:say:torque", "mark", start, panel=Panel.FORCE, phrase=phrase(
         "force.torque", d=d, o=o, torque=f"{torque:.6g} N·m"))
     out.refs[f"T{d}"] = (closing, said)
+
+
+def _crank_effort(c, draw, out: Forces, tail: Ref, head: Ref, name: str, o: str, a: str,
+                  at) -> None:
+    """Split the push on the crank pin (drawn from ``tail`` to ``head``) along the crank and
+    square to it: through its tail a parallel to the crank, through its head a parallel to
+    the crank circle's tangent at the pin; they cross where the radial part ends and the
+    tangential part, the crank effort, begins. Its moment about the pivot, effort × crank,
+    is the turning moment."""
+    crank = c.draw("force:line:crank", "line_through", c.points[o], c.points[a],
+                   kind=Kind.LINE)
+    tangent = c.draw("force:line:tangent", "perpendicular_through", c.points[a], crank,
+                     kind=Kind.LINE)
+    radial = c.draw("force:n:radial", "parallel_through", tail, crank, kind=Kind.LINE,
+                    panel=Panel.FORCE)
+    square = c.draw("force:n:tangential", "parallel_through", head, tangent, kind=Kind.LINE,
+                    panel=Panel.FORCE)
+    cross = c.draw("force:X:effort", "intersect_lines", radial, square, label="x",
+                   panel=Panel.FORCE)
+    part = draw.join("effort", cross, head, label="F_T")
+    t = crank_tangent(at[o], at[a])
+    pushed = draw.read(part)
+    effort = pushed[0] * t[0] + pushed[1] * t[1]
+    r = math.dist(at[o], at[a])
+    out.efforts["crank_effort"], out.efforts["turning_moment"] = effort, effort * r
+    said = c.draw("force:say:effort", "mark", c.points[a], phrase=phrase(
+        "force.effort", name=name, o=o, a=a, effort=f"{effort:.6g} N",
+        moment=f"{effort * r:.6g} N·m"))
+    out.refs["crank_effort"] = out.refs["turning_moment"] = (cross, part, said)
 
 
 @dataclass(frozen=True)
@@ -635,8 +683,16 @@ def _loads(work, loads: Loads, link: int, at, inertia) -> list[tuple[Vec, Vec, f
 
 
 def forces_askable(mech: Mechanism) -> set[str]:
-    """The forces an exercise may ask of ``mech``: its joints' and the driving torque."""
-    return force_names(mech)
+    """The forces an exercise may ask of ``mech``: its joints', the driving torque, the
+    crank effort and its turning moment, and a slider-crank's piston effort and wall
+    thrust."""
+    out = force_names(mech) | {"crank_effort", "turning_moment"}
+    try:
+        if shape_of(mech).guide is not None:
+            out |= {"piston_effort", "wall_thrust"}
+    except TarsimError:
+        pass
+    return out
 
 
 def drawn_forces(work) -> Forces:
@@ -654,6 +710,8 @@ def answer(work, ask) -> Answer:
     c = work.assembly
     if isinstance(ask, A.DrivingTorque):
         value = {"value": forces.torque}
+    elif isinstance(ask, A.Effort):
+        value = {"value": forces.efforts[ask.word]}
     elif ask.letter == "T":
         value = {"value": forces.couples[ask.name]}
     else:

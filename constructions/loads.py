@@ -10,7 +10,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-__all__ = ["Couple", "Loads", "Mass", "PointForce", "GRAVITY"]
+__all__ = ["Couple", "Loads", "Mass", "PointForce", "GRAVITY", "crank_tangent",
+           "stroke_axis"]
 
 GRAVITY = 9.81
 """m/s², the value the course project uses."""
@@ -73,3 +74,20 @@ class Loads:
     def mass_of(self, link: int) -> Mass | None:
         """The mass on ``link``, if it has one."""
         return next((m for m in self.masses if m.link == link), None)
+
+
+def stroke_axis(pivot, pin, stroke) -> tuple[float, float]:
+    """The direction a piston effort is measured along, as the textbooks sign it: the line
+    of stroke ``stroke`` (a unit vector) turned toward the crank's ``pivot`` from the
+    piston's ``pin`` (world points, m)."""
+    if stroke[0] * (pivot[0] - pin[0]) + stroke[1] * (pivot[1] - pin[1]) < 0.0:
+        return (-stroke[0], -stroke[1])
+    return stroke
+
+
+def crank_tangent(pivot, crank_pin) -> tuple[float, float]:
+    """The CCW unit tangent of the crank's pin circle at ``crank_pin``: a crank effort along
+    it is positive."""
+    dx, dy = crank_pin[0] - pivot[0], crank_pin[1] - pivot[1]
+    r = (dx * dx + dy * dy) ** 0.5
+    return (-dy / r, dx / r)

@@ -196,13 +196,14 @@ class Work:
             return mechanism_size(self.kinematics)
         if isinstance(ask, A.LengthRange):
             return max(grashof_class(m).lengths)
-        if isinstance(ask, (A.JointForce, A.DrivingTorque)):
+        if isinstance(ask, (A.JointForce, A.DrivingTorque, A.Effort)):
             # Beside the largest joint force (times the mechanism's size, for a moment).
             from .expected import _statics
 
             biggest = max(math.hypot(*j.force) for j in _statics(self).joints)
-            return biggest * (mechanism_size(self.kinematics)
-                              if isinstance(ask, A.DrivingTorque) or ask.letter == "T" else 1.0)
+            moment = (isinstance(ask, A.DrivingTorque) or getattr(ask, "letter", "") == "T"
+                      or getattr(ask, "word", "") == "turning_moment")
+            return biggest * (mechanism_size(self.kinematics) if moment else 1.0)
         return 1.0
 
 

@@ -19,8 +19,8 @@ from functools import cached_property, partial
 from pathlib import Path
 
 from ..constructions.acceleration_polygon import drawn_acceleration_polygon
-from ..constructions.asks import (Distance, Equivalent, MechanicalAdvantage, Ratio, Rubbing,
-                                  TransmissionAngle, parse_ask, symbol)
+from ..constructions.asks import (EFFORTS, Distance, Equivalent, MechanicalAdvantage, Ratio,
+                                  Rubbing, TransmissionAngle, parse_ask, symbol)
 from ..constructions.checks import FigureSpec, Quantity
 from ..constructions.limit_positions import drawn_limits
 from ..constructions.narration import narrate, significant
@@ -561,6 +561,8 @@ def _show(v: dict, units, name: str = "", figures: int = 6) -> str:
         w = v["value"]                                  # a couple or the driving torque
         sense = " (ccw)" if w > 0 else " (cw)" if w < 0 else ""
         return f"{_num(w, spec)} N·m{sense}"
+    if name in EFFORTS:                                 # an engine's effort, signed
+        return f"{_num(v['value'], spec)} {'N·m' if name == 'turning_moment' else 'N'}"
     if "vector" in v:
         x, y = v["vector"]
         per = "/s²" if name.startswith("A") else "/s"     # A_B, A_cor_B, An_B/A, A_slide_B

@@ -40,9 +40,11 @@ def test_every_force_drawn_is_the_newton_euler_one(name):
 
 
 @pytest.mark.parametrize("deg", [30, 75, 140, 250])
-def test_the_engines_torque_is_the_textbooks_turning_moment(deg):
-    """Only the piston's 1.2 kg and 5 kN of gas, no weight: the crank effort is the
-    piston effort F_P = F_gas − m·ẍ_P along the rod, and T2 = F_P·r·sin(θ + φ)/cos φ."""
+def test_the_engines_efforts_are_the_textbooks(deg):
+    """Only the piston's 1.2 kg and 5 kN of gas, no weight: the piston effort toward the
+    crank is F_P = F_gas + m·ẍ_P (the gas less the piston's inertia), the wall's thrust
+    F_P·tan φ, the force along the rod F_P/cos φ, the crank effort F_P·sin(θ + φ)/cos φ,
+    the turning moment that times r, and the driving torque holds it."""
     text = (FORCES["engine-forces"]).read_text(encoding="utf-8")
     text = text.replace("angle = 40", f"angle = {deg}").replace("gravity = true",
                                                                   "gravity = false")
@@ -54,9 +56,14 @@ def test_the_engines_torque_is_the_textbooks_turning_moment(deg):
     kin = solver.solve(ex.mechanism)
     th, r, rod = math.radians(deg), 0.060, 0.240
     phi = math.asin(r * math.sin(th) / rod)
-    effort = -5000.0 - 1.2 * kin.accelerations["P"][0]
-    want = effort * r * math.sin(th + phi) / math.cos(phi)
-    assert sol.quantities["T2"].value["value"] == pytest.approx(want, rel=1e-12)
+    f_p = 5000.0 + 1.2 * kin.accelerations["P"][0]
+    f_t = f_p * math.sin(th + phi) / math.cos(phi)
+    got = {name: q.value["value"] for name, q in sol.quantities.items()}
+    assert got["piston_effort"] == pytest.approx(f_p, rel=1e-12)
+    assert got["wall_thrust"] == pytest.approx(abs(f_p * math.tan(phi)), rel=1e-12)
+    assert got["crank_effort"] == pytest.approx(f_t, rel=1e-12)
+    assert got["turning_moment"] == pytest.approx(f_t * r, rel=1e-12)
+    assert got["T2"] == pytest.approx(-f_t * r, rel=1e-12)
 
 
 def test_the_image_of_each_centre_gives_the_solvers_acceleration():
@@ -164,3 +171,13 @@ def test_every_free_body_is_in_balance(name):
             m = math.fsum(w[0] * f[1] - w[1] * f[0] + c for w, f, c, _ in forces)
             assert abs(fx) < 1e-12 * biggest and abs(fy) < 1e-12 * biggest, (link, fx, fy)
             assert abs(m) < 1e-12 * biggest, (link, m)
+
+
+def test_a_piston_effort_asked_of_a_four_bar_is_refused_at_its_line():
+    text = FORCES["four-bar-forces"].read_text(encoding="utf-8")
+    text = text.replace('find = ["F_12", "F_23", "F_34", "F_14", "T2"]',
+                        'find = ["F_12", "piston_effort"]')
+    line = text[:text.index('find = ["F_12", "piston_effort"]')].count("\n") + 1
+    with pytest.raises(InputError, match=rf"four-bar.toml:{line}: .*cannot find "
+                                         r"'piston_effort' for this mechanism"):
+        parse_exercise(text, "four-bar.toml")

@@ -214,6 +214,14 @@ PHRASES: dict[str, str] = {
                    "loads and that push; the closing side is the crank's force on the block.",
     "force.lever": "Link {l}'s polygon: its loads, the block's push and the ram's, closed by "
                    "the frame's force at {p}.",
+    "force.piston": "The piston {j}'s effort: its loads along the line of stroke, toward the "
+                    "crank, F_P = {effort}; the wall's thrust on it, the guide's push the "
+                    "polygon closed on, F_N = {thrust}.",
+    "force.effort": "Split {name}, the push on the crank pin {a}: through its tail a line "
+                    "along the crank {o}{a}, through its head a line square to it; where they "
+                    "cross the radial part ends and the tangential part F_T begins. The crank "
+                    "effort F_T = {effort} (CCW +), and the turning moment F_T·{o}{a} = "
+                    "{moment}.",
     "force.torque": "Link {d}'s moments about {o}: the driving torque T{d} = {torque}.",
     "force.dyad": "The force polygon of links {i} and {j} together: lay off every known load "
                   "on them head to tail (weights, inertia forces, external forces), at the "

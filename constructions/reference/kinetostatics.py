@@ -25,11 +25,11 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import InputError
-from ..loads import Loads
+from ..loads import Loads, crank_tangent, stroke_axis
 from ..model import Mechanism, SlideKind
 from .solver import Kinematics, point_acceleration, point_velocity
 
-__all__ = ["JointForce", "Statics", "balance", "power_torque", "world_point"]
+__all__ = ["JointForce", "Statics", "balance", "efforts", "power_torque", "world_point"]
 
 
 @dataclass(frozen=True)
@@ -239,3 +239,30 @@ def power_torque(mech: Mechanism, kin: Kinematics, loads: Loads) -> float:
             v = point_velocity(kin, mech, k.number, at)
             power += f[0] * v[0] + f[1] * v[1] + mz * kin.omegas[k.number]
     return -power / w_in
+
+
+def efforts(mech: Mechanism, kin: Kinematics, loads: Loads, statics: Statics
+            ) -> dict[str, float]:
+    """An engine's efforts by the textbook's definitions, from the Newton–Euler joint forces:
+    the crank effort (the push of the link at the crank pin on the crank, square to the
+    crank, CCW +) and its turning moment; for a slider-crank also the piston effort (the
+    piston's loads along the stroke, + toward the crank) and the size of the wall's thrust
+    on the piston."""
+    d = mech.drive.link
+    pivot, pin = mech.link(d).names[:2]
+    (rod,) = [k for k in mech.links_at(pin) if k != d]
+    push = statics.joint(f"F_{min(d, rod)}{max(d, rod)}").force    # of the lower on the higher
+    if d < rod:
+        push = (-push[0], -push[1])                                  # of the rod on the crank
+    t = crank_tangent(kin.points[pivot], kin.points[pin])
+    effort = push[0] * t[0] + push[1] * t[1]
+    r = math.dist(kin.points[pivot], kin.points[pin])
+    out = {"crank_effort": effort, "turning_moment": effort * r}
+    guide = [s for s in mech.slides if s.guide_link == 1 and s.kind is SlideKind.BLOCK]
+    if len(guide) == 1:
+        s = guide[0]
+        u = stroke_axis(kin.points[pivot], kin.points[s.point], s.direction)
+        piston = [f for _, f, _ in _loads_on(kin, mech, loads, s.link)]
+        out["piston_effort"] = math.fsum(f[0] * u[0] + f[1] * u[1] for f in piston)
+        out["wall_thrust"] = math.hypot(*statics.joint(f"F_1{s.link}").force)
+    return out
