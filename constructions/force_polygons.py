@@ -41,13 +41,16 @@ from .record import Construction, Kind, Panel, Ref, Role
 from .scales import nice
 from .velocity_polygon import drawn_velocity_polygon
 
-__all__ = ["BODIES", "FORCES", "Forces", "answer", "draw_forces", "force_names", "forces_askable",
-           "drawn_forces"]
+__all__ = ["BODIES", "FORCES", "LOADS", "Forces", "answer", "draw_forces", "force_names",
+           "forces_askable", "drawn_forces"]
 
 Vec = tuple[float, float]
 
 FORCES = FigureSpec("forces", "Force polygons", "force polygons", kind="forces")
 """The figure the force polygons are drawn in."""
+
+LOADS = FigureSpec("loads", "Loads", "space diagram with the loads", kind="loads")
+"""The mechanism with every load and inertia force on it, at a force scale."""
 
 BODIES = FigureSpec("free-bodies", "Free bodies", "free-body diagrams", kind="bodies")
 """Each link alone with every force on it."""
@@ -68,6 +71,9 @@ class Forces:
     """Each massive link's inertia force (N) and couple (N·m), as read off the polygon."""
     every: tuple[Ref, ...] = ()
     """Every step of the analysis, for its figure and its steps: each answer shows it all."""
+    loads: dict[int, list[tuple[Vec, Vec, float, str]]] = field(default_factory=dict)
+    """Each moving link's known loads (where, force N, couple N·m, name): its inertia force
+    and couple, its weight, the external forces and couples."""
     efforts: dict[str, float] = field(default_factory=dict)
     """The engine's efforts as the textbooks name them (:class:`~.asks.Effort`)."""
     bodies: dict[int, list[tuple[Vec, Vec, float, str]]] = field(default_factory=dict)
@@ -165,7 +171,7 @@ def draw_forces(work) -> Forces:
     biggest = max([math.hypot(*f) for ls in known.values() for _, f, _, _ in ls] + [1e-300])
     scale = 0.08 / nice(biggest)                   # the largest load about 80 drawing mm
     out = Forces(scale)
-    out.inertia = inertia
+    out.inertia, out.loads = inertia, known
     draw = _Drafter(c, scale)
     if isinstance(group, _Shape):
         crank_pin, pull, o, a = _dyad(c, draw, out, group, at, known)
@@ -721,4 +727,4 @@ def answer(work, ask) -> Answer:
     if work.has("acceleration polygon"):
         cond *= drawn_acceleration_polygon(work).worst()
     return Answer(ask, value, cond, "force polygons", refs=forces.every,
-                  figures=(FORCES, BODIES), panel=Panel.FORCE)
+                  figures=(LOADS, FORCES, BODIES), panel=Panel.FORCE)

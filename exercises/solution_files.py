@@ -295,6 +295,17 @@ def _figure(sol: Solution, spec: FigureSpec, answers) -> _Sketch:
             c, forces.scale, f"{name}: force polygons{where}"), sheet), shown,
             (("Inertia loads read off the acceleration polygon", Panel.ACCELERATION, shown),
              ("The force polygons", Panel.FORCE, shown)))
+    if spec.kind == "loads":
+        from ..constructions.force_polygons import drawn_forces
+        from ..graphics.loads_figure import draw_loads
+
+        forces, sheet = drawn_forces(work), paper(sol.exercise.paper)
+        where = f" at {sol.position.label}" if sol.position else ""
+        return _Sketch(spec.stem, spec.heading, lambda: on_sheet(_fitted(
+            lambda per_cm: draw_loads(Slice(c, ()), forces.loads, per_cm=per_cm,
+                                      title=f"{name}: loads{where}"),
+            work.scales.space, _holds(sheet), fixed=bool(sol.exercise.mechanism.scale)),
+            sheet), None)
     if spec.kind == "bodies":
         from ..constructions.force_polygons import drawn_forces
         from ..graphics.free_body_figure import draw_free_bodies

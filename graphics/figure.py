@@ -53,6 +53,7 @@ STYLES: dict[str, Style] = {
     "compass": Style(width=0.18, stroke="#444"),
     "vector": Style(width=0.35, cap="butt"),
     "vector_result": Style(width=0.55, cap="butt"),
+    "vector_dashed": Style(width=0.35, dash=(2.2, 1.0), cap="butt"),
     "edge_arrow": Style(width=0.3, cap="butt"),
     "dot": Style(stroke=None, fill="#000"),
     "badge": Style(width=0.18, fill="#fff"),

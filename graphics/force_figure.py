@@ -15,7 +15,7 @@ from .labels import LabelPlacer
 from .scales import draw_caption, nice_per_cm
 from .symbols import draw_arrow
 
-__all__ = ["draw_force_figure"]
+__all__ = ["draw_force_figure", "typeset_force"]
 
 _ROOM = (240.0, 150.0)   # paper (mm) the polygons are fitted to: across, up
 
@@ -82,7 +82,7 @@ def _name_forces(fig: Figure, named, crosses) -> None:
         n = math.dist(a, b)
         normal = math.atan2((b[0] - a[0]) / n, (b[1] - a[1]) / n)   # square to it, on paper
         anchors = [(a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])) for t in _ALONG]
-        text, sub, tail = _split(label)
+        text, sub, tail = typeset_force(label)
         placer.place_numbered(text, anchors, [], sub=sub, tail=tail, size=2.8, gap=1.0,
                               prefer=(normal, normal + math.pi), spread=math.pi / 3,
                               own=(a, b))
@@ -94,15 +94,21 @@ _ALONG = (0.5, 0.35, 0.65, 0.2, 0.8)
 """Where along its shaft a force's name is tried, the middle first."""
 
 
-def _split(label: str) -> tuple[str, str, str]:
-    """A force's name as printed: "F_23ᵗ" is F with 23 below and ᵗ after, "Fi3" is F with
-    i3 below, "W3" W with 3 below; other names as they are."""
-    if label.startswith("F_"):
-        body = label[2:]
-        tail = body[-1] if body[-1:] in ("ᵗ", "ⁿ") else ""
-        return "F", body[:len(body) - len(tail)], tail
-    if label[:2] == "Fi" and label[2:].isdigit():
-        return "F", label[1:], ""
-    if label[:1] in "WP" and label[1:].isdigit():
-        return label[0], label[1:], ""
-    return label, "", ""
+def typeset_force(name: str) -> tuple[str, str, str]:
+    """A force's or a moment's name as printed, (letter, subscript, what follows on the
+    baseline): F_23ᵗ is F with 23 below and ᵗ after, T_43 T with 43 below, Fi3 F with i3
+    below (Mi3 the same for its couple), W3, P5 and T2 a letter with digits below, and a
+    trailing prime follows; other names ("gas force") are set as they are.
+
+    >>> typeset_force("F_23ᵗ"), typeset_force("Fi3′"), typeset_force("gas force")
+    (('F', '23', 'ᵗ'), ('F', 'i3', '′'), ('gas force', '', ''))
+    """
+    tail = name[-1] if name[-1:] in ("ᵗ", "ⁿ", "′") else ""
+    body = name[:len(name) - len(tail)]
+    if body[:2] in ("F_", "T_"):
+        return body[0], body[2:], tail
+    if body[:2] in ("Fi", "Mi") and body[2:].isdigit():
+        return body[0], body[1:], tail
+    if body[:1] in "WPT" and body[1:].isdigit():
+        return body[0], body[1:], tail
+    return name, "", ""

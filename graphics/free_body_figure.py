@@ -14,6 +14,7 @@ import math
 from shapely.geometry import Point as SPoint
 
 from .figure import Figure, Path, Text
+from .force_figure import typeset_force
 from .labels import LabelPlacer
 from .scales import draw_caption, nice_per_cm
 from .symbols import draw_arrow, draw_turning_arrow
@@ -97,7 +98,7 @@ def _draw_body(mech, link: int, at: dict, forces: list, k_space: float, k_force:
         if size > _SMALL * biggest:
             head = (tail[0] + f[0] * k_force, tail[1] - f[1] * k_force)
             draw_arrow(fig, tail, head, "vector")
-            arrows.append((tail, head, name, f"{_tail(name)} = {size:.4g} N"))
+            arrows.append((tail, head, name, f"{typeset_force(name)[2]} = {size:.4g} N"))
         elif size > 0:
             small.append(f"{name.replace('_', '')} = {size:.3g} N on link {link}")
         if abs(couple) > 1e-12 * max(biggest, 1.0):
@@ -115,12 +116,12 @@ def _draw_body(mech, link: int, at: dict, forces: list, k_space: float, k_force:
     for n, p in zip(names, pts):
         placer.place(n, paper(p), size=2.6, prefer=3 * math.pi / 4, own=paper(p))
     for tail, head, name, said in arrows:
-        text, sub, _ = _name(name)
+        text, sub, _ = typeset_force(name)
         ahead = math.atan2(tail[1] - head[1], head[0] - tail[0])   # the arrow's paper angle
         placer.place_numbered(text, head, [], sub=sub, tail=said, size=2.6, gap=1.0,
                               prefer=ahead, spread=math.pi / 2, own=(tail, head))
     for centre, mid, name, said, _ in turns:
-        text, sub, tail_text = _name(name)
+        text, sub, tail_text = typeset_force(name)
         out = math.atan2(centre[1] - mid[1], mid[0] - centre[0])
         placer.place_numbered(text, mid, [], sub=sub, tail=f"{tail_text}{said}", size=2.6,
                               gap=1.0, prefer=out, spread=math.pi / 2)
@@ -129,23 +130,6 @@ def _draw_body(mech, link: int, at: dict, forces: list, k_space: float, k_force:
     return fig
 
 
-def _tail(name: str) -> str:
-    """What follows a force's subscript on its baseline: F_23ᵗ's ᵗ, or nothing."""
-    return _name(name)[2]
-
-
 def _reach(mech, link: int, at: dict, bodies: dict) -> list:
     """The points a body's drawing spans: its own and those its forces act at."""
     return [at[n] for n in mech.link(link).names] + [w for w, _, _, _ in bodies[link]]
-
-
-def _name(name: str) -> tuple[str, str, str]:
-    """A force's name as printed: F_23 is F with 23 below, Fi3 F with i3 below, W3 W with 3
-    below, T2 T with 2 below; other names as they are."""
-    if name[:2] in ("F_", "T_"):
-        return name[0], name[2:], ""
-    if name[:2] in ("Fi", "Mi") and name[2:].isdigit():
-        return name[0], name[1:], ""
-    if name[:1] in "WTP" and name[1:].isdigit():
-        return name[0], name[1:], ""
-    return name, "", ""

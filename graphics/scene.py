@@ -30,7 +30,7 @@ numbers its steps the same way.
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 
 from shapely.geometry import LineString, box
 from shapely.geometry import Point as SPoint
@@ -44,8 +44,9 @@ from ..constructions.model import SlideKind
 from ..constructions.record import Kind, Panel, Ref, Role, Slice, Step
 
 from .diagram import _Diagram, input_caption
-from .figure import Circle, Figure, Path, arc_points, clip_line, ray_to_edge, span_line
-from .labels import subscript, typeset, typeset_span
+from .figure import (Circle, Figure, Path, View, arc_points, clip_line, ray_to_edge,
+                     span_line)
+from .labels import LabelPlacer, subscript, typeset, typeset_span
 from .scales import draw_caption
 from .symbols import (PIN_RADIUS, draw_arrow, draw_arrowhead, draw_dimension, draw_turning_arrow,
                       unit)
@@ -97,9 +98,18 @@ def line_style(step: Step) -> str:
     return LINE_KINDS.get(step.kind, LINE_KINDS[Kind.LINE])[0]
 
 
+Overlay = Callable[[View, Figure, LabelPlacer],
+                   Callable[[], tuple[tuple[str, float, str], list, list]]]
+"""Draws over a diagram, on paper by its view, before the diagram names its points (so
+that they keep clear of it), and returns what names it after them, with the diagram's own
+label placer, and then gives the second scale it drew at (name, per cm, unit), the legend
+entries (style, words) and the notes it adds."""
+
+
 def draw_scene(shown: Slice, *, title: str | None = None,
                velocity_scale: float | None = None, notes: Sequence[str] = (),
-               per_cm: float | None = None, velocity_stated: float | None = None) -> Figure:
+               per_cm: float | None = None, velocity_stated: float | None = None,
+               overlay: Overlay | None = None) -> Figure:
     """Draw the kinematic diagram of a position's record with the steps of a slice of it.
 
     Parameters
@@ -122,6 +132,9 @@ def draw_scene(shown: Slice, *, title: str | None = None,
         The velocity scale the exercise states (file units/s per paper cm, a
         :class:`~tarsim.constructions.scales.Stated`): the caption words it as the
         exercise does when the vectors are drawn at it.
+    overlay
+        What is drawn over the diagram at a scale of its own (the loads on the links at a
+        force scale), before the caption, which states that scale.
 
     Raises
     ------
@@ -130,7 +143,9 @@ def draw_scene(shown: Slice, *, title: str | None = None,
     """
     if not isinstance(shown.construction, Assembly):
         raise TarsimError("a scene is a slice of a mechanism's record (an assembly)")
-    return _Scene(shown, title, velocity_scale, notes, per_cm, velocity_stated).draw()
+    scene = _Scene(shown, title, velocity_scale, notes, per_cm, velocity_stated)
+    scene.overlay = overlay
+    return scene.draw()
 
 
 # ----- what a step draws --------------------------------------------------------------------
@@ -157,6 +172,8 @@ class _Scene(_Diagram):
         self.numbers = shown.numbers(Panel.SPACE)
         self.ends = _segment_ends(steps)
         self.kinds: list[str] = []
+        self.overlay: Overlay | None = None
+        self.namer = self.over = None
 
     # ----- planning, before the diagram places its own labels ------------------------------
     def layout(self) -> None:
@@ -180,6 +197,7 @@ class _Scene(_Diagram):
                 self.plan_circle(step)
         self.plan_far()
         self.draw_working()
+        self.namer = self.overlay(self.view, self.fig, self.placer) if self.overlay else None
 
     def plan_frame(self) -> None:
         """The frame: the mechanism, grown to take in the scene's points up to the cap."""
@@ -407,6 +425,7 @@ class _Scene(_Diagram):
         self.draw_points()
         self.draw_far()
         self.number_lines()
+        self.over = self.namer() if self.namer else None
         self.caption()
 
     def label(self, text: str, anchor, steps: Sequence[Step] = (), **kw) -> None:
@@ -638,9 +657,12 @@ class _Scene(_Diagram):
         legend = [LINE_KINDS[k] for k in LINE_KINDS if k in self.kinds]
         if legend == [LINE_KINDS[Kind.LINE]]:
             legend = []           # plain construction lines need no key
+        if self.over is not None:
+            second = second or self.over[0]
+            legend += self.over[1]
         draw_caption(self.fig, self.title or self.m.name, lines, per_cm=self.per_cm,
-                     unit=u.length, legend=legend, notes=self.notes, margin=_MARGIN,
-                     second=second)
+                     unit=u.length, legend=legend, margin=_MARGIN, second=second,
+                     notes=self.notes + tuple(self.over[2] if self.over else ()))
 
 
 # ----- small helpers ---------------------------------------------------------------------------

@@ -181,3 +181,30 @@ def test_a_piston_effort_asked_of_a_four_bar_is_refused_at_its_line():
     with pytest.raises(InputError, match=rf"four-bar.toml:{line}: .*cannot find "
                                          r"'piston_effort' for this mechanism"):
         parse_exercise(text, "four-bar.toml")
+
+
+@pytest.mark.parametrize("name", ["engine-forces", "four-bar-forces"])
+def test_the_loads_are_drawn_to_the_force_scale_the_caption_states(name):
+    """Every load named on the space diagram is an arrow as long as the stated force scale
+    makes it (to the 4 figures its name prints), and each inertia force drawn as one force
+    stands h = I·α/(m·a_G) off G, to the side whose moment about G is the couple."""
+    from tarsim.graphics.figure import Text
+    from tarsim.graphics.loads_figure import _offset
+
+    worked = tarsim.solve(tarsim.load(name))
+    fig = worked.figures["loads"]
+    (per_cm,) = [float(t.text.split("= ")[1].split(" N")[0]) for t in fig.items
+                 if isinstance(t, Text) and t.text.startswith("Force scale 1 cm")]
+    named = [t for t in fig.items if isinstance(t, Text) and t.owner and t.tail.endswith(" N")]
+    assert len(named) >= 3
+    for t in named:
+        (a, b) = t.owner
+        said = float(t.tail.split("= ")[1][:-2])
+        assert math.dist(a, b) / 10.0 * per_cm == pytest.approx(said, rel=1e-3), t.text + t.sub
+    (sol,) = worked.positions
+    for force, couple in drawn_forces(sol.work).inertia.values():
+        d = _offset(force, couple)
+        if d is None:
+            continue
+        assert d[0] * force[1] - d[1] * force[0] == pytest.approx(couple, rel=1e-12)
+        assert math.hypot(*d) == pytest.approx(abs(couple) / math.hypot(*force), rel=1e-12)

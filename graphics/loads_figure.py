@@ -1,0 +1,111 @@
+"""The space diagram with its loads, as a textbook sets out a force analysis before solving
+it: the mechanism at its position, and on each link its weight, its inertia force and
+couple, and the external forces and couples, every force an arrow from where it acts at
+one force scale.
+
+Each inertia force is drawn both ways the method allows: at the centre of mass G with its
+inertia couple, and dashed as the one force that does the work of both, moved off G by
+h = I·α/(m·a_G) to the side that gives the couple's sense.
+"""
+
+from __future__ import annotations
+
+import math
+
+from shapely.geometry import Point as SPoint
+
+from ..constructions.record import Slice
+from .figure import Figure, View
+from .force_figure import typeset_force
+from .labels import LabelPlacer
+from .scales import nice_per_cm
+from .scene import draw_scene
+from .symbols import draw_arrow, draw_turning_arrow
+
+__all__ = ["draw_loads"]
+
+_REACH = 0.45
+"""The largest load is drawn at most this share of the mechanism's extent on paper."""
+
+_LEAST = 2.5
+"""A force drawn shorter than this (paper mm) shows nothing: it is listed instead."""
+
+
+def draw_loads(shown: Slice, loads: dict, *, title: str, per_cm: float | None = None
+               ) -> Figure:
+    """The mechanism of ``shown`` (a slice of a position's record) with ``loads`` (link →
+    [(where m, force N, couple N·m, name)]) drawn on it."""
+    biggest = max([math.hypot(*f) for ls in loads.values() for _, f, _, _ in ls] + [1e-300])
+
+    def overlay(view: View, fig: Figure, placer: LabelPlacer):
+        pts = [view(w) for ls in loads.values() for w, _, _, _ in ls]
+        xs, ys = [p[0] for p in pts], [p[1] for p in pts]
+        extent = max(max(xs) - min(xs), max(ys) - min(ys), 40.0)
+        force_cm = nice_per_cm(biggest, _REACH * extent)        # newtons a paper cm
+        k = 10.0 / force_cm
+        arrows, turns, small = [], [], []
+        for link, ls in sorted(loads.items()):
+            inertia = {name: (w, f, c) for w, f, c, name in ls if name.startswith("Fi")}
+            for where, f, couple, name in ls:
+                tail, size = view(where), math.hypot(*f)
+                if size * k >= _LEAST:
+                    head = (tail[0] + f[0] * k, tail[1] - f[1] * k)
+                    draw_arrow(fig, tail, head, "vector")
+                    arrows.append((tail, head, name, f" = {size:.4g} N"))
+                elif size > 0.0:
+                    small.append(f"{name} = {size:.3g} N on link {link}")
+                if couple:
+                    r = 4.5 + 2.5 * sum(math.dist(tail, t[0]) < 0.5 for t in turns)
+                    mid = draw_turning_arrow(fig, tail, r, math.radians(30),
+                                             math.copysign(math.radians(240), couple))
+                    turns.append((tail, mid, name.replace("Fi", "Mi"),
+                                  f" = {abs(couple):.4g} N·m", r))
+            for name, (where, f, couple) in inertia.items():
+                offset = _offset(f, couple)
+                if offset is None or math.hypot(*f) * k < _LEAST:
+                    continue
+                at = view((where[0] + offset[0], where[1] + offset[1]))
+                head = (at[0] + f[0] * k, at[1] - f[1] * k)
+                draw_arrow(fig, at, head, "vector_dashed")
+                h = math.hypot(*offset) / shown.construction.mechanism.units.metres
+                unit = shown.construction.mechanism.units.length
+                arrows.append((at, head, name + "′", f" (h = {h:.3g} {unit})"))
+        for tail, head, _, _ in arrows:
+            placer.block_path([tail, head])
+        for centre, _, _, _, r in turns:
+            placer.block(SPoint(centre).buffer(r + 0.6))
+        placer.name_vectors((a, b) for a, b, _, _ in arrows)
+        return lambda: _name(placer, arrows, turns, small, force_cm)
+
+    return draw_scene(shown, title=title, per_cm=per_cm, overlay=overlay)
+
+
+def _name(placer: LabelPlacer, arrows, turns, small, force_cm: float):
+    """Name every load beside its head and every couple beside its arc, once the diagram's
+    own names are placed; the scale, legend and notes the caption takes."""
+    page, placer.page = placer.page, None          # the loads may reach past the frame
+    for tail, head, name, said in arrows:
+        text, sub, tail_text = typeset_force(name)
+        ahead = math.atan2(tail[1] - head[1], head[0] - tail[0])
+        placer.place_numbered(text, head, [], sub=sub, tail=tail_text + said, size=2.8,
+                              gap=1.0, prefer=ahead, spread=math.pi / 2, own=(tail, head))
+    for centre, mid, name, said, _ in turns:
+        text, sub, tail_text = typeset_force(name)
+        out = math.atan2(centre[1] - mid[1], mid[0] - centre[0])
+        placer.place_numbered(text, mid, [], sub=sub, tail=tail_text + said, size=2.8,
+                              gap=1.0, prefer=out, spread=math.pi / 2)
+    placer.page = page
+    legend = [("vector", "a load"), ("vector_dashed", "an inertia force and couple as one "
+                                                      "force, offset h from G")]
+    notes = [f"Too small to draw: {', '.join(small)}."] if small else []
+    return ("Force scale", force_cm, "N"), legend, notes
+
+
+def _offset(f, couple: float) -> tuple[float, float] | None:
+    """Where one force ``f`` does the work of ``f`` at G and ``couple``: moved off G square
+    to itself by |couple|/|f|, to the side whose moment about G is the couple."""
+    size2 = f[0] * f[0] + f[1] * f[1]
+    if couple == 0.0 or size2 == 0.0:
+        return None
+    k = couple / size2              # d × f = couple for d = k·(f_y, −f_x)
+    return (k * f[1], -k * f[0])
