@@ -25,7 +25,7 @@ GALLERY = Path(__file__).resolve().parent / "gallery"
 WIDTH = 1000
 """Pixels across a PNG, at most: enough to read the labels, small enough to keep."""
 
-ORDER = ("klein", "worked", "V_", "centres", "limits", "mechanism", "mesh", "kutzbach",
+ORDER = ("klein", "worked", "V_", "centres", "limits", "mechanism", "loads", "mesh", "kutzbach",
          "force-polygon", "table", "train-value", "profile", "primary-force", "forces")
 """The kinds of figure in the order one is taken as an exercise's main figure."""
 

@@ -27,6 +27,10 @@ __all__ = ["draw_loads"]
 _REACH = 0.45
 """The largest load is drawn at most this share of the mechanism's extent on paper."""
 
+_NOISE = 1e-9
+"""A force or couple this small beside the largest force (times the mechanism's size) is
+the rounding of a zero: neither drawn nor listed."""
+
 _LEAST = 2.5
 """A force drawn shorter than this (paper mm) shows nothing: it is listed instead."""
 
@@ -52,9 +56,9 @@ def draw_loads(shown: Slice, loads: dict, *, title: str, per_cm: float | None = 
                     head = (tail[0] + f[0] * k, tail[1] - f[1] * k)
                     draw_arrow(fig, tail, head, "vector")
                     arrows.append((tail, head, name, f" = {size:.4g} N"))
-                elif size > 0.0:
+                elif size > _NOISE * biggest:
                     small.append(f"{name} = {size:.3g} N on link {link}")
-                if couple:
+                if abs(couple) > _NOISE * biggest * extent / view.scale:
                     r = 4.5 + 2.5 * sum(math.dist(tail, t[0]) < 0.5 for t in turns)
                     mid = draw_turning_arrow(fig, tail, r, math.radians(30),
                                              math.copysign(math.radians(240), couple))
@@ -62,7 +66,8 @@ def draw_loads(shown: Slice, loads: dict, *, title: str, per_cm: float | None = 
                                   f" = {abs(couple):.4g} N·m", r))
             for name, (where, f, couple) in inertia.items():
                 offset = _offset(f, couple)
-                if offset is None or math.hypot(*f) * k < _LEAST:
+                if (offset is None or math.hypot(*f) * k < _LEAST
+                        or abs(couple) <= _NOISE * biggest * extent / view.scale):
                     continue
                 at = view((where[0] + offset[0], where[1] + offset[1]))
                 head = (at[0] + f[0] * k, at[1] - f[1] * k)
