@@ -229,7 +229,13 @@ def _group_of(mech: Mechanism):
 
 def _dyad(c, draw, out: Forces, sh: _Shape, at, known):
     """A four-bar's or slider-crank's dyad: returns the coupler's link, its pull on the
-    crank at A, and the crank's pivot and pin."""
+    crank at A, and the crank's pivot and pin. With no load on the output the coupler is a
+    three-force member, solved by :func:`_concurrent`; else by the tangential and normal
+    split."""
+    if not _carries(known[sh.j]):
+        done = _concurrent(c, draw, out, sh, at, known[sh.i])
+        if done is not None:
+            return done
     line_ab = c.draw("force:line:AB", "line_through", c.points[sh.a], c.points[sh.b],
                      kind=Kind.LINE)
     pole = c.give("force:S", g.Point(0.0, 0.0), label="", panel=Panel.FORCE)
@@ -271,6 +277,75 @@ def _dyad(c, draw, out: Forces, sh: _Shape, at, known):
         out.couples[f"T_1{sh.j}"] = -_moment(at[sh.b], known[sh.j])
         out.refs[f"T_1{sh.j}"] = refs
         _piston_effort(c, out, sh, at, known[sh.j], joint_j, refs)
+    return sh.i, (-f_di[0], -f_di[1]), sh.o, sh.a
+
+
+def _carries(loads) -> bool:
+    """Whether any of ``loads`` is a force or a couple at all."""
+    return any(f != (0.0, 0.0) or m != 0.0 for _, f, m, _ in loads)
+
+
+def _concurrent(c, draw, out: Forces, sh: _Shape, at, loads):
+    """The dyad when its output carries nothing: the output is a two-force member (a rocker
+    pulls along CB; a massless block only across its guide), so the coupler holds three
+    forces, its loads' resultant R, the output's push along that known line through B, and
+    the crank's at A. Three forces in balance meet in one point: X, where R's line crosses
+    the output's; the crank's force runs along AX. The coupler's polygon, R closed by a
+    parallel to each line, gives both. Returns as :func:`_dyad` does, or None when R is
+    nothing or runs parallel to the output's line (X at infinity): the split then serves.
+    """
+    r = _sum(f for _, f, _, _ in loads)
+    size = math.hypot(*r)
+    if size == 0.0:
+        return None
+    if sh.c is not None:
+        dx, dy = at[sh.b][0] - at[sh.c][0], at[sh.b][1] - at[sh.c][1]
+    else:
+        dx, dy = -sh.guide[1], sh.guide[0]
+    if abs(r[0] * dy - r[1] * dx) <= 1e-9 * size * math.hypot(dx, dy):
+        return None
+    # R's line: where R alone has the loads' moment about B; Q on it is the foot of the
+    # loads' middle (a single load's own point).
+    m_b = _moment(at[sh.b], loads)
+    on = (at[sh.b][0] + m_b * r[1] / size ** 2, at[sh.b][1] - m_b * r[0] / size ** 2)
+    mid = _sum(p for p, f, _, _ in loads if f != (0.0, 0.0))
+    count = sum(f != (0.0, 0.0) for _, f, _, _ in loads)
+    mid = (mid[0] / count, mid[1] / count) if count else on
+    t = ((mid[0] - on[0]) * r[0] + (mid[1] - on[1]) * r[1]) / size ** 2
+    q = (on[0] + t * r[0], on[1] + t * r[1])
+    qp = c.give("force:cc:Q", g.Point(*q), label="")
+    along_r = c.give("force:cc:r", g.Line(-r[1] / size, r[0] / size, 0.0), label="")
+    line_r = c.draw("force:cc:lineR", "parallel_through", qp, along_r, kind=Kind.LINE,
+                    phrase=phrase("force.resultant", i=sh.i, size=f"{size:.4g} N", b=sh.b))
+    if sh.c is not None:
+        line_j = c.draw("force:cc:lineCB", "line_through", c.points[sh.c], c.points[sh.b],
+                        kind=Kind.LINE, phrase=phrase("force.two_force", j=sh.j, c=sh.c,
+                                                      b=sh.b))
+    else:
+        guide = c.give("force:cc:guide", g.Line(-sh.guide[1], sh.guide[0], 0.0), label="")
+        line_j = c.draw("force:cc:lineN", "perpendicular_through", c.points[sh.b], guide,
+                        kind=Kind.LINE, phrase=phrase("force.massless_block", j=sh.j,
+                                                      b=sh.b))
+    x = c.draw("force:cc:X", "intersect_lines", line_r, line_j, label="X",
+               phrase=phrase("force.concurrent", i=sh.i, a=sh.a))
+    line_a = c.draw("force:cc:lineAX", "line_through", c.points[sh.a], x, kind=Kind.LINE)
+    pole = c.give("force:S", g.Point(0.0, 0.0), label="", panel=Panel.FORCE)
+    c.draw("force:say:three", "mark", pole, panel=Panel.FORCE,
+           phrase=phrase("force.three", i=sh.i))
+    tip = draw.loads(sh.i, pole, loads)
+    cross, end_vec, start_vec = draw.close(tip, line_j, pole, line_a, phrase(
+        "force.close_three", i=sh.i, j=sh.j, a=sh.a), f"F_{sh.j}{sh.i}", f"F_{sh.d}{sh.i}")
+    f_ji, f_di = draw.read(end_vec), draw.read(start_vec)
+    out.joints[f"F_{min(sh.d, sh.i)}{max(sh.d, sh.i)}"] = _on(f_di, sh.d < sh.i)
+    out.joints[f"F_{min(sh.i, sh.j)}{max(sh.i, sh.j)}"] = _on((-f_ji[0], -f_ji[1]),
+                                                              sh.i < sh.j)
+    out.joints[f"F_1{sh.j}"] = f_ji             # the frame holds the output against it
+    refs = (x, cross, end_vec, start_vec)
+    out.refs = {name: refs for name in out.joints}
+    if sh.c is None:
+        out.couples[f"T_1{sh.j}"] = 0.0          # every force on the block acts through B
+        out.refs[f"T_1{sh.j}"] = refs
+        _piston_effort(c, out, sh, at, [], f_ji, refs)
     return sh.i, (-f_di[0], -f_di[1]), sh.o, sh.a
 
 

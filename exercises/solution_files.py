@@ -292,7 +292,7 @@ def _figure(sol: Solution, spec: FigureSpec, answers) -> _Sketch:
         where = f" at {sol.position.label}" if sol.position else ""
         shown = _shown(c, answers, asm.position_steps)
         return _Sketch(spec.stem, spec.heading, lambda: on_sheet(draw_force_figure(
-            c, forces.scale, f"{name}: force polygons{where}"), sheet), shown,
+            c, forces.scale, f"{name}: force polygons{where}"), sheet), None,
             (("Inertia loads read off the acceleration polygon", Panel.ACCELERATION, shown),
              ("The force polygons", Panel.FORCE, shown)))
     if spec.kind == "loads":
@@ -301,11 +301,14 @@ def _figure(sol: Solution, spec: FigureSpec, answers) -> _Sketch:
 
         forces, sheet = drawn_forces(work), paper(sol.exercise.paper)
         where = f" at {sol.position.label}" if sol.position else ""
+        # The space diagram's part of the analysis (centres of mass, lines of action, the
+        # point three forces meet in) is drawn with the loads.
+        shown = _shown(c, answers, asm.position_steps)
         return _Sketch(spec.stem, spec.heading, lambda: on_sheet(_fitted(
-            lambda per_cm: draw_loads(Slice(c, ()), forces.loads, per_cm=per_cm,
+            lambda per_cm: draw_loads(shown, forces.loads, per_cm=per_cm,
                                       title=f"{name}: loads{where}"),
             work.scales.space, _holds(sheet), fixed=bool(sol.exercise.mechanism.scale)),
-            sheet), None)
+            sheet), shown)
     if spec.kind == "bodies":
         from ..constructions.force_polygons import drawn_forces
         from ..graphics.free_body_figure import draw_free_bodies
@@ -519,9 +522,11 @@ def _steps_markdown(sol: Solution, figures: list[SolutionFigure], *, heading: bo
         parts = [(f.heading, Panel.SPACE, f.shown)] if f.shown else []
         parts += list(f.panels)
         for title, panel, shown in parts:
+            numbered = list(shown.numbered(panel))
+            if not numbered:                 # a panel the exercise draws nothing in
+                continue
             lines += [f"## {title} (`{f.stem}.svg`)", ""]
-            for number, step in shown.numbered(panel):
-                lines.append(f"{number}. {narrate(step, lang)}")
+            lines += [f"{number}. {narrate(step, lang)}" for number, step in numbered]
             lines.append("")
     for note in sol.notes:
         lines.append(f"> {note}")

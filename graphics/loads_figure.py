@@ -31,6 +31,10 @@ _NOISE = 1e-9
 """A force or couple this small beside the largest force (times the mechanism's size) is
 the rounding of a zero: neither drawn nor listed."""
 
+_FARTHER = (10.0, 13.0, 17.0, 22.0)
+"""Rings (in gaps) a load's name may stand out to when none near its arrow is clear: on a
+crowded joint a name a little off beats one over another."""
+
 _LEAST = 2.5
 """A force drawn shorter than this (paper mm) shows nothing: it is listed instead."""
 
@@ -93,15 +97,18 @@ def _name(placer: LabelPlacer, arrows, turns, small, force_cm: float):
         text, sub, tail_text = typeset_force(name)
         ahead = math.atan2(tail[1] - head[1], head[0] - tail[0])
         placer.place_numbered(text, head, [], sub=sub, tail=tail_text + said, size=2.8,
-                              gap=1.0, prefer=ahead, spread=math.pi / 2, own=(tail, head))
+                              gap=1.0, prefer=ahead, spread=math.pi / 2, own=(tail, head),
+                              farther=_FARTHER)
     for centre, mid, name, said, _ in turns:
         text, sub, tail_text = typeset_force(name)
         out = math.atan2(centre[1] - mid[1], mid[0] - centre[0])
         placer.place_numbered(text, mid, [], sub=sub, tail=tail_text + said, size=2.8,
-                              gap=1.0, prefer=out, spread=math.pi / 2)
+                              gap=1.0, prefer=out, spread=math.pi / 2, farther=_FARTHER)
     placer.page = page
-    legend = [("vector", "a load"), ("vector_dashed", "an inertia force and couple as one "
-                                                      "force, offset h from G")]
+    legend = [("vector", "a load")]
+    if any(name.endswith("′") for _, _, name, _ in arrows):
+        legend.append(("vector_dashed", "an inertia force and couple as one force, offset h "
+                                        "from G"))
     notes = [f"Too small to draw: {', '.join(small)}."] if small else []
     return ("Force scale", force_cm, "N"), legend, notes
 

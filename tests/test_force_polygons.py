@@ -157,7 +157,8 @@ def test_the_cut_adds_its_own_power_to_the_crank_shapers_torque():
             assert q.value[key] == pytest.approx(same[key], rel=1e-12, abs=1e-15), name
 
 
-@pytest.mark.parametrize("name", ["engine-forces", "four-bar-forces", "crank-shaper-forces"])
+@pytest.mark.parametrize("name", ["engine-forces", "four-bar-forces", "crank-shaper-forces",
+                                  "four-bar-coupler-load"])
 def test_every_free_body_is_in_balance(name):
     """Each link drawn alone with its loads and the joint forces the polygons found: its
     forces add to nothing and so do their moments, to a few roundings of the largest."""
@@ -208,3 +209,40 @@ def test_the_loads_are_drawn_to_the_force_scale_the_caption_states(name):
             continue
         assert d[0] * force[1] - d[1] * force[0] == pytest.approx(couple, rel=1e-12)
         assert math.hypot(*d) == pytest.approx(abs(couple) / math.hypot(*force), rel=1e-12)
+
+
+def test_a_three_force_coupler_is_solved_by_its_forces_meeting_in_one_point():
+    """The coupler of four-bar-coupler-load holds P and the pins' forces at A and B; the
+    rocker carries nothing, so its pull runs along O4B. The three lines meet at X, drawn
+    where P's line crosses O4B: the crank's force runs along AX, and P has no moment
+    about X. Every force agrees with the Newton–Euler system."""
+    (sol,) = tarsim.solve(tarsim.load("four-bar-coupler-load")).positions
+    assert all(q.rel_error <= 1e-13 for q in sol.quantities.values())
+    c = sol.work.assembly
+    x = c.output("force:cc:X").xy
+    at = {n: c.point(n).xy for n in ("A", "B", "O4")}
+    forces = drawn_forces(sol.work)
+    f23, f34 = forces.joints["F_23"], forces.joints["F_34"]
+
+    def across(u, v):
+        return (u[0] * v[1] - u[1] * v[0]) / (math.hypot(*u) * math.hypot(*v))
+    assert abs(across(f23, (x[0] - at["A"][0], x[1] - at["A"][1]))) < 1e-12
+    assert abs(across(f34, (at["B"][0] - at["O4"][0], at["B"][1] - at["O4"][1]))) < 1e-12
+    ((p, force, _, _),) = forces.loads[3]
+    moment = (p[0] - x[0]) * force[1] - (p[1] - x[1]) * force[0]
+    assert abs(moment) < 1e-12 * math.hypot(*force) * math.dist(p, x)
+
+
+def test_a_massless_block_makes_the_rod_a_three_force_member():
+    """The engine with only its rod's mass and inertia: the piston carries nothing, so the
+    guide and the rod push it across the guide along one line through P, the rod's forces
+    meet on it, and the guide's couple is nothing. Against the Newton–Euler system."""
+    text = FORCES["engine-forces"].read_text(encoding="utf-8")
+    keep = text[:text.index("[[mass]]")]
+    keep = keep.replace('"piston_effort", ', "")
+    text = keep + "[[mass]]\nlink = 3\nmass = 1.0\ninertia = 4.8e-3\n"
+    (sol,) = tarsim.solve(parse_exercise(text, "engine.toml")).positions
+    assert "force:cc:X" in [s.id for s in sol.work.assembly]
+    for name, q in sol.quantities.items():
+        assert q.rel_error <= 1e-13, (name, q.rel_error)
+    assert sol.quantities["T_14"].value["value"] == 0.0

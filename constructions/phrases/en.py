@@ -222,6 +222,19 @@ PHRASES: dict[str, str] = {
                     "cross the radial part ends and the tangential part F_T begins. The crank "
                     "effort F_T = {effort} (CCW +), and the turning moment F_T·{o}{a} = "
                     "{moment}.",
+    "force.resultant": "Link {i}'s loads add to one force R = {size}: its line runs where R "
+                       "alone has their moment about {b}.",
+    "force.two_force": "Link {j} carries no load: a two-force member, its pins' forces run "
+                       "along {c}{b}.",
+    "force.massless_block": "The block {j} carries no load: its guide and its pin {b} push it "
+                            "square to the guide, along one line through {b}.",
+    "force.concurrent": "Link {i} holds three forces, so their lines meet in one point: X, "
+                        "where R's line crosses the output's. The crank's force at {a} runs "
+                        "along {a}X.",
+    "force.three": "Link {i}'s force polygon: lay off its loads head to tail (their sum is R).",
+    "force.close_three": "Close link {i}'s polygon: through its end a parallel to the line of "
+                         "link {j}'s push, through its start a parallel to {a}X; where they "
+                         "cross gives both forces.",
     "force.torque": "Link {d}'s moments about {o}: the driving torque T{d} = {torque}.",
     "force.dyad": "The force polygon of links {i} and {j} together: lay off every known load "
                   "on them head to tail (weights, inertia forces, external forces), at the "
