@@ -419,8 +419,9 @@ class DrivingTorque(Ask):
 class Effort(Ask):
     """An engine's force as the textbooks name it, from the force polygons: the piston
     effort (its loads along the stroke, + toward the crank), the wall's thrust on the
-    piston (its size), the crank effort (the rod's push on the crank pin square to the
-    crank, + CCW) and the turning moment it gives (N·m, CCW +)."""
+    piston (the size of its push square to the stroke), the crank effort (the rod's push
+    on the crank pin square to the crank, + CCW) and the turning moment it gives (N·m,
+    CCW +)."""
 
     word: str
     order: ClassVar[int] = 9

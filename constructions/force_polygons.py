@@ -34,7 +34,7 @@ from . import asks as A
 from .acceleration_polygon import drawn_acceleration_polygon
 from .checks import Answer, FigureSpec, vector_value
 from .errors import TarsimError
-from .loads import Loads, crank_tangent, stroke_axis
+from .loads import Loads, crank_tangent, leaning, stroke_axis
 from .model import Mechanism, SlideKind
 from .narration import phrase
 from .record import Construction, Kind, Panel, Ref, Role
@@ -174,8 +174,13 @@ def draw_forces(work) -> Forces:
     out.inertia, out.loads = inertia, known
     draw = _Drafter(c, scale)
     if isinstance(group, _Shape):
-        crank_pin, pull, o, a = _dyad(c, draw, out, group, at, known)
+        slip = None
+        if loads.friction and group.guide is not None:
+            slip = (loads.friction, _unit_or_zero(drawn_velocity_polygon(work).vector(group.b)))
+        crank_pin, pull, o, a = _dyad(c, draw, out, group, at, known, slip)
     else:
+        if loads.friction:
+            raise TarsimError(_NO_FRICTION)
         crank_pin, pull, o, a = _slotted(c, draw, out, group, at, known)
     _crank(c, draw, out, mech.drive.link, crank_pin, pull, o, a, at, known)
     out.every = tuple(s.id for s in c if s.id.startswith("force:"))
@@ -215,6 +220,11 @@ _WHY = ("the force polygons are drawn for a four-bar, a slider-crank and a slott
         "analytic reference and the turning-moment diagram only")
 
 
+_NO_FRICTION = ("friction at the slides is drawn for a slider-crank's guide so far; a "
+                "slotted lever's forces with friction are in the analytic reference and the "
+                "turning-moment diagram only")
+
+
 def _group_of(mech: Mechanism):
     """The group the crank drives: a dyad, or a slotted lever."""
     try:
@@ -227,13 +237,13 @@ def _group_of(mech: Mechanism):
         raise TarsimError(_WHY) from None
 
 
-def _dyad(c, draw, out: Forces, sh: _Shape, at, known):
+def _dyad(c, draw, out: Forces, sh: _Shape, at, known, slip=None):
     """A four-bar's or slider-crank's dyad: returns the coupler's link, its pull on the
     crank at A, and the crank's pivot and pin. With no load on the output the coupler is a
     three-force member, solved by :func:`_concurrent`; else by the tangential and normal
     split."""
     if not _carries(known[sh.j]):
-        done = _concurrent(c, draw, out, sh, at, known[sh.i])
+        done = _concurrent(c, draw, out, sh, at, known[sh.i], slip)
         if done is not None:
             return done
     line_ab = c.draw("force:line:AB", "line_through", c.points[sh.a], c.points[sh.b],
@@ -257,7 +267,12 @@ def _dyad(c, draw, out: Forces, sh: _Shape, at, known):
                      kind=Kind.LINE)
     else:
         t_c = (0.0, 0.0)
-        far = draw.square_to(pole, sh.guide, "N")
+        if slip is None:
+            far = draw.square_to(pole, sh.guide, "N")
+        else:
+            laid = _sum([f for k in (sh.i, sh.j) for _, f, _, _ in known[k]] + [t_a])
+            along_ab = (at[sh.b][0] - at[sh.a][0], at[sh.b][1] - at[sh.a][1])
+            far = draw.leaning(pole, sh.guide, _side(laid, sh.guide, slip, along_ab), slip)
     cross, end_vec, start_vec = draw.close(tip, far, pole, line_ab, phrase(
         "force.close", i=sh.i, j=sh.j), f"F_1{sh.j}" + ("ⁿ" if sh.c else ""),
         f"F_{sh.d}{sh.i}ⁿ")
@@ -280,12 +295,52 @@ def _dyad(c, draw, out: Forces, sh: _Shape, at, known):
     return sh.i, (-f_di[0], -f_di[1]), sh.o, sh.a
 
 
+def _unit_or_zero(v: Vec) -> Vec:
+    n = math.hypot(*v)
+    return (v[0] / n, v[1] / n) if n > 0.0 else (0.0, 0.0)
+
+
+def _friction_angle(slip) -> str:
+    return "" if slip is None else f"{math.degrees(math.atan(slip[0])):.4g}°"
+
+
+def _crossing(p: Vec, u: Vec, q: Vec, w: Vec) -> Vec | None:
+    """Where the line through ``p`` along ``u`` meets the one through ``q`` along ``w``."""
+    det = u[0] * w[1] - u[1] * w[0]
+    if abs(det) <= 1e-12 * math.hypot(*u) * math.hypot(*w):
+        return None
+    t = ((q[0] - p[0]) * w[1] - (q[1] - p[1]) * w[0]) / det
+    return (p[0] + t * u[0], p[1] + t * u[1])
+
+
+def _side(laid: Vec, guide: Vec, slip, other: Vec | None, other_at=None) -> float:
+    """Which side a guide's push comes from when friction leans it: the side whose leaned
+    line, with the polygon's other closing line (along ``other``, or ``other_at(u)`` for a
+    line that hangs on u), closes the ``laid`` loads with a push from that same side — the
+    check a draftsman makes of the side assumed. The frictionless side when neither holds
+    (a push of nothing)."""
+    mu, sliding = slip
+    normal = (-guide[1], guide[0])
+    for side in (1.0, -1.0):
+        u = leaning(normal, sliding, mu, side)
+        w = other if other_at is None else other_at(u)
+        if w is None:
+            continue
+        det = u[0] * w[1] - u[1] * w[0]
+        if det == 0.0:
+            continue
+        push = (-laid[0] * w[1] + laid[1] * w[0]) / det      # laid + push·u + b·w = 0
+        if push * side >= 0.0:
+            return side
+    return 1.0
+
+
 def _carries(loads) -> bool:
     """Whether any of ``loads`` is a force or a couple at all."""
     return any(f != (0.0, 0.0) or m != 0.0 for _, f, m, _ in loads)
 
 
-def _concurrent(c, draw, out: Forces, sh: _Shape, at, loads):
+def _concurrent(c, draw, out: Forces, sh: _Shape, at, loads, slip=None):
     """The dyad when its output carries nothing: the output is a two-force member (a rocker
     pulls along CB; a massless block only across its guide), so the coupler holds three
     forces, its loads' resultant R, the output's push along that known line through B, and
@@ -298,12 +353,6 @@ def _concurrent(c, draw, out: Forces, sh: _Shape, at, loads):
     size = math.hypot(*r)
     if size == 0.0:
         return None
-    if sh.c is not None:
-        dx, dy = at[sh.b][0] - at[sh.c][0], at[sh.b][1] - at[sh.c][1]
-    else:
-        dx, dy = -sh.guide[1], sh.guide[0]
-    if abs(r[0] * dy - r[1] * dx) <= 1e-9 * size * math.hypot(dx, dy):
-        return None
     # R's line: where R alone has the loads' moment about B; Q on it is the foot of the
     # loads' middle (a single load's own point).
     m_b = _moment(at[sh.b], loads)
@@ -313,6 +362,20 @@ def _concurrent(c, draw, out: Forces, sh: _Shape, at, loads):
     mid = (mid[0] / count, mid[1] / count) if count else on
     t = ((mid[0] - on[0]) * r[0] + (mid[1] - on[1]) * r[1]) / size ** 2
     q = (on[0] + t * r[0], on[1] + t * r[1])
+    if sh.c is not None:
+        dx, dy = at[sh.b][0] - at[sh.c][0], at[sh.b][1] - at[sh.c][1]
+    elif slip is None:
+        dx, dy = -sh.guide[1], sh.guide[0]
+    else:
+        # The block's push leans against its sliding, on the side the coupler's balance
+        # puts it: R and the push meet at X, the crank's force runs along AX.
+        def balance_at(u):
+            x_at = _crossing(q, r, at[sh.b], u)
+            return None if x_at is None else (x_at[0] - at[sh.a][0], x_at[1] - at[sh.a][1])
+        side = _side(r, sh.guide, slip, None, balance_at)
+        dx, dy = leaning((-sh.guide[1], sh.guide[0]), slip[1], slip[0], side)
+    if abs(r[0] * dy - r[1] * dx) <= 1e-9 * size * math.hypot(dx, dy):
+        return None
     qp = c.give("force:cc:Q", g.Point(*q), label="")
     along_r = c.give("force:cc:r", g.Line(-r[1] / size, r[0] / size, 0.0), label="")
     line_r = c.draw("force:cc:lineR", "parallel_through", qp, along_r, kind=Kind.LINE,
@@ -322,10 +385,13 @@ def _concurrent(c, draw, out: Forces, sh: _Shape, at, loads):
                         kind=Kind.LINE, phrase=phrase("force.two_force", j=sh.j, c=sh.c,
                                                       b=sh.b))
     else:
-        guide = c.give("force:cc:guide", g.Line(-sh.guide[1], sh.guide[0], 0.0), label="")
-        line_j = c.draw("force:cc:lineN", "perpendicular_through", c.points[sh.b], guide,
-                        kind=Kind.LINE, phrase=phrase("force.massless_block", j=sh.j,
-                                                      b=sh.b))
+        # The block's line: square to the guide, or leaned (dx, dy) with friction.
+        push = c.give("force:cc:push", g.Line(-dy / math.hypot(dx, dy), dx / math.hypot(dx, dy),
+                                              0.0), label="")
+        line_j = c.draw("force:cc:lineN", "parallel_through", c.points[sh.b], push,
+                        kind=Kind.LINE, phrase=phrase(
+                            "force.massless_block" if slip is None else "force.leaning_block",
+                            j=sh.j, b=sh.b, phi=_friction_angle(slip)))
     x = c.draw("force:cc:X", "intersect_lines", line_r, line_j, label="X",
                phrase=phrase("force.concurrent", i=sh.i, a=sh.a))
     line_a = c.draw("force:cc:lineAX", "line_through", c.points[sh.a], x, kind=Kind.LINE)
@@ -356,7 +422,7 @@ def _piston_effort(c, out: Forces, sh: _Shape, at, loads, wall: Vec, refs) -> No
     u = stroke_axis(at[sh.o], at[sh.b], sh.guide)
     piston = _sum(f for _, f, _, _ in loads)
     out.efforts["piston_effort"] = piston[0] * u[0] + piston[1] * u[1]
-    out.efforts["wall_thrust"] = math.hypot(*wall)
+    out.efforts["wall_thrust"] = abs(-wall[0] * sh.guide[1] + wall[1] * sh.guide[0])
     said = c.draw("force:say:piston", "mark", c.points[sh.b], phrase=phrase(
         "force.piston", j=sh.j, effort=f"{out.efforts['piston_effort']:.6g} N",
         thrust=f"{out.efforts['wall_thrust']:.6g} N"))
@@ -603,6 +669,19 @@ class _Drafter:
                             label="", panel=Panel.FORCE)
         return self.c.draw(f"force:line:{name}", "perpendicular_through", through, guide,
                            kind=Kind.LINE, panel=Panel.FORCE)
+
+    def leaning(self, through: Ref, guide: Vec, side: float, slip) -> Ref:
+        """The line through ``through`` of a frame guide's push with friction: square to
+        the guide, leaned by the friction angle against the sliding, for a push from
+        ``side``."""
+        u = leaning((-guide[1], guide[0]), slip[1], slip[0], side)
+        n = math.hypot(*u)
+        raw = self.c.give("force:guide:N", g.Line(-u[1] / n, u[0] / n, 0.0), label="",
+                          panel=Panel.FORCE)
+        return self.c.draw("force:line:N", "parallel_through", through, raw, kind=Kind.LINE,
+                           panel=Panel.FORCE, phrase=phrase(
+                               "force.leaning", phi=_friction_angle(slip),
+                               side="its normal's side" if side > 0 else "the far side"))
 
     def close(self, tip: Ref, far: Ref, start: Ref, near: Ref, said, far_name: str,
               near_name: str) -> tuple[Ref, Ref, Ref]:

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-__all__ = ["Couple", "Loads", "Mass", "PointForce", "GRAVITY", "crank_tangent",
+__all__ = ["Couple", "Loads", "Mass", "PointForce", "GRAVITY", "crank_tangent", "leaning",
            "stroke_axis"]
 
 GRAVITY = 9.81
@@ -70,6 +70,9 @@ class Loads:
     """The coefficient C_s a flywheel is to hold the speed within, if given."""
     flywheel: float | None = None
     """A flywheel's inertia (kg·m²) whose C_s is asked, if given."""
+    friction: float = 0.0
+    """μ at every sliding pair: a slide's push leans φ = atan μ off the normal to its guide,
+    against the sliding (0: frictionless)."""
 
     def mass_of(self, link: int) -> Mass | None:
         """The mass on ``link``, if it has one."""
@@ -91,3 +94,11 @@ def crank_tangent(pivot, crank_pin) -> tuple[float, float]:
     dx, dy = crank_pin[0] - pivot[0], crank_pin[1] - pivot[1]
     r = (dx * dx + dy * dy) ** 0.5
     return (-dy / r, dx / r)
+
+
+def leaning(normal, sliding, mu: float, side: float) -> tuple[float, float]:
+    """The direction u of a slide's push with friction μ: a push N·u has the normal part N
+    (along the guide's unit ``normal``) and, when N has the sign ``side``, the part μ·|N|
+    against ``sliding`` (the unit velocity of the slider on its guide; zero when it rests,
+    and friction then takes no side): u = n − side·μ·v̂, leaned φ = atan μ off the normal."""
+    return (normal[0] - side * mu * sliding[0], normal[1] - side * mu * sliding[1])

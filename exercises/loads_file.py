@@ -24,7 +24,7 @@ __all__ = ["LOAD_TABLES", "read_loads"]
 LOAD_TABLES = ("forces", "mass", "force", "couple")
 """The top-level tables this module reads; the mechanism reader leaves them alone."""
 
-_KEYS = {"forces": ("gravity", "driver", "speed_fluctuation", "flywheel"),
+_KEYS = {"forces": ("gravity", "driver", "speed_fluctuation", "flywheel", "friction"),
          "mass": ("link", "mass", "centre", "inertia", "length"),
          "force": ("link", "point", "force", "resist", "stroke", "name"),
          "couple": ("link", "moment", "name")}
@@ -74,6 +74,12 @@ def read_loads(data: dict[str, Any], mech: Mechanism, where: SourceMap,
     if len(wheel) > 1:
         raise fail("give speed_fluctuation (the flywheel is found) or flywheel (its C_s is "
                    "found), not both", "forces", "flywheel")
+    friction = 0.0
+    if "friction" in settings:
+        friction = number(settings, "friction", "forces", "a coefficient of friction", 0)
+        if not 0.0 <= friction <= 2.0:
+            raise fail(f"friction is the coefficient μ at the slides, from 0 (none) to 2; got "
+                       f"{friction:g}", "forces", "friction")
     masses = []
     for i, t in enumerate(entries("mass")):
         n = link(t, "mass", i)
@@ -144,7 +150,7 @@ def read_loads(data: dict[str, Any], mech: Mechanism, where: SourceMap,
     couples = [Couple(link(t, "couple", i), number(t, "moment", "couple", "a couple", i),
                       str(t.get("name", ""))) for i, t in enumerate(entries("couple"))]
     return Loads(tuple(masses), tuple(forces), tuple(couples), GRAVITY if gravity else 0.0,
-                 **wheel)
+                 friction=friction, **wheel)
 
 
 def _centre(v: Any, k, metre: float, fail) -> tuple[tuple[float, float], str]:

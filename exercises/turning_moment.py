@@ -218,8 +218,14 @@ def _drawn_marks(ex: Exercise) -> list[tuple[float, float, float, str]]:
         return []
     drive = ex.mechanism.drive
     sense = 1.0 if drive.omega >= 0 else -1.0
+    try:
+        worked = solve_worked(ex)
+    except TarsimError:
+        # Positions the polygons do not draw (a slotted lever with friction): the curve
+        # stands alone, and `tarsim solve` says why.
+        return []
     out = []
-    for sol in solve_worked(ex).positions:
+    for sol in worked.positions:
         q = sol.quantities.get(f"T{drive.link}")
         if q is None:
             continue

@@ -246,3 +246,61 @@ def test_a_massless_block_makes_the_rod_a_three_force_member():
     for name, q in sol.quantities.items():
         assert q.rel_error <= 1e-13, (name, q.rel_error)
     assert sol.quantities["T_14"].value["value"] == 0.0
+
+
+def _engine_with_friction(deg: float, mu: float) -> str:
+    """The bundled engine at ``deg`` with only its 5 kN of gas (massless links, no weight)
+    and friction μ at the piston's guide."""
+    text = FORCES["engine-forces"].read_text(encoding="utf-8")
+    text = text.replace("angle = 40", f"angle = {deg}")
+    text = text.replace("gravity = true", f"gravity = false\nfriction = {mu}")
+    return text[:text.index("[[mass]]")] + text[text.index("[[force]]"):]
+
+
+@pytest.mark.parametrize("deg, mu", [(40, 0.1), (130, 0.15), (220, 0.1), (300, 0.3)])
+def test_friction_leans_the_guides_push_by_the_friction_angle(deg, mu):
+    """With massless links the rod pushes along itself, q·e, and the piston holds
+    G + q·e + N·(n − s·μ·v̂) = 0, s the side N comes out on: a 2 × 2 solve, the side
+    checked, gives q and T2 = (A − O) × q·e, independently of both the polygon and the
+    Newton–Euler system. The guide's push leans atan μ off the normal."""
+    ex = parse_exercise(_engine_with_friction(deg, mu), "engine.toml")
+    (sol,) = tarsim.solve(ex).positions
+    kin = solver.solve(ex.mechanism)
+    a, p = kin.points["A"], kin.points["P"]
+    e = ((p[0] - a[0]) / math.dist(a, p), (p[1] - a[1]) / math.dist(a, p))
+    v = 1.0 if kin.velocities["P"][0] > 0 else -1.0
+    for s in (1.0, -1.0):
+        u = (-s * mu * v, 1.0)                     # n − s·μ·v̂, the guide along x
+        det = e[0] * u[1] - e[1] * u[0]
+        q = (5000.0 * u[1]) / det                  # (−5000, 0) + q·e + N·u = 0
+        n = -(q * e[1]) / u[1]
+        if n * s >= 0:
+            break
+    torque = a[0] * q * e[1] - a[1] * q * e[0]
+    got = {name: q_.value for name, q_ in sol.quantities.items()}
+    assert got["T2"]["value"] == pytest.approx(torque, rel=1e-12)
+    f14 = got["F_14"]["vector"]
+    assert abs(f14[0]) == pytest.approx(mu * abs(f14[1]), rel=1e-12)   # tan φ = μ
+    assert f14[0] * v <= 0.0                       # against the sliding
+    assert got["wall_thrust"]["value"] == pytest.approx(abs(n), rel=1e-12)
+    assert all(q_.rel_error <= 1e-13 for q_ in sol.quantities.values())
+
+
+def test_friction_is_refused_in_one_line_where_it_is_not_drawn(tmp_path):
+    text = FORCES["crank-shaper-forces"].read_text(encoding="utf-8")
+    path = tmp_path / "shaper.toml"
+    path.write_text(text.replace("gravity = true", "gravity = true\nfriction = 0.1"),
+                    encoding="utf-8")
+    result = CliRunner().invoke(cli, ["solve", str(path), "-o", str(tmp_path / "out")])
+    assert result.exit_code != 0
+    (line,) = result.output.strip().splitlines()
+    assert "friction at the slides is drawn for a slider-crank's guide so far" in line
+    assert not (tmp_path / "out").exists()
+
+
+def test_a_friction_coefficient_out_of_range_is_refused_at_its_line():
+    text = _engine_with_friction(40, 3)
+    line = text[:text.index("friction = 3")].count("\n") + 1
+    with pytest.raises(InputError, match=rf"engine.toml:{line}: .*friction is the "
+                                         r"coefficient μ"):
+        parse_exercise(text, "engine.toml")

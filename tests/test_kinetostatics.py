@@ -196,3 +196,29 @@ def test_bad_loads_are_refused_in_one_line(extra, words):
         parse_exercise(text, "cs.toml", "cs")
     message = str(e.value)
     assert "\n" not in message and message.startswith("cs.toml:") and words in message, message
+
+
+@pytest.mark.parametrize("name", ["engine-forces", "crank-shaper-forces"])
+@pytest.mark.parametrize("mu", [0.05, 0.2])
+def test_friction_dissipates_what_the_driver_puts_in_beyond_the_loads(name, mu):
+    """With friction μ at every slide, each slide's push leans against its sliding
+    (|tangential| = μ·|normal|, opposing the slide's velocity), and the balance of power
+    closes only with the dissipation Σ μ·|N|·|v|: T·ω + Σ F·v + Σ M·ω = D, at every 30°."""
+    ex = load(name)
+    loads = replace(ex.loads, friction=mu)
+    mech = ex.mechanism
+    for k in range(12):
+        m = mech.with_drive(replace(mech.drive, angle=mech.drive.angle + math.radians(30 * k)))
+        kin = solver.solve(m)
+        s = balance(m, kin, loads)
+        biggest = max(j.size for j in s.joints if j.name.startswith("F"))
+        assert power_torque(m, kin, loads, s) == pytest.approx(s.torque, abs=1e-11 * biggest)
+        for slide, n in zip(m.slides, s.pushes):
+            (rate,) = [r for r in kin.slide_rates if r.slide is slide]
+            (joint,) = [j for j in s.joints if j.at == kin.points[slide.point]
+                        and (j.by, j.on) == (slide.guide_link, slide.link)
+                        and j.name.startswith("F")]
+            d = rate.direction
+            along = joint.force[0] * d[0] + joint.force[1] * d[1]
+            assert abs(along) == pytest.approx(mu * abs(n), rel=1e-12, abs=1e-12 * biggest)
+            assert along * rate.velocity <= 1e-12 * biggest

@@ -25,7 +25,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import InputError
-from ..loads import Loads, crank_tangent, stroke_axis
+from ..loads import Loads, crank_tangent, leaning, stroke_axis
 from ..model import Mechanism, SlideKind
 from .solver import Kinematics, point_acceleration, point_velocity
 
@@ -59,6 +59,9 @@ class Statics:
     driver: int
     residual: float
     conditioning: float
+    pushes: tuple[float, ...] = ()
+    """Each slide's normal push N (N, along the normal to its guide), in the mechanism's
+    order of slides: with friction, μ·|N| of sliding friction acts there."""
 
     def joint(self, name: str) -> JointForce:
         """The reaction called ``name`` (F_23, T_15)."""
@@ -113,15 +116,44 @@ def _loads_on(kin: Kinematics, mech: Mechanism, loads: Loads, link: int
 def balance(mech: Mechanism, kin: Kinematics, loads: Loads) -> Statics:
     """Solve every joint force and the driving torque at the position ``kin`` solves.
 
+    With friction at the slides, each slide's push leans against its sliding on the side
+    it pushes from, which the solution itself decides: the system is solved with every
+    push assumed on the side the last solution put it, until the sides hold.
+
     Raises
     ------
     InputError
-        If the mechanism rolls or runs in a curved slot (not solved yet), or if its
-        joints constrain it more than once (statically indeterminate), naming them.
+        If the mechanism rolls or runs in a curved slot (not solved yet), if its joints
+        constrain it more than once (statically indeterminate), naming them, or if no
+        choice of sides holds (the friction locks it).
     """
     if mech.arcs or any(s.rolling for s in mech.slides):
         raise InputError("forces through a rolling contact or a curved slot are not solved "
                          "yet", file=mech.source or None)
+    sides = {i: 1.0 for i in range(len(mech.slides))}
+    for _ in range(2 * len(sides) + 2):
+        statics, pushes = _solve(mech, kin, loads, sides)
+        held = {i: (1.0 if n >= 0.0 else -1.0) for i, n in pushes.items()}
+        if not loads.friction or held == sides:
+            return statics
+        sides = held
+    raise InputError(f"with friction μ = {loads.friction:g} no side of the slides' pushes "
+                     "holds: the mechanism locks at this position", file=mech.source or None)
+
+
+def _sliding(kin: Kinematics, slide) -> tuple[float, float]:
+    """The unit velocity of the slider on its guide; nothing when it rests."""
+    rate = next((r for r in kin.slide_rates if r.slide is slide), None)
+    if rate is None or rate.velocity == 0.0:
+        return (0.0, 0.0)
+    sign = 1.0 if rate.velocity > 0.0 else -1.0
+    return (sign * rate.direction[0], sign * rate.direction[1])
+
+
+def _solve(mech: Mechanism, kin: Kinematics, loads: Loads, sides: dict[int, float]
+           ) -> tuple[Statics, dict[int, float]]:
+    """Every link's three equations with the slides' pushes on the ``sides`` given; the
+    solution, and each slide's normal push."""
     moving = [k.number for k in mech.links if k.number != 1]
     row = {n: 3 * i for i, n in enumerate(moving)}
     columns: list[tuple[str, int, int, tuple[float, float], str, tuple[float, float]]] = []
@@ -157,11 +189,13 @@ def balance(mech: Mechanism, kin: Kinematics, loads: Loads) -> Statics:
                 add(name, by, other, at, axis, {
                     other: (unit[0], unit[1], _cross(arm(other, at), unit)),
                     by: (-unit[0], -unit[1], -_cross(arm(by, at), unit))})
-    for s in mech.slides:
+    slide_column = {}
+    for k, s in enumerate(mech.slides):
         at = kin.points[s.point] if s.point in kin.points else world_point(
             kin, mech, s.link, mech.link(s.link).local(s.point))
         d = _direction(kin, s.guide_link, s.direction)
-        n = (-d[1], d[0])
+        n = leaning((-d[1], d[0]), _sliding(kin, s), loads.friction, sides[k])
+        slide_column[k] = len(columns)
         add(fresh(f"F_{s.guide_link}{s.link}"), s.guide_link, s.link, at, "n", {
             s.link: (n[0], n[1], _cross(arm(s.link, at), n)),
             s.guide_link: (-n[0], -n[1], -_cross(arm(s.guide_link, at), n))}, n)
@@ -193,8 +227,10 @@ def balance(mech: Mechanism, kin: Kinematics, loads: Loads) -> Statics:
         elif kind == "m":
             joints.append(JointForce(name, by, on, at, moment=float(x[i])))
         i += 1
-    return Statics(tuple(joints), float(x[-1]), driver, residual,
-                   float(sv[-1] / sv[0]) if len(sv) and sv[0] else 0.0)
+    pushes = {k: float(x[i]) for k, i in slide_column.items()}
+    return (Statics(tuple(joints), float(x[-1]), driver, residual,
+                    float(sv[-1] / sv[0]) if len(sv) and sv[0] else 0.0,
+                    tuple(pushes[k] for k in range(len(mech.slides)))), pushes)
 
 
 def _refuse_redundancy(a: np.ndarray, columns, mech: Mechanism) -> None:
@@ -217,9 +253,12 @@ def _refuse_redundancy(a: np.ndarray, columns, mech: Mechanism) -> None:
                      "driver can hold: no force balance", file=mech.source or None)
 
 
-def power_torque(mech: Mechanism, kin: Kinematics, loads: Loads) -> float:
-    """The driving torque by the balance of power, T·ω_in + Σ F·v + Σ M·ω = 0, over every
-    load and inertia load; no joint force enters (frictionless joints do no work).
+def power_torque(mech: Mechanism, kin: Kinematics, loads: Loads,
+                 statics: Statics | None = None) -> float:
+    """The driving torque by the balance of power, T·ω_in + Σ F·v + Σ M·ω = D, over every
+    load and inertia load. Frictionless joints do no work (D = 0), so no joint force
+    enters; with friction at the slides each dissipates D = Σ μ·|N|·|v_slide|, its push N
+    from ``statics`` (solved here if not given).
 
     Raises
     ------
@@ -238,6 +277,11 @@ def power_torque(mech: Mechanism, kin: Kinematics, loads: Loads) -> float:
         for at, f, mz in _loads_on(kin, mech, loads, k.number):
             v = point_velocity(kin, mech, k.number, at)
             power += f[0] * v[0] + f[1] * v[1] + mz * kin.omegas[k.number]
+    if loads.friction:
+        pushes = (statics or balance(mech, kin, loads)).pushes
+        speeds = {id(r.slide): abs(r.velocity) for r in kin.slide_rates}
+        power -= math.fsum(loads.friction * abs(n) * speeds.get(id(s), 0.0)
+                           for s, n in zip(mech.slides, pushes))
     return -power / w_in
 
 
@@ -246,8 +290,8 @@ def efforts(mech: Mechanism, kin: Kinematics, loads: Loads, statics: Statics
     """An engine's efforts by the textbook's definitions, from the Newton–Euler joint forces:
     the crank effort (the push of the link at the crank pin on the crank, square to the
     crank, CCW +) and its turning moment; for a slider-crank also the piston effort (the
-    piston's loads along the stroke, + toward the crank) and the size of the wall's thrust
-    on the piston."""
+    piston's loads along the stroke, + toward the crank) and the size of the wall's push
+    on the piston square to the stroke."""
     d = mech.drive.link
     pivot, pin = mech.link(d).names[:2]
     (rod,) = [k for k in mech.links_at(pin) if k != d]
@@ -264,5 +308,5 @@ def efforts(mech: Mechanism, kin: Kinematics, loads: Loads, statics: Statics
         u = stroke_axis(kin.points[pivot], kin.points[s.point], s.direction)
         piston = [f for _, f, _ in _loads_on(kin, mech, loads, s.link)]
         out["piston_effort"] = math.fsum(f[0] * u[0] + f[1] * u[1] for f in piston)
-        out["wall_thrust"] = math.hypot(*statics.joint(f"F_1{s.link}").force)
+        out["wall_thrust"] = abs(statics.pushes[mech.slides.index(s)])
     return out
