@@ -26,6 +26,7 @@ newton); the forces are read back off it.
 
 from __future__ import annotations
 
+import copy
 import math
 from dataclasses import dataclass, field
 
@@ -170,21 +171,91 @@ def draw_forces(work) -> Forces:
              if k.number != 1}
     biggest = max([math.hypot(*f) for ls in known.values() for _, f, _, _ in ls] + [1e-300])
     scale = 0.08 / nice(biggest)                   # the largest load about 80 drawing mm
-    out = Forces(scale)
-    out.inertia, out.loads = inertia, known
-    draw = _Drafter(c, scale)
+    slip = None
     if isinstance(group, _Shape):
-        slip = None
         if loads.friction and group.guide is not None:
             slip = (loads.friction, _unit_or_zero(drawn_velocity_polygon(work).vector(group.b)))
+    elif loads.friction:
+        raise TarsimError(_NO_FRICTION)
+    if loads.friction_circle:
+        known = _with_pin_friction(work, c, group, at, known, scale, slip)
+    out = _analyse(c, mech, group, at, known, scale, slip)
+    out.inertia, out.loads = inertia, known
+    return out
+
+
+def _analyse(c, mech: Mechanism, group, at, known, scale: float, slip) -> Forces:
+    """The polygons of the group the crank drives, then the crank's, drawn in ``c`` with
+    the ``known`` loads."""
+    out = Forces(scale)
+    draw = _Drafter(c, scale)
+    if isinstance(group, _Shape):
         crank_pin, pull, o, a = _dyad(c, draw, out, group, at, known, slip)
     else:
-        if loads.friction:
-            raise TarsimError(_NO_FRICTION)
         crank_pin, pull, o, a = _slotted(c, draw, out, group, at, known)
     _crank(c, draw, out, mech.drive.link, crank_pin, pull, o, a, at, known)
     out.every = tuple(s.id for s in c if s.id.startswith("force:"))
     out.bodies = _bodies(mech, out, at, known)
+    return out
+
+
+def _with_pin_friction(work, c, group, at, known, scale: float, slip) -> dict:
+    """The loads with each pin's friction couple: a pin's force touches the friction circle
+    (radius ρ) on the side that resists the turning of one link on the other, which is the
+    force at the pin's centre and a couple ρ·|F| against the turning. |F| comes from the
+    polygons themselves, so they are drawn by trial on a scratch sheet, each round with the
+    last round's couples, until the forces settle; the polygons are then drawn with those.
+
+    Raises
+    ------
+    TarsimError
+        If the forces do not settle (the friction would lock the mechanism).
+    """
+    mech, loads = work.mechanism, work.loads
+    rates = dict(drawn_velocity_polygon(work).rates)
+    rates[mech.drive.link], rates[1] = mech.drive.omega, 0.0
+    pins = [(point, by, on) for point in mech.point_names
+            for by, *rest in [sorted(mech.links_at(point))] for on in rest]
+    sizes: dict = {}
+    rounds = 0
+    for _ in range(_ROUNDS):
+        rounds += 1
+        trial = copy.copy(c)
+        trial.steps = dict(c.steps)                # a scratch sheet over the drawing so far
+        with_couples = _pin_couples(known, pins, sizes, rates, at, loads.friction_circle)
+        found = _analyse(trial, mech, group, at, with_couples, scale, slip)
+        now = {pin: math.hypot(*found.joints[f"F_{pin[1]}{pin[2]}"]) for pin in pins}
+        biggest = max(list(now.values()) + [1e-300])
+        if all(abs(now[k] - sizes.get(k, math.inf)) <= 1e-15 * biggest for k in now):
+            break
+        sizes = now
+    else:
+        raise TarsimError(f"with friction circles of {loads.friction_circle * 1e3:g} mm the "
+                          "pins' forces do not settle: the mechanism locks at this position")
+    c.draw("force:say:circles", "mark", c.points[pins[0][0]], phrase=phrase(
+        "force.circles", rho=f"{loads.friction_circle / mech.units.metres:g} "
+                             f"{mech.units.length}", rounds=rounds))
+    return _pin_couples(known, pins, sizes, rates, at, loads.friction_circle)
+
+
+_ROUNDS = 200
+"""The most rounds of trial for the pins' friction: each round shrinks the change by about
+the friction circle over the links' lengths."""
+
+
+def _pin_couples(known, pins, sizes, rates, at, rho: float) -> dict:
+    """``known`` with each pin's friction couple, ρ·|F| against the turning, on each of the
+    two links (the frame's left out)."""
+    out = {k: list(v) for k, v in known.items()}
+    for pin in pins:
+        point, by, on = pin
+        turning = rates.get(on, 0.0) - rates.get(by, 0.0)
+        if turning == 0.0 or pin not in sizes:
+            continue
+        m = -math.copysign(rho * sizes[pin], turning)
+        out[on].append((at[point], (0.0, 0.0), m, f"Mf_{point}"))
+        if by != 1:
+            out[by].append((at[point], (0.0, 0.0), -m, f"Mf_{point}"))
     return out
 
 

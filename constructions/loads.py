@@ -73,6 +73,9 @@ class Loads:
     friction: float = 0.0
     """μ at every sliding pair: a slide's push leans φ = atan μ off the normal to its guide,
     against the sliding (0: frictionless)."""
+    friction_circle: float = 0.0
+    """ρ (m), the friction circle's radius at every pin (μ times the pin's radius): a pin's
+    force touches it on the side that resists the turning, a couple ρ·|F| (0: none)."""
 
     def mass_of(self, link: int) -> Mass | None:
         """The mass on ``link``, if it has one."""

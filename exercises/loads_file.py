@@ -24,7 +24,8 @@ __all__ = ["LOAD_TABLES", "read_loads"]
 LOAD_TABLES = ("forces", "mass", "force", "couple")
 """The top-level tables this module reads; the mechanism reader leaves them alone."""
 
-_KEYS = {"forces": ("gravity", "driver", "speed_fluctuation", "flywheel", "friction"),
+_KEYS = {"forces": ("gravity", "driver", "speed_fluctuation", "flywheel", "friction",
+                    "friction_circle"),
          "mass": ("link", "mass", "centre", "inertia", "length"),
          "force": ("link", "point", "force", "resist", "stroke", "name"),
          "couple": ("link", "moment", "name")}
@@ -80,6 +81,14 @@ def read_loads(data: dict[str, Any], mech: Mechanism, where: SourceMap,
         if not 0.0 <= friction <= 2.0:
             raise fail(f"friction is the coefficient μ at the slides, from 0 (none) to 2; got "
                        f"{friction:g}", "forces", "friction")
+    circle = 0.0
+    if "friction_circle" in settings:
+        circle = number(settings, "friction_circle", "forces",
+                        "a friction circle's radius", 0) * metre
+        if not circle >= 0.0:
+            raise fail(f"friction_circle is the radius ρ = μ·r of every pin's friction "
+                       f"circle, in {mech.units.length}, 0 or more; got {circle / metre:g}",
+                       "forces", "friction_circle")
     masses = []
     for i, t in enumerate(entries("mass")):
         n = link(t, "mass", i)
@@ -150,7 +159,7 @@ def read_loads(data: dict[str, Any], mech: Mechanism, where: SourceMap,
     couples = [Couple(link(t, "couple", i), number(t, "moment", "couple", "a couple", i),
                       str(t.get("name", ""))) for i, t in enumerate(entries("couple"))]
     return Loads(tuple(masses), tuple(forces), tuple(couples), GRAVITY if gravity else 0.0,
-                 friction=friction, **wheel)
+                 friction=friction, friction_circle=circle, **wheel)
 
 
 def _centre(v: Any, k, metre: float, fail) -> tuple[tuple[float, float], str]:

@@ -107,6 +107,8 @@ def typeset_force(name: str) -> tuple[str, str, str]:
     body = name[:len(name) - len(tail)]
     if body[:2] in ("F_", "T_"):
         return body[0], body[2:], tail
+    if body[:3] == "Mf_":                   # a pin's friction couple: M with fA below
+        return "M", "f" + body[3:], tail
     if body[:2] in ("Fi", "Mi") and body[2:].isdigit():
         return body[0], body[1:], tail
     if body[:1] in "WPT" and body[1:].isdigit():

@@ -304,3 +304,50 @@ def test_a_friction_coefficient_out_of_range_is_refused_at_its_line():
     with pytest.raises(InputError, match=rf"engine.toml:{line}: .*friction is the "
                                          r"coefficient μ"):
         parse_exercise(text, "engine.toml")
+
+
+@pytest.mark.parametrize("name", ["engine-forces", "four-bar-forces", "crank-shaper-forces"])
+def test_friction_circles_at_the_pins_agree_with_newton_euler(name):
+    """With a friction circle at every pin, the polygons drawn by trial until the pins'
+    forces settle give what the Newton–Euler system, iterated the same way, gives; and the
+    balance of power closes with the pins' dissipation Σ ρ·|F|·|ω_rel|."""
+    text = FORCES[name].read_text(encoding="utf-8")
+    text = text.replace("gravity = true", "gravity = true\nfriction_circle = 4", 1)
+    for sol in tarsim.solve(parse_exercise(text, f"{name}.toml")).positions:
+        assert any(s.id == "force:say:circles" for s in sol.work.assembly)
+        for q in sol.quantities.values():
+            if q.name.startswith(("F_", "T")):
+                assert q.rel_error <= 1e-13, (q.name, q.rel_error)
+
+
+@pytest.mark.parametrize("deg", [35, 120, 250])
+def test_a_two_force_rod_runs_tangent_to_both_friction_circles(deg):
+    """The engine with massless links and only its gas force: the rod is a two-force
+    member, and with friction circles of ρ = 5 mm its force's line touches both: it runs
+    ρ from A and ρ from B (the force at each pin with its friction couple is one force,
+    moved |M|/|F| = ρ off the pin)."""
+    text = _engine_with_friction(deg, 0).replace("friction = 0", "friction_circle = 5")
+    ex = parse_exercise(text, "engine.toml")
+    (sol,) = tarsim.solve(ex).positions
+    forces = drawn_forces(sol.work)
+    rod = forces.bodies[3]
+    force = next(f for w, f, m, name in rod if name == "F_23")
+    a, b = sol.work.kinematics.points["A"], sol.work.kinematics.points["P"]
+    # The rod's loads at A: its pin force and the friction couple there, as one line.
+    at_a = math.fsum(m for w, f, m, name in rod if name == "Mf_A")
+    size = math.hypot(*force)
+    assert abs(at_a) == pytest.approx(0.005 * size, rel=1e-12)
+    # The line's foot off A, to the side whose moment about A is the couple.
+    k = at_a / size ** 2
+    foot = (a[0] + k * force[1], a[1] - k * force[0])
+    from_b = abs((b[0] - foot[0]) * force[1] - (b[1] - foot[1]) * force[0]) / size
+    assert from_b == pytest.approx(0.005, rel=1e-9)
+    assert all(q.rel_error <= 1e-13 for q in sol.quantities.values())
+
+
+def test_a_negative_friction_circle_is_refused_at_its_line():
+    text = _engine_with_friction(40, 0).replace("friction = 0", "friction_circle = -2")
+    line = text[:text.index("friction_circle = -2")].count("\n") + 1
+    with pytest.raises(InputError, match=rf"engine.toml:{line}: friction_circle is the "
+                                         r"radius ρ = μ·r"):
+        parse_exercise(text, "engine.toml")

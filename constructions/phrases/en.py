@@ -241,6 +241,12 @@ PHRASES: dict[str, str] = {
     "force.leaning_block": "The block {j} carries no load: its guide's push and its pin {b}'s "
                            "run along one line through {b}, leaned φ = {phi} off the normal to "
                            "the guide, against the sliding.",
+    "force.circles": "Friction circles of radius ρ = {rho} at the pins: each pin's force "
+                     "touches its circle on the side that resists the turning of one link on "
+                     "the other, so each link carries a couple ρ·|F| at each pin against that "
+                     "turning. |F| is found by trial, the polygons drawn again with the last "
+                     "round's couples until the forces settle ({rounds} rounds); the last "
+                     "round is drawn here.",
     "force.torque": "Link {d}'s moments about {o}: the driving torque T{d} = {torque}.",
     "force.dyad": "The force polygon of links {i} and {j} together: lay off every known load "
                   "on them head to tail (weights, inertia forces, external forces), at the "

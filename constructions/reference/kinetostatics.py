@@ -131,14 +131,52 @@ def balance(mech: Mechanism, kin: Kinematics, loads: Loads) -> Statics:
         raise InputError("forces through a rolling contact or a curved slot are not solved "
                          "yet", file=mech.source or None)
     sides = {i: 1.0 for i in range(len(mech.slides))}
-    for _ in range(2 * len(sides) + 2):
-        statics, pushes = _solve(mech, kin, loads, sides)
+    sizes: dict[tuple[str, int, int], float] = {}
+    for _ in range(_ROUNDS):
+        statics, pushes = _solve(mech, kin, loads, sides, pin_couples(mech, kin, loads, sizes))
         held = {i: (1.0 if n >= 0.0 else -1.0) for i, n in pushes.items()}
-        if not loads.friction or held == sides:
+        now = {pin: math.hypot(*statics.joint(f"F_{pin[1]}{pin[2]}").force)
+               for pin in pins(mech)} if loads.friction_circle else {}
+        biggest = max([j.size for j in statics.joints if j.name.startswith("F")] + [1e-300])
+        settled = all(abs(now[k] - sizes.get(k, math.inf)) <= 1e-15 * biggest for k in now)
+        if (not loads.friction or held == sides) and settled:
             return statics
-        sides = held
-    raise InputError(f"with friction μ = {loads.friction:g} no side of the slides' pushes "
-                     "holds: the mechanism locks at this position", file=mech.source or None)
+        sides, sizes = held, now
+    raise InputError(f"with friction (μ = {loads.friction:g} at the slides, friction circles "
+                     f"of {loads.friction_circle:g} m at the pins) the forces do not settle: "
+                     "the mechanism locks at this position", file=mech.source or None)
+
+
+_ROUNDS = 200
+"""The most rounds friction is solved in: the pins' couples shrink their change by about
+the friction circle over the link each round, the slides' sides settle in a few."""
+
+
+def pins(mech: Mechanism) -> list[tuple[str, int, int]]:
+    """Every turning pair: (point, the lower-numbered link, the other), as the joint
+    F_{lower}{other} names it."""
+    out = []
+    for point in mech.point_names:
+        carriers = sorted(mech.links_at(point))
+        out += [(point, carriers[0], other) for other in carriers[1:]]
+    return out
+
+
+def pin_couples(mech: Mechanism, kin: Kinematics, loads: Loads,
+                sizes: dict[tuple[str, int, int], float]) -> dict[int, float]:
+    """Each link's friction couple from its pins (N·m, CCW +): at a pin whose force is
+    ``sizes[pin]``, the force touches the friction circle of radius ρ on the side that
+    resists the turning of one link on the other, a couple ρ·|F| against it on each."""
+    out: dict[int, float] = {}
+    for pin in pins(mech):
+        _, by, on = pin
+        turning = kin.omegas.get(on, 0.0) - kin.omegas.get(by, 0.0)
+        if turning == 0.0 or pin not in sizes:
+            continue
+        m = -math.copysign(loads.friction_circle * sizes[pin], turning)
+        out[on] = out.get(on, 0.0) + m
+        out[by] = out.get(by, 0.0) - m
+    return out
 
 
 def _sliding(kin: Kinematics, slide) -> tuple[float, float]:
@@ -150,10 +188,11 @@ def _sliding(kin: Kinematics, slide) -> tuple[float, float]:
     return (sign * rate.direction[0], sign * rate.direction[1])
 
 
-def _solve(mech: Mechanism, kin: Kinematics, loads: Loads, sides: dict[int, float]
-           ) -> tuple[Statics, dict[int, float]]:
-    """Every link's three equations with the slides' pushes on the ``sides`` given; the
-    solution, and each slide's normal push."""
+def _solve(mech: Mechanism, kin: Kinematics, loads: Loads, sides: dict[int, float],
+           couples: dict[int, float]) -> tuple[Statics, dict[int, float]]:
+    """Every link's three equations with the slides' pushes on the ``sides`` given and the
+    pins' friction ``couples`` (link → N·m) as known loads; the solution, and each slide's
+    normal push."""
     moving = [k.number for k in mech.links if k.number != 1]
     row = {n: 3 * i for i, n in enumerate(moving)}
     columns: list[tuple[str, int, int, tuple[float, float], str, tuple[float, float]]] = []
@@ -210,6 +249,7 @@ def _solve(mech: Mechanism, kin: Kinematics, loads: Loads, sides: dict[int, floa
         r = row[link]
         for at, f, mz in _loads_on(kin, mech, loads, link):
             b[r:r + 3] -= (f[0], f[1], _cross(arm(link, at), f) + mz)
+        b[r + 2] -= couples.get(link, 0.0)
     _refuse_redundancy(a, columns, mech)
     x, *_ = np.linalg.lstsq(a, b, rcond=None)
     sv = np.linalg.svd(a, compute_uv=False)
@@ -277,11 +317,15 @@ def power_torque(mech: Mechanism, kin: Kinematics, loads: Loads,
         for at, f, mz in _loads_on(kin, mech, loads, k.number):
             v = point_velocity(kin, mech, k.number, at)
             power += f[0] * v[0] + f[1] * v[1] + mz * kin.omegas[k.number]
-    if loads.friction:
-        pushes = (statics or balance(mech, kin, loads)).pushes
+    if loads.friction or loads.friction_circle:
+        statics = statics or balance(mech, kin, loads)
         speeds = {id(r.slide): abs(r.velocity) for r in kin.slide_rates}
         power -= math.fsum(loads.friction * abs(n) * speeds.get(id(s), 0.0)
-                           for s, n in zip(mech.slides, pushes))
+                           for s, n in zip(mech.slides, statics.pushes))
+        power -= math.fsum(
+            loads.friction_circle * math.hypot(*statics.joint(f"F_{by}{on}").force)
+            * abs(kin.omegas.get(on, 0.0) - kin.omegas.get(by, 0.0))
+            for _, by, on in pins(mech))
     return -power / w_in
 
 
