@@ -35,7 +35,7 @@ from . import asks as A
 from .acceleration_polygon import drawn_acceleration_polygon
 from .checks import Answer, FigureSpec, vector_value
 from .errors import TarsimError
-from .loads import Loads, crank_tangent, leaning, stroke_axis
+from .loads import RESTING, Loads, crank_tangent, leaning, stroke_axis
 from .model import Mechanism, SlideKind
 from .narration import phrase
 from .record import Construction, Kind, Panel, Ref, Role
@@ -174,9 +174,10 @@ def draw_forces(work) -> Forces:
     slip = None
     if isinstance(group, _Shape):
         if loads.friction and group.guide is not None:
-            slip = (loads.friction, _unit_or_zero(drawn_velocity_polygon(work).vector(group.b)))
+            vp = drawn_velocity_polygon(work)
+            slip = (loads.friction, _unit_or_zero(vp.vector(group.b), _fastest(vp, at)))
     elif loads.friction:
-        raise TarsimError(_NO_FRICTION)
+        slip = (loads.friction, _lever_sliding(work, group, at))
     if loads.friction_circle:
         known = _with_pin_friction(work, c, group, at, known, scale, slip)
     out = _analyse(c, mech, group, at, known, scale, slip)
@@ -192,7 +193,7 @@ def _analyse(c, mech: Mechanism, group, at, known, scale: float, slip) -> Forces
     if isinstance(group, _Shape):
         crank_pin, pull, o, a = _dyad(c, draw, out, group, at, known, slip)
     else:
-        crank_pin, pull, o, a = _slotted(c, draw, out, group, at, known)
+        crank_pin, pull, o, a = _slotted(c, draw, out, group, at, known, slip)
     _crank(c, draw, out, mech.drive.link, crank_pin, pull, o, a, at, known)
     out.every = tuple(s.id for s in c if s.id.startswith("force:"))
     out.bodies = _bodies(mech, out, at, known)
@@ -291,9 +292,26 @@ _WHY = ("the force polygons are drawn for a four-bar, a slider-crank and a slott
         "analytic reference and the turning-moment diagram only")
 
 
-_NO_FRICTION = ("friction at the slides is drawn for a slider-crank's guide so far; a "
-                "slotted lever's forces with friction are in the analytic reference and the "
-                "turning-moment diagram only")
+def _lever_sliding(work, lv: "_Lever", at) -> dict[str, Vec]:
+    """How each slide of a slotted lever slides, as unit velocities read off the velocity
+    polygon: the ram on its guide, the ram's pin and the block along the slot (each less
+    the velocity of the lever's own point under it, ω × PX)."""
+    vp = drawn_velocity_polygon(work)
+    w, fastest = vp.rates.get(lv.l, 0.0), _fastest(vp, at)
+
+    def on_lever(point: str) -> Vec:
+        v = vp.vector(point)
+        x, y = at[point][0] - at[lv.p][0], at[point][1] - at[lv.p][1]
+        return _unit_or_zero((v[0] + w * y, v[1] - w * x), fastest)
+    out = {"block": on_lever(lv.a)}
+    if lv.r is not None:
+        out |= {"guide": _unit_or_zero(vp.vector(lv.q), fastest), "pin": on_lever(lv.q)}
+    return out
+
+
+def _fastest(vp, at) -> float:
+    """The fastest speed the velocity polygon draws at the mechanism's points."""
+    return max([math.hypot(*vp.vector(p)) for p in at if p in vp.tips] + [0.0])
 
 
 def _group_of(mech: Mechanism):
@@ -366,9 +384,11 @@ def _dyad(c, draw, out: Forces, sh: _Shape, at, known, slip=None):
     return sh.i, (-f_di[0], -f_di[1]), sh.o, sh.a
 
 
-def _unit_or_zero(v: Vec) -> Vec:
+def _unit_or_zero(v: Vec, beside: float) -> Vec:
+    """``v`` made a unit vector, or nothing when it is the rounding of a zero beside the
+    speed ``beside`` (a slide at rest: friction takes no side)."""
     n = math.hypot(*v)
-    return (v[0] / n, v[1] / n) if n > 0.0 else (0.0, 0.0)
+    return (v[0] / n, v[1] / n) if n > RESTING * beside else (0.0, 0.0)
 
 
 def _friction_angle(slip) -> str:
@@ -404,6 +424,24 @@ def _side(laid: Vec, guide: Vec, slip, other: Vec | None, other_at=None) -> floa
         if push * side >= 0.0:
             return side
     return 1.0
+
+
+def _sides(laid: Vec, first, second, mu: float) -> tuple[float, float]:
+    """The sides two leaning pushes come from, each (guide direction, unit sliding): the
+    pair whose leaned lines close the ``laid`` loads with pushes from those same sides
+    (both square to their guides, the first pair, when none holds)."""
+    n1, n2 = (-first[0][1], first[0][0]), (-second[0][1], second[0][0])
+    for s1 in (1.0, -1.0):
+        for s2 in (1.0, -1.0):
+            u, w = leaning(n1, first[1], mu, s1), leaning(n2, second[1], mu, s2)
+            det = u[0] * w[1] - u[1] * w[0]
+            if det == 0.0:
+                continue
+            a = (-laid[0] * w[1] + laid[1] * w[0]) / det      # laid + a·u + b·w = 0
+            b = (-u[0] * laid[1] + u[1] * laid[0]) / det
+            if a * s1 >= 0.0 and b * s2 >= 0.0:
+                return s1, s2
+    return 1.0, 1.0
 
 
 def _carries(loads) -> bool:
@@ -617,7 +655,7 @@ def slotted_of(mech: Mechanism) -> _Lever:
                   frame[0].direction)
 
 
-def _slotted(c, draw, out: Forces, lv: _Lever, at, known):
+def _slotted(c, draw, out: Forces, lv: _Lever, at, known, slip=None):
     """The slotted lever's group, in the order its unknowns allow.
 
     1. the ram: its loads closed by the slot's push and the guide's, each square to its
@@ -639,9 +677,19 @@ def _slotted(c, draw, out: Forces, lv: _Lever, at, known):
         c.draw("force:say:ram", "mark", origin, panel=Panel.FORCE,
                phrase=phrase("force.ram", r=lv.r, l=lv.l))
         tip = draw.loads(lv.r, origin, known[lv.r])
-        guide = draw.square_to(origin, lv.guide, "N")
-        across = c.draw("force:line:slotN", "perpendicular_through", origin, slot,
-                        kind=Kind.LINE, panel=Panel.FORCE)
+        if slip is None:
+            guide = draw.square_to(origin, lv.guide, "N")
+            across = c.draw("force:line:slotN", "perpendicular_through", origin, slot,
+                            kind=Kind.LINE, panel=Panel.FORCE)
+        else:
+            mu, sliding = slip
+            laid = _sum(f for _, f, _, _ in known[lv.r])
+            s_guide, s_slot = _sides(laid, (lv.guide, sliding["guide"]), (u, sliding["pin"]),
+                                     mu)
+            guide = draw.leaning(origin, lv.guide, s_guide, (mu, sliding["guide"]),
+                                 what="The frame's guide")
+            across = draw.leaning(origin, u, s_slot, (mu, sliding["pin"]), "slotN",
+                                  what=f"The slot of link {lv.l}")
         cross, end_vec, start_vec = draw.close(tip, guide, origin, across, phrase(
             "force.ram_close", r=lv.r, l=lv.l), f"F_1{lv.r}", f"F_{lv.l}{lv.r}")
         n_guide, n_slot = draw.read(end_vec), draw.read(start_vec)
@@ -661,6 +709,11 @@ def _slotted(c, draw, out: Forces, lv: _Lever, at, known):
         ram_moment = pq[0] * f_rl[1] - pq[1] * f_rl[0]
     nu = (_moment(at[lv.p], known[lv.l]) + ram_moment - t_lb) / (pa[0] * n[1] - pa[1] * n[0])
     n_lb = (nu * n[0], nu * n[1])
+    if slip is not None:
+        # Friction along the slot acts on the slot's line, through the pivot: it leaves the
+        # lever's moments, and so ν, as they were, and leans the push against the sliding.
+        lean = leaning(n, slip[1]["block"], slip[0], 1.0 if nu >= 0.0 else -1.0)
+        n_lb = (nu * lean[0], nu * lean[1])
     out.joints[f"F_{lv.l}{lv.b}"] = n_lb
     # The block's polygon: its loads and the slot's push, closed by the crank's force.
     low = min([s.output.xy[1] for s in c if s.panel is Panel.FORCE
@@ -741,17 +794,19 @@ class _Drafter:
         return self.c.draw(f"force:line:{name}", "perpendicular_through", through, guide,
                            kind=Kind.LINE, panel=Panel.FORCE)
 
-    def leaning(self, through: Ref, guide: Vec, side: float, slip) -> Ref:
+    def leaning(self, through: Ref, guide: Vec, side: float, slip, name: str = "N",
+                what: str = "The guide") -> Ref:
         """The line through ``through`` of a frame guide's push with friction: square to
         the guide, leaned by the friction angle against the sliding, for a push from
         ``side``."""
         u = leaning((-guide[1], guide[0]), slip[1], slip[0], side)
         n = math.hypot(*u)
-        raw = self.c.give("force:guide:N", g.Line(-u[1] / n, u[0] / n, 0.0), label="",
+        raw = self.c.give(f"force:guide:{name}", g.Line(-u[1] / n, u[0] / n, 0.0), label="",
                           panel=Panel.FORCE)
-        return self.c.draw("force:line:N", "parallel_through", through, raw, kind=Kind.LINE,
+        return self.c.draw(f"force:line:{name}", "parallel_through", through, raw,
+                           kind=Kind.LINE,
                            panel=Panel.FORCE, phrase=phrase(
-                               "force.leaning", phi=_friction_angle(slip),
+                               "force.leaning", what=what, phi=_friction_angle(slip),
                                side="its normal's side" if side > 0 else "the far side"))
 
     def close(self, tip: Ref, far: Ref, start: Ref, near: Ref, said, far_name: str,

@@ -10,11 +10,15 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-__all__ = ["Couple", "Loads", "Mass", "PointForce", "GRAVITY", "crank_tangent", "leaning",
-           "stroke_axis"]
+__all__ = ["Couple", "Loads", "Mass", "PointForce", "GRAVITY", "RESTING", "crank_tangent",
+           "leaning", "stroke_axis"]
 
 GRAVITY = 9.81
 """m/s², the value the course project uses."""
+
+RESTING = 1e-9
+"""A slide sliding slower than this share of the mechanism's fastest point rests: the
+rounding of a zero, which must not choose friction's side."""
 
 
 @dataclass(frozen=True)

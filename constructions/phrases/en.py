@@ -235,9 +235,9 @@ PHRASES: dict[str, str] = {
     "force.close_three": "Close link {i}'s polygon: through its end a parallel to the line of "
                          "link {j}'s push, through its start a parallel to {a}X; where they "
                          "cross gives both forces.",
-    "force.leaning": "The guide pushes with friction: its push leans φ = atan μ = {phi} off "
-                     "the normal, against the sliding, from {side} (the side found by "
-                     "closing the polygon both ways).",
+    "force.leaning": "{what} pushes with friction: its push leans φ = atan μ = {phi} off "
+                     "the normal, against the sliding, from {side} (the side on which the "
+                     "polygon closes with the push coming from that side).",
     "force.leaning_block": "The block {j} carries no load: its guide's push and its pin {b}'s "
                            "run along one line through {b}, leaned φ = {phi} off the normal to "
                            "the guide, against the sliding.",

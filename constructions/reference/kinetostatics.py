@@ -25,7 +25,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import InputError
-from ..loads import Loads, crank_tangent, leaning, stroke_axis
+from ..loads import RESTING, Loads, crank_tangent, leaning, stroke_axis
 from ..model import Mechanism, SlideKind
 from .solver import Kinematics, point_acceleration, point_velocity
 
@@ -180,9 +180,11 @@ def pin_couples(mech: Mechanism, kin: Kinematics, loads: Loads,
 
 
 def _sliding(kin: Kinematics, slide) -> tuple[float, float]:
-    """The unit velocity of the slider on its guide; nothing when it rests."""
+    """The unit velocity of the slider on its guide; nothing when it rests (to the rounding
+    of the mechanism's speeds: friction then takes no side)."""
     rate = next((r for r in kin.slide_rates if r.slide is slide), None)
-    if rate is None or rate.velocity == 0.0:
+    speeds = max([math.hypot(*v) for v in kin.velocities.values()] + [0.0])
+    if rate is None or abs(rate.velocity) <= RESTING * speeds:
         return (0.0, 0.0)
     sign = 1.0 if rate.velocity > 0.0 else -1.0
     return (sign * rate.direction[0], sign * rate.direction[1])
@@ -319,7 +321,8 @@ def power_torque(mech: Mechanism, kin: Kinematics, loads: Loads,
             power += f[0] * v[0] + f[1] * v[1] + mz * kin.omegas[k.number]
     if loads.friction or loads.friction_circle:
         statics = statics or balance(mech, kin, loads)
-        speeds = {id(r.slide): abs(r.velocity) for r in kin.slide_rates}
+        speeds = {id(r.slide): abs(r.velocity) for r in kin.slide_rates
+                  if _sliding(kin, r.slide) != (0.0, 0.0)}
         power -= math.fsum(loads.friction * abs(n) * speeds.get(id(s), 0.0)
                            for s, n in zip(mech.slides, statics.pushes))
         power -= math.fsum(
