@@ -34,7 +34,7 @@ from . import geometry as g
 from . import asks as A
 from .acceleration_polygon import drawn_acceleration_polygon
 from .checks import Answer, FigureSpec, vector_value
-from .errors import TarsimError
+from .errors import GeometryError, TarsimError
 from .loads import RESTING, Loads, crank_tangent, leaning, stroke_axis
 from .model import Mechanism, SlideKind
 from .narration import phrase
@@ -224,15 +224,22 @@ def _with_pin_friction(work, c, group, at, known, scale: float, slip) -> dict:
         trial = copy.copy(c)
         trial.steps = dict(c.steps)                # a scratch sheet over the drawing so far
         with_couples = _pin_couples(known, pins, sizes, rates, at, loads.friction_circle)
-        found = _analyse(trial, mech, group, at, with_couples, scale, slip)
+        locks = TarsimError(f"with friction circles of {loads.friction_circle * 1e3:g} mm "
+                            "the pins' forces do not settle: the mechanism locks at this "
+                            "position")
+        try:
+            found = _analyse(trial, mech, group, at, with_couples, scale, slip)
+        except GeometryError:
+            raise locks from None          # the trial ran away: its forces outgrew the sheet
         now = {pin: math.hypot(*found.joints[f"F_{pin[1]}{pin[2]}"]) for pin in pins}
         biggest = max(list(now.values()) + [1e-300])
+        if not math.isfinite(biggest):
+            raise locks
         if all(abs(now[k] - sizes.get(k, math.inf)) <= 1e-15 * biggest for k in now):
             break
         sizes = now
     else:
-        raise TarsimError(f"with friction circles of {loads.friction_circle * 1e3:g} mm the "
-                          "pins' forces do not settle: the mechanism locks at this position")
+        raise locks
     c.draw("force:say:circles", "mark", c.points[pins[0][0]], phrase=phrase(
         "force.circles", rho=f"{loads.friction_circle / mech.units.metres:g} "
                              f"{mech.units.length}", rounds=rounds))

@@ -174,7 +174,13 @@ class TurningMoment:
 
 def turning_moment(ex: Exercise, steps: int = 360,
                    progress: Callable[[int], None] | None = None) -> TurningMoment:
-    """Solve the forces at ``steps`` equal steps round the input's turn."""
+    """Solve the forces at ``steps`` equal steps round the input's turn.
+
+    Raises
+    ------
+    TarsimError
+        If they are solved at none of them (the friction locks it everywhere).
+    """
     mech, loads = ex.mechanism, ex.loads
     drive = mech.drive
     sense = 1.0 if drive.omega >= 0 else -1.0
@@ -203,6 +209,10 @@ def turning_moment(ex: Exercise, steps: int = 360,
             out.forces.setdefault(j.name, [None] * k).append(j.size)
         if progress:
             progress(1)
+    if not misses:
+        where, why = out.gaps[0]
+        raise TarsimError(f"the forces are solved at no position of the turn, so there is no "
+                          f"turning-moment diagram: {why}")
     out.power_miss = max(misses, default=0.0) / (biggest or 1.0)
     out.marks = _drawn_marks(ex)
     return out

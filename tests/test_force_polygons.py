@@ -367,3 +367,19 @@ def test_a_negative_friction_circle_is_refused_at_its_line():
     with pytest.raises(InputError, match=rf"engine.toml:{line}: friction_circle is the "
                                          r"radius ρ = μ·r"):
         parse_exercise(text, "engine.toml")
+
+
+def test_friction_circles_too_big_to_settle_are_refused_in_one_line(tmp_path):
+    """A friction circle larger than the links locks the engine: the solve and the sweep
+    each say so in one line, with no traceback and no files."""
+    text = FORCES["engine-forces"].read_text(encoding="utf-8").replace(
+        "gravity = true", "gravity = true\nfriction_circle = 50000")
+    path = tmp_path / "locked.toml"
+    path.write_text(text, encoding="utf-8")
+    for command in ("solve", "sweep"):
+        out = tmp_path / command
+        result = CliRunner().invoke(cli, [command, str(path), "-o", str(out)])
+        assert result.exit_code != 0
+        (line,) = result.output.strip().splitlines()
+        assert "do not settle: the mechanism locks" in line, line
+        assert not out.exists()

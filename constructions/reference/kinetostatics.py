@@ -133,11 +133,15 @@ def balance(mech: Mechanism, kin: Kinematics, loads: Loads) -> Statics:
     sides = {i: 1.0 for i in range(len(mech.slides))}
     sizes: dict[tuple[str, int, int], float] = {}
     for _ in range(_ROUNDS):
-        statics, pushes = _solve(mech, kin, loads, sides, pin_couples(mech, kin, loads, sizes))
+        with np.errstate(over="ignore", invalid="ignore"):     # a runaway is caught below
+            statics, pushes = _solve(mech, kin, loads, sides,
+                                     pin_couples(mech, kin, loads, sizes))
         held = {i: (1.0 if n >= 0.0 else -1.0) for i, n in pushes.items()}
         now = {pin: math.hypot(*statics.joint(f"F_{pin[1]}{pin[2]}").force)
                for pin in pins(mech)} if loads.friction_circle else {}
         biggest = max([j.size for j in statics.joints if j.name.startswith("F")] + [1e-300])
+        if not math.isfinite(biggest):
+            break                           # the pins' couples ran away: it locks
         settled = all(abs(now[k] - sizes.get(k, math.inf)) <= 1e-15 * biggest for k in now)
         if (not loads.friction or held == sides) and settled:
             return statics
