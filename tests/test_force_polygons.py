@@ -376,9 +376,9 @@ def test_friction_circles_too_big_to_settle_are_refused_in_one_line(tmp_path):
         "gravity = true", "gravity = true\nfriction_circle = 50000")
     path = tmp_path / "locked.toml"
     path.write_text(text, encoding="utf-8")
-    for command in ("solve", "sweep"):
+    for command, more in (("solve", []), ("sweep", ["--steps", "36"])):
         out = tmp_path / command
-        result = CliRunner().invoke(cli, [command, str(path), "-o", str(out)])
+        result = CliRunner().invoke(cli, [command, str(path), "-o", str(out), *more])
         assert result.exit_code != 0
         (line,) = result.output.strip().splitlines()
         assert "do not settle: the mechanism locks" in line, line

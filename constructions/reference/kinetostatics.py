@@ -132,6 +132,7 @@ def balance(mech: Mechanism, kin: Kinematics, loads: Loads) -> Statics:
                          "yet", file=mech.source or None)
     sides = {i: 1.0 for i in range(len(mech.slides))}
     sizes: dict[tuple[str, int, int], float] = {}
+    growing, last = 0, math.inf
     for _ in range(_ROUNDS):
         with np.errstate(over="ignore", invalid="ignore"):     # a runaway is caught below
             statics, pushes = _solve(mech, kin, loads, sides,
@@ -142,10 +143,15 @@ def balance(mech: Mechanism, kin: Kinematics, loads: Loads) -> Statics:
         biggest = max([j.size for j in statics.joints if j.name.startswith("F")] + [1e-300])
         if not math.isfinite(biggest):
             break                           # the pins' couples ran away: it locks
-        settled = all(abs(now[k] - sizes.get(k, math.inf)) <= 1e-15 * biggest for k in now)
-        if (not loads.friction or held == sides) and settled:
+        change = max([abs(now[k] - sizes.get(k, math.inf)) for k in now] + [0.0])
+        if (not loads.friction or held == sides) and change <= 1e-15 * biggest:
             return statics
-        sides, sizes = held, now
+        # The pins' couples shrink each round's change when they settle; three rounds of
+        # growth beyond the rounding mean they run away.
+        growing = growing + 1 if last < change and change > 1e-12 * biggest else 0
+        if growing >= 3:
+            break
+        sides, sizes, last = held, now, change
     raise InputError(f"with friction (μ = {loads.friction:g} at the slides, friction circles "
                      f"of {loads.friction_circle:g} m at the pins) the forces do not settle: "
                      "the mechanism locks at this position", file=mech.source or None)
