@@ -30,7 +30,7 @@ from .record import Panel, Ref
 from .reference.centres import centre_error
 
 __all__ = ["Quantity", "Expected", "Answer", "FigureSpec", "tolerance", "check", "vector_value",
-           "grashof_value", "time_ratio_value", "NOISE", "EPS"]
+           "grashof_value", "time_ratio_value", "quiet", "NOISE", "EPS"]
 
 EPS = 2.220446049250313e-16
 """The unit roundoff of a float."""
@@ -163,15 +163,20 @@ def time_ratio_value(slow: float, quick: float) -> dict[str, Any]:
             "quick_deg": math.degrees(quick)}
 
 
-def _quiet(x: float, scale: float) -> float:
-    """``x``, or 0 when it is rounding noise beside ``scale``."""
+def quiet(x: float, scale: float) -> float:
+    """``x``, or 0 when it is rounding noise beside ``scale`` (what it is measured against).
+
+    >>> quiet(-2.2e-15, 1000.0), quiet(3.5, 1000.0)
+    (0.0, 3.5)
+    """
     return 0.0 if abs(x) <= NOISE * scale else x + 0.0
+
 
 
 def _rate(value: dict, ref: dict, scale: float) -> tuple[dict, dict, float]:
     v, r = value["value"], ref["value"]
     err = abs(v - r) / max(abs(r), scale, 1e-300)
-    return {"value": _quiet(v, scale)}, {"value": _quiet(r, scale)}, err
+    return {"value": quiet(v, scale)}, {"value": quiet(r, scale)}, err
 
 
 def _vector(value: dict, ref: dict, scale: float) -> tuple[dict, dict, float]:

@@ -33,7 +33,7 @@ from dataclasses import dataclass, field
 from . import geometry as g
 from . import asks as A
 from .acceleration_polygon import drawn_acceleration_polygon
-from .checks import Answer, FigureSpec, vector_value
+from .checks import NOISE, Answer, FigureSpec, quiet, vector_value
 from .errors import GeometryError, TarsimError
 from .loads import RESTING, Loads, crank_tangent, leaning, stroke_axis
 from .model import Mechanism, SlideKind
@@ -240,7 +240,9 @@ def _with_pin_friction(work, c, group, at, known, scale: float, slip) -> dict:
         sizes = now
     else:
         raise locks
-    c.draw("force:say:circles", "mark", c.points[pins[0][0]], phrase=phrase(
+    # Said first among the force polygons, at their origin.
+    origin = c.give("force:circles:at", g.Point(0.0, 0.0), label="", panel=Panel.FORCE)
+    c.draw("force:say:circles", "mark", origin, panel=Panel.FORCE, phrase=phrase(
         "force.circles", rho=f"{loads.friction_circle / mech.units.metres:g} "
                              f"{mech.units.length}", rounds=rounds))
     return _pin_couples(known, pins, sizes, rates, at, loads.friction_circle)
@@ -261,9 +263,9 @@ def _pin_couples(known, pins, sizes, rates, at, rho: float) -> dict:
         if turning == 0.0 or pin not in sizes:
             continue
         m = -math.copysign(rho * sizes[pin], turning)
-        out[on].append((at[point], (0.0, 0.0), m, f"Mf_{point}"))
+        out[on].append((at[point], (0.0, 0.0), m, f"Mf_{by}{on}"))       # of by on on
         if by != 1:
-            out[by].append((at[point], (0.0, 0.0), -m, f"Mf_{point}"))
+            out[by].append((at[point], (0.0, 0.0), -m, f"Mf_{on}{by}"))
     return out
 
 
@@ -343,9 +345,9 @@ def _dyad(c, draw, out: Forces, sh: _Shape, at, known, slip=None):
         if done is not None:
             return done
     line_ab = c.draw("force:line:AB", "line_through", c.points[sh.a], c.points[sh.b],
-                     kind=Kind.LINE)
+                     kind=Kind.LINE, panel=Panel.FORCE)
     pole = c.give("force:S", g.Point(0.0, 0.0), label="", panel=Panel.FORCE)
-    c.draw("force:say:dyad", "mark", pole, panel=Panel.FORCE,
+    c.draw("force:say:dyad", "mark", pole, panel=Panel.FORCE, label=f"links {sh.i}, {sh.j}",
            phrase=phrase("force.dyad", i=sh.i, j=sh.j))
     tip = pole
     for k in (sh.i, sh.j):
@@ -360,7 +362,7 @@ def _dyad(c, draw, out: Forces, sh: _Shape, at, known, slip=None):
             "force.tangential", name=f"F_1{sh.j}", pin=sh.c, link=sh.j, about=sh.b),
             label=f"F_1{sh.j}ᵗ")
         far = c.draw("force:line:CB", "line_through", c.points[sh.c], c.points[sh.b],
-                     kind=Kind.LINE)
+                     kind=Kind.LINE, panel=Panel.FORCE)
     else:
         t_c = (0.0, 0.0)
         if slip is None:
@@ -493,7 +495,8 @@ def _concurrent(c, draw, out: Forces, sh: _Shape, at, loads, slip=None):
     if abs(r[0] * dy - r[1] * dx) <= 1e-9 * size * math.hypot(dx, dy):
         return None
     qp = c.give("force:cc:Q", g.Point(*q), label="")
-    along_r = c.give("force:cc:r", g.Line(-r[1] / size, r[0] / size, 0.0), label="")
+    along_r = c.give("force:cc:r", g.Line(-r[1] / size, r[0] / size, 0.0), label="",
+                     panel=Panel.FORCE)
     line_r = c.draw("force:cc:lineR", "parallel_through", qp, along_r, kind=Kind.LINE,
                     phrase=phrase("force.resultant", i=sh.i, size=f"{size:.4g} N", b=sh.b))
     if sh.c is not None:
@@ -503,7 +506,7 @@ def _concurrent(c, draw, out: Forces, sh: _Shape, at, loads, slip=None):
     else:
         # The block's line: square to the guide, or leaned (dx, dy) with friction.
         push = c.give("force:cc:push", g.Line(-dy / math.hypot(dx, dy), dx / math.hypot(dx, dy),
-                                              0.0), label="")
+                                              0.0), label="", panel=Panel.FORCE)
         line_j = c.draw("force:cc:lineN", "parallel_through", c.points[sh.b], push,
                         kind=Kind.LINE, phrase=phrase(
                             "force.massless_block" if slip is None else "force.leaning_block",
@@ -512,7 +515,7 @@ def _concurrent(c, draw, out: Forces, sh: _Shape, at, loads, slip=None):
                phrase=phrase("force.concurrent", i=sh.i, a=sh.a))
     line_a = c.draw("force:cc:lineAX", "line_through", c.points[sh.a], x, kind=Kind.LINE)
     pole = c.give("force:S", g.Point(0.0, 0.0), label="", panel=Panel.FORCE)
-    c.draw("force:say:three", "mark", pole, panel=Panel.FORCE,
+    c.draw("force:say:three", "mark", pole, panel=Panel.FORCE, label=f"link {sh.i}",
            phrase=phrase("force.three", i=sh.i))
     tip = draw.loads(sh.i, pole, loads)
     cross, end_vec, start_vec = draw.close(tip, line_j, pole, line_a, phrase(
@@ -539,7 +542,7 @@ def _piston_effort(c, out: Forces, sh: _Shape, at, loads, wall: Vec, refs) -> No
     piston = _sum(f for _, f, _, _ in loads)
     out.efforts["piston_effort"] = piston[0] * u[0] + piston[1] * u[1]
     out.efforts["wall_thrust"] = abs(-wall[0] * sh.guide[1] + wall[1] * sh.guide[0])
-    said = c.draw("force:say:piston", "mark", c.points[sh.b], phrase=phrase(
+    said = c.draw("force:say:piston", "mark", refs[0], panel=Panel.FORCE, phrase=phrase(
         "force.piston", j=sh.j, effort=f"{out.efforts['piston_effort']:.6g} N",
         thrust=f"{out.efforts['wall_thrust']:.6g} N"))
     out.refs["piston_effort"] = out.refs["wall_thrust"] = (*refs, said)
@@ -556,7 +559,7 @@ def _crank(c, draw, out: Forces, d: int, i: int, f_id: Vec, o: str, a: str, at, 
         chain.append((chain[-1][0] + f[0] * out.scale, chain[-1][1] + f[1] * out.scale))
     right = max(x for x, _ in drawn) - min(x for x, _ in chain) + 0.03
     start = c.give("force:S2", g.Point(right, 0.0), label="", panel=Panel.FORCE)
-    c.draw("force:say:driver", "mark", start, panel=Panel.FORCE,
+    c.draw("force:say:driver", "mark", start, panel=Panel.FORCE, label=f"link {d}",
            phrase=phrase("force.driver", d=d, i=i, o=o))
     tip = draw.loads(d, start, known[d])
     pulled = tip
@@ -568,8 +571,10 @@ def _crank(c, draw, out: Forces, d: int, i: int, f_id: Vec, o: str, a: str, at, 
     arm = (at[a][0] - at[o][0], at[a][1] - at[o][1])
     torque = -(_moment(at[o], known[d]) + arm[0] * f_id[1] - arm[1] * f_id[0])
     out.torque = torque
+    arm_size = math.hypot(*arm)
     said = c.draw("force:say:torque", "mark", start, panel=Panel.FORCE, phrase=phrase(
-        "force.torque", d=d, o=o, torque=f"{torque:.6g} N·m"))
+        "force.torque", d=d, o=o,
+        torque=f"{quiet(torque, 0.08 / out.scale * arm_size):.6g} N·m"))
     out.refs[f"T{d}"] = (closing, said)
 
 
@@ -580,26 +585,36 @@ def _crank_effort(c, draw, out: Forces, tail: Ref, head: Ref, name: str, o: str,
     the crank circle's tangent at the pin; they cross where the radial part ends and the
     tangential part, the crank effort, begins. Its moment about the pivot, effort × crank,
     is the turning moment."""
-    crank = c.draw("force:line:crank", "line_through", c.points[o], c.points[a],
-                   kind=Kind.LINE)
-    tangent = c.draw("force:line:tangent", "perpendicular_through", c.points[a], crank,
-                     kind=Kind.LINE)
-    radial = c.draw("force:n:radial", "parallel_through", tail, crank, kind=Kind.LINE,
-                    panel=Panel.FORCE)
-    square = c.draw("force:n:tangential", "parallel_through", head, tangent, kind=Kind.LINE,
-                    panel=Panel.FORCE)
-    cross = c.draw("force:X:effort", "intersect_lines", radial, square, label="x",
-                   panel=Panel.FORCE)
-    part = draw.join("effort", cross, head, label="F_T")
     t = crank_tangent(at[o], at[a])
-    pushed = draw.read(part)
+    (tx, ty), (hx, hy) = c.output(tail).xy, c.output(head).xy
+    push = math.hypot(hx - tx, hy - ty)
+    if abs((hx - tx) * t[1] - (hy - ty) * t[0]) <= NOISE * push:
+        # Square to the crank already: all of it is crank effort, nothing to split off.
+        cross, part, key = head, None, "force.effort_square"
+        pushed = ((hx - tx) / draw.scale, (hy - ty) / draw.scale)
+    else:
+        crank = c.draw("force:line:crank", "line_through", c.points[o], c.points[a],
+                       kind=Kind.LINE, panel=Panel.FORCE)
+        tangent = c.draw("force:line:tangent", "perpendicular_through", c.points[a], crank,
+                         kind=Kind.LINE, panel=Panel.FORCE)
+        radial = c.draw("force:n:radial", "parallel_through", tail, crank, kind=Kind.LINE,
+                        panel=Panel.FORCE)
+        square = c.draw("force:n:tangential", "parallel_through", head, tangent,
+                        kind=Kind.LINE, panel=Panel.FORCE)
+        cross = c.draw("force:X:effort", "intersect_lines", radial, square, label="t",
+                       panel=Panel.FORCE)
+        draw.join("radial", tail, cross, label="F_R")
+        part = draw.join("effort", cross, head, label="F_T")
+        pushed, key = draw.read(part), "force.effort"
     effort = pushed[0] * t[0] + pushed[1] * t[1]
     r = math.dist(at[o], at[a])
     out.efforts["crank_effort"], out.efforts["turning_moment"] = effort, effort * r
-    said = c.draw("force:say:effort", "mark", c.points[a], phrase=phrase(
-        "force.effort", name=name, o=o, a=a, effort=f"{effort:.6g} N",
-        moment=f"{effort * r:.6g} N·m"))
-    out.refs["crank_effort"] = out.refs["turning_moment"] = (cross, part, said)
+    loads = 0.08 / draw.scale                    # the largest load, to the rounding of it
+    said = c.draw("force:say:effort", "mark", cross, panel=Panel.FORCE, phrase=phrase(
+        key, name=name, o=o, a=a, effort=f"{quiet(effort, loads):.6g} N",
+        moment=f"{quiet(effort * r, loads * r):.6g} N·m"))
+    out.refs["crank_effort"] = out.refs["turning_moment"] = tuple(
+        r for r in (cross, part, said) if r is not None)
 
 
 @dataclass(frozen=True)
@@ -674,14 +689,14 @@ def _slotted(c, draw, out: Forces, lv: _Lever, at, known, slip=None):
     Returns the block's link, its pull on the crank at A, and the crank's pivot and pin.
     """
     slot = c.draw("force:line:slot", "line_through", c.points[lv.p], c.points[lv.a],
-                  kind=Kind.LINE)
+                  kind=Kind.LINE, panel=Panel.FORCE)
     u = _unit((at[lv.a][0] - at[lv.p][0], at[lv.a][1] - at[lv.p][1]))
     n = (-u[1], u[0])                                    # square to the slot
     f_rl = (0.0, 0.0)
     origin = c.give("force:S", g.Point(0.0, 0.0), label="", panel=Panel.FORCE)
     refs: list[str] = []
     if lv.r is not None:
-        c.draw("force:say:ram", "mark", origin, panel=Panel.FORCE,
+        c.draw("force:say:ram", "mark", origin, panel=Panel.FORCE, label=f"link {lv.r}",
                phrase=phrase("force.ram", r=lv.r, l=lv.l))
         tip = draw.loads(lv.r, origin, known[lv.r])
         if slip is None:
@@ -728,7 +743,8 @@ def _slotted(c, draw, out: Forces, lv: _Lever, at, known, slip=None):
                                                                           "force:h:"))]
               + [0.0])
     start_b = c.give("force:Sb", g.Point(0.0, low - 0.03), label="", panel=Panel.FORCE)
-    c.draw("force:say:block", "mark", start_b, panel=Panel.FORCE, phrase=phrase(
+    c.draw("force:say:block", "mark", start_b, panel=Panel.FORCE, label=f"link {lv.b}",
+           phrase=phrase(
         "force.block", b=lv.b, l=lv.l, p=lv.p, nu=f"{abs(nu):.4g} N"))
     tip = draw.loads(lv.b, start_b, known[lv.b])
     tip = draw.vector(f"{lv.l}on{lv.b}", tip, n_lb, label=f"F_{lv.l}{lv.b}")
@@ -741,7 +757,7 @@ def _slotted(c, draw, out: Forces, lv: _Lever, at, known, slip=None):
               and isinstance(s.output, g.Point) and not s.id.startswith(("force:o:",
                                                                          "force:h:")))
     start_l = c.give("force:Sl", g.Point(0.0, low - 0.03), label="", panel=Panel.FORCE)
-    c.draw("force:say:lever", "mark", start_l, panel=Panel.FORCE,
+    c.draw("force:say:lever", "mark", start_l, panel=Panel.FORCE, label=f"link {lv.l}",
            phrase=phrase("force.lever", l=lv.l, p=lv.p))
     tip = draw.loads(lv.l, start_l, known[lv.l])
     tip = draw.vector(f"{lv.b}on{lv.l}", tip, (-n_lb[0], -n_lb[1]), label=f"F_{lv.b}{lv.l}")
@@ -814,7 +830,10 @@ class _Drafter:
                            kind=Kind.LINE,
                            panel=Panel.FORCE, phrase=phrase(
                                "force.leaning", what=what, phi=_friction_angle(slip),
-                               side="its normal's side" if side > 0 else "the far side"))
+                               side="the guide's left (a quarter turn counter-clockwise "
+                                    "from its direction)" if side > 0 else
+                                    "the guide's right (a quarter turn clockwise from its "
+                                    "direction)"))
 
     def close(self, tip: Ref, far: Ref, start: Ref, near: Ref, said, far_name: str,
               near_name: str) -> tuple[Ref, Ref, Ref]:
@@ -921,13 +940,19 @@ def _inertia(work, loads: Loads, at) -> dict[int, tuple[Vec, float]]:
             d = c.output(across).direction
             want = (-r[1] * alpha, r[0] * alpha)             # α × r
             sign = 1.0 if d[0] * want[0] + d[1] * want[1] >= 0 else -1.0
+            # Said to the rounding of the accelerations drawn: a rate of 1e-18 is a zero.
+            beside = max(omega * omega * size, abs(alpha) * size,
+                         math.hypot(*ap.between(ap.pole, k_tip)))
+            alpha_said = alpha if quiet(alpha * size, beside) else 0.0
             image = c.draw(f"force:g{m.link}", "lay_off", n_end, across,
                            length=sign * abs(alpha) * size * ap.scale, label=f"g{m.link}′",
                            panel=Panel.ACCELERATION, phrase=phrase(
-                               "force.image", link=m.link, k=ref,
+                               "force.image", link=m.link,
+                               k=ref, start="o_a" if 1 in mech.links_at(ref)
+                               else f"{ref[0].lower()}{ref[1:]}′",
                                n=f"{omega * omega * size:.4g} m/s²",
-                               t=f"{abs(alpha) * size:.4g} m/s²",
-                               h=_offset(m, alpha, ap.between(ap.pole, n_end),
+                               t=f"{abs(alpha_said) * size:.4g} m/s²",
+                               h=_offset(m, alpha_said, ap.between(ap.pole, n_end),
                                          (-r[1] * alpha, r[0] * alpha))))
         a_g = ap.between(ap.pole, image)
         out[m.link] = ((-m.mass * a_g[0], -m.mass * a_g[1]), -m.inertia * alpha)

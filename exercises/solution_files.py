@@ -63,7 +63,8 @@ class SolutionFigure:
     shown: Slice | None
     """What the figure shows of the space diagram's construction, narrated in steps.md."""
     panels: tuple[tuple[str, Panel, Slice], ...] = ()
-    """For a worked page: each polygon's heading, panel and slice, narrated in turn."""
+    """For a worked page: each polygon's heading, panel and slice, narrated in turn (a
+    fourth item marks a part the figure does not draw)."""
     owner: Solution | None = None
     """The position the figure belongs to (None: the mechanism as a whole)."""
 
@@ -293,8 +294,8 @@ def _figure(sol: Solution, spec: FigureSpec, answers) -> _Sketch:
         shown = _shown(c, answers, asm.position_steps)
         return _Sketch(spec.stem, spec.heading, lambda: on_sheet(draw_force_figure(
             c, forces.scale, f"{name}: force polygons{where}"), sheet), None,
-            (("Inertia loads read off the acceleration polygon", Panel.ACCELERATION, shown),
-             ("The force polygons", Panel.FORCE, shown)))
+            (("Inertia loads read off the acceleration polygon", Panel.ACCELERATION, shown,
+              "not drawn"), ("The force polygons", Panel.FORCE, shown)))
     if spec.kind == "loads":
         from ..constructions.force_polygons import drawn_forces
         from ..graphics.loads_figure import draw_loads
@@ -521,11 +522,13 @@ def _steps_markdown(sol: Solution, figures: list[SolutionFigure], *, heading: bo
     for f in figures:
         parts = [(f.heading, Panel.SPACE, f.shown)] if f.shown else []
         parts += list(f.panels)
-        for title, panel, shown in parts:
+        for title, panel, shown, *elsewhere in parts:
             numbered = list(shown.numbered(panel))
             if not numbered:                 # a panel the exercise draws nothing in
                 continue
-            lines += [f"## {title} (`{f.stem}.svg`)", ""]
+            # A part drawn in no figure of its own (the inertia loads' images on the
+            # acceleration polygon) names no file.
+            lines += [f"## {title}" if elsewhere else f"## {title} (`{f.stem}.svg`)", ""]
             lines += [f"{number}. {narrate(step, lang)}" for number, step in numbered]
             lines.append("")
     for note in sol.notes:

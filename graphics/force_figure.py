@@ -15,7 +15,7 @@ from .labels import LabelPlacer
 from .scales import draw_caption, nice_per_cm
 from .symbols import draw_arrow
 
-__all__ = ["draw_force_figure", "typeset_force"]
+__all__ = ["draw_force_figure", "in_lane", "runs_along", "typeset_force"]
 
 _ROOM = (240.0, 150.0)   # paper (mm) the polygons are fitted to: across, up
 
@@ -50,44 +50,108 @@ def draw_force_figure(c: Construction, scale: float, title: str,
             u = (d[0] / n, d[1] / n)
             fig.add(Path(((start[0] - 5.0 * u[0], start[1] - 5.0 * u[1]),
                           (cross[0] + 5.0 * u[0], cross[1] + 5.0 * u[1])), "construction"))
-    named = []
+    named, drawn = [], []
     for s in joins:
         a, b = paper(s.output.start.xy), paper(s.output.end.xy)
         if math.dist(a, b) < 0.3:
             continue
+        twin = next((k for k, (p, q, _) in enumerate(named)
+                     if math.dist(p, a) < _SAME and math.dist(q, b) < _SAME), None)
+        if twin is not None and s.label:
+            # The same arrow to the pen's precision (F_T when F_32 is all crank effort):
+            # drawn once and named "F_32 = F_T".
+            p, q, labels = named[twin]
+            named[twin] = (p, q, labels + (s.label,))
+            continue
+        a, b = in_lane(a, b, drawn)
+        drawn.append((a, b))
         draw_arrow(fig, a, b, "vector_result" if s.role is Role.RESULT else "vector")
-        if s.label and math.dist(a, b) > 4.0:      # a shorter one is named in the steps
-            named.append((a, b, s.label))
-    crosses = [paper(s.output.xy) for s in steps if s.verb == "intersect_lines"]
-    for at in crosses:
+        if s.label and math.dist(a, b) > 1.5:      # a shorter one is named in the steps
+            named.append((a, b, (s.label,)))
+    crosses = [(paper(s.output.xy), s.label or "x") for s in steps
+               if s.verb == "intersect_lines"]
+    for at, _ in crosses:
         fig.add(Circle(at, 0.7, "dot"))
-    _name_forces(fig, named, crosses)
-    draw_caption(fig, title, ["every load head to tail; a polygon closed by two lines "
+    titles = [(paper(c.output(s.inputs[0]).xy), s.label) for s in steps
+              if s.verb == "mark" and s.label]
+    _name_forces(fig, named, crosses, titles)
+    draw_caption(fig, title, ["each link's loads head to tail; a polygon closed by two lines "
                               "crossing at x, or by its heavy closing side"],
                  per_cm=per_cm, unit="N", legend=(("vector", "a force"),
                                                   ("vector_result", "a closing side"),
-                                                  ("construction", "a closing line")),
+                                                  ("construction", "a line of known "
+                                                                   "direction")),
                  notes=notes, scale_name="Force scale")
     return fig
 
 
-def _name_forces(fig: Figure, named, crosses) -> None:
-    """Name each force beside its own shaft, the shortest first (they have least room), and
-    each crossing x, every name clear of every line, head and other name."""
+_SAME = 0.8
+"""Paper (mm) within which two arrows' ends coincide: one arrow, two names."""
+
+_LANE = 2.0
+"""Paper (mm) an arrow is moved aside when it would run along one drawn before it."""
+
+
+def in_lane(a, b, drawn) -> tuple[tuple[float, float], tuple[float, float]]:
+    """The arrow ``a`` → ``b``, moved :data:`_LANE` to its left (further, if need be) while
+    its shaft would lie along one of the ``drawn`` segments for more than a millimetre, as
+    two equal and opposite forces or a force and its own part are drawn in textbooks."""
+    n = math.dist(a, b)
+    if n == 0.0:
+        return a, b
+    u = ((b[0] - a[0]) / n, (b[1] - a[1]) / n)
+    left = (u[1], -u[0])
+    for _ in range(4):
+        if not any(runs_along(a, b, p, q) for p, q in drawn):
+            break
+        a = (a[0] + _LANE * left[0], a[1] + _LANE * left[1])
+        b = (b[0] + _LANE * left[0], b[1] + _LANE * left[1])
+    return a, b
+
+
+def runs_along(a, b, p, q, within: float = 0.8) -> bool:
+    """Whether the arrow a–b lies on segment p–q (both its ends within ``within`` mm of the
+    segment's line) for more than a millimetre of it: drawn there, it would hide."""
+    n = math.dist(p, q)
+    if n == 0.0:
+        return False
+    u = ((q[0] - p[0]) / n, (q[1] - p[1]) / n)
+    off = [(x[0] - p[0]) * u[1] - (x[1] - p[1]) * u[0] for x in (a, b)]
+    if max(abs(o) for o in off) > within:
+        return False
+    t = sorted((x[0] - p[0]) * u[0] + (x[1] - p[1]) * u[1] for x in (a, b))
+    return min(t[1], n) - max(t[0], 0.0) > 1.0
+
+
+def _name_forces(fig: Figure, named, crosses, titles=()) -> None:
+    """Name each force beside its own shaft, the shortest first (they have least room), each
+    crossing by its letter, and each polygon by its links at its start, every name clear of
+    every line, head and other name."""
     placer = LabelPlacer(fig)
     placer.block_drawn()
     placer.name_vectors((a, b) for a, b, _ in named)
-    placer.name_points(crosses)
+    placer.name_points([at for at, _ in crosses])
+    for at, title in titles:
+        placer.place(title, at, size=3.0, italic=False, prefer=(3 * math.pi / 4, math.pi),
+                     gap=3.0)
     for a, b, label in sorted(named, key=lambda v: math.dist(v[0], v[1])):
         n = math.dist(a, b)
         normal = math.atan2((b[0] - a[0]) / n, (b[1] - a[1]) / n)   # square to it, on paper
         anchors = [(a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])) for t in _ALONG]
-        text, sub, tail = typeset_force(label)
+        text, sub, tail = typeset_force(label[0])
+        also = tuple(typeset_force(more)[:2] for more in label[1:])
+        # Beside an arrow in the next lane, a name stands on the far side from it.
+        partner = next((p for p, q, _ in named if (p, q) != (a, b)
+                        and runs_along(a, b, p, q, within=_LANE * 1.5)), None)
+        sides = (normal, normal + math.pi)
+        if partner is not None:
+            away = (a[0] - partner[0]) * math.cos(normal) - (a[1] - partner[1]) * \
+                math.sin(normal)
+            sides = (normal,) if away > 0 else (normal + math.pi,)
         placer.place_numbered(text, anchors, [], sub=sub, tail=tail, size=2.8, gap=1.0,
-                              prefer=(normal, normal + math.pi), spread=math.pi / 3,
-                              own=(a, b))
-    for at in crosses:
-        placer.place("x", at, size=3.0, prefer=-math.pi / 4, own=at)
+                              prefer=sides, spread=math.pi / 3, own=(a, b), also=also)
+    for at, letter in crosses:
+        placer.place(letter, at, size=3.0, prefer=-math.pi / 4, own=at)
 
 
 _ALONG = (0.5, 0.35, 0.65, 0.2, 0.8)
@@ -107,7 +171,7 @@ def typeset_force(name: str) -> tuple[str, str, str]:
     body = name[:len(name) - len(tail)]
     if body[:2] in ("F_", "T_"):
         return body[0], body[2:], tail
-    if body[:3] == "Mf_":                   # a pin's friction couple: M with fA below
+    if body[:3] == "Mf_":                   # a pin's friction couple, of 2 on 3: M with f23
         return "M", "f" + body[3:], tail
     if body[:2] in ("Fi", "Mi") and body[2:].isdigit():
         return body[0], body[1:], tail

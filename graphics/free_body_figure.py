@@ -13,8 +13,9 @@ import math
 
 from shapely.geometry import Point as SPoint
 
+from ..constructions.checks import NOISE
 from .figure import Figure, Path, Text
-from .force_figure import typeset_force
+from .force_figure import in_lane, runs_along, typeset_force
 from .labels import LabelPlacer
 from .scales import draw_caption, nice_per_cm
 from .symbols import draw_arrow, draw_turning_arrow
@@ -59,6 +60,9 @@ def draw_free_bodies(mech, at: dict, bodies: dict, title: str, unit: str) -> Fig
     return fig
 
 
+_FARTHER = (10.0, 13.0, 17.0)
+"""Rings (in gaps) a name may stand out to when none near what it names is clear."""
+
 _ROW = 215.0
 """The widest a row of bodies runs (mm): a landscape A4's drawing width."""
 
@@ -92,16 +96,23 @@ def _draw_body(mech, link: int, at: dict, forces: list, k_space: float, k_force:
         fig.add(Path(((px - 3, py - 2), (px + 3, py - 2), (px + 3, py + 2), (px - 3, py + 2)),
                      "block", closed=True))
     arrows, turns = [], []
+    outline = [(p, q) for p, q in zip(fig.items[0].points, fig.items[0].points[1:])]
+    reach = max([math.dist(p, q) for p in pts for q in pts] + [1e-9])
     for where, f, couple, name in forces:
         tail = paper(where)
         size = math.hypot(*f)
         if size > _SMALL * biggest:
             head = (tail[0] + f[0] * k_force, tail[1] - f[1] * k_force)
+            if any(runs_along(tail, head, p, q, within=1.0) for p, q in outline):
+                # Along the link it acts on (a two-force member's pull): drawn pushing at
+                # its point from outside, clear of the link.
+                tail, head = (2 * tail[0] - head[0], 2 * tail[1] - head[1]), tail
+            tail, head = in_lane(tail, head, [(a, b) for a, b, _, _ in arrows])
             draw_arrow(fig, tail, head, "vector")
             arrows.append((tail, head, name, f"{typeset_force(name)[2]} = {size:.4g} N"))
-        elif size > 0:
+        elif size > NOISE * biggest:             # a zero's rounding is no force at all
             small.append(f"{name.replace('_', '')} = {size:.3g} N on link {link}")
-        if abs(couple) > 1e-12 * max(biggest, 1.0):
+        if abs(couple) > NOISE * biggest * reach:
             # Couples at one point turn on circles one inside the other.
             r = 5.0 + 2.5 * sum(math.dist(tail, t[0]) < 0.5 for t in turns)
             turns.append((tail, draw_turning_arrow(fig, tail, r, math.radians(30),
@@ -111,20 +122,23 @@ def _draw_body(mech, link: int, at: dict, forces: list, k_space: float, k_force:
     placer.block_drawn()
     for centre, _, _, _, r in turns:
         placer.block(SPoint(centre).buffer(r + 0.6))
-    placer.name_points([paper(p) for p in pts])
+    placer.name_points([paper(p) for p in pts] + [mid for _, mid, _, _, _ in turns])
     placer.name_vectors((a, b) for a, b, _, _ in arrows)
     for n, p in zip(names, pts):
-        placer.place(n, paper(p), size=2.6, prefer=3 * math.pi / 4, own=paper(p))
+        placer.place(n, paper(p), size=2.6, prefer=3 * math.pi / 4, own=paper(p),
+                     rings=(1.0, 1.6, 2.3, 3.2, 4.2))
     for tail, head, name, said in arrows:
         text, sub, _ = typeset_force(name)
         ahead = math.atan2(tail[1] - head[1], head[0] - tail[0])   # the arrow's paper angle
         placer.place_numbered(text, head, [], sub=sub, tail=said, size=2.6, gap=1.0,
-                              prefer=ahead, spread=math.pi / 2, own=(tail, head))
+                              prefer=ahead, spread=math.pi / 2, own=(tail, head),
+                              farther=_FARTHER)
     for centre, mid, name, said, _ in turns:
         text, sub, tail_text = typeset_force(name)
         out = math.atan2(centre[1] - mid[1], mid[0] - centre[0])
         placer.place_numbered(text, mid, [], sub=sub, tail=f"{tail_text}{said}", size=2.6,
-                              gap=1.0, prefer=out, spread=math.pi / 2)
+                              gap=1.0, prefer=out, spread=math.pi / 2, own=mid,
+                              farther=_FARTHER)
     x0, _, x1, y1 = fig.bounds()
     fig.add(Text(((x0 + x1) / 2, y1 + 6.0), f"link {link}", 3.0, "middle", False, "bold"))
     return fig

@@ -16,7 +16,7 @@ from shapely.geometry import Point as SPoint
 
 from ..constructions.record import Slice
 from .figure import Figure, View
-from .force_figure import typeset_force
+from .force_figure import in_lane, typeset_force
 from .labels import LabelPlacer
 from .scales import nice_per_cm
 from .scene import draw_scene
@@ -35,6 +35,10 @@ _FARTHER = (10.0, 13.0, 17.0, 22.0)
 """Rings (in gaps) a load's name may stand out to when none near its arrow is clear: on a
 crowded joint a name a little off beats one over another."""
 
+_SLIGHT = 1e-3
+"""A couple under this share of the largest force times the mechanism's size would turn
+nothing a reader can see: it is listed, not drawn as large as the real ones."""
+
 _LEAST = 2.5
 """A force drawn shorter than this (paper mm) shows nothing: it is listed instead."""
 
@@ -45,7 +49,12 @@ def draw_loads(shown: Slice, loads: dict, *, title: str, per_cm: float | None = 
     [(where m, force N, couple N·m, name)]) drawn on it."""
     biggest = max([math.hypot(*f) for ls in loads.values() for _, f, _, _ in ls] + [1e-300])
 
+    c = shown.construction
+    links = [(c.point(a).xy, c.point(b).xy) for k in c.mechanism.links if k.number != 1
+             for a, b in zip(k.names, k.names[1:])]
+
     def overlay(view: View, fig: Figure, placer: LabelPlacer):
+        taken = [(view(a), view(b)) for a, b in links]
         pts = [view(w) for ls in loads.values() for w, _, _, _ in ls]
         xs, ys = [p[0] for p in pts], [p[1] for p in pts]
         extent = max(max(xs) - min(xs), max(ys) - min(ys), 40.0)
@@ -55,18 +64,24 @@ def draw_loads(shown: Slice, loads: dict, *, title: str, per_cm: float | None = 
         for link, ls in sorted(loads.items()):
             inertia = {name: (w, f, c) for w, f, c, name in ls if name.startswith("Fi")}
             for where, f, couple, name in ls:
-                tail, size = view(where), math.hypot(*f)
+                point, size = view(where), math.hypot(*f)
                 if size * k >= _LEAST:
-                    head = (tail[0] + f[0] * k, tail[1] - f[1] * k)
+                    head = (point[0] + f[0] * k, point[1] - f[1] * k)
+                    tail, head = in_lane(point, head, taken)     # beside a link, not on it
+                    taken.append((tail, head))
                     draw_arrow(fig, tail, head, "vector")
                     arrows.append((tail, head, name, f" = {size:.4g} N"))
                 elif size > _NOISE * biggest:
                     small.append(f"{name} = {size:.3g} N on link {link}")
-                if abs(couple) > _NOISE * biggest * extent / view.scale:
-                    r = 4.5 + 2.5 * sum(math.dist(tail, t[0]) < 0.5 for t in turns)
-                    mid = draw_turning_arrow(fig, tail, r, math.radians(30),
+                moment = biggest * extent / view.scale    # the largest force across it all
+                if _NOISE * moment < abs(couple) <= _SLIGHT * moment:
+                    small.append(f"{name.replace('Fi', 'Mi')} = {abs(couple):.3g} N·m on link "
+                                 f"{link}")
+                elif abs(couple) > _SLIGHT * moment:
+                    r = 4.5 + 2.5 * sum(math.dist(point, t[0]) < 0.5 for t in turns)
+                    mid = draw_turning_arrow(fig, point, r, math.radians(30),
                                              math.copysign(math.radians(240), couple))
-                    turns.append((tail, mid, name.replace("Fi", "Mi"),
+                    turns.append((point, mid, name.replace("Fi", "Mi"),
                                   f" = {abs(couple):.4g} N·m", r))
             for name, (where, f, couple) in inertia.items():
                 offset = _offset(f, couple)
@@ -84,6 +99,7 @@ def draw_loads(shown: Slice, loads: dict, *, title: str, per_cm: float | None = 
         for centre, _, _, _, r in turns:
             placer.block(SPoint(centre).buffer(r + 0.6))
         placer.name_vectors((a, b) for a, b, _, _ in arrows)
+        placer.name_points([mid for _, mid, _, _, _ in turns])   # each couple's name by its arc
         return lambda: _name(placer, arrows, turns, small, force_cm)
 
     return draw_scene(shown, title=title, per_cm=per_cm, overlay=overlay)
@@ -103,7 +119,8 @@ def _name(placer: LabelPlacer, arrows, turns, small, force_cm: float):
         text, sub, tail_text = typeset_force(name)
         out = math.atan2(centre[1] - mid[1], mid[0] - centre[0])
         placer.place_numbered(text, mid, [], sub=sub, tail=tail_text + said, size=2.8,
-                              gap=1.0, prefer=out, spread=math.pi / 2, farther=_FARTHER)
+                              gap=1.0, prefer=out, spread=math.pi / 2, farther=_FARTHER,
+                              own=mid)
     placer.page = page
     legend = [("vector", "a load")]
     if any(name.endswith("′") for _, _, name, _ in arrows):

@@ -350,7 +350,7 @@ def test_a_two_force_rod_runs_tangent_to_both_friction_circles(deg):
     force = next(f for w, f, m, name in rod if name == "F_23")
     a, b = sol.work.kinematics.points["A"], sol.work.kinematics.points["P"]
     # The rod's loads at A: its pin force and the friction couple there, as one line.
-    at_a = math.fsum(m for w, f, m, name in rod if name == "Mf_A")
+    at_a = math.fsum(m for w, f, m, name in rod if name == "Mf_23")
     size = math.hypot(*force)
     assert abs(at_a) == pytest.approx(0.005 * size, rel=1e-12)
     # The line's foot off A, to the side whose moment about A is the couple.

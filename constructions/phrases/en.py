@@ -198,7 +198,7 @@ PHRASES: dict[str, str] = {
     "balance.engine": "The {kind} polygon: lay off each cylinder's vector along its crank at "
                       "{order}, head to tail.",
     "force.centre": "Mark link {link}'s centre of mass G{link} and join it to {k}.",
-    "force.image": "On the acceleration polygon, from the tip of {k} lay off the normal part "
+    "force.image": "On the acceleration polygon, from {start} lay off the normal part "
                    "ω²·{k}G{link} = {n} toward {k}, then the tangential part α·{k}G{link} = "
                    "{t} square to it: g{link}′, the image of G{link}. Link {link}'s inertia "
                    "force is −m·a_G, a_G read from o_a to g{link}′; its inertia couple −I·α "
@@ -214,9 +214,9 @@ PHRASES: dict[str, str] = {
                    "loads and that push; the closing side is the crank's force on the block.",
     "force.lever": "Link {l}'s polygon: its loads, the block's push and the ram's, closed by "
                    "the frame's force at {p}.",
-    "force.piston": "The piston {j}'s effort: its loads along the line of stroke, toward the "
-                    "crank, F_P = {effort}; the wall's thrust on it, the guide's push the "
-                    "polygon closed on, F_N = {thrust}.",
+    "force.piston": "The piston {j}'s effort, its loads along the line of stroke toward the "
+                    "crank: F_P = {effort}. The wall's thrust on it, the part of the guide's "
+                    "push square to the stroke: F_N = {thrust}.",
     "force.effort": "Split {name}, the push on the crank pin {a}: through its tail a line "
                     "along the crank {o}{a}, through its head a line square to it; where they "
                     "cross the radial part ends and the tangential part F_T begins. The crank "
@@ -236,8 +236,8 @@ PHRASES: dict[str, str] = {
                          "link {j}'s push, through its start a parallel to {a}X; where they "
                          "cross gives both forces.",
     "force.leaning": "{what} pushes with friction: its push leans φ = atan μ = {phi} off "
-                     "the normal, against the sliding, from {side} (the side on which the "
-                     "polygon closes with the push coming from that side).",
+                     "the normal, against the sliding. It pushes from {side}: assumed "
+                     "there, the polygon closes with the push on that side.",
     "force.leaning_block": "The block {j} carries no load: its guide's push and its pin {b}'s "
                            "run along one line through {b}, leaned φ = {phi} off the normal to "
                            "the guide, against the sliding.",
@@ -247,6 +247,9 @@ PHRASES: dict[str, str] = {
                      "turning. |F| is found by trial, the polygons drawn again with the last "
                      "round's couples until the forces settle ({rounds} rounds); the last "
                      "round is drawn here.",
+    "force.effort_square": "{name}, the push on the crank pin {a}, stands square to the crank "
+                           "{o}{a}: all of it is crank effort, F_T = {effort} (CCW +), and "
+                           "the turning moment F_T·{o}{a} = {moment}.",
     "force.torque": "Link {d}'s moments about {o}: the driving torque T{d} = {torque}.",
     "force.dyad": "The force polygon of links {i} and {j} together: lay off every known load "
                   "on them head to tail (weights, inertia forces, external forces), at the "
