@@ -540,6 +540,80 @@ def bench(quick, out_dir):
     click.echo(f"wrote {path} and {len(plots)} plots in {out / 'report'}/")
 
 
+@cli.command()
+@click.argument("source", metavar="EXERCISE")
+@click.argument("drawing", metavar="DRAWING", type=click.Path(exists=True))
+@click.option("-o", "--out", "out_dir", type=click.Path(file_okay=False), required=True,
+              metavar="DIR", help="Folder for grade.json and grade.svg (a class: a folder "
+                                  "each, and grades.csv).")
+@click.option("--position", type=click.IntRange(min=1), default=1, show_default=True,
+              help="Which of the exercise's positions the drawing is of ([ask] at = [...]).")
+@click.option("--workers", type=click.IntRange(min=1), default=1, show_default=True,
+              help="Processes to grade a class on.")
+@_fails_cleanly
+def grade(source, drawing, out_dir, position, workers):
+    """Grade a student's drawing against tarsim's own solution, item by item.
+
+    DRAWING is an SVG as Inkscape, GeoGebra, LibreOffice Draw or a CAD program
+    exports it, with its polygons' poles and tips labelled as the course
+    writes them (o or o_v and a, b, c4 for velocities; o′ or o_a and a′, b′
+    for accelerations), or a JSON or CSV table of answers ({"V_B": 0.233}),
+    or a folder of them: a whole class. The drawing may be turned, mirrored
+    and at its own scale; the pole and the input's tip fix all three, unless
+    a scale is written on it ("1 cm = 0.5 m/s"), which is then held to.
+
+    Each tip is held to a pen of 0.5 mm and a set square of 0.5° over the
+    conditioning of its construction, and judged correct, wrong magnitude,
+    wrong direction, wrong sense (a reversed Coriolis component is named),
+    missing or extra. The score is the share correct.
+
+    \b
+    Writes into DIR:
+      grade.json     the score and each item: verdict, expected, found,
+                     tolerance, advice
+      grade.svg      the drawing in grey, tarsim's polygons over it in blue,
+                     each wrong tip ringed in red
+    For a folder: a folder of those for each drawing, and grades.csv (a row
+    a drawing; one that cannot be read says why and the rest are graded).
+
+    \b
+    Example:
+      tarsim grade four-bar ali.svg -o graded/ali
+      tarsim grade crank-shaper answers.json -o graded/answers
+      tarsim grade four-bar class/ -o graded --workers 2
+    """
+    from .catalog import load
+    from .grading.batch import drawings_in, folder_for, grade_many
+    from .grading.grade import grade as grade_one
+    from .grading.report import class_csv, grade_files, grade_table
+    from ..graphics.export import write_folder
+
+    path = Path(drawing)
+    if not path.is_dir():
+        g = grade_one(load(source), path, position - 1)
+        click.echo(grade_table(g))
+        write_folder(grade_files(g), out_dir)
+        click.echo(f"wrote grade.json and grade.svg to {out_dir}/"
+                   if g.overlay is not None else f"wrote grade.json to {out_dir}/")
+        return
+    load(source)                               # a bad exercise is one line, before the batch
+    found = drawings_in(path)
+    if not found:
+        raise click.ClickException(f"{drawing}: no .svg, .json or .csv drawings in it")
+    rows = []
+    with click.progressbar(length=len(found), label=f"grading {len(found)} drawings",
+                           file=sys.stderr) as bar:
+        for name, g in grade_many(source, found, position - 1, workers,
+                                  done=lambda: bar.update(1)):
+            rows.append((Path(name).name, g))
+            if not isinstance(g, str):
+                write_folder(grade_files(g), Path(out_dir) / folder_for(Path(name)))
+    write_folder({"grades.csv": class_csv(rows)}, out_dir)
+    bad = sum(isinstance(g, str) for _, g in rows)
+    click.echo(f"graded {len(rows) - bad} of {len(rows)} drawings into {out_dir}/"
+               + (f"; {bad} could not be read (see grades.csv)" if bad else ""))
+
+
 @cli.command(name="list")
 def list_():
     """List the bundled examples: their ids, where they come from, what they ask.

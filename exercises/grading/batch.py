@@ -1,0 +1,67 @@
+"""A whole class's drawings graded at once, on several processes if asked.
+
+One unreadable drawing does not stop the batch: its row in grades.csv says why, and the
+others are graded. Each student's files go into a folder named for the drawing, made safe:
+whatever a file's name says, nothing is written outside the chosen folder.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Callable, Iterator
+from concurrent.futures import ProcessPoolExecutor
+from pathlib import Path
+
+from ...constructions.errors import TarsimError
+from .grade import Grade, grade
+
+__all__ = ["drawings_in", "grade_many", "folder_for", "GRADABLE"]
+
+GRADABLE = (".svg", ".json", ".csv")
+"""The files a class folder is graded from."""
+
+
+def drawings_in(folder: Path) -> list[Path]:
+    """The gradable files directly in ``folder``, by name."""
+    return sorted(p for p in folder.iterdir() if p.is_file() and p.suffix.lower() in GRADABLE)
+
+
+def folder_for(drawing: Path) -> str:
+    """A student's folder name: the drawing's stem, with anything but letters, digits, dot,
+    dash and underscore made an underscore (never "." or "..").
+
+    >>> folder_for(Path("../x/ali rezaei (2).svg"))
+    'ali_rezaei__2_'
+    """
+    name = re.sub(r"[^A-Za-z0-9._-]", "_", drawing.stem).strip(".") or "drawing"
+    return name
+
+
+def _one(job: tuple[str, int, str]) -> tuple[str, Grade | str]:
+    """Grade one file; a file that cannot be graded gives its one-line reason."""
+    source, position, drawing = job
+    from ..catalog import load
+
+    try:
+        return drawing, grade(load(source), drawing, position)
+    except TarsimError as e:
+        return drawing, str(e)
+
+
+def grade_many(source: str, drawings: list[Path], position: int = 0, workers: int = 1,
+               done: Callable[[], None] | None = None) -> Iterator[tuple[str, Grade | str]]:
+    """Each drawing's grade (or why it could not be graded), in the drawings' order;
+    ``done`` is called as each finishes."""
+    jobs = [(source, position, str(d)) for d in drawings]
+    if workers <= 1:
+        for job in jobs:
+            result = _one(job)
+            if done:
+                done()
+            yield result
+        return
+    with ProcessPoolExecutor(max_workers=workers) as pool:
+        for result in pool.map(_one, jobs):
+            if done:
+                done()
+            yield result

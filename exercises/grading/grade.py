@@ -1,0 +1,92 @@
+"""The grade of one drawing or one table of answers: items, verdicts and a score.
+
+**Scheme.** Every item a drawing is graded on counts one point: each tip of a polygon the
+exercise asks about or the drawing labels (the input's own tip only when a scale is stated,
+since otherwise it sets the scale), and each number of an answers table. An item is
+``correct`` within its tolerance; ``wrong magnitude``, ``wrong direction``, ``wrong sense``,
+``missing`` or ``extra`` otherwise, and scores nothing. The score is the share correct, in
+per cent.
+"""
+
+from __future__ import annotations
+
+from dataclasses import asdict, dataclass, field
+from pathlib import Path
+
+from ...constructions.errors import InputError
+
+__all__ = ["Grade", "Item", "VERDICTS", "grade"]
+
+VERDICTS = ("correct", "wrong magnitude", "wrong direction", "wrong sense", "missing",
+            "extra")
+"""Every verdict an item may get."""
+
+
+@dataclass
+class Item:
+    """One graded item: its name, verdict, what was expected and found (paper mm for a
+    drawn tip, SI for a number), the tolerance it was held to, and a line of advice."""
+
+    name: str
+    verdict: str
+    expected: object = None
+    found: object = None
+    tolerance: float | None = None
+    message: str = ""
+
+
+@dataclass
+class Grade:
+    """A drawing's or a table's grade."""
+
+    exercise: str
+    source: str
+    items: list[Item] = field(default_factory=list)
+    notes: list[str] = field(default_factory=list)
+    overlay: object = None
+    """What the overlay draws (the drawing and the polygons expected), if a drawing."""
+
+    @property
+    def score(self) -> float:
+        """Per cent of the graded items correct (extras count against: they are items)."""
+        graded = [i for i in self.items]
+        if not graded:
+            return 0.0
+        return 100.0 * sum(i.verdict == "correct" for i in graded) / len(graded)
+
+    def as_json(self) -> dict:
+        """grade.json's content."""
+        return {"exercise": self.exercise, "drawing": self.source,
+                "score": round(self.score, 2),
+                "items": [asdict(i) for i in self.items], "notes": self.notes}
+
+
+def grade(exercise, source: str | Path, position: int = 0) -> Grade:
+    """Grade ``source`` (an SVG drawing, or a JSON or CSV table of answers) against the
+    solved ``exercise`` at its ``position``-th position.
+
+    Raises
+    ------
+    InputError
+        If the file cannot be read as any of them, in one line naming it.
+    """
+    from ..solution import solve_positions
+    from .answers import grade_answers
+    from .polygon import grade_polygons
+
+    path = Path(source)
+    positions = solve_positions(exercise)
+    if not positions:
+        raise InputError(f"{exercise.id}: it solves no position, so there is nothing drawn "
+                         "to grade against")
+    if not 0 <= position < len(positions):
+        raise InputError(f"{exercise.id} has {len(positions)} position(s); position "
+                         f"{position + 1} does not exist")
+    sol = positions[position]
+    suffix = path.suffix.lower()
+    if suffix in (".json", ".csv"):
+        return grade_answers(exercise.id, sol, path)
+    if suffix != ".svg":
+        raise InputError(f"{path.name}: a drawing is an .svg, and a table of answers a .json "
+                         "or .csv")
+    return grade_polygons(exercise.id, sol, path)

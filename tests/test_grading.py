@@ -1,0 +1,239 @@
+"""Grading drawings: tarsim's own polygons, written as Inkscape and GeoGebra write SVG and
+perturbed as students err, each get the verdict the error calls for; hostile files get one
+line; a class grades the same on two processes as on one.
+
+The tolerances are the grader's own (a 0.5 mm pen and a 0.5° set square over the polygon's
+conditioning): a tip moved by half its tolerance passes and by one and a half fails, so the
+tests hold whatever conditioning a position has.
+"""
+
+from __future__ import annotations
+
+import csv
+import json
+import math
+from pathlib import Path
+
+import pytest
+from click.testing import CliRunner
+
+import tarsim
+from tarsim.constructions.errors import InputError
+from tarsim.exercises.cli import cli
+from tarsim.exercises.grading.batch import folder_for
+from tarsim.exercises.grading.drawing import parse_drawing
+from tarsim.exercises.grading.grade import grade
+from tarsim.exercises.grading.polygon import read_label
+from tarsim.exercises.solution import solve_positions
+from tests.drawings import Style, drawing
+
+SHAPER = tarsim.load("crank-shaper")
+RETURN = solve_positions(SHAPER)[1]          # t = 2.34 s: the block slides, Coriolis acts
+
+
+def graded(tmp_path, style: Style, sol=RETURN, ex=SHAPER, position: int = 1):
+    path = tmp_path / "student.svg"
+    path.write_text(drawing(sol, style), encoding="utf-8")
+    g = grade(ex, path, position)
+    return g, {i.name: i for i in g.items}
+
+
+@pytest.mark.parametrize("style", [
+    Style(), Style(writer="geogebra"), Style(turn=90), Style(turn=-37, mirror=True),
+    Style(kind="a"), Style(kind="a", writer="geogebra", turn=180),
+    Style(scale=200.0, stated="1 cm = 5 cm/s"),
+], ids=["inkscape", "geogebra", "turned-90", "turned-mirrored", "acceleration",
+        "acceleration-geogebra-turned", "stated-scale"])
+def test_tarsims_own_polygon_scores_full_marks(tmp_path, style):
+    g, items = graded(tmp_path, style)
+    prime = "′" if style.kind == "a" else ""
+    assert {f"b{prime}", f"a4{prime}", f"b4{prime}"} <= set(items)
+    assert [i.verdict for i in g.items] == ["correct"] * len(g.items), g.items
+    assert g.score == 100.0
+    if style.stated:                      # a scale written on it: the input's tip is graded
+        assert items["a"].verdict == "correct"
+
+
+@pytest.mark.parametrize("share, verdict", [(0.5, "correct"), (1.5, "wrong magnitude")])
+def test_a_tip_moved_along_its_vector_passes_within_its_tolerance_only(tmp_path, share,
+                                                                       verdict):
+    _, items = graded(tmp_path, Style())
+    tol = items["b"].tolerance
+    exp, pole_b = items["b"].expected, _pole(tmp_path)
+    u = _unit((exp[0] - pole_b[0], exp[1] - pole_b[1]))
+    _, items = graded(tmp_path, Style(moved={"B": (share * tol * u[0], share * tol * u[1])}))
+    assert items["b"].verdict == verdict, items["b"]
+
+
+def test_a_tip_moved_square_to_its_vector_is_the_wrong_direction(tmp_path):
+    _, items = graded(tmp_path, Style())
+    exp, pole = items["b"].expected, _pole(tmp_path)
+    u = _unit((exp[0] - pole[0], exp[1] - pole[1]))
+    step = 4 * items["b"].tolerance
+    _, items = graded(tmp_path, Style(moved={"B": (-u[1] * step, u[0] * step)}))
+    assert items["b"].verdict == "wrong direction"
+
+
+def test_a_reversed_coriolis_component_is_named(tmp_path):
+    g, items = graded(tmp_path, Style(kind="a", reversed_coriolis="A"))
+    assert items["a4′"].verdict == "wrong sense"
+    assert items["a4′"].message == ("Coriolis component at A drawn opposite: turn V_rel 90° "
+                                    "in the sense of ω4")
+    assert items["b′"].verdict == "correct"
+
+
+def test_swapped_labels_are_said_to_be_swapped(tmp_path):
+    _, items = graded(tmp_path, Style(swapped=("A4", "B4")))
+    assert items["a4"].verdict != "correct" and items["b4"].verdict != "correct"
+    assert "the labels a4 and b4 are swapped" == items["a4"].message
+
+
+def test_a_vector_left_out_is_missing(tmp_path):
+    _, items = graded(tmp_path, Style(left_out=("B",)))
+    assert items["b"].verdict == "missing" and items["b"].found is None
+
+
+def test_a_scale_stated_wrongly_fails_every_tip(tmp_path):
+    """Drawn at 1 cm = 5 cm/s and labelled 1 cm = 4 cm/s: every vector 20 % short."""
+    g, items = graded(tmp_path, Style(scale=200.0, stated="1 cm = 4 cm/s"))
+    assert all(i.verdict == "wrong magnitude" for i in g.items)
+    assert g.score == 0.0
+
+
+def _pole(tmp_path):
+    from tarsim.exercises.grading.drawing import read_drawing
+    from tarsim.exercises.grading.polygon import _match
+
+    path = tmp_path / "student.svg"
+    path.write_text(drawing(RETURN, Style()), encoding="utf-8")
+    return _match(read_drawing(path))[("v", "o")]
+
+
+def _unit(v):
+    n = math.hypot(*v)
+    return (v[0] / n, v[1] / n)
+
+
+@pytest.mark.parametrize("text, read", [
+    ("o", ("v", "o")), ("O_v", ("v", "o")), ("oa", ("a", "o")), ("o'", ("a", "o")),
+    ("b", ("v", "b")), ("B", ("v", "b")), ("a₄", ("v", "a4")), ("b'", ("a", "b")),
+    ("B′", ("a", "b")), ("b4’", ("a", "b4")), ("V_B", None), ("1 cm = 2 m/s", None)])
+def test_labels_are_read_as_a_course_writes_them(text, read):
+    assert read_label(text) == read
+
+
+def test_answers_in_a_table_are_graded_by_their_drafting_tolerance(tmp_path):
+    q = RETURN.quantities
+    right = q["V_B"].reference["value"]
+    answers = {"V_B": right * 1.005, "omega4": -q["omega4"].reference["value"],
+               "alpha4": q["alpha4"].reference["value"] * 1.2, "nonsense": 1.0}
+    path = tmp_path / "answers.json"
+    path.write_text(json.dumps(answers), encoding="utf-8")
+    items = {i.name: i for i in grade(SHAPER, path, 1).items}
+    assert items["V_B"].verdict == "correct"             # 0.5 %: a published answer passes
+    assert items["omega4"].verdict == "wrong sense"
+    assert items["alpha4"].verdict == "wrong magnitude"
+    assert items["nonsense"].verdict == "extra"
+    assert items["A_B"].verdict == "missing"
+    rows = tmp_path / "answers.csv"
+    rows.write_text(f"name,value\nV_B,{right}\n", encoding="utf-8")
+    items = {i.name: i for i in grade(SHAPER, rows, 1).items}
+    assert items["V_B"].verdict == "correct"
+
+
+BOMB = b"""<?xml version="1.0"?>
+<!DOCTYPE lolz [<!ENTITY lol "lol"><!ENTITY lol2 "&lol;&lol;&lol;&lol;&lol;&lol;&lol;">
+<!ENTITY lol3 "&lol2;&lol2;&lol2;&lol2;&lol2;&lol2;&lol2;">]>
+<svg xmlns="http://www.w3.org/2000/svg"><text x="1" y="1">&lol3;</text></svg>"""
+EXTERNAL = b"""<?xml version="1.0"?>
+<!DOCTYPE svg [<!ENTITY xxe SYSTEM "file:///etc/passwd">]>
+<svg xmlns="http://www.w3.org/2000/svg"><text x="1" y="1">&xxe;</text></svg>"""
+LINKED = (b'<svg xmlns="http://www.w3.org/2000/svg" xmlns:xlink="http://www.w3.org/1999/xlink">'
+          b'<image xlink:href="http://example.com/x.png" width="10" height="10"/></svg>')
+HUGE = (b'<svg xmlns="http://www.w3.org/2000/svg"><path d="M 0 0 '
+        + b"L 1 1 " * 250_000 + b'"/></svg>')
+
+
+@pytest.mark.parametrize("data, says", [
+    (BOMB, "declares a DTD, entities or external resources"),
+    (EXTERNAL, "declares a DTD, entities or external resources"),
+    (LINKED, "links to outside resources"),
+    (HUGE, "more than"),
+    (b"\x89PNG\r\n\x1a\n\x00\x00", "not an SVG drawing"),
+    (b"", "the file is empty"),
+    (b"<html><body>hi</body></html>", "not an SVG drawing (its root is <html>)"),
+])
+def test_a_hostile_or_broken_drawing_is_refused_in_one_line(data, says):
+    with pytest.raises(InputError, match="student.svg: .*" + says.replace("(", r"\(")
+                       .replace(")", r"\)")):
+        parse_drawing(data, "student.svg")
+
+
+def test_a_drawing_with_no_labels_grades_nothing_and_says_so(tmp_path):
+    path = tmp_path / "bare.svg"
+    path.write_text('<svg xmlns="http://www.w3.org/2000/svg"><line x1="0" y1="0" x2="10" '
+                    'y2="0"/></svg>', encoding="utf-8")
+    g = grade(SHAPER, path, 1)
+    assert g.items == [] and "no pole or tip labels were found" in g.notes[0]
+
+
+def test_a_class_grades_the_same_on_two_processes_and_writes_only_inside_its_folder(
+        tmp_path):
+    """Twelve drawings (right, wrong, a Coriolis reversed, a broken file, one named to climb
+    out of its folder) give one grades.csv serially and on two workers."""
+    folder = tmp_path / "class"
+    folder.mkdir()
+    sol = solve_positions(SHAPER)[1]
+    styles = [Style(), Style(turn=30), Style(kind="a"), Style(moved={"B": (5.0, 1.0)}),
+              Style(kind="a", reversed_coriolis="A"), Style(mirror=True),
+              Style(writer="geogebra"), Style(left_out=("B",)), Style(swapped=("A4", "B4")),
+              Style(turn=200)]
+    for k, style in enumerate(styles):
+        (folder / f"student{k:02}.svg").write_text(drawing(sol, style), encoding="utf-8")
+    (folder / "broken.svg").write_bytes(b"not xml at all")
+    (folder / "..%2F..%2Fescape.svg").write_text(drawing(sol, Style()), encoding="utf-8")
+    outs = {}
+    for workers in (1, 2):
+        out = tmp_path / f"graded{workers}"
+        result = CliRunner().invoke(cli, ["grade", "crank-shaper", str(folder), "-o", str(out),
+                                          "--position", "2", "--workers", str(workers)])
+        assert result.exit_code == 0, result.output
+        outs[workers] = (out / "grades.csv").read_text(encoding="utf-8")
+        assert "graded 11 of 12 drawings" in result.output
+    assert outs[1] == outs[2]
+    rows = {r["drawing"]: r for r in csv.DictReader(outs[1].splitlines())}
+    assert rows["student00.svg"]["score"] == "100.0"
+    assert rows["student04.svg"]["a4′"] == "wrong sense"
+    assert "not an SVG drawing" in rows["broken.svg"]["note"]
+    made = {p.relative_to(tmp_path).parts[0] for p in tmp_path.rglob("*")}
+    assert made <= {"class", "graded1", "graded2"}
+    assert folder_for(Path("..%2F..%2Fescape.svg")) == "_2F.._2Fescape"
+    assert (tmp_path / "graded1" / "_2F.._2Fescape" / "grade.json").is_file()
+
+
+def test_grading_one_drawing_writes_its_json_and_overlay(tmp_path):
+    path = tmp_path / "ali.svg"
+    path.write_text(drawing(RETURN, Style(kind="a", reversed_coriolis="A")), encoding="utf-8")
+    out = tmp_path / "graded"
+    result = CliRunner().invoke(cli, ["grade", "crank-shaper", str(path), "-o", str(out),
+                                      "--position", "2"])
+    assert result.exit_code == 0, result.output
+    assert "a4′   wrong sense" in result.output
+    data = json.loads((out / "grade.json").read_text(encoding="utf-8"))
+    assert data["score"] == pytest.approx(200 / 3, abs=0.01)
+    item = next(i for i in data["items"] if i["name"] == "a4′")
+    assert set(item) == {"name", "verdict", "expected", "found", "tolerance", "message"}
+    svg = (out / "grade.svg").read_text(encoding="utf-8")
+    assert "a4′: wrong sense" in svg and "#1f5fbf" in svg
+
+
+def test_a_bad_exercise_or_drawing_is_one_line_and_writes_nothing(tmp_path):
+    path = tmp_path / "empty.svg"
+    path.write_bytes(b"")
+    for args in (["grade", "no-such-exercise", str(path)], ["grade", "crank-shaper", str(path)],
+                 ["grade", "crank-shaper", str(path), "--position", "9"]):
+        out = tmp_path / "out"
+        result = CliRunner().invoke(cli, [*args, "-o", str(out)])
+        assert result.exit_code == 1
+        assert len(result.output.strip().splitlines()) == 1, result.output
+        assert not out.exists()
