@@ -37,13 +37,22 @@ def folder_for(drawing: Path) -> str:
     return name
 
 
+_SOLVED: dict[str, tuple] = {}
+"""Each exercise solved once per process: a class is graded against one solve."""
+
+
 def _one(job: tuple[str, int, str]) -> tuple[str, Grade | str]:
     """Grade one file; a file that cannot be graded gives its one-line reason."""
     source, position, drawing = job
     from ..catalog import load
+    from ..solution import solve_positions
 
     try:
-        return drawing, grade(load(source), drawing, position)
+        if source not in _SOLVED:
+            ex = load(source)
+            _SOLVED[source] = (ex, solve_positions(ex))
+        ex, positions = _SOLVED[source]
+        return drawing, grade(ex, drawing, position, positions)
     except TarsimError as e:
         return drawing, str(e)
 

@@ -29,6 +29,10 @@ MAX_ELEMENTS = 20_000
 MAX_POINTS = 200_000
 """The most path points a drawing may hold, all its paths together."""
 
+MAX_PATH_CHARS = 1_000_000
+"""The longest its paths' data may run, all together (characters), checked before any
+geometry is read."""
+
 _MM = 25.4 / 96.0
 """Paper mm a CSS pixel: svgelements reads every length in pixels at 96 an inch."""
 
@@ -101,6 +105,10 @@ def parse_drawing(data: bytes, name: str = "drawing.svg") -> Drawing:
     if count > MAX_ELEMENTS:
         raise InputError(f"{name}: {count:,} elements are more than a drawing holds (at most "
                          f"{MAX_ELEMENTS:,})")
+    path_chars = sum(len(e.get("d", "")) + len(e.get("points", "")) for e in root.iter())
+    if path_chars > MAX_PATH_CHARS:
+        raise InputError(f"{name}: its paths run to {path_chars:,} characters, more than a "
+                         f"drawing holds (at most {MAX_PATH_CHARS:,})")
     if re.search(rb"(?:xlink:)?href\s*=\s*[\"'](?!#)", data):
         raise InputError(f"{name}: the SVG links to outside resources; a drawing must hold "
                          "all it shows")

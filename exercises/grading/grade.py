@@ -61,9 +61,10 @@ class Grade:
                 "items": [asdict(i) for i in self.items], "notes": self.notes}
 
 
-def grade(exercise, source: str | Path, position: int = 0) -> Grade:
+def grade(exercise, source: str | Path, position: int = 0, positions=None) -> Grade:
     """Grade ``source`` (an SVG drawing, or a JSON or CSV table of answers) against the
-    solved ``exercise`` at its ``position``-th position.
+    solved ``exercise`` at its ``position``-th position (``positions``: the exercise solved
+    already, as a class is graded against one solve).
 
     Raises
     ------
@@ -75,7 +76,7 @@ def grade(exercise, source: str | Path, position: int = 0) -> Grade:
     from .polygon import grade_polygons
 
     path = Path(source)
-    positions = solve_positions(exercise)
+    positions = solve_positions(exercise) if positions is None else positions
     if not positions:
         raise InputError(f"{exercise.id}: it solves no position, so there is nothing drawn "
                          "to grade against")

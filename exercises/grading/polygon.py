@@ -8,9 +8,9 @@ acceleration tip.
 
 **The frame.** A drawing may be turned, mirrored and drawn at its own scale. The pole and
 the input's tip (the crank pin's, whose vector the data give) fix all three: the scale from
-the statement written on the drawing ("1 cm = 0.5 m/s") if there is one, else from the
-input's vector; its turn from that vector; the mirror by whichever of the two hands puts
-the other tips nearer.
+the statement written on the drawing ("1 cm = 0.5 m/s") if there is one, else the one the
+exercise states, else from the input's vector; its turn from that vector; the mirror by
+whichever of the two hands puts the other tips nearer.
 
 **Tolerance.** A tip is held to the drafting precision, a pen of :data:`PEN` and a set
 square of :data:`ANGLE` over the vector's length, over the conditioning of the polygon that
@@ -66,6 +66,8 @@ class _Expected:
     required: frozenset[str] = frozenset()
     """The tips a drawing must show: the mechanism's own moving points (a coincident point
     on a slot is a helper the drawing may show or not)."""
+    scale: float | None = None
+    """Paper mm per SI unit the exercise states its polygon at, if it states one."""
 
 
 def read_label(text: str) -> tuple[str, str] | None:
@@ -121,10 +123,14 @@ def _expected(sol) -> dict[str, _Expected]:
     mech = work.mechanism
     given = mech.link(mech.drive.link).names[-1].lower()
     moving = frozenset(n.lower() for n in mech.point_names if 1 not in mech.links_at(n))
+
+    def stated(per_cm: float | None) -> float | None:
+        """A stated polygon scale (file units per paper cm) as paper mm per SI unit."""
+        return None if not per_cm else 10.0 / (per_cm * mech.units.metres)
     out = {}
     vp = drawn_velocity_polygon(work)
     out["v"] = _Expected("v", {n.lower(): vp.vector(n) for n in vp.tips}, given,
-                         vp.worst(), {}, moving)
+                         vp.worst(), {}, moving, stated(work.scales.velocity_polygon))
     if work.has("acceleration polygon"):
         ap = drawn_acceleration_polygon(work)
         cor = {}
@@ -133,32 +139,53 @@ def _expected(sol) -> dict[str, _Expected]:
                         None)
             cor[point.lower()] = (ap.coriolis_of(point), link)
         out["a"] = _Expected("a", {n.lower(): ap.vector(n) for n in ap.tips}, given,
-                             ap.worst(), cor, moving)
+                             ap.worst(), cor, moving, stated(work.scales.acceleration_polygon))
     return out
 
 
 def _match(drawing: Drawing) -> dict[tuple[str, str], Vec]:
-    """Each polygon label's point: the nearest line end or dot within :data:`REACH`, each
-    point taken once, nearest pairs first."""
+    """Each polygon label's point: the line ends and dots within :data:`REACH` of its
+    letters, each point taken once, the pairing whose distances add to the least (nearest
+    pairs first, then any two labels' points swapped while that shortens the sum), so
+    crowded tips are told apart by all their labels together."""
     points = drawing.ends() + [c for c, _ in drawing.circles]
-    pairs = []
-    for label in drawing.labels:
-        key = read_label(label.text)
-        if key is None:
-            continue
-        # A label's anchor is its baseline's start: aim at the middle of its letters.
-        at = (label.at[0] + 1.2 * len(label.text), label.at[1] - 1.5)
-        for p in points:
-            d = math.dist(at, p)
-            if d <= REACH:
-                pairs.append((d, key, p))
+    unique: list[Vec] = []
+    for p in points:
+        if not any(math.dist(p, q) < 1e-6 for q in unique):
+            unique.append(p)
+    labels = [(key, label) for label in drawing.labels
+              if (key := read_label(label.text)) is not None]
+    near = {i: {j: d for j, p in enumerate(unique) if (d := _to_letters(p, label)) <= REACH}
+            for i, (_, label) in enumerate(labels)}
+    pairs = sorted((d, i, j) for i, js in near.items() for j, d in js.items())
+    taken: dict[int, int] = {}
+    for _, i, j in pairs:
+        if i not in taken and j not in taken.values():
+            taken[i] = j
+    improved = True
+    while improved:
+        improved = False
+        for i in list(taken):
+            for k in list(taken):
+                a, b = taken[i], taken[k]
+                if i < k and b in near[i] and a in near[k] and \
+                        near[i][b] + near[k][a] < near[i][a] + near[k][b] - 1e-9:
+                    taken[i], taken[k] = b, a
+                    improved = True
     out: dict[tuple[str, str], Vec] = {}
-    used: list[Vec] = []
-    for _, key, p in sorted(pairs, key=lambda x: x[0]):
-        if key not in out and not any(math.dist(p, q) < 1e-6 for q in used):
-            out[key] = p
-            used.append(p)
+    for i, j in taken.items():
+        out.setdefault(labels[i][0], unique[j])
     return out
+
+
+def _to_letters(p: Vec, label) -> float:
+    """How far point ``p`` stands from a label's letters: a box from its anchor (the
+    baseline's start) about as wide as its letters and as tall as a capital."""
+    x0, x1 = label.at[0], label.at[0] + 2.0 * len(label.text)
+    y0, y1 = label.at[1] - 3.5, label.at[1]
+    dx = max(x0 - p[0], 0.0, p[0] - x1)
+    dy = max(y0 - p[1], 0.0, p[1] - y1)
+    return math.hypot(dx, dy)
 
 
 _SCALE = re.compile(r"(\d+(?:[.,]\d+)?)\s*cm\s*=\s*(\d+(?:[.,]\d+)?)\s*(mm|cm|m)\s*/\s*s"
@@ -189,6 +216,8 @@ def _grade_one(poly: _Expected, found, stated: float | None, out: Grade):
                          f"and the input's tip {poly.given}{mark} labelled to be graded")
         return None
     f_given = (given[0] - pole[0], given[1] - pole[1])
+    # The scale written on the drawing, else the exercise's, else the input's vector's.
+    stated = stated or poly.scale
     scale = stated or math.hypot(*f_given) / math.hypot(*e_given)
     frames = [_frame(scale, f_given, e_given, hand) for hand in (1.0, -1.0)]
     others = [n for (k, n) in found if k == poly.kind and n not in ("o", poly.given)
