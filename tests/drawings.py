@@ -125,3 +125,32 @@ def _page(body: list[str], writer: str) -> str:
             'height="297mm" viewBox="0 0 210 297"><g inkscape:groupmode="layer" '
             'transform="translate(0,0)"><g transform="matrix(1,0,0,1,0,0)">'
             + "".join(body) + "</g></g></svg>\n")
+
+
+def centres_drawing(sol, *, turn: float = 0.0, mirror: bool = False, scale: float = 0.3,
+                    moved: dict[str, tuple[float, float]] | None = None,
+                    plain: bool = False) -> str:
+    """A space diagram of the mechanism's points and its finite instant centres, each a dot
+    with its label (``I13``, or ``13`` when ``plain``), at ``scale`` paper mm per file mm,
+    turned and mirrored as asked, centres moved by paper mm."""
+    metres = sol.work.mechanism.units.metres
+    k = scale / metres
+    c, s = math.cos(math.radians(turn)), math.sin(math.radians(turn))
+
+    def place(p):
+        x, y = p[0] * k, (p[1] if mirror else -p[1]) * k
+        return (105.0 + c * x - s * y, 150.0 + s * x + c * y)
+    body = []
+    for name, p in sol.work.kinematics.points.items():
+        at = place(p)
+        body.append(f'<circle cx="{at[0]:.4f}" cy="{at[1]:.4f}" r="0.8"/>')
+        body.append(_text((at[0] + 1.2, at[1] - 1.2), name, "", "inkscape"))
+    for name, q in sol.quantities.items():
+        if name.startswith("I") and "point" in q.reference:
+            at = place(q.reference["point"])
+            dx, dy = (moved or {}).get(name, (0.0, 0.0))
+            at = (at[0] + dx, at[1] + dy)
+            body.append(f'<circle cx="{at[0]:.4f}" cy="{at[1]:.4f}" r="0.6"/>')
+            body.append(_text((at[0] + 1.2, at[1] - 1.2), name[1:] if plain else name, "",
+                              "inkscape"))
+    return _page(body, "inkscape")

@@ -102,11 +102,11 @@ def test_a_scale_stated_wrongly_fails_every_tip(tmp_path):
 
 def _pole(tmp_path):
     from tarsim.exercises.grading.drawing import read_drawing
-    from tarsim.exercises.grading.polygon import _match
+    from tarsim.exercises.grading.matching import match
 
     path = tmp_path / "student.svg"
     path.write_text(drawing(RETURN, Style()), encoding="utf-8")
-    return _match(read_drawing(path))[("v", "o")]
+    return match(read_drawing(path), read_label)[("v", "o")]
 
 
 def _unit(v):
@@ -174,7 +174,7 @@ def test_a_drawing_with_no_labels_grades_nothing_and_says_so(tmp_path):
     path.write_text('<svg xmlns="http://www.w3.org/2000/svg"><line x1="0" y1="0" x2="10" '
                     'y2="0"/></svg>', encoding="utf-8")
     g = grade(SHAPER, path, 1)
-    assert g.items == [] and "no pole or tip labels were found" in g.notes[0]
+    assert g.items == [] and "no labels naming a pole, a tip or a centre" in g.notes[0]
 
 
 def test_a_class_grades_the_same_on_two_processes_and_writes_only_inside_its_folder(
@@ -297,3 +297,26 @@ def test_two_hundred_drawings_grade_alike_on_one_process_and_two(tmp_path):
         sheets.append((out / "grades.csv").read_text(encoding="utf-8"))
     assert sheets[0] == sheets[1]
     assert len(sheets[0].splitlines()) == 201
+
+
+@pytest.mark.parametrize("turn, mirror, plain", [(0, False, False), (90, False, True),
+                                                 (-30, True, False)])
+def test_instant_centres_on_a_space_diagram_are_graded(tmp_path, turn, mirror, plain):
+    """The four-bar's six centres drawn as tarsim finds them, turned or mirrored, labelled
+    I13 or 13: all correct; I13 moved four of its tolerances off: a wrong position."""
+    from tests.drawings import centres_drawing
+
+    ex = tarsim.load("four-bar")
+    sol = solve_positions(ex)[0]
+    path = tmp_path / "centres.svg"
+    path.write_text(centres_drawing(sol, turn=turn, mirror=mirror, plain=plain),
+                    encoding="utf-8")
+    items = {i.name: i for i in grade(ex, path, 0).items}
+    assert set(items) == {"I12", "I13", "I14", "I23", "I24", "I34"}
+    assert {i.verdict for i in items.values()} == {"correct"}
+    off = 4 * items["I13"].tolerance
+    path.write_text(centres_drawing(sol, turn=turn, mirror=mirror, plain=plain,
+                                    moved={"I13": (off, 0.0)}), encoding="utf-8")
+    items = {i.name: i for i in grade(ex, path, 0).items}
+    assert items["I13"].verdict == "wrong position"
+    assert items["I24"].verdict == "correct"

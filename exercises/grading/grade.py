@@ -3,8 +3,9 @@
 **Scheme.** Every item a drawing is graded on counts one point: each tip of a polygon the
 exercise asks about or the drawing labels (the input's own tip only when a scale is stated,
 since otherwise it sets the scale), and each number of an answers table. An item is
-``correct`` within its tolerance; ``wrong magnitude``, ``wrong direction``, ``wrong sense``,
-``missing`` or ``extra`` otherwise, and scores nothing. The score is the share correct, in
+``correct`` within its tolerance; ``wrong magnitude``, ``wrong direction``, ``wrong sense``
+(a vector), ``wrong position`` (an instant centre), ``missing`` or ``extra`` otherwise, and
+scores nothing. The score is the share correct, in
 per cent.
 """
 
@@ -17,8 +18,8 @@ from ...constructions.errors import InputError
 
 __all__ = ["Grade", "Item", "VERDICTS", "grade"]
 
-VERDICTS = ("correct", "wrong magnitude", "wrong direction", "wrong sense", "missing",
-            "extra")
+VERDICTS = ("correct", "wrong magnitude", "wrong direction", "wrong sense", "wrong position",
+            "missing", "extra")
 """Every verdict an item may get."""
 
 
@@ -73,6 +74,8 @@ def grade(exercise, source: str | Path, position: int = 0, positions=None) -> Gr
     """
     from ..solution import solve_positions
     from .answers import grade_answers
+    from .centres import grade_centres
+    from .drawing import read_drawing
     from .polygon import grade_polygons
 
     path = Path(source)
@@ -90,4 +93,12 @@ def grade(exercise, source: str | Path, position: int = 0, positions=None) -> Gr
     if suffix != ".svg":
         raise InputError(f"{path.name}: a drawing is an .svg, and a table of answers a .json "
                          "or .csv")
-    return grade_polygons(exercise.id, sol, path)
+    drawing = read_drawing(path)
+    out = Grade(exercise.id, path.name, overlay=(drawing, []))
+    grade_polygons(out, sol, drawing)
+    grade_centres(out, sol, drawing)
+    if not out.items and not out.notes:
+        out.notes.append("no labels naming a pole, a tip or a centre were found (o, a, b, … "
+                         "for velocities; o′, a′, … for accelerations; I13 or 13 for "
+                         "centres): nothing could be graded")
+    return out

@@ -1,7 +1,7 @@
 """A drawn velocity or acceleration polygon, graded tip by tip against tarsim's.
 
-**Matching.** Each label is joined to the nearest line end or dot within
-:data:`REACH`. Labels are read as a course writes them, whatever the case, the subscripts
+**Matching.** Labels are paired with line ends and dots (:func:`.matching.match`). They
+are read as a course writes them, whatever the case, the subscripts
 or the prime: ``o``, ``ov``, ``o_v`` is the velocity pole and ``o'``, ``oa``, ``o_a`` the
 acceleration pole; ``b``, ``a4`` (or ``a₄``) a velocity tip, ``b'`` or ``b′`` an
 acceleration tip.
@@ -28,23 +28,20 @@ from __future__ import annotations
 import math
 import re
 from dataclasses import dataclass
-from pathlib import Path
 
 from ...constructions.acceleration_polygon import drawn_acceleration_polygon
 from ...constructions.velocity_polygon import drawn_velocity_polygon
-from .drawing import Drawing, read_drawing
+from .drawing import Drawing
+from .matching import match
 from .grade import Grade, Item
 
-__all__ = ["grade_polygons", "read_label", "PEN", "ANGLE", "REACH"]
+__all__ = ["grade_polygons", "read_label", "PEN", "ANGLE"]
 
 PEN = 0.5
 """Paper (mm) a careful pen places a point to."""
 
 ANGLE = math.radians(0.5)
 """How true a set square lays a direction."""
-
-REACH = 8.0
-"""Paper (mm) a label may stand from the point it names."""
 
 _LEAST_CONDITIONING = 0.05
 """The least conditioning slack is given for: a tip no drawing can place better than this
@@ -91,16 +88,11 @@ _PLAIN = str.maketrans({**{chr(0x2080 + d): str(d) for d in range(10)},
                         "′": "'", "’": "'", "ʹ": "'", "`": "'"})
 
 
-def grade_polygons(exercise: str, sol, path: Path) -> Grade:
-    """Grade the polygons drawn in ``path`` against the position ``sol``."""
-    drawing = read_drawing(path)
-    out = Grade(exercise, path.name)
-    found = _match(drawing)
+def grade_polygons(out: Grade, sol, drawing: Drawing) -> None:
+    """Grade the polygons ``drawing`` labels, if any, into ``out``."""
+    found = match(drawing, read_label)
     polygons = _expected(sol)
     kinds = {k for k, _ in found}
-    if not kinds:
-        out.notes.append("no pole or tip labels were found (o, a, b, … for velocities; o′, "
-                         "a′, … for accelerations): nothing could be graded")
     stated = _stated_scales(drawing)
     overlay = []
     for kind in sorted(kinds):
@@ -110,7 +102,6 @@ def grade_polygons(exercise: str, sol, path: Path) -> Grade:
             continue
         overlay.append(_grade_one(polygons[kind], found, stated.get(kind), out))
     out.overlay = (drawing, overlay)
-    return out
 
 
 def _noun(kind: str) -> str:
@@ -141,51 +132,6 @@ def _expected(sol) -> dict[str, _Expected]:
         out["a"] = _Expected("a", {n.lower(): ap.vector(n) for n in ap.tips}, given,
                              ap.worst(), cor, moving, stated(work.scales.acceleration_polygon))
     return out
-
-
-def _match(drawing: Drawing) -> dict[tuple[str, str], Vec]:
-    """Each polygon label's point: the line ends and dots within :data:`REACH` of its
-    letters, each point taken once, the pairing whose distances add to the least (nearest
-    pairs first, then any two labels' points swapped while that shortens the sum), so
-    crowded tips are told apart by all their labels together."""
-    points = drawing.ends() + [c for c, _ in drawing.circles]
-    unique: list[Vec] = []
-    for p in points:
-        if not any(math.dist(p, q) < 1e-6 for q in unique):
-            unique.append(p)
-    labels = [(key, label) for label in drawing.labels
-              if (key := read_label(label.text)) is not None]
-    near = {i: {j: d for j, p in enumerate(unique) if (d := _to_letters(p, label)) <= REACH}
-            for i, (_, label) in enumerate(labels)}
-    pairs = sorted((d, i, j) for i, js in near.items() for j, d in js.items())
-    taken: dict[int, int] = {}
-    for _, i, j in pairs:
-        if i not in taken and j not in taken.values():
-            taken[i] = j
-    improved = True
-    while improved:
-        improved = False
-        for i in list(taken):
-            for k in list(taken):
-                a, b = taken[i], taken[k]
-                if i < k and b in near[i] and a in near[k] and \
-                        near[i][b] + near[k][a] < near[i][a] + near[k][b] - 1e-9:
-                    taken[i], taken[k] = b, a
-                    improved = True
-    out: dict[tuple[str, str], Vec] = {}
-    for i, j in taken.items():
-        out.setdefault(labels[i][0], unique[j])
-    return out
-
-
-def _to_letters(p: Vec, label) -> float:
-    """How far point ``p`` stands from a label's letters: a box from its anchor (the
-    baseline's start) about as wide as its letters and as tall as a capital."""
-    x0, x1 = label.at[0], label.at[0] + 2.0 * len(label.text)
-    y0, y1 = label.at[1] - 3.5, label.at[1]
-    dx = max(x0 - p[0], 0.0, p[0] - x1)
-    dy = max(y0 - p[1], 0.0, p[1] - y1)
-    return math.hypot(dx, dy)
 
 
 _SCALE = re.compile(r"(\d+(?:[.,]\d+)?)\s*cm\s*=\s*(\d+(?:[.,]\d+)?)\s*(mm|cm|m)\s*/\s*s"

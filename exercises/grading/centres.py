@@ -1,0 +1,109 @@
+"""Instant centres on a drawn space diagram, graded against tarsim's.
+
+The drawing's mechanism points, labelled as the file names them (O2, A, B), fix its frame:
+the two found farthest apart give its scale and turn, and the others its hand. Each centre
+labelled ``I13``, ``13`` or ``I₁₃`` is then held to a pen of :data:`~.polygon.PEN` over its
+construction's conditioning (a centre found by crossing near-parallel Kennedy lines gets
+the slack the crossing implies). A centre at infinity is not graded on paper.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+
+from .drawing import Drawing
+from .grade import Grade, Item
+from .matching import match
+from .polygon import PEN
+
+__all__ = ["grade_centres", "read_centre"]
+
+_LEAST_CONDITIONING = 0.05
+
+Vec = tuple[float, float]
+
+
+def read_centre(text: str) -> str | None:
+    """A centre's name as results.json spells it, or None.
+
+    >>> read_centre("I13"), read_centre("13"), read_centre("I₂₄"), read_centre("I1,3")
+    ('I13', 'I13', 'I24', 'I13')
+    """
+    t = text.strip().translate(_DIGITS).replace(",", "").replace(" ", "").replace("_", "")
+    m = re.fullmatch(r"[Ii]?(\d)(\d)", t)
+    if m is None or m[1] == m[2]:
+        return None
+    i, j = sorted((int(m[1]), int(m[2])))
+    return f"I{i}{j}"
+
+
+_DIGITS = str.maketrans({chr(0x2080 + d): str(d) for d in range(10)})
+
+
+def grade_centres(out: Grade, sol, drawing: Drawing) -> None:
+    """Grade the centres ``drawing`` labels, if any, into ``out``."""
+    points = {n.lower(): n for n in sol.work.mechanism.point_names}
+
+    def read(text: str):
+        name = read_centre(text)
+        if name is not None:
+            return ("I", name)
+        t = text.strip().translate(_DIGITS).replace("_", "").lower()
+        return ("P", points[t]) if t in points else None
+    found = match(drawing, read)
+    centres = {name for kind, name in found if kind == "I"}
+    if not centres:
+        return
+    true = sol.work.kinematics.points
+    pins = [(name, p) for (kind, name), p in found.items() if kind == "P"]
+    if len(pins) < 2:
+        out.notes.append("the space diagram needs two of the mechanism's points labelled "
+                         "(O2, A, …) to grade its centres")
+        return
+    a, b = max(((p, q) for p in pins for q in pins if p[0] < q[0]),
+               key=lambda pq: math.dist(pq[0][1], pq[1][1]))
+    frames = [_frame(true[a[0]], true[b[0]], a[1], b[1], hand) for hand in (1.0, -1.0)]
+    frame = min(frames, key=lambda f: sum(math.dist(_place(f, true[n]), p) for n, p in pins))
+    quantities = sol.quantities
+    for name in sorted(centres | {q for q in quantities if re.fullmatch(r"I\d\d", q)}):
+        q = quantities.get(name)
+        got = found.get(("I", name))
+        if q is None or "point" not in q.reference:
+            if got is not None:
+                out.items.append(Item(name, "extra", None, _round(got), None,
+                                      f"{name} is not asked here, or lies at infinity"))
+            continue
+        exp = _place(frame, tuple(q.reference["point"]))
+        tol = PEN / max(q.conditioning, _LEAST_CONDITIONING)
+        if got is None:
+            out.items.append(Item(name, "missing", _round(exp), None, round(tol, 3),
+                                  f"{name} is not labelled on the drawing"))
+            continue
+        miss = math.dist(exp, got)
+        item = Item(name, "correct", _round(exp), _round(got), round(tol, 3))
+        if miss > tol:
+            item.verdict = "wrong position"
+            item.message = f"{name} is {miss:.1f} mm from where Kennedy's lines cross"
+        out.items.append(item)
+
+
+def _frame(p: Vec, q: Vec, pp: Vec, qq: Vec, hand: float):
+    """The map from world metres to the drawing's paper that takes ``p`` to ``pp`` and
+    ``q`` to ``qq``, of the hand given (paper runs down: a plain drawing flips y)."""
+    v = (q[0] - p[0], -hand * (q[1] - p[1]))
+    w = (qq[0] - pp[0], qq[1] - pp[1])
+    scale = math.hypot(*w) / math.hypot(*v)
+    turn = math.atan2(w[1], w[0]) - math.atan2(v[1], v[0])
+    return scale, turn, hand, p, pp
+
+
+def _place(frame, x: Vec) -> Vec:
+    scale, turn, hand, p, pp = frame
+    v = ((x[0] - p[0]) * scale, -hand * (x[1] - p[1]) * scale)
+    c, s = math.cos(turn), math.sin(turn)
+    return (pp[0] + c * v[0] - s * v[1], pp[1] + s * v[0] + c * v[1])
+
+
+def _round(p: Vec) -> list[float]:
+    return [round(p[0], 3), round(p[1], 3)]
