@@ -31,6 +31,7 @@ import difflib
 import math
 import re
 from dataclasses import dataclass, replace
+from typing import TYPE_CHECKING
 from pathlib import Path
 
 from ..constructions import asks as A
@@ -42,6 +43,9 @@ from ..constructions.narration import significant
 from ..constructions.scales import Stated
 
 from .loads_file import LOAD_TABLES, read_loads
+
+if TYPE_CHECKING:
+    from .grading.drafting import Drafting
 from .mechanism_file import (RANGE, SourceMap, _float, _Reader, in_range, radians_in_turn,
                              read_source, read_toml)
 
@@ -90,6 +94,9 @@ class Exercise:
     """The sheet the figures are set on (``graphics.paper.PAPERS``): their scales are chosen
     to fill it."""
     loads: Loads | None = None
+    drafting: Drafting | None = None
+    """How precisely a drawing of it is graded (:class:`~.grading.drafting.Drafting`), if
+    its ``[grading]`` table says; the course's 0.5 mm and 0.5° otherwise."""
     """Masses, external forces and couples, for the force analysis; None if none given."""
 
     def __post_init__(self) -> None:
@@ -183,6 +190,7 @@ def parse_exercise(text: str, filename: str = "<string>",
     where = SourceMap(text)
     ask = data.pop("ask", None)
     loading = {t: data.pop(t) for t in LOAD_TABLES if t in data}
+    grading = data.pop("grading", None)
     mech = _Reader(data, where, filename).mechanism()
     ex = _read_ask(ask, mech, where, filename, exercise_id)
     loads = read_loads(loading, mech, where, filename)
@@ -192,6 +200,13 @@ def parse_exercise(text: str, filename: str = "<string>",
         raise InputError("forces are asked, but the file gives no loads: add [[mass]], "
                          "[[force]] or [[couple]] tables (see the README)", file=filename,
                          line=where.key("find", "ask") or where.header("ask"), key="ask.find")
+    if grading is not None:
+        from .grading.drafting import read_drafting
+        from .table_file import Tables
+
+        tables = Tables({"grading": grading}, where, filename,
+                        {"grading": ("pen", "angle", "floor")})
+        ex = replace(ex, drafting=read_drafting(grading, tables))
     if ask is not None and ex.without_motion:     # a bare mechanism file may still be drawn
         raise InputError(ex.without_motion, file=filename,
                          line=where.key("omega", "input") or where.header("input"), key="input")

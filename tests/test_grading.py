@@ -19,7 +19,9 @@ from click.testing import CliRunner
 
 import tarsim
 from tarsim.constructions.errors import InputError
+from tarsim.exercises.catalog import resolve
 from tarsim.exercises.cli import cli
+from tarsim.exercises.exercise_file import parse_exercise
 from tarsim.exercises.grading.batch import folder_for
 from tarsim.exercises.grading.drawing import parse_drawing
 from tarsim.exercises.grading.grade import grade
@@ -320,3 +322,20 @@ def test_instant_centres_on_a_space_diagram_are_graded(tmp_path, turn, mirror, p
     items = {i.name: i for i in grade(ex, path, 0).items}
     assert items["I13"].verdict == "wrong position"
     assert items["I24"].verdict == "correct"
+
+
+def test_an_exercise_may_ask_for_a_finer_pen(tmp_path):
+    """[grading] pen = 0.1 holds every tip five times tighter: a tip 1 mm off that the
+    course's 0.5 mm pen lets pass fails."""
+    text = resolve("crank-shaper").read_text(encoding="utf-8")
+    fine = parse_exercise(text + "\n[grading]\npen = 0.1\nangle = 0.1\n", "fine.toml",
+                          "crank-shaper")
+    path = tmp_path / "student.svg"
+    path.write_text(drawing(RETURN, Style(moved={"B": (1.0, 0.0)})), encoding="utf-8")
+    coarse = {i.name: i for i in grade(SHAPER, path, 1).items}
+    tight = {i.name: i for i in grade(fine, path, 1).items}
+    assert coarse["b"].verdict == "correct"
+    assert tight["b"].verdict != "correct"
+    assert tight["b"].tolerance < coarse["b"].tolerance / 3
+    with pytest.raises(InputError, match=r"bad.toml:\d+: \[grading\] pen must be positive"):
+        parse_exercise(text + "\n[grading]\npen = -1\n", "bad.toml", "crank-shaper")

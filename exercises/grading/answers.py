@@ -5,9 +5,9 @@ shape). CSV: rows of ``name,value``, a header row allowed. Values are SI, as res
 has them. A vector is graded by its magnitude.
 
 **Tolerance.** A number read off a drawing is as good as the drawing: a polygon drawn
-:data:`LENGTH` long with a pen of :data:`~.polygon.PEN` and a set square true to
-:data:`~.polygon.ANGLE`, over the conditioning of the construction that found it; never
-tighter than :data:`FLOOR`, the 1 % published graphical answers keep to.
+:data:`LENGTH` long at the exercise's drafting precision (:class:`~.drafting.Drafting`),
+over the conditioning of the construction that found it; never tighter than its floor, the
+1 % published graphical answers keep to unless the exercise says otherwise.
 """
 
 from __future__ import annotations
@@ -20,16 +20,12 @@ from pathlib import Path
 
 from ...constructions.errors import InputError
 from .grade import Grade, Item
-from .polygon import ANGLE, PEN
+from .drafting import DRAFTING, Drafting
 
-__all__ = ["grade_answers", "read_answers", "LENGTH", "FLOOR"]
+__all__ = ["grade_answers", "read_answers", "LENGTH"]
 
 LENGTH = 100.0
 """Paper (mm) a polygon is taken to be drawn across: the ten centimetres a course asks."""
-
-FLOOR = 0.01
-"""The least relative tolerance: published graphical answers differ from exact ones by
-1–2 %, and such answers must pass."""
 
 _MAX_BYTES = 1_000_000
 
@@ -84,8 +80,9 @@ def read_answers(path: Path) -> dict[str, float]:
     return out
 
 
-def grade_answers(exercise: str, sol, path: Path) -> Grade:
-    """Grade the answers in ``path`` against the position ``sol``'s quantities."""
+def grade_answers(exercise: str, sol, path: Path, drafting: Drafting = DRAFTING) -> Grade:
+    """Grade the answers in ``path`` against the position ``sol``'s quantities, at
+    ``drafting``'s precision."""
     answers = read_answers(path)
     out = Grade(exercise, path.name)
     quantities = sol.quantities
@@ -100,7 +97,8 @@ def grade_answers(exercise: str, sol, path: Path) -> Grade:
                                   f"{name} is a point: grade it from a drawing"))
             continue
         expected = q.reference["value"]
-        rel = max(FLOOR, (PEN / LENGTH + math.tan(ANGLE)) / max(q.conditioning, 0.05))
+        rel = max(drafting.floor, (drafting.pen / LENGTH + math.tan(drafting.angle))
+                  / max(q.conditioning, 0.05))
         tol = rel * max(abs(expected), 1e-300)
         item = Item(name, "correct", expected, value, tol)
         if abs(value - expected) > tol:

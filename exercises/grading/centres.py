@@ -2,9 +2,10 @@
 
 The drawing's mechanism points, labelled as the file names them (O2, A, B), fix its frame:
 the two found farthest apart give its scale and turn, and the others its hand. Each centre
-labelled ``I13``, ``13`` or ``I₁₃`` is then held to a pen of :data:`~.polygon.PEN` over its
-construction's conditioning (a centre found by crossing near-parallel Kennedy lines gets
-the slack the crossing implies). A centre at infinity is not graded on paper.
+labelled ``I13``, ``13`` or ``I₁₃`` is then held to the pen of the exercise's drafting
+precision (:class:`~.drafting.Drafting`) over its construction's conditioning: a centre
+found by crossing near-parallel Kennedy lines gets the slack the crossing implies. A centre
+at infinity is not graded on paper.
 """
 
 from __future__ import annotations
@@ -12,10 +13,10 @@ from __future__ import annotations
 import math
 import re
 
+from .drafting import DRAFTING, Drafting
 from .drawing import Drawing
 from .grade import Grade, Item
 from .matching import match
-from .polygon import PEN
 
 __all__ = ["grade_centres", "read_centre"]
 
@@ -41,8 +42,9 @@ def read_centre(text: str) -> str | None:
 _DIGITS = str.maketrans({chr(0x2080 + d): str(d) for d in range(10)})
 
 
-def grade_centres(out: Grade, sol, drawing: Drawing) -> None:
-    """Grade the centres ``drawing`` labels, if any, into ``out``."""
+def grade_centres(out: Grade, sol, drawing: Drawing, drafting: Drafting = DRAFTING) -> None:
+    """Grade the centres ``drawing`` labels, if any, into ``out``, at ``drafting``'s
+    precision."""
     points = {n.lower(): n for n in sol.work.mechanism.point_names}
 
     def read(text: str):
@@ -75,7 +77,7 @@ def grade_centres(out: Grade, sol, drawing: Drawing) -> None:
                                       f"{name} is not asked here, or lies at infinity"))
             continue
         exp = _place(frame, tuple(q.reference["point"]))
-        tol = PEN / max(q.conditioning, _LEAST_CONDITIONING)
+        tol = drafting.pen / max(q.conditioning, _LEAST_CONDITIONING)
         if got is None:
             out.items.append(Item(name, "missing", _round(exp), None, round(tol, 3),
                                   f"{name} is not labelled on the drawing"))

@@ -75,6 +75,7 @@ def grade(exercise, source: str | Path, position: int = 0, positions=None) -> Gr
     from ..solution import solve_positions
     from .answers import grade_answers
     from .centres import grade_centres
+    from .drafting import DRAFTING
     from .drawing import read_drawing
     from .polygon import grade_polygons
 
@@ -87,16 +88,17 @@ def grade(exercise, source: str | Path, position: int = 0, positions=None) -> Gr
         raise InputError(f"{exercise.id} has {len(positions)} position(s); position "
                          f"{position + 1} does not exist")
     sol = positions[position]
+    drafting = getattr(exercise, "drafting", None) or DRAFTING
     suffix = path.suffix.lower()
     if suffix in (".json", ".csv"):
-        return grade_answers(exercise.id, sol, path)
+        return grade_answers(exercise.id, sol, path, drafting)
     if suffix != ".svg":
         raise InputError(f"{path.name}: a drawing is an .svg, and a table of answers a .json "
                          "or .csv")
     drawing = read_drawing(path)
     out = Grade(exercise.id, path.name, overlay=(drawing, []))
-    grade_polygons(out, sol, drawing)
-    grade_centres(out, sol, drawing)
+    grade_polygons(out, sol, drawing, drafting)
+    grade_centres(out, sol, drawing, drafting)
     if not out.items and not out.notes:
         out.notes.append("no labels naming a pole, a tip or a centre were found (o, a, b, … "
                          "for velocities; o′, a′, … for accelerations; I13 or 13 for "

@@ -12,8 +12,9 @@ the statement written on the drawing ("1 cm = 0.5 m/s") if there is one, else th
 exercise states, else from the input's vector; its turn from that vector; the mirror by
 whichever of the two hands puts the other tips nearer.
 
-**Tolerance.** A tip is held to the drafting precision, a pen of :data:`PEN` and a set
-square of :data:`ANGLE` over the vector's length, over the conditioning of the polygon that
+**Tolerance.** A tip is held to the drafting precision (:class:`~.drafting.Drafting`: a
+pen of 0.5 mm and a set square true to 0.5° unless the exercise's ``[grading]`` says
+otherwise) over the vector's length, over the conditioning of the polygon that
 drew it (a tip found by crossing near-parallel lines gets the slack its conditioning
 implies), never less than the pen.
 
@@ -31,17 +32,12 @@ from dataclasses import dataclass
 
 from ...constructions.acceleration_polygon import drawn_acceleration_polygon
 from ...constructions.velocity_polygon import drawn_velocity_polygon
+from .drafting import DRAFTING, Drafting
 from .drawing import Drawing
 from .matching import match
 from .grade import Grade, Item
 
-__all__ = ["grade_polygons", "read_label", "PEN", "ANGLE"]
-
-PEN = 0.5
-"""Paper (mm) a careful pen places a point to."""
-
-ANGLE = math.radians(0.5)
-"""How true a set square lays a direction."""
+__all__ = ["grade_polygons", "read_label"]
 
 _LEAST_CONDITIONING = 0.05
 """The least conditioning slack is given for: a tip no drawing can place better than this
@@ -88,8 +84,9 @@ _PLAIN = str.maketrans({**{chr(0x2080 + d): str(d) for d in range(10)},
                         "′": "'", "’": "'", "ʹ": "'", "`": "'"})
 
 
-def grade_polygons(out: Grade, sol, drawing: Drawing) -> None:
-    """Grade the polygons ``drawing`` labels, if any, into ``out``."""
+def grade_polygons(out: Grade, sol, drawing: Drawing, drafting: Drafting = DRAFTING) -> None:
+    """Grade the polygons ``drawing`` labels, if any, into ``out``, at ``drafting``'s
+    precision."""
     found = match(drawing, read_label)
     polygons = _expected(sol)
     kinds = {k for k, _ in found}
@@ -100,7 +97,7 @@ def grade_polygons(out: Grade, sol, drawing: Drawing) -> None:
             out.notes.append(f"the drawing has {_noun(kind)} polygon labels, which this "
                              "exercise does not draw")
             continue
-        overlay.append(_grade_one(polygons[kind], found, stated.get(kind), out))
+        overlay.append(_grade_one(polygons[kind], found, stated.get(kind), out, drafting))
     out.overlay = (drawing, overlay)
 
 
@@ -152,7 +149,7 @@ def _stated_scales(drawing: Drawing) -> dict[str, float]:
     return out
 
 
-def _grade_one(poly: _Expected, found, stated: float | None, out: Grade):
+def _grade_one(poly: _Expected, found, stated: float | None, out: Grade, drafting: Drafting):
     """Grade one polygon's tips into ``out``; return what its overlay draws."""
     mark = "′" if poly.kind == "a" else ""
     pole, given = found.get((poly.kind, "o")), found.get((poly.kind, poly.given))
@@ -187,7 +184,7 @@ def _grade_one(poly: _Expected, found, stated: float | None, out: Grade):
         if name == poly.given and stated is None:
             continue                              # it set the scale: nothing to grade
         length = math.dist(exp, pole)
-        tol = max(PEN, (PEN + length * math.tan(ANGLE)) / cond)
+        tol = max(drafting.pen, (drafting.pen + length * math.tan(drafting.angle)) / cond)
         got = found.get((poly.kind, name))
         if got is None:
             if name in poly.required:
@@ -254,8 +251,8 @@ def _name_swaps(items: list[Item]) -> None:
              and i.found and i.expected]
     for i in wrong:
         for j in wrong:
-            if i is not j and math.dist(i.found, j.expected) <= (j.tolerance or PEN) and \
-                    math.dist(j.found, i.expected) <= (i.tolerance or PEN):
+            if i is not j and math.dist(i.found, j.expected) <= j.tolerance and \
+                    math.dist(j.found, i.expected) <= i.tolerance:
                 i.message = f"the labels {i.name} and {j.name} are swapped"
 
 
