@@ -550,8 +550,11 @@ def bench(quick, out_dir):
               help="Which of the exercise's positions the drawing is of ([ask] at = [...]).")
 @click.option("--workers", type=click.IntRange(min=1), default=1, show_default=True,
               help="Processes to grade a class on.")
+@click.option("--scheduler", metavar="ADDRESS", default=None,
+              help="Grade a class on a Dask distributed cluster (tcp://host:8786), for a "
+                   "course too big for one machine; needs pip install 'tarsim[dask]'.")
 @_fails_cleanly
-def grade(source, drawing, out_dir, position, workers):
+def grade(source, drawing, out_dir, position, workers, scheduler):
     """Grade a student's drawing against tarsim's own solution, item by item.
 
     DRAWING is an SVG as Inkscape, GeoGebra, LibreOffice Draw or a CAD program
@@ -581,6 +584,7 @@ def grade(source, drawing, out_dir, position, workers):
       tarsim grade four-bar ali.svg -o graded/ali
       tarsim grade crank-shaper answers.json -o graded/answers
       tarsim grade four-bar class/ -o graded --workers 2
+      tarsim grade four-bar class/ -o graded --scheduler tcp://10.0.0.5:8786
     """
     from .catalog import load
     from .grading.batch import drawings_in, folder_for, grade_many
@@ -604,7 +608,7 @@ def grade(source, drawing, out_dir, position, workers):
     with click.progressbar(length=len(found), label=f"grading {len(found)} drawings",
                            file=sys.stderr) as bar:
         for name, g in grade_many(source, found, position - 1, workers,
-                                  done=lambda: bar.update(1)):
+                                  done=lambda: bar.update(1), scheduler=scheduler):
             rows.append((Path(name).name, g))
             if not isinstance(g, str):
                 write_folder(grade_files(g), Path(out_dir) / folder_for(Path(name)))

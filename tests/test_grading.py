@@ -339,3 +339,54 @@ def test_an_exercise_may_ask_for_a_finer_pen(tmp_path):
     assert tight["b"].tolerance < coarse["b"].tolerance / 3
     with pytest.raises(InputError, match=r"bad.toml:\d+: \[grading\] pen must be positive"):
         parse_exercise(text + "\n[grading]\npen = -1\n", "bad.toml", "crank-shaper")
+
+
+@pytest.mark.slow
+def test_a_class_grades_alike_on_a_dask_cluster(tmp_path):
+    """The same grades.csv from a local Dask cluster (two worker processes) as from one
+    process."""
+    distributed = pytest.importorskip("distributed")
+    folder = tmp_path / "class"
+    folder.mkdir()
+    for k, style in enumerate([Style(), Style(turn=45), Style(kind="a", reversed_coriolis="A"),
+                               Style(moved={"B": (4.0, 0.0)})]):
+        (folder / f"s{k}.svg").write_text(drawing(RETURN, style), encoding="utf-8")
+    (folder / "broken.svg").write_bytes(b"\x00\x01")
+    sheets = []
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
+                                  dashboard_address=None) as cluster:
+        for extra in ([], ["--scheduler", cluster.scheduler_address]):
+            out = tmp_path / f"g{len(sheets)}"
+            result = CliRunner().invoke(cli, ["grade", "crank-shaper", str(folder), "-o",
+                                              str(out), "--position", "2", *extra])
+            assert result.exit_code == 0, result.output
+            sheets.append((out / "grades.csv").read_text(encoding="utf-8"))
+    assert sheets[0] == sheets[1]
+
+
+def test_an_unreachable_scheduler_is_one_line(tmp_path):
+    pytest.importorskip("distributed")
+    folder = tmp_path / "class"
+    folder.mkdir()
+    (folder / "s.svg").write_text(drawing(RETURN, Style()), encoding="utf-8")
+    result = CliRunner().invoke(cli, ["grade", "crank-shaper", str(folder), "-o",
+                                      str(tmp_path / "out"), "--scheduler",
+                                      "tcp://127.0.0.1:9"])
+    assert result.exit_code == 1
+    assert "cannot reach the Dask scheduler at tcp://127.0.0.1:9" in result.output
+
+
+def test_a_vector_drawn_by_use_and_a_circle_in_a_turned_group_are_read(tmp_path):
+    """<use> of a defined line, and a dot whose group is turned: svgelements carries the
+    line through the use; the dot's centre is turned here."""
+    svg = ('<svg xmlns="http://www.w3.org/2000/svg" xmlns:xlink="http://www.w3.org/1999/xlink" '
+           'width="100mm" height="100mm" viewBox="0 0 100 100"><defs><line id="v" x1="0" '
+           'y1="0" x2="30" y2="0"/></defs><g transform="translate(50,50)"><use '
+           'xlink:href="#v" transform="rotate(90)"/></g><g transform="translate(10,10) '
+           'rotate(90)"><circle cx="5" cy="0" r="1"/></g></svg>')
+    d = parse_drawing(svg.encode(), "use.svg")
+    ((a, b),) = d.segments
+    assert a == pytest.approx((50.0, 50.0), abs=1e-4) and b == pytest.approx((50.0, 80.0),
+                                                                             abs=1e-4)
+    ((centre, r),) = d.circles
+    assert centre == pytest.approx((10.0, 15.0), abs=1e-4) and r == pytest.approx(1.0, abs=1e-4)

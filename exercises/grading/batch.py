@@ -8,6 +8,7 @@ whatever a file's name says, nothing is written outside the chosen folder.
 from __future__ import annotations
 
 import re
+import socket
 from collections.abc import Callable, Iterator
 from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
@@ -58,10 +59,16 @@ def _one(job: tuple[str, int, str]) -> tuple[str, Grade | str]:
 
 
 def grade_many(source: str, drawings: list[Path], position: int = 0, workers: int = 1,
-               done: Callable[[], None] | None = None) -> Iterator[tuple[str, Grade | str]]:
+               done: Callable[[], None] | None = None,
+               scheduler: str | None = None) -> Iterator[tuple[str, Grade | str]]:
     """Each drawing's grade (or why it could not be graded), in the drawings' order;
-    ``done`` is called as each finishes."""
+    ``done`` is called as each finishes. With ``scheduler`` (a Dask distributed scheduler's
+    address) the batch runs on that cluster, whose workers must be able to read the
+    drawings' paths."""
     jobs = [(source, position, str(d)) for d in drawings]
+    if scheduler:
+        yield from _on_cluster(jobs, scheduler, done)
+        return
     if workers <= 1:
         for job in jobs:
             result = _one(job)
@@ -71,6 +78,35 @@ def grade_many(source: str, drawings: list[Path], position: int = 0, workers: in
         return
     with ProcessPoolExecutor(max_workers=workers) as pool:
         for result in pool.map(_one, jobs):
+            if done:
+                done()
+            yield result
+
+
+def _on_cluster(jobs, scheduler: str, done) -> Iterator[tuple[str, Grade | str]]:
+    """The jobs graded on a Dask cluster, in order.
+
+    Raises
+    ------
+    TarsimError
+        If Dask is not installed (the ``dask`` extra) or the scheduler cannot be reached.
+    """
+    try:
+        from distributed import Client
+    except ImportError:
+        raise TarsimError("--scheduler needs Dask: pip install 'tarsim[dask]'") from None
+    host, _, port = scheduler.removeprefix("tcp://").rpartition(":")
+    try:
+        if host and port.isdigit():            # a refused port is said at once, not in 10 s
+            socket.create_connection((host, int(port)), timeout=5).close()
+        client = Client(scheduler, timeout="10s")
+    except (OSError, TimeoutError) as e:
+        raise TarsimError(f"cannot reach the Dask scheduler at {scheduler}: "
+                          f"{getattr(e, 'strerror', None) or e}") from None
+    with client:
+        futures = client.map(_one, jobs, pure=False)
+        for future in futures:
+            result = future.result()
             if done:
                 done()
             yield result
