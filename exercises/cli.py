@@ -563,12 +563,16 @@ def grade(source, drawing, out_dir, position, workers, scheduler):
     for accelerations), or a JSON or CSV table of answers ({"V_B": 0.233}),
     or a folder of them: a whole class. The drawing may be turned, mirrored
     and at its own scale; the pole and the input's tip fix all three, unless
-    a scale is written on it ("1 cm = 0.5 m/s"), which is then held to.
+    a scale is written on it ("1 cm = 0.5 m/s") or the exercise states one,
+    which is then held to. Instant centres labelled I13 or 13 on a space
+    diagram (with two of the mechanism's points labelled, O2, A, …) are graded
+    too.
 
-    Each tip is held to a pen of 0.5 mm and a set square of 0.5° over the
-    conditioning of its construction, and judged correct, wrong magnitude,
-    wrong direction, wrong sense (a reversed Coriolis component is named),
-    missing or extra. The score is the share correct.
+    Each tip is held to a pen of 0.5 mm and a set square of 0.5° (or the
+    exercise's [grading] table's) over the conditioning of its construction,
+    and judged correct, wrong magnitude, wrong direction, wrong sense (a
+    reversed Coriolis component is named), missing or extra; a centre correct
+    or in the wrong position. The score is the share correct.
 
     \b
     Writes into DIR:
