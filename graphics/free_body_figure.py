@@ -105,8 +105,13 @@ def _draw_body(mech, link: int, at: dict, forces: list, k_space: float, k_force:
             head = (tail[0] + f[0] * k_force, tail[1] - f[1] * k_force)
             if any(runs_along(tail, head, p, q, within=1.0) for p, q in outline):
                 # Along the link it acts on (a two-force member's pull): drawn pushing at
-                # its point from outside, clear of the link.
-                tail, head = (2 * tail[0] - head[0], 2 * tail[1] - head[1]), tail
+                # its point from outside, clear of the link; one at a point inside the
+                # link (its centre of mass) is set beside it instead.
+                back = ((2 * tail[0] - head[0], 2 * tail[1] - head[1]), tail)
+                if any(runs_along(*back, p, q, within=1.0) for p, q in outline):
+                    tail, head = in_lane(tail, head, outline)
+                else:
+                    tail, head = back
             tail, head = in_lane(tail, head, [(a, b) for a, b, _, _ in arrows])
             draw_arrow(fig, tail, head, "vector")
             arrows.append((tail, head, name, f"{typeset_force(name)[2]} = {size:.4g} N"))
