@@ -313,7 +313,9 @@ def test_instant_centres_on_a_space_diagram_are_graded(tmp_path, turn, mirror, p
     path = tmp_path / "centres.svg"
     path.write_text(centres_drawing(sol, turn=turn, mirror=mirror, plain=plain),
                     encoding="utf-8")
-    items = {i.name: i for i in grade(ex, path, 0).items}
+    g = grade(ex, path, 0)
+    items = {i.name: i for i in g.items}
+    assert g.notes == []
     assert set(items) == {"I12", "I13", "I14", "I23", "I24", "I34"}
     assert {i.verdict for i in items.values()} == {"correct"}
     off = 4 * items["I13"].tolerance
@@ -390,3 +392,13 @@ def test_a_vector_drawn_by_use_and_a_circle_in_a_turned_group_are_read(tmp_path)
                                                                              abs=1e-4)
     ((centre, r),) = d.circles
     assert centre == pytest.approx((10.0, 15.0), abs=1e-4) and r == pytest.approx(1.0, abs=1e-4)
+
+
+def test_a_label_by_no_line_end_is_said_not_graded(tmp_path):
+    svg = drawing(RETURN, Style()).replace("</g></g></svg>", '<text x="10" y="10">c</text>'
+                                                              "</g></g></svg>")
+    path = tmp_path / "stray.svg"
+    path.write_text(svg, encoding="utf-8")
+    g = grade(SHAPER, path, 1)
+    assert any("labels near no line end or dot, not graded: c" in n for n in g.notes)
+    assert all(i.verdict == "correct" for i in g.items)

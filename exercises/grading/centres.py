@@ -53,7 +53,10 @@ def grade_centres(out: Grade, sol, drawing: Drawing, drafting: Drafting = DRAFTI
             return ("I", name)
         t = text.strip().translate(_DIGITS).replace("_", "").lower()
         return ("P", points[t]) if t in points else None
-    found = match(drawing, read)
+    lost: list[str] = []
+    found = match(drawing, read, lost)
+    if lost:
+        out.notes.append(f"labels near no point, not graded: {', '.join(lost)}")
     centres = {name for kind, name in found if kind == "I"}
     if not centres:
         return

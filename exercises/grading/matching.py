@@ -16,12 +16,13 @@ REACH = 8.0
 Vec = tuple[float, float]
 
 
-def match(drawing: Drawing, read: Callable[[str], object | None]) -> dict[object, Vec]:
+def match(drawing: Drawing, read: Callable[[str], object | None],
+          unmatched: list[str] | None = None) -> dict[object, Vec]:
     """Each label's point, the label read by ``read`` (None for a label that names no
     point): the line ends and dots within :data:`REACH` of its letters, each point taken
     once by each kind of thing (a key's first part), in the pairing whose distances add to
     the least (nearest pairs first, then any two labels' points swapped while that shortens
-    the sum)."""
+    the sum). The labels left with no point are added to ``unmatched``."""
     points = drawing.ends() + [c for c, _ in drawing.circles]
     unique: list[Vec] = []
     for p in points:
@@ -51,6 +52,8 @@ def match(drawing: Drawing, read: Callable[[str], object | None]) -> dict[object
     out: dict[object, Vec] = {}
     for i, j in taken.items():
         out.setdefault(labels[i][0], unique[j])
+    if unmatched is not None:               # a label by no point it could name
+        unmatched += [label.text for i, (_, label) in enumerate(labels) if i not in taken]
     return out
 
 

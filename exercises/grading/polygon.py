@@ -87,9 +87,15 @@ _PLAIN = str.maketrans({**{chr(0x2080 + d): str(d) for d in range(10)},
 def grade_polygons(out: Grade, sol, drawing: Drawing, drafting: Drafting = DRAFTING) -> None:
     """Grade the polygons ``drawing`` labels, if any, into ``out``, at ``drafting``'s
     precision."""
-    found = match(drawing, read_label)
+    lost: list[str] = []
+    found = match(drawing, read_label, lost)
+    # A polygon is drawn where its pole is; point names alone (A, B) are a space diagram's.
+    kinds = {k for k, n in found if n == "o"}
+    if not kinds:
+        return
+    if lost:
+        out.notes.append(f"labels near no line end or dot, not graded: {', '.join(lost)}")
     polygons = _expected(sol)
-    kinds = {k for k, _ in found}
     stated = _stated_scales(drawing)
     overlay = []
     for kind in sorted(kinds):
