@@ -16,7 +16,7 @@ from shapely.geometry import Point as SPoint
 from ..constructions.checks import NOISE
 from .figure import Figure, Path, Text
 from .force_figure import in_lane, runs_along, typeset_force
-from .labels import LabelPlacer
+from .labels import LabelPlacer, typeset
 from .scales import draw_caption, nice_per_cm
 from .symbols import draw_arrow, draw_turning_arrow
 
@@ -30,13 +30,13 @@ of under a millimetre shows nothing."""
 
 def draw_free_bodies(mech, at: dict, bodies: dict, title: str, unit: str) -> Figure:
     """Each link of ``bodies`` (link → [(where, force N, couple N·m, name)]) drawn from its
-    points ``at`` (world m), at a space scale that gives the longest link 60 mm, the bodies
+    points ``at`` (world m), at a space scale that gives the longest link 80 mm, the bodies
     set in rows no wider than a landscape sheet."""
     links = sorted(bodies)
     spans = [max([math.dist(p, q) for p in _reach(mech, k, at, bodies)
                   for q in _reach(mech, k, at, bodies)] + [0.0]) for k in links]
     metre = mech.units.metres
-    per_cm = nice_per_cm(max(spans + [1e-9]) / metre, 60.0)
+    per_cm = nice_per_cm(max(spans + [1e-9]) / metre, _LONGEST)
     k_space = 10.0 / (per_cm * metre)                  # paper mm a metre
     biggest = max([math.hypot(*f) for b in bodies.values() for _, f, _, _ in b] + [1e-300])
     force_cm = nice_per_cm(biggest, _ARROW)             # newtons a paper cm
@@ -59,6 +59,9 @@ def draw_free_bodies(mech, at: dict, bodies: dict, title: str, unit: str) -> Fig
                  second=("Force scale", force_cm, "N"), notes=notes)
     return fig
 
+
+_LONGEST = 80.0
+"""Paper (mm) the longest body is drawn at most: the bodies fill a landscape sheet in rows."""
 
 _FARTHER = (10.0, 13.0, 17.0)
 """Rings (in gaps) a name may stand out to when none near what it names is clear."""
@@ -97,7 +100,7 @@ def _draw_body(mech, link: int, at: dict, forces: list, k_space: float, k_force:
                      "block", closed=True))
     arrows, turns = [], []
     outline = [(p, q) for p, q in zip(fig.items[0].points, fig.items[0].points[1:])]
-    reach = max([math.dist(p, q) for p in pts for q in pts] + [1e-9])
+    reach = max([math.dist(p, q) for p in every for q in every] + [1e-9])
     for where, f, couple, name in forces:
         tail = paper(where)
         size = math.hypot(*f)
@@ -130,8 +133,9 @@ def _draw_body(mech, link: int, at: dict, forces: list, k_space: float, k_force:
     placer.name_points([paper(p) for p in pts] + [mid for _, mid, _, _, _ in turns])
     placer.name_vectors((a, b) for a, b, _, _ in arrows)
     for n, p in zip(names, pts):
-        placer.place(n, paper(p), size=2.6, prefer=3 * math.pi / 4, own=paper(p),
-                     rings=(1.0, 1.6, 2.3, 3.2, 4.2))
+        text, sub = typeset(n)                  # O₂, as the space diagram names it
+        placer.place(text, paper(p), size=2.6, prefer=3 * math.pi / 4, own=paper(p),
+                     rings=(1.0, 1.6, 2.3, 3.2, 4.2), sub=sub)
     for tail, head, name, said in arrows:
         text, sub, _ = typeset_force(name)
         ahead = math.atan2(tail[1] - head[1], head[0] - tail[0])   # the arrow's paper angle
