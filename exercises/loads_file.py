@@ -11,7 +11,6 @@ one line naming file:line.
 
 from __future__ import annotations
 
-import math
 from typing import Any
 
 from ..constructions.loads import GRAVITY, Couple, Loads, Mass, PointForce
@@ -189,25 +188,20 @@ _TURN = 360
 def _stroke_way(mech: Mechanism, link: int, point, slow: bool) -> tuple[float, float] | None:
     """The way a point on a frame guide moves during its slow (or fast) stroke: the way it
     moves over more of the input's turn. None if the point runs on no frame guide."""
-    from ..constructions.errors import TarsimError
+    import numpy as np
+
     from ..constructions.model import Drive
-    from ..constructions.reference import solver
+    from ..constructions.reference.turn import solve_turn
 
     guide = next((s for s in mech.slides if s.guide_link == 1 and s.link == link
                   and s.point == point), None)
     if guide is None:
         return None
     d, drive = guide.direction, mech.drive
-    forward = backward = 0
-    for k in range(_TURN):
-        try:
-            kin = solver.solve(mech.with_drive(Drive(drive.link, 2 * math.pi * k / _TURN,
-                                                     drive.omega or 1.0)))
-        except TarsimError:
-            continue                              # a dead point or a gap: no way there
-        v = kin.velocities[point]
-        w = v[0] * d[0] + v[1] * d[1]
-        forward += w > 0
-        backward += w < 0
-    ahead = forward > backward
+    # The whole turn at once (the vectorised solver); a dead point or a gap moves no way.
+    turn = solve_turn(mech.with_drive(Drive(drive.link, drive.angle, drive.omega or 1.0)),
+                      2 * np.pi * np.arange(_TURN) / _TURN)
+    v = turn.velocities[point]
+    w = np.where(turn.ok, v[:, 0] * d[0] + v[:, 1] * d[1], 0.0)
+    ahead = int(np.sum(w > 0)) > int(np.sum(w < 0))
     return d if ahead == slow else (-d[0], -d[1])
