@@ -205,7 +205,7 @@ def parse_exercise(text: str, filename: str = "<string>",
         from .table_file import Tables
 
         tables = Tables({"grading": grading}, where, filename,
-                        {"grading": ("pen", "angle", "floor")})
+                        {"grading": ("pen", "angle", "floor", "weights")})
         ex = replace(ex, drafting=read_drafting(grading, tables))
     if ask is not None and ex.without_motion:     # a bare mechanism file may still be drawn
         raise InputError(ex.without_motion, file=filename,

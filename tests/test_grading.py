@@ -402,3 +402,19 @@ def test_a_label_by_no_line_end_is_said_not_graded(tmp_path):
     g = grade(SHAPER, path, 1)
     assert any("labels near no line end or dot, not graded: c" in n for n in g.notes)
     assert all(i.verdict == "correct" for i in g.items)
+
+
+def test_an_exercise_weighs_its_items(tmp_path):
+    """[grading] weights = { b = 3 }: b wrong costs three points of six, not one of four
+    (the exercise states its scale, so the input's tip a is graded too)."""
+    text = resolve("crank-shaper").read_text(encoding="utf-8")
+    weighed = parse_exercise(text + '\n[grading]\nweights = { b = 3 }\n', "w.toml",
+                             "crank-shaper")
+    path = tmp_path / "student.svg"
+    path.write_text(drawing(RETURN, Style(moved={"B": (9.0, 0.0)})), encoding="utf-8")
+    plain, heavy = grade(SHAPER, path, 1), grade(weighed, path, 1)
+    assert {i.name: i.verdict for i in plain.items}["b"] != "correct"
+    assert plain.score == pytest.approx(75.0)
+    assert heavy.score == pytest.approx(50.0)
+    with pytest.raises(InputError, match=r"w.toml:\d+: .*weights: b must score 0 points"):
+        parse_exercise(text + '\n[grading]\nweights = { b = -1 }\n', "w.toml", "crank-shaper")

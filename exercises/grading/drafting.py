@@ -5,6 +5,7 @@
 pen = 0.5       # mm: how near a careful pen puts a point
 angle = 0.5     # degrees: how true a set square lays a direction
 floor = 0.01    # the least relative tolerance on a table of answers
+weights = { b = 2, "a4′" = 3 }   # the points an item scores (1 each otherwise)
 ```
 """
 
@@ -21,12 +22,14 @@ __all__ = ["Drafting", "DRAFTING", "read_drafting"]
 
 @dataclass(frozen=True)
 class Drafting:
-    """A pen of ``pen`` mm, a set square true to ``angle`` radians, and the least relative
-    tolerance ``floor`` a table of answers is held to."""
+    """A pen of ``pen`` mm, a set square true to ``angle`` radians, the least relative
+    tolerance ``floor`` a table of answers is held to, and each item's points."""
 
     pen: float = 0.5
     angle: float = math.radians(0.5)
     floor: float = 0.01
+    weights: tuple[tuple[str, float], ...] = ()
+    """Points an item scores, by its name as grade.json has it; 1 for any other."""
 
 
 DRAFTING = Drafting()
@@ -56,4 +59,15 @@ def read_drafting(table: dict[str, Any] | None, tables: Tables) -> Drafting:
         if not ok:
             raise tables.fail(f"[grading] {key} must be positive (an angle under 45°, a floor "
                               f"under 1); got {value:g}", "grading", key)
-    return Drafting(pen, math.radians(angle), floor)
+    raw = t.get("weights", {})
+    if not isinstance(raw, dict):
+        raise tables.fail("[grading] weights is a table of points by item, { b = 2 }",
+                          "grading", "weights")
+    weights = []
+    for item in raw:
+        points = tables.number(raw, item, "grading", f"the points of {item}", 0)
+        if not points >= 0:
+            raise tables.fail(f"[grading] weights: {item} must score 0 points or more; got "
+                              f"{points:g}", "grading", "weights")
+        weights.append((str(item), points))
+    return Drafting(pen, math.radians(angle), floor, tuple(weights))

@@ -1,12 +1,12 @@
 """The grade of one drawing or one table of answers: items, verdicts and a score.
 
-**Scheme.** Every item a drawing is graded on counts one point: each tip of a polygon the
-exercise asks about or the drawing labels (the input's own tip only when a scale is stated,
-since otherwise it sets the scale), and each number of an answers table. An item is
-``correct`` within its tolerance; ``wrong magnitude``, ``wrong direction``, ``wrong sense``
+**Scheme.** Every item a drawing is graded on counts one point, or the points the
+exercise's ``[grading] weights`` give it: each tip of a polygon the exercise asks about or
+the drawing labels (the input's own tip only when a scale is stated, since otherwise it sets
+the scale), each centre, and each number of an answers table. An item is ``correct``
+within its tolerance; ``wrong magnitude``, ``wrong direction``, ``wrong sense``
 (a vector), ``wrong position`` (an instant centre), ``missing`` or ``extra`` otherwise, and
-scores nothing. The score is the share correct, in
-per cent.
+scores nothing. The score is the share of the points scored, in per cent.
 """
 
 from __future__ import annotations
@@ -46,14 +46,17 @@ class Grade:
     notes: list[str] = field(default_factory=list)
     overlay: object = None
     """What the overlay draws (the drawing and the polygons expected), if a drawing."""
+    weights: dict[str, float] = field(default_factory=dict)
+    """Points an item scores, by name (1 for any other)."""
 
     @property
     def score(self) -> float:
-        """Per cent of the graded items correct (extras count against: they are items)."""
-        graded = [i for i in self.items]
-        if not graded:
+        """Per cent of the points scored (an extra is an item too, and scores nothing)."""
+        total = sum(self.weights.get(i.name, 1.0) for i in self.items)
+        if not total:
             return 0.0
-        return 100.0 * sum(i.verdict == "correct" for i in graded) / len(graded)
+        return 100.0 * sum(self.weights.get(i.name, 1.0) for i in self.items
+                           if i.verdict == "correct") / total
 
     def as_json(self) -> dict:
         """grade.json's content."""
@@ -91,12 +94,14 @@ def grade(exercise, source: str | Path, position: int = 0, positions=None) -> Gr
     drafting = getattr(exercise, "drafting", None) or DRAFTING
     suffix = path.suffix.lower()
     if suffix in (".json", ".csv"):
-        return grade_answers(exercise.id, sol, path, drafting)
+        out = grade_answers(exercise.id, sol, path, drafting)
+        out.weights = dict(drafting.weights)
+        return out
     if suffix != ".svg":
         raise InputError(f"{path.name}: a drawing is an .svg, and a table of answers a .json "
                          "or .csv")
     drawing = read_drawing(path)
-    out = Grade(exercise.id, path.name, overlay=(drawing, []))
+    out = Grade(exercise.id, path.name, overlay=(drawing, []), weights=dict(drafting.weights))
     grade_polygons(out, sol, drawing, drafting)
     grade_centres(out, sol, drawing, drafting)
     if not out.items and not out.notes:

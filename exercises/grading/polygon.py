@@ -14,9 +14,9 @@ whichever of the two hands puts the other tips nearer.
 
 **Tolerance.** A tip is held to the drafting precision (:class:`~.drafting.Drafting`: a
 pen of 0.5 mm and a set square true to 0.5° unless the exercise's ``[grading]`` says
-otherwise) over the vector's length, over the conditioning of the polygon that
-drew it (a tip found by crossing near-parallel lines gets the slack its conditioning
-implies), never less than the pen.
+otherwise) over the vector's length, over the tip's own conditioning, compounded along
+the acts that found it (a tip found by crossing near-parallel lines gets the slack its
+conditioning implies), never less than the pen.
 
 **Verdicts.** Off by more than its tolerance, a tip's vector from the pole is ``wrong
 sense`` if it points the other way, ``wrong magnitude`` if only its length is off, ``wrong
@@ -61,6 +61,8 @@ class _Expected:
     on a slot is a helper the drawing may show or not)."""
     scale: float | None = None
     """Paper mm per SI unit the exercise states its polygon at, if it states one."""
+    tip_conditioning: dict[str, float] | None = None
+    """Each tip's own conditioning, compounded along the acts that found it."""
 
 
 def read_label(text: str) -> tuple[str, str] | None:
@@ -123,8 +125,12 @@ def _expected(sol) -> dict[str, _Expected]:
         return None if not per_cm else 10.0 / (per_cm * mech.units.metres)
     out = {}
     vp = drawn_velocity_polygon(work)
+    c = work.assembly
+
+    def each(poly) -> dict[str, float]:
+        return {n.lower(): c[r].conditioning for n, r in poly.tips.items()}
     out["v"] = _Expected("v", {n.lower(): vp.vector(n) for n in vp.tips}, given,
-                         vp.worst(), {}, moving, stated(work.scales.velocity_polygon))
+                         vp.worst(), {}, moving, stated(work.scales.velocity_polygon), each(vp))
     if work.has("acceleration polygon"):
         ap = drawn_acceleration_polygon(work)
         cor = {}
@@ -133,7 +139,8 @@ def _expected(sol) -> dict[str, _Expected]:
                         None)
             cor[point.lower()] = (ap.coriolis_of(point), link)
         out["a"] = _Expected("a", {n.lower(): ap.vector(n) for n in ap.tips}, given,
-                             ap.worst(), cor, moving, stated(work.scales.acceleration_polygon))
+                             ap.worst(), cor, moving, stated(work.scales.acceleration_polygon),
+                             each(ap))
     return out
 
 
@@ -176,7 +183,6 @@ def _grade_one(poly: _Expected, found, stated: float | None, out: Grade, draftin
         return sum(math.dist(found[(poly.kind, n)], _place(frame, pole, poly.tips[n]))
                    for n in others)
     frame = min(frames, key=residual)
-    cond = max(poly.conditioning, _LEAST_CONDITIONING)
     names = sorted(set(poly.tips) | {n for (k, n) in found if k == poly.kind} - {"o"})
     expected_at = {}
     for name in names:
@@ -190,6 +196,10 @@ def _grade_one(poly: _Expected, found, stated: float | None, out: Grade, draftin
         if name == poly.given and stated is None:
             continue                              # it set the scale: nothing to grade
         length = math.dist(exp, pole)
+        # The tip's own conditioning: a tip found by a clean cut is held tight, one by a
+        # near-parallel crossing gets the slack that crossing implies.
+        cond = max((poly.tip_conditioning or {}).get(name, poly.conditioning),
+                   _LEAST_CONDITIONING)
         tol = max(drafting.pen, (drafting.pen + length * math.tan(drafting.angle)) / cond)
         got = found.get((poly.kind, name))
         if got is None:
