@@ -23,7 +23,7 @@ from ..constructions.asks import (EFFORTS, Distance, Equivalent, MechanicalAdvan
                                   Rubbing, TransmissionAngle, parse_ask, symbol)
 from ..constructions.checks import FigureSpec, Quantity
 from ..constructions.limit_positions import drawn_limits
-from ..constructions.narration import narrate, significant
+from ..constructions.narration import Word, narrate, phrase, significant
 from ..constructions.record import Kind, Panel, Slice, slice
 from ..constructions.scales import nice
 from ..constructions.velocity_drawing import method_words
@@ -140,7 +140,7 @@ class WorkedSolution:
         for sol in self.positions:
             figures = [f for f in self.pages if f.owner is sol]
             parts.append(_steps_markdown(sol, figures, heading=several, lang=lang))
-        return _steps_title(ex) + "\n".join(parts)
+        return _steps_title(ex, lang) + "\n".join(parts)
 
     def files(self) -> dict[str, str]:
         """Every file as text, by name: each figure's SVG, solution.svg with all of them,
@@ -463,15 +463,15 @@ def _time_ratio_words(m, lp) -> str:
 def _overall_markdown(ex: Exercise, overall: Overall, figures: list[SolutionFigure],
                       lang: str = "en") -> str:
     """steps.md's part for the mechanism as a whole: the limit positions, then the answers."""
-    lines = ["# The mechanism as a whole", ""]
+    lines = ["# " + narrate(phrase("md.whole"), lang), ""]
     lp = drawn_limits(overall.work) if overall.work.has("limits") else None
     for f in figures if lp is not None else ():
-        lines += [f"## {f.heading} (`{f.stem}.svg`)", ""]
+        lines += [f"## {_heading(f.heading, lang)} (`{f.stem}.svg`)", ""]
         for number, step in f.shown.numbered():
             lines.append(f"{number}. {narrate(step, lang)}")
         lines += ["", _time_ratio_words(ex.mechanism, lp), ""]
-    lines += ["## Results", "", "| quantity | answer | check | relative error | method |",
-              "|---|---|---|---|---|"]
+    lines += ["## " + narrate(phrase("md.results"), lang), "",
+              narrate(phrase("md.whole_columns"), lang), "|---|---|---|---|---|"]
     for name, q in overall.quantities.items():
         lines.append(f"| {name} | {overall_text(name, q.value, ex.mechanism.units)} | "
                      f"{overall_text(name, q.reference, ex.mechanism.units)} | "
@@ -501,8 +501,13 @@ def overall_text(name: str, v: dict, units) -> str:
 
 
 # ----- steps.md -------------------------------------------------------------------------
-def _steps_title(ex: Exercise) -> str:
-    return f"# {ex.mechanism.name}: worked solution\n\n"
+def _steps_title(ex: Exercise, lang: str = "en") -> str:
+    return "# " + narrate(phrase("md.title", name=ex.mechanism.name), lang) + "\n\n"
+
+
+def _heading(text: str, lang: str) -> str:
+    """A figure's or a part's heading in ``lang`` (English as it is)."""
+    return narrate(phrase("md.heading", heading=Word(text)), lang)
 
 
 def _steps_markdown(sol: Solution, figures: list[SolutionFigure], *, heading: bool,
@@ -514,11 +519,13 @@ def _steps_markdown(sol: Solution, figures: list[SolutionFigure], *, heading: bo
     d = m.drive
     angle = m.units.angle_brief(d.angle)
     sense = "ccw" if d.omega > 0 else "cw"
-    lines = [f"# At {sol.position.label}", ""] if heading else []
-    alpha = f", α{d.link} = {significant(d.alpha)} rad/s²" + (
-        "" if d.alpha_given else " (not given: 0)")
-    omega = significant(abs(d.omega))
-    lines += [f"Position: θ{d.link} = {angle}, ω{d.link} = {omega} rad/s {sense}{alpha}.", ""]
+    at = narrate(phrase("md.at", where=sol.position.label), lang) if heading else ""
+    lines = [f"# {at}", ""] if heading else []
+    lines += [narrate(phrase("md.position", link=str(d.link), angle=angle,
+                             omega=significant(abs(d.omega)), sense=Word(sense),
+                             alpha=significant(d.alpha),
+                             given=None if d.alpha_given else phrase("md.not_given")),
+                      lang), ""]
     for f in figures:
         parts = [(f.heading, Panel.SPACE, f.shown)] if f.shown else []
         parts += list(f.panels)
@@ -528,14 +535,14 @@ def _steps_markdown(sol: Solution, figures: list[SolutionFigure], *, heading: bo
                 continue
             # A part drawn in no figure of its own (the inertia loads' images on the
             # acceleration polygon) names no file.
+            title = _heading(title, lang)
             lines += [f"## {title}" if elsewhere else f"## {title} (`{f.stem}.svg`)", ""]
             lines += [f"{number}. {narrate(step, lang)}" for number, step in numbered]
             lines.append("")
     for note in sol.notes:
         lines.append(f"> {note}")
-    lines += ["", "## Results", "",
-              "| quantity | construction | analytic | relative error | method |",
-              "|---|---|---|---|---|"]
+    lines += ["", "## " + narrate(phrase("md.results"), lang), "",
+              narrate(phrase("md.columns"), lang), "|---|---|---|---|---|"]
     for name, q in sol.quantities.items():
         rows = [(name, q)] + [(f"{name} ({m_})", a) for m_, a in q.alternatives.items()]
         for label, qq in rows:

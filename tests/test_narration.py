@@ -20,7 +20,8 @@ from tarsim.constructions.narration import (LANGUAGES, Capitalized, Number, Phra
 from tarsim.exercises.catalog import bundled
 
 SOURCE = [p for p in Path(constructions.__file__).parent.rglob("*.py")
-          if "phrases" not in p.parts]
+          if "phrases" not in p.parts] + [
+              Path(constructions.__file__).parent.parent / "exercises" / "solution_files.py"]
 NAMED = re.compile(r"""phrase\(\s*["']([\w.]+)["']|phrase\(\s*\(?["']([\w.]+)["'] if """)
 
 

@@ -26,6 +26,17 @@ WORDS: dict[str, str] = {"at rest": "at rest"}
 """Small words as the language says them (English: as they are)."""
 
 PHRASES: dict[str, str] = {
+    # ----- steps.md's own words (exercises.solution_files) -----------------------------------
+    "md.title": "{name}: worked solution",
+    "md.at": "At {where}",
+    "md.position": "Position: θ{link} = {angle}, ω{link} = {omega} rad/s {sense}, α{link} = "
+                   "{alpha} rad/s²{given}.",
+    "md.not_given": " (not given: 0)",
+    "md.results": "Results",
+    "md.columns": "| quantity | construction | analytic | relative error | method |",
+    "md.whole": "The mechanism as a whole",
+    "md.whole_columns": "| quantity | answer | check | relative error | method |",
+    "md.heading": "{heading}",
     # ----- position by compass (constructions.assembly) -----------------------------------
     "position.at": "at θ{link} = {angle}",
     "position.frame_point": "Mark the frame point {point} at ({x}, {y}).",
