@@ -35,7 +35,7 @@ from .errors import TarsimError
 __all__ = ["Phrase", "phrase", "Number", "Quantity", "Word", "Capitalized", "narrate", "render",
            "catalogue", "fixed", "significant", "LANGUAGES"]
 
-LANGUAGES = ("en",)
+LANGUAGES = ("en", "fa")
 """The languages with a catalogue, the first the default."""
 
 
@@ -160,7 +160,7 @@ def render(arg: Any, lang: str = "en") -> str:
     if isinstance(arg, (list, tuple)):
         return " ".join(t for t in (render(a, lang) for a in arg) if t)
     if isinstance(arg, int):
-        return cat.digits(str(arg))
+        return str(arg)             # a link's number is its name (ω2, link 2) in every language
     raise TarsimError(f"a phrase argument must be a name, a number, a quantity, a word or a "
                       f"clause, not {type(arg).__name__}")
 

@@ -233,8 +233,11 @@ def check(source, angle):
 @click.option("--allow-undercut", is_flag=True,
               help="A cam whose roller undercuts it, or whose flat face meets a concave "
                    "profile: draw it with the trouble ringed instead of refusing it.")
+@click.option("--lang", type=click.Choice(["en", "fa"]), default="en", show_default=True,
+              help="The language of steps.md: en, or fa (Persian, in the course notes' "
+                   "terms, with Persian digits). The figures are English for now.")
 @_fails_cleanly
-def solve(source, out_dir, angle, pdf, paper, allow_undercut):
+def solve(source, out_dir, angle, pdf, paper, allow_undercut, lang):
     """Solve an exercise by graphical construction and check every number.
 
     FILE is a mechanism file whose [ask] table names what to find (see the
@@ -290,6 +293,7 @@ def solve(source, out_dir, angle, pdf, paper, allow_undercut):
       tarsim solve planetary-q1                  # the notes' planetary Q1
       tarsim solve eccentric-flat-face           # the notes' §3.20 cam
       tarsim solve notes-example-1               # 001 ch. 7 Example 1, corrected
+      tarsim solve crank-shaper --lang fa        # steps.md in Persian
 
     The exit status is 3 if any constructed number disagrees with the analytic
     one beyond the tolerance its conditioning allows (the files are written all
@@ -323,7 +327,7 @@ def solve(source, out_dir, angle, pdf, paper, allow_undercut):
     with output_folder(out):      # a folder that cannot be written fails before the solve
         worked = solve_worked(ex)
         reason = cairo_missing() if pdf else None
-        written = worked.write(out, pdf=pdf and reason is None)
+        written = worked.write(out, pdf=pdf and reason is None, lang=lang)
     sols, overall = worked.positions, worked.overall
     for name, q in overall.quantities.items():
         click.echo(answer_line(name, q, ex.mechanism.units, whole=True))

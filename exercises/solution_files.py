@@ -142,20 +142,21 @@ class WorkedSolution:
             parts.append(_steps_markdown(sol, figures, heading=several, lang=lang))
         return _steps_title(ex, lang) + "\n".join(parts)
 
-    def files(self) -> dict[str, str]:
+    def files(self, lang: str = "en") -> dict[str, str]:
         """Every file as text, by name: each figure's SVG, solution.svg with all of them,
-        steps.md and results.json."""
+        steps.md (in ``lang``) and results.json."""
         files = {f"{f.stem}.svg": to_svg(f.figure) for f in self.pages}
         if self.pages:
             files["solution.svg"] = to_svg(stack_pages([f.figure for f in self.pages]))
-        files["steps.md"] = self.steps()
+        files["steps.md"] = self.steps(lang)
         files["results.json"] = results_json(self.positions, self.exercise.id,
                                              self.overall.quantities)
         return files
 
-    def write(self, folder: str | Path, *, pdf: bool = True) -> list[Path]:
+    def write(self, folder: str | Path, *, pdf: bool = True, lang: str = "en") -> list[Path]:
         """Write every file into ``folder`` (made if missing), with a PDF of each figure when
-        ``pdf``, as :func:`write_solution` does; return the paths written.
+        ``pdf`` and steps.md in ``lang``, as :func:`write_solution` does; return the paths
+        written.
 
         Raises
         ------
@@ -163,7 +164,7 @@ class WorkedSolution:
             If the folder cannot be made or written, holds a file of one of these names
             that tarsim did not write, or PDF is asked and libcairo2 is missing.
         """
-        return write_solution(self.files(), folder, pdf=pdf, sheets=self.sheets())
+        return write_solution(self.files(lang), folder, pdf=pdf, sheets=self.sheets())
 
     def oversize(self) -> dict[str, tuple[float, float]]:
         """Each figure a sheet of the exercise's paper does not hold (drawn at a scale the

@@ -1,0 +1,74 @@
+"""Persian: a second phrase catalogue, not a second code path.
+
+Every English phrase has a Persian one with the same fields; numbers come out in Persian
+digits in their logical order (which the bidirectional algorithm shows left to right inside
+right-to-left text); the glossary's terms are the ones the catalogue uses; and
+`tarsim solve --lang fa` writes steps.md in Persian.
+"""
+
+from __future__ import annotations
+
+import string
+import unicodedata
+from pathlib import Path
+
+from click.testing import CliRunner
+
+from tarsim.constructions.narration import Quantity, narrate, phrase, render
+from tarsim.constructions.phrases import en, fa
+from tarsim.exercises.cli import cli
+
+GLOSSARY = Path(__file__).resolve().parents[1] / "docs" / "glossary-fa.md"
+
+
+def _fields(template: str) -> set[str]:
+    return {f for _, f, _, _ in string.Formatter().parse(template) if f}
+
+
+def test_every_phrase_has_a_persian_one_with_the_same_fields():
+    assert set(fa.PHRASES) == set(en.PHRASES)
+    for key, english in en.PHRASES.items():
+        assert _fields(fa.PHRASES[key]) == _fields(english), key
+
+
+def test_numbers_are_persian_digits_in_logical_order():
+    """۲۵ stays ۲۵, never ۵۲: the digits keep the number's own order, and Persian digits
+    are European-number class in the bidi algorithm, so they show left to right in a
+    right-to-left line."""
+    assert fa.digits("25") == "۲۵"
+    assert render(Quantity(250.0, "mm"), "fa") == "۲۵۰ میلی\u200cمتر"
+    assert render(Quantity(406.712, "mm", "/s", "rate"), "fa") == \
+        "۴۰۶٫۷۱۲ میلی\u200cمتر بر ثانیه"
+    assert all(unicodedata.bidirectional(d) == "EN" for d in "۰۱۲۳۴۵۶۷۸۹")
+    said = narrate(phrase("position.bisect", a="O2", b="O4"), "fa")
+    assert "O2O4" in said                    # point names stay as the notes write them
+
+
+ELSEWHERE = {"مرکز لحظه": "an instant centre is مرکز آنی, as the notes say",
+             "کرنک": "a crank is لنگ", "کوپلر": "a coupler is میلهٔ رابط",
+             "اسلایدر": "a slider is لغزنده", "پولیگون": "a polygon is چندضلعی",
+             "ي": "Persian writes ی, not the Arabic ي", "ك": "Persian writes ک, not the Arabic ك"}
+"""Words other Persian texts use for the course's terms, which the notes do not."""
+
+
+def test_the_catalogue_keeps_to_the_glossarys_terms():
+    rows = [line.split("|")[1:4] for line in GLOSSARY.read_text(encoding="utf-8").splitlines()
+            if line.startswith("| ") and "---" not in line][1:]
+    assert len(rows) > 40
+    assert all(persian.strip() and where.strip() for _, persian, where in rows)
+    words = " ".join(fa.PHRASES.values())
+    for other, why in ELSEWHERE.items():
+        assert other not in words, why
+
+
+def test_solve_writes_persian_steps(tmp_path):
+    out = tmp_path / "fa"
+    result = CliRunner().invoke(cli, ["solve", "four-bar", "--lang", "fa", "--no-pdf", "-o",
+                                      str(out)])
+    assert result.exit_code == 0, result.output
+    steps = (out / "steps.md").read_text(encoding="utf-8")
+    assert steps.startswith("# Four-bar crank-rocker: حل کامل")
+    assert "## نتایج" in steps and "مراکز آنی" in steps and "قضیهٔ کندی" in steps
+    english = (tmp_path / "en")
+    CliRunner().invoke(cli, ["solve", "four-bar", "--no-pdf", "-o", str(english)])
+    assert "## Results" in (english / "steps.md").read_text(encoding="utf-8")
