@@ -418,3 +418,21 @@ def test_an_exercise_weighs_its_items(tmp_path):
     assert heavy.score == pytest.approx(50.0)
     with pytest.raises(InputError, match=r"w.toml:\d+: .*weights: b must score 0 points"):
         parse_exercise(text + '\n[grading]\nweights = { b = -1 }\n', "w.toml", "crank-shaper")
+
+
+def test_vectors_and_centres_in_a_table_are_graded_by_their_components(tmp_path):
+    q = RETURN.quantities
+    vb = q["V_B"].reference["vector"]
+    i25 = q["I25"].reference["point"]
+    path = tmp_path / "answers.json"
+    path.write_text(json.dumps({"V_B": [-vb[0], -vb[1]], "I25": i25,
+                                "A_B": {"vector": q["A_B"].reference["vector"]}}),
+                    encoding="utf-8")
+    items = {i.name: i for i in grade(SHAPER, path, 1).items}
+    assert items["V_B"].verdict == "wrong sense"
+    assert items["I25"].verdict == "correct"
+    assert items["A_B"].verdict == "correct"
+    rows = tmp_path / "answers.csv"
+    rows.write_text(f"name,x,y\nI25,{i25[0] + 0.2},{i25[1]}\n", encoding="utf-8")
+    items = {i.name: i for i in grade(SHAPER, rows, 1).items}
+    assert items["I25"].verdict == "wrong position"
