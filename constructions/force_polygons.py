@@ -37,7 +37,7 @@ from .checks import NOISE, Answer, FigureSpec, quiet, vector_value
 from .errors import GeometryError, TarsimError
 from .loads import RESTING, Loads, crank_tangent, leaning, stroke_axis
 from .model import Mechanism, SlideKind
-from .narration import phrase
+from .narration import Number, Quantity, Word, phrase
 from .record import Construction, Kind, Panel, Ref, Role
 from .scales import nice
 from .velocity_polygon import drawn_velocity_polygon
@@ -243,8 +243,8 @@ def _with_pin_friction(work, c, group, at, known, scale: float, slip) -> dict:
     # Said first among the force polygons, at their origin.
     origin = c.give("force:circles:at", g.Point(0.0, 0.0), label="", panel=Panel.FORCE)
     c.draw("force:say:circles", "mark", origin, panel=Panel.FORCE, phrase=phrase(
-        "force.circles", rho=f"{loads.friction_circle / mech.units.metres:g} "
-                             f"{mech.units.length}", rounds=rounds))
+        "force.circles", rho=Quantity(loads.friction_circle / mech.units.metres,
+                                      mech.units.length), rounds=rounds))
     return _pin_couples(known, pins, sizes, rates, at, loads.friction_circle)
 
 
@@ -400,8 +400,10 @@ def _unit_or_zero(v: Vec, beside: float) -> Vec:
     return (v[0] / n, v[1] / n) if n > RESTING * beside else (0.0, 0.0)
 
 
-def _friction_angle(slip) -> str:
-    return "" if slip is None else f"{math.degrees(math.atan(slip[0])):.4g}°"
+def _friction_angle(slip):
+    """φ = atan μ as a step says it."""
+    return None if slip is None else Quantity(math.degrees(math.atan(slip[0])), "°",
+                                              style="rate")
 
 
 def _crossing(p: Vec, u: Vec, q: Vec, w: Vec) -> Vec | None:
@@ -498,7 +500,7 @@ def _concurrent(c, draw, out: Forces, sh: _Shape, at, loads, slip=None):
     along_r = c.give("force:cc:r", g.Line(-r[1] / size, r[0] / size, 0.0), label="",
                      panel=Panel.FORCE)
     line_r = c.draw("force:cc:lineR", "parallel_through", qp, along_r, kind=Kind.LINE,
-                    phrase=phrase("force.resultant", i=sh.i, size=f"{size:.4g} N", b=sh.b))
+                    phrase=phrase("force.resultant", i=sh.i, size=_said(size, "N"), b=sh.b))
     if sh.c is not None:
         line_j = c.draw("force:cc:lineCB", "line_through", c.points[sh.c], c.points[sh.b],
                         kind=Kind.LINE, phrase=phrase("force.two_force", j=sh.j, c=sh.c,
@@ -543,8 +545,8 @@ def _piston_effort(c, out: Forces, sh: _Shape, at, loads, wall: Vec, refs) -> No
     out.efforts["piston_effort"] = piston[0] * u[0] + piston[1] * u[1]
     out.efforts["wall_thrust"] = abs(-wall[0] * sh.guide[1] + wall[1] * sh.guide[0])
     said = c.draw("force:say:piston", "mark", refs[0], panel=Panel.FORCE, phrase=phrase(
-        "force.piston", j=sh.j, effort=f"{out.efforts['piston_effort']:.6g} N",
-        thrust=f"{out.efforts['wall_thrust']:.6g} N"))
+        "force.piston", j=sh.j, effort=_said(out.efforts["piston_effort"], "N", ".6g"),
+        thrust=_said(out.efforts["wall_thrust"], "N", ".6g")))
     out.refs["piston_effort"] = out.refs["wall_thrust"] = (*refs, said)
 
 
@@ -574,7 +576,7 @@ def _crank(c, draw, out: Forces, d: int, i: int, f_id: Vec, o: str, a: str, at, 
     arm_size = math.hypot(*arm)
     said = c.draw("force:say:torque", "mark", start, panel=Panel.FORCE, phrase=phrase(
         "force.torque", d=d, o=o,
-        torque=f"{quiet(torque, 0.08 / out.scale * arm_size):.6g} N·m"))
+        torque=_said(quiet(torque, 0.08 / out.scale * arm_size), "N·m", ".6g")))
     out.refs[f"T{d}"] = (closing, said)
 
 
@@ -611,8 +613,8 @@ def _crank_effort(c, draw, out: Forces, tail: Ref, head: Ref, name: str, o: str,
     out.efforts["crank_effort"], out.efforts["turning_moment"] = effort, effort * r
     loads = 0.08 / draw.scale                    # the largest load, to the rounding of it
     said = c.draw("force:say:effort", "mark", cross, panel=Panel.FORCE, phrase=phrase(
-        key, name=name, o=o, a=a, effort=f"{quiet(effort, loads):.6g} N",
-        moment=f"{quiet(effort * r, loads * r):.6g} N·m"))
+        key, name=name, o=o, a=a, effort=_said(quiet(effort, loads), "N", ".6g"),
+        moment=_said(quiet(effort * r, loads * r), "N·m", ".6g")))
     out.refs["crank_effort"] = out.refs["turning_moment"] = tuple(
         r for r in (cross, part, said) if r is not None)
 
@@ -709,9 +711,9 @@ def _slotted(c, draw, out: Forces, lv: _Lever, at, known, slip=None):
             s_guide, s_slot = _sides(laid, (lv.guide, sliding["guide"]), (u, sliding["pin"]),
                                      mu)
             guide = draw.leaning(origin, lv.guide, s_guide, (mu, sliding["guide"]),
-                                 what="The frame's guide")
+                                 what=phrase("force.the_frame_guide"))
             across = draw.leaning(origin, u, s_slot, (mu, sliding["pin"]), "slotN",
-                                  what=f"The slot of link {lv.l}")
+                                  what=phrase("force.the_slot", link=lv.l))
         cross, end_vec, start_vec = draw.close(tip, guide, origin, across, phrase(
             "force.ram_close", r=lv.r, l=lv.l), f"F_1{lv.r}", f"F_{lv.l}{lv.r}")
         n_guide, n_slot = draw.read(end_vec), draw.read(start_vec)
@@ -745,7 +747,7 @@ def _slotted(c, draw, out: Forces, lv: _Lever, at, known, slip=None):
     start_b = c.give("force:Sb", g.Point(0.0, low - 0.03), label="", panel=Panel.FORCE)
     c.draw("force:say:block", "mark", start_b, panel=Panel.FORCE, label=f"link {lv.b}",
            phrase=phrase(
-        "force.block", b=lv.b, l=lv.l, p=lv.p, nu=f"{abs(nu):.4g} N"))
+        "force.block", b=lv.b, l=lv.l, p=lv.p, nu=_said(abs(nu), "N")))
     tip = draw.loads(lv.b, start_b, known[lv.b])
     tip = draw.vector(f"{lv.l}on{lv.b}", tip, n_lb, label=f"F_{lv.l}{lv.b}")
     closing_b = draw.join("crank", tip, start_b, role=Role.RESULT, label=f"F_{lv.d}{lv.b}")
@@ -799,7 +801,7 @@ class _Drafter:
         nxt = self.c.draw(f"force:{name}", "transfer", tip, base, head, panel=Panel.FORCE)
         self.c.draw(f"force:v:{name}", "join", tip, nxt, panel=Panel.FORCE, label=label,
                     phrase=said or phrase("force.lay", label=label or "the load",
-                                          size=f"{math.hypot(*f):.4g} N"))
+                                          size=_said(math.hypot(*f), "N")))
         return nxt
 
     def loads(self, link: int, tip: Ref, loads) -> Ref:
@@ -818,7 +820,7 @@ class _Drafter:
                            kind=Kind.LINE, panel=Panel.FORCE)
 
     def leaning(self, through: Ref, guide: Vec, side: float, slip, name: str = "N",
-                what: str = "The guide") -> Ref:
+                what=None) -> Ref:
         """The line through ``through`` of a frame guide's push with friction: square to
         the guide, leaned by the friction angle against the sliding, for a push from
         ``side``."""
@@ -829,11 +831,12 @@ class _Drafter:
         return self.c.draw(f"force:line:{name}", "parallel_through", through, raw,
                            kind=Kind.LINE,
                            panel=Panel.FORCE, phrase=phrase(
-                               "force.leaning", what=what, phi=_friction_angle(slip),
-                               side="the guide's left (a quarter turn counter-clockwise "
-                                    "from its direction)" if side > 0 else
-                                    "the guide's right (a quarter turn clockwise from its "
-                                    "direction)"))
+                               "force.leaning", what=what or phrase("force.the_guide"),
+                               phi=_friction_angle(slip),
+                               side=Word("the guide's left (a quarter turn counter-clockwise "
+                                         "from its direction)" if side > 0 else
+                                         "the guide's right (a quarter turn clockwise from its "
+                                         "direction)")))
 
     def close(self, tip: Ref, far: Ref, start: Ref, near: Ref, said, far_name: str,
               near_name: str) -> tuple[Ref, Ref, Ref]:
@@ -950,8 +953,8 @@ def _inertia(work, loads: Loads, at) -> dict[int, tuple[Vec, float]]:
                                "force.image", link=m.link,
                                k=ref, start="o_a" if 1 in mech.links_at(ref)
                                else f"{ref[0].lower()}{ref[1:]}′",
-                               n=f"{omega * omega * size:.4g} m/s²",
-                               t=f"{abs(alpha_said) * size:.4g} m/s²",
+                               n=_said(omega * omega * size, "m/s²"),
+                               t=_said(abs(alpha_said) * size, "m/s²"),
                                h=_offset(m, alpha_said, ap.between(ap.pole, n_end),
                                          (-r[1] * alpha, r[0] * alpha))))
         a_g = ap.between(ap.pole, image)
@@ -959,12 +962,17 @@ def _inertia(work, loads: Loads, at) -> dict[int, tuple[Vec, float]]:
     return out
 
 
-def _offset(m, alpha: float, normal: Vec, tangential: Vec) -> str:
+def _offset(m, alpha: float, normal: Vec, tangential: Vec):
     """Where the inertia force and couple act as one force: h = I·α/(m·a_G) from G."""
     a_g = math.hypot(normal[0] + tangential[0], normal[1] + tangential[1])
     if a_g == 0.0 or alpha == 0.0:
-        return "0 (no couple)"
-    return f"{m.inertia * abs(alpha) / (m.mass * a_g) * 1e3:.4g} mm"
+        return Word("0 (no couple)")
+    return _said(m.inertia * abs(alpha) / (m.mass * a_g) * 1e3, "mm")
+
+
+def _said(value: float, unit: str, spec: str = ".4g") -> tuple[Number, str]:
+    """A number and its unit as a step says them, the number in the language's digits."""
+    return (Number(value, spec), unit)
 
 
 def _loads(work, loads: Loads, link: int, at, inertia) -> list[tuple[Vec, Vec, float, str]]:

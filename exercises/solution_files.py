@@ -23,7 +23,7 @@ from ..constructions.asks import (EFFORTS, Distance, Equivalent, MechanicalAdvan
                                   Rubbing, TransmissionAngle, parse_ask, symbol)
 from ..constructions.checks import FigureSpec, Quantity
 from ..constructions.limit_positions import drawn_limits
-from ..constructions.narration import Word, narrate, phrase, significant
+from ..constructions.narration import Number, Word, narrate, phrase, render, significant
 from ..constructions.record import Kind, Panel, Slice, slice
 from ..constructions.scales import nice
 from ..constructions.velocity_drawing import method_words
@@ -451,14 +451,14 @@ def _overall_figures(ex: Exercise, overall: Overall) -> list[_Sketch]:
         work.scales.space, _holds(sheet), fixed=bool(m.scale), grow=True), sheet), shown)]
 
 
-def _time_ratio_words(m, lp) -> str:
+def _time_ratio_words(m, lp, lang: str = "en") -> str:
     """"The crank turns 222.2° (A″ to A′, cw) in the slow stroke and 137.8° in the quick one"."""
     a = m.link(m.drive.link).names[1]
     start, end = (f"{a}′", f"{a}″") if lp.slow_from == 0 else (f"{a}″", f"{a}′")
     sense = "ccw" if m.drive.omega >= 0 else "cw"
-    return (f"The crank turns {math.degrees(lp.slow):.2f}° from {start} to {end} ({sense}) in "
-            f"the slow stroke and {math.degrees(lp.quick):.2f}° in the quick one: time ratio "
-            f"{math.degrees(lp.slow):.2f}/{math.degrees(lp.quick):.2f} = {lp.time_ratio:.4f}.")
+    slow, quick = Number(math.degrees(lp.slow), ".2f"), Number(math.degrees(lp.quick), ".2f")
+    return narrate(phrase("md.time_ratio", slow=slow, quick=quick, start=start, end=end,
+                          sense=Word(sense), ratio=Number(lp.time_ratio, ".4f")), lang)
 
 
 def _overall_markdown(ex: Exercise, overall: Overall, figures: list[SolutionFigure],
@@ -470,13 +470,13 @@ def _overall_markdown(ex: Exercise, overall: Overall, figures: list[SolutionFigu
         lines += [f"## {_heading(f.heading, lang)} (`{f.stem}.svg`)", ""]
         for number, step in f.shown.numbered():
             lines.append(f"{number}. {narrate(step, lang)}")
-        lines += ["", _time_ratio_words(ex.mechanism, lp), ""]
+        lines += ["", _time_ratio_words(ex.mechanism, lp, lang), ""]
     lines += ["## " + narrate(phrase("md.results"), lang), "",
               narrate(phrase("md.whole_columns"), lang), "|---|---|---|---|---|"]
     for name, q in overall.quantities.items():
         lines.append(f"| {name} | {overall_text(name, q.value, ex.mechanism.units)} | "
                      f"{overall_text(name, q.reference, ex.mechanism.units)} | "
-                     f"{q.rel_error:.2g} | {q.method} |")
+                     f"{q.rel_error:.2g} | {render(Word(q.method), lang)} |")
     return "\n".join(lines) + "\n"
 
 
@@ -507,7 +507,11 @@ def _steps_title(ex: Exercise, lang: str = "en") -> str:
 
 
 def _heading(text: str, lang: str) -> str:
-    """A figure's or a part's heading in ``lang`` (English as it is)."""
+    """A figure's or a part's heading in ``lang`` (English as it is): "V_B by radius
+    rotation" is the quantity and its method."""
+    what, by, method = text.partition(" by ")
+    if by and " " not in what:
+        return narrate(phrase("md.by", what=what, method=Word(method)), lang)
     return narrate(phrase("md.heading", heading=Word(text)), lang)
 
 
@@ -549,7 +553,7 @@ def _steps_markdown(sol: Solution, figures: list[SolutionFigure], *, heading: bo
         for label, qq in rows:
             lines.append(f"| {label} | {_show(qq.value, m.units, name)} | "
                          f"{_show(qq.reference, m.units, name)} | {qq.rel_error:.2g} | "
-                         f"{method_words(qq.method)} |")
+                         f"{render(Word(method_words(qq.method)), lang)} |")
     return "\n".join(lines) + "\n"
 
 

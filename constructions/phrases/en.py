@@ -36,6 +36,9 @@ PHRASES: dict[str, str] = {
     "md.columns": "| quantity | construction | analytic | relative error | method |",
     "md.whole": "The mechanism as a whole",
     "md.whole_columns": "| quantity | answer | check | relative error | method |",
+    "md.by": "{what} by {method}",
+    "md.time_ratio": "The crank turns {slow}° from {start} to {end} ({sense}) in the slow stroke "
+                     "and {quick}° in the quick one: time ratio {slow}/{quick} = {ratio}.",
     "md.heading": "{heading}",
     # ----- position by compass (constructions.assembly) -----------------------------------
     "position.at": "at θ{link} = {angle}",
@@ -261,6 +264,9 @@ PHRASES: dict[str, str] = {
     "force.effort_square": "{name}, the push on the crank pin {a}, stands square to the crank "
                            "{o}{a}: all of it is crank effort, F_T = {effort} (CCW +), and "
                            "the turning moment F_T·{o}{a} = {moment}.",
+    "force.the_guide": "The guide",
+    "force.the_frame_guide": "The frame's guide",
+    "force.the_slot": "The slot of link {link}",
     "force.torque": "Link {d}'s moments about {o}: the driving torque T{d} = {torque}.",
     "force.dyad": "The force polygon of links {i} and {j} together: lay off every known load "
                   "on them head to tail (weights, inertia forces, external forces), at the "

@@ -55,6 +55,26 @@ WORDS: dict[str, str] = {
     "Inertia loads read off the acceleration polygon":
         "بارهای اینرسی از روی چندضلعی شتاب",
     "The force polygons": "چندضلعی\u200cهای نیرو",
+    "0 (no couple)": "۰ (بدون کوپل)",
+    # methods, as the results tables and the headings name them
+    "radius rotation": "دوران شعاع", "parallel lines": "خطوط موازی",
+    "components": "مؤلفه\u200cها", "the line of transmission": "خط انتقال",
+    "force polygons": "چندضلعی\u200cهای نیرو", "inspection (pin)": "مشاهده (لولا)",
+    "Kennedy (circle diagram)": "کندی (دایرهٔ کمکی)", "velocity polygon": "چندضلعی سرعت",
+    "acceleration polygon": "چندضلعی شتاب",
+    "instant centres (ω ratio)": "مراکز آنی (نسبت ω)",
+    "inspection (block on a straight guide)": "مشاهده (لغزنده روی راهنمای مستقیم)",
+    "acceleration polygon (2ω×v_rel)": "چندضلعی شتاب (2ω×v_rel)",
+    "limit positions by compass (lever tangent to the crank circle)":
+        "وضعیت\u200cهای حدی با پرگار (اهرم مماس بر دایرهٔ لنگ)",
+    "limit positions by compass (crank and rod in line)":
+        "وضعیت\u200cهای حدی با پرگار (لنگ و میلهٔ رابط در یک امتداد)",
+    "inspection (rolling contact: the contact point)": "مشاهده (تماس غلتشی: نقطهٔ تماس)",
+    "Kennedy line and velocity ratio": "خط کندی و نسبت سرعت",
+    "the guide's left (a quarter turn counter-clockwise from its direction)":
+        "سمت چپ راهنما (یک ربع دور پادساعتگرد از راستای آن)",
+    "the guide's right (a quarter turn clockwise from its direction)":
+        "سمت راست راهنما (یک ربع دور ساعتگرد از راستای آن)",
 }
 """Small words and headings as Persian says them."""
 
@@ -68,6 +88,9 @@ PHRASES: dict[str, str] = {
     "md.columns": "| کمیت | ترسیم | تحلیلی | خطای نسبی | روش |",
     "md.whole": "مکانیزم به‌صورت کل",
     "md.whole_columns": "| کمیت | پاسخ | کنترل | خطای نسبی | روش |",
+    "md.by": "{what} به روش {method}",
+    "md.time_ratio": "لنگ در کورس کند {slow}° از {start} تا {end} ({sense}) و در کورس تند "
+                     "{quick}° می‌چرخد: نسبت زمانی {slow}/{quick} = {ratio}.",
     "md.heading": "{heading}",
     "position.at": "در θ{link} = {angle}",
     "position.frame_point": "نقطهٔ {point} روی قاب را در ({x}, {y}) مشخص کنید.",
@@ -305,6 +328,9 @@ PHRASES: dict[str, str] = {
     "force.effort_square": "{name}، یعنی نیروی وارد بر لولای لنگ {a}، عمود بر لنگ {o}{a} است: "
                            "تمام آن نیروی مؤثر لنگ است، F_T = {effort} (پادساعتگرد مثبت)، و "
                            "گشتاور چرخشی F_T·{o}{a} = {moment} است.",
+    "force.the_guide": "راهنما",
+    "force.the_frame_guide": "راهنمای قاب",
+    "force.the_slot": "شیار میلهٔ {link}",
     "force.torque": "ممان‌های میلهٔ {d} حول {o}: گشتاور محرک T{d} = {torque}.",
     "force.dyad": "چندضلعی نیروی میله‌های {i} و {j} با هم: همهٔ بارهای معلوم وارد بر آن‌ها "
                   "(وزن‌ها، نیروهای اینرسی، نیروهای خارجی) را با مقیاس نیرو پشت سر هم جدا کنید.",
