@@ -35,8 +35,9 @@ from .errors import TarsimError
 __all__ = ["Phrase", "phrase", "Number", "Quantity", "Word", "Capitalized", "narrate", "render",
            "catalogue", "fixed", "significant", "LANGUAGES"]
 
-LANGUAGES = ("en", "fa")
-"""The languages with a catalogue, the first the default."""
+LANGUAGES = ("en", "fa", "fa_latn")
+"""The languages with a catalogue, the first the default (fa_latn: Persian with Latin
+digits)."""
 
 
 @dataclass(frozen=True, slots=True)

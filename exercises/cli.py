@@ -233,11 +233,14 @@ def check(source, angle):
 @click.option("--allow-undercut", is_flag=True,
               help="A cam whose roller undercuts it, or whose flat face meets a concave "
                    "profile: draw it with the trouble ringed instead of refusing it.")
-@click.option("--lang", type=click.Choice(["en", "fa"]), default="en", show_default=True,
+@click.option("--lang", type=click.Choice(["en", "fa"]), default=None,
               help="The language of steps.md: en, or fa (Persian, in the course notes' "
-                   "terms, with Persian digits). The figures are English for now.")
+                   "terms). Default: the file's lang, else en. The figures are English for "
+                   "now.")
+@click.option("--digits", type=click.Choice(["persian", "latin"]), default="persian",
+              show_default=True, help="The digits of numbers in Persian text.")
 @_fails_cleanly
-def solve(source, out_dir, angle, pdf, paper, allow_undercut, lang):
+def solve(source, out_dir, angle, pdf, paper, allow_undercut, lang, digits):
     """Solve an exercise by graphical construction and check every number.
 
     FILE is a mechanism file whose [ask] table names what to find (see the
@@ -327,6 +330,9 @@ def solve(source, out_dir, angle, pdf, paper, allow_undercut, lang):
     with output_folder(out):      # a folder that cannot be written fails before the solve
         worked = solve_worked(ex)
         reason = cairo_missing() if pdf else None
+        lang = lang or ex.lang
+        if lang == "fa" and digits == "latin":
+            lang = "fa_latn"
         written = worked.write(out, pdf=pdf and reason is None, lang=lang)
     sols, overall = worked.positions, worked.overall
     for name, q in overall.quantities.items():

@@ -94,6 +94,8 @@ class Exercise:
     """The sheet the figures are set on (``graphics.paper.PAPERS``): their scales are chosen
     to fill it."""
     loads: Loads | None = None
+    lang: str = "en"
+    """The language its steps are written in (``lang = "fa"`` in the file)."""
     drafting: Drafting | None = None
     """How precisely a drawing of it is graded (:class:`~.grading.drafting.Drafting`), if
     its ``[grading]`` table says; the course's 0.5 mm and 0.5° otherwise."""
@@ -191,6 +193,10 @@ def parse_exercise(text: str, filename: str = "<string>",
     ask = data.pop("ask", None)
     loading = {t: data.pop(t) for t in LOAD_TABLES if t in data}
     grading = data.pop("grading", None)
+    lang = data.pop("lang", "en")
+    if lang not in ("en", "fa"):
+        raise InputError(f"lang is the language of the steps, en or fa; got {lang!r}",
+                         file=filename, line=where.key("lang"))
     mech = _Reader(data, where, filename).mechanism()
     ex = _read_ask(ask, mech, where, filename, exercise_id)
     loads = read_loads(loading, mech, where, filename)
@@ -207,6 +213,8 @@ def parse_exercise(text: str, filename: str = "<string>",
         tables = Tables({"grading": grading}, where, filename,
                         {"grading": ("pen", "angle", "floor", "weights")})
         ex = replace(ex, drafting=read_drafting(grading, tables))
+    if lang != "en":
+        ex = replace(ex, lang=lang)
     if ask is not None and ex.without_motion:     # a bare mechanism file may still be drawn
         raise InputError(ex.without_motion, file=filename,
                          line=where.key("omega", "input") or where.header("input"), key="input")

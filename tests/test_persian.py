@@ -12,7 +12,10 @@ import string
 import unicodedata
 from pathlib import Path
 
+import pytest
 from click.testing import CliRunner
+
+from tarsim.constructions.errors import InputError
 
 from tarsim.constructions.narration import Quantity, narrate, phrase, render
 from tarsim.constructions.phrases import en, fa
@@ -72,3 +75,28 @@ def test_solve_writes_persian_steps(tmp_path):
     english = (tmp_path / "en")
     CliRunner().invoke(cli, ["solve", "four-bar", "--no-pdf", "-o", str(english)])
     assert "## Results" in (english / "steps.md").read_text(encoding="utf-8")
+
+
+def test_digits_latin_and_a_files_lang(tmp_path):
+    """--digits latin keeps ASCII digits in the Persian text; lang = "fa" in a file asks for
+    Persian without --lang; an unknown lang is refused at its line."""
+    from tarsim.exercises.catalog import resolve
+    from tarsim.exercises.exercise_file import parse_exercise
+
+    out = tmp_path / "latn"
+    result = CliRunner().invoke(cli, ["solve", "four-bar", "--lang", "fa", "--digits", "latin",
+                                      "--no-pdf", "-o", str(out)])
+    assert result.exit_code == 0, result.output
+    steps = (out / "steps.md").read_text(encoding="utf-8")
+    body = steps.split("## نتایج")[0].replace("(داده نشده: ۰)", "")
+    assert "## نتایج" in steps and not any(d in body for d in "۰۱۲۳۴۵۶۷۸۹")
+    assert "100 " in body or "250 " in body
+    text = resolve("four-bar").read_text(encoding="utf-8")
+    path = tmp_path / "fa.toml"
+    path.write_text('lang = "fa"\n' + text, encoding="utf-8")
+    out = tmp_path / "file-fa"
+    result = CliRunner().invoke(cli, ["solve", str(path), "--no-pdf", "-o", str(out)])
+    assert result.exit_code == 0, result.output
+    assert "حل کامل" in (out / "steps.md").read_text(encoding="utf-8")
+    with pytest.raises(InputError, match=r"bad.toml:1: lang is the language of the steps"):
+        parse_exercise('lang = "de"\n' + text, "bad.toml")
