@@ -25,6 +25,7 @@ except ImportError:               # not on Windows: folders are then written unl
 from ..constructions.errors import TarsimError
 
 from .figure import Figure
+from .rtl import for_cairo
 from .svg import to_svg
 
 __all__ = ["RenderError", "FORMATS", "MANIFEST", "write_figure", "write_text", "write_folder",
@@ -67,7 +68,7 @@ def svg_to(svg: str, fmt: str, *, dpi: float = 200.0) -> bytes:
         import cairosvg  # noqa: PLC0415  (lazy: SVG output must not need libcairo)
     except (ImportError, OSError):
         raise RenderError(_NO_CAIRO) from None
-    data = svg.encode("utf-8")
+    data = for_cairo(svg).encode("utf-8")      # Persian shaped: cairosvg cannot shape it
     if fmt == "pdf":
         return cairosvg.svg2pdf(bytestring=data)
     if fmt == "png":

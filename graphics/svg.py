@@ -11,6 +11,7 @@ from __future__ import annotations
 import svgwrite
 
 from .figure import FONT, STYLES, SUB_DROP, SUB_SIZE, Circle, Figure, Path, Style, Text
+from .rtl import RTL_FONT, flip_anchor, is_rtl
 
 __all__ = ["to_svg"]
 
@@ -90,7 +91,12 @@ def _element(dwg: svgwrite.Drawing, item: Path | Circle | Text):
         anchor = "start"
     attrs = {"x": [_n(x)], "y": [_n(y + 0.35 * item.size)], "font-size": _n(item.size),
              "text-anchor": anchor}
-    if item.italic:
+    if is_rtl(item.text + item.sub + item.tail):
+        # Persian: laid right to left by the viewer, in a face with its glyphs; the anchor
+        # turned so the label keeps its box.
+        attrs.update({"direction": "rtl", "font-family": RTL_FONT,
+                      "text-anchor": flip_anchor(anchor)})
+    elif item.italic:
         attrs["font-style"] = "italic"
     if item.weight != "normal":
         attrs["font-weight"] = item.weight

@@ -129,18 +129,19 @@ def test_answers_in_a_table_are_graded_by_their_drafting_tolerance(tmp_path):
     right = q["V_B"].reference["value"]
     answers = {"V_B": right * 1.005, "omega4": -q["omega4"].reference["value"],
                "alpha4": q["alpha4"].reference["value"] * 1.2, "nonsense": 1.0}
-    path = tmp_path / "answers.json"
-    path.write_text(json.dumps(answers), encoding="utf-8")
-    items = {i.name: i for i in grade(SHAPER, path, 1).items}
-    assert items["V_B"].verdict == "correct"             # 0.5 %: a published answer passes
-    assert items["omega4"].verdict == "wrong sense"
-    assert items["alpha4"].verdict == "wrong magnitude"
-    assert items["nonsense"].verdict == "extra"
-    assert items["A_B"].verdict == "missing"
-    rows = tmp_path / "answers.csv"
-    rows.write_text(f"name,value\nV_B,{right}\n", encoding="utf-8")
-    items = {i.name: i for i in grade(SHAPER, rows, 1).items}
-    assert items["V_B"].verdict == "correct"
+    said = _verdicts(tmp_path / "answers.json", json.dumps(answers))
+    assert said["V_B"] == "correct"                      # 0.5 %: a published answer passes
+    assert said["omega4"] == "wrong sense"
+    assert said["alpha4"] == "wrong magnitude"
+    assert said["nonsense"] == "extra"
+    assert said["A_B"] == "missing"
+    assert _verdicts(tmp_path / "answers.csv", f"name,value\nV_B,{right}\n")["V_B"] == "correct"
+
+
+def _verdicts(path, text: str) -> dict[str, str]:
+    """Each item's verdict on a table of answers written to ``path``."""
+    path.write_text(text, encoding="utf-8")
+    return {i.name: i.verdict for i in grade(SHAPER, path, 1).items}
 
 
 BOMB = b"""<?xml version="1.0"?>
@@ -441,15 +442,9 @@ def test_vectors_and_centres_in_a_table_are_graded_by_their_components(tmp_path)
     q = RETURN.quantities
     vb = q["V_B"].reference["vector"]
     i25 = q["I25"].reference["point"]
-    path = tmp_path / "answers.json"
-    path.write_text(json.dumps({"V_B": [-vb[0], -vb[1]], "I25": i25,
-                                "A_B": {"vector": q["A_B"].reference["vector"]}}),
-                    encoding="utf-8")
-    items = {i.name: i for i in grade(SHAPER, path, 1).items}
-    assert items["V_B"].verdict == "wrong sense"
-    assert items["I25"].verdict == "correct"
-    assert items["A_B"].verdict == "correct"
-    rows = tmp_path / "answers.csv"
-    rows.write_text(f"name,x,y\nI25,{i25[0] + 0.2},{i25[1]}\n", encoding="utf-8")
-    items = {i.name: i for i in grade(SHAPER, rows, 1).items}
-    assert items["I25"].verdict == "wrong position"
+    said = _verdicts(tmp_path / "answers.json", json.dumps(
+        {"V_B": [-vb[0], -vb[1]], "I25": i25, "A_B": {"vector": q["A_B"].reference["vector"]}}))
+    assert said["V_B"] == "wrong sense"
+    assert said["I25"] == "correct" and said["A_B"] == "correct"
+    moved = f"name,x,y\nI25,{i25[0] + 0.2},{i25[1]}\n"
+    assert _verdicts(tmp_path / "answers.csv", moved)["I25"] == "wrong position"

@@ -1,0 +1,71 @@
+"""Right-to-left text (Persian) in the figures: kept in logical order in the SVG, shaped
+for cairosvg.
+
+A browser or Inkscape shapes Persian and lays it right to left from the SVG's own text,
+given ``direction="rtl"`` and a font with the glyphs (DejaVu Sans has them; DejaVu Serif,
+the figures' Latin face, has not). cairosvg does neither: it draws the characters unjoined,
+left to right. So the SVG a user gets keeps the text as written, and the copy handed to
+cairosvg for a PDF or PNG has each right-to-left run reshaped into its joined presentation
+forms (arabic-reshaper) and put in visual order (python-bidi, the Unicode bidirectional
+algorithm), its anchor turned back to the left-to-right one. The published SVG never
+carries shaped text: a browser would shape and reverse it a second time.
+"""
+
+from __future__ import annotations
+
+import re
+
+__all__ = ["is_rtl", "RTL_FONT", "for_cairo", "visual"]
+
+RTL_FONT = "DejaVu Sans"
+"""A face with the Persian glyphs, usually present wherever DejaVu is."""
+
+_RTL = re.compile("[\u0590-\u08ff\ufb1d-\ufdff\ufe70-\ufefc]")
+
+_FLIP = {"start": "end", "end": "start"}
+
+
+def is_rtl(text: str) -> bool:
+    """Whether ``text`` has right-to-left letters (Hebrew or Arabic script).
+
+    >>> is_rtl("مقیاس ۱ سانتی‌متر"), is_rtl("V_B = 0.23 m/s")
+    (True, False)
+    """
+    return bool(_RTL.search(text))
+
+
+def flip_anchor(anchor: str) -> str:
+    """The text-anchor that keeps a label's box in place when its direction turns: a
+    right-to-left run's start is its right end."""
+    return _FLIP.get(anchor, anchor)
+
+
+def visual(text: str) -> str:
+    """``text`` as cairosvg must be given it: joined presentation forms, in visual order
+    (numbers keep their own order: ۲۵ stays ۲۵)."""
+    import arabic_reshaper
+    from bidi.algorithm import get_display
+
+    return get_display(arabic_reshaper.reshape(text))
+
+
+def for_cairo(svg: str) -> str:
+    """A copy of ``svg`` (tarsim's own) with every right-to-left run shaped and in visual
+    order, its anchor turned back, for cairosvg; ``svg`` itself if it has none."""
+    if not is_rtl(svg):
+        return svg
+    import xml.etree.ElementTree as ET
+
+    ET.register_namespace("", "http://www.w3.org/2000/svg")
+    ET.register_namespace("xlink", "http://www.w3.org/1999/xlink")
+    ET.register_namespace("ev", "http://www.w3.org/2001/xml-events")
+    root = ET.fromstring(svg)
+    for el in root.iter():
+        if el.tag.rsplit("}", 1)[-1] != "text" or el.get("direction") != "rtl":
+            continue
+        del el.attrib["direction"]
+        el.set("text-anchor", flip_anchor(el.get("text-anchor", "start")))
+        for part in el.iter():
+            if part.text and is_rtl(part.text):
+                part.text = visual(part.text)
+    return ET.tostring(root, encoding="unicode")
