@@ -11,14 +11,13 @@ from __future__ import annotations
 
 import math
 
-from shapely.geometry import Point as SPoint
-
 from ..constructions.checks import NOISE
 from .figure import Figure, Path, Text
-from .force_figure import in_lane, runs_along, typeset_force
+from .force_figure import in_lane, runs_along
 from .labels import LabelPlacer, typeset
+from .load_marks import draw_couple, keep_clear, name_loads
 from .scales import draw_caption, nice_per_cm
-from .symbols import draw_arrow, draw_turning_arrow
+from .symbols import draw_arrow
 
 __all__ = ["draw_free_bodies"]
 
@@ -117,37 +116,20 @@ def _draw_body(mech, link: int, at: dict, forces: list, k_space: float, k_force:
                     tail, head = back
             tail, head = in_lane(tail, head, [(a, b) for a, b, _, _ in arrows])
             draw_arrow(fig, tail, head, "vector")
-            arrows.append((tail, head, name, f"{typeset_force(name)[2]} = {size:.4g} N"))
+            arrows.append((tail, head, name, f" = {size:.4g} N"))
         elif size > NOISE * biggest:             # a zero's rounding is no force at all
             small.append(f"{name.replace('_', '')} = {size:.3g} N on link {link}")
         if abs(couple) > NOISE * biggest * reach:
-            # Couples at one point turn on circles one inside the other.
-            r = 5.0 + 2.5 * sum(math.dist(tail, t[0]) < 0.5 for t in turns)
-            turns.append((tail, draw_turning_arrow(fig, tail, r, math.radians(30),
-                                                   math.copysign(math.radians(240), couple)),
-                          name.replace("Fi", "Mi"), f" = {abs(couple):.4g} N·m", r))
+            draw_couple(fig, tail, couple, name, turns, 5.0)
     placer = LabelPlacer(fig)
     placer.block_drawn()
-    for centre, _, _, _, r in turns:
-        placer.block(SPoint(centre).buffer(r + 0.6))
-    placer.name_points([paper(p) for p in pts] + [mid for _, mid, _, _, _ in turns])
-    placer.name_vectors((a, b) for a, b, _, _ in arrows)
+    placer.name_points([paper(p) for p in pts])
+    keep_clear(placer, arrows, turns)
     for n, p in zip(names, pts):
         text, sub = typeset(n)                  # O₂, as the space diagram names it
         placer.place(text, paper(p), size=2.6, prefer=3 * math.pi / 4, own=paper(p),
                      rings=(1.0, 1.6, 2.3, 3.2, 4.2), sub=sub)
-    for tail, head, name, said in arrows:
-        text, sub, _ = typeset_force(name)
-        ahead = math.atan2(tail[1] - head[1], head[0] - tail[0])   # the arrow's paper angle
-        placer.place_numbered(text, head, [], sub=sub, tail=said, size=2.6, gap=1.0,
-                              prefer=ahead, spread=math.pi / 2, own=(tail, head),
-                              farther=_FARTHER)
-    for centre, mid, name, said, _ in turns:
-        text, sub, tail_text = typeset_force(name)
-        out = math.atan2(centre[1] - mid[1], mid[0] - centre[0])
-        placer.place_numbered(text, mid, [], sub=sub, tail=f"{tail_text}{said}", size=2.6,
-                              gap=1.0, prefer=out, spread=math.pi / 2, own=mid,
-                              farther=_FARTHER)
+    name_loads(placer, arrows, turns, 2.6, _FARTHER)
     x0, _, x1, y1 = fig.bounds()
     fig.add(Text(((x0 + x1) / 2, y1 + 6.0), f"link {link}", 3.0, "middle", False, "bold"))
     return fig

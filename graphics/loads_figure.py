@@ -12,15 +12,14 @@ from __future__ import annotations
 
 import math
 
-from shapely.geometry import Point as SPoint
-
 from ..constructions.record import Slice
 from .figure import Figure, View
-from .force_figure import in_lane, typeset_force
+from .force_figure import in_lane
 from .labels import LabelPlacer
+from .load_marks import draw_couple, keep_clear, name_loads
 from .scales import nice_per_cm
 from .scene import draw_scene
-from .symbols import draw_arrow, draw_turning_arrow
+from .symbols import draw_arrow
 
 __all__ = ["draw_loads"]
 
@@ -78,11 +77,7 @@ def draw_loads(shown: Slice, loads: dict, *, title: str, per_cm: float | None = 
                     small.append(f"{name.replace('Fi', 'Mi')} = {abs(couple):.3g} N·m on link "
                                  f"{link}")
                 elif abs(couple) > _SLIGHT * moment:
-                    r = 4.5 + 2.5 * sum(math.dist(point, t[0]) < 0.5 for t in turns)
-                    mid = draw_turning_arrow(fig, point, r, math.radians(30),
-                                             math.copysign(math.radians(240), couple))
-                    turns.append((point, mid, name.replace("Fi", "Mi"),
-                                  f" = {abs(couple):.4g} N·m", r))
+                    draw_couple(fig, point, couple, name, turns, 4.5)
             for name, (where, f, couple) in inertia.items():
                 offset = _offset(f, couple)
                 if (offset is None or math.hypot(*f) * k < _LEAST
@@ -96,10 +91,7 @@ def draw_loads(shown: Slice, loads: dict, *, title: str, per_cm: float | None = 
                 arrows.append((at, head, name + "′", f" (h = {h:.3g} {unit})"))
         for tail, head, _, _ in arrows:
             placer.block_path([tail, head])
-        for centre, _, _, _, r in turns:
-            placer.block(SPoint(centre).buffer(r + 0.6))
-        placer.name_vectors((a, b) for a, b, _, _ in arrows)
-        placer.name_points([mid for _, mid, _, _, _ in turns])   # each couple's name by its arc
+        keep_clear(placer, arrows, turns)
         return lambda: _name(placer, arrows, turns, small, force_cm)
 
     return draw_scene(shown, title=title, per_cm=per_cm, overlay=overlay)
@@ -109,18 +101,7 @@ def _name(placer: LabelPlacer, arrows, turns, small, force_cm: float):
     """Name every load beside its head and every couple beside its arc, once the diagram's
     own names are placed; the scale, legend and notes the caption takes."""
     page, placer.page = placer.page, None          # the loads may reach past the frame
-    for tail, head, name, said in arrows:
-        text, sub, tail_text = typeset_force(name)
-        ahead = math.atan2(tail[1] - head[1], head[0] - tail[0])
-        placer.place_numbered(text, head, [], sub=sub, tail=tail_text + said, size=2.8,
-                              gap=1.0, prefer=ahead, spread=math.pi / 2, own=(tail, head),
-                              farther=_FARTHER)
-    for centre, mid, name, said, _ in turns:
-        text, sub, tail_text = typeset_force(name)
-        out = math.atan2(centre[1] - mid[1], mid[0] - centre[0])
-        placer.place_numbered(text, mid, [], sub=sub, tail=tail_text + said, size=2.8,
-                              gap=1.0, prefer=out, spread=math.pi / 2, farther=_FARTHER,
-                              own=mid)
+    name_loads(placer, arrows, turns, 2.8, _FARTHER)
     placer.page = page
     legend = [("vector", "a load")]
     if any(name.endswith("′") for _, _, name, _ in arrows):

@@ -23,6 +23,7 @@ from pathlib import Path
 from ...constructions.errors import InputError
 from .grade import Grade, Item
 from .drafting import DRAFTING, Drafting
+from .matching import LEAST_CONDITIONING
 
 __all__ = ["grade_answers", "read_answers", "LENGTH"]
 
@@ -140,7 +141,7 @@ def grade_answers(exercise: str, sol, path: Path, drafting: Drafting = DRAFTING)
 def rel_tol(q, drafting: Drafting) -> float:
     """The relative tolerance of a number read off a drawing of :data:`LENGTH`."""
     return max(drafting.floor, (drafting.pen / LENGTH + math.tan(drafting.angle))
-               / max(q.conditioning, 0.05))
+               / max(q.conditioning, LEAST_CONDITIONING))
 
 
 def _pair_verdict(name: str, q, value: tuple[float, float], pair, rel: float,

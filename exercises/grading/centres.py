@@ -16,11 +16,9 @@ import re
 from .drafting import DRAFTING, Drafting
 from .drawing import Drawing
 from .grade import Grade, Item
-from .matching import match
+from .matching import LEAST_CONDITIONING, Frame, match, rounded
 
 __all__ = ["grade_centres", "read_centre"]
-
-_LEAST_CONDITIONING = 0.05
 
 Vec = tuple[float, float]
 
@@ -68,47 +66,29 @@ def grade_centres(out: Grade, sol, drawing: Drawing, drafting: Drafting = DRAFTI
         return
     a, b = max(((p, q) for p in pins for q in pins if p[0] < q[0]),
                key=lambda pq: math.dist(pq[0][1], pq[1][1]))
-    frames = [_frame(true[a[0]], true[b[0]], a[1], b[1], hand) for hand in (1.0, -1.0)]
-    frame = min(frames, key=lambda f: sum(math.dist(_place(f, true[n]), p) for n, p in pins))
+    world = (true[b[0]][0] - true[a[0]][0], true[b[0]][1] - true[a[0]][1])
+    paper = (b[1][0] - a[1][0], b[1][1] - a[1][1])
+    frames = [Frame.fitted(world, paper, hand, origin=true[a[0]], at=a[1])
+              for hand in (1.0, -1.0)]
+    frame = min(frames, key=lambda f: sum(math.dist(f.place(true[n]), p) for n, p in pins))
     quantities = sol.quantities
     for name in sorted(centres | {q for q in quantities if re.fullmatch(r"I\d\d", q)}):
         q = quantities.get(name)
         got = found.get(("I", name))
         if q is None or "point" not in q.reference:
             if got is not None:
-                out.items.append(Item(name, "extra", None, _round(got), None,
+                out.items.append(Item(name, "extra", None, rounded(got), None,
                                       f"{name} is not asked here, or lies at infinity"))
             continue
-        exp = _place(frame, tuple(q.reference["point"]))
-        tol = drafting.pen / max(q.conditioning, _LEAST_CONDITIONING)
+        exp = frame.place(tuple(q.reference["point"]))
+        tol = drafting.pen / max(q.conditioning, LEAST_CONDITIONING)
         if got is None:
-            out.items.append(Item(name, "missing", _round(exp), None, round(tol, 3),
+            out.items.append(Item(name, "missing", rounded(exp), None, round(tol, 3),
                                   f"{name} is not labelled on the drawing"))
             continue
         miss = math.dist(exp, got)
-        item = Item(name, "correct", _round(exp), _round(got), round(tol, 3))
+        item = Item(name, "correct", rounded(exp), rounded(got), round(tol, 3))
         if miss > tol:
             item.verdict = "wrong position"
             item.message = f"{name} is {miss:.1f} mm from where Kennedy's lines cross"
         out.items.append(item)
-
-
-def _frame(p: Vec, q: Vec, pp: Vec, qq: Vec, hand: float):
-    """The map from world metres to the drawing's paper that takes ``p`` to ``pp`` and
-    ``q`` to ``qq``, of the hand given (paper runs down: a plain drawing flips y)."""
-    v = (q[0] - p[0], -hand * (q[1] - p[1]))
-    w = (qq[0] - pp[0], qq[1] - pp[1])
-    scale = math.hypot(*w) / math.hypot(*v)
-    turn = math.atan2(w[1], w[0]) - math.atan2(v[1], v[0])
-    return scale, turn, hand, p, pp
-
-
-def _place(frame, x: Vec) -> Vec:
-    scale, turn, hand, p, pp = frame
-    v = ((x[0] - p[0]) * scale, -hand * (x[1] - p[1]) * scale)
-    c, s = math.cos(turn), math.sin(turn)
-    return (pp[0] + c * v[0] - s * v[1], pp[1] + s * v[0] + c * v[1])
-
-
-def _round(p: Vec) -> list[float]:
-    return [round(p[0], 3), round(p[1], 3)]

@@ -5,13 +5,18 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
+from dataclasses import dataclass
 
 from .drawing import Drawing
 
-__all__ = ["match", "REACH"]
+__all__ = ["match", "Frame", "rounded", "REACH", "LEAST_CONDITIONING"]
 
 REACH = 8.0
 """Paper (mm) a label may stand from the point it names."""
+
+LEAST_CONDITIONING = 0.05
+"""The least conditioning slack is given for: an item no drawing can place better than this
+is graded at twenty pens."""
 
 Vec = tuple[float, float]
 
@@ -71,3 +76,37 @@ def _to_letters(p: Vec, label) -> float:
     dx = max(x0 - p[0], 0.0, p[0] - x1)
     dy = max(y0 - p[1], 0.0, p[1] - y1)
     return math.hypot(dx, dy)
+
+
+@dataclass(frozen=True)
+class Frame:
+    """How a drawing sets the world on its paper: world ``origin`` at paper ``at``, turned
+    by ``turn``, ``scale`` paper mm a world unit, of either ``hand`` (1: as drawn with y up,
+    paper's y down; −1: mirrored)."""
+
+    scale: float
+    turn: float
+    hand: float
+    origin: Vec = (0.0, 0.0)
+    at: Vec = (0.0, 0.0)
+
+    @classmethod
+    def fitted(cls, world: Vec, paper: Vec, hand: float, scale: float | None = None,
+               origin: Vec = (0.0, 0.0), at: Vec = (0.0, 0.0)) -> Frame:
+        """The frame that lays the world vector ``world`` along the paper vector ``paper``
+        (at their length ratio unless ``scale`` is given), from ``origin`` to ``at``."""
+        ex, ey = world[0], -hand * world[1]
+        turn = math.atan2(paper[1], paper[0]) - math.atan2(ey, ex)
+        return cls(scale or math.hypot(*paper) / math.hypot(*world), turn, hand, origin, at)
+
+    def place(self, x: Vec) -> Vec:
+        """Where the world point (or, from the origin, vector) ``x`` stands on paper."""
+        v = ((x[0] - self.origin[0]) * self.scale, -self.hand * (x[1] - self.origin[1])
+             * self.scale)
+        c, s = math.cos(self.turn), math.sin(self.turn)
+        return (self.at[0] + c * v[0] - s * v[1], self.at[1] + s * v[0] + c * v[1])
+
+
+def rounded(p: Vec) -> list[float]:
+    """A paper point as grade.json gives it, to a thousandth of a millimetre."""
+    return [round(p[0], 3), round(p[1], 3)]

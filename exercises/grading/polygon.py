@@ -34,14 +34,10 @@ from ...constructions.acceleration_polygon import drawn_acceleration_polygon
 from ...constructions.velocity_polygon import drawn_velocity_polygon
 from .drafting import DRAFTING, Drafting
 from .drawing import Drawing
-from .matching import match
+from .matching import LEAST_CONDITIONING, Frame, match, rounded
 from .grade import Grade, Item
 
 __all__ = ["grade_polygons", "read_label"]
-
-_LEAST_CONDITIONING = 0.05
-"""The least conditioning slack is given for: a tip no drawing can place better than this
-is graded at twenty pens."""
 
 Vec = tuple[float, float]
 
@@ -174,13 +170,12 @@ def _grade_one(poly: _Expected, found, stated: float | None, out: Grade, draftin
     f_given = (given[0] - pole[0], given[1] - pole[1])
     # The scale written on the drawing, else the exercise's, else the input's vector's.
     stated = stated or poly.scale
-    scale = stated or math.hypot(*f_given) / math.hypot(*e_given)
-    frames = [_frame(scale, f_given, e_given, hand) for hand in (1.0, -1.0)]
+    frames = [Frame.fitted(e_given, f_given, hand, stated, at=pole) for hand in (1.0, -1.0)]
     others = [n for (k, n) in found if k == poly.kind and n not in ("o", poly.given)
               and n in poly.tips]
 
     def residual(frame):
-        return sum(math.dist(found[(poly.kind, n)], _place(frame, pole, poly.tips[n]))
+        return sum(math.dist(found[(poly.kind, n)], frame.place(poly.tips[n]))
                    for n in others)
     frame = min(frames, key=residual)
     names = sorted(set(poly.tips) | {n for (k, n) in found if k == poly.kind} - {"o"})
@@ -191,7 +186,7 @@ def _grade_one(poly: _Expected, found, stated: float | None, out: Grade, draftin
             out.items.append(Item(label, "extra", None, list(found[(poly.kind, name)]), None,
                                   f"{label} names no point of this polygon"))
             continue
-        exp = _place(frame, pole, poly.tips[name])
+        exp = frame.place(poly.tips[name])
         expected_at[name] = exp
         if name == poly.given and stated is None:
             continue                              # it set the scale: nothing to grade
@@ -199,12 +194,12 @@ def _grade_one(poly: _Expected, found, stated: float | None, out: Grade, draftin
         # The tip's own conditioning: a tip found by a clean cut is held tight, one by a
         # near-parallel crossing gets the slack that crossing implies.
         cond = max((poly.tip_conditioning or {}).get(name, poly.conditioning),
-                   _LEAST_CONDITIONING)
+                   LEAST_CONDITIONING)
         tol = max(drafting.pen, (drafting.pen + length * math.tan(drafting.angle)) / cond)
         got = found.get((poly.kind, name))
         if got is None:
             if name in poly.required:
-                out.items.append(Item(label, "missing", _round(exp), None, round(tol, 3),
+                out.items.append(Item(label, "missing", rounded(exp), None, round(tol, 3),
                                       f"{label} is not labelled on the drawing"))
             continue
         out.items.append(_verdict(label, name, poly, frame, pole, exp, got, tol))
@@ -212,32 +207,17 @@ def _grade_one(poly: _Expected, found, stated: float | None, out: Grade, draftin
     return poly, frame, pole, expected_at
 
 
-def _frame(scale: float, f_given: Vec, e_given: Vec, hand: float):
-    """The map from an SI vector to paper: flip y (paper runs down) and, for the other
-    hand, mirror; turn so the input's vector lies along the drawn one; scale."""
-    ex, ey = e_given[0], -hand * e_given[1]
-    turn = math.atan2(f_given[1], f_given[0]) - math.atan2(ey, ex)
-    return scale, turn, hand
-
-
-def _place(frame, pole: Vec, v: Vec) -> Vec:
-    scale, turn, hand = frame
-    x, y = v[0] * scale, -hand * v[1] * scale
-    c, s = math.cos(turn), math.sin(turn)
-    return (pole[0] + c * x - s * y, pole[1] + s * x + c * y)
-
-
 def _verdict(label: str, name: str, poly: _Expected, frame, pole: Vec, exp: Vec, got: Vec,
              tol: float) -> Item:
     """The verdict on one tip found at ``got`` where ``exp`` was expected."""
-    item = Item(label, "correct", _round(exp), _round(got), round(tol, 3))
+    item = Item(label, "correct", rounded(exp), rounded(got), round(tol, 3))
     miss = math.dist(exp, got)
     if miss <= tol:
         return item
     for point, (cor, link) in poly.coriolis.items():
         for sign in (2.0, -2.0):
-            flipped = _place(frame, pole, (poly.tips[name][0] + sign * cor[0],
-                                           poly.tips[name][1] + sign * cor[1]))
+            flipped = frame.place((poly.tips[name][0] + sign * cor[0],
+                                   poly.tips[name][1] + sign * cor[1]))
             if math.hypot(*cor) > 0 and math.dist(flipped, got) <= tol:
                 item.verdict = "wrong sense"
                 item.message = (f"Coriolis component at {point.upper()} drawn opposite: turn "
@@ -270,7 +250,3 @@ def _name_swaps(items: list[Item]) -> None:
             if i is not j and math.dist(i.found, j.expected) <= j.tolerance and \
                     math.dist(j.found, i.expected) <= i.tolerance:
                 i.message = f"the labels {i.name} and {j.name} are swapped"
-
-
-def _round(p: Vec) -> list[float]:
-    return [round(p[0], 3), round(p[1], 3)]
