@@ -26,7 +26,6 @@ newton); the forces are read back off it.
 
 from __future__ import annotations
 
-import copy
 import math
 from dataclasses import dataclass, field
 
@@ -100,10 +99,7 @@ class _Shape:
 def force_names(mech: Mechanism) -> set[str]:
     """Every joint force, block couple and driving torque of ``mech``, as an exercise asks
     them: F_23 (of link 2 on link 3), T_14 (a block's couple from its guide), T2."""
-    out = {f"T{mech.drive.link}"}
-    for point in mech.point_names:
-        carriers = sorted(mech.links_at(point))
-        out |= {f"F_{carriers[0]}{other}" for other in carriers[1:]}
+    out = {f"T{mech.drive.link}"} | {f"F_{by}{on}" for _, by, on in mech.pin_pairs}
     for s in mech.slides:
         out.add(f"F_{s.guide_link}{s.link}")
         if s.kind is SlideKind.BLOCK:
@@ -215,14 +211,12 @@ def _with_pin_friction(work, c, group, at, known, scale: float, slip) -> dict:
     mech, loads = work.mechanism, work.loads
     rates = dict(drawn_velocity_polygon(work).rates)
     rates[mech.drive.link], rates[1] = mech.drive.omega, 0.0
-    pins = [(point, by, on) for point in mech.point_names
-            for by, *rest in [sorted(mech.links_at(point))] for on in rest]
+    pins = mech.pin_pairs
     sizes: dict = {}
     rounds = 0
     for _ in range(_ROUNDS):
         rounds += 1
-        trial = copy.copy(c)
-        trial.steps = dict(c.steps)                # a scratch sheet over the drawing so far
+        trial = c.scratch()                        # a scratch sheet over the drawing so far
         with_couples = _pin_couples(known, pins, sizes, rates, at, loads.friction_circle)
         locks = TarsimError(f"with friction circles of {loads.friction_circle * 1e3:g} mm "
                             "the pins' forces do not settle: the mechanism locks at this "
@@ -272,10 +266,7 @@ def _pin_couples(known, pins, sizes, rates, at, rho: float) -> dict:
 def _bodies(mech: Mechanism, out: Forces, at, known) -> dict[int, list]:
     """Every force on each moving link: its loads, each joint's force on it (F_ab on b, its
     reaction on a) and each block's couple, with the driving torque on the input."""
-    where = {}
-    for point in mech.point_names:
-        carriers = sorted(mech.links_at(point))
-        where |= {f"F_{carriers[0]}{other}": point for other in carriers[1:]}
+    where = {f"F_{by}{on}": point for point, by, on in mech.pin_pairs}
     where |= {f"F_{s.guide_link}{s.link}": s.point for s in mech.slides}
     bodies = {k: list(v) for k, v in known.items()}
     for name, f in out.joints.items():

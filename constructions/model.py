@@ -451,6 +451,16 @@ class Mechanism:
         return self._carriers.get(point, ())
 
     @cached_property
+    def pin_pairs(self) -> tuple[tuple[str, int, int], ...]:
+        """Every turning pair as its force is named, F_{lower}{other}: (point, the
+        lowest-numbered link at the point, another link there)."""
+        out = []
+        for point in self.point_names:
+            carriers = sorted(self.links_at(point))
+            out += [(point, carriers[0], other) for other in carriers[1:]]
+        return tuple(out)
+
+    @cached_property
     def _carriers(self) -> dict[str, tuple[int, ...]]:
         out: dict[str, tuple[int, ...]] = {}
         for k in self.links:

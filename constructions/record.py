@@ -15,6 +15,8 @@ written steps are one numbering, :meth:`Slice.numbered`.
 
 from __future__ import annotations
 
+import copy
+
 from collections.abc import Callable, Iterable, Iterator, Mapping
 from dataclasses import dataclass, field
 from enum import StrEnum
@@ -199,6 +201,13 @@ class Construction:
     def output(self, ref: Ref) -> Any:
         """Return the geometric object a step made."""
         return self.steps[ref].output
+
+    def scratch(self) -> Construction:
+        """A copy to draw a trial on: the steps so far shared, the trial's its own, so the
+        record itself is left as it was (a construction found by trial, as friction's)."""
+        out = copy.copy(self)
+        out.steps = dict(self.steps)
+        return out
 
     def give(self, ref: Ref, obj: Any, *, label: str, phrase: Phrase | None = None,
              kind: Kind | None = None, panel: Panel = Panel.SPACE, about: Any = None) -> Ref:

@@ -139,7 +139,7 @@ def balance(mech: Mechanism, kin: Kinematics, loads: Loads) -> Statics:
                                      pin_couples(mech, kin, loads, sizes))
         held = {i: (1.0 if n >= 0.0 else -1.0) for i, n in pushes.items()}
         now = {pin: math.hypot(*statics.joint(f"F_{pin[1]}{pin[2]}").force)
-               for pin in pins(mech)} if loads.friction_circle else {}
+               for pin in mech.pin_pairs} if loads.friction_circle else {}
         biggest = max([j.size for j in statics.joints if j.name.startswith("F")] + [1e-300])
         if not math.isfinite(biggest):
             break                           # the pins' couples ran away: it locks
@@ -162,23 +162,13 @@ _ROUNDS = 200
 the friction circle over the link each round, the slides' sides settle in a few."""
 
 
-def pins(mech: Mechanism) -> list[tuple[str, int, int]]:
-    """Every turning pair: (point, the lower-numbered link, the other), as the joint
-    F_{lower}{other} names it."""
-    out = []
-    for point in mech.point_names:
-        carriers = sorted(mech.links_at(point))
-        out += [(point, carriers[0], other) for other in carriers[1:]]
-    return out
-
-
 def pin_couples(mech: Mechanism, kin: Kinematics, loads: Loads,
                 sizes: dict[tuple[str, int, int], float]) -> dict[int, float]:
     """Each link's friction couple from its pins (N·m, CCW +): at a pin whose force is
     ``sizes[pin]``, the force touches the friction circle of radius ρ on the side that
     resists the turning of one link on the other, a couple ρ·|F| against it on each."""
     out: dict[int, float] = {}
-    for pin in pins(mech):
+    for pin in mech.pin_pairs:
         _, by, on = pin
         turning = kin.omegas.get(on, 0.0) - kin.omegas.get(by, 0.0)
         if turning == 0.0 or pin not in sizes:
@@ -230,16 +220,13 @@ def _solve(mech: Mechanism, kin: Kinematics, loads: Loads, sides: dict[int, floa
         o = kin.origins[link] if link != 1 else (0.0, 0.0)
         return (at[0] - o[0], at[1] - o[1])
 
-    for point in mech.point_names:
-        carriers = sorted(mech.links_at(point))
+    for point, by, other in mech.pin_pairs:
         at = kin.points.get(point)
-        for other in carriers[1:]:
-            by = carriers[0]
-            name = fresh(f"F_{by}{other}")
-            for axis, unit in (("x", (1.0, 0.0)), ("y", (0.0, 1.0))):
-                add(name, by, other, at, axis, {
-                    other: (unit[0], unit[1], _cross(arm(other, at), unit)),
-                    by: (-unit[0], -unit[1], -_cross(arm(by, at), unit))})
+        name = fresh(f"F_{by}{other}")
+        for axis, unit in (("x", (1.0, 0.0)), ("y", (0.0, 1.0))):
+            add(name, by, other, at, axis, {
+                other: (unit[0], unit[1], _cross(arm(other, at), unit)),
+                by: (-unit[0], -unit[1], -_cross(arm(by, at), unit))})
     slide_column = {}
     for k, s in enumerate(mech.slides):
         at = kin.points[s.point] if s.point in kin.points else world_point(
@@ -338,7 +325,7 @@ def power_torque(mech: Mechanism, kin: Kinematics, loads: Loads,
         power -= math.fsum(
             loads.friction_circle * math.hypot(*statics.joint(f"F_{by}{on}").force)
             * abs(kin.omegas.get(on, 0.0) - kin.omegas.get(by, 0.0))
-            for _, by, on in pins(mech))
+            for _, by, on in mech.pin_pairs)
     return -power / w_in
 
 
