@@ -417,13 +417,8 @@ def _side(laid: Vec, guide: Vec, slip, other: Vec | None, other_at=None) -> floa
     for side in (1.0, -1.0):
         u = leaning(normal, sliding, mu, side)
         w = other if other_at is None else other_at(u)
-        if w is None:
-            continue
-        det = u[0] * w[1] - u[1] * w[0]
-        if det == 0.0:
-            continue
-        push = (-laid[0] * w[1] + laid[1] * w[0]) / det      # laid + push·u + b·w = 0
-        if push * side >= 0.0:
+        parts = None if w is None else _closing(laid, u, w)
+        if parts is not None and parts[0] * side >= 0.0:
             return side
     return 1.0
 
@@ -435,15 +430,20 @@ def _sides(laid: Vec, first, second, mu: float) -> tuple[float, float]:
     n1, n2 = (-first[0][1], first[0][0]), (-second[0][1], second[0][0])
     for s1 in (1.0, -1.0):
         for s2 in (1.0, -1.0):
-            u, w = leaning(n1, first[1], mu, s1), leaning(n2, second[1], mu, s2)
-            det = u[0] * w[1] - u[1] * w[0]
-            if det == 0.0:
-                continue
-            a = (-laid[0] * w[1] + laid[1] * w[0]) / det      # laid + a·u + b·w = 0
-            b = (-u[0] * laid[1] + u[1] * laid[0]) / det
-            if a * s1 >= 0.0 and b * s2 >= 0.0:
+            parts = _closing(laid, leaning(n1, first[1], mu, s1),
+                             leaning(n2, second[1], mu, s2))
+            if parts is not None and parts[0] * s1 >= 0.0 and parts[1] * s2 >= 0.0:
                 return s1, s2
     return 1.0, 1.0
+
+
+def _closing(laid: Vec, u: Vec, w: Vec) -> tuple[float, float] | None:
+    """The multiples a, b with laid + a·u + b·w = 0: what two lines of known direction close
+    a polygon with; None when they run parallel."""
+    det = u[0] * w[1] - u[1] * w[0]
+    if det == 0.0:
+        return None
+    return ((-laid[0] * w[1] + laid[1] * w[0]) / det, (-u[0] * laid[1] + u[1] * laid[0]) / det)
 
 
 def _carries(loads) -> bool:
