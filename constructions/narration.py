@@ -23,8 +23,10 @@ catalogue and nothing else.
 from __future__ import annotations
 
 import importlib
-from collections.abc import Iterable
 import re
+from collections.abc import Iterable, Iterator
+from contextlib import contextmanager
+from contextvars import ContextVar
 from dataclasses import dataclass
 from functools import cache
 from types import ModuleType
@@ -33,11 +35,91 @@ from typing import Any
 from .errors import TarsimError
 
 __all__ = ["Phrase", "phrase", "Number", "Quantity", "Word", "Capitalized", "narrate", "render",
-           "catalogue", "fixed", "significant", "LANGUAGES"]
+           "catalogue", "fixed", "significant", "LANGUAGES", "speaking", "spoken", "words",
+           "unit_words", "numerals", "measure_words", "right_to_left"]
 
 LANGUAGES = ("en", "fa", "fa_latn")
 """The languages with a catalogue, the first the default (fa_latn: Persian with Latin
 digits)."""
+
+
+_SPOKEN: ContextVar[str] = ContextVar("tarsim_spoken", default="en")
+"""The language a figure's own words are set in while it is drawn (:func:`speaking`)."""
+
+
+@contextmanager
+def speaking(lang: str) -> Iterator[str]:
+    """Draw in ``lang``: every :func:`words` said inside is from its catalogue.
+
+    A figure's words are set deep in its drawing (a legend's samples, a scale's name), so
+    the language is a setting of the drawing, as a locale is, rather than an argument
+    every drawing function passes on.
+
+    >>> with speaking("fa"):
+    ...     words("Velocity scale")
+    'مقیاس سرعت'
+    """
+    catalogue(lang)                     # an unknown language is refused here, not mid-figure
+    token = _SPOKEN.set(lang)
+    try:
+        yield lang
+    finally:
+        _SPOKEN.reset(token)
+
+
+def spoken() -> str:
+    """The language being drawn in (English unless inside :func:`speaking`)."""
+    return _SPOKEN.get()
+
+
+def words(text: str, **args: Any) -> str:
+    """A figure's ``text`` in the language being spoken, its ``{fields}`` filled with
+    ``args`` rendered as a phrase's are; English is the text itself.
+
+    >>> words("{name} circle", name="base")
+    'base circle'
+    """
+    lang = spoken()
+    template = catalogue(lang).WORDS.get(text, text)
+    return template.format(**{k: render(v, lang) for k, v in args.items()}) if args else template
+
+
+def unit_words(unit: str) -> str:
+    """A compound unit ("mm/s²", "N·m") as the spoken language writes it.
+
+    >>> with speaking("fa"):
+    ...     unit_words("mm/s")
+    'میلی‌متر بر ثانیه'
+    """
+    names = catalogue(spoken()).UNITS
+    if unit in names:
+        return names[unit]
+    base, slash, per = unit.partition("/")
+    return names.get(base, base) + (names.get(slash + per, slash + per) if slash else "")
+
+
+def measure_words(text: str) -> str:
+    """A measure as the file's units print it ("679.1 mm", "60°") in the spoken language's
+    digits and unit names.
+
+    >>> with speaking("fa"):
+    ...     measure_words("679.1 mm")
+    '۶۷۹٫۱ میلی\u200cمتر'
+    """
+    number, space, unit = text.rpartition(" ")
+    if not space:
+        return numerals(text)
+    return f"{numerals(number)} {unit_words(unit)}"
+
+
+def numerals(text: str) -> str:
+    """A number already formatted ("12.5", "−3") in the spoken language's digits."""
+    return catalogue(spoken()).digits(text)
+
+
+def right_to_left() -> bool:
+    """Whether the spoken language reads right to left (a caption then aligns right)."""
+    return getattr(catalogue(spoken()), "DIRECTION", "ltr") == "rtl"
 
 
 @dataclass(frozen=True, slots=True)
@@ -174,6 +256,8 @@ def narrate(item: Any, lang: str = "en") -> str:
     TarsimError
         If ``lang`` has no catalogue, or the catalogue has no phrase of that key.
     """
+    if isinstance(item, str):         # words already said (a user's, or a note's)
+        return item
     p = item if isinstance(item, Phrase) or item is None else item.phrase
     if p is None:
         return ""

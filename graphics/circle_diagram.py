@@ -16,6 +16,7 @@ from shapely.geometry import LineString
 from shapely.geometry import Point as SPoint
 
 from ..constructions.centres import Centre
+from ..constructions.narration import Number, right_to_left, words
 from ..constructions.record import Kind, Slice
 
 from .figure import Circle, Figure, Path, Text, text_width
@@ -37,7 +38,7 @@ def triangle_text(centre: Centre) -> list[str]:
     was a common normal at a slot or contact, not a triangle, is "common normal".
     """
     i, j = centre.pair
-    return ["common normal" if k is None else f"Δ{i}{k}{j}" for k in centre.triangles]
+    return [words("common normal") if k is None else f"Δ{i}{k}{j}" for k in centre.triangles]
 
 
 def secondary_text(centre: Centre) -> str:
@@ -131,11 +132,13 @@ def _caption(fig: Figure, head: str, primaries: int, found: list[Centre], n: int
     x0, y0, x1, y1 = fig.bounds()
     total = n * (n - 1) // 2
     kennedy = total - primaries
-    count = (f"n = {n} links, N = n(n−1)/2 = {total} centres: {primaries} by inspection, "
-             f"{kennedy} by Kennedy")
+    count = words("n = {n} links, N = n(n−1)/2 = {total} centres: {primaries} by inspection, "
+                  "{kennedy} by Kennedy", n=Number(n, "d"), total=Number(total, "d"),
+                  primaries=Number(primaries, "d"), kennedy=Number(kennedy, "d"))
     items = [secondary_text(c) for c in found]
-    intro = ("Found by Kennedy, in order (dashed chords):" if upto is None else
-             f"Found by Kennedy, the first {len(found)} of {kennedy}:")
+    intro = (words("Found by Kennedy, in order (dashed chords):") if upto is None else
+             words("Found by Kennedy, the first {found} of {kennedy}:",
+                   found=Number(len(found), "d"), kennedy=Number(kennedy, "d")))
     col = max([text_width(t, 3.0) for t in items], default=0.0) + 6.0
     width = max(x1 - x0 + 2 * _MARGIN, text_width(head, 3.6) + 2 * _MARGIN,
                 text_width(count, 3.2) + 2 * _MARGIN, text_width(intro, 3.2) + 2 * _MARGIN)
@@ -143,17 +146,20 @@ def _caption(fig: Figure, head: str, primaries: int, found: list[Centre], n: int
     width = max(width, cols * col + 2 * _MARGIN)
     fig.shift(_MARGIN - x0 + (width - (x1 - x0) - 2 * _MARGIN) / 2, _MARGIN - y0)
     y = y1 - y0 + 2 * _MARGIN + 2.0
-    fig.add(Text((_MARGIN, y), head, 3.6, "start", italic=False, weight="bold"))
+    # A right-to-left caption reads from the right margin, its columns from the right.
+    edge, anchor, way = ((width - _MARGIN, "end", -1.0) if right_to_left() else
+                         (_MARGIN, "start", 1.0))
+    fig.add(Text((edge, y), head, 3.6, anchor, italic=False, weight="bold"))
     y += 5.2
-    fig.add(Text((_MARGIN, y), count, 3.2, "start", italic=False))
+    fig.add(Text((edge, y), count, 3.2, anchor, italic=False))
     y += 5.2
     if items:
-        fig.add(Text((_MARGIN, y), intro, 3.2, "start", italic=False))
+        fig.add(Text((edge, y), intro, 3.2, anchor, italic=False))
         y += 5.0
         rows = -(-len(items) // cols)
         for k, text in enumerate(items):
             r, c = k % rows, k // rows
-            fig.add(Text((_MARGIN + c * col, y + r * 4.6), text, 3.0, "start", italic=False))
+            fig.add(Text((edge + way * c * col, y + r * 4.6), text, 3.0, anchor, italic=False))
         y += rows * 4.6
     fig.width = round(width, 1)
     fig.height = round(y + 2.0, 1)

@@ -25,7 +25,7 @@ from shapely.geometry import MultiPoint, Point as SPoint
 
 from ..constructions.assembly import Assembly
 from ..constructions.model import Arc, Mechanism, Slide, SlideKind
-from ..constructions.narration import significant
+from ..constructions.narration import significant, words
 from ..constructions.scales import face_ends, space_per_cm
 
 from .figure import Circle, Figure, Path, Text, View, arc_points
@@ -95,7 +95,7 @@ def input_caption(m: Mechanism) -> str:
     if d.omega:
         w = abs(d.omega) if u.angular_velocity == "rad/s" else abs(d.omega) * 60 / (2 * math.pi)
         sense = "ccw" if d.omega > 0 else "cw"
-        params += f",  ω{sub} = {significant(w)} {u.angular_velocity} {sense}"
+        params += f",  ω{sub} = {significant(w)} {u.angular_velocity} {words(sense)}"
     return params
 
 

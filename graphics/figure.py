@@ -11,6 +11,9 @@ import math
 import pathlib
 from collections.abc import Callable
 from dataclasses import dataclass, field, replace
+from functools import lru_cache
+
+from .rtl import is_rtl, joined
 
 __all__ = ["Style", "STYLES", "View", "Path", "Circle", "Text", "Figure", "FONT", "text_width",
            "wrap_text",
@@ -146,6 +149,11 @@ class Text:
     def width(self) -> float:
         """Approximate advance width on paper, the subscript and tail included."""
         bold = 1.1 if self.weight == "bold" else 1.0
+        if is_rtl(self.text + self.sub + self.tail):    # each part at its own face's width
+            parts = ((self.text, self.size), (self.sub, SUB_SIZE * self.size),
+                     (self.tail, self.size))
+            return sum(text_width(t, s, bold=bold > 1.0) * (1.0 if is_rtl(t) else bold)
+                       for t, s in parts)
         return bold * (text_width(self.text, self.size) + text_width(self.sub, SUB_SIZE * self.size)
                        + text_width(self.tail, self.size))
 
@@ -195,15 +203,30 @@ def clear_of(label: Text, taken: list, *, keep: bool = False,
     return label
 
 
-def text_width(text: str, size: float) -> float:
-    """Advance width of ``text`` in DejaVu Serif at ``size`` mm (0.62 em for unlisted glyphs).
+def text_width(text: str, size: float, *, bold: bool = False) -> float:
+    """Advance width of ``text`` in DejaVu Serif at ``size`` mm (0.62 em for unlisted glyphs);
+    a right-to-left text in DejaVu Sans, the face it is set in, ``bold`` or not (a Latin
+    label's bold is allowed for by its :class:`Text`).
 
     Examples
     --------
     >>> round(text_width("VI", 10.0), 2)
     11.2
     """
+    if is_rtl(text):
+        return _rtl_width(text, bold) * size
     return sum(_ADVANCE.get(ch, 0.62) for ch in text) * size
+
+
+@lru_cache(maxsize=4096)
+def _rtl_width(text: str, bold: bool) -> float:
+    """Width (em) of a right-to-left label as it is drawn: its letters joined (each in the
+    presentation form it takes beside its neighbours) and set in DejaVu Sans, whose
+    advances are read from the font (:mod:`.sans_advances`)."""
+    from .sans_advances import ADVANCE, BOLD
+
+    table = BOLD if bold else ADVANCE
+    return sum(table.get(ch, 0.62) for ch in joined(text))
 
 
 def wrap_text(text: str, size: float, width: float, *, indent: str = "",

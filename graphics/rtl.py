@@ -14,8 +14,9 @@ carries shaped text: a browser would shape and reverse it a second time.
 from __future__ import annotations
 
 import re
+from functools import cache
 
-__all__ = ["is_rtl", "RTL_FONT", "for_cairo", "visual"]
+__all__ = ["is_rtl", "RTL_FONT", "for_cairo", "visual", "joined"]
 
 RTL_FONT = "DejaVu Sans"
 """A face with the Persian glyphs, usually present wherever DejaVu is."""
@@ -43,10 +44,25 @@ def flip_anchor(anchor: str) -> str:
 def visual(text: str) -> str:
     """``text`` as cairosvg must be given it: joined presentation forms, in visual order
     (numbers keep their own order: ۲۵ stays ۲۵)."""
-    import arabic_reshaper
     from bidi.algorithm import get_display
 
-    return get_display(arabic_reshaper.reshape(text))
+    # The base direction is the SVG's own (rtl), not guessed from the first letter: a line
+    # that opens with a Latin name ("Four-bar: مقیاس …") still reads right to left.
+    return get_display(joined(text), base_dir="R")
+
+
+@cache
+def _reshaper():
+    import arabic_reshaper
+
+    # Marks kept: the ezafe of "دایرهٔ" is a combining hamza, which the default deletes.
+    return arabic_reshaper.ArabicReshaper(configuration={"delete_harakat": False})
+
+
+def joined(text: str) -> str:
+    """``text`` with each Arabic-script letter in the presentation form it takes beside its
+    neighbours (the glyphs a shaper would draw), its marks kept; still in logical order."""
+    return _reshaper().reshape(text)
 
 
 def for_cairo(svg: str) -> str:

@@ -9,7 +9,8 @@ from __future__ import annotations
 import re
 from collections.abc import Sequence
 
-from ..constructions.narration import significant
+from ..constructions.narration import (numerals, right_to_left, significant, spoken, unit_words,
+                                      words)
 from ..constructions.scales import Stated, nice
 
 from .figure import Figure, Path, Text, text_width, wrap_text
@@ -74,9 +75,17 @@ def scale_text(per_cm: float, unit: str) -> str:
     a scale the exercise states (:class:`~tarsim.constructions.scales.Stated`) as it states
     it ("3 cm = 18 cm/s")."""
     if isinstance(per_cm, Stated):
-        return per_cm.words
+        if spoken() == "en":
+            return per_cm.words
+        return _statement(number_text(per_cm.paper_cm), per_cm.amount, per_cm.unit)
     k, amount = paper_ratio(per_cm)
-    return f"{k} cm = {number_text(amount)} {unit}"
+    return _statement(str(k), amount, unit)
+
+
+def _statement(paper_cm: str, amount: float, unit: str) -> str:
+    """"k cm = N unit" in the language being spoken (the amount in its digits)."""
+    return (f"{numerals(paper_cm)} {unit_words('cm')} = {numerals(number_text(amount))} "
+            f"{unit_words(unit)}")
 
 
 def _bar(per_cm: float, unit: str) -> tuple[int, float, str]:
@@ -93,7 +102,7 @@ def _bar(per_cm: float, unit: str) -> tuple[int, float, str]:
 def bar_room(per_cm: float, unit: str) -> float:
     """The width (paper mm) :func:`draw_scale_bar` takes with its unit after the last number."""
     k, _, unit = _bar(per_cm, unit)
-    return 10.0 * (k if k > 1 else 4) + text_width(f" {unit}", 2.6) + 6.0
+    return 10.0 * (k if k > 1 else 4) + text_width(f" {unit_words(unit)}", 2.6) + 6.0
 
 
 def draw_scale_bar(fig: Figure, at: tuple[float, float], per_cm: float, unit: str,
@@ -113,7 +122,7 @@ def draw_scale_bar(fig: Figure, at: tuple[float, float], per_cm: float, unit: st
         fig.add(Path(((xa, y0 - h / 2), (xb, y0 - h / 2), (xb, y0 + h / 2), (xa, y0 + h / 2)),
                      style, closed=True))
     for i in ticks:
-        label = number_text(per_cm * i) + (f" {unit}" if i == cm else "")
+        label = numerals(number_text(per_cm * i)) + (f" {unit_words(unit)}" if i == cm else "")
         fig.add(Text((x0 + 10.0 * i, y0 + h / 2 + 2.4), label, size=2.6,
                      anchor="middle" if i < cm else "start", italic=False))
     return 10.0 * cm
@@ -157,12 +166,18 @@ def draw_caption(fig: Figure, heading: str, lines: Sequence[str], *, per_cm: flo
     ``scale_name`` opens ("Velocity scale 1 cm = 5 mm/s"), and its bar; then, if given,
     a ``second`` scale (name, per cm, unit) and its bar, as for the velocities drawn on
     a space diagram. Under both: a ``legend`` of (style, name) line samples, then
-    ``notes``.
+    ``notes``. In a right-to-left language the caption is mirrored: heading, lines, legend
+    and notes align right and the scales stand at the left (a bar still reads left to
+    right, as its numbers do). The scale and legend names are said in the language being
+    spoken (:func:`~tarsim.constructions.narration.words`); the heading, lines and notes
+    come already said.
     """
     x0, y0, x1, y1 = fig.bounds()
     fig.shift(margin - x0, margin - y0)
     head = _heading(heading)
-    scales = [(scale_name, per_cm, unit)] + ([second] if second else [])
+    scales = [(words(scale_name), per_cm, unit)] + ([(words(second[0]), *second[1:])]
+                                                    if second else [])
+    legend = [(style, words(name)) for style, name in legend]
     texts = [f"{name} {scale_text(per, u)}" for name, per, u in scales]
     left = max([head.width] + [text_width(t, 3.2) for t in lines])
     right = max([text_width(t, 3.2) for t in texts]
@@ -177,26 +192,30 @@ def draw_caption(fig: Figure, heading: str, lines: Sequence[str], *, per_cm: flo
              for line in wrap_text(note, 3.0, max(width - 2 * margin, _NOTE_COLUMN))]
     width = max(width, max([text_width(n, 3.0) for n in notes], default=0.0) + 2 * margin)
     fig.shift((width - (x1 - x0) - 2 * margin) / 2, 0.0)
+    rtl = right_to_left()
+    # The reading edge a text line starts from: the left margin, or the right one.
+    edge, anchor, way = (width - margin, "end", -1.0) if rtl else (margin, "start", 1.0)
     top = y1 - y0 + 2 * margin
     y = top + 3.0
-    fig.add(Text((margin, y), head.text, head.size, "start", False, "bold", head.sub, head.tail))
+    fig.add(Text((edge, y), head.text, head.size, anchor, False, "bold", head.sub, head.tail))
     for text in lines:
         y += 5.2
-        fig.add(Text((margin, y), text, 3.2, "start", italic=False))
-    bar_x = width - margin - right
+        fig.add(Text((edge, y), text, 3.2, anchor, italic=False))
+    bar_x = margin if rtl else width - margin - right
     for k, (text, (_, per, u)) in enumerate(zip(texts, scales)):
-        fig.add(Text((bar_x, top + 3.0 + 13.0 * k), text, 3.2, "start", italic=False))
+        fig.add(Text((bar_x + right if rtl else bar_x, top + 3.0 + 13.0 * k), text, 3.2, anchor,
+                     italic=False))
         draw_scale_bar(fig, (bar_x, top + 8.0 + 13.0 * k), per, u)
     y = max(y + 5.2, top + 15.0 + 13.0 * (len(scales) - 1))
     for row in _legend_rows(legend, width - 2 * margin):
-        x = margin
+        x = edge
         for style, name in row:
-            fig.add(Path(((x, y), (x + 10.0, y)), style))
-            fig.add(Text((x + 12.0, y), name, 2.8, "start", italic=False))
-            x += 18.0 + text_width(name, 2.8)
+            fig.add(Path(((x, y), (x + way * 10.0, y)), style))
+            fig.add(Text((x + way * 12.0, y), name, 2.8, anchor, italic=False))
+            x += way * (18.0 + text_width(name, 2.8))
         y += 4.8
     for note in notes:
-        fig.add(Text((margin, y), note, 3.0, "start", italic=False))
+        fig.add(Text((edge, y), note, 3.0, anchor, italic=False))
         y += 4.4
     fig.width = round(width, 1)
     fig.height = round(y + 1.0, 1)

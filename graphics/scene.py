@@ -41,6 +41,7 @@ from ..constructions.centres import Centre
 from ..constructions.errors import TarsimError
 from ..constructions.measures import Angle, Dimension
 from ..constructions.model import SlideKind
+from ..constructions.narration import measure_words, numerals, words
 from ..constructions.record import Kind, Panel, Ref, Role, Slice, Step
 
 from .diagram import _Diagram, input_caption
@@ -458,7 +459,7 @@ class _Scene(_Diagram):
                 continue
             centre, radius = self.angle_arc(step)
             at = draw_turning_arrow(self.fig, centre, radius, out.start, out.sweep, "dimension")
-            text = f"{out.degrees:.2f}° {step.label}".strip()
+            text = f"{numerals(f'{out.degrees:.2f}')}° {words(step.label)}".strip()
             self.label(text, at, [step], prefer=out.start + out.sweep / 2, gap=1.6, size=3.2)
 
     def angle_arc(self, step: Step) -> tuple[tuple[float, float], float]:
@@ -507,7 +508,8 @@ class _Scene(_Diagram):
         for end in (a, b):          # and its extension lines, out past the line
             self.placer.block_path([end, (end[0] + (offset + 1.6) * n[0],
                                           end[1] + (offset + 1.6) * n[1])], 0.3)
-        text = f"{typeset_span(step.label)} {self.m.units.length_drawn(out.length)}".strip()
+        text = (f"{typeset_span(words(step.label))} "
+                f"{measure_words(self.m.units.length_drawn(out.length))}").strip()
         self.label(text, at, [step], prefer=math.atan2(-n[1], n[0]), gap=1.0, size=3.4)
         self.placer.page = page
 
@@ -612,8 +614,9 @@ class _Scene(_Diagram):
                 draw_arrow(self.fig, tail, tip, "edge_arrow", head=2.8, width=1.5)
             near, dist = min(((n, math.dist(p, q)) for n, q in self.world.items()),
                              key=lambda nd: nd[1])
-            name = typeset(step.label)[0] if step.label else "a point"
-            text = f"to {name}, {_length(dist, self.m.units)} from {subscript(near)}"
+            name = typeset(step.label)[0] if step.label else words("a point")
+            text = words("to {name}, {length} from {near}", name=name,
+                         length=_length(dist, self.m.units), near=subscript(near))
             # A vector drawn at the far point is off the page too: its number goes here.
             riders = [v for v in self.steps if v.id in self.off_page and self.far_base(v) is step]
             tail, tip = arrows[0]
@@ -683,4 +686,4 @@ def _mid(pts):
 def _length(metres: float, units) -> str:
     value = metres / units.metres
     text = f"{value:.4g}" if value < 1e4 else f"{value:.0f}"
-    return f"{text} {units.length}"
+    return measure_words(f"{text} {units.length}")

@@ -8,9 +8,11 @@ with arrowheads and hatching drawn as geometry rather than markers or patterns.
 
 from __future__ import annotations
 
+import re
+
 import svgwrite
 
-from .figure import FONT, STYLES, SUB_DROP, SUB_SIZE, Circle, Figure, Path, Style, Text
+from .figure import FONT, STYLES, SUB_DROP, SUB_SIZE, Circle, Figure, Path, Style, Text, text_width
 from .rtl import RTL_FONT, flip_anchor, is_rtl
 
 __all__ = ["to_svg"]
@@ -81,6 +83,11 @@ def _element(dwg: svgwrite.Drawing, item: Path | Circle | Text):
         return dwg.path(d=d)
     if isinstance(item, Circle):
         return dwg.circle((_n(item.centre[0]), _n(item.centre[1])), _n(item.radius))
+    if (item.sub or item.tail) and is_rtl(item.text + item.sub + item.tail):
+        group = dwg.g()
+        for run in _runs(item):
+            group.add(_element(dwg, run))
+        return group
     # Text: ``at`` is the visual centre line; the baseline sits 0.35 em below it.
     x, y = item.at
     anchor = item.anchor
@@ -109,3 +116,28 @@ def _element(dwg: svgwrite.Drawing, item: Path | Circle | Text):
         rise = -SUB_DROP * item.size if item.sub else 0.0
         text.add(dwg.tspan(item.tail, dy=[_n(rise)], font_size=_n(item.size)))
     return text
+
+
+def _runs(item: Text) -> list[Text]:
+    """A right-to-left label with a subscript ("V_B به روش دوران شعاع") as runs of one
+    direction each, laid from its right end leftwards: the words before the symbol, the
+    symbol with its subscript, then the tail.
+
+    A subscript is a tspan, and cairosvg sets tspans left to right whatever the text's
+    direction; a browser would put the same tspans in bidirectional order. Runs of one
+    direction each are drawn alike by both.
+    """
+    x0, _, x1, _ = item.box()
+    symbol = item.text[-1:] if item.sub and not is_rtl(item.text[-1:]) else ""
+    mark = re.match("[′″ᵗⁿᶜ]*", item.tail).group()      # F_i3′: the prime is the symbol's
+    pieces = [(item.text[:len(item.text) - len(symbol)].strip(), "", ""),
+              (symbol, item.sub, mark), (item.tail[len(mark):].strip(), "", "")]
+    gap = text_width(" ", item.size)
+    runs, x = [], x1
+    for text, sub, tail in pieces:
+        if text or sub:
+            run = Text((x, item.at[1]), text, item.size, "end", item.italic, item.weight, sub,
+                       tail)
+            runs.append(run)
+            x -= run.width + gap
+    return runs

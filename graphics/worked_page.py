@@ -18,9 +18,11 @@ from dataclasses import replace
 from itertools import product
 
 from ..constructions.errors import TarsimError
+from ..constructions.narration import right_to_left, words
 
 from .figure import Figure, Path, Text, text_width, wrap_text
 from .labels import typeset
+from .rtl import is_rtl
 
 __all__ = ["compose_worked_page", "compose_worked_sheets", "holds_panel", "A3"]
 
@@ -112,7 +114,7 @@ def compose_worked_sheets(title: str, panels: Sequence[Figure], table: Sequence[
     sheets, i = [], 0
     while i < len(items):
         j, size = _most_held(items[i:], sheet)
-        head = title if not sheets else f"{title} (continued)"
+        head = title if not sheets else words("{title} (continued)", title=title)
         group = items[i:i + j]
         last = i + j == len(items)
         sheets.append(_sheet(head, group[:-1] if last else group, results if last else None,
@@ -175,8 +177,11 @@ def _sheet(title: str, panels: Sequence[Figure], results: Figure | None,
     spots, (w, h) = _choose_layout(sizes, foot, _room(size))
     page = Figure(round(max(size[0], w + 2 * _MARGIN), 1),
                   round(max(size[1], top + h + _MARGIN), 1), title=title)
-    page.add(Text((_MARGIN, _MARGIN + _TITLE / 2), title, _TITLE, "start", italic=False,
-                  weight="bold"))
+    rtl = right_to_left()
+    page.add(Text((page.width - _MARGIN if rtl else _MARGIN, _MARGIN + _TITLE / 2), title, _TITLE,
+                  "end" if rtl else "start", italic=False, weight="bold"))
+    if rtl:     # read from the right: the first panel stands at the top right
+        spots = [(w - x - p[0], y) for (x, y), p in zip(spots, sizes + [foot])]
     for panel, (x, y) in zip(panels, spots):
         _place_panel(page, panel, (_MARGIN + x, top + y), frame=True)
     if results is not None:
@@ -265,7 +270,8 @@ def _cell(text: str, first: bool, bold: bool) -> Text:
     if first and not bold:
         head, sub = typeset(text)
         return Text((0.0, 0.0), head, _CELL, "start", italic=True, sub=sub)
-    if not bold and "2ω×v_rel" in text:
+    if not bold and "2ω×v_rel" in text and not is_rtl(text):     # (a subscript among
+        # right-to-left words would split the cell into runs: it is kept as written there)
         head, _, tail = text.partition("2ω×v_rel")
         return Text((0.0, 0.0), f"{head}2ω × v", _CELL, "start", italic=False, sub="rel",
                     tail=tail)
@@ -274,7 +280,11 @@ def _cell(text: str, first: bool, bold: bool) -> Text:
 
 def _numeric(table: Sequence[Sequence[str]], k: int) -> bool:
     """Tell whether column ``k`` holds numbers (set flush right) rather than words."""
-    return k > 0 and all(row[k][:1] in "0123456789-−+." and row[k] for row in table[1:])
+    return k > 0 and all(row[k][:1] in _DIGITS and row[k] for row in table[1:])
+
+
+_DIGITS = "0123456789۰۱۲۳۴۵۶۷۸۹-−+."
+"""What a number opens with, in Latin or Persian digits."""
 
 
 def _column_widths(table: Sequence[Sequence[str]]) -> list[float]:
@@ -289,12 +299,13 @@ def _draw_results(table: Sequence[Sequence[str]], notes: Sequence[str]) -> Figur
     fig = Figure(0.0, 0.0)
     y = _draw_table(fig, table, (0.0, 0.5 * _ROW)) + (2.0 if notes else 0.0) if table else 0.0
     lines = [line for note in notes for line in wrap_text(note, _NOTE, _NOTE_WIDTH)]
-    for line in lines:
-        fig.add(Text((0.0, y + 0.7 * _NOTE), line, _NOTE, "start", italic=False))
-        y += 1.4 * _NOTE
     widths = _column_widths(table)
     fig.width = max([sum(widths) + _PAD * max(len(widths) - 1, 0)]
                     + [text_width(n, _NOTE) for n in lines])
+    edge, anchor = (fig.width, "end") if right_to_left() else (0.0, "start")
+    for line in lines:
+        fig.add(Text((edge, y + 0.7 * _NOTE), line, _NOTE, anchor, italic=False))
+        y += 1.4 * _NOTE
     fig.height = y
     return fig
 
@@ -307,16 +318,23 @@ def _draw_table(page: Figure, table: Sequence[Sequence[str]], at: tuple[float, f
     """
     widths = _column_widths(table)
     lefts = [at[0] + sum(widths[:k]) + _PAD * k for k in range(len(widths))]
+    rtl = right_to_left()
+    if rtl:     # a right-to-left table reads from the right: its first column stands there
+        span = lefts[-1] + widths[-1] + at[0]
+        lefts = [span - x - w for x, w in zip(lefts, widths)]
     y = at[1]
     for r, row in enumerate(table):
         for k, text in enumerate(row):
             t = _cell(text, k == 0, r == 0)
             if _numeric(table, k):
                 page.add(Text((lefts[k] + widths[k], y), t.text, t.size, "end", False, t.weight))
+            elif rtl:
+                page.add(replace(t, at=(lefts[k] + widths[k], y), anchor="end"))
             else:
                 page.add(replace(t, at=(lefts[k], y)))
         if r == 0:
             rule = y + 0.5 * _ROW
-            page.add(Path(((at[0], rule), (lefts[-1] + widths[-1], rule)), "dimension"))
+            page.add(Path(((min(lefts), rule), (max(x + w for x, w in zip(lefts, widths)), rule)),
+                          "dimension"))
         y += _ROW
     return y - 0.5 * _ROW

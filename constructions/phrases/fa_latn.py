@@ -3,9 +3,9 @@ ASCII digits, as some course material writes them."""
 
 from __future__ import annotations
 
-from .fa import PHRASES, UNITS, WORDS, capitalized
+from .fa import DIRECTION, PHRASES, UNITS, WORDS, capitalized
 
-__all__ = ["PHRASES", "WORDS", "UNITS", "digits", "capitalized"]
+__all__ = ["PHRASES", "WORDS", "UNITS", "digits", "capitalized", "DIRECTION"]
 
 
 def digits(text: str) -> str:
