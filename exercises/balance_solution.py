@@ -19,7 +19,7 @@ from typing import Any
 from ..constructions.balancing.engine import KINDS, EnginePolygons, draw_engine
 from ..constructions.balancing.polygons import Balance, draw_balance
 from ..constructions.model import LENGTH_UNITS
-from ..constructions.narration import narrate
+from ..constructions.narration import narrate, numerals, phrase, spoken, unit_words, words
 from ..constructions.reference.balance import (engine_sums, one_axial_plane, quadrant_angle,
                                                resultant, single_cylinder, two_planes)
 from ..graphics.balance_figures import draw_end_view, draw_polygon, draw_side_view
@@ -203,18 +203,20 @@ class BalanceSolution(ChapterFiles):
 
     def steps(self) -> str:
         """steps.md: the construction, numbered, and the results."""
-        ex = self.exercise
-        lines = [f"# {ex.name}: worked solution", ""]
+        ex, lang = self.exercise, spoken()
+        lines = [f"# {narrate(phrase('md.title', name=ex.name), lang)}", ""]
         if ex.description:
             lines += [ex.description, ""]
         record = self.balance.construction if self.balance else (
             self.engine_polygons.construction if self.engine_polygons else None)
         if record is not None:
-            said = [narrate(s) for s in record.steps.values()]
-            lines += ["## The construction", ""]
+            said = [narrate(s, lang) for s in record.steps.values()]
+            lines += [f"## {words('The construction')}", ""]
             lines += [f"{k}. {t}" for k, t in enumerate((t for t in said if t), 1)]
             lines.append("")
-        lines += ["## Results", ""] + [f"- {t}" for t in self.lines()]
+        # The results are the lines solve prints, with their checks: in English.
+        lines += [f"## {narrate(phrase('md.results'), lang)}", ""] + [
+            f"- {t}" for t in self.lines()]
         return "\n".join(lines) + "\n"
 
     # ----- numbers and figures ------------------------------------------------------------------
@@ -259,44 +261,53 @@ class BalanceSolution(ChapterFiles):
         for kind in KINDS:
             left = p.left(kind) * e.speed ** 2
             word = "N·m" if kind.endswith("couple") else "N"
-            reading = ("closed: balanced", "", "") if left < 1e-9 * e.reciprocating * \
-                e.crank * e.speed ** 2 else (f"{left:.4g} {word} unbalanced", "", "")
+            reading = (words("closed: balanced"), "", "") if left < 1e-9 * e.reciprocating * \
+                e.crank * e.speed ** 2 else (words("{size} {unit} unbalanced",
+                                                   size=numerals(f"{left:.4g}"),
+                                                   unit=unit_words(word)), "", "")
             out[kind.replace(" ", "-")] = draw_polygon(
-                p.construction, p.tips[kind], p.closing[kind], f"{ex.name}: {kind}",
+                p.construction, p.tips[kind], p.closing[kind], f"{ex.name}: {words(kind)}",
                 "kg·m²" if kind.endswith("couple") else "kg·m", reading,
-                notes=["couples about the central plane; secondary vectors along the cranks "
-                       "at 2θᵢ, each m·r/n"], names={str(i): f"cyl. {i}" for i in
-                                                     range(1, len(e.cranks) + 1)})
+                notes=[words("couples about the central plane; secondary vectors along the "
+                             "cranks at 2θᵢ, each m·r/n")],
+                names={str(i): words("cyl. {number}", number=str(i)) for i in
+                       range(1, len(e.cranks) + 1)})
         return out
 
     def _rotor_figures(self, unit: str, metre: float) -> dict[str, Any]:
         ex, r, b = self.exercise, self.exercise.rotor, self.balance
-        masses = [(m.name, m.radius, f"{m.name}: {m.mass:g} kg at {m.radius / metre:g} {unit}, "
-                   f"{math.degrees(m.angle):g}°") for m in r.masses]
+        masses = [(m.name, m.radius, _mass_words(m.name, f"{m.mass:g}", f"{m.radius / metre:g}",
+                                                 unit, f"{math.degrees(m.angle):g}"))
+                  for m in r.masses]
         found = []
         for p in r.planes:
             v, mass, radius = self.placed(p)
-            found.append((f"{p.name}: {mass:.4g} kg at {radius / metre:.4g} {unit}, "
-                          f"{_angle(v):.2f}°", math.atan2(v[1], v[0]), radius))
-        out = {"space": draw_end_view(b.construction, masses, f"{ex.name}: space diagram",
+            found.append((_mass_words(p.name, f"{mass:.4g}", f"{radius / metre:.4g}", unit,
+                                      f"{_angle(v):.2f}"), math.atan2(v[1], v[0]), radius))
+        out = {"space": draw_end_view(b.construction, masses,
+                                      words("{name}: space diagram", name=ex.name),
                                       unit, metre, found)}
         if len(r.planes) == 2 or len({m.plane for m in r.masses}) > 1:
             planes = [(f"{m.name}", m.plane, "link") for m in r.masses]
             planes += [(p.name, p.position, "normal") for p in r.planes]
-            out["side"] = draw_side_view(planes, f"{ex.name}: side view", unit, metre)
+            out["side"] = draw_side_view(planes, words("{name}: side view", name=ex.name), unit,
+                                         metre)
         out["table"] = self._table(unit, metre)
         if len(r.planes) == 2:
             bname = r.planes[1].name
             v = b.vector(b.closing[f"{bname}·l"])
             out["couple-polygon"] = draw_polygon(
                 b.construction, b.couple, b.closing[f"{bname}·l"],
-                f"{ex.name}: couple polygon (reference plane {r.planes[0].name})", "kg·m²",
-                ("(m r l)", bname, f" = {math.hypot(*v):.4g} kg·m² at {_angle(v):.1f}°"))
+                words("{name}: couple polygon (reference plane {plane})", name=ex.name,
+                      plane=r.planes[0].name), "kg·m²",
+                ("(m r l)", bname, _size_words(f"{math.hypot(*v):.4g}", "kg·m²",
+                                               f"{_angle(v):.1f}")))
         a = r.planes[0].name
         v = b.product(a)
         out["force-polygon"] = draw_polygon(
-            b.construction, b.force, b.closing[a], f"{ex.name}: force polygon", "kg·m",
-            ("(m r)", a, f" = {math.hypot(*v):.4g} kg·m at {_angle(v):.1f}°"))
+            b.construction, b.force, b.closing[a], words("{name}: force polygon", name=ex.name),
+            "kg·m", ("(m r)", a, _size_words(f"{math.hypot(*v):.4g}", "kg·m",
+                                             f"{_angle(v):.1f}")))
         return out
 
     def _table(self, unit: str, metre: float):
@@ -304,52 +315,72 @@ class BalanceSolution(ChapterFiles):
         ref = r.planes[0].position
         two = len(r.planes) == 2
         flat = not two and len({m.plane for m in r.masses} | {ref}) == 1   # one plane: no l
-        heads = ["m (kg)", f"r ({unit})", "θ"] + ([] if flat else [f"l ({unit})"]) + [
-            "m·r (kg·m)"] + (["m·r·l (kg·m²)"] if two else [])
+        length, kg = unit_words(unit), unit_words("kg")
+        heads = [f"m ({kg})", f"r ({length})", "θ"] + ([] if flat else [f"l ({length})"]) + [
+            f"m·r ({unit_words('kg·m')})"] + ([f"m·r·l ({unit_words('kg·m²')})"] if two else [])
         rows = []
         for m in r.masses:
-            rows.append((m.name, [f"{m.mass:g}", f"{m.radius / metre:g}",
-                                  f"{math.degrees(m.angle):g}°"]
-                         + ([] if flat else [f"{(m.plane - ref) / metre:g}"])
-                         + [f"{m.mass * m.radius:.4g}"] + (
-                [f"{m.mass * m.radius * (m.plane - ref):.4g}"] if two else [])))
+            rows.append((m.name, [numerals(t) for t in [
+                f"{m.mass:g}", f"{m.radius / metre:g}", f"{math.degrees(m.angle):g}°"]
+                + ([] if flat else [f"{(m.plane - ref) / metre:g}"])
+                + [f"{m.mass * m.radius:.4g}"] + (
+                [f"{m.mass * m.radius * (m.plane - ref):.4g}"] if two else [])]))
         for p in r.planes:
             v, mass, radius = self.placed(p)
             size = math.hypot(*v)
-            rows.append((p.name, [f"{mass:.4g}", f"{radius / metre:.4g}", f"{_angle(v):.2f}°"]
-                         + ([] if flat else [f"{(p.position - ref) / metre:g}"])
-                         + [f"{size:.4g}"] + ([f"{size * (p.position - ref):.4g}"] if two
-                                              else [])))
-        return draw_train_table(f"{self.exercise.name}: the table", heads, rows,
+            rows.append((p.name, [numerals(t) for t in [
+                f"{mass:.4g}", f"{radius / metre:.4g}", f"{_angle(v):.2f}°"]
+                + ([] if flat else [f"{(p.position - ref) / metre:g}"])
+                + [f"{size:.4g}"] + ([f"{size * (p.position - ref):.4g}"] if two else [])]))
+        return draw_train_table(words("{name}: the table", name=self.exercise.name), heads, rows,
                                 ruled=[len(r.masses)], notes=[
-                                    ("" if flat else f"l from the reference plane "
-                                     f"{r.planes[0].name}; ") + "the rows under the rule are "
-                                    "the balancing masses found"])
+                                    ("" if flat else words("l from the reference plane "
+                                                           "{plane}; ",
+                                                           plane=r.planes[0].name))
+                                    + words("the rows under the rule are the balancing masses "
+                                            "found")])
 
     def _single_cylinder_plot(self):
         e = self.exercise.engine
         xs = [float(d) for d in range(0, 361, 2)]
         values = [single_cylinder(e, math.radians(d)) for d in xs]
-        series = [Series("primary", tuple((x, v[0]) for x, v in zip(xs, values)),
+        series = [Series(words("primary"), tuple((x, v[0]) for x, v in zip(xs, values)),
                          "plot_curve_dotted"),
-                  Series("secondary", tuple((x, v[1]) for x, v in zip(xs, values)),
+                  Series(words("secondary"), tuple((x, v[1]) for x, v in zip(xs, values)),
                          "plot_curve_dashed"),
-                  Series("left along the stroke", tuple((x, v[2]) for x, v in zip(xs, values))),
-                  Series("left across the stroke",
+                  Series(words("left along the stroke"),
+                         tuple((x, v[2]) for x, v in zip(xs, values))),
+                  Series(words("left across the stroke"),
                          tuple((x, v[3]) for x, v in zip(xs, values)), "chord_secondary")]
         at = math.degrees(e.at)
         here = single_cylinder(e, e.at)
-        marks = [PlotMark(at, here[2], f"{here[2]:.4g} N"),
-                 PlotMark(at, here[3], f"{here[3]:.4g} N")]
+        newton = unit_words("N")
+        marks = [PlotMark(at, here[2], f"{numerals(f'{here[2]:.4g}')} {newton}"),
+                 PlotMark(at, here[3], f"{numerals(f'{here[3]:.4g}')} {newton}")]
         share = Fraction(e.balanced).limit_denominator(12)
         share = share if abs(float(share) - e.balanced) < 1e-9 else f"{e.balanced:g}"
-        return draw_line_plot("Unbalanced forces", "crank angle θ (°)", "F (N)",
-                              series, marks, x_range=(0.0, 360.0),
-                              x_ticks=[(float(d), f"{d}") for d in range(0, 361, 30)],
-                              subtitle=f"{share} of the reciprocating mass balanced by a "
-                                       "rotating mass opposite the crank",
-                              mark_legend=f"at θ = {at:g}°")
+        return draw_line_plot(words("Unbalanced forces"), words("crank angle θ (°)"),
+                              f"F ({newton})", series, marks, x_range=(0.0, 360.0),
+                              x_ticks=[(float(d), numerals(f"{d}")) for d in range(0, 361, 30)],
+                              subtitle=words("{share} of the reciprocating mass balanced by a "
+                                             "rotating mass opposite the crank",
+                                             share=numerals(str(share))),
+                              mark_legend=words("at θ = {angle}°", angle=numerals(f"{at:g}")))
 
+
+
+def _mass_words(name: str, mass: str, radius: str, unit: str, angle: str) -> str:
+    """A mass as the end view names it, "A: 200 kg at 300 mm, 45°", in the language being
+    spoken (the numbers come formatted)."""
+    return words("{name}: {mass} {kg} at {radius} {unit}, {angle}°", name=name,
+                 mass=numerals(mass), kg=unit_words("kg"), radius=numerals(radius),
+                 unit=unit_words(unit), angle=numerals(angle))
+
+
+def _size_words(size: str, unit: str, angle: str) -> str:
+    """What follows a closing side's symbol: " = 1.39 kg·m at 3.9°"."""
+    return words(" = {size} {unit} at {angle}°", size=numerals(size), unit=unit_words(unit),
+                 angle=numerals(angle))
 
 
 def solve_balance(ex: BalanceExercise) -> BalanceSolution:

@@ -18,7 +18,7 @@ from ..constructions.cams.displacement import Displacement
 from ..constructions.cams.inversion import Layout, lay_out_profile
 from ..constructions.cams.survey import Survey, survey
 from ..constructions.errors import InputError
-from ..constructions.narration import narrate
+from ..constructions.narration import narrate, numerals, spoken, unit_words, words
 from ..graphics.cam_layout_figure import draw_cam_layout
 from ..graphics.figure import Figure
 from ..graphics.train_table import draw_train_table
@@ -90,8 +90,9 @@ class CamProfile:
 
     def steps(self) -> list[str]:
         """The layout's steps for steps.md, numbered."""
-        said = [narrate(st) for st in self.layout.construction.steps.values()]
-        said = [t for t in said if t] + [narrate(self.layout.closing)]
+        lang = spoken()
+        said = [narrate(st, lang) for st in self.layout.construction.steps.values()]
+        said = [t for t in said if t] + [narrate(self.layout.closing, lang)]
         return [f"{k}. {t}" for k, t in enumerate(said, 1)]
 
     # ----- numbers ----------------------------------------------------------------------------
@@ -122,9 +123,10 @@ class CamProfile:
     def figures(self) -> dict[str, Figure]:
         """The layout and its table."""
         ex = self.exercise
-        notes = ["UNDERCUT: ringed where the roller cannot make the profile"] \
+        notes = [words("UNDERCUT: ringed where the roller cannot make the profile")] \
             if self.survey.undercut else []
-        return {"profile": draw_cam_layout(self.layout, self.survey, f"{ex.name}: profile",
+        return {"profile": draw_cam_layout(self.layout, self.survey,
+                                           words("{name}: profile", name=ex.name),
                                            ex.length_unit, ex.metre,
                                            notes),
                 "profile-table": self.table()}
@@ -137,32 +139,39 @@ class CamProfile:
 
         def length(v: float) -> str:
             return _signed(f"{v / metre:.4g}" if abs(v) > 1e-9 * ex.base_radius else "0")
-        heads = ["station", "cam angle",
-                 "swing (°)" if f.oscillating else f"lift ({unit})",
-                 f"face run ({unit})" if flat else "pressure angle",
-                 f"ρ of the {'profile' if flat else 'pitch curve'} ({unit})"]
+        said = unit_words(unit)
+        heads = [words("station"), words("cam angle"),
+                 words("swing (°)") if f.oscillating else words("lift ({unit})", unit=said),
+                 words("face run ({unit})", unit=said) if flat else words("pressure angle"),
+                 words(f"ρ of the {'profile' if flat else 'pitch curve'} ({{unit}})",
+                       unit=said)]
         rows = []
         for p, st in zip(self.layout.places, self.survey.places):
             lift = (f"{math.degrees(p.lift / f.arm):.4g}" if f.oscillating else length(p.lift))
-            rows.append(("", [str(p.number), f"{math.degrees(p.theta):.4g}°", lift,
-                              length(st.face_offset) if flat
-                              else _signed(f"{math.degrees(st.pressure_angle):.2f}") + "°",
-                              "∞" if math.isinf(st.rho) else length(st.rho)]))
+            rows.append(("", [numerals(c) for c in (
+                str(p.number), f"{math.degrees(p.theta):.4g}°", lift,
+                length(st.face_offset) if flat
+                else _signed(f"{math.degrees(st.pressure_angle):.2f}") + "°",
+                "∞" if math.isinf(st.rho) else length(st.rho))]))
         notes = []
         if any(st.rho < 0 for st in self.survey.places):
-            notes.append("ρ < 0: the curve is concave there.")
+            notes.append(words("ρ < {zero}: the curve is concave there.", zero=numerals("0")))
         if flat:
-            notes.append("The face run is where the face touches, from the follower's axis: "
-                         "σy′, σ = +1 for a counter-clockwise cam.")
+            notes.append(words("The face run is where the face touches, from the follower's "
+                               "axis: σy′, σ = +1 for a counter-clockwise cam."))
         elif f.oscillating:
-            notes.append("The pressure angle is between the profile's normal and the roller's "
-                         "path, square to the arm.")
+            notes.append(words("The pressure angle is between the profile's normal and the "
+                               "roller's path, square to the arm."))
         else:
-            notes.append("The pressure angle is signed as tan φ = (y′ − σe)/(s₀ + y): σ = +1 "
-                         "for a counter-clockwise cam, e the offset, s₀ = √(R_p² − e²).")
-        notes.append("At a join of two segments the values are the second segment's.")
+            notes.append(words("The pressure angle is signed as tan φ = (y′ − σe)/(s₀ + y): "
+                               "σ = +1 for a counter-clockwise cam, e the offset, "
+                               "s₀ = √(R_p² − e²)."))
+        notes.append(words("At a join of two segments the values are the second segment's."))
         what = "face run" if flat else "pressure angle"
-        return draw_train_table(f"{ex.name}: {what} and curvature", heads, rows, notes=notes)
+        # Right to left, the table mirrors itself (its columns from the right, its words
+        # flush right).
+        return draw_train_table(words("{name}: " + what + " and curvature", name=ex.name),
+                                heads, rows, notes=notes)
 
 
 def _signed(text: str) -> str:

@@ -16,7 +16,7 @@ from functools import cached_property
 from typing import Any
 
 from ..constructions.cams.displacement import Displacement, draw_displacement
-from ..constructions.narration import narrate
+from ..constructions.narration import Word, narrate, numerals, phrase, spoken, unit_words, words
 from ..constructions.reference.cam_laws import jerk_peak, motion, peaks
 from ..graphics.displacement_figure import draw_displacement_figure
 from ..graphics.plot import PlotMark, Series, draw_line_plot
@@ -169,35 +169,41 @@ class CamSolution(ChapterFiles):
         ex = self.exercise
         unit = ex.length_unit
         xs, ys, vs, accs, jerks = self.curves
-        ticks = [(float(d), f"{d}") for d in range(0, 361, 30)]
+        ticks = [(float(d), numerals(f"{d}")) for d in range(0, 361, 30)]
         name = ex.name
         arm = ex.follower.arm if ex.follower.oscillating else 0.0
-        speed = (f"the cam at {abs(ex.omega) * 60 / (2 * math.pi):.4g} rpm"
-                 if ex.speed_unit == "rpm" else f"the cam at {abs(ex.omega):.4g} rad/s")
-        speed += ", clockwise" if ex.omega < 0 else ", counter-clockwise"
+        rpm = ex.speed_unit == "rpm"
+        speed = words("the cam at {speed} {unit}, {sense}", speed=numerals(
+            f"{abs(ex.omega) * 60 / (2 * math.pi):.4g}" if rpm else f"{abs(ex.omega):.4g}"),
+            unit=unit_words("rpm" if rpm else "rad/s"),
+            sense=Word("clockwise" if ex.omega < 0 else "counter-clockwise"))
 
         def plot(title, label, values, scale, notes=()):
             scaled = [v * scale for v in values]
-            return draw_line_plot(f"{name}: {title}", "cam angle θ (°)", label,
-                                  [Series(title, tuple(zip(xs, scaled)))],
+            return draw_line_plot(words("{name}: " + title, name=name), words("cam angle θ (°)"),
+                                  label, [Series(words(title), tuple(zip(xs, scaled)))],
                                   self._peak_marks(xs, scaled), x_range=(0.0, 360.0),
                                   x_ticks=ticks, notes=notes, subtitle=speed,
-                                  mark_legend="each segment's peak")
+                                  mark_legend=words("each segment's peak"))
         jumps = self.jumps
-        spikes = [f"ÿ jumps at θ = {', '.join(f'{j:.4g}°' for j in jumps)}: the jerk is "
-                  "infinite there, which no curve can draw"] if jumps else []
+        spikes = [words("ÿ jumps at θ = {angles}: the jerk is infinite there, which no curve "
+                        "can draw", angles=words(", ").join(numerals(f"{j:.4g}°")
+                                                            for j in jumps))] if jumps else []
         curve = [(math.radians(x), y) for x, y in zip(xs, ys)]
-        motion_plots = ({"velocity": plot("the arm's angular velocity", "ω (rad/s)", vs,
-                                          1 / arm),
-                         "acceleration": plot("the arm's angular acceleration", "α (rad/s²)",
-                                              accs, 1 / arm)} if arm else
-                        {"velocity": plot("velocity", f"ẏ ({unit}/s)", vs,
+        motion_plots = ({"velocity": plot("the arm's angular velocity",
+                                          f"ω ({unit_words('rad/s')})", vs, 1 / arm),
+                         "acceleration": plot("the arm's angular acceleration",
+                                              f"α ({unit_words('rad/s²')})", accs, 1 / arm)}
+                        if arm else
+                        {"velocity": plot("velocity", f"ẏ ({unit_words(unit + '/s')})", vs,
                                           1.0 / ex.metre),
-                         "acceleration": plot("acceleration", "ÿ (m/s²)", accs, 1.0)})
+                         "acceleration": plot("acceleration", f"ÿ ({unit_words('m/s²')})",
+                                              accs, 1.0)})
         return {"displacement": draw_displacement_figure(
-                    self.diagram, curve, f"{name}: displacement", unit, ex.metre,
-                    arm=arm)} | motion_plots | (
-            {"jerk": plot("jerk", "jerk (m/s³)", jerks, 1.0, spikes)} if ex.jerk else {}
+                    self.diagram, curve, words("{name}: displacement", name=name), unit,
+                    ex.metre, arm=arm)} | motion_plots | (
+            {"jerk": plot("jerk", words("jerk ({unit})", unit=unit_words("m/s³")), jerks, 1.0,
+                          spikes)} if ex.jerk else {}
         ) | self.profile.figures()
 
     def _peak_marks(self, xs: list[float], values: list[float]) -> list[PlotMark]:
@@ -208,7 +214,7 @@ class CamSolution(ChapterFiles):
             if s.kind != "dwell":
                 inside = [(abs(v), x, v) for x, v in zip(xs, values) if start <= x <= end]
                 _, x, v = max(inside)
-                marks.append(PlotMark(x, v, f"{v:.4g}".replace("-", "−")))
+                marks.append(PlotMark(x, v, numerals(f"{v:.4g}".replace("-", "−"))))
             start = end
         return marks
 
@@ -236,21 +242,24 @@ class CamSolution(ChapterFiles):
 
     def steps(self) -> str:
         """steps.md: the displacement diagram's construction, then each segment's peaks."""
-        ex = self.exercise
-        lines = [f"# {ex.name}: worked solution", ""]
+        ex, lang = self.exercise, spoken()
+        lines = [f"# {narrate(phrase('md.title', name=ex.name), lang)}", ""]
         if ex.description:
             lines += [ex.description, ""]
-        lines += ["## The displacement diagram (`displacement.svg`)", ""]
-        said = [narrate(s) for s in self.diagram.construction.steps.values()]
+        lines += [f"## {words('The displacement diagram')} (`displacement.svg`)", ""]
+        said = [narrate(s, lang) for s in self.diagram.construction.steps.values()]
         lines += [f"{k}. {t}" for k, t in enumerate((t for t in said if t), 1)]
-        lines += ["", "## Peaks (`velocity.svg`, `acceleration.svg`)", "",
-                  "The cam turns at constant speed, so ẏ = y′ω and ÿ = y″ω² (the notes' chain "
-                  "rule with α = 0).", ""]
+        # The peaks are the lines solve prints, with their checks: in English.
+        lines += ["", f"## {words('Peaks')} (`velocity.svg`, `acceleration.svg`)", "",
+                  words("The cam turns at constant speed, so ẏ = y′ω and ÿ = y″ω² (the notes' "
+                        "chain rule with α = 0)."), ""]
         lines += [f"- {line}" for line in self.lines()[:len(self.peaks) + 1]]
         if self.jumps:
-            lines.append(f"- ÿ jumps at θ = {', '.join(f'{j:g}°' for j in self.jumps)}: "
-                         "the jerk is infinite there.")
-        lines += ["", "## The profile by inversion (`profile.svg`, `profile-table.svg`)", ""]
+            lines.append("- " + words("ÿ jumps at θ = {jumps}: the jerk is infinite there.",
+                                      jumps=", ".join(f"{numerals(f'{j:g}')}°"
+                                                      for j in self.jumps)))
+        lines += ["", f"## {words('The profile by inversion')} (`profile.svg`, "
+                      "`profile-table.svg`)", ""]
         lines += self.profile.steps() + [""]
         lines += [f"- {line}" for line in self.profile.lines()]
         return "\n".join(lines) + "\n"

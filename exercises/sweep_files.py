@@ -13,6 +13,7 @@ import re
 from pathlib import Path
 
 from ..constructions.model import Mechanism
+from ..constructions.narration import Word, numerals, speaking, unit_words, words
 from ..graphics.export import svg_to, write_folder
 from ..graphics.figure import Figure
 from ..graphics.plot import CURVE_STYLES, PlotMark, Series, draw_line_plot
@@ -43,23 +44,39 @@ def _in_units(mech: Mechanism, key: str, value: float) -> float:
 
 
 def _shown(mech: Mechanism, key: str, value: float) -> str:
-    """A value in the file's unit with its unit: "679.134 mm", "42.2004°"."""
+    """A value in the file's unit with its unit: "679.134 mm", "42.2004°" (in the spoken
+    language's digits and unit names)."""
     unit = _unit(mech, KINDS[key])[1]
-    return f"{number_text(_in_units(mech, key, value))}{'' if unit == '°' else ' '}{unit}"
+    return (f"{numerals(number_text(_in_units(mech, key, value)))}"
+            f"{'' if unit == '°' else ' '}{unit_words(unit)}")
+
+
+def _angle(mech: Mechanism, angle: float) -> str:
+    """:func:`~.sweep.angle_text` in the spoken language's digits and unit names."""
+    text = angle_text(mech, angle)
+    return numerals(text[:-4]) + " " + unit_words("rad") if text.endswith(" rad") else \
+        numerals(text)
+
+
+def _link(mech: Mechanism, number: int) -> str:
+    """A link as the figures name it: "link 4 (lever)", its name said in the spoken language."""
+    link = mech.link(number)
+    return words("link {n} ({name})", n=link.number, name=words(link.name)) if link.name \
+        else words("link {n}", n=link.number)
 
 
 def _words(sw: Sweep) -> tuple[str, str]:
     """What the output is, in words: ("B", " along its guide (+x)") or ("link 4 (lever)", "")."""
     out, mech = sw.output, sw.exercise.mechanism
     if out.kind == "link":
-        return mech.link(out.link).label, ""
+        return _link(mech, out.link), ""
     if out.kind == "point":
         return out.point, ""
     dx, dy = out.direction
     named = {(1.0, 0.0): "+x", (-1.0, 0.0): "−x", (0.0, 1.0): "+y", (0.0, -1.0): "−y"}
     way = named.get((round(dx, 12) + 0.0, round(dy, 12) + 0.0))
-    way = way or number_text(math.degrees(math.atan2(dy, dx))) + "°"
-    return out.point, f" along its guide ({way})"
+    way = way or numerals(number_text(math.degrees(math.atan2(dy, dx)))) + "°"
+    return out.point, words(" along its guide ({way})", way=way)
 
 
 def _turning(sw: Sweep) -> str:
@@ -68,11 +85,14 @@ def _turning(sw: Sweep) -> str:
     d = mech.drive
     factor, unit, _ = _unit(mech, "omega")
     sense = "cw" if d.omega < 0 else "ccw"
-    w = f"ω_{d.link} = {number_text(abs(d.omega) / factor)} {unit} {sense}" if d.omega else \
-        f"ω_{d.link} = 0"
-    a = f"α_{d.link} = {number_text(d.alpha)} rad/s²" if d.alpha else f"α_{d.link} = 0"
-    return (f"{len(sw.samples)} positions from θ_{d.link} = {angle_text(mech, d.angle)}, "
-            f"{w}, {a}")
+    zero = numerals("0")
+    w = words("ω_{link} = {value} {unit} {sense}", link=d.link,
+              value=numerals(number_text(abs(d.omega) / factor)), unit=unit_words(unit),
+              sense=Word(sense)) if d.omega else f"ω_{d.link} = {zero}"
+    a = f"α_{d.link} = {numerals(number_text(d.alpha))} {unit_words('rad/s²')}" if d.alpha \
+        else f"α_{d.link} = {zero}"
+    return words("{n} positions from θ_{link} = {angle}, {w}, {a}", n=numerals(
+        str(len(sw.samples))), link=d.link, angle=_angle(mech, d.angle), w=w, a=a)
 
 
 def _event_lines(sw: Sweep, figure: int) -> list[str]:
@@ -83,12 +103,13 @@ def _event_lines(sw: Sweep, figure: int) -> list[str]:
     (pkey, *_), (vkey,), (akey,) = KEYS[sw.output.kind]
     p, v, a = (sw.output.symbol(k) for k in (pkey, vkey, akey))
     th = f"θ_{mech.drive.link}"
+    zero = numerals("0")
 
     def at(e: Event, key: str) -> str:
-        return f"{_shown(mech, key, e.values[key])} ({th} = {angle_text(mech, e.angle)})"
+        return f"{_shown(mech, key, e.values[key])} ({th} = {_angle(mech, e.angle)})"
 
     def where(events: list[Event]) -> str:
-        return f"{th} = " + ", ".join(angle_text(mech, e.angle) for e in events)
+        return f"{th} = " + words(", ").join(_angle(mech, e.angle) for e in events)
 
     v_zero = [e for e in sw.events if e.key == vkey]
     a_zero = [e for e in sw.events if e.key == akey]
@@ -99,17 +120,22 @@ def _event_lines(sw: Sweep, figure: int) -> list[str]:
         both = all(any(e.angle == it[0] for e in v_zero) for it in (low, high))
         what = "stroke" if sw.output.kind == "slider" else "swing"
         if high[1][pkey] - low[1][pkey] <= 1e-12 * max(1.0, abs(high[1][pkey])):
-            return [f"{p} stays {_shown(mech, pkey, high[1][pkey])}"]
-        lines.append(f"{p} from {at(Event(vkey, *low), pkey)} to {at(Event(vkey, *high), pkey)}"
-                     f"{f', where {v} = 0' if both else ''}: "
-                     f"{what} {_shown(mech, pkey, high[1][pkey] - low[1][pkey])}")
+            return [words("{p} stays {value}", p=p, value=_shown(mech, pkey, high[1][pkey]))]
+        lines.append(words("{p} from {low} to {high}{where}: {what} {span}", p=p,
+                           low=at(Event(vkey, *low), pkey), high=at(Event(vkey, *high), pkey),
+                           where=words(", where {v} = {zero}", v=v, zero=zero) if both else "",
+                           what=Word(what),
+                           span=_shown(mech, pkey, high[1][pkey] - low[1][pkey])))
     if v_zero and figure == 1:
-        lines.append(f"{v} = 0 at {where(v_zero)}, where {p} is extreme")
+        lines.append(words("{v} = {zero} at {where}, where {p} is extreme", v=v, zero=zero,
+                           where=where(v_zero), p=p))
     if a_zero and figure == 1:
         low, high = (f(a_zero, key=lambda e: e.values[vkey]) for f in (min, max))
-        lines.append(f"{v} peaks at {at(low, vkey)} and {at(high, vkey)}, where {a} = 0")
+        lines.append(words("{v} peaks at {low} and {high}, where {a} = {zero}", v=v,
+                           low=at(low, vkey), high=at(high, vkey), a=a, zero=zero))
     if a_zero and figure == 2:
-        lines.append(f"{a} = 0 at {where(a_zero)}, where {v} peaks")
+        lines.append(words("{a} = {zero} at {where}, where {v} peaks", a=a, zero=zero,
+                           where=where(a_zero), v=v))
     return lines
 
 
@@ -122,10 +148,11 @@ def _gaps(sw: Sweep) -> list[str]:
             run.append(s)
             continue
         if run:
-            span = angle_text(mech, run[0].angle)
+            span = _angle(mech, run[0].angle)
             if len(run) > 1:
-                span += f"…{angle_text(mech, run[-1].angle)}"
-            out.append(f"θ_{mech.drive.link} = {span} ({len(run)} skipped): {run[0].reason}")
+                span += f"…{_angle(mech, run[-1].angle)}"
+            out.append(words("θ_{link} = {span} ({n} skipped): {reason}", link=mech.drive.link,
+                             span=span, n=numerals(str(len(run))), reason=run[0].reason))
             run = []
     return out
 
@@ -139,10 +166,10 @@ def sweep_figures(sw: Sweep) -> dict[str, Figure]:
     full = 360.0 if deg else math.tau
     link = mech.drive.link
     if deg:
-        ticks = [(float(a), str(a)) for a in range(0, 361, 30)]
+        ticks = [(float(a), numerals(str(a))) for a in range(0, 361, 30)]
     else:
         names = ["0", "π/4", "π/2", "3π/4", "π", "5π/4", "3π/2", "7π/4", "2π"]
-        ticks = [(i * math.pi / 4, t) for i, t in enumerate(names)]
+        ticks = [(i * math.pi / 4, numerals(t)) for i, t in enumerate(names)]
 
     def x_of(angle: float) -> float:
         return (math.degrees(angle) % 360.0) if deg else angle % math.tau
@@ -151,9 +178,9 @@ def sweep_figures(sw: Sweep) -> dict[str, Figure]:
     who, along = _words(sw)
     title = mech.name or sw.exercise.id
     stems = ("sweep-position", "sweep-velocity", "sweep-acceleration")
-    quantity = ("position", "velocity", "acceleration")
+    quantity = ("Position", "Velocity", "Acceleration")
     if out.kind == "link":
-        quantity = ("angle", "angular velocity", "angular acceleration")
+        quantity = ("Angle", "Angular velocity", "Angular acceleration")
     figures = {}
     for i, keys in enumerate(KEYS[out.kind]):
         if out.kind == "slider":
@@ -169,7 +196,7 @@ def sweep_figures(sw: Sweep) -> dict[str, Figure]:
                 pts = _break_jumps(pts, full / 2)
             label = out.symbol(key)
             if out.kind == "point" and i > 0:
-                label = {0: f"|{label}|", 1: "x component", 2: "y component"}[j]
+                label = {0: f"|{label}|", 1: words("x component"), 2: words("y component")}[j]
             series.append(Series(label, tuple(pts), CURVE_STYLES[j % len(CURVE_STYLES)]))
         marks, labelled = [], set()
         for key, angle, value, text in sw.marks:
@@ -178,18 +205,23 @@ def sweep_figures(sw: Sweep) -> dict[str, Figure]:
                 labelled.add(text)
                 marks.append(PlotMark(x_of(angle), _in_units(mech, key, value),
                                       re.sub(r"θ(\d+)", r"θ_\1", text) if first else ""))
-        unit = _unit(mech, KINDS[keys[0]])[1]
-        y_label = ", ".join(out.symbol(k) for k in keys[:1 if out.kind != "point" or i else 2])
-        sub = (f"{quantity[i].capitalize()} of {who}{along} over one turn of "
-               f"{mech.link(link).label}")
-        notes = [_turning(sw) + "; curves by the analytic (vector-loop) solver"]
+        unit = unit_words(_unit(mech, KINDS[keys[0]])[1])
+        y_label = words(", ").join(out.symbol(k)
+                                   for k in keys[:1 if out.kind != "point" or i else 2])
+        sub = words(quantity[i] + " of {who}{along} over one turn of {link}", who=who,
+                    along=along, link=_link(mech, link))
+        notes = [words("{turning}; curves by the analytic (vector-loop) solver",
+                       turning=_turning(sw))]
         notes += _event_lines(sw, i)
-        notes += [f"gap at {g}" for g in _gaps(sw)][:3]
+        notes += [words("gap at {gap}", gap=g) for g in _gaps(sw)][:3]
         worst = max((c.rel_error for c in sw.checks if c.key in keys), default=None)
-        legend = "" if worst is None else "solved by construction" + (
-            f" (off the curve by {worst:.0e} at most)" if worst else " (on the curve exactly)")
+        legend = "" if worst is None else words(
+            "solved by construction (off the curve by {error} at most)",
+            error=numerals(f"{worst:.0e}")) if worst else \
+            words("solved by construction (on the curve exactly)")
         figures[stems[i]] = draw_line_plot(
-            title, f"θ_{link} ({'°' if deg else 'rad'})", f"{y_label} ({unit})", series, marks,
+            title, f"θ_{link} ({'°' if deg else unit_words('rad')})", f"{y_label} ({unit})",
+            series, marks,
             x_range=(0.0, full), x_ticks=ticks, subtitle=sub, notes=notes, mark_legend=legend,
             include_zero=i > 0, y_ticks=[k * full / 4 for k in range(5)] if i == 0 and sw.rotates
             else ())
@@ -302,7 +334,15 @@ def write_sweep(files: dict[str, str | bytes], out_dir: str | Path) -> list[Path
 
 # ----- the report ----------------------------------------------------------------------------
 def format_sweep(sw: Sweep) -> str:
-    """What the command line prints: the turn, the refined extremes, the checks, the gaps."""
+    """What the command line prints: the turn, the refined extremes, the checks, the gaps.
+
+    In English whatever language the figures are drawn in: it shares its words with them.
+    """
+    with speaking("en"):
+        return _format_sweep(sw)
+
+
+def _format_sweep(sw: Sweep) -> str:
     mech = sw.exercise.mechanism
     who, along = _words(sw)
     solved = len(sw.solved)

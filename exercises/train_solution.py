@@ -18,7 +18,8 @@ from ..constructions.gears.involute import InvoluteMesh, draw_involute_mesh, lea
 from ..constructions.gears.kutzbach import Kutzbach, draw_kutzbach
 from ..constructions.gears.tabular import TrainSpeeds, fraction_text, tabulate
 from ..constructions.gears.torques import balance, say_balance
-from ..constructions.narration import narrate, significant
+from ..constructions.narration import (narrate, numerals, phrase, significant, spoken,
+                                      unit_words, words)
 from ..constructions.reference.gear_mesh import (MeshReference, involute_miss, least_teeth,
                                                  mesh_reference)
 from ..constructions.reference.willis import willis_speeds
@@ -207,38 +208,38 @@ class TrainSolution(ChapterFiles):
 
     def steps(self) -> str:
         """steps.md: the method's steps, the table, and the results."""
-        ex, train = self.exercise, self.train
-        lines = [f"# {train.name}: worked solution", ""]
+        ex, train, lang = self.exercise, self.train, spoken()
+        lines = [f"# {narrate(phrase('md.title', name=train.name), lang)}", ""]
         if ex.description:
             lines += [ex.description, ""]
-        lines += ["## The train (`train.svg`)", ""]
-        lines += [f"- {narrate(p)}" for p in train.describe()]
-        lines += ["", f"## {'The tabular method' if self.found.table else 'The train value'} "
-                  f"(`{self._stem}.svg`)", ""]
+        lines += [f"## {words('The train')} (`train.svg`)", ""]
+        lines += [f"- {narrate(p, lang)}" for p in train.describe()]
+        method = "The tabular method" if self.found.table else "The train value"
+        lines += ["", f"## {words(method)} (`{self._stem}.svg`)", ""]
         steps = list(self.found.steps) + say_balance(self.train, self.found.speeds,
                                                      self.output)
-        lines += [f"{k}. {narrate(p)}" for k, p in enumerate(steps, 1)]
+        lines += [f"{k}. {narrate(p, lang)}" for k, p in enumerate(steps, 1)]
         if self.found.xy:
-            lines += ["", "The other common form:", ""]
-            lines += [f"- {narrate(p)}" for p in self.found.xy]
-        if self.mesh is not None:
-            lines += ["", "## The involute mesh (`mesh.svg`)", ""]
-            said = [narrate(s) for s in self.mesh.construction.steps.values()]
-            lines += [f"{k}. {t}" for k, t in enumerate((t for t in said if t), 1)]
-        if self.diagram is not None:
-            lines += ["", "## The velocity (Kutzbach) diagram (`kutzbach.svg`)", ""]
-            said = [narrate(s) for s in self.diagram.construction.steps.values()]
-            lines += [f"{k}. {t}" for k, t in enumerate((t for t in said if t), 1)]
+            lines += ["", words("The other common form:"), ""]
+            lines += [f"- {narrate(p, lang)}" for p in self.found.xy]
+        for part, stem, drawn in (("The involute mesh", "mesh", self.mesh),
+                                  ("The velocity (Kutzbach) diagram", "kutzbach", self.diagram)):
+            if drawn is not None:
+                lines += ["", f"## {words(part)} (`{stem}.svg`)", ""]
+                said = [narrate(s, lang) for s in drawn.construction.steps.values()]
+                lines += [f"{k}. {t}" for k, t in enumerate((t for t in said if t), 1)]
         heads, rows = self._table()
         lines += ["", "| | " + " | ".join(heads) + " |",
                   "|---|" + "---|" * len(heads)]
         lines += [f"| {name} | " + " | ".join(cells) + " |" for name, cells in rows]
-        lines += ["", "## Results", "", "| quantity | found | Willis | the same | method |",
+        columns = " | ".join(words(c) for c in ("quantity", "found", "Willis", "the same",
+                                                 "method"))
+        lines += ["", f"## {narrate(phrase('md.results'), lang)}", "", f"| {columns} |",
                   "|---|---|---|---|---|"]
         for q in self.quantities.values():
             lines.append(f"| {ask_symbol(q.name)} | {fraction_text(q.exact)} | "
-                         f"{fraction_text(q.reference)} | {'yes' if q.passed else 'NO'} | "
-                         f"{q.method} |")
+                         f"{fraction_text(q.reference)} | {words('yes' if q.passed else 'NO')} "
+                         f"| {words(q.method)} |")
         return "\n".join(lines) + "\n"
 
     @property
@@ -246,30 +247,36 @@ class TrainSolution(ChapterFiles):
         return "table" if self.found.table else "train-value"
 
     def _table(self) -> tuple[list[str], list[tuple[str, list[str]]]]:
-        """The table's heads and rows, as the notes set them (speeds in the file's unit)."""
+        """The table's heads and rows, as the notes set them (speeds in the file's unit), in
+        the language being spoken."""
         train, found, unit = self.train, self.found, self.train.units.speed
         heads = [_head(train, m) for m in train.members]
-        speeds = [significant(float(found.speeds[m])) for m in train.members]
+        speeds = [numerals(significant(float(found.speeds[m]))) for m in train.members]
         t = found.table
         if t is None:
-            return heads, [(f"speed ({unit}, ccw +)", speeds)]
+            return heads, [(words("speed ({unit}, ccw +)", unit=unit_words(unit)), speeds)]
+
+        def row(turns: dict[int, Fraction]) -> list[str]:
+            return [numerals(fraction_text(turns[m], True)) for m in t.members]
+
         return heads, [
-            ("whole train locked, +1", [fraction_text(t.locked[m], True) for m in t.members]),
-            (f"arm {train.arm} held, {train.fixed} turned −1",
-             [fraction_text(t.held[m], True) for m in t.members]),
-            ("total", [fraction_text(t.total[m], True) for m in t.members]),
-            (f"× {fraction_text(t.scale)} {unit}: speed", speeds)]
+            (words("whole train locked, {turn}", turn=numerals("+1")), row(t.locked)),
+            (words("arm {arm} held, {fixed} turned {turn}", arm=str(train.arm),
+                   fixed=str(train.fixed), turn=numerals("−1")), row(t.held)),
+            (words("total"), row(t.total)),
+            (words("× {scale} {unit}: speed", scale=numerals(fraction_text(t.scale)),
+                   unit=unit_words(unit)), speeds)]
 
     @property
     def figures(self) -> dict[str, Any]:
         """Each figure by its file stem: the table (or the speeds of an ordinary train)."""
         heads, rows = self._table()
         unit = self.train.units.speed
-        notes = [f"Speeds in {unit}, counter-clockwise positive. Each is checked by the "
-                 "Willis equation of every mesh, solved as one linear system: the same "
-                 "fraction."]
+        notes = [words("Speeds in {unit}, counter-clockwise positive. Each is checked by the "
+                       "Willis equation of every mesh, solved as one linear system: the same "
+                       "fraction.", unit=unit_words(unit))]
         ruled = (2, 3) if self.found.table else ()
-        title = (f"{self.train.name}: the tabular method" if self.found.table
+        title = (words("{name}: the tabular method", name=self.train.name) if self.found.table
                  else self.train.name)
         out = {self._stem: draw_train_table(title, heads, rows, ruled=ruled, notes=notes)}
         # The shafts that leave it: the members a ratio or a torque is asked of.
@@ -334,9 +341,10 @@ def _mesh_text(name: str, value: float, mesh) -> str:
 
 
 def _head(train, m: int) -> str:
-    """A column's heading: "2 sun", "3 arm"."""
+    """A column's heading: "2 sun", "3 arm" (the name in the language being spoken, where it
+    has a word for it)."""
     name = (train.arm_name or "arm") if m == train.arm else train.gear(m).name
-    return f"{m} {name}".strip()
+    return f"{m} {words(name)}".strip()
 
 
 def solve_train(ex: TrainExercise) -> TrainSolution:

@@ -17,6 +17,7 @@ from dataclasses import dataclass, field
 
 from ..constructions.errors import TarsimError
 from ..constructions.model import Drive
+from ..constructions.narration import Word, numerals, unit_words, words
 from ..constructions.reference import solver
 from ..constructions.reference.flywheel import (Fluctuation, fluctuation, flywheel_inertia,
                                                 speed_fluctuation)
@@ -107,33 +108,42 @@ class TurningMoment:
         """The turning-moment diagram: the torque against the input's turn, its mean, the
         energy areas shaded and each labelled with its joules."""
         degrees = [math.degrees(a) for a in self.angles]
-        curve = Series("driving torque", tuple(
+        curve = Series(words("driving torque"), tuple(
             (d, t) if t is not None else None for d, t in zip(degrees, self.torques)) + (
             (360.0, self.torques[0]) if self.torques[0] is not None else None,))
         r = self.reading
         series, fills, tags, notes = [curve], [], [], []
+        torque = unit_words("N·m")
         if r is not None:
-            series.append(Series(f"mean {r.mean:.4g} N·m", ((0.0, r.mean), (360.0, r.mean)),
+            series.append(Series(words("mean {value} {unit}", value=numerals(f"{r.mean:.4g}"),
+                                       unit=torque), ((0.0, r.mean), (360.0, r.mean)),
                                  "plot_curve_dashed"))
             fills, tags = self._areas(r)
-            notes.append(f"ΔE = {r.delta_e:.4g} J, the greatest fluctuation of energy: the "
-                         "highest energy less the lowest, adding the areas in turn (shaded "
-                         "light where the driver gives more than the mean, dark where less)")
-        ticks = [(k * 30.0, f"{k * 30}") for k in range(13)]
+            notes.append(words("ΔE = {energy} {unit}, the greatest fluctuation of energy: the "
+                               "highest energy less the lowest, adding the areas in turn (shaded "
+                               "light where the driver gives more than the mean, dark where "
+                               "less)", energy=numerals(f"{r.delta_e:.4g}"),
+                               unit=unit_words("J")))
+        ticks = [(k * 30.0, numerals(f"{k * 30}")) for k in range(13)]
         name = self.exercise.mechanism.name
         marks = [PlotMark(math.degrees(turned), drawn, label.split(" (")[0])
                  for turned, drawn, _, label in self.marks]
         if r is not None:           # where the energy is highest and lowest, on this axis
-            notes.append(f"The energy is lowest at {math.degrees(r.lowest) % 360:.4g}° turned "
-                         f"(θ = {self.theta(r.lowest):.4g}°) and highest at "
-                         f"{math.degrees(r.highest) % 360:.4g}° (θ = "
-                         f"{self.theta(r.highest):.4g}°).")
+            notes.append(words("The energy is lowest at {low}° turned (θ = {theta_low}°) and "
+                               "highest at {high}° (θ = {theta_high}°).",
+                               low=numerals(f"{math.degrees(r.lowest) % 360:.4g}"),
+                               theta_low=numerals(f"{self.theta(r.lowest):.4g}"),
+                               high=numerals(f"{math.degrees(r.highest) % 360:.4g}"),
+                               theta_high=numerals(f"{self.theta(r.highest):.4g}")))
         return draw_line_plot(
-            "Turning-moment diagram", f"input turned {self.turning} from θ = "
-            f"{self.theta(0.0):g}° (°)", "T (N·m)", series, x_range=(0.0, 360.0),
+            words("Turning-moment diagram"),
+            words("input turned {sense} from θ = {angle}° (°)", sense=Word(self.turning),
+                  angle=numerals(f"{self.theta(0.0):g}")), f"T ({torque})", series,
+            x_range=(0.0, 360.0),
             x_ticks=ticks, notes=notes, fills=fills, tags=tags, marks=marks,
-            mark_legend="by the force polygons" if marks else "",
-            subtitle=f"{name}: the driving torque, positive {self.turning}")
+            mark_legend=words("by the force polygons") if marks else "",
+            subtitle=words("{name}: the driving torque, positive {sense}", name=name,
+                           sense=Word(self.turning)))
 
     def _areas(self, r: Fluctuation):
         """Each energy area's outline (between curve and mean) and its label."""
@@ -155,7 +165,7 @@ class TurningMoment:
             big = max(pieces, key=lambda p: p[-1][0] - p[0][0])
             peak = max(big, key=lambda p: abs(p[1] - r.mean))
             tags.append(((big[0][0] + big[-1][0]) / 2, (peak[1] + r.mean) / 2,
-                         f"{area:+.4g} J".replace("-", "−")))
+                         f"{numerals(f'{area:+.4g}'.replace('-', '−'))} {unit_words('J')}"))
         return fills, tags
 
     def csv(self) -> str:

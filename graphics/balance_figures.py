@@ -12,8 +12,9 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 
+from ..constructions.narration import numerals, right_to_left, unit_words, words
 from ..constructions.record import Construction, Ref
-from .figure import Circle, Figure, Path, Text, clear_of
+from .figure import Circle, Figure, Path, Text, clear_of, text_width
 from .scales import draw_caption, nice_per_cm
 from .symbols import draw_arrow
 
@@ -64,17 +65,36 @@ def draw_polygon(c: Construction, tips: Sequence[tuple[str, Ref]], closing: Ref,
         draw_arrow(fig, prev, end, "vector_result")
         mid = ((prev[0] + end[0]) / 2, (prev[1] + end[1]) / 2)
         side = _outward(prev, end, centre, 4.5, up=False)
-        fig.add(Text((mid[0] + side[0], mid[1] + side[1]), reading[0], 3.0,
-                     "start" if side[0] >= 0 else "end", False, "normal", reading[1],
-                     reading[2]))
+        _reading(fig, (mid[0] + side[0], mid[1] + side[1]), reading,
+                 "start" if side[0] >= 0 else "end")
     else:
-        fig.add(Text((prev[0], prev[1] + 10.0), reading[0], 3.0, "middle", False,
-                     "normal", reading[1], reading[2]))      # under the names below the line
-    draw_caption(fig, title, ["head to tail, each parallel to its radial line; the heavy "
-                              "side closes it"], per_cm=per_cm, unit=unit,
+        _reading(fig, (prev[0], prev[1] + 10.0), reading, "middle")  # under the names
+    draw_caption(fig, title, [words("head to tail, each parallel to its radial line; the heavy "
+                                    "side closes it")], per_cm=per_cm, unit=unit,
                  legend=(("vector", "the vectors"), ("vector_result", "the closing side")),
                  notes=notes)
     return fig
+
+
+def _reading(fig: Figure, at: tuple[float, float], reading: tuple[str, str, str],
+             anchor: str) -> None:
+    """The closing side's size: its symbol (text and subscript) and the words after it.
+
+    Right-to-left words after a symbol are set as two runs, the symbol at the right and
+    the words to its left, so the symbol reads first and keeps its brackets whole.
+    """
+    text, sub, tail = reading
+    if not (right_to_left() and sub and tail):
+        fig.add(Text(at, text, 3.0, anchor, False, "normal", sub, tail))
+        return
+    symbol = Text((0.0, 0.0), text, 3.0, "start", False, "normal", sub)
+    words_after = tail.strip()
+    gap = 1.5 * text_width(" ", 3.0)
+    width = symbol.width + gap + text_width(words_after, 3.0)
+    left = at[0] - {"start": 0.0, "middle": width / 2, "end": width}[anchor]
+    fig.add(Text((left + width - symbol.width, at[1]), text, 3.0, "start", False, "normal",
+                 sub))
+    fig.add(Text((left, at[1]), words_after, 3.0, "start", False))
 
 
 def _outward(a, b, corners, by: float, *, up: bool) -> tuple[float, float]:
@@ -136,8 +156,9 @@ def draw_end_view(c: Construction, masses: Sequence[tuple[str, float, str]], tit
                               2.8, "start" if out[0] > 0.2 else "end" if out[0] < -0.2
                               else "middle", False), taken, keep=True,
                          step=(1.5 * out[0], 1.5 * out[1] or 1.5)))
-    draw_caption(fig, title, ["end view: each mass on its radial line, angles from the "
-                              "reference radius (the short dashed one), counter-clockwise"],
+    draw_caption(fig, title, [words("end view: each mass on its radial line, angles from the "
+                                    "reference radius (the short dashed one), "
+                                    "counter-clockwise")],
                  per_cm=per_cm, unit=unit, notes=notes,
                  legend=(("link", "a mass"), ("normal", "a balancing mass found")))
     return fig
@@ -158,8 +179,10 @@ def draw_side_view(planes: Sequence[tuple[str, float, str]], title: str, unit: s
     for i, (label, x, style) in enumerate(sorted(planes, key=lambda p: p[1])):
         fig.add(Path(((x * k, -12.0), (x * k, 12.0)), style))
         fig.add(Text((x * k, -15.0 - 4.0 * (i % 2)), label, 2.8, "middle", False))
-        fig.add(Text((x * k, 16.5 + 4.0 * (i % 2)), f"{x / metre:g}", 2.6, "middle", False))
-    draw_caption(fig, title, [f"side view: the planes along the shaft, positions in {unit}"],
+        fig.add(Text((x * k, 16.5 + 4.0 * (i % 2)), numerals(f"{x / metre:g}"), 2.6, "middle",
+                     False))
+    draw_caption(fig, title, [words("side view: the planes along the shaft, positions in {unit}",
+                                    unit=unit_words(unit))],
                  per_cm=per_cm, unit=unit,
                  legend=(("link", "a mass's plane"), ("normal", "a balancing plane")))
     return fig

@@ -15,6 +15,7 @@ from collections.abc import Sequence
 
 from ..constructions.cams.inversion import Layout
 from ..constructions.cams.survey import Survey
+from ..constructions.narration import numerals, words
 from .figure import Circle, Figure, Path, Text
 from .scales import draw_caption, nice_per_cm
 from .symbols import draw_arrow, draw_turning_arrow, mark_angle
@@ -63,7 +64,7 @@ def draw_cam_layout(layout: Layout, s: Survey, title: str, unit: str, metre: flo
             tag = _beyond(trace, rest, 3.0)       # the pressure angle's arrows run outside
         else:
             tag = _beyond(start, trace, past + 2.6)
-        fig.add(Text((tag[0], tag[1] + 1.0), str(p.number), 2.6, "middle", False))
+        fig.add(Text((tag[0], tag[1] + 1.0), numerals(str(p.number)), 2.6, "middle", False))
         if f.kind == "roller":
             fig.add(Circle(trace, f.radius * k, "node_circle"))
         elif f.kind == "flat-faced":
@@ -93,8 +94,9 @@ def draw_cam_layout(layout: Layout, s: Survey, title: str, unit: str, metre: flo
     _mark_steepest(fig, s, paper, k)
     for st in s.undercut[:: max(1, len(s.undercut) // 6)]:
         fig.add(Circle(paper(st.profile), 2.2, "normal"))
-    legend = [("link", "profile" + (" (the pitch curve)" if f.kind == "knife-edge" else "")),
-              ("dimension", "base circle")]
+    legend = [("link", _cam_term("profile (the pitch curve)" if f.kind == "knife-edge"
+                                 else "profile")),
+              ("dimension", _cam_term("base circle"))]
     if f.kind == "roller":
         legend.append(("normal", "pitch curve"))
     for name in layout.circles:
@@ -105,10 +107,18 @@ def draw_cam_layout(layout: Layout, s: Survey, title: str, unit: str, metre: flo
     if f.kind != "knife-edge":
         legend.append(("node_circle", "the roller at each station" if f.kind == "roller"
                        else "the face at each station"))
-    draw_caption(fig, title, ["the cam held still, the follower turned the other way"],
+    draw_caption(fig, title, [words("the cam held still, the follower turned the other way")],
                  per_cm=per_cm, unit=unit,
                  legend=legend, notes=notes)
     return fig
+
+
+def _cam_term(text: str) -> str:
+    """A term as a cam's figure says it where a gear's says it otherwise (a gear's base
+    circle is دایرهٔ مبنا, a cam's دایرهٔ پایه): the catalogue keys it "cam: <term>"."""
+    key = f"cam: {text}"
+    said = words(key)
+    return text if said == key else said
 
 
 def _mark_steepest(fig: Figure, s: Survey, paper, k: float) -> None:
@@ -131,9 +141,10 @@ def _mark_steepest(fig: Figure, s: Survey, paper, k: float) -> None:
     # The reading beyond the arc, on the side away from the cam.
     out = _unit((mid[0] - at[0], mid[1] - at[1]))
     spot = (at[0] + (length + 4.0) * out[0], at[1] + (length + 4.0) * out[1])
-    fig.add(Text(spot, f"φ max = {abs(math.degrees(st.pressure_angle)):.1f}° at θ = "
-                 f"{math.degrees(st.theta):.0f}°", 2.8, "start" if out[0] >= 0 else "end",
-                 False))
+    fig.add(Text(spot, words("φ max = {phi}° at θ = {theta}°",
+                             phi=numerals(f"{abs(math.degrees(st.pressure_angle)):.1f}"),
+                             theta=numerals(f"{math.degrees(st.theta):.0f}")), 2.8,
+                 "start" if out[0] >= 0 else "end", False))
 
 
 def _unit(v: tuple[float, float]) -> tuple[float, float]:

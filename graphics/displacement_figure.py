@@ -12,6 +12,7 @@ from __future__ import annotations
 import math
 
 from ..constructions.cams.displacement import Displacement
+from ..constructions.narration import numerals, unit_words, words
 from .figure import Circle, Figure, Path, Text, arc_points
 from .scales import draw_caption, nice_per_cm
 from .symbols import draw_dimension
@@ -43,7 +44,7 @@ def draw_displacement_figure(d: Displacement, curve: list[tuple[float, float]], 
     for deg in range(0, 361, 30):
         x = math.radians(deg) * d.per_rad * k
         fig.add(Path(((x, 0.0), (x, 1.5)), "dimension"))
-        fig.add(Text((x, max(4.5, below + 3.5)), f"{deg}°", 2.8, "middle", False))
+        fig.add(Text((x, max(4.5, below + 3.5)), numerals(f"{deg}°"), 2.8, "middle", False))
     for start, end in d.strokes:
         fig.add(Path((paper(c.output(start).xy), paper(c.output(end).xy)), "construction"))
     for (cx, cy), r, start, sweep in _arcs(d, paper):
@@ -58,19 +59,22 @@ def draw_displacement_figure(d: Displacement, curve: list[tuple[float, float]], 
                 # Above the curve, on the side it comes down from: clear of the curve, the
                 # ordinate, and the projection that runs in at the point's own height.
                 rising = ys[i + 1] < ys[i - 1]               # paper y runs down
-                fig.add(Text((x - 1.3 if rising else x + 1.3, y - 2.3), str(i), 2.6,
+                fig.add(Text((x - 1.3 if rising else x + 1.3, y - 2.3), numerals(str(i)), 2.6,
                              "end" if rising else "start", False))
     if top > 0:
         mid = draw_dimension(fig, (right, 0.0), (right, -top * k), (1.0, 0.0), 6.0)
-        fig.add(Text((mid[0] + 1.5, mid[1]), f"{top / metre:.4g} {unit}", 2.8, "start",
-                     False))
+        fig.add(Text((mid[0] + 1.5, mid[1]), f"{numerals(f'{top / metre:.4g}')} "
+                     f"{unit_words(unit)}", 2.8, "start", False))
         if arm:
-            fig.add(Text((mid[0] + 1.5, mid[1] + 4.0), f"(a swing of "
-                         f"{math.degrees(top / arm):.4g}°)", 2.8, "start", False))
+            fig.add(Text((mid[0] + 1.5, mid[1] + 4.0), words(
+                "(a swing of {angle}°)", angle=numerals(f"{math.degrees(top / arm):.4g}")),
+                2.8, "start", False))
     fig.add(Path(tuple(paper((t * d.per_rad, y)) for t, y in curve), "vector_result"))
-    draw_caption(fig, title, ["cam angle across, lift up; each segment's construction"
-                              if not arm else "cam angle across, the arc the arm's end "
-                              f"swings up ({arm / metre:g} {unit} × the swing)"],
+    draw_caption(fig, title, [words("cam angle across, lift up; each segment's construction")
+                              if not arm else words(
+                                  "cam angle across, the arc the arm's end swings up ({arm} "
+                                  "{unit} × the swing)", arm=numerals(f"{arm / metre:g}"),
+                                  unit=unit_words(unit))],
                  per_cm=per_cm, unit=unit,
                  legend=(("vector_result", "displacement"), ("construction",
                                                              "construction lines"),

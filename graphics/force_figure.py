@@ -6,9 +6,11 @@ last side drawn heavy (the frame's force on the crank, the crank's on a block).
 from __future__ import annotations
 
 import math
+import re
 from collections.abc import Sequence
 
 from ..constructions import geometry as g
+from ..constructions.narration import words
 from ..constructions.record import Construction, Panel, Role
 from .figure import Circle, Figure, Path
 from .labels import LabelPlacer
@@ -72,17 +74,29 @@ def draw_force_figure(c: Construction, scale: float, title: str,
                if s.verb == "intersect_lines"]
     for at, _ in crosses:
         fig.add(Circle(at, 0.7, "dot"))
-    titles = [(paper(c.output(s.inputs[0]).xy), s.label) for s in steps
+    titles = [(paper(c.output(s.inputs[0]).xy), _polygon_title(s.label)) for s in steps
               if s.verb == "mark" and s.label]
     _name_forces(fig, named, crosses, titles)
-    draw_caption(fig, title, ["each link's loads head to tail; a polygon closed by two lines "
-                              "crossing at x, or by its heavy closing side"],
+    draw_caption(fig, title, [words("each link's loads head to tail; a polygon closed by two "
+                                    "lines crossing at x, or by its heavy closing side")],
                  per_cm=per_cm, unit="N", legend=(("vector", "a force"),
                                                   ("vector_result", "a closing side"),
                                                   ("construction", "a line of known "
                                                                    "direction")),
                  notes=notes, scale_name="Force scale")
     return fig
+
+
+def _polygon_title(label: str) -> str:
+    """A polygon's name ("link 2", "links 3, 4") in the language being spoken; a link's
+    number is its name in every language."""
+    one = re.fullmatch(r"link (\S+)", label)
+    if one:
+        return words("link {link}", link=one[1])
+    two = re.fullmatch(r"links (\S+), (\S+)", label)
+    if two:
+        return words("links {i}, {j}", i=two[1], j=two[2])
+    return label
 
 
 _SAME = 0.8
@@ -162,7 +176,8 @@ def typeset_force(name: str) -> tuple[str, str, str]:
     """A force's or a moment's name as printed, (letter, subscript, what follows on the
     baseline): F_23ᵗ is F with 23 below and ᵗ after, T_43 T with 43 below, Fi3 F with i3
     below (Mi3 the same for its couple), W3, P5 and T2 a letter with digits below, and a
-    trailing prime follows; other names ("gas force") are set as they are.
+    trailing prime follows; other names ("gas force") are set as they are, in the language
+    being spoken if it has words for them (a name of the user's own stays as written).
 
     >>> typeset_force("F_23ᵗ"), typeset_force("Fi3′"), typeset_force("gas force")
     (('F', '23', 'ᵗ'), ('F', 'i3', '′'), ('gas force', '', ''))
@@ -177,4 +192,4 @@ def typeset_force(name: str) -> tuple[str, str, str]:
         return body[0], body[1:], tail
     if body[:1] in "WPT" and body[1:].isdigit():
         return body[0], body[1:], tail
-    return name, "", ""
+    return words(body) + tail, "", ""

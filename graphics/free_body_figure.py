@@ -12,10 +12,11 @@ from __future__ import annotations
 import math
 
 from ..constructions.checks import NOISE
+from ..constructions.narration import words
 from .figure import Figure, Path, Text
 from .force_figure import in_lane, runs_along
 from .labels import LabelPlacer, typeset
-from .load_marks import draw_couple, keep_clear, name_loads
+from .load_marks import amount, draw_couple, keep_clear, name_loads, too_small
 from .scales import draw_caption, nice_per_cm
 from .symbols import draw_arrow
 
@@ -39,7 +40,7 @@ def draw_free_bodies(mech, at: dict, bodies: dict, title: str, unit: str) -> Fig
     k_space = 10.0 / (per_cm * metre)                  # paper mm a metre
     biggest = max([math.hypot(*f) for b in bodies.values() for _, f, _, _ in b] + [1e-300])
     force_cm = nice_per_cm(biggest, _ARROW)             # newtons a paper cm
-    small: list[str] = []
+    small: list[tuple[str, float, str, int]] = []
     drawn = [_draw_body(mech, link, at, bodies[link], k_space, 10.0 / force_cm, biggest, small)
              for link in links]
     fig = Figure(0.0, 0.0, title=title)
@@ -52,9 +53,9 @@ def draw_free_bodies(mech, at: dict, bodies: dict, title: str, unit: str) -> Fig
         fig.items += body.items
         x += (x1 - x0) + _GAP
         row_height = max(row_height, y1 - y0)
-    notes = [f"Too small to draw: {', '.join(small)}."] if small else []
-    draw_caption(fig, title, ["each link alone with every force on it; its forces add to "
-                              "nothing"], per_cm=per_cm, unit=unit, scale_name="Scale",
+    notes = too_small(small)
+    draw_caption(fig, title, [words("each link alone with every force on it; its forces add "
+                                    "to nothing")], per_cm=per_cm, unit=unit, scale_name="Scale",
                  second=("Force scale", force_cm, "N"), notes=notes)
     return fig
 
@@ -73,10 +74,11 @@ _GAP = 14.0
 
 
 def _draw_body(mech, link: int, at: dict, forces: list, k_space: float, k_force: float,
-               biggest: float, small: list[str]) -> Figure:
+               biggest: float, small: list[tuple[str, float, str, int]]) -> Figure:
     """One link alone: its outline, every force an arrow from where it acts and every couple
     a turning arrow, then all their names, placed clear of the drawing and of each other,
-    and the link's number under it. Forces too small to draw are added to ``small``."""
+    and the link's number under it. Forces too small to draw are added to ``small`` (name,
+    size, unit, link)."""
     names = mech.link(link).names
     pts = [at[n] for n in names]
     every = pts + [w for w, _, _, _ in forces]
@@ -116,9 +118,9 @@ def _draw_body(mech, link: int, at: dict, forces: list, k_space: float, k_force:
                     tail, head = back
             tail, head = in_lane(tail, head, [(a, b) for a, b, _, _ in arrows])
             draw_arrow(fig, tail, head, "vector")
-            arrows.append((tail, head, name, f" = {size:.4g} N"))
+            arrows.append((tail, head, name, f" = {amount(size, '.4g', 'N')}"))
         elif size > NOISE * biggest:             # a zero's rounding is no force at all
-            small.append(f"{name.replace('_', '')} = {size:.3g} N on link {link}")
+            small.append((name.replace('_', ''), size, "N", link))
         if abs(couple) > NOISE * biggest * reach:
             draw_couple(fig, tail, couple, name, turns, 5.0)
     placer = LabelPlacer(fig)
@@ -131,7 +133,8 @@ def _draw_body(mech, link: int, at: dict, forces: list, k_space: float, k_force:
                      rings=(1.0, 1.6, 2.3, 3.2, 4.2), sub=sub)
     name_loads(placer, arrows, turns, 2.6, _FARTHER)
     x0, _, x1, y1 = fig.bounds()
-    fig.add(Text(((x0 + x1) / 2, y1 + 6.0), f"link {link}", 3.0, "middle", False, "bold"))
+    fig.add(Text(((x0 + x1) / 2, y1 + 6.0), words("link {link}", link=link), 3.0, "middle", False,
+                 "bold"))
     return fig
 
 

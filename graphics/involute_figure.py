@@ -14,6 +14,7 @@ import math
 
 from ..constructions.gears.involute import InvoluteMesh
 from ..constructions.gears.train import GearTrain
+from ..constructions.narration import numerals, unit_words, words
 from .figure import Figure, Path, Circle
 from .labels import LabelPlacer, subscript
 from .scales import draw_caption, nice_per_cm
@@ -65,10 +66,9 @@ def draw_involute_figure(train: GearTrain, mesh: InvoluteMesh, title: str) -> Fi
     y = 0.0
     left, right = paper((x0, y)), paper((x1, y))
     fig.add(Path((left, right), "working"))
-    for name, at, side in ((f"to {c['O2'].label}", left, math.pi), (f"to {c['O3'].label}",
-                                                                    right, 0.0)):
-        placer.place(subscript(name), at, prefer=side, spread=0.5, gap=1.0, size=3.0,
-                     italic=False)
+    for name, at, side in ((c['O2'].label, left, math.pi), (c['O3'].label, right, 0.0)):
+        placer.place(words("to {centre}", centre=subscript(name)), at, prefer=side, spread=0.5,
+                     gap=1.0, size=3.0, italic=False)
     # The line of action, the common tangent, the path of contact.
     t2, t3 = paper(c.output("T2").xy), paper(c.output("T3").xy)
     _line(fig, placer, [t2, t3], "vector")
@@ -104,10 +104,13 @@ def draw_involute_figure(train: GearTrain, mesh: InvoluteMesh, title: str) -> Fi
                          prefer=(0.8, 2.4, -0.8, -2.4), gap=1.2, size=3.2)
     pa, wa = (train.gear(n) for n in mesh.centres)
     draw_caption(fig, train.name,
-                 [f"module {float(pa.module) * 1e3:g} mm, {pa.teeth} and {wa.teeth} teeth, "
-                  f"pressure angle {math.degrees(mesh.pressure_angle):.4g}°",
-                  f"path of contact AB = {mesh.path * 1e3:.4g} mm, contact ratio "
-                  f"{mesh.contact_ratio:.4g}"],
+                 [words("module {module} {mm}, {z1} and {z2} teeth, pressure angle {angle}°",
+                        module=numerals(f"{float(pa.module) * 1e3:g}"), mm=unit_words("mm"),
+                        z1=numerals(str(pa.teeth)), z2=numerals(str(wa.teeth)),
+                        angle=numerals(f"{math.degrees(mesh.pressure_angle):.4g}")),
+                  words("path of contact AB = {path} {mm}, contact ratio {ratio}",
+                        path=numerals(f"{mesh.path * 1e3:.4g}"), mm=unit_words("mm"),
+                        ratio=numerals(f"{mesh.contact_ratio:.4g}"))],
                  per_cm=per_cm, unit="mm",
                  legend=(("construction", "pitch circles"), ("reference", "base circles"),
                          ("gauge", "addendum and root circles"), ("vector", "line of action"),

@@ -12,11 +12,12 @@ from __future__ import annotations
 from ..constructions import geometry as g
 from ..constructions.gears.kutzbach import Kutzbach
 from ..constructions.gears.train import GearTrain
+from ..constructions.narration import words
 from .figure import Circle, Figure, Path
 from .labels import LabelPlacer, subscript
 from .scales import draw_caption
 
-__all__ = ["draw_kutzbach_figure"]
+__all__ = ["draw_kutzbach_figure", "member_words"]
 
 _OVER = 8.0        # how far (mm) a line runs past the points it was drawn through
 
@@ -66,7 +67,7 @@ def draw_kutzbach_figure(train: GearTrain, k: Kutzbach, title: str,
         fig.add(Path((lo, end), "vector"))
         placer.block_segment(lo, end, 0.6)
         w = k.omegas[body[0]] / train.units.per_rad_s
-        sense = "" if w == 0 else (" ccw" if w > 0 else " cw")
+        sense = "" if w == 0 else " " + words("ccw" if w > 0 else "cw")
         names = ", ".join(subscript(f"ω{m}") for m in body)
         named.append((f"{names} = {abs(w):.4g} {train.units.speed}{sense}", end))
     dots: list[tuple[float, float]] = []
@@ -85,13 +86,26 @@ def draw_kutzbach_figure(train: GearTrain, k: Kutzbach, title: str,
             dots.remove(p)
             placer.place(subscript(c[ref].label), p, prefer=(0.8, 2.4), gap=1.2, size=3.2)
     placer.place("O", (0.0, 0.0), prefer=-1.57, gap=1.5, size=3.2)
-    fixed = train.label(train.fixed)
-    draw_caption(fig, f"{train.name}: velocity (Kutzbach) diagram",
-                 [f"{fixed} fixed; velocities across the radial line, ccw to the right",
-                  "each member's ω is the slope Δv/Δr of its line"],
+    draw_caption(fig, words("{name}: velocity (Kutzbach) diagram", name=train.name),
+                 [words("{member} fixed; velocities across the radial line, ccw to the right",
+                        member=member_words(train, train.fixed)),
+                  words("each member's ω is the slope Δv/Δr of its line")],
                  per_cm=k.per_cm, unit=k.unit, scale_name="Radius scale",
                  second=("Velocity scale", k.velocity_per_cm, f"{k.unit}/s"), notes=notes)
     return fig
+
+
+def member_words(train: GearTrain, member: int) -> str:
+    """A member as a figure names it in the language being spoken: "gear 1 (ring)", "the
+    arm 3" in English, as the steps do (:meth:`GearTrain.label`); its name translated where
+    the language has a word for it, else as the file gives it."""
+    if member == train.arm:
+        name = train.arm_name if train.arm_name and train.arm_name != "arm" else ""
+        return (words("the arm {arm} ({name})", arm=str(member), name=words(name)) if name
+                else words("the arm {arm}", arm=str(member)))
+    name = train.gear(member).name
+    return (words("gear {gear} ({name})", gear=str(member), name=words(name)) if name
+            else words("gear {gear}", gear=str(member)))
 
 
 def g_point_box(p: tuple[float, float]):

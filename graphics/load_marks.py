@@ -8,12 +8,13 @@ import math
 
 from shapely.geometry import Point as SPoint
 
+from ..constructions.narration import numerals, unit_words, words
 from .figure import Figure
 from .force_figure import typeset_force
 from .labels import LabelPlacer
 from .symbols import draw_turning_arrow
 
-__all__ = ["draw_couple", "name_loads"]
+__all__ = ["draw_couple", "name_loads", "amount", "too_small"]
 
 Turn = tuple[tuple[float, float], tuple[float, float], str, str, float]
 """A drawn couple: its centre, the middle of its arc, its name, what follows the name, and
@@ -30,7 +31,31 @@ def draw_couple(fig: Figure, at: tuple[float, float], couple: float, name: str,
     r = radius + 2.5 * sum(math.dist(at, t[0]) < 0.5 for t in turns)
     mid = draw_turning_arrow(fig, at, r, math.radians(30),
                              math.copysign(math.radians(240), couple))
-    turns.append((at, mid, name.replace("Fi", "Mi"), f" = {abs(couple):.4g} N·m", r))
+    turns.append((at, mid, name.replace("Fi", "Mi"), f" = {amount(abs(couple), '.4g', 'N·m')}",
+                  r))
+
+
+def amount(value: float, spec: str, unit: str) -> str:
+    """A force's or couple's size and unit as the language being spoken writes them:
+    "5000 N", "۵۰۰۰ نیوتن"."""
+    return f"{numerals(format(value, spec))} {unit_words(unit)}"
+
+
+def too_small(items: list[tuple[str, float, str, int]]) -> list[str]:
+    """The note listing the loads too small to draw, each (name, size, unit, link), in the
+    language being spoken; none when there are none."""
+    if not items:
+        return []
+    said = [words("{name} = {size} on link {link}", name=_said_name(name),
+                  size=amount(size, ".3g", unit), link=link) for name, size, unit, link in items]
+    return [words("Too small to draw: {items}.", items=words(", ").join(said))]
+
+
+def _said_name(name: str) -> str:
+    """A load's name in a line of text: a symbol (Fi2, W3, F54) as it is, a name in words
+    ("gas force") in the language being spoken."""
+    text, sub, _ = typeset_force(name)
+    return name if sub else text
 
 
 def keep_clear(placer: LabelPlacer, arrows: list[Arrow], turns: list[Turn]) -> None:

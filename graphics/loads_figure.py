@@ -12,11 +12,12 @@ from __future__ import annotations
 
 import math
 
+from ..constructions.narration import numerals, unit_words
 from ..constructions.record import Slice
 from .figure import Figure, View
 from .force_figure import in_lane
 from .labels import LabelPlacer
-from .load_marks import draw_couple, keep_clear, name_loads
+from .load_marks import amount, draw_couple, keep_clear, name_loads, too_small
 from .scales import nice_per_cm
 from .scene import draw_scene
 from .symbols import draw_arrow
@@ -69,13 +70,12 @@ def draw_loads(shown: Slice, loads: dict, *, title: str, per_cm: float | None = 
                     tail, head = in_lane(point, head, taken)     # beside a link, not on it
                     taken.append((tail, head))
                     draw_arrow(fig, tail, head, "vector")
-                    arrows.append((tail, head, name, f" = {size:.4g} N"))
+                    arrows.append((tail, head, name, f" = {amount(size, '.4g', 'N')}"))
                 elif size > _NOISE * biggest:
-                    small.append(f"{name} = {size:.3g} N on link {link}")
+                    small.append((name, size, "N", link))
                 moment = biggest * extent / view.scale    # the largest force across it all
                 if _NOISE * moment < abs(couple) <= _SLIGHT * moment:
-                    small.append(f"{name.replace('Fi', 'Mi')} = {abs(couple):.3g} N·m on link "
-                                 f"{link}")
+                    small.append((name.replace('Fi', 'Mi'), abs(couple), "N·m", link))
                 elif abs(couple) > _SLIGHT * moment:
                     draw_couple(fig, point, couple, name, turns, 4.5)
             for name, (where, f, couple) in inertia.items():
@@ -88,7 +88,8 @@ def draw_loads(shown: Slice, loads: dict, *, title: str, per_cm: float | None = 
                 draw_arrow(fig, at, head, "vector_dashed")
                 h = math.hypot(*offset) / shown.construction.mechanism.units.metres
                 unit = shown.construction.mechanism.units.length
-                arrows.append((at, head, name + "′", f" (h = {h:.3g} {unit})"))
+                arrows.append((at, head, name + "′",
+                               f" (h = {numerals(f'{h:.3g}')} {unit_words(unit)})"))
         for tail, head, _, _ in arrows:
             placer.block_path([tail, head])
         keep_clear(placer, arrows, turns)
@@ -107,7 +108,7 @@ def _name(placer: LabelPlacer, arrows, turns, small, force_cm: float):
     if any(name.endswith("′") for _, _, name, _ in arrows):
         legend.append(("vector_dashed", "an inertia force and couple as one force, offset h "
                                         "from G"))
-    notes = [f"Too small to draw: {', '.join(small)}."] if small else []
+    notes = too_small(small)
     return ("Force scale", force_cm, "N"), legend, notes
 
 

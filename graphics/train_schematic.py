@@ -19,6 +19,7 @@ from __future__ import annotations
 
 from ..constructions.gears.train import GearTrain
 from ..constructions.model import LENGTH_UNITS
+from ..constructions.narration import words
 from .figure import Figure, Path
 from .labels import LabelPlacer
 from .scales import draw_caption, nice_per_cm
@@ -94,9 +95,10 @@ def draw_train_schematic(train: GearTrain, title: str, outputs: tuple[int, ...] 
     for text, at in labels:
         placer.place(text, at, prefer=(0.0, 3.1416, 1.57), spread=0.7, gap=1.5, size=3.6,
                      italic=False)
-    held = (f"member {train.fixed} fixed (hatched)" if train.fixed is not None
-            else "every axis fixed in the housing")
-    draw_caption(fig, f"{train.name}: the train", [held, "radii to scale, the planes apart"],
+    held = (words("member {member} fixed (hatched)", member=str(train.fixed))
+            if train.fixed is not None else words("every axis fixed in the housing"))
+    draw_caption(fig, words("{name}: the train", name=train.name),
+                 [held, words("radii to scale, the planes apart")],
                  per_cm=per_cm, unit=unit, scale_name="Radius scale")
     return fig
 

@@ -26,6 +26,16 @@ WORDS: dict[str, str] = {"at rest": "at rest"}
 """Small words as the language says them (English: as they are)."""
 
 PHRASES: dict[str, str] = {
+    # ----- notes under the figures (assumptions, warnings) -------------------------------------
+    "note.alpha_not_given": "α{link} is not given, so it is taken as 0.",
+    "note.ill_conditioned": "{centre} is ill-conditioned: conditioning {cond} along its "
+                            "construction (its own two lines meet at {angle}°)",
+    "note.given_rate": "{what} = {value} is given: the velocity polygon drawn at ω{link} = "
+                       "1 rad/s gives {target} = {per}, so ω{link} = {omega}{sense}{second}.",
+    "note.given_alpha": "; the acceleration polygons drawn at that ω with α{link} = 0 and "
+                        "1 rad/s² give α{link} = {alpha}",
+    "note.along_guide": "V_{point} along its guide",
+    "note.sense": " ({sense})",
     # ----- steps.md's own words (exercises.solution_files) -----------------------------------
     "md.title": "{name}: worked solution",
     "md.at": "At {where}",
@@ -86,6 +96,20 @@ PHRASES: dict[str, str] = {
     "gears.mesh_carries": "{driven} meshes {kind}ly with {driver}, so it turns {way}, "
                           "N{a}/N{b} = {na}/{nb} as fast: {turns} → {result}.",
     "gears.shaft_carries": "{member} is on one shaft with {other}: it turns alike, {turns}.",
+    "gears.fixed": ", fixed",
+    "gears.one_planet": "one planet",
+    "gears.planets": "{n} planets, equally spaced",
+    "gears.speed": "{value} {unit}{sense}",
+    "gears.sense": " {sense}",
+    "kutzbach.planet_centres": "the planets' centres",
+    "gears.one_shaft": ", on one shaft with {others}",
+    "gears.modules": "{value} modules",
+    "involute.circle_of": "{circle} of {gear}",
+    "gears.idler": "; the idler {idlers} cancels",
+    "gears.idlers": "; the idlers {idlers} cancel",
+    "gears.the_gear": "gear {number}{name}",
+    "gears.the_arm": "the arm {number}{name}",
+    "gears.named": " ({name})",
     "gears.train_value": "The train value e = ω{last}/ω{first} = ({drivers})/({driven}) = "
                          "{teeth} = {value}: driver teeth over driven teeth, {externals} "
                          "external meshes making it {sign}{idlers}.",

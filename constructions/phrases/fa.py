@@ -9,7 +9,12 @@ algorithm sets Persian digits.
 
 from __future__ import annotations
 
-__all__ = ["PHRASES", "WORDS", "UNITS", "digits", "capitalized", "DIGITS"]
+from . import fa_balancing, fa_cams, fa_forces, fa_trains
+
+__all__ = ["PHRASES", "WORDS", "UNITS", "digits", "capitalized", "DIGITS", "DIRECTION"]
+
+DIRECTION = "rtl"
+"""Persian reads right to left: a figure's caption aligns right, a table's columns mirror."""
 
 DIGITS = str.maketrans("0123456789.", "۰۱۲۳۴۵۶۷۸۹٫")
 """ASCII digits and the decimal point as Persian writes them."""
@@ -32,7 +37,9 @@ def capitalized(text: str) -> str:
 
 UNITS: dict[str, str] = {
     "mm": "میلی\u200cمتر", "cm": "سانتی\u200cمتر", "m": "متر", "in": "اینچ",
-    "rad": "رادیان", "/s": " بر ثانیه", "/s²": " بر مجذور ثانیه",
+    "rad": "رادیان", "/s": " بر ثانیه", "/s²": " بر مجذور ثانیه", "/s³": " بر مکعب ثانیه",
+    "N": "نیوتن", "N·m": "نیوتن\u200cمتر", "kg": "کیلوگرم", "kg·m": "کیلوگرم\u200cمتر",
+    "kg·m²": "کیلوگرم\u200cمترمربع", "rpm": "دور بر دقیقه", "modules": "مدول", "J": "ژول",
 }
 """Unit names as Persian says them ("میلی‌متر بر ثانیه"); the degree sign stays."""
 
@@ -75,10 +82,76 @@ WORDS: dict[str, str] = {
         "سمت چپ راهنما (یک ربع دور پادساعتگرد از راستای آن)",
     "the guide's right (a quarter turn clockwise from its direction)":
         "سمت راست راهنما (یک ربع دور ساعتگرد از راستای آن)",
+    # ----- the figures' own words (graphics/: captions, legends, tables) -----------------
+    # A title: the mechanism's name (the file's [names] fa), then what the figure shows.
+    "{name}: {what}": "{name}: {what}",
+    "{name}: {what} at {where}": "{name}: {what} در {where}",
+    "{title} (continued)": "{title} (ادامه)",
+    "Scale": "مقیاس", "Velocity scale": "مقیاس سرعت", "Acceleration scale": "مقیاس شتاب",
+    "Force scale": "مقیاس نیرو",
+    "Kennedy line": "خط کندی", "common normal": "عمود مشترک", "gauge line": "خط سنجه",
+    "construction line": "خط ترسیم", "a point": "یک نقطه",
+    "to {name}, {length} from {near}": "به سوی {name}، {length} از {near}",
+    "stroke": "کورس",
+    "Stroke of {point}: {length}.": "کورس {point}: {length}.",
+    "n = {n} links, N = n(n−1)/2 = {total} centres: {primaries} by inspection, "
+    "{kennedy} by Kennedy":
+        "n = {n} میله، N = n(n−1)/2 = {total} مرکز آنی: {primaries} با مشاهده، {kennedy} با "
+        "قضیهٔ کندی",
+    "Found by Kennedy, in order (dashed chords):":
+        "یافته با قضیهٔ کندی، به ترتیب (وترهای خط\u200cچین):",
+    "Found by Kennedy, the first {found} of {kennedy}:":
+        "یافته با قضیهٔ کندی، {found} مرکز نخست از {kennedy}:",
+    # the results tables
+    "quantity": "کمیت", "method": "روش", "construction": "ترسیم", "analytic": "تحلیلی",
+    "relative error": "خطای نسبی", "answer": "پاسخ", "check": "وارسی",
+    "{what} at {where}": "{what} در {where}",
+    "any point (no relative motion)": "هر نقطه (بی\u200cحرکت نسبی)",
+    "at infinity, direction ({dx}, {dy})": "در بی\u200cنهایت، در راستای ({dx}, {dy})",
+    # what a figure shows, after the mechanism's name in its title
+    "instant centres": "مراکز آنی", "space diagram": "نمودار فضایی",
+    "worked solution": "حل کامل", "limit positions": "وضعیت\u200cهای حدی",
+    "loads": "بارها", "free bodies": "نمودارهای جسم آزاد",
+    "space diagram with the loads": "نمودار فضایی با بارها",
+    "free-body diagrams": "نمودارهای جسم آزاد", "positions by compass": "وضعیت\u200cها با پرگار",
+    "equivalent linkage": "مکانیزم معادل",
+    "Klein's construction (V = ω·OM)": "ترسیم کلاین (V = ω·OM)",
+    "Klein's construction (a = ω²·NO)": "ترسیم کلاین (a = ω²·NO)",
+    "circle diagram": "دایرهٔ کمکی",
+    # the chapters' steps.md
+    "The train": "قطار چرخدنده", "The tabular method": "روش جدولی",
+    "The train value": "مقدار قطار", "The other common form:": "شکل رایج دیگر:",
+    "The involute mesh": "درگیری اینولوتی",
+    "The velocity (Kutzbach) diagram": "نمودار سرعت (کوتزباخ)",
+    "found": "یافته", "Willis": "ویلیس", "the same": "برابر", "yes": "بله", "NO": "خیر",
+    "The construction": "ترسیم",
+    "internal": "داخلی", "external": "خارجی", "the same way": "در همان جهت",
+    "the other way": "در جهت مخالف", "negative: opposite senses": "منفی: جهت\u200cها مخالف",
+    "positive: one sense": "مثبت: یک جهت", "tabular": "جدولی",
+    "pitch circle": "دایرهٔ گام", "base circle": "دایرهٔ پایه", "addendum circle": "دایرهٔ سر",
+    "root circle": "دایرهٔ ریشه", "no angular acceleration": "بی\u200cشتاب زاویه\u200cای",
+    "train value": "مقدار قطار",
+    "The displacement diagram": "نمودار جابه\u200cجایی", "Peaks": "بیشینه\u200cها",
+    "The cam turns at constant speed, so ẏ = y′ω and ÿ = y″ω² (the notes' chain rule with "
+    "α = 0).": "بادامک با سرعت ثابت می\u200cچرخد، پس ẏ = y′ω و ÿ = y″ω² (قاعدهٔ زنجیره\u200cای "
+               "جزوه با α = 0).",
+    "ÿ jumps at θ = {jumps}: the jerk is infinite there.":
+        "ÿ در θ = {jumps} جهش دارد: جرک در آنجا بی\u200cنهایت است.",
+    "The profile by inversion": "پروفیل به روش وارونگی",
 }
 """Small words and headings as Persian says them."""
 
 PHRASES: dict[str, str] = {
+    "note.alpha_not_given": "α{link} داده نشده است، پس صفر گرفته می\u200cشود.",
+    "note.ill_conditioned": "{centre} بدوضع است: عدد وضعیت {cond} در ترسیم آن (دو خط خودش "
+                            "با زاویهٔ {angle}° یکدیگر را قطع می\u200cکنند)",
+    "note.given_rate": "{what} = {value} داده شده است: چندضلعی سرعتی که با ω{link} = ۱ رادیان "
+                       "بر ثانیه رسم شود {target} = {per} می\u200cدهد، پس ω{link} = "
+                       "{omega}{sense}{second}.",
+    "note.given_alpha": "؛ چندضلعی\u200cهای شتابی که با همان ω و با α{link} = ۰ و ۱ رادیان بر "
+                        "مجذور ثانیه رسم شوند α{link} = {alpha} می\u200cدهند",
+    "note.along_guide": "V_{point} در امتداد راهنمایش",
+    "note.sense": " ({sense})",
     "md.title": "{name}: حل کامل",
     "md.at": "در {where}",
     "md.position": "وضعیت: θ{link} = {angle}، ω{link} = {omega} rad/s {sense}، α{link} = "
@@ -140,6 +213,20 @@ PHRASES: dict[str, str] = {
     "gears.mesh_carries": "{driven} با {driver} درگیری {kind} دارد، پس {way} و با سرعتی "
                           "N{a}/N{b} = {na}/{nb} برابرِ آن می‌چرخد: {turns} → {result}.",
     "gears.shaft_carries": "{member} با {other} روی یک محور قرار دارد: همانند آن می‌چرخد، {turns}.",
+    "gears.fixed": "، ثابت",
+    "gears.one_planet": "یک چرخ سیاره\u200cای",
+    "gears.planets": "{n} چرخ سیاره\u200cای با فاصلهٔ برابر",
+    "gears.speed": "{value} {unit}{sense}",
+    "gears.sense": " {sense}",
+    "kutzbach.planet_centres": "مرکز چرخ\u200cهای سیاره\u200cای",
+    "gears.one_shaft": "، هم\u200cمحور با {others}",
+    "gears.modules": "{value} مدول",
+    "involute.circle_of": "{circle} چرخدندهٔ {gear}",
+    "gears.idler": "؛ چرخ هرزگرد {idlers} اثری ندارد",
+    "gears.idlers": "؛ چرخ\u200cهای هرزگرد {idlers} اثری ندارند",
+    "gears.the_gear": "چرخدندهٔ {number}{name}",
+    "gears.the_arm": "بازوی {number}{name}",
+    "gears.named": " ({name})",
     "gears.train_value": "ارزش قطار (نسبت دنده) e = ω{last}/ω{first} = ({drivers})/({driven}) = "
                          "{teeth} = {value}: حاصل‌ضرب تعداد دندانه‌های چرخدنده‌های محرک بر "
                          "حاصل‌ضرب تعداد دندانه‌های چرخدنده‌های متحرک؛ {externals} درگیری خارجی "
@@ -668,3 +755,8 @@ PHRASES: dict[str, str] = {
     "limits.swing": "به مرکز {pivot}، نقطهٔ {point} را همراه با اهرم به اندازهٔ زاویهٔ "
                     "{held}{pivot}{held_there} بچرخانید تا به {there} برسد.",
 }
+
+
+# The figures' words of each chapter, kept beside the chapter's figures.
+for _chapter in (fa_trains, fa_balancing, fa_cams, fa_forces):
+    WORDS.update(_chapter.WORDS)

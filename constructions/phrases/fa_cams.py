@@ -1,0 +1,141 @@
+"""Persian words on the figures of cams (graphics/cam_layout_figure.py,
+displacement_figure.py) and the plots of sweeps and turning moments (graphics/plot.py).
+
+Keys are the English words as the figure code says them
+(:func:`~tarsim.constructions.narration.words`); the terms are the course notes'
+(docs/glossary-fa.md). A term a cam says otherwise than a gear is keyed "cam: <term>"
+(a cam's base circle is دایرهٔ پایه, a gear's دایرهٔ مبنا).
+"""
+
+from __future__ import annotations
+
+WORDS: dict[str, str] = {
+    # ----- cams: the displacement diagram (graphics/displacement_figure.py) ----------------
+    "{name}: displacement": "{name}: نمودار جابه‌جایی",
+    "cam angle across, lift up; each segment's construction":
+        "زاویهٔ بادامک در راستای افقی و خیز پیرو رو به بالا؛ ترسیم هر بخش",
+    "cam angle across, the arc the arm's end swings up ({arm} {unit} × the swing)":
+        "زاویهٔ بادامک در راستای افقی و کمانی که انتهای بازو می‌پیماید رو به بالا "
+        "({arm} {unit} × زاویهٔ نوسان)",
+    "(a swing of {angle}°)": "(نوسانی به اندازهٔ {angle}°)",
+    "displacement": "جابه‌جایی",
+    "construction lines": "خطوط ترسیم",
+    "ordinates": "خطوط قائم",
+    "Scale": "مقیاس",
+    # ----- cams: the follower's motion against cam angle (exercises/cam_solution.py) ---------
+    "{name}: velocity": "{name}: سرعت",
+    "{name}: acceleration": "{name}: شتاب",
+    "{name}: jerk": "{name}: جرک",
+    "{name}: the arm's angular velocity": "{name}: سرعت زاویه‌ای بازو",
+    "{name}: the arm's angular acceleration": "{name}: شتاب زاویه‌ای بازو",
+    "jerk": "جرک",
+    "the arm's angular velocity": "سرعت زاویه‌ای بازو",
+    "the arm's angular acceleration": "شتاب زاویه‌ای بازو",
+    "cam angle θ (°)": "زاویهٔ بادامک θ (°)",
+    "jerk ({unit})": "جرک ({unit})",
+    "each segment's peak": "بیشینهٔ هر بخش",
+    "the cam at {speed} {unit}, {sense}": "بادامک با سرعت {speed} {unit}، {sense}",
+    "ÿ jumps at θ = {angles}: the jerk is infinite there, which no curve can draw":
+        "ÿ در θ = {angles} ناگهان تغییر می‌کند: جرک در این نقاط بی‌نهایت است و هیچ منحنی‌ای "
+        "آن را نشان نمی‌دهد",
+    ", ": "، ",
+    # ----- cams: the profile by inversion (graphics/cam_layout_figure.py) --------------------
+    "{name}: profile": "{name}: پروفیل بادامک",
+    "cam: profile": "پروفیل بادامک",
+    "cam: profile (the pitch curve)": "پروفیل بادامک (همان منحنی گام)",
+    "cam: base circle": "دایرهٔ پایه",
+    "pitch curve": "منحنی گام",
+    "prime circle": "دایرهٔ گام",
+    "offset circle": "دایرهٔ انحراف",
+    "pivot circle": "دایرهٔ لولا",
+    "the arm at each station": "بازوی پیرو در هر موقعیت",
+    "the follower's line at each station": "خط حرکت پیرو در هر موقعیت",
+    "the roller at each station": "غلتک در هر موقعیت",
+    "the face at each station": "سطح پیرو در هر موقعیت",
+    "the cam held still, the follower turned the other way":
+        "بادامک ثابت نگه داشته شده و پیرو در جهت مخالف به دور آن چرخانده شده است (روش وارون)",
+    "φ max = {phi}° at θ = {theta}°": "بیشینهٔ φ = {phi}° در θ = {theta}°",
+    "UNDERCUT: ringed where the roller cannot make the profile":
+        "زیربرش: جاهایی که غلتک نمی‌تواند پروفیل را بسازد با دایره مشخص شده‌اند",
+    # ----- cams: the profile's table (exercises/cam_layout.py) -------------------------------
+    "{name}: pressure angle and curvature": "{name}: زاویهٔ فشار و انحنا",
+    "{name}: face run and curvature": "{name}: محل تماس و انحنا",
+    "station": "موقعیت",
+    "cam angle": "زاویهٔ بادامک",
+    "swing (°)": "زاویهٔ نوسان (°)",
+    "lift ({unit})": "خیز ({unit})",
+    "face run ({unit})": "محل تماس ({unit})",
+    "pressure angle": "زاویهٔ فشار",
+    "ρ of the profile ({unit})": "ρ پروفیل ({unit})",
+    "ρ of the pitch curve ({unit})": "ρ منحنی گام ({unit})",
+    "ρ < {zero}: the curve is concave there.": "ρ < {zero}: منحنی در آن‌جا مقعر است.",
+    "The face run is where the face touches, from the follower's axis: σy′, σ = +1 for a "
+    "counter-clockwise cam.":
+        "محل تماس، فاصلهٔ نقطهٔ تماس روی سطح پیرو از محور پیرو است: σy′\u200e، که در آن σ = +1 "
+        "برای بادامک پادساعتگرد.",
+    "The pressure angle is between the profile's normal and the roller's path, square to the "
+    "arm.":
+        "زاویهٔ فشار، زاویهٔ میان عمود بر پروفیل و مسیر غلتک است؛ مسیر غلتک بر بازو عمود است.",
+    "The pressure angle is signed as tan φ = (y′ − σe)/(s₀ + y): σ = +1 for a counter-clockwise "
+    "cam, e the offset, s₀ = √(R_p² − e²).":
+        "زاویهٔ فشار با علامتش از tan φ = (y′ − σe)/(s₀ + y)\u200e به دست می‌آید: σ = +1 برای "
+        "بادامک پادساعتگرد، e انحراف، و s₀ = √(R_p² − e²)\u200e.",
+    "At a join of two segments the values are the second segment's.":
+        "در محل اتصال دو بخش، مقادیر مربوط به بخش دوم است.",
+    # ----- sweeps (exercises/sweep_files.py) ---------------------------------------------------
+    "Position of {who}{along} over one turn of {link}": "مکان {who}{along} در یک دور {link}",
+    "Velocity of {who}{along} over one turn of {link}": "سرعت {who}{along} در یک دور {link}",
+    "Acceleration of {who}{along} over one turn of {link}": "شتاب {who}{along} در یک دور {link}",
+    "Angle of {who}{along} over one turn of {link}": "زاویهٔ {who}{along} در یک دور {link}",
+    "Angular velocity of {who}{along} over one turn of {link}":
+        "سرعت زاویه‌ای {who}{along} در یک دور {link}",
+    "Angular acceleration of {who}{along} over one turn of {link}":
+        "شتاب زاویه‌ای {who}{along} در یک دور {link}",
+    " along its guide ({way})": " در امتداد راهنمایش ({way})",
+    "link {n}": "میلهٔ {n}",
+    "link {n} ({name})": "میلهٔ {n} ({name})",
+    "{n} positions from θ_{link} = {angle}, {w}, {a}": "{n} وضعیت از θ_{link} = {angle}، {w}، {a}",
+    "ω_{link} = {value} {unit} {sense}": "ω_{link} = {value} {unit} {sense}",
+    "{turning}; curves by the analytic (vector-loop) solver":
+        "{turning}؛ منحنی‌ها از حل تحلیلی (حلقهٔ برداری)",
+    "{p} stays {value}": "{p} ثابت می‌ماند: {value}",
+    "{p} from {low} to {high}{where}: {what} {span}":
+        "{p} از {low} تا {high}{where}: {what} {span}",
+    ", where {v} = {zero}": "، که در آن‌ها {v} = {zero}",
+    "stroke": "کورس",
+    "swing": "دامنهٔ نوسان",
+    "{v} = {zero} at {where}, where {p} is extreme":
+        "{v} = {zero} در {where}، جایی که {p} بیشینه یا کمینه است",
+    "{v} peaks at {low} and {high}, where {a} = {zero}":
+        "{v} در {low} و {high} به اوج می‌رسد، جایی که {a} = {zero}",
+    "{a} = {zero} at {where}, where {v} peaks":
+        "{a} = {zero} در {where}، جایی که {v} به اوج می‌رسد",
+    "θ_{link} = {span} ({n} skipped): {reason}": "θ_{link} = {span} ({n} وضعیت بی‌جواب): {reason}",
+    "gap at {gap}": "گسستگی در {gap}",
+    "x component": "مؤلفهٔ x",
+    "y component": "مؤلفهٔ y",
+    "solved by construction (off the curve by {error} at most)":
+        "حل ترسیمی (دست‌بالا {error} دور از منحنی)",
+    "solved by construction (on the curve exactly)": "حل ترسیمی (دقیقاً روی منحنی)",
+    # the links' names as the exercises give them
+    "crank": "لنگ", "coupler": "میلهٔ رابط", "connecting rod": "میلهٔ رابط",
+    "rod": "میلهٔ رابط", "slotted lever": "اهرم شیاردار", "lever": "اهرم",
+    "rocker": "میلهٔ خروجی", "block": "لغزنده", "slider": "لغزنده", "ram": "رام",
+    "piston": "پیستون", "wheel": "چرخ", "arm": "بازو", "follower": "پیرو",
+    # ----- the turning-moment diagram (exercises/turning_moment.py) ---------------------------
+    "Turning-moment diagram": "نمودار گشتاور چرخشی",
+    "driving torque": "گشتاور محرک",
+    "mean {value} {unit}": "میانگین {value} {unit}",
+    "ΔE = {energy} {unit}, the greatest fluctuation of energy: the highest energy less the "
+    "lowest, adding the areas in turn (shaded light where the driver gives more than the mean, "
+    "dark where less)":
+        "ΔE = {energy} {unit}، بیشترین نوسان انرژی: بیشترین انرژی منهای کمترین آن، با جمع "
+        "مساحت‌ها به ترتیب (روشن جایی که گشتاور محرک از میانگین بیشتر است، تیره جایی که کمتر)",
+    "The energy is lowest at {low}° turned (θ = {theta_low}°) and highest at {high}° "
+    "(θ = {theta_high}°).":
+        "انرژی پس از {low}° چرخش (θ = {theta_low}°) کمترین و پس از {high}° "
+        "(θ = {theta_high}°) بیشترین است.",
+    "input turned {sense} from θ = {angle}° (°)": "چرخش ورودی در جهت {sense} از θ = {angle}° (°)",
+    "by the force polygons": "با چندضلعی‌های نیرو",
+    "{name}: the driving torque, positive {sense}": "{name}: گشتاور محرک، مثبت در جهت {sense}",
+}
