@@ -469,7 +469,7 @@ def drawn_acceleration_polygon(work) -> Polygon:
     def make() -> Polygon:
         d = work.mechanism.drive
         if not d.alpha_given:
-            work.note(f"α{d.link} is not given, so it is taken as 0.", Panel.ACCELERATION)
+            work.note(phrase("note.alpha_not_given", link=d.link), Panel.ACCELERATION)
         return draw_acceleration_polygon(work.assembly, drawn_velocity_polygon(work))
     return work.shared("acceleration polygon", make)
 

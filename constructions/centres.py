@@ -33,7 +33,7 @@ from .assembly import Assembly
 from .checks import Answer, FigureSpec
 from .errors import DegenerateInput, TarsimError
 from .model import SlideKind
-from .narration import Phrase, Word, phrase
+from .narration import Number, Phrase, Word, phrase
 from .record import Kind, Ref, Role
 
 __all__ = ["Centre", "Centres", "locate_centres", "omega_ratio", "centre_ref", "pair_label",
@@ -143,7 +143,7 @@ class Centres:
             out += [r for r in c.lines if r not in out] + [c.ref]
         return out
 
-    def warnings(self) -> list[str]:
+    def warnings(self) -> list[Phrase]:
         """One line for each ill-conditioned centre, saying how the lines meet."""
         out = []
         for c in self.secondaries:
@@ -152,8 +152,8 @@ class Centres:
             cond = self.conditioning(*c.pair)
             if cond < ILL_CONDITIONED:
                 angle = math.degrees(math.asin(min(1.0, c.crossing)))
-                out.append(f"{c.label} is ill-conditioned: conditioning {cond:.2g} along its "
-                           f"construction (its own two lines meet at {angle:.3g}°)")
+                out.append(phrase("note.ill_conditioned", centre=c.label,
+                                  cond=Number(cond, ".2g"), angle=Number(angle, ".3g")))
         return out
 
 

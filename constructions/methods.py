@@ -27,6 +27,7 @@ from .assembly import Assembly, assemble
 from .checks import Answer, Expected, Quantity, check
 from .errors import GeometryError, NoIntersection, TarsimError
 from .model import Mechanism
+from .narration import Phrase
 from .record import Panel
 from .reference import solver
 from .reference.centres import mechanism_size
@@ -170,8 +171,9 @@ class Work:
         """The shared construction ``key`` if it has been made, else None."""
         return self._shared.get(key)
 
-    def note(self, text: str, panel: Panel = Panel.SPACE) -> None:
-        """Say something under the figures of ``panel`` (a warning, an assumption)."""
+    def note(self, text: str | Phrase, panel: Panel = Panel.SPACE) -> None:
+        """Say something under the figures of ``panel`` (a warning, an assumption): a
+        :class:`~.narration.Phrase`, said in the language each figure is drawn in."""
         if (panel, text) not in self.notes:
             self.notes.append((panel, text))
 

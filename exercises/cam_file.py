@@ -18,11 +18,12 @@ from ..constructions.model import LENGTH_UNITS
 from ..constructions.reference.cam_laws import BLEND, LAWS
 from ..constructions.reference.cam_profile import Follower, arm_start, prime_radius
 from .mechanism_file import file_number, read_source
+from .names import named_in, read_names, renamed_field
 from .table_file import SPEEDS, Tables
 
 __all__ = ["CamExercise", "is_cam", "load_cam", "parse_cam"]
 
-_TOP = ("name", "source", "description", "units", "cam", "follower", "segment", "ask")
+_TOP = ("name", "names", "source", "description", "units", "cam", "follower", "segment", "ask")
 
 
 @dataclass(frozen=True)
@@ -42,6 +43,14 @@ class CamExercise:
     follower: Follower = Follower()
     jerk: bool = False
     """The jerk is asked for: its diagram and each segment's peak."""
+    names: tuple[tuple[str, str], ...] = ()
+    """The cam's name in other languages (``[names]``, :mod:`.names`)."""
+
+    def named_in(self, lang: str) -> CamExercise:
+        """The same exercise with the cam named in ``lang``, if its file does."""
+        return named_in(self, lang)
+
+    renamed = renamed_field
 
     @property
     def metre(self) -> float:
@@ -155,7 +164,7 @@ def parse_cam(text: str, filename: str = "<string>", exercise_id: str = "cam") -
     return CamExercise(exercise_id, str(data.get("name", exercise_id)),
                        str(data.get("source", "")), str(data.get("description", "")),
                        base * metre, omega, tuple(segments), length, speed, follower,
-                       ask.get("jerk", False))
+                       ask.get("jerk", False), read_names(data, tables.where, filename))
 
 
 _FOLLOWER_KEYS = ("kind", "radius", "motion", "offset", "pivot", "arm")

@@ -19,6 +19,7 @@ import click
 
 from ..constructions.errors import AssemblyError, CheckMismatch, InputError, TarsimError
 from ..constructions.model import Mechanism
+from ..constructions.narration import speaking, spoken
 
 __all__ = ["cli"]
 
@@ -61,11 +62,12 @@ def _placed(error: AssemblyError, source: str | None) -> str:
 
 
 def _mechanism(source: str, angle: float | None) -> Mechanism:
-    from .catalog import resolve
-    from .mechanism_file import load_mechanism
+    """The mechanism of a file read as an exercise (its loads, language and names are
+    understood, not refused), at ``angle`` if given."""
+    from .catalog import load
 
     _not_a_train(source)
-    return _at_angle(load_mechanism(resolve(source)), angle)
+    return _at_angle(load(source).mechanism, angle)
 
 
 def _not_a_train(source: str) -> None:
@@ -113,6 +115,26 @@ _paper = click.option("--paper", type=click.Choice(["A4", "A3", "letter"], case_
                       help="Sheet to set each figure on; its scales are chosen to fill it. A "
                            "figure drawn at a scale the exercise states keeps it, on a bigger "
                            "page if it must.")
+
+
+def _speaks(fn):
+    """The --lang and --digits options of a command that writes figures or steps."""
+    fn = click.option("--digits", type=click.Choice(["persian", "latin"]), default="persian",
+                      show_default=True, help="The digits of numbers in Persian text.")(fn)
+    return click.option("--lang", type=click.Choice(["en", "fa"]), default=None,
+                        help="The language of the figures' words (captions, legends, scale "
+                             "statements, titles) and of steps.md: en, or fa (Persian, in the "
+                             "course notes' terms). Point and link names stay as the notes "
+                             "write them (O2, A, I13). Default: the file's lang, else en.")(fn)
+
+
+def _language(lang: str | None, digits: str, loaded) -> str:
+    """The catalogue a command speaks from: --lang, else the file's ``lang``, else English;
+    Persian with --digits latin is its own catalogue."""
+    lang = lang or getattr(loaded, "lang", "en")
+    return "fa_latn" if lang == "fa" and digits == "latin" else lang
+
+
 _angle = click.option("--angle", type=float, default=None, metavar="ANGLE",
                       help="Input angle to use instead of the file's, in the file's angle unit.")
 
@@ -138,8 +160,9 @@ def cli():
               help="Figure to write: .svg, .pdf or .png (PDF and PNG need libcairo2).")
 @_angle
 @_paper
+@_speaks
 @_fails_cleanly
-def draw(source, output, angle, paper):
+def draw(source, output, angle, paper, lang, digits):
     """Draw the kinematic diagram of FILE at its input position.
 
     Every joint is located by compass construction (arcs and lines, one dyad
@@ -156,6 +179,7 @@ def draw(source, output, angle, paper):
       tarsim draw my-linkage.toml -o fig.svg --angle 120
       tarsim draw planetary-q4 -o q4.svg
       tarsim draw oscillating-roller -o cam.pdf
+      tarsim draw four-bar -o four-bar-fa.pdf --lang fa
     """
     from ..constructions.assembly import assemble
     from ..constructions.scales import space_per_cm
@@ -168,35 +192,39 @@ def draw(source, output, angle, paper):
     from .train_file import TrainExercise
 
     loaded = load(source)
-    if isinstance(loaded, BalanceExercise):
-        from .balance_solution import solve_balance
 
-        if angle is not None:
-            raise InputError("a balancing exercise has no input angle: leave out --angle")
-        fig = next(iter(solve_balance(loaded).figures.values()))
-        click.echo(f"wrote {write_figure(on_sheet(fig, sheet(paper)), output)}")
-        return
-    if isinstance(loaded, CamExercise):
-        from .cam_solution import solve_cam
+    with speaking(_language(lang, digits, loaded)):
+        loaded = loaded.named_in(spoken())
+        if isinstance(loaded, BalanceExercise):
+            from .balance_solution import solve_balance
 
-        if angle is not None:
-            raise InputError("a cam is laid out over its whole turn: leave out --angle")
-        fig = solve_cam(loaded, allow_undercut=True).figures["profile"]
-        click.echo(f"wrote {write_figure(on_sheet(fig, sheet(paper)), output)}")
-        return
-    if isinstance(loaded, TrainExercise):
-        from ..graphics.train_schematic import draw_train_schematic
+            if angle is not None:
+                raise InputError("a balancing exercise has no input angle: leave out --angle")
+            fig = next(iter(solve_balance(loaded).figures.values()))
+            click.echo(f"wrote {write_figure(on_sheet(fig, sheet(paper)), output)}")
+            return
+        if isinstance(loaded, CamExercise):
+            from .cam_solution import solve_cam
 
-        if angle is not None:
-            raise InputError("a gear train has no input angle: leave out --angle")
-        fig = draw_train_schematic(loaded.train, loaded.train.name)
-        click.echo(f"wrote {write_figure(on_sheet(fig, sheet(paper)), output)}")
-        return
-    mech = _mechanism(source, angle)
-    asm, where = assemble(mech), sheet(paper)
-    fig = draw_kinematic_diagram(asm, per_cm=space_per_cm(asm, room(where)))
-    path = write_figure(on_sheet(fig, where), output)
-    click.echo(f"wrote {path}")
+            if angle is not None:
+                raise InputError("a cam is laid out over its whole turn: leave out --angle")
+            fig = solve_cam(loaded, allow_undercut=True).figures["profile"]
+            click.echo(f"wrote {write_figure(on_sheet(fig, sheet(paper)), output)}")
+            return
+        if isinstance(loaded, TrainExercise):
+            from ..graphics.train_schematic import draw_train_schematic
+
+            if angle is not None:
+                raise InputError("a gear train has no input angle: leave out --angle")
+            fig = draw_train_schematic(loaded.train, loaded.train.name)
+            click.echo(f"wrote {write_figure(on_sheet(fig, sheet(paper)), output)}")
+            return
+        # Read as an exercise, so that its loads, language and names are understood too.
+        mech = _at_angle(loaded.mechanism, angle)
+        asm, where = assemble(mech), sheet(paper)
+        fig = draw_kinematic_diagram(asm, per_cm=space_per_cm(asm, room(where)))
+        path = write_figure(on_sheet(fig, where), output)
+        click.echo(f"wrote {path}")
 
 
 @cli.command()
@@ -233,12 +261,7 @@ def check(source, angle):
 @click.option("--allow-undercut", is_flag=True,
               help="A cam whose roller undercuts it, or whose flat face meets a concave "
                    "profile: draw it with the trouble ringed instead of refusing it.")
-@click.option("--lang", type=click.Choice(["en", "fa"]), default=None,
-              help="The language of steps.md: en, or fa (Persian, in the course notes' "
-                   "terms). Default: the file's lang, else en. The figures are English for "
-                   "now.")
-@click.option("--digits", type=click.Choice(["persian", "latin"]), default="persian",
-              show_default=True, help="The digits of numbers in Persian text.")
+@_speaks
 @_fails_cleanly
 def solve(source, out_dir, angle, pdf, paper, allow_undercut, lang, digits):
     """Solve an exercise by graphical construction and check every number.
@@ -296,7 +319,7 @@ def solve(source, out_dir, angle, pdf, paper, allow_undercut, lang, digits):
       tarsim solve planetary-q1                  # the notes' planetary Q1
       tarsim solve eccentric-flat-face           # the notes' §3.20 cam
       tarsim solve notes-example-1               # 001 ch. 7 Example 1, corrected
-      tarsim solve crank-shaper --lang fa        # steps.md in Persian
+      tarsim solve crank-shaper --lang fa        # figures and steps.md in Persian
 
     The exit status is 3 if any constructed number disagrees with the analytic
     one beyond the tolerance its conditioning allows (the files are written all
@@ -310,51 +333,51 @@ def solve(source, out_dir, angle, pdf, paper, allow_undercut, lang, digits):
     from ..graphics.export import cairo_missing, output_folder
 
     loaded = load(source)
-    if isinstance(loaded, TrainExercise):
-        if angle is not None:
-            raise InputError("a gear train has no input angle: leave out --angle")
-        return _solve_train(loaded, out_dir, pdf)
-    if isinstance(loaded, BalanceExercise):
-        if angle is not None:
-            raise InputError("a balancing exercise has no input angle: leave out --angle "
-                             "(an engine's crank angle is its [engine] at)")
-        from .balance_solution import solve_balance
 
-        return _solve_other(loaded, solve_balance, out_dir, pdf)
-    if isinstance(loaded, CamExercise):
-        if angle is not None:
-            raise InputError("a cam is solved over its whole turn: leave out --angle")
-        return _solve_cam(loaded, out_dir, pdf, allow_undercut)
-    ex = replace(_exercise(source, angle), paper=paper)
-    out = Path(out_dir or f"{ex.id}-solution")
-    with output_folder(out):      # a folder that cannot be written fails before the solve
-        worked = solve_worked(ex)
-        reason = cairo_missing() if pdf else None
-        lang = lang or ex.lang
-        if lang == "fa" and digits == "latin":
-            lang = "fa_latn"
-        written = worked.write(out, pdf=pdf and reason is None, lang=lang)
-    sols, overall = worked.positions, worked.overall
-    for name, q in overall.quantities.items():
-        click.echo(answer_line(name, q, ex.mechanism.units, whole=True))
-    for sol in sols:
-        if len(sols) > 1:
-            click.echo(f"at {sol.position.label}:")
-        for name, q in sol.quantities.items():
-            for qq in (q, *q.alternatives.values()):
-                click.echo(answer_line(name, qq, ex.mechanism.units))
-        for note in sol.notes:
-            click.echo(f"note: {note}")
-    at = ("at the exercise's scale" if ex.mechanism.scale
-          else "even at the coarsest scale it is drawn at")
-    for stem, (w, h) in worked.oversize().items():
-        click.echo(f"note: {stem} {at} is {w:.0f} × {h:.0f} mm, more than "
-                   f"{paper} holds; its page is that size (--paper A3 may hold it)")
-    click.echo(f"wrote {len(written)} files to {out}/")
-    if reason:
-        click.echo(f"PDF skipped: {reason}", err=True)
-    if worked.failures:
-        raise CheckMismatch([q.name for q in worked.failures])
+    with speaking(_language(lang, digits, loaded)):
+        loaded = loaded.named_in(spoken())
+        if isinstance(loaded, TrainExercise):
+            if angle is not None:
+                raise InputError("a gear train has no input angle: leave out --angle")
+            return _solve_train(loaded, out_dir, pdf)
+        if isinstance(loaded, BalanceExercise):
+            if angle is not None:
+                raise InputError("a balancing exercise has no input angle: leave out --angle "
+                                 "(an engine's crank angle is its [engine] at)")
+            from .balance_solution import solve_balance
+
+            return _solve_other(loaded, solve_balance, out_dir, pdf)
+        if isinstance(loaded, CamExercise):
+            if angle is not None:
+                raise InputError("a cam is solved over its whole turn: leave out --angle")
+            return _solve_cam(loaded, out_dir, pdf, allow_undercut)
+        ex = replace(_exercise(source, angle), paper=paper).named_in(spoken())   # as loaded
+        out = Path(out_dir or f"{ex.id}-solution")
+        with output_folder(out):      # a folder that cannot be written fails before the solve
+            worked = solve_worked(ex)
+            reason = cairo_missing() if pdf else None
+            written = worked.write(out, pdf=pdf and reason is None)
+        sols, overall = worked.positions, worked.overall
+        for name, q in overall.quantities.items():
+            click.echo(answer_line(name, q, ex.mechanism.units, whole=True))
+        for sol in sols:
+            if len(sols) > 1:
+                click.echo(f"at {sol.position.label}:")
+            for name, q in sol.quantities.items():
+                for qq in (q, *q.alternatives.values()):
+                    click.echo(answer_line(name, qq, ex.mechanism.units))
+            for note in sol.notes:
+                click.echo(f"note: {note}")
+        at = ("at the exercise's scale" if ex.mechanism.scale
+              else "even at the coarsest scale it is drawn at")
+        for stem, (w, h) in worked.oversize().items():
+            click.echo(f"note: {stem} {at} is {w:.0f} × {h:.0f} mm, more than "
+                       f"{paper} holds; its page is that size (--paper A3 may hold it)")
+        click.echo(f"wrote {len(written)} files to {out}/")
+        if reason:
+            click.echo(f"PDF skipped: {reason}", err=True)
+        if worked.failures:
+            raise CheckMismatch([q.name for q in worked.failures])
 
 
 @cli.command()
@@ -369,8 +392,9 @@ def solve(source, out_dir, angle, pdf, paper, allow_undercut, lang, digits):
               help="Equal steps of the input angle over the revolution.")
 @click.option("--pdf/--no-pdf", default=True, show_default=True,
               help="Also write a PDF of each plot (needs libcairo2).")
+@_speaks
 @_fails_cleanly
-def sweep(source, out_dir, of, steps, pdf):
+def sweep(source, out_dir, of, steps, pdf, lang, digits):
     """Check the graphical solution against the output's curves over a revolution.
 
     Turns the input through one revolution in equal steps (from the [input]
@@ -411,32 +435,36 @@ def sweep(source, out_dir, of, steps, pdf):
     from ..graphics.export import cairo_missing, output_folder
 
     ex = _exercise(source, None)
-    reason = cairo_missing() if pdf else None
-    out = Path(out_dir or f"{ex.id}-sweep")
-    moment = None
-    with output_folder(out):      # a folder that cannot be written fails before the sweep
-        if sys.stderr.isatty():
-            with click.progressbar(length=steps, label="sweeping", file=sys.stderr) as bar:
-                result = sweep_exercise(ex, steps, of=of, progress=bar.update)
-        else:
-            result = sweep_exercise(ex, steps, of=of)
-        files = sweep_to_files(result, pdf=pdf and reason is None)
-        if ex.loads is not None:
-            moment = _turning_moment(ex, steps)
-            files |= moment_files(moment, pdf=pdf and reason is None)
-        written = write_sweep(files, out)
-    click.echo(format_sweep(result))
-    if moment is not None:
-        for line in moment.lines():
-            click.echo(line)
-    click.echo(f"wrote {len(written)} files to {out}/")
-    if reason:
-        click.echo(f"PDF skipped: {reason}", err=True)
-    apart = [f"{c.key} at {c.position}" for c in result.checks if not c.rel_error <= SWEEP_AGREE]
-    if moment is not None and not moment.power_miss <= POWER_AGREE:
-        apart.append("the driving torque by the balance of power")
-    if apart:
-        raise CheckMismatch(list(dict.fromkeys(apart)))
+
+    with speaking(_language(lang, digits, ex)):
+        ex = ex.named_in(spoken())
+        reason = cairo_missing() if pdf else None
+        out = Path(out_dir or f"{ex.id}-sweep")
+        moment = None
+        with output_folder(out):      # a folder that cannot be written fails before the sweep
+            if sys.stderr.isatty():
+                with click.progressbar(length=steps, label="sweeping", file=sys.stderr) as bar:
+                    result = sweep_exercise(ex, steps, of=of, progress=bar.update)
+            else:
+                result = sweep_exercise(ex, steps, of=of)
+            files = sweep_to_files(result, pdf=pdf and reason is None)
+            if ex.loads is not None:
+                moment = _turning_moment(ex, steps)
+                files |= moment_files(moment, pdf=pdf and reason is None)
+            written = write_sweep(files, out)
+        click.echo(format_sweep(result))
+        if moment is not None:
+            for line in moment.lines():
+                click.echo(line)
+        click.echo(f"wrote {len(written)} files to {out}/")
+        if reason:
+            click.echo(f"PDF skipped: {reason}", err=True)
+        apart = [f"{c.key} at {c.position}" for c in result.checks
+                 if not c.rel_error <= SWEEP_AGREE]
+        if moment is not None and not moment.power_miss <= POWER_AGREE:
+            apart.append("the driving torque by the balance of power")
+        if apart:
+            raise CheckMismatch(list(dict.fromkeys(apart)))
 
 
 def _turning_moment(ex, steps: int):

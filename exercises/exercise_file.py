@@ -43,6 +43,7 @@ from ..constructions.narration import significant
 from ..constructions.scales import Stated
 
 from .loads_file import LOAD_TABLES, read_loads
+from .names import named_in, read_names
 
 if TYPE_CHECKING:
     from .grading.drafting import Drafting
@@ -96,6 +97,8 @@ class Exercise:
     loads: Loads | None = None
     lang: str = "en"
     """The language its steps are written in (``lang = "fa"`` in the file)."""
+    names: tuple[tuple[str, str], ...] = ()
+    """The mechanism's name in other languages (``[names] fa = "…"``), by language."""
     drafting: Drafting | None = None
     """How precisely a drawing of it is graded (:class:`~.grading.drafting.Drafting`), if
     its ``[grading]`` table says; the course's 0.5 mm and 0.5° otherwise."""
@@ -108,6 +111,15 @@ class Exercise:
     def at(self, position: Position) -> Exercise:
         """The same exercise at one of its positions (and only that one)."""
         return replace(self, mechanism=self.mechanism.with_drive(position.drive), positions=())
+
+    def named_in(self, lang: str) -> Exercise:
+        """The same exercise with its mechanism named in ``lang``, if its file does
+        (:func:`~.names.named_in`)."""
+        return named_in(self, lang)
+
+    def renamed(self, name: str) -> Exercise:
+        """The same exercise, its mechanism called ``name``."""
+        return replace(self, mechanism=replace(self.mechanism, name=name))
 
     def asking(self, names: tuple[str, ...]) -> Exercise:
         """The same exercise asking only ``names``."""
@@ -197,6 +209,8 @@ def parse_exercise(text: str, filename: str = "<string>",
     if lang not in ("en", "fa"):
         raise InputError(f"lang is the language of the steps, en or fa; got {lang!r}",
                          file=filename, line=where.key("lang"))
+    names = read_names(data, where, filename)
+    data.pop("names", None)
     mech = _Reader(data, where, filename).mechanism()
     ex = _read_ask(ask, mech, where, filename, exercise_id)
     loads = read_loads(loading, mech, where, filename)
@@ -215,6 +229,8 @@ def parse_exercise(text: str, filename: str = "<string>",
         ex = replace(ex, drafting=read_drafting(grading, tables))
     if lang != "en":
         ex = replace(ex, lang=lang)
+    if names:
+        ex = replace(ex, names=names)
     if ask is not None and ex.without_motion:     # a bare mechanism file may still be drawn
         raise InputError(ex.without_motion, file=filename,
                          line=where.key("omega", "input") or where.header("input"), key="input")

@@ -16,13 +16,14 @@ from ..constructions.acceleration_polygon import draw_acceleration_polygon
 from ..constructions.assembly import assemble
 from ..constructions.errors import InputError
 from ..constructions.model import Drive, Mechanism
+from ..constructions.narration import Phrase, Quantity, Word, phrase
 from ..constructions.reference import solver
 from ..constructions.velocity_polygon import draw_velocity_polygon
 
 __all__ = ["convert"]
 
 
-def convert(m: Mechanism) -> tuple[Mechanism, Mechanism, str]:
+def convert(m: Mechanism) -> tuple[Mechanism, Mechanism, Phrase]:
     """The mechanism with the input's ω and α as the drawing finds them, the same as the
     solver finds them, and a sentence that states the drawn conversion.
 
@@ -46,11 +47,14 @@ def convert(m: Mechanism) -> tuple[Mechanism, Mechanism, str]:
         unit_ref = _reference(m, w_ref, 1.0, second=True) - base_ref
         a, a_ref = (g.second - base) / unit, (g.second - base_ref) / unit_ref
     drawn = _driven(m, w, a)
-    said = (f"{_what(g)} = {_value(m, g)} is given: the velocity polygon drawn at "
-            f"ω{d.link} = 1 rad/s gives {_per(m, per_w)}, so ω{d.link} = {_n(w)} rad/s"
-            + (f" ({'ccw' if w > 0 else 'cw'})" if w else "")
-            + (f"; the acceleration polygons drawn at that ω with α{d.link} = 0 and 1 rad/s² "
-               f"give α{d.link} = {_n(a)} rad/s²" if g.second_given else "") + ".")
+    what = phrase("note.along_guide", point=g.target) if g.kind == "speed" else _target(g)
+    said = phrase("note.given_rate", what=what, value=_quantity(m, g.kind, g.value),
+                  link=d.link, target=_target(g),
+                  per=_quantity(m, g.kind, per_w), omega=Quantity(w, "rad", "/s", "rate"),
+                  sense=phrase("note.sense", sense=Word("ccw" if w > 0 else "cw")) if w else None,
+                  second=phrase("note.given_alpha", link=d.link,
+                                alpha=Quantity(a, "rad", "/s²", "rate"))
+                  if g.second_given else None)
     return drawn, _driven(m, w_ref, a_ref), said
 
 
@@ -104,9 +108,14 @@ def _value(m: Mechanism, g) -> str:
     return f"{_n(g.value)} rad/s"
 
 
-def _per(m: Mechanism, per: float) -> str:
-    g = m.given
-    if g.kind == "speed":
-        return f"V_{g.target} = {_n(per / m.units.metres)} {m.units.length}/s"
-    return f"ω{g.target} = {_n(per)} rad/s"
+def _target(g) -> str:
+    """The member's rate by name: V_C, or ω3."""
+    return f"V_{g.target}" if g.kind == "speed" else f"ω{g.target}"
+
+
+def _quantity(m: Mechanism, kind: str, value: float) -> Quantity:
+    """A speed (SI) in the file's units per second, or an ω in rad/s, as a note says it."""
+    if kind == "speed":
+        return Quantity(value / m.units.metres, m.units.length, "/s", "rate")
+    return Quantity(value, "rad", "/s", "rate")
 

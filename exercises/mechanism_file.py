@@ -49,8 +49,11 @@ _CONTROL = re.compile("[\x00-\x1f\x7f-\x9f\u202a-\u202e\u2066-\u2069]")
 """Control characters, and the bidirectional overrides that reorder what a figure shows."""
 
 _NAME = re.compile(r"^[A-Za-z][A-Za-z0-9_']*$")
+_EXERCISE = ("ask", "lang", "names", "grading", "forces", "mass", "force", "couple")
+"""What an exercise file adds to its mechanism, read by exercise_file, loads_file and
+names: a mechanism read alone (load_mechanism) leaves it be."""
 _TOP = ("name", "source", "description", "units", "frame", "link", "slider", "contact", "input",
-        "assembly", "ask")
+        "assembly") + _EXERCISE
 _BRANCHES = ("left", "right", "forward", "backward")
 
 

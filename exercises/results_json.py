@@ -53,7 +53,7 @@ def _position(s: Solution) -> dict[str, Any]:
                   "alpha": d.alpha, "alpha_given": d.alpha_given},
         **({"position": s.position.label} if s.position else {}),
         "quantities": {name: _quantity(q) for name, q in s.quantities.items()},
-        "notes": list(s.notes),
+        "notes": s.notes_in("en"),            # data, not prose: one language
     }
 
 

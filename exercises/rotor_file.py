@@ -16,11 +16,12 @@ from typing import Any
 from ..constructions.balancing.rotor import Engine, Mass, Plane, Rotor
 from ..constructions.model import LENGTH_UNITS
 from .mechanism_file import read_source
+from .names import named_in, read_names, renamed_field
 from .table_file import SPEEDS, Tables
 
 __all__ = ["BalanceExercise", "is_balance", "load_balance", "parse_balance"]
 
-_TOP = ("name", "source", "description", "units", "rotor", "mass", "balance", "engine",
+_TOP = ("name", "names", "source", "description", "units", "rotor", "mass", "balance", "engine",
         "cylinder")
 _KEYS = {"rotor": ("speed",), "mass": ("name", "mass", "radius", "angle", "plane"),
          "balance": ("name", "plane", "radius", "mass"),
@@ -41,6 +42,14 @@ class BalanceExercise:
     engine: Engine | None = None
     length_unit: str = "m"
     speed_unit: str = "rad/s"
+    names: tuple[tuple[str, str], ...] = ()
+    """The rotor's or engine's name in other languages (``[names]``, :mod:`.names`)."""
+
+    def named_in(self, lang: str) -> BalanceExercise:
+        """The same exercise with its rotor or engine named in ``lang``, if its file does."""
+        return named_in(self, lang)
+
+    renamed = renamed_field
 
 
 def is_balance(data: dict[str, Any]) -> bool:
@@ -80,7 +89,7 @@ def parse_balance(text: str, filename: str = "<string>",
     common = dict(id=exercise_id, name=str(data.get("name", exercise_id)),
                   source=str(data.get("source", "")),
                   description=str(data.get("description", "")), length_unit=length,
-                  speed_unit=speed_unit)
+                  speed_unit=speed_unit, names=read_names(data, t.where, filename))
     if "engine" in data:
         return BalanceExercise(engine=_engine(entries, number, speed, fail, metre), **common)
     masses = []

@@ -18,6 +18,7 @@ from ..constructions.assembly import Assembly
 from ..constructions.checks import Answer, Quantity
 from ..constructions.errors import InputError, TarsimError
 from ..constructions.methods import Work, answer_all
+from ..constructions.narration import narrate, spoken
 from ..constructions.polygon_walk import Polygon
 from ..constructions.record import Panel
 from ..constructions.reference.solver import Kinematics
@@ -64,8 +65,13 @@ class Solution:
 
     @property
     def notes(self) -> list[str]:
-        """What the solution says beside its figures (warnings, assumptions)."""
-        return [text for _, text in self.work.notes]
+        """What the solution says beside its figures (warnings, assumptions), in the
+        language being spoken."""
+        return self.notes_in(spoken())
+
+    def notes_in(self, lang: str) -> list[str]:
+        """The solution's notes in ``lang``."""
+        return [narrate(text, lang) for _, text in self.work.notes]
 
     @property
     def failures(self) -> list[Quantity]:
@@ -152,4 +158,4 @@ def solve_exercise(ex: Exercise) -> Solution:
 
 def notes_under(sol: Solution, panel: Panel) -> list[str]:
     """The solution's notes that belong under the figures of ``panel``."""
-    return [text for p, text in sol.work.notes if p is panel]
+    return [narrate(text, spoken()) for p, text in sol.work.notes if p is panel]

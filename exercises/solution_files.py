@@ -23,7 +23,8 @@ from ..constructions.asks import (EFFORTS, Distance, Equivalent, MechanicalAdvan
                                   Rubbing, TransmissionAngle, parse_ask, symbol)
 from ..constructions.checks import FigureSpec, Quantity
 from ..constructions.limit_positions import drawn_limits
-from ..constructions.narration import Number, Word, narrate, phrase, render, significant
+from ..constructions.narration import (Number, Word, measure_words, narrate, numerals, phrase,
+                                      render, significant, speaking, spoken, words)
 from ..constructions.record import Kind, Panel, Slice, slice
 from ..constructions.scales import nice
 from ..constructions.velocity_drawing import method_words
@@ -106,7 +107,9 @@ class WorkedSolution:
         for sol in self.positions:
             suffix = f"-{sol.position.slug}" if len(self.positions) > 1 else ""
             sketches += _figures(sol, suffix)
-        figures = draw_each([s.draw for s in sketches], [s.weight for s in sketches])
+        lang = spoken()       # each worker draws in the language the solution is asked in
+        figures = draw_each([partial(_drawn_in, lang, s.draw) for s in sketches],
+                            [s.weight for s in sketches])
         return [SolutionFigure(s.stem, s.heading, fig, s.shown, s.panels, s.owner)
                 for s, fig in zip(sketches, figures)]
 
@@ -131,9 +134,10 @@ class WorkedSolution:
         """True when every constructed number agrees with the analytic one."""
         return not self.failures
 
-    def steps(self, lang: str = "en") -> str:
-        """steps.md: the numbered steps of every figure, in ``lang``, then the results."""
-        ex, overall = self.exercise, self.overall
+    def steps(self, lang: str | None = None) -> str:
+        """steps.md: the numbered steps of every figure, in ``lang`` (default: the language
+        being spoken), then the results."""
+        ex, overall, lang = self.exercise, self.overall, lang or spoken()
         mine = [f for f in self.pages if f.owner is None]
         parts = [_overall_markdown(ex, overall, mine, lang)] if overall.quantities else []
         several = len(self.positions) > 1
@@ -142,7 +146,7 @@ class WorkedSolution:
             parts.append(_steps_markdown(sol, figures, heading=several, lang=lang))
         return _steps_title(ex, lang) + "\n".join(parts)
 
-    def files(self, lang: str = "en") -> dict[str, str]:
+    def files(self, lang: str | None = None) -> dict[str, str]:
         """Every file as text, by name: each figure's SVG, solution.svg with all of them,
         steps.md (in ``lang``) and results.json."""
         files = {f"{f.stem}.svg": to_svg(f.figure) for f in self.pages}
@@ -153,7 +157,8 @@ class WorkedSolution:
                                              self.overall.quantities)
         return files
 
-    def write(self, folder: str | Path, *, pdf: bool = True, lang: str = "en") -> list[Path]:
+    def write(self, folder: str | Path, *, pdf: bool = True, lang: str | None = None
+              ) -> list[Path]:
         """Write every file into ``folder`` (made if missing), with a PDF of each figure when
         ``pdf`` and steps.md in ``lang``, as :func:`write_solution` does; return the paths
         written.
@@ -246,6 +251,12 @@ def write_solution(files: dict[str, str], out_dir: str | Path, *, pdf: bool = Tr
     return write_folder({**files, **pdfs}, out_dir)
 
 
+def _drawn_in(lang: str, draw: Callable[[], Figure]) -> Figure:
+    """``draw()`` with its words in ``lang`` (a forked worker is told, not left to inherit)."""
+    with speaking(lang):
+        return draw()
+
+
 class ChapterFiles:
     """The files of a chapter's solution (a gear train's, a cam's, a rotor's): each figure's
     SVG, steps.md and results.json, written as a linkage's are. The solution gives
@@ -291,10 +302,9 @@ def _figure(sol: Solution, spec: FigureSpec, answers) -> _Sketch:
         from ..graphics.force_figure import draw_force_figure
 
         forces, sheet = drawn_forces(work), paper(sol.exercise.paper)
-        where = f" at {sol.position.label}" if sol.position else ""
         shown = _shown(c, answers, asm.position_steps)
         return _Sketch(spec.stem, spec.heading, lambda: on_sheet(draw_force_figure(
-            c, forces.scale, f"{name}: force polygons{where}"), sheet), None,
+            c, forces.scale, _title(name, "force polygons", sol.position)), sheet), None,
             (("Inertia loads read off the acceleration polygon", Panel.ACCELERATION, shown,
               "not drawn"), ("The force polygons", Panel.FORCE, shown)))
     if spec.kind == "loads":
@@ -302,13 +312,12 @@ def _figure(sol: Solution, spec: FigureSpec, answers) -> _Sketch:
         from ..graphics.loads_figure import draw_loads
 
         forces, sheet = drawn_forces(work), paper(sol.exercise.paper)
-        where = f" at {sol.position.label}" if sol.position else ""
         # The space diagram's part of the analysis (centres of mass, lines of action, the
         # point three forces meet in) is drawn with the loads.
         shown = _shown(c, answers, asm.position_steps)
         return _Sketch(spec.stem, spec.heading, lambda: on_sheet(_fitted(
             lambda per_cm: draw_loads(shown, forces.loads, per_cm=per_cm,
-                                      title=f"{name}: loads{where}"),
+                                      title=_title(name, "loads", sol.position)),
             work.scales.space, _holds(sheet), fixed=bool(sol.exercise.mechanism.scale)),
             sheet), shown)
     if spec.kind == "bodies":
@@ -316,10 +325,9 @@ def _figure(sol: Solution, spec: FigureSpec, answers) -> _Sketch:
         from ..graphics.free_body_figure import draw_free_bodies
 
         forces, sheet = drawn_forces(work), paper(sol.exercise.paper)
-        where = f" at {sol.position.label}" if sol.position else ""
         at = {n: c.point(n).xy for n in c.mechanism.point_names}
         return _Sketch(spec.stem, spec.heading, lambda: on_sheet(draw_free_bodies(
-            c.mechanism, at, forces.bodies, f"{name}: free bodies{where}",
+            c.mechanism, at, forces.bodies, _title(name, "free bodies", sol.position),
             c.mechanism.units.length), sheet), None)
     if spec.kind == "circle diagram":
         every = slice(c, [s.id for s in c if s.kind is Kind.CENTRE], base=asm.position_steps)
@@ -333,10 +341,20 @@ def _figure(sol: Solution, spec: FigureSpec, answers) -> _Sketch:
     notes = notes_under(sol, Panel.SPACE) if spec.notes else []
     sheet = paper(sol.exercise.paper)
     return _Sketch(spec.stem, spec.heading, lambda: on_sheet(_fitted(lambda per_cm: draw_scene(
-        shown, title=f"{name}: {spec.caption}", notes=notes, velocity_scale=spec.velocity_scale,
+        shown, title=_title(name, spec.caption), notes=notes, velocity_scale=spec.velocity_scale,
         per_cm=per_cm, velocity_stated=spec.velocity_stated), work.scales.space,
         _holds(sheet), fixed=bool(sol.exercise.mechanism.scale) or bool(spec.velocity_stated),
         grow=spec.velocity_scale is None), sheet), shown)
+
+
+def _title(name: str, what: str, position=None) -> str:
+    """A figure's title in the language being spoken: the mechanism's name (as the file
+    writes it), what the figure shows ("V_B by radius rotation") and where, if the solution
+    has several positions to tell apart."""
+    what = _heading(what, spoken())
+    if position is None:
+        return words("{name}: {what}", name=name, what=what)
+    return words("{name}: {what} at {where}", name=name, what=what, where=position.label)
 
 
 def _fitted(draw: Callable[[float], Figure], per_cm: float,
@@ -389,7 +407,6 @@ def _worked_page(sol: Solution, answers) -> _Sketch:
     """
     ex, asm, work = sol.exercise, sol.assembly, sol.work
     c, m = asm, ex.mechanism
-    where = f" at {sol.position.label}" if sol.position else ""
     panels, drawn = [], []
     polygons = [(drawn_velocity_polygon(work), Panel.VELOCITY, "Velocity polygon",
                  work.scales.velocity_polygon)]
@@ -400,13 +417,15 @@ def _worked_page(sol: Solution, answers) -> _Sketch:
         shown = _shown(c, answers, asm.position_steps, panel)
         if not shown.steps(panel):           # nothing asked of it: the pole stands alone
             shown = slice(c, [poly.pole], base=asm.position_steps)
-        drawn.append(dict(panel=panel, scale=poly.scale, units=m.units, title=heading,
+        drawn.append(dict(panel=panel, scale=poly.scale, units=m.units,
+                          title=_heading(heading, spoken()),
                           notes=notes_under(sol, panel), per_cm=stated))
         panels.append((heading, panel, shown))
-    table = [("quantity", "method", "construction", "analytic", "relative error")]
+    table = [tuple(words(h) for h in ("quantity", "method", "construction", "analytic",
+                                       "relative error"))]
     for qname, q in sol.quantities.items():
         for qq in (q, *q.alternatives.values()):
-            table.append((symbol(qname), method_words(qq.method),
+            table.append((symbol(qname), words(method_words(qq.method)),
                           _show(qq.value, m.units, qname, DRAFTING),
                           _show(qq.reference, m.units, qname, DRAFTING), f"{qq.rel_error:.1e}"))
 
@@ -415,11 +434,12 @@ def _worked_page(sol: Solution, answers) -> _Sketch:
 
     def draw() -> Figure:
         space = _fitted(lambda per_cm: draw_scene(
-            Slice(c, ()), title=f"{m.name}: space diagram{where}", per_cm=per_cm),
+            Slice(c, ()), title=_title(m.name, "space diagram", sol.position), per_cm=per_cm),
             work.scales.space, lambda fig: holds_panel(upright, fig), fixed=bool(m.scale))
         figures = [space] + [draw_polygon_panel(shown, room=room(sheet, POLYGON_BOX), **how)
                              for (_, _, shown), how in zip(panels, drawn)]
-        sheets = compose_worked_sheets(f"{m.name}: worked solution{where}", figures, table,
+        sheets = compose_worked_sheets(_title(m.name, "worked solution", sol.position), figures,
+                                       table,
                                        notes_under(sol, Panel.SPACE), sheet=upright)
         return sheets[0] if len(sheets) == 1 else stack_pages(sheets)
 
@@ -439,14 +459,15 @@ def _overall_figures(ex: Exercise, overall: Overall) -> list[_Sketch]:
             lambda per_cm: draw_scene(Slice(asm, ()), title=m.name, per_cm=per_cm),
             work.scales.space, _holds(sheet), fixed=bool(m.scale), grow=True), sheet), None)]
     lp = drawn_limits(work)
-    notes = [_time_ratio_words(m, lp)]
+    notes = [_time_ratio_words(m, lp, spoken())]
     if lp.stroke is not None:
-        notes.append(f"Stroke of {lp.point}: {m.units.length_drawn(lp.stroke)}.")
+        notes.append(words("Stroke of {point}: {length}.", point=lp.point,
+                           length=measure_words(m.units.length_drawn(lp.stroke))))
     answers = [a for a in overall.answers if a.figures]
     shown = _shown(work.assembly, answers, work.assembly.position_steps)
     spec = answers[0].figures[0]
     return [_Sketch(spec.stem, spec.heading, lambda: on_sheet(_fitted(
-        lambda per_cm: draw_scene(shown, title=f"{m.name}: {spec.caption}", notes=notes,
+        lambda per_cm: draw_scene(shown, title=_title(m.name, spec.caption), notes=notes,
                                   per_cm=per_cm),
         work.scales.space, _holds(sheet), fixed=bool(m.scale), grow=True), sheet), shown)]
 
@@ -571,34 +592,39 @@ def _show(v: dict, units, name: str = "", figures: int = 6) -> str:
 
     Numbers are set to ``figures`` significant figures (a figure's table takes 4, drafting
     precision; steps.md 6) with a true minus, and a coordinate that is rounding noise
-    beside the other (a centre at (−3e−14, −500)) is set as 0.
+    beside the other (a centre at (−3e−14, −500)) is set as 0. The words and digits are the
+    language being spoken; units keep their symbols (m/s, N·m), as tables print them.
     """
+    def _num(x: float, spec: str = ".6g") -> str:
+        return numerals(_number(x, spec))
+
     s = units.metres
     spec = f".{figures}g"
     if "point" in v:
         x, y = _quiet_pair(v["point"])
         at = f"({_num(x / s, spec)}, {_num(y / s, spec)}) {units.length}"
         # a point with its speed: the least velocity along a link
-        return at if "value" not in v else f"{_num(v['value'] / s, spec)} {units.length}/s at {at}"
+        return at if "value" not in v else words("{what} at {where}", what=(
+            f"{_num(v['value'] / s, spec)} {units.length}/s"), where=at)
     if "undefined" in v:
-        return "any point (no relative motion)"
+        return words("any point (no relative motion)")
     if v.get("at_infinity"):
         dx, dy = _quiet_pair(v["direction"])
-        return f"at infinity, direction ({_num(dx, '.4f')}, {_num(dy, '.4f')})"
+        return words("at infinity, direction ({dx}, {dy})", dx=_num(dx, '.4f'), dy=_num(dy, '.4f'))
     if "vector" in v and name.startswith("F_"):        # a joint force, in newtons
         x, y = v["vector"]
-        return f"{_num(v['value'], spec)} N at {_num(_direction(x, y), '.4g')}°"
+        return words("{what} at {where}", what=f"{_num(v['value'], spec)} N",
+                     where=f"{_num(_direction(x, y), '.4g')}°")
     if name.startswith("T") and name[1:2] in "_0123456789" and name != "T":
         w = v["value"]                                  # a couple or the driving torque
-        sense = " (ccw)" if w > 0 else " (cw)" if w < 0 else ""
-        return f"{_num(w, spec)} N·m{sense}"
+        return f"{_num(w, spec)} N·m{_sense(w)}"
     if name in EFFORTS:                                 # an engine's effort, signed
         return f"{_num(v['value'], spec)} {'N·m' if name == 'turning_moment' else 'N'}"
     if "vector" in v:
         x, y = v["vector"]
         per = "/s²" if name.startswith("A") else "/s"     # A_B, A_cor_B, An_B/A, A_slide_B
-        return (f"{_num(v['value'] / s, spec)} {units.length}{per} at "
-                f"{_num(_direction(x, y), '.4g')}°")
+        return words("{what} at {where}", what=f"{_num(v['value'] / s, spec)} {units.length}{per}",
+                     where=f"{_num(_direction(x, y), '.4g')}°")
     w = v["value"]
     kind = type(parse_ask(name)) if name else None
     if kind in (Ratio, MechanicalAdvantage):
@@ -609,8 +635,12 @@ def _show(v: dict, units, name: str = "", figures: int = 6) -> str:
         return f"{_num(w / s, spec)} {units.length}/s"
     if kind is TransmissionAngle:
         return f"{_num(math.degrees(w), spec)}°"
-    sense = " (ccw)" if w > 0 else " (cw)" if w < 0 else ""
-    return f"{_num(w, spec)} rad/s" + ("²" if name.startswith("alpha") else "") + sense
+    return f"{_num(w, spec)} rad/s" + ("²" if name.startswith("alpha") else "") + _sense(w)
+
+
+def _sense(w: float) -> str:
+    """" (ccw)" or " (cw)" after a signed rate, in the language being spoken; "" for 0."""
+    return f" ({words('ccw' if w > 0 else 'cw')})" if w else ""
 
 
 def answer_line(name: str, q: Quantity, units, *, whole: bool = False) -> str:
@@ -624,7 +654,8 @@ def answer_line(name: str, q: Quantity, units, *, whole: bool = False) -> str:
     ω3 = −2.578 rad/s (cw)               check ok 1.3e-16   velocity polygon
     """
     if not whole:
-        answer = f"{symbol(name)} = {_show(q.value, units, name)}"
+        with speaking("en"):                # the terminal's lines are English
+            answer = f"{symbol(name)} = {_show(q.value, units, name)}"
     elif name.startswith("range_"):        # the text names the span: "65 mm < AB < 135 mm"
         answer = overall_text(name, q.value, units)
     else:
@@ -642,7 +673,7 @@ def _quiet_pair(xy) -> tuple[float, float]:
     return tuple(0.0 if abs(c) <= 1e-9 * big else c for c in xy)
 
 
-def _num(x: float, spec: str = ".6g") -> str:
+def _number(x: float, spec: str = ".6g") -> str:
     """``x`` as the tables print it: a true minus sign, and never "−0"."""
     text = format(x, spec)
     if text.startswith("-") and float(text) == 0.0:

@@ -8,7 +8,7 @@ method's fractions are the notes' own. Every failure is one line naming file:lin
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from fractions import Fraction
 from pathlib import Path
 from typing import Any
@@ -19,10 +19,11 @@ from ..constructions.gears.involute import Involute
 from ..constructions.gears.train import Gear, GearTrain, Mesh, SpeedUnits
 from ..constructions.model import LENGTH_UNITS
 from .mechanism_file import SourceMap, read_source, read_toml
+from .names import named_in, read_names
 
 __all__ = ["TrainExercise", "is_train", "load_train", "parse_train"]
 
-_TOP = ("name", "source", "description", "fixed", "units", "gear", "arm", "mesh", "shaft",
+_TOP = ("name", "names", "source", "description", "fixed", "units", "gear", "arm", "mesh", "shaft",
         "input", "involute", "ask")
 MESH_ASKS = ("contact_ratio", "path_of_contact", "arc_of_contact", "pressure_angle",
              "circular_pitch", "interference", "least_teeth")
@@ -40,11 +41,21 @@ class TrainExercise:
     asks: tuple[str, ...]
     description: str = ""
     involute: Involute | None = None
+    names: tuple[tuple[str, str], ...] = ()
+    """The train's name in other languages (``[names]``, :mod:`.names`)."""
 
     @property
     def name(self) -> str:
         """The train's name, as the file gives it."""
         return self.train.name
+
+    def named_in(self, lang: str) -> TrainExercise:
+        """The same exercise with the train named in ``lang``, if its file does."""
+        return named_in(self, lang)
+
+    def renamed(self, name: str) -> TrainExercise:
+        """The same exercise, its train called ``name``."""
+        return replace(self, train=replace(self.train, name=name))
 
 
 def is_train(data: dict[str, Any]) -> bool:
@@ -102,7 +113,8 @@ class _Reader:
             raise self.placed(e) from None
         involute = self.involute(train)
         return TrainExercise(self.id, train, self.asks(train, involute),
-                             self.text("description"), involute)
+                             self.text("description"), involute,
+                             read_names(self.data, self.where, self.filename))
 
     def placed(self, error: InputError) -> InputError:
         """A check of the whole train, led by the line of the first gear it names (or of

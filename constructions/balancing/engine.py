@@ -16,7 +16,7 @@ import math
 from dataclasses import dataclass, field
 
 from .. import geometry as g
-from ..narration import phrase
+from ..narration import Word, phrase
 from ..record import Construction, Kind, Panel, Ref
 from .polygons import lay_polygon
 from .rotor import Engine
@@ -63,6 +63,6 @@ def draw_engine(e: Engine, reference: float | None = None) -> EnginePolygons:
         out.tips[kind] = []
         panel = Panel.COUPLE if kind.endswith("couple") else Panel.FORCE
         out.closing[kind] = lay_polygon(c, out.tips[kind], tag, panel, vectors, phrase(
-            "balance.engine", kind=kind, order="θᵢ" if order == "1" else "2θᵢ"), kind,
+            "balance.engine", kind=Word(kind), order="θᵢ" if order == "1" else "2θᵢ"), Word(kind),
             closing="balance.left")
     return out

@@ -101,7 +101,7 @@ def _ends(c: Construction, seg: Ref) -> tuple[Ref, Ref]:
 
 
 def lay_polygon(c: Construction, tips: list[tuple[str, Ref]], tag: str, panel: Panel,
-                vectors: list[tuple[str, float, Ref]], said, plane: str,
+                vectors: list[tuple[str, float, Ref]], said, plane,
                 closing: str = "balance.close") -> Ref:
     """Lay ``vectors`` (name, signed size, the line it is parallel to) head to tail from a
     pole, and close the polygon back to it: the closing side is ``plane``'s balancing

@@ -24,7 +24,7 @@ import math
 from dataclasses import dataclass, field
 
 from .. import geometry as g
-from ..narration import Phrase, narrate, phrase
+from ..narration import Phrase, phrase
 from ..record import Construction, Kind, Ref
 from ..reference.cam_profile import Follower, arm_start, prime_radius
 from .displacement import Displacement
@@ -115,7 +115,7 @@ def lay_out_profile(d: Displacement, base_radius: float, f: Follower, sigma: flo
         rest0 = c.give("F", g.Point(x0, s0), label="", phrase=phrase(
             "cam.stations", turn=turn_word, follower=f.kind))
         foot0 = c.give("T", g.Point(x0, 0.0), label="") if x0 else o
-    then = narrate(phrase(_THEN[f.kind], r=_mm(f.radius))) if f.kind in _THEN else ""
+    then = phrase(_THEN[f.kind], r=_mm(f.radius)) if f.kind in _THEN else None
     for i, (theta, lift) in enumerate(stations(d)):
         back = -sigma * theta
         rest = c.draw(f"rest{i}", "rotate_about", rest0, o, angle=back, label=str(i))

@@ -22,7 +22,7 @@ from dataclasses import dataclass, field
 
 from .. import geometry as g
 from ..errors import InputError
-from ..narration import phrase
+from ..narration import Phrase, Word, phrase
 from ..record import Construction, Kind, Panel, Ref
 from .train import GearTrain
 
@@ -147,10 +147,10 @@ class _Drafting:
         self.act("P", "lay_off", "O2", "O3", length=share, label="P", kind=Kind.CENTRE,
                  said=phrase("involute.pitch_point", a=a, b=b, o2p=self.mm(share),
                              na=f"{self.teeth[0]:g}", nb=f"{self.teeth[1]:g}"))
-        for ref, centre, radius, name in (("pitch2", "O2", r2, f"pitch circle of {a}"),
-                                          ("pitch3", "O3", r3, f"pitch circle of {b}"),
-                                          ("base2", "O2", rb2, f"base circle of {a}"),
-                                          ("base3", "O3", rb3, f"base circle of {b}")):
+        for ref, centre, radius, name in (("pitch2", "O2", r2, _circle("pitch", a)),
+                                          ("pitch3", "O3", r3, _circle("pitch", b)),
+                                          ("base2", "O2", rb2, _circle("base", a)),
+                                          ("base3", "O3", rb3, _circle("base", b))):
             self.act(ref, "swing_arc", centre, radius=radius, kind=Kind.ARC,
                      said=phrase("involute.circle", name=name, radius=self.mm(radius)))
             out.radii[ref] = radius
@@ -162,7 +162,7 @@ class _Drafting:
             self.act(f"T{k}", "intersect_circles", thales, base, pick="left",
                      label=f"T{self.n[k - 2]}", said=phrase(
                          "involute.tangent_point", point=f"T{self.n[k - 2]}",
-                         base=f"base circle of {self.n[k - 2]}"))
+                         base=_circle("base", self.n[k - 2])))
         self.act("action", "line_through", "T2", "T3", kind=Kind.GUIDE,
                  said=phrase("involute.line_of_action", a=a, b=b))
         # The common tangent of the pitch circles at P: O3 swung a right angle about P.
@@ -173,10 +173,10 @@ class _Drafting:
         out.pressure_angle = math.radians(self.c.output(angle).degrees)
         # Addendum and dedendum circles; where contact begins and ends.
         add, ded = self.d.addendum * self.m, self.d.dedendum * self.m
-        for ref, centre, radius, name in (("addendum2", "O2", r2 + add, f"addendum circle of {a}"),
-                                          ("addendum3", "O3", r3 + add, f"addendum circle of {b}"),
-                                          ("root2", "O2", r2 - ded, f"root circle of {a}"),
-                                          ("root3", "O3", r3 - ded, f"root circle of {b}")):
+        for ref, centre, radius, name in (("addendum2", "O2", r2 + add, _circle("addendum", a)),
+                                          ("addendum3", "O3", r3 + add, _circle("addendum", b)),
+                                          ("root2", "O2", r2 - ded, _circle("root", a)),
+                                          ("root3", "O3", r3 - ded, _circle("root", b))):
             self.act(ref, "swing_arc", centre, radius=radius, kind=Kind.ARC,
                      said=phrase("involute.circle", name=name, radius=self.mm(radius)))
             out.radii[ref] = radius
@@ -229,3 +229,8 @@ class _Drafting:
             "involute.profile", gear=n, point=f"S{n}", divisions=_DIVISIONS,
             arc=f"{math.degrees(step):.4g}°"))
         self.out.profiles[n] = points
+
+
+def _circle(kind: str, gear) -> Phrase:
+    """"pitch circle of 2", for each language to say its own way."""
+    return phrase("involute.circle_of", circle=Word(f"{kind} circle"), gear=gear)

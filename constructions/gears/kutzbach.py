@@ -21,7 +21,7 @@ from fractions import Fraction
 
 from .. import geometry as g
 from ..errors import InputError
-from ..narration import Number, phrase, significant
+from ..narration import Number, Phrase, Word, phrase, significant
 from ..record import Construction, Kind, Panel, Ref, Role
 from ..model import LENGTH_UNITS
 from ..scales import nice
@@ -120,7 +120,7 @@ class _Diagram:
                         panel=Panel.VELOCITY, **params)
         return ref
 
-    def level(self, name: str, size: Fraction, what: str) -> Ref:
+    def level(self, name: str, size: Fraction, what: Phrase) -> Ref:
         """The level of radius ``size`` (the train's sizes), marked on the radial line."""
         ref = f"kz:level:{name}"
         if ref not in self.c:
@@ -143,7 +143,7 @@ class _Diagram:
         fixed = t.body(t.fixed)
         self.k.lines[fixed] = "kz:radial"
         self.act("kz:fixed", "mark", "kz:O", said=phrase("kutzbach.fixed",
-                                                        member=t.label(t.fixed, opening=True)))
+                                                        member=t.said(t.fixed, opening=True)))
         self.draw_input()
         while len(self.k.lines) < len(t.bodies):
             if not self.next_line():
@@ -164,13 +164,13 @@ class _Diagram:
         w = float(t.input_speed) * t.units.per_rad_s
         name, size = self.level_of(m)
         r = float(size) * self.metre
-        lvl = self.level(name, size, t.label(m))
+        lvl = self.level(name, size, t.said(m))
         # The arm's velocity at R is the planets' centre's: it goes by that name, C.
         tip = self.act(f"kz:v:{m}", "lay_off", f"kz:r:{name}", lvl, length=w * r * self.k.per,
                        label="C" if m == t.arm else f"v{m}", said=phrase(
-                           "kutzbach.input", member=t.label(m, opening=True), name=name,
+                           "kutzbach.input", member=t.said(m, opening=True), name=name,
                            omega=Number(abs(w)), radius=t.size_text(size),
-                           sense="ccw" if w > 0 else "cw"))
+                           sense=Word("ccw" if w > 0 else "cw")))
         self.through_origin(t.body(m), tip)
 
     def through_origin(self, body, point: Ref) -> None:
@@ -212,18 +212,18 @@ class _Diagram:
                     continue
                 main = b if t.carried(a) else a
                 name = f"r{main}"
-                lvl = self.level(name, t.pitch_radius(main), t.label(main))
+                lvl = self.level(name, t.pitch_radius(main), t.said(main))
                 lo, hi = sorted((a, b))
                 out.append(self.act(
                     f"kz:pitch:{lo}-{hi}", "intersect_lines", self.k.lines[t.body(b)], lvl,
-                    label=f"P{lo}{hi}", said=phrase("kutzbach.pitch", a=t.label(a, opening=True),
-                                                    b=t.label(b), name=name,
+                    label=f"P{lo}{hi}", said=phrase("kutzbach.pitch", a=t.said(a, opening=True),
+                                                    b=t.said(b), name=name,
                                                     known=_names(t.body(b)))))
         if t.carried(body[0]) or t.arm in body:
             drawn = [b for b in self.k.lines if (t.arm in b) != (t.arm in body)
                      and (t.carried(b[0]) or t.arm in b)]
             if drawn:
-                lvl = self.level("R", self.arm_r, "the planets' centres")
+                lvl = self.level("R", self.arm_r, phrase("kutzbach.planet_centres"))
                 out.append(self.act("kz:centre", "intersect_lines", self.k.lines[drawn[0]], lvl,
                                     label="C", said=phrase("kutzbach.centre",
                                                            known=_names(drawn[0]))))
@@ -245,7 +245,8 @@ class _Diagram:
                         role=Role.RESULT, phrase=phrase(
                             "kutzbach.read", member=_names(body), omega=Number(abs(w)),
                             speed=f"{significant(abs(rate))} {self.t.units.speed}",
-                            sense="" if w == 0 else (" ccw" if w > 0 else " cw")))
+                            sense=phrase("gears.sense", sense=Word("ccw" if w > 0 else "cw"))
+                            if w else None))
 
 
 def _names(body) -> str:

@@ -27,7 +27,7 @@ from dataclasses import dataclass, field
 from fractions import Fraction
 
 from ..errors import InputError
-from ..narration import Phrase, phrase
+from ..narration import Phrase, Word, phrase
 from .train import GearTrain, Mesh
 
 __all__ = ["Table", "TrainSpeeds", "tabulate", "carry", "fraction_text"]
@@ -97,9 +97,10 @@ def carry(train: GearTrain, start: dict[int, Fraction], held: tuple[int, ...] = 
                     if via is not None:
                         via[b] = (a, mesh)
                     steps.append(phrase(
-                        "gears.mesh_carries", driven=train.label(b, opening=True),
-                        driver=train.label(a),
-                        kind=mesh.word, way="the same way" if mesh.internal else "the other way",
+                        "gears.mesh_carries", driven=train.said(b, opening=True),
+                        driver=train.said(a),
+                        kind=Word(mesh.word),
+                        way=Word("the same way" if mesh.internal else "the other way"),
                         a=a, b=b, na=ga.teeth, nb=gb.teeth, turns=fraction_text(out[a]),
                         result=fraction_text(out[b])))
                     for k in train.body(b):
@@ -108,8 +109,8 @@ def carry(train: GearTrain, start: dict[int, Fraction], held: tuple[int, ...] = 
                             if via is not None:
                                 via[k] = (b, None)
                             steps.append(phrase("gears.shaft_carries",
-                                                member=train.label(k, opening=True),
-                                                other=train.label(b),
+                                                member=train.said(k, opening=True),
+                                                other=train.said(b),
                                                 turns=fraction_text(out[b])))
                     grew = True
     lost = [m for m in train.members if m not in out]
@@ -129,7 +130,7 @@ def tabulate(train: GearTrain) -> TrainSpeeds:
 
 def _ordinary(train: GearTrain) -> TrainSpeeds:
     first = train.input_member
-    steps = [phrase("gears.ordinary_start", member=train.label(first, opening=True),
+    steps = [phrase("gears.ordinary_start", member=train.said(first, opening=True),
                     speed=_speed(train, train.input_speed))]
     via: dict[int, tuple[int, Mesh | None]] = {}
     # A fixed arm (the planetary train held as an ordinary one) stands still.
@@ -144,18 +145,18 @@ def _ordinary(train: GearTrain) -> TrainSpeeds:
 def _planetary(train: GearTrain) -> TrainSpeeds:
     arm, fixed, first = train.arm, train.fixed, train.input_member
     members = train.members
-    steps = [phrase("gears.locked", arm=train.label(arm))]
+    steps = [phrase("gears.locked", arm=train.said(arm))]
     locked = {m: Fraction(1) for m in members}
-    steps.append(phrase("gears.held", arm=train.label(arm), fixed=train.label(fixed)))
+    steps.append(phrase("gears.held", arm=train.said(arm), fixed=train.said(fixed)))
     held = carry(train, {fixed: Fraction(-1)}, held=(arm,), steps=steps)
     total = {m: locked[m] + held[m] for m in members}
-    steps.append(phrase("gears.added", fixed=train.label(fixed)))
+    steps.append(phrase("gears.added", fixed=train.said(fixed)))
     if total[first] == 0:
         raise InputError(f"the input, {train.label(first)}, turns 0 in the table: it stands "
                          "still with the fixed member, so it cannot drive the train",
                          file=train.source or None)
     scale = train.input_speed / total[first]
-    steps.append(phrase("gears.scaled", member=train.label(first, opening=True),
+    steps.append(phrase("gears.scaled", member=train.said(first, opening=True),
                         total=fraction_text(total[first]),
                         speed=_speed(train, train.input_speed), scale=fraction_text(scale),
                         unit=train.units.speed))
@@ -186,10 +187,9 @@ def _train_value(train: GearTrain, first: int, last: int,
                   teeth=f"({'·'.join(str(train.gear(g).teeth) for g in drivers)})/"
                         f"({'·'.join(str(train.gear(g).teeth) for g in driven)})",
                   value=fraction_text(value), externals=external,
-                  sign="negative: opposite senses" if value < 0 else "positive: one sense",
-                  idlers=(f"; the idler{'s' if len(idlers) > 1 else ''} "
-                          f"{', '.join(map(str, idlers))} cancel{'' if len(idlers) > 1 else 's'}"
-                          if idlers else ""))
+                  sign=Word("negative: opposite senses" if value < 0 else "positive: one sense"),
+                  idlers=phrase("gears.idlers" if len(idlers) > 1 else "gears.idler",
+                                idlers=", ".join(map(str, idlers))) if idlers else None)
 
 
 def _xy(train: GearTrain, held: dict[int, Fraction], speeds: dict[int, Fraction]
@@ -211,7 +211,7 @@ def _xy(train: GearTrain, held: dict[int, Fraction], speeds: dict[int, Fraction]
                    y=fraction_text(y), unit=train.units.speed))
 
 
-def _speed(train: GearTrain, v: Fraction) -> str:
+def _speed(train: GearTrain, v: Fraction) -> Phrase:
     """A speed as the steps say it: "80 rpm cw"."""
-    sense = "" if v == 0 else (" ccw" if v > 0 else " cw")
-    return f"{fraction_text(abs(v))} {train.units.speed}{sense}"
+    return phrase("gears.speed", value=fraction_text(abs(v)), unit=train.units.speed,
+                  sense=phrase("gears.sense", sense=Word("ccw" if v > 0 else "cw")) if v else None)

@@ -20,7 +20,7 @@ from fractions import Fraction
 
 from ..errors import InputError
 from ..model import LENGTH_UNITS
-from ..narration import Phrase, phrase
+from ..narration import Capitalized, Phrase, Word, phrase
 
 __all__ = ["Gear", "Mesh", "GearTrain", "SpeedUnits"]
 
@@ -112,6 +112,19 @@ class GearTrain:
             text = self.gear(member).label
         return text[:1].upper() + text[1:] if opening else text
 
+    def said(self, member: int, *, opening: bool = False) -> Phrase | Capitalized:
+        """How a step names a member, for each language to say in its own words: "gear 4
+        (planet)", "the arm 3" (:meth:`label` in English); ``opening`` a sentence."""
+        if member == self.arm:
+            named = self.arm_name if self.arm_name and self.arm_name != "arm" else ""
+            said = phrase("gears.the_arm", number=member,
+                          name=phrase("gears.named", name=Word(named)) if named else None)
+        else:
+            g = self.gear(member)
+            said = phrase("gears.the_gear", number=member,
+                          name=phrase("gears.named", name=Word(g.name)) if g.name else None)
+        return Capitalized(said) if opening else said
+
     def body(self, member: int) -> tuple[int, ...]:
         """The members that turn with ``member`` (itself and those on its shafts)."""
         seen, todo = {member}, [member]
@@ -162,18 +175,18 @@ class GearTrain:
             else:
                 where = phrase("gears.on_axis" if self.planetary else "gears.on_own_axis")
             others = [m for m in self.body(g.number) if m != g.number]
-            out.append(phrase("gears.member", member=self.label(g.number, opening=True),
+            out.append(phrase("gears.member", member=self.said(g.number, opening=True),
                               teeth=g.teeth, where=where,
-                              shaft=", on one shaft with " + ", ".join(map(str, others))
-                              if others else "",
-                              fixed=", fixed" if self.fixed == g.number else ""))
+                              shaft=phrase("gears.one_shaft", others=", ".join(map(str, others)))
+                              if others else None,
+                              fixed=phrase("gears.fixed") if self.fixed == g.number else None))
         if self.arm is not None:
             out.append(phrase("gears.arm", arm=self.arm,
-                              planets="one planet" if self.planets == 1 else
-                              f"{self.planets} planets, equally spaced",
-                              fixed=", fixed" if self.fixed == self.arm else ""))
+                              planets=phrase("gears.one_planet") if self.planets == 1 else
+                              phrase("gears.planets", n=self.planets),
+                              fixed=phrase("gears.fixed") if self.fixed == self.arm else None))
         for m in self.meshes:
-            out.append(phrase("gears.meshes", a=m.a, b=m.b, kind=m.word))
+            out.append(phrase("gears.meshes", a=m.a, b=m.b, kind=Word(m.word)))
         return out
 
     # ----- the checks ---------------------------------------------------------------------
@@ -308,8 +321,10 @@ class GearTrain:
         1 for all (the sizes in modules, the teeth alone deciding)."""
         return g.module if all(h.module is not None for h in self.gears) else Fraction(1)
 
-    def size_text(self, value: Fraction) -> str:
+    def size_text(self, value: Fraction) -> str | Phrase:
         """A size as the steps say it (see :meth:`_span`): "50 mm", or "50 modules"."""
+        if any(g.module is None for g in self.gears):
+            return phrase("gears.modules", value=_text(value))
         return self._span(value)
 
     @property
