@@ -23,6 +23,7 @@ from tarsim.constructions.checks import tolerance
 from tarsim.constructions.reference.centres import (AnalyticCentre, centre_error, instant_centre,
                                                     mechanism_size)
 from tarsim.constructions.assembly import Assembly, assemble
+from tarsim.constructions.narration import narrate
 from tarsim.constructions.centres import ILL_CONDITIONED, Centres, locate_centres, omega_ratio
 from tarsim.constructions.errors import DegenerateInput, TarsimError
 from tarsim.constructions.model import Drive, Link, Mechanism, SlideKind, Units
@@ -35,6 +36,11 @@ D = math.radians
 DATA = Path(__file__).parent / "data"
 CIRCULAR_CAM = DATA / "circular-cam.toml"
 OFFSET_CAM = DATA / "offset-cam.toml"
+
+
+def _warnings(s) -> list[str]:
+    """The centres' warnings as the notes print them."""
+    return [narrate(w) for w in s.cs.warnings()]
 
 
 def half_digit(printed: str) -> float:
@@ -278,7 +284,7 @@ def test_four_bar_centres_in_the_notes_order():
     assert {c.rule for c in s.cs.primaries} == {"pin"}
     assert [(label(c.pair), c.order, set(c.triangles)) for c in s.cs.secondaries] == [
         ("I13", 1, {2, 4}), ("I24", 2, {1, 3})]
-    assert s.cs.warnings() == []
+    assert _warnings(s) == []
 
 
 def test_four_bar_seed_004_section_11():
@@ -333,7 +339,7 @@ def test_a_far_centre_is_reported_and_still_within_its_tolerance(delta):
     # dividing by the small ω3 (ref.rounding is of the same order as tolerance(cond)).
     assert ref.rounding < 10 * tolerance(cond)
     assert centre_error(p, ref, s.size) <= tolerance(cond) + ref.rounding
-    assert any(w.startswith("I13 is ill-conditioned") for w in s.cs.warnings())
+    assert any(w.startswith("I13 is ill-conditioned") for w in _warnings(s))
     assert omega_failures(s) == []
 
 
@@ -343,7 +349,7 @@ def test_exactly_parallel_crank_and_rocker_put_i13_at_infinity_unreported():
     # ω3 = 0: the coupler translates (its centre is at infinity). The analytic ω3 is 0 to
     # rounding (|ω3| ≲ 1e-14·ω2).
     assert omega_ratio(s.cs, 2, 3) * 10.0 == pytest.approx(s.kin.omegas[3], abs=1e-13)
-    assert not any("I13" in w for w in s.cs.warnings())
+    assert not any("I13" in w for w in _warnings(s))
 
 
 @pytest.mark.parametrize("deg, branch", [(60, "left"), (135, "left"), (250, "right")])
@@ -365,7 +371,7 @@ def test_parallelogram_four_bar_has_two_centres_at_infinity(deg, branch):
                             s.size) <= 1e-15
     assert omega_ratio(s.cs, 2, 3) == 0.0      # the coupler translates
     assert omega_ratio(s.cs, 2, 4) == 1.0      # the rocker turns with the crank
-    assert s.cs.warnings() == []
+    assert _warnings(s) == []
     check_all(s)
 
 
@@ -541,7 +547,7 @@ def test_a_centre_at_infinity_does_not_zero_the_conditioning_downstream(deg):
     zero = [label(p) for p in s.cs.found
             if not s.cs.point(*p).is_at_infinity and s.cs.conditioning(*p) == 0.0]
     assert zero == []
-    assert s.cs.warnings() == []
+    assert _warnings(s) == []
 
 
 @pytest.mark.parametrize("build", [_file(WATT), lambda deg: at(parse_mechanism(MULTIPLE_JOINT),
@@ -549,12 +555,12 @@ def test_a_centre_at_infinity_does_not_zero_the_conditioning_downstream(deg):
 @pytest.mark.parametrize("deg", [60, 90, 270])
 def test_warnings_name_exactly_the_ill_conditioned_finite_centres(build, deg):
     s = solved(build(deg))
-    named = {w.split()[0] for w in s.cs.warnings()}
+    named = {w.split()[0] for w in _warnings(s)}
     expected = {c.label for c in s.cs.secondaries
                 if not s.cs.point(*c.pair).is_at_infinity
                 and s.cs.conditioning(*c.pair) < ILL_CONDITIONED}
     assert named == expected
-    assert all("\n" not in w for w in s.cs.warnings())
+    assert all("\n" not in w for w in _warnings(s))
 
 
 # ----------------------------------------------------------------------------- 10. property

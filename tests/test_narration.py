@@ -19,9 +19,10 @@ from tarsim.constructions.narration import (LANGUAGES, Capitalized, Number, Phra
                                             Word, catalogue, narrate, phrase, render)
 from tarsim.exercises.catalog import bundled
 
+_EXERCISES = Path(constructions.__file__).parent.parent / "exercises"
 SOURCE = [p for p in Path(constructions.__file__).parent.rglob("*.py")
-          if "phrases" not in p.parts] + [
-              Path(constructions.__file__).parent.parent / "exercises" / "solution_files.py"]
+          if "phrases" not in p.parts] + [_EXERCISES / "solution_files.py",
+                                          _EXERCISES / "given_rate.py"]
 NAMED = re.compile(r"""phrase\(\s*["']([\w.]+)["']|phrase\(\s*\(?["']([\w.]+)["'] if """)
 
 

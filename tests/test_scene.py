@@ -13,6 +13,7 @@ from dataclasses import replace
 
 import pytest
 
+from tarsim.constructions.narration import narrate
 from tarsim.constructions.reference.solver import solve
 from tarsim.constructions.assembly import assemble
 from tarsim.constructions.centres import locate_centres
@@ -222,7 +223,7 @@ def test_common_normals_and_kennedy_lines_read_differently_with_a_legend():
 def test_the_output_is_byte_identical_on_repeat():
     def once():
         asm, cs = watt()
-        return to_svg(draw_scene(every_centre(cs), notes=cs.warnings())), \
+        return to_svg(draw_scene(every_centre(cs), notes=[narrate(w) for w in cs.warnings()])), \
             to_svg(circle_diagram(cs))
     assert once() == once()
 
