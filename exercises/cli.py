@@ -591,8 +591,9 @@ def bench(quick, out_dir):
 @click.option("--scheduler", metavar="ADDRESS", default=None,
               help="Grade a class on a Dask distributed cluster (tcp://host:8786), for a "
                    "course too big for one machine; needs pip install 'tarsim[dask]'.")
+@_speaks
 @_fails_cleanly
-def grade(source, drawing, out_dir, position, workers, scheduler):
+def grade(source, drawing, out_dir, position, workers, scheduler, lang, digits):
     """Grade a student's drawing against tarsim's own solution, item by item.
 
     DRAWING is an SVG as Inkscape, GeoGebra, LibreOffice Draw or a CAD program
@@ -634,30 +635,31 @@ def grade(source, drawing, out_dir, position, workers, scheduler):
     from .grading.report import class_csv, grade_files, grade_table
     from ..graphics.export import write_folder
 
-    path = Path(drawing)
-    if not path.is_dir():
-        g = grade_one(load(source), path, position - 1)
-        click.echo(grade_table(g))
-        write_folder(grade_files(g), out_dir)
-        click.echo(f"wrote grade.json and grade.svg to {out_dir}/"
-                   if g.overlay is not None else f"wrote grade.json to {out_dir}/")
-        return
-    load(source)                               # a bad exercise is one line, before the batch
-    found = drawings_in(path)
-    if not found:
-        raise click.ClickException(f"{drawing}: no .svg, .json or .csv drawings in it")
-    rows = []
-    with click.progressbar(length=len(found), label=f"grading {len(found)} drawings",
-                           file=sys.stderr) as bar:
-        for name, g in grade_many(source, found, position - 1, workers,
-                                  done=lambda: bar.update(1), scheduler=scheduler):
-            rows.append((Path(name).name, g))
-            if not isinstance(g, str):
-                write_folder(grade_files(g), Path(out_dir) / folder_for(Path(name)))
-    write_folder({"grades.csv": class_csv(rows)}, out_dir)
-    bad = sum(isinstance(g, str) for _, g in rows)
-    click.echo(f"graded {len(rows) - bad} of {len(rows)} drawings into {out_dir}/"
-               + (f"; {bad} could not be read (see grades.csv)" if bad else ""))
+    with speaking(_language(lang, digits, None)):     # the overlay's words
+        path = Path(drawing)
+        if not path.is_dir():
+            g = grade_one(load(source), path, position - 1)
+            click.echo(grade_table(g))
+            write_folder(grade_files(g), out_dir)
+            click.echo(f"wrote grade.json and grade.svg to {out_dir}/"
+                       if g.overlay is not None else f"wrote grade.json to {out_dir}/")
+            return
+        load(source)                               # a bad exercise is one line, before the batch
+        found = drawings_in(path)
+        if not found:
+            raise click.ClickException(f"{drawing}: no .svg, .json or .csv drawings in it")
+        rows = []
+        with click.progressbar(length=len(found), label=f"grading {len(found)} drawings",
+                               file=sys.stderr) as bar:
+            for name, g in grade_many(source, found, position - 1, workers,
+                                      done=lambda: bar.update(1), scheduler=scheduler):
+                rows.append((Path(name).name, g))
+                if not isinstance(g, str):
+                    write_folder(grade_files(g), Path(out_dir) / folder_for(Path(name)))
+        write_folder({"grades.csv": class_csv(rows)}, out_dir)
+        bad = sum(isinstance(g, str) for _, g in rows)
+        click.echo(f"graded {len(rows) - bad} of {len(rows)} drawings into {out_dir}/"
+                   + (f"; {bad} could not be read (see grades.csv)" if bad else ""))
 
 
 @cli.command(name="list")

@@ -228,6 +228,13 @@ def test_grading_one_drawing_writes_its_json_and_overlay(tmp_path):
     assert set(item) == {"name", "verdict", "expected", "found", "tolerance", "message"}
     svg = (out / "grade.svg").read_text(encoding="utf-8")
     assert "a4′: wrong sense" in svg and "#1f5fbf" in svg
+    # In Persian the overlay's words are the catalogue's, the terminal and grade.json not.
+    result = CliRunner().invoke(cli, ["grade", "crank-shaper", str(path), "-o", str(out),
+                                      "--position", "2", "--lang", "fa"])
+    assert result.exit_code == 0 and "a4′   wrong sense" in result.output
+    svg = (out / "grade.svg").read_text(encoding="utf-8")
+    assert "a4′: جهت نادرست" in svg and "ali.svg: نمره ۶۷٪" in svg and 'direction="rtl"' in svg
+    assert json.loads((out / "grade.json").read_text(encoding="utf-8"))["items"] == data["items"]
 
 
 def test_a_bad_exercise_or_drawing_is_one_line_and_writes_nothing(tmp_path):

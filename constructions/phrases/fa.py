@@ -138,6 +138,10 @@ WORDS: dict[str, str] = {
     "ÿ jumps at θ = {jumps}: the jerk is infinite there.":
         "ÿ در θ = {jumps} جهش دارد: جرک در آنجا بی\u200cنهایت است.",
     "The profile by inversion": "پروفیل به روش وارونگی",
+    # a graded drawing's overlay
+    "correct": "درست", "wrong magnitude": "اندازهٔ نادرست", "wrong direction": "راستای نادرست",
+    "wrong sense": "جهت نادرست", "wrong position": "جای نادرست", "missing": "جاافتاده",
+    "extra": "اضافه", "{source}: score {score} %": "{source}: نمره {score}٪",
 }
 """Small words and headings as Persian says them."""
 

@@ -13,6 +13,8 @@ import io
 import json
 import math
 
+from ...constructions.narration import Number, words
+from ...graphics.rtl import is_rtl
 from .grade import Grade
 
 __all__ = ["grade_table", "grade_files", "class_csv"]
@@ -62,9 +64,9 @@ def _overlay(g: Grade) -> str:
         student.add(dwg.line(a, b))
     for c, r in drawing.circles:
         student.add(dwg.circle(c, r))
-    words = dwg.add(dwg.g(fill=_GREY, font_size=3.2, font_family="DejaVu Serif"))
+    lettering = dwg.add(dwg.g(fill=_GREY, font_size=3.2, font_family="DejaVu Serif"))
     for label in drawing.labels:
-        words.add(dwg.text(label.text, insert=label.at))
+        lettering.add(dwg.text(label.text, insert=label.at))
     right = dwg.add(dwg.g(stroke=_BLUE, stroke_width=0.3, fill="none",
                           stroke_dasharray="1.6,0.8"))
     for drawn in polygons:
@@ -86,10 +88,19 @@ def _overlay(g: Grade) -> str:
         marks.add(dwg.circle(tuple(at), 2.5))
         if isinstance(item.found, list) and isinstance(item.expected, list):
             marks.add(dwg.line(tuple(item.found), tuple(item.expected)))
-        notes.add(dwg.text(f"{item.name}: {item.verdict}", insert=(at[0] + 3.2, at[1] - 3.2)))
-    dwg.add(dwg.text(f"{g.source}: score {g.score:.0f} %", insert=(x0 + 5, y1 - 6),
-                     font_size=4.0, font_family="DejaVu Sans", fill="#000"))
+        notes.add(_said(dwg, f"{item.name}: {words(item.verdict)}", (at[0] + 3.2, at[1] - 3.2)))
+    dwg.add(_said(dwg, words("{source}: score {score} %", source=g.source,
+                             score=Number(g.score, ".0f")), (x0 + 5, y1 - 6),
+                  font_size=4.0, font_family="DejaVu Sans", fill="#000"))
     return dwg.tostring()
+
+
+def _said(dwg, text: str, at: tuple[float, float], **style):
+    """A line of the overlay that reads on from ``at``, right to left in Persian (its
+    logical end at ``at``, so it runs rightwards on the page as an English one does)."""
+    if is_rtl(text):
+        style |= {"direction": "rtl", "text_anchor": "end"}
+    return dwg.text(text, insert=at, **style)
 
 
 def class_csv(grades: list[tuple[str, Grade | str]]) -> str:
