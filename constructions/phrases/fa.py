@@ -88,6 +88,7 @@ WORDS: dict[str, str] = {
     "{name}: {what} at {where}": "{name}: {what} در {where}",
     "{title} (continued)": "{title} (ادامه)",
     "Scale": "مقیاس", "Velocity scale": "مقیاس سرعت", "Acceleration scale": "مقیاس شتاب",
+    ", ": "، ",
     "Force scale": "مقیاس نیرو",
     "Kennedy line": "خط کندی", "common normal": "عمود مشترک", "gauge line": "خط سنجه",
     "construction line": "خط ترسیم", "a point": "یک نقطه",

@@ -10,7 +10,6 @@ from __future__ import annotations
 WORDS: dict[str, str] = {
     # An angle after Persian words is said in درجه: a degree sign closing a right-to-left
     # line is set left of its number by the shaping the PDF takes (python-bidi).
-    "Scale": "مقیاس",
     # a rotor: the space diagram, the table, the polygons
     "{name}: space diagram": "{name}: نمودار فضایی",
     "{name}: side view": "{name}: نمای جانبی",

@@ -21,7 +21,6 @@ WORDS: dict[str, str] = {
     "displacement": "جابه‌جایی",
     "construction lines": "خطوط ترسیم",
     "ordinates": "خطوط قائم",
-    "Scale": "مقیاس",
     # ----- cams: the follower's motion against cam angle (exercises/cam_solution.py) ---------
     "{name}: velocity": "{name}: سرعت",
     "{name}: acceleration": "{name}: شتاب",
@@ -38,7 +37,6 @@ WORDS: dict[str, str] = {
     "ÿ jumps at θ = {angles}: the jerk is infinite there, which no curve can draw":
         "ÿ در θ = {angles} ناگهان تغییر می‌کند: جرک در این نقاط بی‌نهایت است و هیچ منحنی‌ای "
         "آن را نشان نمی‌دهد",
-    ", ": "، ",
     # ----- cams: the profile by inversion (graphics/cam_layout_figure.py) --------------------
     "{name}: profile": "{name}: پروفیل بادامک",
     "cam: profile": "پروفیل بادامک",
@@ -102,7 +100,6 @@ WORDS: dict[str, str] = {
     "{p} from {low} to {high}{where}: {what} {span}":
         "{p} از {low} تا {high}{where}: {what} {span}",
     ", where {v} = {zero}": "، که در آن‌ها {v} = {zero}",
-    "stroke": "کورس",
     "swing": "دامنهٔ نوسان",
     "{v} = {zero} at {where}, where {p} is extreme":
         "{v} = {zero} در {where}، جایی که {p} بیشینه یا کمینه است",
@@ -121,7 +118,7 @@ WORDS: dict[str, str] = {
     "crank": "لنگ", "coupler": "میلهٔ رابط", "connecting rod": "میلهٔ رابط",
     "rod": "میلهٔ رابط", "slotted lever": "اهرم شیاردار", "lever": "اهرم",
     "rocker": "میلهٔ خروجی", "block": "لغزنده", "slider": "لغزنده", "ram": "رام",
-    "piston": "پیستون", "wheel": "چرخ", "arm": "بازو", "follower": "پیرو",
+    "piston": "پیستون", "follower": "پیرو",
     # ----- the turning-moment diagram (exercises/turning_moment.py) ---------------------------
     "Turning-moment diagram": "نمودار گشتاور چرخشی",
     "driving torque": "گشتاور محرک",

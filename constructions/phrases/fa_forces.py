@@ -9,8 +9,6 @@ Keys are the English words as the figure code says them
 from __future__ import annotations
 
 WORDS: dict[str, str] = {
-    # the captions' scales (graphics/scales.py says them)
-    "Force scale": "مقیاس نیرو", "Scale": "مقیاس",
     # the force polygons
     "each link's loads head to tail; a polygon closed by two lines crossing at x, or by its "
     "heavy closing side": "بارهای هر میله پشت سر هم؛ هر چندضلعی با دو خطی که یکدیگر را در x "
@@ -29,7 +27,6 @@ WORDS: dict[str, str] = {
     # the loads too small to draw, listed under the figure
     "Too small to draw: {items}.": "رسم نشده\u200cاند، چون بسیار کوچک\u200cاند: {items}.",
     "{name} = {size} on link {link}": "{name} = {size} روی میلهٔ {link}",
-    ", ": "، ",
     # the bundled exercises' loads, by the names their files give them
     "gas force": "نیروی گاز", "cutting force": "نیروی برش", "load torque": "گشتاور بار",
 }

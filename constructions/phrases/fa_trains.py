@@ -10,7 +10,7 @@ from __future__ import annotations
 
 WORDS: dict[str, str] = {
     # the scales' names
-    "Scale": "مقیاس", "Radius scale": "مقیاس شعاع", "Velocity scale": "مقیاس سرعت",
+    "Radius scale": "مقیاس شعاع",
     # the members, as the files name them (a name the catalogue lacks stays as given)
     "sun": "چرخ خورشیدی", "planet": "چرخ سیاره\u200cای", "ring": "چرخ حلقه\u200cای",
     "arm": "بازو", "carrier": "بازو", "idler": "چرخ هرزگرد", "pinion": "پینیون",
