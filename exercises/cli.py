@@ -662,6 +662,57 @@ def grade(source, drawing, out_dir, position, workers, scheduler, lang, digits):
                    + (f"; {bad} could not be read (see grades.csv)" if bad else ""))
 
 
+@cli.command()
+@_source
+@click.option("-o", "--output", "output", type=click.Path(dir_okay=False), default=None,
+              metavar="PAGE", help="The page to write (default: <id>-view.html here).")
+@click.option("--step", "step", type=click.FloatRange(0.05, 10.0), default=0.5,
+              show_default=True, help="Degrees between frames of the revolution.")
+@_fails_cleanly
+def view(source, output, step):
+    """Write an interactive page: step through the construction, turn the crank.
+
+    One self-contained HTML file (inline SVG, script and data; no network, no
+    server) that opens from disk in any current browser:
+
+    \b
+      - each figure of the exercise's first position, its construction step by
+        step (previous, next, play, a slider), numbered as steps.md numbers
+        them, the current step highlighted and the earlier ones dimmed, in
+        English or Persian;
+      - the input turned through a revolution (a slider, or drag the crank
+        pin): the mechanism, its instant centres and Kennedy lines, and both
+        polygons move together, with the output's curve and a cursor. Every
+        frame is drawn by tarsim's constructions and checked against the
+        analytic solver; a frame that fails or cannot be assembled says so,
+        and limit positions and dead points are marked on the slider;
+      - layers to show or hide, zoom (wheel) and pan (drag), and a button that
+        downloads the frame shown as SVG.
+
+    \b
+    Example:
+      tarsim view crank-shaper -o shaper.html
+      tarsim view four-bar --step 1
+    """
+    from .view import view_data
+    from ..graphics.export import write_text
+    from ..graphics.view_page import view_html
+
+    ex = _exercise(source, None)
+    target = Path(output or f"{ex.id}-view.html")
+    if sys.stderr.isatty():
+        with click.progressbar(length=round(360 / step), label="frames",
+                               file=sys.stderr) as bar:
+            data = view_data(ex, step_deg=step, progress=bar.update)
+    else:
+        data = view_data(ex, step_deg=step)
+    html = view_html(data)
+    write_text(target, html)
+    bad = sum(1 for f in data["frames"] if not f.get("ok"))
+    click.echo(f"wrote {target} ({len(html.encode()) / 1e6:.2f} MB, {len(data['frames'])} "
+               f"frames, {bad} not checked ok)")
+
+
 @cli.command(name="list")
 def list_():
     """List the bundled examples: their ids, where they come from, what they ask.

@@ -44,6 +44,7 @@ from .results_json import results_document, results_json
 from .solution import Overall, Solution, notes_under, solve_overall, solve_positions
 
 __all__ = ["SolutionFigure", "WorkedSolution", "solve_worked", "overall_text", "solve_all",
+           "figure_parts", "heading_in",
            "solve_to_files", "write_solution", "answer_line", "method_words"]
 
 
@@ -170,6 +171,18 @@ class WorkedSolution:
             that tarsim did not write, or PDF is asked and libcairo2 is missing.
         """
         return write_solution(self.files(lang), folder, pdf=pdf, sheets=self.sheets())
+
+    def view(self, step_deg: float = 0.5):
+        """The interactive page of this exercise (``tarsim view``): its ``.save(path)``
+        writes it, and a notebook shows it."""
+        from ..graphics.view_page import ViewPage, view_html
+        from .view import view_data
+
+        return ViewPage(view_html(view_data(self.exercise, step_deg=step_deg)))
+
+    def _repr_html_(self) -> str:
+        """In a notebook: the interactive page, steps and crank (see :meth:`view`)."""
+        return self.view()._repr_html_()
 
     def oversize(self) -> dict[str, tuple[float, float]]:
         """Each figure a sheet of the exercise's paper does not hold (drawn at a scale the
@@ -525,6 +538,21 @@ def overall_text(name: str, v: dict, units) -> str:
 # ----- steps.md -------------------------------------------------------------------------
 def _steps_title(ex: Exercise, lang: str = "en") -> str:
     return "# " + narrate(phrase("md.title", name=ex.mechanism.name), lang) + "\n\n"
+
+
+def figure_parts(sol: Solution) -> list[tuple[str, str, list]]:
+    """Each figure of a position, undrawn: its stem, its heading and its parts (a title,
+    the panel, the slice of the record it shows), as steps.md narrates them."""
+    out = []
+    for f in _figures(sol):
+        parts = [(f.heading, Panel.SPACE, f.shown)] if f.shown else []
+        out.append((f.stem, f.heading, parts + [p[:3] for p in f.panels]))
+    return out
+
+
+def heading_in(text: str, lang: str) -> str:
+    """A figure's or a part's heading in ``lang`` (see :func:`_heading`)."""
+    return _heading(text, lang)
 
 
 def _heading(text: str, lang: str) -> str:

@@ -139,6 +139,10 @@ WORDS: dict[str, str] = {
     "ÿ jumps at θ = {jumps}: the jerk is infinite there.":
         "ÿ در θ = {jumps} جهش دارد: جرک در آنجا بی\u200cنهایت است.",
     "The profile by inversion": "پروفیل به روش وارونگی",
+    # the interactive page (tarsim view)
+    "figure": "شکل", "play": "پخش",
+    "download this frame (SVG)": "بارگیری این قاب (SVG)", "Kennedy lines": "خطوط کندی",
+    "labels": "برچسب\u200cها", "step numbers": "شمارهٔ مراحل",
     # a graded drawing's overlay
     "correct": "درست", "wrong magnitude": "اندازهٔ نادرست", "wrong direction": "راستای نادرست",
     "wrong sense": "جهت نادرست", "wrong position": "جای نادرست", "missing": "جاافتاده",
