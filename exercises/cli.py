@@ -708,9 +708,15 @@ def view(source, output, step):
         data = view_data(ex, step_deg=step)
     html = view_html(data)
     write_text(target, html)
-    bad = sum(1 for f in data["frames"] if not f.get("ok"))
-    click.echo(f"wrote {target} ({len(html.encode()) / 1e6:.2f} MB, {len(data['frames'])} "
-               f"frames, {bad} not checked ok)")
+    frames = data["frames"]
+    lost = sum("p" not in f for f in frames)
+    wrong = sum("p" in f and not f["ok"] for f in frames)
+    click.echo(f"wrote {target} ({len(html.encode()) / 1e6:.2f} MB, {len(frames)} frames: "
+               f"{len(frames) - lost - wrong} checked, {lost} out of reach or beyond the "
+               f"construction, {wrong} failing their check)")
+    if wrong:
+        raise CheckMismatch([f"the frame at {math.degrees(f['angle']):.1f}°"
+                             for f in frames if "p" in f and not f["ok"]][:5])
 
 
 @cli.command(name="list")

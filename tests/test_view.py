@@ -201,3 +201,24 @@ def test_a_notebook_shows_the_page_in_a_frame_of_its_own():
     assert shown.startswith("<iframe srcdoc=") and "&lt;script" in shown
     assert "tarsimView" in shown and shown.count("&quot;angle&quot;") >= 720
     assert ViewPage(view_html(view_data(load("four-bar"), step_deg=5.0)))._repr_html_() != shown
+
+
+def test_layers_zoom_and_the_downloaded_frame(page):
+    """Each layer hides what it names; the wheel zooms about the pointer; the download is
+    the frame shown, as an SVG file with its joints and polygons."""
+    page.evaluate("tarsimView.setFrame(100)")
+    for layer, drawn in (("kennedy", "#space .kennedy"), ("labels", "#space text.name")):
+        assert page.locator(drawn).count() > 0
+        page.uncheck(f"[data-layer='{layer}']")
+        assert page.locator(drawn).count() == 0
+        page.check(f"[data-layer='{layer}']")
+    k = page.evaluate("tarsimView.state.views.space.k")
+    box = page.locator("#space svg").bounding_box()
+    page.mouse.move(box["x"] + box["width"] / 2, box["y"] + box["height"] / 2)
+    page.mouse.wheel(0, -300)
+    assert page.evaluate("tarsimView.state.views.space.k") > 1.5 * k
+    with page.expect_download() as got:
+        page.click("#download")
+    svg = Path(got.value.path()).read_text(encoding="utf-8")
+    assert got.value.suggested_filename == "frame-theta2-40.0.svg"
+    assert svg.startswith("<svg") and svg.count("data-point=") == 4 and "data-tip=" in svg
