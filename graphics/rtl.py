@@ -21,7 +21,8 @@ __all__ = ["is_rtl", "RTL_FONT", "for_cairo", "visual", "joined"]
 RTL_FONT = "DejaVu Sans"
 """A face with the Persian glyphs, usually present wherever DejaVu is."""
 
-_RTL = re.compile("[\u0590-\u08ff\ufb1d-\ufdff\ufe70-\ufefc]")
+_RTL = re.compile("[\u0590-\u08ff\ufb1d-\ufdff\ufe70-\ufefc\u200f]")
+"""Right-to-left letters, and the right-to-left mark a run of neutrals is given (svg.py)."""
 
 _FLIP = {"start": "end", "end": "start"}
 

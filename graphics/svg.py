@@ -135,6 +135,8 @@ def _runs(item: Text) -> list[Text]:
     gap = text_width(" ", item.size)
     runs, x = [], x1
     for text, sub, tail in pieces:
+        if text and not sub and not re.search("[A-Za-z]", text) and not is_rtl(text):
+            text = "\u200f" + text        # neutrals only ("(", ":"): they read right to left
         if text or sub:
             run = Text((x, item.at[1]), text, item.size, "end", item.italic, item.weight, sub,
                        tail)

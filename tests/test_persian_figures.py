@@ -210,3 +210,16 @@ def test_a_persian_solution_leaves_no_english_on_its_figures(tmp_path, exercise_
             text = re.sub(r"<[^>]+>", "", text)
             left = set(re.findall(r"[A-Za-z]{3,}", text)) - LATIN_ALLOWED
             assert not left, (svg.name, text)
+
+
+def test_a_bracket_among_persian_runs_reads_right_to_left():
+    """"(V_B به روش …)": the lone "(" before the symbol is a run of its own, marked right
+    to left (U+200F) so that a browser and the PDF route both mirror it to open on the
+    right, as the closing bracket at the far end closes on the left."""
+    label = Text((100.0, 10.0), "(V", 3.6, "end", False, "normal", "B", " به روش دوران شعاع)")
+    runs = _runs(label)
+    assert [r.text for r in runs] == ["\u200f(", "V", "به روش دوران شعاع)"]
+    assert 'direction="rtl"' in to_svg(Figure(110.0, 20.0, [runs[0]]))
+    from tarsim.graphics.rtl import visual
+
+    assert visual(runs[0].text)[0] == ")"        # mirrored, as cairosvg is given it
