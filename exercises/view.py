@@ -91,6 +91,8 @@ def view_data(ex: Exercise, *, step_deg: float = 0.5,
         "links": _links(mech, frames[0]),
         "ground": [p for p in mech.point_names if 1 in mech.links_at(p)],
         "slides": [s.point for s in mech.slides],
+        "guides": [{"through": list(s.through), "direction": list(s.direction)}
+                   for s in mech.slides if s.guide_link == 1],
         "centres": _centre_names(sol),
         "scales": scales,
         "tips": {"velocity": _tip_names(frames, "v"), "acceleration": _tip_names(frames, "a")},
@@ -110,6 +112,10 @@ def _links(mech: Mechanism, first: dict) -> list[dict[str, Any]]:
     out = []
     for k in mech.links:
         own = [p for p, _ in k.points]
+        if len(own) > 2 and at:      # a plate: its outline in order round it, not crossed
+            cx = sum(at[p][0] for p in own) / len(own)
+            cy = sum(at[p][1] for p in own) / len(own)
+            own.sort(key=lambda p: math.atan2(at[p][1] - cy, at[p][0] - cx))
         sliding = [s.point for s in mech.slides if s.guide_link == k.number != 1
                    and s.point not in own]
         if sliding and at:
@@ -136,12 +142,15 @@ def _frame(mech: Mechanism, angle: float, scales: dict[str, float]) -> dict[str,
     m = mech.with_drive(replace(mech.drive, angle=angle))
     try:
         asm = assemble(m)
-        cs = locate_centres(asm)
         vp = draw_velocity_polygon(asm, scales["v"])
         ap = draw_acceleration_polygon(asm, vp, scales["a"])
         kin = solver.solve(m)
     except (TarsimError, ArithmeticError) as e:       # a position not reached, a dead point
         return {"angle": angle, "why": str(e).split("\n")[0]}
+    try:
+        cs = locate_centres(asm)
+    except TarsimError as e:     # Kennedy cannot reach a centre here: the rest still stands
+        cs, lost = None, str(e).split("\n")[0]
     joints = {p: asm.point(p).xy for p in m.point_names}
     size = max(math.dist(a, b) for a in joints.values() for b in joints.values()) or 1.0
     worst = max(math.dist(joints[p], kin.points[p]) for p in joints) / size
@@ -155,7 +164,7 @@ def _frame(mech: Mechanism, angle: float, scales: dict[str, float]) -> dict[str,
         big = max([math.hypot(*v) for v in truth.values()] + [1e-300])
         worst = max([worst] + [math.dist(read[n], truth[n]) / big for n in read])
     centres, miss = {}, 0.0
-    for c in cs.secondaries + cs.primaries:
+    for c in (cs.secondaries + cs.primaries) if cs is not None else ():
         p = cs.point(*c.pair)
         centres[c.label] = None if p.is_at_infinity else _round(p.xy)
         try:
@@ -166,6 +175,8 @@ def _frame(mech: Mechanism, angle: float, scales: dict[str, float]) -> dict[str,
         if err > tolerance(cs.conditioning(*c.pair)):
             miss = max(miss, err)
     frame["c"] = centres
+    if cs is None:
+        frame["centres"] = lost
     frame["ok"] = worst <= FRAME_CHECK and miss == 0.0
     if not frame["ok"]:
         frame["why"] = (f"its construction is {worst:.1g} off the analytic solution"
@@ -215,8 +226,8 @@ def _figure(stem: str, heading: str, parts) -> dict[str, Any]:
         numbered = {s.id: k for k, s in shown.numbered(panel)}
         steps, current = [], 0
         for step in shown.steps(panel):
-            if step.role is Role.GIVEN:
-                continue
+            if step.role is Role.GIVEN and panel is Panel.SPACE:
+                continue                # the mechanism itself, which the page draws anyway
             current = numbered.get(step.id, current)
             drawn = _drawn(step.output)
             said = {lang: narrate(step, lang) for lang in _PAGE_LANGUAGES} \
@@ -228,7 +239,8 @@ def _figure(stem: str, heading: str, parts) -> dict[str, Any]:
                           "construction"})
         out.append({"title": {lang: _said_title(title, lang) for lang in _PAGE_LANGUAGES},
                     "panel": _PANELS.get(panel, "space"), "steps": steps})
-    return {"stem": stem, "heading": heading, "parts": out}
+    return {"stem": stem, "heading": {lang: _said_title(heading, lang)
+                                      for lang in _PAGE_LANGUAGES}, "parts": out}
 
 
 _PAGE_LANGUAGES = ("en", "fa")

@@ -36,7 +36,7 @@ def test_words_are_the_text_itself_in_english_and_the_catalogues_in_persian():
         assert words("Velocity scale") == "مقیاس سرعت"
         assert unit_words("mm/s") == "میلی\u200cمتر بر ثانیه"
         assert words("{name}: {what} at {where}", name="چهار میله\u200cای", what="مراکز آنی",
-                     where="θ2 = 90°") == "چهار میله\u200cای: مراکز آنی در θ2 = 90°"
+                     where="θ2 = 90°") == "چهار میله\u200cای: مراکز آنی در \u202aθ2 = 90°\u202c"
     assert spoken() == "en"                  # the setting ends with its block
 
 

@@ -85,7 +85,9 @@ WORDS: dict[str, str] = {
     # ----- the figures' own words (graphics/: captions, legends, tables) -----------------
     # A title: the mechanism's name (the file's [names] fa), then what the figure shows.
     "{name}: {what}": "{name}: {what}",
-    "{name}: {what} at {where}": "{name}: {what} در {where}",
+    # A position ("t = 2.34 s (θ2 = −44°)") is embedded left to right (LRE … PDF), so that
+    # its brackets pair in the PDF route's bidi as a browser pairs them.
+    "{name}: {what} at {where}": "{name}: {what} در \u202a{where}\u202c",
     "{title} (continued)": "{title} (ادامه)",
     "Scale": "مقیاس", "Velocity scale": "مقیاس سرعت", "Acceleration scale": "مقیاس شتاب",
     ", ": "، ",

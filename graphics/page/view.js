@@ -11,7 +11,7 @@ const D = JSON.parse(document.getElementById("data").textContent);
 const NS = "http://www.w3.org/2000/svg";
 const PANELS = ["space", "velocity", "acceleration"];
 const TIP_MARK = {velocity: "", acceleration: "′"};
-const S = {lang: "en", fig: 0, step: 0, frame: 0, playing: null, drag: null,
+const S = {lang: "en", fig: 0, step: 0, frame: 0, playing: null, drag: null, labels: [],
            layers: {kennedy: true, construction: true, labels: true, numbers: true},
            views: {}, times: []};
 
@@ -37,29 +37,54 @@ function stage(p, n) {
 }
 
 // ----- world to panel ----------------------------------------------------------------------
-function pts(panel) {
+/* What a panel must hold: in the steps' mode, the figure's own construction and the
+   mechanism where it is drawn; turning, every frame's mechanism or polygon. */
+function pts(panel, mode) {
   const out = [];
   const push = xy => { if (xy && isFinite(xy[0]) && isFinite(xy[1])) out.push(xy); };
-  for (const f of D.frames) {
+  const key = panel === "velocity" ? "v" : "a";
+  // The space panel keeps one view, so that the crank stays under the pointer that drags
+  // it: every frame's mechanism, and the steps' marks near it (a far centre is left off).
+  const space = panel === "space";
+  const stepped = (space || mode === "steps") && parts().some(part => part.panel === panel);
+  for (const f of mode === "steps" && !space ? [D.frames[0]] : D.frames) {
     if (!f.p) continue;
-    if (panel === "space") for (let i = 0; i < f.p.length; i += 2) push([f.p[i], f.p[i + 1]]);
-    const key = panel === "velocity" ? "v" : "a";
-    if (panel !== "space") { push(f[key + "o"]); Object.values(f[key]).forEach(push); }
+    if (space) for (let i = 0; i < f.p.length; i += 2) push([f.p[i], f.p[i + 1]]);
+    else { push(f[key + "o"]); Object.values(f[key]).forEach(push); }
   }
-  parts().forEach(part => {
+  const near = space ? reach(out) : null, marks = [];
+  const mark = xy => { if (!near || Math.hypot(xy[0] - near[0], xy[1] - near[1]) <= near[2]) marks.push(xy); };
+  if (stepped) parts().forEach(part => {
     if (part.panel !== panel) return;
     part.steps.forEach(st => {
       const d = st.draw || {};
-      if (d.pt) push(d.pt);
-      if (d.seg) { push(d.seg.slice(0, 2)); push(d.seg.slice(2)); }
+      if (d.pt) mark(d.pt);
+      if (d.seg) { mark(d.seg.slice(0, 2)); mark(d.seg.slice(2)); }
+      if (d.circle) { const [x, y, r] = d.circle; mark([x - r, y - r]); mark([x + r, y + r]); }
     });
   });
+  marks.forEach(push);
   return out;
 }
 
-function fit(panel) {
+/* The centre of ``pts`` and three times their reach from it: how far a mark may stand
+   from the mechanism and still be framed with it. */
+function reach(pts) {
+  if (!pts.length) return null;
+  const cx = pts.reduce((s, p) => s + p[0], 0) / pts.length;
+  const cy = pts.reduce((s, p) => s + p[1], 0) / pts.length;
+  const r = Math.max(...pts.map(p => Math.hypot(p[0] - cx, p[1] - cy)), 1e-9);
+  return [cx, cy, 3 * r];
+}
+
+/* The view of a panel now: the steps' own (at the exercise's position) or the turn's. */
+function view(panel) {
+  return S.views[panel === "space" || S.frame !== 0 ? "turn" : "steps"][panel];
+}
+
+function fit(panel, mode) {
   const svg = svgOf(panel), box = svg.getBoundingClientRect();
-  const w = box.width || 600, h = box.height || 400, all = pts(panel);
+  const w = box.width || 600, h = box.height || 400, all = pts(panel, mode);
   if (!all.length) return {cx: 0, cy: 0, k: 1, w, h};
   let [x0, y0, x1, y1] = [Infinity, Infinity, -Infinity, -Infinity];
   for (const [x, y] of all) { x0 = Math.min(x0, x); x1 = Math.max(x1, x);
@@ -72,7 +97,7 @@ function fit(panel) {
 function svgOf(panel) { return document.querySelector(`#${panel} svg`); }
 function px(v, xy) { return [v.w / 2 + (xy[0] - v.cx) * v.k, v.h / 2 - (xy[1] - v.cy) * v.k]; }
 function world(panel, x, y) {
-  const v = S.views[panel];
+  const v = view(panel);
   return [v.cx + (x - v.w / 2) / v.k, v.cy - (y - v.h / 2) / v.k];
 }
 const f3 = x => x.toFixed(2);
@@ -80,10 +105,21 @@ const f3 = x => x.toFixed(2);
 // ----- drawing -----------------------------------------------------------------------------
 function esc(t) { return String(t).replace(/[&<>"]/g, c => `&#${c.charCodeAt(0)};`); }
 
+/* A name is kept, not drawn at once: names of points that stand together (O2 and I12)
+   are set as one, "O2 ≡ I12", as the figures set them. */
 function label(v, xy, text, cls, dx = 6, dy = -6) {
   if (!S.layers.labels || !text) return "";
   const [x, y] = px(v, xy);
-  return `<text class="${cls}" x="${f3(x + dx)}" y="${f3(y + dy)}">${esc(text)}</text>`;
+  const same = S.labels.find(l => Math.hypot(l.x - x, l.y - y) < 1.5);
+  if (same) { if (!same.text.split(" ≡ ").includes(text)) same.text += ` ≡ ${text}`; }
+  else S.labels.push({x, y, dx, dy, text, cls});
+  return "";
+}
+
+function names() {
+  const out = S.labels.map(l => `<text class="${l.cls}" x="${f3(l.x + l.dx)}" y="${f3(l.y + l.dy)}">${esc(l.text)}</text>`).join("");
+  S.labels = [];
+  return out;
 }
 
 function arrow(v, a, b, cls, attrs = "") {
@@ -127,22 +163,17 @@ function stepMark(v, st, where, panel) {
   }
   if (S.layers.numbers && where === "current") {
     const xy = d.pt || d.seg?.slice(2) || d.line?.slice(0, 2) || d.circle || d.angle;
-    if (xy) s += label(v, xy, String(st.n), "number", -14, 14);
+    if (xy) { const [x, y] = px(v, xy);
+              s += `<text class="number" x="${f3(x - 14)}" y="${f3(y + 14)}">${st.n}</text>`; }
   }
   return s;
 }
 
 function drawSpace(f) {
-  const v = S.views.space, at = i => [f.p[2 * i], f.p[2 * i + 1]], idx = {};
+  const v = view('space'), at = i => [f.p[2 * i], f.p[2 * i + 1]], idx = {};
   D.points.forEach((p, i) => { idx[p] = i; });
   let s = "";
-  const here = S.frame === 0;
-  if (here) parts().forEach((part, p) => {
-    if (part.panel !== "space") return;
-    part.steps.forEach(st => { const w = stage(p, st.n);
-                               if (w !== "later" && st.draw) s += stepMark(v, st, w, "space"); });
-  });
-  if (!here || !parts().some(part => part.panel === "space")) s += drawCentres(f, v);
+  for (const g of D.guides) s += farLine(v, g.through, g.direction, "guide");
   for (const link of D.links) {
     if (link.number === 1) continue;
     const xy = link.points.map(p => px(v, at(idx[p])));
@@ -163,6 +194,14 @@ function drawSpace(f) {
     s += `<circle class="joint" data-point="${p}" cx="${f3(x)}" cy="${f3(y)}" r="3.5"/>`
        + label(v, at(i), p, "name");
   });
+  // The construction over the mechanism, so that the current step is never hidden.
+  const here = S.frame === 0;
+  if (here) parts().forEach((part, p) => {
+    if (part.panel !== "space") return;
+    part.steps.forEach(st => { const w = stage(p, st.n);
+                               if (w !== "later" && st.draw) s += stepMark(v, st, w, "space"); });
+  });
+  if (!here || !parts().some(part => part.panel === "space")) s += drawCentres(f, v);
   return s;
 }
 
@@ -185,7 +224,7 @@ function drawCentres(f, v) {
 }
 
 function drawPolygon(f, panel) {
-  const v = S.views[panel], key = panel === "velocity" ? "v" : "a";
+  const v = view(panel), key = panel === "velocity" ? "v" : "a";
   let s = "";
   const stepped = S.frame === 0 && parts().some(part => part.panel === panel);
   if (stepped) parts().forEach((part, p) => {
@@ -210,7 +249,8 @@ function drawPolygon(f, panel) {
 
 const STYLE = `<style>
   .link{fill:none;stroke:#111;stroke-width:2.4;stroke-linejoin:round}
-  .plate{fill:#eee}
+  .plate{fill:#eee;fill-opacity:.6}
+  .guide{stroke:#111;stroke-width:.8}
   .ground{fill:#fff;stroke:#111;stroke-width:1.2}
   .block{fill:#fff;stroke:#111;stroke-width:1.4}
   .joint{fill:#fff;stroke:#111;stroke-width:1.4}
@@ -237,10 +277,11 @@ function draw() {
   const t0 = performance.now();
   const f = D.frames[S.frame];
   for (const panel of PANELS) {
-    const svg = svgOf(panel), v = S.views[panel];
+    const svg = svgOf(panel), v = view(panel);
     svg.setAttribute("viewBox", `0 0 ${v.w} ${v.h}`);
     if (!f.p) { svg.innerHTML = STYLE + `<text x="12" y="24">${esc(f.why || "")}</text>`; continue; }
-    svg.innerHTML = STYLE + (panel === "space" ? drawSpace(f) : drawPolygon(f, panel));
+    S.labels = [];
+    svg.innerHTML = STYLE + (panel === "space" ? drawSpace(f) : drawPolygon(f, panel)) + names();
   }
   drawSteps();
   drawReadout(f);
@@ -249,9 +290,19 @@ function draw() {
 }
 
 // ----- the steps' list ---------------------------------------------------------------------
+/* Persian words with formulas among them: each formula (a run that opens with a Latin
+   letter or a bracket and holds no Persian letter) is isolated left to right, so that
+   "(۱ rad/s)² × ۱۸۰" keeps its order and its brackets inside a right-to-left line. */
+const FORMULA = /([A-Za-zα-ωΑ-ΩΔ(][A-Za-zα-ωΑ-ΩΔ0-9۰-۹₀-₉_=+\-−×·÷/:()²³′″ᵗⁿᶜ.°٫≡⊥∥→ ]*[A-Za-zα-ωΑ-Ω0-9۰-۹₀-₉)²³′″°])/g;
+function said(text, lang) {
+  const safe = esc(text);
+  return lang === "fa" ? safe.replace(FORMULA, '<bdi dir="ltr">$1</bdi>') : safe;
+}
+
 function drawSteps() {
   const ol = document.getElementById("steps"), list = numbered();
   ol.classList.toggle("rtl", S.lang === "fa");
+  ol.classList.toggle("away", S.frame !== 0);
   document.getElementById("readout").classList.toggle("rtl", S.lang === "fa");
   document.querySelectorAll("[data-ui]").forEach(el => {
     el.textContent = (D.ui[S.lang] || D.ui.en)[el.dataset.ui] || el.dataset.ui; });
@@ -259,7 +310,7 @@ function drawSteps() {
   list.forEach((st, i) => {
     if (st.part !== last) { html += `<li class="part">${esc(parts()[st.part].title[S.lang])}</li>`; last = st.part; }
     const cls = i === S.step ? "current" : i < S.step ? "done" : "";
-    html += `<li class="step ${cls}" data-i="${i}" data-n="${st.n}"><b>${st.n}.</b> ${esc(st.said[S.lang] || st.said.en)}</li>`;
+    html += `<li class="step ${cls}" data-i="${i}" data-n="${st.n}"><b>${st.n}.</b> ${said(st.said[S.lang] || st.said.en, st.said[S.lang] ? S.lang : "en")}</li>`;
   });
   ol.innerHTML = html || `<li>${S.lang === "fa" ? "این شکل مرحله‌ای ندارد." : "No construction steps in this figure."}</li>`;
   const stepper = document.getElementById("stepper");
@@ -275,9 +326,13 @@ function drawReadout(f) {
   if (!f.p) state = `<span class="bad">${fa ? "سرهم نمی‌شود" : "cannot be assembled"}: ${esc(f.why)}</span>`;
   else if (!f.ok) state = `<span class="bad">${fa ? "وارسی نادرست" : "check failed"}: ${esc(f.why)}</span>`;
   else state = fa ? "✓ با حل تحلیلی وارسی شد" : "✓ checked against the analytic solution";
-  const steps = S.frame === 0 ? "" : (fa ? " — مراحل در وضعیت تمرین رسم شده‌اند" : " — the steps are drawn at the exercise's position (frame 1)");
+  const steps = S.frame === 0 ? "" : (fa ? " — مراحل در وضعیت خود تمرین رسم می‌شوند: برای بازگشت روی یک مرحله کلیک کنید"
+                                        : " — the steps are drawn at the exercise's own position: click a step to go back");
+  const lost = f.centres ? ` — ${fa ? "مراکز آنی" : "instant centres"}: ${esc(f.centres)}` : "";
+  const value = f.p && D.plot.values[S.frame] !== null
+    ? ` — ${esc(D.plot.symbol)} = ${D.plot.values[S.frame].toPrecision(4)} ${esc(D.plot.unit)}` : "";
   document.getElementById("readout").innerHTML =
-    `θ${D.input.link} = ${deg.toFixed(1)}° (${fa ? "قاب" : "frame"} ${S.frame + 1}/${D.frames.length}) ${state}${steps}`;
+    `θ${D.input.link} = ${deg.toFixed(1)}° (${fa ? "قاب" : "frame"} ${S.frame + 1}/${D.frames.length})${value} ${state}${lost}${steps}`;
   document.getElementById("angle").value = S.frame;
 }
 
@@ -287,14 +342,17 @@ function drawPlot() {
   const w = box.width || 800, h = box.height || 100, vals = D.plot.values, n = vals.length;
   svg.setAttribute("viewBox", `0 0 ${w} ${h}`);
   const ok = vals.filter(x => x !== null), lo = Math.min(0, ...ok), hi = Math.max(0, ...ok);
-  const y = x => h - 14 - (x - lo) / ((hi - lo) || 1) * (h - 28), x = k => 40 + k / (n - 1) * (w - 50);
+  // x as the slider's thumb stands (its track inset by half a thumb at each end)
+  const y = x => h - 14 - (x - lo) / ((hi - lo) || 1) * (h - 28), x = k => 8 + k / (n - 1) * (w - 16);
   let d = "", pen = "M";
   vals.forEach((val, k) => { if (val === null) { pen = "M"; return; }
                              d += `${pen}${f3(x(k))},${f3(y(val))} `; pen = "L"; });
   const marks = D.marks.map(m => `<line x1="${f3(x(markFrame(m)))}" x2="${f3(x(markFrame(m)))}" y1="4" y2="${h - 10}" stroke="${m.kind === "dead" ? "#c62828" : "#999"}" stroke-dasharray="3 3"/>`).join("");
   svg.innerHTML = `<line x1="40" x2="${w - 10}" y1="${f3(y(0))}" y2="${f3(y(0))}" stroke="#ccc"/>${marks}`
     + `<path d="${d}" fill="none" stroke="#111" stroke-width="1.5"/>`
-    + `<text x="4" y="14" style="font:italic 12px 'DejaVu Serif'">${esc(D.plot.symbol)} (${esc(D.plot.unit)})</text>`
+    + `<text x="${w - 6}" y="14" text-anchor="end" style="font:italic 12px 'DejaVu Serif'">${esc(D.plot.symbol)} (${esc(D.plot.unit)})</text>`
+    + `<text x="12" y="${f3(y(hi) + 4)}" style="font:11px 'DejaVu Sans'">${hi.toPrecision(3)}</text>`
+    + `<text x="12" y="${f3(y(lo))}" style="font:11px 'DejaVu Sans'">${lo.toPrecision(3)}</text>`
     + `<line id="cursor" y1="4" y2="${h - 10}" stroke="#c62828" stroke-width="1.5"/>`;
   S.plotX = x;
   drawCursor();
@@ -343,10 +401,10 @@ function pointer(panel) {
     const r = svg.getBoundingClientRect(), x = e.clientX - r.left, y = e.clientY - r.top;
     const f = D.frames[S.frame];
     if (panel === "space" && f.p) {
-      const [, pin] = crankPin(), [px0, py0] = px(S.views.space, [f.p[2 * pin], f.p[2 * pin + 1]]);
-      if (Math.hypot(px0 - x, py0 - y) < 18) { S.drag = {crank: true}; svg.setPointerCapture(e.pointerId); return; }
+      const [, pin] = crankPin(), [px0, py0] = px(view('space'), [f.p[2 * pin], f.p[2 * pin + 1]]);
+      if (Math.hypot(px0 - x, py0 - y) < 25) { S.drag = {crank: true}; svg.setPointerCapture(e.pointerId); return; }
     }
-    S.drag = {panel, x, y, cx: S.views[panel].cx, cy: S.views[panel].cy};
+    S.drag = {panel, x, y, cx: view(panel).cx, cy: view(panel).cy};
     svg.setPointerCapture(e.pointerId);
   });
   svg.addEventListener("pointermove", e => {
@@ -358,7 +416,7 @@ function pointer(panel) {
       setFrame(angleFrame(Math.atan2(wy - f0.p[2 * pivot + 1], wx - f0.p[2 * pivot])));
       return;
     }
-    const v = S.views[S.drag.panel];
+    const v = view(S.drag.panel);
     v.cx = S.drag.cx - (x - S.drag.x) / v.k; v.cy = S.drag.cy + (y - S.drag.y) / v.k;
     draw();
   });
@@ -366,7 +424,7 @@ function pointer(panel) {
   svg.addEventListener("wheel", e => {
     e.preventDefault();
     const r = svg.getBoundingClientRect(), x = e.clientX - r.left, y = e.clientY - r.top;
-    const [wx, wy] = world(panel, x, y), v = S.views[panel], z = Math.exp(-e.deltaY / 500);
+    const [wx, wy] = world(panel, x, y), v = view(panel), z = Math.exp(-e.deltaY / 500);
     v.k *= z; v.cx = wx - (wx - v.cx) / z; v.cy = wy - (wy - v.cy) / z;
     draw();
   }, {passive: false});
@@ -374,11 +432,11 @@ function pointer(panel) {
 
 function download() {
   const parts = PANELS.map((p, i) => {
-    const v = S.views[p];
-    return `<g transform="translate(${i === 0 ? 0 : (i - 1) * (S.views.velocity.w + 10)},${i === 0 ? 0 : S.views.space.h + 10})">${svgOf(p).innerHTML}</g>`;
+    const v = view(p);
+    return `<g transform="translate(${i === 0 ? 0 : (i - 1) * (view('velocity').w + 10)},${i === 0 ? 0 : view('space').h + 10})">${svgOf(p).innerHTML}</g>`;
   });
-  const w = Math.max(S.views.space.w, S.views.velocity.w + S.views.acceleration.w + 10);
-  const h = S.views.space.h + Math.max(S.views.velocity.h, S.views.acceleration.h) + 10;
+  const w = Math.max(view('space').w, view('velocity').w + view('acceleration').w + 10);
+  const h = view('space').h + Math.max(view('velocity').h, view('acceleration').h) + 10;
   const text = `<svg xmlns="${NS}" width="${f3(w)}" height="${f3(h)}" viewBox="0 0 ${f3(w)} ${f3(h)}">`
              + `<rect width="100%" height="100%" fill="#fff"/>${parts.join("")}</svg>`;
   const a = document.createElement("a");
@@ -392,7 +450,10 @@ function download() {
 function start() {
   document.getElementById("title").textContent = D.title[S.lang] || D.title.en;
   const sel = document.getElementById("figure");
-  sel.innerHTML = D.figures.map((f, i) => `<option value="${i}">${esc(f.stem)}</option>`).join("");
+  const options = () => D.figures.map((f, i) => f.parts.some(p => p.steps.length)
+    ? `<option value="${i}"${i === S.fig ? " selected" : ""}>${esc(f.heading[S.lang] || f.heading.en)}</option>` : "").join("");
+  sel.innerHTML = options();
+  S.fig = +(sel.value || 0);
   sel.addEventListener("change", () => { S.fig = +sel.value; S.step = 0; refit(); draw(); });
   const hasFa = D.figures.some(f => f.parts.some(p => p.steps.some(s => s.said && s.said.fa)));
   const lang = document.getElementById("lang");
@@ -401,6 +462,8 @@ function start() {
     S.lang = S.lang === "en" ? "fa" : "en";
     lang.textContent = S.lang === "en" ? "فارسی" : "English";
     document.getElementById("title").textContent = D.title[S.lang] || D.title.en;
+    document.getElementById("title").dir = S.lang === "fa" ? "rtl" : "ltr";
+    sel.innerHTML = options();
     draw();
   });
   document.getElementById("first").onclick = () => setStep(-1);
@@ -409,13 +472,21 @@ function start() {
   document.getElementById("stepper").oninput = e => setStep(+e.target.value);
   document.getElementById("steps").onclick = e => {
     const li = e.target.closest("li[data-i]"); if (li) setStep(+li.dataset.i); };
-  document.getElementById("play").onclick = () => {
-    if (S.playing) { clearInterval(S.playing); S.playing = null; return; }
+  const play = document.getElementById("play");
+  const stop = () => { clearInterval(S.playing); S.playing = null; play.firstChild.textContent = "▶︎ "; };
+  play.onclick = () => {
+    if (S.playing) { stop(); return; }
     if (S.step >= numbered().length - 1) S.step = -1;
+    play.firstChild.textContent = "⏸ ";
     S.playing = setInterval(() => {
-      if (S.step >= numbered().length - 1) { clearInterval(S.playing); S.playing = null; return; }
+      if (S.step >= numbered().length - 1) { stop(); return; }
       setStep(S.step + 1); }, 900);
   };
+  document.addEventListener("keydown", e => {
+    if (e.target.tagName === "SELECT" || e.target.tagName === "INPUT") return;
+    if (e.key === "ArrowRight" || e.key === "ArrowDown") setStep(S.step + 1);
+    if (e.key === "ArrowLeft" || e.key === "ArrowUp") setStep(S.step - 1);
+  });
   document.querySelectorAll("[data-layer]").forEach(box => box.addEventListener("change", () => {
     S.layers[box.dataset.layer] = box.checked; draw(); }));
   const angle = document.getElementById("angle");
@@ -423,7 +494,7 @@ function start() {
   angle.addEventListener("input", () => setFrame(+angle.value));
   document.getElementById("marks").innerHTML = D.marks.map(m =>
     `<span class="${m.kind}" title="${m.kind === "dead" ? esc(m.why || "dead point") : "limit position"}"`
-    + ` style="left:calc(${(100 * markFrame(m) / Math.max(1, D.frames.length - 1)).toFixed(3)}% - 1px)"></span>`).join("");
+    + ` style="left:calc(7px + ${(markFrame(m) / Math.max(1, D.frames.length - 1)).toFixed(5)} * (100% - 16px))"></span>`).join("");
   document.getElementById("download").onclick = download;
   PANELS.forEach(pointer);
   window.addEventListener("resize", () => { refit(); draw(); drawPlot(); });
@@ -433,7 +504,10 @@ function start() {
   drawPlot();
 }
 
-function refit() { for (const p of PANELS) S.views[p] = fit(p); }
+function refit() {
+  S.views = {steps: {}, turn: {}};
+  for (const mode of ["steps", "turn"]) for (const p of PANELS) S.views[mode][p] = fit(p, mode);
+}
 
 /* For tests and benchmarks: set a frame or a step, read a drawn point back in world
    units, and the time each redraw took. */
