@@ -424,10 +424,12 @@ class _Kennedy:
         return None
 
     def omega(self, n: int) -> float | None:
-        """ω_n relative to the input's ω = 1, through the known centres."""
+        """ω_n relative to the input's ω as ±1 (its sense kept, so that the velocities the
+        construction lays off point the way the links move), through the known centres."""
         d = self.m.drive.link
+        sense = -1.0 if self.m.drive.omega < 0 else 1.0
         if n == d:
-            return 1.0
+            return sense
         if n == 1:
             return 0.0
         for k in (d, *self.out.links):
@@ -437,7 +439,7 @@ class _Kennedy:
             needed += [] if k == d else [tuple(sorted((d, k)))]
             if all(p in self.out.found for p in needed):
                 try:
-                    wk = 1.0 if k == d else omega_ratio(self.out, d, k)
+                    wk = sense if k == d else sense * omega_ratio(self.out, d, k)
                     return wk * omega_ratio(self.out, k, n)
                 except DegenerateInput:
                     continue

@@ -614,6 +614,30 @@ def test_when_every_kennedy_line_coincides_rule_2_draws_the_velocity_profiles():
     assert asm[c.ref].verb == "project_onto"
 
 
+@pytest.mark.parametrize("omega2", [1.0, -1.0])
+def test_rule_2_lays_each_velocity_off_the_way_its_link_moves(omega2):
+    """The velocities at X that rule 2 lays off point as the links' own velocities there
+    do, whichever way the crank turns: the centre found is the same either way (the
+    construction is homogeneous in ω), but a drawn arrow must not point backwards."""
+    m = crank_shaper(math.radians(90), omega2=omega2)
+    asm = assemble(m)
+    cs = locate_centres(asm)
+    kin = solve(m)
+    tips = [r for r in backward_slice(asm, [cs.centre(2, 5).ref]).refs if ":tip" in r]
+    assert len(tips) == 2
+    for ref in tips:
+        link = int(ref[-1])
+        step = asm[ref]
+        x, tip = asm.output(step.inputs[0]).xy, asm.output(ref).xy
+        drawn = (tip[0] - x[0], tip[1] - x[1])
+        if link == 2:               # a turning link: ω J (X − I12)
+            w, (cx, cy) = kin.omegas[2], cs.point(1, 2).xy
+            true = (-w * (x[1] - cy), w * (x[0] - cx))
+        else:                       # the ram translates: its velocity anywhere
+            true = kin.velocities["B"]
+        assert drawn[0] * true[0] + drawn[1] * true[1] > 0, link
+
+
 
 def test_a_centre_of_two_links_at_rest_together_is_drawn_and_reported_undefined():
     # The crank-shaper at its lever's limit: links 4 and 5 are both momentarily at rest, so
