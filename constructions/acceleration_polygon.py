@@ -120,7 +120,10 @@ class _Polygon(PolygonWalk):
                             components=self.components)
 
     def say(self, a: float) -> Quantity:
-        return self.m.units.acceleration_said(a)
+        """An acceleration as a step says it; rounding noise beside the input's own
+        acceleration (a ram at rest in its stroke reads 1e-14 mm/s²) is said as 0."""
+        floor = NOISE * self.m.input_acceleration
+        return self.m.units.acceleration_said(0.0 if abs(a) <= floor else a)
 
     def velocity(self, n: Node) -> tuple[float, float]:
         return (0.0, 0.0) if self.zero(n) else self.vp.vector(self.name(n))
@@ -456,7 +459,8 @@ class _Polygon(PolygonWalk):
                    alpha: float) -> Phrase:
         r = math.dist(self.xy(k), self.xy(x))
         sense = sense_of(alpha, math.hypot(self.m.drive.omega ** 2, self.m.drive.alpha))
-        sense = "no angular acceleration" if sense == "at rest" else sense
+        if sense == "at rest":          # rounding noise, said as none (not as 1e-17 rad/s²)
+            sense, alpha = "no angular acceleration", 0.0
         return phrase("apolygon.alpha", link=c, what=what, line=f"{k.point}{x.point}",
                       accel=self.say(tangent), length=self.m.units.length_said(r),
                       alpha=Number(abs(alpha)), sense=Word(sense), about=k.point)

@@ -13,6 +13,7 @@ tolerance is half a unit in the last printed digit.
 """
 
 import math
+import re
 from pathlib import Path
 
 import pytest
@@ -653,3 +654,17 @@ def test_a_curved_slot_adds_v_rel_squared_over_rho_toward_its_centre():
     assert toward == pytest.approx(1.0 if not normal[0].startswith("−") else -1.0, abs=1e-12)
     said = " ".join(sentences(ap, asm))
     assert "V_A2/A4²/ρ" in said and "centre of curvature K" in said
+
+
+def test_rounding_noise_is_said_as_zero_in_the_steps():
+    """The crank-shaper at θ2 = 90°: the ram stands still in its stroke and the lever has
+    no angular acceleration, but the polygon reads them as 1e-14 mm/s² and 1e-17 rad/s²
+    of rounding. The steps say 0, not the noise."""
+    from tarsim.constructions.narration import narrate
+
+    m = crank_shaper(math.radians(90))
+    asm = assemble(m)
+    ap = draw_acceleration_polygon(asm, draw_velocity_polygon(asm))
+    said = [narrate(asm[r]) for r in ap.steps if asm[r].phrase is not None]
+    assert not any(re.search(r"\de-\d", text) for text in said)
+    assert any("α4" in t and "= 0 rad/s² (no angular acceleration" in t for t in said)
