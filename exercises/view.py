@@ -90,9 +90,10 @@ def view_data(ex: Exercise, *, step_deg: float = 0.5,
         "points": list(mech.point_names),
         "links": _links(mech, frames[0]),
         "ground": [p for p in mech.point_names if 1 in mech.links_at(p)],
-        "slides": [s.point for s in mech.slides],
-        "guides": [{"through": list(s.through), "direction": list(s.direction)}
-                   for s in mech.slides if s.guide_link == 1],
+        "slides": [s.point for s in mech.slides if s.contact is None],
+        "guides": _guides(mech, frames[0]),
+        "wheels": [{"point": c.circle.centre, "radius": c.circle.radius}
+                   for c in _contacts(mech) if c.circle.centre],
         "centres": _centre_names(sol),
         "scales": scales,
         "tips": {"velocity": _tip_names(frames, "v"), "acceleration": _tip_names(frames, "a")},
@@ -102,6 +103,29 @@ def view_data(ex: Exercise, *, step_deg: float = 0.5,
         "plot": _plot(sweep),
         "marks": _marks(sweep),
     }
+
+
+def _contacts(mech: Mechanism) -> list:
+    """The circle-on-face and circle-on-circle contacts (a wheel, a roller), once each."""
+    out = []
+    for joint in (*mech.slides, *mech.arcs):
+        if joint.contact is not None and joint.contact not in out:
+            out.append(joint.contact)
+    return out
+
+
+def _guides(mech: Mechanism, first: dict) -> list[dict[str, Any]]:
+    """The frame's straight guides and faces, as lines (a point on each and its direction):
+    a slider's guide, and the ground a wheel rolls on."""
+    out = [{"through": list(s.through), "direction": list(s.direction)}
+           for s in mech.slides if s.guide_link == 1 and s.contact is None]
+    at = dict(zip(mech.point_names, zip(first.get("p", [])[::2], first.get("p", [])[1::2])))
+    for c in _contacts(mech):
+        face = c.face
+        if face.link == 1 and face.through in at and face.angle is not None:
+            out.append({"through": list(at[face.through]),
+                        "direction": [math.cos(face.angle), math.sin(face.angle)]})
+    return out
 
 
 def _links(mech: Mechanism, first: dict) -> list[dict[str, Any]]:

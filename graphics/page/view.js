@@ -185,6 +185,10 @@ function drawSpace(f) {
     const [x, y] = px(v, at(idx[p]));
     s += `<path class="ground" d="M${f3(x)},${f3(y)} l-7,12 h14 z"/>`;
   }
+  for (const w of D.wheels) {
+    const [x, y] = px(v, at(idx[w.point]));
+    s += `<circle class="wheel" cx="${f3(x)}" cy="${f3(y)}" r="${f3(w.radius * v.k)}"/>`;
+  }
   for (const p of D.slides) {
     const [x, y] = px(v, at(idx[p]));
     s += `<rect class="block" x="${f3(x - 7)}" y="${f3(y - 5)}" width="14" height="10"/>`;
@@ -251,6 +255,7 @@ const STYLE = `<style>
   .link{fill:none;stroke:#111;stroke-width:2.4;stroke-linejoin:round}
   .plate{fill:#eee;fill-opacity:.6}
   .guide{stroke:#111;stroke-width:.8}
+  .wheel{fill:#eee;fill-opacity:.6;stroke:#111;stroke-width:2}
   .ground{fill:#fff;stroke:#111;stroke-width:1.2}
   .block{fill:#fff;stroke:#111;stroke-width:1.4}
   .joint{fill:#fff;stroke:#111;stroke-width:1.4}
