@@ -11,6 +11,7 @@ from __future__ import annotations
 import json
 import math
 import re
+from dataclasses import replace
 from pathlib import Path
 
 import pytest
@@ -19,6 +20,9 @@ from click.testing import CliRunner
 from tarsim.exercises.catalog import load
 from tarsim.exercises.cli import cli
 from tarsim.exercises.exercise_file import parse_exercise
+from tarsim.exercises.results_json import results_json
+from tarsim.exercises.solution import solve_positions
+from tarsim.exercises.solution_files import solve_worked
 from tarsim.exercises.view import view_data
 from tarsim.graphics.view_page import ViewPage, view_html
 
@@ -36,14 +40,8 @@ def shaper(tmp_path_factory):
     page = out / "shaper.html"
     result = CliRunner().invoke(cli, ["view", "crank-shaper", "-o", str(page)])
     assert result.exit_code == 0, result.output
-    steps = {}
-    for lang in ("en", "fa"):
-        folder = out / lang
-        r = CliRunner().invoke(cli, ["solve", "crank-shaper", "--no-pdf", "--lang", lang,
-                                     "-o", str(folder)])
-        assert r.exit_code == 0, r.output
-        steps[lang] = (folder / "steps.md").read_text(encoding="utf-8")
-    return page, steps
+    worked = solve_worked(load("crank-shaper"))
+    return page, {lang: worked.steps(lang) for lang in ("en", "fa")}
 
 
 @pytest.fixture(scope="module")
@@ -124,16 +122,17 @@ def test_every_step_is_steps_md_s_and_is_highlighted_in_turn(page, shaper, lang)
     assert clicked > 50
 
 
-def _results(angle: float, tmp_path: Path) -> dict:
-    out = tmp_path / f"at-{angle}"
-    r = CliRunner().invoke(cli, ["solve", "crank-shaper", "--angle", str(angle), "--no-pdf",
-                                 "-o", str(out)])
-    assert r.exit_code in (0, 3), r.output
-    return json.loads((out / "results.json").read_text(encoding="utf-8"))
+def _results(angle: float) -> dict:
+    """results.json of the crank-shaper solved at ``angle``, as `tarsim solve --angle`
+    writes it (the same solve and the same writer, without drawing its figures)."""
+    ex = load("crank-shaper")
+    ex = replace(ex, mechanism=ex.mechanism.with_drive(
+        replace(ex.mechanism.drive, angle=math.radians(angle))), positions=())
+    return json.loads(results_json(solve_positions(ex), ex.id))
 
 
 @pytest.mark.parametrize("angle", [45.0, 137.5, 250.0])
-def test_dragging_the_crank_draws_what_solve_finds_at_that_angle(page, tmp_path, angle):
+def test_dragging_the_crank_draws_what_solve_finds_at_that_angle(page, angle):
     """Drag the crank pin to θ2 on the page, then read back what it drew: each instant
     centre and the velocity polygon's tip b, turned back into world units from the
     drawing, are tarsim's results.json at that angle to the drawing's precision (half a
@@ -151,7 +150,7 @@ def test_dragging_the_crank_draws_what_solve_finds_at_that_angle(page, tmp_path,
     page.mouse.up()
     shown = page.evaluate("tarsimView.data.frames[tarsimView.state.frame].angle")
     assert math.degrees(shown) % 360 == pytest.approx(angle, abs=1e-9)
-    want = _results(angle, tmp_path)["positions"][0]["quantities"]
+    want = _results(angle)["positions"][0]["quantities"]
     k = page.evaluate("tarsimView.state.views.turn.space.k")      # px per metre
     compared = 0
     for name, q in want.items():
