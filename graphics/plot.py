@@ -24,6 +24,7 @@ from ..constructions.scales import nice
 
 from .figure import Circle, Figure, Path, Text, text_width, wrap_text
 from .rtl import is_rtl
+from .rtl_runs import lay_runs, sign_left
 
 __all__ = ["Series", "PlotMark", "nice_ticks", "tick_text", "rich_text", "draw_line_plot",
            "CURVE_STYLES"]
@@ -110,25 +111,14 @@ def tick_text(value: float, step: float) -> str:
 
 # ----- text ----------------------------------------------------------------------------------
 _SUB = re.compile(r"([^\s_]+)_(\w+)")
-_SIGN = re.compile(r"(?<![\w۰-۹])([+−])(?=[0-9۰-۹A-Za-z])")
-"""A sign opening a number, or a direction (+x)."""
-_MIRROR = str.maketrans("()[]", ")(][")
-
-
-def _sign_left(text: str) -> str:
-    """Right-to-left ``text`` with each signed number (or +x) keeping its sign at its left,
-    as a formula does: read right to left, the sign would go to its right, unless a
-    left-to-right mark (of no width) opens it."""
-    return _SIGN.sub("\u200e\\1", text) if is_rtl(text) else text
-
-
 def rich_text(at: Point, text: str, size: float, anchor: str = "start", *,
               italic: bool = False, weight: str = "normal") -> list[Text]:
     """Set ``text`` at ``at``, each ``X_Y`` with Y as a true subscript.
 
     Returns the pieces, laid end to end: one :class:`Text` per subscript, the
     words after it in its tail (so no piece opens with a space, which SVG would
-    drop). Right-to-left text (Persian) is laid by :func:`_rtl_pieces` instead.
+    drop). Right-to-left text (Persian) is laid in runs of one direction instead
+    (:func:`~.rtl_runs.lay_runs`).
 
     Examples
     --------
@@ -139,7 +129,7 @@ def rich_text(at: Point, text: str, size: float, anchor: str = "start", *,
     """
     matches = list(_SUB.finditer(text))
     if is_rtl(text):
-        return _rtl_pieces(at, text, matches, size, anchor, italic, weight)
+        return lay_runs(at, _runs(text, matches), size, anchor, italic, weight)
     if not matches:
         pieces = [(text, "", "")]
     else:
@@ -159,70 +149,19 @@ def rich_text(at: Point, text: str, size: float, anchor: str = "start", *,
     return out
 
 
-_A_NUMBER = r"[−+]?[0-9۰-۹][0-9۰-۹٫.]*°?"
-_FORMULA = re.compile(rf"\s*=\s*{_A_NUMBER}(?:(?:، |…){_A_NUMBER})*")
-"""What follows a symbol to make a formula with it: " = ۲۰۱٫۱°", " = ۹۰°، ۲۷۰°"."""
-
-
-def _rtl_pieces(at: Point, text: str, matches: list[re.Match], size: float, anchor: str,
-                italic: bool, weight: str) -> list[Text]:
-    """Right-to-left ``text`` laid from its right end leftwards, as it reads: its words in
-    runs of their own, each symbol with its subscript (and what makes a formula of it, as
-    "θ_2 = ۹۰°") a left-to-right run between them, as the bidirectional algorithm would
-    set the line whole.
-
-    A run is one direction throughout, so a viewer sets it alike whether it reads the
-    SVG's runs one by one or together; a bracket that opens before a symbol closes the run
-    before it (and turns there, as right-to-left text turns it). Spaces at a run's ends,
-    which SVG drops, are kept as gaps between the runs.
-    """
-    runs: list[tuple[str, str]] = []          # (words, "") or (symbol, subscript)
+def _runs(text: str, matches: list[re.Match]) -> list[tuple[str, str, str]]:
+    """``text``'s runs for :func:`~.rtl_runs.lay_runs`: its words, and each symbol with its
+    subscript; a bracket opening before a symbol closes the words before it."""
+    runs: list[tuple[str, str, str]] = []
     done = 0
     for m in matches:
         head = m.group(1)
         symbol = head.lstrip("([|")
-        runs.append((text[done:m.start()] + head[:len(head) - len(symbol)], ""))
-        runs.append((symbol, m.group(2)))
+        runs.append((text[done:m.start()] + head[:len(head) - len(symbol)], "", ""))
+        runs.append((symbol, m.group(2), ""))
         done = m.end()
-    runs.append((text[done:], ""))
-    gap = text_width(" ", size)
-    laid: list[tuple[float, Text]] = []       # (how far its right end is from the line's)
-    total = 0.0
-    after_formula = False
-    for k, (words, sub) in enumerate(runs):
-        if sub:
-            t = Text((0.0, 0.0), words, size, "start", italic, weight, sub)
-            formula = _FORMULA.match(runs[k + 1][0])
-            after_formula = formula is not None
-            if formula is None:
-                laid.append((total, t))
-                total += t.width
-                continue
-            # "θ_2 = ۹۰°" left to right: the symbol, then (a mark opening it so) the rest.
-            said = formula.group().strip()
-            said = "\u200e" + said if is_rtl(said) else said
-            rest = Text((0.0, 0.0), said, size, "start", italic, weight)
-            runs[k + 1] = (runs[k + 1][0][formula.end():], "")
-            laid += [(total, rest), (total + rest.width + gap, t)]
-            total += rest.width + gap + t.width
-            continue
-        # A space, or a "،" after "θ_2 = ۹۰°" (which would touch the θ at its left).
-        total += gap if words[:1].isspace() or (after_formula and words[:1] not in ")]") \
-            else 0.0
-        after_formula = False
-        said = words.strip()
-        if not said:
-            continue
-        if is_rtl(said):
-            said = _sign_left(said)
-        elif not any(c.isalnum() for c in said):
-            said = said[::-1].translate(_MIRROR)     # a bracket alone, turned
-        t = Text((0.0, 0.0), said, size, "start", italic, weight)
-        laid.append((total, t))
-        total += t.width + (gap if words[-1:].isspace() else 0.0)
-    right = at[0] + (total / 2 if anchor == "middle" else 0.0 if anchor == "end" else total)
-    return [Text((right - before - t.width, at[1]), t.text, size, "start", italic, weight,
-                 t.sub) for before, t in laid]
+    runs.append((text[done:], "", ""))
+    return runs
 
 
 def _rich_width(text: str, size: float) -> float:
@@ -349,12 +288,12 @@ def draw_line_plot(title: str, x_label: str, y_label: str, series: Sequence[Seri
     for x, text in x_ticks:
         fig.line((px(x), bottom), (px(x), bottom - _TICK), "plot_tick")
         fig.line((px(x), plot_top), (px(x), plot_top + _TICK), "plot_tick")
-        fig.add(Text((px(x), bottom + 3.6), _sign_left(text), _NUMBER, "middle",
+        fig.add(Text((px(x), bottom + 3.6), sign_left(text), _NUMBER, "middle",
                      italic=False))
     for y, text in zip(yt, y_texts):
         fig.line((left, py(y)), (left + _TICK, py(y)), "plot_tick")
         fig.line((right, py(y)), (right - _TICK, py(y)), "plot_tick")
-        fig.add(Text((left - 1.8, py(y)), _sign_left(text), _NUMBER, "end", italic=False))
+        fig.add(Text((left - 1.8, py(y)), sign_left(text), _NUMBER, "end", italic=False))
     y = bottom + 10.0
     _add_text(fig, ((left + right) / 2, y), x_label, _LABEL, "middle")
 
@@ -369,7 +308,7 @@ def draw_line_plot(title: str, x_label: str, y_label: str, series: Sequence[Seri
                 fig.add(Path(pts, s.style))
     _draw_marks(fig, [(px(m.x), py(m.y), m.label) for m in marks], paper_runs, frame)
     for tx, ty, text in tags:
-        fig.add(Text((px(tx), py(ty)), _sign_left(text), _NOTE, "middle", italic=False))
+        fig.add(Text((px(tx), py(ty)), sign_left(text), _NOTE, "middle", italic=False))
 
     legend = [(s.style, s.label) for s in series] if len(series) > 1 else []
     if marks and mark_legend:

@@ -12,8 +12,9 @@ import re
 
 import svgwrite
 
-from .figure import FONT, STYLES, SUB_DROP, SUB_SIZE, Circle, Figure, Path, Style, Text, text_width
+from .figure import FONT, STYLES, SUB_DROP, SUB_SIZE, Circle, Figure, Path, Style, Text
 from .rtl import RTL_FONT, flip_anchor, is_rtl
+from .rtl_runs import lay_runs
 
 __all__ = ["to_svg"]
 
@@ -120,26 +121,10 @@ def _element(dwg: svgwrite.Drawing, item: Path | Circle | Text):
 
 def _runs(item: Text) -> list[Text]:
     """A right-to-left label with a subscript ("V_B به روش دوران شعاع") as runs of one
-    direction each, laid from its right end leftwards: the words before the symbol, the
-    symbol with its subscript, then the tail.
-
-    A subscript is a tspan, and cairosvg sets tspans left to right whatever the text's
-    direction; a browser would put the same tspans in bidirectional order. Runs of one
-    direction each are drawn alike by both.
-    """
-    x0, _, x1, _ = item.box()
+    direction each (:func:`~.rtl_runs.lay_runs`): the words before the symbol, the symbol
+    with its subscript (and a prime after it: F_i3′), then the tail."""
     symbol = item.text[-1:] if item.sub and not is_rtl(item.text[-1:]) else ""
-    mark = re.match("[′″ᵗⁿᶜ]*", item.tail).group()      # F_i3′: the prime is the symbol's
-    pieces = [(item.text[:len(item.text) - len(symbol)].strip(), "", ""),
-              (symbol, item.sub, mark), (item.tail[len(mark):].strip(), "", "")]
-    gap = text_width(" ", item.size)
-    runs, x = [], x1
-    for text, sub, tail in pieces:
-        if text and not sub and not re.search("[A-Za-z]", text) and not is_rtl(text):
-            text = "\u200f" + text        # neutrals only ("(", ":"): they read right to left
-        if text or sub:
-            run = Text((x, item.at[1]), text, item.size, "end", item.italic, item.weight, sub,
-                       tail)
-            runs.append(run)
-            x -= run.width + gap
-    return runs
+    mark = re.match("[′″ᵗⁿᶜ]*", item.tail).group()
+    runs = [(item.text[:len(item.text) - len(symbol)], "", ""), (symbol, item.sub, mark),
+            (item.tail[len(mark):], "", "")]
+    return lay_runs(item.at, runs, item.size, item.anchor, item.italic, item.weight)
