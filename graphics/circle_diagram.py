@@ -16,10 +16,11 @@ from shapely.geometry import LineString
 from shapely.geometry import Point as SPoint
 
 from ..constructions.centres import Centre
-from ..constructions.narration import Number, right_to_left, words
+from ..constructions.narration import Number, words
 from ..constructions.record import Kind, Slice
 
 from .figure import Circle, Figure, Path, Text, text_width
+from .rtl import reading
 from .labels import LabelPlacer, typeset
 from .symbols import badge_radius, draw_badge
 
@@ -147,8 +148,8 @@ def _caption(fig: Figure, head: str, primaries: int, found: list[Centre], n: int
     fig.shift(_MARGIN - x0 + (width - (x1 - x0) - 2 * _MARGIN) / 2, _MARGIN - y0)
     y = y1 - y0 + 2 * _MARGIN + 2.0
     # A right-to-left caption reads from the right margin, its columns from the right.
-    edge, anchor, way = ((width - _MARGIN, "end", -1.0) if right_to_left() else
-                         (_MARGIN, "start", 1.0))
+    reads = reading(width)
+    edge, anchor, way = reads.x(_MARGIN), reads.anchor, reads.way
     fig.add(Text((edge, y), head, 3.6, anchor, italic=False, weight="bold"))
     y += 5.2
     fig.add(Text((edge, y), count, 3.2, anchor, italic=False))

@@ -19,11 +19,11 @@ import re
 from collections.abc import Sequence
 from dataclasses import dataclass
 
-from ..constructions.narration import numerals, right_to_left
+from ..constructions.narration import numerals
 from ..constructions.scales import nice
 
 from .figure import Circle, Figure, Path, Text, text_width, wrap_text
-from .rtl import is_rtl
+from .rtl import is_rtl, reading
 from .rtl_runs import lay_runs, sign_left
 
 __all__ = ["Series", "PlotMark", "nice_ticks", "tick_text", "rich_text", "draw_line_plot",
@@ -252,8 +252,8 @@ def draw_line_plot(title: str, x_label: str, y_label: str, series: Sequence[Seri
     y_texts = [numerals(tick_text(v, step)) for v in yt]
     # Right to left (Persian), the headings, legend and notes start from the right margin;
     # the axes stay as they are, the input's angle running left to right.
-    rtl = right_to_left()
-    edge, anchor = (_WIDTH - _MARGIN, "end") if rtl else (_MARGIN, "start")
+    reads = reading(_WIDTH)
+    edge, anchor = reads.x(_MARGIN), reads.anchor
 
     fig = Figure(_WIDTH, 0.0)
     top = _MARGIN + _TITLE * 0.5
@@ -318,8 +318,7 @@ def draw_line_plot(title: str, x_label: str, y_label: str, series: Sequence[Seri
         w = 18.0 + _rich_width(label, _NOTE)
         if x + w > _WIDTH - _MARGIN + 6.0:
             x, y = _MARGIN, y + 6.5 if x == _WIDTH else y + 5.0
-        # Each sample from the reading edge: x is how far it has gone from there.
-        at = (lambda u: _WIDTH - u) if rtl else (lambda u: u)
+        at = reads.x            # each sample from the reading edge: x is how far it has gone
         if style == "plot_mark":
             fig.add(Circle((at(x + 5.0), y), _MARK_R, style))
             _add_text(fig, (at(x + 8.0), y), label, _NOTE, anchor)

@@ -14,9 +14,12 @@ carries shaped text: a browser would shape and reverse it a second time.
 from __future__ import annotations
 
 import re
+from dataclasses import dataclass
 from functools import cache
 
-__all__ = ["is_rtl", "RTL_FONT", "for_cairo", "visual", "joined"]
+from ..constructions.narration import right_to_left
+
+__all__ = ["is_rtl", "RTL_FONT", "for_cairo", "visual", "joined", "Reading", "reading"]
 
 RTL_FONT = "DejaVu Sans"
 """A face with the Persian glyphs, usually present wherever DejaVu is."""
@@ -86,3 +89,31 @@ def for_cairo(svg: str) -> str:
             if part.text and is_rtl(part.text):
                 part.text = visual(part.text)
     return ET.tostring(root, encoding="unicode")
+
+
+@dataclass(frozen=True)
+class Reading:
+    """Which way a figure's lines run across a page ``width`` wide: from the left margin,
+    or, in a right-to-left language (``rtl``), mirrored from the right one."""
+
+    width: float
+    rtl: bool
+
+    def x(self, at: float) -> float:
+        """Where ``at``, laid out from the left, stands on the page as the language reads."""
+        return self.width - at if self.rtl else at
+
+    @property
+    def anchor(self) -> str:
+        """The anchor of a line that starts at its reading edge."""
+        return "end" if self.rtl else "start"
+
+    @property
+    def way(self) -> float:
+        """+1 if the lines run rightwards, −1 if leftwards."""
+        return -1.0 if self.rtl else 1.0
+
+
+def reading(width: float) -> Reading:
+    """How the language being spoken reads a page ``width`` wide (:class:`Reading`)."""
+    return Reading(width, right_to_left())

@@ -9,11 +9,12 @@ from __future__ import annotations
 import re
 from collections.abc import Sequence
 
-from ..constructions.narration import (numerals, right_to_left, significant, spoken, unit_words,
+from ..constructions.narration import (numerals, significant, spoken, unit_words,
                                       words)
 from ..constructions.scales import Stated, nice
 
 from .figure import Figure, Path, Text, text_width, wrap_text
+from .rtl import reading
 
 __all__ = ["nice_per_cm", "scale_text", "paper_ratio", "bar_room", "draw_scale_bar", "number_text",
            "draw_caption"]
@@ -192,19 +193,19 @@ def draw_caption(fig: Figure, heading: str, lines: Sequence[str], *, per_cm: flo
              for line in wrap_text(note, 3.0, max(width - 2 * margin, _NOTE_COLUMN))]
     width = max(width, max([text_width(n, 3.0) for n in notes], default=0.0) + 2 * margin)
     fig.shift((width - (x1 - x0) - 2 * margin) / 2, 0.0)
-    rtl = right_to_left()
+    reads = reading(width)
     # The reading edge a text line starts from: the left margin, or the right one.
-    edge, anchor, way = (width - margin, "end", -1.0) if rtl else (margin, "start", 1.0)
+    edge, anchor, way = reads.x(margin), reads.anchor, reads.way
     top = y1 - y0 + 2 * margin
     y = top + 3.0
     fig.add(Text((edge, y), head.text, head.size, anchor, False, "bold", head.sub, head.tail))
     for text in lines:
         y += 5.2
         fig.add(Text((edge, y), text, 3.2, anchor, italic=False))
-    bar_x = margin if rtl else width - margin - right
+    bar_x = margin if reads.rtl else width - margin - right
     for k, (text, (_, per, u)) in enumerate(zip(texts, scales)):
-        fig.add(Text((bar_x + right if rtl else bar_x, top + 3.0 + 13.0 * k), text, 3.2, anchor,
-                     italic=False))
+        x = bar_x + right if reads.rtl else bar_x
+        fig.add(Text((x, top + 3.0 + 13.0 * k), text, 3.2, anchor, italic=False))
         draw_scale_bar(fig, (bar_x, top + 8.0 + 13.0 * k), per, u)
     y = max(y + 5.2, top + 15.0 + 13.0 * (len(scales) - 1))
     for row in _legend_rows(legend, width - 2 * margin):

@@ -14,9 +14,8 @@ from __future__ import annotations
 import re
 from collections.abc import Sequence
 
-from ..constructions.narration import right_to_left
 from .figure import Figure, Path, Text, text_width, wrap_text
-from .rtl import is_rtl
+from .rtl import is_rtl, reading
 
 __all__ = ["draw_train_table"]
 
@@ -89,14 +88,8 @@ def draw_train_table(title: str, heads: Sequence[str], rows: Sequence[tuple[str,
     right = lefts[-1] + widths[-1] if heads else _MARGIN + first
     width = max(right, 150.0, _MARGIN + 1.08 * _bold_width(title, 4.2)) - _MARGIN
     page = round(max(right, _MARGIN + width) + _MARGIN, 1)
-    rtl = right_to_left()
-    start = "end" if rtl else "start"
-
-    def x(at: float) -> float:
-        """Where ``at`` (laid out left to right) stands on the page: mirrored in a
-        right-to-left language."""
-        return page - at if rtl else at
-
+    reads = reading(page)
+    start, x = reads.anchor, reads.x
     fig = Figure(0.0, 0.0, title=title)
     y = _MARGIN + 4.0
     fig.add(Text((x(_MARGIN), y), title, 4.2, start, False, "bold"))

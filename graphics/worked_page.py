@@ -22,7 +22,7 @@ from ..constructions.narration import right_to_left, words
 
 from .figure import Figure, Path, Text, text_width, wrap_text
 from .labels import typeset
-from .rtl import is_rtl
+from .rtl import is_rtl, reading
 
 __all__ = ["compose_worked_page", "compose_worked_sheets", "holds_panel", "A3"]
 
@@ -177,10 +177,10 @@ def _sheet(title: str, panels: Sequence[Figure], results: Figure | None,
     spots, (w, h) = _choose_layout(sizes, foot, _room(size))
     page = Figure(round(max(size[0], w + 2 * _MARGIN), 1),
                   round(max(size[1], top + h + _MARGIN), 1), title=title)
-    rtl = right_to_left()
-    page.add(Text((page.width - _MARGIN if rtl else _MARGIN, _MARGIN + _TITLE / 2), title, _TITLE,
-                  "end" if rtl else "start", italic=False, weight="bold"))
-    if rtl:     # read from the right: the first panel stands at the top right
+    reads = reading(page.width)
+    page.add(Text((reads.x(_MARGIN), _MARGIN + _TITLE / 2), title, _TITLE, reads.anchor,
+                  italic=False, weight="bold"))
+    if reads.rtl:     # read from the right: the first panel stands at the top right
         spots = [(w - x - p[0], y) for (x, y), p in zip(spots, sizes + [foot])]
     for panel, (x, y) in zip(panels, spots):
         _place_panel(page, panel, (_MARGIN + x, top + y), frame=True)
@@ -302,7 +302,8 @@ def _draw_results(table: Sequence[Sequence[str]], notes: Sequence[str]) -> Figur
     widths = _column_widths(table)
     fig.width = max([sum(widths) + _PAD * max(len(widths) - 1, 0)]
                     + [text_width(n, _NOTE) for n in lines])
-    edge, anchor = (fig.width, "end") if right_to_left() else (0.0, "start")
+    reads = reading(fig.width)
+    edge, anchor = reads.x(0.0), reads.anchor
     for line in lines:
         fig.add(Text((edge, y + 0.7 * _NOTE), line, _NOTE, anchor, italic=False))
         y += 1.4 * _NOTE
