@@ -364,7 +364,7 @@ def _title(name: str, what: str, position=None) -> str:
     """A figure's title in the language being spoken: the mechanism's name (as the file
     writes it), what the figure shows ("V_B by radius rotation") and where, if the solution
     has several positions to tell apart."""
-    what = _heading(what, spoken())
+    what = heading_in(what, spoken())
     if position is None:
         return words("{name}: {what}", name=name, what=what)
     return words("{name}: {what} at {where}", name=name, what=what, where=position.label)
@@ -431,7 +431,7 @@ def _worked_page(sol: Solution, answers) -> _Sketch:
         if not shown.steps(panel):           # nothing asked of it: the pole stands alone
             shown = slice(c, [poly.pole], base=asm.position_steps)
         drawn.append(dict(panel=panel, scale=poly.scale, units=m.units,
-                          title=_heading(heading, spoken()),
+                          title=heading_in(heading, spoken()),
                           notes=notes_under(sol, panel), per_cm=stated))
         panels.append((heading, panel, shown))
     table = [tuple(words(h) for h in ("quantity", "method", "construction", "analytic",
@@ -501,7 +501,7 @@ def _overall_markdown(ex: Exercise, overall: Overall, figures: list[SolutionFigu
     lines = ["# " + narrate(phrase("md.whole"), lang), ""]
     lp = drawn_limits(overall.work) if overall.work.has("limits") else None
     for f in figures if lp is not None else ():
-        lines += [f"## {_heading(f.heading, lang)} (`{f.stem}.svg`)", ""]
+        lines += [f"## {heading_in(f.heading, lang)} (`{f.stem}.svg`)", ""]
         for number, step in f.shown.numbered():
             lines.append(f"{number}. {narrate(step, lang)}")
         lines += ["", _time_ratio_words(ex.mechanism, lp, lang), ""]
@@ -551,11 +551,6 @@ def figure_parts(sol: Solution) -> list[tuple[str, str, list]]:
 
 
 def heading_in(text: str, lang: str) -> str:
-    """A figure's or a part's heading in ``lang`` (see :func:`_heading`)."""
-    return _heading(text, lang)
-
-
-def _heading(text: str, lang: str) -> str:
     """A figure's or a part's heading in ``lang`` (English as it is): "V_B by radius
     rotation" is the quantity and its method."""
     what, by, method = text.partition(" by ")
@@ -589,7 +584,7 @@ def _steps_markdown(sol: Solution, figures: list[SolutionFigure], *, heading: bo
                 continue
             # A part drawn in no figure of its own (the inertia loads' images on the
             # acceleration polygon) names no file.
-            title = _heading(title, lang)
+            title = heading_in(title, lang)
             lines += [f"## {title}" if elsewhere else f"## {title} (`{f.stem}.svg`)", ""]
             lines += [f"{number}. {narrate(step, lang)}" for number, step in numbered]
             lines.append("")

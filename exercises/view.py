@@ -24,7 +24,7 @@ from typing import Any
 from ..constructions import geometry as g
 from ..constructions.acceleration_polygon import draw_acceleration_polygon
 from ..constructions.assembly import assemble
-from ..constructions.centres import locate_centres
+from ..constructions.centres import locate_centres, pair_label
 from ..constructions.checks import tolerance
 from ..constructions.errors import TarsimError
 from ..constructions.measures import Angle, Dimension
@@ -233,13 +233,9 @@ def _centre_names(sol) -> list[dict[str, Any]]:
     out = []
     for c in cs.primaries + cs.secondaries:
         i, j = c.pair
-        lines = [[_label(i, k), _label(k, j)] for k in c.triangles if k is not None][:2]
+        lines = [[pair_label(i, k), pair_label(k, j)] for k in c.triangles if k is not None][:2]
         out.append({"label": c.label, "lines": lines})
     return out
-
-
-def _label(i: int, j: int) -> str:
-    return f"I{min(i, j)}{max(i, j)}"
 
 
 def _figure(stem: str, heading: str, parts) -> dict[str, Any]:
