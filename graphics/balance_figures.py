@@ -81,7 +81,9 @@ def _reading(fig: Figure, at: tuple[float, float], reading: tuple[str, str, str]
     """The closing side's size: its symbol (text and subscript) and the words after it.
 
     Right-to-left words after a symbol are set as two runs, the symbol at the right and
-    the words to its left, so the symbol reads first and keeps its brackets whole.
+    the words to its left, so the symbol reads first and keeps its brackets whole. (The
+    shared runs, :func:`~.rtl_runs.lay_runs`, would set "(m r)_A = ۰٫۳" apart as a formula,
+    its unit on the far side of the symbol; here the size reads on into its unit.)
     """
     text, sub, tail = reading
     if not (right_to_left() and sub and tail):
