@@ -19,6 +19,8 @@ import re
 from collections.abc import Sequence
 from dataclasses import dataclass
 
+import numpy as np
+
 from ..constructions.narration import numerals
 from ..constructions.scales import nice
 
@@ -376,20 +378,19 @@ def _draw_marks(fig: Figure, marks: list[tuple[float, float, str]],
     for x, y, _ in marks:
         fig.add(Circle((x, y), _MARK_R, "plot_mark"))
     h = _MARK_TEXT
+    segments = _segments(runs)
+    ring = np.repeat(_RINGS, len(_WAYS))
+    dx, dy = np.tile(np.array(_WAYS).T, len(_RINGS))
     for x, y, label in marks:
         if not label:
             continue
         w = _rich_width(label, _MARK_TEXT)
-        best, best_cost, best_ring = None, math.inf, 1.0
-        for ring in (1.0, 1.8, 2.6, 3.6, 4.8, 6.2):
-            for dx, dy in ((0.0, -1.0), (1.0, -0.8), (1.0, 0.8), (0.0, 1.0), (-1.0, -0.8),
-                           (-1.0, 0.8), (1.0, 0.0), (-1.0, 0.0)):
-                cx = x + dx * (ring * (_MARK_R + 1.4) + w / 2)
-                cy = y + dy * (ring * (_MARK_R + 0.9) + h / 2)
-                b = (cx - w / 2 - 0.3, cy - h / 2 - 0.3, cx + w / 2 + 0.3, cy + h / 2 + 0.3)
-                cost = _overlap(b, taken, runs, frame) + 0.05 * ring
-                if cost < best_cost:
-                    best, best_cost, best_ring = b, cost, ring
+        cx = x + dx * (ring * (_MARK_R + 1.4) + w / 2)
+        cy = y + dy * (ring * (_MARK_R + 0.9) + h / 2)
+        boxes = np.stack([cx - w / 2 - 0.3, cy - h / 2 - 0.3, cx + w / 2 + 0.3, cy + h / 2 + 0.3],
+                         axis=1)
+        k = int(np.argmin(_overlaps(boxes, taken, segments, frame) + 0.05 * ring))
+        best, best_ring = tuple(boxes[k].tolist()), float(ring[k])
         cx, cy = (best[0] + best[2]) / 2, (best[1] + best[3]) / 2
         if best_ring > 1.0:
             ex = min(max(x, best[0]), best[2])
@@ -404,32 +405,61 @@ def _draw_marks(fig: Figure, marks: list[tuple[float, float, str]],
         taken.append(best)
 
 
-def _overlap(b: Box, taken: list[Box], runs: list[tuple[Point, ...]], frame: Box) -> float:
-    """How badly box ``b`` collides: with placed boxes, the curves, or the frame's edge."""
-    cost = 0.0
-    if b[0] < frame[0] or b[1] < frame[1] or b[2] > frame[2] or b[3] > frame[3]:
-        cost += 10.0
-    cost += sum(5.0 for t in taken if b[0] < t[2] and t[0] < b[2] and b[1] < t[3] and t[1] < b[3])
-    for r in runs:
-        for p, q in zip(r, r[1:]):
-            if _segment_hits(p, q, b):
-                cost += 1.0
-                break
+_RINGS = (1.0, 1.8, 2.6, 3.6, 4.8, 6.2)
+"""How far out a mark's label is tried, in steps of the circle's radius and a gap."""
+
+_WAYS = ((0.0, -1.0), (1.0, -0.8), (1.0, 0.8), (0.0, 1.0), (-1.0, -0.8), (-1.0, 0.8),
+         (1.0, 0.0), (-1.0, 0.0))
+"""The directions a mark's label is tried in, on each ring, first preferred first."""
+
+
+def _segments(runs: list[tuple[Point, ...]]) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The curves' segments: their starts, their ends (a row each) and the run of each."""
+    p = [r[:-1] for r in runs if len(r) > 1]
+    q = [r[1:] for r in runs if len(r) > 1]
+    if not p:
+        return np.empty((0, 2)), np.empty((0, 2)), np.empty(0, dtype=int)
+    which = np.repeat(np.arange(len(p)), [len(r) for r in p])
+    return np.concatenate(p), np.concatenate(q), which
+
+
+def _overlaps(boxes: np.ndarray, taken: list[Box], segments, frame: Box) -> np.ndarray:
+    """How badly each of ``boxes`` collides: 10 past the frame's edge, 5 for each placed box
+    it meets, and 1 for each curve it crosses."""
+    b0, b1, b2, b3 = boxes.T
+    cost = 10.0 * ((b0 < frame[0]) | (b1 < frame[1]) | (b2 > frame[2]) | (b3 > frame[3]))
+    if taken:
+        t = np.asarray(taken)
+        cost += 5.0 * ((b0[:, None] < t[:, 2]) & (t[:, 0] < b2[:, None])
+                       & (b1[:, None] < t[:, 3]) & (t[:, 1] < b3[:, None])).sum(axis=1)
+    p, q, which = segments
+    # Only the segments whose bounds meet those of all the boxes can meet one.
+    near = ~_apart(p, q, b0.min(), b1.min(), b2.max(), b3.max())
+    if near.any():
+        hits = _segments_hit(p[near], q[near], boxes)
+        for run in np.unique(which[near]):
+            cost += hits[:, which[near] == run].any(axis=1)
     return cost
 
 
-def _segment_hits(p: Point, q: Point, b: Box) -> bool:
-    """Whether the segment pq meets the box (Liang–Barsky clipping)."""
-    if max(p[0], q[0]) < b[0] or min(p[0], q[0]) > b[2] or \
-            max(p[1], q[1]) < b[1] or min(p[1], q[1]) > b[3]:
-        return False
-    lo, hi = 0.0, 1.0
-    d = (q[0] - p[0], q[1] - p[1])
+def _apart(p: np.ndarray, q: np.ndarray, x0, y0, x1, y1) -> np.ndarray:
+    """Whether each segment pq lies wholly to one side of the box x0 y0 x1 y1 (or of each
+    box, their bounds given as columns)."""
+    return ((np.maximum(p[:, 0], q[:, 0]) < x0) | (np.minimum(p[:, 0], q[:, 0]) > x1)
+            | (np.maximum(p[:, 1], q[:, 1]) < y0) | (np.minimum(p[:, 1], q[:, 1]) > y1))
+
+
+def _segments_hit(p: np.ndarray, q: np.ndarray, boxes: np.ndarray) -> np.ndarray:
+    """Whether each segment pq meets each box (a row per box), by Liang–Barsky clipping."""
+    lo = np.zeros((len(boxes), len(p)))
+    hi = np.ones((len(boxes), len(p)))
+    meets = ~_apart(p, q, *(boxes[:, k, None] for k in range(4)))
     for k in (0, 1):
-        if abs(d[k]) < 1e-12:
-            if not b[k] <= p[k] <= b[k + 2]:
-                return False
-            continue
-        t0, t1 = (b[k] - p[k]) / d[k], (b[k + 2] - p[k]) / d[k]
-        lo, hi = max(lo, min(t0, t1)), min(hi, max(t0, t1))
-    return lo <= hi
+        d = q[:, k] - p[:, k]
+        flat = np.abs(d) < 1e-12           # along the other axis: inside its band, or not
+        meets &= ~flat | ((boxes[:, k, None] <= p[:, k]) & (p[:, k] <= boxes[:, k + 2, None]))
+        d = np.where(flat, 1.0, d)
+        t0, t1 = (boxes[:, k, None] - p[:, k]) / d, (boxes[:, k + 2, None] - p[:, k]) / d
+        lo = np.where(flat, lo, np.maximum(lo, np.minimum(t0, t1)))
+        hi = np.where(flat, hi, np.minimum(hi, np.maximum(t0, t1)))
+    return meets & (lo <= hi)

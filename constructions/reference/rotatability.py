@@ -102,6 +102,7 @@ def grashof_class(mech: Mechanism) -> GrashofResult | None:
 
 
 _PHI = np.linspace(0.0, 2.0 * math.pi, SAMPLES, endpoint=False)
+_COS, _SIN = np.cos(_PHI), np.sin(_PHI)
 
 
 def turns_fully(ground: float, crank: float, coupler: float, rocker: float) -> bool:
@@ -115,10 +116,20 @@ def turns_fully(ground: float, crank: float, coupler: float, rocker: float) -> b
     >>> turns_fully(300, 100, 250, 200), turns_fully(300, 200, 250, 100)
     (True, False)
     """
-    lo, hi = abs(coupler - rocker), coupler + rocker
-    slack = 1e-12 * (ground + crank + coupler + rocker)
-    d = np.hypot(crank * np.cos(_PHI) - ground, crank * np.sin(_PHI))
-    return bool(np.all((d >= lo - slack) & (d <= hi + slack)))
+    return bool(_turn_each([ground], [crank], [coupler], [rocker])[0])
+
+
+def _turn_each(ground, crank, coupler, rocker) -> np.ndarray:
+    """:func:`turns_fully` of many four-bars at once, one for each row of the lengths."""
+    g, a, b, c = (np.asarray(v, dtype=float) for v in (ground, crank, coupler, rocker))
+    lo, hi = np.abs(b - c), b + c
+    slack = 1e-12 * (g + a + b + c)
+    # Every sampled diagonal lies within the bounds exactly when the shortest and the
+    # longest do; four-bars that share ground and crank share their diagonals.
+    if (g == g[0]).all() and (a == a[0]).all():
+        g, a = g[:1], a[:1]
+    d = np.hypot(a[:, None] * _COS - g[:, None], a[:, None] * _SIN)
+    return (d.min(axis=1) >= lo - slack) & (d.max(axis=1) <= hi + slack)
 
 
 def class_by_rotation(lengths) -> str:
@@ -180,6 +191,10 @@ STEP = 1.01
 length could lie unseen between two of them."""
 
 
+_BATCH = 64
+"""Lengths of the scan tested at once: the class mostly changes within the first few."""
+
+
 def length_range_by_rotation(lengths, index: int) -> tuple[float, float | None]:
     """The same interval, found on the turning test alone.
 
@@ -195,30 +210,39 @@ def length_range_by_rotation(lengths, index: int) -> tuple[float, float | None]:
     x0 = lengths[index]
     total = sum(lengths)
 
-    def kind(x: float) -> tuple[str, bool, bool]:
-        ls = [x if i == index else v for i, v in enumerate(lengths)]
-        g, a, b, c = ls
-        return class_by_rotation(ls), turns_fully(g, a, b, c), turns_fully(g, c, b, a)
+    def kinds(xs: list[float]) -> np.ndarray:
+        """Which links turn fully with the length made each of ``xs``, as a code: 1 the
+        input, 2 the output, 4 the coupler about the input's pivot when neither does (a
+        double-rocker, not a triple-rocker). Equal codes are one class, the same links
+        cranks."""
+        ls = np.tile(np.asarray(lengths, dtype=float), (len(xs), 1))
+        ls[:, index] = xs
+        g, a, b, c = ls.T
+        crank, rocker = _turn_each(g, a, b, c), _turn_each(g, c, b, a)
+        return crank + 2 * rocker + 4 * (_turn_each(a, b, c, g) & ~crank & ~rocker)
 
-    here = kind(x0)
+    here = kinds([x0])[0]
 
     def edge(inside: float, outside: float) -> float:
         for _ in range(60):
             mid = 0.5 * (inside + outside)
-            if kind(mid) == here:
+            if kinds([mid])[0] == here:
                 inside = mid
             else:
                 outside = mid
         return 0.5 * (inside + outside)
 
     def scan(ratio: float, stop) -> float | None:
-        """The last length of the class before the first one out of it, or None."""
-        inside = x0
-        while not stop(inside):
-            out = inside * ratio
-            if kind(out) != here:
-                return edge(inside, out)
-            inside = out
+        """The last length of the class before the first one out of it, or None: the
+        lengths stepped out to ``stop``, tested a batch at a time."""
+        steps = [x0]
+        while not stop(steps[-1]):
+            steps.append(steps[-1] * ratio)
+        for k in range(1, len(steps), _BATCH):
+            out = np.flatnonzero(kinds(steps[k:k + _BATCH]) != here)
+            if len(out):
+                j = k + int(out[0])
+                return edge(steps[j - 1], steps[j])
         return None
 
     lo = scan(1.0 / STEP, lambda x: x < 1e-9 * total)
