@@ -13,6 +13,8 @@ import pytest
 from tarsim.exercises.catalog import load
 from tarsim.exercises.solution_files import WorkedSolution, solve_worked
 
+from tests.browser import chromium
+
 
 @pytest.fixture(scope="session")
 def solved():
@@ -36,3 +38,12 @@ def files(solved):
             cache[exercise_id] = solved(exercise_id).files()
         return cache[exercise_id]
     return get
+
+
+@pytest.fixture(scope="module")
+def browser():
+    """A headless chromium for a module's browser tests (such a module is one xdist group,
+    run on one worker). It is closed with its module: while it runs, its driver's thread
+    keeps the figures from being drawn on forked workers."""
+    with chromium() as b:
+        yield b

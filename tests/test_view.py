@@ -22,32 +22,27 @@ from tarsim.exercises.cli import cli
 from tarsim.exercises.exercise_file import parse_exercise
 from tarsim.exercises.results_json import results_json
 from tarsim.exercises.solution import solve_positions
-from tarsim.exercises.solution_files import solve_worked
 from tarsim.exercises.view import view_data
 from tarsim.graphics.view_page import ViewPage, view_html
 
-from tests.browser import chromium
 from tests.common import four_bar_toml
 
-pytestmark = pytest.mark.slow
+# One worker runs the module (pytest-xdist --dist loadgroup), so it opens chromium and
+# makes its pages once.
+pytestmark = [pytest.mark.slow, pytest.mark.xdist_group("view")]
 
 
 @pytest.fixture(scope="module")
-def shaper(tmp_path_factory):
-    """The crank-shaper's page written by the command, and its steps.md and results.json
-    as `tarsim solve` writes them, in both languages."""
+def shaper(tmp_path_factory, solved):
+    """The crank-shaper's page written by the command, a frame every 2.5° (every angle the
+    tests turn to; the default 0.5° is the notebook test's), and its steps.md as `tarsim
+    solve` writes it, in both languages."""
     out = tmp_path_factory.mktemp("view")
     page = out / "shaper.html"
-    result = CliRunner().invoke(cli, ["view", "crank-shaper", "-o", str(page)])
+    result = CliRunner().invoke(cli, ["view", "crank-shaper", "--step", "2.5", "-o", str(page)])
     assert result.exit_code == 0, result.output
-    worked = solve_worked(load("crank-shaper"))
+    worked = solved("crank-shaper")
     return page, {lang: worked.steps(lang) for lang in ("en", "fa")}
-
-
-@pytest.fixture(scope="module")
-def browser():
-    with chromium() as b:
-        yield b
 
 
 @pytest.fixture()
@@ -68,7 +63,7 @@ def test_the_page_is_one_file_that_asks_for_nothing(page, shaper):
     html = shaper[0].read_text(encoding="utf-8")
     assert not re.search(r"""(src|href)\s*=\s*["']?(https?:|//)""", html)
     assert "Content-Security-Policy" in html and "default-src 'none'" in html
-    page.evaluate("tarsimView.setFrame(200)")
+    page.evaluate("tarsimView.setFrame(40)")
     page.click("#next")
     assert page.requests == [shaper[0].as_uri()]          # the page itself, and no more
 
@@ -87,9 +82,19 @@ def _md_steps(md: str, position: str) -> dict[str, list[tuple[int, str]]]:
     return parts
 
 
+_SHOWN = """() => ({
+    current: [...document.querySelectorAll('#steps li.current')].map(li => li.innerText),
+    done: document.querySelectorAll('#steps li.done').length,
+    marks: document.querySelectorAll('svg .step.current').length})"""
+"""What the page shows of the steps after a click, read in one trip to the browser: the
+current step's text (as the reader sees it), how many are done, and how many marks the
+figure draws as current."""
+
+
 @pytest.mark.parametrize("lang", ["en", "fa"])
 def test_every_step_is_steps_md_s_and_is_highlighted_in_turn(page, shaper, lang):
-    """Click through each figure from before its first step to its last: the list's current
+    """Step through each figure from before its first step to its last, by the next button
+    and then the arrow key: the list's current
     step has steps.md's number and words, the earlier ones are dimmed, and the figure
     marks what the step draws as current."""
     md = _md_steps(shaper[1][lang], "At θ2 = 90°" if lang == "en" else "در θ2 = 90°")
@@ -111,13 +116,16 @@ def test_every_step_is_steps_md_s_and_is_highlighted_in_turn(page, shaper, lang)
         assert len(mine) == len(want), stem
         page.click("#first")
         for k, ((n, said), (p, n_page)) in enumerate(zip(want, mine)):
-            page.click("#next")
-            current = page.locator("#steps li.current")
-            assert current.count() == 1
-            assert current.inner_text().split(maxsplit=1) == [f"{n}.", said]
-            assert n_page == n and page.locator("#steps li.done").count() == k
+            if k == 0:
+                page.click("#next")
+            else:                               # the arrow key steps as the button does
+                page.keyboard.press("ArrowRight")
+            shown = page.evaluate(_SHOWN)
+            assert len(shown["current"]) == 1
+            assert shown["current"][0].split(maxsplit=1) == [f"{n}.", said]
+            assert n_page == n and shown["done"] == k
             draws = any(st["draw"] for st in parts[p]["steps"] if st["n"] == n)
-            assert (page.locator("svg .step.current").count() > 0) == draws, (stem, n)
+            assert (shown["marks"] > 0) == draws, (stem, n)
             clicked += 1
     assert clicked > 50
 
@@ -208,7 +216,7 @@ def test_a_notebook_shows_the_page_in_a_frame_of_its_own():
 def test_layers_zoom_and_the_downloaded_frame(page):
     """Each layer hides what it names; the wheel zooms about the pointer; the download is
     the frame shown, as an SVG file with its joints and polygons."""
-    page.evaluate("tarsimView.setFrame(100)")
+    page.evaluate("tarsimView.setFrame(20)")      # θ2 = 90° − 20 × 2.5°
     for layer, drawn in (("kennedy", "#space .kennedy"), ("labels", "#space text.name")):
         assert page.locator(drawn).count() > 0
         page.uncheck(f"[data-layer='{layer}']")
