@@ -62,6 +62,12 @@ class SolutionFigure:
     stem: str
     heading: str
     figure: Figure
+    svg: str
+    """The figure as an SVG document, written where it was drawn."""
+    sheet_svgs: tuple[str, ...]
+    """Each of its sheets as one, when it runs over several (else none)."""
+    pdf_pages: tuple[bytes, ...]
+    """Its PDF, a one-page document a sheet, when it was drawn to be written with PDFs."""
     shown: Slice | None
     """What the figure shows of the space diagram's construction, narrated in steps.md."""
     panels: tuple[tuple[str, Panel, Slice], ...] = ()
@@ -104,15 +110,21 @@ class WorkedSolution:
     def pages(self) -> list[SolutionFigure]:
         """Every figure in order: the whole mechanism's first, then each position's (their
         stems ending in the position's slug when there are several: ``worked-t-2.34s``)."""
+        return self._drawn(pdf=False)
+
+    def _drawn(self, *, pdf: bool) -> list[SolutionFigure]:
+        """The figures drawn, each written as SVG and (with ``pdf``) converted to PDF by the
+        worker that drew it: a figure's whole making in one job, shared out over the cores
+        at once."""
         sketches = _overall_figures(self.exercise, self.overall)
         for sol in self.positions:
             suffix = f"-{sol.position.slug}" if len(self.positions) > 1 else ""
             sketches += _figures(sol, suffix)
         lang = spoken()       # each worker draws in the language the solution is asked in
-        figures = draw_each([partial(_drawn_in, lang, s.draw) for s in sketches],
-                            [s.weight for s in sketches])
-        return [SolutionFigure(s.stem, s.heading, fig, s.shown, s.panels, s.owner)
-                for s, fig in zip(sketches, figures)]
+        drawn = draw_each([partial(_drawn_in, lang, s.draw, pdf) for s in sketches],
+                          [s.weight for s in sketches])
+        return [SolutionFigure(s.stem, s.heading, *made, s.shown, s.panels, s.owner)
+                for s, made in zip(sketches, drawn)]
 
     @property
     def results(self) -> dict:
@@ -150,7 +162,7 @@ class WorkedSolution:
     def files(self, lang: str | None = None) -> dict[str, str]:
         """Every file as text, by name: each figure's SVG, solution.svg with all of them,
         steps.md (in ``lang``) and results.json."""
-        files = {f"{f.stem}.svg": to_svg(f.figure) for f in self.pages}
+        files = {f"{f.stem}.svg": f.svg for f in self.pages}
         if self.pages:
             files["solution.svg"] = to_svg(stack_pages([f.figure for f in self.pages]))
         files["steps.md"] = self.steps(lang)
@@ -170,7 +182,14 @@ class WorkedSolution:
             If the folder cannot be made or written, holds a file of one of these names
             that tarsim did not write, or PDF is asked and libcairo2 is missing.
         """
-        return write_solution(self.files(lang), folder, pdf=pdf, sheets=self.sheets())
+        if pdf and "pages" not in self.__dict__:
+            missing = cairo_missing()     # loaded once, before the workers are forked
+            if missing:
+                raise RenderError(missing)
+            self.pages = self._drawn(pdf=True)
+        made = {f"{f.stem}.pdf": list(f.pdf_pages) for f in self.pages if f.pdf_pages}
+        return write_solution(self.files(lang), folder, pdf=pdf, sheets=self.sheets(),
+                              made=made)
 
     def view(self, step_deg: float = 0.5):
         """The interactive page of this exercise (``tarsim view``): its ``.save(path)``
@@ -196,8 +215,7 @@ class WorkedSolution:
     def sheets(self) -> dict[str, list[str]]:
         """Each figure that runs over several sheets: its PDF's name, and the SVG of each
         sheet, a page each."""
-        return {f"{f.stem}.pdf": [to_svg(s) for s in f.figure.sheets]
-                for f in self.pages if f.figure.sheets}
+        return {f"{f.stem}.pdf": list(f.sheet_svgs) for f in self.pages if f.sheet_svgs}
 
 
 def solve_worked(ex: Exercise) -> WorkedSolution:
@@ -226,14 +244,16 @@ def solve_all(ex: Exercise) -> tuple[list[Solution], Overall, dict[str, str]]:
 
 
 def write_solution(files: dict[str, str], out_dir: str | Path, *, pdf: bool = True,
-                   sheets: dict[str, list[str]] | None = None) -> list[Path]:
+                   sheets: dict[str, list[str]] | None = None,
+                   made: dict[str, list[bytes]] | None = None) -> list[Path]:
     """Write the rendered files into ``out_dir`` (made if missing), with a PDF per figure,
     all or nothing (see :func:`~tarsim.graphics.export.write_folder`).
 
     ``solution.pdf`` has those figures as its pages, in order; a figure that runs over
     several sheets (``sheets``: its PDF's name and each sheet's SVG) has a page a sheet.
-    The previous solution's files in the folder are replaced whole; a file there tarsim
-    did not write is kept.
+    A figure whose pages are already ``made`` (its PDF's name: a one-page PDF a sheet) is
+    not converted again. The previous solution's files in the folder are replaced whole;
+    a file there tarsim did not write is kept.
 
     Raises
     ------
@@ -244,30 +264,35 @@ def write_solution(files: dict[str, str], out_dir: str | Path, *, pdf: bool = Tr
     """
     pdfs = {}
     if pdf:
-        sheets = sheets or {}
+        sheets, made = sheets or {}, made or {}
         figures = {name[:-4] + ".pdf": sheets.get(name[:-4] + ".pdf", [text])
                    for name, text in files.items()
                    if name.endswith(".svg") and name != "solution.svg"}
-        pages = [text for texts in figures.values() for text in texts]
-        if pages:
+        todo = [text for name, texts in figures.items() if name not in made for text in texts]
+        if figures:
             missing = cairo_missing()   # loaded here once, for every worker to inherit
             if missing:
                 raise RenderError(missing)
-            made = draw_each([partial(svg_to, text, "pdf") for text in pages],
-                             [len(text) for text in pages])   # the longest first
-            k = 0
+            converted = iter(draw_each([partial(svg_to, text, "pdf") for text in todo],
+                                       [len(text) for text in todo]))   # the longest first
+            pages = []
             for name, texts in figures.items():
-                one = made[k:k + len(texts)]
+                one = made.get(name) or [next(converted) for _ in texts]
                 pdfs[name] = one[0] if len(one) == 1 else pdf_pages(one)
-                k += len(texts)
-            pdfs["solution.pdf"] = pdf_pages(made)
+                pages += one
+            pdfs["solution.pdf"] = pdf_pages(pages)
     return write_folder({**files, **pdfs}, out_dir)
 
 
-def _drawn_in(lang: str, draw: Callable[[], Figure]) -> Figure:
-    """``draw()`` with its words in ``lang`` (a forked worker is told, not left to inherit)."""
+def _drawn_in(lang: str, draw: Callable[[], Figure], pdf: bool
+              ) -> tuple[Figure, str, tuple[str, ...], tuple[bytes, ...]]:
+    """``draw()`` with its words in ``lang`` (a forked worker is told, not left to inherit);
+    the figure written as SVG, whole and a sheet at a time; and with ``pdf``, a one-page
+    PDF of each sheet (of the figure, if it is one)."""
     with speaking(lang):
-        return draw()
+        fig = draw()
+        svg, sheets = to_svg(fig), tuple(to_svg(sheet) for sheet in fig.sheets)
+    return fig, svg, sheets, tuple(svg_to(text, "pdf") for text in (sheets or [svg]) if pdf)
 
 
 class ChapterFiles:
