@@ -9,8 +9,10 @@ Medians of ``--repeat`` runs on this machine, stated at the top with its CPU and
   ``tarsim solve four-bar --no-pdf``, and ``tarsim solve NAME`` with its PDFs for every
   bundled exercise;
 - in one process, for every bundled exercise: the solve (constructions and checks), the
-  drawing of its figures on every core and on one (their ratio, taken in the same run),
-  and the SVG and PDF files;
+  drawing of its figures with each one's SVG on every core and on one (their ratio, taken
+  in the same run), solution.svg with steps.md and results.json, and every file written
+  with its PDF after the solve as ``tarsim solve`` makes them (each figure drawn, written
+  and converted by one job);
 - each worked page (space diagram, polygons, table): its layout and SVG after the solve,
   and its PDF.
 """
@@ -72,8 +74,8 @@ def wall(command: list[str], repeat: int) -> float:
 
 
 def in_process(name: str, repeat: int) -> dict[str, float]:
-    """Median seconds to solve ``name``, draw its figures (every core, one core), make their
-    SVG text, and write the folder with its PDFs."""
+    """Median seconds to solve ``name``, draw its figures with their SVG (every core, one
+    core), make the rest of its text files, and make and write every file with PDFs."""
     ex = tarsim.load(name)
     worked = tarsim.solve(ex)
     out = {"solve": median_time(lambda: tarsim.solve(ex), repeat)}
@@ -87,11 +89,11 @@ def in_process(name: str, repeat: int) -> dict[str, float]:
         out["draw, 1 core"] = median_time(draw, repeat) - out["solve"]
     finally:
         workers._cores = cores
-    files = worked.files()
     out["svg"] = median_time(worked.files, repeat)      # the figures are drawn by now
     with tempfile.TemporaryDirectory() as folder:
-        out["write + pdf"] = median_time(lambda: solution_files.write_solution(
-            files, Path(folder) / "out", pdf=True), repeat)
+        def write():
+            solution_files.solve_worked(ex).write(Path(folder) / "out", pdf=True)
+        out["all + pdf"] = median_time(write, repeat) - out["solve"]
     return out
 
 
@@ -131,7 +133,7 @@ def main(argv: list[str] | None = None) -> None:
     print(f"{'tarsim sweep crank-shaper-forces':<40}"
           f"{wall(cli + ['sweep', 'crank-shaper-forces', '-o', 'out'], r):>8.2f}")
 
-    heads = ("solve", "draw", "draw, 1 core", "svg", "write + pdf")
+    heads = ("solve", "draw", "draw, 1 core", "svg", "all + pdf")
     print(f"\n{'in one process (s)':<26}" + "".join(f"{h:>14}" for h in heads))
     for name in bundled():
         t = in_process(name, r)
