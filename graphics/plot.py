@@ -436,9 +436,9 @@ def _overlaps(boxes: np.ndarray, taken: list[Box], segments, frame: Box) -> np.n
     # Only the segments whose bounds meet those of all the boxes can meet one.
     near = ~_apart(p, q, b0.min(), b1.min(), b2.max(), b3.max())
     if near.any():
-        hits = _segments_hit(p[near], q[near], boxes)
-        for run in np.unique(which[near]):
-            cost += hits[:, which[near] == run].any(axis=1)
+        hits, of = _segments_hit(p[near], q[near], boxes), which[near]
+        for run in np.unique(of):
+            cost += hits[:, of == run].any(axis=1)
     return cost
 
 

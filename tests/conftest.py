@@ -42,8 +42,8 @@ def files(solved):
 
 @pytest.fixture(scope="module")
 def browser():
-    """A headless chromium for a module's browser tests (such a module is one xdist group,
-    run on one worker). It is closed with its module: while it runs, its driver's thread
+    """A headless chromium for a module's browser tests (a test file runs on one worker:
+    --dist loadfile). It is closed with its module: while it runs, its driver's thread
     keeps the figures from being drawn on forked workers."""
     with chromium() as b:
         yield b

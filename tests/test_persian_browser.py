@@ -25,9 +25,9 @@ from tarsim.graphics.rtl import is_rtl
 from tarsim.graphics.svg import to_svg
 
 
-# One worker runs the module (pytest-xdist --dist loadgroup), so it opens chromium and
-# makes its pages once.
-pytestmark = [pytest.mark.slow, pytest.mark.xdist_group("persian-browser")]
+# One worker runs the whole file (--dist loadfile), so chromium is opened and the pages
+# made once.
+pytestmark = pytest.mark.slow
 
 PHRASES = ["مقیاس سرعت ۱ سانتی\u200cمتر = ۶۰ میلی\u200cمتر بر ثانیه", "چندضلعی شتاب",
            "مراکز آنی", "نسبت زمانی ۲۵", "وضعیت\u200cهای حدی — Crank-shaper",

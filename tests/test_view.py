@@ -27,9 +27,9 @@ from tarsim.graphics.view_page import ViewPage, view_html
 
 from tests.common import four_bar_toml
 
-# One worker runs the module (pytest-xdist --dist loadgroup), so it opens chromium and
-# makes its pages once.
-pytestmark = [pytest.mark.slow, pytest.mark.xdist_group("view")]
+# One worker runs the whole file (--dist loadfile), so chromium is opened and the pages
+# made once.
+pytestmark = pytest.mark.slow
 
 
 @pytest.fixture(scope="module")
