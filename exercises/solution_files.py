@@ -30,11 +30,11 @@ from ..constructions.scales import nice
 from ..constructions.velocity_drawing import method_words
 from ..constructions.velocity_polygon import WORKED, drawn_velocity_polygon
 from ..graphics.circle_diagram import draw_circle_diagram
-from ..graphics.export import RenderError, cairo_missing, pdf_pages, svg_to, write_folder
+from ..graphics.export import RenderError, figure_pdf, pdf_missing, pdf_pages, write_folder
 from ..graphics.figure import Figure, stack_pages
 from ..graphics.polygon_panel import POLYGON_BOX, draw_polygon_panel
 from ..graphics.scene import draw_scene
-from ..graphics.svg import to_svg
+from ..graphics.svg import stacked_svg, to_svg
 from ..graphics.workers import draw_each
 from ..graphics.paper import Paper, on_sheet, paper, room, sheet_size
 from ..graphics.worked_page import compose_worked_sheets, holds_panel
@@ -66,8 +66,8 @@ class SolutionFigure:
     """The figure as an SVG document, written where it was drawn."""
     sheet_svgs: tuple[str, ...]
     """Each of its sheets as one, when it runs over several (else none)."""
-    pdf_pages: tuple[bytes, ...]
-    """Its PDF, a one-page document a sheet, when it was drawn to be written with PDFs."""
+    pdf: bytes | None
+    """Its PDF (a page a sheet), when it was drawn to be written with PDFs."""
     shown: Slice | None
     """What the figure shows of the space diagram's construction, narrated in steps.md."""
     panels: tuple[tuple[str, Panel, Slice], ...] = ()
@@ -164,7 +164,8 @@ class WorkedSolution:
         steps.md (in ``lang``) and results.json."""
         files = {f"{f.stem}.svg": f.svg for f in self.pages}
         if self.pages:
-            files["solution.svg"] = to_svg(stack_pages([f.figure for f in self.pages]))
+            files["solution.svg"] = stacked_svg([f.figure for f in self.pages],
+                                                [f.svg for f in self.pages])
         files["steps.md"] = self.steps(lang)
         files["results.json"] = results_json(self.positions, self.exercise.id,
                                              self.overall.quantities)
@@ -183,11 +184,11 @@ class WorkedSolution:
             that tarsim did not write, or PDF is asked and libcairo2 is missing.
         """
         if pdf and "pages" not in self.__dict__:
-            missing = cairo_missing()     # loaded once, before the workers are forked
+            missing = pdf_missing()     # loaded once, before the workers are forked
             if missing:
                 raise RenderError(missing)
             self.pages = self._drawn(pdf=True)
-        made = {f"{f.stem}.pdf": list(f.pdf_pages) for f in self.pages if f.pdf_pages}
+        made = {f"{f.stem}.pdf": f.pdf for f in self.pages if f.pdf}
         return write_solution(self.files(lang), folder, pdf=pdf, sheets=self.sheets(),
                               made=made)
 
@@ -245,15 +246,15 @@ def solve_all(ex: Exercise) -> tuple[list[Solution], Overall, dict[str, str]]:
 
 def write_solution(files: dict[str, str], out_dir: str | Path, *, pdf: bool = True,
                    sheets: dict[str, list[str]] | None = None,
-                   made: dict[str, list[bytes]] | None = None) -> list[Path]:
+                   made: dict[str, bytes] | None = None) -> list[Path]:
     """Write the rendered files into ``out_dir`` (made if missing), with a PDF per figure,
     all or nothing (see :func:`~tarsim.graphics.export.write_folder`).
 
     ``solution.pdf`` has those figures as its pages, in order; a figure that runs over
     several sheets (``sheets``: its PDF's name and each sheet's SVG) has a page a sheet.
-    A figure whose pages are already ``made`` (its PDF's name: a one-page PDF a sheet) is
-    not converted again. The previous solution's files in the folder are replaced whole;
-    a file there tarsim did not write is kept.
+    A figure whose PDF is already ``made`` (by its name) is not converted again. The
+    previous solution's files in the folder are replaced whole; a file there tarsim did
+    not write is kept.
 
     Raises
     ------
@@ -268,31 +269,28 @@ def write_solution(files: dict[str, str], out_dir: str | Path, *, pdf: bool = Tr
         figures = {name[:-4] + ".pdf": sheets.get(name[:-4] + ".pdf", [text])
                    for name, text in files.items()
                    if name.endswith(".svg") and name != "solution.svg"}
-        todo = [text for name, texts in figures.items() if name not in made for text in texts]
+        todo = [texts for name, texts in figures.items() if name not in made]
         if figures:
-            missing = cairo_missing()   # loaded here once, for every worker to inherit
+            missing = pdf_missing()   # loaded here once, for every worker to inherit
             if missing:
                 raise RenderError(missing)
-            converted = iter(draw_each([partial(svg_to, text, "pdf") for text in todo],
-                                       [len(text) for text in todo]))   # the longest first
-            pages = []
-            for name, texts in figures.items():
-                one = made.get(name) or [next(converted) for _ in texts]
-                pdfs[name] = one[0] if len(one) == 1 else pdf_pages(one)
-                pages += one
-            pdfs["solution.pdf"] = pdf_pages(pages)
+            converted = iter(draw_each([partial(figure_pdf, texts) for texts in todo],
+                                       [sum(map(len, texts)) for texts in todo]))  # longest first
+            for name in figures:
+                pdfs[name] = made.get(name) or next(converted)
+            pdfs["solution.pdf"] = pdf_pages(list(pdfs.values()))
     return write_folder({**files, **pdfs}, out_dir)
 
 
 def _drawn_in(lang: str, draw: Callable[[], Figure], pdf: bool
-              ) -> tuple[Figure, str, tuple[str, ...], tuple[bytes, ...]]:
+              ) -> tuple[Figure, str, tuple[str, ...], bytes | None]:
     """``draw()`` with its words in ``lang`` (a forked worker is told, not left to inherit);
-    the figure written as SVG, whole and a sheet at a time; and with ``pdf``, a one-page
-    PDF of each sheet (of the figure, if it is one)."""
+    the figure written as SVG, whole and a sheet at a time; and with ``pdf``, its PDF, a
+    page a sheet."""
     with speaking(lang):
         fig = draw()
         svg, sheets = to_svg(fig), tuple(to_svg(sheet) for sheet in fig.sheets)
-    return fig, svg, sheets, tuple(svg_to(text, "pdf") for text in (sheets or [svg]) if pdf)
+    return fig, svg, sheets, figure_pdf(list(sheets or [svg])) if pdf else None
 
 
 class ChapterFiles:

@@ -29,7 +29,8 @@ from .rtl import for_cairo
 from .svg import to_svg
 
 __all__ = ["RenderError", "FORMATS", "MANIFEST", "write_figure", "write_text", "write_folder",
-           "check_folder", "output_folder", "svg_to", "cairo_missing", "pdf_pages"]
+           "check_folder", "output_folder", "svg_to", "cairo_missing", "pdf_missing", "pdf_pages",
+           "figure_pdf"]
 
 FORMATS = ("svg", "pdf", "png")
 
@@ -54,6 +55,14 @@ def cairo_missing() -> str | None:
         return _NO_CAIRO
     del cairosvg                  # imported only to learn that it loads
     return None
+
+
+def pdf_missing() -> str | None:
+    """The one-line reason PDF cannot be made here, or None when it can; what making it
+    takes (cairosvg, pypdf) is loaded, for workers forked after this to inherit."""
+    import pypdf  # noqa: F401, PLC0415  (a dependency; loaded here, not once per worker)
+
+    return cairo_missing()
 
 
 def svg_to(svg: str, fmt: str, *, dpi: float = 200.0) -> bytes:
@@ -89,6 +98,12 @@ def pdf_pages(pdfs: list[bytes]) -> bytes:
     out = io.BytesIO()
     writer.write(out)
     return out.getvalue()
+
+
+def figure_pdf(sheets: list[str]) -> bytes:
+    """One figure's PDF from the SVG of each of its sheets: a page a sheet."""
+    pages = [svg_to(svg, "pdf") for svg in sheets]
+    return pages[0] if len(pages) == 1 else pdf_pages(pages)
 
 
 def write_figure(fig: Figure | str, path: str | Path) -> Path:

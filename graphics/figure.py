@@ -18,7 +18,7 @@ from .rtl import is_rtl, joined
 __all__ = ["Style", "STYLES", "View", "Path", "Circle", "Text", "Figure", "FONT", "text_width",
            "wrap_text",
            "SUB_SIZE", "SUB_DROP", "arc_points", "clip_line", "ray_to_edge", "span_line",
-           "stack_pages"]
+           "stack_pages", "stack_layout", "PAGE_GAP"]
 
 FONT = "DejaVu Serif"
 """One family that covers Latin, Greek, subscripts and ⊥ ∥ ∞ (cairosvg has no fallback)."""
@@ -417,18 +417,30 @@ def span_line(base: tuple[float, float], d: tuple[float, float],
     return min(ts) - reach(min(ts)), max(ts) + reach(max(ts))
 
 
-def stack_pages(pages: list[Figure], gap: float = 12.0) -> Figure:
+PAGE_GAP = 12.0
+"""The space between stacked pages (mm), a rule drawn across its middle."""
+
+
+def stack_layout(pages: list[Figure], gap: float = PAGE_GAP
+                 ) -> tuple[float, float, list[float]]:
+    """The tall sheet pages are stacked on: its width, its height and each page's top."""
+    tops = [0.0]
+    for page in pages[:-1]:
+        tops.append(tops[-1] + page.height + gap)
+    height = sum(p.height for p in pages) + gap * (len(pages) - 1)
+    return max(p.width for p in pages), height, tops
+
+
+def stack_pages(pages: list[Figure], gap: float = PAGE_GAP) -> Figure:
     """Set whole figures one under another on one tall sheet, each at its own scale.
 
     A thin rule parts them; nothing is rescaled, so every scale bar still measures true.
     """
-    width = max(p.width for p in pages)
-    out = Figure(width, sum(p.height for p in pages) + gap * (len(pages) - 1),
-                 title=pages[0].title, sheets=[s for p in pages for s in (p.sheets or [p])])
-    y = 0.0
-    for i, page in enumerate(pages):
+    width, height, tops = stack_layout(pages, gap)
+    out = Figure(width, height, title=pages[0].title,
+                 sheets=[s for p in pages for s in (p.sheets or [p])])
+    for i, (page, top) in enumerate(zip(pages, tops)):
         if i:
-            out.line((0.0, y - gap / 2), (width, y - gap / 2), "page_rule")
-        out.items += [_shifted(it, 0.0, y) for it in page.items]
-        y += page.height + gap
+            out.line((0.0, top - gap / 2), (width, top - gap / 2), "page_rule")
+        out.items += [_shifted(it, 0.0, top) for it in page.items]
     return out

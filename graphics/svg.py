@@ -12,11 +12,12 @@ import re
 
 import svgwrite
 
-from .figure import FONT, STYLES, SUB_DROP, SUB_SIZE, Circle, Figure, Path, Style, Text
+from .figure import (FONT, PAGE_GAP, STYLES, SUB_DROP, SUB_SIZE, Circle, Figure, Path, Style,
+                     Text, stack_layout)
 from .rtl import RTL_FONT, flip_anchor, is_rtl
 from .rtl_runs import lay_runs
 
-__all__ = ["to_svg"]
+__all__ = ["to_svg", "stacked_svg"]
 
 
 def _n(v: float) -> str:
@@ -72,6 +73,24 @@ def to_svg(fig: Figure) -> str:
             groups.setdefault(key, grp)
         current[1].add(_element(dwg, item))
     return dwg.tostring()
+
+
+def stacked_svg(pages: list[Figure], svgs: list[str], gap: float = PAGE_GAP) -> str:
+    """The sheet :func:`~graphics.figure.stack_pages` sets ``pages`` on, written from their
+    SVG documents (``svgs``, in order): each page's drawing is moved into place whole, not
+    drawn and written again, so a solution's figures are written once."""
+    width, height, tops = stack_layout(pages, gap)
+    rules = Figure(width, height, title=pages[0].title)
+    for top in tops[1:]:
+        rules.line((0.0, top - gap / 2), (width, top - gap / 2), "page_rule")
+    moved = "".join(f'<g transform="translate(0,{_n(top)})">{_drawing(svg)}</g>'
+                    for top, svg in zip(tops, svgs))
+    return to_svg(rules).removesuffix("</svg>") + moved + "</svg>"
+
+
+def _drawing(svg: str) -> str:
+    """What :func:`to_svg` drew on a page: its document less the root, title and defs."""
+    return svg[svg.index("<defs />") + len("<defs />"):svg.rindex("</svg>")]
 
 
 def _element(dwg: svgwrite.Drawing, item: Path | Circle | Text):

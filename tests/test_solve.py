@@ -234,3 +234,36 @@ def test_a_solution_is_byte_identical_across_hash_seeds_and_folders(tmp_path):
     first, second = outputs
     assert {"steps.md", "results.json", "worked.svg"} <= set(first)
     assert first == second
+
+
+def test_solution_svg_sets_each_figure_as_written_where_stacking_them_would():
+    """solution.svg moves each figure's own SVG into place rather than drawing it again;
+    it must print as the figures stacked and written afresh do (stack_pages): the same
+    sheet, the same ink. Coordinates are written to 0.001 mm either way, a 0.002 px
+    shift at 2 px/mm, so no pixel may differ by more than a faint edge (32 of 255)."""
+    cairosvg = pytest.importorskip("cairosvg")
+    import io
+
+    import numpy as np
+    from PIL import Image
+
+    from tarsim import load, solve
+    from tarsim.graphics.figure import stack_pages
+    from tarsim.graphics.svg import to_svg
+
+    worked = solve(load("crank-shaper"))
+    moved = worked.files()["solution.svg"]
+    drawn = to_svg(stack_pages([f.figure for f in worked.pages]))
+    root = re.compile(r'<svg [^>]*height="([\d.]+)mm"[^>]*viewBox="([^"]+)"[^>]*width="([\d.]+)mm"')
+    assert root.match(moved).groups() == root.match(drawn).groups()
+    assert moved.count("<text") == drawn.count("<text") == sum(f.svg.count("<text")
+                                                                 for f in worked.pages)
+
+    def grey(svg: str):
+        png = cairosvg.svg2png(bytestring=svg.encode(), dpi=50.8)     # 2 px/mm
+        return np.asarray(Image.open(io.BytesIO(png)).convert("L"), dtype=int)
+
+    a, b = grey(moved), grey(drawn)
+    assert a.shape == b.shape
+    assert (a < 128).sum() > 0.005 * a.size          # there is ink to compare
+    assert np.abs(a - b).max() <= 32
