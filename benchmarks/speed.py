@@ -12,7 +12,7 @@ Medians of ``--repeat`` runs on this machine, stated at the top with its CPU and
   drawing of its figures with each one's SVG on every core and on one (their ratio, taken
   in the same run), solution.svg with steps.md and results.json, and every file written
   with its PDF after the solve as ``tarsim solve`` makes them (each figure drawn, written
-  and converted by one job);
+  as SVG and drawn as PDF by one job);
 - each worked page (space diagram, polygons, table): its layout and SVG after the solve,
   and its PDF.
 """
@@ -35,7 +35,7 @@ import tarsim  # noqa: E402
 from tarsim.exercises import solution_files  # noqa: E402
 from tarsim.exercises.catalog import bundled, everything  # noqa: E402
 from tarsim.graphics import workers  # noqa: E402
-from tarsim.graphics.export import svg_to  # noqa: E402
+from tarsim.graphics.export import figure_pdf  # noqa: E402
 from tarsim.graphics.svg import to_svg  # noqa: E402
 
 
@@ -107,8 +107,8 @@ def worked_pages(name: str, repeat: int) -> list[tuple[str, float, float]]:
                 continue
             sketch = solution_files._worked_page(sol, answers)
             layout = median_time(lambda s=sketch: to_svg(s.draw()), repeat)
-            svg = to_svg(sketch.draw())
-            pdf = median_time(lambda s=svg: svg_to(s, "pdf"), repeat)
+            fig = sketch.draw()
+            pdf = median_time(lambda f=fig: figure_pdf(f.sheets or [f]), repeat)
             out.append((sol.position.label if sol.position else "", layout, pdf))
     return out
 

@@ -330,7 +330,7 @@ def solve(source, out_dir, angle, pdf, paper, allow_undercut, lang, digits):
     from .rotor_file import BalanceExercise
     from .solution_files import answer_line, solve_worked
     from .train_file import TrainExercise
-    from ..graphics.export import output_folder, pdf_missing
+    from ..graphics.export import cairo_missing, output_folder
 
     loaded = load(source)
 
@@ -355,7 +355,7 @@ def solve(source, out_dir, angle, pdf, paper, allow_undercut, lang, digits):
         out = Path(out_dir or f"{ex.id}-solution")
         with output_folder(out):      # a folder that cannot be written fails before the solve
             worked = solve_worked(ex)
-            reason = pdf_missing() if pdf else None
+            reason = cairo_missing() if pdf else None
             written = worked.write(out, pdf=pdf and reason is None)
         sols, overall = worked.positions, worked.overall
         for name, q in overall.quantities.items():
@@ -432,13 +432,13 @@ def sweep(source, out_dir, of, steps, pdf, lang, digits):
     from .sweep import sweep_exercise
     from .sweep_files import format_sweep, sweep_to_files, write_sweep
     from .turning_moment import POWER_AGREE, moment_files
-    from ..graphics.export import output_folder, pdf_missing
+    from ..graphics.export import cairo_missing, output_folder
 
     ex = _exercise(source, None)
 
     with speaking(_language(lang, digits, ex)):
         ex = ex.named_in(spoken())
-        reason = pdf_missing() if pdf else None
+        reason = cairo_missing() if pdf else None
         out = Path(out_dir or f"{ex.id}-sweep")
         moment = None
         with output_folder(out):      # a folder that cannot be written fails before the sweep
@@ -501,12 +501,12 @@ def _solve_cam(ex, out_dir: str | None, pdf: bool, allow_undercut: bool) -> None
 def _solve_other(ex, solve, out_dir: str | None, pdf: bool) -> None:
     """Solve a gear train or a cam, print its checked numbers, write its files; exit 3 if a
     number disagrees with its reference."""
-    from ..graphics.export import output_folder, pdf_missing
+    from ..graphics.export import cairo_missing, output_folder
 
     out = Path(out_dir or f"{ex.id}-solution")
     with output_folder(out):
         solved = solve(ex)
-        reason = pdf_missing() if pdf else None
+        reason = cairo_missing() if pdf else None
         written = solved.write(out, pdf=pdf and reason is None)
     for line in solved.lines():
         click.echo(line)

@@ -30,7 +30,7 @@ from ..constructions.scales import nice
 from ..constructions.velocity_drawing import method_words
 from ..constructions.velocity_polygon import WORKED, drawn_velocity_polygon
 from ..graphics.circle_diagram import draw_circle_diagram
-from ..graphics.export import RenderError, figure_pdf, pdf_missing, pdf_pages, write_folder
+from ..graphics.export import RenderError, cairo_missing, figure_pdf, write_folder
 from ..graphics.figure import Figure, stack_pages
 from ..graphics.polygon_panel import POLYGON_BOX, draw_polygon_panel
 from ..graphics.scene import draw_scene
@@ -64,8 +64,6 @@ class SolutionFigure:
     figure: Figure
     svg: str
     """The figure as an SVG document, written where it was drawn."""
-    sheet_svgs: tuple[str, ...]
-    """Each of its sheets as one, when it runs over several (else none)."""
     pdf: bytes | None
     """Its PDF (a page a sheet), when it was drawn to be written with PDFs."""
     shown: Slice | None
@@ -184,13 +182,13 @@ class WorkedSolution:
             that tarsim did not write, or PDF is asked and libcairo2 is missing.
         """
         if pdf and "pages" not in self.__dict__:
-            missing = pdf_missing()     # loaded once, before the workers are forked
+            missing = cairo_missing()     # loaded once, before the workers are forked
             if missing:
                 raise RenderError(missing)
             self.pages = self._drawn(pdf=True)
         made = {f"{f.stem}.pdf": f.pdf for f in self.pages if f.pdf}
-        return write_solution(self.files(lang), folder, pdf=pdf, sheets=self.sheets(),
-                              made=made)
+        return write_solution(self.files(lang), folder, pdf=pdf, made=made,
+                              figures={f"{f.stem}.pdf": f.figure for f in self.pages})
 
     def view(self, step_deg: float = 0.5):
         """The interactive page of this exercise (``tarsim view``): its ``.save(path)``
@@ -212,11 +210,6 @@ class WorkedSolution:
         return {f.stem: (s.width, s.height) for f in self.pages
                 for s in (f.figure.sheets or [f.figure])
                 if (round(s.width, 1), round(s.height, 1)) not in fits}
-
-    def sheets(self) -> dict[str, list[str]]:
-        """Each figure that runs over several sheets: its PDF's name, and the SVG of each
-        sheet, a page each."""
-        return {f"{f.stem}.pdf": list(f.sheet_svgs) for f in self.pages if f.sheet_svgs}
 
 
 def solve_worked(ex: Exercise) -> WorkedSolution:
@@ -245,16 +238,15 @@ def solve_all(ex: Exercise) -> tuple[list[Solution], Overall, dict[str, str]]:
 
 
 def write_solution(files: dict[str, str], out_dir: str | Path, *, pdf: bool = True,
-                   sheets: dict[str, list[str]] | None = None,
+                   figures: dict[str, Figure] | None = None,
                    made: dict[str, bytes] | None = None) -> list[Path]:
-    """Write the rendered files into ``out_dir`` (made if missing), with a PDF per figure,
-    all or nothing (see :func:`~tarsim.graphics.export.write_folder`).
+    """Write the rendered files into ``out_dir`` (made if missing), with a PDF of each of
+    ``figures`` (by its PDF's name; a page a sheet), all or nothing (see
+    :func:`~tarsim.graphics.export.write_folder`).
 
-    ``solution.pdf`` has those figures as its pages, in order; a figure that runs over
-    several sheets (``sheets``: its PDF's name and each sheet's SVG) has a page a sheet.
-    A figure whose PDF is already ``made`` (by its name) is not converted again. The
-    previous solution's files in the folder are replaced whole; a file there tarsim did
-    not write is kept.
+    ``solution.pdf`` has those figures as its pages, in order. A figure whose PDF is
+    already ``made`` (by its name) is not drawn again. The previous solution's files in
+    the folder are replaced whole; a file there tarsim did not write is kept.
 
     Raises
     ------
@@ -264,33 +256,29 @@ def write_solution(files: dict[str, str], out_dir: str | Path, *, pdf: bool = Tr
         anything is written).
     """
     pdfs = {}
-    if pdf:
-        sheets, made = sheets or {}, made or {}
-        figures = {name[:-4] + ".pdf": sheets.get(name[:-4] + ".pdf", [text])
-                   for name, text in files.items()
-                   if name.endswith(".svg") and name != "solution.svg"}
-        todo = [texts for name, texts in figures.items() if name not in made]
-        if figures:
-            missing = pdf_missing()   # loaded here once, for every worker to inherit
-            if missing:
-                raise RenderError(missing)
-            converted = iter(draw_each([partial(figure_pdf, texts) for texts in todo],
-                                       [sum(map(len, texts)) for texts in todo]))  # longest first
-            for name in figures:
-                pdfs[name] = made.get(name) or next(converted)
-            pdfs["solution.pdf"] = pdf_pages(list(pdfs.values()))
+    if pdf and figures:
+        missing = cairo_missing()   # loaded here once, for every worker to inherit
+        if missing:
+            raise RenderError(missing)
+        made = made or {}
+        sheets = {name: fig.sheets or [fig] for name, fig in figures.items()}
+        todo = [name for name in sheets if name not in made]
+        jobs = [partial(figure_pdf, sheets[name]) for name in todo]
+        drawn = dict(zip(todo, draw_each(jobs, [sum(len(s.items) for s in sheets[name])
+                                                for name in todo])))
+        pdfs = {name: made.get(name) or drawn[name] for name in sheets}
+        pdfs["solution.pdf"] = figure_pdf([s for name in sheets for s in sheets[name]])
     return write_folder({**files, **pdfs}, out_dir)
 
 
 def _drawn_in(lang: str, draw: Callable[[], Figure], pdf: bool
-              ) -> tuple[Figure, str, tuple[str, ...], bytes | None]:
+              ) -> tuple[Figure, str, bytes | None]:
     """``draw()`` with its words in ``lang`` (a forked worker is told, not left to inherit);
-    the figure written as SVG, whole and a sheet at a time; and with ``pdf``, its PDF, a
-    page a sheet."""
+    the figure written as SVG and, with ``pdf``, its PDF (a page a sheet)."""
     with speaking(lang):
         fig = draw()
-        svg, sheets = to_svg(fig), tuple(to_svg(sheet) for sheet in fig.sheets)
-    return fig, svg, sheets, figure_pdf(list(sheets or [svg])) if pdf else None
+        svg = to_svg(fig)
+    return fig, svg, figure_pdf(fig.sheets or [fig]) if pdf else None
 
 
 class ChapterFiles:
@@ -308,7 +296,8 @@ class ChapterFiles:
     def write(self, folder: str | Path, *, pdf: bool = True) -> list[Path]:
         """Write the files into ``folder`` (with a PDF of each figure when ``pdf``), all or
         nothing."""
-        return write_solution(self.files(), folder, pdf=pdf)
+        return write_solution(self.files(), folder, pdf=pdf,
+                              figures={f"{stem}.pdf": fig for stem, fig in self.figures.items()})
 
 
 # ----- figures ---------------------------------------------------------------------------

@@ -14,7 +14,7 @@ from pathlib import Path
 
 from ..constructions.model import Mechanism
 from ..constructions.narration import Word, numerals, speaking, unit_words, words
-from ..graphics.export import svg_to, write_folder
+from ..graphics.export import figure_pdf, write_folder
 from ..graphics.figure import Figure
 from ..graphics.plot import CURVE_STYLES, PlotMark, Series, draw_line_plot
 from ..graphics.svg import to_svg
@@ -312,10 +312,9 @@ def sweep_to_files(sw: Sweep, *, pdf: bool = False) -> dict[str, str | bytes]:
     if sw.checks:
         files["sweep-points.csv"] = points_csv(sw)
     for stem, fig in sweep_figures(sw).items():
-        svg = to_svg(fig)
-        files[f"{stem}.svg"] = svg
+        files[f"{stem}.svg"] = to_svg(fig)
         if pdf:
-            files[f"{stem}.pdf"] = svg_to(svg, "pdf")
+            files[f"{stem}.pdf"] = figure_pdf([fig])
     return files
 
 

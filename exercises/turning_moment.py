@@ -272,12 +272,12 @@ def _split(pts: list[tuple[float, float]], mean: float) -> list[list[tuple[float
 
 def moment_files(tm: TurningMoment, *, pdf: bool = False) -> dict[str, str | bytes]:
     """The diagram (SVG, and PDF if asked) and its table, by file name."""
-    from ..graphics.export import svg_to
+    from ..graphics.export import figure_pdf
     from ..graphics.svg import to_svg
 
-    svg = to_svg(tm.figure())
-    files: dict[str, str | bytes] = {"turning-moment.svg": svg,
+    fig = tm.figure()
+    files: dict[str, str | bytes] = {"turning-moment.svg": to_svg(fig),
                                      "turning-moment.csv": tm.csv()}
     if pdf:
-        files["turning-moment.pdf"] = svg_to(svg, "pdf")
+        files["turning-moment.pdf"] = figure_pdf([fig])
     return files

@@ -1,7 +1,8 @@
 """Write a figure to .svg, .pdf or .png, or a folder of files, all or nothing.
 
-SVG needs no system library. PDF and PNG go through cairosvg, imported only here
-and only when asked for; without libcairo2 the user gets one line saying so. A
+SVG needs no system library. A figure's PDF is drawn straight from it with cairo
+(:mod:`.pdf`); PNG, and PDF of SVG text, go through cairosvg. Both are imported only
+when asked for; without libcairo2 the user gets one line saying so. A
 file is written to a temporary name beside the target and renamed into place, so
 a failure leaves nothing half-written; a folder's files (:func:`write_folder`) are
 all staged first and moved in only when every one is written.
@@ -29,8 +30,7 @@ from .rtl import for_cairo
 from .svg import to_svg
 
 __all__ = ["RenderError", "FORMATS", "MANIFEST", "write_figure", "write_text", "write_folder",
-           "check_folder", "output_folder", "svg_to", "cairo_missing", "pdf_missing", "pdf_pages",
-           "figure_pdf"]
+           "check_folder", "output_folder", "svg_to", "cairo_missing", "figure_pdf"]
 
 FORMATS = ("svg", "pdf", "png")
 
@@ -48,21 +48,13 @@ _NO_CAIRO = ("PDF and PNG output need the cairo library (libcairo2), which is no
 
 
 def cairo_missing() -> str | None:
-    """The one-line reason PDF/PNG cannot be made here, or None when they can."""
+    """The one-line reason PDF/PNG cannot be made here, or None when they can; cairo's
+    bindings are loaded, for workers forked after this to inherit."""
     try:
-        import cairosvg  # noqa: PLC0415
+        import cairocffi  # noqa: F401, PLC0415  (it loads libcairo2, or fails to)
     except (ImportError, OSError):
         return _NO_CAIRO
-    del cairosvg                  # imported only to learn that it loads
     return None
-
-
-def pdf_missing() -> str | None:
-    """The one-line reason PDF cannot be made here, or None when it can; what making it
-    takes (cairosvg, pypdf) is loaded, for workers forked after this to inherit."""
-    import pypdf  # noqa: F401, PLC0415  (a dependency; loaded here, not once per worker)
-
-    return cairo_missing()
 
 
 def svg_to(svg: str, fmt: str, *, dpi: float = 200.0) -> bytes:
@@ -85,25 +77,21 @@ def svg_to(svg: str, fmt: str, *, dpi: float = 200.0) -> bytes:
     raise RenderError(f"cannot convert to '{fmt}'; choose one of {', '.join(FORMATS)}")
 
 
-def pdf_pages(pdfs: list[bytes]) -> bytes:
-    """Join one-page PDFs into one document, a page each, in order (pypdf copies the pages
-    as they are, so every page keeps its own size and true scale)."""
-    import io
+def figure_pdf(pages: list[Figure]) -> bytes:
+    """A PDF of ``pages`` (a figure's sheets, or every figure of a solution), a page each
+    at its own size and true scale, drawn from the figures themselves
+    (:mod:`~graphics.pdf`).
 
-    from pypdf import PdfWriter  # noqa: PLC0415  (only PDF output needs it)
+    Raises
+    ------
+    RenderError
+        If libcairo2 is missing.
+    """
+    if missing := cairo_missing():
+        raise RenderError(missing)
+    from .pdf import draw_pdf  # noqa: PLC0415
 
-    writer = PdfWriter()
-    for data in pdfs:
-        writer.append(io.BytesIO(data))
-    out = io.BytesIO()
-    writer.write(out)
-    return out.getvalue()
-
-
-def figure_pdf(sheets: list[str]) -> bytes:
-    """One figure's PDF from the SVG of each of its sheets: a page a sheet."""
-    pages = [svg_to(svg, "pdf") for svg in sheets]
-    return pages[0] if len(pages) == 1 else pdf_pages(pages)
+    return draw_pdf(pages)
 
 
 def write_figure(fig: Figure | str, path: str | Path) -> Path:
@@ -119,8 +107,11 @@ def write_figure(fig: Figure | str, path: str | Path) -> Path:
     if fmt not in FORMATS:
         raise RenderError(f"cannot write '{path.name}': the name must end in "
                           f"{', '.join('.' + f for f in FORMATS)}")
-    svg = fig if isinstance(fig, str) else to_svg(fig)
-    data = svg.encode("utf-8") if fmt == "svg" else svg_to(svg, fmt)
+    if fmt == "pdf" and not isinstance(fig, str):
+        data = figure_pdf([fig])
+    else:
+        svg = fig if isinstance(fig, str) else to_svg(fig)
+        data = svg.encode("utf-8") if fmt == "svg" else svg_to(svg, fmt)
     _write_atomically(path, data)
     return path
 

@@ -107,12 +107,11 @@ class View:
 
 @dataclass(frozen=True, slots=True)
 class Path:
-    """A polyline, or a closed polygon, with optional SVG arc segments in ``d``."""
+    """A polyline, or a closed polygon."""
 
     points: tuple[tuple[float, float], ...]
     style: str
     closed: bool = False
-    d: str | None = None
 
 
 @dataclass(frozen=True, slots=True)
@@ -320,7 +319,7 @@ class Figure:
 
 def _shifted(it: Path | Circle | Text, dx: float, dy: float) -> Path | Circle | Text:
     if isinstance(it, Path):
-        return Path(tuple((x + dx, y + dy) for x, y in it.points), it.style, it.closed, it.d)
+        return Path(tuple((x + dx, y + dy) for x, y in it.points), it.style, it.closed)
     if isinstance(it, Circle):
         return Circle((it.centre[0] + dx, it.centre[1] + dy), it.radius, it.style)
     owner = None if it.owner is None else tuple((x + dx, y + dy) for x, y in it.owner)

@@ -230,7 +230,7 @@ class LabelPlacer:
         every name must keep off every line."""
         self._see_heads()
         for it in self.fig.items[self._drawn:]:
-            if isinstance(it, Path) and it.d is None and it.style not in _HEADS:
+            if isinstance(it, Path) and it.style not in _HEADS:
                 if it.closed and len(it.points) >= 3:
                     self.block(Polygon(it.points).buffer(0.3))
                 else:

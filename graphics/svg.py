@@ -95,27 +95,18 @@ def _drawing(svg: str) -> str:
 
 def _element(dwg: svgwrite.Drawing, item: Path | Circle | Text):
     if isinstance(item, Path):
-        if item.d is not None:
-            return dwg.path(d=item.d)
         d = "M" + " L".join(f"{_n(x)},{_n(y)}" for x, y in item.points)
         if item.closed:
             d += " Z"
         return dwg.path(d=d)
     if isinstance(item, Circle):
         return dwg.circle((_n(item.centre[0]), _n(item.centre[1])), _n(item.radius))
-    if (item.sub or item.tail) and is_rtl(item.text + item.sub + item.tail):
+    if len(parts := runs(item)) > 1:
         group = dwg.g()
-        for run in _runs(item):
+        for run in parts:
             group.add(_element(dwg, run))
         return group
-    # Text: ``at`` is the visual centre line; the baseline sits 0.35 em below it.
-    x, y = item.at
-    anchor = item.anchor
-    if (item.sub or item.tail) and anchor != "start":
-        # cairosvg anchors a <text> by its own characters and ignores the tspan's,
-        # so a subscripted label is set from its computed left end instead.
-        x -= item.width / 2 if anchor == "middle" else item.width
-        anchor = "start"
+    x, y, anchor = set_from_left(item)
     attrs = {"x": [_n(x)], "y": [_n(y + 0.35 * item.size)], "font-size": _n(item.size),
              "text-anchor": anchor}
     if is_rtl(item.text + item.sub + item.tail):
@@ -138,12 +129,25 @@ def _element(dwg: svgwrite.Drawing, item: Path | Circle | Text):
     return text
 
 
-def _runs(item: Text) -> list[Text]:
-    """A right-to-left label with a subscript ("V_B به روش دوران شعاع") as runs of one
-    direction each (:func:`~.rtl_runs.lay_runs`): the words before the symbol, the symbol
-    with its subscript (and a prime after it: F_i3′), then the tail."""
+def runs(item: Text) -> list[Text]:
+    """``item`` as the texts it is set as: itself, or a right-to-left label with a
+    subscript ("V_B به روش دوران شعاع") as runs laid by
+    :func:`~.rtl_runs.lay_runs`: the words before the symbol, the symbol with its subscript
+    (and a prime after it: F_i3′), then the tail."""
+    if not ((item.sub or item.tail) and is_rtl(item.text + item.sub + item.tail)):
+        return [item]
     symbol = item.text[-1:] if item.sub and not is_rtl(item.text[-1:]) else ""
     mark = re.match("[′″ᵗⁿᶜ]*", item.tail).group()
-    runs = [(item.text[:len(item.text) - len(symbol)], "", ""), (symbol, item.sub, mark),
-            (item.tail[len(mark):], "", "")]
-    return lay_runs(item.at, runs, item.size, item.anchor, item.italic, item.weight)
+    parts = [(item.text[:len(item.text) - len(symbol)], "", ""), (symbol, item.sub, mark),
+             (item.tail[len(mark):], "", "")]
+    return lay_runs(item.at, parts, item.size, item.anchor, item.italic, item.weight)
+
+
+def set_from_left(item: Text) -> tuple[float, float, str]:
+    """Where a text of one direction is set, ``at`` being its visual centre line: its x,
+    its centre line's y and its anchor. cairosvg anchors a text by its own characters and
+    ignores its tspans', so a subscripted label is set from its computed left end."""
+    x, y = item.at
+    if (item.sub or item.tail) and item.anchor != "start":
+        return x - (item.width / 2 if item.anchor == "middle" else item.width), y, "start"
+    return x, y, item.anchor

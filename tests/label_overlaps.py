@@ -43,7 +43,7 @@ def labels(fig: Figure) -> list:
 def arrowheads(fig: Figure) -> list:
     """The small closed polygons an arrow ends in."""
     return [Polygon(p.points) for p in fig.items if isinstance(p, Stroke) and p.closed
-            and len(p.points) in (3, 4) and p.d is None and Polygon(p.points).area < 6.0]
+            and len(p.points) in (3, 4) and Polygon(p.points).area < 6.0]
 
 
 def lines(fig: Figure) -> list:

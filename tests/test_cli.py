@@ -212,12 +212,14 @@ class _NoCairo(importlib.abc.MetaPathFinder):
 
 @pytest.fixture(params=["ImportError", "OSError"])
 def no_cairo(request, monkeypatch):
-    """Hide cairosvg: not installed (ImportError) or installed without libcairo (OSError)."""
+    """Hide cairo: cairosvg and cairocffi not installed (ImportError), or installed without
+    libcairo (OSError)."""
     for mod in list(sys.modules):
         if mod.split(".")[0] in ("cairosvg", "cairocffi"):
             monkeypatch.delitem(sys.modules, mod)
     if request.param == "ImportError":
         monkeypatch.setitem(sys.modules, "cairosvg", None)
+        monkeypatch.setitem(sys.modules, "cairocffi", None)
     else:
         monkeypatch.setattr(sys, "meta_path", [_NoCairo(), *sys.meta_path])
     return request.param

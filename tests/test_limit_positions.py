@@ -24,7 +24,6 @@ from tarsim.constructions.reference.rotatability import (class_by_rotation, leng
 from tarsim.exercises.catalog import resolve
 from tarsim.exercises.exercise_file import load_exercise, parse_exercise
 from tarsim.exercises.solution import solve_overall
-from tarsim.exercises.solution_files import solve_all
 from tarsim.constructions.record import Slice
 from tarsim.graphics.scene import draw_scene
 from tests.common import badge_numbers, four_bar_toml
@@ -265,13 +264,13 @@ def test_crank_shaper_files_carry_the_whole_mechanism(solved):
 
 @pytest.mark.slow
 def test_solution_pdf_has_a_page_per_figure(tmp_path):
-    pytest.importorskip("cairosvg")
+    pytest.importorskip("cairocffi")
     from pypdf import PdfReader
 
-    from tarsim.exercises.solution_files import write_solution
-    ex = load_exercise(resolve("slotted-lever-p37"))
-    _, _, files = solve_all(ex)
-    write_solution(files, tmp_path)
+    from tarsim.exercises.solution_files import solve_worked
+    worked = solve_worked(load_exercise(resolve("slotted-lever-p37")))
+    worked.write(tmp_path)
+    files = worked.files()
     pages = PdfReader(tmp_path / "solution.pdf").pages
     assert len(pages) == 1                      # the limit positions alone
     # A page keeps its figure's size: true scale on paper (1 mm = 72/25.4 pt).

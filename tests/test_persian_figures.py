@@ -22,7 +22,7 @@ from tarsim.exercises.solution_files import solve_worked
 from tarsim.graphics.figure import Figure, Path, Text, text_width
 from tarsim.graphics.rtl import is_rtl
 from tarsim.graphics.scales import draw_caption, scale_text
-from tarsim.graphics.svg import _runs, to_svg
+from tarsim.graphics.svg import runs as _runs, to_svg
 
 from tests.common import four_bar_toml
 

@@ -236,6 +236,7 @@ def test_a_solution_is_byte_identical_across_hash_seeds_and_folders(tmp_path):
     assert first == second
 
 
+@pytest.mark.slow
 def test_solution_svg_sets_each_figure_as_written_where_stacking_them_would():
     """solution.svg moves each figure's own SVG into place rather than drawing it again;
     it must print as the figures stacked and written afresh do (stack_pages): the same
@@ -251,7 +252,7 @@ def test_solution_svg_sets_each_figure_as_written_where_stacking_them_would():
     from tarsim.graphics.figure import stack_pages
     from tarsim.graphics.svg import to_svg
 
-    worked = solve(load("crank-shaper"))
+    worked = solve(load("hinkle-slider-crank"))
     moved = worked.files()["solution.svg"]
     drawn = to_svg(stack_pages([f.figure for f in worked.pages]))
     root = re.compile(r'<svg [^>]*height="([\d.]+)mm"[^>]*viewBox="([^"]+)"[^>]*width="([\d.]+)mm"')
