@@ -180,9 +180,9 @@ class _Loops:
         out.append(_wrap(self.pose(q, m.drive.link)[2] - theta))
         return out
 
-    def jacobian(self, q, theta) -> mpmath.matrix:
+    def jacobian(self, q, theta) -> _Factored:
         n = len(q)
-        jac = mp.matrix(n, n)
+        jac = [[mpf(0)] * n for _ in range(n)]
         step = mpf(10) ** (-(mp.dps * 5) // 12)      # 1e-50 at 120 digits
         for j in range(n):
             h = step * max(1, abs(q[j]))
@@ -191,8 +191,8 @@ class _Loops:
             down[j] -= h
             ru, rd = self.residual(up, theta), self.residual(down, theta)
             for i in range(n):
-                jac[i, j] = (ru[i] - rd[i]) / (2 * h)
-        return jac
+                jac[i][j] = (ru[i] - rd[i]) / (2 * h)
+        return _Factored(jac)
 
     def newton(self, q, theta) -> list:
         """Polish ``q`` until the step is below the working precision; raise if it will not.
@@ -210,7 +210,7 @@ class _Loops:
                 raise Unmodelled(f"{len(r)} equations for {len(q)} body coordinates")
             if jac is None:
                 jac = self.jacobian(q, theta)
-            dq = mp.lu_solve(jac, mp.matrix([-v for v in r]))
+            dq = jac.solve([-v for v in r])
             step = max(abs(v) for v in dq)
             q = [a + b for a, b in zip(q, dq)]
             if step <= tiny * max(1, max(abs(v) for v in q)):
@@ -224,8 +224,61 @@ class _Loops:
 
     def rate(self, q, theta) -> list:
         """dq/dθ at a converged ``q``: the Jacobian solved against the drive row."""
-        rhs = mp.matrix([0] * (len(q) - 1) + [1])
-        return list(mp.lu_solve(self.jacobian(q, theta), rhs))
+        return self.jacobian(q, theta).solve([mpf(0)] * (len(q) - 1) + [mpf(1)])
+
+
+class _Factored:
+    """A square system's matrix factored once and solved for any right-hand side, step for
+    step as ``mp.lu_solve`` solves it: 10 bits above the working precision, rows pivoted
+    on their largest element relative to the row's sum, ZeroDivisionError when a row or
+    a pivot is below the 1-norm times eps.
+
+    Newton keeps its Jacobian over several steps, and ``mp.lu_solve`` factors it afresh
+    each time, through ``mp.matrix``'s indexing: that was most of a reference solve's
+    time. On plain lists of rows the same arithmetic gives the same numbers, to the bit.
+    """
+
+    def __init__(self, rows: list[list]):
+        n = len(rows)
+        with mp.extraprec(10):
+            a = [list(row) for row in rows]
+            tol = max(mpmath.fsum((a[i][j] for i in range(n)), absolute=True)
+                      for j in range(n)) * mp.eps
+            swaps = []
+            for j in range(n - 1):
+                biggest, p = 0, None
+                for k in range(j, n):
+                    s = mpmath.fsum((a[k][col] for col in range(j, n)), absolute=True)
+                    if s <= tol:
+                        raise ZeroDivisionError("matrix is numerically singular")
+                    if (current := 1 / s * abs(a[k][j])) > biggest:
+                        biggest, p = current, k
+                a[j], a[p] = a[p], a[j]
+                swaps.append(p)
+                if abs(a[j][j]) <= tol:
+                    raise ZeroDivisionError("matrix is numerically singular")
+                for row in a[j + 1:]:
+                    row[j] /= a[j][j]
+                    for k in range(j + 1, n):
+                        row[k] -= row[j] * a[j][k]
+            if abs(a[n - 1][n - 1]) <= tol:
+                raise ZeroDivisionError("matrix is numerically singular")
+        self.a, self.swaps = a, swaps
+
+    def solve(self, rhs: list) -> list:
+        a, n = self.a, len(self.a)
+        with mp.extraprec(10):
+            x = list(rhs)
+            for k, p in enumerate(self.swaps):
+                x[k], x[p] = x[p], x[k]
+            for i in range(1, n):                    # L y = P b, L with a unit diagonal
+                for j in range(i):
+                    x[i] -= a[i][j] * x[j]
+            for i in reversed(range(n)):             # U x = y
+                for j in range(i + 1, n):
+                    x[i] -= a[i][j] * x[j]
+                x[i] /= a[i][i]
+        return x
 
 
 def _wrap(angle):
