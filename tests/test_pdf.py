@@ -16,32 +16,41 @@ Spaces are left out of the letters: cairosvg skips them, and PDFium invents some
 
 from __future__ import annotations
 
+from importlib.util import find_spec
+
 import numpy as np
 import pytest
 
-pdfium = pytest.importorskip("pypdfium2")
-pytest.importorskip("cairosvg")
-
-from tarsim.constructions.narration import speaking  # noqa: E402
-from tarsim.exercises.catalog import resolve  # noqa: E402
-from tarsim.exercises.exercise_file import load_exercise  # noqa: E402
-from tarsim.exercises.solution_files import solve_worked  # noqa: E402
-from tarsim.graphics.export import figure_pdf, svg_to  # noqa: E402
-from tarsim.graphics.figure import Figure, Text  # noqa: E402
-from tarsim.graphics.svg import to_svg  # noqa: E402
+from tarsim.constructions.narration import speaking
+from tarsim.exercises.catalog import resolve
+from tarsim.exercises.exercise_file import load_exercise
+from tarsim.exercises.solution_files import solve_worked
+from tarsim.graphics.export import figure_pdf, svg_to
+from tarsim.graphics.figure import Figure, Text
+from tarsim.graphics.svg import to_svg
 
 _PT_PER_MM = 72 / 25.4
 
+pytestmark = pytest.mark.skipif(
+    find_spec("pypdfium2") is None or find_spec("cairosvg") is None,
+    reason="reading PDFs back needs pypdfium2 and cairosvg (the test extra)")
+
+
+def _document(pdf: bytes):
+    import pypdfium2
+
+    return pypdfium2.PdfDocument(pdf)
+
 
 def _pixels(pdf: bytes) -> np.ndarray:
-    page = pdfium.PdfDocument(pdf)[0]
+    page = _document(pdf)[0]
     return np.asarray(page.render(scale=6 / _PT_PER_MM, grayscale=True).to_pil().convert("L"),
                       dtype=int)
 
 
 def _letters(pdf: bytes) -> list[tuple[str, float, float]]:
     """Each letter on the page and the left and bottom of its box (mm)."""
-    text = pdfium.PdfDocument(pdf)[0].get_textpage()
+    text = _document(pdf)[0].get_textpage()
     out = []
     for i in range(text.count_chars()):
         letter = text.get_text_range(i, 1)
@@ -100,7 +109,7 @@ def test_a_figures_sheets_are_its_pdfs_pages_each_at_its_own_size():
     big, small = Figure(300.0, 210.0, title="one"), Figure(100.0, 50.0, title="two")
     big.add(Text((150.0, 100.0), "A", anchor="middle"))
     small.add(Text((50.0, 25.0), "B", anchor="middle"))
-    doc = pdfium.PdfDocument(figure_pdf([big, small]))
+    doc = _document(figure_pdf([big, small]))
     assert [tuple(round(v / _PT_PER_MM, 3) for v in page.get_size()) for page in doc] == [
         (300.0, 210.0), (100.0, 50.0)]
     assert [page.get_textpage().get_text_range() for page in doc] == ["A", "B"]
