@@ -41,7 +41,7 @@ from tarsim.constructions.velocity_by_centres import (velocity_by_parallel_lines
 from tarsim.constructions.velocity_by_components import velocity_by_components
 from tarsim.constructions.velocity_polygon import draw_velocity_polygon
 
-from .mpref import at_angle, mp_limits, mp_solve
+from .mpref import Unmodelled, at_angle, mp_limits, mp_solve
 from .timing import median_time
 
 __all__ = ["METHODS", "Reading", "Run", "run_method", "FloatReference", "MpReference",
@@ -281,8 +281,8 @@ class FloatReference(_Reference):
         """A point's velocity or acceleration: as the solver gives it, or taken on ``link``."""
         if self.kin is None:
             return None
-        if link is None:
-            return getattr(self.kin, table)[point]
+        if link is None:       # a point the mechanism does not name (a wheel's contact): none
+            return getattr(self.kin, table).get(point)
         return of_link(self.kin, self.mech, link, point)
 
     def _omega(self, k):
@@ -297,7 +297,10 @@ class FloatReference(_Reference):
     def _limit(self, kind):
         if self._limits is None:
             lp = self.drawn_limits
-            self._limits = limit_reference(self.mech, point=lp.point, link=lp.output)
+            try:
+                self._limits = limit_reference(self.mech, point=lp.point, link=lp.output)
+            except TarsimError:         # a crank that stops at a change point has none
+                return None
         return (self._limits.time_ratio,) if kind == "TR" else (self._limits.stroke,)
 
 
@@ -339,8 +342,11 @@ class MpReference(_Reference):
             lp = self.drawn_limits
             m = solver.follow_branches(self.mech)
             starts = [solver.solve_positions(at_angle(m, a)) for a in lp.crank_angles]
-            self._limits = mp_limits(self.mech, lp.crank_angles, starts, point=lp.point,
-                                     link=lp.output)
+            try:
+                self._limits = mp_limits(self.mech, lp.crank_angles, starts, point=lp.point,
+                                         link=lp.output)
+            except (ArithmeticError, Unmodelled):   # singular there (a change point)
+                return None
         return (self._limits.time_ratio,) if kind == "TR" else (self._limits.stroke,)
 
 
