@@ -63,6 +63,8 @@ def _paint(ctx, fig: Figure) -> None:
 
 
 def _shape(ctx, item: Path | Circle, style: Style) -> None:
+    if not (item.radius if isinstance(item, Circle) else item.points):
+        return                  # nothing to draw (cairosvg draws a circle of radius 0 so)
     if isinstance(item, Circle):
         ctx.new_sub_path()
         ctx.arc(round(item.centre[0], 3), round(item.centre[1], 3), round(item.radius, 3),

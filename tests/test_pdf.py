@@ -123,3 +123,15 @@ def test_spaces_print_as_an_svg_viewer_keeps_them():
     theirs, ours = _letters(svg_to(to_svg(fig), "pdf")), _letters(figure_pdf([fig]))
     assert [c for c, _, _ in ours] == ["a", ",", "b"]
     assert [round(x, 2) for _, x, _ in ours] == [round(x, 2) for _, x, _ in theirs]
+
+
+def test_a_circle_of_no_radius_and_a_path_of_no_length_print_nothing():
+    """As cairosvg prints them: a round cap would otherwise make a dot of each."""
+    from tarsim.graphics.figure import Circle, Path
+
+    fig = Figure(40.0, 20.0)
+    fig.add(Circle((10.0, 10.0), 0.0, "pin"))
+    fig.add(Path((), "link"))
+    fig.add(Path(((30.0, 10.0),), "link"))
+    assert _pixels(figure_pdf([fig])).min() == 255
+    assert _pixels(svg_to(to_svg(fig), "pdf")).min() == 255
