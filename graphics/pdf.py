@@ -92,7 +92,7 @@ def _shape(ctx, item: Path | Circle, style: Style) -> None:
 
 
 def _label(ctx, item: Text) -> None:
-    if len(parts := runs(item)) == 1:
+    if (parts := runs(item)) is None:
         _text(ctx, item)
     else:
         for part in parts:

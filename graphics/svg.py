@@ -101,7 +101,7 @@ def _element(dwg: svgwrite.Drawing, item: Path | Circle | Text):
         return dwg.path(d=d)
     if isinstance(item, Circle):
         return dwg.circle((_n(item.centre[0]), _n(item.centre[1])), _n(item.radius))
-    if len(parts := runs(item)) > 1:
+    if (parts := runs(item)) is not None:
         group = dwg.g()
         for run in parts:
             group.add(_element(dwg, run))
@@ -129,13 +129,13 @@ def _element(dwg: svgwrite.Drawing, item: Path | Circle | Text):
     return text
 
 
-def runs(item: Text) -> list[Text]:
-    """``item`` as the texts it is set as: itself, or a right-to-left label with a
-    subscript ("V_B به روش دوران شعاع") as runs laid by
-    :func:`~.rtl_runs.lay_runs`: the words before the symbol, the symbol with its subscript
-    (and a prime after it: F_i3′), then the tail."""
+def runs(item: Text) -> list[Text] | None:
+    """A right-to-left label with a subscript ("V_B به روش دوران شعاع") as the runs of one
+    direction each it is set as (:func:`~.rtl_runs.lay_runs`): the words before the symbol,
+    the symbol with its subscript (and a prime after it: F_i3′), then the tail. None for
+    any other text, which is set as it is."""
     if not ((item.sub or item.tail) and is_rtl(item.text + item.sub + item.tail)):
-        return [item]
+        return None
     symbol = item.text[-1:] if item.sub and not is_rtl(item.text[-1:]) else ""
     mark = re.match("[′″ᵗⁿᶜ]*", item.tail).group()
     parts = [(item.text[:len(item.text) - len(symbol)], "", ""), (symbol, item.sub, mark),
