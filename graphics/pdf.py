@@ -2,7 +2,7 @@
 not by way of its SVG.
 
 cairosvg, which turns the SVG into PDF, parses the document back and sets every text a
-letter at a time, twice over: for a text-heavy page that was five sixths of making its
+letter at a time, twice over: for a text-heavy page that was two thirds of making its
 PDF. The figure is at hand where it is drawn, so its paths, circles and texts go onto the
 page here with the cairo calls cairosvg makes for the SVG :func:`~graphics.svg.to_svg`
 writes of it, and print the same:
