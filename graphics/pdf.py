@@ -24,7 +24,7 @@ import re
 
 from .figure import FONT, STYLES, SUB_DROP, SUB_SIZE, Circle, Figure, Path, Style, Text
 from .rtl import RTL_FONT, is_rtl, visual
-from .svg import runs, set_from_left
+from .svg import runs, text_origin
 
 __all__ = ["draw_pdf"]
 
@@ -103,7 +103,7 @@ def _text(ctx, item: Text) -> None:
     """One <text> as cairosvg sets it: the text from its inked anchor, then the subscript
     dropped and smaller, then the tail back on the baseline, each after the last, their
     spaces as an SVG viewer keeps them."""
-    x, y, anchor = set_from_left(item)
+    x, y, anchor = text_origin(item)
     rtl = is_rtl(item.text + item.sub + item.tail)
     ctx.select_font_face(RTL_FONT if rtl else FONT, _ITALIC if item.italic and not rtl else 0,
                          _BOLD if item.weight == "bold" else 0)
@@ -114,7 +114,7 @@ def _text(ctx, item: Text) -> None:
     ctx.set_font_size(round(item.size, 3))
     ink_left, _, ink_width, _, _, _ = ctx.text_extents(text)
     shift = {"middle": -(ink_width / 2 + ink_left), "end": -(ink_width + ink_left)}
-    ctx.move_to(round(x, 3) + shift.get(anchor, 0.0), round(y + 0.35 * item.size, 3))
+    ctx.move_to(round(x, 3) + shift.get(anchor, 0.0), round(y, 3))
     _show(ctx, text)
     drop = round(SUB_DROP * item.size, 3)
     if item.sub:

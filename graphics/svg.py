@@ -106,8 +106,8 @@ def _element(dwg: svgwrite.Drawing, item: Path | Circle | Text):
         for run in parts:
             group.add(_element(dwg, run))
         return group
-    x, y, anchor = set_from_left(item)
-    attrs = {"x": [_n(x)], "y": [_n(y + 0.35 * item.size)], "font-size": _n(item.size),
+    x, y, anchor = text_origin(item)
+    attrs = {"x": [_n(x)], "y": [_n(y)], "font-size": _n(item.size),
              "text-anchor": anchor}
     if is_rtl(item.text + item.sub + item.tail):
         # Persian: laid right to left by the viewer, in a face with its glyphs; the anchor
@@ -143,11 +143,12 @@ def runs(item: Text) -> list[Text] | None:
     return lay_runs(item.at, parts, item.size, item.anchor, item.italic, item.weight)
 
 
-def set_from_left(item: Text) -> tuple[float, float, str]:
-    """Where a text of one direction is set, ``at`` being its visual centre line: its x,
-    its centre line's y and its anchor. cairosvg anchors a text by its own characters and
-    ignores its tspans', so a subscripted label is set from its computed left end."""
-    x, y = item.at
+def text_origin(item: Text) -> tuple[float, float, str]:
+    """Where a text of one direction is set: the x its anchor stands at, its baseline's y
+    (``at`` is the visual centre line; the baseline sits 0.35 em below it) and its anchor.
+    cairosvg anchors a text by its own characters and ignores its tspans', so a
+    subscripted label is set from its computed left end."""
+    x, y = item.at[0], item.at[1] + 0.35 * item.size
     if (item.sub or item.tail) and item.anchor != "start":
         return x - (item.width / 2 if item.anchor == "middle" else item.width), y, "start"
     return x, y, item.anchor
