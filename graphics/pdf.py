@@ -22,9 +22,9 @@ import io
 import math
 import re
 
-from .figure import FONT, STYLES, SUB_DROP, SUB_SIZE, Circle, Figure, Path, Style, Text
+from .figure import FONT, STYLES, Circle, Figure, Path, Style, Text
 from .rtl import RTL_FONT, is_rtl, visual
-from .svg import runs, text_origin
+from .svg import runs, text_origin, tspans
 
 __all__ = ["draw_pdf"]
 
@@ -116,17 +116,11 @@ def _text(ctx, item: Text) -> None:
     shift = {"middle": -(ink_width / 2 + ink_left), "end": -(ink_width + ink_left)}
     ctx.move_to(round(x, 3) + shift.get(anchor, 0.0), round(y, 3))
     _show(ctx, text)
-    drop = round(SUB_DROP * item.size, 3)
-    if item.sub:
-        sub, spaced = _spaced(item.sub, spaced)
-        ctx.set_font_size(round(SUB_SIZE * item.size, 3))
-        ctx.rel_move_to(0.0, drop)
-        _show(ctx, sub)
-    if item.tail:
-        tail, _ = _spaced(item.tail, spaced)
-        ctx.set_font_size(round(item.size, 3))
-        ctx.rel_move_to(0.0, -drop if item.sub else 0.0)
-        _show(ctx, tail)
+    for words, size, dy in tspans(item):
+        words, spaced = _spaced(words, spaced)
+        ctx.set_font_size(round(size, 3))
+        ctx.rel_move_to(0.0, round(dy, 3))
+        _show(ctx, words)
 
 
 def _show(ctx, text: str) -> None:

@@ -119,14 +119,21 @@ def _element(dwg: svgwrite.Drawing, item: Path | Circle | Text):
     if item.weight != "normal":
         attrs["font-weight"] = item.weight
     text = dwg.text(item.text, **attrs)
-    if item.sub:
-        # A true subscript: cairosvg ignores baseline-shift, so drop it with dy.
-        text.add(dwg.tspan(item.sub, dy=[_n(SUB_DROP * item.size)],
-                           font_size=_n(SUB_SIZE * item.size)))
-    if item.tail:
-        rise = -SUB_DROP * item.size if item.sub else 0.0
-        text.add(dwg.tspan(item.tail, dy=[_n(rise)], font_size=_n(item.size)))
+    for words, size, dy in tspans(item):
+        text.add(dwg.tspan(words, dy=[_n(dy)], font_size=_n(size)))
     return text
+
+
+def tspans(item: Text) -> list[tuple[str, float, float]]:
+    """What follows a text on its line, each part set after the last: its subscript,
+    smaller and dropped, then its tail back on the baseline; as (text, font size, the
+    drop from the part before). cairosvg ignores baseline-shift, so the drop is a dy."""
+    parts = []
+    if item.sub:
+        parts.append((item.sub, SUB_SIZE * item.size, SUB_DROP * item.size))
+    if item.tail:
+        parts.append((item.tail, item.size, -SUB_DROP * item.size if item.sub else 0.0))
+    return parts
 
 
 def runs(item: Text) -> list[Text] | None:
