@@ -665,8 +665,9 @@ class _System:
         cols = np.tile([self.lc, self.lc, 1.0], len(self.moving))
         return jac * rows[:, None] * cols[None, :]
 
-    def scaled_residual(self, q) -> float:
-        return float(np.max(np.abs(self.residual(q) * np.where(self.is_len, 1.0 / self.lc, 1.0))))
+    def scaled_max(self, residual: np.ndarray) -> float:
+        """The largest of a residual's entries, lengths in units of the mechanism's size."""
+        return float(np.max(np.abs(residual * np.where(self.is_len, 1.0 / self.lc, 1.0))))
 
 
 # ----------------------------------------------------------------------------- solve
@@ -740,26 +741,37 @@ def _start(mech: Mechanism) -> tuple[_System, np.ndarray]:
     return system, q
 
 
-def _conditioned(system: _System, q: np.ndarray) -> tuple[np.ndarray, float]:
-    """Return the Jacobian at ``q`` and its rcond; raise at a dead point."""
-    jac = system.jacobian(q)
+def _conditioned(system: _System, q: np.ndarray,
+                 jac: np.ndarray | None = None) -> tuple[np.ndarray, float]:
+    """Return the Jacobian at ``q`` (``jac``, if it is known) and its rcond; raise at a
+    dead point."""
+    if jac is None:
+        jac = system.jacobian(q)
     rcond, err = _singular(system, jac)
     if err is not None:
         raise err
     return jac, rcond
 
 
-def _newton(system: _System, q: np.ndarray, jac: np.ndarray) -> np.ndarray:
-    """Polish a well-conditioned start until the scaled residual is at round-off."""
+def _newton(system: _System, q: np.ndarray,
+            jac: np.ndarray) -> tuple[np.ndarray, np.ndarray | None, np.ndarray | None]:
+    """Polish a well-conditioned start until the scaled residual is at round-off.
+
+    Returns the polished ``q`` with its Jacobian and residual where the polish had them
+    at that ``q`` already (else None): the closed-form start is usually at round-off, so
+    the caller need not form them again.
+    """
+    res = None
     for _ in range(_NEWTON_STEPS):
-        if system.scaled_residual(q) <= 4 * _EPS:
-            break
-        dq = np.linalg.solve(jac, -system.residual(q))
+        res = system.residual(q)
+        if system.scaled_max(res) <= 4 * _EPS:
+            return q, jac, res
+        dq = np.linalg.solve(jac, -res)
         q = q + dq
         if np.max(np.abs(dq)) <= 4 * _EPS * system.lc:
-            break
+            return q, None, None
         jac = system.jacobian(q)
-    return q
+    return q, jac, None
 
 
 def solve(mech: Mechanism) -> Kinematics:
@@ -815,18 +827,23 @@ def solve(mech: Mechanism) -> Kinematics:
     >>> round(kin.omegas[3], 12) + 0.0, round(kin.omegas[4], 12) + 0.0
     (0.0, 1.0)
     """
-    system, q = _start(mech)
-    q = _newton(system, q, _conditioned(system, q)[0])
-    jac, rcond = _conditioned(system, q)
-    if system.scaled_residual(q) > 1e-10:
+    system, start = _start(mech)
+    jac, rcond = _conditioned(system, start)
+    q, polished_jac, res = _newton(system, start, jac)
+    if q is not start:                      # polished: the Jacobian and its rcond anew
+        jac, rcond = _conditioned(system, q, polished_jac)
+    if res is None:
+        res = system.residual(q)
+    if system.scaled_max(res) > 1e-10:
         raise AssemblyError(f"the position polish did not converge at input angle "
                             f"{mech.units.angle_brief(mech.drive.angle)} (residual "
-                            f"{system.scaled_residual(q):.1e})", link=mech.drive.link)
+                            f"{system.scaled_max(res):.1e})", link=mech.drive.link)
     rhs = np.zeros(len(system.is_len))
     rhs[-1] = mech.drive.omega
     qd = np.linalg.solve(jac, rhs)
     qdd = np.linalg.solve(jac, system.gamma(q, qd))
-    return _pack(system, q, qd, qdd, rcond, _free_motion(system, jac))
+    return _pack(system, q, qd, qdd, rcond, _free_motion(system, jac),
+                 float(np.max(np.abs(res))))
 
 
 def solve_positions(mech: Mechanism) -> dict[str, tuple[float, float]]:
@@ -844,7 +861,7 @@ def solve_positions(mech: Mechanism) -> dict[str, tuple[float, float]]:
     system, q = _start(mech)
     jac = system.jacobian(q)
     if _singular(system, jac)[1] is None:
-        q = _newton(system, q, jac)
+        q = _newton(system, q, jac)[0]
     return {n: _point(system, q, n) for n in mech.point_names}
 
 
@@ -871,8 +888,8 @@ def _free_motion(system: _System, jac: np.ndarray) -> FreeMotion:
     return FreeMotion(omegas, velocities, float(sv[-1] / sv[0]) if sv[0] > 0.0 else 0.0)
 
 
-def _pack(system: _System, q, qd, qdd, rcond: float,
-          free: FreeMotion | None = None) -> Kinematics:
+def _pack(system: _System, q, qd, qdd, rcond: float, free: FreeMotion,
+          residual: float) -> Kinematics:
     mech = system.m
     origins, angles, vel0, omegas, acc0, alphas = {}, {}, {}, {}, {}, {}
     for k in [1] + system.moving:
@@ -904,9 +921,8 @@ def _pack(system: _System, q, qd, qdd, rcond: float,
         cor = 2.0 * wg * speed * sd
         rates.append(SlideRate(s, float(dg @ e), speed, accel, (float(dg[0]), float(dg[1])),
                                (float(cor[0]), float(cor[1]))))
-    return Kinematics(points, angles, omegas, alphas, vels, accs, tuple(rates),
-                      float(np.max(np.abs(system.residual(q)))), rcond, origins, vel0, acc0,
-                      free)
+    return Kinematics(points, angles, omegas, alphas, vels, accs, tuple(rates), residual,
+                      rcond, origins, vel0, acc0, free)
 
 
 def _velocity(p, origin, v0, omega) -> tuple[float, float]:
