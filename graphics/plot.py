@@ -269,7 +269,6 @@ def draw_line_plot(title: str, x_label: str, y_label: str, series: Sequence[Seri
     plot_top = top + _SUBTITLE + 9.0
     bottom = plot_top + _PLOT_H
     _add_text(fig, (left - 1.0, plot_top - 4.2), y_label, _LABEL, italic=False)
-    frame: Box = (left, plot_top, right, bottom)
 
     def px(x: float) -> float:
         return left + (x - x0) / (x1 - x0) * (right - left)
@@ -308,7 +307,10 @@ def draw_line_plot(title: str, x_label: str, y_label: str, series: Sequence[Seri
             paper_runs.append(pts)
             if len(pts) > 1:
                 fig.add(Path(pts, s.style))
-    _draw_marks(fig, [(px(m.x), py(m.y), m.label) for m in marks], paper_runs, frame)
+    # A mark's label keeps inside the ticks, off the frame and the ticks' ends.
+    inner = _TICK + 0.4
+    _draw_marks(fig, [(px(m.x), py(m.y), m.label) for m in marks], paper_runs,
+                (left + inner, plot_top + inner, right - inner, bottom - inner))
     for tx, ty, text in tags:
         fig.add(Text((px(tx), py(ty)), sign_left(text), _NOTE, "middle", italic=False))
 
@@ -368,7 +370,8 @@ def _clip_runs(points: Sequence[Point | None], x0: float, x1: float) -> list[lis
 
 def _draw_marks(fig: Figure, marks: list[tuple[float, float, str]],
                 runs: list[tuple[Point, ...]], frame: Box) -> None:
-    """Open circles at the marks; each label at the nearest clear spot round its circle.
+    """Open circles at the marks; each label at the nearest clear spot round its circle,
+    within ``frame``.
 
     The spots lie on rings ever farther out; a label set off its first ring gets a
     thin leader to its circle.
@@ -389,20 +392,51 @@ def _draw_marks(fig: Figure, marks: list[tuple[float, float, str]],
         cy = y + dy * (ring * (_MARK_R + 0.9) + h / 2)
         boxes = np.stack([cx - w / 2 - 0.3, cy - h / 2 - 0.3, cx + w / 2 + 0.3, cy + h / 2 + 0.3],
                          axis=1)
-        k = int(np.argmin(_overlaps(boxes, taken, segments, frame) + 0.05 * ring))
-        best, best_ring = tuple(boxes[k].tolist()), float(ring[k])
+        leaders = _leaders(x, y, boxes, ring)
+        cost = _overlaps(boxes, taken, segments, frame) + 0.05 * ring
+        # A leader across a curve reads as part of it: it costs as the box crossing one.
+        cost += _crossed(*leaders, segments)
+        k = int(np.argmin(cost))
+        best = tuple(boxes[k].tolist())
         cx, cy = (best[0] + best[2]) / 2, (best[1] + best[3]) / 2
-        if best_ring > 1.0:
-            ex = min(max(x, best[0]), best[2])
-            ey = min(max(y, best[1]), best[3])
-            d = math.hypot(ex - x, ey - y)
-            if d > _MARK_R + 0.3:
-                u = ((ex - x) / d, (ey - y) / d)
-                fig.line((x + u[0] * _MARK_R, y + u[1] * _MARK_R),
-                         (ex - u[0] * 0.3, ey - u[1] * 0.3), "plot_leader")
+        start, end = leaders[0][k], leaders[1][k]
+        if np.isfinite(start).all():
+            fig.line(tuple(start.tolist()), tuple(end.tolist()), "plot_leader")
         for t in rich_text((cx, cy), label, _MARK_TEXT, "middle"):
             fig.add(t)
         taken.append(best)
+
+
+def _leaders(x: float, y: float, boxes: np.ndarray,
+             ring: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The leader each of ``boxes`` would be drawn with, from the circle at (x, y) to the
+    box's nearest point (a gap short of it): the starts and the ends, a row each; NaN for a
+    box on the first ring, or one too near to need a leader."""
+    ex = np.clip(x, boxes[:, 0], boxes[:, 2])
+    ey = np.clip(y, boxes[:, 1], boxes[:, 3])
+    d = np.hypot(ex - x, ey - y)
+    led = (ring > 1.0) & (d > _MARK_R + 0.3)
+    ux, uy = (ex - x) / np.where(led, d, 1.0), (ey - y) / np.where(led, d, 1.0)
+    start = np.stack([x + ux * _MARK_R, y + uy * _MARK_R], axis=1)
+    end = np.stack([ex - ux * 0.3, ey - uy * 0.3], axis=1)
+    start[~led] = end[~led] = np.nan
+    return start, end
+
+
+def _crossed(a: np.ndarray, b: np.ndarray, segments) -> np.ndarray:
+    """Whether each segment ab (a row each; NaN for none) crosses a curve's segment."""
+    p, q, _ = segments
+    if not len(p):
+        return np.zeros(len(a))
+
+    def side(o, u, v):          # the sign of (u − o) × (v − o), for every pair
+        return np.sign((u[..., 0] - o[..., 0]) * (v[..., 1] - o[..., 1])
+                       - (u[..., 1] - o[..., 1]) * (v[..., 0] - o[..., 0]))
+
+    a, b = a[:, None, :], b[:, None, :]
+    cross = (side(a, b, p[None]) * side(a, b, q[None]) < 0) \
+        & (side(p[None], q[None], a) * side(p[None], q[None], b) < 0)
+    return cross.any(axis=1).astype(float)
 
 
 _RINGS = (1.0, 1.8, 2.6, 3.6, 4.8, 6.2)

@@ -154,6 +154,33 @@ def test_the_plots_parse_and_carry_the_marks(shaper_files):
     assert ">360<" in velocity and ">330<" in velocity           # the 0–360° axis
 
 
+def test_a_marks_label_keeps_inside_the_ticks_and_its_leader_off_the_curve(shaper):
+    """The t = 2.34 s mark of the acceleration plot sits at the curve's trough, near the
+    frame's foot: its label goes in the trough, not onto the frame or a tick, and no
+    label or leader crosses the curve."""
+    from shapely.geometry import LineString, box
+
+    from tarsim.exercises.sweep_files import sweep_figures
+    from tarsim.graphics.figure import Path, Text
+    from tarsim.graphics.plot import _MARK_TEXT, _TICK
+
+    for stem, fig in sweep_figures(shaper).items():
+        paths = [it for it in fig.items if isinstance(it, Path)]
+        (frame,) = [p for p in paths if p.style == "plot_frame"]
+        x0, y0 = map(min, zip(*frame.points))
+        x1, y1 = map(max, zip(*frame.points))
+        curves = [LineString(p.points) for p in paths if p.style == "plot_curve"]
+        labels = [t for t in fig.items if isinstance(t, Text) and t.size == _MARK_TEXT]
+        assert {t.text for t in labels} == {"t = 2.34 s", "θ"}, stem     # θ₂ = 90°
+        for t in labels:
+            a, b, c, d = t.box()
+            assert a > x0 + _TICK and c < x1 - _TICK and b > y0 + _TICK and d < y1 - _TICK, \
+                (stem, t.text)
+            assert not any(box(a, b, c, d).intersects(k) for k in curves), (stem, t.text)
+        for leader in [p for p in paths if p.style == "plot_leader"]:
+            assert not any(LineString(leader.points).intersects(k) for k in curves), stem
+
+
 def test_the_same_sweep_gives_the_same_files():
     ex = exercise("crank-shaper")
     a, b = (sweep_to_files(sweep_exercise(ex, 24)) for _ in range(2))
