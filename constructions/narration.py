@@ -23,6 +23,7 @@ catalogue and nothing else.
 from __future__ import annotations
 
 import importlib
+import math
 import re
 from collections.abc import Iterable, Iterator
 from contextlib import contextmanager
@@ -154,8 +155,9 @@ class Quantity:
     """A length, speed, acceleration or angle: ``value`` in ``unit`` per ``per``.
 
     ``style`` is ``"length"`` (up to four decimals, trailing zeros dropped: "250
-    mm", "12.5 cm", "60°"), ``"rate"`` (six significant figures: "406.712 mm/s") or
-    ``"fixed"`` (four decimals kept: "1.0472 rad").
+    mm", "12.5 cm", "60°"), ``"rate"`` (six significant figures: "406.712 mm/s"),
+    ``"fixed"`` (four decimals kept: "1.0472 rad") or ``"drawn"`` (four significant
+    figures, as a cam's or a gear's construction is measured: "2.778 mm", "120°").
     """
 
     value: float
@@ -176,6 +178,22 @@ class Capitalized:
     """A clause that opens a sentence: English sets its first letter in capitals."""
 
     clause: Phrase
+
+
+def drawn_length(metres: float) -> Quantity:
+    """A length a cam's or a gear's step measures off (m), as the step says it: in
+    millimetres, to four figures.
+
+    >>> render(drawn_length(0.0027778)), render(drawn_length(0.05), "fa")
+    ('2.778 mm', '۵۰ میلی‌متر')
+    """
+    return Quantity(metres * 1e3, "mm", style="drawn")
+
+
+def drawn_angle(rad: float) -> Quantity:
+    """An angle a cam's or a gear's step measures off (rad), as the step says it: in
+    degrees, to four figures."""
+    return Quantity(math.degrees(rad), "°", style="drawn")
 
 
 def fixed(value: float, digits: int) -> str:
@@ -237,7 +255,8 @@ def render(arg: Any, lang: str = "en") -> str:
         return cat.digits(_short_exponent(format(arg.value, arg.spec)))
     if isinstance(arg, Quantity):
         text = {"length": lambda v: fixed(v, 4), "rate": significant,
-                "fixed": lambda v: f"{v:.4f}"}[arg.style](arg.value)
+                "fixed": lambda v: f"{v:.4f}", "drawn": lambda v: f"{v:.4g}"}[arg.style](
+            arg.value)
         unit = cat.UNITS.get(arg.unit, arg.unit) + cat.UNITS.get(arg.per, arg.per)
         return cat.digits(text) + ("" if arg.unit == "°" else " ") + unit
     if isinstance(arg, (list, tuple)):

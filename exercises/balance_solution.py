@@ -35,6 +35,11 @@ AGREE = 1e-12
 few roundings of the vectors laid off."""
 
 
+def _n(value: float, spec: str = ".6g") -> str:
+    """A number as the results print it, in the spoken language's digits."""
+    return numerals(format(value, spec))
+
+
 def _angle(v: tuple[float, float]) -> float:
     return math.degrees(math.atan2(v[1], v[0])) % 360.0
 
@@ -134,23 +139,26 @@ class BalanceSolution(ChapterFiles):
     # ----- words --------------------------------------------------------------------------------
     def _length(self, v: float) -> str:
         unit = self.exercise.length_unit
-        return f"{v / LENGTH_UNITS[unit]:.6g} {unit}"
+        return f"{_n(v / LENGTH_UNITS[unit])} {unit}"
 
     def lines(self) -> list[str]:
-        """What the command line prints."""
+        """What the command line prints, and steps.md lists, in the language spoken."""
         ex = self.exercise
         if ex.engine is not None:
             return self._engine_lines()
         out = []
         r = ex.rotor
         x, y = resultant(r.masses)
-        out.append(f"ΣF_x = {x:.6g}ω², ΣF_y = {y:.6g}ω² (kg·m): the resultant "
-                   f"{math.hypot(x, y):.6g} kg·m at {quadrant_angle(x, y):.2f}° "
-                   f"({math.hypot(x, y) * r.speed ** 2:.6g} N at ω = {r.speed:.6g} rad/s)")
+        out.append(words("ΣF_x = {x}ω², ΣF_y = {y}ω² (kg·m): the resultant {size} kg·m at "
+                         "{angle}° ({force} N at ω = {speed} rad/s)", x=_n(x), y=_n(y),
+                         size=_n(math.hypot(x, y)), angle=_n(quadrant_angle(x, y), ".2f"),
+                         force=_n(math.hypot(x, y) * r.speed ** 2), speed=_n(r.speed)))
         for p in r.planes:
             v, mass, radius = self.placed(p)
-            out.append(f"plane {p.name}: balancing m·r = {math.hypot(*v):.6g} kg·m at "
-                       f"{_angle(v):.2f}°, so {mass:.6g} kg at {self._length(radius)}")
+            out.append(words("plane {plane}: balancing m·r = {size} kg·m at {angle}°, so {mass} "
+                             "kg at {radius}", plane=p.name, size=_n(math.hypot(*v)),
+                             angle=_n(_angle(v), ".2f"), mass=_n(mass),
+                             radius=self._length(radius)))
         if len(r.planes) == 1 and len({m.plane for m in r.masses}) > 1:
             couple = math.hypot(*(math.fsum(m.mr[i] * (m.plane - r.planes[0].position)
                                             for m in r.masses) for i in (0, 1)))
@@ -158,21 +166,23 @@ class BalanceSolution(ChapterFiles):
             if single is not None:
                 v, place = single
                 planes = [m.plane for m in r.masses]
-                case = "2-1, between" if min(planes) <= place <= max(planes) else \
-                    "2-2, outside"
-                out.append(f"the masses lie in one axial plane: one mass of m·r = "
-                           f"{math.hypot(*v):.6g} kg·m at {_angle(v):.2f}° in the plane at "
-                           f"{self._length(place)} balances force and couple together (the "
-                           f"notes' case {case} the masses' planes: moments about each "
-                           "mass's plane fix it)")
+                case = words("2-1, between") if min(planes) <= place <= max(planes) else \
+                    words("2-2, outside")
+                out.append(words("the masses lie in one axial plane: one mass of m·r = {size} "
+                                 "kg·m at {angle}° in the plane at {place} balances force and "
+                                 "couple together (the notes' case {case} the masses' planes: "
+                                 "moments about each mass's plane fix it)",
+                                 size=_n(math.hypot(*v)), angle=_n(_angle(v), ".2f"),
+                                 place=self._length(place), case=case))
             if couple > 1e-12 * max(m.mass * m.radius for m in r.masses):
-                out.append(f"at {self._length(r.planes[0].position)} one plane balances the "
-                           f"forces only: a couple of {couple:.6g} kg·m² (× ω²) is left, "
-                           "for a second plane to take")
-        verdict = "each where the vector sum puts it" if self.passed else \
+                out.append(words("at {place} one plane balances the forces only: a couple of "
+                                 "{couple} kg·m² (× ω²) is left, for a second plane to take",
+                                 place=self._length(r.planes[0].position), couple=_n(couple)))
+        verdict = words("each where the vector sum puts it") if self.passed else \
             f"OFF: {', '.join(self.failures)}"
-        out.append(f"polygons closed: {verdict}; the balanced rotor's residual force "
-                   f"{self.residual[0]:.1e} kg·m")
+        out.append(words("polygons closed: {verdict}; the balanced rotor's residual force "
+                         "{residual} kg·m", verdict=verdict,
+                         residual=_n(self.residual[0], ".1e")))
         return out
 
     def _engine_lines(self) -> list[str]:
@@ -180,14 +190,16 @@ class BalanceSolution(ChapterFiles):
         if len(e.cranks) == 1:
             prim, sec, along, across = single_cylinder(e, e.at)
             f = e.reciprocating * e.speed ** 2 * e.crank
-            at = math.degrees(e.at)
-            return [f"at θ = {at:g}°: primary force {prim:.6g} N, secondary {sec:.6g} N along "
-                    f"the line of stroke (n = l/r = {e.rod / e.crank:.6g})",
-                    f"with {e.balanced:g} of the reciprocating mass balanced by a rotating "
-                    f"mass: {along:.6g} N along the line of stroke and {across:.6g} N across "
-                    f"it",
-                    f"at most {(1 - e.balanced) * f:.6g} N along (θ = 0°, 180°) and "
-                    f"{e.balanced * f:.6g} N across (θ = 90°, 270°)"]
+            return [words("at θ = {angle}°: primary force {primary} N, secondary {secondary} N "
+                          "along the line of stroke (n = l/r = {n})",
+                          angle=_n(math.degrees(e.at), "g"), primary=_n(prim),
+                          secondary=_n(sec), n=_n(e.rod / e.crank)),
+                    words("with {share} of the reciprocating mass balanced by a rotating mass: "
+                          "{along} N along the line of stroke and {across} N across it",
+                          share=_n(e.balanced, "g"), along=_n(along), across=_n(across)),
+                    words("at most {along} N along (θ = 0°, 180°) and {across} N across "
+                          "(θ = 90°, 270°)", along=_n((1 - e.balanced) * f),
+                          across=_n(e.balanced * f))]
         sums = engine_sums(e)
         out = []
         for kind, value in zip(KINDS, (sums.primary_force, sums.primary_couple,
@@ -196,9 +208,11 @@ class BalanceSolution(ChapterFiles):
             left = self.engine_polygons.left(kind) * e.speed ** 2
             balanced = left <= AGREE * e.reciprocating * e.crank * e.speed ** 2 * max(
                 1.0, max(abs(p) for p in e.planes))
-            out.append(f"{kind}: " + ("balanced (its polygon closes)" if balanced else
-                                      f"unbalanced, {left:.6g} {unit} at most "
-                                      f"(the vector sum: {value:.6g} {unit})"))
+            out.append(words("{kind}: balanced (its polygon closes)", kind=words(kind))
+                       if balanced else
+                       words("{kind}: unbalanced, {left} {unit} at most (the vector sum: "
+                             "{value} {unit})", kind=words(kind), left=_n(left), unit=unit,
+                             value=_n(value)))
         return out
 
     def steps(self) -> str:
@@ -214,7 +228,7 @@ class BalanceSolution(ChapterFiles):
             lines += [f"## {words('The construction')}", ""]
             lines += [f"{k}. {t}" for k, t in enumerate((t for t in said if t), 1)]
             lines.append("")
-        # The results are the lines solve prints, with their checks: in English.
+        # The results are the lines solve prints, with their checks.
         lines += [f"## {narrate(phrase('md.results'), lang)}", ""] + [
             f"- {t}" for t in self.lines()]
         return "\n".join(lines) + "\n"

@@ -57,35 +57,43 @@ class CamProfile:
         return f"{v / self.exercise.metre:.4g} {self.exercise.length_unit}"
 
     def lines(self) -> list[str]:
-        """What the command line prints of the profile."""
+        """What the command line prints of the profile, and steps.md lists, in the language
+        spoken."""
         s, f = self.survey, self.exercise.follower
         out = []
+
+        def deg(angle: float) -> str:
+            return numerals(f"{math.degrees(angle):.2f}")
+
+        def length(v: float) -> str:
+            return numerals(_signed(self.length_text(v)))
         if f.kind != "flat-faced":
             st = s.steepest
             steep = abs(math.degrees(st.pressure_angle))
-            out.append(f"pressure angle: greatest {steep:.2f}° at θ = "
-                       f"{math.degrees(st.theta):.2f}°" + (
-                           " (over the 30° a translating follower is usually held to)"
-                           if steep > 30 and not f.oscillating else ""))
+            out.append(words("pressure angle: greatest {angle}° at θ = {theta}°",
+                             angle=numerals(f"{steep:.2f}"), theta=deg(st.theta)) + (
+                words(" (over the 30° a translating follower is usually held to)")
+                if steep > 30 and not f.oscillating else ""))
         st = s.sharpest
-        what = "the profile's" if f.kind == "flat-faced" else "the pitch curve's"
-        out.append(f"{what} least radius of curvature: {self.length_text(st.rho)} at θ = "
-                   f"{math.degrees(st.theta):.2f}°" + (
-                       f" (the roller's radius is {self.length_text(f.radius)})"
-                       if f.kind == "roller" else ""))
+        out.append(words("the profile's least radius of curvature: {rho} at θ = {theta}°"
+                         if f.kind == "flat-faced" else
+                         "the pitch curve's least radius of curvature: {rho} at θ = {theta}°",
+                         rho=length(st.rho), theta=deg(st.theta)) + (
+            words(" (the roller's radius is {radius})", radius=length(f.radius))
+            if f.kind == "roller" else ""))
         if f.kind == "flat-faced":
             lo, hi = s.face
-            text = self.length_text
-            out.append(f"the face is touched from {_signed(text(lo))} to {text(hi)} along it "
-                       f"from the follower's axis: a face at least {text(hi - lo)} wide")
+            out.append(words("the face is touched from {lo} to {hi} along it from the "
+                             "follower's axis: a face at least {width} wide",
+                             lo=length(lo), hi=length(hi), width=length(hi - lo)))
         if s.undercut:
-            out.append(f"UNDERCUT from θ = {math.degrees(s.undercut[0].theta):.2f}° to "
-                       f"{math.degrees(s.undercut[-1].theta):.2f}° (marked on the layout)")
+            out.append(words("UNDERCUT from θ = {start}° to {end}° (marked on the layout)",
+                             start=deg(s.undercut[0].theta), end=deg(s.undercut[-1].theta)))
         worst = max((m for _, m in s.misses), default=0.0)
-        verdict = "each where the closed form puts it" if not s.misses else \
+        verdict = words("each where the closed form puts it") if not s.misses else \
             f"OFF by {worst:.1e} m"
-        out.append(f"profile by inversion: {len(self.layout.places)} stations laid out, "
-                   f"{verdict}")
+        out.append(words("profile by inversion: {n} stations laid out, {verdict}",
+                         n=numerals(str(len(self.layout.places))), verdict=verdict))
         return out
 
     def steps(self) -> list[str]:

@@ -34,6 +34,11 @@ _AGREE = 1e-12
 roundings of the lift."""
 
 
+
+def _n(value: float) -> str:
+    """A number as the results print it, in the spoken language's digits."""
+    return numerals(f"{value:.6g}")
+
 @dataclass(frozen=True)
 class SegmentPeaks:
     """One segment's peaks: by the textbook formula, and by the law sampled (m/s, m/s²)."""
@@ -115,27 +120,31 @@ class CamSolution(ChapterFiles):
 
     # ----- what it writes ---------------------------------------------------------------------
     def lines(self) -> list[str]:
-        """What the command line prints: each segment's peaks, checked."""
+        """What the command line prints, and steps.md lists, in the language spoken: each
+        segment's peaks, checked."""
         ex = self.exercise
         unit = ex.length_unit
         size = 1.0 / ex.metre
         out = []
         for p in self.peaks:
-            a = "∞ (at its ends)" if math.isinf(p.acceleration) else \
-                f"{p.acceleration * size:.6g} {unit}/s²"
+            a = words("∞ (at its ends)") if math.isinf(p.acceleration) else \
+                f"{_n(p.acceleration * size)} {unit}/s²"
             if ex.jerk:
-                a += ", j_max = " + ("∞ (where ÿ jumps)" if math.isinf(p.jerk) else
-                                     f"{p.jerk:.6g} m/s³")
+                a += ", j_max = " + (words("∞ (where ÿ jumps)") if math.isinf(p.jerk) else
+                                     f"{_n(p.jerk)} m/s³")
             arm = ex.follower.arm if ex.follower.oscillating else 0.0
-            swing = (f" (the arm: {p.velocity / arm:.6g} rad/s, "
-                     f"{p.acceleration / arm:.6g} rad/s²)") if arm else ""
-            out.append(f"segment {p.index} ({p.kind}, {p.law}): v_max = "
-                       f"{p.velocity * size:.6g} {unit}/s, a_max = {a}{swing}   "
-                       f"{'check ok' if p.passed else 'check FAILED'}")
+            swing = words(" (the arm: {w} rad/s, {a} rad/s²)", w=_n(p.velocity / arm),
+                          a=_n(p.acceleration / arm)) if arm else ""
+            out.append(words("segment {k} ({kind}, {law}): v_max = {v} {unit}/s, a_max = "
+                             "{a}{swing}   {check}", k=p.index, kind=Word(p.kind),
+                             law=Word(p.law), v=_n(p.velocity * size), unit=unit, a=a,
+                             swing=swing,
+                             check=words("check ok" if p.passed else "check FAILED")))
         worst = max((m for *_, m in self.misses), default=0.0)
-        verdict = "all on their laws" if not self.misses else f"OFF by {worst:.1e} m"
-        out.append(f"displacement diagram: {sum(len(c) for c in self.diagram.curves)} points "
-                   f"constructed, {verdict}")
+        verdict = words("all on their laws") if not self.misses else f"OFF by {worst:.1e} m"
+        out.append(words("displacement diagram: {n} points constructed, {verdict}",
+                         n=numerals(str(sum(len(c) for c in self.diagram.curves))),
+                         verdict=verdict))
         return out + self.profile.lines()
 
     @cached_property
@@ -249,7 +258,7 @@ class CamSolution(ChapterFiles):
         lines += [f"## {words('The displacement diagram')} (`displacement.svg`)", ""]
         said = [narrate(s, lang) for s in self.diagram.construction.steps.values()]
         lines += [f"{k}. {t}" for k, t in enumerate((t for t in said if t), 1)]
-        # The peaks are the lines solve prints, with their checks: in English.
+        # The peaks are the lines solve prints, with their checks.
         lines += ["", f"## {words('Peaks')} (`velocity.svg`, `acceleration.svg`)", "",
                   words("The cam turns at constant speed, so ẏ = y′ω and ÿ = y″ω² (the notes' "
                         "chain rule with α = 0)."), ""]

@@ -508,7 +508,9 @@ def _solve_other(ex, solve, out_dir: str | None, pdf: bool) -> None:
         solved = solve(ex)
         reason = cairo_missing() if pdf else None
         written = solved.write(out, pdf=pdf and reason is None)
-    for line in solved.lines():
+    with speaking("en"):                # the terminal's checks are English, as a linkage's
+        lines = solved.lines()
+    for line in lines:
         click.echo(line)
     click.echo(f"wrote {len(written)} files to {out}/")
     if reason:

@@ -237,9 +237,13 @@ class TrainSolution(ChapterFiles):
         lines += ["", f"## {narrate(phrase('md.results'), lang)}", "", f"| {columns} |",
                   "|---|---|---|---|---|"]
         for q in self.quantities.values():
-            lines.append(f"| {ask_symbol(q.name)} | {fraction_text(q.exact)} | "
-                         f"{fraction_text(q.reference)} | {words('yes' if q.passed else 'NO')} "
-                         f"| {words(q.method)} |")
+            if q.name in MESH_ASKS:         # a length, an angle, a ratio: not a fraction
+                found = _mesh_text(q.name, float(q.exact), self.mesh)
+                willis = _mesh_text(q.name, float(q.reference), self.mesh_reference)
+            else:
+                found, willis = fraction_text(q.exact), fraction_text(q.reference)
+            lines.append(f"| {ask_symbol(q.name)} | {found} | {willis} | "
+                         f"{words('yes' if q.passed else 'NO')} | {words(q.method)} |")
         return "\n".join(lines) + "\n"
 
     @property
@@ -326,18 +330,20 @@ def _plain(x: Fraction) -> str:
 
 
 def _mesh_text(name: str, value: float, mesh) -> str:
-    """A mesh quantity as the command line says it: mm, degrees, a ratio, the gears."""
+    """A mesh quantity as the command line and steps.md say it, in the language spoken: mm,
+    degrees, a ratio, the gears."""
     if name in ("path_of_contact", "arc_of_contact", "circular_pitch"):
-        return f"{value * 1e3:.6g} mm"
+        return f"{numerals(f'{value * 1e3:.6g}')} mm"
     if name == "pressure_angle":
-        return f"{math.degrees(value):.6g}°"
+        return f"{numerals(f'{math.degrees(value):.6g}')}°"
     if name == "least_teeth":
-        return f"{value:.0f} teeth on the pinion"
+        return words("{n} teeth on the pinion", n=numerals(f"{value:.0f}"))
     if name == "interference":
         gears = mesh.interference
-        return ("none" if not gears else
-                "the tips of gear " + " and ".join(map(str, gears)) + " cut into the other's flank")
-    return f"{value:.6g}"
+        return (words("none") if not gears else
+                words("the tips of gear {gears} cut into the other's flank",
+                      gears=f" {words('and')} ".join(map(str, gears))))
+    return numerals(f"{value:.6g}")
 
 
 def _head(train, m: int) -> str:

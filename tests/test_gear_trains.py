@@ -65,6 +65,27 @@ def test_the_compound_train_value_cancels_its_idler():
     assert s.found.speeds[6] == F(100)                                        # 900 cw in
 
 
+def test_steps_md_gives_the_mesh_in_millimetres_and_degrees_as_the_terminal_does():
+    """The spur pair of module 10, 20 and 40 teeth at 20°: its results table says the
+    circular pitch πm, the path of contact √(ra₂² − rb₂²) + √(ra₃² − rb₃²) − (r₂ + r₃) sin φ
+    (addendum one module) and the contact ratio path / (πm cos φ), not the exact fractions
+    of their floats."""
+    import math
+
+    m, phi, r2, r3 = 10.0, math.radians(20.0), 100.0, 200.0
+    path = (math.sqrt((r2 + m) ** 2 - (r2 * math.cos(phi)) ** 2)
+            + math.sqrt((r3 + m) ** 2 - (r3 * math.cos(phi)) ** 2) - (r2 + r3) * math.sin(phi))
+    table = solved("involute-pair").steps().split("## Results")[1]
+    rows = {cells[0]: cells[1:3] for line in table.splitlines() if line.startswith("| ")
+            for cells in [[c.strip() for c in line.strip("|").split("|")]]}
+    assert rows["pressure_angle"] == ["20°", "20°"]
+    assert rows["circular_pitch"] == [f"{math.pi * m:.6g} mm"] * 2
+    assert rows["path_of_contact"] == [f"{path:.6g} mm"] * 2
+    assert rows["contact_ratio"] == [f"{path / (math.pi * m * math.cos(phi)):.6g}"] * 2
+    assert rows["least_teeth"][0] == "15 teeth on the pinion"
+    assert "/" not in "".join(rows["arc_of_contact"])
+
+
 @pytest.mark.parametrize("name", sorted(bundled_trains()))
 def test_every_bundled_train_agrees_with_willis_exactly(name):
     s = solved(name)

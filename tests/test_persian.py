@@ -100,3 +100,35 @@ def test_digits_latin_and_a_files_lang(tmp_path):
     assert "حل کامل" in (out / "steps.md").read_text(encoding="utf-8")
     with pytest.raises(InputError, match=r"bad.toml:1: lang is the language of the steps"):
         parse_exercise('lang = "de"\n' + text, "bad.toml")
+
+
+SYMBOLS = {"rad", "rpm", "cos", "sin", "tan"}
+"""Latin a Persian text keeps: units and the functions of a formula."""
+
+
+@pytest.mark.parametrize("name", ["oscillating-roller", "offset-knife-edge",
+                                  "eccentric-flat-face", "roller-harmonic-cycloidal",
+                                  "four-mass-shaft", "single-cylinder", "inline-four",
+                                  "involute-pair", "planetary-q1"])
+def test_a_chapters_persian_steps_say_their_results_in_persian(name):
+    """A cam's, a rotor's, an engine's and a train's steps.md in Persian: the steps and the
+    results alike, their words and their digits; only what the file itself says (its name
+    and description), the file names, the quantities' keys and the units stay Latin."""
+    import re
+
+    from tarsim.constructions.narration import speaking
+    from tarsim.exercises.balance_solution import solve_balance
+    from tarsim.exercises.cam_solution import solve_cam
+    from tarsim.exercises.catalog import load
+    from tarsim.exercises.train_solution import solve_train
+
+    ex = load(name)
+    solve = {"CamExercise": solve_cam, "BalanceExercise": solve_balance,
+             "TrainExercise": solve_train}[type(ex).__name__]
+    with speaking("fa"):
+        md = solve(ex).steps()
+    body = md.replace(ex.description, "").replace(ex.name, "")
+    body = re.sub(r"`[^`]*`|\w*_\w*|^\| [^|]* \|", "", body, flags=re.M)
+    assert set(re.findall(r"[A-Za-z]{3,}", body)) <= SYMBOLS, name
+    # Every measured number in Persian digits (a whole number may be a name: gear 2).
+    assert re.search("[۰-۹]٫[۰-۹]", body) and not re.search(r"\d\.\d", body), name

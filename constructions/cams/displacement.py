@@ -27,7 +27,7 @@ from dataclasses import dataclass, field
 
 from .. import geometry as g
 from ..errors import InputError
-from ..narration import phrase
+from ..narration import Word, drawn_angle, drawn_length, phrase
 from ..record import Construction, Kind, Panel, Ref
 
 __all__ = ["Segment", "Displacement", "draw_displacement"]
@@ -114,8 +114,8 @@ class _Segment:
         """The segment's start and its equal divisions: an ordinate at each."""
         n = self.s.divisions
         start = self.give("x0", g.Point(self.x0, 0.0), said=phrase(
-            "cam.ordinates", k=self.k, kind=self.s.kind, n=n,
-            angle=f"{math.degrees(self.s.angle):.4g}°"))
+            "cam.ordinates", k=self.k, kind=Word(self.s.kind), n=n,
+            angle=drawn_angle(self.s.angle)))
         out = []
         for i in range(n + 1):
             foot = self.act(f"foot{i}", "lay_off", start, "base", length=i * self.width / n)
@@ -149,7 +149,7 @@ class _Segment:
 
     def dwell(self) -> list[tuple[float, Ref]]:
         a = self.give("a", g.Point(self.x0, self.y0), said=phrase(
-            "cam.dwell", k=self.k, angle=f"{math.degrees(self.s.angle):.4g}°"))
+            "cam.dwell", k=self.k, angle=drawn_angle(self.s.angle)))
         b = self.give("b", g.Point(self.x0 + self.width, self.y0))
         self.act("line", "line_through", a, b)
         return [(0.0, a), (self.s.angle, b)]
@@ -168,7 +168,7 @@ class _Segment:
         # The semicircle on the lift, bulging back from the start: from the low end for a
         # rise, from the top for a return, in n equal arcs.
         first = self.give("S0", g.Point(self.x0, self.y0), said=phrase(
-            "cam.harmonic", k=self.k, n=n, lift=f"{abs(self.h) * 1e3:.4g} mm"))
+            "cam.harmonic", k=self.k, n=n, lift=drawn_length(abs(self.h))))
         turn = -math.pi / n if self.h > 0 else math.pi / n
         self.act("semicircle", "circle_through", centre, first, kind=Kind.ARC)
         self.out.arcs.append((centre, first, n * turn))
@@ -184,10 +184,10 @@ class _Segment:
         in the ratio 1 : 3 : 5 … by parallels from a line marked at 1, 4, 9 … equal steps
         (``m`` of them), up (``sign`` +1) or down. The marked line leans into the segment,
         clear of its neighbours' constructions. Returns the foot and the m divisions."""
-        words = dict(k=self.k, half="first" if part == 0 else "second", m=m,
-                     where="start" if part == 0 else "end",
-                     way="up from the foot" if sign > 0 else "down from the top")
-        said = (phrase("cam.blend", rise=f"{abs(rise) * 1e3:.4g} mm", **words)
+        words = dict(k=self.k, half=Word("first" if part == 0 else "second"), m=m,
+                     where=Word("start" if part == 0 else "end"),
+                     way=Word("up from the foot" if sign > 0 else "down from the top"))
+        said = (phrase("cam.blend", rise=drawn_length(abs(rise)), **words)
                 if self.s.law == "modified uniform velocity" else phrase("cam.parabolic", **words))
         foot = self.give(f"h{part}:O", g.Point(x, y), said=said)
         top = self.give(f"h{part}:M", g.Point(x, y + sign * rise))
@@ -253,7 +253,7 @@ class _Segment:
         n = self.s.divisions
         radius = abs(self.h) / (2 * math.pi)
         start = self.give("A", g.Point(self.x0, self.y0), said=phrase(
-            "cam.cycloidal", k=self.k, n=n, radius=f"{radius * 1e3:.4g} mm"))
+            "cam.cycloidal", k=self.k, n=n, radius=drawn_length(radius)))
         end = self.give("B", g.Point(self.x0 + self.width, self.y0 + self.h))
         diagonal = self.act("diagonal", "line_through", start, end, kind=Kind.LINE)
         up = self.act("ordinate", "perpendicular_through", start, "base", kind=Kind.LINE)
@@ -272,3 +272,4 @@ class _Segment:
             self.out.strokes += [(p, on), (on, point)]
             out.append((t, point))
         return out
+

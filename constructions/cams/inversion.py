@@ -24,7 +24,7 @@ import math
 from dataclasses import dataclass, field
 
 from .. import geometry as g
-from ..narration import Phrase, phrase
+from ..narration import Phrase, Word, drawn_angle, drawn_length, phrase
 from ..record import Construction, Kind, Ref
 from ..reference.cam_profile import Follower, arm_start, prime_radius
 from .displacement import Displacement
@@ -88,49 +88,50 @@ def lay_out_profile(d: Displacement, base_radius: float, f: Follower, sigma: flo
     c = Construction()
     out = Layout(c, f)
     o = c.give("O", g.Point(0.0, 0.0), label="O", phrase=phrase("cam.centre"))
-    turn_word = "clockwise" if sigma > 0 else "counter-clockwise"
+    turn_word = Word("clockwise" if sigma > 0 else "counter-clockwise")
     out.circles["base"] = c.draw("base", "swing_arc", o, radius=base_radius, kind=Kind.ARC,
-                                 phrase=phrase("cam.base", r=_mm(base_radius)))
+                                 phrase=phrase("cam.base", r=drawn_length(base_radius)))
     rp = prime_radius(base_radius, f)
     if f.kind == "roller":
         out.circles["prime"] = c.draw("prime", "swing_arc", o, radius=rp, kind=Kind.ARC,
-                                      phrase=phrase("cam.prime", r=_mm(rp),
-                                                    roller=_mm(f.radius)))
+                                      phrase=phrase("cam.prime", r=drawn_length(rp),
+                                                    roller=drawn_length(f.radius)))
     if f.oscillating:
         psi0, kappa = arm_start(base_radius, f)
         a0 = c.give("A", g.Point(*f.pivot), label="A")
         out.circles["pivot"] = c.draw("pivots", "swing_arc", o, radius=math.hypot(*f.pivot),
                                       kind=Kind.ARC, phrase=phrase(
-                                          "cam.pivot_circle", arm=_mm(f.arm)))
+                                          "cam.pivot_circle", arm=drawn_length(f.arm)))
         rest0 = c.give("C", g.Point(f.pivot[0] + f.arm * math.cos(psi0),
                                      f.pivot[1] + f.arm * math.sin(psi0)), label="",
-                       phrase=phrase("cam.stations", turn=turn_word, follower=f.kind))
+                       phrase=phrase("cam.stations", turn=turn_word, follower=Word(f.kind)))
     else:
         if f.offset:
             out.circles["offset"] = c.draw("offsets", "swing_arc", o, radius=abs(f.offset),
                                            kind=Kind.ARC,
-                                           phrase=phrase("cam.offset", e=_mm(abs(f.offset))))
+                                           phrase=phrase("cam.offset",
+                                                         e=drawn_length(abs(f.offset))))
         s0 = math.sqrt(rp * rp - f.offset * f.offset) if f.kind != "flat-faced" else rp
         x0 = f.offset if f.kind != "flat-faced" else 0.0
         rest0 = c.give("F", g.Point(x0, s0), label="", phrase=phrase(
-            "cam.stations", turn=turn_word, follower=f.kind))
+            "cam.stations", turn=turn_word, follower=Word(f.kind)))
         foot0 = c.give("T", g.Point(x0, 0.0), label="") if x0 else o
-    then = phrase(_THEN[f.kind], r=_mm(f.radius)) if f.kind in _THEN else None
+    then = phrase(_THEN[f.kind], r=drawn_length(f.radius)) if f.kind in _THEN else None
     for i, (theta, lift) in enumerate(stations(d)):
         back = -sigma * theta
         rest = c.draw(f"rest{i}", "rotate_about", rest0, o, angle=back, label=str(i))
         if f.oscillating:
             pivot = c.draw(f"A{i}", "rotate_about", a0, o, angle=back)
             trace = c.draw(f"P{i}", "rotate_about", rest, pivot, angle=kappa * lift / f.arm,
-                           phrase=phrase("cam.swing", i=i, deg=_deg(theta),
-                                         swing=_deg(lift / f.arm), then=then))
+                           phrase=phrase("cam.swing", i=i, deg=drawn_angle(theta),
+                                         swing=drawn_angle(lift / f.arm), then=then))
             axis = c.draw(f"arm{i}", "line_through", pivot, trace, kind=Kind.LINE)
         else:
             pivot = None
             foot = c.draw(f"T{i}", "rotate_about", foot0, o, angle=back) if foot0 != o else o
             axis = c.draw(f"axis{i}", "line_through", foot, rest, kind=Kind.LINE)
             trace = c.draw(f"P{i}", "lay_off", rest, axis, length=lift, phrase=phrase(
-                "cam.lift", i=i, deg=_deg(theta), lift=_mm(lift), then=then))
+                "cam.lift", i=i, deg=drawn_angle(theta), lift=drawn_length(lift), then=then))
         if f.kind == "roller":
             body = c.draw(f"roller{i}", "swing_arc", trace, radius=f.radius, kind=Kind.ARC)
         elif f.kind == "flat-faced":
@@ -148,11 +149,3 @@ _THEN = {"roller": "cam.then.roller", "flat-faced": "cam.then.flat-faced"}
 _PROFILE = {"knife-edge": "cam.profile.knife-edge", "roller": "cam.profile.roller",
             "flat-faced": "cam.profile.flat-faced"}
 """How the profile is drawn through the stations, by follower."""
-
-
-def _mm(v: float) -> str:
-    return f"{v * 1e3:.4g} mm"
-
-
-def _deg(v: float) -> str:
-    return f"{math.degrees(v):.4g}°"

@@ -22,7 +22,7 @@ from dataclasses import dataclass, field
 
 from .. import geometry as g
 from ..errors import InputError
-from ..narration import Phrase, Word, phrase
+from ..narration import Number, Phrase, Word, drawn_angle, drawn_length, phrase
 from ..record import Construction, Kind, Panel, Ref
 from .train import GearTrain
 
@@ -130,29 +130,27 @@ class _Drafting:
                     panel=Panel.SPACE, **params)
         return ref
 
-    def mm(self, metres: float) -> str:
-        return f"{metres * 1e3:.4g} mm"
 
     def run(self, profiles: bool = True) -> None:
         c, (a, b) = self.c, self.n
         (r2, r3), (rb2, rb3), dist = self.pitch, self.base, self.distance
         out = self.out
         c.give("O2", g.Point(0.0, 0.0), label=f"O{a}", kind=Kind.JOINT,
-               phrase=phrase("involute.centres", a=a, b=b, distance=self.mm(dist)))
+               phrase=phrase("involute.centres", a=a, b=b, distance=drawn_length(dist)))
         c.give("O3", g.Point(dist, 0.0), label=f"O{b}", kind=Kind.JOINT)
         out.centres = {a: (0.0, 0.0), b: (dist, 0.0)}
         self.act("centres", "line_through", "O2", "O3", kind=Kind.GUIDE, said=None)
         # The pitch point divides O2O3 as the base radii (the law of gearing).
         share = dist * rb2 / (rb2 + rb3)
         self.act("P", "lay_off", "O2", "O3", length=share, label="P", kind=Kind.CENTRE,
-                 said=phrase("involute.pitch_point", a=a, b=b, o2p=self.mm(share),
+                 said=phrase("involute.pitch_point", a=a, b=b, o2p=drawn_length(share),
                              na=f"{self.teeth[0]:g}", nb=f"{self.teeth[1]:g}"))
         for ref, centre, radius, name in (("pitch2", "O2", r2, _circle("pitch", a)),
                                           ("pitch3", "O3", r3, _circle("pitch", b)),
                                           ("base2", "O2", rb2, _circle("base", a)),
                                           ("base3", "O3", rb3, _circle("base", b))):
             self.act(ref, "swing_arc", centre, radius=radius, kind=Kind.ARC,
-                     said=phrase("involute.circle", name=name, radius=self.mm(radius)))
+                     said=phrase("involute.circle", name=name, radius=drawn_length(radius)))
             out.radii[ref] = radius
         # Thales: the tangency point of the line of action on each base circle.
         for k, (centre, base) in enumerate((("O2", "base2"), ("O3", "base3")), start=2):
@@ -178,7 +176,7 @@ class _Drafting:
                                           ("root2", "O2", r2 - ded, _circle("root", a)),
                                           ("root3", "O3", r3 - ded, _circle("root", b))):
             self.act(ref, "swing_arc", centre, radius=radius, kind=Kind.ARC,
-                     said=phrase("involute.circle", name=name, radius=self.mm(radius)))
+                     said=phrase("involute.circle", name=name, radius=drawn_length(radius)))
             out.radii[ref] = radius
         self.act("A", "intersect_line_circle", "action", "addendum3", pick="backward",
                  label="A", said=phrase("involute.start", b=b))
@@ -194,9 +192,10 @@ class _Drafting:
         out.circular_pitch = r2 * 2 * math.pi / self.teeth[0]
         out.contact_ratio = path / out.base_pitch
         self.act("AB", "measure", "A", "B", label="path of contact", kind=Kind.DIMENSION,
-                 said=phrase("involute.path", path=self.mm(path), arc=self.mm(out.arc),
-                             pitch=self.mm(out.base_pitch), ratio=f"{out.contact_ratio:.4g}",
-                             angle=f"{math.degrees(out.pressure_angle):.4g}°"))
+                 said=phrase("involute.path", path=drawn_length(path),
+                             arc=drawn_length(out.arc), pitch=drawn_length(out.base_pitch),
+                             ratio=Number(out.contact_ratio, ".4g"),
+                             angle=drawn_angle(out.pressure_angle)))
         out.interference = tuple(
             n for n, end, t in ((b, "A", "T2"), (a, "B", "T3"))
             if g.distance(self.c.output("P"), self.c.output(end))
@@ -213,7 +212,7 @@ class _Drafting:
         # Step the arc TS = PT back along the base circle: S, where the string starts.
         s = self.act(f"S{k}", "rotate_about", t, centre, angle=pt / rb, label=f"S{n}",
                      said=phrase("involute.start_point", gear=n, point=f"S{n}",
-                                 t=self.c[t].label, length=self.mm(pt)))
+                                 t=self.c[t].label, length=drawn_length(pt)))
         sx, sy = self.c.output(s).xy
         ox, oy = self.c.output(centre).xy
         self.out.starts[n] = math.atan2(sy - oy, sx - ox)
@@ -227,7 +226,7 @@ class _Drafting:
                                    said=None))
         self.c.draw(f"profile{k}", "mark", points[-1], panel=Panel.SPACE, phrase=phrase(
             "involute.profile", gear=n, point=f"S{n}", divisions=_DIVISIONS,
-            arc=f"{math.degrees(step):.4g}°"))
+            arc=drawn_angle(step)))
         self.out.profiles[n] = points
 
 

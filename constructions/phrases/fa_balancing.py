@@ -52,4 +52,43 @@ WORDS: dict[str, str] = {
     "{share} of the reciprocating mass balanced by a rotating mass opposite the crank":
         "{share} از جرم رفت\u200cوبرگشتی با جرمی دوار روبه\u200cروی لنگ متعادل شده است",
     "at θ = {angle}°": "در θ = {angle} درجه",
+    # the results steps.md lists (exercises/balance_solution.py): a markdown line, where the
+    # degree sign stays by its number
+    "ΣF_x = {x}ω², ΣF_y = {y}ω² (kg·m): the resultant {size} kg·m at {angle}° ({force} N at "
+    "ω = {speed} rad/s)":
+        "ΣF_x = {x}ω²، ΣF_y = {y}ω² (kg·m): برآیند {size} kg·m با زاویهٔ {angle}° ({force} N "
+        "در ω = {speed} rad/s)",
+    "plane {plane}: balancing m·r = {size} kg·m at {angle}°, so {mass} kg at {radius}":
+        "صفحهٔ {plane}: m·r متعادل‌کننده = {size} kg·m با زاویهٔ {angle}°، یعنی جرم {mass} "
+        "kg در شعاع {radius}",
+    "2-1, between": "۲-۱، میان", "2-2, outside": "۲-۲، بیرون از",
+    "the masses lie in one axial plane: one mass of m·r = {size} kg·m at {angle}° in the plane "
+    "at {place} balances force and couple together (the notes' case {case} the masses' planes: "
+    "moments about each mass's plane fix it)":
+        "جرم‌ها همه در یک صفحهٔ محوری‌اند: یک جرم با m·r = {size} kg·m و زاویهٔ "
+        "{angle}° در صفحه‌ای به فاصلهٔ {place}، نیرو و کوپل را با هم متعادل می‌کند "
+        "(حالت {case} صفحه‌های جرم‌ها در جزوه: گشتاورگیری حول صفحهٔ هر جرم آن را "
+        "معین می‌کند)",
+    "at {place} one plane balances the forces only: a couple of {couple} kg·m² (× ω²) is left, "
+    "for a second plane to take":
+        "یک صفحه در {place} تنها نیروها را متعادل می‌کند: کوپلی به اندازهٔ {couple} kg·m² "
+        "(× ω²) باقی می‌ماند که صفحهٔ دومی باید آن را بگیرد",
+    "each where the vector sum puts it": "هر یک همان‌جا که جمع برداری نشان می‌دهد",
+    "polygons closed: {verdict}; the balanced rotor's residual force {residual} kg·m":
+        "چندضلعی‌ها بسته شدند: {verdict}؛ نیروی باقی‌ماندهٔ روتور متعادل‌شده "
+        "{residual} kg·m",
+    "at θ = {angle}°: primary force {primary} N, secondary {secondary} N along the line of "
+    "stroke (n = l/r = {n})":
+        "در θ = {angle}°: نیروی اولیه {primary} N و نیروی ثانویه {secondary} N در امتداد خط "
+        "کورس (n = l/r = {n})",
+    "with {share} of the reciprocating mass balanced by a rotating mass: {along} N along the "
+    "line of stroke and {across} N across it":
+        "با متعادل کردن {share} از جرم رفت‌وبرگشتی به کمک جرمی دوار: {along} N در امتداد "
+        "خط کورس و {across} N عمود بر آن",
+    "at most {along} N along (θ = 0°, 180°) and {across} N across (θ = 90°, 270°)":
+        "حداکثر {along} N در امتداد کورس (θ = ۰°، ۱۸۰°) و {across} N عمود بر آن "
+        "(θ = ۹۰°، ۲۷۰°)",
+    "{kind}: balanced (its polygon closes)": "{kind}: متوازن (چندضلعی آن بسته است)",
+    "{kind}: unbalanced, {left} {unit} at most (the vector sum: {value} {unit})":
+        "{kind}: نامیزان، حداکثر {left} {unit} (جمع برداری: {value} {unit})",
 }

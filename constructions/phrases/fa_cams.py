@@ -135,4 +135,39 @@ WORDS: dict[str, str] = {
     "input turned {sense} from θ = {angle}° (°)": "چرخش ورودی در جهت {sense} از θ = {angle}° (°)",
     "by the force polygons": "با چندضلعی‌های نیرو",
     "{name}: the driving torque, positive {sense}": "{name}: گشتاور محرک، مثبت در جهت {sense}",
+    # ----- cams: the results steps.md lists (exercises/cam_solution.py, cam_layout.py) ------
+    "rise": "صعود", "return": "بازگشت",
+    # the steps' small words (constructions/cams/displacement.py, inversion.py)
+    "start": "ابتدای بخش", "end": "انتهای بخش",
+    "up from the foot": "از پای آن رو به بالا", "down from the top": "از بالای آن رو به پایین",
+    "flat-faced": "تخت", "knife-edge": "نوک‌تیز", "roller": "غلتکی",
+    "uniform velocity": "سرعت ثابت", "modified uniform velocity": "سرعت ثابت اصلاح‌شده",
+    "simple harmonic": "هارمونیک ساده", "parabolic": "شتاب ثابت", "cycloidal": "سیکلوئیدی",
+    "segment {k} ({kind}, {law}): v_max = {v} {unit}/s, a_max = {a}{swing}   {check}":
+        "بخش {k} ({kind}، {law}): v_max = {v} {unit}/s، a_max = {a}{swing}   {check}",
+    "∞ (at its ends)": "∞ (در دو سر بخش)",
+    "∞ (where ÿ jumps)": "∞ (جایی که ÿ جهش دارد)",
+    " (the arm: {w} rad/s, {a} rad/s²)": " (بازو: {w} rad/s، {a} rad/s²)",
+    "check ok": "کنترل: درست", "check FAILED": "کنترل: نادرست",
+    "all on their laws": "همه بر قانون حرکت خود",
+    "displacement diagram: {n} points constructed, {verdict}":
+        "نمودار جابه‌جایی: {n} نقطه ترسیم شد، {verdict}",
+    "pressure angle: greatest {angle}° at θ = {theta}°":
+        "زاویهٔ فشار: بیشینه {angle}° در θ = {theta}°",
+    " (over the 30° a translating follower is usually held to)":
+        " (بیش از ۳۰°، که زاویهٔ فشار پیروِ انتقالی معمولاً زیر آن نگه داشته می‌شود)",
+    "the profile's least radius of curvature: {rho} at θ = {theta}°":
+        "کمترین شعاع انحنای پروفیل: {rho} در θ = {theta}°",
+    "the pitch curve's least radius of curvature: {rho} at θ = {theta}°":
+        "کمترین شعاع انحنای منحنی گام: {rho} در θ = {theta}°",
+    " (the roller's radius is {radius})": " (شعاع غلتک {radius} است)",
+    "the face is touched from {lo} to {hi} along it from the follower's axis: a face at least "
+    "{width} wide":
+        "نقطهٔ تماس روی سطح پیرو از {lo} تا {hi} از محور پیرو جابه‌جا می‌شود: پهنای "
+        "سطح دست‌کم {width}",
+    "UNDERCUT from θ = {start}° to {end}° (marked on the layout)":
+        "زیربرش از θ = {start}° تا {end}° (روی ترسیم مشخص شده است)",
+    "each where the closed form puts it": "هر یک همان‌جا که رابطهٔ بسته نشان می‌دهد",
+    "profile by inversion: {n} stations laid out, {verdict}":
+        "پروفیل به روش وارونگی: {n} موقعیت ترسیم شد، {verdict}",
 }

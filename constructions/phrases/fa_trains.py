@@ -55,4 +55,12 @@ WORDS: dict[str, str] = {
     "addendum and root circles": "دایره\u200cهای ادندم و ریشه", "line of action": "خط عمل",
     "line of centres, common tangent": "خط\u200cالمرکزین، مماس مشترک",
     "path of contact": "مسیر تماس", "tooth profiles": "پروفیل\u200cهای دندانه",
+    # a mesh's results (exercises/train_solution.py)
+    "involute mesh": "درگیری اینولوت",
+    "involute mesh, drawn with fewer teeth until clear":
+        "درگیری اینولوت، ترسیم‌شده با دندانه‌های کمتر تا جایی که تداخل نماند",
+    "{n} teeth on the pinion": "{n} دندانه روی پینیون",
+    "none": "ندارد", "and": "و",
+    "the tips of gear {gears} cut into the other's flank":
+        "نوک دندانه‌های چرخدندهٔ {gears} در دامنهٔ دندانه‌های چرخدندهٔ دیگر فرو می‌رود",
 }
