@@ -26,6 +26,7 @@ from typing import Any
 
 from . import asks as A
 from .errors import TarsimError
+from .narration import Phrase
 from .record import Panel, Ref
 from .reference.centres import centre_error
 
@@ -55,6 +56,8 @@ class Quantity:
     conditioning: float
     method: str
     alternatives: dict[str, Quantity] = field(default_factory=dict)
+    said: Phrase | None = None
+    """The method in words any language can say, where ``method`` is more than a name."""
 
     @property
     def passed(self) -> bool:
@@ -99,7 +102,8 @@ class Answer:
     ``figures`` is cut from them) and ``arrows`` the vectors drawn beside it that
     belong to its figure; ``panel`` is the panel it is read in. ``found`` is the
     geometric answer itself where the check compares geometry (a centre, possibly at infinity), and
-    ``holds_always`` marks a joint's own centre, true at every instant.
+    ``holds_always`` marks a joint's own centre, true at every instant. ``said`` is the
+    method as a phrase, where ``method`` is English made from one (Grashof's sums).
     """
 
     ask: A.Ask
@@ -112,6 +116,7 @@ class Answer:
     arrows: tuple[Ref, ...] = ()
     found: Any = None
     holds_always: bool = False
+    said: Phrase | None = None
 
 
 @dataclass(frozen=True)
@@ -277,7 +282,8 @@ def check(answer: Answer, expected: Expected, *, scale: float) -> Quantity:
         return _check_centre(answer, expected, scale)
     shown, ref, err = _RULES[type(ask)](answer.value, expected.value, scale)
     tol = _EXACT.get(type(ask), tolerance(answer.conditioning))
-    return Quantity(ask.name, shown, ref, err, tol, answer.conditioning, answer.method)
+    return Quantity(ask.name, shown, ref, err, tol, answer.conditioning, answer.method,
+                    said=answer.said)
 
 
 def _check_centre(answer: Answer, expected: Expected, size: float) -> Quantity:

@@ -17,6 +17,7 @@ from . import asks as A
 from .checks import Answer, grashof_value
 from .errors import AssemblyError
 from .model import Mechanism
+from .narration import Number, Phrase, Word, narrate, phrase
 from .reference.rotatability import four_bar_spans, grashof_class, length_range
 
 __all__ = ["answer_mobility", "answer_grashof", "grashof_askable", "GRASHOF_WHY_NOT"]
@@ -32,39 +33,39 @@ def grashof_askable(mech: Mechanism) -> set[str]:
     return set() if spans is None else {"grashof"} | {f"range_{s}" for s in spans}
 
 
-CHANGE_POINT = ("a change-point linkage (S + L = P + Q): twice a revolution its links fall in "
-                "line, where its two assemblies meet and it may go on in either")
-"""What a change-point linkage is, as an answer about one says it."""
-
-
 def answer_mobility(work, ask: A.Mobility) -> Answer:
     """Grübler's count, and the freedom the position adds where two assemblies meet in it."""
     dof, n, f1, f2 = work.mechanism.mobility()
-    method = f"Grübler: 3({n} − 1) − 2·{f1} − {f2}"
+    said = phrase("overall.grubler", n=n, f1=f1, f2=f2)
     try:
         meeting = work.assembly.meetings
     except AssemblyError:   # not at this position: Grübler's count stands alone
         meeting = ()
     if not meeting:
-        return Answer(ask, {"value": dof}, 1.0, method)
-    return Answer(ask, {"value": dof, "here": dof + len(meeting)}, 1.0,
-                  f"{method}; at this position {' and '.join(meeting)} "
-                  f"{'is' if len(meeting) == 1 else 'are'} where two assemblies meet (a change "
-                  f"point), so the mobility is momentarily {dof + len(meeting)}")
+        return _answer(ask, {"value": dof}, said)
+    points = [part for k, p in enumerate(meeting) for part in ([Word("and")] if k else []) + [p]]
+    return _answer(ask, {"value": dof, "here": dof + len(meeting)},
+                   phrase("overall.meeting" if len(meeting) == 1 else "overall.meetings",
+                          grubler=said, points=points, here=Number(dof + len(meeting), "d")))
 
 
 def answer_grashof(work, ask: A.GrashofClass | A.LengthRange) -> Answer:
     """The class by S + L against P + Q, or a length's range from the inequalities' breakpoints."""
     m = work.mechanism
     gc = grashof_class(m)
-    which = f"; {CHANGE_POINT}" if gc.kind == "change-point" else ""
+    which = phrase("overall.change_point") if gc.kind == "change-point" else None
     if isinstance(ask, A.LengthRange):
         index = four_bar_spans(m)[ask.span]
         lo, hi = length_range(gc.lengths, index)
-        return Answer(ask, {"low": lo, "high": hi, "class": gc.kind, "length": gc.lengths[index]},
-                      1.0, "Grashof's inequalities, at their breakpoints; checked by bisecting "
-                           f"the turning test{which}")
-    value, said = grashof_value(gc.kind, gc.lengths), m.units.length_text
-    return Answer(ask, value, 1.0,
-                  f"Grashof: S + L = {said(value['s_plus_l'])} against P + Q = "
-                  f"{said(value['p_plus_q'])}; checked by turning each link{which}")
+        return _answer(ask, {"low": lo, "high": hi, "class": gc.kind,
+                             "length": gc.lengths[index]},
+                       phrase("overall.range", which=which))
+    value, said = grashof_value(gc.kind, gc.lengths), m.units.length_said
+    return _answer(ask, value, phrase("overall.grashof", s_l=said(value["s_plus_l"]),
+                                      p_q=said(value["p_plus_q"]), which=which))
+
+
+def _answer(ask: A.Ask, value: dict, said: Phrase) -> Answer:
+    """An answer by count or inequality (exact: conditioning 1), its method said in English
+    for results.json and kept as a phrase for steps.md in any language."""
+    return Answer(ask, value, 1.0, narrate(said), said=said)

@@ -520,31 +520,40 @@ def _overall_markdown(ex: Exercise, overall: Overall, figures: list[SolutionFigu
     lines += ["## " + narrate(phrase("md.results"), lang), "",
               narrate(phrase("md.whole_columns"), lang), "|---|---|---|---|---|"]
     for name, q in overall.quantities.items():
+        method = narrate(q.said, lang) if q.said else render(Word(q.method), lang)
         lines.append(f"| {name} | {overall_text(name, q.value, ex.mechanism.units)} | "
                      f"{overall_text(name, q.reference, ex.mechanism.units)} | "
-                     f"{q.rel_error:.2g} | {render(Word(q.method), lang)} |")
+                     f"{q.rel_error:.2g} | {method} |")
     return "\n".join(lines) + "\n"
 
 
 def overall_text(name: str, v: dict, units) -> str:
-    """A whole-mechanism answer in the file's units: "65 mm < AB < 135 mm (crank-rocker)"."""
+    """A whole-mechanism answer in the file's units, in the language spoken: "65 mm < AB <
+    135 mm (crank-rocker)"."""
+    def length(metres: float) -> str:
+        return numerals(units.length_text(metres))
     if "class" in v and "low" in v:
-        span = name[len("range_"):]
+        span, kind = name[len("range_"):], words(v["class"])
         if v["low"] == v["high"]:
-            return f"{span} = {units.length_text(v['low'])} only ({v['class']})"
-        hi = "" if v["high"] is None else f" < {units.length_text(v['high'])}"
-        return f"{units.length_text(v['low'])} < {span}{hi} ({v['class']})"
+            return words("{span} = {length} only ({kind})", span=span, length=length(v["low"]),
+                         kind=kind)
+        hi = "" if v["high"] is None else f" < {length(v['high'])}"
+        return f"{length(v['low'])} < {span}{hi} ({kind})"
     if "here" in v:
-        return f"{v['value']} ({v['here']} at this position)"
+        return words("{value} ({here} at this position)", value=numerals(str(v["value"])),
+                     here=numerals(str(v["here"])))
     if "class" in v:
-        return v["class"]
+        return words(v["class"])
     if "point" in v:
-        return units.length_text(v["value"])
+        return length(v["value"])
     if "by_inspection" in v:
-        return f"{v['value']} ({v['by_inspection']} by inspection, {v['by_kennedy']} by Kennedy)"
+        return words("{value} ({inspection} by inspection, {kennedy} by Kennedy)",
+                     value=numerals(str(v["value"])),
+                     inspection=numerals(str(v["by_inspection"])),
+                     kennedy=numerals(str(v["by_kennedy"])))
     if "slow_deg" in v:
-        return f"{v['value']:.6g} ({v['slow_deg']:.5g}° / {v['quick_deg']:.5g}°)"
-    return f"{v['value']}"
+        return numerals(f"{v['value']:.6g} ({v['slow_deg']:.5g}° / {v['quick_deg']:.5g}°)")
+    return numerals(f"{v['value']}")
 
 
 # ----- steps.md -------------------------------------------------------------------------
@@ -688,15 +697,15 @@ def answer_line(name: str, q: Quantity, units, *, whole: bool = False) -> str:
     ...                               tolerance=1e-9, method="velocity polygon"), Units("m")))
     ω3 = −2.578 rad/s (cw)               check ok 1.3e-16   velocity polygon
     """
-    if not whole:
-        with speaking("en"):                # the terminal's lines are English
+    with speaking("en"):                    # the terminal's lines are English
+        if not whole:
             answer = f"{symbol(name)} = {_show(q.value, units, name)}"
-    elif name.startswith("range_"):        # the text names the span: "65 mm < AB < 135 mm"
-        answer = overall_text(name, q.value, units)
-    else:
-        label = {"dof": "DOF", "grashof": "Grashof class",
-                 "n_centres": "instant centres"}.get(name, name.replace("_", " "))
-        answer = f"{label} = {overall_text(name, q.value, units)}"
+        elif name.startswith("range_"):    # the text names the span: "65 mm < AB < 135 mm"
+            answer = overall_text(name, q.value, units)
+        else:
+            label = {"dof": "DOF", "grashof": "Grashof class",
+                     "n_centres": "instant centres"}.get(name, name.replace("_", " "))
+            answer = f"{label} = {overall_text(name, q.value, units)}"
     verdict = ("check ok" if q.rel_error <= q.tolerance else
                f"check FAILED (tolerance {q.tolerance:.1e})")
     return f"{answer:<36} {verdict} {q.rel_error:.1e}   {method_words(q.method)}"

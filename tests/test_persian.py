@@ -132,3 +132,20 @@ def test_a_chapters_persian_steps_say_their_results_in_persian(name):
     assert set(re.findall(r"[A-Za-z]{3,}", body)) <= SYMBOLS, name
     # Every measured number in Persian digits (a whole number may be a name: gear 2).
     assert re.search("[۰-۹]٫[۰-۹]", body) and not re.search(r"\d\.\d", body), name
+
+
+def test_the_whole_mechanisms_results_are_persian_too(tmp_path):
+    """The notes' crank-rocker question (001): AB may run from 65 to 135 mm. In Persian the
+    class, the range and Grashof's sums are said in the notes' words and Persian digits."""
+    out = tmp_path / "fa"
+    result = CliRunner().invoke(cli, ["solve", "grashof-crank-rocker", "--lang", "fa",
+                                      "--no-pdf", "-o", str(out)])
+    assert result.exit_code == 0, result.output
+    rows = {line.split("|")[1].strip(): [c.strip() for c in line.split("|")[2:-1]]
+            for line in (out / "steps.md").read_text(encoding="utf-8").splitlines()
+            if line.startswith("| ")}
+    assert rows["range_AB"][0] == "۶۵ mm < AB < ۱۳۵ mm (لنگ - آونگ)"
+    assert rows["grashof"][0] == "لنگ - آونگ"
+    assert rows["grashof"][3].startswith("گراشف: S + L = ۱۳۰ میلی\u200cمتر در برابر P + Q = ۱۶۵")
+    assert rows["dof"][:2] == ["۱", "۱"] and rows["dof"][3].startswith("گروبلر")
+    assert "crank-rocker" in result.output           # the terminal's lines stay English

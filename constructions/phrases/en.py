@@ -46,6 +46,18 @@ PHRASES: dict[str, str] = {
     "md.columns": "| quantity | construction | analytic | relative error | method |",
     "md.whole": "The mechanism as a whole",
     "md.whole_columns": "| quantity | answer | check | relative error | method |",
+    "overall.grubler": "Grübler: 3({n} − 1) − 2·{f1} − {f2}",
+    "overall.meeting": "{grubler}; at this position {points} is where two assemblies meet (a "
+                       "change point), so the mobility is momentarily {here}",
+    "overall.meetings": "{grubler}; at this position {points} are where two assemblies meet "
+                        "(a change point), so the mobility is momentarily {here}",
+    "overall.grashof": "Grashof: S + L = {s_l} against P + Q = {p_q}; checked by turning each "
+                       "link{which}",
+    "overall.range": "Grashof's inequalities, at their breakpoints; checked by bisecting the "
+                     "turning test{which}",
+    "overall.change_point": "; a change-point linkage (S + L = P + Q): twice a revolution its "
+                            "links fall in line, where its two assemblies meet and it may go "
+                            "on in either",
     "md.by": "{what} by {method}",
     "md.time_ratio": "The crank turns {slow}° from {start} to {end} ({sense}) in the slow stroke "
                      "and {quick}° in the quick one: time ratio {slow}/{quick} = {ratio}.",

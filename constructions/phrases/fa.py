@@ -126,6 +126,13 @@ WORDS: dict[str, str] = {
     "The train value": "مقدار قطار", "The other common form:": "شکل رایج دیگر:",
     "The involute mesh": "درگیری اینولوتی",
     "The velocity (Kutzbach) diagram": "نمودار سرعت (کوتزباخ)",
+    # the mechanism as a whole (exercises/solution_files.py: overall_text)
+    "crank-rocker": "لنگ - آونگ", "double-crank": "لنگ - لنگ", "double-rocker": "آونگ - آونگ",
+    "triple-rocker": "سه‌آونگی", "change-point": "نقطهٔ تغییر",
+    "{span} = {length} only ({kind})": "{span} تنها برابر {length} ({kind})",
+    "{value} ({here} at this position)": "{value} ({here} در این وضعیت)",
+    "{value} ({inspection} by inspection, {kennedy} by Kennedy)":
+        "{value} ({inspection} با مشاهده، {kennedy} با قضیهٔ کندی)",
     "found": "یافته", "Willis": "ویلیس", "the same": "برابر", "yes": "بله", "NO": "خیر",
     "The construction": "ترسیم",
     "internal": "داخلی", "external": "خارجی", "the same way": "در همان جهت",
@@ -172,6 +179,19 @@ PHRASES: dict[str, str] = {
     "md.columns": "| کمیت | ترسیم | تحلیلی | خطای نسبی | روش |",
     "md.whole": "مکانیزم به‌صورت کل",
     "md.whole_columns": "| کمیت | پاسخ | کنترل | خطای نسبی | روش |",
+    "overall.grubler": "گروبلر: 3({n} − 1) − 2·{f1} − {f2}",
+    "overall.meeting": "{grubler}؛ در این وضعیت، {points} جایی است که دو حالت مونتاژ مکانیزم "
+                       "به هم می‌رسند (نقطهٔ تغییر)، پس درجهٔ آزادی در این لحظه {here} است",
+    "overall.meetings": "{grubler}؛ در این وضعیت، {points} جاهایی‌اند که دو حالت مونتاژ "
+                        "مکانیزم به هم می‌رسند (نقطهٔ تغییر)، پس درجهٔ آزادی در این لحظه "
+                        "{here} است",
+    "overall.grashof": "گراشف: S + L = {s_l} در برابر P + Q = {p_q}؛ با چرخاندن هر عضو "
+                       "کنترل شده است{which}",
+    "overall.range": "نامساوی‌های گراشف، در نقاط مرزی‌شان؛ با تنصیف آزمون چرخش کنترل شده "
+                     "است{which}",
+    "overall.change_point": "؛ مکانیزم نقطهٔ تغییر (S + L = P + Q): در هر دور دو بار "
+                            "عضوهایش در یک راستا قرار می‌گیرند، جایی که دو حالت مونتاژ آن به هم "
+                            "می‌رسند و می‌تواند در هر یک ادامه دهد",
     "md.by": "{what} به روش {method}",
     "md.time_ratio": "لنگ در کورس کند {slow}° از {start} تا {end} ({sense}) و در کورس تند "
                      "{quick}° می‌چرخد: نسبت زمانی {slow}/{quick} = {ratio}.",
