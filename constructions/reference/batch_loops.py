@@ -59,8 +59,7 @@ class BatchLoops:
 
     def __init__(self, system: _System):
         self.sy = system
-        self.rows = np.where(system.is_len, 1.0 / system.lc, 1.0)
-        self.cols = np.tile([system.lc, system.lc, 1.0], len(system.moving))
+        self.rows, self.cols = system.row_scale, system.col_scale
         self._for, self._cs = None, {}
         self.layout = self._lay_out()
 

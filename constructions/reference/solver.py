@@ -529,6 +529,9 @@ class _System:
         sizes += [abs(c) for s in mech.slides for c in s.through]
         sizes += [a.radius for a in self.arcs]
         self.lc = max(sizes, default=0.0) or 1.0
+        # The scalings of rows (lengths in units of lc) and columns (x, y in lc, φ alone).
+        self.row_scale = np.where(self.is_len, 1.0 / self.lc, 1.0)
+        self.col_scale = np.tile([self.lc, self.lc, 1.0], len(self.moving))
 
     def state(self, q, k: int) -> tuple[np.ndarray, float]:
         if k == 1:
@@ -661,13 +664,11 @@ class _System:
 
     def scaled(self, jac) -> np.ndarray:
         """Make the Jacobian dimensionless: lengths in units of the mechanism's size."""
-        rows = np.where(self.is_len, 1.0 / self.lc, 1.0)
-        cols = np.tile([self.lc, self.lc, 1.0], len(self.moving))
-        return jac * rows[:, None] * cols[None, :]
+        return jac * self.row_scale[:, None] * self.col_scale[None, :]
 
     def scaled_max(self, residual: np.ndarray) -> float:
         """The largest of a residual's entries, lengths in units of the mechanism's size."""
-        return float(np.max(np.abs(residual * np.where(self.is_len, 1.0 / self.lc, 1.0))))
+        return float(np.max(np.abs(residual * self.row_scale)))
 
 
 # ----------------------------------------------------------------------------- solve
@@ -877,7 +878,7 @@ def _free_motion(system: _System, jac: np.ndarray) -> FreeMotion:
     """The null vector of the Jacobian without the input's row (see :class:`FreeMotion`),
     signed so that the input turns as its ω does."""
     _, sv, vt = np.linalg.svd(system.scaled(jac)[:-1])
-    rates = vt[-1] * np.tile([system.lc, system.lc, 1.0], len(system.moving))
+    rates = vt[-1] * system.col_scale
     w = system.state(rates, system.m.drive.link)[1]
     if w * system.m.drive.omega < 0.0:
         rates = -rates
