@@ -43,7 +43,9 @@ def answer_mobility(work, ask: A.Mobility) -> Answer:
         meeting = ()
     if not meeting:
         return _answer(ask, {"value": dof}, said)
-    points = [part for k, p in enumerate(meeting) for part in ([Word("and")] if k else []) + [p]]
+    points = [meeting[0]]                   # "B", or "A and B", said in any language
+    for point in meeting[1:]:
+        points += [Word("and"), point]
     return _answer(ask, {"value": dof, "here": dof + len(meeting)},
                    phrase("overall.meeting" if len(meeting) == 1 else "overall.meetings",
                           grubler=said, points=points, here=Number(dof + len(meeting), "d")))

@@ -532,6 +532,7 @@ def overall_text(name: str, v: dict, units) -> str:
     135 mm (crank-rocker)"."""
     def length(metres: float) -> str:
         return numerals(units.length_text(metres))
+
     if "class" in v and "low" in v:
         span, kind = name[len("range_"):], words(v["class"])
         if v["low"] == v["high"]:
