@@ -118,6 +118,17 @@ def numerals(text: str) -> str:
     return catalogue(spoken()).digits(text)
 
 
+def numeral(value: float, spec: str = ".6g") -> str:
+    """``value`` formatted by ``spec``, in the spoken language's digits: a result as the
+    results print it ("25.7472", "5.0e-15").
+
+    >>> with speaking("fa"):
+    ...     numeral(25.7472)
+    '۲۵٫۷۴۷۲'
+    """
+    return numerals(format(value, spec))
+
+
 def right_to_left() -> bool:
     """Whether the spoken language reads right to left (a caption then aligns right)."""
     return getattr(catalogue(spoken()), "DIRECTION", "ltr") == "rtl"

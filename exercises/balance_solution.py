@@ -19,7 +19,8 @@ from typing import Any
 from ..constructions.balancing.engine import KINDS, EnginePolygons, draw_engine
 from ..constructions.balancing.polygons import Balance, draw_balance
 from ..constructions.model import LENGTH_UNITS
-from ..constructions.narration import narrate, numerals, phrase, spoken, unit_words, words
+from ..constructions.narration import (narrate, numeral, numerals, phrase, spoken, unit_words,
+                                       words)
 from ..constructions.reference.balance import (engine_sums, one_axial_plane, quadrant_angle,
                                                resultant, single_cylinder, two_planes)
 from ..graphics.balance_figures import draw_end_view, draw_polygon, draw_side_view
@@ -33,11 +34,6 @@ __all__ = ["BalanceSolution", "solve_balance"]
 AGREE = 1e-12
 """How near (relative to the largest vector drawn) a closing side must come to its sum: a
 few roundings of the vectors laid off."""
-
-
-def _n(value: float, spec: str = ".6g") -> str:
-    """A number as the results print it, in the spoken language's digits."""
-    return numerals(format(value, spec))
 
 
 def _angle(v: tuple[float, float]) -> float:
@@ -139,7 +135,7 @@ class BalanceSolution(ChapterFiles):
     # ----- words --------------------------------------------------------------------------------
     def _length(self, v: float) -> str:
         unit = self.exercise.length_unit
-        return f"{_n(v / LENGTH_UNITS[unit])} {unit}"
+        return f"{numeral(v / LENGTH_UNITS[unit])} {unit}"
 
     def lines(self) -> list[str]:
         """What the command line prints, and steps.md lists, in the language spoken."""
@@ -150,14 +146,14 @@ class BalanceSolution(ChapterFiles):
         r = ex.rotor
         x, y = resultant(r.masses)
         out.append(words("ΣF_x = {x}ω², ΣF_y = {y}ω² (kg·m): the resultant {size} kg·m at "
-                         "{angle}° ({force} N at ω = {speed} rad/s)", x=_n(x), y=_n(y),
-                         size=_n(math.hypot(x, y)), angle=_n(quadrant_angle(x, y), ".2f"),
-                         force=_n(math.hypot(x, y) * r.speed ** 2), speed=_n(r.speed)))
+                         "{angle}° ({force} N at ω = {speed} rad/s)", x=numeral(x), y=numeral(y),
+                         size=numeral(math.hypot(x, y)), angle=numeral(quadrant_angle(x, y), ".2f"),
+                         force=numeral(math.hypot(x, y) * r.speed ** 2), speed=numeral(r.speed)))
         for p in r.planes:
             v, mass, radius = self.placed(p)
             out.append(words("plane {plane}: balancing m·r = {size} kg·m at {angle}°, so {mass} "
-                             "kg at {radius}", plane=p.name, size=_n(math.hypot(*v)),
-                             angle=_n(_angle(v), ".2f"), mass=_n(mass),
+                             "kg at {radius}", plane=p.name, size=numeral(math.hypot(*v)),
+                             angle=numeral(_angle(v), ".2f"), mass=numeral(mass),
                              radius=self._length(radius)))
         if len(r.planes) == 1 and len({m.plane for m in r.masses}) > 1:
             couple = math.hypot(*(math.fsum(m.mr[i] * (m.plane - r.planes[0].position)
@@ -172,17 +168,17 @@ class BalanceSolution(ChapterFiles):
                                  "kg·m at {angle}° in the plane at {place} balances force and "
                                  "couple together (the notes' case {case} the masses' planes: "
                                  "moments about each mass's plane fix it)",
-                                 size=_n(math.hypot(*v)), angle=_n(_angle(v), ".2f"),
+                                 size=numeral(math.hypot(*v)), angle=numeral(_angle(v), ".2f"),
                                  place=self._length(place), case=case))
             if couple > 1e-12 * max(m.mass * m.radius for m in r.masses):
                 out.append(words("at {place} one plane balances the forces only: a couple of "
                                  "{couple} kg·m² (× ω²) is left, for a second plane to take",
-                                 place=self._length(r.planes[0].position), couple=_n(couple)))
+                                 place=self._length(r.planes[0].position), couple=numeral(couple)))
         verdict = words("each where the vector sum puts it") if self.passed else \
             f"OFF: {', '.join(self.failures)}"
         out.append(words("polygons closed: {verdict}; the balanced rotor's residual force "
                          "{residual} kg·m", verdict=verdict,
-                         residual=_n(self.residual[0], ".1e")))
+                         residual=numeral(self.residual[0], ".1e")))
         return out
 
     def _engine_lines(self) -> list[str]:
@@ -192,14 +188,15 @@ class BalanceSolution(ChapterFiles):
             f = e.reciprocating * e.speed ** 2 * e.crank
             return [words("at θ = {angle}°: primary force {primary} N, secondary {secondary} N "
                           "along the line of stroke (n = l/r = {n})",
-                          angle=_n(math.degrees(e.at), "g"), primary=_n(prim),
-                          secondary=_n(sec), n=_n(e.rod / e.crank)),
+                          angle=numeral(math.degrees(e.at), "g"), primary=numeral(prim),
+                          secondary=numeral(sec), n=numeral(e.rod / e.crank)),
                     words("with {share} of the reciprocating mass balanced by a rotating mass: "
                           "{along} N along the line of stroke and {across} N across it",
-                          share=_n(e.balanced, "g"), along=_n(along), across=_n(across)),
+                          share=numeral(e.balanced, "g"), along=numeral(along),
+                          across=numeral(across)),
                     words("at most {along} N along (θ = 0°, 180°) and {across} N across "
-                          "(θ = 90°, 270°)", along=_n((1 - e.balanced) * f),
-                          across=_n(e.balanced * f))]
+                          "(θ = 90°, 270°)", along=numeral((1 - e.balanced) * f),
+                          across=numeral(e.balanced * f))]
         sums = engine_sums(e)
         out = []
         for kind, value in zip(KINDS, (sums.primary_force, sums.primary_couple,
@@ -211,8 +208,8 @@ class BalanceSolution(ChapterFiles):
             out.append(words("{kind}: balanced (its polygon closes)", kind=words(kind))
                        if balanced else
                        words("{kind}: unbalanced, {left} {unit} at most (the vector sum: "
-                             "{value} {unit})", kind=words(kind), left=_n(left), unit=unit,
-                             value=_n(value)))
+                             "{value} {unit})", kind=words(kind), left=numeral(left), unit=unit,
+                             value=numeral(value)))
         return out
 
     def steps(self) -> str:

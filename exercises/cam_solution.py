@@ -16,7 +16,8 @@ from functools import cached_property
 from typing import Any
 
 from ..constructions.cams.displacement import Displacement, draw_displacement
-from ..constructions.narration import Word, narrate, numerals, phrase, spoken, unit_words, words
+from ..constructions.narration import (Word, narrate, numeral, numerals, phrase, spoken,
+                                       unit_words, words)
 from ..constructions.reference.cam_laws import jerk_peak, motion, peaks
 from ..graphics.displacement_figure import draw_displacement_figure
 from ..graphics.plot import PlotMark, Series, draw_line_plot
@@ -33,11 +34,6 @@ _AGREE = 1e-12
 """How far (relative to the greatest lift) a constructed point may stand off its law: a few
 roundings of the lift."""
 
-
-
-def _n(value: float) -> str:
-    """A number as the results print it, in the spoken language's digits."""
-    return numerals(f"{value:.6g}")
 
 @dataclass(frozen=True)
 class SegmentPeaks:
@@ -128,16 +124,16 @@ class CamSolution(ChapterFiles):
         out = []
         for p in self.peaks:
             a = words("∞ (at its ends)") if math.isinf(p.acceleration) else \
-                f"{_n(p.acceleration * size)} {unit}/s²"
+                f"{numeral(p.acceleration * size)} {unit}/s²"
             if ex.jerk:
                 a += ", j_max = " + (words("∞ (where ÿ jumps)") if math.isinf(p.jerk) else
-                                     f"{_n(p.jerk)} m/s³")
+                                     f"{numeral(p.jerk)} m/s³")
             arm = ex.follower.arm if ex.follower.oscillating else 0.0
-            swing = words(" (the arm: {w} rad/s, {a} rad/s²)", w=_n(p.velocity / arm),
-                          a=_n(p.acceleration / arm)) if arm else ""
+            swing = words(" (the arm: {w} rad/s, {a} rad/s²)", w=numeral(p.velocity / arm),
+                          a=numeral(p.acceleration / arm)) if arm else ""
             out.append(words("segment {k} ({kind}, {law}): v_max = {v} {unit}/s, a_max = "
                              "{a}{swing}   {check}", k=p.index, kind=Word(p.kind),
-                             law=Word(p.law), v=_n(p.velocity * size), unit=unit, a=a,
+                             law=Word(p.law), v=numeral(p.velocity * size), unit=unit, a=a,
                              swing=swing,
                              check=words("check ok" if p.passed else "check FAILED")))
         worst = max((m for *_, m in self.misses), default=0.0)
