@@ -21,8 +21,8 @@ from dataclasses import dataclass
 from .assembly import Assembly
 from .errors import TarsimError
 
-__all__ = ["nice", "Scales", "Stated", "choose_scales", "space_per_cm", "velocity_per_cm",
-           "readable_per_cm", "SHORTEST_MM",
+__all__ = ["nice", "nice_per_cm", "Scales", "Stated", "choose_scales", "space_per_cm",
+           "velocity_per_cm", "readable_per_cm", "SHORTEST_MM",
            "drawing_extent", "face_ends", "ROOM", "FACE_REACH"]
 
 ROOM = (150.0, 130.0)
@@ -61,6 +61,24 @@ def nice(raw: float, *, up: bool = True) -> float:
     else:
         value = max(v for v in ladder if v <= raw * (1 + 1e-9))
     return float(f"{value:.12g}")
+
+
+def nice_per_cm(extent: float, room_mm: float) -> float:
+    """Return the smallest nice value N (1, 2, 5 × 10^k) with ``extent`` / N cm ≤ ``room_mm``.
+
+    ``extent`` is in the unit the scale will be stated in; the result is how much
+    of that unit one centimetre of paper stands for.
+
+    Examples
+    --------
+    >>> nice_per_cm(400.0, 150.0)
+    50.0
+    >>> nice_per_cm(0.7, 100.0)
+    0.1
+    """
+    if extent <= 0 or room_mm <= 0:
+        raise ValueError("a scale needs a positive extent and room")
+    return nice(extent * 10.0 / room_mm)
 
 
 class Stated(float):

@@ -11,7 +11,7 @@ from collections.abc import Sequence
 
 from ..constructions.narration import (numerals, significant, spoken, unit_words,
                                       words)
-from ..constructions.scales import Stated, nice
+from ..constructions.scales import Stated, nice_per_cm
 
 from .figure import Figure, Path, Text, text_width, wrap_text
 from .rtl import reading
@@ -21,24 +21,6 @@ __all__ = ["nice_per_cm", "scale_text", "paper_ratio", "bar_room", "draw_scale_b
 
 _NOTE_COLUMN = 150.0
 """The narrowest a caption's notes are set to (mm): a measure that still reads as prose."""
-
-
-def nice_per_cm(extent: float, room_mm: float) -> float:
-    """Return the smallest nice value N (1, 2, 5 × 10^k) with ``extent`` / N cm ≤ ``room_mm``.
-
-    ``extent`` is in the unit the scale will be stated in; the result is how much
-    of that unit one centimetre of paper stands for.
-
-    Examples
-    --------
-    >>> nice_per_cm(400.0, 150.0)
-    50.0
-    >>> nice_per_cm(0.7, 100.0)
-    0.1
-    """
-    if extent <= 0 or room_mm <= 0:
-        raise ValueError("a scale needs a positive extent and room")
-    return nice(extent * 10.0 / room_mm)
 
 
 def number_text(value: float) -> str:

@@ -24,13 +24,8 @@ from ..errors import InputError
 from ..narration import Number, Phrase, Word, phrase, significant
 from ..record import Construction, Kind, Panel, Ref, Role
 from ..model import LENGTH_UNITS
-from ..scales import nice
+from ..scales import nice_per_cm
 from .train import GearTrain
-
-
-def nice_per_cm(extent: float, room_mm: float) -> float:
-    """The smallest nice scale (1, 2, 5 × 10^k per cm) that sets ``extent`` in ``room_mm``."""
-    return nice(extent * 10.0 / room_mm)
 
 __all__ = ["Kutzbach", "draw_kutzbach"]
 
