@@ -88,7 +88,7 @@ def test_digits_latin_and_a_files_lang(tmp_path):
                                       "--no-pdf", "-o", str(out)])
     assert result.exit_code == 0, result.output
     steps = (out / "steps.md").read_text(encoding="utf-8")
-    body = steps.split("## نتایج")[0].replace("(داده نشده: ۰)", "")
+    body = steps.split("## نتایج")[0]
     assert "## نتایج" in steps and not any(d in body for d in "۰۱۲۳۴۵۶۷۸۹")
     assert "100 " in body or "250 " in body
     text = resolve("four-bar").read_text(encoding="utf-8")
@@ -132,6 +132,8 @@ def test_a_chapters_persian_steps_say_their_results_in_persian(name):
     assert set(re.findall(r"[A-Za-z]{3,}", body)) <= SYMBOLS, name
     # Every measured number in Persian digits (a whole number may be a name: gear 2).
     assert re.search("[۰-۹]٫[۰-۹]", body) and not re.search(r"\d\.\d", body), name
+    with speaking("fa_latn"):                       # --digits latin: none at all
+        assert not re.search("[۰-۹]", solve(ex).steps()), name
 
 
 def test_the_whole_mechanisms_results_are_persian_too(tmp_path):

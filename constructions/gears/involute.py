@@ -225,7 +225,7 @@ class _Drafting:
             points.append(self.act(f"X{k}:{i}", "rotate_about", out, d, angle=math.pi / 2,
                                    said=None))
         self.c.draw(f"profile{k}", "mark", points[-1], panel=Panel.SPACE, phrase=phrase(
-            "involute.profile", gear=n, point=f"S{n}", divisions=_DIVISIONS,
+            "involute.profile", gear=n, point=f"S{n}", divisions=Number(_DIVISIONS, "d"),
             arc=drawn_angle(step)))
         self.out.profiles[n] = points
 
