@@ -201,6 +201,12 @@ def drawn_length(metres: float) -> Quantity:
     return Quantity(metres * 1e3, "mm", style="drawn")
 
 
+def counted(n: int) -> Number:
+    """A count a step says ("into 6 equal parts"): a number, in the language's digits, where
+    a bare integer is a name (link 2, segment 1) and keeps its Latin digits."""
+    return Number(n, "d")
+
+
 def drawn_angle(rad: float) -> Quantity:
     """An angle a cam's or a gear's step measures off (rad), as the step says it: in
     degrees, to four figures."""

@@ -18,7 +18,7 @@ from ..constructions.cams.displacement import Displacement
 from ..constructions.cams.inversion import Layout, lay_out_profile
 from ..constructions.cams.survey import Survey, survey
 from ..constructions.errors import InputError
-from ..constructions.narration import narrate, numerals, spoken, unit_words, words
+from ..constructions.narration import narrate, numeral, numerals, spoken, unit_words, words
 from ..graphics.cam_layout_figure import draw_cam_layout
 from ..graphics.figure import Figure
 from ..graphics.train_table import draw_train_table
@@ -63,7 +63,7 @@ class CamProfile:
         out = []
 
         def deg(angle: float) -> str:
-            return numerals(f"{math.degrees(angle):.2f}")
+            return numeral(math.degrees(angle), ".2f")
 
         def length(v: float) -> str:
             return numerals(_signed(self.length_text(v)))
@@ -71,7 +71,7 @@ class CamProfile:
             st = s.steepest
             steep = abs(math.degrees(st.pressure_angle))
             out.append(words("pressure angle: greatest {angle}° at θ = {theta}°",
-                             angle=numerals(f"{steep:.2f}"), theta=deg(st.theta)) + (
+                             angle=numeral(steep, ".2f"), theta=deg(st.theta)) + (
                 words(" (over the 30° a translating follower is usually held to)")
                 if steep > 30 and not f.oscillating else ""))
         st = s.sharpest
@@ -93,7 +93,7 @@ class CamProfile:
         verdict = words("each where the closed form puts it") if not s.misses else \
             f"OFF by {worst:.1e} m"
         out.append(words("profile by inversion: {n} stations laid out, {verdict}",
-                         n=numerals(str(len(self.layout.places))), verdict=verdict))
+                         n=numeral(len(self.layout.places), "d"), verdict=verdict))
         return out
 
     def steps(self) -> list[str]:

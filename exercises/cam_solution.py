@@ -139,7 +139,7 @@ class CamSolution(ChapterFiles):
         worst = max((m for *_, m in self.misses), default=0.0)
         verdict = words("all on their laws") if not self.misses else f"OFF by {worst:.1e} m"
         out.append(words("displacement diagram: {n} points constructed, {verdict}",
-                         n=numerals(str(sum(len(c) for c in self.diagram.curves))),
+                         n=numeral(sum(len(c) for c in self.diagram.curves), "d"),
                          verdict=verdict))
         return out + self.profile.lines()
 

@@ -18,7 +18,7 @@ from ..constructions.gears.involute import InvoluteMesh, draw_involute_mesh, lea
 from ..constructions.gears.kutzbach import Kutzbach, draw_kutzbach
 from ..constructions.gears.tabular import TrainSpeeds, fraction_text, tabulate
 from ..constructions.gears.torques import balance, say_balance
-from ..constructions.narration import (narrate, numerals, phrase, significant, spoken,
+from ..constructions.narration import (narrate, numeral, numerals, phrase, significant, spoken,
                                       unit_words, words)
 from ..constructions.reference.gear_mesh import (MeshReference, involute_miss, least_teeth,
                                                  mesh_reference)
@@ -333,17 +333,17 @@ def _mesh_text(name: str, value: float, mesh) -> str:
     """A mesh quantity as the command line and steps.md say it, in the language spoken: mm,
     degrees, a ratio, the gears."""
     if name in ("path_of_contact", "arc_of_contact", "circular_pitch"):
-        return f"{numerals(f'{value * 1e3:.6g}')} mm"
+        return f"{numeral(value * 1e3)} mm"
     if name == "pressure_angle":
-        return f"{numerals(f'{math.degrees(value):.6g}')}°"
+        return f"{numeral(math.degrees(value))}°"
     if name == "least_teeth":
-        return words("{n} teeth on the pinion", n=numerals(f"{value:.0f}"))
+        return words("{n} teeth on the pinion", n=numeral(value, ".0f"))
     if name == "interference":
         gears = mesh.interference
         return (words("none") if not gears else
                 words("the tips of gear {gears} cut into the other's flank",
                       gears=f" {words('and')} ".join(map(str, gears))))
-    return numerals(f"{value:.6g}")
+    return numeral(value)
 
 
 def _head(train, m: int) -> str:

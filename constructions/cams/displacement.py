@@ -27,7 +27,7 @@ from dataclasses import dataclass, field
 
 from .. import geometry as g
 from ..errors import InputError
-from ..narration import Number, Word, drawn_angle, drawn_length, phrase
+from ..narration import Word, counted, drawn_angle, drawn_length, phrase
 from ..record import Construction, Kind, Panel, Ref
 
 __all__ = ["Segment", "Displacement", "draw_displacement"]
@@ -114,7 +114,7 @@ class _Segment:
         """The segment's start and its equal divisions: an ordinate at each."""
         n = self.s.divisions
         start = self.give("x0", g.Point(self.x0, 0.0), said=phrase(
-            "cam.ordinates", k=self.k, kind=Word(self.s.kind), n=_count(n),
+            "cam.ordinates", k=self.k, kind=Word(self.s.kind), n=counted(n),
             angle=drawn_angle(self.s.angle)))
         out = []
         for i in range(n + 1):
@@ -168,7 +168,7 @@ class _Segment:
         # The semicircle on the lift, bulging back from the start: from the low end for a
         # rise, from the top for a return, in n equal arcs.
         first = self.give("S0", g.Point(self.x0, self.y0), said=phrase(
-            "cam.harmonic", k=self.k, n=_count(n), lift=drawn_length(abs(self.h))))
+            "cam.harmonic", k=self.k, n=counted(n), lift=drawn_length(abs(self.h))))
         turn = -math.pi / n if self.h > 0 else math.pi / n
         self.act("semicircle", "circle_through", centre, first, kind=Kind.ARC)
         self.out.arcs.append((centre, first, n * turn))
@@ -184,7 +184,7 @@ class _Segment:
         in the ratio 1 : 3 : 5 … by parallels from a line marked at 1, 4, 9 … equal steps
         (``m`` of them), up (``sign`` +1) or down. The marked line leans into the segment,
         clear of its neighbours' constructions. Returns the foot and the m divisions."""
-        words = dict(k=self.k, half=Word("first" if part == 0 else "second"), m=_count(m),
+        words = dict(k=self.k, half=Word("first" if part == 0 else "second"), m=counted(m),
                      where=Word("start" if part == 0 else "end"),
                      way=Word("up from the foot" if sign > 0 else "down from the top"))
         said = (phrase("cam.blend", rise=drawn_length(abs(rise)), **words)
@@ -253,7 +253,7 @@ class _Segment:
         n = self.s.divisions
         radius = abs(self.h) / (2 * math.pi)
         start = self.give("A", g.Point(self.x0, self.y0), said=phrase(
-            "cam.cycloidal", k=self.k, n=_count(n), radius=drawn_length(radius)))
+            "cam.cycloidal", k=self.k, n=counted(n), radius=drawn_length(radius)))
         end = self.give("B", g.Point(self.x0 + self.width, self.y0 + self.h))
         diagonal = self.act("diagonal", "line_through", start, end, kind=Kind.LINE)
         up = self.act("ordinate", "perpendicular_through", start, "base", kind=Kind.LINE)
@@ -273,8 +273,3 @@ class _Segment:
             out.append((t, point))
         return out
 
-
-def _count(n: int) -> Number:
-    """A count a step says ("into 6 equal parts"), in the language's digits: a number, not
-    a name, as a segment's or a link's number is."""
-    return Number(n, "d")

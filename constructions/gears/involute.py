@@ -22,7 +22,8 @@ from dataclasses import dataclass, field
 
 from .. import geometry as g
 from ..errors import InputError
-from ..narration import Number, Phrase, Word, drawn_angle, drawn_length, phrase
+from ..narration import (Number, Phrase, Word, counted, drawn_angle, drawn_length,
+                         phrase)
 from ..record import Construction, Kind, Panel, Ref
 from .train import GearTrain
 
@@ -225,7 +226,7 @@ class _Drafting:
             points.append(self.act(f"X{k}:{i}", "rotate_about", out, d, angle=math.pi / 2,
                                    said=None))
         self.c.draw(f"profile{k}", "mark", points[-1], panel=Panel.SPACE, phrase=phrase(
-            "involute.profile", gear=n, point=f"S{n}", divisions=Number(_DIVISIONS, "d"),
+            "involute.profile", gear=n, point=f"S{n}", divisions=counted(_DIVISIONS),
             arc=drawn_angle(step)))
         self.out.profiles[n] = points
 
