@@ -51,12 +51,12 @@ QUANTITIES = {Panel.VELOCITY: ("Velocity", "/s"), Panel.ACCELERATION: ("Accelera
 _MARGIN = 8.0       # white round the drawing, mm
 _OVERHANG = 4.0     # a working line runs this far past its last point, mm
 _LONE = 10.0        # a line through one point runs this far either side, mm
-_DOT = 0.6          # the pole's dot, mm
+_DOT = 1.0          # the pole's dot's radius, mm: it shows among the result arrows met there
 _ROOM = 16.0        # labels stay within this much of the polygon, mm
 _SAME = 1e-9        # relative slack for "lies on" and "coincides"
 _ZERO = 0.05        # a vector shorter than this on paper (mm) is drawn as "= 0"
 _HERE = 1e-6        # paper points closer than this (mm) are one
-_DOT = 1.0          # a vector shorter than this (mm) is named as the point it nearly is:
+_TINY = 1.0         # a vector shorter than this (mm) is named as the point it nearly is:
                     # beside so short a shaft a name is as near every arrow from its pole
 _NEAR = (1.0, 1.6, 2.4, 3.4, 4.6)   # a vector's label stays this many gaps from its shaft
 _FARTHER = (6.0, 8.0, 11.0, 15.0)   # ...unless every spot there covers another label
@@ -400,9 +400,9 @@ class _PolygonPanel:
         """
         drawn = self.vectors()
         self.placer.name_vectors((a, b) for s, a, b in drawn
-                                 if s.label and math.dist(a, b) >= _DOT)
+                                 if s.label and math.dist(a, b) >= _TINY)
         self.placer.name_points(_middle(a, b) for s, a, b in drawn
-                                if s.label and _ZERO <= math.dist(a, b) < _DOT)
+                                if s.label and _ZERO <= math.dist(a, b) < _TINY)
         twins: list[list[tuple[Step, tuple[float, float], tuple[float, float]]]] = []
         for v in drawn:
             same = next((t for t in twins if math.dist(t[0][1], v[1]) < _ZERO
@@ -438,7 +438,7 @@ class _PolygonPanel:
             # A short arrow has little shaft to stand beside: its name may go round its ends.
             spread = math.pi / 3
             # So short an arrow is found by its name only beside it: no farther rings.
-            dot = math.dist(a, b) < _DOT
+            dot = math.dist(a, b) < _TINY
             self.placer.place_numbered(text, anchors, numbers, sub=sub, also=tuple(names[1:]),
                                        prefer=(normal, normal + math.pi), spread=spread,
                                        gap=1.0, size=3.4, rings=_NEAR,
