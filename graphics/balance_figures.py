@@ -11,10 +11,12 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
+from dataclasses import replace
 
 from ..constructions.narration import numerals, right_to_left, unit_words, words
 from ..constructions.record import Construction, Ref
 from .figure import Circle, Figure, Path, Text, clear_of, text_width
+from .labels import LabelPlacer
 from .scales import draw_caption, nice_per_cm
 from .symbols import draw_arrow
 
@@ -42,33 +44,37 @@ def draw_polygon(c: Construction, tips: Sequence[tuple[str, Ref]], closing: Ref,
 
     fig = Figure(0.0, 0.0, title=title)
     centre = [paper(p) for p in points]          # the corners, to keep words outside
-    prev = paper(points[0])
-    fig.add(Circle(prev, 0.7, "dot"))
-    # "o" behind the pole, away from the first vector and the closing side.
-    first, last = paper(points[1]), paper(points[-1])
-    away = (2 * prev[0] - first[0] - last[0], 2 * prev[1] - first[1] - last[1])
-    n = math.hypot(*away) or 1.0
-    fig.add(Text((prev[0] + 3.0 * away[0] / n, prev[1] + 3.0 * away[1] / n + 1.0), "o", 3.0,
-                 "middle", True))
+    pole = paper(points[0])
+    fig.add(Circle(pole, 0.7, "dot"))
+    names_at = []                                # (name, tail, tip, the side out)
+    prev = pole
     for turn, ((name, _), xy) in enumerate(zip(tips, points[1:])):
         tip = paper(xy)
         if math.dist(prev, tip) > 0.3:
             draw_arrow(fig, prev, tip, "vector")
-            mid = ((prev[0] + tip[0]) / 2, (prev[1] + tip[1]) / 2)
             # a flat polygon retraces its own line: its names go above and below in turn
-            side = _outward(prev, tip, centre, 3.2 + 2.0 * (turn // 2 % 2), up=turn % 2 == 0)
-            fig.add(Text((mid[0] + side[0], mid[1] + side[1]), names.get(name, name), 2.8,
-                         "middle", False))
+            names_at.append((names.get(name, name), prev, tip,
+                             _outward(prev, tip, centre, 1.0, up=turn % 2 == 0)))
         prev = tip
-    end = paper(points[0])
-    if math.dist(prev, end) > 0.3:
-        draw_arrow(fig, prev, end, "vector_result")
-        mid = ((prev[0] + end[0]) / 2, (prev[1] + end[1]) / 2)
-        side = _outward(prev, end, centre, 4.5, up=False)
-        _reading(fig, (mid[0] + side[0], mid[1] + side[1]), reading,
-                 "start" if side[0] >= 0 else "end")
+    closes = math.dist(prev, pole) > 0.3
+    if closes:
+        draw_arrow(fig, prev, pole, "vector_result")
+    # Every name is set clear of the drawn polygon and of the names set before it, each
+    # beside its own arrow: a flat polygon's arrows lie on one line, over one another.
+    placer = LabelPlacer(fig)
+    placer.block_drawn()
+    first, last = paper(points[1]), paper(points[-1])
+    away = (2 * pole[0] - first[0] - last[0], 2 * pole[1] - first[1] - last[1])
+    placer.place("o", pole, prefer=_paper_angle(away), size=3.0, gap=1.6)
+    for name, tail, tip, side in names_at:
+        mid = ((tail[0] + tip[0]) / 2, (tail[1] + tip[1]) / 2)
+        placer.place(name, mid, prefer=_paper_angle(side), spread=math.pi / 2, size=2.8,
+                     italic=False, gap=1.2, rings=(1.0, 1.6, 2.4, 3.4, 4.6), own=(tail, tip))
+    if closes:
+        mid = ((prev[0] + pole[0]) / 2, (prev[1] + pole[1]) / 2)
+        _place_reading(placer, mid, reading, _outward(prev, pole, centre, 1.0, up=False))
     else:
-        _reading(fig, (prev[0], prev[1] + 10.0), reading, "middle")  # under the names
+        _place_reading(placer, pole, reading, (0.0, 1.0))       # under the names
     draw_caption(fig, title, [words("head to tail, each parallel to its radial line; the heavy "
                                     "side closes it")], per_cm=per_cm, unit=unit,
                  legend=(("vector", "the vectors"), ("vector_result", "the closing side")),
@@ -76,9 +82,33 @@ def draw_polygon(c: Construction, tips: Sequence[tuple[str, Ref]], closing: Ref,
     return fig
 
 
-def _reading(fig: Figure, at: tuple[float, float], reading: tuple[str, str, str],
-             anchor: str) -> None:
-    """The closing side's size: its symbol (text and subscript) and the words after it.
+def _paper_angle(v: tuple[float, float]) -> float:
+    """The direction of a paper vector (y down) as the label placer takes it."""
+    return math.atan2(-v[1], v[0])
+
+
+def _place_reading(placer: LabelPlacer, at: tuple[float, float],
+                   reading: tuple[str, str, str], side: tuple[float, float]) -> None:
+    """The closing side's size set clear of everything, beside ``at`` on ``side``."""
+    texts = _reading((0.0, 0.0), reading)
+    x0, y0, x1, y1 = _bounds(texts)
+    (cx, cy), _ = placer.spot(x1 - x0, y1 - y0, at, prefer=_paper_angle(side), gap=1.6)
+    dx, dy = cx - (x0 + x1) / 2, cy - (y0 + y1) / 2
+    for t in texts:
+        placer.fig.add(replace(t, at=(t.at[0] + dx, t.at[1] + dy)))
+    placer.block_label((x0 + dx, y0 + dy, x1 + dx, y1 + dy))
+
+
+def _bounds(texts: Sequence[Text]) -> tuple[float, float, float, float]:
+    """The box that holds all of ``texts``."""
+    boxes = [t.box() for t in texts]
+    return (min(b[0] for b in boxes), min(b[1] for b in boxes), max(b[2] for b in boxes),
+            max(b[3] for b in boxes))
+
+
+def _reading(at: tuple[float, float], reading: tuple[str, str, str]) -> list[Text]:
+    """The closing side's size, centred on ``at``: its symbol (text and subscript) and the
+    words after it.
 
     Right-to-left words after a symbol are set as two runs, the symbol at the right and
     the words to its left, so the symbol reads first and keeps its brackets whole. (The
@@ -87,16 +117,15 @@ def _reading(fig: Figure, at: tuple[float, float], reading: tuple[str, str, str]
     """
     text, sub, tail = reading
     if not (right_to_left() and sub and tail):
-        fig.add(Text(at, text, 3.0, anchor, False, "normal", sub, tail))
-        return
+        return [Text(at, text, 3.0, "middle", False, "normal", sub, tail)]
     symbol = Text((0.0, 0.0), text, 3.0, "start", False, "normal", sub)
     words_after = tail.strip()
     gap = 1.5 * text_width(" ", 3.0)
     width = symbol.width + gap + text_width(words_after, 3.0)
-    left = at[0] - {"start": 0.0, "middle": width / 2, "end": width}[anchor]
-    fig.add(Text((left + width - symbol.width, at[1]), text, 3.0, "start", False, "normal",
-                 sub))
-    fig.add(Text((left, at[1]), words_after, 3.0, "start", False))
+    left = at[0] - width / 2
+    return [Text((left + width - symbol.width, at[1]), text, 3.0, "start", False, "normal",
+                 sub),
+            Text((left, at[1]), words_after, 3.0, "start", False)]
 
 
 def _outward(a, b, corners, by: float, *, up: bool) -> tuple[float, float]:

@@ -280,7 +280,9 @@ class LabelPlacer:
         c, _ = self.spot(x1 - x0, y1 - y0, anchor, prefer=prefer, spread=spread, gap=gap,
                          rings=rings, own=owned)
         t = Text((c[0], c[1] - dy), text, size, "middle", italic, sub=sub, owner=own)
-        return self._commit(t, box(*t.box()))
+        self.block_label(t.box())
+        self.fig.add(t)
+        return t
 
     def place_numbered(self, text: str, anchor: tuple[float, float] | list[tuple[float, float]],
                        numbers: list[int], *, sub: str = "",
@@ -340,10 +342,11 @@ class LabelPlacer:
                    weight=LABEL)
         return c
 
-    def _commit(self, t: Text, shape: BaseGeometry) -> Text:
-        self.block(shape.buffer(0.4), weight=LABEL)
-        self.fig.add(t)
-        return t
+    def block_label(self, bounds: tuple[float, float, float, float]) -> None:
+        """Mark a label set by the caller at a :meth:`spot`, its box ``(x0, y0, x1, y1)``,
+        as taken, as :meth:`place` marks its own."""
+        self.block(box(*bounds).buffer(0.4), weight=LABEL)
+
 
 
 Shape = tuple[tuple[float, float], ...]

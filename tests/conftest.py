@@ -10,20 +10,22 @@ from __future__ import annotations
 
 import pytest
 
+from tarsim import solve
 from tarsim.exercises.catalog import load
-from tarsim.exercises.solution_files import WorkedSolution, solve_worked
+from tarsim.exercises.solution_files import WorkedSolution
 
 from tests.browser import chromium
 
 
 @pytest.fixture(scope="session")
 def solved():
-    """``solved(exercise_id)``: the bundled exercise solved and drawn, once per run."""
+    """``solved(exercise_id)``: the bundled exercise, of any chapter, solved and drawn, once
+    per run."""
     cache: dict[str, WorkedSolution] = {}
 
     def get(exercise_id: str) -> WorkedSolution:
         if exercise_id not in cache:
-            cache[exercise_id] = solve_worked(load(exercise_id))
+            cache[exercise_id] = solve(load(exercise_id))
         return cache[exercise_id]
     return get
 

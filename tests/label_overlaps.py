@@ -99,12 +99,13 @@ def strays(fig: Figure, tol: float = 0.05) -> list[tuple[str, tuple, tuple]]:
 
 
 def bundled_counts() -> dict[str, dict[str, int]]:
-    """``{"<exercise>/<figure stem>": counts}`` for every bundled exercise's figures."""
-    from tarsim.exercises.catalog import bundled, bundled_forces, load
-    from tarsim.exercises.solution_files import solve_worked
+    """``{"<exercise>/<figure stem>": counts}`` for every bundled exercise's figures, of
+    every chapter."""
+    from tarsim import load, solve
+    from tarsim.exercises.catalog import everything
 
-    return {f"{name}/{stem}": count(fig) for name in [*bundled(), *bundled_forces()]
-            for stem, fig in solve_worked(load(name)).figures.items()}
+    return {f"{name}/{stem}": count(fig) for name in everything()
+            for stem, fig in solve(load(name)).figures.items()}
 
 
 if __name__ == "__main__":

@@ -1,8 +1,8 @@
-"""No bundled figure has a label over another label or over an arrowhead, nor a point's
-name nearer another named point than its own; none covers more lines with its labels than
-tests/data/label_overlaps.json records (tests/label_overlaps.py counts all this from the
-figure's primitives). A change that places labels faster or better must keep every count
-at or below its record; lower it in the record when it falls."""
+"""No bundled figure, of any chapter, has a label over another label or over an arrowhead,
+nor a point's name nearer another named point than its own; none covers more lines with
+its labels than tests/data/label_overlaps.json records (tests/label_overlaps.py counts all
+this from the figure's primitives). A change that places labels faster or better must keep
+every count at or below its record; lower it in the record when it falls."""
 
 from __future__ import annotations
 
@@ -10,14 +10,14 @@ import json
 
 import pytest
 
-from tarsim.exercises.catalog import bundled, bundled_forces
+from tarsim.exercises.catalog import everything
 from tests.label_overlaps import KINDS, RECORD, count, strays
 
 RECORDED = json.loads(RECORD.read_text(encoding="utf-8"))
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("exercise_id", sorted([*bundled(), *bundled_forces()]))
+@pytest.mark.parametrize("exercise_id", sorted(everything()))
 def test_no_figure_covers_more_than_its_record(solved, exercise_id):
     for stem, fig in solved(exercise_id).figures.items():
         key = f"{exercise_id}/{stem}"
