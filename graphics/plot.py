@@ -394,8 +394,10 @@ def _draw_marks(fig: Figure, marks: list[tuple[float, float, str]],
                          axis=1)
         leaders = _leaders(x, y, boxes, ring)
         cost = _overlaps(boxes, taken, segments, frame) + 0.05 * ring
-        # A leader across a curve reads as part of it: it costs as the box crossing one.
+        # A leader across a curve reads as part of it: it costs as the box crossing one;
+        # one through another mark's circle points at that mark.
         cost += _crossed(*leaders, segments)
+        cost += _through_marks(*leaders, [(mx, my) for mx, my, _ in marks if (mx, my) != (x, y)])
         k = int(np.argmin(cost))
         best = tuple(boxes[k].tolist())
         cx, cy = (best[0] + best[2]) / 2, (best[1] + best[3]) / 2
@@ -421,6 +423,19 @@ def _leaders(x: float, y: float, boxes: np.ndarray,
     end = np.stack([ex - ux * 0.3, ey - uy * 0.3], axis=1)
     start[~led] = end[~led] = np.nan
     return start, end
+
+
+def _through_marks(a: np.ndarray, b: np.ndarray, others: list[Point]) -> np.ndarray:
+    """1 for each leader (from ``a`` to ``b``, a row each; NaN for none) that passes
+    within a gap of the circle of any of ``others``, else 0."""
+    if not others:
+        return np.zeros(len(a))
+    o = np.asarray(others, dtype=float)[None, :, :]
+    d = (b - a)[:, None, :]
+    n2 = np.maximum((d * d).sum(axis=2), 1e-12)
+    t = np.clip(((o - a[:, None, :]) * d).sum(axis=2) / n2, 0.0, 1.0)
+    near = np.hypot(*np.moveaxis(a[:, None, :] + t[..., None] * d - o, 2, 0))
+    return (np.nan_to_num(near, nan=np.inf) < _MARK_R + 0.3).any(axis=1).astype(float)
 
 
 def _crossed(a: np.ndarray, b: np.ndarray, segments) -> np.ndarray:

@@ -282,6 +282,26 @@ def test_a_plot_clips_a_periodic_curve_to_its_axis():
     assert max(xs) == pytest.approx(frame.points[1][0])
 
 
+def test_no_leader_runs_through_another_marks_circle(solved):
+    # The single cylinder's 769.3 N and 888.3 N at 30° are marks a few millimetres apart
+    # on two crossing curves: a leader through one circle to the other's label would point
+    # at the wrong value.
+    from tarsim.graphics.plot import _MARK_R
+
+    fig = solved("single-cylinder").figures["forces"]
+    circles = [c.centre for c in fig.items if getattr(c, "style", "") == "plot_mark"]
+    leaders = [p.points for p in fig.items if getattr(p, "style", "") == "plot_leader"]
+    assert leaders
+    for a, b in leaders:
+        own = min(circles, key=lambda c: math.dist(c, a))     # a leader starts on its circle
+        for c in circles:
+            if c != own:
+                t = max(0.0, min(1.0, ((c[0] - a[0]) * (b[0] - a[0]) + (c[1] - a[1])
+                                       * (b[1] - a[1])) / math.dist(a, b) ** 2))
+                near = math.dist(c, (a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])))
+                assert near > _MARK_R, (a, b, c)
+
+
 # ----- the command line ------------------------------------------------------------------------
 def test_sweep_writes_its_files_and_reports(tmp_path):
     out = tmp_path / "shaper-sweep"
