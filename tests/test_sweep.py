@@ -293,7 +293,7 @@ def test_no_leader_runs_through_another_marks_circle(solved):
     leaders = [p.points for p in fig.items if getattr(p, "style", "") == "plot_leader"]
     assert leaders
     for a, b in leaders:
-        own = min(circles, key=lambda c: math.dist(c, a))     # a leader starts on its circle
+        own = min(circles, key=lambda c: abs(math.dist(c, a) - _MARK_R))   # starts on its own
         for c in circles:
             if c != own:
                 t = max(0.0, min(1.0, ((c[0] - a[0]) * (b[0] - a[0]) + (c[1] - a[1])
