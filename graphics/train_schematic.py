@@ -3,7 +3,7 @@
 The main axis is a centre line (an ordinary train's gears each stand on their own, a
 centre distance above the one that drives them). A gear is a rectangle as tall as its pitch
 diameter about its own axis, its face across; a ring is its two rims, teeth inward, and a
-web out to its hub. A planet stands on the arm's pin at the carrier radius, drawn above the
+web out to its hub. A planet stands on a pin of the arm at its carrier radius, drawn above the
 main axis and again below it. The arm is a bar from its hub out to the pin, on the side
 facing the input.
 The input's shaft and those of the members a ratio or torque is asked of leave along the
@@ -85,12 +85,18 @@ def draw_train_schematic(train: GearTrain, title: str, outputs: tuple[int, ...] 
             (train.input_member, *outputs))
     if train.arm is not None and train.planetary:
         xa = plane[train.arm] * _PLANE + _FACE / 2
-        pin = -axis[next(g.number for g in train.gears if g.carrier is not None)] * mm
+        # A pin for each carrier radius the planets stand at (two planets in series on the
+        # arm stand at two), all on the arm's one bar.
+        pins = sorted({-axis[g.number] * mm for g in train.gears if g.carrier is not None},
+                      key=abs)
+        pin, far = pins[0], pins[-1]
         reach_x = max(plane[g.number] for g in train.gears if train.carried(g.number)) * _PLANE
-        for cy in (pin, -pin):
-            fig.add(Path(((xa, 0.0), (xa, cy), (reach_x + _FACE, cy)), "link"))
+        for s in (1.0, -1.0):
+            fig.add(Path(((xa, 0.0), (xa, s * far), (reach_x + _FACE, s * far)), "link"))
+            for cy in pins[:-1]:
+                fig.add(Path(((xa, s * cy), (reach_x + _FACE, s * cy)), "link"))
         if train.arm in fixed:
-            draw_hatched_band(fig, (xa, pin), (xa, -pin), (-1.0, 0.0))
+            draw_hatched_band(fig, (xa, far), (xa, -far), (-1.0, 0.0))
         labels.append((str(train.arm), (xa, 0.5 * pin)))
     for text, at in labels:
         placer.place(text, at, prefer=(0.0, 3.1416, 1.57), spread=0.7, gap=1.5, size=3.6,

@@ -46,6 +46,27 @@ def test_q2_gives_the_notes_ratio_of_minus_three_sevenths():
     assert [s.found.table.total[m] for m in (3, 2, 4, 5)] == [1, 0, F(7, 3), -1]
 
 
+@pytest.mark.parametrize("name", ["planetary-q1", "planetary-q2", "planetary-q3", "planetary-q4"])
+def test_every_planet_drawn_stands_on_a_pin_of_the_arm(name):
+    # Q2's second planet meshes with the first only, at a larger carrier radius: the arm
+    # carries it on a pin of its own, as it does the first.
+    fig = solve_train(load(name)).figures["train"]
+    links = [p.points for p in fig.items if getattr(p, "style", "") == "link"]
+    boxes = [pts for pts in links if len(pts) == 4 and pts[0][1] == pts[1][1]]
+    axis = next(p.points[0][1] for p in fig.items if getattr(p, "style", "") == "reference")
+    planets = 0
+    for box in boxes:
+        xs, ys = [x for x, _ in box], [y for _, y in box]
+        y = (min(ys) + max(ys)) / 2
+        if abs(y - axis) < 1e-6 or max(ys) - min(ys) < 3.5:     # on the main axis, or a rim
+            continue
+        planets += 1
+        assert any(a[1] == b[1] and abs(a[1] - y) < 1e-9 and min(a[0], b[0]) < min(xs)
+                   and max(a[0], b[0]) >= max(xs) - 1e-9
+                   for pts in links if pts is not box for a, b in zip(pts, pts[1:])), (name, y)
+    assert planets >= 2                     # each planet drawn above the axis and below
+
+
 def test_q3_the_reverted_train_has_the_notes_train_value_five_ninths():
     s = solved("planetary-q3")
     assert s.quantities["omega5/omega6"].exact == F(5, 9)
