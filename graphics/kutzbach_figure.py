@@ -69,7 +69,7 @@ def draw_kutzbach_figure(train: GearTrain, k: Kutzbach, title: str,
         w = k.omegas[body[0]] / train.units.per_rad_s
         sense = "" if w == 0 else " " + words("ccw" if w > 0 else "cw")
         names = ", ".join(subscript(f"ω{m}") for m in body)
-        named.append((f"{names} = {abs(w):.4g} {train.units.speed}{sense}", end))
+        named.append((f"{names} = {abs(w):.4g} {train.units.speed}{sense}", lo, end))
     dots: list[tuple[float, float]] = []
     for ref, p in points.items():
         if ref.startswith("kz:r:") or any(abs(p[0] - q[0]) + abs(p[1] - q[1]) < 0.1
@@ -78,9 +78,11 @@ def draw_kutzbach_figure(train: GearTrain, k: Kutzbach, title: str,
         dots.append(p)
         fig.add(Circle(p, 0.7, "dot"))
         placer.block(g_point_box(p))
-    for text, end in named:
+    # Each ω is read off its own line: its name stands nearer that line than any other.
+    placer.name_vectors((lo, end) for _, lo, end in named)
+    for text, lo, end in named:
         placer.place(text, end, prefer=(1.57, 0.0, 3.1416), gap=1.5, size=3.0, italic=False,
-                     rings=(1.0, 1.6, 2.3, 3.2, 4.5, 6.0))
+                     rings=(1.0, 1.6, 2.3, 3.2, 4.5, 6.0), own=(lo, end))
     for ref, p in points.items():
         if not ref.startswith("kz:r:") and p in dots:      # each dot's first name, once
             dots.remove(p)

@@ -4,7 +4,7 @@ The main axis is a centre line (an ordinary train's gears each stand on their ow
 centre distance above the one that drives them). A gear is a rectangle as tall as its pitch
 diameter about its own axis, its face across; a ring is its two rims, teeth inward, and a
 web out to its hub. A planet stands on a pin of the arm at its carrier radius, drawn above the
-main axis and again below it. The arm is a bar from its hub out to the pin, on the side
+main axis and again below it. The arm is a bar from its hub out to its pins, on the side
 facing the input.
 The input's shaft and those of the members a ratio or torque is asked of leave along the
 axis, the first plane's to the left and the last's to the right. The fixed member is
