@@ -23,6 +23,7 @@ from .symbols import draw_arrow
 __all__ = ["draw_polygon", "draw_end_view", "draw_side_view"]
 
 _ROOM = 120.0     # paper (mm) the polygon's or view's extent is fitted to
+_REFERENCE_PAST = 8.0   # mm the 0° radius runs past a mass's circle that lies along it
 
 
 def draw_polygon(c: Construction, tips: Sequence[tuple[str, Ref]], closing: Ref, title: str,
@@ -165,8 +166,13 @@ def draw_end_view(c: Construction, masses: Sequence[tuple[str, float, str]], tit
     width, at = max(gaps)
     mid = at + width / 2
     fig.add(Text((4.2 * math.cos(mid), -4.2 * math.sin(mid) + 1.0), "O", 3.0, "middle", True))
-    fig.add(Path(((0.0, 0.0), (reach * k * 0.35, 0.0)), "reference"))   # the 0° radius
-    taken: list = []                    # the names set so far: each moved out till clear
+    # The 0° radius, short; where a mass lies along it, run on past that mass's circle so
+    # it shows, and kept clear of the names.
+    on_it = [r * k for r, a in _radii(c, masses, found) if abs(math.remainder(a, 2 * math.pi))
+             < math.radians(2.0)]
+    length = max(on_it) + 1.6 + _REFERENCE_PAST if on_it else reach * k * 0.35
+    fig.add(Path(((0.0, 0.0), (length, 0.0)), "reference"))
+    taken: list = [(max(on_it) + 1.6, -0.6, length, 0.6)] if on_it else []
     for name, _, label in masses:
         x, y = c.output(f"P{name}").xy
         at = (x * k, -y * k)
@@ -193,6 +199,15 @@ def draw_end_view(c: Construction, masses: Sequence[tuple[str, float, str]], tit
                  per_cm=per_cm, unit=unit, notes=notes,
                  legend=(("link", "a mass"), ("normal", "a balancing mass found")))
     return fig
+
+
+def _radii(c: Construction, masses, found) -> list[tuple[float, float]]:
+    """Each mass's and balancing mass's radius (m) and angle (rad) in the end view."""
+    out = []
+    for name, _, _ in masses:
+        x, y = c.output(f"P{name}").xy
+        out.append((math.hypot(x, y), math.atan2(y, x)))
+    return out + [(radius, angle) for _, angle, radius in found]
 
 
 def draw_side_view(planes: Sequence[tuple[str, float, str]], title: str, unit: str,

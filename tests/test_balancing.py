@@ -47,6 +47,18 @@ def test_the_notes_example_balances_at_1_3907_kg_m_and_3_90_degrees():
     assert math.hypot(*v) / 0.1 == pytest.approx(13.9068, abs=5e-4)       # kg at 0.1 m
 
 
+def test_the_reference_radius_shows_past_a_mass_that_lies_along_it():
+    # The four-mass shaft's mass 1 sits at 0°: the caption points to "the short dashed one",
+    # so it must run on beyond mass 1's circle, not lie hidden under its radial line.
+    fig = solve_balance(load("four-mass-shaft")).figures["space"]
+    ref = next(p.points for p in fig.items if getattr(p, "style", "") == "reference")
+    (x0, y0), (x1, y1) = ref
+    on_it = [c for c in fig.items if getattr(c, "style", "") == "pin"
+             and abs(c.centre[1] - y0) < 1e-6 and c.centre[0] > x0]
+    assert on_it and y1 == y0
+    assert x1 >= max(c.centre[0] + c.radius for c in on_it) + 5.0
+
+
 def test_the_books_erratum_is_sin_225_taken_positive():
     """With sin 225° = +√2/2 the sums are the book's: ΣF_y = 2.0267, 61.40 N at 124.4°."""
     wrong_y = 0.2 * math.sin(math.radians(30)) + 1.0 * math.sin(math.radians(120)) \
