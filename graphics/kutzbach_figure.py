@@ -12,7 +12,7 @@ from __future__ import annotations
 from ..constructions import geometry as g
 from ..constructions.gears.kutzbach import Kutzbach
 from ..constructions.gears.train import GearTrain
-from ..constructions.narration import words
+from ..constructions.narration import numeral, unit_words, words
 from .figure import Circle, Figure, Path
 from .labels import LabelPlacer, subscript
 from .scales import draw_caption
@@ -69,7 +69,8 @@ def draw_kutzbach_figure(train: GearTrain, k: Kutzbach, title: str,
         w = k.omegas[body[0]] / train.units.per_rad_s
         sense = "" if w == 0 else " " + words("ccw" if w > 0 else "cw")
         names = ", ".join(subscript(f"ω{m}") for m in body)
-        named.append((f"{names} = {abs(w):.4g} {train.units.speed}{sense}", lo, end))
+        named.append((f"{names} = {numeral(abs(w), '.4g')} {unit_words(train.units.speed)}"
+                      f"{sense}", lo, end))
     dots: list[tuple[float, float]] = []
     for ref, p in points.items():
         if ref.startswith("kz:r:") or any(abs(p[0] - q[0]) + abs(p[1] - q[1]) < 0.1
