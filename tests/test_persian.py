@@ -136,6 +136,24 @@ def test_a_chapters_persian_steps_say_their_results_in_persian(name):
         assert not re.search("[۰-۹]", solve(ex).steps()), name
 
 
+@pytest.mark.parametrize("name", ["planetary-q1", "planetary-q3", "planetary-q4"])
+def test_a_persian_kutzbach_diagram_gives_each_omega_in_persian(name):
+    """Each line's ω on the velocity diagram, in Persian digits and Persian units, as the
+    train's table and scale bars give theirs."""
+    from tarsim.constructions.narration import speaking
+    from tarsim.exercises.catalog import load
+    from tarsim.exercises.train_solution import solve_train
+
+    with speaking("fa"):
+        fig = solve_train(load(name)).figures["kutzbach"]
+    omegas = [t.text for t in fig.items if getattr(t, "text", "").startswith("ω") and "=" in t.text]
+    assert omegas, name
+    for text in omegas:
+        value = text.split("=", 1)[1]
+        assert not any(c in string.digits for c in value) and "rpm" not in value, text
+        assert any("۰" <= c <= "۹" for c in value), text
+
+
 def test_the_whole_mechanisms_results_are_persian_too(tmp_path):
     """The notes' crank-rocker question (001): AB may run from 65 to 135 mm. In Persian the
     class, the range and Grashof's sums are said in the notes' words and Persian digits."""
