@@ -98,6 +98,7 @@ def draw_train_schematic(train: GearTrain, title: str, outputs: tuple[int, ...] 
         if train.arm in fixed:
             draw_hatched_band(fig, (xa, far), (xa, -far), (-1.0, 0.0))
         labels.append((str(train.arm), (xa, 0.5 * pin)))
+    placer.block_drawn()        # the axes, the shafts, the webs and the arm as well
     for text, at in labels:
         placer.place(text, at, prefer=(0.0, 3.1416, 1.57), spread=0.7, gap=1.5, size=3.6,
                      italic=False)
