@@ -14,6 +14,7 @@ import math
 from ..constructions.cams.displacement import Displacement
 from ..constructions.narration import numerals, unit_words, words
 from .figure import Circle, Figure, Path, Text, arc_points
+from .labels import LabelPlacer
 from .scales import draw_caption, nice_per_cm
 from .symbols import draw_dimension
 
@@ -49,6 +50,7 @@ def draw_displacement_figure(d: Displacement, curve: list[tuple[float, float]], 
         fig.add(Path((paper(c.output(start).xy), paper(c.output(end).xy)), "construction"))
     for (cx, cy), r, start, sweep in _arcs(d, paper):
         fig.add(Path(tuple(arc_points((cx, cy), r, start, sweep)), "construction"))
+    numbers: list[tuple[str, tuple[float, float], float]] = []
     for segment in d.curves:
         ys = [paper(c.output(ref).xy)[1] for _, ref in segment]
         for i, (_, ref) in enumerate(segment):
@@ -56,11 +58,9 @@ def draw_displacement_figure(d: Displacement, curve: list[tuple[float, float]], 
             fig.add(Path(((x, 0.0), (x, y)), "reference"))          # its ordinate
             fig.add(Circle((x, y), 0.6, "dot"))
             if 0 < i < len(segment) - 1:
-                # Above the curve, on the side it comes down from: clear of the curve, the
-                # ordinate, and the projection that runs in at the point's own height.
+                # Above the curve, on the side it comes down from, first.
                 rising = ys[i + 1] < ys[i - 1]               # paper y runs down
-                fig.add(Text((x - 1.3 if rising else x + 1.3, y - 2.3), numerals(str(i)), 2.6,
-                             "end" if rising else "start", False))
+                numbers.append((numerals(str(i)), (x, y), 2.36 if rising else 0.79))
     if top > 0:
         mid = draw_dimension(fig, (right, 0.0), (right, -top * k), (1.0, 0.0), 6.0)
         fig.add(Text((mid[0] + 1.5, mid[1]), f"{numerals(f'{top / metre:.4g}')} "
@@ -70,6 +70,14 @@ def draw_displacement_figure(d: Displacement, curve: list[tuple[float, float]], 
                 "(a swing of {angle}°)", angle=numerals(f"{math.degrees(top / arm):.4g}")),
                 2.8, "start", False))
     fig.add(Path(tuple(paper((t * d.per_rad, y)) for t, y in curve), "vector_result"))
+    # The numbers last, each clear of every line drawn (the curve, the ordinates, the
+    # construction's working lines) and nearer its own point than any other.
+    placer = LabelPlacer(fig)
+    placer.block_drawn()
+    placer.name_points(at for _, at, _ in numbers)
+    for text, at, prefer in numbers:
+        placer.place(text, at, prefer=prefer, spread=1.2, gap=1.2, size=2.6,
+                     italic=False, own=at)
     draw_caption(fig, title, [words("cam angle across, lift up; each segment's construction")
                               if not arm else words(
                                   "cam angle across, the arc the arm's end swings up ({arm} "
