@@ -17,6 +17,7 @@ from ..constructions.cams.inversion import Layout
 from ..constructions.cams.survey import Survey
 from ..constructions.narration import numerals, words
 from .figure import Circle, Figure, Path, Text
+from .labels import LabelPlacer
 from .scales import draw_caption, nice_per_cm
 from .symbols import draw_arrow, draw_turning_arrow, mark_angle
 
@@ -45,6 +46,7 @@ def draw_cam_layout(layout: Layout, s: Survey, title: str, unit: str, metre: flo
 
     fig = Figure(0.0, 0.0, title=title)
     o = (0.0, 0.0)
+    numbers: list[tuple[str, tuple[float, float], float]] = []   # text, where, which way
     for name, ref in layout.circles.items():
         fig.add(Circle(o, c.output(ref).radius * k, _CIRCLE_STYLE[name]))
     for p, st in zip(layout.places, s.places):
@@ -59,12 +61,13 @@ def draw_cam_layout(layout: Layout, s: Survey, title: str, unit: str, metre: flo
         fig.add(Path((start, _beyond(start, trace, past)), "construction"))
         fig.add(Circle(rest, 0.45, "dot"))
         if f.oscillating:
-            tag = _beyond(o, start, 3.5)
+            tag, away = start, _beyond(o, start, 1.0)
         elif abs(p.theta - s.steepest.theta) < 1e-9 and abs(s.steepest.pressure_angle) > 1e-9:
-            tag = _beyond(trace, rest, 3.0)       # the pressure angle's arrows run outside
+            tag, away = rest, _beyond(trace, rest, 1.0)   # the pressure angle's arrows run outside
         else:
-            tag = _beyond(start, trace, past + 2.6)
-        fig.add(Text((tag[0], tag[1] + 1.0), numerals(str(p.number)), 2.6, "middle", False))
+            tag, away = _beyond(start, trace, past), _beyond(start, trace, past + 1.0)
+        numbers.append((numerals(str(p.number)), tag,
+                        math.atan2(-(away[1] - tag[1]), away[0] - tag[0])))
         if f.kind == "roller":
             fig.add(Circle(trace, f.radius * k, "node_circle"))
         elif f.kind == "flat-faced":
@@ -92,6 +95,12 @@ def draw_cam_layout(layout: Layout, s: Survey, title: str, unit: str, metre: flo
                              math.radians(200), sense * math.radians(70))
     fig.add(Text((mid[0] - 2.5, mid[1]), "ω", 3.0, "end", False))
     _mark_steepest(fig, s, paper, k)
+    # The station numbers last, each out along its own line and clear of every line drawn
+    # (the pressure angle's arrows and arc too).
+    placer = LabelPlacer(fig)
+    placer.block_drawn()
+    for text, at, way in numbers:
+        placer.place(text, at, prefer=way, spread=1.0, gap=1.2, size=2.6, italic=False)
     for st in s.undercut[:: max(1, len(s.undercut) // 6)]:
         fig.add(Circle(paper(st.profile), 2.2, "normal"))
     legend = [("link", _cam_term("profile (the pitch curve)" if f.kind == "knife-edge"
