@@ -362,7 +362,7 @@ class BalanceSolution(ChapterFiles):
                   Series(words("left along the stroke"),
                          tuple((x, v[2]) for x, v in zip(xs, values))),
                   Series(words("left across the stroke"),
-                         tuple((x, v[3]) for x, v in zip(xs, values)), "chord_secondary")]
+                         tuple((x, v[3]) for x, v in zip(xs, values)), "plot_curve_dash_dot")]
         at = math.degrees(e.at)
         here = single_cylinder(e, e.at)
         newton = unit_words("N")

@@ -31,8 +31,9 @@ from .rtl_runs import lay_runs, sign_left
 __all__ = ["Series", "PlotMark", "nice_ticks", "tick_text", "rich_text", "draw_line_plot",
            "CURVE_STYLES"]
 
-CURVE_STYLES = ("plot_curve", "plot_curve_dashed", "plot_curve_dotted")
-"""Curve styles in the order series take them: solid black, dashed black, dotted grey."""
+CURVE_STYLES = ("plot_curve", "plot_curve_dashed", "plot_curve_dotted", "plot_curve_dash_dot")
+"""Curve styles in the order series take them: solid black, dashed black, dotted grey,
+dash-dot black."""
 
 _WIDTH = 170.0        # page width, mm (fits A4 portrait inside its margins)
 _MARGIN = 10.0        # white round the page, mm
