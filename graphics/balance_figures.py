@@ -16,7 +16,7 @@ from dataclasses import replace
 from ..constructions.narration import numerals, right_to_left, unit_words, words
 from ..constructions.record import Construction, Ref
 from .figure import Circle, Figure, Path, Text, clear_of, text_width
-from .labels import LabelPlacer
+from .labels import LabelPlacer, paper_angle
 from .scales import draw_caption, nice_per_cm
 from .symbols import draw_arrow
 
@@ -24,6 +24,7 @@ __all__ = ["draw_polygon", "draw_end_view", "draw_side_view"]
 
 _ROOM = 120.0     # paper (mm) the polygon's or view's extent is fitted to
 _REFERENCE_PAST = 8.0   # mm the 0° radius runs past a mass's circle that lies along it
+_MASS = 1.6       # radius (mm) of a mass's circle in the end view
 
 
 def draw_polygon(c: Construction, tips: Sequence[tuple[str, Ref]], closing: Ref, title: str,
@@ -66,10 +67,10 @@ def draw_polygon(c: Construction, tips: Sequence[tuple[str, Ref]], closing: Ref,
     placer.block_drawn()
     first, last = paper(points[1]), paper(points[-1])
     away = (2 * pole[0] - first[0] - last[0], 2 * pole[1] - first[1] - last[1])
-    placer.place("o", pole, prefer=_paper_angle(away), size=3.0, gap=1.6)
+    placer.place("o", pole, prefer=paper_angle(away), size=3.0, gap=1.6)
     for name, tail, tip, side in names_at:
         mid = ((tail[0] + tip[0]) / 2, (tail[1] + tip[1]) / 2)
-        placer.place(name, mid, prefer=_paper_angle(side), spread=math.pi / 2, size=2.8,
+        placer.place(name, mid, prefer=paper_angle(side), spread=math.pi / 2, size=2.8,
                      italic=False, gap=1.2, rings=(1.0, 1.6, 2.4, 3.4, 4.6), own=(tail, tip))
     if closes:
         mid = ((prev[0] + pole[0]) / 2, (prev[1] + pole[1]) / 2)
@@ -83,17 +84,12 @@ def draw_polygon(c: Construction, tips: Sequence[tuple[str, Ref]], closing: Ref,
     return fig
 
 
-def _paper_angle(v: tuple[float, float]) -> float:
-    """The direction of a paper vector (y down) as the label placer takes it."""
-    return math.atan2(-v[1], v[0])
-
-
 def _place_reading(placer: LabelPlacer, at: tuple[float, float],
                    reading: tuple[str, str, str], side: tuple[float, float]) -> None:
     """The closing side's size set clear of everything, beside ``at`` on ``side``."""
     texts = _reading((0.0, 0.0), reading)
     x0, y0, x1, y1 = _bounds(texts)
-    (cx, cy), _ = placer.spot(x1 - x0, y1 - y0, at, prefer=_paper_angle(side), gap=1.6)
+    (cx, cy), _ = placer.spot(x1 - x0, y1 - y0, at, prefer=paper_angle(side), gap=1.6)
     dx, dy = cx - (x0 + x1) / 2, cy - (y0 + y1) / 2
     for t in texts:
         placer.fig.add(replace(t, at=(t.at[0] + dx, t.at[1] + dy)))
@@ -158,9 +154,8 @@ def draw_end_view(c: Construction, masses: Sequence[tuple[str, float, str]], tit
     fig = Figure(0.0, 0.0, title=title)
     fig.add(Circle((0.0, 0.0), 0.9, "dot"))
     # "O" in the widest gap between the radial lines (the 0° one among them).
-    rays = sorted([0.0] + [math.atan2(c.output(f"P{name}").xy[1], c.output(f"P{name}").xy[0])
-                           % (2 * math.pi) for name, _, _ in masses]
-                  + [a % (2 * math.pi) for _, a, _ in found])
+    radii = _radii(c, masses, found)
+    rays = sorted([0.0] + [a % (2 * math.pi) for _, a in radii])
     gaps = [((rays[(i + 1) % len(rays)] - a) % (2 * math.pi) or 2 * math.pi, a)
             for i, a in enumerate(rays)]
     width, at = max(gaps)
@@ -168,16 +163,15 @@ def draw_end_view(c: Construction, masses: Sequence[tuple[str, float, str]], tit
     fig.add(Text((4.2 * math.cos(mid), -4.2 * math.sin(mid) + 1.0), "O", 3.0, "middle", True))
     # The 0° radius, short; where a mass lies along it, run on past that mass's circle so
     # it shows, and kept clear of the names.
-    on_it = [r * k for r, a in _radii(c, masses, found) if abs(math.remainder(a, 2 * math.pi))
-             < math.radians(2.0)]
-    length = max(on_it) + 1.6 + _REFERENCE_PAST if on_it else reach * k * 0.35
+    on_it = [r * k for r, a in radii if abs(math.remainder(a, 2 * math.pi)) < math.radians(2.0)]
+    length = max(on_it) + _MASS + _REFERENCE_PAST if on_it else reach * k * 0.35
     fig.add(Path(((0.0, 0.0), (length, 0.0)), "reference"))
-    taken: list = [(max(on_it) + 1.6, -0.6, length, 0.6)] if on_it else []
+    taken: list = [(max(on_it) + _MASS, -0.6, length, 0.6)] if on_it else []
     for name, _, label in masses:
         x, y = c.output(f"P{name}").xy
         at = (x * k, -y * k)
         fig.add(Path(((0.0, 0.0), at), "link"))
-        fig.add(Circle(at, 1.6, "pin"))
+        fig.add(Circle(at, _MASS, "pin"))
         d = math.hypot(*at) or 1.0
         out = (at[0] / d, at[1] / d)
         fig.add(clear_of(Text((at[0] + 4.5 * out[0], at[1] + 4.5 * out[1] + 1.0), label,
@@ -187,7 +181,7 @@ def draw_end_view(c: Construction, masses: Sequence[tuple[str, float, str]], tit
     for label, angle, radius in found:
         at = (radius * k * math.cos(angle), -radius * k * math.sin(angle))
         fig.add(Path(((0.0, 0.0), at), "normal"))
-        fig.add(Circle(at, 1.6, "badge"))
+        fig.add(Circle(at, _MASS, "badge"))
         out = (math.cos(angle), -math.sin(angle))
         fig.add(clear_of(Text((at[0] + 4.5 * out[0], at[1] + 4.5 * out[1] + 1.0), label,
                               2.8, "start" if out[0] > 0.2 else "end" if out[0] < -0.2

@@ -17,7 +17,7 @@ from ..constructions.cams.inversion import Layout
 from ..constructions.cams.survey import Survey
 from ..constructions.narration import numerals, words
 from .figure import Circle, Figure, Path, Text
-from .labels import LabelPlacer
+from .labels import LabelPlacer, paper_angle
 from .scales import draw_caption, nice_per_cm
 from .symbols import draw_arrow, draw_turning_arrow, mark_angle
 
@@ -60,14 +60,13 @@ def draw_cam_layout(layout: Layout, s: Survey, title: str, unit: str, metre: flo
                 paper(c.output(p.axis).anchor())
         fig.add(Path((start, _beyond(start, trace, past)), "construction"))
         fig.add(Circle(rest, 0.45, "dot"))
-        if f.oscillating:
-            tag, away = start, _beyond(o, start, 1.0)
+        if f.oscillating:                         # beyond the arm's pivot
+            tag, way = start, (start[0] - o[0], start[1] - o[1])
         elif abs(p.theta - s.steepest.theta) < 1e-9 and abs(s.steepest.pressure_angle) > 1e-9:
-            tag, away = rest, _beyond(trace, rest, 1.0)   # the pressure angle's arrows run outside
-        else:
-            tag, away = _beyond(start, trace, past), _beyond(start, trace, past + 1.0)
-        numbers.append((numerals(str(p.number)), tag,
-                        math.atan2(-(away[1] - tag[1]), away[0] - tag[0])))
+            tag, way = rest, (rest[0] - trace[0], rest[1] - trace[1])   # the arrows run outside
+        else:                                     # beyond the end of the follower's line
+            tag, way = _beyond(start, trace, past), (trace[0] - start[0], trace[1] - start[1])
+        numbers.append((numerals(str(p.number)), tag, paper_angle(way)))
         if f.kind == "roller":
             fig.add(Circle(trace, f.radius * k, "node_circle"))
         elif f.kind == "flat-faced":

@@ -21,6 +21,7 @@ from .symbols import draw_dimension
 __all__ = ["draw_displacement_figure"]
 
 _ROOM = (165.0, 60.0)      # paper (mm) a turn and the greatest lift are fitted to
+_UP_LEFT, _UP_RIGHT = 2.36, 0.79    # a point number's first way out (rad): up the page
 
 
 def draw_displacement_figure(d: Displacement, curve: list[tuple[float, float]], title: str,
@@ -60,7 +61,7 @@ def draw_displacement_figure(d: Displacement, curve: list[tuple[float, float]], 
             if 0 < i < len(segment) - 1:
                 # Above the curve, on the side it comes down from, first.
                 rising = ys[i + 1] < ys[i - 1]               # paper y runs down
-                numbers.append((numerals(str(i)), (x, y), 2.36 if rising else 0.79))
+                numbers.append((numerals(str(i)), (x, y), _UP_LEFT if rising else _UP_RIGHT))
     if top > 0:
         mid = draw_dimension(fig, (right, 0.0), (right, -top * k), (1.0, 0.0), 6.0)
         fig.add(Text((mid[0] + 1.5, mid[1]), f"{numerals(f'{top / metre:.4g}')} "

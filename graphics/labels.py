@@ -24,7 +24,7 @@ from .figure import Circle, Figure, Path, Text
 from .occupancy import Occupancy
 from .symbols import badge_radius, draw_badge
 
-__all__ = ["LabelPlacer", "typeset", "typeset_span", "subscript"]
+__all__ = ["LabelPlacer", "paper_angle", "typeset", "typeset_span", "subscript"]
 
 
 class LabelPlacer:
@@ -338,15 +338,24 @@ class LabelPlacer:
         for n, r in zip(numbers, radii):
             draw_badge(self.fig, (x + r, c[1]), n)
             x += 2 * r + 0.6
-        self.block(box(c[0] - w / 2, c[1] - h / 2, c[0] + w / 2, c[1] + h / 2).buffer(0.4),
-                   weight=LABEL)
+        self.block_label((c[0] - w / 2, c[1] - h / 2, c[0] + w / 2, c[1] + h / 2))
         return c
 
     def block_label(self, bounds: tuple[float, float, float, float]) -> None:
-        """Mark a label set by the caller at a :meth:`spot`, its box ``(x0, y0, x1, y1)``,
-        as taken, as :meth:`place` marks its own."""
+        """Mark a placed label's box ``(x0, y0, x1, y1)`` as taken, with room about it, at
+        :data:`LABEL`'s price: as :meth:`place` marks its own, for a label its caller set at
+        a :meth:`spot`."""
         self.block(box(*bounds).buffer(0.4), weight=LABEL)
 
+
+def paper_angle(v: tuple[float, float]) -> float:
+    """The direction of a paper vector (y down) as :meth:`LabelPlacer.spot` takes a
+    ``prefer``: radians from the x axis, counter-clockwise as the page is read.
+
+    >>> round(paper_angle((0.0, -1.0)), 4)           # up the page
+    1.5708
+    """
+    return math.atan2(-v[1], v[0])
 
 
 Shape = tuple[tuple[float, float], ...]

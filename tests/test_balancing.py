@@ -47,10 +47,10 @@ def test_the_notes_example_balances_at_1_3907_kg_m_and_3_90_degrees():
     assert math.hypot(*v) / 0.1 == pytest.approx(13.9068, abs=5e-4)       # kg at 0.1 m
 
 
-def test_the_reference_radius_shows_past_a_mass_that_lies_along_it():
+def test_the_reference_radius_shows_past_a_mass_that_lies_along_it(solved):
     # The four-mass shaft's mass 1 sits at 0°: the caption points to "the short dashed one",
     # so it must run on beyond mass 1's circle, not lie hidden under its radial line.
-    fig = solve_balance(load("four-mass-shaft")).figures["space"]
+    fig = solved("four-mass-shaft").figures["space"]
     ref = next(p.points for p in fig.items if getattr(p, "style", "") == "reference")
     (x0, y0), (x1, y1) = ref
     on_it = [c for c in fig.items if getattr(c, "style", "") == "pin"

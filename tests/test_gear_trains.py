@@ -50,7 +50,7 @@ def test_q2_gives_the_notes_ratio_of_minus_three_sevenths():
 def test_every_planet_drawn_stands_on_a_pin_of_the_arm(name):
     # Q2's second planet meshes with the first only, at a larger carrier radius: the arm
     # carries it on a pin of its own, as it does the first.
-    fig = solve_train(load(name)).figures["train"]
+    fig = solved(name).figures["train"]
     links = [p.points for p in fig.items if getattr(p, "style", "") == "link"]
     boxes = [pts for pts in links if len(pts) == 4 and pts[0][1] == pts[1][1]]
     axis = next(p.points[0][1] for p in fig.items if getattr(p, "style", "") == "reference")
