@@ -89,7 +89,8 @@ def _place_reading(placer: LabelPlacer, at: tuple[float, float],
     """The closing side's size set clear of everything, beside ``at`` on ``side``."""
     texts = _reading((0.0, 0.0), reading)
     x0, y0, x1, y1 = _bounds(texts)
-    (cx, cy), _ = placer.spot(x1 - x0, y1 - y0, at, prefer=paper_angle(side), gap=1.6)
+    (cx, cy), _ = placer.spot(x1 - x0, y1 - y0, at, prefer=paper_angle(side), gap=1.6,
+                              rings=(1.0, 1.6, 2.3, 3.2, 4.5, 6.0))
     dx, dy = cx - (x0 + x1) / 2, cy - (y0 + y1) / 2
     for t in texts:
         placer.fig.add(replace(t, at=(t.at[0] + dx, t.at[1] + dy)))
