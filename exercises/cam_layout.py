@@ -16,7 +16,8 @@ from typing import Any
 
 from ..constructions.cams.displacement import Displacement
 from ..constructions.cams.inversion import Layout, lay_out_profile
-from ..constructions.cams.survey import Survey, survey
+from ..constructions.cams.rounding import lift_bounds
+from ..constructions.cams.survey import Survey, Undercut, survey
 from ..constructions.errors import InputError
 from ..constructions.narration import narrate, numeral, numerals, spoken, unit_words, words
 from ..graphics.cam_layout_figure import draw_cam_layout
@@ -44,7 +45,8 @@ class CamProfile:
     def survey(self) -> Survey:
         """The closed form round the turn, and the layout's misses from it."""
         ex = self.exercise
-        return survey(self.layout, ex.base_radius, ex.segments, ex.sigma)
+        return survey(self.layout, ex.base_radius, ex.segments, ex.sigma,
+                      lift_bounds(self.diagram, ex.segments))
 
     @property
     def passed(self) -> bool:
@@ -68,17 +70,19 @@ class CamProfile:
         def length(v: float) -> str:
             return numerals(_signed(self.length_text(v)))
         if f.kind != "flat-faced":
-            st = s.steepest
-            steep = abs(math.degrees(st.pressure_angle))
-            out.append(words("pressure angle: greatest {angle}° at θ = {theta}°",
-                             angle=numeral(steep, ".2f"), theta=deg(st.theta)) + (
+            at = s.steepest_at
+            steep = abs(math.degrees(at.station.pressure_angle))
+            out.append(words("pressure angle: greatest {angle}° at θ = {theta}° (segment {k})",
+                             angle=numeral(steep, ".2f"), theta=deg(at.station.theta),
+                             k=numeral(at.segment, "d")) + (
                 words(" (over the 30° a translating follower is usually held to)")
                 if steep > 30 and not f.oscillating else ""))
-        st = s.sharpest
-        out.append(words("the profile's least radius of curvature: {rho} at θ = {theta}°"
-                         if f.kind == "flat-faced" else
-                         "the pitch curve's least radius of curvature: {rho} at θ = {theta}°",
-                         rho=length(st.rho), theta=deg(st.theta)) + (
+        at = s.sharpest_at
+        out.append(words("the profile's least radius of curvature: {rho} at θ = {theta}° "
+                         "(segment {k})" if f.kind == "flat-faced" else
+                         "the pitch curve's least radius of curvature: {rho} at θ = {theta}° "
+                         "(segment {k})", rho=length(at.station.rho),
+                         theta=deg(at.station.theta), k=numeral(at.segment, "d")) + (
             words(" (the roller's radius is {radius})", radius=length(f.radius))
             if f.kind == "roller" else ""))
         if f.kind == "flat-faced":
@@ -86,9 +90,10 @@ class CamProfile:
             out.append(words("the face is touched from {lo} to {hi} along it from the "
                              "follower's axis: a face at least {width} wide",
                              lo=length(lo), hi=length(hi), width=length(hi - lo)))
-        if s.undercut:
-            out.append(words("UNDERCUT from θ = {start}° to {end}° (marked on the layout)",
-                             start=deg(s.undercut[0].theta), end=deg(s.undercut[-1].theta)))
+        for span in s.undercut:
+            out.append(words("UNDERCUT from θ = {start}° to {end}°, worst in segment {k} "
+                             "(marked on the layout)", start=_degrees(span.start),
+                             end=_degrees(span.end), k=numeral(span.segment, "d")))
         worst = max((m for _, m in s.misses), default=0.0)
         verdict = words("each where the closed form puts it") if not s.misses else \
             f"OFF by {worst:.1e} m"
@@ -110,29 +115,34 @@ class CamProfile:
         out: dict[str, Any] = {}
         if f.kind != "flat-faced":
             st = s.steepest
-            m = _textbook_pressure(self.exercise, st.theta)
+            m = _textbook_pressure(self.exercise, s.steepest_at.segment, st.theta)
             out["pressure_angle_max"] = {
                 "value": abs(st.pressure_angle), "theta": st.theta,
+                "segment": s.steepest_at.segment,
                 "method": "inversion; normal to the pitch curve against the follower's motion",
                 **({"reference": {"value": abs(m), "method": "tan φ = (y′ − σe)/(s₀ + y)"}}
                    if m is not None else {})}
         st = s.sharpest
-        out["rho_min"] = {"value": st.rho, "theta": st.theta,
+        out["rho_min"] = {"value": st.rho, "theta": st.theta, "segment": s.sharpest_at.segment,
                           "method": "r_b + y + y″" if f.kind == "flat-faced"
                           else "|q₁|³ / (−σ q₁ × q₂) of the pitch curve"}
         if f.kind == "flat-faced":
             lo, hi = s.face
             out["face_width"] = {"value": hi - lo, "from": lo, "to": hi,
                                  "method": "the touch's run x = σy′ along the face"}
-        out["undercut"] = {"value": bool(s.undercut)}
+        out["undercut"] = {"value": bool(s.undercut), "spans": [
+            {"from": span.start, "to": span.end, "segment": span.segment,
+             "rho": span.worst.rho, "theta": span.worst.theta} for span in s.undercut]}
         return out
 
     # ----- figures ----------------------------------------------------------------------------
     def figures(self) -> dict[str, Figure]:
         """The layout and its table."""
         ex = self.exercise
-        notes = [words("UNDERCUT: ringed where the roller cannot make the profile")] \
-            if self.survey.undercut else []
+        notes = [words("UNDERCUT in segment {k} from θ = {start}° to {end}°: ringed where the "
+                       "follower cannot make the profile", k=numeral(span.segment, "d"),
+                       start=_degrees(span.start), end=_degrees(span.end))
+                 for span in self.survey.undercut]
         return {"profile": draw_cam_layout(self.layout, self.survey,
                                            words("{name}: profile", name=ex.name),
                                            ex.length_unit, ex.metre,
@@ -182,20 +192,28 @@ class CamProfile:
                                 heads, rows, notes=notes)
 
 
+def _degrees(angle: float) -> str:
+    """A cam angle (rad) in degrees to two places, past 360° said from 0° again."""
+    return numeral(math.degrees(angle - 2 * math.pi if angle > 2 * math.pi else angle), ".2f")
+
+
 def _signed(text: str) -> str:
     """A printed number with a true minus, and no minus on a zero."""
     return "0" + text[2:] if text.startswith("-0") and not text.strip("-0.") else \
         text.replace("-", "−")
 
 
-def _textbook_pressure(ex: CamExercise, theta: float) -> float | None:
-    """The textbook's formula for a translating follower (None for an oscillating one)."""
-    from ..constructions.reference.cam_profile import (follower_motion,
-                                                       pressure_angle_translating)
+def _textbook_pressure(ex: CamExercise, segment: int, theta: float) -> float | None:
+    """The textbook's formula for a translating follower (None for an oscillating one), at
+    ``theta`` in ``segment`` (from 1): that segment's own law, at its ends too."""
+    from ..constructions.cams.extremes import pieces
+    from ..constructions.reference.cam_profile import pressure_angle_translating
 
     if ex.follower.oscillating:
         return None
-    m = follower_motion(ex.segments, theta)
+    inside = [p for p in pieces(ex.segments) if p.segment == segment]
+    p = min(inside, key=lambda p: max(p.start + p.t0 - theta, theta - p.start - p.t1, 0.0))
+    m = p.motion(theta - p.start)
     return pressure_angle_translating(m.y, m.y1, ex.base_radius, ex.follower, ex.sigma)
 
 
@@ -205,18 +223,19 @@ def refuse_undercut(profile: CamProfile) -> None:
     Raises
     ------
     InputError
-        Naming the cam angle and the radius, and what to change.
+        Naming the segment, the cam angle and the radius there, and what to change.
     """
     s, f = profile.survey, profile.exercise.follower
     if not s.undercut:
         return
-    worst = min(s.undercut, key=lambda st: st.rho)
-    at, text = f"θ = {math.degrees(worst.theta):.2f}°", profile.length_text
+    worst: Undercut = min(s.undercut, key=lambda span: span.worst.rho)
+    st, text = worst.worst, profile.length_text
+    at = f"segment {worst.segment} at θ = {math.degrees(st.theta):.2f}°"
     if f.kind == "roller":
-        raise InputError(f"the roller (radius {text(f.radius)}) undercuts the cam at {at}: the "
-                         f"pitch curve's radius of curvature there is {text(worst.rho)}; use a "
-                         "smaller roller or a larger base circle, or --allow-undercut to draw "
-                         "it marked")
-    raise InputError(f"the flat face meets a concave profile at {at} (radius of curvature "
-                     f"{text(worst.rho)}): a flat face cannot follow it; use a larger base "
+        raise InputError(f"the roller (radius {text(f.radius)}) undercuts the cam in {at}, "
+                         f"where the pitch curve's radius is {text(st.rho)}; use a smaller "
+                         "roller, a larger base circle or a gentler segment, or "
+                         "--allow-undercut to draw it marked")
+    raise InputError(f"the flat face meets a concave profile in {at} (radius of curvature "
+                     f"{text(st.rho)}): a flat face cannot follow it; use a larger base "
                      "circle or a gentler law, or --allow-undercut to draw it marked")

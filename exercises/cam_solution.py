@@ -2,9 +2,11 @@
 and acceleration against cam angle, each segment's peaks, and the cam's profile laid out by
 inversion (:mod:`.cam_layout`), every number checked.
 
-The constructed displacement points are checked against the closed-form laws; each
-segment's peak velocity and acceleration by the textbook formulas (h/β, πh/2β, …, times ω
-and ω²) against the law sampled finely. The cam turns at constant speed here (α = 0), so
+The constructed displacement points are checked against the closed-form laws, each to the
+rounding its construction can carry (:func:`..constructions.cams.rounding.lift_bounds`);
+each segment's peak velocity, acceleration and jerk by the textbook formulas (h/β, πh/2β,
+…, times ω, ω² and ω³) against the law's own greatest value, found between samples
+(:mod:`..constructions.cams.extremes`). The cam turns at constant speed here (α = 0), so
 the chain rule's α terms vanish and jerk is y‴ω³.
 """
 
@@ -16,9 +18,13 @@ from functools import cached_property
 from typing import Any
 
 from ..constructions.cams.displacement import Displacement, draw_displacement
+from ..constructions.cams.extremes import EPS, greatest
+from ..constructions.cams.rounding import lift_bounds
+from ..constructions.cams.survey import AGREE
+from ..constructions.errors import IllConditioned
 from ..constructions.narration import (Word, narrate, numeral, numerals, phrase, spoken,
                                        unit_words, words)
-from ..constructions.reference.cam_laws import jerk_peak, motion, peaks
+from ..constructions.reference.cam_laws import jerk_peak, motion, peaks, pieces
 from ..graphics.displacement_figure import draw_displacement_figure
 from ..graphics.plot import PlotMark, Series, draw_line_plot
 from .cam_file import CamExercise
@@ -27,12 +33,9 @@ from .solution_files import ChapterFiles
 
 __all__ = ["CamSolution", "solve_cam"]
 
-_SAMPLES = 2000
-"""Points a segment's law is sampled at for the reference peaks and the curves."""
-
-_AGREE = 1e-12
-"""How far (relative to the greatest lift) a constructed point may stand off its law: a few
-roundings of the lift."""
+_PEAK = 32 * EPS
+"""How far (relative) a textbook peak may stand from its law's greatest value: a few
+roundings of each side's handful of products and quotients of h, β and π, and of a sine."""
 
 
 @dataclass(frozen=True)
@@ -51,8 +54,8 @@ class SegmentPeaks:
 
     @property
     def passed(self) -> bool:
-        """The formulas agree with the sampled law (to the sampling's own fineness)."""
-        return all(math.isinf(f) or abs(f - got) <= 1e-5 * f for f, got in (
+        """The formulas agree with the law's greatest values, to rounding."""
+        return all(math.isinf(f) or abs(f - got) <= _PEAK * f for f, got in (
             (self.velocity, self.velocity_sampled),
             (self.acceleration, self.acceleration_sampled), (self.jerk, self.jerk_sampled)))
 
@@ -70,36 +73,40 @@ class CamSolution(ChapterFiles):
         return CamProfile(self.exercise, self.diagram)
 
     @cached_property
+    def bounds(self) -> dict[str, float]:
+        """How far rounding can move each constructed point off its law, in lift (m)."""
+        return lift_bounds(self.diagram, self.exercise.segments)
+
+    @cached_property
     def misses(self) -> list[tuple[int, int, float]]:
-        """Constructed points off their law: (segment, point, miss in m)."""
+        """Constructed points off their law beyond their rounding: (segment, point, miss
+        in m)."""
         out, lift = [], 0.0
-        biggest = max(s.lift for s in self.exercise.segments) or 1.0
         for k, (s, curve, start) in enumerate(zip(self.exercise.segments, self.diagram.curves,
                                                   self.diagram.starts), start=1):
             for i, (_, ref) in enumerate(curve):
                 theta, y = self.diagram.point(ref)
                 want = lift if s.kind == "dwell" else lift + _y(s, theta - start)
-                if abs(y - want) > _AGREE * biggest:
+                if abs(y - want) > AGREE * self.bounds[ref]:
                     out.append((k, i, abs(y - want)))
             lift += _net(s)
         return out
 
     @cached_property
     def peaks(self) -> list[SegmentPeaks]:
-        """Each moving segment's peak velocity and acceleration."""
+        """Each moving segment's peak velocity, acceleration and jerk: by the textbook's
+        formula, and the law's greatest found between samples, piece by piece."""
         w = abs(self.exercise.omega)
         out = []
         for k, s in enumerate(self.exercise.segments, start=1):
             if s.kind == "dwell":
                 continue
             v, a = peaks(s.law, s.lift, s.angle, s.blend)
-            sample = [motion(s.law, s.lift, s.angle, s.angle * i / _SAMPLES, blend=s.blend)
-                      for i in range(_SAMPLES + 1)]
-            out.append(SegmentPeaks(k, s.kind, s.law, v * w, a * w * w,
-                                    max(abs(m.y1) for m in sample) * w,
-                                    max(abs(m.y2) for m in sample) * w * w,
-                                    jerk_peak(s.law, s.lift, s.angle) * w ** 3,
-                                    max(abs(m.y3) for m in sample) * w ** 3))
+            top = [_law_peak(s, lambda m: abs(m.y1)), _law_peak(s, lambda m: abs(m.y2)),
+                   _law_peak(s, lambda m: abs(m.y3))]
+            out.append(SegmentPeaks(k, s.kind, s.law, v * w, a * w * w, top[0] * w,
+                                    top[1] * w * w, jerk_peak(s.law, s.lift, s.angle) * w ** 3,
+                                    top[2] * w ** 3))
         return out
 
     @property
@@ -294,6 +301,15 @@ def _y(s, theta: float) -> float:
     return m.y - (s.lift if s.kind == "return" else 0.0)
 
 
+def _law_peak(s, size) -> float:
+    """The greatest ``size`` of a segment's law's motion over its pieces (each piece's own
+    formula at its ends, where y″ jumps)."""
+    cuts = pieces(s.law, s.blend)
+    return max(greatest(lambda t, i=i: size(motion(s.law, s.lift, s.angle, t, blend=s.blend,
+                                                   piece=i)), a * s.angle, b * s.angle)
+               for i, (a, b) in enumerate(zip(cuts, cuts[1:])))
+
+
 def _net(s) -> float:
     return s.lift if s.kind == "rise" else -s.lift if s.kind == "return" else 0.0
 
@@ -310,6 +326,31 @@ def solve_cam(ex: CamExercise, *, allow_undercut: bool = False) -> CamSolution:
     biggest = max((s.lift for s in ex.segments), default=0.0) or ex.base_radius
     solution = CamSolution(ex, draw_displacement(list(ex.segments),
                                                  6 * biggest / (2 * math.pi)))
+    _refuse_lost_lifts(solution)
     if not allow_undercut:
         refuse_undercut(solution.profile)
     return solution
+
+
+def _refuse_lost_lifts(solution: CamSolution) -> None:
+    """Refuse a segment whose lift rounding could hide: its points' tolerance as large as
+    the lift itself, so their check could not fail.
+
+    Raises
+    ------
+    IllConditioned
+        Naming the segment, its lift and the tolerance.
+    """
+    ex = solution.exercise
+    for k, (s, curve) in enumerate(zip(ex.segments, solution.diagram.curves), start=1):
+        if s.kind == "dwell" or not s.lift:
+            continue
+        tol = AGREE * max(solution.bounds[ref] for _, ref in curve)
+        if tol >= s.lift:
+            unit, metre = ex.length_unit, ex.metre
+            raise IllConditioned(
+                f"segment {k} ({s.kind} of {s.lift / metre:.3g} {unit} over "
+                f"{math.degrees(s.angle):.3g}°) is too small beside the rest of the cam to draw: "
+                f"rounding could move its points {tol / metre:.1e} {unit}; make it a dwell or "
+                "give it more lift or angle", name=f"segment {k}", method="displacement diagram",
+                conditioning=s.lift / tol, miss=tol / s.lift)

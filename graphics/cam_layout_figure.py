@@ -100,7 +100,7 @@ def draw_cam_layout(layout: Layout, s: Survey, title: str, unit: str, metre: flo
     placer.block_drawn()
     for text, at, way in numbers:
         placer.place(text, at, prefer=way, spread=1.0, gap=1.2, size=2.6, italic=False)
-    for st in s.undercut[:: max(1, len(s.undercut) // 6)]:
+    for st in _ringed(s):
         fig.add(Circle(paper(st.profile), 2.2, "normal"))
     legend = [("link", _cam_term("profile (the pitch curve)" if f.kind == "knife-edge"
                                  else "profile")),
@@ -151,8 +151,20 @@ def _mark_steepest(fig: Figure, s: Survey, paper, k: float) -> None:
     spot = (at[0] + (length + 4.0) * out[0], at[1] + (length + 4.0) * out[1])
     fig.add(Text(spot, words("φ max = {phi}° at θ = {theta}°",
                              phi=numerals(f"{abs(math.degrees(st.pressure_angle)):.1f}"),
-                             theta=numerals(f"{math.degrees(st.theta):.0f}")), 2.8,
+                             theta=numerals(f"{math.degrees(st.theta):.4g}")), 2.8,
                  "start" if out[0] >= 0 else "end", False))
+
+
+def _ringed(s: Survey, most: int = 6):
+    """The stations ringed in each undercut span: its worst, and up to ``most`` of the
+    drawn stations inside it, spread along it."""
+    out = []
+    for span in s.undercut:
+        inside = [st for st in s.stations
+                  if span.start <= st.theta <= span.end
+                  or span.start <= st.theta + 2 * math.pi <= span.end]
+        out += inside[:: max(1, len(inside) // most)] + [span.worst]
+    return out
 
 
 def _unit(v: tuple[float, float]) -> tuple[float, float]:

@@ -47,6 +47,8 @@ class Place:
     follower: Ref
     pivot: Ref | None = None
     axis: Ref | None = None
+    source: Ref | None = None
+    """The diagram's point the lift was taken from with dividers."""
 
 
 @dataclass
@@ -61,9 +63,10 @@ class Layout:
     """What the profile is, said after the stations: it is drawn, not constructed."""
 
 
-def stations(d: Displacement) -> list[tuple[float, float]]:
-    """The diagram's constructed points as (cam angle, lift), once each round the turn."""
-    out: list[tuple[float, float]] = []
+def stations(d: Displacement) -> list[tuple[float, float, Ref]]:
+    """The diagram's constructed points as (cam angle, lift, the point), once each round
+    the turn."""
+    out: list[tuple[float, float, Ref]] = []
     for curve, start in zip(d.curves, d.starts):
         for t, ref in curve:
             theta, y = start + t, d.point(ref)[1]
@@ -71,7 +74,7 @@ def stations(d: Displacement) -> list[tuple[float, float]]:
                 continue
             if theta >= 2 * math.pi - 1e-12:
                 continue                              # 360° is 0° again
-            out.append((theta, y))
+            out.append((theta, y, ref))
     return out
 
 
@@ -117,7 +120,7 @@ def lay_out_profile(d: Displacement, base_radius: float, f: Follower, sigma: flo
             "cam.stations", turn=turn_word, follower=Word(f.kind)))
         foot0 = c.give("T", g.Point(x0, 0.0), label="") if x0 else o
     then = phrase(_THEN[f.kind], r=drawn_length(f.radius)) if f.kind in _THEN else None
-    for i, (theta, lift) in enumerate(stations(d)):
+    for i, (theta, lift, source) in enumerate(stations(d)):
         back = -sigma * theta
         rest = c.draw(f"rest{i}", "rotate_about", rest0, o, angle=back, label=str(i))
         if f.oscillating:
@@ -138,7 +141,7 @@ def lay_out_profile(d: Displacement, base_radius: float, f: Follower, sigma: flo
             body = c.draw(f"face{i}", "perpendicular_through", trace, axis, kind=Kind.LINE)
         else:
             body = trace
-        out.places.append(Place(i, theta, lift, rest, trace, body, pivot, axis))
+        out.places.append(Place(i, theta, lift, rest, trace, body, pivot, axis, source))
     out.closing = phrase(_PROFILE[f.kind])
     return out
 

@@ -53,8 +53,10 @@ WORDS: dict[str, str] = {
     "the cam held still, the follower turned the other way":
         "بادامک ثابت نگه داشته شده و پیرو در جهت مخالف به دور آن چرخانده شده است (روش وارون)",
     "φ max = {phi}° at θ = {theta}°": "بیشینهٔ φ = {phi}° در θ = {theta}°",
-    "UNDERCUT: ringed where the roller cannot make the profile":
-        "زیربرش: جاهایی که غلتک نمی‌تواند پروفیل را بسازد با دایره مشخص شده‌اند",
+    "UNDERCUT in segment {k} from θ = {start}° to {end}°: ringed where the follower cannot "
+    "make the profile":
+        "زیربرش در بخش {k} از θ = {start}° تا {end}°: جاهایی که پیرو نمی‌تواند پروفیل را "
+        "بسازد با دایره مشخص شده‌اند",
     # ----- cams: the profile's table (exercises/cam_layout.py) -------------------------------
     "{name}: pressure angle and curvature": "{name}: زاویهٔ فشار و انحنا",
     "{name}: face run and curvature": "{name}: محل تماس و انحنا",
@@ -152,21 +154,21 @@ WORDS: dict[str, str] = {
     "all on their laws": "همه بر قانون حرکت خود",
     "displacement diagram: {n} points constructed, {verdict}":
         "نمودار جابه‌جایی: {n} نقطه ترسیم شد، {verdict}",
-    "pressure angle: greatest {angle}° at θ = {theta}°":
-        "زاویهٔ فشار: بیشینه {angle}° در θ = {theta}°",
+    "pressure angle: greatest {angle}° at θ = {theta}° (segment {k})":
+        "زاویهٔ فشار: بیشینه {angle}° در θ = {theta}° (بخش {k})",
     " (over the 30° a translating follower is usually held to)":
         " (بیش از ۳۰°، که زاویهٔ فشار پیروِ انتقالی معمولاً زیر آن نگه داشته می‌شود)",
-    "the profile's least radius of curvature: {rho} at θ = {theta}°":
-        "کمترین شعاع انحنای پروفیل: {rho} در θ = {theta}°",
-    "the pitch curve's least radius of curvature: {rho} at θ = {theta}°":
-        "کمترین شعاع انحنای منحنی گام: {rho} در θ = {theta}°",
+    "the profile's least radius of curvature: {rho} at θ = {theta}° (segment {k})":
+        "کمترین شعاع انحنای پروفیل: {rho} در θ = {theta}° (بخش {k})",
+    "the pitch curve's least radius of curvature: {rho} at θ = {theta}° (segment {k})":
+        "کمترین شعاع انحنای منحنی گام: {rho} در θ = {theta}° (بخش {k})",
     " (the roller's radius is {radius})": " (شعاع غلتک {radius} است)",
     "the face is touched from {lo} to {hi} along it from the follower's axis: a face at least "
     "{width} wide":
         "نقطهٔ تماس روی سطح پیرو از {lo} تا {hi} از محور پیرو جابه‌جا می‌شود: پهنای "
         "سطح دست‌کم {width}",
-    "UNDERCUT from θ = {start}° to {end}° (marked on the layout)":
-        "زیربرش از θ = {start}° تا {end}° (روی ترسیم مشخص شده است)",
+    "UNDERCUT from θ = {start}° to {end}°, worst in segment {k} (marked on the layout)":
+        "زیربرش از θ = {start}° تا {end}°، بدترین نقطه در بخش {k} (روی ترسیم مشخص شده است)",
     "each where the closed form puts it": "هر یک همان‌جا که رابطهٔ بسته نشان می‌دهد",
     "profile by inversion: {n} stations laid out, {verdict}":
         "پروفیل به روش وارونگی: {n} موقعیت ترسیم شد، {verdict}",

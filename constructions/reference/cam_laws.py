@@ -23,7 +23,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-__all__ = ["LAWS", "Motion", "jerk_peak", "motion", "peaks", "time_rates"]
+__all__ = ["LAWS", "Motion", "jerk_peak", "motion", "peaks", "pieces", "time_rates"]
 
 LAWS = ("uniform velocity", "modified uniform velocity", "simple harmonic", "parabolic",
         "cycloidal")
@@ -44,10 +44,28 @@ BLEND = 0.25
 """The fraction of a modified-uniform-velocity segment blended at each end, unless given."""
 
 
+def pieces(law: str, blend: float = BLEND) -> tuple[float, ...]:
+    """The fractions of a segment that bound the pieces of its law, 0 and 1 included: y″
+    jumps between two pieces (at the middle of a parabolic segment, at the ends of a
+    modified uniform velocity's blends), and within one the law is analytic.
+
+    Examples
+    --------
+    >>> pieces("parabolic"), pieces("cycloidal")
+    ((0.0, 0.5, 1.0), (0.0, 1.0))
+    """
+    inner = {"parabolic": (0.5,), "modified uniform velocity": (blend, 1 - blend)}.get(law, ())
+    return tuple(sorted({0.0, *inner, 1.0}))
+
+
 def motion(law: str, lift: float, beta: float, theta: float, *, rise: bool = True,
-           blend: float = BLEND) -> Motion:
+           blend: float = BLEND, piece: int | None = None) -> Motion:
     """The follower's motion ``theta`` (rad) into a segment of ``beta`` lifting ``lift``
     (``blend``: the modified uniform velocity's blended fraction at each end).
+
+    ``piece`` (an index into :func:`pieces`) evaluates that piece's formula whatever
+    ``theta`` is, so a piece's end gives its own one-sided limit where y″ jumps; by default
+    the piece ``theta`` falls in (the earlier one at a break).
 
     Raises
     ------
@@ -60,9 +78,11 @@ def motion(law: str, lift: float, beta: float, theta: float, *, rise: bool = Tru
         m = Motion(h * u, h / b, 0.0, 0.0)
     elif law == "modified uniform velocity":
         v, t, edge = h / ((1 - blend) * b), u * b, blend * b
-        if t <= edge:
+        if piece is None:
+            piece = 0 if t <= edge else 2 if t >= b - edge and blend < 0.5 else 1
+        if piece == 0:
             m = Motion(v * t * t / (2 * edge), v * t / edge, v / edge, 0.0)
-        elif t >= b - edge:
+        elif piece == 2 or blend == 0.5:
             m = Motion(h - v * (b - t) ** 2 / (2 * edge), v * (b - t) / edge, -v / edge, 0.0)
         else:
             m = Motion(v * edge / 2 + v * (t - edge), v, 0.0, 0.0)
@@ -71,7 +91,7 @@ def motion(law: str, lift: float, beta: float, theta: float, *, rise: bool = Tru
         m = Motion(h / 2 * (1 - math.cos(math.pi * u)), h / 2 * k * math.sin(math.pi * u),
                    h / 2 * k * k * math.cos(math.pi * u), -h / 2 * k ** 3 * math.sin(math.pi * u))
     elif law == "parabolic":
-        if u <= 0.5:
+        if (u <= 0.5) if piece is None else piece == 0:
             m = Motion(2 * h * u * u, 4 * h * u / b, 4 * h / b ** 2, 0.0)
         else:
             m = Motion(h - 2 * h * (1 - u) ** 2, 4 * h * (1 - u) / b, -4 * h / b ** 2, 0.0)

@@ -26,7 +26,8 @@ from dataclasses import dataclass
 
 from .cam_laws import Motion, motion
 
-__all__ = ["Follower", "Station", "follower_motion", "station", "pressure_angle_translating"]
+__all__ = ["Follower", "Station", "follower_motion", "segment_motion", "station", "station_at",
+           "pressure_angle_translating"]
 
 Vec = tuple[float, float]
 
@@ -79,15 +80,21 @@ def follower_motion(segments, theta: float) -> Motion:
     for s in segments:
         # At a join (to rounding) the later segment's: its y″ where y″ jumps.
         if theta < start + s.angle - 1e-12 or s is segments[-1]:
-            if s.kind == "dwell":
-                return Motion(lift, 0.0, 0.0, 0.0)
-            m = motion(s.law, s.lift, s.angle, theta - start, rise=s.kind == "rise",
-                       blend=s.blend)
-            base = lift - (s.lift if s.kind == "return" else 0.0)
-            return Motion(base + m.y, m.y1, m.y2, m.y3)
+            return segment_motion(s, lift, theta - start)
         lift += s.lift if s.kind == "rise" else -s.lift if s.kind == "return" else 0.0
         start += s.angle
     raise AssertionError("unreachable")
+
+
+def segment_motion(s, height: float, t: float, *, piece: int | None = None) -> Motion:
+    """The follower's lift and its coefficients ``t`` (rad) into the segment ``s``, which
+    starts at ``height`` above the base circle; ``piece`` as :func:`.cam_laws.motion` takes
+    it (a piece's own formula, for its one-sided limits)."""
+    if s.kind == "dwell":
+        return Motion(height, 0.0, 0.0, 0.0)
+    m = motion(s.law, s.lift, s.angle, t, rise=s.kind == "rise", blend=s.blend, piece=piece)
+    base = height - (s.lift if s.kind == "return" else 0.0)
+    return Motion(base + m.y, m.y1, m.y2, m.y3)
 
 
 def _turn(v: Vec, a: float) -> Vec:
@@ -157,7 +164,12 @@ def _trace(base_radius: float, f: Follower, m: Motion) -> tuple[Vec, Vec, Vec, V
 
 def station(segments, base_radius: float, f: Follower, sigma: float, theta: float) -> Station:
     """The profile at cam angle ``theta`` for a cam turning in the sense ``sigma``."""
-    m = follower_motion(segments, theta)
+    return station_at(follower_motion(segments, theta), base_radius, f, sigma, theta)
+
+
+def station_at(m: Motion, base_radius: float, f: Follower, sigma: float, theta: float
+               ) -> Station:
+    """The profile at cam angle ``theta`` where the follower's motion is ``m``."""
     back = -sigma * theta
     if f.kind == "flat-faced":
         touch = (sigma * m.y1, base_radius + m.y)
