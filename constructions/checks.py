@@ -25,19 +25,26 @@ from dataclasses import dataclass, field, replace
 from typing import Any
 
 from . import asks as A
-from .errors import TarsimError
+from .errors import IllConditioned, TarsimError
+from .model import Mechanism
 from .narration import Phrase
 from .record import Panel, Ref
 from .reference.centres import centre_error
 
 __all__ = ["Quantity", "Expected", "Answer", "FigureSpec", "tolerance", "check", "vector_value",
-           "grashof_value", "time_ratio_value", "quiet", "NOISE", "EPS"]
+           "grashof_value", "time_ratio_value", "quiet", "NOISE", "EPS", "CEILING"]
 
 EPS = 2.220446049250313e-16
 """The unit roundoff of a float."""
 
 NOISE = 1e-12
 """A rate below this fraction of the input's is rounding, not motion: it is said as zero."""
+
+CEILING = 1e-6
+"""The loosest a check may be, as a fraction of the quantity's scale. A construction that
+meets the independent reference this closely vouches for the six figures printed, however
+ill-conditioned it is; one that misses by more where its conditioning would allow it
+vouches for nothing, and is refused: a tolerance as wide as the quantity never fails."""
 
 
 @dataclass(frozen=True)
@@ -68,6 +75,24 @@ class Quantity:
     def with_alternatives(self, others: list[Quantity]) -> Quantity:
         """The same answer, with the quantity by other methods beside it."""
         return replace(self, alternatives={**self.alternatives, **{q.method: q for q in others}})
+
+    def in_file_axes(self, mech: Mechanism) -> Quantity:
+        """The same answer with its points (a centre, a foot) in the axes of the file
+        ``mech`` was read from: a solution works about the frame's first point
+        (:meth:`~tarsim.constructions.model.Mechanism.about_its_frame`)."""
+        if mech.origin == (0.0, 0.0):
+            return self
+        return replace(self, value=_in_file_axes(self.value, mech),
+                       reference=_in_file_axes(self.reference, mech),
+                       alternatives={m: q.in_file_axes(mech)
+                                     for m, q in self.alternatives.items()})
+
+
+def _in_file_axes(value: dict[str, Any], mech: Mechanism) -> dict[str, Any]:
+    xy = value.get("point")
+    if not isinstance(xy, (list, tuple)):          # a stroke names its point
+        return value
+    return {**value, "point": list(mech.in_file_axes(xy))}
 
 
 @dataclass(frozen=True)
@@ -282,8 +307,28 @@ def check(answer: Answer, expected: Expected, *, scale: float) -> Quantity:
         return _check_centre(answer, expected, scale)
     shown, ref, err = _RULES[type(ask)](answer.value, expected.value, scale)
     tol = _EXACT.get(type(ask), tolerance(answer.conditioning))
-    return Quantity(ask.name, shown, ref, err, tol, answer.conditioning, answer.method,
-                    said=answer.said)
+    return Quantity(ask.name, shown, ref, err, _vouched(answer, err, tol), answer.conditioning,
+                    answer.method, said=answer.said)
+
+
+def _vouched(answer: Answer, err: float, tol: float) -> float:
+    """``tol``, held to :data:`CEILING`.
+
+    Raises
+    ------
+    IllConditioned
+        If the answer misses the reference by more than the ceiling but within what its
+        conditioning allows: the construction is too ill-conditioned to be vouched for.
+    """
+    if tol <= CEILING:
+        return tol
+    if CEILING < err <= tol:
+        raise IllConditioned(
+            f"{answer.ask.name} by {answer.method} misses the analytic value by {err:.1e} of "
+            f"its scale, within what its conditioning ({answer.conditioning:.1e}) allows",
+            name=answer.ask.name, method=answer.method, conditioning=answer.conditioning,
+            miss=err)
+    return CEILING
 
 
 def _check_centre(answer: Answer, expected: Expected, size: float) -> Quantity:
@@ -300,5 +345,6 @@ def _check_centre(answer: Answer, expected: Expected, size: float) -> Quantity:
     # A direction is judged by angle alone, so its tolerance does not grow with distance;
     # the reference's own rounding (large when ω_i ≈ ω_j) is added to the tolerance.
     tol = tolerance(1.0 if found.is_at_infinity else answer.conditioning) + expected.rounding
-    return Quantity(name, answer.value, expected.value, centre_error(found, expected.exact, size),
-                    tol, answer.conditioning, answer.method)
+    err = centre_error(found, expected.exact, size)
+    return Quantity(name, answer.value, expected.value, err, _vouched(answer, err, tol),
+                    answer.conditioning, answer.method)

@@ -16,6 +16,7 @@ __all__ = [
     "DegenerateInput",
     "AssemblyError",
     "CheckMismatch",
+    "IllConditioned",
 ]
 
 
@@ -97,6 +98,23 @@ class BranchError(AssemblyError):
 
 class DeadPoint(AssemblyError):
     """The input stands at a dead point: the position assembles but ω (or α) is undefined."""
+
+
+class IllConditioned(TarsimError):
+    """A construction too ill-conditioned here to vouch for the number it reads off.
+
+    ``name`` is the quantity, ``method`` how it was drawn, ``conditioning`` the worst
+    along its construction and ``miss`` how far it stands from the analytic value,
+    relative to the quantity's scale.
+    """
+
+    def __init__(self, message: str, *, name: str, method: str, conditioning: float,
+                 miss: float):
+        self.name = name
+        self.method = method
+        self.conditioning = conditioning
+        self.miss = miss
+        super().__init__(message)
 
 
 class CheckMismatch(TarsimError):

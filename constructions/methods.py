@@ -25,10 +25,11 @@ from typing import Any
 from . import asks as A
 from .assembly import Assembly, assemble
 from .checks import Answer, Expected, Quantity, check
-from .errors import GeometryError, NoIntersection, TarsimError
+from .errors import GeometryError, IllConditioned, NoIntersection, TarsimError
 from .model import Mechanism
-from .narration import Phrase
-from .record import Panel
+from .narration import Number, Phrase, Word, narrate, phrase
+from .record import Panel, weakest_act
+from .velocity_drawing import method_words
 from .reference import solver
 from .reference.centres import mechanism_size
 from .reference.rotatability import grashof_class
@@ -244,10 +245,62 @@ def answer_all(work: Work, methods: tuple[Method, ...]) -> tuple[dict[str, Quant
         if not using:
             raise TarsimError(f"no method the exercise uses answers {ask.name}; choose one in "
                               "[ask] methods")
-        found = []
+        found, refused = [], []
         for m in using:
             answer = _construct(m, work, ask)
-            found.append(check(answer, m.reference(work, ask), scale=work.scale_of(ask)))
+            try:
+                found.append(check(answer, m.reference(work, ask), scale=work.scale_of(ask)))
+            except IllConditioned as e:
+                refused.append((answer, e))
+                continue
             answers.append(answer)
+        _left_out(work, refused, found, methods)
         quantities[ask.name] = found[0].with_alternatives(found[1:])
     return quantities, answers
+
+
+def _left_out(work: Work, refused: list[tuple[Answer, IllConditioned]], found: list[Quantity],
+              methods: tuple[Method, ...]) -> None:
+    """Say which methods were too ill-conditioned to be vouched for, beside the first
+    method that is (a note under the figures).
+
+    Raises
+    ------
+    IllConditioned
+        If no method the exercise uses for the ask could be vouched for; the line offers
+        a method the exercise did not use, or another position.
+    """
+    for answer, e in refused:
+        why = _weakness(work.assembly, answer.refs or ())
+        said = phrase("note.unvouched", quantity=e.name, method=Word(method_words(e.method)),
+                      why=why, cond=Number(e.conditioning, ".1e"),
+                      other=Word(method_words(found[0].method)) if found else None)
+        if found:
+            work.note(said)
+            continue
+        ask = answer.ask
+        tried = {a.method for a, _ in refused}
+        offer = next((m.chosen_by[0] for m in methods if isinstance(ask, m.answers)
+                      and m.chosen_by and m.chosen_by[0] not in work.chosen
+                      and m.name not in tried), None)
+        d, units = work.mechanism.drive, work.mechanism.units
+        raise IllConditioned(
+            f"{e.name} by {method_words(e.method)} cannot be vouched for at "
+            f"θ{d.link} = {units.angle_brief(d.angle)}: "
+            f"{narrate(why)} (conditioning {e.conditioning:.1e}), and it misses the analytic "
+            f"value by {e.miss:.1e} of its scale; "
+            + (f"add \"{offer}\" to [ask] methods" if offer else "ask it at another position"),
+            name=e.name, method=e.method, conditioning=e.conditioning, miss=e.miss)
+
+
+def _weakness(record, refs) -> Phrase:
+    """What lost a construction its digits, in words: its weakest act."""
+    if not refs:
+        return phrase("weak.act")
+    act = weakest_act(record, refs)
+    inherited = min([1.0] + [record[r].conditioning for r in act.inputs])
+    own = act.conditioning / inherited if inherited > 0.0 else 0.0
+    if act.verb == "intersect_lines" and not act.output.is_at_infinity:
+        return phrase("weak.lines", angle=Number(math.degrees(math.asin(min(1.0, own))), ".2g"))
+    return phrase({"intersect_circles": "weak.arcs", "intersect_line_circle": "weak.line_arc",
+                   "line_through": "weak.points"}.get(act.verb, "weak.act"))

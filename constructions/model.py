@@ -40,7 +40,7 @@ guide, or the solution nearest a point.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from functools import cached_property
 from enum import StrEnum
 
@@ -409,6 +409,10 @@ class Mechanism:
     is 4.0); None lets the figures choose."""
     given: GivenRate | None = None
     """The input's motion as the exercise gives it, when not as the input link's ω."""
+    origin: tuple[float, float] = (0.0, 0.0)
+    """Where the file's axes put this model's (0, 0), in metres: a file is read about its
+    frame's first point, so that its numbers do not depend on how far from the file's origin
+    it stands (:meth:`in_file_axes`)."""
 
     def __post_init__(self) -> None:
         numbers = [k.number for k in self.links]
@@ -555,7 +559,37 @@ class Mechanism:
     def with_drive(self, drive: Drive) -> Mechanism:
         """Return the same mechanism at another input position."""
         return Mechanism(self.links, drive, self.slides, dict(self.branches), self.units,
-                         self.name, self.source, self.arcs, self.scale)
+                         self.name, self.source, self.arcs, self.scale, origin=self.origin)
+
+    def moved(self, dx: float, dy: float) -> Mechanism:
+        """Return the same mechanism moved by ``(dx, dy)`` (m) in its axes: the frame's
+        points and guides and the points a branch is to be near; ``origin`` moves the other
+        way, so :meth:`in_file_axes` still says where the file put each point.
+
+        Examples
+        --------
+        >>> m = Mechanism((Link(1, (("O2", (0.0, 0.0)), ("O4", (0.5, 0.0)))),), Drive(1, 0.0))
+        >>> far = m.moved(1024.0, 8.0)
+        >>> far.frame.points, far.origin
+        ((('O2', (1024.0, 8.0)), ('O4', (1024.5, 8.0))), (-1024.0, -8.0))
+        >>> far.in_file_axes((1024.5, 8.0))
+        (0.5, 0.0)
+        """
+        def moved(xy: tuple[float, float]) -> tuple[float, float]:
+            return (xy[0] + dx + 0.0, xy[1] + dy + 0.0)
+
+        frame = Link(1, tuple((n, moved(xy)) for n, xy in self.frame.points), self.frame.name)
+        links = tuple(frame if k.number == 1 else k for k in self.links)
+        slides = tuple(replace(s, through=moved(s.through)) if s.guide_link == 1 else s
+                       for s in self.slides)
+        branches = {n: b if isinstance(b, str) else moved(b) for n, b in self.branches.items()}
+        return replace(self, links=links, slides=slides, branches=branches,
+                       origin=(self.origin[0] - dx, self.origin[1] - dy))
+
+    def in_file_axes(self, xy: tuple[float, float]) -> tuple[float, float]:
+        """A point of this model, ``(x, y)`` in metres, in the axes of the file it was read
+        from."""
+        return (xy[0] + self.origin[0], xy[1] + self.origin[1])
 
 
 def slider_crank(m: Mechanism) -> tuple[str, str, str, int] | None:

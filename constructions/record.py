@@ -39,6 +39,7 @@ __all__ = [
     "slice",
     "toposort",
     "replay",
+    "weakest_act",
 ]
 
 Ref = str
@@ -364,3 +365,34 @@ def replay(construction: Construction, ref: Ref) -> Any:
         return step.output
     args = [construction.steps[r].output for r in step.inputs]
     return VERBS[step.verb](*args, **dict(step.params))[0]
+
+
+def weakest_act(construction: Construction, targets: Iterable[Ref]) -> Step:
+    """The act behind ``targets`` whose own conditioning is the least: the one that lost
+    the digits (a step's recorded conditioning is its own times its worst input's).
+
+    Examples
+    --------
+    >>> c = Construction()
+    >>> for name, x, y in (("A", 0, 0), ("B", 1, 0), ("C", 0, 1), ("D", 1, 1e-9)):
+    ...     _ = c.give(name, g.Point(x, y), label=name)
+    >>> _ = c.draw("g", "line_through", "A", "B")
+    >>> _ = c.draw("h", "line_through", "C", "D")
+    >>> _ = c.draw("P", "intersect_lines", "g", "h")
+    >>> weakest_act(c, ["P"]).id
+    'P'
+    """
+    def own(step: Step) -> float:
+        inherited = min([1.0] + [construction[r].conditioning for r in step.inputs])
+        return step.conditioning / inherited if inherited > 0.0 else 0.0
+
+    steps = construction.steps
+    walked: dict[Ref, Step] = {}
+    stack = list(targets)
+    while stack:
+        ref = stack.pop()
+        if ref not in walked:
+            walked[ref] = steps[ref]
+            stack.extend(steps[ref].inputs)
+    return min(walked.values(), key=own)
+

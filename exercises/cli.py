@@ -365,7 +365,8 @@ def solve(source, out_dir, angle, pdf, paper, allow_undercut, lang, digits):
                 click.echo(f"at {sol.position.label}:")
             for name, q in sol.quantities.items():
                 for qq in (q, *q.alternatives.values()):
-                    click.echo(answer_line(name, qq, ex.mechanism.units))
+                    click.echo(answer_line(name, qq.in_file_axes(ex.mechanism),
+                                           ex.mechanism.units))
             for note in sol.notes:
                 click.echo(f"note: {note}")
         at = ("at the exercise's scale" if ex.mechanism.scale

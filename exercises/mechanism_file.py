@@ -20,6 +20,7 @@ from ..constructions.reference.solver import follow_branches
 from ..constructions.model import (LENGTH_UNITS, Arc, Contact, Drive, GivenRate, Link,
                                   Mechanism, Profile, Slide, SlideKind, Units, contact_arc,
                                   contact_slide)
+from .toml_depth import check_depth
 
 __all__ = ["load_mechanism", "parse_mechanism", "SourceMap", "read_source", "read_toml",
            "LARGEST", "MOST_BYTES", "MOST_POINTS", "in_range", "radians_in_turn"]
@@ -121,7 +122,7 @@ def read_source(path: str | Path) -> str:
         if len(data) > MOST_BYTES:
             raise InputError(f"is larger than {MOST_BYTES // 1000:,} kB, the most tarsim reads; "
                              "a mechanism file takes a few kB", file=str(path))
-        return data.decode("utf-8")
+        return data.decode("utf-8-sig")        # a byte-order mark, as Notepad saves, read past
     except UnicodeDecodeError as e:
         raise InputError(f"is not UTF-8 text (byte 0x{e.object[e.start]:02x}); save it as UTF-8",
                          file=str(path), line=e.object[:e.start].count(b"\n") + 1) from None
@@ -130,7 +131,9 @@ def read_source(path: str | Path) -> str:
 
 
 def read_toml(text: str, filename: str) -> dict[str, Any]:
-    """The tables of a TOML text; an InputError at file:line if it is not valid TOML."""
+    """The tables of a TOML text; an InputError at file:line if it is not valid TOML, or
+    nests deeper than tomllib reads in good time (:mod:`.toml_depth`)."""
+    check_depth(text, filename)
     try:
         return tomllib.loads(text)
     except tomllib.TOMLDecodeError as e:
@@ -245,6 +248,8 @@ class _Reader:
         self.file = filename
         self.given: GivenRate | None = None
         self._slides: tuple[Slide, ...] = ()
+        self.file_origin = (0.0, 0.0)
+        """The frame's first point as the file gives it, the model's (0, 0) (see :meth:`xy`)."""
 
     # ----- errors --------------------------------------------------------------
     def fail(self, message: str, *, table: str | None = None, index: int = 0,
@@ -312,8 +317,10 @@ class _Reader:
         self._slides = tuple(slides)
         drive = self.read_input()
         branches = self.read_assembly(mech_links, tuple(slides))
+        ox, oy = self.file_origin
         mech = Mechanism(mech_links, drive, tuple(slides), branches, self.units,
-                         name, self.file, tuple(arcs), given=self.given)
+                         name, self.file, tuple(arcs), given=self.given,
+                         origin=(ox * self.units.metres + 0.0, oy * self.units.metres + 0.0))
         mech = follow_branches(mech)
         dof, n, f1, f2 = mech.mobility()
         if dof != 1:
@@ -373,11 +380,25 @@ class _Reader:
             raise self.fail(f"{what} must be a positive length, got {v:g}", **where)
         return x * self.units.metres
 
-    def xy(self, v: Any, what: str, **where) -> tuple[float, float]:
+    def pair(self, v: Any, what: str, **where) -> tuple[float, float]:
+        """A pair [x, y] of numbers, as the file gives it."""
         if not (isinstance(v, list) and len(v) == 2):
             raise self.fail(f"{what} must be a pair [x, y], got {v!r}", **where)
-        s = self.units.metres
-        return (self.number(v[0], what, **where) * s, self.number(v[1], what, **where) * s)
+        return (self.number(v[0], what, **where), self.number(v[1], what, **where))
+
+    def xy(self, v: Any, what: str, **where) -> tuple[float, float]:
+        """A point the file places, in metres from the frame's first point.
+
+        A line's equation, an intersection's rounding and every conditioning are measured
+        from the origin, so a linkage drawn 1 km from it would lose digits, and could even
+        pass a check it should fail, that the same linkage at the origin keeps. The model is
+        therefore placed about its frame, moved in the file's own units before they are
+        turned into metres, so that a file moved whole gives the same model to the bit
+        wherever its numbers allow; ``Mechanism.origin`` says points back where the file
+        put them.
+        """
+        (x, y), (ox, oy), s = self.pair(v, what, **where), self.file_origin, self.units.metres
+        return ((x - ox) * s + 0.0, (y - oy) * s + 0.0)
 
     def angle(self, v: Any, what: str, **where) -> float:
         """Any finite angle: it is taken less whole turns (:func:`radians_in_turn`)."""
@@ -402,13 +423,14 @@ class _Reader:
     # ----- frame and links -----------------------------------------------------------
     def read_frame(self) -> Link:
         f = self.table("frame", True)
-        pts = []
         for k, v in f.items():
             self.name(k, "a frame point", table="frame", key=k)
-            pts.append((k, self.xy(v, f"frame point {k}", table="frame", key=k)))
-        if not pts:
+            self.file_origin = self.pair(v, f"frame point {k}", table="frame", key=k)
+            break
+        else:
             raise self.fail("names no fixed point", table="frame")
-        return Link(1, tuple(pts), "frame")
+        return Link(1, tuple((k, self.xy(v, f"frame point {k}", table="frame", key=k))
+                             for k, v in f.items()), "frame")
 
     def read_links(self, frame: Link) -> list[Link]:
         out: list[Link] = []

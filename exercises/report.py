@@ -77,8 +77,9 @@ def format_check(check: PositionCheck) -> str:
     lines.append("")
     lines.append(f"{'point':<7}{head:<30}{ref:<30}{'rel. error':>11}{'cond.':>9}")
     for p in check.points:
-        c = _minus(f"({p.construction[0] / k:.6f}, {p.construction[1] / k:.6f})")
-        a = _minus(f"({p.analytic[0] / k:.6f}, {p.analytic[1] / k:.6f})")
+        (cx, cy), (ax, ay) = m.in_file_axes(p.construction), m.in_file_axes(p.analytic)
+        c = _minus(f"({cx / k:.6f}, {cy / k:.6f})")
+        a = _minus(f"({ax / k:.6f}, {ay / k:.6f})")
         lines.append(f"{p.name:<7}{c:<30}{a:<30}{p.rel_error:>11.1e}{p.conditioning:>9.3g}")
     lines.append("")
     lines.append(f"largest relative error {check.worst:.1e} "

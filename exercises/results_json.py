@@ -21,27 +21,30 @@ import math
 from typing import Any
 
 from ..constructions.checks import Quantity
+from ..constructions.model import Mechanism
 
+from .exercise_file import Exercise
 from .solution import Solution
 
 __all__ = ["results_document", "results_json"]
 
 
-def results_document(solutions: list[Solution], exercise_id: str,
+def results_document(solutions: list[Solution], exercise: Exercise,
                      overall: dict[str, Quantity] | None = None) -> dict[str, Any]:
     """The results.json document: each position's quantities, and ``overall`` (the
     mechanism's DOF, Grashof class, time ratio, stroke) at the top level."""
     return {
-        "exercise": exercise_id,
+        "exercise": exercise.id,
         "positions": [_position(s) for s in solutions],
-        "quantities": {name: _quantity(q) for name, q in (overall or {}).items()},
+        "quantities": {name: _quantity(q, exercise.mechanism)
+                       for name, q in (overall or {}).items()},
     }
 
 
-def results_json(solutions: list[Solution], exercise_id: str,
+def results_json(solutions: list[Solution], exercise: Exercise,
                  overall: dict[str, Quantity] | None = None) -> str:
     """The document as stable, indented JSON text."""
-    return json.dumps(results_document(solutions, exercise_id, overall), indent=2,
+    return json.dumps(results_document(solutions, exercise, overall), indent=2,
                       ensure_ascii=False, allow_nan=False) + "\n"
 
 
@@ -52,17 +55,20 @@ def _position(s: Solution) -> dict[str, Any]:
                   "omega": d.omega,
                   "alpha": d.alpha, "alpha_given": d.alpha_given},
         **({"position": s.position.label} if s.position else {}),
-        "quantities": {name: _quantity(q) for name, q in s.quantities.items()},
+        "quantities": {name: _quantity(q, s.exercise.mechanism)
+                       for name, q in s.quantities.items()},
         "notes": s.notes_in("en"),            # data, not prose: one language
     }
 
 
-def _quantity(q: Quantity) -> dict[str, Any]:
+def _quantity(q: Quantity, mech: Mechanism) -> dict[str, Any]:
+    """A quantity as results.json gives it, its points in the file's axes."""
+    q = q.in_file_axes(mech)
     out = dict(q.value)
     out.update(reference=q.reference, rel_error=_num(q.rel_error), tolerance=_num(q.tolerance),
                conditioning=_num(q.conditioning), passed=q.passed, method=q.method)
     if q.alternatives:
-        out["by_method"] = {m: _quantity(a) for m, a in q.alternatives.items()}
+        out["by_method"] = {m: _quantity(a, mech) for m, a in q.alternatives.items()}
     return out
 
 

@@ -127,7 +127,7 @@ class WorkedSolution:
     @property
     def results(self) -> dict:
         """The results.json document: every quantity beside its analytic reference (SI)."""
-        return results_document(self.positions, self.exercise.id, self.overall.quantities)
+        return results_document(self.positions, self.exercise, self.overall.quantities)
 
     @property
     def figures(self) -> dict[str, Figure]:
@@ -165,7 +165,7 @@ class WorkedSolution:
             files["solution.svg"] = stacked_svg([f.figure for f in self.pages],
                                                 [f.svg for f in self.pages])
         files["steps.md"] = self.steps(lang)
-        files["results.json"] = results_json(self.positions, self.exercise.id,
+        files["results.json"] = results_json(self.positions, self.exercise,
                                              self.overall.quantities)
         return files
 
@@ -449,6 +449,7 @@ def _worked_page(sol: Solution, answers) -> _Sketch:
     table = [tuple(words(h) for h in ("quantity", "method", "construction", "analytic",
                                        "relative error"))]
     for qname, q in sol.quantities.items():
+        q = q.in_file_axes(m)
         for qq in (q, *q.alternatives.values()):
             table.append((symbol(qname), words(method_words(qq.method)),
                           _show(qq.value, m.units, qname, DRAFTING),
@@ -615,6 +616,7 @@ def _steps_markdown(sol: Solution, figures: list[SolutionFigure], *, heading: bo
     lines += ["", "## " + narrate(phrase("md.results"), lang), "",
               narrate(phrase("md.columns"), lang), "|---|---|---|---|---|"]
     for name, q in sol.quantities.items():
+        q = q.in_file_axes(m)
         rows = [(name, q)] + [(f"{name} ({m_})", a) for m_, a in q.alternatives.items()]
         for label, qq in rows:
             lines.append(f"| {label} | {_show(qq.value, m.units, name)} | "

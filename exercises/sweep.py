@@ -193,7 +193,7 @@ def _evaluate(mech: Mechanism, out: Output, drive: Drive) -> dict[str, float]:
         n = out.link
         return _values(out, kin.angles[n], kin.omegas[n], kin.alphas[n])
     return _values(out, kin.points[out.point], solver.point_velocity(kin, m, out.link, out.point),
-                   solver.point_acceleration(kin, m, out.link, out.point))
+                   solver.point_acceleration(kin, m, out.link, out.point), m.origin)
 
 
 def _turn_values(turn: Turn, out: Output) -> dict[int, dict[str, float]]:
@@ -202,19 +202,24 @@ def _turn_values(turn: Turn, out: Output) -> dict[int, dict[str, float]]:
     columns = ([turn.angles[n], turn.omegas[n], turn.alphas[n]] if out.kind == "link" else
                [turn.points[p], turn.velocity_on(n, p), turn.acceleration_on(n, p)])
     rows = zip(*(c.tolist() for c in columns))
-    return {i: _values(out, *row) for i, (ok, row) in enumerate(zip(turn.ok.tolist(), rows)) if ok}
+    origin = turn.mechanism.origin
+    return {i: _values(out, *row, origin)
+            for i, (ok, row) in enumerate(zip(turn.ok.tolist(), rows)) if ok}
 
 
-def _values(out: Output, position, velocity, acceleration) -> dict[str, float]:
-    """The output's keys from its position, velocity and acceleration (θ, ω, α of a link)."""
+def _values(out: Output, position, velocity, acceleration,
+            origin: tuple[float, float] = (0.0, 0.0)) -> dict[str, float]:
+    """The output's keys from its position, velocity and acceleration (θ, ω, α of a link);
+    a point's x and y are said in the file's axes, the model's moved by ``origin``."""
     if out.kind == "link":
         return {"theta": position, "omega": velocity, "alpha": acceleration}
     (x, y), (vx, vy), (ax, ay) = position, velocity, acceleration
+    at = {"x": x + origin[0], "y": y + origin[1]}
     if out.kind == "slider":
         (dx, dy), (gx, gy) = out.direction, out.guide.through
-        return {"x": x, "y": y, "s": (x - gx) * dx + (y - gy) * dy, "v": vx * dx + vy * dy,
+        return {**at, "s": (x - gx) * dx + (y - gy) * dy, "v": vx * dx + vy * dy,
                 "a": ax * dx + ay * dy}
-    return {"x": x, "y": y, "v": math.hypot(vx, vy), "vx": vx, "vy": vy,
+    return {**at, "v": math.hypot(vx, vy), "vx": vx, "vy": vy,
             "a": math.hypot(ax, ay), "ax": ax, "ay": ay}
 
 
@@ -466,7 +471,7 @@ def _compass_position(sw: Sweep, asm, curve: dict[str, float]) -> dict[str, floa
     if out.kind == "slider":
         (dx, dy), (gx, gy) = out.direction, out.guide.through
         return {"s": (x - gx) * dx + (y - gy) * dy}
-    return {"x": x, "y": y}
+    return dict(zip("xy", asm.mechanism.in_file_axes((x, y))))
 
 
 def _from_quantity(out: Output, name: str, value: dict) -> dict[str, float]:

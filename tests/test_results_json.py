@@ -29,7 +29,7 @@ CHECK_KEYS = {"reference", "rel_error", "tolerance", "conditioning", "passed", "
 
 def _document(solved, exercise_id):
     worked = solved(exercise_id)
-    text = results_json(worked.positions, exercise_id, worked.overall.quantities)
+    text = results_json(worked.positions, worked.exercise, worked.overall.quantities)
     assert "NaN" not in text and "Infinity" not in text
     return json.loads(text)
 

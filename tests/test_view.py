@@ -136,7 +136,7 @@ def _results(angle: float) -> dict:
     ex = load("crank-shaper")
     ex = replace(ex, mechanism=ex.mechanism.with_drive(
         replace(ex.mechanism.drive, angle=math.radians(angle))), positions=())
-    return json.loads(results_json(solve_positions(ex), ex.id))
+    return json.loads(results_json(solve_positions(ex), ex))
 
 
 @pytest.mark.parametrize("angle", [45.0, 137.5, 250.0])
@@ -232,3 +232,23 @@ def test_layers_zoom_and_the_downloaded_frame(page):
     svg = Path(got.value.path()).read_text(encoding="utf-8")
     assert got.value.suggested_filename == "frame-theta2-40.0.svg"
     assert svg.startswith("<svg") and svg.count("data-point=") == 4 and "data-tip=" in svg
+
+
+@pytest.mark.parametrize("require, outcome", [(None, pytest.skip.Exception),
+                                              ("0", pytest.skip.Exception),
+                                              ("1", pytest.fail.Exception)])
+def test_a_missing_browser_skips_unless_it_is_required(monkeypatch, require, outcome):
+    """With no chromium on the PATH a browser test skips, saying what to install, so the
+    README's test command passes on a machine without one; under TARSIM_REQUIRE_BROWSER
+    (set by .ci/run) it fails with that line instead."""
+    from tests import browser
+
+    monkeypatch.setattr(browser.shutil, "which", lambda name: None)
+    if require is None:
+        monkeypatch.delenv(browser.REQUIRE, raising=False)
+    else:
+        monkeypatch.setenv(browser.REQUIRE, require)
+    with pytest.raises(outcome) as info, browser.chromium():
+        raise AssertionError("a browser was opened")
+    line = str(info.value)
+    assert "\n" not in line and line.startswith(browser.NEEDS)

@@ -30,6 +30,13 @@ PHRASES: dict[str, str] = {
     "note.alpha_not_given": "α{link} is not given, so it is taken as 0.",
     "note.ill_conditioned": "{centre} is ill-conditioned: conditioning {cond} along its "
                             "construction (its own two lines meet at {angle}°)",
+    "note.unvouched": "{quantity} by {method} is left out: {why} (conditioning {cond}), so "
+                      "it cannot be vouched for here; {other} gives it.",
+    "weak.lines": "its two lines meet at {angle}°",
+    "weak.arcs": "its two arcs all but touch",
+    "weak.line_arc": "its line all but touches its arc",
+    "weak.points": "it draws a line through two points all but together",
+    "weak.act": "its construction is ill-conditioned",
     "note.given_rate": "{what} = {value} is given: the velocity polygon drawn at ω{link} = "
                        "1 rad/s gives {target} = {per}, so ω{link} = {omega}{sense}{second}.",
     "note.given_alpha": "; the acceleration polygons drawn at that ω with α{link} = 0 and "

@@ -163,6 +163,14 @@ PHRASES: dict[str, str] = {
     "note.alpha_not_given": "α{link} داده نشده است، پس صفر گرفته می\u200cشود.",
     "note.ill_conditioned": "{centre} بدوضع است: عدد وضعیت {cond} در ترسیم آن (دو خط خودش "
                             "با زاویهٔ {angle}° یکدیگر را قطع می\u200cکنند)",
+    "note.unvouched": "{quantity} به روش {method} آورده نشده است: {why} (عدد وضعیت {cond})، "
+                      "پس در این وضعیت نمی\u200cتوان درستی آن را تضمین کرد؛ {other} آن را "
+                      "می\u200cدهد.",
+    "weak.lines": "دو خط آن با زاویهٔ {angle}° یکدیگر را قطع می\u200cکنند",
+    "weak.arcs": "دو کمان آن تقریباً بر هم مماس\u200cاند",
+    "weak.line_arc": "خط آن تقریباً بر کمانش مماس است",
+    "weak.points": "خطی از دو نقطهٔ تقریباً منطبق می\u200cگذرد",
+    "weak.act": "ترسیم آن بدوضع است",
     "note.given_rate": "{what} = {value} داده شده است: چندضلعی سرعتی که با ω{link} = ۱ رادیان "
                        "بر ثانیه رسم شود {target} = {per} می\u200cدهد، پس ω{link} = "
                        "{omega}{sense}{second}.",
