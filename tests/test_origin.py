@@ -176,8 +176,9 @@ SETTINGS = settings(max_examples=6, deadline=None, derandomize=True,
 def test_a_mechanism_moved_exactly_gives_the_same_answers_to_the_bit(family, seed, turn, decades,
                                                                      tmp_path_factory):
     # Its coordinates and the move on a grid the sum keeps exact (eight units in the last
-    # place of twice the offset), the moved file's model is the first's to the bit: every answer, refusal and
-    # conditioning is the same, and each point is moved by the offset, to its rounding.
+    # place of twice the offset), the moved file's model is the first's to the bit: every
+    # answer, refusal and conditioning is the same, and each point is moved by the offset,
+    # to its rounding.
     text, size = random_file(family, seed)
     offset = size * 10 ** decades
     step = 8 * math.ulp(2 * offset)
