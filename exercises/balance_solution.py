@@ -17,7 +17,7 @@ from functools import cached_property
 from typing import Any
 
 from ..constructions.balancing.engine import KINDS, EnginePolygons, draw_engine
-from ..constructions.balancing.polygons import Balance, draw_balance
+from ..constructions.balancing.polygons import Balance, draw_balance, rounding
 from ..constructions.model import LENGTH_UNITS
 from ..constructions.narration import (narrate, numeral, numerals, phrase, spoken, unit_words,
                                        words)
@@ -32,12 +32,18 @@ from .solution_files import ChapterFiles
 __all__ = ["BalanceSolution", "solve_balance"]
 
 AGREE = 1e-12
-"""How near (relative to the largest vector drawn) a closing side must come to its sum: a
-few roundings of the vectors laid off."""
+"""How near (relative to the sizes of the vectors summed, :meth:`BalanceSolution.scales`) a
+closing side must come to its sum: a few roundings of the vectors laid off, for up to a
+thousand of them."""
 
 
 def _angle(v: tuple[float, float]) -> float:
     return math.degrees(math.atan2(v[1], v[0])) % 360.0
+
+
+def _quiet(x: float, noise: float) -> float:
+    """``x``, or 0 where it is no more than the rounding ``noise`` of the sum it came from."""
+    return 0.0 if abs(x) <= noise else x
 
 
 @dataclass(frozen=True)
@@ -72,20 +78,36 @@ class BalanceSolution(ChapterFiles):
 
     # ----- checks -------------------------------------------------------------------------------
     @cached_property
+    def scales(self) -> tuple[float, float, float]:
+        """The sizes the rotor's sums round at: Σ|mᵢrᵢ| (kg·m) and Σ|mᵢrᵢ|·(|zᵢ| + |z_A|)
+        (kg·m²: an arm lᵢ = zᵢ − z_A rounds at the size of the planes it is taken between),
+        the balancing products included, and the size a balancing product's own rounding
+        follows, the first plus the second over l_B: a product found from the couples is
+        divided by the planes' distance apart."""
+        r = self.exercise.rotor
+        ref = r.planes[0].position
+        vectors = [(m.mass * m.radius, m.plane) for m in r.masses]
+        vectors += [(math.hypot(*self.balance.product(p.name)), p.position) for p in r.planes]
+        force = math.fsum(size for size, _ in vectors)
+        couple = math.fsum(size * (abs(z) + abs(ref)) for size, z in vectors)
+        lever = abs(r.planes[-1].position - ref) if len(r.planes) == 2 else 0.0
+        return force, couple, force + (couple / lever if lever else 0.0)
+
+    @cached_property
     def misses(self) -> list[tuple[str, float]]:
-        """What disagrees: (name, miss relative to the largest vector)."""
+        """What disagrees: (name, miss relative to the size its sums round at)."""
         out = []
         if self.balance is not None:
-            r = self.exercise.rotor
-            size = max(m.mass * m.radius * max(1.0, abs(m.plane)) for m in r.masses)
+            force_scale, couple_scale, product_scale = self.scales
             for name, want in self.expected.items():
                 got = self.balance.product(name)
-                miss = math.dist(got, want) / size
+                miss = math.dist(got, want) / product_scale
                 if miss > AGREE:
                     out.append((f"plane {name}", miss))
             force, couple = self.residual
-            if force / size > AGREE or couple / size > AGREE:
-                out.append(("the balanced rotor", max(force, couple) / size))
+            miss = max(force / force_scale, couple / couple_scale if couple_scale else 0.0)
+            if miss > AGREE:
+                out.append(("the balanced rotor", miss))
         if self.engine_polygons is not None:
             e = self.exercise.engine
             sums = engine_sums(e)
@@ -101,7 +123,8 @@ class BalanceSolution(ChapterFiles):
 
     def placed(self, p) -> tuple[tuple[float, float], float, float]:
         """Plane ``p``'s balancing product as drawn (kg·m), and the mass (kg) and radius (m)
-        it comes to: the file gives one, the product the other."""
+        it comes to: the file gives one, the product the other (a plane that needs no mass
+        comes to 0 kg, or to its mass on the shaft's axis)."""
         v = self.balance.product(p.name)
         size = math.hypot(*v)
         if p.radius is not None:
@@ -144,20 +167,30 @@ class BalanceSolution(ChapterFiles):
             return self._engine_lines()
         out = []
         r = ex.rotor
-        x, y = resultant(r.masses)
-        out.append(words("ΣF_x = {x}ω², ΣF_y = {y}ω² (kg·m): the resultant {size} kg·m at "
-                         "{angle}° ({force} N at ω = {speed} rad/s)", x=numeral(x), y=numeral(y),
-                         size=numeral(math.hypot(x, y)), angle=numeral(quadrant_angle(x, y), ".2f"),
-                         force=numeral(math.hypot(x, y) * r.speed ** 2), speed=numeral(r.speed)))
+        noise = rounding([m.mass * m.radius for m in r.masses])
+        x, y = (_quiet(v, noise) for v in resultant(r.masses))
+        if x == y == 0.0:
+            out.append(words("ΣF_x = ΣF_y = 0 (kg·m): the masses' forces cancel, with no "
+                             "resultant"))
+        else:
+            out.append(words("ΣF_x = {x}ω², ΣF_y = {y}ω² (kg·m): the resultant {size} kg·m at "
+                             "{angle}° ({force} N at ω = {speed} rad/s)", x=numeral(x),
+                             y=numeral(y), size=numeral(math.hypot(x, y)),
+                             angle=numeral(quadrant_angle(x, y), ".2f"),
+                             force=numeral(math.hypot(x, y) * r.speed ** 2),
+                             speed=numeral(r.speed)))
         for p in r.planes:
+            if p.name in self.balance.none:
+                out.append(self._none_line(p))
+                continue
             v, mass, radius = self.placed(p)
             out.append(words("plane {plane}: balancing m·r = {size} kg·m at {angle}°, so {mass} "
                              "kg at {radius}", plane=p.name, size=numeral(math.hypot(*v)),
                              angle=numeral(_angle(v), ".2f"), mass=numeral(mass),
                              radius=self._length(radius)))
         if len(r.planes) == 1 and len({m.plane for m in r.masses}) > 1:
-            couple = math.hypot(*(math.fsum(m.mr[i] * (m.plane - r.planes[0].position)
-                                            for m in r.masses) for i in (0, 1)))
+            arms = [(m, m.plane - r.planes[0].position) for m in r.masses]
+            couple = math.hypot(*(math.fsum(m.mr[i] * arm for m, arm in arms) for i in (0, 1)))
             single = one_axial_plane(r.masses)
             if single is not None:
                 v, place = single
@@ -170,7 +203,8 @@ class BalanceSolution(ChapterFiles):
                                  "moments about each mass's plane fix it)",
                                  size=numeral(math.hypot(*v)), angle=numeral(_angle(v), ".2f"),
                                  place=self._length(place), case=case))
-            if couple > 1e-12 * max(m.mass * m.radius for m in r.masses):
+            if couple > rounding([m.mass * m.radius * (abs(m.plane) + abs(r.planes[0].position))
+                                  for m in r.masses]):
                 out.append(words("at {place} one plane balances the forces only: a couple of "
                                  "{couple} kg·m² (× ω²) is left, for a second plane to take",
                                  place=self._length(r.planes[0].position), couple=numeral(couple)))
@@ -180,6 +214,19 @@ class BalanceSolution(ChapterFiles):
                          "{residual} kg·m", verdict=verdict,
                          residual=numeral(self.residual[0], ".1e")))
         return out
+
+    def _none_line(self, p) -> str:
+        """Why plane ``p`` needs no mass: its polygon closes on itself."""
+        r = self.exercise.rotor
+        if len(r.planes) == 1:
+            return words("plane {plane}: no balancing mass needed, the force polygon closes on "
+                         "itself (Σ mᵢrᵢ = 0)", plane=p.name)
+        a, b = r.planes
+        if p is b:
+            return words("plane {plane}: no balancing mass needed, the couple polygon closes on "
+                         "itself (Σ mᵢrᵢlᵢ = 0 about plane {a})", plane=p.name, a=a.name)
+        return words("plane {plane}: no balancing mass needed, the force polygon closes on "
+                     "itself (Σ mᵢrᵢ + (m r)_{b} = 0)", plane=p.name, b=b.name)
 
     def _engine_lines(self) -> list[str]:
         e = self.exercise.engine
@@ -203,8 +250,7 @@ class BalanceSolution(ChapterFiles):
                                        sums.secondary_force, sums.secondary_couple)):
             unit = "N·m" if kind.endswith("couple") else "N"
             left = self.engine_polygons.left(kind) * e.speed ** 2
-            balanced = left <= AGREE * e.reciprocating * e.crank * e.speed ** 2 * max(
-                1.0, max(abs(p) for p in e.planes))
+            balanced = kind in self.engine_polygons.balanced
             out.append(words("{kind}: balanced (its polygon closes)", kind=words(kind))
                        if balanced else
                        words("{kind}: unbalanced, {left} {unit} at most (the vector sum: "
@@ -239,8 +285,11 @@ class BalanceSolution(ChapterFiles):
         if ex.rotor is not None:
             for name, want in self.expected.items():
                 got = self.balance.product(name)
-                q[f"mr_{name}"] = {"value": list(got), "angle_deg": _angle(got),
-                                   "reference": {"value": list(want)},
+                # A plane that needs no mass has a zero product, which has no angle.
+                where = {"none_needed": True} if name in self.balance.none else {
+                    "angle_deg": _angle(got)}
+                q[f"mr_{name}"] = {"value": list(got), **where,
+                                   "reference": {"value": [w + 0.0 for w in want]},
                                    "method": "force polygon" if len(self.expected) == 1
                                    else "couple and force polygons"}
         elif len(ex.engine.cranks) == 1:
@@ -272,10 +321,9 @@ class BalanceSolution(ChapterFiles):
         for kind in KINDS:
             left = p.left(kind) * e.speed ** 2
             word = "N·m" if kind.endswith("couple") else "N"
-            reading = (words("closed: balanced"), "", "") if left < 1e-9 * e.reciprocating * \
-                e.crank * e.speed ** 2 else (words("{size} {unit} unbalanced",
-                                                   size=numerals(f"{left:.4g}"),
-                                                   unit=unit_words(word)), "", "")
+            reading = (words("closed: balanced"), "", "") if kind in p.balanced else (
+                words("{size} {unit} unbalanced", size=numerals(f"{left:.4g}"),
+                      unit=unit_words(word)), "", "")
             out[kind.replace(" ", "-")] = draw_polygon(
                 p.construction, p.tips[kind], p.closing[kind], f"{ex.name}: {words(kind)}",
                 "kg·m²" if kind.endswith("couple") else "kg·m", reading,
@@ -292,6 +340,8 @@ class BalanceSolution(ChapterFiles):
                   for m in r.masses]
         found = []
         for p in r.planes:
+            if p.name in b.none:        # no mass to draw, and a zero product has no angle
+                continue
             v, mass, radius = self.placed(p)
             found.append((_mass_words(p.name, f"{mass:.4g}", f"{radius / metre:.4g}", unit,
                                       f"{_angle(v):.2f}"), math.atan2(v[1], v[0]), radius))
@@ -304,21 +354,23 @@ class BalanceSolution(ChapterFiles):
             out["side"] = draw_side_view(planes, words("{name}: side view", name=ex.name), unit,
                                          metre)
         out["table"] = self._table(unit, metre)
-        if len(r.planes) == 2:
+        # With every mass in plane A the couple polygon is a point: steps.md says so, and
+        # there is nothing to draw.
+        if len(r.planes) == 2 and any(m.plane != r.planes[0].position for m in r.masses):
             bname = r.planes[1].name
             v = b.vector(b.closing[f"{bname}·l"])
             out["couple-polygon"] = draw_polygon(
                 b.construction, b.couple, b.closing[f"{bname}·l"],
                 words("{name}: couple polygon (reference plane {plane})", name=ex.name,
                       plane=r.planes[0].name), "kg·m²",
-                ("(m r l)", bname, _size_words(f"{math.hypot(*v):.4g}", "kg·m²",
-                                               f"{_angle(v):.1f}")))
+                ("(m r l)", bname, _none_words() if bname in b.none else _size_words(
+                    f"{math.hypot(*v):.4g}", "kg·m²", f"{_angle(v):.1f}")))
         a = r.planes[0].name
         v = b.product(a)
         out["force-polygon"] = draw_polygon(
             b.construction, b.force, b.closing[a], words("{name}: force polygon", name=ex.name),
-            "kg·m", ("(m r)", a, _size_words(f"{math.hypot(*v):.4g}", "kg·m",
-                                             f"{_angle(v):.1f}")))
+            "kg·m", ("(m r)", a, _none_words() if a in b.none else _size_words(
+                f"{math.hypot(*v):.4g}", "kg·m", f"{_angle(v):.1f}")))
         return out
 
     def _table(self, unit: str, metre: float):
@@ -336,20 +388,26 @@ class BalanceSolution(ChapterFiles):
                 + ([] if flat else [f"{(m.plane - ref) / metre:g}"])
                 + [f"{m.mass * m.radius:.4g}"] + (
                 [f"{m.mass * m.radius * (m.plane - ref):.4g}"] if two else [])]))
+        none = [p for p in r.planes if p.name in self.balance.none]
         for p in r.planes:
             v, mass, radius = self.placed(p)
             size = math.hypot(*v)
-            rows.append((p.name, [numerals(t) for t in [
-                f"{mass:.4g}", f"{radius / metre:.4g}", f"{_angle(v):.2f}°"]
-                + ([] if flat else [f"{(p.position - ref) / metre:g}"])
-                + [f"{size:.4g}"] + ([f"{size * (p.position - ref):.4g}"] if two else [])]))
+            if p in none:       # the given mass or radius stands, the rest is nothing found
+                cells = [f"{mass:.4g}" if p.mass else "—",
+                         f"{radius / metre:.4g}" if p.radius else "—", "—"]
+            else:
+                cells = [f"{mass:.4g}", f"{radius / metre:.4g}", f"{_angle(v):.2f}°"]
+            rows.append((p.name, [numerals(t) for t in cells
+                                  + ([] if flat else [f"{(p.position - ref) / metre:g}"])
+                                  + [f"{size:.4g}"]
+                                  + ([f"{size * (p.position - ref):.4g}"] if two else [])]))
+        notes = [("" if flat else words("l from the reference plane {plane}; ",
+                                        plane=r.planes[0].name))
+                 + words("the rows under the rule are the balancing masses found")]
+        notes += [words("plane {plane} needs no balancing mass: its polygon closes on itself",
+                        plane=p.name) for p in none]
         return draw_train_table(words("{name}: the table", name=self.exercise.name), heads, rows,
-                                ruled=[len(r.masses)], notes=[
-                                    ("" if flat else words("l from the reference plane "
-                                                           "{plane}; ",
-                                                           plane=r.planes[0].name))
-                                    + words("the rows under the rule are the balancing masses "
-                                            "found")])
+                                ruled=[len(r.masses)], notes=notes)
 
     def _single_cylinder_plot(self):
         e = self.exercise.engine
@@ -386,6 +444,11 @@ def _mass_words(name: str, mass: str, radius: str, unit: str, angle: str) -> str
     return words("{name}: {mass} {kg} at {radius} {unit}, {angle}°", name=name,
                  mass=numerals(mass), kg=unit_words("kg"), radius=numerals(radius),
                  unit=unit_words(unit), angle=numerals(angle))
+
+
+def _none_words() -> str:
+    """What follows a closing side's symbol when its polygon closes on itself."""
+    return words(" = 0: no mass needed")
 
 
 def _size_words(size: str, unit: str, angle: str) -> str:

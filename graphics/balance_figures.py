@@ -77,10 +77,12 @@ def draw_polygon(c: Construction, tips: Sequence[tuple[str, Ref]], closing: Ref,
         _place_reading(placer, mid, reading, _outward(prev, pole, centre, 1.0, up=False))
     else:
         _place_reading(placer, pole, reading, (0.0, 1.0))       # under the names
-    draw_caption(fig, title, [words("head to tail, each parallel to its radial line; the heavy "
-                                    "side closes it")], per_cm=per_cm, unit=unit,
-                 legend=(("vector", "the vectors"), ("vector_result", "the closing side")),
-                 notes=notes)
+    # A polygon that closes on itself has no closing side to point to.
+    said = words("head to tail, each parallel to its radial line; the heavy side closes it") \
+        if closes else words("head to tail, each parallel to its radial line")
+    legend = (("vector", "the vectors"),) + ((("vector_result", "the closing side"),)
+                                            if closes else ())
+    draw_caption(fig, title, [said], per_cm=per_cm, unit=unit, legend=legend, notes=notes)
     return fig
 
 
@@ -157,8 +159,9 @@ def draw_end_view(c: Construction, masses: Sequence[tuple[str, float, str]], tit
     # "O" in the widest gap between the radial lines (the 0° one among them).
     radii = _radii(c, masses, found)
     rays = sorted([0.0] + [a % (2 * math.pi) for _, a in radii])
-    gaps = [((rays[(i + 1) % len(rays)] - a) % (2 * math.pi) or 2 * math.pi, a)
-            for i, a in enumerate(rays)]
+    # Two rays along one line leave no gap between them; one ray alone, the whole turn.
+    gaps = [((rays[(i + 1) % len(rays)] - a) % (2 * math.pi) if len(rays) > 1 else 2 * math.pi,
+             a) for i, a in enumerate(rays)]
     width, at = max(gaps)
     mid = at + width / 2
     fig.add(Text((4.2 * math.cos(mid), -4.2 * math.sin(mid) + 1.0), "O", 3.0, "middle", True))
@@ -192,7 +195,8 @@ def draw_end_view(c: Construction, masses: Sequence[tuple[str, float, str]], tit
                                     "reference radius (the short dashed one), "
                                     "counter-clockwise")],
                  per_cm=per_cm, unit=unit, notes=notes,
-                 legend=(("link", "a mass"), ("normal", "a balancing mass found")))
+                 legend=(("link", "a mass"),) + ((("normal", "a balancing mass found"),)
+                                                 if found else ()))
     return fig
 
 

@@ -963,13 +963,16 @@ def point_names(text: str) -> set[str]:
     return names
 
 
-def classify_error(message: str, path: str, names: set[str] = frozenset()) -> tuple[str, str]:
+def classify_error(message: str, path: str, names: set[str] = frozenset(),
+                   places: tuple[str, ...] = ()) -> tuple[str, str]:
     """Judge a refusal's line: ``("refused", "")`` if it locates the fault and its numbers are
     readable, else ``("refused-unclear", why)``.
 
     It locates the fault if it names the file as ``file:line`` (or ``file:`` alone, for a
     fault of the whole file: too large, too deeply nested), a link (``link 3``), a point of
-    the mechanism by name, or a position (``θ2 = 90°``, ``t = 2 s``).
+    the mechanism by name, or a position (``θ2 = 90°``, ``t = 2 s``); or if it matches one
+    of ``places``, patterns a chapter's file gives for what it names (``mass 2``, ``plane
+    B``, ``cylinder 3``).
     """
     if "\n" in message.strip():
         return "other", "the message runs over several lines"
@@ -977,6 +980,7 @@ def classify_error(message: str, path: str, names: set[str] = frozenset()) -> tu
     where = where or re.search(r"\blinks? \d+", message) is not None
     where = where or re.search(r"θ\d+ = |\bt = ", message) is not None
     where = where or re.search(r"(omega|alpha|ω|α)\d+", message) is not None
+    where = where or any(re.search(p, message) for p in places)
     # A point by its name, alone or in a quantity's (V_B, A_cor_A).
     where = where or any(re.search(rf"(?<![A-Za-z0-9′″']){re.escape(n)}(?![\w′″'])", message)
                          for n in names)
@@ -1029,11 +1033,15 @@ def _failed(doc: dict[str, Any]) -> list[dict[str, Any]]:
     return out
 
 
-def run_case(text: str | bytes, path: str | Path, *, render: bool = False) -> Outcome:
+def run_case(text: str | bytes, path: str | Path, *, render: bool = False,
+             oracle=None, places: tuple[str, ...] = ()) -> Outcome:
     """Write ``text`` to ``path``, load and solve it through the Python API, and classify it.
 
     With ``render`` every file of the solution is made as text too, and an SVG or steps.md
-    that prints nan or inf is an ``other``.
+    that prints nan or inf is an ``other``. ``oracle(solution, text)``, if given, lists what
+    a solution that passed its checks still gets wrong (an outcome ``wrong``: solved and
+    passed, but a closed form the chapter's generator gives disagrees); ``places`` are what
+    a refusal may name besides (:func:`classify_error`).
     """
     import tarsim
     from tarsim.constructions.errors import CheckMismatch, TarsimError
@@ -1050,7 +1058,7 @@ def run_case(text: str | bytes, path: str | Path, *, render: bool = False) -> Ou
         return Outcome("check-failed", str(e))
     except TarsimError as e:
         message = str(e)
-        outcome, why = classify_error(message, path, point_names(text))
+        outcome, why = classify_error(message, path, point_names(text), places)
         return Outcome(outcome, message, why)
     except Exception as e:   # noqa: BLE001 - anything else breaks the contract
         return Outcome("other", f"{type(e).__name__}: {e}".splitlines()[0],
@@ -1069,4 +1077,11 @@ def run_case(text: str | bytes, path: str | Path, *, render: bool = False) -> Ou
     if not passed or failures:
         names = ", ".join(sorted({f["quantity"] for f in failures})) or "(passed is False)"
         return Outcome("check-failed", f"failed its check: {names}", failures=failures)
+    try:
+        wrongs = oracle(solution, text) if oracle else []
+    except Exception as e:   # noqa: BLE001 - the oracle's own fault, reported, not raised
+        return Outcome("other", f"the oracle failed: {type(e).__name__}: {e}".splitlines()[0],
+                       traceback.format_exc())
+    if wrongs:
+        return Outcome("wrong", wrongs[0], "\n".join(wrongs))
     return Outcome("ok")

@@ -33,9 +33,14 @@ class EnginePolygons:
     construction: Construction
     tips: dict[str, list[tuple[str, Ref]]] = field(default_factory=dict)
     closing: dict[str, Ref] = field(default_factory=dict)
+    balanced: set[str] = field(default_factory=set)
+    """The kinds whose polygon closes on itself (to rounding): nothing is left of them."""
 
     def left(self, kind: str) -> float:
-        """What the closing side leaves unbalanced (kg·m, or kg·m² for a couple)."""
+        """What the closing side leaves unbalanced (kg·m, or kg·m² for a couple): zero for a
+        polygon that closes on itself."""
+        if kind in self.balanced:
+            return 0.0
         seg = self.construction.output(self.closing[kind])
         return math.dist(seg.start.xy, seg.end.xy)
 
@@ -62,7 +67,14 @@ def draw_engine(e: Engine, reference: float | None = None) -> EnginePolygons:
         tag = f"e{k}"
         out.tips[kind] = []
         panel = Panel.COUPLE if kind.endswith("couple") else Panel.FORCE
-        out.closing[kind] = lay_polygon(c, out.tips[kind], tag, panel, vectors, phrase(
-            "balance.engine", kind=Word(kind), order="θᵢ" if order == "1" else "2θᵢ"), Word(kind),
-            closing="balance.left")
+        # A couple's arm p − ref rounds at the size of the planes it is taken between.
+        reach = [size * ((abs(p) + abs(ref)) if kind.endswith("couple") else 1.0)
+                 for p in e.planes]
+        out.closing[kind], shut = lay_polygon(
+            c, out.tips[kind], tag, panel, vectors,
+            phrase("balance.engine", kind=Word(kind), order="θᵢ" if order == "1" else "2θᵢ"),
+            Word(kind), closing="balance.left",
+            closed=phrase("balance.balanced", plane=Word(kind)), reach=reach)
+        if shut:
+            out.balanced.add(kind)
     return out

@@ -250,6 +250,12 @@ PHRASES: dict[str, str] = {
                      "is plane {plane}'s balancing vector, the resultant turned through 180°.",
     "balance.left": "Close the {plane} polygon from its last tip back to its start: a "
                     "closing side is the {plane} left unbalanced; none, and it is balanced.",
+    "balance.closed": "The polygon closes on itself, its last tip back on its start: plane "
+                      "{plane} needs no balancing mass.",
+    "balance.point": "Every mass lies in plane {a}, so each mᵢrᵢlᵢ is zero and the couple "
+                     "polygon is a point: plane {plane} needs no balancing mass.",
+    "balance.balanced": "The {plane} polygon closes on itself, its last tip back on its start: "
+                        "the {plane} is balanced.",
     "balance.cranks": "Draw the end view of the cranks: from the shaft's centre O each "
                       "crank's line at θᵢ, and the secondary (direct) cranks at 2θᵢ.",
     "balance.engine": "The {kind} polygon: lay off each cylinder's vector along its crank at "

@@ -30,10 +30,15 @@ WORDS: dict[str, str] = {
     "a mass's plane": "صفحهٔ یک جرم", "a balancing plane": "صفحهٔ متعادل\u200cکننده",
     "head to tail, each parallel to its radial line; the heavy side closes it":
         "پشت سر هم، هر یک موازی خط شعاعی خود؛ ضلع پررنگ آن را می\u200cبندد",
+    "head to tail, each parallel to its radial line":
+        "پشت سر هم، هر یک موازی خط شعاعی خود",
     "the vectors": "بردارها", "the closing side": "ضلع بسته\u200cکننده",
     "l from the reference plane {plane}; ": "l از صفحهٔ مرجع {plane}؛ ",
     "the rows under the rule are the balancing masses found":
         "سطرهای زیر خط، جرم\u200cهای متعادل\u200cکنندهٔ به\u200cدست\u200cآمده\u200cاند",
+    "plane {plane} needs no balancing mass: its polygon closes on itself":
+        "صفحهٔ {plane} به جرم متعادل\u200cکننده نیازی ندارد: چندضلعی آن خودبه\u200cخود بسته است",
+    " = 0: no mass needed": " = ۰: جرمی لازم نیست",
     # an engine: its four polygons
     "primary force": "نیروی اولیه", "primary couple": "کوپل اولیه",
     "secondary force": "نیروی ثانویه", "secondary couple": "کوپل ثانویه",
@@ -73,6 +78,19 @@ WORDS: dict[str, str] = {
     "for a second plane to take":
         "یک صفحه در {place} تنها نیروها را متعادل می‌کند: کوپلی به اندازهٔ {couple} kg·m² "
         "(× ω²) باقی می‌ماند که صفحهٔ دومی باید آن را بگیرد",
+    "ΣF_x = ΣF_y = 0 (kg·m): the masses' forces cancel, with no resultant":
+        "ΣF_x = ΣF_y = ۰ (kg·m): نیروهای جرم‌ها یکدیگر را خنثی می‌کنند و برآیندی ندارند",
+    "plane {plane}: no balancing mass needed, the force polygon closes on itself (Σ mᵢrᵢ = 0)":
+        "صفحهٔ {plane}: جرم متعادل‌کننده لازم نیست، چندضلعی نیرو خودبه‌خود بسته است "
+        "(Σ mᵢrᵢ = ۰)",
+    "plane {plane}: no balancing mass needed, the couple polygon closes on itself "
+    "(Σ mᵢrᵢlᵢ = 0 about plane {a})":
+        "صفحهٔ {plane}: جرم متعادل‌کننده لازم نیست، چندضلعی کوپل خودبه‌خود بسته است "
+        "(Σ mᵢrᵢlᵢ = ۰ حول صفحهٔ {a})",
+    "plane {plane}: no balancing mass needed, the force polygon closes on itself "
+    "(Σ mᵢrᵢ + (m r)_{b} = 0)":
+        "صفحهٔ {plane}: جرم متعادل‌کننده لازم نیست، چندضلعی نیرو خودبه‌خود بسته است "
+        "(Σ mᵢrᵢ + (m r)_{b} = ۰)",
     "each where the vector sum puts it": "هر یک همان‌جا که جمع برداری نشان می‌دهد",
     "polygons closed: {verdict}; the balanced rotor's residual force {residual} kg·m":
         "چندضلعی‌ها بسته شدند: {verdict}؛ نیروی باقی‌ماندهٔ روتور متعادل‌شده "
