@@ -19,7 +19,7 @@ from click.testing import CliRunner
 from tarsim.graphics.export import RenderError
 from tarsim.exercises.cli import cli
 from tests.common import four_bar_toml
-from tarsim.graphics import export
+from tarsim.graphics import atomic_files, export
 
 FOUR_BAR = four_bar_toml(coupler=150, angle=180)
 # At θ2 = 180° A is at (−100, 0): |O4A| = 400 mm > AB + O4B = 150 + 200 mm.
@@ -193,7 +193,7 @@ def test_failing_draw_keeps_the_previous_figure(mech_file, tmp_path):
 def test_failure_while_writing_removes_the_temporary_file(tmp_path, monkeypatch):
     def refuse(src, dst):
         raise PermissionError(13, "Permission denied")
-    monkeypatch.setattr(export.os, "replace", refuse)
+    monkeypatch.setattr(atomic_files.os, "replace", refuse)
     out = tmp_path / "fig.svg"
     err = assert_one_line_error(run("draw", "four-bar", "-o", out))
     assert err == f"Error: cannot write '{out}': Permission denied\n"

@@ -1,17 +1,20 @@
-"""Tests for output folders (graphics.export.write_folder, check_folder): all or nothing,
+"""Tests for output folders (graphics.atomic_files.write_folder, check_folder): all or nothing,
 one solution per folder, the user's files never touched, concurrent runs serialised, and a
 bad ``-o`` refused before the solve.
 """
 
 import errno
+import fcntl
 import json
+import multiprocessing
+import os
 import threading
 
 import pytest
 from click.testing import CliRunner
 
 from tarsim.exercises.cli import cli
-from tarsim.graphics import export
+from tarsim.graphics import atomic_files
 from tarsim.graphics.export import (MANIFEST, RenderError, check_folder, output_folder,
                                     write_folder)
 
@@ -107,7 +110,9 @@ def test_a_manifest_cannot_make_it_remove_anything_outside_the_folder(tmp_path):
     assert set(snapshot(out)) == {*SECOND, MANIFEST}
 
 
-@pytest.mark.parametrize("name", ["../x.svg", "sub/x.svg", "", "..", MANIFEST, ".tarsim-x"])
+@pytest.mark.parametrize("name", ["../x.svg", "sub/../x.svg", "sub//x.svg", "/x.svg", "sub/",
+                                  "", "..", MANIFEST, f"{MANIFEST}/x", ".tarsim-x",
+                                  ".tarsim-x/y.svg"])
 def test_a_name_that_is_not_a_plain_file_name_is_refused(tmp_path, name):
     with pytest.raises(RenderError, match="not a plain file name"):
         write_folder({name: "x"}, tmp_path / "out")
@@ -120,14 +125,14 @@ def test_a_full_disk_while_staging_leaves_the_folder_as_it_was(tmp_path, monkeyp
     write_folder(FIRST, tmp_path)
     (tmp_path / "notes.txt").write_text("mine", encoding="utf-8")
     before = snapshot(tmp_path)
-    real, calls = export._put, []
+    real, calls = atomic_files._put, []
 
     def fills_up(path, data):
         calls.append(path.name)
         if len(calls) > after:
             raise OSError(errno.ENOSPC, "No space left on device")
         real(path, data)
-    monkeypatch.setattr(export, "_put", fills_up)
+    monkeypatch.setattr(atomic_files, "_put", fills_up)
     with pytest.raises(RenderError) as info:
         write_folder(SECOND, tmp_path)
     failed = list(SECOND)[after]
@@ -140,13 +145,13 @@ def test_a_failed_manifest_write_moves_nothing(tmp_path, monkeypatch):
     # (the disk filled meanwhile), no file has moved yet.
     write_folder(FIRST, tmp_path)
     before = snapshot(tmp_path)
-    real = export._put
+    real = atomic_files._put
 
     def no_manifest(path, data):
         if path.name.startswith(".tarsim-"):
             raise OSError(errno.ENOSPC, "No space left on device")
         real(path, data)
-    monkeypatch.setattr(export, "_put", no_manifest)
+    monkeypatch.setattr(atomic_files, "_put", no_manifest)
     with pytest.raises(RenderError, match="No space left on device"):
         write_folder(SECOND, tmp_path)
     assert snapshot(tmp_path) == before
@@ -177,6 +182,156 @@ def test_concurrent_writers_leave_one_whole_set(tmp_path):
     assert snapshot(tmp_path)["steps.md"] == f"# {winner}\n".encode()
 
 
+def test_a_writer_never_removes_the_staging_folder_another_process_is_filling(tmp_path):
+    # Each writer removes the staging folders it finds unlocked; a live one is locked.
+    # Separate processes, so each lock is another process's, as between two runs.
+    sets = {w: {f"{w}-{i}.svg": f"<svg>{w}{i}</svg>" * 2000 for i in range(8)} for w in "ab"}
+    ctx = multiprocessing.get_context("fork")
+    with ctx.Pool(2) as pool:
+        failures = pool.starmap(_write_many, [(sets[w], str(tmp_path), 25) for w in sets])
+    assert failures == [[], []]
+    names = set(snapshot(tmp_path))
+    assert any(names == {*sets[w], MANIFEST} for w in sets), names
+
+
+def _write_many(files, out, times):
+    failures = []
+    for _ in range(times):
+        try:
+            write_folder(files, out)
+        except RenderError as e:
+            failures.append(str(e))
+    return failures
+
+
+# ----- a kill mid-commit, and links -------------------------------------------------------------
+def stale_stage(out, name=".tarsim-k1ll3d_x"):
+    """A staging folder as a run killed during its commit leaves it: mode 0700 (mkdtemp's),
+    some staged files not yet moved, the first manifest's temporary."""
+    stage = out / name
+    stage.mkdir(mode=0o700)
+    (stage / "steps.md").write_text("# staged\n", encoding="utf-8")
+    (stage / "sub").mkdir()
+    (stage / "sub" / "x.svg").write_text("<svg/>", encoding="utf-8")
+    return stage
+
+
+def test_the_next_run_removes_a_killed_runs_staging_folder(tmp_path):
+    write_folder(FIRST, tmp_path)
+    stale_stage(tmp_path)
+    write_folder(SECOND, tmp_path)
+    assert set(snapshot(tmp_path)) == {*SECOND, MANIFEST}
+
+
+def test_a_staging_folder_in_use_is_kept(tmp_path):
+    # Locked as a live run locks its own: the lock, not the age, tells a dead run's.
+    stage = stale_stage(tmp_path)
+    fd = os.open(stage, os.O_RDONLY)
+    try:
+        fcntl.flock(fd, fcntl.LOCK_EX)
+        write_folder(FIRST, tmp_path)
+        assert (stage / "steps.md").read_text(encoding="utf-8") == "# staged\n"
+    finally:
+        os.close(fd)
+    write_folder(FIRST, tmp_path)                 # unlocked now: its run is gone
+    assert set(snapshot(tmp_path)) == {*FIRST, MANIFEST}
+
+
+@pytest.mark.parametrize("name, make", [
+    (".tarsim-k1ll3d_x", "link"),                 # a link named as a staging folder
+    (".tarsim-k1ll3d_x", "mode 0755"),            # not mkdtemp's mode: the user's
+    (".tarsim-k1ll3d_x", "file"),
+    (".tarsim-users-own", "folder"),              # not mkdtemp's name
+])
+def test_what_only_looks_like_a_staging_folder_is_kept(tmp_path, name, make):
+    out, outside = tmp_path / "out", tmp_path / "outside"
+    out.mkdir()
+    outside.mkdir(mode=0o700)
+    (outside / "keep.txt").write_text("keep", encoding="utf-8")
+    if make == "link":
+        (out / name).symlink_to(outside)
+    elif make == "file":
+        (out / name).write_text("mine", encoding="utf-8")
+    else:
+        (out / name).mkdir(mode=0o755 if make == "mode 0755" else 0o700)
+        os.chmod(out / name, 0o755 if make == "mode 0755" else 0o700)
+    write_folder(FIRST, out)
+    assert os.path.lexists(out / name)
+    assert (outside / "keep.txt").read_text(encoding="utf-8") == "keep"
+
+
+def test_names_may_lead_through_folders_made_inside(tmp_path):
+    files = {"ali/grade.json": "{}", "ali/grade.svg": "<svg/>", "a_b/grade.json": "{}",
+             "grades.csv": "name\n"}
+    write_folder(files, tmp_path)
+    assert manifest(tmp_path) == sorted(files)
+    assert (tmp_path / "ali" / "grade.svg").read_text(encoding="utf-8") == "<svg/>"
+    (tmp_path / "a_b" / "notes.txt").write_text("mine", encoding="utf-8")
+    write_folder({"grades.csv": "name\n"}, tmp_path)
+    # ali/ held only tarsim's files and is gone; a_b/ holds the user's and is kept.
+    assert set(snapshot(tmp_path)) == {"grades.csv", "a_b", MANIFEST}
+    assert set(snapshot(tmp_path / "a_b")) == {"notes.txt"}
+
+
+def test_a_name_that_is_a_file_and_a_folder_is_refused(tmp_path):
+    with pytest.raises(RenderError) as info:
+        write_folder({"ali": "x", "ali/grade.json": "{}"}, tmp_path / "out")
+    assert str(info.value) == ("cannot write 'ali/grade.json': 'ali' is one of the files, so "
+                               "it cannot be a folder too")
+    assert not (tmp_path / "out").exists()
+
+
+def test_a_file_where_a_folder_goes_is_refused_and_nothing_moves(tmp_path):
+    write_folder(FIRST, tmp_path)
+    (tmp_path / "ali").write_text("mine", encoding="utf-8")
+    before = snapshot(tmp_path)
+    with pytest.raises(RenderError) as info:
+        write_folder({"ali/grade.json": "{}", "steps.md": "x"}, tmp_path)
+    assert str(info.value) == (f"cannot write into '{tmp_path / 'ali'}': it is a file, not a "
+                               "folder; move it or choose another folder with -o")
+    assert snapshot(tmp_path) == before
+
+
+def test_a_link_inside_the_folder_is_never_written_through(tmp_path):
+    # A link planted where a student's folder goes, pointing out of the output folder.
+    out, outside = tmp_path / "graded", tmp_path / "outside"
+    outside.mkdir()
+    write_folder({"grades.csv": "name\n"}, out)
+    (out / "a_b").symlink_to(outside)
+    before = snapshot(out)
+    with pytest.raises(RenderError) as info:
+        write_folder({"a_b/grade.json": "{}", "grades.csv": "name\na_b\n"}, out)
+    assert str(info.value) == (f"cannot write into '{out / 'a_b'}': it is a symbolic link, and "
+                               "tarsim writes only inside the output folder; remove it")
+    assert list(outside.iterdir()) == []
+    assert snapshot(out) == before
+
+
+def test_a_link_put_where_tarsims_folder_was_is_not_followed_to_remove(tmp_path):
+    out, outside = tmp_path / "graded", tmp_path / "outside"
+    outside.mkdir()
+    (outside / "grade.json").write_text("not tarsim's", encoding="utf-8")
+    write_folder({"a_b/grade.json": "{}"}, out)
+    for f in (out / "a_b").iterdir():
+        f.unlink()
+    (out / "a_b").rmdir()
+    (out / "a_b").symlink_to(outside)             # the last run's folder, now a link out
+    write_folder({"grades.csv": "name\n"}, out)
+    assert (outside / "grade.json").read_text(encoding="utf-8") == "not tarsim's"
+    assert (out / "a_b").is_symlink() and manifest(out) == ["grades.csv"]
+
+
+def test_a_link_that_is_a_file_of_the_set_is_replaced_not_followed(tmp_path):
+    out, outside = tmp_path / "out", tmp_path / "outside.svg"
+    outside.write_text("not tarsim's", encoding="utf-8")
+    write_folder(FIRST, out)
+    (out / "centres.svg").unlink()
+    (out / "centres.svg").symlink_to(outside)     # listed in the manifest as tarsim's
+    write_folder(FIRST, out)
+    assert not (out / "centres.svg").is_symlink()
+    assert outside.read_text(encoding="utf-8") == "not tarsim's"
+
+
 # ----- the folder checked before a solve ------------------------------------------------------
 def test_check_folder_makes_the_folder_and_leaves_it_empty(tmp_path):
     out = tmp_path / "new" / "deeper"
@@ -204,7 +359,7 @@ def test_check_folder_refuses_proc():
 def test_check_folder_proves_the_folder_writable(tmp_path, monkeypatch):
     def refuse(*args, **kwargs):
         raise PermissionError(errno.EACCES, "Permission denied")
-    monkeypatch.setattr(export.tempfile, "mkstemp", refuse)
+    monkeypatch.setattr(atomic_files.tempfile, "mkstemp", refuse)
     out = tmp_path / "out"
     with pytest.raises(RenderError) as info:
         check_folder(out)
