@@ -14,6 +14,7 @@ from pathlib import Path
 from .atomic_files import (MANIFEST, RenderError, check_folder, output_folder, write_folder,
                            write_text)
 from .figure import Figure
+from .pdf import dated
 from .rtl import for_cairo
 from .svg import to_svg
 
@@ -50,7 +51,7 @@ def svg_to(svg: str, fmt: str, *, dpi: float = 200.0) -> bytes:
         raise RenderError(_NO_CAIRO) from None
     data = for_cairo(svg).encode("utf-8")      # Persian shaped: cairosvg cannot shape it
     if fmt == "pdf":
-        return cairosvg.svg2pdf(bytestring=data)
+        return _dated(cairosvg.surface.PDFSurface).convert(bytestring=data)
     if fmt == "png":
         return cairosvg.svg2png(bytestring=data, dpi=dpi, background_color="white")
     raise RenderError(f"cannot convert to '{fmt}'; choose one of {', '.join(FORMATS)}")
@@ -95,3 +96,13 @@ def write_figure(fig: Figure | str, path: str | Path) -> Path:
 
 
 
+
+def _dated(surface_class: type) -> type:
+    """A subclass of cairosvg's PDF surface ``surface_class`` whose document is dated as
+    :func:`~graphics.pdf.dated` dates one, so the same SVG gives the same bytes."""
+    class Dated(surface_class):
+        def _create_surface(self, width, height):
+            cairo_surface, width, height = super()._create_surface(width, height)
+            dated(cairo_surface)
+            return cairo_surface, width, height
+    return Dated

@@ -14,19 +14,26 @@ writes of it, and print the same:
   (:func:`~graphics.rtl.visual`), as it is for cairosvg.
 tests/test_pdf.py reads both routes' PDFs back through a third renderer and holds them to
 the same pixels and the same letters in the same places.
+
+Like the SVG, the same figure gives the same bytes: cairo would date the document by the
+clock, so it is dated by ``SOURCE_DATE_EPOCH`` when that is set and not at all otherwise
+(:func:`dated`).
 """
 
 from __future__ import annotations
 
 import io
 import math
+import os
 import re
+from datetime import datetime, timezone
 
+from .atomic_files import RenderError
 from .figure import FONT, STYLES, Circle, Figure, Path, Style, Text
 from .rtl import RTL_FONT, is_rtl, visual
 from .svg import runs, text_origin, tspans
 
-__all__ = ["draw_pdf"]
+__all__ = ["draw_pdf", "dated", "creation_date"]
 
 _PT_PER_MM = 72.0 / 25.4
 _MITER_LIMIT = 4.0              # SVG's default, which cairosvg sets (cairo's own is 10)
@@ -40,6 +47,7 @@ def draw_pdf(pages: list[Figure]) -> bytes:
     out = io.BytesIO()
     surface = cairocffi.PDFSurface(out, pages[0].width * _PT_PER_MM,
                                    pages[0].height * _PT_PER_MM)
+    dated(surface)
     for page in pages:
         surface.set_size(page.width * _PT_PER_MM, page.height * _PT_PER_MM)
         ctx = cairocffi.Context(surface)
@@ -48,6 +56,41 @@ def draw_pdf(pages: list[Figure]) -> bytes:
         surface.show_page()
     surface.finish()
     return out.getvalue()
+
+
+def dated(surface) -> None:
+    """Date the document of a cairo PDF ``surface`` by :func:`creation_date`, in place of
+    the clock's time and zone that cairo writes."""
+    import cairocffi  # noqa: PLC0415
+
+    surface.set_metadata(cairocffi.PDF_METADATA_CREATE_DATE, creation_date())
+
+
+def creation_date(environ=os.environ) -> str:
+    """The PDF's creation date as cairo takes it (ISO 8601, UTC): ``SOURCE_DATE_EPOCH``'s, or
+    "" for none (a document's date is optional), as reproducible builds ask.
+
+    Raises
+    ------
+    RenderError
+        If ``SOURCE_DATE_EPOCH`` is set but is not a whole number of seconds since 1970.
+
+    Examples
+    --------
+    >>> creation_date({"SOURCE_DATE_EPOCH": "1700000000"}), creation_date({})
+    ('2023-11-14T22:13:20Z', '')
+    """
+    epoch = environ.get("SOURCE_DATE_EPOCH")
+    if epoch is None or epoch == "":
+        return ""
+    try:
+        when = datetime.fromtimestamp(int(epoch), timezone.utc) if epoch.isdigit() else None
+    except (OverflowError, OSError, ValueError):
+        when = None
+    if when is None or when.year > 9999:
+        raise RenderError(f"SOURCE_DATE_EPOCH is {epoch[:40]!r}, not a whole number of seconds "
+                          "since 1970: set it so, or unset it")
+    return when.strftime("%Y-%m-%dT%H:%M:%SZ")
 
 
 def _paint(ctx, fig: Figure) -> None:

@@ -16,6 +16,9 @@ Spaces are left out of the letters: cairosvg skips them, and PDFium invents some
 
 from __future__ import annotations
 
+import datetime
+import io
+import time
 from dataclasses import dataclass
 from importlib.util import find_spec
 
@@ -147,3 +150,68 @@ def test_a_circle_of_no_radius_and_a_path_of_no_length_print_nothing():
     fig.add(Path(((30.0, 10.0),), "link"))
     assert _pixels(figure_pdf([fig])).min() == 255
     assert _pixels(svg_to(to_svg(fig), "pdf")).min() == 255
+
+
+# ----- the same input, the same bytes -----------------------------------------------------------
+def _both_routes() -> dict[str, bytes]:
+    """A small figure with letters (so fonts are embedded) as each route prints it."""
+    fig = Figure(60.0, 30.0, title="dated")
+    fig.add(Text((30.0, 15.0), "θ2 = 90°, ω2", anchor="middle"))
+    return {"cairo": figure_pdf([fig]), "cairosvg": svg_to(to_svg(fig), "pdf")}
+
+
+def _metadata(pdf: bytes):
+    import pypdf
+
+    return pypdf.PdfReader(io.BytesIO(pdf)).metadata
+
+
+def test_the_same_figure_gives_the_same_pdf_at_another_time(monkeypatch):
+    """cairo dates a document by the clock, to the second: made again over a second
+    later, the PDF differed. Undated (no SOURCE_DATE_EPOCH), it is the same to the byte."""
+    monkeypatch.delenv("SOURCE_DATE_EPOCH", raising=False)
+    first = _both_routes()
+    time.sleep(1.1)
+    assert _both_routes() == first
+    assert all("/CreationDate" not in _metadata(pdf) for pdf in first.values())
+
+
+def test_source_date_epoch_dates_the_pdf(monkeypatch):
+    """As reproducible builds ask: 1,700,000,000 s after 1970 is 19,675 days and 80,000 s,
+    2023-11-14 at 22:13:20 UTC."""
+    monkeypatch.setenv("SOURCE_DATE_EPOCH", "1700000000")
+    for pdf in _both_routes().values():
+        assert _metadata(pdf).creation_date == datetime.datetime(
+            2023, 11, 14, 22, 13, 20, tzinfo=datetime.timezone.utc)
+
+
+@pytest.mark.parametrize("epoch", ["yesterday", "-5", "1.5e9", "99999999999999999999"])
+def test_a_source_date_epoch_that_is_no_time_is_refused_in_one_line(monkeypatch, epoch):
+    from tarsim.graphics.export import RenderError
+
+    monkeypatch.setenv("SOURCE_DATE_EPOCH", epoch)
+    for route in (lambda: figure_pdf([Figure(10.0, 10.0)]),
+                  lambda: svg_to(to_svg(Figure(10.0, 10.0)), "pdf")):
+        with pytest.raises(RenderError) as info:
+            route()
+        assert str(info.value) == (f"SOURCE_DATE_EPOCH is {epoch!r}, not a whole number of "
+                                   "seconds since 1970: set it so, or unset it")
+
+
+@pytest.mark.slow
+def test_the_same_solve_writes_the_same_pdfs_a_second_later(tmp_path, monkeypatch):
+    """`tarsim solve` twice, over a second apart: every file, its PDFs (each figure's and
+    solution.pdf) too, the same to the byte."""
+    from click.testing import CliRunner
+
+    from tarsim.exercises.cli import cli
+
+    monkeypatch.delenv("SOURCE_DATE_EPOCH", raising=False)
+    for out in ("first", "second"):
+        result = CliRunner().invoke(cli, ["solve", "four-bar", "-o", str(tmp_path / out)])
+        assert result.exit_code == 0, result.output
+        time.sleep(1.1)
+    first, second = ({p.name: p.read_bytes() for p in (tmp_path / out).iterdir()}
+                     for out in ("first", "second"))
+    assert "solution.pdf" in first and "centres.pdf" in first
+    assert first == second
