@@ -137,7 +137,8 @@ class CamSolution(ChapterFiles):
                                      f"{numeral(p.jerk)} m/s³")
             arm = ex.follower.arm if ex.follower.oscillating else 0.0
             swing = words(" (the arm: {w} rad/s, {a} rad/s²)", w=numeral(p.velocity / arm),
-                          a=numeral(p.acceleration / arm)) if arm else ""
+                          a="∞" if math.isinf(p.acceleration) else
+                          numeral(p.acceleration / arm)) if arm else ""
             out.append(words("segment {k} ({kind}, {law}): v_max = {v} {unit}/s, a_max = "
                              "{a}{swing}   {check}", k=p.index, kind=Word(p.kind),
                              law=Word(p.law), v=numeral(p.velocity * size), unit=unit, a=a,
@@ -350,7 +351,7 @@ def _refuse_lost_lifts(solution: CamSolution) -> None:
             unit, metre = ex.length_unit, ex.metre
             raise IllConditioned(
                 f"segment {k} ({s.kind} of {s.lift / metre:.3g} {unit} over "
-                f"{math.degrees(s.angle):.3g}°) is too small beside the rest of the cam to draw: "
+                f"{math.degrees(s.angle):.4g}°) is too small beside the rest of the cam to draw: "
                 f"rounding could move its points {tol / metre:.1e} {unit}; make it a dwell or "
                 "give it more lift or angle", name=f"segment {k}", method="displacement diagram",
                 conditioning=s.lift / tol, miss=tol / s.lift)

@@ -24,6 +24,7 @@ from .symbols import draw_arrow, draw_turning_arrow, mark_angle
 __all__ = ["draw_cam_layout"]
 
 _ROOM = 150.0          # paper (mm) the cam's greatest reach across is fitted to
+_WINDOW = 1.0          # the curves are drawn within this many _ROOMs of O each way
 
 _CIRCLE_STYLE = {"base": "dimension", "prime": "reference", "offset": "reference",
                  "pivot": "kennedy"}
@@ -71,7 +72,7 @@ def draw_cam_layout(layout: Layout, s: Survey, title: str, unit: str, metre: flo
             fig.add(Circle(trace, f.radius * k, "node_circle"))
         elif f.kind == "flat-faced":
             # The face from its foot past the touch, a few mm beyond each.
-            run = abs(st.face_offset) * k
+            run = min(abs(st.face_offset) * k, _WINDOW * _ROOM)
             if run > 1e-9:
                 d = _unit((st.profile[0] - st.pitch[0], st.pitch[1] - st.profile[1]))
             else:
@@ -81,10 +82,10 @@ def draw_cam_layout(layout: Layout, s: Survey, title: str, unit: str, metre: flo
                           (trace[0] + (run + 4.0) * d[0], trace[1] + (run + 4.0) * d[1])),
                          "node_circle"))
         fig.add(Circle(trace, 0.55, "dot"))
-    ring = [paper(st.pitch) for st in s.stations]
     if f.kind != "flat-faced":
-        fig.add(Path(tuple(ring), "normal" if f.kind == "roller" else "link", closed=True))
-    fig.add(Path(tuple(paper(st.profile) for st in s.stations), "link", closed=True))
+        _draw_curve(fig, [paper(st.pitch) for st in s.stations],
+                    "normal" if f.kind == "roller" else "link")
+    _draw_curve(fig, [paper(st.profile) for st in s.stations], "link")
     fig.add(Circle(o, 0.8, "dot"))
     fig.add(Text((2.0, 4.5), "O", 3.0, "start", False))
     sense = 1.0 if s.sigma > 0 else -1.0
@@ -101,7 +102,9 @@ def draw_cam_layout(layout: Layout, s: Survey, title: str, unit: str, metre: flo
     for text, at, way in numbers:
         placer.place(text, at, prefer=way, spread=1.0, gap=1.2, size=2.6, italic=False)
     for st in _ringed(s):
-        fig.add(Circle(paper(st.profile), 2.2, "normal"))
+        at = paper(st.profile)                   # or, where it runs off far, its trace point
+        fig.add(Circle(at if max(map(abs, at)) <= _WINDOW * _ROOM else paper(st.pitch), 2.2,
+                       "normal"))
     legend = [("link", _cam_term("profile (the pitch curve)" if f.kind == "knife-edge"
                                  else "profile")),
               ("dimension", _cam_term("base circle"))]
@@ -153,6 +156,29 @@ def _mark_steepest(fig: Figure, s: Survey, paper, k: float) -> None:
                              phi=numerals(f"{abs(math.degrees(st.pressure_angle)):.1f}"),
                              theta=numerals(f"{math.degrees(st.theta):.4g}")), 2.8,
                  "start" if out[0] >= 0 else "end", False))
+
+
+def _draw_curve(fig: Figure, points: list[tuple[float, float]], style: str) -> None:
+    """A closed curve through ``points`` (paper mm), as far as it stays near the cam: an
+    undercut profile's loops, or a flat face's touch on a steep segment, can run off
+    far beyond the sheet, and are drawn to where they leave the window about O."""
+    edge = _WINDOW * _ROOM
+    inside = [max(abs(x), abs(y)) <= edge for x, y in points]
+    if all(inside):
+        fig.add(Path(tuple(points), style, closed=True))
+        return
+    start = inside.index(False)                  # begin the walk just past a point outside
+    run: list[tuple[float, float]] = []
+    for i in range(start, start + len(points) + 1):
+        j = i % len(points)
+        if inside[j]:
+            run.append(points[j])
+        elif run:
+            if len(run) > 1:
+                fig.add(Path(tuple(run), style))
+            run = []
+    if len(run) > 1:
+        fig.add(Path(tuple(run), style))
 
 
 def _ringed(s: Survey, most: int = 6):

@@ -96,9 +96,18 @@ def samples(a: float, b: float) -> tuple[list[float], set[float]]:
     """Sample angles over ``a``–``b`` in order, and which of them are its equal parts (see
     the module's docstring)."""
     n = max(PARTS, math.ceil((b - a) / SPACING))
-    equal = {a + (b - a) * i / n for i in range(n)} | {b}
-    extra = {a + (b - a) * u for u in GRADED} | {b - (b - a) * u for u in GRADED}
-    return sorted(equal | {t for t in extra if a < t < b}), equal
+    # Every angle from its fraction of the span, so a fraction both grids hold (1/16) is
+    # one angle, not two an ulp apart that would bracket nothing between them.
+    equal = {a + (b - a) * (i / n) for i in range(n)} | {b}
+    extra = {a + (b - a) * u for u in GRADED} | {a + (b - a) * (1 - u) for u in GRADED}
+    out: list[float] = []
+    for t in sorted(equal | {t for t in extra if a < t < b}):
+        if out and t - out[-1] <= 4 * EPS * abs(t):
+            if t in equal:                      # the equal part is drawn: keep it
+                out[-1] = t
+            continue
+        out.append(t)
+    return out, equal
 
 
 def scan(piece: Piece, base_radius: float, f: Follower, sigma: float) -> Scan:

@@ -1,0 +1,178 @@
+"""Cam files that once passed a wrong answer or failed a right one, each held to the answer
+it should have given.
+
+The numbers asserted are closed forms (the pitch curve of a radial roller in polar form,
+R = r_b + r + y: κ = (R² + 2y′² − R y″)/(R² + y′²)^{3/2}, tan φ = y′/R), found with
+mpmath where a maximum lies between the ends, and the oracle of tests/random_cams.py, which
+reads the file itself; never what tarsim printed.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from pathlib import Path
+
+import mpmath as mp
+import pytest
+from click.testing import CliRunner
+
+import tarsim
+from tarsim.exercises.cam_solution import solve_cam
+from tarsim.exercises.cli import cli
+from tests.random_cams import extremes
+
+HERE = Path(__file__).parent / "reproducers"
+
+REFUSAL = ("Error: the roller (radius {r}) undercuts the cam in segment {k} at θ = {theta}, "
+           "where the pitch curve's radius is {rho}; use a smaller roller, a larger base "
+           "circle or a gentler segment, or --allow-undercut to draw it marked\n")
+
+
+def shm_peak_radius(base: float, roller: float, lift: float, beta: float) -> float:
+    """The radius of curvature of a radial roller's pitch curve where a simple-harmonic lift
+    turns (y′ = 0, y″ = −π²h/2β², R = r_b + r + h): κ = (R − y″)/R²."""
+    big = base + roller + lift
+    return big * big / (big + math.pi ** 2 * lift / (2 * beta ** 2))
+
+
+def shm_steepest(base: float, roller: float, lift: float, beta: float) -> float:
+    """The greatest pressure angle over a simple-harmonic return from R₀ + h to R₀ (R₀ =
+    r_b + r): tan φ = |y′|/(R₀ + y), its maximum where the derivative of that ratio
+    vanishes, found by mpmath to 30 digits."""
+    mp.mp.dps = 30
+    r0, h, b = mp.mpf(base + roller), mp.mpf(lift), mp.mpf(beta)
+
+    def ratio(u):
+        return (h * mp.pi / (2 * b) * mp.sin(mp.pi * u)) / (r0 + h / 2 * (1 + mp.cos(mp.pi * u)))
+
+    best = max((ratio(mp.mpf(i) / 200), mp.mpf(i) / 200) for i in range(1, 200))[1]
+    u = mp.findroot(lambda u: mp.diff(ratio, u), best)
+    return float(mp.atan(ratio(u)))
+
+
+def solve(name: str, *args: str, tmp_path: Path):
+    out = tmp_path / name
+    result = CliRunner().invoke(cli, ["solve", str(HERE / f"{name}.toml"), "-o", str(out),
+                                      "--no-pdf", *args])
+    return result, out
+
+
+# ----- a short steep segment between the samples ---------------------------------------------
+def test_wrong_cam_undercut_missed(tmp_path):
+    """A 13.44 mm simple-harmonic return over 0.234°, after 359.766° of other motion: at its
+    start the pitch curve bends to a radius of 1.3 µm, far under the 15.66 mm roller, and
+    the pressure angle reaches 89.28° within it. Both fell between the ¼° samples."""
+    r, h, beta = 15.656186737346916, 13.4388265773019, math.radians(0.234)
+    rho = shm_peak_radius(43.01832456708332, r, h, beta)         # mm
+    assert rho == pytest.approx(0.001308, rel=1e-3)
+    start = 142.17 + 172.147 + 45.449
+    result, out = solve("wrong-cam-undercut-missed", tmp_path=tmp_path)
+    assert result.exit_code == 1
+    assert result.output == REFUSAL.format(r="15.66 mm", k=4, theta=f"{start:.2f}°",
+                                           rho=f"{rho:.4g} mm")
+    assert not out.exists()
+
+    result, out = solve("wrong-cam-undercut-missed", "--allow-undercut", tmp_path=tmp_path)
+    assert result.exit_code == 0, result.output
+    q = json.loads((out / "results.json").read_text(encoding="utf-8"))["quantities"]
+    # A few roundings of R² and R − y″ (y″ = −6.7e8 mm) on each side.
+    assert q["rho_min"]["value"] == pytest.approx(rho * 1e-3, rel=1e-12)
+    assert q["rho_min"]["theta"] == pytest.approx(math.radians(start), abs=1e-12)
+    steep = shm_steepest(43.01832456708332, r, h, beta)
+    assert math.degrees(steep) == pytest.approx(89.279, abs=1e-3)
+    # The maximum is found on the law to rounding: its value is flat in θ there.
+    assert q["pressure_angle_max"]["value"] == pytest.approx(steep, rel=1e-12)
+    # The oracle's dense grid finds nothing sharper or steeper anywhere round the cam.
+    ext = extremes((HERE / "wrong-cam-undercut-missed.toml").read_text(encoding="utf-8"))
+    assert 1 / ext.curvature == pytest.approx(rho * 1e-3, rel=1e-9)
+    assert ext.pressure == pytest.approx(steep, rel=1e-9)
+    span = q["undercut"]["spans"]
+    assert q["undercut"]["value"] and len(span) == 1 and span[0]["segment"] == 4
+    assert span[0]["from"] == pytest.approx(math.radians(start), abs=1e-12)
+    # The steps say where it is undercut, and the figure's note says it too.
+    said = f"UNDERCUT from θ = {start:.2f}° to {math.degrees(span[0]['to']):.2f}°, worst in " \
+           "segment 4"
+    assert said in result.output
+    assert said in (out / "steps.md").read_text(encoding="utf-8")
+    assert f"UNDERCUT in segment 4 from θ = {start:.2f}°" in \
+        (out / "profile.svg").read_text(encoding="utf-8")
+    assert f"pressure angle: greatest {math.degrees(steep):.2f}°" in result.output
+
+
+def test_wrong_cam_undercut_missed_2(tmp_path):
+    """A 59.29 mm simple-harmonic rise over 1.364° on a 41.54 mm base circle: where it turns
+    at its top the pitch curve's radius is 20.6 µm, under the 2.425 mm roller."""
+    r, h, beta = 2.4250914442225673, 59.29380426682262, math.radians(1.364)
+    rho = shm_peak_radius(41.543024959289404, r, h, beta)
+    result, out = solve("wrong-cam-undercut-missed-2", tmp_path=tmp_path)
+    assert result.exit_code == 1
+    assert result.output == REFUSAL.format(r="2.425 mm", k=1, theta="1.36°",
+                                           rho=f"{rho:.4g} mm")
+    assert not out.exists()
+    s = solve_cam(tarsim.load(str(HERE / "wrong-cam-undercut-missed-2.toml")),
+                  allow_undercut=True)
+    assert s.passed, s.failures
+    assert s.profile.survey.sharpest.rho == pytest.approx(rho * 1e-3, rel=1e-12)
+    ext = extremes((HERE / "wrong-cam-undercut-missed-2.toml").read_text(encoding="utf-8"))
+    assert 1 / ext.curvature == pytest.approx(rho * 1e-3, rel=1e-9)
+    assert s.profile.survey.steepest.pressure_angle == pytest.approx(ext.pressure, rel=1e-9)
+
+
+# ----- a tolerance at the data's own scale -----------------------------------------------------
+def test_check3_cam_tolerance_false_alarm(tmp_path):
+    """A cam 100 m across whose 7 mm parabolic return is drawn 350 m along the diagram: the
+    lines through its points, 4 mm apart, carry a rounding of 1e-10 m, which a fixed 1e-12
+    of the greatest lift (7.8e-11 m) called a failure. Each point's tolerance now follows
+    from the rounding its acts can carry, and stays far under the lift it checks."""
+    result, out = solve("check3-cam-tolerance-false-alarm", tmp_path=tmp_path)
+    assert result.exit_code == 0, result.output
+    assert "all on their laws" in result.output
+    s = solve_cam(tarsim.load(str(HERE / "check3-cam-tolerance-false-alarm.toml")))
+    assert s.passed
+    lifts = [seg.lift for seg in s.exercise.segments]
+    worst = max(abs(s.diagram.point(ref)[1] - _law_lift(s, k, ref))
+                for k, curve in enumerate(s.diagram.curves) for _, ref in curve)
+    assert worst > 1e-12 * max(lifts)                  # the old tolerance's false alarm
+    for seg, curve in zip(s.exercise.segments, s.diagram.curves):
+        for _, ref in curve:
+            # A check that can fail: each tolerance is under a thousandth of what it checks.
+            assert 16 * s.bounds[ref] < 1e-3 * (seg.lift or math.inf)
+    ext = extremes((HERE / "check3-cam-tolerance-false-alarm.toml").read_text(encoding="utf-8"))
+    q = json.loads((out / "results.json").read_text(encoding="utf-8"))["quantities"]
+    assert q["pressure_angle_max"]["value"] == pytest.approx(ext.pressure, rel=1e-9)
+    assert q["rho_min"]["value"] == pytest.approx(1 / ext.curvature, rel=1e-9)
+
+
+def _law_lift(s, k: int, ref) -> float:
+    """The lift the law gives at the cam angle the point is drawn at."""
+    from tarsim.constructions.reference.cam_profile import segment_motion
+
+    segs = s.exercise.segments
+    height = sum(x.lift if x.kind == "rise" else -x.lift if x.kind == "return" else 0.0
+                 for x in segs[:k])
+    theta = s.diagram.point(ref)[0]
+    return segment_motion(segs[k], height, theta - s.diagram.starts[k]).y
+
+
+def test_a_lift_lost_in_the_rounding_of_a_large_cam_is_refused(tmp_path):
+    """The same cam with its 7 mm return made 2 µm: drawn 350 m along, its points could
+    be moved further by rounding than the lift itself, so no check of them could fail. It
+    is refused, naming the segment."""
+    text = (HERE / "check3-cam-tolerance-false-alarm.toml").read_text(encoding="utf-8")
+    old, new = 0.007110798774278666, 2e-6
+    text = text.replace(f"lift = {old!r}", f"lift = {new!r}").replace(
+        "lift = 78.30763768425905", f"lift = {78.30763768425905 + old - new!r}")
+    path = tmp_path / "lost.toml"
+    path.write_text(text, encoding="utf-8")
+    result = CliRunner().invoke(cli, ["solve", str(path), "-o", str(tmp_path / "out"),
+                                      "--no-pdf"])
+    assert result.exit_code == 1
+    line = result.output
+    assert line.count("\n") == 1 and len(line) < 200
+    assert line.startswith("Error: segment 5 (return of 2e-06 m over 100.3°) is too small "
+                           "beside the rest of the cam to draw: rounding could move its "
+                           "points ")
+    moved = float(line.split("its points ")[1].split(" m;")[0])
+    assert moved >= new
+    assert not (tmp_path / "out").exists()
