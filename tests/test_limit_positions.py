@@ -231,6 +231,23 @@ def test_range_by_turning_agrees_with_the_breakpoints():
             assert rhi == pytest.approx(hi, rel=1e-9)
 
 
+@settings(max_examples=300, deadline=None, derandomize=True)
+@given(lengths=st.lists(st.integers(1, 40), min_size=4, max_size=4), index=st.integers(0, 3))
+def test_a_range_by_the_breakpoints_is_the_range_by_turning(lengths, index):
+    # Whole-number lengths make change points (S + L = P + Q) common, and exact: a change
+    # point ends the range of the class either side of it, by either method.
+    lo, hi = length_range(lengths, index)
+    rlo, rhi = length_range_by_rotation(lengths, index)
+    slack = 1e-9 * max(lengths)             # the bisection's, as the check allows
+    if lo == hi:                            # a change point itself: an end of its neighbour's
+        assert min(abs(lo - rlo), abs(lo - (math.inf if rhi is None else rhi))) <= slack
+        return
+    assert rlo == pytest.approx(lo, abs=slack)
+    assert (hi is None) == (rhi is None)
+    if hi is not None:
+        assert rhi == pytest.approx(hi, abs=slack)
+
+
 @pytest.mark.parametrize("lengths, kind", [((300, 100, 250, 200), "crank-rocker"),
                                            ((20, 50, 100, 90), "double-crank"),
                                            ((100, 80, 30, 90), "double-rocker"),

@@ -90,6 +90,21 @@ def test_a_change_point_linkage_keeps_its_class_at_its_length_alone():
     assert "change-point linkage" in q["method"]
 
 
+def test_check3_grashof_range_change_point():
+    # Links 100, 101, 100, 100 (frame O2O4 = 100): with x for any of the 100s, S + L =
+    # x + 101 > P + Q = 200 from x = 99 up, a triple-rocker; at x = 101 the loop is
+    # 100, 100, 101, 101, S + L = P + Q, a change point, which ends the range.
+    q = overall("check3-grashof-range-change-point")
+    for span in ("O2O4", "O4B", "O2A"):
+        got = q[f"range_{span}"]
+        assert (got["low"], got["high"], got["class"]) == (0.099, 0.101, "triple-rocker")
+        # The reference bisects the turning test to 1e-12 of the loop; 1e-9 of the
+        # longest link is the check's own tolerance for a range.
+        assert got["reference"]["low"] == pytest.approx(0.099, abs=1e-9 * 0.101)
+        assert got["reference"]["high"] == pytest.approx(0.101, abs=1e-9 * 0.101)
+        assert got["passed"]
+
+
 def test_the_p37_stroke_does_not_depend_on_the_angle_drawn_from():
     q = overall("check-stroke-p37-at-200deg")
     # The lever (O4B = 26 cm) swings ±α either side of O4O2, sin α = 6/16; the rod BC stands

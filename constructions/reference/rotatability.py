@@ -159,7 +159,8 @@ def length_range(lengths, index: int) -> tuple[float, float | None]:
     class is also told by its shortest link: a crank-rocker whose crank is the
     output is another mechanism than one whose crank is the input. A change-point
     linkage (S + L = P + Q) is one at that length alone, so its range is the length
-    itself.
+    itself; and a change point ends the range of the class either side of it, even
+    where the same class resumes beyond.
 
     Examples
     --------
@@ -167,6 +168,8 @@ def length_range(lengths, index: int) -> tuple[float, float | None]:
     (65.0, 135.0)
     >>> length_range((300, 100, 300, 100), 2)     # a parallelogram: AB = 300 only
     (300.0, 300.0)
+    >>> length_range((100, 100, 101, 100), 0)     # a triple-rocker up to 100 + 101 = 101 + 100
+    (99.0, 101.0)
     """
     others = [x for i, x in enumerate(lengths) if i != index]
     here = _kind(lengths, index, lengths[index])
@@ -175,11 +178,15 @@ def length_range(lengths, index: int) -> tuple[float, float | None]:
     cuts = {abs(s1 * others[0] + s2 * others[1] + s3 * others[2])
             for s1 in (1, -1) for s2 in (1, -1) for s3 in (1, -1)} | set(others)
     cuts = sorted(float(x) for x in cuts if x > 0.0)
+    def ends_range(x: float, beyond: float) -> bool:
+        return (_kind(lengths, index, x)[0] == "change-point"
+                or _kind(lengths, index, x * beyond) != here)
+
     lo, hi = 0.0, None
     for x in cuts:
         if x <= lengths[index] * (1 - 1e-12):
-            lo = x if _kind(lengths, index, x * (1 - 1e-9)) != here else lo
-        elif _kind(lengths, index, x * (1 + 1e-9)) != here:
+            lo = x if ends_range(x, 1 - 1e-9) else lo
+        elif ends_range(x, 1 + 1e-9):
             hi = x
             break
     return lo, hi
@@ -247,6 +254,18 @@ def length_range_by_rotation(lengths, index: int) -> tuple[float, float | None]:
 
     lo = scan(1.0 / STEP, lambda x: x < 1e-9 * total)
     hi = scan(STEP, lambda x: x > 4.0 * total)
+    # A class may also change at a single length, where the loop can lie flat on one line
+    # (a change point): no step of the scan lands there, so each is turned on its own.
+    others = [x for i, x in enumerate(lengths) if i != index]
+    flat = sorted({abs(s1 * others[0] + s2 * others[1] + others[2])
+                   for s1 in (1, -1) for s2 in (1, -1)} - {0.0})
+    inside = [x for x in flat if (lo or 0.0) < x < (hi or math.inf) and x != x0]
+    for x, odd in zip(inside, kinds(inside) != here if inside else ()):
+        if odd and x < x0:
+            lo = x
+        elif odd:
+            hi = x
+            break
     return (0.0 if lo is None else lo), hi
 
 
