@@ -90,8 +90,10 @@ def check_depth(text: str, filename: str) -> None:
                 parts += 1
                 if parts > MOST_DEPTH:
                     raise _too_deep(text, at, filename)
-            elif token == "]":
+            elif token == "]":          # what the table holds sits one deeper still
                 header, mode = parts, _REST
+                if parts + 1 > MOST_DEPTH:
+                    raise _too_deep(text, at, filename)
             else:
                 mode = _REST
         elif mode == _KEY:

@@ -98,3 +98,18 @@ def test_a_folder_or_a_device_given_as_the_file(tmp_path, what, says):
     if what == "folder":
         path.mkdir()
     assert says in refused_in_one_line(path, tmp_path)
+
+
+def test_a_byte_order_mark_is_read_past(tmp_path):
+    """Notepad saves UTF-8 with a byte-order mark (EF BB BF), which tomllib takes for a
+    statement ("Invalid statement" at 1:1): the file reads as it does without one."""
+    from tarsim.exercises.catalog import bundled
+    from tarsim.exercises.mechanism_file import read_source
+
+    plain = bundled()["four-bar"]
+    path = tmp_path / "four-bar-bom.toml"
+    path.write_bytes(b"\xef\xbb\xbf" + plain.read_bytes())
+    assert read_source(path) == plain.read_text(encoding="utf-8")
+    assert tarsim.load(str(path)).mechanism.links == tarsim.load(str(plain)).mechanism.links
+    result = CliRunner().invoke(cli, ["check", str(path)], catch_exceptions=False)
+    assert result.exit_code == 0, result.output
