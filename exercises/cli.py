@@ -732,10 +732,9 @@ def list_():
     Example:
       tarsim list
     """
-    import tomllib
-
     from .cam_file import CamExercise
     from .catalog import everything, load
+    from .mechanism_file import read_source, read_toml
     from .rotor_file import BalanceExercise
     from .train_file import TrainExercise, ask_symbol
 
@@ -744,8 +743,8 @@ def list_():
     for name, path in found.items():
         try:
             ex = load(str(path))
-            source = tomllib.loads(Path(path).read_text(encoding="utf-8")).get("source")
-        except (TarsimError, tomllib.TOMLDecodeError, OSError) as e:
+            source = read_toml(read_source(path), str(path)).get("source")
+        except TarsimError as e:
             click.echo(f"{name:<{pad}}(cannot be read: {e})")
             continue
         train, cam = isinstance(ex, TrainExercise), isinstance(ex, CamExercise)
