@@ -25,6 +25,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, replace
 
 from ..constructions.asks import SYMBOLS, Acceleration, Velocity
+from ..constructions.checks import NOISE
 from ..constructions.reference import solver
 from ..constructions.reference.limits import section_zero
 from ..constructions.reference.turn import Turn, solve_turn
@@ -289,7 +290,7 @@ def sweep_exercise(ex: Exercise, steps: int = 360, *, of: str | None = None,
         peak[k] = max(v for j, v in peak.items() if KINDS[j] == KINDS[k])
 
     def quiet(key: str, value: float) -> float:
-        return 0.0 if abs(value) <= 1e-12 * peak[key] else value
+        return 0.0 if abs(value) <= NOISE * peak[key] else value
 
     def quiet_all(values: dict[str, float]) -> dict[str, float]:
         return {k: quiet(k, v) for k, v in values.items()}
@@ -343,24 +344,36 @@ def _events(sw: Sweep) -> tuple[Event, ...]:
     if sw.output.kind == "point":
         return ()
     _, (vkey,), (akey,) = KEYS[sw.output.kind]
-    out = []
-    for key in (vkey, akey):
-        peak = max(abs(s.values[key]) for s in sw.solved)
-        if peak <= 1e-9 * _scale(sw.exercise.mechanism, KINDS[key]):
-            continue        # identically zero (a crank's ω at constant speed, say)
-        n = len(sw.samples)
-        for i, a in enumerate(sw.samples):
-            b = sw.samples[(i + 1) % n]
-            if not (a.values and b.values):
-                continue
-            fa, fb = a.values[key], b.values[key]
-            if fa == 0.0:
-                out.append(Event(key, a.angle, a.values))
-            elif fa * fb < 0.0:
-                found = _bisect(sw, key, a.angle, fa, a.angle + sw.step)
-                if found is not None:
-                    out.append(found)
+    out = [e for key in (vkey, akey) for e in _zeros(sw, key)]
     return tuple(sorted(out, key=lambda e: (e.key, e.angle % math.tau)))
+
+
+def _zeros(sw: Sweep, key: str) -> list[Event]:
+    """Where ``key`` crosses 0 (bisected) or comes to rest at it over the turn.
+
+    A value within rounding of 0 beside the larger of its peak and its scale is 0: a rocker
+    held still over part of the turn (a rhombus folded) flickers about 0, and its flicker
+    is no reversal to look for.
+    """
+    peak = max(abs(s.values[key]) for s in sw.solved)
+    scale = _scale(sw.exercise.mechanism, KINDS[key])
+    if peak <= 1e-9 * scale:
+        return []           # identically zero (a crank's ω at constant speed, say)
+    floor = NOISE * max(peak, scale)
+    out, n = [], len(sw.samples)
+    for i, a in enumerate(sw.samples):
+        b, before = sw.samples[(i + 1) % n], sw.samples[i - 1]
+        if not (a.values and b.values):
+            continue
+        fa, fb = a.values[key], b.values[key]
+        if abs(fa) <= floor:
+            if not (before.values and abs(before.values[key]) <= floor):   # at rest from here
+                out.append(Event(key, a.angle, a.values))
+        elif fa * fb < 0.0 and abs(fb) > floor:
+            found = _bisect(sw, key, a.angle, fa, a.angle + sw.step)
+            if found is not None:
+                out.append(found)
+    return out
 
 
 def _bisect(sw: Sweep, key: str, lo: float, flo: float, hi: float) -> Event | None:

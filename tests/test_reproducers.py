@@ -105,6 +105,27 @@ def test_check3_grashof_range_change_point():
         assert got["passed"]
 
 
+def test_slow_sweep_rhombus_far(monkeypatch):
+    # A rhombus (every link 100 mm), 1 km from the origin, on the branch where its rocker
+    # stands still: ω4 is 0, or ω2 where it has folded over into a parallelogram, and its
+    # rounding about 0 once sent the sweep bisecting 218 "reversals" of 1e-15 rad/s.
+    from tarsim.exercises import sweep
+    calls = []
+    real = sweep.solve_turn
+    monkeypatch.setattr(sweep, "solve_turn", lambda *a, **k: calls.append(1) or real(*a, **k))
+    ex = tarsim.load(str(HERE / "slow-sweep-rhombus-far.toml"))
+    sw = sweep.sweep_exercise(ex, of="omega4")
+    w2 = ex.mechanism.drive.omega
+    for s in sw.solved:          # ω4 is 0 or ω2 (a link of a parallelogram turns as its twin)
+        w4 = s.values["omega"]
+        # 1e-9, the checks' floor: a sample 0.1° from a fold, where the loop lies flat,
+        # carries rounding some thousand times eps.
+        assert min(abs(w4), abs(w4 - w2)) <= 1e-9 * abs(w2), (s.angle, w4)
+    # One whole turn, and a bisection of some 60 steps for each of the few true changes.
+    assert len(calls) <= 1 + 4 * len(sw.events)
+    assert len(sw.events) <= 8
+
+
 def test_the_p37_stroke_does_not_depend_on_the_angle_drawn_from():
     q = overall("check-stroke-p37-at-200deg")
     # The lever (O4B = 26 cm) swings ±α either side of O4O2, sin α = 6/16; the rod BC stands
