@@ -8,6 +8,8 @@ is :class:`tarsim.graphics.export.RenderError`, a kind of :class:`TarsimError`.
 
 from __future__ import annotations
 
+import re
+
 __all__ = [
     "TarsimError",
     "InputError",
@@ -20,14 +22,18 @@ __all__ = [
 ]
 
 
+_POSITION = re.compile(r"θ\d+ = |\bt = ")
+"""How a line names a position of the input: "θ2 = 90°", "t = 2.34 s"."""
+
+
 class TarsimError(Exception):
     """Root of every error tarsim raises on purpose; the CLI catches only this."""
 
     def at(self, where: str) -> TarsimError:
-        """The same error, said to have happened at ``where`` (one of an exercise's listed
+        """The same error, said to have happened at ``where`` (one of an exercise's
         positions): the same class and attributes, ``where`` leading its line (a line
-        that already names the place is left as it is)."""
-        if where not in str(self):
+        that already names the place, or a position of its own, is left as it is)."""
+        if where not in str(self) and not _POSITION.search(str(self)):
             self.args = (f"at {where}: {self}",)
         return self
 

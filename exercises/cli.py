@@ -17,7 +17,8 @@ from pathlib import Path
 
 import click
 
-from ..constructions.errors import AssemblyError, CheckMismatch, InputError, TarsimError
+from ..constructions.errors import (AssemblyError, CheckMismatch, GeometryError, IllConditioned,
+                                   InputError, TarsimError)
 from ..constructions.model import Mechanism
 from ..constructions.narration import speaking, spoken
 
@@ -33,32 +34,38 @@ class _CheckFailed(click.ClickException):
 
 
 def _fails_cleanly(fn):
-    """Map tarsim's errors to ``Error: …``: exit 3 for a failed check, else 1. An error
-    of assembly is led by the file:line it concerns, when the command read a file."""
+    """Map tarsim's errors to ``Error: …``: exit 3 for a failed check, else 1. An error of
+    solving is led by the file it concerns (and the line, for one of assembly), when the
+    command read a file; an error of input names its own file, one of output its folder."""
     @functools.wraps(fn)
     def wrapper(*args, **kwargs):
         try:
             return fn(*args, **kwargs)
         except CheckMismatch as e:
             raise _CheckFailed(str(e)) from None
-        except AssemblyError as e:
+        except (AssemblyError, GeometryError, IllConditioned) as e:
             raise click.ClickException(_placed(e, kwargs.get("source"))) from None
         except TarsimError as e:
-            raise click.ClickException(str(e)) from None
+            solving = type(e) is TarsimError     # not input, nor output (a RenderError)
+            raise click.ClickException(_placed(e, kwargs.get("source")) if solving
+                                       else str(e)) from None
     return wrapper
 
 
-def _placed(error: AssemblyError, source: str | None) -> str:
-    """``error``'s line, led by the file and line of ``source`` that it concerns."""
+def _placed(error: TarsimError, source: str | None) -> str:
+    """``error``'s line, led by ``source`` and, for an error of assembly, the line of it
+    that the error concerns."""
     from .catalog import resolve
     from .mechanism_file import line_of
 
+    if not source or source in str(error):
+        return str(error)
     try:
-        path = resolve(source) if source else None
+        path = resolve(source)
     except TarsimError:
-        path = None
-    line = line_of(error, path) if path else None
-    return f"{source}:{line}: {error}" if line else str(error)
+        return str(error)
+    line = line_of(error, path) if isinstance(error, AssemblyError) else None
+    return f"{source}:{line}: {error}" if line else f"{source}: {error}"
 
 
 def _mechanism(source: str, angle: float | None) -> Mechanism:
@@ -622,8 +629,11 @@ def grade(source, drawing, out_dir, position, workers, scheduler, lang, digits):
                      tolerance, advice
       grade.svg      the drawing in grey, tarsim's polygons over it in blue,
                      each wrong tip ringed in red
-    For a folder: a folder of those for each drawing, and grades.csv (a row
-    a drawing; one that cannot be read says why and the rest are graded).
+    For a folder: a folder of those for each drawing (its name's stem when
+    that is plain, else a readable form of it and a short hash, so no two
+    share one), and grades.csv (a row a drawing; one that cannot be read, or a
+    link out of the folder, says why and the rest are graded). Nothing is
+    written if a place they go is taken by a file tarsim did not write.
 
     \b
     Example:
@@ -633,7 +643,7 @@ def grade(source, drawing, out_dir, position, workers, scheduler, lang, digits):
       tarsim grade four-bar class/ -o graded --scheduler tcp://10.0.0.5:8786
     """
     from .catalog import load
-    from .grading.batch import drawings_in, folder_for, grade_many
+    from .grading.batch import SHEET, grade_many, plan_class
     from .grading.grade import grade as grade_one
     from .grading.report import class_csv, grade_files, grade_table
     from ..graphics.export import write_folder
@@ -648,19 +658,20 @@ def grade(source, drawing, out_dir, position, workers, scheduler, lang, digits):
                        if g.overlay is not None else f"wrote grade.json to {out_dir}/")
             return
         load(source)                               # a bad exercise is one line, before the batch
-        found = drawings_in(path)
-        if not found:
-            raise click.ClickException(f"{drawing}: no .svg, .json or .csv drawings in it")
-        rows = []
-        with click.progressbar(length=len(found), label=f"grading {len(found)} drawings",
+        found = plan_class(path, Path(out_dir))    # every clash found before anything is written
+        read = [f for f in found if not f.refused]
+        with click.progressbar(length=len(read), label=f"grading {len(read)} drawings",
                                file=sys.stderr) as bar:
-            for name, g in grade_many(source, found, position - 1, workers,
-                                      done=lambda: bar.update(1), scheduler=scheduler):
-                rows.append((Path(name).name, g))
-                if not isinstance(g, str):
-                    write_folder(grade_files(g), Path(out_dir) / folder_for(Path(name)))
-        write_folder({"grades.csv": class_csv(rows)}, out_dir)
-        bad = sum(isinstance(g, str) for _, g in rows)
+            graded = [g for _, g in grade_many(source, [f.path for f in read], position - 1,
+                                               workers, done=lambda: bar.update(1),
+                                               scheduler=scheduler)]
+        by_file = dict(zip(read, graded))
+        rows = [(f.name, f.folder, f.refused or by_file[f]) for f in found]
+        for f, g in by_file.items():
+            if not isinstance(g, str):
+                write_folder(grade_files(g), Path(out_dir) / f.folder)
+        write_folder({SHEET: class_csv(rows)}, out_dir)
+        bad = sum(isinstance(g, str) for *_, g in rows)
         click.echo(f"graded {len(rows) - bad} of {len(rows)} drawings into {out_dir}/"
                    + (f"; {bad} could not be read (see grades.csv)" if bad else ""))
 

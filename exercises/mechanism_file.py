@@ -423,12 +423,12 @@ class _Reader:
     # ----- frame and links -----------------------------------------------------------
     def read_frame(self) -> Link:
         f = self.table("frame", True)
-        for k, v in f.items():
+        for k in f:
             self.name(k, "a frame point", table="frame", key=k)
-            self.file_origin = self.pair(v, f"frame point {k}", table="frame", key=k)
-            break
-        else:
+        if not f:
             raise self.fail("names no fixed point", table="frame")
+        first = next(iter(f))
+        self.file_origin = self.pair(f[first], f"frame point {first}", table="frame", key=first)
         return Link(1, tuple((k, self.xy(v, f"frame point {k}", table="frame", key=k))
                              for k, v in f.items()), "frame")
 

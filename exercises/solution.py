@@ -16,7 +16,7 @@ from dataclasses import dataclass, field
 
 from ..constructions.assembly import Assembly
 from ..constructions.checks import Answer, Quantity
-from ..constructions.errors import InputError, TarsimError
+from ..constructions.errors import BranchError, DeadPoint, InputError, TarsimError
 from ..constructions.methods import Work, answer_all
 from ..constructions.narration import narrate, spoken
 from ..constructions.polygon_walk import Polygon
@@ -129,30 +129,34 @@ def solve_positions(ex: Exercise) -> list[Solution]:
         return [solve_exercise(ex)]
     out = []
     for p in ex.positions:
-        try:
-            sol = solve_exercise(ex.at(p))
-        except TarsimError as e:
-            raise e.at(p.label) from None
+        sol = solve_exercise(ex.at(p), where=p.label)
         sol.position = p
         out.append(sol)
     return out
 
 
-def solve_exercise(ex: Exercise) -> Solution:
-    """Solve what ``ex`` asks at its stated position.
+def solve_exercise(ex: Exercise, *, where: str | None = None) -> Solution:
+    """Solve what ``ex`` asks at its stated position, said as ``where`` (default: its input
+    angle, "θ2 = 90°").
 
     Raises
     ------
     TarsimError
         If the mechanism cannot be assembled, is singular at this position, or a
-        construction breaks down; the message says which and where.
+        construction breaks down; the message says which, and leads with the position.
     """
     mech = ex.mechanism
-    work = _work(ex, ex.position_asks)
     if ex.without_motion:
         raise InputError(ex.without_motion, file=mech.source or None)
-    work.prepare()
-    quantities, answers = answer_all(work, METHODS)
+    try:
+        work = _work(ex, ex.position_asks)
+        work.prepare()
+        quantities, answers = answer_all(work, METHODS)
+    except TarsimError as e:
+        if isinstance(e, (InputError, BranchError, DeadPoint)) and where is None:
+            raise                   # the file's line says where: a key, a branch, the angle
+        d = mech.drive
+        raise e.at(where or f"θ{d.link} = {mech.units.angle_brief(d.angle)}") from None
     return Solution(ex, work, quantities, answers)
 
 

@@ -276,6 +276,21 @@ def test_a_hostile_file_gets_one_line_and_leaves_nothing(tmp_path, name, says):
     assert not out.exists()
 
 
+def test_noplace_omega_from_centres(tmp_path):
+    # BC = 120 km puts the ram's centres so far out that I24 and I14 meet to rounding: the
+    # refusal names the file and the position it was drawn at, as any error of solving.
+    out = tmp_path / "solution"
+    path = HERE / "noplace-omega-from-centres.toml"
+    result = CliRunner().invoke(cli, ["solve", str(path), "-o", str(out), "--no-pdf"],
+                                catch_exceptions=False)
+    assert result.exit_code == 1 and result.stdout == ""
+    assert result.stderr == (
+        f"Error: {path}: at θ2 = 323.661°: ω4 from the instant centres: I24 and I14 fall "
+        "together at this position, so the ratio of their distances is lost to rounding; "
+        "find ω4 by the velocity polygon\n")
+    assert not out.exists()
+
+
 @pytest.mark.parametrize("angle", ["inf", "-inf", "nan"])
 def test_an_angle_option_that_is_not_finite_gets_one_line(tmp_path, angle):
     result = CliRunner().invoke(cli, ["solve", "four-bar", "-o", str(tmp_path / "s"),
