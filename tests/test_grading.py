@@ -12,7 +12,7 @@ from __future__ import annotations
 import csv
 import json
 import math
-from pathlib import Path
+import re
 
 import pytest
 from click.testing import CliRunner
@@ -158,18 +158,23 @@ HUGE = (b'<svg xmlns="http://www.w3.org/2000/svg"><path d="M 0 0 '
 
 
 @pytest.mark.parametrize("data, says", [
-    (BOMB, "declares a DTD, entities or external resources"),
-    (EXTERNAL, "declares a DTD, entities or external resources"),
-    (LINKED, "links to outside resources"),
-    (HUGE, "more than"),
-    (b"\x89PNG\r\n\x1a\n\x00\x00", "not an SVG drawing"),
-    (b"", "the file is empty"),
-    (b"<html><body>hi</body></html>", "not an SVG drawing (its root is <html>)"),
-])
+    (BOMB, "student.svg: the SVG declares a DTD, entities or external resources, which a "
+           "drawing never needs; export it again as plain SVG"),
+    (EXTERNAL, "student.svg: the SVG declares a DTD, entities or external resources, which a "
+               "drawing never needs; export it again as plain SVG"),
+    (LINKED, "student.svg:1: <image> links to 'http://example.com/x.png' outside the drawing; "
+             "a drawing must hold all it shows"),
+    (HUGE, "student.svg: its shapes hold 1,500,006 characters of path data, more than a "
+           "drawing holds (at most 1,000,000)"),
+    (b"\x89PNG\r\n\x1a\n\x00\x00", "student.svg:1: not an SVG drawing: its XML is broken at "
+                                   "column 0 (not well-formed (invalid token))"),
+    (b"", "student.svg: the file is empty; give an SVG drawing"),
+    (b"<html><body>hi</body></html>", "student.svg: not an SVG drawing (its root is <html>)"),
+], ids=["entity-bomb", "external-entity", "linked-image", "huge-path", "png", "empty", "html"])
 def test_a_hostile_or_broken_drawing_is_refused_in_one_line(data, says):
-    with pytest.raises(InputError, match="student.svg: .*" + says.replace("(", r"\(")
-                       .replace(")", r"\)")):
+    with pytest.raises(InputError) as refused:
         parse_drawing(data, "student.svg")
+    assert str(refused.value) == says
 
 
 def test_a_drawing_with_no_labels_grades_nothing_and_says_so(tmp_path):
@@ -210,8 +215,9 @@ def test_a_class_grades_the_same_on_two_processes_and_writes_only_inside_its_fol
     assert "not an SVG drawing" in rows["broken.svg"]["note"]
     made = {p.relative_to(tmp_path).parts[0] for p in tmp_path.rglob("*")}
     assert made <= {"class", "graded1", "graded2"}
-    assert folder_for(Path("..%2F..%2Fescape.svg")) == "_2F.._2Fescape"
-    assert (tmp_path / "graded1" / "_2F.._2Fescape" / "grade.json").is_file()
+    escape = folder_for("..%2F..%2Fescape.svg")
+    assert re.fullmatch(r"2F_2Fescape\.[0-9a-f]{10}", escape)
+    assert (tmp_path / "graded1" / escape / "grade.json").is_file()
 
 
 def test_grading_one_drawing_writes_its_json_and_overlay(tmp_path):

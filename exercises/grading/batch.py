@@ -1,41 +1,157 @@
 """A whole class's drawings graded at once, on several processes if asked.
 
 One unreadable drawing does not stop the batch: its row in grades.csv says why, and the
-others are graded. Each student's files go into a folder named for the drawing, made safe:
-whatever a file's name says, nothing is written outside the chosen folder.
+others are graded. Each drawing's grade goes into a folder of its own, named for it
+(:func:`folder_for`): no two drawings share one, whatever their names. Nothing is read from
+outside the class folder (a link out of it gets a row saying so), and every clash with what
+is already in the output folder is found before anything is written (:func:`plan_class`).
 """
 
 from __future__ import annotations
 
+import hashlib
+import json
+import os
 import re
 import socket
 from collections.abc import Callable, Iterator
 from concurrent.futures import ProcessPoolExecutor
+from dataclasses import dataclass
 from pathlib import Path
 
 from ...constructions.errors import TarsimError
+from ...graphics.export import MANIFEST, RenderError
 from .grade import Grade, grade
 
-__all__ = ["drawings_in", "grade_many", "folder_for", "GRADABLE"]
+__all__ = ["ClassFile", "plan_class", "class_files", "grade_many", "folder_for", "GRADABLE",
+           "SHEET"]
 
 GRADABLE = (".svg", ".json", ".csv")
 """The files a class folder is graded from."""
 
+SHEET = "grades.csv"
+"""The class's sheet, in the output folder beside the drawings' folders."""
 
-def drawings_in(folder: Path) -> list[Path]:
-    """The gradable files directly in ``folder``, by name."""
-    return sorted(p for p in folder.iterdir() if p.is_file() and p.suffix.lower() in GRADABLE)
+_GRADE_FILES = ("grade.json", "grade.svg")
+
+_RESERVED = {"con", "prn", "aux", "nul", *(f"{p}{d}" for p in ("com", "lpt") for d in range(10))}
+"""Names Windows keeps for its devices, which no folder may take."""
 
 
-def folder_for(drawing: Path) -> str:
-    """A student's folder name: the drawing's stem, with anything but letters, digits, dot,
-    dash and underscore made an underscore (never "." or "..").
+@dataclass(frozen=True)
+class ClassFile:
+    """A gradable file of a class folder: its ``path`` there, the ``folder`` its grade goes
+    into, and why it is not read (``refused``), if it is not."""
 
-    >>> folder_for(Path("../x/ali rezaei (2).svg"))
-    'ali_rezaei__2_'
+    path: Path
+    folder: str
+    refused: str = ""
+
+    @property
+    def name(self) -> str:
+        """The file's name in the class folder."""
+        return self.path.name
+
+
+def folder_for(name: str) -> str:
+    """The output folder of the drawing named ``name``.
+
+    A plain name (lower-case letters, digits, ``-`` and ``_``, then ``.svg``) gives its
+    stem. Any other gives its letters and digits (``_`` for the rest), a dot, and the first
+    ten hex digits of the SHA-256 of the whole name. A plain folder has no dot and the others
+    differ in their hash, so no two names share a folder, on a file system that tells
+    case apart or one that does not; and a name always gets the same folder, whatever else
+    the class holds.
+
+    >>> folder_for("ali-2.svg"), folder_for("a b.svg"), folder_for("..svg")
+    ('ali-2', 'a_b.71729b77b9', 'drawing.d4e2061cd7')
     """
-    name = re.sub(r"[^A-Za-z0-9._-]", "_", drawing.stem).strip(".") or "drawing"
-    return name
+    dot = name.rfind(".")
+    stem, suffix = (name[:dot], name[dot:]) if dot > 0 else (name, "")
+    if suffix == ".svg" and re.fullmatch(r"[a-z0-9_-]{1,64}", stem) and stem not in _RESERVED:
+        return stem
+    readable = re.sub(r"[^\w-]+", "_", stem).strip("_")[:40] or "drawing"
+    if readable.lower() in _RESERVED:
+        readable += "_"
+    digest = hashlib.sha256(name.encode("utf-8", "surrogateescape")).hexdigest()[:10]
+    return f"{readable}.{digest}"
+
+
+def class_files(folder: Path) -> list[ClassFile]:
+    """The gradable files directly in ``folder``, by name: a link is read only when it
+    leads to a file inside the folder, and the files tarsim wrote there itself (its
+    manifest, and those it lists) are not drawings."""
+    root = folder.resolve()
+    ours = _written_by_tarsim(folder)
+    out = []
+    for path in sorted(folder.iterdir()):
+        if path.suffix.lower() not in GRADABLE or path.name in ours or \
+                path.name == MANIFEST:
+            continue
+        refused = ""
+        if path.is_symlink():
+            target = path.resolve()
+            if not target.is_relative_to(root):
+                refused = (f"not read: a link to {os.readlink(path)[:80]}, outside the class "
+                           "folder")
+            elif not target.is_file():
+                refused = "not read: a link to no file"
+        elif not path.is_file():
+            continue
+        out.append(ClassFile(path, folder_for(path.name), refused))
+    return out
+
+
+def plan_class(folder: Path, out: Path) -> list[ClassFile]:
+    """The class folder's files (:func:`class_files`), once every place their grades and
+    :data:`SHEET` go in ``out`` is known to be free: nothing yet, or what tarsim wrote
+    there itself.
+
+    Raises
+    ------
+    InputError
+        If the folder holds no gradable file.
+    RenderError
+        Naming the first place in ``out`` that is taken (and how many more are), before
+        anything is written.
+    """
+    from ...constructions.errors import InputError
+
+    files = class_files(folder)
+    if not files:
+        raise InputError(f"{folder}: no .svg, .json or .csv drawings in it")
+    taken = [] if _free(out, SHEET) else [f"{out / SHEET} is a file tarsim did not write"]
+    for f in files:
+        if f.refused:
+            continue
+        place = out / f.folder
+        if os.path.islink(place):
+            taken.append(f"{place} is a link, not a folder tarsim made")
+        elif os.path.lexists(place) and not place.is_dir():
+            taken.append(f"{place} is a file, not a folder tarsim made")
+        elif place.is_dir():
+            taken += [f"{place / n} is a file tarsim did not write" for n in _GRADE_FILES
+                      if not _free(place, n)]
+    if taken:
+        more = f" (and {len(taken) - 1} more)" if len(taken) > 1 else ""
+        raise RenderError(f"cannot write {folder.name}'s grades: {taken[0]}{more}; move it or "
+                          "choose another folder with -o")
+    return files
+
+
+def _free(folder: Path, name: str) -> bool:
+    """Whether ``folder / name`` may be written: nothing is there, or tarsim wrote it."""
+    return not os.path.lexists(folder / name) or name in _written_by_tarsim(folder)
+
+
+def _written_by_tarsim(folder: Path) -> set[str]:
+    """The names the manifest in ``folder`` lists (see :func:`tarsim.graphics.export.
+    write_folder`); none if it has none or it cannot be read, the safe side."""
+    try:
+        names = json.loads((folder / MANIFEST).read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return set()
+    return {n for n in names if isinstance(n, str)} if isinstance(names, list) else set()
 
 
 _SOLVED: dict[str, tuple] = {}

@@ -102,6 +102,7 @@ def grade(exercise, source: str | Path, position: int = 0, positions=None) -> Gr
                          "or .csv")
     drawing = read_drawing(path)
     out = Grade(exercise.id, path.name, overlay=(drawing, []), weights=dict(drafting.weights))
+    out.notes += drawing.notes
     grade_polygons(out, sol, drawing, drafting)
     grade_centres(out, sol, drawing, drafting)
     if not out.items and not out.notes:

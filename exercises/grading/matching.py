@@ -7,12 +7,23 @@ import math
 from collections.abc import Callable
 from dataclasses import dataclass
 
+from ...constructions.errors import InputError
 from .drawing import Drawing
 
-__all__ = ["match", "Frame", "rounded", "REACH", "LEAST_CONDITIONING"]
+__all__ = ["match", "Frame", "rounded", "REACH", "NEAREST", "MAX_NAMES", "LEAST_CONDITIONING"]
 
 REACH = 8.0
 """Paper (mm) a label may stand from the point it names."""
+
+NEAREST = 16
+"""How many of the points nearest a label it may be paired with: more than stand within
+:data:`REACH` of any label on a drawing a reader can read."""
+
+MAX_NAMES = 500
+"""The most labels naming a point a drawing may have."""
+
+_SAME = 1e-6
+"""Paper (mm) within which two points are one."""
 
 LEAST_CONDITIONING = 0.05
 """The least conditioning slack is given for: an item no drawing can place better than this
@@ -24,35 +35,48 @@ Vec = tuple[float, float]
 def match(drawing: Drawing, read: Callable[[str], object | None],
           unmatched: list[str] | None = None) -> dict[object, Vec]:
     """Each label's point, the label read by ``read`` (None for a label that names no
-    point): the line ends and dots within :data:`REACH` of its letters, each point taken
-    once by each kind of thing (a key's first part), in the pairing whose distances add to
-    the least (nearest pairs first, then any two labels' points swapped while that shortens
-    the sum). The labels left with no point are added to ``unmatched``."""
-    points = drawing.ends() + [c for c, _ in drawing.circles]
-    unique: list[Vec] = []
-    for p in points:
-        if not any(math.dist(p, q) < 1e-6 for q in unique):
-            unique.append(p)
+    point): the line ends and dots within :data:`REACH` of its letters (the
+    :data:`NEAREST` nearest), each point taken once by each kind of thing (a key's first
+    part), in the pairing whose distances add to the least (nearest pairs first, then any
+    two labels' points swapped while that shortens the sum). The labels left with no point
+    are added to ``unmatched``.
+
+    Raises
+    ------
+    InputError
+        If more than :data:`MAX_NAMES` labels name a point.
+    """
+    unique = _distinct(drawing.ends() + [c for c, _ in drawing.circles])
     labels = [(key, label) for label in drawing.labels
               if (key := read(label.text)) is not None]
-    near = {i: {j: d for j, p in enumerate(unique) if (d := _to_letters(p, label)) <= REACH}
-            for i, (_, label) in enumerate(labels)}
+    if len(labels) > MAX_NAMES:
+        raise InputError(f"{len(labels):,} labels name a point, more than a drawing has (at "
+                         f"most {MAX_NAMES}); a page of polygons names some dozens",
+                         file=drawing.source)
+    kinds = [_kind(key) for key, _ in labels]
+    near = _near(unique, [label for _, label in labels])
     pairs = sorted((d, i, j) for i, js in near.items() for j, d in js.items())
     taken: dict[int, int] = {}
+    holder: dict[tuple[object, int], int] = {}          # (kind, point): the label on it
     for _, i, j in pairs:
-        if i not in taken and (_kind(labels[i][0]), j) not in {
-                (_kind(labels[m][0]), n) for m, n in taken.items()}:
+        if i not in taken and (kinds[i], j) not in holder:
             taken[i] = j
+            holder[kinds[i], j] = i
+    order = {i: n for n, i in enumerate(taken)}
     improved = True
     while improved:
         improved = False
         for i in list(taken):
-            for k in list(taken):
+            # Only a label holding one of i's points can be swapped with i: visit those, in
+            # the order the labels were paired.
+            mates = sorted({m for j in near[i] if (m := holder.get((kinds[i], j))) is not None
+                            and m > i}, key=order.get)
+            for k in mates:
                 a, b = taken[i], taken[k]
-                if i < k and _kind(labels[i][0]) == _kind(labels[k][0]) and \
-                        b in near[i] and a in near[k] and \
+                if b in near[i] and a in near[k] and \
                         near[i][b] + near[k][a] < near[i][a] + near[k][b] - 1e-9:
                     taken[i], taken[k] = b, a
+                    holder[kinds[i], b], holder[kinds[i], a] = i, k
                     improved = True
     out: dict[object, Vec] = {}
     for i, j in taken.items():
@@ -62,20 +86,59 @@ def match(drawing: Drawing, read: Callable[[str], object | None],
     return out
 
 
+def _distinct(points: list[Vec]) -> list[Vec]:
+    """``points`` in order, each within a micrometre of an earlier one left out (found on
+    a grid of micrometre cells, so a drawing's many line ends cost no more than their
+    number)."""
+    cells: dict[tuple[int, int], list[Vec]] = {}
+    out = []
+    for p in points:
+        kx, ky = math.floor(p[0] / _SAME), math.floor(p[1] / _SAME)
+        if any(math.dist(p, q) < _SAME for dx in (-1, 0, 1) for dy in (-1, 0, 1)
+               for q in cells.get((kx + dx, ky + dy), ())):
+            continue
+        cells.setdefault((kx, ky), []).append(p)
+        out.append(p)
+    return out
+
+
+def _near(points: list[Vec], labels: list) -> dict[int, dict[int, float]]:
+    """For each label, the :data:`NEAREST` points within :data:`REACH` of its letters, and
+    how far each is."""
+    import numpy as np
+
+    if not points:
+        return {i: {} for i in range(len(labels))}
+    xy = np.array(points, dtype=float)
+    by_x = np.argsort(xy[:, 0], kind="stable")
+    xs = xy[by_x, 0]
+    out = {}
+    for i, label in enumerate(labels):
+        x0, x1, y0, y1 = _letters(label)
+        lo = int(np.searchsorted(xs, x0 - REACH, side="left"))
+        hi = int(np.searchsorted(xs, x1 + REACH, side="right"))
+        idx = by_x[lo:hi]
+        p = xy[idx]
+        d = np.hypot(np.maximum(np.maximum(x0 - p[:, 0], 0.0), p[:, 0] - x1),
+                     np.maximum(np.maximum(y0 - p[:, 1], 0.0), p[:, 1] - y1))
+        keep = np.flatnonzero(d <= REACH)
+        if len(keep) > NEAREST:
+            keep = keep[np.lexsort((idx[keep], d[keep]))[:NEAREST]]
+        out[i] = {int(idx[k]): float(d[k]) for k in keep}
+    return out
+
+
 def _kind(key) -> object:
     """What a label names a point of: a key's first part (one point may be both a pin and
     the instant centre at it, but not two tips of one polygon)."""
     return key[0] if isinstance(key, tuple) else None
 
 
-def _to_letters(p: Vec, label) -> float:
-    """How far point ``p`` stands from a label's letters: a box from its anchor (the
-    baseline's start) about as wide as its letters and as tall as a capital."""
-    x0, x1 = label.at[0], label.at[0] + 2.0 * len(label.text)
-    y0, y1 = label.at[1] - 3.5, label.at[1]
-    dx = max(x0 - p[0], 0.0, p[0] - x1)
-    dy = max(y0 - p[1], 0.0, p[1] - y1)
-    return math.hypot(dx, dy)
+def _letters(label) -> tuple[float, float, float, float]:
+    """A label's letters as a box (x0, x1, y0, y1): from its anchor (the baseline's start)
+    about as wide as its letters and as tall as a capital."""
+    return (label.at[0], label.at[0] + 2.0 * len(label.text), label.at[1] - 3.5,
+            label.at[1])
 
 
 @dataclass(frozen=True)

@@ -94,7 +94,7 @@ def grade_polygons(out: Grade, sol, drawing: Drawing, drafting: Drafting = DRAFT
     if lost:
         out.notes.append(f"labels near no line end or dot, not graded: {', '.join(lost)}")
     polygons = _expected(sol)
-    stated = _stated_scales(drawing)
+    stated = _stated_scales(drawing, out.notes)
     overlay = []
     for kind in sorted(kinds):
         if kind not in polygons:
@@ -140,21 +140,31 @@ def _expected(sol) -> dict[str, _Expected]:
     return out
 
 
-_SCALE = re.compile(r"(\d+(?:[.,]\d+)?)\s*cm\s*=\s*(\d+(?:[.,]\d+)?)\s*(mm|cm|m)\s*/\s*s"
-                    r"\s*(²|\^2|2)?", re.IGNORECASE)
+# A number starts where no digit stands before it, so a long run of digits is tried once.
+_SCALE = re.compile(r"(?<![\d.,])(\d+(?:[.,]\d+)?)\s*cm\s*=\s*(\d+(?:[.,]\d+)?)\s*"
+                    r"(mm|cm|m)\s*/\s*s\s*(²|\^2|2)?", re.IGNORECASE)
 _UNIT = {"mm": 1e-3, "cm": 1e-2, "m": 1.0}
 
 
-def _stated_scales(drawing: Drawing) -> dict[str, float]:
+_SCALES = (1e-9, 1e9)
+"""The scales a drawing may state, paper mm per SI unit: beyond them a statement is a slip
+of the pen, not a scale, and is not held to."""
+
+
+def _stated_scales(drawing: Drawing, notes: list[str]) -> dict[str, float]:
     """Scales written on the drawing, paper mm per SI unit, by kind ("1 cm = 0.5 m/s",
-    "3 cm = 18 cm/s", "1 cm = 2 m/s²")."""
+    "3 cm = 18 cm/s", "1 cm = 2 m/s²"); one no drawing is drawn at is said in ``notes``."""
     out = {}
     for label in drawing.labels:
         m = _SCALE.search(label.text.replace(" ", " "))
         if m:
             cm, amount = float(m[1].replace(",", ".")), float(m[2].replace(",", "."))
-            if amount > 0:
-                out["a" if m[4] else "v"] = 10.0 * cm / (amount * _UNIT[m[3].lower()])
+            scale = 10.0 * cm / (amount * _UNIT[m[3].lower()]) if amount > 0 else math.inf
+            if _SCALES[0] <= scale <= _SCALES[1]:
+                out["a" if m[4] else "v"] = scale
+            else:
+                notes.append(f"the scale written '{m[0][:40]}' is no scale a drawing is drawn "
+                             "at, so it was not held to")
     return out
 
 

@@ -103,18 +103,18 @@ def _said(dwg, text: str, at: tuple[float, float], **style):
     return dwg.text(text, insert=at, **style)
 
 
-def class_csv(grades: list[tuple[str, Grade | str]]) -> str:
-    """grades.csv: a row a student, the score and each item's verdict, or why the file was
-    not graded."""
-    names = sorted({i.name for _, g in grades if not isinstance(g, str) for i in g.items})
+def class_csv(grades: list[tuple[str, str, Grade | str]]) -> str:
+    """grades.csv: a row a file (its name and the folder its grade went into), the score and
+    each item's verdict, or why the file was not graded."""
+    names = sorted({i.name for _, _, g in grades if not isinstance(g, str) for i in g.items})
     out = io.StringIO()
     w = csv.writer(out, lineterminator="\n")
-    w.writerow(["drawing", "score", *names, "note"])
-    for source, g in grades:
+    w.writerow(["drawing", "folder", "score", *names, "note"])
+    for source, folder, g in grades:
         if isinstance(g, str):
-            w.writerow([source, "", *[""] * len(names), g])
+            w.writerow([source, "", "", *[""] * len(names), g])
             continue
         verdicts = {i.name: i.verdict for i in g.items}
-        w.writerow([source, f"{g.score:.1f}", *[verdicts.get(n, "") for n in names],
+        w.writerow([source, folder, f"{g.score:.1f}", *[verdicts.get(n, "") for n in names],
                     "; ".join(g.notes)])
     return out.getvalue()

@@ -1,0 +1,495 @@
+"""A student's SVG parsed with no trust, and cut down to what grading reads.
+
+The file is parsed by defusedxml (no DTD, no entities, nothing external), each element's
+line kept for the messages. Then, before svgelements reads any geometry:
+
+- the tree is bounded: its elements, how deep they nest, and what its ``<use>`` elements
+  would expand to, counted on the tree (a ``<use>`` renders as many elements as its target,
+  a loop is refused), so a file of a kilobyte cannot ask for millions;
+- nothing may be pulled in: XInclude, or a ``<use>`` or image linked outside the file;
+- the page must have a size: a viewBox, width or height of zero, below zero or not a
+  finite number is refused;
+- only what grading reads goes on: groups, ``<use>``, shapes and texts, with their
+  geometry, ids and transforms (each rewritten as one finite matrix). Styles, scripts,
+  markers, clip paths, hidden layers and metadata are left out, and so is an element with
+  a number that is no number or beyond any drawing, with a word (:attr:`Reduced.notes`).
+
+svgelements then expands a bounded tree whose every number it can read. Each element
+carries its index in :attr:`Reduced.kept` as the attribute :data:`MARK`, so a shape
+svgelements returns is traced back to its line.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+import xml.etree.ElementTree as ET
+from dataclasses import dataclass, field
+
+from ...constructions.errors import InputError
+
+__all__ = ["Kept", "Reduced", "reduce_svg", "MARK", "MAX_ELEMENTS", "MAX_DEPTH",
+           "MAX_PATH_CHARS", "MAX_TRANSFORM_WORK"]
+
+MAX_ELEMENTS = 20_000
+"""The most elements a drawing may hold, as written and with its ``<use>`` expanded: far
+past any hand-made polygon."""
+
+MAX_DEPTH = 64
+"""How deep its elements may nest, ``<use>`` expanded (Inkscape's layers nest a dozen)."""
+
+MAX_PATH_CHARS = 1_000_000
+"""The longest its paths' data may run, all together and ``<use>`` expanded (characters)."""
+
+MAX_TRANSFORM_WORK = 200_000
+"""The most transforms svgelements may apply, each element's whole chain counted: a
+thousand elements under a dozen transformed groups apply some ten thousand."""
+
+MAX_NUMBER = 1e12
+"""The largest number an attribute may hold, in its own units."""
+
+MAX_ATTRIBUTE = 1_000
+"""The longest any attribute but a path's data may be (characters)."""
+
+MARK = "tarsim-n"
+"""The attribute giving a kept element's index in :attr:`Reduced.kept`."""
+
+_SVG, _XLINK = "http://www.w3.org/2000/svg", "http://www.w3.org/1999/xlink"
+_XINCLUDE = "http://www.w3.org/2001/XInclude"
+_GROUPS = {"g": "g", "a": "g", "switch": "g", "defs": "defs", "use": "use", "svg": "svg",
+           "symbol": "symbol"}
+_GEOMETRY = {"svg": ("x", "y", "width", "height", "viewBox", "preserveAspectRatio"),
+             "use": (), "g": (), "defs": (), "symbol": (),
+             "line": ("x1", "y1", "x2", "y2"), "polyline": ("points",),
+             "polygon": ("points",), "rect": ("x", "y", "width", "height", "rx", "ry"),
+             "circle": ("cx", "cy", "r"), "ellipse": ("cx", "cy", "rx", "ry"),
+             "path": ("d",), "text": ("x", "y", "dx", "dy"), "tspan": ("x", "y", "dx", "dy")}
+_LENGTH = re.compile(r"\s*([+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?)\s*"
+                     r"(px|pt|pc|mm|cm|in|em|ex|%)?\s*")
+_NUMBER = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?")
+_PX = {None: 1.0, "px": 1.0, "mm": 96 / 25.4, "cm": 960 / 25.4, "in": 96.0, "pt": 96 / 72,
+       "pc": 16.0}
+
+
+@dataclass(frozen=True)
+class Kept:
+    """An element passed on to svgelements: its tag, its line, and a text's words."""
+
+    tag: str
+    line: int
+    words: str = ""
+
+    def where(self) -> str:
+        """The element as a message names it: ``<circle> at line 4``."""
+        return f"<{self.tag}> at line {self.line}"
+
+
+@dataclass
+class Reduced:
+    """The tree svgelements reads (as bytes), the elements kept, and those left out."""
+
+    data: bytes
+    kept: list[Kept] = field(default_factory=list)
+    notes: list[str] = field(default_factory=list)
+    """Each element left out, and why: ``<circle> at line 4 (r is not a number)``."""
+
+
+def reduce_svg(data: bytes, name: str) -> Reduced:
+    """Parse the drawing ``data`` (the file ``name``) and cut it down to what grading reads.
+
+    Raises
+    ------
+    InputError
+        Naming the file and, where there is one, the line: XML that cannot be read, a DTD
+        or an entity, no ``<svg>`` root, too many elements or too deep, ``<use>`` that loops
+        or expands past the bounds, anything linked from outside, a page with no size.
+
+    Examples
+    --------
+    >>> r = reduce_svg(b'<svg width="10mm" height="10mm"><style>*{}</style>'
+    ...                b'<line x1="0" y1="0" x2="3" y2="4" stroke="red"/></svg>', "s.svg")
+    >>> r.data.decode().split("><")[1]
+    'line tarsim-n="1" x1="0" y1="0" x2="3" y2="4" /'
+    >>> r.kept[1]
+    Kept(tag='line', line=1, words='')
+    """
+    root, lines = _parse(data, name)
+    if _local(root.tag) != "svg":
+        raise InputError(f"not an SVG drawing (its root is <{_local(root.tag)}>)", file=name)
+    count = sum(1 for _ in root.iter())
+    if count > MAX_ELEMENTS:
+        raise InputError(f"{count:,} elements are more than a drawing holds (at most "
+                         f"{MAX_ELEMENTS:,})", file=name)
+    _check_depth(root, lines, name)
+    out = Reduced(b"")
+    tree = _Reducer(name, lines, out).element(root, None)
+    if tree is None:
+        raise InputError("the drawing is hidden whole (its <svg> has display none)",
+                         file=name, line=1)
+    _Expansion(tree, out.kept, name).check()
+    out.data = ET.tostring(tree, encoding="unicode").encode("utf-8")
+    return out
+
+
+def _parse(data: bytes, name: str) -> tuple[ET.Element, dict[ET.Element, int]]:
+    """The XML tree, and each element's line."""
+    from defusedxml import DefusedXmlException
+    from defusedxml.ElementTree import DefusedXMLParser
+
+    lines: dict[ET.Element, int] = {}
+    parser = DefusedXMLParser(target=ET.TreeBuilder(), forbid_dtd=True, forbid_entities=True,
+                              forbid_external=True)
+    expat = parser.parser
+    start = expat.StartElementHandler
+
+    def started(tag, attributes):
+        element = start(tag, attributes)
+        lines[element] = expat.CurrentLineNumber
+        return element
+    expat.StartElementHandler = started
+    try:
+        parser.feed(data)
+        root = parser.close()
+    except DefusedXmlException:
+        raise InputError("the SVG declares a DTD, entities or external resources, which a "
+                         "drawing never needs; export it again as plain SVG",
+                         file=name) from None
+    except ET.ParseError as e:
+        line, column = e.position
+        why = str(e).split(":")[0]
+        raise InputError(f"not an SVG drawing: its XML is broken at column {column} ({why})",
+                         file=name, line=line) from None
+    except LookupError as e:                  # an encoding Python does not know
+        raise InputError(f"not an SVG drawing: {e}; save it as UTF-8", file=name) from None
+    return root, lines
+
+
+def _check_depth(root: ET.Element, lines: dict, name: str) -> None:
+    """Refuse elements nested past :data:`MAX_DEPTH`, at the first that is."""
+    stack = [(root, 1)]
+    while stack:
+        element, depth = stack.pop()
+        if depth > MAX_DEPTH:
+            raise InputError(f"<{_local(element.tag)}> is nested {depth} deep, deeper than a "
+                             f"drawing's elements go (at most {MAX_DEPTH})", file=name,
+                             line=lines.get(element))
+        stack.extend((child, depth + 1) for child in element)
+
+
+class _Reducer:
+    """Builds the tree svgelements reads from the parsed one."""
+
+    def __init__(self, name: str, lines: dict, out: Reduced):
+        self.name, self.lines, self.out = name, lines, out
+
+    def fail(self, element, message: str) -> InputError:
+        return InputError(f"<{_local(element.tag)}> {message}", file=self.name,
+                          line=self.lines.get(element))
+
+    def leave_out(self, element, why: str) -> None:
+        self.out.notes.append(f"<{_local(element.tag)}> at line {self.lines.get(element)} "
+                              f"({why})")
+
+    def element(self, e: ET.Element, parent: ET.Element | None,
+                in_text: bool = False) -> ET.Element | None:
+        """The kept copy of ``e`` under ``parent`` (None if left out)."""
+        space, tag = _space(e.tag), _local(e.tag)
+        if space == _XINCLUDE:
+            raise self.fail(e, "pulls in another file (XInclude); a drawing must hold all it "
+                               "shows")
+        href = e.get(f"{{{_XLINK}}}href", e.get("href"))
+        if href is not None and tag in ("use", "image") and not href.startswith("#") and \
+                not (tag == "image" and href.startswith("data:")):
+            raise self.fail(e, f"links to {href[:60]!r} outside the drawing; a drawing must "
+                               "hold all it shows")
+        if space not in ("", _SVG) or _hidden(e):
+            return None
+        if in_text:
+            tag = "tspan" if tag == "tspan" else None
+        elif tag not in _GROUPS and tag not in _GEOMETRY:
+            return None
+        if tag is None:
+            return None
+        kind = _GROUPS.get(tag, tag)
+        attributes = self.attributes(e, kind, href)
+        if attributes is None:
+            return None
+        index = len(self.out.kept)
+        words = "".join(e.itertext()) if kind == "text" else ""
+        self.out.kept.append(Kept(_local(e.tag), self.lines.get(e, 0), words))
+        attributes = {MARK: str(index), **attributes}
+        if kind == "symbol":                 # drawn only through a <use>: a group in defs
+            holder = ET.Element("defs") if parent is None else ET.SubElement(parent, "defs")
+            copy = ET.SubElement(holder, "g", attributes)
+        else:
+            copy = ET.Element(kind, attributes) if parent is None else \
+                ET.SubElement(parent, kind, attributes)
+        for child in e:
+            self.element(child, copy, in_text=in_text or kind == "text")
+        if kind in ("text", "tspan"):
+            copy.text = e.text
+        return copy
+
+    def attributes(self, e: ET.Element, kind: str, href: str | None) -> dict | None:
+        """The attributes svgelements is given, checked; None (and a note) if ``e`` holds
+        a number that is no number or beyond any drawing."""
+        out = {}
+        if e.get("id") is not None and len(e.get("id")) <= MAX_ATTRIBUTE:
+            out["id"] = e.get("id")
+        for key in _GEOMETRY.get(kind, ()):
+            value = e.get(key)
+            if value is None:
+                continue
+            if key in ("d", "points"):
+                bad = _huge_number(value)
+                if bad:
+                    self.leave_out(e, f"{key} holds {bad[:24]}, beyond any drawing")
+                    return None
+                out[key] = value
+                continue
+            if kind == "svg":
+                out[key] = self.page(e, key, value)
+                continue
+            if kind in ("text", "tspan"):        # a list of glyph positions: the first
+                value = (re.split(r"[\s,]+", value.strip()) or [""])[0]
+            if _length(value) is None:
+                self.leave_out(e, f"{key}={value[:24]!r} {_fault(value)}")
+                return None
+            out[key] = value.strip()
+        matrix = self.transform(e, kind)
+        if matrix is False:
+            return None
+        if matrix is not None:
+            out["transform"] = "matrix(" + " ".join(repr(v) for v in matrix) + ")"
+        if kind == "use" and href is not None:
+            out["href"] = href
+        return out
+
+    def page(self, e: ET.Element, key: str, value: str) -> str:
+        """A ``<svg>``'s size or viewBox, refused unless it has one."""
+        if key == "preserveAspectRatio":
+            return value if re.fullmatch(r"[A-Za-z ]{0,40}", value) else "xMidYMid"
+        if key == "viewBox":
+            parts = [p for p in re.split(r"[\s,]+", value.strip()) if p]
+            numbers = [_length(p) for p in parts]
+            if len(parts) != 4 or any(n is None or n[1] is not None for n in numbers) or \
+                    numbers[2][0] <= 0 or numbers[3][0] <= 0:
+                raise self.fail(e, f"viewBox={value[:40]!r} gives the page no size; a "
+                                   "drawing's viewBox is four numbers, its width and height "
+                                   "above zero")
+            return value
+        if key in ("width", "height") and value.strip() == "auto":
+            return "100%"
+        size = _length(value)
+        if size is None or (key in ("width", "height") and size[0] <= 0):
+            raise self.fail(e, f"{key}={value[:40]!r} is no size for a page; export the "
+                               "drawing again")
+        return value.strip()
+
+    def transform(self, e: ET.Element, kind: str):
+        """``e``'s transform (a ``<use>``'s x and y included) as six numbers, None for
+        none, False (and a note) if it cannot be read or is beyond any drawing."""
+        text = e.get("transform")
+        matrix = None
+        if text is not None and text.strip():
+            matrix = (_matrix(text) or _css_matrix(text)) if len(text) <= MAX_ATTRIBUTE \
+                else None
+            if matrix is None:
+                self.leave_out(e, f"its transform {text[:24]!r} cannot be read")
+                return False
+        if kind == "use" and (e.get("x") or e.get("y")):
+            shift = [_length(e.get(k) or "0") for k in ("x", "y")]
+            if any(s is None or s[1] not in _PX for s in shift):
+                self.leave_out(e, "its x or y is not a length")
+                return False
+            move = (1.0, 0.0, 0.0, 1.0, shift[0][0] * _PX[shift[0][1]],
+                    shift[1][0] * _PX[shift[1][1]])
+            matrix = _times(matrix or (1.0, 0.0, 0.0, 1.0, 0.0, 0.0), move)
+        if matrix is not None and not all(math.isfinite(v) and abs(v) <= MAX_NUMBER
+                                          for v in matrix):
+            self.leave_out(e, "its transform goes beyond any drawing")
+            return False
+        return matrix
+
+
+class _Expansion:
+    """What svgelements would make of the tree, counted on it before it is made."""
+
+    def __init__(self, tree: ET.Element, kept: list[Kept], name: str):
+        self.tree, self.kept, self.name = tree, kept, name
+        self.ids = {e.get("id"): e for e in tree.iter() if e.get("id") is not None}
+        self.memo: dict[ET.Element, tuple[int, int, int, int]] = {}
+        self.open: set[ET.Element] = set()
+
+    def check(self) -> None:
+        """Refuse a ``<use>`` loop, or a tree that expands past the bounds.
+
+        Raises
+        ------
+        InputError
+            Naming the file, the line of the ``<use>`` and the bound.
+        """
+        count, chars, work, _ = self.measure(self.tree, 1)
+        work += count                              # the page's own viewport transform
+        for axis, (total, most, what) in enumerate((
+                (count, MAX_ELEMENTS, "elements"),
+                (chars, MAX_PATH_CHARS, "characters of path data"),
+                (work, MAX_TRANSFORM_WORK, "transforms applied"))):
+            if total <= most:
+                continue
+            uses = [e for e in self.memo if e.tag == "use"]
+            if not uses:
+                raise InputError(f"its shapes hold {total:,} {what}, more than a drawing "
+                                 f"holds (at most {most:,})", file=self.name)
+            use = max(uses, key=lambda u: self.memo[u][axis])
+            raise InputError(f"its <use> elements expand it to {total:,} {what}, more than "
+                             f"a drawing holds (at most {most:,}); this <use> of "
+                             f"{use.get('href', '')[:40]} alone makes "
+                             f"{self.memo[use][axis]:,}", file=self.name, line=self.line(use))
+
+    def line(self, e: ET.Element) -> int:
+        return self.kept[int(e.get(MARK))].line
+
+    def measure(self, e: ET.Element, depth: int) -> tuple[int, int, int, int]:
+        """(elements, path characters, transforms applied, depth) of ``e`` expanded."""
+        if e in self.memo:
+            if depth + self.memo[e][3] - 1 > MAX_DEPTH:
+                raise InputError(f"<{e.tag}> is nested more than {MAX_DEPTH} deep once its "
+                                 "<use> elements are expanded", file=self.name,
+                                 line=self.line(e))
+            return self.memo[e]
+        if e in self.open:
+            raise InputError(f"<use> of {e.get('href', '')[:40]} refers to an element that "
+                             "holds it: a <use> may not loop", file=self.name,
+                             line=self.line(e))
+        if depth > MAX_DEPTH:
+            raise InputError(f"<{e.tag}> is nested more than {MAX_DEPTH} deep once its "
+                             "<use> elements are expanded", file=self.name, line=self.line(e))
+        self.open.add(e)
+        count, chars, work, deep = 1, len(e.get("d", "")) + len(e.get("points", "")), 0, 0
+        parts = list(e)
+        if e.tag == "use":
+            target = self.ids.get((e.get("href") or "#")[1:])
+            if target is not None:
+                parts.append(target)
+        for part in parts:
+            c, ch, w, d = self.measure(part, depth + 1)
+            count, chars, work, deep = count + c, chars + ch, work + w, max(deep, d)
+        work += count * (e.get("transform") is not None)
+        self.open.discard(e)
+        self.memo[e] = (count, chars, work, deep + 1)
+        return self.memo[e]
+
+
+def _matrix(text: str) -> tuple[float, ...] | None:
+    """An SVG 1.1 transform list as one matrix (a, b, c, d, e, f); None if it is not one.
+
+    >>> _matrix("translate(10, 5) rotate(90)")
+    (6.123233995736766e-17, 1.0, -1.0, 6.123233995736766e-17, 10.0, 5.0)
+    """
+    out = (1.0, 0.0, 0.0, 1.0, 0.0, 0.0)
+    rest = text.strip()
+    while rest:
+        m = re.match(r"([A-Za-z]+)\s*\(([^()]*)\)[\s,]*", rest)
+        if m is None:
+            return None
+        rest = rest[m.end():]
+        args = m[2].strip()
+        numbers = [float(v) for v in _NUMBER.findall(args)]
+        if _NUMBER.sub("", args).strip(" ,\t\n\r") or not all(
+                math.isfinite(v) for v in numbers):
+            return None
+        step = _function(m[1], numbers)
+        if step is None:
+            return None
+        out = _times(out, step)
+    return out
+
+
+def _css_matrix(text: str) -> tuple[float, ...] | None:
+    """A transform with units (``rotate(30deg)``, ``translate(2px)``) as svgelements reads
+    it, if it reads it to six finite numbers."""
+    from svgelements import Matrix
+
+    try:
+        m = Matrix(text)
+    except (ValueError, IndexError, TypeError, ArithmeticError):
+        return None
+    values = (m.a, m.b, m.c, m.d, m.e, m.f)
+    if all(isinstance(v, float) and math.isfinite(v) for v in values):
+        return values
+    return None
+
+
+def _function(name: str, v: list[float]) -> tuple[float, ...] | None:
+    """One transform function's matrix, or None if it is not one SVG 1.1 has."""
+    n = len(v)
+    if name == "matrix" and n == 6:
+        return tuple(v)
+    if name == "translate" and n in (1, 2):
+        return (1.0, 0.0, 0.0, 1.0, v[0], v[1] if n == 2 else 0.0)
+    if name == "scale" and n in (1, 2):
+        return (v[0], 0.0, 0.0, v[1] if n == 2 else v[0], 0.0, 0.0)
+    if name == "rotate" and n in (1, 3):
+        a = math.radians(math.remainder(v[0], 360.0))
+        turn = (math.cos(a), math.sin(a), -math.sin(a), math.cos(a), 0.0, 0.0)
+        if n == 1:
+            return turn
+        return _times(_times((1.0, 0.0, 0.0, 1.0, v[1], v[2]), turn),
+                      (1.0, 0.0, 0.0, 1.0, -v[1], -v[2]))
+    if name in ("skewX", "skewY") and n == 1:
+        t = math.tan(math.radians(math.remainder(v[0], 180.0)))
+        return (1.0, 0.0, t, 1.0, 0.0, 0.0) if name == "skewX" else (1.0, t, 0.0, 1.0, 0.0,
+                                                                      0.0)
+    return None
+
+
+def _times(m: tuple[float, ...], n: tuple[float, ...]) -> tuple[float, ...]:
+    """The matrix ``m`` then ``n`` applied to a point first (SVG's ``m n``)."""
+    a, b, c, d, e, f = m
+    p, q, r, s, t, u = n
+    return (a * p + c * q, b * p + d * q, a * r + c * s, b * r + d * s, a * t + c * u + e,
+            b * t + d * u + f)
+
+
+def _length(text: str) -> tuple[float, str | None] | None:
+    """A length's number and unit, if it is one a drawing holds (finite, under
+    :data:`MAX_NUMBER`)."""
+    m = _LENGTH.fullmatch(text) if len(text) <= MAX_ATTRIBUTE else None
+    if m is None:
+        return None
+    value = float(m[1])
+    return (value, m[2]) if math.isfinite(value) and abs(value) <= MAX_NUMBER else None
+
+
+def _fault(text: str) -> str:
+    """What is wrong with a length :func:`_length` refuses."""
+    return "is not a length" if _LENGTH.fullmatch(text[:MAX_ATTRIBUTE + 1]) is None else \
+        "is beyond any drawing"
+
+
+def _huge_number(text: str) -> str | None:
+    """The first number in path data beyond :data:`MAX_NUMBER` (or not finite), if any."""
+    for m in _NUMBER.finditer(text):
+        if "e" in m[0].lower() or len(m[0]) > 12:
+            value = float(m[0])
+            if not (math.isfinite(value) and abs(value) <= MAX_NUMBER):
+                return m[0]
+    return None
+
+
+def _hidden(e: ET.Element) -> bool:
+    """Whether ``e`` is not drawn (display none, as an attribute or in its style)."""
+    if (e.get("display") or "").strip().lower() == "none":
+        return True
+    style = (e.get("style") or "")[:MAX_ATTRIBUTE * 10]
+    return re.search(r"(?:^|;)\s*display\s*:\s*none\s*(?:;|$)", style, re.IGNORECASE) \
+        is not None
+
+
+def _local(tag: str) -> str:
+    return tag.rsplit("}", 1)[-1] if isinstance(tag, str) else ""
+
+
+def _space(tag: str) -> str:
+    return tag[1:].split("}", 1)[0] if isinstance(tag, str) and tag.startswith("{") else ""
