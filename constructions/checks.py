@@ -311,24 +311,29 @@ def check(answer: Answer, expected: Expected, *, scale: float) -> Quantity:
                     answer.method, said=answer.said)
 
 
-def _vouched(answer: Answer, err: float, tol: float) -> float:
-    """``tol``, held to :data:`CEILING`.
+def _vouched(answer: Answer, err: float, own: float, rounding: float = 0.0) -> float:
+    """The check's tolerance: the construction's ``own``, held to :data:`CEILING`, and the
+    reference's ``rounding`` (a centre's, where two links turn at nearly one rate).
 
     Raises
     ------
     IllConditioned
         If the answer misses the reference by more than the ceiling but within what its
-        conditioning allows: the construction is too ill-conditioned to be vouched for.
+        conditioning allows (the construction cannot be vouched for), or the reference's
+        rounding is as wide as the quantity (no check could fail).
     """
-    if tol <= CEILING:
-        return tol
-    if CEILING < err <= tol:
-        raise IllConditioned(
-            f"{answer.ask.name} by {answer.method} misses the analytic value by {err:.1e} of "
-            f"its scale, within what its conditioning ({answer.conditioning:.1e}) allows",
-            name=answer.ask.name, method=answer.method, conditioning=answer.conditioning,
-            miss=err)
-    return CEILING
+    def refused(why: str, *, by_reference: bool = False) -> IllConditioned:
+        return IllConditioned(f"{answer.ask.name} by {answer.method} {why}", name=answer.ask.name,
+                              method=answer.method, conditioning=answer.conditioning, miss=err,
+                              by_reference=by_reference)
+
+    if own > CEILING and CEILING < err <= own + rounding:
+        raise refused(f"misses the analytic value by {err:.1e} of its scale, within what its "
+                      f"conditioning ({answer.conditioning:.1e}) allows")
+    if rounding >= 1.0:
+        raise refused("cannot be checked: the analytic reference is itself lost to rounding "
+                      "here", by_reference=True)
+    return min(own, CEILING) + rounding
 
 
 def _check_centre(answer: Answer, expected: Expected, size: float) -> Quantity:
@@ -344,7 +349,8 @@ def _check_centre(answer: Answer, expected: Expected, size: float) -> Quantity:
                         answer.conditioning, answer.method)
     # A direction is judged by angle alone, so its tolerance does not grow with distance;
     # the reference's own rounding (large when ω_i ≈ ω_j) is added to the tolerance.
-    tol = tolerance(1.0 if found.is_at_infinity else answer.conditioning) + expected.rounding
+    own = tolerance(1.0 if found.is_at_infinity else answer.conditioning)
     err = centre_error(found, expected.exact, size)
-    return Quantity(name, answer.value, expected.value, err, _vouched(answer, err, tol),
-                    answer.conditioning, answer.method)
+    return Quantity(name, answer.value, expected.value, err,
+                    _vouched(answer, err, own, expected.rounding), answer.conditioning,
+                    answer.method)

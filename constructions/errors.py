@@ -111,15 +111,17 @@ class IllConditioned(TarsimError):
 
     ``name`` is the quantity, ``method`` how it was drawn, ``conditioning`` the worst
     along its construction and ``miss`` how far it stands from the analytic value,
-    relative to the quantity's scale.
+    relative to the quantity's scale; ``by_reference`` when the analytic value itself is
+    what rounding has lost.
     """
 
     def __init__(self, message: str, *, name: str, method: str, conditioning: float,
-                 miss: float):
+                 miss: float, by_reference: bool = False):
         self.name = name
         self.method = method
         self.conditioning = conditioning
         self.miss = miss
+        self.by_reference = by_reference
         super().__init__(message)
 
 

@@ -200,10 +200,14 @@ class Work:
         if isinstance(ask, A.LengthRange):
             return max(grashof_class(m).lengths)
         if isinstance(ask, (A.JointForce, A.DrivingTorque, A.Effort)):
-            # Beside the largest joint force (times the mechanism's size, for a moment).
+            # Beside the largest joint force, or the loads it is made of if they are more
+            # (times the mechanism's size, for a moment).
             from .expected import _statics
+            from .reference.kinetostatics import load_scale
 
-            biggest = max(math.hypot(*j.force) for j in _statics(self).joints)
+            size = mechanism_size(self.kinematics)
+            biggest = max([math.hypot(*j.force) for j in _statics(self).joints]
+                          + [load_scale(m, size, self.loads)])
             moment = (isinstance(ask, A.DrivingTorque) or getattr(ask, "letter", "") == "T"
                       or getattr(ask, "word", "") == "turning_moment")
             return biggest * (mechanism_size(self.kinematics) if moment else 1.0)
@@ -271,10 +275,10 @@ def _left_out(work: Work, refused: list[tuple[Answer, IllConditioned]], found: l
         a method the exercise did not use, or another position.
     """
     for answer, e in refused:
-        why = _weakness(work.assembly, answer.refs or ())
+        why = (phrase("weak.reference") if e.by_reference
+               else _weakness(work.assembly, answer.refs or ()))
         said = phrase("note.unvouched", quantity=e.name, method=Word(method_words(e.method)),
-                      why=why, cond=Number(e.conditioning, ".1e"),
-                      other=Word(method_words(found[0].method)) if found else None)
+                      why=why, other=Word(method_words(found[0].method)) if found else None)
         if found:
             work.note(said)
             continue
@@ -284,13 +288,15 @@ def _left_out(work: Work, refused: list[tuple[Answer, IllConditioned]], found: l
                       and m.chosen_by and m.chosen_by[0] not in work.chosen
                       and m.name not in tried), None)
         d, units = work.mechanism.drive, work.mechanism.units
+        how = ("" if e.by_reference else
+               f" (conditioning {e.conditioning:.1e}), and it misses the analytic value by "
+               f"{e.miss:.1e} of its scale")
         raise IllConditioned(
             f"{e.name} by {method_words(e.method)} cannot be vouched for at "
-            f"θ{d.link} = {units.angle_brief(d.angle)}: "
-            f"{narrate(why)} (conditioning {e.conditioning:.1e}), and it misses the analytic "
-            f"value by {e.miss:.1e} of its scale; "
+            f"θ{d.link} = {units.angle_brief(d.angle)}: {narrate(why)}{how}; "
             + (f"add \"{offer}\" to [ask] methods" if offer else "ask it at another position"),
-            name=e.name, method=e.method, conditioning=e.conditioning, miss=e.miss)
+            name=e.name, method=e.method, conditioning=e.conditioning, miss=e.miss,
+            by_reference=e.by_reference)
 
 
 def _weakness(record, refs) -> Phrase:

@@ -14,6 +14,7 @@ from __future__ import annotations
 import math
 import random
 import tomllib
+from dataclasses import replace
 from pathlib import Path
 
 import pytest
@@ -21,8 +22,10 @@ from hypothesis import HealthCheck, Phase, assume, given, note, settings
 from hypothesis import strategies as st
 
 import tarsim
-from tarsim.constructions.checks import EPS
-from tarsim.constructions.errors import TarsimError
+from tarsim.constructions.asks import parse_ask
+from tarsim.constructions.checks import CEILING, EPS, Answer, _vouched
+from tarsim.constructions.errors import IllConditioned, TarsimError
+from tarsim.constructions.model import Link
 from tarsim.constructions.reference.centres import mechanism_size
 from tarsim.exercises import catalog
 
@@ -224,3 +227,62 @@ def test_a_mechanism_moved_far_from_the_origin_gives_the_same_answers(family, se
     except TarsimError:
         assume(False)
     assert_same_answers(near, far)
+
+
+# ----- a check that cannot fail is no check ---------------------------------------------------
+def far_deltoid():
+    """The reproducer's deltoid as the model it once was: its file's coordinates taken as
+    they stand, 1 km out, where the reader now works about the frame's first point."""
+    ex = tarsim.load(str(HERE / "wrong-deltoid-far-VB-passes.toml"))
+    data = tomllib.loads((HERE / "wrong-deltoid-far-VB-passes.toml").read_text("utf-8"))
+    mm = 1e-3
+    frame = Link(1, tuple((k, (x * mm, y * mm)) for k, (x, y) in data["frame"].items()), "frame")
+    far = replace(ex.mechanism, links=(frame, *ex.mechanism.links[1:]), origin=(0.0, 0.0),
+                  branches={"B": tuple(c * mm for c in data["assembly"]["B"])})
+    return replace(ex, mechanism=far)
+
+
+def test_a_construction_too_ill_conditioned_to_vouch_for_is_left_out():
+    # 1 km out, the parallel lines' direction is taken through two points 1e-20 of their
+    # distance from the origin apart (they once read V_B = 19.4695 mm/s "check ok"): the
+    # method is left out, said under the figures, and radius rotation, conditioned well
+    # enough, answers V_B = 0 (B stands on O2).
+    sol = tarsim.solve(far_deltoid()).positions[0]
+    q = sol.quantities["V_B"]
+    assert [q.method, *q.alternatives] == ["radius-rotation", "components"]
+    speed = 39.94336978890228 * 0.0938830469323322      # ω2 · O2A, m/s
+    for got in (q, *q.alternatives.values()):
+        assert got.passed and got.tolerance <= CEILING
+        assert got.value["value"] <= 1e-9 * speed
+    assert ("V_B by parallel lines is left out: it draws a line through two points all but "
+            "together, so it cannot be vouched for here; radius rotation gives it.") in sol.notes
+    assert not any(f.stem == "V_B-parallel-line" for a in sol.answers for f in a.figures)
+
+
+def test_a_construction_no_method_can_vouch_for_is_refused_offering_another():
+    ex = replace(far_deltoid(), methods=("parallel-line",))
+    with pytest.raises(IllConditioned) as caught:
+        tarsim.solve(ex)
+    line = str(caught.value)
+    assert line.startswith("V_B by parallel lines cannot be vouched for at θ2 = 337.725°: it "
+                           "draws a line through two points all but together (conditioning ")
+    assert line.endswith('of its scale; add "radius-rotation" to [ask] methods')
+    assert "\n" not in line and len(line) < 250
+
+
+@pytest.mark.parametrize("own, rounding, err, verdict", [
+    (1e-9, 0.0, 5e-10, 1e-9),             # a well-conditioned construction: its own tolerance
+    (1e-3, 0.0, 5e-10, CEILING),          # ill-conditioned but agreeing: held to the ceiling
+    (1e-3, 0.0, 5e-4, "construction"),    # ill-conditioned and off: no check could fail
+    (1e-3, 0.0, 5e-2, CEILING),           # off by more than even it allows: a failed check
+    (1e-9, 1e-4, 5e-5, 1e-9 + 1e-4),      # the reference's own rounding widens the check
+    (1e-9, 2.0, 5e-5, "reference"),       # a reference lost to rounding checks nothing
+])
+def test_a_checks_tolerance_never_exceeds_what_can_fail(own, rounding, err, verdict):
+    answer = Answer(parse_ask("V_B"), {"value": 1.0, "vector": [1.0, 0.0]}, 1e-12, "components")
+    if isinstance(verdict, float):
+        assert _vouched(answer, err, own, rounding) == pytest.approx(verdict, rel=1e-12)
+        return
+    with pytest.raises(IllConditioned) as caught:
+        _vouched(answer, err, own, rounding)
+    assert caught.value.by_reference == (verdict == "reference")

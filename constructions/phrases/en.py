@@ -30,8 +30,9 @@ PHRASES: dict[str, str] = {
     "note.alpha_not_given": "α{link} is not given, so it is taken as 0.",
     "note.ill_conditioned": "{centre} is ill-conditioned: conditioning {cond} along its "
                             "construction (its own two lines meet at {angle}°)",
-    "note.unvouched": "{quantity} by {method} is left out: {why} (conditioning {cond}), so "
-                      "it cannot be vouched for here; {other} gives it.",
+    "note.unvouched": "{quantity} by {method} is left out: {why}, so it cannot be vouched for "
+                      "here; {other} gives it.",
+    "weak.reference": "the analytic value itself is lost to rounding here",
     "weak.lines": "its two lines meet at {angle}°",
     "weak.arcs": "its two arcs all but touch",
     "weak.line_arc": "its line all but touches its arc",
