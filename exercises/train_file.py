@@ -15,10 +15,10 @@ from typing import Any
 
 from ..constructions.asks import symbol
 from ..constructions.errors import InputError
-from ..constructions.gears.involute import Involute
+from ..constructions.gears.involute import Involute, check_mesh
 from ..constructions.gears.train import Gear, GearTrain, Mesh, SpeedUnits
 from ..constructions.model import LENGTH_UNITS
-from .mechanism_file import SourceMap, read_source, read_toml
+from .mechanism_file import RANGE, SourceMap, _float, in_range, read_source, read_toml
 from .names import named_in, read_names
 
 __all__ = ["TrainExercise", "is_train", "load_train", "parse_train"]
@@ -59,8 +59,9 @@ class TrainExercise:
 
 
 def is_train(data: dict[str, Any]) -> bool:
-    """True for a file that lists gears (a gear train), not links."""
-    return "gear" in data
+    """True for a file that lists gears, meshes, shafts or an arm (a gear train), not links:
+    a train that lost its [[gear]] tables is told so, not read as a linkage."""
+    return any(k in data for k in ("gear", "mesh", "shaft", "arm", "involute"))
 
 
 def load_train(path: str | Path, exercise_id: str | None = None) -> TrainExercise:
@@ -138,6 +139,14 @@ class _Reader:
                 line = self.where.key("member", "input")
         return InputError(error.message, file=self.filename, line=line)
 
+    def known(self, t: dict[str, Any], keys: tuple[str, ...], table: str, index: int = 0
+              ) -> None:
+        """Refuse a setting ``table`` does not have (a misspelt key is never ignored)."""
+        for k in t:
+            if k not in keys:
+                raise self.fail(f"unknown {table} setting '{k}'; expected "
+                                f"{', '.join(keys)}", table, k, index)
+
     def text(self, key: str) -> str:
         v = self.data.get(key, "")
         if not isinstance(v, str):
@@ -147,7 +156,8 @@ class _Reader:
     def units(self) -> SpeedUnits:
         t = self.data.get("units", {})
         if not isinstance(t, dict):
-            raise self.fail("[units] must be a table", table="units")
+            raise self.fail("must be a table: [units] speed = \"rpm\"", table="units")
+        self.known(t, ("speed", "length"), "units")
         speed, length = t.get("speed", "rpm"), t.get("length", "mm")
         if speed not in _SPEEDS:
             raise self.fail(f"unknown speed unit '{speed}'; use rpm or rad/s", "units", "speed")
@@ -158,17 +168,16 @@ class _Reader:
 
     def integer(self, v: Any, what: str, table: str, key: str, index: int = 0) -> int:
         if isinstance(v, bool) or not isinstance(v, int) or v <= 0 or v > 100_000:
-            raise self.fail(f"{what} must be a whole number from 1 to 100000, got {v!r}",
+            raise self.fail(f"{what} must be a whole number from 1 to 100000, got {_shown(v)}",
                             table, key, index)
         return v
 
     def exact(self, v: Any, what: str, table: str, key: str, index: int = 0) -> Fraction:
         """A number as written: an integer, or a decimal taken at its digits."""
         if isinstance(v, bool) or not isinstance(v, (int, float)):
-            raise self.fail(f"{what} must be a number, got {v!r}", table, key, index)
-        if isinstance(v, float) and not (abs(v) < 1e30):
-            raise self.fail(f"{what} must be a finite number below 1e30, got {v!r}", table,
-                            key, index)
+            raise self.fail(f"{what} must be a number, got {_shown(v)}", table, key, index)
+        if not in_range(_float(v)):
+            raise self.fail(f"{what} must be {RANGE}, got {_shown(v)}", table, key, index)
         return Fraction(repr(v)) if isinstance(v, float) else Fraction(v)
 
     def gears(self, units: SpeedUnits) -> tuple[Gear, ...]:
@@ -219,13 +228,16 @@ class _Reader:
         if t is None:
             return None, "", 1
         if not isinstance(t, dict) or "number" not in t:
-            raise self.fail("[arm] needs its number, e.g. number = 3", "arm")
+            raise self.fail("the arm needs its number, e.g. number = 3", "arm")
+        self.known(t, ("number", "name", "planets"), "arm")
+        if not isinstance(t.get("name", ""), str):
+            raise self.fail("the arm's name must be text", "arm", "name")
         n = self.integer(t["number"], "the arm's number", "arm", "number")
         planets = self.integer(t.get("planets", 1), "the number of planets", "arm", "planets")
         gears = self.data.get("gear") or []
         if any(isinstance(g, dict) and g.get("number") == n for g in gears):
             raise self.fail(f"member {n} is both a gear and the arm", "arm", "number")
-        return n, str(t.get("name", "")), planets
+        return n, t.get("name", ""), planets
 
     def meshes(self) -> tuple[Mesh, ...]:
         out = []
@@ -234,6 +246,7 @@ class _Reader:
             if not (isinstance(pair, list) and len(pair) == 2 and all(
                     isinstance(g, int) and not isinstance(g, bool) for g in pair)):
                 raise self.fail("a mesh names its two gears, gears = [2, 4]", "mesh", "gears", i)
+            self.known(t, ("gears", "kind"), "mesh", i)
             kind = t.get("kind", "external")
             if kind not in ("external", "internal"):
                 raise self.fail(f"unknown mesh kind '{kind}'; use external or internal",
@@ -253,6 +266,9 @@ class _Reader:
                     isinstance(m, int) and not isinstance(m, bool) for m in members)):
                 raise self.fail("a shaft names the members that turn together, members = "
                                 "[3, 4]", "shaft", "members", i)
+            self.known(t, ("members",), "shaft", i)
+            if len(set(members)) < len(members):
+                raise self.fail("a shaft names a member twice", "shaft", "members", i)
             out.append(tuple(members))
         return tuple(out)
 
@@ -271,7 +287,7 @@ class _Reader:
     def input(self, units: SpeedUnits) -> tuple[int, Fraction]:
         t = self.data.get("input")
         if not isinstance(t, dict) or "member" not in t or "speed" not in t:
-            raise self.fail("[input] gives the driving member and its speed: member = 2, "
+            raise self.fail("give the driving member and its speed: member = 2, "
                             f"speed = 80 ({units.speed}), sense = \"cw\"", "input")
         member = self.integer(t["member"], "the input member", "input", "member")
         speed = self.exact(t["speed"], "the input speed", "input", "speed")
@@ -306,7 +322,7 @@ class _Reader:
         if t is None:
             return None
         if not isinstance(t, dict):
-            raise self.fail("[involute] must be a table", "involute")
+            raise self.fail("must be a table: [involute] gears = [2, 3]", "involute")
         for k in t:
             if k not in ("gears", "pressure_angle", "addendum", "dedendum", "centre_distance"):
                 raise self.fail(f"unknown involute setting '{k}'; expected gears, "
@@ -315,7 +331,7 @@ class _Reader:
         pair = t.get("gears")
         if not (isinstance(pair, list) and len(pair) == 2 and all(
                 isinstance(g, int) and not isinstance(g, bool) for g in pair)):
-            raise self.fail("[involute] names the meshing pair, driver first: gears = [2, 3]",
+            raise self.fail("name the meshing pair, driver first: gears = [2, 3]",
                             "involute", "gears")
         for n in pair:
             if n not in [g.number for g in train.gears]:
@@ -338,7 +354,13 @@ class _Reader:
             distance = float(self.exact(t["centre_distance"], "the centre distance",
                                         "involute", "centre_distance")) * LENGTH_UNITS[
                 train.units.length]
-        return Involute(pair[0], pair[1], angle, add, ded, distance)
+        mesh = Involute(pair[0], pair[1], angle, add, ded, distance)
+        try:
+            check_mesh(train, mesh)
+        except InputError as e:
+            raise self.fail(e.message, "involute", "centre_distance" if distance is not None
+                            and "centre distance" in e.message else "gears") from None
+        return mesh
 
     def asks(self, train: GearTrain, involute: Involute | None = None) -> tuple[str, ...]:
         t = self.data.get("ask")
@@ -346,8 +368,10 @@ class _Reader:
         if t is None:
             return every
         find = t.get("find") if isinstance(t, dict) else None
+        if isinstance(t, dict):
+            self.known(t, ("find",), "ask")
         if not (isinstance(find, list) and find and all(isinstance(q, str) for q in find)):
-            raise self.fail('[ask] needs find = [...], such as "omega4" or "omega5/omega2"',
+            raise self.fail('give find = [...], such as "omega4" or "omega5/omega2"',
                             "ask", "find")
         torques = tuple(f"torque{m}" for m in train.members)
         for q in find:
@@ -364,6 +388,13 @@ class _Reader:
                 raise self.fail(f"cannot find '{q}' for this train; ask {', '.join(every)}, a "
                                 f"ratio such as {every[-1]}/{every[0]}, or a torque "
                                 f"{torques[-1]}", "ask", "find")
+            if len(parts) == 2 and train.fixed is not None and int(
+                    parts[1].removeprefix("omega")) in train.body(train.fixed):
+                held = int(parts[1].removeprefix("omega"))
+                raise self.fail(f"{q} divides by the speed of member {held}, which is "
+                                + ("fixed" if held == train.fixed else
+                                   f"on one shaft with the fixed member {train.fixed}")
+                                + "; ask a ratio over a turning member", "ask", "find")
         loaded = {int(q.removeprefix("torque")) for q in find if q in torques}
         loaded -= {train.input_member, train.fixed}
         if len(loaded) > 1:
@@ -373,6 +404,14 @@ class _Reader:
             raise self.fail("the fixed member's holding torque needs the output's: ask the "
                             "output's torque too", "ask", "find")
         return tuple(find)
+
+
+def _shown(v: Any) -> str:
+    """A value the file gave, as a refusal quotes it: a long integer short (1e+07)."""
+    if isinstance(v, int) and not isinstance(v, bool) and abs(v) >= 1_000_000:
+        digits = str(abs(v))
+        return f"{'-' if v < 0 else ''}{digits[0]}.{digits[1:3]}e+{len(digits) - 1:02d}"
+    return repr(v)
 
 
 def ask_symbol(name: str) -> str:

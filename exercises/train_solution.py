@@ -14,8 +14,9 @@ from fractions import Fraction
 from functools import cached_property
 from typing import Any
 
+from ..constructions.errors import InputError
 from ..constructions.gears.involute import InvoluteMesh, draw_involute_mesh, least_teeth_drawn
-from ..constructions.gears.kutzbach import Kutzbach, draw_kutzbach
+from ..constructions.gears.kutzbach import Kutzbach, draw_kutzbach, undrawable
 from ..constructions.gears.tabular import TrainSpeeds, fraction_text, tabulate
 from ..constructions.gears.torques import balance, say_balance
 from ..constructions.narration import (narrate, numeral, numerals, phrase, significant, spoken,
@@ -43,20 +44,32 @@ class TrainQuantity:
     si: float
     method: str
     tolerance: float = 0.0
-    """0 for an exact quantity (a speed, a ratio, a count); a drawn length or angle agrees
-    within this, relative."""
+    """0 for an exact quantity (a speed, a ratio, a count); a drawn length, angle or ratio
+    agrees within this, in its own units: a few roundings of the drawing's size."""
+    matched: bool = True
+    """False when what the number counts differs (the interference's gears), though the
+    counts may agree."""
 
     @property
     def passed(self) -> bool:
         """True when the method's value is the reference's (within a drawing's rounding)."""
-        return self.rel_error <= self.tolerance
+        if not self.matched:
+            return False
+        if not self.tolerance:
+            return self.exact == self.reference
+        return abs(float(self.exact) - float(self.reference)) <= self.tolerance
 
     @property
     def rel_error(self) -> float:
-        """0 when the two are one; else how far apart, relative."""
+        """0 when the two are one; else how far apart, relative (1 for things counted that
+        differ)."""
+        if not self.matched:
+            return 1.0
         if self.exact == self.reference:
             return 0.0
-        return float(abs(self.exact - self.reference) / max(abs(self.reference), 1))
+        size = abs(self.reference) if self.tolerance and self.reference else max(
+            abs(self.reference), 1)
+        return float(abs(self.exact - self.reference) / size)
 
 
 @dataclass(frozen=True)
@@ -124,15 +137,24 @@ class TrainSolution(ChapterFiles):
                                  d.pressure_angle, d.addendum)), float(drawn),
                                  "involute mesh, drawn with fewer teeth until clear")
         if name == "interference":
+            # The gears that interfere, counted; compared as the gears themselves.
             a, b = Fraction(len(got.interference)), Fraction(len(ref.interference))
-            ok = got.interference == ref.interference
-            return TrainQuantity(name, a, a if ok else b + 1, float(a), "involute mesh")
+            return TrainQuantity(name, a, b, float(a), "involute mesh",
+                                 matched=got.interference == ref.interference)
         attr = {"contact_ratio": "contact_ratio", "path_of_contact": "path",
                 "arc_of_contact": "arc", "pressure_angle": "pressure_angle",
                 "circular_pitch": "circular_pitch"}[name]
         value, want = getattr(got, attr), getattr(ref, attr)
+        # Drawn on coordinates of the centre distance's size: a length is good to a few
+        # thousand roundings of it (the path is a difference of two such lengths), the
+        # contact ratio to that over the base pitch, the arc over cos φ′, an angle to that
+        # over the radii it is measured on.
+        size = _EPS * math.dist(*got.centres.values())
+        allowed = {"contact_ratio": size / got.base_pitch,
+                   "arc_of_contact": size / math.cos(got.pressure_angle),
+                   "pressure_angle": size / got.radii["base2"]}.get(name, size)
         return TrainQuantity(name, Fraction(value), Fraction(want), value, "involute mesh",
-                             1e-9)
+                             allowed)
 
     def _torques(self, speeds: dict[int, Fraction]) -> dict[int, Fraction]:
         return balance(self.train, speeds, self.output)
@@ -163,14 +185,23 @@ class TrainSolution(ChapterFiles):
 
     @property
     def diagram_misses(self) -> list[int]:
-        """The members whose ω the velocity diagram reads away from the table's (beyond a
-        drafting act's rounding, relative to the fastest member)."""
+        """The members whose ω the velocity diagram reads away from the table's: beyond the
+        roundings of the drawing (velocities of the fastest member's size, at radii up to
+        the largest), over the span of radii its line was read across."""
         if self.diagram is None:
             return []
         per = self.train.units.per_rad_s
+        k, c = self.diagram, self.diagram.construction
         scale = max(abs(float(v)) for v in self.found.speeds.values()) * per
-        return [m for m, w in self.diagram.omegas.items()
-                if abs(w - float(self.found.speeds[m]) * per) > 1e-9 * scale]
+        top = max(abs(c.output(p).xy[1]) for pair in k.through.values() for p in pair)
+        out = []
+        for body, (p, q) in k.through.items():
+            span = abs(c.output(q).xy[1] - c.output(p).xy[1]) or top
+            for m in body:
+                if abs(k.omegas[m] - float(self.found.speeds[m]) * per) > \
+                        _EPS * scale * top / span:
+                    out.append(m)
+        return out
 
     @property
     def failures(self) -> list[str]:
@@ -324,6 +355,11 @@ class TrainSolution(ChapterFiles):
 
 
 
+_EPS = 4096 * 2.0 ** -52
+"""The rounding a drawn length carries, relative to the drawing's size: a few thousand of
+a float's, for some dozens of drafting acts each rounding their coordinates."""
+
+
 def _plain(x: Fraction) -> str:
     """An exact value as results.json writes it: "-3/7", ASCII minus."""
     return fraction_text(x).replace("−", "-")
@@ -363,8 +399,9 @@ def solve_train(ex: TrainExercise) -> TrainSolution:
     """
     found = tabulate(ex.train)
     train = ex.train
-    drawable = found.table is not None and not any(
-        train.carried(m.a) and train.carried(m.b) for m in train.meshes)
+    reference = willis_speeds(train)
+    _refuse_still_ratios(ex, found.speeds, reference)
+    drawable = found.table is not None and undrawable(train) is None
     diagram = draw_kutzbach(train, found.speeds) if drawable else None
     mesh = ref = None
     if ex.involute is not None:
@@ -373,4 +410,25 @@ def solve_train(ex: TrainExercise) -> TrainSolution:
         a, b = train.gear(d.pinion), train.gear(d.wheel)
         ref = mesh_reference(float(a.module), (a.teeth, b.teeth), (a.number, b.number),
                              d.pressure_angle, d.addendum, d.centre_distance)
-    return TrainSolution(ex, found, willis_speeds(train), diagram, mesh, ref)
+    return TrainSolution(ex, found, reference, diagram, mesh, ref)
+
+
+def _refuse_still_ratios(ex: TrainExercise, *speeds: dict[int, Fraction]) -> None:
+    """Refuse a ratio asked over a member that stands still, though not fixed (a reverted
+    train whose tooth products are equal holds its output still), and a torque asked of
+    such a member as the output (it takes no power, so the balance gives none)."""
+    train = ex.train
+    for q in ex.asks:
+        parts = q.split("/")
+        if len(parts) == 2 and parts[1].startswith("omega"):
+            m = int(parts[1].removeprefix("omega"))
+            if any(s[m] == 0 for s in speeds):
+                raise InputError(f"{q} divides by the speed of {train.label(m)}, which stands "
+                                 "still in this train; ask a ratio over a turning member",
+                                 file=train.source or None)
+        if q.startswith("torque"):
+            m = int(q.removeprefix("torque"))
+            if m not in (train.input_member, train.fixed) and any(s[m] == 0 for s in speeds):
+                raise InputError(f"{q} is asked of {train.label(m)}, which stands still in "
+                                 "this train and takes no power: ask the torque of a turning "
+                                 "member", file=train.source or None)

@@ -44,13 +44,19 @@ def draw_kutzbach_figure(train: GearTrain, k: Kutzbach, title: str,
     fig.add(Path(((0.0, 0.0), (0.0, top)), "link"))
     placer.block_segment((0.0, 0.0), (0.0, top), 1.0)
     fig.add(Path(((left, 0.0), (right, 0.0)), "dimension"))
+    # Levels at one radius (a ring's pitch circle where the arm carries a planet) are one
+    # line, named "r₈ = R".
+    at: dict[float, list[str]] = {}
     for name in k.levels:
         y = points[f"kz:r:{name}"][1]
+        same = next((h for h in at if abs(h - y) < 1e-6), None)
+        at.setdefault(y if same is None else same, []).append(subscript(name))
+    for y in at:
         fig.add(Path(((left, y), (right, y)), "construction"))
         placer.block_segment((left, y), (right, y), 0.3)
-    for name in k.levels:
-        y = points[f"kz:r:{name}"][1]
-        placer.place(subscript(name), (left, y), prefer=3.1416, spread=0.3, gap=1.5, size=3.2)
+    for y, names in at.items():
+        placer.place(" = ".join(names), (left, y), prefer=3.1416, spread=0.3, gap=1.5,
+                     size=3.2)
     # Each member's line, from its lower point past its upper one.
     # Every line and dot first, then the names: a name must clear the lines drawn after
     # the one it names as well.
@@ -58,7 +64,10 @@ def draw_kutzbach_figure(train: GearTrain, k: Kutzbach, title: str,
     for body, ref in k.lines.items():
         if ref == "kz:radial":
             continue
-        ends = [paper(c.output(r)) for r in k.through[body]]
+        # From the lowest to the highest of its points: the two it was drawn through and
+        # those read off it later (a planet's pitch point beyond its centre).
+        ends = [paper(c.output(r)) for r in k.through[body]] + [
+            points[r] for r, step in c.steps.items() if ref in step.inputs and r in points]
         lo = max(ends, key=lambda p: p[1])
         hi = min(ends, key=lambda p: p[1])
         d = (hi[0] - lo[0], hi[1] - lo[1])

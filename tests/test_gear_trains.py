@@ -383,7 +383,8 @@ def test_a_small_pinion_interferes_as_the_formula_says():
                                               "module"]),
     ("pressure_angle = 20", "pressure_angle = 60", ["a pressure angle of 60° is not a gear's"]),
     ("pressure_angle = 20", "pressure_angle = 20\ncentre_distance = 250",
-     ["the centre distance 250 mm leaves no line of action"]),
+     ["gears 2 and 3 have no line of action: the centre distance 250 mm leaves their base "
+      "circles"]),
     ("gears = [2, 3]             # the driver first", "gears = [2, 5]",
      ["there is no gear 5"]),
 ])

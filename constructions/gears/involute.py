@@ -27,7 +27,8 @@ from ..narration import (Number, Phrase, Word, counted, drawn_angle, drawn_lengt
 from ..record import Construction, Kind, Panel, Ref
 from .train import GearTrain
 
-__all__ = ["Involute", "InvoluteMesh", "draw_involute_mesh", "mesh_of", "least_teeth_drawn"]
+__all__ = ["Involute", "InvoluteMesh", "check_mesh", "draw_involute_mesh", "mesh_of",
+           "least_teeth_drawn"]
 
 _DIVISIONS = 8
 """Equal arcs the base circle is divided into between S and where the profile reaches the
@@ -76,7 +77,21 @@ def draw_involute_mesh(train: GearTrain, data: Involute) -> InvoluteMesh:
     ------
     InputError
         If either gear gives no module, the two do not mesh externally in ``train``, or
-        the centre distance is too short for the base circles to have a crossing tangent.
+        they cannot mesh at the centre distance (see :func:`_check_distance`).
+    """
+    check_mesh(train, data)
+    p, w = train.gear(data.pinion), train.gear(data.wheel)
+    return mesh_of(float(p.module), (p.teeth, w.teeth), data, train.source)
+
+
+def check_mesh(train: GearTrain, data: Involute) -> None:
+    """Refuse a mesh that cannot be drawn: a gear with no module, a pair that does not mesh
+    externally in ``train``, or one that cannot mesh at its centre distance.
+
+    Raises
+    ------
+    InputError
+        Naming the gears, in one line.
     """
     p, w = train.gear(data.pinion), train.gear(data.wheel)
     if p.module is None or w.module is None:
@@ -85,7 +100,11 @@ def draw_involute_mesh(train: GearTrain, data: Involute) -> InvoluteMesh:
     if not any({m.a, m.b} == {p.number, w.number} and not m.internal for m in train.meshes):
         raise InputError(f"{p.label} and {w.label} do not mesh externally in this train",
                          file=train.source or None)
-    return mesh_of(float(p.module), (p.teeth, w.teeth), data, train.source)
+    m = float(p.module)
+    r2, r3 = m * p.teeth / 2, m * w.teeth / 2
+    cos = math.cos(math.radians(data.pressure_angle))
+    c = data.centre_distance if data.centre_distance is not None else r2 + r3
+    _check_distance(data, (r2, r3), (r2 * cos, r3 * cos), m, c, train.source)
 
 
 def mesh_of(module: float, teeth: tuple[float, float], data: Involute, source: str = "",
@@ -97,13 +116,52 @@ def mesh_of(module: float, teeth: tuple[float, float], data: Involute, source: s
     phi = math.radians(data.pressure_angle)
     rb2, rb3 = r2 * math.cos(phi), r3 * math.cos(phi)
     c = data.centre_distance if data.centre_distance is not None else r2 + r3
-    if not c > rb2 + rb3:
-        raise InputError(f"the centre distance {c * 1e3:g} mm leaves no line of action: the "
-                         f"base circles ({2 * rb2 * 1e3:g} and {2 * rb3 * 1e3:g} mm across) "
-                         "must stand apart", file=source or None)
+    _check_distance(data, (r2, r3), (rb2, rb3), m, c, source)
     out = InvoluteMesh(Construction())
     _Drafting(out, teeth, data, m, (r2, r3), (rb2, rb3), c).run(profiles)
     return out
+
+
+def _check_distance(data: Involute, pitch: tuple[float, float], base: tuple[float, float],
+                    m: float, c: float, source: str) -> None:
+    """Refuse a pair that cannot mesh at centre distance ``c``: a gear whose root circle
+    falls inside its centre, base circles that overlap (no line of action), tips that
+    strike the other gear's root circle, addendum circles that do not reach each other, or
+    that overlap off the line of action (a path of contact of no length)."""
+    (r2, r3), (rb2, rb3) = pitch, base
+    add, ded = data.addendum * m, data.dedendum * m
+    ra, rf = (r2 + add, r3 + add), (r2 - ded, r3 - ded)
+    numbers = (data.pinion, data.wheel)
+
+    def mm(x: float) -> str:
+        return f"{x * 1e3:.6g} mm"
+
+    def fail(message: str) -> InputError:
+        return InputError(f"gears {numbers[0]} and {numbers[1]} {message}; the pitch circles "
+                          f"need {mm(r2 + r3)}", file=source or None)
+
+    for k in (0, 1):
+        if rf[k] <= 0:
+            raise InputError(f"gear {numbers[k]} has too few teeth for its dedendum: its pitch "
+                             f"radius {mm(pitch[k])} is no more than the dedendum {mm(ded)}",
+                             file=source or None)
+    if not c > rb2 + rb3:
+        raise fail(f"have no line of action: the centre distance {mm(c)} leaves their base "
+                   f"circles ({mm(2 * rb2)} and {mm(2 * rb3)} across) overlapping")
+    for k in (0, 1):             # touching is clear; below a rounding of the sizes, a jam
+        if c < (ra[k] + rf[1 - k]) * (1 - 1e-12):
+            raise fail(f"jam: at a centre distance of {mm(c)} the tips of gear {numbers[k]} "
+                       f"strike the root circle of gear {numbers[1 - k]}, which needs "
+                       f"{mm(ra[k] + rf[1 - k])}")
+    if c >= ra[0] + ra[1]:
+        raise fail(f"do not touch: the centre distance is {mm(c)}, and their addendum circles "
+                   f"reach only {mm(ra[0] + ra[1])}")
+    # The line of action's length inside both addendum circles, as the path of contact.
+    reach = math.sqrt(ra[0] ** 2 - rb2 ** 2) + math.sqrt(ra[1] ** 2 - rb3 ** 2)
+    widest = math.hypot(rb2 + rb3, reach)
+    if c >= widest:
+        raise fail(f"overlap only off the line of action: at a centre distance of {mm(c)} "
+                   f"their teeth never touch; it must stay below {mm(widest)}")
 
 
 def least_teeth_drawn(module: float, ratio: float, data: Involute, most: int = 400) -> int:
@@ -198,7 +256,7 @@ class _Drafting:
                              ratio=Number(out.contact_ratio, ".4g"),
                              angle=drawn_angle(out.pressure_angle)))
         out.interference = tuple(
-            n for n, end, t in ((b, "A", "T2"), (a, "B", "T3"))
+            n for n, end, t in ((a, "B", "T3"), (b, "A", "T2"))
             if g.distance(self.c.output("P"), self.c.output(end))
             > g.distance(self.c.output("P"), self.c.output(t)) * (1 + 1e-12))
         for n, t, centre, rb, radius in ((a, "T2", "O2", rb2, r2 + add),

@@ -172,8 +172,8 @@ def _train_value(train: GearTrain, first: int, last: int,
     along the meshes between, the sign of the external ones; a gear that is driven and
     then drives (an idler) cancels."""
     drivers, driven, external = [], [], 0
-    m = last
-    while m != first:
+    m, start = last, train.body(first)
+    while m not in start:               # back to the input, or to a gear on its shaft
         prev, mesh = via[m]
         if mesh is not None:
             drivers.insert(0, prev)

@@ -20,14 +20,17 @@ __all__ = ["balance", "say_balance"]
 def balance(train: GearTrain, speeds: dict[int, Fraction], output: int | None
             ) -> dict[int, Fraction]:
     """The torques (N·m, CCW-positive) on the input, ``output`` and the fixed member; none
-    without an output or the input's torque or power."""
-    if output is None or (train.input_torque is None and train.input_power is None):
+    without the input's torque or power, the input's alone without an output (or with one
+    that stands still, which takes no power)."""
+    if train.input_torque is None and train.input_power is None:
         return {}
     w_in = speeds[train.input_member]
     if train.input_torque is not None:
         t_in = train.input_torque if w_in > 0 else -train.input_torque
     else:
         t_in = Fraction(float(train.input_power) / (float(w_in) * train.units.per_rad_s))
+    if output is None or speeds[output] == 0:
+        return {train.input_member: t_in}
     t_out = -t_in * w_in / speeds[output]
     found = {train.input_member: t_in, output: t_out}
     if train.fixed is not None:
@@ -39,7 +42,7 @@ def say_balance(train: GearTrain, speeds: dict[int, Fraction], output: int | Non
                 ) -> list[Phrase]:
     """The steps of :func:`balance`, with the numbers."""
     torques = balance(train, speeds, output)
-    if not torques:
+    if output not in torques:
         return []
     i, o, w = train.input_member, output, speeds
     given = (f"T{i} = {float(train.input_torque):g} N·m" if train.input_torque is not None

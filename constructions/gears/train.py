@@ -198,10 +198,15 @@ class GearTrain:
         InputError
             For a mesh between gears of different module, coaxial members at different
             centre distances, planets that do not fit round the sun or cannot be spaced
-            equally, a fixed member or input that is not a member, or a Grübler count
-            other than 1.
+            equally, a fixed member or input that is not a member, a planet fixed, or a
+            Grübler count other than 1.
         """
         numbers = [g.number for g in self.gears]
+        for shaft in self.shafts:
+            for m in shaft:
+                if m not in self.members:
+                    raise self._fail(f"a shaft names member {m}, which is not listed; the "
+                                     f"members are {', '.join(map(str, self.members))}")
         for m in (self.fixed, self.input_member):
             if m is not None and m not in self.members:
                 raise self._fail(f"there is no member {m}; the members are "
@@ -210,6 +215,10 @@ class GearTrain:
             if g.carrier is not None and g.carrier != self.arm:
                 raise self._fail(f"{g.label} is carried by member {g.carrier}, which is not "
                                  "the arm; name the arm in [arm]")
+        if self.fixed is not None and self.fixed != self.arm and self.carried(self.fixed):
+            raise self._fail(f"{self.label(self.fixed)} is carried round by the arm "
+                             f"{self.arm}: a planet cannot be fixed; fix the arm or a gear on "
+                             "the main axis")
         for mesh in self.meshes:
             for k in (mesh.a, mesh.b):
                 if k not in numbers:
@@ -220,6 +229,9 @@ class GearTrain:
                 raise self._fail(f"{a.label} (module {self._length(a.module)}) and "
                                  f"{b.label} (module {self._length(b.module)}) mesh but "
                                  "their modules differ")
+            if mesh.b in self.body(mesh.a):
+                raise self._fail(f"{a.label} and {b.label} turn together on one shaft, so "
+                                 "they cannot mesh; take one off the shaft or the mesh")
             if mesh.internal and a.teeth == b.teeth:
                 raise self._fail(f"{a.label} and {b.label} mesh internally but have the same "
                                  f"{a.teeth} teeth: a ring has more than the gear inside it")

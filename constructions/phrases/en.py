@@ -158,6 +158,17 @@ PHRASES: dict[str, str] = {
                        "{known} crosses that level.",
     "kutzbach.read": "Read ω{member} = Δv/Δr, the slope of its line: {omega} rad/s{sense}, "
                      "{speed}.",
+    "kutzbach.input_planet": "{member} turns {omega} rad/s {sense} about {pitch}, its pitch "
+                             "point with the fixed member, at rest: at {name} lay off its "
+                             "centre {point}'s velocity ω·({name} − {level}) across the level, "
+                             "at the velocity scale.",
+    "kutzbach.trial": "No line follows from the input's alone: drawn first for {member} at a "
+                      "trial {trial} rad/s {trial_sense}, the diagram gives {drive} "
+                      "{read} rad/s {read_sense}. It turns {given} rad/s, and every velocity "
+                      "scales alike, so {member} turns {omega} rad/s {sense}.",
+    "kutzbach.planet_centre": "the centre of planet {member}",
+    "kutzbach.centre_at": "The centre {point} of the planet {member}, at {name}, moves with the "
+                          "arm: it is where the line of {known} crosses that level.",
     "involute.centres": "Mark the centres O{a} and O{b}, {distance} apart, and join them: the "
                         "line of centres.",
     "involute.pitch_point": "By the law of gearing the pitch point P divides O{a}O{b} as the "

@@ -292,6 +292,18 @@ PHRASES: dict[str, str] = {
     "kutzbach.centre": "مرکز چرخدنده‌های سیاره‌ای، در R، همراه بازو حرکت می‌کند: سرعت آن در محل "
                        "برخورد خط {known} با همان تراز به دست می‌آید.",
     "kutzbach.read": "ω{member} = Δv/Δr، یعنی شیب خط آن را بخوانید: {omega} rad/s{sense}، {speed}.",
+    "kutzbach.input_planet": "{member} با سرعت زاویه‌ای {omega} rad/s {sense} حول {pitch} "
+                             "می‌چرخد، یعنی نقطهٔ گام آن با عضو ثابت که ساکن است: در {name} "
+                             "سرعت مرکز آن {point}، یعنی ω·({name} − {level})، را با مقیاس "
+                             "سرعت روی خط تراز جدا کنید.",
+    "kutzbach.trial": "از خط ورودی به‌تنهایی خط دیگری به دست نمی‌آید: نمودار نخست برای {member} "
+                      "با سرعت آزمایشی {trial} rad/s {trial_sense} رسم می‌شود و سرعت {drive} "
+                      "را {read} rad/s {read_sense} می‌دهد. سرعت واقعی آن {given} rad/s است و "
+                      "همهٔ سرعت‌ها به یک نسبت تغییر می‌کنند، پس {member} با سرعت {omega} rad/s "
+                      "{sense} می‌چرخد.",
+    "kutzbach.planet_centre": "مرکز چرخ سیاره‌ای {member}",
+    "kutzbach.centre_at": "مرکز {point} چرخ سیاره‌ای {member}، در {name}، همراه بازو حرکت "
+                          "می‌کند: سرعت آن در محل برخورد خط {known} با همان تراز به دست می‌آید.",
     "involute.centres": "مراکز O{a} و O{b} را به فاصلهٔ {distance} از یکدیگر مشخص کنید و آن‌ها "
                         "را به هم وصل کنید: این خط، خط‌المرکزین است.",
     "involute.pitch_point": "طبق قانون اساسی درگیری چرخدنده‌ها، نقطهٔ گام P پاره‌خط O{a}O{b} را "

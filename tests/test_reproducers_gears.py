@@ -1,0 +1,97 @@
+"""Gear-train inputs that once failed, each held to the answer it should have given.
+
+Every file in ``tests/reproducers/`` named here once gave a traceback or a failed check.
+The speeds asserted are worked by hand from the tooth numbers (Willis' formula, or the
+train value of driver over driven teeth), the mesh's bounds from its circles' radii,
+never copied from what tarsim printed. A file that cannot be solved gives one line
+naming the file, its line and what to fix, exits 1 and writes nothing.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from fractions import Fraction as F
+from pathlib import Path
+
+import pytest
+from click.testing import CliRunner
+
+import tarsim
+from tarsim.exercises.cli import cli
+
+HERE = Path(__file__).parent / "reproducers"
+
+
+def path(name: str) -> str:
+    return str(HERE / f"{name}.toml")
+
+
+def line_of(name: str, text: str) -> int:
+    """The line of the file ``name`` that starts with ``text``."""
+    lines = Path(path(name)).read_text(encoding="utf-8").splitlines()
+    return next(k for k, t in enumerate(lines, 1) if t.startswith(text))
+
+
+def refused(name: str, tmp_path: Path) -> str:
+    """Solve ``name`` on the command line; it must be refused with exit 1, writing nothing."""
+    out = tmp_path / "out"
+    result = CliRunner().invoke(cli, ["solve", path(name), "-o", str(out), "--no-pdf"])
+    assert result.exit_code == 1, result.output
+    assert result.exception is None or isinstance(result.exception, SystemExit)
+    assert not out.exists()
+    return result.output
+
+
+def test_crash_gear_ratio_over_fixed(tmp_path):
+    # ω4/ω1 with the ring 1 fixed divides by 0: refused at the ask's line.
+    name = "crash-gear-ratio-over-fixed"
+    assert refused(name, tmp_path) == (
+        f"Error: {path(name)}:{line_of(name, 'find')}: [ask.find] omega4/omega1 divides by the "
+        "speed of member 1, which is fixed; ask a ratio over a turning member\n")
+
+
+def test_crash_gear_keyerror_arm_fixed(tmp_path):
+    """The arm 6 fixed makes Q3 an ordinary compound train: the planet 3 (60 teeth) drives
+    at 100 rpm ccw; 4 (40) on its shaft turns alike; the sun 2 (40) meshes 3 and the
+    sun 5 (60) meshes 4, each externally: ω2 = −100·60/40, ω5 = −100·40/60."""
+    s = tarsim.solve(tarsim.load(path("crash-gear-keyerror-arm-fixed")))
+    assert s.passed and s.found.table is None
+    assert s.found.speeds == {2: F(-150), 3: F(100), 4: F(100), 5: F(-200, 3), 6: F(0)}
+    assert s.reference == s.found.speeds
+    assert "The train value e = ω5/ω3 = (N4)/(N5) = (40)/(60) = −2/3" in s.steps()
+    out = tmp_path / "out"
+    result = CliRunner().invoke(cli, ["solve", path("crash-gear-keyerror-arm-fixed"), "-o",
+                                      str(out), "--no-pdf"])
+    assert result.exit_code == 0, result.output
+    q = json.loads((out / "results.json").read_text(encoding="utf-8"))["quantities"]["omega5"]
+    assert (q["exact"], q["reference"]["exact"]) == ("-200/3", "-200/3")
+
+
+def test_check3_gear_kutzbach_planet_input(tmp_path):
+    """Q1 driven by its planet 4 (40 teeth) at 80 rpm cw, the ring 1 (140) fixed, the sun 2
+    (60). Willis about the arm 3: (ω4 − ω3)/(0 − ω3) = N1/N4 = 7/2, so ω3 = −80/(1 − 7/2)
+    = 32; (ω2 − ω3)/(ω4 − ω3) = −N4/N2 = −2/3, so ω2 = 32 + 2/3·112 = 320/3."""
+    s = tarsim.solve(tarsim.load(path("check3-gear-kutzbach-planet-input")))
+    want = {1: F(0), 2: F(320, 3), 3: F(32), 4: F(-80)}
+    assert s.found.speeds == s.reference == want
+    per = 2 * math.pi / 60
+    for m, w in want.items():
+        # slopes of drawn lines: a few roundings of coordinates of the fastest's size
+        assert s.diagram.omegas[m] == pytest.approx(float(w) * per, abs=1e-12 * 320 / 3 * per)
+    # the planet's line runs through its pitch point with the fixed ring (at rest) and C
+    assert s.diagram.through[(4,)] == ("kz:pitch:1-4", "kz:centre")
+    assert s.passed
+    result = CliRunner().invoke(cli, ["solve", path("check3-gear-kutzbach-planet-input"),
+                                      "-o", str(tmp_path / "out"), "--no-pdf"])
+    assert result.exit_code == 0, result.output
+
+
+def test_check3_gear_pulled_apart(tmp_path):
+    """Module 10, 20 and 40 teeth: addendum radii 110 and 210 mm reach 320 mm together, the
+    pitch circles 100 + 200 = 300 mm; the file puts the centres 500 mm apart."""
+    name = "check3-gear-pulled-apart"
+    assert refused(name, tmp_path) == (
+        f"Error: {path(name)}:{line_of(name, 'centre_distance')}: [involute.centre_distance] "
+        "gears 2 and 3 do not touch: the centre distance is 500 mm, and their addendum "
+        "circles reach only 320 mm; the pitch circles need 300 mm\n")
