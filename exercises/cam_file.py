@@ -134,6 +134,9 @@ def parse_cam(text: str, filename: str = "<string>", exercise_id: str = "cam") -
                 raise fail(f"a segment is divided into 2 to 24 equal parts, not {parts!r}",
                            "segment", "divisions", i)
             divisions = parts
+            if law == "parabolic" and parts % 2:
+                raise fail(f"a parabolic segment is divided into an even number of parts (the "
+                           f"two halves alike), not {parts}", "segment", "divisions", i)
             if modified:
                 blend = number(t, "blend", "segment", "the blend", i) if "blend" in t else BLEND
                 if not (0 < blend <= 0.5 and abs(blend * parts - round(blend * parts)) < 1e-9

@@ -24,7 +24,7 @@ from tests.random_cams import extremes
 
 HERE = Path(__file__).parent / "reproducers"
 
-REFUSAL = ("Error: the roller (radius {r}) undercuts the cam in segment {k} at θ = {theta}, "
+REFUSAL = ("the roller (radius {r}) undercuts the cam in segment {k} at θ = {theta}, "
            "where the pitch curve's radius is {rho}; use a smaller roller, a larger base "
            "circle or a gentler segment, or --allow-undercut to draw it marked\n")
 
@@ -58,6 +58,12 @@ def solve(name: str, *args: str, tmp_path: Path):
     return result, out
 
 
+def error_line(output: str, path: Path) -> str:
+    """The CLI's one error line, less its "Error: " and the file it may be led by."""
+    assert output.startswith("Error: ") and output.count("\n") == 1, output
+    return output.removeprefix("Error: ").removeprefix(f"{path}: ")
+
+
 # ----- a short steep segment between the samples ---------------------------------------------
 def test_wrong_cam_undercut_missed(tmp_path):
     """A 13.44 mm simple-harmonic return over 0.234°, after 359.766° of other motion: at its
@@ -69,8 +75,8 @@ def test_wrong_cam_undercut_missed(tmp_path):
     start = 142.17 + 172.147 + 45.449
     result, out = solve("wrong-cam-undercut-missed", tmp_path=tmp_path)
     assert result.exit_code == 1
-    assert result.output == REFUSAL.format(r="15.66 mm", k=4, theta=f"{start:.2f}°",
-                                           rho=f"{rho:.4g} mm")
+    assert error_line(result.output, HERE / "wrong-cam-undercut-missed.toml") == REFUSAL.format(
+        r="15.66 mm", k=4, theta=f"{start:.2f}°", rho=f"{rho:.4g} mm")
     assert not out.exists()
 
     result, out = solve("wrong-cam-undercut-missed", "--allow-undercut", tmp_path=tmp_path)
@@ -107,8 +113,8 @@ def test_wrong_cam_undercut_missed_2(tmp_path):
     rho = shm_peak_radius(41.543024959289404, r, h, beta)
     result, out = solve("wrong-cam-undercut-missed-2", tmp_path=tmp_path)
     assert result.exit_code == 1
-    assert result.output == REFUSAL.format(r="2.425 mm", k=1, theta="1.36°",
-                                           rho=f"{rho:.4g} mm")
+    assert error_line(result.output, HERE / "wrong-cam-undercut-missed-2.toml") == REFUSAL.format(
+        r="2.425 mm", k=1, theta="1.36°", rho=f"{rho:.4g} mm")
     assert not out.exists()
     s = solve_cam(tarsim.load(str(HERE / "wrong-cam-undercut-missed-2.toml")),
                   allow_undercut=True)
@@ -168,9 +174,9 @@ def test_a_lift_lost_in_the_rounding_of_a_large_cam_is_refused(tmp_path):
     result = CliRunner().invoke(cli, ["solve", str(path), "-o", str(tmp_path / "out"),
                                       "--no-pdf"])
     assert result.exit_code == 1
-    line = result.output
-    assert line.count("\n") == 1 and len(line) < 200
-    assert line.startswith("Error: segment 5 (return of 2e-06 m over 100.3°) is too small "
+    line = error_line(result.output, path)
+    assert len(line) < 200
+    assert line.startswith("segment 5 (return of 2e-06 m over 100.3°) is too small "
                            "beside the rest of the cam to draw: rounding could move its "
                            "points ")
     moved = float(line.split("its points ")[1].split(" m;")[0])

@@ -152,15 +152,20 @@ def survey(layout: Layout, base_radius: float, segments, sigma: float,
         want = station(segments, base_radius, f, sigma, p.theta)
         out.places.append(want)
         trace = c.output(p.trace)
-        # The closed form's own rounding: a few of the cam's size, its roller's radius.
-        own = 16 * EPS * (size + math.hypot(*want.pitch))
-        tol = AGREE * (reach[p.trace].error + (lifts or {}).get(p.source, 0.0) + own)
-        miss = math.dist(trace.xy, want.pitch)
+        lift = (lifts or {}).get(p.source, 0.0)
+        # The closed form's own rounding: a few of the cam's size and of the point's reach.
+        tol = AGREE * (reach[p.trace].error + lift + 16 * EPS * (size + math.hypot(*want.pitch)))
+        checks = [(math.dist(trace.xy, want.pitch), tol)]
         if f.kind == "roller":
-            miss = max(miss, abs(math.dist(trace.xy, want.profile) - f.radius))
+            checks.append((abs(math.dist(trace.xy, want.profile) - f.radius), tol))
         elif f.kind == "flat-faced":
-            line = c.output(p.follower)
-            miss = max(miss, abs(line.signed_distance(g.Point(*want.profile))))
+            # The touch runs σy′ along the face, far on a steep segment: the face's turn
+            # carries its rounding out there.
+            far = AGREE * (reach[p.follower].near(want.profile) + lift
+                           + 16 * EPS * (size + math.hypot(*want.profile)))
+            checks.append((abs(c.output(p.follower).signed_distance(g.Point(*want.profile))),
+                           far))
+        miss, tol = max(checks, key=lambda mt: mt[0] / mt[1])
         if not tol < size:
             raise IllConditioned(
                 f"station {p.number} (θ = {math.degrees(p.theta):.4g}°) of the layout: its "
