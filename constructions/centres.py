@@ -286,11 +286,14 @@ class _Kennedy:
                     continue
                 names = ", ".join(pair_label(*p) for p in todo)
                 together = self.coincident(todo[0])
-                why = (f": {'; '.join(together)} at this position, so the lines through them "
-                       "are not fixed (is a link of next to no length beside the others?)"
+                why = (f": {together[0]} at this position, so the lines through them are not "
+                       "fixed (is a link of next to no length beside the others?)"
                        if together else ": no two distinct lines are known for them (check "
                        "the mechanism's joints)")
-                raise TarsimError(f"Kennedy's theorem cannot reach {names}{why}")
+                error = TarsimError(f"Kennedy's theorem cannot reach {names}{why}")
+                if len(together) > 1:
+                    error.detail = "; ".join(together)
+                raise error
 
     def coincident(self, pair: tuple[int, int]) -> list[str]:
         """The triangles of ``pair`` whose two known centres coincide, each as "I12 and I23 of

@@ -27,7 +27,19 @@ _POSITION = re.compile(r"θ\d+ = |\bt = ")
 
 
 class TarsimError(Exception):
-    """Root of every error tarsim raises on purpose; the CLI catches only this."""
+    """Root of every error tarsim raises on purpose; the CLI catches only this.
+
+    Its line is short; ``detail`` is the longer story behind it (the error it arose from),
+    which ``tarsim --verbose`` prints on a second line.
+    """
+
+    detail: str = ""
+
+    def because(self, cause: Exception) -> TarsimError:
+        """The same error, with ``cause``'s line (and its own story) as its detail."""
+        inner = getattr(cause, "detail", "")
+        self.detail = f"{cause}" + (f" ({inner})" if inner else "")
+        return self
 
     def at(self, where: str) -> TarsimError:
         """The same error, said to have happened at ``where`` (one of an exercise's
@@ -35,6 +47,12 @@ class TarsimError(Exception):
         that already names the place, or a position of its own, is left as it is)."""
         if where not in str(self) and not _POSITION.search(str(self)):
             self.args = (f"at {where}: {self}",)
+        return self
+
+    def in_file(self, path: str) -> TarsimError:
+        """The same error, led by the file it concerns as a whole (``path: …``)."""
+        if path not in str(self):
+            self.args = (f"{path}: {self}",)
         return self
 
 
@@ -50,6 +68,13 @@ class InputError(TarsimError):
         self.column = column
         self.key = key
         super().__init__(str(self))
+
+    def in_file(self, path: str) -> InputError:
+        """As :meth:`TarsimError.in_file`, where no file is named yet."""
+        if self.file is None:
+            self.file = path
+            self.args = (str(self),)
+        return self
 
     def at(self, where: str) -> InputError:
         """As :meth:`TarsimError.at`; the file and line still lead the line."""

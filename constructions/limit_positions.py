@@ -423,11 +423,8 @@ LIMITS = FigureSpec("limits", "Limit positions", "limit positions", kind="limits
 """The figure of both limit positions: the crank's angles and the stroke."""
 
 WHY_NOT = {
-    A.TimeRatio: "the limit positions are drawn where the crank drives a rod to a block on a "
-                 "frame guide (slider-crank), a rod to a rocker (crank-rocker) or a block in the "
-                 "slot of a lever through its pivot, the crank shorter than the distance between "
-                 "the pivots (slotted lever), and this crank drives none of these (an input "
-                 "wheel rolling on the frame is no crank: it never comes back)",
+    A.TimeRatio: "its crank drives no slider-crank, crank-rocker or slotted lever (a wheel "
+                 "rolling on the frame is no crank), so it has no limit positions to draw",
     A.Stroke: "the stroke is measured on a block that slides on a frame guide, driven through "
               "the limit positions, and this mechanism has none",
 }

@@ -207,7 +207,7 @@ class Work:
 
             size = mechanism_size(self.kinematics)
             biggest = max([math.hypot(*j.force) for j in _statics(self).joints]
-                          + [load_scale(m, size, self.loads)])
+                          + [load_scale(m, self.kinematics, self.loads, size)])
             moment = (isinstance(ask, A.DrivingTorque) or getattr(ask, "letter", "") == "T"
                       or getattr(ask, "word", "") == "turning_moment")
             return biggest * (mechanism_size(self.kinematics) if moment else 1.0)
@@ -291,10 +291,14 @@ def _left_out(work: Work, refused: list[tuple[Answer, IllConditioned]], found: l
         how = ("" if e.by_reference else
                f" (conditioning {e.conditioning:.1e}), and it misses the analytic value by "
                f"{e.miss:.1e} of its scale")
+        whole = ask.scope == "mechanism"      # drawn the same from any position
+        where = ("on this mechanism" if whole else
+                 f"at θ{d.link} = {units.angle_brief(d.angle)}")
+        then = (f"add \"{offer}\" to [ask] methods" if offer else
+                "it is not given" if whole else "ask it at another position")
         raise IllConditioned(
-            f"{e.name} by {method_words(e.method)} cannot be vouched for at "
-            f"θ{d.link} = {units.angle_brief(d.angle)}: {narrate(why)}{how}; "
-            + (f"add \"{offer}\" to [ask] methods" if offer else "ask it at another position"),
+            f"{e.name} by {method_words(e.method)} cannot be vouched for {where}: "
+            f"{narrate(why)}{how}; {then}",
             name=e.name, method=e.method, conditioning=e.conditioning, miss=e.miss,
             by_reference=e.by_reference)
 

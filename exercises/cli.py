@@ -43,13 +43,19 @@ def _fails_cleanly(fn):
             return fn(*args, **kwargs)
         except CheckMismatch as e:
             raise _CheckFailed(str(e)) from None
-        except (AssemblyError, GeometryError, IllConditioned) as e:
-            raise click.ClickException(_placed(e, kwargs.get("source"))) from None
         except TarsimError as e:
-            solving = type(e) is TarsimError     # not input, nor output (a RenderError)
-            raise click.ClickException(_placed(e, kwargs.get("source")) if solving
-                                       else str(e)) from None
+            solving = (isinstance(e, (AssemblyError, GeometryError, IllConditioned))
+                       or type(e) is TarsimError)     # not input, nor output (a RenderError)
+            line = _placed(e, kwargs.get("source")) if solving else str(e)
+            raise click.ClickException(line + _told(e)) from None
     return wrapper
+
+
+def _told(error: TarsimError) -> str:
+    """The story behind ``error``, on a line of its own, when ``--verbose`` asks for it."""
+    ctx = click.get_current_context(silent=True)
+    verbose = ctx is not None and ctx.find_root().params.get("verbose")
+    return f"\n  {error.detail}" if verbose and error.detail else ""
 
 
 def _placed(error: TarsimError, source: str | None) -> str:
@@ -63,6 +69,8 @@ def _placed(error: TarsimError, source: str | None) -> str:
     try:
         path = resolve(source)
     except TarsimError:
+        return str(error)
+    if str(path) in str(error):             # it names the file itself
         return str(error)
     line = line_of(error, path) if isinstance(error, AssemblyError) else None
     return f"{source}:{line}: {error}" if line else f"{source}: {error}"
@@ -148,7 +156,9 @@ _angle = click.option("--angle", type=float, default=None, metavar="ANGLE",
 
 @click.group(context_settings={"help_option_names": ["-h", "--help"]})
 @click.version_option(package_name="tarsim")
-def cli():
+@click.option("-v", "--verbose", is_flag=True,
+              help="After an error's line, say the story behind it (the error it arose from).")
+def cli(verbose):
     """Graphical kinematics of planar mechanisms, drawn as textbook figures.
 
     FILE is a mechanism or gear-train file (TOML, see the README) or the id
@@ -158,6 +168,7 @@ def cli():
     Example:
       tarsim draw four-bar -o four-bar.svg
       tarsim check crank-shaper --angle -44.072
+      tarsim --verbose solve my-linkage.toml
     """
 
 

@@ -98,8 +98,13 @@ def solve_overall(ex: Exercise) -> Overall:
     """
     if not ex.mechanism_asks:
         return Overall()
-    work = _work(ex, ex.mechanism_asks)
-    quantities, answers = answer_all(work, METHODS)
+    try:
+        work = _work(ex, ex.mechanism_asks)
+        quantities, answers = answer_all(work, METHODS)
+    except TarsimError as e:
+        if not ex.mechanism.source:
+            raise
+        raise e.in_file(ex.mechanism.source) from None     # of no one position: the file's
     return Overall(work, quantities, answers)
 
 

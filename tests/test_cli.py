@@ -12,6 +12,7 @@ import re
 import shutil
 import subprocess
 import sys
+from pathlib import Path
 
 import pytest
 from click.testing import CliRunner
@@ -350,3 +351,18 @@ def test_an_assembly_error_names_its_file_and_line(tmp_path, edit, line, message
     result = run("solve", path, "-o", tmp_path / "out", "--no-pdf")
     text = assert_one_line_error(result)
     assert text.startswith(f"Error: {path}:{line}: {message}")
+
+
+def test_verbose_says_the_error_an_error_arose_from(tmp_path):
+    # O2A = 100 and O2O4 = 50 keep A at least 50 mm from O4, beyond AB + O4B = 20 mm: the
+    # mobility is refused in one line, and --verbose tells why on a second, from the first
+    # angle tried (θ2 = 0°, where A and O4 are 100 − 50 = 50 mm apart).
+    path = Path(__file__).parent / "data" / "edge" / "assembles-nowhere.toml"
+    line = (f"Error: {path}: the mechanism assembles at none of 12 input angles spread over a "
+            "turn of link 2, so it has no mobility to count\n")
+    assert assert_one_line_error(run("solve", path, "-o", tmp_path / "s")) == line
+    told = run("--verbose", "solve", path, "-o", tmp_path / "s")
+    assert told.exit_code == 1 and not (tmp_path / "s").exists()
+    assert told.stderr == line + ("  link 3 with AB = 10 mm and link 4 with O4B = 10 mm cannot "
+                                  "reach B: A and O4 are 50 mm apart (short by 30 mm) at "
+                                  "input angle 0°\n")

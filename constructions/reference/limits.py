@@ -61,9 +61,10 @@ def limit_reference(mech: Mechanism, *, point: str | None = None,
     mech = mech.with_drive(Drive(d.link, d.angle, sense, 0.0))
 
     def refused(theta: float, e: AssemblyError) -> InputError:
-        return InputError(f"the crank cannot turn fully (at θ{d.link} = "
-                          f"{mech.units.angle_brief(theta)}: {e}), so it has no limit "
-                          "positions to pass")
+        stops = "stands at a dead point" if isinstance(e, SingularPosition) else "cannot assemble"
+        return InputError(f"the crank cannot turn fully, so it has no limit positions to pass: at "
+                          f"θ{d.link} = {mech.units.angle_brief(theta)} the mechanism {stops}"
+                          ).because(e)
 
     def state(theta: float) -> tuple[float, float]:
         """(output velocity, block position along its guide) at crank angle ``theta``."""

@@ -72,6 +72,6 @@ def mobility_of(mech: Mechanism) -> Mobility:
             continue
     if not found:
         raise AssemblyError(f"the mechanism assembles at none of {TURNS} input angles spread over "
-                            f"a turn, so it has no mobility to count; at the first: {why}",
-                            link=d.link)
+                            f"a turn of link {d.link}, so it has no mobility to count",
+                            link=d.link).because(why)
     return Mobility(min(found.values()), found.get(0, min(found.values())))
