@@ -163,10 +163,13 @@ def _span(lo: float, hi: float, have: tuple[float, float] | None) -> tuple[float
     has, or else the start of what is asked, kept)."""
     a, b = lo - _GROW, hi + _GROW
     if have is not None:
+        # Rounded out to whole cells, a raster may already stand a cell past _MOST: it is
+        # never cut down, or it would not drop into the new one.
+        most = max(_MOST, have[1] - have[0])
         a, b = min(a, have[0]), max(b, have[1])
-        if b - a > _MOST:
-            a = max(a, have[1] - _MOST)
-            b = min(b, a + _MOST)
+        if b - a > most:
+            a = max(a, have[1] - most)
+            b = min(b, a + most)
     elif b - a > _MOST:
         b = a + _MOST
     return CELL * math.floor(a / CELL), CELL * math.ceil(b / CELL)

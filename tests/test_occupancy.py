@@ -82,6 +82,19 @@ def test_ink_far_off_the_page_does_not_grow_the_raster_past_its_most():
     assert near == 4.0 and far == 0.0                       # the far one is not kept
 
 
+def test_a_raster_grown_to_its_most_keeps_what_it_holds_when_asked_for_more():
+    # Ink wider than the most a raster holds grows it to its most, which, rounded out to
+    # whole cells, stands a cell past it; the same ink asked for again (a micro-mechanism's
+    # page, drawn at 10⁷ : 1) once cut the raster down, and the old grid could not drop in.
+    wide = box(-493.26, -542.61, 542.61, 493.26)
+    occ = Occupancy()
+    occ.paint(wide, 1.0)
+    first = occ.ink(np.array([[0.0, 0.0]]), (1.0, 1.0))[0, 0]
+    occ.paint(wide, 1.0)
+    again = occ.ink(np.array([[0.0, 0.0]]), (1.0, 1.0))[0, 0]
+    assert (first, again) == (4.0, 8.0)             # a 2 × 2 mm box, inked once, then twice
+
+
 micron = st.integers(-60_000, 60_000).map(lambda i: i / 1000.0)   # paper mm, to a micron
 
 
