@@ -55,17 +55,19 @@ def draw_train_schematic(train: GearTrain, title: str, outputs: tuple[int, ...] 
     fixed = set(train.body(train.fixed)) if train.fixed is not None else set()
     labels: list[tuple[str, tuple[float, float]]] = []
 
-    def box(x: float, y0: float, y1: float) -> None:
-        pts = ((x, y0), (x + _FACE, y0), (x + _FACE, y1), (x, y1))
+    def box(x: float, y0: float, y1: float, face: float = _FACE) -> None:
+        pts = ((x, y0), (x + face, y0), (x + face, y1), (x, y1))
         fig.add(Path(pts, "link", closed=True))
         placer.block_path([*pts, pts[0]], 0.6)
 
     for g in train.gears:
-        x, r, y = plane[g.number] * _PLANE, radius[g.number] * mm, -axis[g.number] * mm
+        first, last = _span(train, plane, g.number)
+        x, r, y = first * _PLANE, radius[g.number] * mm, -axis[g.number] * mm
+        face = (last - first) * _PLANE + _FACE
         if g.number in rings:
             for s in (1.0, -1.0):                     # the two rims, teeth toward the axis
-                box(x, s * r, s * (r + _RIM))
-            web = x + _FACE
+                box(x, s * r, s * (r + _RIM), face)
+            web = x + face
             if g.number in fixed:                     # held by its rims to the housing
                 for s in (1.0, -1.0):
                     edge = s * (r + _RIM)
@@ -77,10 +79,10 @@ def draw_train_schematic(train: GearTrain, title: str, outputs: tuple[int, ...] 
             continue
         ys = (y, -y) if train.planetary and train.carried(g.number) else (y,)
         for cy in ys:
-            box(x, cy - r, cy + r)
+            box(x, cy - r, cy + r, face)
         if g.number in fixed:                          # a fixed sun: its face held
             draw_hatched_band(fig, (x, y - r), (x, y + r), (-1.0, 0.0), depth=2.5)
-        labels.append((str(g.number), (x + _FACE, y - 0.5 * r)))
+        labels.append((str(g.number), (x + face, y - 0.5 * r)))
     _shafts(train, fig, plane, axis, mm, (left, right), rings,
             (train.input_member, *outputs))
     if train.arm is not None and train.planetary:
@@ -90,11 +92,13 @@ def draw_train_schematic(train: GearTrain, title: str, outputs: tuple[int, ...] 
         pins = sorted({-axis[g.number] * mm for g in train.gears if g.carrier is not None},
                       key=abs)
         pin, far = pins[0], pins[-1]
-        reach_x = max(plane[g.number] for g in train.gears if train.carried(g.number)) * _PLANE
+        # each pin out through the farthest plane of the planets it carries
+        reach = {cy: max(plane[g.number] for g in train.gears if train.carried(g.number)
+                         and -axis[g.number] * mm == cy) * _PLANE + _FACE for cy in pins}
         for s in (1.0, -1.0):
-            fig.add(Path(((xa, 0.0), (xa, s * far), (reach_x + _FACE, s * far)), "link"))
+            fig.add(Path(((xa, 0.0), (xa, s * far), (reach[far], s * far)), "link"))
             for cy in pins[:-1]:
-                fig.add(Path(((xa, s * cy), (reach_x + _FACE, s * cy)), "link"))
+                fig.add(Path(((xa, s * cy), (reach[cy], s * cy)), "link"))
         if train.arm in fixed:
             draw_hatched_band(fig, (xa, far), (xa, -far), (-1.0, 0.0))
         labels.append((str(train.arm), (xa, 0.5 * pin)))
@@ -149,10 +153,17 @@ def _shafts(train: GearTrain, fig: Figure, plane, axis, mm: float, span: tuple[f
 
 
 def _planes(train: GearTrain) -> dict[int, int]:
-    """An axial plane for each member: gears in mesh share one, each further gear on a
-    shaft takes the next, the arm the one before them all."""
+    """An axial plane for each member: gears in mesh share one, unless the gear would
+    overlap another in it (a second planet at another carrier radius), and each further
+    gear on a shaft takes the next; the arm the one before them all."""
     plane: dict[int, int] = {}
     todo: list[int] = []
+    bands = _bands(train)
+
+    def clear(m: int, p: int) -> bool:
+        return not any(q == p and _overlap(bands[m], bands[k]) for k, q in plane.items()
+                       if k != train.arm)
+
     for g in train.gears:
         if g.number in plane:
             continue
@@ -163,7 +174,8 @@ def _planes(train: GearTrain) -> dict[int, int]:
             for mesh in train.meshes:
                 for a, b in ((mesh.a, mesh.b), (mesh.b, mesh.a)):
                     if a == m and b not in plane:
-                        plane[b] = plane[m]
+                        plane[b] = (plane[m] if clear(b, plane[m])
+                                    else max(plane.values()) + 1)
                         todo.append(b)
             for k in train.body(m):
                 if k not in plane and k != train.arm:
@@ -174,11 +186,46 @@ def _planes(train: GearTrain) -> dict[int, int]:
     return plane
 
 
+def _bands(train: GearTrain) -> dict[int, list[tuple[float, float]]]:
+    """The radii each gear fills in the side view, above the main axis and below (a ring its
+    pitch circle alone, its rim being outside every gear it holds)."""
+    axis = _axes(train)
+    out = {}
+    for g in train.gears:
+        r, y = float(train.pitch_radius(g.number)), axis[g.number]
+        if _is_ring(train, g.number):
+            out[g.number] = [(y + r, y + r), (y - r, y - r)]
+        elif train.planetary and train.carried(g.number):
+            out[g.number] = [(y - r, y + r), (-y - r, -y + r)]
+        else:
+            out[g.number] = [(y - r, y + r)]
+    return out
+
+
+def _overlap(a: list[tuple[float, float]], b: list[tuple[float, float]]) -> bool:
+    """True if two gears' bands overlap (gears in mesh only touch)."""
+    return any(min(h1, h2) - max(l1, l2) > 1e-9 * max(abs(h1), abs(h2), 1e-300)
+               for l1, h1 in a for l2, h2 in b)
+
+
+def _span(train: GearTrain, plane: dict[int, int], number: int) -> tuple[int, int]:
+    """The planes a gear's face runs across: its own, and for a gear on the main axis those
+    of the planets it meshes (a ring or a sun that planets at two carrier radii mesh side
+    by side)."""
+    near = [plane[number]]
+    if train.planetary and not train.carried(number):
+        near += [plane[b] for m in train.meshes for a, b in ((m.a, m.b), (m.b, m.a))
+                 if a == number]
+    return min(near), max(near)
+
+
 def _axes(train: GearTrain) -> dict[int, float]:
     """Each gear's axis above the main axis (size units): 0 on the main axis, the carrier
     radius for a planet; in an ordinary train the first gear's at 0 and each next one a
     centre distance above the one that drives it."""
-    y: dict[int, float] = {train.gears[0].number: 0.0}
+    first = next((g.number for g in train.gears
+                  if not (train.planetary and train.carried(g.number))), train.gears[0].number)
+    y: dict[int, float] = {first: 0.0}
     grew = True
     while grew:
         grew = False
