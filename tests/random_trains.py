@@ -8,13 +8,16 @@ the closed form the generator knows from the tooth numbers it chose, so a number
 must be refused.
 
 The families: a simple train with idlers (an internal mesh now and then), a compound train,
-a reverted one, a planetary train (sun, planet, ring, arm; the ring, the sun or the arm
-fixed; some without a ring), a compound planet between two main-axis gears (Q3, Q4), planets
-at two or three carrier radii, and an involute pair with its module and pressure angle. The input is
-any member but the fixed one. Some cases are degenerate on purpose (a ratio asked over the
-fixed member or over one that stands still, planets that cannot be spaced or do not fit,
-gears pulled apart or jammed) and must be refused; some are broken as a hand-written file is
-(zero teeth, a gear meshing itself, a missing table, absurd numbers, a truncated file).
+a reverted one (its first pair's involute mesh drawn now and then), a planetary train (sun,
+planet, ring, arm; the ring, the sun or the arm fixed; some without a ring), a compound
+planet between two main-axis gears (Q3, Q4), planets at two or three carrier radii, and an
+involute pair with its module and pressure angle. The input is any member but the fixed
+one; now and then it carries a torque, and the output's and the holding torque are asked.
+Some cases are degenerate on purpose (a ratio asked over the fixed member or over one that
+stands still, a planet or the input held, planets that cannot be spaced or do not fit,
+gears pulled apart or jammed) and must be refused; some are broken as a hand-written file
+is (zero teeth, a gear meshing itself, a shaft naming no member, a missing table, absurd
+numbers, a truncated file).
 
 The oracle: with the arm held, member k turns e_k times the reference gear (the product of
 driver over driven teeth along the meshes, − for each external one; the arm 0), so
@@ -49,9 +52,10 @@ __all__ = ["FAMILIES", "TRAIN_OUTCOMES", "Train", "build", "generate", "oracle",
 
 FAMILIES = ("simple", "compound", "reverted", "planetary", "compound-planet", "carrier-radii",
             "involute")
-TRAIN_OUTCOMES = (*OUTCOMES, "wrong")
-"""The outcomes of tests/random_mechanisms.py, and ``wrong``: an answer the oracle
-contradicts, or an answer to a file that must be refused."""
+TRAIN_OUTCOMES = (*OUTCOMES, "wrong", "refused-valid")
+"""The outcomes of tests/random_mechanisms.py; ``wrong``, an answer the oracle contradicts
+or an answer to a file that must be refused; ``refused-valid``, a refusal of a file the
+closed form answers."""
 MALFORMED = 0.1
 DEGENERATE = 0.08
 MODULES = (1, 1.25, 1.5, 2, 2.5, 3, 4, 5, 6, 8, 10, 12, 16, 20)
@@ -60,8 +64,9 @@ MODULES = (1, 1.25, 1.5, 2, 2.5, 3, 4, 5, 6, 8, 10, 12, 16, 20)
 @dataclass
 class Train:
     """A case before it is written: its tables, each member's turns ``e`` relative to the
-    reference gear with the arm held (the arm 0), the arm, and what the file must give:
-    ``"answer"``, or ``"refused"`` (with the reason) for a degenerate one."""
+    reference gear with the arm held (the arm 0), the arm, what the file must give
+    (``"answer"``, or ``"refused"`` for a degenerate one), and an involute mesh's numbers
+    by the textbook formulas."""
 
     spec: dict[str, Any]
     e: dict[int, Fraction]
@@ -626,11 +631,11 @@ def main(argv: list[str] | None = None) -> int:
                     (args.keep / f"{got.outcome}-{k}.toml").write_text(
                         f"# {got.outcome}: {got.message}\n{text}", encoding="utf-8")
     print(f"{args.cases} cases, seed {args.seed}, {time.perf_counter() - start:.0f} s")
-    for outcome in (*TRAIN_OUTCOMES, "refused-valid"):
+    for outcome in TRAIN_OUTCOMES:
         print(f"  {outcome:16} {counts[outcome]}")
     for family in FAMILIES:
         print(f"  {family:16} " + ", ".join(f"{o} {by_family[family, o]}"
-                                            for o in (*TRAIN_OUTCOMES, "refused-valid")
+                                            for o in TRAIN_OUTCOMES
                                             if by_family[family, o]))
     return 0 if set(counts) <= {"ok", "refused"} else 1
 
