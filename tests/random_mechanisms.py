@@ -22,11 +22,16 @@ import json
 import math
 import random
 import re
+import sys
 import tomllib
 import traceback
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+
+from closed_forms import contradictions  # noqa: E402
 
 __all__ = ["FAMILIES", "OUTCOMES", "HOSTILE", "FOUR_BAR", "generate", "to_toml", "run_case",
            "classify_error", "Outcome", "point_names", "edited"]
@@ -922,7 +927,7 @@ HOSTILE: dict[str, dict[str, bytes]] = {
 
 
 # ----- running and judging a case ----------------------------------------------------------------
-OUTCOMES = ("ok", "refused", "refused-unclear", "check-failed", "other")
+OUTCOMES = ("ok", "refused", "refused-unclear", "check-failed", "wrong", "other")
 
 
 @dataclass
@@ -979,7 +984,6 @@ def classify_error(message: str, path: str, names: set[str] = frozenset(),
     where = re.search(re.escape(path) + r":(\d+|\s)", message) is not None
     where = where or re.search(r"\blinks? \d+", message) is not None
     where = where or re.search(r"θ\d+ = |\bt = ", message) is not None
-    where = where or re.search(r"(omega|alpha|ω|α)\d+", message) is not None
     where = where or any(re.search(p, message) for p in places)
     # A point by its name, alone or in a quantity's (V_B, A_cor_A).
     where = where or any(re.search(rf"(?<![A-Za-z0-9′″']){re.escape(n)}(?![\w′″'])", message)
@@ -1033,15 +1037,21 @@ def _failed(doc: dict[str, Any]) -> list[dict[str, Any]]:
     return out
 
 
+def linkage_oracle(solution, text: str) -> list[str]:
+    """What a linkage prints as checked that the textbook's loop equations contradict (a
+    four-bar's and a slider-crank's, in tests/closed_forms.py)."""
+    return contradictions(solution)
+
+
 def run_case(text: str | bytes, path: str | Path, *, render: bool = False,
-             oracle=None, places: tuple[str, ...] = ()) -> Outcome:
+             oracle=linkage_oracle, places: tuple[str, ...] = ()) -> Outcome:
     """Write ``text`` to ``path``, load and solve it through the Python API, and classify it.
 
     With ``render`` every file of the solution is made as text too, and an SVG or steps.md
-    that prints nan or inf is an ``other``. ``oracle(solution, text)``, if given, lists what
-    a solution that passed its checks still gets wrong (an outcome ``wrong``: solved and
-    passed, but a closed form the chapter's generator gives disagrees); ``places`` are what
-    a refusal may name besides (:func:`classify_error`).
+    that prints nan or inf is an ``other``. ``oracle(solution, text)`` lists what a solution
+    that passed its checks still gets wrong (an outcome ``wrong``: solved and passed, but a
+    closed form disagrees; a linkage's by default, each chapter's generator gives its own);
+    ``places`` are what a refusal may name besides (:func:`classify_error`).
     """
     import tarsim
     from tarsim.constructions.errors import CheckMismatch, TarsimError

@@ -1,0 +1,34 @@
+"""The closed forms random linkages are held to agree with the course's own examples, and
+catch an answer changed by as little as a millionth and a half."""
+
+from __future__ import annotations
+
+from dataclasses import replace
+
+import pytest
+
+import tarsim
+from tests.closed_forms import contradictions
+
+
+@pytest.mark.parametrize("exercise_id", ["four-bar", "offset-slider-crank", "hinkle-four-bar",
+                                         "grashof-crank-rocker"])
+def test_the_loop_equations_agree_with_a_bundled_linkage(solved, exercise_id):
+    assert contradictions(solved(exercise_id)) == []
+
+
+@pytest.mark.parametrize("exercise_id, name", [("four-bar", "omega3"), ("four-bar", "V_B"),
+                                               ("offset-slider-crank", "V_B")])
+def test_an_answer_a_little_off_is_caught(exercise_id, name):
+    solution = tarsim.solve(tarsim.load(exercise_id))
+    sol = solution.positions[0]
+    q = sol.quantities[name]
+    # Off by 1.5 millionths of its scale (ω2, or the crank pin's speed ω2·O2A), beyond the
+    # checks' ceiling of one.
+    d = sol.work.mechanism.drive
+    off = 1.5e-6 * abs(d.omega) * (sol.work.mechanism.input_radius if name[0] == "V" else 1.0)
+    value = ({**q.value, "vector": [q.value["vector"][0] + off, q.value["vector"][1]]}
+             if "vector" in q.value else {**q.value, "value": q.value["value"] + off})
+    sol.quantities[name] = replace(q, value=value, alternatives={})
+    said = contradictions(solution)
+    assert len(said) == 1 and f"{name} by {q.method}" in said[0]
