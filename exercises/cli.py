@@ -44,8 +44,9 @@ def _fails_cleanly(fn):
         except CheckMismatch as e:
             raise _CheckFailed(str(e)) from None
         except TarsimError as e:
+            # Not output (a RenderError), nor input its own file:line names.
             solving = (isinstance(e, (AssemblyError, GeometryError, IllConditioned))
-                       or type(e) is TarsimError)     # not input, nor output (a RenderError)
+                       or type(e) is TarsimError or isinstance(e, InputError) and not e.file)
             line = _placed(e, kwargs.get("source")) if solving else str(e)
             raise click.ClickException(line + _told(e)) from None
     return wrapper
@@ -110,7 +111,8 @@ def _at_angle(mech: Mechanism, angle: float | None) -> Mechanism:
     if angle is None:
         return mech
     if not math.isfinite(angle):
-        raise InputError(f"--angle must be a finite number, as a file's angle is; got {angle:g}")
+        raise click.ClickException(f"--angle must be a finite number, as a file's angle is; "
+                                   f"got {angle:g}")
     return mech.with_drive(replace(mech.drive, angle=radians_in_turn(angle, mech.units.angle)))
 
 
@@ -217,7 +219,8 @@ def draw(source, output, angle, paper, lang, digits):
             from .balance_solution import solve_balance
 
             if angle is not None:
-                raise InputError("a balancing exercise has no input angle: leave out --angle")
+                raise click.ClickException("a balancing exercise has no input angle: leave out "
+                                           "--angle")
             fig = next(iter(solve_balance(loaded).figures.values()))
             click.echo(f"wrote {write_figure(on_sheet(fig, sheet(paper)), output)}")
             return
@@ -225,7 +228,8 @@ def draw(source, output, angle, paper, lang, digits):
             from .cam_solution import solve_cam
 
             if angle is not None:
-                raise InputError("a cam is laid out over its whole turn: leave out --angle")
+                raise click.ClickException("a cam is laid out over its whole turn: leave out "
+                                           "--angle")
             fig = solve_cam(loaded, allow_undercut=True).figures["profile"]
             click.echo(f"wrote {write_figure(on_sheet(fig, sheet(paper)), output)}")
             return
@@ -233,7 +237,7 @@ def draw(source, output, angle, paper, lang, digits):
             from ..graphics.train_schematic import draw_train_schematic
 
             if angle is not None:
-                raise InputError("a gear train has no input angle: leave out --angle")
+                raise click.ClickException("a gear train has no input angle: leave out --angle")
             fig = draw_train_schematic(loaded.train, loaded.train.name)
             click.echo(f"wrote {write_figure(on_sheet(fig, sheet(paper)), output)}")
             return
@@ -356,18 +360,19 @@ def solve(source, out_dir, angle, pdf, paper, allow_undercut, lang, digits):
         loaded = loaded.named_in(spoken())
         if isinstance(loaded, TrainExercise):
             if angle is not None:
-                raise InputError("a gear train has no input angle: leave out --angle")
+                raise click.ClickException("a gear train has no input angle: leave out --angle")
             return _solve_train(loaded, out_dir, pdf)
         if isinstance(loaded, BalanceExercise):
             if angle is not None:
-                raise InputError("a balancing exercise has no input angle: leave out --angle "
-                                 "(an engine's crank angle is its [engine] at)")
+                raise click.ClickException("a balancing exercise has no input angle: leave out "
+                                           "--angle (an engine's crank angle is its [engine] "
+                                           "at)")
             from .balance_solution import solve_balance
 
             return _solve_other(loaded, solve_balance, out_dir, pdf)
         if isinstance(loaded, CamExercise):
             if angle is not None:
-                raise InputError("a cam is solved over its whole turn: leave out --angle")
+                raise click.ClickException("a cam is solved over its whole turn: leave out --angle")
             return _solve_cam(loaded, out_dir, pdf, allow_undercut)
         ex = replace(_exercise(source, angle), paper=paper).named_in(spoken())   # as loaded
         out = Path(out_dir or f"{ex.id}-solution")
