@@ -292,7 +292,9 @@ class TrainSolution(ChapterFiles):
             return heads, [(words("speed ({unit}, ccw +)", unit=unit_words(unit)), speeds)]
 
         def row(turns: dict[int, Fraction]) -> list[str]:
-            return [numerals(fraction_text(turns[m], True)) for m in t.members]
+            # a gear on a side shaft has no place in the table: its cell is blank
+            return [numerals(fraction_text(turns[m], True)) if m in turns else ""
+                    for m in train.members]
 
         return heads, [
             (words("whole train locked, {turn}", turn=numerals("+1")), row(t.locked)),
@@ -347,7 +349,8 @@ class TrainSolution(ChapterFiles):
             qs[q.name] = {**entry, "reference": reference, "rel_error": q.rel_error,
                           "method": q.method}
             m = q.name.removeprefix("omega")
-            if self.diagram is not None and q.name.startswith("omega") and "/" not in q.name:
+            if self.diagram is not None and q.name.startswith("omega") and "/" not in q.name \
+                    and int(m) in self.diagram.omegas:          # not a side shaft's gear
                 w = self.diagram.omegas[int(m)]
                 qs[q.name]["velocity_diagram"] = {
                     "value": w, "rel_error": abs(w - q.si) / max(abs(q.si), 1e-300)}

@@ -140,7 +140,7 @@ def _shafts(train: GearTrain, fig: Figure, plane, axis, mm: float, span: tuple[f
                       if not (train.fixed is not None and m in train.body(train.fixed))
                       and not (train.planetary and train.carried(m))
                       and (m == train.arm or not train.planetary
-                           or axis.get(m, 0.0) == 0.0)},
+                           or axis.get(m, 0.0) == 0.0 or m in train.off_axis)},
                      key=lambda m: plane[m])
     for k, m in enumerate(leaving[:1] + leaving[1:][-1:]):
         x, y = plane[m] * _PLANE, -axis.get(m, 0.0) * mm
@@ -213,7 +213,7 @@ def _span(train: GearTrain, plane: dict[int, int], number: int) -> tuple[int, in
     of the planets it meshes (a ring or a sun that planets at two carrier radii mesh side
     by side)."""
     near = [plane[number]]
-    if train.planetary and not train.carried(number):
+    if train.planetary and not train.carried(number) and number not in train.off_axis:
         near += [plane[b] for m in train.meshes for a, b in ((m.a, m.b), (m.b, m.a))
                  if a == number]
     return min(near), max(near)
@@ -221,10 +221,12 @@ def _span(train: GearTrain, plane: dict[int, int], number: int) -> tuple[int, in
 
 def _axes(train: GearTrain) -> dict[int, float]:
     """Each gear's axis above the main axis (size units): 0 on the main axis, the carrier
-    radius for a planet; in an ordinary train the first gear's at 0 and each next one a
-    centre distance above the one that drives it."""
+    radius for a planet; in an ordinary train (or on a planetary train's side shaft) the
+    first gear's at 0 and each next one a centre distance above the one that drives it."""
+    side = train.off_axis                   # a side shaft: a centre distance off the axis
     first = next((g.number for g in train.gears
-                  if not (train.planetary and train.carried(g.number))), train.gears[0].number)
+                  if not (train.planetary and train.carried(g.number)) and g.number not in side),
+                 train.gears[0].number)
     y: dict[int, float] = {first: 0.0}
     grew = True
     while grew:
@@ -233,7 +235,7 @@ def _axes(train: GearTrain) -> dict[int, float]:
             for a, b in ((mesh.a, mesh.b), (mesh.b, mesh.a)):
                 if a in y and b not in y:
                     ra, rb = (float(train.pitch_radius(n)) for n in (a, b))
-                    if train.planetary and not train.carried(b):
+                    if train.planetary and not train.carried(b) and b not in side:
                         y[b] = 0.0
                     else:
                         y[b] = y[a] + (abs(ra - rb) if mesh.internal else ra + rb)

@@ -496,3 +496,18 @@ def test_a_ratio_over_a_member_that_stands_still_is_refused(tmp_path):
                              "(output sun), which stands still in this train; ask a ratio "
                              "over a turning member\n")
     assert not (tmp_path / "out").exists()
+
+
+def test_a_pinion_on_a_side_shaft_drives_the_sun_as_an_ordinary_pair():
+    """Q1's sun (60 teeth) driven by a pinion 5 (20) on a shaft of its own at 80 rpm cw:
+    ω2 = 80·20/60 = 80/3 ccw; then the table, the ring fixed: ω3 = ω2·60/(140 + 60) = 8,
+    ω4 = ω3 − (ω2 − ω3)·60/40 = −20. The pinion has no column in the table, nor a line in
+    the velocity diagram, which starts from the sun."""
+    text = (Q1.replace("[arm]", '[[gear]]\nnumber = 5\nname = "pinion"\nteeth = 20\n\n[arm]', 1)
+            .replace("gears = [2, 4]", "gears = [2, 4]\n\n[[mesh]]\ngears = [5, 2]", 1)
+            .replace("member = 2\nspeed", "member = 5\nspeed", 1))
+    s = solve_train(parse_train(text, "q1.toml"))
+    assert s.found.speeds == s.reference == {1: 0, 2: F(80, 3), 4: F(-20), 5: F(-80), 3: F(8)}
+    assert s.passed and s.train.off_axis == (5,)
+    assert set(s.diagram.omegas) == {1, 2, 3, 4} and s.diagram.through[(2,)] == ("kz:O", "kz:v:2")
+    assert "| whole train locked, +1 | +1 | +1 | +1 |  | +1 |" in s.steps()

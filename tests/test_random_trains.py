@@ -41,9 +41,9 @@ def test_any_member_driving_gives_the_closed_form_ratios(seed, family, speed):
     if t.expect != "answer":
         return
     spec = t.spec
-    spec["ask"] = {"find": [f"omega{m}" for m in t.e]}
+    spec["ask"] = {"find": [f"omega{m}" for m in t.members]}
     spec["input"] |= {"speed": float(abs(speed)), "sense": "ccw" if speed > 0 else "cw"}
-    free = [m for m in t.e if "fixed" not in spec or m not in _body(spec, spec["fixed"])]
+    free = [m for m in t.members if "fixed" not in spec or m not in _body(spec, spec["fixed"])]
     want = None
     for member in free:
         spec["input"]["member"] = member
@@ -73,7 +73,7 @@ def test_a_random_train_is_its_closed_form_or_refused_clearly(family, seed):
     _, text = generate(random.Random(seed), family)
     note(text)
     with tempfile.TemporaryDirectory() as folder:
-        got = run_train_case(text, Path(folder) / f"{family}-{seed}.toml")
+        got = run_train_case(text, Path(folder) / f"{family}-{seed}.toml", render=True)
     assert got.outcome in ("ok", "refused"), f"{got.outcome}: {got.message}\n{got.detail}"
 
 

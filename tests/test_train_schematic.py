@@ -53,7 +53,7 @@ def test_two_planet_sets_stand_in_two_planes_inside_one_wide_ring():
        family=st.sampled_from(("planetary", "compound-planet", "carrier-radii")))
 def test_no_two_gears_are_drawn_over_each_other(seed, family):
     t = build(random.Random(seed), family)
-    t.spec["ask"] = {"find": [f"omega{m}" for m in t.e]}
+    t.spec["ask"] = {"find": [f"omega{m}" for m in t.members]}
     if t.expect != "answer" or oracle(t) is None:
         return
     s = solve_train(parse_train(train_toml(t.spec), "t.toml"))

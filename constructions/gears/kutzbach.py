@@ -15,8 +15,10 @@ arm's true speed taken from the input's slope in it, as similar diagrams scale.
 
 The diagram is drawn in drawing metres: radii true (in modules, a millimetre each, where no
 gear gives its module), velocities at ``per`` drawing metres per m/s. It needs every mesh
-to have a gear on the main axis: planets meshing with each other, or a gear on an axis of
-its own, are refused in a line (:func:`undrawable` says why).
+to have a gear on the main axis: planets meshing with each other are refused in a line
+(:func:`undrawable` says why). A pinion on a side shaft is off the radial line: the speed it
+gives the main-axis gear it drives is carried by the tooth ratio, and the diagram starts
+from that gear.
 """
 
 from __future__ import annotations
@@ -30,6 +32,7 @@ from ..narration import Number, Phrase, Word, phrase, significant
 from ..record import Construction, Kind, Panel, Ref, Role
 from ..model import LENGTH_UNITS
 from ..scales import nice_per_cm
+from .tabular import main_axis_train
 from .train import GearTrain
 
 __all__ = ["Kutzbach", "draw_kutzbach", "undrawable"]
@@ -164,6 +167,10 @@ def undrawable(train: GearTrain) -> str | None:
     a gear on an axis of its own, no line to start from), or None if it has one."""
     if not train.planetary or train.fixed is None or train.arm in train.body(train.fixed):
         return "an ordinary train has no velocity diagram: its axes stand still"
+    if train.fixed in train.off_axis:
+        return "the fixed member turns on a side shaft, off the radial line"
+    if train.off_axis:                    # the diagram draws the main axis and the planets
+        train = main_axis_train(train, [])[0]
     if train.carried(train.fixed):
         return f"the fixed member {train.fixed} is carried by the arm: the arm cannot turn"
     for mesh in train.meshes:
@@ -194,11 +201,14 @@ def draw_kutzbach(train: GearTrain, sizes: dict[int, Fraction]) -> Kutzbach:
     why = undrawable(train)
     if why is not None:
         raise InputError(why, file=train.source or None)
+    side: list[Phrase] = []               # gears on side shafts drive a main-axis gear
+    if train.off_axis:
+        train = main_axis_train(train, side)[0]
     radii = carrier_radii(train)
     member, about, trial = _plan(train, radii)
     w = float(train.input_speed) * train.units.per_rad_s
     if not trial:
-        return _Diagram(train, sizes, radii, _Start(member, w, about)).run()
+        return _Diagram(train, sizes, radii, _Start(member, w, about), side).run()
     # Drawn first at a trial speed of ``member``: every velocity scales with it, so the
     # input's slope in the trial gives the true speed.
     read = _Diagram(train, sizes, radii, _Start(member, w)).run().omegas[train.input_member]
@@ -207,7 +217,7 @@ def draw_kutzbach(train: GearTrain, sizes: dict[int, Fraction]) -> Kutzbach:
                          "whatever the arm does: it cannot drive the train",
                          file=train.source or None)
     start = _Start(member, w * w / read, trial=(w, read))
-    return _Diagram(train, sizes, radii, start).run()
+    return _Diagram(train, sizes, radii, start, side).run()
 
 
 _ROOM = (90.0, 110.0)
@@ -215,8 +225,9 @@ _ROOM = (90.0, 110.0)
 
 
 class _Diagram:
-    def __init__(self, train: GearTrain, sizes: dict[int, Fraction], radii, start: _Start):
-        self.t, self.radii, self.start = train, radii, start
+    def __init__(self, train: GearTrain, sizes: dict[int, Fraction], radii, start: _Start,
+                 side: list[Phrase] = ()):
+        self.t, self.radii, self.start, self.side = train, radii, start, side
         self.metre = 1.0 if train.sized else 1e-3
         distinct = list(dict.fromkeys(radii.values()))
         self.arm_r = distinct[0]
@@ -278,6 +289,8 @@ class _Diagram:
         self.k.lines[fixed] = "kz:radial"
         self.act("kz:fixed", "mark", "kz:O", said=phrase("kutzbach.fixed",
                                                         member=t.said(t.fixed, opening=True)))
+        for k, said in enumerate(self.side):      # off the radial line: by the tooth ratios
+            self.act(f"kz:side:{k}", "mark", "kz:O", said=said)
         if self.start.about is None:
             self.draw_start()
         else:

@@ -23,14 +23,14 @@ Every number is a :class:`~fractions.Fraction`; each step is a :class:`Phrase`.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from fractions import Fraction
 
 from ..errors import InputError
 from ..narration import Phrase, Word, phrase
 from .train import GearTrain, Mesh
 
-__all__ = ["Table", "TrainSpeeds", "tabulate", "carry", "fraction_text"]
+__all__ = ["Table", "TrainSpeeds", "tabulate", "carry", "fraction_text", "main_axis_train"]
 
 
 @dataclass(frozen=True)
@@ -122,10 +122,88 @@ def carry(train: GearTrain, start: dict[int, Fraction], held: tuple[int, ...] = 
 
 def tabulate(train: GearTrain) -> TrainSpeeds:
     """Every member's speed: by the tabular method in a planetary train, by carrying the
-    input's speed through the meshes in an ordinary one."""
+    input's speed through the meshes in an ordinary one. Gears on side shafts of a
+    planetary train (:attr:`GearTrain.off_axis`) turn as an ordinary train with the
+    main-axis gear they mesh: carried to it before the table, or from it after.
+
+    Raises
+    ------
+    InputError
+        If a member is reached by no mesh, the input cannot drive, or the fixed member
+        turns on a side shaft.
+    """
     if not train.planetary or train.fixed is None or train.arm in train.body(train.fixed):
         return _ordinary(train)
-    return _planetary(train)
+    if not train.off_axis:
+        return _planetary(train)
+    steps: list[Phrase] = []
+    core, speeds = main_axis_train(train, steps)
+    table = _planetary(core)
+    after: list[Phrase] = []
+    speeds = _carry_speeds(_side_meshes(train), {**speeds, **table.speeds}, after)
+    return TrainSpeeds({m: speeds[m] for m in train.members},
+                       (*steps, *table.steps, *after), table.table, table.method, table.xy)
+
+
+def main_axis_train(train: GearTrain, steps: list[Phrase]
+                    ) -> tuple[GearTrain, dict[int, Fraction]]:
+    """The planetary part of a train with gears on side shafts: its members on the main
+    axis and the planets, driven by the first of them the input reaches (at the speed the
+    side shafts' meshes carry to it, each step appended to ``steps``); and the speeds so
+    carried.
+
+    Raises
+    ------
+    InputError
+        If the fixed member turns on a side shaft.
+    """
+    side = train.off_axis
+    if train.fixed in side:
+        raise InputError(f"{train.label(train.fixed)}, the fixed member, turns on a side shaft "
+                         "beside the main axis: fix the arm or a gear on the main axis",
+                         file=train.source or None)
+    speeds = _carry_speeds(_side_meshes(train), {train.input_member: train.input_speed}, steps)
+    first = next(m for m in (train.input_member, *speeds) if m not in side)
+    core = replace(train, gears=tuple(g for g in train.gears if g.number not in side),
+                   meshes=tuple(m for m in train.meshes if m.a not in side and m.b not in side),
+                   shafts=tuple(sh for sh in train.shafts if not set(sh) & set(side)),
+                   input_member=first, input_speed=speeds[first])
+    return core, speeds
+
+
+def _side_meshes(train: GearTrain) -> GearTrain:
+    """``train`` with only the meshes of its gears on side shafts."""
+    side = train.off_axis
+    return replace(train, meshes=tuple(m for m in train.meshes if m.a in side or m.b in side))
+
+
+def _carry_speeds(train: GearTrain, known: dict[int, Fraction], steps: list[Phrase]
+                  ) -> dict[int, Fraction]:
+    """The speeds ``known``, carried through ``train``'s meshes (every axis fixed) and
+    shafts as far as they reach."""
+    out = dict(known)
+    for m, v in known.items():
+        for k in train.body(m):
+            out.setdefault(k, v)
+    grew = True
+    while grew:
+        grew = False
+        for mesh in train.meshes:
+            for a, b in ((mesh.a, mesh.b), (mesh.b, mesh.a)):
+                if a in out and b not in out:
+                    ga, gb = train.gear(a), train.gear(b)
+                    out[b] = out[a] * Fraction(ga.teeth, gb.teeth) * (1 if mesh.internal
+                                                                       else -1)
+                    steps.append(phrase(
+                        "gears.mesh_carries", driven=train.said(b, opening=True),
+                        driver=train.said(a), kind=Word(mesh.word),
+                        way=Word("the same way" if mesh.internal else "the other way"),
+                        a=a, b=b, na=ga.teeth, nb=gb.teeth, turns=_speed(train, out[a]),
+                        result=_speed(train, out[b])))
+                    for k in train.body(b):
+                        out.setdefault(k, out[b])
+                    grew = True
+    return out
 
 
 def _ordinary(train: GearTrain) -> TrainSpeeds:

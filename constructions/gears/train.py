@@ -157,6 +157,21 @@ class GearTrain:
         """True if an arm carries any gear."""
         return self.arm is not None and any(g.carrier is not None for g in self.gears)
 
+    @property
+    def off_axis(self) -> tuple[int, ...]:
+        """In a planetary train, the gears on fixed axes of their own beside the main axis
+        (a pinion on a side shaft driving the sun): on the main axis are the arm's body and
+        each body with a gear that meshes a planet; every other body not carried is off it.
+        """
+        if not self.planetary:
+            return ()
+        main = set(self.body(self.arm))
+        for mesh in self.meshes:
+            for a, b in ((mesh.a, mesh.b), (mesh.b, mesh.a)):
+                if self.carried(a) and not self.carried(b):
+                    main.update(self.body(b))
+        return tuple(m for m in self.members if m not in main and not self.carried(m))
+
     def mobility(self) -> tuple[int, int, int, int]:
         """Grübler's count ``(dof, n, f1, f2)``: the bodies and the frame (the fixed member
         is the frame, or the housing when no member is fixed) are the links; each moving
@@ -169,11 +184,13 @@ class GearTrain:
     def describe(self) -> list[Phrase]:
         """The train as its side view shows it, a sentence a member and a mesh."""
         out = []
+        side = self.off_axis
         for g in self.gears:
             if self.planetary and self.carried(g.number):
                 where = phrase("gears.on_pin", arm=self.arm)
             else:
-                where = phrase("gears.on_axis" if self.planetary else "gears.on_own_axis")
+                where = phrase("gears.on_axis" if self.planetary and g.number not in side
+                               else "gears.on_own_axis")
             others = [m for m in self.body(g.number) if m != g.number]
             out.append(phrase("gears.member", member=self.said(g.number, opening=True),
                               teeth=g.teeth, where=where,
