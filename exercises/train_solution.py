@@ -403,6 +403,7 @@ def solve_train(ex: TrainExercise) -> TrainSolution:
     found = tabulate(ex.train)
     train = ex.train
     reference = willis_speeds(train)
+    _refuse_beyond_floats(train, found.speeds)
     _refuse_still_ratios(ex, found.speeds, reference)
     drawable = found.table is not None and undrawable(train) is None
     diagram = draw_kutzbach(train, found.speeds) if drawable else None
@@ -414,6 +415,29 @@ def solve_train(ex: TrainExercise) -> TrainSolution:
         ref = mesh_reference(float(a.module), (a.teeth, b.teeth), (a.number, b.number),
                              d.pressure_angle, d.addendum, d.centre_distance)
     return TrainSolution(ex, found, reference, diagram, mesh, ref)
+
+
+_FASTEST = 100
+"""No member turns faster than 1e100 of the file's unit, nor (turning) slower than 1e-100:
+beyond, a speed or a ratio of two leaves what a float holds (1e±308)."""
+
+
+def _refuse_beyond_floats(train, speeds: dict[int, Fraction]) -> None:
+    """Refuse a train whose tooth ratios carry a speed beyond :data:`_FASTEST`'s range (a
+    chain of many stages of 100000 teeth to 1)."""
+    for m, w in speeds.items():
+        if w and not -_FASTEST <= _exponent(w) <= _FASTEST:
+            raise InputError(f"{train.label(m)} would turn about 1e{_exponent(w):+d} "
+                             f"{train.units.speed}: the tooth ratios carry its speed beyond "
+                             f"1e±{_FASTEST}; no train turns so, check the teeth",
+                             file=train.source or None)
+
+
+def _exponent(x: Fraction) -> int:
+    """The power of ten of ``x``'s size, from its digits (it may be beyond a float)."""
+    x = abs(x)
+    e = len(str(x.numerator)) - len(str(x.denominator))
+    return e if x >= Fraction(10) ** e else e - 1
 
 
 def _refuse_still_ratios(ex: TrainExercise, *speeds: dict[int, Fraction]) -> None:

@@ -139,12 +139,15 @@ def simple(r: random.Random) -> Train:
 def compound(r: random.Random, stages: int | None = None, total: int | None = None) -> Train:
     """Stages of a driver and a driven gear, each driven gear on one shaft with the next
     driver; ``total`` teeth a stage (a reverted train: input and output coaxial)."""
-    stages = stages or r.randint(2, 4)
+    steep = stages is None and r.random() < 0.03        # dozens of stages of 100000 to 1
+    stages = stages or (r.randint(15, 60) if steep else r.randint(2, 4))
     gears, meshes, shafts, e, teeth = [], [], [], {2: Fraction(1)}, {}
     for s in range(stages):
         a, b = 2 + 2 * s, 3 + 2 * s
         teeth[a] = r.randint(10, 40) if total is None else r.randint(10, total - 10)
         teeth[b] = r.randint(20, 100) if total is None else total - teeth[a]
+        if steep:
+            teeth[a], teeth[b] = 100_000, 1
         gears += [_gear(a, teeth[a]), _gear(b, teeth[b])]
         meshes.append(_mesh(a, b))
         _turns(e, a, b, teeth, False)
@@ -451,6 +454,9 @@ def _comments(t: Train) -> list[str]:
     input that cannot drive, makes it a file to refuse."""
     speeds = oracle(t) if t.expect == "answer" else None
     expect = t.expect if speeds is not None else "refused"
+    if speeds and any(w and not Fraction(1, 10**100) <= abs(w) < 10**101
+                      for w in speeds.values()):
+        expect = "refused"                # no train turns beyond 1e±100 (rpm or rad/s)
     lines = []
     if speeds is not None:
         spec = t.spec
