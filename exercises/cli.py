@@ -659,9 +659,9 @@ def grade(source, drawing, out_dir, position, workers, scheduler, lang, digits):
       tarsim grade four-bar class/ -o graded --scheduler tcp://10.0.0.5:8786
     """
     from .catalog import load
-    from .grading.batch import SHEET, grade_many, plan_class
+    from .grading.batch import class_files, grade_many
     from .grading.grade import grade as grade_one
-    from .grading.report import class_csv, grade_files, grade_table
+    from .grading.report import class_folder, grade_files, grade_table
     from ..graphics.export import write_folder
 
     with speaking(_language(lang, digits, None)):     # the overlay's words
@@ -674,7 +674,7 @@ def grade(source, drawing, out_dir, position, workers, scheduler, lang, digits):
                        if g.overlay is not None else f"wrote grade.json to {out_dir}/")
             return
         load(source)                               # a bad exercise is one line, before the batch
-        found = plan_class(path, Path(out_dir))    # every clash found before anything is written
+        found = class_files(path)
         read = [f for f in found if not f.refused]
         with click.progressbar(length=len(read), label=f"grading {len(read)} drawings",
                                file=sys.stderr) as bar:
@@ -683,10 +683,7 @@ def grade(source, drawing, out_dir, position, workers, scheduler, lang, digits):
                                                scheduler=scheduler)]
         by_file = dict(zip(read, graded))
         rows = [(f.name, f.folder, f.refused or by_file[f]) for f in found]
-        for f, g in by_file.items():
-            if not isinstance(g, str):
-                write_folder(grade_files(g), Path(out_dir) / f.folder)
-        write_folder({SHEET: class_csv(rows)}, out_dir)
+        write_folder(class_folder(rows), out_dir)  # one set: all of it, or nothing
         bad = sum(isinstance(g, str) for *_, g in rows)
         click.echo(f"graded {len(rows) - bad} of {len(rows)} drawings into {out_dir}/"
                    + (f"; {bad} could not be read (see grades.csv)" if bad else ""))

@@ -164,8 +164,8 @@ HUGE = (b'<svg xmlns="http://www.w3.org/2000/svg"><path d="M 0 0 '
                "drawing never needs; export it again as plain SVG"),
     (LINKED, "student.svg:1: <image> links to 'http://example.com/x.png' outside the drawing; "
              "a drawing must hold all it shows"),
-    (HUGE, "student.svg: its shapes hold 1,500,006 characters of path data, more than a "
-           "drawing holds (at most 1,000,000)"),
+    (HUGE, "student.svg: its paths hold 250,001 points, more than a drawing needs (at most "
+           "50,000)"),
     (b"\x89PNG\r\n\x1a\n\x00\x00", "student.svg:1: not an SVG drawing: its XML is broken at "
                                    "column 0 (not well-formed (invalid token))"),
     (b"", "student.svg: the file is empty; give an SVG drawing"),

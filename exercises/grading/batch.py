@@ -19,20 +19,14 @@ from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass
 from pathlib import Path
 
-from ...constructions.errors import TarsimError
-from ...graphics.export import MANIFEST, RenderError
+from ...constructions.errors import InputError, TarsimError
+from ...graphics.export import MANIFEST
 from .grade import Grade, grade
 
-__all__ = ["ClassFile", "plan_class", "class_files", "grade_many", "folder_for", "GRADABLE",
-           "SHEET"]
+__all__ = ["ClassFile", "class_files", "grade_many", "folder_for", "GRADABLE"]
 
 GRADABLE = (".svg", ".json", ".csv")
 """The files a class folder is graded from."""
-
-SHEET = "grades.csv"
-"""The class's sheet, in the output folder beside the drawings' folders."""
-
-_GRADE_FILES = ("grade.json", "grade.svg")
 
 _RESERVED = {"con", "prn", "aux", "nul", *(f"{p}{d}" for p in ("com", "lpt") for d in range(10))}
 """Names Windows keeps for its devices, which no folder may take."""
@@ -80,7 +74,13 @@ def folder_for(name: str) -> str:
 def class_files(folder: Path) -> list[ClassFile]:
     """The gradable files directly in ``folder``, by name: a link is read only when it
     leads to a file inside the folder, and the files tarsim wrote there itself (its
-    manifest, and those it lists) are not drawings."""
+    manifest, and those it lists) are not drawings.
+
+    Raises
+    ------
+    InputError
+        If the folder holds no gradable file.
+    """
     root = folder.resolve()
     ours = _written_by_tarsim(folder)
     out = []
@@ -99,49 +99,9 @@ def class_files(folder: Path) -> list[ClassFile]:
         elif not path.is_file():
             continue
         out.append(ClassFile(path, folder_for(path.name), refused))
-    return out
-
-
-def plan_class(folder: Path, out: Path) -> list[ClassFile]:
-    """The class folder's files (:func:`class_files`), once every place their grades and
-    :data:`SHEET` go in ``out`` is known to be free: nothing yet, or what tarsim wrote
-    there itself.
-
-    Raises
-    ------
-    InputError
-        If the folder holds no gradable file.
-    RenderError
-        Naming the first place in ``out`` that is taken (and how many more are), before
-        anything is written.
-    """
-    from ...constructions.errors import InputError
-
-    files = class_files(folder)
-    if not files:
+    if not out:
         raise InputError(f"{folder}: no .svg, .json or .csv drawings in it")
-    taken = [] if _free(out, SHEET) else [f"{out / SHEET} is a file tarsim did not write"]
-    for f in files:
-        if f.refused:
-            continue
-        place = out / f.folder
-        if os.path.islink(place):
-            taken.append(f"{place} is a link, not a folder tarsim made")
-        elif os.path.lexists(place) and not place.is_dir():
-            taken.append(f"{place} is a file, not a folder tarsim made")
-        elif place.is_dir():
-            taken += [f"{place / n} is a file tarsim did not write" for n in _GRADE_FILES
-                      if not _free(place, n)]
-    if taken:
-        more = f" (and {len(taken) - 1} more)" if len(taken) > 1 else ""
-        raise RenderError(f"cannot write {folder.name}'s grades: {taken[0]}{more}; move it or "
-                          "choose another folder with -o")
-    return files
-
-
-def _free(folder: Path, name: str) -> bool:
-    """Whether ``folder / name`` may be written: nothing is there, or tarsim wrote it."""
-    return not os.path.lexists(folder / name) or name in _written_by_tarsim(folder)
+    return out
 
 
 def _written_by_tarsim(folder: Path) -> set[str]:

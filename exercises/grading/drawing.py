@@ -19,16 +19,13 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from ...constructions.errors import InputError
-from .safe_svg import MARK, MAX_ELEMENTS, MAX_PATH_CHARS, Kept, Reduced, reduce_svg
+from .safe_svg import MARK, MAX_ELEMENTS, MAX_POINTS, Kept, Reduced, readable_count, reduce_svg
 
 __all__ = ["Drawing", "Label", "read_drawing", "parse_drawing", "MAX_BYTES", "MAX_ELEMENTS",
-           "MAX_PATH_CHARS", "MAX_POINTS", "PAPER"]
+           "MAX_POINTS", "PAPER"]
 
 MAX_BYTES = 5_000_000
 """The largest drawing read (bytes): a page of lines and labels is some kilobytes."""
-
-MAX_POINTS = 200_000
-"""The most path points a drawing may hold, all its paths together."""
 
 PAPER = 1e6
 """How far from its origin a drawing's points may lie (mm): a kilometre is beyond any
@@ -80,8 +77,8 @@ def read_drawing(path: str | Path) -> Drawing:
     try:
         size = path.stat().st_size
         if size > MAX_BYTES:
-            raise InputError(f"{size:,} bytes is more than a drawing holds (at most "
-                             f"{MAX_BYTES:,})", file=name)
+            raise InputError(f"{readable_count(size)} bytes is more than a drawing holds "
+                             f"(at most {readable_count(MAX_BYTES)})", file=name)
         data = path.read_bytes()
     except OSError as e:
         raise InputError(f"cannot be read ({e.strerror or e})", file=name) from None
@@ -93,8 +90,8 @@ def parse_drawing(data: bytes, name: str = "drawing.svg") -> Drawing:
     if not data.strip():
         raise InputError("the file is empty; give an SVG drawing", file=name)
     if len(data) > MAX_BYTES:
-        raise InputError(f"{len(data):,} bytes is more than a drawing holds (at most "
-                         f"{MAX_BYTES:,})", file=name)
+        raise InputError(f"{readable_count(len(data))} bytes is more than a drawing holds "
+                         f"(at most {readable_count(MAX_BYTES)})", file=name)
     reduced = reduce_svg(data, name)
     out = _geometry(reduced, name)
     left_out = reduced.notes + out.notes
@@ -113,7 +110,6 @@ def _geometry(reduced: Reduced, name: str) -> Drawing:
     from svgelements import SVG, Circle, Close, Move, Path, Shape, SVGText
 
     out = Drawing(source=name)
-    points = 0
     runs: list = []                          # a text's tspans, which svgelements gives first
     try:
         elements = list(SVG.parse(io.BytesIO(reduced.data), ppi=96.0).elements())
@@ -154,11 +150,7 @@ def _geometry(reduced: Reduced, name: str) -> Drawing:
             path = e if isinstance(e, Path) else Path(e)
             path.reify()
             found = []
-            for seg in path:
-                points += 1
-                if points > MAX_POINTS:
-                    raise InputError(f"its paths hold more than {MAX_POINTS:,} points, more "
-                                     "than a drawing needs", file=name)
+            for seg in path:                 # as many as safe_svg counted, MAX_POINTS at most
                 if isinstance(seg, Move) or seg.start is None or seg.end is None or \
                         isinstance(seg, Close) and seg.start == seg.end:
                     continue

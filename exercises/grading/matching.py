@@ -92,7 +92,7 @@ def _distinct(points: list[Vec]) -> list[Vec]:
     number)."""
     cells: dict[tuple[int, int], list[Vec]] = {}
     out = []
-    for p in points:
+    for p in dict.fromkeys(points):          # the same point again (a polyline's joints) first
         kx, ky = math.floor(p[0] / _SAME), math.floor(p[1] / _SAME)
         if any(math.dist(p, q) < _SAME for dx in (-1, 0, 1) for dy in (-1, 0, 1)
                for q in cells.get((kx + dx, ky + dy), ())):

@@ -1,5 +1,5 @@
 """What a grade is written as: a terminal table, grade.json, the overlay grade.svg, and for
-a class, grades.csv.
+a class, a folder of those for each drawing and grades.csv, written as one set.
 
 The overlay redraws the student's drawing in grey, the polygons tarsim expects in blue in
 the drawing's own frame (its pole, turn, hand and scale), and rings each tip graded wrong
@@ -17,7 +17,10 @@ from ...constructions.narration import Number, words
 from ...graphics.rtl import is_rtl
 from .grade import Grade
 
-__all__ = ["grade_table", "grade_files", "class_csv"]
+__all__ = ["grade_table", "grade_files", "class_csv", "class_folder", "SHEET"]
+
+SHEET = "grades.csv"
+"""A class's sheet, in the output folder beside the drawings' folders."""
 
 _BLUE, _RED, _GREY = "#1f5fbf", "#c62828", "#9e9e9e"
 
@@ -60,8 +63,9 @@ def _overlay(g: Grade) -> str:
                            viewBox=f"{x0:.3f} {y0:.3f} {x1 - x0:.3f} {y1 - y0:.3f}",
                            profile="full", debug=False)
     student = dwg.add(dwg.g(stroke=_GREY, stroke_width=0.35, fill="none"))
-    for a, b in drawing.segments:
-        student.add(dwg.line(a, b))
+    if drawing.segments:                     # one path: a drawing may hold thousands
+        student.add(dwg.path(d=" ".join(f"M{a[0]:.3f} {a[1]:.3f}L{b[0]:.3f} {b[1]:.3f}"
+                                        for a, b in drawing.segments)))
     for c, r in drawing.circles:
         student.add(dwg.circle(c, r))
     lettering = dwg.add(dwg.g(fill=_GREY, font_size=3.2, font_family="DejaVu Serif"))
@@ -118,3 +122,12 @@ def class_csv(grades: list[tuple[str, str, Grade | str]]) -> str:
         w.writerow([source, folder, f"{g.score:.1f}", *[verdicts.get(n, "") for n in names],
                     "; ".join(g.notes)])
     return out.getvalue()
+
+
+def class_folder(grades: list[tuple[str, str, Grade | str]]) -> dict[str, str]:
+    """A class's output folder, by file name: each graded drawing's grade.json (and
+    grade.svg) in its own folder, and :data:`SHEET`."""
+    files = {f"{folder}/{name}": text for _, folder, g in grades if not isinstance(g, str)
+             for name, text in grade_files(g).items()}
+    files[SHEET] = class_csv(grades)
+    return files

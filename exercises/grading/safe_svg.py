@@ -28,20 +28,22 @@ from dataclasses import dataclass, field
 
 from ...constructions.errors import InputError
 
-__all__ = ["Kept", "Reduced", "reduce_svg", "MARK", "MAX_ELEMENTS", "MAX_DEPTH",
-           "MAX_PATH_CHARS", "MAX_TRANSFORM_WORK"]
+__all__ = ["Kept", "Reduced", "reduce_svg", "readable_count", "MARK", "MAX_ELEMENTS", "MAX_DEPTH",
+           "MAX_POINTS", "MAX_TRANSFORM_WORK"]
 
-MAX_ELEMENTS = 20_000
-"""The most elements a drawing may hold, as written and with its ``<use>`` expanded: far
-past any hand-made polygon."""
+MAX_ELEMENTS = 10_000
+"""The most elements a drawing may hold, as written and with its ``<use>`` expanded: a page
+of polygons and a space diagram, LibreOffice's four elements a shape, holds some
+thousand."""
 
 MAX_DEPTH = 64
 """How deep its elements may nest, ``<use>`` expanded (Inkscape's layers nest a dozen)."""
 
-MAX_PATH_CHARS = 1_000_000
-"""The longest its paths' data may run, all together and ``<use>`` expanded (characters)."""
+MAX_POINTS = 50_000
+"""The most points its paths and polylines may hold, all together and ``<use>`` expanded
+(a pair of numbers a point): a curve GeoGebra exports holds a few thousand."""
 
-MAX_TRANSFORM_WORK = 200_000
+MAX_TRANSFORM_WORK = 100_000
 """The most transforms svgelements may apply, each element's whole chain counted: a
 thousand elements under a dozen transformed groups apply some ten thousand."""
 
@@ -116,6 +118,9 @@ def reduce_svg(data: bytes, name: str) -> Reduced:
     root, lines = _parse(data, name)
     if _local(root.tag) != "svg":
         raise InputError(f"not an SVG drawing (its root is <{_local(root.tag)}>)", file=name)
+    if _space(root.tag) not in ("", _SVG):
+        raise InputError(f"not an SVG drawing (its <svg> is of the namespace "
+                         f"{_space(root.tag)[:60]!r}, not SVG's)", file=name)
     count = sum(1 for _ in root.iter())
     if count > MAX_ELEMENTS:
         raise InputError(f"{count:,} elements are more than a drawing holds (at most "
@@ -292,16 +297,18 @@ class _Reducer:
         text = e.get("transform")
         matrix = None
         if text is not None and text.strip():
-            matrix = (_matrix(text) or _css_matrix(text)) if len(text) <= MAX_ATTRIBUTE \
-                else None
+            matrix = _matrix(text) if len(text) <= MAX_ATTRIBUTE else None
             if matrix is None:
                 self.leave_out(e, f"its transform {text[:24]!r} cannot be read")
                 return False
         if kind == "use" and (e.get("x") or e.get("y")):
             shift = [_length(e.get(k) or "0") for k in ("x", "y")]
-            if any(s is None or s[1] not in _PX for s in shift):
-                self.leave_out(e, "its x or y is not a length")
-                return False
+            for key, s in zip(("x", "y"), shift):
+                if s is None or s[1] not in _PX:
+                    value = e.get(key)
+                    self.leave_out(e, f"{key}={value[:24]!r} " + (
+                        _fault(value) if s is None else "is not a length in a fixed unit"))
+                    return False
             move = (1.0, 0.0, 0.0, 1.0, shift[0][0] * _PX[shift[0][1]],
                     shift[1][0] * _PX[shift[1][1]])
             matrix = _times(matrix or (1.0, 0.0, 0.0, 1.0, 0.0, 0.0), move)
@@ -329,63 +336,87 @@ class _Expansion:
         InputError
             Naming the file, the line of the ``<use>`` and the bound.
         """
-        count, chars, work, _ = self.measure(self.tree, 1)
+        count, points, work, _ = self.measure(self.tree, 1)
         work += count                              # the page's own viewport transform
-        for axis, (total, most, what) in enumerate((
-                (count, MAX_ELEMENTS, "elements"),
-                (chars, MAX_PATH_CHARS, "characters of path data"),
-                (work, MAX_TRANSFORM_WORK, "transforms applied"))):
+        bounds = ((count, MAX_ELEMENTS, "it holds {} elements",
+                   "its <use> elements expand it to {} elements"),
+                  (points, MAX_POINTS, "its paths hold {} points",
+                   "its <use> elements expand its paths to {} points"),
+                  (work, MAX_TRANSFORM_WORK, "its shapes lie under {} transforms in all",
+                   "its <use> elements put its shapes under {} transforms in all"))
+        for axis, (total, most, alone, used) in enumerate(bounds):
             if total <= most:
                 continue
             uses = [e for e in self.memo if e.tag == "use"]
+            past = f", more than a drawing needs (at most {readable_count(most)})"
             if not uses:
-                raise InputError(f"its shapes hold {total:,} {what}, more than a drawing "
-                                 f"holds (at most {most:,})", file=self.name)
+                raise InputError(alone.format(readable_count(total)) + past, file=self.name)
             use = max(uses, key=lambda u: self.memo[u][axis])
-            raise InputError(f"its <use> elements expand it to {total:,} {what}, more than "
-                             f"a drawing holds (at most {most:,}); this <use> of "
-                             f"{use.get('href', '')[:40]} alone makes "
-                             f"{self.memo[use][axis]:,}", file=self.name, line=self.line(use))
+            raise InputError(used.format(readable_count(total)) + past
+                             + f"; this <use> of {use.get('href', '')[:40]} alone makes "
+                             f"{readable_count(self.memo[use][axis])}", file=self.name,
+                             line=self.line(use))
 
     def line(self, e: ET.Element) -> int:
         return self.kept[int(e.get(MARK))].line
 
     def measure(self, e: ET.Element, depth: int) -> tuple[int, int, int, int]:
-        """(elements, path characters, transforms applied, depth) of ``e`` expanded."""
+        """(elements, path points, transforms applied, depth) of ``e`` expanded."""
         if e in self.memo:
             if depth + self.memo[e][3] - 1 > MAX_DEPTH:
                 raise InputError(f"<{e.tag}> is nested more than {MAX_DEPTH} deep once its "
                                  "<use> elements are expanded", file=self.name,
                                  line=self.line(e))
             return self.memo[e]
-        if e in self.open:
-            raise InputError(f"<use> of {e.get('href', '')[:40]} refers to an element that "
-                             "holds it: a <use> may not loop", file=self.name,
-                             line=self.line(e))
         if depth > MAX_DEPTH:
             raise InputError(f"<{e.tag}> is nested more than {MAX_DEPTH} deep once its "
                              "<use> elements are expanded", file=self.name, line=self.line(e))
         self.open.add(e)
-        count, chars, work, deep = 1, len(e.get("d", "")) + len(e.get("points", "")), 0, 0
+        count, points, work, deep = 1, self.points(e), 0, 0
         parts = list(e)
         if e.tag == "use":
             target = self.ids.get((e.get("href") or "#")[1:])
+            if target in self.open:
+                raise InputError(f"<use> of {e.get('href', '')[:40]} refers to an element "
+                                 "that holds it: a <use> may not loop", file=self.name,
+                                 line=self.line(e))
             if target is not None:
                 parts.append(target)
         for part in parts:
-            c, ch, w, d = self.measure(part, depth + 1)
-            count, chars, work, deep = count + c, chars + ch, work + w, max(deep, d)
+            c, p, w, d = self.measure(part, depth + 1)
+            count, points, work, deep = count + c, points + p, work + w, max(deep, d)
         work += count * (e.get("transform") is not None)
         self.open.discard(e)
-        self.memo[e] = (count, chars, work, deep + 1)
+        self.memo[e] = (count, points, work, deep + 1)
         return self.memo[e]
+
+    @staticmethod
+    def points(e: ET.Element) -> int:
+        """The points ``e``'s own path data or polyline holds: half its numbers."""
+        text = e.get("d") or e.get("points")
+        return len(_NUMBER.findall(text)) // 2 if text else 0
+
+
+def readable_count(n: int) -> str:
+    """A count as a message gives it, every figure readable: in full below a million, then
+    in millions to three figures, past a billion as a power of ten.
+
+    >>> readable_count(917_447), readable_count(2_400_006), readable_count(2 ** 40)
+    ('917,447', '2.4 million', '1.1e+12')
+    """
+    if n < 1_000_000:
+        return f"{n:,}"
+    return f"{n / 1e6:.3g} million" if n < 1e9 else f"{n:.2g}"
 
 
 def _matrix(text: str) -> tuple[float, ...] | None:
-    """An SVG 1.1 transform list as one matrix (a, b, c, d, e, f); None if it is not one.
+    """An SVG transform list as one matrix (a, b, c, d, e, f); None if it is not one. Angles
+    may carry deg, rad, grad or turn, lengths px, pt, pc, mm, cm or in, as CSS allows.
 
     >>> _matrix("translate(10, 5) rotate(90)")
     (6.123233995736766e-17, 1.0, -1.0, 6.123233995736766e-17, 10.0, 5.0)
+    >>> _matrix("rotate(0.25turn)") == _matrix("rotate(90)"), _matrix("scale(nan)")
+    (True, None)
     """
     out = (1.0, 0.0, 0.0, 1.0, 0.0, 0.0)
     rest = text.strip()
@@ -394,42 +425,49 @@ def _matrix(text: str) -> tuple[float, ...] | None:
         if m is None:
             return None
         rest = rest[m.end():]
-        args = m[2].strip()
-        numbers = [float(v) for v in _NUMBER.findall(args)]
-        if _NUMBER.sub("", args).strip(" ,\t\n\r") or not all(
-                math.isfinite(v) for v in numbers):
+        args = [a for a in re.split(r"[\s,]+", m[2].strip()) if a]
+        values = [_ARGUMENT.fullmatch(a) for a in args]
+        if not all(values):
             return None
-        step = _function(m[1], numbers)
-        if step is None:
+        step = _function(m[1], [(float(v[1]), v[2]) for v in values])
+        if step is None or not all(math.isfinite(x) for x in step):
             return None
         out = _times(out, step)
     return out
 
 
-def _css_matrix(text: str) -> tuple[float, ...] | None:
-    """A transform with units (``rotate(30deg)``, ``translate(2px)``) as svgelements reads
-    it, if it reads it to six finite numbers."""
-    from svgelements import Matrix
+_ARGUMENT = re.compile(r"([+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?)"
+                       r"(deg|grad|rad|turn|px|pt|pc|mm|cm|in)?")
+_DEGREES = {None: 1.0, "deg": 1.0, "grad": 0.9, "rad": 180 / math.pi, "turn": 360.0}
 
-    try:
-        m = Matrix(text)
-    except (ValueError, IndexError, TypeError, ArithmeticError):
+
+def _function(name: str, args: list[tuple[float, str | None]]) -> tuple[float, ...] | None:
+    """One transform function's matrix, or None if it is not one SVG or CSS has, or an
+    argument has a unit it cannot have."""
+    n = len(args)
+    if name in ("rotate", "skewX", "skewY"):
+        if not args or args[0][1] not in _DEGREES or any(u not in _PX for _, u in args[1:]):
+            return None
+        v = [args[0][0] * _DEGREES[args[0][1]]] + [a * _PX[u] for a, u in args[1:]]
+    elif name in ("translate", "translateX", "translateY"):
+        if any(u not in _PX for _, u in args):
+            return None
+        v = [a * _PX[u] for a, u in args]
+    elif any(u is not None for _, u in args):
         return None
-    values = (m.a, m.b, m.c, m.d, m.e, m.f)
-    if all(isinstance(v, float) and math.isfinite(v) for v in values):
-        return values
-    return None
-
-
-def _function(name: str, v: list[float]) -> tuple[float, ...] | None:
-    """One transform function's matrix, or None if it is not one SVG 1.1 has."""
-    n = len(v)
+    else:
+        v = [a for a, _ in args]
     if name == "matrix" and n == 6:
         return tuple(v)
     if name == "translate" and n in (1, 2):
         return (1.0, 0.0, 0.0, 1.0, v[0], v[1] if n == 2 else 0.0)
+    if name in ("translateX", "translateY") and n == 1:
+        return (1.0, 0.0, 0.0, 1.0) + ((v[0], 0.0) if name == "translateX" else (0.0, v[0]))
     if name == "scale" and n in (1, 2):
         return (v[0], 0.0, 0.0, v[1] if n == 2 else v[0], 0.0, 0.0)
+    if name in ("scaleX", "scaleY") and n == 1:
+        return (v[0], 0.0, 0.0, 1.0, 0.0, 0.0) if name == "scaleX" else \
+            (1.0, 0.0, 0.0, v[0], 0.0, 0.0)
     if name == "rotate" and n in (1, 3):
         a = math.radians(math.remainder(v[0], 360.0))
         turn = (math.cos(a), math.sin(a), -math.sin(a), math.cos(a), 0.0, 0.0)
@@ -439,8 +477,8 @@ def _function(name: str, v: list[float]) -> tuple[float, ...] | None:
                       (1.0, 0.0, 0.0, 1.0, -v[1], -v[2]))
     if name in ("skewX", "skewY") and n == 1:
         t = math.tan(math.radians(math.remainder(v[0], 180.0)))
-        return (1.0, 0.0, t, 1.0, 0.0, 0.0) if name == "skewX" else (1.0, t, 0.0, 1.0, 0.0,
-                                                                      0.0)
+        return (1.0, 0.0, t, 1.0, 0.0, 0.0) if name == "skewX" else \
+            (1.0, t, 0.0, 1.0, 0.0, 0.0)
     return None
 
 
@@ -456,7 +494,7 @@ def _length(text: str) -> tuple[float, str | None] | None:
     """A length's number and unit, if it is one a drawing holds (finite, under
     :data:`MAX_NUMBER`)."""
     m = _LENGTH.fullmatch(text) if len(text) <= MAX_ATTRIBUTE else None
-    if m is None:
+    if m is None or m[2] in ("em", "ex"):     # a font's size, which svgelements leaves unread
         return None
     value = float(m[1])
     return (value, m[2]) if math.isfinite(value) and abs(value) <= MAX_NUMBER else None
@@ -464,8 +502,10 @@ def _length(text: str) -> tuple[float, str | None] | None:
 
 def _fault(text: str) -> str:
     """What is wrong with a length :func:`_length` refuses."""
-    return "is not a length" if _LENGTH.fullmatch(text[:MAX_ATTRIBUTE + 1]) is None else \
-        "is beyond any drawing"
+    m = _LENGTH.fullmatch(text[:MAX_ATTRIBUTE + 1])
+    if m is None:
+        return "is not a length"
+    return "is not a length in a fixed unit" if m[2] in ("em", "ex") else "is beyond any drawing"
 
 
 def _huge_number(text: str) -> str | None:
