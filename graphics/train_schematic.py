@@ -221,13 +221,20 @@ def _span(train: GearTrain, plane: dict[int, int], number: int) -> tuple[int, in
 
 def _axes(train: GearTrain) -> dict[int, float]:
     """Each gear's axis above the main axis (size units): 0 on the main axis, the carrier
-    radius for a planet; in an ordinary train (or on a planetary train's side shaft) the
+    radius for a planet (one in series, meshing planets alone, a centre distance beyond
+    the planet it meshes); in an ordinary train (or on a planetary train's side shaft) the
     first gear's at 0 and each next one a centre distance above the one that drives it."""
     side = train.off_axis                   # a side shaft: a centre distance off the axis
     first = next((g.number for g in train.gears
                   if not (train.planetary and train.carried(g.number)) and g.number not in side),
                  train.gears[0].number)
     y: dict[int, float] = {first: 0.0}
+    if train.planetary:      # a planet meshing a main-axis gear stands at its carrier radius
+        for mesh in train.meshes:
+            for p, c in ((mesh.a, mesh.b), (mesh.b, mesh.a)):
+                if train.carried(p) and not train.carried(c) and c not in side:
+                    rp, rc = (float(train.pitch_radius(n)) for n in (p, c))
+                    y.setdefault(p, rc - rp if mesh.internal else rc + rp)
     grew = True
     while grew:
         grew = False

@@ -184,23 +184,32 @@ def _planets(r: random.Random, spec: dict[str, Any], sun: int, ring: int, planet
 
 
 def planetary(r: random.Random) -> Train:
-    """A sun, a planet on the arm and (mostly) a ring about the sun, as the notes' Q1."""
+    """A sun, a planet on the arm and (mostly) a ring about the sun, as the notes' Q1; now
+    and then a second planet in series, meshing the first further out (Q2), the ring then
+    meshing it."""
     sun, planet = r.randint(12, 80), r.randint(12, 60)
-    ring = sun + 2 * planet if r.random() < 0.85 else 0
-    nr, ns, na, npl = r.sample(range(1, 10), 4)
-    teeth = {ns: sun, npl: planet, nr: ring}
+    nr, ns, na, npl, n2 = r.sample(range(1, 10), 5)
+    series = r.randint(12, 40) if r.random() < 0.2 else 0
+    outer = n2 if series else npl                     # the planet the ring meshes
+    ring = (sun + 2 * planet + 2 * series) if r.random() < 0.85 else 0
+    teeth = {ns: sun, npl: planet, nr: ring, n2: series}
     gears = [_gear(ns, sun, "sun"), _gear(npl, planet, "planet", na)]
     meshes = [_mesh(ns, npl)]
     e = {ns: Fraction(1), na: Fraction(0)}
     _turns(e, ns, npl, teeth, False)
+    if series:
+        gears.append(_gear(n2, series, "second planet", na))
+        meshes.append(_mesh(npl, n2))
+        _turns(e, npl, n2, teeth, False)
     if ring:
         gears.insert(0, _gear(nr, ring, "ring"))
-        meshes.append(_mesh(npl, nr, True))
-        _turns(e, npl, nr, teeth, True)
+        meshes.append(_mesh(outer, nr, True))
+        _turns(e, outer, nr, teeth, True)
     spec = {"name": "A planetary train", "gear": gears, "arm": {"number": na},
             "mesh": meshes}
     t = Train(spec, e, na)
-    t.expect = _planets(r, spec, sun, ring, planet, Fraction(sun + planet, 2))
+    if not series:
+        t.expect = _planets(r, spec, sun, ring, planet, Fraction(sun + planet, 2))
     if r.random() < 0.25:                 # a pinion on a side shaft drives the sun
         side = next(k for k in range(10, 20) if k not in teeth)
         teeth[side] = r.randint(12, 60)
