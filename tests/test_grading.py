@@ -461,3 +461,27 @@ def test_vectors_and_centres_in_a_table_are_graded_by_their_components(tmp_path)
     assert said["I25"] == "correct" and said["A_B"] == "correct"
     moved = f"name,x,y\nI25,{i25[0] + 0.2},{i25[1]}\n"
     assert _verdicts(tmp_path / "answers.csv", moved)["I25"] == "wrong position"
+
+
+def test_centres_are_not_graded_from_points_that_lie_together(tmp_path):
+    """Two labelled points at one place in the mechanism fix no scale or turn: the centres
+    are not graded, and the note says why (a frame from them would divide by zero)."""
+    from types import SimpleNamespace
+
+    from tarsim.exercises.grading.centres import grade_centres
+    from tarsim.exercises.grading.drawing import Drawing, Label
+    from tarsim.exercises.grading.grade import Grade
+
+    sol = SimpleNamespace(work=SimpleNamespace(
+        mechanism=SimpleNamespace(point_names=("A", "A4")),
+        kinematics=SimpleNamespace(points={"A": (0.1, 0.2), "A4": (0.1, 0.2)})),
+        quantities={})
+    d = Drawing(segments=[((10.0, 10.0), (20.0, 10.0))],
+                circles=[((40.0, 40.0), 0.5)],
+                labels=[Label("A", (10.5, 9.5)), Label("A4", (20.5, 9.5)),
+                        Label("I13", (40.5, 39.5))], source="s.svg")
+    out = Grade("x", "s.svg")
+    grade_centres(out, sol, d)
+    assert out.items == []
+    assert out.notes == ["the space diagram's labelled points (A, A4) lie together in the "
+                         "mechanism here: label two apart to grade its centres"]

@@ -64,8 +64,14 @@ def grade_centres(out: Grade, sol, drawing: Drawing, drafting: Drafting = DRAFTI
         out.notes.append("the space diagram needs two of the mechanism's points labelled "
                          "(O2, A, …) to grade its centres")
         return
-    a, b = max(((p, q) for p in pins for q in pins if p[0] < q[0]),
-               key=lambda pq: math.dist(pq[0][1], pq[1][1]))
+    apart = [(p, q) for p in pins for q in pins
+             if p[0] < q[0] and math.dist(true[p[0]], true[q[0]]) > 0]
+    if not apart:                           # points that lie together fix no scale or turn
+        named = ", ".join(sorted(n for n, _ in pins))
+        out.notes.append(f"the space diagram's labelled points ({named}) lie together in the "
+                         "mechanism here: label two apart to grade its centres")
+        return
+    a, b = max(apart, key=lambda pq: math.dist(pq[0][1], pq[1][1]))
     world = (true[b[0]][0] - true[a[0]][0], true[b[0]][1] - true[a[0]][1])
     paper = (b[1][0] - a[1][0], b[1][1] - a[1][1])
     frames = [Frame.fitted(world, paper, hand, origin=true[a[0]], at=a[1])

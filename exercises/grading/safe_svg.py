@@ -27,6 +27,7 @@ import xml.etree.ElementTree as ET
 from dataclasses import dataclass, field
 
 from ...constructions.errors import InputError
+from .svg_transform import PX, matrix, times
 
 __all__ = ["Kept", "Reduced", "reduce_svg", "readable_count", "MARK", "MAX_ELEMENTS", "MAX_DEPTH",
            "MAX_POINTS", "MAX_TRANSFORM_WORK"]
@@ -69,8 +70,6 @@ _GEOMETRY = {"svg": ("x", "y", "width", "height", "viewBox", "preserveAspectRati
 _LENGTH = re.compile(r"\s*([+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?)\s*"
                      r"(px|pt|pc|mm|cm|in|em|ex|%)?\s*")
 _NUMBER = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?")
-_PX = {None: 1.0, "px": 1.0, "mm": 96 / 25.4, "cm": 960 / 25.4, "in": 96.0, "pt": 96 / 72,
-       "pc": 16.0}
 
 
 @dataclass(frozen=True)
@@ -261,11 +260,11 @@ class _Reducer:
                 self.leave_out(e, f"{key}={value[:24]!r} {_fault(value)}")
                 return None
             out[key] = value.strip()
-        matrix = self.transform(e, kind)
-        if matrix is False:
+        moved = self.transform(e, kind)
+        if moved is False:
             return None
-        if matrix is not None:
-            out["transform"] = "matrix(" + " ".join(repr(v) for v in matrix) + ")"
+        if moved is not None:
+            out["transform"] = "matrix(" + " ".join(repr(v) for v in moved) + ")"
         if kind == "use" and href is not None:
             out["href"] = href
         return out
@@ -295,28 +294,28 @@ class _Reducer:
         """``e``'s transform (a ``<use>``'s x and y included) as six numbers, None for
         none, False (and a note) if it cannot be read or is beyond any drawing."""
         text = e.get("transform")
-        matrix = None
+        found = None
         if text is not None and text.strip():
-            matrix = _matrix(text) if len(text) <= MAX_ATTRIBUTE else None
-            if matrix is None:
+            found = matrix(text) if len(text) <= MAX_ATTRIBUTE else None
+            if found is None:
                 self.leave_out(e, f"its transform {text[:24]!r} cannot be read")
                 return False
         if kind == "use" and (e.get("x") or e.get("y")):
             shift = [_length(e.get(k) or "0") for k in ("x", "y")]
             for key, s in zip(("x", "y"), shift):
-                if s is None or s[1] not in _PX:
+                if s is None or s[1] not in PX:
                     value = e.get(key)
                     self.leave_out(e, f"{key}={value[:24]!r} " + (
                         _fault(value) if s is None else "is not a length in a fixed unit"))
                     return False
-            move = (1.0, 0.0, 0.0, 1.0, shift[0][0] * _PX[shift[0][1]],
-                    shift[1][0] * _PX[shift[1][1]])
-            matrix = _times(matrix or (1.0, 0.0, 0.0, 1.0, 0.0, 0.0), move)
-        if matrix is not None and not all(math.isfinite(v) and abs(v) <= MAX_NUMBER
-                                          for v in matrix):
+            move = (1.0, 0.0, 0.0, 1.0, shift[0][0] * PX[shift[0][1]],
+                    shift[1][0] * PX[shift[1][1]])
+            found = times(found or (1.0, 0.0, 0.0, 1.0, 0.0, 0.0), move)
+        if found is not None and not all(math.isfinite(v) and abs(v) <= MAX_NUMBER
+                                         for v in found):
             self.leave_out(e, "its transform goes beyond any drawing")
             return False
-        return matrix
+        return found
 
 
 class _Expansion:
@@ -407,87 +406,6 @@ def readable_count(n: int) -> str:
     if n < 1_000_000:
         return f"{n:,}"
     return f"{n / 1e6:.3g} million" if n < 1e9 else f"{n:.2g}"
-
-
-def _matrix(text: str) -> tuple[float, ...] | None:
-    """An SVG transform list as one matrix (a, b, c, d, e, f); None if it is not one. Angles
-    may carry deg, rad, grad or turn, lengths px, pt, pc, mm, cm or in, as CSS allows.
-
-    >>> _matrix("translate(10, 5) rotate(90)")
-    (6.123233995736766e-17, 1.0, -1.0, 6.123233995736766e-17, 10.0, 5.0)
-    >>> _matrix("rotate(0.25turn)") == _matrix("rotate(90)"), _matrix("scale(nan)")
-    (True, None)
-    """
-    out = (1.0, 0.0, 0.0, 1.0, 0.0, 0.0)
-    rest = text.strip()
-    while rest:
-        m = re.match(r"([A-Za-z]+)\s*\(([^()]*)\)[\s,]*", rest)
-        if m is None:
-            return None
-        rest = rest[m.end():]
-        args = [a for a in re.split(r"[\s,]+", m[2].strip()) if a]
-        values = [_ARGUMENT.fullmatch(a) for a in args]
-        if not all(values):
-            return None
-        step = _function(m[1], [(float(v[1]), v[2]) for v in values])
-        if step is None or not all(math.isfinite(x) for x in step):
-            return None
-        out = _times(out, step)
-    return out
-
-
-_ARGUMENT = re.compile(r"([+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?)"
-                       r"(deg|grad|rad|turn|px|pt|pc|mm|cm|in)?")
-_DEGREES = {None: 1.0, "deg": 1.0, "grad": 0.9, "rad": 180 / math.pi, "turn": 360.0}
-
-
-def _function(name: str, args: list[tuple[float, str | None]]) -> tuple[float, ...] | None:
-    """One transform function's matrix, or None if it is not one SVG or CSS has, or an
-    argument has a unit it cannot have."""
-    n = len(args)
-    if name in ("rotate", "skewX", "skewY"):
-        if not args or args[0][1] not in _DEGREES or any(u not in _PX for _, u in args[1:]):
-            return None
-        v = [args[0][0] * _DEGREES[args[0][1]]] + [a * _PX[u] for a, u in args[1:]]
-    elif name in ("translate", "translateX", "translateY"):
-        if any(u not in _PX for _, u in args):
-            return None
-        v = [a * _PX[u] for a, u in args]
-    elif any(u is not None for _, u in args):
-        return None
-    else:
-        v = [a for a, _ in args]
-    if name == "matrix" and n == 6:
-        return tuple(v)
-    if name == "translate" and n in (1, 2):
-        return (1.0, 0.0, 0.0, 1.0, v[0], v[1] if n == 2 else 0.0)
-    if name in ("translateX", "translateY") and n == 1:
-        return (1.0, 0.0, 0.0, 1.0) + ((v[0], 0.0) if name == "translateX" else (0.0, v[0]))
-    if name == "scale" and n in (1, 2):
-        return (v[0], 0.0, 0.0, v[1] if n == 2 else v[0], 0.0, 0.0)
-    if name in ("scaleX", "scaleY") and n == 1:
-        return (v[0], 0.0, 0.0, 1.0, 0.0, 0.0) if name == "scaleX" else \
-            (1.0, 0.0, 0.0, v[0], 0.0, 0.0)
-    if name == "rotate" and n in (1, 3):
-        a = math.radians(math.remainder(v[0], 360.0))
-        turn = (math.cos(a), math.sin(a), -math.sin(a), math.cos(a), 0.0, 0.0)
-        if n == 1:
-            return turn
-        return _times(_times((1.0, 0.0, 0.0, 1.0, v[1], v[2]), turn),
-                      (1.0, 0.0, 0.0, 1.0, -v[1], -v[2]))
-    if name in ("skewX", "skewY") and n == 1:
-        t = math.tan(math.radians(math.remainder(v[0], 180.0)))
-        return (1.0, 0.0, t, 1.0, 0.0, 0.0) if name == "skewX" else \
-            (1.0, t, 0.0, 1.0, 0.0, 0.0)
-    return None
-
-
-def _times(m: tuple[float, ...], n: tuple[float, ...]) -> tuple[float, ...]:
-    """The matrix ``m`` then ``n`` applied to a point first (SVG's ``m n``)."""
-    a, b, c, d, e, f = m
-    p, q, r, s, t, u = n
-    return (a * p + c * q, b * p + d * q, a * r + c * s, b * r + d * s, a * t + c * u + e,
-            b * t + d * u + f)
 
 
 def _length(text: str) -> tuple[float, str | None] | None:
