@@ -485,3 +485,45 @@ def test_centres_are_not_graded_from_points_that_lie_together(tmp_path):
     assert out.items == []
     assert out.notes == ["the space diagram's labelled points (A, A4) lie together in the "
                          "mechanism here: label two apart to grade its centres"]
+
+
+@pytest.mark.parametrize("file, text, says", [
+    ("deep.json", "[" * 100_000 + "]" * 100_000,
+     "deep.json: not a table of answers: its JSON nests too deep to read"),
+    ("long.json", '{"V_B": ' + "1" * 5000 + "}",
+     "long.json: the answer V_B must be a finite number under 1e+100 (SI), got inf"),
+    ("huge.json", '{"V_B": 1e308}',
+     "huge.json: the answer V_B must be a finite number under 1e+100 (SI), got 1e+308"),
+    ("bool.json", '{"V_B": true}',
+     "bool.json: the answer V_B must be a number or an [x, y] pair, got True"),
+    ("wide.csv", "V_B," + "1" * 200_000 + "\n",
+     "wide.csv:1: not CSV (field larger than field limit (131072))"),
+    ("many.json", "{" + ", ".join(f'"x{k}": 1' for k in range(201)) + "}",
+     "many.json: 201 answers, more than a table of answers gives (at most 200)"),
+    ("name.csv", "V" * 65 + ",1\n",
+     "name.csv: an answer's name runs to 65 characters; results.json's names are short "
+     "(V_B, omega4)"),
+    ("digits.csv", "V_B," + "9" * 500 + "\n",
+     "digits.csv: the answer V_B must be a finite number under 1e+100 (SI), got "
+     "'" + "9" * 36 + "…"),
+], ids=["deep-json", "5000-digits", "1e308", "bool", "wide-csv-cell", "201-answers",
+        "long-name", "500-digits"])
+def test_a_hostile_table_of_answers_is_refused_in_one_line(tmp_path, file, text, says):
+    path = tmp_path / file
+    path.write_text(text, encoding="utf-8")
+    with pytest.raises(InputError) as refused:
+        grade(SHAPER, path, 1)
+    assert str(refused.value) == says
+
+
+def test_a_table_of_answers_may_open_with_a_byte_order_mark(tmp_path):
+    right = RETURN.quantities["V_B"].reference["value"]
+    assert _verdicts(tmp_path / "bom.json", f'\ufeff{{"V_B": {right}}}')["V_B"] == "correct"
+
+
+def test_an_answer_off_a_quantity_of_zero_says_how_far_in_its_own_units():
+    from tarsim.exercises.grading.answers import _off
+
+    assert _off("omega4", 0.1, 0.0) == "omega4 is 0.1, where 0 belongs"
+    assert _off("V_B", 0.21, 0.2) == "V_B is +5.0 % off"
+    assert _off("V_B", 1e99, 1e-300) == "V_B is 1e+99, where 1e-300 belongs"

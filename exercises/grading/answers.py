@@ -39,56 +39,117 @@ def read_answers(path: Path) -> dict[str, float]:
     Raises
     ------
     InputError
-        Naming the file and what is wrong in it.
+        Naming the file (and the line, where there is one) and what is wrong in it.
     """
     name = path.name
     try:
         if path.stat().st_size > _MAX_BYTES:
             raise InputError(f"{name}: more than {_MAX_BYTES:,} bytes; a table of answers is "
                              "a few lines")
-        text = path.read_text(encoding="utf-8")
-    except (OSError, UnicodeDecodeError) as e:
-        raise InputError(f"{name}: cannot be read ({getattr(e, 'strerror', None) or e})") \
-            from None
-    rows: list[tuple[str, object]] = []
-    if path.suffix.lower() == ".json":
-        try:
-            data = json.loads(text)
-        except json.JSONDecodeError as e:
-            raise InputError(f"{name}:{e.lineno}: not JSON ({e.msg})") from None
-        if not isinstance(data, dict):
-            raise InputError(f"{name}: give an object of answers, {{\"V_B\": 0.23, …}}")
-        rows = list(data.items())
-    else:
-        for number, row in enumerate(csv.reader(io.StringIO(text)), 1):
-            if not row or not "".join(row).strip():
-                continue
-            if len(row) < 2:
-                raise InputError(f"{name}:{number}: a row is name,value or name,x,y; got "
-                                 f"{row!r}")
-            cells = [c.strip() for c in row[1:3] if c.strip()]
-            rows.append((row[0].strip(), cells[0] if len(cells) == 1 else cells))
+        text = path.read_bytes().decode("utf-8-sig")
+    except OSError as e:
+        raise InputError(f"{name}: cannot be read ({e.strerror or e})") from None
+    except UnicodeDecodeError as e:
+        raise InputError(f"{name}: not UTF-8 text (byte {e.start + 1} is not); save it as "
+                         "UTF-8") from None
+    rows = _json_rows(text, name) if path.suffix.lower() == ".json" else _csv_rows(text, name)
+    if len(rows) > _MAX_ANSWERS:
+        raise InputError(f"{name}: {len(rows):,} answers, more than a table of answers gives "
+                         f"(at most {_MAX_ANSWERS})")
     out: dict[str, float | tuple[float, float]] = {}
     for key, value in rows:
+        if len(key) > _MAX_NAME:
+            raise InputError(f"{name}: an answer's name runs to {len(key):,} characters; "
+                             "results.json's names are short (V_B, omega4)")
         if isinstance(value, dict):
             value = next((value[k] for k in ("value", "vector", "point") if k in value), None)
         try:
             if isinstance(value, (list, tuple)):
                 if len(value) != 2:
                     raise ValueError
-                answer = (float(value[0]), float(value[1]))
+                answer = (_number(value[0]), _number(value[1]))
             else:
-                answer = float(value)
+                answer = _number(value)
         except (TypeError, ValueError):
             if key.lower() in ("name", "quantity"):
                 continue                      # a CSV header row
             raise InputError(f"{name}: the answer {key} must be a number or an [x, y] pair, "
-                             f"got {value!r}") from None
-        if not all(math.isfinite(v) for v in (answer if isinstance(answer, tuple)
-                                             else (answer,))):
-            raise InputError(f"{name}: the answer {key} must be finite, got {value!r}")
-        out[str(key)] = answer
+                             f"got {_shown(value)}") from None
+        if not all(math.isfinite(v) and abs(v) <= _LARGEST
+                   for v in (answer if isinstance(answer, tuple) else (answer,))):
+            raise InputError(f"{name}: the answer {key} must be a finite number under "
+                             f"{_LARGEST:.0e} (SI), got {_shown(value)}")
+        out[key] = answer
     return out
+
+
+_MAX_ANSWERS = 200
+"""The most answers a table may give: an exercise asks for some dozen quantities."""
+
+_MAX_NAME = 64
+"""The longest name an answer may have (characters)."""
+
+_LARGEST = 1e100
+"""The largest answer read (SI): past any mechanism's, so a percentage of it stays finite."""
+
+
+def _json_rows(text: str, name: str) -> list[tuple[str, object]]:
+    """The (name, value) pairs of a JSON table; an integer is read as the float it is."""
+    try:
+        data = json.loads(text, parse_int=float)
+    except json.JSONDecodeError as e:
+        raise InputError(f"{name}:{e.lineno}: not JSON ({e.msg})") from None
+    except RecursionError:
+        raise InputError(f"{name}: not a table of answers: its JSON nests too deep to read"
+                         ) from None
+    if not isinstance(data, dict):
+        raise InputError(f"{name}: give an object of answers, {{\"V_B\": 0.23, …}}")
+    return list(data.items())
+
+
+def _csv_rows(text: str, name: str) -> list[tuple[str, object]]:
+    """The (name, value or [x, y]) rows of a CSV table, blank rows skipped."""
+    rows: list[tuple[str, object]] = []
+    reader = csv.reader(io.StringIO(text))
+    try:
+        for row in reader:
+            if not row or not "".join(row).strip():
+                continue
+            if len(row) < 2:
+                raise InputError(f"{name}:{reader.line_num}: a row is name,value or name,x,y; "
+                                 f"got {_shown(row)}")
+            cells = [c.strip() for c in row[1:3] if c.strip()]
+            rows.append((row[0].strip(), cells[0] if len(cells) == 1 else cells))
+    except csv.Error as e:
+        raise InputError(f"{name}:{reader.line_num}: not CSV ({e})") from None
+    return rows
+
+
+def _number(value: object) -> float:
+    """A value read as a number (a bool is not one).
+
+    Raises
+    ------
+    ValueError
+        If it is not one.
+    """
+    if isinstance(value, bool):
+        raise ValueError
+    return float(value)
+
+
+def _shown(value: object) -> str:
+    """A value as a message quotes it, cut short."""
+    text = repr(value)
+    return text if len(text) <= 40 else text[:37] + "…"
+
+
+def _off(name: str, value: float, expected: float) -> str:
+    """How far ``value`` is from ``expected``, in per cent where that reads."""
+    share = (value - expected) / expected * 100 if expected else math.inf
+    if math.isfinite(share) and abs(share) < 1e6:
+        return f"{name} is {share:+.1f} % off"
+    return f"{name} is {value:.4g}, where {expected:.4g} belongs"
 
 
 def grade_answers(exercise: str, sol, path: Path, drafting: Drafting = DRAFTING) -> Grade:
@@ -127,7 +188,7 @@ def grade_answers(exercise: str, sol, path: Path, drafting: Drafting = DRAFTING)
                 item.verdict, item.message = "wrong sense", f"{name} has the wrong sign"
             else:
                 item.verdict = "wrong magnitude"
-                item.message = f"{name} is {100 * (value - expected) / expected:+.1f} % off"
+                item.message = _off(name, value, expected)
         out.items.append(item)
     for name in quantities:
         if name not in answers and ("value" in quantities[name].reference
@@ -162,5 +223,7 @@ def _pair_verdict(name: str, q, value: tuple[float, float], pair, rel: float,
             item.message = f"{name} is {miss:.4g} m from where it belongs"
         else:
             item.verdict = "wrong direction"
-            item.message = f"{name} is {100 * miss / size:.1f} % of its size off"
+            share = 100 * miss / size
+            item.message = f"{name} is {share:.1f} % of its size off" if share < 1e6 else \
+                f"{name} is {miss:.4g} from where it belongs"
     return item
