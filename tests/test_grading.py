@@ -527,3 +527,29 @@ def test_an_answer_off_a_quantity_of_zero_says_how_far_in_its_own_units():
     assert _off("omega4", 0.1, 0.0) == "omega4 is 0.1, where 0 belongs"
     assert _off("V_B", 0.21, 0.2) == "V_B is +5.0 % off"
     assert _off("V_B", 1e99, 1e-300) == "V_B is 1e+99, where 1e-300 belongs"
+
+
+def test_a_class_of_names_that_are_no_text_is_graded_and_named_in_one_line_each(tmp_path):
+    """A file name of bytes that are no UTF-8, or holding a line break or a direction
+    mark, is graded into its own folder, and grades.csv and every message give it escaped,
+    on one line."""
+    import os
+
+    folder = tmp_path / "class"
+    folder.mkdir()
+    odd = os.fsdecode(b"\xff\xfe.svg")
+    (folder / odd).write_text(drawing(RETURN, Style()), encoding="utf-8")
+    (folder / "a\nb.svg").write_bytes(b"<svg")
+    (folder / "c\u202ed.svg").write_text(drawing(RETURN, Style()), encoding="utf-8")
+    out = tmp_path / "out"
+    result = CliRunner().invoke(cli, ["grade", "crank-shaper", str(folder), "-o", str(out),
+                                      "--position", "2"])
+    assert result.exit_code == 0, result.output
+    rows = list(csv.DictReader((out / "grades.csv").read_text(encoding="utf-8").splitlines()))
+    assert [r["drawing"] for r in rows] == ["a\\nb.svg", "c\\u202ed.svg", "\\xff\\xfe.svg"]
+    assert rows[0]["note"] == "a\\nb.svg:1: not an SVG drawing: its XML is broken at column 0 " \
+                              "(unclosed token)"
+    assert rows[1]["score"] == rows[2]["score"] == "100.0"
+    for row in rows[1:]:
+        data = json.loads((out / row["folder"] / "grade.json").read_text(encoding="utf-8"))
+        assert data["drawing"] == row["drawing"]

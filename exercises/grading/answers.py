@@ -23,6 +23,7 @@ from pathlib import Path
 from ...constructions.errors import InputError
 from .grade import Grade, Item
 from .drafting import DRAFTING, Drafting
+from .drawing import file_name
 from .matching import LEAST_CONDITIONING
 
 __all__ = ["grade_answers", "read_answers", "LENGTH"]
@@ -41,7 +42,7 @@ def read_answers(path: Path) -> dict[str, float]:
     InputError
         Naming the file (and the line, where there is one) and what is wrong in it.
     """
-    name = path.name
+    name = file_name(path)
     try:
         if path.stat().st_size > _MAX_BYTES:
             raise InputError(f"{name}: more than {_MAX_BYTES:,} bytes; a table of answers is "
@@ -156,7 +157,7 @@ def grade_answers(exercise: str, sol, path: Path, drafting: Drafting = DRAFTING)
     """Grade the answers in ``path`` against the position ``sol``'s quantities, at
     ``drafting``'s precision."""
     answers = read_answers(path)
-    out = Grade(exercise, path.name)
+    out = Grade(exercise, file_name(path))
     quantities = sol.quantities
     # A point is held beside the mechanism's own size, not its distance from the origin.
     points = sol.work.kinematics.points.values()

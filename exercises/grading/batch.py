@@ -21,6 +21,7 @@ from pathlib import Path
 
 from ...constructions.errors import InputError, TarsimError
 from ...graphics.export import MANIFEST
+from .drawing import file_name, printable
 from .grade import Grade, grade
 
 __all__ = ["ClassFile", "class_files", "grade_many", "folder_for", "GRADABLE"]
@@ -43,8 +44,8 @@ class ClassFile:
 
     @property
     def name(self) -> str:
-        """The file's name in the class folder."""
-        return self.path.name
+        """The file's name in the class folder, as grades.csv gives it."""
+        return file_name(self.path)
 
 
 def folder_for(name: str) -> str:
@@ -92,8 +93,8 @@ def class_files(folder: Path) -> list[ClassFile]:
         if path.is_symlink():
             target = path.resolve()
             if not target.is_relative_to(root):
-                refused = (f"not read: a link to {os.readlink(path)[:80]}, outside the class "
-                           "folder")
+                refused = (f"not read: a link to {printable(os.readlink(path))[:80]}, "
+                           "outside the class folder")
             elif not target.is_file():
                 refused = "not read: a link to no file"
         elif not path.is_file():

@@ -21,8 +21,8 @@ from pathlib import Path
 from ...constructions.errors import InputError
 from .safe_svg import MARK, MAX_ELEMENTS, MAX_POINTS, Kept, Reduced, readable_count, reduce_svg
 
-__all__ = ["Drawing", "Label", "read_drawing", "parse_drawing", "MAX_BYTES", "MAX_ELEMENTS",
-           "MAX_POINTS", "PAPER"]
+__all__ = ["Drawing", "Label", "read_drawing", "parse_drawing", "file_name", "printable",
+           "MAX_BYTES", "MAX_ELEMENTS", "MAX_POINTS", "PAPER"]
 
 MAX_BYTES = 5_000_000
 """The largest drawing read (bytes): a page of lines and labels is some kilobytes."""
@@ -63,6 +63,23 @@ class Drawing:
         return [p for s in self.segments for p in s]
 
 
+def printable(text: str) -> str:
+    r"""``text`` as one readable line: bytes that are no UTF-8 (a file name's, kept by Python
+    as surrogates) written ``\xff``, control and direction characters ``\n``, ``\u202e``.
+
+    >>> printable("a\nb\udcff\u202e.svg")
+    'a\\nb\\xff\\u202e.svg'
+    """
+    text = text.encode("utf-8", "surrogateescape").decode("utf-8", "backslashreplace")
+    return "".join(c if c.isprintable() else c.encode("unicode_escape").decode("ascii")
+                   for c in text)
+
+
+def file_name(path: str | Path) -> str:
+    """A file's name as messages, grades and grades.csv give it (:func:`printable`)."""
+    return printable(Path(path).name)
+
+
 def read_drawing(path: str | Path) -> Drawing:
     """Read the drawing at ``path``.
 
@@ -73,7 +90,7 @@ def read_drawing(path: str | Path) -> Drawing:
         too many elements, or carrying a DTD, an entity or an external reference.
     """
     path = Path(path)
-    name = path.name
+    name = file_name(path)
     try:
         size = path.stat().st_size
         if size > MAX_BYTES:

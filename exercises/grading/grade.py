@@ -79,7 +79,7 @@ def grade(exercise, source: str | Path, position: int = 0, positions=None) -> Gr
     from .answers import grade_answers
     from .centres import grade_centres
     from .drafting import DRAFTING
-    from .drawing import read_drawing
+    from .drawing import file_name, read_drawing
     from .polygon import grade_polygons
 
     path = Path(source)
@@ -98,10 +98,11 @@ def grade(exercise, source: str | Path, position: int = 0, positions=None) -> Gr
         out.weights = dict(drafting.weights)
         return out
     if suffix != ".svg":
-        raise InputError(f"{path.name}: a drawing is an .svg, and a table of answers a .json "
+        raise InputError(f"{file_name(path)}: a drawing is an .svg, and a table of answers a .json "
                          "or .csv")
     drawing = read_drawing(path)
-    out = Grade(exercise.id, path.name, overlay=(drawing, []), weights=dict(drafting.weights))
+    out = Grade(exercise.id, file_name(path), overlay=(drawing, []),
+                weights=dict(drafting.weights))
     out.notes += drawing.notes
     grade_polygons(out, sol, drawing, drafting)
     grade_centres(out, sol, drawing, drafting)
