@@ -553,3 +553,34 @@ def test_a_class_of_names_that_are_no_text_is_graded_and_named_in_one_line_each(
     for row in rows[1:]:
         data = json.loads((out / row["folder"] / "grade.json").read_text(encoding="utf-8"))
         assert data["drawing"] == row["drawing"]
+
+
+def test_links_in_a_class_folder_are_read_only_to_a_file_inside_it(tmp_path):
+    """A link to a drawing beside it is graded; links in a loop, to nothing, to a folder or
+    to a pipe each get a row saying why they were not read, and the run does not hang on
+    the pipe (a pipe named .svg is not a drawing either)."""
+    import os
+
+    folder = tmp_path / "class"
+    folder.mkdir()
+    (folder / "real.svg").write_text(drawing(RETURN, Style()), encoding="utf-8")
+    (folder / "same.svg").symlink_to("real.svg")
+    (folder / "loop1.svg").symlink_to("loop2.svg")
+    (folder / "loop2.svg").symlink_to("loop1.svg")
+    (folder / "gone.svg").symlink_to(tmp_path / "nowhere.svg")
+    (folder / "here.svg").symlink_to(".")
+    os.mkfifo(folder / "pipe.svg")
+    (folder / "to-pipe.svg").symlink_to("pipe.svg")
+    out = tmp_path / "out"
+    result = CliRunner().invoke(cli, ["grade", "crank-shaper", str(folder), "-o", str(out),
+                                      "--position", "2"])
+    assert result.exit_code == 0, result.output
+    rows = {r["drawing"]: r for r in csv.DictReader(
+        (out / "grades.csv").read_text(encoding="utf-8").splitlines())}
+    assert {n: r["note"] for n, r in rows.items() if not r["score"]} == {
+        "gone.svg": "not read: a link that leads to no file",
+        "loop1.svg": "not read: a link that leads to no file",
+        "loop2.svg": "not read: a link that leads to no file",
+        "here.svg": "not read: a link to something that is not a file",
+        "to-pipe.svg": "not read: a link to something that is not a file"}
+    assert rows["real.svg"]["score"] == rows["same.svg"]["score"] == "100.0"

@@ -80,29 +80,41 @@ def class_files(folder: Path) -> list[ClassFile]:
     Raises
     ------
     InputError
-        If the folder holds no gradable file.
+        If the folder cannot be read, or holds no gradable file.
     """
-    root = folder.resolve()
-    ours = _written_by_tarsim(folder)
+    try:
+        root = folder.resolve()
+        entries = sorted(folder.iterdir())
+        ours = _written_by_tarsim(folder)
+    except OSError as e:
+        raise InputError(f"{printable(str(folder))}: cannot be read ({e.strerror or e})"
+                         ) from None
     out = []
-    for path in sorted(folder.iterdir()):
+    for path in entries:
         if path.suffix.lower() not in GRADABLE or path.name in ours or \
                 path.name == MANIFEST:
             continue
         refused = ""
         if path.is_symlink():
-            target = path.resolve()
-            if not target.is_relative_to(root):
-                refused = (f"not read: a link to {printable(os.readlink(path))[:80]}, "
-                           "outside the class folder")
-            elif not target.is_file():
-                refused = "not read: a link to no file"
-        elif not path.is_file():
+            refused = _link_refused(path, root)
+        elif not path.is_file():              # a folder, a pipe, a device: not a drawing
             continue
         out.append(ClassFile(path, folder_for(path.name), refused))
     if not out:
-        raise InputError(f"{folder}: no .svg, .json or .csv drawings in it")
+        raise InputError(f"{printable(str(folder))}: no .svg, .json or .csv drawings in it")
     return out
+
+
+def _link_refused(path: Path, root: Path) -> str:
+    """Why the link ``path`` in the class folder ``root`` is not read, or "" if it leads to
+    a file inside it."""
+    try:
+        target = path.resolve(strict=True)
+    except (OSError, RuntimeError):          # it leads nowhere, or round in a loop
+        return "not read: a link that leads to no file"
+    if not target.is_relative_to(root):
+        return f"not read: a link to {printable(os.readlink(path))[:80]}, outside the class folder"
+    return "" if target.is_file() else "not read: a link to something that is not a file"
 
 
 def _written_by_tarsim(folder: Path) -> set[str]:
