@@ -411,7 +411,7 @@ def _shown(v: Any) -> str:
     if isinstance(v, int) and not isinstance(v, bool) and abs(v) >= 1_000_000:
         digits = str(abs(v))
         return f"{'-' if v < 0 else ''}{digits[0]}.{digits[1:3]}e+{len(digits) - 1:02d}"
-    return repr(v)
+    return f"'{v!r}'" if isinstance(v, float) else repr(v)     # a float quoted as written
 
 
 def ask_symbol(name: str) -> str:

@@ -99,6 +99,9 @@ def draw_train_schematic(train: GearTrain, title: str, outputs: tuple[int, ...] 
             fig.add(Path(((xa, 0.0), (xa, s * far), (reach[far], s * far)), "link"))
             for cy in pins[:-1]:
                 fig.add(Path(((xa, s * cy), (reach[cy], s * cy)), "link"))
+        for m in train.body(train.arm):         # a gear keyed to the arm's hub
+            if m != train.arm:
+                fig.add(Path(((xa, 0.0), (plane[m] * _PLANE, 0.0)), "link"))
         if train.arm in fixed:
             draw_hatched_band(fig, (xa, far), (xa, -far), (-1.0, 0.0))
         labels.append((str(train.arm), (xa, 0.5 * pin)))
@@ -230,6 +233,8 @@ def _axes(train: GearTrain) -> dict[int, float]:
                  train.gears[0].number)
     y: dict[int, float] = {first: 0.0}
     if train.planetary:      # a planet meshing a main-axis gear stands at its carrier radius
+        y.update({g.number: 0.0 for g in train.gears
+                  if not train.carried(g.number) and g.number not in side})
         for mesh in train.meshes:
             for p, c in ((mesh.a, mesh.b), (mesh.b, mesh.a)):
                 if train.carried(p) and not train.carried(c) and c not in side:

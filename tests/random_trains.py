@@ -210,12 +210,19 @@ def planetary(r: random.Random) -> Train:
     t = Train(spec, e, na)
     if not series:
         t.expect = _planets(r, spec, sun, ring, planet, Fraction(sun + planet, 2))
-    if r.random() < 0.25:                 # a pinion on a side shaft drives the sun
+    if r.random() < 0.25:                 # a pinion on a side shaft drives the sun, or
         side = next(k for k in range(10, 20) if k not in teeth)
         teeth[side] = r.randint(12, 60)
         gears.append(_gear(side, teeth[side], "pinion"))
-        meshes.append(_mesh(side, ns))
-        t.side[side] = (ns, Fraction(-sun, teeth[side]))
+        mate = ns
+        if r.random() < 0.4:              # a gear keyed to the arm's hub (it turns with it)
+            mate = side + 1
+            teeth[mate] = r.randint(40, 120)
+            gears.append(_gear(mate, teeth[mate], "arm gear"))
+            spec["shaft"] = [{"members": [na, mate]}]
+            e[mate] = Fraction(0)
+        meshes.append(_mesh(side, mate))
+        t.side[side] = (mate, Fraction(-teeth[mate], teeth[side]))
     return t
 
 

@@ -213,11 +213,28 @@ def _ordinary(train: GearTrain) -> TrainSpeeds:
     via: dict[int, tuple[int, Mesh | None]] = {}
     # A fixed arm (the planetary train held as an ordinary one) stands still.
     held = (train.fixed,) if train.fixed is not None else ()
+    if held:
+        locked = next((b for m in train.meshes for a, b in ((m.a, m.b), (m.b, m.a))
+                       if a in train.body(first) and b in train.body(train.fixed)), None)
+        if locked is not None:
+            raise InputError(f"the input, {train.label(first)}, meshes {train.label(locked)}, "
+                             "which is held with the fixed member: it cannot turn",
+                             file=train.source or None)
     turns = carry(train, {first: Fraction(1)}, held=held, steps=steps, via=via)
-    last = next(reversed(via)) if via else first
+    # the train value runs to the last gear the input drives (not one the fixed member holds)
+    last = next((m for m in reversed(via) if _driven(via, m, train.body(first))), first)
     steps.append(_train_value(train, first, last, via, turns[last]))
     speeds = {m: turns[m] * train.input_speed for m in train.members}
     return TrainSpeeds(speeds, tuple(steps), None, "train value")
+
+
+def _driven(via: dict[int, tuple[int, Mesh | None]], m: int, start: tuple[int, ...]) -> bool:
+    """True if ``m`` was reached from the input's body, through meshes and shafts."""
+    while m not in start:
+        if m not in via:
+            return False
+        m = via[m][0]
+    return True
 
 
 def _planetary(train: GearTrain) -> TrainSpeeds:
