@@ -44,24 +44,27 @@ def read_answers(path: Path) -> dict[str, float]:
     """
     name = file_name(path)
     try:
+        if not path.is_file():                # a pipe or a device would be read forever
+            raise InputError("not a file (a folder, a pipe or a device); give a table of "
+                             "answers", file=name)
         if path.stat().st_size > _MAX_BYTES:
-            raise InputError(f"{name}: more than {_MAX_BYTES:,} bytes; a table of answers is "
-                             "a few lines")
+            raise InputError(f"more than {_MAX_BYTES:,} bytes; a table of answers is a few "
+                             "lines", file=name)
         text = path.read_bytes().decode("utf-8-sig")
     except OSError as e:
-        raise InputError(f"{name}: cannot be read ({e.strerror or e})") from None
+        raise InputError(f"cannot be read ({e.strerror or e})", file=name) from None
     except UnicodeDecodeError as e:
-        raise InputError(f"{name}: not UTF-8 text (byte {e.start + 1} is not); save it as "
-                         "UTF-8") from None
+        raise InputError(f"not UTF-8 text (byte {e.start + 1} is not); save it as UTF-8",
+                         file=name) from None
     rows = _json_rows(text, name) if path.suffix.lower() == ".json" else _csv_rows(text, name)
     if len(rows) > _MAX_ANSWERS:
-        raise InputError(f"{name}: {len(rows):,} answers, more than a table of answers gives "
-                         f"(at most {_MAX_ANSWERS})")
+        raise InputError(f"{len(rows):,} answers, more than a table of answers gives (at most "
+                         f"{_MAX_ANSWERS})", file=name)
     out: dict[str, float | tuple[float, float]] = {}
     for key, value in rows:
         if len(key) > _MAX_NAME:
-            raise InputError(f"{name}: an answer's name runs to {len(key):,} characters; "
-                             "results.json's names are short (V_B, omega4)")
+            raise InputError(f"an answer's name runs to {len(key):,} characters; "
+                             "results.json's names are short (V_B, omega4)", file=name)
         if isinstance(value, dict):
             value = next((value[k] for k in ("value", "vector", "point") if k in value), None)
         try:
@@ -74,12 +77,12 @@ def read_answers(path: Path) -> dict[str, float]:
         except (TypeError, ValueError):
             if key.lower() in ("name", "quantity"):
                 continue                      # a CSV header row
-            raise InputError(f"{name}: the answer {key} must be a number or an [x, y] pair, "
-                             f"got {_shown(value)}") from None
+            raise InputError(f"the answer {key} must be a number or an [x, y] pair, got "
+                             f"{_shown(value)}", file=name) from None
         if not all(math.isfinite(v) and abs(v) <= _LARGEST
                    for v in (answer if isinstance(answer, tuple) else (answer,))):
-            raise InputError(f"{name}: the answer {key} must be a finite number under "
-                             f"{_LARGEST:.0e} (SI), got {_shown(value)}")
+            raise InputError(f"the answer {key} must be a finite number under "
+                             f"{_LARGEST:.0e} (SI), got {_shown(value)}", file=name)
         out[key] = answer
     return out
 
@@ -99,12 +102,12 @@ def _json_rows(text: str, name: str) -> list[tuple[str, object]]:
     try:
         data = json.loads(text, parse_int=float)
     except json.JSONDecodeError as e:
-        raise InputError(f"{name}:{e.lineno}: not JSON ({e.msg})") from None
+        raise InputError(f"not JSON ({e.msg})", file=name, line=e.lineno) from None
     except RecursionError:
-        raise InputError(f"{name}: not a table of answers: its JSON nests too deep to read"
-                         ) from None
+        raise InputError("not a table of answers: its JSON nests too deep to read",
+                         file=name) from None
     if not isinstance(data, dict):
-        raise InputError(f"{name}: give an object of answers, {{\"V_B\": 0.23, …}}")
+        raise InputError("give an object of answers, {\"V_B\": 0.23, …}", file=name)
     return list(data.items())
 
 
@@ -117,12 +120,12 @@ def _csv_rows(text: str, name: str) -> list[tuple[str, object]]:
             if not row or not "".join(row).strip():
                 continue
             if len(row) < 2:
-                raise InputError(f"{name}:{reader.line_num}: a row is name,value or name,x,y; "
-                                 f"got {_shown(row)}")
+                raise InputError(f"a row is name,value or name,x,y; got {_shown(row)}",
+                                 file=name, line=reader.line_num)
             cells = [c.strip() for c in row[1:3] if c.strip()]
             rows.append((row[0].strip(), cells[0] if len(cells) == 1 else cells))
     except csv.Error as e:
-        raise InputError(f"{name}:{reader.line_num}: not CSV ({e})") from None
+        raise InputError(f"not CSV ({e})", file=name, line=reader.line_num) from None
     return rows
 
 

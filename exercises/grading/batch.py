@@ -87,7 +87,7 @@ def class_files(folder: Path) -> list[ClassFile]:
         entries = sorted(folder.iterdir())
         ours = _written_by_tarsim(folder)
     except OSError as e:
-        raise InputError(f"{printable(str(folder))}: cannot be read ({e.strerror or e})"
+        raise InputError(f"cannot be read ({e.strerror or e})", file=printable(str(folder))
                          ) from None
     out = []
     for path in entries:
@@ -101,7 +101,7 @@ def class_files(folder: Path) -> list[ClassFile]:
             continue
         out.append(ClassFile(path, folder_for(path.name), refused))
     if not out:
-        raise InputError(f"{printable(str(folder))}: no .svg, .json or .csv drawings in it")
+        raise InputError("no .svg, .json or .csv drawings in it", file=printable(str(folder)))
     return out
 
 

@@ -92,6 +92,9 @@ def read_drawing(path: str | Path) -> Drawing:
     path = Path(path)
     name = file_name(path)
     try:
+        if not path.is_file():                # a pipe or a device would be read forever
+            raise InputError("not a file (a folder, a pipe or a device); give an SVG "
+                             "drawing", file=name)
         size = path.stat().st_size
         if size > MAX_BYTES:
             raise InputError(f"{readable_count(size)} bytes is more than a drawing holds "

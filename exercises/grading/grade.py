@@ -98,8 +98,8 @@ def grade(exercise, source: str | Path, position: int = 0, positions=None) -> Gr
         out.weights = dict(drafting.weights)
         return out
     if suffix != ".svg":
-        raise InputError(f"{file_name(path)}: a drawing is an .svg, and a table of answers a .json "
-                         "or .csv")
+        raise InputError("a drawing is an .svg, and a table of answers a .json or .csv",
+                         file=file_name(path))
     drawing = read_drawing(path)
     out = Grade(exercise.id, file_name(path), overlay=(drawing, []),
                 weights=dict(drafting.weights))
