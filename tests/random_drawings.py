@@ -416,39 +416,46 @@ def nonfinite_in(files: dict[str, str]) -> str | None:
 
 
 def run_case(text: str | bytes, path: str | Path, *, render: bool = True) -> Outcome:
-    """Write the drawing beside ``path`` (as ``<stem>.svg``), grade it against the exercise
-    its comment names (the crank-shaper's second position if none), make grade.json,
-    grade.svg and the terminal's table, and classify the outcome. ``render`` is accepted
-    for random_rotors.run_many; the files are always made."""
-    from tarsim.constructions.errors import TarsimError
-    from tarsim.exercises.grading.grade import grade
-    from tarsim.exercises.grading.report import grade_files, grade_table
+    """Write the drawing beside ``path`` (as ``<stem>.svg``), grade it as the command line
+    does (``tarsim grade EXERCISE FILE -o FOLDER --position N``, the exercise and position
+    its comment names, else the crank-shaper's second), and classify the outcome: the
+    command must write finite grade.json and grade.svg, or print one ``Error:`` line naming
+    the drawing. ``render`` is accepted for random_rotors.run_many; the files are always
+    made."""
+    from click.testing import CliRunner
+    from tarsim.exercises.cli import cli
 
     data = text if isinstance(text, bytes) else text.encode("utf-8", "surrogatepass")
     svg = Path(path).with_suffix(".svg")
     svg.write_bytes(data)
     tag = _TAG.search(data[:400].decode("latin-1"))
     name, position = (tag[1], int(tag[2])) if tag else ("crank-shaper", 2)
-    try:
-        ex, positions = _positions(name)
-        got = grade(ex, svg, position - 1, positions)
-        files = grade_files(got)
-        table = grade_table(got)
-    except TarsimError as e:
-        message = str(e)
+    out = svg.with_name(svg.stem + "-graded")
+    got = CliRunner().invoke(cli, ["grade", name, str(svg), "-o", str(out), "--position",
+                                   str(position)], prog_name="tarsim")
+    if got.exception is not None and not isinstance(got.exception, SystemExit):
+        e = got.exception
+        return Outcome("other", f"{type(e).__name__}: {e}".splitlines()[0][:300],
+                       "".join(traceback.format_exception(e)))
+    lines = got.output.strip().splitlines()
+    if got.exit_code != 0:
+        if got.exit_code != 1 or len(lines) != 1 or not lines[0].startswith("Error: "):
+            return Outcome("other", f"exit {got.exit_code}, not one Error: line",
+                           got.output[-2000:])
+        message = lines[0].removeprefix("Error: ")
         outcome, why = classify_error(message, svg.name)
+        if not message.startswith(svg.name):
+            outcome, why = "refused-unclear", "does not lead with the drawing's name"
         if len(message) > 200:
             outcome, why = "refused-unclear", f"{len(message)} characters long"
         return Outcome(outcome, message, why)
-    except Exception as e:   # noqa: BLE001 - anything else breaks the contract
-        return Outcome("other", f"{type(e).__name__}: {e}".splitlines()[0][:300],
-                       traceback.format_exc())
-    bad = nonfinite_in(files)
+    files = {f.name: f.read_text(encoding="utf-8") for f in out.glob("grade.*")}
+    bad = "grade.json is not written" if "grade.json" not in files else nonfinite_in(files)
     if bad:
         return Outcome("other", bad)
     # Text quoted from the drawing (cx='inf' in a note) is the student's own.
-    if re.search(r"(?i)(?<![a-z])[-+]?(nan|inf)(?![a-z])", re.sub(r"'[^']*'", "", table)):
-        return Outcome("other", "the grade's table prints nan or inf", table)
+    if re.search(r"(?i)(?<![a-z])[-+]?(nan|inf)(?![a-z])", re.sub(r"'[^']*'", "", got.output)):
+        return Outcome("other", "the grade's table prints nan or inf", got.output)
     return Outcome("ok")
 
 
