@@ -166,7 +166,8 @@ def test_nesting_past_the_bound_is_refused_at_its_line():
 def test_clones_symbols_markers_and_hidden_layers_are_read_as_drawn():
     """An Inkscape clone (x, y) is its original moved; a symbol is drawn where a <use> puts
     it, not where it is defined; a marker's arrowhead and a hidden layer are not drawn; a
-    style block, a script and metadata are left out without a word."""
+    style block, a script and metadata are left out without a word; a <use> of nothing
+    draws nothing."""
     svg = (PAGE + '<defs><marker id="m"><path d="M0,0 L5,2 L0,4 z"/></marker>'
            '<symbol id="s"><line x1="0" y1="0" x2="10" y2="0"/></symbol></defs>'
            '<style>line { stroke: red }</style><script>alert(1)</script><metadata><x/>'
@@ -174,6 +175,7 @@ def test_clones_symbols_markers_and_hidden_layers_are_read_as_drawn():
            '<use xlink:href="#v" x="5" y="7"/><use href="#s" transform="translate(50 50)"/>'
            '<g style="display:none"><line x1="0" y1="0" x2="99" y2="99"/></g>'
            '<g display="none"><circle cx="1" cy="1" r="1"/></g>'
+           '<use href=""/><use href="#nothing"/>'
            '<text x="3" y="4">b<tspan style="baseline-shift:sub">4</tspan></text></svg>')
     d = parse_drawing(svg.encode(), "s.svg")
     ends = sorted((round(a[0], 3), round(a[1], 3), round(b[0], 3), round(b[1], 3))

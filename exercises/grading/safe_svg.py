@@ -202,8 +202,8 @@ class _Reducer:
             raise self.fail(e, "pulls in another file (XInclude); a drawing must hold all it "
                                "shows")
         href = e.get(f"{{{_XLINK}}}href", e.get("href"))
-        if href is not None and tag in ("use", "image") and not href.startswith("#") and \
-                not (tag == "image" and href.startswith("data:")):
+        if href and href.strip() and tag in ("use", "image") and not href.startswith("#") \
+                and not (tag == "image" and href.startswith("data:")):
             raise self.fail(e, f"links to {href[:60]!r} outside the drawing; a drawing must "
                                "hold all it shows")
         if space not in ("", _SVG) or _hidden(e):
