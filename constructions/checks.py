@@ -40,11 +40,12 @@ EPS = 2.220446049250313e-16
 NOISE = 1e-12
 """A rate below this fraction of the input's is rounding, not motion: it is said as zero."""
 
-CEILING = 1e-6
+CEILING = 1e-5
 """The loosest a check may be, as a fraction of the quantity's scale. A construction that
-meets the independent reference this closely vouches for the six figures printed, however
-ill-conditioned it is; one that misses by more where its conditioning would allow it
-vouches for nothing, and is refused: a tolerance as wide as the quantity never fails."""
+meets the independent reference this closely vouches for the figures printed (a drawing's
+table gives four; steps.md six, the last of them as sure as this), however ill-conditioned
+it is; one that misses by more where its conditioning would allow it vouches for nothing,
+and is refused: a tolerance as wide as the quantity never fails."""
 
 
 @dataclass(frozen=True)

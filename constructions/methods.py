@@ -258,13 +258,13 @@ def answer_all(work: Work, methods: tuple[Method, ...]) -> tuple[dict[str, Quant
                 refused.append((answer, e))
                 continue
             answers.append(answer)
-        _left_out(work, refused, found, methods)
+        _left_out(work, refused, found, methods, using)
         quantities[ask.name] = found[0].with_alternatives(found[1:])
     return quantities, answers
 
 
 def _left_out(work: Work, refused: list[tuple[Answer, IllConditioned]], found: list[Quantity],
-              methods: tuple[Method, ...]) -> None:
+              methods: tuple[Method, ...], using: list[Method]) -> None:
     """Say which methods were too ill-conditioned to be vouched for, beside the first
     method that is (a note under the figures).
 
@@ -283,10 +283,8 @@ def _left_out(work: Work, refused: list[tuple[Answer, IllConditioned]], found: l
             work.note(said)
             continue
         ask = answer.ask
-        tried = {a.method for a, _ in refused}
         offer = next((m.chosen_by[0] for m in methods if isinstance(ask, m.answers)
-                      and m.chosen_by and m.chosen_by[0] not in work.chosen
-                      and m.name not in tried), None)
+                      and m.chosen_by and m not in using), None)
         d, units = work.mechanism.drive, work.mechanism.units
         how = ("" if e.by_reference else
                f" (conditioning {e.conditioning:.1e}), and it misses the analytic value by "

@@ -18,7 +18,7 @@ __all__ = ["contradictions"]
 
 EPS = 2.220446049250313e-16
 
-AGREE = 1e-6
+AGREE = 1e-5
 """How far a printed answer may stand from the closed form, beside its scale: the loosest
 tarsim's own checks may be (``checks.CEILING``)."""
 

@@ -114,7 +114,7 @@ def test_wrong_deltoid_far_VB_passes(tmp_path):
     q = far.results["positions"][0]["quantities"]["V_B"]
     speed = 39.94336978890228 * 93.8830469323322
     for got in (q, *q["by_method"].values()):
-        assert got["passed"] and got["tolerance"] <= 1e-6
+        assert got["passed"] and got["tolerance"] <= CEILING
         assert got["value"] * 1000 <= 1e-11 * speed, got["method"]
     near = solved(moved_file(text, -1000000.0, -5.0), tmp_path, "near")
     assert near.exercise.mechanism.origin == (0.0, 0.0)
