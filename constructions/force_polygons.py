@@ -27,6 +27,7 @@ newton); the forces are read back off it.
 from __future__ import annotations
 
 import math
+import sys
 from dataclasses import dataclass, field
 
 from . import geometry as g
@@ -41,8 +42,8 @@ from .record import Construction, Kind, Panel, Ref, Role
 from .scales import nice
 from .velocity_polygon import drawn_velocity_polygon
 
-__all__ = ["BODIES", "FORCES", "LOADS", "Forces", "answer", "draw_forces", "force_names",
-           "forces_askable", "drawn_forces"]
+__all__ = ["BODIES", "FORCES", "FORCES_WHY_NOT", "LOADS", "Forces", "answer", "draw_forces",
+           "force_names", "forces_askable", "drawn_forces"]
 
 Vec = tuple[float, float]
 
@@ -129,15 +130,17 @@ def shape_of(mech: Mechanism) -> _Shape:
         raise TarsimError(why)
     i = coupler[0]
     j = next(n for n in moving if n not in (d, i))
+    # The coupler and the output may carry points of their own besides their pins (a
+    # coupler point, a point a load acts at): the dyad's lines run through the pins alone.
     shared = [p for p in mech.link(i).names if p != a and j in mech.links_at(p)]
-    if len(mech.link(i).names) != 2 or len(shared) != 1:
+    if len(shared) != 1:
         raise TarsimError(why)
     b = shared[0]
     if not mech.slides:
-        rest = [p for p in mech.link(j).names if p != b]
-        if len(mech.link(j).names) != 2 or set(mech.links_at(rest[0])) != {1, j}:
+        pivots = [p for p in mech.link(j).names if p != b and 1 in mech.links_at(p)]
+        if len(pivots) != 1 or set(mech.links_at(pivots[0])) != {1, j}:
             raise TarsimError(why)
-        return _Shape(d, i, j, o, a, b, rest[0], None)
+        return _Shape(d, i, j, o, a, b, pivots[0], None)
     (s,) = mech.slides if len(mech.slides) == 1 else (None,)
     if (s is None or s.kind is not SlideKind.BLOCK or s.guide_link != 1 or s.link != j
             or s.point != b or mech.link(j).names != (b,)):
@@ -249,12 +252,14 @@ the friction circle over the links' lengths."""
 
 def _pin_couples(known, pins, sizes, rates, at, rho: float) -> dict:
     """``known`` with each pin's friction couple, ρ·|F| against the turning, on each of the
-    two links (the frame's left out)."""
+    two links (the frame's left out); a pin turning no faster than :data:`~.loads.RESTING`
+    of the fastest link rests, and takes none."""
     out = {k: list(v) for k, v in known.items()}
+    fastest = max([abs(w) for w in rates.values()] + [0.0])
     for pin in pins:
         point, by, on = pin
         turning = rates.get(on, 0.0) - rates.get(by, 0.0)
-        if turning == 0.0 or pin not in sizes:
+        if abs(turning) <= RESTING * fastest or pin not in sizes:
             continue
         m = -math.copysign(rho * sizes[pin], turning)
         out[on].append((at[point], (0.0, 0.0), m, f"Mf_{by}{on}"))       # of by on on
@@ -287,9 +292,8 @@ def _bodies(mech: Mechanism, out: Forces, at, known) -> dict[int, list]:
     return bodies
 
 
-_WHY = ("the force polygons are drawn for a four-bar, a slider-crank and a slotted lever "
-        "(with or without a ram on a frame guide) so far; this mechanism's forces are in the "
-        "analytic reference and the turning-moment diagram only")
+_WHY = ("the force polygons draw a four-bar, a slider-crank or a slotted lever only; this "
+        "mechanism's forces are in the turning-moment diagram (tarsim sweep)")
 
 
 def _lever_sliding(work, lv: "_Lever", at) -> dict[str, Vec]:
@@ -530,7 +534,22 @@ def _concurrent(c, draw, out: Forces, sh: _Shape, at, loads, slip=None):
 def _piston_effort(c, out: Forces, sh: _Shape, at, loads, wall: Vec, refs) -> None:
     """A slider-crank's piston effort, its loads along the stroke (laid off head to tail in
     the polygon, so their sum runs from its start to the end of the piston's part), and the
-    wall's thrust, the guide's push the polygon closed on."""
+    wall's thrust, the guide's push the polygon closed on.
+
+    Raises
+    ------
+    TarsimError
+        Where the piston stands level with the crank's pivot along the stroke (to the
+        rounding of the drawing): "toward the crank" has no sense there.
+    """
+    (ox, oy), (bx, by) = at[sh.o], at[sh.b]
+    size = max(math.dist(at[sh.o], p) for p in at.values())
+    if abs((ox - bx) * sh.guide[0] + (oy - by) * sh.guide[1]) <= 64 * sys.float_info.epsilon * size:
+        m = c.mechanism
+        raise TarsimError(f"piston_effort at θ{m.drive.link} = "
+                          f"{m.units.angle_brief(m.drive.angle)}: the piston {sh.b} stands level "
+                          f"with the crank's pivot {sh.o} along its stroke, so 'toward the crank' "
+                          f"has no sense; ask F_{sh.i}{sh.j} and F_1{sh.j}")
     u = stroke_axis(at[sh.o], at[sh.b], sh.guide)
     piston = _sum(f for _, f, _, _ in loads)
     out.efforts["piston_effort"] = piston[0] * u[0] + piston[1] * u[1]
@@ -647,8 +666,10 @@ def slotted_of(mech: Mechanism) -> _Lever:
         raise TarsimError(_WHY)
     s = block[0]
     lever = mech.link(s.guide_link)
-    if (len(lever.names) != 1 or set(mech.links_at(lever.names[0])) != {1, lever.number}
-            or s.through != (0.0, 0.0)):
+    # The lever turns about its first point; it may carry points of its own besides (a
+    # point B of an inverted slider-crank), but no other joint.
+    if (set(mech.links_at(lever.names[0])) != {1, lever.number} or s.through != (0.0, 0.0)
+            or any(mech.links_at(p) != (lever.number,) for p in lever.names[1:])):
         raise TarsimError(_WHY)
     rest = [k.number for k in mech.links if k.number not in (1, d, s.link, lever.number)]
     if not rest:
@@ -879,28 +900,38 @@ def _square(pin: Vec, middle: Vec, loads) -> Vec:
 def _world(work, link: int, local: Vec, at) -> Vec:
     """A point of ``link`` given in its own frame, where the compass drew the link."""
     k = work.mechanism.link(link)
+    (ox, oy), (lx, ly) = at[k.names[0]], k.local(k.names[0])
+    turn = _turn(work, link, at)
+    cx, cy = math.cos(turn), math.sin(turn)
+    rx, ry = local[0] - lx, local[1] - ly
+    return (ox + cx * rx - cy * ry, oy + cy * rx + cx * ry)
+
+
+def _turn(work, link: int, at) -> float:
+    """How far ``link``'s own frame stands turned from the file's, where the compass drew it:
+    by the line of its first two points; a one-point link by a slot cut in it (the slot's
+    line as drawn, which runs the slot's way), or, a block, by the guide it runs on,
+    turning with that guide when the guide is a moving link's slot."""
+    mech = work.mechanism
+    k = mech.link(link)
     names = k.names
     (ox, oy) = at[names[0]]
     if len(names) >= 2:
         (lx, ly), (mx, my) = k.local(names[0]), k.local(names[1])
         (px, py) = at[names[1]]
-        turn = math.atan2(py - oy, px - ox) - math.atan2(my - ly, mx - lx)
-    else:
-        # A one-point link takes its axis from a slot cut in it (its point on the slot's
-        # line as drawn), or, a block, from the frame guide it runs on.
-        (lx, ly), turn = k.local(names[0]), 0.0
-        slot = next((s for s in work.mechanism.slides if s.guide_link == link
-                     and s.through == (0.0, 0.0)), None)
-        block = next((s for s in work.mechanism.slides if s.link == link), None)
-        if slot is not None:
-            (px, py) = at[slot.point]
-            turn = math.atan2(py - oy, px - ox) - math.atan2(slot.direction[1],
-                                                             slot.direction[0])
-        elif block is not None and block.guide_link == 1:
-            turn = math.atan2(block.direction[1], block.direction[0])
-    cx, cy = math.cos(turn), math.sin(turn)
-    rx, ry = local[0] - lx, local[1] - ly
-    return (ox + cx * rx - cy * ry, oy + cy * rx + cx * ry)
+        return math.atan2(py - oy, px - ox) - math.atan2(my - ly, mx - lx)
+    slot = next((i for i, s in enumerate(mech.slides) if s.guide_link == link), None)
+    if slot is not None:
+        # The slot as drawn runs the way its own direction does, forward or backward of the
+        # block as the file's branch puts it (Assembly.swing_slot).
+        (wx, wy), (dx, dy) = work.assembly.guide(slot).direction, mech.slides[slot].direction
+        return math.atan2(wy, wx) - math.atan2(dy, dx)
+    block = next((s for s in mech.slides if s.link == link and s.kind is SlideKind.BLOCK),
+                 None)
+    if block is not None:
+        guide = 0.0 if block.guide_link == 1 else _turn(work, block.guide_link, at)
+        return guide + math.atan2(block.direction[1], block.direction[0])
+    return 0.0
 
 
 def _inertia(work, loads: Loads, at) -> dict[int, tuple[Vec, float]]:
@@ -986,10 +1017,12 @@ def _loads(work, loads: Loads, link: int, at, inertia) -> list[tuple[Vec, Vec, f
             # Against the point's velocity as the velocity polygon draws it, on its stroke.
             if not isinstance(f.point, str):
                 raise TarsimError("a resisting force acts at a named point of its link")
-            v = drawn_velocity_polygon(work).vector(f.point)
+            vp = drawn_velocity_polygon(work)
+            v = vp.vector(f.point)
             speed = math.hypot(*v)
-            moving = speed > 0.0 and (f.along is None or
-                                      v[0] * f.along[0] + v[1] * f.along[1] > 0.0)
+            # A point no faster than RESTING of the fastest stands still (a dead centre).
+            moving = speed > RESTING * _fastest(vp, at) and (
+                f.along is None or v[0] * f.along[0] + v[1] * f.along[1] > 0.0)
             if not moving:
                 continue                                # the return stroke: no cut
             force = (-f.resist * v[0] / speed, -f.resist * v[1] / speed)
@@ -999,17 +1032,36 @@ def _loads(work, loads: Loads, link: int, at, inertia) -> list[tuple[Vec, Vec, f
     return out
 
 
+FORCES_WHY_NOT = {kind: "the force polygons draw a four-bar, a slider-crank or a slotted lever, "
+                        "naming its joints F_<by><on>, T_<guide><block> and T<input>"
+                  for kind in (A.JointForce, A.DrivingTorque, A.Effort)}
+"""Why a force is not askable: the mechanism is none the polygons draw, or has no such
+joint. (The turning-moment diagram of ``tarsim sweep`` gives any mechanism's forces.)"""
+
+
 def forces_askable(mech: Mechanism) -> set[str]:
-    """The forces an exercise may ask of ``mech``: its joints', the driving torque, the
-    crank effort and its turning moment, and a slider-crank's piston effort and wall
-    thrust."""
-    out = force_names(mech) | {"crank_effort", "turning_moment"}
+    """The forces an exercise may ask of ``mech``, if the polygons draw it: its joints', the
+    driving torque, the crank effort and its turning moment, and a slider-crank's piston
+    effort and wall thrust."""
     try:
-        if shape_of(mech).guide is not None:
-            out |= {"piston_effort", "wall_thrust"}
+        group = _group_of(mech)
     except TarsimError:
-        pass
+        return set()
+    out = force_names(mech) | {"crank_effort", "turning_moment"}
+    if isinstance(group, _Shape) and group.guide is not None:
+        out |= {"piston_effort", "wall_thrust"}
     return out
+
+
+def _amplification(forces: Forces, size: float) -> float:
+    """How many times the largest joint force outgrows the loads it comes from (1 at the
+    least): a lever that multiplies its load so multiplies the rounding of everything drawn
+    before it (a slot's direction through a block near its pivot), which no single act's
+    conditioning sees."""
+    loads = math.fsum(math.hypot(*f) + abs(m) / size for ls in forces.loads.values()
+                      for _, f, m, _ in ls)
+    biggest = max([math.hypot(*v) for v in forces.joints.values()] + [0.0])
+    return max(1.0, biggest / loads) if loads > 0.0 else 1.0
 
 
 def drawn_forces(work) -> Forces:
@@ -1021,7 +1073,9 @@ def answer(work, ask) -> Answer:
     """A joint force, a block's couple or the driving torque, read off the force polygons.
 
     Its conditioning is the worst of the acts it rests on: the crossing that closes the
-    dyad's polygon, and the acceleration polygon the inertia loads are read off.
+    dyad's polygon (or the lever's), whose forces every later polygon takes in as numbers,
+    so the crank's answers inherit it; and the acceleration polygon the inertia loads are
+    read off.
     """
     forces = drawn_forces(work)
     c = work.assembly
@@ -1033,9 +1087,9 @@ def answer(work, ask) -> Answer:
         value = {"value": forces.couples[ask.name]}
     else:
         value = vector_value(*forces.joints[ask.name])
-    refs = forces.refs.get(ask.name, ())
-    cond = min([c[r].conditioning for r in refs] + [1.0])
+    cond = min([c[r].conditioning for refs in forces.refs.values() for r in refs] + [1.0])
     if work.has("acceleration polygon"):
         cond *= drawn_acceleration_polygon(work).worst()
+    cond /= _amplification(forces, work.assembly.size)
     return Answer(ask, value, cond, "force polygons", refs=forces.every,
                   figures=(LOADS, FORCES, BODIES), panel=Panel.FORCE)

@@ -16,9 +16,11 @@ __all__ = ["Couple", "Loads", "Mass", "PointForce", "GRAVITY", "RESTING", "crank
 GRAVITY = 9.81
 """m/s², the value the course project uses."""
 
-RESTING = 1e-9
-"""A slide sliding slower than this share of the mechanism's fastest point rests: the
-rounding of a zero, which must not choose friction's side."""
+RESTING = 1e-12
+"""A slide sliding, a pin turning or a resisted point moving slower than this share of the
+mechanism's fastest (point, or link) rests: the rounding of a zero, which must not choose
+friction's side or a resistance's way. Rounding leaves some 1e-15 of the fastest; a real
+motion of 1e-9 of it, as near a dead point, is motion, and friction acts on it in full."""
 
 
 @dataclass(frozen=True)

@@ -28,7 +28,7 @@ from .methods import Method, Work
 from .model import Mechanism
 from .overall import GRASHOF_WHY_NOT, answer_grashof, answer_mobility, grashof_askable
 from .equivalent import answer_equivalent, equivalent_askable
-from .force_polygons import answer as from_force_polygons, forces_askable
+from .force_polygons import FORCES_WHY_NOT, answer as from_force_polygons, forces_askable
 from .klein import answer_klein
 from .positions import answer_position
 from .readings import MU_WHY_NOT, answer_reading, mu_askable
@@ -102,7 +102,7 @@ METHODS: tuple[Method, ...] = (
     Method("force polygons", {A.JointForce: expected.joint_force,
                               A.DrivingTorque: expected.driving_torque,
                               A.Effort: expected.effort},
-           from_force_polygons, stage=9, askable=forces_askable),
+           from_force_polygons, stage=9, askable=forces_askable, why_not=FORCES_WHY_NOT),
     Method("readings", {A.Ratio: expected.reading, A.MechanicalAdvantage: expected.reading,
                         A.Distance: expected.reading, A.TransmissionAngle: expected.reading,
                         A.LeastVelocity: expected.reading, A.Rubbing: expected.reading},

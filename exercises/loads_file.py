@@ -11,6 +11,7 @@ one line naming file:line.
 
 from __future__ import annotations
 
+import math
 from typing import Any
 
 from ..constructions.loads import GRAVITY, Couple, Loads, Mass, PointForce
@@ -74,6 +75,11 @@ def read_loads(data: dict[str, Any], mech: Mechanism, where: SourceMap,
     if len(wheel) > 1:
         raise fail("give speed_fluctuation (the flywheel is found) or flywheel (its C_s is "
                    "found), not both", "forces", "flywheel")
+    if wheel and not mech.drive.omega:
+        key = next(iter(wheel))
+        raise fail(f"a flywheel holds a speed, but link {mech.drive.link}'s ω is 0 in [input]: "
+                   f"give it the speed the flywheel is to hold, or leave {key} out", "forces",
+                   key)
     friction = 0.0
     if "friction" in settings:
         friction = number(settings, "friction", "forces", "a coefficient of friction", 0)
@@ -88,6 +94,15 @@ def read_loads(data: dict[str, Any], mech: Mechanism, where: SourceMap,
             raise fail(f"friction_circle is the radius ρ = μ·r of every pin's friction "
                        f"circle, in {mech.units.length}, 0 or more; got {circle / metre:g}",
                        "forces", "friction_circle")
+        # ρ = μ·r, r a pin's radius, and a pin is smaller than the link it joins: a circle
+        # as long as a link would lock it at every position.
+        spans = [(k.span(p, q), k) for k in mech.links if k.number != 1
+                 for i, p in enumerate(k.names) for q in k.names[i + 1:]]
+        if spans and circle >= min(spans, key=lambda t: t[0])[0]:
+            span, k = min(spans, key=lambda t: t[0])
+            raise fail(f"a friction circle of {circle / metre:g} {mech.units.length} is as long "
+                       f"as {k.label}, {span / metre:g} {mech.units.length}: ρ = μ·r, r a pin's "
+                       "radius, is far smaller than its link", "forces", "friction_circle")
     masses = []
     for i, t in enumerate(entries("mass")):
         n = link(t, "mass", i)
@@ -98,7 +113,7 @@ def read_loads(data: dict[str, Any], mech: Mechanism, where: SourceMap,
         centre, named = _centre(t.get("centre", "mid"), k, metre,
                                 lambda msg, i=i: fail(msg, "mass", "centre", i))
         if "inertia" in t:
-            inertia = number(t, "inertia", "mass", "a moment of inertia", i)
+            inertia = _inertia(t, i, n, fail)
             if not inertia > 0:
                 raise fail(f"link {n}'s moment of inertia must be positive, got "
                            f"{inertia:g} kg·m²", "mass", "inertia", i)
@@ -157,8 +172,29 @@ def read_loads(data: dict[str, Any], mech: Mechanism, where: SourceMap,
         forces.append(PointForce(n, point, (fx, fy), name))
     couples = [Couple(link(t, "couple", i), number(t, "moment", "couple", "a couple", i),
                       str(t.get("name", ""))) for i, t in enumerate(entries("couple"))]
+    if not (masses or forces or couples):
+        raise fail("nothing loads the mechanism: give [[mass]], [[force]] or [[couple]] "
+                   "tables with the [forces] settings", "forces")
     return Loads(tuple(masses), tuple(forces), tuple(couples), GRAVITY if gravity else 0.0,
                  friction=friction, friction_circle=circle, **wheel)
+
+
+INERTIAS = (1e-15, 1e6)
+"""The moments of inertia (kg·m²) a file may give: a link a few millimetres long has some
+1e-9, so the range runs well below a length's or a mass's."""
+
+
+def _inertia(t: dict, i: int, link: int, fail) -> float:
+    """Link ``link``'s moment of inertia as [[mass]] ``i`` gives it (kg·m²)."""
+    v = t.get("inertia")
+    if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v):
+        raise fail(f"link {link}'s moment of inertia must be a number, got {v!r:.40}", "mass",
+                   "inertia", i)
+    low, high = INERTIAS
+    if v != 0 and not low <= abs(v) <= high:
+        raise fail(f"link {link}'s moment of inertia must be between {low:g} and {high:g} "
+                   f"kg·m², got {v:g}", "mass", "inertia", i)
+    return float(v)
 
 
 def _centre(v: Any, k, metre: float, fail) -> tuple[tuple[float, float], str]:

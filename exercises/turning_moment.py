@@ -1,9 +1,11 @@
 """The turning-moment diagram of a loaded mechanism over a turn, and its flywheel.
 
-At equal steps of the input's turn the analytic solver gives the motion and the force
-reference (:mod:`..constructions.reference.kinetostatics`) the driving torque and every
-joint force; the torque is checked at each step by the balance of power, which shares no
-joint force with it. The diagram is read as the textbooks read it
+At equal steps of the input's turn, the input turning steadily at its ω (α = 0, as the
+diagram and the flywheel assume: an α the file gives belongs to its one position), the
+analytic solver gives the motion and the force reference
+(:mod:`..constructions.reference.kinetostatics`) the driving torque and every joint force;
+the torque is checked at each step by the balance of power, which shares no joint force
+with it. The diagram is read as the textbooks read it
 (:mod:`..constructions.reference.flywheel`): the mean torque, the energy areas between
 curve and mean, the greatest fluctuation of energy, and the flywheel for a coefficient of
 speed fluctuation (or the coefficient a given flywheel allows).
@@ -11,7 +13,9 @@ speed fluctuation (or the coefficient a given flywheel allows).
 
 from __future__ import annotations
 
+import dataclasses
 import math
+import sys
 from collections.abc import Callable
 from dataclasses import dataclass, field
 
@@ -49,17 +53,32 @@ class TurningMoment:
     gaps: list[tuple[float, str]] = field(default_factory=list)
     power_miss: float = 0.0
     """The worst disagreement of the balance of power, relative to the greatest torque."""
+    biggest: float = 0.0
+    """The greatest torque of the turn (N·m)."""
     marks: list[tuple[float, float, float, str]] = field(default_factory=list)
     """The driving torque by the force polygons at the positions the exercise solves:
     (turned angle in rad, its torque and the curve's there, both positive the way the input
     turns, N·m; the position's label)."""
 
     @property
+    def noise(self) -> float:
+        """The torque's rounding (N·m): what its two ways of finding it (the joint forces
+        and the balance of power) disagree by, and never less than a few roundings of the
+        greatest torque."""
+        return max(self.power_miss, 16 * sys.float_info.epsilon) * self.biggest
+
+    @property
     def reading(self) -> Fluctuation | None:
-        """The diagram read for its mean and energy areas; None if the turn has gaps."""
+        """The diagram read for its mean and energy areas; None if the turn has gaps. A
+        mean within the torque's rounding is 0 (the loads do no net work over a turn), and
+        a torque that stays within its rounding of its mean is steady: no areas, ΔE = 0."""
         if self.gaps:
             return None
-        return fluctuation(self.angles, self.torques)
+        r = fluctuation(self.angles, self.torques)
+        mean = 0.0 if abs(r.mean) <= self.noise else r.mean
+        if max(abs(t - r.mean) for t in self.torques) <= self.noise:
+            return Fluctuation(mean, (), (), 0.0, self.angles[0], self.angles[0])
+        return dataclasses.replace(r, mean=mean) if mean != r.mean else r
 
     @property
     def turning(self) -> str:
@@ -83,11 +102,18 @@ class TurningMoment:
         if r is None:
             return [f"turning moment: {len(self.gaps)} positions could not be solved "
                     f"({self.gaps[0][1]}), so the diagram is not read"]
-        out = [f"mean driving torque {r.mean:.6g} N·m ({self.turning}); greatest "
-               f"fluctuation of energy ΔE = {r.delta_e:.6g} J (between θ = "
-               f"{self.theta(r.lowest):.2f}° and {self.theta(r.highest):.2f}°), from "
-               f"{len(r.areas)} areas"]
-        if loads.speed_fluctuation:
+        if r.areas:
+            out = [f"at steady speed, mean driving torque {r.mean:.6g} N·m ({self.turning}); "
+                   f"greatest fluctuation of energy ΔE = {r.delta_e:.6g} J (between θ = "
+                   f"{self.theta(r.lowest):.2f}° and {self.theta(r.highest):.2f}°), from "
+                   f"{len(r.areas)} areas"]
+        else:
+            out = [f"at steady speed, the driving torque is steady at {r.mean:.6g} N·m "
+                   f"({self.turning}) round the turn: ΔE = 0"]
+        if loads.speed_fluctuation and not r.delta_e:
+            out.append(f"no flywheel is needed for C_s = {loads.speed_fluctuation:g}: the "
+                       "torque does not fluctuate")
+        elif loads.speed_fluctuation:
             i = flywheel_inertia(r.delta_e, self.omega, loads.speed_fluctuation)
             out.append(f"flywheel for C_s = {loads.speed_fluctuation:g} at ω = "
                        f"{self.omega:.6g} rad/s: I = ΔE/(C_s·ω²) = {i:.6g} kg·m²")
@@ -112,7 +138,9 @@ class TurningMoment:
             (d, t) if t is not None else None for d, t in zip(degrees, self.torques)) + (
             (360.0, self.torques[0]) if self.torques[0] is not None else None,))
         r = self.reading
-        series, fills, tags, notes = [curve], [], [], []
+        series, fills, tags = [curve], [], []
+        notes = [words("the input turning steadily at ω = {omega} {unit} (α = 0)",
+                       omega=numerals(f"{self.omega:.4g}"), unit=unit_words("rad/s"))]
         torque = unit_words("N·m")
         if r is not None:
             series.append(Series(words("mean {value} {unit}", value=numerals(f"{r.mean:.4g}"),
@@ -202,7 +230,7 @@ def turning_moment(ex: Exercise, steps: int = 360,
         angle = drive.angle + sense * turned
         out.angles.append(turned)
         try:
-            m = mech.with_drive(Drive(drive.link, angle, drive.omega, drive.alpha))
+            m = mech.with_drive(Drive(drive.link, angle, drive.omega, 0.0))
             kin = solver.solve(m)
             s = balance(m, kin, loads)
             vw = power_torque(m, kin, loads)
@@ -224,6 +252,7 @@ def turning_moment(ex: Exercise, steps: int = 360,
         raise TarsimError(f"the forces are solved at no position of the turn, so there is no "
                           f"turning-moment diagram: {why}")
     out.power_miss = max(misses, default=0.0) / (biggest or 1.0)
+    out.biggest = biggest
     out.marks = _drawn_marks(ex)
     return out
 
@@ -247,8 +276,8 @@ def _drawn_marks(ex: Exercise) -> list[tuple[float, float, float, str]]:
     out = []
     for sol in worked.positions:
         q = sol.quantities.get(f"T{drive.link}")
-        if q is None:
-            continue
+        if q is None or sol.assembly.mechanism.drive.alpha:
+            continue        # not asked, or a position that speeds up: off the steady curve
         theta = sol.assembly.mechanism.drive.angle
         turned = (sense * (theta - drive.angle)) % (2 * math.pi)
         label = sol.position.label if sol.position else f"θ{drive.link}"

@@ -56,7 +56,7 @@ def draw_loads(shown: Slice, loads: dict, *, title: str, per_cm: float | None = 
     def overlay(view: View, fig: Figure, placer: LabelPlacer):
         taken = [(view(a), view(b)) for a, b in links]
         pts = [view(w) for ls in loads.values() for w, _, _, _ in ls]
-        xs, ys = [p[0] for p in pts], [p[1] for p in pts]
+        xs, ys = [p[0] for p in pts] or [0.0], [p[1] for p in pts] or [0.0]
         extent = max(max(xs) - min(xs), max(ys) - min(ys), 40.0)
         force_cm = nice_per_cm(biggest, _REACH * extent)        # newtons a paper cm
         k = 10.0 / force_cm

@@ -98,3 +98,28 @@ def test_the_force_polygons_fall_on_the_turning_moment_curve():
     for _, drawn, curve, _ in tm.marks:
         assert drawn == pytest.approx(curve, rel=1e-12)
     assert tm.marks[0][1] == pytest.approx(232.941176, rel=1e-8)    # clockwise positive
+
+
+def test_the_diagram_is_drawn_at_steady_speed():
+    """The loaded four-bar's file gives α2 = 5 rad/s² at its one position; round the turn
+    the input runs steadily (α = 0), so weight, inertia and a couple on a rocker (which
+    swings back over its own path) do no net work: the mean torque is 0, and the drawn
+    position, which speeds up, is no mark on the steady curve."""
+    tm = turning_moment(load_exercise(FORCES["four-bar-forces"]), 72)
+    assert tm.reading.mean == 0.0
+    assert tm.marks == []
+    assert tm.lines()[0].startswith("at steady speed, mean driving torque 0 N·m")
+
+
+def test_a_constant_gas_force_does_no_net_work():
+    """engine-forces: 5 kN of gas all round the turn, weight and inertia: all conservative
+    or periodic at steady speed, so the mean is 0, said as 0 and not as its rounding."""
+    tm = turning_moment(load_exercise(FORCES["engine-forces"]), 72)
+    assert tm.reading.mean == 0.0 and tm.reading.delta_e > 100.0
+
+
+def test_a_flywheel_for_a_standing_input_is_refused():
+    text = SHAPER.read_text(encoding="utf-8").replace("omega = -1 ", "omega = 0 ", 1)
+    with pytest.raises(InputError, match=r"cs.toml:\d+: a flywheel holds a speed, but link "
+                                         r"2's ω is 0 in \[input\]"):
+        parse_exercise(text, "cs.toml", "cs")

@@ -9,6 +9,9 @@ Keys are the English words as the figure code says them
 from __future__ import annotations
 
 WORDS: dict[str, str] = {
+    # the turning-moment diagram (exercises/turning_moment.py)
+    "the input turning steadily at ω = {omega} {unit} (α = 0)":
+        "ورودی با سرعت ثابت ω = {omega} {unit} می\u200cچرخد (α = ۰)",
     # the force polygons
     "each link's loads head to tail; a polygon closed by two lines crossing at x, or by its "
     "heavy closing side": "بارهای هر میله پشت سر هم؛ هر چندضلعی با دو خطی که یکدیگر را در x "

@@ -19,6 +19,7 @@ load, D'Alembert's inertia included, with no joint force in it.
 
 from __future__ import annotations
 
+import itertools
 import math
 from dataclasses import dataclass
 
@@ -29,7 +30,8 @@ from ..loads import RESTING, Loads, crank_tangent, leaning, stroke_axis
 from ..model import Mechanism, SlideKind
 from .solver import Kinematics, point_acceleration, point_velocity
 
-__all__ = ["JointForce", "Statics", "balance", "efforts", "power_torque", "world_point"]
+__all__ = ["JointForce", "Statics", "balance", "efforts", "load_scale", "power_torque",
+           "world_point"]
 
 
 @dataclass(frozen=True)
@@ -104,13 +106,39 @@ def _loads_on(kin: Kinematics, mech: Mechanism, loads: Loads, link: int
         at = world_point(kin, mech, link, f.point)
         force = f.force
         if f.resist:
+            # A point no faster than RESTING of the fastest stands still: its velocity is the
+            # rounding of a zero, which must not choose the force's way (a dead centre).
             v = point_velocity(kin, mech, link, at)
             speed = math.hypot(*v)
-            moving = speed > 0.0 and (f.along is None or v[0] * f.along[0] + v[1] * f.along[1] > 0)
+            fastest = max([math.hypot(*u) for u in kin.velocities.values()] + [0.0])
+            moving = speed > RESTING * fastest and (
+                f.along is None or v[0] * f.along[0] + v[1] * f.along[1] > 0)
             force = (-f.resist * v[0] / speed, -f.resist * v[1] / speed) if moving else (0.0, 0.0)
         out.append((at, force, 0.0))
     out += [((0.0, 0.0), (0.0, 0.0), c.moment) for c in loads.couples if c.link == link]
     return out
+
+
+def load_scale(mech: Mechanism, kin: Kinematics, loads: Loads, size: float) -> float:
+    """The force (N) the joint forces are made of, and so round at: each mass's weight and
+    inertia force, m·(g + |a_G| + ω²·size + a_in), and its inertia couple over ``size``
+    (the mechanism's, m), I·(|α| + ω² + a_in/size)/size: an acceleration is found from the
+    ω² terms and the input's acceleration a_in, and rounds at their size even where they
+    cancel; each external force's size, and each couple over ``size``. A joint force is a
+    sum of these, turned and levered; where they nearly cancel, this, not the joint force
+    itself, is what its rounding is relative to."""
+    size = size or 1.0
+    a_in = mech.input_acceleration
+    terms = []
+    for m in loads.masses:
+        w, a = kin.omegas.get(m.link, 0.0), kin.alphas.get(m.link, 0.0)
+        g = world_point(kin, mech, m.link, m.centre)
+        a_g = math.hypot(*point_acceleration(kin, mech, m.link, g))
+        terms.append(m.mass * (loads.gravity + a_g + w * w * size + a_in)
+                     + m.inertia * (abs(a) + w * w + a_in / size) / size)
+    terms += [math.hypot(*f.force) + f.resist for f in loads.forces]
+    terms += [abs(c.moment) / size for c in loads.couples]
+    return math.fsum(terms)
 
 
 def balance(mech: Mechanism, kin: Kinematics, loads: Loads) -> Statics:
@@ -145,6 +173,8 @@ def balance(mech: Mechanism, kin: Kinematics, loads: Loads) -> Statics:
             break                           # the pins' couples ran away: it locks
         change = max([abs(now[k] - sizes.get(k, math.inf)) for k in now] + [0.0])
         if (not loads.friction or held == sides) and change <= 1e-15 * biggest:
+            if loads.friction:
+                _one_way(mech, kin, loads, sides, pin_couples(mech, kin, loads, sizes))
             return statics
         # The pins' couples shrink each round's change when they settle; three rounds of
         # growth beyond the rounding mean they run away.
@@ -157,6 +187,26 @@ def balance(mech: Mechanism, kin: Kinematics, loads: Loads) -> Statics:
                      "the mechanism locks at this position", file=mech.source or None)
 
 
+def _one_way(mech: Mechanism, kin: Kinematics, loads: Loads, found: dict[int, float],
+             couples: dict[int, float]) -> None:
+    """Raise if the sliding slides' pushes hold on another choice of sides than ``found``
+    as well: friction then leaves the forces unfixed (two sets of forces each consistent
+    with the friction they take), and no one answer is the mechanism's."""
+    sliding = [i for i, s in enumerate(mech.slides) if _sliding(kin, s) != (0.0, 0.0)]
+    for signs in itertools.product((1.0, -1.0), repeat=len(sliding)):
+        sides = dict(found) | dict(zip(sliding, signs))
+        if sides == found:
+            continue
+        with np.errstate(over="ignore", invalid="ignore"):
+            _, pushes = _solve(mech, kin, loads, sides, couples)
+        if all((1.0 if pushes[i] >= 0.0 else -1.0) == sides[i] for i in sliding):
+            d = mech.drive
+            raise InputError(f"at θ{d.link} = {mech.units.angle_brief(d.angle)} friction of "
+                             f"μ = {loads.friction:g} holds the slides' pushes on two sets of "
+                             "sides, so it leaves the forces unfixed: the mechanism jams here",
+                             file=mech.source or None)
+
+
 _ROUNDS = 200
 """The most rounds friction is solved in: the pins' couples shrink their change by about
 the friction circle over the link each round, the slides' sides settle in a few."""
@@ -166,12 +216,15 @@ def pin_couples(mech: Mechanism, kin: Kinematics, loads: Loads,
                 sizes: dict[tuple[str, int, int], float]) -> dict[int, float]:
     """Each link's friction couple from its pins (N·m, CCW +): at a pin whose force is
     ``sizes[pin]``, the force touches the friction circle of radius ρ on the side that
-    resists the turning of one link on the other, a couple ρ·|F| against it on each."""
+    resists the turning of one link on the other, a couple ρ·|F| against it on each. A pin
+    that turns no faster than :data:`RESTING` of the fastest link rests: its turning is the
+    rounding of a zero, which must not choose friction's side, and it takes no couple."""
     out: dict[int, float] = {}
+    fastest = max([abs(w) for w in kin.omegas.values()] + [0.0])
     for pin in mech.pin_pairs:
         _, by, on = pin
         turning = kin.omegas.get(on, 0.0) - kin.omegas.get(by, 0.0)
-        if turning == 0.0 or pin not in sizes:
+        if abs(turning) <= RESTING * fastest or pin not in sizes:
             continue
         m = -math.copysign(loads.friction_circle * sizes[pin], turning)
         out[on] = out.get(on, 0.0) + m
@@ -250,8 +303,18 @@ def _solve(mech: Mechanism, kin: Kinematics, loads: Loads, sides: dict[int, floa
             b[r:r + 3] -= (f[0], f[1], _cross(arm(link, at), f) + mz)
         b[r + 2] -= couples.get(link, 0.0)
     _refuse_redundancy(a, columns, mech)
-    x, *_ = np.linalg.lstsq(a, b, rcond=None)
-    sv = np.linalg.svd(a, compute_uv=False)
+    # Equilibrated: each row and column over its largest entry, so a moment row (lever arms
+    # of a small mechanism) weighs as a force row does, and a small joint force is found to
+    # its own rounding, not to the largest one's times the system's spread of scales.
+    rows = np.max(np.abs(a), axis=1)
+    rows[rows == 0.0] = 1.0
+    cols = np.max(np.abs(a / rows[:, None]), axis=0)
+    cols[cols == 0.0] = 1.0
+    scaled = a / rows[:, None] / cols[None, :]
+    y, *_ = np.linalg.lstsq(scaled, b / rows, rcond=None)
+    x = _refined(a, b, y / cols, lambda r: np.linalg.lstsq(scaled, r / rows, rcond=None)[0]
+                 / cols)
+    sv = np.linalg.svd(scaled, compute_uv=False)
     residual = float(np.max(np.abs(a @ x - b))) if len(b) else 0.0
     joints, i = [], 0
     while i < len(columns):
@@ -270,6 +333,22 @@ def _solve(mech: Mechanism, kin: Kinematics, loads: Loads, sides: dict[int, floa
     return (Statics(tuple(joints), float(x[-1]), driver, residual,
                     float(sv[-1] / sv[0]) if len(sv) and sv[0] else 0.0,
                     tuple(pushes[k] for k in range(len(mech.slides)))), pushes)
+
+
+def _refined(a: np.ndarray, b: np.ndarray, x: np.ndarray, solve, rounds: int = 2) -> np.ndarray:
+    """``x`` refined against its residual b − a·x, each row summed exactly (``math.fsum``
+    of its products): a joint force many times smaller than the loads (a light dyad beside
+    a heavy load at the crank's pivot) is then found to the rounding of its own equations,
+    not to the largest force's times the system's spread of scales."""
+    rows, rhs = a.tolist(), b.tolist()
+    for _ in range(rounds):
+        xs = x.tolist()
+        r = np.array([math.fsum([bi] + [-aij * xj for aij, xj in zip(row, xs)])
+                      for row, bi in zip(rows, rhs)])
+        if not r.any():
+            break
+        x = x + solve(r)
+    return x
 
 
 def _refuse_redundancy(a: np.ndarray, columns, mech: Mechanism) -> None:
