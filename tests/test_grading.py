@@ -584,3 +584,17 @@ def test_links_in_a_class_folder_are_read_only_to_a_file_inside_it(tmp_path):
         "here.svg": "not read: a link to something that is not a file",
         "to-pipe.svg": "not read: a link to something that is not a file"}
     assert rows["real.svg"]["score"] == rows["same.svg"]["score"] == "100.0"
+
+
+def test_a_centre_in_a_table_is_where_the_exercises_file_puts_it(tmp_path):
+    # The four-bar with its frame moved to O2 = (1000, 500) mm: its pivots, the centres I12
+    # and I14, are given where the file puts them (in metres, as results.json gives them).
+    text = resolve("four-bar").read_text(encoding="utf-8")
+    text = text.replace("O2 = [0, 0]", "O2 = [1000, 500]").replace("O4 = [300, 0]",
+                                                                   "O4 = [1300, 500]")
+    text = text.replace('find = ["', 'find = ["I12", "I14", "', 1)
+    ex = parse_exercise(text, str(tmp_path / "moved.toml"))
+    path = tmp_path / "answers.csv"
+    path.write_text("name,x,y\nI12,1.0,0.5\nI14,1.3,0.5\n", encoding="utf-8")
+    said = {i.name: i.verdict for i in grade(ex, path, 0).items}
+    assert (said["I12"], said["I14"]) == ("correct", "correct")

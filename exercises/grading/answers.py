@@ -161,7 +161,8 @@ def grade_answers(exercise: str, sol, path: Path, drafting: Drafting = DRAFTING)
     ``drafting``'s precision."""
     answers = read_answers(path)
     out = Grade(exercise, file_name(path))
-    quantities = sol.quantities
+    # A student gives a centre where the exercise's file puts it.
+    quantities = {n: q.in_file_axes(sol.exercise.mechanism) for n, q in sol.quantities.items()}
     # A point is held beside the mechanism's own size, not its distance from the origin.
     points = sol.work.kinematics.points.values()
     reach = max([math.dist(p, r) for p in points for r in points] + [1e-300])
