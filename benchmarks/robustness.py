@@ -1,33 +1,51 @@
-"""Robustness: random mechanisms of every family, degenerate and hostile files, through the API.
+"""Robustness: random inputs of every chapter, and hostile files, through the API and the CLI.
 
-Run:  python benchmarks/robustness.py --cases 10000 --seed 1 --jobs 2 --out /tmp/robustness
+Run:  python benchmarks/robustness.py --cases 100000 --seed 1 --jobs 2 --out /tmp/robustness
 
 Measured on: 2-core AMD EPYC (x86_64), Linux, Python 3.11; see benchmarks/README.md for the
 last counts.
 
 The contract: every input either solves to finite numbers that all pass their check against
-the analytic solver, or is refused with one TarsimError line that says what and where. Each
-case (tests/random_mechanisms.py makes them, in families: four-bar, slider-crank, slotted
-lever, six-bar, contact; plus each hostile file once) is written to a .toml file and run
-through ``tarsim.load`` and ``tarsim.solve``, in worker processes so that a case that hangs
-past ``--timeout`` seconds is killed and counted. Each case is one of
+the analytic solver, and that an independent closed form does not contradict, or is refused
+with one TarsimError line that says what and where. Each chapter has a generator in tests/
+that makes its files the way textbooks and programs make them, degenerate and malformed
+ones among them, and a runner with its own oracle:
 
-- ok: solved, every check passed, every number in results.json finite;
-- refused: a TarsimError whose line names the file:line, a link, a point or a position,
-  with no number of more than 6 significant figures;
-- refused-unclear: a TarsimError that does not (work for the team);
+- linkages (tests/random_mechanisms.py: four-bars, slider-cranks, slotted levers, six-bars,
+  contacts; a four-bar's and a slider-crank's loop equations, tests/closed_forms.py);
+- gear trains (tests/random_trains.py: speed ratios from the tooth numbers, exactly);
+- cams (tests/random_cams.py: the extremes by a fine evaluation of the laws);
+- rotors and engines (tests/random_rotors.py: the residual force and couple);
+- loads and flywheels (tests/random_loads.py: the power balance T·ω = Σ F·v);
+- drawings for grading (tests/random_drawings.py: SVG as Inkscape, LibreOffice, GeoGebra, a
+  CAD program and a hand write it, and hostile SVG).
+
+Each case runs in a worker process, so a case that hangs past ``--timeout`` seconds is killed
+and counted. A case is one of
+
+- ok: solved, every check passed, the oracle agrees, every number written finite;
+- refused: a TarsimError whose line names the file:line, a link, a point or a position (or
+  what a chapter names: a gear, a segment, a mass, a plane, an element), with no number of
+  more than 6 significant figures;
+- refused-unclear: a TarsimError line that does not;
+- refused-valid: a file the oracle answers, refused (gear trains);
 - check-failed: solved, but a construction disagrees with the analytic solver;
+- wrong: solved and checked, but the chapter's closed form contradicts a printed answer;
 - other: anything else: a traceback, a non-finite number, a message of several lines, nan
-  or inf in a figure (one case in ``--render-every`` is drawn to look), or a hang. Must be 0.
+  or inf in a file written (one case in ``--render-every`` draws its figures; a drawing
+  always writes grade.svg), a hang, or a refusal the CLI (one refused case in
+  ``--cli-every``) does not give as one ``Error:`` line naming the file, exit 1, nothing
+  written. Must be 0, as must wrong.
 
-Counts are printed by outcome and by family; every case that is neither ok nor refused is
-saved as ``OUT/<outcome>/<n>.toml`` with ``<n>.txt`` (its line, traceback or failed checks),
-and ``OUT/summary.json`` holds the counts and the distinct messages, numbers masked.
+Counts are printed by chapter and by family; every case that is neither ok nor refused is
+saved as ``OUT/<outcome>/<n>.toml`` (or .svg) with ``<n>.txt`` (its line, traceback or failed
+checks), and ``OUT/summary.json`` holds the counts and the distinct messages, numbers masked.
 """
 
 from __future__ import annotations
 
 import argparse
+import importlib
 import json
 import multiprocessing as mp
 import platform
@@ -43,26 +61,87 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
 
-from random_mechanisms import HOSTILE, OUTCOMES, generate, run_case  # noqa: E402
+from random_mechanisms import HOSTILE, Outcome  # noqa: E402
 
-SAVED = ("refused-unclear", "check-failed", "other")
+CHAPTERS = {
+    "linkages": ("random_mechanisms", "run_case", 0.40),
+    "trains": ("random_trains", "run_train_case", 0.15),
+    "cams": ("random_cams", "run_case", 0.15),
+    "rotors": ("random_rotors", "run_case", 0.10),
+    "loads": ("random_loads", "run_case", 0.10),
+    "drawings": ("random_drawings", "run_case", 0.10),
+}
+"""Each chapter's generator module, its runner, and its share of the cases (by what a case
+costs and how many ways a chapter's files can go wrong)."""
+
+KINDS = ("ok", "refused", "refused-unclear", "refused-valid", "check-failed", "wrong", "other")
+"""Every outcome, in the order the table prints them."""
+
+SAVED = ("refused-unclear", "refused-valid", "check-failed", "wrong", "other")
 """The outcomes whose cases are written out for inspection."""
 
 
-def case_text(seed: int, n: int) -> tuple[str, str]:
-    """Case ``n`` of the run ``seed``: its family and its file, the same on every machine."""
-    return generate(random.Random(f"{seed}:{n}"))
+def _module(chapter: str):
+    return importlib.import_module(CHAPTERS[chapter][0])
+
+
+def case_text(seed: int, n: int, chapters: tuple[str, ...]) -> tuple[str, str, str | bytes]:
+    """Case ``n`` of the run ``seed``: its chapter, its family and its file, the same on every
+    machine."""
+    rng = random.Random(f"{seed}:{n}")
+    chapter = rng.choices(chapters, weights=[CHAPTERS[c][2] for c in chapters])[0]
+    family, text = _module(chapter).generate(rng)
+    return chapter, family, text
+
+
+def _suffix(chapter: str) -> str:
+    return ".svg" if chapter == "drawings" else ".toml"
+
+
+def cli_refusal(chapter: str, path: Path, folder: Path) -> str | None:
+    """What is wrong with how ``tarsim`` refuses the file at ``path``, or None: one
+    ``Error:`` line naming the file, exit 1, nothing written."""
+    from click.testing import CliRunner
+
+    from tarsim.exercises.cli import cli
+
+    out = folder / f"{path.stem}-out"
+    args = (["grade", "crank-shaper", str(path), "-o", str(out)] if chapter == "drawings" else
+            ["solve", str(path), "-o", str(out), "--no-pdf"])
+    result = CliRunner().invoke(cli, args, catch_exceptions=True)
+    err = result.stderr if result.exception is None or isinstance(result.exception,
+                                                                  SystemExit) else ""
+    if result.exception is not None and not isinstance(result.exception, SystemExit):
+        return f"the CLI raised {type(result.exception).__name__}: {result.exception}"
+    if result.exit_code == 0:
+        return None                     # the CLI answers what the API refused: not a refusal
+    why = []
+    if result.exit_code != 1:
+        why.append(f"exit {result.exit_code}")
+    if not (err.startswith("Error: ") and err.count("\n") == 1):
+        why.append("not one Error: line")
+    if str(path) not in err and path.name not in err:
+        why.append("does not name the file")
+    if out.exists():
+        why.append("wrote its output folder")
+    return f"the CLI's refusal: {', '.join(why)}: {err.strip()[:200]}" if why else None
 
 
 def _worker(conn, folder: str) -> None:
     """Solve the cases sent down ``conn`` one by one and send back each outcome."""
+    runners = {c: getattr(_module(c), CHAPTERS[c][1]) for c in CHAPTERS}
     while True:
         job = conn.recv()
         if job is None:
             return
-        n, text, render = job
+        n, chapter, text, render, cli = job
         start = time.perf_counter()
-        got = run_case(text, Path(folder) / f"case-{n}.toml", render=render)
+        path = Path(folder) / f"case-{n}{_suffix(chapter)}"
+        got = runners[chapter](text, path, render=render)
+        if cli and got.outcome == "refused":
+            wrong = cli_refusal(chapter, path, Path(folder))
+            if wrong:
+                got = Outcome("other", wrong, got.message)
         conn.send((n, got.__dict__, time.perf_counter() - start))
 
 
@@ -136,7 +215,7 @@ class _Pool:
 
 def pattern(message: str) -> str:
     """A message with its file, numbers and quoted values masked, to group like ones."""
-    m = re.sub(r"\S*case--?\d+\.toml(:\d+)*", "FILE", message)
+    m = re.sub(r"\S*case--?\d+\.(toml|svg)(:\d+)*", "FILE", message)
     m = re.sub(r"(?<!\w)'[^']*'(?!\w)", "'…'", m)
     m = re.sub(r"[-+−]?\d[\d,]*(\.\d+)?([eE][-+−]?\d+)?", "#", m)
     return m
@@ -160,13 +239,13 @@ class _Progress:
         self.done += 1
         if self.bar is not None:
             self.bar.update()
-            self.bar.set_postfix({k: counts[k] for k in OUTCOMES if counts[k]}, refresh=False)
+            self.bar.set_postfix({k: counts[k] for k in KINDS if counts[k]}, refresh=False)
             return
         step = max(self.total // 100, 1)
         if self.tty or self.done % step == 0 or self.done == self.total:
             rate = self.done / max(time.monotonic() - self.start, 1e-9)
             line = (f"{self.done}/{self.total}  {rate:.1f}/s  "
-                    + "  ".join(f"{k}={counts[k]}" for k in OUTCOMES))
+                    + "  ".join(f"{k}={counts[k]}" for k in KINDS if counts[k]))
             print(("\r" if self.tty else "") + line, end="" if self.tty else "\n",
                   file=sys.stderr, flush=True)
 
@@ -179,11 +258,14 @@ class _Progress:
 
 
 def main(argv: list[str] | None = None) -> int:
-    """Run the cases, print the counts, save the cases to look at; 1 if any is ``other``."""
+    """Run the cases, print the counts, save the cases to look at; 1 if any is wrong or
+    other."""
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--cases", type=int, default=300, help="random cases (default 300)")
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--jobs", type=int, default=2, help="worker processes")
+    ap.add_argument("--chapters", default=",".join(CHAPTERS),
+                    help=f"which chapters, comma-separated (default all: {', '.join(CHAPTERS)})")
     ap.add_argument("--out", default="/tmp/robustness", help="folder for the saved cases")
     ap.add_argument("--timeout", type=float, default=60.0, help="seconds before a case hangs")
     ap.add_argument("--render-timeout", type=float, default=600.0,
@@ -191,32 +273,43 @@ def main(argv: list[str] | None = None) -> int:
                          "labels of a few dozen figures takes some seconds, more on a "
                          "crowded random mechanism")
     ap.add_argument("--render-every", type=int, default=200,
-                    help="draw every N-th solved case's files to look for nan/inf (0: never)")
+                    help="draw every N-th case's files to look for nan/inf (0: never)")
+    ap.add_argument("--cli-every", type=int, default=20,
+                    help="refuse every N-th case through the CLI too (0: never)")
     ap.add_argument("--no-hostile", action="store_true", help="leave out the hostile files")
     args = ap.parse_args(argv)
+    chapters = tuple(c.strip() for c in args.chapters.split(",") if c.strip())
+    unknown = [c for c in chapters if c not in CHAPTERS]
+    if unknown:
+        ap.error(f"unknown chapter {', '.join(unknown)}; choose from {', '.join(CHAPTERS)}")
 
     out = Path(args.out)
     if out.exists():
         shutil.rmtree(out)
     out.mkdir(parents=True)
-    families: dict[int, str] = {}
+    families: dict[int, tuple[str, str]] = {}
     texts: dict[int, str | bytes] = {}
 
     def jobs():
-        if not args.no_hostile:
+        if not args.no_hostile and "linkages" in chapters:
             for k, (cls, variants) in enumerate(HOSTILE.items()):
                 for j, (variant, data) in enumerate(variants.items()):
                     n = -(100 * k + j + 1)
-                    families[n], texts[n] = f"hostile:{cls}/{variant}", data
-                    yield n, data, False
+                    families[n], texts[n] = ("linkages", f"hostile:{cls}/{variant}"), data
+                    yield n, "linkages", data, False, True
         for n in range(args.cases):
-            families[n], texts[n] = case_text(args.seed, n)
+            chapter, family, texts[n] = case_text(args.seed, n, chapters)
+            families[n] = chapter, family
             render = args.render_every > 0 and n % args.render_every == 0
-            yield n, texts[n], render
+            cli = args.cli_every > 0 and n % args.cli_every == 0
+            yield n, chapter, texts[n], render, cli
 
-    total = args.cases + (0 if args.no_hostile else sum(map(len, HOSTILE.values())))
+    hostile = 0 if args.no_hostile or "linkages" not in chapters else sum(
+        map(len, HOSTILE.values()))
+    total = args.cases + hostile
     counts: Counter = Counter()
-    by_family: dict[str, Counter] = defaultdict(Counter)
+    by_chapter: dict[str, Counter] = defaultdict(Counter)
+    by_family: dict[tuple[str, str], Counter] = defaultdict(Counter)
     patterns: dict[str, dict[str, dict]] = defaultdict(dict)
     slowest: list[tuple[float, int]] = []
     progress = _Progress(total)
@@ -226,17 +319,19 @@ def main(argv: list[str] | None = None) -> int:
         try:
             for n, got, seconds in pool.run(jobs(), args.timeout, args.render_timeout):
                 outcome = got["outcome"]
-                family = families[n].split(":")[0]
+                chapter, family = families[n]
                 counts[outcome] += 1
-                by_family[family][outcome] += 1
+                by_chapter[chapter][outcome] += 1
+                by_family[chapter, family.split(":")[0]][outcome] += 1
                 slowest = sorted(slowest + [(seconds, n)], reverse=True)[:5]
                 if outcome != "ok":
-                    key = pattern(got["message"])
+                    key = f"{chapter}: {pattern(got['message'])}"
                     seen = patterns[outcome].setdefault(key, {"count": 0, "example": n,
                                                               "message": got["message"]})
                     seen["count"] += 1
                 if outcome in SAVED:
-                    _save(out / outcome, n, families[n], texts[n], got)
+                    _save(out / outcome, n, f"{chapter}/{family}", texts[n], got,
+                          _suffix(chapter))
                 texts.pop(n, None)
                 progress.update(counts)
         finally:
@@ -244,11 +339,16 @@ def main(argv: list[str] | None = None) -> int:
             progress.close()
     elapsed = time.monotonic() - started
 
+    kinds = [k for k in KINDS if k in ("ok", "refused", "check-failed", "wrong", "other")
+             or counts[k]]
     print(f"\n{sum(counts.values())} cases in {elapsed:.0f} s ({args.jobs} jobs, seed {args.seed})")
-    print(f"{'':<16}" + "".join(f"{k:>17}" for k in OUTCOMES))
-    for family in sorted(by_family):
-        print(f"{family:<16}" + "".join(f"{by_family[family][k]:>17}" for k in OUTCOMES))
-    print(f"{'all':<16}" + "".join(f"{counts[k]:>17}" for k in OUTCOMES))
+    print(f"{'':<28}" + "".join(f"{k:>16}" for k in kinds))
+    for chapter in chapters:
+        print(f"{chapter:<28}" + "".join(f"{by_chapter[chapter][k]:>16}" for k in kinds))
+        for (c, family), got in sorted(by_family.items()):
+            if c == chapter:
+                print(f"  {family:<26}" + "".join(f"{got[k]:>16}" for k in kinds))
+    print(f"{'all':<28}" + "".join(f"{counts[k]:>16}" for k in kinds))
     for outcome in SAVED:
         for key, seen in sorted(patterns[outcome].items(), key=lambda kv: -kv[1]["count"])[:15]:
             print(f"{outcome:<16}{seen['count']:>6}  {key[:150]}  (e.g. {seen['example']})")
@@ -259,21 +359,24 @@ def main(argv: list[str] | None = None) -> int:
                    f"{platform.python_version()}",
         "seconds": round(elapsed, 1),
         "slowest": [{"case": n, "seconds": round(s, 2)} for s, n in slowest],
-        "counts": {k: counts[k] for k in OUTCOMES},
-        "by_family": {f: {k: c[k] for k in OUTCOMES} for f, c in sorted(by_family.items())},
+        "counts": {k: counts[k] for k in KINDS},
+        "by_chapter": {c: {k: by_chapter[c][k] for k in KINDS} for c in chapters},
+        "by_family": {f"{c}/{f}": {k: got[k] for k in KINDS}
+                      for (c, f), got in sorted(by_family.items())},
         "patterns": {o: sorted(p.values(), key=lambda s: -s["count"])
                      for o, p in patterns.items()},
     }
     (out / "summary.json").write_text(json.dumps(summary, indent=2, ensure_ascii=False) + "\n",
                                       encoding="utf-8")
-    return 1 if counts["other"] else 0
+    return 1 if counts["other"] or counts["wrong"] else 0
 
 
-def _save(folder: Path, n: int, family: str, text: str | bytes, got: dict) -> None:
+def _save(folder: Path, n: int, family: str, text: str | bytes, got: dict,
+          suffix: str) -> None:
     """Write case ``n``'s file and what it gave into ``folder``."""
     folder.mkdir(parents=True, exist_ok=True)
-    name = f"{n}.toml"
-    (folder / name).write_bytes(text if isinstance(text, bytes) else text.encode("utf-8"))
+    (folder / f"{n}{suffix}").write_bytes(text if isinstance(text, bytes)
+                                          else text.encode("utf-8", "surrogatepass"))
     report = [f"family: {family}", f"outcome: {got['outcome']}", f"message: {got['message']}"]
     if got.get("detail"):
         report += ["", got["detail"]]
