@@ -426,7 +426,10 @@ def _turn_wrongs(ex, steps: int = 72) -> list[str]:
         if not (steady and r.delta_e == 0.0
                 or spread - 1e-9 * (spread + reach) <= r.delta_e <= spread + reach):
             wrong.append(f"ΔE = {r.delta_e:.9g} J, the running energy spans {spread:.9g} J")
-        if loads.speed_fluctuation:
+        if loads.speed_fluctuation and r.delta_e == 0.0:
+            if not any(ln.startswith("no flywheel is needed") for ln in tm.lines()):
+                wrong.append(f"ΔE = 0, but the flywheel is said as {tm.lines()[1:2]}")
+        elif loads.speed_fluctuation:
             want = r.delta_e / (loads.speed_fluctuation * tm.omega ** 2)
             said = [ln for ln in tm.lines() if ln.startswith("flywheel for")]
             if not said or _number_after(said[0], "I = ΔE/(C_s·ω²) = ") != _g(want):
