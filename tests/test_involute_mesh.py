@@ -15,7 +15,7 @@ import math
 from pathlib import Path
 
 import pytest
-from hypothesis import given, settings
+from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
 from tarsim.constructions.errors import InputError
@@ -81,6 +81,9 @@ def test_a_gear_of_too_few_teeth_has_no_root_circle():
 @given(z1=st.integers(6, 60), more=st.integers(0, 90), angle=st.sampled_from((14.5, 20, 25)),
        form=st.sampled_from(((1.0, 1.25), (0.8, 1.0), (1.0, 1.157), (1.25, 1.5))),
        where=st.floats(-0.3, 1.3))
+# 6 teeth against 59 at 14.5°, pulled out: contact begins past P, on T3's side, and once
+# read as the wheel's tips reaching past T2
+@example(z1=6, more=53, angle=14.5, form=(1.0, 1.25), where=0.9375)
 def test_a_pair_meshes_as_its_formulas_say_or_is_refused(z1, more, angle, form, where):
     """Centre distances across the feasible range and beyond it: inside, the drawn path and
     arc of contact and the contact ratio are positive and the formulas' (to a few roundings
@@ -110,6 +113,7 @@ def test_a_pair_meshes_as_its_formulas_say_or_is_refused(z1, more, angle, form, 
     s = solve_train(parse_train(text, "pair.toml"))
     q = s.quantities
     assert s.passed, s.failures
+    assert s.mesh.interference == s.mesh_reference.interference
     working = math.acos(sum(rb) / c)
     path = reach - c * math.sin(working)
     assert path > 0

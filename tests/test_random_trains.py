@@ -38,8 +38,8 @@ def test_any_member_driving_gives_the_closed_form_ratios(seed, family, speed):
     are Willis', and the ratio of every pair of turning members is the closed form's,
     whichever member drove."""
     t = build(random.Random(seed), family)
-    if t.expect != "answer":
-        return
+    if t.expect != "answer" or len(t.members) > 24:
+        return                          # a steep chain of dozens of stages is refused
     spec = t.spec
     spec["ask"] = {"find": [f"omega{m}" for m in t.members]}
     spec["input"] |= {"speed": float(abs(speed)), "sense": "ccw" if speed > 0 else "cw"}

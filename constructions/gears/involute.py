@@ -255,10 +255,13 @@ class _Drafting:
                              arc=drawn_length(out.arc), pitch=drawn_length(out.base_pitch),
                              ratio=Number(out.contact_ratio, ".4g"),
                              angle=drawn_angle(out.pressure_angle)))
+        # A tip reaches past the other gear's tangency point when its contact end lies
+        # farther from its own gear's tangency point than that one: B beyond T3 measured
+        # from T2, A beyond T2 from T3 (from P, an end on the far side of P would pass).
         out.interference = tuple(
-            n for n, end, t in ((a, "B", "T3"), (b, "A", "T2"))
-            if g.distance(self.c.output("P"), self.c.output(end))
-            > g.distance(self.c.output("P"), self.c.output(t)) * (1 + 1e-12))
+            n for n, end, t, own in ((a, "B", "T3", "T2"), (b, "A", "T2", "T3"))
+            if g.distance(self.c.output(own), self.c.output(end))
+            > g.distance(self.c.output(own), self.c.output(t)) * (1 + 1e-12))
         for n, t, centre, rb, radius in ((a, "T2", "O2", rb2, r2 + add),
                                          (b, "T3", "O3", rb3, r3 + add)):
             if profiles:
