@@ -310,7 +310,7 @@ def involute(r: random.Random) -> Train:
     """A spur pair drawn by construction: its module (or diametral pitch), pressure angle,
     tooth form and, now and then, a centre distance off the standard one (pulled apart or
     jammed on purpose, a few)."""
-    z1 = r.randint(8, 40)
+    z1 = r.randint(6, 40)
     z2 = r.randint(z1, 120)
     t = Train({"name": "A spur pair", "gear": [_gear(2, z1, "pinion"), _gear(3, z2, "wheel")],
                "mesh": [_mesh(2, 3)]}, {2: Fraction(1), 3: Fraction(-z1, z2)})
@@ -343,9 +343,11 @@ def _involute(r: random.Random, t: Train, a: int, b: int) -> None:
     rf = [m * z / 2 - ded * m for z in (z1, z2)]
     reach = sum(math.sqrt(x * x - y * y) for x, y in zip(ra, rb))
     c = m * (z1 + z2) / 2
-    if r.random() < 0.3:
-        off = round(c + r.choice((0.05, 0.2, 0.5, 1.0, 3.0, -0.1, -0.3)) * m, 3)
-        edges = (sum(rb), ra[0] + rf[1], ra[1] + rf[0], math.hypot(sum(rb), reach))
+    edges = (sum(rb), ra[0] + rf[1], ra[1] + rf[0], math.hypot(sum(rb), reach))
+    if r.random() < 0.3:                  # near the standard distance, or anywhere between
+        low, high = max(edges[:3]), edges[3]          # the closest and the widest it meshes
+        off = round(c + r.choice((0.05, 0.2, 0.5, 1.0, 3.0, -0.1, -0.3)) * m, 3) \
+            if r.random() < 0.6 else round(low + r.uniform(-0.2, 1.2) * (high - low), 4)
         if all(abs(off - x) > 1e-9 * x for x in edges):      # not on an edge, to rounding
             c = table["centre_distance"] = off
     t.spec["involute"] = table
