@@ -168,8 +168,12 @@ def draw_forces(work) -> Forces:
     inertia = _inertia(work, loads, at)
     known = {k.number: _loads(work, loads, k.number, at, inertia) for k in mech.links
              if k.number != 1}
-    biggest = max([math.hypot(*f) for ls in known.values() for _, f, _, _ in ls] + [1e-300])
-    scale = 0.08 / nice(biggest)                   # the largest load about 80 drawing mm
+    # The largest load about 80 drawing mm; a couple counts as the force it makes across
+    # the mechanism, so loads of couples alone still get a scale.
+    size = work.assembly.size
+    biggest = max([max(math.hypot(*f), abs(m) / size) for ls in known.values()
+                   for _, f, m, _ in ls] + [1e-300])
+    scale = 0.08 / nice(biggest)
     slip = None
     if isinstance(group, _Shape):
         if loads.friction and group.guide is not None:
@@ -186,13 +190,30 @@ def draw_forces(work) -> Forces:
 
 def _analyse(c, mech: Mechanism, group, at, known, scale: float, slip) -> Forces:
     """The polygons of the group the crank drives, then the crank's, drawn in ``c`` with
-    the ``known`` loads."""
+    the ``known`` loads.
+
+    Raises
+    ------
+    TarsimError
+        If the group's forces outgrow its loads past what rounding leaves of them (a dead
+        point: the lines that close its polygon stand in line).
+    """
     out = Forces(scale)
     draw = _Drafter(c, scale)
     if isinstance(group, _Shape):
         crank_pin, pull, o, a = _dyad(c, draw, out, group, at, known, slip)
     else:
         crank_pin, pull, o, a = _slotted(c, draw, out, group, at, known, slip)
+    size = max(math.dist(p, q) for p in at.values() for q in at.values()) or 1.0
+    loads = math.fsum(math.hypot(*f) + abs(m) / size for ls in known.values()
+                      for _, f, m, _ in ls)
+    biggest = max([math.hypot(*v) for v in out.joints.values()] + [math.hypot(*pull)])
+    if not biggest * 64 * sys.float_info.epsilon <= loads:      # inf and nan fail it too
+        links = " and ".join(str(n) for n in sorted({group.i, group.j})) \
+            if isinstance(group, _Shape) else f"{group.b} and {group.l}"
+        raise TarsimError(f"links {links} stand at a dead point: the forces that hold the "
+                          "loads there outgrow them past their rounding; choose another "
+                          "position")
     _crank(c, draw, out, mech.drive.link, crank_pin, pull, o, a, at, known)
     out.every = tuple(s.id for s in c if s.id.startswith("force:"))
     out.bodies = _bodies(mech, out, at, known)

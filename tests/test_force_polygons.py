@@ -526,3 +526,53 @@ def test_loads_settings_with_nothing_to_load_are_refused():
     text = text[:text.index("[[mass]]")]
     with pytest.raises(InputError, match=r"fb.toml:\d+: nothing loads the mechanism"):
         parse_exercise(text, "fb.toml")
+
+
+MICRO = """\
+name = "a nanometre four-bar loaded by a couple alone"
+[units]
+length = "mm"
+angular_velocity = "rpm"
+[frame]
+O2 = [0.0, 0.0]
+O4 = [3.0592382824665125e-23, 4.996115262941892e-07]
+[[link]]
+number = 2
+points = ["O2", "A"]
+lengths = { O2A = 5.362072065857125e-06 }
+[[link]]
+number = 3
+points = ["A", "B"]
+lengths = { AB = 7.160793437782403e-06 }
+[[link]]
+number = 4
+points = ["O4", "B"]
+lengths = { O4B = 3.713609321277906e-06 }
+[input]
+link = 2
+angle = 166.64440073894997
+omega = 38.286900621653565
+[assembly]
+B = [4.089460164529954e-07, -3.1914123623726634e-06]
+[ask]
+find = ["F_12", "T2"]
+methods = ["polygon"]
+at = [{ angle = 90.62137551508198 }]
+[forces]
+gravity = false
+[[couple]]
+link = 3
+moment = -7.98
+"""
+
+
+def test_a_couple_alone_gets_a_force_scale():
+    """Loads of a couple alone once gave the polygons a scale of 8e298 drawing metres a
+    newton, and a 1e10 N force overflowed them. The couple's power is the driver's:
+    T2·ω2 = −M·ω3."""
+    ex = parse_exercise(MICRO, "micro.toml")
+    (sol,) = tarsim.solve(ex).positions
+    kin = solver.solve(sol.assembly.mechanism)
+    want = 7.98 * kin.omegas[3] / kin.omegas[2]
+    assert sol.quantities["T2"].value["value"] == pytest.approx(want, rel=1e-9)
+    assert math.isfinite(sol.quantities["F_12"].value["value"])
