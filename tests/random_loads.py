@@ -408,6 +408,8 @@ def _turn_wrongs(ex, steps: int = 72) -> list[str]:
         if got is None:
             continue
         want, slack = got
+        # A torque rounds at the size of the loads it is made of times the mechanism's.
+        slack = max(slack, 64 * sys.float_info.epsilon * _loads_scale(m, loads) * _size(m))
         if abs(sense * t - want) > slack:
             wrong.append(f"turning moment at θ = {math.degrees(theta):.6g}°: "
                          f"{sense * t:.9g} N·m, the balance of energy at steady speed "
