@@ -23,6 +23,8 @@ Every number is a :class:`~fractions.Fraction`; each step is a :class:`Phrase`.
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 from dataclasses import dataclass, field, replace
 from fractions import Fraction
 
@@ -67,15 +69,20 @@ def fraction_text(x: Fraction, signed: bool = False) -> str:
 
 def carry(train: GearTrain, start: dict[int, Fraction], held: tuple[int, ...] = (),
           steps: list[Phrase] | None = None,
-          via: dict[int, tuple[int, Mesh | None]] | None = None) -> dict[int, Fraction]:
+          via: dict[int, tuple[int, Mesh | None]] | None = None, *,
+          said: Callable[[Fraction], str | Phrase] = fraction_text,
+          whole: bool = True) -> dict[int, Fraction]:
     """Turns of every member, carried from ``start`` (member: turns) through the shafts and
     meshes with every axis fixed; ``held`` members stand at 0 and carry nothing. ``via``
     is filled with the member each was reached from, and the mesh (None: a shaft).
+    ``said`` is how the steps say a number of turns (as turns, or as a speed, where the
+    numbers are speeds already); a shaft is narrated only for turns.
 
     Raises
     ------
     InputError
-        If a member is reached by no mesh or shaft (the train does not hang together).
+        If ``whole`` and a member is reached by no mesh or shaft (the train does not hang
+        together).
     """
     out: dict[int, Fraction] = {}
     for m, v in start.items():
@@ -101,20 +108,21 @@ def carry(train: GearTrain, start: dict[int, Fraction], held: tuple[int, ...] = 
                         driver=train.said(a),
                         kind=Word(mesh.word),
                         way=Word("the same way" if mesh.internal else "the other way"),
-                        a=a, b=b, na=ga.teeth, nb=gb.teeth, turns=fraction_text(out[a]),
-                        result=fraction_text(out[b])))
+                        a=a, b=b, na=ga.teeth, nb=gb.teeth, turns=said(out[a]),
+                        result=said(out[b])))
                     for k in train.body(b):
                         if k != b:
                             out[k] = out[b]
                             if via is not None:
                                 via[k] = (b, None)
-                            steps.append(phrase("gears.shaft_carries",
-                                                member=train.said(k, opening=True),
-                                                other=train.said(b),
-                                                turns=fraction_text(out[b])))
+                            if said is fraction_text:
+                                steps.append(phrase("gears.shaft_carries",
+                                                    member=train.said(k, opening=True),
+                                                    other=train.said(b),
+                                                    turns=said(out[b])))
                     grew = True
     lost = [m for m in train.members if m not in out]
-    if lost:
+    if whole and lost:
         raise InputError(f"{train.label(lost[0])} is joined to the rest of the train by no "
                          "mesh or shaft", file=train.source or None)
     return out
@@ -181,29 +189,7 @@ def _carry_speeds(train: GearTrain, known: dict[int, Fraction], steps: list[Phra
                   ) -> dict[int, Fraction]:
     """The speeds ``known``, carried through ``train``'s meshes (every axis fixed) and
     shafts as far as they reach."""
-    out = dict(known)
-    for m, v in known.items():
-        for k in train.body(m):
-            out.setdefault(k, v)
-    grew = True
-    while grew:
-        grew = False
-        for mesh in train.meshes:
-            for a, b in ((mesh.a, mesh.b), (mesh.b, mesh.a)):
-                if a in out and b not in out:
-                    ga, gb = train.gear(a), train.gear(b)
-                    out[b] = out[a] * Fraction(ga.teeth, gb.teeth) * (1 if mesh.internal
-                                                                       else -1)
-                    steps.append(phrase(
-                        "gears.mesh_carries", driven=train.said(b, opening=True),
-                        driver=train.said(a), kind=Word(mesh.word),
-                        way=Word("the same way" if mesh.internal else "the other way"),
-                        a=a, b=b, na=ga.teeth, nb=gb.teeth, turns=_speed(train, out[a]),
-                        result=_speed(train, out[b])))
-                    for k in train.body(b):
-                        out.setdefault(k, out[b])
-                    grew = True
-    return out
+    return carry(train, known, steps=steps, said=lambda v: _speed(train, v), whole=False)
 
 
 def _ordinary(train: GearTrain) -> TrainSpeeds:
