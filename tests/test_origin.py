@@ -34,24 +34,25 @@ from tests.random_mechanisms import FAMILIES, generate, to_toml
 HERE = Path(__file__).parent / "reproducers"
 
 
-def moved_file(text: str, dx: float, dy: float) -> str:
-    """The mechanism file ``text`` with every coordinate it states moved by ``(dx, dy)``
-    (file units): the frame's points, the frame guides' ``through`` points and the points an
-    assembly is to be near."""
+def with_points(text: str, place) -> str:
+    """The mechanism file ``text`` with every coordinate it states, ``[x, y]``, made
+    ``place([x, y])``: the frame's points, the frame guides' ``through`` points and the
+    points an assembly is to be near."""
     data = tomllib.loads(text)
-
-    def moved(xy):
-        return [xy[0] + dx, xy[1] + dy]
-
-    data["frame"] = {k: moved(v) for k, v in data["frame"].items()}
+    data["frame"] = {k: place(v) for k, v in data["frame"].items()}
     for s in data.get("slider", []):
         if s.get("on", 1) == 1 and isinstance(s.get("through"), list):
-            s["through"] = moved(s["through"])
-    data["assembly"] = {k: v if isinstance(v, str) else moved(v)
+            s["through"] = place(s["through"])
+    data["assembly"] = {k: v if isinstance(v, str) else place(v)
                         for k, v in data.get("assembly", {}).items()}
     for many, one in (("links", "link"), ("sliders", "slider"), ("contacts", "contact")):
         data[many] = data.pop(one, [])
     return to_toml(data)
+
+
+def moved_file(text: str, dx: float, dy: float) -> str:
+    """The mechanism file ``text`` moved by ``(dx, dy)`` in its own units."""
+    return with_points(text, lambda xy: [xy[0] + dx, xy[1] + dy])
 
 
 def solved(text: str, folder: Path, name: str):
@@ -135,20 +136,8 @@ def test_a_centre_is_said_in_the_files_axes(tmp_path):
 
 def on_grid(text: str, step: float) -> str:
     """The file ``text`` with every coordinate it states rounded to a multiple of ``step``."""
-    data = tomllib.loads(text)
-
-    def snapped(xy):
-        return [round(xy[0] / step) * step, round(xy[1] / step) * step]
-
-    data["frame"] = {k: snapped(v) for k, v in data["frame"].items()}
-    for s in data.get("slider", []):
-        if s.get("on", 1) == 1 and isinstance(s.get("through"), list):
-            s["through"] = snapped(s["through"])
-    data["assembly"] = {k: v if isinstance(v, str) else snapped(v)
-                        for k, v in data.get("assembly", {}).items()}
-    for many, one in (("links", "link"), ("sliders", "slider"), ("contacts", "contact")):
-        data[many] = data.pop(one, [])
-    return to_toml(data)
+    return with_points(text, lambda xy: [round(xy[0] / step) * step,
+                                         round(xy[1] / step) * step])
 
 
 def random_file(family: str, seed: int) -> tuple[str, float]:
