@@ -45,7 +45,6 @@ checks), and ``OUT/summary.json`` holds the counts and the distinct messages, nu
 from __future__ import annotations
 
 import argparse
-import importlib
 import json
 import multiprocessing as mp
 import platform
@@ -61,18 +60,8 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
 
+from random_inputs import CHAPTERS, chapter_module, runner, suffix  # noqa: E402
 from random_mechanisms import HOSTILE, Outcome  # noqa: E402
-
-CHAPTERS = {
-    "linkages": ("random_mechanisms", "run_case", 0.40),
-    "trains": ("random_trains", "run_train_case", 0.15),
-    "cams": ("random_cams", "run_case", 0.15),
-    "rotors": ("random_rotors", "run_case", 0.10),
-    "loads": ("random_loads", "run_case", 0.10),
-    "drawings": ("random_drawings", "run_case", 0.10),
-}
-"""Each chapter's generator module, its runner, and its share of the cases (by what a case
-costs and how many ways a chapter's files can go wrong)."""
 
 KINDS = ("ok", "refused", "refused-unclear", "refused-valid", "check-failed", "wrong", "other")
 """Every outcome, in the order the table prints them."""
@@ -81,21 +70,13 @@ SAVED = ("refused-unclear", "refused-valid", "check-failed", "wrong", "other")
 """The outcomes whose cases are written out for inspection."""
 
 
-def _module(chapter: str):
-    return importlib.import_module(CHAPTERS[chapter][0])
-
-
 def case_text(seed: int, n: int, chapters: tuple[str, ...]) -> tuple[str, str, str | bytes]:
     """Case ``n`` of the run ``seed``: its chapter, its family and its file, the same on every
     machine."""
     rng = random.Random(f"{seed}:{n}")
     chapter = rng.choices(chapters, weights=[CHAPTERS[c][2] for c in chapters])[0]
-    family, text = _module(chapter).generate(rng)
+    family, text = chapter_module(chapter).generate(rng)
     return chapter, family, text
-
-
-def _suffix(chapter: str) -> str:
-    return ".svg" if chapter == "drawings" else ".toml"
 
 
 def cli_refusal(chapter: str, path: Path, folder: Path) -> str | None:
@@ -129,14 +110,14 @@ def cli_refusal(chapter: str, path: Path, folder: Path) -> str | None:
 
 def _worker(conn, folder: str) -> None:
     """Solve the cases sent down ``conn`` one by one and send back each outcome."""
-    runners = {c: getattr(_module(c), CHAPTERS[c][1]) for c in CHAPTERS}
+    runners = {c: runner(c) for c in CHAPTERS}
     while True:
         job = conn.recv()
         if job is None:
             return
         n, chapter, text, render, cli = job
         start = time.perf_counter()
-        path = Path(folder) / f"case-{n}{_suffix(chapter)}"
+        path = Path(folder) / f"case-{n}{suffix(chapter)}"
         got = runners[chapter](text, path, render=render)
         if cli and got.outcome == "refused":
             wrong = cli_refusal(chapter, path, Path(folder))
@@ -331,7 +312,7 @@ def main(argv: list[str] | None = None) -> int:
                     seen["count"] += 1
                 if outcome in SAVED:
                     _save(out / outcome, n, f"{chapter}/{family}", texts[n], got,
-                          _suffix(chapter))
+                          suffix(chapter))
                 texts.pop(n, None)
                 progress.update(counts)
         finally:

@@ -14,14 +14,10 @@ from __future__ import annotations
 
 import json
 import math
-import random
-import tempfile
 from pathlib import Path
 
 import pytest
 from click.testing import CliRunner
-from hypothesis import HealthCheck, Phase, given, settings
-from hypothesis import strategies as st
 
 from tarsim.constructions.balancing.rotor import Engine, Mass, Plane, Rotor
 from tarsim.constructions.balancing.engine import draw_engine
@@ -32,7 +28,6 @@ from tarsim.exercises.balance_solution import solve_balance
 from tarsim.exercises.catalog import bundled_balancing, load
 from tarsim.exercises.cli import cli
 from tarsim.exercises.rotor_file import parse_balance
-from tests.random_rotors import generate, run_case
 
 
 def test_the_notes_example_balances_at_1_3907_kg_m_and_3_90_degrees():
@@ -200,20 +195,3 @@ def test_sizes_no_figure_can_hold_are_refused_in_one_line(old, new):
     with pytest.raises(InputError, match=r"rotor.toml:\d+: .* must be between 1e-06 and "
                                           r"1e\+06 in size \(or 0\)"):
         parse_balance(TEXT.replace(old, new, 1), "rotor.toml")
-
-
-@pytest.mark.parametrize("family", ["static-rotor", "two-plane-rotor", "single-cylinder",
-                                    "inline-engine"])
-@settings(max_examples=40, deadline=None, derandomize=True,
-          phases=[Phase.explicit, Phase.generate], suppress_health_check=[HealthCheck.too_slow])
-@given(seed=st.integers(0, 2**32 - 1))
-def test_a_random_rotor_or_engine_is_right_or_refused_in_a_located_line(family, seed):
-    """tests/random_rotors.py: textbook rotors and engines, degenerate ones (polygons that
-    close on themselves, every mass in one plane, planes close together) and broken files.
-    Solved, each is held to the closed forms summed there from the file itself (the
-    balanced rotor keeps no force or couple; an engine's forces are |Σ e^{iθ}|·m·ω²·r and
-    the like); refused, to one line naming the file:line, a mass, a plane or a cylinder."""
-    _, text = generate(random.Random(seed), family)
-    with tempfile.TemporaryDirectory() as folder:
-        got = run_case(text, Path(folder) / f"{family}-{seed}.toml", render=seed % 4 == 0)
-    assert got.outcome in ("ok", "refused"), (got.outcome, got.message, got.detail, text)
