@@ -75,6 +75,8 @@ class Tables:
     def units(self, length: str, speed: str) -> tuple[str, str]:
         """The ``[units]`` length and speed, ``length`` and ``speed`` if not stated."""
         units = self.data.get("units", {})
+        if not isinstance(units, dict):
+            raise self.fail('[units] is a table: length = "mm", speed = "rpm"', None, "units")
         length, speed = units.get("length", length), units.get("speed", speed)
         if length not in LENGTH_UNITS:
             raise self.fail(f"unknown length unit '{length}'; use {', '.join(LENGTH_UNITS)}",

@@ -67,6 +67,8 @@ def test_the_follower_rises_during_the_rise_whichever_way_the_cam_turns():
     ("kind = \"roller\"\nradius = 10 ", "kind = \"flat-faced\"\nmotion = \"oscillating\" ",
      ["an oscillating flat face is not laid out yet"]),
     ("radius = 10 ", "radius = 10\ncolour = \"red\" ", ["unknown setting 'colour'"]),
+    # [units] written as one value, not a table (once a traceback)
+    ("[units]\nlength = \"mm\"\nspeed = \"rpm\"\n", "units = \"mm\"\n", ["[units] is a table"]),
 ])
 def test_a_bad_cam_is_refused_in_one_line_at_its_place(old, new, words):
     assert old in CAM

@@ -683,11 +683,12 @@ def _singular(system: _System, jac: np.ndarray) -> tuple[float, SingularPosition
     deg = math.degrees(system.m.drive.angle)
     who = "link" if len(free) == 1 else "links"
     at = system.m.units.angle_brief(system.m.drive.angle)
-    return rcond, SingularPosition(
+    error = SingularPosition(
         f"dead point at input angle {at}: {who} {', '.join(map(str, free))} can move "
-        f"while link {system.m.drive.link} is held (singular Jacobian, rcond {rcond:.1e}), so ω "
-        f"and α are undefined; choose another input angle or another input link",
-        link=free[0], angle_deg=deg)
+        f"while link {system.m.drive.link} is held, so ω and α are undefined; choose another "
+        "input angle or another input link", link=free[0], angle_deg=deg)
+    error.detail = f"the loop equations' Jacobian is singular there: rcond {rcond:.1e}"
+    return rcond, error
 
 
 def constraint_jacobian(mech: Mechanism) -> np.ndarray:
