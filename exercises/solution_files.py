@@ -290,7 +290,8 @@ class ChapterFiles:
         """Every file as text, by name."""
         files = {f"{stem}.svg": to_svg(fig) for stem, fig in self.figures.items()}
         files["steps.md"] = self.steps()
-        files["results.json"] = json.dumps(self.results, indent=2, ensure_ascii=False) + "\n"
+        files["results.json"] = json.dumps(self.results, indent=2, ensure_ascii=False,
+                                           allow_nan=False) + "\n"     # never NaN nor inf
         return files
 
     def write(self, folder: str | Path, *, pdf: bool = True) -> list[Path]:

@@ -14,9 +14,10 @@ from fractions import Fraction
 from functools import cached_property
 from typing import Any
 
+from ..constructions.checks import CEILING
 from ..constructions.errors import InputError
 from ..constructions.gears.involute import InvoluteMesh, draw_involute_mesh, least_teeth_drawn
-from ..constructions.gears.kutzbach import Kutzbach, draw_kutzbach, undrawable
+from ..constructions.gears.kutzbach import DRAWN, Kutzbach, draw_kutzbach, undrawable
 from ..constructions.gears.tabular import TrainSpeeds, fraction_text, tabulate
 from ..constructions.gears.torques import balance, say_balance
 from ..constructions.narration import (narrate, numeral, numerals, phrase, significant, spoken,
@@ -149,7 +150,7 @@ class TrainSolution(ChapterFiles):
         # thousand roundings of it (the path is a difference of two such lengths), the
         # contact ratio to that over the base pitch, the arc over cos φ′, an angle to that
         # over the radii it is measured on.
-        size = _EPS * math.dist(*got.centres.values())
+        size = DRAWN * math.dist(*got.centres.values())
         allowed = {"contact_ratio": size / got.base_pitch,
                    "arc_of_contact": size / math.cos(got.pressure_angle),
                    "pressure_angle": size / got.radii["base2"]}.get(name, size)
@@ -183,24 +184,32 @@ class TrainSolution(ChapterFiles):
                     out.append(ref)
         return out
 
+    def diagram_check(self, member: int) -> tuple[float, float]:
+        """How far the velocity diagram reads ``member``'s ω from the table's, and how far
+        the drawing's rounding lets it, both relative to the fastest member the diagram
+        draws (its velocities are drawn at that size, so a member at rest has a scale too).
+
+        The rounding is the drawing's coordinates' over the span of radii the line was read
+        across (:meth:`~tarsim.constructions.gears.kutzbach.Kutzbach.rounding`), held to
+        :data:`~tarsim.constructions.checks.CEILING`: never as wide as the speeds drawn.
+        """
+        k, per = self.diagram, self.train.units.per_rad_s
+        # the input turns (a speed of 0 is refused), so the fastest is no 0
+        fastest = max(abs(float(self.found.speeds[m])) for m in k.omegas) * per
+        miss = abs(k.omegas[member] - float(self.found.speeds[member]) * per) / fastest
+        return miss, min(k.rounding(member, fastest) / fastest, CEILING)
+
     @property
     def diagram_misses(self) -> list[int]:
-        """The members whose ω the velocity diagram reads away from the table's: beyond the
-        roundings of the drawing (velocities of the fastest member's size, at radii up to
-        the largest), over the span of radii its line was read across."""
+        """The members whose ω the velocity diagram reads away from the table's, beyond
+        its drawing's rounding (:meth:`diagram_check`)."""
         if self.diagram is None:
             return []
-        per = self.train.units.per_rad_s
-        k, c = self.diagram, self.diagram.construction
-        scale = max(abs(float(v)) for v in self.found.speeds.values()) * per
-        top = max(abs(c.output(p).xy[1]) for pair in k.through.values() for p in pair)
         out = []
-        for body, (p, q) in k.through.items():
-            span = abs(c.output(q).xy[1] - c.output(p).xy[1]) or top
-            for m in body:
-                if abs(k.omegas[m] - float(self.found.speeds[m]) * per) > \
-                        _EPS * scale * top / span:
-                    out.append(m)
+        for m in self.diagram.omegas:
+            miss, allowed = self.diagram_check(m)
+            if miss > allowed:
+                out.append(m)
         return out
 
     @property
@@ -351,16 +360,11 @@ class TrainSolution(ChapterFiles):
             m = q.name.removeprefix("omega")
             if self.diagram is not None and q.name.startswith("omega") and "/" not in q.name \
                     and int(m) in self.diagram.omegas:          # not a side shaft's gear
-                w = self.diagram.omegas[int(m)]
+                miss, allowed = self.diagram_check(int(m))
                 qs[q.name]["velocity_diagram"] = {
-                    "value": w, "rel_error": abs(w - q.si) / max(abs(q.si), 1e-300)}
+                    "value": self.diagram.said(int(m)), "rel_error": miss,
+                    "tolerance": allowed}
         return {"exercise": self.exercise.id, "positions": [], "quantities": qs}
-
-
-
-_EPS = 4096 * 2.0 ** -52
-"""The rounding a drawn length carries, relative to the drawing's size: a few thousand of
-a float's, for some dozens of drafting acts each rounding their coordinates."""
 
 
 def _plain(x: Fraction) -> str:

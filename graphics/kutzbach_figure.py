@@ -75,7 +75,7 @@ def draw_kutzbach_figure(train: GearTrain, k: Kutzbach, title: str,
         end = (hi[0] + _OVER * d[0] / n, hi[1] + _OVER * d[1] / n)
         fig.add(Path((lo, end), "vector"))
         placer.block_segment(lo, end, 0.6)
-        w = k.omegas[body[0]] / train.units.per_rad_s
+        w = k.said(body[0]) / train.units.per_rad_s        # nil to the drawing's rounding
         sense = "" if w == 0 else " " + words("ccw" if w > 0 else "cw")
         names = ", ".join(subscript(f"ω{m}") for m in body)
         named.append((f"{names} = {numeral(abs(w), '.4g')} {unit_words(train.units.speed)}"

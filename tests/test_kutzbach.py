@@ -9,6 +9,7 @@ reads the table's speeds, which are Willis'.
 
 from __future__ import annotations
 
+import json
 import math
 import random
 from fractions import Fraction as F
@@ -165,4 +166,10 @@ def test_the_diagram_reads_the_table_and_willis_for_any_driver(seed, family):
     fastest = max(abs(float(want[m])) for m in s.diagram.omegas) * per
     for m, w in s.diagram.omegas.items():
         assert abs(w - float(want[m]) * per) <= 1e-9 * fastest, m
+        miss, allowed = s.diagram_check(m)
+        # measured against the fastest member, the check is never as wide as the speeds
+        # (CEILING, 1e-5 of them); a member at rest is said as nil, its slope's rounding aside
+        assert miss <= allowed <= 1e-5, m
+        assert s.diagram.said(m) == 0.0 or want[m] != 0, m
     assert not s.diagram_misses
+    json.dumps(s.results, allow_nan=False)      # every number finite

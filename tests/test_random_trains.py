@@ -9,15 +9,17 @@ shares nothing with the tabular method or the Willis system but the tooth number
 
 from __future__ import annotations
 
+import math
 import random
 from fractions import Fraction
 from itertools import permutations
+from pathlib import Path
 
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from tarsim.exercises.train_file import parse_train
-from tarsim.exercises.train_solution import solve_train
+from tarsim.exercises.train_solution import TrainSolution, solve_train
 from tests.random_trains import (FAMILIES, _body, build, generate, oracle, run_train_case,
                                  train_toml)
 
@@ -71,3 +73,18 @@ def test_an_answer_the_closed_form_contradicts_is_caught(tmp_path):
     assert got.outcome == "wrong" and "omega3" in got.message
     refuse = text.replace("# oracle expect = answer", "# oracle expect = refused")
     assert run_train_case(refuse, tmp_path / "c.toml").outcome == "wrong"
+
+
+def test_an_infinity_in_a_trains_results_is_caught(tmp_path, monkeypatch):
+    """A sun at rest beside members at 1e28 rpm is solved to finite numbers; were its velocity
+    diagram's error measured against its own nil speed (an infinity, as it once was), the
+    runner would judge the case ``other``, whether it reads the results or writes the files
+    (whose writer refuses a number JSON has not)."""
+    text = (Path(__file__).parent / "reproducers" / "inf-gear-kutzbach-sun-at-rest.toml"
+            ).read_text(encoding="utf-8")
+    assert run_train_case(text, tmp_path / "a.toml", render=True).outcome == "ok"
+    monkeypatch.setattr(TrainSolution, "diagram_check", lambda self, m: (math.inf, 1e-12))
+    got = run_train_case(text, tmp_path / "b.toml")
+    assert got.outcome == "other" and "velocity_diagram.rel_error is not finite" in got.message
+    got = run_train_case(text, tmp_path / "c.toml", render=True)
+    assert got.outcome == "other" and "JSON compliant" in got.message

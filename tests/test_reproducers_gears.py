@@ -95,3 +95,46 @@ def test_check3_gear_pulled_apart(tmp_path):
         f"Error: {path(name)}:{line_of(name, 'centre_distance')}: [involute.centre_distance] "
         "gears 2 and 3 do not touch: the centre distance is 500 mm, and their addendum "
         "circles reach only 320 mm; the pitch circles need 300 mm\n")
+
+
+def test_inf_gear_kutzbach_sun_at_rest(tmp_path):
+    """A compound planet 7–5 (37 and 37 teeth) between the fixed sun 6 (30) and the sun 3
+    (30), driven at 7.5e28 rpm cw. Willis about the arm 8: (ω7 − ω8)/(0 − ω8) = −30/37, so
+    ω8 = 37/67·ω7; then (ω3 − ω8)/(ω5 − ω8) = −37/30 with ω5 = ω7 gives ω3 − ω8 = −ω8: the
+    sun 3 stands still. The velocity diagram reads its slope as 1e12 rad/s beside speeds of
+    1e28 rpm, the last bit of coordinates of that size: said as 0, measured against the
+    fastest speed, and results.json holds no infinity (it once held rel_error: Infinity)."""
+    name = "inf-gear-kutzbach-sun-at-rest"
+    s = tarsim.solve(tarsim.load(path(name)))
+    w7 = F(-75 * 10**27)
+    want = {3: F(0), 5: w7, 6: F(0), 7: w7, 8: w7 * F(37, 67)}
+    assert s.found.speeds == s.reference == want and s.passed
+    k, per = s.diagram, 2 * math.pi / 60
+    fastest = abs(float(w7)) * per
+    for m, w in want.items():
+        # a slope of two drawn points: a few roundings (their two coordinates each) of
+        # velocities of the fastest's size, over a span of radii no shorter than 15 of 33.5
+        assert abs(k.omegas[m] - float(w) * per) <= 4 * 2.0**-52 * fastest, m
+    assert k.said(3) == k.said(6) == 0.0
+    assert k.said(8) == pytest.approx(float(w7 * F(37, 67)) * per, rel=4 * 2.0**-52)
+
+    out = tmp_path / "out"
+    result = CliRunner().invoke(cli, ["solve", path(name), "-o", str(out), "--no-pdf"])
+    assert result.exit_code == 0, result.output
+
+    def refuse(word):
+        raise ValueError(f"results.json holds {word}")
+
+    doc = json.loads((out / "results.json").read_text(encoding="utf-8"), parse_constant=refuse)
+    diagram = doc["quantities"]["omega3"]["velocity_diagram"]
+    assert diagram["value"] == 0.0
+    # ω3's line runs through O and its pitch point at r3 = 30/2 = 15 modules; the diagram
+    # reaches R = 15 + 37/2 = 33.5: 4096 roundings of the fastest, times 33.5/15
+    assert diagram["tolerance"] == pytest.approx(4096 * 2.0**-52 * 33.5 / 15, rel=1e-12)
+    assert diagram["rel_error"] <= 4 * 2.0**-52
+    svg = (out / "kutzbach.svg").read_text(encoding="utf-8")
+    assert "ω₃ = 0 rpm<" in svg and "e+12" not in svg
+
+    # the check can fail: ω3 read a billionth of the fastest off, far past the rounding
+    k.omegas[3] = 1e-9 * fastest
+    assert s.diagram_misses == [3] and not s.passed

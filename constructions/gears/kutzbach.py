@@ -35,7 +35,11 @@ from ..scales import nice_per_cm
 from .tabular import main_axis_train
 from .train import GearTrain
 
-__all__ = ["Kutzbach", "draw_kutzbach", "undrawable"]
+__all__ = ["Kutzbach", "draw_kutzbach", "undrawable", "DRAWN"]
+
+DRAWN = 4096 * 2.0 ** -52
+"""The rounding a drawn length carries, relative to the drawing's size: a few thousand of
+a float's, for some dozens of drafting acts each rounding their coordinates."""
 
 
 @dataclass
@@ -60,6 +64,23 @@ class Kutzbach:
     through: dict[tuple[int, ...], tuple[Ref, Ref]] = field(default_factory=dict)
     levels: dict[str, Ref] = field(default_factory=dict)
     omegas: dict[int, float] = field(default_factory=dict)
+    conditioning: dict[int, float] = field(default_factory=dict)
+    """Each member's reading's conditioning: the span of radii its line was read across
+    over the diagram's largest (1 for the fixed member, read as nil without a slope)."""
+
+    def rounding(self, member: int, fastest: float) -> float:
+        """What rounding leaves uncertain in ``member``'s ω read as a slope (rad/s): the
+        drawing's velocities, of the ``fastest`` ω (rad/s) at the largest radius, rounded
+        by :data:`DRAWN`, over the span of radii its line was read across."""
+        return DRAWN * fastest / self.conditioning[member]
+
+    def said(self, member: int) -> float:
+        """``member``'s ω (rad/s) as the diagram says it: 0 where its slope is within the
+        drawing's rounding of nil (a member at rest in a train whose others turn at
+        1e28 rpm reads 1e12, the last bit of the fastest's coordinates)."""
+        w = self.omegas[member]
+        fastest = max(abs(v) for v in self.omegas.values())
+        return 0.0 if abs(w) <= self.rounding(member, fastest) else w
 
 
 @dataclass(frozen=True)
@@ -416,15 +437,19 @@ class _Diagram:
                                             b=t.said(b), name=name, known=_names(t.body(b))))
 
     def read(self) -> None:
-        """Each member's ω: the slope of its body's line, Δv/Δr at the diagram's scales."""
-        per = self.k.per
-        for body, ref in self.k.lines.items():
-            w = 0.0
+        """Each member's ω: the slope of its body's line, Δv/Δr at the diagram's scales,
+        said as nil where it is within the drawing's rounding of it."""
+        per, k = self.k.per, self.k
+        top = max(abs(self.c.output(r).xy[1]) for pair in k.through.values() for r in pair)
+        for body, ref in k.lines.items():
+            w, span = 0.0, top
             if ref != "kz:radial":
-                p, q = (self.c.output(r).xy for r in self.k.through[body])
-                w = (q[0] - p[0]) / per / (q[1] - p[1])
+                p, q = (self.c.output(r).xy for r in k.through[body])
+                w, span = (q[0] - p[0]) / per / (q[1] - p[1]), abs(q[1] - p[1])
             for m in body:
-                self.k.omegas[m] = w
+                k.omegas[m], k.conditioning[m] = w, span / top
+        for body, ref in k.lines.items():
+            w = k.said(body[0])
             rate = w / self.t.units.per_rad_s
             self.c.draw(f"kz:read:{body[0]}", "mark", self.k.through[body][-1]
                         if ref != "kz:radial" else "kz:O", panel=Panel.VELOCITY,
