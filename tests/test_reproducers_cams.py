@@ -9,6 +9,7 @@ reads the file itself; never what tarsim printed.
 
 from __future__ import annotations
 
+import dataclasses
 import json
 import math
 from pathlib import Path
@@ -16,8 +17,15 @@ from pathlib import Path
 import mpmath as mp
 import pytest
 from click.testing import CliRunner
+from hypothesis import assume, given, settings
+from hypothesis import strategies as st
 
 import tarsim
+from tarsim.constructions.cams.displacement import Segment
+from tarsim.constructions.cams.rounding import join_bound, lift_bounds
+from tarsim.constructions.cams.survey import survey
+from tarsim.constructions.reference.cam_laws import LAWS
+from tarsim.constructions.reference.cam_profile import follower_motion
 from tarsim.exercises.cam_solution import solve_cam
 from tarsim.exercises.cli import cli
 from tests.random_cams import extremes
@@ -182,3 +190,82 @@ def test_a_lift_lost_in_the_rounding_of_a_large_cam_is_refused(tmp_path):
     moved = float(line.split("its points ")[1].split(" m;")[0])
     assert moved >= new
     assert not (tmp_path / "out").exists()
+
+
+# ----- a join whose other side is steep ---------------------------------------------------------
+def test_check3_cam_rise_end_beside_steep_return(tmp_path):
+    """A 5 cm rise over 92.91° ends where a 5 cm uniform-velocity return over 0.0157° begins
+    (y′ = −h/β = −182 m/rad, 3900 times the rise's). The rise's last station is laid out at
+    6·(β/6), one rounding past the join, where the closed form reads the return: 4e-14 m
+    below the 5 cm the station carries, past a bound that held only the rise's slope. The
+    bound now holds the steeper side's |y′| over the rounding of the station's angle."""
+    name = "check3-cam-rise-end-beside-steep-return"
+    result, out = solve(name, tmp_path=tmp_path)
+    assert result.exit_code == 0, result.output
+    assert "33 stations laid out, each where the closed form puts it" in result.output
+    s = solve_cam(tarsim.load(str(HERE / f"{name}.toml")))
+    assert s.passed, s.failures
+    h, beta = 0.05, math.radians(0.015712393305678234)
+    e, prime = -0.023505833719771716, 0.05842123335539133 + 0.029210616677695667
+    s0 = math.sqrt(prime ** 2 - e ** 2)
+    layout = s.profile.layout
+    end = layout.places[6]
+    join = math.radians(92.91)
+    # The station meant for the join, its angle a rounding or two of 1.62 rad from it.
+    assert end.theta == pytest.approx(join, abs=4 * 2.2e-16 * join) and end.lift == h
+    read = follower_motion(s.exercise.segments, end.theta)
+    assert read.y1 == pytest.approx(-h / beta, rel=1e-15)            # the return's slope
+    # The pitch point at the join: the follower's line e off the centre, s₀ + h up it,
+    # turned back through θ (the cam counter-clockwise). A few roundings of the cam's
+    # 0.14 m, and the angle's rounding times 0.14 m, are each under 1e-16 m.
+    turned = complex(e, s0 + h) * complex(math.cos(join), -math.sin(join))
+    trace = layout.construction.output(end.trace).xy
+    assert math.dist(trace, (turned.real, turned.imag)) < 1e-15
+    # The greatest pressure angle: on the uniform-velocity return |y′ − σe| is constant, so
+    # tan φ = |y′ − σe|/(s₀ + y) is greatest where y = 0, at the return's end.
+    steep = math.atan((h / beta + e) / s0)
+    assert math.degrees(steep) == pytest.approx(89.9735, abs=1e-4)
+    q = s.results["quantities"]["pressure_angle_max"]
+    assert q["value"] == pytest.approx(steep, rel=1e-13)       # atan is flat here: ~1e-16
+    assert q["theta"] == pytest.approx(join + beta, abs=1e-12)
+    ext = extremes((HERE / f"{name}.toml").read_text(encoding="utf-8"))
+    assert ext.pressure == pytest.approx(steep, rel=1e-9)      # nothing steeper round the cam
+
+    # The check can still fail: the same lift laid off 1e-10 m long at the join (2e-9 of
+    # the lift) is caught, and only there.
+    ex = s.exercise
+    c = layout.construction.scratch()
+    moved = c.draw("P6+", "lay_off", end.rest, end.axis, length=end.lift + 1e-10)
+    wrong = dataclasses.replace(layout, construction=c,
+                                places=[dataclasses.replace(end, trace=moved)
+                                        if p is end else p for p in layout.places])
+    bounds = lift_bounds(s.diagram, ex.segments)
+    misses = survey(wrong, ex.base_radius, ex.segments, ex.sigma, bounds).misses
+    assert [i for i, _ in misses] == [6]
+    assert misses[0][1] == pytest.approx(1e-10, rel=1e-3)
+    assert not survey(layout, ex.base_radius, ex.segments, ex.sigma, bounds).misses
+
+
+@settings(max_examples=300, deadline=None)
+@given(first=st.floats(1e-4, 300.0), second=st.floats(1e-4, 300.0),
+       lift=st.floats(1e-6, 1.0), n=st.integers(2, 24), ulps=st.integers(-3, 3),
+       laws=st.sampled_from([(a, b) for a in LAWS for b in LAWS]))
+def test_a_station_meant_for_a_join_reads_the_closed_form_within_its_join_bound(
+        first, second, lift, n, ulps, laws):
+    """Whatever the two segments' angles, laws and divisions, the closed form read at the
+    first one's last station, n·(β/n) from its start and then moved a few roundings either
+    way, stands off the lift at the join by no more than join_bound: a rise and a return of
+    one lift, then a dwell to close the turn. Past the join it reads the return, whose
+    slope may be thousands of times the rise's."""
+    rest = 360.0 - first - second
+    assume(rest > 1e-3)
+    segs = [Segment("rise", math.radians(first), lift, laws[0], n, 0.5),
+            Segment("return", math.radians(second), lift, laws[1], n, 0.5),
+            Segment("dwell", math.radians(rest))]
+    theta = n * (segs[0].angle / n)
+    for _ in range(abs(ulps)):
+        theta = math.nextafter(theta, math.copysign(math.inf, ulps))
+    # The lift at the join, from the laws: the rise's top; the return's subtraction of its
+    # lift from the height rounds it by a rounding of the lift.
+    got = follower_motion(segs, theta).y
+    assert abs(got - lift) <= join_bound(segs, theta) + 2.2e-16 * lift

@@ -23,7 +23,7 @@ from ..record import Ref
 from ..reference.cam_profile import Follower, Station, station
 from .extremes import EPS, Extreme, Scan, above, highest, pieces, scan
 from .inversion import Layout
-from .rounding import rounding
+from .rounding import join_bound, rounding
 
 __all__ = ["Survey", "Undercut", "survey", "AGREE"]
 
@@ -152,7 +152,9 @@ def survey(layout: Layout, base_radius: float, segments, sigma: float,
         want = station(segments, base_radius, f, sigma, p.theta)
         out.places.append(want)
         trace = c.output(p.trace)
-        lift = (lifts or {}).get(p.source, 0.0)
+        # The lift's rounding against its own segment's law, and against the other one the
+        # closed form may read where a join lies within the rounding of the station's angle.
+        lift = (lifts or {}).get(p.source, 0.0) + join_bound(segments, p.theta)
         # The closed form's own rounding: a few of the cam's size and of the point's reach.
         tol = AGREE * (reach[p.trace].error + lift + 16 * EPS * (size + math.hypot(*want.pitch)))
         checks = [(math.dist(trace.xy, want.pitch), tol)]
