@@ -19,13 +19,14 @@ import sys
 from collections.abc import Callable
 from dataclasses import dataclass, field
 
-from ..constructions.errors import TarsimError
+from ..constructions.errors import AssemblyError, InputError, TarsimError
 from ..constructions.model import Drive
 from ..constructions.narration import Word, numerals, unit_words, words
 from ..constructions.reference import solver
+from ..constructions.reference.change_points import change_point_between
 from ..constructions.reference.flywheel import (Fluctuation, fluctuation, flywheel_inertia,
                                                 speed_fluctuation)
-from ..constructions.reference.kinetostatics import balance, power_torque
+from ..constructions.reference.kinetostatics import balance, power_torque, torque_rounding
 from ..graphics.figure import Figure
 from ..graphics.plot import PlotMark, Series, draw_line_plot
 from .exercise_file import Exercise
@@ -55,6 +56,9 @@ class TurningMoment:
     """The worst disagreement of the balance of power, relative to the greatest torque."""
     biggest: float = 0.0
     """The greatest torque of the turn (N·m)."""
+    rounding: float = 0.0
+    """The greatest size the torque is made of at a step (N·m), its loads' powers each at
+    full size over ω: a torque that is the small rest of large moments rounds at this."""
     marks: list[tuple[float, float, float, str]] = field(default_factory=list)
     """The driving torque by the force polygons at the positions the exercise solves:
     (turned angle in rad, its torque and the curve's there, both positive the way the input
@@ -64,8 +68,10 @@ class TurningMoment:
     def noise(self) -> float:
         """The torque's rounding (N·m): what its two ways of finding it (the joint forces
         and the balance of power) disagree by, and never less than a few roundings of the
-        greatest torque."""
-        return max(self.power_miss, 16 * sys.float_info.epsilon) * self.biggest
+        greatest torque or of the size it is made of (a crank's own inertia force, square
+        to its path, is cancelled by a moment of its full size at every step)."""
+        return max(self.power_miss * self.biggest,
+                   16 * sys.float_info.epsilon * max(self.biggest, self.rounding))
 
     @property
     def reading(self) -> Fluctuation | None:
@@ -109,10 +115,11 @@ class TurningMoment:
                    f"{len(r.areas)} areas"]
         else:
             out = [f"at steady speed, the driving torque is steady at {r.mean:.6g} N·m "
-                   f"({self.turning}) round the turn: ΔE = 0"]
+                   f"({self.turning}) round the turn, to its rounding (±{self.noise:.2g} "
+                   "N·m): ΔE = 0"]
         if loads.speed_fluctuation and not r.delta_e:
             out.append(f"no flywheel is needed for C_s = {loads.speed_fluctuation:g}: the "
-                       "torque does not fluctuate")
+                       "torque does not fluctuate beyond its rounding")
         elif loads.speed_fluctuation:
             i = flywheel_inertia(r.delta_e, self.omega, loads.speed_fluctuation)
             out.append(f"flywheel for C_s = {loads.speed_fluctuation:g} at ω = "
@@ -217,23 +224,30 @@ def turning_moment(ex: Exercise, steps: int = 360,
     Raises
     ------
     TarsimError
-        If they are solved at none of them (the friction locks it everywhere).
+        If they are solved at none of them (the friction locks it everywhere), or the turn
+        passes a change point (:mod:`..constructions.reference.change_points`): beyond it
+        the linkage may go on in either assembly, and the branch the file names by a side
+        is the other one, so the steps are no one motion's.
     """
     mech, loads = ex.mechanism, ex.loads
     drive = mech.drive
     sense = 1.0 if drive.omega >= 0 else -1.0
     out = TurningMoment(ex, [], [])
-    biggest = 0.0
-    misses = []
+    biggest = rounding = 0.0
+    misses, inputs, conditioning = [], [], []
     for k in range(steps):
         turned = 2 * math.pi * k / steps
         angle = drive.angle + sense * turned
         out.angles.append(turned)
+        inputs.append(angle)
+        conditioning.append(None)
         try:
             m = mech.with_drive(Drive(drive.link, angle, drive.omega, 0.0))
             kin = solver.solve(m)
+            conditioning[-1] = kin.conditioning
             s = balance(m, kin, loads)
-            vw = power_torque(m, kin, loads)
+            vw = power_torque(m, kin, loads, s)
+            rounding = max(rounding, torque_rounding(m, kin, loads, s))
         except TarsimError as e:
             out.torques.append(None)
             out.gaps.append((angle, str(e)))
@@ -251,10 +265,32 @@ def turning_moment(ex: Exercise, steps: int = 360,
         where, why = out.gaps[0]
         raise TarsimError(f"the forces are solved at no position of the turn, so there is no "
                           f"turning-moment diagram: {why}")
+    _refuse_change_point(mech, inputs, conditioning)
     out.power_miss = max(misses, default=0.0) / (biggest or 1.0)
     out.biggest = biggest
+    out.rounding = rounding
     out.marks = _drawn_marks(ex)
     return out
+
+
+def _refuse_change_point(mech, inputs: list[float], conditioning: list[float | None]) -> None:
+    """Raise if the turn passes a change point between two of its steps or lands on one,
+    or cannot be assembled somewhere between two steps it solved: its reading would hide
+    either."""
+    found = change_point_between(mech, inputs, conditioning)
+    if found is None:
+        return
+    at = f"θ{mech.drive.link} = {mech.units.angle_brief(found.angle % math.tau)}"
+    if found.refusal is not None:
+        error = AssemblyError(f"no turning-moment diagram: between two steps of the turn, at "
+                              f"{at}, the linkage cannot be assembled; solve its forces at "
+                              "single positions", link=found.refusal.link,
+                              angle_deg=math.degrees(found.angle))
+        error.because(found.refusal)
+        raise error.in_file(mech.source) if mech.source else error
+    raise InputError(f"no turning-moment diagram: the turn passes a change point at {at}, "
+                     "where the linkage may go on in either assembly; solve its forces at "
+                     "single positions", file=mech.source or None)
 
 
 def _drawn_marks(ex: Exercise) -> list[tuple[float, float, float, str]]:

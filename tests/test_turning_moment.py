@@ -7,16 +7,26 @@
   torque is 1000 N × stroke / 2π, the stroke 2·880·tan(asin 0.36) mm by the lever's limits.
   The cut switches on and off between samples, an error of at most the jump times a step
   over the turn: 1e-3 at 360 steps.
+- A crank of mass m whose centre G is r_G from its pivot, turning at ω in a pin with a
+  friction circle ρ: the pivot carries m·ω²·r_G and takes ρ·m·ω²·r_G of torque, the same
+  at every step; at ω = 1e25 rad/s nothing else the loads do reaches the torque's rounding.
+- A four-bar of S + L = P + Q lies flat twice a turn, a change point; a parallelogram's
+  four pivots line up where the crank lies along the frame.
 """
 
 from __future__ import annotations
 
 import math
+import re
+import sys
 from pathlib import Path
 
 import pytest
 from click.testing import CliRunner
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
+import tarsim
 from tarsim.constructions.errors import InputError
 from tarsim.constructions.reference.flywheel import (fluctuation, flywheel_inertia,
                                                      speed_fluctuation)
@@ -27,6 +37,7 @@ from tarsim.exercises.turning_moment import turning_moment
 
 FORCES = {name: Path(path) for name, path in bundled_forces().items()}
 SHAPER = FORCES["crank-shaper-forces"]
+RHOMBUS = Path(__file__).parent / "reproducers" / "wrong-flywheel-rhombus-change-point.toml"
 
 
 @pytest.mark.parametrize("k", [1, 2, 3])
@@ -123,3 +134,123 @@ def test_a_flywheel_for_a_standing_input_is_refused():
     with pytest.raises(InputError, match=r"cs.toml:\d+: a flywheel holds a speed, but link "
                                          r"2's ω is 0 in \[input\]"):
         parse_exercise(text, "cs.toml", "cs")
+
+
+def _crank_friction_torque(text: str) -> float:
+    """ρ·m·ω²·r_G (N·m) of the rhombus file's crank: 1e-5 cm of friction circle, 7.461 kg
+    at the middle of its 1e-3 cm, 1e25 rad/s."""
+    assert "friction_circle = 1e-05" in text and "mass = 7.461" in text
+    return 1e-7 * 7.461 * 1e25 ** 2 * 0.5e-5
+
+
+def test_wrong_flywheel_rhombus_change_point():
+    """A rhombus 1e-3 cm long at ω2 = 1e25 rad/s with its B "right": the folded assembly
+    (B on O2) from θ2 = 90° to 270° and the parallelogram beyond, so a turn at that side
+    hops from one motion to the other (the 1.94e24 J "fluctuation" it read was rounding).
+    Its turn is refused at the first change point it meets from 105° counter-clockwise,
+    θ2 = 3π/2, where A, B = O2 and O4 lie in line; the drawn position's torque is the
+    crank's pin friction (the gas force's 3.3 kN on a 2e-5 m lever is 1e-40 of it; the
+    torque rounds at eps·m·ω²·r_G², 5e-14 of it: 1e-12)."""
+    text = RHOMBUS.read_text(encoding="utf-8")
+    ex = load_exercise(RHOMBUS)
+    solution = tarsim.solve(ex)
+    assert solution.passed
+    t2 = solution.results["positions"][0]["quantities"]["T2"]["value"]
+    assert t2 == pytest.approx(_crank_friction_torque(text), rel=1e-12)
+    with pytest.raises(InputError) as e:
+        turning_moment(ex, 72)
+    message = str(e.value)
+    assert "\n" not in message and message.startswith(f"{RHOMBUS}: no turning-moment diagram")
+    assert f"passes a change point at θ2 = {3 * math.pi / 2:.6g} rad" in message, message
+    result = CliRunner().invoke(cli, ["sweep", str(RHOMBUS), "--no-pdf", "--steps", "72",
+                                      "-o", str(RHOMBUS.parent / "never-written")])
+    assert result.exit_code == 1 and result.output == f"Error: {message}\n"
+    assert not (RHOMBUS.parent / "never-written").exists()
+
+
+def test_a_torque_steady_to_its_rounding_needs_no_flywheel():
+    """The rhombus's loads on a crank-rocker (frame 3e-3, crank 1e-3, coupler 3e-3, rocker
+    2.5e-3 cm), which has no change point: the torque is ρ·m·ω²·r_G at every step. By the
+    balance of energy the rest swings the energy by less than 0.2 J (3.3 kN of gas force
+    over B's 5e-5 m, the crank's weight over 1e-5 m, friction at the light pins), while the
+    torque rounds at eps·m·ω²·r_G², 1e24 N·m: the diagram is steady to its rounding, ΔE = 0,
+    and no flywheel is needed."""
+    text = RHOMBUS.read_text(encoding="utf-8")
+    for old, new in (("O4 = [6.123233995736766e-20, 0.001]", "O4 = [0.003, 0.0]"),
+                     ("AB = 1e-3", "AB = 3e-3"), ("O4B = 1e-3", "O4B = 2.5e-3")):
+        assert old in text
+        text = text.replace(old, new)
+    tm = turning_moment(parse_exercise(text, "cr.toml", "cr"), 72)
+    want = _crank_friction_torque(text)
+    rounding = sys.float_info.epsilon * 7.461 * 1e25 ** 2 * 0.5e-5 * 0.5e-5
+    assert all(t == pytest.approx(want, rel=1e-12) for t in tm.torques)
+    assert 0.2 < 2 * math.pi * tm.noise < 1e3 * rounding
+    r = tm.reading
+    assert r.delta_e == 0.0 and r.areas == () and r.mean == pytest.approx(want, rel=1e-12)
+    assert tm.lines()[1] == ("no flywheel is needed for C_s = 0.01: the torque does not "
+                             "fluctuate beyond its rounding")
+
+
+_PARALLELOGRAM = """\
+name = "parallelogram"
+[units]
+length = "mm"
+angle = "deg"
+[frame]
+O2 = [0.0, 0.0]
+O4 = [{x!r}, {y!r}]
+[[link]]
+number = 2
+points = ["O2", "A"]
+lengths = {{ O2A = {a!r} }}
+[[link]]
+number = 3
+points = ["A", "B"]
+lengths = {{ AB = {g!r} }}
+[[link]]
+number = 4
+points = ["O4", "B"]
+lengths = {{ O4B = {a!r} }}
+[input]
+link = 2
+angle = {theta!r}
+omega = {omega!r}
+[assembly]
+B = "{side}"
+[ask]
+find = ["T2"]
+methods = ["polygon"]
+[forces]
+gravity = true
+speed_fluctuation = 0.05
+[[mass]]
+link = 3
+mass = 2.0
+centre = "mid"
+inertia = 0.01
+"""
+
+
+@settings(max_examples=12, deadline=None)
+@given(a=st.sampled_from([20.0, 50.0, 100.0]), g=st.sampled_from([50.0, 100.0, 150.0]),
+       phi=st.floats(-180.0, 180.0), offset=st.floats(20.0, 160.0),
+       side=st.sampled_from(["left", "right"]), omega=st.sampled_from([10.0, -3.0]),
+       steps=st.sampled_from([36, 72, 180]))
+def test_a_parallelogram_s_turn_is_refused_where_its_pivots_line_up(a, g, phi, offset, side,
+                                                                    omega, steps):
+    """A parallelogram (a rhombus where a = g) of frame at φ, started off the frame's line:
+    its turn is refused at the first change point it meets, where the crank lies along the
+    frame (θ2 = φ or φ + 180°), to the 6 figures the line gives."""
+    theta = phi + offset
+    text = _PARALLELOGRAM.format(x=g * math.cos(math.radians(phi)),
+                                 y=g * math.sin(math.radians(phi)), a=a, g=g,
+                                 theta=theta, omega=omega, side=side)
+    with pytest.raises(InputError) as e:
+        turning_moment(parse_exercise(text, "p.toml", "p"), steps)
+    found = re.search(r"passes a change point at θ2 = (−?[\d.]+(e[−-]?\d+)?)°", str(e.value))
+    assert found, str(e.value)
+    at = float(found.group(1).replace("−", "-"))
+    # the first of φ + k·180° the turn meets, the way it turns
+    sense = 1.0 if omega > 0 else -1.0
+    ahead = min((sense * (phi + k * 180.0 - theta)) % 360.0 for k in (0, 1))
+    assert math.remainder(at - (theta + sense * ahead), 360.0) == pytest.approx(0.0, abs=2e-3)

@@ -2,12 +2,14 @@
 areas between the curve and the mean, the greatest fluctuation of energy, the flywheel.
 
 The torque is sampled at equal steps round one turn. Its mean is the periodic trapezoid
-rule's, which is exact to rounding for a smooth periodic torque. The curve crosses the mean
-at the intercepts (found between samples by a straight line); between neighbouring
-intercepts lies an area, energy given out or taken in. Added from the first intercept, the
-areas trace the energy above its value there; the greatest fluctuation ΔE is its highest
-less its lowest. A flywheel of inertia I holding the speed within a coefficient
-C_s = (ω_max − ω_min)/ω_mean needs I = ΔE/(C_s·ω²), ω the mean speed.
+rule's, which is exact to rounding for a smooth periodic torque; it is summed exactly
+(``math.fsum``), since a mean off by its rounding tilts the running energy by that much
+times the turn. The curve crosses the mean at the intercepts (found between samples by a
+straight line); between neighbouring intercepts lies an area, energy given out or taken in.
+Added from the first intercept, the areas trace the energy above its value there; the
+greatest fluctuation ΔE is its highest less its lowest. A flywheel of inertia I holding the
+speed within a coefficient C_s = (ω_max − ω_min)/ω_mean needs I = ΔE/(C_s·ω²), ω the mean
+speed.
 """
 
 from __future__ import annotations
@@ -47,7 +49,7 @@ def fluctuation(angles: list[float], torques: list[float]) -> Fluctuation:
     step = 2 * math.pi / n
     if any(abs((angles[i] - angles[0]) - i * step) > 1e-9 for i in range(n)):
         raise ValueError("the samples must be equally spaced round one turn")
-    mean = sum(torques) / n
+    mean = math.fsum(torques) / n
     excess = [t - mean for t in torques] + [torques[0] - mean]
     crossings: list[float] = []
     for i in range(n):

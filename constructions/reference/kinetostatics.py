@@ -31,7 +31,7 @@ from ..model import Mechanism, SlideKind
 from .solver import Kinematics, point_acceleration, point_velocity
 
 __all__ = ["JointForce", "Statics", "balance", "efforts", "load_scale", "power_torque",
-           "world_point"]
+           "torque_rounding", "world_point"]
 
 
 @dataclass(frozen=True)
@@ -383,29 +383,55 @@ def power_torque(mech: Mechanism, kin: Kinematics, loads: Loads,
     InputError
         If the input stands still: power then fixes no torque.
     """
+    power, _ = _power(mech, kin, loads, statics)
+    return -power / kin.omegas[mech.drive.link]
+
+
+def torque_rounding(mech: Mechanism, kin: Kinematics, loads: Loads,
+                    statics: Statics | None = None) -> float:
+    """The size (N·m) the driving torque is made of, and so rounds at: the balance of
+    power's terms taken each at its full size, |F|·|v| and |M·ω| (a force square to its
+    point's path, a crank's own inertia force, does no work but rounds at that size in the
+    moment that cancels it), and what each joint's friction dissipates, over |ω_in|.
+
+    Raises
+    ------
+    InputError
+        If the input stands still.
+    """
+    _, size = _power(mech, kin, loads, statics)
+    return size / abs(kin.omegas[mech.drive.link])
+
+
+def _power(mech: Mechanism, kin: Kinematics, loads: Loads, statics: Statics | None
+           ) -> tuple[float, float]:
+    """The power of every load and inertia load less what friction dissipates (W), and the
+    sum of its terms' full sizes (W)."""
     driver = mech.drive.link
-    w_in = kin.omegas[driver]
-    if w_in == 0.0:
+    if kin.omegas[driver] == 0.0:
         raise InputError("the input stands still, so the balance of power fixes no torque",
                          file=mech.source or None)
-    power = 0.0
+    terms, sizes = [], []
     for k in mech.links:
         if k.number == 1:
             continue
         for at, f, mz in _loads_on(kin, mech, loads, k.number):
             v = point_velocity(kin, mech, k.number, at)
-            power += f[0] * v[0] + f[1] * v[1] + mz * kin.omegas[k.number]
+            w = kin.omegas[k.number]
+            terms.append(f[0] * v[0] + f[1] * v[1] + mz * w)
+            sizes.append(math.hypot(*f) * math.hypot(*v) + abs(mz * w))
     if loads.friction or loads.friction_circle:
         statics = statics or balance(mech, kin, loads)
         speeds = {id(r.slide): abs(r.velocity) for r in kin.slide_rates
                   if _sliding(kin, r.slide) != (0.0, 0.0)}
-        power -= math.fsum(loads.friction * abs(n) * speeds.get(id(s), 0.0)
-                           for s, n in zip(mech.slides, statics.pushes))
-        power -= math.fsum(
-            loads.friction_circle * math.hypot(*statics.joint(f"F_{by}{on}").force)
-            * abs(kin.omegas.get(on, 0.0) - kin.omegas.get(by, 0.0))
-            for _, by, on in mech.pin_pairs)
-    return -power / w_in
+        lost = [loads.friction * abs(n) * speeds.get(id(s), 0.0)
+                for s, n in zip(mech.slides, statics.pushes)]
+        lost += [loads.friction_circle * math.hypot(*statics.joint(f"F_{by}{on}").force)
+                 * abs(kin.omegas.get(on, 0.0) - kin.omegas.get(by, 0.0))
+                 for _, by, on in mech.pin_pairs]
+        terms.append(-math.fsum(lost))
+        sizes += lost
+    return math.fsum(terms), math.fsum(sizes)
 
 
 def efforts(mech: Mechanism, kin: Kinematics, loads: Loads, statics: Statics
