@@ -20,7 +20,9 @@ at each solved position of a frictionless mechanism, the driving torque T satisf
 KE = ½Σ m·v_G² + ½Σ I·ω², PE = Σ m·g·y_G, with KE = K(θ)·ω² and so d(KE)/dt = K′·ω³ +
 2K·ω·α. Round a turn (``turning_moment``) it holds each step the same way, and the reading:
 the greatest fluctuation of energy must bound the running energy summed here from the same
-torques, and the flywheel must be ΔE/(C_s·ω²).
+torques, a torque said steady (ΔE = 0) may swing no more than its loads' rounding, and the
+flywheel must be ΔE/(C_s·ω²). A four-bar of S + L = P + Q passes a change point every turn,
+where it may go on in either assembly: its turn must not be read at all.
 
 Run ``python tests/random_loads.py --cases 2000 --seed 1`` for the counts by outcome.
 """
@@ -396,6 +398,10 @@ def _turn_wrongs(ex, steps: int = 72) -> list[str]:
     if not tm.power_miss <= POWER_AGREE:
         return wrong                 # said: the CLI exits 3 on it
     mech, loads = ex.mechanism, ex.loads
+    if not tm.gaps and _change_point_four_bar(mech):
+        wrong.append("the turning moment is read round a change-point four-bar (S + L = "
+                     "P + Q): its turn passes a change point, where it may go on in either "
+                     "assembly")
     drive = mech.drive
     sense = 1.0 if drive.omega >= 0 else -1.0
     for k in range(0, steps, steps // 6):
@@ -424,10 +430,15 @@ def _turn_wrongs(ex, steps: int = 72) -> list[str]:
             running.append(energy)
         spread = max(running) - min(running)
         reach = max(abs(t - mean) for t in tm.torques) * step
-        steady = max(abs(t - mean) for t in tm.torques) <= tm.noise     # said as ΔE = 0
+        wobble = max(abs(t - mean) for t in tm.torques)
+        steady = wobble <= tm.noise                                     # said as ΔE = 0
         if not (steady and r.delta_e == 0.0
                 or spread - 1e-9 * (spread + reach) <= r.delta_e <= spread + reach):
             wrong.append(f"ΔE = {r.delta_e:.9g} J, the running energy spans {spread:.9g} J")
+        bound = _rounding_bound(ex, tm) if steady and r.delta_e == 0.0 else math.inf
+        if wobble > bound:
+            wrong.append(f"ΔE = 0, but the torque swings {wobble:.9g} N·m off its mean, "
+                         f"beyond the rounding of its loads ({bound:.3g} N·m)")
         if loads.speed_fluctuation and r.delta_e == 0.0:
             if not any(ln.startswith("no flywheel is needed") for ln in tm.lines()):
                 wrong.append(f"ΔE = 0, but the flywheel is said as {tm.lines()[1:2]}")
@@ -443,6 +454,35 @@ def _turn_wrongs(ex, steps: int = 72) -> list[str]:
         if rm._NONFINITE.search(line):
             wrong.append(f"the turning moment prints {line!r}")
     return wrong
+
+
+def _change_point_four_bar(mech) -> bool:
+    """True for a four-bar of S + L = P + Q (Grashof's closed form): every turn of its
+    input passes the position where its four links lie in one line, a change point."""
+    from tarsim.constructions.errors import TarsimError
+    from tarsim.constructions.reference.rotatability import grashof_class
+
+    try:
+        gc = grashof_class(mech)
+    except TarsimError:
+        return False
+    return gc is not None and gc.kind == "change-point"
+
+
+def _rounding_bound(ex, tm) -> float:
+    """The most a turn's torques may swing by rounding alone (N·m): what its two ways of
+    finding the torque disagree by, or what a torque rounds at by this oracle's own rule
+    (64 roundings of the loads' size times the mechanism's) at its worst step."""
+    from tarsim.constructions.model import Drive
+
+    mech = ex.mechanism
+    drive = mech.drive
+    sense = 1.0 if drive.omega >= 0 else -1.0
+    bound = tm.power_miss * tm.biggest
+    for turned in tm.angles:
+        m = mech.with_drive(Drive(drive.link, drive.angle + sense * turned, drive.omega, 0.0))
+        bound = max(bound, 64 * sys.float_info.epsilon * _loads_scale(m, ex.loads) * _size(m))
+    return bound
 
 
 def _number_after(line: str, lead: str) -> str:
