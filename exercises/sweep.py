@@ -27,6 +27,7 @@ from dataclasses import dataclass, replace
 from ..constructions.asks import SYMBOLS, Acceleration, Velocity
 from ..constructions.checks import NOISE
 from ..constructions.reference import solver
+from ..constructions.reference.change_points import change_point_between
 from ..constructions.reference.limits import section_zero
 from ..constructions.reference.turn import Turn, solve_turn
 from ..constructions.assembly import assemble
@@ -284,6 +285,7 @@ def sweep_exercise(ex: Exercise, steps: int = 360, *, of: str | None = None,
     sw = Sweep(ex, out, tuple(samples), step, (), (), (), (), rotates)
     events = _events(sw)
     checks, marks, notes = _graphical(replace(sw, events=events))
+    notes += _change_point(mech, angles, turn)
     # Rounding noise beside the curve's own size is shown as 0 (errors are taken first).
     peak = {k: max(abs(s.values[k]) for s in sw.solved) for k in sw.solved[0].values}
     for k in peak:      # y of a ram on a guide along x is noise beside its x
@@ -301,6 +303,19 @@ def sweep_exercise(ex: Exercise, steps: int = 360, *, of: str | None = None,
                                         curve=quiet(c.key, c.curve)) for c in checks),
                    marks=tuple((k, a, quiet(k, v), t) for k, a, v, t in marks),
                    notes=tuple(notes))
+
+
+def _change_point(mech: Mechanism, angles: list[float], turn: Turn) -> list[str]:
+    """A word where the turn passes a change point: the curves then keep the side their
+    [assembly] names, and so go on in the other assembly beyond it, one motion to another."""
+    rconds = [c if ok else None for c, ok in zip(turn.conditioning.tolist(), turn.ok.tolist())]
+    found = change_point_between(mech, angles, rconds)
+    if found is None:
+        return []
+    d = mech.drive
+    return [f"the turn passes a change point at θ{d.link} = {angle_text(mech, found.angle)}, "
+            "where the linkage may go on in either assembly: beyond it the curves keep their "
+            "[assembly] side, so they may pass from one motion to the other there"]
 
 
 def _unwrap(samples: list[Sample]) -> tuple[list[Sample], bool]:

@@ -124,6 +124,12 @@ def test_slow_sweep_rhombus_far(monkeypatch):
     # One whole turn, and a bisection of some 60 steps for each of the few true changes.
     assert len(calls) <= 1 + 4 * len(sw.events)
     assert len(sw.events) <= 8
+    # O4 stands 100 mm straight above O2: the crank lies along O2O4, A on O4, at θ2 = 90°
+    # (the turn runs clockwise from 240°), and the rhombus may go on either way there.
+    assert [n for n in sw.notes if "change point" in n] == [
+        "the turn passes a change point at θ2 = 90°, where the linkage may go on in either "
+        "assembly: beyond it the curves keep their [assembly] side, so they may pass from one "
+        "motion to the other there"]
 
 
 def test_the_p37_stroke_does_not_depend_on_the_angle_drawn_from():
