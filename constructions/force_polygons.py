@@ -56,6 +56,12 @@ LOADS = FigureSpec("loads", "Loads", "space diagram with the loads", kind="loads
 BODIES = FigureSpec("free-bodies", "Free bodies", "free-body diagrams", kind="bodies")
 """Each link alone with every force on it."""
 
+OBLIQUE = 10.0
+"""How many times more obliquely than the split's the three-force construction's lines may
+cross (a digit of the forces given up for the construction the course teaches for an
+unloaded output): a couple that dwarfs the coupler's resultant throws X far off, where AX
+and the output's line all but run together and the forces are lost to X's rounding."""
+
 
 @dataclass
 class Forces:
@@ -354,8 +360,8 @@ def _group_of(mech: Mechanism):
 def _dyad(c, draw, out: Forces, sh: _Shape, at, known, slip=None):
     """A four-bar's or slider-crank's dyad: returns the coupler's link, its pull on the
     crank at A, and the crank's pivot and pin. With no load on the output the coupler is a
-    three-force member, solved by :func:`_concurrent`; else by the tangential and normal
-    split."""
+    three-force member, solved by :func:`_concurrent` where its lines cross squarely enough;
+    else by the tangential and normal split."""
     if not _carries(known[sh.j]):
         done = _concurrent(c, draw, out, sh, at, known[sh.i], slip)
         if done is not None:
@@ -483,7 +489,9 @@ def _concurrent(c, draw, out: Forces, sh: _Shape, at, loads, slip=None):
     the crank's at A. Three forces in balance meet in one point: X, where R's line crosses
     the output's; the crank's force runs along AX. The coupler's polygon, R closed by a
     parallel to each line, gives both. Returns as :func:`_dyad` does, or None when R is
-    nothing or runs parallel to the output's line (X at infinity): the split then serves.
+    nothing, runs parallel to the output's line (X at infinity), or its lines cross
+    :data:`OBLIQUE` times less squarely than the split's AB does with the output's line
+    (:func:`_squareness`): the split then serves.
     """
     r = _sum(f for _, f, _, _ in loads)
     size = math.hypot(*r)
@@ -511,6 +519,9 @@ def _concurrent(c, draw, out: Forces, sh: _Shape, at, loads, slip=None):
         side = _side(r, sh.guide, slip, None, balance_at)
         dx, dy = leaning((-sh.guide[1], sh.guide[0]), slip[1], slip[0], side)
     if abs(r[0] * dy - r[1] * dx) <= 1e-9 * size * math.hypot(dx, dy):
+        return None
+    split = abs(_sine((at[sh.b][0] - at[sh.a][0], at[sh.b][1] - at[sh.a][1]), (dx, dy)))
+    if _squareness(at, sh, q, r, (dx, dy)) * OBLIQUE < split:
         return None
     qp = c.give("force:cc:Q", g.Point(*q), label="")
     along_r = c.give("force:cc:r", g.Line(-r[1] / size, r[0] / size, 0.0), label="",
@@ -550,6 +561,24 @@ def _concurrent(c, draw, out: Forces, sh: _Shape, at, loads, slip=None):
         out.refs[f"T_1{sh.j}"] = refs
         _piston_effort(c, out, sh, at, [], f_ji, refs)
     return sh.i, (-f_di[0], -f_di[1]), sh.o, sh.a
+
+
+def _sine(u: Vec, w: Vec) -> float:
+    """The sine of the angle from ``u`` to ``w``."""
+    return (u[0] * w[1] - u[1] * w[0]) / (math.hypot(*u) * math.hypot(*w))
+
+
+def _squareness(at, sh: _Shape, q: Vec, r: Vec, push: Vec) -> float:
+    """How squarely the three-force construction's lines cross (the sine of the worse of its
+    two crossings): R's line through ``q`` with the output's line (along ``push``) at X, and
+    then AX with that line, which closes the polygon. X far beyond the mechanism (a couple
+    that dwarfs the resultant throws R's line there) makes AX and the output's line nearly
+    parallel: their difference, and every force, is then lost to the rounding of X."""
+    x = _crossing(q, r, at[sh.b], push)
+    if x is None:
+        return 0.0
+    ax = (x[0] - at[sh.a][0], x[1] - at[sh.a][1])
+    return min(abs(_sine(r, push)), abs(_sine(ax, push)) if ax != (0.0, 0.0) else 0.0)
 
 
 def _piston_effort(c, out: Forces, sh: _Shape, at, loads, wall: Vec, refs) -> None:
