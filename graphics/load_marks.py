@@ -14,7 +14,7 @@ from .force_figure import typeset_force
 from .labels import LabelPlacer
 from .symbols import draw_turning_arrow
 
-__all__ = ["draw_couple", "name_loads", "amount", "too_small"]
+__all__ = ["draw_couple", "name_loads", "amount", "said_name", "too_small"]
 
 Turn = tuple[tuple[float, float], tuple[float, float], str, str, float]
 """A drawn couple: its centre, the middle of its arc, its name, what follows the name, and
@@ -46,12 +46,12 @@ def too_small(items: list[tuple[str, float, str, int]]) -> list[str]:
     language being spoken; none when there are none."""
     if not items:
         return []
-    said = [words("{name} = {size} on link {link}", name=_said_name(name),
+    said = [words("{name} = {size} on link {link}", name=said_name(name),
                   size=amount(size, ".3g", unit), link=link) for name, size, unit, link in items]
     return [words("Too small to draw: {items}.", items=words(", ").join(said))]
 
 
-def _said_name(name: str) -> str:
+def said_name(name: str) -> str:
     """A load's name in a line of text: a symbol (Fi2, W3, F54) as it is, a name in words
     ("gas force") in the language being spoken."""
     text, sub, _ = typeset_force(name)

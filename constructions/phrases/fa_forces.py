@@ -30,6 +30,9 @@ WORDS: dict[str, str] = {
     # the loads too small to draw, listed under the figure
     "Too small to draw: {items}.": "رسم نشده\u200cاند، چون بسیار کوچک\u200cاند: {items}.",
     "{name} = {size} on link {link}": "{name} = {size} روی میلهٔ {link}",
+    # a load, or an inertia force moved off G by h, that would stand beyond the drawing
+    "Beyond the drawing, so not drawn: {items}.": "بیرون از نقشه، پس رسم نشده\u200cاند: {items}.",
+    "{name} (h = {h}) on link {link}": "{name} (h = {h}) روی میلهٔ {link}",
     # the bundled exercises' loads, by the names their files give them
     "gas force": "نیروی گاز", "cutting force": "نیروی برش", "load torque": "گشتاور بار",
 }
