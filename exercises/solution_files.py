@@ -659,20 +659,23 @@ def _show(v: dict, units, name: str = "", figures: int = 6) -> str:
     if v.get("at_infinity"):
         dx, dy = _quiet_pair(v["direction"])
         return words("at infinity, direction ({dx}, {dy})", dx=_num(dx, '.4f'), dy=_num(dy, '.4f'))
-    if "vector" in v and name.startswith("F_"):        # a joint force, in newtons
+    def pointing(what: str) -> str:
+        """``what`` and the way its vector points: none for a nil one, which points nowhere."""
         x, y = v["vector"]
-        return words("{what} at {where}", what=f"{_num(v['value'], spec)} N",
-                     where=f"{_num(_direction(x, y), '.4g')}°")
+        if x == 0.0 and y == 0.0:
+            return what
+        return words("{what} at {where}", what=what, where=f"{_num(_direction(x, y), '.4g')}°")
+
+    if "vector" in v and name.startswith("F_"):        # a joint force, in newtons
+        return pointing(f"{_num(v['value'], spec)} N")
     if name.startswith("T") and name[1:2] in "_0123456789" and name != "T":
         w = v["value"]                                  # a couple or the driving torque
         return f"{_num(w, spec)} N·m{_sense(w)}"
     if name in EFFORTS:                                 # an engine's effort, signed
         return f"{_num(v['value'], spec)} {'N·m' if name == 'turning_moment' else 'N'}"
     if "vector" in v:
-        x, y = v["vector"]
         per = "/s²" if name.startswith("A") else "/s"     # A_B, A_cor_B, An_B/A, A_slide_B
-        return words("{what} at {where}", what=f"{_num(v['value'] / s, spec)} {units.length}{per}",
-                     where=f"{_num(_direction(x, y), '.4g')}°")
+        return pointing(f"{_num(v['value'] / s, spec)} {units.length}{per}")
     w = v["value"]
     kind = type(parse_ask(name)) if name else None
     if kind in (Ratio, MechanicalAdvantage):
