@@ -310,26 +310,39 @@ def check(answer: Answer, expected: Expected, *, scale: float) -> Quantity:
     shown, ref, err = rule(answer.value, expected.value, scale)
     tol = _vouched(answer, err, _EXACT.get(type(ask), tolerance(answer.conditioning)))
     if rule in (_rate, _vector) or type(ask) is A.JointForce:
-        shown, ref = _resolved(shown, tol * scale), _resolved(ref, tol * scale)
+        shown, ref = _resolved(shown, ref, tol * scale)
     return Quantity(ask.name, shown, ref, err, tol, answer.conditioning, answer.method,
                     said=answer.said)
 
 
-def _resolved(value: dict[str, Any], least: float) -> dict[str, Any]:
-    """A rate or a vector as the check can vouch for it: 0 where it is no larger than
-    ``least``, the error the check allows (its tolerance at the quantity's scale). A value
-    below it could be anything down to 0, so a check of it beside its own size could not
-    fail: a dead centre's V_B that the drawing gives as 3e−8 mm/s of 3750 is 0.
+def _resolved(value: dict[str, Any], ref: dict[str, Any], least: float
+              ) -> tuple[dict[str, Any], dict[str, Any]]:
+    """A rate or a vector and its reference as the check can vouch for them.
 
-    >>> _resolved({"value": 3e-12, "vector": [0.0, 3e-12]}, 1e-9)
-    {'value': 0.0, 'vector': [0.0, 0.0]}
-    >>> _resolved({"value": -2.5}, 1e-9)
-    {'value': -2.5}
+    Beside its scale, the check allows an error of ``least`` (its tolerance at that scale).
+    A quantity no larger than that could be anything down to 0 by that check, which could
+    not fail beside the quantity's own size; it stands only if it meets its reference to
+    :data:`CEILING` of itself, and is otherwise said as 0 (a dead centre's V_B that the
+    drawing gives as 3e−8 mm/s of the crank pin's 3750).
+
+    >>> _resolved({"value": 3e-12}, {"value": 1e-12}, 1e-9)
+    ({'value': 0.0}, {'value': 0.0})
+    >>> _resolved({"value": 2.5e-10}, {"value": 2.5e-10}, 1e-9)
+    ({'value': 2.5e-10}, {'value': 2.5e-10})
     """
-    size = abs(value["value"]) if "vector" not in value else math.hypot(*value["vector"])
-    if size > least:
-        return value
-    return vector_value(0.0, 0.0) if "vector" in value else {**value, "value": 0.0}
+    def size(v: dict[str, Any]) -> float:
+        return math.hypot(*v["vector"]) if "vector" in v else abs(v["value"])
+
+    if size(value) > least or size(ref) > least:
+        return value, ref
+    miss = (math.dist(value["vector"], ref["vector"]) if "vector" in ref
+            else abs(value["value"] - ref["value"]))
+    if miss <= CEILING * size(ref):
+        return value, ref
+
+    def nil(v: dict[str, Any]) -> dict[str, Any]:
+        return vector_value(0.0, 0.0) if "vector" in v else {**v, "value": 0.0}
+    return nil(value), nil(ref)
 
 
 def _vouched(answer: Answer, err: float, own: float, rounding: float = 0.0) -> float:
