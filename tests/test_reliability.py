@@ -276,3 +276,18 @@ def test_a_nanometre_mechanism_labels_its_centres_apart():
     assert "≡" not in svg
     for label in ("I₁₂", "I₁₃", "I₁₄", "I₂₃", "I₂₄", "I₃₄"):
         assert label in svg
+
+
+def test_a_torque_far_below_its_checks_scale_stands_where_it_meets_its_reference():
+    # The driving torque here is 2.6e-10 N·m beside inertia loads that make the check's scale
+    # some million times larger, so the check alone cannot tell it from 0; it meets the
+    # Newton–Euler reference to 1e-5 of itself, so it stands, and the balance of energy
+    # (tests/random_loads.py's own finite differences, no joint force in it) agrees.
+    from tests.random_loads import oracle
+
+    path = EDGE / "small-torque-beside-big-loads.toml"
+    solution = tarsim.solve(tarsim.load(str(path)))
+    q = solution.positions[0].quantities["T2"]
+    assert q.passed and q.value["value"] != 0.0
+    assert q.value["value"] == pytest.approx(q.reference["value"], rel=1e-5)
+    assert oracle(solution, path.read_text(encoding="utf-8")) == []
