@@ -7,7 +7,11 @@ loses rank there, and the linkage may go on in either assembly. A branch named b
 from one motion to another between two steps. Nothing in a turn's samples shows this but
 the Jacobian's conditioning, which falls to 0 like the distance to the point (the two
 assemblies cross at an angle): a step lands on it only by chance, so it is sought
-between the steps, where the sampled conditioning dips.
+between the steps, where the sampled conditioning dips. A step that does land on one is
+refused by the solver as a dead point, as it refuses the positions a rounding either side:
+a rhombus's moving pin on a frame pivot too, where the circles that place the next pin
+coincide (refused as no assembly, it would read as a gap, and the turn would run on
+past it).
 """
 
 from __future__ import annotations

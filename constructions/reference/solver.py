@@ -408,6 +408,14 @@ class _Assembly:
         cx, cy = self.at[x], self.at[y]
         d = float(np.linalg.norm(cy - cx))
         if d == 0.0:
+            if abs(ri - rj) <= _SLACK * max(ri, rj):
+                # The circles coincide (a rhombus's moving pin on a frame pivot): the linkage
+                # assembles with the pin anywhere on them, i and j turning together about x
+                # while the input is held. It is the dead point the Jacobian finds a rounding
+                # either side, and a change point a turn may land on: refused as one.
+                error = _dead_point(self.m, sorted((i, j)))
+                error.detail = f"the circles that place {name} about {x} and {y} coincide"
+                raise error
             raise self._fail(f"{self._label(i)} and {self._label(j)} turn about the same point "
                              f"{x} = {y}, so {name} is undetermined", i, name)
         margin = max(d - (ri + rj), abs(ri - rj) - d)
@@ -673,20 +681,24 @@ class _System:
 
 # ----------------------------------------------------------------------------- solve
 
+def _dead_point(mech: Mechanism, free: list[int]) -> SingularPosition:
+    """The refusal of a dead point, where links ``free`` can move with the input held."""
+    who = "link" if len(free) == 1 else "links"
+    return SingularPosition(
+        f"dead point at input angle {mech.units.angle_brief(mech.drive.angle)}: {who} "
+        f"{', '.join(map(str, free))} can move while link {mech.drive.link} is held, so ω and "
+        "α are undefined; choose another input angle or another input link", link=free[0],
+        angle_deg=math.degrees(mech.drive.angle))
+
+
 def _singular(system: _System, jac: np.ndarray) -> tuple[float, SingularPosition | None]:
     _, sv, vt = np.linalg.svd(system.scaled(jac))
     rcond = float(sv[-1] / sv[0]) if sv[0] > 0.0 else 0.0
     if rcond >= SINGULAR_RCOND:
         return rcond, None
     null = np.abs(vt[-1]).reshape(-1, 3).max(axis=1)
-    free = [k for k, v in zip(system.moving, null) if v >= 0.2 * null.max()]
-    deg = math.degrees(system.m.drive.angle)
-    who = "link" if len(free) == 1 else "links"
-    at = system.m.units.angle_brief(system.m.drive.angle)
-    error = SingularPosition(
-        f"dead point at input angle {at}: {who} {', '.join(map(str, free))} can move "
-        f"while link {system.m.drive.link} is held, so ω and α are undefined; choose another "
-        "input angle or another input link", link=free[0], angle_deg=deg)
+    error = _dead_point(system.m, [k for k, v in zip(system.moving, null)
+                                   if v >= 0.2 * null.max()])
     error.detail = f"the loop equations' Jacobian is singular there: rcond {rcond:.1e}"
     return rcond, error
 
