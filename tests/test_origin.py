@@ -113,7 +113,6 @@ def test_wrong_deltoid_far_VB_passes(tmp_path):
     text = (HERE / "wrong-deltoid-far-VB-passes.toml").read_text(encoding="utf-8")
     far = solved(text, tmp_path, "far")
     q = far.results["positions"][0]["quantities"]["V_B"]
-    speed = 39.94336978890228 * 93.8830469323322
     for got in (q, *q["by_method"].values()):
         assert got["passed"] and got["tolerance"] <= CEILING
         # Below what its check can tell from nothing, it is said as nothing, pointing nowhere.
