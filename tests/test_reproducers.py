@@ -48,7 +48,8 @@ def slotted_lever_ratio(crank: float, centres: float) -> float:
 
 
 # ----- wrong answers --------------------------------------------------------------------------
-def test_a_change_point_position_has_mobility_one_and_momentarily_two():
+def test_check_dof_at_change_point_position():
+    """A change-point position has mobility one, and momentarily two."""
     # O2A = O4B = 100, AB = O2O4 = 300 at θ2 = 0°: A, B, O2 and O4 lie on one line, where the
     # parallelogram and the antiparallelogram assemblies meet.
     q = overall("check-dof-at-change-point-position")["dof"]
@@ -66,7 +67,8 @@ def test_away_from_the_change_point_the_mobility_is_one(tmp_path):
     assert "here" not in q and q["value"] == 1 and q["reference"] == {"value": 1}
 
 
-def test_the_crank_range_stops_at_grashofs_breakpoint_not_past_the_triple_rocker_gap():
+def test_check_range_bracket_skips_gap():
+    """The crank range stops at Grashof's breakpoint, not past the triple-rocker gap."""
     g, b, c = 298.2558607712765, 335.6835800020368, 168.17049912159501
     q = overall("check-range-bracket-skips-gap")["range_O2A"]
     # O2A + AB = O2O4 + O4B: beyond it a triple-rocker; further on a crank-rocker again, but
@@ -81,7 +83,8 @@ def test_the_crank_range_stops_at_grashofs_breakpoint_not_past_the_triple_rocker
     assert q["passed"]
 
 
-def test_a_change_point_linkage_keeps_its_class_at_its_length_alone():
+def test_check_range_change_point_parallelogram():
+    """A change-point linkage keeps its class at its length alone."""
     q = overall("check-range-change-point-parallelogram")["range_AB"]
     assert q["low"] == q["high"] == 0.3
     assert q["reference"]["low"] == pytest.approx(0.3, abs=1e-9 * 0.3)
@@ -132,7 +135,8 @@ def test_slow_sweep_rhombus_far(monkeypatch):
         "motion to the other there"]
 
 
-def test_the_p37_stroke_does_not_depend_on_the_angle_drawn_from():
+def test_check_stroke_p37_at_200deg():
+    """P-37's stroke does not depend on the angle it is drawn from."""
     q = overall("check-stroke-p37-at-200deg")
     # The lever (O4B = 26 cm) swings ±α either side of O4O2, sin α = 6/16; the rod BC stands
     # the same way at both limits, so the ram moves as B does across: 2 · 26 · 6/16 = 19.5 cm.
@@ -142,7 +146,8 @@ def test_the_p37_stroke_does_not_depend_on_the_angle_drawn_from():
 
 
 @pytest.mark.slow
-def test_the_homework_292_stroke_is_the_blocks_whole_travel():
+def test_check_stroke_velocity_homework_292():
+    """Homework 292's stroke is the block's whole travel."""
     ex = tarsim.load(str(HERE / "check-stroke-velocity-homework-292.toml"))
     q = solve_overall(ex).quantities["stroke"]
     mech, d = ex.mechanism, ex.mechanism.drive
@@ -164,7 +169,8 @@ def test_the_homework_292_stroke_is_the_blocks_whole_travel():
     assert q.passed
 
 
-def test_a_huge_input_angle_is_taken_less_whole_turns():
+def test_check_time_ratio_huge_input_angle():
+    """A huge input angle is taken less its whole turns."""
     ex = tarsim.load(str(HERE / "check-time-ratio-huge-input-angle.toml"))
     # −1e9° is −280° and 2 777 777 whole turns; the degrees are reduced before they are
     # turned into radians, so nothing is lost.
@@ -175,7 +181,8 @@ def test_a_huge_input_angle_is_taken_less_whole_turns():
     assert q["passed"]
 
 
-def test_a_branch_given_as_a_point_is_followed_round_the_revolution():
+def test_check_time_ratio_point_branch():
+    """A branch given as a point is followed round the revolution."""
     g, r, rod, rocker = 300.0, 100.0, 250.0, 200.0
 
     def at_o2(diagonal: float) -> float:
@@ -249,7 +256,7 @@ def test_the_reference_finds_both_reversals_whichever_angle_it_starts_from():
 
 
 # ----- one clear line -----------------------------------------------------------------------------
-@pytest.mark.parametrize("name, says", [
+ONE_LINE = [
     ("crash-1-huge-omega",
      r"crash-1-huge-omega\.toml:33: \[input\.omega\] omega = 1e\+155 is out of the range tarsim "
      r"takes \(between 1e-30 and 1e30 in size, or 0\)"),
@@ -269,7 +276,11 @@ def test_the_reference_finds_both_reversals_whichever_angle_it_starts_from():
     ("crash-8-deep-nesting-500",
      r"crash-8-deep-nesting-500\.toml:16:47: nests arrays or tables too deeply to read"),
     ("nan-5-huge-alpha", r"nan-5-huge-alpha\.toml:30: \[input\.alpha\] alpha = 1e\+300 is out"),
-])
+]
+"""Each hostile reproducer and the line it must be refused with."""
+
+
+@pytest.mark.parametrize("name, says", [pytest.param(n, says, id=n) for n, says in ONE_LINE])
 def test_a_hostile_file_gets_one_line_and_leaves_nothing(tmp_path, name, says):
     out = tmp_path / "solution"
     result = CliRunner().invoke(cli, ["solve", str(HERE / f"{name}.toml"), "-o", str(out),
