@@ -35,6 +35,7 @@ from . import asks as A
 from .acceleration_polygon import drawn_acceleration_polygon
 from .checks import NOISE, Answer, FigureSpec, quiet, vector_value
 from .errors import GeometryError, TarsimError
+from .force_rounding import answer_roundings, image_base, load_roundings, read_conditioning
 from .loads import RESTING, Loads, crank_tangent, leaning, stroke_axis
 from .model import Mechanism, SlideKind
 from .narration import Number, Quantity, Word, phrase
@@ -86,6 +87,9 @@ class Forces:
     bodies: dict[int, list[tuple[Vec, Vec, float, str]]] = field(default_factory=dict)
     """Each moving link as a free body: every force on it (where, force N, couple N·m, its
     name), the loads and the joints' forces as the polygons found them."""
+    rounding: dict[str, float] | None = field(default_factory=dict)
+    """What the rounding of the inertia loads read off the acceleration polygon makes of
+    each answer (N, N·m), by :mod:`~.force_rounding`; None where it is without bound."""
 
 
 @dataclass(frozen=True)
@@ -189,8 +193,12 @@ def draw_forces(work) -> Forces:
         slip = (loads.friction, _lever_sliding(work, group, at))
     if loads.friction_circle:
         known = _with_pin_friction(work, c, group, at, known, scale, slip)
+    rounding = {} if not loads.masses else answer_roundings(
+        known, load_roundings(work, known, at),
+        lambda trial: _analyse(c.scratch(), mech, group, at, trial, scale, slip),
+        size=size, driver=mech.drive.link)
     out = _analyse(c, mech, group, at, known, scale, slip)
-    out.inertia, out.loads = inertia, known
+    out.inertia, out.loads, out.rounding = inertia, known, rounding
     return out
 
 
@@ -992,11 +1000,10 @@ def _inertia(work, loads: Loads, at) -> dict[int, tuple[Vec, float]]:
     c: Construction = work.assembly
     out = {}
     for m in loads.masses:
-        k = mech.link(m.link)
         g_at = _world(work, m.link, m.centre, at)
         omega = mech.drive.omega if m.link == mech.drive.link else vp.rates.get(m.link, 0.0)
         alpha = mech.drive.alpha if m.link == mech.drive.link else ap.rates.get(m.link, 0.0)
-        ref = next(n for n in k.names if n in ap.tips or 1 in mech.links_at(n))
+        ref = image_base(mech, ap.tips, m.link)
         k_tip = ap.tips[ref] if ref in ap.tips else ap.pole
         r = (g_at[0] - at[ref][0], g_at[1] - at[ref][1])
         size = math.hypot(*r)
@@ -1140,6 +1147,7 @@ def answer(work, ask) -> Answer:
     cond = min([c[r].conditioning for refs in forces.refs.values() for r in refs] + [1.0])
     if work.has("acceleration polygon"):
         cond *= drawn_acceleration_polygon(work).worst()
-    cond /= _amplification(forces, work.assembly.size)
+    cond = min(cond / _amplification(forces, work.assembly.size),
+               read_conditioning(work, forces, ask))
     return Answer(ask, value, cond, "force polygons", refs=forces.every,
                   figures=(LOADS, FORCES, BODIES), panel=Panel.FORCE)

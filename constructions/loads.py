@@ -8,10 +8,12 @@ torque that keeps the motion as given.
 
 from __future__ import annotations
 
+import math
+from collections.abc import Callable
 from dataclasses import dataclass
 
 __all__ = ["Couple", "Loads", "Mass", "PointForce", "GRAVITY", "RESTING", "crank_tangent",
-           "leaning", "stroke_axis"]
+           "leaning", "made_of", "stroke_axis"]
 
 GRAVITY = 9.81
 """m/s², the value the course project uses."""
@@ -86,6 +88,33 @@ class Loads:
     def mass_of(self, link: int) -> Mass | None:
         """The mass on ``link``, if it has one."""
         return next((m for m in self.masses if m.link == link), None)
+
+
+def made_of(loads: Loads, motion: Callable[[Mass], tuple[float, float, float]], *,
+            size: float, a_in: float) -> float:
+    """The force (N) the joint forces are made of, and so round at.
+
+    Each mass's weight and inertia force, m·(g + |a_G| + ω²·size + a_in), and its inertia
+    couple over ``size`` (the mechanism's, m), I·(|α| + ω² + a_in/size)/size: an
+    acceleration is found from the ω² terms and the input's acceleration ``a_in``, and
+    rounds at their size even where they cancel; each external force's size, and each
+    couple over ``size``. ``motion`` gives a mass's link's ω, α and its centre's |a_G|. A
+    joint force is a sum of these, turned and levered; where they nearly cancel, this, not
+    the joint force itself, is what its rounding is relative to.
+
+    >>> made_of(Loads(masses=(Mass(2, 2.0, (0.0, 0.0), 0.0),), gravity=10.0),
+    ...         lambda m: (3.0, 0.0, 4.0), size=1.0, a_in=5.0)
+    56.0
+    """
+    size = size or 1.0
+    terms = []
+    for m in loads.masses:
+        w, a, a_g = motion(m)
+        terms.append(m.mass * (loads.gravity + a_g + w * w * size + a_in)
+                     + m.inertia * (abs(a) + w * w + a_in / size) / size)
+    terms += [math.hypot(*f.force) + f.resist for f in loads.forces]
+    terms += [abs(c.moment) / size for c in loads.couples]
+    return math.fsum(terms)
 
 
 def stroke_axis(pivot, pin, stroke) -> tuple[float, float]:

@@ -26,7 +26,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import InputError
-from ..loads import RESTING, Loads, crank_tangent, leaning, stroke_axis
+from ..loads import RESTING, Loads, crank_tangent, leaning, made_of, stroke_axis
 from ..model import Mechanism, SlideKind
 from .solver import Kinematics, point_acceleration, point_velocity
 
@@ -120,25 +120,13 @@ def _loads_on(kin: Kinematics, mech: Mechanism, loads: Loads, link: int
 
 
 def load_scale(mech: Mechanism, kin: Kinematics, loads: Loads, size: float) -> float:
-    """The force (N) the joint forces are made of, and so round at: each mass's weight and
-    inertia force, m·(g + |a_G| + ω²·size + a_in), and its inertia couple over ``size``
-    (the mechanism's, m), I·(|α| + ω² + a_in/size)/size: an acceleration is found from the
-    ω² terms and the input's acceleration a_in, and rounds at their size even where they
-    cancel; each external force's size, and each couple over ``size``. A joint force is a
-    sum of these, turned and levered; where they nearly cancel, this, not the joint force
-    itself, is what its rounding is relative to."""
-    size = size or 1.0
-    a_in = mech.input_acceleration
-    terms = []
-    for m in loads.masses:
-        w, a = kin.omegas.get(m.link, 0.0), kin.alphas.get(m.link, 0.0)
+    """The force (N) the joint forces are made of, and so round at (:func:`~..loads.made_of`),
+    each mass's motion as the analytic solver finds it."""
+    def motion(m) -> tuple[float, float, float]:
         g = world_point(kin, mech, m.link, m.centre)
-        a_g = math.hypot(*point_acceleration(kin, mech, m.link, g))
-        terms.append(m.mass * (loads.gravity + a_g + w * w * size + a_in)
-                     + m.inertia * (abs(a) + w * w + a_in / size) / size)
-    terms += [math.hypot(*f.force) + f.resist for f in loads.forces]
-    terms += [abs(c.moment) / size for c in loads.couples]
-    return math.fsum(terms)
+        return (kin.omegas.get(m.link, 0.0), kin.alphas.get(m.link, 0.0),
+                math.hypot(*point_acceleration(kin, mech, m.link, g)))
+    return made_of(loads, motion, size=size, a_in=mech.input_acceleration)
 
 
 def balance(mech: Mechanism, kin: Kinematics, loads: Loads) -> Statics:
