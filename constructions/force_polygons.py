@@ -1132,7 +1132,8 @@ def answer(work, ask) -> Answer:
     Its conditioning is the worst of the acts it rests on: the crossing that closes the
     dyad's polygon (or the lever's), whose forces every later polygon takes in as numbers,
     so the crank's answers inherit it; and the acceleration polygon the inertia loads are
-    read off.
+    read off, both its worst act and what its rounding of each load, levered through the
+    group, makes of this answer beside the loads' scale (:mod:`~.force_rounding`).
     """
     forces = drawn_forces(work)
     c = work.assembly
