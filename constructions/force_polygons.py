@@ -35,8 +35,9 @@ from . import asks as A
 from .acceleration_polygon import drawn_acceleration_polygon
 from .checks import NOISE, Answer, FigureSpec, quiet, vector_value
 from .errors import GeometryError, TarsimError
-from .force_rounding import answer_roundings, image_base, load_roundings, read_conditioning
-from .loads import RESTING, Loads, crank_tangent, leaning, stroke_axis
+from .force_rounding import (answer_roundings, image_base, load_roundings, rate_roundings,
+                             read_conditioning, speed_rounding)
+from .loads import Loads, crank_tangent, leaning, near_rest, near_rest_refusal, stroke_axis
 from .model import Mechanism, SlideKind
 from .narration import Number, Quantity, Word, phrase
 from .record import Construction, Kind, Panel, Ref, Role
@@ -176,7 +177,7 @@ def draw_forces(work) -> Forces:
     c: Construction = work.assembly
     at = {name: c.point(name).xy for name in mech.point_names}
     inertia = _inertia(work, loads, at)
-    known = {k.number: _loads(work, loads, k.number, at, inertia) for k in mech.links
+    known = {k.number: _loads(work, loads, k.number, at, inertia, group) for k in mech.links
              if k.number != 1}
     # The largest load about 80 drawing mm; a couple counts as the force it makes across
     # the mechanism, so loads of couples alone still get a scale.
@@ -184,15 +185,17 @@ def draw_forces(work) -> Forces:
     biggest = max([max(math.hypot(*f), abs(m) / size) for ls in known.values()
                    for _, f, m, _ in ls] + [1e-300])
     scale = 0.08 / nice(biggest)
+    # Friction leans each slide's push against its sliding; a slide at rest, to the
+    # velocity polygon's rounding, takes none (a dyad's block then pushes as without).
+    slides = _slides(work, group, at) if loads.friction else []
     slip = None
-    if isinstance(group, _Shape):
-        if loads.friction and group.guide is not None:
-            vp = drawn_velocity_polygon(work)
-            slip = (loads.friction, _unit_or_zero(vp.vector(group.b), _fastest(vp, at)))
-    elif loads.friction:
-        slip = (loads.friction, _lever_sliding(work, group, at))
+    if isinstance(group, _Shape) and slides and slides[0].direction != (0.0, 0.0):
+        slip = (loads.friction, slides[0].direction)
+    elif isinstance(group, _Lever) and slides:
+        slip = (loads.friction, {s.key: s.direction for s in slides})
     if loads.friction_circle:
         known = _with_pin_friction(work, c, group, at, known, scale, slip)
+    _say_resting(work, group, at, slides)
     rounding = {} if not loads.masses else answer_roundings(
         known, load_roundings(work, known, at),
         lambda trial: _analyse(c.scratch(), mech, group, at, trial, scale, slip),
@@ -247,15 +250,22 @@ def _with_pin_friction(work, c, group, at, known, scale: float, slip) -> dict:
         If the forces do not settle (the friction would lock the mechanism).
     """
     mech, loads = work.mechanism, work.loads
-    rates = dict(drawn_velocity_polygon(work).rates)
-    rates[mech.drive.link], rates[1] = mech.drive.omega, 0.0
+    rates = _rates(work)
+    still = rate_roundings(work, _lever_spans(group, at))
+    top = max(abs(w) for w in rates.values()) or 1.0
+    for point, by, on in mech.pin_pairs:
+        turning = abs(rates.get(on, 0.0) - rates.get(by, 0.0))
+        if near_rest(turning, still.get(on, 0.0) + still.get(by, 0.0)):
+            raise TarsimError(near_rest_refusal(mech, f"link {on} turns on link {by} at the "
+                                                f"pin {point}", turning / top, of="rate"))
     pins = mech.pin_pairs
     sizes: dict = {}
     rounds = 0
     for _ in range(_ROUNDS):
         rounds += 1
         trial = c.scratch()                        # a scratch sheet over the drawing so far
-        with_couples = _pin_couples(known, pins, sizes, rates, at, loads.friction_circle)
+        with_couples = _pin_couples(known, pins, sizes, rates, at, loads.friction_circle,
+                                    still)
         locks = TarsimError(f"with friction circles of {loads.friction_circle * 1e3:g} mm "
                             "the pins' forces do not settle: the mechanism locks at this "
                             "position")
@@ -277,7 +287,7 @@ def _with_pin_friction(work, c, group, at, known, scale: float, slip) -> dict:
     c.draw("force:say:circles", "mark", origin, panel=Panel.FORCE, phrase=phrase(
         "force.circles", rho=Quantity(loads.friction_circle / mech.units.metres,
                                       mech.units.length), rounds=rounds))
-    return _pin_couples(known, pins, sizes, rates, at, loads.friction_circle)
+    return _pin_couples(known, pins, sizes, rates, at, loads.friction_circle, still)
 
 
 _ROUNDS = 200
@@ -285,17 +295,16 @@ _ROUNDS = 200
 the friction circle over the links' lengths."""
 
 
-def _pin_couples(known, pins, sizes, rates, at, rho: float) -> dict:
+def _pin_couples(known, pins, sizes, rates, at, rho: float, still: dict[int, float]) -> dict:
     """``known`` with each pin's friction couple, ρ·|F| against the turning, on each of the
-    two links (the frame's left out); a pin turning no faster than :data:`~.loads.RESTING`
-    of the fastest link rests, and takes none."""
+    two links (the frame's left out); a pin turning no faster than its links' rates round
+    at (``still``, :func:`~.force_rounding.rate_roundings`) rests, and takes none."""
     out = {k: list(v) for k, v in known.items()}
-    fastest = max([abs(w) for w in rates.values()] + [0.0])
     for pin in pins:
         point, by, on = pin
-        turning = rates.get(on, 0.0) - rates.get(by, 0.0)
-        if abs(turning) <= RESTING * fastest or pin not in sizes:
+        if _pin_rests(rates, still, by, on) or pin not in sizes:
             continue
+        turning = rates.get(on, 0.0) - rates.get(by, 0.0)
         m = -math.copysign(rho * sizes[pin], turning)
         out[on].append((at[point], (0.0, 0.0), m, f"Mf_{by}{on}"))       # of by on on
         if by != 1:
@@ -331,26 +340,140 @@ _WHY = ("the force polygons draw a four-bar, a slider-crank or a slotted lever o
         "mechanism's forces are in the turning-moment diagram (tarsim sweep)")
 
 
-def _lever_sliding(work, lv: "_Lever", at) -> dict[str, Vec]:
-    """How each slide of a slotted lever slides, as unit velocities read off the velocity
-    polygon: the ram on its guide, the ram's pin and the block along the slot (each less
-    the velocity of the lever's own point under it, ω × PX)."""
+@dataclass(frozen=True)
+class _Slide:
+    """How one slide of the group slides, as the velocity polygon reads it: ``key`` names it
+    in the group's slip ("guide", "pin" or "block"), ``link`` the link that slides on link
+    ``guide``, ``what`` (a phrase), ``velocity`` its velocity there (m/s) and ``still`` the
+    rounding of a zero the polygon reads it to."""
+
+    key: str
+    link: int
+    guide: int
+    what: object
+    velocity: Vec
+    still: float
+
+    @property
+    def joint(self) -> str:
+        """Its force's name: F_15, of the guide on the slider."""
+        return f"F_{self.guide}{self.link}"
+
+    @property
+    def direction(self) -> Vec:
+        """Its unit velocity, or nothing where it rests: friction then takes no side."""
+        return _unit_or_zero(self.velocity, self.still)
+
+
+def _slides(work, group, at) -> list[_Slide]:
+    """The slides of the group the crank drives, as the velocity polygon reads them: a
+    slider-crank's block on its guide; a slotted lever's block along the slot, and its
+    ram's on the frame's guide and its pin along the slot (each along the slot less the
+    velocity of the lever's own point under it, ω × PX), the ram's read to its lever's
+    gain on the rounding (:func:`_gain`).
+
+    Raises
+    ------
+    TarsimError
+        If one slides too near rest to tell which way (:func:`~.loads.near_rest`).
+    """
     vp = drawn_velocity_polygon(work)
-    w, fastest = vp.rates.get(lv.l, 0.0), _fastest(vp, at)
+    if isinstance(group, _Shape):
+        if group.guide is None:
+            return []
+        return _sure(work, [_Slide("guide", group.j, 1, phrase("force.the_guide"),
+                                   vp.vector(group.b), speed_rounding(work))])
+    lv, w = group, vp.rates.get(group.l, 0.0)
 
     def on_lever(point: str) -> Vec:
         v = vp.vector(point)
         x, y = at[point][0] - at[lv.p][0], at[point][1] - at[lv.p][1]
-        return _unit_or_zero((v[0] + w * y, v[1] - w * x), fastest)
-    out = {"block": on_lever(lv.a)}
+        return (v[0] + w * y, v[1] - w * x)
+    slot = phrase("force.the_slot", link=lv.l)
+    out = [_Slide("block", lv.b, lv.l, slot, on_lever(lv.a), speed_rounding(work))]
     if lv.r is not None:
-        out |= {"guide": _unit_or_zero(vp.vector(lv.q), fastest), "pin": on_lever(lv.q)}
-    return out
+        still = speed_rounding(work, _gain(lv, at, lv.q))
+        out += [_Slide("guide", lv.r, 1, phrase("force.the_frame_guide"), vp.vector(lv.q),
+                       still),
+                _Slide("pin", lv.r, lv.l, slot, on_lever(lv.q), still)]
+    return _sure(work, out)
 
 
-def _fastest(vp, at) -> float:
-    """The fastest speed the velocity polygon draws at the mechanism's points."""
-    return max([math.hypot(*vp.vector(p)) for p in at if p in vp.tips] + [0.0])
+def _sure(work, slides: list[_Slide]) -> list[_Slide]:
+    """``slides``, each resting or sliding past doubt.
+
+    Raises
+    ------
+    TarsimError
+        If one slides too near rest to tell which way (:func:`~.loads.near_rest`).
+    """
+    fastest = drawn_velocity_polygon(work).extent() or 1.0
+    for s in slides:
+        speed = math.hypot(*s.velocity)
+        if near_rest(speed, s.still):
+            raise TarsimError(near_rest_refusal(
+                work.mechanism, f"link {s.link} slides on link {s.guide}", speed / fastest))
+    return slides
+
+
+def _say_resting(work, group, at, slides: list[_Slide]) -> None:
+    """Say, among the force polygons, each joint friction acts at that rests: it slides or
+    turns within the rounding of a zero the velocity polygon reads it to. Friction's
+    direction is undefined there (it flips as the joint passes rest), so the joint is
+    taken at rest, friction taking no side, as at an extreme position or a dead centre;
+    the Newton–Euler reference takes it so to its own rounding."""
+    vp = drawn_velocity_polygon(work)
+    fastest = vp.extent() or 1.0
+    said = [phrase("force.resting", what=s.what, link=s.link, name=s.joint,
+                   share=Number(math.hypot(*s.velocity) / fastest, ".2g"),
+                   still=Number(s.still / fastest, ".2g"))
+            for s in slides if s.direction == (0.0, 0.0)]
+    if work.loads.friction_circle:
+        rates, still = _rates(work), rate_roundings(work, _lever_spans(group, at))
+        top = max(abs(w) for w in rates.values()) or 1.0
+        for point, by, on in work.mechanism.pin_pairs:
+            if _pin_rests(rates, still, by, on):
+                said.append(phrase(
+                    "force.resting_pin", pin=point, on=on, by=by,
+                    share=Number(abs(rates.get(on, 0.0) - rates.get(by, 0.0)) / top, ".2g"),
+                    still=Number((still.get(on, 0.0) + still.get(by, 0.0)) / top, ".2g")))
+    if not said:
+        return
+    c = work.assembly
+    at_pole = c.give("force:rest:at", g.Point(0.0, 0.0), label="", panel=Panel.FORCE)
+    for n, what in enumerate(said):
+        c.draw(f"force:say:rest{n}", "mark", at_pole, panel=Panel.FORCE, phrase=what)
+
+
+def _pin_rests(rates: dict[int, float], still: dict[int, float], by: int, on: int) -> bool:
+    """Whether link ``on`` turns on link ``by`` no faster than their rates round at."""
+    turning = rates.get(on, 0.0) - rates.get(by, 0.0)
+    return abs(turning) <= still.get(on, 0.0) + still.get(by, 0.0)
+
+
+def _gain(group, at, point: str) -> float:
+    """How many times a slotted lever carries the rounding of its turning, read at the
+    block's pin A near its pivot P, out to ``point``: |PX|/|PA| for a point of the lever or
+    the ram beyond A (a lay-off by proportion, which the velocity polygon's conditioning
+    does not show), 1 for any other point."""
+    if not isinstance(group, _Lever) or point in (group.o, group.a):
+        return 1.0
+    return max(1.0, math.dist(at[group.p], at[point]) / math.dist(at[group.p], at[group.a]))
+
+
+def _lever_spans(group, at) -> dict[int, float] | None:
+    """Where a slotted lever's turning is read: at the block's pin A, |PA| from its pivot,
+    however far the polygon lays it off (:func:`~.force_rounding.rate_roundings`)."""
+    if not isinstance(group, _Lever):
+        return None
+    return {group.l: math.dist(at[group.p], at[group.a])}
+
+
+def _rates(work) -> dict[int, float]:
+    """Each link's ω as the velocity polygon reads it, the input's given and the frame's 0."""
+    rates = dict(drawn_velocity_polygon(work).rates)
+    rates[work.mechanism.drive.link], rates[1] = work.mechanism.drive.omega, 0.0
+    return rates
 
 
 def _group_of(mech: Mechanism):
@@ -423,11 +546,11 @@ def _dyad(c, draw, out: Forces, sh: _Shape, at, known, slip=None):
     return sh.i, (-f_di[0], -f_di[1]), sh.o, sh.a
 
 
-def _unit_or_zero(v: Vec, beside: float) -> Vec:
-    """``v`` made a unit vector, or nothing when it is the rounding of a zero beside the
-    speed ``beside`` (a slide at rest: friction takes no side)."""
+def _unit_or_zero(v: Vec, still: float) -> Vec:
+    """``v`` made a unit vector, or nothing when it is no longer than ``still``, the
+    rounding of a zero (a slide at rest: friction takes no side)."""
     n = math.hypot(*v)
-    return (v[0] / n, v[1] / n) if n > RESTING * beside else (0.0, 0.0)
+    return (v[0] / n, v[1] / n) if n > still else (0.0, 0.0)
 
 
 def _friction_angle(slip):
@@ -771,7 +894,7 @@ def _slotted(c, draw, out: Forces, lv: _Lever, at, known, slip=None):
         c.draw("force:say:ram", "mark", origin, panel=Panel.FORCE, label=f"link {lv.r}",
                phrase=phrase("force.ram", r=lv.r, l=lv.l))
         tip = draw.loads(lv.r, origin, known[lv.r])
-        if slip is None:
+        if slip is None or slip[1]["guide"] == slip[1]["pin"] == (0.0, 0.0):
             guide = draw.square_to(origin, lv.guide, "N")
             across = c.draw("force:line:slotN", "perpendicular_through", origin, slot,
                             kind=Kind.LINE, panel=Panel.FORCE)
@@ -898,15 +1021,14 @@ class _Drafter:
         n = math.hypot(*u)
         raw = self.c.give(f"force:guide:{name}", g.Line(-u[1] / n, u[0] / n, 0.0), label="",
                           panel=Panel.FORCE)
+        # A guide at rest pushes square to itself, as its resting step says.
+        said = None if slip[1] == (0.0, 0.0) else phrase(
+            "force.leaning", what=what or phrase("force.the_guide"), phi=_friction_angle(slip),
+            side=Word("the guide's left (a quarter turn counter-clockwise from its direction)"
+                      if side > 0 else
+                      "the guide's right (a quarter turn clockwise from its direction)"))
         return self.c.draw(f"force:line:{name}", "parallel_through", through, raw,
-                           kind=Kind.LINE,
-                           panel=Panel.FORCE, phrase=phrase(
-                               "force.leaning", what=what or phrase("force.the_guide"),
-                               phi=_friction_angle(slip),
-                               side=Word("the guide's left (a quarter turn counter-clockwise "
-                                         "from its direction)" if side > 0 else
-                                         "the guide's right (a quarter turn clockwise from its "
-                                         "direction)")))
+                           kind=Kind.LINE, panel=Panel.FORCE, phrase=said)
 
     def close(self, tip: Ref, far: Ref, start: Ref, near: Ref, said, far_name: str,
               near_name: str) -> tuple[Ref, Ref, Ref]:
@@ -1054,9 +1176,11 @@ def _said(value: float, unit: str, spec: str = ".4g") -> tuple[Number, str]:
     return (Number(value, spec), unit)
 
 
-def _loads(work, loads: Loads, link: int, at, inertia) -> list[tuple[Vec, Vec, float, str]]:
+def _loads(work, loads: Loads, link: int, at, inertia, group
+           ) -> list[tuple[Vec, Vec, float, str]]:
     """Every load on ``link`` as (where, force N, couple N·m, its name): its inertia force
-    and couple, its weight, the external forces and couples."""
+    and couple, its weight, the external forces and couples (a resistance only where its
+    point moves, beyond the rounding of a zero, on its stroke)."""
     out = []
     m = loads.mass_of(link)
     if m is not None:
@@ -1077,8 +1201,14 @@ def _loads(work, loads: Loads, link: int, at, inertia) -> list[tuple[Vec, Vec, f
             vp = drawn_velocity_polygon(work)
             v = vp.vector(f.point)
             speed = math.hypot(*v)
-            # A point no faster than RESTING of the fastest stands still (a dead centre).
-            moving = speed > RESTING * _fastest(vp, at) and (
+            # A point no faster than the rounding of a zero stands still (a dead centre);
+            # one just past it moves no known way.
+            still = speed_rounding(work, _gain(group, at, f.point))
+            if near_rest(speed, still):
+                raise TarsimError(near_rest_refusal(
+                    work.mechanism, f"link {link} moves at its point {f.point}",
+                    speed / (vp.extent() or 1.0), acting="the resistance"))
+            moving = speed > still and (
                 f.along is None or v[0] * f.along[0] + v[1] * f.along[1] > 0.0)
             if not moving:
                 continue                                # the return stroke: no cut

@@ -23,11 +23,12 @@ from . import asks as A
 from .acceleration_polygon import drawn_acceleration_polygon
 from .checks import EPS
 from .errors import TarsimError
-from .loads import made_of
+from .loads import made_of, resting_speed
 from .model import Mechanism, SlideKind
 from .velocity_polygon import drawn_velocity_polygon
 
-__all__ = ["image_base", "load_roundings", "answer_roundings", "read_conditioning"]
+__all__ = ["image_base", "load_roundings", "answer_roundings", "rate_roundings",
+           "read_conditioning", "speed_rounding"]
 
 Vec = tuple[float, float]
 
@@ -51,6 +52,33 @@ def _reader(polygon, mech: Mechanism, link: int) -> int | None:
     if block is not None:
         return None if block.guide_link == 1 else _reader(polygon, mech, block.guide_link)
     return min(polygon.spans, key=polygon.spans.get, default=None)
+
+
+def speed_rounding(work, gain: float = 1.0) -> float:
+    """The fastest a point may move, or slide on a link, as the velocity polygon reads it,
+    and still rest (m/s): the rounding of a zero there, :func:`~.loads.resting_speed` of
+    the polygon's extent at its worst conditioning, times ``gain``, what a lever multiplies
+    the reading by beyond what its conditioning shows (its turning read off the block's pin
+    near its pivot and laid off, by proportion, to a ram's pin far out)."""
+    vp = drawn_velocity_polygon(work)
+    return resting_speed(vp.extent(), vp.worst()) * gain
+
+
+def rate_roundings(work, spans: dict[int, float] | None = None) -> dict[int, float]:
+    """The fastest each link may turn, as the velocity polygon reads it, and still rest
+    (rad/s): :func:`speed_rounding` over the span its rate is read across (a block in a
+    swinging slot takes its slot's; ``spans`` stand for the polygon's where a rate is read
+    nearer its pivot than the polygon's span says, a lever's at its block). The input's
+    rate is given, and a block on a frame guide does not turn: theirs are 0."""
+    vp, mech = drawn_velocity_polygon(work), work.mechanism
+    across = vp.spans | (spans or {})
+    zero = speed_rounding(work)
+    out = {1: 0.0}
+    for k in mech.links:
+        if k.number != 1:
+            reader = _reader(vp, mech, k.number)
+            out[k.number] = zero / across[reader] if across.get(reader) else 0.0
+    return out
 
 
 def _sliding(vp, mech: Mechanism, link: int) -> float:

@@ -9,20 +9,74 @@ torque that keeps the motion as given.
 from __future__ import annotations
 
 import math
+import sys
 from collections.abc import Callable
 from dataclasses import dataclass
 
-__all__ = ["Couple", "Loads", "Mass", "PointForce", "GRAVITY", "RESTING", "crank_tangent",
-           "leaning", "made_of", "stroke_axis"]
+__all__ = ["Couple", "Loads", "Mass", "PointForce", "GRAVITY", "ROUNDINGS", "UNSURE",
+           "crank_tangent", "leaning", "made_of", "near_rest", "near_rest_refusal",
+           "resting_speed", "stroke_axis"]
 
 GRAVITY = 9.81
 """m/s², the value the course project uses."""
 
-RESTING = 1e-12
-"""A slide sliding, a pin turning or a resisted point moving slower than this share of the
-mechanism's fastest (point, or link) rests: the rounding of a zero, which must not choose
-friction's side or a resistance's way. Rounding leaves some 1e-15 of the fastest; a real
-motion of 1e-9 of it, as near a dead point, is motion, and friction acts on it in full."""
+ROUNDINGS = 64
+"""How many roundings of a zero a speed may stand at and still be one: the checks allow a
+construction as many (:func:`~.checks.tolerance`)."""
+
+
+def resting_speed(fastest: float, conditioning: float) -> float:
+    """The fastest a slide may slide, a pin turn or a resisted point move and still rest (m/s,
+    or rad/s for a pin): :data:`ROUNDINGS` times eps of the ``fastest`` speed (or rate) its
+    reading is made of, over the ``conditioning`` it is read at.
+
+    A speed read as the difference of speeds of size ``fastest`` carries their rounding,
+    magnified as the reading is ill-conditioned: below that it is the rounding of a zero,
+    and its sign is no direction, so it must not choose friction's side or a resistance's
+    way. Each reading passes its own rounding: the force polygons the velocity polygon's
+    extent and worst conditioning (times what a lever multiplies a reading by beyond it),
+    the Newton–Euler reference the solver's fastest speed and its Jacobian's conditioning.
+    Where a joint's speed is below this, friction's direction is undefined at the data's
+    precision (it flips as the joint passes rest); the joint is taken at rest, as one
+    exactly at rest is (an extreme position, a dead centre), friction taking no side, and
+    the force polygons say so. Just past it the way is still in doubt (:func:`near_rest`).
+
+    >>> resting_speed(2.0, 0.5) == 64 * 2.0**-52 * 2.0 / 0.5
+    True
+    """
+    if not conditioning > 0.0:
+        return math.inf                 # read with no digit: no speed is known to move
+    return ROUNDINGS * sys.float_info.epsilon * fastest / conditioning
+
+
+UNSURE = 64
+"""How many times its rounding of a zero a speed must pass before its way is read. Each method
+estimates its own rounding (the polygons from their crossings and a lever's gain, the
+reference from its Jacobian), and the two estimates differ, 2 to 20 times in the course's
+mechanisms: a speed past one method's rounding but within this many of it may be motion to
+it and rest to the other, and is refused by both rather than read either way."""
+
+
+def near_rest(speed: float, still: float) -> bool:
+    """Whether ``speed`` is past the rounding of a zero ``still`` but within :data:`UNSURE`
+    times it: too near rest to tell which way it moves, so friction's side, or whether a
+    resistance on a stroke acts, is not known.
+
+    >>> near_rest(1.0, 1.0), near_rest(2.0, 1.0), near_rest(65.0, 1.0)
+    (False, True, False)
+    """
+    return still < speed <= UNSURE * still
+
+
+def near_rest_refusal(mech, moving: str, share: float, *, of: str = "speed",
+                      acting: str = "friction") -> str:
+    """The one line that refuses a speed :func:`near_rest` at ``mech``'s position: what is
+    ``moving`` ("link 5 slides on link 1"), its ``share`` of the fastest ``of`` (speed or
+    rate), and what it would choose the way of."""
+    d = mech.drive
+    return (f"at θ{d.link} = {mech.units.angle_brief(d.angle)}: {moving} at {share:.1e} of "
+            f"the fastest {of}, too near rest to tell which way {acting} acts; choose one "
+            "farther from rest")
 
 
 @dataclass(frozen=True)

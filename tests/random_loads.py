@@ -269,21 +269,25 @@ def _derivative(mech, drive, loads, theta: float, h: float) -> tuple[list[float]
     return s[2], d
 
 
-def energy_torque(mech, loads, theta: float, omega: float, alpha: float
-                  ) -> tuple[float, float] | None:
+def energy_torque(mech, loads, theta: float, omega: float, alpha: float, *,
+                  dissipated: float | None = None) -> tuple[float, float] | None:
     """The driving torque (N·m, CCW +) the balance of energy gives at ``theta``, and how far
     from it a torque may be: :data:`AGREE` of the largest power term over ω, or ten times
-    what halving or doubling the finite differences' step moves it, if more. None where ω is 0,
-    friction takes power, or the positions are not smooth here (the two steps disagree by
-    more than :data:`SMOOTH` of the largest term: a dead point or a branch's end within
-    reach of the stencil)."""
+    what halving or doubling the finite differences' step moves it, if more. With friction
+    the driver also makes good what the joints dissipate, ``dissipated`` (W, Σ μ·|N|·|v| of
+    their pushes, which no energy gives), a power term of its own. None where ω is 0,
+    friction takes power not given, or the positions are not smooth here (the two steps
+    disagree by more than :data:`SMOOTH` of the largest term: a dead point or a branch's end
+    within reach of the stencil)."""
     from tarsim.constructions.errors import TarsimError
 
-    if omega == 0.0 or loads.friction or loads.friction_circle:
+    if omega == 0.0 or (loads.friction or loads.friction_circle) and dissipated is None:
         return None
+    lost = dissipated or 0.0
     try:
         (mid, scale), (fine, _), (coarse, _) = (
-            _energy_torque(mech, loads, theta, omega, alpha, h) for h in (1e-3, 5e-4, 2e-3))
+            _energy_torque(mech, loads, theta, omega, alpha, h, lost)
+            for h in (1e-3, 5e-4, 2e-3))
     except TarsimError:
         return None
     # Truncation shrinks as the step does and rounding grows: the three steps' spread
@@ -297,10 +301,10 @@ def energy_torque(mech, loads, theta: float, omega: float, alpha: float
     return mid, max(AGREE * scale, 10 * spread)
 
 
-def _energy_torque(mech, loads, theta: float, omega: float, alpha: float, h: float
-                   ) -> tuple[float, float]:
-    """The balance of energy's torque with finite differences of step ``h``, and the size
-    of its largest term over ω."""
+def _energy_torque(mech, loads, theta: float, omega: float, alpha: float, h: float,
+                   lost: float = 0.0) -> tuple[float, float]:
+    """The balance of energy's torque with finite differences of step ``h`` and the power
+    ``lost`` to friction, and the size of its largest term over ω."""
     drive = mech.drive
     _, d = _derivative(mech, drive, loads, theta, h)
     k = [_kinetic(loads, _derivative(mech, drive, loads, theta + j * h, h)[1])
@@ -321,6 +325,7 @@ def _energy_torque(mech, loads, theta: float, omega: float, alpha: float, h: flo
             terms.append(-(f.force[0] * vx + f.force[1] * vy))
     base += 2 * len(loads.forces)
     terms += [-c.moment * d[base + j] * omega for j, c in enumerate(loads.couples)]
+    terms.append(lost)
     return math.fsum(terms) / omega, max(abs(t) for t in terms) / abs(omega)
 
 

@@ -322,6 +322,15 @@ PHRASES: dict[str, str] = {
                      "turning. |F| is found by trial, the polygons drawn again with the last "
                      "round's couples until the forces settle ({rounds} rounds); the last "
                      "round is drawn here.",
+    "force.resting": "{what} holds link {link} at rest here: link {link} slides on it at "
+                     "{share} of the fastest speed on the velocity polygon, within the "
+                     "rounding of a zero the polygon reads ({still} of it). Friction has no "
+                     "direction at rest, so it takes no side: {name} stands square to it, as "
+                     "at an extreme position.",
+    "force.resting_pin": "The pin {pin} rests here: link {on} turns on link {by} at {share} "
+                         "of the fastest rate on the velocity polygon, within the rounding of "
+                         "a zero the polygon reads ({still} of it). Friction has no direction "
+                         "at rest, so its friction circle gives no couple.",
     "force.effort_square": "{name}, the push on the crank pin {a}, stands square to the crank "
                            "{o}{a}: all of it is crank effort, F_T = {effort} (CCW +), and "
                            "the turning moment F_T·{o}{a} = {moment}.",

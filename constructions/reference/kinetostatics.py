@@ -26,7 +26,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import InputError
-from ..loads import RESTING, Loads, crank_tangent, leaning, made_of, stroke_axis
+from ..loads import (Loads, crank_tangent, leaning, made_of, near_rest, near_rest_refusal,
+                     resting_speed, stroke_axis)
 from ..model import Mechanism, SlideKind
 from .solver import Kinematics, point_acceleration, point_velocity
 
@@ -106,12 +107,14 @@ def _loads_on(kin: Kinematics, mech: Mechanism, loads: Loads, link: int
         at = world_point(kin, mech, link, f.point)
         force = f.force
         if f.resist:
-            # A point no faster than RESTING of the fastest stands still: its velocity is the
-            # rounding of a zero, which must not choose the force's way (a dead centre).
+            # A point no faster than the rounding of a zero stands still: its velocity must
+            # not choose the force's way (a dead centre).
             v = point_velocity(kin, mech, link, at)
             speed = math.hypot(*v)
-            fastest = max([math.hypot(*u) for u in kin.velocities.values()] + [0.0])
-            moving = speed > RESTING * fastest and (
+            where = f"its point {f.point}" if isinstance(f.point, str) else "its resisted point"
+            _refuse_near_rest(mech, kin, speed, _fastest(kin), f"link {link} moves at {where}",
+                              acting="the resistance")
+            moving = speed > _resting(kin) and (
                 f.along is None or v[0] * f.along[0] + v[1] * f.along[1] > 0)
             force = (-f.resist * v[0] / speed, -f.resist * v[1] / speed) if moving else (0.0, 0.0)
         out.append((at, force, 0.0))
@@ -180,7 +183,7 @@ def _one_way(mech: Mechanism, kin: Kinematics, loads: Loads, found: dict[int, fl
     """Raise if the sliding slides' pushes hold on another choice of sides than ``found``
     as well: friction then leaves the forces unfixed (two sets of forces each consistent
     with the friction they take), and no one answer is the mechanism's."""
-    sliding = [i for i, s in enumerate(mech.slides) if _sliding(kin, s) != (0.0, 0.0)]
+    sliding = [i for i, s in enumerate(mech.slides) if _sliding(mech, kin, s) != (0.0, 0.0)]
     for signs in itertools.product((1.0, -1.0), repeat=len(sliding)):
         sides = dict(found) | dict(zip(sliding, signs))
         if sides == found:
@@ -205,14 +208,19 @@ def pin_couples(mech: Mechanism, kin: Kinematics, loads: Loads,
     """Each link's friction couple from its pins (N·m, CCW +): at a pin whose force is
     ``sizes[pin]``, the force touches the friction circle of radius ρ on the side that
     resists the turning of one link on the other, a couple ρ·|F| against it on each. A pin
-    that turns no faster than :data:`RESTING` of the fastest link rests: its turning is the
-    rounding of a zero, which must not choose friction's side, and it takes no couple."""
+    that turns no faster than the rounding of a zero (:func:`~..loads.resting_speed` of the
+    fastest link at the solver's conditioning) rests: its turning must not choose
+    friction's side, and it takes no couple."""
     out: dict[int, float] = {}
     fastest = max([abs(w) for w in kin.omegas.values()] + [0.0])
+    still = resting_speed(fastest, kin.conditioning)
     for pin in mech.pin_pairs:
-        _, by, on = pin
+        point, by, on = pin
         turning = kin.omegas.get(on, 0.0) - kin.omegas.get(by, 0.0)
-        if abs(turning) <= RESTING * fastest or pin not in sizes:
+        if loads.friction_circle:
+            _refuse_near_rest(mech, kin, abs(turning), fastest, f"link {on} turns on link "
+                              f"{by} at the pin {point}", of="rate")
+        if abs(turning) <= still or pin not in sizes:
             continue
         m = -math.copysign(loads.friction_circle * sizes[pin], turning)
         out[on] = out.get(on, 0.0) + m
@@ -220,12 +228,42 @@ def pin_couples(mech: Mechanism, kin: Kinematics, loads: Loads,
     return out
 
 
-def _sliding(kin: Kinematics, slide) -> tuple[float, float]:
-    """The unit velocity of the slider on its guide; nothing when it rests (to the rounding
-    of the mechanism's speeds: friction then takes no side)."""
+def _fastest(kin: Kinematics) -> float:
+    """The fastest a point of the mechanism moves (m/s)."""
+    return max([math.hypot(*v) for v in kin.velocities.values()] + [0.0])
+
+
+def _resting(kin: Kinematics) -> float:
+    """The fastest a point may move, or slide on another, and still rest (m/s): the rounding
+    of a zero among the mechanism's speeds at the solver's conditioning
+    (:func:`~..loads.resting_speed`)."""
+    return resting_speed(_fastest(kin), kin.conditioning)
+
+
+def _refuse_near_rest(mech: Mechanism, kin: Kinematics, speed: float, fastest: float,
+                      moving: str, **said) -> None:
+    """Raise if ``speed`` is too near rest to tell which way it moves
+    (:func:`~..loads.near_rest` of the rounding of a zero among speeds, or rates, up to
+    ``fastest``), saying where and what ``moving`` is."""
+    if near_rest(speed, resting_speed(fastest, kin.conditioning)):
+        raise InputError(near_rest_refusal(mech, moving, speed / fastest, **said),
+                         file=mech.source or None)
+
+
+def _sliding(mech: Mechanism, kin: Kinematics, slide) -> tuple[float, float]:
+    """The unit velocity of the slider on its guide; nothing when it rests (within the
+    rounding of a zero: friction's direction is then undefined, and it takes no side).
+
+    Raises
+    ------
+    InputError
+        If it slides too near rest to tell which way (:func:`~..loads.near_rest`).
+    """
     rate = next((r for r in kin.slide_rates if r.slide is slide), None)
-    speeds = max([math.hypot(*v) for v in kin.velocities.values()] + [0.0])
-    if rate is None or abs(rate.velocity) <= RESTING * speeds:
+    if rate is not None:
+        _refuse_near_rest(mech, kin, abs(rate.velocity), _fastest(kin),
+                          f"link {slide.link} slides on link {slide.guide_link}")
+    if rate is None or abs(rate.velocity) <= _resting(kin):
         return (0.0, 0.0)
     sign = 1.0 if rate.velocity > 0.0 else -1.0
     return (sign * rate.direction[0], sign * rate.direction[1])
@@ -273,7 +311,8 @@ def _solve(mech: Mechanism, kin: Kinematics, loads: Loads, sides: dict[int, floa
         at = kin.points[s.point] if s.point in kin.points else world_point(
             kin, mech, s.link, mech.link(s.link).local(s.point))
         d = _direction(kin, s.guide_link, s.direction)
-        n = leaning((-d[1], d[0]), _sliding(kin, s), loads.friction, sides[k])
+        sliding = _sliding(mech, kin, s) if loads.friction else (0.0, 0.0)
+        n = leaning((-d[1], d[0]), sliding, loads.friction, sides[k])
         slide_column[k] = len(columns)
         add(fresh(f"F_{s.guide_link}{s.link}"), s.guide_link, s.link, at, "n", {
             s.link: (n[0], n[1], _cross(arm(s.link, at), n)),
@@ -411,7 +450,7 @@ def _power(mech: Mechanism, kin: Kinematics, loads: Loads, statics: Statics | No
     if loads.friction or loads.friction_circle:
         statics = statics or balance(mech, kin, loads)
         speeds = {id(r.slide): abs(r.velocity) for r in kin.slide_rates
-                  if _sliding(kin, r.slide) != (0.0, 0.0)}
+                  if loads.friction and _sliding(mech, kin, r.slide) != (0.0, 0.0)}
         lost = [loads.friction * abs(n) * speeds.get(id(s), 0.0)
                 for s, n in zip(mech.slides, statics.pushes)]
         lost += [loads.friction_circle * math.hypot(*statics.joint(f"F_{by}{on}").force)
