@@ -35,8 +35,10 @@ from . import asks as A
 from .acceleration_polygon import drawn_acceleration_polygon
 from .checks import NOISE, Answer, FigureSpec, quiet, vector_value
 from .errors import GeometryError, TarsimError
-from .force_rounding import (answer_roundings, image_base, load_roundings, rate_roundings,
-                             read_conditioning, speed_rounding)
+from .force_rounding import answer_roundings, image_base, load_roundings, read_conditioning
+from .force_rounding import speed_rounding
+from .force_sliding import (dyad_slides, lever_gain, lever_slides, link_rates, pin_rests,
+                            pin_roundings, say_resting)
 from .loads import Loads, crank_tangent, leaning, near_rest, near_rest_refusal, stroke_axis
 from .model import Mechanism, SlideKind
 from .narration import Number, Quantity, Word, phrase
@@ -193,9 +195,10 @@ def draw_forces(work) -> Forces:
         slip = (loads.friction, slides[0].direction)
     elif isinstance(group, _Lever) and slides:
         slip = (loads.friction, {s.key: s.direction for s in slides})
-    if loads.friction_circle:
-        known = _with_pin_friction(work, c, group, at, known, scale, slip)
-    _say_resting(work, group, at, slides)
+    still = pin_roundings(work, _lever_span(group, at)) if loads.friction_circle else None
+    if still is not None:
+        known = _with_pin_friction(work, c, group, at, known, scale, slip, still)
+    say_resting(work, slides, still)
     rounding = {} if not loads.masses else answer_roundings(
         known, load_roundings(work, known, at),
         lambda trial: _analyse(c.scratch(), mech, group, at, trial, scale, slip),
@@ -237,7 +240,8 @@ def _analyse(c, mech: Mechanism, group, at, known, scale: float, slip) -> Forces
     return out
 
 
-def _with_pin_friction(work, c, group, at, known, scale: float, slip) -> dict:
+def _with_pin_friction(work, c, group, at, known, scale: float, slip,
+                       still: dict[int, float]) -> dict:
     """The loads with each pin's friction couple: a pin's force touches the friction circle
     (radius ρ) on the side that resists the turning of one link on the other, which is the
     force at the pin's centre and a couple ρ·|F| against the turning. |F| comes from the
@@ -250,14 +254,7 @@ def _with_pin_friction(work, c, group, at, known, scale: float, slip) -> dict:
         If the forces do not settle (the friction would lock the mechanism).
     """
     mech, loads = work.mechanism, work.loads
-    rates = _rates(work)
-    still = rate_roundings(work, _lever_spans(group, at))
-    top = max(abs(w) for w in rates.values()) or 1.0
-    for point, by, on in mech.pin_pairs:
-        turning = abs(rates.get(on, 0.0) - rates.get(by, 0.0))
-        if near_rest(turning, still.get(on, 0.0) + still.get(by, 0.0)):
-            raise TarsimError(near_rest_refusal(mech, f"link {on} turns on link {by} at the "
-                                                f"pin {point}", turning / top, of="rate"))
+    rates = link_rates(work)
     pins = mech.pin_pairs
     sizes: dict = {}
     rounds = 0
@@ -298,11 +295,11 @@ the friction circle over the links' lengths."""
 def _pin_couples(known, pins, sizes, rates, at, rho: float, still: dict[int, float]) -> dict:
     """``known`` with each pin's friction couple, ρ·|F| against the turning, on each of the
     two links (the frame's left out); a pin turning no faster than its links' rates round
-    at (``still``, :func:`~.force_rounding.rate_roundings`) rests, and takes none."""
+    at (``still``, :func:`~.force_sliding.pin_roundings`) rests, and takes none."""
     out = {k: list(v) for k, v in known.items()}
     for pin in pins:
         point, by, on = pin
-        if _pin_rests(rates, still, by, on) or pin not in sizes:
+        if pin_rests(rates, still, by, on) or pin not in sizes:
             continue
         turning = rates.get(on, 0.0) - rates.get(by, 0.0)
         m = -math.copysign(rho * sizes[pin], turning)
@@ -340,140 +337,33 @@ _WHY = ("the force polygons draw a four-bar, a slider-crank or a slotted lever o
         "mechanism's forces are in the turning-moment diagram (tarsim sweep)")
 
 
-@dataclass(frozen=True)
-class _Slide:
-    """How one slide of the group slides, as the velocity polygon reads it: ``key`` names it
-    in the group's slip ("guide", "pin" or "block"), ``link`` the link that slides on link
-    ``guide``, ``what`` (a phrase), ``velocity`` its velocity there (m/s) and ``still`` the
-    rounding of a zero the polygon reads it to."""
-
-    key: str
-    link: int
-    guide: int
-    what: object
-    velocity: Vec
-    still: float
-
-    @property
-    def joint(self) -> str:
-        """Its force's name: F_15, of the guide on the slider."""
-        return f"F_{self.guide}{self.link}"
-
-    @property
-    def direction(self) -> Vec:
-        """Its unit velocity, or nothing where it rests: friction then takes no side."""
-        return _unit_or_zero(self.velocity, self.still)
-
-
-def _slides(work, group, at) -> list[_Slide]:
-    """The slides of the group the crank drives, as the velocity polygon reads them: a
-    slider-crank's block on its guide; a slotted lever's block along the slot, and its
-    ram's on the frame's guide and its pin along the slot (each along the slot less the
-    velocity of the lever's own point under it, ω × PX), the ram's read to its lever's
-    gain on the rounding (:func:`_gain`).
+def _slides(work, group, at) -> list:
+    """The slides of the group the crank drives, as the velocity polygon reads them
+    (:mod:`~.force_sliding`): a slider-crank's block, a slotted lever's block and ram.
 
     Raises
     ------
     TarsimError
         If one slides too near rest to tell which way (:func:`~.loads.near_rest`).
     """
-    vp = drawn_velocity_polygon(work)
     if isinstance(group, _Shape):
-        if group.guide is None:
-            return []
-        return _sure(work, [_Slide("guide", group.j, 1, phrase("force.the_guide"),
-                                   vp.vector(group.b), speed_rounding(work))])
-    lv, w = group, vp.rates.get(group.l, 0.0)
-
-    def on_lever(point: str) -> Vec:
-        v = vp.vector(point)
-        x, y = at[point][0] - at[lv.p][0], at[point][1] - at[lv.p][1]
-        return (v[0] + w * y, v[1] - w * x)
-    slot = phrase("force.the_slot", link=lv.l)
-    out = [_Slide("block", lv.b, lv.l, slot, on_lever(lv.a), speed_rounding(work))]
-    if lv.r is not None:
-        still = speed_rounding(work, _gain(lv, at, lv.q))
-        out += [_Slide("guide", lv.r, 1, phrase("force.the_frame_guide"), vp.vector(lv.q),
-                       still),
-                _Slide("pin", lv.r, lv.l, slot, on_lever(lv.q), still)]
-    return _sure(work, out)
-
-
-def _sure(work, slides: list[_Slide]) -> list[_Slide]:
-    """``slides``, each resting or sliding past doubt.
-
-    Raises
-    ------
-    TarsimError
-        If one slides too near rest to tell which way (:func:`~.loads.near_rest`).
-    """
-    fastest = drawn_velocity_polygon(work).extent() or 1.0
-    for s in slides:
-        speed = math.hypot(*s.velocity)
-        if near_rest(speed, s.still):
-            raise TarsimError(near_rest_refusal(
-                work.mechanism, f"link {s.link} slides on link {s.guide}", speed / fastest))
-    return slides
-
-
-def _say_resting(work, group, at, slides: list[_Slide]) -> None:
-    """Say, among the force polygons, each joint friction acts at that rests: it slides or
-    turns within the rounding of a zero the velocity polygon reads it to. Friction's
-    direction is undefined there (it flips as the joint passes rest), so the joint is
-    taken at rest, friction taking no side, as at an extreme position or a dead centre;
-    the Newton–Euler reference takes it so to its own rounding."""
-    vp = drawn_velocity_polygon(work)
-    fastest = vp.extent() or 1.0
-    said = [phrase("force.resting", what=s.what, link=s.link, name=s.joint,
-                   share=Number(math.hypot(*s.velocity) / fastest, ".2g"),
-                   still=Number(s.still / fastest, ".2g"))
-            for s in slides if s.direction == (0.0, 0.0)]
-    if work.loads.friction_circle:
-        rates, still = _rates(work), rate_roundings(work, _lever_spans(group, at))
-        top = max(abs(w) for w in rates.values()) or 1.0
-        for point, by, on in work.mechanism.pin_pairs:
-            if _pin_rests(rates, still, by, on):
-                said.append(phrase(
-                    "force.resting_pin", pin=point, on=on, by=by,
-                    share=Number(abs(rates.get(on, 0.0) - rates.get(by, 0.0)) / top, ".2g"),
-                    still=Number((still.get(on, 0.0) + still.get(by, 0.0)) / top, ".2g")))
-    if not said:
-        return
-    c = work.assembly
-    at_pole = c.give("force:rest:at", g.Point(0.0, 0.0), label="", panel=Panel.FORCE)
-    for n, what in enumerate(said):
-        c.draw(f"force:say:rest{n}", "mark", at_pole, panel=Panel.FORCE, phrase=what)
-
-
-def _pin_rests(rates: dict[int, float], still: dict[int, float], by: int, on: int) -> bool:
-    """Whether link ``on`` turns on link ``by`` no faster than their rates round at."""
-    turning = rates.get(on, 0.0) - rates.get(by, 0.0)
-    return abs(turning) <= still.get(on, 0.0) + still.get(by, 0.0)
+        return [] if group.guide is None else dyad_slides(work, group.j, group.b)
+    return lever_slides(work, at, lever=group.l, block=group.b, pivot=group.p, pin=group.a,
+                        ram=group.r, ram_pin=group.q)
 
 
 def _gain(group, at, point: str) -> float:
-    """How many times a slotted lever carries the rounding of its turning, read at the
-    block's pin A near its pivot P, out to ``point``: |PX|/|PA| for a point of the lever or
-    the ram beyond A (a lay-off by proportion, which the velocity polygon's conditioning
-    does not show), 1 for any other point."""
+    """What a slotted lever multiplies the rounding of a reading at ``point`` by
+    (:func:`~.force_sliding.lever_gain`); 1 off a lever and at the crank's points."""
     if not isinstance(group, _Lever) or point in (group.o, group.a):
         return 1.0
-    return max(1.0, math.dist(at[group.p], at[point]) / math.dist(at[group.p], at[group.a]))
+    return lever_gain(at, group.p, group.a, point)
 
 
-def _lever_spans(group, at) -> dict[int, float] | None:
-    """Where a slotted lever's turning is read: at the block's pin A, |PA| from its pivot,
-    however far the polygon lays it off (:func:`~.force_rounding.rate_roundings`)."""
-    if not isinstance(group, _Lever):
-        return None
-    return {group.l: math.dist(at[group.p], at[group.a])}
-
-
-def _rates(work) -> dict[int, float]:
-    """Each link's ω as the velocity polygon reads it, the input's given and the frame's 0."""
-    rates = dict(drawn_velocity_polygon(work).rates)
-    rates[work.mechanism.drive.link], rates[1] = work.mechanism.drive.omega, 0.0
-    return rates
+def _lever_span(group, at) -> tuple[int, float] | None:
+    """A slotted lever and where its turning is read, |PA| from its pivot."""
+    return (group.l, math.dist(at[group.p], at[group.a])) if isinstance(group, _Lever) \
+        else None
 
 
 def _group_of(mech: Mechanism):
@@ -544,13 +434,6 @@ def _dyad(c, draw, out: Forces, sh: _Shape, at, known, slip=None):
         out.refs[f"T_1{sh.j}"] = refs
         _piston_effort(c, out, sh, at, known[sh.j], joint_j, refs)
     return sh.i, (-f_di[0], -f_di[1]), sh.o, sh.a
-
-
-def _unit_or_zero(v: Vec, still: float) -> Vec:
-    """``v`` made a unit vector, or nothing when it is no longer than ``still``, the
-    rounding of a zero (a slide at rest: friction takes no side)."""
-    n = math.hypot(*v)
-    return (v[0] / n, v[1] / n) if n > still else (0.0, 0.0)
 
 
 def _friction_angle(slip):
