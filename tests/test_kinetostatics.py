@@ -257,7 +257,12 @@ def test_a_pin_at_rest_takes_no_friction_couple():
     assert abs(kin.omegas[4]) < 1e-14 * 10 and kin.omegas[3] == pytest.approx(-4.0, rel=1e-12)
     couples = pin_couples(ex.mechanism, kin, ex.loads, {p: 1.0 for p in ex.mechanism.pin_pairs})
     assert couples[4] == -0.005 and couples[1] == 0.005       # O2's alone on the frame
-    assert tarsim.solve(ex).passed
+    worked = tarsim.solve(ex)
+    assert worked.passed
+    # The force polygons take O4 at rest too, to the velocity polygon's rounding, and say so.
+    said = [dict(s.phrase.args)["pin"] for s in worked.positions[0].work.assembly
+            if s.id.startswith("force:say:rest")]
+    assert said == ["O4"]
 
 
 def test_a_resistance_at_a_dead_centre_stands_still():
