@@ -608,10 +608,24 @@ def bench(quick, out_dir):
 @click.argument("source", metavar="EXERCISE")
 @click.argument("drawing", metavar="DRAWING", type=click.Path(exists=True))
 @click.option("-o", "--out", "out_dir", type=click.Path(file_okay=False), required=True,
-              metavar="DIR", help="Folder for grade.json and grade.svg (a class: a folder "
-                                  "each, and grades.csv).")
+              metavar="DIR", help="Folder for grade.json, grade.svg and feedback.html (a "
+                                  "class: a folder each, grades.csv and summary.svg).")
 @click.option("--position", type=click.IntRange(min=1), default=1, show_default=True,
               help="Which of the exercise's positions the drawing is of ([ask] at = [...]).")
+@click.option("--roster", type=click.Path(exists=True, dir_okay=False), default=None,
+              metavar="FILE.csv",
+              help="A class's students: a CSV file, a header row and then a row a student, "
+                   "its columns headed id (or 'student id', 'student number', 'id number'), "
+                   "name (or 'full name', 'student') and file (or 'file name', 'drawing'), "
+                   "in any case. A student with no file gets a row 'no drawing handed in'; "
+                   "a file no row names gets a row saying so.")
+@click.option("--pattern", metavar="PATTERN", default=None,
+              help="Read each file's student off its name: {id} and {name} stand for them, "
+                   "* for any text, e.g. '{id}_{name}.svg'; with no ending ('{id}_{name}') "
+                   "the name is matched less its ending, so any kind of file fits. With "
+                   "--roster, for the students whose file the roster does not give.")
+@click.option("--pdf/--no-pdf", default=True, show_default=True,
+              help="Write feedback.pdf beside each feedback.html (needs libcairo2).")
 @click.option("--workers", type=click.IntRange(min=1), default=1, show_default=True,
               help="Processes to grade a class on.")
 @click.option("--scheduler", metavar="ADDRESS", default=None,
@@ -619,7 +633,8 @@ def bench(quick, out_dir):
                    "course too big for one machine; needs pip install 'tarsim[dask]'.")
 @_speaks
 @_fails_cleanly
-def grade(source, drawing, out_dir, position, workers, scheduler, lang, digits):
+def grade(source, drawing, out_dir, position, roster, pattern, pdf, workers, scheduler, lang,
+          digits):
     """Grade a student's drawing against tarsim's own solution, item by item.
 
     DRAWING is an SVG as Inkscape, GeoGebra, LibreOffice Draw or a CAD program
@@ -644,11 +659,17 @@ def grade(source, drawing, out_dir, position, workers, scheduler, lang, digits):
       grade.json     the score and each item: verdict, expected, found,
                      tolerance, advice
       grade.svg      the drawing in grey, tarsim's polygons over it in blue,
-                     each wrong tip ringed in red
+                     each wrong item ringed in red and explained under it
+      feedback.html  the student's page: the overlay, the score, and each
+                     item's verdict, tolerance and advice (and feedback.pdf)
     For a folder: a folder of those for each drawing (its name's stem when
     that is plain, else a readable form of it and a short hash, so no two
-    share one), and grades.csv (a row a drawing; one that cannot be read, or a
-    link out of the folder, says why and the rest are graded). Nothing is
+    share one), grades.csv (a row for every file: one that is not a drawing
+    says what to hand in instead, one that cannot be read why, a link out of
+    the folder that it is not read; and with --roster, a row for each
+    student who handed in nothing), summary.svg (the scores' histogram and
+    each item's error rate) and, the students known (--roster or --pattern),
+    moodle.csv and canvas.csv for their gradebooks' import. Nothing is
     written if a place they go is taken by a file tarsim did not write.
 
     \b
@@ -656,25 +677,38 @@ def grade(source, drawing, out_dir, position, workers, scheduler, lang, digits):
       tarsim grade four-bar ali.svg -o graded/ali
       tarsim grade crank-shaper answers.json -o graded/answers
       tarsim grade four-bar class/ -o graded --workers 2
-      tarsim grade four-bar class/ -o graded --scheduler tcp://10.0.0.5:8786
+      tarsim grade four-bar class/ -o graded --roster students.csv
+      tarsim grade four-bar class/ -o graded --pattern '{id}_{name}.svg'
+      tarsim grade four-bar class/ -o graded --scheduler tcp://127.0.0.1:8786
     """
     from .catalog import load
     from .grading.batch import class_files, grade_many
     from .grading.grade import grade as grade_one
     from .grading.report import class_folder, grade_files, grade_table
-    from ..graphics.export import write_folder
+    from .grading.roster import Pattern, class_rows, read_roster
+    from ..graphics.export import cairo_missing, write_folder
 
-    with speaking(_language(lang, digits, None)):     # the overlay's words
+    if pdf and cairo_missing():
+        click.echo("note: feedback.pdf is not written, for libcairo2 is not installed "
+                   "(Debian/Ubuntu: apt-get install libcairo2); feedback.html is", err=True)
+        pdf = False
+    with speaking(_language(lang, digits, None)):     # the overlay's and the page's words
         path = Path(drawing)
         if not path.is_dir():
+            if roster or pattern:
+                raise click.UsageError("--roster and --pattern find the students of a "
+                                       "class folder; DRAWING is one file")
             g = grade_one(load(source), path, position - 1)
             click.echo(grade_table(g))
-            write_folder(grade_files(g), out_dir)
-            click.echo(f"wrote grade.json and grade.svg to {out_dir}/"
-                       if g.overlay is not None else f"wrote grade.json to {out_dir}/")
+            files = grade_files(g, position=position - 1, pdf=pdf)
+            write_folder(files, out_dir)
+            click.echo(f"wrote {', '.join(files)} to {out_dir}/")
             return
         load(source)                               # a bad exercise is one line, before the batch
-        found = class_files(path)
+        students = read_roster(roster) if roster else None
+        names = Pattern(pattern) if pattern else None
+        found = class_files(path, skip=Path(out_dir))
+        rows = class_rows(found, students, names)
         read = [f for f in found if not f.refused]
         with click.progressbar(length=len(read), label=f"grading {len(read)} drawings",
                                file=sys.stderr) as bar:
@@ -682,11 +716,17 @@ def grade(source, drawing, out_dir, position, workers, scheduler, lang, digits):
                                                workers, done=lambda: bar.update(1),
                                                scheduler=scheduler)]
         by_file = dict(zip(read, graded))
-        rows = [(f.name, f.folder, f.refused or by_file[f]) for f in found]
-        write_folder(class_folder(rows), out_dir)  # one set: all of it, or nothing
-        bad = sum(isinstance(g, str) for *_, g in rows)
-        click.echo(f"graded {len(rows) - bad} of {len(rows)} drawings into {out_dir}/"
-                   + (f"; {bad} could not be read (see grades.csv)" if bad else ""))
+        for row in rows:
+            if row.file is not None:
+                row.outcome = row.file.refused or by_file[row.file]
+        write_folder(class_folder(rows, position=position - 1, pdf=pdf,
+                                  lms=bool(roster or pattern)), out_dir)  # all, or nothing
+        files = [r for r in rows if r.file is not None]
+        bad = sum(isinstance(r.outcome, str) for r in files)
+        none = len(rows) - len(files)
+        click.echo(f"graded {len(files) - bad} of {len(files)} drawings into {out_dir}/"
+                   + (f"; {bad} could not be read (see grades.csv)" if bad else "")
+                   + (f"; {none} student{'s' * (none > 1)} handed in none" if none else ""))
 
 
 @cli.command()

@@ -557,8 +557,8 @@ def test_a_class_of_names_that_are_no_text_is_graded_and_named_in_one_line_each(
 
 def test_links_in_a_class_folder_are_read_only_to_a_file_inside_it(tmp_path):
     """A link to a drawing beside it is graded; links in a loop, to nothing, to a folder or
-    to a pipe each get a row saying why they were not read, and the run does not hang on
-    the pipe (a pipe named .svg is not a drawing either)."""
+    to a pipe, and the pipe itself, each get a row saying why they were not read, and the
+    run does not hang on the pipe."""
     import os
 
     folder = tmp_path / "class"
@@ -582,7 +582,8 @@ def test_links_in_a_class_folder_are_read_only_to_a_file_inside_it(tmp_path):
         "loop1.svg": "not read: a link that leads to no file",
         "loop2.svg": "not read: a link that leads to no file",
         "here.svg": "not read: a link to something that is not a file",
-        "to-pipe.svg": "not read: a link to something that is not a file"}
+        "to-pipe.svg": "not read: a link to something that is not a file",
+        "pipe.svg": "not read: not a file (a pipe or a device)"}
     assert rows["real.svg"]["score"] == rows["same.svg"]["score"] == "100.0"
 
 

@@ -23,7 +23,7 @@ import pytest
 from click.testing import CliRunner
 
 from tarsim.exercises.cli import cli
-from tarsim.graphics.export import MANIFEST
+from tarsim.graphics.export import MANIFEST, cairo_missing
 
 ROOT = Path(__file__).parent.parent
 HERE = Path(__file__).parent / "reproducers"
@@ -149,8 +149,11 @@ def test_class_folder(tmp_path):
     assert result.exit_code == 0, result.output
     assert result.output.splitlines()[-1] == (
         f"graded 6 of 7 drawings into {graded}/; 1 could not be read (see grades.csv)")
-    made = {f"{d}/{n}" for d in folders.values() for n in ("grade.json", "grade.svg")}
-    assert tree(graded) == set(folders.values()) | made | {"grades.csv", MANIFEST}
+    each = ("grade.json", "grade.svg", "feedback.html",
+            *(("feedback.pdf",) if cairo_missing() is None else ()))
+    made = {f"{d}/{n}" for d in folders.values() for n in each}
+    assert tree(graded) == set(folders.values()) | made | {"grades.csv", "summary.svg",
+                                                           MANIFEST}
     rows = {r["drawing"]: r for r in csv.DictReader(
         (graded / "grades.csv").read_text(encoding="utf-8").splitlines())}
     assert {n: rows[n]["folder"] for n in NAMES} == folders

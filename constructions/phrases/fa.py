@@ -9,7 +9,7 @@ algorithm sets Persian digits.
 
 from __future__ import annotations
 
-from . import fa_balancing, fa_cams, fa_forces, fa_trains
+from . import fa_balancing, fa_cams, fa_forces, fa_grading, fa_trains
 
 __all__ = ["PHRASES", "WORDS", "UNITS", "digits", "capitalized", "DIGITS", "DIRECTION"]
 
@@ -826,5 +826,5 @@ PHRASES: dict[str, str] = {
 
 
 # The figures' words of each chapter, kept beside the chapter's figures.
-for _chapter in (fa_trains, fa_balancing, fa_cams, fa_forces):
+for _chapter in (fa_trains, fa_balancing, fa_cams, fa_forces, fa_grading):
     WORDS.update(_chapter.WORDS)

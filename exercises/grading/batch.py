@@ -1,10 +1,12 @@
 """A whole class's drawings graded at once, on several processes if asked.
 
-One unreadable drawing does not stop the batch: its row in grades.csv says why, and the
-others are graded. Each drawing's grade goes into a folder of its own, named for it
+Every file of the class folder gets a row in grades.csv: one that is not a drawing (a
+picture, a PDF) says what to hand in instead, and one unreadable drawing does not stop the
+batch, its row saying why. Each drawing's grade goes into a folder of its own, named for it
 (:func:`folder_for`): no two drawings share one, whatever their names. Nothing is read from
-outside the class folder (a link out of it gets a row saying so), and every clash with what
-is already in the output folder is found before anything is written (:func:`plan_class`).
+outside the class folder (a link out of it gets a row saying so), and the class is written
+as one set (:func:`tarsim.graphics.export.write_folder`), every clash with what is already
+in the output folder found before anything is written.
 """
 
 from __future__ import annotations
@@ -24,10 +26,10 @@ from ...graphics.export import MANIFEST
 from .drawing import file_name, printable
 from .grade import Grade, grade
 
-__all__ = ["ClassFile", "class_files", "grade_many", "folder_for", "GRADABLE"]
+__all__ = ["ClassFile", "class_files", "not_a_drawing", "grade_many", "folder_for", "GRADABLE"]
 
-GRADABLE = (".svg", ".json", ".csv")
-"""The files a class folder is graded from."""
+GRADABLE = (".svg", ".svgz", ".json", ".csv")
+"""The files a class folder is graded from (in any case: ``.SVG`` too)."""
 
 _RESERVED = {"con", "prn", "aux", "nul", *(f"{p}{d}" for p in ("com", "lpt") for d in range(10))}
 """Names Windows keeps for its devices, which no folder may take."""
@@ -35,8 +37,8 @@ _RESERVED = {"con", "prn", "aux", "nul", *(f"{p}{d}" for p in ("com", "lpt") for
 
 @dataclass(frozen=True)
 class ClassFile:
-    """A gradable file of a class folder: its ``path`` there, the ``folder`` its grade goes
-    into, and why it is not read (``refused``), if it is not."""
+    """A file of a class folder: its ``path`` there, the ``folder`` its grade goes into,
+    and why it is not graded (``refused``), if it is not."""
 
     path: Path
     folder: str
@@ -72,37 +74,82 @@ def folder_for(name: str) -> str:
     return f"{readable}.{digest}"
 
 
-def class_files(folder: Path) -> list[ClassFile]:
-    """The gradable files directly in ``folder``, by name: a link is read only when it
-    leads to a file inside the folder, and the files tarsim wrote there itself (its
-    manifest, and those it lists) are not drawings.
+def class_files(folder: Path, *, skip: Path | None = None) -> list[ClassFile]:
+    """Every file directly in ``folder``, by name: each gradable one to be graded, and each
+    other one with why it is not (:func:`not_a_drawing`), so that none is passed over
+    without a word. A link is read only when it leads to a file inside the folder. Left
+    out are hidden files that are no drawing (``.DS_Store``; a hidden ``.svg`` is graded),
+    what tarsim wrote there itself (its manifest, staging folders, and the files and
+    folders the manifest lists) and the folder ``skip`` (the output folder, when it is
+    inside the class's).
 
     Raises
     ------
     InputError
-        If the folder cannot be read, or holds no gradable file.
+        If the folder cannot be read, or holds nothing to grade.
     """
     try:
         root = folder.resolve()
         entries = sorted(folder.iterdir())
         ours = _written_by_tarsim(folder)
+        skip = skip.resolve() if skip is not None else None
     except OSError as e:
         raise InputError(f"cannot be read ({e.strerror or e})", file=printable(str(folder))
                          ) from None
     out = []
     for path in entries:
-        if path.suffix.lower() not in GRADABLE or path.name in ours or \
-                path.name == MANIFEST:
+        if path.name in ours or path.name == MANIFEST or path.name.startswith(".") and \
+                path.suffix.lower() not in GRADABLE:
             continue
-        refused = ""
         if path.is_symlink():
-            refused = _link_refused(path, root)
-        elif not path.is_file():              # a folder, a pipe, a device: not a drawing
+            refused = (not_a_drawing(path) if path.suffix.lower() not in GRADABLE
+                       else _link_refused(path, root))
+        elif skip is not None and path.is_dir() and path.resolve() == skip:
             continue
+        else:
+            refused = not_a_drawing(path)
         out.append(ClassFile(path, folder_for(path.name), refused))
     if not out:
-        raise InputError("no .svg, .json or .csv drawings in it", file=printable(str(folder)))
+        raise InputError("no files in it to grade (.svg drawings, or .json or .csv tables "
+                         "of answers)", file=printable(str(folder)))
     return out
+
+
+_PICTURES = {".png": "a PNG", ".jpg": "a JPEG", ".jpeg": "a JPEG", ".gif": "a GIF",
+             ".bmp": "a BMP", ".tif": "a TIFF", ".tiff": "a TIFF", ".webp": "a WebP",
+             ".heic": "an HEIC", ".heif": "an HEIF"}
+"""Pictures: pixels, from which no point can be read to a pen's width."""
+
+_OTHERS = {".pdf": "a PDF", ".ps": "a PostScript file", ".eps": "an EPS file",
+           ".ggb": "a GeoGebra file", ".odg": "a LibreOffice Draw file",
+           ".dxf": "a DXF file", ".dwg": "a DWG file", ".doc": "a Word file",
+           ".docx": "a Word file", ".odt": "a Writer file", ".ai": "an Illustrator file"}
+"""Files a drawing program or a word processor writes, which tarsim does not read."""
+
+
+def not_a_drawing(path: Path) -> str:
+    """Why the file ``path`` of a class folder is not graded, saying what to hand in
+    instead; "" if it is a file tarsim grades.
+
+    >>> not_a_drawing(Path("ali.png"))
+    'a PNG is a picture, not a drawing: export the drawing as SVG'
+    """
+    suffix = path.suffix.lower()
+    if path.is_dir():
+        return "a folder, not a drawing: put the drawings in it in the class folder itself"
+    if path.exists() and not path.is_file():
+        return "not read: not a file (a pipe or a device)"
+    if suffix in GRADABLE:
+        return ""
+    if suffix in _PICTURES:
+        return f"{_PICTURES[suffix]} is a picture, not a drawing: export the drawing as SVG"
+    if suffix in _OTHERS:
+        return f"{_OTHERS[suffix]} is not read: export the drawing as SVG"
+    if suffix in (".zip", ".tar", ".gz", ".7z", ".rar"):
+        return f"an archive ({suffix}) is not opened: unpack its drawings into the class folder"
+    kind = f"a {printable(suffix)} file" if suffix else "a file with no ending"
+    return (f"{kind} is not a drawing: hand in an .svg drawing, or a .json or .csv table of "
+            "answers")
 
 
 def _link_refused(path: Path, root: Path) -> str:
@@ -118,13 +165,16 @@ def _link_refused(path: Path, root: Path) -> str:
 
 
 def _written_by_tarsim(folder: Path) -> set[str]:
-    """The names the manifest in ``folder`` lists (see :func:`tarsim.graphics.export.
-    write_folder`); none if it has none or it cannot be read, the safe side."""
+    """The names in ``folder`` the manifest there lists (see :func:`tarsim.graphics.export.
+    write_folder`), a file or the folder it is in; none if it has no manifest or it cannot
+    be read, the safe side."""
     try:
         names = json.loads((folder / MANIFEST).read_text(encoding="utf-8"))
     except (OSError, ValueError):
         return set()
-    return {n for n in names if isinstance(n, str)} if isinstance(names, list) else set()
+    if not isinstance(names, list):
+        return set()
+    return {n.split("/")[0] for n in names if isinstance(n, str)}
 
 
 _SOLVED: dict[str, tuple] = {}
@@ -153,8 +203,11 @@ def grade_many(source: str, drawings: list[Path], position: int = 0, workers: in
     """Each drawing's grade (or why it could not be graded), in the drawings' order;
     ``done`` is called as each finishes. With ``scheduler`` (a Dask distributed scheduler's
     address) the batch runs on that cluster, whose workers must be able to read the
-    drawings' paths."""
-    jobs = [(source, position, str(d)) for d in drawings]
+    drawings' paths. The paths sent are absolute (and the exercise's, if it is a file), for
+    a worker runs in a folder of its own, not this process's."""
+    if Path(source).is_file():
+        source = str(Path(source).absolute())
+    jobs = [(source, position, str(Path(d).absolute())) for d in drawings]
     if scheduler:
         yield from _on_cluster(jobs, scheduler, done)
         return
