@@ -704,7 +704,7 @@ def grade(source, drawing, out_dir, position, roster, pattern, pdf, workers, sch
             write_folder(files, out_dir)
             click.echo(f"wrote {', '.join(files)} to {out_dir}/")
             return
-        load(source)                               # a bad exercise is one line, before the batch
+        exercise = load(source).id                 # a bad exercise is one line, before the batch
         students = read_roster(roster) if roster else None
         names = Pattern(pattern) if pattern else None
         found = class_files(path, skip=Path(out_dir))
@@ -719,8 +719,9 @@ def grade(source, drawing, out_dir, position, roster, pattern, pdf, workers, sch
         for row in rows:
             if row.file is not None:
                 row.outcome = row.file.refused or by_file[row.file]
-        write_folder(class_folder(rows, position=position - 1, pdf=pdf,
-                                  lms=bool(roster or pattern)), out_dir)  # all, or nothing
+        write_folder(class_folder(rows, exercise, position=position - 1, pdf=pdf,
+                                  lms=bool(roster or pattern), workers=workers),
+                     out_dir)                      # all of it, or nothing
         files = [r for r in rows if r.file is not None]
         bad = sum(isinstance(r.outcome, str) for r in files)
         none = len(rows) - len(files)

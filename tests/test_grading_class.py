@@ -515,6 +515,37 @@ def test_the_summary_counts_what_grades_csv_holds(tmp_path, lang):
         assert pattern in said, (name, pattern, said)
 
 
+def test_a_class_with_nothing_to_grade_still_says_so_everywhere(tmp_path):
+    """Only pictures handed in: each a row, the plot says no drawing could be graded, and
+    the gradebooks name the exercise's column and give every student an empty score."""
+    folder = tmp_path / "class"
+    folder.mkdir()
+    for name in ("9812.png", "9813.jpg"):
+        (folder / name).write_bytes(b"x")
+    out = tmp_path / "graded"
+    result = run(folder, "-o", out, "--pattern", "{id}")
+    assert result.exit_code == 0, result.output
+    assert [r["note"][:12] for r in sheet(out)] == ["a PNG is a p", "a JPEG is a "]
+    plot = (out / "summary.svg").read_text(encoding="utf-8")
+    assert "0 drawings graded" in plot and "no drawing could be graded" in plot
+    assert "2 files could not be graded" in plot
+    moodle = sheet(out, "moodle.csv")
+    assert [(m["ID number"], m["crank-shaper at position 2"]) for m in moodle] == \
+        [("9812", ""), ("9813", "")]
+
+
+@pytest.mark.skipif(cairo_missing() is not None, reason="libcairo2 is not installed")
+def test_the_pages_pdfs_are_the_same_made_on_two_processes(tmp_path):
+    folder = class_of(tmp_path / "class", {f"s{k}.svg": Style(moved={"B": (2.0 * k, 0.0)})
+                                           for k in range(3)})
+    pdfs = []
+    for workers in (1, 2):
+        out = tmp_path / f"graded{workers}"
+        assert run(folder, "-o", out, "--workers", workers).exit_code == 0
+        pdfs.append({p.parent.name: p.read_bytes() for p in out.glob("*/feedback.pdf")})
+    assert sorted(pdfs[0]) == ["s0", "s1", "s2"] and pdfs[0] == pdfs[1]
+
+
 # ----- 18. Dask: absolute paths ---------------------------------------------------------------
 def test_a_cluster_is_handed_absolute_paths(tmp_path, monkeypatch):
     """A worker runs in a folder of its own: the drawings' paths, and the exercise's if it

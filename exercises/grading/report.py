@@ -11,6 +11,7 @@ import csv
 import io
 import json
 
+from ...constructions.narration import speaking, spoken
 from .feedback import feedback_html, feedback_pdf
 from .grade import Grade
 from .lms import LMS_FILES, canvas_csv, item_title, moodle_csv
@@ -90,11 +91,13 @@ def class_csv(rows: list[Row]) -> str:
     return out.getvalue()
 
 
-def class_folder(rows: list[Row], *, position: int = 0, pdf: bool = False,
-                 lms: bool = False) -> dict[str, str | bytes]:
+def class_folder(rows: list[Row], exercise: str, *, position: int = 0, pdf: bool = False,
+                 lms: bool = False, workers: int = 1) -> dict[str, str | bytes]:
     """A class's output folder, by file name: each graded file's :func:`grade_files` in
-    its own folder, :data:`SHEET`, :data:`~.summary.SUMMARY`, and with ``lms`` (the
-    students known) the gradebooks :data:`~.lms.LMS_FILES`.
+    its own folder, :data:`SHEET`, :data:`~.summary.SUMMARY` and, with ``lms`` (the
+    students known), the gradebooks :data:`~.lms.LMS_FILES`, of the ``exercise`` (its id)
+    at its ``position``-th position. The PDFs, cairosvg's slowest work by far, are made on
+    ``workers`` processes.
 
     Raises
     ------
@@ -102,19 +105,39 @@ def class_folder(rows: list[Row], *, position: int = 0, pdf: bool = False,
         With ``pdf``, if cairosvg or libcairo2 is missing.
     """
     files: dict[str, str | bytes] = {}
-    grades = [r.outcome for r in rows if isinstance(r.outcome, Grade)]
-    for r in rows:
-        if isinstance(r.outcome, Grade):
-            who = "" if r.student is None else (f"{r.student.name} ({r.student.id})"
-                                                 if r.student.name else r.student.id)
-            files.update({f"{r.folder}/{name}": data for name, data in grade_files(
-                r.outcome, who=who, position=position, pdf=pdf).items()})
+    graded = [r for r in rows if isinstance(r.outcome, Grade)]
+    pages = []
+    for r in graded:
+        who = "" if r.student is None else (f"{r.student.name} ({r.student.id})"
+                                             if r.student.name else r.student.id)
+        made = grade_files(r.outcome, who=who, position=position)
+        files.update({f"{r.folder}/{name}": data for name, data in made.items()})
+        pages.append((r.outcome, who, made.get("grade.svg"), position, spoken()))
+    if pdf:
+        for r, data in zip(graded, _in_turn(_pdf, pages, workers)):
+            files[f"{r.folder}/feedback.pdf"] = data
     files[SHEET] = class_csv(rows)
-    exercise = grades[0].exercise if grades else ""
     unread = sum(1 for r in rows if r.file is not None and not isinstance(r.outcome, Grade))
-    files[SUMMARY] = summary_svg(grades, exercise, unread)
+    files[SUMMARY] = summary_svg([r.outcome for r in graded], exercise, unread)
     if lms:
         title = item_title(exercise, position)
         files["moodle.csv"] = moodle_csv(rows, title)
         files["canvas.csv"] = canvas_csv(rows, title)
     return files
+
+
+def _pdf(page: tuple) -> bytes:
+    """feedback.pdf of one page: (grade, who, overlay, position, language)."""
+    g, who, overlay, position, lang = page
+    with speaking(lang):
+        return feedback_pdf(g, who, overlay, position)
+
+
+def _in_turn(fn, jobs: list, workers: int) -> list:
+    """``fn`` of each job, in order, on ``workers`` processes (here, if one)."""
+    if workers <= 1 or len(jobs) < 2:
+        return [fn(job) for job in jobs]
+    from concurrent.futures import ProcessPoolExecutor
+
+    with ProcessPoolExecutor(max_workers=workers) as pool:
+        return list(pool.map(fn, jobs, chunksize=max(1, len(jobs) // (4 * workers))))
