@@ -351,6 +351,20 @@ def test_a_pattern_is_matched_as_written():
     assert Pattern("{id}.svg").match("a+b(1).svg") == Student("a+b(1)")   # no regex in names
 
 
+def test_a_file_named_as_a_formula_is_text_in_every_sheet(tmp_path):
+    """A student's file named "=HYPERLINK(…).svg" opens as text in a spreadsheet, in
+    grades.csv and in the gradebooks' feedback alike."""
+    name = '=HYPERLINK("http:x";"y").svg'
+    folder = class_of(tmp_path / "class", {name: Style()})
+    (folder / "+1.png").write_bytes(b"x")
+    out = tmp_path / "graded"
+    assert run(folder, "-o", out, "--pattern", "*").exit_code == 1       # no {id}
+    assert run(folder, "-o", out, "--pattern", "{id}.png").exit_code == 0
+    rows = sheet(out)
+    assert [r["drawing"] for r in rows] == ["'+1.png", "'" + name]
+    assert [m["ID number"] for m in sheet(out, "moodle.csv")] == ["'+1"]
+
+
 # ----- 16. feedback a student reads ------------------------------------------------------------
 def test_each_student_gets_a_page_that_fetches_nothing(tmp_path):
     """feedback.html beside each grade.json: the overlay inline, every item's verdict,

@@ -38,10 +38,24 @@ from .grade import Grade
 from .overlay import credited
 from .roster import Row
 
-__all__ = ["moodle_csv", "canvas_csv", "LMS_FILES", "item_title"]
+__all__ = ["moodle_csv", "canvas_csv", "LMS_FILES", "item_title", "as_text"]
 
 LMS_FILES = ("moodle.csv", "canvas.csv")
 """The gradebook files, in the output folder beside grades.csv."""
+
+_FORMULA = ("=", "+", "-", "@", "\t", "\r")
+"""What a cell a spreadsheet would read as a formula opens with."""
+
+
+def as_text(row: list[str]) -> list[str]:
+    """A row's cells as a spreadsheet opens them safely: one that would be read as a
+    formula (a file a student named "=HYPERLINK(…).svg") is led by an apostrophe, which
+    keeps it text.
+
+    >>> as_text(["=1+1.svg", "ali.svg", "75.00"])
+    ["'=1+1.svg", 'ali.svg', '75.00']
+    """
+    return [f"'{c}" if c.startswith(_FORMULA) else c for c in row]
 
 
 def item_title(exercise: str, position: int) -> str:
@@ -83,10 +97,10 @@ def moodle_csv(rows: list[Row], title: str) -> str:
     its feedback, a row a student (see the module's docstring)."""
     out = io.StringIO()
     w = csv.writer(out, lineterminator="\n")
-    w.writerow(["ID number", "Full name", title, f"Feedback: {title}"])
+    w.writerow(as_text(["ID number", "Full name", title, f"Feedback: {title}"]))
     for sid, theirs in _graded(rows).items():
         score, said = _score_and_word(theirs)
-        w.writerow([sid, theirs[0].student.name, score, said])
+        w.writerow(as_text([sid, theirs[0].student.name, score, said]))
     return out.getvalue()
 
 
@@ -96,9 +110,9 @@ def canvas_csv(rows: list[Row], title: str) -> str:
     docstring)."""
     out = io.StringIO()
     w = csv.writer(out, lineterminator="\n")
-    w.writerow(["Student", "ID", "SIS User ID", "SIS Login ID", "Section", title])
+    w.writerow(as_text(["Student", "ID", "SIS User ID", "SIS Login ID", "Section", title]))
     w.writerow(["Points Possible", "", "", "", "", "100"])
     for sid, theirs in _graded(rows).items():
         score, _ = _score_and_word(theirs)
-        w.writerow([theirs[0].student.name or sid, "", sid, "", "", score])
+        w.writerow(as_text([theirs[0].student.name or sid, "", sid, "", "", score]))
     return out.getvalue()

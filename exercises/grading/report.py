@@ -14,7 +14,7 @@ import json
 from ...constructions.narration import speaking, spoken
 from .feedback import feedback_html, feedback_pdf
 from .grade import Grade
-from .lms import LMS_FILES, canvas_csv, item_title, moodle_csv
+from .lms import LMS_FILES, as_text, canvas_csv, item_title, moodle_csv
 from .overlay import overlay_svg
 from .roster import Row
 from .summary import SUMMARY, summary_svg
@@ -76,18 +76,18 @@ def class_csv(rows: list[Row]) -> str:
                     for i in r.outcome.items})
     out = io.StringIO()
     w = csv.writer(out, lineterminator="\n")
-    w.writerow(["drawing", "folder", "id", "name", "score", *names, "note"])
+    w.writerow(as_text(["drawing", "folder", "id", "name", "score", *names, "note"]))
     for r in rows:
         who = [r.student.id, r.student.name] if r.student else ["", ""]
         if not isinstance(r.outcome, Grade):
-            w.writerow([r.drawing, "", *who, "", *[""] * len(names),
-                        "; ".join(n for n in (r.outcome, r.note) if n)])
+            w.writerow(as_text([r.drawing, "", *who, "", *[""] * len(names),
+                                "; ".join(n for n in (r.outcome, r.note) if n)]))
             continue
         g = r.outcome
         verdicts = {i.name: i.verdict for i in g.items}
-        w.writerow([r.drawing, r.folder, *who, f"{g.score:.1f}",
-                    *[verdicts.get(n, "") for n in names],
-                    "; ".join(n for n in (r.note, *g.notes) if n)])
+        w.writerow(as_text([r.drawing, r.folder, *who, f"{g.score:.1f}",
+                            *[verdicts.get(n, "") for n in names],
+                            "; ".join(n for n in (r.note, *g.notes) if n)]))
     return out.getvalue()
 
 
