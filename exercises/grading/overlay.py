@@ -37,10 +37,11 @@ def credited(g: Grade, item: Item) -> bool:
 
 
 def named(text: str) -> str:
-    """A name (a file's, an exercise's) to be set in a line of the language spoken: in a
-    right-to-left one, a name of no right-to-left letters that opens or closes with
-    anything but a letter between left-to-right marks, so that one opening with digits
-    ("9818_ali.svg") keeps its order in a Persian line, in a browser and in cairo alike."""
+    """A name (a file's, an exercise's, an item's) to be set in a line of the language
+    spoken: in a right-to-left one, a name of no right-to-left letters that opens or closes
+    with anything but a letter between left-to-right marks, so that one opening with
+    digits ("9818_ali.svg") or closing with a prime ("a′") keeps its order in a Persian
+    line, in a browser and in cairo alike."""
     bare = not text or text[0].isalpha() and text[-1].isalpha()
     return text if bare or not right_to_left() or is_rtl(text) else f"\u200e{text}\u200e"
 
@@ -194,7 +195,7 @@ def _rings(dwg, items: list[Item], unit: float, boxes: list, lines: list) -> Non
                 math.dist(item.found, item.expected) > _RING * unit:
             marks.add(dwg.line(tuple(item.found), tuple(item.expected), stroke=colour))
             marks.add(_head(dwg, item.found, item.expected, unit, colour))
-        text = f"{item.name}: {words(item.verdict)}"
+        text = f"{named(item.name)}: {words(item.verdict)}"
         box = _place(text, at, fs, unit, boxes, lines)
         boxes.append(box)
         said.add(_said(dwg, text, (box[0], box[3] - 0.3 * fs), fill=colour))
@@ -299,7 +300,7 @@ def _notes(items: list[Item], width: float, unit: float) -> list[tuple[str, str]
     fs = _SMALL * unit
     out = []
     for item in _wrong(items):
-        head = f"{item.name}: {words(item.verdict)}"
+        head = f"{named(item.name)}: {words(item.verdict)}"
         if item.tolerance is not None:
             head += " (± " + measure_words(f"{item.tolerance:.3g} mm") + ")"
         out.append((head, AMBER if item.verdict == FOLLOWS else RED))
