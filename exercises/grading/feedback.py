@@ -178,7 +178,7 @@ def feedback_sheet(g: Grade, who: str = "", overlay: str | None = None,
     say(what, 0, y, fill="#555")
     y += 7.0
     say(score, 0, y, font_size=4.2, font_weight="bold")
-    y += 4.0
+    y += 4.0 if overlay else 10.0
     inner = ""
     if overlay:
         shown = _fitted(overlay, width)
