@@ -184,7 +184,7 @@ def _mistakes(rng: random.Random, ex: Exercise, position: int, sheet: str) -> tu
     if sheet != "polygons" and ex.has_centres:
         kinds += ["centre", "centre"]
     if len(ex.angles) > 1:
-        kinds += ["position"]
+        kinds += ["position", "position"]
     first = rng.choice(kinds)
     polygons = 2 if ex.has_accelerations else 1
     # A second mistake goes on the other polygon, or on the centres.
