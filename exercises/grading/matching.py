@@ -1,5 +1,6 @@
 """Labels paired with the points they name on a drawing, as a reader pairs them: by all
-the labels together, so crowded points are told apart."""
+the labels together, so crowded points are told apart, and each to a point a student
+marks (:mod:`.marks`) before a bare stroke's end."""
 
 from __future__ import annotations
 
@@ -8,7 +9,8 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 from ...constructions.errors import InputError
-from .drawing import Drawing
+from .drawing import Drawing, advance
+from .marks import PENALTY, Kind, Mark, marks, touching
 
 __all__ = ["match", "Frame", "rounded", "REACH", "NEAREST", "MAX_NAMES", "LEAST_CONDITIONING"]
 
@@ -22,9 +24,6 @@ NEAREST = 16
 MAX_NAMES = 500
 """The most labels naming a point a drawing may have."""
 
-_SAME = 1e-6
-"""Paper (mm) within which two points are one."""
-
 LEAST_CONDITIONING = 0.05
 """The least conditioning slack is given for: an item no drawing can place better than this
 is graded at twenty pens."""
@@ -35,27 +34,35 @@ Vec = tuple[float, float]
 def match(drawing: Drawing, read: Callable[[str], object | None],
           unmatched: list[str] | None = None) -> dict[object, Vec]:
     """Each label's point, the label read by ``read`` (None for a label that names no
-    point): the line ends and dots within :data:`REACH` of its letters (the
+    point): of the points a label may name (:func:`.marks.marks`: dots, arrows' tips,
+    junctions, blocks' middles, strokes' ends) within :data:`REACH` of its letters (the
     :data:`NEAREST` nearest), each point taken once by each kind of thing (a key's first
-    part), in the pairing whose distances add to the least (nearest pairs first, then any
-    two labels' points swapped while that shortens the sum). The labels left with no point
-    are added to ``unmatched``.
+    part), in the pairing whose costs add to the least (nearest pairs first, then any two
+    labels' points swapped while that lowers the sum). A pair costs its distance and the
+    point's :data:`.marks.PENALTY`, so a bare stroke's end loses to a mark a little
+    farther. The labels left with no point are added to ``unmatched``.
 
     Raises
     ------
     InputError
         If more than :data:`MAX_NAMES` labels name a point.
     """
-    unique = _distinct(drawing.ends() + [c for c, _ in drawing.circles])
     labels = [(key, label) for label in drawing.labels
               if (key := read(label.text)) is not None]
     if len(labels) > MAX_NAMES:
         raise InputError(f"{len(labels):,} labels name a point, more than a drawing has (at "
                          f"most {MAX_NAMES}); a page of polygons names some dozens",
                          file=drawing.source)
+    found = marks(drawing) if labels else []
     kinds = [_kind(key) for key, _ in labels]
-    near = _near(unique, [label for _, label in labels])
-    pairs = sorted((d, i, j) for i, js in near.items() for j, d in js.items())
+    near = _near([m.at for m in found], [label for _, label in labels])
+    # A bare end a label could take may lie on another stroke: where the two meet.
+    ends = sorted({j for js in near.values() for j in js if found[j].kind is Kind.END})
+    for j, meets in zip(ends, touching(drawing, [found[j].at for j in ends])):
+        if meets:
+            found[j] = Mark(found[j].at, Kind.JUNCTION)
+    cost = {i: {j: d + PENALTY[found[j].kind] for j, d in js.items()} for i, js in near.items()}
+    pairs = sorted((c, i, j) for i, js in cost.items() for j, c in js.items())
     taken: dict[int, int] = {}
     holder: dict[tuple[object, int], int] = {}          # (kind, point): the label on it
     for _, i, j in pairs:
@@ -69,36 +76,20 @@ def match(drawing: Drawing, read: Callable[[str], object | None],
         for i in list(taken):
             # Only a label holding one of i's points can be swapped with i: visit those, in
             # the order the labels were paired.
-            mates = sorted({m for j in near[i] if (m := holder.get((kinds[i], j))) is not None
+            mates = sorted({m for j in cost[i] if (m := holder.get((kinds[i], j))) is not None
                             and m > i}, key=order.get)
             for k in mates:
                 a, b = taken[i], taken[k]
-                if b in near[i] and a in near[k] and \
-                        near[i][b] + near[k][a] < near[i][a] + near[k][b] - 1e-9:
+                if b in cost[i] and a in cost[k] and \
+                        cost[i][b] + cost[k][a] < cost[i][a] + cost[k][b] - 1e-9:
                     taken[i], taken[k] = b, a
                     holder[kinds[i], b], holder[kinds[i], a] = i, k
                     improved = True
     out: dict[object, Vec] = {}
     for i, j in taken.items():
-        out.setdefault(labels[i][0], unique[j])
+        out.setdefault(labels[i][0], found[j].at)
     if unmatched is not None:               # a label by no point it could name
         unmatched += [label.text for i, (_, label) in enumerate(labels) if i not in taken]
-    return out
-
-
-def _distinct(points: list[Vec]) -> list[Vec]:
-    """``points`` in order, each within a micrometre of an earlier one left out (found on
-    a grid of micrometre cells, so a drawing's many line ends cost no more than their
-    number)."""
-    cells: dict[tuple[int, int], list[Vec]] = {}
-    out = []
-    for p in dict.fromkeys(points):          # the same point again (a polyline's joints) first
-        kx, ky = math.floor(p[0] / _SAME), math.floor(p[1] / _SAME)
-        if any(math.dist(p, q) < _SAME for dx in (-1, 0, 1) for dy in (-1, 0, 1)
-               for q in cells.get((kx + dx, ky + dy), ())):
-            continue
-        cells.setdefault((kx, ky), []).append(p)
-        out.append(p)
     return out
 
 
@@ -136,9 +127,11 @@ def _kind(key) -> object:
 
 def _letters(label) -> tuple[float, float, float, float]:
     """A label's letters as a box (x0, x1, y0, y1): from its anchor (the baseline's start)
-    about as wide as its letters and as tall as a capital."""
-    return (label.at[0], label.at[0] + 2.0 * len(label.text), label.at[1] - 3.5,
-            label.at[1])
+    about as wide as its letters and as tall as a capital (0.8 of its size, taken between
+    1 and 10 mm: letters drawn smaller or larger still name the point by them)."""
+    size = min(max(label.size, 1.0), 10.0)
+    return (label.at[0], label.at[0] + advance(label.text) * size,
+            label.at[1] - 0.8 * size, label.at[1])
 
 
 @dataclass(frozen=True)

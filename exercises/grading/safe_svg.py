@@ -1,6 +1,6 @@
 """A student's SVG parsed with no trust, and cut down to what grading reads.
 
-The file is parsed by defusedxml (no DTD, no entities, nothing external), each element's
+The file is parsed with no entities and nothing loaded (:mod:`.svg_xml`), each element's
 line kept for the messages. Then, before svgelements reads any geometry:
 
 - the tree is bounded: its elements, how deep they nest, and what its ``<use>`` elements
@@ -12,7 +12,11 @@ line kept for the messages. Then, before svgelements reads any geometry:
 - only what grading reads goes on: groups, ``<use>``, shapes and texts, with their
   geometry, ids and transforms (each rewritten as one finite matrix). Styles, scripts,
   markers, clip paths, hidden layers and metadata are left out, and so is an element with
-  a number that is no number or beyond any drawing, with a word (:attr:`Reduced.notes`).
+  a number that is no number or beyond any drawing, with a word (:attr:`Reduced.notes`),
+  and silently a shape that paints nothing (its fill and stroke none, as LibreOffice's
+  bounding boxes). A text keeps where its first letter stands (the tspans that place it
+  read here, so LibreOffice's nested ones are as good as a plain ``<text x y>``), its
+  words and its font size; a shape keeps whether a marker (an arrowhead) starts or ends it.
 
 svgelements then expands a bounded tree whose every number it can read. Each element
 carries its index in :attr:`Reduced.kept` as the attribute :data:`MARK`, so a shape
@@ -27,6 +31,8 @@ import xml.etree.ElementTree as ET
 from dataclasses import dataclass, field
 
 from ...constructions.errors import InputError
+from .svg_style import Inherited, first_letter, inherit
+from .svg_xml import parse_xml
 from .svg_transform import PX, matrix, times
 
 __all__ = ["Kept", "Reduced", "reduce_svg", "readable_count", "MARK", "MAX_ELEMENTS", "MAX_DEPTH",
@@ -66,7 +72,7 @@ _GEOMETRY = {"svg": ("x", "y", "width", "height", "viewBox", "preserveAspectRati
              "line": ("x1", "y1", "x2", "y2"), "polyline": ("points",),
              "polygon": ("points",), "rect": ("x", "y", "width", "height", "rx", "ry"),
              "circle": ("cx", "cy", "r"), "ellipse": ("cx", "cy", "rx", "ry"),
-             "path": ("d",), "text": ("x", "y", "dx", "dy"), "tspan": ("x", "y", "dx", "dy")}
+             "path": ("d",), "text": ("x", "y", "dx", "dy")}
 _LENGTH = re.compile(r"\s*([+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?)\s*"
                      r"(px|pt|pc|mm|cm|in|em|ex|%)?\s*")
 _NUMBER = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?")
@@ -74,11 +80,14 @@ _NUMBER = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?")
 
 @dataclass(frozen=True)
 class Kept:
-    """An element passed on to svgelements: its tag, its line, and a text's words."""
+    """An element passed on to svgelements: its tag, its line, a text's words and its
+    first letter's font size (user units), and whether a marker starts or ends a shape."""
 
     tag: str
     line: int
     words: str = ""
+    size: float | None = None
+    marked: tuple[bool, bool] = (False, False)
 
     def where(self) -> str:
         """The element as a message names it: ``<circle> at line 4``."""
@@ -112,9 +121,9 @@ def reduce_svg(data: bytes, name: str) -> Reduced:
     >>> r.data.decode().split("><")[1]
     'line tarsim-n="1" x1="0" y1="0" x2="3" y2="4" /'
     >>> r.kept[1]
-    Kept(tag='line', line=1, words='')
+    Kept(tag='line', line=1, words='', size=None, marked=(False, False))
     """
-    root, lines = _parse(data, name)
+    root, lines = parse_xml(data, name)
     if _local(root.tag) != "svg":
         raise InputError(f"not an SVG drawing (its root is <{_local(root.tag)}>)", file=name)
     if _space(root.tag) not in ("", _SVG):
@@ -126,46 +135,13 @@ def reduce_svg(data: bytes, name: str) -> Reduced:
                          f"{MAX_ELEMENTS:,})", file=name)
     _check_depth(root, lines, name)
     out = Reduced(b"")
-    tree = _Reducer(name, lines, out).element(root, None)
+    tree = _Reducer(name, lines, out).element(root, None, Inherited())
     if tree is None:
         raise InputError("the drawing is hidden whole (its <svg> has display none)",
                          file=name, line=1)
     _Expansion(tree, out.kept, name).check()
     out.data = ET.tostring(tree, encoding="unicode").encode("utf-8")
     return out
-
-
-def _parse(data: bytes, name: str) -> tuple[ET.Element, dict[ET.Element, int]]:
-    """The XML tree, and each element's line."""
-    from defusedxml import DefusedXmlException
-    from defusedxml.ElementTree import DefusedXMLParser
-
-    lines: dict[ET.Element, int] = {}
-    parser = DefusedXMLParser(target=ET.TreeBuilder(), forbid_dtd=True, forbid_entities=True,
-                              forbid_external=True)
-    expat = parser.parser
-    start = expat.StartElementHandler
-
-    def started(tag, attributes):
-        element = start(tag, attributes)
-        lines[element] = expat.CurrentLineNumber
-        return element
-    expat.StartElementHandler = started
-    try:
-        parser.feed(data)
-        root = parser.close()
-    except DefusedXmlException:
-        raise InputError("the SVG declares a DTD, entities or external resources, which a "
-                         "drawing never needs; export it again as plain SVG",
-                         file=name) from None
-    except ET.ParseError as e:
-        line, column = e.position
-        why = str(e).split(":")[0]
-        raise InputError(f"not an SVG drawing: its XML is broken at column {column} ({why})",
-                         file=name, line=line) from None
-    except LookupError as e:                  # an encoding Python does not know
-        raise InputError(f"not an SVG drawing: {e}; save it as UTF-8", file=name) from None
-    return root, lines
 
 
 def _check_depth(root: ET.Element, lines: dict, name: str) -> None:
@@ -195,8 +171,9 @@ class _Reducer:
                               f"({why})")
 
     def element(self, e: ET.Element, parent: ET.Element | None,
-                in_text: bool = False) -> ET.Element | None:
-        """The kept copy of ``e`` under ``parent`` (None if left out)."""
+                outer: Inherited) -> ET.Element | None:
+        """The kept copy of ``e`` under ``parent`` (None if left out), ``outer`` the
+        presentation it inherits."""
         space, tag = _space(e.tag), _local(e.tag)
         if space == _XINCLUDE:
             raise self.fail(e, "pulls in another file (XInclude); a drawing must hold all it "
@@ -206,21 +183,29 @@ class _Reducer:
                 and not (tag == "image" and href.startswith("data:")):
             raise self.fail(e, f"links to {href[:60]!r} outside the drawing; a drawing must "
                                "hold all it shows")
-        if space not in ("", _SVG) or _hidden(e):
+        if space not in ("", _SVG) or _hidden(e) or (tag not in _GROUPS and
+                                                     tag not in _GEOMETRY):
             return None
-        if in_text:
-            tag = "tspan" if tag == "tspan" else None
-        elif tag not in _GROUPS and tag not in _GEOMETRY:
-            return None
-        if tag is None:
-            return None
+        here = inherit(e, outer)
         kind = _GROUPS.get(tag, tag)
+        if kind not in _GROUPS.values() and here.unseen:
+            return None                      # it paints nothing: a bounding box
         attributes = self.attributes(e, kind, href)
-        if attributes is None:
+        if attributes is None or kind == "text" and not self.place(e, attributes):
             return None
         index = len(self.out.kept)
-        words = "".join(e.itertext()) if kind == "text" else ""
-        self.out.kept.append(Kept(_local(e.tag), self.lines.get(e, 0), words))
+        if kind == "text":
+            size = here.size
+            for span in first_letter(e, space)[1:]:
+                size = inherit(span, Inherited(size)).size
+            for inner in e.iter():
+                if _space(inner.tag) == _XINCLUDE:
+                    raise self.fail(inner, "pulls in another file (XInclude); a drawing "
+                                           "must hold all it shows")
+            kept = Kept(tag, self.lines.get(e, 0), "".join(e.itertext()), size)
+        else:
+            kept = Kept(tag, self.lines.get(e, 0), marked=here.marked)
+        self.out.kept.append(kept)
         attributes = {MARK: str(index), **attributes}
         if kind == "symbol":                 # drawn only through a <use>: a group in defs
             holder = ET.Element("defs") if parent is None else ET.SubElement(parent, "defs")
@@ -228,11 +213,44 @@ class _Reducer:
         else:
             copy = ET.Element(kind, attributes) if parent is None else \
                 ET.SubElement(parent, kind, attributes)
-        for child in e:
-            self.element(child, copy, in_text=in_text or kind == "text")
-        if kind in ("text", "tspan"):
-            copy.text = e.text
+        if kind != "text":                   # a text's letters are in its words
+            for child in e:
+                self.element(child, copy, here)
         return copy
+
+    def place(self, text: ET.Element, attributes: dict) -> bool:
+        """Put in ``attributes`` where ``text``'s first letter stands: the x and y of the
+        innermost element placing it that has them, and the dx and dy of them all (px). A
+        tspan whose place is no length is not held to, with a note; False (and a note) if
+        the text's own dx or dy is in no fixed unit."""
+        shift = {"dx": 0.0, "dy": 0.0}
+        for k, e in enumerate(first_letter(text, _space(text.tag))):
+            values = {}
+            for key in ("x", "y", "dx", "dy"):
+                value = e.get(key)
+                if value is None or k == 0 and key in ("x", "y"):
+                    continue                 # the text's own x and y are checked already
+                value = (re.split(r"[\s,]+", value.strip()) or [""])[0]
+                length = _length(value)
+                if length is None or key in shift and length[1] not in PX:
+                    why = _fault(value) if length is None else "is not a length in a fixed unit"
+                    self.leave_out(e, f"{key}={value[:24]!r} {why}")
+                    if k == 0:
+                        return False
+                    break
+                values[key] = length[0] * PX[length[1]] if key in shift else value
+            else:
+                for key, value in values.items():
+                    if key in shift:
+                        shift[key] += value
+                    else:
+                        attributes[key] = value
+        for key, value in shift.items():
+            if value:
+                attributes[key] = repr(value)
+            else:
+                attributes.pop(key, None)
+        return True
 
     def attributes(self, e: ET.Element, kind: str, href: str | None) -> dict | None:
         """The attributes svgelements is given, checked; None (and a note) if ``e`` holds
@@ -254,7 +272,7 @@ class _Reducer:
             if kind == "svg":
                 out[key] = self.page(e, key, value)
                 continue
-            if kind in ("text", "tspan"):        # a list of glyph positions: the first
+            if kind == "text":                   # a list of glyph positions: the first
                 value = (re.split(r"[\s,]+", value.strip()) or [""])[0]
             if _length(value) is None:
                 self.leave_out(e, f"{key}={value[:24]!r} {_fault(value)}")

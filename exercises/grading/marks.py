@@ -1,0 +1,409 @@
+"""The points a label may name on a drawing, each with what it is.
+
+A reader takes a label to name a point the student marked: a dot, an arrow's tip, where
+strokes meet, a slider block's middle. A stroke that just ends (a construction line run on
+past its point) is the last thing a label names. The corners of an arrowhead, its shaft's
+end inside it, the far ends of its V, and a block's corners are parts of a mark, never
+points a label names.
+
+How each :class:`Kind` is told, sizes in paper mm:
+
+- **dot**: a circle; a closed curved stroke (a dot LibreOffice or GeoGebra draws in
+  Béziers or arcs) at its middle; a closed polygon of six corners or more within
+  :data:`HEAD`.
+- **tip**: an arrowhead's apex. A closed polygon within :data:`HEAD` that a longer stroke
+  (its shaft) runs into, the apex on the shaft's line and ahead of its other corners; a
+  triangle within :data:`HEAD` with one clearly sharpest corner, alone; two short strokes
+  (a V's wings) meeting where a shaft ends and swept back along it; a stroke's end that
+  carries a marker.
+- **block**: the middle of a closed quadrilateral of square corners, no side longer than
+  :data:`BLOCK` (a slider block), one stroke or four.
+- **junction**: where strokes' ends meet within :data:`JOIN`: a polyline's or a
+  polygon's corner; a stroke's end lying on another stroke.
+- **end**: a stroke's end touching nothing.
+
+:data:`PENALTY` is what :func:`.matching.match` adds to a label's distance from a point of
+each kind: an end loses to any other mark up to that much farther.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from enum import StrEnum
+
+from .drawing import Drawing, Outline
+
+__all__ = ["Kind", "Mark", "marks", "touching", "PENALTY", "JOIN", "HEAD", "BLOCK"]
+
+Vec = tuple[float, float]
+
+JOIN = 0.25
+"""Ends within this (mm, half a 0.5 mm pen's line) meet."""
+
+HEAD = 8.0
+"""The largest an arrowhead, a V's wing or a dot drawn as a polygon is (mm): a drafted
+arrowhead is 3–5 mm long, GeoGebra's 17 px."""
+
+BLOCK = 20.0
+"""The longest side of a slider block (mm)."""
+
+_SQUARE = math.radians(12.0)
+"""How far from a right angle a block's corner may be."""
+
+_WING = (math.radians(5.0), math.radians(60.0))
+"""How far a V's wing sweeps back off its shaft's line."""
+
+_FEW = 12
+"""The most corners a closed polygon smaller than a block may have and be told an
+arrowhead, a block or a polygon; one of more is a dot."""
+
+_CROWD = 12
+"""The most strokes a place may join and be an arrow's V or a block's corner: more meet
+only where a drawing heaps strokes."""
+
+
+class Kind(StrEnum):
+    """What a point a label may name is."""
+
+    DOT = "dot"
+    TIP = "tip"
+    BLOCK = "block"
+    JUNCTION = "junction"
+    END = "end"
+
+
+PENALTY = {Kind.DOT: 0.0, Kind.TIP: 0.0, Kind.BLOCK: 0.0, Kind.JUNCTION: 0.0, Kind.END: 2.0}
+"""What pairing a label with a point of each kind costs beyond its distance (mm): a stroke's
+bare end loses to a dot, a tip, a block or a junction up to 2 mm farther, more than a
+construction line's end stands from the point it was drawn through (1.6 mm in a class's
+drawings)."""
+
+_PREFERRED = tuple(Kind)
+"""Of marks at one place, the one kept: the first in this order."""
+
+
+@dataclass(frozen=True, slots=True)
+class Mark:
+    """A point a label may name, and what it is."""
+
+    at: Vec
+    kind: Kind
+
+
+def marks(drawing: Drawing) -> list[Mark]:
+    """The points a label may name on ``drawing``, each once (marks within a micrometre
+    are one, of the kind :data:`_PREFERRED` puts first).
+
+    Examples
+    --------
+    A shaft with a filled arrowhead at (10, 0) and a stray line ending 1.6 mm away:
+
+    >>> from tarsim.exercises.grading.drawing import Outline
+    >>> d = Drawing(outlines=[Outline(((0.0, 0.0), (7.0, 0.0))),
+    ...                       Outline(((10.0, 0.0), (7.0, 1.0), (7.0, -1.0)), closed=True),
+    ...                       Outline(((11.6, 0.0), (11.6, 20.0)))])
+    >>> [(m.at, str(m.kind)) for m in marks(d)]
+    [((10.0, 0.0), 'tip'), ((0.0, 0.0), 'end'), ((11.6, 0.0), 'end'), ((11.6, 20.0), 'end')]
+    """
+    out = [Mark(c, Kind.DOT) for c, _ in drawing.circles]
+    web = _Web()
+    heads = []
+    # A drawing made of segments alone (built by hand, not read) is one stroke a segment.
+    strokes = drawing.outlines or [Outline((a, b)) for a, b in drawing.segments]
+    for o in strokes:
+        corners, closed = _closed(o)
+        if not closed:
+            web.stroke(corners, False, o.marked)
+            continue
+        if o.curved:
+            out.append(Mark(_middle(corners), Kind.DOT))
+            continue
+        xs, ys = [p[0] for p in corners], [p[1] for p in corners]
+        if math.hypot(max(xs) - min(xs), max(ys) - min(ys)) > 2.0 * BLOCK:
+            web.stroke(corners, True)        # a polygon of the drawing: its corners meet
+            continue
+        if len(corners) > _FEW:              # a small polygon of many corners: a dot
+            out.append(Mark(_middle(corners), Kind.DOT))
+            continue
+        poly = _simplified(corners)
+        sides = [math.dist(a, b) for a, b in zip(poly, poly[1:] + poly[:1])]
+        if len(poly) == 4 and max(sides) <= BLOCK and _square(poly):
+            out.append(Mark(_middle(poly), Kind.BLOCK))
+        elif _extent(poly) <= HEAD and len(poly) >= 6:
+            out.append(Mark(_middle(poly), Kind.DOT))
+        elif _extent(poly) <= HEAD and len(poly) >= 3:
+            heads.append(poly)
+        else:
+            web.stroke(poly, True)
+    for poly in heads:
+        apex = web.head(poly)
+        if apex is None:
+            web.stroke(poly, True)
+        else:
+            out.append(Mark(apex, Kind.TIP))
+    out += web.marks()
+    return _distinct(out)
+
+
+def touching(drawing: Drawing, points: list[Vec]) -> list[bool]:
+    """Whether each of ``points`` lies on one of ``drawing``'s segments (within
+    :data:`JOIN`) away from that segment's ends: a stroke's end on another stroke is where
+    the two meet."""
+    import numpy as np
+
+    if not points or not drawing.segments:
+        return [False] * len(points)
+    seg = np.array(drawing.segments, dtype=float)          # (n, 2, 2)
+    a, b = seg[:, 0], seg[:, 1]
+    d = b - a
+    length2 = np.maximum((d * d).sum(axis=1), 1e-300)
+    out = []
+    chunk = max(1, 2_000_000 // len(seg))                   # points at a time
+    xy = np.array(points, dtype=float)
+    for k in range(0, len(xy), chunk):
+        p = xy[k:k + chunk, None, :]                         # (m, 1, 2)
+        t = np.clip(((p - a) * d).sum(axis=2) / length2, 0.0, 1.0)
+        off = np.hypot(*np.moveaxis(a + t[..., None] * d - p, 2, 0))
+        away = np.minimum(np.hypot(*np.moveaxis(p - a, 2, 0)),
+                          np.hypot(*np.moveaxis(p - b, 2, 0))) > JOIN
+        out += np.any((off <= JOIN) & away, axis=1).tolist()
+    return out
+
+
+# ----- shapes ----------------------------------------------------------------------------------
+def _closed(o: Outline) -> tuple[list[Vec], bool]:
+    """``o``'s corners, and whether it closes (a stroke ending where it began, as a CAD
+    program closes a polyline, does)."""
+    corners = list(o.corners)
+    if not o.closed and len(corners) > 3 and math.dist(corners[0], corners[-1]) <= JOIN:
+        return corners[:-1], True
+    return corners, o.closed
+
+
+def _simplified(corners: list[Vec]) -> list[Vec]:
+    """A closed polygon's corners, those where it does not turn (by under 2°) left out."""
+    out = list(corners)
+    changed = True
+    while changed and len(out) > 3:
+        changed = False
+        for k in range(len(out)):
+            a, b, c = out[k - 1], out[k], out[(k + 1) % len(out)]
+            if abs(_turn(a, b, c)) < math.radians(2.0) or math.dist(a, b) < 1e-6:
+                del out[k]
+                changed = True
+                break
+    return out
+
+
+def _turn(a: Vec, b: Vec, c: Vec) -> float:
+    """How far a path a → b → c turns at b (radians, either way)."""
+    u, v = (b[0] - a[0], b[1] - a[1]), (c[0] - b[0], c[1] - b[1])
+    return math.atan2(u[0] * v[1] - u[1] * v[0], u[0] * v[0] + u[1] * v[1])
+
+
+def _square(poly: list[Vec]) -> bool:
+    """Whether a quadrilateral's corners are all right angles, within :data:`_SQUARE`."""
+    return all(abs(abs(_turn(poly[k - 1], poly[k], poly[(k + 1) % 4])) - math.pi / 2)
+               <= _SQUARE for k in range(4))
+
+
+def _extent(points: list[Vec]) -> float:
+    return max(math.dist(p, q) for p in points for q in points)
+
+
+def _middle(points: list[Vec]) -> Vec:
+    xs, ys = [p[0] for p in points], [p[1] for p in points]
+    return ((min(xs) + max(xs)) / 2.0, (min(ys) + max(ys)) / 2.0)
+
+
+def _distinct(found: list[Mark]) -> list[Mark]:
+    """``found``, marks within a micrometre of one another one mark: the preferred kind,
+    where the first of them stands (found on a grid of micrometre cells)."""
+    same = 1e-6
+    cells: dict[tuple[int, int], list[int]] = {}
+    out: list[Mark] = []
+    for m in found:
+        kx, ky = math.floor(m.at[0] / same), math.floor(m.at[1] / same)
+        twin = next((k for dx in (-1, 0, 1) for dy in (-1, 0, 1)
+                     for k in cells.get((kx + dx, ky + dy), ())
+                     if math.dist(out[k].at, m.at) < same), None)
+        if twin is None:
+            cells.setdefault((kx, ky), []).append(len(out))
+            out.append(m)
+        elif _PREFERRED.index(m.kind) < _PREFERRED.index(out[twin].kind):
+            out[twin] = Mark(out[twin].at, m.kind)
+    return out
+
+
+# ----- strokes and where they meet -------------------------------------------------------------
+@dataclass
+class _Place:
+    """Where strokes' ends or corners meet: the first point there, and the strokes
+    leaving it (each its far end and length)."""
+
+    at: Vec
+    leaving: list[tuple[Vec, float, int]]
+    marked: bool = False
+    part: bool = False
+    tip: bool = False
+
+
+class _Web:
+    """The strokes that are not shapes of their own, met at their places."""
+
+    def __init__(self):
+        self.places: list[_Place] = []
+        self.cells: dict[tuple[int, int], list[int]] = {}
+        self.near: dict[tuple[int, int], list[int]] = {}          # 2 mm cells, for heads
+
+    def place(self, p: Vec) -> int:
+        """The place at ``p``, made if no place stands within :data:`JOIN`."""
+        kx, ky = math.floor(p[0] / JOIN), math.floor(p[1] / JOIN)
+        for dx in (-1, 0, 1):
+            for dy in (-1, 0, 1):
+                for k in self.cells.get((kx + dx, ky + dy), ()):
+                    if math.dist(self.places[k].at, p) <= JOIN:
+                        return k
+        self.cells.setdefault((kx, ky), []).append(len(self.places))
+        self.near.setdefault((math.floor(p[0] / 2.0), math.floor(p[1] / 2.0)), []).append(
+            len(self.places))
+        self.places.append(_Place(p, []))
+        return len(self.places) - 1
+
+    def stroke(self, corners: list[Vec], closed: bool,
+               marked: tuple[bool, bool] = (False, False)) -> None:
+        """Add a stroke through ``corners``, closing back to its start if ``closed``."""
+        ring = corners + corners[:1] if closed else corners
+        ids = [self.place(p) for p in ring]
+        for (i, a), (j, b) in zip(zip(ids, ring), zip(ids[1:], ring[1:])):
+            if i != j:
+                length = math.dist(a, b)
+                self.places[i].leaving.append((self.places[j].at, length, j))
+                self.places[j].leaving.append((self.places[i].at, length, i))
+        if ids and not closed:
+            self.places[ids[0]].marked |= marked[0]
+            self.places[ids[-1]].marked |= marked[1]
+
+    def head(self, poly: list[Vec]) -> Vec | None:
+        """The apex of the arrowhead ``poly`` is, if it is one: the corner ahead along the
+        shaft that runs into it (a stroke longer than the head, ending in or on it), on the
+        shaft's line; failing a shaft, a triangle's one clearly sharpest corner. The
+        shaft's end is then part of the arrow."""
+        size = _extent(poly)
+        xs, ys = [p[0] for p in poly], [p[1] for p in poly]
+        for cx in range(math.floor((min(xs) - JOIN) / 2.0), math.floor((max(xs) + JOIN) / 2.0)
+                        + 1):
+            for cy in range(math.floor((min(ys) - JOIN) / 2.0),
+                            math.floor((max(ys) + JOIN) / 2.0) + 1):
+                for k in self.near.get((cx, cy), ()):
+                    q = self.places[k]
+                    if not _within(q.at, poly):
+                        continue
+                    for far, length, _ in q.leaving:
+                        apex = _apex(poly, far, q.at, size) if length >= size else None
+                        if apex is not None:
+                            q.part = True
+                            return apex
+        if len(poly) == 3:
+            angles = sorted((abs(math.pi - abs(_turn(poly[k - 1], poly[k], poly[(k + 1) % 3]))),
+                             k) for k in range(3))
+            if angles[0][0] <= math.radians(60.0) and \
+                    angles[1][0] - angles[0][0] >= math.radians(15.0):
+                return poly[angles[0][1]]
+        return None
+
+    def marks(self) -> list[Mark]:
+        """The tips, blocks, junctions and ends where the strokes meet, their arrowheads'
+        wings and blocks' corners left out."""
+        out = []
+        for place in self.places:
+            _v_tip(place, self.places)
+        out += self._blocks()
+        for place in self.places:
+            if place.tip or place.marked:
+                out.append(Mark(place.at, Kind.TIP))
+            elif not place.part and place.leaving:
+                out.append(Mark(place.at, Kind.JUNCTION if len(place.leaving) > 1
+                                else Kind.END))
+        return out
+
+    def _blocks(self) -> list[Mark]:
+        """Slider blocks drawn as four strokes: places joined by short sides round a
+        rectangle. Their corners are parts of them, unless another stroke meets there."""
+        short = [{j for _, length, j in p.leaving if length <= BLOCK} for p in self.places]
+        seen, out = set(), []
+        for a, ends in enumerate(short):
+            if not 2 <= len(ends) <= _CROWD:
+                continue
+            for b in ends:
+                for d in ends:
+                    if b >= d:
+                        continue
+                    for c in (short[b] & short[d]) - {a}:
+                        corners = (a, b, c, d)
+                        key = frozenset(corners)
+                        poly = [self.places[k].at for k in corners]
+                        if key in seen or not _square(poly):
+                            continue
+                        seen.add(key)
+                        out.append(Mark(_middle(poly), Kind.BLOCK))
+                        for k in corners:
+                            if len(self.places[k].leaving) == 2:
+                                self.places[k].part = True
+        return out
+
+
+def _within(p: Vec, poly: list[Vec]) -> bool:
+    """Whether ``p`` lies inside the polygon ``poly`` or within :data:`JOIN` of its edge."""
+    inside = False
+    for a, b in zip(poly, poly[1:] + poly[:1]):
+        if (a[1] > p[1]) != (b[1] > p[1]) and \
+                p[0] < a[0] + (p[1] - a[1]) * (b[0] - a[0]) / (b[1] - a[1]):
+            inside = not inside
+        d = (b[0] - a[0], b[1] - a[1])
+        t = max(0.0, min(1.0, ((p[0] - a[0]) * d[0] + (p[1] - a[1]) * d[1])
+                         / max(d[0] ** 2 + d[1] ** 2, 1e-300)))
+        if math.dist(p, (a[0] + t * d[0], a[1] + t * d[1])) <= JOIN:
+            return True
+    return inside
+
+
+def _apex(poly: list[Vec], far: Vec, near: Vec, size: float) -> Vec | None:
+    """The corner of ``poly`` a shaft from ``far`` to ``near`` points to: ahead of the
+    other corners along it by a quarter of the head at least, on its line, and no nearer
+    the shaft's start than its end is; None if no corner is."""
+    length = math.dist(far, near)
+    if length == 0.0:
+        return None
+    u = ((near[0] - far[0]) / length, (near[1] - far[1]) / length)
+    ahead = sorted(((p[0] - far[0]) * u[0] + (p[1] - far[1]) * u[1], p) for p in poly)
+    (first, apex), (second, _) = ahead[-1], ahead[-2]
+    aside = abs((apex[0] - far[0]) * u[1] - (apex[1] - far[1]) * u[0])
+    if first - second < 0.25 * size or aside > max(JOIN, 0.15 * size) or \
+            first < length - JOIN or ahead[0][0] <= 0.0:
+        return None
+    return apex
+
+
+def _v_tip(place: _Place, places: list[_Place]) -> None:
+    """Mark ``place`` a tip if two short strokes leave it swept back on either side of a
+    longer one (an arrowhead drawn as a V), and the wings' far ends parts of it."""
+    if not 3 <= len(place.leaving) <= _CROWD:
+        return
+    for far, length, _ in place.leaving:
+        shaft = math.atan2(far[1] - place.at[1], far[0] - place.at[0])
+        sides: dict[int, list[int]] = {1: [], -1: []}
+        for wing_far, wing, k in place.leaving:
+            if wing > HEAD or wing * 1.5 > length:
+                continue
+            off = math.remainder(math.atan2(wing_far[1] - place.at[1],
+                                            wing_far[0] - place.at[0]) - shaft, math.tau)
+            if _WING[0] <= abs(off) <= _WING[1]:
+                sides[1 if off > 0 else -1].append(k)
+        if sides[1] and sides[-1]:
+            place.tip = True
+            for k in sides[1] + sides[-1]:
+                if len(places[k].leaving) == 1:
+                    places[k].part = True
+            return
