@@ -11,7 +11,8 @@ untransformed). A compressed file is unpacked no further than :data:`MAX_BYTES`.
 label that lands beyond any paper, or at no finite place, is left out and said in
 :attr:`Drawing.notes`: nothing that is not a finite number on a sheet reaches a grade.
 
-**Labels.** A label is where its first letter stands, with that letter's size. A subscript
+**Labels.** A label is where its first letter stands (a text anchored at its middle or
+end is moved back by about half or all its width), with that letter's size. A subscript
 or a prime written as a text of its own beside its letter (as GeoGebra writes ``a_4``, or a
 student types it) joins the letter's label as written, ``a`` ``4`` ``′`` reading ``a4′``:
 a text that starts within :data:`NEAR_END` of a label's end and is either smaller than it
@@ -346,6 +347,8 @@ def _label(e, kept: Kept) -> Label | None:
     """The label a reduced ``<text>`` shows, its size carried through its transform;
     None if it stands at no place on a sheet."""
     x, y = e.x + (e.dx or 0.0), e.y + (e.dy or 0.0)
+    if kept.anchor:                          # centred or ended there: back to its start
+        x -= kept.anchor * advance(kept.words.strip()) * (kept.size or MEDIUM)
     scale = 1.0
     if e.transform is not None:
         x, y = e.transform.point_in_matrix_space((x, y))

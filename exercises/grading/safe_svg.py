@@ -80,14 +80,16 @@ _NUMBER = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?")
 
 @dataclass(frozen=True)
 class Kept:
-    """An element passed on to svgelements: its tag, its line, a text's words and its
-    first letter's font size (user units), and whether a marker starts or ends a shape."""
+    """An element passed on to svgelements: its tag, its line, a text's words, its first
+    letter's font size (user units) and where its x stands along its letters (0 at their
+    start, 1 at their end), and whether a marker starts or ends a shape."""
 
     tag: str
     line: int
     words: str = ""
     size: float | None = None
     marked: tuple[bool, bool] = (False, False)
+    anchor: float = 0.0
 
     def where(self) -> str:
         """The element as a message names it: ``<circle> at line 4``."""
@@ -195,14 +197,15 @@ class _Reducer:
             return None
         index = len(self.out.kept)
         if kind == "text":
-            size = here.size
+            letter = here
             for span in first_letter(e, space)[1:]:
-                size = inherit(span, Inherited(size)).size
+                letter = inherit(span, letter)
             for inner in e.iter():
                 if _space(inner.tag) == _XINCLUDE:
                     raise self.fail(inner, "pulls in another file (XInclude); a drawing "
                                            "must hold all it shows")
-            kept = Kept(tag, self.lines.get(e, 0), "".join(e.itertext()), size)
+            kept = Kept(tag, self.lines.get(e, 0), "".join(e.itertext()), letter.size,
+                        anchor=letter.anchor)
         else:
             kept = Kept(tag, self.lines.get(e, 0), marked=here.marked)
         self.out.kept.append(kept)

@@ -25,6 +25,7 @@ _KEYWORDS = {"xx-small": 9.0, "x-small": 10.0, "small": 13.0, "medium": 16.0, "l
              "x-large": 24.0, "xx-large": 32.0}
 _SIZE = re.compile(r"\s*([+]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?)\s*(px|pt|pc|mm|cm|in|em|ex|%)?"
                    r"\s*(?:!important)?\s*")
+_ANCHORS = {"start": 0.0, "middle": 0.5, "end": 1.0}
 _STYLE = 10_000
 """The longest style attribute read (characters): a style states a few dozen properties."""
 _LARGEST = 1e12
@@ -34,13 +35,15 @@ _LARGEST = 1e12
 @dataclass(frozen=True, slots=True)
 class Inherited:
     """What an element passes on to those it holds: its font size (user units; None where
-    none is said), whether its fill and its stroke are said to be none, and whether a
-    marker starts or ends its strokes."""
+    none is said), whether its fill and its stroke are said to be none, whether a marker
+    starts or ends its strokes, and where a text's x stands along its letters (0 at their
+    start, as ``text-anchor: start``; 0.5 ``middle``; 1 ``end``)."""
 
     size: float | None = None
     no_fill: bool = False
     no_stroke: bool = False
     marked: tuple[bool, bool] = (False, False)
+    anchor: float = 0.0
 
     @property
     def unseen(self) -> bool:
@@ -108,6 +111,9 @@ def inherit(e: ET.Element, outer: Inherited) -> Inherited:
         paint = _property(e, name)
         if paint:
             out = replace(out, **{f"no_{name}": paint.lower() == "none"})
+    anchor = _property(e, "text-anchor")
+    if anchor:
+        out = replace(out, anchor=_ANCHORS.get(anchor.lower(), out.anchor))
     every = _property(e, "marker")
     start, end = (_marker(every, m) for m in out.marked)
     start = _marker(_property(e, "marker-start"), start)
