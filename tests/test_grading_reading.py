@@ -333,7 +333,8 @@ def test_a_text_is_joined_to_a_label_only_as_its_subscript_or_prime(base, follow
 
 
 # ----- an arrow's tip, however it is turned or drawn ----------------------------------------------
-STYLES = ("geogebra", "libreoffice", "cad-solid", "cad-open", "two-lines", "marker", "concave")
+STYLES = ("geogebra", "libreoffice", "cad-solid", "cad-open", "two-lines", "marker", "concave",
+          "line-arrow")
 
 
 def _arrow(style: str, tip, turn: float, shaft: float, head: float, half: float):
@@ -370,6 +371,13 @@ def _arrow(style: str, tip, turn: float, shaft: float, head: float, half: float)
     elif style == "marker":                    # Inkscape: the head is a marker, not drawn
         svg = f'<path style="stroke:#000;marker-end:url(#m)" d="M {f(far)} {f(tip)}"/>'
         parts = []
+    elif style == "line-arrow":                # LibreOffice's "Line Arrow": a V outlined
+        back = 0.3 * head
+        inner = [at(head + back, half), at(back), at(head + back, -half)]
+        svg = line.format(f(far), f(at(back))) + \
+            f'<path d="M {f(c1)} L {f(tip)} L {f(c2)} L {f(inner[2])} L {f(inner[1])} L ' \
+            f'{f(inner[0])} Z"/>'
+        parts = [c1, c2, *inner]
     else:                                      # a concave head: apex, wing, notch, wing
         notch = at(0.6 * head)
         svg = line.format(f(far), f(notch)) + \
@@ -399,3 +407,19 @@ def test_any_turned_arrows_tip_is_found_and_named(style, x, y, turn, shaft, head
         corner = parts[0]
         d.labels = [Label("b", (corner[0] + 0.3, corner[1] + 0.3 + 0.8 * 3.0), 3.0)]
         assert near(match(d, lambda t: ("p", t))["p", "b"], (x, y), 1e-3)
+
+
+def test_a_round_polygon_is_a_dot_and_a_small_polygon_keeps_its_corners():
+    """A dot drawn as a 16-gon (as a CAD program plots a circle) is one dot at its middle; a
+    polygon drawn as one closed stroke, even one smaller than an arrowhead but with no
+    sharp corner and no shaft, keeps every corner as a junction."""
+    from tarsim.exercises.grading.drawing import Drawing, Outline
+
+    gon = tuple((100 + math.cos(k * math.pi / 8), 50 + math.sin(k * math.pi / 8))
+                for k in range(16))
+    quad = ((0.0, 0.0), (10.0, 0.0), (12.0, 8.0), (3.0, 9.0))
+    triangle = ((30.0, 0.0), (36.0, 0.0), (33.0, 4.0))        # angles 53°, 53°, 74°
+    found = marks(Drawing(outlines=[Outline(gon, closed=True), Outline(quad, closed=True),
+                                    Outline(triangle, closed=True)]))
+    assert {(m.at, m.kind) for m in found} == {
+        ((100.0, 50.0), Kind.DOT), *((p, Kind.JUNCTION) for p in quad + triangle)}

@@ -9,8 +9,8 @@ points a label names.
 How each :class:`Kind` is told, sizes in paper mm:
 
 - **dot**: a circle; a closed curved stroke (a dot LibreOffice or GeoGebra draws in
-  Béziers or arcs) at its middle; a closed polygon of six corners or more within
-  :data:`HEAD`.
+  Béziers or arcs) at its middle; a round closed polygon of six corners or more, no wider
+  than a block, that no shaft runs into.
 - **tip**: an arrowhead's apex. A closed polygon within :data:`HEAD` that a longer stroke
   (its shaft) runs into, the apex on the shaft's line and ahead of its other corners; a
   triangle within :data:`HEAD` with one clearly sharpest corner, alone; two short strokes
@@ -55,8 +55,8 @@ _WING = (math.radians(5.0), math.radians(60.0))
 """How far a V's wing sweeps back off its shaft's line."""
 
 _FEW = 12
-"""The most corners a closed polygon smaller than a block may have and be told an
-arrowhead, a block or a polygon; one of more is a dot."""
+"""The most corners a closed polygon smaller than a block may have and be tried as an
+arrowhead or a block; one of more is a dot if round, else a polygon."""
 
 _CROWD = 12
 """The most strokes a place may join and be an arrow's V or a block's corner: more meet
@@ -120,28 +120,29 @@ def marks(drawing: Drawing) -> list[Mark]:
             out.append(Mark(_middle(corners), Kind.DOT))
             continue
         xs, ys = [p[0] for p in corners], [p[1] for p in corners]
-        if math.hypot(max(xs) - min(xs), max(ys) - min(ys)) > 2.0 * BLOCK:
+        if math.hypot(max(xs) - min(xs), max(ys) - min(ys)) > 2.0 * BLOCK or \
+                len(corners) > _FEW and not _round(corners):
             web.stroke(corners, True)        # a polygon of the drawing: its corners meet
             continue
-        if len(corners) > _FEW:              # a small polygon of many corners: a dot
+        if len(corners) > _FEW:              # a small round polygon of many corners
             out.append(Mark(_middle(corners), Kind.DOT))
             continue
         poly = _simplified(corners)
         sides = [math.dist(a, b) for a, b in zip(poly, poly[1:] + poly[:1])]
         if len(poly) == 4 and max(sides) <= BLOCK and _square(poly):
             out.append(Mark(_middle(poly), Kind.BLOCK))
-        elif _extent(poly) <= HEAD and len(poly) >= 6:
-            out.append(Mark(_middle(poly), Kind.DOT))
-        elif _extent(poly) <= HEAD and len(poly) >= 3:
+        elif _extent(poly) <= HEAD:
             heads.append(poly)
         else:
             web.stroke(poly, True)
     for poly in heads:
         apex = web.head(poly)
-        if apex is None:
-            web.stroke(poly, True)
-        else:
+        if apex is not None:
             out.append(Mark(apex, Kind.TIP))
+        elif len(poly) >= 6 and _round(poly):
+            out.append(Mark(_middle(poly), Kind.DOT))
+        else:
+            web.stroke(poly, True)
     out += web.marks()
     return _distinct(out)
 
@@ -210,6 +211,14 @@ def _square(poly: list[Vec]) -> bool:
 
 def _extent(points: list[Vec]) -> float:
     return max(math.dist(p, q) for p in points for q in points)
+
+
+def _round(points: list[Vec]) -> bool:
+    """Whether ``points`` lie round their middle, none half as far again as another (a
+    circle drawn as a polygon)."""
+    c = _middle(points)
+    r = [math.dist(c, p) for p in points]
+    return min(r) > 0.0 and max(r) <= 1.5 * min(r)
 
 
 def _middle(points: list[Vec]) -> Vec:
@@ -371,8 +380,9 @@ def _within(p: Vec, poly: list[Vec]) -> bool:
 
 def _apex(poly: list[Vec], far: Vec, near: Vec, size: float) -> Vec | None:
     """The corner of ``poly`` a shaft from ``far`` to ``near`` points to: ahead of the
-    other corners along it by a quarter of the head at least, on its line, and no nearer
-    the shaft's start than its end is; None if no corner is."""
+    other corners along it by a tenth of the head at least (an outlined V's inner corner
+    stands a line's width behind), on its line, and no nearer the shaft's start than its
+    end is; None if no corner is."""
     length = math.dist(far, near)
     if length == 0.0:
         return None
@@ -380,7 +390,7 @@ def _apex(poly: list[Vec], far: Vec, near: Vec, size: float) -> Vec | None:
     ahead = sorted(((p[0] - far[0]) * u[0] + (p[1] - far[1]) * u[1], p) for p in poly)
     (first, apex), (second, _) = ahead[-1], ahead[-2]
     aside = abs((apex[0] - far[0]) * u[1] - (apex[1] - far[1]) * u[0])
-    if first - second < 0.25 * size or aside > max(JOIN, 0.15 * size) or \
+    if first - second < 0.1 * size or aside > max(JOIN, 0.15 * size) or \
             first < length - JOIN or ahead[0][0] <= 0.0:
         return None
     return apex
