@@ -276,7 +276,7 @@ def _left_out(work: Work, refused: list[tuple[Answer, IllConditioned]], found: l
     """
     for answer, e in refused:
         why = (phrase("weak.reference") if e.by_reference
-               else _weakness(work.assembly, answer.refs or ()))
+               else _weakness(work.assembly, answer.refs or (), answer.conditioning))
         said = phrase("note.unvouched", quantity=e.name, method=Word(method_words(e.method)),
                       why=why, other=Word(method_words(found[0].method)) if found else None)
         if found:
@@ -301,10 +301,15 @@ def _left_out(work: Work, refused: list[tuple[Answer, IllConditioned]], found: l
             by_reference=e.by_reference)
 
 
-def _weakness(record, refs) -> Phrase:
-    """What lost a construction its digits, in words: its weakest act."""
+def _weakness(record, refs, conditioning: float) -> Phrase:
+    """What lost a construction its digits, in words: its weakest act, or the shortness of
+    its vectors where the answer's ``conditioning`` is far below its acts' (see
+    :func:`~.velocity_drawing.drawn_share`)."""
     if not refs:
         return phrase("weak.act")
+    chain = min(record[r].conditioning for r in refs)
+    if conditioning < 1e-2 * chain:
+        return phrase("weak.short", share=Number(conditioning / chain, ".1e"))
     act = weakest_act(record, refs)
     inherited = min([1.0] + [record[r].conditioning for r in act.inputs])
     own = act.conditioning / inherited if inherited > 0.0 else 0.0

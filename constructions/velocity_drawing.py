@@ -118,5 +118,21 @@ def answer(work, ask, result: VelocityResult) -> Answer:
     said = f"V_{ask.point} by {method_words(result.method)}"
     spec = FigureSpec(f"V_{ask.point}-{result.method}", said, said, velocity_scale=result.scale,
                       velocity_stated=work.scales.velocity)
-    return Answer(ask, vector_value(*result.value(c)), c[result.vector].conditioning,
+    return Answer(ask, vector_value(*result.value(c)),
+                  c[result.vector].conditioning * drawn_share(c, result.scale),
                   result.method, refs=result.answer, figures=(spec,))
+
+
+def drawn_share(asm, scale: float) -> float:
+    """The input's vector, drawn at ``scale`` (drawing metres per m/s), as a share of the
+    mechanism it is drawn on (at most 1): every vector's tip is placed to the rounding of
+    the drawing's coordinates, so one drawn a trillionth of the mechanism long keeps only
+    that share of its digits, however cleanly its lines cross.
+
+    >>> from types import SimpleNamespace as N
+    >>> asm = N(size=2.0, mechanism=N(input_speed=1e-13))
+    >>> drawn_share(asm, 10.0)
+    5e-13
+    """
+    length = abs(asm.mechanism.input_speed) * scale
+    return 1.0 if length == 0.0 else min(1.0, length / asm.size)

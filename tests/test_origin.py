@@ -260,6 +260,22 @@ def test_a_construction_no_method_can_vouch_for_is_refused_offering_another():
     assert "\n" not in line and len(line) < 250
 
 
+def test_vectors_drawn_within_the_rounding_of_their_place_are_refused():
+    # At t = 1e-25 s with α = −1e25 the crank's ω = 1 − αt cancels to 2e-16 rad/s: its
+    # vectors are drawn some 1e-14 of the 3 km mechanism long, below the rounding of the
+    # points they stand on, so V_B by components (once "check FAILED" by 2.2e-3) cannot be
+    # vouched for, and says why: the shortness of its vectors, not its crossings.
+    path = Path(__file__).parent / "data" / "edge" / "input-at-rest-by-cancellation.toml"
+    with pytest.raises(IllConditioned) as caught:
+        tarsim.solve(tarsim.load(path))
+    line = str(caught.value)
+    assert line.startswith("V_B by components cannot be vouched for at θ2 = 90°: its vectors "
+                           "are drawn ")
+    share = float(line.split("are drawn ")[1].split(" ")[0])
+    assert 1e-15 < share < 1e-12
+    assert line.endswith('add "radius-rotation" to [ask] methods')
+
+
 @pytest.mark.parametrize("own, rounding, err, verdict", [
     (1e-9, 0.0, 5e-10, 1e-9),             # a well-conditioned construction: its own tolerance
     (1e-3, 0.0, 5e-10, CEILING),          # ill-conditioned but agreeing: held to the ceiling

@@ -38,6 +38,7 @@ PHRASES: dict[str, str] = {
     "weak.line_arc": "its line all but touches its arc",
     "weak.points": "it draws a line through two points all but together",
     "weak.act": "its construction is ill-conditioned",
+    "weak.short": "its vectors are drawn {share} of the mechanism long",
     "note.given_rate": "{what} = {value} is given: the velocity polygon drawn at ω{link} = "
                        "1 rad/s gives {target} = {per}, so ω{link} = {omega}{sense}{second}.",
     "note.given_alpha": "; the acceleration polygons drawn at that ω with α{link} = 0 and "
