@@ -156,6 +156,7 @@ WORDS: dict[str, str] = {
     "correct": "درست", "wrong magnitude": "اندازهٔ نادرست", "wrong direction": "راستای نادرست",
     "wrong sense": "جهت نادرست", "wrong position": "جای نادرست", "missing": "جاافتاده",
     "extra": "اضافه", "{source}: score {score} %": "{source}: نمره {score}٪",
+    "reversed Coriolis": "کوریولیس وارونه", "swapped": "برچسب‌های جابه‌جا",
 }
 """Small words and headings as Persian says them."""
 
@@ -171,6 +172,7 @@ PHRASES: dict[str, str] = {
     "weak.line_arc": "خط آن تقریباً بر کمانش مماس است",
     "weak.points": "خطی از دو نقطهٔ تقریباً منطبق می\u200cگذرد",
     "weak.act": "ترسیم آن بدوضع است",
+    "weak.short": "بردارهای آن به درازای {share} اندازهٔ مکانیزم رسم می\u200cشوند",
     "note.given_rate": "{what} = {value} داده شده است: چندضلعی سرعتی که با ω{link} = ۱ رادیان "
                        "بر ثانیه رسم شود {target} = {per} می\u200cدهد، پس ω{link} = "
                        "{omega}{sense}{second}.",
