@@ -335,7 +335,8 @@ def _geometry(reduced: Reduced, name: str) -> Drawing:
             for o in strokes:
                 ring = o.corners + o.corners[:1] if o.closed else o.corners
                 out.segments += [(a, b) for a, b in zip(ring, ring[1:]) if a != b]
-    out.labels = _joined(labels)
+    # A text drawn again where it stands (GeoGebra's halo behind a label) is one label.
+    out.labels = _joined(list(dict.fromkeys(labels)))
     return out
 
 

@@ -13,7 +13,7 @@ How each :class:`Kind` is told, sizes in paper mm:
   than a block, that no shaft runs into.
 - **tip**: an arrowhead's apex. A closed polygon within :data:`HEAD` that a longer stroke
   (its shaft) runs into, the apex on the shaft's line and ahead of its other corners; a
-  triangle within :data:`HEAD` with one clearly sharpest corner, alone; two short strokes
+  triangle within :data:`_ALONE` with one clearly sharpest corner, alone; two short strokes
   (a V's wings) meeting where a shaft ends and swept back along it; a stroke's end that
   carries a marker.
 - **block**: the middle of a closed quadrilateral of square corners, no side longer than
@@ -41,9 +41,13 @@ Vec = tuple[float, float]
 JOIN = 0.25
 """Ends within this (mm, half a 0.5 mm pen's line) meet."""
 
-HEAD = 8.0
-"""The largest an arrowhead, a V's wing or a dot drawn as a polygon is (mm): a drafted
-arrowhead is 3–5 mm long, GeoGebra's 17 px."""
+HEAD = 12.0
+"""The largest an arrowhead or a V's wing is (mm): a drafted arrowhead is 3–5 mm long,
+GeoGebra's 17 px (4.5 mm) and, for its thickest vectors, 39 px (10.3 mm)."""
+
+_ALONE = 6.0
+"""The largest a triangle with no shaft is told an arrowhead by its one sharp corner (mm):
+a polygon of a drawing is larger."""
 
 BLOCK = 20.0
 """The longest side of a slider block (mm)."""
@@ -85,10 +89,13 @@ _PREFERRED = tuple(Kind)
 
 @dataclass(frozen=True, slots=True)
 class Mark:
-    """A point a label may name, and what it is."""
+    """A point a label may name, what it is, and how many labels of one kind may name it:
+    a tip one for each stroke ending there (two vectors drawn to one point are two tips),
+    any other mark one (before marks at one place are one, the strokes each ends)."""
 
     at: Vec
     kind: Kind
+    takes: int = 1
 
 
 def marks(drawing: Drawing) -> list[Mark]:
@@ -106,7 +113,7 @@ def marks(drawing: Drawing) -> list[Mark]:
     >>> [(m.at, str(m.kind)) for m in marks(d)]
     [((10.0, 0.0), 'tip'), ((0.0, 0.0), 'end'), ((11.6, 0.0), 'end'), ((11.6, 20.0), 'end')]
     """
-    out = [Mark(c, Kind.DOT) for c, _ in drawing.circles]
+    out = [Mark(c, Kind.DOT, 0) for c, _ in drawing.circles]
     web = _Web()
     heads = []
     # A drawing made of segments alone (built by hand, not read) is one stroke a segment.
@@ -117,7 +124,7 @@ def marks(drawing: Drawing) -> list[Mark]:
             web.stroke(corners, False, o.marked)
             continue
         if o.curved:
-            out.append(Mark(_middle(corners), Kind.DOT))
+            out.append(Mark(_middle(corners), Kind.DOT, 0))
             continue
         xs, ys = [p[0] for p in corners], [p[1] for p in corners]
         if math.hypot(max(xs) - min(xs), max(ys) - min(ys)) > 2.0 * BLOCK or \
@@ -125,22 +132,22 @@ def marks(drawing: Drawing) -> list[Mark]:
             web.stroke(corners, True)        # a polygon of the drawing: its corners meet
             continue
         if len(corners) > _FEW:              # a small round polygon of many corners
-            out.append(Mark(_middle(corners), Kind.DOT))
+            out.append(Mark(_middle(corners), Kind.DOT, 0))
             continue
         poly = _simplified(corners)
         sides = [math.dist(a, b) for a, b in zip(poly, poly[1:] + poly[:1])]
         if len(poly) == 4 and max(sides) <= BLOCK and _square(poly):
-            out.append(Mark(_middle(poly), Kind.BLOCK))
+            out.append(Mark(_middle(poly), Kind.BLOCK, 0))
         elif _extent(poly) <= HEAD:
             heads.append(poly)
         else:
             web.stroke(poly, True)
     for poly in heads:
-        apex = web.head(poly)
-        if apex is not None:
-            out.append(Mark(apex, Kind.TIP))
+        tip = web.head(poly)
+        if tip is not None:
+            out.append(tip)
         elif len(poly) >= 6 and _round(poly):
-            out.append(Mark(_middle(poly), Kind.DOT))
+            out.append(Mark(_middle(poly), Kind.DOT, 0))
         else:
             web.stroke(poly, True)
     out += web.marks()
@@ -228,20 +235,26 @@ def _middle(points: list[Vec]) -> Vec:
 
 def _distinct(found: list[Mark]) -> list[Mark]:
     """``found``, marks within a micrometre of one another one mark: the preferred kind,
-    where the first of them stands (found on a grid of micrometre cells)."""
+    where the first of them stands (found on a grid of micrometre cells). A tip there
+    takes a label for each stroke ending at it; any other mark, one."""
     same = 1e-6
     cells: dict[tuple[int, int], list[int]] = {}
-    out: list[Mark] = []
+    groups: list[list[Mark]] = []
     for m in found:
         kx, ky = math.floor(m.at[0] / same), math.floor(m.at[1] / same)
         twin = next((k for dx in (-1, 0, 1) for dy in (-1, 0, 1)
                      for k in cells.get((kx + dx, ky + dy), ())
-                     if math.dist(out[k].at, m.at) < same), None)
+                     if math.dist(groups[k][0].at, m.at) < same), None)
         if twin is None:
-            cells.setdefault((kx, ky), []).append(len(out))
-            out.append(m)
-        elif _PREFERRED.index(m.kind) < _PREFERRED.index(out[twin].kind):
-            out[twin] = Mark(out[twin].at, m.kind)
+            cells.setdefault((kx, ky), []).append(len(groups))
+            groups.append([m])
+        else:
+            groups[twin].append(m)
+    out = []
+    for group in groups:
+        kind = min((m.kind for m in group), key=_PREFERRED.index)
+        tip = any(m.kind is Kind.TIP for m in group)
+        out.append(Mark(group[0].at, kind, max(1, sum(m.takes for m in group)) if tip else 1))
     return out
 
 
@@ -256,6 +269,7 @@ class _Place:
     marked: bool = False
     part: bool = False
     tip: bool = False
+    wings: int = 0
 
 
 class _Web:
@@ -294,11 +308,12 @@ class _Web:
             self.places[ids[0]].marked |= marked[0]
             self.places[ids[-1]].marked |= marked[1]
 
-    def head(self, poly: list[Vec]) -> Vec | None:
-        """The apex of the arrowhead ``poly`` is, if it is one: the corner ahead along the
-        shaft that runs into it (a stroke longer than the head, ending in or on it), on the
-        shaft's line; failing a shaft, a triangle's one clearly sharpest corner. The
-        shaft's end is then part of the arrow."""
+    def head(self, poly: list[Vec]) -> Mark | None:
+        """The tip at the apex of the arrowhead ``poly`` is, if it is one: the corner ahead
+        along the shaft that runs into it (a stroke longer than the head, ending in or on
+        it), on the shaft's line; failing a shaft, a triangle's one clearly sharpest
+        corner. The shaft's end is then part of the arrow; where it reaches the apex, the
+        tip takes a label for each stroke ending there with it."""
         size = _extent(poly)
         xs, ys = [p[0] for p in poly], [p[1] for p in poly]
         for cx in range(math.floor((min(xs) - JOIN) / 2.0), math.floor((max(xs) + JOIN) / 2.0)
@@ -313,13 +328,14 @@ class _Web:
                         apex = _apex(poly, far, q.at, size) if length >= size else None
                         if apex is not None:
                             q.part = True
-                            return apex
-        if len(poly) == 3:
+                            return Mark(apex, Kind.TIP, len(q.leaving)
+                                        if math.dist(q.at, apex) <= JOIN else 1)
+        if len(poly) == 3 and size <= _ALONE:
             angles = sorted((abs(math.pi - abs(_turn(poly[k - 1], poly[k], poly[(k + 1) % 3]))),
                              k) for k in range(3))
             if angles[0][0] <= math.radians(60.0) and \
                     angles[1][0] - angles[0][0] >= math.radians(15.0):
-                return poly[angles[0][1]]
+                return Mark(poly[angles[0][1]], Kind.TIP)
         return None
 
     def marks(self) -> list[Mark]:
@@ -330,11 +346,12 @@ class _Web:
             _v_tip(place, self.places)
         out += self._blocks()
         for place in self.places:
+            arriving = len(place.leaving) - place.wings
             if place.tip or place.marked:
-                out.append(Mark(place.at, Kind.TIP))
+                out.append(Mark(place.at, Kind.TIP, max(arriving, 1)))
             elif not place.part and place.leaving:
                 out.append(Mark(place.at, Kind.JUNCTION if len(place.leaving) > 1
-                                else Kind.END))
+                                else Kind.END, len(place.leaving)))
         return out
 
     def _blocks(self) -> list[Mark]:
@@ -356,7 +373,7 @@ class _Web:
                         if key in seen or not _square(poly):
                             continue
                         seen.add(key)
-                        out.append(Mark(_middle(poly), Kind.BLOCK))
+                        out.append(Mark(_middle(poly), Kind.BLOCK, 0))
                         for k in corners:
                             if len(self.places[k].leaving) == 2:
                                 self.places[k].part = True
@@ -412,7 +429,7 @@ def _v_tip(place: _Place, places: list[_Place]) -> None:
             if _WING[0] <= abs(off) <= _WING[1]:
                 sides[1 if off > 0 else -1].append(k)
         if sides[1] and sides[-1]:
-            place.tip = True
+            place.tip, place.wings = True, len(sides[1]) + len(sides[-1])
             for k in sides[1] + sides[-1]:
                 if len(places[k].leaving) == 1:
                     places[k].part = True

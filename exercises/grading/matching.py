@@ -36,8 +36,9 @@ def match(drawing: Drawing, read: Callable[[str], object | None],
     """Each label's point, the label read by ``read`` (None for a label that names no
     point): of the points a label may name (:func:`.marks.marks`: dots, arrows' tips,
     junctions, blocks' middles, strokes' ends) within :data:`REACH` of its letters (the
-    :data:`NEAREST` nearest), each point taken once by each kind of thing (a key's first
-    part), in the pairing whose costs add to the least (nearest pairs first, then any two
+    :data:`NEAREST` nearest), each point taken by each kind of thing (a key's first part)
+    once, or a tip once for each stroke ending there (:attr:`.marks.Mark.takes`), in the
+    pairing whose costs add to the least (nearest pairs first, then any two
     labels' points swapped while that lowers the sum). A pair costs its distance and the
     point's :data:`.marks.PENALTY`, so a bare stroke's end loses to a mark a little
     farther. The labels left with no point are added to ``unmatched``.
@@ -64,11 +65,12 @@ def match(drawing: Drawing, read: Callable[[str], object | None],
     cost = {i: {j: d + PENALTY[found[j].kind] for j, d in js.items()} for i, js in near.items()}
     pairs = sorted((c, i, j) for i, js in cost.items() for j, c in js.items())
     taken: dict[int, int] = {}
-    holder: dict[tuple[object, int], int] = {}          # (kind, point): the label on it
+    holders: dict[tuple[object, int], list[int]] = {}   # (kind, point): the labels on it
     for _, i, j in pairs:
-        if i not in taken and (kinds[i], j) not in holder:
+        on = holders.setdefault((kinds[i], j), [])
+        if i not in taken and len(on) < found[j].takes:
             taken[i] = j
-            holder[kinds[i], j] = i
+            on.append(i)
     order = {i: n for n, i in enumerate(taken)}
     improved = True
     while improved:
@@ -76,14 +78,15 @@ def match(drawing: Drawing, read: Callable[[str], object | None],
         for i in list(taken):
             # Only a label holding one of i's points can be swapped with i: visit those, in
             # the order the labels were paired.
-            mates = sorted({m for j in cost[i] if (m := holder.get((kinds[i], j))) is not None
-                            and m > i}, key=order.get)
+            mates = sorted({m for j in cost[i] for m in holders.get((kinds[i], j), ())
+                            if m > i}, key=order.get)
             for k in mates:
                 a, b = taken[i], taken[k]
-                if b in cost[i] and a in cost[k] and \
+                if a != b and b in cost[i] and a in cost[k] and \
                         cost[i][b] + cost[k][a] < cost[i][a] + cost[k][b] - 1e-9:
                     taken[i], taken[k] = b, a
-                    holder[kinds[i], b], holder[kinds[i], a] = i, k
+                    holders[kinds[i], a][holders[kinds[i], a].index(i)] = k
+                    holders[kinds[i], b][holders[kinds[i], b].index(k)] = i
                     improved = True
     out: dict[object, Vec] = {}
     for i, j in taken.items():

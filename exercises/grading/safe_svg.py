@@ -123,7 +123,7 @@ def reduce_svg(data: bytes, name: str) -> Reduced:
     >>> r.data.decode().split("><")[1]
     'line tarsim-n="1" x1="0" y1="0" x2="3" y2="4" /'
     >>> r.kept[1]
-    Kept(tag='line', line=1, words='', size=None, marked=(False, False))
+    Kept(tag='line', line=1, words='', size=None, marked=(False, False), anchor=0.0)
     """
     root, lines = parse_xml(data, name)
     if _local(root.tag) != "svg":
