@@ -44,7 +44,7 @@ def polygon_of(sol, kind: str):
 
 def drawing(sol, style: Style) -> str:
     """The SVG of the polygon drawn in ``style``."""
-    tips, cor = polygon_of(sol, style.kind)
+    tips, _ = polygon_of(sol, style.kind)
     biggest = max(math.hypot(*v) for v in tips.values())
     per_cm = (sol.work.scales.velocity_polygon if style.kind == "v"
               else sol.work.scales.acceleration_polygon)
@@ -60,11 +60,10 @@ def drawing(sol, style: Style) -> str:
         c, s = math.cos(turn), math.sin(turn)
         return (pole[0] + c * x - s * y, pole[1] + s * x + c * y)
 
+    if style.reversed_coriolis:
+        tips = {**tips, **_reversed_coriolis(sol, style.reversed_coriolis)}
     pts = {}
     for name, v in tips.items():
-        if style.reversed_coriolis and name in _on_slot(style.reversed_coriolis, tips):
-            c = cor[style.reversed_coriolis]
-            v = (v[0] - 2 * c[0], v[1] - 2 * c[1])
         p = place(v)
         dx, dy = style.moved.get(name, (0.0, 0.0))
         pts[name] = (p[0] + dx, p[1] + dy)
@@ -87,10 +86,17 @@ def drawing(sol, style: Style) -> str:
     return _page(body, style.writer)
 
 
-def _on_slot(point: str, tips) -> list[str]:
-    """The tips a reversed Coriolis component at ``point`` moves: the point's own image on
-    the slotted link (drawn through it) and the point itself."""
-    return [n for n in tips if n.rstrip("0123456789") == point and n != point] or [point]
+def _reversed_coriolis(sol, point: str) -> dict[str, tuple[float, float]]:
+    """The acceleration polygon's tips as a student draws them with the Coriolis component at
+    ``point`` reversed: the loop equations solved with its sign flipped
+    (tests/loop_kinematics.py, not tarsim's construction)."""
+    from tests.loop_kinematics import read_exercise, solve
+
+    ex = read_exercise(sol.exercise.id)
+    angle = sol.work.mechanism.drive.angle
+    position = min(range(len(ex.angles)), key=lambda k: abs(math.remainder(
+        ex.angles[k] - angle, 2 * math.pi)))
+    return solve(ex, position, coriolis=(point,)).acceleration
 
 
 def _vector(a, b, writer: str) -> str:

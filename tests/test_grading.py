@@ -41,19 +41,34 @@ def graded(tmp_path, style: Style, sol=RETURN, ex=SHAPER, position: int = 1):
 
 
 @pytest.mark.parametrize("style", [
-    Style(), Style(writer="geogebra"), Style(turn=90), Style(turn=-37, mirror=True),
-    Style(kind="a"), Style(kind="a", writer="geogebra", turn=180),
+    Style(), Style(writer="geogebra"), Style(scale=400.0),
+    Style(kind="a"), Style(kind="a", writer="geogebra"),
     Style(scale=200.0, stated="1 cm = 5 cm/s"),
-], ids=["inkscape", "geogebra", "turned-90", "turned-mirrored", "acceleration",
-        "acceleration-geogebra-turned", "stated-scale"])
+], ids=["inkscape", "geogebra", "own-scale", "acceleration",
+        "acceleration-geogebra", "stated-scale"])
 def test_tarsims_own_polygon_scores_full_marks(tmp_path, style):
     g, items = graded(tmp_path, style)
     prime = "′" if style.kind == "a" else ""
     assert {f"b{prime}", f"a4{prime}", f"b4{prime}"} <= set(items)
     assert [i.verdict for i in g.items] == ["correct"] * len(g.items), g.items
     assert g.score == 100.0
-    if style.stated:                      # a scale written on it: the input's tip is graded
-        assert items["a"].verdict == "correct"
+    assert items["a" + prime].verdict == "correct"       # the input's way, and with a
+                                                         # scale written, its length
+
+
+def test_a_polygon_drawn_the_other_way_round_has_its_input_wrong_and_the_rest_follow(
+        tmp_path):
+    """A polygon takes its directions from the space diagram, so one drawn the other way
+    round (every velocity reversed, as by ω2 taken the wrong way) has its input's tip wrong,
+    and each tip after it, rightly drawn from it, follows from that error: it scores
+    unless the exercise's follow-through is off."""
+    g, items = graded(tmp_path, Style(turn=180))
+    assert items["a"].verdict == "wrong sense"
+    others = [i for i in g.items if i.name != "a"]
+    assert others and {i.verdict for i in others} == {"follows from an earlier error"}
+    assert g.score == pytest.approx(100.0 * len(others) / len(g.items))
+    g.follow = False
+    assert g.score == 0.0
 
 
 @pytest.mark.parametrize("share, verdict", [(0.5, "correct"), (1.5, "wrong magnitude")])
@@ -78,15 +93,17 @@ def test_a_tip_moved_square_to_its_vector_is_the_wrong_direction(tmp_path):
 
 def test_a_reversed_coriolis_component_is_named(tmp_path):
     g, items = graded(tmp_path, Style(kind="a", reversed_coriolis="A"))
-    assert items["a4′"].verdict == "wrong sense"
+    assert items["a4′"].verdict == "reversed Coriolis"
     assert items["a4′"].message == ("Coriolis component at A drawn opposite: turn V_rel 90° "
                                     "in the sense of ω4")
-    assert items["b′"].verdict == "correct"
+    # b4′ is a4′'s image on link 4, and b′ is cut from it: drawn rightly from the wrong a4′.
+    assert items["b4′"].verdict == items["b′"].verdict == "follows from an earlier error"
+    assert items["a′"].verdict == "correct"
 
 
 def test_swapped_labels_are_said_to_be_swapped(tmp_path):
     _, items = graded(tmp_path, Style(swapped=("A4", "B4")))
-    assert items["a4"].verdict != "correct" and items["b4"].verdict != "correct"
+    assert items["a4"].verdict == items["b4"].verdict == "swapped"
     assert "the labels a4 and b4 are swapped" == items["a4"].message
 
 
@@ -95,11 +112,15 @@ def test_a_vector_left_out_is_missing(tmp_path):
     assert items["b"].verdict == "missing" and items["b"].found is None
 
 
-def test_a_scale_stated_wrongly_fails_every_tip(tmp_path):
-    """Drawn at 1 cm = 5 cm/s and labelled 1 cm = 4 cm/s: every vector 20 % short."""
+def test_a_scale_stated_wrongly_fails_the_input_and_the_rest_follow(tmp_path):
+    """Drawn at 1 cm = 5 cm/s and labelled 1 cm = 4 cm/s: the input's tip is 25 % off the
+    scale written, and every other tip, right at the scale it is drawn at, follows."""
     g, items = graded(tmp_path, Style(scale=200.0, stated="1 cm = 4 cm/s"))
-    assert all(i.verdict == "wrong magnitude" for i in g.items)
-    assert g.score == 0.0
+    assert items["a"].verdict == "wrong magnitude"
+    assert items["a"].message == "a is drawn at 1 cm = 0.05 m/s, not the 1 cm = 0.04 m/s " \
+                                 "written on the drawing"
+    assert {i.verdict for n, i in items.items() if n != "a"} == {
+        "follows from an earlier error"}
 
 
 def _pole(tmp_path):
@@ -133,7 +154,7 @@ def test_answers_in_a_table_are_graded_by_their_drafting_tolerance(tmp_path):
     assert said["V_B"] == "correct"                      # 0.5 %: a published answer passes
     assert said["omega4"] == "wrong sense"
     assert said["alpha4"] == "wrong magnitude"
-    assert said["nonsense"] == "extra"
+    assert "nonsense" not in said                        # said in a note, costs nothing
     assert said["A_B"] == "missing"
     assert _verdicts(tmp_path / "answers.csv", f"name,value\nV_B,{right}\n")["V_B"] == "correct"
 
@@ -177,12 +198,14 @@ def test_a_hostile_or_broken_drawing_is_refused_in_one_line(data, says):
     assert str(refused.value) == says
 
 
-def test_a_drawing_with_no_labels_grades_nothing_and_says_so(tmp_path):
+def test_a_drawing_with_nothing_to_grade_is_refused_in_one_line(tmp_path):
+    """0 of 0 correct is no grade: a drawing with no label tarsim can grade is refused."""
     path = tmp_path / "bare.svg"
     path.write_text('<svg xmlns="http://www.w3.org/2000/svg"><line x1="0" y1="0" x2="10" '
                     'y2="0"/></svg>', encoding="utf-8")
-    g = grade(SHAPER, path, 1)
-    assert g.items == [] and "no labels naming a pole, a tip or a centre" in g.notes[0]
+    with pytest.raises(InputError, match=r"^bare\.svg: nothing on it could be graded: no "
+                                         r"labels naming a pole, a tip or a centre"):
+        grade(SHAPER, path, 1)
 
 
 def test_a_class_grades_the_same_on_two_processes_and_writes_only_inside_its_folder(
@@ -211,7 +234,7 @@ def test_a_class_grades_the_same_on_two_processes_and_writes_only_inside_its_fol
     assert outs[1] == outs[2]
     rows = {r["drawing"]: r for r in csv.DictReader(outs[1].splitlines())}
     assert rows["student00.svg"]["score"] == "100.0"
-    assert rows["student04.svg"]["a4′"] == "wrong sense"
+    assert rows["student04.svg"]["a4′"] == "reversed Coriolis"
     assert "not an SVG drawing" in rows["broken.svg"]["note"]
     made = {p.relative_to(tmp_path).parts[0] for p in tmp_path.rglob("*")}
     assert made <= {"class", "graded1", "graded2"}
@@ -227,19 +250,19 @@ def test_grading_one_drawing_writes_its_json_and_overlay(tmp_path):
     result = CliRunner().invoke(cli, ["grade", "crank-shaper", str(path), "-o", str(out),
                                       "--position", "2"])
     assert result.exit_code == 0, result.output
-    assert "a4′   wrong sense" in result.output
+    assert "a4′   reversed Coriolis" in result.output
     data = json.loads((out / "grade.json").read_text(encoding="utf-8"))
-    assert data["score"] == pytest.approx(200 / 3, abs=0.01)
+    assert data["score"] == 75.0          # a4′ reversed; a′ right, b′ and b4′ follow from a4′
     item = next(i for i in data["items"] if i["name"] == "a4′")
     assert set(item) == {"name", "verdict", "expected", "found", "tolerance", "message"}
     svg = (out / "grade.svg").read_text(encoding="utf-8")
-    assert "a4′: wrong sense" in svg and "#1f5fbf" in svg
+    assert "a4′: reversed Coriolis" in svg and "#1f5fbf" in svg
     # In Persian the overlay's words are the catalogue's, the terminal and grade.json not.
     result = CliRunner().invoke(cli, ["grade", "crank-shaper", str(path), "-o", str(out),
                                       "--position", "2", "--lang", "fa"])
-    assert result.exit_code == 0 and "a4′   wrong sense" in result.output
+    assert result.exit_code == 0 and "a4′   reversed Coriolis" in result.output
     svg = (out / "grade.svg").read_text(encoding="utf-8")
-    assert "\u200ea4′\u200e: جهت نادرست" in svg and "ali.svg: نمره ۶۷٪" in svg
+    assert "\u200ea4′\u200e: کوریولیس وارونه" in svg and "ali.svg: نمره ۷۵٪" in svg
     assert 'direction="rtl"' in svg
     assert json.loads((out / "grade.json").read_text(encoding="utf-8"))["items"] == data["items"]
 
@@ -256,13 +279,23 @@ def test_a_bad_exercise_or_drawing_is_one_line_and_writes_nothing(tmp_path):
         assert not out.exists()
 
 
-def test_the_exercises_own_scale_is_held_to(tmp_path):
+def test_the_exercises_own_scale_is_held_to_only_where_it_is_required(tmp_path):
     """The crank-shaper states 3 cm = 18 cm/s: a polygon drawn a tenth bigger, saying
-    nothing, has every tip too long (the input's too, since the scale is given)."""
+    nothing, is at its own scale and right; where the exercise's [grading] requires its
+    scale, the input's tip is 10 % long and says so, and the rest follow from it."""
+    from dataclasses import replace
+
+    from tarsim.exercises.grading.drafting import DRAFTING
+
     stated = 10.0 / (60.0 * 1e-3)                   # 1 cm = 60 mm/s, paper mm per m/s
     g, items = graded(tmp_path, Style(scale=1.1 * stated))
-    assert {i.verdict for i in g.items} == {"wrong magnitude"}
-    assert "a" in items
+    assert {i.verdict for i in g.items} == {"correct"}
+    strict = replace(SHAPER, drafting=replace(DRAFTING, scale_required=True))
+    g, items = graded(tmp_path, Style(scale=1.1 * stated), ex=strict)
+    assert items["a"].verdict == "wrong magnitude"
+    assert items["a"].message.endswith("not the 1 cm = 0.06 m/s the exercise requires")
+    assert {i.verdict for n, i in items.items() if n != "a"} == {
+        "follows from an earlier error"}
 
 
 @pytest.mark.parametrize("name, far", [("four-bar", 0.08), ("whitworth", 0.08),
@@ -469,7 +502,7 @@ def test_centres_are_not_graded_from_points_that_lie_together(tmp_path):
     are not graded, and the note says why (a frame from them would divide by zero)."""
     from types import SimpleNamespace
 
-    from tarsim.exercises.grading.centres import grade_centres
+    from tarsim.exercises.grading.centres import grade_centres, space_frame
     from tarsim.exercises.grading.drawing import Drawing, Label
     from tarsim.exercises.grading.grade import Grade
 
@@ -482,7 +515,9 @@ def test_centres_are_not_graded_from_points_that_lie_together(tmp_path):
                 labels=[Label("A", (10.5, 9.5)), Label("A4", (20.5, 9.5)),
                         Label("I13", (40.5, 39.5))], source="s.svg")
     out = Grade("x", "s.svg")
-    grade_centres(out, sol, d)
+    frame, centres = space_frame(sol, d, out.notes)
+    assert frame is None and set(centres) == {"I13"}
+    grade_centres(out, sol, frame, centres)
     assert out.items == []
     assert out.notes == ["the space diagram's labelled points (A, A4) lie together in the "
                          "mechanism here: label two apart to grade its centres"]
@@ -600,3 +635,14 @@ def test_a_centre_in_a_table_is_where_the_exercises_file_puts_it(tmp_path):
     path.write_text("name,x,y\nI12,1.0,0.5\nI14,1.3,0.5\n", encoding="utf-8")
     said = {i.name: i.verdict for i in grade(ex, path, 0).items}
     assert (said["I12"], said["I14"]) == ("correct", "correct")
+
+
+@pytest.mark.parametrize("style", [Style(turn=90), Style(mirror=True)], ids=["turned", "mirrored"])
+def test_a_polygon_turned_or_mirrored_from_the_sheets_axes_is_wrong(tmp_path, style):
+    """With no space diagram on the sheet, its axes are the space diagram's: a polygon
+    turned a quarter or mirrored has its input's tip wrong, and more (a tip near the
+    mirror's axis may stay right)."""
+    g, items = graded(tmp_path, style)
+    assert items["a"].verdict == "wrong direction"
+    wrong = [i for i in g.items if i.verdict not in ("correct", "follows from an earlier error")]
+    assert len(wrong) >= 2, g.items

@@ -6,10 +6,12 @@ writes it, ``{"value": …}``, ``{"vector": [x, y]}``, ``{"point": [x, y]}``). C
 them. A vector given by its size is graded by its magnitude, by its components as a
 vector; a point (an instant centre) by its distance from where it belongs.
 
-**Tolerance.** A number read off a drawing is as good as the drawing: a polygon drawn
-:data:`LENGTH` long at the exercise's drafting precision (:class:`~.drafting.Drafting`),
-over the conditioning of the construction that found it; never tighter than its floor, the
-1 % published graphical answers keep to unless the exercise says otherwise.
+**Tolerance.** A number read off a drawing is as good as the drawing, and is held to the
+tolerance its vector would be on one (:func:`.drafting.tolerance`): V_B as the tip b drawn at
+the exercise's scale, ω4 as the relative velocity it is read from (ω4 times the span it is
+read over), a centre as the pen on the space diagram at the exercise's scale, each over the
+conditioning of the construction that found it. An answer to what is not asked is said in
+a note and costs nothing.
 """
 
 from __future__ import annotations
@@ -22,14 +24,11 @@ from pathlib import Path
 
 from ...constructions.errors import InputError
 from .grade import Grade, Item
-from .drafting import DRAFTING, Drafting
+from .drafting import DRAFTING, LENGTH, Drafting, exercise_scale, tolerance
 from .drawing import file_name
 from .matching import LEAST_CONDITIONING
 
 __all__ = ["grade_answers", "read_answers", "LENGTH"]
-
-LENGTH = 100.0
-"""Paper (mm) a polygon is taken to be drawn across: the ten centimetres a course asks."""
 
 _MAX_BYTES = 1_000_000
 
@@ -163,29 +162,27 @@ def grade_answers(exercise: str, sol, path: Path, drafting: Drafting = DRAFTING)
     out = Grade(exercise, file_name(path))
     # A student gives a centre where the exercise's file puts it.
     quantities = {n: q.in_file_axes(sol.exercise.mechanism) for n, q in sol.quantities.items()}
-    # A point is held beside the mechanism's own size, not its distance from the origin.
-    points = sol.work.kinematics.points.values()
-    reach = max([math.dist(p, r) for p in points for r in points] + [1e-300])
+    held = _Held(sol, drafting)
+    unasked = []
     for name, value in answers.items():
         q = quantities.get(name)
         if q is None:
-            out.items.append(Item(name, "extra", None, value, None,
-                                  f"{name} is not asked at this position"))
+            unasked.append(name)
             continue
+        tol = held.tolerance(name, q)
         pair = q.reference.get("vector") or q.reference.get("point")
         if isinstance(value, tuple):
             if pair is None:
                 out.items.append(Item(name, "wrong magnitude", q.reference.get("value"),
-                                      list(value), None, f"{name} is a number, not a pair"))
+                                      list(value), tol, f"{name} is a number, not a pair"))
                 continue
-            out.items.append(_pair_verdict(name, q, value, pair, rel_tol(q, drafting), reach))
+            out.items.append(_pair_verdict(name, q, value, pair, tol))
             continue
         if "value" not in q.reference:
-            out.items.append(Item(name, "extra", None, value, None,
-                                  f"{name} is a point: give it as [x, y]"))
+            out.items.append(Item(name, "wrong position", q.reference.get("point"), value,
+                                  tol, f"{name} is a point: give it as [x, y]"))
             continue
         expected = q.reference["value"]
-        tol = rel_tol(q, drafting) * max(abs(expected), 1e-300)
         item = Item(name, "correct", expected, value, tol)
         if abs(value - expected) > tol:
             signed = "vector" not in q.reference and name.startswith(("omega", "alpha", "T"))
@@ -200,27 +197,74 @@ def grade_answers(exercise: str, sol, path: Path, drafting: Drafting = DRAFTING)
                                     or "point" in quantities[name].reference):
             ref = quantities[name].reference
             out.items.append(Item(name, "missing", ref.get("value", ref.get("point")), None,
-                                  None, f"{name} is asked and not answered"))
+                                  held.tolerance(name, quantities[name]),
+                                  f"{name} is asked and not answered"))
+    if unasked:
+        out.notes.append(f"answers to what is not asked at this position, not graded: "
+                         f"{', '.join(unasked)[:200]}")
     return out
 
 
-def rel_tol(q, drafting: Drafting) -> float:
-    """The relative tolerance of a number read off a drawing of :data:`LENGTH`."""
-    return max(drafting.floor, (drafting.pen / LENGTH + math.tan(drafting.angle))
-               / max(q.conditioning, LEAST_CONDITIONING))
+class _Held:
+    """The drafting tolerance (SI) each quantity of a position is held to: its vector's on
+    the exercise's polygons, or a centre's on its space diagram (:func:`.drafting.
+    tolerance`)."""
+
+    def __init__(self, sol, drafting: Drafting):
+        from ...constructions.acceleration_polygon import drawn_acceleration_polygon
+        from ...constructions.velocity_polygon import drawn_velocity_polygon
+
+        work, self.drafting = sol.work, drafting
+        mech = work.mechanism
+        self.polygons, self.scales = {}, {}
+        for kind, make, per_cm in (
+                ("V", drawn_velocity_polygon, work.scales.velocity_polygon),
+                ("A", drawn_acceleration_polygon, work.scales.acceleration_polygon)):
+            if kind == "A" and not work.has("acceleration polygon"):
+                continue
+            poly = make(work)
+            stated = 10.0 / (per_cm * mech.units.metres) if per_cm else None
+            self.polygons[kind] = poly
+            self.scales[kind] = exercise_scale(stated, [poly.vector(n) for n in poly.tips])
+        self.space = 10.0 / (work.scales.space * mech.units.metres)   # paper mm per metre
+
+    def tolerance(self, name: str, q) -> float:
+        """How far (SI) an answer to ``name`` may be from ``q``'s reference."""
+        cond = max(q.conditioning, LEAST_CONDITIONING)
+        if "point" in q.reference:
+            return self.drafting.pen / cond / self.space
+        ref = q.reference
+        size = math.hypot(*ref["vector"]) if "vector" in ref else abs(ref.get("value", 0.0))
+        kind, span = self._drawn_as(name)
+        if kind is None:                      # drawn on no polygon: a vector LENGTH long
+            rel = (self.drafting.pen / LENGTH + math.tan(self.drafting.angle)) / cond
+            return max(rel, self.drafting.floor) * size
+        scale = self.scales[kind] * span      # paper mm per unit of the answer
+        return max(tolerance(size * scale, cond, self.drafting) / scale,
+                   self.drafting.floor * size)
+
+    def _drawn_as(self, name: str) -> tuple[str | None, float]:
+        """Which polygon ``name`` is read off ("V" or "A"), and the span (m) a rate is read
+        over (1 for a velocity or an acceleration itself)."""
+        for prefix, kind in (("omega", "V"), ("alpha", "A")):
+            if name.startswith(prefix) and name[len(prefix):].isdigit() and kind in \
+                    self.polygons:
+                span = self.polygons[kind].spans.get(int(name[len(prefix):]), 0.0)
+                return (kind, span) if span > 0.0 else (None, 1.0)
+        kind = name[:1]
+        if name[1:2] == "_" and kind in self.polygons:
+            return kind, 1.0
+        return None, 1.0
 
 
-def _pair_verdict(name: str, q, value: tuple[float, float], pair, rel: float,
-                  reach: float) -> Item:
-    """A vector or a point given by its two components, against the expected ``pair``: held
-    to ``rel`` of the vector's size, or of a point's distance from the origin or the
-    mechanism's ``reach``, the larger."""
+def _pair_verdict(name: str, q, value: tuple[float, float], pair, tol: float) -> Item:
+    """A vector or a point given by its two components, against the expected ``pair``,
+    within ``tol`` (SI) of it."""
     ex, ey = pair
-    size = max(math.hypot(ex, ey), reach if "point" in q.reference else 1e-300)
-    tol = rel * size
     miss = math.hypot(value[0] - ex, value[1] - ey)
     item = Item(name, "correct", [ex, ey], list(value), tol)
     if miss > tol:
+        size = math.hypot(ex, ey)
         if "vector" in q.reference and math.hypot(value[0] + ex, value[1] + ey) <= tol:
             item.verdict, item.message = "wrong sense", f"{name} points the other way"
         elif "point" in q.reference:
@@ -228,7 +272,7 @@ def _pair_verdict(name: str, q, value: tuple[float, float], pair, rel: float,
             item.message = f"{name} is {miss:.4g} m from where it belongs"
         else:
             item.verdict = "wrong direction"
-            share = 100 * miss / size
+            share = 100 * miss / size if size else math.inf
             item.message = f"{name} is {share:.1f} % of its size off" if share < 1e6 else \
                 f"{name} is {miss:.4g} from where it belongs"
     return item

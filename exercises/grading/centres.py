@@ -16,75 +16,74 @@ import re
 from .drafting import DRAFTING, Drafting
 from .drawing import Drawing
 from .grade import Grade, Item
+from .labels import plain, read_centre
 from .matching import LEAST_CONDITIONING, Frame, match, rounded
 
-__all__ = ["grade_centres", "read_centre"]
+__all__ = ["grade_centres", "read_centre", "space_frame"]
 
 Vec = tuple[float, float]
 
 
-def read_centre(text: str) -> str | None:
-    """A centre's name as results.json spells it, or None.
-
-    >>> read_centre("I13"), read_centre("13"), read_centre("I₂₄"), read_centre("I1,3")
-    ('I13', 'I13', 'I24', 'I13')
-    """
-    t = text.strip().translate(_DIGITS).replace(",", "").replace(" ", "").replace("_", "")
-    m = re.fullmatch(r"[Ii]?(\d)(\d)", t)
-    if m is None or m[1] == m[2]:
-        return None
-    i, j = sorted((int(m[1]), int(m[2])))
-    return f"I{i}{j}"
-
-
-_DIGITS = str.maketrans({chr(0x2080 + d): str(d) for d in range(10)})
-
-
-def grade_centres(out: Grade, sol, drawing: Drawing, drafting: Drafting = DRAFTING) -> None:
-    """Grade the centres ``drawing`` labels, if any, into ``out``, at ``drafting``'s
-    precision."""
+def space_frame(sol, drawing: Drawing, notes: list[str]) -> tuple[Frame | None, dict]:
+    """How the space diagram ``drawing`` labels lays the mechanism on paper (None if it does
+    not: fewer than two of its points labelled apart, said in ``notes`` when it labels
+    centres), and the centres it labels, by name."""
     points = {n.lower(): n for n in sol.work.mechanism.point_names}
 
     def read(text: str):
         name = read_centre(text)
         if name is not None:
             return ("I", name)
-        t = text.strip().translate(_DIGITS).replace("_", "").lower()
+        t = plain(text).lower()
         return ("P", points[t]) if t in points else None
     lost: list[str] = []
     found = match(drawing, read, lost)
-    if lost:
-        out.notes.append(f"labels near no point, not graded: {', '.join(lost)}")
-    centres = {name for kind, name in found if kind == "I"}
-    if not centres:
-        return
+    centres = {name: p for (kind, name), p in found.items() if kind == "I"}
+    if lost and centres:
+        notes.append(f"labels near no point, not graded: {', '.join(lost)}")
     true = sol.work.kinematics.points
     pins = [(name, p) for (kind, name), p in found.items() if kind == "P"]
     if len(pins) < 2:
-        out.notes.append("the space diagram needs two of the mechanism's points labelled "
+        if centres:
+            notes.append("the space diagram needs two of the mechanism's points labelled "
                          "(O2, A, …) to grade its centres")
-        return
+        return None, centres
     apart = [(p, q) for p in pins for q in pins
              if p[0] < q[0] and math.dist(true[p[0]], true[q[0]]) > 0]
     if not apart:                           # points that lie together fix no scale or turn
-        named = ", ".join(sorted(n for n, _ in pins))
-        out.notes.append(f"the space diagram's labelled points ({named}) lie together in the "
+        if centres:
+            named = ", ".join(sorted(n for n, _ in pins))
+            notes.append(f"the space diagram's labelled points ({named}) lie together in the "
                          "mechanism here: label two apart to grade its centres")
-        return
+        return None, centres
     a, b = max(apart, key=lambda pq: math.dist(pq[0][1], pq[1][1]))
     world = (true[b[0]][0] - true[a[0]][0], true[b[0]][1] - true[a[0]][1])
     paper = (b[1][0] - a[1][0], b[1][1] - a[1][1])
     frames = [Frame.fitted(world, paper, hand, origin=true[a[0]], at=a[1])
               for hand in (1.0, -1.0)]
-    frame = min(frames, key=lambda f: sum(math.dist(f.place(true[n]), p) for n, p in pins))
+    return min(frames, key=lambda f: sum(math.dist(f.place(true[n]), p) for n, p in pins)), \
+        centres
+
+
+def grade_centres(out: Grade, sol, frame: Frame | None, centres: dict,
+                  drafting: Drafting = DRAFTING) -> None:
+    """Grade the ``centres`` a space diagram labels, laid by ``frame``, into ``out``, at
+    ``drafting``'s precision. A centre not asked here is said in a note and costs nothing."""
     quantities = sol.quantities
-    for name in sorted(centres | {q for q in quantities if re.fullmatch(r"I\d\d", q)}):
+    asked = {n for n, q in quantities.items() if re.fullmatch(r"I\d\d", n)
+             and "point" in q.reference}
+    if frame is None or not asked & set(centres):
+        if centres and frame is not None:
+            out.notes.append(f"centres not asked here, or at infinity, not graded: "
+                             f"{', '.join(sorted(centres))}")
+        return
+    unasked = []
+    for name in sorted(set(centres) | {q for q in quantities if re.fullmatch(r"I\d\d", q)}):
         q = quantities.get(name)
-        got = found.get(("I", name))
+        got = centres.get(name)
         if q is None or "point" not in q.reference:
             if got is not None:
-                out.items.append(Item(name, "extra", None, rounded(got), None,
-                                      f"{name} is not asked here, or lies at infinity"))
+                unasked.append(name)
             continue
         exp = frame.place(tuple(q.reference["point"]))
         tol = drafting.pen / max(q.conditioning, LEAST_CONDITIONING)
@@ -98,3 +97,6 @@ def grade_centres(out: Grade, sol, drawing: Drawing, drafting: Drafting = DRAFTI
             item.verdict = "wrong position"
             item.message = f"{name} is {miss:.1f} mm from where Kennedy's lines cross"
         out.items.append(item)
+    if unasked:
+        out.notes.append(f"centres not asked here, or at infinity, not graded: "
+                         f"{', '.join(unasked)}")

@@ -1,41 +1,46 @@
 """A drawn velocity or acceleration polygon, graded tip by tip against tarsim's.
 
-**Matching.** Labels are paired with line ends and dots (:func:`.matching.match`). They
-are read as a course writes them, whatever the case, the subscripts
-or the prime: ``o``, ``ov``, ``o_v`` is the velocity pole and ``o'``, ``oa``, ``o_a`` the
-acceleration pole; ``b``, ``a4`` (or ``a₄``) a velocity tip, ``b'`` or ``b′`` an
-acceleration tip.
+**Matching.** Labels are paired with the points they name (:func:`.matching.match`) and
+read as a course writes them (:mod:`.labels`): ``o``, ``o_v`` the velocity pole, ``o′``,
+``o_a`` the acceleration pole, ``b``, ``a4``, ``a₄`` velocity tips, ``b′``, ``a′₄``,
+``a₄′`` acceleration tips, and tarsim's own ``a₂ ≡ a₄``. A label that names no tip of the
+polygon (a construction point, ``n′``) is said in a note and costs nothing.
 
-**The frame.** A drawing may be turned, mirrored and drawn at its own scale. The pole and
-the input's tip (the crank pin's, whose vector the data give) fix all three: the scale from
-the statement written on the drawing ("1 cm = 0.5 m/s") if there is one, else the one the
-exercise states, else from the input's vector; its turn from that vector; the mirror by
-whichever of the two hands puts the other tips nearer.
+**The frame.** A polygon is drawn in the space diagram's orientation, its directions taken
+from the links with a set square: the space diagram's on the same sheet fixes its turn and
+hand, else the sheet's own axes do (x to the right, y up). So a polygon drawn the other way
+round (every velocity reversed, as by ω2 taken the wrong way) is wrong, not turned, and so
+is one mirrored. Its scale is the one written on the sheet
+("1 cm = 0.5 m/s"), or the exercise's where its ``[grading]`` requires it, else the
+drawing's own, from the input's tip.
 
-**Tolerance.** A tip is held to the drafting precision (:class:`~.drafting.Drafting`: a
-pen of 0.5 mm and a set square true to 0.5° unless the exercise's ``[grading]`` says
-otherwise) over the vector's length, over the tip's own conditioning, compounded along
-the acts that found it (a tip found by crossing near-parallel lines gets the slack its
-conditioning implies), never less than the pen.
+**Tolerance.** One rule for drawings and tables (:func:`.drafting.tolerance`): a pen of
+0.5 mm and a set square true to 0.5° (or the exercise's ``[grading]``) over a vector drawn
+at the exercise's scale, over the tip's own conditioning, compounded along the acts that
+found it; on a drawing at another scale, the same share of the vector.
 
-**Verdicts.** Off by more than its tolerance, a tip's vector from the pole is ``wrong
-sense`` if it points the other way, ``wrong magnitude`` if only its length is off, ``wrong
-direction`` otherwise. A tip that lands where a reversed Coriolis component would put it
-is named as such: the classic error.
+**Verdicts.** Off by more than its tolerance, a tip is ``reversed Coriolis`` where a
+reversed Coriolis component puts it, ``swapped`` where another label's tip belongs and that
+label where it belongs, ``wrong sense`` if it points the other way from the pole, ``wrong
+magnitude`` if its direction is true to the set square and the pen, ``wrong direction``
+otherwise; and ``follows from an earlier error`` where the construction, redone from the
+tips drawn wrong before it, puts it (:mod:`.follow`).
 """
 
 from __future__ import annotations
 
 import math
-import re
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from ...constructions.acceleration_polygon import drawn_acceleration_polygon
 from ...constructions.velocity_polygon import drawn_velocity_polygon
-from .drafting import DRAFTING, Drafting
+from .drafting import DRAFTING, Drafting, exercise_scale, tolerance
 from .drawing import Drawing
+from .follow import Replay, reversed_coriolis
+from .grade import FOLLOWS, Grade, Item
+from .labels import read_label, read_names, tip_of
 from .matching import LEAST_CONDITIONING, Frame, match, rounded
-from .grade import Grade, Item
+from .scale_text import stated_scales
 
 __all__ = ["grade_polygons", "read_label"]
 
@@ -52,6 +57,10 @@ class _Expected:
     given: str
     conditioning: float
     coriolis: dict[str, tuple[Vec, int]]
+    polygon: object
+    """tarsim's drawn polygon, whose acts :mod:`.follow` redoes."""
+    keys: dict[str, str]
+    """Each tip (lower case) by the polygon's own name for it (``A4``)."""
     required: frozenset[str] = frozenset()
     """The tips a drawing must show: the mechanism's own moving points (a coincident point
     on a slot is a helper the drawing may show or not)."""
@@ -61,48 +70,50 @@ class _Expected:
     """Each tip's own conditioning, compounded along the acts that found it."""
 
 
-def read_label(text: str) -> tuple[str, str] | None:
-    """A label as (kind, tip): ("v", "b"), ("a", "b4"), ("v", "o") for a pole; None if it
-    names no polygon point.
-
-    >>> read_label("B₄′"), read_label("o_v"), read_label("oa"), read_label("V_B")
-    (('a', 'b4'), ('v', 'o'), ('a', 'o'), None)
-    """
-    t = text.strip().translate(_PLAIN).lower().replace("_", "").replace(" ", "")
-    prime = t.endswith("'")
-    t = t.rstrip("'")
-    if t in ("o", "ov", "oa"):
-        return ("a" if prime or t == "oa" else "v"), "o"
-    if re.fullmatch(r"[a-z]\d*", t):
-        return ("a" if prime else "v"), t
-    return None
-
-
-_PLAIN = str.maketrans({**{chr(0x2080 + d): str(d) for d in range(10)},
-                        "′": "'", "’": "'", "ʹ": "'", "`": "'"})
-
-
-def grade_polygons(out: Grade, sol, drawing: Drawing, drafting: Drafting = DRAFTING) -> None:
+def grade_polygons(out: Grade, sol, drawing: Drawing, drafting: Drafting = DRAFTING,
+                   orientation: tuple[float, float] | None = None) -> None:
     """Grade the polygons ``drawing`` labels, if any, into ``out``, at ``drafting``'s
-    precision."""
+    precision; ``orientation`` is the (turn, hand) of the space diagram drawn on the same
+    sheet, if one is."""
     lost: list[str] = []
-    found = match(drawing, read_label, lost)
-    # A polygon is drawn where its pole is; point names alone (A, B) are a space diagram's.
+    polygons = _expected(sol)
+    mech = sol.work.mechanism
+    found: dict[tuple[str, str], Vec] = {}
+    unnamed: list[str] = []
+    matched = match(drawing, read_names, lost)
+    if lost:        # two tips at one point (a ≡ a4 at a dead point): a label each, one point
+        texts, lost = set(lost), []
+        again = replace(drawing, labels=[lb for lb in drawing.labels if lb.text in texts])
+        matched.update({k: v for k, v in match(again, read_names, lost).items()
+                        if k not in matched})
+    for (kind, names), at in matched.items():
+        for name in names:
+            poly = polygons.get(kind)
+            key = "o" if name == "o" else (
+                tip_of(name, poly.tips, mech, drafting.aliases) if poly else None)
+            if key is None:
+                unnamed.append(name + ("′" if kind == "a" else ""))
+            else:
+                found.setdefault((kind, key), at)
     kinds = {k for k, n in found if n == "o"}
     if not kinds:
         return
     if lost:
-        out.notes.append(f"labels near no line end or dot, not graded: {', '.join(lost)}")
-    polygons = _expected(sol)
-    stated = _stated_scales(drawing, out.notes)
+        out.notes.append("labels near no line end or dot, not graded: "
+                         + ", ".join(sorted(set(lost))))
+    if unnamed:
+        out.notes.append(f"labels that name no tip of the polygons, taken for construction "
+                         f"points and not graded: {', '.join(sorted(set(unnamed)))}")
+    stated = stated_scales(drawing, out.notes)
     overlay = []
     for kind in sorted(kinds):
         if kind not in polygons:
             out.notes.append(f"the drawing has {_noun(kind)} polygon labels, which this "
                              "exercise does not draw")
             continue
-        overlay.append(_grade_one(polygons[kind], found, stated.get(kind), out, drafting))
-    out.overlay = (drawing, overlay)
+        overlay.append(_grade_one(polygons[kind], found, stated.get(kind), out, drafting,
+                                  orientation))
+    out.overlay = (out.overlay[0] if out.overlay else drawing, overlay)
 
 
 def _noun(kind: str) -> str:
@@ -119,131 +130,148 @@ def _expected(sol) -> dict[str, _Expected]:
     def stated(per_cm: float | None) -> float | None:
         """A stated polygon scale (file units per paper cm) as paper mm per SI unit."""
         return None if not per_cm else 10.0 / (per_cm * mech.units.metres)
-    out = {}
-    vp = drawn_velocity_polygon(work)
     c = work.assembly
 
     def each(poly) -> dict[str, float]:
         return {n.lower(): c[r].conditioning for n, r in poly.tips.items()}
-    out["v"] = _Expected("v", {n.lower(): vp.vector(n) for n in vp.tips}, given,
-                         vp.worst(), {}, moving, stated(work.scales.velocity_polygon), each(vp))
+
+    def keys(poly) -> dict[str, str]:
+        return {n.lower(): n for n in poly.tips}
+    out = {}
+    vp = drawn_velocity_polygon(work)
+    out["v"] = _Expected("v", {n.lower(): vp.vector(n) for n in vp.tips}, given, vp.worst(),
+                         {}, vp, keys(vp), moving, stated(work.scales.velocity_polygon),
+                         each(vp))
     if work.has("acceleration polygon"):
         ap = drawn_acceleration_polygon(work)
         cor = {}
-        for point, (_, _, _) in ap.coriolis.items():
-            link = next((s.guide_link for s in work.mechanism.slides if s.point == point),
-                        None)
+        for point in ap.coriolis:
+            link = next((s.guide_link for s in mech.slides if s.point == point
+                         and s.guide_link != 1), None)          # the slot's, which turns
             cor[point.lower()] = (ap.coriolis_of(point), link)
         out["a"] = _Expected("a", {n.lower(): ap.vector(n) for n in ap.tips}, given,
-                             ap.worst(), cor, moving, stated(work.scales.acceleration_polygon),
-                             each(ap))
+                             ap.worst(), cor, ap, keys(ap), moving,
+                             stated(work.scales.acceleration_polygon), each(ap))
     return out
 
 
-# A number starts where no digit stands before it, so a long run of digits is tried once.
-_SCALE = re.compile(r"(?<![\d.,])(\d+(?:[.,]\d+)?)\s*cm\s*=\s*(\d+(?:[.,]\d+)?)\s*"
-                    r"(mm|cm|m)\s*/\s*s\s*(²|\^2|2)?", re.IGNORECASE)
-_UNIT = {"mm": 1e-3, "cm": 1e-2, "m": 1.0}
-
-
-_SCALES = (1e-9, 1e9)
-"""The scales a drawing may state, paper mm per SI unit: beyond them a statement is a slip
-of the pen, not a scale, and is not held to."""
-
-
-def _stated_scales(drawing: Drawing, notes: list[str]) -> dict[str, float]:
-    """Scales written on the drawing, paper mm per SI unit, by kind ("1 cm = 0.5 m/s",
-    "3 cm = 18 cm/s", "1 cm = 2 m/s²"); one no drawing is drawn at is said in ``notes``."""
-    out = {}
-    for label in drawing.labels:
-        m = _SCALE.search(label.text.replace(" ", " "))
-        if m:
-            cm, amount = float(m[1].replace(",", ".")), float(m[2].replace(",", "."))
-            scale = 10.0 * cm / (amount * _UNIT[m[3].lower()]) if amount > 0 else math.inf
-            if _SCALES[0] <= scale <= _SCALES[1]:
-                out["a" if m[4] else "v"] = scale
-            else:
-                notes.append(f"the scale written '{m[0][:40]}' is no scale a drawing is drawn "
-                             "at, so it was not held to")
-    return out
-
-
-def _grade_one(poly: _Expected, found, stated: float | None, out: Grade, drafting: Drafting):
+def _grade_one(poly: _Expected, found, written: float | None, out: Grade, drafting: Drafting,
+               orientation: tuple[float, float] | None):
     """Grade one polygon's tips into ``out``; return what its overlay draws."""
     mark = "′" if poly.kind == "a" else ""
     pole, given = found.get((poly.kind, "o")), found.get((poly.kind, poly.given))
     e_given = poly.tips.get(poly.given, (0.0, 0.0))
-    if pole is None or given is None or math.hypot(*e_given) == 0.0:
+    if pole is None or given is None or math.hypot(*e_given) == 0.0 or given == pole:
         out.notes.append(f"the {_noun(poly.kind)[2:].strip()} polygon needs its pole o{mark} "
                          f"and the input's tip {poly.given}{mark} labelled to be graded")
         return None
-    f_given = (given[0] - pole[0], given[1] - pole[1])
-    # The scale written on the drawing, else the exercise's, else the input's vector's.
-    stated = stated or poly.scale
-    frames = [Frame.fitted(e_given, f_given, hand, stated, at=pole) for hand in (1.0, -1.0)]
-    others = [n for (k, n) in found if k == poly.kind and n not in ("o", poly.given)
-              and n in poly.tips]
+    held = written or (poly.scale if drafting.scale_required else None)
+    frame, items = _attempt(poly, found, held, drafting, orientation or (0.0, 1.0))
+    if items[poly.given].verdict != "correct":
+        frame, items = _input_swapped(poly, found, held, drafting, orientation or (0.0, 1.0),
+                                      frame, items)
+    out.items += list(items.values())
+    names = sorted(set(poly.tips) | {n for (k, n) in found if k == poly.kind and n != "o"
+                                     and n in poly.tips})
+    return poly, frame, pole, {n: frame.place(poly.tips[n]) for n in names}
 
-    def residual(frame):
-        return sum(math.dist(found[(poly.kind, n)], frame.place(poly.tips[n]))
-                   for n in others)
-    frame = min(frames, key=residual)
-    names = sorted(set(poly.tips) | {n for (k, n) in found if k == poly.kind} - {"o"})
-    expected_at = {}
+
+def _attempt(poly: _Expected, found, held: float | None, drafting: Drafting,
+             orientation: tuple[float, float]) -> tuple[Frame, dict[str, Item]]:
+    """The polygon graded with its tips ``found`` where they are: its frame, and each tip's
+    item."""
+    pole, given = found[(poly.kind, "o")], found[(poly.kind, poly.given)]
+    f_given = (given[0] - pole[0], given[1] - pole[1])
+    own = math.hypot(*f_given) / math.hypot(*poly.tips[poly.given])
+    drawn = [n for (k, n) in found if k == poly.kind and n != "o" and n in poly.tips]
+    ex_scale = exercise_scale(poly.scale, poly.tips.values())
+    names = sorted(set(poly.tips) | set(drawn))
+    frame = Frame(held or own, *orientation, at=pole)
+    items = _graded(poly, names, frame, pole, found, drafting, ex_scale)
+    if held and items[poly.given].verdict == "wrong magnitude":
+        frame = Frame(own, *orientation, at=pole)
+        _at_its_own_scale(poly, items, _graded(poly, names, frame, pole, found, drafting,
+                                               ex_scale), own, held, drafting)
+    _follow_through(poly, items, frame, found)
+    return frame, items
+
+
+def _input_swapped(poly: _Expected, found, held, drafting: Drafting, orientation, frame,
+                   items) -> tuple[Frame, dict[str, Item]]:
+    """The input's tip wrong: if its label and another tip's are swapped, and the polygon is
+    right with them put back, the two are "swapped" and the rest graded as put back."""
+    k, given = poly.kind, poly.given
+    for name in sorted(n for (kind, n) in found if kind == k and n not in ("o", given)
+                       and n in poly.tips):
+        back = {**found, (k, given): found[(k, name)], (k, name): found[(k, given)]}
+        if back[(k, given)] == back[(k, "o")]:
+            continue
+        frame2, items2 = _attempt(poly, back, held, drafting, orientation)
+        if items2[given].verdict == "correct" and items2[name].verdict == "correct":
+            for n in (given, name):
+                items2[n].verdict, items2[n].found = "swapped", rounded(found[(k, n)])
+                items2[n].message = (f"the labels {items2[given].name} and "
+                                     f"{items2[name].name} are swapped")
+            return frame2, items2
+    return frame, items
+
+
+def _graded(poly: _Expected, names: list[str], frame: Frame, pole: Vec, found, drafting: Drafting,
+            ex_scale: float) -> dict[str, Item]:
+    """Each tip's item, held to where ``frame`` puts it."""
+    mark = "′" if poly.kind == "a" else ""
+    pen = drafting.pen * frame.scale / ex_scale          # the pen, at the drawing's scale
+    flips = reversed_coriolis(poly.polygon, frame, poly.keys) if poly.coriolis else {}
+    items: dict[str, Item] = {}
     for name in names:
         label = f"{name}{mark}"
-        if name not in poly.tips:
-            out.items.append(Item(label, "extra", None, list(found[(poly.kind, name)]), None,
-                                  f"{label} names no point of this polygon"))
-            continue
         exp = frame.place(poly.tips[name])
-        expected_at[name] = exp
-        if name == poly.given and stated is None:
-            continue                              # it set the scale: nothing to grade
-        length = math.dist(exp, pole)
-        # The tip's own conditioning: a tip found by a clean cut is held tight, one by a
-        # near-parallel crossing gets the slack that crossing implies.
         cond = max((poly.tip_conditioning or {}).get(name, poly.conditioning),
                    LEAST_CONDITIONING)
-        tol = max(drafting.pen, (drafting.pen + length * math.tan(drafting.angle)) / cond)
+        tol = tolerance(math.hypot(*poly.tips[name]) * ex_scale, cond, drafting) \
+            * frame.scale / ex_scale
         got = found.get((poly.kind, name))
-        if got is None:
-            if name in poly.required:
-                out.items.append(Item(label, "missing", rounded(exp), None, round(tol, 3),
-                                      f"{label} is not labelled on the drawing"))
-            continue
-        out.items.append(_verdict(label, name, poly, frame, pole, exp, got, tol))
-    _name_swaps(out.items)
-    return poly, frame, pole, expected_at
+        if got is not None:
+            items[name] = _verdict(label, poly, pole, exp, got, tol, pen, drafting.angle,
+                                   flips.get(name))
+        elif name in poly.required:
+            items[name] = Item(label, "missing", rounded(exp), None, round(tol, 3),
+                               f"{label} is not labelled on the drawing")
+    _name_swaps(items.values())
+    return items
 
 
-def _verdict(label: str, name: str, poly: _Expected, frame, pole: Vec, exp: Vec, got: Vec,
-             tol: float) -> Item:
-    """The verdict on one tip found at ``got`` where ``exp`` was expected."""
+def _verdict(label: str, poly: _Expected, pole: Vec, exp: Vec, got: Vec, tol: float,
+             pen: float, angle: float, flip: tuple[Vec, str] | None) -> Item:
+    """The verdict on one tip found at ``got`` where ``exp`` was expected; ``flip`` is where
+    it lands with a Coriolis component drawn into it reversed, and that component's point."""
     item = Item(label, "correct", rounded(exp), rounded(got), round(tol, 3))
     miss = math.dist(exp, got)
     if miss <= tol:
         return item
-    for point, (cor, link) in poly.coriolis.items():
-        for sign in (2.0, -2.0):
-            flipped = frame.place((poly.tips[name][0] + sign * cor[0],
-                                   poly.tips[name][1] + sign * cor[1]))
-            if math.hypot(*cor) > 0 and math.dist(flipped, got) <= tol:
-                item.verdict = "wrong sense"
-                item.message = (f"Coriolis component at {point.upper()} drawn opposite: turn "
-                                f"V_rel 90° in the sense of ω{link}")
-                return item
+    if flip is not None and math.dist(flip[0], got) <= tol:
+        point = flip[1]
+        item.verdict = "reversed Coriolis"
+        item.message = (f"Coriolis component at {point.upper()} drawn opposite: turn "
+                        f"V_rel 90° in the sense of ω{poly.coriolis[point.lower()][1]}")
+        return item
     e = (exp[0] - pole[0], exp[1] - pole[1])
     f = (got[0] - pole[0], got[1] - pole[1])
     le, lf = math.hypot(*e), math.hypot(*f)
+    if le == 0.0 or lf == 0.0:
+        item.verdict = "wrong magnitude"
+        item.message = f"{label} is {miss:.1f} mm from where it belongs"
+        return item
     turn = abs(math.remainder(math.atan2(f[1], f[0]) - math.atan2(e[1], e[0]), 2 * math.pi))
-    slack = math.atan2(tol, max(le, tol))
-    if abs(turn - math.pi) <= slack and abs(lf - le) <= tol:
+    # True to the set square, and to the pen across the vector's length.
+    slack = angle + math.atan2(pen, le)
+    if abs(turn - math.pi) <= slack:
         item.verdict = "wrong sense"
         item.message = f"{label} points the other way from the pole"
     elif turn <= slack:
         item.verdict = "wrong magnitude"
-        item.message = f"{label} is {lf - le:+.1f} mm off along its direction from the pole"
+        item.message = (f"{label} is {lf - le:+.1f} mm ({100 * (lf - le) / le:+.1f} %) off "
+                        "along its direction from the pole")
     else:
         item.verdict = "wrong direction"
         item.message = (f"{label} is {miss:.1f} mm from where it belongs "
@@ -251,12 +279,54 @@ def _verdict(label: str, name: str, poly: _Expected, frame, pole: Vec, exp: Vec,
     return item
 
 
-def _name_swaps(items: list[Item]) -> None:
-    """Two tips each found where the other belongs: say their labels are swapped."""
-    wrong = [i for i in items if i.verdict not in ("correct", "missing", "extra")
+def _name_swaps(items) -> None:
+    """Two tips each found where the other belongs: their labels are swapped."""
+    wrong = [i for i in items if i.verdict not in ("correct", "missing")
              and i.found and i.expected]
     for i in wrong:
         for j in wrong:
             if i is not j and math.dist(i.found, j.expected) <= j.tolerance and \
                     math.dist(j.found, i.expected) <= i.tolerance:
+                i.verdict = "swapped"
                 i.message = f"the labels {i.name} and {j.name} are swapped"
+
+
+def _at_its_own_scale(poly: _Expected, items: dict[str, Item], own: dict[str, Item],
+                      drawn: float, held: float, drafting: Drafting) -> None:
+    """The input's tip is off the scale held to: the other tips are graded at the drawing's
+    own scale (``own``), where each one right follows from that error."""
+    given = items[poly.given]
+    for name, item in own.items():
+        if name == poly.given:
+            continue
+        if item.verdict == "correct":
+            item.verdict = FOLLOWS
+            item.message = f"{item.name} is right at the scale {given.name} is drawn at"
+        items[name] = item
+    given.message = (f"{given.name} is drawn at 1 cm = {_per_cm(drawn, poly.kind)}, not the "
+                     f"1 cm = {_per_cm(held, poly.kind)} "
+                     + ("written on the drawing" if not drafting.scale_required
+                        else "the exercise requires"))
+
+
+def _per_cm(scale: float, kind: str) -> str:
+    """Paper mm per SI unit as a course writes it: "0.5 m/s"."""
+    return f"{10.0 / scale:.3g} m/s" + ("²" if kind == "a" else "")
+
+
+def _follow_through(poly: _Expected, items: dict[str, Item], frame: Frame, found) -> None:
+    """Each wrong tip that the construction, redone from the tips drawn wrong before it,
+    puts where it was drawn follows from an earlier error."""
+    replay = Replay(poly.polygon, frame)
+    drawn = {n: poly.keys[n] for n, i in items.items() if i.found is not None}
+    for name in replay.tips_in_order(drawn):
+        item = items[name]
+        if item.verdict in ("correct", "missing"):
+            continue
+        got = found[(poly.kind, name)]
+        if item.verdict != FOLLOWS:
+            at = replay.where(drawn[name])
+            if at is not None and math.dist(at, got) <= item.tolerance:
+                item.verdict = FOLLOWS
+                item.message = f"{item.name} is drawn rightly from the tips before it"
+        replay.move(drawn[name], got)

@@ -1,0 +1,122 @@
+"""One sheet, two drawings: the space diagram and the polygons, told apart by their labels.
+
+tarsim's own worked page, and many a student's sheet, put the space diagram beside the
+polygons. Its points (``A``, ``B``, ``O2``) read like the polygons' tips (``a``, ``b``,
+``o2``), so each label is given to one of them (:func:`split`):
+
+* a centre (``I13``, ``13``) is the space diagram's, a label only a polygon uses (a pole,
+  a prime, a subscript no point has) the polygons';
+* one that could be either goes by its case where the sheet writes the two in different
+  cases (capitals for points, small letters for tips, as the course does), else to the
+  nearer of the two: the space diagram's own labels, or the polygons' poles;
+* a number in a ring is a step's number (tarsim's figures circle them), and a column of
+  labels at a steady pitch a table's (a results table lists I12, I13, …): neither labels a
+  point, and a step's ring is no dot.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import replace
+
+from .drawing import Drawing, Label
+from .labels import plain, read_centre, read_names, step_number
+
+__all__ = ["split", "RING"]
+
+RING = 4.0
+"""The largest ring (mm radius) a figure circles a step's number in."""
+
+COLUMN = 5
+"""The fewest labels one under another at a steady pitch that make a table's column."""
+
+
+def split(drawing: Drawing, point_names) -> tuple[Drawing, Drawing]:
+    """(the polygons' drawing, the space diagram's drawing): the same marks, each with the
+    labels that are its own; a step's ring and its number, and a table's column, in
+    neither."""
+    points = {n.lower() for n in point_names}
+    rings = _rings(drawing)
+    circles = [c for k, c in enumerate(drawing.circles) if k not in rings.values()]
+    labels = [lb for k, lb in enumerate(drawing.labels)
+              if k not in rings and k not in _table_columns(drawing.labels)]
+    tips, space, either = [], [], []
+    for lb in labels:
+        as_tip = read_names(lb.text) is not None
+        as_point = _names_point(lb.text, points) or read_centre(lb.text) is not None
+        (either if as_tip and as_point else tips if as_tip else space if as_point
+         else tips).append(lb)           # a label of neither is said by the polygons
+    if either:
+        cases = {_capital(lb.text) for lb in either}
+        tip_cases = {_capital(lb.text) for lb in tips
+                     if read_names(lb.text) is not None and not _is_pole(lb.text)}
+        poles = [lb.at for lb in tips if _is_pole(lb.text)]
+        own = [lb.at for lb in space]
+        for lb in either:
+            if len(cases) == 2:                   # A on the diagram, a on the polygon
+                side = space if _capital(lb.text) else tips
+            elif tip_cases and _capital(lb.text) not in tip_cases:
+                side = space                      # the polygons write their tips otherwise
+            elif poles and own:
+                side = space if _nearest(lb.at, own) < _nearest(lb.at, poles) else tips
+            else:
+                side = tips if poles else space
+            side.append(lb)
+    return (replace(drawing, labels=tips, circles=circles),
+            replace(drawing, labels=space, circles=circles, notes=[]))
+
+
+def _rings(drawing: Drawing) -> dict[int, int]:
+    """The numbers a figure circles as its steps' numbers: label index → ring index."""
+    out = {}
+    for k, lb in enumerate(drawing.labels):
+        if not step_number(lb.text):
+            continue
+        x0, x1 = lb.at[0], lb.at[0] + 2.0 * len(lb.text)
+        spots = (lb.at, ((x0 + x1) / 2.0, lb.at[1] - 1.2), (lb.at[0], lb.at[1] - 1.2))
+        ring = next((j for j, (c, r) in enumerate(drawing.circles)
+                     if r <= RING and any(math.dist(c, p) <= r + 0.3 for p in spots)), None)
+        if ring is not None:
+            out[k] = ring
+    return out
+
+
+def _table_columns(labels: list[Label]) -> set[int]:
+    """Labels standing in a table's column: :data:`COLUMN` or more left-aligned one under
+    another at a steady pitch, as a results table lists its quantities."""
+    by_x: dict[int, list[int]] = {}
+    for k, lb in enumerate(labels):
+        by_x.setdefault(round(lb.at[0] / 0.2), []).append(k)
+    out: set[int] = set()
+    for column in by_x.values():
+        column.sort(key=lambda k: labels[k].at[1])
+        run = [column[0]] if column else []
+        for a, b in zip(column, column[1:]):
+            pitch = labels[b].at[1] - labels[a].at[1]
+            first = labels[run[1]].at[1] - labels[run[0]].at[1] if len(run) > 1 else pitch
+            if 0.0 < pitch <= 12.0 and abs(pitch - first) <= 0.05 * first:
+                run.append(b)
+            else:
+                out |= set(run) if len(run) >= COLUMN else set()
+                run = [b]
+        out |= set(run) if len(run) >= COLUMN else set()
+    return out
+
+
+def _names_point(text: str, points: set[str]) -> bool:
+    t = plain(text)
+    return "'" not in t and t.lower() in points
+
+
+def _capital(text: str) -> bool:
+    t = plain(text)
+    return bool(t) and t[0].isupper()
+
+
+def _is_pole(text: str) -> bool:
+    read = read_names(text)
+    return read is not None and "o" in read[1]
+
+
+def _nearest(p, others) -> float:
+    return min(math.dist(p, q) for q in others)

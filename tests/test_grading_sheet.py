@@ -1,0 +1,154 @@
+"""Grading a whole sheet as a course marks one: the space diagram beside the polygons,
+tarsim's own notation, construction points, one tolerance for drawings and tables, and a
+drawing of another position than the one asked.
+
+Drawings are tarsim's polygons and space diagram (tests/drawings.py), laid out on one
+sheet; the tolerances asserted are worked from the drafting rule itself, a 0.5 mm pen and
+a 0.5° set square over a vector drawn at the exercise's scale.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import re
+
+import pytest
+
+import tarsim
+from tarsim.exercises.grading.drafting import DRAFTING, tolerance
+from tarsim.exercises.grading.grade import grade
+from tarsim.exercises.grading.labels import read_names, read_centre
+from tarsim.exercises.solution import solve_positions
+from tests.drawings import Style, centres_drawing, drawing
+
+FOUR_BAR = tarsim.load("four-bar")
+SHAPER = tarsim.load("crank-shaper")
+
+
+def _body(svg: str) -> str:
+    """The marks of one of tests/drawings.py's Inkscape pages."""
+    return svg.split('<g transform="matrix(1,0,0,1,0,0)">', 1)[1].rsplit("</g></g></svg>", 1)[0]
+
+
+def _sheet(*parts: tuple[str, float], extra: str = "") -> str:
+    """Pages laid one under another (each moved down by its offset, mm) on one sheet."""
+    body = "".join(f'<g transform="translate(0,{dy})">{_body(svg)}</g>' for svg, dy in parts)
+    return ('<svg xmlns="http://www.w3.org/2000/svg" width="210mm" height="600mm" '
+            f'viewBox="0 0 210 600">{body}{extra}</svg>')
+
+
+def _graded(tmp_path, svg: str, ex, position: int = 0):
+    path = tmp_path / "sheet.svg"
+    path.write_text(svg, encoding="utf-8")
+    g = grade(ex, path, position)
+    return g, {i.name: i for i in g.items}
+
+
+@pytest.mark.parametrize("text, read", [
+    ("a₂ ≡ a₄", ("v", ("a2", "a4"))), ("o_a ≡ b₅′", ("a", ("o", "b5"))),
+    ("a′₄", ("a", ("a4",))), ("a₄′", ("a", ("a4",))), ("a_{4}'", ("a", ("a4",))),
+    ("o<v", None), ("I13", None), ("V_B5 = V_B4", None), ("a''", None)])
+def test_tarsims_notation_and_a_prime_either_side_of_the_subscript_are_read(text, read):
+    assert read_names(text) == read
+
+
+@pytest.mark.parametrize("text, centre", [("I13", "I13"), ("31", "I13"), ("I₂₄", "I24"),
+                                          ("40", None), ("11", None), ("I1", None)])
+def test_a_centre_is_two_links_counted_from_one(text, centre):
+    assert read_centre(text) == centre
+
+
+def test_the_space_diagram_beside_the_polygon_is_told_from_it(tmp_path):
+    """A, B, O2, O4 and the centres on the space diagram; a, b, o on the polygon below it:
+    every tip and every finite centre right, none of the diagram's points taken for a tip."""
+    sol = solve_positions(FOUR_BAR)[0]
+    svg = _sheet((centres_drawing(sol), 0.0), (drawing(sol, Style()), 120.0))
+    g, items = _graded(tmp_path, svg, FOUR_BAR)
+    centres = [n for n in items if n.startswith("I")]
+    assert {"a", "b"} <= set(items) and len(centres) >= 5
+    assert {i.verdict for i in g.items} == {"correct"}, g.items
+
+
+def test_construction_points_are_said_and_cost_nothing(tmp_path):
+    """n and x, labelled where a student marks where two construction lines cross, are no
+    answer: the grade says it took them for construction points and the score stays."""
+    sol = solve_positions(FOUR_BAR)[0]
+    extra = ('<line x1="150" y1="60" x2="170" y2="60" stroke="#000"/>'
+             '<text x="171" y="59" style="font-size:4px">n</text>'
+             '<line x1="150" y1="80" x2="170" y2="80" stroke="#000"/>'
+             '<text x="171" y="79" style="font-size:4px">x</text>')
+    g, _ = _graded(tmp_path, _sheet((drawing(sol, Style()), 0.0), extra=extra), FOUR_BAR)
+    assert g.score == 100.0
+    assert any(re.search(r"construction points.*: n, x$", n) for n in g.notes), g.notes
+
+
+def test_a_table_and_a_drawing_are_held_to_one_tolerance(tmp_path):
+    """V_B in a table is held to what the tip b is on a drawing at the exercise's scale: the
+    pen and the set square over b's length there, over its conditioning, in m/s."""
+    sol = solve_positions(FOUR_BAR)[0]
+    g, items = _graded(tmp_path, drawing(sol, Style(scale=400.0)), FOUR_BAR)
+    q = sol.quantities["V_B"]
+    v_b = q.reference["value"]
+    path = tmp_path / "answers.json"
+    path.write_text(json.dumps({"V_B": v_b}), encoding="utf-8")
+    table = {i.name: i for i in grade(FOUR_BAR, path, 0).items}
+    # The four-bar states no polygon scale: the longest tip is drawn 100 mm long.
+    from tarsim.constructions.velocity_polygon import drawn_velocity_polygon
+
+    vp = drawn_velocity_polygon(sol.work)
+    scale = 100.0 / max(math.hypot(*vp.vector(n)) for n in vp.tips)     # mm per m/s
+    cond = max(q.conditioning, 0.05)
+    assert table["V_B"].tolerance == pytest.approx(tolerance(v_b * scale, cond) / scale,
+                                                   rel=1e-9)
+    # The drawing at 400 mm per m/s holds b to the same share of its length.
+    tip = sol.work.assembly[vp.tips["B"]].conditioning
+    share = tolerance(v_b * scale, max(tip, 0.05)) / (v_b * scale)
+    assert items["b"].tolerance == pytest.approx(share * v_b * 400.0, abs=1e-3)
+
+
+@pytest.mark.parametrize("share, verdict", [(0.5, "correct"), (1.5, "wrong magnitude")])
+def test_a_rate_in_a_table_is_held_to_the_pen_on_the_velocity_it_is_read_from(
+        tmp_path, share, verdict):
+    """ω4 is read off the polygon as V_B/O4B: it is held to the tolerance of that vector
+    drawn at the exercise's scale (100 mm for the longest tip, as the four-bar states no
+    scale), over ω4's conditioning; half of it passes and one and a half fails."""
+    from tarsim.constructions.velocity_polygon import drawn_velocity_polygon
+
+    sol = solve_positions(FOUR_BAR)[0]
+    q = sol.quantities["omega4"]
+    w = q.reference["value"]
+    vp = drawn_velocity_polygon(sol.work)
+    scale = 100.0 / max(math.hypot(*vp.vector(n)) for n in vp.tips)        # mm per m/s
+    span = math.dist(sol.work.kinematics.points["O4"], sol.work.kinematics.points["B"])
+    tol = tolerance(abs(w) * span * scale, max(q.conditioning, 0.05)) / (span * scale)
+    path = tmp_path / "answers.json"
+    path.write_text(json.dumps({"omega4": w + share * tol}), encoding="utf-8")
+    items = {i.name: i for i in grade(FOUR_BAR, path, 0).items}
+    assert items["omega4"].tolerance == pytest.approx(tol, rel=1e-9)
+    assert items["omega4"].verdict == verdict
+
+
+def test_a_drawing_of_another_position_says_which(tmp_path):
+    """The crank-shaper's polygon at θ2 = 90° handed in for its second position (t = 2.34 s)
+    scores poorly there, and the grade says it is the first position's."""
+    first = solve_positions(SHAPER)[0]
+    g, _ = _graded(tmp_path, drawing(first, Style()), SHAPER, position=1)
+    assert g.position_matched == 1 and g.score < 75.0
+    assert g.notes[0].startswith("this drawing matches position 1 (θ2 = 90°), where it "
+                                 "scores 100 %")
+    assert g.as_json()["position_matched"] == 1
+
+
+def test_an_exercises_alias_names_a_tip(tmp_path):
+    """A statement that calls the ram's point c: the exercise's aliases map c to b, so a
+    drawing labelled as the statement names it is graded."""
+    from dataclasses import replace
+
+    sol = solve_positions(FOUR_BAR)[0]
+    svg = drawing(sol, Style()).replace(">b<", ">c<")
+    g, items = _graded(tmp_path, svg, FOUR_BAR)
+    assert items["b"].verdict == "missing"
+    aliased = replace(FOUR_BAR, drafting=replace(DRAFTING, aliases={"c": "b"}))
+    g, items = _graded(tmp_path, svg, aliased)
+    assert items["b"].verdict == "correct"
