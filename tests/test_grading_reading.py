@@ -444,3 +444,20 @@ def test_two_vectors_drawn_to_one_point_are_two_tips_and_a_halo_is_one_label():
         (pytest.approx((60, 50)), Kind.TIP, 2)]
     found = match(d, lambda t: ("v", t))
     assert near(found["v", "a"], (60, 50)) and near(found["v", "a4"], (60, 50))
+
+
+def test_a_stroke_ending_on_another_is_a_junction_not_a_bare_end():
+    """A line drawn up to another (a T) meets it there: a label 2 mm from that meeting and
+    1.8 mm from a bare end names the meeting (2 mm against 1.8 + 2 mm); once the lines no
+    longer meet, the nearer bare end."""
+    from tarsim.exercises.grading.drawing import Drawing
+
+    d = Drawing(segments=[((0.0, 50.0), (100.0, 50.0)),       # the line met
+                          ((40.0, 20.0), (40.0, 50.0)),       # the line ending on it
+                          ((46.0, 51.0), (80.0, 90.0))],      # a construction line's end
+                labels=[Label("n", (42.0, 53.5), 4.0)])
+    # The label's letters: x 42–44.2 (n is 0.556 em), y 50.3–53.5 (0.8 em); (40, 50) is
+    # 2 mm left of them and 0.3 mm above, (46, 51) 1.8 mm right of them.
+    assert near(match(d, lambda t: ("p", t))["p", "n"], (40.0, 50.0))
+    d.segments[0] = ((0.0, 40.0), (100.0, 40.0))              # no longer met: a bare end
+    assert near(match(d, lambda t: ("p", t))["p", "n"], (46.0, 51.0))

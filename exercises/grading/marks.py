@@ -162,6 +162,8 @@ def touching(drawing: Drawing, points: list[Vec]) -> list[bool]:
 
     if not points or not drawing.segments:
         return [False] * len(points)
+    if len(points) * len(drawing.segments) <= 4096:         # too few for numpy to pay
+        return [any(_on(p, a, b) for a, b in drawing.segments) for p in points]
     seg = np.array(drawing.segments, dtype=float)          # (n, 2, 2)
     a, b = seg[:, 0], seg[:, 1]
     d = b - a
@@ -172,11 +174,22 @@ def touching(drawing: Drawing, points: list[Vec]) -> list[bool]:
     for k in range(0, len(xy), chunk):
         p = xy[k:k + chunk, None, :]                         # (m, 1, 2)
         t = np.clip(((p - a) * d).sum(axis=2) / length2, 0.0, 1.0)
-        off = np.hypot(*np.moveaxis(a + t[..., None] * d - p, 2, 0))
-        away = np.minimum(np.hypot(*np.moveaxis(p - a, 2, 0)),
-                          np.hypot(*np.moveaxis(p - b, 2, 0))) > JOIN
+        foot = a + t[..., None] * d - p
+        off = np.hypot(foot[..., 0], foot[..., 1])
+        away = np.minimum(np.hypot(*(p - a).transpose(2, 0, 1)),
+                          np.hypot(*(p - b).transpose(2, 0, 1))) > JOIN
         out += np.any((off <= JOIN) & away, axis=1).tolist()
     return out
+
+
+def _on(p: Vec, a: Vec, b: Vec) -> bool:
+    """Whether ``p`` lies on the segment a–b (within :data:`JOIN`), away from its ends."""
+    if math.dist(p, a) <= JOIN or math.dist(p, b) <= JOIN:
+        return False
+    d = (b[0] - a[0], b[1] - a[1])
+    t = max(0.0, min(1.0, ((p[0] - a[0]) * d[0] + (p[1] - a[1]) * d[1])
+                     / max(d[0] ** 2 + d[1] ** 2, 1e-300)))
+    return math.dist(p, (a[0] + t * d[0], a[1] + t * d[1])) <= JOIN
 
 
 # ----- shapes ----------------------------------------------------------------------------------
