@@ -17,7 +17,7 @@ __all__ = ["parse_xml"]
 
 
 def parse_xml(data: bytes, name: str) -> tuple[ET.Element, dict[ET.Element, int]]:
-    """The XML tree of the drawing ``data`` (the file ``name``), and each element's line.
+    r"""The XML tree of the drawing ``data`` (the file ``name``), and each element's line.
 
     Raises
     ------
@@ -28,7 +28,7 @@ def parse_xml(data: bytes, name: str) -> tuple[ET.Element, dict[ET.Element, int]
     Examples
     --------
     >>> root, lines = parse_xml(b'<!DOCTYPE svg PUBLIC "-//W3C//DTD SVG 1.1//EN" "x.dtd">'
-    ...                         b'<svg>\\n<g/></svg>', "s.svg")
+    ...                         b'<svg>\n<g/></svg>', "s.svg")
     >>> [(e.tag, lines[e]) for e in root.iter()]
     [('svg', 1), ('g', 2)]
     """
