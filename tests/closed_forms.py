@@ -138,8 +138,11 @@ def contradictions(solution) -> list[str]:
                 if not qq.passed or scale == 0.0:
                     continue
                 got, want = qq.value.get("vector", qq.value["value"]), truth[name]
+                # Beside its scale, or itself where it is larger (α3 of a rod near its
+                # toggle, 2e4 times ω2²), as tarsim's own check and its six figures say it.
+                size = math.hypot(*want) if isinstance(want, tuple) else abs(want)
                 miss = (math.dist(got, want) if isinstance(want, tuple)
-                        else abs(got - want)) / max(scale, 1e-300)
+                        else abs(got - want)) / max(scale, size, 1e-300)
                 if miss > allowed:
                     where = sol.position.label if sol.position else f"θ{d.link} input"
                     out.append(f"{where}: {name} by {qq.method}: got {got}, closed form {want} "
