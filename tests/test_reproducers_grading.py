@@ -85,7 +85,7 @@ def test_nan_svg_circle_inf(tmp_path):
     hold finite numbers only. The line o–a is graded as drawn: at θ2 = 90° with ω2
     clockwise the crank pin moves along +x, as a lies from o, and with no scale written
     (and the crank-shaper's not required) the line sets the drawing's own scale, so a is
-    right; the ram's tip b is not drawn."""
+    right; the ram's tip b and the slotted link's a4 and b4 are not drawn."""
     out = tmp_path / "out"
     result = run("grade", "crank-shaper", HERE / "nan-svg-circle-inf.svg", "-o", out)
     assert result.exit_code == 0, result.output
@@ -93,8 +93,8 @@ def test_nan_svg_circle_inf(tmp_path):
     assert f"  note: {note}" in result.output.splitlines()
     grade = finite_json((out / "grade.json").read_text(encoding="utf-8"))
     assert grade["notes"] == [note]
-    assert {i["name"]: i["verdict"] for i in grade["items"]} == {"a": "correct",
-                                                                 "b": "missing"}
+    assert {i["name"]: i["verdict"] for i in grade["items"]} == {
+        "a": "correct", "b": "missing", "a4": "missing", "b4": "missing"}
     svg = (out / "grade.svg").read_text(encoding="utf-8")
     numbers = [float(n.removesuffix("mm")) for v in svg_numbers(svg)
                for n in re.split(r"[\s,]+", v.strip())]

@@ -17,11 +17,18 @@ from .drafting import DRAFTING, Drafting
 from .drawing import Drawing
 from .grade import Grade, Item
 from .labels import plain, read_centre
+from .marks import Kind
 from .matching import LEAST_CONDITIONING, Frame, match, rounded
 
 __all__ = ["grade_centres", "read_centre", "space_frame"]
 
 Vec = tuple[float, float]
+
+
+PINS = {Kind.DOT: 0.0, Kind.BLOCK: 0.0, Kind.TIP: 1.5, Kind.JUNCTION: 1.5, Kind.END: 3.0}
+"""What a space diagram's label costs to put on each kind of mark (mm, beside its
+distance): a pin is drawn as a circle, a block as a box, so a hatching's corner or a link's
+end by the label loses to the pin a millimetre and a half farther."""
 
 
 def space_frame(sol, drawing: Drawing, notes: list[str]) -> tuple[Frame | None, dict]:
@@ -37,7 +44,7 @@ def space_frame(sol, drawing: Drawing, notes: list[str]) -> tuple[Frame | None, 
         t = plain(text).lower()
         return ("P", points[t]) if t in points else None
     lost: list[str] = []
-    found = match(drawing, read, lost)
+    found = match(drawing, read, lost, PINS)
     centres = {name: p for (kind, name), p in found.items() if kind == "I"}
     if lost and centres:
         notes.append(f"labels near no point, not graded: {', '.join(lost)}")

@@ -49,6 +49,10 @@ _ALONE = 6.0
 """The largest a triangle with no shaft is told an arrowhead by its one sharp corner (mm):
 a polygon of a drawing is larger."""
 
+OVERSHOOT = 10.0
+"""The farthest (mm) a line drawn through a point runs on past it: its end there names
+nothing."""
+
 BLOCK = 20.0
 """The longest side of a slider block (mm)."""
 
@@ -151,7 +155,26 @@ def marks(drawing: Drawing) -> list[Mark]:
         else:
             web.stroke(poly, True)
     out += web.marks()
-    return _distinct(out)
+    return _distinct(_past_points(out, web.ends))
+
+
+def _past_points(found: list[Mark], ends: dict[Vec, Vec]) -> list[Mark]:
+    """``found`` without the ends of lines drawn through a tip, dot, block or junction and on
+    past it (:data:`OVERSHOOT` at most), as a draughtsman draws a line through a point: the
+    point is what the line names, not where the pen lifted."""
+    strong = [m.at for m in found if m.kind is not Kind.END]
+    if not strong or not ends:
+        return found
+    import numpy as np
+
+    xy = np.array(strong, dtype=float)
+
+    def past(m: Mark) -> bool:
+        if m.kind is not Kind.END or m.at not in ends:
+            return False
+        near = xy[np.hypot(xy[:, 0] - m.at[0], xy[:, 1] - m.at[1]) <= OVERSHOOT]
+        return any(_on(tuple(p), m.at, ends[m.at]) for p in near)
+    return [m for m in found if not past(m)]
 
 
 def touching(drawing: Drawing, points: list[Vec]) -> list[bool]:
@@ -292,6 +315,7 @@ class _Web:
         self.places: list[_Place] = []
         self.cells: dict[tuple[int, int], list[int]] = {}
         self.near: dict[tuple[int, int], list[int]] = {}          # 2 mm cells, for heads
+        self.ends: dict[Vec, Vec] = {}         # a lone end, and where its stroke runs to
 
     def place(self, p: Vec) -> int:
         """The place at ``p``, made if no place stands within :data:`JOIN`."""
@@ -365,6 +389,8 @@ class _Web:
             elif not place.part and place.leaving:
                 out.append(Mark(place.at, Kind.JUNCTION if len(place.leaving) > 1
                                 else Kind.END, len(place.leaving)))
+                if len(place.leaving) == 1:
+                    self.ends[place.at] = place.leaving[0][0]
         return out
 
     def _blocks(self) -> list[Mark]:

@@ -32,7 +32,8 @@ Vec = tuple[float, float]
 
 
 def match(drawing: Drawing, read: Callable[[str], object | None],
-          unmatched: list[str] | None = None) -> dict[object, Vec]:
+          unmatched: list[str] | None = None,
+          penalty: dict[Kind, float] | None = None) -> dict[object, Vec]:
     """Each label's point, the label read by ``read`` (None for a label that names no
     point): of the points a label may name (:func:`.marks.marks`: dots, arrows' tips,
     junctions, blocks' middles, strokes' ends) within :data:`REACH` of its letters (the
@@ -40,8 +41,9 @@ def match(drawing: Drawing, read: Callable[[str], object | None],
     once, or a tip once for each stroke ending there (:attr:`.marks.Mark.takes`), in the
     pairing whose costs add to the least (nearest pairs first, then any two
     labels' points swapped while that lowers the sum). A pair costs its distance and the
-    point's :data:`.marks.PENALTY`, so a bare stroke's end loses to a mark a little
-    farther. The labels left with no point are added to ``unmatched``.
+    point's :data:`.marks.PENALTY` (or ``penalty``'s, for a drawing whose points are drawn
+    as one kind: a space diagram's pins as circles), so a bare stroke's end loses to a mark
+    a little farther. The labels left with no point are added to ``unmatched``.
 
     Raises
     ------
@@ -62,7 +64,8 @@ def match(drawing: Drawing, read: Callable[[str], object | None],
     for j, meets in zip(ends, touching(drawing, [found[j].at for j in ends])):
         if meets:
             found[j] = Mark(found[j].at, Kind.JUNCTION)
-    cost = {i: {j: d + PENALTY[found[j].kind] for j, d in js.items()} for i, js in near.items()}
+    penalty = penalty or PENALTY
+    cost = {i: {j: d + penalty[found[j].kind] for j, d in js.items()} for i, js in near.items()}
     pairs = sorted((c, i, j) for i, js in cost.items() for j, c in js.items())
     taken: dict[int, int] = {}
     holders: dict[tuple[object, int], list[int]] = {}   # (kind, point): the labels on it

@@ -62,8 +62,7 @@ class _Expected:
     keys: dict[str, str]
     """Each tip (lower case) by the polygon's own name for it (``A4``)."""
     required: frozenset[str] = frozenset()
-    """The tips a drawing must show: the mechanism's own moving points (a coincident point
-    on a slot is a helper the drawing may show or not)."""
+    """The tips a drawing must show: all but the frame's points, at the pole."""
     scale: float | None = None
     """Paper mm per SI unit the exercise states its polygon at, if it states one."""
     tip_conditioning: dict[str, float] | None = None
@@ -80,13 +79,14 @@ def grade_polygons(out: Grade, sol, drawing: Drawing, drafting: Drafting = DRAFT
     mech = sol.work.mechanism
     found: dict[tuple[str, str], Vec] = {}
     unnamed: list[str] = []
-    matched = match(drawing, read_names, lost)
+    matched = match(drawing, _read, lost)
     if lost:        # two tips at one point (a ≡ a4 at a dead point): a label each, one point
         texts, lost = set(lost), []
         again = replace(drawing, labels=[lb for lb in drawing.labels if lb.text in texts])
-        matched.update({k: v for k, v in match(again, read_names, lost).items()
+        matched.update({k: v for k, v in match(again, _read, lost).items()
                         if k not in matched})
     for (kind, names), at in matched.items():
+        kind = kind[0]
         for name in names:
             poly = polygons.get(kind)
             key = "o" if name == "o" else (
@@ -116,6 +116,13 @@ def grade_polygons(out: Grade, sol, drawing: Drawing, drafting: Drafting = DRAFT
     out.overlay = (out.overlay[0] if out.overlay else drawing, overlay)
 
 
+def _read(text: str) -> tuple[str, tuple[str, ...]] | None:
+    """A label as :func:`.labels.read_names` reads it, a pole's kind marked apart ("vo"), so
+    the pole and a tip at rest there (b′ = o′ when B's acceleration is nil) share a point."""
+    read = read_names(text)
+    return None if read is None else ((read[0] + "o", read[1]) if "o" in read[1] else read)
+
+
 def _noun(kind: str) -> str:
     return "a velocity" if kind == "v" else "an acceleration"
 
@@ -125,7 +132,12 @@ def _expected(sol) -> dict[str, _Expected]:
     work = sol.work
     mech = work.mechanism
     given = mech.link(mech.drive.link).names[-1].lower()
-    moving = frozenset(n.lower() for n in mech.point_names if 1 not in mech.links_at(n))
+    fixed = {n for n in mech.point_names if 1 in mech.links_at(n)}
+
+    def moving(poly) -> frozenset[str]:
+        """Every tip but the frame's points' (at the pole): a coincident point on a slot
+        (A4) too, which the construction cannot do without."""
+        return frozenset(n.lower() for n in poly.tips if n not in fixed)
 
     def stated(per_cm: float | None) -> float | None:
         """A stated polygon scale (file units per paper cm) as paper mm per SI unit."""
@@ -140,7 +152,7 @@ def _expected(sol) -> dict[str, _Expected]:
     out = {}
     vp = drawn_velocity_polygon(work)
     out["v"] = _Expected("v", {n.lower(): vp.vector(n) for n in vp.tips}, given, vp.worst(),
-                         {}, vp, keys(vp), moving, stated(work.scales.velocity_polygon),
+                         {}, vp, keys(vp), moving(vp), stated(work.scales.velocity_polygon),
                          each(vp))
     if work.has("acceleration polygon"):
         ap = drawn_acceleration_polygon(work)
@@ -150,7 +162,7 @@ def _expected(sol) -> dict[str, _Expected]:
                          and s.guide_link != 1), None)          # the slot's, which turns
             cor[point.lower()] = (ap.coriolis_of(point), link)
         out["a"] = _Expected("a", {n.lower(): ap.vector(n) for n in ap.tips}, given,
-                             ap.worst(), cor, ap, keys(ap), moving,
+                             ap.worst(), cor, ap, keys(ap), moving(ap),
                              stated(work.scales.acceleration_polygon), each(ap))
     return out
 
@@ -186,6 +198,11 @@ def _attempt(poly: _Expected, found, held: float | None, drafting: Drafting,
     drawn = [n for (k, n) in found if k == poly.kind and n != "o" and n in poly.tips]
     ex_scale = exercise_scale(poly.scale, poly.tips.values())
     names = sorted(set(poly.tips) | set(drawn))
+    # The input's tip turns the frame by as much as the space diagram's fit may be off.
+    turn, hand = orientation
+    drift = math.remainder(math.atan2(-f_given[1], f_given[0]) + turn - math.atan2(
+        hand * poly.tips[poly.given][1], poly.tips[poly.given][0]), 2 * math.pi)
+    orientation = (turn - drift if abs(drift) <= _DRIFT else turn, hand)
     frame = Frame(held or own, *orientation, at=pole)
     items = _graded(poly, names, frame, pole, found, drafting, ex_scale)
     if held and items[poly.given].verdict == "wrong magnitude":
@@ -194,6 +211,12 @@ def _attempt(poly: _Expected, found, held: float | None, drafting: Drafting,
                                                ex_scale), own, held, drafting)
     _follow_through(poly, items, frame, found)
     return frame, items
+
+
+_DRIFT = math.radians(2.0)
+"""How far the input's tip may turn a polygon from the orientation it is held to: a space
+diagram's fit is true to a pen's width over its size, a degree or so; a polygon turned
+further (a quarter, the other way round) is wrong."""
 
 
 def _input_swapped(poly: _Expected, found, held, drafting: Drafting, orientation, frame,
