@@ -24,8 +24,9 @@ from hypothesis import assume, example, given, settings
 from hypothesis import strategies as st
 
 from tarsim.constructions.errors import InputError
-from tarsim.exercises.grading.drawing import (MAX_BYTES, NEAR_END, PRIMES, SHIFT, SMALLER, Label,
-                                             _joined, parse_drawing, read_drawing)
+from tarsim.exercises.grading.drawing import (MAX_BYTES, NEAR_END, NEAR_END_SMALLER, PRIMES,
+                                             SHIFT, SMALLER, Label, _joined, parse_drawing,
+                                             read_drawing)
 from tarsim.exercises.grading.marks import Kind, marks
 from tarsim.exercises.grading.matching import match
 
@@ -305,7 +306,8 @@ def _advance_bounds(label: Label) -> tuple[float, float]:
 @example(base="A", follower="3", size=4.0, share=1.0, dx=0.1, dy=0.0)
 def test_a_text_is_joined_to_a_label_only_as_its_subscript_or_prime(base, follower, size, share,
                                                                     dx, dy):
-    """Joined only when the text starts within NEAR_END ems of the label's end and is primes
+    """Joined only when the text starts within NEAR_END ems of the label's end (NEAR_END_SMALLER
+    if smaller) and is primes
     at the baseline, or smaller and at most a line lower, or lower by SHIFT; a text of the
     label's size on its baseline (a step's number, a centre's 13 beside a point's name) is
     never joined; what is joined keeps the letter's place and size."""
@@ -318,7 +320,8 @@ def test_a_text_is_joined_to_a_label_only_as_its_subscript_or_prime(base, follow
     if len(joined) == 1:
         (got,) = joined
         assert got.text == base + follower and got.at == letter.at and got.size == size
-        assert abs(text.at[0] - end) <= NEAR_END * size + 1e-9
+        near = NEAR_END_SMALLER if share <= SMALLER else NEAR_END
+        assert abs(text.at[0] - end) <= near * size + 1e-9
         assert " " not in follower
         if primes:
             assert abs(dy) <= 0.5 + 1e-9

@@ -15,10 +15,10 @@ label that lands beyond any paper, or at no finite place, is left out and said i
 end is moved back by about half or all its width), with that letter's size. A subscript
 or a prime written as a text of its own beside its letter (as GeoGebra writes ``a_4``, or a
 student types it) joins the letter's label as written, ``a`` ``4`` ``′`` reading ``a4′``:
-a text that starts within :data:`NEAR_END` of a label's end and is either smaller than it
-or set lower by less than a line (:func:`follows`), one subscript to a label, primes before
-or after it. A number standing apart (a centre's ``13``, a step's number) stays a label of
-its own.
+a text that starts within :data:`NEAR_END` of a label's end (:data:`NEAR_END_SMALLER` if
+smaller) and is either smaller than it or set lower by less than a line (:func:`follows`),
+one subscript to a label (a link's number, or a pole's v or a), primes before or after it.
+A number standing apart (a centre's ``13``, a step's number) stays a label of its own.
 """
 
 from __future__ import annotations
@@ -37,7 +37,7 @@ from .svg_style import MEDIUM
 
 __all__ = ["Drawing", "Label", "Outline", "read_drawing", "parse_drawing", "file_name",
            "printable", "follows", "advance", "MAX_BYTES", "MAX_ELEMENTS", "MAX_POINTS", "PAPER",
-           "LETTER", "NEAR_END", "SHIFT", "SMALLER", "PRIMES"]
+           "LETTER", "NEAR_END", "NEAR_END_SMALLER", "SHIFT", "SMALLER", "PRIMES"]
 
 MAX_BYTES = 5_000_000
 """The largest drawing read (bytes), compressed or unpacked: a page of lines and labels is
@@ -127,6 +127,11 @@ NEAR_END = 0.3
 """How far (ems of the letter) from a label's end a subscript or prime may start: about
 half a letter, more than a width estimated from the letters is off by."""
 
+NEAR_END_SMALLER = 0.6
+"""How far (ems) from a label's end a smaller text may start and be its subscript: a
+program that sets the subscript as a shape of its own puts it a little apart (LibreOffice
+Draw's text box has a margin of its own)."""
+
 SHIFT = (0.15, 1.0)
 """How far below a label's baseline (ems) a text of its size stands to be its subscript:
 lower than a baseline drawn by hand wanders, and by less than a line."""
@@ -141,11 +146,18 @@ PRIMES = frozenset("′'’ʹ″`")
 _PART = re.compile(r"[\w′'’ʹ″`,]{1,4}")
 """A subscript or prime: at most four letters, digits or primes, no space."""
 
+_INDEX = re.compile(r"[\d,]{1,4}[′'’ʹ″`]*|[′'’ʹ″`]*[\d,]{1,4}")
+"""A subscript a course writes: a link's number (``4``, ``2,3``), a prime either side."""
+
+_POLE = re.compile(r"[vVaA][′'’ʹ″`]*")
+"""The subscript of a pole, ``o`` with ``v`` or ``a``."""
+
 
 def follows(label: Label, end: float, text: Label, subscripted: bool = False) -> bool:
     """Whether ``text`` is a subscript or prime of ``label`` whose letters so far end at
     x = ``end`` (``subscripted``: they hold one already, or end in a digit, so only a prime
-    may follow): it starts within :data:`NEAR_END` of that end, and is primes alone set
+    may follow): it starts within :data:`NEAR_END` of that end (:data:`NEAR_END_SMALLER` if
+    smaller), and is primes alone set
     within half an em of the baseline, or is smaller (:data:`SMALLER`) and at most a line
     below, or is set lower by :data:`SHIFT`.
 
@@ -155,11 +167,13 @@ def follows(label: Label, end: float, text: Label, subscripted: bool = False) ->
     """
     em = label.size
     dx, dy = text.at[0] - end, text.at[1] - label.at[1]
-    if abs(dx) > NEAR_END * em or text.at[0] <= label.at[0] or not _PART.fullmatch(text.text):
+    near = NEAR_END_SMALLER if text.size <= SMALLER * em else NEAR_END
+    if abs(dx) > near * em or text.at[0] <= label.at[0] or not _PART.fullmatch(text.text):
         return False
     if set(text.text) <= PRIMES:
         return abs(dy) <= 0.5 * em
-    if subscripted:
+    if subscripted or not (_INDEX.fullmatch(text.text) or _POLE.fullmatch(text.text)
+                           and label.text.strip() in ("o", "O")):
         return False
     if text.size <= SMALLER * em:
         return -0.1 * em <= dy <= SHIFT[1] * em
@@ -180,8 +194,8 @@ def _joined(labels: list[Label]) -> list[Label]:
         text, end = label.text, label.at[0] + label.width()
         subscripted = text[-1:].isdigit()
         while True:
-            lo = bisect.bisect_left(xs, end - NEAR_END * label.size)
-            hi = bisect.bisect_right(xs, end + NEAR_END * label.size)
+            lo = bisect.bisect_left(xs, end - NEAR_END_SMALLER * label.size)
+            hi = bisect.bisect_right(xs, end + NEAR_END_SMALLER * label.size)
             near = [order[j] for j in range(lo, hi) if order[j] != k and order[j] not in used
                     and follows(label, end, labels[order[j]], subscripted)]
             if not near:
