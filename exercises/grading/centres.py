@@ -25,10 +25,10 @@ __all__ = ["grade_centres", "read_centre", "space_frame"]
 Vec = tuple[float, float]
 
 
-PINS = {Kind.DOT: 0.0, Kind.BLOCK: 0.0, Kind.TIP: 1.5, Kind.JUNCTION: 1.5, Kind.END: 3.0}
+PINS = {Kind.DOT: 0.0, Kind.BLOCK: 0.0, Kind.TIP: 3.0, Kind.JUNCTION: 3.0, Kind.END: 4.0}
 """What a space diagram's label costs to put on each kind of mark (mm, beside its
 distance): a pin is drawn as a circle, a block as a box, so a hatching's corner or a link's
-end by the label loses to the pin a millimetre and a half farther."""
+end by the label loses to the pin three millimetres farther."""
 
 
 def space_frame(sol, drawing: Drawing, notes: list[str]) -> tuple[Frame | None, dict]:
@@ -68,8 +68,26 @@ def space_frame(sol, drawing: Drawing, notes: list[str]) -> tuple[Frame | None, 
     paper = (b[1][0] - a[1][0], b[1][1] - a[1][1])
     frames = [Frame.fitted(world, paper, hand, origin=true[a[0]], at=a[1])
               for hand in (1.0, -1.0)]
-    return min(frames, key=lambda f: sum(math.dist(f.place(true[n]), p) for n, p in pins)), \
-        centres
+    # Points all on one line (the crank-shaper at θ2 = 90°) leave the hand open: the
+    # labelled centres, where they stand off it, settle it, else the sheet's own hand.
+    known = {n: q.reference["point"] for n, q in sol.quantities.items()
+             if n in centres and "point" in q.reference}
+
+    def pinned(f: Frame) -> float:
+        return sum(math.dist(f.place(true[n]), p) for n, p in pins)
+
+    def centred(f: Frame) -> float:
+        return sum(min(math.dist(f.place(tuple(w)), centres[n]), _OPEN) for n, w in known.items())
+    if abs(pinned(frames[0]) - pinned(frames[1])) >= _OPEN:
+        return min(frames, key=pinned), centres
+    if abs(centred(frames[0]) - centred(frames[1])) >= _OPEN:
+        return min(frames, key=centred), centres
+    return frames[0], centres
+
+
+_OPEN = 1.0
+"""Paper (mm): two hands whose points' misses differ by less are told apart by the
+centres."""
 
 
 def grade_centres(out: Grade, sol, frame: Frame | None, centres: dict,
