@@ -62,7 +62,9 @@ class _Expected:
     keys: dict[str, str]
     """Each tip (lower case) by the polygon's own name for it (``A4``)."""
     required: frozenset[str] = frozenset()
-    """The tips a drawing must show: all but the frame's points, at the pole."""
+    """The tips a drawing must show: its moving points and slot points (A4)."""
+    gradable: frozenset[str] = frozenset()
+    """The tips graded where drawn: all but the frame's points, which stand at the pole."""
     scale: float | None = None
     """Paper mm per SI unit the exercise states its polygon at, if it states one."""
     tip_conditioning: dict[str, float] | None = None
@@ -135,8 +137,13 @@ def _expected(sol) -> dict[str, _Expected]:
     fixed = {n for n in mech.point_names if 1 in mech.links_at(n)}
 
     def moving(poly) -> frozenset[str]:
-        """Every tip but the frame's points' (at the pole): a coincident point on a slot
-        (A4) too, which the construction cannot do without."""
+        """The tips a drawing must show: the mechanism's moving points, and a coincident
+        point on a slot (A4), which the construction cannot do without; not the frame's
+        points (at the pole), nor a helper such as a wheel's contact point."""
+        return frozenset(n.lower() for n in poly.tips if n not in fixed and (
+            n in mech.point_names or n.rstrip("0123456789") in mech.point_names))
+
+    def gradable(poly) -> frozenset[str]:
         return frozenset(n.lower() for n in poly.tips if n not in fixed)
 
     def stated(per_cm: float | None) -> float | None:
@@ -152,8 +159,8 @@ def _expected(sol) -> dict[str, _Expected]:
     out = {}
     vp = drawn_velocity_polygon(work)
     out["v"] = _Expected("v", {n.lower(): vp.vector(n) for n in vp.tips}, given, vp.worst(),
-                         {}, vp, keys(vp), moving(vp), stated(work.scales.velocity_polygon),
-                         each(vp))
+                         {}, vp, keys(vp), moving(vp), gradable(vp),
+                         stated(work.scales.velocity_polygon), each(vp))
     if work.has("acceleration polygon"):
         ap = drawn_acceleration_polygon(work)
         cor = {}
@@ -162,7 +169,7 @@ def _expected(sol) -> dict[str, _Expected]:
                          and s.guide_link != 1), None)          # the slot's, which turns
             cor[point.lower()] = (ap.coriolis_of(point), link)
         out["a"] = _Expected("a", {n.lower(): ap.vector(n) for n in ap.tips}, given,
-                             ap.worst(), cor, ap, keys(ap), moving(ap),
+                             ap.worst(), cor, ap, keys(ap), moving(ap), gradable(ap),
                              stated(work.scales.acceleration_polygon), each(ap))
     return out
 
@@ -183,9 +190,14 @@ def _grade_one(poly: _Expected, found, written: float | None, out: Grade, drafti
         frame, items = _input_swapped(poly, found, held, drafting, orientation or (0.0, 1.0),
                                       frame, items)
     out.items += list(items.values())
-    names = sorted(set(poly.tips) | {n for (k, n) in found if k == poly.kind and n != "o"
-                                     and n in poly.tips})
+    names = _names(poly, found)
     return poly, frame, pole, {n: frame.place(poly.tips[n]) for n in names}
+
+
+def _names(poly: _Expected, found) -> list[str]:
+    """The tips graded: those required, and any other drawn but the frame's."""
+    return sorted(poly.required | {n for (k, n) in found if k == poly.kind and n != "o"
+                                   and n in poly.gradable})
 
 
 def _attempt(poly: _Expected, found, held: float | None, drafting: Drafting,
@@ -195,9 +207,8 @@ def _attempt(poly: _Expected, found, held: float | None, drafting: Drafting,
     pole, given = found[(poly.kind, "o")], found[(poly.kind, poly.given)]
     f_given = (given[0] - pole[0], given[1] - pole[1])
     own = math.hypot(*f_given) / math.hypot(*poly.tips[poly.given])
-    drawn = [n for (k, n) in found if k == poly.kind and n != "o" and n in poly.tips]
     ex_scale = exercise_scale(poly.scale, poly.tips.values())
-    names = sorted(set(poly.tips) | set(drawn))
+    names = _names(poly, found)
     # The input's tip turns the frame by as much as the space diagram's fit may be off.
     turn, hand = orientation
     drift = math.remainder(math.atan2(-f_given[1], f_given[0]) + turn - math.atan2(
