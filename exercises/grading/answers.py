@@ -8,7 +8,8 @@ vector; a point (an instant centre) by its distance from where it belongs.
 
 **Tolerance.** A number read off a drawing is as good as the drawing, and is held to the
 tolerance its vector would be on one (:func:`.drafting.tolerance`): V_B as the tip b drawn at
-the exercise's scale, ω4 as the relative velocity it is read from (ω4 times the span it is
+the exercise's scale (the far corner of its two lines' bands, :mod:`.crossing`, where it is
+cut from two), ω4 as the relative velocity it is read from (ω4 times the span it is
 read over), a centre as the pen on the space diagram at the exercise's scale, each over the
 conditioning of the construction that found it. An answer to what is not asked is said in
 a note and costs nothing.
@@ -26,7 +27,8 @@ from ...constructions.errors import InputError
 from .grade import Grade, Item
 from .drafting import DRAFTING, LENGTH, Drafting, exercise_scale, tolerance
 from .drawing import file_name
-from .matching import LEAST_CONDITIONING
+from .crossing import bands, reach
+from .matching import LEAST_CONDITIONING, Frame
 
 __all__ = ["grade_answers", "read_answers", "LENGTH"]
 
@@ -240,8 +242,20 @@ class _Held:
             rel = (self.drafting.pen / LENGTH + math.tan(self.drafting.angle)) / cond
             return max(rel, self.drafting.floor) * size
         scale = self.scales[kind] * span      # paper mm per unit of the answer
-        return max(tolerance(size * scale, cond, self.drafting) / scale,
-                   self.drafting.floor * size)
+        held = tolerance(size * scale, cond, self.drafting) / scale
+        tip = self._tip(name, kind)
+        if tip is not None:                   # a tip cut from two lines: as on a drawing
+            cut = bands(self.polygons[kind], tip, Frame(scale, 0.0, 1.0),
+                        Frame(scale, 0.0, 1.0).place(self.polygons[kind].vector(tip)),
+                        self.drafting.pen, self.drafting.angle, LEAST_CONDITIONING)
+            held = held if cut is None else reach(cut) / scale
+        return max(held, self.drafting.floor * size)
+
+    def _tip(self, name: str, kind: str) -> str | None:
+        """The tip of the polygon ``kind`` whose vector the answer ``name`` is (V_B: B)."""
+        point = name[2:] if name[1:2] == "_" else ""
+        tips = self.polygons[kind].tips
+        return point if point in tips else None
 
     def _drawn_as(self, name: str) -> tuple[str | None, float]:
         """Which polygon ``name`` is read off ("V" or "A"), and the span (m) a rate is read

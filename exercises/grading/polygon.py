@@ -36,6 +36,7 @@ from ...constructions.acceleration_polygon import drawn_acceleration_polygon
 from ...constructions.velocity_polygon import drawn_velocity_polygon
 from .drafting import DRAFTING, Drafting, exercise_scale, tolerance
 from .drawing import Drawing
+from .crossing import bands, reach, within
 from .follow import Replay, reversed_coriolis
 from .grade import FOLLOWS, Grade, Item
 from .labels import read_label, read_names, tip_of
@@ -264,10 +265,15 @@ def _graded(poly: _Expected, names: list[str], frame: Frame, pole: Vec, found, d
                    LEAST_CONDITIONING)
         tol = tolerance(math.hypot(*poly.tips[name]) * ex_scale, cond, drafting) \
             * frame.scale / ex_scale
+        cut = bands(poly.polygon, poly.keys[name], frame, exp, pen, drafting.angle,
+                    LEAST_CONDITIONING)
         got = found.get((poly.kind, name))
+        if cut is not None:
+            tol = reach(cut)
         if got is not None:
+            ok = within(got, exp, cut) if cut is not None else math.dist(got, exp) <= tol
             items[name] = _verdict(label, poly, pole, exp, got, tol, pen, drafting.angle,
-                                   flips.get(name))
+                                   flips.get(name), ok)
         elif name in poly.required:
             items[name] = Item(label, "missing", rounded(exp), None, round(tol, 3),
                                f"{label} is not labelled on the drawing")
@@ -276,12 +282,13 @@ def _graded(poly: _Expected, names: list[str], frame: Frame, pole: Vec, found, d
 
 
 def _verdict(label: str, poly: _Expected, pole: Vec, exp: Vec, got: Vec, tol: float,
-             pen: float, angle: float, flip: tuple[Vec, str] | None) -> Item:
-    """The verdict on one tip found at ``got`` where ``exp`` was expected; ``flip`` is where
-    it lands with a Coriolis component drawn into it reversed, and that component's point."""
+             pen: float, angle: float, flip: tuple[Vec, str] | None, ok: bool) -> Item:
+    """The verdict on one tip found at ``got`` where ``exp`` was expected (``ok``: within its
+    tolerance); ``flip`` is where it lands with a Coriolis component drawn into it reversed,
+    and that component's point."""
     item = Item(label, "correct", rounded(exp), rounded(got), round(tol, 3))
     miss = math.dist(exp, got)
-    if miss <= tol:
+    if ok:
         return item
     if flip is not None and math.dist(flip[0], got) <= tol:
         point = flip[1]
