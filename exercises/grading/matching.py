@@ -91,12 +91,34 @@ def match(drawing: Drawing, read: Callable[[str], object | None],
                     holders[kinds[i], a][holders[kinds[i], a].index(i)] = k
                     holders[kinds[i], b][holders[kinds[i], b].index(k)] = i
                     improved = True
+    _share(cost, taken, holders, kinds, found)
     out: dict[object, Vec] = {}
     for i, j in taken.items():
         out.setdefault(labels[i][0], found[j].at)
     if unmatched is not None:               # a label by no point it could name
         unmatched += [label.text for i, (_, label) in enumerate(labels) if i not in taken]
     return out
+
+
+SHARE = 3.0
+"""What a label pays (mm) to share a tip or a dot another label of its kind names: two
+tips drawn as one (b ≡ b4 at a dead point, one stroke and two labels) are named so, where
+the label's own nearest mark is that much farther."""
+
+
+def _share(cost, taken: dict[int, int], holders, kinds, found: list[Mark]) -> None:
+    """Move each label to a tip or dot already named, where sharing it costs less than the
+    point it holds (or none): :data:`SHARE` more than its distance."""
+    for i, js in cost.items():
+        here = cost[i][taken[i]] if i in taken else math.inf
+        best = min(((c + SHARE, j) for j, c in js.items() if j != taken.get(i)
+                    and found[j].kind in (Kind.TIP, Kind.DOT)
+                    and holders.get((kinds[i], j))), default=None)
+        if best is not None and best[0] < here:
+            if i in taken:
+                holders[kinds[i], taken[i]].remove(i)
+            taken[i] = best[1]
+            holders[kinds[i], best[1]].append(i)
 
 
 def _near(points: list[Vec], labels: list) -> dict[int, dict[int, float]]:
