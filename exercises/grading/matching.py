@@ -100,10 +100,11 @@ def match(drawing: Drawing, read: Callable[[str], object | None],
     return out
 
 
-SHARE = 3.0
+SHARE = 1.5
 """What a label pays (mm) to share a tip or a dot another label of its kind names: two
-tips drawn as one (b ≡ b4 at a dead point, one stroke and two labels) are named so, where
-the label's own nearest mark is that much farther."""
+tips drawn as one (b ≡ b4 at a dead point, one stroke and two labels), or two centres at
+one pin (I13 and I14 at O4 with the crank upright), are named so, where the label's own
+nearest mark is that much farther."""
 
 
 def _share(cost, taken: dict[int, int], holders, kinds, found: list[Mark]) -> None:
