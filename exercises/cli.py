@@ -637,22 +637,27 @@ def grade(source, drawing, out_dir, position, roster, pattern, pdf, workers, sch
           digits):
     """Grade a student's drawing against tarsim's own solution, item by item.
 
-    DRAWING is an SVG as Inkscape, GeoGebra, LibreOffice Draw or a CAD program
-    exports it, with its polygons' poles and tips labelled as the course
-    writes them (o or o_v and a, b, c4 for velocities; o′ or o_a and a′, b′
-    for accelerations), or a JSON or CSV table of answers ({"V_B": 0.233}),
-    or a folder of them: a whole class. The drawing may be turned, mirrored
-    and at its own scale; the pole and the input's tip fix all three, unless
-    a scale is written on it ("1 cm = 0.5 m/s") or the exercise states one,
-    which is then held to. Instant centres labelled I13 or 13 on a space
-    diagram (with two of the mechanism's points labelled, O2, A, …) are graded
-    too.
+    DRAWING is an SVG (or .svgz) as Inkscape, GeoGebra, LibreOffice Draw or a
+    CAD program exports it, its poles and tips labelled as the course writes
+    them (o or o_v and a, b, a4 for velocities; o′ or o_a and a′, a′₄ or a₄′
+    for accelerations; tarsim's a₂ ≡ a₄), or a JSON or CSV table of answers
+    ({"V_B": 0.233}), or a folder of them: a whole class. A space diagram on
+    the sheet (points as the exercise names them, O2, A; centres I13 or 13)
+    is graded too, and sets the polygons' orientation (else the sheet's
+    axes do): a polygon drawn the other way round is wrong, not turned. The
+    scale is the one written on the drawing ("1 cm = 0.5 m/s"), else the
+    drawing's own from the input's tip, unless the exercise's [grading]
+    requires its own (scale = "required").
 
-    Each tip is held to a pen of 0.5 mm and a set square of 0.5° (or the
-    exercise's [grading] table's) over the conditioning of its construction,
-    and judged correct, wrong magnitude, wrong direction, wrong sense (a
-    reversed Coriolis component is named), missing or extra; a centre correct
-    or in the wrong position. The score is the share correct.
+    A tip is held within each line it is cut from by a pen of 0.5 mm and a
+    set square of 0.5° (or the exercise's [grading]), over the line's
+    conditioning; a number in a table by the same rule. Verdicts: correct,
+    follows from an earlier error (drawn rightly from a wrong tip; scores
+    unless [grading] follow = false), reversed Coriolis, swapped, wrong
+    sense, wrong magnitude, wrong direction, wrong position (a centre),
+    missing. Construction points (n′) and unasked answers are noted, not
+    charged; a drawing of another position is said to be. The score is the
+    share of the points scored.
 
     \b
     Writes into DIR:
