@@ -36,12 +36,14 @@ def grade_table(g: Grade) -> str:
     """The grade as the terminal prints it: one line an item, then the score."""
     lines = [f"{g.source}: {g.exercise}"]
     width = max([len(i.name) for i in g.items] + [4])
+    said = max([len(i.verdict) for i in g.items] + [16])
+    unit = " mm" if g.overlay is not None else " SI"    # a drawing's paper, a table's units
     for i in g.items:
-        tol = "" if i.tolerance is None else f"  (± {i.tolerance:.3g})"
-        lines.append(f"  {i.name:<{width}}  {i.verdict:<16}{tol}  {i.message}".rstrip())
+        tol = "" if i.tolerance is None else f"  (± {i.tolerance:.3g}{unit})"
+        lines.append(f"  {i.name:<{width}}  {i.verdict:<{said}}{tol}  {i.message}".rstrip())
     lines += [f"  note: {n}" for n in g.notes]
-    lines.append(f"  score {g.score:.0f} % ({sum(i.verdict == 'correct' for i in g.items)} of "
-                 f"{len(g.items)} correct)")
+    lines.append(f"  score {g.score:.0f} % ({sum(g.scores(i) for i in g.items)} of "
+                 f"{len(g.items)} credited)")
     return "\n".join(lines)
 
 
