@@ -25,10 +25,11 @@ __all__ = ["grade_centres", "read_centre", "space_frame"]
 Vec = tuple[float, float]
 
 
-PINS = {Kind.DOT: 0.0, Kind.BLOCK: 0.0, Kind.TIP: 3.0, Kind.JUNCTION: 3.0, Kind.END: 4.0}
+PINS = {Kind.DOT: 0.0, Kind.BLOCK: 0.0, Kind.TIP: 4.0, Kind.JUNCTION: 4.0, Kind.END: 5.0}
 """What a space diagram's label costs to put on each kind of mark (mm, beside its
 distance): a pin is drawn as a circle, a block as a box, so a hatching's corner or a link's
-end by the label loses to the pin three millimetres farther."""
+end by the label loses to the pin four millimetres farther (a label stands a few
+millimetres from what it names)."""
 
 
 def space_frame(sol, drawing: Drawing, notes: list[str]) -> tuple[Frame | None, dict]:

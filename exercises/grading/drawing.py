@@ -146,8 +146,9 @@ PRIMES = frozenset("′'’ʹ″`")
 _PART = re.compile(r"[\w′'’ʹ″`,]{1,4}")
 """A subscript or prime: at most four letters, digits or primes, no space."""
 
-_INDEX = re.compile(r"[\d,]{1,4}[′'’ʹ″`]*|[′'’ʹ″`]*[\d,]{1,4}")
-"""A subscript a course writes: a link's number (``4``, ``2,3``), a prime either side."""
+_INDEX = re.compile(r"\d[′'’ʹ″`]*|[′'’ʹ″`]*\d")
+"""A subscript a course writes: a link's number (``4``), a prime either side; two digits
+beside a letter are a centre's label (``35`` by the point B), not its subscript."""
 
 _POLE = re.compile(r"[vVaA][′'’ʹ″`]*")
 """The subscript of a pole, ``o`` with ``v`` or ``a``."""
