@@ -187,7 +187,8 @@ def _grade_one(poly: _Expected, found, written: float | None, out: Grade, drafti
         return None
     held = written or (poly.scale if drafting.scale_required else None)
     frame, items = _attempt(poly, found, held, drafting, orientation or (0.0, 1.0))
-    if items[poly.given].verdict != "correct":
+    wrong = sum(i.verdict not in ("correct", FOLLOWS, "missing") for i in items.values())
+    if items[poly.given].verdict != "correct" or wrong >= 2:
         frame, items = _input_swapped(poly, found, held, drafting, orientation or (0.0, 1.0),
                                       frame, items)
     out.items += list(items.values())
@@ -233,8 +234,10 @@ further (a quarter, the other way round) is wrong."""
 
 def _input_swapped(poly: _Expected, found, held, drafting: Drafting, orientation, frame,
                    items) -> tuple[Frame, dict[str, Item]]:
-    """The input's tip wrong: if its label and another tip's are swapped, and the polygon is
-    right with them put back, the two are "swapped" and the rest graded as put back."""
+    """The input's tip wrong, or others wrong with it (its length sets the scale, so a
+    label swapped onto a tip along it reads as a scale): if its label and another tip's are
+    swapped, and the polygon is righter with them put back, both of them right, the two are
+    "swapped" and the rest graded as put back."""
     k, given = poly.kind, poly.given
     for name in sorted(n for (kind, n) in found if kind == k and n not in ("o", given)
                        and n in poly.tips):
@@ -242,13 +245,19 @@ def _input_swapped(poly: _Expected, found, held, drafting: Drafting, orientation
         if back[(k, given)] == back[(k, "o")]:
             continue
         frame2, items2 = _attempt(poly, back, held, drafting, orientation)
-        if items2[given].verdict == "correct" and items2[name].verdict == "correct":
+        if items2[given].verdict == "correct" and items2[name].verdict == "correct" and \
+                _right(items2) > _right(items) + 1:
             for n in (given, name):
                 items2[n].verdict, items2[n].found = "swapped", rounded(found[(k, n)])
                 items2[n].message = (f"the labels {items2[given].name} and "
                                      f"{items2[name].name} are swapped")
             return frame2, items2
     return frame, items
+
+
+def _right(items: dict[str, Item]) -> int:
+    """How many of ``items`` are right."""
+    return sum(i.verdict == "correct" for i in items.values())
 
 
 def _graded(poly: _Expected, names: list[str], frame: Frame, pole: Vec, found, drafting: Drafting,
