@@ -464,3 +464,84 @@ def test_a_stroke_ending_on_another_is_a_junction_not_a_bare_end():
     assert near(match(d, lambda t: ("p", t))["p", "n"], (40.0, 50.0))
     d.segments[0] = ((0.0, 40.0), (100.0, 40.0))              # no longer met: a bare end
     assert near(match(d, lambda t: ("p", t))["p", "n"], (46.0, 51.0))
+
+
+@settings(max_examples=200, deadline=None)
+@given(x=st.floats(60, 240), y=st.floats(60, 240), turn=st.floats(-math.pi, math.pi),
+       head=st.floats(1.5, 4.5), spread=st.floats(0.2, 0.9), shaft=st.floats(0.0, 0.95),
+       onward=st.booleans())
+@example(x=177.12, y=168.56, turn=3.36, head=2.8, spread=0.25, shaft=0.86, onward=True)
+@example(x=86.38, y=261.84, turn=0.33, head=1.97, spread=0.36, shaft=0.0, onward=True)
+def test_a_short_arrows_barbed_head_is_its_tip(x, y, turn, head, spread, shaft, onward):
+    """An arrow shorter than its head is long (its shaft ``shaft`` of the head's length, or
+    none), with a barbed head (apex, wing, notch at 3/4 of it, wing, as tarsim and Inkscape
+    draw it; its apex ``2·atan(spread)`` wide, up to 84°), is a tip at its apex, though no
+    shaft longer than the head runs into it; its wings, notch and its shaft's end inside it
+    are no points; a label just beyond it names the tip. ``onward``: the next vector leaves from
+    the tip (a polygon's next arrow, as Aᵗ_P/C leaves the tip of the short Aⁿ_P/C)."""
+    u = (math.cos(turn), math.sin(turn))
+    n = (-u[1], u[0])
+
+    def at(back: float, side: float = 0.0):
+        return (x - back * u[0] + side * n[0], y - back * u[1] + side * n[1])
+    half = spread * head
+    c1, notch, c2 = at(head, half), at(0.75 * head), at(head, -half)
+    assume(math.dist(c1, c2) <= 6.0 and math.dist(c1, (x, y)) <= 6.0)   # within _ALONE
+
+    def f(p):
+        return f"{p[0]:.4f},{p[1]:.4f}"
+    svg = [f'<path d="M {f((x, y))} L {f(c1)} L {f(notch)} L {f(c2)} Z"/>']
+    inner = at(0.7 * head)                     # the shaft stops inside the head
+    if shaft:
+        svg.append(f'<path fill="none" stroke="#000" d="M {f(at(head + shaft * head))} '
+                   f'L {f(inner)}"/>')
+    if onward:
+        svg.append(f'<path fill="none" stroke="#000" d="M {f((x, y))} '
+                   f'L {f(at(-30.0 * n[0] - 30.0 * u[0], 30.0))}"/>')
+    page = ('<svg xmlns="http://www.w3.org/2000/svg" width="300mm" height="300mm" '
+            'viewBox="0 0 300 300">' + "".join(svg) + "</svg>")
+    d = parse_drawing(page.encode(), "short.svg")
+    found = marks(d)
+    assert [m.kind for m in found if near(m.at, (x, y), 1e-3)] == [Kind.TIP]
+    for p in (c1, c2, notch) + ((inner,) if shaft else ()):
+        assert not any(near(m.at, p, 0.1) for m in found), (p, found)
+    ahead = at(-3.5)                        # a label set just beyond the apex
+    d.labels = [Label("c", (ahead[0] - 0.75, ahead[1] + 1.2), 3.0)]
+    assert near(match(d, lambda t: ("p", t))["p", "c"], (x, y), 1e-3)
+
+
+def test_a_dart_that_is_no_arrowhead_keeps_its_corners():
+    """A small quadrilateral with a reflex corner off the line from the opposite corner to
+    the middle of the other two (a bent flag, not a barbed head), or with a blunt corner
+    there, is no arrowhead: its corners stay junctions."""
+    from tarsim.exercises.grading.drawing import Drawing, Outline
+
+    flag = ((0.0, 0.0), (4.0, 1.0), (2.8, 1.3), (0.5, 3.0))     # reflex corner 0.9 mm aside
+    blunt = ((20.0, 0.0), (21.0, 1.5), (20.6, 0.0), (21.0, -1.5))   # its apex 112° wide
+    found = marks(Drawing(outlines=[Outline(flag, closed=True), Outline(blunt, closed=True)]))
+    assert {(m.at, m.kind) for m in found} == {(p, Kind.JUNCTION) for p in flag + blunt}
+
+
+def test_a_number_in_a_ring_is_a_steps_number_never_a_subscript():
+    """A step's number in its ring just after a label's end (``A_C ⑬`` as a worked figure
+    sets it, the ring 1.85 mm round the 1.95 mm number) stays a number of its own, and the
+    sheet takes it and its ring for a step's; a subscript set as a text of its own beside a
+    pin's circle (``a`` ``4``, the circle 1.2 mm, 0.5 mm from where the 4 starts but 1.3 mm
+    from its letters' middle) is still the label's, and so is one beside a dot smaller
+    than half its size."""
+    from tarsim.exercises.grading.sheet import split
+
+    svg = ('<svg xmlns="http://www.w3.org/2000/svg" width="100mm" height="100mm" '
+           'viewBox="0 0 100 100">'
+           '<text x="10" y="20" font-size="3.4">A<tspan dy="0.95" font-size="2.45">C</tspan>'
+           '</text><circle cx="16.8" cy="19.3" r="1.85" fill="none" stroke="#000"/>'
+           '<text x="16.8" y="19.98" font-size="1.95" text-anchor="middle">13</text>'
+           '<circle cx="51.6" cy="50.6" r="1.2"/><text x="50.1" y="49.7" font-size="3.5">a'
+           '</text><text x="52.1" y="50.8" font-size="2.3">4</text>'
+           '<circle cx="75.1" cy="49.9" r="0.18"/><text x="74.8" y="51.0" font-size="3.5">b'
+           '</text><text x="75.4" y="51.3" font-size="2.3">4</text></svg>')
+    d = parse_drawing(svg.encode(), "ring.svg")
+    assert sorted(label.text for label in d.labels) == ["13", "AC", "a4", "b4"]
+    polygons, space = split(d, ["A", "C"])
+    assert "13" not in [label.text for label in polygons.labels + space.labels]
+    assert (16.8, 19.3) not in [c for c, _ in polygons.circles]

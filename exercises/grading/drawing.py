@@ -18,7 +18,9 @@ student types it) joins the letter's label as written, ``a`` ``4`` ``′`` readi
 a text that starts within :data:`NEAR_END` of a label's end (:data:`NEAR_END_SMALLER` if
 smaller) and is either smaller than it or set lower by less than a line (:func:`follows`),
 one subscript to a label (a link's number, or a pole's v or a), primes before or after it.
-A number standing apart (a centre's ``13``, a step's number) stays a label of its own.
+A number standing apart (a centre's ``13``, a step's number) stays a label of its own, and
+so does a number in a ring (:func:`ringed`, a step's number as a worked figure circles
+it), however near a label's end it stands.
 """
 
 from __future__ import annotations
@@ -32,12 +34,14 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from ...constructions.errors import InputError
+from .labels import step_number
 from .safe_svg import MARK, MAX_ELEMENTS, MAX_POINTS, Kept, Reduced, readable_count, reduce_svg
 from .svg_style import MEDIUM
 
 __all__ = ["Drawing", "Label", "Outline", "read_drawing", "parse_drawing", "file_name",
            "printable", "follows", "advance", "MAX_BYTES", "MAX_ELEMENTS", "MAX_POINTS", "PAPER",
-           "LETTER", "NEAR_END", "NEAR_END_SMALLER", "SHIFT", "SMALLER", "PRIMES"]
+           "LETTER", "NEAR_END", "NEAR_END_SMALLER", "SHIFT", "SMALLER", "PRIMES", "RING",
+           "ringed"]
 
 MAX_BYTES = 5_000_000
 """The largest drawing read (bytes), compressed or unpacked: a page of lines and labels is
@@ -181,9 +185,41 @@ def follows(label: Label, end: float, text: Label, subscripted: bool = False) ->
     return SHIFT[0] * em <= dy <= SHIFT[1] * em
 
 
-def _joined(labels: list[Label]) -> list[Label]:
+RING = 4.0
+"""The largest ring (mm radius) a figure circles a step's number in."""
+
+
+def ringed(labels: list[Label], circles: list[tuple[Vec, float]]) -> dict[int, int]:
+    """The bare numbers of ``labels`` that stand in a ring of ``circles``, as a figure
+    circles its steps' numbers: a circle of radius :data:`RING` at most and half the
+    number's size at least (a dot beside a subscript is no ring), centred on the number's
+    letters (within half its radius; a pin's circle beside a centre's subscript is not).
+    Label index → circle index.
+
+    >>> ringed([Label("13", (9.0, 11.0), 2.0), Label("a", (9.0, 11.0))], [((10.0, 10.3), 1.85)])
+    {0: 0}
+    """
+    rings = sorted((c[0], k) for k, (c, r) in enumerate(circles) if r <= RING)
+    xs = [x for x, _ in rings]
+    out = {}
+    for k, lb in enumerate(labels):
+        if not step_number(lb.text):
+            continue
+        middle = (lb.at[0] + lb.width() / 2.0, lb.at[1] - 0.35 * lb.size)
+        lo = bisect.bisect_left(xs, middle[0] - RING)
+        hi = bisect.bisect_right(xs, middle[0] + RING)
+        ring = min((j for _, j in rings[lo:hi] if 0.5 * lb.size <= circles[j][1] and
+                    math.dist(circles[j][0], middle) <= 0.5 * circles[j][1] + 0.3), default=None)
+        if ring is not None:
+            out[k] = ring
+    return out
+
+
+def _joined(labels: list[Label], circles: list[tuple[Vec, float]] = ()) -> list[Label]:
     """``labels`` with each subscript or prime set as a text of its own joined to its
-    letter's label (:func:`follows`), kept where the letter is, in the letter's order."""
+    letter's label (:func:`follows`), kept where the letter is, in the letter's order; a
+    number in a ring (:func:`ringed`) joins nothing."""
+    apart = set(ringed(labels, list(circles))) if circles else set()
     order = sorted(range(len(labels)), key=lambda k: (labels[k].at[0], k))
     xs = [labels[k].at[0] for k in order]
     used: set[int] = set()
@@ -192,13 +228,17 @@ def _joined(labels: list[Label]) -> list[Label]:
         if k in used:
             continue
         label = labels[k]
+        if k in apart:
+            out[k] = label
+            continue
         text, end = label.text, label.at[0] + label.width()
         subscripted = text[-1:].isdigit()
         while True:
             lo = bisect.bisect_left(xs, end - NEAR_END_SMALLER * label.size)
             hi = bisect.bisect_right(xs, end + NEAR_END_SMALLER * label.size)
             near = [order[j] for j in range(lo, hi) if order[j] != k and order[j] not in used
-                    and follows(label, end, labels[order[j]], subscripted)]
+                    and order[j] not in apart and follows(label, end, labels[order[j]],
+                                                          subscripted)]
             if not near:
                 break
             j = min(near, key=lambda j: (abs(labels[j].at[0] - end), j))
@@ -351,7 +391,7 @@ def _geometry(reduced: Reduced, name: str) -> Drawing:
                 ring = o.corners + o.corners[:1] if o.closed else o.corners
                 out.segments += [(a, b) for a, b in zip(ring, ring[1:]) if a != b]
     # A text drawn again where it stands (GeoGebra's halo behind a label) is one label.
-    out.labels = _joined(list(dict.fromkeys(labels)))
+    out.labels = _joined(list(dict.fromkeys(labels)), out.circles)
     return out
 
 

@@ -13,7 +13,9 @@ How each :class:`Kind` is told, sizes in paper mm:
   than a block, that no shaft runs into.
 - **tip**: an arrowhead's apex. A closed polygon within :data:`HEAD` that a longer stroke
   (its shaft) runs into, the apex on the shaft's line and ahead of its other corners; a
-  triangle within :data:`_ALONE` with one clearly sharpest corner, alone; two short strokes
+  triangle within :data:`_ALONE` with one clearly sharpest corner, alone; a barbed head
+  (a dart) within :data:`_ALONE` by its shape, its shaft, if any, shorter than it (a
+  short arrow's), ending inside it; two short strokes
   (a V's wings) meeting where a shaft ends and swept back along it; a stroke's end that
   carries a marker.
 - **block**: the middle of a closed quadrilateral of square corners, no side longer than
@@ -349,31 +351,36 @@ class _Web:
         """The tip at the apex of the arrowhead ``poly`` is, if it is one: the corner ahead
         along the shaft that runs into it (a stroke longer than the head, ending in or on
         it), on the shaft's line; failing a shaft, a triangle's one clearly sharpest
-        corner. The shaft's end is then part of the arrow; where it reaches the apex, the
-        tip takes a label for each stroke ending there with it."""
+        corner, or a dart's apex (:func:`_barbed`). The shaft's end is then part of the
+        arrow; where it reaches the apex, the tip takes a label for each stroke ending
+        there with it."""
         size = _extent(poly)
         xs, ys = [p[0] for p in poly], [p[1] for p in poly]
-        for cx in range(math.floor((min(xs) - JOIN) / 2.0), math.floor((max(xs) + JOIN) / 2.0)
-                        + 1):
-            for cy in range(math.floor((min(ys) - JOIN) / 2.0),
-                            math.floor((max(ys) + JOIN) / 2.0) + 1):
-                for k in self.near.get((cx, cy), ()):
-                    q = self.places[k]
-                    if not _within(q.at, poly):
-                        continue
-                    for far, length, _ in q.leaving:
-                        apex = _apex(poly, far, q.at, size) if length >= size else None
-                        if apex is not None:
-                            q.part = True
-                            return Mark(apex, Kind.TIP, len(q.leaving)
-                                        if math.dist(q.at, apex) <= JOIN else 1)
-        if len(poly) == 3 and size <= _ALONE:
-            angles = sorted((abs(math.pi - abs(_turn(poly[k - 1], poly[k], poly[(k + 1) % 3]))),
-                             k) for k in range(3))
-            if angles[0][0] <= math.radians(60.0) and \
-                    angles[1][0] - angles[0][0] >= math.radians(15.0):
-                return Mark(poly[angles[0][1]], Kind.TIP)
-        return None
+        within = [self.places[k] for cx in range(math.floor((min(xs) - JOIN) / 2.0),
+                                                 math.floor((max(xs) + JOIN) / 2.0) + 1)
+                  for cy in range(math.floor((min(ys) - JOIN) / 2.0),
+                                  math.floor((max(ys) + JOIN) / 2.0) + 1)
+                  for k in self.near.get((cx, cy), ()) if _within(self.places[k].at, poly)]
+        tip = None
+        for q in within:
+            for far, length, _ in q.leaving:
+                apex = _apex(poly, far, q.at, size) if length >= size else None
+                if apex is not None:
+                    q.part = True
+                    tip = Mark(apex, Kind.TIP, len(q.leaving)
+                               if math.dist(q.at, apex) <= JOIN else 1)
+                    break
+            if tip is not None:
+                break
+        if tip is None and size <= _ALONE:
+            apex = _sharpest(poly) if len(poly) == 3 else _barbed(poly)
+            tip = None if apex is None else Mark(apex, Kind.TIP)
+        if tip is not None:
+            # A shaft shorter than the head ends inside it, behind the apex.
+            for q in within:
+                if len(q.leaving) == 1 and math.dist(q.at, tip.at) > JOIN:
+                    q.part = True
+        return tip
 
     def marks(self) -> list[Mark]:
         """The tips, blocks, junctions and ends where the strokes meet, their arrowheads'
@@ -438,7 +445,9 @@ def _apex(poly: list[Vec], far: Vec, near: Vec, size: float) -> Vec | None:
     """The corner of ``poly`` a shaft from ``far`` to ``near`` points to: ahead of the
     other corners along it by a tenth of the head at least (an outlined V's inner corner
     stands a line's width behind), on its line, and no nearer the shaft's start than its
-    end is; None if no corner is."""
+    end is; None if no corner is. A stroke from an outward corner (the next arrow leaving
+    this one's apex) points to that corner or to none: only a notch, turned inward, is a
+    shaft's end behind the apex."""
     length = math.dist(far, near)
     if length == 0.0:
         return None
@@ -449,7 +458,52 @@ def _apex(poly: list[Vec], far: Vec, near: Vec, size: float) -> Vec | None:
     if first - second < 0.1 * size or aside > max(JOIN, 0.15 * size) or \
             first < length - JOIN or ahead[0][0] <= 0.0:
         return None
+    if math.dist(near, apex) > JOIN and \
+            any(math.dist(near, poly[k]) <= JOIN for k in _outward(poly)):
+        return None
     return apex
+
+
+def _outward(poly: list[Vec]) -> list[int]:
+    """The corners of the polygon ``poly`` that turn outward (all but a notch's), by index."""
+    turns = [_turn(poly[k - 1], poly[k], poly[(k + 1) % len(poly)]) for k in range(len(poly))]
+    sense = 1.0 if sum(turns) > 0.0 else -1.0
+    return [k for k, t in enumerate(turns) if t * sense > 0.0]
+
+
+def _sharpest(poly: list[Vec]) -> Vec | None:
+    """A triangle's one clearly sharpest corner (60° at most, 15° sharper than the next),
+    an arrowhead's apex told by its shape alone; None if it has none."""
+    angles = sorted((abs(math.pi - abs(_turn(poly[k - 1], poly[k], poly[(k + 1) % 3]))), k)
+                    for k in range(3))
+    if angles[0][0] <= math.radians(60.0) and angles[1][0] - angles[0][0] >= math.radians(15.0):
+        return poly[angles[0][1]]
+    return None
+
+
+def _barbed(poly: list[Vec]) -> Vec | None:
+    """The apex of a barbed arrowhead (a dart: apex, wing, notch, wing), told by its shape
+    alone, as an arrow too short for a shaft longer than its head is: the corner opposite
+    its one reflex corner (the notch), square or sharper, the notch on the line from it
+    to the wings' middle and between the two; None if ``poly`` is no such dart."""
+    if len(poly) != 4:
+        return None
+    outward = _outward(poly)
+    if len(outward) != 3:
+        return None
+    notch = next(k for k in range(4) if k not in outward)
+    apex, wings = poly[(notch + 2) % 4], (poly[notch - 1], poly[(notch + 1) % 4])
+    if math.pi - abs(_turn(poly[(notch + 1) % 4], apex, poly[(notch + 3) % 4])) > \
+            math.radians(90.0):
+        return None
+    base = ((wings[0][0] + wings[1][0]) / 2.0, (wings[0][1] + wings[1][1]) / 2.0)
+    axis = math.dist(apex, base)
+    if axis == 0.0:
+        return None
+    u = ((base[0] - apex[0]) / axis, (base[1] - apex[1]) / axis)
+    p = (poly[notch][0] - apex[0], poly[notch][1] - apex[1])
+    along, aside = p[0] * u[0] + p[1] * u[1], abs(p[0] * u[1] - p[1] * u[0])
+    return apex if 0.0 < along < axis and aside <= 0.15 * _extent(poly) else None
 
 
 def _v_tip(place: _Place, places: list[_Place]) -> None:

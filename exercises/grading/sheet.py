@@ -19,13 +19,10 @@ from __future__ import annotations
 import math
 from dataclasses import replace
 
-from .drawing import Drawing, Label
-from .labels import plain, read_centre, read_names, step_number
+from .drawing import RING, Drawing, Label, ringed
+from .labels import plain, read_centre, read_names
 
 __all__ = ["split", "RING"]
-
-RING = 4.0
-"""The largest ring (mm radius) a figure circles a step's number in."""
 
 COLUMN = 5
 """The fewest labels one under another at a steady pitch that make a table's column."""
@@ -68,17 +65,7 @@ def split(drawing: Drawing, point_names) -> tuple[Drawing, Drawing]:
 
 def _rings(drawing: Drawing) -> dict[int, int]:
     """The numbers a figure circles as its steps' numbers: label index → ring index."""
-    out = {}
-    for k, lb in enumerate(drawing.labels):
-        if not step_number(lb.text):
-            continue
-        x0, x1 = lb.at[0], lb.at[0] + 2.0 * len(lb.text)
-        spots = (lb.at, ((x0 + x1) / 2.0, lb.at[1] - 1.2), (lb.at[0], lb.at[1] - 1.2))
-        ring = next((j for j, (c, r) in enumerate(drawing.circles)
-                     if r <= RING and any(math.dist(c, p) <= r + 0.3 for p in spots)), None)
-        if ring is not None:
-            out[k] = ring
-    return out
+    return ringed(drawing.labels, drawing.circles)
 
 
 def _table_columns(labels: list[Label]) -> set[int]:
