@@ -545,3 +545,20 @@ def test_a_number_in_a_ring_is_a_steps_number_never_a_subscript():
     polygons, space = split(d, ["A", "C"])
     assert "13" not in [label.text for label in polygons.labels + space.labels]
     assert (16.8, 19.3) not in [c for c, _ in polygons.circles]
+
+
+def test_a_line_run_a_centimetre_past_a_tip_ends_in_nothing_a_label_names():
+    """A working line drawn through an arrow's tip and on a centimetre past it, read back a
+    few micrometres longer (10.000005 mm, as a mm is read as 3.7795296 px), ends in no
+    point: a label by that end (1.1 mm, 3.1 with a bare end's cost) names the tip, 6.4 mm
+    off."""
+    from tarsim.exercises.grading.drawing import Drawing, Outline
+
+    tip = (50.0, 50.0)
+    d = Drawing(outlines=[Outline(((20.0, 50.0), (47.0, 50.0))),
+                          Outline((tip, (47.0, 51.0), (47.0, 49.0)), closed=True),
+                          Outline(((50.0, 40.0 - 5e-6), (50.0, 60.0 + 5e-6)))],
+                labels=[Label("b", (51.0, 59.5), 4.0)])
+    found = marks(d)
+    assert not [m for m in found if m.kind is Kind.END and m.at[0] == 50.0]
+    assert near(match(d, lambda t: ("p", t))["p", "b"], tip)

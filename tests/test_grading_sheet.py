@@ -70,6 +70,24 @@ def test_the_space_diagram_beside_the_polygon_is_told_from_it(tmp_path):
     assert {i.verdict for i in g.items} == {"correct"}, g.items
 
 
+@pytest.mark.parametrize("anchor", ["start", "end"])
+def test_a_results_tables_column_is_no_label_of_the_sheet(tmp_path, anchor):
+    """A results table beside the drawing lists I₁₂, ω₃, I₁₃, … one under another at a
+    steady pitch, flush left as an English page sets it or flush right (text-anchor end) as
+    a right-to-left one does, where names of different widths start at different places:
+    neither column is read as the space diagram's centres, so every centre is still graded
+    from the diagram and nothing is said to be near no point."""
+    sol = solve_positions(FOUR_BAR)[0]
+    names = ["I₁₂", "ω₃", "I₁₃", "ω₄", "I₂₃", "α₃", "I₂₄", "α₄"]
+    table = "".join(f'<text x="200" y="{300 + 5.6 * k:.2f}" font-size="3.2" '
+                    f'text-anchor="{anchor}">{name}</text>' for k, name in enumerate(names))
+    svg = _sheet((centres_drawing(sol), 0.0), (drawing(sol, Style()), 120.0), extra=table)
+    g, items = _graded(tmp_path, svg, FOUR_BAR)
+    assert len([n for n in items if n.startswith("I")]) >= 5
+    assert {i.verdict for i in g.items} == {"correct"}, g.items
+    assert not [n for n in g.notes if "near no" in n], g.notes
+
+
 def test_construction_points_are_said_and_cost_nothing(tmp_path):
     """n and x, labelled where a student marks where two construction lines cross, are no
     answer: the grade says it took them for construction points and the score stays."""

@@ -53,7 +53,8 @@ a polygon of a drawing is larger."""
 
 OVERSHOOT = 10.0
 """The farthest (mm) a line drawn through a point runs on past it: its end there names
-nothing."""
+nothing. A centimetre, to within :data:`JOIN` (a line drawn a centimetre past is read
+back a few micrometres longer or shorter)."""
 
 BLOCK = 20.0
 """The longest side of a slider block (mm)."""
@@ -174,7 +175,7 @@ def _past_points(found: list[Mark], ends: dict[Vec, Vec]) -> list[Mark]:
     def past(m: Mark) -> bool:
         if m.kind is not Kind.END or m.at not in ends:
             return False
-        near = xy[np.hypot(xy[:, 0] - m.at[0], xy[:, 1] - m.at[1]) <= OVERSHOOT]
+        near = xy[np.hypot(xy[:, 0] - m.at[0], xy[:, 1] - m.at[1]) <= OVERSHOOT + JOIN]
         return any(_on(tuple(p), m.at, ends[m.at]) for p in near)
     return [m for m in found if not past(m)]
 

@@ -69,11 +69,14 @@ def _rings(drawing: Drawing) -> dict[int, int]:
 
 
 def _table_columns(labels: list[Label]) -> set[int]:
-    """Labels standing in a table's column: :data:`COLUMN` or more left-aligned one under
-    another at a steady pitch, as a results table lists its quantities."""
-    by_x: dict[int, list[int]] = {}
+    """Labels standing in a table's column: :data:`COLUMN` or more aligned one under
+    another at a steady pitch, as a results table lists its quantities: flush left, or
+    flush right as a right-to-left page sets them (its end read where the text is
+    anchored, its letters' width taken off to find its start, and put back)."""
+    by_x: dict[tuple[str, int], list[int]] = {}
     for k, lb in enumerate(labels):
-        by_x.setdefault(round(lb.at[0] / 0.2), []).append(k)
+        by_x.setdefault(("start", round(lb.at[0] / 0.2)), []).append(k)
+        by_x.setdefault(("end", round((lb.at[0] + lb.width()) / 0.2)), []).append(k)
     out: set[int] = set()
     for column in by_x.values():
         column.sort(key=lambda k: labels[k].at[1])
