@@ -218,8 +218,10 @@ def grade_many(source: str, drawings: list[Path], position: int = 0, workers: in
                 done()
             yield result
         return
+    # Some drawings a round trip: a drawing is graded in milliseconds, as long as one trip.
+    chunk = max(1, min(16, len(jobs) // (4 * workers)))
     with ProcessPoolExecutor(max_workers=workers) as pool:
-        for result in pool.map(_one, jobs):
+        for result in pool.map(_one, jobs, chunksize=chunk):
             if done:
                 done()
             yield result

@@ -177,7 +177,8 @@ def _expected(sol) -> dict[str, _Expected]:
 
 def _grade_one(poly: _Expected, found, written: float | None, out: Grade, drafting: Drafting,
                orientation: tuple[float, float] | None):
-    """Grade one polygon's tips into ``out``; return what its overlay draws."""
+    """Grade one polygon's tips into ``out``; return what its overlay draws: (kind, None,
+    pole, each tip expected), in paper mm."""
     mark = "′" if poly.kind == "a" else ""
     pole, given = found.get((poly.kind, "o")), found.get((poly.kind, poly.given))
     e_given = poly.tips.get(poly.given, (0.0, 0.0))
@@ -193,7 +194,9 @@ def _grade_one(poly: _Expected, found, written: float | None, out: Grade, drafti
                                       frame, items)
     out.items += list(items.values())
     names = _names(poly, found)
-    return poly, frame, pole, {n: frame.place(poly.tips[n]) for n in names}
+    # What the overlay draws: the pole and each tip expected (not tarsim's construction,
+    # which a worker would send back with every grade).
+    return poly.kind, None, pole, {n: frame.place(poly.tips[n]) for n in names}
 
 
 def _names(poly: _Expected, found) -> list[str]:
