@@ -34,22 +34,21 @@ import math
 from dataclasses import dataclass
 from enum import StrEnum
 
+from . import arrowheads
+from .arrowheads import JOIN, extent, turn
 from .drawing import Drawing, Outline
 
 __all__ = ["Kind", "Mark", "marks", "touching", "PENALTY", "JOIN", "HEAD", "BLOCK"]
 
 Vec = tuple[float, float]
 
-JOIN = 0.25
-"""Ends within this (mm, half a 0.5 mm pen's line) meet."""
-
 HEAD = 12.0
 """The largest an arrowhead or a V's wing is (mm): a drafted arrowhead is 3–5 mm long,
 GeoGebra's 17 px (4.5 mm) and, for its thickest vectors, 39 px (10.3 mm)."""
 
 _ALONE = 6.0
-"""The largest a triangle with no shaft is told an arrowhead by its one sharp corner (mm):
-a polygon of a drawing is larger."""
+"""The largest a polygon with no shaft is told an arrowhead by its shape alone (mm): a
+polygon of a drawing is larger."""
 
 OVERSHOOT = 10.0
 """The farthest (mm) a line drawn through a point runs on past it: its end there names
@@ -145,7 +144,7 @@ def marks(drawing: Drawing) -> list[Mark]:
         sides = [math.dist(a, b) for a, b in zip(poly, poly[1:] + poly[:1])]
         if len(poly) == 4 and max(sides) <= BLOCK and _square(poly):
             out.append(Mark(_middle(poly), Kind.BLOCK, 0))
-        elif _extent(poly) <= HEAD:
+        elif extent(poly) <= HEAD:
             heads.append(poly)
         else:
             web.stroke(poly, True)
@@ -236,27 +235,17 @@ def _simplified(corners: list[Vec]) -> list[Vec]:
         changed = False
         for k in range(len(out)):
             a, b, c = out[k - 1], out[k], out[(k + 1) % len(out)]
-            if abs(_turn(a, b, c)) < math.radians(2.0) or math.dist(a, b) < 1e-6:
+            if abs(turn(a, b, c)) < math.radians(2.0) or math.dist(a, b) < 1e-6:
                 del out[k]
                 changed = True
                 break
     return out
 
 
-def _turn(a: Vec, b: Vec, c: Vec) -> float:
-    """How far a path a → b → c turns at b (radians, either way)."""
-    u, v = (b[0] - a[0], b[1] - a[1]), (c[0] - b[0], c[1] - b[1])
-    return math.atan2(u[0] * v[1] - u[1] * v[0], u[0] * v[0] + u[1] * v[1])
-
-
 def _square(poly: list[Vec]) -> bool:
     """Whether a quadrilateral's corners are all right angles, within :data:`_SQUARE`."""
-    return all(abs(abs(_turn(poly[k - 1], poly[k], poly[(k + 1) % 4])) - math.pi / 2)
+    return all(abs(abs(turn(poly[k - 1], poly[k], poly[(k + 1) % 4])) - math.pi / 2)
                <= _SQUARE for k in range(4))
-
-
-def _extent(points: list[Vec]) -> float:
-    return max(math.dist(p, q) for p in points for q in points)
 
 
 def _round(points: list[Vec]) -> bool:
@@ -352,20 +341,21 @@ class _Web:
         """The tip at the apex of the arrowhead ``poly`` is, if it is one: the corner ahead
         along the shaft that runs into it (a stroke longer than the head, ending in or on
         it), on the shaft's line; failing a shaft, a triangle's one clearly sharpest
-        corner, or a dart's apex (:func:`_barbed`). The shaft's end is then part of the
-        arrow; where it reaches the apex, the tip takes a label for each stroke ending
-        there with it."""
-        size = _extent(poly)
+        corner, or a dart's apex (:func:`.arrowheads.barbed`). The shaft's end is then part
+        of the arrow; where it reaches the apex, the tip takes a label for each stroke
+        ending there with it."""
+        size = extent(poly)
         xs, ys = [p[0] for p in poly], [p[1] for p in poly]
-        within = [self.places[k] for cx in range(math.floor((min(xs) - JOIN) / 2.0),
+        inside = [self.places[k] for cx in range(math.floor((min(xs) - JOIN) / 2.0),
                                                  math.floor((max(xs) + JOIN) / 2.0) + 1)
                   for cy in range(math.floor((min(ys) - JOIN) / 2.0),
                                   math.floor((max(ys) + JOIN) / 2.0) + 1)
-                  for k in self.near.get((cx, cy), ()) if _within(self.places[k].at, poly)]
+                  for k in self.near.get((cx, cy), ())
+                  if arrowheads.within(self.places[k].at, poly)]
         tip = None
-        for q in within:
+        for q in inside:
             for far, length, _ in q.leaving:
-                apex = _apex(poly, far, q.at, size) if length >= size else None
+                apex = arrowheads.apex(poly, far, q.at, size) if length >= size else None
                 if apex is not None:
                     q.part = True
                     tip = Mark(apex, Kind.TIP, len(q.leaving)
@@ -374,11 +364,11 @@ class _Web:
             if tip is not None:
                 break
         if tip is None and size <= _ALONE:
-            apex = _sharpest(poly) if len(poly) == 3 else _barbed(poly)
+            apex = arrowheads.sharpest(poly) if len(poly) == 3 else arrowheads.barbed(poly)
             tip = None if apex is None else Mark(apex, Kind.TIP)
         if tip is not None:
             # A shaft shorter than the head ends inside it, behind the apex.
-            for q in within:
+            for q in inside:
                 if len(q.leaving) == 1 and math.dist(q.at, tip.at) > JOIN:
                     q.part = True
         return tip
@@ -425,86 +415,6 @@ class _Web:
                             if len(self.places[k].leaving) == 2:
                                 self.places[k].part = True
         return out
-
-
-def _within(p: Vec, poly: list[Vec]) -> bool:
-    """Whether ``p`` lies inside the polygon ``poly`` or within :data:`JOIN` of its edge."""
-    inside = False
-    for a, b in zip(poly, poly[1:] + poly[:1]):
-        if (a[1] > p[1]) != (b[1] > p[1]) and \
-                p[0] < a[0] + (p[1] - a[1]) * (b[0] - a[0]) / (b[1] - a[1]):
-            inside = not inside
-        d = (b[0] - a[0], b[1] - a[1])
-        t = max(0.0, min(1.0, ((p[0] - a[0]) * d[0] + (p[1] - a[1]) * d[1])
-                         / max(d[0] ** 2 + d[1] ** 2, 1e-300)))
-        if math.dist(p, (a[0] + t * d[0], a[1] + t * d[1])) <= JOIN:
-            return True
-    return inside
-
-
-def _apex(poly: list[Vec], far: Vec, near: Vec, size: float) -> Vec | None:
-    """The corner of ``poly`` a shaft from ``far`` to ``near`` points to: ahead of the
-    other corners along it by a tenth of the head at least (an outlined V's inner corner
-    stands a line's width behind), on its line, and no nearer the shaft's start than its
-    end is; None if no corner is. A stroke from an outward corner (the next arrow leaving
-    this one's apex) points to that corner or to none: only a notch, turned inward, is a
-    shaft's end behind the apex."""
-    length = math.dist(far, near)
-    if length == 0.0:
-        return None
-    u = ((near[0] - far[0]) / length, (near[1] - far[1]) / length)
-    ahead = sorted(((p[0] - far[0]) * u[0] + (p[1] - far[1]) * u[1], p) for p in poly)
-    (first, apex), (second, _) = ahead[-1], ahead[-2]
-    aside = abs((apex[0] - far[0]) * u[1] - (apex[1] - far[1]) * u[0])
-    if first - second < 0.1 * size or aside > max(JOIN, 0.15 * size) or \
-            first < length - JOIN or ahead[0][0] <= 0.0:
-        return None
-    if math.dist(near, apex) > JOIN and \
-            any(math.dist(near, poly[k]) <= JOIN for k in _outward(poly)):
-        return None
-    return apex
-
-
-def _outward(poly: list[Vec]) -> list[int]:
-    """The corners of the polygon ``poly`` that turn outward (all but a notch's), by index."""
-    turns = [_turn(poly[k - 1], poly[k], poly[(k + 1) % len(poly)]) for k in range(len(poly))]
-    sense = 1.0 if sum(turns) > 0.0 else -1.0
-    return [k for k, t in enumerate(turns) if t * sense > 0.0]
-
-
-def _sharpest(poly: list[Vec]) -> Vec | None:
-    """A triangle's one clearly sharpest corner (60° at most, 15° sharper than the next),
-    an arrowhead's apex told by its shape alone; None if it has none."""
-    angles = sorted((abs(math.pi - abs(_turn(poly[k - 1], poly[k], poly[(k + 1) % 3]))), k)
-                    for k in range(3))
-    if angles[0][0] <= math.radians(60.0) and angles[1][0] - angles[0][0] >= math.radians(15.0):
-        return poly[angles[0][1]]
-    return None
-
-
-def _barbed(poly: list[Vec]) -> Vec | None:
-    """The apex of a barbed arrowhead (a dart: apex, wing, notch, wing), told by its shape
-    alone, as an arrow too short for a shaft longer than its head is: the corner opposite
-    its one reflex corner (the notch), square or sharper, the notch on the line from it
-    to the wings' middle and between the two; None if ``poly`` is no such dart."""
-    if len(poly) != 4:
-        return None
-    outward = _outward(poly)
-    if len(outward) != 3:
-        return None
-    notch = next(k for k in range(4) if k not in outward)
-    apex, wings = poly[(notch + 2) % 4], (poly[notch - 1], poly[(notch + 1) % 4])
-    if math.pi - abs(_turn(poly[(notch + 1) % 4], apex, poly[(notch + 3) % 4])) > \
-            math.radians(90.0):
-        return None
-    base = ((wings[0][0] + wings[1][0]) / 2.0, (wings[0][1] + wings[1][1]) / 2.0)
-    axis = math.dist(apex, base)
-    if axis == 0.0:
-        return None
-    u = ((base[0] - apex[0]) / axis, (base[1] - apex[1]) / axis)
-    p = (poly[notch][0] - apex[0], poly[notch][1] - apex[1])
-    along, aside = p[0] * u[0] + p[1] * u[1], abs(p[0] * u[1] - p[1] * u[0])
-    return apex if 0.0 < along < axis and aside <= 0.15 * _extent(poly) else None
 
 
 def _v_tip(place: _Place, places: list[_Place]) -> None:
