@@ -131,13 +131,17 @@ class LabelPlacer:
              anchor: tuple[float, float] | list[tuple[float, float]], *,
              prefer: float | tuple[float, ...] = math.pi / 4, spread: float = math.pi,
              gap: float = 2.6, rings: tuple[float, ...] = (1.0, 1.6, 2.3),
-             own: Owned | None = None) -> tuple[tuple[float, float], float]:
+             own: Owned | None = None,
+             crossing: float = 0.0) -> tuple[tuple[float, float], float]:
         """Find the centre of a ``width`` × ``height`` box near ``anchor``; nothing is drawn.
 
         Directions are tried from each ``prefer`` angle (paper, rad) outwards, up to
         ``spread`` either side; the box's edge, not its centre, stands ``gap`` off
         the anchor. With ``own``, the name in the box stands nearer its point or vector
         than any other :meth:`named <name_points>` one, or else pays :data:`_ASTRAY`.
+        Where no spot is clear, the nearest that covers no more than ``crossing`` (the
+        weighted ink of thin lines a label may cross; first one that only touches them,
+        :data:`_TOUCH`) is taken before the least covered.
         Returns the centre and the overlap left (0 when clear).
         """
         self._see_heads()
@@ -153,8 +157,12 @@ class LabelPlacer:
             xy, ink = self._ring_costs(width / 2, height / 2, anchors, prefers, spread, gap,
                                        between, 16)
             first = self._first_own(xy, ink, own)
+            for most in (min(_TOUCH, crossing), crossing):
+                if first is None and most > 0.0:
+                    first = self._first_own(xy, ink, own, most)
         if first is not None:
-            return (float(xy[first, 0]), float(xy[first, 1])), 0.0
+            left = float(ink[first]) if ink[first] >= _NO_INK else 0.0
+            return (float(xy[first, 0]), float(xy[first, 1])), left
         costs = ink.copy()
         if own is not None:
             # Straying costs _ASTRAY: a spot with that much more ink than the least cannot win.
@@ -164,10 +172,11 @@ class LabelPlacer:
         k = int(np.argmin(costs))
         return (float(xy[k, 0]), float(xy[k, 1])), float(costs[k])
 
-    def _first_own(self, xy: np.ndarray, ink: np.ndarray, own: Owned | None) -> int | None:
-        """The first spot clear of ink whose name stands nearer its own than any other (the
-        nearness asked only of the clear ones), or None."""
-        free = np.flatnonzero(ink < _NO_INK)
+    def _first_own(self, xy: np.ndarray, ink: np.ndarray, own: Owned | None,
+                   crossing: float = 0.0) -> int | None:
+        """The first spot clear of ink (or covering ``crossing`` at most) whose name stands
+        nearer its own than any other (the nearness asked only of the clear ones), or None."""
+        free = np.flatnonzero(ink < _NO_INK + crossing)
         if own is not None and len(free):
             free = free[~self._astray(xy[free], own)]
         return int(free[0]) if len(free) else None
@@ -193,14 +202,13 @@ class LabelPlacer:
         """Whether the name in each box centred at ``xy`` stands nearer another named thing
         of its kind (point or vector) than its own; those within half a millimetre of it are
         its own."""
-        shape, dx, dy, hw, hh = own
+        shape, hw, hh = own[0], own[3], own[4]
         out = np.zeros(len(xy), dtype=bool)
         named, pts = self._named_of_kind(len(shape))
         if not named:
             return out
         rival = np.array([not _same(r, shape) for r in named])
-        centre = xy + (dx, dy)
-        mine = _box_distance(centre, hw, hh, _ends([shape]))[:, 0]
+        centre, mine, _ = _name_at(xy, own)
         # A rival can be nearer a box only if its bounding box is: test the pairs that may.
         lo, hi = pts.min(axis=1)[rival], pts.max(axis=1)[rival]
         gx = np.maximum(np.maximum(lo[None, :, 0] - centre[:, None, 0],
@@ -276,7 +284,7 @@ class LabelPlacer:
         # The box of a subscripted label hangs below its centre line: aim the box.
         dy = (y0 + y1) / 2
         own = _shape(own)
-        owned = None if own is None else (own, 0.0, 0.0, (x1 - x0) / 2, (y1 - y0) / 2)
+        owned = None if own is None else (own, 0.0, 0.0, (x1 - x0) / 2, (y1 - y0) / 2, 0.0)
         c, _ = self.spot(x1 - x0, y1 - y0, anchor, prefer=prefer, spread=spread, gap=gap,
                          rings=rings, own=owned)
         t = Text((c[0], c[1] - dy), text, size, "middle", italic, sub=sub, owner=own)
@@ -289,19 +297,23 @@ class LabelPlacer:
                        prefer: float | tuple[float, ...] = math.pi / 4, spread: float = math.pi,
                        gap: float = 1.4, size: float = 3.4, tail: str = "",
                        rings: tuple[float, ...] = (1.0, 1.6, 2.4, 3.4, 4.6, 6.0, 8.0),
-                       farther: tuple[float, ...] = (),
+                       farther: tuple[float, ...] = (), crossing: float = 0.0,
                        own: Shape | tuple[float, float] | None = None,
-                       also: tuple[tuple[str, str], ...] = ()) -> tuple[float, float] | None:
+                       also: tuple[tuple[str, str], ...] = (),
+                       beside: bool = False) -> tuple[float, float] | None:
         """Place a label followed by circled step numbers, as one unit clear of everything.
 
         Either part may be empty. ``tail`` follows the subscript on the baseline
         ("Aⁿ" sub "B/A" tail " = 0"). ``rings`` are the distances tried, in
         ``gap``s: fewer keep a label by its anchor at the cost of some overlap;
-        ``farther`` rings are tried after them when none of theirs is clear, for a
+        ``farther`` rings are tried after them when none of theirs is clear (covers more
+        than ``crossing``, the weighted ink of thin lines a label may cross), for a
         figure where covering a label is worse than standing a little off. ``own`` is the
         point (or the vector, tail and tip) the text names, if it names one. ``also`` are
         more names, text and subscript, of the same thing, each set after an equals sign
-        ("V_A₂ = V_A₄": one arrow).
+        ("V_A₂ = V_A₄": one arrow). ``beside``: the name stands next to what it names and
+        its numbers beyond it, before it where the unit stands to the left ("②⑤ a₂"), as
+        a reader takes a name for the point nearest it.
         Returns the unit's centre, or None if there was nothing to place.
         """
         if not text and not numbers:
@@ -317,29 +329,39 @@ class LabelPlacer:
         own = _shape(own)
         owned = None
         if own is not None and t:
-            # Only the first name is held to what it names: its box within the unit's.
+            # Only the first name is held to what it names: its box within the unit's, at
+            # the unit's left end, or (beside) after the numbers where that stands it nearer.
             nx0, ny0, nx1, ny1 = t.box()
             owned = (own, ((nx1 - nx0) - w) / 2, (ny0 + ny1 - y0 - y1) / 2, (nx1 - nx0) / 2,
-                     (ny1 - ny0) / 2)
+                     (ny1 - ny0) / 2, sum(2 * r + _SPACE for r in radii) if beside else 0.0)
         c, cost = self.spot(w, h, anchor, prefer=prefer, spread=spread, gap=gap, rings=rings,
-                            own=owned)
-        if cost > 0.0 and farther:
+                            own=owned, crossing=crossing)
+        if cost > crossing and farther:
             c2, cost2 = self.spot(w, h, anchor, prefer=prefer, spread=spread, gap=gap,
                                   rings=farther, own=owned)
             if cost2 < cost:
                 c = c2
         x = c[0] - w / 2
+        numbers_first = owned is not None and bool(_name_at(np.array([c]), owned)[2][0])
+        if numbers_first:
+            x = self._badges(numbers, radii, x, c[1])
         for k, part in enumerate(parts):
             px0, py0, px1, py1 = part.box()
             # the first name stands for the unit: it alone is held near what they name
             self.fig.add(replace(part, at=(x + (px1 - px0) / 2, c[1] - (y0 + y1) / 2),
                                  owner=own if k == 0 else None))
             x += (px1 - px0) + _SPACE
-        for n, r in zip(numbers, radii):
-            draw_badge(self.fig, (x + r, c[1]), n)
-            x += 2 * r + 0.6
+        if not numbers_first:
+            self._badges(numbers, radii, x, c[1])
         self.block_label((c[0] - w / 2, c[1] - h / 2, c[0] + w / 2, c[1] + h / 2))
         return c
+
+    def _badges(self, numbers: list[int], radii: list[float], x: float, y: float) -> float:
+        """Draw circled ``numbers`` in a row from ``x``; return where the row ends."""
+        for n, r in zip(numbers, radii):
+            draw_badge(self.fig, (x + r, y), n)
+            x += 2 * r + _SPACE
+        return x
 
     def block_label(self, bounds: tuple[float, float, float, float]) -> None:
         """Mark a placed label's box ``(x0, y0, x1, y1)`` as taken, with room about it, at
@@ -361,9 +383,10 @@ def paper_angle(v: tuple[float, float]) -> float:
 Shape = tuple[tuple[float, float], ...]
 """A thing a label names, by its points: one for a point, tail and tip for a vector."""
 
-Owned = tuple[Shape, float, float, float, float]
+Owned = tuple[Shape, float, float, float, float, float]
 """What a label names, and its name's box within the label: the box centre's offset from
-the label's, along x and y, and its half width and half height."""
+the label's, along x and y, its half width and half height, and how much farther right
+it stands when the label's other parts are set before it (0: they never are)."""
 
 _ASTRAY = 100.0
 """What a spot costs (mm²) whose name stands nearer another named thing than its own."""
@@ -378,6 +401,9 @@ _HEADS = ("arrowhead",)
 
 _SPACE = 0.6
 """The space (mm) between the parts of a label set in a row: names, then circled numbers."""
+
+_TOUCH = 0.05
+"""Weighted ink (mm²) of a spot whose clearance only touches a line's: no ink is crossed."""
 
 _NO_INK = 1e-6
 """Weighted ink (mm²) below which a spot is clear: a thousandth of the least a cell holds."""
@@ -510,6 +536,24 @@ def _box_distance(centres: np.ndarray, hw: float, hh: float, ends: np.ndarray) -
         (np.minimum(ay, by) <= cy + hh) & (np.maximum(ay, by) >= cy - hh) & \
         (np.abs(dx * (cy - ay) - dy * (cx - ax)) <= hw * np.abs(dy) + hh * np.abs(dx))
     return np.where(meets, 0.0, near)
+
+
+def _name_at(xy: np.ndarray, own: Owned) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """For labels centred at ``xy``: where the name's box stands, how far it is from what
+    it names, and whether it is set after the label's other parts, the nearer of its two
+    places (:data:`Owned`)."""
+    shape, dx, dy, hw, hh, shift = own
+    ends = _ends([shape])
+    centre = xy + (dx, dy)
+    mine = _box_distance(centre, hw, hh, ends)[:, 0]
+    after = np.zeros(len(xy), dtype=bool)
+    if shift:
+        moved = centre + (shift, 0.0)
+        theirs = _box_distance(moved, hw, hh, ends)[:, 0]
+        after = theirs < mine - 1e-6
+        centre = np.where(after[:, None], moved, centre)
+        mine = np.where(after, theirs, mine)
+    return centre, mine, after
 
 
 def _first_clear(costs: np.ndarray) -> int:

@@ -12,7 +12,12 @@ geometry:
   ``Aⁿ_B/A``) set beside it; a vector of no length is written "Aⁿ_B/A = 0" beside
   its point instead of drawn;
 * a tip is its lower-case letter in italic (b, a₄, b′), set in the widest gap
-  between the lines and arrows that meet there.
+  between the lines and arrows that meet there, its step numbers beyond it, and
+  nearer it than any other arrow's tip (labelled or not), as a reader takes a name
+  for the point marked nearest it; it may cross a thin working line rather than
+  stand off where it would name another;
+* an arrow the pole's dot would cover whole is not drawn (its tip is dotted where no
+  other arrow marks it).
 
 The panel has its own nice scale, "1 cm = N mm/s" (or mm/s²) with N = 1, 2 or
 5 × 10^k in the file's length unit, chosen so the polygon fills about
@@ -36,7 +41,7 @@ from ..constructions.model import Units
 from ..constructions.record import Panel, Ref, Role, Slice, Step
 
 from .figure import Circle, Figure, Path, View, arc_points, span_line
-from .labels import LabelPlacer, typeset
+from .labels import LABEL, LabelPlacer, typeset
 from .scales import draw_caption, nice_per_cm
 from .symbols import draw_arrow, unit
 
@@ -61,8 +66,15 @@ _TINY = 1.0         # a vector shorter than this (mm) is named as the point it n
 _NEAR = (1.0, 1.6, 2.4, 3.4, 4.6)   # a vector's label stays this many gaps from its shaft
 _FARTHER = (6.0, 8.0, 11.0, 15.0)   # ...unless every spot there covers another label
 _CROSSABLE = 0.02   # what covering a thin working line costs a label, against 1 for ink
+_ON_LABEL = 0.05 * LABEL   # a tiny vector's name covers no more beside it (0.05 mm² of
+                    # another label, 0.5 mm² of a line) before it stands off farther
+_CROSSING = 20.0 * _CROSSABLE   # a point's name crosses this much (20 mm², two working
+                    # lines under a label) before it stands off in a farther ring, where a
+                    # reader would take it for another point's
 _LANE = 3.0         # mm between collinear arrows drawn side by side (:func:`_lanes`)
 _SHORT = 8.0        # mm: an arrow shorter than this may have its name round its ends
+_HEAVY = {"head": 3.2, "width": 1.6}    # an absolute vector's arrowhead, mm
+_LIGHT = {"head": 2.8, "width": 1.4}    # a component's
 
 
 # ----- the public function ----------------------------------------------------------------
@@ -242,12 +254,13 @@ class _PolygonPanel:
         self.rays: dict[tuple[float, float], list[tuple[float, float]]] = {}
 
     def draw(self, title: str, notes: Sequence[str]) -> Figure:
-        xs, ys = zip(*self.paper)
-        self.placer.page = box(min(xs) - _ROOM, min(ys) - _ROOM, max(xs) + _ROOM, max(ys) + _ROOM)
         for step in self.steps:
             if isinstance(step.output, g.Line) and not step.output.is_at_infinity:
                 self.plan_line(step)
         self.lay_vectors()
+        # Labels stay within _ROOM of what is drawn: the points, and arrows moved into lanes.
+        xs, ys = zip(*self.paper, *(p for a, b, *_ in self.drawn.values() for p in (a, b)))
+        self.placer.page = box(min(xs) - _ROOM, min(ys) - _ROOM, max(xs) + _ROOM, max(ys) + _ROOM)
         self.draw_lines()
         self.draw_circles()
         self.draw_vectors()
@@ -338,13 +351,15 @@ class _PolygonPanel:
     def draw_vectors(self) -> None:
         """Arrows with the head at the tip: absolute vectors heavy, components light; one
         moved into a lane of its own has a leader from each end to its point."""
+        hidden = self.hidden()
         for step, a, b in self.vectors():
             if math.dist(a, b) < _ZERO:
                 continue
             heavy = step.role is not Role.CONSTRUCTION
-            draw_arrow(self.fig, a, b, "vector_result" if heavy else "vector",
-                       head=3.2 if heavy else 2.8, width=1.6 if heavy else 1.4)
-            self.placer.block_path([a, b], 1.6 if heavy else 1.3)
+            if step.id not in hidden:
+                draw_arrow(self.fig, a, b, "vector_result" if heavy else "vector",
+                           **_HEAVY if heavy else _LIGHT)
+                self.placer.block_path([a, b], 1.6 if heavy else 1.3)
             for end, true in zip((a, b), self.drawn[step.id][2:]):
                 if math.dist(end, true) > _HERE:
                     self.fig.add(Path((true, end), "leader"))
@@ -352,9 +367,21 @@ class _PolygonPanel:
             self.add_rays(a, [b])
             self.add_rays(b, [a])
 
+    def hidden(self) -> set[str]:
+        """The vectors whose arrows the pole's dot would cover whole (A_C a quarter
+        millimetre long from o_a), by id: not drawn, their tips dotted where no drawn arrow
+        ends."""
+        poles = [self.view(s.output.xy) for s in self.steps if s.role is Role.GIVEN
+                 and isinstance(s.output, g.Point) and not s.output.is_at_infinity]
+        return {s.id for s, a, b in self.vectors() if math.dist(a, b) >= _ZERO and any(
+            _under_dot(a, b, pole, **_HEAVY if s.role is not Role.CONSTRUCTION else _LIGHT)
+            for pole in poles)}
+
     def draw_dots(self) -> None:
-        """Dot the pole, and any point no arrow ends at."""
-        ends = [q for _, a, b in self.vectors() if math.dist(a, b) >= _ZERO for q in (a, b)]
+        """Dot the pole, and any point no drawn arrow ends at."""
+        hidden = self.hidden()
+        ends = [q for s, a, b in self.vectors() if math.dist(a, b) >= _ZERO
+                and s.id not in hidden for q in (a, b)]
         for step in self.steps:
             out = step.output
             if not isinstance(out, g.Point) or out.is_at_infinity:
@@ -382,6 +409,13 @@ class _PolygonPanel:
                 grp.append(step)
         self.placer.name_points(self.view(grp[0].output.xy) for grp in groups
                                 if any(s.label for s in grp))
+        # A reader takes a name for the nearest point marked: it stands nearer its own than
+        # any arrow's tip, labelled or not, and the ends of arrows moved into lanes.
+        hidden = self.hidden()
+        self.placer.name_points(
+            {end for s, a, b in self.vectors() if s.id not in hidden and math.dist(a, b) >= _ZERO
+             for end, at in zip((a, b), self.drawn[s.id][2:])
+             if end is b or math.dist(end, at) > _HERE})
         for grp in groups:
             at = self.view(grp[0].output.xy)
             names = list(dict.fromkeys(typeset(s.label) for s in grp if s.label))
@@ -389,7 +423,8 @@ class _PolygonPanel:
             rays = self.rays_at(at)
             self.placer.place_numbered(text, at, self.numbered(grp), sub=sub, tail=tail,
                                        prefer=_free_direction(at, rays, self.centre), gap=1.0,
-                                       size=3.8, farther=_FARTHER, own=at if names else None)
+                                       size=3.8, farther=_FARTHER, crossing=_CROSSING,
+                                       own=at if names else None, beside=True)
 
     def label_vectors(self) -> None:
         """Each vector's label beside its own stretch of shaft; a null one as "… = 0".
@@ -437,12 +472,13 @@ class _PolygonPanel:
                        for t in _own_stretch(a, b, others)]
             # A short arrow has little shaft to stand beside: its name may go round its ends.
             spread = math.pi / 3
-            # So short an arrow is found by its name only beside it: no farther rings.
+            # So short an arrow is found by its name only beside it: farther rings only
+            # where every spot beside it covers another label.
             dot = math.dist(a, b) < _TINY
             self.placer.place_numbered(text, anchors, numbers, sub=sub, also=tuple(names[1:]),
                                        prefer=(normal, normal + math.pi), spread=spread,
-                                       gap=1.0, size=3.4, rings=_NEAR,
-                                       farther=() if dot else _FARTHER,
+                                       gap=1.0, size=3.4, rings=_NEAR, farther=_FARTHER,
+                                       crossing=_ON_LABEL if dot else 0.0,
                                        own=None if not text else _middle(a, b) if dot
                                        else (a, b))
 
@@ -460,7 +496,7 @@ class _PolygonPanel:
                        for t in _own_stretch(a, b, arrows)]
             self.placer.place_numbered("", anchors, self.numbered(steps),
                                        prefer=(normal, normal + math.pi), spread=math.pi / 4,
-                                       gap=0.6)
+                                       gap=0.6, farther=_FARTHER)
 
 
 def _lanes(ends: list[tuple[tuple[float, float], tuple[float, float]]],
@@ -533,6 +569,23 @@ def _own_stretch(a: tuple[float, float], b: tuple[float, float],
         lo, hi = 0.0, 1.0
     mid = (lo + hi) / 2
     return [mid + k * (hi - lo) for k in (0.0, -0.15, 0.15, -0.3, 0.3, -0.4, 0.4)]
+
+
+def _under_dot(a: tuple[float, float], b: tuple[float, float], dot: tuple[float, float], *,
+               head: float, width: float) -> bool:
+    """Whether the arrow from ``a`` to ``b`` (its head ``head`` long at most, ``width``
+    wide, as :func:`.symbols.draw_arrow` draws it) lies wholly within the dot at ``dot``.
+
+    >>> _under_dot((0.0, 0.0), (0.25, 0.0), (0.0, 0.0), head=3.2, width=1.6)
+    True
+    >>> _under_dot((0.0, 0.0), (1.5, 0.0), (0.0, 0.0), head=3.2, width=1.6)
+    False
+    """
+    n = math.dist(a, b)
+    u = ((b[0] - a[0]) / n, (b[1] - a[1]) / n)
+    base = (b[0] - min(head, n) * u[0], b[1] - min(head, n) * u[1])
+    wings = [(base[0] - k * width / 2 * u[1], base[1] + k * width / 2 * u[0]) for k in (1, -1)]
+    return all(math.dist(p, dot) <= _DOT for p in (a, b, *wings))
 
 
 def _middle(a: tuple[float, float], b: tuple[float, float]) -> tuple[float, float]:

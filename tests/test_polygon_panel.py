@@ -443,3 +443,88 @@ def test_an_unknown_ref_is_refused():
     vp, mech = shaper_velocity()
     with pytest.raises(TarsimError, match="vp:tip:Z"):
         slice(vp.construction, [*vp.steps, "vp:tip:Z"])
+
+
+# ----- what a reader takes a tip's name for -------------------------------------------------
+_NAMED = {
+    "shaper velocity": lambda: draw_velocity(*shaper_velocity()),
+    "shaper acceleration": lambda: draw_acceleration(*_without_kin(shaper_acceleration())),
+    # seed 003 at θ2 = 90°: both polygons on one line, arrows moved into lanes beside it.
+    "shaper velocity at 90°": lambda: draw_velocity(*shaper_velocity(math.pi / 2)),
+    "shaper acceleration at 90°": lambda: draw_acceleration(
+        *_without_kin(shaper_acceleration(math.pi / 2))),
+    "four-bar acceleration": lambda: draw_acceleration(*_without_kin(four_bar_acceleration())),
+}
+
+
+def _without_kin(built):
+    c, refs, _, mech = built
+    return c, refs, mech
+
+
+def _names_stand_by_their_tips(fig) -> None:
+    """Each tip's name (its box; a polygon's tips are named in lower case) stands nearer
+    its own point than the tip of any arrow ending elsewhere, labelled or not, and than
+    either end of a leader to an arrow moved into a lane; those within half a millimetre
+    of its point are its own."""
+    from shapely.geometry import Point as SPoint, box as sbox
+
+    marked = [head[0] for head in arrowheads(fig)] + [
+        end for it in fig.items if isinstance(it, Path) and it.style == "leader"
+        for end in (it.points[0], it.points[-1])]
+    names = [t for t in texts(fig) if t.owner is not None and len(t.owner) == 1
+             and t.text[:1].islower()]
+    assert names
+    for t in names:
+        own, name = t.owner[0], sbox(*t.box())
+        mine = name.distance(SPoint(own))
+        for p in marked:
+            if math.dist(p, own) > 0.5:
+                assert name.distance(SPoint(p)) >= mine - 1e-9, (t.text, own, p)
+
+
+@pytest.mark.parametrize("case", _NAMED)
+def test_a_tips_name_stands_nearer_its_tip_than_any_other_arrows(case):
+    """A reader takes a name for the point marked nearest it: an unlabelled foot between
+    two components, or the end of an arrow moved into a lane, is no nearer a tip's name
+    than the tip it names."""
+    _names_stand_by_their_tips(_NAMED[case]())
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("exercise_id", ["crank-shaper", "inverted-slider-crank",
+                                         "klein-slider-crank", "piston-driven-slider-crank",
+                                         "rolling-wheel", "wheel-driven-slider",
+                                         "wheel-round-circle", "whitworth"])
+def test_every_worked_pages_tip_names_stand_nearer_their_tips_than_any_other(solved,
+                                                                            exercise_id):
+    """The same on each bundled worked page: at the crank-shaper's θ2 = 90° b₄′ beside its
+    arrows' lanes, the wheel-driven slider's a′ beside the unlabelled foot of Aⁿ_B/A."""
+    pages = {stem: fig for stem, fig in solved(exercise_id).figures.items()
+             if stem.startswith("worked")}
+    assert pages
+    for fig in pages.values():
+        _names_stand_by_their_tips(fig)
+
+
+def test_an_arrow_the_poles_dot_covers_is_not_drawn_and_its_tip_is_dotted():
+    """V_C a quarter millimetre long from o_v (1 cm = 5 mm/s, V_B 50 mm/s across 100 mm):
+    its head, 3.2 mm long at most and 1.6 mm wide, would lie wholly under the pole's dot of
+    1 mm, so it is not drawn, and c is dotted where it stands instead; V_B keeps its head."""
+    c = Construction()
+    c.give("vp:o_v", g.Point(0, 0), label="o_v", panel=Panel.VELOCITY)
+    c.give("vp:tip:B", g.Point(0.03, 0.04), label="b", panel=Panel.VELOCITY)
+    c.give("vp:tip:C", g.Point(0.000125, 0.0), label="c", panel=Panel.VELOCITY)
+    c.draw("vp:V:B", "join", "vp:o_v", "vp:tip:B", label="V_B", role=Role.RESULT,
+           panel=Panel.VELOCITY)
+    c.draw("vp:V:C", "join", "vp:o_v", "vp:tip:C", label="V_C", role=Role.RESULT,
+           panel=Panel.VELOCITY)
+    fig = draw_polygon_panel(slice(c, ["vp:V:B", "vp:V:C"]), panel=Panel.VELOCITY, scale=1.0,
+                             units=Units("mm"), title="V_C under the pole")
+    (head,) = arrowheads(fig)
+    dots = [it.centre for it in fig.items if isinstance(it, Circle) and it.style == "dot"]
+    pole = dots[0]                          # the pole's, drawn first
+    assert math.dist(head[0], pole) == pytest.approx(100.0, abs=PAPER)
+    # Beside the pole's own, c's dot: 0.125 mm/s at 5 mm/s a cm.
+    near = sorted(math.dist(d, pole) for d in dots if math.dist(d, pole) < 1.0)
+    assert near == [pytest.approx(0.0, abs=PAPER), pytest.approx(0.25, abs=PAPER)]
