@@ -51,6 +51,7 @@ def _tips(sol) -> tuple[set[str], set[str]]:
             {name for _, name in tips})
 
 
+@pytest.mark.slow
 def test_these_are_the_bundled_exercises_with_a_worked_page():
     """A bundled exercise that gains a worked page is graded here too."""
     drawn = {name for name in everything()
