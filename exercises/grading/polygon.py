@@ -267,7 +267,9 @@ def _graded(poly: _Expected, names: list[str], frame: Frame, pole: Vec, found, d
             ex_scale: float) -> dict[str, Item]:
     """Each tip's item, held to where ``frame`` puts it."""
     mark = "′" if poly.kind == "a" else ""
-    pen = drafting.pen * frame.scale / ex_scale          # the pen, at the drawing's scale
+    # The pen at the drawing's scale, and never finer than a pen on the drawing's own paper:
+    # a polygon drawn at a third of the course's size cannot part tips closer than that.
+    pen = drafting.pen * max(frame.scale / ex_scale, 1.0)
     flips = reversed_coriolis(poly.polygon, frame, poly.keys) if poly.coriolis else {}
     items: dict[str, Item] = {}
     for name in names:
@@ -275,8 +277,8 @@ def _graded(poly: _Expected, names: list[str], frame: Frame, pole: Vec, found, d
         exp = frame.place(poly.tips[name])
         cond = max((poly.tip_conditioning or {}).get(name, poly.conditioning),
                    LEAST_CONDITIONING)
-        tol = tolerance(math.hypot(*poly.tips[name]) * ex_scale, cond, drafting) \
-            * frame.scale / ex_scale
+        tol = max(tolerance(math.hypot(*poly.tips[name]) * ex_scale, cond, drafting)
+                  * frame.scale / ex_scale, drafting.pen)
         cut = bands(poly.polygon, poly.keys[name], frame, exp, pen, drafting.angle,
                     LEAST_CONDITIONING)
         got = found.get((poly.kind, name))
