@@ -175,3 +175,23 @@ def test_an_exercises_alias_names_a_tip(tmp_path):
     aliased = replace(FOUR_BAR, drafting=replace(DRAFTING, aliases={"c": "b"}))
     g, items = _graded(tmp_path, svg, aliased)
     assert items["b"].verdict == "correct"
+
+
+@pytest.mark.parametrize("file, exercise, position", [
+    ("frame-point-label-crank-shaper.svg", "crank-shaper", 2),
+    ("frame-point-label-six-link.svg", "six-link-homework-1", 1)])
+def test_a_frame_points_label_never_joins_the_search_for_swapped_labels(file, exercise,
+                                                                       position):
+    """Random drawings (CAD, LibreOffice) with o4 or o6 labelled at a pole and two tips
+    wrong: the search for a swapped pair once looked the frame's tip up among the items it
+    is never graded as (KeyError). Every item graded is a tip the polygon grades, or a
+    centre, and the frame's own point is none of them."""
+    from pathlib import Path
+
+    path = Path(__file__).parent / "data" / "grading" / "regressions" / file
+    g = grade(tarsim.load(exercise), path, position - 1)
+    names = {i.name.rstrip("′") for i in g.items}
+    assert names and not names & {"o2", "o4", "o6"}
+    assert all(i.verdict in ("correct", "follows from an earlier error", "wrong magnitude",
+                             "wrong direction", "wrong sense", "reversed Coriolis",
+                             "swapped", "wrong position", "missing") for i in g.items)

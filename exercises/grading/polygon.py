@@ -242,8 +242,7 @@ def _input_swapped(poly: _Expected, found, held, drafting: Drafting, orientation
     swapped, and the polygon is righter with them put back, both of them right, the two are
     "swapped" and the rest graded as put back."""
     k, given = poly.kind, poly.given
-    for name in sorted(n for (kind, n) in found if kind == k and n not in ("o", given)
-                       and n in poly.tips):
+    for name in sorted(n for n in items if n != given and (k, n) in found):
         back = {**found, (k, given): found[(k, name)], (k, name): found[(k, given)]}
         if back[(k, given)] == back[(k, "o")]:
             continue
