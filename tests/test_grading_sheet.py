@@ -195,3 +195,18 @@ def test_a_frame_points_label_never_joins_the_search_for_swapped_labels(file, ex
     assert all(i.verdict in ("correct", "follows from an earlier error", "wrong magnitude",
                              "wrong direction", "wrong sense", "reversed Coriolis",
                              "swapped", "wrong position", "missing") for i in g.items)
+
+
+def test_a_space_diagram_and_a_polygon_both_in_capitals_are_told_apart(tmp_path):
+    """A, B, O2, O4 on the space diagram (no centres) and A, B for the polygon's tips: one
+    case, and nothing but the space diagram's pivots (O2, O4, far from the pole, where a
+    polygon would put them) says where it stands; the polygon's A and B are its tips."""
+    import re as regex
+
+    sol = solve_positions(FOUR_BAR)[0]
+    space = regex.sub(r'<circle[^>]*r="0.6"/>', "", centres_drawing(sol))
+    space = regex.sub(r"<text[^>]*><tspan[^>]*>I\d\d</tspan></text>", "", space)
+    polygon = drawing(sol, Style()).replace(">a<", ">A<").replace(">b<", ">B<")
+    g, items = _graded(tmp_path, _sheet((space, 0.0), (polygon, 120.0)), FOUR_BAR)
+    assert set(items) == {"a", "b"}
+    assert {i.verdict for i in g.items} == {"correct"}

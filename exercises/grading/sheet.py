@@ -17,12 +17,16 @@ polygons. Its points (``A``, ``B``, ``O2``) read like the polygons' tips (``a``,
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import replace
 
 from .drawing import RING, Drawing, Label, ringed
 from .labels import plain, read_centre, read_names
 
 __all__ = ["split", "RING"]
+
+APART = 15.0
+"""Paper (mm) a pivot's label stands from every pole to be the space diagram's."""
 
 COLUMN = 5
 """The fewest labels one under another at a steady pitch that make a table's column."""
@@ -48,7 +52,11 @@ def split(drawing: Drawing, point_names) -> tuple[Drawing, Drawing]:
         tip_cases = {_capital(lb.text) for lb in tips
                      if read_names(lb.text) is not None and not _is_pole(lb.text)}
         poles = [lb.at for lb in tips if _is_pole(lb.text)]
-        own = [lb.at for lb in space]
+        # A pivot's name (O2) stands at the pole on a polygon, so one far from every pole is
+        # the space diagram's, and says where it is where nothing else does.
+        own = [lb.at for lb in space] + [
+            lb.at for lb in either if re.fullmatch(r"o\d+", plain(lb.text).lower())
+            and poles and _nearest(lb.at, poles) > APART]
         for lb in either:
             if len(cases) == 2:                   # A on the diagram, a on the polygon
                 side = space if _capital(lb.text) else tips
