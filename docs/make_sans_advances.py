@@ -1,5 +1,5 @@
-"""Write graphics/sans_advances.py: DejaVu Sans's advance widths (em) for the characters a
-right-to-left label is set in.
+"""Write graphics/data/sans_advances.json: DejaVu Sans's advance widths (em) for the
+characters a right-to-left label is set in (read by graphics/sans_advances.py).
 
 Persian labels are set in DejaVu Sans (graphics/rtl.py); their width on paper is the sum
 of the advances of the joined forms they are drawn in. The table is taken once from the
@@ -10,6 +10,7 @@ font itself, so that tarsim needs neither fontTools nor the font to lay a figure
 
 from __future__ import annotations
 
+import json
 import sys
 from pathlib import Path
 
@@ -33,14 +34,8 @@ def main(folder: str) -> None:
     """Write both faces' tables from the DejaVu fonts in ``folder``."""
     tables = {name: advances(f"{folder}/{face}.ttf")
               for name, face in (("ADVANCE", "DejaVuSans"), ("BOLD", "DejaVuSans-Bold"))}
-    text = ('"""DejaVu Sans advance widths (em), regular and bold, the face right-to-left labels\n'
-            "are set in.\n\nWritten by docs/make_sans_advances.py from the font; do not edit.\n"
-            '"""\n')
-    for name, widths in tables.items():
-        rows = ",\n".join(f"    {ch!r}: {w}" for ch, w in widths.items())
-        text += f"\n{name}: dict[str, float] = {{\n{rows},\n}}\n"
-    out = Path(__file__).resolve().parents[1] / "graphics" / "sans_advances.py"
-    out.write_text(text, encoding="utf-8")
+    out = Path(__file__).resolve().parents[1] / "graphics" / "data" / "sans_advances.json"
+    out.write_text(json.dumps(tables, ensure_ascii=True, indent=0) + "\n", encoding="utf-8")
     print(f"{sum(map(len, tables.values()))} advances written to {out}")
 
 
