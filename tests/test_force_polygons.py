@@ -19,7 +19,7 @@ from click.testing import CliRunner
 
 import tarsim
 from tarsim.constructions.errors import InputError, TarsimError
-from tarsim.constructions.force_polygons import drawn_forces
+from tarsim.constructions.forces.polygons import drawn_forces
 from tarsim.constructions.reference import solver
 from tarsim.exercises.catalog import bundled_forces
 from tarsim.exercises.cli import cli

@@ -31,7 +31,7 @@ import tarsim
 from tarsim.constructions import asks as A
 from tarsim.constructions.checks import CEILING
 from tarsim.constructions.errors import TarsimError
-from tarsim.constructions.force_polygons import drawn_forces
+from tarsim.constructions.forces.polygons import drawn_forces
 from tarsim.constructions.reference import solver
 from tarsim.constructions.reference.kinetostatics import balance, world_point
 from tarsim.exercises.cli import cli

@@ -19,13 +19,13 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 
-from . import asks as A
-from .acceleration_polygon import drawn_acceleration_polygon
-from .checks import EPS
-from .errors import TarsimError
-from .loads import made_of, resting_speed
-from .model import Mechanism, SlideKind
-from .velocity_polygon import drawn_velocity_polygon
+from .. import asks as A
+from ..acceleration_polygon import drawn_acceleration_polygon
+from ..checks import EPS
+from ..errors import TarsimError
+from ..loads import made_of, resting_speed
+from ..model import Mechanism, SlideKind
+from ..velocity_polygon import drawn_velocity_polygon
 
 __all__ = ["image_base", "load_roundings", "answer_roundings", "rate_roundings",
            "read_conditioning", "speed_rounding"]

@@ -3,7 +3,7 @@ reads them, or rest.
 
 Friction leans a slide's push against its sliding and sets a pin's friction couple against
 its turning, so each needs the way its joint moves. A joint the velocity polygon reads
-moving within its rounding of a zero (:func:`~.force_rounding.speed_rounding`) rests:
+moving within its rounding of a zero (:func:`~.rounding.speed_rounding`) rests:
 friction's direction is undefined there (it flips as the joint passes rest), so friction
 takes no side, as at an extreme position or a dead centre, and the polygons say so. One
 just past that rounding moves no known way and is refused in one line
@@ -20,13 +20,13 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from . import geometry as g
-from .errors import TarsimError
-from .force_rounding import rate_roundings, speed_rounding
-from .loads import near_rest, near_rest_refusal
-from .narration import Number, Phrase, phrase
-from .record import Panel
-from .velocity_polygon import drawn_velocity_polygon
+from .. import geometry as g
+from ..errors import TarsimError
+from ..loads import near_rest, near_rest_refusal
+from ..narration import Number, Phrase, phrase
+from ..record import Panel
+from ..velocity_polygon import drawn_velocity_polygon
+from .rounding import rate_roundings, speed_rounding
 
 __all__ = ["Slide", "dyad_slides", "lever_gain", "lever_slides", "link_rates", "pin_rests",
            "pin_roundings", "say_resting", "unit_or_zero"]
@@ -143,7 +143,7 @@ def link_rates(work) -> dict[int, float]:
 
 
 def pin_roundings(work, lever: tuple[int, float] | None = None) -> dict[int, float]:
-    """How fast each link may turn and still rest (:func:`~.force_rounding.rate_roundings`),
+    """How fast each link may turn and still rest (:func:`~.rounding.rate_roundings`),
     a slotted ``lever``'s (its link and |PA|) read at the block's pin, however far the
     polygon lays it off.
 
