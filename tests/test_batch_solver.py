@@ -27,6 +27,7 @@ from tarsim.constructions.errors import AssemblyError, InputError, TarsimError
 from tarsim.constructions.reference import solver
 from tarsim.constructions.reference.assembly_plan import record_plan
 from tarsim.constructions.reference.batch_loops import BatchLoops, wrap
+from tarsim.constructions.reference.loop_equations import _System
 from tarsim.constructions.reference.turn import _newton, solve_turn
 from tarsim.exercises.catalog import bundled, resolve
 from tarsim.exercises.exercise_file import load_exercise, parse_exercise
@@ -219,7 +220,7 @@ def test_the_polish_brings_a_perturbed_start_back_to_the_closed_form():
     mech = _mechanism("slotted-lever-p37")
     angles = _turn(mech, 36)
     start = record_plan(mech, angles).place(angles).q
-    loops = BatchLoops(solver._System(mech))
+    loops = BatchLoops(_System(mech))
     shaken = start + 1e-10 * loops.sy.lc * np.random.default_rng(3).standard_normal(start.shape)
     polished, vouched = _newton(loops, shaken, angles)
     assert vouched.all()

@@ -6,7 +6,9 @@ construction because the two share a mistake. A test of the import graph holds
 it to that (``tests/test_import_graph.py``).
 
 * :mod:`.solver`: positions in closed form polished by Newton, and exact
-  velocities and accelerations from the differentiated loop equations;
+  velocities and accelerations from the differentiated loop equations; what it gives,
+  and its refusal at a dead point, are in :mod:`.kinematics`, the closed form in
+  :mod:`.dyad_assembly`, the equations in :mod:`.loop_equations`;
 * :mod:`.centres`: instant centres where two links' velocity fields agree;
 * :mod:`.limits`: the limit positions, where the output's velocity changes sign;
 * :mod:`.rotatability`: Grashof's rule, and which links turn fully by turning them;

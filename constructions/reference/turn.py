@@ -37,8 +37,9 @@ import numpy as np
 
 from .assembly_plan import record_plan
 from .batch_loops import BatchLoops, wrap
-from .solver import (_EPS, _NEWTON_STEPS, Kinematics, SingularPosition, _check, _System,
-                     solve)
+from .loop_equations import _System
+from .planar import _EPS
+from .solver import _NEWTON_STEPS, Kinematics, SingularPosition, _check, solve
 from ..errors import AssemblyError
 from ..model import Mechanism
 
