@@ -23,7 +23,8 @@ from functools import cached_property
 from typing import Any
 
 from . import asks as A
-from .assembly import Assembly, assemble
+from .assembly import assemble
+from .assembly_record import Assembly
 from .checks import Answer, Expected, Quantity, check
 from .errors import GeometryError, IllConditioned, NoIntersection, TarsimError
 from .model import Mechanism

@@ -28,7 +28,7 @@ from dataclasses import dataclass
 from itertools import combinations
 
 from . import geometry as g
-from .assembly import Assembly
+from .assembly_record import Assembly
 from .coincident import Node, Walk, rolling_contacts
 from .errors import DegenerateInput, TarsimError
 from .narration import Capitalized, Phrase, narrate, phrase

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from .assembly import Assembly
+from .assembly_record import Assembly
 from .checks import Answer, FigureSpec, vector_value
 from .narration import Number, Word, phrase
 from .record import Construction, Kind, Ref, Role, slice

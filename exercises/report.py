@@ -11,7 +11,8 @@ from dataclasses import dataclass
 
 from ..constructions.reference import solver
 from ..constructions.reference.rotatability import GrashofResult, grashof_class
-from ..constructions.assembly import Assembly, assemble
+from ..constructions.assembly import assemble
+from ..constructions.assembly_record import Assembly
 from ..constructions.model import Mechanism
 
 __all__ = ["PointCheck", "PositionCheck", "check_positions", "format_check", "describe_grashof"]

@@ -14,7 +14,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from ..constructions.assembly import Assembly
+from ..constructions.assembly_record import Assembly
 from ..constructions.checks import Answer, Quantity
 from ..constructions.errors import BranchError, DeadPoint, InputError, TarsimError
 from ..constructions.methods import Work, answer_all

@@ -209,7 +209,7 @@ def test_six_bars_assemble_dyad_by_dyad(name):
 
 # ----- the dyad rules are a registry -----------------------------------------------------------
 def test_the_dyad_rules_are_tried_in_their_registered_order():
-    from tarsim.constructions.assembly import DYAD_RULES
+    from tarsim.constructions.dyad_rules import DYAD_RULES
     names = [r.name for r in sorted(DYAD_RULES.values(), key=lambda r: r.order)]
     assert names == ["a point of a drawn link", "a wheel rolling without slip",
                      "a wheel rolling round a circle without slip",
@@ -220,6 +220,7 @@ def test_the_dyad_rules_are_tried_in_their_registered_order():
 def test_a_new_dyad_rule_plugs_into_the_registry(monkeypatch):
     """A rule registered under a new name is consulted by the walk, in its order."""
     from tarsim.constructions import assembly as asm_module
+    from tarsim.constructions.dyad_rules import DyadRule
     seen = []
 
     def note(assembler) -> bool:
@@ -227,7 +228,7 @@ def test_a_new_dyad_rule_plugs_into_the_registry(monkeypatch):
         return False                       # locates nothing: the walk goes on as before
 
     rules = dict(asm_module.DYAD_RULES)
-    rules["a rule that looks first"] = asm_module.DyadRule("a rule that looks first", -1, note)
+    rules["a rule that looks first"] = DyadRule("a rule that looks first", -1, note)
     monkeypatch.setattr(asm_module, "DYAD_RULES", rules)
     asm = asm_module.assemble(four_bar(math.radians(60)))
     assert seen and seen[0] == ["A", "O2", "O4"]          # asked before B was found
