@@ -28,7 +28,7 @@ from .methods import Method, Work
 from .model import Mechanism
 from .overall import GRASHOF_WHY_NOT, answer_grashof, answer_mobility, grashof_askable
 from .equivalent import answer_equivalent, equivalent_askable
-from .force_polygons import FORCES_WHY_NOT, answer as from_force_polygons, forces_askable
+from .forces.answers import FORCES_WHY_NOT, answer as from_force_polygons, forces_askable
 from .klein import answer_klein
 from .positions import answer_position
 from .readings import MU_WHY_NOT, answer_reading, mu_askable

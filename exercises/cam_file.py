@@ -11,7 +11,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any
+from typing import Any, ClassVar
 
 from ..constructions.cams.displacement import Segment
 from ..constructions.model import LENGTH_UNITS
@@ -21,7 +21,7 @@ from .mechanism_file import file_number, read_source
 from .names import named_in, read_names, renamed_field
 from .table_file import SPEEDS, Tables
 
-__all__ = ["CamExercise", "is_cam", "load_cam", "parse_cam"]
+__all__ = ["CamExercise", "load_cam", "parse_cam"]
 
 _TOP = ("name", "names", "source", "description", "units", "cam", "follower", "segment", "ask")
 
@@ -30,6 +30,8 @@ _TOP = ("name", "names", "source", "description", "units", "cam", "follower", "s
 class CamExercise:
     """A cam and its follower's motion: the base circle (m), the cam's ω (rad/s, CCW +),
     the segments, and how the file states its units."""
+
+    chapter: ClassVar[str] = "cams"
 
     id: str
     name: str
@@ -63,11 +65,6 @@ class CamExercise:
         return 1.0 if self.omega > 0 else -1.0
 
 
-def is_cam(data: dict[str, Any]) -> bool:
-    """True for a file that describes a cam."""
-    return "cam" in data
-
-
 def load_cam(path: str | Path, exercise_id: str | None = None) -> CamExercise:
     """Read a cam exercise file.
 
@@ -80,9 +77,11 @@ def load_cam(path: str | Path, exercise_id: str | None = None) -> CamExercise:
     return parse_cam(read_source(path), str(path), exercise_id or path.stem)
 
 
-def parse_cam(text: str, filename: str = "<string>", exercise_id: str = "cam") -> CamExercise:
-    """Parse a cam exercise from TOML text (see :func:`load_cam`)."""
-    tables = Tables.read(text, filename, "cam", _TOP, {})
+def parse_cam(text: str, filename: str = "<string>", exercise_id: str = "cam",
+              data: dict[str, Any] | None = None) -> CamExercise:
+    """Parse a cam exercise from TOML text (see :func:`load_cam`); ``data``, the tables
+    already parsed from it, spares a second parse."""
+    tables = Tables.read(text, filename, "cam", _TOP, {}, data)
     data, fail = tables.data, tables.fail
     length, speed = tables.units("mm", "rpm")
     metre = LENGTH_UNITS[length]

@@ -12,14 +12,12 @@ from __future__ import annotations
 import functools
 import math
 import sys
-from dataclasses import replace
 from pathlib import Path
 
 import click
 
 from ..constructions.errors import (AssemblyError, CheckMismatch, GeometryError, IllConditioned,
                                    InputError, TarsimError)
-from ..constructions.model import Mechanism
 from ..constructions.narration import speaking, spoken
 
 __all__ = ["cli"]
@@ -77,53 +75,38 @@ def _placed(error: TarsimError, source: str | None) -> str:
     return f"{source}:{line}: {error}" if line else f"{source}: {error}"
 
 
-def _mechanism(source: str, angle: float | None) -> Mechanism:
-    """The mechanism of a file read as an exercise (its loads, language and names are
-    understood, not refused), at ``angle`` if given."""
+def _linkage(source: str, angle: float | None = None):
+    """The linkage exercise ``source`` names, at ``angle`` if given (file units); a file of
+    another chapter is refused in one line, for the command that asks is the linkages'."""
     from .catalog import load
+    from .chapters import chapter_of
 
-    _not_a_train(source)
-    return _at_angle(load(source).mechanism, angle)
-
-
-def _not_a_train(source: str) -> None:
-    """Refuse a gear train, a cam or a rotor where a command draws or solves linkages, in one
-    line."""
-    from .cam_file import is_cam
-    from .catalog import resolve
-    from .mechanism_file import read_source, read_toml
-    from .rotor_file import is_balance
-    from .train_file import is_train
-
-    path = resolve(source)
-    data = read_toml(read_source(path), str(path))
-    for test, what in ((is_train, "a gear train"), (is_cam, "a cam"),
-                       (is_balance, "a balancing exercise")):
-        if test(data):
-            raise InputError(f"{source} is {what}: `tarsim solve {source}` solves it; this "
-                             "command is for linkages")
+    ex = load(source)
+    chapter = chapter_of(ex)
+    if chapter.key != "linkages":
+        raise InputError(f"{source} is {chapter.kind}: `tarsim solve {source}` solves it; this "
+                         "command is for linkages")
+    return chapter.set_up(ex, paper=ex.paper, angle=_finite(angle))
 
 
-def _at_angle(mech: Mechanism, angle: float | None) -> Mechanism:
-    """The mechanism with its input turned to ``angle`` (file units), if one is given."""
-    from .mechanism_file import radians_in_turn
+def _loaded(source: str, angle: float | None):
+    """The exercise ``source`` names and its chapter, refusing ``--angle`` where the chapter
+    has no input angle."""
+    from .catalog import load
+    from .chapters import chapter_of
 
-    if angle is None:
-        return mech
-    if not math.isfinite(angle):
+    ex = load(source)
+    chapter = chapter_of(ex)
+    if angle is not None and chapter.no_angle:
+        raise click.ClickException(chapter.no_angle)
+    return ex, chapter
+
+
+def _finite(angle: float | None) -> float | None:
+    if angle is not None and not math.isfinite(angle):
         raise click.ClickException(f"--angle must be a finite number, as a file's angle is; "
                                    f"got {angle:g}")
-    return mech.with_drive(replace(mech.drive, angle=radians_in_turn(angle, mech.units.angle)))
-
-
-def _exercise(source: str, angle: float | None):
-    from .catalog import load
-
-    _not_a_train(source)
-    ex = load(source)
-    if angle is None:
-        return ex
-    return replace(ex, mechanism=_at_angle(ex.mechanism, angle), positions=())
+    return angle
 
 
 _source = click.argument("source", metavar="FILE")
@@ -201,52 +184,14 @@ def draw(source, output, angle, paper, lang, digits):
       tarsim draw oscillating-roller -o cam.pdf
       tarsim draw four-bar -o four-bar-fa.pdf --lang fa
     """
-    from ..constructions.assembly import assemble
-    from ..constructions.scales import space_per_cm
-    from ..graphics.diagram import draw_kinematic_diagram
     from ..graphics.export import write_figure
-    from ..graphics.paper import on_sheet, paper as sheet, room
-    from .cam_file import CamExercise
-    from .catalog import load
-    from .rotor_file import BalanceExercise
-    from .train_file import TrainExercise
+    from ..graphics.paper import on_sheet, paper as sheet
 
-    loaded = load(source)
-
+    loaded, chapter = _loaded(source, angle)
     with speaking(_language(lang, digits, loaded)):
-        loaded = loaded.named_in(spoken())
-        if isinstance(loaded, BalanceExercise):
-            from .balance_solution import solve_balance
-
-            if angle is not None:
-                raise click.ClickException("a balancing exercise has no input angle: leave out "
-                                           "--angle")
-            fig = next(iter(solve_balance(loaded).figures.values()))
-            click.echo(f"wrote {write_figure(on_sheet(fig, sheet(paper)), output)}")
-            return
-        if isinstance(loaded, CamExercise):
-            from .cam_solution import solve_cam
-
-            if angle is not None:
-                raise click.ClickException("a cam is laid out over its whole turn: leave out "
-                                           "--angle")
-            fig = solve_cam(loaded, allow_undercut=True).figures["profile"]
-            click.echo(f"wrote {write_figure(on_sheet(fig, sheet(paper)), output)}")
-            return
-        if isinstance(loaded, TrainExercise):
-            from ..graphics.train_schematic import draw_train_schematic
-
-            if angle is not None:
-                raise click.ClickException("a gear train has no input angle: leave out --angle")
-            fig = draw_train_schematic(loaded.train, loaded.train.name)
-            click.echo(f"wrote {write_figure(on_sheet(fig, sheet(paper)), output)}")
-            return
-        # Read as an exercise, so that its loads, language and names are understood too.
-        mech = _at_angle(loaded.mechanism, angle)
-        asm, where = assemble(mech), sheet(paper)
-        fig = draw_kinematic_diagram(asm, per_cm=space_per_cm(asm, room(where)))
-        path = write_figure(on_sheet(fig, where), output)
-        click.echo(f"wrote {path}")
+        ex = chapter.set_up(loaded.named_in(spoken()), paper=paper, angle=_finite(angle))
+        fig = on_sheet(chapter.drawing(ex), sheet(paper))
+        click.echo(f"wrote {write_figure(fig, output)}")
 
 
 @cli.command()
@@ -269,7 +214,7 @@ def check(source, angle):
     """
     from .report import check_positions, format_check
 
-    click.echo(format_check(check_positions(_mechanism(source, angle))))
+    click.echo(format_check(check_positions(_linkage(source, angle).mechanism)))
 
 
 @cli.command()
@@ -347,61 +292,23 @@ def solve(source, out_dir, angle, pdf, paper, allow_undercut, lang, digits):
     one beyond the tolerance its conditioning allows (the files are written all
     the same, so the disagreement can be seen); 1 for bad input.
     """
-    from .cam_file import CamExercise
-    from .catalog import load
-    from .rotor_file import BalanceExercise
-    from .solution_files import answer_line, solve_worked
-    from .train_file import TrainExercise
     from ..graphics.export import cairo_missing, output_folder
 
-    loaded = load(source)
-
+    loaded, chapter = _loaded(source, angle)
     with speaking(_language(lang, digits, loaded)):
-        loaded = loaded.named_in(spoken())
-        if isinstance(loaded, TrainExercise):
-            if angle is not None:
-                raise click.ClickException("a gear train has no input angle: leave out --angle")
-            return _solve_train(loaded, out_dir, pdf)
-        if isinstance(loaded, BalanceExercise):
-            if angle is not None:
-                raise click.ClickException("a balancing exercise has no input angle: leave out "
-                                           "--angle (an engine's crank angle is its [engine] "
-                                           "at)")
-            from .balance_solution import solve_balance
-
-            return _solve_other(loaded, solve_balance, out_dir, pdf)
-        if isinstance(loaded, CamExercise):
-            if angle is not None:
-                raise click.ClickException("a cam is solved over its whole turn: leave out --angle")
-            return _solve_cam(loaded, out_dir, pdf, allow_undercut)
-        ex = replace(_exercise(source, angle), paper=paper).named_in(spoken())   # as loaded
+        ex = chapter.set_up(loaded.named_in(spoken()), paper=paper, angle=_finite(angle))
         out = Path(out_dir or f"{ex.id}-solution")
         with output_folder(out):      # a folder that cannot be written fails before the solve
-            worked = solve_worked(ex)
+            solved = chapter.solve(ex, allow_undercut=allow_undercut)
             reason = cairo_missing() if pdf else None
-            written = worked.write(out, pdf=pdf and reason is None)
-        sols, overall = worked.positions, worked.overall
-        for name, q in overall.quantities.items():
-            click.echo(answer_line(name, q, ex.mechanism.units, whole=True))
-        for sol in sols:
-            if len(sols) > 1:
-                click.echo(f"at {sol.position.label}:")
-            for name, q in sol.quantities.items():
-                for qq in (q, *q.alternatives.values()):
-                    click.echo(answer_line(name, qq.in_file_axes(ex.mechanism),
-                                           ex.mechanism.units))
-            for note in sol.notes:
-                click.echo(f"note: {note}")
-        at = ("at the exercise's scale" if ex.mechanism.scale
-              else "even at the coarsest scale it is drawn at")
-        for stem, (w, h) in worked.oversize().items():
-            click.echo(f"note: {stem} {at} is {w:.0f} × {h:.0f} mm, more than "
-                       f"{paper} holds; its page is that size (--paper A3 may hold it)")
-        click.echo(f"wrote {len(written)} files to {out}/")
-        if reason:
-            click.echo(f"PDF skipped: {reason}", err=True)
-        if worked.failures:
-            raise CheckMismatch([q.name for q in worked.failures])
+            written = solved.write(out, pdf=pdf and reason is None)
+    with speaking("en"):              # the terminal's lines are English
+        for line in solved.lines():
+            click.echo(line)
+    click.echo(f"wrote {len(written)} files to {out}/")
+    if reason:
+        click.echo(f"PDF skipped: {reason}", err=True)
+    solved.check()
 
 
 @cli.command()
@@ -458,7 +365,7 @@ def sweep(source, out_dir, of, steps, pdf, lang, digits):
     from .turning_moment import POWER_AGREE, moment_files
     from ..graphics.export import cairo_missing, output_folder
 
-    ex = _exercise(source, None)
+    ex = _linkage(source)
 
     with speaking(_language(lang, digits, ex)):
         ex = ex.named_in(spoken())
@@ -505,42 +412,6 @@ SWEEP_AGREE = 1e-9
 """The relative distance from its curve within which a constructed value agrees: the
 construction and the curve's solver round alike at every position the bundled exercises
 sweep (1e-16 to 1e-14), so anything near this is a wrong number, not rounding."""
-
-
-def _solve_train(ex, out_dir: str | None, pdf: bool) -> None:
-    """Solve a gear train, print its speeds and ratios, and write its files."""
-    from .train_solution import solve_train
-
-    _solve_other(ex, solve_train, out_dir, pdf)
-
-
-def _solve_cam(ex, out_dir: str | None, pdf: bool, allow_undercut: bool) -> None:
-    """Solve a cam's follower motion and profile, print its checks, and write its files."""
-    from .cam_solution import solve_cam
-
-    _solve_other(ex, functools.partial(solve_cam, allow_undercut=allow_undercut), out_dir,
-                 pdf)
-
-
-def _solve_other(ex, solve, out_dir: str | None, pdf: bool) -> None:
-    """Solve a gear train or a cam, print its checked numbers, write its files; exit 3 if a
-    number disagrees with its reference."""
-    from ..graphics.export import cairo_missing, output_folder
-
-    out = Path(out_dir or f"{ex.id}-solution")
-    with output_folder(out):
-        solved = solve(ex)
-        reason = cairo_missing() if pdf else None
-        written = solved.write(out, pdf=pdf and reason is None)
-    with speaking("en"):                # the terminal's checks are English, as a linkage's
-        lines = solved.lines()
-    for line in lines:
-        click.echo(line)
-    click.echo(f"wrote {len(written)} files to {out}/")
-    if reason:
-        click.echo(f"PDF skipped: {reason}", err=True)
-    if solved.failures:
-        raise CheckMismatch(solved.failures)
 
 
 @cli.command()
@@ -771,7 +642,7 @@ def view(source, output, step):
     from ..graphics.export import write_text
     from ..graphics.view_page import view_html
 
-    ex = _exercise(source, None)
+    ex = _linkage(source)
     target = Path(output or f"{ex.id}-view.html")
     if sys.stderr.isatty():
         with click.progressbar(length=round(360 / step), label="frames",
@@ -802,46 +673,18 @@ def list_():
     Example:
       tarsim list
     """
-    from .cam_file import CamExercise
-    from .catalog import everything, load
-    from .mechanism_file import read_source, read_toml
-    from .rotor_file import BalanceExercise
-    from .train_file import TrainExercise, ask_symbol
+    from .catalog import everything
+    from .chapters import listing
 
     found = everything()
     pad = max(map(len, found), default=0) + 2
     for name, path in found.items():
         try:
-            ex = load(str(path))
-            source = read_toml(read_source(path), str(path)).get("source")
+            shown = listing(path, name)
         except TarsimError as e:
             click.echo(f"{name:<{pad}}(cannot be read: {e})")
             continue
-        train, cam = isinstance(ex, TrainExercise), isinstance(ex, CamExercise)
-        rotor = isinstance(ex, BalanceExercise)
-        click.echo(f"{name:<{pad}}{ex.name if train or cam or rotor else ex.mechanism.name}")
-        if source:
-            click.echo(f"{'':<{pad}}from {source}")
-        asks = (", ".join(ask_symbol(q) for q in ex.asks) if train else
-                "the follower's motion diagrams and the profile by inversion" if cam
-                else _balance_asks(ex) if rotor else _asks(ex))
-        click.echo(f"{'':<{pad}}asks: {asks}")
-
-
-def _balance_asks(ex) -> str:
-    """What a balancing exercise finds, in a few words."""
-    if ex.rotor is not None:
-        return ("the balancing mass by the force polygon" if len(ex.rotor.planes) == 1 else
-                "the two balancing masses by the couple and force polygons")
-    if len(ex.engine.cranks) == 1:
-        return "the primary and secondary forces, partly balanced"
-    return "the primary and secondary forces and couples by their polygons"
-
-
-def _asks(ex) -> str:
-    """The find list as a textbook writes it, then the positions: "ω4, V_B at θ2 = 90°"."""
-    from ..constructions.asks import symbol
-
-    names = ", ".join(symbol(q) for q in ex.find)
-    at = ", ".join(p.label.split(" (")[0] for p in ex.positions)
-    return f"{names} at {at}" if at else names
+        click.echo(f"{name:<{pad}}{shown.title}")
+        if shown.origin:
+            click.echo(f"{'':<{pad}}from {shown.origin}")
+        click.echo(f"{'':<{pad}}asks: {shown.asks}")

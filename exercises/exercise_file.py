@@ -31,7 +31,7 @@ import difflib
 import math
 import re
 from dataclasses import dataclass, replace
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any, ClassVar
 from pathlib import Path
 
 from ..constructions import asks as A
@@ -78,6 +78,7 @@ class Exercise:
     reader; ``asks`` the same parsed once, "centres" as every centre, each once.
     """
 
+    chapter: ClassVar[str] = "linkages"
     id: str
     mechanism: Mechanism
     find: tuple[str, ...]
@@ -197,10 +198,11 @@ def load_exercise(path: str | Path, exercise_id: str | None = None) -> Exercise:
     return parse_exercise(read_source(path), str(path), exercise_id or path.stem)
 
 
-def parse_exercise(text: str, filename: str = "<string>",
-                   exercise_id: str = "exercise") -> Exercise:
-    """Parse an exercise from TOML text (see :func:`load_exercise`)."""
-    data = read_toml(text, filename)
+def parse_exercise(text: str, filename: str = "<string>", exercise_id: str = "exercise",
+                   data: dict[str, Any] | None = None) -> Exercise:
+    """Parse an exercise from TOML text (see :func:`load_exercise`); ``data``, the tables
+    already parsed from it (and taken apart here), spares a second parse."""
+    data = read_toml(text, filename) if data is None else data
     where = SourceMap(text)
     ask = data.pop("ask", None)
     loading = {t: data.pop(t) for t in LOAD_TABLES if t in data}

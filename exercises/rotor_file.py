@@ -11,7 +11,7 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any
+from typing import Any, ClassVar
 
 from ..constructions.balancing.rotor import Engine, Mass, Plane, Rotor
 from ..constructions.model import LENGTH_UNITS
@@ -19,7 +19,7 @@ from .mechanism_file import _CONTROL, radians_in_turn, read_source
 from .names import named_in, read_names, renamed_field
 from .table_file import SPEEDS, Tables
 
-__all__ = ["BalanceExercise", "is_balance", "load_balance", "parse_balance"]
+__all__ = ["BalanceExercise", "load_balance", "parse_balance"]
 
 _TOP = ("name", "names", "source", "description", "units", "rotor", "mass", "balance", "engine",
         "cylinder")
@@ -37,6 +37,8 @@ _KEYS = {"rotor": ("speed",), "mass": ("name", "mass", "radius", "angle", "plane
 class BalanceExercise:
     """A rotor to balance, or an engine whose unbalance is asked, and how the file states
     its units."""
+
+    chapter: ClassVar[str] = "balancing"
 
     id: str
     name: str
@@ -56,11 +58,6 @@ class BalanceExercise:
     renamed = renamed_field
 
 
-def is_balance(data: dict[str, Any]) -> bool:
-    """True for a file that describes a rotor or an engine to balance."""
-    return "rotor" in data or "engine" in data
-
-
 def load_balance(path: str | Path, exercise_id: str | None = None) -> BalanceExercise:
     """Read a balancing exercise file.
 
@@ -73,10 +70,11 @@ def load_balance(path: str | Path, exercise_id: str | None = None) -> BalanceExe
     return parse_balance(read_source(path), str(path), exercise_id or path.stem)
 
 
-def parse_balance(text: str, filename: str = "<string>",
-                  exercise_id: str = "rotor") -> BalanceExercise:
-    """Parse a balancing exercise from TOML text (see :func:`load_balance`)."""
-    t = Tables.read(text, filename, "balancing", _TOP, _KEYS)
+def parse_balance(text: str, filename: str = "<string>", exercise_id: str = "rotor",
+                  data: dict[str, Any] | None = None) -> BalanceExercise:
+    """Parse a balancing exercise from TOML text (see :func:`load_balance`); ``data``, the
+    tables already parsed from it, spares a second parse."""
+    t = Tables.read(text, filename, "balancing", _TOP, _KEYS, data)
     data, fail = t.data, t.fail
     if "rotor" in data and "engine" in data:
         raise fail("a file is a rotor or an engine, not both", "engine")

@@ -25,6 +25,7 @@ from ..constructions.checks import FigureSpec, Quantity
 from ..constructions.limit_positions import drawn_limits
 from ..constructions.narration import (Number, Word, measure_words, narrate, numerals, phrase,
                                       render, significant, speaking, spoken, words)
+from ..constructions.errors import CheckMismatch
 from ..constructions.record import Kind, Panel, Slice, slice
 from ..constructions.scales import nice
 from ..constructions.velocity_drawing import method_words
@@ -202,6 +203,31 @@ class WorkedSolution:
         """In a notebook: the interactive page, steps and crank (see :meth:`view`)."""
         return self.view()._repr_html_()
 
+    def lines(self) -> list[str]:
+        """What the terminal shows of the solution: each answer in the file's units, each
+        position's notes, and each figure too big for the exercise's paper."""
+        ex, units = self.exercise, self.exercise.mechanism.units
+        out = [answer_line(name, q, units, whole=True)
+               for name, q in self.overall.quantities.items()]
+        for sol in self.positions:
+            if len(self.positions) > 1:
+                out.append(f"at {sol.position.label}:")
+            out += [answer_line(name, qq.in_file_axes(ex.mechanism), units)
+                    for name, q in sol.quantities.items()
+                    for qq in (q, *q.alternatives.values())]
+            out += [f"note: {note}" for note in sol.notes]
+        at = ("at the exercise's scale" if ex.mechanism.scale
+              else "even at the coarsest scale it is drawn at")
+        out += [f"note: {stem} {at} is {w:.0f} × {h:.0f} mm, more than {ex.paper} holds; its "
+                "page is that size (--paper A3 may hold it)"
+                for stem, (w, h) in self.oversize().items()]
+        return out
+
+    def check(self) -> None:
+        """Raise :class:`CheckMismatch` naming every quantity that failed its check."""
+        if self.failures:
+            raise CheckMismatch([q.name for q in self.failures])
+
     def oversize(self) -> dict[str, tuple[float, float]]:
         """Each figure a sheet of the exercise's paper does not hold (drawn at a scale the
         exercise states), with its page's size (mm)."""
@@ -294,6 +320,11 @@ class ChapterFiles:
                                            allow_nan=False) + "\n"     # never NaN nor inf
         return files
 
+    def check(self) -> None:
+        """Raise :class:`CheckMismatch` naming every number that failed its check."""
+        if self.failures:
+            raise CheckMismatch(self.failures)
+
     def write(self, folder: str | Path, *, pdf: bool = True) -> list[Path]:
         """Write the files into ``folder`` (with a PDF of each figure when ``pdf``), all or
         nothing."""
@@ -324,7 +355,7 @@ def _figure(sol: Solution, spec: FigureSpec, answers) -> _Sketch:
     if spec.kind == "polygons":
         return _worked_page(sol, answers)
     if spec.kind == "forces":
-        from ..constructions.force_polygons import drawn_forces
+        from ..constructions.forces.polygons import drawn_forces
         from ..graphics.force_figure import draw_force_figure
 
         forces, sheet = drawn_forces(work), paper(sol.exercise.paper)
@@ -334,7 +365,7 @@ def _figure(sol: Solution, spec: FigureSpec, answers) -> _Sketch:
             (("Inertia loads read off the acceleration polygon", Panel.ACCELERATION, shown,
               "not drawn"), ("The force polygons", Panel.FORCE, shown)))
     if spec.kind == "loads":
-        from ..constructions.force_polygons import drawn_forces
+        from ..constructions.forces.polygons import drawn_forces
         from ..graphics.loads_figure import draw_loads
 
         forces, sheet = drawn_forces(work), paper(sol.exercise.paper)
@@ -347,7 +378,7 @@ def _figure(sol: Solution, spec: FigureSpec, answers) -> _Sketch:
             work.scales.space, _holds(sheet), fixed=bool(sol.exercise.mechanism.scale)),
             sheet), shown)
     if spec.kind == "bodies":
-        from ..constructions.force_polygons import drawn_forces
+        from ..constructions.forces.polygons import drawn_forces
         from ..graphics.free_body_figure import draw_free_bodies
 
         forces, sheet = drawn_forces(work), paper(sol.exercise.paper)

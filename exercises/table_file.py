@@ -28,15 +28,17 @@ class Tables:
 
     @classmethod
     def read(cls, text: str, filename: str, kind: str, top: tuple[str, ...],
-             keys: dict[str, tuple[str, ...]]) -> Tables:
-        """Parse ``text``, refusing a top-level table or setting not in ``top``.
+             keys: dict[str, tuple[str, ...]], data: dict[str, Any] | None = None) -> Tables:
+        """Parse ``text`` (unless ``data`` gives its tables, parsed already), refusing a
+        top-level table or setting not in ``top``.
 
         Raises
         ------
         InputError
             For malformed TOML or an unknown table, naming file:line.
         """
-        out = cls(read_toml(text, filename), SourceMap(text), filename, keys)
+        out = cls(read_toml(text, filename) if data is None else data, SourceMap(text),
+                  filename, keys)
         for k in out.data:
             if k not in top:
                 raise out.fail(f"unknown table or setting '{k}' in a {kind} file; expected "

@@ -11,7 +11,7 @@ import re
 from dataclasses import dataclass, replace
 from fractions import Fraction
 from pathlib import Path
-from typing import Any
+from typing import Any, ClassVar
 
 from ..constructions.asks import symbol
 from ..constructions.errors import InputError
@@ -21,7 +21,7 @@ from ..constructions.model import LENGTH_UNITS
 from .mechanism_file import RANGE, SourceMap, _float, in_range, read_source, read_toml
 from .names import named_in, read_names
 
-__all__ = ["TrainExercise", "is_train", "load_train", "parse_train"]
+__all__ = ["TrainExercise", "load_train", "parse_train"]
 
 _TOP = ("name", "names", "source", "description", "fixed", "units", "gear", "arm", "mesh", "shaft",
         "input", "involute", "ask")
@@ -36,6 +36,7 @@ class TrainExercise:
     """A gear train and what is asked of it: speeds ``omega<n>``, ratios
     ``omega<a>/omega<b>``."""
 
+    chapter: ClassVar[str] = "gears"
     id: str
     train: GearTrain
     asks: tuple[str, ...]
@@ -58,12 +59,6 @@ class TrainExercise:
         return replace(self, train=replace(self.train, name=name))
 
 
-def is_train(data: dict[str, Any]) -> bool:
-    """True for a file that lists gears, meshes, shafts or an arm (a gear train), not links:
-    a train that lost its [[gear]] tables is told so, not read as a linkage."""
-    return any(k in data for k in ("gear", "mesh", "shaft", "arm", "involute"))
-
-
 def load_train(path: str | Path, exercise_id: str | None = None) -> TrainExercise:
     """Read a gear-train exercise file.
 
@@ -76,10 +71,12 @@ def load_train(path: str | Path, exercise_id: str | None = None) -> TrainExercis
     return parse_train(read_source(path), str(path), exercise_id or path.stem)
 
 
-def parse_train(text: str, filename: str = "<string>",
-                exercise_id: str = "train") -> TrainExercise:
-    """Parse a gear-train exercise from TOML text (see :func:`load_train`)."""
-    return _Reader(read_toml(text, filename), SourceMap(text), filename, exercise_id).read()
+def parse_train(text: str, filename: str = "<string>", exercise_id: str = "train",
+                data: dict[str, Any] | None = None) -> TrainExercise:
+    """Parse a gear-train exercise from TOML text (see :func:`load_train`); ``data``, the
+    tables already parsed from it, spares a second parse."""
+    data = read_toml(text, filename) if data is None else data
+    return _Reader(data, SourceMap(text), filename, exercise_id).read()
 
 
 class _Reader:

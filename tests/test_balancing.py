@@ -25,7 +25,7 @@ from tarsim.constructions.balancing.polygons import draw_balance
 from tarsim.constructions.errors import InputError
 from tarsim.constructions.reference.balance import quadrant_angle, resultant
 from tarsim.exercises.balance_solution import solve_balance
-from tarsim.exercises.catalog import bundled_balancing, load
+from tarsim.exercises.catalog import bundled, load
 from tarsim.exercises.cli import cli
 from tarsim.exercises.rotor_file import parse_balance
 
@@ -124,7 +124,7 @@ def test_a_three_cylinder_engine_balances_its_forces_not_its_couples():
     assert p.left("primary couple") == pytest.approx(math.sqrt(3) * 0.05 * 0.1, rel=1e-12)
 
 
-TEXT = Path(bundled_balancing()["four-mass-shaft"]).read_text(encoding="utf-8")
+TEXT = Path(bundled("balancing")["four-mass-shaft"]).read_text(encoding="utf-8")
 
 
 @pytest.mark.parametrize("old, new, words", [

@@ -12,10 +12,10 @@ from click.testing import CliRunner
 from tarsim.constructions.errors import InputError
 from tarsim.exercises.cam_file import parse_cam
 from tarsim.exercises.cam_solution import solve_cam
-from tarsim.exercises.catalog import bundled_cams, load
+from tarsim.exercises.catalog import bundled, load
 from tarsim.exercises.cli import cli
 
-CAM = Path(bundled_cams()["roller-harmonic-cycloidal"]).read_text(encoding="utf-8")
+CAM = Path(bundled("cams")["roller-harmonic-cycloidal"]).read_text(encoding="utf-8")
 
 
 def test_the_peaks_are_the_textbook_formulas_times_the_cams_speed():
@@ -136,7 +136,7 @@ def test_the_modified_uniform_velocity_peaks_are_its_blends():
     ("divisions = \"eight\"", "2 to 24 equal parts, not 'eight'"),
 ])
 def test_a_bad_blend_is_refused_at_its_line(new, words):
-    text = Path(bundled_cams()["offset-knife-edge"]).read_text(encoding="utf-8")
+    text = Path(bundled("cams")["offset-knife-edge"]).read_text(encoding="utf-8")
     key = new.split(" =")[0]
     old = next(line for line in text.splitlines() if line.startswith(key + " ="))
     with pytest.raises(InputError) as e:

@@ -21,11 +21,11 @@ import tarsim
 from tarsim.constructions.errors import InputError, TarsimError
 from tarsim.constructions.forces.polygons import drawn_forces
 from tarsim.constructions.reference import solver
-from tarsim.exercises.catalog import bundled_forces
+from tarsim.exercises.catalog import bundled
 from tarsim.exercises.cli import cli
 from tarsim.exercises.exercise_file import load_exercise, parse_exercise
 
-FORCES = {name: Path(path) for name, path in bundled_forces().items()}
+FORCES = {name: Path(path) for name, path in bundled("forces").items()}
 
 
 @pytest.mark.parametrize("name", ["engine-forces", "four-bar-forces"])

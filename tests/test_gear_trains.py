@@ -17,7 +17,7 @@ from tarsim.constructions.errors import InputError
 from tarsim.constructions.gears.tabular import tabulate
 from tarsim.constructions.gears.train import Gear, GearTrain, Mesh
 from tarsim.constructions.reference.willis import willis_speeds
-from tarsim.exercises.catalog import bundled_trains, load
+from tarsim.exercises.catalog import bundled, load
 from tarsim.exercises.cli import cli
 from tarsim.exercises.train_file import parse_train
 from tarsim.exercises.train_solution import solve_train
@@ -107,7 +107,7 @@ def test_steps_md_gives_the_mesh_in_millimetres_and_degrees_as_the_terminal_does
     assert "/" not in "".join(rows["arc_of_contact"])
 
 
-@pytest.mark.parametrize("name", sorted(bundled_trains()))
+@pytest.mark.parametrize("name", sorted(bundled("gears")))
 def test_every_bundled_train_agrees_with_willis_exactly(name):
     s = solved(name)
     assert s.passed
@@ -142,7 +142,7 @@ def test_the_tabular_method_is_the_willis_solution(sun, planet, fixed, driver, s
 
 
 # ----- bad trains ------------------------------------------------------------------------------
-Q1 = (Path(bundled_trains()["planetary-q1"])).read_text(encoding="utf-8")
+Q1 = (Path(bundled("gears")["planetary-q1"])).read_text(encoding="utf-8")
 
 
 @pytest.mark.parametrize("old, new, words", [
@@ -235,7 +235,7 @@ def test_draw_sets_a_train_in_side_view(tmp_path):
     assert "the train" in svg and 'class="hatch"' in svg
 
 
-Q4 = (Path(bundled_trains()["planetary-q4"])).read_text(encoding="utf-8")
+Q4 = (Path(bundled("gears")["planetary-q4"])).read_text(encoding="utf-8")
 
 
 @pytest.mark.parametrize("given, t_in", [("torque = 20", F(20)),
@@ -319,7 +319,7 @@ def test_the_diagram_has_its_figure_and_its_steps():
 
 
 # ----- the involute mesh -----------------------------------------------------------------------
-PAIR = (Path(bundled_trains()["involute-pair"])).read_text(encoding="utf-8")
+PAIR = (Path(bundled("gears")["involute-pair"])).read_text(encoding="utf-8")
 
 
 def test_the_drawn_mesh_reads_the_textbook_path_arc_and_contact_ratio():

@@ -19,11 +19,11 @@ from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
 from tarsim.constructions.errors import InputError
-from tarsim.exercises.catalog import bundled_trains
+from tarsim.exercises.catalog import bundled
 from tarsim.exercises.train_file import parse_train
 from tarsim.exercises.train_solution import solve_train
 
-PAIR = Path(bundled_trains()["involute-pair"]).read_text(encoding="utf-8")
+PAIR = Path(bundled("gears")["involute-pair"]).read_text(encoding="utf-8")
 # module 10 mm, 20 and 40 teeth at 20°: base radii 93.97 and 187.94 mm, addendum radii 110
 # and 210, root radii 87.5 and 187.5
 

@@ -75,10 +75,10 @@ def test_a_force_far_off_its_link_is_named_under_the_drawing():
     30 m along it: drawn there, the point would shrink the mechanism to a dot or stretch
     the page 100 times. It is named under the figure, and the figure, its force scale and
     its sheet are the bundled four-bar's own."""
-    from tarsim.exercises.catalog import bundled_forces
+    from tarsim.exercises.catalog import bundled
     from tarsim.exercises.exercise_file import parse_exercise
 
-    text = Path(bundled_forces()["four-bar-forces"]).read_text(encoding="utf-8")
+    text = Path(bundled("forces")["four-bar-forces"]).read_text(encoding="utf-8")
     far = text.replace("[[couple]]", '[[force]]\nlink = 2\nname = "P"\npoint = [30000, 0]\n'
                                      "force = [0, -500]\n\n[[couple]]")
     plain = tarsim.solve(parse_exercise(text, "four-bar.toml")).figures["loads"]

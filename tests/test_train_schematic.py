@@ -14,7 +14,7 @@ from pathlib import Path
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from tarsim.exercises.catalog import bundled_trains
+from tarsim.exercises.catalog import bundled
 from tarsim.exercises.train_file import parse_train
 from tarsim.exercises.train_solution import solve_train
 from tarsim.graphics.figure import Path as FPath
@@ -69,7 +69,7 @@ def test_a_pinion_driving_the_arm_through_a_gear_on_its_hub():
     driving it at 80 rpm cw: ω3 = ω9 = 80·30/90 = 80/3; the ring fixed, ω2 = ω3·(140 + 60)/60
     = 800/9 and ω4 = ω3 − (ω2 − ω3)·60/40 = −200/3. The pinion stands a centre distance,
     (90 + 30)/2 = 60 modules, off the main axis; the gear 9 on it."""
-    q1 = Path(bundled_trains()["planetary-q1"]).read_text(encoding="utf-8")
+    q1 = Path(bundled("gears")["planetary-q1"]).read_text(encoding="utf-8")
     text = (q1.replace("[arm]", '[[gear]]\nnumber = 9\nteeth = 90\n\n[[gear]]\nnumber = 10\n'
                        'teeth = 30\n\n[arm]', 1)
             .replace("gears = [2, 4]", "gears = [2, 4]\n\n[[mesh]]\ngears = [10, 9]\n\n"

@@ -8,7 +8,7 @@ from pathlib import Path
 from click.testing import CliRunner
 
 from tarsim.constructions.reference.willis import willis_speeds
-from tarsim.exercises.catalog import bundled_trains
+from tarsim.exercises.catalog import bundled
 from tarsim.exercises.cli import cli
 from tarsim.exercises.train_file import parse_train
 
@@ -17,7 +17,7 @@ def test_a_ratio_over_a_member_that_stands_still_is_refused(tmp_path):
     """A reverted planet of 60 and 60 teeth between suns of 40 and 40, the sun 2 fixed:
     (ω5 − ω6)/(0 − ω6) = (40/60)(60/40) = 1, so the sun 5 stands still whatever the arm
     does, and ω6/ω5 divides by 0: one line, exit 1, nothing written."""
-    text = Path(bundled_trains()["planetary-q3"]).read_text(encoding="utf-8")
+    text = Path(bundled("gears")["planetary-q3"]).read_text(encoding="utf-8")
     for old, new in (("number = 4\nname = \"planet\"\nteeth = 40", "number = 4\nname = "
                       "\"planet\"\nteeth = 60"), ("number = 5\nname = \"output sun\"\nteeth = 60",
                                                  "number = 5\nname = \"output sun\"\nteeth = 40")):

@@ -30,12 +30,12 @@ import tarsim
 from tarsim.constructions.errors import InputError
 from tarsim.constructions.reference.flywheel import (fluctuation, flywheel_inertia,
                                                      speed_fluctuation)
-from tarsim.exercises.catalog import bundled_forces
+from tarsim.exercises.catalog import bundled
 from tarsim.exercises.cli import cli
 from tarsim.exercises.exercise_file import load_exercise, parse_exercise
 from tarsim.exercises.turning_moment import turning_moment
 
-FORCES = {name: Path(path) for name, path in bundled_forces().items()}
+FORCES = {name: Path(path) for name, path in bundled("forces").items()}
 SHAPER = FORCES["crank-shaper-forces"]
 RHOMBUS = Path(__file__).parent / "reproducers" / "wrong-flywheel-rhombus-change-point.toml"
 

@@ -7,41 +7,24 @@ from pathlib import Path
 
 from ...constructions.errors import InputError
 
-__all__ = ["bundled", "bundled_trains", "bundled_cams", "bundled_balancing", "bundled_forces",
-           "everything", "resolve", "load"]
+__all__ = ["bundled", "everything", "resolve", "load"]
 
 
-def bundled() -> dict[str, Path]:
-    """Map each bundled linkage's id (the file name without ``.toml``) to its path."""
-    return _tomls(resources.files(__name__))
-
-
-def bundled_trains() -> dict[str, Path]:
-    """Map each bundled gear train's id to its path (the catalog's gears/ folder)."""
-    return _tomls(resources.files(__name__) / "gears")
-
-
-def bundled_cams() -> dict[str, Path]:
-    """Map each bundled cam's id to its path (the catalog's cams/ folder)."""
-    return _tomls(resources.files(__name__) / "cams")
-
-
-def bundled_balancing() -> dict[str, Path]:
-    """Map each bundled rotor or engine's id to its path (the catalog's balancing/ folder)."""
-    return _tomls(resources.files(__name__) / "balancing")
-
-
-def bundled_forces() -> dict[str, Path]:
-    """Map each bundled loaded linkage's id to its path (the catalog's forces/ folder): the
-    force analysis's exercises, kept apart so the kinematics' own stay quick to check."""
-    return _tomls(resources.files(__name__) / "forces")
+def bundled(folder: str = "") -> dict[str, Path]:
+    """Map each bundled exercise of one of the catalog's folders to its path, by id (the
+    file name without ``.toml``): the linkages' by default, else a chapter's folder
+    (``"gears"``, ``"cams"``, ``"balancing"``, ``"forces"``: the loaded linkages, kept apart
+    so the kinematics' own stay quick to check)."""
+    root = resources.files(__name__)
+    return _tomls(root / folder if folder else root)
 
 
 def everything() -> dict[str, Path]:
-    """Every bundled id, chapter by chapter: the linkages, the loaded linkages, the gear
-    trains, the cams, the rotors and engines."""
-    return {**bundled(), **bundled_forces(), **bundled_trains(), **bundled_cams(),
-            **bundled_balancing()}
+    """Every bundled id, chapter by chapter in the registry's order, each chapter's folders
+    in its own."""
+    from ..chapters import chapters
+
+    return {k: v for c in chapters() for folder in c.folders for k, v in bundled(folder).items()}
 
 
 def _tomls(root) -> dict[str, Path]:
@@ -81,12 +64,10 @@ def load(source: str | Path):
     """Read the exercise ``source`` names: a TOML file's path, or a bundled id.
 
     An exercise file is a mechanism file with an ``[ask]`` table (see the
-    README); without one it asks for every centre and each link's ω. A file that
-    lists ``[[gear]]`` tables is a gear train (a :class:`~..train_file.TrainExercise`), one
-    with a ``[cam]`` table a cam (a :class:`~..cam_file.CamExercise`), one with a
-    ``[rotor]`` or ``[engine]`` table a balancing exercise
-    (a :class:`~..rotor_file.BalanceExercise`).
-    Its id is the file's stem, or the bundled id.
+    README); without one it asks for every centre and each link's ω. A file of another
+    chapter (:mod:`..chapters`) says so by its tables: ``[[gear]]`` a gear train, ``[cam]``
+    a cam, ``[rotor]`` or ``[engine]`` a balancing exercise. Its id is the file's stem, or
+    the bundled id.
 
     Raises
     ------
@@ -94,21 +75,7 @@ def load(source: str | Path):
         If it is neither a file nor a bundled id, or the file is not a valid
         exercise (the message names file:line).
     """
-    from ..cam_file import is_cam, parse_cam
-    from ..exercise_file import load_exercise
-    from ..mechanism_file import read_source, read_toml
-    from ..rotor_file import is_balance, parse_balance
-    from ..train_file import is_train, parse_train
+    from ..chapters import read_file
 
     source = str(source)
-    path = resolve(source)
-    exercise_id = Path(source).stem if Path(source).suffix else source
-    text = read_source(path)
-    data = read_toml(text, str(path))
-    if is_train(data):
-        return parse_train(text, str(path), exercise_id)
-    if is_cam(data):
-        return parse_cam(text, str(path), exercise_id)
-    if is_balance(data):
-        return parse_balance(text, str(path), exercise_id)
-    return load_exercise(path, exercise_id)
+    return read_file(resolve(source), Path(source).stem if Path(source).suffix else source)

@@ -63,17 +63,6 @@ def solve(exercise: Exercise) -> WorkedSolution:
     tarsim.constructions.errors.TarsimError
         If the mechanism cannot be assembled or a construction breaks down.
     """
-    from tarsim.exercises.solution_files import solve_worked
-    from tarsim.exercises.train_file import TrainExercise
-    from tarsim.exercises.train_solution import solve_train
-    from tarsim.exercises.cam_file import CamExercise
-    from tarsim.exercises.cam_solution import solve_cam
-    from tarsim.exercises.rotor_file import BalanceExercise
-    from tarsim.exercises.balance_solution import solve_balance
-    if isinstance(exercise, TrainExercise):     # a gear train: speeds by the notes' methods
-        return solve_train(exercise)
-    if isinstance(exercise, BalanceExercise):   # a rotor or an engine: by its polygons
-        return solve_balance(exercise)
-    if isinstance(exercise, CamExercise):       # a cam: the motion diagrams and the profile
-        return solve_cam(exercise)
-    return solve_worked(exercise)
+    from tarsim.exercises.chapters import chapter_of
+
+    return chapter_of(exercise).solve(exercise)
