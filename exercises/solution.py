@@ -17,16 +17,14 @@ from dataclasses import dataclass, field
 from ..constructions.assembly_record import Assembly
 from ..constructions.checks import Answer, Quantity
 from ..constructions.errors import BranchError, DeadPoint, InputError, TarsimError
+from ..constructions.given_rate import convert
 from ..constructions.methods import Work, answer_all
 from ..constructions.narration import narrate, spoken
 from ..constructions.polygon_walk import Polygon
 from ..constructions.record import Panel
 from ..constructions.reference.solver import Kinematics
 from ..constructions.registry import METHODS
-from ..graphics.paper import paper, room
-
-from .given_rate import convert
-
+from ..constructions.scales import ROOM
 from .exercise_file import Exercise, Position
 
 __all__ = ["Solution", "Overall", "solve_exercise", "solve_positions", "solve_overall"]
@@ -88,8 +86,9 @@ class Overall:
     answers: list[Answer] = field(default_factory=list)
 
 
-def solve_overall(ex: Exercise) -> Overall:
-    """Answer what ``ex`` asks of the mechanism as a whole (DOF, Grashof, time ratio, stroke).
+def solve_overall(ex: Exercise, *, room: tuple[float, float] = ROOM) -> Overall:
+    """Answer what ``ex`` asks of the mechanism as a whole (DOF, Grashof, time ratio, stroke),
+    its scales chosen for a drawing area of ``room`` (paper mm).
 
     Raises
     ------
@@ -99,7 +98,7 @@ def solve_overall(ex: Exercise) -> Overall:
     if not ex.mechanism_asks:
         return Overall()
     try:
-        work = _work(ex, ex.mechanism_asks)
+        work = _work(ex, ex.mechanism_asks, room)
         quantities, answers = answer_all(work, METHODS)
     except TarsimError as e:
         if not ex.mechanism.source:
@@ -108,22 +107,24 @@ def solve_overall(ex: Exercise) -> Overall:
     return Overall(work, quantities, answers)
 
 
-def _work(ex: Exercise, asks) -> Work:
+def _work(ex: Exercise, asks, room: tuple[float, float]) -> Work:
     """The work of ``asks``: the input's rates converted first when the exercise gives them
     by another member (the drawing's conversion for the construction, the solver's for the
     reference, the drawn one stated under the figures)."""
     mech, reference, said = ex.mechanism, None, None
     if mech.given is not None:
         mech, reference, said = convert(mech)
-    work = Work(mech, asks, ex.methods, ex.stated, room(paper(ex.paper)), reference=reference,
+    work = Work(mech, asks, ex.methods, ex.stated, room, reference=reference,
                 loads=ex.loads)
     if said:
         work.note(said)
     return work
 
 
-def solve_positions(ex: Exercise) -> list[Solution]:
-    """Solve ``ex`` at each of its positions (or at its [input] angle if it lists none).
+def solve_positions(ex: Exercise, *, room: tuple[float, float] = ROOM) -> list[Solution]:
+    """Solve ``ex`` at each of its positions (or at its [input] angle if it lists none), its
+    scales chosen for a drawing area of ``room`` (paper mm; the sheet's, the figures' to
+    say: :func:`tarsim.graphics.paper.room`).
 
     Raises
     ------
@@ -131,18 +132,19 @@ def solve_positions(ex: Exercise) -> list[Solution]:
         As :func:`solve_exercise`, with the position named.
     """
     if not ex.positions:
-        return [solve_exercise(ex)]
+        return [solve_exercise(ex, room=room)]
     out = []
     for p in ex.positions:
-        sol = solve_exercise(ex.at(p), where=p.label)
+        sol = solve_exercise(ex.at(p), where=p.label, room=room)
         sol.position = p
         out.append(sol)
     return out
 
 
-def solve_exercise(ex: Exercise, *, where: str | None = None) -> Solution:
+def solve_exercise(ex: Exercise, *, where: str | None = None,
+                   room: tuple[float, float] = ROOM) -> Solution:
     """Solve what ``ex`` asks at its stated position, said as ``where`` (default: its input
-    angle, "θ2 = 90°").
+    angle, "θ2 = 90°"), its scales chosen for a drawing area of ``room`` (paper mm).
 
     Raises
     ------
@@ -154,7 +156,7 @@ def solve_exercise(ex: Exercise, *, where: str | None = None) -> Solution:
     if ex.without_motion:
         raise InputError(ex.without_motion, file=mech.source or None)
     try:
-        work = _work(ex, ex.position_asks)
+        work = _work(ex, ex.position_asks, room)
         work.prepare()
         quantities, answers = answer_all(work, METHODS)
     except TarsimError as e:

@@ -247,8 +247,10 @@ def solve_worked(ex: Exercise) -> WorkedSolution:
         If the mechanism cannot be assembled or a construction breaks down, saying
         which and where.
     """
-    overall = solve_overall(ex)
-    return WorkedSolution(ex, overall, solve_positions(ex) if ex.position_asks else [])
+    where = room(paper(ex.paper))        # the figures' room on the sheet sets the scales
+    overall = solve_overall(ex, room=where)
+    return WorkedSolution(ex, overall,
+                          solve_positions(ex, room=where) if ex.position_asks else [])
 
 
 def solve_to_files(ex: Exercise) -> tuple[list[Solution], dict[str, str]]:

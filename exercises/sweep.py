@@ -36,7 +36,7 @@ from ..constructions.limit_positions import stroke_point
 from ..constructions.model import Drive, Mechanism, Slide
 
 from .exercise_file import Exercise
-from .given_rate import convert
+from ..constructions.given_rate import convert
 from .solution import solve_positions
 
 __all__ = ["Output", "Sample", "Event", "Check", "Sweep", "output_names", "pick_output",

@@ -37,7 +37,7 @@ from ..constructions.reference.centres import (MoveTogether, centre_error, insta
 from ..constructions.velocity_polygon import draw_velocity_polygon
 from ..graphics.workers import draw_each
 from .exercise_file import Exercise
-from .given_rate import convert
+from ..constructions.given_rate import convert
 
 __all__ = ["view_data", "FRAME_CHECK"]
 

@@ -7,18 +7,18 @@ so the input's rates follow from one provisional drawing: the velocity polygon d
 polygons at that ω, with α = 0 and α = 1 rad/s², its acceleration per rad/s². The
 construction converts so, by drawing; the analytic reference converts its own way, by the
 vector-loop solver at the same provisional rates; each then solves with its own ω and α,
-so a wrong conversion shows as a disagreement.
+so a wrong conversion shows as a disagreement (:mod:`.reference.given_rates`).
 """
 
 from __future__ import annotations
 
-from ..constructions.acceleration_polygon import draw_acceleration_polygon
-from ..constructions.assembly import assemble
-from ..constructions.errors import InputError
-from ..constructions.model import Drive, Mechanism
-from ..constructions.narration import Phrase, Quantity, Word, phrase
-from ..constructions.reference import solver
-from ..constructions.velocity_polygon import draw_velocity_polygon
+from .acceleration_polygon import draw_acceleration_polygon
+from .assembly import assemble
+from .errors import InputError
+from .model import Mechanism
+from .narration import Phrase, Quantity, Word, phrase
+from .reference.given_rates import member_rate, with_input_rates
+from .velocity_polygon import draw_velocity_polygon
 
 __all__ = ["convert"]
 
@@ -34,7 +34,7 @@ def convert(m: Mechanism) -> tuple[Mechanism, Mechanism, Phrase]:
         rad/s of the input is nil), so no ω gives it.
     """
     g, d = m.given, m.drive
-    per_w, per_w_ref = _rate(m, 1.0, 0.0), _reference(m, 1.0, 0.0)
+    per_w, per_w_ref = _rate(m, 1.0, 0.0), member_rate(m, 1.0, 0.0)
     if abs(per_w) <= 1e-12 * max(abs(per_w_ref), 1e-300) or per_w_ref == 0.0:
         raise InputError(f"{_what(g)} does not move with link {d.link} at this position, so "
                          f"no ω{d.link} gives it {_value(m, g)}; choose another member or "
@@ -42,11 +42,11 @@ def convert(m: Mechanism) -> tuple[Mechanism, Mechanism, Phrase]:
     w, w_ref = g.value / per_w, g.value / per_w_ref
     a = a_ref = 0.0
     if g.second_given:
-        base, base_ref = _rate(m, w, 0.0, second=True), _reference(m, w_ref, 0.0, second=True)
+        base, base_ref = _rate(m, w, 0.0, second=True), member_rate(m, w_ref, 0.0, second=True)
         unit = _rate(m, w, 1.0, second=True) - base
-        unit_ref = _reference(m, w_ref, 1.0, second=True) - base_ref
+        unit_ref = member_rate(m, w_ref, 1.0, second=True) - base_ref
         a, a_ref = (g.second - base) / unit, (g.second - base_ref) / unit_ref
-    drawn = _driven(m, w, a)
+    drawn = with_input_rates(m, w, a)
     what = phrase("note.along_guide", point=g.target) if g.kind == "speed" else _target(g)
     said = phrase("note.given_rate", what=what, value=_quantity(m, g.kind, g.value),
                   link=d.link, target=_target(g),
@@ -55,7 +55,7 @@ def convert(m: Mechanism) -> tuple[Mechanism, Mechanism, Phrase]:
                   second=phrase("note.given_alpha", link=d.link,
                                 alpha=Quantity(a, "rad", "/s²", "rate"))
                   if g.second_given else None)
-    return drawn, _driven(m, w_ref, a_ref), said
+    return drawn, with_input_rates(m, w_ref, a_ref), said
 
 
 def _n(x: float) -> str:
@@ -63,15 +63,10 @@ def _n(x: float) -> str:
     return f"{x:.6g}".replace("-", "−")
 
 
-def _driven(m: Mechanism, w: float, a: float) -> Mechanism:
-    d = m.drive
-    return m.with_drive(Drive(d.link, d.angle, w, a, m.given.second_given))
-
-
 def _rate(m: Mechanism, w: float, a: float, *, second: bool = False) -> float:
     """The member's speed (or ω; with ``second``, its acceleration or α) as drawn with the
     input at ω = ``w``, α = ``a``."""
-    asm = assemble(_driven(m, w, a))
+    asm = assemble(with_input_rates(m, w, a))
     vp = draw_velocity_polygon(asm)
     polygon = draw_acceleration_polygon(asm, vp) if second else vp
     g = m.given
@@ -80,16 +75,6 @@ def _rate(m: Mechanism, w: float, a: float, *, second: bool = False) -> float:
     ux, uy = asm.guide(_guide(m)).direction
     x, y = polygon.vector(g.target)
     return x * ux + y * uy
-
-
-def _reference(m: Mechanism, w: float, a: float, *, second: bool = False) -> float:
-    """The same, from the vector-loop solver."""
-    kin = solver.solve(_driven(m, w, a))
-    g = m.given
-    if g.kind == "omega":
-        return (kin.alphas if second else kin.omegas)[g.target]
-    rate = kin.slide_rates[_guide(m)]
-    return rate.acceleration if second else rate.velocity
 
 
 def _guide(m: Mechanism) -> int:
