@@ -10,7 +10,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from .model import Arc, Mechanism, Slide, SlideKind
+from .joints import Arc, Slide, SlideKind
+from .model import Mechanism
 
 __all__ = ["Node", "Walk", "taken", "rolling_contacts"]
 

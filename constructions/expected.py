@@ -20,7 +20,7 @@ from .checks import Expected, grashof_value, time_ratio_value, vector_value
 from .coincident import taken
 from .errors import DegenerateInput, InputError
 from .limit_positions import WHY_NOT, drawn_limits
-from .model import SlideKind
+from .joints import SlideKind
 from .reference import solver
 from .reference.centres import MoveTogether, instant_centre, mechanism_size, shared_pin
 from .reference.limits import limit_reference

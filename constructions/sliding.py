@@ -16,7 +16,8 @@ from .acceleration_polygon import answer as from_acceleration_polygon
 from .acceleration_polygon import drawn_acceleration_polygon
 from .checks import Answer, vector_value
 from .errors import InputError
-from .model import Mechanism, Slide
+from .joints import Slide
+from .model import Mechanism
 from .velocity_polygon import answer as from_velocity_polygon
 
 __all__ = ["answer_sliding", "slot_of", "sliding_askable"]

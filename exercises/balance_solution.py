@@ -18,7 +18,7 @@ from typing import Any
 
 from ..constructions.balancing.engine import KINDS, EnginePolygons, draw_engine
 from ..constructions.balancing.polygons import Balance, draw_balance, rounding
-from ..constructions.model import LENGTH_UNITS
+from ..constructions.units import LENGTH_UNITS
 from ..constructions.narration import (narrate, numeral, numerals, phrase, spoken, unit_words,
                                        words)
 from ..constructions.reference.balance import (engine_sums, one_axial_plane, quadrant_angle,

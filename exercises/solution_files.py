@@ -732,7 +732,7 @@ def answer_line(name: str, q: Quantity, units, *, whole: bool = False) -> str:
     ``whole`` marks an answer about the mechanism as a whole (DOF, time ratio, a range).
 
     >>> from types import SimpleNamespace as Q
-    >>> from tarsim.constructions.model import Units
+    >>> from tarsim.constructions.units import Units
     >>> print(answer_line("omega3", Q(value={"value": -2.578}, rel_error=1.3e-16,
     ...                               tolerance=1e-9, method="velocity polygon"), Units("m")))
     ω3 = −2.578 rad/s (cw)               check ok 1.3e-16   velocity polygon

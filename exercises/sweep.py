@@ -33,7 +33,8 @@ from ..constructions.reference.turn import Turn, solve_turn
 from ..constructions.assembly import assemble
 from ..constructions.errors import AssemblyError, InputError, TarsimError
 from ..constructions.limit_positions import stroke_point
-from ..constructions.model import Drive, Mechanism, Slide
+from ..constructions.joints import Slide
+from ..constructions.model import Drive, Mechanism
 
 from .exercise_file import Exercise
 from ..constructions.given_rate import convert

@@ -18,7 +18,7 @@ planes are not.
 from __future__ import annotations
 
 from ..constructions.gears.train import GearTrain
-from ..constructions.model import LENGTH_UNITS
+from ..constructions.units import LENGTH_UNITS
 from ..constructions.narration import words
 from .figure import Figure, Path
 from .labels import LabelPlacer

@@ -7,7 +7,9 @@ CCW-positive from +x.
 
 from __future__ import annotations
 
-from tarsim.constructions.model import Drive, Link, Mechanism, Slide, SlideKind, Units
+from tarsim.constructions.joints import Slide, SlideKind
+from tarsim.constructions.model import Drive, Link, Mechanism
+from tarsim.constructions.units import Units
 from tarsim.graphics.figure import Circle, Text
 
 __all__ = ["four_bar", "offset_slider_crank", "crank_shaper", "slotted_lever_p37", "scotch_yoke"]

@@ -597,7 +597,8 @@ def test_random_four_bars_match_the_analytic_solver(crank, theta, rocker, phi, o
 # ----- curved slots and circle contacts (the notes §2.11–2.12) ----------------------------
 def frame_slot_four_bar(theta):
     """The peers four-bar with its rocker replaced by a pin B in a frame slot about O4."""
-    from tarsim.constructions.model import Arc, Mechanism, SlideKind
+    from tarsim.constructions.joints import Arc, SlideKind
+    from tarsim.constructions.model import Mechanism
     m = four_bar(theta, omega2=10.0, alpha2=3.0)
     links = tuple(k for k in m.links if k.number != 4)
     return Mechanism(links, m.drive, (), dict(m.branches), m.units, "frame slot",

@@ -19,7 +19,8 @@ from tarsim.constructions.reference.rotatability import grashof, grashof_class
 from tarsim.constructions.reference.solver import (Kinematics, SingularPosition,
                                                    point_acceleration, point_velocity, solve)
 from tarsim.constructions.errors import AssemblyError, InputError, TarsimError
-from tarsim.constructions.model import Drive, Link, Mechanism, Slide, SlideKind
+from tarsim.constructions.joints import Slide, SlideKind
+from tarsim.constructions.model import Drive, Link, Mechanism
 from tests.common import (crank_shaper, four_bar, offset_slider_crank, scotch_yoke,
                           slotted_lever_p37)
 

@@ -14,7 +14,8 @@ import math
 import mpmath as mp
 import pytest
 
-from tarsim.constructions.model import Drive, Link, Mechanism, Units
+from tarsim.constructions.model import Drive, Link, Mechanism
+from tarsim.constructions.units import Units
 from tarsim.constructions.reference.centres import instant_centre, mechanism_size, shared_pin
 from tarsim.constructions.reference.solver import solve
 from tests.common import four_bar

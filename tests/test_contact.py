@@ -19,8 +19,8 @@ import pytest
 
 from tarsim.constructions.reference import solver
 from tarsim.constructions.assembly import assemble
-from tarsim.constructions.model import (Contact, Drive, Link, Mechanism, Profile, SlideKind,
-                                 contact_slide)
+from tarsim.constructions.joints import Contact, Profile, SlideKind, contact_slide
+from tarsim.constructions.model import Drive, Link, Mechanism
 from tarsim.exercises.mechanism_file import load_mechanism, parse_mechanism
 from tarsim.exercises.report import check_positions
 from tarsim.graphics.diagram import draw_kinematic_diagram

@@ -35,7 +35,8 @@ from dataclasses import dataclass
 import mpmath
 from mpmath import mp, mpf
 
-from tarsim.constructions.model import Drive, Mechanism, SlideKind
+from tarsim.constructions.joints import SlideKind
+from tarsim.constructions.model import Drive, Mechanism
 
 __all__ = ["DPS", "MpKinematics", "MpCentre", "mp_solve", "mp_limits", "Unmodelled"]
 

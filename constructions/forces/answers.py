@@ -11,7 +11,8 @@ from .. import asks as A
 from ..acceleration_polygon import drawn_acceleration_polygon
 from ..checks import Answer, FigureSpec, vector_value
 from ..errors import TarsimError
-from ..model import Mechanism, SlideKind
+from ..joints import SlideKind
+from ..model import Mechanism
 from ..record import Panel
 from .groups import Dyad, group_of
 from .polygons import drawn_forces

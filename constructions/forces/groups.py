@@ -12,7 +12,8 @@ import math
 from dataclasses import dataclass
 
 from ..errors import TarsimError
-from ..model import Mechanism, SlideKind
+from ..joints import SlideKind
+from ..model import Mechanism
 from .sliding import lever_gain
 
 __all__ = ["NOT_DRAWN", "Dyad", "Lever", "gain", "group_of", "lever_span", "shape_of",

@@ -17,7 +17,7 @@ from ..acceleration_polygon import drawn_acceleration_polygon
 from ..checks import quiet
 from ..errors import TarsimError
 from ..loads import Loads, near_rest, near_rest_refusal
-from ..model import SlideKind
+from ..joints import SlideKind
 from ..narration import Word, phrase
 from ..record import Construction, Kind, Panel
 from ..velocity_polygon import drawn_velocity_polygon

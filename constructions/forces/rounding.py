@@ -24,7 +24,8 @@ from ..acceleration_polygon import drawn_acceleration_polygon
 from ..checks import EPS
 from ..errors import TarsimError
 from ..loads import made_of, resting_speed
-from ..model import Mechanism, SlideKind
+from ..joints import SlideKind
+from ..model import Mechanism
 from ..velocity_polygon import drawn_velocity_polygon
 
 __all__ = ["image_base", "load_roundings", "answer_roundings", "rate_roundings",

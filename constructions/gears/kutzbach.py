@@ -30,7 +30,7 @@ from .. import geometry as g
 from ..errors import InputError
 from ..narration import Number, Phrase, Word, phrase, significant
 from ..record import Construction, Kind, Panel, Ref, Role
-from ..model import LENGTH_UNITS
+from ..units import LENGTH_UNITS
 from ..scales import nice_per_cm
 from .tabular import main_axis_train
 from .train import GearTrain

@@ -19,7 +19,7 @@ from dataclasses import dataclass
 from fractions import Fraction
 
 from ..errors import InputError
-from ..model import LENGTH_UNITS
+from ..units import LENGTH_UNITS
 from ..narration import Capitalized, Phrase, Word, phrase
 
 __all__ = ["Gear", "Mesh", "GearTrain", "SpeedUnits"]

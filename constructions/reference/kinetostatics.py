@@ -28,7 +28,8 @@ import numpy as np
 from ..errors import InputError
 from ..loads import (Loads, crank_tangent, leaning, made_of, near_rest, near_rest_refusal,
                      resting_speed, stroke_axis)
-from ..model import Mechanism, SlideKind
+from ..joints import SlideKind
+from ..model import Mechanism
 from .solver import Kinematics, point_acceleration, point_velocity
 
 __all__ = ["JointForce", "Statics", "balance", "efforts", "load_scale", "power_torque",
