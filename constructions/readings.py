@@ -13,7 +13,7 @@ from __future__ import annotations
 import math
 
 from . import asks as A
-from .centres import CENTRES_FIGURE, OMEGA_FIGURE, located, ratio_by_centres
+from .centre_answers import CENTRES_FIGURE, OMEGA_FIGURE, located, ratio_by_centres
 from .checks import Answer
 from .errors import InputError
 from .narration import phrase

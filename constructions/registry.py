@@ -19,7 +19,7 @@ from . import asks as A
 from . import expected
 from .acceleration_parts import answer_part
 from .acceleration_polygon import answer as from_acceleration_polygon
-from .centres import answer_centre, answer_count, answer_omega
+from .centre_answers import answer_centre, answer_count, answer_omega
 from .limit_positions import WHY_NOT as LIMITS_WHY_NOT
 from .limit_positions import answer as from_limits
 from .limit_positions import askable as limits_askable

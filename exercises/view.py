@@ -24,9 +24,10 @@ from typing import Any
 from ..constructions import geometry as g
 from ..constructions.acceleration_polygon import draw_acceleration_polygon
 from ..constructions.assembly import assemble
-from ..constructions.centres import locate_centres, pair_label
+from ..constructions.centres import pair_label
 from ..constructions.checks import tolerance
 from ..constructions.errors import TarsimError
+from ..constructions.kennedy import locate_centres
 from ..constructions.measures import Angle, Dimension
 from ..constructions.model import Mechanism
 from ..constructions.narration import LANGUAGES, narrate, speaking, words

@@ -24,8 +24,9 @@ from tarsim.constructions.reference.solver import solve
 from tarsim.constructions.checks import tolerance
 from tarsim.constructions.reference.centres import centre_error, instant_centre
 from tarsim.constructions.assembly import assemble
-from tarsim.constructions.centres import locate_centres, omega_ratio
+from tarsim.constructions.centres import omega_ratio
 from tarsim.constructions.errors import InputError, TarsimError
+from tarsim.constructions.kennedy import locate_centres
 from tarsim.constructions.model import Drive
 from tarsim.constructions.velocity_by_centres import METHODS
 from tarsim.constructions.velocity_by_components import velocity_by_components
