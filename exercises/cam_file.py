@@ -14,10 +14,11 @@ from pathlib import Path
 from typing import Any, ClassVar
 
 from ..constructions.cams.displacement import Segment
-from ..constructions.model import LENGTH_UNITS
+from ..constructions.units import LENGTH_UNITS
 from ..constructions.reference.cam_laws import BLEND, LAWS
 from ..constructions.reference.cam_profile import Follower, arm_start, prime_radius
-from .mechanism_file import file_number, read_source
+from .file_numbers import file_number
+from .toml_source import read_source
 from .names import named_in, read_names, renamed_field
 from .table_file import SPEEDS, Tables
 

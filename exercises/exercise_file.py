@@ -38,7 +38,8 @@ from ..constructions import asks as A
 from ..constructions import registry
 from ..constructions.errors import InputError
 from ..constructions.loads import Loads
-from ..constructions.model import LENGTH_UNITS, Drive, Mechanism
+from ..constructions.model import Drive, Mechanism
+from ..constructions.units import LENGTH_UNITS
 from ..constructions.narration import significant
 from ..constructions.scales import Stated
 
@@ -47,8 +48,9 @@ from .names import named_in, read_names
 
 if TYPE_CHECKING:
     from .grading.drafting import Drafting
-from .mechanism_file import (RANGE, SourceMap, _float, _Reader, in_range, radians_in_turn,
-                             read_source, read_toml)
+from .file_numbers import RANGE, _float, in_range, radians_in_turn
+from .mechanism_file import _Reader
+from .toml_source import SourceMap, read_source, read_toml
 
 __all__ = ["Exercise", "Position", "load_exercise", "parse_exercise", "asks_of"]
 

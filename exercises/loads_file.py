@@ -15,9 +15,11 @@ import math
 from typing import Any
 
 from ..constructions.loads import GRAVITY, Couple, Loads, Mass, PointForce
-from ..constructions.model import LENGTH_UNITS, Mechanism
-from .mechanism_file import SourceMap, file_number
+from ..constructions.model import Mechanism
+from ..constructions.units import LENGTH_UNITS
+from .file_numbers import file_number
 from .table_file import Tables
+from .toml_source import SourceMap
 
 __all__ = ["LOAD_TABLES", "read_loads"]
 

@@ -12,7 +12,7 @@ from dataclasses import replace
 from typing import Any
 
 from ..constructions.errors import InputError
-from .mechanism_file import SourceMap
+from .toml_source import SourceMap
 
 __all__ = ["read_names", "named_in"]
 

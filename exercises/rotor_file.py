@@ -14,8 +14,9 @@ from pathlib import Path
 from typing import Any, ClassVar
 
 from ..constructions.balancing.rotor import Engine, Mass, Plane, Rotor
-from ..constructions.model import LENGTH_UNITS
-from .mechanism_file import _CONTROL, radians_in_turn, read_source
+from ..constructions.units import LENGTH_UNITS
+from .file_numbers import radians_in_turn
+from .toml_source import _CONTROL, read_source
 from .names import named_in, read_names, renamed_field
 from .table_file import SPEEDS, Tables
 

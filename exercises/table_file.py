@@ -9,8 +9,9 @@ import math
 from typing import Any
 
 from ..constructions.errors import InputError
-from ..constructions.model import LENGTH_UNITS
-from .mechanism_file import SourceMap, file_number, read_toml
+from ..constructions.units import LENGTH_UNITS
+from .file_numbers import file_number
+from .toml_source import SourceMap, read_toml
 
 __all__ = ["SPEEDS", "Tables"]
 

@@ -17,8 +17,9 @@ from ..constructions.asks import symbol
 from ..constructions.errors import InputError
 from ..constructions.gears.involute import Involute, check_mesh
 from ..constructions.gears.train import Gear, GearTrain, Mesh, SpeedUnits
-from ..constructions.model import LENGTH_UNITS
-from .mechanism_file import RANGE, SourceMap, _float, in_range, read_source, read_toml
+from ..constructions.units import LENGTH_UNITS
+from .file_numbers import RANGE, _float, in_range
+from .toml_source import SourceMap, read_source, read_toml
 from .names import named_in, read_names
 
 __all__ = ["TrainExercise", "load_train", "parse_train"]

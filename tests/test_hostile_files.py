@@ -20,7 +20,8 @@ from click.testing import CliRunner
 import tarsim
 from tarsim.constructions.errors import TarsimError
 from tarsim.exercises.cli import cli
-from tarsim.exercises.mechanism_file import MOST_BYTES, MOST_POINTS
+from tarsim.exercises.mechanism_file import MOST_POINTS
+from tarsim.exercises.toml_source import MOST_BYTES
 from tests.random_mechanisms import HOSTILE
 
 
@@ -104,7 +105,7 @@ def test_a_byte_order_mark_is_read_past(tmp_path):
     """Notepad saves UTF-8 with a byte-order mark (EF BB BF), which tomllib takes for a
     statement ("Invalid statement" at 1:1): the file reads as it does without one."""
     from tarsim.exercises.catalog import bundled
-    from tarsim.exercises.mechanism_file import read_source
+    from tarsim.exercises.toml_source import read_source
 
     plain = bundled()["four-bar"]
     path = tmp_path / "four-bar-bom.toml"

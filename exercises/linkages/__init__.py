@@ -25,7 +25,7 @@ class Linkages(Chapter):
 
     def set_up(self, exercise, *, paper, angle=None):
         if angle is not None:                 # one angle, instead of the file's positions
-            from ..mechanism_file import radians_in_turn
+            from ..file_numbers import radians_in_turn
 
             mech = exercise.mechanism
             drive = replace(mech.drive, angle=radians_in_turn(angle, mech.units.angle))
