@@ -31,7 +31,7 @@ from .assembly import Assembly
 from .checks import Answer, vector_value
 from .coincident import Node
 from .errors import TarsimError
-from .model import Arc
+from .joints import Arc
 from .narration import Number, Phrase, Quantity, Word, phrase
 from .polygon_walk import ACCELERATION, NOISE, Polygon, PolygonWalk, sense_of
 from .record import Panel, Ref, Role
@@ -78,7 +78,8 @@ def draw_acceleration_polygon(asm: Assembly, vp: Polygon, scale: float | None = 
 
     >>> import math
     >>> from tarsim.constructions.assembly import assemble
-    >>> from tarsim.constructions.model import Drive, Link, Mechanism, Slide, SlideKind
+    >>> from tarsim.constructions.joints import Slide, SlideKind
+    >>> from tarsim.constructions.model import Drive, Link, Mechanism
     >>> from tarsim.constructions.velocity_polygon import draw_velocity_polygon
     >>> m = Mechanism((Link(1, (("O2", (0, 0)),)), Link(2, (("O2", (0, 0)), ("A", (3, 0)))),
     ...                Link(3, (("A", (0, 0)), ("B", (8, 0)))), Link(4, (("B", (0, 0)),))),

@@ -26,7 +26,8 @@ from . import asks as A
 from .assembly import Assembly, assemble, point_ref
 from .checks import Answer, FigureSpec, time_ratio_value
 from .errors import InputError, NoIntersection, TarsimError
-from .model import Mechanism, SlideKind
+from .joints import SlideKind
+from .model import Mechanism
 from .measures import measure_angle
 from .narration import Number, Phrase, Word, narrate, phrase
 from .record import Ref, Role

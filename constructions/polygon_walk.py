@@ -21,7 +21,7 @@ from . import geometry as g
 from .assembly import Assembly
 from .coincident import Node, Walk, rolling_contacts
 from .errors import DeadPoint, DegenerateInput, TarsimError
-from .model import Slide, SlideKind
+from .joints import Slide, SlideKind
 from .narration import Number, Phrase, Quantity, Word, narrate, phrase
 from .record import Construction, Kind, Panel, Ref, Role
 

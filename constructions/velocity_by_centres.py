@@ -25,7 +25,8 @@ import math
 
 from . import geometry as g
 from .assembly import Assembly
-from .centres import Centres, located, pair_label
+from .centre_answers import located
+from .centres import Centres, pair_label
 from .errors import DegenerateInput, TarsimError
 from .narration import Quantity, phrase
 from .record import Kind, Ref, Role

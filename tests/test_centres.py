@@ -24,9 +24,12 @@ from tarsim.constructions.reference.centres import (AnalyticCentre, centre_error
                                                     mechanism_size)
 from tarsim.constructions.assembly import Assembly, assemble
 from tarsim.constructions.narration import narrate
-from tarsim.constructions.centres import ILL_CONDITIONED, Centres, locate_centres, omega_ratio
+from tarsim.constructions.centres import ILL_CONDITIONED, Centres, omega_ratio
 from tarsim.constructions.errors import DegenerateInput, TarsimError
-from tarsim.constructions.model import Drive, Link, Mechanism, SlideKind, Units
+from tarsim.constructions.kennedy import locate_centres
+from tarsim.constructions.joints import SlideKind
+from tarsim.constructions.model import Drive, Link, Mechanism
+from tarsim.constructions.units import Units
 from tarsim.constructions.record import slice as backward_slice
 from tarsim.exercises.mechanism_file import load_mechanism, parse_mechanism
 from tests.common import (crank_shaper, four_bar, four_bar_toml, offset_slider_crank,
@@ -644,7 +647,7 @@ def test_a_centre_of_two_links_at_rest_together_is_drawn_and_reported_undefined(
     # every point is I45. The construction completes, and the reference says why it holds
     # no single point.
     from tarsim.exercises.catalog import load
-    from tarsim.exercises.mechanism_file import radians_in_turn
+    from tarsim.exercises.file_numbers import radians_in_turn
     from tarsim.exercises.solution import solve_positions
 
     ex = load("crank-shaper").asking(("centres",))

@@ -462,7 +462,7 @@ def test_a_lever_with_its_block_behind_the_pivot_runs_through_the_pivot_to_the_b
 
 def test_a_plates_tint_lies_under_every_construction_line():
     """A Kennedy line across the coupler plate shows through it: the tint is drawn first."""
-    from tarsim.constructions.centres import locate_centres
+    from tarsim.constructions.kennedy import locate_centres
     from tarsim.constructions.record import Kind, Slice
     from tarsim.graphics.scene import draw_scene
     asm = assemble(load_mechanism(bundled()["hinkle-four-bar"]))

@@ -23,7 +23,8 @@ from tarsim.constructions import geometry as g
 from tarsim.constructions.reference import solver
 from tarsim.constructions.assembly import assemble
 from tarsim.constructions.errors import TarsimError
-from tarsim.constructions.model import Drive, Units
+from tarsim.constructions.model import Drive
+from tarsim.constructions.units import Units
 from tarsim.constructions.narration import Phrase
 from tarsim.constructions.record import Construction, Panel, Role, Slice, slice
 from tarsim.constructions.velocity_polygon import draw_velocity_polygon

@@ -106,7 +106,7 @@ def test_a_wheel_on_the_right_of_its_face_rolls_the_other_way():
     flipped = replace(s.contact, side="right")
     # The floor's direction reversed puts the wheel on its right: the same wheel, the same
     # motion, the distance rolled now measured the other way.
-    from tarsim.constructions.model import contact_slide
+    from tarsim.constructions.joints import contact_slide
 
     face = replace(flipped.face, angle=math.pi)
     t = contact_slide(replace(flipped, face=face), m.frame)

@@ -16,8 +16,8 @@ import pytest
 from tarsim.constructions.narration import narrate
 from tarsim.constructions.reference.solver import solve
 from tarsim.constructions.assembly import assemble
-from tarsim.constructions.centres import locate_centres
 from tarsim.constructions.errors import TarsimError
+from tarsim.constructions.kennedy import locate_centres
 from tarsim.constructions.record import Role, Slice, slice
 from tarsim.constructions.velocity_by_centres import velocity_by_radius_rotation
 from tarsim.exercises.catalog import bundled

@@ -19,7 +19,9 @@ from tarsim.constructions.reference import solver
 from tarsim.constructions import geometry as g
 from tarsim.constructions.assembly import Assembly, assemble
 from tarsim.constructions.errors import AssemblyError, TarsimError
-from tarsim.constructions.model import Drive, Link, Mechanism, Slide, SlideKind, Units
+from tarsim.constructions.joints import Slide, SlideKind
+from tarsim.constructions.model import Drive, Link, Mechanism
+from tarsim.constructions.units import Units
 from tarsim.constructions.record import Role
 from tarsim.constructions.record import slice as backward_slice
 from tarsim.constructions.velocity_by_components import velocity_by_components

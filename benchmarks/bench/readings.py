@@ -28,8 +28,8 @@ from dataclasses import dataclass, field
 
 from tarsim.constructions.acceleration_polygon import draw_acceleration_polygon
 from tarsim.constructions.assembly import assemble, point_ref
-from tarsim.constructions.centres import locate_centres
 from tarsim.constructions.errors import TarsimError
+from tarsim.constructions.kennedy import locate_centres
 from tarsim.constructions.limit_positions import draw_limit_positions, limit_kind
 from tarsim.constructions.model import Mechanism
 from tarsim.constructions.reference import solver

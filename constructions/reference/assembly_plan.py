@@ -24,7 +24,8 @@ import numpy as np
 
 from .solver import SINGULAR_RCOND, _SLACK, _Assembly, _System, _unit
 from ..errors import AssemblyError
-from ..model import Arc, Mechanism, Slide
+from ..joints import Arc, Slide
+from ..model import Mechanism
 
 __all__ = ["AssemblyPlan", "Placement", "record_plan", "WELL"]
 

@@ -15,7 +15,7 @@ from enum import StrEnum
 import numpy as np
 
 from .solver import _System
-from ..model import SlideKind
+from ..joints import SlideKind
 
 __all__ = ["BatchLoops", "wrap"]
 
