@@ -21,8 +21,9 @@ from ..constructions.record import Kind, Slice
 
 from .figure import Circle, Figure, Path, Text, text_width
 from .rtl import reading
-from .labels import LabelPlacer, typeset
+from .labels import LabelPlacer
 from .symbols import badge_radius, draw_badge
+from .typeset import typeset
 
 __all__ = ["draw_circle_diagram", "triangle_text", "secondary_text"]
 

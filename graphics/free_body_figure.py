@@ -15,10 +15,11 @@ from ..constructions.checks import NOISE
 from ..constructions.narration import words
 from .figure import Figure, Path, Text
 from .force_figure import in_lane, runs_along
-from .labels import LabelPlacer, typeset
+from .labels import LabelPlacer
 from .load_marks import amount, draw_couple, keep_clear, name_loads, too_small
 from .scales import draw_caption, nice_per_cm
 from .symbols import draw_arrow
+from .typeset import typeset
 
 __all__ = ["draw_free_bodies"]
 

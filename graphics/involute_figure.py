@@ -16,9 +16,10 @@ from ..constructions.gears.involute import InvoluteMesh
 from ..constructions.gears.train import GearTrain
 from ..constructions.narration import numerals, unit_words, words
 from .figure import Figure, Path, Circle
-from .labels import LabelPlacer, subscript
+from .labels import LabelPlacer
 from .scales import draw_caption, nice_per_cm
 from .symbols import mark_angle
+from .typeset import subscript
 
 __all__ = ["draw_involute_figure"]
 

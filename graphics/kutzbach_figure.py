@@ -14,8 +14,9 @@ from ..constructions.gears.kutzbach import Kutzbach
 from ..constructions.gears.train import GearTrain
 from ..constructions.narration import numeral, unit_words, words
 from .figure import Circle, Figure, Path
-from .labels import LabelPlacer, subscript
+from .labels import LabelPlacer
 from .scales import draw_caption
+from .typeset import subscript
 
 __all__ = ["draw_kutzbach_figure", "member_words"]
 

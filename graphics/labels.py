@@ -5,12 +5,13 @@ first, and takes the first that is clear; if none is, the one with the least wei
 ink under it. Placed labels become obstacles for the next. Candidates are priced on a
 raster of the page (:mod:`.occupancy`), all of a label's at once; shapely keeps the
 obstacles' exact shapes for the few callers that weigh a line or a shape of their own.
+A label is held nearer what it names than any other named thing (:mod:`.label_nearness`);
+its text is typeset, subscripts and all, by :mod:`.typeset`.
 """
 
 from __future__ import annotations
 
 import math
-import re
 from dataclasses import replace
 
 import numpy as np
@@ -21,10 +22,12 @@ from shapely.geometry.base import BaseGeometry
 from shapely.strtree import STRtree
 
 from .figure import Circle, Figure, Path, Text
+from .label_nearness import (Owned, Shape, as_shape, box_distance, name_at, same_thing,
+                             shape_ends)
 from .occupancy import Occupancy
 from .symbols import badge_radius, draw_badge
 
-__all__ = ["LabelPlacer", "paper_angle", "typeset", "typeset_span", "subscript"]
+__all__ = ["LabelPlacer", "paper_angle"]
 
 
 class LabelPlacer:
@@ -207,8 +210,8 @@ class LabelPlacer:
         named, pts = self._named_of_kind(len(shape))
         if not named:
             return out
-        rival = np.array([not _same(r, shape) for r in named])
-        centre, mine, _ = _name_at(xy, own)
+        rival = np.array([not same_thing(r, shape) for r in named])
+        centre, mine, _ = name_at(xy, own)
         # A rival can be nearer a box only if its bounding box is: test the pairs that may.
         lo, hi = pts.min(axis=1)[rival], pts.max(axis=1)[rival]
         gx = np.maximum(np.maximum(lo[None, :, 0] - centre[:, None, 0],
@@ -219,7 +222,7 @@ class LabelPlacer:
         boxes, rivals = np.flatnonzero(may.any(axis=1)), np.flatnonzero(may.any(axis=0))
         if not len(boxes):
             return out
-        theirs = _box_distance(centre[boxes], hw, hh, pts[rival][rivals]).min(axis=1)
+        theirs = box_distance(centre[boxes], hw, hh, pts[rival][rivals]).min(axis=1)
         out[boxes] = theirs < mine[boxes] - 1e-6
         return out
 
@@ -228,7 +231,7 @@ class LabelPlacer:
         array kept for all the labels placed till more are named)."""
         named = [r for r in self.named if len(r) == size]
         if size not in self._named_ends:
-            self._named_ends[size] = _ends(named)
+            self._named_ends[size] = shape_ends(named)
         return named, self._named_ends[size]
 
     def block_drawn(self) -> None:
@@ -283,7 +286,7 @@ class LabelPlacer:
         x0, y0, x1, y1 = probe.box()
         # The box of a subscripted label hangs below its centre line: aim the box.
         dy = (y0 + y1) / 2
-        own = _shape(own)
+        own = as_shape(own)
         owned = None if own is None else (own, 0.0, 0.0, (x1 - x0) / 2, (y1 - y0) / 2, 0.0)
         c, _ = self.spot(x1 - x0, y1 - y0, anchor, prefer=prefer, spread=spread, gap=gap,
                          rings=rings, own=owned)
@@ -326,7 +329,7 @@ class LabelPlacer:
         radii = [badge_radius(n) for n in numbers]
         w = (x1 - x0) + sum(2 * r + _SPACE for r in radii) - (0.0 if t else _SPACE)
         h = max(y1 - y0, 2 * max(radii, default=0.0))
-        own = _shape(own)
+        own = as_shape(own)
         owned = None
         if own is not None and t:
             # Only the first name is held to what it names: its box within the unit's, at
@@ -342,7 +345,7 @@ class LabelPlacer:
             if cost2 < cost:
                 c = c2
         x = c[0] - w / 2
-        numbers_first = owned is not None and bool(_name_at(np.array([c]), owned)[2][0])
+        numbers_first = owned is not None and bool(name_at(np.array([c]), owned)[2][0])
         if numbers_first:
             x = self._badges(numbers, radii, x, c[1])
         for k, part in enumerate(parts):
@@ -380,14 +383,6 @@ def paper_angle(v: tuple[float, float]) -> float:
     return math.atan2(-v[1], v[0])
 
 
-Shape = tuple[tuple[float, float], ...]
-"""A thing a label names, by its points: one for a point, tail and tip for a vector."""
-
-Owned = tuple[Shape, float, float, float, float, float]
-"""What a label names, and its name's box within the label: the box centre's offset from
-the label's, along x and y, its half width and half height, and how much farther right
-it stands when the label's other parts are set before it (0: they never are)."""
-
 _ASTRAY = 100.0
 """What a spot costs (mm²) whose name stands nearer another named thing than its own."""
 
@@ -408,152 +403,12 @@ _TOUCH = 0.05
 _NO_INK = 1e-6
 """Weighted ink (mm²) below which a spot is clear: a thousandth of the least a cell holds."""
 
-_SUBSCRIPT = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
-_TRAILING = re.compile(r"^(.*?[^\d,])([\d,]+)([′″]*)$")
-
-
-def typeset(label: str) -> tuple[str, str]:
-    """Split a recorded label into text and true subscript, as a textbook prints it.
-
-    ``V_A`` is V with subscript A; digits that end a name become Unicode
-    subscripts (``I13`` → I₁₃, ``ω2`` → ω₂), inside a subscript too
-    (``V_I23`` → V with subscript I₂₃), before primes too (``a4′`` → a₄′, an
-    acceleration tip), and on each side of a relative vector's slash
-    (``A_A3/A4`` → A with subscript A₃/A₄).
-
-    Examples
-    --------
-    >>> typeset("V_I23")
-    ('V', 'I₂₃')
-    >>> typeset("I13")
-    ('I₁₃', '')
-    >>> typeset("A_B/A")
-    ('A', 'B/A')
-    >>> typeset("Aᶜ_A3/A4"), typeset("a4′")
-    (('Aᶜ', 'A₃/A₄'), ('a₄′', ''))
-    """
-    head, _, sub = label.partition("_")
-    return _digits_down(head), "/".join(_digits_down(part) for part in sub.split("/"))
-
-
-def subscript(name: str) -> str:
-    """Write a name's trailing digits as subscripts, as a textbook prints them ("O2" → "O₂").
-
-    >>> subscript("O24")
-    'O₂₄'
-    """
-    head = name.rstrip("0123456789")
-    return head + name[len(head):].translate(_SUBSCRIPT)
-
-
-def typeset_span(label: str) -> str:
-    """A span named by its end points, as a textbook prints it: each number that follows a
-    letter becomes a subscript.
-
-    >>> typeset_span("O2G"), typeset_span("AB + O2A"), typeset_span("stroke")
-    ('O₂G', 'AB + O₂A', 'stroke')
-    """
-    return _NAMED.sub(lambda m: m.group(0).translate(_SUBSCRIPT), label)
-
-
-_NAMED = re.compile(r"(?<=[A-Za-z])\d+")
-
-
-def _digits_down(name: str) -> str:
-    m = _TRAILING.match(name)
-    if m is None or " " in name or not m.group(1).strip():
-        return name
-    return m.group(1) + m.group(2).translate(_SUBSCRIPT) + m.group(3)
-
 
 def _row_box(parts: list[Text]) -> tuple[float, float, float, float]:
     """The box of texts set in a row, :data:`_SPACE` apart, each centred on one line."""
     boxes = [p.box() for p in parts]
     width = sum(b[2] - b[0] for b in boxes) + _SPACE * (len(boxes) - 1)
     return (0.0, min(b[1] for b in boxes), width, max(b[3] for b in boxes))
-
-
-def _shape(own) -> Shape | None:
-    """A point ``(x, y)`` or a shape ``((x, y), …)`` as a shape."""
-    if own is None:
-        return None
-    return (tuple(own),) if isinstance(own[0], (int, float)) else tuple(tuple(p) for p in own)
-
-
-def _same(own: Shape, other: Shape) -> bool:
-    """Whether ``other`` is no rival of ``own``: a point within half a millimetre of it, or
-    a vector whose shaft holds all of its (one and the same arrow, or V_A₄ within V_B₄ from
-    one pole: beside the shorter, a label is as near the longer)."""
-    if len(own) == 1:
-        return math.dist(own[0], other[0]) <= 0.5
-    (ax, ay), (bx, by) = other
-    n2 = (bx - ax) ** 2 + (by - ay) ** 2
-    for px, py in own:
-        t = 0.0 if n2 == 0.0 else min(max(((px - ax) * (bx - ax) + (py - ay) * (by - ay)) / n2,
-                                          0.0), 1.0)
-        if math.dist((px, py), (ax + t * (bx - ax), ay + t * (by - ay))) > 0.5:
-            return False
-    return True
-
-
-def _ends(shapes: list[Shape]) -> np.ndarray:
-    """Each shape as a segment, tail and tip, a row each (a point is a segment of no
-    length)."""
-    out = np.empty((len(shapes), 2, 2))
-    for k, shape in enumerate(shapes):
-        out[k] = shape[0], shape[-1]
-    return out
-
-
-def _box_distance(centres: np.ndarray, hw: float, hh: float, ends: np.ndarray) -> np.ndarray:
-    """Exact distance from each box (centre, half sizes) to each segment (:func:`_ends`): a
-    row per box, a column per segment.
-
-    Nil where the segment meets the box (their bounding boxes overlap and the box's
-    corners are not all on one side of the segment's line); else the nearest of an end to
-    the box and a corner to the segment, as for any two convex shapes apart.
-    """
-    cx, cy = centres[:, 0, None], centres[:, 1, None]
-    ax, ay, bx, by = ends[None, :, 0, 0], ends[None, :, 0, 1], ends[None, :, 1, 0], \
-        ends[None, :, 1, 1]
-
-    def to_box(px, py):
-        return np.hypot(np.maximum(np.abs(px - cx) - hw, 0.0),
-                        np.maximum(np.abs(py - cy) - hh, 0.0))
-
-    near = to_box(ax, ay)
-    dx, dy = bx - ax, by - ay
-    n2 = dx * dx + dy * dy
-    if not n2.any():                              # points only
-        return near
-    near = np.minimum(near, to_box(bx, by))
-    n2 = np.maximum(n2, 1e-300)
-    for px, py in ((cx - hw, cy - hh), (cx - hw, cy + hh), (cx + hw, cy - hh),
-                   (cx + hw, cy + hh)):
-        t = np.clip(((px - ax) * dx + (py - ay) * dy) / n2, 0.0, 1.0)
-        near = np.minimum(near, np.hypot(ax + t * dx - px, ay + t * dy - py))
-    meets = (np.minimum(ax, bx) <= cx + hw) & (np.maximum(ax, bx) >= cx - hw) & \
-        (np.minimum(ay, by) <= cy + hh) & (np.maximum(ay, by) >= cy - hh) & \
-        (np.abs(dx * (cy - ay) - dy * (cx - ax)) <= hw * np.abs(dy) + hh * np.abs(dx))
-    return np.where(meets, 0.0, near)
-
-
-def _name_at(xy: np.ndarray, own: Owned) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """For labels centred at ``xy``: where the name's box stands, how far it is from what
-    it names, and whether it is set after the label's other parts, the nearer of its two
-    places (:data:`Owned`)."""
-    shape, dx, dy, hw, hh, shift = own
-    ends = _ends([shape])
-    centre = xy + (dx, dy)
-    mine = _box_distance(centre, hw, hh, ends)[:, 0]
-    after = np.zeros(len(xy), dtype=bool)
-    if shift:
-        moved = centre + (shift, 0.0)
-        theirs = _box_distance(moved, hw, hh, ends)[:, 0]
-        after = theirs < mine - 1e-6
-        centre = np.where(after[:, None], moved, centre)
-        mine = np.where(after, theirs, mine)
-    return centre, mine, after
 
 
 def _first_clear(costs: np.ndarray) -> int:

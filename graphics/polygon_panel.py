@@ -25,23 +25,25 @@ The panel has its own nice scale, "1 cm = N mm/s" (or mm/s²) with N = 1, 2 or
 measures v / N cm. Each narrated step carries its circled number, the slice's
 own numbering for the panel
 (:meth:`~tarsim.constructions.record.Slice.numbered`), so steps.md numbers its
-steps the same way.
+steps the same way. The names are set by :mod:`.polygon_labels`, once everything
+is drawn.
 """
 
 from __future__ import annotations
 
 import math
-from collections.abc import Iterable, Sequence
+from collections.abc import Sequence
 
 from shapely.geometry import Point as SPoint, box
 
 from ..constructions import geometry as g
 from ..constructions.errors import TarsimError
-from ..constructions.model import Units
+from ..constructions.units import Units
 from ..constructions.record import Panel, Ref, Role, Slice, Step
 
 from .figure import Circle, Figure, Path, View, arc_points, span_line
-from .labels import LABEL, LabelPlacer, typeset
+from .labels import LabelPlacer
+from .polygon_labels import CROSSABLE, HERE, ZERO, label_points, label_vectors, number_lines
 from .scales import draw_caption, nice_per_cm
 from .symbols import draw_arrow, unit
 
@@ -59,20 +61,7 @@ _LONE = 10.0        # a line through one point runs this far either side, mm
 _DOT = 1.0          # the pole's dot's radius, mm: it shows among the result arrows met there
 _ROOM = 16.0        # labels stay within this much of the polygon, mm
 _SAME = 1e-9        # relative slack for "lies on" and "coincides"
-_ZERO = 0.05        # a vector shorter than this on paper (mm) is drawn as "= 0"
-_HERE = 1e-6        # paper points closer than this (mm) are one
-_TINY = 1.0         # a vector shorter than this (mm) is named as the point it nearly is:
-                    # beside so short a shaft a name is as near every arrow from its pole
-_NEAR = (1.0, 1.6, 2.4, 3.4, 4.6)   # a vector's label stays this many gaps from its shaft
-_FARTHER = (6.0, 8.0, 11.0, 15.0)   # ...unless every spot there covers another label
-_CROSSABLE = 0.02   # what covering a thin working line costs a label, against 1 for ink
-_ON_LABEL = 0.05 * LABEL   # a tiny vector's name covers no more beside it (0.05 mm² of
-                    # another label, 0.5 mm² of a line) before it stands off farther
-_CROSSING = 20.0 * _CROSSABLE   # a point's name crosses this much (20 mm², two working
-                    # lines under a label) before it stands off in a farther ring, where a
-                    # reader would take it for another point's
 _LANE = 3.0         # mm between collinear arrows drawn side by side (:func:`_lanes`)
-_SHORT = 8.0        # mm: an arrow shorter than this may have its name round its ends
 _HEAVY = {"head": 3.2, "width": 1.6}    # an absolute vector's arrowhead, mm
 _LIGHT = {"head": 2.8, "width": 1.4}    # a component's
 
@@ -185,46 +174,6 @@ def _per_cm(points: list[tuple[float, float]], scale: float, units: Units,
     return max(fits, default=1.0)
 
 
-def _free_direction(at: tuple[float, float], rays: list[tuple[float, float]],
-                    centre: tuple[float, float]) -> float:
-    """Find the paper angle (rad, as :meth:`LabelPlacer.spot` takes it) for a point's label.
-
-    ``rays`` are the paper directions of the lines and arrows leaving ``at``; a
-    label in the middle of a wide gap between them reads clear of all. Of two
-    gaps about as wide, the one opening away from the polygon's ``centre`` wins:
-    inside, the vectors' labels need the room.
-    """
-    away = (at[0] - centre[0], at[1] - centre[1])
-    outward = math.atan2(-away[1], away[0]) if math.hypot(*away) > 1e-6 else None
-    if not rays:
-        return math.pi / 4 if outward is None else outward
-    angles = sorted({round(math.atan2(-dy, dx), 9) for dx, dy in rays})   # paper y runs down
-    if len(angles) == 1:
-        return angles[0] + math.pi
-    gaps = [((angles[(k + 1) % len(angles)] - a) % (2 * math.pi), a)
-            for k, a in enumerate(angles)]
-
-    def score(gap: tuple[float, float]) -> float:
-        width, start = gap
-        lean = 0.0 if outward is None else math.cos(start + width / 2 - outward)
-        return width * (1.0 + 0.5 * lean)
-
-    width, start = max(gaps, key=score)
-    return start + width / 2
-
-
-def _joined(names: list[tuple[str, str]]) -> tuple[str, str, str]:
-    """One label for coincident points, "o_v ≡ b": text, subscript and tail.
-
-    The pole, whose name has a true subscript, leads; the others follow it
-    written out.
-    """
-    names = sorted(names, key=lambda name: not name[1])
-    (text, sub), rest = names[0], names[1:]
-    tail = "".join(f" ≡ {t}{s}" for t, s in rest)
-    return (text, sub, tail) if sub else (text + tail, "", "")
-
-
 # ----- the figure ----------------------------------------------------------------------------
 class _PolygonPanel:
     """Working lines first, then the arrows and the pole over them, then every label."""
@@ -265,9 +214,9 @@ class _PolygonPanel:
         self.draw_circles()
         self.draw_vectors()
         self.draw_dots()
-        self.label_points()
-        self.label_vectors()
-        self.number_lines()
+        label_points(self)
+        label_vectors(self)
+        number_lines(self)
         quantity, per_time = QUANTITIES[self.panel]
         draw_caption(self.fig, title, [], per_cm=self.per_cm, unit=self.units.length + per_time,
                      notes=notes, margin=_MARGIN, scale_name=f"{quantity} scale")
@@ -282,7 +231,7 @@ class _PolygonPanel:
         return math.dist(p, q) <= _SAME * self.size
 
     def rays_at(self, at: tuple[float, float]) -> list[tuple[float, float]]:
-        return [r for q, rays in self.rays.items() if math.dist(q, at) <= _HERE for r in rays]
+        return [r for q, rays in self.rays.items() if math.dist(q, at) <= HERE for r in rays]
 
     def plan_line(self, step: Step) -> None:
         """Span the panel's points on the line; a line drawn again only gains a number."""
@@ -317,7 +266,7 @@ class _PolygonPanel:
     def draw_lines(self) -> None:
         for _, ends in self.lines:
             self.fig.add(Path(ends, "working"))
-            self.placer.block_path(ends, 0.3, weight=_CROSSABLE)
+            self.placer.block_path(ends, 0.3, weight=CROSSABLE)
 
     def draw_circles(self) -> None:
         """Draw a circle (an arc swung in the polygon) as a whole compass circle."""
@@ -343,7 +292,7 @@ class _PolygonPanel:
         self.drawn = {}
         for s, (a, b), lane in zip(steps, ends, lanes):
             n = (0.0, 0.0)
-            if lane and math.dist(a, b) >= _ZERO:
+            if lane and math.dist(a, b) >= ZERO:
                 u = unit((b[0] - a[0], b[1] - a[1]))
                 n = (-u[1] * lane * _LANE, u[0] * lane * _LANE)
             self.drawn[s.id] = ((a[0] + n[0], a[1] + n[1]), (b[0] + n[0], b[1] + n[1]), a, b)
@@ -353,7 +302,7 @@ class _PolygonPanel:
         moved into a lane of its own has a leader from each end to its point."""
         hidden = self.hidden()
         for step, a, b in self.vectors():
-            if math.dist(a, b) < _ZERO:
+            if math.dist(a, b) < ZERO:
                 continue
             heavy = step.role is not Role.CONSTRUCTION
             if step.id not in hidden:
@@ -361,9 +310,9 @@ class _PolygonPanel:
                            **_HEAVY if heavy else _LIGHT)
                 self.placer.block_path([a, b], 1.6 if heavy else 1.3)
             for end, true in zip((a, b), self.drawn[step.id][2:]):
-                if math.dist(end, true) > _HERE:
+                if math.dist(end, true) > HERE:
                     self.fig.add(Path((true, end), "leader"))
-                    self.placer.block_path([true, end], 0.3, weight=_CROSSABLE)
+                    self.placer.block_path([true, end], 0.3, weight=CROSSABLE)
             self.add_rays(a, [b])
             self.add_rays(b, [a])
 
@@ -373,130 +322,23 @@ class _PolygonPanel:
         ends."""
         poles = [self.view(s.output.xy) for s in self.steps if s.role is Role.GIVEN
                  and isinstance(s.output, g.Point) and not s.output.is_at_infinity]
-        return {s.id for s, a, b in self.vectors() if math.dist(a, b) >= _ZERO and any(
+        return {s.id for s, a, b in self.vectors() if math.dist(a, b) >= ZERO and any(
             _under_dot(a, b, pole, **_HEAVY if s.role is not Role.CONSTRUCTION else _LIGHT)
             for pole in poles)}
 
     def draw_dots(self) -> None:
         """Dot the pole, and any point no drawn arrow ends at."""
         hidden = self.hidden()
-        ends = [q for s, a, b in self.vectors() if math.dist(a, b) >= _ZERO
+        ends = [q for s, a, b in self.vectors() if math.dist(a, b) >= ZERO
                 and s.id not in hidden for q in (a, b)]
         for step in self.steps:
             out = step.output
             if not isinstance(out, g.Point) or out.is_at_infinity:
                 continue
             at = self.view(out.xy)
-            if step.role is Role.GIVEN or not any(math.dist(at, e) <= _HERE for e in ends):
+            if step.role is Role.GIVEN or not any(math.dist(at, e) <= HERE for e in ends):
                 self.fig.add(Circle(at, _DOT, "dot"))
                 self.placer.block(SPoint(at).buffer(_DOT + 0.5))
-
-    # ----- labels ----------------------------------------------------------------------------
-    def numbered(self, steps: Iterable[Step]) -> list[int]:
-        return [self.numbers[s.id] for s in steps if s.id in self.numbers]
-
-    def label_points(self) -> None:
-        """Each point's name and numbers; coincident points share one label ("o_v ≡ b")."""
-        groups: list[list[Step]] = []
-        for step in self.steps:
-            out = step.output
-            if not isinstance(out, g.Point) or out.is_at_infinity:
-                continue
-            grp = next((grp for grp in groups if self.coincide(grp[0].output.xy, out.xy)), None)
-            if grp is None:
-                groups.append([step])
-            else:
-                grp.append(step)
-        self.placer.name_points(self.view(grp[0].output.xy) for grp in groups
-                                if any(s.label for s in grp))
-        # A reader takes a name for the nearest point marked: it stands nearer its own than
-        # any arrow's tip, labelled or not, and the ends of arrows moved into lanes.
-        hidden = self.hidden()
-        self.placer.name_points(
-            {end for s, a, b in self.vectors() if s.id not in hidden and math.dist(a, b) >= _ZERO
-             for end, at in zip((a, b), self.drawn[s.id][2:])
-             if end is b or math.dist(end, at) > _HERE})
-        for grp in groups:
-            at = self.view(grp[0].output.xy)
-            names = list(dict.fromkeys(typeset(s.label) for s in grp if s.label))
-            text, sub, tail = _joined(names) if names else ("", "", "")
-            rays = self.rays_at(at)
-            self.placer.place_numbered(text, at, self.numbered(grp), sub=sub, tail=tail,
-                                       prefer=_free_direction(at, rays, self.centre), gap=1.0,
-                                       size=3.8, farther=_FARTHER, crossing=_CROSSING,
-                                       own=at if names else None, beside=True)
-
-    def label_vectors(self) -> None:
-        """Each vector's label beside its own stretch of shaft; a null one as "… = 0".
-
-        The shortest go first: they have the least shaft to choose a place by. Arrows
-        drawn one over another (V_A₂ and V_A₄ when the block does not slide) share one
-        label, "V_A₂ = V_A₄"; one moved into a lane is labelled on its lane's side.
-        """
-        drawn = self.vectors()
-        self.placer.name_vectors((a, b) for s, a, b in drawn
-                                 if s.label and math.dist(a, b) >= _TINY)
-        self.placer.name_points(_middle(a, b) for s, a, b in drawn
-                                if s.label and _ZERO <= math.dist(a, b) < _TINY)
-        twins: list[list[tuple[Step, tuple[float, float], tuple[float, float]]]] = []
-        for v in drawn:
-            same = next((t for t in twins if math.dist(t[0][1], v[1]) < _ZERO
-                         and math.dist(t[0][2], v[2]) < _ZERO
-                         and math.dist(v[1], v[2]) >= _ZERO), None)
-            if same is None:
-                twins.append([v])
-            else:
-                same.append(v)
-        for group in sorted(twins, key=lambda t: math.dist(t[0][1], t[0][2])):
-            step, a, b = group[0]
-            names = list(dict.fromkeys(typeset(s.label) for s, _, _ in group if s.label))
-            text, sub = names[0] if names else ("", "")
-            numbers = self.numbered(s for s, _, _ in group)
-            if math.dist(a, b) < _ZERO:
-                rays = self.rays_at(a)
-                self.placer.place_numbered(text, a, numbers, sub=sub,
-                                           tail=" = 0" if text else "",
-                                           prefer=_free_direction(a, rays, self.centre), gap=1.6,
-                                           size=3.2)
-                continue
-            d = unit((b[0] - a[0], b[1] - a[1]))
-            normal = math.atan2(d[0], d[1])       # the paper normal (−dy, dx) as a paper angle
-            true_a = self.drawn[step.id][2]
-            away = (a[0] + b[0]) / 2 - self.centre[0], (a[1] + b[1]) / 2 - self.centre[1]
-            if math.dist(a, true_a) > _HERE:      # in a lane: its side is the lane's
-                away = (a[0] - true_a[0], a[1] - true_a[1])
-            if away[0] * math.cos(normal) - away[1] * math.sin(normal) < 0:
-                normal += math.pi                  # the outer side of the polygon first
-            others = [(p, q) for s, p, q in drawn if all(s is not t for t, _, _ in group)]
-            anchors = [(a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]))
-                       for t in _own_stretch(a, b, others)]
-            # A short arrow has little shaft to stand beside: its name may go round its ends.
-            spread = math.pi / 3
-            # So short an arrow is found by its name only beside it: farther rings only
-            # where every spot beside it covers another label.
-            dot = math.dist(a, b) < _TINY
-            self.placer.place_numbered(text, anchors, numbers, sub=sub, also=tuple(names[1:]),
-                                       prefer=(normal, normal + math.pi), spread=spread,
-                                       gap=1.0, size=3.4, rings=_NEAR, farther=_FARTHER,
-                                       crossing=_ON_LABEL if dot else 0.0,
-                                       own=None if not text else _middle(a, b) if dot
-                                       else (a, b))
-
-    def number_lines(self) -> None:
-        """Each line's numbers beside its middle, or the middle of the stretch no arrow covers.
-
-        Its ends are where the tips and their numbers crowd, so a number there
-        would be read as a point's.
-        """
-        arrows = [(p, q) for _, p, q in self.vectors() if math.dist(p, q) >= _ZERO]
-        for steps, (a, b) in self.lines:
-            d = unit((b[0] - a[0], b[1] - a[1]))
-            normal = math.atan2(d[0], d[1])
-            anchors = [(a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]))
-                       for t in _own_stretch(a, b, arrows)]
-            self.placer.place_numbered("", anchors, self.numbered(steps),
-                                       prefer=(normal, normal + math.pi), spread=math.pi / 4,
-                                       gap=0.6, farther=_FARTHER)
 
 
 def _lanes(ends: list[tuple[tuple[float, float], tuple[float, float]]],
@@ -519,7 +361,7 @@ def _lanes(ends: list[tuple[tuple[float, float], tuple[float, float]]],
     def clash(i: int, j: int) -> bool:
         (a, b), (p, q) = ends[i], ends[j]
         n = math.dist(a, b)
-        if n < _ZERO or math.dist(p, q) < _ZERO:
+        if n < ZERO or math.dist(p, q) < ZERO:
             return False
         d = ((b[0] - a[0]) / n, (b[1] - a[1]) / n)
         if any(abs((e[0] - a[0]) * d[1] - (e[1] - a[1]) * d[0]) > 0.05 for e in (p, q)):
@@ -544,33 +386,6 @@ def _lanes(ends: list[tuple[tuple[float, float], tuple[float, float]]],
     return lane
 
 
-def _own_stretch(a: tuple[float, float], b: tuple[float, float],
-                 others: list[tuple[tuple[float, float], tuple[float, float]]]) -> list[float]:
-    """Where along ``a → b`` (fractions, best first) its label can name it alone.
-
-    Vectors drawn along one line overlap (V_A₄ within V_B₄, both from o_v): the
-    longer one's label goes on the stretch no other arrow covers, so each label
-    sits by its own arrow. An arrow wholly covered takes its middle.
-    """
-    length = math.dist(a, b)
-    d = ((b[0] - a[0]) / length, (b[1] - a[1]) / length)
-    covered = []
-    for p, q in others:
-        # Another arrow on the same carrier: both its ends within a hair of a → b's line.
-        if all(abs((e[0] - a[0]) * d[1] - (e[1] - a[1]) * d[0]) < 0.05 for e in (p, q)):
-            s, t = sorted(((e[0] - a[0]) * d[0] + (e[1] - a[1]) * d[1]) / length for e in (p, q))
-            covered.append((s, t))
-    free = [(0.0, 1.0)]
-    for s, t in covered:
-        free = [piece for lo, hi in free
-                for piece in ((lo, min(hi, s)), (max(lo, t), hi)) if piece[1] - piece[0] > 1e-9]
-    lo, hi = max(free, key=lambda f: f[1] - f[0], default=(0.0, 1.0))
-    if (hi - lo) * length < 6.0:
-        lo, hi = 0.0, 1.0
-    mid = (lo + hi) / 2
-    return [mid + k * (hi - lo) for k in (0.0, -0.15, 0.15, -0.3, 0.3, -0.4, 0.4)]
-
-
 def _under_dot(a: tuple[float, float], b: tuple[float, float], dot: tuple[float, float], *,
                head: float, width: float) -> bool:
     """Whether the arrow from ``a`` to ``b`` (its head ``head`` long at most, ``width``
@@ -586,7 +401,3 @@ def _under_dot(a: tuple[float, float], b: tuple[float, float], dot: tuple[float,
     base = (b[0] - min(head, n) * u[0], b[1] - min(head, n) * u[1])
     wings = [(base[0] - k * width / 2 * u[1], base[1] + k * width / 2 * u[0]) for k in (1, -1)]
     return all(math.dist(p, dot) <= _DOT for p in (a, b, *wings))
-
-
-def _middle(a: tuple[float, float], b: tuple[float, float]) -> tuple[float, float]:
-    return (a[0] + b[0]) / 2, (a[1] + b[1]) / 2

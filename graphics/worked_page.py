@@ -21,8 +21,8 @@ from ..constructions.errors import TarsimError
 from ..constructions.narration import right_to_left, words
 
 from .figure import Figure, Path, Text, text_width, wrap_text
-from .labels import typeset
 from .rtl import is_rtl, reading
+from .typeset import typeset
 
 __all__ = ["compose_worked_page", "compose_worked_sheets", "holds_panel", "A3"]
 

@@ -20,10 +20,11 @@ from shapely.geometry import Point as SPoint, Polygon
 from tarsim.constructions.assembly import assemble
 from tarsim.exercises.catalog import bundled
 from tarsim.exercises.mechanism_file import load_mechanism, parse_mechanism
-from tarsim.graphics.diagram import draw_kinematic_diagram, subscript
+from tarsim.graphics.diagram import draw_kinematic_diagram
 from tarsim.graphics.export import svg_to
 from tarsim.graphics.figure import Circle, Path
 from tarsim.graphics.svg import to_svg
+from tarsim.graphics.typeset import subscript
 
 SVG = "{http://www.w3.org/2000/svg}"
 DATA = FilePath(__file__).parent / "data"

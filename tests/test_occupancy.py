@@ -104,7 +104,7 @@ micron = st.integers(-60_000, 60_000).map(lambda i: i / 1000.0)   # paper mm, to
        kind=st.sampled_from(("point", "level", "plumb", "any")))
 def test_a_box_is_as_far_from_a_named_thing_as_shapely_measures(cx, cy, hw, hh, ax, ay, bx,
                                                                  by, kind):
-    from tarsim.graphics.labels import _box_distance
+    from tarsim.graphics.label_nearness import box_distance as _box_distance
 
     if kind == "point":
         bx, by = ax, ay

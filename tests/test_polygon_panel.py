@@ -29,9 +29,9 @@ from tarsim.constructions.narration import Phrase
 from tarsim.constructions.record import Construction, Panel, Role, Slice, slice
 from tarsim.constructions.velocity_polygon import draw_velocity_polygon
 from tarsim.graphics.figure import Circle, Path, Text
-from tarsim.graphics.labels import typeset
 from tarsim.graphics.polygon_panel import POLYGON_BOX, draw_polygon_panel
 from tarsim.graphics.svg import to_svg
+from tarsim.graphics.typeset import typeset
 from tests.common import badge_numbers, coupler_four_bar, crank_shaper
 
 SHAPER_T = math.pi / 2 - 2.34       # seed 003 §2: t = 2.34 s, θ2 = 90° − t, ω2 = −1 rad/s

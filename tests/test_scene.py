@@ -25,10 +25,11 @@ from tarsim.exercises.mechanism_file import load_mechanism
 from tarsim.graphics.circle_diagram import draw_circle_diagram, triangle_text
 from tarsim.graphics.diagram import draw_kinematic_diagram
 from tarsim.graphics.figure import Figure, Path, Text
-from tarsim.graphics.labels import typeset
 from tarsim.constructions.scales import choose_scales, velocity_per_cm
-from tarsim.graphics.scene import draw_scene, line_style
+from tarsim.graphics.scene import draw_scene
+from tarsim.graphics.scene_lines import line_style
 from tarsim.graphics.svg import to_svg
+from tarsim.graphics.typeset import typeset
 from tests.common import four_bar, offset_slider_crank
 
 SVG = "{http://www.w3.org/2000/svg}"
