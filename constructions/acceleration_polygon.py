@@ -27,7 +27,7 @@ from __future__ import annotations
 import math
 
 from . import asks as A
-from .assembly import Assembly
+from .assembly_record import Assembly
 from .checks import Answer, vector_value
 from .coincident import Node
 from .errors import TarsimError

@@ -23,7 +23,8 @@ import math
 from dataclasses import dataclass
 
 from . import asks as A
-from .assembly import Assembly, assemble, point_ref
+from .assembly import assemble
+from .assembly_record import Assembly, point_ref
 from .checks import Answer, FigureSpec, time_ratio_value
 from .errors import InputError, NoIntersection, TarsimError
 from .joints import SlideKind

@@ -18,7 +18,7 @@ from dataclasses import dataclass, field
 from itertools import combinations
 
 from . import geometry as g
-from .assembly import Assembly
+from .assembly_record import Assembly
 from .coincident import Node, Walk, rolling_contacts
 from .errors import DeadPoint, DegenerateInput, TarsimError
 from .joints import Slide, SlideKind

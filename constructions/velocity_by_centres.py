@@ -24,7 +24,7 @@ from __future__ import annotations
 import math
 
 from . import geometry as g
-from .assembly import Assembly
+from .assembly_record import Assembly
 from .centre_answers import located
 from .centres import Centres, pair_label
 from .errors import DegenerateInput, TarsimError

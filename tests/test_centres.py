@@ -22,7 +22,8 @@ from tarsim.constructions.reference.solver import Kinematics, SingularPosition, 
 from tarsim.constructions.checks import tolerance
 from tarsim.constructions.reference.centres import (AnalyticCentre, centre_error, instant_centre,
                                                     mechanism_size)
-from tarsim.constructions.assembly import Assembly, assemble
+from tarsim.constructions.assembly import assemble
+from tarsim.constructions.assembly_record import Assembly
 from tarsim.constructions.narration import narrate
 from tarsim.constructions.centres import ILL_CONDITIONED, Centres, omega_ratio
 from tarsim.constructions.errors import DegenerateInput, TarsimError

@@ -9,7 +9,8 @@ from dataclasses import replace
 
 import pytest
 
-from tarsim.constructions.assembly import assemble, point_ref
+from tarsim.constructions.assembly import assemble
+from tarsim.constructions.assembly_record import point_ref
 from tarsim.constructions.errors import TarsimError
 from tarsim.constructions.model import Drive
 from tarsim.constructions.narration import narrate

@@ -17,7 +17,8 @@ from hypothesis import strategies as st
 
 from tarsim.constructions.reference import solver
 from tarsim.constructions import geometry as g
-from tarsim.constructions.assembly import Assembly, assemble
+from tarsim.constructions.assembly import assemble
+from tarsim.constructions.assembly_record import Assembly
 from tarsim.constructions.errors import AssemblyError, TarsimError
 from tarsim.constructions.joints import Slide, SlideKind
 from tarsim.constructions.model import Drive, Link, Mechanism

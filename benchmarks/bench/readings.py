@@ -27,7 +27,8 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 
 from tarsim.constructions.acceleration_polygon import draw_acceleration_polygon
-from tarsim.constructions.assembly import assemble, point_ref
+from tarsim.constructions.assembly import assemble
+from tarsim.constructions.assembly_record import point_ref
 from tarsim.constructions.errors import TarsimError
 from tarsim.constructions.kennedy import locate_centres
 from tarsim.constructions.limit_positions import draw_limit_positions, limit_kind

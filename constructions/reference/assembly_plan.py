@@ -22,7 +22,10 @@ from enum import StrEnum
 
 import numpy as np
 
-from .solver import SINGULAR_RCOND, _SLACK, _Assembly, _System, _unit
+from .dyad_assembly import _Assembly
+from .loop_equations import _System
+from .planar import _SLACK, _unit
+from .solver import SINGULAR_RCOND
 from ..errors import AssemblyError
 from ..joints import Arc, Slide
 from ..model import Mechanism

@@ -14,7 +14,7 @@ from enum import StrEnum
 
 import numpy as np
 
-from .solver import _System
+from .loop_equations import _System
 from ..joints import SlideKind
 
 __all__ = ["BatchLoops", "wrap"]
