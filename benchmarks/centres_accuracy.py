@@ -28,11 +28,11 @@ from benchmarks.bench.stiff import parallel_angle  # noqa: E402
 from benchmarks.bench.timing import median_time  # noqa: E402
 from tarsim.constructions.reference import solver  # noqa: E402
 from tarsim.constructions.reference.centres import centre_error, instant_centre, mechanism_size  # noqa: E402
-from tarsim.constructions.assembly import assemble  # noqa: E402
-from tarsim.constructions.kennedy import locate_centres  # noqa: E402
+from tarsim.constructions.linkages.assembly import assemble  # noqa: E402
+from tarsim.constructions.linkages.kennedy import locate_centres  # noqa: E402
 from tarsim.exercises.catalog import bundled  # noqa: E402
-from tarsim.exercises.exercise_file import load_exercise  # noqa: E402
-from tarsim.exercises.solution import solve_exercise  # noqa: E402
+from tarsim.exercises.linkages.exercise_file import load_exercise  # noqa: E402
+from tarsim.exercises.linkages.solution import solve_exercise  # noqa: E402
 from tests.common import four_bar  # noqa: E402
 
 

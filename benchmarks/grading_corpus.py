@@ -39,7 +39,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 import tarsim  # noqa: E402
 from tarsim.constructions.errors import TarsimError  # noqa: E402
 from tarsim.exercises.grading.grade import grade  # noqa: E402
-from tarsim.exercises.solution import solve_positions  # noqa: E402
+from tarsim.exercises.linkages.solution import solve_positions  # noqa: E402
 from tests.loop_kinematics import read_exercise  # noqa: E402
 
 __all__ = ["score", "canonical", "CREDITED", "CLASS"]

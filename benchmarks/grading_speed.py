@@ -50,7 +50,7 @@ from benchmarks.speed import machine  # noqa: E402
 from tarsim.constructions.errors import TarsimError  # noqa: E402
 from tarsim.exercises.grading.drawing import read_drawing  # noqa: E402
 from tarsim.exercises.grading.grade import grade  # noqa: E402
-from tarsim.exercises.solution import solve_positions  # noqa: E402
+from tarsim.exercises.linkages.solution import solve_positions  # noqa: E402
 import grading_corpus as corpus  # noqa: E402
 
 EXERCISE = "crank-shaper"

@@ -23,7 +23,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
 import tarsim  # noqa: E402
 from tarsim.constructions.errors import InputError  # noqa: E402
-from tarsim.exercises.mechanism_file import MOST_POINTS  # noqa: E402
+from tarsim.exercises.linkages.mechanism_file import MOST_POINTS  # noqa: E402
 from tarsim.exercises.toml_source import MOST_BYTES  # noqa: E402
 from tests.common import four_bar_toml  # noqa: E402
 

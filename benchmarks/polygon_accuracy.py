@@ -28,12 +28,12 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
 from benchmarks.bench.timing import median_time  # noqa: E402
 from tarsim.constructions.reference import solver  # noqa: E402
-from tarsim.constructions.acceleration_polygon import draw_acceleration_polygon  # noqa: E402
-from tarsim.constructions.assembly import assemble  # noqa: E402
+from tarsim.constructions.linkages.acceleration_polygon import draw_acceleration_polygon  # noqa: E402
+from tarsim.constructions.linkages.assembly import assemble  # noqa: E402
 from tarsim.constructions.errors import AssemblyError  # noqa: E402
 from tarsim.constructions.model import Drive  # noqa: E402
-from tarsim.constructions.velocity_polygon import draw_velocity_polygon  # noqa: E402
-from tarsim.exercises.mechanism_file import load_mechanism  # noqa: E402
+from tarsim.constructions.linkages.velocity_polygon import draw_velocity_polygon  # noqa: E402
+from tarsim.exercises.linkages.mechanism_file import load_mechanism  # noqa: E402
 from tests.common import (coupler_four_bar, crank_shaper, four_bar,  # noqa: E402
                           inverted_slider_crank, slotted_lever_p37)
 

@@ -25,10 +25,10 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
 from benchmarks.bench.timing import median_time  # noqa: E402
 from tarsim.constructions.reference import solver  # noqa: E402
-from tarsim.constructions.assembly import assemble  # noqa: E402
+from tarsim.constructions.linkages.assembly import assemble  # noqa: E402
 from tarsim.constructions.errors import TarsimError  # noqa: E402
 from tarsim.exercises.catalog import bundled  # noqa: E402
-from tarsim.exercises.mechanism_file import load_mechanism, parse_mechanism  # noqa: E402
+from tarsim.exercises.linkages.mechanism_file import load_mechanism, parse_mechanism  # noqa: E402
 from tests.common import four_bar_toml  # noqa: E402
 
 

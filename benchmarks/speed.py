@@ -32,7 +32,7 @@ from pathlib import Path
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
 import tarsim  # noqa: E402
-from tarsim.exercises import solution_files  # noqa: E402
+from tarsim.exercises.linkages import solution_files  # noqa: E402
 from tarsim.exercises.catalog import bundled, everything  # noqa: E402
 from tarsim.graphics import workers  # noqa: E402
 from tarsim.graphics.export import figure_pdf  # noqa: E402

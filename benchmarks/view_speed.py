@@ -25,7 +25,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
 import tarsim  # noqa: E402
 from benchmarks.speed import machine  # noqa: E402
-from tarsim.exercises.view import view_data  # noqa: E402
+from tarsim.exercises.linkages.view import view_data  # noqa: E402
 from tarsim.graphics.view_page import view_html  # noqa: E402
 from tests.browser import chromium  # noqa: E402
 

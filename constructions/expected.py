@@ -17,9 +17,9 @@ from itertools import combinations
 
 from . import asks as A
 from .checks import Expected, grashof_value, time_ratio_value, vector_value
-from .coincident import taken
+from .linkages.coincident import taken
 from .errors import DegenerateInput, InputError
-from .limit_positions import WHY_NOT, drawn_limits
+from .linkages.limit_positions import WHY_NOT, drawn_limits
 from .joints import SlideKind
 from .reference import solver
 from .reference.centres import MoveTogether, instant_centre, mechanism_size, shared_pin
@@ -105,7 +105,7 @@ def acceleration_part(work, ask: A.AccelerationPart) -> Expected:
     one: its projection on the point's velocity (tangential) and the rest (normal)."""
     m, kin = work.mechanism, work.kinematics
     if ask.of is not None:
-        from .acceleration_parts import common_link
+        from .linkages.acceleration_parts import common_link
 
         k = common_link(m, ask.point, ask.of)
         (_, p), (_, q) = taken(m, ask.point), taken(m, ask.of)
@@ -137,7 +137,7 @@ def coriolis(work, ask: A.Coriolis) -> Expected:
 def sliding(work, ask: A.Sliding) -> Expected:
     """The point's travel along its slot seen from the slot's link: the slide rate's first (V)
     or second (A) derivative, along the guide."""
-    from .sliding import slot_of
+    from .linkages.sliding import slot_of
 
     i, _ = slot_of(work.mechanism, ask.point)
     rate = work.kinematics.slide_rates[i]
@@ -169,7 +169,7 @@ def reading(work, ask) -> Expected:
                          "value": (vx * vx + vy * vy) ** 0.5,
                          "floor": abs(kin.omegas[ask.link]) * mechanism_size(kin)})
     if isinstance(ask, A.Rubbing):
-        from .readings import pin_links
+        from .linkages.readings import pin_links
 
         i, j = pin_links(m, ask.point)
         w = {1: 0.0, **kin.omegas}
@@ -179,7 +179,7 @@ def reading(work, ask) -> Expected:
         (px, py), (cx, cy) = kin.points[ask.point], ref.point
         return Expected({"value": ((px - cx) ** 2 + (py - cy) ** 2) ** 0.5})
     # μ by the protractor's own geometry, on the solver's points and guide direction
-    from .readings import angle_at, normal_angle, slider_rod, transmission_pin
+    from .linkages.readings import angle_at, normal_angle, slider_rod, transmission_pin
 
     rod = slider_rod(m)
     if rod is not None:       # the rod against the normal to the stroke
@@ -193,7 +193,7 @@ def reading(work, ask) -> Expected:
 def equivalent(work, ask: A.Equivalent) -> Expected:
     """The two centres' distance, or the circle's centre's from the face, where the solver
     puts them: the contact's own invariant, r₁ ± r₂ or r."""
-    from .equivalent import contact_at
+    from .linkages.equivalent import contact_at
 
     m, kin = work.mechanism, work.kinematics
     joint, index = contact_at(m, ask.point)

@@ -23,14 +23,14 @@ from functools import cached_property
 from typing import Any
 
 from . import asks as A
-from .assembly import assemble
-from .assembly_record import Assembly
+from .linkages.assembly import assemble
+from .linkages.assembly_record import Assembly
 from .checks import Answer, Expected, Quantity, check
 from .errors import GeometryError, IllConditioned, NoIntersection, TarsimError
 from .model import Mechanism
 from .narration import Number, Phrase, Word, narrate, phrase
 from .record import Panel, weakest_act
-from .velocity_drawing import method_words
+from .linkages.velocity_drawing import method_words
 from .reference import solver
 from .reference.centres import mechanism_size
 from .reference.rotatability import grashof_class

@@ -17,26 +17,26 @@ from functools import partial
 
 from . import asks as A
 from . import expected
-from .acceleration_parts import answer_part
-from .acceleration_polygon import answer as from_acceleration_polygon
-from .centre_answers import answer_centre, answer_count, answer_omega
-from .limit_positions import WHY_NOT as LIMITS_WHY_NOT
-from .limit_positions import answer as from_limits
-from .limit_positions import askable as limits_askable
+from .linkages.acceleration_parts import answer_part
+from .linkages.acceleration_polygon import answer as from_acceleration_polygon
+from .linkages.centre_answers import answer_centre, answer_count, answer_omega
+from .linkages.limit_positions import WHY_NOT as LIMITS_WHY_NOT
+from .linkages.limit_positions import answer as from_limits
+from .linkages.limit_positions import askable as limits_askable
 from .errors import TarsimError
 from .methods import Method, Work
 from .model import Mechanism
-from .overall import GRASHOF_WHY_NOT, answer_grashof, answer_mobility, grashof_askable
-from .equivalent import answer_equivalent, equivalent_askable
+from .linkages.overall import GRASHOF_WHY_NOT, answer_grashof, answer_mobility, grashof_askable
+from .linkages.equivalent import answer_equivalent, equivalent_askable
 from .forces.answers import FORCES_WHY_NOT, answer as from_force_polygons, forces_askable
-from .klein import answer_klein
-from .positions import answer_position
-from .readings import MU_WHY_NOT, answer_reading, mu_askable
-from .sliding import answer_sliding, sliding_askable
-from .transmission import answer_omega as by_transmission, transmission_links
-from .velocity_by_centres import answer_velocity as by_centres
-from .velocity_by_components import answer_velocity as by_components
-from .velocity_polygon import answer as from_velocity_polygon, wants_polygon
+from .linkages.klein import answer_klein
+from .linkages.positions import answer_position
+from .linkages.readings import MU_WHY_NOT, answer_reading, mu_askable
+from .linkages.sliding import answer_sliding, sliding_askable
+from .linkages.transmission import answer_omega as by_transmission, transmission_links
+from .linkages.velocity_by_centres import answer_velocity as by_centres
+from .linkages.velocity_by_components import answer_velocity as by_components
+from .linkages.velocity_polygon import answer as from_velocity_polygon, wants_polygon
 
 __all__ = ["METHODS", "CHOSEN", "askable", "why_not"]
 

@@ -18,7 +18,7 @@ import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 
-from .assembly_record import Assembly
+from .linkages.assembly_record import Assembly
 from .errors import TarsimError
 
 __all__ = ["nice", "nice_per_cm", "Scales", "Stated", "choose_scales", "space_per_cm",

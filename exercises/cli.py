@@ -16,9 +16,9 @@ from pathlib import Path
 
 import click
 
-from ..constructions.errors import (AssemblyError, CheckMismatch, GeometryError, IllConditioned,
-                                   InputError, TarsimError)
-from ..constructions.narration import speaking, spoken
+from tarsim.constructions.errors import (AssemblyError, CheckMismatch, GeometryError,
+                                         IllConditioned, InputError, TarsimError)
+from tarsim.constructions.narration import speaking, spoken
 
 __all__ = ["cli"]
 
@@ -61,7 +61,7 @@ def _placed(error: TarsimError, source: str | None) -> str:
     """``error``'s line, led by ``source`` and, for an error of assembly, the line of it
     that the error concerns."""
     from .catalog import resolve
-    from .mechanism_file import line_of
+    from .linkages.mechanism_file import line_of
 
     if not source or source in str(error):
         return str(error)
@@ -184,8 +184,8 @@ def draw(source, output, angle, paper, lang, digits):
       tarsim draw oscillating-roller -o cam.pdf
       tarsim draw four-bar -o four-bar-fa.pdf --lang fa
     """
-    from ..graphics.export import write_figure
-    from ..graphics.paper import on_sheet, paper as sheet
+    from tarsim.graphics.export import write_figure
+    from tarsim.graphics.paper import on_sheet, paper as sheet
 
     loaded, chapter = _loaded(source, angle)
     with speaking(_language(lang, digits, loaded)):
@@ -212,7 +212,7 @@ def check(source, angle):
       tarsim check four-bar
       tarsim check crank-shaper --angle -44.072
     """
-    from .report import check_positions, format_check
+    from .linkages.report import check_positions, format_check
 
     click.echo(format_check(check_positions(_linkage(source, angle).mechanism)))
 
@@ -292,7 +292,7 @@ def solve(source, out_dir, angle, pdf, paper, allow_undercut, lang, digits):
     one beyond the tolerance its conditioning allows (the files are written all
     the same, so the disagreement can be seen); 1 for bad input.
     """
-    from ..graphics.export import cairo_missing, output_folder
+    from tarsim.graphics.export import cairo_missing, output_folder
 
     loaded, chapter = _loaded(source, angle)
     with speaking(_language(lang, digits, loaded)):
@@ -360,10 +360,10 @@ def sweep(source, out_dir, of, steps, pdf, lang, digits):
       tarsim sweep four-bar --of omega4 --steps 720 --no-pdf
       tarsim sweep my-linkage.toml --of V_C
     """
-    from .sweep import sweep_exercise
-    from .sweep_files import format_sweep, sweep_to_files, write_sweep
-    from .turning_moment import POWER_AGREE, moment_files
-    from ..graphics.export import cairo_missing, output_folder
+    from .linkages.sweep import sweep_exercise
+    from .linkages.sweep_files import format_sweep, sweep_to_files, write_sweep
+    from .forces.turning_moment import POWER_AGREE, moment_files
+    from tarsim.graphics.export import cairo_missing, output_folder
 
     ex = _linkage(source)
 
@@ -400,7 +400,7 @@ def sweep(source, out_dir, of, steps, pdf, lang, digits):
 
 def _turning_moment(ex, steps: int):
     """The turning-moment diagram of a loaded exercise, with a progress bar on a terminal."""
-    from .turning_moment import turning_moment
+    from .forces.turning_moment import turning_moment
 
     if sys.stderr.isatty():
         with click.progressbar(length=steps, label="forces", file=sys.stderr) as bar:
@@ -562,7 +562,7 @@ def grade(source, drawing, out_dir, position, roster, pattern, pdf, workers, sch
     from .grading.grade import grade as grade_one
     from .grading.report import class_folder, grade_files, grade_table
     from .grading.roster import Pattern, class_rows, read_roster
-    from ..graphics.export import cairo_missing, write_folder
+    from tarsim.graphics.export import cairo_missing, write_folder
 
     if pdf and cairo_missing():
         click.echo("note: feedback.pdf is not written, for libcairo2 is not installed "
@@ -638,9 +638,9 @@ def view(source, output, step):
       tarsim view crank-shaper -o shaper.html
       tarsim view four-bar --step 1
     """
-    from .view import view_data
-    from ..graphics.export import write_text
-    from ..graphics.view_page import view_html
+    from .linkages.view import view_data
+    from tarsim.graphics.export import write_text
+    from tarsim.graphics.view_page import view_html
 
     ex = _linkage(source)
     target = Path(output or f"{ex.id}-view.html")

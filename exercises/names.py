@@ -11,7 +11,7 @@ from __future__ import annotations
 from dataclasses import replace
 from typing import Any
 
-from ..constructions.errors import InputError
+from tarsim.constructions.errors import InputError
 from .toml_source import SourceMap
 
 __all__ = ["read_names", "named_in"]

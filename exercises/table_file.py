@@ -8,8 +8,8 @@ from __future__ import annotations
 import math
 from typing import Any
 
-from ..constructions.errors import InputError
-from ..constructions.units import LENGTH_UNITS
+from tarsim.constructions.errors import InputError
+from tarsim.constructions.units import LENGTH_UNITS
 from .file_numbers import file_number
 from .toml_source import SourceMap, read_toml
 

@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import re
 
-from ..constructions.errors import InputError
+from tarsim.constructions.errors import InputError
 
 __all__ = ["MOST_DEPTH", "check_depth"]
 

@@ -15,7 +15,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from ..constructions.errors import InputError
+from tarsim.constructions.errors import InputError
 from .toml_depth import check_depth
 
 __all__ = ["read_source", "read_toml", "SourceMap", "MOST_BYTES"]

@@ -27,7 +27,7 @@ try:
 except ImportError:               # not on Windows: folders are then written unlocked
     fcntl = None
 
-from ..constructions.errors import TarsimError
+from tarsim.constructions.errors import TarsimError
 
 __all__ = ["RenderError", "MANIFEST", "write_text", "write_folder", "check_folder",
            "output_folder"]

@@ -10,8 +10,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from ..constructions.errors import InputError
-from ..constructions.scales import ROOM
+from tarsim.constructions.errors import InputError
+from tarsim.constructions.scales import ROOM
 from .figure import Figure, _shifted
 
 __all__ = ["Paper", "PAPERS", "paper", "room", "on_sheet", "sheet_size"]

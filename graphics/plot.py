@@ -21,8 +21,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..constructions.narration import numerals
-from ..constructions.scales import nice
+from tarsim.constructions.narration import numerals
+from tarsim.constructions.scales import nice
 
 from .figure import Circle, Figure, Path, Text, text_width, wrap_text
 from .rtl import is_rtl, reading

@@ -17,7 +17,7 @@ import re
 from dataclasses import dataclass
 from functools import cache
 
-from ..constructions.narration import right_to_left
+from tarsim.constructions.narration import right_to_left
 
 __all__ = ["is_rtl", "RTL_FONT", "for_cairo", "visual", "joined", "Reading", "reading"]
 

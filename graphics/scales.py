@@ -9,9 +9,8 @@ from __future__ import annotations
 import re
 from collections.abc import Sequence
 
-from ..constructions.narration import (numerals, significant, spoken, unit_words,
-                                      words)
-from ..constructions.scales import Stated, nice_per_cm
+from tarsim.constructions.narration import numerals, significant, spoken, unit_words, words
+from tarsim.constructions.scales import Stated, nice_per_cm
 
 from .figure import Figure, Path, Text, text_width, wrap_text
 from .rtl import reading

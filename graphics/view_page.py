@@ -1,6 +1,6 @@
 """The interactive page (``tarsim view``): one self-contained HTML file.
 
-The page is its data (:func:`~tarsim.exercises.view.view_data`, as JSON), a stylesheet
+The page is its data (:func:`~tarsim.exercises.linkages.view.view_data`, as JSON), a stylesheet
 and a script, all inline: no network, no CDN, no server, so it opens from disk in any
 current browser and its Content-Security-Policy forbids it to fetch anything. The
 script (``page/view.js``) only draws the numbers it is given.

@@ -12,7 +12,7 @@ import pytest
 
 from tarsim import solve
 from tarsim.exercises.catalog import load
-from tarsim.exercises.solution_files import WorkedSolution
+from tarsim.exercises.linkages.solution_files import WorkedSolution
 
 from tests.browser import chromium
 

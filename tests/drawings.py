@@ -10,8 +10,8 @@ import math
 from dataclasses import dataclass, field
 from xml.sax.saxutils import escape
 
-from tarsim.constructions.acceleration_polygon import drawn_acceleration_polygon
-from tarsim.constructions.velocity_polygon import drawn_velocity_polygon
+from tarsim.constructions.linkages.acceleration_polygon import drawn_acceleration_polygon
+from tarsim.constructions.linkages.velocity_polygon import drawn_velocity_polygon
 
 
 @dataclass

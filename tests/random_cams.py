@@ -483,7 +483,7 @@ def run_case(text: str | bytes, path: str | Path, *, render: bool = False) -> Ou
                                         or "concave profile" in got.message):
         return got
     try:
-        from tarsim.exercises.cam_solution import solve_cam
+        from tarsim.exercises.cams.cam_solution import solve_cam
         from tarsim.exercises.catalog import load
 
         if undercut_by(words, extremes(words)) is False:

@@ -59,7 +59,7 @@ def _positions(name: str) -> list:
     """The exercise's positions, solved once a process."""
     if name not in _SOLVED:
         import tarsim
-        from tarsim.exercises.solution import solve_positions
+        from tarsim.exercises.linkages.solution import solve_positions
 
         _SOLVED[name] = (tarsim.load(name), solve_positions(tarsim.load(name)))
     return _SOLVED[name]

@@ -394,7 +394,7 @@ def _turn_wrongs(ex, steps: int = 72) -> list[str]:
     files free of nan and inf."""
     from tarsim.constructions.errors import TarsimError
     from tarsim.constructions.model import Drive
-    from tarsim.exercises.turning_moment import POWER_AGREE, moment_files, turning_moment
+    from tarsim.exercises.forces.turning_moment import POWER_AGREE, moment_files, turning_moment
 
     try:
         tm = turning_moment(ex, steps)

@@ -12,7 +12,7 @@ import pytest
 from tarsim.constructions import asks as A
 from tarsim.constructions.errors import TarsimError
 from tarsim.exercises.catalog import load
-from tarsim.exercises.solution import solve_positions
+from tarsim.exercises.linkages.solution import solve_positions
 
 LEVER = ("An_A4", "At_A4", "An_B4", "At_B4")
 

@@ -1,4 +1,4 @@
-"""The acceleration polygon (constructions/acceleration_polygon.py).
+"""The acceleration polygon (constructions/linkages/acceleration_polygon.py).
 
 Every tip (every point and every coincident point such as A4), every α and every
 Coriolis component is checked against the independent analytic solver. The
@@ -22,15 +22,15 @@ from hypothesis import strategies as st
 
 from tarsim.constructions.reference import solver
 from tarsim.constructions import geometry as g
-from tarsim.constructions.acceleration_polygon import draw_acceleration_polygon
-from tarsim.constructions.polygon_walk import VELOCITY, Polygon
+from tarsim.constructions.linkages.acceleration_polygon import draw_acceleration_polygon
+from tarsim.constructions.linkages.polygon_walk import VELOCITY, Polygon
 from tarsim.constructions.checks import tolerance
-from tarsim.constructions.assembly import assemble
+from tarsim.constructions.linkages.assembly import assemble
 from tarsim.constructions.errors import AssemblyError, TarsimError
 from tarsim.constructions.model import Drive
 from tarsim.constructions.record import Panel, Role, replay
-from tarsim.constructions.velocity_polygon import draw_velocity_polygon
-from tarsim.exercises.mechanism_file import load_mechanism
+from tarsim.constructions.linkages.velocity_polygon import draw_velocity_polygon
+from tarsim.exercises.linkages.mechanism_file import load_mechanism
 from tarsim.constructions.narration import narrate
 from tests.common import (coupler_four_bar, crank_shaper, four_bar, inverted_slider_crank,
                           offset_slider_crank, scotch_yoke, slotted_lever_p37)

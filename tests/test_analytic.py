@@ -1,4 +1,4 @@
-"""Tests of the analytic reference solver (constructions/analytic.py).
+"""Tests of the analytic reference solver (constructions/reference/).
 
 Golden numbers cite their source under /work/shared/reference/. Where a source
 prints a value to a fixed number of digits, the tolerance is half a unit in the

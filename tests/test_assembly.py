@@ -6,11 +6,11 @@ import re
 import pytest
 
 from tarsim.constructions.reference import solver
-from tarsim.constructions.assembly import assemble
+from tarsim.constructions.linkages.assembly import assemble
 from tarsim.constructions.errors import AssemblyError
 from tarsim.constructions.model import Drive
 from tarsim.exercises.catalog import bundled
-from tarsim.exercises.mechanism_file import load_mechanism, parse_mechanism
+from tarsim.exercises.linkages.mechanism_file import load_mechanism, parse_mechanism
 from tarsim.constructions.narration import narrate
 from tests.common import four_bar_toml
 
@@ -209,7 +209,7 @@ def test_six_bars_assemble_dyad_by_dyad(name):
 
 # ----- the dyad rules are a registry -----------------------------------------------------------
 def test_the_dyad_rules_are_tried_in_their_registered_order():
-    from tarsim.constructions.dyad_rules import DYAD_RULES
+    from tarsim.constructions.linkages.dyad_rules import DYAD_RULES
     names = [r.name for r in sorted(DYAD_RULES.values(), key=lambda r: r.order)]
     assert names == ["a point of a drawn link", "a wheel rolling without slip",
                      "a wheel rolling round a circle without slip",
@@ -219,8 +219,8 @@ def test_the_dyad_rules_are_tried_in_their_registered_order():
 
 def test_a_new_dyad_rule_plugs_into_the_registry(monkeypatch):
     """A rule registered under a new name is consulted by the walk, in its order."""
-    from tarsim.constructions import assembly as asm_module
-    from tarsim.constructions.dyad_rules import DyadRule
+    from tarsim.constructions.linkages import assembly as asm_module
+    from tarsim.constructions.linkages.dyad_rules import DyadRule
     seen = []
 
     def note(assembler) -> bool:

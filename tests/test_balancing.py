@@ -24,10 +24,10 @@ from tarsim.constructions.balancing.engine import draw_engine
 from tarsim.constructions.balancing.polygons import draw_balance
 from tarsim.constructions.errors import InputError
 from tarsim.constructions.reference.balance import quadrant_angle, resultant
-from tarsim.exercises.balance_solution import solve_balance
+from tarsim.exercises.balancing.balance_solution import solve_balance
 from tarsim.exercises.catalog import bundled, load
 from tarsim.exercises.cli import cli
-from tarsim.exercises.rotor_file import parse_balance
+from tarsim.exercises.balancing.rotor_file import parse_balance
 
 
 def test_the_notes_example_balances_at_1_3907_kg_m_and_3_90_degrees():

@@ -30,7 +30,7 @@ from tarsim.constructions.reference.batch_loops import BatchLoops, wrap
 from tarsim.constructions.reference.loop_equations import _System
 from tarsim.constructions.reference.turn import _newton, solve_turn
 from tarsim.exercises.catalog import bundled, resolve
-from tarsim.exercises.exercise_file import load_exercise, parse_exercise
+from tarsim.exercises.linkages.exercise_file import load_exercise, parse_exercise
 from tests.common import four_bar, four_bar_toml, inverted_slider_crank, offset_slider_crank
 from tests.random_mechanisms import FAMILIES, generate
 

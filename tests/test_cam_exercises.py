@@ -10,8 +10,8 @@ import pytest
 from click.testing import CliRunner
 
 from tarsim.constructions.errors import InputError
-from tarsim.exercises.cam_file import parse_cam
-from tarsim.exercises.cam_solution import solve_cam
+from tarsim.exercises.cams.cam_file import parse_cam
+from tarsim.exercises.cams.cam_solution import solve_cam
 from tarsim.exercises.catalog import bundled, load
 from tarsim.exercises.cli import cli
 

@@ -21,8 +21,8 @@ from hypothesis import HealthCheck, example, given, settings
 from hypothesis import strategies as st
 
 from tarsim.constructions.reference.cam_laws import pieces
-from tarsim.exercises.cam_file import parse_cam
-from tarsim.exercises.cam_solution import solve_cam
+from tarsim.exercises.cams.cam_file import parse_cam
+from tarsim.exercises.cams.cam_solution import solve_cam
 from tests.random_cams import extremes, to_toml
 
 LAWS = ("uniform velocity", "modified uniform velocity", "simple harmonic", "parabolic",

@@ -28,11 +28,11 @@ from tarsim.constructions.model import Drive
 from tarsim.constructions.reference import solver
 from tarsim.constructions.reference.cam_profile import (Follower, follower_motion,
                                                         pressure_angle_translating, station)
-from tarsim.exercises.cam_file import parse_cam
-from tarsim.exercises.cam_solution import solve_cam
+from tarsim.exercises.cams.cam_file import parse_cam
+from tarsim.exercises.cams.cam_solution import solve_cam
 from tarsim.exercises.catalog import load
 from tarsim.exercises.cli import cli
-from tarsim.exercises.mechanism_file import load_mechanism
+from tarsim.exercises.linkages.mechanism_file import load_mechanism
 
 DATA = Path(__file__).parent / "data"
 ROLLER = "roller-harmonic-cycloidal"

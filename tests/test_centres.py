@@ -1,6 +1,6 @@
-"""Tests of constructions/centres.py: every instant centre against the analytic reference.
+"""Tests of constructions/linkages/centres.py: every instant centre against the analytic reference.
 
-The reference is constructions/analytic_centres.py, which locates ``I_ij`` where the
+The reference is constructions/reference/centres.py, which locates ``I_ij`` where the
 velocity fields of links i and j (from the vector-loop solver) agree; it shares no code
 with the construction. A centre's tolerance is ``tolerance(conditioning)``, the first-order
 error ``64 eps / conditioning`` of the recorded acts (floor 1e-9), measured relative to
@@ -22,19 +22,19 @@ from tarsim.constructions.reference.solver import Kinematics, SingularPosition, 
 from tarsim.constructions.checks import tolerance
 from tarsim.constructions.reference.centres import (AnalyticCentre, centre_error, instant_centre,
                                                     mechanism_size)
-from tarsim.constructions.assembly import assemble
-from tarsim.constructions.assembly_record import Assembly
+from tarsim.constructions.linkages.assembly import assemble
+from tarsim.constructions.linkages.assembly_record import Assembly
 from tarsim.constructions.narration import narrate
-from tarsim.constructions.centres import ILL_CONDITIONED, Centres, omega_ratio
+from tarsim.constructions.linkages.centres import ILL_CONDITIONED, Centres, omega_ratio
 from tarsim.constructions.errors import DegenerateInput, TarsimError
-from tarsim.constructions.kennedy import locate_centres
+from tarsim.constructions.linkages.kennedy import locate_centres
 from tarsim.constructions.joints import SlideKind
 from tarsim.constructions.model import Drive, Link, Mechanism
 from tarsim.constructions.units import Units
 from tarsim.constructions.record import slice as backward_slice
-from tarsim.exercises.mechanism_file import load_mechanism, parse_mechanism
-from tests.common import (crank_shaper, four_bar, four_bar_toml, offset_slider_crank,
-                          scotch_yoke, slotted_lever_p37)
+from tarsim.exercises.linkages.mechanism_file import load_mechanism, parse_mechanism
+from tests.common import (crank_shaper, four_bar, four_bar_toml, offset_slider_crank, scotch_yoke,
+                          slotted_lever_p37)
 
 D = math.radians
 DATA = Path(__file__).parent / "data"
@@ -649,7 +649,7 @@ def test_a_centre_of_two_links_at_rest_together_is_drawn_and_reported_undefined(
     # no single point.
     from tarsim.exercises.catalog import load
     from tarsim.exercises.file_numbers import radians_in_turn
-    from tarsim.exercises.solution import solve_positions
+    from tarsim.exercises.linkages.solution import solve_positions
 
     ex = load("crank-shaper").asking(("centres",))
     m = ex.mechanism

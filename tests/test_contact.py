@@ -18,12 +18,12 @@ from pathlib import Path
 import pytest
 
 from tarsim.constructions.reference import solver
-from tarsim.constructions.assembly import assemble
+from tarsim.constructions.linkages.assembly import assemble
 from tarsim.constructions.joints import Contact, Profile, SlideKind, contact_slide
 from tarsim.constructions.model import Drive, Link, Mechanism
-from tarsim.exercises.mechanism_file import load_mechanism, parse_mechanism
-from tarsim.exercises.report import check_positions
-from tarsim.graphics.diagram import draw_kinematic_diagram
+from tarsim.exercises.linkages.mechanism_file import load_mechanism, parse_mechanism
+from tarsim.exercises.linkages.report import check_positions
+from tarsim.graphics.linkages.diagram import draw_kinematic_diagram
 from tarsim.graphics.figure import Circle, Path as FigPath
 from tarsim.graphics.svg import to_svg
 

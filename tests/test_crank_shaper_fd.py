@@ -47,9 +47,9 @@ import math
 
 import pytest
 
-from tarsim.constructions.acceleration_polygon import draw_acceleration_polygon
-from tarsim.constructions.assembly import assemble
-from tarsim.constructions.velocity_polygon import draw_velocity_polygon
+from tarsim.constructions.linkages.acceleration_polygon import draw_acceleration_polygon
+from tarsim.constructions.linkages.assembly import assemble
+from tarsim.constructions.linkages.velocity_polygon import draw_velocity_polygon
 from tests.common import crank_shaper
 
 R1, R2, H = 500.0, 180.0, 380.0     # mm: O2O4, O2A, height of the ram line above O2

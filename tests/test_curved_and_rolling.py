@@ -23,14 +23,14 @@ import pytest
 from tarsim.constructions.reference.solver import solve
 from tarsim.constructions.checks import tolerance
 from tarsim.constructions.reference.centres import centre_error, instant_centre
-from tarsim.constructions.assembly import assemble
-from tarsim.constructions.centres import omega_ratio
+from tarsim.constructions.linkages.assembly import assemble
+from tarsim.constructions.linkages.centres import omega_ratio
 from tarsim.constructions.errors import InputError, TarsimError
-from tarsim.constructions.kennedy import locate_centres
+from tarsim.constructions.linkages.kennedy import locate_centres
 from tarsim.constructions.model import Drive
-from tarsim.constructions.velocity_by_centres import METHODS
-from tarsim.constructions.velocity_by_components import velocity_by_components
-from tarsim.exercises.mechanism_file import load_mechanism, parse_mechanism
+from tarsim.constructions.linkages.velocity_by_centres import METHODS
+from tarsim.constructions.linkages.velocity_by_components import velocity_by_components
+from tarsim.exercises.linkages.mechanism_file import load_mechanism, parse_mechanism
 from tarsim.constructions.narration import narrate
 
 DATA = Path(__file__).parent / "data"

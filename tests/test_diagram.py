@@ -17,10 +17,10 @@ from pathlib import Path as FilePath
 import pytest
 from shapely.geometry import Point as SPoint, Polygon
 
-from tarsim.constructions.assembly import assemble
+from tarsim.constructions.linkages.assembly import assemble
 from tarsim.exercises.catalog import bundled
-from tarsim.exercises.mechanism_file import load_mechanism, parse_mechanism
-from tarsim.graphics.diagram import draw_kinematic_diagram
+from tarsim.exercises.linkages.mechanism_file import load_mechanism, parse_mechanism
+from tarsim.graphics.linkages.diagram import draw_kinematic_diagram
 from tarsim.graphics.export import svg_to
 from tarsim.graphics.figure import Circle, Path
 from tarsim.graphics.svg import to_svg
@@ -230,9 +230,9 @@ def test_same_input_gives_byte_identical_svg(drawn):
 
 def test_svg_does_not_depend_on_the_hash_seed():
     code = ("import sys; from tarsim.exercises.catalog import bundled; "
-            "from tarsim.exercises.mechanism_file import load_mechanism; "
-            "from tarsim.constructions.assembly import assemble; "
-            "from tarsim.graphics.diagram import draw_kinematic_diagram; "
+            "from tarsim.exercises.linkages.mechanism_file import load_mechanism; "
+            "from tarsim.constructions.linkages.assembly import assemble; "
+            "from tarsim.graphics.linkages.diagram import draw_kinematic_diagram; "
             "from tarsim.graphics.svg import to_svg; "
             "sys.stdout.buffer.write(to_svg(draw_kinematic_diagram(assemble("
             "load_mechanism(bundled()['slotted-lever-p37'])))).encode())")
@@ -463,9 +463,9 @@ def test_a_lever_with_its_block_behind_the_pivot_runs_through_the_pivot_to_the_b
 
 def test_a_plates_tint_lies_under_every_construction_line():
     """A Kennedy line across the coupler plate shows through it: the tint is drawn first."""
-    from tarsim.constructions.kennedy import locate_centres
+    from tarsim.constructions.linkages.kennedy import locate_centres
     from tarsim.constructions.record import Kind, Slice
-    from tarsim.graphics.scene import draw_scene
+    from tarsim.graphics.linkages.scene import draw_scene
     asm = assemble(load_mechanism(bundled()["hinkle-four-bar"]))
     locate_centres(asm)
     c = asm

@@ -11,7 +11,7 @@ import math
 import pytest
 
 from tarsim.exercises.catalog import load
-from tarsim.exercises.solution_files import solve_worked
+from tarsim.exercises.linkages.solution_files import solve_worked
 
 
 @pytest.fixture(scope="module")

@@ -9,8 +9,8 @@ from pathlib import Path
 import pytest
 
 from tarsim.constructions.errors import TarsimError
-from tarsim.exercises.exercise_file import parse_exercise
-from tarsim.exercises.solution_files import solve_worked
+from tarsim.exercises.linkages.exercise_file import parse_exercise
+from tarsim.exercises.linkages.solution_files import solve_worked
 
 DATA = Path(__file__).parent / "data"
 

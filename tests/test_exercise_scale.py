@@ -8,14 +8,14 @@ import math
 import pytest
 
 from tarsim.constructions.reference import solver
-from tarsim.constructions.assembly import assemble
+from tarsim.constructions.linkages.assembly import assemble
 from tarsim.constructions.errors import InputError
 from tarsim.constructions.record import Panel, Slice
-from tarsim.exercises.exercise_file import parse_exercise
-from tarsim.exercises.solution import solve_exercise
-from tarsim.graphics.diagram import draw_kinematic_diagram
-from tarsim.graphics.polygon_panel import draw_polygon_panel
-from tarsim.graphics.scene import draw_scene
+from tarsim.exercises.linkages.exercise_file import parse_exercise
+from tarsim.exercises.linkages.solution import solve_exercise
+from tarsim.graphics.linkages.diagram import draw_kinematic_diagram
+from tarsim.graphics.linkages.polygon_panel import draw_polygon_panel
+from tarsim.graphics.linkages.scene import draw_scene
 from tests.common import four_bar_toml
 
 

@@ -23,7 +23,7 @@ from tarsim.constructions.forces.polygons import drawn_forces
 from tarsim.constructions.reference import solver
 from tarsim.exercises.catalog import bundled
 from tarsim.exercises.cli import cli
-from tarsim.exercises.exercise_file import load_exercise, parse_exercise
+from tarsim.exercises.linkages.exercise_file import load_exercise, parse_exercise
 
 FORCES = {name: Path(path) for name, path in bundled("forces").items()}
 
@@ -191,7 +191,7 @@ def test_the_loads_are_drawn_to_the_force_scale_the_caption_states(name):
     makes it (to the 4 figures its name prints), and each inertia force drawn as one force
     stands h = I·α/(m·a_G) off G, to the side whose moment about G is the couple."""
     from tarsim.graphics.figure import Text
-    from tarsim.graphics.loads_figure import _offset
+    from tarsim.graphics.forces.loads_figure import _offset
 
     worked = tarsim.solve(tarsim.load(name))
     fig = worked.figures["loads"]

@@ -35,7 +35,7 @@ from tarsim.constructions.forces.polygons import drawn_forces
 from tarsim.constructions.reference import solver
 from tarsim.constructions.reference.kinetostatics import balance, world_point
 from tarsim.exercises.cli import cli
-from tarsim.exercises.exercise_file import parse_exercise
+from tarsim.exercises.linkages.exercise_file import parse_exercise
 from tests.random_loads import energy_torque, oracle
 
 LEVER = Path(__file__).parent / "data" / "shaper-lever-at-its-extreme.toml"

@@ -19,8 +19,8 @@ from tarsim.constructions.gears.train import Gear, GearTrain, Mesh
 from tarsim.constructions.reference.willis import willis_speeds
 from tarsim.exercises.catalog import bundled, load
 from tarsim.exercises.cli import cli
-from tarsim.exercises.train_file import parse_train
-from tarsim.exercises.train_solution import solve_train
+from tarsim.exercises.gears.train_file import parse_train
+from tarsim.exercises.gears.train_solution import solve_train
 
 F = Fraction
 

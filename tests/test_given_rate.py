@@ -9,8 +9,8 @@ import pytest
 
 from tarsim.constructions.errors import TarsimError
 from tarsim.exercises.catalog import load, resolve
-from tarsim.exercises.exercise_file import parse_exercise
-from tarsim.exercises.solution import solve_exercise
+from tarsim.exercises.linkages.exercise_file import parse_exercise
+from tarsim.exercises.linkages.solution import solve_exercise
 
 SHAPER = resolve("hinkle-slider-crank").read_text(encoding="utf-8")
 

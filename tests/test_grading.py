@@ -21,12 +21,12 @@ import tarsim
 from tarsim.constructions.errors import InputError
 from tarsim.exercises.catalog import resolve
 from tarsim.exercises.cli import cli
-from tarsim.exercises.exercise_file import parse_exercise
+from tarsim.exercises.linkages.exercise_file import parse_exercise
 from tarsim.exercises.grading.batch import folder_for
 from tarsim.exercises.grading.drawing import parse_drawing
 from tarsim.exercises.grading.grade import grade
 from tarsim.exercises.grading.polygon import read_label
-from tarsim.exercises.solution import solve_positions
+from tarsim.exercises.linkages.solution import solve_positions
 from tests.drawings import Style, drawing, polygon_of
 
 SHAPER = tarsim.load("crank-shaper")

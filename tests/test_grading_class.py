@@ -40,7 +40,7 @@ from tarsim.exercises.grading.grade import Grade, Item
 from tarsim.exercises.grading.overlay import overlay_svg, sans_width
 from tarsim.exercises.grading.report import CLASS_FILES
 from tarsim.exercises.grading.roster import Pattern, Student
-from tarsim.exercises.solution import solve_positions
+from tarsim.exercises.linkages.solution import solve_positions
 from tarsim.graphics.export import MANIFEST, cairo_missing
 from tests.drawings import Style, drawing
 

@@ -26,11 +26,11 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 import grading_corpus as corpus  # noqa: E402
 from loop_kinematics import read_exercise, solve  # noqa: E402
 
-from tarsim.constructions.acceleration_polygon import drawn_acceleration_polygon  # noqa: E402
-from tarsim.constructions.velocity_polygon import drawn_velocity_polygon  # noqa: E402
+from tarsim.constructions.linkages.acceleration_polygon import drawn_acceleration_polygon  # noqa: E402
+from tarsim.constructions.linkages.velocity_polygon import drawn_velocity_polygon  # noqa: E402
 from tarsim.exercises.catalog import load  # noqa: E402
-from tarsim.exercises.results_json import results_document  # noqa: E402
-from tarsim.exercises.solution import solve_positions  # noqa: E402
+from tarsim.exercises.linkages.results_json import results_document  # noqa: E402
+from tarsim.exercises.linkages.solution import solve_positions  # noqa: E402
 
 CLASS = Path(__file__).resolve().parent / "data" / "grading" / "class"
 NAMES = [name for name, _ in corpus.EXERCISES]

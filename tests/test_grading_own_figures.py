@@ -16,12 +16,12 @@ from __future__ import annotations
 import pytest
 
 import tarsim
-from tarsim.constructions.acceleration_polygon import drawn_acceleration_polygon
+from tarsim.constructions.linkages.acceleration_polygon import drawn_acceleration_polygon
 from tarsim.constructions.narration import speaking
-from tarsim.constructions.velocity_polygon import drawn_velocity_polygon
+from tarsim.constructions.linkages.velocity_polygon import drawn_velocity_polygon
 from tarsim.exercises.catalog import everything
 from tarsim.exercises.grading.grade import grade
-from tarsim.exercises.solution_files import solve_worked
+from tarsim.exercises.linkages.solution_files import solve_worked
 
 WORKED = ("crank-shaper", "inverted-slider-crank", "klein-slider-crank",
           "piston-driven-slider-crank", "rolling-wheel", "wheel-driven-slider",

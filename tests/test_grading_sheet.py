@@ -19,7 +19,7 @@ import tarsim
 from tarsim.exercises.grading.drafting import DRAFTING, tolerance
 from tarsim.exercises.grading.grade import grade
 from tarsim.exercises.grading.labels import read_names, read_centre
-from tarsim.exercises.solution import solve_positions
+from tarsim.exercises.linkages.solution import solve_positions
 from tests.drawings import Style, centres_drawing, drawing
 
 FOUR_BAR = tarsim.load("four-bar")
@@ -107,7 +107,7 @@ def test_a_table_and_a_drawing_are_held_to_one_tolerance(tmp_path):
     m/s. The drawing at 400 mm per m/s and the table at the exercise's scale give one
     tolerance in m/s; it is at least the pen's and within the pen and set square over the
     lines' crossing."""
-    from tarsim.constructions.velocity_polygon import drawn_velocity_polygon
+    from tarsim.constructions.linkages.velocity_polygon import drawn_velocity_polygon
 
     sol = solve_positions(FOUR_BAR)[0]
     g, items = _graded(tmp_path, drawing(sol, Style(scale=400.0)), FOUR_BAR)
@@ -136,7 +136,7 @@ def test_a_rate_in_a_table_is_held_to_the_pen_on_the_velocity_it_is_read_from(
     """ω4 is read off the polygon as V_B/O4B: it is held to the tolerance of that vector
     drawn at the exercise's scale (100 mm for the longest tip, as the four-bar states no
     scale), over ω4's conditioning; half of it passes and one and a half fails."""
-    from tarsim.constructions.velocity_polygon import drawn_velocity_polygon
+    from tarsim.constructions.linkages.velocity_polygon import drawn_velocity_polygon
 
     sol = solve_positions(FOUR_BAR)[0]
     q = sol.quantities["omega4"]

@@ -20,7 +20,7 @@ from click.testing import CliRunner
 import tarsim
 from tarsim.constructions.errors import TarsimError
 from tarsim.exercises.cli import cli
-from tarsim.exercises.mechanism_file import MOST_POINTS
+from tarsim.exercises.linkages.mechanism_file import MOST_POINTS
 from tarsim.exercises.toml_source import MOST_BYTES
 from tests.random_mechanisms import HOSTILE
 

@@ -20,8 +20,8 @@ from hypothesis import strategies as st
 
 from tarsim.constructions.errors import InputError
 from tarsim.exercises.catalog import bundled
-from tarsim.exercises.train_file import parse_train
-from tarsim.exercises.train_solution import solve_train
+from tarsim.exercises.gears.train_file import parse_train
+from tarsim.exercises.gears.train_solution import solve_train
 
 PAIR = Path(bundled("gears")["involute-pair"]).read_text(encoding="utf-8")
 # module 10 mm, 20 and 40 teeth at 20°: base radii 93.97 and 187.94 mm, addendum radii 110

@@ -31,8 +31,8 @@ from tarsim.constructions.model import Drive
 from tarsim.constructions.reference import solver
 from tarsim.constructions.reference.kinetostatics import balance, pin_couples, power_torque
 from tarsim.exercises.catalog import bundled, load
-from tarsim.exercises.exercise_file import parse_exercise
-from tarsim.exercises.mechanism_file import parse_mechanism
+from tarsim.exercises.linkages.exercise_file import parse_exercise
+from tarsim.exercises.linkages.mechanism_file import parse_mechanism
 from tests.random_loads import generate as loads_case, run_case as run_loads_case
 
 ENGINE = """\

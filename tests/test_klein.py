@@ -11,7 +11,7 @@ import pytest
 
 from tarsim.constructions.errors import TarsimError
 from tarsim.exercises.catalog import load
-from tarsim.exercises.solution import solve_exercise
+from tarsim.exercises.linkages.solution import solve_exercise
 
 
 def piston(r: float, l_: float, theta: float, w: float) -> tuple[float, float]:

@@ -19,8 +19,8 @@ from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
 from tarsim.constructions.gears.kutzbach import carrier_radii, undrawable
-from tarsim.exercises.train_file import parse_train
-from tarsim.exercises.train_solution import solve_train
+from tarsim.exercises.gears.train_file import parse_train
+from tarsim.exercises.gears.train_solution import solve_train
 from tests.random_trains import build, oracle, train_toml
 
 RPM = 2 * math.pi / 60

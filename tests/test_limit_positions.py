@@ -18,14 +18,15 @@ from hypothesis import strategies as st
 
 from tarsim.constructions.reference.limits import limit_reference
 from tarsim.constructions.errors import InputError, TarsimError
-from tarsim.constructions.limit_positions import draw_limit_positions, drawn_limits, limit_kind
+from tarsim.constructions.linkages.limit_positions import (draw_limit_positions, drawn_limits,
+                                                           limit_kind)
 from tarsim.constructions.reference.rotatability import (class_by_rotation, length_range,
                                                          length_range_by_rotation)
 from tarsim.exercises.catalog import resolve
-from tarsim.exercises.exercise_file import load_exercise, parse_exercise
-from tarsim.exercises.solution import solve_overall
+from tarsim.exercises.linkages.exercise_file import load_exercise, parse_exercise
+from tarsim.exercises.linkages.solution import solve_overall
 from tarsim.constructions.record import Slice
-from tarsim.graphics.scene import draw_scene
+from tarsim.graphics.linkages.scene import draw_scene
 from tests.common import badge_numbers, four_bar_toml
 
 SLIDER_CRANK = """
@@ -284,7 +285,7 @@ def test_solution_pdf_has_a_page_per_figure(tmp_path):
     pytest.importorskip("cairocffi")
     from pypdf import PdfReader
 
-    from tarsim.exercises.solution_files import solve_worked
+    from tarsim.exercises.linkages.solution_files import solve_worked
     worked = solve_worked(load_exercise(resolve("slotted-lever-p37")))
     worked.write(tmp_path)
     files = worked.files()

@@ -1,4 +1,4 @@
-"""The space diagram with its loads (graphics/loads_figure.py): each load an arrow from where
+"""The space diagram with its loads (graphics/forces/loads_figure.py): each load an arrow from where
 it acts, and each inertia force drawn a second time as the one force that does the work of
 it and its couple, h = I·α/(m·a_G) off G; a load or an offset force that would stand beyond
 the frame a scene grows to is named under the figure instead of stretching the page to reach
@@ -76,7 +76,7 @@ def test_a_force_far_off_its_link_is_named_under_the_drawing():
     the page 100 times. It is named under the figure, and the figure, its force scale and
     its sheet are the bundled four-bar's own."""
     from tarsim.exercises.catalog import bundled
-    from tarsim.exercises.exercise_file import parse_exercise
+    from tarsim.exercises.linkages.exercise_file import parse_exercise
 
     text = Path(bundled("forces")["four-bar-forces"]).read_text(encoding="utf-8")
     far = text.replace("[[couple]]", '[[force]]\nlink = 2\nname = "P"\npoint = [30000, 0]\n'

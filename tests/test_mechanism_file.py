@@ -10,7 +10,7 @@ import math
 import pytest
 
 from tarsim.constructions.errors import InputError, TarsimError
-from tarsim.exercises.mechanism_file import load_mechanism, parse_mechanism
+from tarsim.exercises.linkages.mechanism_file import load_mechanism, parse_mechanism
 
 FILE = "bench.toml"
 

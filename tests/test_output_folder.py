@@ -15,8 +15,7 @@ from click.testing import CliRunner
 
 from tarsim.exercises.cli import cli
 from tarsim.graphics import atomic_files
-from tarsim.graphics.export import (MANIFEST, RenderError, check_folder, output_folder,
-                                    write_folder)
+from tarsim.graphics.export import MANIFEST, RenderError, check_folder, output_folder, write_folder
 
 FIRST = {"centres.svg": "<svg>first</svg>", "steps.md": "# first\n", "results.json": "{}\n",
          "centres.pdf": b"%PDF-first"}
@@ -383,7 +382,7 @@ def test_output_folder_removes_what_it_made_when_the_body_fails(tmp_path):
 @pytest.fixture
 def no_solve(monkeypatch):
     """Make solving or sweeping fail loudly: the folder must be refused before either."""
-    from tarsim.exercises import solution_files, sweep
+    from tarsim.exercises.linkages import solution_files, sweep
 
     def called(*args, **kwargs):
         raise AssertionError("the solve ran before the folder was checked")

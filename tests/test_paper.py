@@ -12,7 +12,7 @@ import pytest
 
 from tarsim.constructions.errors import InputError
 from tarsim.exercises.catalog import bundled, load
-from tarsim.exercises.solution_files import solve_worked
+from tarsim.exercises.linkages.solution_files import solve_worked
 from tarsim.graphics.figure import Figure, Text
 from tarsim.graphics.paper import PAPERS, on_sheet, paper
 from tests.test_cli import run

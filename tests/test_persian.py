@@ -81,7 +81,7 @@ def test_digits_latin_and_a_files_lang(tmp_path):
     """--digits latin keeps ASCII digits in the Persian text; lang = "fa" in a file asks for
     Persian without --lang; an unknown lang is refused at its line."""
     from tarsim.exercises.catalog import resolve
-    from tarsim.exercises.exercise_file import parse_exercise
+    from tarsim.exercises.linkages.exercise_file import parse_exercise
 
     out = tmp_path / "latn"
     result = CliRunner().invoke(cli, ["solve", "four-bar", "--lang", "fa", "--digits", "latin",
@@ -117,10 +117,10 @@ def test_a_chapters_persian_steps_say_their_results_in_persian(name):
     import re
 
     from tarsim.constructions.narration import speaking
-    from tarsim.exercises.balance_solution import solve_balance
-    from tarsim.exercises.cam_solution import solve_cam
+    from tarsim.exercises.balancing.balance_solution import solve_balance
+    from tarsim.exercises.cams.cam_solution import solve_cam
     from tarsim.exercises.catalog import load
-    from tarsim.exercises.train_solution import solve_train
+    from tarsim.exercises.gears.train_solution import solve_train
 
     ex = load(name)
     solve = {"CamExercise": solve_cam, "BalanceExercise": solve_balance,
@@ -142,7 +142,7 @@ def test_a_persian_kutzbach_diagram_gives_each_omega_in_persian(name):
     train's table and scale bars give theirs."""
     from tarsim.constructions.narration import speaking
     from tarsim.exercises.catalog import load
-    from tarsim.exercises.train_solution import solve_train
+    from tarsim.exercises.gears.train_solution import solve_train
 
     with speaking("fa"):
         fig = solve_train(load(name)).figures["kutzbach"]

@@ -18,7 +18,7 @@ import pytest
 
 from tarsim.constructions.narration import speaking
 from tarsim.exercises.catalog import load
-from tarsim.exercises.solution_files import solve_worked
+from tarsim.exercises.linkages.solution_files import solve_worked
 from tarsim.graphics.export import svg_to
 from tarsim.graphics.figure import Figure, Text, text_width
 from tarsim.graphics.rtl import is_rtl

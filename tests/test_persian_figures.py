@@ -17,8 +17,8 @@ from tarsim.constructions.narration import speaking, spoken, unit_words, words
 from tarsim.constructions.phrases import fa
 from tarsim.exercises.catalog import load
 from tarsim.exercises.cli import cli
-from tarsim.exercises.exercise_file import parse_exercise
-from tarsim.exercises.solution_files import solve_worked
+from tarsim.exercises.linkages.exercise_file import parse_exercise
+from tarsim.exercises.linkages.solution_files import solve_worked
 from tarsim.graphics.figure import Figure, Path, Text, text_width
 from tarsim.graphics.rtl import is_rtl
 from tarsim.graphics.scales import draw_caption, scale_text

@@ -1,4 +1,4 @@
-"""Velocity and acceleration polygons drawn as figures (graphics/polygon_panel.py).
+"""Velocity and acceleration polygons drawn as figures (graphics/linkages/polygon_panel.py).
 
 The checks are on what a reader with a ruler sees: the stated scale is nice and
 true (an arrow measures |V| / N cm), every arrowhead sits at its tip and points
@@ -7,7 +7,7 @@ numbers are 1..k as :meth:`Slice.numbered` counts them, a vector
 of no length is written "= 0", and the same input gives the same SVG.
 
 The acceleration polygons are built here by hand, as
-constructions/acceleration_polygon.py will record them (the ``ap:`` conventions),
+constructions/linkages/acceleration_polygon.py will record them (the ``ap:`` conventions),
 from the analytic solver's ω, α and Coriolis terms: the figure only has to draw
 them, so where their numbers come from does not matter, and they are realistic.
 Paper positions are compared to 1e-6 mm: the figure computes them in double
@@ -21,15 +21,15 @@ import pytest
 
 from tarsim.constructions import geometry as g
 from tarsim.constructions.reference import solver
-from tarsim.constructions.assembly import assemble
+from tarsim.constructions.linkages.assembly import assemble
 from tarsim.constructions.errors import TarsimError
 from tarsim.constructions.model import Drive
 from tarsim.constructions.units import Units
 from tarsim.constructions.narration import Phrase
 from tarsim.constructions.record import Construction, Panel, Role, Slice, slice
-from tarsim.constructions.velocity_polygon import draw_velocity_polygon
+from tarsim.constructions.linkages.velocity_polygon import draw_velocity_polygon
 from tarsim.graphics.figure import Circle, Path, Text
-from tarsim.graphics.polygon_panel import POLYGON_BOX, draw_polygon_panel
+from tarsim.graphics.linkages.polygon_panel import POLYGON_BOX, draw_polygon_panel
 from tarsim.graphics.svg import to_svg
 from tarsim.graphics.typeset import typeset
 from tests.common import badge_numbers, coupler_four_bar, crank_shaper

@@ -11,8 +11,8 @@ import xml.etree.ElementTree as ET
 
 import pytest
 
-from tarsim.exercises.exercise_file import parse_exercise
-from tarsim.exercises.solution_files import solve_to_files
+from tarsim.exercises.linkages.exercise_file import parse_exercise
+from tarsim.exercises.linkages.solution_files import solve_to_files
 
 SVG = "{http://www.w3.org/2000/svg}"
 SUBSCRIPT = str.maketrans("₀₁₂₃₄₅₆₇₈₉", "0123456789")

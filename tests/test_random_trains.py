@@ -18,10 +18,9 @@ from pathlib import Path
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from tarsim.exercises.train_file import parse_train
-from tarsim.exercises.train_solution import TrainSolution, solve_train
-from tests.random_trains import (FAMILIES, _body, build, generate, oracle, run_train_case,
-                                 train_toml)
+from tarsim.exercises.gears.train_file import parse_train
+from tarsim.exercises.gears.train_solution import TrainSolution, solve_train
+from tests.random_trains import FAMILIES, _body, build, generate, oracle, run_train_case, train_toml
 
 
 def ratios(speeds: dict[int, Fraction]) -> dict[tuple[int, int], Fraction]:

@@ -13,8 +13,8 @@ import pytest
 from tarsim.constructions import asks as A
 from tarsim.constructions.errors import TarsimError
 from tarsim.exercises.catalog import load
-from tarsim.exercises.solution import solve_exercise
-from tarsim.exercises.solution_files import answer_line
+from tarsim.exercises.linkages.solution import solve_exercise
+from tarsim.exercises.linkages.solution_files import answer_line
 
 ASKED = ("omega3", "omega4", "V_B", "omega4/omega2", "ma_4", "V_B/V_A", "dist_B_I13",
          "dist_A_I13", "mu")
@@ -95,7 +95,7 @@ def test_the_least_velocity_along_a_link_is_its_common_component():
 
 def test_the_rubbing_velocity_is_the_relative_omega_times_the_pin_radius():
     from tarsim.exercises.catalog import resolve
-    from tarsim.exercises.exercise_file import parse_exercise
+    from tarsim.exercises.linkages.exercise_file import parse_exercise
 
     text = resolve("four-bar").read_text(encoding="utf-8")
     text = text.replace('find = ["centres", "omega3", "omega4", "V_B"]',

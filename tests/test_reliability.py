@@ -18,8 +18,8 @@ import pytest
 import tarsim
 from tarsim.constructions.errors import InputError, TarsimError
 from tarsim.constructions.narration import fixed, significant
-from tarsim.exercises.exercise_file import MOST_TURNED, parse_exercise
-from tarsim.exercises.solution import solve_overall, solve_positions
+from tarsim.exercises.linkages.exercise_file import MOST_TURNED, parse_exercise
+from tarsim.exercises.linkages.solution import solve_overall, solve_positions
 from tests.common import four_bar_toml
 from tests.test_limit_positions import SLIDER_CRANK
 

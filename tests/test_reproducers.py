@@ -21,13 +21,13 @@ from click.testing import CliRunner
 import tarsim
 from tarsim.constructions import registry
 from tarsim.constructions.errors import AssemblyError, InputError
-from tarsim.constructions.limit_positions import draw_limit_positions
+from tarsim.constructions.linkages.limit_positions import draw_limit_positions
 from tarsim.constructions.model import Drive
 from tarsim.constructions.reference.limits import limit_reference
 from tarsim.constructions.reference import solver
 from tarsim.exercises.catalog import bundled, load
 from tarsim.exercises.cli import cli
-from tarsim.exercises.solution import solve_overall
+from tarsim.exercises.linkages.solution import solve_overall
 
 HERE = Path(__file__).parent / "reproducers"
 
@@ -112,7 +112,7 @@ def test_slow_sweep_rhombus_far(monkeypatch):
     # A rhombus (every link 100 mm), 1 km from the origin, on the branch where its rocker
     # stands still: ω4 is 0, or ω2 where it has folded over into a parallelogram, and its
     # rounding about 0 once sent the sweep bisecting 218 "reversals" of 1e-15 rad/s.
-    from tarsim.exercises import sweep
+    from tarsim.exercises.linkages import sweep
     calls = []
     real = sweep.solve_turn
     monkeypatch.setattr(sweep, "solve_turn", lambda *a, **k: calls.append(1) or real(*a, **k))

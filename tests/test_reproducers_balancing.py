@@ -20,9 +20,9 @@ from click.testing import CliRunner
 
 import tarsim
 from tarsim.constructions.errors import InputError
-from tarsim.exercises.balance_solution import solve_balance
+from tarsim.exercises.balancing.balance_solution import solve_balance
 from tarsim.exercises.cli import cli
-from tarsim.exercises.rotor_file import parse_balance
+from tarsim.exercises.balancing.rotor_file import parse_balance
 
 HERE = Path(__file__).parent / "reproducers"
 

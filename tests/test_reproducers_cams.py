@@ -26,7 +26,7 @@ from tarsim.constructions.cams.rounding import join_bound, lift_bounds
 from tarsim.constructions.cams.survey import survey
 from tarsim.constructions.reference.cam_laws import LAWS
 from tarsim.constructions.reference.cam_profile import follower_motion
-from tarsim.exercises.cam_solution import solve_cam
+from tarsim.exercises.cams.cam_solution import solve_cam
 from tarsim.exercises.cli import cli
 from tests.random_cams import extremes
 

@@ -21,7 +21,7 @@ import pytest
 
 from tarsim.constructions.asks import parse_ask
 from tarsim.exercises.catalog import bundled
-from tarsim.exercises.results_json import results_json
+from tarsim.exercises.linkages.results_json import results_json
 
 IDS = sorted(bundled())
 CHECK_KEYS = {"reference", "rel_error", "tolerance", "conditioning", "passed", "method"}

@@ -9,17 +9,17 @@ from dataclasses import replace
 
 import pytest
 
-from tarsim.constructions.assembly import assemble
-from tarsim.constructions.assembly_record import point_ref
+from tarsim.constructions.linkages.assembly import assemble
+from tarsim.constructions.linkages.assembly_record import point_ref
 from tarsim.constructions.errors import TarsimError
 from tarsim.constructions.model import Drive
 from tarsim.constructions.narration import narrate
 from tarsim.constructions.reference import solver
-from tarsim.constructions.velocity_by_components import velocity_by_components
-from tarsim.constructions.velocity_polygon import draw_velocity_polygon
+from tarsim.constructions.linkages.velocity_by_components import velocity_by_components
+from tarsim.constructions.linkages.velocity_polygon import draw_velocity_polygon
 from tarsim.exercises.catalog import bundled, load
-from tarsim.exercises.mechanism_file import load_mechanism
-from tarsim.exercises.solution_files import solve_worked
+from tarsim.exercises.linkages.mechanism_file import load_mechanism
+from tarsim.exercises.linkages.solution_files import solve_worked
 
 R = 0.150                                  # the wheel's radius (m)
 ANGLES = [math.radians(d) for d in (-150, -60, 0, 45, 90, 200, 270)]
@@ -95,7 +95,7 @@ def test_a_long_note_wraps_instead_of_widening_the_figure():
 
 
 def test_a_rolling_input_has_no_limit_positions():
-    from tarsim.constructions.limit_positions import draw_limit_positions
+    from tarsim.constructions.linkages.limit_positions import draw_limit_positions
 
     with pytest.raises(TarsimError, match="wheel rolling on the frame, not a crank"):
         draw_limit_positions(wheel(1.0))

@@ -10,7 +10,7 @@ from dataclasses import replace
 import pytest
 
 from tarsim.exercises.catalog import load
-from tarsim.exercises.solution import solve_exercise
+from tarsim.exercises.linkages.solution import solve_exercise
 
 ASKED = ("omega4", "alpha4", "V_B", "V_M", "A_B", "A_M")
 
@@ -38,7 +38,7 @@ def test_the_wheels_centre_moves_as_rolling_says(wheel):
 
 
 def test_the_contact_point_accelerates_toward_the_centre(wheel):
-    from tarsim.constructions.acceleration_polygon import drawn_acceleration_polygon
+    from tarsim.constructions.linkages.acceleration_polygon import drawn_acceleration_polygon
 
     ap = drawn_acceleration_polygon(wheel.work)
     w = wheel.quantities["omega4"].value["value"]

@@ -15,9 +15,9 @@ from tarsim.constructions.errors import InputError
 from tarsim.constructions.model import Drive
 from tarsim.constructions.reference import solver
 from tarsim.exercises.catalog import bundled
-from tarsim.exercises.mechanism_file import load_mechanism
-from tarsim.exercises.solution_files import solve_worked
-from tarsim.exercises.exercise_file import load_exercise
+from tarsim.exercises.linkages.mechanism_file import load_mechanism
+from tarsim.exercises.linkages.solution_files import solve_worked
+from tarsim.exercises.linkages.exercise_file import load_exercise
 
 DATA = Path(__file__).parent / "data"
 ANGLES = [math.radians(d) for d in (-170, -90, 0, 30, 135, 179)]

@@ -17,7 +17,7 @@ from tarsim.exercises.grading.matching import MAX_NAMES, NEAREST, _near, match
 from tarsim.exercises.grading.polygon import read_label
 from tarsim.exercises.grading.report import grade_files
 from tarsim.exercises.grading.safe_svg import MAX_DEPTH, MAX_ELEMENTS, reduce_svg
-from tarsim.exercises.solution import solve_positions
+from tarsim.exercises.linkages.solution import solve_positions
 from tests.random_drawings import nonfinite_in
 
 SHAPER = tarsim.load("crank-shaper")

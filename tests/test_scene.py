@@ -15,19 +15,19 @@ import pytest
 
 from tarsim.constructions.narration import narrate
 from tarsim.constructions.reference.solver import solve
-from tarsim.constructions.assembly import assemble
+from tarsim.constructions.linkages.assembly import assemble
 from tarsim.constructions.errors import TarsimError
-from tarsim.constructions.kennedy import locate_centres
+from tarsim.constructions.linkages.kennedy import locate_centres
 from tarsim.constructions.record import Role, Slice, slice
-from tarsim.constructions.velocity_by_centres import velocity_by_radius_rotation
+from tarsim.constructions.linkages.velocity_by_centres import velocity_by_radius_rotation
 from tarsim.exercises.catalog import bundled
-from tarsim.exercises.mechanism_file import load_mechanism
-from tarsim.graphics.circle_diagram import draw_circle_diagram, triangle_text
-from tarsim.graphics.diagram import draw_kinematic_diagram
+from tarsim.exercises.linkages.mechanism_file import load_mechanism
+from tarsim.graphics.linkages.circle_diagram import draw_circle_diagram, triangle_text
+from tarsim.graphics.linkages.diagram import draw_kinematic_diagram
 from tarsim.graphics.figure import Figure, Path, Text
 from tarsim.constructions.scales import choose_scales, velocity_per_cm
-from tarsim.graphics.scene import draw_scene
-from tarsim.graphics.scene_lines import line_style
+from tarsim.graphics.linkages.scene import draw_scene
+from tarsim.graphics.linkages.scene_lines import line_style
 from tarsim.graphics.svg import to_svg
 from tarsim.graphics.typeset import typeset
 from tests.common import four_bar, offset_slider_crank

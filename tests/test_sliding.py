@@ -12,8 +12,8 @@ import pytest
 from tarsim.constructions import asks as A
 from tarsim.constructions.errors import TarsimError
 from tarsim.exercises.catalog import load
-from tarsim.exercises.solution import solve_positions
-from tarsim.exercises.solution_files import solve_worked
+from tarsim.exercises.linkages.solution import solve_positions
+from tarsim.exercises.linkages.solution_files import solve_worked
 
 SLIDING = ("V_slide_A", "A_slide_A", "V_slide_B", "A_slide_B")
 

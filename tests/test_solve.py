@@ -13,8 +13,8 @@ from click.testing import CliRunner
 
 from tarsim.constructions.reference import solver
 from tarsim.exercises.cli import cli
-from tarsim.exercises.exercise_file import parse_exercise
-from tarsim.exercises.solution import solve_exercise
+from tarsim.exercises.linkages.exercise_file import parse_exercise
+from tarsim.exercises.linkages.solution import solve_exercise
 from tests.common import four_bar_toml
 
 ASK = '\n[ask]\nfind = {find}\nmethods = {methods}\n'
@@ -179,7 +179,7 @@ def test_asking_for_one_velocity_draws_no_unused_centres(tmp_path):
 
 def test_bundled_examples_solve_and_check():
     from tarsim.exercises.catalog import bundled
-    from tarsim.exercises.exercise_file import load_exercise
+    from tarsim.exercises.linkages.exercise_file import load_exercise
     for name, path in bundled().items():
         sol = solve_exercise(load_exercise(path, name))
         assert sol.failures == [], name
@@ -191,8 +191,8 @@ def test_a_leftward_vector_reads_180_degrees_in_both_columns():
     # Whitworth's ram acceleration points left; the analytic one has a y of rounding
     # noise below zero, which atan2 would give as −180°.
     from tarsim.exercises.catalog import resolve
-    from tarsim.exercises.exercise_file import load_exercise
-    from tarsim.exercises.solution_files import solve_to_files
+    from tarsim.exercises.linkages.exercise_file import load_exercise
+    from tarsim.exercises.linkages.solution_files import solve_to_files
     _, files = solve_to_files(load_exercise(resolve("whitworth")))
     row = next(r for r in files["steps.md"].splitlines() if r.startswith("| A_C |"))
     assert row.count("211.482 mm/s² at 180°") == 2

@@ -13,8 +13,8 @@ from click.testing import CliRunner
 
 from tarsim.constructions.reference import solver
 from tarsim.exercises.cli import cli
-from tarsim.exercises.exercise_file import parse_exercise
-from tarsim.exercises.solution import solve_positions
+from tarsim.exercises.linkages.exercise_file import parse_exercise
+from tarsim.exercises.linkages.solution import solve_positions
 from tarsim.constructions.narration import narrate
 from tests.common import four_bar_toml
 

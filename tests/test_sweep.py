@@ -17,9 +17,9 @@ from click.testing import CliRunner
 from tarsim.constructions.errors import AssemblyError, InputError
 from tarsim.exercises.catalog import resolve
 from tarsim.exercises.cli import cli
-from tarsim.exercises.exercise_file import load_exercise
-from tarsim.exercises.sweep import pick_output, sweep_exercise
-from tarsim.exercises.sweep_files import sweep_to_files
+from tarsim.exercises.linkages.exercise_file import load_exercise
+from tarsim.exercises.linkages.sweep import pick_output, sweep_exercise
+from tarsim.exercises.linkages.sweep_files import sweep_to_files
 from tarsim.graphics.plot import PlotMark, Series, draw_line_plot, nice_ticks
 from tests.common import four_bar_toml
 
@@ -160,7 +160,7 @@ def test_a_marks_label_keeps_inside_the_ticks_and_its_leader_off_the_curve(shape
     label or leader crosses the curve."""
     from shapely.geometry import LineString, box
 
-    from tarsim.exercises.sweep_files import sweep_figures
+    from tarsim.exercises.linkages.sweep_files import sweep_figures
     from tarsim.graphics.figure import Path, Text
     from tarsim.graphics.plot import _MARK_TEXT, _TICK
 
@@ -213,7 +213,7 @@ def test_a_link_that_turns_fully_is_shown_in_one_turn():
 
 
 def _exercise_text(text):
-    from tarsim.exercises.exercise_file import parse_exercise
+    from tarsim.exercises.linkages.exercise_file import parse_exercise
     return parse_exercise(text, "m.toml", "m")
 
 
@@ -370,7 +370,7 @@ def test_an_input_given_by_another_member_is_swept_at_its_converted_rates():
 def test_a_sweep_whose_construction_leaves_its_curve_exits_3(monkeypatch, tmp_path):
     from dataclasses import replace
 
-    from tarsim.exercises import sweep as sweep_module
+    from tarsim.exercises.linkages import sweep as sweep_module
 
     real = sweep_module.sweep_exercise
 

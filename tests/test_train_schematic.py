@@ -15,10 +15,10 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from tarsim.exercises.catalog import bundled
-from tarsim.exercises.train_file import parse_train
-from tarsim.exercises.train_solution import solve_train
+from tarsim.exercises.gears.train_file import parse_train
+from tarsim.exercises.gears.train_solution import solve_train
 from tarsim.graphics.figure import Path as FPath
-from tarsim.graphics.train_schematic import _axes
+from tarsim.graphics.gears.train_schematic import _axes
 from tests.random_trains import build, oracle, train_toml
 from tests.test_kutzbach import TWO_SETS, train
 

@@ -10,7 +10,7 @@ from click.testing import CliRunner
 from tarsim.constructions.reference.willis import willis_speeds
 from tarsim.exercises.catalog import bundled
 from tarsim.exercises.cli import cli
-from tarsim.exercises.train_file import parse_train
+from tarsim.exercises.gears.train_file import parse_train
 
 
 def test_a_ratio_over_a_member_that_stands_still_is_refused(tmp_path):

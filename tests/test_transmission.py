@@ -21,8 +21,8 @@ from tarsim.constructions.errors import TarsimError
 from tarsim.constructions.narration import narrate
 from tarsim.constructions.reference import solver
 from tarsim.constructions.registry import CHOSEN
-from tarsim.exercises.exercise_file import parse_exercise
-from tarsim.exercises.solution import solve_exercise
+from tarsim.exercises.linkages.exercise_file import parse_exercise
+from tarsim.exercises.linkages.solution import solve_exercise
 from tests.common import four_bar_toml
 
 ASK = ('\n[ask]\nfind = ["omega4", "omega3"]\n'

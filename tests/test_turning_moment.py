@@ -28,12 +28,11 @@ from hypothesis import strategies as st
 
 import tarsim
 from tarsim.constructions.errors import InputError
-from tarsim.constructions.reference.flywheel import (fluctuation, flywheel_inertia,
-                                                     speed_fluctuation)
+from tarsim.constructions.reference.flywheel import fluctuation, flywheel_inertia, speed_fluctuation
 from tarsim.exercises.catalog import bundled
 from tarsim.exercises.cli import cli
-from tarsim.exercises.exercise_file import load_exercise, parse_exercise
-from tarsim.exercises.turning_moment import turning_moment
+from tarsim.exercises.linkages.exercise_file import load_exercise, parse_exercise
+from tarsim.exercises.forces.turning_moment import turning_moment
 
 FORCES = {name: Path(path) for name, path in bundled("forces").items()}
 SHAPER = FORCES["crank-shaper-forces"]

@@ -24,8 +24,8 @@ from hypothesis import strategies as st
 from tarsim.constructions.checks import CEILING, EPS, Quantity
 from tarsim.constructions.errors import TarsimError
 from tarsim.constructions.model import Mechanism
-from tarsim.exercises.exercise_file import load_exercise
-from tarsim.exercises.solution import solve_positions
+from tarsim.exercises.linkages.exercise_file import load_exercise
+from tarsim.exercises.linkages.solution import solve_positions
 
 DATA = Path(__file__).parent / "data"
 CENTRE_METHODS = ("parallel-line", "radius-rotation")

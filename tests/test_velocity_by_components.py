@@ -1,4 +1,4 @@
-"""Velocities by components (constructions/velocity_by_components.py).
+"""Velocities by components (constructions/linkages/velocity_by_components.py).
 
 Every computed velocity is checked against the analytic solver. The tolerance is
 relative to |V_input|: 1e-9 on well-conditioned positions, widened to
@@ -17,17 +17,17 @@ from hypothesis import strategies as st
 
 from tarsim.constructions.reference import solver
 from tarsim.constructions import geometry as g
-from tarsim.constructions.assembly import assemble
-from tarsim.constructions.assembly_record import Assembly
+from tarsim.constructions.linkages.assembly import assemble
+from tarsim.constructions.linkages.assembly_record import Assembly
 from tarsim.constructions.errors import AssemblyError, TarsimError
 from tarsim.constructions.joints import Slide, SlideKind
 from tarsim.constructions.model import Drive, Link, Mechanism
 from tarsim.constructions.units import Units
 from tarsim.constructions.record import Role
 from tarsim.constructions.record import slice as backward_slice
-from tarsim.constructions.velocity_by_components import velocity_by_components
+from tarsim.constructions.linkages.velocity_by_components import velocity_by_components
 from tarsim.exercises.catalog import bundled
-from tarsim.exercises.mechanism_file import load_mechanism, parse_mechanism
+from tarsim.exercises.linkages.mechanism_file import load_mechanism, parse_mechanism
 from tarsim.constructions.narration import narrate
 from tests.common import (coupler_four_bar, crank_shaper, four_bar, four_bar_toml,
                           offset_slider_crank, scotch_yoke, slotted_lever_p37)

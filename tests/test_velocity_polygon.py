@@ -1,4 +1,4 @@
-"""The velocity polygon by relative velocities (constructions/velocity_polygon.py).
+"""The velocity polygon by relative velocities (constructions/linkages/velocity_polygon.py).
 
 Every tip and every ω is checked against the independent analytic solver. The
 tolerance is 1e-9 relative to max(|reference|, |V_input|) for velocities and to
@@ -16,15 +16,15 @@ from pathlib import Path
 import pytest
 
 from tarsim.constructions.reference import solver
-from tarsim.constructions.assembly import assemble
+from tarsim.constructions.linkages.assembly import assemble
 from tarsim.constructions.errors import AssemblyError, TarsimError
 from tarsim.constructions.model import Drive
 from tarsim.constructions.record import Panel, Role, replay
 from tarsim.constructions.scales import nice
-from tarsim.constructions.polygon_walk import Polygon
-from tarsim.constructions.velocity_polygon import draw_velocity_polygon
+from tarsim.constructions.linkages.polygon_walk import Polygon
+from tarsim.constructions.linkages.velocity_polygon import draw_velocity_polygon
 from tarsim.exercises.catalog import bundled
-from tarsim.exercises.mechanism_file import load_mechanism
+from tarsim.exercises.linkages.mechanism_file import load_mechanism
 from tarsim.constructions.narration import narrate
 from tests.common import (coupler_four_bar, crank_shaper, four_bar, offset_slider_crank,
                           scotch_yoke, slotted_lever_p37)

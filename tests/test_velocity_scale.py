@@ -11,7 +11,7 @@ from hypothesis import strategies as st
 
 from tarsim.constructions.scales import SHORTEST_MM, nice, readable_per_cm
 from tarsim.exercises.catalog import load
-from tarsim.exercises.solution_files import solve_worked
+from tarsim.exercises.linkages.solution_files import solve_worked
 from tarsim.graphics.figure import Path
 
 speeds = st.floats(1e-3, 1e4)

@@ -19,10 +19,10 @@ from click.testing import CliRunner
 
 from tarsim.exercises.catalog import load
 from tarsim.exercises.cli import cli
-from tarsim.exercises.exercise_file import parse_exercise
-from tarsim.exercises.results_json import results_json
-from tarsim.exercises.solution import solve_positions
-from tarsim.exercises.view import view_data
+from tarsim.exercises.linkages.exercise_file import parse_exercise
+from tarsim.exercises.linkages.results_json import results_json
+from tarsim.exercises.linkages.solution import solve_positions
+from tarsim.exercises.linkages.view import view_data
 from tarsim.graphics.view_page import ViewPage, view_html
 
 from tests.common import four_bar_toml

@@ -1,4 +1,4 @@
-"""A worked-solution page (graphics/worked_page.py): panels at true scale, then the results.
+"""A worked-solution page (graphics/linkages/worked_page.py): panels at true scale, then the results.
 
 What matters to a reader with a ruler: every panel on the page is its figure
 moved, not scaled (so its scale bar still measures true), the panels and the
@@ -10,15 +10,15 @@ import math
 
 import pytest
 
-from tarsim.constructions.assembly import assemble
+from tarsim.constructions.linkages.assembly import assemble
 from tarsim.constructions.errors import TarsimError
 from tarsim.constructions.record import Panel, Slice
-from tarsim.constructions.velocity_polygon import draw_velocity_polygon
+from tarsim.constructions.linkages.velocity_polygon import draw_velocity_polygon
 from tarsim.graphics.figure import Circle, Figure, Path, Text
-from tarsim.graphics.polygon_panel import draw_polygon_panel
-from tarsim.graphics.scene import draw_scene
+from tarsim.graphics.linkages.polygon_panel import draw_polygon_panel
+from tarsim.graphics.linkages.scene import draw_scene
 from tarsim.graphics.svg import to_svg
-from tarsim.graphics.worked_page import A3, compose_worked_page
+from tarsim.graphics.linkages.worked_page import A3, compose_worked_page
 from tests.common import crank_shaper
 from tests.test_polygon_panel import SHAPER_T, boxes_overlap, draw_acceleration, shaper_acceleration
 

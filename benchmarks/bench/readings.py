@@ -26,21 +26,21 @@ import time
 from collections.abc import Callable
 from dataclasses import dataclass, field
 
-from tarsim.constructions.acceleration_polygon import draw_acceleration_polygon
-from tarsim.constructions.assembly import assemble
-from tarsim.constructions.assembly_record import point_ref
+from tarsim.constructions.linkages.acceleration_polygon import draw_acceleration_polygon
+from tarsim.constructions.linkages.assembly import assemble
+from tarsim.constructions.linkages.assembly_record import point_ref
 from tarsim.constructions.errors import TarsimError
-from tarsim.constructions.kennedy import locate_centres
-from tarsim.constructions.limit_positions import draw_limit_positions, limit_kind
+from tarsim.constructions.linkages.kennedy import locate_centres
+from tarsim.constructions.linkages.limit_positions import draw_limit_positions, limit_kind
 from tarsim.constructions.model import Mechanism
 from tarsim.constructions.reference import solver
 from tarsim.constructions.reference.centres import instant_centre, shared_pin
 from tarsim.constructions.reference.limits import limit_reference
 from tarsim.constructions.scales import nice
-from tarsim.constructions.velocity_by_centres import (velocity_by_parallel_lines,
-                                                      velocity_by_radius_rotation)
-from tarsim.constructions.velocity_by_components import velocity_by_components
-from tarsim.constructions.velocity_polygon import draw_velocity_polygon
+from tarsim.constructions.linkages.velocity_by_centres import (velocity_by_parallel_lines,
+                                                               velocity_by_radius_rotation)
+from tarsim.constructions.linkages.velocity_by_components import velocity_by_components
+from tarsim.constructions.linkages.velocity_polygon import draw_velocity_polygon
 
 from .mpref import Unmodelled, at_angle, mp_limits, mp_solve
 from .timing import median_time

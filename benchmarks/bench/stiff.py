@@ -31,7 +31,7 @@ from tarsim.constructions.reference import solver
 
 from .mpref import Unmodelled
 from .readings import EPS, FloatReference, MpReference, Reading, error, run_method
-from tarsim.exercises.mechanism_file import parse_mechanism
+from tarsim.exercises.linkages.mechanism_file import parse_mechanism
 from tests.common import four_bar, four_bar_toml, inverted_slider_crank, offset_slider_crank
 
 __all__ = ["StiffCase", "StiffRow", "stiff_cases", "run_case", "parallel_angle", "BOUND_ULPS"]

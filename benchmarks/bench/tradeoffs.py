@@ -23,11 +23,11 @@ from pathlib import Path
 import numpy as np
 
 from tarsim.constructions import geometry as g
-from tarsim.constructions.assembly import assemble
+from tarsim.constructions.linkages.assembly import assemble
 from tarsim.constructions.reference import solver
 from tarsim.constructions.reference.limits import limit_reference
 from tarsim.constructions.reference.turn import solve_turn
-from tarsim.constructions.velocity_polygon import draw_velocity_polygon
+from tarsim.constructions.linkages.velocity_polygon import draw_velocity_polygon
 from tarsim.exercises.catalog import load
 
 from .mpref import at_angle, mp_solve
@@ -326,7 +326,7 @@ def sweep_step(out: Path, *, quick: bool = False) -> Study:
 def precision(out: Path, *, quick: bool = False) -> Study:
     """ω3 of a four-bar 1e-7 rad from its toggle: float64 (construction, solver) against
     mpmath at several digits, each against mpmath at 200 digits; error against time."""
-    from tarsim.constructions.velocity_polygon import draw_velocity_polygon as dvp
+    from tarsim.constructions.linkages.velocity_polygon import draw_velocity_polygon as dvp
     from .stiff import stiff_cases
 
     case = next(c for c in stiff_cases() if c.label == "μ → 180°, 1e-07 rad from toggle")

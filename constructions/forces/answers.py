@@ -8,7 +8,7 @@ from __future__ import annotations
 import math
 
 from .. import asks as A
-from ..acceleration_polygon import drawn_acceleration_polygon
+from ..linkages.acceleration_polygon import drawn_acceleration_polygon
 from ..checks import Answer, FigureSpec, vector_value
 from ..errors import TarsimError
 from ..joints import SlideKind

@@ -13,14 +13,14 @@ from __future__ import annotations
 import math
 
 from .. import geometry as g
-from ..acceleration_polygon import drawn_acceleration_polygon
+from ..linkages.acceleration_polygon import drawn_acceleration_polygon
 from ..checks import quiet
 from ..errors import TarsimError
 from ..loads import Loads, near_rest, near_rest_refusal
 from ..joints import SlideKind
 from ..narration import Word, phrase
 from ..record import Construction, Kind, Panel
-from ..velocity_polygon import drawn_velocity_polygon
+from ..linkages.velocity_polygon import drawn_velocity_polygon
 from .drafting import as_said
 from .groups import gain
 from .rounding import image_base, speed_rounding

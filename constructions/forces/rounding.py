@@ -20,13 +20,13 @@ import math
 from collections.abc import Callable
 
 from .. import asks as A
-from ..acceleration_polygon import drawn_acceleration_polygon
+from ..linkages.acceleration_polygon import drawn_acceleration_polygon
 from ..checks import EPS
 from ..errors import TarsimError
 from ..loads import made_of, resting_speed
 from ..joints import SlideKind
 from ..model import Mechanism
-from ..velocity_polygon import drawn_velocity_polygon
+from ..linkages.velocity_polygon import drawn_velocity_polygon
 
 __all__ = ["image_base", "load_roundings", "answer_roundings", "rate_roundings",
            "read_conditioning", "speed_rounding"]

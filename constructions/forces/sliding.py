@@ -25,7 +25,7 @@ from ..errors import TarsimError
 from ..loads import near_rest, near_rest_refusal
 from ..narration import Number, Phrase, phrase
 from ..record import Panel
-from ..velocity_polygon import drawn_velocity_polygon
+from ..linkages.velocity_polygon import drawn_velocity_polygon
 from .rounding import rate_roundings, speed_rounding
 
 __all__ = ["Slide", "dyad_slides", "lever_gain", "lever_slides", "link_rates", "pin_rests",

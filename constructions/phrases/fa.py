@@ -126,7 +126,7 @@ WORDS: dict[str, str] = {
     "The train value": "مقدار قطار", "The other common form:": "شکل رایج دیگر:",
     "The involute mesh": "درگیری اینولوتی",
     "The velocity (Kutzbach) diagram": "نمودار سرعت (کوتزباخ)",
-    # the mechanism as a whole (exercises/solution_files.py: overall_text)
+    # the mechanism as a whole (exercises/linkages/solution_files.py: overall_text)
     "crank-rocker": "لنگ - آونگ", "double-crank": "لنگ - لنگ", "double-rocker": "آونگ - آونگ",
     "triple-rocker": "سه‌آونگی", "change-point": "نقطهٔ تغییر",
     "{span} = {length} only ({kind})": "{span} تنها برابر {length} ({kind})",

@@ -1,4 +1,4 @@
-"""Persian words on the figures of balancing (graphics/balance_figures.py).
+"""Persian words on the figures of balancing (graphics/balancing/balance_figures.py).
 
 Keys are the English words as the figure code says them
 (:func:`~tarsim.constructions.narration.words`); the terms are the course notes'
@@ -57,7 +57,7 @@ WORDS: dict[str, str] = {
     "{share} of the reciprocating mass balanced by a rotating mass opposite the crank":
         "{share} از جرم رفت\u200cوبرگشتی با جرمی دوار روبه\u200cروی لنگ متعادل شده است",
     "at θ = {angle}°": "در θ = {angle} درجه",
-    # the results steps.md lists (exercises/balance_solution.py): a markdown line, where the
+    # the results steps.md lists (exercises/balancing/balance_solution.py): a markdown line, where the
     # degree sign stays by its number
     "ΣF_x = {x}ω², ΣF_y = {y}ω² (kg·m): the resultant {size} kg·m at {angle}° ({force} N at "
     "ω = {speed} rad/s)":

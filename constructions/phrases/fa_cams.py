@@ -1,4 +1,4 @@
-"""Persian words on the figures of cams (graphics/cam_layout_figure.py,
+"""Persian words on the figures of cams (graphics/cams/cam_layout_figure.py,
 displacement_figure.py) and the plots of sweeps and turning moments (graphics/plot.py).
 
 Keys are the English words as the figure code says them
@@ -10,7 +10,7 @@ Keys are the English words as the figure code says them
 from __future__ import annotations
 
 WORDS: dict[str, str] = {
-    # ----- cams: the displacement diagram (graphics/displacement_figure.py) ----------------
+    # ----- cams: the displacement diagram (graphics/cams/displacement_figure.py) ----------------
     "{name}: displacement": "{name}: نمودار جابه‌جایی",
     "cam angle across, lift up; each segment's construction":
         "زاویهٔ بادامک در راستای افقی و خیز پیرو رو به بالا؛ ترسیم هر بخش",
@@ -21,7 +21,7 @@ WORDS: dict[str, str] = {
     "displacement": "جابه‌جایی",
     "construction lines": "خطوط ترسیم",
     "ordinates": "خطوط قائم",
-    # ----- cams: the follower's motion against cam angle (exercises/cam_solution.py) ---------
+    # ----- cams: the follower's motion against cam angle (exercises/cams/cam_solution.py) ---------
     "{name}: velocity": "{name}: سرعت",
     "{name}: acceleration": "{name}: شتاب",
     "{name}: jerk": "{name}: جرک",
@@ -37,7 +37,7 @@ WORDS: dict[str, str] = {
     "ÿ jumps at θ = {angles}: the jerk is infinite there, which no curve can draw":
         "ÿ در θ = {angles} ناگهان تغییر می‌کند: جرک در این نقاط بی‌نهایت است و هیچ منحنی‌ای "
         "آن را نشان نمی‌دهد",
-    # ----- cams: the profile by inversion (graphics/cam_layout_figure.py) --------------------
+    # ----- cams: the profile by inversion (graphics/cams/cam_layout_figure.py) --------------------
     "{name}: profile": "{name}: پروفیل بادامک",
     "cam: profile": "پروفیل بادامک",
     "cam: profile (the pitch curve)": "پروفیل بادامک (همان منحنی گام)",
@@ -57,7 +57,7 @@ WORDS: dict[str, str] = {
     "make the profile":
         "زیربرش در بخش {k} از θ = {start}° تا {end}°: جاهایی که پیرو نمی‌تواند پروفیل را "
         "بسازد با دایره مشخص شده‌اند",
-    # ----- cams: the profile's table (exercises/cam_layout.py) -------------------------------
+    # ----- cams: the profile's table (exercises/cams/cam_layout.py) -------------------------------
     "{name}: pressure angle and curvature": "{name}: زاویهٔ فشار و انحنا",
     "{name}: face run and curvature": "{name}: محل تماس و انحنا",
     "station": "موقعیت",
@@ -82,7 +82,7 @@ WORDS: dict[str, str] = {
         "بادامک پادساعتگرد، e انحراف، و s₀ = √(R_p² − e²)\u200e.",
     "At a join of two segments the values are the second segment's.":
         "در محل اتصال دو بخش، مقادیر مربوط به بخش دوم است.",
-    # ----- sweeps (exercises/sweep_files.py) ---------------------------------------------------
+    # ----- sweeps (exercises/linkages/sweep_files.py) ---------------------------------------------------
     "Position of {who}{along} over one turn of {link}": "مکان {who}{along} در یک دور {link}",
     "Velocity of {who}{along} over one turn of {link}": "سرعت {who}{along} در یک دور {link}",
     "Acceleration of {who}{along} over one turn of {link}": "شتاب {who}{along} در یک دور {link}",
@@ -121,7 +121,7 @@ WORDS: dict[str, str] = {
     "rod": "میلهٔ رابط", "slotted lever": "اهرم شیاردار", "lever": "اهرم",
     "rocker": "میلهٔ خروجی", "block": "لغزنده", "slider": "لغزنده", "ram": "رام",
     "piston": "پیستون", "follower": "پیرو",
-    # ----- the turning-moment diagram (exercises/turning_moment.py) ---------------------------
+    # ----- the turning-moment diagram (exercises/forces/turning_moment.py) ---------------------------
     "Turning-moment diagram": "نمودار گشتاور چرخشی",
     "driving torque": "گشتاور محرک",
     "mean {value} {unit}": "میانگین {value} {unit}",
@@ -137,7 +137,7 @@ WORDS: dict[str, str] = {
     "input turned {sense} from θ = {angle}° (°)": "چرخش ورودی در جهت {sense} از θ = {angle}° (°)",
     "by the force polygons": "با چندضلعی‌های نیرو",
     "{name}: the driving torque, positive {sense}": "{name}: گشتاور محرک، مثبت در جهت {sense}",
-    # ----- cams: the results steps.md lists (exercises/cam_solution.py, cam_layout.py) ------
+    # ----- cams: the results steps.md lists (exercises/cams/cam_solution.py, cam_layout.py) ------
     "rise": "صعود", "return": "بازگشت",
     # the steps' small words (constructions/cams/displacement.py, inversion.py)
     "start": "ابتدای بخش", "end": "انتهای بخش",

@@ -1,4 +1,4 @@
-"""Persian words on the figures of forces (graphics/force_figure.py, free_body_figure.py,
+"""Persian words on the figures of forces (graphics/forces/force_figure.py, free_body_figure.py,
 loads_figure.py, load_marks.py).
 
 Keys are the English words as the figure code says them
@@ -9,7 +9,7 @@ Keys are the English words as the figure code says them
 from __future__ import annotations
 
 WORDS: dict[str, str] = {
-    # the turning-moment diagram (exercises/turning_moment.py)
+    # the turning-moment diagram (exercises/forces/turning_moment.py)
     "the input turning steadily at ω = {omega} {unit} (α = 0)":
         "ورودی با سرعت ثابت ω = {omega} {unit} می\u200cچرخد (α = ۰)",
     # the force polygons

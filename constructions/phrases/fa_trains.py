@@ -55,7 +55,7 @@ WORDS: dict[str, str] = {
     "addendum and root circles": "دایره\u200cهای ادندم و ریشه", "line of action": "خط عمل",
     "line of centres, common tangent": "خط\u200cالمرکزین، مماس مشترک",
     "path of contact": "مسیر تماس", "tooth profiles": "پروفیل\u200cهای دندانه",
-    # a mesh's results (exercises/train_solution.py)
+    # a mesh's results (exercises/gears/train_solution.py)
     "involute mesh": "درگیری اینولوت",
     "involute mesh, drawn with fewer teeth until clear":
         "درگیری اینولوت، ترسیم‌شده با دندانه‌های کمتر تا جایی که تداخل نماند",

@@ -19,11 +19,11 @@ class Balancing(Chapter):
                 "crank angle is its [engine] at)")
 
     def read(self, text, filename, exercise_id, data):
-        from ..rotor_file import parse_balance
+        from .rotor_file import parse_balance
         return parse_balance(text, filename, exercise_id, data)
 
     def solve(self, exercise, *, allow_undercut=False):
-        from ..balance_solution import solve_balance
+        from .balance_solution import solve_balance
         return solve_balance(exercise)
 
     def drawing(self, exercise):

@@ -19,11 +19,11 @@ class Cams(Chapter):
     no_angle = "a cam is drawn and solved over its whole turn: leave out --angle"
 
     def read(self, text, filename, exercise_id, data):
-        from ..cam_file import parse_cam
+        from .cam_file import parse_cam
         return parse_cam(text, filename, exercise_id, data)
 
     def solve(self, exercise, *, allow_undercut=False):
-        from ..cam_solution import solve_cam
+        from .cam_solution import solve_cam
         return solve_cam(exercise, allow_undercut=allow_undercut)
 
     def drawing(self, exercise):

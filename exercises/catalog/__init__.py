@@ -5,7 +5,7 @@ from __future__ import annotations
 from importlib import resources
 from pathlib import Path
 
-from ...constructions.errors import InputError
+from tarsim.constructions.errors import InputError
 
 __all__ = ["bundled", "everything", "resolve", "load"]
 

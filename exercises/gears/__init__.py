@@ -21,19 +21,19 @@ class GearTrains(Chapter):
     no_angle = "a gear train has no input angle: leave out --angle"
 
     def read(self, text, filename, exercise_id, data):
-        from ..train_file import parse_train
+        from .train_file import parse_train
         return parse_train(text, filename, exercise_id, data)
 
     def solve(self, exercise, *, allow_undercut=False):
-        from ..train_solution import solve_train
+        from .train_solution import solve_train
         return solve_train(exercise)
 
     def drawing(self, exercise):
-        from ...graphics.train_schematic import draw_train_schematic
+        from tarsim.graphics.gears.train_schematic import draw_train_schematic
         return draw_train_schematic(exercise.train, exercise.train.name)
 
     def asks(self, exercise) -> str:
-        from ..train_file import ask_symbol
+        from .train_file import ask_symbol
         return ", ".join(ask_symbol(q) for q in exercise.asks)
 
 

@@ -23,7 +23,7 @@ import json
 import math
 from pathlib import Path
 
-from ...constructions.errors import InputError
+from tarsim.constructions.errors import InputError
 from .grade import Grade, Item
 from .drafting import DRAFTING, LENGTH, Drafting, exercise_scale, tolerance
 from .drawing import file_name
@@ -213,8 +213,8 @@ class _Held:
     tolerance`)."""
 
     def __init__(self, sol, drafting: Drafting):
-        from ...constructions.acceleration_polygon import drawn_acceleration_polygon
-        from ...constructions.velocity_polygon import drawn_velocity_polygon
+        from tarsim.constructions.linkages.acceleration_polygon import drawn_acceleration_polygon
+        from tarsim.constructions.linkages.velocity_polygon import drawn_velocity_polygon
 
         work, self.drafting = sol.work, drafting
         mech = work.mechanism

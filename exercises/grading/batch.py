@@ -21,8 +21,8 @@ from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass
 from pathlib import Path
 
-from ...constructions.errors import InputError, TarsimError
-from ...graphics.export import MANIFEST
+from tarsim.constructions.errors import InputError, TarsimError
+from tarsim.graphics.export import MANIFEST
 from .drawing import file_name, printable
 from .grade import Grade, grade
 
@@ -185,7 +185,7 @@ def _one(job: tuple[str, int, str]) -> tuple[str, Grade | str]:
     """Grade one file; a file that cannot be graded gives its one-line reason."""
     source, position, drawing = job
     from ..catalog import load
-    from ..solution import solve_positions
+    from ..linkages.solution import solve_positions
 
     try:
         if source not in _SOLVED:

@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import math
 
-from ...constructions import geometry as g
+from tarsim.constructions import geometry as g
 
 __all__ = ["Band", "bands", "within", "reach"]
 

@@ -33,7 +33,7 @@ import zlib
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from ...constructions.errors import InputError
+from tarsim.constructions.errors import InputError
 from .labels import step_number
 from .safe_svg import MARK, MAX_ELEMENTS, MAX_POINTS, Kept, Reduced, readable_count, reduce_svg
 from .svg_style import MEDIUM

@@ -15,9 +15,9 @@ import html
 import re
 from dataclasses import dataclass
 
-from ...constructions.narration import Number, measure_words, numerals, right_to_left, words
-from ...graphics.figure import wrap_text
-from ...graphics.rtl import RTL_FONT, is_rtl
+from tarsim.constructions.narration import Number, measure_words, numerals, right_to_left, words
+from tarsim.graphics.figure import wrap_text
+from tarsim.graphics.rtl import RTL_FONT, is_rtl
 from .grade import Grade
 from .overlay import AMBER, FOLLOWS, RED, credited, named, sans_width
 
@@ -225,7 +225,7 @@ def feedback_pdf(g: Grade, who: str = "", overlay: str | None = None,
     RenderError
         If cairosvg or libcairo2 is missing.
     """
-    from ...graphics.export import svg_to
+    from tarsim.graphics.export import svg_to
 
     return svg_to(feedback_sheet(g, who, overlay, position), "pdf")
 

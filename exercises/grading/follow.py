@@ -12,9 +12,9 @@ from __future__ import annotations
 
 import math
 
-from ...constructions import geometry as g
-from ...constructions.errors import TarsimError
-from ...constructions.record import VERBS
+from tarsim.constructions import geometry as g
+from tarsim.constructions.errors import TarsimError
+from tarsim.constructions.record import VERBS
 
 __all__ = ["Replay", "unplace", "reversed_coriolis"]
 
@@ -34,7 +34,7 @@ class Replay:
     """A polygon's acts redone in drawing order, with the tips a student drew wrong moved to
     where they were drawn.
 
-    ``polygon`` is tarsim's drawn polygon (:class:`~tarsim.constructions.polygon_walk.
+    ``polygon`` is tarsim's drawn polygon (:class:`~tarsim.constructions.linkages.polygon_walk.
     Polygon`), ``frame`` how the sheet lays its vectors (SI, from the pole) on paper.
     """
 

@@ -17,7 +17,7 @@ from __future__ import annotations
 from dataclasses import asdict, dataclass, field
 from pathlib import Path
 
-from ...constructions.errors import InputError
+from tarsim.constructions.errors import InputError
 
 __all__ = ["Grade", "Item", "VERDICTS", "FOLLOWS", "grade"]
 
@@ -99,7 +99,7 @@ def grade(exercise, source: str | Path, position: int = 0, positions=None) -> Gr
         If the file cannot be read as any of them, or nothing on it can be graded, in one
         line naming it.
     """
-    from ..solution import solve_positions
+    from ..linkages.solution import solve_positions
     from .answers import grade_answers
     from .drafting import DRAFTING
     from .drawing import file_name, read_drawing
@@ -141,7 +141,7 @@ def _graded_drawing(exercise: str, sol, drawing, drafting) -> Grade:
     from .centres import grade_centres, space_frame
     from .polygon import grade_polygons
     from .sheet import split
-    from ...constructions.velocity_polygon import drawn_velocity_polygon
+    from tarsim.constructions.linkages.velocity_polygon import drawn_velocity_polygon
 
     out = Grade(exercise, drawing.source, overlay=(drawing, []))
     out.notes += drawing.notes

@@ -8,7 +8,7 @@ import math
 from collections.abc import Callable
 from dataclasses import dataclass
 
-from ...constructions.errors import InputError
+from tarsim.constructions.errors import InputError
 from .drawing import Drawing, advance
 from .marks import PENALTY, Kind, Mark, marks, touching
 

@@ -13,10 +13,10 @@ from __future__ import annotations
 
 import math
 
-from ...constructions.narration import Number, measure_words, right_to_left, words
-from ...graphics.figure import text_width, wrap_text
-from ...graphics.rtl import RTL_FONT, is_rtl, joined
-from ...graphics.sans_advances import ADVANCE
+from tarsim.constructions.narration import Number, measure_words, right_to_left, words
+from tarsim.graphics.figure import text_width, wrap_text
+from tarsim.graphics.rtl import RTL_FONT, is_rtl, joined
+from tarsim.graphics.sans_advances import ADVANCE
 from .grade import Grade, Item
 
 __all__ = ["overlay_svg", "sans_width", "credited", "named", "BLUE", "RED", "GREY", "AMBER",

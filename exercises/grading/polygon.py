@@ -32,8 +32,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, replace
 
-from ...constructions.acceleration_polygon import drawn_acceleration_polygon
-from ...constructions.velocity_polygon import drawn_velocity_polygon
+from tarsim.constructions.linkages.acceleration_polygon import drawn_acceleration_polygon
+from tarsim.constructions.linkages.velocity_polygon import drawn_velocity_polygon
 from .drafting import DRAFTING, Drafting, exercise_scale, tolerance
 from .drawing import Drawing
 from .crossing import bands, reach, within

@@ -11,7 +11,7 @@ import csv
 import io
 import json
 
-from ...constructions.narration import speaking, spoken
+from tarsim.constructions.narration import speaking, spoken
 from .feedback import feedback_html, feedback_pdf
 from .grade import Grade
 from .lms import LMS_FILES, as_text, canvas_csv, item_title, moodle_csv

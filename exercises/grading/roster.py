@@ -17,7 +17,7 @@ import re
 from dataclasses import dataclass
 from pathlib import Path
 
-from ...constructions.errors import InputError
+from tarsim.constructions.errors import InputError
 from .batch import ClassFile
 from .drawing import printable
 from .grade import Grade

@@ -30,7 +30,7 @@ import re
 import xml.etree.ElementTree as ET
 from dataclasses import dataclass, field
 
-from ...constructions.errors import InputError
+from tarsim.constructions.errors import InputError
 from .svg_style import Inherited, first_letter, inherit
 from .svg_xml import parse_xml
 from .svg_transform import PX, matrix, times

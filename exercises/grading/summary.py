@@ -13,8 +13,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from ...constructions.narration import Number, numerals, right_to_left, words
-from ...graphics.rtl import RTL_FONT, is_rtl
+from tarsim.constructions.narration import Number, numerals, right_to_left, words
+from tarsim.graphics.rtl import RTL_FONT, is_rtl
 from .grade import Grade
 from .overlay import AMBER, BLUE, FOLLOWS, RED, named, sans_width
 

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import xml.etree.ElementTree as ET
 
-from ...constructions.errors import InputError
+from tarsim.constructions.errors import InputError
 
 __all__ = ["parse_xml"]
 

@@ -20,7 +20,7 @@ class Linkages(Chapter):
     folders = ("", "forces")
 
     def read(self, text, filename, exercise_id, data):
-        from ..exercise_file import parse_exercise
+        from .exercise_file import parse_exercise
         return parse_exercise(text, filename, exercise_id, data)
 
     def set_up(self, exercise, *, paper, angle=None):
@@ -33,14 +33,14 @@ class Linkages(Chapter):
         return replace(exercise, paper=paper)
 
     def solve(self, exercise, *, allow_undercut=False):
-        from ..solution_files import solve_worked
+        from .solution_files import solve_worked
         return solve_worked(exercise)
 
     def drawing(self, exercise):
-        from ...constructions.assembly import assemble
-        from ...constructions.scales import space_per_cm
-        from ...graphics.diagram import draw_kinematic_diagram
-        from ...graphics.paper import paper, room
+        from tarsim.constructions.linkages.assembly import assemble
+        from tarsim.constructions.scales import space_per_cm
+        from tarsim.graphics.linkages.diagram import draw_kinematic_diagram
+        from tarsim.graphics.paper import paper, room
 
         asm = assemble(exercise.mechanism)
         return draw_kinematic_diagram(asm, per_cm=space_per_cm(asm, room(paper(exercise.paper))))
@@ -50,7 +50,7 @@ class Linkages(Chapter):
 
     def asks(self, exercise) -> str:
         """The find list as a textbook writes it, then the positions: "ω4, V_B at θ2 = 90°"."""
-        from ...constructions.asks import symbol
+        from tarsim.constructions.asks import symbol
 
         names = ", ".join(symbol(q) for q in exercise.find)
         at = ", ".join(p.label.split(" (")[0] for p in exercise.positions)

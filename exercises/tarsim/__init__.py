@@ -19,8 +19,8 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:
-    from tarsim.exercises.exercise_file import Exercise
-    from tarsim.exercises.solution_files import WorkedSolution
+    from tarsim.exercises.linkages.exercise_file import Exercise
+    from tarsim.exercises.linkages.solution_files import WorkedSolution
 
 __all__ = ["load", "solve", "Exercise", "WorkedSolution"]
 
@@ -29,10 +29,10 @@ def __getattr__(name: str) -> Any:
     # The solver, the figures and their libraries load on first use, so ``tarsim --help``
     # and ``import tarsim`` stay quick.
     if name == "Exercise":
-        from tarsim.exercises.exercise_file import Exercise
+        from tarsim.exercises.linkages.exercise_file import Exercise
         return Exercise
     if name == "WorkedSolution":
-        from tarsim.exercises.solution_files import WorkedSolution
+        from tarsim.exercises.linkages.solution_files import WorkedSolution
         return WorkedSolution
     raise AttributeError(f"module 'tarsim' has no attribute {name!r}")
 

@@ -1,0 +1,242 @@
+"""Read a balancing exercise: a rotor (``[rotor]``, ``[[mass]]``, ``[[balance]]``) or an
+in-line engine (``[engine]``, ``[[cylinder]]``).
+
+Angles are in degrees, counter-clockwise from the reference radius; radii, crank, rod and
+axial positions in the file's length unit; masses in kg; the speed in rpm or rad/s. Every
+failure is one line naming file:line.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any, ClassVar
+
+from tarsim.constructions.balancing.rotor import Engine, Mass, Plane, Rotor
+from tarsim.constructions.units import LENGTH_UNITS
+from ..file_numbers import radians_in_turn
+from ..toml_source import _CONTROL, read_source
+from ..names import named_in, read_names, renamed_field
+from ..table_file import SPEEDS, Tables
+
+__all__ = ["BalanceExercise", "load_balance", "parse_balance"]
+
+_TOP = ("name", "names", "source", "description", "units", "rotor", "mass", "balance", "engine",
+        "cylinder")
+_NAME_LENGTH = 12
+_NAME = re.compile(rf"^[^\s\x00-\x1f\x7f-\x9f\u202a-\u202e\u2066-\u2069]{{1,{_NAME_LENGTH}}}$")
+"""A mass's or a plane's name: a short word with no space or control character in it."""
+
+_KEYS = {"rotor": ("speed",), "mass": ("name", "mass", "radius", "angle", "plane"),
+         "balance": ("name", "plane", "radius", "mass"),
+         "engine": ("speed", "crank", "rod", "reciprocating", "balanced", "at"),
+         "cylinder": ("crank", "plane")}
+
+
+@dataclass(frozen=True)
+class BalanceExercise:
+    """A rotor to balance, or an engine whose unbalance is asked, and how the file states
+    its units."""
+
+    chapter: ClassVar[str] = "balancing"
+
+    id: str
+    name: str
+    source: str
+    description: str
+    rotor: Rotor | None = None
+    engine: Engine | None = None
+    length_unit: str = "m"
+    speed_unit: str = "rad/s"
+    names: tuple[tuple[str, str], ...] = ()
+    """The rotor's or engine's name in other languages (``[names]``, :mod:`.names`)."""
+
+    def named_in(self, lang: str) -> BalanceExercise:
+        """The same exercise with its rotor or engine named in ``lang``, if its file does."""
+        return named_in(self, lang)
+
+    renamed = renamed_field
+
+
+def load_balance(path: str | Path, exercise_id: str | None = None) -> BalanceExercise:
+    """Read a balancing exercise file.
+
+    Raises
+    ------
+    InputError
+        Naming file:line and the setting.
+    """
+    path = Path(path)
+    return parse_balance(read_source(path), str(path), exercise_id or path.stem)
+
+
+def parse_balance(text: str, filename: str = "<string>", exercise_id: str = "rotor",
+                  data: dict[str, Any] | None = None) -> BalanceExercise:
+    """Parse a balancing exercise from TOML text (see :func:`load_balance`); ``data``, the
+    tables already parsed from it, spares a second parse."""
+    t = Tables.read(text, filename, "balancing", _TOP, _KEYS, data)
+    data, fail = t.data, t.fail
+    if "rotor" in data and "engine" in data:
+        raise fail("a file is a rotor or an engine, not both", "engine")
+    if not isinstance(data.get("units", {}), dict):
+        raise fail('units is a table: [units] length = "mm", speed = "rpm"', key="units")
+    length, speed_unit = t.units("m", "rad/s")
+    metre = LENGTH_UNITS[length]
+    common = dict(id=exercise_id, name=_text(t, "name", exercise_id),
+                  source=_text(t, "source", ""), description=_text(t, "description", ""),
+                  length_unit=length, speed_unit=speed_unit,
+                  names=read_names(data, t.where, filename))
+    if "engine" in data:
+        return BalanceExercise(engine=_engine(t, metre), **common)
+    masses = _masses(t, metre, length)
+    planes = _planes(t, metre)
+    taken = {m.name: f"mass {m.name}" for m in masses}
+    for i, p in enumerate(planes):
+        if p.name in taken:
+            raise fail(f"balancing plane {p.name} has the name of {taken[p.name]}: give each "
+                       "mass and plane its own name", "balance", "name", i)
+        taken[p.name] = f"plane {p.name}"
+    return BalanceExercise(rotor=Rotor(tuple(masses), tuple(planes), _speed(t, "rotor")),
+                           **common)
+
+
+def _one(t: Tables, table: str) -> dict:
+    """The single ``[table]``: a list of them is refused at its second."""
+    entries = t.entries(table)
+    if len(entries) != 1:
+        raise t.fail(f"[{table}] is one table, not a list of {len(entries)}", table, None,
+                     min(len(entries) - 1, 1))
+    return entries[0]
+
+
+def _speed(t: Tables, table: str) -> float:
+    """``[table]``'s speed in rad/s, positive."""
+    one = _one(t, table)
+    v = t.number(one, "speed", table, "the speed")
+    if not v > 0:
+        raise t.fail(f"the speed must be positive, got {v:g}", table, "speed")
+    return v * SPEEDS[t.units("m", "rad/s")[1]]
+
+
+def _text(t: Tables, key: str, default: str) -> str:
+    """A free text of the file (its name, source or description): a string with no control
+    character in it."""
+    v = t.data.get(key, default)
+    if not isinstance(v, str):
+        raise t.fail(f"{key} must be a string, got {v!r:.40}", key=key)
+    bad = _CONTROL.search(v)
+    if bad:
+        raise t.fail(f"{key} holds the control character U+{ord(bad.group()):04X}; remove it",
+                     key=key)
+    return v
+
+
+def _name(t: Tables, entry: dict, table: str, i: int, default: str, what: str) -> str:
+    """A mass's or a plane's name: a short word, as the figures write it."""
+    v = entry.get("name", default)
+    if isinstance(v, int) and not isinstance(v, bool):
+        v = str(v)
+    if not (isinstance(v, str) and _NAME.match(v)):
+        raise t.fail(f"{what} {i + 1}'s name must be a short word such as \"1\" or \"A\" "
+                     f"(up to {_NAME_LENGTH} letters or digits), got {v!r:.40}", table, "name", i)
+    return v
+
+
+def _masses(t: Tables, metre: float, length: str) -> list[Mass]:
+    masses: list[Mass] = []
+    for i, entry in enumerate(t.entries("mass")):
+        name = _name(t, entry, "mass", i, str(i + 1), "mass")
+        if any(m.name == name for m in masses):
+            raise t.fail(f"two masses are named {name}: give each its own name", "mass",
+                         "name", i)
+        m = t.number(entry, "mass", "mass", f"mass {name}'s mass", i)
+        r = t.number(entry, "radius", "mass", f"mass {name}'s radius", i)
+        if not m > 0 or not r > 0:
+            raise t.fail(f"mass {name} needs a positive mass and radius, got {m:g} kg at "
+                         f"{r:g} {length}", "mass", "mass" if not m > 0 else "radius", i)
+        masses.append(Mass(name, m, r * metre,
+                           _degrees(t.number(entry, "angle", "mass", f"mass {name}'s angle", i)),
+                           t.number(entry, "plane", "mass", f"mass {name}'s plane", i,
+                                    0.0) * metre))
+    if not masses:
+        raise t.fail("list the rotor's masses as [[mass]] tables (mass, radius, angle, plane)",
+                     "rotor")
+    return masses
+
+
+def _planes(t: Tables, metre: float) -> list[Plane]:
+    planes: list[Plane] = []
+    entries = t.entries("balance")
+    if not entries:
+        raise t.fail("name a balancing plane: [[balance]] with plane = 0 and radius = 0.1 (two "
+                     "planes for a dynamic balance)", "rotor")
+    if len(entries) > 2:
+        raise t.fail("balance in one plane (static) or two (dynamic), not "
+                     f"{len(entries)}", "balance", None, 2)
+    for i, entry in enumerate(entries):
+        name = _name(t, entry, "balance", i, "AB"[i], "balancing plane")
+        if any(p.name == name for p in planes):
+            raise t.fail(f"two balancing planes are named {name}: give each its own name",
+                         "balance", "name", i)
+        radius, mass = entry.get("radius"), entry.get("mass")
+        if (radius is None) == (mass is None):
+            raise t.fail(f"balancing plane {name} gives the radius its mass goes at, or the "
+                         "mass (the other is found): radius = 0.1", "balance", None, i)
+        key = "radius" if radius is not None else "mass"
+        v = t.number(entry, key, "balance", f"plane {name}'s {key}", i)
+        if not v > 0:
+            raise t.fail(f"balancing plane {name}'s {key} must be positive, got {v:g}",
+                         "balance", key, i)
+        planes.append(Plane(name, t.number(entry, "plane", "balance",
+                                           f"plane {name}'s position", i, 0.0) * metre,
+                            v * metre if key == "radius" else None,
+                            v if key == "mass" else None))
+    if len(planes) == 2 and planes[0].position == planes[1].position:
+        raise t.fail(f"the balancing planes {planes[0].name} and {planes[1].name} stand at the "
+                     "same axial position: two planes must be apart to hold a couple",
+                     "balance", "plane", 1)
+    return planes
+
+
+def _engine(t: Tables, metre: float) -> Engine:
+    one = _one(t, "engine")
+    crank = t.number(one, "crank", "engine", "the crank radius")
+    rod = t.number(one, "rod", "engine", "the connecting rod's length")
+    mass = t.number(one, "reciprocating", "engine", "the reciprocating mass")
+    unit = t.units("m", "rad/s")[0]
+    if not crank > 0:
+        raise t.fail(f"the crank radius must be positive, got {crank:g} {unit}", "engine",
+                     "crank")
+    if not rod > crank:
+        raise t.fail(f"the connecting rod ({rod:g} {unit}) must be longer than the crank "
+                     f"({crank:g} {unit}), or the piston cannot follow it round", "engine", "rod")
+    if not mass > 0:
+        raise t.fail(f"the reciprocating mass must be positive, got {mass:g} kg", "engine",
+                     "reciprocating")
+    balanced = t.number(one, "balanced", "engine", "the balanced fraction", 0, 0.0)
+    if not 0 <= balanced <= 1:
+        raise t.fail(f"the balanced fraction is from 0 to 1, got {balanced:g}", "engine",
+                     "balanced")
+    cylinders = t.entries("cylinder") or [{"crank": 0, "plane": 0}]
+    cranks = tuple(_degrees(t.number(c, "crank", "cylinder", f"cylinder {i + 1}'s crank angle",
+                                     i, 0.0)) for i, c in enumerate(cylinders))
+    planes = tuple(t.number(c, "plane", "cylinder", f"cylinder {i + 1}'s plane", i, 0.0) * metre
+                   for i, c in enumerate(cylinders))
+    if len(cranks) == 1 and cranks[0] != 0.0:
+        raise t.fail("a single cylinder's forces are asked at a crank angle: give it as [engine] "
+                     "at = …, its [[cylinder]] crank at 0", "cylinder", "crank")
+    for i, p in enumerate(planes):
+        if p in planes[:i]:
+            j = planes.index(p)
+            raise t.fail(f"cylinders {j + 1} and {i + 1} stand in the same plane: cylinders in "
+                         "line need their planes apart (plane = …)", "cylinder",
+                         "plane" if "plane" in cylinders[i] else None, i)
+    return Engine(cranks, planes, crank * metre, rod * metre, mass, _speed(t, "engine"),
+                  balanced, _degrees(t.number(one, "at", "engine", "the crank angle", 0, 0.0)))
+
+
+def _degrees(value: float) -> float:
+    """An angle in degrees as radians, whole turns taken off first, where that is exact: a
+    mass at 100030° is the one at 310°, to the last bit."""
+    return radians_in_turn(value, "deg")

@@ -1,0 +1,232 @@
+"""Read a cam exercise (TOML with ``[cam]`` and ``[[segment]]`` tables).
+
+The format is documented in the README ("Cams"). Angles are in degrees, lifts and radii in
+the file's length unit, the cam's speed in rpm or rad/s. Every failure is one line naming
+file:line: segments that do not add to 360°, a negative lift, a cam that does not come back
+to its base circle, a law the diagram does not draw.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any, ClassVar
+
+from tarsim.constructions.cams.displacement import Segment
+from tarsim.constructions.units import LENGTH_UNITS
+from tarsim.constructions.reference.cam_laws import BLEND, LAWS
+from tarsim.constructions.reference.cam_profile import Follower, arm_start, prime_radius
+from ..file_numbers import file_number
+from ..toml_source import read_source
+from ..names import named_in, read_names, renamed_field
+from ..table_file import SPEEDS, Tables
+
+__all__ = ["CamExercise", "load_cam", "parse_cam"]
+
+_TOP = ("name", "names", "source", "description", "units", "cam", "follower", "segment", "ask")
+
+
+@dataclass(frozen=True)
+class CamExercise:
+    """A cam and its follower's motion: the base circle (m), the cam's ω (rad/s, CCW +),
+    the segments, and how the file states its units."""
+
+    chapter: ClassVar[str] = "cams"
+
+    id: str
+    name: str
+    source: str
+    description: str
+    base_radius: float
+    omega: float
+    segments: tuple[Segment, ...]
+    length_unit: str = "mm"
+    speed_unit: str = "rpm"
+    follower: Follower = Follower()
+    jerk: bool = False
+    """The jerk is asked for: its diagram and each segment's peak."""
+    names: tuple[tuple[str, str], ...] = ()
+    """The cam's name in other languages (``[names]``, :mod:`.names`)."""
+
+    def named_in(self, lang: str) -> CamExercise:
+        """The same exercise with the cam named in ``lang``, if its file does."""
+        return named_in(self, lang)
+
+    renamed = renamed_field
+
+    @property
+    def metre(self) -> float:
+        """Metres in one of the file's length units."""
+        return LENGTH_UNITS[self.length_unit]
+
+    @property
+    def sigma(self) -> float:
+        """The cam's sense: +1 counter-clockwise."""
+        return 1.0 if self.omega > 0 else -1.0
+
+
+def load_cam(path: str | Path, exercise_id: str | None = None) -> CamExercise:
+    """Read a cam exercise file.
+
+    Raises
+    ------
+    InputError
+        Naming file:line and the setting.
+    """
+    path = Path(path)
+    return parse_cam(read_source(path), str(path), exercise_id or path.stem)
+
+
+def parse_cam(text: str, filename: str = "<string>", exercise_id: str = "cam",
+              data: dict[str, Any] | None = None) -> CamExercise:
+    """Parse a cam exercise from TOML text (see :func:`load_cam`); ``data``, the tables
+    already parsed from it, spares a second parse."""
+    tables = Tables.read(text, filename, "cam", _TOP, {}, data)
+    data, fail = tables.data, tables.fail
+    length, speed = tables.units("mm", "rpm")
+    metre = LENGTH_UNITS[length]
+    cam = data.get("cam")
+    if not isinstance(cam, dict):
+        raise fail("[cam] gives the base circle and the cam's speed: base_radius = 40, "
+                   "speed = 300, sense = \"cw\"", "cam")
+
+    number = tables.number
+
+    base = number(cam, "base_radius", "cam", "the base radius")
+    if not 0 < base < 1e6:
+        raise fail(f"the base radius must be positive, got {base:g}", "cam", "base_radius")
+    rate = number(cam, "speed", "cam", "the cam's speed")
+    sense = cam.get("sense", "ccw")
+    if sense not in ("cw", "ccw") or rate <= 0:
+        raise fail("the cam turns at a positive speed, its sense cw or ccw", "cam", "sense")
+    omega = rate * SPEEDS[speed] * (1 if sense == "ccw" else -1)
+    follower = _follower(data.get("follower") or {}, base * metre, metre, length, fail)
+    raw = data.get("segment")
+    if not isinstance(raw, list) or not raw:
+        raise fail("list the follower's motion as [[segment]] tables (kind, angle, lift, law)",
+                   key="segment")
+    segments, total, height = [], 0.0, 0.0
+    for i, t in enumerate(raw):
+        kind = t.get("kind") if isinstance(t, dict) else None
+        if kind not in ("rise", "dwell", "return"):
+            raise fail(f"a segment is a rise, a dwell or a return, not {kind!r}", "segment",
+                       "kind", i)
+        angle = number(t, "angle", "segment", "a segment's angle", i)
+        if not 0 < angle <= 360:
+            raise fail(f"a segment's angle must be more than 0° and at most 360°, got "
+                       f"{angle:g}°", "segment", "angle", i)
+        lift, law, divisions, blend = 0.0, "", 6, BLEND
+        if kind != "dwell":
+            lift = number(t, "lift", "segment", "a segment's lift", i)
+            if lift < 0:
+                raise fail(f"a negative lift ({lift:g} {length}): a {kind} gives the lift's "
+                           "size, its kind the way", "segment", "lift", i)
+            if follower.oscillating:               # the arm's swing, as the arc at its end
+                lift = math.radians(lift) * follower.arm / metre
+            law = t.get("law", "simple harmonic")
+            if law not in LAWS:
+                raise fail(f"unknown law '{law}'; the laws are {', '.join(LAWS)}", "segment",
+                           "law", i)
+            modified = law == "modified uniform velocity"
+            parts = t.get("divisions", 8 if modified else 6)
+            if isinstance(parts, bool) or not isinstance(parts, int) or not 2 <= parts <= 24:
+                raise fail(f"a segment is divided into 2 to 24 equal parts, not {parts!r}",
+                           "segment", "divisions", i)
+            divisions = parts
+            if law == "parabolic" and parts % 2:
+                raise fail(f"a parabolic segment is divided into an even number of parts (the "
+                           f"two halves alike), not {parts}", "segment", "divisions", i)
+            if modified:
+                blend = number(t, "blend", "segment", "the blend", i) if "blend" in t else BLEND
+                if not (0 < blend <= 0.5 and abs(blend * parts - round(blend * parts)) < 1e-9
+                        and round(blend * parts) >= 1):
+                    raise fail(f"the blend at each end is a fraction of the segment up to ½ "
+                               f"covering a whole number of its {parts} divisions, not "
+                               f"{blend:g}", "segment", "blend", i)
+            elif "blend" in t:
+                raise fail("only a modified uniform velocity has a blend", "segment", "blend", i)
+        total += angle
+        height += lift if kind == "rise" else -lift
+        if height < -1e-12 * max(lift, 1.0):
+            raise fail(f"segment {i + 1} returns the follower below the base circle "
+                       f"({height:g} {length})", "segment", "lift", i)
+        segments.append(Segment(kind, math.radians(angle), lift * metre, law, divisions,
+                                blend))
+    if abs(total - 360.0) > 1e-9:
+        raise fail(f"the segments add to {total:g}°, not 360°: the cam turns once",
+                   key="segment")
+    if abs(height) > 1e-9 * max(s.lift for s in segments):
+        raise fail(f"the rises and returns leave the follower {height:g} {length} off the "
+                   "base circle after a turn: they must balance", key="segment")
+    ask = data.get("ask", {})
+    if not isinstance(ask, dict) or any(k != "jerk" for k in ask) or not isinstance(
+            ask.get("jerk", False), bool):
+        raise fail("a cam's [ask] table takes jerk = true (its diagram and peaks); the "
+                   "displacement, velocity, acceleration and profile are always drawn", "ask")
+    return CamExercise(exercise_id, str(data.get("name", exercise_id)),
+                       str(data.get("source", "")), str(data.get("description", "")),
+                       base * metre, omega, tuple(segments), length, speed, follower,
+                       ask.get("jerk", False), read_names(data, tables.where, filename))
+
+
+_FOLLOWER_KEYS = ("kind", "radius", "motion", "offset", "pivot", "arm")
+_KINDS = ("knife-edge", "roller", "flat-faced")
+
+
+def _follower(t: dict[str, Any], base: float, metre: float, unit: str, fail) -> Follower:
+    """The [follower] table: its kind, roller radius, and a translating line's offset or an
+    oscillating arm's pivot and length (the file's length unit, from the cam centre)."""
+    for k in t:
+        if k not in _FOLLOWER_KEYS:
+            raise fail(f"unknown setting '{k}' in [follower]; expected "
+                       f"{', '.join(_FOLLOWER_KEYS)}", "follower", k)
+    kind, how = t.get("kind", "knife-edge"), t.get("motion", "translating")
+    if kind not in _KINDS:
+        raise fail(f"a follower is {', '.join(_KINDS)}, not {kind!r}", "follower", "kind")
+    if how not in ("translating", "oscillating"):
+        raise fail(f"a follower is translating or oscillating, not {how!r}", "follower",
+                   "motion")
+
+    def size(key: str, what: str) -> float:
+        try:
+            return file_number(t.get(key, 0), what) * metre
+        except ValueError as e:
+            raise fail(str(e), "follower", key) from None
+
+    radius = size("radius", "the roller's radius")
+    if kind == "roller" and not radius > 0:
+        raise fail("a roller follower gives its radius: radius = 10", "follower", "radius")
+    if how == "translating":
+        offset = size("offset", "the follower's offset")
+        reach = prime_radius(base, Follower(kind, radius))
+        if abs(offset) >= reach:
+            raise fail(f"an offset of {abs(offset) / metre:g} {unit} puts the follower's line "
+                       f"clear of the prime circle ({reach / metre:g} {unit})", "follower",
+                       "offset")
+        return Follower(kind, radius, offset)
+    if kind == "flat-faced":
+        raise fail("an oscillating flat face is not laid out yet: use a roller or a knife "
+                   "edge on the arm", "follower", "kind")
+    pivot = t.get("pivot")
+    if not isinstance(pivot, list) or len(pivot) != 2:
+        raise fail("an oscillating follower gives its pivot from the cam centre: "
+                   "pivot = [70, 0]", "follower", "pivot")
+    try:
+        at = tuple(file_number(v, "the pivot's coordinate") * metre for v in pivot)
+    except ValueError as e:
+        raise fail(str(e), "follower", "pivot") from None
+    f = Follower(kind, radius, 0.0, at, size("arm", "the arm's length"))
+    if not f.arm > 0:
+        raise fail("an oscillating follower gives its arm's length: arm = 50", "follower",
+                   "arm")
+    d, r = math.hypot(*f.pivot), prime_radius(base, f)
+    if not abs(d - f.arm) < r < d + f.arm:
+        raise fail(f"an arm of {f.arm / metre:g} {unit} on a pivot {d / metre:g} {unit} from "
+                   f"the cam centre cannot reach the prime circle ({r / metre:g} {unit})",
+                   "follower", "arm")
+    try:
+        arm_start(base, f)
+    except ValueError as e:
+        raise fail(str(e), "follower", "pivot") from None
+    return f

@@ -1,0 +1,245 @@
+"""Read a mechanism's loads for its force analysis: ``[forces]``, ``[[mass]]``,
+``[[force]]`` and ``[[couple]]`` tables beside the mechanism's own.
+
+Masses are in kg, inertias in kg·m², forces in N and couples in N·m (CCW +); points and
+lengths in the file's length unit. A mass's centre is a point of its link ("A"), "mid"
+(halfway between the link's first two points) or [x, y] in the link's own frame (its
+first point the origin, +x toward its second point or along its slot); its inertia about
+that centre defaults to a slender rod's, (1/12)·m·L², said to be assumed. Every failure is
+one line naming file:line.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+from tarsim.constructions.loads import GRAVITY, Couple, Loads, Mass, PointForce
+from tarsim.constructions.model import Mechanism
+from tarsim.constructions.units import LENGTH_UNITS
+from ..file_numbers import file_number
+from ..table_file import Tables
+from ..toml_source import SourceMap
+
+__all__ = ["LOAD_TABLES", "read_loads"]
+
+LOAD_TABLES = ("forces", "mass", "force", "couple")
+"""The top-level tables this module reads; the mechanism reader leaves them alone."""
+
+_KEYS = {"forces": ("gravity", "driver", "speed_fluctuation", "flywheel", "friction",
+                    "friction_circle"),
+         "mass": ("link", "mass", "centre", "inertia", "length"),
+         "force": ("link", "point", "force", "resist", "stroke", "name"),
+         "couple": ("link", "moment", "name")}
+
+
+def read_loads(data: dict[str, Any], mech: Mechanism, where: SourceMap,
+               filename: str) -> Loads | None:
+    """The loads the file gives (None if it gives none).
+
+    Raises
+    ------
+    InputError
+        Naming file:line: an unknown link or point, a mass or inertia that is not positive,
+        a driver other than the input link, a setting it does not know.
+    """
+    if not any(t in data for t in LOAD_TABLES):
+        return None
+    metre = LENGTH_UNITS[mech.units.length]
+
+    tables = Tables(data, where, filename, _KEYS)
+    fail, entries, number = tables.fail, tables.entries, tables.number
+
+    def link(t: dict, table: str, i: int) -> int:
+        n = t.get("link")
+        moving = sorted(k.number for k in mech.links if k.number != 1)
+        if n not in moving:
+            raise fail(f"[{table}] names link {n!r}, which is not a moving link of the "
+                       f"mechanism ({', '.join(map(str, moving))})", table, "link", i)
+        return n
+
+    (settings,) = entries("forces") or [{}]
+    gravity = settings.get("gravity", True)
+    if not isinstance(gravity, bool):
+        raise fail("gravity = true pulls each mass down (−y) at 9.81 m/s²; false leaves "
+                   "weight out", "forces", "gravity")
+    driver = settings.get("driver", mech.drive.link)
+    if driver != mech.drive.link:
+        raise fail(f"the driver must be the input link ({mech.drive.link}), whose motion is "
+                   f"given; got {driver!r}", "forces", "driver")
+    wheel = {}
+    for key, what in (("speed_fluctuation", "a coefficient of speed fluctuation"),
+                      ("flywheel", "a flywheel's inertia (kg·m²)")):
+        if key in settings:
+            wheel[key] = number(settings, key, "forces", what, 0)
+            if not wheel[key] > 0:
+                raise fail(f"{what} must be positive, got {wheel[key]:g}", "forces", key)
+    if len(wheel) > 1:
+        raise fail("give speed_fluctuation (the flywheel is found) or flywheel (its C_s is "
+                   "found), not both", "forces", "flywheel")
+    if wheel and not mech.drive.omega:
+        key = next(iter(wheel))
+        raise fail(f"a flywheel holds a speed, but link {mech.drive.link}'s ω is 0 in [input]: "
+                   f"give it the speed the flywheel is to hold, or leave {key} out", "forces",
+                   key)
+    friction = 0.0
+    if "friction" in settings:
+        friction = number(settings, "friction", "forces", "a coefficient of friction", 0)
+        if not 0.0 <= friction <= 2.0:
+            raise fail(f"friction is the coefficient μ at the slides, from 0 (none) to 2; got "
+                       f"{friction:g}", "forces", "friction")
+    circle = 0.0
+    if "friction_circle" in settings:
+        circle = number(settings, "friction_circle", "forces",
+                        "a friction circle's radius", 0) * metre
+        if not circle >= 0.0:
+            raise fail(f"friction_circle is the radius ρ = μ·r of every pin's friction "
+                       f"circle, in {mech.units.length}, 0 or more; got {circle / metre:g}",
+                       "forces", "friction_circle")
+        # ρ = μ·r, r a pin's radius, and a pin is smaller than the link it joins: a circle
+        # as long as a link would lock it at every position.
+        spans = [(k.span(p, q), k) for k in mech.links if k.number != 1
+                 for i, p in enumerate(k.names) for q in k.names[i + 1:]]
+        if spans and circle >= min(spans, key=lambda t: t[0])[0]:
+            span, k = min(spans, key=lambda t: t[0])
+            raise fail(f"a friction circle of {circle / metre:g} {mech.units.length} is as long "
+                       f"as {k.label}, {span / metre:g} {mech.units.length}: ρ = μ·r, r a pin's "
+                       "radius, is far smaller than its link", "forces", "friction_circle")
+    masses = []
+    for i, t in enumerate(entries("mass")):
+        n = link(t, "mass", i)
+        k = mech.link(n)
+        m = number(t, "mass", "mass", "a mass", i)
+        if not m > 0:
+            raise fail(f"link {n}'s mass must be positive, got {m:g} kg", "mass", "mass", i)
+        centre, named = _centre(t.get("centre", "mid"), k, metre,
+                                lambda msg, i=i: fail(msg, "mass", "centre", i))
+        if "inertia" in t:
+            inertia = _inertia(t, i, n, fail)
+            if not inertia > 0:
+                raise fail(f"link {n}'s moment of inertia must be positive, got "
+                           f"{inertia:g} kg·m²", "mass", "inertia", i)
+            assumed = ""
+        else:
+            if "length" in t:
+                length = number(t, "length", "mass", "the rod's length", i) * metre
+            elif len(k.names) >= 2:
+                length = k.span(k.names[0], k.names[1])
+            else:
+                raise fail(f"link {n} has one point: give its inertia, or its length for a "
+                           "slender rod's (1/12)·m·L²", "mass", None, i)
+            if not length > 0:
+                raise fail("a slender rod's length must be positive", "mass", "length", i)
+            inertia = m * length ** 2 / 12
+            assumed = f"slender rod (1/12)·m·L², L = {length / metre:g} {mech.units.length}"
+        masses.append(Mass(n, m, centre, inertia, assumed, named))
+    forces = []
+    for i, t in enumerate(entries("force")):
+        n = link(t, "force", i)
+        point = t.get("point")
+        if isinstance(point, str):
+            if not mech.link(n).carries(point):
+                raise fail(f"link {n} has no point '{point}'; its points are "
+                           f"{', '.join(mech.link(n).names)}", "force", "point", i)
+        elif isinstance(point, list) and len(point) == 2:
+            point = (number({"point": point[0]}, "point", "force", "a point's x", i) * metre,
+                     number({"point": point[1]}, "point", "force", "a point's y", i) * metre)
+        else:
+            raise fail("a force acts at a point of its link: point = \"B\" or [x, y] in the "
+                       "link's own frame", "force", "point", i)
+        name = str(t.get("name", ""))
+        if "resist" in t:
+            size = number(t, "resist", "force", "a resisting force", i)
+            if not size > 0 or "force" in t:
+                raise fail("resist = 1000 gives a force's size against the point's motion "
+                           "(N, positive), in place of force = [x, y]", "force", "resist", i)
+            stroke = t.get("stroke", "both")
+            if stroke not in ("both", "slow", "fast"):
+                raise fail(f"stroke is both, slow or fast, not {stroke!r}", "force", "stroke",
+                           i)
+            along = None
+            if stroke != "both":
+                along = _stroke_way(mech, n, point, stroke == "slow")
+                if along is None:
+                    raise fail(f"a {stroke} stroke belongs to a point on a frame guide; "
+                               f"{point!r} of link {n} is not one", "force", "stroke", i)
+            forces.append(PointForce(n, point, name=name, resist=size, along=along))
+            continue
+        f = t.get("force")
+        if not (isinstance(f, list) and len(f) == 2):
+            raise fail("a force gives its components in N: force = [-1000, 0] (or resist = "
+                       "1000 against the point's motion)", "force", "force", i)
+        fx = number({"force": f[0]}, "force", "force", "a force's x", i)
+        fy = number({"force": f[1]}, "force", "force", "a force's y", i)
+        forces.append(PointForce(n, point, (fx, fy), name))
+    couples = [Couple(link(t, "couple", i), number(t, "moment", "couple", "a couple", i),
+                      str(t.get("name", ""))) for i, t in enumerate(entries("couple"))]
+    if not (masses or forces or couples):
+        raise fail("nothing loads the mechanism: give [[mass]], [[force]] or [[couple]] "
+                   "tables with the [forces] settings", "forces")
+    return Loads(tuple(masses), tuple(forces), tuple(couples), GRAVITY if gravity else 0.0,
+                 friction=friction, friction_circle=circle, **wheel)
+
+
+INERTIAS = (1e-15, 1e6)
+"""The moments of inertia (kg·m²) a file may give: a link a few millimetres long has some
+1e-9, so the range runs well below a length's or a mass's."""
+
+
+def _inertia(t: dict, i: int, link: int, fail) -> float:
+    """Link ``link``'s moment of inertia as [[mass]] ``i`` gives it (kg·m²)."""
+    v = t.get("inertia")
+    if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v):
+        raise fail(f"link {link}'s moment of inertia must be a number, got {v!r:.40}", "mass",
+                   "inertia", i)
+    low, high = INERTIAS
+    if v != 0 and not low <= abs(v) <= high:
+        raise fail(f"link {link}'s moment of inertia must be between {low:g} and {high:g} "
+                   f"kg·m², got {v:g}", "mass", "inertia", i)
+    return float(v)
+
+
+def _centre(v: Any, k, metre: float, fail) -> tuple[tuple[float, float], str]:
+    """A centre of mass in the link's own frame, and how the file named it."""
+    if v == "mid":
+        if len(k.names) < 2:
+            raise fail(f"{k.label} has one point, so no mid-length: give centre = [x, y] "
+                       "in its own frame")
+        (ax, ay), (bx, by) = k.local(k.names[0]), k.local(k.names[1])
+        return ((ax + bx) / 2, (ay + by) / 2), "mid"
+    if isinstance(v, str):
+        if not k.carries(v):
+            raise fail(f"{k.label} has no point '{v}'; its points are {', '.join(k.names)}")
+        return k.local(v), v
+    if isinstance(v, list) and len(v) == 2:
+        try:
+            return tuple(file_number(c, "a centre's coordinate") * metre for c in v), ""
+        except ValueError as e:
+            raise fail(str(e)) from None
+    raise fail(f"a centre of mass is a point of the link, \"mid\" or [x, y], not {v!r}")
+
+
+_TURN = 360
+"""Crank positions a stroke's way is judged over."""
+
+
+def _stroke_way(mech: Mechanism, link: int, point, slow: bool) -> tuple[float, float] | None:
+    """The way a point on a frame guide moves during its slow (or fast) stroke: the way it
+    moves over more of the input's turn. None if the point runs on no frame guide."""
+    import numpy as np
+
+    from tarsim.constructions.model import Drive
+    from tarsim.constructions.reference.turn import solve_turn
+
+    guide = next((s for s in mech.slides if s.guide_link == 1 and s.link == link
+                  and s.point == point), None)
+    if guide is None:
+        return None
+    d, drive = guide.direction, mech.drive
+    # The whole turn at once (the vectorised solver); a dead point or a gap moves no way.
+    turn = solve_turn(mech.with_drive(Drive(drive.link, drive.angle, drive.omega or 1.0)),
+                      2 * np.pi * np.arange(_TURN) / _TURN)
+    v = turn.velocities[point]
+    w = np.where(turn.ok, v[:, 0] * d[0] + v[:, 1] * d[1], 0.0)
+    ahead = int(np.sum(w > 0)) > int(np.sum(w < 0))
+    return d if ahead == slow else (-d[0], -d[1])

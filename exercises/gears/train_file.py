@@ -1,0 +1,419 @@
+"""Read a gear-train exercise (TOML with ``[[gear]]`` tables) into the exact model.
+
+The format is documented in the README ("Gear trains"). Tooth counts are whole numbers and
+speeds and modules are read exactly (a decimal as written, ``0.5`` as 1/2), so the tabular
+method's fractions are the notes' own. Every failure is one line naming file:line.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, replace
+from fractions import Fraction
+from pathlib import Path
+from typing import Any, ClassVar
+
+from tarsim.constructions.asks import symbol
+from tarsim.constructions.errors import InputError
+from tarsim.constructions.gears.involute import Involute, check_mesh
+from tarsim.constructions.gears.train import Gear, GearTrain, Mesh, SpeedUnits
+from tarsim.constructions.units import LENGTH_UNITS
+from ..file_numbers import RANGE, _float, in_range
+from ..toml_source import SourceMap, read_source, read_toml
+from ..names import named_in, read_names
+
+__all__ = ["TrainExercise", "load_train", "parse_train"]
+
+_TOP = ("name", "names", "source", "description", "fixed", "units", "gear", "arm", "mesh", "shaft",
+        "input", "involute", "ask")
+MESH_ASKS = ("contact_ratio", "path_of_contact", "arc_of_contact", "pressure_angle",
+             "circular_pitch", "interference", "least_teeth")
+"""What the involute mesh answers (with ``[involute]``)."""
+_SPEEDS = ("rpm", "rad/s")
+
+
+@dataclass(frozen=True)
+class TrainExercise:
+    """A gear train and what is asked of it: speeds ``omega<n>``, ratios
+    ``omega<a>/omega<b>``."""
+
+    chapter: ClassVar[str] = "gears"
+    id: str
+    train: GearTrain
+    asks: tuple[str, ...]
+    description: str = ""
+    involute: Involute | None = None
+    names: tuple[tuple[str, str], ...] = ()
+    """The train's name in other languages (``[names]``, :mod:`.names`)."""
+
+    @property
+    def name(self) -> str:
+        """The train's name, as the file gives it."""
+        return self.train.name
+
+    def named_in(self, lang: str) -> TrainExercise:
+        """The same exercise with the train named in ``lang``, if its file does."""
+        return named_in(self, lang)
+
+    def renamed(self, name: str) -> TrainExercise:
+        """The same exercise, its train called ``name``."""
+        return replace(self, train=replace(self.train, name=name))
+
+
+def load_train(path: str | Path, exercise_id: str | None = None) -> TrainExercise:
+    """Read a gear-train exercise file.
+
+    Raises
+    ------
+    InputError
+        Naming file:line and the setting.
+    """
+    path = Path(path)
+    return parse_train(read_source(path), str(path), exercise_id or path.stem)
+
+
+def parse_train(text: str, filename: str = "<string>", exercise_id: str = "train",
+                data: dict[str, Any] | None = None) -> TrainExercise:
+    """Parse a gear-train exercise from TOML text (see :func:`load_train`); ``data``, the
+    tables already parsed from it, spares a second parse."""
+    data = read_toml(text, filename) if data is None else data
+    return _Reader(data, SourceMap(text), filename, exercise_id).read()
+
+
+class _Reader:
+    def __init__(self, data: dict[str, Any], where: SourceMap, filename: str, eid: str):
+        self.data, self.where, self.filename, self.id = data, where, filename, eid
+
+    def fail(self, message: str, table: str | None = None, key: str | None = None,
+             index: int = 0) -> InputError:
+        line = (self.where.key(key, table or None, index) if key else None) or (
+            self.where.header(table, index) if table else None)
+        return InputError(message, file=self.filename, line=line,
+                          key=f"{table}.{key}" if table and key else table or key)
+
+    def read(self) -> TrainExercise:
+        for k in self.data:
+            if k not in _TOP:
+                raise self.fail(f"unknown table or setting '{k}' in a gear-train file; expected "
+                                f"{', '.join(_TOP)}", key=k)
+        units = self.units()
+        gears = self.gears(units)
+        arm, arm_name, planets = self.arm()
+        meshes = self.meshes()
+        shafts = self.shafts()
+        fixed = self.fixed()
+        member, speed = self.input(units)
+        torque, power = self.load()
+        train = GearTrain(gears, meshes, shafts, arm, arm_name, fixed, member, speed, units,
+                          planets, torque, power, self.text("name") or self.id, self.filename)
+        try:
+            train.check()
+        except InputError as e:
+            raise self.placed(e) from None
+        involute = self.involute(train)
+        return TrainExercise(self.id, train, self.asks(train, involute),
+                             self.text("description"), involute,
+                             read_names(self.data, self.where, self.filename))
+
+    def placed(self, error: InputError) -> InputError:
+        """A check of the whole train, led by the line of the first gear it names (or of
+        the arm, or the input)."""
+        gears = [g.get("number") if isinstance(g, dict) else None
+                 for g in self.data.get("gear") or []]
+        m = re.search(r"\bgears? (\d+)", error.message)
+        line = None
+        if m and int(m.group(1)) in gears:
+            line = self.where.header("gear", gears.index(int(m.group(1))))
+        elif "arm" in error.message and "arm" in self.data:
+            line = self.where.header("arm")
+        elif "input" in error.message and "input" in self.data:
+            line = self.where.header("input")
+        else:                 # a member named that is none: where the file names it
+            m = re.search(r"\bmember (\d+)", error.message)
+            named = int(m.group(1)) if m else None
+            if named is not None and named == self.data.get("fixed"):
+                line = self.where.key("fixed")
+            elif named is not None and named == (self.data.get("input") or {}).get("member"):
+                line = self.where.key("member", "input")
+        return InputError(error.message, file=self.filename, line=line)
+
+    def known(self, t: dict[str, Any], keys: tuple[str, ...], table: str, index: int = 0
+              ) -> None:
+        """Refuse a setting ``table`` does not have (a misspelt key is never ignored)."""
+        for k in t:
+            if k not in keys:
+                raise self.fail(f"unknown {table} setting '{k}'; expected "
+                                f"{', '.join(keys)}", table, k, index)
+
+    def text(self, key: str) -> str:
+        v = self.data.get(key, "")
+        if not isinstance(v, str):
+            raise self.fail(f"{key} must be text in quotes", key=key)
+        return v
+
+    def units(self) -> SpeedUnits:
+        t = self.data.get("units", {})
+        if not isinstance(t, dict):
+            raise self.fail("must be a table: [units] speed = \"rpm\"", table="units")
+        self.known(t, ("speed", "length"), "units")
+        speed, length = t.get("speed", "rpm"), t.get("length", "mm")
+        if speed not in _SPEEDS:
+            raise self.fail(f"unknown speed unit '{speed}'; use rpm or rad/s", "units", "speed")
+        if length not in LENGTH_UNITS:
+            raise self.fail(f"unknown length unit '{length}'; use "
+                            f"{', '.join(LENGTH_UNITS)}", "units", "length")
+        return SpeedUnits(speed, length)
+
+    def integer(self, v: Any, what: str, table: str, key: str, index: int = 0) -> int:
+        if isinstance(v, bool) or not isinstance(v, int) or v <= 0 or v > 100_000:
+            raise self.fail(f"{what} must be a whole number from 1 to 100000, got {_shown(v)}",
+                            table, key, index)
+        return v
+
+    def exact(self, v: Any, what: str, table: str, key: str, index: int = 0) -> Fraction:
+        """A number as written: an integer, or a decimal taken at its digits."""
+        if isinstance(v, bool) or not isinstance(v, (int, float)):
+            raise self.fail(f"{what} must be a number, got {_shown(v)}", table, key, index)
+        if not in_range(_float(v)):
+            raise self.fail(f"{what} must be {RANGE}, got {_shown(v)}", table, key, index)
+        return Fraction(repr(v)) if isinstance(v, float) else Fraction(v)
+
+    def gears(self, units: SpeedUnits) -> tuple[Gear, ...]:
+        raw = self.data.get("gear")
+        if not isinstance(raw, list) or not raw:
+            raise self.fail("list the gears as [[gear]] tables", key="gear")
+        out: list[Gear] = []
+        for i, t in enumerate(raw):
+            if not isinstance(t, dict):
+                raise self.fail("each [[gear]] must be a table", "gear", index=i)
+            for k in t:
+                if k not in ("number", "name", "teeth", "module", "diametral_pitch", "carrier"):
+                    raise self.fail(f"unknown gear setting '{k}'; expected number, name, teeth, "
+                                    "module (or diametral_pitch), carrier", "gear", k, i)
+            for k in ("number", "teeth"):
+                if k not in t:
+                    raise self.fail(f"a gear needs its {k}", "gear", index=i)
+            n = self.integer(t["number"], "a gear's number", "gear", "number", i)
+            if any(g.number == n for g in out):
+                raise self.fail(f"gear {n} is listed twice", "gear", "number", i)
+            module = None
+            if "module" in t and "diametral_pitch" in t:
+                raise self.fail("give a gear's module or its diametral pitch, not both", "gear",
+                                "diametral_pitch", i)
+            if "diametral_pitch" in t:     # P teeth per inch of pitch diameter: m = 1 in / P
+                pitch = self.exact(t["diametral_pitch"], "a diametral pitch", "gear",
+                                   "diametral_pitch", i)
+                if pitch <= 0:
+                    raise self.fail("a diametral pitch must be positive", "gear",
+                                    "diametral_pitch", i)
+                module = Fraction(254, 10000) / pitch
+            if "module" in t:
+                module = self.exact(t["module"], "a module", "gear", "module", i)
+                if module <= 0:
+                    raise self.fail("a module must be positive", "gear", "module", i)
+                module *= Fraction(repr(LENGTH_UNITS[units.length]))
+            carrier = (self.integer(t["carrier"], "a carrier", "gear", "carrier", i)
+                       if "carrier" in t else None)
+            name = t.get("name", "")
+            if not isinstance(name, str):
+                raise self.fail("a gear's name must be text", "gear", "name", i)
+            out.append(Gear(n, self.integer(t["teeth"], "teeth", "gear", "teeth", i), module,
+                            carrier, name))
+        return tuple(out)
+
+    def arm(self) -> tuple[int | None, str, int]:
+        t = self.data.get("arm")
+        if t is None:
+            return None, "", 1
+        if not isinstance(t, dict) or "number" not in t:
+            raise self.fail("the arm needs its number, e.g. number = 3", "arm")
+        self.known(t, ("number", "name", "planets"), "arm")
+        if not isinstance(t.get("name", ""), str):
+            raise self.fail("the arm's name must be text", "arm", "name")
+        n = self.integer(t["number"], "the arm's number", "arm", "number")
+        planets = self.integer(t.get("planets", 1), "the number of planets", "arm", "planets")
+        gears = self.data.get("gear") or []
+        if any(isinstance(g, dict) and g.get("number") == n for g in gears):
+            raise self.fail(f"member {n} is both a gear and the arm", "arm", "number")
+        return n, t.get("name", ""), planets
+
+    def meshes(self) -> tuple[Mesh, ...]:
+        out = []
+        for i, t in enumerate(self.data.get("mesh") or []):
+            pair = t.get("gears") if isinstance(t, dict) else None
+            if not (isinstance(pair, list) and len(pair) == 2 and all(
+                    isinstance(g, int) and not isinstance(g, bool) for g in pair)):
+                raise self.fail("a mesh names its two gears, gears = [2, 4]", "mesh", "gears", i)
+            self.known(t, ("gears", "kind"), "mesh", i)
+            kind = t.get("kind", "external")
+            if kind not in ("external", "internal"):
+                raise self.fail(f"unknown mesh kind '{kind}'; use external or internal",
+                                "mesh", "kind", i)
+            if pair[0] == pair[1]:
+                raise self.fail(f"gear {pair[0]} cannot mesh with itself", "mesh", "gears", i)
+            out.append(Mesh(pair[0], pair[1], kind == "internal"))
+        if not out:
+            raise self.fail("list the meshes as [[mesh]] tables, gears = [2, 4]", key="mesh")
+        return tuple(out)
+
+    def shafts(self) -> tuple[tuple[int, ...], ...]:
+        out = []
+        for i, t in enumerate(self.data.get("shaft") or []):
+            members = t.get("members") if isinstance(t, dict) else None
+            if not (isinstance(members, list) and len(members) >= 2 and all(
+                    isinstance(m, int) and not isinstance(m, bool) for m in members)):
+                raise self.fail("a shaft names the members that turn together, members = "
+                                "[3, 4]", "shaft", "members", i)
+            self.known(t, ("members",), "shaft", i)
+            if len(set(members)) < len(members):
+                raise self.fail("a shaft names a member twice", "shaft", "members", i)
+            out.append(tuple(members))
+        return tuple(out)
+
+    def fixed(self) -> int | None:
+        v = self.data.get("fixed")
+        if v is None:
+            return None
+        if isinstance(v, list):
+            if len(v) == 1:
+                v = v[0]
+            else:
+                raise self.fail(f"{len(v)} fixed members ({', '.join(map(str, v))}): a train "
+                                "holds one still", key="fixed")
+        return self.integer(v, "the fixed member", "", "fixed")
+
+    def input(self, units: SpeedUnits) -> tuple[int, Fraction]:
+        t = self.data.get("input")
+        if not isinstance(t, dict) or "member" not in t or "speed" not in t:
+            raise self.fail("give the driving member and its speed: member = 2, "
+                            f"speed = 80 ({units.speed}), sense = \"cw\"", "input")
+        member = self.integer(t["member"], "the input member", "input", "member")
+        speed = self.exact(t["speed"], "the input speed", "input", "speed")
+        sense = t.get("sense", "ccw")
+        if sense not in ("cw", "ccw"):
+            raise self.fail(f"unknown sense '{sense}'; use cw or ccw", "input", "sense")
+        if speed == 0:
+            raise self.fail("the input speed is 0: nothing turns", "input", "speed")
+        for k in t:
+            if k not in ("member", "speed", "sense", "torque", "power"):
+                raise self.fail(f"unknown input setting '{k}'; expected member, speed, sense, "
+                                "torque (N·m) or power (W)", "input", k)
+        return member, speed if sense == "ccw" else -speed
+
+    def load(self) -> tuple[Fraction | None, Fraction | None]:
+        """The input's torque (N·m) or power (W), if given: one of them, positive."""
+        t = self.data["input"]
+        given = [k for k in ("torque", "power") if k in t]
+        if len(given) > 1:
+            raise self.fail("give the input's torque or its power, not both", "input", "power")
+        if not given:
+            return None, None
+        v = self.exact(t[given[0]], f"the input {given[0]}", "input", given[0])
+        if v <= 0:
+            raise self.fail(f"the input {given[0]} must be positive: it drives the train "
+                            "(its sense is the input's)", "input", given[0])
+        return (v, None) if given[0] == "torque" else (None, v)
+
+    def involute(self, train: GearTrain) -> Involute | None:
+        """The involute mesh to draw: a meshing pair, driver first, and its tooth form."""
+        t = self.data.get("involute")
+        if t is None:
+            return None
+        if not isinstance(t, dict):
+            raise self.fail("must be a table: [involute] gears = [2, 3]", "involute")
+        for k in t:
+            if k not in ("gears", "pressure_angle", "addendum", "dedendum", "centre_distance"):
+                raise self.fail(f"unknown involute setting '{k}'; expected gears, "
+                                "pressure_angle, addendum, dedendum, centre_distance",
+                                "involute", k)
+        pair = t.get("gears")
+        if not (isinstance(pair, list) and len(pair) == 2 and all(
+                isinstance(g, int) and not isinstance(g, bool) for g in pair)):
+            raise self.fail("name the meshing pair, driver first: gears = [2, 3]",
+                            "involute", "gears")
+        for n in pair:
+            if n not in [g.number for g in train.gears]:
+                raise self.fail(f"there is no gear {n}; the gears are "
+                                f"{', '.join(str(g.number) for g in train.gears)}", "involute",
+                                "gears")
+        angle = float(self.exact(t.get("pressure_angle", 20), "the pressure angle", "involute",
+                                 "pressure_angle"))
+        if not 5.0 <= angle <= 45.0:
+            raise self.fail(f"a pressure angle of {angle:g}° is not a gear's: use 14.5°, 20° "
+                            "or 25° (5° to 45°)", "involute", "pressure_angle")
+        add, ded = (float(self.exact(t.get(k, v), f"the {k}", "involute", k))
+                    for k, v in (("addendum", 1), ("dedendum", 1.25)))
+        if not (0 < add <= 2 and add < ded <= 3):
+            raise self.fail(f"addendum {add:g} and dedendum {ded:g} (in modules) must satisfy "
+                            "0 < addendum ≤ 2 and addendum < dedendum ≤ 3", "involute",
+                            "addendum")
+        distance = None
+        if "centre_distance" in t:
+            distance = float(self.exact(t["centre_distance"], "the centre distance",
+                                        "involute", "centre_distance")) * LENGTH_UNITS[
+                train.units.length]
+        mesh = Involute(pair[0], pair[1], angle, add, ded, distance)
+        try:
+            check_mesh(train, mesh)
+        except InputError as e:
+            raise self.fail(e.message, "involute", "centre_distance" if distance is not None
+                            and "centre distance" in e.message else "gears") from None
+        return mesh
+
+    def asks(self, train: GearTrain, involute: Involute | None = None) -> tuple[str, ...]:
+        t = self.data.get("ask")
+        every = tuple(f"omega{m}" for m in train.members)
+        if t is None:
+            return every
+        find = t.get("find") if isinstance(t, dict) else None
+        if isinstance(t, dict):
+            self.known(t, ("find",), "ask")
+        if not (isinstance(find, list) and find and all(isinstance(q, str) for q in find)):
+            raise self.fail('give find = [...], such as "omega4" or "omega5/omega2"',
+                            "ask", "find")
+        torques = tuple(f"torque{m}" for m in train.members)
+        for q in find:
+            if q in MESH_ASKS:
+                if involute is None:
+                    raise self.fail(f"cannot find '{q}' without the mesh to draw: give "
+                                    "[involute] gears = [2, 3]", "ask", "find")
+                continue
+            parts = q.split("/")
+            if q in torques and train.input_torque is None and train.input_power is None:
+                raise self.fail(f"cannot find '{q}' without the input's torque or power: give "
+                                "torque = … (N·m) or power = … (W) in [input]", "ask", "find")
+            if q not in torques and (len(parts) > 2 or any(p not in every for p in parts)):
+                raise self.fail(f"cannot find '{q}' for this train; ask {', '.join(every)}, a "
+                                f"ratio such as {every[-1]}/{every[0]}, or a torque "
+                                f"{torques[-1]}", "ask", "find")
+            if len(parts) == 2 and train.fixed is not None and int(
+                    parts[1].removeprefix("omega")) in train.body(train.fixed):
+                held = int(parts[1].removeprefix("omega"))
+                raise self.fail(f"{q} divides by the speed of member {held}, which is "
+                                + ("fixed" if held == train.fixed else
+                                   f"on one shaft with the fixed member {train.fixed}")
+                                + "; ask a ratio over a turning member", "ask", "find")
+        loaded = {int(q.removeprefix("torque")) for q in find if q in torques}
+        loaded -= {train.input_member, train.fixed}
+        if len(loaded) > 1:
+            raise self.fail(f"torques on {len(loaded)} members besides the input and the fixed "
+                            "one: the balance of power gives one output's", "ask", "find")
+        if f"torque{train.fixed}" in find and not loaded:
+            raise self.fail("the fixed member's holding torque needs the output's: ask the "
+                            "output's torque too", "ask", "find")
+        return tuple(find)
+
+
+def _shown(v: Any) -> str:
+    """A value the file gave, as a refusal quotes it: a long integer short (1e+07)."""
+    if isinstance(v, int) and not isinstance(v, bool) and abs(v) >= 1_000_000:
+        digits = str(abs(v))
+        return f"{'-' if v < 0 else ''}{digits[0]}.{digits[1:3]}e+{len(digits) - 1:02d}"
+    return f"'{v!r}'" if isinstance(v, float) else repr(v)     # a float quoted as written
+
+
+def ask_symbol(name: str) -> str:
+    """"omega5/omega2" as the course writes it: ω5/ω2; "torque5" as T5."""
+    if name.startswith("torque"):
+        return f"T{name.removeprefix('torque')}"
+    return "/".join(symbol(p) for p in name.split("/"))

@@ -1,0 +1,465 @@
+"""A gear-train exercise solved: every speed by the notes' method, each beside the Willis
+reference, the steps, results.json and the table as a figure.
+
+The tabular method and the Willis system are both exact, so a speed passes only when the
+two are the same fraction: its relative error is 0, or the check fails.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass
+from fractions import Fraction
+from functools import cached_property
+from typing import Any
+
+from tarsim.constructions.checks import CEILING
+from tarsim.constructions.errors import InputError
+from tarsim.constructions.gears.involute import InvoluteMesh, draw_involute_mesh, least_teeth_drawn
+from tarsim.constructions.gears.kutzbach import DRAWN, Kutzbach, draw_kutzbach, undrawable
+from tarsim.constructions.gears.tabular import TrainSpeeds, fraction_text, tabulate
+from tarsim.constructions.gears.torques import balance, say_balance
+from tarsim.constructions.narration import (narrate, numeral, numerals, phrase, significant, spoken,
+                                            unit_words, words)
+from tarsim.constructions.reference.gear_mesh import (MeshReference, involute_miss, least_teeth,
+                                                      mesh_reference)
+from tarsim.constructions.reference.willis import willis_speeds
+from tarsim.graphics.gears.involute_figure import draw_involute_figure
+from tarsim.graphics.gears.kutzbach_figure import draw_kutzbach_figure
+from tarsim.graphics.gears.train_schematic import draw_train_schematic
+from tarsim.graphics.train_table import draw_train_table
+from ..linkages.solution_files import ChapterFiles
+from .train_file import MESH_ASKS, TrainExercise, ask_symbol
+
+__all__ = ["TrainSolution", "solve_train"]
+
+
+@dataclass(frozen=True)
+class TrainQuantity:
+    """One asked speed or ratio: exact by the method and by Willis, and in SI."""
+
+    name: str
+    exact: Fraction
+    reference: Fraction
+    si: float
+    method: str
+    tolerance: float = 0.0
+    """0 for an exact quantity (a speed, a ratio, a count); a drawn length, angle or ratio
+    agrees within this, in its own units: a few roundings of the drawing's size."""
+    matched: bool = True
+    """False when what the number counts differs (the interference's gears), though the
+    counts may agree."""
+
+    @property
+    def passed(self) -> bool:
+        """True when the method's value is the reference's (within a drawing's rounding)."""
+        if not self.matched:
+            return False
+        if not self.tolerance:
+            return self.exact == self.reference
+        return abs(float(self.exact) - float(self.reference)) <= self.tolerance
+
+    @property
+    def rel_error(self) -> float:
+        """0 when the two are one; else how far apart, relative (1 for things counted that
+        differ)."""
+        if not self.matched:
+            return 1.0
+        if self.exact == self.reference:
+            return 0.0
+        size = abs(self.reference) if self.tolerance and self.reference else max(
+            abs(self.reference), 1)
+        return float(abs(self.exact - self.reference) / size)
+
+
+@dataclass(frozen=True)
+class TrainSolution(ChapterFiles):
+    """A solved gear train (see :func:`solve_train`)."""
+
+    exercise: TrainExercise
+    found: TrainSpeeds
+    reference: dict[int, Fraction]
+    diagram: Kutzbach | None = None
+    """The velocity diagram, drawn for a planetary train whose meshes all touch the main
+    axis: its speeds are read as slopes and checked against the table's."""
+    mesh: InvoluteMesh | None = None
+    """The involute mesh drawn, when the exercise gives ``[involute]``."""
+    mesh_reference: MeshReference | None = None
+    @property
+    def train(self):
+        """The train solved."""
+        return self.exercise.train
+
+    @cached_property
+    def quantities(self) -> dict[str, TrainQuantity]:
+        """Each asked quantity: a member's speed (file units; SI rad/s), or a ratio."""
+        out = {}
+        per = self.train.units.per_rad_s
+        torques, torques_ref = self._torques(self.found.speeds), self._torques(self.reference)
+        for name in self.exercise.asks:
+            if name in MESH_ASKS:
+                out[name] = self._mesh_quantity(name)
+                continue
+            if name.startswith("torque"):
+                m = int(name.removeprefix("torque"))
+                out[name] = TrainQuantity(name, torques[m], torques_ref[m], float(torques[m]),
+                                          "balance of power")
+                continue
+            parts = [int(p.removeprefix("omega")) for p in name.split("/")]
+            if len(parts) == 1:
+                got, ref = self.found.speeds[parts[0]], self.reference[parts[0]]
+                out[name] = TrainQuantity(name, got, ref, float(got) * per, self.found.method)
+            else:
+                a, b = parts
+                got = self.found.speeds[a] / self.found.speeds[b]
+                ref = self.reference[a] / self.reference[b]
+                out[name] = TrainQuantity(name, got, ref, float(got), self.found.method)
+        return out
+
+    @property
+    def output(self) -> int | None:
+        """The member whose torque is asked besides the input's and the fixed one's."""
+        t = self.train
+        return next((int(q.removeprefix("torque")) for q in self.exercise.asks
+                     if q.startswith("torque")
+                     and int(q.removeprefix("torque")) not in (t.input_member, t.fixed)), None)
+
+    def _mesh_quantity(self, name: str) -> TrainQuantity:
+        """A number read off the involute mesh, beside the formula's."""
+        got, ref = self.mesh, self.mesh_reference
+        if name == "least_teeth":
+            d = self.exercise.involute
+            a, b = sorted((self.train.gear(d.pinion), self.train.gear(d.wheel)),
+                          key=lambda g: g.teeth)
+            ratio = b.teeth / a.teeth
+            drawn = least_teeth_drawn(float(a.module), ratio, d)
+            return TrainQuantity(name, Fraction(drawn), Fraction(least_teeth(ratio,
+                                 d.pressure_angle, d.addendum)), float(drawn),
+                                 "involute mesh, drawn with fewer teeth until clear")
+        if name == "interference":
+            # The gears that interfere, counted; compared as the gears themselves.
+            a, b = Fraction(len(got.interference)), Fraction(len(ref.interference))
+            return TrainQuantity(name, a, b, float(a), "involute mesh",
+                                 matched=got.interference == ref.interference)
+        attr = {"contact_ratio": "contact_ratio", "path_of_contact": "path",
+                "arc_of_contact": "arc", "pressure_angle": "pressure_angle",
+                "circular_pitch": "circular_pitch"}[name]
+        value, want = getattr(got, attr), getattr(ref, attr)
+        # Drawn on coordinates of the centre distance's size: a length is good to a few
+        # thousand roundings of it (the path is a difference of two such lengths), the
+        # contact ratio to that over the base pitch, the arc over cos φ′, an angle to that
+        # over the radii it is measured on.
+        size = DRAWN * math.dist(*got.centres.values())
+        allowed = {"contact_ratio": size / got.base_pitch,
+                   "arc_of_contact": size / math.cos(got.pressure_angle),
+                   "pressure_angle": size / got.radii["base2"]}.get(name, size)
+        return TrainQuantity(name, Fraction(value), Fraction(want), value, "involute mesh",
+                             allowed)
+
+    def _torques(self, speeds: dict[int, Fraction]) -> dict[int, Fraction]:
+        return balance(self.train, speeds, self.output)
+
+    @property
+    def passed(self) -> bool:
+        """True when every quantity is the Willis fraction itself, and every speed the
+        diagram reads agrees with the table's."""
+        return (all(q.passed for q in self.quantities.values()) and not self.diagram_misses
+                and not self.profile_misses)
+
+    @property
+    def profile_misses(self) -> list[str]:
+        """The drawn tooth-profile points (by step) off the involute their gear's base circle
+        and start give, beyond a drafting act's rounding of the gear's size."""
+        if self.mesh is None:
+            return []
+        out, c = [], self.mesh.construction
+        for gear, refs in self.mesh.profiles.items():
+            centre = self.mesh.centres[gear]
+            base = self.mesh.radii["base2" if gear == self.exercise.involute.pinion
+                                   else "base3"]
+            for ref in refs:
+                if involute_miss(c.output(ref).xy, centre, base, self.mesh.starts[gear]) > \
+                        1e-9 * base:
+                    out.append(ref)
+        return out
+
+    def diagram_check(self, member: int) -> tuple[float, float]:
+        """How far the velocity diagram reads ``member``'s ω from the table's, and how far
+        the drawing's rounding lets it, both relative to the fastest member the diagram
+        draws (its velocities are drawn at that size, so a member at rest has a scale too).
+
+        The rounding is the drawing's coordinates' over the span of radii the line was read
+        across (:meth:`~tarsim.constructions.gears.kutzbach.Kutzbach.rounding`), held to
+        :data:`~tarsim.constructions.checks.CEILING`: never as wide as the speeds drawn.
+        """
+        k, per = self.diagram, self.train.units.per_rad_s
+        # the input turns (a speed of 0 is refused), so the fastest is no 0
+        fastest = max(abs(float(self.found.speeds[m])) for m in k.omegas) * per
+        miss = abs(k.omegas[member] - float(self.found.speeds[member]) * per) / fastest
+        return miss, min(k.rounding(member, fastest) / fastest, CEILING)
+
+    @property
+    def diagram_misses(self) -> list[int]:
+        """The members whose ω the velocity diagram reads away from the table's, beyond
+        its drawing's rounding (:meth:`diagram_check`)."""
+        if self.diagram is None:
+            return []
+        out = []
+        for m in self.diagram.omegas:
+            miss, allowed = self.diagram_check(m)
+            if miss > allowed:
+                out.append(m)
+        return out
+
+    @property
+    def failures(self) -> list[str]:
+        """The quantities the Willis system disagrees with, and the speeds the diagram
+        reads wrong."""
+        return ([q.name for q in self.quantities.values() if not q.passed]
+                + [f"omega{m} (velocity diagram)" for m in self.diagram_misses]
+                + [f"the involute at {r}" for r in self.profile_misses])
+
+    # ----- the files --------------------------------------------------------------------------
+    def lines(self) -> list[str]:
+        """What the command line prints: each quantity, exact and checked."""
+        unit = self.train.units.speed
+        out = []
+        for q in self.quantities.values():
+            if q.name in MESH_ASKS:
+                value = _mesh_text(q.name, float(q.exact), self.mesh)
+                verdict = "check ok" if q.passed else "check FAILED"
+                out.append(f"{q.name} = {value:<30} {verdict} (formula: "
+                           f"{_mesh_text(q.name, float(q.reference), self.mesh_reference)})   "
+                           f"{q.method}")
+                continue
+            if q.name.startswith("torque"):
+                sense = "" if q.exact == 0 else (" ccw" if q.exact > 0 else " cw")
+                value = f"{float(abs(q.exact)):.6g} N·m{sense}"
+            elif "/" in q.name:
+                value = f"{fraction_text(q.exact)} ({float(q.exact):.6g})"
+            else:
+                sense = "" if q.exact == 0 else (" ccw" if q.exact > 0 else " cw")
+                value = f"{fraction_text(abs(q.exact))} {unit}{sense} ({float(q.exact):.6g})"
+            verdict = "check ok" if q.passed else "check FAILED"
+            out.append(f"{ask_symbol(q.name)} = {value:<28} {verdict} (Willis: "
+                       f"{fraction_text(q.reference)})   {q.method}")
+        return out
+
+    def steps(self) -> str:
+        """steps.md: the method's steps, the table, and the results."""
+        ex, train, lang = self.exercise, self.train, spoken()
+        lines = [f"# {narrate(phrase('md.title', name=train.name), lang)}", ""]
+        if ex.description:
+            lines += [ex.description, ""]
+        lines += [f"## {words('The train')} (`train.svg`)", ""]
+        lines += [f"- {narrate(p, lang)}" for p in train.describe()]
+        method = "The tabular method" if self.found.table else "The train value"
+        lines += ["", f"## {words(method)} (`{self._stem}.svg`)", ""]
+        steps = list(self.found.steps) + say_balance(self.train, self.found.speeds,
+                                                     self.output)
+        lines += [f"{k}. {narrate(p, lang)}" for k, p in enumerate(steps, 1)]
+        if self.found.xy:
+            lines += ["", words("The other common form:"), ""]
+            lines += [f"- {narrate(p, lang)}" for p in self.found.xy]
+        for part, stem, drawn in (("The involute mesh", "mesh", self.mesh),
+                                  ("The velocity (Kutzbach) diagram", "kutzbach", self.diagram)):
+            if drawn is not None:
+                lines += ["", f"## {words(part)} (`{stem}.svg`)", ""]
+                said = [narrate(s, lang) for s in drawn.construction.steps.values()]
+                lines += [f"{k}. {t}" for k, t in enumerate((t for t in said if t), 1)]
+        heads, rows = self._table()
+        lines += ["", "| | " + " | ".join(heads) + " |",
+                  "|---|" + "---|" * len(heads)]
+        lines += [f"| {name} | " + " | ".join(cells) + " |" for name, cells in rows]
+        columns = " | ".join(words(c) for c in ("quantity", "found", "Willis", "the same",
+                                                 "method"))
+        lines += ["", f"## {narrate(phrase('md.results'), lang)}", "", f"| {columns} |",
+                  "|---|---|---|---|---|"]
+        for q in self.quantities.values():
+            if q.name in MESH_ASKS:         # a length, an angle, a ratio: not a fraction
+                found = _mesh_text(q.name, float(q.exact), self.mesh)
+                willis = _mesh_text(q.name, float(q.reference), self.mesh_reference)
+            else:
+                found, willis = fraction_text(q.exact), fraction_text(q.reference)
+            lines.append(f"| {ask_symbol(q.name)} | {found} | {willis} | "
+                         f"{words('yes' if q.passed else 'NO')} | {words(q.method)} |")
+        return "\n".join(lines) + "\n"
+
+    @property
+    def _stem(self) -> str:
+        return "table" if self.found.table else "train-value"
+
+    def _table(self) -> tuple[list[str], list[tuple[str, list[str]]]]:
+        """The table's heads and rows, as the notes set them (speeds in the file's unit), in
+        the language being spoken."""
+        train, found, unit = self.train, self.found, self.train.units.speed
+        heads = [_head(train, m) for m in train.members]
+        speeds = [numerals(significant(float(found.speeds[m]))) for m in train.members]
+        t = found.table
+        if t is None:
+            return heads, [(words("speed ({unit}, ccw +)", unit=unit_words(unit)), speeds)]
+
+        def row(turns: dict[int, Fraction]) -> list[str]:
+            # a gear on a side shaft has no place in the table: its cell is blank
+            return [numerals(fraction_text(turns[m], True)) if m in turns else ""
+                    for m in train.members]
+
+        return heads, [
+            (words("whole train locked, {turn}", turn=numerals("+1")), row(t.locked)),
+            (words("arm {arm} held, {fixed} turned {turn}", arm=str(train.arm),
+                   fixed=str(train.fixed), turn=numerals("−1")), row(t.held)),
+            (words("total"), row(t.total)),
+            (words("× {scale} {unit}: speed", scale=numerals(fraction_text(t.scale)),
+                   unit=unit_words(unit)), speeds)]
+
+    @property
+    def figures(self) -> dict[str, Any]:
+        """Each figure by its file stem: the table (or the speeds of an ordinary train)."""
+        heads, rows = self._table()
+        unit = self.train.units.speed
+        notes = [words("Speeds in {unit}, counter-clockwise positive. Each is checked by the "
+                       "Willis equation of every mesh, solved as one linear system: the same "
+                       "fraction.", unit=unit_words(unit))]
+        ruled = (2, 3) if self.found.table else ()
+        title = (words("{name}: the tabular method", name=self.train.name) if self.found.table
+                 else self.train.name)
+        out = {self._stem: draw_train_table(title, heads, rows, ruled=ruled, notes=notes)}
+        # The shafts that leave it: the members a ratio or a torque is asked of.
+        ends = {int(n) for q in self.exercise.asks if "/" in q or q.startswith("torque")
+                for n in re.findall(r"\d+", q)}
+        out["train"] = draw_train_schematic(self.train, self.train.name, tuple(sorted(ends)))
+        if self.diagram is not None:
+            out["kutzbach"] = draw_kutzbach_figure(self.train, self.diagram, self.train.name)
+        if self.mesh is not None:
+            out["mesh"] = draw_involute_figure(self.train, self.mesh, self.train.name)
+        return out
+
+    @property
+    def results(self) -> dict[str, Any]:
+        """results.json: every asked quantity in SI with its exact value and reference."""
+        per = self.train.units.per_rad_s
+        qs = {}
+        for q in self.quantities.values():
+            speed = q.name.startswith("omega") and "/" not in q.name
+            to_si = per if speed else 1.0          # a speed's exact value is in the file's unit
+            entry: dict[str, Any] = {"value": q.si}
+            reference: dict[str, Any] = {"value": float(q.reference) * to_si}
+            if q.name not in MESH_ASKS:            # drawn lengths and angles are not exact
+                entry["exact"] = _plain(q.exact)
+                reference["exact"] = _plain(q.reference)
+            if speed:
+                entry["unit"] = self.train.units.speed
+                entry["rpm"] = (float(q.exact) if entry["unit"] == "rpm"
+                                else q.si * 60 / (2 * math.pi))
+            if q.name == "interference":
+                entry["gears"] = list(self.mesh.interference)
+                reference["gears"] = list(self.mesh_reference.interference)
+            qs[q.name] = {**entry, "reference": reference, "rel_error": q.rel_error,
+                          "method": q.method}
+            m = q.name.removeprefix("omega")
+            if self.diagram is not None and q.name.startswith("omega") and "/" not in q.name \
+                    and int(m) in self.diagram.omegas:          # not a side shaft's gear
+                miss, allowed = self.diagram_check(int(m))
+                qs[q.name]["velocity_diagram"] = {
+                    "value": self.diagram.said(int(m)), "rel_error": miss,
+                    "tolerance": allowed}
+        return {"exercise": self.exercise.id, "positions": [], "quantities": qs}
+
+
+def _plain(x: Fraction) -> str:
+    """An exact value as results.json writes it: "-3/7", ASCII minus."""
+    return fraction_text(x).replace("−", "-")
+
+
+def _mesh_text(name: str, value: float, mesh) -> str:
+    """A mesh quantity as the command line and steps.md say it, in the language spoken: mm,
+    degrees, a ratio, the gears."""
+    if name in ("path_of_contact", "arc_of_contact", "circular_pitch"):
+        return f"{numeral(value * 1e3)} mm"
+    if name == "pressure_angle":
+        return f"{numeral(math.degrees(value))}°"
+    if name == "least_teeth":
+        return words("{n} teeth on the pinion", n=numeral(value, ".0f"))
+    if name == "interference":
+        gears = mesh.interference
+        return (words("none") if not gears else
+                words("the tips of gear {gears} cut into the other's flank",
+                      gears=f" {words('and')} ".join(map(str, gears))))
+    return numeral(value)
+
+
+def _head(train, m: int) -> str:
+    """A column's heading: "2 sun", "3 arm" (the name in the language being spoken, where it
+    has a word for it)."""
+    name = (train.arm_name or "arm") if m == train.arm else train.gear(m).name
+    return f"{m} {words(name)}".strip()
+
+
+def solve_train(ex: TrainExercise) -> TrainSolution:
+    """Every speed of ``ex``'s train by the notes' method, and by the Willis system.
+
+    Raises
+    ------
+    InputError
+        If the train does not hang together or its input cannot drive it.
+    """
+    found = tabulate(ex.train)
+    train = ex.train
+    reference = willis_speeds(train)
+    _refuse_beyond_floats(train, found.speeds)
+    _refuse_still_ratios(ex, found.speeds, reference)
+    drawable = found.table is not None and undrawable(train) is None
+    diagram = draw_kutzbach(train, found.speeds) if drawable else None
+    mesh = ref = None
+    if ex.involute is not None:
+        d = ex.involute
+        mesh = draw_involute_mesh(train, d)
+        a, b = train.gear(d.pinion), train.gear(d.wheel)
+        ref = mesh_reference(float(a.module), (a.teeth, b.teeth), (a.number, b.number),
+                             d.pressure_angle, d.addendum, d.centre_distance)
+    return TrainSolution(ex, found, reference, diagram, mesh, ref)
+
+
+_FASTEST = 100
+"""No member turns faster than 1e100 of the file's unit, nor (turning) slower than 1e-100:
+beyond, a speed or a ratio of two leaves what a float holds (1e±308)."""
+
+
+def _refuse_beyond_floats(train, speeds: dict[int, Fraction]) -> None:
+    """Refuse a train whose tooth ratios carry a speed beyond :data:`_FASTEST`'s range (a
+    chain of many stages of 100000 teeth to 1)."""
+    for m, w in speeds.items():
+        if w and not -_FASTEST <= _exponent(w) <= _FASTEST:
+            raise InputError(f"{train.label(m)} would turn about 1e{_exponent(w):+d} "
+                             f"{train.units.speed}: the tooth ratios carry its speed beyond "
+                             f"1e±{_FASTEST}; no train turns so, check the teeth",
+                             file=train.source or None)
+
+
+def _exponent(x: Fraction) -> int:
+    """The power of ten of ``x``'s size, from its digits (it may be beyond a float)."""
+    x = abs(x)
+    e = len(str(x.numerator)) - len(str(x.denominator))
+    return e if x >= Fraction(10) ** e else e - 1
+
+
+def _refuse_still_ratios(ex: TrainExercise, *speeds: dict[int, Fraction]) -> None:
+    """Refuse a ratio asked over a member that stands still, though not fixed (a reverted
+    train whose tooth products are equal holds its output still), and a torque asked of
+    such a member as the output (it takes no power, so the balance gives none)."""
+    train = ex.train
+    for q in ex.asks:
+        parts = q.split("/")
+        if len(parts) == 2 and parts[1].startswith("omega"):
+            m = int(parts[1].removeprefix("omega"))
+            if any(s[m] == 0 for s in speeds):
+                raise InputError(f"{q} divides by the speed of {train.label(m)}, which stands "
+                                 "still in this train; ask a ratio over a turning member",
+                                 file=train.source or None)
+        if q.startswith("torque"):
+            m = int(q.removeprefix("torque"))
+            if m not in (train.input_member, train.fixed) and any(s[m] == 0 for s in speeds):
+                raise InputError(f"{q} is asked of {train.label(m)}, which stands still in "
+                                 "this train and takes no power: ask the torque of a turning "
+                                 "member", file=train.source or None)

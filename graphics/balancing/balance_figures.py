@@ -1,0 +1,233 @@
+"""Balancing figures as 001 ch. 7 draws them: the space diagram (end view and side view)
+and the vector polygons, each closed by its balancing (or unbalanced) side.
+
+A polygon's vectors are drawn head to tail, each an arrow with its mass's name at its
+middle; the closing side runs heavy from the last tip back to the start, with its size
+and angle. The end view draws each mass on its radial line at its radius; the side view
+the shaft, each mass's plane and the balancing planes, with their axial positions.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from dataclasses import replace
+
+from tarsim.constructions.narration import numerals, right_to_left, unit_words, words
+from tarsim.constructions.record import Construction, Ref
+from ..figure import Circle, Figure, Path, Text, clear_of, text_width
+from ..labels import LabelPlacer, paper_angle
+from ..scales import draw_caption, nice_per_cm
+from ..symbols import draw_arrow
+
+__all__ = ["draw_polygon", "draw_end_view", "draw_side_view"]
+
+_ROOM = 120.0     # paper (mm) the polygon's or view's extent is fitted to
+_REFERENCE_PAST = 8.0   # mm the 0° radius runs past a mass's circle that lies along it
+_MASS = 1.6       # radius (mm) of a mass's circle in the end view
+
+
+def draw_polygon(c: Construction, tips: Sequence[tuple[str, Ref]], closing: Ref, title: str,
+                 unit: str, reading: tuple[str, str, str], notes: Sequence[str] = (),
+                 names: dict[str, str] | None = None) -> Figure:
+    """The polygon whose tips are ``tips`` in order from its pole, closed by ``closing``;
+    its sizes in ``unit`` per drawing unit, the closing side read as ``reading`` (text,
+    subscript, and the words after it: "(m r)", "A", " = 1.39 kg·m at 3.9°")."""
+    names = names or {}
+    start = c[closing].inputs[1]
+    points = [c.output(start).xy] + [c.output(r).xy for _, r in tips]
+    xs, ys = [x for x, _ in points], [y for _, y in points]
+    extent = max(max(xs) - min(xs), max(ys) - min(ys), 1e-12)
+    per_cm = nice_per_cm(extent, _ROOM)
+    k = 10.0 / per_cm
+
+    def paper(xy) -> tuple[float, float]:
+        return xy[0] * k, -xy[1] * k
+
+    fig = Figure(0.0, 0.0, title=title)
+    centre = [paper(p) for p in points]          # the corners, to keep words outside
+    pole = paper(points[0])
+    fig.add(Circle(pole, 0.7, "dot"))
+    names_at = []                                # (name, tail, tip, the side out)
+    prev = pole
+    for turn, ((name, _), xy) in enumerate(zip(tips, points[1:])):
+        tip = paper(xy)
+        if math.dist(prev, tip) > 0.3:
+            draw_arrow(fig, prev, tip, "vector")
+            # a flat polygon retraces its own line: its names go above and below in turn
+            names_at.append((names.get(name, name), prev, tip,
+                             _outward(prev, tip, centre, 1.0, up=turn % 2 == 0)))
+        prev = tip
+    closes = math.dist(prev, pole) > 0.3
+    if closes:
+        draw_arrow(fig, prev, pole, "vector_result")
+    # Every name is set clear of the drawn polygon and of the names set before it, each
+    # beside its own arrow: a flat polygon's arrows lie on one line, over one another.
+    placer = LabelPlacer(fig)
+    placer.block_drawn()
+    first, last = paper(points[1]), paper(points[-1])
+    away = (2 * pole[0] - first[0] - last[0], 2 * pole[1] - first[1] - last[1])
+    placer.place("o", pole, prefer=paper_angle(away), size=3.0, gap=1.6)
+    for name, tail, tip, side in names_at:
+        mid = ((tail[0] + tip[0]) / 2, (tail[1] + tip[1]) / 2)
+        placer.place(name, mid, prefer=paper_angle(side), spread=math.pi / 2, size=2.8,
+                     italic=False, gap=1.2, rings=(1.0, 1.6, 2.4, 3.4, 4.6), own=(tail, tip))
+    if closes:
+        mid = ((prev[0] + pole[0]) / 2, (prev[1] + pole[1]) / 2)
+        _place_reading(placer, mid, reading, _outward(prev, pole, centre, 1.0, up=False))
+    else:
+        _place_reading(placer, pole, reading, (0.0, 1.0))       # under the names
+    # A polygon that closes on itself has no closing side to point to.
+    said = words("head to tail, each parallel to its radial line; the heavy side closes it") \
+        if closes else words("head to tail, each parallel to its radial line")
+    legend = (("vector", "the vectors"),) + ((("vector_result", "the closing side"),)
+                                            if closes else ())
+    draw_caption(fig, title, [said], per_cm=per_cm, unit=unit, legend=legend, notes=notes)
+    return fig
+
+
+def _place_reading(placer: LabelPlacer, at: tuple[float, float],
+                   reading: tuple[str, str, str], side: tuple[float, float]) -> None:
+    """The closing side's size set clear of everything, beside ``at`` on ``side``."""
+    texts = _reading((0.0, 0.0), reading)
+    x0, y0, x1, y1 = _bounds(texts)
+    (cx, cy), _ = placer.spot(x1 - x0, y1 - y0, at, prefer=paper_angle(side), gap=1.6,
+                              rings=(1.0, 1.6, 2.3, 3.2, 4.5, 6.0))
+    dx, dy = cx - (x0 + x1) / 2, cy - (y0 + y1) / 2
+    for t in texts:
+        placer.fig.add(replace(t, at=(t.at[0] + dx, t.at[1] + dy)))
+    placer.block_label((x0 + dx, y0 + dy, x1 + dx, y1 + dy))
+
+
+def _bounds(texts: Sequence[Text]) -> tuple[float, float, float, float]:
+    """The box that holds all of ``texts``."""
+    boxes = [t.box() for t in texts]
+    return (min(b[0] for b in boxes), min(b[1] for b in boxes), max(b[2] for b in boxes),
+            max(b[3] for b in boxes))
+
+
+def _reading(at: tuple[float, float], reading: tuple[str, str, str]) -> list[Text]:
+    """The closing side's size, centred on ``at``: its symbol (text and subscript) and the
+    words after it.
+
+    Right-to-left words after a symbol are set as two runs, the symbol at the right and
+    the words to its left, so the symbol reads first and keeps its brackets whole. (The
+    shared runs, :func:`~.rtl_runs.lay_runs`, would set "(m r)_A = ۰٫۳" apart as a formula,
+    its unit on the far side of the symbol; here the size reads on into its unit.)
+    """
+    text, sub, tail = reading
+    if not (right_to_left() and sub and tail):
+        return [Text(at, text, 3.0, "middle", False, "normal", sub, tail)]
+    symbol = Text((0.0, 0.0), text, 3.0, "start", False, "normal", sub)
+    words_after = tail.strip()
+    gap = 1.5 * text_width(" ", 3.0)
+    width = symbol.width + gap + text_width(words_after, 3.0)
+    left = at[0] - width / 2
+    return [Text((left + width - symbol.width, at[1]), text, 3.0, "start", False, "normal",
+                 sub),
+            Text((left, at[1]), words_after, 3.0, "start", False)]
+
+
+def _outward(a, b, corners, by: float, *, up: bool) -> tuple[float, float]:
+    """A step of ``by`` square to the side a → b of the closed polygon through ``corners``,
+    out of it: the polygon's turning (its signed area) says which side is out; a flat
+    polygon's words go up or down, as asked."""
+    d = (b[0] - a[0], b[1] - a[1])
+    n = math.hypot(*d)
+    side = (d[1] / n, -d[0] / n)
+    ring = list(corners) + [corners[0]]
+    area = sum(x0 * y1 - x1 * y0 for (x0, y0), (x1, y1) in zip(ring, ring[1:])) / 2
+    scale = max(abs(v) for p in corners for v in p) or 1.0
+    if abs(area) < 1e-9 * scale * scale:
+        sign = -1.0 if (side[1] > 0) == up else 1.0        # paper y runs down: up is −y
+    else:
+        sign = 1.0 if area > 0 else -1.0
+    return (sign * side[0] * by, sign * side[1] * by)
+
+
+def draw_end_view(c: Construction, masses: Sequence[tuple[str, float, str]], title: str,
+                  unit: str, metre: float, found: Sequence[tuple[str, float, float]] = (),
+                  notes: Sequence[str] = ()) -> Figure:
+    """The end view: the shaft's centre O and each mass (step ``P<name>``) on its radial
+    line; ``masses`` gives each (name, radius in m, its label), ``found`` each balancing
+    mass (label, angle in rad, radius in m), drawn dashed."""
+    reach = max([r for _, r, _ in masses] + [r for _, _, r in found]) or 1.0
+    per_cm = nice_per_cm(2.4 * reach / metre, _ROOM * 0.8)
+    k = 10.0 / (per_cm * metre)
+    fig = Figure(0.0, 0.0, title=title)
+    fig.add(Circle((0.0, 0.0), 0.9, "dot"))
+    # "O" in the widest gap between the radial lines (the 0° one among them).
+    radii = _radii(c, masses, found)
+    rays = sorted([0.0] + [a % (2 * math.pi) for _, a in radii])
+    # Two rays along one line leave no gap between them; one ray alone, the whole turn.
+    gaps = [((rays[(i + 1) % len(rays)] - a) % (2 * math.pi) if len(rays) > 1 else 2 * math.pi,
+             a) for i, a in enumerate(rays)]
+    width, at = max(gaps)
+    mid = at + width / 2
+    fig.add(Text((4.2 * math.cos(mid), -4.2 * math.sin(mid) + 1.0), "O", 3.0, "middle", True))
+    # The 0° radius, short; where a mass lies along it, run on past that mass's circle so
+    # it shows, and kept clear of the names.
+    on_it = [r * k for r, a in radii if abs(math.remainder(a, 2 * math.pi)) < math.radians(2.0)]
+    length = max(on_it) + _MASS + _REFERENCE_PAST if on_it else reach * k * 0.35
+    fig.add(Path(((0.0, 0.0), (length, 0.0)), "reference"))
+    taken: list = [(max(on_it) + _MASS, -0.6, length, 0.6)] if on_it else []
+    for name, _, label in masses:
+        x, y = c.output(f"P{name}").xy
+        at = (x * k, -y * k)
+        fig.add(Path(((0.0, 0.0), at), "link"))
+        fig.add(Circle(at, _MASS, "pin"))
+        d = math.hypot(*at) or 1.0
+        out = (at[0] / d, at[1] / d)
+        fig.add(clear_of(Text((at[0] + 4.5 * out[0], at[1] + 4.5 * out[1] + 1.0), label,
+                              2.8, "start" if out[0] > 0.2 else "end" if out[0] < -0.2
+                              else "middle", False), taken, keep=True,
+                         step=(1.5 * out[0], 1.5 * out[1] or 1.5)))
+    for label, angle, radius in found:
+        at = (radius * k * math.cos(angle), -radius * k * math.sin(angle))
+        fig.add(Path(((0.0, 0.0), at), "normal"))
+        fig.add(Circle(at, _MASS, "badge"))
+        out = (math.cos(angle), -math.sin(angle))
+        fig.add(clear_of(Text((at[0] + 4.5 * out[0], at[1] + 4.5 * out[1] + 1.0), label,
+                              2.8, "start" if out[0] > 0.2 else "end" if out[0] < -0.2
+                              else "middle", False), taken, keep=True,
+                         step=(1.5 * out[0], 1.5 * out[1] or 1.5)))
+    draw_caption(fig, title, [words("end view: each mass on its radial line, angles from the "
+                                    "reference radius (the short dashed one), "
+                                    "counter-clockwise")],
+                 per_cm=per_cm, unit=unit, notes=notes,
+                 legend=(("link", "a mass"),) + ((("normal", "a balancing mass found"),)
+                                                 if found else ()))
+    return fig
+
+
+def _radii(c: Construction, masses, found) -> list[tuple[float, float]]:
+    """Each mass's and balancing mass's radius (m) and angle (rad) in the end view."""
+    out = []
+    for name, _, _ in masses:
+        x, y = c.output(f"P{name}").xy
+        out.append((math.hypot(x, y), math.atan2(y, x)))
+    return out + [(radius, angle) for _, angle, radius in found]
+
+
+def draw_side_view(planes: Sequence[tuple[str, float, str]], title: str, unit: str,
+                   metre: float) -> Figure:
+    """The side view: the shaft and each plane at its axial position; ``planes`` gives
+    each (label, position in m, style: "link" for a mass's plane, "normal" for a
+    balancing plane)."""
+    xs = [p for _, p, _ in planes]
+    lo, hi = min(xs), max(xs)
+    span = hi - lo or 1.0
+    per_cm = nice_per_cm(span / metre, _ROOM)
+    k = 10.0 / (per_cm * metre)
+    fig = Figure(0.0, 0.0, title=title)
+    fig.add(Path(((lo * k - 8.0, 0.0), (hi * k + 8.0, 0.0)), "link"))
+    for i, (label, x, style) in enumerate(sorted(planes, key=lambda p: p[1])):
+        fig.add(Path(((x * k, -12.0), (x * k, 12.0)), style))
+        fig.add(Text((x * k, -15.0 - 4.0 * (i % 2)), label, 2.8, "middle", False))
+        fig.add(Text((x * k, 16.5 + 4.0 * (i % 2)), numerals(f"{x / metre:g}"), 2.6, "middle",
+                     False))
+    draw_caption(fig, title, [words("side view: the planes along the shaft, positions in {unit}",
+                                    unit=unit_words(unit))],
+                 per_cm=per_cm, unit=unit,
+                 legend=(("link", "a mass's plane"), ("normal", "a balancing plane")))
+    return fig
