@@ -1,4 +1,5 @@
-"""A worked-solution page (graphics/linkages/worked_page.py): panels at true scale, then the results.
+"""A worked-solution page (graphics/linkages/worked_page.py): panels at true scale, then
+the results.
 
 What matters to a reader with a ruler: every panel on the page is its figure
 moved, not scaled (so its scale bar still measures true), the panels and the

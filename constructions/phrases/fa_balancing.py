@@ -57,8 +57,8 @@ WORDS: dict[str, str] = {
     "{share} of the reciprocating mass balanced by a rotating mass opposite the crank":
         "{share} از جرم رفت\u200cوبرگشتی با جرمی دوار روبه\u200cروی لنگ متعادل شده است",
     "at θ = {angle}°": "در θ = {angle} درجه",
-    # the results steps.md lists (exercises/balancing/balance_solution.py): a markdown line, where the
-    # degree sign stays by its number
+    # the results steps.md lists (exercises/balancing/balance_solution.py): a markdown line,
+    # where the degree sign stays by its number
     "ΣF_x = {x}ω², ΣF_y = {y}ω² (kg·m): the resultant {size} kg·m at {angle}° ({force} N at "
     "ω = {speed} rad/s)":
         "ΣF_x = {x}ω²، ΣF_y = {y}ω² (kg·m): برآیند {size} kg·m با زاویهٔ {angle}° ({force} N "

@@ -82,7 +82,7 @@ WORDS: dict[str, str] = {
         "بادامک پادساعتگرد، e انحراف، و s₀ = √(R_p² − e²)\u200e.",
     "At a join of two segments the values are the second segment's.":
         "در محل اتصال دو بخش، مقادیر مربوط به بخش دوم است.",
-    # ----- sweeps (exercises/linkages/sweep_files.py) ---------------------------------------------------
+    # ----- sweeps (exercises/linkages/sweep_files.py) ---------------------------------------------
     "Position of {who}{along} over one turn of {link}": "مکان {who}{along} در یک دور {link}",
     "Velocity of {who}{along} over one turn of {link}": "سرعت {who}{along} در یک دور {link}",
     "Acceleration of {who}{along} over one turn of {link}": "شتاب {who}{along} در یک دور {link}",
@@ -121,7 +121,7 @@ WORDS: dict[str, str] = {
     "rod": "میلهٔ رابط", "slotted lever": "اهرم شیاردار", "lever": "اهرم",
     "rocker": "میلهٔ خروجی", "block": "لغزنده", "slider": "لغزنده", "ram": "رام",
     "piston": "پیستون", "follower": "پیرو",
-    # ----- the turning-moment diagram (exercises/forces/turning_moment.py) ---------------------------
+    # ----- the turning-moment diagram (exercises/forces/turning_moment.py) ------------------------
     "Turning-moment diagram": "نمودار گشتاور چرخشی",
     "driving torque": "گشتاور محرک",
     "mean {value} {unit}": "میانگین {value} {unit}",
