@@ -107,7 +107,7 @@ def chapter_for(data: dict[str, Any]) -> Chapter:
 
 
 def _parsed(path: Path) -> tuple[str, dict[str, Any]]:
-    from .linkages.mechanism_file import read_source, read_toml
+    from .toml_source import read_source, read_toml
 
     text = read_source(path)
     return text, read_toml(text, str(path))
