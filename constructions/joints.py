@@ -29,20 +29,14 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from enum import StrEnum
 from typing import TYPE_CHECKING
+
+from .joint_kinds import JointKind, SlideKind, kind_of
 
 if TYPE_CHECKING:
     from .model import Link
 
 __all__ = ["SlideKind", "Slide", "Arc", "Profile", "Contact", "contact_slide", "contact_arc"]
-
-
-class SlideKind(StrEnum):
-    """A prismatic block, or a pin running in a slot."""
-
-    BLOCK = "block"
-    PIN = "pin"
 
 
 @dataclass(frozen=True, slots=True)
@@ -129,6 +123,12 @@ class Arc:
     side: str = "left"
 
     @property
+    def type(self) -> JointKind:
+        """The joint's kind (:mod:`~.joint_kinds`): a curved slot, a curved block, two circles
+        in contact or a wheel rolling round a circle."""
+        return kind_of("circle", self.kind, self.contact is not None, self.rolling)
+
+    @property
     def label(self) -> str:
         """How messages name the joint."""
         return _joint_label(self, f"the curved guide of link {self.guide_link}")
@@ -166,6 +166,12 @@ class Slide:
     contact: Contact | None = None
 
     @property
+    def type(self) -> JointKind:
+        """The joint's kind (:mod:`~.joint_kinds`): a block or a pin in a slot, a circle on a
+        face or a wheel rolling on one."""
+        return kind_of("line", self.kind, self.contact is not None, self.rolling)
+
+    @property
     def label(self) -> str:
         """How messages name the joint."""
         return _joint_label(self, f"link {self.guide_link}")
@@ -178,10 +184,9 @@ class Slide:
 
 def _joint_label(joint: Arc | Slide, on: str) -> str:
     """"block B of link 4 on link 1", or the contact's own name for a contact's equivalent."""
-    if joint.contact is not None:
+    if joint.type.contact:
         return joint.contact.label
-    what = "block" if joint.kind is SlideKind.BLOCK else "pin"
-    return f"{what} {joint.point} of link {joint.link} on {on}"
+    return f"{joint.type.noun} {joint.point} of link {joint.link} on {on}"
 
 
 def contact_slide(contact: Contact, face_link: Link) -> Slide:

@@ -9,7 +9,8 @@ point named on several links is a **pin** joining them (K links at one pin count
 K − 1 joints).
 
 The other joints, a **slide**, an **arc** and a **contact**, are in
-:mod:`~tarsim.constructions.joints`; the units the file states its numbers in are in
+:mod:`~tarsim.constructions.joints`, and their kinds in :mod:`~tarsim.constructions.joint_kinds`;
+the units the file states its numbers in are in
 :mod:`~tarsim.constructions.units`.
 
 A **branch** says which of two assemblies to take for a point: ``left``/``right`` of
@@ -24,7 +25,7 @@ from dataclasses import dataclass, field, replace
 from functools import cached_property
 
 from .errors import InputError
-from .joints import Arc, Slide, SlideKind
+from .joints import Arc, Slide
 from .units import Units
 
 __all__ = ["Link", "Drive", "GivenRate", "Mechanism", "slider_crank"]
@@ -192,38 +193,46 @@ class Mechanism:
     def mobility(self) -> tuple[int, int, int, int]:
         """Grübler's count: ``(dof, n, F1, F2)`` with DOF = 3(n − 1) − 2·F1 − F2.
 
-        A pin on K links is K − 1 joints; a block and a rolling contact are one F1
-        joint each; a pin in a straight or curved slot, a sliding-rolling contact,
-        and a rolling contact of circles whose centres an arm holds (a gear pair), one
-        F2 joint. A block on a curved guide is counted by its pin.
+        A pin on K links is K − 1 joints; every other joint is an F1 joint if it adds two
+        equations (a block, a rolling contact) and an F2 joint if it adds one (a pin in a
+        straight or curved slot, a sliding-rolling contact, a rolling contact of circles
+        whose centres an arm holds: a gear pair). A block on a curved guide is counted by
+        its pin (:meth:`constraints`).
         """
         n = len(self.links)
         pins = sum(max(0, len(self.links_at(p)) - 1) for p in self.point_names)
-        blocks = sum(1 for s in self.slides if s.kind is SlideKind.BLOCK or s.rolling)
-        blocks += sum(1 for a in self.pin_arcs if a.rolling)
-        f2 = sum(1 for s in self.slides if s.kind is SlideKind.PIN and not s.rolling)
-        f2 += sum(1 for a in self.pin_arcs if not a.rolling)
-        f2 += sum(1 for a in self.rolling_arcs if self.held(a))
-        f1 = pins + blocks
+        counts = [self.constraints(j) for j in (*self.slides, *self.arcs)]
+        f1, f2 = pins + counts.count(2), counts.count(1)
         return 3 * (n - 1) - 2 * f1 - f2, n, f1, f2
+
+    def constraints(self, joint: Slide | Arc) -> int:
+        """How many loop equations ``joint`` adds: its kind's, less the distance an arm
+        already holds for a wheel rolling round a circle (:meth:`held`)."""
+        return joint.type.constraints - (1 if self.held(joint) else 0)
 
     @property
     def pin_arcs(self) -> tuple[Arc, ...]:
         """The arcs that constrain a distance: a curved block is already its pin at the
         centre, and a wheel rolling on a circle whose centre an arm already holds at the
         distance the circles touch at adds only its no-slip (:meth:`held`)."""
-        return tuple(a for a in self.arcs if a.kind is SlideKind.PIN and not self.held(a))
+        return tuple(a for a in self.arcs if not a.type.stands_as_pin and not self.held(a))
 
     @property
     def rolling_arcs(self) -> tuple[Arc, ...]:
         """Every wheel rolling on a circle, held by an arm or not."""
-        return tuple(a for a in self.arcs if a.rolling)
+        return tuple(a for a in self.arcs if a.type.rolling)
 
-    def held(self, a: Arc) -> bool:
+    def held(self, joint: Slide | Arc) -> bool:
         """True for a rolling contact of circles whose centres a third link (an arm, a
         planet carrier) carries both of: only its no-slip constrains, a higher pair."""
-        return a.rolling and any(k.number not in (a.link, a.guide_link) and a.point in k.names
-                                 and a.centre in k.names for k in self.links)
+        return joint in self._held
+
+    @cached_property
+    def _held(self) -> tuple[Arc, ...]:
+        """The wheels rolling round a circle that an arm holds (:meth:`held`)."""
+        return tuple(a for a in self.rolling_arcs if any(
+            k.number not in (a.link, a.guide_link) and a.point in k.names
+            and a.centre in k.names for k in self.links))
 
     @property
     def slotted(self) -> tuple[Slide | Arc, ...]:
@@ -238,7 +247,7 @@ class Mechanism:
         """The rolling contact on the frame of an input that is a wheel, else None. Such a
         wheel turns, at the instant, about its contact point, and its angle says how far
         it has rolled; its centre is the point every method starts from."""
-        return next((s for s in self.slides if s.rolling and s.guide_link == 1
+        return next((s for s in self.slides if s.type.rolling and s.guide_link == 1
                      and s.link == self.drive.link), None)
 
     @property
@@ -306,7 +315,7 @@ def slider_crank(m: Mechanism) -> tuple[str, str, str, int] | None:
     d = m.drive.link
     crank = m.link(d)
     for i, s in enumerate(m.slides):
-        if s.guide_link != 1 or s.kind is not SlideKind.BLOCK or s.contact is not None:
+        if s.guide_link != 1 or s.type.key != "block":
             continue
         for k in m.links:
             if k.number in (1, d, s.link) or s.point not in k.names or len(k.names) != 2:

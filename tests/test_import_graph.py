@@ -62,6 +62,7 @@ def test_the_reference_imports_no_method(name):
     # the models (a linkage's, with its joints and units, and its loads, a gear train's, a
     # rotor's) and the errors; never a method
     allowed = ("tarsim.constructions.model", "tarsim.constructions.joints",
+               "tarsim.constructions.joint_kinds",
                "tarsim.constructions.units", "tarsim.constructions.gears.train",
                "tarsim.constructions.loads", "tarsim.constructions.balancing.rotor",
                "tarsim.constructions.errors", "tarsim.constructions.reference")
