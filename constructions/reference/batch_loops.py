@@ -15,7 +15,6 @@ from enum import StrEnum
 import numpy as np
 
 from .loop_equations import _System
-from ..joints import SlideKind
 
 __all__ = ["BatchLoops", "wrap"]
 
@@ -69,11 +68,11 @@ class BatchLoops:
         for pin in sy.pins:
             out.append((row, _Rows.PIN, pin))
             row += 2
-        for s, through, d, off in sy.slides:
+        for i, (s, through, d, off) in enumerate(sy.slides):
             out.append((row, _Rows.LINE, (s, through, d, 0.0)))
-            if s.kind is SlideKind.BLOCK:
+            if i in sy.turning:
                 out.append((row + 1, _Rows.TURN, (s.link, s.guide_link, off)))
-            row += 2 if s.kind is SlideKind.BLOCK else 1
+            row += 2 if i in sy.turning else 1
         for s, through, u, k in sy.rolls:
             out.append((row, _Rows.LINE, (s, through, u, k)))
             row += 1

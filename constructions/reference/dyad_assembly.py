@@ -4,7 +4,8 @@ Each unlocated point is cut from two circles (a pin between two links, a pin in 
 slot, two circles in contact), a circle and a guide line, or two guide lines; a slotted
 link is turned about its one located point until its slot passes the block; a link with
 two located points, or a known angle and one point, is posed whole. Blocks carry their
-guide's angle across, and a rolling contact turns its wheel through the distance rolled.
+guide's angle across, and a rolling contact turns its wheel through the distance rolled:
+which joints take which of these acts is their kind's entry in :mod:`.joint_equations`.
 Each choice between two solutions honours ``Mechanism.branches`` (see :func:`.solver.solve`).
 
 The hooks (``_turned``, ``_placed``, …) do nothing here; :mod:`.assembly_plan` overrides
@@ -18,8 +19,9 @@ import math
 import numpy as np
 
 from ..errors import AssemblyError, InputError
-from ..joints import Arc, Slide, SlideKind
+from ..joints import Arc, Slide
 from ..model import Mechanism
+from .joint_equations import Act, acting
 from .kinematics import SINGULAR_RCOND, _dead_point
 from .planar import _S, _SLACK, _cross, _locals, _round_angle, _rot, _unit
 
@@ -41,6 +43,8 @@ class _Assembly:
         self.picked: dict[str, str] = {}
         """The word each branch took: a near point's is the side it chose."""
         self.deg = math.degrees(mech.drive.angle)
+        self.acting = acting(mech)
+        """The joints that take each closed-form act (a block, a rolling wheel), by act."""
 
     def run(self) -> dict[int, tuple[np.ndarray, float]]:
         self._rigid()
@@ -62,53 +66,16 @@ class _Assembly:
         return self.m.link(k).label
 
     def _rigid(self) -> None:
-        """Propagate BLOCK orientations and pose every link fixed by what is known."""
+        """Take every joint's closed-form acts (a block's angle, a wheel's roll), then pose
+        every link fixed by what is known, until nothing changes."""
+        acts = {Act.TURN_WITH_GUIDE: self._turn_with_guide, Act.ROLL_OUT: self._roll_out,
+                Act.ROLL_ROUND: self._roll_round, Act.ROLL_BACK: self._roll_back}
         changed = True
         while changed:
             changed = False
-            for s in self.m.slides:
-                if s.kind is not SlideKind.BLOCK:
-                    continue
-                off = math.atan2(s.direction[1], s.direction[0])
-                if s.guide_link in self.phi and s.link not in self.phi:
-                    self.phi[s.link] = self.phi[s.guide_link] + off
-                    self._turned(s.link, s.guide_link, off)
-                    changed = True
-                elif s.link in self.phi and s.guide_link not in self.phi:
-                    self.phi[s.guide_link] = self.phi[s.link] - off
-                    self._turned(s.guide_link, s.link, -off)
-                    changed = True
-            for s in self.m.slides:
-                if s.rolling and s.link in self.phi and s.guide_link in self.pose \
-                        and s.point not in self.at:
-                    # The wheel's angle (the input) says how far its centre has rolled.
-                    origin, phi = self.pose[s.guide_link]
-                    along = -s.contact.roll_sign * s.contact.circle.radius * (
-                        self.phi[s.link] - phi)
-                    self.at[s.point] = origin + _rot(phi) @ (
-                        np.asarray(s.through, dtype=float) + along * _unit(s.direction))
-                    self._rolled_on(s)
-                    changed = True
-            for a in self.m.rolling_arcs:
-                if a.rolling and a.link not in self.phi and a.guide_link in self.pose \
-                        and a.point in self.at and a.centre in self.at:
-                    # The angle the centre has gone round says how far the wheel has turned.
-                    e = self.at[a.point] - self.at[a.centre]
-                    phi = self.pose[a.guide_link][1]
-                    beta = _round_angle(math.atan2(e[1], e[0]) - phi)
-                    self.phi[a.link] = phi + a.roll_gain * beta / a.contact.circle.radius
-                    self._rolled_round(a)
-                    changed = True
-            for s in self.m.slides:
-                if s.rolling and s.link not in self.phi and s.guide_link in self.pose \
-                        and s.point in self.at:
-                    origin, phi = self.pose[s.guide_link]
-                    d = _rot(phi) @ _unit(s.direction)
-                    along = float(d @ (self.at[s.point] - origin - _rot(phi) @ np.asarray(
-                        s.through, dtype=float)))
-                    self.phi[s.link] = phi - along / (s.contact.roll_sign * s.contact.circle.radius)
-                    self._rolled(s)
-                    changed = True
+            for act, joints in self.acting.items():
+                for j in joints:
+                    changed = acts[act](j) or changed
             for k, names in self.names.items():
                 if k in self.pose:
                     continue
@@ -126,6 +93,55 @@ class _Assembly:
                 for n in names:
                     self.at.setdefault(n, origin + _rot(phi) @ self.loc[k, n])
                 changed = True
+
+    # The closed-form acts of the joints (.joint_equations.Act): each True if it acted.
+    def _turn_with_guide(self, s: Slide) -> bool:
+        """A block's link takes its guide's angle, or its guide the block's."""
+        off = math.atan2(s.direction[1], s.direction[0])
+        if s.guide_link in self.phi and s.link not in self.phi:
+            self.phi[s.link] = self.phi[s.guide_link] + off
+            self._turned(s.link, s.guide_link, off)
+            return True
+        if s.link in self.phi and s.guide_link not in self.phi:
+            self.phi[s.guide_link] = self.phi[s.link] - off
+            self._turned(s.guide_link, s.link, -off)
+            return True
+        return False
+
+    def _roll_out(self, s: Slide) -> bool:
+        """The wheel's angle (the input) says how far its centre has rolled."""
+        if not (s.link in self.phi and s.guide_link in self.pose and s.point not in self.at):
+            return False
+        origin, phi = self.pose[s.guide_link]
+        along = -s.contact.roll_sign * s.contact.circle.radius * (self.phi[s.link] - phi)
+        self.at[s.point] = origin + _rot(phi) @ (
+            np.asarray(s.through, dtype=float) + along * _unit(s.direction))
+        self._rolled_on(s)
+        return True
+
+    def _roll_round(self, a: Arc) -> bool:
+        """The angle the centre has gone round says how far the wheel has turned."""
+        if not (a.link not in self.phi and a.guide_link in self.pose and a.point in self.at
+                and a.centre in self.at):
+            return False
+        e = self.at[a.point] - self.at[a.centre]
+        phi = self.pose[a.guide_link][1]
+        beta = _round_angle(math.atan2(e[1], e[0]) - phi)
+        self.phi[a.link] = phi + a.roll_gain * beta / a.contact.circle.radius
+        self._rolled_round(a)
+        return True
+
+    def _roll_back(self, s: Slide) -> bool:
+        """How far the wheel's centre has rolled says the wheel's angle."""
+        if not (s.link not in self.phi and s.guide_link in self.pose and s.point in self.at):
+            return False
+        origin, phi = self.pose[s.guide_link]
+        d = _rot(phi) @ _unit(s.direction)
+        along = float(d @ (self.at[s.point] - origin - _rot(phi) @ np.asarray(
+            s.through, dtype=float)))
+        self.phi[s.link] = phi - along / (s.contact.roll_sign * s.contact.circle.radius)
+        self._rolled(s)
+        return True
 
     # Hooks for a recorder of the acts in order (.assembly_plan); a solve records nothing.
     def _turned(self, link: int, by: int, offset: float) -> None:

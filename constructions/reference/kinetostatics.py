@@ -28,8 +28,8 @@ import numpy as np
 from ..errors import InputError
 from ..loads import (Loads, crank_tangent, leaning, made_of, near_rest, near_rest_refusal,
                      resting_speed, stroke_axis)
-from ..joints import SlideKind
 from ..model import Mechanism
+from .joint_equations import JOINT_EQUATIONS
 from .solver import Kinematics, point_acceleration, point_velocity
 
 __all__ = ["JointForce", "Statics", "balance", "efforts", "load_scale", "power_torque",
@@ -147,7 +147,7 @@ def balance(mech: Mechanism, kin: Kinematics, loads: Loads) -> Statics:
         constrain it more than once (statically indeterminate), naming them, or if no
         choice of sides holds (the friction locks it).
     """
-    if mech.arcs or any(s.rolling for s in mech.slides):
+    if any(JOINT_EQUATIONS[j.type.key].reactions is None for j in (*mech.slides, *mech.arcs)):
         raise InputError("forces through a rolling contact or a curved slot are not solved "
                          "yet", file=mech.source or None)
     sides = {i: 1.0 for i in range(len(mech.slides))}
@@ -318,7 +318,7 @@ def _solve(mech: Mechanism, kin: Kinematics, loads: Loads, sides: dict[int, floa
         add(fresh(f"F_{s.guide_link}{s.link}"), s.guide_link, s.link, at, "n", {
             s.link: (n[0], n[1], _cross(arm(s.link, at), n)),
             s.guide_link: (-n[0], -n[1], -_cross(arm(s.guide_link, at), n))}, n)
-        if s.kind == SlideKind.BLOCK:
+        if "T" in JOINT_EQUATIONS[s.type.key].reactions:
             add(fresh(f"T_{s.guide_link}{s.link}"), s.guide_link, s.link, at, "m",
                 {s.link: (0.0, 0.0, 1.0), s.guide_link: (0.0, 0.0, -1.0)})
     driver = mech.drive.link
@@ -479,7 +479,7 @@ def efforts(mech: Mechanism, kin: Kinematics, loads: Loads, statics: Statics
     effort = push[0] * t[0] + push[1] * t[1]
     r = math.dist(kin.points[pivot], kin.points[pin])
     out = {"crank_effort": effort, "turning_moment": effort * r}
-    guide = [s for s in mech.slides if s.guide_link == 1 and s.kind is SlideKind.BLOCK]
+    guide = [s for s in mech.slides if s.guide_link == 1 and s.type.turns_with_guide]
     if len(guide) == 1:
         s = guide[0]
         u = stroke_axis(kin.points[pivot], kin.points[s.point], s.direction)

@@ -13,8 +13,10 @@ position of its local origin and the angle of its local +x axis (CCW-positive fr
   ``C`` of another link (a pin in a curved slot, two circles in contact);
 - drive: ``φ_input − angle = 0``, wrapped the same way.
 
-``_System`` evaluates them at one position, with the drive's row last;
-:mod:`.batch_loops` evaluates the same rows, in the same order, over many positions.
+Which rows a joint adds is its kind's entry in :mod:`.joint_equations`, which also lays
+the rows out: the pins', every joint's, word by word, then the drive's. ``_System``
+evaluates them at one position; :mod:`.batch_loops` evaluates the same rows, in the same
+order, over many positions.
 Each is differentiated exactly, never by finite differences.
 """
 
@@ -24,8 +26,9 @@ import math
 
 import numpy as np
 
-from ..joints import Arc, Slide, SlideKind
+from ..joints import Arc, Slide
 from ..model import Mechanism
+from .joint_equations import Equation, joints_with, layout
 from .planar import _S, _cross, _locals, _round_angle, _rot, _unit, _wrap
 
 __all__: list[str] = []
@@ -42,20 +45,23 @@ class _System:
         self.pins = [(n, at[0], j) for n in mech.point_names
                      for at in [mech.links_at(n)] for j in at[1:]]
         self.slides = [(s, np.asarray(s.through, dtype=float), _unit(s.direction),
-                        math.atan2(s.direction[1], s.direction[0])) for s in mech.slides]
+                        math.atan2(s.direction[1], s.direction[0]))
+                       for s in joints_with(mech, Equation.LINE)]
+        # A block's link turns with its guide: a second row, beside its line's.
+        turns = joints_with(mech, Equation.TURN)
+        self.turning = {i for i, (s, *_) in enumerate(self.slides) if s in turns}
         # A rolling contact's no-slip row D·(P − G) is the slide's cross row taken with
         # the direction turned −90° (cross(S⁻¹D, e) = D·e), plus σ r (φ_wheel − φ_face).
+        rolling = joints_with(mech, Equation.NO_SLIP)
         self.rolls = [(s, through, np.array([d[1], -d[0]]),
                        s.contact.roll_sign * s.contact.circle.radius)
-                      for s, through, d, _ in self.slides if s.rolling]
-        self.arcs = mech.pin_arcs
+                      for s, through, d, _ in self.slides if s in rolling]
+        self.arcs = joints_with(mech, Equation.DISTANCE)
         # A wheel rolling on a circle adds r·(φ_wheel − φ_guide) − k·β = 0, β the angle its
         # centre has gone round the circle's from the guide's +x (see Arc.roll_gain).
-        self.rounds = list(mech.rolling_arcs)
+        self.rounds = list(joints_with(mech, Equation.ROLLED_ROUND))
         is_len = [True] * (2 * len(self.pins))
-        for s, *_ in self.slides:
-            is_len += [True, False] if s.kind is SlideKind.BLOCK else [True]
-        is_len += [True] * (len(self.rolls) + len(self.arcs) + len(self.rounds))
+        is_len += [e is not Equation.TURN for e, _ in layout(mech)]
         self.is_len = np.array(is_len + [False])
         sizes = [abs(c) for v in self.loc.values() for c in v]
         sizes += [abs(c) for s in mech.slides for c in s.through]
@@ -81,10 +87,10 @@ class _System:
         for n, i, j in self.pins:
             (ti, fi), (tj, fj) = self.state(q, i), self.state(q, j)
             out += list(ti + _rot(fi) @ self.loc[i, n] - tj - _rot(fj) @ self.loc[j, n])
-        for s, through, d, off in self.slides:
+        for i, (s, through, d, off) in enumerate(self.slides):
             p, g, dg, _, _ = self._slide_terms(q, s, through, d)
             out.append(_cross(dg, p - g))
-            if s.kind is SlideKind.BLOCK:
+            if i in self.turning:
                 out.append(_wrap(self.state(q, s.link)[1] - self.state(q, s.guide_link)[1] - off))
         for s, through, u, k in self.rolls:
             p, g, ug, _, _ = self._slide_terms(q, s, through, u)
@@ -130,10 +136,10 @@ class _System:
                 put(row, k, (1.0, 0.0), arm[0], sign)
                 put(row + 1, k, (0.0, 1.0), arm[1], sign)
             row += 2
-        for s, through, d, _ in self.slides:
+        for i, (s, through, d, _) in enumerate(self.slides):
             line_row(row, s, through, d)
             row += 1
-            if s.kind is SlideKind.BLOCK:
+            if i in self.turning:
                 put(row, s.link, (0.0, 0.0), 1.0)
                 put(row, s.guide_link, (0.0, 0.0), -1.0)
                 row += 1
@@ -172,9 +178,9 @@ class _System:
             return (wg ** 2 * _cross(dg, p - g) - 2.0 * wg * _cross(_S @ dg, e_dot)
                     - _cross(dg, wg ** 2 * arm_g - wl ** 2 * arm_l))
 
-        for s, through, d, _ in self.slides:
+        for i, (s, through, d, _) in enumerate(self.slides):
             out.append(line_gamma(s, through, d))
-            if s.kind is SlideKind.BLOCK:
+            if i in self.turning:
                 out.append(0.0)
         out += [line_gamma(s, through, u) for s, through, u, _ in self.rolls]
         for a in self.arcs:
