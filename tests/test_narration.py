@@ -21,7 +21,7 @@ from tarsim.exercises.catalog import bundled
 
 _EXERCISES = Path(constructions.__file__).parent.parent / "exercises"
 SOURCE = [p for p in Path(constructions.__file__).parent.rglob("*.py")
-          if "phrases" not in p.parts] + [_EXERCISES / "linkages" / "solution_files.py"]
+          if "phrases" not in p.parts] + sorted(_EXERCISES.rglob("*.py"))
 NAMED = re.compile(r"""phrase\(\s*["']([\w.]+)["']|phrase\(\s*\(?["']([\w.]+)["'] if """)
 
 

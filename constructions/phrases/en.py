@@ -71,6 +71,20 @@ PHRASES: dict[str, str] = {
     "md.time_ratio": "The crank turns {slow}° from {start} to {end} ({sense}) in the slow stroke "
                      "and {quick}° in the quick one: time ratio {slow}/{quick} = {ratio}.",
     "md.heading": "{heading}",
+    "md.other_form": "The other common form:",
+    "md.chain_rule": "The cam turns at constant speed, so ẏ = y′ω and ÿ = y″ω² (the notes' "
+                     "chain rule with α = 0).",
+    "md.jumps": "ÿ jumps at θ = {jumps}: the jerk is infinite there.",
+    # ----- steps.md's headings: a figure's or a reading's part -----------------------------
+    "heading.train": "The train",
+    "heading.tabular": "The tabular method",
+    "heading.train_value": "The train value",
+    "heading.involute": "The involute mesh",
+    "heading.kutzbach": "The velocity (Kutzbach) diagram",
+    "heading.displacement": "The displacement diagram",
+    "heading.peaks": "Peaks",
+    "heading.profile": "The profile by inversion",
+    "heading.construction": "The construction",
     # ----- position by compass (constructions.assembly) -----------------------------------
     "position.at": "at θ{link} = {angle}",
     "position.frame_point": "Mark the frame point {point} at ({x}, {y}).",

@@ -121,11 +121,6 @@ WORDS: dict[str, str] = {
     "Klein's construction (V = ω·OM)": "ترسیم کلاین (V = ω·OM)",
     "Klein's construction (a = ω²·NO)": "ترسیم کلاین (a = ω²·NO)",
     "circle diagram": "دایرهٔ کمکی",
-    # the chapters' steps.md
-    "The train": "قطار چرخدنده", "The tabular method": "روش جدولی",
-    "The train value": "مقدار قطار", "The other common form:": "شکل رایج دیگر:",
-    "The involute mesh": "درگیری اینولوتی",
-    "The velocity (Kutzbach) diagram": "نمودار سرعت (کوتزباخ)",
     # the mechanism as a whole (exercises/linkages/solution_files.py: overall_text)
     "crank-rocker": "لنگ - آونگ", "double-crank": "لنگ - لنگ", "double-rocker": "آونگ - آونگ",
     "triple-rocker": "سه‌آونگی", "change-point": "نقطهٔ تغییر",
@@ -134,20 +129,12 @@ WORDS: dict[str, str] = {
     "{value} ({inspection} by inspection, {kennedy} by Kennedy)":
         "{value} ({inspection} با مشاهده، {kennedy} با قضیهٔ کندی)",
     "found": "یافته", "Willis": "ویلیس", "the same": "برابر", "yes": "بله", "NO": "خیر",
-    "The construction": "ترسیم",
     "internal": "داخلی", "external": "خارجی", "the same way": "در همان جهت",
     "the other way": "در جهت مخالف", "negative: opposite senses": "منفی: جهت\u200cها مخالف",
     "positive: one sense": "مثبت: یک جهت", "tabular": "جدولی",
     "pitch circle": "دایرهٔ گام", "base circle": "دایرهٔ پایه", "addendum circle": "دایرهٔ سر",
     "root circle": "دایرهٔ ریشه", "no angular acceleration": "بی\u200cشتاب زاویه\u200cای",
     "train value": "مقدار قطار",
-    "The displacement diagram": "نمودار جابه\u200cجایی", "Peaks": "بیشینه\u200cها",
-    "The cam turns at constant speed, so ẏ = y′ω and ÿ = y″ω² (the notes' chain rule with "
-    "α = 0).": "بادامک با سرعت ثابت می\u200cچرخد، پس ẏ = y′ω و ÿ = y″ω² (قاعدهٔ زنجیره\u200cای "
-               "جزوه با α = 0).",
-    "ÿ jumps at θ = {jumps}: the jerk is infinite there.":
-        "ÿ در θ = {jumps} جهش دارد: جرک در آنجا بی\u200cنهایت است.",
-    "The profile by inversion": "پروفیل به روش وارونگی",
     # the interactive page (tarsim view)
     "figure": "شکل", "play": "پخش",
     "download this frame (SVG)": "بارگیری این قاب (SVG)", "Kennedy lines": "خطوط کندی",
@@ -206,6 +193,19 @@ PHRASES: dict[str, str] = {
     "md.time_ratio": "لنگ در کورس کند {slow}° از {start} تا {end} ({sense}) و در کورس تند "
                      "{quick}° می‌چرخد: نسبت زمانی {slow}/{quick} = {ratio}.",
     "md.heading": "{heading}",
+    "md.other_form": "شکل رایج دیگر:",
+    "md.chain_rule": "بادامک با سرعت ثابت می\u200cچرخد، پس ẏ = y′ω و ÿ = y″ω² (قاعدهٔ "
+                     "زنجیره\u200cای جزوه با α = 0).",
+    "md.jumps": "ÿ در θ = {jumps} جهش دارد: جرک در آنجا بی\u200cنهایت است.",
+    "heading.train": "قطار چرخدنده",
+    "heading.tabular": "روش جدولی",
+    "heading.train_value": "مقدار قطار",
+    "heading.involute": "درگیری اینولوتی",
+    "heading.kutzbach": "نمودار سرعت (کوتزباخ)",
+    "heading.displacement": "نمودار جابه\u200cجایی",
+    "heading.peaks": "بیشینه\u200cها",
+    "heading.profile": "پروفیل به روش وارونگی",
+    "heading.construction": "ترسیم",
     "position.at": "در θ{link} = {angle}",
     "position.frame_point": "نقطهٔ {point} روی قاب را در ({x}, {y}) مشخص کنید.",
     "position.frame_guide": "راهنمای {point} را روی قاب با زاویهٔ {angle} رسم کنید.",

@@ -19,15 +19,16 @@ from typing import Any
 from tarsim.constructions.balancing.engine import KINDS, EnginePolygons, draw_engine
 from tarsim.constructions.balancing.polygons import Balance, draw_balance, rounding
 from tarsim.constructions.units import LENGTH_UNITS
-from tarsim.constructions.narration import (narrate, numeral, numerals, phrase, spoken, unit_words,
-                                            words)
+from tarsim.constructions.narration import numeral, numerals, phrase, unit_words, words
 from tarsim.constructions.reference.balance import (engine_sums, one_axial_plane, quadrant_angle,
                                                     resultant, single_cylinder, two_planes)
 from tarsim.graphics.balancing.balance_figures import draw_end_view, draw_polygon, draw_side_view
 from tarsim.graphics.plot import PlotMark, Series, draw_line_plot
 from tarsim.graphics.train_table import draw_train_table
+from ..checked import Checked
+from ..solution_folder import ChapterFiles
+from ..worked_document import Bullets, Section, said_steps, title
 from .rotor_file import BalanceExercise
-from ..linkages.solution_files import ChapterFiles
 
 __all__ = ["BalanceSolution", "solve_balance"]
 
@@ -258,52 +259,47 @@ class BalanceSolution(ChapterFiles):
                              value=numeral(value)))
         return out
 
-    def steps(self) -> str:
-        """steps.md: the construction, numbered, and the results."""
-        ex, lang = self.exercise, spoken()
-        lines = [f"# {narrate(phrase('md.title', name=ex.name), lang)}", ""]
-        if ex.description:
-            lines += [ex.description, ""]
+    def document(self) -> list[Section]:
+        """steps.md: the construction, numbered, and the results (the lines solve prints,
+        with their checks)."""
+        ex = self.exercise
         record = self.balance.construction if self.balance else (
             self.engine_polygons.construction if self.engine_polygons else None)
+        out = [title(ex.name, ex.description)]
         if record is not None:
-            said = [narrate(s, lang) for s in record.steps.values()]
-            lines += [f"## {words('The construction')}", ""]
-            lines += [f"{k}. {t}" for k, t in enumerate((t for t in said if t), 1)]
-            lines.append("")
-        # The results are the lines solve prints, with their checks.
-        lines += [f"## {narrate(phrase('md.results'), lang)}", ""] + [
-            f"- {t}" for t in self.lines()]
-        return "\n".join(lines) + "\n"
+            out.append(Section(phrase("heading.construction"), (said_steps(record),)))
+        return out + [Section(phrase("md.results"), (Bullets(tuple(self.lines())),))]
 
     # ----- numbers and figures ------------------------------------------------------------------
     @property
-    def results(self) -> dict[str, Any]:
-        """results.json: in SI."""
+    def checked(self) -> dict[str, Checked]:
+        """results.json's quantities, in SI: a rotor's balancing products beside the closed
+        form; an engine's unbalanced forces and couples beside their vector sums (a single
+        cylinder's, read off the closed form, stand alone)."""
         ex = self.exercise
-        q: dict[str, Any] = {}
+        q: dict[str, Checked] = {}
         if ex.rotor is not None:
+            method = "force polygon" if len(self.expected) == 1 else "couple and force polygons"
             for name, want in self.expected.items():
                 got = self.balance.product(name)
                 # A plane that needs no mass has a zero product, which has no angle.
                 where = {"none_needed": True} if name in self.balance.none else {
                     "angle_deg": _angle(got)}
-                q[f"mr_{name}"] = {"value": list(got), **where,
-                                   "reference": {"value": [w + 0.0 for w in want]},
-                                   "method": "force polygon" if len(self.expected) == 1
-                                   else "couple and force polygons"}
+                q[f"mr_{name}"] = Checked({"value": list(got), **where},
+                                          {"value": [w + 0.0 for w in want]}, method=method)
         elif len(ex.engine.cranks) == 1:
             prim, sec, along, across = single_cylinder(ex.engine, ex.engine.at)
-            q |= {"primary_force": {"value": prim}, "secondary_force": {"value": sec},
-                  "unbalanced_along": {"value": along}, "unbalanced_across": {"value": across}}
+            q |= {name: Checked({"value": v}) for name, v in (
+                ("primary_force", prim), ("secondary_force", sec),
+                ("unbalanced_along", along), ("unbalanced_across", across))}
         else:
             sums = engine_sums(ex.engine)
             for kind, value in zip(KINDS, (sums.primary_force, sums.primary_couple,
                                            sums.secondary_force, sums.secondary_couple)):
-                q[kind.replace(" ", "_")] = {
-                    "value": self.engine_polygons.left(kind) * ex.engine.speed ** 2,
-                    "reference": {"value": value}, "method": f"{kind} polygon"}
-        return {"exercise": ex.id, "positions": [], "quantities": q}
+                q[kind.replace(" ", "_")] = Checked(
+                    {"value": self.engine_polygons.left(kind) * ex.engine.speed ** 2},
+                    {"value": value}, method=f"{kind} polygon")
+        return q
 
     @property
     def figures(self) -> dict[str, Any]:

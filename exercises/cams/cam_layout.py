@@ -12,17 +12,18 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 from functools import cached_property
-from typing import Any
 
 from tarsim.constructions.cams.displacement import Displacement
 from tarsim.constructions.cams.inversion import Layout, lay_out_profile
 from tarsim.constructions.cams.rounding import lift_bounds
 from tarsim.constructions.cams.survey import Survey, Undercut, survey
 from tarsim.constructions.errors import InputError
-from tarsim.constructions.narration import narrate, numeral, numerals, spoken, unit_words, words
+from tarsim.constructions.narration import numeral, numerals, phrase, unit_words, words
 from tarsim.graphics.cams.cam_layout_figure import draw_cam_layout
 from tarsim.graphics.figure import Figure
 from tarsim.graphics.train_table import draw_train_table
+from ..checked import Checked
+from ..worked_document import Bullets, Section, numbered
 from .cam_file import CamExercise
 
 __all__ = ["CamProfile", "refuse_undercut"]
@@ -101,38 +102,43 @@ class CamProfile:
                          n=numeral(len(self.layout.places), "d"), verdict=verdict))
         return out
 
-    def steps(self) -> list[str]:
-        """The layout's steps for steps.md, numbered."""
-        lang = spoken()
-        said = [narrate(st, lang) for st in self.layout.construction.steps.values()]
-        said = [t for t in said if t] + [narrate(self.layout.closing, lang)]
-        return [f"{k}. {t}" for k, t in enumerate(said, 1)]
+    def section(self) -> Section:
+        """steps.md's part of the profile: the layout's acts, numbered, the closing curve
+        last, then its readings (the lines solve prints)."""
+        layout = self.layout
+        return Section(phrase("heading.profile"), (
+            numbered([*(st for st in layout.construction if st.phrase is not None),
+                      layout.closing]), Bullets(tuple(self.lines()))),
+            ("profile", "profile-table"))
 
     # ----- numbers ----------------------------------------------------------------------------
-    def quantities(self) -> dict[str, Any]:
+    def checked(self) -> dict[str, Checked]:
         """The profile's numbers for results.json, in SI (angles in rad)."""
         s, f = self.survey, self.exercise.follower
-        out: dict[str, Any] = {}
+        out: dict[str, Checked] = {}
         if f.kind != "flat-faced":
             st = s.steepest
             m = _textbook_pressure(self.exercise, s.steepest_at.segment, st.theta)
-            out["pressure_angle_max"] = {
-                "value": abs(st.pressure_angle), "theta": st.theta,
-                "segment": s.steepest_at.segment,
-                "method": "inversion; normal to the pitch curve against the follower's motion",
-                **({"reference": {"value": abs(m), "method": "tan φ = (y′ − σe)/(s₀ + y)"}}
-                   if m is not None else {})}
+            # The textbook's value follows the method here, as results.json has always
+            # written it.
+            out["pressure_angle_max"] = Checked(
+                {"value": abs(st.pressure_angle), "theta": st.theta,
+                 "segment": s.steepest_at.segment},
+                method="inversion; normal to the pitch curve against the follower's motion",
+                beside={"reference": {"value": abs(m), "method": "tan φ = (y′ − σe)/(s₀ + y)"}}
+                if m is not None else {})
         st = s.sharpest
-        out["rho_min"] = {"value": st.rho, "theta": st.theta, "segment": s.sharpest_at.segment,
-                          "method": "r_b + y + y″" if f.kind == "flat-faced"
-                          else "|q₁|³ / (−σ q₁ × q₂) of the pitch curve"}
+        out["rho_min"] = Checked({"value": st.rho, "theta": st.theta,
+                                  "segment": s.sharpest_at.segment},
+                                 method="r_b + y + y″" if f.kind == "flat-faced"
+                                 else "|q₁|³ / (−σ q₁ × q₂) of the pitch curve")
         if f.kind == "flat-faced":
             lo, hi = s.face
-            out["face_width"] = {"value": hi - lo, "from": lo, "to": hi,
-                                 "method": "the touch's run x = σy′ along the face"}
-        out["undercut"] = {"value": bool(s.undercut), "spans": [
+            out["face_width"] = Checked({"value": hi - lo, "from": lo, "to": hi},
+                                        method="the touch's run x = σy′ along the face")
+        out["undercut"] = Checked({"value": bool(s.undercut), "spans": [
             {"from": span.start, "to": span.end, "segment": span.segment,
-             "rho": span.worst.rho, "theta": span.worst.theta} for span in s.undercut]}
+             "rho": span.worst.rho, "theta": span.worst.theta} for span in s.undercut]})
         return out
 
     # ----- figures ----------------------------------------------------------------------------

@@ -22,14 +22,15 @@ from tarsim.constructions.cams.extremes import EPS, greatest
 from tarsim.constructions.cams.rounding import lift_bounds
 from tarsim.constructions.cams.survey import AGREE
 from tarsim.constructions.errors import IllConditioned
-from tarsim.constructions.narration import (Word, narrate, numeral, numerals, phrase, spoken,
-                                            unit_words, words)
+from tarsim.constructions.narration import Word, numeral, numerals, phrase, unit_words, words
 from tarsim.constructions.reference.cam_laws import jerk_peak, motion, peaks, pieces
 from tarsim.graphics.cams.displacement_figure import draw_displacement_figure
 from tarsim.graphics.plot import PlotMark, Series, draw_line_plot
+from ..checked import Checked
+from ..solution_folder import ChapterFiles
+from ..worked_document import Bullets, Paragraph, Section, said_steps, title
 from .cam_file import CamExercise
 from .cam_layout import CamProfile, refuse_undercut
-from ..linkages.solution_files import ChapterFiles
 
 __all__ = ["CamSolution", "solve_cam"]
 
@@ -253,47 +254,37 @@ class CamSolution(ChapterFiles):
             start += s.angle
         return sorted({round(math.degrees(t), 9) for t in out})
 
-    def steps(self) -> str:
-        """steps.md: the displacement diagram's construction, then each segment's peaks."""
-        ex, lang = self.exercise, spoken()
-        lines = [f"# {narrate(phrase('md.title', name=ex.name), lang)}", ""]
-        if ex.description:
-            lines += [ex.description, ""]
-        lines += [f"## {words('The displacement diagram')} (`displacement.svg`)", ""]
-        said = [narrate(s, lang) for s in self.diagram.construction.steps.values()]
-        lines += [f"{k}. {t}" for k, t in enumerate((t for t in said if t), 1)]
-        # The peaks are the lines solve prints, with their checks.
-        lines += ["", f"## {words('Peaks')} (`velocity.svg`, `acceleration.svg`)", "",
-                  words("The cam turns at constant speed, so ẏ = y′ω and ÿ = y″ω² (the notes' "
-                        "chain rule with α = 0)."), ""]
-        lines += [f"- {line}" for line in self.lines()[:len(self.peaks) + 1]]
+    def document(self) -> list[Section]:
+        """steps.md: the displacement diagram's construction, then each segment's peaks (the
+        lines solve prints, with their checks), then the profile."""
+        ex = self.exercise
+        peaks = self.lines()[:len(self.peaks) + 1]
         if self.jumps:
-            lines.append("- " + words("ÿ jumps at θ = {jumps}: the jerk is infinite there.",
-                                      jumps=", ".join(f"{numerals(f'{j:g}')}°"
-                                                      for j in self.jumps)))
-        lines += ["", f"## {words('The profile by inversion')} (`profile.svg`, "
-                      "`profile-table.svg`)", ""]
-        lines += self.profile.steps() + [""]
-        lines += [f"- {line}" for line in self.profile.lines()]
-        return "\n".join(lines) + "\n"
+            peaks.append(phrase("md.jumps", jumps=", ".join(f"{numerals(f'{j:g}')}°"
+                                                            for j in self.jumps)))
+        return [title(ex.name, ex.description),
+                Section(phrase("heading.displacement"),
+                        (said_steps(self.diagram.construction),), ("displacement",)),
+                Section(phrase("heading.peaks"),
+                        (Paragraph(phrase("md.chain_rule")), Bullets(tuple(peaks))),
+                        ("velocity", "acceleration")),
+                self.profile.section()]
 
     @property
-    def results(self) -> dict[str, Any]:
-        """results.json: each segment's peaks in SI, beside the sampled law's."""
-        return {"exercise": self.exercise.id, "positions": [], "quantities": {
-            f"v_max_{p.index}": {"value": p.velocity, "reference": {
-                "value": p.velocity_sampled}, "method": f"{p.law} formula"}
-            for p in self.peaks} | {
-            f"a_max_{p.index}": {"value": None if math.isinf(p.acceleration)
-                                 else p.acceleration,
-                                 "reference": {"value": p.acceleration_sampled},
-                                 "method": f"{p.law} formula"}
-            for p in self.peaks} | ({
-            f"j_max_{p.index}": {"value": None if math.isinf(p.jerk) else p.jerk,
-                                 "reference": {"value": p.jerk_sampled},
-                                 "method": f"{p.law} formula"}
-            for p in self.peaks} if self.exercise.jerk else {}) | self.profile.quantities()}
+    def checked(self) -> dict[str, Checked]:
+        """results.json's quantities: each segment's peaks in SI, beside the sampled law's
+        (an infinite one, where ÿ jumps, is null), then the profile's readings."""
+        def peak(value: float, sampled: float, law: str) -> Checked:
+            return Checked({"value": None if math.isinf(value) else value},
+                           {"value": sampled}, method=f"{law} formula")
 
+        out = {f"v_max_{p.index}": peak(p.velocity, p.velocity_sampled, p.law)
+               for p in self.peaks}
+        out |= {f"a_max_{p.index}": peak(p.acceleration, p.acceleration_sampled, p.law)
+                for p in self.peaks}
+        if self.exercise.jerk:
+            out |= {f"j_max_{p.index}": peak(p.jerk, p.jerk_sampled, p.law) for p in self.peaks}
+        return out | self.profile.checked()
 
 
 def _y(s, theta: float) -> float:

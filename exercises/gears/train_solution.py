@@ -20,8 +20,8 @@ from tarsim.constructions.gears.involute import InvoluteMesh, draw_involute_mesh
 from tarsim.constructions.gears.kutzbach import DRAWN, Kutzbach, draw_kutzbach, undrawable
 from tarsim.constructions.gears.tabular import TrainSpeeds, fraction_text, tabulate
 from tarsim.constructions.gears.torques import balance, say_balance
-from tarsim.constructions.narration import (narrate, numeral, numerals, phrase, significant, spoken,
-                                            unit_words, words)
+from tarsim.constructions.narration import (numeral, numerals, phrase, significant, unit_words,
+                                            words)
 from tarsim.constructions.reference.gear_mesh import (MeshReference, involute_miss, least_teeth,
                                                       mesh_reference)
 from tarsim.constructions.reference.willis import willis_speeds
@@ -29,7 +29,9 @@ from tarsim.graphics.gears.involute_figure import draw_involute_figure
 from tarsim.graphics.gears.kutzbach_figure import draw_kutzbach_figure
 from tarsim.graphics.gears.train_schematic import draw_train_schematic
 from tarsim.graphics.train_table import draw_train_table
-from ..linkages.solution_files import ChapterFiles
+from ..checked import Checked, check_line
+from ..solution_folder import ChapterFiles
+from ..worked_document import Bullets, Paragraph, Section, Table, numbered, said_steps, title
 from .train_file import MESH_ASKS, TrainExercise, ask_symbol
 
 __all__ = ["TrainSolution", "solve_train"]
@@ -228,10 +230,10 @@ class TrainSolution(ChapterFiles):
         for q in self.quantities.values():
             if q.name in MESH_ASKS:
                 value = _mesh_text(q.name, float(q.exact), self.mesh)
-                verdict = "check ok" if q.passed else "check FAILED"
-                out.append(f"{q.name} = {value:<30} {verdict} (formula: "
-                           f"{_mesh_text(q.name, float(q.reference), self.mesh_reference)})   "
-                           f"{q.method}")
+                reference = _mesh_text(q.name, float(q.reference), self.mesh_reference)
+                out.append(check_line(f"{q.name} = {value}", width=len(q.name) + 33,
+                                      passed=q.passed, against=f"(formula: {reference})",
+                                      method=q.method))
                 continue
             if q.name.startswith("torque"):
                 sense = "" if q.exact == 0 else (" ccw" if q.exact > 0 else " cw")
@@ -241,50 +243,46 @@ class TrainSolution(ChapterFiles):
             else:
                 sense = "" if q.exact == 0 else (" ccw" if q.exact > 0 else " cw")
                 value = f"{fraction_text(abs(q.exact))} {unit}{sense} ({float(q.exact):.6g})"
-            verdict = "check ok" if q.passed else "check FAILED"
-            out.append(f"{ask_symbol(q.name)} = {value:<28} {verdict} (Willis: "
-                       f"{fraction_text(q.reference)})   {q.method}")
+            symbol = ask_symbol(q.name)
+            out.append(check_line(f"{symbol} = {value}", width=len(symbol) + 31,
+                                  passed=q.passed,
+                                  against=f"(Willis: {fraction_text(q.reference)})",
+                                  method=q.method))
         return out
 
-    def steps(self) -> str:
-        """steps.md: the method's steps, the table, and the results."""
-        ex, train, lang = self.exercise, self.train, spoken()
-        lines = [f"# {narrate(phrase('md.title', name=train.name), lang)}", ""]
-        if ex.description:
-            lines += [ex.description, ""]
-        lines += [f"## {words('The train')} (`train.svg`)", ""]
-        lines += [f"- {narrate(p, lang)}" for p in train.describe()]
-        method = "The tabular method" if self.found.table else "The train value"
-        lines += ["", f"## {words(method)} (`{self._stem}.svg`)", ""]
-        steps = list(self.found.steps) + say_balance(self.train, self.found.speeds,
-                                                     self.output)
-        lines += [f"{k}. {narrate(p, lang)}" for k, p in enumerate(steps, 1)]
+    def document(self) -> list[Section]:
+        """steps.md: the train, the method's steps, the drawn constructions, the table, and
+        the results."""
+        ex, train = self.exercise, self.train
+        method = [numbered([*self.found.steps,
+                            *say_balance(self.train, self.found.speeds, self.output)])]
         if self.found.xy:
-            lines += ["", words("The other common form:"), ""]
-            lines += [f"- {narrate(p, lang)}" for p in self.found.xy]
-        for part, stem, drawn in (("The involute mesh", "mesh", self.mesh),
-                                  ("The velocity (Kutzbach) diagram", "kutzbach", self.diagram)):
+            method += [Paragraph(phrase("md.other_form")), Bullets(self.found.xy)]
+        out = [title(train.name, ex.description),
+               Section(phrase("heading.train"), (Bullets(tuple(train.describe())),), ("train",)),
+               Section(phrase("heading.tabular" if self.found.table else "heading.train_value"),
+                       tuple(method), (self._stem,))]
+        for key, stem, drawn in (("heading.involute", "mesh", self.mesh),
+                                 ("heading.kutzbach", "kutzbach", self.diagram)):
             if drawn is not None:
-                lines += ["", f"## {words(part)} (`{stem}.svg`)", ""]
-                said = [narrate(s, lang) for s in drawn.construction.steps.values()]
-                lines += [f"{k}. {t}" for k, t in enumerate((t for t in said if t), 1)]
+                out.append(Section(phrase(key), (said_steps(drawn.construction),), (stem,)))
         heads, rows = self._table()
-        lines += ["", "| | " + " | ".join(heads) + " |",
-                  "|---|" + "---|" * len(heads)]
-        lines += [f"| {name} | " + " | ".join(cells) + " |" for name, cells in rows]
-        columns = " | ".join(words(c) for c in ("quantity", "found", "Willis", "the same",
-                                                 "method"))
-        lines += ["", f"## {narrate(phrase('md.results'), lang)}", "", f"| {columns} |",
-                  "|---|---|---|---|---|"]
-        for q in self.quantities.values():
-            if q.name in MESH_ASKS:         # a length, an angle, a ratio: not a fraction
-                found = _mesh_text(q.name, float(q.exact), self.mesh)
-                willis = _mesh_text(q.name, float(q.reference), self.mesh_reference)
-            else:
-                found, willis = fraction_text(q.exact), fraction_text(q.reference)
-            lines.append(f"| {ask_symbol(q.name)} | {found} | {willis} | "
-                         f"{words('yes' if q.passed else 'NO')} | {words(q.method)} |")
-        return "\n".join(lines) + "\n"
+        out.append(Section(blocks=(Table(("", *heads), tuple((name, *cells)
+                                                             for name, cells in rows)),)))
+        return out + [Section(phrase("md.results"), (Table(
+            tuple(words(c) for c in ("quantity", "found", "Willis", "the same", "method")),
+            tuple(self._result_row(q) for q in self.quantities.values())),))]
+
+    def _result_row(self, q: TrainQuantity) -> tuple[str, ...]:
+        """A quantity's row of steps.md's results: found, by Willis (or the formula), the
+        same or not, and the method."""
+        if q.name in MESH_ASKS:         # a length, an angle, a ratio: not a fraction
+            found = _mesh_text(q.name, float(q.exact), self.mesh)
+            willis = _mesh_text(q.name, float(q.reference), self.mesh_reference)
+        else:
+            found, willis = fraction_text(q.exact), fraction_text(q.reference)
+        return (ask_symbol(q.name), found, willis, words("yes" if q.passed else "NO"),
+                words(q.method))
 
     @property
     def _stem(self) -> str:
@@ -336,10 +334,11 @@ class TrainSolution(ChapterFiles):
         return out
 
     @property
-    def results(self) -> dict[str, Any]:
-        """results.json: every asked quantity in SI with its exact value and reference."""
+    def checked(self) -> dict[str, Checked]:
+        """results.json's quantities: each asked one in SI, with its exact value and the
+        reference's, and a speed's reading off the velocity diagram beside it."""
         per = self.train.units.per_rad_s
-        qs = {}
+        out = {}
         for q in self.quantities.values():
             speed = q.name.startswith("omega") and "/" not in q.name
             to_si = per if speed else 1.0          # a speed's exact value is in the file's unit
@@ -355,16 +354,15 @@ class TrainSolution(ChapterFiles):
             if q.name == "interference":
                 entry["gears"] = list(self.mesh.interference)
                 reference["gears"] = list(self.mesh_reference.interference)
-            qs[q.name] = {**entry, "reference": reference, "rel_error": q.rel_error,
-                          "method": q.method}
+            beside = {}
             m = q.name.removeprefix("omega")
-            if self.diagram is not None and q.name.startswith("omega") and "/" not in q.name \
-                    and int(m) in self.diagram.omegas:          # not a side shaft's gear
-                miss, allowed = self.diagram_check(int(m))
-                qs[q.name]["velocity_diagram"] = {
-                    "value": self.diagram.said(int(m)), "rel_error": miss,
-                    "tolerance": allowed}
-        return {"exercise": self.exercise.id, "positions": [], "quantities": qs}
+            if self.diagram is not None and speed and int(m) in self.diagram.omegas:
+                miss, allowed = self.diagram_check(int(m))     # not a side shaft's gear
+                beside["velocity_diagram"] = {"value": self.diagram.said(int(m)),
+                                              "rel_error": miss, "tolerance": allowed}
+            out[q.name] = Checked(entry, reference, rel_error=q.rel_error, method=q.method,
+                                  beside=beside)
+        return out
 
 
 def _plain(x: Fraction) -> str:

@@ -11,7 +11,6 @@ so an error leaves the folder as it was.
 
 from __future__ import annotations
 
-import json
 import math
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -31,7 +30,7 @@ from tarsim.constructions.scales import nice
 from tarsim.constructions.linkages.velocity_drawing import method_words
 from tarsim.constructions.linkages.velocity_polygon import WORKED, drawn_velocity_polygon
 from tarsim.graphics.linkages.circle_diagram import draw_circle_diagram
-from tarsim.graphics.export import RenderError, cairo_missing, figure_pdf, write_folder
+from tarsim.graphics.export import RenderError, cairo_missing, figure_pdf
 from tarsim.graphics.figure import Figure, stack_pages
 from tarsim.graphics.linkages.polygon_panel import POLYGON_BOX, draw_polygon_panel
 from tarsim.graphics.linkages.scene import draw_scene
@@ -40,13 +39,14 @@ from tarsim.graphics.workers import draw_each
 from tarsim.graphics.paper import Paper, on_sheet, paper, room, sheet_size
 from tarsim.graphics.linkages.worked_page import compose_worked_sheets, holds_panel
 
+from ..solution_folder import write_solution
 from .exercise_file import Exercise
 from .results_json import results_document, results_json
 from .solution import Overall, Solution, notes_under, solve_overall, solve_positions
 
 __all__ = ["SolutionFigure", "WorkedSolution", "solve_worked", "overall_text", "solve_all",
            "figure_parts", "heading_in",
-           "solve_to_files", "write_solution", "answer_line", "method_words"]
+           "solve_to_files", "answer_line", "method_words"]
 
 
 DRAFTING = 4
@@ -265,40 +265,6 @@ def solve_all(ex: Exercise) -> tuple[list[Solution], Overall, dict[str, str]]:
     return worked.positions, worked.overall, worked.files()
 
 
-def write_solution(files: dict[str, str], out_dir: str | Path, *, pdf: bool = True,
-                   figures: dict[str, Figure] | None = None,
-                   made: dict[str, bytes] | None = None) -> list[Path]:
-    """Write the rendered files into ``out_dir`` (made if missing), with a PDF of each of
-    ``figures`` (by its PDF's name; a page a sheet), all or nothing (see
-    :func:`~tarsim.graphics.export.write_folder`).
-
-    ``solution.pdf`` has those figures as its pages, in order. A figure whose PDF is
-    already ``made`` (by its name) is not drawn again. The previous solution's files in
-    the folder are replaced whole; a file there tarsim did not write is kept.
-
-    Raises
-    ------
-    RenderError
-        If the folder cannot be made or written, holds a file of one of these names that
-        tarsim did not write, or PDF is asked and libcairo2 is missing (checked before
-        anything is written).
-    """
-    pdfs = {}
-    if pdf and figures:
-        missing = cairo_missing()   # loaded here once, for every worker to inherit
-        if missing:
-            raise RenderError(missing)
-        made = made or {}
-        sheets = {name: fig.sheets or [fig] for name, fig in figures.items()}
-        todo = [name for name in sheets if name not in made]
-        jobs = [partial(figure_pdf, sheets[name]) for name in todo]
-        drawn = dict(zip(todo, draw_each(jobs, [sum(len(s.items) for s in sheets[name])
-                                                for name in todo])))
-        pdfs = {name: made.get(name) or drawn[name] for name in sheets}
-        pdfs["solution.pdf"] = figure_pdf([s for name in sheets for s in sheets[name]])
-    return write_folder({**files, **pdfs}, out_dir)
-
-
 def _drawn_in(lang: str, draw: Callable[[], Figure], pdf: bool
               ) -> tuple[Figure, str, bytes | None]:
     """``draw()`` with its words in ``lang`` (a forked worker is told, not left to inherit);
@@ -307,31 +273,6 @@ def _drawn_in(lang: str, draw: Callable[[], Figure], pdf: bool
         fig = draw()
         svg = to_svg(fig)
     return fig, svg, figure_pdf(fig.sheets or [fig]) if pdf else None
-
-
-class ChapterFiles:
-    """The files of a chapter's solution (a gear train's, a cam's, a rotor's): each figure's
-    SVG, steps.md and results.json, written as a linkage's are. The solution gives
-    ``figures``, ``steps()`` and ``results``."""
-
-    def files(self) -> dict[str, str]:
-        """Every file as text, by name."""
-        files = {f"{stem}.svg": to_svg(fig) for stem, fig in self.figures.items()}
-        files["steps.md"] = self.steps()
-        files["results.json"] = json.dumps(self.results, indent=2, ensure_ascii=False,
-                                           allow_nan=False) + "\n"     # never NaN nor inf
-        return files
-
-    def check(self) -> None:
-        """Raise :class:`CheckMismatch` naming every number that failed its check."""
-        if self.failures:
-            raise CheckMismatch(self.failures)
-
-    def write(self, folder: str | Path, *, pdf: bool = True) -> list[Path]:
-        """Write the files into ``folder`` (with a PDF of each figure when ``pdf``), all or
-        nothing."""
-        return write_solution(self.files(), folder, pdf=pdf,
-                              figures={f"{stem}.pdf": fig for stem, fig in self.figures.items()})
 
 
 # ----- figures ---------------------------------------------------------------------------

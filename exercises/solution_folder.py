@@ -1,0 +1,112 @@
+"""A solution's folder: its figures' SVG (and PDF), steps.md and results.json, written as one
+set, all or nothing.
+
+:func:`write_solution` writes any chapter's files. :class:`ChapterFiles` is what a
+chapter's solution (a gear train's, a cam's, a rotor's) needs to say so that its files
+are made as every other chapter's are: its figures, its document
+(:mod:`..exercises.worked_document`) and its checked quantities
+(:mod:`..exercises.checked`). A linkage's solution writes through the same two writers,
+with figures drawn by workers of their own.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from functools import partial
+from pathlib import Path
+from typing import Any
+
+from tarsim.constructions.errors import CheckMismatch
+from tarsim.constructions.narration import spoken
+from tarsim.graphics.export import RenderError, cairo_missing, figure_pdf, write_folder
+from tarsim.graphics.figure import Figure
+from tarsim.graphics.svg import to_svg
+from tarsim.graphics.workers import draw_each
+
+from .checked import Checked, results_document, results_text
+from .worked_document import Section, markdown
+
+__all__ = ["ChapterFiles", "write_solution"]
+
+
+def write_solution(files: dict[str, str], out_dir: str | Path, *, pdf: bool = True,
+                   figures: dict[str, Figure] | None = None,
+                   made: dict[str, bytes] | None = None) -> list[Path]:
+    """Write the rendered files into ``out_dir`` (made if missing), with a PDF of each of
+    ``figures`` (by its PDF's name; a page a sheet), all or nothing (see
+    :func:`~tarsim.graphics.export.write_folder`).
+
+    ``solution.pdf`` has those figures as its pages, in order. A figure whose PDF is
+    already ``made`` (by its name) is not drawn again. The previous solution's files in
+    the folder are replaced whole; a file there tarsim did not write is kept.
+
+    Raises
+    ------
+    RenderError
+        If the folder cannot be made or written, holds a file of one of these names that
+        tarsim did not write, or PDF is asked and libcairo2 is missing (checked before
+        anything is written).
+    """
+    pdfs = {}
+    if pdf and figures:
+        missing = cairo_missing()   # loaded here once, for every worker to inherit
+        if missing:
+            raise RenderError(missing)
+        made = made or {}
+        sheets = {name: fig.sheets or [fig] for name, fig in figures.items()}
+        todo = [name for name in sheets if name not in made]
+        jobs = [partial(figure_pdf, sheets[name]) for name in todo]
+        drawn = dict(zip(todo, draw_each(jobs, [sum(len(s.items) for s in sheets[name])
+                                                for name in todo])))
+        pdfs = {name: made.get(name) or drawn[name] for name in sheets}
+        pdfs["solution.pdf"] = figure_pdf([s for name in sheets for s in sheets[name]])
+    return write_folder({**files, **pdfs}, out_dir)
+
+
+class ChapterFiles:
+    """The files of a chapter's solution, made as every chapter's are.
+
+    A solution gives ``exercise`` (with its ``id``), ``figures`` (each by its file stem),
+    :meth:`document` (what steps.md holds), :attr:`checked` (what results.json holds) and
+    ``failures``; this class writes them.
+    """
+
+    exercise: Any
+    figures: Mapping[str, Figure]
+    failures: list[str]
+
+    def document(self) -> list[Section]:
+        """steps.md's sections, in the words of the language being spoken."""
+        raise NotImplementedError
+
+    @property
+    def checked(self) -> dict[str, Checked]:
+        """Every quantity results.json gives, by name."""
+        raise NotImplementedError
+
+    def steps(self) -> str:
+        """steps.md, in the language being spoken."""
+        return markdown(self.document(), spoken())
+
+    @property
+    def results(self) -> dict[str, Any]:
+        """results.json's document: every quantity in SI beside its reference."""
+        return results_document(self.exercise.id, self.checked)
+
+    def files(self) -> dict[str, str]:
+        """Every file as text, by name."""
+        files = {f"{stem}.svg": to_svg(fig) for stem, fig in self.figures.items()}
+        files["steps.md"] = self.steps()
+        files["results.json"] = results_text(self.results)
+        return files
+
+    def check(self) -> None:
+        """Raise :class:`CheckMismatch` naming every number that failed its check."""
+        if self.failures:
+            raise CheckMismatch(self.failures)
+
+    def write(self, folder: str | Path, *, pdf: bool = True) -> list[Path]:
+        """Write the files into ``folder`` (with a PDF of each figure when ``pdf``), all or
+        nothing."""
+        return write_solution(self.files(), folder, pdf=pdf,
+                              figures={f"{stem}.pdf": fig for stem, fig in self.figures.items()})
