@@ -220,6 +220,7 @@ def test_the_dyad_rules_are_tried_in_their_registered_order():
 def test_a_new_dyad_rule_plugs_into_the_registry(monkeypatch):
     """A rule registered under a new name is consulted by the walk, in its order."""
     from tarsim.constructions.linkages import assembly as asm_module
+    from tarsim.constructions.linkages import joint_rules
     from tarsim.constructions.linkages.dyad_rules import DyadRule
     seen = []
 
@@ -227,9 +228,9 @@ def test_a_new_dyad_rule_plugs_into_the_registry(monkeypatch):
         seen.append(sorted(assembler.known))
         return False                       # locates nothing: the walk goes on as before
 
-    rules = dict(asm_module.DYAD_RULES)
+    rules = dict(joint_rules.DYAD_RULES)
     rules["a rule that looks first"] = DyadRule("a rule that looks first", -1, note)
-    monkeypatch.setattr(asm_module, "DYAD_RULES", rules)
+    monkeypatch.setattr(joint_rules, "DYAD_RULES", rules)
     asm = asm_module.assemble(four_bar(math.radians(60)))
     assert seen and seen[0] == ["A", "O2", "O4"]          # asked before B was found
     assert asm.xy("B") == assemble(four_bar(math.radians(60))).xy("B")

@@ -31,7 +31,7 @@ from .assembly_record import Assembly
 from ..checks import Answer, vector_value
 from .coincident import Node
 from ..errors import TarsimError
-from ..joints import Arc
+from .joint_rules import rules_of
 from ..narration import Number, Phrase, Quantity, Word, phrase
 from .polygon_walk import ACCELERATION, NOISE, Polygon, PolygonWalk, sense_of
 from ..record import Panel, Ref, Role
@@ -200,25 +200,11 @@ class _Polygon(PolygonWalk):
 
     def draw_rolling(self, n: Node, s) -> Ref:
         """The contact point of a wheel rolling on the ground: at rest, its acceleration is
-        ω²·r toward the wheel's centre (the centre runs parallel to the ground, the rim
-        point turns about it)."""
-        w, centre = self.omegas[s.link], Node(s.point)
-        P, r = self.name(n), math.dist(self.xy(n), self.xy(centre))
-        line = self.space_line(n, centre, s.link)
-        if isinstance(s, Arc):
-            # Round a circle of radius R the centre's own path curves: ω²·r·R/(R ± r).
-            big = s.contact.face.radius
-            accel = w * w * r * big / abs(s.roll_gain)
-            said = phrase("apolygon.rolling_round", point=P, link=s.link, centre=s.point,
-                          omega=Number(abs(w)), radius=self.m.units.length_said(r),
-                          big=self.m.units.length_said(big),
-                          op=Word("+" if s.contact.side == "outside" else "−"),
-                          accel=self.say(accel), tip=self.tip_name(P))
-        else:
-            accel = w * w * r
-            said = phrase("apolygon.rolling", point=P, link=s.link, centre=s.point,
-                          omega=Number(abs(w)), radius=self.m.units.length_said(r),
-                          accel=self.say(accel), tip=self.tip_name(P))
+        toward the wheel's centre, as the wheel's kind of contact gives it
+        (:mod:`.polygon_joints`)."""
+        P = self.name(n)
+        line = self.space_line(n, Node(s.point), s.link)
+        accel, said = rules_of(s).rolling(self, n, s)
         return self.act(f"ap:tip:{P}", "lay_off", self.pole_ref, line,
                         length=accel * self.scale, label=self.tip_name(P), said=said)
 

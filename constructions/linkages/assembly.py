@@ -11,9 +11,11 @@ joint from two things already drawn:
 * a point of a link already drawn: two arcs from two of its points.
 
 Each of these is a dyad rule, registered with :func:`~.dyad_rules.dyad_rule` in
-:data:`~.dyad_rules.DYAD_RULES`: a new joint plugs in as one more rule. The rules are
-tried in their order, the first that locates something wins, and the walk starts again.
-When no rule can locate anything more the mechanism needs a triad, and tarsim says so.
+:data:`~.dyad_rules.DYAD_RULES`; each kind of joint names the rules that locate it in
+:data:`~.joint_rules.JOINT_RULES`, and the pin's are :data:`~.joint_rules.PIN_RULES`. The
+rules the mechanism's joints bring are tried in their order, the first that locates
+something wins, and the walk starts again. When no rule can locate anything more the
+mechanism needs a triad, and tarsim says so.
 
 :class:`Assembler` holds what is drawn so far, the acts every rule shares (recording a
 joint, choosing a branch, wording a length) and the walk. The rules live by the joints
@@ -26,11 +28,10 @@ from __future__ import annotations
 
 import math
 
-from . import dyad_cuts, dyad_slots  # noqa: F401  (importing them registers their rules)
 from .. import geometry as g
 from .assembly_record import Assembly, point_ref
 from .dyad_rolling import roll_input
-from .dyad_rules import DYAD_RULES
+from .joint_rules import dyad_rules_for, rules_of
 from ..errors import AssemblyError, BranchError
 from ..joints import Arc, Slide
 from ..model import Mechanism
@@ -143,7 +144,7 @@ class Assembler:
         located (and every slot drawn)."""
         self.mark_frame()
         self.lay_off_input()
-        rules = sorted(DYAD_RULES.values(), key=lambda r: r.order)
+        rules = dyad_rules_for(self.m)
         wanted = [n for n in self.m.point_names]
         while any(n not in self.known for n in wanted):
             if not any(rule.locate(self) for rule in rules):
@@ -161,34 +162,14 @@ class Assembler:
         return self.c
 
     def touch(self) -> dict[Slide | Arc, Ref]:
-        """Mark where each contact's profiles touch, P.
-
-        On a flat face P is the foot of the circle's centre, since the common normal
-        runs through the centre square to the face; between two circles it is on
-        their line of centres, on the cam's rim toward the roller (on its far side
-        only for a cam inside a larger roller).
-        """
+        """Mark where each contact's profiles touch, P, as its kind does
+        (:mod:`.contact_points`)."""
         out: dict[Slide | Arc, Ref] = {}
-        for i, s in enumerate(self.m.slides):
-            if s.contact is not None:
-                face = self.c.draw(f"profile:face:{i}", "parallel_through",
-                                   self.known[s.contact.face.through], self.guides[i],
-                                   kind=Kind.GUIDE, label=f"face of link {s.contact.face.link}")
-                out[s] = self.c.draw(f"contact:{i}", "project_onto", self.known[s.point], face,
-                                     label="P", kind=Kind.CONTACT)
-        for k, a in enumerate(self.m.arcs):
-            if a.contact is None:
-                continue
-            cam, roller = a.contact.face.radius, a.contact.circle.radius
-            reach = -cam if a.contact.side == "inside" and roller > cam else cam
-            c, r = self.known[a.centre], self.known[a.point]
-            if g.distance(self.c.output(c), self.c.output(r)) == 0.0:   # concentric: any rim point
-                x, y = self.c.output(c).xy
-                out[a] = self.c.give(f"contact:a{k}", g.Point(x + reach, y), label="P",
-                                     kind=Kind.CONTACT)
-            else:
-                out[a] = self.c.draw(f"contact:a{k}", "lay_off", c, r, length=reach, label="P",
-                                     kind=Kind.CONTACT)
+        for joints in (self.m.slides, self.m.arcs):
+            for i, j in enumerate(joints):
+                touch = rules_of(j).touch
+                if touch is not None:
+                    out[j] = touch(self, i, j)
         return out
 
     def mark_frame(self) -> None:

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from ..joints import Arc, Slide, SlideKind
+from ..joints import Arc, Slide
 from ..model import Mechanism
 
 __all__ = ["Node", "Walk", "taken", "rolling_contacts"]
@@ -64,7 +64,7 @@ class Walk:
     def frame_guide(self, c: int) -> int | None:
         """The slide index if link ``c`` is a block on a frame guide (so it translates)."""
         return next((i for i, s in enumerate(self.m.slides) if s.link == c and s.guide_link == 1
-                     and s.kind is SlideKind.BLOCK), None)
+                     and s.type.turns_with_guide), None)
 
 
 def taken(m: Mechanism, name: str) -> tuple[int, str]:
@@ -92,6 +92,6 @@ def rolling_contacts(m: Mechanism) -> dict[str, Slide | Arc]:
     goes by: P, or P4 (the wheel's link) where the mechanism has a P of its own or more than
     one wheel. At the instant it is the wheel's point at rest, the centre the wheel turns
     about."""
-    wheels = [s for s in (*m.slides, *m.rolling_arcs) if s.rolling and s.guide_link == 1]
+    wheels = [s for s in (*m.slides, *m.arcs) if s.type.rolling and s.guide_link == 1]
     plain = len(wheels) == 1 and "P" not in m.point_names
     return {("P" if plain else f"P{s.link}"): s for s in wheels}

@@ -9,7 +9,8 @@ The order is the lecture notes' (000-part1 §2.7–2.9):
    has its centre at the contact point. A pin in a straight or curved slot, or a
    direct contact, gives no centre but a locus: the common normal at the contact,
    on which the centre lies (rule 5). For a curved slot or two circles in contact
-   the normal is the line through the two centres of curvature.
+   the normal is the line through the two centres of curvature. Each kind of joint
+   finds its own, as :data:`~.joint_rules.JOINT_RULES` names (:mod:`.inspection`).
 2. *By Kennedy.* On the circle diagram a centre is a chord; it is found when two
    triangles with that chord as a side have their other sides known. Each triangle
    gives a line through two known centres, and the centre is where the lines meet.
@@ -31,8 +32,8 @@ from .. import geometry as g
 from .assembly_record import Assembly
 from .centres import SAME, Centre, Centres, centre_ref, omega_ratio, pair_label
 from ..errors import DegenerateInput, TarsimError
-from ..joints import SlideKind
-from ..narration import Phrase, Word, phrase
+from .joint_rules import rules_of
+from ..narration import Phrase, phrase
 from ..record import Kind, Ref, Role
 
 __all__ = ["locate_centres", "WELL_CROSSED"]
@@ -57,10 +58,6 @@ def locate_centres(asm: Assembly) -> Centres:
     return _Kennedy(asm).run()
 
 
-def _on(link: int) -> Phrase:
-    return phrase("on_frame") if link == 1 else phrase("on_link", link=link)
-
-
 class _Kennedy:
     def __init__(self, asm: Assembly):
         self.asm = asm
@@ -71,74 +68,26 @@ class _Kennedy:
 
     # ----- 1. by inspection ------------------------------------------------------
     def inspect(self) -> None:
-        curved = {(a.centre, *sorted((a.link, a.guide_link))): a for a in self.m.arcs
-                  if a.kind is SlideKind.BLOCK}
+        """Mark every pin's centre, then each other joint's primary centre or common normal,
+        as its kind finds it (:data:`~.joint_rules.JOINT_RULES`, :mod:`.inspection`)."""
+        stand_ins = {(a.centre, *sorted((a.link, a.guide_link))): a for a in self.m.arcs
+                     if rules_of(a).pin is not None}
         for name in self.m.point_names:
             for i, j in combinations(sorted(self.m.links_at(name)), 2):
                 if (i, j) in self.out.found:
                     continue
-                a = curved.get((name, i, j))
-                said = (phrase("centres.pin", point=name, i=i, j=j, centre=pair_label(i, j))
-                        if a is None else
-                        phrase("centres.curved_block", point=a.point, link=a.link,
-                               on=_on(a.guide_link), at=name, centre=pair_label(i, j)))
-                self.record(Centre((i, j), centre_ref(i, j), "pin" if a is None else "curved"),
-                            "mark", self.asm.points[name], said=said)
-        for k, s in enumerate(self.m.slides):
-            i, j = sorted((s.link, s.guide_link))
-            if (i, j) in self.out.found:
-                continue
-            if s.kind is SlideKind.BLOCK:
-                self.record(Centre((i, j), centre_ref(i, j), "block"), "normal_direction",
-                            self.asm.guides[k],
-                            said=phrase("centres.straight_block", point=s.point, link=s.link,
-                                        on=_on(s.guide_link), centre=pair_label(i, j)))
-            elif s.rolling:
-                self.rolling_contact(k, s, (i, j))
-            else:
-                what = "contact" if s.contact is not None else "slot"
-                ref = self.c.draw(f"N:{i}{j}:{k}", "perpendicular_through",
-                                  self.asm.points[s.point], self.asm.guides[k],
-                                  kind=Kind.COMMON_NORMAL,
-                                  phrase=phrase("centres.common_normal", centre=pair_label(i, j),
-                                                point=s.point, what=Word(what),
-                                                link=s.guide_link))
-                self.out.loci.setdefault((i, j), []).append(ref)
-        for a in self.m.rolling_arcs:
-            # A wheel rolling round a circle without slip: the contact point, R from the
-            # circle's centre along the line of centres, is the centre.
-            i, j = sorted((a.link, a.guide_link))
-            if (i, j) not in self.out.found:
-                self.record(Centre((i, j), centre_ref(i, j), "rolling"), "lay_off",
-                            self.asm.points[a.centre], self.asm.points[a.point],
-                            length=a.contact.face.radius,
-                            said=phrase("centres.rolling_round", link=a.link, on=a.guide_link,
-                                        point=a.point, circle=a.centre,
-                                        radius=self.m.units.length_said(a.contact.face.radius),
-                                        centre=pair_label(i, j)))
-        for k, a in enumerate(self.m.pin_arcs):
-            i, j = sorted((a.link, a.guide_link))
-            if (i, j) in self.out.found:
-                continue
-            what = (phrase("centres.line_of_centres") if a.contact is not None
-                    else phrase("centres.curved_radius", link=a.guide_link))
-            ref = self.c.draw(f"N:{i}{j}:a{k}", "line_through", self.asm.points[a.centre],
-                              self.asm.points[a.point], kind=Kind.COMMON_NORMAL,
-                              phrase=phrase("centres.contact_normal", centre=pair_label(i, j),
-                                            what=what, a=a.centre, b=a.point))
-            self.out.loci.setdefault((i, j), []).append(ref)
-
-    def rolling_contact(self, k: int, s, pair: tuple[int, int]) -> Centre:
-        """A wheel rolling without slip: the contact point is the centre (notes §2.7 (4))."""
-        face = s.contact.face
-        line = self.c.draw(f"face:{k}", "parallel_through", self.asm.points[face.through],
-                           self.asm.guides[k],
-                           phrase=phrase("centres.face", point=face.through, link=face.link,
-                                         path_of=s.point))
-        return self.record(Centre(pair, centre_ref(*pair), "rolling"), "project_onto",
-                           self.asm.points[s.point], line,
-                           said=phrase("centres.rolling", link=s.link, on=s.guide_link,
-                                       point=s.point, centre=pair_label(*pair)))
+                a = stand_ins.get((name, i, j))
+                how, said = ("pin", phrase("centres.pin", point=name, i=i, j=j,
+                                           centre=pair_label(i, j)))
+                if a is not None:
+                    how, said = rules_of(a).pin(a, name, i, j)
+                self.record(Centre((i, j), centre_ref(i, j), how), "mark",
+                            self.asm.points[name], said=said)
+        joints = [(k, j) for js in (self.m.slides, self.m.arcs) for k, j in enumerate(js)
+                  if rules_of(j).centre is not None]
+        for k, j in sorted(joints, key=lambda kj: rules_of(kj[1]).inspected):
+            if tuple(sorted((j.link, j.guide_link))) not in self.out.found:
+                rules_of(j).centre(self, k, j)
 
     def record(self, centre: Centre, verb: str, *inputs: Ref, said: Phrase, **params) -> Centre:
         """Draw the step that locates ``centre`` (it carries the centre as what it is about)."""

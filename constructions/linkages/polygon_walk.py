@@ -21,7 +21,8 @@ from .. import geometry as g
 from .assembly_record import Assembly
 from .coincident import Node, Walk, rolling_contacts
 from ..errors import DeadPoint, DegenerateInput, TarsimError
-from ..joints import Slide, SlideKind
+from .joint_rules import rules_of
+from ..joints import Slide
 from ..narration import Number, Phrase, Quantity, Word, narrate, phrase
 from ..record import Construction, Kind, Panel, Ref, Role
 
@@ -232,7 +233,7 @@ class PolygonWalk(Walk):
     def __init__(self, asm: Assembly, scale: float, pole: tuple[float, float]):
         self.asm, self.m, self.c, self.scale = asm, asm.mechanism, asm, scale
         m = self.m
-        moving = [s for s in (*m.slides, *m.rolling_arcs) if s.guide_link != 1 and s.rolling]
+        moving = [s for s in (*m.slides, *m.arcs) if s.guide_link != 1 and s.type.rolling]
         if moving:
             raise TarsimError(f"the {self.kind.noun} polygon does not yet handle the "
                               f"{moving[0].label}, on a moving face; use radius-rotation or "
@@ -354,30 +355,9 @@ class PolygonWalk(Walk):
             i = self.frame_guide(c)
             if i is not None and not (x.link is None and self.m.slides[i].point == x.point):
                 out.append((("glide", i, c), self.asm.guide(i).direction))
-        for i, s in enumerate(self.m.slides):
-            if s.point != x.point:
-                continue
-            if s.guide_link == 1:
-                if x.link is None:
-                    out.append((("guide", i), self.asm.guide(i).direction))
-                continue
-            if x.link is None:
-                other = Node(s.point, s.guide_link)
-            elif x.link == s.guide_link:
-                other = Node(s.point)
-            else:
-                continue
-            if other != x and other in self.nodes and self.ready(other, known):
-                if i not in self.asm.guides:
-                    raise TarsimError(f"the slot of {s.label} was not drawn by the assembly")
-                out.append((("slot", other, i), self.asm.guide(i).direction))
-        for i, a in enumerate(self.m.pin_arcs):
-            if a.guide_link == 1:      # a slot of the frame: P moves on the circle about K
-                other = Node(a.centre) if x == Node(a.point) else None
-            else:
-                other = self.partner(x, a.point, a.guide_link)
-            if other is not None and self.ready(other, known):
-                out.append((("curve", other, i), self.normal(Node(a.centre), Node(a.point))))
+        for joints in (self.m.slides, self.m.pin_arcs):      # as each kind's locus gives it
+            for i, j in enumerate(joints):
+                out += rules_of(j).locus(self, x, i, j, known)
         return list(dict.fromkeys(out))
 
     def curve_nodes(self, x: Node, other: Node) -> tuple[Node, Node, str]:
@@ -549,7 +529,7 @@ class PolygonWalk(Walk):
         """A one-point block turns with its guide (or not at all on the frame): fill its rate."""
         while later:
             for c in later:
-                s = next((s for s in self.m.slides if s.link == c and s.kind is SlideKind.BLOCK
+                s = next((s for s in self.m.slides if s.link == c and s.type.turns_with_guide
                           and (s.guide_link == 1 or s.guide_link in rates)), None)
                 if s is not None:
                     rates[c] = 0.0 if s.guide_link == 1 else rates[s.guide_link]
