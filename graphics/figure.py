@@ -9,7 +9,8 @@ from __future__ import annotations
 
 import math
 import pathlib
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
+from contextlib import contextmanager
 from dataclasses import dataclass, field, replace
 from functools import lru_cache
 
@@ -105,6 +106,10 @@ class View:
         """A world direction as a paper direction (y flips)."""
         return (d[0], -d[1])
 
+    def moved(self, dx: float, dy: float) -> View:
+        """The view of a drawing moved by (dx, dy) mm on its paper."""
+        return View(self.scale, (self.origin[0] + dx, self.origin[1] + dy))
+
 
 @dataclass(frozen=True, slots=True)
 class Path:
@@ -113,6 +118,9 @@ class Path:
     points: tuple[tuple[float, float], ...]
     style: str
     closed: bool = False
+    steps: tuple[str, ...] = ()
+    """The record's steps this draws (:meth:`Figure.for_steps`); none for what every step
+    stands on (the mechanism, a caption)."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -122,6 +130,8 @@ class Circle:
     centre: tuple[float, float]
     radius: float
     style: str
+    steps: tuple[str, ...] = ()
+    """The record's steps this draws, as a :class:`Path`'s."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -144,6 +154,8 @@ class Text:
     sub: str = ""
     tail: str = ""
     owner: tuple[tuple[float, float], ...] | None = None
+    steps: tuple[str, ...] = ()
+    """The record's steps this names or numbers, as a :class:`Path`'s."""
 
     @property
     def width(self) -> float:
@@ -254,13 +266,30 @@ class Figure:
     height: float
     items: list[Path | Circle | Text] = field(default_factory=list)
     title: str = ""
+    views: dict[str, View] = field(default_factory=dict)
+    """Where each panel's world stands on the page, by the panel's name ("space",
+    "velocity", …): the view its drawing was made by, moved with it, so that a point of
+    the mechanism (or of a polygon) can be found on the figure again."""
+    _steps: tuple[str, ...] = field(default=(), repr=False, compare=False)
     sheets: list[Figure] = field(default_factory=list)
     """A figure that runs over several sheets: each sheet, in order (a PDF prints a page
     each); its own items are them stacked (:func:`stack_pages`), for one SVG."""
 
     def add(self, item: Path | Circle | Text) -> None:
         """Append a primitive."""
-        self.items.append(item)
+        self.items.append(replace(item, steps=self._steps)
+                          if self._steps and not item.steps else item)
+
+    @contextmanager
+    def for_steps(self, *steps: str) -> Iterator[None]:
+        """Mark what is added within as drawn for these steps of the record (by ref), so
+        that a page can show the figure step by step; what is added outside stands on
+        every step."""
+        outer, self._steps = self._steps, tuple(steps)
+        try:
+            yield
+        finally:
+            self._steps = outer
 
     def save(self, path) -> pathlib.Path:
         """Write the figure to ``path``: .svg, .pdf or .png by its suffix (PDF and PNG need
@@ -283,7 +312,8 @@ class Figure:
 
     def add_under(self, item: Path | Circle | Text) -> None:
         """Put a primitive beneath everything drawn so far: a tint that must hide no line."""
-        self.items.insert(0, item)
+        self.items.insert(0, replace(item, steps=self._steps)
+                          if self._steps and not item.steps else item)
 
     def line(self, p: tuple[float, float], q: tuple[float, float], style: str) -> None:
         """Add a straight segment."""
@@ -309,6 +339,7 @@ class Figure:
     def shift(self, dx: float, dy: float) -> None:
         """Move everything drawn by (dx, dy) mm."""
         self.items = [_shifted(it, dx, dy) for it in self.items]
+        self.views = {name: v.moved(dx, dy) for name, v in self.views.items()}
 
     def arc(self, centre: tuple[float, float], r: float, a0: float, a1: float, style: str) -> None:
         """Add a circular arc on paper from angle a0 to a1 (radians, paper-CCW as seen)."""
@@ -320,12 +351,13 @@ class Figure:
 
 def _shifted(it: Path | Circle | Text, dx: float, dy: float) -> Path | Circle | Text:
     if isinstance(it, Path):
-        return Path(tuple((x + dx, y + dy) for x, y in it.points), it.style, it.closed)
+        return Path(tuple((x + dx, y + dy) for x, y in it.points), it.style, it.closed,
+                    it.steps)
     if isinstance(it, Circle):
-        return Circle((it.centre[0] + dx, it.centre[1] + dy), it.radius, it.style)
+        return Circle((it.centre[0] + dx, it.centre[1] + dy), it.radius, it.style, it.steps)
     owner = None if it.owner is None else tuple((x + dx, y + dy) for x, y in it.owner)
     return Text((it.at[0] + dx, it.at[1] + dy), it.text, it.size, it.anchor, it.italic, it.weight,
-                it.sub, it.tail, owner)
+                it.sub, it.tail, owner, it.steps)
 
 
 Box = tuple[float, float, float, float]
@@ -443,4 +475,5 @@ def stack_pages(pages: list[Figure], gap: float = PAGE_GAP) -> Figure:
         if i:
             out.line((0.0, top - gap / 2), (width, top - gap / 2), "page_rule")
         out.items += [_shifted(it, 0.0, top) for it in page.items]
+        out.views.update({name: v.moved(0.0, top) for name, v in page.views.items()})
     return out

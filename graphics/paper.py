@@ -81,4 +81,5 @@ def on_sheet(fig: Figure, sheet: Paper) -> Figure:
     if size is None:
         return fig
     dx, dy = (size[0] - fig.width) / 2, (size[1] - fig.height) / 2
-    return Figure(size[0], size[1], [_shifted(it, dx, dy) for it in fig.items], title=fig.title)
+    return Figure(size[0], size[1], [_shifted(it, dx, dy) for it in fig.items], title=fig.title,
+                  views={name: v.moved(dx, dy) for name, v in fig.views.items()})

@@ -78,10 +78,13 @@ def label_points(polygon: _PolygonPanel) -> None:
         names = list(dict.fromkeys(typeset(s.label) for s in grp if s.label))
         text, sub, tail = _joined(names) if names else ("", "", "")
         rays = polygon.rays_at(at)
-        polygon.placer.place_numbered(text, at, _numbered(polygon, grp), sub=sub, tail=tail,
-                                      prefer=_free_direction(at, rays, polygon.centre), gap=1.0,
-                                      size=3.8, farther=_FARTHER, crossing=_CROSSING,
-                                      own=at if names else None, beside=True)
+        with polygon.fig.for_steps(*(s.id for s in grp)):
+            polygon.placer.place_numbered(text, at, _numbered(polygon, grp), sub=sub,
+                                          tail=tail,
+                                          prefer=_free_direction(at, rays, polygon.centre),
+                                          gap=1.0, size=3.8, farther=_FARTHER,
+                                          crossing=_CROSSING, own=at if names else None,
+                                          beside=True)
 
 
 def label_vectors(polygon: _PolygonPanel) -> None:
@@ -106,39 +109,45 @@ def label_vectors(polygon: _PolygonPanel) -> None:
         else:
             same.append(v)
     for group in sorted(twins, key=lambda t: math.dist(t[0][1], t[0][2])):
-        step, a, b = group[0]
-        names = list(dict.fromkeys(typeset(s.label) for s, _, _ in group if s.label))
-        text, sub = names[0] if names else ("", "")
-        numbers = _numbered(polygon, (s for s, _, _ in group))
-        if math.dist(a, b) < ZERO:
-            rays = polygon.rays_at(a)
-            polygon.placer.place_numbered(text, a, numbers, sub=sub,
-                                          tail=" = 0" if text else "",
-                                          prefer=_free_direction(a, rays, polygon.centre), gap=1.6,
-                                          size=3.2)
-            continue
-        d = unit((b[0] - a[0], b[1] - a[1]))
-        normal = math.atan2(d[0], d[1])       # the paper normal (−dy, dx) as a paper angle
-        true_a = polygon.drawn[step.id][2]
-        away = (a[0] + b[0]) / 2 - polygon.centre[0], (a[1] + b[1]) / 2 - polygon.centre[1]
-        if math.dist(a, true_a) > HERE:      # in a lane: its side is the lane's
-            away = (a[0] - true_a[0], a[1] - true_a[1])
-        if away[0] * math.cos(normal) - away[1] * math.sin(normal) < 0:
-            normal += math.pi                  # the outer side of the polygon first
-        others = [(p, q) for s, p, q in drawn if all(s is not t for t, _, _ in group)]
-        anchors = [(a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]))
-                   for t in _own_stretch(a, b, others)]
-        # A short arrow has little shaft to stand beside: its name may go round its ends.
-        spread = math.pi / 3
-        # So short an arrow is found by its name only beside it: farther rings only
-        # where every spot beside it covers another label.
-        dot = math.dist(a, b) < _TINY
-        polygon.placer.place_numbered(text, anchors, numbers, sub=sub, also=tuple(names[1:]),
-                                      prefer=(normal, normal + math.pi), spread=spread,
-                                      gap=1.0, size=3.4, rings=_NEAR, farther=_FARTHER,
-                                      crossing=_ON_LABEL if dot else 0.0,
-                                      own=None if not text else _middle(a, b) if dot
-                                      else (a, b))
+        with polygon.fig.for_steps(*(s.id for s, _, _ in group)):
+            _label_vector(polygon, group, drawn)
+
+
+def _label_vector(polygon: _PolygonPanel, group: list, drawn: list) -> None:
+    """One vector's label (or the one label of arrows drawn one over another)."""
+    step, a, b = group[0]
+    names = list(dict.fromkeys(typeset(s.label) for s, _, _ in group if s.label))
+    text, sub = names[0] if names else ("", "")
+    numbers = _numbered(polygon, (s for s, _, _ in group))
+    if math.dist(a, b) < ZERO:
+        rays = polygon.rays_at(a)
+        polygon.placer.place_numbered(text, a, numbers, sub=sub,
+                                      tail=" = 0" if text else "",
+                                      prefer=_free_direction(a, rays, polygon.centre), gap=1.6,
+                                      size=3.2)
+        return
+    d = unit((b[0] - a[0], b[1] - a[1]))
+    normal = math.atan2(d[0], d[1])       # the paper normal (−dy, dx) as a paper angle
+    true_a = polygon.drawn[step.id][2]
+    away = (a[0] + b[0]) / 2 - polygon.centre[0], (a[1] + b[1]) / 2 - polygon.centre[1]
+    if math.dist(a, true_a) > HERE:      # in a lane: its side is the lane's
+        away = (a[0] - true_a[0], a[1] - true_a[1])
+    if away[0] * math.cos(normal) - away[1] * math.sin(normal) < 0:
+        normal += math.pi                  # the outer side of the polygon first
+    others = [(p, q) for s, p, q in drawn if all(s is not t for t, _, _ in group)]
+    anchors = [(a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]))
+               for t in _own_stretch(a, b, others)]
+    # A short arrow has little shaft to stand beside: its name may go round its ends.
+    spread = math.pi / 3
+    # So short an arrow is found by its name only beside it: farther rings only
+    # where every spot beside it covers another label.
+    dot = math.dist(a, b) < _TINY
+    polygon.placer.place_numbered(text, anchors, numbers, sub=sub, also=tuple(names[1:]),
+                                  prefer=(normal, normal + math.pi), spread=spread,
+                                  gap=1.0, size=3.4, rings=_NEAR, farther=_FARTHER,
+                                  crossing=_ON_LABEL if dot else 0.0,
+                                  own=None if not text else _middle(a, b) if dot
+                                  else (a, b))
 
 
 def number_lines(polygon: _PolygonPanel) -> None:
@@ -153,9 +162,10 @@ def number_lines(polygon: _PolygonPanel) -> None:
         normal = math.atan2(d[0], d[1])
         anchors = [(a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]))
                    for t in _own_stretch(a, b, arrows)]
-        polygon.placer.place_numbered("", anchors, _numbered(polygon, steps),
-                                      prefer=(normal, normal + math.pi), spread=math.pi / 4,
-                                      gap=0.6, farther=_FARTHER)
+        with polygon.fig.for_steps(*(s.id for s in steps)):
+            polygon.placer.place_numbered("", anchors, _numbered(polygon, steps),
+                                          prefer=(normal, normal + math.pi),
+                                          spread=math.pi / 4, gap=0.6, farther=_FARTHER)
 
 
 def _free_direction(at: tuple[float, float], rays: list[tuple[float, float]],

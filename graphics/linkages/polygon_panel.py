@@ -194,7 +194,7 @@ class _PolygonPanel:
         self.per_cm = per_cm or _per_cm(self.world, scale, units, room)
         # Paper mm per drawing metre: 10 mm stands for per_cm file units per second.
         self.view = View(10.0 / (self.per_cm * units.metres * scale), (0.0, 0.0))
-        self.fig = Figure(0.0, 0.0)
+        self.fig = Figure(0.0, 0.0, views={panel.value: self.view})
         self.placer = LabelPlacer(self.fig)
         self.paper = [self.view(p) for p in self.world]
         self.centre = (sum(p[0] for p in self.paper) / len(self.paper),
@@ -264,8 +264,8 @@ class _PolygonPanel:
 
     # ----- drawing -------------------------------------------------------------------------
     def draw_lines(self) -> None:
-        for _, ends in self.lines:
-            self.fig.add(Path(ends, "working"))
+        for steps, ends in self.lines:
+            self.fig.add(Path(ends, "working", steps=tuple(s.id for s in steps)))
             self.placer.block_path(ends, 0.3, weight=CROSSABLE)
 
     def draw_circles(self) -> None:
@@ -274,7 +274,7 @@ class _PolygonPanel:
             if isinstance(step.output, g.Circle):
                 c = self.view(step.output.centre.xy)
                 pts = arc_points(c, step.output.radius * self.view.scale, 0.0, 2 * math.pi)
-                self.fig.add(Path(tuple(pts), "compass"))
+                self.fig.add(Path(tuple(pts), "compass", steps=(step.id,)))
                 self.placer.block_path(pts, 0.3)
 
     def vectors(self) -> list[tuple[Step, tuple[float, float], tuple[float, float]]]:
@@ -304,17 +304,23 @@ class _PolygonPanel:
         for step, a, b in self.vectors():
             if math.dist(a, b) < ZERO:
                 continue
-            heavy = step.role is not Role.CONSTRUCTION
-            if step.id not in hidden:
-                draw_arrow(self.fig, a, b, "vector_result" if heavy else "vector",
-                           **_HEAVY if heavy else _LIGHT)
-                self.placer.block_path([a, b], 1.6 if heavy else 1.3)
-            for end, true in zip((a, b), self.drawn[step.id][2:]):
-                if math.dist(end, true) > HERE:
-                    self.fig.add(Path((true, end), "leader"))
-                    self.placer.block_path([true, end], 0.3, weight=CROSSABLE)
-            self.add_rays(a, [b])
-            self.add_rays(b, [a])
+            with self.fig.for_steps(step.id):
+                self.draw_vector(step, a, b, step.id in hidden)
+
+    def draw_vector(self, step: Step, a: tuple[float, float], b: tuple[float, float],
+                    hidden: bool) -> None:
+        """One arrow, unless the pole's dot hides it, and its leaders out of its lane."""
+        heavy = step.role is not Role.CONSTRUCTION
+        if not hidden:
+            draw_arrow(self.fig, a, b, "vector_result" if heavy else "vector",
+                       **_HEAVY if heavy else _LIGHT)
+            self.placer.block_path([a, b], 1.6 if heavy else 1.3)
+        for end, true in zip((a, b), self.drawn[step.id][2:]):
+            if math.dist(end, true) > HERE:
+                self.fig.add(Path((true, end), "leader"))
+                self.placer.block_path([true, end], 0.3, weight=CROSSABLE)
+        self.add_rays(a, [b])
+        self.add_rays(b, [a])
 
     def hidden(self) -> set[str]:
         """The vectors whose arrows the pole's dot would cover whole (A_C a quarter
@@ -337,7 +343,7 @@ class _PolygonPanel:
                 continue
             at = self.view(out.xy)
             if step.role is Role.GIVEN or not any(math.dist(at, e) <= HERE for e in ends):
-                self.fig.add(Circle(at, _DOT, "dot"))
+                self.fig.add(Circle(at, _DOT, "dot", steps=(step.id,)))
                 self.placer.block(SPoint(at).buffer(_DOT + 0.5))
 
 

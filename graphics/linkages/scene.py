@@ -147,6 +147,7 @@ class _Scene(_Diagram):
     # ----- planning, before the diagram places its own labels ------------------------------
     def layout(self) -> None:
         super().layout()
+        self.fig.views[Panel.SPACE.value] = self.view
         xy = list(self.world.values())
         self.size = self.asm.size
         self.centre = centroid(list(self.paper.values()))

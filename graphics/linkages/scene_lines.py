@@ -174,11 +174,11 @@ def draw_working(scene: _Scene) -> None:
                    key=_PRIORITY.index)
         if ends is not None:
             scene.kinds += [kind] if kind not in scene.kinds else []
-            scene.fig.add(Path(ends, LINE_KINDS[kind][0]))
+            scene.fig.add(Path(ends, LINE_KINDS[kind][0], steps=tuple(s.id for s in steps)))
             scene.placer.block_path(ends, 0.3)
-    for _, pts, _ in scene.arcs:
+    for step, pts, _ in scene.arcs:
         for part in _clipped(scene, pts):
-            scene.fig.add(Path(tuple(part), "compass"))
+            scene.fig.add(Path(tuple(part), "compass", steps=(step.id,)))
             scene.placer.block_path(part, 0.3)
     # Vectors, dots, angles' arcs and edge arrows are drawn on top later; their room is
     # taken now (a point past the frame is an edge arrow, not a dot).

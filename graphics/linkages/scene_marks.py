@@ -45,10 +45,11 @@ _INF_ARROW = 11.0   # each half of the arrow of a centre at infinity, mm
 
 def draw_arc_heads(scene: _Scene) -> None:
     """Head each swung arc with an arrow where the radius was swung to, if on the page."""
-    for _, pts, swung in scene.arcs:
+    for step, pts, swung in scene.arcs:
         if swung and scene.clip_box.contains(SPoint(pts[-1])):
             d = unit((pts[-1][0] - pts[-2][0], pts[-1][1] - pts[-2][1]))
-            draw_arrowhead(scene.fig, pts[-1], d, length=2.2, width=1.2)
+            with scene.fig.for_steps(step.id):
+                draw_arrowhead(scene.fig, pts[-1], d, length=2.2, width=1.2)
 
 
 def draw_measures(scene: _Scene) -> None:
@@ -65,13 +66,14 @@ def draw_measures(scene: _Scene) -> None:
     measures = [s for s in scene.steps if isinstance(s.output, (Dimension, Angle))]
     for step in sorted(measures, key=lambda s: isinstance(s.output, Angle)):
         out = step.output
-        if isinstance(out, Dimension):
-            _draw_dimension(scene, step, out)
-            continue
-        centre, radius = scene.angle_arc(step)
-        at = draw_turning_arrow(scene.fig, centre, radius, out.start, out.sweep, "dimension")
-        text = f"{numerals(f'{out.degrees:.2f}')}° {words(step.label)}".strip()
-        scene.label(text, at, [step], prefer=out.start + out.sweep / 2, gap=1.6, size=3.2)
+        with scene.fig.for_steps(step.id):
+            if isinstance(out, Dimension):
+                _draw_dimension(scene, step, out)
+                continue
+            centre, radius = scene.angle_arc(step)
+            at = draw_turning_arrow(scene.fig, centre, radius, out.start, out.sweep, "dimension")
+            text = f"{numerals(f'{out.degrees:.2f}')}° {words(step.label)}".strip()
+            scene.label(text, at, [step], prefer=out.start + out.sweep / 2, gap=1.6, size=3.2)
 
 
 def _draw_dimension(scene: _Scene, step: Step, out: Dimension) -> None:
@@ -124,21 +126,26 @@ def draw_vectors(scene: _Scene) -> None:
     scene.placer.name_vectors((scene.view(s.output.start.xy), scene.view(s.output.end.xy))
                               for s in drawn if s.label)
     for step in drawn:
-        out = step.output
-        a, b = scene.view(out.start.xy), scene.view(out.end.xy)
-        text, sub = typeset(step.label) if step.label else ("", "")
-        if math.dist(a, b) < 0.5:
-            scene.label(f"{text}{sub} = 0" if text else "", a, [step])
-            continue
-        result = step.role is Role.RESULT
-        draw_arrow(scene.fig, a, b, "vector_result" if result else "vector",
-                   head=3.2 if result else 2.8, width=1.6 if result else 1.4)
-        d = unit((b[0] - a[0], b[1] - a[1]))
-        normal = math.atan2(d[0], d[1])     # the paper normal (−dy, dx) as a paper angle
-        anchors = [(a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]))
-                   for t in (0.6, 0.45, 0.75, 0.3, 0.9)]
-        scene.label(text, anchors, [step], sub=sub, prefer=(normal, normal + math.pi),
-                    spread=math.pi / 3, gap=1.2, size=3.6, own=(a, b) if text else None)
+        with scene.fig.for_steps(step.id):
+            _draw_vector(scene, step)
+
+
+def _draw_vector(scene: _Scene, step: Step) -> None:
+    out = step.output
+    a, b = scene.view(out.start.xy), scene.view(out.end.xy)
+    text, sub = typeset(step.label) if step.label else ("", "")
+    if math.dist(a, b) < 0.5:
+        scene.label(f"{text}{sub} = 0" if text else "", a, [step])
+        return
+    result = step.role is Role.RESULT
+    draw_arrow(scene.fig, a, b, "vector_result" if result else "vector",
+               head=3.2 if result else 2.8, width=1.6 if result else 1.4)
+    d = unit((b[0] - a[0], b[1] - a[1]))
+    normal = math.atan2(d[0], d[1])     # the paper normal (−dy, dx) as a paper angle
+    anchors = [(a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]))
+               for t in (0.6, 0.45, 0.75, 0.3, 0.9)]
+    scene.label(text, anchors, [step], sub=sub, prefer=(normal, normal + math.pi),
+                spread=math.pi / 3, gap=1.2, size=3.6, own=(a, b) if text else None)
 
 
 def draw_points(scene: _Scene) -> None:
@@ -160,13 +167,15 @@ def draw_points(scene: _Scene) -> None:
         p = grp[0].output.xy
         at = scene.view(p)
         pin = scene.is_pin(p)
+        ids = tuple(s.id for s in grp)
         if not pin and not any(scene.coincide(grp[0].output, e) for e in scene.ends):
-            scene.fig.add(Circle(at, DOT, "dot"))
+            scene.fig.add(Circle(at, DOT, "dot", steps=ids))
         names = list(dict.fromkeys(typeset(s.label)[0] for s in grp if s.label))
         away = (at[0] - scene.centre[0], at[1] - scene.centre[1])
         prefer = math.atan2(-away[1], away[0]) if math.hypot(*away) > 1e-6 else math.pi / 4
-        scene.label(" ≡ ".join(names), at, grp, prefer=prefer, gap=2.2 if pin else 1.2,
-                    own=at if names else None)
+        with scene.fig.for_steps(*ids):
+            scene.label(" ≡ ".join(names), at, grp, prefer=prefer, gap=2.2 if pin else 1.2,
+                        own=at if names else None)
 
 
 def draw_infinities(scene: _Scene) -> None:
@@ -188,12 +197,13 @@ def draw_infinities(scene: _Scene) -> None:
             if best is None or (cost, rank) < best[:2]:
                 best = (cost, rank, base, a, b)
         _, _, base, a, b = best
-        draw_arrow(scene.fig, base, b, "arrow", head=2.4, width=1.3)
-        draw_arrow(scene.fig, base, a, "arrow", head=2.4, width=1.3)
-        scene.placer.block_path([a, b], 1.6)
-        text = (typeset(step.label)[0] + " → ∞") if step.label else "→ ∞"
-        scene.label(text, [b, a], [step],
-                    prefer=(math.atan2(-u[1], u[0]), math.atan2(u[1], -u[0])), gap=1.0)
+        with scene.fig.for_steps(step.id):
+            draw_arrow(scene.fig, base, b, "arrow", head=2.4, width=1.3)
+            draw_arrow(scene.fig, base, a, "arrow", head=2.4, width=1.3)
+            scene.placer.block_path([a, b], 1.6)
+            text = (typeset(step.label)[0] + " → ∞") if step.label else "→ ∞"
+            scene.label(text, [b, a], [step],
+                        prefer=(math.atan2(-u[1], u[0]), math.atan2(u[1], -u[0])), gap=1.0)
 
 
 def _infinity_anchor(scene: _Scene, step: Step):
@@ -219,23 +229,28 @@ def _infinity_anchor(scene: _Scene, step: Step):
 def draw_far(scene: _Scene) -> None:
     """Draw the edge arrows toward each far point, labelled with its distance from a pin."""
     for step, p, arrows in scene.edge_arrows:
-        for tail, tip in arrows:
-            draw_arrow(scene.fig, tail, tip, "edge_arrow", head=2.8, width=1.5)
-        near, dist = min(((n, math.dist(p, q)) for n, q in scene.world.items()),
-                         key=lambda nd: nd[1])
-        name = typeset(step.label)[0] if step.label else words("a point")
-        text = words("to {name}, {length} from {near}", name=name,
-                     length=_length(dist, scene.m.units), near=subscript(near))
-        # A vector drawn at the far point is off the page too: its number goes here.
-        riders = [v for v in scene.steps if v.id in scene.off_page and scene.far_base(v) is step]
-        tail, tip = arrows[0]
-        ahead = math.atan2(tail[1] - tip[1], tip[0] - tail[0])
-        # The label reads on from the arrow, past the page's frame if need be.
-        page, scene.placer.page = scene.placer.page, None
-        scene.label(text, [tip, tail], [step, *riders], prefer=(ahead, ahead + math.pi / 2,
-                                                                ahead - math.pi / 2),
-                    gap=1.0, size=3.2, spread=math.pi / 2)
-        scene.placer.page = page
+        with scene.fig.for_steps(step.id):
+            _draw_far(scene, step, p, arrows)
+
+
+def _draw_far(scene: _Scene, step: Step, p: tuple[float, float], arrows: list) -> None:
+    for tail, tip in arrows:
+        draw_arrow(scene.fig, tail, tip, "edge_arrow", head=2.8, width=1.5)
+    near, dist = min(((n, math.dist(p, q)) for n, q in scene.world.items()),
+                     key=lambda nd: nd[1])
+    name = typeset(step.label)[0] if step.label else words("a point")
+    text = words("to {name}, {length} from {near}", name=name,
+                 length=_length(dist, scene.m.units), near=subscript(near))
+    # A vector drawn at the far point is off the page too: its number goes here.
+    riders = [v for v in scene.steps if v.id in scene.off_page and scene.far_base(v) is step]
+    tail, tip = arrows[0]
+    ahead = math.atan2(tail[1] - tip[1], tip[0] - tail[0])
+    # The label reads on from the arrow, past the page's frame if need be.
+    page, scene.placer.page = scene.placer.page, None
+    scene.label(text, [tip, tail], [step, *riders], prefer=(ahead, ahead + math.pi / 2,
+                                                            ahead - math.pi / 2),
+                gap=1.0, size=3.2, spread=math.pi / 2)
+    scene.placer.page = page
 
 
 def number_lines(scene: _Scene) -> None:
@@ -248,13 +263,15 @@ def number_lines(scene: _Scene) -> None:
         normal = math.atan2(d[0], d[1])
         anchors = [(a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]))
                    for t in (0.92, 0.8, 0.68, 0.56, 0.44, 0.32, 0.2, 0.08)]
-        scene.label("", anchors, steps, prefer=(normal, normal + math.pi),
-                    spread=math.pi / 4, gap=0.6)
+        with scene.fig.for_steps(*(s.id for s in steps)):
+            scene.label("", anchors, steps, prefer=(normal, normal + math.pi),
+                        spread=math.pi / 4, gap=0.6)
     numbered: set[str] = set()
     for step, pts, _ in scene.arcs:        # a circle drawn as traces is numbered once
         if step.id not in numbered:
             numbered.add(step.id)
-            scene.label("", [pts[len(pts) // 2], pts[-1], pts[0]], [step], gap=0.6)
+            with scene.fig.for_steps(step.id):
+                scene.label("", [pts[len(pts) // 2], pts[-1], pts[0]], [step], gap=0.6)
 
 
 def _length(metres: float, units) -> str:

@@ -254,13 +254,14 @@ def _place_panel(page: Figure, panel: Figure, at: tuple[float, float], *, frame:
 
     A copy is moved, never scaled, so the panel's scale bar still measures true.
     """
-    copy = Figure(panel.width, panel.height, list(panel.items))
+    copy = Figure(panel.width, panel.height, list(panel.items), views=dict(panel.views))
     copy.shift(*at)
     x, y = at
     if frame:
         page.add(Path(((x, y), (x + panel.width, y), (x + panel.width, y + panel.height),
                        (x, y + panel.height)), "frame", closed=True))
     page.items.extend(copy.items)
+    page.views.update(copy.views)
 
 
 # ----- the results table --------------------------------------------------------------------
