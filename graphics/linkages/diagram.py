@@ -9,7 +9,8 @@ This module holds the diagram (what it knows of the mechanism on paper, and the
 order it draws in) and the pin-jointed linkage: ground pivots, links and pins. The
 rest is drawn by its siblings: :mod:`.diagram_slides` (blocks, guides, curved slots
 and guides), :mod:`.diagram_contacts` (a cam's circle on a face or a roller, and P)
-and :mod:`.diagram_labels` (the input's θ and ω, link numbers, point names). A
+and :mod:`.diagram_labels` (the input's θ and ω, link numbers, point names), each
+joint as its kind's symbol says (:mod:`.joint_symbols`). A
 scene (:mod:`.scene`) is a diagram with a record's steps drawn on it.
 """
 
@@ -20,13 +21,14 @@ import math
 from shapely.geometry import MultiPoint, Point as SPoint
 
 from tarsim.constructions.linkages.assembly_record import Assembly
-from tarsim.constructions.joints import Slide, SlideKind
+from tarsim.constructions.joints import Slide
 from tarsim.constructions.model import Mechanism
 from tarsim.constructions.scales import space_per_cm
 
 from .diagram_contacts import contact, draw_contacts, pair
 from .diagram_labels import draw_input, input_caption, label_links, label_points
 from .diagram_slides import draw_blocks, draw_frame_guides, draw_track, track
+from .joint_symbols import Drawn, symbol_of
 from ..figure import Figure, Path, View
 from ..labels import LabelPlacer
 from ..paper_points import difference, farthest_pair
@@ -58,11 +60,11 @@ class _Diagram:
         self.m: Mechanism = asm.mechanism
         self.world = {n: asm.xy(n) for n in self.m.point_names}
         self.contacts = [contact(self, i, s) for i, s in enumerate(self.m.slides)
-                         if s.contact is not None]
-        self.pairs = [pair(self, a) for a in self.m.arcs if a.contact is not None]
+                         if symbol_of(s).drawn is Drawn.FACE]
+        self.pairs = [pair(self, a) for a in self.m.arcs if symbol_of(a).drawn is Drawn.CIRCLES]
         # A block on a curved guide carries the centre of curvature as its pin: a
         # kinematic stand-in, not a part of the block to draw.
-        self.synthetic = {(a.link, a.centre) for a in self.m.arcs if a.kind is SlideKind.BLOCK}
+        self.synthetic = {(a.link, a.centre) for a in self.m.arcs if a.type.stands_as_pin}
 
     def links_at(self, name: str) -> list[int]:
         """The links drawn at a point (a block's stand-in pin left out)."""
@@ -80,7 +82,7 @@ class _Diagram:
         self.placer = LabelPlacer(self.fig)
         self.paper = {n: self.view(p) for n, p in self.world.items()}
         self.placer.name_points(self.paper.values())
-        self.tracks = [track(self, a) for a in self.m.arcs if a.contact is None]
+        self.tracks = [track(self, a) for a in self.m.arcs if symbol_of(a).drawn is Drawn.TRACK]
         self.downs: dict[str, tuple[float, float]] = {}    # each ground pivot's support
 
     # ----- drawing ---------------------------------------------------------------------
@@ -214,7 +216,7 @@ class _Diagram:
 # ----- small helpers ---------------------------------------------------------------------
 def _is_slot(s: Slide) -> bool:
     """A slide drawn as a slot or guide; a contact's equivalent slide is drawn as profiles."""
-    return s.contact is None
+    return symbol_of(s).drawn is Drawn.GUIDE
 
 
 def _clearest_direction(dirs: list[tuple[float, float]],

@@ -22,6 +22,7 @@ from tarsim.constructions.scales import face_ends
 from ..figure import Circle
 from ..paper_points import difference
 from ..symbols import draw_guide, draw_hatched_arc, unit
+from .joint_symbols import Drawn, symbol_of
 
 if TYPE_CHECKING:
     from .diagram import _Diagram
@@ -90,7 +91,7 @@ def draw_contacts(diagram: _Diagram) -> None:
         # Past its own point only if that is a bare dot (under a block), not a pivot.
         margin = _FACE_MARGIN if diagram.marked(k.slide.contact.face.through) else 0.0
         a, b = (diagram.view(e) for e in _face(diagram, k, margin / diagram.view.scale))
-        if k.slide.rolling and k.slide.guide_link == 1:
+        if symbol_of(k.slide).ground and k.slide.guide_link == 1:
             diagram.placer.block(draw_guide(diagram.fig, a, b, diagram.view.direction(k.away)))
         else:
             diagram.fig.line(a, b, "link")
@@ -99,11 +100,12 @@ def draw_contacts(diagram: _Diagram) -> None:
         for n in (k.slide.point, k.slide.contact.face.through):
             if diagram.marked(n):
                 _draw_dot(diagram, diagram.paper[n])
-    for k, a in zip(diagram.pairs, [a for a in diagram.m.arcs if a.contact is not None]):
+    for k, a in zip(diagram.pairs, [a for a in diagram.m.arcs
+                                    if symbol_of(a).drawn is Drawn.CIRCLES]):
         _draw_circle(diagram, k.cam, k.cam_radius)
         _draw_circle(diagram, k.roller, k.roller_radius)
         _draw_dot(diagram, diagram.view(k.point))
-        if a.rolling and a.guide_link == 1:
+        if symbol_of(a).ground and a.guide_link == 1:
             # The fixed circle a wheel rolls round is the ground: hatched on its far
             # side from the wheel, either way of the contact.
             c, p = diagram.view(k.cam), diagram.view(k.point)

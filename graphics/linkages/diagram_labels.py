@@ -14,11 +14,11 @@ from typing import TYPE_CHECKING
 
 from shapely.geometry import MultiPoint
 
-from tarsim.constructions.joints import SlideKind
 from tarsim.constructions.model import Mechanism
 from tarsim.constructions.narration import significant, words
 
 from .diagram_slides import block_centre, block_lift
+from .joint_symbols import symbol_of
 from ..figure import Text, arc_points
 from ..paper_points import centroid, difference, farthest_pair
 from ..symbols import draw_turning_arrow, mark_angle, unit
@@ -92,7 +92,7 @@ def label_links(diagram: _Diagram) -> None:
             at, prefer = pts[0], math.pi / 2
             gap = 4.2
             lifted = [s for s in diagram.m.slides if s.link == k.number
-                      and s.kind is SlideKind.BLOCK and block_lift(diagram, s)[1] > 0.0]
+                      and symbol_of(s).block and block_lift(diagram, s)[1] > 0.0]
             if lifted:  # beside the block standing on the face, not under it
                 at, prefer = block_centre(diagram, lifted[0]), (math.pi, 0.0)
         else:

@@ -16,11 +16,12 @@ from typing import TYPE_CHECKING
 
 from shapely.geometry import MultiPoint
 
-from tarsim.constructions.joints import Arc, Slide, SlideKind
+from tarsim.constructions.joints import Arc, Slide
 
 from ..figure import Path, arc_points
 from ..paper_points import angle_about, centroid, tangent
 from ..symbols import PIN_RADIUS, draw_block, draw_curved_guide, draw_curved_slot, draw_guide, unit
+from .joint_symbols import Drawn, symbol_of
 
 if TYPE_CHECKING:
     from .diagram import _Diagram
@@ -64,7 +65,7 @@ def track(diagram: _Diagram, a: Arc) -> _Track:
         half = min(math.pi / 6, max(22.0, 0.5 * diagram.travel(a.point, tangent(at))) / r)
         return _Track(a, c, r, at - half, 2 * half, None)
     half = min(math.pi / 6, _SLOT_HALF / r)
-    w = _SLOT_WIDTH if a.kind is SlideKind.PIN else 0.0
+    w = 0.0 if symbol_of(a).block else _SLOT_WIDTH
     pivot = next((diagram.paper[n] for n in diagram.names(a.guide_link) if n != a.centre), c)
     root = min(((c[0] + e * math.cos(at), c[1] - e * math.sin(at)) for e in (r - w, r + w)),
                key=lambda q: math.dist(q, pivot))
@@ -103,7 +104,7 @@ def draw_frame_guides(diagram: _Diagram) -> None:
     """Draw the hatched guide of each block on the frame, and the frame's curved tracks."""
     centre = centroid([diagram.paper[n] for n in diagram.m.frame.names])
     for i, s in enumerate(diagram.m.slides):
-        if s.guide_link != 1 or s.kind is not SlideKind.BLOCK:
+        if s.guide_link != 1 or not _on_guide(s):
             continue
         line = diagram.asm.guide(i)
         d = unit(diagram.view.direction(line.direction))
@@ -146,7 +147,7 @@ def draw_track(diagram: _Diagram, t: _Track) -> None:
     frame's other points, as a straight guide is.
     """
     a = t.arc
-    if a.kind is SlideKind.PIN:
+    if not symbol_of(a).block:
         style = "guide" if a.guide_link == 1 else "link"
         shape = draw_curved_slot(diagram.fig, t.centre, t.radius, t.start, t.sweep,
                                  _SLOT_WIDTH, style)
@@ -166,13 +167,19 @@ def draw_track(diagram: _Diagram, t: _Track) -> None:
 def draw_blocks(diagram: _Diagram) -> None:
     """Draw each block: along its straight guide, or tangent to its curved one."""
     for i, s in enumerate(diagram.m.slides):
-        if s.kind is not SlideKind.BLOCK:
+        if not _on_guide(s):
             continue
         d = unit(diagram.view.direction(diagram.asm.guide(i).direction))
         shape = draw_block(diagram.fig, block_centre(diagram, s), d, *_BLOCK)
         diagram.placer.block(shape)
     for t in diagram.tracks:
-        if t.arc.kind is SlideKind.BLOCK:  # tangent to its arc, square to the radius
+        if symbol_of(t.arc).block:  # tangent to its arc, square to the radius
             at = diagram.paper[t.arc.point]
             diagram.placer.block(draw_block(diagram.fig, at,
                                             tangent(angle_about(t.centre, at)), *_BLOCK))
+
+
+def _on_guide(s: Slide) -> bool:
+    """True for a block on a straight guide."""
+    symbol = symbol_of(s)
+    return symbol.block and symbol.drawn is Drawn.GUIDE
