@@ -11,7 +11,6 @@ closing side against the sum of its cylinders' vectors.
 from __future__ import annotations
 
 import math
-from fractions import Fraction
 from dataclasses import dataclass
 from functools import cached_property
 from typing import Any
@@ -19,15 +18,13 @@ from typing import Any
 from tarsim.constructions.balancing.engine import KINDS, EnginePolygons, draw_engine
 from tarsim.constructions.balancing.polygons import Balance, draw_balance, rounding
 from tarsim.constructions.units import LENGTH_UNITS
-from tarsim.constructions.narration import numeral, numerals, phrase, unit_words, words
+from tarsim.constructions.narration import numeral, phrase, words
 from tarsim.constructions.reference.balance import (engine_sums, one_axial_plane, quadrant_angle,
                                                     resultant, single_cylinder, two_planes)
-from tarsim.graphics.balancing.balance_figures import draw_end_view, draw_polygon, draw_side_view
-from tarsim.graphics.plot import PlotMark, Series, draw_line_plot
-from tarsim.graphics.train_table import draw_train_table
 from ..checked import Checked
 from ..solution_folder import ChapterFiles
 from ..worked_document import Bullets, Section, said_steps, title
+from .balance_figures import angle_deg, balance_figures
 from .rotor_file import BalanceExercise
 
 __all__ = ["BalanceSolution", "solve_balance"]
@@ -36,10 +33,6 @@ AGREE = 1e-12
 """How near (relative to the sizes of the vectors summed, :meth:`BalanceSolution.scales`) a
 closing side must come to its sum: a few roundings of the vectors laid off, for up to a
 thousand of them."""
-
-
-def _angle(v: tuple[float, float]) -> float:
-    return math.degrees(math.atan2(v[1], v[0])) % 360.0
 
 
 def _quiet(x: float, noise: float) -> float:
@@ -187,7 +180,7 @@ class BalanceSolution(ChapterFiles):
             v, mass, radius = self.placed(p)
             out.append(words("plane {plane}: balancing m·r = {size} kg·m at {angle}°, so {mass} "
                              "kg at {radius}", plane=p.name, size=numeral(math.hypot(*v)),
-                             angle=numeral(_angle(v), ".2f"), mass=numeral(mass),
+                             angle=numeral(angle_deg(v), ".2f"), mass=numeral(mass),
                              radius=self._length(radius)))
         if len(r.planes) == 1 and len({m.plane for m in r.masses}) > 1:
             arms = [(m, m.plane - r.planes[0].position) for m in r.masses]
@@ -202,7 +195,7 @@ class BalanceSolution(ChapterFiles):
                                  "kg·m at {angle}° in the plane at {place} balances force and "
                                  "couple together (the notes' case {case} the masses' planes: "
                                  "moments about each mass's plane fix it)",
-                                 size=numeral(math.hypot(*v)), angle=numeral(_angle(v), ".2f"),
+                                 size=numeral(math.hypot(*v)), angle=numeral(angle_deg(v), ".2f"),
                                  place=self._length(place), case=case))
             if couple > rounding([m.mass * m.radius * (abs(m.plane) + abs(r.planes[0].position))
                                   for m in r.masses]):
@@ -284,7 +277,7 @@ class BalanceSolution(ChapterFiles):
                 got = self.balance.product(name)
                 # A plane that needs no mass has a zero product, which has no angle.
                 where = {"none_needed": True} if name in self.balance.none else {
-                    "angle_deg": _angle(got)}
+                    "angle_deg": angle_deg(got)}
                 q[f"mr_{name}"] = Checked({"value": list(got), **where},
                                           {"value": [w + 0.0 for w in want]}, method=method)
         elif len(ex.engine.cranks) == 1:
@@ -305,152 +298,7 @@ class BalanceSolution(ChapterFiles):
     def figures(self) -> dict[str, Any]:
         """The space diagram, the table and the polygons (a rotor's); the polygons or the
         forces against crank angle (an engine's)."""
-        ex = self.exercise
-        unit, metre = ex.length_unit, LENGTH_UNITS[ex.length_unit]
-        if ex.rotor is not None:
-            return self._rotor_figures(unit, metre)
-        e = ex.engine
-        if len(e.cranks) == 1:
-            return {"forces": self._single_cylinder_plot()}
-        out = {}
-        p = self.engine_polygons
-        for kind in KINDS:
-            left = p.left(kind) * e.speed ** 2
-            word = "N·m" if kind.endswith("couple") else "N"
-            reading = (words("closed: balanced"), "", "") if kind in p.balanced else (
-                words("{size} {unit} unbalanced", size=numerals(f"{left:.4g}"),
-                      unit=unit_words(word)), "", "")
-            out[kind.replace(" ", "-")] = draw_polygon(
-                p.construction, p.tips[kind], p.closing[kind], f"{ex.name}: {words(kind)}",
-                "kg·m²" if kind.endswith("couple") else "kg·m", reading,
-                notes=[words("couples about the central plane; secondary vectors along the "
-                             "cranks at 2θᵢ, each m·r/n")],
-                names={str(i): words("cyl. {number}", number=str(i)) for i in
-                       range(1, len(e.cranks) + 1)})
-        return out
-
-    def _rotor_figures(self, unit: str, metre: float) -> dict[str, Any]:
-        ex, r, b = self.exercise, self.exercise.rotor, self.balance
-        masses = [(m.name, m.radius, _mass_words(m.name, f"{m.mass:g}", f"{m.radius / metre:g}",
-                                                 unit, f"{math.degrees(m.angle):g}"))
-                  for m in r.masses]
-        found = []
-        for p in r.planes:
-            if p.name in b.none:        # no mass to draw, and a zero product has no angle
-                continue
-            v, mass, radius = self.placed(p)
-            found.append((_mass_words(p.name, f"{mass:.4g}", f"{radius / metre:.4g}", unit,
-                                      f"{_angle(v):.2f}"), math.atan2(v[1], v[0]), radius))
-        out = {"space": draw_end_view(b.construction, masses,
-                                      words("{name}: space diagram", name=ex.name),
-                                      unit, metre, found)}
-        if len(r.planes) == 2 or len({m.plane for m in r.masses}) > 1:
-            planes = [(f"{m.name}", m.plane, "link") for m in r.masses]
-            planes += [(p.name, p.position, "normal") for p in r.planes]
-            out["side"] = draw_side_view(planes, words("{name}: side view", name=ex.name), unit,
-                                         metre)
-        out["table"] = self._table(unit, metre)
-        # With every mass in plane A the couple polygon is a point: steps.md says so, and
-        # there is nothing to draw.
-        if len(r.planes) == 2 and any(m.plane != r.planes[0].position for m in r.masses):
-            bname = r.planes[1].name
-            v = b.vector(b.closing[f"{bname}·l"])
-            out["couple-polygon"] = draw_polygon(
-                b.construction, b.couple, b.closing[f"{bname}·l"],
-                words("{name}: couple polygon (reference plane {plane})", name=ex.name,
-                      plane=r.planes[0].name), "kg·m²",
-                ("(m r l)", bname, _none_words() if bname in b.none else _size_words(
-                    f"{math.hypot(*v):.4g}", "kg·m²", f"{_angle(v):.1f}")))
-        a = r.planes[0].name
-        v = b.product(a)
-        out["force-polygon"] = draw_polygon(
-            b.construction, b.force, b.closing[a], words("{name}: force polygon", name=ex.name),
-            "kg·m", ("(m r)", a, _none_words() if a in b.none else _size_words(
-                f"{math.hypot(*v):.4g}", "kg·m", f"{_angle(v):.1f}")))
-        return out
-
-    def _table(self, unit: str, metre: float):
-        r = self.exercise.rotor
-        ref = r.planes[0].position
-        two = len(r.planes) == 2
-        flat = not two and len({m.plane for m in r.masses} | {ref}) == 1   # one plane: no l
-        length, kg = unit_words(unit), unit_words("kg")
-        heads = [f"m ({kg})", f"r ({length})", "θ"] + ([] if flat else [f"l ({length})"]) + [
-            f"m·r ({unit_words('kg·m')})"] + ([f"m·r·l ({unit_words('kg·m²')})"] if two else [])
-        rows = []
-        for m in r.masses:
-            rows.append((m.name, [numerals(t) for t in [
-                f"{m.mass:g}", f"{m.radius / metre:g}", f"{math.degrees(m.angle):g}°"]
-                + ([] if flat else [f"{(m.plane - ref) / metre:g}"])
-                + [f"{m.mass * m.radius:.4g}"] + (
-                [f"{m.mass * m.radius * (m.plane - ref):.4g}"] if two else [])]))
-        none = [p for p in r.planes if p.name in self.balance.none]
-        for p in r.planes:
-            v, mass, radius = self.placed(p)
-            size = math.hypot(*v)
-            if p in none:       # the given mass or radius stands, the rest is nothing found
-                cells = [f"{mass:.4g}" if p.mass else "—",
-                         f"{radius / metre:.4g}" if p.radius else "—", "—"]
-            else:
-                cells = [f"{mass:.4g}", f"{radius / metre:.4g}", f"{_angle(v):.2f}°"]
-            rows.append((p.name, [numerals(t) for t in cells
-                                  + ([] if flat else [f"{(p.position - ref) / metre:g}"])
-                                  + [f"{size:.4g}"]
-                                  + ([f"{size * (p.position - ref):.4g}"] if two else [])]))
-        notes = [("" if flat else words("l from the reference plane {plane}; ",
-                                        plane=r.planes[0].name))
-                 + words("the rows under the rule are the balancing masses found")]
-        notes += [words("plane {plane} needs no balancing mass: its polygon closes on itself",
-                        plane=p.name) for p in none]
-        return draw_train_table(words("{name}: the table", name=self.exercise.name), heads, rows,
-                                ruled=[len(r.masses)], notes=notes)
-
-    def _single_cylinder_plot(self):
-        e = self.exercise.engine
-        xs = [float(d) for d in range(0, 361, 2)]
-        values = [single_cylinder(e, math.radians(d)) for d in xs]
-        series = [Series(words("primary"), tuple((x, v[0]) for x, v in zip(xs, values)),
-                         "plot_curve_dotted"),
-                  Series(words("secondary"), tuple((x, v[1]) for x, v in zip(xs, values)),
-                         "plot_curve_dashed"),
-                  Series(words("left along the stroke"),
-                         tuple((x, v[2]) for x, v in zip(xs, values))),
-                  Series(words("left across the stroke"),
-                         tuple((x, v[3]) for x, v in zip(xs, values)), "plot_curve_dash_dot")]
-        at = math.degrees(e.at)
-        here = single_cylinder(e, e.at)
-        newton = unit_words("N")
-        marks = [PlotMark(at, here[2], f"{numerals(f'{here[2]:.4g}')} {newton}"),
-                 PlotMark(at, here[3], f"{numerals(f'{here[3]:.4g}')} {newton}")]
-        share = Fraction(e.balanced).limit_denominator(12)
-        share = share if abs(float(share) - e.balanced) < 1e-9 else f"{e.balanced:g}"
-        return draw_line_plot(words("Unbalanced forces"), words("crank angle θ (°)"),
-                              f"F ({newton})", series, marks, x_range=(0.0, 360.0),
-                              x_ticks=[(float(d), numerals(f"{d}")) for d in range(0, 361, 30)],
-                              subtitle=words("{share} of the reciprocating mass balanced by a "
-                                             "rotating mass opposite the crank",
-                                             share=numerals(str(share))),
-                              mark_legend=words("at θ = {angle}°", angle=numerals(f"{at:g}")))
-
-
-
-def _mass_words(name: str, mass: str, radius: str, unit: str, angle: str) -> str:
-    """A mass as the end view names it, "A: 200 kg at 300 mm, 45°", in the language being
-    spoken (the numbers come formatted)."""
-    return words("{name}: {mass} {kg} at {radius} {unit}, {angle}°", name=name,
-                 mass=numerals(mass), kg=unit_words("kg"), radius=numerals(radius),
-                 unit=unit_words(unit), angle=numerals(angle))
-
-
-def _none_words() -> str:
-    """What follows a closing side's symbol when its polygon closes on itself."""
-    return words(" = 0: no mass needed")
-
-
-def _size_words(size: str, unit: str, angle: str) -> str:
-    """What follows a closing side's symbol: " = 1.39 kg·m at 3.9°"."""
-    return words(" = {size} {unit} at {angle}°", size=numerals(size), unit=unit_words(unit),
-                 angle=numerals(angle))
+        return balance_figures(self)
 
 
 def solve_balance(ex: BalanceExercise) -> BalanceSolution:

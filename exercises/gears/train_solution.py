@@ -15,7 +15,6 @@ from functools import cached_property
 from typing import Any
 
 from tarsim.constructions.checks import CEILING
-from tarsim.constructions.errors import InputError
 from tarsim.constructions.gears.involute import InvoluteMesh, draw_involute_mesh, least_teeth_drawn
 from tarsim.constructions.gears.kutzbach import DRAWN, Kutzbach, draw_kutzbach, undrawable
 from tarsim.constructions.gears.tabular import TrainSpeeds, fraction_text, tabulate
@@ -33,6 +32,7 @@ from ..checked import Checked, check_line
 from ..solution_folder import ChapterFiles
 from ..worked_document import Bullets, Paragraph, Section, Table, numbered, said_steps, title
 from .train_file import MESH_ASKS, TrainExercise, ask_symbol
+from .train_refusals import refuse_beyond_floats, refuse_still_ratios
 
 __all__ = ["TrainSolution", "solve_train"]
 
@@ -405,8 +405,8 @@ def solve_train(ex: TrainExercise) -> TrainSolution:
     found = tabulate(ex.train)
     train = ex.train
     reference = willis_speeds(train)
-    _refuse_beyond_floats(train, found.speeds)
-    _refuse_still_ratios(ex, found.speeds, reference)
+    refuse_beyond_floats(train, found.speeds)
+    refuse_still_ratios(ex, found.speeds, reference)
     drawable = found.table is not None and undrawable(train) is None
     diagram = draw_kutzbach(train, found.speeds) if drawable else None
     mesh = ref = None
@@ -417,47 +417,3 @@ def solve_train(ex: TrainExercise) -> TrainSolution:
         ref = mesh_reference(float(a.module), (a.teeth, b.teeth), (a.number, b.number),
                              d.pressure_angle, d.addendum, d.centre_distance)
     return TrainSolution(ex, found, reference, diagram, mesh, ref)
-
-
-_FASTEST = 100
-"""No member turns faster than 1e100 of the file's unit, nor (turning) slower than 1e-100:
-beyond, a speed or a ratio of two leaves what a float holds (1e±308)."""
-
-
-def _refuse_beyond_floats(train, speeds: dict[int, Fraction]) -> None:
-    """Refuse a train whose tooth ratios carry a speed beyond :data:`_FASTEST`'s range (a
-    chain of many stages of 100000 teeth to 1)."""
-    for m, w in speeds.items():
-        if w and not -_FASTEST <= _exponent(w) <= _FASTEST:
-            raise InputError(f"{train.label(m)} would turn about 1e{_exponent(w):+d} "
-                             f"{train.units.speed}: the tooth ratios carry its speed beyond "
-                             f"1e±{_FASTEST}; no train turns so, check the teeth",
-                             file=train.source or None)
-
-
-def _exponent(x: Fraction) -> int:
-    """The power of ten of ``x``'s size, from its digits (it may be beyond a float)."""
-    x = abs(x)
-    e = len(str(x.numerator)) - len(str(x.denominator))
-    return e if x >= Fraction(10) ** e else e - 1
-
-
-def _refuse_still_ratios(ex: TrainExercise, *speeds: dict[int, Fraction]) -> None:
-    """Refuse a ratio asked over a member that stands still, though not fixed (a reverted
-    train whose tooth products are equal holds its output still), and a torque asked of
-    such a member as the output (it takes no power, so the balance gives none)."""
-    train = ex.train
-    for q in ex.asks:
-        parts = q.split("/")
-        if len(parts) == 2 and parts[1].startswith("omega"):
-            m = int(parts[1].removeprefix("omega"))
-            if any(s[m] == 0 for s in speeds):
-                raise InputError(f"{q} divides by the speed of {train.label(m)}, which stands "
-                                 "still in this train; ask a ratio over a turning member",
-                                 file=train.source or None)
-        if q.startswith("torque"):
-            m = int(q.removeprefix("torque"))
-            if m not in (train.input_member, train.fixed) and any(s[m] == 0 for s in speeds):
-                raise InputError(f"{q} is asked of {train.label(m)}, which stands still in "
-                                 "this train and takes no power: ask the torque of a turning "
-                                 "member", file=train.source or None)

@@ -1,0 +1,181 @@
+"""A balancing solution's figures: a rotor's space diagram (its end view and, with planes
+apart, its side view), its table and its force and couple polygons; an engine's four
+polygons, or a single cylinder's unbalanced forces against crank angle.
+
+Each is drawn from what the solution found (:class:`.balance_solution.BalanceSolution`), in
+the words of the language being spoken.
+"""
+
+from __future__ import annotations
+
+import math
+from fractions import Fraction
+from typing import TYPE_CHECKING
+
+from tarsim.constructions.balancing.engine import KINDS
+from tarsim.constructions.narration import numerals, unit_words, words
+from tarsim.constructions.reference.balance import single_cylinder
+from tarsim.constructions.units import LENGTH_UNITS
+from tarsim.graphics.balancing.balance_figures import draw_end_view, draw_polygon, draw_side_view
+from tarsim.graphics.figure import Figure
+from tarsim.graphics.plot import PlotMark, Series, draw_line_plot
+from tarsim.graphics.train_table import draw_train_table
+
+if TYPE_CHECKING:
+    from .balance_solution import BalanceSolution
+
+__all__ = ["balance_figures", "angle_deg"]
+
+
+def angle_deg(v: tuple[float, float]) -> float:
+    """A vector's angle in degrees, counter-clockwise from +x, in [0°, 360°)."""
+    return math.degrees(math.atan2(v[1], v[0])) % 360.0
+
+
+def balance_figures(s: BalanceSolution) -> dict[str, Figure]:
+    """The space diagram, the table and the polygons (a rotor's); the polygons or the
+    forces against crank angle (an engine's)."""
+    ex = s.exercise
+    unit, metre = ex.length_unit, LENGTH_UNITS[ex.length_unit]
+    if ex.rotor is not None:
+        return _rotor_figures(s, unit, metre)
+    e = ex.engine
+    if len(e.cranks) == 1:
+        return {"forces": _single_cylinder_plot(e)}
+    out = {}
+    p = s.engine_polygons
+    for kind in KINDS:
+        left = p.left(kind) * e.speed ** 2
+        word = "N·m" if kind.endswith("couple") else "N"
+        reading = (words("closed: balanced"), "", "") if kind in p.balanced else (
+            words("{size} {unit} unbalanced", size=numerals(f"{left:.4g}"),
+                  unit=unit_words(word)), "", "")
+        out[kind.replace(" ", "-")] = draw_polygon(
+            p.construction, p.tips[kind], p.closing[kind], f"{ex.name}: {words(kind)}",
+            "kg·m²" if kind.endswith("couple") else "kg·m", reading,
+            notes=[words("couples about the central plane; secondary vectors along the "
+                         "cranks at 2θᵢ, each m·r/n")],
+            names={str(i): words("cyl. {number}", number=str(i)) for i in
+                   range(1, len(e.cranks) + 1)})
+    return out
+
+def _rotor_figures(s: BalanceSolution, unit: str, metre: float) -> dict[str, Figure]:
+    ex, r, b = s.exercise, s.exercise.rotor, s.balance
+    masses = [(m.name, m.radius, _mass_words(m.name, f"{m.mass:g}", f"{m.radius / metre:g}",
+                                             unit, f"{math.degrees(m.angle):g}"))
+              for m in r.masses]
+    found = []
+    for p in r.planes:
+        if p.name in b.none:        # no mass to draw, and a zero product has no angle
+            continue
+        v, mass, radius = s.placed(p)
+        found.append((_mass_words(p.name, f"{mass:.4g}", f"{radius / metre:.4g}", unit,
+                                  f"{angle_deg(v):.2f}"), math.atan2(v[1], v[0]), radius))
+    out = {"space": draw_end_view(b.construction, masses,
+                                  words("{name}: space diagram", name=ex.name),
+                                  unit, metre, found)}
+    if len(r.planes) == 2 or len({m.plane for m in r.masses}) > 1:
+        planes = [(f"{m.name}", m.plane, "link") for m in r.masses]
+        planes += [(p.name, p.position, "normal") for p in r.planes]
+        out["side"] = draw_side_view(planes, words("{name}: side view", name=ex.name), unit,
+                                     metre)
+    out["table"] = _table(s, unit, metre)
+    # With every mass in plane A the couple polygon is a point: steps.md says so, and
+    # there is nothing to draw.
+    if len(r.planes) == 2 and any(m.plane != r.planes[0].position for m in r.masses):
+        bname = r.planes[1].name
+        v = b.vector(b.closing[f"{bname}·l"])
+        out["couple-polygon"] = draw_polygon(
+            b.construction, b.couple, b.closing[f"{bname}·l"],
+            words("{name}: couple polygon (reference plane {plane})", name=ex.name,
+                  plane=r.planes[0].name), "kg·m²",
+            ("(m r l)", bname, _none_words() if bname in b.none else _size_words(
+                f"{math.hypot(*v):.4g}", "kg·m²", f"{angle_deg(v):.1f}")))
+    a = r.planes[0].name
+    v = b.product(a)
+    out["force-polygon"] = draw_polygon(
+        b.construction, b.force, b.closing[a], words("{name}: force polygon", name=ex.name),
+        "kg·m", ("(m r)", a, _none_words() if a in b.none else _size_words(
+            f"{math.hypot(*v):.4g}", "kg·m", f"{angle_deg(v):.1f}")))
+    return out
+
+def _table(s: BalanceSolution, unit: str, metre: float) -> Figure:
+    r = s.exercise.rotor
+    ref = r.planes[0].position
+    two = len(r.planes) == 2
+    flat = not two and len({m.plane for m in r.masses} | {ref}) == 1   # one plane: no l
+    length, kg = unit_words(unit), unit_words("kg")
+    heads = [f"m ({kg})", f"r ({length})", "θ"] + ([] if flat else [f"l ({length})"]) + [
+        f"m·r ({unit_words('kg·m')})"] + ([f"m·r·l ({unit_words('kg·m²')})"] if two else [])
+    rows = []
+    for m in r.masses:
+        rows.append((m.name, [numerals(t) for t in [
+            f"{m.mass:g}", f"{m.radius / metre:g}", f"{math.degrees(m.angle):g}°"]
+            + ([] if flat else [f"{(m.plane - ref) / metre:g}"])
+            + [f"{m.mass * m.radius:.4g}"] + (
+            [f"{m.mass * m.radius * (m.plane - ref):.4g}"] if two else [])]))
+    none = [p for p in r.planes if p.name in s.balance.none]
+    for p in r.planes:
+        v, mass, radius = s.placed(p)
+        size = math.hypot(*v)
+        if p in none:       # the given mass or radius stands, the rest is nothing found
+            cells = [f"{mass:.4g}" if p.mass else "—",
+                     f"{radius / metre:.4g}" if p.radius else "—", "—"]
+        else:
+            cells = [f"{mass:.4g}", f"{radius / metre:.4g}", f"{angle_deg(v):.2f}°"]
+        rows.append((p.name, [numerals(t) for t in cells
+                              + ([] if flat else [f"{(p.position - ref) / metre:g}"])
+                              + [f"{size:.4g}"]
+                              + ([f"{size * (p.position - ref):.4g}"] if two else [])]))
+    notes = [("" if flat else words("l from the reference plane {plane}; ",
+                                    plane=r.planes[0].name))
+             + words("the rows under the rule are the balancing masses found")]
+    notes += [words("plane {plane} needs no balancing mass: its polygon closes on itself",
+                    plane=p.name) for p in none]
+    return draw_train_table(words("{name}: the table", name=s.exercise.name), heads, rows,
+                            ruled=[len(r.masses)], notes=notes)
+
+def _single_cylinder_plot(e) -> Figure:
+    xs = [float(d) for d in range(0, 361, 2)]
+    values = [single_cylinder(e, math.radians(d)) for d in xs]
+    series = [Series(words("primary"), tuple((x, v[0]) for x, v in zip(xs, values)),
+                     "plot_curve_dotted"),
+              Series(words("secondary"), tuple((x, v[1]) for x, v in zip(xs, values)),
+                     "plot_curve_dashed"),
+              Series(words("left along the stroke"),
+                     tuple((x, v[2]) for x, v in zip(xs, values))),
+              Series(words("left across the stroke"),
+                     tuple((x, v[3]) for x, v in zip(xs, values)), "plot_curve_dash_dot")]
+    at = math.degrees(e.at)
+    here = single_cylinder(e, e.at)
+    newton = unit_words("N")
+    marks = [PlotMark(at, here[2], f"{numerals(f'{here[2]:.4g}')} {newton}"),
+             PlotMark(at, here[3], f"{numerals(f'{here[3]:.4g}')} {newton}")]
+    share = Fraction(e.balanced).limit_denominator(12)
+    share = share if abs(float(share) - e.balanced) < 1e-9 else f"{e.balanced:g}"
+    return draw_line_plot(words("Unbalanced forces"), words("crank angle θ (°)"),
+                          f"F ({newton})", series, marks, x_range=(0.0, 360.0),
+                          x_ticks=[(float(d), numerals(f"{d}")) for d in range(0, 361, 30)],
+                          subtitle=words("{share} of the reciprocating mass balanced by a "
+                                         "rotating mass opposite the crank",
+                                         share=numerals(str(share))),
+                          mark_legend=words("at θ = {angle}°", angle=numerals(f"{at:g}")))
+
+
+def _mass_words(name: str, mass: str, radius: str, unit: str, angle: str) -> str:
+    """A mass as the end view names it, "A: 200 kg at 300 mm, 45°", in the language being
+    spoken (the numbers come formatted)."""
+    return words("{name}: {mass} {kg} at {radius} {unit}, {angle}°", name=name,
+                 mass=numerals(mass), kg=unit_words("kg"), radius=numerals(radius),
+                 unit=unit_words(unit), angle=numerals(angle))
+
+
+def _none_words() -> str:
+    """What follows a closing side's symbol when its polygon closes on itself."""
+    return words(" = 0: no mass needed")
+
+
+def _size_words(size: str, unit: str, angle: str) -> str:
+    """What follows a closing side's symbol: " = 1.39 kg·m at 3.9°"."""
+    return words(" = {size} {unit} at {angle}°", size=numerals(size), unit=unit_words(unit),
+                 angle=numerals(angle))
