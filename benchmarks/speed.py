@@ -33,6 +33,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
 import tarsim  # noqa: E402
 from tarsim.exercises.linkages import solution_files  # noqa: E402
+from tarsim.constructions.linkages.velocity_polygon import WORKED  # noqa: E402
 from tarsim.exercises.catalog import bundled, everything  # noqa: E402
 from tarsim.graphics import workers  # noqa: E402
 from tarsim.graphics.export import figure_pdf  # noqa: E402
@@ -102,10 +103,9 @@ def worked_pages(name: str, repeat: int) -> list[tuple[str, float, float]]:
     worked = tarsim.solve(tarsim.load(name))
     out = []
     for sol in worked.positions:
-        for spec, answers in solution_files._specs(sol.answers):
-            if spec.kind != "polygons":
+        for sketch in solution_files._figures(sol):
+            if sketch.stem != WORKED.stem:
                 continue
-            sketch = solution_files._worked_page(sol, answers)
             layout = median_time(lambda s=sketch: to_svg(s.draw()), repeat)
             fig = sketch.draw()
             pdf = median_time(lambda f=fig: figure_pdf(f.sheets or [f]), repeat)

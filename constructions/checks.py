@@ -31,8 +31,9 @@ from .narration import Phrase
 from .record import Panel, Ref
 from .reference.centres import centre_error
 
-__all__ = ["Quantity", "Expected", "Answer", "FigureSpec", "tolerance", "check", "vector_value",
-           "grashof_value", "time_ratio_value", "quiet", "NOISE", "EPS", "CEILING"]
+__all__ = ["Quantity", "Expected", "Answer", "FigureSpec", "FIGURE_KINDS", "WHOLE", "tolerance",
+           "check", "vector_value", "grashof_value", "time_ratio_value", "quiet", "NOISE", "EPS",
+           "CEILING"]
 
 EPS = 2.220446049250313e-16
 """The unit roundoff of a float."""
@@ -96,17 +97,35 @@ def _in_file_axes(value: dict[str, Any], mech: Mechanism) -> dict[str, Any]:
     return {**value, "point": list(mech.in_file_axes(xy))}
 
 
+FIGURE_KINDS: dict[str, str] = {
+    "scene": "the space diagram with the answer's construction on it",
+    "positions": "the space diagram with the compass work that placed the points",
+    "circle diagram": "every instant centre on Kennedy's circle diagram",
+    "polygons": "the worked page: the space diagram, the velocity and acceleration "
+                "polygons and the results table",
+    "limits": "the limit positions, the time ratio and stroke under them",
+    "mechanism": "the mechanism alone, where nothing is asked at a position",
+    "loads": "the space diagram with the loads on each link",
+    "forces": "the force polygons",
+    "bodies": "the free-body diagrams",
+}
+"""Each kind of figure an answer may be drawn in (:attr:`FigureSpec.kind`), and what it
+shows. Graphics registers a drawing for each (:mod:`tarsim.graphics.figure_kinds`), and
+:class:`FigureSpec`'s docstring lists them from here."""
+
+
 @dataclass(frozen=True)
 class FigureSpec:
     """The figure an answer is drawn in: its file stem, heading, caption, and kind of figure.
 
-    ``kind`` is "scene" (the space diagram with the answer's construction on it),
-    "positions" (the same, with the compass work that placed the points),
-    "circle diagram", "polygons" (the worked page: space diagram, polygons and
-    results table) or "limits" (the limit positions). The figure's title is the
-    mechanism's name and the ``caption``. ``velocity_scale`` is the scale (drawing
-    metres per m/s) of the velocities a scene draws, which its caption states;
-    ``notes`` says the position's notes (an ill-conditioned centre) stand under it.
+    ``kind`` is one of :data:`FIGURE_KINDS`:
+
+    {kinds}
+
+    The figure's title is the mechanism's name and the ``caption``. ``velocity_scale``
+    is the scale (drawing metres per m/s) of the velocities a scene draws, which its
+    caption states; ``notes`` says the position's notes (an ill-conditioned centre)
+    stand under it.
     """
 
     stem: str
@@ -117,6 +136,14 @@ class FigureSpec:
     notes: bool = False
     velocity_stated: float | None = None
     """The velocity scale the exercise states, per paper cm, worded as it words it."""
+
+
+if FigureSpec.__doc__:                  # (none under python -OO)
+    FigureSpec.__doc__ = FigureSpec.__doc__.replace("{kinds}", "\n    ".join(
+        f"* {kind!r}: {shows}." for kind, shows in FIGURE_KINDS.items()))
+
+WHOLE = FigureSpec("mechanism", "The mechanism", kind="mechanism")
+"""The figure of a mechanism of which nothing is asked at a position: itself."""
 
 
 @dataclass(frozen=True)

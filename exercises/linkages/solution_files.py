@@ -17,27 +17,21 @@ from dataclasses import dataclass
 from functools import cached_property, partial
 from pathlib import Path
 
-from tarsim.constructions.linkages.acceleration_polygon import drawn_acceleration_polygon
 from tarsim.constructions.asks import (EFFORTS, Distance, Equivalent, MechanicalAdvantage, Ratio,
                                        Rubbing, TransmissionAngle, parse_ask, symbol)
-from tarsim.constructions.checks import FigureSpec, Quantity
+from tarsim.constructions.checks import WHOLE, FigureSpec, Quantity
 from tarsim.constructions.linkages.limit_positions import drawn_limits
 from tarsim.constructions.narration import (Number, Word, measure_words, narrate, numerals, phrase,
                                             render, significant, speaking, spoken, words)
 from tarsim.constructions.errors import CheckMismatch
-from tarsim.constructions.record import Kind, Panel, Slice, slice
-from tarsim.constructions.scales import nice
+from tarsim.constructions.record import Panel, Slice
 from tarsim.constructions.linkages.velocity_drawing import method_words
-from tarsim.constructions.linkages.velocity_polygon import WORKED, drawn_velocity_polygon
-from tarsim.graphics.linkages.circle_diagram import draw_circle_diagram
 from tarsim.graphics.export import RenderError, cairo_missing, figure_pdf
-from tarsim.graphics.figure import Figure, stack_pages
-from tarsim.graphics.linkages.polygon_panel import POLYGON_BOX, draw_polygon_panel
-from tarsim.graphics.linkages.scene import draw_scene
+from tarsim.graphics.figure import Figure
+from tarsim.graphics.figure_kinds import FigureOrder, comes_last, plan_figure
 from tarsim.graphics.svg import stacked_svg, to_svg
 from tarsim.graphics.workers import draw_each
-from tarsim.graphics.paper import Paper, on_sheet, paper, room, sheet_size
-from tarsim.graphics.linkages.worked_page import compose_worked_sheets, holds_panel
+from tarsim.graphics.paper import paper, room
 
 from ..solution_folder import write_solution
 from .exercise_file import Exercise
@@ -51,9 +45,6 @@ __all__ = ["SolutionFigure", "WorkedSolution", "solve_worked", "overall_text", "
 
 DRAFTING = 4
 """Significant figures of a number set on a figure: what a drawing can be read to."""
-
-_CIRCLE = 50.0
-"""The circle diagram's radius on A4 (mm), grown with the sheet."""
 
 
 @dataclass
@@ -283,144 +274,31 @@ def _specs(answers) -> list[tuple[FigureSpec, list]]:
     for a in answers:
         for spec in a.figures:
             out.setdefault(spec.stem, (spec, []))[1].append(a)
-    return sorted(out.values(), key=lambda sa: sa[0].kind == "polygons")
+    return sorted(out.values(), key=lambda sa: comes_last(sa[0]))
 
 
 def _figures(sol: Solution, suffix: str = "") -> list[_Sketch]:
-    out = [_figure(sol, spec, answers) for spec, answers in _specs(sol.answers)]
-    return [_Sketch(f.stem + suffix, f.heading, f.draw, f.shown, f.panels, sol) for f in out]
+    """Sketch each figure of a position, as its kind plans it from the answers it holds."""
+    ex = sol.exercise
+    out = []
+    for spec, answers in _specs(sol.answers):
+        plan = plan_figure(FigureOrder(
+            spec, tuple(answers), sol.work, ex.mechanism, paper(ex.paper),
+            where=sol.position.label if sol.position else None, said=_said,
+            notes=partial(notes_under, sol), table=partial(_results_table, sol)))
+        out.append(_Sketch(spec.stem + suffix, spec.heading, plan.draw, plan.shown,
+                           plan.panels, sol))
+    return out
 
 
-def _figure(sol: Solution, spec: FigureSpec, answers) -> _Sketch:
-    """Sketch one figure of a position from the answers it holds."""
-    asm, work = sol.assembly, sol.work
-    c, name = asm, sol.exercise.mechanism.name
-    if spec.kind == "polygons":
-        return _worked_page(sol, answers)
-    if spec.kind == "forces":
-        from tarsim.constructions.forces.polygons import drawn_forces
-        from tarsim.graphics.forces.force_figure import draw_force_figure
-
-        forces, sheet = drawn_forces(work), paper(sol.exercise.paper)
-        shown = _shown(c, answers, asm.position_steps)
-        return _Sketch(spec.stem, spec.heading, lambda: on_sheet(draw_force_figure(
-            c, forces.scale, _title(name, "force polygons", sol.position)), sheet), None,
-            (("Inertia loads read off the acceleration polygon", Panel.ACCELERATION, shown,
-              "not drawn"), ("The force polygons", Panel.FORCE, shown)))
-    if spec.kind == "loads":
-        from tarsim.constructions.forces.polygons import drawn_forces
-        from tarsim.graphics.forces.loads_figure import draw_loads
-
-        forces, sheet = drawn_forces(work), paper(sol.exercise.paper)
-        # The space diagram's part of the analysis (centres of mass, lines of action, the
-        # point three forces meet in) is drawn with the loads.
-        shown = _shown(c, answers, asm.position_steps)
-        return _Sketch(spec.stem, spec.heading, lambda: on_sheet(_fitted(
-            lambda per_cm: draw_loads(shown, forces.loads, per_cm=per_cm,
-                                      title=_title(name, "loads", sol.position)),
-            work.scales.space, _holds(sheet), fixed=bool(sol.exercise.mechanism.scale)),
-            sheet), shown)
-    if spec.kind == "bodies":
-        from tarsim.constructions.forces.polygons import drawn_forces
-        from tarsim.graphics.forces.free_body_figure import draw_free_bodies
-
-        forces, sheet = drawn_forces(work), paper(sol.exercise.paper)
-        at = {n: c.point(n).xy for n in c.mechanism.point_names}
-        return _Sketch(spec.stem, spec.heading, lambda: on_sheet(draw_free_bodies(
-            c.mechanism, at, forces.bodies, _title(name, "free bodies", sol.position),
-            c.mechanism.units.length), sheet), None)
-    if spec.kind == "circle diagram":
-        every = slice(c, [s.id for s in c if s.kind is Kind.CENTRE], base=asm.position_steps)
-        sheet = paper(sol.exercise.paper)
-        radius = _CIRCLE * room(sheet, (1.0, 1.0))[0]
-        return _Sketch(spec.stem, spec.heading, lambda: on_sheet(
-            draw_circle_diagram(every, title=name, radius=radius), sheet), None)
-    # A position's figure shows the compass work that put the points there: the walk back
-    # from them stops only at the frame.
-    shown = _shown(c, answers, asm.position_steps if spec.kind != "positions" else ())
-    notes = notes_under(sol, Panel.SPACE) if spec.notes else []
-    sheet = paper(sol.exercise.paper)
-    return _Sketch(spec.stem, spec.heading, lambda: on_sheet(_fitted(lambda per_cm: draw_scene(
-        shown, title=_title(name, spec.caption), notes=notes, velocity_scale=spec.velocity_scale,
-        per_cm=per_cm, velocity_stated=spec.velocity_stated), work.scales.space,
-        _holds(sheet), fixed=bool(sol.exercise.mechanism.scale) or bool(spec.velocity_stated),
-        grow=spec.velocity_scale is None), sheet), shown)
+def _said(heading: str) -> str:
+    """A figure's heading in the language being spoken."""
+    return heading_in(heading, spoken())
 
 
-def _title(name: str, what: str, position=None) -> str:
-    """A figure's title in the language being spoken: the mechanism's name (as the file
-    writes it), what the figure shows ("V_B by radius rotation") and where, if the solution
-    has several positions to tell apart."""
-    what = heading_in(what, spoken())
-    if position is None:
-        return words("{name}: {what}", name=name, what=what)
-    return words("{name}: {what} at {where}", name=name, what=what, where=position.label)
-
-
-def _fitted(draw: Callable[[float], Figure], per_cm: float,
-            holds: Callable[[Figure], bool], *, fixed: bool = False,
-            grow: bool = False) -> Figure:
-    """``draw`` at ``per_cm`` (the space scale); a figure that ``holds`` refuses is drawn
-    again a nice step coarser, up to three times, and one it holds, with ``grow``, a nice
-    step finer while it still holds it (twice at most), so the drawing fills its sheet.
-    With ``fixed`` (the exercise states the scale) it is drawn once, its page grown if it
-    must be."""
-    fig = draw(per_cm)
-    first = per_cm
-    for _ in range(0 if fixed else 3):
-        if holds(fig):
-            break
-        per_cm = nice(per_cm * 1.01)
-        fig = draw(per_cm)
-    for _ in range(2 if grow and not fixed and per_cm == first and holds(fig) else 0):
-        finer = nice(per_cm * 0.99, up=False)
-        # Only the drawing grows, not its caption: a figure that would not hold even four
-        # fifths of it grown is not drawn to find out.
-        k = 0.8 * per_cm / finer
-        if not holds(Figure(fig.width * k, fig.height * k)):
-            break
-        bigger = draw(finer)
-        if not holds(bigger):
-            break
-        fig, per_cm = bigger, finer
-    return fig
-
-
-def _holds(sheet: Paper) -> Callable[[Figure], bool]:
-    """Whether a figure fits on ``sheet``, upright or on its side."""
-    return lambda fig: sheet_size(fig, sheet) is not None
-
-
-def _shown(c, answers, base, panel: Panel | None = None) -> Slice:
-    """The slice of the answers' steps (those of ``panel`` only, if given)."""
-    refs = [r for a in answers for r in a.refs if panel is None or c[r].panel is panel]
-    arrows = [r for a in answers for r in a.arrows]
-    return slice(c, list(dict.fromkeys(refs)), base=base, arrows=list(dict.fromkeys(arrows)))
-
-
-def _worked_page(sol: Solution, answers) -> _Sketch:
-    """The space diagram, the polygons and the results table on one page.
-
-    Each polygon shows the slice of what is asked of it, and every vector whose two
-    ends that slice draws (the absolute vectors from the pole, the components, the
-    relative velocities ω is read from).
-    """
-    ex, asm, work = sol.exercise, sol.assembly, sol.work
-    c, m = asm, ex.mechanism
-    panels, drawn = [], []
-    polygons = [(drawn_velocity_polygon(work), Panel.VELOCITY, "Velocity polygon",
-                 work.scales.velocity_polygon)]
-    if work.has("acceleration polygon"):
-        polygons.append((drawn_acceleration_polygon(work), Panel.ACCELERATION,
-                         "Acceleration polygon", work.scales.acceleration_polygon))
-    for poly, panel, heading, stated in polygons:
-        shown = _shown(c, answers, asm.position_steps, panel)
-        if not shown.steps(panel):           # nothing asked of it: the pole stands alone
-            shown = slice(c, [poly.pole], base=asm.position_steps)
-        drawn.append(dict(panel=panel, scale=poly.scale, units=m.units,
-                          title=heading_in(heading, spoken()),
-                          notes=notes_under(sol, panel), per_cm=stated))
-        panels.append((heading, panel, shown))
+def _results_table(sol: Solution) -> list[tuple[str, ...]]:
+    """The worked page's results table: its header, then a row per quantity and method."""
+    m = sol.exercise.mechanism
     table = [tuple(words(h) for h in ("quantity", "method", "construction", "analytic",
                                        "relative error"))]
     for qname, q in sol.quantities.items():
@@ -429,48 +307,28 @@ def _worked_page(sol: Solution, answers) -> _Sketch:
             table.append((symbol(qname), words(method_words(qq.method)),
                           _show(qq.value, m.units, qname, DRAFTING),
                           _show(qq.reference, m.units, qname, DRAFTING), f"{qq.rel_error:.1e}"))
-
-    sheet = paper(ex.paper)
-    upright = (sheet.width, sheet.height)
-
-    def draw() -> Figure:
-        space = _fitted(lambda per_cm: draw_scene(
-            Slice(c, ()), title=_title(m.name, "space diagram", sol.position), per_cm=per_cm),
-            work.scales.space, lambda fig: holds_panel(upright, fig), fixed=bool(m.scale))
-        figures = [space] + [draw_polygon_panel(shown, room=room(sheet, POLYGON_BOX), **how)
-                             for (_, _, shown), how in zip(panels, drawn)]
-        sheets = compose_worked_sheets(_title(m.name, "worked solution", sol.position), figures,
-                                       table,
-                                       notes_under(sol, Panel.SPACE), sheet=upright)
-        return sheets[0] if len(sheets) == 1 else stack_pages(sheets)
-
-    return _Sketch(WORKED.stem, WORKED.heading, draw, None, tuple(panels))
+    return table
 
 
 def _overall_figures(ex: Exercise, overall: Overall) -> list[_Sketch]:
     """The limit positions, when the time ratio or stroke is asked; the mechanism itself when
     nothing is asked at a position."""
     work, m = overall.work, ex.mechanism
-    sheet = paper(ex.paper)
     if work is None or not work.has("limits"):
         if ex.position_asks or work is None:
             return []
-        asm = work.assembly
-        return [_Sketch("mechanism", "The mechanism", lambda: on_sheet(_fitted(
-            lambda per_cm: draw_scene(Slice(asm, ()), title=m.name, per_cm=per_cm),
-            work.scales.space, _holds(sheet), fixed=bool(m.scale), grow=True), sheet), None)]
-    lp = drawn_limits(work)
-    notes = [_time_ratio_words(m, lp, spoken())]
-    if lp.stroke is not None:
-        notes.append(words("Stroke of {point}: {length}.", point=lp.point,
-                           length=measure_words(m.units.length_drawn(lp.stroke))))
-    answers = [a for a in overall.answers if a.figures]
-    shown = _shown(work.assembly, answers, work.assembly.position_steps)
-    spec = answers[0].figures[0]
-    return [_Sketch(spec.stem, spec.heading, lambda: on_sheet(_fitted(
-        lambda per_cm: draw_scene(shown, title=_title(m.name, spec.caption), notes=notes,
-                                  per_cm=per_cm),
-        work.scales.space, _holds(sheet), fixed=bool(m.scale), grow=True), sheet), shown)]
+        spec, answers, notes = WHOLE, (), []
+    else:
+        lp = drawn_limits(work)
+        notes = [_time_ratio_words(m, lp, spoken())]
+        if lp.stroke is not None:
+            notes.append(words("Stroke of {point}: {length}.", point=lp.point,
+                               length=measure_words(m.units.length_drawn(lp.stroke))))
+        answers = tuple(a for a in overall.answers if a.figures)
+        spec = answers[0].figures[0]
+    plan = plan_figure(FigureOrder(spec, answers, work, m, paper(ex.paper), said=_said,
+                                   notes=lambda panel: notes))
+    return [_Sketch(spec.stem, spec.heading, plan.draw, plan.shown, plan.panels)]
 
 
 def _time_ratio_words(m, lp, lang: str = "en") -> str:

@@ -1,0 +1,113 @@
+"""The linkages' kinds of figure: each construction's scene, the compass work of the
+positions, the circle diagram, the worked page, the limit positions and the mechanism
+alone (:mod:`tarsim.graphics.figure_kinds`)."""
+
+from __future__ import annotations
+
+from tarsim.constructions.linkages.acceleration_polygon import drawn_acceleration_polygon
+from tarsim.constructions.linkages.velocity_polygon import drawn_velocity_polygon
+from tarsim.constructions.record import Kind, Panel, Slice, slice
+
+from .circle_diagram import draw_circle_diagram
+from .polygon_panel import POLYGON_BOX, draw_polygon_panel
+from .scene import draw_scene
+from .worked_page import compose_worked_sheets, holds_panel
+from ..figure import Figure, stack_pages
+from ..figure_kinds import FigureOrder, FigurePlan, figure_kind
+from ..fitting import fit, held_by
+from ..paper import on_sheet, room
+
+__all__ = ["CIRCLE"]
+
+CIRCLE = 50.0
+"""The circle diagram's radius on A4 (mm), grown with the sheet."""
+
+
+@figure_kind("scene")
+def _scene(order: FigureOrder) -> FigurePlan:
+    return _space(order, order.shown(), order.under(Panel.SPACE) if order.spec.notes else [])
+
+
+@figure_kind("positions")
+def _positions(order: FigureOrder) -> FigurePlan:
+    # The compass work that put the points there: the walk back stops only at the frame.
+    return _space(order, order.shown(base=()),
+                  order.under(Panel.SPACE) if order.spec.notes else [])
+
+
+@figure_kind("limits")
+def _limits(order: FigureOrder) -> FigurePlan:
+    return _space(order, order.shown(), order.under(Panel.SPACE))
+
+
+def _space(order: FigureOrder, shown: Slice, notes: list[str]) -> FigurePlan:
+    """The space diagram with ``shown`` drawn on it and ``notes`` under it, fitted to the
+    sheet; one that draws velocities at their own scale is not grown (its caption states
+    that scale), and one at a velocity scale the exercise states is drawn at its scale."""
+    spec = order.spec
+
+    def draw(per_cm: float) -> Figure:
+        return draw_scene(shown, title=order.title(spec.caption, placed=False), notes=notes,
+                          velocity_scale=spec.velocity_scale, per_cm=per_cm,
+                          velocity_stated=spec.velocity_stated)
+
+    return FigurePlan(lambda: on_sheet(fit(
+        draw, order.work.scales.space, held_by(order.sheet),
+        fixed=order.stated or bool(spec.velocity_stated), grow=spec.velocity_scale is None),
+        order.sheet), shown)
+
+
+@figure_kind("mechanism")
+def _mechanism(order: FigureOrder) -> FigurePlan:
+    bare = Slice(order.record, ())
+    return FigurePlan(lambda: on_sheet(fit(
+        lambda per_cm: draw_scene(bare, title=order.mechanism.name, per_cm=per_cm),
+        order.work.scales.space, held_by(order.sheet), fixed=order.stated, grow=True),
+        order.sheet))
+
+
+@figure_kind("circle diagram")
+def _circle_diagram(order: FigureOrder) -> FigurePlan:
+    c = order.record
+    every = slice(c, [s.id for s in c if s.kind is Kind.CENTRE], base=c.position_steps)
+    radius = CIRCLE * room(order.sheet, (1.0, 1.0))[0]
+    return FigurePlan(lambda: on_sheet(draw_circle_diagram(
+        every, title=order.mechanism.name, radius=radius), order.sheet))
+
+
+@figure_kind("polygons", last=True)
+def _worked_page(order: FigureOrder) -> FigurePlan:
+    """The space diagram, the polygons and the results table on one page.
+
+    Each polygon shows the slice of what is asked of it, and every vector whose two
+    ends that slice draws (the absolute vectors from the pole, the components, the
+    relative velocities ω is read from); one asked nothing shows its pole alone.
+    """
+    work, c, sheet = order.work, order.record, order.sheet
+    polygons = [(drawn_velocity_polygon(work), Panel.VELOCITY, "Velocity polygon",
+                 work.scales.velocity_polygon)]
+    if work.has("acceleration polygon"):
+        polygons.append((drawn_acceleration_polygon(work), Panel.ACCELERATION,
+                         "Acceleration polygon", work.scales.acceleration_polygon))
+    panels, drawn = [], []
+    for poly, panel, heading, stated in polygons:
+        shown = order.shown(panel=panel)
+        if not shown.steps(panel):
+            shown = slice(c, [poly.pole], base=c.position_steps)
+        drawn.append(dict(panel=panel, scale=poly.scale, units=order.mechanism.units,
+                          title=order.said(heading), notes=order.under(panel), per_cm=stated))
+        panels.append((heading, panel, shown))
+    table = order.table()
+    upright = (sheet.width, sheet.height)
+
+    def draw() -> Figure:
+        space = fit(lambda per_cm: draw_scene(
+            Slice(c, ()), title=order.title("space diagram"), per_cm=per_cm),
+            work.scales.space, lambda fig: holds_panel(upright, fig), fixed=order.stated)
+        figures = [space] + [draw_polygon_panel(shown, room=room(sheet, POLYGON_BOX), **how)
+                             for (_, _, shown), how in zip(panels, drawn)]
+        sheets = compose_worked_sheets(order.title("worked solution"), figures, table,
+                                       order.under(Panel.SPACE), sheet=upright)
+        return sheets[0] if len(sheets) == 1 else stack_pages(sheets)
+
+    return FigurePlan(draw, None, tuple(panels))
