@@ -11,7 +11,6 @@ from .. import asks as A
 from ..linkages.acceleration_polygon import drawn_acceleration_polygon
 from ..checks import Answer, FigureSpec, vector_value
 from ..errors import TarsimError
-from ..joints import SlideKind
 from ..model import Mechanism
 from ..record import Panel
 from .groups import Dyad, group_of
@@ -39,7 +38,7 @@ def force_names(mech: Mechanism) -> set[str]:
     out = {f"T{mech.drive.link}"} | {f"F_{by}{on}" for _, by, on in mech.pin_pairs}
     for s in mech.slides:
         out.add(f"F_{s.guide_link}{s.link}")
-        if s.kind is SlideKind.BLOCK:
+        if s.type.turns_with_guide:                 # a block carries its guide's couple
             out.add(f"T_{s.guide_link}{s.link}")
     return out
 

@@ -12,7 +12,6 @@ import math
 from dataclasses import dataclass
 
 from ..errors import TarsimError
-from ..joints import SlideKind
 from ..model import Mechanism
 from .sliding import lever_gain
 
@@ -68,7 +67,7 @@ def shape_of(mech: Mechanism) -> Dyad:
     why = NOT_DRAWN
     moving = [k.number for k in mech.links if k.number != 1]
     d = mech.drive.link
-    if len(moving) != 3 or mech.arcs or any(s.rolling or s.contact for s in mech.slides):
+    if len(moving) != 3 or mech.arcs or any(s.type.contact for s in mech.slides):
         raise TarsimError(why)
     crank = mech.link(d)
     if len(crank.names) != 2 or mech.links_at(crank.names[0]) != tuple(sorted((1, d))):
@@ -91,7 +90,7 @@ def shape_of(mech: Mechanism) -> Dyad:
             raise TarsimError(why)
         return Dyad(d, i, j, o, a, b, pivots[0], None)
     (s,) = mech.slides if len(mech.slides) == 1 else (None,)
-    if (s is None or s.kind is not SlideKind.BLOCK or s.guide_link != 1 or s.link != j
+    if (s is None or s.type.key != "block" or s.guide_link != 1 or s.link != j
             or s.point != b or mech.link(j).names != (b,)):
         raise TarsimError(why)
     return Dyad(d, i, j, o, a, b, None, s.direction)
@@ -110,8 +109,8 @@ def slotted_of(mech: Mechanism) -> Lever:
     if mech.arcs or len(crank.names) != 2 or set(mech.links_at(crank.names[0])) != {1, d}:
         raise TarsimError(NOT_DRAWN)
     o, a = crank.names
-    block = [s for s in mech.slides if s.point == a and s.kind is SlideKind.BLOCK
-             and s.guide_link != 1 and not s.contact]
+    block = [s for s in mech.slides if s.point == a and s.type.key == "block"
+             and s.guide_link != 1]
     if len(block) != 1 or mech.link(block[0].link).names != (a,):
         raise TarsimError(NOT_DRAWN)
     s = block[0]
@@ -131,10 +130,10 @@ def slotted_of(mech: Mechanism) -> Lever:
         raise TarsimError(NOT_DRAWN)
     q = ram.names[0]
     pin = [t for t in mech.slides if t.link == ram.number and t.point == q
-           and t.kind is SlideKind.PIN and t.guide_link == lever.number
+           and t.type.key == "slot" and t.guide_link == lever.number
            and t.through == s.through and t.direction == s.direction]
     frame = [t for t in mech.slides if t.link == ram.number and t.point == q
-             and t.kind is SlideKind.BLOCK and t.guide_link == 1]
+             and t.type.key == "block" and t.guide_link == 1]
     if len(pin) != 1 or len(frame) != 1:
         raise TarsimError(NOT_DRAWN)
     return Lever(d, s.link, lever.number, o, a, lever.names[0], ram.number, q,

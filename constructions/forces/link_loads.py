@@ -17,7 +17,6 @@ from ..linkages.acceleration_polygon import drawn_acceleration_polygon
 from ..checks import quiet
 from ..errors import TarsimError
 from ..loads import Loads, near_rest, near_rest_refusal
-from ..joints import SlideKind
 from ..narration import Word, phrase
 from ..record import Construction, Kind, Panel
 from ..linkages.velocity_polygon import drawn_velocity_polygon
@@ -59,7 +58,7 @@ def _turn(work, link: int, at) -> float:
         # block as the file's branch puts it (Assembly.swing_slot).
         (wx, wy), (dx, dy) = work.assembly.guide(slot).direction, mech.slides[slot].direction
         return math.atan2(wy, wx) - math.atan2(dy, dx)
-    block = next((s for s in mech.slides if s.link == link and s.kind is SlideKind.BLOCK),
+    block = next((s for s in mech.slides if s.link == link and s.type.turns_with_guide),
                  None)
     if block is not None:
         guide = 0.0 if block.guide_link == 1 else _turn(work, block.guide_link, at)

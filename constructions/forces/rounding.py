@@ -24,7 +24,6 @@ from ..linkages.acceleration_polygon import drawn_acceleration_polygon
 from ..checks import EPS
 from ..errors import TarsimError
 from ..loads import made_of, resting_speed
-from ..joints import SlideKind
 from ..model import Mechanism
 from ..linkages.velocity_polygon import drawn_velocity_polygon
 
@@ -48,7 +47,7 @@ def _reader(polygon, mech: Mechanism, link: int) -> int | None:
         return None
     if link in polygon.spans:
         return link
-    block = next((s for s in mech.slides if s.link == link and s.kind is SlideKind.BLOCK),
+    block = next((s for s in mech.slides if s.link == link and s.type.turns_with_guide),
                  None)
     if block is not None:
         return None if block.guide_link == 1 else _reader(polygon, mech, block.guide_link)

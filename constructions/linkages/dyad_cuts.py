@@ -32,10 +32,10 @@ __all__ = ["rigid_point", "two_arcs", "arc_and_guide", "two_guides"]
 def _arc_why(a: Arc) -> Phrase:
     """Why a point keeps its distance: "the circles of links 3 and 2 touch: their centres
     R and C stay r3 + r2 apart"."""
-    c = a.contact
-    if c is None:
+    if not a.type.contact:
         return phrase("position.why_curved_slot", point=a.point, link=a.guide_link,
                       centre=a.centre)
+    c = a.contact
     return phrase("position.why_circles_touch", i=c.circle.link, j=c.face.link, p=a.point,
                   q=a.centre, op="+" if c.side == "outside" else "−")
 

@@ -56,7 +56,7 @@ def roll_wheel(asm: Assembler) -> bool:
     turned through s / r, clockwise when it rides on the left of the face.
     """
     for s in asm.m.slides:
-        if not s.rolling or s.point not in asm.known or s.link in asm.axes:
+        if not s.type.rolling or s.point not in asm.known or s.link in asm.axes:
             continue
         pose = _pose_of(asm, s.guide_link)
         if pose is None:

@@ -18,7 +18,7 @@ from .. import geometry as g
 from .assembly_record import MEETING
 from .dyad_rules import dyad_rule
 from ..errors import AssemblyError, BranchError, DegenerateInput, NoIntersection, TarsimError
-from ..joints import Slide, SlideKind
+from ..joints import Slide
 from ..narration import phrase
 from ..record import Kind, Ref
 
@@ -57,7 +57,7 @@ def slot_of_a_block(asm: Assembler) -> bool:
         if i in asm.guides or k.number == 1 or s.point not in asm.known or len(k.names) != 1:
             continue
         j = next((j for j, b in enumerate(asm.m.slides) if b.link == k.number
-                  and b.kind is SlideKind.BLOCK and j in asm.guides), None)
+                  and b.type.turns_with_guide and j in asm.guides), None)
         if j is None or k.names[0] in asm.known:
             continue
         guide, pin, name = asm.guides[j], asm.known[s.point], k.names[0]
@@ -230,7 +230,7 @@ def _axis_of(asm: Assembler, number: int) -> Ref:
                                       label=f"link {number}", kind=Kind.GUIDE)
         return asm.axes[number]
     for i, s in enumerate(asm.m.slides):
-        if s.link == number and s.kind is SlideKind.BLOCK and i in asm.guides:
+        if s.link == number and s.type.turns_with_guide and i in asm.guides:
             asm.axes[number] = asm.guides[i]
             return asm.guides[i]
     raise AssemblyError(f"{asm.m.link(number).label} has no direction: give it two points "

@@ -35,19 +35,19 @@ def contact_at(m: Mechanism, point: str):
         If no contact's circle is centred there, naming those that are.
     """
     for a in m.arcs:
-        if a.contact is not None and a.point == point:
+        if a.type.contact and a.point == point:
             return a, None
     for i, s in enumerate(m.slides):
-        if s.contact is not None and s.point == point:
+        if s.type.contact and s.point == point:
             return s, i
-    centres = [j.point for j in (*m.arcs, *m.slides) if j.contact is not None]
+    centres = [j.point for j in (*m.arcs, *m.slides) if j.type.contact]
     raise InputError(f"no contact has its circle centred at {point}; the contacts' circles are "
                      f"centred at {', '.join(centres) or 'none (no [[contact]])'}")
 
 
 def equivalent_askable(m: Mechanism) -> set[str]:
     """``equiv_R`` for each contact's circle centre R."""
-    return {f"equiv_{j.point}" for j in (*m.arcs, *m.slides) if j.contact is not None}
+    return {f"equiv_{j.point}" for j in (*m.arcs, *m.slides) if j.type.contact}
 
 
 def answer_equivalent(work, ask: A.Equivalent) -> Answer:

@@ -27,7 +27,6 @@ from .assembly import assemble
 from .assembly_record import Assembly, point_ref
 from ..checks import Answer, FigureSpec, time_ratio_value
 from ..errors import InputError, NoIntersection, TarsimError
-from ..joints import SlideKind
 from ..model import Mechanism
 from ..measures import measure_angle
 from ..narration import Number, Phrase, Word, narrate, phrase
@@ -86,8 +85,7 @@ def limit_kind(mech: Mechanism) -> str | None:
 
 def stroke_point(mech: Mechanism) -> str | None:
     """The point whose stroke the limit positions measure: the last block on a frame guide."""
-    on_frame = [s.point for s in mech.slides if s.guide_link == 1 and s.kind is SlideKind.BLOCK
-                and s.contact is None]
+    on_frame = [s.point for s in mech.slides if s.guide_link == 1 and s.type.key == "block"]
     return on_frame[-1] if on_frame else None
 
 
@@ -122,7 +120,7 @@ class _Dyad:
         self.crank, self.o2, self.a = d, crank.names[0], crank.names[1]
         self.r = crank.span(self.o2, self.a)
         lever = [s for s in mech.slides if s.point == self.a and s.guide_link != 1
-                 and s.contact is None and _pivot(mech, s.guide_link)]
+                 and not s.type.contact and _pivot(mech, s.guide_link)]
         rods = [k for k in mech.links_at(self.a)
                 if k not in (1, d) and len(mech.link(k).names) == 2]
         if lever:
@@ -147,7 +145,7 @@ class _Dyad:
             b = next(n for n in mech.link(k).names if n != self.a)
             self.rod, self.b, self.rod_length = k, b, mech.link(k).span(self.a, b)
             guide = [i for i, s in enumerate(mech.slides) if s.point == b and s.guide_link == 1
-                     and s.kind is SlideKind.BLOCK and s.contact is None]
+                     and s.type.key == "block"]
             rocker = [n for n in mech.links_at(b) if n not in (1, k) and _pivot(mech, n)]
             if guide:
                 self.kind, self.guide = "slider-crank", guide[0]

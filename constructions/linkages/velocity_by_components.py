@@ -218,7 +218,7 @@ class _Components(Walk):
                 on = "" if x.link is None else f" as a point of link {x.link}"
                 hint = ("; across a curved slot, a circle contact or a rolling wheel use "
                         "radius-rotation or parallel-line"
-                        if self.m.arcs or any(s.rolling for s in self.m.slides) else "")
+                        if self.m.arcs or any(s.type.rolling for s in self.m.slides) else "")
                 raise TarsimError(f"the component method cannot reach {x.point}{on}: no link "
                                   f"carrying it has two known velocities or a known path{hint}")
             found = found or dict([best])
