@@ -28,8 +28,8 @@ def read_slider(r: TableReader, i: int, t: dict[str, Any]) -> Slide | Arc:
         if k not in allowed:
             raise r.unknown(k, allowed, "slider setting", key=k, **where)
     kind = t.get("kind", "block")
-    if kind not in ("block", "pin"):
-        raise r.unknown(str(kind), ("block", "pin"), "slider kind", key="kind", **where)
+    if kind not in tuple(SlideKind):
+        raise r.unknown(str(kind), tuple(SlideKind), "slider kind", key="kind", **where)
     link = r.link_number(t.get("link"), "link", where)
     point = r.name(t.get("point"), "the sliding point", key="point", **where)
     if point not in r.links[link].names:
