@@ -274,6 +274,10 @@ class Figure:
     sheets: list[Figure] = field(default_factory=list)
     """A figure that runs over several sheets: each sheet, in order (a PDF prints a page
     each); its own items are them stacked (:func:`stack_pages`), for one SVG."""
+    drawing: tuple[float, float] | None = None
+    """The width and height (mm) of the drawing a caption was set under
+    (:func:`~tarsim.graphics.scales.draw_caption`): the part of the figure that grows and
+    shrinks with its scale, the caption and margins keeping their size."""
 
     def add(self, item: Path | Circle | Text) -> None:
         """Append a primitive."""

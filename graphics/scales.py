@@ -152,10 +152,12 @@ def draw_caption(fig: Figure, heading: str, lines: Sequence[str], *, per_cm: flo
     and notes align right and the scales stand at the left (a bar still reads left to
     right, as its numbers do). The scale and legend names are said in the language being
     spoken (:func:`~tarsim.constructions.narration.words`); the heading, lines and notes
-    come already said.
+    come already said. The drawing's own size is kept as the figure's ``drawing``, from
+    which :func:`~tarsim.graphics.fitting.fit` foretells its size at another scale.
     """
     x0, y0, x1, y1 = fig.bounds()
     fig.shift(margin - x0, margin - y0)
+    fig.drawing = (x1 - x0, y1 - y0)
     head = _heading(heading)
     scales = [(words(scale_name), per_cm, unit)] + ([(words(second[0]), *second[1:])]
                                                     if second else [])
