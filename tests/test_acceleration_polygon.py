@@ -23,7 +23,7 @@ from hypothesis import strategies as st
 from tarsim.constructions.reference import solver
 from tarsim.constructions import geometry as g
 from tarsim.constructions.linkages.acceleration_polygon import draw_acceleration_polygon
-from tarsim.constructions.linkages.polygon_walk import VELOCITY, Polygon
+from tarsim.constructions.linkages.polygon import VELOCITY, Polygon
 from tarsim.constructions.checks import tolerance
 from tarsim.constructions.linkages.assembly import assemble
 from tarsim.constructions.errors import AssemblyError, TarsimError

@@ -21,7 +21,7 @@ from tarsim.constructions.errors import AssemblyError, TarsimError
 from tarsim.constructions.model import Drive
 from tarsim.constructions.record import Panel, Role, replay
 from tarsim.constructions.scales import nice
-from tarsim.constructions.linkages.polygon_walk import Polygon
+from tarsim.constructions.linkages.polygon import Polygon
 from tarsim.constructions.linkages.velocity_polygon import draw_velocity_polygon
 from tarsim.exercises.catalog import bundled
 from tarsim.exercises.linkages.mechanism_file import load_mechanism

@@ -3,7 +3,7 @@ acceleration polygon, and carry its rounding, which the force polygons then mult
 their own gain.
 
 A tip of the acceleration polygon is drawn to about eps times the polygon's extent over its
-worst conditioning, as :meth:`~.polygon_walk.Polygon.conditioning` reads it; a link's α is
+worst conditioning, as :meth:`~..linkages.polygon.Polygon.conditioning` reads it; a link's α is
 that rounding over the span it is read across, and an image laid off from it at an arm r
 (a point of the link farther out) carries it times r. So a centre's a_G rounds at the
 extent's rounding, however small a_G itself: where large vectors of the polygon nearly

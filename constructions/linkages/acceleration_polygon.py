@@ -33,7 +33,8 @@ from .coincident import Node
 from ..errors import TarsimError
 from .joint_rules import rules_of
 from ..narration import Number, Phrase, Quantity, Word, phrase
-from .polygon_walk import ACCELERATION, NOISE, Polygon, PolygonWalk, sense_of
+from .polygon import ACCELERATION, NOISE, Polygon, sense_of
+from .polygon_walk import PolygonWalk
 from ..record import Panel, Ref, Role
 from ..scales import nice
 from .velocity_polygon import WORKED, drawn_velocity_polygon

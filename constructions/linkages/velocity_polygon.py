@@ -34,7 +34,8 @@ from .assembly_record import Assembly
 from ..checks import Answer, FigureSpec, vector_value
 from .coincident import Node
 from ..errors import TarsimError
-from .polygon_walk import DEAD_POINT, VELOCITY, Polygon, PolygonWalk, sense_of
+from .polygon import VELOCITY, Polygon, sense_of
+from .polygon_walk import DEAD_POINT, PolygonWalk
 from ..narration import Number, Phrase, Quantity, Word, phrase
 from ..record import Panel, Ref, Role
 from ..scales import nice

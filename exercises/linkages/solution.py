@@ -20,7 +20,7 @@ from tarsim.constructions.errors import BranchError, DeadPoint, InputError, Tars
 from tarsim.constructions.linkages.given_rate import convert
 from tarsim.constructions.methods import Work, answer_all
 from tarsim.constructions.narration import narrate, spoken
-from tarsim.constructions.linkages.polygon_walk import Polygon
+from tarsim.constructions.linkages.polygon import Polygon
 from tarsim.constructions.record import Panel
 from tarsim.constructions.reference.solver import Kinematics
 from tarsim.constructions.registry import METHODS
