@@ -27,6 +27,7 @@ from __future__ import annotations
 import math
 
 from .. import asks as A
+from .acceleration_slots import draw_curve, draw_slot
 from .assembly_record import Assembly
 from ..checks import Answer, vector_value
 from .coincident import Node
@@ -223,8 +224,8 @@ class _Polygon(PolygonWalk):
                            said=phrase("apolygon.parallel_guide", why=why, point=X))
             return ref, phrase("polygon.say_guide", pole="o_a")
         if kind == "curve":
-            return self.draw_curve(x, *locus[1:])
-        return self.draw_slot(x, *locus[1:])
+            return draw_curve(self, x, *locus[1:])
+        return draw_slot(self, x, *locus[1:])
 
     def draw_relative(self, x: Node, k: Node, c: int) -> tuple[Ref, Phrase]:
         """Aⁿ_X/K laid off from k′ toward K, then the line of Aᵗ_X/K ⟂ KX through it."""
@@ -253,111 +254,6 @@ class _Polygon(PolygonWalk):
                        said=phrase("apolygon.tangential_line", line=kx, rel=rel))
         self.normals.setdefault((x, c), []).append((k, end))
         return ref, phrase("apolygon.say_tangential", line=kx, rel=rel)
-
-    def draw_slot(self, x: Node, other: Node, i: int) -> tuple[Ref, Phrase]:
-        """Coriolis 2ω_j·v_rel laid off from the other point's tip, then the slot's parallel."""
-        j = self.m.slides[i].guide_link
-        slider, carried, rel = self.curve_nodes(x, other)
-        guide = self.asm.guides[i]
-        end = self.draw_coriolis(x, other, slider, carried, rel, j, self.asm.guide(i).direction,
-                                 guide, None)
-        ref = self.act(f"ap:{self.name(x)}:slot@{i}", "parallel_through", end, guide,
-                       said=phrase("apolygon.slot", link=j, rel=rel))
-        self.slides_drawn.append((slider, carried, end, self.sign(x), f"Aˢ_{rel}"))
-        return ref, phrase("apolygon.say_slot", component=self.signed("Aᶜ_" + rel, x))
-
-    def draw_curve(self, x: Node, other: Node, i: int) -> tuple[Ref, Phrase]:
-        """A pin P in a slot curved about K of link j (the notes §2.11–2.12).
-
-        ``A_P = A_Pj + Aᶜ + Aⁿ + Aᵗ``: the Coriolis component 2ω_j × v_rel and the
-        relative path's normal component v_rel²/ρ toward K both lie along KP, so both
-        are laid off along it from the other point's tip; the tangential one, of
-        unknown length, is the line ⟂ KP through their end.
-        """
-        a = self.m.pin_arcs[i]
-        j, K, Pn = a.guide_link, a.centre, a.point
-        line = self.space_line(Node(K), Node(Pn), j)
-        slider, carried, rel = self.curve_nodes(x, other)
-        (kx, ky), (px, py) = self.asm.xy(K), self.asm.xy(Pn)
-        e = math.hypot(px - kx, py - ky)
-        tangent = (-(py - ky) / e, (px - kx) / e)            # KP turned +90°
-        X, kp = self.name(x), f"{K}{Pn}"
-        first = self.tip(other)
-        if j != 1:                                           # a frame slot does not turn
-            first = self.draw_coriolis(x, other, slider, carried, rel, j, tangent, None,
-                                       (line, kp))
-        u = self.sliding(slider, carried, tangent)
-        normal = u * u / a.radius
-        end = self.act(
-            f"ap:{X}:n@curve", "lay_off", first, line, length=-self.sign(x) * normal * self.scale,
-            said=phrase("apolygon.curve_normal", rel=rel,
-                        speed=self.m.units.speed_said(abs(u)),
-                        radius=self.m.units.length_said(a.radius), accel=self.say(normal), p=Pn,
-                        k=K, reversed=self.reversed(x)))
-        self.component(f"ap:{X}:n@curve:vec", first, end, self.signed(f"Aⁿ_{rel}", x))
-        ref = self.act(f"ap:{X}:t@curve", "perpendicular_through", end, line,
-                       said=phrase("apolygon.curve_tangent", line=kp, rel=rel))
-        self.slides_drawn.append((slider, carried, end, self.sign(x), f"Aᵗ_{rel}"))
-        return ref, phrase("apolygon.say_tangential", line=kp, rel=rel)
-
-    def draw_coriolis(self, x: Node, other: Node, slider: Node, carried: Node, rel: str,
-                      j: int, tangent: tuple[float, float], slot: Ref | None,
-                      normal_line: tuple[Ref, str] | None) -> Ref:
-        """Lay off 2ω_j·v_rel from the other point's tip: v_rel turned 90° the way ω_j turns.
-
-        v_rel runs along ``tangent``, so the component lies along the tangent turned
-        +90°: the perpendicular to a straight ``slot`` (drawn here), or the line KP of a
-        curved one (``normal_line``: the line, directed K → P, which is the turned
-        tangent reversed, and its name). It is subtracted when the slot's own point
-        is the one found. At an instant with no sliding or no turning the step says
-        the component is zero.
-        """
-        X, tip, start = self.name(x), self.tip_label(other), self.tip(other)
-        w = self.omegas[j]
-        u = self.sliding(slider, carried, tangent)
-        still = sense_of(w, abs(self.m.drive.omega)) == "at rest"
-        stuck = abs(u) <= NOISE * self.m.input_speed
-        cor = 0.0 if still or stuck else 2.0 * w * u
-        if cor == 0.0:
-            why = (phrase("apolygon.still", link=j) if still else
-                   phrase("apolygon.stuck", rel=rel))
-            end = self.act(f"ap:{X}:cor", "mark", start,
-                           said=phrase("apolygon.coriolis_zero", link=j, rel=rel, why=why))
-        else:
-            if slot is not None:
-                along, turn = self.act(
-                    f"ap:{X}:cor:perp", "perpendicular_through", start, slot,
-                    said=phrase("apolygon.coriolis_direction", tip=tip, link=j)), 1.0
-                where = phrase("apolygon.along_it")
-            else:
-                (along, name), turn = normal_line, -1.0
-                where = phrase("apolygon.from_along", tip=tip, line=name)
-            end = self.act(
-                f"ap:{X}:cor", "lay_off", start, along,
-                length=turn * self.sign(x) * cor * self.scale,
-                said=phrase("apolygon.coriolis", where=where, rel=rel, link=j,
-                            omega=Number(abs(w)), speed=self.m.units.speed_said(abs(u)),
-                            accel=self.say(abs(cor)), sense=Word("ccw" if w > 0 else "cw"),
-                            reversed=self.reversed(x)))
-            self.component(f"ap:{X}:cor:vec", start, end, self.signed(f"Aᶜ_{rel}", x))
-        self.coriolis[slider.point] = (start, end, self.sign(x))
-        return end
-
-    def sliding(self, slider: Node, carried: Node, tangent: tuple[float, float]) -> float:
-        """V_P/Pj along the slot's ``tangent``, from the velocity polygon."""
-        (sx, sy), (cx, cy) = self.velocity(slider), self.velocity(carried)
-        return (sx - cx) * tangent[0] + (sy - cy) * tangent[1]
-
-    @staticmethod
-    def sign(x: Node) -> float:
-        """+1 when the sliding point is found (A_P = A_Pj + …), −1 for the slot's point."""
-        return 1.0 if x.link is None else -1.0
-
-    def signed(self, label: str, x: Node) -> str:
-        return label if self.sign(x) > 0 else f"−{label}"
-
-    def reversed(self, x: Node) -> Phrase | None:
-        return None if self.sign(x) > 0 else phrase("apolygon.reversed")
 
     # ----- results ----------------------------------------------------------------
     def draw_results(self) -> dict[int, float]:
