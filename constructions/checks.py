@@ -129,8 +129,10 @@ class FigureSpec:
     """
 
     stem: str
-    heading: str
-    caption: str = ""
+    heading: Phrase | str
+    """What steps.md heads the figure's part with: a catalogue phrase ("V_B by radius
+    rotation", said in each language), or words each catalogue says whole."""
+    caption: Phrase | str = ""
     kind: str = "scene"
     velocity_scale: float | None = None
     notes: bool = False

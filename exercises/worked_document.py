@@ -7,10 +7,11 @@ catalogue phrase and the figures it is drawn in, then its blocks (numbered
 markdown of its own, and no heading is English turned into another language after the
 fact: each is a phrase every catalogue says.
 
-A step, a bullet or a paragraph is :data:`Said`: a :class:`~tarsim.constructions.narration.
-Phrase` (or a recorded :class:`~tarsim.constructions.record.Step`, which says its own), or
-text already said in the language being spoken (a number set in its digits, the file's
-own description).
+A step, a bullet, a paragraph or a table's cell is :data:`Said`: a
+:class:`~tarsim.constructions.narration.Phrase` (or a recorded
+:class:`~tarsim.constructions.record.Step`, which says its own), a
+:class:`~tarsim.constructions.narration.Word` the catalogue says, or text already said in
+the language being spoken (a number set in its digits, the file's own description).
 """
 
 from __future__ import annotations
@@ -18,16 +19,17 @@ from __future__ import annotations
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 from functools import singledispatch
-from typing import Any, Union
+from typing import Union
 
-from tarsim.constructions.narration import Phrase, narrate, phrase
+from tarsim.constructions.narration import Phrase, Word, narrate, phrase, render
 from tarsim.constructions.record import Construction, Step
 
 __all__ = ["Said", "Section", "Steps", "Bullets", "Paragraph", "Notes", "Table", "Block",
            "title", "numbered", "said_steps", "markdown"]
 
-Said = Union[Phrase, Step, str]
-"""What a line of steps.md says: a phrase, a step (its phrase), or words already said."""
+Said = Union[Phrase, Step, Word, str]
+"""What a line of steps.md says: a phrase, a step (its phrase), a catalogue's word, or words
+already said."""
 
 
 @dataclass(frozen=True)
@@ -64,13 +66,13 @@ class Notes:
 @dataclass(frozen=True)
 class Table:
     """A table: its head (its cells, or one phrase that says the whole head row), and its
-    rows, each cell already said in the language spoken.
+    rows.
 
     ``width`` is how many columns a head said as one phrase spans (its rule's dashes).
     """
 
-    head: tuple[str, ...] | Phrase
-    rows: tuple[tuple[str, ...], ...]
+    head: tuple[Said, ...] | Phrase
+    rows: tuple[tuple[Said, ...], ...]
     width: int = 0
 
 
@@ -146,22 +148,22 @@ def _lines(block: Block, lang: str) -> list[str]:
 
 @_lines.register
 def _(block: Steps, lang: str) -> list[str]:
-    return [f"{n}. {narrate(item, lang)}" for n, item in block.items]
+    return [f"{n}. {_said(item, lang)}" for n, item in block.items]
 
 
 @_lines.register
 def _(block: Bullets, lang: str) -> list[str]:
-    return [f"- {narrate(item, lang)}" for item in block.items]
+    return [f"- {_said(item, lang)}" for item in block.items]
 
 
 @_lines.register
 def _(block: Paragraph, lang: str) -> list[str]:
-    return [narrate(block.said, lang)]
+    return [_said(block.said, lang)]
 
 
 @_lines.register
 def _(block: Notes, lang: str) -> list[str]:
-    return [f"> {narrate(item, lang)}" for item in block.items]
+    return [f"> {_said(item, lang)}" for item in block.items]
 
 
 @_lines.register
@@ -169,10 +171,12 @@ def _(block: Table, lang: str) -> list[str]:
     if isinstance(block.head, Phrase):
         head, width = narrate(block.head, lang), block.width
     else:                   # a blank corner cell is set "| |", over the rows' names
-        head = "|" + "".join(f" {c} |" if c else " |" for c in block.head)
-        width = len(block.head)
-    return [head, "|" + "---|" * width] + [_row(cells) for cells in block.rows]
+        cells = [_said(c, lang) for c in block.head]
+        head, width = "|" + "".join(f" {c} |" if c else " |" for c in cells), len(cells)
+    return [head, "|" + "---|" * width] + ["| " + " | ".join(_said(c, lang) for c in row) + " |"
+                                           for row in block.rows]
 
 
-def _row(cells: Iterable[Any]) -> str:
-    return "| " + " | ".join(cells) + " |"
+def _said(item: Said, lang: str) -> str:
+    """What ``item`` says in ``lang``."""
+    return render(item, lang) if isinstance(item, Word) else narrate(item, lang)

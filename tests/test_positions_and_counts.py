@@ -15,7 +15,8 @@ from tarsim.constructions import asks as A
 from tarsim.constructions.reference import solver
 from tarsim.exercises.catalog import load
 from tarsim.exercises.linkages.solution import solve_exercise, solve_overall
-from tarsim.exercises.linkages.solution_files import answer_line, solve_worked
+from tarsim.exercises.linkages.answer_text import answer_line
+from tarsim.exercises.linkages.solution_files import solve_worked
 
 
 def at_its_angle(name: str):

@@ -14,7 +14,7 @@ from tarsim.constructions import asks as A
 from tarsim.constructions.errors import TarsimError
 from tarsim.exercises.catalog import load
 from tarsim.exercises.linkages.solution import solve_exercise
-from tarsim.exercises.linkages.solution_files import answer_line
+from tarsim.exercises.linkages.answer_text import answer_line
 
 ASKED = ("omega3", "omega4", "V_B", "omega4/omega2", "ma_4", "V_B/V_A", "dist_B_I13",
          "dist_A_I13", "mu")

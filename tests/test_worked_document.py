@@ -11,12 +11,24 @@ import pytest
 
 from tarsim.constructions.narration import LANGUAGES, Phrase, Word, catalogue, narrate, phrase
 from tarsim.exercises.catalog import bundled
+from tarsim.exercises.linkages.exercise_file import parse_exercise
+from tarsim.exercises.linkages.solution_files import solve_worked
+from tarsim.exercises.linkages.worked_steps import heading_in
+from tests.common import four_bar_toml
 from tarsim.exercises.checked import Checked, check_line, results_document, results_text
 from tarsim.exercises.worked_document import (Bullets, Notes, Paragraph, Section, Table, markdown,
                                               numbered, title)
 
 CHAPTERS = sorted([*bundled("gears"), *bundled("cams"), *bundled("balancing")])
 """The bundled exercises of the chapters that say their files through ChapterFiles."""
+
+LINKAGES = ["four-bar", "crank-shaper", "crank-shaper-forces", "wheel-driven-slider"]
+"""Linkages whose steps.md holds every kind of heading: a velocity by each method, the limit
+positions and two positions' worked pages, the force polygons and the inertia loads read
+off the acceleration polygon (a part of no figure of its own), and notes."""
+
+ORDER = ["reference", "rel_error", "tolerance", "conditioning", "passed", "method"]
+"""The check's fields, in the one order every results.json row writes those it states."""
 
 
 def test_a_document_sets_a_blank_line_after_each_heading_and_block():
@@ -91,8 +103,8 @@ def _words_of(said) -> list[str]:
     return out
 
 
-@pytest.mark.parametrize("exercise_id", CHAPTERS)
-def test_every_heading_of_a_chapters_steps_is_a_phrase_each_catalogue_says(solved, exercise_id):
+@pytest.mark.parametrize("exercise_id", CHAPTERS + LINKAGES)
+def test_every_heading_of_steps_md_is_a_phrase_each_catalogue_says(solved, exercise_id):
     sections = solved(exercise_id).document()
     headings = [s.heading for s in sections if s.heading is not None]
     assert len(headings) >= 2                      # the title and the results at least
@@ -108,15 +120,53 @@ def test_every_heading_of_a_chapters_steps_is_a_phrase_each_catalogue_says(solve
         assert not re.search(r"[A-Za-z]{4,}", narrate(bare, "fa")), narrate(bare, "fa")
 
 
+def test_a_velocity_by_its_method_is_headed_by_one_phrase():
+    """"V_B by radius rotation" is the quantity and its method, said whole by each catalogue:
+    Persian puts its own words between them."""
+    text = four_bar_toml(branch='B = "left"').replace("[input]\n", "[input]\nomega = 10\n")
+    text += ('\n[ask]\nfind = ["omega4", "V_B"]\n'
+             'methods = ["line-of-transmission", "radius-rotation"]\n')
+
+    doc = solve_worked(parse_exercise(text, "lot.toml")).document()
+    said = {narrate(s.heading, "fa") for s in doc if s.heading is not None}
+    assert {"ω4 به روش خط انتقال", "V_B به روش دوران شعاع"} <= said
+
+
+def test_a_heading_with_by_in_its_words_is_said_whole():
+    """"Positions by compass" is no quantity and its method: its Persian is the catalogue's
+    own words for it, not its English cut at " by "."""
+    assert heading_in("Positions by compass", "fa") == catalogue("fa").WORDS[
+        "Positions by compass"] == "وضعیت\u200cها با پرگار"
+
+
+def _in_order(entry: dict, extra: tuple[str, ...] = ()) -> bool:
+    """Whether a row's check fields stand in the one order, after what its value carries."""
+    keys = [k for k in entry if k not in extra]
+    stated = [k for k in keys if k in ORDER]
+    return keys[len(keys) - len(stated):] == stated == [k for k in ORDER if k in stated]
+
+
 @pytest.mark.parametrize("exercise_id", CHAPTERS)
 def test_a_chapters_results_rows_keep_the_one_order(solved, exercise_id):
     """Every row is written by Checked.entry: what the value carries, then of the check's
     fields those it states, in the one order (and what follows the check)."""
-    order = ["reference", "rel_error", "tolerance", "conditioning", "passed", "method"]
     s = solved(exercise_id)
+    assert s.results["quantities"]
     for name, row in s.checked.items():
         entry = s.results["quantities"][name]
         assert entry == row.entry()
-        stated = [k for k in entry if k in order and k not in row.beside]
-        assert stated == [k for k in order if k in stated], (name, list(entry))
         assert list(entry)[0] == "value"
+        assert _in_order(entry, tuple(row.beside)), (name, list(entry))
+
+
+@pytest.mark.parametrize("exercise_id", LINKAGES)
+def test_a_linkages_results_rows_keep_the_one_order(solved, exercise_id):
+    doc = solved(exercise_id).results
+    rows = [*doc["quantities"].values(), *(q for p in doc["positions"]
+                                           for q in p["quantities"].values())]
+    rows += [q for r in rows for q in r.get("by_method", {}).values()]
+    assert len(rows) >= 4
+    for entry in rows:
+        assert list(entry)[-1] in ("method", "by_method")
+        assert [k for k in entry if k in ORDER] == ORDER      # a linkage states every field
+        assert _in_order(entry, ("by_method",)), list(entry)

@@ -97,8 +97,9 @@ def answer_omega(work, ask: A.AngularVelocity) -> Answer:
                     role=Role.RESULT, phrase=said)
     # The ratio divides by O_f H: a short perpendicular magnifies the drawing's error.
     cond = min(c[result].conditioning, c[line].conditioning) * min(1.0, lever_f / asm.size)
-    spec = FigureSpec(f"omega{n}-line-of-transmission", f"ω{n} by the line of transmission",
-                      f"ω_{n} by the line of transmission")
+    by = Word("the line of transmission")
+    spec = FigureSpec(f"omega{n}-line-of-transmission", phrase("md.by", what=f"ω{n}", method=by),
+                      phrase("md.by", what=f"ω_{n}", method=by))
     return Answer(ask, {"value": ratio * d.omega + 0.0}, cond, "line of transmission",
                   refs=(f"{tag}:{o_d}G", result), figures=(spec,))
 

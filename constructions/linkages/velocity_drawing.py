@@ -115,7 +115,7 @@ def answer(work, ask, result: VelocityResult) -> Answer:
     """A velocity found by a method of the space diagram, as the registry takes it: drawn on
     its own figure, ``V_<point>-<method>``, at the position's velocity scale."""
     c = work.assembly
-    said = f"V_{ask.point} by {method_words(result.method)}"
+    said = phrase("md.by", what=f"V_{ask.point}", method=Word(method_words(result.method)))
     spec = FigureSpec(f"V_{ask.point}-{result.method}", said, said, velocity_scale=result.scale,
                       velocity_stated=work.scales.velocity)
     return Answer(ask, vector_value(*result.value(c)),
