@@ -360,9 +360,7 @@ def sweep(source, out_dir, of, steps, pdf, lang, digits):
       tarsim sweep four-bar --of omega4 --steps 720 --no-pdf
       tarsim sweep my-linkage.toml --of V_C
     """
-    from .linkages.sweep import sweep_exercise
-    from .linkages.sweep_files import format_sweep, sweep_to_files, write_sweep
-    from .forces.turning_moment import POWER_AGREE, moment_files
+    from .linkages.sweep_run import run_sweep
     from tarsim.graphics.export import cairo_missing, output_folder
 
     ex = _linkage(source)
@@ -371,47 +369,20 @@ def sweep(source, out_dir, of, steps, pdf, lang, digits):
         ex = ex.named_in(spoken())
         reason = cairo_missing() if pdf else None
         out = Path(out_dir or f"{ex.id}-sweep")
-        moment = None
         with output_folder(out):      # a folder that cannot be written fails before the sweep
-            if sys.stderr.isatty():
-                with click.progressbar(length=steps, label="sweeping", file=sys.stderr) as bar:
-                    result = sweep_exercise(ex, steps, of=of, progress=bar.update)
-            else:
-                result = sweep_exercise(ex, steps, of=of)
-            files = sweep_to_files(result, pdf=pdf and reason is None)
-            if ex.loads is not None:
-                moment = _turning_moment(ex, steps)
-                files |= moment_files(moment, pdf=pdf and reason is None)
-            written = write_sweep(files, out)
-        click.echo(format_sweep(result))
-        if moment is not None:
-            for line in moment.lines():
-                click.echo(line)
+            swept = run_sweep(ex, steps, of=of, bar=_bar if sys.stderr.isatty() else None)
+            written = swept.write(out, pdf=pdf and reason is None)
+        for line in swept.lines():
+            click.echo(line)
         click.echo(f"wrote {len(written)} files to {out}/")
         if reason:
             click.echo(f"PDF skipped: {reason}", err=True)
-        apart = [f"{c.key} at {c.position}" for c in result.checks
-                 if not c.rel_error <= SWEEP_AGREE]
-        if moment is not None and not moment.power_miss <= POWER_AGREE:
-            apart.append("the driving torque by the balance of power")
-        if apart:
-            raise CheckMismatch(list(dict.fromkeys(apart)))
+        swept.check()
 
 
-def _turning_moment(ex, steps: int):
-    """The turning-moment diagram of a loaded exercise, with a progress bar on a terminal."""
-    from .forces.turning_moment import turning_moment
-
-    if sys.stderr.isatty():
-        with click.progressbar(length=steps, label="forces", file=sys.stderr) as bar:
-            return turning_moment(ex, steps, progress=bar.update)
-    return turning_moment(ex, steps)
-
-
-SWEEP_AGREE = 1e-9
-"""The relative distance from its curve within which a constructed value agrees: the
-construction and the curve's solver round alike at every position the bundled exercises
-sweep (1e-16 to 1e-14), so anything near this is a wrong number, not rounding."""
+def _bar(length: int, label: str):
+    """A progress bar on stderr."""
+    return click.progressbar(length=length, label=label, file=sys.stderr)
 
 
 @cli.command()
@@ -462,12 +433,9 @@ def bench(quick, out_dir):
         raise click.ClickException(f"tarsim bench needs the test extra ({e.name} is missing): "
                                    "pip install -e '.[test]'") from None
 
-    def bar(length: int, label: str):
-        return click.progressbar(length=length, label=label, file=sys.stderr)
-
     out = Path(out_dir) if out_dir else root / "benchmarks"
     try:
-        path = write_report(out, quick=quick, bar=bar if sys.stderr.isatty() else None)
+        path = write_report(out, quick=quick, bar=_bar if sys.stderr.isatty() else None)
     except OSError as e:
         raise click.ClickException(f"cannot write the report into {out}: "
                                    f"{e.strerror or e}") from None
@@ -558,10 +526,9 @@ def grade(source, drawing, out_dir, position, roster, pattern, pdf, workers, sch
       tarsim grade four-bar class/ -o graded --scheduler tcp://127.0.0.1:8786
     """
     from .catalog import load
-    from .grading.batch import class_files, grade_many
+    from .grading.class_grades import grade_class
     from .grading.grade import grade as grade_one
-    from .grading.report import class_folder, grade_files, grade_table
-    from .grading.roster import Pattern, class_rows, read_roster
+    from .grading.report import grade_files, grade_table
     from tarsim.graphics.export import cairo_missing, write_folder
 
     if pdf and cairo_missing():
@@ -580,30 +547,11 @@ def grade(source, drawing, out_dir, position, roster, pattern, pdf, workers, sch
             write_folder(files, out_dir)
             click.echo(f"wrote {', '.join(files)} to {out_dir}/")
             return
-        exercise = load(source).id                 # a bad exercise is one line, before the batch
-        students = read_roster(roster) if roster else None
-        names = Pattern(pattern) if pattern else None
-        found = class_files(path, skip=Path(out_dir))
-        rows = class_rows(found, students, names)
-        read = [f for f in found if not f.refused]
-        with click.progressbar(length=len(read), label=f"grading {len(read)} drawings",
-                               file=sys.stderr) as bar:
-            graded = [g for _, g in grade_many(source, [f.path for f in read], position - 1,
-                                               workers, done=lambda: bar.update(1),
-                                               scheduler=scheduler)]
-        by_file = dict(zip(read, graded))
-        for row in rows:
-            if row.file is not None:
-                row.outcome = row.file.refused or by_file[row.file]
-        write_folder(class_folder(rows, exercise, position=position - 1, pdf=pdf,
-                                  lms=bool(roster or pattern), workers=workers),
-                     out_dir)                      # all of it, or nothing
-        files = [r for r in rows if r.file is not None]
-        bad = sum(isinstance(r.outcome, str) for r in files)
-        none = len(rows) - len(files)
-        click.echo(f"graded {len(files) - bad} of {len(files)} drawings into {out_dir}/"
-                   + (f"; {bad} could not be read (see grades.csv)" if bad else "")
-                   + (f"; {none} student{'s' * (none > 1)} handed in none" if none else ""))
+        graded = grade_class(source, path, out=Path(out_dir), position=position - 1,
+                             roster=roster, pattern=pattern, pdf=pdf, workers=workers,
+                             scheduler=scheduler, bar=_bar)
+        write_folder(graded.files, out_dir)                # all of it, or nothing
+        click.echo(graded.summary(out_dir))
 
 
 @cli.command()

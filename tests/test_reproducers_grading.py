@@ -218,17 +218,17 @@ def test_class_folder_link_planted_while_grading_is_not_written_through(tmp_path
                                                                           monkeypatch):
     """The link appears while the class is graded, after the output folder was looked at:
     the class is written as one set, which refuses it before anything moves."""
-    from tarsim.exercises.grading import batch
+    from tarsim.exercises.grading import class_grades
 
     folder, outside = class_folder(tmp_path)
     graded = tmp_path / "graded"
-    grade_many = batch.grade_many
+    grade_many = class_grades.grade_many
 
     def planting(*args, **kwargs):
         graded.mkdir(exist_ok=True)
         (graded / "a_b").symlink_to(outside)
         yield from grade_many(*args, **kwargs)
-    monkeypatch.setattr(batch, "grade_many", planting)
+    monkeypatch.setattr(class_grades, "grade_many", planting)
     result = run("grade", "crank-shaper", folder, "-o", graded)
     assert result.exit_code == 1
     assert result.output.splitlines()[-1] == (

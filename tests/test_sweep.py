@@ -370,14 +370,14 @@ def test_an_input_given_by_another_member_is_swept_at_its_converted_rates():
 def test_a_sweep_whose_construction_leaves_its_curve_exits_3(monkeypatch, tmp_path):
     from dataclasses import replace
 
-    from tarsim.exercises.linkages import sweep as sweep_module
+    from tarsim.exercises.linkages import sweep_run
 
-    real = sweep_module.sweep_exercise
+    real = sweep_run.sweep_exercise
 
     def off(*args, **kw):
         sw = real(*args, **kw)
         return replace(sw, checks=tuple(replace(c, rel_error=0.5) for c in sw.checks))
-    monkeypatch.setattr(sweep_module, "sweep_exercise", off)
+    monkeypatch.setattr(sweep_run, "sweep_exercise", off)
     result = CliRunner().invoke(cli, ["sweep", "four-bar", "-o", str(tmp_path / "out"),
                                       "--no-pdf", "--steps", "24"])
     assert result.exit_code == 3
