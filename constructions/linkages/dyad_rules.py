@@ -6,8 +6,9 @@ returns False. :func:`dyad_rule` registers it under a name and an order; the wal
 the rules in that order, lowest first (equal orders as they registered), and starts
 again after each success. The rules live by the joints they close, in
 :mod:`.dyad_cuts`, :mod:`.dyad_slots` and :mod:`.dyad_rolling`, which register them as
-they load; :mod:`.assembly` imports all three. A new joint is one more rule there, or a
-module of its own that :mod:`.assembly` imports beside them.
+they load. Each kind of joint names the rules that locate it in
+:data:`~.joint_rules.JOINT_RULES`, and the walk tries those of the kinds a mechanism has,
+the pin's, and any rule no kind names (:func:`~.joint_rules.dyad_rules_for`).
 """
 
 from __future__ import annotations
