@@ -10,17 +10,16 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass
-from pathlib import Path
 from typing import Any, ClassVar
 
 from tarsim.constructions.balancing.rotor import Engine, Mass, Plane, Rotor
 from tarsim.constructions.units import LENGTH_UNITS
 from ..file_numbers import radians_in_turn
-from ..toml_source import _CONTROL, read_source
+from ..toml_source import _CONTROL
 from ..names import named_in, read_names, renamed_field
 from ..table_file import SPEEDS, Tables
 
-__all__ = ["BalanceExercise", "load_balance", "parse_balance"]
+__all__ = ["BalanceExercise", "parse_balance"]
 
 _TOP = ("name", "names", "source", "description", "units", "rotor", "mass", "balance", "engine",
         "cylinder")
@@ -59,21 +58,9 @@ class BalanceExercise:
     renamed = renamed_field
 
 
-def load_balance(path: str | Path, exercise_id: str | None = None) -> BalanceExercise:
-    """Read a balancing exercise file.
-
-    Raises
-    ------
-    InputError
-        Naming file:line and the setting.
-    """
-    path = Path(path)
-    return parse_balance(read_source(path), str(path), exercise_id or path.stem)
-
-
 def parse_balance(text: str, filename: str = "<string>", exercise_id: str = "rotor",
                   data: dict[str, Any] | None = None) -> BalanceExercise:
-    """Parse a balancing exercise from TOML text (see :func:`load_balance`); ``data``, the
+    """Parse a balancing exercise from TOML text (:func:`tarsim.load` reads a file); ``data``, the
     tables already parsed from it, spares a second parse."""
     t = Tables.read(text, filename, "balancing", _TOP, _KEYS, data)
     data, fail = t.data, t.fail

@@ -10,7 +10,6 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from pathlib import Path
 from typing import Any, ClassVar
 
 from tarsim.constructions.cams.displacement import Segment
@@ -18,11 +17,10 @@ from tarsim.constructions.units import LENGTH_UNITS
 from tarsim.constructions.reference.cam_laws import BLEND, LAWS
 from tarsim.constructions.reference.cam_profile import Follower, arm_start, prime_radius
 from ..file_numbers import file_number
-from ..toml_source import read_source
 from ..names import named_in, read_names, renamed_field
 from ..table_file import SPEEDS, Tables
 
-__all__ = ["CamExercise", "load_cam", "parse_cam"]
+__all__ = ["CamExercise", "parse_cam"]
 
 _TOP = ("name", "names", "source", "description", "units", "cam", "follower", "segment", "ask")
 
@@ -66,22 +64,10 @@ class CamExercise:
         return 1.0 if self.omega > 0 else -1.0
 
 
-def load_cam(path: str | Path, exercise_id: str | None = None) -> CamExercise:
-    """Read a cam exercise file.
-
-    Raises
-    ------
-    InputError
-        Naming file:line and the setting.
-    """
-    path = Path(path)
-    return parse_cam(read_source(path), str(path), exercise_id or path.stem)
-
-
 def parse_cam(text: str, filename: str = "<string>", exercise_id: str = "cam",
               data: dict[str, Any] | None = None) -> CamExercise:
-    """Parse a cam exercise from TOML text (see :func:`load_cam`); ``data``, the tables
-    already parsed from it, spares a second parse."""
+    """Parse a cam exercise from TOML text (:func:`tarsim.load` reads a file); ``data``, the
+    tables already parsed from it, spares a second parse."""
     tables = Tables.read(text, filename, "cam", _TOP, {}, data)
     data, fail = tables.data, tables.fail
     length, speed = tables.units("mm", "rpm")

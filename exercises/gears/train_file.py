@@ -10,7 +10,6 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass, replace
 from fractions import Fraction
-from pathlib import Path
 from typing import Any, ClassVar
 
 from tarsim.constructions.asks import symbol
@@ -19,10 +18,10 @@ from tarsim.constructions.gears.involute import Involute, check_mesh
 from tarsim.constructions.gears.train import Gear, GearTrain, Mesh, SpeedUnits
 from tarsim.constructions.units import LENGTH_UNITS
 from ..file_numbers import RANGE, _float, in_range
-from ..toml_source import SourceMap, read_source, read_toml
+from ..toml_source import SourceMap, read_toml
 from ..names import named_in, read_names
 
-__all__ = ["TrainExercise", "load_train", "parse_train"]
+__all__ = ["TrainExercise", "parse_train"]
 
 _TOP = ("name", "names", "source", "description", "fixed", "units", "gear", "arm", "mesh", "shaft",
         "input", "involute", "ask")
@@ -60,21 +59,9 @@ class TrainExercise:
         return replace(self, train=replace(self.train, name=name))
 
 
-def load_train(path: str | Path, exercise_id: str | None = None) -> TrainExercise:
-    """Read a gear-train exercise file.
-
-    Raises
-    ------
-    InputError
-        Naming file:line and the setting.
-    """
-    path = Path(path)
-    return parse_train(read_source(path), str(path), exercise_id or path.stem)
-
-
 def parse_train(text: str, filename: str = "<string>", exercise_id: str = "train",
                 data: dict[str, Any] | None = None) -> TrainExercise:
-    """Parse a gear-train exercise from TOML text (see :func:`load_train`); ``data``, the
+    """Parse a gear-train exercise from TOML text (:func:`tarsim.load` reads a file); ``data``, the
     tables already parsed from it, spares a second parse."""
     data = read_toml(text, filename) if data is None else data
     return _Reader(data, SourceMap(text), filename, exercise_id).read()
