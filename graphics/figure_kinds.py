@@ -3,19 +3,24 @@
 A solution names each of its figures by a
 :class:`~tarsim.constructions.checks.FigureSpec`, whose ``kind`` is one of
 :data:`~tarsim.constructions.checks.FIGURE_KINDS`. A chapter's package of graphics
-registers how it draws a kind (:func:`figure_kind`, in its ``figures`` module): from
-what the solution hands over (a :class:`FigureOrder`: the spec, the answers the figure
-holds, the work they were drawn in, the sheet and the words the solution says), it
-plans the figure (a :class:`FigurePlan`: the slice it shows, which steps.md narrates, and
-how it is drawn, fitted to the sheet by :func:`~tarsim.graphics.fitting.fit`).
-:func:`plan_figure` finds the kind's drawing, so a solution names no kind.
+registers how it draws a kind (:func:`figure_kind`) in its ``figures`` module, which is
+found and imported when a kind is first asked for: a new chapter's kinds are registered
+by being there. From what the solution hands over (a :class:`FigureOrder`: the spec, the
+answers the figure holds, the work they were drawn in, the sheet and the words the
+solution says), a kind plans its figure (a :class:`FigurePlan`: the slice it shows,
+which steps.md narrates, and how it is drawn, fitted to the sheet by
+:func:`~tarsim.graphics.fitting.fit`). :func:`plan_figure` finds the kind's drawing, so
+a solution names no kind.
 """
 
 from __future__ import annotations
 
+import pkgutil
 from collections.abc import Callable
 from dataclasses import dataclass
+from functools import cache
 from importlib import import_module
+from importlib.util import find_spec
 
 from tarsim.constructions.checks import FIGURE_KINDS, Answer, FigureSpec
 from tarsim.constructions.linkages.assembly_record import Assembly
@@ -28,10 +33,7 @@ from .figure import Figure
 from .paper import Paper
 
 __all__ = ["FigureOrder", "FigurePlan", "figure_kind", "plan_figure", "registered",
-           "comes_last", "REGISTERED"]
-
-REGISTERED = ("linkages", "forces")
-"""The packages of graphics whose ``figures`` module registers kinds of figure."""
+           "comes_last"]
 
 
 @dataclass(frozen=True)
@@ -139,9 +141,17 @@ def figure_kind(kind: str, *, last: bool = False):
 
 def registered() -> dict[str, Callable[[FigureOrder], FigurePlan]]:
     """Every kind of figure registered, with the function that plans it."""
-    for package in REGISTERED:
-        import_module(f"{__package__}.{package}.figures")
+    _register_all()
     return {kind: k.plan for kind, k in _KINDS.items()}
+
+
+@cache
+def _register_all() -> None:
+    """Import the ``figures`` module of each package of graphics that has one."""
+    for package in pkgutil.iter_modules(import_module(__package__).__path__):
+        name = f"{__package__}.{package.name}.figures"
+        if package.ispkg and find_spec(name) is not None:
+            import_module(name)
 
 
 def plan_figure(order: FigureOrder) -> FigurePlan:
@@ -152,5 +162,5 @@ def plan_figure(order: FigureOrder) -> FigurePlan:
 def comes_last(spec: FigureSpec) -> bool:
     """Whether the figure of ``spec`` comes after a position's others: its kind is
     registered ``last`` (the worked page)."""
-    registered()
+    _register_all()
     return _KINDS[spec.kind].last
