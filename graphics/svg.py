@@ -17,7 +17,11 @@ from .figure import (FONT, PAGE_GAP, STYLES, SUB_DROP, SUB_SIZE, Circle, Figure,
 from .rtl import RTL_FONT, flip_anchor, is_rtl
 from .rtl_runs import lay_runs
 
-__all__ = ["to_svg", "stacked_svg"]
+__all__ = ["to_svg", "stacked_svg", "style_attributes", "text_attributes", "TEXT_ATTRIBUTES",
+           "tspans", "runs", "coordinate"]
+
+TEXT_ATTRIBUTES = {"font-family": FONT, "fill": "#000"}
+"""What every text is written in, unless it says otherwise (a right-to-left face)."""
 
 
 def _n(v: float) -> str:
@@ -25,7 +29,18 @@ def _n(v: float) -> str:
     return "0" if text in ("-0", "") else text
 
 
-def _style_attrs(style: Style) -> dict[str, str]:
+def coordinate(v: float) -> str:
+    """A length on paper (mm) as the SVG writes it: to a micrometre, no trailing zeros.
+
+    >>> coordinate(12.34049), coordinate(-0.0001), coordinate(3.0)
+    ('12.34', '0', '3')
+    """
+    return _n(v)
+
+
+def style_attributes(style: Style) -> dict[str, str]:
+    """The SVG attributes a primitive of ``style`` is written with: its fill, and its
+    stroke, width, caps, joins and dashes (or none)."""
     a = {"fill": style.fill or "none"}
     if style.stroke:
         a.update({"stroke": style.stroke, "stroke-width": _n(style.width),
@@ -64,9 +79,9 @@ def to_svg(fig: Figure) -> str:
         if current is None or current[0] != key:
             attrs = {"class": key}
             if key == "text":
-                attrs.update({"font-family": FONT, "fill": "#000"})
+                attrs.update(TEXT_ATTRIBUTES)
             else:
-                attrs.update(_style_attrs(STYLES[key]))
+                attrs.update(style_attributes(STYLES[key]))
             grp = dwg.g(**attrs)
             dwg.add(grp)
             current = (key, grp)
@@ -106,9 +121,19 @@ def _element(dwg: svgwrite.Drawing, item: Path | Circle | Text):
         for run in parts:
             group.add(_element(dwg, run))
         return group
+    attrs: dict = text_attributes(item)
+    attrs.update({"x": [attrs["x"]], "y": [attrs["y"]]})
+    text = dwg.text(item.text, **attrs)
+    for words, size, dy in tspans(item):
+        text.add(dwg.tspan(words, dy=[_n(dy)], font_size=_n(size)))
+    return text
+
+
+def text_attributes(item: Text) -> dict[str, str]:
+    """The attributes a text of one direction is written with: where it is set (x, y),
+    its size and anchor, and its face where it is not the figure's upright serif."""
     x, y, anchor = text_origin(item)
-    attrs = {"x": [_n(x)], "y": [_n(y)], "font-size": _n(item.size),
-             "text-anchor": anchor}
+    attrs = {"x": _n(x), "y": _n(y), "font-size": _n(item.size), "text-anchor": anchor}
     if is_rtl(item.text + item.sub + item.tail):
         # Persian: laid right to left by the viewer, in a face with its glyphs; the anchor
         # turned so the label keeps its box.
@@ -118,10 +143,7 @@ def _element(dwg: svgwrite.Drawing, item: Path | Circle | Text):
         attrs["font-style"] = "italic"
     if item.weight != "normal":
         attrs["font-weight"] = item.weight
-    text = dwg.text(item.text, **attrs)
-    for words, size, dy in tspans(item):
-        text.add(dwg.tspan(words, dy=[_n(dy)], font_size=_n(size)))
-    return text
+    return attrs
 
 
 def tspans(item: Text) -> list[tuple[str, float, float]]:
