@@ -1,0 +1,29 @@
+"""English phrases of the balancing polygons."""
+
+from __future__ import annotations
+
+__all__ = ["PHRASES"]
+
+PHRASES: dict[str, str] = {
+    "balance.space": "Draw the end view: from the shaft's centre O a radial line to each "
+                     "mass, at its angle.",
+    "balance.couple": "The couple polygon, plane {a} the reference: lay off each mᵢrᵢlᵢ, lᵢ "
+                      "from {a}, head to tail, each parallel to its mass's radial line (the "
+                      "other way where lᵢ < 0).",
+    "balance.force": "The force polygon: lay off each mᵢrᵢ head to tail, each parallel to its "
+                     "mass's radial line (ω² is common to all, so it is left out).",
+    "balance.close": "Close the polygon from its last tip back to its start: the closing side "
+                     "is plane {plane}'s balancing vector, the resultant turned through 180°.",
+    "balance.left": "Close the {plane} polygon from its last tip back to its start: a "
+                    "closing side is the {plane} left unbalanced; none, and it is balanced.",
+    "balance.closed": "The polygon closes on itself, its last tip back on its start: plane "
+                      "{plane} needs no balancing mass.",
+    "balance.point": "Every mass lies in plane {a}, so each mᵢrᵢlᵢ is zero and the couple "
+                     "polygon is a point: plane {plane} needs no balancing mass.",
+    "balance.balanced": "The {plane} polygon closes on itself, its last tip back on its start: "
+                        "the {plane} is balanced.",
+    "balance.cranks": "Draw the end view of the cranks: from the shaft's centre O each "
+                      "crank's line at θᵢ, and the secondary (direct) cranks at 2θᵢ.",
+    "balance.engine": "The {kind} polygon: lay off each cylinder's vector along its crank at "
+                      "{order}, head to tail.",
+}

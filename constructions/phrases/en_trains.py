@@ -1,0 +1,113 @@
+"""English phrases of the gear trains' constructions: the tabular method, the train value, the
+Kutzbach diagram and the involute mesh."""
+
+from __future__ import annotations
+
+__all__ = ["PHRASES"]
+
+PHRASES: dict[str, str] = {
+    "gears.ordinary_start": "{member}, the input, turns {speed}. Carry one turn of it through "
+                            "the meshes:",
+    "gears.mesh_carries": "{driven} meshes {kind}ly with {driver}, so it turns {way}, "
+                          "N{a}/N{b} = {na}/{nb} as fast: {turns} → {result}.",
+    "gears.shaft_carries": "{member} is on one shaft with {other}: it turns alike, {turns}.",
+    "gears.fixed": ", fixed",
+    "gears.one_planet": "one planet",
+    "gears.planets": "{n} planets, equally spaced",
+    "gears.speed": "{value} {unit}{sense}",
+    "gears.sense": " {sense}",
+    "kutzbach.planet_centres": "the planets' centres",
+    "gears.one_shaft": ", on one shaft with {others}",
+    "gears.modules": "{value} modules",
+    "involute.circle_of": "{circle} of {gear}",
+    "gears.idler": "; the idler {idlers} cancels",
+    "gears.idlers": "; the idlers {idlers} cancel",
+    "gears.the_gear": "gear {number}{name}",
+    "gears.the_arm": "the arm {number}{name}",
+    "gears.named": " ({name})",
+    "gears.train_value": "The train value e = ω{last}/ω{first} = ({drivers})/({driven}) = "
+                         "{teeth} = {value}: driver teeth over driven teeth, {externals} "
+                         "external meshes making it {sign}{idlers}.",
+    "gears.power": "The input is driven by {given}. With no power lost, T{i}·ω{i} + T{o}·ω{o} = "
+                   "0, so T{o} = −T{i}·ω{i}/ω{o} = −T{i} × {ratio} = {value} N·m "
+                   "(counter-clockwise +).",
+    "gears.holding": "The torques on the train sum to zero, so the fixed member {fixed} is "
+                     "held by T{fixed} = −(T{i} + T{o}) = {value} N·m.",
+    "kutzbach.radial": "Draw the radial line up from the main axis O, radii to scale: every "
+                       "point on it moves square to it, so each velocity is laid across it "
+                       "(counter-clockwise to the right), and each member's velocities lie on "
+                       "a straight line whose slope is its ω.",
+    "kutzbach.radius": "Mark {name} = {radius} ({what}) on the radial line and draw the level "
+                       "through it.",
+    "kutzbach.fixed": "{member} is fixed: its velocities are nil, and its line is the radial "
+                      "line itself.",
+    "kutzbach.input": "{member} turns {omega} rad/s {sense}: at {name} = {radius} lay off its "
+                      "velocity ω·r across the level, at the velocity scale.",
+    "kutzbach.main_line": "Member {member} turns about the main axis: its line runs from O "
+                          "through {point}.",
+    "kutzbach.pitch": "{a} and {b} share the velocity of their pitch point, at {name}: it is "
+                      "where the line of {known} crosses that level.",
+    "kutzbach.planet_line": "The planet {member} is one body: its line runs through {p} and "
+                            "{q}.",
+    "kutzbach.centre": "The planets' centre, at R, moves with the arm: it is where the line of "
+                       "{known} crosses that level.",
+    "kutzbach.read": "Read ω{member} = Δv/Δr, the slope of its line: {omega} rad/s{sense}, "
+                     "{speed}.",
+    "kutzbach.input_planet": "{member} turns {omega} rad/s {sense} about {pitch}, its pitch "
+                             "point with the fixed member, at rest: at {name} lay off its "
+                             "centre {point}'s velocity ω·({name} − {level}) across the level, "
+                             "at the velocity scale.",
+    "kutzbach.trial": "No line follows from the input's alone: drawn first for {member} at a "
+                      "trial {trial} rad/s {trial_sense}, the diagram gives {drive} "
+                      "{read} rad/s {read_sense}. It turns {given} rad/s, and every velocity "
+                      "scales alike, so {member} turns {omega} rad/s {sense}.",
+    "kutzbach.planet_centre": "the centre of planet {member}",
+    "kutzbach.centre_at": "The centre {point} of the planet {member}, at {name}, moves with the "
+                          "arm: it is where the line of {known} crosses that level.",
+    "involute.centres": "Mark the centres O{a} and O{b}, {distance} apart, and join them: the "
+                        "line of centres.",
+    "involute.pitch_point": "By the law of gearing the pitch point P divides O{a}O{b} as the "
+                            "base radii, N{a} : N{b} = {na} : {nb}: lay off O{a}P = {o2p}.",
+    "involute.circle": "Draw the {name}, radius {radius}.",
+    "involute.thales": "Draw the circle on diameter {centre}P (Thales): a tangent from P "
+                       "touches a circle about {centre} where this one cuts it.",
+    "involute.tangent_point": "It cuts the {base} at {point}, where the line of action touches "
+                              "it.",
+    "involute.line_of_action": "Join the tangency points: the line of action, the common "
+                               "internal tangent of the base circles of {a} and {b}, through P.",
+    "involute.common_tangent": "Through P draw the common tangent of the pitch circles, square "
+                               "to the line of centres; the line of action leans from it by "
+                               "the pressure angle.",
+    "involute.circular_pitch": "Step P one tooth round the pitch circle of {a}, 360°/{teeth}, "
+                               "to P′: the arc PP′ is the circular pitch.",
+    "involute.start": "The addendum circle of {b} cuts the line of action at A: contact "
+                      "begins there.",
+    "involute.end": "The addendum circle of {a} cuts it at B: contact ends there.",
+    "involute.path": "Measure the path of contact AB = {path}; the pressure angle reads "
+                     "{angle}, so the arc of contact is AB / cos φ = {arc}, and over the base "
+                     "pitch {pitch} the contact ratio is {ratio}.",
+    "involute.start_point": "For the tooth of {gear} through P: step the arc {t}{point} = P{t} "
+                            "= {length} back along its base circle to {point}, where the "
+                            "string starts.",
+    "involute.profile": "Divide the base circle of {gear} from {point} into {divisions} equal "
+                        "arcs of {arc}; at each division lay off the arc from {point} along "
+                        "the tangent, and join the points: the involute.",
+    "gears.member": "{member}, {teeth} teeth, {where}{shaft}{fixed}.",
+    "gears.on_axis": "on the main axis",
+    "gears.on_own_axis": "on its own axis in the housing",
+    "gears.on_pin": "on the pin of the arm {arm}, at the carrier radius",
+    "gears.arm": "The arm {arm} turns about the main axis and carries the planets' pin "
+                 "({planets}){fixed}.",
+    "gears.meshes": "Gears {a} and {b} mesh {kind}ly.",
+    "gears.locked": "Row 1: lock the whole train, {arm} with it, and turn it +1 "
+                    "(counter-clockwise): every member turns +1.",
+    "gears.held": "Row 2: hold {arm} and turn {fixed}, the fixed member, −1 turn:",
+    "gears.added": "Row 3: add the rows. {fixed} turns +1 − 1 = 0, as it must; each total is "
+                   "its member's turns for one turn of the arm.",
+    "gears.scaled": "{member}, the input, turns {total} in the total row and {speed} in fact: "
+                    "multiply the row by {scale} {unit}.",
+    "gears.xy_rows": "The same by x and y: the arm {arm} turns y and member {fixed} turns x "
+                     "relative to it, so {rows}.",
+    "gears.xy_solved": "Member {fixed} is fixed, so y + x = 0, and member {member} turns "
+                       "{speed}: y = {y} {unit}, x = {x} {unit}.",
+}
