@@ -568,16 +568,16 @@ def view(source, output, step):
     server) that opens from disk in any current browser:
 
     \b
-      - each figure of the exercise's first position, its construction step by
-        step (previous, next, play, a slider), numbered as steps.md numbers
-        them, the current step highlighted and the earlier ones dimmed, in
-        English or Persian;
+      - each figure of the exercise's first position, as `solve` draws it,
+        its construction step by step (previous, next, play, a slider),
+        numbered as steps.md numbers them, the current step highlighted and
+        the earlier ones dimmed, in English or Persian;
       - the input turned through a revolution (a slider, or drag the crank
-        pin): the mechanism, its instant centres and Kennedy lines, and both
-        polygons move together, with the output's curve and a cursor. Every
-        frame is drawn by tarsim's constructions and checked against the
-        analytic solver; a frame that fails or cannot be assembled says so,
-        and limit positions and dead points are marked on the slider;
+        pin): the figure moves with the joints, instant centres and polygon
+        tips, with the output's curve and a cursor. Every frame is drawn by
+        tarsim's constructions and checked against the analytic solver; a
+        frame that fails or cannot be assembled says so, and limit positions
+        and dead points are marked on the slider;
       - layers to show or hide, zoom (wheel) and pan (drag), and a button that
         downloads the frame shown as SVG.
 

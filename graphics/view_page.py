@@ -3,7 +3,9 @@
 The page is its data (:func:`~tarsim.exercises.linkages.view.view_data`, as JSON), a stylesheet
 and a script, all inline: no network, no CDN, no server, so it opens from disk in any
 current browser and its Content-Security-Policy forbids it to fetch anything. The
-script (``page/view.js``) only draws the numbers it is given.
+script (``page/view.js``) draws no figure of its own: it writes the figures' primitives
+as the SVG writer does (:mod:`.figure_data`) and moves them with the named points each
+frame gives (:mod:`.figure_anchors`).
 """
 
 from __future__ import annotations
