@@ -50,8 +50,8 @@ drawings compute it in double precision from the same kind of sums, and what a f
 sizes from its whole drawing (a guide as long as the drawing is wide, a caption under it)
 moves a few micrometres a radian; a wrong choice misses by the turn of a link over the
 step between the drawings times the point's distance from what it stands on, a
-millimetre a radian or more: over the step (:data:`~tarsim.exercises.linkages.view_figures.NEXT`,
-0.05°), some thousandths of a millimetre."""
+millimetre a radian or more: over a step of 0.05° (the page's), some thousandths of a
+millimetre."""
 
 FARTHER = 1e-3
 """How near (paper mm) a farther drawing must find a point for the way that carries it
