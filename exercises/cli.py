@@ -586,7 +586,7 @@ def view(source, output, step):
       tarsim view crank-shaper -o shaper.html
       tarsim view four-bar --step 1
     """
-    from .linkages.view import view_data
+    from .linkages.view import frame_outcomes, view_data
     from tarsim.graphics.export import write_text
     from tarsim.graphics.view_page import view_html
 
@@ -600,15 +600,13 @@ def view(source, output, step):
         data = view_data(ex, step_deg=step)
     html = view_html(data)
     write_text(target, html)
-    frames = data["frames"]
-    lost = sum("p" not in f for f in frames)
-    wrong = sum("p" in f and not f["ok"] for f in frames)
-    click.echo(f"wrote {target} ({len(html.encode()) / 1e6:.2f} MB, {len(frames)} frames: "
-               f"{len(frames) - lost - wrong} checked, {lost} out of reach or beyond the "
-               f"construction, {wrong} failing their check)")
-    if wrong:
+    frames = frame_outcomes(data["frames"])
+    click.echo(f"wrote {target} ({len(html.encode()) / 1e6:.2f} MB, {len(data['frames'])} "
+               f"frames: {len(frames['checked'])} checked, {len(frames['lost'])} out of reach "
+               f"or beyond the construction, {len(frames['failing'])} failing their check)")
+    if frames["failing"]:
         raise CheckMismatch([f"the frame at {math.degrees(f['angle']):.1f}°"
-                             for f in frames if "p" in f and not f["ok"]][:5])
+                             for f in frames["failing"]][:5])
 
 
 @cli.command(name="list")

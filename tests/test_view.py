@@ -443,3 +443,22 @@ def test_a_missing_browser_skips_unless_it_is_required(monkeypatch, require, out
         raise AssertionError("a browser was opened")
     line = str(info.value)
     assert "\n" not in line and line.startswith(browser.NEEDS)
+
+
+def test_the_command_counts_the_frames_a_crank_can_reach(tmp_path):
+    """A triple rocker (ground 200, crank 100, coupler 150, rocker 120 mm: 100 + 200 >
+    150 + 120, no Grashof crank) reaches only where A stands within coupler + rocker = 270
+    mm of O4: 50000 − 40000 cos θ ≤ 270², so |θ| ≤ acos(−0.5725) = 124.92°. Of 72 frames
+    5° apart from θ = 0, those at 0–120° (25) and 240–355° (24) are drawn and checked, the
+    other 23 out of reach."""
+    reach = math.degrees(math.acos((200 ** 2 + 100 ** 2 - 270 ** 2) / (2 * 200 * 100)))
+    drawn = sum(1 for k in range(72) if min(5 * k, 360 - 5 * k) <= reach)
+    assert (drawn, round(reach, 2)) == (49, 124.92)
+    text = four_bar_toml(ground=200, crank=100, coupler=150, rocker=120, angle=0)
+    text = text.replace("angle = 0", "angle = 0\nomega = 10") + '\n[ask]\nfind = ["omega4"]\n'
+    (tmp_path / "rocker.toml").write_text(text, encoding="utf-8")
+    result = CliRunner().invoke(cli, ["view", str(tmp_path / "rocker.toml"), "--step", "5",
+                                      "-o", str(tmp_path / "rocker.html")])
+    assert result.exit_code == 0, result.output
+    assert (f"72 frames: {drawn} checked, {72 - drawn} out of reach or beyond the "
+            "construction, 0 failing their check)") in result.output

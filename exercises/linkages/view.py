@@ -43,7 +43,7 @@ from .exercise_file import Exercise
 from tarsim.constructions.linkages.given_rate import convert
 from .view_figures import PageFigures
 
-__all__ = ["view_data", "FRAME_CHECK"]
+__all__ = ["view_data", "frame_outcomes", "FRAME_CHECK"]
 
 FRAME_CHECK = 1e-9
 """The largest relative distance of a frame's joint or polygon tip from the analytic
@@ -200,6 +200,16 @@ def _frame(mech: Mechanism, angle: float, scales: dict[str, float],
                         if worst > FRAME_CHECK else
                         f"an instant centre is {miss:.1g} off its analytic position")
     return frame
+
+
+def frame_outcomes(frames: list[dict]) -> dict[str, list[dict]]:
+    """The frames by what became of them: ``checked`` (constructed and agreeing with the
+    analytic solver), ``lost`` (out of reach, or beyond the construction: a frame that
+    only says why) and ``failing`` (constructed, and off the solver)."""
+    out: dict[str, list[dict]] = {"checked": [], "lost": [], "failing": []}
+    for f in frames:
+        out["lost" if "at" not in f else "checked" if f["ok"] else "failing"].append(f)
+    return out
 
 
 def _round(xy: tuple[float, float]) -> list[float]:
