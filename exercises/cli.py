@@ -9,134 +9,18 @@ check against the analytic solution.
 
 from __future__ import annotations
 
-import functools
 import math
 import sys
 from pathlib import Path
 
 import click
 
-from tarsim.constructions.errors import (AssemblyError, CheckMismatch, GeometryError,
-                                         IllConditioned, InputError, TarsimError)
+from tarsim.constructions.errors import (CheckMismatch, TarsimError)
 from tarsim.constructions.narration import speaking, spoken
 
+from . import cli_common as common
+
 __all__ = ["cli"]
-
-
-EXIT_CHECK_FAILED = 3
-"""The exit status when a constructed number disagrees with the analytic one."""
-
-
-class _CheckFailed(click.ClickException):
-    exit_code = EXIT_CHECK_FAILED
-
-
-def _fails_cleanly(fn):
-    """Map tarsim's errors to ``Error: …``: exit 3 for a failed check, else 1. An error of
-    solving is led by the file it concerns (and the line, for one of assembly), when the
-    command read a file; an error of input names its own file, one of output its folder."""
-    @functools.wraps(fn)
-    def wrapper(*args, **kwargs):
-        try:
-            return fn(*args, **kwargs)
-        except CheckMismatch as e:
-            raise _CheckFailed(str(e)) from None
-        except TarsimError as e:
-            # Not output (a RenderError), nor input its own file:line names.
-            solving = (isinstance(e, (AssemblyError, GeometryError, IllConditioned))
-                       or type(e) is TarsimError or isinstance(e, InputError) and not e.file)
-            line = _placed(e, kwargs.get("source")) if solving else str(e)
-            raise click.ClickException(line + _told(e)) from None
-    return wrapper
-
-
-def _told(error: TarsimError) -> str:
-    """The story behind ``error``, on a line of its own, when ``--verbose`` asks for it."""
-    ctx = click.get_current_context(silent=True)
-    verbose = ctx is not None and ctx.find_root().params.get("verbose")
-    return f"\n  {error.detail}" if verbose and error.detail else ""
-
-
-def _placed(error: TarsimError, source: str | None) -> str:
-    """``error``'s line, led by ``source`` and, for an error of assembly, the line of it
-    that the error concerns."""
-    from .catalog import resolve
-    from .linkages.mechanism_file import line_of
-
-    if not source or source in str(error):
-        return str(error)
-    try:
-        path = resolve(source)
-    except TarsimError:
-        return str(error)
-    if str(path) in str(error):             # it names the file itself
-        return str(error)
-    line = line_of(error, path) if isinstance(error, AssemblyError) else None
-    return f"{source}:{line}: {error}" if line else f"{source}: {error}"
-
-
-def _linkage(source: str, angle: float | None = None):
-    """The linkage exercise ``source`` names, at ``angle`` if given (file units); a file of
-    another chapter is refused in one line, for the command that asks is the linkages'."""
-    from .catalog import load
-    from .chapters import chapter_of
-
-    ex = load(source)
-    chapter = chapter_of(ex)
-    if chapter.key != "linkages":
-        raise InputError(f"{source} is {chapter.kind}: `tarsim solve {source}` solves it; this "
-                         "command is for linkages")
-    return chapter.set_up(ex, paper=ex.paper, angle=_finite(angle))
-
-
-def _loaded(source: str, angle: float | None):
-    """The exercise ``source`` names and its chapter, refusing ``--angle`` where the chapter
-    has no input angle."""
-    from .catalog import load
-    from .chapters import chapter_of
-
-    ex = load(source)
-    chapter = chapter_of(ex)
-    if angle is not None and chapter.no_angle:
-        raise click.ClickException(chapter.no_angle)
-    return ex, chapter
-
-
-def _finite(angle: float | None) -> float | None:
-    if angle is not None and not math.isfinite(angle):
-        raise click.ClickException(f"--angle must be a finite number, as a file's angle is; "
-                                   f"got {angle:g}")
-    return angle
-
-
-_source = click.argument("source", metavar="FILE")
-_paper = click.option("--paper", type=click.Choice(["A4", "A3", "letter"], case_sensitive=False),
-                      default="A4", show_default=True,
-                      help="Sheet to set each figure on; its scales are chosen to fill it. A "
-                           "figure drawn at a scale the exercise states keeps it, on a bigger "
-                           "page if it must.")
-
-
-def _speaks(fn):
-    """The --lang and --digits options of a command that writes figures or steps."""
-    fn = click.option("--digits", type=click.Choice(["persian", "latin"]), default="persian",
-                      show_default=True, help="The digits of numbers in Persian text.")(fn)
-    return click.option("--lang", type=click.Choice(["en", "fa"]), default=None,
-                        help="The language of the figures' words (captions, legends, scale "
-                             "statements, titles) and of steps.md: en, or fa (Persian, in the "
-                             "course notes' terms). Point and link names stay as the notes "
-                             "write them (O2, A, I13). Default: the file's lang, else en.")(fn)
-
-
-def _language(lang: str | None, digits: str, loaded) -> str:
-    """The catalogue a command speaks from: --lang, else the file's ``lang``, else English;
-    Persian with --digits latin is its own catalogue."""
-    lang = lang or getattr(loaded, "lang", "en")
-    return "fa_latn" if lang == "fa" and digits == "latin" else lang
-
-
-_angle = click.option("--angle", type=float, default=None, metavar="ANGLE",
-                      help="Input angle to use instead of the file's, in the file's angle unit.")
 
 
 @click.group(context_settings={"help_option_names": ["-h", "--help"]})
@@ -158,13 +42,13 @@ def cli(verbose):
 
 
 @cli.command()
-@_source
+@common.source
 @click.option("-o", "--output", "output", required=True, type=click.Path(dir_okay=False),
               help="Figure to write: .svg, .pdf or .png (PDF and PNG need libcairo2).")
-@_angle
-@_paper
-@_speaks
-@_fails_cleanly
+@common.angle
+@common.paper
+@common.speaks
+@common.fails_cleanly
 def draw(source, output, angle, paper, lang, digits):
     """Draw the kinematic diagram of FILE at its input position.
 
@@ -187,17 +71,17 @@ def draw(source, output, angle, paper, lang, digits):
     from tarsim.graphics.export import write_figure
     from tarsim.graphics.paper import on_sheet, paper as sheet
 
-    loaded, chapter = _loaded(source, angle)
-    with speaking(_language(lang, digits, loaded)):
-        ex = chapter.set_up(loaded.named_in(spoken()), paper=paper, angle=_finite(angle))
+    loaded, chapter = common.loaded(source, angle)
+    with speaking(common.language(lang, digits, loaded)):
+        ex = chapter.set_up(loaded.named_in(spoken()), paper=paper, angle=common.finite(angle))
         fig = on_sheet(chapter.drawing(ex), sheet(paper))
         click.echo(f"wrote {write_figure(fig, output)}")
 
 
 @cli.command()
-@_source
-@_angle
-@_fails_cleanly
+@common.source
+@common.angle
+@common.fails_cleanly
 def check(source, angle):
     """Compare every joint's construction with the analytic solution.
 
@@ -214,22 +98,22 @@ def check(source, angle):
     """
     from .linkages.report import check_positions, format_check
 
-    click.echo(format_check(check_positions(_linkage(source, angle).mechanism)))
+    click.echo(format_check(check_positions(common.linkage(source, angle).mechanism)))
 
 
 @cli.command()
-@_source
+@common.source
 @click.option("-o", "--output", "out_dir", type=click.Path(), default=None,
               metavar="DIR", help="Folder for the solution (default: <id>-solution/ here).")
-@_angle
+@common.angle
 @click.option("--pdf/--no-pdf", default=True, show_default=True,
               help="Also write a PDF of each figure (needs libcairo2).")
-@_paper
+@common.paper
 @click.option("--allow-undercut", is_flag=True,
               help="A cam whose roller undercuts it, or whose flat face meets a concave "
                    "profile: draw it with the trouble ringed instead of refusing it.")
-@_speaks
-@_fails_cleanly
+@common.speaks
+@common.fails_cleanly
 def solve(source, out_dir, angle, pdf, paper, allow_undercut, lang, digits):
     """Solve an exercise by graphical construction and check every number.
 
@@ -294,9 +178,9 @@ def solve(source, out_dir, angle, pdf, paper, allow_undercut, lang, digits):
     """
     from tarsim.graphics.export import cairo_missing, output_folder
 
-    loaded, chapter = _loaded(source, angle)
-    with speaking(_language(lang, digits, loaded)):
-        ex = chapter.set_up(loaded.named_in(spoken()), paper=paper, angle=_finite(angle))
+    loaded, chapter = common.loaded(source, angle)
+    with speaking(common.language(lang, digits, loaded)):
+        ex = chapter.set_up(loaded.named_in(spoken()), paper=paper, angle=common.finite(angle))
         out = Path(out_dir or f"{ex.id}-solution")
         with output_folder(out):      # a folder that cannot be written fails before the solve
             solved = chapter.solve(ex, allow_undercut=allow_undercut)
@@ -312,7 +196,7 @@ def solve(source, out_dir, angle, pdf, paper, allow_undercut, lang, digits):
 
 
 @cli.command()
-@_source
+@common.source
 @click.option("-o", "--output", "out_dir", type=click.Path(), default=None,
               metavar="DIR", help="Folder for the sweep (default: <id>-sweep/ here).")
 @click.option("--of", "of", default=None, metavar="NAME",
@@ -323,8 +207,8 @@ def solve(source, out_dir, angle, pdf, paper, allow_undercut, lang, digits):
               help="Equal steps of the input angle over the revolution.")
 @click.option("--pdf/--no-pdf", default=True, show_default=True,
               help="Also write a PDF of each plot (needs libcairo2).")
-@_speaks
-@_fails_cleanly
+@common.speaks
+@common.fails_cleanly
 def sweep(source, out_dir, of, steps, pdf, lang, digits):
     """Check the graphical solution against the output's curves over a revolution.
 
@@ -363,14 +247,14 @@ def sweep(source, out_dir, of, steps, pdf, lang, digits):
     from .linkages.sweep_run import run_sweep
     from tarsim.graphics.export import cairo_missing, output_folder
 
-    ex = _linkage(source)
+    ex = common.linkage(source)
 
-    with speaking(_language(lang, digits, ex)):
+    with speaking(common.language(lang, digits, ex)):
         ex = ex.named_in(spoken())
         reason = cairo_missing() if pdf else None
         out = Path(out_dir or f"{ex.id}-sweep")
         with output_folder(out):      # a folder that cannot be written fails before the sweep
-            swept = run_sweep(ex, steps, of=of, bar=_bar if sys.stderr.isatty() else None)
+            swept = run_sweep(ex, steps, of=of, bar=common.bar if sys.stderr.isatty() else None)
             written = swept.write(out, pdf=pdf and reason is None)
         for line in swept.lines():
             click.echo(line)
@@ -378,11 +262,6 @@ def sweep(source, out_dir, of, steps, pdf, lang, digits):
         if reason:
             click.echo(f"PDF skipped: {reason}", err=True)
         swept.check()
-
-
-def _bar(length: int, label: str):
-    """A progress bar on stderr."""
-    return click.progressbar(length=length, label=label, file=sys.stderr)
 
 
 @cli.command()
@@ -435,7 +314,7 @@ def bench(quick, out_dir):
 
     out = Path(out_dir) if out_dir else root / "benchmarks"
     try:
-        path = write_report(out, quick=quick, bar=_bar if sys.stderr.isatty() else None)
+        path = write_report(out, quick=quick, bar=common.bar if sys.stderr.isatty() else None)
     except OSError as e:
         raise click.ClickException(f"cannot write the report into {out}: "
                                    f"{e.strerror or e}") from None
@@ -470,8 +349,8 @@ def bench(quick, out_dir):
 @click.option("--scheduler", metavar="ADDRESS", default=None,
               help="Grade a class on a Dask distributed cluster (tcp://host:8786), for a "
                    "course too big for one machine; needs pip install 'tarsim[dask]'.")
-@_speaks
-@_fails_cleanly
+@common.speaks
+@common.fails_cleanly
 def grade(source, drawing, out_dir, position, roster, pattern, pdf, workers, scheduler, lang,
           digits):
     """Grade a student's drawing against tarsim's own solution, item by item.
@@ -535,7 +414,7 @@ def grade(source, drawing, out_dir, position, roster, pattern, pdf, workers, sch
         click.echo("note: feedback.pdf is not written, for libcairo2 is not installed "
                    "(Debian/Ubuntu: apt-get install libcairo2); feedback.html is", err=True)
         pdf = False
-    with speaking(_language(lang, digits, None)):     # the overlay's and the page's words
+    with speaking(common.language(lang, digits, None)):     # the overlay's and the page's words
         path = Path(drawing)
         if not path.is_dir():
             if roster or pattern:
@@ -549,18 +428,18 @@ def grade(source, drawing, out_dir, position, roster, pattern, pdf, workers, sch
             return
         graded = grade_class(source, path, out=Path(out_dir), position=position - 1,
                              roster=roster, pattern=pattern, pdf=pdf, workers=workers,
-                             scheduler=scheduler, bar=_bar)
+                             scheduler=scheduler, bar=common.bar)
         write_folder(graded.files, out_dir)                # all of it, or nothing
         click.echo(graded.summary(out_dir))
 
 
 @cli.command()
-@_source
+@common.source
 @click.option("-o", "--output", "output", type=click.Path(dir_okay=False), default=None,
               metavar="PAGE", help="The page to write (default: <id>-view.html here).")
 @click.option("--step", "step", type=click.FloatRange(0.05, 10.0), default=0.5,
               show_default=True, help="Degrees between frames of the revolution.")
-@_fails_cleanly
+@common.fails_cleanly
 def view(source, output, step):
     """Write an interactive page: step through the construction, turn the crank.
 
@@ -590,7 +469,7 @@ def view(source, output, step):
     from tarsim.graphics.export import write_text
     from tarsim.graphics.view_page import view_html
 
-    ex = _linkage(source)
+    ex = common.linkage(source)
     target = Path(output or f"{ex.id}-view.html")
     if sys.stderr.isatty():
         with click.progressbar(length=round(360 / step), label="frames",
