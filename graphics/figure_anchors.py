@@ -21,8 +21,10 @@ then the nearest. A primitive the second drawing draws otherwise (a construction
 takes another course there) keeps to the named points it is drawn on, if it is drawn on
 them alone (a dot at a centre); a label whose place is chosen afresh at each position
 keeps to what it names, by its owner (:attr:`~.figure.Text.owner`), as it stands beside
-it in the template. Whatever is carried by none (a caption's words, the input's angle, a
-construction on points the page is not sent) is the template's own position's alone.
+it in the template, unless what it names are points that coincide at the template's
+position alone ("I₂₃ ≡ I₂₄" at a dead centre). Whatever is carried by none (a caption's
+words, the input's angle, a construction on points the page is not sent) is the
+template's own position's alone.
 """
 
 from __future__ import annotations
@@ -107,12 +109,30 @@ def anchors(first: Figure, later: list[Figure], named: list[Named]) -> list[Anch
                 triples = [f[1] for f in mine]
                 out[k] = (mine[0][0], triples[:1] if len(set(triples)) == 1 else triples)
     here = _paper(first, named[0])
+    there = [_paper(f, n) for f, n in zip(later, named[1:])]
     for k, it in enumerate(first.items):
         if out[k] is None:
             out[k] = _on_points(_points(it), here)
         if out[k] is None and isinstance(it, Text) and it.owner:
             out[k] = _owner(it.owner, here)
+        if (isinstance(it, Text) and it.owner and "≡" in it.text + it.sub + it.tail
+                and _parting(it.owner[-1], here, there)):
+            out[k] = None
     return out
+
+
+def _parting(p: tuple[float, float], here: dict[str, np.ndarray],
+             there: list[dict[str, np.ndarray]]) -> bool:
+    """True if the named points at ``p`` (two or more) part in a later drawing: a label
+    that joins them with the figures' sign of coincidence ("I₂₃ ≡ I₂₄", "o ≡ b") says what
+    holds at the template's position alone, and is not carried to another. Points that
+    stay together (a pin and the centre it is) keep their joined label."""
+    for view, points in here.items():
+        together = np.flatnonzero(np.abs(points - complex(*p)) <= EXACT)
+        if len(together) > 1:
+            return any(np.nanmax(np.abs(t[view][together] - t[view][together[0]])) > EXACT
+                       for t in there if view in t)
+    return False
 
 
 def _points(item: Path | Circle | Text) -> tuple[tuple[float, float], ...]:
