@@ -187,12 +187,7 @@ def solve(source, out_dir, angle, pdf, paper, allow_undercut, lang, digits):
             reason = cairo_missing() if pdf else None
             written = solved.write(out, pdf=pdf and reason is None)
     with speaking("en"):              # the terminal's lines are English
-        for line in solved.lines():
-            click.echo(line)
-    click.echo(f"wrote {len(written)} files to {out}/")
-    if reason:
-        click.echo(f"PDF skipped: {reason}", err=True)
-    solved.check()
+        common.report(solved, written, out, reason)
 
 
 @cli.command()
@@ -256,12 +251,7 @@ def sweep(source, out_dir, of, steps, pdf, lang, digits):
         with output_folder(out):      # a folder that cannot be written fails before the sweep
             swept = run_sweep(ex, steps, of=of, bar=common.bar if sys.stderr.isatty() else None)
             written = swept.write(out, pdf=pdf and reason is None)
-        for line in swept.lines():
-            click.echo(line)
-        click.echo(f"wrote {len(written)} files to {out}/")
-        if reason:
-            click.echo(f"PDF skipped: {reason}", err=True)
-        swept.check()
+        common.report(swept, written, out, reason)
 
 
 @cli.command()

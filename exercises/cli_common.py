@@ -14,7 +14,7 @@ from tarsim.constructions.errors import (AssemblyError, CheckMismatch, GeometryE
                                          IllConditioned, InputError, TarsimError)
 
 __all__ = ["EXIT_CHECK_FAILED", "fails_cleanly", "linkage", "loaded", "finite", "source",
-           "paper", "speaks", "language", "angle", "bar"]
+           "paper", "speaks", "language", "angle", "bar", "report"]
 
 
 EXIT_CHECK_FAILED = 3
@@ -137,3 +137,14 @@ angle = click.option("--angle", type=float, default=None, metavar="ANGLE",
 def bar(length: int, label: str):
     """A progress bar on stderr."""
     return click.progressbar(length=length, label=label, file=sys.stderr)
+
+
+def report(done, written: list, out, reason: str | None) -> None:
+    """What a command that writes a folder says: the result's lines, the files written and
+    a PDF skipped (``reason``); then the exit status 3 if a number failed its check."""
+    for line in done.lines():
+        click.echo(line)
+    click.echo(f"wrote {len(written)} files to {out}/")
+    if reason:
+        click.echo(f"PDF skipped: {reason}", err=True)
+    done.check()
