@@ -1,16 +1,19 @@
-"""Write a :class:`~graphics.figure.Figure` as SVG with svgwrite, byte-identical per input.
+"""Write a :class:`~graphics.figure.Figure` as SVG, byte-identical per input.
 
 The page is sized in millimetres with a matching viewBox, so one user unit is one
 millimetre on the printed page and a scale bar measures true with a ruler. Only
 the subset cairosvg renders faithfully is used: plain paths, circles and text,
 with arrowheads and hatching drawn as geometry rather than markers or patterns.
+
+The elements are built with the standard library's ElementTree, each element's
+attributes set in name order, as svgwrite writes them: the same bytes, without the
+import of svgwrite's SVG grammar (and the urllib and email it pulls in) on every solve.
 """
 
 from __future__ import annotations
 
 import re
-
-import svgwrite
+import xml.etree.ElementTree as ET
 
 from .figure import (FONT, PAGE_GAP, STYLES, SUB_DROP, SUB_SIZE, Circle, Figure, Path, Style,
                      Text, stack_layout)
@@ -66,13 +69,15 @@ def to_svg(fig: Figure) -> str:
     >>> '<tspan dy="0.98" font-size="2.52">A</tspan>' in to_svg(f)
     True
     """
-    dwg = svgwrite.Drawing(size=(f"{_n(fig.width)}mm", f"{_n(fig.height)}mm"),
-                           viewBox=f"0 0 {_n(fig.width)} {_n(fig.height)}", profile="full",
-                           debug=False)
+    width, height = _n(fig.width), _n(fig.height)
+    svg = _element_of("svg", {"baseProfile": "full", "height": f"{height}mm", "version": "1.1",
+                              "viewBox": f"0 0 {width} {height}", "width": f"{width}mm",
+                              **_NAMESPACES})
     if fig.title:
-        dwg.set_desc(title=fig.title)
-    dwg.add(dwg.rect((0, 0), (_n(fig.width), _n(fig.height)), fill="#fff"))
-    groups: dict[str, svgwrite.container.Group] = {}
+        svg.append(_element_of("title", {}, fig.title))
+    svg.append(ET.Element("defs"))
+    svg.append(_element_of("rect", {"fill": "#fff", "height": height, "width": width,
+                                    "x": "0", "y": "0"}))
     current = None
     for item in fig.items:
         key = "text" if isinstance(item, Text) else item.style
@@ -82,12 +87,28 @@ def to_svg(fig: Figure) -> str:
                 attrs.update(TEXT_ATTRIBUTES)
             else:
                 attrs.update(style_attributes(STYLES[key]))
-            grp = dwg.g(**attrs)
-            dwg.add(grp)
-            current = (key, grp)
-            groups.setdefault(key, grp)
-        current[1].add(_element(dwg, item))
-    return dwg.tostring()
+            current = (key, _element_of("g", attrs))
+            svg.append(current[1])
+        current[1].append(_element(item))
+    return ET.tostring(svg, encoding="unicode")
+
+
+_NAMESPACES = {"xmlns": "http://www.w3.org/2000/svg",
+               "xmlns:ev": "http://www.w3.org/2001/xml-events",
+               "xmlns:xlink": "http://www.w3.org/1999/xlink"}
+"""The root's namespaces, as SVG 1.1 documents declare them."""
+
+
+def _element_of(tag: str, attrs: dict[str, str], text: str | None = None) -> ET.Element:
+    """An element with ``attrs`` set in name order (an attribute with no value left out)
+    and ``text`` inside it."""
+    element = ET.Element(tag)
+    for name in sorted(attrs):
+        if attrs[name]:
+            element.set(name, attrs[name])
+    if text is not None:
+        element.text = text
+    return element
 
 
 def stacked_svg(pages: list[Figure], svgs: list[str], gap: float = PAGE_GAP) -> str:
@@ -108,24 +129,22 @@ def _drawing(svg: str) -> str:
     return svg[svg.index("<defs />") + len("<defs />"):svg.rindex("</svg>")]
 
 
-def _element(dwg: svgwrite.Drawing, item: Path | Circle | Text):
+def _element(item: Path | Circle | Text) -> ET.Element:
     if isinstance(item, Path):
         d = "M" + " L".join(f"{_n(x)},{_n(y)}" for x, y in item.points)
         if item.closed:
             d += " Z"
-        return dwg.path(d=d)
+        return _element_of("path", {"d": d})
     if isinstance(item, Circle):
-        return dwg.circle((_n(item.centre[0]), _n(item.centre[1])), _n(item.radius))
+        return _element_of("circle", {"cx": _n(item.centre[0]), "cy": _n(item.centre[1]),
+                                      "r": _n(item.radius)})
     if (parts := runs(item)) is not None:
-        group = dwg.g()
-        for run in parts:
-            group.add(_element(dwg, run))
+        group = ET.Element("g")
+        group.extend(_element(run) for run in parts)
         return group
-    attrs: dict = text_attributes(item)
-    attrs.update({"x": [attrs["x"]], "y": [attrs["y"]]})
-    text = dwg.text(item.text, **attrs)
+    text = _element_of("text", text_attributes(item), item.text)
     for words, size, dy in tspans(item):
-        text.add(dwg.tspan(words, dy=[_n(dy)], font_size=_n(size)))
+        text.append(_element_of("tspan", {"dy": _n(dy), "font-size": _n(size)}, words))
     return text
 
 
