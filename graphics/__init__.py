@@ -1,1 +1,1 @@
-"""Figures: panels, scales, textbook symbols, SVG via svgwrite, PDF/PNG via cairosvg."""
+"""Figures: panels, scales, textbook symbols, SVG, PDF/PNG via cairosvg."""
