@@ -43,6 +43,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 import tarsim  # noqa: E402
 from tarsim.constructions.reference import solver  # noqa: E402
 from tarsim.constructions.reference.turn import solve_turn  # noqa: E402
+from tarsim.exercises.linkages.sweep import sweep_exercise  # noqa: E402
 
 
 def machine() -> str:
@@ -137,7 +138,18 @@ def main(argv: list[str] | None = None) -> None:
         t = solve_turn(mech, angles)
         return {"p": t.points["B"], "v": t.velocities["B"], "a": t.accelerations["B"]}
 
-    rows = [("tarsim solve_turn (vectorised)", *median_time(vectorised, args.repeat))]
+    exercise = tarsim.load("four-bar")
+
+    def swept():
+        """What ``tarsim sweep`` computes: the turn, its dead points and extremes refined,
+        and the stated position constructed and checked against the curve."""
+        solved = sweep_exercise(exercise, n, of="V_B").solved
+        return {"p": np.array([(s.values["x"], s.values["y"]) for s in solved]),
+                "v": np.array([(s.values["vx"], s.values["vy"]) for s in solved]),
+                "a": np.array([(s.values["ax"], s.values["ay"]) for s in solved])}
+
+    rows = [("tarsim solve_turn (vectorised)", *median_time(vectorised, args.repeat)),
+            ("tarsim sweep_exercise (tarsim sweep's all)", *median_time(swept, args.repeat))]
     rows.append(("tarsim solver.solve (scalar loop)",
                  *median_time(lambda: scalar_loop(mech, angles), min(3, args.repeat))))
     try:
@@ -151,7 +163,7 @@ def main(argv: list[str] | None = None) -> None:
                      *median_time(lambda: pylinkage_run(angles, **sizes), args.repeat)))
     rows.append(("plain numpy closed form (this four-bar only)",
                  *median_time(lambda: closed_form(angles, **sizes), args.repeat)))
-    scalar = rows[1][2]
+    scalar = rows[2][2]
     scale = {"p": 0.25, "v": mech.input_speed, "a": mech.input_acceleration}
     base = rows[0][1]
     print(f"{'':46}{'total ms':>10}{'µs/pos':>9}{'× vectorised':>14}   B vs scalar (p, v, a)")

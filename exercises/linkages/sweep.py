@@ -288,17 +288,23 @@ def sweep_exercise(ex: Exercise, steps: int = 360, *, of: str | None = None,
     checks, marks, notes = _graphical(replace(sw, events=events))
     notes += _change_point(mech, angles, turn)
     # Rounding noise beside the curve's own size is shown as 0 (errors are taken first).
-    peak = {k: max(abs(s.values[k]) for s in sw.solved) for k in sw.solved[0].values}
+    solved = sw.solved
+    peak = {k: max(map(abs, [s.values[k] for s in solved])) for k in solved[0].values}
     for k in peak:      # y of a ram on a guide along x is noise beside its x
         peak[k] = max(v for j, v in peak.items() if KINDS[j] == KINDS[k])
 
+    floor = {k: NOISE * v for k, v in peak.items()}
+
     def quiet(key: str, value: float) -> float:
-        return 0.0 if abs(value) <= NOISE * peak[key] else value
+        return 0.0 if abs(value) <= floor[key] else value
 
     def quiet_all(values: dict[str, float]) -> dict[str, float]:
-        return {k: quiet(k, v) for k, v in values.items()}
+        return {k: 0.0 if abs(v) <= floor[k] else v for k, v in values.items()}
 
-    return replace(sw, samples=tuple(replace(s, values=quiet_all(s.values)) for s in samples),
+    # Each of the turn's samples made afresh rather than by dataclasses.replace: thousands of
+    # them, where replace's own checks cost more than the quieting.
+    return replace(sw, samples=tuple(Sample(s.angle, quiet_all(s.values), s.reason)
+                                     for s in samples),
                    events=tuple(replace(e, values=quiet_all(e.values)) for e in events),
                    checks=tuple(replace(c, graphical=quiet(c.key, c.graphical),
                                         curve=quiet(c.key, c.curve)) for c in checks),
