@@ -4,10 +4,12 @@ Run:  python benchmarks/sweep_speed.py [--positions 3600] [--repeat 15]
 
 The bundled four-bar (exercises/catalog/four-bar.toml: O2A 100, AB 250, O4B 200,
 O2O4 300 mm, ω2 = 10 rad/s) is solved at ``--positions`` equal steps of the crank,
-positions, velocities and accelerations of every point, four ways, in one run:
+positions, velocities and accelerations of every point, five ways, in one run:
 
 - ``solve_turn``: tarsim's analytic solver vectorised over the positions
   (constructions/reference/turn.py);
+- ``sweep_exercise``: all of what ``tarsim sweep`` computes around ``solve_turn`` (its
+  samples, extremes refined, the stated position constructed and checked);
 - the scalar loop: ``solver.solve`` once per position, as the sweep did before;
 - pylinkage (``Mechanism.step_fast_with_kinematics``, its fastest path with
   velocities and accelerations): not a dependency of tarsim; skipped with one line
