@@ -5,20 +5,20 @@ millimetre on the printed page and a scale bar measures true with a ruler. Only
 the subset cairosvg renders faithfully is used: plain paths, circles and text,
 with arrowheads and hatching drawn as geometry rather than markers or patterns.
 
-The elements are built with the standard library's ElementTree, each element's
-attributes set in name order, as svgwrite writes them: the same bytes, without the
-import of svgwrite's SVG grammar (and the urllib and email it pulls in) on every solve.
+The elements are built by :mod:`.svg_tree`, on the standard library's ElementTree, as
+svgwrite writes them: the same bytes, without the import of svgwrite's SVG grammar (and
+the urllib and email it pulls in) on every solve.
 """
 
 from __future__ import annotations
 
 import re
-import xml.etree.ElementTree as ET
 
 from .figure import (FONT, PAGE_GAP, STYLES, SUB_DROP, SUB_SIZE, Circle, Figure, Path, Style,
                      Text, stack_layout)
 from .rtl import RTL_FONT, flip_anchor, is_rtl
 from .rtl_runs import lay_runs
+from .svg_tree import Drawing, Element
 
 __all__ = ["to_svg", "stacked_svg", "style_attributes", "text_attributes", "TEXT_ATTRIBUTES",
            "tspans", "runs", "coordinate"]
@@ -70,14 +70,10 @@ def to_svg(fig: Figure) -> str:
     True
     """
     width, height = _n(fig.width), _n(fig.height)
-    svg = _element_of("svg", {"baseProfile": "full", "height": f"{height}mm", "version": "1.1",
-                              "viewBox": f"0 0 {width} {height}", "width": f"{width}mm",
-                              **_NAMESPACES})
+    dwg = Drawing(size=(f"{width}mm", f"{height}mm"), viewBox=f"0 0 {width} {height}")
     if fig.title:
-        svg.append(_element_of("title", {}, fig.title))
-    svg.append(ET.Element("defs"))
-    svg.append(_element_of("rect", {"fill": "#fff", "height": height, "width": width,
-                                    "x": "0", "y": "0"}))
+        dwg.elements.insert(0, Element("title", fig.title))     # before the defs
+    dwg.add(dwg.rect((0, 0), (width, height), fill="#fff"))
     current = None
     for item in fig.items:
         key = "text" if isinstance(item, Text) else item.style
@@ -87,28 +83,9 @@ def to_svg(fig: Figure) -> str:
                 attrs.update(TEXT_ATTRIBUTES)
             else:
                 attrs.update(style_attributes(STYLES[key]))
-            current = (key, _element_of("g", attrs))
-            svg.append(current[1])
-        current[1].append(_element(item))
-    return ET.tostring(svg, encoding="unicode")
-
-
-_NAMESPACES = {"xmlns": "http://www.w3.org/2000/svg",
-               "xmlns:ev": "http://www.w3.org/2001/xml-events",
-               "xmlns:xlink": "http://www.w3.org/1999/xlink"}
-"""The root's namespaces, as SVG 1.1 documents declare them."""
-
-
-def _element_of(tag: str, attrs: dict[str, str], text: str | None = None) -> ET.Element:
-    """An element with ``attrs`` set in name order (an attribute with no value left out)
-    and ``text`` inside it."""
-    element = ET.Element(tag)
-    for name in sorted(attrs):
-        if attrs[name]:
-            element.set(name, attrs[name])
-    if text is not None:
-        element.text = text
-    return element
+            current = (key, dwg.add(Element("g", **attrs)))
+        current[1].add(_element(item))
+    return dwg.tostring()
 
 
 def stacked_svg(pages: list[Figure], svgs: list[str], gap: float = PAGE_GAP) -> str:
@@ -129,22 +106,19 @@ def _drawing(svg: str) -> str:
     return svg[svg.index("<defs />") + len("<defs />"):svg.rindex("</svg>")]
 
 
-def _element(item: Path | Circle | Text) -> ET.Element:
+def _element(item: Path | Circle | Text) -> Element:
     if isinstance(item, Path):
         d = "M" + " L".join(f"{_n(x)},{_n(y)}" for x, y in item.points)
-        if item.closed:
-            d += " Z"
-        return _element_of("path", {"d": d})
+        return Element("path", d=d + " Z" if item.closed else d)
     if isinstance(item, Circle):
-        return _element_of("circle", {"cx": _n(item.centre[0]), "cy": _n(item.centre[1]),
-                                      "r": _n(item.radius)})
+        return Drawing.circle((_n(item.centre[0]), _n(item.centre[1])), _n(item.radius))
     if (parts := runs(item)) is not None:
-        group = ET.Element("g")
-        group.extend(_element(run) for run in parts)
+        group = Element("g")
+        group.elements.extend(_element(run) for run in parts)
         return group
-    text = _element_of("text", text_attributes(item), item.text)
+    text = Element("text", item.text, **text_attributes(item))
     for words, size, dy in tspans(item):
-        text.append(_element_of("tspan", {"dy": _n(dy), "font-size": _n(size)}, words))
+        text.add(Element("tspan", words, **{"dy": _n(dy), "font-size": _n(size)}))
     return text
 
 

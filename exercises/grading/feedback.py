@@ -155,12 +155,12 @@ def feedback_sheet(g: Grade, who: str = "", overlay: str | None = None,
     """feedback.html's page (its arguments are :func:`feedback_html`'s) as an SVG sheet:
     the heading, the overlay fitted to the sheet's width, and a row an item, its verdict
     and advice wrapped to their columns."""
-    import svgwrite
+    from tarsim.graphics.svg_tree import Drawing
 
     title, what, score = _heading(g, who, position, named)
     width = _PAGE - 2 * _MARGIN
     rtl = right_to_left()
-    dwg = svgwrite.Drawing(profile="full", debug=False)
+    dwg = Drawing(profile="full", debug=False)
     body = dwg.add(dwg.g(font_family="DejaVu Sans", font_size=_BODY, fill="#222"))
 
     def say(text: str, x: float, y: float, **style):

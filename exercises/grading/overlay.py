@@ -72,13 +72,13 @@ def sans_width(text: str, size: float) -> float:
 
 def overlay_svg(g: Grade) -> str:
     """grade.svg of the drawing graded ``g``: see the module's docstring."""
-    import svgwrite
+    from tarsim.graphics.svg_tree import Drawing
 
     drawing, polygons = g.overlay
     unit = _unit(g)
     fs = _TEXT * unit
     boxes: list[tuple[float, float, float, float]] = []   # every text's box, for the bounds
-    dwg = svgwrite.Drawing(profile="full", debug=False)
+    dwg = Drawing(profile="full", debug=False)
     student = dwg.add(dwg.g(stroke=GREY, stroke_width=_num(_STROKE * unit), fill="none"))
     if drawing.segments:                     # one path: a drawing may hold thousands
         student.add(dwg.path(d=" ".join(f"M{a[0]:.3f} {a[1]:.3f}L{b[0]:.3f} {b[1]:.3f}"

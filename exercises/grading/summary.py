@@ -81,12 +81,12 @@ def error_rates(grades: list[Grade]) -> list[Rate]:
 
 def summary_svg(grades: list[Grade], exercise: str, unread: int = 0) -> str:
     """summary.svg of a class's ``grades`` (``unread``: files that got no grade)."""
-    import svgwrite
+    from tarsim.graphics.svg_tree import Drawing
 
     rtl = right_to_left()
     rates = error_rates(grades)
     height = 30.0 + _PLOT_H + 30.0 + 14.0 + max(1, len(rates)) * (_BAR_H + 2.0) + 16.0
-    dwg = svgwrite.Drawing(size=(f"{_W}mm", f"{height:.1f}mm"),
+    dwg = Drawing(size=(f"{_W}mm", f"{height:.1f}mm"),
                            viewBox=f"0 0 {_W} {height:.1f}", profile="full", debug=False,
                            direction="ltr")
     dwg.add(dwg.rect((0, 0), (_W, height), fill="#fff"))
