@@ -72,11 +72,7 @@ def _placed(error: TarsimError, source: str | None) -> str:
 def linkage(source: str, angle: float | None = None):
     """The linkage exercise ``source`` names, at ``angle`` if given (file units); a file of
     another chapter is refused in one line, for the command that asks is the linkages'."""
-    from .catalog import load
-    from .chapters import chapter_of
-
-    ex = load(source)
-    chapter = chapter_of(ex)
+    ex, chapter = loaded(source, None)
     if chapter.key != "linkages":
         raise InputError(f"{source} is {chapter.kind}: `tarsim solve {source}` solves it; this "
                          "command is for linkages")
