@@ -34,6 +34,7 @@ __all__ = [
     "Kind",
     "Step",
     "Slice",
+    "Derived",
     "Construction",
     "VERBS",
     "slice",
@@ -144,12 +145,35 @@ VERBS: Mapping[str, Callable[..., tuple[Any, float]]] = {
 
 
 @dataclass(frozen=True, slots=True)
+class Derived:
+    """How a step's parameters follow from the outputs of the steps before it.
+
+    Most parameters are the mechanism's own (a link's length, a branch) and hold at every
+    position; a few are read off the drawing (a relative normal ``ω²·r``, where ω is read
+    off the velocity polygon). A step that records its ``Derived`` can be redone at another
+    position of the input (:mod:`.replay`): ``rule(output, *args)`` returns the parameters
+    from ``output``, the function giving a step's output by its ref. ``rule`` is a module's
+    function, so that a record stays picklable.
+    """
+
+    rule: Callable[..., dict[str, Any]]
+    args: tuple = ()
+
+    def __call__(self, output: Callable[[Ref], Any]) -> dict[str, Any]:
+        """The parameters, read from the outputs ``output`` gives by ref."""
+        return self.rule(output, *self.args)
+
+
+@dataclass(frozen=True, slots=True)
 class Step:
     """One drafting act: ``output = verb(*inputs, **params)``.
 
     ``conditioning`` is the step's own conditioning times the worst of its
     inputs', so a result inherits, and compounds, the ill-conditioning of the acts
-    it rests on. ``phrase`` is what the step says (None: it is not narrated, as a
+    it rests on (``spread`` is the part the verb cannot see, see
+    :meth:`Construction.draw`). ``derived`` says how the parameters follow from earlier
+    outputs where they are read off the drawing (None: they are the mechanism's own).
+    ``phrase`` is what the step says (None: it is not narrated, as a
     point the act before it already named). ``about`` is what the step locates, for
     a figure that draws it by more than its geometry (an instant centre's
     :class:`~.centres.Centre`: its links, its rule, its triangles).
@@ -167,6 +191,8 @@ class Step:
     conditioning: float = 1.0
     params: tuple[tuple[str, Any], ...] = ()
     about: Any = None
+    spread: float = 1.0
+    derived: Derived | None = None
 
     @property
     def draws(self) -> bool:
@@ -220,12 +246,14 @@ class Construction:
     def draw(self, ref: Ref, verb: str, *inputs: Ref, label: str = "",
              phrase: Phrase | None = None, kind: Kind | None = None,
              role: Role = Role.CONSTRUCTION, panel: Panel = Panel.SPACE, about: Any = None,
-             spread: float = 1.0, **params: Any) -> Ref:
+             spread: float = 1.0, derived: Derived | None = None, **params: Any) -> Ref:
         """Do the drafting act ``verb`` on the outputs of ``inputs`` and record it.
 
         ``spread`` (≤ 1) is what the verb cannot see of its conditioning: how far apart its
         inputs stand beside the whole drawing, whose rounding they carry (a line through
         two points close together, near the origin, looks well drawn to the verb alone).
+        ``derived`` gives the parameters read off the drawing again at another position
+        (:class:`Derived`).
 
         Raises
         ------
@@ -243,7 +271,7 @@ class Construction:
         # worse than either, so the act's own conditioning multiplies the worst input's.
         worst = cond * spread * min([1.0] + [self.steps[r].conditioning for r in inputs])
         self._add(Step(ref, verb, tuple(inputs), out, label, role, panel, kind or _kind_of(out),
-                       phrase, worst, tuple(sorted(params.items())), about))
+                       phrase, worst, tuple(sorted(params.items())), about, spread, derived))
         return ref
 
     def _add(self, step: Step) -> None:

@@ -35,8 +35,9 @@ from ..errors import TarsimError
 from .joint_rules import rules_of
 from ..narration import Number, Phrase, Quantity, Word, phrase
 from .polygon import ACCELERATION, NOISE, Polygon, sense_of
+from .polygon_readings import relative_normal
 from .polygon_walk import PolygonWalk
-from ..record import Panel, Ref, Role
+from ..record import Derived, Panel, Ref, Role
 from ..scales import nice
 from .velocity_polygon import WORKED, drawn_velocity_polygon
 
@@ -246,6 +247,8 @@ class _Polygon(PolygonWalk):
             return ref, phrase("polygon.say_perpendicular", line=kx, tip=self.tip_label(k))
         end = self.act(
             f"ap:{X}:n@{K}", "lay_off", start, line, length=-w * w * r * self.scale,
+            derived=Derived(relative_normal, (self.vp.reads.get(c, ()), self.point_ref(k),
+                                              self.point_ref(x), self.scale)),
             said=phrase("apolygon.normal", tip=self.tip_label(k), rel=rel, link=c, line=kx,
                         omega=Number(abs(w)), length=self.m.units.length_said(r),
                         accel=self.say(w * w * r), back=xk, x=x.point, k=k.point))

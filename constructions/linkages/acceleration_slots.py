@@ -16,7 +16,8 @@ from typing import TYPE_CHECKING
 from .coincident import Node
 from ..narration import Number, Phrase, Word, phrase
 from .polygon import NOISE, sense_of
-from ..record import Ref
+from .polygon_readings import coriolis_length, curve_normal_length
+from ..record import Derived, Ref
 
 if TYPE_CHECKING:
     from .acceleration_polygon import _Polygon
@@ -30,7 +31,7 @@ def draw_slot(ap: _Polygon, x: Node, other: Node, i: int) -> tuple[Ref, Phrase]:
     slider, carried, rel = ap.curve_nodes(x, other)
     guide = ap.asm.guides[i]
     end = draw_coriolis(ap, x, other, slider, carried, rel, j, ap.asm.guide(i).direction,
-                        guide, None)
+                        guide, None, ("guide", guide))
     ref = ap.act(f"ap:{ap.name(x)}:slot@{i}", "parallel_through", end, guide,
                  said=phrase("apolygon.slot", link=j, rel=rel))
     ap.slides_drawn.append((slider, carried, end, sign(x), f"Aˢ_{rel}"))
@@ -54,12 +55,16 @@ def draw_curve(ap: _Polygon, x: Node, other: Node, i: int) -> tuple[Ref, Phrase]
     tangent = (-(py - ky) / e, (px - kx) / e)            # KP turned +90°
     X, kp = ap.name(x), f"{K}{Pn}"
     first = ap.tip(other)
+    along = ("curve", ap.asm.points[K], ap.asm.points[Pn])
     if j != 1:                                           # a frame slot does not turn
-        first = draw_coriolis(ap, x, other, slider, carried, rel, j, tangent, None, (line, kp))
+        first = draw_coriolis(ap, x, other, slider, carried, rel, j, tangent, None, (line, kp),
+                              along)
     u = sliding(ap, slider, carried, tangent)
     normal = u * u / a.radius
     end = ap.act(
         f"ap:{X}:n@curve", "lay_off", first, line, length=-sign(x) * normal * ap.scale,
+        derived=Derived(curve_normal_length, (_seen(ap, slider), _seen(ap, carried), along,
+                                              a.radius, -sign(x), ap.scale)),
         said=phrase("apolygon.curve_normal", rel=rel,
                     speed=ap.m.units.speed_said(abs(u)),
                     radius=ap.m.units.length_said(a.radius), accel=ap.say(normal), p=Pn,
@@ -73,7 +78,7 @@ def draw_curve(ap: _Polygon, x: Node, other: Node, i: int) -> tuple[Ref, Phrase]
 
 def draw_coriolis(ap: _Polygon, x: Node, other: Node, slider: Node, carried: Node, rel: str,
                   j: int, tangent: tuple[float, float], slot: Ref | None,
-                  normal_line: tuple[Ref, str] | None) -> Ref:
+                  normal_line: tuple[Ref, str] | None, tangent_by: tuple) -> Ref:
     """Lay off 2ω_j·v_rel from the other point's tip: v_rel turned 90° the way ω_j turns.
 
     v_rel runs along ``tangent``, so the component lies along the tangent turned
@@ -81,7 +86,8 @@ def draw_coriolis(ap: _Polygon, x: Node, other: Node, slider: Node, carried: Nod
     curved one (``normal_line``: the line, directed K → P, which is the turned
     tangent reversed, and its name). It is subtracted when the slot's own point
     is the one found. At an instant with no sliding or no turning the step says
-    the component is zero.
+    the component is zero. ``tangent_by`` gives the tangent by its steps, for a replay
+    (:func:`~.polygon_readings.coriolis_length`).
     """
     X, tip, start = ap.name(x), ap.tip_label(other), ap.tip(other)
     w = ap.omegas[j]
@@ -106,6 +112,9 @@ def draw_coriolis(ap: _Polygon, x: Node, other: Node, slider: Node, carried: Nod
         end = ap.act(
             f"ap:{X}:cor", "lay_off", start, along,
             length=turn * sign(x) * cor * ap.scale,
+            derived=Derived(coriolis_length, (
+                ap.vp.reads.get(j, ()), _seen(ap, slider), _seen(ap, carried), tangent_by,
+                turn * sign(x), ap.scale, abs(ap.m.drive.omega), NOISE * ap.m.input_speed)),
             said=phrase("apolygon.coriolis", where=where, rel=rel, link=j,
                         omega=Number(abs(w)), speed=ap.m.units.speed_said(abs(u)),
                         accel=ap.say(abs(cor)), sense=Word("ccw" if w > 0 else "cw"),
@@ -119,6 +128,13 @@ def sliding(ap: _Polygon, slider: Node, carried: Node, tangent: tuple[float, flo
     """V_P/Pj along the slot's ``tangent``, from the velocity polygon."""
     (sx, sy), (cx, cy) = ap.velocity(slider), ap.velocity(carried)
     return (sx - cx) * tangent[0] + (sy - cy) * tangent[1]
+
+
+def _seen(ap: _Polygon, n: Node) -> tuple[Ref | None, Ref, float]:
+    """How ``n``'s velocity is read off the velocity polygon, by its steps
+    (:func:`~.polygon_readings.velocity`): its tip (None: at rest), the pole, the scale."""
+    vp = ap.vp
+    return (None if ap.zero(n) else vp.tip(ap.name(n)), vp.pole, vp.scale)
 
 
 def sign(x: Node) -> float:

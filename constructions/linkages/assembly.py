@@ -38,7 +38,20 @@ from ..model import Mechanism
 from ..narration import Phrase, phrase
 from ..record import VERBS, Kind, Ref, Role
 
-__all__ = ["assemble", "Assembler"]
+__all__ = ["assemble", "Assembler", "input_ray", "ray_at"]
+
+
+def input_ray(link: int) -> Ref:
+    """The id of the given step that lays off the input's angle: the ray from its pivot."""
+    return f"ray:{link}"
+
+
+def ray_at(pivot: g.Point, angle: float) -> g.Line:
+    """The ray from ``pivot`` at ``angle`` (rad) that the input's second point is laid off
+    along: the one given of a position that moves when the input turns."""
+    x, y = pivot.xy
+    ux, uy = math.cos(angle), math.sin(angle)
+    return g.Line(-uy, ux, uy * x - ux * y)
 
 
 def assemble(mech: Mechanism) -> Assembly:
@@ -201,9 +214,7 @@ class Assembler:
             raise AssemblyError(f"the input {k.label} must turn about a frame point, listed "
                                 "first among its points, and carry a second point", link=k.number)
         pivot, tip = k.names[0], k.names[1]
-        x, y = self.c.output(self.known[pivot]).xy
-        ux, uy = math.cos(d.angle), math.sin(d.angle)
-        ray = self.c.give(f"ray:{d.link}", g.Line(-uy, ux, uy * x - ux * y),
+        ray = self.c.give(input_ray(d.link), ray_at(self.c.output(self.known[pivot]), d.angle),
                           label=f"θ{d.link}",
                           phrase=phrase("position.input_ray", pivot=pivot, link=d.link,
                                         angle=self.angle(d.angle)))

@@ -75,6 +75,9 @@ class Polygon:
     components: dict[str, Ref] = field(default_factory=dict)
     spans: dict[int, float] = field(default_factory=dict)
     """The length (m) on the space diagram each rate was read over: ω = V_rel / span."""
+    reads: dict[int, tuple] = field(default_factory=dict)
+    """How each rate was read, by the steps it was read from
+    (:func:`~.polygon_readings.rate`): what a replay reads again."""
 
     def vector(self, name: str) -> tuple[float, float]:
         """Read the velocity (or acceleration) of ``name`` off the polygon: the vector from the

@@ -25,7 +25,8 @@ from .joint_rules import rules_of
 from ..joints import Slide
 from ..narration import Number, Phrase, Word, narrate, phrase
 from .polygon import VELOCITY, Polygon, PolygonKind
-from ..record import Kind, Ref, Role
+from .polygon_readings import image_length, image_ratio
+from ..record import Derived, Kind, Ref, Role
 
 __all__ = ["PolygonWalk", "DEAD_POINT"]
 
@@ -52,7 +53,8 @@ class PolygonWalk(Walk):
         """The drawn polygon, with the rates it read and any further parts (Coriolis)."""
         tips, aliases = self.tips()
         return Polygon(self.kind, self.pole_ref, self.scale, tips, rates, self.steps,
-                       self.space_steps, self.c, aliases, spans=self.spans, **parts)
+                       self.space_steps, self.c, aliases, spans=self.spans, reads=self.reads,
+                       **parts)
 
     def __init__(self, asm: Assembly, scale: float, pole: tuple[float, float]):
         self.asm, self.m, self.c, self.scale = asm, asm.mechanism, asm, scale
@@ -69,6 +71,7 @@ class PolygonWalk(Walk):
         self.pole_xy = (float(pole[0]), float(pole[1]))
         self.size = asm.size
         self.spans: dict[int, float] = {}
+        self.reads: dict[int, tuple] = {}
         nodes = [Node(n) for n in m.point_names]
         nodes += [Node(s.point, s.guide_link) for s in m.slotted]
         # A wheel rolling on the ground touches it at its instant centre: a point of the
@@ -263,10 +266,10 @@ class PolygonWalk(Walk):
         return tips, aliases
 
     def act(self, ref: Ref, verb: str, *inputs: Ref, said: Phrase | None, label: str = "",
-            role: Role = Role.CONSTRUCTION, **params) -> Ref:
+            role: Role = Role.CONSTRUCTION, derived: Derived | None = None, **params) -> Ref:
         """Do one drafting act in the polygon's panel and count it among its steps."""
         self.c.draw(ref, verb, *inputs, label=label, phrase=said, role=role,
-                    panel=self.kind.panel, **params)
+                    panel=self.kind.panel, derived=derived, **params)
         self.steps.append(ref)
         return ref
 
@@ -304,8 +307,8 @@ class PolygonWalk(Walk):
 
     def draw_divide(self, x: Node, c: int, a: Node, b: Node) -> Ref:
         """X on line AB of link c: x divides ab as X divides AB (the image)."""
-        (ax, ay), (bx, by), (px, py) = self.xy(a), self.xy(b), self.xy(x)
-        ratio = ((px - ax) * (bx - ax) + (py - ay) * (by - ay)) / ((bx - ax) ** 2 + (by - ay) ** 2)
+        spots = (self.point_ref(a), self.point_ref(b), self.point_ref(x))
+        ratio = image_ratio(self.c.output, *spots)
         X = self.name(x)
         xl, al, bl = self.tip_name(X), self.tip_label(a), self.tip_label(b)
         ta, tb = self.tip(a), self.tip(b)
@@ -317,6 +320,7 @@ class PolygonWalk(Walk):
             return self.act(ref, "mark", ta, label=xl,
                             said=phrase("polygon.image_collapsed", why=why, ta=al, tb=bl, tip=xl))
         return self.act(ref, "lay_off", ta, tb, length=ratio * side, label=xl,
+                        derived=Derived(image_length, (ta, tb, *spots)),
                         said=phrase("polygon.image_lay_off", why=why, ta=al, tip=xl,
                                     ratio=Number(ratio), tb=bl))
 
@@ -357,6 +361,7 @@ class PolygonWalk(Walk):
                           and (s.guide_link == 1 or s.guide_link in rates)), None)
                 if s is not None:
                     rates[c] = 0.0 if s.guide_link == 1 else rates[s.guide_link]
+                    self.reads[c] = self.reads.get(s.guide_link, ())
                     later.remove(c)
                     break
             else:

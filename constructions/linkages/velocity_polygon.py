@@ -196,6 +196,8 @@ class _Polygon(PolygonWalk):
             omega = (rx * vy - ry * vx) / (rx * rx + ry * ry)
             omegas[c] = omega
             self.spans[c] = math.hypot(rx, ry)
+            self.reads[c] = (self.point_ref(p), self.point_ref(q), self.tip(p), self.tip(q),
+                             self.scale)
             P, Q = self.name(p), self.name(q)
             rel = f"V_{Q}" if self.zero(p) else f"V_{Q}/{P}"
             side = f"o_v {Q.lower()}" if self.zero(p) else f"{P.lower()} {Q.lower()}"

@@ -33,8 +33,8 @@ from ..model import Mechanism
 from .solver import Kinematics
 from ..errors import DegenerateInput
 
-__all__ = ["AnalyticCentre", "MoveTogether", "instant_centre", "shared_pin", "centre_error",
-           "mechanism_size", "AT_INFINITY", "FAR"]
+__all__ = ["AnalyticCentre", "MoveTogether", "instant_centre", "CentreReference", "shared_pin",
+           "centre_error", "mechanism_size", "AT_INFINITY", "FAR"]
 
 EPS = 2.220446049250313e-16
 
@@ -167,35 +167,59 @@ def instant_centre(kin: Kinematics, i: int, j: int, *, pin: str | None = None) -
     """
     if i == j:
         raise DegenerateInput(f"I{i}{j} needs two different links")
-    pts = list(kin.points.values())
-    q = (sum(p[0] for p in pts) / len(pts), sum(p[1] for p in pts) / len(pts))
-    size = max(mechanism_size(kin), 1e-300)
-    if _scale(kin, kin, pts, size) == 0.0:
-        raise DegenerateInput("nothing moves (every ω and velocity is 0): give the input a "
-                              "nonzero ω to locate instant centres")
-    # The driven motion first: two links that move together have no centre, pin or not.
-    driven = _located(kin, kin, i, j, q, size)
-    if pin is not None:
-        return AnalyticCentre(kin.points[pin], None, 4.0 * EPS)
-    # Both motions give the centre, each with its own rounding. Near a dead point of the
-    # input the free motion is sharper by orders of magnitude (see the module's docstring),
-    # except for a centre of the input and the frame, whose |Δω| the free motion nearly
-    # loses there. Elsewhere the two agree to rounding and the driven one, whose zeros are
-    # exact (a block's ω), is kept: the free one must be sharper tenfold to be taken.
-    free = getattr(kin, "free", None)
-    if free is None:
-        return driven
-    try:
-        sharper = _located(kin, free, i, j, q, size)
-    except MoveTogether:
-        return driven
-    return sharper if 10.0 * sharper.rounding < driven.rounding else driven
+    return CentreReference(kin).centre(i, j, pin=pin)
 
 
-def _located(kin: Kinematics, motion, i: int, j: int, q: tuple[float, float],
+class CentreReference:
+    """Every instant centre of one solution ``kin``: what the centres share (the reference
+    point, the mechanism's size, each motion's velocity scale) found once.
+
+    Raises
+    ------
+    DegenerateInput
+        If the mechanism does not move (ω = 0).
+    """
+
+    def __init__(self, kin: Kinematics):
+        self.kin = kin
+        pts = list(kin.points.values())
+        self.q = (sum(p[0] for p in pts) / len(pts), sum(p[1] for p in pts) / len(pts))
+        self.size = max(mechanism_size(kin), 1e-300)
+        self.scale = _scale(kin, kin, pts, self.size)
+        if self.scale == 0.0:
+            raise DegenerateInput("nothing moves (every ω and velocity is 0): give the input a "
+                                  "nonzero ω to locate instant centres")
+        free = getattr(kin, "free", None)
+        self.free = None if free is None else (free, _scale(kin, free, pts, self.size))
+
+    def centre(self, i: int, j: int, *, pin: str | None = None) -> AnalyticCentre:
+        """``I_ij``, as :func:`instant_centre` gives it."""
+        if i == j:
+            raise DegenerateInput(f"I{i}{j} needs two different links")
+        kin, q, size = self.kin, self.q, self.size
+        # The driven motion first: two links that move together have no centre, pin or not.
+        driven = _located(kin, kin, self.scale, i, j, q, size)
+        if pin is not None:
+            return AnalyticCentre(kin.points[pin], None, 4.0 * EPS)
+        # Both motions give the centre, each with its own rounding. Near a dead point of the
+        # input the free motion is sharper by orders of magnitude (see the module's
+        # docstring), except for a centre of the input and the frame, whose |Δω| the free
+        # motion nearly loses there. Elsewhere the two agree to rounding and the driven one,
+        # whose zeros are exact (a block's ω), is kept: the free one must be sharper tenfold
+        # to be taken.
+        if self.free is None:
+            return driven
+        try:
+            sharper = _located(kin, *self.free, i, j, q, size)
+        except MoveTogether:
+            return driven
+        return sharper if 10.0 * sharper.rounding < driven.rounding else driven
+
+
+def _located(kin: Kinematics, motion, scale: float, i: int, j: int, q: tuple[float, float],
              size: float) -> AnalyticCentre:
-    """``I_ij`` from the fields of ``motion``, taken about the reference point ``q``."""
-    scale = _scale(kin, motion, list(kin.points.values()), size)
+    """``I_ij`` from the fields of ``motion``, whose velocity scale is ``scale``, taken
+    about the reference point ``q``."""
     (vix, viy), (vjx, vjy) = _field(kin, motion, i, q), _field(kin, motion, j, q)
     dvx, dvy = vix - vjx, viy - vjy
     dv = math.hypot(dvx, dvy)

@@ -10,12 +10,11 @@ draws nothing of its own:
   in English and Persian, primitive by primitive, each with the step it is drawn for (as
   steps.md numbers them) and the named points it stands on (:mod:`.view_figures`);
 * **frames**: the input turned in equal steps (0.5° by default) from the exercise's own
-  angle, the way ω turns. At each, the joints are placed by compass, the instant centres
-  found by Kennedy's theorem, and both polygons drawn, by tarsim's constructions; a frame
-  sends the named points of each view (the joints and centres, each polygon's pole and
-  tips), which the figure's primitives stand on, and is checked against the analytic
-  solver and says so. A position that cannot be assembled is a frame that says why;
-  nothing is interpolated.
+  angle, the way ω turns. Each sends the named points of each view (the joints and
+  centres, each polygon's pole and tips), which the figure's primitives stand on: the
+  constructions of one position redone at the frame's angle, and checked against the
+  analytic solution of the whole turn (:mod:`.view_frames`). A position that cannot be
+  assembled is a frame that says why; nothing is interpolated.
 """
 
 from __future__ import annotations
@@ -27,14 +26,11 @@ from typing import Any
 
 from tarsim.constructions.linkages.acceleration_polygon import draw_acceleration_polygon
 from tarsim.constructions.linkages.assembly import assemble
-from tarsim.constructions.checks import tolerance
 from tarsim.constructions.errors import TarsimError
 from tarsim.constructions.linkages.kennedy import locate_centres
 from tarsim.constructions.model import Mechanism
 from tarsim.constructions.narration import LANGUAGES, speaking, words
-from tarsim.constructions.reference import solver
-from tarsim.constructions.reference.centres import (MoveTogether, centre_error, instant_centre,
-                                                    shared_pin)
+from tarsim.constructions.reference.turn import solve_turn
 from tarsim.constructions.linkages.velocity_polygon import draw_velocity_polygon
 from tarsim.graphics.figure_data import FONTS, style_data
 from tarsim.graphics.paper import paper, room
@@ -42,15 +38,9 @@ from tarsim.graphics.workers import draw_each
 from .exercise_file import Exercise
 from tarsim.constructions.linkages.given_rate import convert
 from .view_figures import PageFigures
+from .view_frames import FRAME_CHECK, Template, constructed, frame_outcomes, truth_of_turn
 
 __all__ = ["view_data", "frame_outcomes", "FRAME_CHECK"]
-
-FRAME_CHECK = 1e-9
-"""The largest relative distance of a frame's joint or polygon tip from the analytic
-solver's, beside the mechanism's size or the polygon's largest vector: the construction
-agrees to rounding (1e-15 or so) wherever it is well conditioned, so more than this is a
-wrong frame, not noise. A centre is held to the tolerance its own conditioning allows."""
-
 
 def view_data(ex: Exercise, *, step_deg: float = 0.5,
               progress: Callable[[int], None] | None = None) -> dict[str, Any]:
@@ -77,13 +67,23 @@ def view_data(ex: Exercise, *, step_deg: float = 0.5,
     angles = [mech.drive.angle + sense * math.radians(step_deg) * k for k in range(n)]
     scales = _scales(mech, sol)
     names = _names(mech, scales)
-    chunks = [angles[k::_CHUNKS] for k in range(_CHUNKS)]
+    template = Template.chosen(mech, angles, scales, names)
+    turn = solve_turn(mech, angles)
+
+    def frames_of(ks: range) -> list[dict]:
+        out = []
+        for k in ks:
+            f = template.frame(angles[k], truth_of_turn(turn, k)) \
+                if template is not None and turn.ok[k] else None
+            out.append(f if f is not None else constructed(mech, angles[k], scales, names))
+        return out
+
+    chunks = [range(k, n, _CHUNKS) for k in range(_CHUNKS)]
     pages = PageFigures(first, sol, names, sense, where, _PAGE_LANGUAGES)
     drawings = pages.jobs()
     # The frames and the figures' drawings share the cores, the longest first.
-    done = draw_each([lambda c=c: [_frame(mech, a, scales, names) for a in c]
-                      for c in chunks] + drawings,
-                     [len(c) for c in chunks] + [_DRAWING] * len(drawings))
+    done = draw_each([lambda c=c: frames_of(c) for c in chunks] + drawings,
+                     [len(c) * _FRAME for c in chunks] + [_DRAWING] * len(drawings))
     frames: list[dict] = [{}] * n
     for k, chunk in enumerate(done[:_CHUNKS]):
         frames[k::_CHUNKS] = chunk
@@ -115,8 +115,11 @@ def view_data(ex: Exercise, *, step_deg: float = 0.5,
 _CHUNKS = 8
 """The frames are drawn in this many interleaved chunks, shared out to the cores."""
 
-_DRAWING = 40
-"""What drawing one position's figures costs, in frames (some 150 ms, a frame some 4)."""
+_DRAWING = 1500
+"""What drawing one position's figures costs, in µs (some 150 ms)."""
+
+_FRAME = 300
+"""What a frame costs, in µs: redone and checked (one constructed afresh takes some 3 ms)."""
 
 
 def _scales(mech: Mechanism, sol) -> dict[str, float]:
@@ -150,77 +153,6 @@ def _drag(mech: Mechanism, names: dict[str, list[str]]) -> dict[str, Any]:
     pin = next(p for p in own if p != pivot)
     return {"view": "space", "about": names["space"].index(pivot),
             "handle": names["space"].index(pin)}
-
-
-def _frame(mech: Mechanism, angle: float, scales: dict[str, float],
-           names: dict[str, list[str]]) -> dict[str, Any]:
-    """One position by construction, checked: the named points of each view (joints,
-    centres, both polygons' poles and tips)."""
-    m = mech.with_drive(replace(mech.drive, angle=angle))
-    try:
-        asm = assemble(m)
-        vp = draw_velocity_polygon(asm, scales["v"])
-        ap = draw_acceleration_polygon(asm, vp, scales["a"])
-        kin = solver.solve(m)
-    except (TarsimError, ArithmeticError) as e:       # a position not reached, a dead point
-        return {"angle": angle, "why": str(e).split("\n")[0]}
-    try:
-        cs = locate_centres(asm)
-    except TarsimError as e:     # Kennedy cannot reach a centre here: the rest still stands
-        cs, lost = None, str(e).split("\n")[0]
-    joints = {p: asm.point(p).xy for p in m.point_names}
-    size = max(math.dist(a, b) for a in joints.values() for b in joints.values()) or 1.0
-    worst = max(math.dist(joints[p], kin.points[p]) for p in joints) / size
-    at: dict[str, dict[str, Any]] = {"space": dict(joints)}
-    for view, poly, truth in (("velocity", vp, kin.velocities),
-                              ("acceleration", ap, kin.accelerations)):
-        tips = {name: asm.output(ref).xy for name, ref in poly.tips.items()}
-        at[view] = {**tips, "pole": asm.output(poly.pole).xy}
-        read = {n: poly.vector(n) for n in tips if n in truth}
-        big = max([math.hypot(*v) for v in truth.values()] + [1e-300])
-        worst = max([worst] + [math.dist(read[n], truth[n]) / big for n in read])
-    miss = 0.0
-    for c in (cs.secondaries + cs.primaries) if cs is not None else ():
-        p = cs.point(*c.pair)
-        at["space"][c.label] = None if p.is_at_infinity else p.xy
-        try:
-            ref = instant_centre(kin, *c.pair, pin=shared_pin(m, *c.pair))
-        except MoveTogether:        # every point is a centre of the two: nothing to check
-            continue
-        err = centre_error(p, ref, size)
-        if err > tolerance(cs.conditioning(*c.pair)):
-            miss = max(miss, err)
-    frame: dict[str, Any] = {"angle": angle, "at": {
-        view: _flat(at[view].get(name) for name in names[view]) for view in names}}
-    if cs is None:
-        frame["lost"] = lost
-    frame["ok"] = worst <= FRAME_CHECK and miss == 0.0
-    if not frame["ok"]:
-        frame["why"] = (f"its construction is {worst:.1g} off the analytic solution"
-                        if worst > FRAME_CHECK else
-                        f"an instant centre is {miss:.1g} off its analytic position")
-    return frame
-
-
-def frame_outcomes(frames: list[dict]) -> dict[str, list[dict]]:
-    """The frames by what became of them: ``checked`` (constructed and agreeing with the
-    analytic solver), ``lost`` (out of reach, or beyond the construction: a frame that
-    only says why) and ``failing`` (constructed, and off the solver)."""
-    out: dict[str, list[dict]] = {"checked": [], "lost": [], "failing": []}
-    for f in frames:
-        out["lost" if "at" not in f else "checked" if f["ok"] else "failing"].append(f)
-    return out
-
-
-def _round(xy: tuple[float, float]) -> list[float]:
-    """A point as the page keeps it: a tenth of a micrometre of the drawing, far below what
-    a screen shows, and few enough digits to keep 720 frames small."""
-    return [round(xy[0], 7) + 0.0, round(xy[1], 7) + 0.0]
-
-
-def _flat(points) -> list[float | None]:
-    """Points as one list, x and y in turn; a point not found (at infinity) as two nulls."""
-    return [v for xy in points for v in (_round(xy) if xy is not None else (None, None))]
 
 
 _PAGE_LANGUAGES = ("en", "fa")
