@@ -1,8 +1,23 @@
 """Where a user waits: the command line's start, a whole solve, and drawing each solution.
 
-Run:  python benchmarks/speed.py [--repeat 5]
+Run:  python benchmarks/speed.py [--repeat 5] [--targets]
 
-Medians of ``--repeat`` runs on this machine, stated at the top with its CPU and load:
+Medians of ``--repeat`` runs on this machine, stated at the top with its CPU and load.
+First the targets, each beside its bound or its peer, in one run (``--targets``: these
+alone):
+
+- in a fresh process each: ``tarsim solve four-bar --no-pdf`` (beside the floor, Python
+  starting and importing numpy); ``tarsim grade`` of one student's drawing of the
+  crank-shaper (made as tests/grading_corpus.py makes a class's, without a PDF);
+  ``tarsim solve crank-shaper`` with its PDFs, and the most memory it holds (the largest
+  resident set of it and its workers); ``tarsim view crank-shaper`` (720 frames);
+- in this process: the four-bar's worked page, laid out and written as SVG, beside
+  matplotlib drawing the same page (every line, circle and label of it, placed where
+  tarsim placed them) and writing its SVG, if matplotlib is installed (it is not a
+  dependency of tarsim);
+- the sweep against pylinkage is sweep_speed.py's.
+
+Then:
 
 - end to end, each in a fresh process (the start of Python and the imports included, with
   the bytecode cache warm, as an installed package has it): ``tarsim --help``,
@@ -113,13 +128,126 @@ def worked_pages(name: str, repeat: int) -> list[tuple[str, float, float]]:
     return out
 
 
+def peak_memory(command: list[str]) -> float:
+    """The most memory ``command`` holds, in MiB: the largest resident set of it and its
+    workers, as the kernel counts it for a child and its own children."""
+    probe = ("import resource, subprocess, sys; subprocess.run(sys.argv[1:], check=True, "
+             "stdout=subprocess.DEVNULL); "
+             "print(resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss)")
+    with tempfile.TemporaryDirectory() as folder:
+        out = subprocess.run([sys.executable, "-c", probe, *command], cwd=folder, check=True,
+                             capture_output=True, text=True).stdout
+    return int(out.split()[-1]) / 1024
+
+
+def one_drawing(folder: Path) -> Path:
+    """A student's drawing of the crank-shaper at its second position, as an exporting
+    program writes it (tests/grading_corpus.py, as grading_speed.py makes a class)."""
+    from benchmarks.grading_speed import make_class
+
+    folder.mkdir(parents=True)
+    make_class(folder, 1, 2)
+    return next(iter(sorted(folder.glob("*.svg"))))
+
+
+def matplotlib_svg(fig) -> bytes:
+    """``fig`` (a tarsim Figure) drawn by matplotlib and written as SVG: each path, circle
+    and label where tarsim placed it, in its stroke and size."""
+    import io
+
+    from matplotlib.figure import Figure as MplFigure
+    from matplotlib.patches import Circle as MplCircle
+
+    from tarsim.graphics.figure import STYLES, Circle, Path as FigPath, Text
+
+    mm = 1 / 25.4
+    out = MplFigure(figsize=(fig.width * mm, fig.height * mm))
+    ax = out.add_axes((0, 0, 1, 1))
+    ax.set_xlim(0, fig.width)
+    ax.set_ylim(fig.height, 0)
+    ax.set_axis_off()
+    pt = 72 / 25.4
+    for item in fig.items:
+        style = STYLES.get(getattr(item, "style", ""))
+        colour = style.stroke if style is not None and style.stroke else "#000"
+        width = (style.width if style is not None else 0.25) * pt
+        if isinstance(item, FigPath):
+            xs = [p[0] for p in item.points] + ([item.points[0][0]] if item.closed else [])
+            ys = [p[1] for p in item.points] + ([item.points[0][1]] if item.closed else [])
+            ax.plot(xs, ys, color=colour, linewidth=width)
+        elif isinstance(item, Circle):
+            fill = style.fill if style is not None and style.fill else "none"
+            ax.add_patch(MplCircle(item.centre, item.radius, edgecolor=colour, facecolor=fill,
+                                   linewidth=width))
+        elif isinstance(item, Text):
+            ax.text(*item.at, item.text + item.sub + item.tail, fontsize=item.size * pt,
+                    ha={"start": "left", "end": "right"}.get(item.anchor, "center"),
+                    va="center", style="italic" if item.italic else "normal")
+    buf = io.BytesIO()
+    out.savefig(buf, format="svg")
+    return buf.getvalue()
+
+
+def _sketches(name: str, stem: str | None = None) -> list:
+    """The figures of ``name``'s first position, ready to draw (those of ``stem`` alone)."""
+    sol = tarsim.solve(tarsim.load(name)).positions[0]
+    return [s for s in solution_files._figures(sol) if stem is None or s.stem == stem]
+
+
+def targets(repeat: int) -> None:
+    """Each target of the commands a user waits for, beside its bound or its peer."""
+    cli = [sys.executable, "-m", "tarsim"]
+    rows = []
+    floor = wall([sys.executable, "-c", "import numpy"], repeat)
+    four = wall(cli + ["solve", "four-bar", "-o", "out", "--no-pdf"], repeat)
+    rows.append(("tarsim solve four-bar --no-pdf", f"{four:.2f} s", "< 0.35 s",
+                 f"Python + numpy alone {floor:.2f} s", four < 0.35))
+    with tempfile.TemporaryDirectory() as tmp:
+        drawing = one_drawing(Path(tmp) / "class")
+        graded = wall(cli + ["grade", "crank-shaper", str(drawing), "--position", "2", "-o",
+                             "out", "--no-pdf"], repeat)
+    rows.append(("tarsim grade, one drawing, no PDF", f"{graded:.2f} s", "< 0.35 s", "",
+                 graded < 0.35))
+    shaper = wall(cli + ["solve", "crank-shaper", "-o", "out"], repeat)
+    rows.append(("tarsim solve crank-shaper, with PDF", f"{shaper:.2f} s", "< 1 s", "",
+                 shaper < 1.0))
+    memory = peak_memory(cli + ["solve", "crank-shaper", "-o", "out"])
+    rows.append(("  its peak memory", f"{memory:.0f} MiB", "< 80 MiB", "", memory < 80))
+    view = wall(cli + ["view", "crank-shaper", "-o", "page.html"], repeat)
+    rows.append(("tarsim view crank-shaper (720 frames)", f"{view:.2f} s", "< 1 s", "",
+                 view < 1.0))
+    for what, sketches in (("crank-shaper worked page", _sketches("crank-shaper", WORKED.stem)),
+                           ("four-bar, its 5 figures", _sketches("four-bar"))):
+        page = sum(median_time(lambda s=s: to_svg(s.draw()), repeat) for s in sketches)
+        try:
+            figs = [s.draw() for s in sketches]
+            peer = sum(median_time(lambda f=f: matplotlib_svg(f), repeat) for f in figs)
+        except ImportError:
+            rows.append((what + ", layout + SVG", f"{page * 1e3:.0f} ms", "≤ ½ matplotlib",
+                         "matplotlib is not installed", None))
+            continue
+        rows.append((what + ", layout + SVG", f"{page * 1e3:.0f} ms", "≤ ½ matplotlib",
+                     f"matplotlib {peer * 1e3:.0f} ms (ratio {page / peer:.2f})",
+                     page <= 0.5 * peer))
+    print(f"\n{'target':<40}{'tarsim':>10}  {'bound':<16}{'peer':<40}met")
+    for what, value, bound, peer, met in rows:
+        print(f"{what:<40}{value:>10}  {bound:<16}{peer:<40}"
+              f"{'-' if met is None else 'yes' if met else 'no'}")
+    print("the 3600-position sweep against pylinkage: benchmarks/sweep_speed.py")
+
+
 def main(argv: list[str] | None = None) -> None:
-    """Print the machine, the end-to-end commands and the per-exercise tables."""
+    """Print the machine, the targets, the end-to-end commands and the per-exercise
+    tables."""
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--repeat", type=int, default=5)
+    ap.add_argument("--targets", action="store_true", help="the targets alone")
     args = ap.parse_args(argv)
     r = args.repeat
     print(machine(r))
+    targets(r)
+    if args.targets:
+        return
     cli = [sys.executable, "-m", "tarsim"]
     print(f"\n{'end to end, fresh process':<40}{'s':>8}")
     print(f"{'tarsim --help':<40}{wall(cli + ['--help'], r):>8.2f}")

@@ -73,6 +73,10 @@ class Replay:
                 continue
             if derived is not None:
                 params = {**params, **derived(out.__getitem__)}
-            out[ref], own = verb(*(out[r] for r in inputs), **params)
-            cond[ref] = own * spread * min([1.0] + [cond[r] for r in inputs])
+            out[ref], own = verb(*[out[r] for r in inputs], **params)
+            worst = 1.0
+            for r in inputs:
+                if cond[r] < worst:
+                    worst = cond[r]
+            cond[ref] = own * spread * worst
         return out, cond

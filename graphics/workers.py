@@ -11,7 +11,6 @@ the same order.
 
 from __future__ import annotations
 
-import multiprocessing
 import os
 import threading
 from collections.abc import Callable
@@ -33,6 +32,8 @@ def _cores() -> int:
 
 
 def _forks() -> bool:
+    import multiprocessing          # here: a command that draws in turn does not pay for it
+
     return ("fork" in multiprocessing.get_all_start_methods()
             and threading.active_count() == 1
             and multiprocessing.parent_process() is None)   # no pools inside workers
@@ -63,6 +64,8 @@ def draw_each(jobs: list[Callable[[], T]], weights: list[float] | None = None) -
     if workers < 2 or not _forks():
         return [job() for job in jobs]
     order = sorted(range(len(jobs)), key=lambda k: -weights[k]) if weights else range(len(jobs))
+    import multiprocessing
+
     global _JOBS
     _JOBS = list(jobs)
     try:

@@ -17,7 +17,6 @@ from dataclasses import dataclass
 import numpy as np
 
 from .solver import SingularPosition, follow_branches, solve
-from .turn import solve_turn
 from ..errors import AssemblyError, InputError
 from ..model import Drive, Mechanism
 
@@ -79,6 +78,8 @@ def limit_reference(mech: Mechanism, *, point: str | None = None,
 
     def speeds_at(angles: np.ndarray) -> np.ndarray:
         """The output's velocity at each of ``angles``, solved together."""
+        from .turn import solve_turn     # the vectorised solver: only a turn's scan needs it
+
         turn = solve_turn(mech, angles)
         if not turn.ok.all():
             first = int(turn.ok.argmin())
