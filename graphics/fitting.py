@@ -1,17 +1,24 @@
-"""Fit a figure to its sheet by the scale it is drawn at.
+"""Fit a figure to its sheet by the scale it is drawn at, laying it out once.
 
 The solve chooses each figure's space scale for the room a sheet leaves a drawing
 (:func:`~tarsim.graphics.paper.room`), before anything is drawn; only the drawing knows
-how much its labels, symbols and caption add. So a figure is drawn at that scale first;
-a figure the sheet does not hold is drawn a nice step (1, 2, 5 × 10ᵏ) coarser, and one
-it holds may be drawn a step finer, to fill it (:func:`fit` gives the rule). A scale the
-exercise states is kept: its figure is drawn once, on a bigger page if it must be.
+how much its labels, symbols and caption add. A figure the sheet does not hold at that
+scale is drawn a nice step (1, 2, 5 × 10ᵏ) coarser, and one it holds may be drawn a step
+finer, to fill it (:func:`chosen_scale` gives the rule). A scale the exercise states is kept: its
+figure is drawn once, on a bigger page if it must be.
 
-Each drawing foretells the figure's size at a coarser scale (:func:`foretold`): the
+The rule is followed on drafts (:mod:`~tarsim.graphics.drafts`): the figure drawn whole
+with its labels placed as on a blank page, in a quarter to a third of the drawing's
+time. Only at the scale the rule chooses are the labels placed among the ink. A draft's
+size is the figure's but for the few millimetres a label pushed off its first spot
+takes, so the figure is drawn at the scale the rule, followed on drawn figures, would
+choose, but where that rule's choice turns on those millimetres.
+
+Each draft foretells the figure's size at a coarser scale (:func:`foretold`): the
 drawing under the caption shrinks with the scale, the caption and margins keep their
 size. Labels and symbols in the drawing keep their size too, and the frame of a scene
 takes in more of its far points at a coarser scale, so the figure takes at least what
-is foretold: a coarser step that cannot be held even so is not drawn to find out.
+is foretold: a coarser step that cannot be held even so is not drafted.
 """
 
 from __future__ import annotations
@@ -20,10 +27,11 @@ from collections.abc import Callable
 
 from tarsim.constructions.scales import nice
 
+from .drafts import drafting
 from .figure import Figure
 from .paper import Paper, sheet_size
 
-__all__ = ["fit", "foretold", "held_by", "COARSER", "FINER", "TRIED"]
+__all__ = ["fit", "chosen_scale", "foretold", "held_by", "COARSER", "FINER", "TRIED"]
 
 COARSER = 3
 """The most nice steps coarser a figure the sheet refuses is drawn at."""
@@ -36,26 +44,18 @@ TRIED = 0.8
 only the drawing grows, not its caption."""
 
 Holds = Callable[[Figure], bool]
+Draw = Callable[[float], Figure]
 
 
-def fit(draw: Callable[[float], Figure], per_cm: float, holds: Holds, *,
-        fixed: bool = False, grow: bool = False) -> Figure:
+def fit(draw: Draw, per_cm: float, holds: Holds, *, fixed: bool = False, grow: bool = False,
+        draft: Draw | None = None) -> Figure:
     """Draw ``draw`` at ``per_cm`` (the space scale, file units per paper cm), or at the
-    nice scale nearest it that ``holds`` takes.
+    nice scale nearest it that ``holds`` takes, placing its labels once.
 
-    The rule, step by step: a figure ``holds`` refuses is drawn a nice step coarser, up
-    to :data:`COARSER` times, until it is held (the last drawn, held or not). One held at
-    its first scale is, with ``grow``, drawn a nice step finer while it is still held, up
-    to :data:`FINER` times, so the drawing fills its sheet; a step is tried only if
-    :data:`TRIED` of the figure grown whole is held. With ``fixed`` (the exercise states
-    the scale) it is drawn once.
-
-    The scale that rule chooses is found with fewer drawings: from each drawing the
-    figure's least size at the coarser steps is foretold (:func:`foretold`), and a step
-    that is not held even so is passed by undrawn, so a figure too big for its sheet is
-    drawn again at the step it is held at rather than at each step between. Growing is
-    not foretold: the most a finer figure may take is foretold too loosely (its labels
-    counted as growing) to pass a step by, so each step is tried on the figure as drawn.
+    The scale is the one :func:`chosen_scale` finds on the figure's drafts; the figure
+    is then drawn at it. Should its labels take it past what holds it, where its draft
+    was held, it is drawn a nice step coarser, up to the coarsest step the rule draws
+    at (:data:`COARSER` steps coarser than ``per_cm``), until it is held.
 
     Parameters
     ----------
@@ -67,43 +67,78 @@ def fit(draw: Callable[[float], Figure], per_cm: float, holds: Holds, *,
         Whether a figure fits where it goes (:func:`held_by` a sheet, or a worked page's
         room for a panel); a bigger figure is never held where a smaller one is not.
     fixed
-        The scale is the exercise's: draw once.
+        The scale is the exercise's: draw once, at it.
     grow
         Try finer scales too.
+    draft
+        The figure's size at a scale, foretold cheaply; by default ``draw`` drawn
+        :func:`~tarsim.graphics.drafts.drafting`.
     """
-    fig = draw(per_cm)
     if fixed:
-        return fig
+        return draw(per_cm)
+    at = chosen_scale(draft or _drafted(draw), per_cm, holds, grow=grow)
+    fig = draw(at)
+    coarsest = per_cm
+    for _ in range(COARSER):
+        coarsest = nice(coarsest * 1.01)
+    while not holds(fig) and at < coarsest:
+        at = nice(at * 1.01)
+        fig = draw(at)
+    return fig
+
+
+def chosen_scale(size: Draw, per_cm: float, holds: Holds, *, grow: bool = False) -> float:
+    """The scale the rule chooses for a figure whose size at a scale is ``size``.
+
+    The rule, step by step: a figure ``holds`` refuses is taken a nice step coarser, up
+    to :data:`COARSER` times, until it is held (the last, held or not). One held at its
+    first scale is, with ``grow``, taken a nice step finer while it is still held, up to
+    :data:`FINER` times, so the drawing fills its sheet; a step is tried only if
+    :data:`TRIED` of the figure grown whole is held.
+
+    A coarser step the figure cannot be held at, as :func:`foretold` from the last size
+    looked at, is passed by unlooked at. Growing is not foretold: the most a finer figure
+    may take is foretold too loosely (its labels counted as growing) to pass a step by,
+    so each step is tried on the figure as it is.
+    """
+    fig = size(per_cm)
     if not holds(fig):
-        return _coarser(draw, fig, per_cm, holds)
-    return _finer(draw, fig, per_cm, holds) if grow else fig
+        return _coarser(size, fig, per_cm, holds)
+    return _finer(size, fig, per_cm, holds) if grow else per_cm
 
 
-def _coarser(draw: Callable[[float], Figure], fig: Figure, at: float, holds: Holds) -> Figure:
+def _drafted(draw: Draw) -> Draw:
+    def draft(per_cm: float) -> Figure:
+        with drafting():
+            return draw(per_cm)
+    return draft
+
+
+def _coarser(size: Draw, fig: Figure, at: float, holds: Holds) -> float:
     """The first of the coarser steps that is held, else the last; a step the figure
-    cannot be held at, as foretold from the last drawing, is not drawn."""
+    cannot be held at, as foretold from the last looked at, is not looked at."""
     per_cm = at
     for k in range(COARSER):
         per_cm = nice(per_cm * 1.01)
         if k < COARSER - 1 and not holds(foretold(fig, at, per_cm)):
             continue
-        fig, at = draw(per_cm), per_cm
+        fig, at = size(per_cm), per_cm
         if holds(fig):
             break
-    return fig
+    return at
 
 
-def _finer(draw: Callable[[float], Figure], fig: Figure, at: float, holds: Holds) -> Figure:
-    """The figure grown by finer steps while each is tried and held."""
+def _finer(size: Draw, fig: Figure, at: float, holds: Holds) -> float:
+    """The scale grown to by finer steps while each is tried and held."""
     for _ in range(FINER):
         per_cm = nice(at * 0.99, up=False)
         if not holds(_grown(fig, at, per_cm)):
             break
-        bigger = draw(per_cm)
+        bigger = size(per_cm)
         if not holds(bigger):
             break
         fig, at = bigger, per_cm
-    return fig
+    return at
 
 
 def _grown(fig: Figure, at: float, per_cm: float) -> Figure:

@@ -30,7 +30,7 @@ from .diagram_labels import draw_input, input_caption, label_links, label_points
 from .diagram_slides import draw_blocks, draw_frame_guides, draw_track, track
 from .joint_symbols import Drawn, symbol_of
 from ..figure import Figure, Path, View
-from ..labels import LabelPlacer
+from ..drafts import label_placer
 from ..paper_points import difference, farthest_pair
 from ..scales import draw_caption
 from ..symbols import PIN_RADIUS, draw_ground_pivot, draw_pin, unit
@@ -79,7 +79,7 @@ class _Diagram:
         s = 10.0 / (self.per_cm * self.m.units.metres)   # paper mm per world metre
         self.view = View(s, (0.0, 0.0))
         self.fig = Figure(0.0, 0.0, title=self.m.name)
-        self.placer = LabelPlacer(self.fig)
+        self.placer = label_placer(self.fig)
         self.paper = {n: self.view(p) for n, p in self.world.items()}
         self.placer.name_points(self.paper.values())
         self.tracks = [track(self, a) for a in self.m.arcs if symbol_of(a).drawn is Drawn.TRACK]
