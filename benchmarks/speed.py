@@ -11,6 +11,8 @@ alone):
   crank-shaper (made as tests/grading_corpus.py makes a class's, without a PDF);
   ``tarsim solve crank-shaper`` with its PDFs, and the most memory it holds (the largest
   resident set of it and its workers); ``tarsim view crank-shaper`` (720 frames);
+- in this process: the bundled figures fitted to A4, laid out once each, beside the
+  rule followed on drawn figures (benchmarks/fitting_speed.py);
 - in this process: the four-bar's worked page, laid out and written as SVG, beside
   matplotlib drawing the same page (every line, circle and label of it, placed where
   tarsim placed them) and writing its SVG, if matplotlib is installed (it is not a
@@ -213,6 +215,14 @@ def targets(repeat: int) -> None:
                  shaper < 1.0))
     memory = peak_memory(cli + ["solve", "crank-shaper", "-o", "out"])
     rows.append(("  its peak memory", f"{memory:.0f} MiB", "< 80 MiB", "", memory < 80))
+    from benchmarks.fitting_speed import fitting_rows
+
+    each = fitting_rows(repeat)
+    fitted = [sum(r[k] for r in each) for k in
+              ("figures", "layouts", "seconds", "drawn_layouts", "drawn_seconds")]
+    rows.append(("bundled figures fitted to A4, layouts", f"{fitted[1]}", "1 a figure",
+                 f"{fitted[0]} figures, {fitted[2] * 1e3:.0f} ms; on drawn figures "
+                 f"{fitted[3]}, {fitted[4] * 1e3:.0f} ms", fitted[1] == fitted[0]))
     view = wall(cli + ["view", "crank-shaper", "-o", "page.html"], repeat)
     rows.append(("tarsim view crank-shaper (720 frames)", f"{view:.2f} s", "< 1 s", "",
                  view < 1.0))
