@@ -7,7 +7,8 @@ reach, dead point), with the scalar solver's own message.
 Why 1e-12: both solvers start from the same closed forms and are polished by Newton
 to round-off (a scaled residual of 4 eps), so positions agree to a few eps of the
 mechanism's size. Velocities and accelerations solve the same Jacobian (equal but for
-an ulp here and there), once by LAPACK's solve and once through its inverse: they
+an ulp here and there), once by LAPACK's solve and once through its inverse (the pins'
+translations eliminated first, tests/test_pin_elimination.py): they
 differ by about eps κ (velocities) and eps κ² (accelerations, which use velocities)
 of their scale, κ = 1/rcond. The batch keeps only positions with rcond ≥ TRUSTED =
 0.02 and hands the rest to the scalar solver itself, so eps × 2500 × a few ≲ 1e-12.
@@ -28,7 +29,7 @@ from tarsim.constructions.reference import solver
 from tarsim.constructions.reference.assembly_plan import record_plan
 from tarsim.constructions.reference.batch_loops import BatchLoops, wrap
 from tarsim.constructions.reference.loop_equations import _System
-from tarsim.constructions.reference.turn import _newton, solve_turn
+from tarsim.constructions.reference.turn import TurnSolver, _newton, solve_turn
 from tarsim.exercises.catalog import bundled, resolve
 from tarsim.exercises.linkages.exercise_file import load_exercise, parse_exercise
 from tests.common import four_bar, four_bar_toml, inverted_slider_crank, offset_slider_crank
@@ -225,6 +226,40 @@ def test_the_polish_brings_a_perturbed_start_back_to_the_closed_form():
     polished, vouched = _newton(loops, shaken, angles)
     assert vouched.all()
     assert np.max(np.abs(polished - start)) <= 1e-14 * loops.sy.lc   # a few eps of the size
+
+
+def _same(a, b) -> bool:
+    """Two turns' every array equal, bit for bit (NaN where either is refused)."""
+    fields = ("inputs", "ok", "dead", "residual", "conditioning", "by_scalar")
+    dicts = ("points", "angles", "omegas", "alphas", "velocities", "accelerations", "origins",
+             "origin_velocities", "origin_accelerations")
+    tuples = ("slide_positions", "slide_velocities", "slide_accelerations")
+    return (all(np.array_equal(getattr(a, f), getattr(b, f), equal_nan=True) for f in fields)
+            and all(getattr(a, f).keys() == getattr(b, f).keys()
+                    and all(np.array_equal(getattr(a, f)[k], getattr(b, f)[k], equal_nan=True)
+                            for k in getattr(a, f)) for f in dicts)
+            and all(np.array_equal(x, y, equal_nan=True)
+                    for f in tuples for x, y in zip(getattr(a, f), getattr(b, f))))
+
+
+@pytest.mark.parametrize("name", ["crank-shaper", "six-link-homework-1", "wheel-round-circle"])
+def test_a_solver_made_once_solves_each_batch_as_solve_turn_does(name):
+    # what it keeps between calls (the equations, the pins' tree, the assembly's acts)
+    # is the same at every angle: a bisection's rounds give what fresh solves give
+    mech = _mechanism(name)
+    once = TurnSolver(mech)
+    for angles in (_turn(mech, 36), np.linspace(0.1, 0.2, 31), [2.0], _turn(mech, 7)):
+        assert _same(once.solve(angles), solve_turn(mech, angles))
+
+
+def test_a_solver_whose_stated_angle_does_not_assemble_records_its_acts_where_one_does():
+    # ground 300, crank 100, coupler 150, rocker 200 mm: the crank stops short of 180°
+    mech = four_bar(math.pi, coupler=0.15, omega2=5.0)
+    once = TurnSolver(mech)
+    assert not once.solve([math.pi]).ok.any()
+    for angles in ([0.0, 0.5], _turn(mech, 36)):
+        turn = once.solve(angles)
+        assert turn.ok.any() and _same(turn, solve_turn(mech, angles))
 
 
 def test_wrap_is_math_remainder():

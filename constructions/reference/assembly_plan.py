@@ -19,6 +19,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, replace
 from enum import StrEnum
+from functools import cached_property
 
 import numpy as np
 
@@ -223,9 +224,14 @@ class AssemblyPlan:
     mechanism: Mechanism
     acts: tuple
 
+    @cached_property
+    def system(self) -> _System:
+        """The loop equations the replay's start is laid out for (made once a plan)."""
+        return _System(self.mechanism)
+
     def place(self, angles: np.ndarray) -> Placement:
         """Replay the acts with the input link at each of ``angles`` (rad)."""
-        return _Replay(self.mechanism, np.asarray(angles, dtype=float)).run(self.acts)
+        return _Replay(self.system, np.asarray(angles, dtype=float)).run(self.acts)
 
 
 def record_plan(mech: Mechanism, angles) -> AssemblyPlan | None:
@@ -254,11 +260,12 @@ def record_plan(mech: Mechanism, angles) -> AssemblyPlan | None:
 class _Replay:
     """Arrays of the assembly's state over N angles: located points, angles, poses."""
 
-    def __init__(self, mech: Mechanism, angles: np.ndarray):
-        self.m = mech
+    def __init__(self, system: _System, angles: np.ndarray):
+        mech = self.m = system.m
         self.n = len(angles)
-        self.system = _System(mech)
-        self.loc = self.system.loc
+        self.system = system
+        self.loc = system.loc
+        self._turns: dict[int, tuple] = {}
         self.size = max(float(np.max(np.abs(v))) for v in self.loc.values())
         zero = np.zeros(self.n)
         self.at = {n: (np.full(self.n, x), np.full(self.n, y))
@@ -282,8 +289,12 @@ class _Replay:
 
     # ----- helpers
     def _turn(self, phi, v):
-        """``R(φ) v`` for a constant local vector ``v``, as (x, y) arrays."""
-        c, s = np.cos(phi), np.sin(phi)
+        """``R(φ) v`` for a constant local vector ``v``, as (x, y) arrays (cos φ and sin φ
+        taken once for each φ: a link turns each of its points with the same)."""
+        seen = self._turns.get(id(phi))
+        if seen is None or seen[0] is not phi:
+            seen = self._turns[id(phi)] = (phi, np.cos(phi), np.sin(phi))
+        _, c, s = seen
         return c * v[0] + (-s) * v[1], s * v[0] + c * v[1]
 
     def _doubt(self, where) -> None:

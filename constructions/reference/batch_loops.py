@@ -4,13 +4,15 @@
 the same rows, in the same order and with the same formulas, for N positions held as
 the rows of a (N, 3 × moving links) array, so that the Newton polish and the velocity
 and acceleration solves of a whole turn are a few numpy operations each. A 2-vector
-is a pair of (N,) arrays throughout.
+is a pair of (N,) arrays throughout. Φ_q is kept as its :meth:`~BatchLoops.entries`,
+those not 0 by their form (25 of a four-bar's 81), and made whole only where asked.
 """
 
 from __future__ import annotations
 
 import math
 from enum import StrEnum
+from functools import cached_property
 
 import numpy as np
 
@@ -39,6 +41,12 @@ def _perp(v):
     return -v[1], v[0]
 
 
+def _round_rate(e):
+    """``∂β/∂e = S e / (e·e)``: how the angle β of ``e`` turns as ``e`` moves."""
+    ee = e[0] * e[0] + e[1] * e[1]
+    return -e[1] / ee, e[0] / ee
+
+
 class _Rows(StrEnum):
     """What a joint's rows of Φ constrain, in ``_System``'s order."""
 
@@ -51,6 +59,8 @@ class _Rows(StrEnum):
     given (the frame is the other link, the offset None)."""
     ARC = "arc"
     """A point at a fixed distance from a point of another link."""
+    ROUND = "round"
+    """A wheel turned as far as its centre has rolled round a circle (see Arc.roll_gain)."""
 
 
 class BatchLoops:
@@ -78,6 +88,9 @@ class BatchLoops:
             row += 1
         for a in sy.arcs:
             out.append((row, _Rows.ARC, a))
+            row += 1
+        for a in sy.rounds:
+            out.append((row, _Rows.ROUND, a))
             row += 1
         out.append((row, _Rows.TURN, (sy.m.drive.link, 1, None)))     # None: the input angle
         return out
@@ -144,9 +157,14 @@ class BatchLoops:
                 link, other, offset = item
                 offset = angles if offset is None else offset
                 out[:, row] = wrap(self.state(q, link)[1] - self.state(q, other)[1] - offset)
-            else:
+            elif kind is _Rows.ARC:
                 e = self._arc_terms(q, item)[0]
                 out[:, row] = (e[0] * e[0] + e[1] * e[1] - item.radius ** 2) / (2.0 * item.radius)
+            else:
+                e = self._arc_terms(q, item)[0]
+                fw, fg = self.state(q, item.link)[1], self.state(q, item.guide_link)[1]
+                beta = np.remainder(np.arctan2(e[1], e[0]) - fg + math.pi, math.tau) - math.pi
+                out[:, row] = item.contact.circle.radius * (fw - fg) - item.roll_gain * beta
         return out
 
     def scaled_residual(self, q, angles) -> np.ndarray:
@@ -155,45 +173,90 @@ class BatchLoops:
 
     def jacobian(self, q) -> np.ndarray:
         """Φ_q at each row of ``q``: (N, constraints, coordinates)."""
+        return self.dense(self.entries(q))
+
+    def entries(self, q) -> np.ndarray:
+        """Φ_q's entries that are not 0 by its form, at each row of ``q``: (E, N) in the
+        order of :attr:`pattern`. A pin's rows hold a handful of the 81 entries of a
+        four-bar's Φ_q; the rest are zeros not worth the memory."""
+        slot = self.slots
+        out = np.zeros((len(slot), len(q)))
+        for row, col, value in self._terms(q):
+            out[slot[row, col]] += value
+        return out
+
+    def dense(self, entries: np.ndarray) -> np.ndarray:
+        """Φ_q (N, constraints, coordinates) from its :meth:`entries` (E, N)."""
         sy = self.sy
-        jac = np.zeros((len(sy.is_len), 3 * len(sy.moving), len(q)))   # each entry contiguous
+        jac = np.zeros((len(sy.is_len), 3 * len(sy.moving), entries.shape[1]))
+        jac[self.pattern] = entries      # each entry contiguous
+        return jac.transpose(2, 0, 1)
+
+    @cached_property
+    def slots(self) -> dict[tuple[int, int], int]:
+        """The place of each entry of Φ_q not 0 by its form, by (row, column)."""
+        found = {}
+        with np.errstate(all="ignore"):     # its numbers at q = 0 are not read
+            for row, col, _ in self._terms(np.zeros((1, 3 * len(self.sy.moving)))):
+                found.setdefault((row, col), len(found))
+        return found
+
+    @cached_property
+    def pattern(self) -> tuple[np.ndarray, np.ndarray]:
+        """The rows and columns of :meth:`entries`, in their order (an index of Φ_q)."""
+        rows, cols = zip(*self.slots) if self.slots else ((), ())
+        return np.array(rows, dtype=int), np.array(cols, dtype=int)
+
+    def _terms(self, q):
+        """Each term of Φ_q as ``(row, column, value)``, in the order they add up; a term
+        0 by its form (the y of a pin's x row, the x of a turn's row) is left out."""
+        sy = self.sy
 
         def put(row, k, dt, dphi, sign=1.0):
             if k != 1:
                 c = sy.col[k]
-                jac[row, c] += sign * dt[0]
-                jac[row, c + 1] += sign * dt[1]
-                jac[row, c + 2] += sign * dphi
+                for col, value in ((c, dt[0]), (c + 1, dt[1]), (c + 2, dphi)):
+                    if not (isinstance(value, float) and value == 0.0):
+                        yield row, col, sign * value
 
         def line_row(row, s, through, d):
             p, g, dg, arm_l, arm_g = self._slide_terms(q, s, through, d)
-            put(row, s.link, (-dg[1], dg[0]), _cross(dg, _perp(arm_l)))
-            put(row, s.guide_link, (dg[1], -dg[0]),
-                _cross(_perp(dg), (p[0] - g[0], p[1] - g[1])) - _cross(dg, _perp(arm_g)))
+            yield from put(row, s.link, (-dg[1], dg[0]), _cross(dg, _perp(arm_l)))
+            yield from put(row, s.guide_link, (dg[1], -dg[0]),
+                           _cross(_perp(dg), (p[0] - g[0], p[1] - g[1]))
+                           - _cross(dg, _perp(arm_g)))
 
         for row, kind, item in self.layout:
             if kind is _Rows.PIN:
                 n, i, j = item
                 for k, sign in ((i, 1.0), (j, -1.0)):
                     arm = _perp(self.arm(q, k, sy.loc[k, n]))
-                    put(row, k, (1.0, 0.0), arm[0], sign)
-                    put(row + 1, k, (0.0, 1.0), arm[1], sign)
+                    yield from put(row, k, (1.0, 0.0), arm[0], sign)
+                    yield from put(row + 1, k, (0.0, 1.0), arm[1], sign)
             elif kind is _Rows.LINE:
                 s, through, d, roll = item
-                line_row(row, s, through, d)
+                yield from line_row(row, s, through, d)
                 if roll:
-                    put(row, s.link, (0.0, 0.0), roll)
-                    put(row, s.guide_link, (0.0, 0.0), -roll)
+                    yield from put(row, s.link, (0.0, 0.0), roll)
+                    yield from put(row, s.guide_link, (0.0, 0.0), -roll)
             elif kind is _Rows.TURN:
-                put(row, item[0], (0.0, 0.0), 1.0)
-                put(row, item[1], (0.0, 0.0), -1.0)
-            else:
+                yield from put(row, item[0], (0.0, 0.0), 1.0)
+                yield from put(row, item[1], (0.0, 0.0), -1.0)
+            elif kind is _Rows.ARC:
                 e, arm_l, arm_g = self._arc_terms(q, item)
                 sl, sg, rho = _perp(arm_l), _perp(arm_g), item.radius
-                put(row, item.link, (e[0] / rho, e[1] / rho), (e[0] * sl[0] + e[1] * sl[1]) / rho)
-                put(row, item.guide_link, (-e[0] / rho, -e[1] / rho),
-                    -(e[0] * sg[0] + e[1] * sg[1]) / rho)
-        return jac.transpose(2, 0, 1)
+                yield from put(row, item.link, (e[0] / rho, e[1] / rho),
+                               (e[0] * sl[0] + e[1] * sl[1]) / rho)
+                yield from put(row, item.guide_link, (-e[0] / rho, -e[1] / rho),
+                               -(e[0] * sg[0] + e[1] * sg[1]) / rho)
+            else:
+                e, arm_l, arm_g = self._arc_terms(q, item)
+                k, r, m = item.roll_gain, item.contact.circle.radius, _round_rate(e)
+                sl, sg = _perp(arm_l), _perp(arm_g)
+                yield from put(row, item.link, (-k * m[0], -k * m[1]),
+                               r - k * (m[0] * sl[0] + m[1] * sl[1]))
+                yield from put(row, item.guide_link, (k * m[0], k * m[1]),
+                               k - r + k * (m[0] * sg[0] + m[1] * sg[1]))
 
     def gamma(self, q, qd) -> np.ndarray:
         """``−(Φ_q q̇)_q q̇ − Φ_tt`` at each row (the input's row carries α): (N, constraints)."""
@@ -223,11 +286,20 @@ class BatchLoops:
                                - 2.0 * wg * _cross(_perp(dg), ed) - _cross(dg, inner))
             elif kind is _Rows.TURN:
                 out[:, row] = sy.m.drive.alpha if item[2] is None else 0.0
-            else:
+            elif kind is _Rows.ARC:
                 e, arm_l, arm_g = self._arc_terms(q, item)
                 ed, wl, wg = e_dot(item.link, item.guide_link, arm_l, arm_g)
                 inner = (wl ** 2 * arm_l[0] - wg ** 2 * arm_g[0],
                          wl ** 2 * arm_l[1] - wg ** 2 * arm_g[1])
                 out[:, row] = (e[0] * inner[0] + e[1] * inner[1]
                                - (ed[0] * ed[0] + ed[1] * ed[1])) / item.radius
+            else:
+                e, arm_l, arm_g = self._arc_terms(q, item)
+                ed, wl, wg = e_dot(item.link, item.guide_link, arm_l, arm_g)
+                ee, m = e[0] * e[0] + e[1] * e[1], _round_rate(e)
+                inner = (wg ** 2 * arm_g[0] - wl ** 2 * arm_l[0],
+                         wg ** 2 * arm_g[1] - wl ** 2 * arm_l[1])
+                out[:, row] = item.roll_gain * (
+                    m[0] * inner[0] + m[1] * inner[1]
+                    - 2.0 * (e[0] * ed[0] + e[1] * ed[1]) * _cross(e, ed) / ee ** 2)
         return out

@@ -11,7 +11,9 @@ How, and why it agrees with the scalar solver to round-off:
    acts are replayed over all the angles with numpy (the same closed forms);
 2. Newton polishes, as the scalar solver does, only the rows whose scaled residual
    is above 4 eps, in a batch (:mod:`.batch_loops`);
-3. the Jacobians of the batch are inverted at once; ``q̇ = ω Φ_q⁻¹ e_input`` and
+3. the Jacobians of the batch are inverted at once, the pins' translations eliminated
+   first (:mod:`.pin_elimination`: a four-bar's 9 × 9 becomes a 3 × 3 written out,
+   where LAPACK would take a call a position); ``q̇ = ω Φ_q⁻¹ e_input`` and
    ``q̈ = Φ_q⁻¹ γ``. The inverse also gives the conditioning cheaply:
    ``r = 1 / (‖J‖_F ‖J⁻¹‖_F)`` of the length-scaled Jacobian is a lower bound of the
    scalar solver's rcond, within a factor of its column count; only where that bound
@@ -22,6 +24,9 @@ How, and why it agrees with the scalar solver to round-off:
    amplified by 1/rcond², could differ by more than 1e-12), a near point nearly
    equidistant from both solutions, a polish that does not converge. Dead points
    are always among these, so their verdict is the scalar solver's own.
+
+:class:`TurnSolver` keeps what is the same at every angle (the equations, the pins'
+tree, the recorded acts) for a search that solves a few dozen angles a round.
 
 Every mechanism the scalar solver assembles dyad by dyad replays; there is no
 mechanism-wide fallback. One whose assembly fails at every angle, or is refused
@@ -35,15 +40,16 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
-from .assembly_plan import record_plan
+from .assembly_plan import AssemblyPlan, record_plan
 from .batch_loops import BatchLoops, wrap
 from .loop_equations import _System
+from .pin_elimination import Inverse, PinElimination
 from .planar import _EPS
 from .solver import _NEWTON_STEPS, Kinematics, SingularPosition, _check, solve
 from ..errors import AssemblyError
 from ..model import Mechanism
 
-__all__ = ["Turn", "solve_turn", "TRUSTED"]
+__all__ = ["Turn", "solve_turn", "TurnSolver", "TRUSTED"]
 
 TRUSTED = 2e-2
 """Below this rcond of the scaled Jacobian a position goes to the scalar solver.
@@ -111,6 +117,14 @@ class Turn:
         w = self.omegas[link][:, None]
         return self.origin_velocities[link] + w * np.stack([-r[:, 1], r[:, 0]], axis=1)
 
+    def rates_on(self, link: int, point: str) -> tuple[np.ndarray, np.ndarray]:
+        """:meth:`velocity_on` and :meth:`acceleration_on` at once (the same numbers)."""
+        r = self.points[point] - self.origins[link]
+        w, al = self.omegas[link][:, None], self.alphas[link][:, None]
+        across = np.stack([-r[:, 1], r[:, 0]], axis=1)
+        return (self.origin_velocities[link] + w * across,
+                self.origin_accelerations[link] + al * across - w ** 2 * r)
+
     def acceleration_on(self, link: int, point: str) -> np.ndarray:
         """Acceleration (N, 2) of ``point`` fixed to ``link``: ``a_O + α × r − ω² r``."""
         r = self.points[point] - self.origins[link]
@@ -163,48 +177,82 @@ def solve_turn(mech: Mechanism, angles) -> Turn:
     >>> turn.ok.tolist(), turn.dead.tolist()
     ([False, True], [True, False])
     """
-    angles = np.asarray(angles, dtype=float).reshape(-1)
-    n = len(angles)
-    system, mech_ok = _System(mech), True
-    try:
-        _check(mech)
-    except AssemblyError:
-        mech_ok = False
-    plan = record_plan(mech, angles) if mech_ok else None
-    width = 3 * len(system.moving)
-    q, qd, qdd = (np.full((n, width), np.nan) for _ in range(3))
-    residual, rcond = np.full(n, np.nan), np.full(n, np.nan)
-    if plan is None:
-        refused, doubtful = np.ones(n, dtype=bool), np.zeros(n, dtype=bool)
-    else:
-        place = plan.place(angles)
-        refused, doubtful = place.refused.copy(), place.doubtful.copy()
-        live = np.flatnonzero(~(refused | doubtful))
-        if len(live):
-            good, rows = _solve_rows(BatchLoops(system), mech, place.q[live], angles[live])
-            doubtful[live[~good]] = True
-            at = live[good]
-            if len(at) == n:
-                q, qd, qdd, residual, rcond = rows
-            else:
-                q[at], qd[at], qdd[at], residual[at], rcond[at] = rows
-    by_scalar = doubtful
-    refusals: dict[int, AssemblyError] = {}
-    kins: dict[int, Kinematics] = {}
-    for i in np.flatnonzero(doubtful).tolist():
+    return TurnSolver(mech).solve(angles)
+
+
+class TurnSolver:
+    """:func:`solve_turn` of one mechanism, made ready once for many calls.
+
+    The loop equations and their batch form, the pins' tree that inverts their Jacobian
+    and the assembly's acts are the same at every input angle (the acts once recorded:
+    only their numbers and verdicts depend on the angle), so a search that solves a few
+    dozen angles a round, as a zero's bisection does, prepares them once.
+
+    Raises
+    ------
+    InputError
+        As :func:`.solver.solve` does (a bad slide).
+    """
+
+    def __init__(self, mech: Mechanism):
+        self.mechanism = mech
+        self.system = _System(mech)
+        self.loops = BatchLoops(self.system)
         try:
-            kins[i] = solve(_at(mech, float(angles[i])))
-        except AssemblyError as e:
-            refusals[i] = e
-    ok = ~refused
-    ok[list(refusals)] = False
-    dead = np.zeros(n, dtype=bool)
-    dead[[i for i, e in refusals.items() if isinstance(e, SingularPosition)]] = True
-    return _pack(system, angles, q, qd, qdd, residual, rcond, ok, dead, by_scalar, kins,
-                 refusals)
+            _check(mech)
+        except AssemblyError:
+            self._assembles = False
+        else:
+            self._assembles = True
+        self._plan: AssemblyPlan | None = None
+        self._tree: PinElimination | None = None
+
+    def solve(self, angles) -> Turn:
+        """The kinematics at each of ``angles`` (rad), as :func:`solve_turn` gives them."""
+        mech, system = self.mechanism, self.system
+        angles = np.asarray(angles, dtype=float).reshape(-1)
+        n = len(angles)
+        if self._plan is None and self._assembles:
+            self._plan = record_plan(mech, angles)
+        plan = self._plan
+        width = 3 * len(system.moving)
+        q, qd, qdd = (np.full((n, width), np.nan) for _ in range(3))
+        residual, rcond = np.full(n, np.nan), np.full(n, np.nan)
+        if plan is None:
+            refused, doubtful = np.ones(n, dtype=bool), np.zeros(n, dtype=bool)
+        else:
+            place = plan.place(angles)
+            refused, doubtful = place.refused.copy(), place.doubtful.copy()
+            live = np.flatnonzero(~(refused | doubtful))
+            if len(live):
+                if self._tree is None:
+                    self._tree = PinElimination(self.loops)
+                good, rows = _solve_rows(self.loops, self._tree, mech, place.q[live],
+                                         angles[live])
+                doubtful[live[~good]] = True
+                at = live[good]
+                if len(at) == n:
+                    q, qd, qdd, residual, rcond = rows
+                else:
+                    q[at], qd[at], qdd[at], residual[at], rcond[at] = rows
+        by_scalar = doubtful
+        refusals: dict[int, AssemblyError] = {}
+        kins: dict[int, Kinematics] = {}
+        for i in np.flatnonzero(doubtful).tolist():
+            try:
+                kins[i] = solve(_at(mech, float(angles[i])))
+            except AssemblyError as e:
+                refusals[i] = e
+        ok = ~refused
+        ok[list(refusals)] = False
+        dead = np.zeros(n, dtype=bool)
+        dead[[i for i, e in refusals.items() if isinstance(e, SingularPosition)]] = True
+        return _pack(self.loops, angles, q, qd, qdd, residual, rcond, ok, dead, by_scalar,
+                     kins, refusals)
 
 
-def _solve_rows(loops: BatchLoops, mech: Mechanism, q: np.ndarray, angles: np.ndarray):
+def _solve_rows(loops: BatchLoops, tree: PinElimination, mech: Mechanism, q: np.ndarray,
+                angles: np.ndarray):
     """Polish, check and differentiate the replayed starts; rows not vouched for are flagged.
 
     Returns ``(good, (q, q̇, q̈, residual, r))`` with the arrays of the good rows only.
@@ -212,39 +260,40 @@ def _solve_rows(loops: BatchLoops, mech: Mechanism, q: np.ndarray, angles: np.nd
     good = np.ones(len(q), dtype=bool)
     with np.errstate(all="ignore"):
         res = loops.residual(q, angles)
-        todo = np.flatnonzero(np.max(np.abs(res * loops.rows), axis=1) > 4 * _EPS)
+        scaled = np.max(np.abs(res * loops.rows), axis=1)
+        todo = np.flatnonzero(scaled > 4 * _EPS)
         if len(todo):
             polished, ok = _newton(loops, q[todo], angles[todo])
             q[todo], good[todo] = polished, ok
             res[todo] = loops.residual(polished, angles[todo])
-        scaled = np.max(np.abs(res * loops.rows), axis=1)
+            scaled[todo] = np.max(np.abs(res[todo] * loops.rows), axis=1)
         good &= np.isfinite(scaled) & (scaled <= 1e-10)
-        jac = loops.jacobian(q)
-        inv, ok = _inverse(jac, good)
-        good &= ok
-        r = _rcond_bound(loops, jac, inv)
+        entries = loops.entries(q)
+        inv = tree.invert(entries, good)
+        good &= inv.ok
+        r = _rcond_bound(loops, entries, inv)
         unsure = np.flatnonzero(good & (r < TRUSTED))
         if len(unsure):             # the bound is loose by up to √n twice: take the true one
-            sv = np.linalg.svd(jac[unsure] * loops.rows[None, :, None] * loops.cols[None, None, :],
+            jac = loops.dense(entries[:, unsure])
+            sv = np.linalg.svd(jac * loops.rows[None, :, None] * loops.cols[None, None, :],
                                compute_uv=False)
             r[unsure] = sv[:, -1] / sv[:, 0]
         good &= np.isfinite(r) & (r >= TRUSTED)
         if not good.all():
-            q, inv, res, r = q[good], inv[good], res[good], r[good]
-        qd = mech.drive.omega * inv[:, :, -1]
-        qdd = (inv @ loops.gamma(q, qd)[:, :, None])[:, :, 0]
+            q, inv, res, r = q[good], inv.take(good), res[good], r[good]
+        qd = mech.drive.omega * inv.column(len(loops.rows) - 1)    # the input's row is last
+        qdd = inv.solve(loops.gamma(q, qd))
     return good, (q, qd, qdd, np.max(np.abs(res), axis=1), r)
 
 
-def _rcond_bound(loops: BatchLoops, jac: np.ndarray, inv: np.ndarray) -> np.ndarray:
-    """``1 / (‖J‖_F ‖J⁻¹‖_F)`` of each length-scaled Jacobian: at most its rcond (σmin/σmax),
-    and at least that over the number of coordinates, since ‖·‖₂ ≤ ‖·‖_F ≤ √n ‖·‖₂."""
-    n = len(jac)
-    rows2, cols2 = loops.rows ** 2, loops.cols ** 2
-    by_entry = jac.transpose(1, 2, 0)       # contiguous when jac is a jacobian() view
-    big = np.outer(rows2, cols2).ravel() @ (by_entry * by_entry).reshape(-1, n)
-    small = (inv * inv).reshape(n, -1) @ (1.0 / np.outer(cols2, rows2)).ravel()
-    return 1.0 / np.sqrt(big * small)
+def _rcond_bound(loops: BatchLoops, entries: np.ndarray, inv: Inverse) -> np.ndarray:
+    """``1 / (‖J‖_F ‖J⁻¹‖_F)`` of each length-scaled Jacobian (J's :meth:`~.BatchLoops.entries`
+    given): at most its rcond (σmin/σmax), and at least that over the number of coordinates,
+    since ‖·‖₂ ≤ ‖·‖_F ≤ √n ‖·‖₂."""
+    rows, cols = loops.pattern
+    scale = (loops.rows[rows] * loops.cols[cols]) ** 2
+    big = np.einsum("en,en,e->n", entries, entries, scale)
+    return 1.0 / np.sqrt(big * inv.norm2(loops.rows, loops.cols))
 
 
 def _newton(loops: BatchLoops, q: np.ndarray, angles: np.ndarray):
@@ -274,34 +323,20 @@ def _newton(loops: BatchLoops, q: np.ndarray, angles: np.ndarray):
     return q, ok
 
 
-def _inverse(jac: np.ndarray, good: np.ndarray):
-    """``jac⁻¹`` of each row (identity where not ``good`` or singular) and which inverted."""
-    if not good.all():
-        jac = np.where(good[:, None, None], jac, np.eye(jac.shape[1]))
-    try:
-        return np.linalg.inv(jac), good.copy()
-    except np.linalg.LinAlgError:
-        inv, ok = np.empty_like(jac), good.copy()
-        for i in range(len(jac)):
-            try:
-                inv[i] = np.linalg.inv(jac[i])
-            except np.linalg.LinAlgError:
-                inv[i], ok[i] = np.eye(jac.shape[1]), False
-        return inv, ok
-
-
-def _pack(system: _System, angles, q, qd, qdd, residual, rcond, ok, dead, by_scalar, kins,
+def _pack(loops: BatchLoops, angles, q, qd, qdd, residual, rcond, ok, dead, by_scalar, kins,
           refusals) -> Turn:
     """Arrange the body coordinates as a :class:`Turn`; rows the scalar solved, from ``kins``."""
+    system = loops.sy
     mech, n = system.m, len(angles)
-    loops = BatchLoops(system)
-    origins, angles_, vel0, omegas, acc0, alphas = {}, {}, {}, {}, {}, {}
-    for k in [1] + system.moving:
-        (t, f), (v, w), (a, al) = loops.state(q, k), loops.state(qd, k), loops.state(qdd, k)
-        origins[k] = _pair(t, n)
-        vel0[k], acc0[k] = _pair(v, n), _pair(a, n)
-        angles_[k], omegas[k], alphas[k] = (np.broadcast_to(x, (n,)).copy()
-                                            for x in (wrap(f) if k != 1 else f, w, al))
+    still = np.zeros((n, 2))
+    origins, vel0, acc0 = {1: still}, {1: still.copy()}, {1: still.copy()}
+    angles_, omegas, alphas = {1: np.zeros(n)}, {1: np.zeros(n)}, {1: np.zeros(n)}
+    for k in system.moving:
+        c = system.col[k]
+        origins[k], vel0[k], acc0[k] = q[:, c:c + 2].copy(), qd[:, c:c + 2].copy(), \
+            qdd[:, c:c + 2].copy()
+        angles_[k], omegas[k], alphas[k] = wrap(q[:, c + 2]), qd[:, c + 2].copy(), \
+            qdd[:, c + 2].copy()
     carrier = {name: 1 if 1 in mech.links_at(name) else mech.links_at(name)[0]
                for name in mech.point_names}
     points = {name: origins[k] + _pair(loops.arm(q, k, system.loc[k, name]), n)
@@ -315,15 +350,15 @@ def _pack(system: _System, angles, q, qd, qdd, residual, rcond, ok, dead, by_sca
                 tuple(r[2] for r in rates), residual, rcond, origins, vel0, acc0,
                 by_scalar, dict(refusals))
     for name, k in carrier.items():     # as Kinematics does: on the point's first carrier
-        turn.velocities[name] = turn.velocity_on(k, name)
-        turn.accelerations[name] = turn.acceleration_on(k, name)
-    for arrays in (points, angles_, omegas, alphas, turn.velocities, turn.accelerations,
-                   origins, vel0, acc0):
-        for v in arrays.values():
+        turn.velocities[name], turn.accelerations[name] = turn.rates_on(k, name)
+    if not ok.all():
+        for arrays in (points, angles_, omegas, alphas, turn.velocities, turn.accelerations,
+                       origins, vel0, acc0):
+            for v in arrays.values():
+                v[~ok] = np.nan
+        for v in (x for r in rates for x in r):
             v[~ok] = np.nan
-    for v in (x for r in rates for x in r):
-        v[~ok] = np.nan
-    residual[~ok], rcond[~ok] = np.nan, np.nan
+        residual[~ok], rcond[~ok] = np.nan, np.nan
     return turn
 
 
