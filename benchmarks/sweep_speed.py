@@ -4,12 +4,15 @@ Run:  python benchmarks/sweep_speed.py [--positions 3600] [--repeat 15]
 
 The bundled four-bar (exercises/catalog/four-bar.toml: O2A 100, AB 250, O4B 200,
 O2O4 300 mm, ω2 = 10 rad/s) is solved at ``--positions`` equal steps of the crank,
-positions, velocities and accelerations of every point, five ways, in one run:
+positions, velocities and accelerations of every point, in one run:
 
 - ``solve_turn``: tarsim's analytic solver vectorised over the positions
   (constructions/reference/turn.py);
 - ``sweep_exercise``: all of what ``tarsim sweep`` computes around ``solve_turn`` (its
-  samples, extremes refined, the stated position constructed and checked);
+  curves, extremes refined, the stated position constructed and checked), B's curves
+  read as the columns it keeps them in; and again with its steps then made one by one
+  as ``Sample`` objects, which it makes only when they are first read (the files and
+  the page read them: 3600 steps cost some 5 ms);
 - the scalar loop: ``solver.solve`` once per position, as the sweep did before;
 - pylinkage (``Mechanism.step_fast_with_kinematics``, its fastest path with
   velocities and accelerations): not a dependency of tarsim; skipped with one line
@@ -22,7 +25,8 @@ positions, velocities and accelerations of every point, five ways, in one run:
 It prints the machine (cores, CPU, Python, numpy, load average), the median time of
 ``--repeat`` runs of each (the scalar loop: of at most 3), in ms for the whole turn
 and µs per position, the ratios to ``solve_turn``, and how far each answer for B
-(position, velocity, acceleration) lies from the scalar solver's.
+(position, velocity, acceleration) lies from the scalar solver's; then how many times
+pylinkage's time ``sweep_exercise`` is, in the same run (the target: 5).
 """
 
 from __future__ import annotations
@@ -144,14 +148,23 @@ def main(argv: list[str] | None = None) -> None:
 
     def swept():
         """What ``tarsim sweep`` computes: the turn, its dead points and extremes refined,
-        and the stated position constructed and checked against the curve."""
-        solved = sweep_exercise(exercise, n, of="V_B").solved
-        return {"p": np.array([(s.values["x"], s.values["y"]) for s in solved]),
-                "v": np.array([(s.values["vx"], s.values["vy"]) for s in solved]),
-                "a": np.array([(s.values["ax"], s.values["ay"]) for s in solved])}
+        and the stated position constructed and checked against the curve; B's columns
+        read as it keeps them."""
+        c = sweep_exercise(exercise, n, of="V_B").curves
+        return {"p": np.stack([c["x"], c["y"]], 1), "v": np.stack([c["vx"], c["vy"]], 1),
+                "a": np.stack([c["ax"], c["ay"]], 1)}
+
+    def stepped():
+        """The same, its steps then made one by one, as the files and the page read them."""
+        sweep = sweep_exercise(exercise, n, of="V_B")
+        _ = sweep.samples           # made here, one by one
+        c = sweep.curves
+        return {"p": np.stack([c["x"], c["y"]], 1), "v": np.stack([c["vx"], c["vy"]], 1),
+                "a": np.stack([c["ax"], c["ay"]], 1)}
 
     rows = [("tarsim solve_turn (vectorised)", *median_time(vectorised, args.repeat)),
-            ("tarsim sweep_exercise (tarsim sweep's all)", *median_time(swept, args.repeat))]
+            ("tarsim sweep_exercise (tarsim sweep's all)", *median_time(swept, args.repeat)),
+            ("  the same, then its steps as Samples", *median_time(stepped, args.repeat))]
     rows.append(("tarsim solver.solve (scalar loop)",
                  *median_time(lambda: scalar_loop(mech, angles), min(3, args.repeat))))
     try:
@@ -165,7 +178,7 @@ def main(argv: list[str] | None = None) -> None:
                      *median_time(lambda: pylinkage_run(angles, **sizes), args.repeat)))
     rows.append(("plain numpy closed form (this four-bar only)",
                  *median_time(lambda: closed_form(angles, **sizes), args.repeat)))
-    scalar = rows[2][2]
+    scalar = rows[3][2]
     scale = {"p": 0.25, "v": mech.input_speed, "a": mech.input_acceleration}
     base = rows[0][1]
     print(f"{'':46}{'total ms':>10}{'µs/pos':>9}{'× vectorised':>14}   B vs scalar (p, v, a)")
@@ -173,6 +186,10 @@ def main(argv: list[str] | None = None) -> None:
         far = [float(np.max(np.abs(out[k] - scalar[k]))) / scale[k] for k in "pva"]
         print(f"{name:46}{seconds * 1e3:10.2f}{seconds / n * 1e6:9.2f}{seconds / base:14.3g}"
               f"   {far[0]:.0e}, {far[1]:.0e}, {far[2]:.0e}")
+    peer = [seconds for name, seconds, _ in rows if name.startswith("pylinkage")]
+    if peer:
+        print(f"\npylinkage takes {peer[0] / rows[1][1]:.1f}× sweep_exercise's time "
+              f"({peer[0] / rows[2][1]:.1f}× with its steps as Samples); the target is 5×")
 
 
 if __name__ == "__main__":

@@ -112,10 +112,12 @@ def test_slow_sweep_rhombus_far(monkeypatch):
     # A rhombus (every link 100 mm), 1 km from the origin, on the branch where its rocker
     # stands still: ω4 is 0, or ω2 where it has folded over into a parallelogram, and its
     # rounding about 0 once sent the sweep bisecting 218 "reversals" of 1e-15 rad/s.
+    from tarsim.constructions.reference.turn import TurnSolver
     from tarsim.exercises.linkages import sweep
     calls = []
-    real = sweep.solve_turn
-    monkeypatch.setattr(sweep, "solve_turn", lambda *a, **k: calls.append(1) or real(*a, **k))
+    real = TurnSolver.solve
+    monkeypatch.setattr(TurnSolver, "solve",
+                        lambda self, *a, **k: calls.append(1) or real(self, *a, **k))
     ex = tarsim.load(str(HERE / "slow-sweep-rhombus-far.toml"))
     sw = sweep.sweep_exercise(ex, of="omega4")
     w2 = ex.mechanism.drive.omega

@@ -20,6 +20,7 @@ from tarsim.exercises.cli import cli
 from tarsim.exercises.linkages.exercise_file import load_exercise
 from tarsim.exercises.linkages.sweep import pick_output, sweep_exercise
 from tarsim.exercises.linkages.sweep_files import sweep_to_files
+from tarsim.exercises.linkages.sweep_output import drive_at, evaluate
 from tarsim.graphics.plot import PlotMark, Series, draw_line_plot, nice_ticks
 from tests.common import four_bar_toml
 
@@ -185,6 +186,41 @@ def test_the_same_sweep_gives_the_same_files():
     ex = exercise("crank-shaper")
     a, b = (sweep_to_files(sweep_exercise(ex, 24)) for _ in range(2))
     assert a == b
+
+
+# ----- the steps: curves as columns, each step as the scalar solver gives it --------------------
+@pytest.mark.parametrize("name, of", [("four-bar", "V_B"), ("crank-shaper", None),
+                                      ("four-bar", "theta4")])
+def test_each_step_is_the_scalar_solvers(name, of):
+    ex = exercise(name)
+    sw = sweep_exercise(ex, 36, of=of)
+    mech = ex.mechanism
+    for i, step in enumerate(sw.samples):
+        assert step.values == sw.values_at(i) and list(step.values) == list(sw.curves)
+        want = evaluate(mech, sw.output, drive_at(mech, step.angle))
+        if of == "theta4":          # the curve's θ is made continuous over the turn
+            want["theta"] += math.tau * round((step.values["theta"] - want["theta"]) / math.tau)
+        # the batch against the scalar solver: 1e-12 of each quantity's scale (see
+        # tests/test_batch_solver.py), here the curve's largest, which also bounds what is
+        # shown as 0 (rounding within 1e-12 of it)
+        for key, value in step.values.items():
+            size = max(abs(v) for v in sw.curves[key].tolist())
+            assert abs(value - want[key]) <= 1e-12 * size, (i, key)
+
+
+def test_a_points_velocity_and_acceleration_built_together_are_as_built_alone():
+    # the sweep draws V_B and A_B in one solve; each is answered by the methods, and with
+    # the numbers, of its own solve
+    from dataclasses import replace
+
+    from tarsim.exercises.linkages.solution import solve_positions
+    ex = exercise("four-bar")
+    sw = sweep_exercise(ex, 36, of="V_B")
+    for name, key in (("V_B", "v"), ("A_B", "a")):
+        q = solve_positions(replace(ex.asking((name,)), positions=()))[0].quantities[name]
+        alone = [(q.method, math.hypot(*q.value["vector"]))] + [
+            (m, math.hypot(*a.value["vector"])) for m, a in q.alternatives.items()]
+        assert [(c.method, c.graphical) for c in sw.checks if c.key == key] == alone
 
 
 # ----- a four-bar: ω4 against the table's own θ4 -----------------------------------------------

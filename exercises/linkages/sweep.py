@@ -18,67 +18,31 @@ peaks (seed 003 §4: "where position is extremal the velocity is 0").
 
 from __future__ import annotations
 
-import difflib
 import math
-import re
 from collections.abc import Callable
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
+from functools import cached_property
+from itertools import repeat
 
-from tarsim.constructions.asks import SYMBOLS, Acceleration, Velocity
+import numpy as np
+
 from tarsim.constructions.checks import NOISE
 from tarsim.constructions.reference import solver
 from tarsim.constructions.reference.change_points import change_point_between
 from tarsim.constructions.reference.limits import section_zero
-from tarsim.constructions.reference.turn import Turn, solve_turn
+from tarsim.constructions.reference.turn import Turn, TurnSolver
 from tarsim.constructions.linkages.assembly import assemble
 from tarsim.constructions.errors import AssemblyError, InputError, TarsimError
-from tarsim.constructions.linkages.limit_positions import stroke_point
-from tarsim.constructions.joints import Slide
-from tarsim.constructions.model import Drive, Mechanism
+from tarsim.constructions.model import Mechanism
 
 from .exercise_file import Exercise
 from tarsim.constructions.linkages.given_rate import convert
 from .solution import solve_positions
+from .sweep_output import (KEYS, KINDS, Output, curves_of, drive_at, evaluate, output_names,
+                           pick_output, scale_of)
 
 __all__ = ["Output", "Sample", "Event", "Check", "Sweep", "output_names", "pick_output",
            "sweep_exercise", "KEYS", "KINDS", "angle_text", "number_text"]
-
-# Column keys by output kind: position, velocity, acceleration (the plotted ones first).
-KEYS = {"slider": (("s", "x", "y"), ("v",), ("a",)),
-         "point": (("x", "y"), ("v", "vx", "vy"), ("a", "ax", "ay")),
-         "link": (("theta",), ("omega",), ("alpha",))}
-KINDS = {"x": "length", "y": "length", "s": "length", "v": "velocity", "vx": "velocity",
-         "vy": "velocity", "a": "acceleration", "ax": "acceleration", "ay": "acceleration",
-         "theta": "angle", "omega": "omega", "alpha": "alpha"}
-
-
-@dataclass(frozen=True)
-class Output:
-    """What is swept: point ``point`` taken on link ``link``, or link ``link`` itself.
-
-    ``kind`` is ``"slider"`` (a point on a straight frame guide: its values are
-    signed along ``guide``'s direction), ``"point"`` (vectors) or ``"link"``.
-    """
-
-    kind: str
-    link: int
-    point: str = ""
-    guide: Slide | None = None
-
-    def symbol(self, key: str) -> str:
-        """The column's symbol, ``X_Y`` for a subscript: "V_B", "x_B", "ω_4"."""
-        if self.kind == "link":
-            return SYMBOLS[key] + f"_{self.link}"
-        head = {"v": "V", "vx": "V", "vy": "V", "a": "A", "ax": "A", "ay": "A"}.get(key, key)
-        axis = {"vx": ",x", "vy": ",y", "ax": ",x", "ay": ",y"}.get(key, "")
-        return f"{head}_{self.point}{axis}"
-
-    @property
-    def direction(self) -> tuple[float, float]:
-        """Unit direction of the frame guide (slider only)."""
-        dx, dy = self.guide.direction
-        n = math.hypot(dx, dy)
-        return dx / n, dy / n
 
 
 @dataclass(frozen=True)
@@ -114,11 +78,21 @@ class Check:
 
 @dataclass(frozen=True)
 class Sweep:
-    """A revolution of the input: the samples, refined zeros, and the graphical checks."""
+    """A revolution of the input: its curves, refined zeros, and the graphical checks.
+
+    The curves are columns, one array a key over the steps (SI; NaN at a step that did not
+    assemble, whose reason is in ``reasons``): a turn of thousands of steps is a few array
+    operations. :attr:`samples` gives the same steps one by one, made when first read.
+    """
 
     exercise: Exercise
     output: Output
-    samples: tuple[Sample, ...]
+    angles: tuple[float, ...]
+    """The input angle at each step (rad)."""
+    curves: dict[str, np.ndarray] = field(compare=False)
+    """Each key's values over the steps, in :func:`.sweep_output.values_of`' order of keys."""
+    reasons: tuple[str, ...]
+    """Why each step has no values ("dead point: …", "cannot assemble: …"); "" if it has."""
     step: float
     events: tuple[Event, ...]
     checks: tuple[Check, ...]
@@ -127,6 +101,16 @@ class Sweep:
     notes: tuple[str, ...]
     rotates: bool = False
     """For a link: whether it turns fully (θ is then shown in [0°, 360°))."""
+
+    @cached_property
+    def samples(self) -> tuple[Sample, ...]:
+        """Each step of the revolution: its angle and values, or why it has none."""
+        rows = zip(*(c.tolist() for c in self.curves.values()))
+        values = list(map(dict, map(zip, repeat(tuple(self.curves)), rows)))
+        for i, why in enumerate(self.reasons):
+            if why:
+                values[i] = {}
+        return tuple(map(Sample, self.angles, values, self.reasons))
 
     @property
     def solved(self) -> list[Sample]:
@@ -138,96 +122,9 @@ class Sweep:
         vals = [s.values[key] for s in self.solved] + [e.values[key] for e in self.events]
         return min(vals), max(vals)
 
-
-# ----- which output ------------------------------------------------------------------------
-def _moving_points(mech: Mechanism) -> list[str]:
-    """Points not on the frame (a frame pivot is at rest)."""
-    return [p for p in mech.point_names if 1 not in mech.links_at(p)]
-
-
-def output_names(mech: Mechanism) -> list[str]:
-    """The names ``--of`` takes: ``V_P``/``A_P`` of each moving point, ``omega<n>``/``alpha<n>``/
-    ``theta<n>`` of each moving link."""
-    points = [f"{h}_{p}" for p in _moving_points(mech) for h in "VA"]
-    links = [f"{w}{n}" for n in sorted(mech.numbers) if n != 1
-             for w in ("omega", "alpha", "theta")]
-    return points + links
-
-
-def pick_output(ex: Exercise, name: str | None = None) -> Output:
-    """The output ``name`` names, or by default the exercise's first ``V_P``/``A_P``, else the
-    point on a frame slider guide (a ram, a piston), else the highest-numbered link's ω.
-
-    Raises
-    ------
-    InputError
-        For a name that is not a point's velocity or acceleration nor a link's θ, ω
-        or α, with the closest valid name.
-    """
-    mech = ex.mechanism
-    valid = output_names(mech)
-    if name is None:
-        points = _moving_points(mech)
-        name = next((a.name for a in ex.asks if isinstance(a, (Velocity, Acceleration))
-                     and a.point in points), None)
-        ram = stroke_point(mech)
-        if name is None and ram is not None:
-            name = f"V_{ram}"
-        if name is None:
-            name = f"omega{max(mech.numbers)}"
-    if name not in valid:
-        close = difflib.get_close_matches(name, valid, n=1, cutoff=0.0)
-        raise InputError(f"cannot sweep '{name}': not a point's V_/A_ nor a link's "
-                         f"omega/alpha/theta here; did you mean '{close[0]}'?")
-    if name[:2] in ("V_", "A_"):
-        p = name[2:]
-        carrier = next(k for k in mech.links_at(p) if k != 1)
-        guide = next((s for s in mech.slides if s.point == p and s.guide_link == 1), None)
-        return Output("slider" if guide else "point", carrier, p, guide)
-    return Output("link", int(re.sub(r"^\D+", "", name)))
-
-
-# ----- the analytic values -----------------------------------------------------------------
-def _evaluate(mech: Mechanism, out: Output, drive: Drive) -> dict[str, float]:
-    """The output's values (SI) with the input at ``drive``; AssemblyError if it will not go."""
-    m = mech.with_drive(drive)
-    kin = solver.solve(m)
-    if out.kind == "link":
-        n = out.link
-        return _values(out, kin.angles[n], kin.omegas[n], kin.alphas[n])
-    return _values(out, kin.points[out.point], solver.point_velocity(kin, m, out.link, out.point),
-                   solver.point_acceleration(kin, m, out.link, out.point), m.origin)
-
-
-def _turn_values(turn: Turn, out: Output) -> dict[int, dict[str, float]]:
-    """The output's values (SI) at each position of ``turn`` that assembles, by index."""
-    n, p = out.link, out.point
-    columns = ([turn.angles[n], turn.omegas[n], turn.alphas[n]] if out.kind == "link" else
-               [turn.points[p], turn.velocity_on(n, p), turn.acceleration_on(n, p)])
-    rows = zip(*(c.tolist() for c in columns))
-    origin = turn.mechanism.origin
-    return {i: _values(out, *row, origin)
-            for i, (ok, row) in enumerate(zip(turn.ok.tolist(), rows)) if ok}
-
-
-def _values(out: Output, position, velocity, acceleration,
-            origin: tuple[float, float] = (0.0, 0.0)) -> dict[str, float]:
-    """The output's keys from its position, velocity and acceleration (θ, ω, α of a link);
-    a point's x and y are said in the file's axes, the model's moved by ``origin``."""
-    if out.kind == "link":
-        return {"theta": position, "omega": velocity, "alpha": acceleration}
-    (x, y), (vx, vy), (ax, ay) = position, velocity, acceleration
-    at = {"x": x + origin[0], "y": y + origin[1]}
-    if out.kind == "slider":
-        (dx, dy), (gx, gy) = out.direction, out.guide.through
-        return {**at, "s": (x - gx) * dx + (y - gy) * dy, "v": vx * dx + vy * dy,
-                "a": ax * dx + ay * dy}
-    return {**at, "v": math.hypot(vx, vy), "vx": vx, "vy": vy,
-            "a": math.hypot(ax, ay), "ax": ax, "ay": ay}
-
-
-def _drive_at(mech: Mechanism, angle: float) -> Drive:
-    return replace(mech.drive, angle=angle)
+    def values_at(self, i: int) -> dict[str, float]:
+        """The values at step ``i`` (one that assembled)."""
+        return {k: c[i].item() for k, c in self.curves.items()}
 
 
 def sweep_exercise(ex: Exercise, steps: int = 360, *, of: str | None = None,
@@ -263,33 +160,30 @@ def sweep_exercise(ex: Exercise, steps: int = 360, *, of: str | None = None,
     out = pick_output(ex, of)
     d = mech.drive
     step = (-1.0 if d.omega < 0 else 1.0) * math.tau / steps
-    angles = [d.angle + i * step for i in range(steps)]
-    turn = solve_turn(mech, angles)          # the whole revolution at once
-    values, samples = _turn_values(turn, out), []
-    for i, angle in enumerate(angles):
-        if i in values:
-            samples.append(Sample(angle, values[i]))
-        else:
-            e = turn.refusal(i)
-            why = "dead point" if isinstance(e, solver.SingularPosition) else "cannot assemble"
-            samples.append(Sample(angle, {}, f"{why}: {e}"))
-        if progress is not None:
+    turned = d.angle + np.arange(steps) * step       # as d.angle + i * step in floats
+    turns = TurnSolver(mech)              # the turn, then its zeros' bisections
+    turn = turns.solve(turned)              # the whole revolution at once
+    curves, ok = curves_of(turn, out), turn.ok
+    reasons = [""] * steps
+    for i in np.flatnonzero(~ok).tolist():
+        reasons[i] = _refusal(turn.refusal(i))
+    angles = tuple(turned.tolist())
+    if progress is not None:
+        for _ in angles:
             progress(1)
-    failed = [s for s in samples if not s.values]
-    if len(failed) == len(samples):
+    if not ok.any():
         first = turn.refusal(0)               # its link is the one to change
         raise AssemblyError(f"no position of the revolution of link {d.link} assembles; at the "
-                            f"first, {failed[0].reason}", link=first.link, joint=first.joint)
+                            f"first, {reasons[0]}", link=first.link, joint=first.joint)
     rotates = False
     if out.kind == "link":
-        samples, rotates = _unwrap(samples)
-    sw = Sweep(ex, out, tuple(samples), step, (), (), (), (), rotates)
-    events = _events(sw)
+        curves["theta"], rotates = _unwrap(curves["theta"], ok)
+    sw = Sweep(ex, out, angles, curves, tuple(reasons), step, (), (), (), (), rotates)
+    events = _events(sw, turns)
     checks, marks, notes = _graphical(replace(sw, events=events))
-    notes += _change_point(mech, angles, turn)
+    notes += _change_point(mech, list(angles), turn)
     # Rounding noise beside the curve's own size is shown as 0 (errors are taken first).
-    solved = sw.solved
-    peak = {k: max(map(abs, [s.values[k] for s in solved])) for k in solved[0].values}
+    peak = {k: float(np.max(np.abs(c if ok.all() else c[ok]))) for k, c in curves.items()}
     for k in peak:      # y of a ram on a guide along x is noise beside its x
         peak[k] = max(v for j, v in peak.items() if KINDS[j] == KINDS[k])
 
@@ -301,15 +195,19 @@ def sweep_exercise(ex: Exercise, steps: int = 360, *, of: str | None = None,
     def quiet_all(values: dict[str, float]) -> dict[str, float]:
         return {k: 0.0 if abs(v) <= floor[k] else v for k, v in values.items()}
 
-    # Each of the turn's samples made afresh rather than by dataclasses.replace: thousands of
-    # them, where replace's own checks cost more than the quieting.
-    return replace(sw, samples=tuple(Sample(s.angle, quiet_all(s.values), s.reason)
-                                     for s in samples),
+    return replace(sw, curves={k: np.where(np.abs(c) <= floor[k], 0.0, c)
+                               for k, c in curves.items()},
                    events=tuple(replace(e, values=quiet_all(e.values)) for e in events),
                    checks=tuple(replace(c, graphical=quiet(c.key, c.graphical),
                                         curve=quiet(c.key, c.curve)) for c in checks),
                    marks=tuple((k, a, quiet(k, v), t) for k, a, v, t in marks),
                    notes=tuple(notes))
+
+
+def _refusal(e: AssemblyError) -> str:
+    """Why a step has no values, as its row says it."""
+    why = "dead point" if isinstance(e, solver.SingularPosition) else "cannot assemble"
+    return f"{why}: {e}"
 
 
 def _change_point(mech: Mechanism, angles: list[float], turn: Turn) -> list[str]:
@@ -325,26 +223,21 @@ def _change_point(mech: Mechanism, angles: list[float], turn: Turn) -> list[str]
             "[assembly] side, so they may pass from one motion to the other there"]
 
 
-def _unwrap(samples: list[Sample]) -> tuple[list[Sample], bool]:
-    """Make θ continuous over the revolution; a link that turns fully is put in [0, 2π)."""
+def _unwrap(theta: np.ndarray, ok: np.ndarray) -> tuple[np.ndarray, bool]:
+    """Make θ continuous over the revolution; a link that turns fully is put in [0, 2π).
+    Step by step in floats, each step's turn taken from the last's."""
+    at = np.flatnonzero(ok).tolist()
     prev, total, out = None, 0.0, []
-    for s in samples:
-        if not s.values:
-            out.append(s)
-            continue
-        t = s.values["theta"]
+    for t in theta[at].tolist():
         if prev is not None:
             t = prev + math.remainder(t - prev, math.tau)
             total += t - prev
         prev = t
-        out.append(Sample(s.angle, {**s.values, "theta": t}))
-    first = next(s.values["theta"] for s in out if s.values)
-    rotates = abs(total + math.remainder(first - prev, math.tau)) > math.pi   # over the cycle
-    mean = sum(s.values["theta"] for s in out if s.values) / sum(1 for s in out if s.values)
-    shift = -math.tau * round(mean / math.tau)
-    fixed = [Sample(s.angle, {**s.values, "theta": (s.values["theta"] % math.tau if rotates
-                                                    else s.values["theta"] + shift)})
-             if s.values else s for s in out]
+        out.append(t)
+    rotates = abs(total + math.remainder(out[0] - prev, math.tau)) > math.pi   # over the cycle
+    shift = -math.tau * round(sum(out) / len(out) / math.tau)
+    fixed = theta.copy()
+    fixed[at] = [t % math.tau if rotates else t + shift for t in out]
     return fixed, rotates
 
 
@@ -355,77 +248,75 @@ def _theta_like(sw: Sweep, values: dict[str, float], angle: float) -> dict[str, 
     t = values["theta"]
     if sw.rotates:
         return {**values, "theta": t % math.tau}
-    near = min(sw.solved, key=lambda s: abs(math.remainder(s.angle - angle, math.tau)))
-    ref = near.values["theta"]
+    far = [abs(math.remainder(a - angle, math.tau)) if not why else math.inf
+           for a, why in zip(sw.angles, sw.reasons)]
+    ref = sw.curves["theta"][far.index(min(far))].item()
     return {**values, "theta": ref + math.remainder(t - ref, math.tau)}
 
 
 # ----- refined zeros -----------------------------------------------------------------------
-def _events(sw: Sweep) -> tuple[Event, ...]:
+def _events(sw: Sweep, turns: TurnSolver) -> tuple[Event, ...]:
     """Zeros of the velocity and of the acceleration (scalar outputs), refined by bisection."""
     if sw.output.kind == "point":
         return ()
     _, (vkey,), (akey,) = KEYS[sw.output.kind]
-    out = [e for key in (vkey, akey) for e in _zeros(sw, key)]
+    out = [e for key in (vkey, akey) for e in _zeros(sw, key, turns)]
     return tuple(sorted(out, key=lambda e: (e.key, e.angle % math.tau)))
 
 
-def _zeros(sw: Sweep, key: str) -> list[Event]:
+def _zeros(sw: Sweep, key: str, turns: TurnSolver) -> list[Event]:
     """Where ``key`` crosses 0 (bisected) or comes to rest at it over the turn.
 
     A value within rounding of 0 beside the larger of its peak and its scale is 0: a rocker
     held still over part of the turn (a rhombus folded) flickers about 0, and its flicker
-    is no reversal to look for.
+    is no reversal to look for. The steps are compared all at once with the next and the
+    last (the turn closes on itself); only those that cross or come to rest are refined.
     """
-    peak = max(abs(s.values[key]) for s in sw.solved)
-    scale = _scale(sw.exercise.mechanism, KINDS[key])
+    f = sw.curves[key]
+    solved = np.array([not why for why in sw.reasons])
+    peak = float(np.max(np.abs(f[solved])))
+    scale = scale_of(sw.exercise.mechanism, KINDS[key])
     if peak <= 1e-9 * scale:
         return []           # identically zero (a crank's ω at constant speed, say)
     floor = NOISE * max(peak, scale)
-    out, n = [], len(sw.samples)
-    for i, a in enumerate(sw.samples):
-        b, before = sw.samples[(i + 1) % n], sw.samples[i - 1]
-        if not (a.values and b.values):
+    after, ok_after = np.roll(f, -1), np.roll(solved, -1)
+    still = np.abs(f) <= floor
+    rests = solved & ok_after & still & ~(np.roll(solved, 1) & np.roll(still, 1))
+    crosses = (solved & ok_after & ~still & (f * after < 0.0)
+               & (np.abs(after) > floor))
+    out = []
+    for i in np.flatnonzero(rests | crosses).tolist():
+        a = sw.angles[i]
+        if rests[i]:
+            out.append(Event(key, a, sw.values_at(i)))
             continue
-        fa, fb = a.values[key], b.values[key]
-        if abs(fa) <= floor:
-            if not (before.values and abs(before.values[key]) <= floor):   # at rest from here
-                out.append(Event(key, a.angle, a.values))
-        elif fa * fb < 0.0 and abs(fb) > floor:
-            found = _bisect(sw, key, a.angle, fa, a.angle + sw.step)
-            if found is not None:
-                out.append(found)
+        found = _bisect(sw, key, a, f[i].item(), a + sw.step, turns)
+        if found is not None:
+            out.append(found)
     return out
 
 
-def _bisect(sw: Sweep, key: str, lo: float, flo: float, hi: float) -> Event | None:
+def _bisect(sw: Sweep, key: str, lo: float, flo: float, hi: float,
+            turns: TurnSolver) -> Event | None:
     """The zero of ``key`` between ``lo`` and ``hi`` (narrowed to the last bit, many angles
     a round), or None if a position on the way will not assemble."""
     mech, out = sw.exercise.mechanism, sw.output
 
     def along(angles):
-        values = _turn_values(solve_turn(mech, angles), out)
-        if len(values) < len(angles):
+        turn = turns.solve(angles)
+        if not turn.ok.all():
             raise AssemblyError(f"a position between {lo} and {hi} rad will not assemble")
-        return [values[i][key] for i in range(len(angles))]
+        return curves_of(turn, out)[key]
 
     try:
         angle = section_zero(along, lo, hi, flo)
-        values = _evaluate(mech, out, _drive_at(mech, angle))
+        values = evaluate(mech, out, drive_at(mech, angle))
     except AssemblyError:
         return None
     return Event(key, angle, _theta_like(sw, values, angle))
 
 
 # ----- the graphical positions -------------------------------------------------------------
-def _scale(mech: Mechanism, kind: str) -> float:
-    """The scale an error is taken relative to where the value itself is near 0."""
-    d = mech.drive
-    return {"velocity": mech.input_speed, "acceleration": mech.input_acceleration,
-            "omega": abs(d.omega), "alpha": math.hypot(d.omega ** 2, d.alpha),
-            "angle": 1.0}.get(kind, 1.0)
-
-
 def _short(label: str) -> str:
     """"t = 2.34 s (θ2 = −44.07°)" → "t = 2.34 s"."""
     return label.split(" (")[0]
@@ -451,7 +342,7 @@ def _graphical(sw: Sweep) -> tuple[list[Check], list[tuple], list[str]]:
         drive = p.drive if p else d
         label = _short(p.label) if p else f"θ{d.link} = {angle_text(mech, d.angle)}"
         try:
-            curve = _theta_like(sw, _evaluate(mech, out, drive), drive.angle)
+            curve = _theta_like(sw, evaluate(mech, out, drive), drive.angle)
         except AssemblyError as e:
             notes.append(f"{label}: not on the curve: {e}")
             continue
@@ -467,9 +358,16 @@ def _graphical(sw: Sweep) -> tuple[list[Check], list[tuple], list[str]]:
             checks.append(_check(label, drive.angle, key, "compass (position)", value,
                                  curve[key], asm.size))
             marks.append((key, drive.angle, value, label))
+        # A point's V and A asked at once draw the polygons once, not once each, and are
+        # answered as alone: the methods of a velocity do not hang on what else is asked
+        # (a link's ω does: the velocity polygon drawn for its α answers it too).
+        try:
+            together = _constructed(ex, p, sum(groups, ())) if out.kind != "link" else None
+        except TarsimError:
+            together = None     # each alone then: keep what constructs, say why the rest not
         for names in groups:
             try:
-                sol = solve_positions(replace(ex.asking(names), positions=(p,) if p else ()))[0]
+                sol = together or _constructed(ex, p, names)
             except TarsimError as e:
                 notes.append(f"{label}: {', '.join(names)} not constructed: {e}")
                 continue
@@ -479,11 +377,17 @@ def _graphical(sw: Sweep) -> tuple[list[Check], list[tuple], list[str]]:
                     got = _from_quantity(out, name, qq.value)
                     key = next(iter(got))
                     checks.append(_check(label, drive.angle, key, method, got[key], curve[key],
-                                         _scale(sol.exercise.mechanism, KINDS[key]),
+                                         scale_of(sol.exercise.mechanism, KINDS[key]),
                                          vector=_vector_pair(out, got, curve)))
                     if qq is q:
                         marks += [(k, drive.angle, v, label) for k, v in got.items()]
     return checks, marks, notes
+
+
+def _constructed(ex: Exercise, position, names: tuple[str, ...]):
+    """The solution by construction of ``names`` at ``position`` (None: the [input] angle)."""
+    return solve_positions(replace(ex.asking(names), positions=(position,) if position
+                                   else ()))[0]
 
 
 def _compass_position(sw: Sweep, asm, curve: dict[str, float]) -> dict[str, float]:
