@@ -81,16 +81,21 @@ def view_data(ex: Exercise, *, step_deg: float = 0.5,
     chunks = [range(k, n, _CHUNKS) for k in range(_CHUNKS)]
     pages = PageFigures(first, sol, names, sense, where, _PAGE_LANGUAGES)
     drawings = pages.jobs()
-    # The frames and the figures' drawings share the cores, the longest first.
-    done = draw_each([lambda c=c: frames_of(c) for c in chunks] + drawings,
-                     [len(c) * _FRAME for c in chunks] + [_DRAWING] * len(drawings))
+    def curve() -> tuple[dict, list]:
+        sweep = sweep_exercise(first, n)
+        return _plot(sweep), _marks(sweep)
+
+    # The frames, the figures' drawings and the output's curve share the cores, the
+    # longest first.
+    done = draw_each([lambda c=c: frames_of(c) for c in chunks] + drawings + [curve],
+                     [len(c) * _FRAME for c in chunks] + [_DRAWING] * len(drawings) + [_CURVE])
     frames: list[dict] = [{}] * n
     for k, chunk in enumerate(done[:_CHUNKS]):
         frames[k::_CHUNKS] = chunk
     if progress is not None:
         progress(n)
-    figures = pages.figures(done[_CHUNKS:])
-    sweep = sweep_exercise(first, n)
+    figures = pages.figures(done[_CHUNKS:-1])
+    plot, marks = done[-1]
     used = {it[1] for f in figures for d in f["drawn"].values() for it in d["items"]
             if it[1]}
     return {
@@ -107,19 +112,22 @@ def view_data(ex: Exercise, *, step_deg: float = 0.5,
         "figures": figures,
         "ui": {lang: _ui(lang) for lang in _PAGE_LANGUAGES},
         "frames": frames,
-        "plot": _plot(sweep),
-        "marks": _marks(sweep),
+        "plot": plot,
+        "marks": marks,
     }
 
 
 _CHUNKS = 8
 """The frames are drawn in this many interleaved chunks, shared out to the cores."""
 
-_DRAWING = 1500
-"""What drawing one position's figures costs, in µs (some 150 ms)."""
+_DRAWING = 100
+"""What drawing one position's figures costs, in ms."""
 
-_FRAME = 300
-"""What a frame costs, in µs: redone and checked (one constructed afresh takes some 3 ms)."""
+_FRAME = 0.3
+"""What a frame costs, in ms: redone and checked (one constructed afresh takes some 3)."""
+
+_CURVE = 40
+"""What the output's curve costs, in ms: the turn swept and its limits found."""
 
 
 def _scales(mech: Mechanism, sol) -> dict[str, float]:
