@@ -23,8 +23,25 @@ def test_results_come_back_in_order_from_other_processes(monkeypatch):
     assert [v for _, v in done] == list(range(6))
     assert os.getpid() not in {pid for pid, _ in done}       # each drawn by a worker
     # Started heaviest first, given back in the order asked.
-    weighed = workers.draw_each([_pid_and(k) for k in range(6)], [1, 5, 2, 9, 0, 3])
+    weighed = workers.draw_each([_pid_and(k) for k in range(6)], [10, 50, 20, 90, 0, 30])
     assert [v for _, v in weighed] == list(range(6))
+    assert os.getpid() not in {pid for pid, _ in weighed}
+
+
+@pytest.mark.parametrize("weights, in_turn", [([60.0, 5.0], True), ([5.0] * 4, True),
+                                              ([40.0, 40.0, 1.0], False)])
+def test_jobs_the_cores_would_not_finish_sooner_are_done_in_turn(monkeypatch, weights,
+                                                                 in_turn):
+    """On two cores a pool saves the sum less the longest job, or half the sum: 5, 10 and
+    40.5 ms here, against a pool's own POOL_COST (40 ms). Only the last is worth forking
+    for."""
+    monkeypatch.setattr(workers, "_cores", lambda: 2)
+    if not workers._forks():
+        pytest.skip("this platform or process does not fork workers")
+    assert workers.POOL_COST == 40.0
+    done = workers.draw_each([_pid_and(k) for k in range(len(weights))], weights)
+    assert [v for _, v in done] == list(range(len(weights)))
+    assert ({pid for pid, _ in done} == {os.getpid()}) == in_turn
 
 
 def test_a_failing_job_raises_its_own_error_here(monkeypatch):
