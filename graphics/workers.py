@@ -23,8 +23,9 @@ T = TypeVar("T")
 
 POOL_COST = 40.0
 """What a pool costs in ms: forking its workers, and the results pickled back (30–50 ms
-measured for a solution's figures on a 2-core machine, against their drawing in turn). Jobs that the cores would finish
-no sooner than this run in turn: a big figure and a small one, or a few small ones."""
+measured for a solution's figures on a 2-core machine, against their drawing in turn).
+Jobs that the cores would finish no sooner than this run in turn: a big figure and a small
+one, or a few small ones."""
 
 _JOBS: list[Callable[[], object]] = []
 """The jobs of the pool being run, read by its forked workers."""
