@@ -42,7 +42,8 @@ def position(work, ask: A.Position) -> Expected:
 def centre_count(work, ask: A.CentreCount) -> Expected:
     """n(n − 1)/2 for n links; by inspection, each pair of links joined directly: by a
     pin, a block on a guide (straight or curved), or a wheel rolling without slip (a pin
-    in a slot or a cam's contact leaves only a line for its centre)."""
+    in a slot or a cam's contact leaves only a line for its centre). At infinity, each pair
+    whose analytic velocity fields differ by a translation (Δω = 0) at this position."""
     m = work.mechanism
     n = len(m.numbers)
     joined = {tuple(sorted(pair)) for p in m.point_names
@@ -51,7 +52,25 @@ def centre_count(work, ask: A.CentreCount) -> Expected:
                if s.kind is SlideKind.BLOCK or s.rolling}
     total = n * (n - 1) // 2
     return Expected({"value": total, "by_inspection": len(joined),
-                     "by_kennedy": total - len(joined)})
+                     "by_kennedy": total - len(joined), "far_centres": _far_centres(work)})
+
+
+def _far_centres(work) -> int:
+    """How many centres the reference puts at infinity. Two links moving together have every
+    point for their centre; a block on a straight guide's joint then names the one at
+    infinity, square to the guide, and any other pair is taken where it is drawn."""
+    m, far = work.mechanism, 0
+    blocks = {tuple(sorted((s.link, s.guide_link))) for s in m.slides
+              if s.kind is SlideKind.BLOCK and not s.rolling}
+    for i, j in combinations(sorted(m.numbers), 2):
+        try:
+            far += instant_centre(work.kinematics, i, j,
+                                  pin=shared_pin(m, i, j)).is_at_infinity
+        except MoveTogether:
+            far += (i, j) in blocks
+        except DegenerateInput:        # no relative motion to place it by
+            continue
+    return far
 
 
 def centre(work, ask: A.Centre) -> Expected:

@@ -15,7 +15,8 @@ from tarsim.constructions import asks as A
 from tarsim.constructions.reference import solver
 from tarsim.exercises.catalog import load
 from tarsim.exercises.linkages.solution import solve_exercise, solve_overall
-from tarsim.exercises.linkages.answer_text import answer_line
+from tarsim.constructions.narration import speaking
+from tarsim.exercises.linkages.answer_text import answer_line, overall_text
 from tarsim.exercises.linkages.solution_files import solve_worked
 
 
@@ -59,8 +60,8 @@ def test_the_four_bars_crank_pin_is_where_its_crank_puts_it():
 def test_the_count_of_centres_is_n_n_minus_1_over_2_split_as_found(name, total, inspected):
     ex = load(name).asking(("n_centres",))
     q = solve_overall(ex).quantities["n_centres"]
-    assert q.value == {"value": total, "by_inspection": inspected,
-                       "by_kennedy": total - inspected}
+    assert {k: q.value[k] for k in ("value", "by_inspection", "by_kennedy")} == {
+        "value": total, "by_inspection": inspected, "by_kennedy": total - inspected}
     assert q.reference == q.value and q.passed
     n = len(ex.mechanism.numbers)
     assert total == n * (n - 1) // 2
@@ -77,3 +78,27 @@ def test_the_count_and_the_positions_are_in_the_grammar_and_the_files(tmp_path):
     assert "positions.svg" in files                    # the compass work that placed B
     assert '"n_centres"' in files["results.json"] and '"pos_B"' in files["results.json"]
     assert "With centre O4 and radius O4B = 200 mm" in files["steps.md"]
+
+
+@pytest.mark.parametrize("name, far", [
+    ("four-bar", 0),                    # every link turns at its own rate: no centre is far
+    ("offset-slider-crank", 1),         # the block on the straight guide: I14 alone
+    ("parallelogram-four-bar", 2),      # ω2 = ω4 and the coupler translates: I24 and I13
+])
+def test_n_centres_counts_the_centres_at_infinity(name, far):
+    # Closed forms: I_ij is at infinity exactly where ω_i = ω_j. A slider-crank's block
+    # never turns (ω4 = ω1 = 0) and nothing else shares a rate; a parallelogram's crank
+    # and rocker turn alike (ω2 = ω4), and its coupler with the frame (ω3 = ω1 = 0).
+    q = solve_overall(load(name).asking(("n_centres",))).quantities["n_centres"]
+    assert q.value["far_centres"] == far
+    assert q.reference["far_centres"] == far and q.passed
+
+
+def test_the_centres_at_infinity_are_said_in_english_and_persian():
+    ex = load("parallelogram-four-bar").asking(("n_centres",))
+    q = solve_overall(ex).quantities["n_centres"]
+    line = answer_line("n_centres", q, ex.mechanism.units, whole=True)
+    assert "(4 by inspection, 2 by Kennedy; 2 at infinity)" in line
+    with speaking("fa"):
+        said = overall_text("n_centres", q.value, ex.mechanism.units)
+    assert "در بی‌نهایت" in said and "۲" in said

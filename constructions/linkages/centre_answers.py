@@ -62,12 +62,14 @@ def answer_centre(work, ask: A.Centre) -> Answer:
 
 def answer_count(work, ask: A.CentreCount) -> Answer:
     """How many centres the circle diagram holds: n(n − 1)/2 chords, those drawn solid by
-    inspection, the rest dashed by Kennedy's theorem."""
+    inspection, the rest dashed by Kennedy's theorem; and how many of them lie at infinity
+    at this position (a block's on a straight guide, two links that translate together)."""
     cs = located(work)
     n = len(cs.links)
     total, inspected = len(cs.found), len(cs.primaries)
+    far = sum(cs.point(*pair).is_at_infinity for pair in cs.found)
     return Answer(ask, {"value": total, "by_inspection": inspected,
-                        "by_kennedy": total - inspected}, 1.0,
+                        "by_kennedy": total - inspected, "far_centres": far}, 1.0,
                   f"circle diagram, n(n − 1)/2 with n = {n}",
                   refs=tuple(cs.construction_refs()))
 

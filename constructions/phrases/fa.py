@@ -127,8 +127,8 @@ WORDS: dict[str, str] = {
     "triple-rocker": "سه‌آونگی", "change-point": "نقطهٔ تغییر",
     "{span} = {length} only ({kind})": "{span} تنها برابر {length} ({kind})",
     "{value} ({here} at this position)": "{value} ({here} در این وضعیت)",
-    "{value} ({inspection} by inspection, {kennedy} by Kennedy)":
-        "{value} ({inspection} با مشاهده، {kennedy} با قضیهٔ کندی)",
+    "{value} ({inspection} by inspection, {kennedy} by Kennedy; {far} at infinity)":
+        "{value} ({inspection} با مشاهده، {kennedy} با قضیهٔ کندی؛ {far} در بی‌نهایت)",
     "found": "یافته", "Willis": "ویلیس", "the same": "برابر", "yes": "بله", "NO": "خیر",
     "internal": "داخلی", "external": "خارجی", "the same way": "در همان جهت",
     "the other way": "در جهت مخالف", "negative: opposite senses": "منفی: جهت\u200cها مخالف",

@@ -45,10 +45,11 @@ def overall_text(name: str, v: dict, units) -> str:
     if "point" in v:
         return length(v["value"])
     if "by_inspection" in v:
-        return words("{value} ({inspection} by inspection, {kennedy} by Kennedy)",
-                     value=numerals(str(v["value"])),
+        return words("{value} ({inspection} by inspection, {kennedy} by Kennedy; {far} at "
+                     "infinity)", value=numerals(str(v["value"])),
                      inspection=numerals(str(v["by_inspection"])),
-                     kennedy=numerals(str(v["by_kennedy"])))
+                     kennedy=numerals(str(v["by_kennedy"])),
+                     far=numerals(str(v.get("far_centres", 0))))
     if "slow_deg" in v:
         return numerals(f"{v['value']:.6g} ({v['slow_deg']:.5g}° / {v['quick_deg']:.5g}°)")
     return numerals(f"{v['value']}")
