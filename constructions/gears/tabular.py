@@ -195,7 +195,8 @@ def _carry_speeds(train: GearTrain, known: dict[int, Fraction], steps: list[Phra
 def _ordinary(train: GearTrain) -> TrainSpeeds:
     first = train.input_member
     steps = [phrase("gears.ordinary_start", member=train.said(first, opening=True),
-                    speed=_speed(train, train.input_speed))]
+                    speed=_speed(train, train.input_speed)) if train.speed_given else
+             phrase("gears.ordinary_turn", member=train.said(first, opening=True))]
     via: dict[int, tuple[int, Mesh | None]] = {}
     # A fixed arm (the planetary train held as an ordinary one) stands still.
     held = (train.fixed,) if train.fixed is not None else ()
@@ -237,12 +238,16 @@ def _planetary(train: GearTrain) -> TrainSpeeds:
                          "still with the fixed member, so it cannot drive the train",
                          file=train.source or None)
     scale = train.input_speed / total[first]
-    steps.append(phrase("gears.scaled", member=train.said(first, opening=True),
-                        total=fraction_text(total[first]),
-                        speed=_speed(train, train.input_speed), scale=fraction_text(scale),
-                        unit=train.units.speed))
+    if train.speed_given:
+        steps.append(phrase("gears.scaled", member=train.said(first, opening=True),
+                            total=fraction_text(total[first]),
+                            speed=_speed(train, train.input_speed), scale=fraction_text(scale),
+                            unit=train.units.speed))
+    else:               # no speed given: the totals over the input's are the ratios asked
+        steps.append(phrase("gears.over_input", member=train.said(first, opening=True),
+                            total=fraction_text(total[first]), i=first))
     speeds = {m: total[m] * scale for m in members}
-    xy = _xy(train, held, speeds)
+    xy = _xy(train, held, speeds) if train.speed_given else ()
     return TrainSpeeds(speeds, tuple(steps), Table(members, locked, held, total, scale),
                        "tabular", xy)
 

@@ -91,6 +91,9 @@ class GearTrain:
     input_power: Fraction | None = None
     name: str = ""
     source: str = ""
+    speed_given: bool = True
+    """False where the file gives no speed (only ratios or torques are asked): the input
+    then turns 1 of the file's unit, and only what does not depend on it is said."""
 
     # ----- the members ----------------------------------------------------------------------
     def gear(self, number: int) -> Gear:

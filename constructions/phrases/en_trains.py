@@ -8,6 +8,10 @@ __all__ = ["PHRASES"]
 PHRASES: dict[str, str] = {
     "gears.ordinary_start": "{member}, the input, turns {speed}. Carry one turn of it through "
                             "the meshes:",
+    "gears.ordinary_turn": "{member} is the input; no speed is given, and none is needed for "
+                           "a ratio. Carry one turn of it through the meshes:",
+    "gears.over_input": "{member}, the input, turns {total} in the total row: each total "
+                        "over {total} is its member's speed over ω{i}.",
     "gears.mesh_carries": "{driven} meshes {kind}ly with {driver}, so it turns {way}, "
                           "N{a}/N{b} = {na}/{nb} as fast: {turns} → {result}.",
     "gears.shaft_carries": "{member} is on one shaft with {other}: it turns alike, {turns}.",

@@ -34,6 +34,7 @@ WORDS: dict[str, str] = {
     "arm {arm} held, {fixed} turned {turn}": "بازوی {arm} ثابت، {fixed} یک دور منفی",
     "total": "مجموع",
     "× {scale} {unit}: speed": "× {scale} {unit}: سرعت",
+    "turns per turn of {member} (ccw +)": "دور به ازای یک دور {member} (پادساعتگرد +)",
     "speed ({unit}, ccw +)": "سرعت ({unit}، پادساعتگرد +)",
     "Speeds in {unit}, counter-clockwise positive. Each is checked by the Willis equation of "
     "every mesh, solved as one linear system: the same fraction.":
@@ -66,6 +67,11 @@ WORDS: dict[str, str] = {
 }
 
 PHRASES: dict[str, str] = {
+    "gears.ordinary_turn": "{member} عضو ورودی است؛ سرعتی داده نشده و برای نسبت سرعت نیازی "
+                           "به آن نیست. یک دور چرخش آن را از طریق درگیری‌ها به عضوهای دیگر "
+                           "منتقل کنید:",
+    "gears.over_input": "{member}، یعنی عضو ورودی، در ردیف مجموع {total} دور می‌چرخد: مجموع "
+                        "هر عضو تقسیم بر {total}، نسبت سرعت آن به ω{i} است.",
     "gears.ordinary_start": "{member}، یعنی عضو ورودی، با {speed} می‌چرخد. یک دور چرخش آن را از "
                             "طریق درگیری‌ها به عضوهای دیگر منتقل کنید:",
     "gears.mesh_carries": "{driven} با {driver} درگیری {kind} دارد، پس {way} و با سرعتی "

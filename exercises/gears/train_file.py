@@ -90,9 +90,11 @@ class _Reader:
         shafts = self.shafts()
         fixed = self.fixed()
         member, speed = self.input(units)
-        torque, power = self.load()
-        train = GearTrain(gears, meshes, shafts, arm, arm_name, fixed, member, speed, units,
-                          planets, torque, power, self.text("name") or self.id, self.filename)
+        torque, power = self.load(speed is not None)
+        train = GearTrain(gears, meshes, shafts, arm, arm_name, fixed, member,
+                          Fraction(1) if speed is None else speed, units, planets, torque,
+                          power, self.text("name") or self.id, self.filename,
+                          speed_given=speed is not None)
         try:
             train.check()
         except InputError as e:
@@ -269,12 +271,18 @@ class _Reader:
                                 "holds one still", key="fixed")
         return self.integer(v, "the fixed member", "", "fixed")
 
-    def input(self, units: SpeedUnits) -> tuple[int, Fraction]:
+    def input(self, units: SpeedUnits) -> tuple[int, Fraction | None]:
+        """The member whose speed is given (any member but the fixed one, the output's
+        shaft too), and its speed, CCW-positive; None where no speed is given (a file that
+        asks only ratios or torques needs none)."""
         t = self.data.get("input")
-        if not isinstance(t, dict) or "member" not in t or "speed" not in t:
+        if not isinstance(t, dict) or "member" not in t:
             raise self.fail("give the driving member and its speed: member = 2, "
                             f"speed = 80 ({units.speed}), sense = \"cw\"", "input")
         member = self.integer(t["member"], "the input member", "input", "member")
+        if "speed" not in t:
+            self.known(t, ("member", "sense", "torque", "power"), "input")
+            return member, None
         speed = self.exact(t["speed"], "the input speed", "input", "speed")
         sense = t.get("sense", "ccw")
         if sense not in ("cw", "ccw"):
@@ -287,7 +295,7 @@ class _Reader:
                                 "torque (N·m) or power (W)", "input", k)
         return member, speed if sense == "ccw" else -speed
 
-    def load(self) -> tuple[Fraction | None, Fraction | None]:
+    def load(self, speed_given: bool = True) -> tuple[Fraction | None, Fraction | None]:
         """The input's torque (N·m) or power (W), if given: one of them, positive."""
         t = self.data["input"]
         given = [k for k in ("torque", "power") if k in t]
@@ -295,6 +303,9 @@ class _Reader:
             raise self.fail("give the input's torque or its power, not both", "input", "power")
         if not given:
             return None, None
+        if given[0] == "power" and not speed_given:
+            raise self.fail("the input's power gives its torque through its speed: give "
+                            "speed = … in [input] too", "input", "power")
         v = self.exact(t[given[0]], f"the input {given[0]}", "input", given[0])
         if v <= 0:
             raise self.fail(f"the input {given[0]} must be positive: it drives the train "
@@ -351,7 +362,7 @@ class _Reader:
         t = self.data.get("ask")
         every = tuple(f"omega{m}" for m in train.members)
         if t is None:
-            return every
+            return every if train.speed_given else self.ratios(train)
         find = t.get("find") if isinstance(t, dict) else None
         if isinstance(t, dict):
             self.known(t, ("find",), "ask")
@@ -373,6 +384,10 @@ class _Reader:
                 raise self.fail(f"cannot find '{q}' for this train; ask {', '.join(every)}, a "
                                 f"ratio such as {every[-1]}/{every[0]}, or a torque "
                                 f"{torques[-1]}", "ask", "find")
+            if q in every and not train.speed_given:
+                raise self.fail(f"cannot find '{q}' without a speed: give speed = … "
+                                f"({train.units.speed}) in [input], or ask a ratio such as "
+                                f"{q}/omega{train.input_member}", "ask", "find")
             if len(parts) == 2 and train.fixed is not None and int(
                     parts[1].removeprefix("omega")) in train.body(train.fixed):
                 held = int(parts[1].removeprefix("omega"))
@@ -389,6 +404,15 @@ class _Reader:
             raise self.fail("the fixed member's holding torque needs the output's: ask the "
                             "output's torque too", "ask", "find")
         return tuple(find)
+
+    @staticmethod
+    def ratios(train: GearTrain) -> tuple[str, ...]:
+        """What a file that gives no speed and asks nothing is told: each turning member's
+        speed over the input's."""
+        still = set(train.body(train.input_member)) | (
+            set(train.body(train.fixed)) if train.fixed is not None else set())
+        return tuple(f"omega{m}/omega{train.input_member}" for m in train.members
+                     if m not in still)
 
 
 def _shown(v: Any) -> str:

@@ -296,6 +296,9 @@ class TrainSolution(ChapterFiles):
         speeds = [numerals(significant(float(found.speeds[m]))) for m in train.members]
         t = found.table
         if t is None:
+            if not train.speed_given:      # the speeds for one turn of the input: its ratios
+                return heads, [(words("turns per turn of {member} (ccw +)",
+                                      member=str(train.input_member)), speeds)]
             return heads, [(words("speed ({unit}, ccw +)", unit=unit_words(unit)), speeds)]
 
         def row(turns: dict[int, Fraction]) -> list[str]:
@@ -308,8 +311,8 @@ class TrainSolution(ChapterFiles):
             (words("arm {arm} held, {fixed} turned {turn}", arm=str(train.arm),
                    fixed=str(train.fixed), turn=numerals("−1")), row(t.held)),
             (words("total"), row(t.total)),
-            (words("× {scale} {unit}: speed", scale=numerals(fraction_text(t.scale)),
-                   unit=unit_words(unit)), speeds)]
+            *([(words("× {scale} {unit}: speed", scale=numerals(fraction_text(t.scale)),
+                      unit=unit_words(unit)), speeds)] if train.speed_given else [])]
 
     @property
     def figures(self) -> dict[str, Any]:
@@ -407,7 +410,8 @@ def solve_train(ex: TrainExercise) -> TrainSolution:
     reference = willis_speeds(train)
     refuse_beyond_floats(train, found.speeds)
     refuse_still_ratios(ex, found.speeds, reference)
-    drawable = found.table is not None and undrawable(train) is None
+    # the diagram lays off the input's velocity: drawn only for a speed the file gives
+    drawable = found.table is not None and train.speed_given and undrawable(train) is None
     diagram = draw_kutzbach(train, found.speeds) if drawable else None
     mesh = ref = None
     if ex.involute is not None:

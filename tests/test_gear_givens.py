@@ -1,0 +1,125 @@
+"""Gear trains posed as the textbooks pose them: the given speed on any member (the output's
+too), no speed where only ratios or torques are asked, two given speeds, torques and power
+with an efficiency, teeth the data imply, identical planets listed as gears. Each answer is
+held to the textbook's closed form (exact fractions: a tolerance of 0)."""
+
+from __future__ import annotations
+
+from fractions import Fraction
+
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from tarsim.constructions.errors import InputError
+from tarsim.exercises.catalog import load
+from tarsim.exercises.gears.train_file import parse_train
+from tarsim.exercises.gears.train_solution import solve_train
+
+F = Fraction
+
+SIMPLE = """name = "sun, planet, ring"
+fixed = {fixed}
+
+[[gear]]
+number = 2
+teeth = {sun}
+
+[[gear]]
+number = 3
+teeth = {planet}
+carrier = 5
+
+[[gear]]
+number = 4
+teeth = {ring}
+
+[arm]
+number = 5
+
+[[mesh]]
+gears = [2, 3]
+
+[[mesh]]
+gears = [3, 4]
+kind = "internal"
+
+[input]
+{given}
+
+[ask]
+find = {find}
+"""
+
+
+def simple(sun=40, planet=20, ring=80, fixed=4, given="member = 2\nspeed = 100",
+           find='["omega5"]'):
+    return SIMPLE.format(sun=sun, planet=planet, ring=ring, fixed=fixed, given=given, find=find)
+
+
+# ----- the given speed on any member, and none where none is needed ---------------------------
+def test_the_arm_s_speed_given_gives_the_sun_s_by_one_plus_ring_over_sun():
+    """The bundled example: ring fixed, the arm (the output) at 100 rpm cw; ω2 = (1 + N4/N2)·ω5
+    = 3 × (−100) = −300 rpm, and the planet ω3 = ω5 − (N4/N3)(0 − ω5)… = +300."""
+    s = solve_train(load("output-speed-given"))
+    q = s.quantities
+    assert q["omega2"].exact == F(-300) == q["omega2"].reference
+    assert q["omega2/omega5"].exact == 1 + F(80, 40)
+    # the planet relative to the arm: (ω3 − ω5)/(ω4 − ω5) = N4/N3
+    assert (q["omega3"].exact + 100) / (0 + 100) == F(80, 20)
+    assert s.passed
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.integers(12, 60), st.integers(12, 60), st.sampled_from(["2", "3", "5"]),
+       st.integers(1, 5000))
+def test_the_given_speed_on_any_member_gives_willis_closed_form(sun, planet, member, speed):
+    """Whatever member's speed is given, the others follow from the fixed ring's Willis
+    equation: ω2 = ω5(1 + N4/N2), ω3 = ω5(1 − N4/N3)."""
+    ring = sun + 2 * planet
+    ratio = {"2": 1 + F(ring, sun), "3": 1 - F(ring, planet), "5": F(1)}   # ω_k/ω5
+    text = simple(sun, planet, ring, given=f"member = {member}\nspeed = {speed}",
+                  find='["omega2", "omega3", "omega5"]')
+    q = solve_train(parse_train(text, "t.toml")).quantities
+    arm = F(speed) / ratio[member]
+    assert q["omega5"].exact == arm
+    assert q["omega2"].exact == arm * ratio["2"] and q["omega3"].exact == arm * ratio["3"]
+
+
+def test_ratio_only_needs_no_speed_and_gives_the_torques():
+    """The bundled example: ω4/ω2 = N2/(N1 + N2) = 20/100, T4 = −T2/(1/5) = −150 N·m, the
+    ring held by −(30 − 150) = 120 N·m; no speed in the file, none in the table."""
+    s = solve_train(load("ratio-only"))
+    q = s.quantities
+    assert q["omega4/omega2"].exact == F(20, 100)
+    assert (q["torque4"].exact, q["torque1"].exact) == (F(-150), F(120))
+    assert s.passed and s.diagram is None
+    heads, rows = s._table()
+    assert len(rows) == 3                 # locked, held, total: no row of speeds
+
+
+def test_a_speed_asked_without_a_speed_given_is_refused_at_the_ask():
+    text = simple(given="member = 2", find='["omega5"]')
+    with pytest.raises(InputError, match=r"^t\.toml:\d+: \[ask\.find\] cannot find 'omega5' "
+                                         r"without a speed"):
+        parse_train(text, "t.toml")
+
+
+def test_without_a_speed_or_an_ask_the_ratios_over_the_input_are_given():
+    s = solve_train(parse_train(simple(given="member = 2").replace(
+        '[ask]\nfind = ["omega5"]\n', ""), "t.toml"))
+    assert set(s.quantities) == {"omega3/omega2", "omega5/omega2"}
+    assert s.quantities["omega5/omega2"].exact == F(40, 120)
+
+
+def test_an_ordinary_train_without_a_speed_gives_its_train_value():
+    text = open(load("compound-train").train.source).read()
+    s = solve_train(parse_train(text.replace('speed = 900\nsense = "cw"', "").replace(
+        '"omega6/omega2", "omega6"', '"omega6/omega2"'), "c.toml"))
+    assert s.quantities["omega6/omega2"].exact == F(-20 * 25, 60 * 75)
+    assert "turns per turn of 2" in str(s.figures["train-value"])
+
+
+def test_power_without_a_speed_is_refused():
+    with pytest.raises(InputError, match="power gives its torque through its speed"):
+        parse_train(simple(given="member = 2\npower = 100"), "t.toml")
