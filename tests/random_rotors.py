@@ -363,6 +363,7 @@ def _rotor_wrongs(data, metre: float, doc: dict, lines: list[str]) -> list[str]:
         if none == ("angle_deg" in q):
             wrong.append(f"mr_{name}: none_needed and angle_deg disagree")
         wrong += _printed(name, t, metre, want[name], none, lines, p_scale)
+        wrong += _balance_mass(name, t, metre, want[name], doc, p_scale)
     # The balanced rotor: its masses and the products found leave no force, and no couple.
     left_f = force + sum(g for g, _ in got.values())
     left_c = couple + sum(g * (z - za) for g, z in got.values())
@@ -402,6 +403,19 @@ def _printed(name, t, metre, want: complex, none: bool, lines: list[str],
     if abs(float(m["mass"]) - mass) > 1e-5 * mass + 1e-300:
         out.append(f"plane {name}: mass printed {m['mass']} kg, the closed form {mass:.6g}")
     return out
+
+
+def _balance_mass(name, t, metre, want: complex, doc: dict, scale: float) -> list[str]:
+    """results.json's balancing mass (at the stated radius) or radius (for the stated mass),
+    against the closed form's product over the given number."""
+    key, given = (f"mass_{name}", t["radius"] * metre) if "radius" in t else (
+        f"radius_{name}", t.get("mass"))
+    q = doc.get(key)
+    if q is None:
+        return [f"results.json has no {key}"]
+    if abs(q["value"] * given - abs(want)) > AGREE * scale:
+        return [f"{key} = {q['value']:.6g}, the closed form {abs(want) / given:.6g}"]
+    return []
 
 
 def _engine_wrongs(data, metre: float, rate: float, doc: dict, lines: list[str]) -> list[str]:

@@ -195,3 +195,22 @@ def test_sizes_no_figure_can_hold_are_refused_in_one_line(old, new):
     with pytest.raises(InputError, match=r"rotor.toml:\d+: .* must be between 1e-06 and "
                                           r"1e\+06 in size \(or 0\)"):
         parse_balance(TEXT.replace(old, new, 1), "rotor.toml")
+
+
+@pytest.mark.parametrize("given, key, want", [
+    ("radius = 0.2", "mass_B", 23.219789144 / 0.2),      # kg at the stated 0.2 m
+    ("mass = 116", "radius_B", 23.219789144 / 116),      # m for a stated 116 kg
+])
+def test_four_masses_one_plane(given, key, want):
+    """The books' four masses (200, 300, 240, 260 kg at 0.2, 0.15, 0.25, 0.3 m, 45°, 75°,
+    135° apart): Σ mᵢrᵢ e^{iθᵢ} summed by hand = 21.63192 + 8.43911i kg·m, so the balancing
+    product is 23.21979 kg·m at 201.312° (the books read 116 kg at 201.5° off a drawing).
+    results.json gives the mass, or the radius, itself; to 1e-9 relative: the closed form
+    is written to ten figures."""
+    text = Path(bundled("balancing")["four-masses-one-plane"]).read_text(encoding="utf-8")
+    assert "radius = 0.2               #" in text
+    ex = parse_balance(text.replace("radius = 0.2               #", given + " #", 1), "b.toml")
+    q = solve_balance(ex).results["quantities"][key]
+    assert q["value"] == pytest.approx(want, rel=1e-9)
+    assert q["value"] == pytest.approx(q["reference"]["value"], rel=1e-12)
+    assert q["angle_deg"] == pytest.approx(201.311913, abs=1e-6)

@@ -280,6 +280,8 @@ class BalanceSolution(ChapterFiles):
                     "angle_deg": angle_deg(got)}
                 q[f"mr_{name}"] = Checked({"value": list(got), **where},
                                           {"value": [w + 0.0 for w in want]}, method=method)
+            for p in ex.rotor.planes:
+                q |= self._balance_mass(p, method)
         elif len(ex.engine.cranks) == 1:
             prim, sec, along, across = single_cylinder(ex.engine, ex.engine.at)
             q |= {name: Checked({"value": v}) for name, v in (
@@ -293,6 +295,26 @@ class BalanceSolution(ChapterFiles):
                     {"value": self.engine_polygons.left(kind) * ex.engine.speed ** 2},
                     {"value": value}, method=f"{kind} polygon")
         return q
+
+    def _balance_mass(self, p, method: str) -> dict[str, Checked]:
+        """Plane ``p``'s balancing mass as the books ask it: the mass (kg) at the stated
+        radius, ``mass_<plane>``, or the radius (m) for the stated mass, ``radius_<plane>``,
+        with its angle; the reference divides the closed form's product by the same given
+        number. A plane that needs no mass comes to 0 kg (or a radius of 0), with no angle."""
+        v, mass, radius = self.placed(p)
+        want = self.expected[p.name]
+        none = p.name in self.balance.none
+        given = p.radius if p.radius is not None else p.mass
+        found, ref = (mass, math.hypot(*want) / given)
+        where = {"none_needed": True} if none else {"angle_deg": angle_deg(v)}
+        there = {} if none else {"angle_deg": angle_deg(want)}
+        if p.radius is not None:
+            return {f"mass_{p.name}": Checked(
+                {"value": found, "unit": "kg", "radius": p.radius, **where},
+                {"value": ref, **there}, method=method)}
+        return {f"radius_{p.name}": Checked(
+            {"value": radius, "unit": "m", "mass": p.mass, **where},
+            {"value": ref, **there}, method=method)}
 
     @property
     def figures(self) -> dict[str, Any]:
