@@ -123,3 +123,55 @@ def test_an_ordinary_train_without_a_speed_gives_its_train_value():
 def test_power_without_a_speed_is_refused():
     with pytest.raises(InputError, match="power gives its torque through its speed"):
         parse_train(simple(given="member = 2\npower = 100"), "t.toml")
+
+
+# ----- two given speeds --------------------------------------------------------------------------
+def two(a, sa, b, sb, sun=30, planet=20, ring=70, fixed=None, find='["omega2", "omega3", '
+        '"omega4", "omega5"]'):
+    text = simple(sun, planet, ring, fixed=0, given=f"member = {a}\nspeed = {sa}\n\n"
+                  f"[[input]]\nmember = {b}\nspeed = {sb}", find=find)
+    text = text.replace("[input]\nmember", "[[input]]\nmember", 1)
+    return text.replace("fixed = 0\n", "" if fixed is None else f"fixed = {fixed}\n")
+
+
+def test_the_arm_and_the_sun_both_turning_give_the_ring_by_willis():
+    """The bundled example: ω4 = ω5 − (N2/N4)(ω2 − ω5) = −100 − (30/70)·300 = −1600/7 rpm,
+    ω3 = ω5 − (N2/N3)(ω2 − ω5) = −100 − (30/20)·300 = −550 rpm."""
+    s = solve_train(load("two-speeds-arm-and-sun"))
+    q = s.quantities
+    assert q["omega4"].exact == F(-1600, 7) and q["omega3"].exact == F(-550)
+    assert s.passed and s.found.table.weights == (F(-100), F(-300))
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.integers(12, 60), st.integers(12, 40), st.integers(-3000, 3000).filter(bool),
+       st.integers(-3000, 3000))
+def test_a_sun_and_a_ring_both_driven_give_the_arm_as_their_weighted_mean(sun, planet, w2, w4):
+    """With the sun and the ring both driven, Willis (ω4 − ω5)/(ω2 − ω5) = −N2/N4 gives
+    ω5 = (N2·ω2 + N4·ω4)/(N2 + N4)."""
+    ring = sun + 2 * planet
+    q = solve_train(parse_train(two(2, w2, 4, w4, sun, planet, ring), "t.toml")).quantities
+    assert q["omega5"].exact == F(sun * w2 + ring * w4, sun + ring)
+    assert all(v.exact == v.reference for v in q.values())
+
+
+@pytest.mark.parametrize("edit, words", [
+    (dict(fixed=4), "member 4 is fixed and two speeds are given"),
+    (dict(b=2), "turn together"),
+])
+def test_two_speeds_that_cannot_hold_are_refused_in_one_line(edit, words):
+    args = dict(a=2, sa=100, b=5, sb=-50) | {k: v for k, v in edit.items() if k != "fixed"}
+    text = two(args["a"], args["sa"], args["b"], args["sb"], fixed=edit.get("fixed"))
+    with pytest.raises(InputError) as e:
+        parse_train(text, "t.toml")
+    assert words in str(e.value) and str(e.value).startswith("t.toml:")
+    assert "\n" not in str(e.value)
+
+
+def test_two_speeds_on_an_ordinary_train_are_refused():
+    text = open(load("compound-train").train.source).read().replace(
+        "[input]", "[[input]]").replace('sense = "cw"', 'sense = "cw"\n\n[[input]]\nmember = 6\n'
+                                        'speed = 100')
+    with pytest.raises(InputError, match=r"^c\.toml:\d+: the train has 1 degree of freedom .* "
+                                         r"give one \[\[input\]\], not two$"):
+        parse_train(text, "c.toml")

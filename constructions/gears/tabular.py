@@ -46,6 +46,11 @@ class Table:
     held: dict[int, Fraction]
     total: dict[int, Fraction]
     scale: Fraction
+    weights: tuple[Fraction, Fraction] | None = None
+    """With two given speeds (no member fixed): y and x, the speed is y·locked + x·held,
+    and ``total`` is the speeds themselves."""
+    turned: int | None = None
+    """The member turned −1 in the held row, where no member is fixed."""
 
 
 @dataclass(frozen=True)
@@ -140,13 +145,14 @@ def tabulate(train: GearTrain) -> TrainSpeeds:
         If a member is reached by no mesh, the input cannot drive, or the fixed member
         turns on a side shaft.
     """
-    if not train.planetary or train.fixed is None or train.arm in train.body(train.fixed):
+    if train.second is None and (not train.planetary or train.fixed is None
+                                 or train.arm in train.body(train.fixed)):
         return _ordinary(train)
     if not train.off_axis:
-        return _planetary(train)
+        return _planetary(train) if train.second is None else _two_given(train)
     steps: list[Phrase] = []
     core, speeds = main_axis_train(train, steps)
-    table = _planetary(core)
+    table = _planetary(core) if train.second is None else _two_given(core)
     after: list[Phrase] = []
     speeds = _carry_speeds(_side_meshes(train), {**speeds, **table.speeds}, after)
     return TrainSpeeds({m: speeds[m] for m in train.members},
@@ -172,10 +178,16 @@ def main_axis_train(train: GearTrain, steps: list[Phrase]
                          file=train.source or None)
     speeds = _carry_speeds(_side_meshes(train), {train.input_member: train.input_speed}, steps)
     first = next(m for m in (train.input_member, *speeds) if m not in side)
+    second = train.second
+    if second is not None:          # the second given speed, carried to the main axis too
+        more = _carry_speeds(_side_meshes(train), dict([second]), steps)
+        reached = next(m for m in (second[0], *more) if m not in side)
+        speeds = {**more, **speeds}
+        second = (reached, more[reached])
     core = replace(train, gears=tuple(g for g in train.gears if g.number not in side),
                    meshes=tuple(m for m in train.meshes if m.a not in side and m.b not in side),
                    shafts=tuple(sh for sh in train.shafts if not set(sh) & set(side)),
-                   input_member=first, input_speed=speeds[first])
+                   input_member=first, input_speed=speeds[first], second=second)
     return core, speeds
 
 
@@ -250,6 +262,31 @@ def _planetary(train: GearTrain) -> TrainSpeeds:
     xy = _xy(train, held, speeds) if train.speed_given else ()
     return TrainSpeeds(speeds, tuple(steps), Table(members, locked, held, total, scale),
                        "tabular", xy)
+
+
+def _two_given(train: GearTrain) -> TrainSpeeds:
+    """The tabular method with two given speeds and no member fixed: every member turns
+    y·(row 1) + x·(row 2), the arm held in row 2 while a given gear turns −1; the two
+    given speeds are two equations in y (the arm's speed) and x."""
+    arm, members = train.arm, train.members
+    (a, sa), (b, sb) = (train.input_member, train.input_speed), train.second
+    turned = b if a in train.body(arm) else a        # a given member that is not the arm
+    steps = [phrase("gears.locked", arm=train.said(arm)),
+             phrase("gears.held_given", arm=train.said(arm), member=train.said(turned))]
+    locked = {m: Fraction(1) for m in members}
+    held = carry(train, {turned: Fraction(-1)}, held=(arm,), steps=steps)
+    if held[a] == held[b]:
+        raise InputError(f"{train.label(a)} and {train.label(b)} turn alike whatever the arm "
+                         "does, so their two speeds cannot both be given: give another "
+                         "member's", file=train.source or None)
+    x = (sa - sb) / (held[a] - held[b])
+    y = sa - x * held[a]
+    steps.append(phrase("gears.two_given", a=a, b=b, ha=fraction_text(held[a]),
+                        hb=fraction_text(held[b]), sa=fraction_text(sa), sb=fraction_text(sb),
+                        x=fraction_text(x), y=fraction_text(y), unit=train.units.speed))
+    speeds = {m: y * locked[m] + x * held[m] for m in members}
+    return TrainSpeeds(speeds, tuple(steps),
+                       Table(members, locked, held, speeds, Fraction(1), (y, x), turned), "tabular")
 
 
 def _train_value(train: GearTrain, first: int, last: int,

@@ -94,6 +94,10 @@ class GearTrain:
     speed_given: bool = True
     """False where the file gives no speed (only ratios or torques are asked): the input
     then turns 1 of the file's unit, and only what does not depend on it is said."""
+    second: tuple[int, Fraction] | None = None
+    """A second member's given speed (member, exact speed), where no member is fixed: a
+    planetary train's two degrees of freedom, the arm and a gear both turning, or a sun
+    and a ring both driven."""
 
     # ----- the members ----------------------------------------------------------------------
     def gear(self, number: int) -> Gear:
@@ -227,7 +231,7 @@ class GearTrain:
                 if m not in self.members:
                     raise self._fail(f"a shaft names member {m}, which is not listed; the "
                                      f"members are {', '.join(map(str, self.members))}")
-        for m in (self.fixed, self.input_member):
+        for m in (self.fixed, self.input_member, self.second and self.second[0]):
             if m is not None and m not in self.members:
                 raise self._fail(f"there is no member {m}; the members are "
                                  f"{', '.join(map(str, self.members))}")
@@ -258,18 +262,36 @@ class GearTrain:
         if self.fixed is not None and self.input_member in self.body(self.fixed):
             raise self._fail(f"the input, member {self.input_member}, is the fixed member; "
                              "drive another")
-        if self.planetary and self.fixed is None:
+        if self.second is not None:
+            self._check_second()
+        if self.planetary and self.fixed is None and self.second is None:
             raise self._fail("the arm carries planets but no member is fixed: say which, "
-                             "fixed = <number> (before the first table)")
+                             "fixed = <number> (before the first table), or give a second "
+                             "member's speed in a second [[input]]")
         self._check_joined()
         if self.planetary:
             self._check_coaxial()
         dof, n, f1, f2 = self.mobility()
-        if dof != 1:
+        given = 1 if self.second is None else 2
+        if dof != given:
+            if given == 2 and dof == 1:
+                raise self._fail(f"the train has 1 degree of freedom by Grübler (3({n} − 1) − "
+                                 f"2·{f1} − {f2} = 1), so one speed sets it: give one "
+                                 "[[input]], not two")
             raise self._fail(f"the train has {dof} degrees of freedom by Grübler (3({n} − 1) − "
-                             f"2·{f1} − {f2} = {dof}), not 1: "
+                             f"2·{f1} − {f2} = {dof}), not {given}: "
                              + ("a member turns freely: mesh it, put it on a shaft or fix it"
-                                if dof > 1 else "a member is held twice over"))
+                                if dof > given else "a member is held twice over"))
+
+    def _check_second(self) -> None:
+        """Two given speeds need a free arm and two members that do not turn together."""
+        m = self.second[0]
+        if self.fixed is not None:
+            raise self._fail(f"member {self.fixed} is fixed and two speeds are given: that "
+                             "holds the train three times over; leave out fixed or one speed")
+        if m in self.body(self.input_member):
+            raise self._fail(f"two speeds are given to member {self.input_member} and member "
+                             f"{m}, which turn together: give the second to another member")
 
     def _check_joined(self) -> None:
         """Every member hangs together with the input through meshes, shafts and the arm's

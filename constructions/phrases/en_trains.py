@@ -12,6 +12,10 @@ PHRASES: dict[str, str] = {
                            "a ratio. Carry one turn of it through the meshes:",
     "gears.over_input": "{member}, the input, turns {total} in the total row: each total "
                         "over {total} is its member's speed over ω{i}.",
+    "gears.held_given": "Row 2: hold {arm} and turn {member} −1 turn:",
+    "gears.two_given": "Each member turns y·(row 1) + x·(row 2), y the arm's speed. The two "
+                       "given speeds: ω{a} = y + ({ha})·x = {sa} and ω{b} = y + ({hb})·x = "
+                       "{sb}, so x = {x} {unit} and y = {y} {unit}.",
     "gears.mesh_carries": "{driven} meshes {kind}ly with {driver}, so it turns {way}, "
                           "N{a}/N{b} = {na}/{nb} as fast: {turns} → {result}.",
     "gears.shaft_carries": "{member} is on one shaft with {other}: it turns alike, {turns}.",

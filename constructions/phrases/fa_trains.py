@@ -33,6 +33,9 @@ WORDS: dict[str, str] = {
     "whole train locked, {turn}": "کل قطار قفل\u200cشده، یک دور مثبت",
     "arm {arm} held, {fixed} turned {turn}": "بازوی {arm} ثابت، {fixed} یک دور منفی",
     "total": "مجموع",
+    "y × row 1 + x × row 2: speed": "y × سطر 1 + x × سطر 2: سرعت",
+    "arm {arm} held, {member} turned {turn}": "بازوی {arm} ثابت، {member} یک دور منفی",
+    "no member fixed: two speeds given": "هیچ عضوی ثابت نیست: دو سرعت داده شده است",
     "× {scale} {unit}: speed": "× {scale} {unit}: سرعت",
     "turns per turn of {member} (ccw +)": "دور به ازای یک دور {member} (پادساعتگرد +)",
     "speed ({unit}, ccw +)": "سرعت ({unit}، پادساعتگرد +)",
@@ -72,6 +75,10 @@ PHRASES: dict[str, str] = {
                            "منتقل کنید:",
     "gears.over_input": "{member}، یعنی عضو ورودی، در ردیف مجموع {total} دور می‌چرخد: مجموع "
                         "هر عضو تقسیم بر {total}، نسبت سرعت آن به ω{i} است.",
+    "gears.held_given": "سطر 2: {arm} را ثابت نگه دارید و {member} را −1 دور بچرخانید:",
+    "gears.two_given": "هر عضو با y·(سطر 1) + x·(سطر 2) می‌چرخد که y سرعت بازو است. دو "
+                       "سرعت داده‌شده: ω{a} = y + ({ha})·x = {sa} و ω{b} = y + ({hb})·x = "
+                       "{sb}، پس x = {x} {unit} و y = {y} {unit}.",
     "gears.ordinary_start": "{member}، یعنی عضو ورودی، با {speed} می‌چرخد. یک دور چرخش آن را از "
                             "طریق درگیری‌ها به عضوهای دیگر منتقل کنید:",
     "gears.mesh_carries": "{driven} با {driver} درگیری {kind} دارد، پس {way} و با سرعتی "

@@ -55,6 +55,8 @@ def willis_speeds(train: GearTrain) -> dict[int, Fraction]:
     if train.fixed is not None:
         equation({train.fixed: Fraction(1)})
     equation({train.input_member: Fraction(1)}, train.input_speed)
+    if train.second is not None:              # two given speeds, no member fixed
+        equation({train.second[0]: Fraction(1)}, train.second[1])
     return dict(zip(members, _solve(rows, len(members), train)))
 
 

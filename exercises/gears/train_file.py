@@ -89,12 +89,12 @@ class _Reader:
         meshes = self.meshes()
         shafts = self.shafts()
         fixed = self.fixed()
-        member, speed = self.input(units)
+        member, speed, second = self.inputs(units)
         torque, power = self.load(speed is not None)
         train = GearTrain(gears, meshes, shafts, arm, arm_name, fixed, member,
                           Fraction(1) if speed is None else speed, units, planets, torque,
                           power, self.text("name") or self.id, self.filename,
-                          speed_given=speed is not None)
+                          speed_given=speed is not None, second=second)
         try:
             train.check()
         except InputError as e:
@@ -271,28 +271,55 @@ class _Reader:
                                 "holds one still", key="fixed")
         return self.integer(v, "the fixed member", "", "fixed")
 
-    def input(self, units: SpeedUnits) -> tuple[int, Fraction | None]:
+    def inputs(self, units: SpeedUnits) -> tuple[int, Fraction | None,
+                                                 tuple[int, Fraction] | None]:
+        """The given speeds: ``[input]``, or two ``[[input]]`` tables where no member is
+        fixed (the arm and a gear both turning; a sun and a ring both driven). The first
+        is the input (its torque or power, if any); the second, if any, as (member,
+        speed)."""
+        raw = self.data.get("input")
+        if isinstance(raw, list):
+            if not 1 <= len(raw) <= 2:
+                raise self.fail(f"{len(raw)} [[input]] tables: a train takes one given speed "
+                                "with a fixed member, or two with none", "input", index=2)
+            if len(raw) == 2:
+                self.data["input"] = raw[0]     # the input's load is read from the first
+                member, speed = self.input(units, raw[0], 0)
+                other, more = self.input(units, raw[1], 1)
+                if speed is None or more is None:
+                    raise self.fail("two [[input]] tables each give a speed: speed = …",
+                                    "input", index=int(more is None))
+                for k in ("torque", "power"):
+                    if k in raw[1]:
+                        raise self.fail(f"give the {k} on the first [[input]], the driver",
+                                        "input", k, 1)
+                return member, speed, (other, more)
+            self.data["input"] = raw = raw[0]
+        return (*self.input(units, raw), None)
+
+    def input(self, units: SpeedUnits, t: Any, index: int = 0
+              ) -> tuple[int, Fraction | None]:
         """The member whose speed is given (any member but the fixed one, the output's
         shaft too), and its speed, CCW-positive; None where no speed is given (a file that
         asks only ratios or torques needs none)."""
-        t = self.data.get("input")
         if not isinstance(t, dict) or "member" not in t:
             raise self.fail("give the driving member and its speed: member = 2, "
-                            f"speed = 80 ({units.speed}), sense = \"cw\"", "input")
-        member = self.integer(t["member"], "the input member", "input", "member")
+                            f"speed = 80 ({units.speed}), sense = \"cw\"", "input",
+                            index=index)
+        member = self.integer(t["member"], "the input member", "input", "member", index)
         if "speed" not in t:
-            self.known(t, ("member", "sense", "torque", "power"), "input")
+            self.known(t, ("member", "sense", "torque", "power"), "input", index)
             return member, None
-        speed = self.exact(t["speed"], "the input speed", "input", "speed")
+        speed = self.exact(t["speed"], "the input speed", "input", "speed", index)
         sense = t.get("sense", "ccw")
         if sense not in ("cw", "ccw"):
-            raise self.fail(f"unknown sense '{sense}'; use cw or ccw", "input", "sense")
-        if speed == 0:
+            raise self.fail(f"unknown sense '{sense}'; use cw or ccw", "input", "sense", index)
+        if speed == 0 and index == 0:
             raise self.fail("the input speed is 0: nothing turns", "input", "speed")
         for k in t:
             if k not in ("member", "speed", "sense", "torque", "power"):
                 raise self.fail(f"unknown input setting '{k}'; expected member, speed, sense, "
-                                "torque (N·m) or power (W)", "input", k)
+                                "torque (N·m) or power (W)", "input", k, index)
         return member, speed if sense == "ccw" else -speed
 
     def load(self, speed_given: bool = True) -> tuple[Fraction | None, Fraction | None]:

@@ -306,6 +306,12 @@ class TrainSolution(ChapterFiles):
             return [numerals(fraction_text(turns[m], True)) if m in turns else ""
                     for m in train.members]
 
+        if t.weights is not None:         # two given speeds: y × row 1 + x × row 2
+            return heads, [
+                (words("whole train locked, {turn}", turn=numerals("+1")), row(t.locked)),
+                (words("arm {arm} held, {member} turned {turn}", arm=str(train.arm),
+                       member=str(t.turned), turn=numerals("−1")), row(t.held)),
+                (words("y × row 1 + x × row 2: speed"), speeds)]
         return heads, [
             (words("whole train locked, {turn}", turn=numerals("+1")), row(t.locked)),
             (words("arm {arm} held, {fixed} turned {turn}", arm=str(train.arm),
@@ -411,7 +417,9 @@ def solve_train(ex: TrainExercise) -> TrainSolution:
     refuse_beyond_floats(train, found.speeds)
     refuse_still_ratios(ex, found.speeds, reference)
     # the diagram lays off the input's velocity: drawn only for a speed the file gives
-    drawable = found.table is not None and train.speed_given and undrawable(train) is None
+    # (nor with two given speeds: it is drawn from a fixed member's line)
+    drawable = (found.table is not None and train.speed_given and train.second is None
+                and undrawable(train) is None)
     diagram = draw_kutzbach(train, found.speeds) if drawable else None
     mesh = ref = None
     if ex.involute is not None:

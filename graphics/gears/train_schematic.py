@@ -84,7 +84,7 @@ def draw_train_schematic(train: GearTrain, title: str, outputs: tuple[int, ...] 
             draw_hatched_band(fig, (x, y - r), (x, y + r), (-1.0, 0.0), depth=2.5)
         labels.append((str(g.number), (x + face, y - 0.5 * r)))
     _shafts(train, fig, plane, axis, mm, (left, right), rings,
-            (train.input_member, *outputs))
+            (train.input_member, *((train.second[0],) if train.second else ()), *outputs))
     if train.arm is not None and train.planetary:
         xa = plane[train.arm] * _PLANE + _FACE / 2
         # A pin for each carrier radius the planets stand at (two planets in series on the
@@ -110,7 +110,8 @@ def draw_train_schematic(train: GearTrain, title: str, outputs: tuple[int, ...] 
         placer.place(text, at, prefer=(0.0, 3.1416, 1.57), spread=0.7, gap=1.5, size=3.6,
                      italic=False)
     held = (words("member {member} fixed (hatched)", member=str(train.fixed))
-            if train.fixed is not None else words("every axis fixed in the housing"))
+            if train.fixed is not None else words("no member fixed: two speeds given")
+            if train.second is not None else words("every axis fixed in the housing"))
     draw_caption(fig, words("{name}: the train", name=train.name),
                  [held, words("radii to scale, the planes apart")],
                  per_cm=per_cm, unit=unit, scale_name="Radius scale")
