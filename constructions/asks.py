@@ -14,6 +14,7 @@ Grashof, the length ranges, time ratio, stroke) come first, before any position.
 
 from __future__ import annotations
 
+import math
 import re
 from dataclasses import dataclass
 from typing import ClassVar
@@ -29,7 +30,7 @@ __all__ = ["Ask", "Position", "Centre", "AngularVelocity", "Velocity", "Relative
            "GrashofClass",
            "LengthRange", "TimeRatio", "Stroke", "CentreCount", "JointForce", "DrivingTorque",
            "Effort", "EFFORTS",
-           "parse_ask", "ask_names",
+           "parse_ask", "ask_names", "on_one_line",
            "SYMBOLS", "symbol", "ordered"]
 
 SYMBOLS = {"omega": "ω", "alpha": "α", "theta": "θ", "A_cor_": "Aᶜ_", "An_": "Aⁿ_",
@@ -263,15 +264,18 @@ class Distance(Ask):
 @dataclass(frozen=True)
 class LeastVelocity(Ask):
     """The point of link ``link``'s line with the least velocity, and that velocity: the
-    foot of the perpendicular from the link's instant centre I_1k."""
+    foot of the perpendicular from the link's instant centre I_1k. The line is ``line``,
+    two of the link's points, the first the one its distance is measured from; or, with
+    None, the line all the link's points lie on (a rod, with any point carried on it)."""
 
     link: int
+    line: tuple[str, str] | None = None
     order: ClassVar[int] = 2
 
     @property
     def name(self) -> str:
-        """``Vmin_3``."""
-        return f"Vmin_{self.link}"
+        """``Vmin_3``, or ``Vmin_3_A_B`` along the line AB of link 3."""
+        return f"Vmin_{self.link}" + ("" if self.line is None else "_{}_{}".format(*self.line))
 
 
 @dataclass(frozen=True)
@@ -444,6 +448,7 @@ _GRAMMAR: tuple[tuple[re.Pattern, callable], ...] = tuple(
         (f"V_{_PLAIN}/V_{_PLAIN}", lambda m: Ratio("V", m[1], m[2])),
         (r"omega(\d+)/omega(\d+)", lambda m: Ratio("omega", m[1], m[2])),
         (r"ma_(\d+)", lambda m: MechanicalAdvantage(int(m[1]))),
+        (fr"Vmin_(\d+)_{_PLAIN}_{_PLAIN}", lambda m: LeastVelocity(int(m[1]), (m[2], m[3]))),
         (r"Vmin_(\d+)", lambda m: LeastVelocity(int(m[1]))),
         (f"rub_{_POINT}", lambda m: Rubbing(m[1])),
         (f"equiv_{_POINT}", lambda m: Equivalent(m[1])),
@@ -519,13 +524,29 @@ def ask_names(mech: Mechanism) -> set[str]:
     out |= {f"V_{p}/V_{q}" for p in moving for q in moving if p != q}
     out |= {f"omega{a}/omega{b}" for a in nums for b in nums if a != b and 1 not in (a, b)}
     out |= {f"ma_{n}" for n in nums if n not in (1, mech.drive.link)}
-    out |= {f"Vmin_{k.number}" for k in mech.links if k.number != 1 and len(k.names) == 2}
+    out |= {f"Vmin_{k.number}" for k in mech.links if k.number != 1 and on_one_line(k.points)}
+    out |= {LeastVelocity(k.number, (p, q)).name for k in mech.links if k.number != 1
+            for p in k.names for q in k.names if p != q and "_" not in p + q}
     out |= {f"rub_{p}" for p in mech.point_names if len(mech.links_at(p)) == 2}
     out |= {f"dist_{p}_{Centre((a, b)).name}" for p in mech.point_names
             for i, a in enumerate(nums) for b in nums[i + 1:] if b < 10}
     out |= {f"A{part}_{p}/{q}" for k in mech.links if k.number != 1
             for p in k.names for q in k.names if p != q for part in "nt"}
     return out
+
+
+def on_one_line(points) -> bool:
+    """True if a link's points (name, local xy) are two or more on one straight line: a rod,
+    with any point it carries on it, to rounding at the link's own size."""
+    if len(points) < 2:
+        return False
+    (_, (x0, y0)), *rest = points
+    far = max(rest, key=lambda p: math.hypot(p[1][0] - x0, p[1][1] - y0))[1]
+    dx, dy = far[0] - x0, far[1] - y0
+    size = math.hypot(dx, dy)
+    # a point off the line by a few ulps of the link's size is on it, as drawn
+    return size > 0.0 and all(abs((x - x0) * dy - (y - y0) * dx) <= 1e-12 * size * size
+                              for _, (x, y) in rest)
 
 
 def ordered(asks) -> list[Ask]:

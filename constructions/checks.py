@@ -270,9 +270,11 @@ def _point_and_speed(value: dict, ref: dict, scale: float) -> tuple[dict, dict, 
     """A point and its speed: the worse of the point's miss beside the mechanism's size
     (``scale``) and the speed's beside the reference's own ``floor`` (the link's |ω| times
     that size: a least velocity may be nil, at a crank's pivot)."""
-    miss = math.dist(value["point"], ref["point"]) / max(scale, 1e-300)
+    miss = max(math.dist(value["point"], ref["point"]),
+               abs(value.get("along", 0.0) - ref.get("along", 0.0))) / max(scale, 1e-300)
     slow = abs(value["value"] - ref["value"]) / max(ref["value"], ref["floor"], 1e-300)
-    return value, {"point": ref["point"], "value": ref["value"]}, max(miss, slow)
+    shown = {k: ref[k] for k in ("point", "value", "from", "along") if k in ref}
+    return value, shown, max(miss, slow)
 
 
 def _counts(value: dict, ref: dict, scale: float) -> tuple[dict, dict, float]:

@@ -178,14 +178,17 @@ def reading(work, ask) -> Expected:
     if isinstance(ask, A.LeastVelocity):
         # |V(P)|² along the line P = A + t·(B − A) is a quadratic in t: its least is where
         # the velocity is square to the line's own motion, found without any centre.
-        a, b = m.link(ask.link).names
+        from .linkages.readings import least_line
+
+        a, b = least_line(m, ask)
         (ax, ay), (bx, by) = kin.points[a], kin.points[b]
         va, vb = (solver.point_velocity(kin, m, ask.link, n) for n in (a, b))
         dx, dy = vb[0] - va[0], vb[1] - va[1]
         t = -(va[0] * dx + va[1] * dy) / (dx * dx + dy * dy)
         vx, vy = va[0] + t * dx, va[1] + t * dy
         return Expected({"point": [ax + t * (bx - ax), ay + t * (by - ay)],
-                         "value": (vx * vx + vy * vy) ** 0.5,
+                         "value": (vx * vx + vy * vy) ** 0.5, "from": a,
+                         "along": t * ((bx - ax) ** 2 + (by - ay) ** 2) ** 0.5,
                          "floor": abs(kin.omegas[ask.link]) * mechanism_size(kin)})
     if isinstance(ask, A.Rubbing):
         from .linkages.readings import pin_links

@@ -31,7 +31,7 @@ from .linkages.equivalent import answer_equivalent, equivalent_askable
 from .forces.answers import FORCES_WHY_NOT, answer as from_force_polygons, forces_askable
 from .linkages.klein import answer_klein
 from .linkages.positions import answer_position
-from .linkages.readings import MU_WHY_NOT, answer_reading, mu_askable
+from .linkages.readings import LEAST_WHY_NOT, MU_WHY_NOT, answer_reading, mu_askable
 from .linkages.sliding import answer_sliding, sliding_askable
 from .linkages.transmission import answer_omega as by_transmission, transmission_links
 from .linkages.velocity_by_centres import answer_velocity as by_centres
@@ -106,7 +106,8 @@ METHODS: tuple[Method, ...] = (
     Method("readings", {A.Ratio: expected.reading, A.MechanicalAdvantage: expected.reading,
                         A.Distance: expected.reading, A.TransmissionAngle: expected.reading,
                         A.LeastVelocity: expected.reading, A.Rubbing: expected.reading},
-           answer_reading, stage=3, askable=mu_askable, why_not=MU_WHY_NOT),
+           answer_reading, stage=3, askable=mu_askable,
+           why_not={**MU_WHY_NOT, **LEAST_WHY_NOT}),
 )
 """Every method, in the order a solution takes them."""
 

@@ -126,3 +126,50 @@ def test_a_slider_cranks_transmission_angle_is_the_rods_against_the_normal_to_th
     mu = value(sol, "mu")
     assert math.cos(mu) == pytest.approx(abs(ay - by) / 0.70, rel=1e-12)
     assert 0.0 <= mu <= math.pi / 2
+
+
+def test_the_slowest_point_of_a_named_line_of_a_rod_carrying_a_third_point():
+    # Hinkle's rod BC carries D off its line: Vmin_3 has no one line, Vmin_3_B_C names it.
+    # Closed form for the slider-crank (O2B = 40, BC = 120 mm, θ2 = 60°, ω2 = 10 rad/s):
+    # C = (40 cos 60° + √(120² − (40 sin 60°)²), 0); I13 lies on O2B produced and on the
+    # normal to the stroke through C; the slowest point of BC is the foot of the
+    # perpendicular from I13, at ω3 × its distance, ω3 = V_B / I13B = 10 × 40 / I13B.
+    ex = load("hinkle-slider-crank")
+    sol = solve_exercise(ex.asking(("Vmin_3_B_C",)))
+    bx, by = 40 * math.cos(math.radians(60)), 40 * math.sin(math.radians(60))
+    cx = bx + math.sqrt(120 ** 2 - by ** 2)
+    ix, iy = cx, cx * math.tan(math.radians(60))                 # I13
+    ux, uy = (cx - bx) / 120, -by / 120                          # B → C, unit
+    along = (ix - bx) * ux + (iy - by) * uy
+    off = abs((ix - bx) * uy - (iy - by) * ux)
+    speed = 10 * 40 / math.hypot(ix - bx, iy - by) * off
+    q = sol.quantities["Vmin_3_B_C"]
+    # every number here is a few roundings of lengths of order 100 mm: 1e-12 relative
+    assert q.passed and q.value["from"] == "B"
+    assert q.value["along"] * 1000 == pytest.approx(along, rel=1e-12)
+    assert q.value["value"] * 1000 == pytest.approx(speed, rel=1e-12)
+    assert [c * 1000 for c in q.value["point"]] == pytest.approx(
+        [bx + along * ux, by + along * uy], rel=1e-12)
+    line = answer_line("Vmin_3_B_C", q, ex.mechanism.units)
+    assert f"{along:.6g} mm from B" in line
+    with pytest.raises(TarsimError, match="cannot find 'Vmin_3' for this mechanism: Vmin_<k> is "
+                                          "asked of a link whose points lie on one line"):
+        from tarsim.exercises.catalog import resolve
+        from tarsim.exercises.linkages.exercise_file import parse_exercise
+
+        text = resolve("hinkle-slider-crank").read_text(encoding="utf-8")
+        parse_exercise(text.replace('"Vmin_3_B_C"]', '"Vmin_3"]'), "h.toml", "h")
+
+
+def test_a_lever_of_three_points_on_one_line_has_its_slowest_point_at_its_pivot():
+    # The p. 292 lever O4BC: three points on one line through its frame pivot O4, which is
+    # I14, so the slowest point is O4 itself, at rest, nought from O4.
+    ex = load("velocity-homework-292")
+    assert "Vmin_4" in A.ask_names(ex.mechanism)
+    q = solve_exercise(ex.asking(("Vmin_4",))).quantities["Vmin_4"]
+    o4 = dict(ex.mechanism.frame.points)["O4"]
+    assert q.passed and q.value["from"] == "O4"
+    # O4 is placed exactly; the foot of a line through it is O4 to a few ulps of 0.3 m
+    assert q.value["point"] == pytest.approx(list(o4), abs=1e-15)
+    assert q.value["value"] == pytest.approx(0.0, abs=1e-14)
+    assert q.value["along"] == pytest.approx(0.0, abs=1e-15)

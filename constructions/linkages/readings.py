@@ -24,7 +24,7 @@ from .velocity_polygon import WORKED, drawn_velocity_polygon
 
 __all__ = ["answer_reading", "transmission_pin", "slider_rod", "normal_angle", "angle_at",
            "pin_links",
-           "mu_askable", "MU_WHY_NOT"]
+           "mu_askable", "MU_WHY_NOT", "least_line", "LEAST_WHY_NOT"]
 
 MU_WHY_NOT = {A.TransmissionAngle: "a transmission angle is asked of a four-bar of four pins "
                                    "(between coupler and output) or of a slider-crank (between "
@@ -130,15 +130,45 @@ def normal_angle(rx: float, ry: float, dx: float, dy: float) -> float:
     return math.asin(min(1.0, along))
 
 
+LEAST_WHY_NOT = {A.LeastVelocity: "Vmin_<k> is asked of a link whose points lie on one line "
+                                   "(a rod, with any point it carries on it); of a link whose "
+                                   "points do not, name the line: Vmin_<k>_<P>_<Q>, its "
+                                   "slowest point measured from P"}
+"""Why a plate has no one line to find its slowest point on."""
+
+
+def least_line(m: Mechanism, ask: A.LeastVelocity) -> tuple[str, str]:
+    """The two points of link k the least velocity's line runs through, the first the one
+    its distance is measured from: those asked, or the link's first point and the one
+    farthest from it on the line they all lie on.
+
+    Raises
+    ------
+    InputError
+        If no line is named and the link's points are not on one line.
+    """
+    link = m.link(ask.link)
+    if ask.line is not None:
+        missing = [p for p in ask.line if p not in link.names]
+        if missing or ask.line[0] == ask.line[1]:
+            raise InputError(f"{ask.name}: link {ask.link}'s points are "
+                             f"{', '.join(link.names)}; name two of them")
+        return ask.line
+    if not A.on_one_line(link.points):
+        raise InputError(f"{ask.name}: link {ask.link}'s points {', '.join(link.names)} are "
+                         f"not on one line; {LEAST_WHY_NOT[A.LeastVelocity].split('; ')[1]}")
+    (a, (x0, y0)), *rest = link.points
+    b = max(rest, key=lambda p: math.hypot(p[1][0] - x0, p[1][1] - y0))[0]
+    return a, b
+
+
 def _least_velocity(work, ask: A.LeastVelocity) -> Answer:
     """Drop the perpendicular from I_1k onto the link's line: its foot is the point of the
     line nearest the centre the link turns about, so the slowest, at |ω_k| times that
-    distance (ω_k from the centres)."""
+    distance (ω_k from the centres); its distance along the line from the line's first
+    point is read with the dividers."""
     m, asm, k = work.mechanism, work.assembly, ask.link
-    names = m.link(k).names
-    if len(names) != 2:
-        raise InputError(f"link {k} has {len(names)} points; the least velocity is asked of a "
-                         "link of two, along the line that joins them")
+    a, b = least_line(m, ask)
     cs = located(work)
     centre = cs.centre(1, k)
     if asm.output(centre.ref).is_at_infinity:
@@ -146,20 +176,25 @@ def _least_velocity(work, ask: A.LeastVelocity) -> Answer:
                          "infinity): every point of it has one velocity, none the least")
     d = m.drive.link
     ratio, cond, refs = ratio_by_centres(work, d, k) if k != d else (1.0, 1.0, ())
-    a, b = names
-    line = f"vmin:{k}:line"
+    line, at = f"vmin:{k}:{a}:{b}:line", f"vmin:{k}:{a}:{b}"
+    alone = sum(q.link == k for q in work.asked(A.LeastVelocity)) == 1
+    label = f"M{k}" if alone or ask.line is None else f"M{k}{a}{b}"
     if line not in asm:
         asm.draw(line, "line_through", asm.points[a], asm.points[b],
                  phrase=phrase("readings.link_line", a=a, b=b, link=k))
-        asm.draw(f"vmin:{k}", "project_onto", centre.ref, line, label=f"M{k}",
+        asm.draw(at, "project_onto", centre.ref, line, label=label,
                  phrase=phrase("readings.least_velocity", centre=centre.label, a=a, b=b,
-                               link=k, point=f"M{k}"))
-    foot = asm.output(f"vmin:{k}").xy
+                               link=k, point=label))
+    foot = asm.output(at).xy
     speed = abs(ratio * m.drive.omega) * math.dist(foot, asm.output(centre.ref).xy)
-    cond = min(cond, cs.conditioning(1, k), asm[f"vmin:{k}"].conditioning)
-    return Answer(ask, {"point": [foot[0] + 0.0, foot[1] + 0.0], "value": speed}, cond,
+    (ax, ay), (bx, by) = asm.xy(a), asm.xy(b)
+    along = ((foot[0] - ax) * (bx - ax) + (foot[1] - ay) * (by - ay)) / math.dist((ax, ay),
+                                                                                  (bx, by))
+    cond = min(cond, cs.conditioning(1, k), asm[at].conditioning)
+    return Answer(ask, {"point": [foot[0] + 0.0, foot[1] + 0.0], "value": speed,
+                        "from": a, "along": along + 0.0}, cond,
                   f"foot of the perpendicular from {centre.label}",
-                  refs=(f"vmin:{k}", centre.ref, *refs), figures=(OMEGA_FIGURE,))
+                  refs=(at, centre.ref, *refs), figures=(OMEGA_FIGURE,))
 
 
 def _rubbing(work, ask: A.Rubbing) -> Answer:

@@ -110,6 +110,7 @@ WORDS: dict[str, str] = {
     "quantity": "کمیت", "method": "روش", "construction": "ترسیم", "analytic": "تحلیلی",
     "relative error": "خطای نسبی", "answer": "پاسخ", "check": "وارسی",
     "{what} at {where}": "{what} در {where}",
+    "{what} at {where}, {along} from {point}": "{what} در {where}، {along} از {point}",
     "any point (no relative motion)": "هر نقطه (بی\u200cحرکت نسبی)",
     "at infinity, direction ({dx}, {dy})": "در بی\u200cنهایت، در راستای ({dx}, {dy})",
     # what a figure shows, after the mechanism's name in its title

@@ -80,9 +80,14 @@ def show(v: dict, units, name: str = "", figures: int = 6) -> str:
     if "point" in v:
         x, y = _quiet_pair(v["point"])
         at = f"({_num(x / s, spec)}, {_num(y / s, spec)}) {units.length}"
-        # a point with its speed: the least velocity along a link
-        return at if "value" not in v else words("{what} at {where}", what=(
-            f"{_num(v['value'] / s, spec)} {units.length}/s"), where=at)
+        # a point with its speed: the least velocity along a link, and how far along it
+        if "value" not in v:
+            return at
+        what = f"{_num(v['value'] / s, spec)} {units.length}/s"
+        if "along" not in v:
+            return words("{what} at {where}", what=what, where=at)
+        return words("{what} at {where}, {along} from {point}", what=what, where=at,
+                     along=f"{_num(v['along'] / s, spec)} {units.length}", point=v["from"])
     if "undefined" in v:
         return words("any point (no relative motion)")
     if v.get("at_infinity"):
