@@ -86,6 +86,7 @@ STYLES: dict[str, Style] = {
     "plot_curve_dashed": Style(width=0.35, dash=(3.0, 1.2), cap="butt"),
     "plot_curve_dotted": Style(width=0.35, stroke="#555", dash=(0.6, 0.9)),
     "plot_curve_dash_dot": Style(width=0.4, dash=(4.0, 1.2, 0.8, 1.2), cap="butt"),
+    "plot_curve_grey": Style(width=0.9, stroke="#999"),
     "plot_mark": Style(width=0.3, fill="#fff"),
     "plot_leader": Style(width=0.15, cap="butt"),
 }

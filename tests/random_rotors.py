@@ -207,9 +207,21 @@ def engine(r: random.Random, cylinders: int) -> dict[str, Any]:
     e: dict[str, Any] = {"speed": r.choice([1800, 3000, 600.0, 6000, 1e-3, 1e5]),
                          "crank": crank, "rod": round(crank * ratio, 6),
                          "reciprocating": round(r.uniform(0.2, 5), 3)}
+    if r.random() < 0.2:                # the primary forces alone: no rod given
+        e.pop("rod")
+    if r.random() < 0.2:                # the stroke, twice the crank, given instead
+        e["stroke"] = round(2 * e.pop("crank"), 6)
     if cylinders == 1:
         e["balanced"] = r.choice([0, 0.5, 2 / 3, 1, 0.6666666666666666] * 3 + [1.5, -0.1])
         e["at"] = r.choice([0, 30, 90, 180, 270, 45.5, -30, 1e5, _angle(r)])
+        if r.random() < 0.4:            # crank, crank pin, the rod's revolving part
+            e["revolving"] = r.choice([round(r.uniform(0.1, 5), 3),
+                                       [round(r.uniform(0.1, 3), 3) for _ in range(3)]])
+        roll = r.random()
+        if roll < 0.3:
+            e["balance_radius"] = round(r.uniform(0.5, 3) * crank, 6)
+        elif roll < 0.45:
+            e["balance_mass"] = round(r.uniform(0.2, 20), 3)
         spec["engine"] = e
         if r.random() < 0.2:
             spec["cylinder"] = [{"crank": r.choice([0, 0, 90]), "plane": 0}]
@@ -420,22 +432,40 @@ def _balance_mass(name, t, metre, want: complex, doc: dict, scale: float) -> lis
 
 def _engine_wrongs(data, metre: float, rate: float, doc: dict, lines: list[str]) -> list[str]:
     e = data["engine"][0] if isinstance(data["engine"], list) else data["engine"]
-    m, r, w = e["reciprocating"], e["crank"] * metre, e["speed"] * rate
-    n = e["rod"] / e["crank"]
+    crank = e["crank"] if "crank" in e else e["stroke"] / 2
+    m, r, w = e["reciprocating"], crank * metre, e["speed"] * rate
+    n = e["rod"] / crank if "rod" in e else None
     f = m * w * w * r
     cylinders = data.get("cylinder") or [{"crank": 0.0, "plane": 0.0}]
     wrong = []
     if len(cylinders) == 1:
         theta = _rad(e.get("at", 0.0))
         c = e.get("balanced", 0.0)
+        along, across = (1 - c) * f * math.cos(theta), c * f * math.sin(theta)
         want = {"primary_force": f * math.cos(theta),
-                "secondary_force": f * math.cos(2 * theta) / n,
-                "unbalanced_along": (1 - c) * f * math.cos(theta),
-                "unbalanced_across": c * f * math.sin(theta)}
+                "unbalanced_along": along, "unbalanced_across": across,
+                "unbalanced_resultant": abs(complex(along, across)),
+                "unbalanced_max": max(abs(1 - c), abs(c)) * f}
+        if n is not None:
+            want["secondary_force"] = f * math.cos(2 * theta) / n
+        elif "secondary_force" in doc:
+            wrong.append("a secondary force with no rod given")
+        revolving = e.get("revolving", 0.0)
+        product = (sum(revolving) if isinstance(revolving, list) else revolving) + c * m
+        product *= r
         for k, v in want.items():
             got = doc[k]["value"]
             if abs(got - v) > AGREE * f:
                 wrong.append(f"{k} = {got:.6g} N, the closed form {v:.6g} N")
+        if "balance_radius" in e:
+            got = doc["balance_mass"]["value"] * e["balance_radius"] * metre
+        elif "balance_mass" in e:
+            got = doc["balance_radius"]["value"] * e["balance_mass"]
+        else:
+            got = product
+        if abs(got - product) > AGREE * (product + m * r):
+            wrong.append(f"the balance mass's B·b = {got:.6g} kg·m, the closed form "
+                         f"{product:.6g}")
         return wrong
     cranks = [_rad(t.get("crank", 0.0)) for t in cylinders]
     planes = [t.get("plane", 0.0) * metre for t in cylinders]
@@ -444,10 +474,14 @@ def _engine_wrongs(data, metre: float, rate: float, doc: dict, lines: list[str])
     reach = max(abs(p) for p in planes)       # an arm rounds at the planes' own size
     want = {"primary_force": (f * abs(sum(cmath.exp(1j * t) for t in cranks)), f),
             "primary_couple": (f * abs(sum(a * cmath.exp(1j * t) for a, t in zip(arms, cranks))),
-                               f * reach),
-            "secondary_force": (f / n * abs(sum(cmath.exp(2j * t) for t in cranks)), f / n),
-            "secondary_couple": (f / n * abs(sum(a * cmath.exp(2j * t)
-                                                 for a, t in zip(arms, cranks))), f / n * reach)}
+                               f * reach)}
+    if n is not None:
+        want |= {"secondary_force": (f / n * abs(sum(cmath.exp(2j * t) for t in cranks)), f / n),
+                 "secondary_couple": (f / n * abs(sum(a * cmath.exp(2j * t)
+                                                      for a, t in zip(arms, cranks))),
+                                      f / n * reach)}
+    elif "secondary_force" in doc:
+        wrong.append("a secondary force with no rod given")
     for k, (v, size) in want.items():
         got = doc[k]["value"]
         scale = size * len(cranks)

@@ -214,3 +214,68 @@ def test_four_masses_one_plane(given, key, want):
     assert q["value"] == pytest.approx(want, rel=1e-9)
     assert q["value"] == pytest.approx(q["reference"]["value"], rel=1e-12)
     assert q["angle_deg"] == pytest.approx(201.311913, abs=1e-6)
+
+
+def test_single_cylinder_balance_mass():
+    """The books' single cylinder: 240 rpm, stroke 300 mm, 50 kg reciprocating, 37 kg
+    revolving, all the revolving and 2/3 of the reciprocating balanced at 400 mm; at 60°.
+    By hand: B·b = (37 + 100/3) × 0.15 = 10.55 kg·m, B = 26.375 kg; m·ω²·r = 50·(8π)²·0.15
+    and the force left, m·ω²·r·√((1/3 · cos 60°)² + (2/3 · sin 60°)²) = m·ω²·r·√(13/36)
+    (2846.83 N, the books' 2.85 kN). No rod: no secondary force is written. 1e-12
+    relative: a handful of products of exact data."""
+    q = solve_balance(load("single-cylinder-balance-mass")).results["quantities"]
+    f = 50 * (8 * math.pi) ** 2 * 0.15
+    assert q["balance_mr"]["value"] == pytest.approx(10.55, rel=1e-12)
+    assert q["balance_mass"]["value"] == pytest.approx(26.375, rel=1e-12)
+    assert q["balance_mass"]["radius"] == pytest.approx(0.4, rel=1e-15)
+    assert q["balance_mass"]["angle_deg"] == 180.0
+    assert q["unbalanced_resultant"]["value"] == pytest.approx(f * math.sqrt(13 / 36), rel=1e-12)
+    assert q["unbalanced_resultant"]["value"] == pytest.approx(2846.83, abs=5e-3)
+    assert q["unbalanced_max"]["value"] == pytest.approx(2 * f / 3, rel=1e-12)
+    assert "secondary_force" not in q
+
+
+def test_a_balance_mass_stated_gives_its_radius():
+    """balance_mass = 26.375 kg puts it at B·b / B = 10.55 / 26.375 = 0.4 m."""
+    text = Path(bundled("balancing")["single-cylinder-balance-mass"]).read_text(
+        encoding="utf-8").replace("balance_radius = 400", "balance_mass = 26.375", 1)
+    q = solve_balance(parse_balance(text, "e.toml")).results["quantities"]
+    assert q["balance_radius"]["value"] == pytest.approx(0.4, rel=1e-12)
+
+
+def test_an_inline_engine_with_no_rod_gives_its_primary_polygons_alone():
+    """The in-line four's cranks 0°, 180°, 180°, 0° with the rod left out: the primary force
+    and couple are asked and balanced (4 cranks summing to 0), no secondary is drawn or
+    written."""
+    text = Path(bundled("balancing")["inline-four"]).read_text(encoding="utf-8")
+    s = solve_balance(parse_balance(text.replace("rod = 200\n", "", 1), "e.toml"))
+    assert s.passed
+    q = s.results["quantities"]
+    assert set(q) == {"primary_force", "primary_couple"}
+    assert set(s.figures) == {"primary-force", "primary-couple"}
+
+
+ENGINE = Path(bundled("balancing")["single-cylinder-balance-mass"]).read_text(encoding="utf-8")
+
+
+@pytest.mark.parametrize("old, new, words", [
+    ("stroke = 300 ", "crank = 150\nstroke = 300 ", "gives the crank radius (crank = …) or the "
+                                                    "stroke"),
+    ("balance_radius = 400", "balance_radius = 400\nbalance_mass = 3", "not both"),
+    ("revolving = 37", "revolving = [20, -1]", "revolving masses (kg, at the crank radius) "
+                                               "must be positive or 0"),
+    ("balance_radius = 400", "balance_radius = 0", "the balance radius must be positive"),
+])
+def test_a_bad_engine_is_refused_in_one_line(old, new, words):
+    assert old in ENGINE
+    with pytest.raises(InputError) as e:
+        parse_balance(ENGINE.replace(old, new, 1), "engine.toml")
+    message = str(e.value)
+    assert "\n" not in message and message.startswith("engine.toml:") and words in message, \
+        message
+
+
+def test_revolving_masses_in_line_are_refused():
+    text = Path(bundled("balancing")["inline-four"]).read_text(encoding="utf-8")
+    with pytest.raises(InputError, match=r"e.toml:\d+: revolving is a single cylinder's"):
+        parse_balance(text.replace("rod = 200\n", "rod = 200\nrevolving = 2\n", 1), "e.toml")

@@ -152,7 +152,8 @@ def test_bad_file_is_one_line_with_file_and_line(mech_file, tmp_path, edit, mess
                         "involute-pair, planetary-q1, planetary-q2, planetary-q3, "
                         "planetary-q4, eccentric-flat-face, offset-knife-edge, "
                         "oscillating-roller, roller-harmonic-cycloidal, four-mass-shaft, "
-                        "four-masses-one-plane, inline-four, notes-example-1, single-cylinder\n"),
+                        "four-masses-one-plane, inline-four, notes-example-1, single-cylinder, "
+                        "single-cylinder-balance-mass\n"),
     ("missing.toml", "Error: no such file 'missing.toml'\n"),
 ])
 def test_unknown_source_is_one_line(source, message):
@@ -280,7 +281,8 @@ def test_list_shows_the_bundled_examples():
                    "involute-pair", "planetary-q1", "planetary-q2", "planetary-q3",
                    "planetary-q4", "eccentric-flat-face", "offset-knife-edge",
                    "oscillating-roller", "roller-harmonic-cycloidal", "four-mass-shaft",
-                   "four-masses-one-plane", "inline-four", "notes-example-1", "single-cylinder"]
+                   "four-masses-one-plane", "inline-four", "notes-example-1", "single-cylinder",
+                   "single-cylinder-balance-mass"]
     assert "Four-bar crank-rocker" in result.stdout
 
 

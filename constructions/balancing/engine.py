@@ -21,7 +21,7 @@ from ..record import Construction, Kind, Panel, Ref
 from .polygons import lay_polygon
 from .rotor import Engine
 
-__all__ = ["EnginePolygons", "draw_engine"]
+__all__ = ["EnginePolygons", "draw_engine", "engine_kinds"]
 
 KINDS = ("primary force", "primary couple", "secondary force", "secondary couple")
 
@@ -45,6 +45,11 @@ class EnginePolygons:
         return math.dist(seg.start.xy, seg.end.xy)
 
 
+def engine_kinds(e: Engine) -> tuple[str, ...]:
+    """The polygons an engine's data ask for: the secondary ones only with a rod given."""
+    return KINDS if e.rod is not None else KINDS[:2]
+
+
 def draw_engine(e: Engine, reference: float | None = None) -> EnginePolygons:
     """Draw the cranks and their doubled directions in the end view, then the four
     polygons; couples about the plane at ``reference`` (default: the engine's central
@@ -58,8 +63,9 @@ def draw_engine(e: Engine, reference: float | None = None) -> EnginePolygons:
         for kind, angle in (("1", theta), ("2", 2 * theta)):
             at = c.give(f"C{kind}{i}", g.Point(math.cos(angle), math.sin(angle)), label="")
             lines[kind, i] = c.draw(f"crank{kind}{i}", "line_through", o, at, kind=Kind.LINE)
-    mr, n = e.reciprocating * e.crank, e.rod / e.crank
-    for k, kind in enumerate(KINDS):
+    mr = e.reciprocating * e.crank
+    n = None if e.rod is None else e.rod / e.crank
+    for k, kind in enumerate(engine_kinds(e)):
         order = "1" if kind.startswith("primary") else "2"
         size = mr if order == "1" else mr / n
         vectors = [(str(i), size * ((p - ref) if kind.endswith("couple") else 1.0),

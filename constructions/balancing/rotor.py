@@ -59,13 +59,22 @@ class Engine:
     and connecting rod (m), the reciprocating mass a cylinder (kg), its speed (rad/s); a
     single cylinder may be partly balanced by a rotating mass opposite its crank, the
     fraction ``balanced`` of the reciprocating mass at the crank radius, and its forces are
-    asked at the crank angle ``at`` (rad)."""
+    asked at the crank angle ``at`` (rad).
+
+    A single cylinder may carry revolving masses too (crank, crank pin, the rod's revolving
+    part), ``revolving`` kg reduced to the crank radius: the balance mass takes them whole
+    with the fraction of the reciprocating mass, a product (m_rev + c·m)·r, put at
+    ``balance_radius`` (m, its mass found) or of ``balance_mass`` (kg, its radius found).
+    ``rod`` is None where no secondary force is asked: the primary forces need no rod."""
 
     cranks: tuple[float, ...]
     planes: tuple[float, ...]
     crank: float
-    rod: float
+    rod: float | None
     reciprocating: float
     speed: float
     balanced: float = 0.0
     at: float = 0.0
+    revolving: float = 0.0
+    balance_radius: float | None = None
+    balance_mass: float | None = None

@@ -54,6 +54,11 @@ WORDS: dict[str, str] = {
     "primary": "اولیه", "secondary": "ثانویه",
     "left along the stroke": "باقی\u200cمانده در امتداد کورس",
     "left across the stroke": "باقی\u200cمانده عمود بر کورس",
+    "resultant left": "برآیند باقی\u200cمانده",
+    "{mass} {kg} at {radius} {unit} opposite the crank balances {share} of m_rec and all of "
+    "m_rev":
+        "{mass} {kg} در شعاع {radius} {unit} روبه‌روی لنگ، {share} از m_rec و همهٔ m_rev را "
+        "متعادل می‌کند",
     "{share} of the reciprocating mass balanced by a rotating mass opposite the crank":
         "{share} از جرم رفت\u200cوبرگشتی با جرمی دوار روبه\u200cروی لنگ متعادل شده است",
     "at θ = {angle}°": "در θ = {angle} درجه",
@@ -106,6 +111,16 @@ WORDS: dict[str, str] = {
     "at most {along} N along (θ = 0°, 180°) and {across} N across (θ = 90°, 270°)":
         "حداکثر {along} N در امتداد کورس (θ = ۰°، ۱۸۰°) و {across} N عمود بر آن "
         "(θ = ۹۰°، ۲۷۰°)",
+    "at θ = {angle}°: primary force {primary} N along the line of stroke (no rod given: no "
+    "secondary force)":
+        "در θ = {angle}°: نیروی اولیه {primary} N در امتداد خط کورس (طول شاتون داده نشده: "
+        "نیروی ثانویه‌ای خواسته نشده است)",
+    "the unbalanced primary force's resultant: {size} N at θ = {angle}°, at most {most} N":
+        "برآیند نیروی اولیهٔ نامیزان: {size} N در θ = {angle}°، حداکثر {most} N",
+    "the balance mass opposite the crank: B·b = (m_rev + c·m)·r = {product} kg·m, so {mass} "
+    "kg at {radius}":
+        "جرم متعادل‌کننده روبه‌روی لنگ: B·b = (m_rev + c·m)·r = {product} kg·m، پس {mass} "
+        "kg در شعاع {radius}",
     "{kind}: balanced (its polygon closes)": "{kind}: متوازن (چندضلعی آن بسته است)",
     "{kind}: unbalanced, {left} {unit} at most (the vector sum: {value} {unit})":
         "{kind}: نامیزان، حداکثر {left} {unit} (جمع برداری: {value} {unit})",

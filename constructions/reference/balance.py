@@ -8,7 +8,9 @@
   lᵢ measured from A; then forces give (m r)_A = −Σ mᵢrᵢ − (m r)_B.
 - An engine's unbalanced inertia forces: primary m·ω²·r·cos θ and secondary
   m·ω²·r·cos 2θ / n along the line of stroke (n = l/r); a rotating mass c·m opposite the
-  crank leaves (1 − c)·m·ω²·r·cos θ along it and c·m·ω²·r·sin θ across it. For cylinders in
+  crank leaves (1 − c)·m·ω²·r·cos θ along it and c·m·ω²·r·sin θ across it, a resultant of
+  m·ω²·r·√((1 − c)² cos² θ + c² sin² θ); that mass, with the revolving masses m_rev it takes
+  whole, has the product B·b = (m_rev + c·m)·r. For cylinders in
   line, the primary forces and couples sum as vectors at the crank angles θᵢ, the
   secondary ones at 2θᵢ (the direct-crank reading), each a 1/n of the primary's size.
 """
@@ -20,8 +22,8 @@ from dataclasses import dataclass
 
 from ..balancing.rotor import Engine, Mass
 
-__all__ = ["EngineSums", "quadrant_angle", "resultant", "single_cylinder", "engine_sums",
-           "one_axial_plane", "two_planes"]
+__all__ = ["EngineSums", "balance_product", "quadrant_angle", "resultant", "single_cylinder",
+           "engine_sums", "one_axial_plane", "two_planes", "unbalanced_resultant"]
 
 
 def resultant(masses: tuple[Mass, ...] | list[Mass]) -> tuple[float, float]:
@@ -68,13 +70,29 @@ def one_axial_plane(masses) -> tuple[tuple[float, float], float] | None:
     return (-total * math.cos(base), -total * math.sin(base)), place
 
 
-def single_cylinder(e: Engine, theta: float) -> tuple[float, float, float, float]:
-    """At crank angle θ: the primary and secondary forces along the stroke (N), and with the
-    rotating balance mass, the unbalanced force along and across the stroke (N)."""
+def single_cylinder(e: Engine, theta: float) -> tuple[float, float | None, float, float]:
+    """At crank angle θ: the primary and secondary forces along the stroke (N; the secondary
+    None with no rod given), and with the rotating balance mass, the unbalanced force along
+    and across the stroke (N)."""
     f = e.reciprocating * e.speed ** 2 * e.crank
-    n = e.rod / e.crank
-    return (f * math.cos(theta), f * math.cos(2 * theta) / n,
-            (1 - e.balanced) * f * math.cos(theta), e.balanced * f * math.sin(theta))
+    secondary = None if e.rod is None else f * math.cos(2 * theta) / (e.rod / e.crank)
+    return (f * math.cos(theta), secondary, (1 - e.balanced) * f * math.cos(theta),
+            e.balanced * f * math.sin(theta))
+
+
+def unbalanced_resultant(e: Engine, theta: float) -> float:
+    """The size of the primary force left unbalanced at θ (N): the revolving masses are
+    balanced whole, and of the reciprocating mass m, (1 − c)·m·ω²·r·cos θ is left along the
+    stroke and c·m·ω²·r·sin θ across it, so m·ω²·r·√((1 − c)² cos² θ + c² sin² θ)."""
+    c = e.balanced
+    return e.reciprocating * e.speed ** 2 * e.crank * math.sqrt(
+        ((1 - c) * math.cos(theta)) ** 2 + (c * math.sin(theta)) ** 2)
+
+
+def balance_product(e: Engine) -> float:
+    """The balance mass's product B·b (kg·m) opposite the crank: all the revolving mass and
+    the fraction c of the reciprocating, at the crank radius, (m_rev + c·m)·r."""
+    return (e.revolving + e.balanced * e.reciprocating) * e.crank
 
 
 @dataclass(frozen=True)
@@ -95,7 +113,7 @@ def engine_sums(e: Engine, reference: float | None = None) -> EngineSums:
     if reference is None:
         reference = (min(e.planes) + max(e.planes)) / 2
     f = e.reciprocating * e.speed ** 2 * e.crank
-    n = e.rod / e.crank
+    n = math.inf if e.rod is None else e.rod / e.crank     # no rod: no secondary asked
 
     def size(angles, arms) -> float:
         return math.hypot(math.fsum(a * math.cos(t) for t, a in zip(angles, arms)),

@@ -12,9 +12,9 @@ import math
 from fractions import Fraction
 from typing import TYPE_CHECKING
 
-from tarsim.constructions.balancing.engine import KINDS
+from tarsim.constructions.balancing.engine import engine_kinds
 from tarsim.constructions.narration import numerals, unit_words, words
-from tarsim.constructions.reference.balance import single_cylinder
+from tarsim.constructions.reference.balance import single_cylinder, unbalanced_resultant
 from tarsim.constructions.units import LENGTH_UNITS
 from tarsim.graphics.balancing.balance_figures import draw_end_view, draw_polygon, draw_side_view
 from tarsim.graphics.figure import Figure
@@ -41,10 +41,10 @@ def balance_figures(s: BalanceSolution) -> dict[str, Figure]:
         return _rotor_figures(s, unit, metre)
     e = ex.engine
     if len(e.cranks) == 1:
-        return {"forces": _single_cylinder_plot(e)}
+        return {"forces": _single_cylinder_plot(e, s.cylinder_balance, unit, metre)}
     out = {}
     p = s.engine_polygons
-    for kind in KINDS:
+    for kind in engine_kinds(e):
         left = p.left(kind) * e.speed ** 2
         word = "N·m" if kind.endswith("couple") else "N"
         reading = (words("closed: balanced"), "", "") if kind in p.balanced else (
@@ -135,22 +135,30 @@ def _table(s: BalanceSolution, unit: str, metre: float) -> Figure:
     return draw_train_table(words("{name}: the table", name=s.exercise.name), heads, rows,
                             ruled=[len(r.masses)], notes=notes)
 
-def _single_cylinder_plot(e) -> Figure:
+def _single_cylinder_plot(e, held, unit: str, metre: float) -> Figure:
+    """The forces against crank angle; ``held``, the balance mass's product, mass and
+    radius where the file asks it, is named under the title."""
     xs = [float(d) for d in range(0, 361, 2)]
     values = [single_cylinder(e, math.radians(d)) for d in xs]
     series = [Series(words("primary"), tuple((x, v[0]) for x, v in zip(xs, values)),
-                     "plot_curve_dotted"),
-              Series(words("secondary"), tuple((x, v[1]) for x, v in zip(xs, values)),
-                     "plot_curve_dashed"),
-              Series(words("left along the stroke"),
-                     tuple((x, v[2]) for x, v in zip(xs, values))),
-              Series(words("left across the stroke"),
-                     tuple((x, v[3]) for x, v in zip(xs, values)), "plot_curve_dash_dot")]
+                     "plot_curve_dotted")]
+    if e.rod is not None:       # no rod given: no secondary force asked
+        series.append(Series(words("secondary"), tuple((x, v[1]) for x, v in zip(xs, values)),
+                             "plot_curve_dashed"))
+    series += [Series(words("left along the stroke"),
+                      tuple((x, v[2]) for x, v in zip(xs, values))),
+               Series(words("left across the stroke"),
+                      tuple((x, v[3]) for x, v in zip(xs, values)), "plot_curve_dash_dot"),
+               Series(words("resultant left"), tuple(
+                   (x, unbalanced_resultant(e, math.radians(x))) for x in xs),
+                   "plot_curve_grey")]
     at = math.degrees(e.at)
     here = single_cylinder(e, e.at)
+    whole = unbalanced_resultant(e, e.at)
     newton = unit_words("N")
     marks = [PlotMark(at, here[2], f"{numerals(f'{here[2]:.4g}')} {newton}"),
-             PlotMark(at, here[3], f"{numerals(f'{here[3]:.4g}')} {newton}")]
+             PlotMark(at, here[3], f"{numerals(f'{here[3]:.4g}')} {newton}"),
+             PlotMark(at, whole, f"{numerals(f'{whole:.4g}')} {newton}")]
     share = Fraction(e.balanced).limit_denominator(12)
     share = share if abs(float(share) - e.balanced) < 1e-9 else f"{e.balanced:g}"
     return draw_line_plot(words("Unbalanced forces"), words("crank angle θ (°)"),
@@ -158,7 +166,12 @@ def _single_cylinder_plot(e) -> Figure:
                           x_ticks=[(float(d), numerals(f"{d}")) for d in range(0, 361, 30)],
                           subtitle=words("{share} of the reciprocating mass balanced by a "
                                          "rotating mass opposite the crank",
-                                         share=numerals(str(share))),
+                                         share=numerals(str(share))) if held is None else
+                          words("{mass} {kg} at {radius} {unit} opposite the crank balances "
+                                "{share} of m_rec and all of m_rev",
+                                share=numerals(str(share)), mass=numerals(f"{held[1]:.4g}"),
+                                kg=unit_words("kg"), radius=numerals(f"{held[2] / metre:.4g}"),
+                                unit=unit_words(unit)),
                           mark_legend=words("at θ = {angle}°", angle=numerals(f"{at:g}")))
 
 

@@ -15,12 +15,13 @@ from dataclasses import dataclass
 from functools import cached_property
 from typing import Any
 
-from tarsim.constructions.balancing.engine import KINDS, EnginePolygons, draw_engine
+from tarsim.constructions.balancing.engine import EnginePolygons, draw_engine, engine_kinds
 from tarsim.constructions.balancing.polygons import Balance, draw_balance, rounding
 from tarsim.constructions.units import LENGTH_UNITS
 from tarsim.constructions.narration import numeral, phrase, words
-from tarsim.constructions.reference.balance import (engine_sums, one_axial_plane, quadrant_angle,
-                                                    resultant, single_cylinder, two_planes)
+from tarsim.constructions.reference.balance import (balance_product, engine_sums, one_axial_plane,
+                                                    quadrant_angle, resultant, single_cylinder,
+                                                    two_planes, unbalanced_resultant)
 from ..checked import Checked
 from ..solution_folder import ChapterFiles
 from ..worked_document import Bullets, Section, said_steps, title
@@ -106,10 +107,10 @@ class BalanceSolution(ChapterFiles):
             e = self.exercise.engine
             sums = engine_sums(e)
             w2 = e.speed ** 2
-            values = dict(zip(KINDS, (sums.primary_force, sums.primary_couple,
-                                      sums.secondary_force, sums.secondary_couple)))
+            values = dict(zip(engine_kinds(e), (sums.primary_force, sums.primary_couple,
+                                                sums.secondary_force, sums.secondary_couple)))
             size = e.reciprocating * e.crank * max(1.0, max(abs(p) for p in e.planes))
-            for kind in KINDS:
+            for kind in engine_kinds(e):
                 miss = abs(self.engine_polygons.left(kind) * w2 - values[kind]) / (size * w2)
                 if miss > AGREE:
                     out.append((kind, miss))
@@ -225,23 +226,11 @@ class BalanceSolution(ChapterFiles):
     def _engine_lines(self) -> list[str]:
         e = self.exercise.engine
         if len(e.cranks) == 1:
-            prim, sec, along, across = single_cylinder(e, e.at)
-            f = e.reciprocating * e.speed ** 2 * e.crank
-            return [words("at θ = {angle}°: primary force {primary} N, secondary {secondary} N "
-                          "along the line of stroke (n = l/r = {n})",
-                          angle=numeral(math.degrees(e.at), "g"), primary=numeral(prim),
-                          secondary=numeral(sec), n=numeral(e.rod / e.crank)),
-                    words("with {share} of the reciprocating mass balanced by a rotating mass: "
-                          "{along} N along the line of stroke and {across} N across it",
-                          share=numeral(e.balanced, "g"), along=numeral(along),
-                          across=numeral(across)),
-                    words("at most {along} N along (θ = 0°, 180°) and {across} N across "
-                          "(θ = 90°, 270°)", along=numeral((1 - e.balanced) * f),
-                          across=numeral(e.balanced * f))]
+            return self._cylinder_lines(e)
         sums = engine_sums(e)
         out = []
-        for kind, value in zip(KINDS, (sums.primary_force, sums.primary_couple,
-                                       sums.secondary_force, sums.secondary_couple)):
+        for kind, value in zip(engine_kinds(e), (sums.primary_force, sums.primary_couple,
+                                                 sums.secondary_force, sums.secondary_couple)):
             unit = "N·m" if kind.endswith("couple") else "N"
             left = self.engine_polygons.left(kind) * e.speed ** 2
             balanced = kind in self.engine_polygons.balanced
@@ -251,6 +240,49 @@ class BalanceSolution(ChapterFiles):
                              "{value} {unit})", kind=words(kind), left=numeral(left), unit=unit,
                              value=numeral(value)))
         return out
+
+    def _cylinder_lines(self, e) -> list[str]:
+        """A single cylinder's forces at its crank angle, what its balance mass leaves, and
+        the balance mass itself."""
+        prim, sec, along, across = single_cylinder(e, e.at)
+        f = e.reciprocating * e.speed ** 2 * e.crank
+        angle = numeral(math.degrees(e.at), "g")
+        out = [words("at θ = {angle}°: primary force {primary} N, secondary {secondary} N "
+                     "along the line of stroke (n = l/r = {n})", angle=angle,
+                     primary=numeral(prim), secondary=numeral(sec),
+                     n=numeral(e.rod / e.crank)) if e.rod is not None else
+               words("at θ = {angle}°: primary force {primary} N along the line of stroke (no "
+                     "rod given: no secondary force)", angle=angle, primary=numeral(prim)),
+               words("with {share} of the reciprocating mass balanced by a rotating mass: "
+                     "{along} N along the line of stroke and {across} N across it",
+                     share=numeral(e.balanced, "g"), along=numeral(along),
+                     across=numeral(across)),
+               words("the unbalanced primary force's resultant: {size} N at θ = {angle}°, at "
+                     "most {most} N", size=numeral(math.hypot(along, across)), angle=angle,
+                     most=numeral(max(1 - e.balanced, e.balanced) * f)),
+               words("at most {along} N along (θ = 0°, 180°) and {across} N across "
+                     "(θ = 90°, 270°)", along=numeral((1 - e.balanced) * f),
+                     across=numeral(e.balanced * f))]
+        held = self.cylinder_balance
+        if held is not None:
+            product, mass, radius = held
+            out.append(words("the balance mass opposite the crank: B·b = (m_rev + c·m)·r = "
+                             "{product} kg·m, so {mass} kg at {radius}",
+                             product=numeral(product), mass=numeral(mass),
+                             radius=self._length(radius)))
+        return out
+
+    @property
+    def cylinder_balance(self) -> tuple[float, float, float] | None:
+        """A single cylinder's balance mass: its product (kg·m), mass (kg) and radius (m),
+        where the file gives its radius or its mass (None where it gives neither)."""
+        e = self.exercise.engine
+        product = balance_product(e)
+        if e.balance_radius is not None:
+            return product, product / e.balance_radius, e.balance_radius
+        if e.balance_mass is not None:
+            return product, e.balance_mass, product / e.balance_mass
+        return None
 
     def document(self) -> list[Section]:
         """steps.md: the construction, numbered, and the results (the lines solve prints,
@@ -283,17 +315,44 @@ class BalanceSolution(ChapterFiles):
             for p in ex.rotor.planes:
                 q |= self._balance_mass(p, method)
         elif len(ex.engine.cranks) == 1:
-            prim, sec, along, across = single_cylinder(ex.engine, ex.engine.at)
-            q |= {name: Checked({"value": v}) for name, v in (
-                ("primary_force", prim), ("secondary_force", sec),
-                ("unbalanced_along", along), ("unbalanced_across", across))}
+            q |= self._cylinder_checked(ex.engine)
         else:
             sums = engine_sums(ex.engine)
-            for kind, value in zip(KINDS, (sums.primary_force, sums.primary_couple,
-                                           sums.secondary_force, sums.secondary_couple)):
+            for kind, value in zip(engine_kinds(ex.engine), (
+                    sums.primary_force, sums.primary_couple, sums.secondary_force,
+                    sums.secondary_couple)):
                 q[kind.replace(" ", "_")] = Checked(
                     {"value": self.engine_polygons.left(kind) * ex.engine.speed ** 2},
                     {"value": value}, method=f"{kind} polygon")
+        return q
+
+    def _cylinder_checked(self, e) -> dict[str, Checked]:
+        """A single cylinder's forces at its crank angle (the secondary only with a rod), the
+        resultant left unbalanced (the vector sum of its components, beside the closed form
+        m·ω²·r·√((1 − c)² cos² θ + c² sin² θ)) and its greatest, and the balance mass."""
+        prim, sec, along, across = single_cylinder(e, e.at)
+        f = e.reciprocating * e.speed ** 2 * e.crank
+        rows = [("primary_force", prim)] + ([("secondary_force", sec)] if sec is not None
+                                            else []) + [
+            ("unbalanced_along", along), ("unbalanced_across", across)]
+        q = {name: Checked({"value": v}) for name, v in rows}
+        q["unbalanced_resultant"] = Checked(
+            {"value": math.hypot(along, across), "unit": "N",
+             "from_stroke_deg": math.degrees(math.atan2(across, along)) % 360.0},
+            {"value": unbalanced_resultant(e, e.at)}, method="components along and across")
+        # The greatest over a turn: (1 − c)·m·ω²·r at dead centre, or c·m·ω²·r across.
+        c = e.balanced
+        q["unbalanced_max"] = Checked({"value": max(1 - c, c) * f, "unit": "N",
+                                       "at_deg": [0.0, 180.0] if 1 - c >= c else [90.0, 270.0]})
+        if balance_product(e) > 0:
+            q["balance_mr"] = Checked({"value": balance_product(e), "unit": "kg·m"})
+        held = self.cylinder_balance
+        if held is not None:
+            product, mass, radius = held
+            key, value = ("balance_mass", {"value": mass, "unit": "kg", "radius": radius}) \
+                if e.balance_radius is not None else (
+                "balance_radius", {"value": radius, "unit": "m", "mass": mass})
+            q[key] = Checked({**value, "angle_deg": 180.0})      # opposite the crank
         return q
 
     def _balance_mass(self, p, method: str) -> dict[str, Checked]:

@@ -8,6 +8,7 @@ failure is one line naming file:line.
 
 from __future__ import annotations
 
+import math
 import re
 from dataclasses import dataclass
 from typing import Any, ClassVar
@@ -29,7 +30,8 @@ _NAME = re.compile(rf"^[^\s\x00-\x1f\x7f-\x9f\u202a-\u202e\u2066-\u2069]{{1,{_NA
 
 _KEYS = {"rotor": ("speed",), "mass": ("name", "mass", "radius", "angle", "plane"),
          "balance": ("name", "plane", "radius", "mass"),
-         "engine": ("speed", "crank", "rod", "reciprocating", "balanced", "at"),
+         "engine": ("speed", "crank", "stroke", "rod", "reciprocating", "balanced", "at",
+                    "revolving", "balance_radius", "balance_mass"),
          "cylinder": ("crank", "plane")}
 
 
@@ -188,16 +190,24 @@ def _planes(t: Tables, metre: float) -> list[Plane]:
 
 def _engine(t: Tables, metre: float) -> Engine:
     one = _one(t, "engine")
-    crank = t.number(one, "crank", "engine", "the crank radius")
-    rod = t.number(one, "rod", "engine", "the connecting rod's length")
-    mass = t.number(one, "reciprocating", "engine", "the reciprocating mass")
     unit = t.units("m", "rad/s")[0]
+    if ("crank" in one) == ("stroke" in one):
+        raise t.fail("[engine] gives the crank radius (crank = …) or the stroke (stroke = …, "
+                     "twice the crank), one of them", "engine", "stroke" if "crank" in one
+                     else None)
+    key = "crank" if "crank" in one else "stroke"
+    crank = t.number(one, key, "engine", f"the {key}") / (1 if key == "crank" else 2)
+    mass = t.number(one, "reciprocating", "engine", "the reciprocating mass")
     if not crank > 0:
-        raise t.fail(f"the crank radius must be positive, got {crank:g} {unit}", "engine",
-                     "crank")
-    if not rod > crank:
-        raise t.fail(f"the connecting rod ({rod:g} {unit}) must be longer than the crank "
-                     f"({crank:g} {unit}), or the piston cannot follow it round", "engine", "rod")
+        raise t.fail(f"the {key} must be positive, got {crank:g} {unit}", "engine", key)
+    rod = None          # the primary forces need no rod; the secondary ones are its
+    if "rod" in one:
+        rod = t.number(one, "rod", "engine", "the connecting rod's length")
+        if not rod > crank:
+            raise t.fail(f"the connecting rod ({rod:g} {unit}) must be longer than the crank "
+                         f"({crank:g} {unit}), or the piston cannot follow it round", "engine",
+                         "rod")
+        rod *= metre
     if not mass > 0:
         raise t.fail(f"the reciprocating mass must be positive, got {mass:g} kg", "engine",
                      "reciprocating")
@@ -219,8 +229,41 @@ def _engine(t: Tables, metre: float) -> Engine:
             raise t.fail(f"cylinders {j + 1} and {i + 1} stand in the same plane: cylinders in "
                          "line need their planes apart (plane = …)", "cylinder",
                          "plane" if "plane" in cylinders[i] else None, i)
-    return Engine(cranks, planes, crank * metre, rod * metre, mass, _speed(t, "engine"),
-                  balanced, _degrees(t.number(one, "at", "engine", "the crank angle", 0, 0.0)))
+    revolving, radius, balance = _revolving(t, one, len(cranks), unit)
+    return Engine(cranks, planes, crank * metre, rod, mass, _speed(t, "engine"),
+                  balanced, _degrees(t.number(one, "at", "engine", "the crank angle", 0, 0.0)),
+                  revolving, None if radius is None else radius * metre, balance)
+
+
+def _revolving(t: Tables, one: dict, cylinders: int, unit: str
+               ) -> tuple[float, float | None, float | None]:
+    """A single cylinder's revolving masses (kg at the crank radius, a number or a list
+    summed: crank, crank pin, the rod's revolving part) and its balance mass's radius or
+    mass (the other is found), as the file gives them."""
+    given = [k for k in ("revolving", "balance_radius", "balance_mass") if k in one]
+    if given and cylinders > 1:
+        raise t.fail(f"{given[0]} is a single cylinder's: cylinders in line are balanced by "
+                     "their cranks' layout; leave it out", "engine", given[0])
+    if "balance_radius" in one and "balance_mass" in one:
+        raise t.fail("the balance mass is given at its radius (balance_radius = …) or by its "
+                     "mass (balance_mass = …), not both: the other is found", "engine",
+                     "balance_mass")
+    parts = one.get("revolving", 0.0)
+    parts = parts if isinstance(parts, list) else [parts]
+    masses = [t.number({"revolving": p}, "revolving", "engine", "a revolving mass")
+              for p in parts]
+    if any(not m >= 0 for m in masses):
+        raise t.fail("the revolving masses (kg, at the crank radius) must be positive or 0, "
+                     f"got {min(masses):g}", "engine", "revolving")
+    out = []
+    for key, what in (("balance_radius", f"{unit}"), ("balance_mass", "kg")):
+        v = t.number(one, key, "engine", f"the {key.replace('_', ' ')}", 0, 0.0) \
+            if key in one else None
+        if v is not None and not v > 0:
+            raise t.fail(f"the {key.replace('_', ' ')} must be positive, got {v:g} {what}",
+                         "engine", key)
+        out.append(v)
+    return math.fsum(masses), out[0], out[1]
 
 
 def _degrees(value: float) -> float:
