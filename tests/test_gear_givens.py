@@ -5,6 +5,7 @@ held to the textbook's closed form (exact fractions: a tolerance of 0)."""
 
 from __future__ import annotations
 
+import json
 from fractions import Fraction
 
 import pytest
@@ -175,3 +176,61 @@ def test_two_speeds_on_an_ordinary_train_are_refused():
     with pytest.raises(InputError, match=r"^c\.toml:\d+: the train has 1 degree of freedom .* "
                                          r"give one \[\[input\]\], not two$"):
         parse_train(text, "c.toml")
+
+
+# ----- torques and power --------------------------------------------------------------------------
+def test_power_in_kw_with_an_efficiency_gives_exact_torques_over_pi(tmp_path):
+    """The bundled gear box: T2 = 7500/(1440·2π/60) = 625/(4π) N·m, T4 = −0.95·5·T2 =
+    −11875/(16π), T1 = −(T2 + T4) = 9375/(16π): exact fractions of the data over π."""
+    s = solve_train(load("gearbox-power-efficiency"))
+    q = s.quantities
+    assert q["omega4"].exact == F(1440, 5)
+    assert (q["torque2"].exact, q["torque4"].exact, q["torque1"].exact) == (
+        F(625, 4), F(-11875, 16), F(9375, 16))
+    assert all(q[t].over_pi and q[t].exact == q[t].reference for t in ("torque2", "torque4",
+                                                                       "torque1"))
+    # 1e-15: the float of an exact fraction over π, a rounding or two
+    assert q["torque4"].si == pytest.approx(-11875 / 16 / 3.141592653589793, rel=1e-15)
+    s.write(tmp_path)
+    data = json.loads((tmp_path / "results.json").read_text())["quantities"]
+    assert data["torque1"]["exact"] == "9375/(16*pi)"
+    assert data["torque2"]["exact"] == "625/(4*pi)"
+
+
+def test_a_decimal_power_keeps_its_torques_fractions_of_its_digits():
+    """The issue's holding torque came out as 15452595849824865/281474976710656, a float's
+    binary fraction; the input's torque is 30·P/n over π with P as written."""
+    text = (simple(given="member = 2\nspeed = 1800\npower = 3769.911184307752",
+                   find='["torque5", "torque4"]'))
+    q = solve_train(parse_train(text, "t.toml")).quantities
+    assert q["torque5"].exact == -F("3769.911184307752") * 30 / 1800 * 3   # ω2/ω5 = 3
+    assert q["torque4"].exact.denominator % 2 ** 20 != 0
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.integers(12, 60), st.integers(12, 40), st.integers(-3000, 3000).filter(bool),
+       st.integers(-3000, 3000), st.integers(1, 500))
+def test_two_speeds_share_the_torque_as_the_teeth_do(sun, planet, w2, w5, torque):
+    """With no losses a simple epicyclic's torques stand as T2 : T4 : T5 = N2 : N4 :
+    −(N2 + N4), whatever its speeds: the sun driven by T, the ring takes T·N4/N2 and the arm
+    the rest."""
+    ring = sun + 2 * planet
+    text = two(2, w2, 5, w5, sun, planet, ring, find='["torque4", "torque5"]')
+    text = text.replace(f"speed = {w2}", f"speed = {w2}\ntorque = {torque}", 1)
+    s = solve_train(parse_train(text, "t.toml"))
+    if s.found.speeds[4] == s.found.speeds[5]:          # the train turns locked: no split
+        return
+    t2 = torque if w2 > 0 else -torque
+    assert s.quantities["torque4"].exact == F(t2 * ring, sun)
+    assert s.quantities["torque5"].exact == -F(t2 * (sun + ring), sun)
+    assert s.passed
+
+
+@pytest.mark.parametrize("value, words", [("95", "write 0.95"), ("0", "0 < efficiency ≤ 1"),
+                                          ('"high"', "must be a number")])
+def test_a_bad_efficiency_is_refused_at_its_line(value, words):
+    text = "efficiency = " + value + "\n" + simple(given="member = 2\nspeed = 10\ntorque = 5",
+                                                  find='["torque5", "torque4"]')
+    with pytest.raises(InputError, match=r"^t\.toml:1: ") as e:
+        parse_train(text, "t.toml")
+    assert words in str(e.value)

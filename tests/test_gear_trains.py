@@ -250,9 +250,10 @@ def test_the_output_and_holding_torques_balance_power_and_torque(given, t_in):
     s = solve_train(parse_train(text, "q4.toml"))
     q = s.quantities
     assert s.passed
-    assert float(q["torque5"].exact) == pytest.approx(-720.0, rel=1e-13)
-    assert float(q["torque1"].exact) == pytest.approx(700.0, rel=1e-13)
-    assert float(q["torque2"].exact) == pytest.approx(20.0, rel=1e-13)
+    # (a power given: each torque exact over π, its N·m in .si)
+    assert q["torque5"].si == pytest.approx(-720.0, rel=1e-13)
+    assert q["torque1"].si == pytest.approx(700.0, rel=1e-13)
+    assert q["torque2"].si == pytest.approx(20.0, rel=1e-13)
     if t_in is not None:                        # a torque given keeps every torque exact
         assert (q["torque5"].exact, q["torque1"].exact) == (F(-720), F(700))
     assert "T1 = −(T2 + T5) = 700 N·m" in s.steps()

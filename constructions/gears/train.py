@@ -94,6 +94,8 @@ class GearTrain:
     speed_given: bool = True
     """False where the file gives no speed (only ratios or torques are asked): the input
     then turns 1 of the file's unit, and only what does not depend on it is said."""
+    efficiency: Fraction = Fraction(1)
+    """The share of the input's power the output takes (1: no losses)."""
     second: tuple[int, Fraction] | None = None
     """A second member's given speed (member, exact speed), where no member is fixed: a
     planetary train's two degrees of freedom, the arm and a gear both turning, or a sun

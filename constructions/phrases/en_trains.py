@@ -16,6 +16,16 @@ PHRASES: dict[str, str] = {
     "gears.two_given": "Each member turns y·(row 1) + x·(row 2), y the arm's speed. The two "
                        "given speeds: ω{a} = y + ({ha})·x = {sa} and ω{b} = y + ({hb})·x = "
                        "{sb}, so x = {x} {unit} and y = {y} {unit}.",
+    "gears.power_efficiency": "The input is driven by {given}. The output takes η = {eta} of "
+                              "its power: T{o}·ω{o} = −η·T{i}·ω{i}, so T{o} = −η·T{i}·ω{i}/ω{o} "
+                              "= −{eta} × T{i} × {ratio} = {value} N·m (counter-clockwise +).",
+    "gears.power_two": "The input is driven by {given}, and member {h} turns too. The torques "
+                       "sum to zero, T{i} + T{o} + T{h} = 0, and so do the powers but for the "
+                       "losses, {eta}·T{i}·ω{i} + T{o}·ω{o} + T{h}·ω{h} = 0, so T{o} = "
+                       "T{i}·(ω{h} − {eta}·ω{i})/(ω{o} − ω{h}) = {value} N·m "
+                       "(counter-clockwise +).",
+    "gears.holding_two": "Member {fixed} takes the rest: T{fixed} = −(T{i} + T{o}) = {value} "
+                         "N·m.",
     "gears.mesh_carries": "{driven} meshes {kind}ly with {driver}, so it turns {way}, "
                           "N{a}/N{b} = {na}/{nb} as fast: {turns} → {result}.",
     "gears.shaft_carries": "{member} is on one shaft with {other}: it turns alike, {turns}.",

@@ -79,6 +79,15 @@ PHRASES: dict[str, str] = {
     "gears.two_given": "هر عضو با y·(سطر 1) + x·(سطر 2) می‌چرخد که y سرعت بازو است. دو "
                        "سرعت داده‌شده: ω{a} = y + ({ha})·x = {sa} و ω{b} = y + ({hb})·x = "
                        "{sb}، پس x = {x} {unit} و y = {y} {unit}.",
+    "gears.power_efficiency": "عضو ورودی با {given} رانده می‌شود. خروجی η = {eta} از توان آن را "
+                              "می‌گیرد: T{o}·ω{o} = −η·T{i}·ω{i}، پس T{o} = −η·T{i}·ω{i}/ω{o} "
+                              "= −{eta} × T{i} × {ratio} = {value} N·m (پادساعتگرد +).",
+    "gears.power_two": "عضو ورودی با {given} رانده می‌شود و عضو {h} نیز می‌چرخد. جمع گشتاورها "
+                       "صفر است، T{i} + T{o} + T{h} = 0، و جمع توان‌ها نیز جز اتلاف‌ها، "
+                       "{eta}·T{i}·ω{i} + T{o}·ω{o} + T{h}·ω{h} = 0، پس T{o} = "
+                       "T{i}·(ω{h} − {eta}·ω{i})/(ω{o} − ω{h}) = {value} N·m (پادساعتگرد +).",
+    "gears.holding_two": "باقی گشتاور را عضو {fixed} می‌گیرد: T{fixed} = −(T{i} + T{o}) = "
+                         "{value} N·m.",
     "gears.ordinary_start": "{member}، یعنی عضو ورودی، با {speed} می‌چرخد. یک دور چرخش آن را از "
                             "طریق درگیری‌ها به عضوهای دیگر منتقل کنید:",
     "gears.mesh_carries": "{driven} با {driver} درگیری {kind} دارد، پس {way} و با سرعتی "

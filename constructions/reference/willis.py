@@ -16,7 +16,7 @@ from fractions import Fraction
 from ..errors import InputError
 from ..gears.train import GearTrain
 
-__all__ = ["willis_speeds"]
+__all__ = ["willis_speeds", "willis_torques"]
 
 
 def willis_speeds(train: GearTrain) -> dict[int, Fraction]:
@@ -58,6 +58,29 @@ def willis_speeds(train: GearTrain) -> dict[int, Fraction]:
     if train.second is not None:              # two given speeds, no member fixed
         equation({train.second[0]: Fraction(1)}, train.second[1])
     return dict(zip(members, _solve(rows, len(members), train)))
+
+
+def willis_torques(train: GearTrain, speeds: dict[int, Fraction], loads: dict[int, Fraction],
+                   output: int, holder: int | None) -> dict[int, Fraction]:
+    """The output's and the holder's torques from the input's (``loads``, one member's):
+    the equilibrium of the whole train, ΣT = 0 (where a holder takes the rest), and its
+    energy, Σ T·ω = −(1 − η)·T_in·ω_in
+    (what the losses take), solved as one exact linear system in (T_out, T_holder). The
+    torques are in whatever unit ``loads`` is (a coefficient of 1/π, too).
+
+    Raises
+    ------
+    InputError
+        If the two equations do not fix the torques (output and holder turn alike).
+    """
+    (i, t_in), = loads.items()
+    members = [output] + ([holder] if holder is not None else [])
+    loss = (1 - train.efficiency) * t_in * speeds[i]
+    rows = [[speeds[m] for m in members] + [-t_in * speeds[i] + loss]]
+    if holder is not None:          # with no holder the housing takes the rest of ΣT
+        rows.append([Fraction(1)] * len(members) + [-t_in])
+    solved = _solve(rows, len(members), train)
+    return {i: t_in, **dict(zip(members, solved))}
 
 
 def _solve(rows: list[list[Fraction]], n: int, train: GearTrain) -> list[Fraction]:

@@ -23,12 +23,13 @@ from ..names import named_in, read_names
 
 __all__ = ["TrainExercise", "parse_train"]
 
-_TOP = ("name", "names", "source", "description", "fixed", "units", "gear", "arm", "mesh", "shaft",
-        "input", "involute", "ask")
+_TOP = ("name", "names", "source", "description", "fixed", "efficiency", "units", "gear", "arm",
+        "mesh", "shaft", "input", "involute", "ask")
 MESH_ASKS = ("contact_ratio", "path_of_contact", "arc_of_contact", "pressure_angle",
              "circular_pitch", "interference", "least_teeth")
 """What the involute mesh answers (with ``[involute]``)."""
 _SPEEDS = ("rpm", "rad/s")
+_POWERS = {"W": 1, "kW": 1000}
 
 
 @dataclass(frozen=True)
@@ -94,7 +95,8 @@ class _Reader:
         train = GearTrain(gears, meshes, shafts, arm, arm_name, fixed, member,
                           Fraction(1) if speed is None else speed, units, planets, torque,
                           power, self.text("name") or self.id, self.filename,
-                          speed_given=speed is not None, second=second)
+                          speed_given=speed is not None, second=second,
+                          efficiency=self.efficiency())
         try:
             train.check()
         except InputError as e:
@@ -144,8 +146,10 @@ class _Reader:
         t = self.data.get("units", {})
         if not isinstance(t, dict):
             raise self.fail("must be a table: [units] speed = \"rpm\"", table="units")
-        self.known(t, ("speed", "length"), "units")
+        self.known(t, ("speed", "length", "power"), "units")
         speed, length = t.get("speed", "rpm"), t.get("length", "mm")
+        if t.get("power", "W") not in _POWERS:
+            raise self.fail(f"unknown power unit '{t['power']}'; use W or kW", "units", "power")
         if speed not in _SPEEDS:
             raise self.fail(f"unknown speed unit '{speed}'; use rpm or rad/s", "units", "speed")
         if length not in LENGTH_UNITS:
@@ -337,7 +341,20 @@ class _Reader:
         if v <= 0:
             raise self.fail(f"the input {given[0]} must be positive: it drives the train "
                             "(its sense is the input's)", "input", given[0])
-        return (v, None) if given[0] == "torque" else (None, v)
+        units = self.data.get("units") or {}
+        per = _POWERS.get(units.get("power", "W"), 1) if isinstance(units, dict) else 1
+        return (v, None) if given[0] == "torque" else (None, v * per)
+
+    def efficiency(self) -> Fraction:
+        """The train's efficiency, 0 < η ≤ 1 (1, no losses, where none is given)."""
+        if "efficiency" not in self.data:
+            return Fraction(1)
+        eta = self.exact(self.data["efficiency"], "the efficiency", "", "efficiency")
+        if not 0 < eta <= 1:
+            hint = f" (a percentage? write {float(eta) / 100:g})" if 1 < eta <= 100 else ""
+            raise self.fail(f"an efficiency of {_shown(self.data['efficiency'])} is not one: "
+                            f"give it as a fraction, 0 < efficiency ≤ 1{hint}", key="efficiency")
+        return eta
 
     def involute(self, train: GearTrain) -> Involute | None:
         """The involute mesh to draw: a meshing pair, driver first, and its tooth form."""
@@ -422,14 +439,17 @@ class _Reader:
                                 + ("fixed" if held == train.fixed else
                                    f"on one shaft with the fixed member {train.fixed}")
                                 + "; ask a ratio over a turning member", "ask", "find")
+        held = train.fixed if train.second is None else train.second[0]
         loaded = {int(q.removeprefix("torque")) for q in find if q in torques}
-        loaded -= {train.input_member, train.fixed}
+        loaded -= {train.input_member, held}
         if len(loaded) > 1:
-            raise self.fail(f"torques on {len(loaded)} members besides the input and the fixed "
-                            "one: the balance of power gives one output's", "ask", "find")
-        if f"torque{train.fixed}" in find and not loaded:
-            raise self.fail("the fixed member's holding torque needs the output's: ask the "
-                            "output's torque too", "ask", "find")
+            raise self.fail(f"torques on {len(loaded)} members besides the input and the "
+                            + ("fixed one" if train.second is None else "second given one")
+                            + ": the balance of power gives one output's", "ask", "find")
+        if f"torque{held}" in find and not loaded:
+            raise self.fail(("the fixed member's" if train.second is None else
+                             f"member {held}'s") + " holding torque needs the output's: ask "
+                            "the output's torque too", "ask", "find")
         return tuple(find)
 
     @staticmethod

@@ -18,12 +18,13 @@ from tarsim.constructions.checks import CEILING
 from tarsim.constructions.gears.involute import InvoluteMesh, draw_involute_mesh, least_teeth_drawn
 from tarsim.constructions.gears.kutzbach import DRAWN, Kutzbach, draw_kutzbach, undrawable
 from tarsim.constructions.gears.tabular import TrainSpeeds, fraction_text, tabulate
-from tarsim.constructions.gears.torques import balance, say_balance
+from tarsim.constructions.gears.torques import (balance, holder, input_torque, per_pi,
+                                                say_balance, torque_text)
 from tarsim.constructions.narration import (numeral, numerals, phrase, significant, unit_words,
                                             words)
 from tarsim.constructions.reference.gear_mesh import (MeshReference, involute_miss, least_teeth,
                                                       mesh_reference)
-from tarsim.constructions.reference.willis import willis_speeds
+from tarsim.constructions.reference.willis import willis_speeds, willis_torques
 from tarsim.graphics.gears.involute_figure import draw_involute_figure
 from tarsim.graphics.gears.kutzbach_figure import draw_kutzbach_figure
 from tarsim.graphics.gears.train_schematic import draw_train_schematic
@@ -52,6 +53,8 @@ class TrainQuantity:
     matched: bool = True
     """False when what the number counts differs (the interference's gears), though the
     counts may agree."""
+    over_pi: bool = False
+    """True for a torque that is ``exact``/π (a power given, speeds in rpm)."""
 
     @property
     def passed(self) -> bool:
@@ -98,15 +101,17 @@ class TrainSolution(ChapterFiles):
         """Each asked quantity: a member's speed (file units; SI rad/s), or a ratio."""
         out = {}
         per = self.train.units.per_rad_s
-        torques, torques_ref = self._torques(self.found.speeds), self._torques(self.reference)
+        torques, torques_ref = self._torques(self.found.speeds), self._reference_torques()
+        pi = per_pi(self.train)
         for name in self.exercise.asks:
             if name in MESH_ASKS:
                 out[name] = self._mesh_quantity(name)
                 continue
             if name.startswith("torque"):
                 m = int(name.removeprefix("torque"))
-                out[name] = TrainQuantity(name, torques[m], torques_ref[m], float(torques[m]),
-                                          "balance of power")
+                si = float(torques[m]) / (math.pi if pi else 1.0)
+                out[name] = TrainQuantity(name, torques[m], torques_ref[m], si,
+                                          "balance of power", over_pi=pi)
                 continue
             parts = [int(p.removeprefix("omega")) for p in name.split("/")]
             if len(parts) == 1:
@@ -161,6 +166,18 @@ class TrainSolution(ChapterFiles):
 
     def _torques(self, speeds: dict[int, Fraction]) -> dict[int, Fraction]:
         return balance(self.train, speeds, self.output)
+
+    def _reference_torques(self) -> dict[int, Fraction]:
+        """The torques by the reference: ΣT = 0 and ΣT·ω = losses as a linear system, on
+        the Willis speeds."""
+        t_in = input_torque(self.train, self.reference)
+        if t_in is None:
+            return {}
+        loads = {self.train.input_member: t_in}
+        if self.output is None or self.reference[self.output] == 0:
+            return loads
+        return willis_torques(self.train, self.reference, loads, self.output,
+                              holder(self.train))
 
     @property
     def passed(self) -> bool:
@@ -237,7 +254,13 @@ class TrainSolution(ChapterFiles):
                 continue
             if q.name.startswith("torque"):
                 sense = "" if q.exact == 0 else (" ccw" if q.exact > 0 else " cw")
-                value = f"{float(abs(q.exact)):.6g} N·m{sense}"
+                value = f"{torque_text(abs(q.exact), q.over_pi)} N·m{sense}"
+                symbol = ask_symbol(q.name)
+                out.append(check_line(f"{symbol} = {value}", width=len(symbol) + 31,
+                                      passed=q.passed, against="(ΣT = 0, ΣTω = 0: "
+                                      f"{torque_text(q.reference, q.over_pi)})",
+                                      method=q.method))
+                continue
             elif "/" in q.name:
                 value = f"{fraction_text(q.exact)} ({float(q.exact):.6g})"
             else:
@@ -279,6 +302,8 @@ class TrainSolution(ChapterFiles):
         if q.name in MESH_ASKS:         # a length, an angle, a ratio: not a fraction
             found = _mesh_text(q.name, float(q.exact), self.mesh)
             willis = _mesh_text(q.name, float(q.reference), self.mesh_reference)
+        elif q.name.startswith("torque"):
+            found, willis = torque_text(q.exact, q.over_pi), torque_text(q.reference, q.over_pi)
         else:
             found, willis = fraction_text(q.exact), fraction_text(q.reference)
         return (ask_symbol(q.name), found, willis, words("yes" if q.passed else "NO"),
@@ -353,7 +378,11 @@ class TrainSolution(ChapterFiles):
             to_si = per if speed else 1.0          # a speed's exact value is in the file's unit
             entry: dict[str, Any] = {"value": q.si}
             reference: dict[str, Any] = {"value": float(q.reference) * to_si}
-            if q.name not in MESH_ASKS:            # drawn lengths and angles are not exact
+            if q.over_pi:                          # a torque (30·P/n)/π: over π exactly
+                reference["value"] = float(q.reference) / math.pi
+                entry["exact"], reference["exact"] = _plain(q.exact, True), _plain(
+                    q.reference, True)
+            elif q.name not in MESH_ASKS:          # drawn lengths and angles are not exact
                 entry["exact"] = _plain(q.exact)
                 reference["exact"] = _plain(q.reference)
             if speed:
@@ -374,8 +403,12 @@ class TrainSolution(ChapterFiles):
         return out
 
 
-def _plain(x: Fraction) -> str:
-    """An exact value as results.json writes it: "-3/7", ASCII minus."""
+def _plain(x: Fraction, over_pi: bool = False) -> str:
+    """An exact value as results.json writes it: "-3/7", ASCII minus; ``over_pi``
+    "4500/pi", "-3/(7*pi)"."""
+    if over_pi:
+        top = str(x.numerator)
+        return f"{top}/pi" if x.denominator == 1 else f"{top}/({x.denominator}*pi)"
     return fraction_text(x).replace("−", "-")
 
 
