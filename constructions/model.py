@@ -83,9 +83,11 @@ class Drive:
 @dataclass(frozen=True)
 class GivenRate:
     """An input given, as textbooks often give it, by another member's motion than the
-    input link's: the speed of ``target`` (a point on a frame guide, m/s along the guide's
-    direction) or the ω of link ``target`` (rad/s, CCW +), with its rate of change
-    (``second``: m/s², rad/s²) when ``second_given``. The input link's ω and α follow from
+    input link's: the speed of ``target`` (kind "speed": a point on a frame guide, m/s along
+    the guide's direction; kind "input_point": a point of the input link, m/s along its
+    circle about the frame pivot, CCW +) or the ω of link ``target`` (kind "omega": rad/s,
+    CCW +), with its rate of change (``second``: m/s², rad/s²; of a point of the input
+    link, its tangential part) when ``second_given``. The input link's ω and α follow from
     it (:mod:`tarsim.exercises.given_rate`)."""
 
     kind: str

@@ -140,7 +140,8 @@ def test_bad_file_is_one_line_with_file_and_line(mech_file, tmp_path, edit, mess
     ("four-barr",
      "Error: no file or bundled example called 'four-barr'; did you mean 'four-bar'?\n"),
     ("nothing-like-it", "Error: no file or bundled example called 'nothing-like-it'; bundled: "
-                        "crank-shaper, four-bar, grashof-crank-rocker, grashof-double-crank, "
+                        "crank-pin-speed, crank-shaper, four-bar, grashof-crank-rocker, "
+                        "grashof-double-crank, "
                         "hinkle-four-bar, hinkle-slider-crank, inverted-slider-crank, "
                         "klein-slider-crank, offset-slider-crank, parallelogram-four-bar, "
                         "piston-driven-slider-crank, rolling-wheel, six-link-homework-1, "
@@ -269,7 +270,8 @@ def test_list_shows_the_bundled_examples():
     result = run("list")
     assert result.exit_code == 0
     ids = [line.split()[0] for line in result.stdout.splitlines() if not line.startswith(" ")]
-    assert ids == ["crank-shaper", "four-bar", "grashof-crank-rocker", "grashof-double-crank",
+    assert ids == ["crank-pin-speed", "crank-shaper", "four-bar", "grashof-crank-rocker",
+                   "grashof-double-crank",
                    "hinkle-four-bar", "hinkle-slider-crank", "inverted-slider-crank",
                    "klein-slider-crank", "offset-slider-crank", "parallelogram-four-bar",
                    "piston-driven-slider-crank", "rolling-wheel", "six-link-homework-1",

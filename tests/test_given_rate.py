@@ -29,7 +29,7 @@ def test_the_piston_driven_slider_crank_gives_back_its_pistons_motion():
 
 def test_a_couplers_omega_and_alpha_drive_the_crank():
     text = (SHAPER.replace("omega = 10", "omega = { link = 3, value = 2, alpha = 5 }")
-            .replace('find = ["centres", "omega3", "V_C", "V_D"]',
+            .replace('find = ["centres", "omega3", "V_C", "V_D", "Vmin_3_B_C"]',
                      'find = ["omega2", "omega3", "alpha3", "V_C"]')
             .replace('methods = ["radius-rotation", "parallel-line", "components"]',
                      'methods = ["polygon"]'))
@@ -41,7 +41,10 @@ def test_a_couplers_omega_and_alpha_drive_the_crank():
 
 
 @pytest.mark.parametrize("swap, words", [
-    ('speed = { point = "B", value = 300 }', "'B' is none: C"),
+    ('speed = { point = "D", value = 300 }', "of input link 2 (O2, B) or on a frame guide (C); "
+                                             "'D' is neither"),
+    ('speed = { point = "O2", value = 300 }', "O2 is link 2's frame pivot, at rest"),
+    ('speed = { point = "B", value = 300, sense = "up" }', 'must be "ccw" or "cw"'),
     ('omega = { link = 2, value = 3 }', "give the input link's own as omega = <number>"),
     ('omega = { link = 3 }', "gives the input by another member's motion"),
     ('speed = { point = "C", value = 0 }', "the speed given is 0, which leaves the mechanism"),
@@ -72,3 +75,22 @@ def test_at_a_dead_centre_the_piston_gives_no_crank_speed():
                                           r"with link 2 at this position, so no ω2 gives it "
                                           r"300 mm/s"):
         solve_exercise(parse_exercise(text, "piston.toml", "piston"))
+
+
+def test_the_crank_pins_speed_drives_its_crank():
+    # The crank pin A of the bundled four-bar (O2A = 100 mm) moves at 1 m/s clockwise and
+    # gains speed at 5 m/s²: ω2 = −V_A / O2A = −10 rad/s, α2 = −Aᵗ_A / O2A = −50 rad/s².
+    # The rest scale as velocities are linear in ω2: ω3/ω2 is the four-bar's at ω2 = 10.
+    sol = solve_exercise(load("crank-pin-speed"))
+    q = sol.quantities
+    assert all(x.passed for x in q.values())
+    # the conversion divides by the polygon's 100 mm at 1 rad/s: a few roundings, 1e-12
+    assert q["omega2"].value["value"] == pytest.approx(-10.0, rel=1e-12)
+    assert q["alpha2"].value["value"] == pytest.approx(-50.0, rel=1e-11)
+    assert q["V_A"].value["value"] == pytest.approx(1.0, rel=1e-12)
+    four_bar = solve_exercise(load("four-bar").asking(("omega3", "omega4"))).quantities
+    for name in ("omega3", "omega4"):
+        assert q[name].value["value"] == pytest.approx(-four_bar[name].value["value"],
+                                                       rel=1e-12)
+    assert any("V_A square to O2A" in note and "so ω2 = −10 rad/s" in note
+               for note in sol.notes)

@@ -23,7 +23,7 @@ from tarsim.exercises.catalog import everything
 from tarsim.exercises.grading.grade import grade
 from tarsim.exercises.linkages.solution_files import solve_worked
 
-WORKED = ("crank-shaper", "inverted-slider-crank", "klein-slider-crank",
+WORKED = ("crank-pin-speed", "crank-shaper", "inverted-slider-crank", "klein-slider-crank",
           "piston-driven-slider-crank", "rolling-wheel", "wheel-driven-slider",
           "wheel-round-circle", "whitworth")
 """The bundled exercises that draw a worked page."""

@@ -202,9 +202,9 @@ def test_check_time_ratio_point_branch():
     assert q["passed"]
 
 
-QUICK_RETURNS = ("crank-shaper", "four-bar", "grashof-crank-rocker", "inverted-slider-crank",
-                 "klein-slider-crank", "offset-slider-crank", "piston-driven-slider-crank",
-                 "slotted-lever-p37", "velocity-homework-292")
+QUICK_RETURNS = ("crank-pin-speed", "crank-shaper", "four-bar", "grashof-crank-rocker",
+                 "inverted-slider-crank", "klein-slider-crank", "offset-slider-crank",
+                 "piston-driven-slider-crank", "slotted-lever-p37", "velocity-homework-292")
 """The bundled mechanisms with two limit positions: their cranks turn fully and drive an
 output that reverses."""
 

@@ -1,16 +1,19 @@
 """An input given by another member's motion, turned into the input link's ω and α.
 
-Textbooks give "the piston moves at 3 m/s" or "the coupler turns at 5 rad/s" at a crank
-angle. Velocities are linear in ω of the input, accelerations in its α (for a given ω),
-so the input's rates follow from one provisional drawing: the velocity polygon drawn at
-ω = 1 rad/s reads the member's speed per rad/s of the input, and two acceleration
-polygons at that ω, with α = 0 and α = 1 rad/s², its acceleration per rad/s². The
-construction converts so, by drawing; the analytic reference converts its own way, by the
-vector-loop solver at the same provisional rates; each then solves with its own ω and α,
-so a wrong conversion shows as a disagreement (:mod:`.reference.given_rates`).
+Textbooks give "the piston moves at 3 m/s", "the crank pin moves at 2 m/s" or "the coupler
+turns at 5 rad/s" at a crank angle. Velocities are linear in ω of the input, accelerations
+in its α (for a given ω), so the input's rates follow from one provisional drawing: the
+velocity polygon drawn at ω = 1 rad/s reads the member's speed per rad/s of the input, and
+two acceleration polygons at that ω, with α = 0 and α = 1 rad/s², its acceleration per
+rad/s². The construction converts so, by drawing; the analytic reference converts its own
+way, by the vector-loop solver at the same provisional rates; each then solves with its
+own ω and α, so a wrong conversion shows as a disagreement
+(:mod:`.reference.given_rates`).
 """
 
 from __future__ import annotations
+
+import math
 
 from .acceleration_polygon import draw_acceleration_polygon
 from .assembly import assemble
@@ -47,7 +50,9 @@ def convert(m: Mechanism) -> tuple[Mechanism, Mechanism, Phrase]:
         unit_ref = member_rate(m, w_ref, 1.0, second=True) - base_ref
         a, a_ref = (g.second - base) / unit, (g.second - base_ref) / unit_ref
     drawn = with_input_rates(m, w, a)
-    what = phrase("note.along_guide", point=g.target) if g.kind == "speed" else _target(g)
+    what = (phrase("note.along_guide", point=g.target) if g.kind == "speed" else
+            phrase("note.about_pivot", point=g.target, pivot=_pivot(m))
+            if g.kind == "input_point" else _target(g))
     said = phrase("note.given_rate", what=what, value=_quantity(m, g.kind, g.value),
                   link=d.link, target=_target(g),
                   per=_quantity(m, g.kind, per_w), omega=Quantity(w, "rad", "/s", "rate"),
@@ -72,9 +77,19 @@ def _rate(m: Mechanism, w: float, a: float, *, second: bool = False) -> float:
     g = m.given
     if g.kind == "omega":
         return polygon.rates[g.target]
-    ux, uy = asm.guide(_guide(m)).direction
+    if g.kind == "input_point":        # along the circle about the pivot, k × OP / |OP|
+        (px, py), (ox, oy) = asm.xy(g.target), asm.xy(_pivot(m))
+        r = math.hypot(px - ox, py - oy)
+        ux, uy = -(py - oy) / r, (px - ox) / r
+    else:
+        ux, uy = asm.guide(_guide(m)).direction
     x, y = polygon.vector(g.target)
     return x * ux + y * uy
+
+
+def _pivot(m: Mechanism) -> str:
+    """The input link's frame pivot, which a point of it turns about."""
+    return next(n for n in m.link(m.drive.link).names if n in m.frame.names)
 
 
 def _guide(m: Mechanism) -> int:
@@ -84,23 +99,24 @@ def _guide(m: Mechanism) -> int:
 
 
 def _what(g) -> str:
-    return f"V_{g.target} along its guide" if g.kind == "speed" else f"ω{g.target}"
+    return {"speed": f"V_{g.target} along its guide",
+            "input_point": f"V_{g.target}"}.get(g.kind, f"ω{g.target}")
 
 
 def _value(m: Mechanism, g) -> str:
-    if g.kind == "speed":
+    if g.kind != "omega":
         return f"{_n(g.value / m.units.metres)} {m.units.length}/s"
     return f"{_n(g.value)} rad/s"
 
 
 def _target(g) -> str:
     """The member's rate by name: V_C, or ω3."""
-    return f"V_{g.target}" if g.kind == "speed" else f"ω{g.target}"
+    return f"ω{g.target}" if g.kind == "omega" else f"V_{g.target}"
 
 
 def _quantity(m: Mechanism, kind: str, value: float) -> Quantity:
     """A speed (SI) in the file's units per second, or an ω in rad/s, as a note says it."""
-    if kind == "speed":
+    if kind != "omega":
         return Quantity(value / m.units.metres, m.units.length, "/s", "rate")
     return Quantity(value, "rad", "/s", "rate")
 

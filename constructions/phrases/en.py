@@ -46,6 +46,7 @@ PHRASES: dict[str, str] = {
     "note.given_alpha": "; the acceleration polygons drawn at that ω with α{link} = 0 and "
                         "1 rad/s² give α{link} = {alpha}",
     "note.along_guide": "V_{point} along its guide",
+    "note.about_pivot": "V_{point} square to {pivot}{point}",
     "note.sense": " ({sense})",
     # ----- steps.md's own words (exercises.solution_files) -----------------------------------
     "md.title": "{name}: worked solution",

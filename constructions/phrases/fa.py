@@ -168,6 +168,7 @@ PHRASES: dict[str, str] = {
     "note.given_alpha": "؛ چندضلعی\u200cهای شتابی که با همان ω و با α{link} = ۰ و ۱ رادیان بر "
                         "مجذور ثانیه رسم شوند α{link} = {alpha} می\u200cدهند",
     "note.along_guide": "V_{point} در امتداد راهنمایش",
+    "note.about_pivot": "V_{point} عمود بر {pivot}{point}",
     "note.sense": " ({sense})",
     "md.title": "{name}: حل کامل",
     "md.at": "در {where}",

@@ -1,7 +1,8 @@
 """The input of a mechanism file: the driven link, its angle, and its motion.
 
 ``[input]`` names the input link and its angle, and gives its motion as that link's ω
-and α, or as another member's: a point's speed along a frame guide, or another link's
+and α, or as another member's: a point's speed along a frame guide, the speed of a
+point of the input link itself (ω·r about its pivot, in the sense given), or another link's
 ω (:class:`~tarsim.constructions.model.GivenRate`).
 """
 
@@ -53,7 +54,7 @@ def _read_given(r: TableReader, t: dict, link: int, where: dict) -> GivenRate | 
     if speed is not None and omega is not None:
         raise r.fail("give the input's omega or a speed, not both", key="speed", **where)
     if speed is not None:
-        key, spec, allowed = "speed", speed, ("point", "value", "acceleration")
+        key, spec, allowed = "speed", speed, ("point", "value", "acceleration", "sense")
     else:
         key, spec, allowed = "omega", omega, ("link", "value", "alpha")
     if not isinstance(spec, dict) or "value" not in spec:
@@ -66,20 +67,28 @@ def _read_given(r: TableReader, t: dict, link: int, where: dict) -> GivenRate | 
     if value == 0.0:
         raise r.fail(f"the {key} given is 0, which leaves the mechanism at rest; give a "
                      "nonzero one, or the input's own omega = 0", key=key, **where)
+    if key == "speed" and spec.get("sense", "ccw") not in ("ccw", "cw"):
+        raise r.fail(f"the sense of speed must be \"ccw\" or \"cw\", not {spec['sense']!r}",
+                     key=key, **where)
     second_key = allowed[2]
     second = r.number(spec.get(second_key, 0.0), f"{key} {second_key}", size=True,
                       key=key, **where)
     if key == "speed":
         point = spec.get("point")
-        on_guide = [s for s in r.slides if s.point == point and s.guide_link == 1]
-        if not on_guide:
-            runs = sorted({s.point for s in r.slides if s.guide_link == 1})
-            raise r.fail(f"speed gives the motion of a point on a frame guide (a piston, "
-                         f"a slider, a wheel's centre); '{point}' is none: "
-                         f"{', '.join(runs) or 'this mechanism has none'}", key=key,
-                         **where)
         m = r.units.metres
-        return GivenRate("speed", point, value * m, second * m, second_key in spec)
+        on_guide = [s for s in r.slides if s.point == point and s.guide_link == 1]
+        if on_guide and "sense" not in spec:
+            return GivenRate("speed", point, value * m, second * m, second_key in spec)
+        if point in r.links[link].names:
+            sign = -1.0 if spec.get("sense") == "cw" else 1.0
+            _about_pivot(r, link, point, where)
+            return GivenRate("input_point", point, sign * value * m, sign * second * m,
+                             second_key in spec)
+        runs = sorted({s.point for s in r.slides if s.guide_link == 1})
+        raise r.fail(f"speed gives the motion of a point of input link {link} "
+                     f"({', '.join(r.links[link].names)}) or on a frame guide "
+                     f"({', '.join(runs) or 'none here'}); '{point}' is neither",
+                     key=key, **where)
     target = r.link_number(spec.get("link"), key, where)
     if target in (1, link):
         raise r.fail(f"omega = {{ link = {target}, … }} gives another link's ω; give the "
@@ -87,3 +96,16 @@ def _read_given(r: TableReader, t: dict, link: int, where: dict) -> GivenRate | 
     if r.units.angular_velocity == "rpm":
         value *= 2 * math.pi / 60
     return GivenRate("omega", target, value, second, second_key in spec)
+
+
+def _about_pivot(r: TableReader, link: int, point: str, where: dict) -> None:
+    """Refuse a given speed of a point of the input link unless the link turns about a frame
+    pivot other than the point: then the point's speed is ω·r, along its circle."""
+    pivots = set(r.links[link].names) & set(r.links[1].names)
+    if not pivots:
+        raise r.fail(f"speed = {{ point = \"{point}\", … }} gives ω{link} as the speed over "
+                     f"the radius about link {link}'s frame pivot, and link {link} has none; "
+                     f"give omega = <number>", key="speed", **where)
+    if point in pivots:
+        raise r.fail(f"{point} is link {link}'s frame pivot, at rest: give the speed of "
+                     f"another of its points", key="speed", **where)
