@@ -1,10 +1,10 @@
 """The course's chapters as the application reads, solves, draws and lists them.
 
-Each chapter's package in this layer (``linkages``, ``gears``, ``cams``, ``balancing``)
-gives one :class:`Chapter` as its ``CHAPTER``, and :data:`REGISTERED` names the packages in
-the order ``tarsim list`` shows them. The catalog, :func:`tarsim.solve` and every command
-walk this registry and name no chapter, so a new chapter is its package in each layer and
-one word here.
+Each chapter's package in this layer (``linkages``, ``gears``, ``cams``, ``balancing``,
+``forces``: the flywheel) gives one :class:`Chapter` as its ``CHAPTER``, and
+:data:`REGISTERED` names the packages in the order ``tarsim list`` shows them. The catalog,
+:func:`tarsim.solve` and every command walk this registry and name no chapter, so a new
+chapter is its package in each layer and one word here.
 
 A file is read and parsed once: its top-level tables say whose it is (:func:`chapter_for`),
 and that chapter reads the tables already parsed.
@@ -21,7 +21,7 @@ from typing import Any
 __all__ = ["Chapter", "Listing", "REGISTERED", "chapters", "chapter_of", "chapter_for",
            "read_file", "listing"]
 
-REGISTERED = ("linkages", "gears", "cams", "balancing")
+REGISTERED = ("linkages", "gears", "cams", "balancing", "forces")
 """The chapters' packages, in the order ``tarsim list`` shows their bundled exercises."""
 
 

@@ -154,7 +154,8 @@ def test_bad_file_is_one_line_with_file_and_line(mech_file, tmp_path, edit, mess
                         "planetary-q4, eccentric-flat-face, offset-knife-edge, "
                         "oscillating-roller, roller-harmonic-cycloidal, four-mass-shaft, "
                         "four-masses-one-plane, inline-four, notes-example-1, single-cylinder, "
-                        "single-cylinder-balance-mass\n"),
+                        "single-cylinder-balance-mass, engine-harmonic-torque, "
+                        "petrol-engine-areas, single-cylinder-table\n"),
     ("missing.toml", "Error: no such file 'missing.toml'\n"),
 ])
 def test_unknown_source_is_one_line(source, message):
@@ -284,7 +285,8 @@ def test_list_shows_the_bundled_examples():
                    "planetary-q4", "eccentric-flat-face", "offset-knife-edge",
                    "oscillating-roller", "roller-harmonic-cycloidal", "four-mass-shaft",
                    "four-masses-one-plane", "inline-four", "notes-example-1", "single-cylinder",
-                   "single-cylinder-balance-mass"]
+                   "single-cylinder-balance-mass", "engine-harmonic-torque",
+                   "petrol-engine-areas", "single-cylinder-table"]
     assert "Four-bar crank-rocker" in result.stdout
 
 

@@ -33,6 +33,67 @@ WORDS: dict[str, str] = {
     # a load, or an inertia force moved off G by h, that would stand beyond the drawing
     "Beyond the drawing, so not drawn: {items}.": "بیرون از نقشه، پس رسم نشده\u200cاند: {items}.",
     "{name} (h = {h}) on link {link}": "{name} (h = {h}) روی میلهٔ {link}",
+    # the flywheel (exercises/forces/flywheel_solution.py, graphics/forces/flywheel_figure.py)
+    "Add the areas in turn from the first intercept: the energy's highest less its lowest is "
+    "the greatest fluctuation ΔE.":
+        "مساحت‌ها را از نخستین تقاطع به ترتیب جمع کنید: بیشترین انرژی منهای کمترین آن، "
+        "بیشترین نوسان انرژی ΔE است.",
+    "mean turning moment T_mean = {mean} N·m over a cycle of {cycle}°":
+        "گشتاور چرخشی میانگین T_mean = {mean} N·m در یک چرخهٔ {cycle}°",
+    "between θ = {low}° and {high}°": "میان θ = {low}° و {high}°",
+    "the energy highest after area {high} and lowest after area {low}":
+        "انرژی پس از مساحت {high} بیشترین و پس از مساحت {low} کمترین است",
+    "greatest fluctuation of energy ΔE = {energy} J, {where}":
+        "بیشترین نوسان انرژی ΔE = {energy} J، {where}",
+    "the turning moment is steady: ΔE = 0 and no flywheel is needed":
+        "گشتاور چرخشی ثابت است: ΔE = ۰ و چرخ طیار لازم نیست",
+    "flywheel for C_s = {cs} at ω = {omega} rad/s: I = ΔE/(C_s·ω²) = {inertia} kg·m²":
+        "چرخ طیار برای C_s = {cs} در ω = {omega} rad/s: I = ΔE/(C_s·ω²) = {inertia} kg·m²",
+    "a rim of mean radius {radius}: m = I/r² = {mass} kg":
+        "طوقه‌ای به شعاع میانگین {radius}: m = I/r² = {mass} kg",
+    "a rim of {mass} kg: its mean radius r = √(I/m) = {radius}":
+        "طوقه‌ای به جرم {mass} kg: شعاع میانگین آن r = √(I/m) = {radius}",
+    "a flywheel of I = {inertia} kg·m² holds the speed within C_s = ΔE/(I·ω²) = {cs} "
+    "({percent} % of the mean, ±{half} %)":
+        "چرخ طیاری با I = {inertia} kg·m² سرعت را در C_s = ΔE/(I·ω²) = {cs} نگه می‌دارد "
+        "({percent} ٪ میانگین، ±{half} ٪)",
+    "every number agrees with its reference": "همهٔ اعداد با مرجع خود سازگارند",
+    "Each area times the diagram's scale ({scale} J per unit of area) is an energy: "
+    "{energies} J.":
+        "هر مساحت ضرب در مقیاس نمودار ({scale} J بر واحد مساحت) یک انرژی است: {energies} J.",
+    "Draw T(θ) at {n} equal steps of {step}° over the cycle; its mean is the area under it "
+    "over the cycle.":
+        "T(θ) را در {n} گام برابر {step}° در طول چرخه رسم کنید؛ میانگین آن مساحت زیر منحنی "
+        "تقسیم بر طول چرخه است.",
+    "The curve crosses the mean at {n} intercepts; between them lie the areas {energies} J.":
+        "منحنی خط میانگین را در {n} نقطه قطع می‌کند؛ میان آن‌ها مساحت‌های {energies} J "
+        "قرار دارند.",
+    "With the resistance steady at the mean, α = (T − T_mean)/I: greatest where T is highest "
+    "over the whole cycle, most negative where it is lowest.":
+        "با گشتاور مقاوم ثابت و برابر میانگین، α = (T − T_mean)/I: در جایی که T در کل چرخه "
+        "بیشینه است بیشترین، و جایی که کمینه است منفی‌ترین است.",
+    "power at the mean speed: P = T_mean·ω = {power} kW":
+        "توان در سرعت میانگین: P = T_mean·ω = {power} kW",
+    "at θ = {at}°: T = {torque} N·m, α = {alpha} rad/s²":
+        "در θ = {at}°: T = {torque} N·m، α = {alpha} rad/s²",
+    "Energy at the intercepts": "انرژی در نقاط تقاطع",
+    "intercept, in order": "نقطهٔ تقاطع، به ترتیب",
+    "turning moment": "گشتاور چرخشی",
+    "α max and α min: the shaft's greatest acceleration and retardation, where T is highest "
+    "and lowest over the whole cycle":
+        "α max و α min: بیشترین شتاب و کاهش شتاب محور، جایی که T در کل چرخه بیشینه و "
+        "کمینه است",
+    "highest": "بیشینه", "lowest": "کمینه",
+    "the highest and lowest energy": "بیشترین و کمترین انرژی",
+    "the shaft's extremes": "بیشینه و کمینهٔ شتاب محور",
+    "energy above the first intercept's": "انرژی نسبت به نخستین تقاطع",
+    "ΔE = {energy} {unit}, the greatest fluctuation of energy: the highest energy less the "
+    "lowest":
+        "ΔE = {energy} {unit}، بیشترین نوسان انرژی: بیشترین انرژی منهای کمترین آن",
+    "greatest acceleration {alpha} rad/s² at θ = {at}°":
+        "بیشترین شتاب {alpha} rad/s² در θ = {at}°",
+    "greatest retardation {alpha} rad/s² at θ = {at}°":
+        "بیشترین کاهش شتاب {alpha} rad/s² در θ = {at}°",
     # the bundled exercises' loads, by the names their files give them
     "gas force": "نیروی گاز", "cutting force": "نیروی برش", "load torque": "گشتاور بار",
 }

@@ -1,2 +1,42 @@
 """The force analysis's files and sweeps: a linkage's loads read from its file, and the
-turning-moment diagram over a turn. Its exercises are the linkages' (their chapter)."""
+turning-moment diagram over a turn (their exercises are the linkages'); and the flywheel
+chapter's own files, a ``[turning_moment]`` given as T(θ) or by its areas, whose flywheel
+is asked."""
+
+from __future__ import annotations
+
+from ..chapters import Chapter
+
+__all__ = ["CHAPTER"]
+
+
+class Flywheel(Chapter):
+    """The flywheel chapter (see :class:`~..chapters.Chapter`)."""
+
+    key = "forces"
+    kind = "a flywheel exercise"
+    folders = ("flywheel",)
+    tables = ("turning_moment", "flywheel")
+    no_angle = ("a flywheel exercise has no input angle: leave out --angle (its [flywheel] at "
+                "lists the crank angles asked)")
+
+    def read(self, text, filename, exercise_id, data):
+        from .flywheel_file import parse_flywheel
+        return parse_flywheel(text, filename, exercise_id, data)
+
+    def solve(self, exercise, *, allow_undercut=False):
+        from .flywheel_solution import solve_flywheel
+        return solve_flywheel(exercise)
+
+    def drawing(self, exercise):
+        return next(iter(self.solve(exercise).figures.values()))
+
+    def asks(self, exercise) -> str:
+        if exercise.speed_fluctuation is not None:
+            return "the greatest fluctuation of energy and the flywheel"
+        if exercise.inertia is not None:
+            return "the coefficient of fluctuation of speed a flywheel allows"
+        return "the greatest fluctuation of energy"
+
+
+CHAPTER = Flywheel()

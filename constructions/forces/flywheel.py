@@ -1,0 +1,150 @@
+"""The flywheel as the textbooks pose it: a turning-moment diagram given as T(θ) or as its
+areas, read for the greatest fluctuation of energy, the flywheel and the shaft's extremes.
+
+A diagram given as T(θ) (a formula, or a table of points joined by straight lines) is drawn
+at equal steps over its cycle and read as :func:`~..reference.flywheel.fluctuation` reads a
+mechanism's: the mean, the intercepts with it, the areas between them, and ΔE, the highest
+energy less the lowest. A diagram given by its areas (the books' "areas above and below the
+mean line, in order, with the diagram's scales") is read the same way from the areas: their
+running sum is the energy above its value at the first intercept. With the mean speed ω, a
+flywheel that holds the speed within C_s = (ω_max − ω_min)/ω has I = ΔE/(C_s·ω²); a rim of
+mean radius r has mass I/r². The shaft, loaded by a steady resisting torque equal to the
+mean, speeds up at α = (T − T_mean)/I: its greatest acceleration and retardation are where
+T is highest and lowest over the whole cycle (the global extremes, found by a scan at every
+step and refined by golden-section search; a local peak is not the greatest).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from dataclasses import dataclass
+
+from ..reference.flywheel import Fluctuation, fluctuation
+
+__all__ = ["Diagram", "Reading", "STEPS", "read_diagram", "area_reading", "extreme",
+           "rim_mass", "rim_radius"]
+
+STEPS = 3600
+"""The steps a cycle's T(θ) is drawn at: ΔE's error from the straight lines between steps is
+some h²·|T′| (h the step), a few parts in a million of a book's ΔE."""
+
+
+@dataclass(frozen=True)
+class Diagram:
+    """T(θ) (N·m, θ the crank angle in rad) over a cycle of ``cycle`` rad from θ = 0."""
+
+    torque: Callable[[float], float]
+    cycle: float
+    kinks: tuple[float, ...] = ()
+    """The angles where T's slope jumps (a table's points): samples are set on them."""
+
+
+@dataclass(frozen=True)
+class Reading:
+    """A diagram read: its mean torque (N·m), the intercepts (rad), each area (J) in order
+    from the first intercept, ΔE (J), where the energy is highest and lowest (rad), and the
+    step it was drawn at (rad; 0 for a diagram given by its areas)."""
+
+    mean: float
+    intercepts: tuple[float, ...]
+    areas: tuple[float, ...]
+    delta_e: float
+    highest: float
+    lowest: float
+    step: float = 0.0
+    samples: tuple[tuple[float, float], ...] = ()
+    """(θ rad, T N·m) at each step, for the figure."""
+
+
+def steps_for(d: Diagram) -> int:
+    """How many equal steps to draw ``d`` at: :data:`STEPS`, or the least multiple of a
+    table's equal spacing past it, so that every point of the table is a step."""
+    if len(d.kinks) < 2:
+        return STEPS
+    gap = d.kinks[1] - d.kinks[0]
+    n = round(d.cycle / gap)
+    on_grid = all(abs(k - d.kinks[0] - i * gap) <= 1e-9 * d.cycle for i, k in enumerate(d.kinks))
+    start = d.kinks[0] / gap
+    if not on_grid or abs(n * gap - d.cycle) > 1e-9 * d.cycle or abs(start - round(start)) > 1e-9:
+        return STEPS
+    return n * math.ceil(STEPS / n)
+
+
+def read_diagram(d: Diagram) -> Reading:
+    """Draw ``d`` at equal steps over its cycle and read it for its areas and ΔE."""
+    n = steps_for(d)
+    step = d.cycle / n
+    thetas = [k * step for k in range(n)]
+    torques = [d.torque(t) for t in thetas]
+    # fluctuation reads a turn of 2π: the cycle is scaled to one, and its areas back.
+    scale = d.cycle / (2 * math.pi)
+    r: Fluctuation = fluctuation([t / scale for t in thetas], torques)
+    return Reading(r.mean, tuple(c * scale for c in r.intercepts),
+                   tuple(a * scale for a in r.areas), r.delta_e * scale, r.highest * scale,
+                   r.lowest * scale, step, tuple(zip(thetas, torques)))
+
+
+def area_reading(areas: list[float]) -> Reading:
+    """The reading of a diagram given as its areas (J, + above the mean, in order from an
+    intercept): the energy after each is the running sum; ΔE the highest less the lowest.
+    The intercepts are numbered 0, 1, … (their angles are not given)."""
+    levels = [0.0]
+    for a in areas:
+        levels.append(levels[-1] + a)
+    levels.pop()            # the last returns to the first, the areas adding to 0
+    top = max(range(len(levels)), key=levels.__getitem__)
+    bottom = min(range(len(levels)), key=levels.__getitem__)
+    return Reading(0.0, tuple(float(i) for i in range(len(areas))), tuple(areas),
+                   levels[top] - levels[bottom], float(top), float(bottom))
+
+
+def extreme(d: Diagram, samples: tuple[tuple[float, float], ...],
+            sign: float) -> list[tuple[float, float]]:
+    """Where over the whole cycle T is greatest (``sign`` +1) or least (−1), and its value:
+    each peak of the scan (a step beyond both its neighbours), refined by golden-section
+    search over the steps beside it (a table's peaks are at its points, which are steps),
+    and every one within rounding of the best, in order of θ (a curve that repeats within
+    its cycle, T = A sin 2θ over a turn, has its greatest twice)."""
+    n = len(samples)
+    v = [sign * t for _, t in samples]
+    peaks = [k for k in range(n) if v[k] >= v[k - 1] and v[k] >= v[(k + 1) % n]
+             and (v[k] > v[k - 1] or v[k] > v[(k + 1) % n])] or [max(range(n), key=v.__getitem__)]
+    found = [samples[k] if d.kinks else _refined(d, samples, k, sign) for k in peaks]
+    best = max(sign * t for _, t in found)
+    size = max(abs(t) for _, t in samples)
+    same = [(th % d.cycle, t) for th, t in found if sign * t >= best - 1e-9 * size]
+    return sorted(same)
+
+
+def _refined(d: Diagram, samples, k: int, sign: float) -> tuple[float, float]:
+    """Sample ``k``'s peak, refined by golden-section search over the steps beside it."""
+    step = samples[1][0] - samples[0][0]
+    a, b = samples[k][0] - step, samples[k][0] + step
+    g = (math.sqrt(5) - 1) / 2
+
+    def f(t: float) -> float:
+        return -sign * d.torque(t)
+    c, e = b - g * (b - a), a + g * (b - a)
+    fc, fe = f(c), f(e)
+    for _ in range(80):
+        if fc < fe:
+            b, e, fe = e, c, fc
+            c = b - g * (b - a)
+            fc = f(c)
+        else:
+            a, c, fc = c, e, fe
+            e = a + g * (b - a)
+            fe = f(e)
+    t = (a + b) / 2
+    return max((samples[k], (t, d.torque(t))), key=lambda p: sign * p[1])
+
+
+def rim_mass(inertia: float, radius: float) -> float:
+    """A thin rim's mass (kg) at mean radius ``radius`` (m) for ``inertia`` (kg·m²): I/r²."""
+    return inertia / (radius * radius)
+
+
+def rim_radius(inertia: float, mass: float) -> float:
+    """A thin rim's mean radius (m) for ``inertia`` (kg·m²) and ``mass`` (kg): √(I/m)."""
+    return math.sqrt(inertia / mass)

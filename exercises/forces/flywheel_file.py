@@ -1,0 +1,303 @@
+"""Read a flywheel exercise: a turning-moment diagram (``[turning_moment]``) and what is
+asked of its flywheel (``[flywheel]``).
+
+The diagram is given one of three ways, as the books give it:
+
+- ``torque = "20000 + 9500*sin(2*theta) - 5700*cos(2*theta)"``, T in N·m, θ the crank
+  angle in radians (:mod:`~tarsim.constructions.forces.torque_formula`);
+- ``points = [[0, 0], [30, 2100], …]``, (crank angle in degrees, T in N·m) joined by straight
+  lines over the cycle;
+- ``areas = [295, -685, …]``, the areas above (+) and below (−) the mean line in order, with
+  the diagram's scales ``torque_scale`` (N·m per length unit of the drawing) and
+  ``angle_scale`` (degrees per length unit), or ``energy_scale`` (J per unit of area).
+
+``cycle`` (degrees, 360 by default) is how far the crank turns before the diagram repeats.
+``[flywheel]`` gives the mean ``speed`` and either ``speed_fluctuation`` (C_s: the flywheel
+is found, and a rim's ``mass`` at a stated ``radius`` or its ``radius`` for a stated
+``mass``) or the flywheel (``inertia``, or ``mass`` with ``radius_of_gyration``: C_s is
+found); ``at`` lists crank angles (degrees) whose T and α are asked. Every failure is one
+line naming file:line.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any, ClassVar
+
+from tarsim.constructions.forces.flywheel import Diagram
+from tarsim.constructions.forces.torque_formula import Formula, parse_formula
+from tarsim.constructions.units import LENGTH_UNITS
+from ..names import named_in, read_names, renamed_field
+from ..table_file import SPEEDS, Tables
+
+__all__ = ["FlywheelExercise", "parse_flywheel"]
+
+_TOP = ("name", "names", "source", "description", "units", "turning_moment", "flywheel")
+_KEYS = {"turning_moment": ("torque", "points", "areas", "torque_scale", "angle_scale",
+                            "energy_scale", "cycle"),
+         "flywheel": ("speed", "speed_fluctuation", "inertia", "mass", "radius",
+                      "radius_of_gyration", "at")}
+
+
+@dataclass(frozen=True)
+class FlywheelExercise:
+    """A turning-moment diagram and what is asked of its flywheel (SI: rad, N·m, J, kg, m)."""
+
+    chapter: ClassVar[str] = "forces"
+
+    id: str
+    name: str
+    source: str
+    description: str
+    cycle: float
+    """How far the crank turns before the diagram repeats (rad)."""
+    formula: Formula | None = None
+    points: tuple[tuple[float, float], ...] = ()
+    """A table's (θ rad, T N·m), in order over the cycle."""
+    areas: tuple[float, ...] = ()
+    """The areas as energies (J), + above the mean, in order."""
+    drawn_areas: tuple[float, ...] = ()
+    """The areas as the file gives them, in the drawing's units of area."""
+    energy_scale: float = 0.0
+    """J per unit of the drawing's area."""
+    speed: float | None = None
+    """The mean speed (rad/s)."""
+    speed_fluctuation: float | None = None
+    inertia: float | None = None
+    """The flywheel's moment of inertia (kg·m²), when given."""
+    mass: float | None = None
+    radius: float | None = None
+    radius_of_gyration: float | None = None
+    at: tuple[float, ...] = ()
+    """Crank angles (rad) whose T and α are asked."""
+    length_unit: str = "m"
+    speed_unit: str = "rad/s"
+    names: tuple[tuple[str, str], ...] = ()
+
+    def named_in(self, lang: str) -> FlywheelExercise:
+        """The same exercise named in ``lang``, if its file does."""
+        return named_in(self, lang)
+
+    renamed = renamed_field
+
+    @property
+    def diagram(self) -> Diagram | None:
+        """T(θ) over the cycle; None for a diagram given by its areas."""
+        if self.formula is not None:
+            return Diagram(self.formula, self.cycle)
+        if self.points:
+            return Diagram(_straight(self.points, self.cycle), self.cycle,
+                           tuple(t for t, _ in self.points))
+        return None
+
+
+def _straight(points: tuple[tuple[float, float], ...], cycle: float):
+    """T(θ) straight between the table's points, the last joined to the first a cycle on."""
+    ts = [t for t, _ in points] + [points[0][0] + cycle]
+    vs = [v for _, v in points] + [points[0][1]]
+
+    def torque(theta: float) -> float:
+        x = (theta - ts[0]) % cycle + ts[0]
+        for i in range(len(ts) - 1):
+            if x <= ts[i + 1]:
+                f = (x - ts[i]) / (ts[i + 1] - ts[i])
+                return vs[i] + f * (vs[i + 1] - vs[i])
+        return vs[-1]
+    return torque
+
+
+def parse_flywheel(text: str, filename: str = "<string>", exercise_id: str = "flywheel",
+                   data: dict[str, Any] | None = None) -> FlywheelExercise:
+    """Parse a flywheel exercise from TOML text; ``data``, the tables already parsed, spares
+    a second parse.
+
+    Raises
+    ------
+    InputError
+        Naming file:line and what to fix.
+    """
+    t = Tables.read(text, filename, "flywheel", _TOP, _KEYS, data)
+    fail = t.fail
+    if "turning_moment" not in t.data:
+        raise fail("a flywheel file gives its diagram as [turning_moment] torque = \"…\", "
+                   "points = [[θ°, T], …] or areas = […] with the diagram's scales", "flywheel")
+    length, speed_unit = t.units("m", "rad/s")
+    metre = LENGTH_UNITS[length]
+    tm = _one(t, "turning_moment")
+    cycle_deg = t.number(tm, "cycle", "turning_moment", "the cycle (degrees)", 0, 360.0)
+    if not 0 < cycle_deg <= 1440:
+        raise fail(f"the cycle is how far the crank turns before the diagram repeats, in "
+                   f"degrees (360 a turn, 720 a four-stroke engine's), got {cycle_deg:g}",
+                   "turning_moment", "cycle")
+    cycle = math.radians(cycle_deg)
+    given = [k for k in ("torque", "points", "areas") if k in tm]
+    if len(given) != 1:
+        raise fail("[turning_moment] gives one of torque = \"…\" (a formula in theta), points = "
+                   "[[θ°, T], …] or areas = […]" + (f", not {' and '.join(given)}" if given
+                                                    else ""), "turning_moment",
+                   given[1] if len(given) > 1 else None)
+    diagram: dict[str, Any] = {}
+    if "torque" in tm:
+        try:
+            diagram["formula"] = parse_formula(tm["torque"])
+        except ValueError as e:
+            raise fail(str(e), "turning_moment", "torque") from None
+    elif "points" in tm:
+        diagram["points"] = _points(t, tm["points"], cycle_deg)
+    else:
+        diagram.update(_areas(t, tm))
+    if "areas" not in tm:
+        for k in ("torque_scale", "angle_scale", "energy_scale"):
+            if k in tm:
+                raise fail(f"{k} is a scale of a diagram given by its areas; a diagram given as "
+                           "T(θ) needs none: remove it", "turning_moment", k)
+    wheel = _flywheel(t, metre, SPEEDS[speed_unit], diagram)
+    return FlywheelExercise(
+        id=exercise_id, name=_text(t, "name", exercise_id), source=_text(t, "source", ""),
+        description=_text(t, "description", ""), cycle=cycle, length_unit=length,
+        speed_unit=speed_unit, names=read_names(t.data, t.where, filename), **diagram, **wheel)
+
+
+def _one(t: Tables, table: str) -> dict:
+    entries = t.entries(table)
+    if len(entries) != 1:
+        raise t.fail(f"[{table}] is one table, not a list of {len(entries)}", table, None,
+                     min(len(entries) - 1, 1))
+    return entries[0]
+
+
+def _text(t: Tables, key: str, default: str) -> str:
+    v = t.data.get(key, default)
+    if not isinstance(v, str) or any(ord(c) < 32 and c not in "\n\t" for c in v):
+        raise t.fail(f"{key} must be text with no control character", key=key)
+    return v
+
+
+def _points(t: Tables, raw: Any, cycle_deg: float) -> tuple[tuple[float, float], ...]:
+    """A table's points, each [θ°, T N·m], in increasing θ within one cycle."""
+    if not isinstance(raw, list) or len(raw) < 3:
+        raise t.fail("points lists 3 or more [crank angle°, T N·m] pairs over the cycle",
+                     "turning_moment", "points")
+    out = []
+    for i, p in enumerate(raw):
+        if not (isinstance(p, list) and len(p) == 2):
+            raise t.fail(f"point {i + 1} must be [crank angle°, T N·m], got {p!r:.40}",
+                         "turning_moment", "points")
+        theta = t.number({"p": p[0]}, "p", "turning_moment", f"point {i + 1}'s angle")
+        torque = t.number({"p": p[1]}, "p", "turning_moment", f"point {i + 1}'s torque")
+        if out and not theta > math.degrees(out[-1][0]):
+            raise t.fail(f"point {i + 1}'s angle {theta:g}° must be past the one before it",
+                         "turning_moment", "points")
+        out.append((math.radians(theta), torque))
+    span = math.degrees(out[-1][0] - out[0][0])
+    if span >= cycle_deg:
+        # The point a cycle on from the first repeats it: it must say the same T.
+        if abs(span - cycle_deg) > 1e-9 * cycle_deg or out[-1][1] != out[0][1]:
+            raise t.fail(f"the points span {span:g}°, past the cycle of {cycle_deg:g}°: give "
+                         "one cycle (a last point a cycle on from the first repeats its T)",
+                         "turning_moment", "points")
+        out.pop()
+    return tuple(out)
+
+
+def _areas(t: Tables, tm: dict) -> dict[str, Any]:
+    """The areas as energies, from the diagram's scales."""
+    raw = tm["areas"]
+    if not isinstance(raw, list) or len(raw) < 2:
+        raise t.fail("areas lists the areas above (+) and below (−) the mean line in order, two "
+                     "or more", "turning_moment", "areas")
+    drawn = tuple(t.number({"a": a}, "a", "turning_moment", f"area {i + 1}")
+                  for i, a in enumerate(raw))
+    for i, a in enumerate(drawn):
+        if a == 0 or (i and (a > 0) == (drawn[i - 1] > 0)):
+            raise t.fail(f"area {i + 1} ({a:g}) must be nonzero and of the other sign from the "
+                         "one before it: the areas alternate above (+) and below (−) the mean",
+                         "turning_moment", "areas")
+    if "energy_scale" in tm:
+        if "torque_scale" in tm or "angle_scale" in tm:
+            raise t.fail("give energy_scale (J per unit of area), or torque_scale and "
+                         "angle_scale, not both", "turning_moment", "energy_scale")
+        scale = t.number(tm, "energy_scale", "turning_moment", "the energy scale")
+    else:
+        missing = [k for k in ("torque_scale", "angle_scale") if k not in tm]
+        if missing:
+            raise t.fail("a diagram given by its areas needs its scales: torque_scale (N·m per "
+                         "length unit of the drawing) and angle_scale (degrees per length unit),"
+                         " or energy_scale (J per unit of area)", "turning_moment",
+                         None)
+        scale = (t.number(tm, "torque_scale", "turning_moment", "the torque scale")
+                 * math.radians(t.number(tm, "angle_scale", "turning_moment", "the angle scale")))
+    if not scale > 0:
+        raise t.fail(f"the diagram's scales must be positive, got {scale:g} J per unit area",
+                     "turning_moment", "energy_scale" if "energy_scale" in tm else "torque_scale")
+    total, size = math.fsum(drawn), math.fsum(abs(a) for a in drawn)
+    # Areas read off a drawing to a few figures: over a cycle they must cancel to about that.
+    if abs(total) > 1e-3 * size:
+        raise t.fail(f"the areas add to {total:g}, not 0: over a cycle the areas above the mean "
+                     f"line and below it are equal (those above add to "
+                     f"{math.fsum(a for a in drawn if a > 0):g}, below to "
+                     f"{math.fsum(a for a in drawn if a < 0):g})", "turning_moment", "areas")
+    return {"areas": tuple(a * scale for a in drawn), "drawn_areas": drawn,
+            "energy_scale": scale}
+
+
+def _flywheel(t: Tables, metre: float, rad_s: float, diagram: dict) -> dict[str, Any]:
+    """What ``[flywheel]`` gives and asks, in SI."""
+    if "flywheel" not in t.data:
+        return {}
+    fw = _one(t, "flywheel")
+    out: dict[str, Any] = {}
+
+    def positive(key: str, what: str, scale: float = 1.0) -> float:
+        v = t.number(fw, key, "flywheel", what)
+        if not v > 0:
+            raise t.fail(f"{what} must be positive, got {v:g}", "flywheel", key)
+        return v * scale
+
+    if "speed" in fw:
+        out["speed"] = positive("speed", "the mean speed", rad_s)
+    ways = [k for k in ("speed_fluctuation", "inertia", "radius_of_gyration") if k in fw]
+    if len(ways) > 1:
+        raise t.fail("give speed_fluctuation (the flywheel is found) or the flywheel (inertia, "
+                     "or mass with radius_of_gyration: its C_s is found), one of them",
+                     "flywheel", ways[1])
+    if ways and "speed" not in out:
+        raise t.fail("a flywheel holds a speed: give the mean speed, speed = 300 with [units] "
+                     "speed = \"rpm\"", "flywheel", None)
+    if "speed_fluctuation" in fw:
+        cs = positive("speed_fluctuation", "the coefficient of fluctuation of speed")
+        if cs >= 2:
+            raise t.fail(f"C_s = (ω_max − ω_min)/ω is below 2 (a speed that stops), got {cs:g}",
+                         "flywheel", "speed_fluctuation")
+        out["speed_fluctuation"] = cs
+        if "mass" in fw and "radius" in fw:
+            raise t.fail("the rim's mass is found for a stated radius, or its radius for a "
+                         "stated mass: give one", "flywheel", "radius")
+        for key, what, scale in (("mass", "the rim's mass", 1.0),
+                                 ("radius", "the rim's mean radius", metre)):
+            if key in fw:
+                out[key] = positive(key, what, scale)
+    elif "inertia" in fw:
+        out["inertia"] = positive("inertia", "the flywheel's moment of inertia")
+    elif "radius_of_gyration" in fw:
+        if "mass" not in fw:
+            raise t.fail("a radius of gyration k needs the flywheel's mass: I = m·k²",
+                         "flywheel", "radius_of_gyration")
+        out["mass"] = positive("mass", "the flywheel's mass")
+        out["radius_of_gyration"] = positive("radius_of_gyration", "the radius of gyration",
+                                             metre)
+        out["inertia"] = out["mass"] * out["radius_of_gyration"] ** 2
+    else:
+        for key in ("mass", "radius"):
+            if key in fw:
+                raise t.fail(f"{key} is the rim's, for a flywheel found from speed_fluctuation "
+                             "(or mass with radius_of_gyration); give that too", "flywheel", key)
+    if "at" in fw:
+        raw = fw["at"] if isinstance(fw["at"], list) else [fw["at"]]
+        out["at"] = tuple(math.radians(t.number({"at": a}, "at", "flywheel",
+                                                "a crank angle (degrees)")) for a in raw)
+        if "areas" in diagram:
+            raise t.fail("a diagram given by its areas has no T(θ) to read at a crank angle: "
+                         "give torque = \"…\" or points, or leave at out", "flywheel", "at")
+    return out

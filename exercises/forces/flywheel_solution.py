@@ -1,0 +1,300 @@
+"""A flywheel exercise solved: its turning-moment diagram read for ΔE, the flywheel and the
+shaft's extremes, each number beside an independent reference.
+
+A diagram given as T(θ) is drawn at equal steps and read for its areas
+(:mod:`~tarsim.constructions.forces.flywheel`); the reference integrates T(θ) by adaptive
+quadrature and finds the intercepts by Brent's method
+(:func:`~tarsim.constructions.reference.flywheel.integrated`). The drawing's straight lines
+between steps cost ΔE some h²·|T′|max/6 (the trapezoid rule's error between two intercepts,
+T′ its slope there), and that, doubled, is the tolerance; a table's points are steps, so its
+diagram is drawn exactly and only rounding is left. A diagram given by its areas is read by
+their running sum; the reference is the greatest sum of a run of neighbouring areas round the
+cycle, which is ΔE by another road.
+"""
+
+from __future__ import annotations
+
+import math
+import sys
+from dataclasses import dataclass
+from functools import cached_property
+from typing import Any
+
+from tarsim.constructions.forces.flywheel import (Reading, area_reading, extreme, read_diagram,
+                                                  rim_mass, rim_radius)
+from tarsim.constructions.narration import numeral, phrase, words
+from tarsim.constructions.reference.flywheel import (Integrated, flywheel_inertia, integrated,
+                                                     speed_fluctuation)
+from tarsim.constructions.units import LENGTH_UNITS
+from ..checked import Checked
+from ..solution_folder import ChapterFiles
+from ..worked_document import Bullets, Section, numbered, title
+from .flywheel_file import FlywheelExercise
+
+__all__ = ["FlywheelSolution", "solve_flywheel"]
+
+ROUNDING = 1e-10
+"""A table's reading against the quadrature's, relative to max|T|·cycle: QUADPACK's relative
+1e-13 on each of some hundred pieces, and a few thousand roundings summed."""
+
+
+def _check(value: float, reference: float, tolerance: float, method: str,
+           **extra: Any) -> Checked:
+    """One quantity beside its reference, passed within ``tolerance`` (relative)."""
+    error = abs(value - reference) / max(abs(reference), sys.float_info.min)
+    return Checked({"value": value, **extra}, {"value": reference}, rel_error=error,
+                   tolerance=tolerance, passed=error <= tolerance, method=method)
+
+
+@dataclass(frozen=True)
+class FlywheelSolution(ChapterFiles):
+    """A solved flywheel exercise (see :func:`solve_flywheel`)."""
+
+    exercise: FlywheelExercise
+
+    @cached_property
+    def reading(self) -> Reading:
+        """The diagram read for its areas and ΔE."""
+        d = self.exercise.diagram
+        return read_diagram(d) if d else area_reading(list(self.exercise.areas))
+
+    @cached_property
+    def reference(self) -> Integrated | None:
+        """T(θ) integrated by quadrature; None for a diagram given by its areas."""
+        d = self.exercise.diagram
+        return integrated(d.torque, d.cycle, d.kinks) if d else None
+
+    @cached_property
+    def reference_delta_e(self) -> float:
+        """ΔE by the reference: quadrature, or the greatest run of neighbouring areas."""
+        if self.reference is not None:
+            return self.reference.delta_e
+        a = self.exercise.areas
+        n = len(a)
+        return max(abs(math.fsum(a[(i + j) % n] for j in range(length)))
+                   for i in range(n) for length in range(1, n))
+
+    @cached_property
+    def tolerance(self) -> float:
+        """ΔE's and the mean's tolerance, relative to ΔE (see the module's docstring)."""
+        ex, r = self.exercise, self.reading
+        if ex.diagram is None:
+            return 1e-12 * len(ex.areas)        # sums of a few numbers, each rounded once
+        torques = [t for _, t in r.samples]
+        size = max(abs(t) for t in torques) * ex.cycle
+        floor = ROUNDING * size
+        if ex.diagram.kinks:
+            drawn = 0.0
+        else:
+            slope = max(abs(b - a) for a, b in zip(torques, torques[1:] + torques[:1])) / r.step
+            drawn = r.step ** 2 * slope / 3
+        return (drawn + floor) / max(r.delta_e, floor)
+
+    @property
+    def inertia(self) -> float | None:
+        """The flywheel (kg·m²): given, or found for the C_s asked."""
+        ex = self.exercise
+        if ex.inertia is not None:
+            return ex.inertia
+        if ex.speed_fluctuation is not None and self.reading.delta_e:
+            return flywheel_inertia(self.reading.delta_e, ex.speed, ex.speed_fluctuation)
+        return None
+
+    def alpha(self, torque: float) -> float:
+        """The shaft's angular acceleration (rad/s²) where the torque is ``torque``: (T −
+        T_mean)/I, the resistance steady at the mean."""
+        return (torque - self.reading.mean) / self.inertia
+
+    @cached_property
+    def extremes(self) -> dict[str, tuple[float, float]]:
+        """Where T is greatest and least over the cycle, by the drawing (θ rad, T N·m)."""
+        d = self.exercise.diagram
+        return {"greatest": extreme(d, self.reading.samples, 1.0),
+                "least": extreme(d, self.reading.samples, -1.0)}
+
+    # ----- results.json ------------------------------------------------------------------------
+    @cached_property
+    def checked(self) -> dict[str, Checked]:
+        """Every quantity results.json gives, by name, in SI."""
+        ex, r, tol = self.exercise, self.reading, self.tolerance
+        ref = self.reference
+        q: dict[str, Checked] = {}
+        method = "turning-moment diagram" if ex.diagram else "areas of the diagram"
+        if ref is not None:
+            q["mean_torque"] = _check(r.mean, ref.mean, tol * max(r.delta_e, 1.0) /
+                                      max(abs(ref.mean), 1.0) / ex.cycle, method, unit="N·m")
+        q["delta_E"] = _check(r.delta_e, self.reference_delta_e, tol, method, unit="J")
+        if ex.speed is not None and ref is not None:
+            q["power"] = _check(r.mean * ex.speed, ref.mean * ex.speed,
+                                q["mean_torque"].tolerance, method, unit="W")
+        ref_e = self.reference_delta_e
+        if ex.speed_fluctuation is not None:
+            q["inertia"] = _check(self.inertia, flywheel_inertia(ref_e, ex.speed,
+                                                                 ex.speed_fluctuation),
+                                  tol, "I = ΔE/(C_s·ω²)", unit="kg·m²")
+            if ex.radius is not None:
+                q["rim_mass"] = _check(rim_mass(self.inertia, ex.radius), rim_mass(
+                    q["inertia"].reference["value"], ex.radius), tol, "m = I/r²", unit="kg")
+            if ex.mass is not None:
+                q["rim_radius"] = _check(rim_radius(self.inertia, ex.mass), rim_radius(
+                    q["inertia"].reference["value"], ex.mass), tol, "r = √(I/m)", unit="m")
+        elif ex.inertia is not None:
+            q["speed_fluctuation"] = _check(
+                speed_fluctuation(r.delta_e, ex.speed, ex.inertia),
+                speed_fluctuation(ref_e, ex.speed, ex.inertia), tol, "C_s = ΔE/(I·ω²)")
+        if ref is not None and self.inertia:
+            q |= self._extremes(ref)
+            for theta in ex.at:
+                t = ex.diagram.torque(theta)
+                key = f"{math.degrees(theta):g}"
+                q[f"T_at_{key}"] = Checked({"value": t, "unit": "N·m",
+                                            "angle_deg": math.degrees(theta)})
+                q[f"alpha_at_{key}"] = _check(self.alpha(t), (t - ref.mean) / self._ref_inertia,
+                                              tol * max(r.delta_e, 1.0) / ex.cycle
+                                              / max(abs(t - ref.mean), 1.0) + tol,
+                                              "α = (T − T_mean)/I", unit="rad/s²",
+                                              angle_deg=math.degrees(theta))
+        return q
+
+    @property
+    def _ref_inertia(self) -> float:
+        ex = self.exercise
+        if ex.inertia is not None:
+            return ex.inertia
+        return flywheel_inertia(self.reference_delta_e, ex.speed, ex.speed_fluctuation)
+
+    def _extremes(self, ref: Integrated) -> dict[str, Checked]:
+        """The greatest acceleration and retardation and where each is."""
+        out = {}
+        ex, tol = self.exercise, self.tolerance
+        size = max(abs(t) for _, t in self.reading.samples)
+        for key, places, (r_theta, r_t) in (("acceleration", self.extremes["greatest"],
+                                             ref.greatest),
+                                            ("retardation", self.extremes["least"], ref.least)):
+            # the place nearest the reference's, where a repeating curve has more than one
+            theta, t = min(places, key=lambda p: abs(math.remainder(p[0] - r_theta, ex.cycle)))
+            a, r_a = self.alpha(t), (r_t - ref.mean) / self._ref_inertia
+            # T at its extreme is the extreme to rounding; α is its small rest over I.
+            a_tol = tol + ROUNDING * size / max(abs(t - self.reading.mean), 1.0)
+            out[f"greatest_{key}"] = _check(abs(a), abs(r_a), a_tol, "α = (T − T_mean)/I over the "
+                                            "whole cycle", unit="rad/s²", angle_deg=[
+                                                math.degrees(p) for p, _ in places])
+            # Where: at a smooth extreme θ is fixed only to some √(rounding) of T, 1e-8 of
+            # the cycle; the reference's place must be one of the drawing's.
+            miss = abs(math.remainder(theta - r_theta, ex.cycle))
+            at = Checked({"value": math.degrees(theta), "unit": "°"},
+                         {"value": math.degrees(r_theta)}, rel_error=miss / ex.cycle,
+                         tolerance=1e-6, passed=miss / ex.cycle <= 1e-6,
+                         method="every peak of the scan, refined")
+            out[f"greatest_{key}_at"] = at
+        return out
+
+    @property
+    def failures(self) -> list[str]:
+        """The quantities that failed their check, by name."""
+        return [k for k, c in self.checked.items() if c.passed is False]
+
+    # ----- words -------------------------------------------------------------------------------
+    def _length(self, v: float) -> str:
+        unit = self.exercise.length_unit
+        return f"{numeral(v / LENGTH_UNITS[unit])} {unit}"
+
+    def _theta(self, theta: float) -> str:
+        return numeral(math.degrees(theta) % 360 if self.exercise.cycle <= 2 * math.pi
+                       else math.degrees(theta), ".2f")
+
+    def lines(self) -> list[str]:
+        """What the command line prints and steps.md lists, in the language spoken."""
+        ex, r, q = self.exercise, self.reading, self.checked
+        out = []
+        if ex.diagram is not None:
+            out.append(words("mean turning moment T_mean = {mean} N·m over a cycle of {cycle}°",
+                             mean=numeral(r.mean), cycle=numeral(math.degrees(ex.cycle), "g")))
+            if "power" in q:
+                out.append(words("power at the mean speed: P = T_mean·ω = {power} kW",
+                                 power=numeral(q["power"].value["value"] / 1000)))
+        if r.delta_e:
+            where = (words("between θ = {low}° and {high}°", low=self._theta(r.lowest),
+                           high=self._theta(r.highest)) if ex.diagram is not None else
+                     words("the energy highest after area {high} and lowest after area {low}",
+                           high=numeral(r.highest or len(r.areas), "g"),
+                           low=numeral(r.lowest or len(r.areas), "g")))
+            out.append(words("greatest fluctuation of energy ΔE = {energy} J, {where}",
+                             energy=numeral(r.delta_e), where=where))
+        else:
+            out.append(words("the turning moment is steady: ΔE = 0 and no flywheel is needed"))
+        if "inertia" in q:
+            out.append(words("flywheel for C_s = {cs} at ω = {omega} rad/s: I = ΔE/(C_s·ω²) = "
+                             "{inertia} kg·m²", cs=numeral(ex.speed_fluctuation, "g"),
+                             omega=numeral(ex.speed), inertia=numeral(self.inertia)))
+        if "rim_mass" in q:
+            out.append(words("a rim of mean radius {radius}: m = I/r² = {mass} kg",
+                             radius=self._length(ex.radius),
+                             mass=numeral(q["rim_mass"].value["value"])))
+        if "rim_radius" in q:
+            out.append(words("a rim of {mass} kg: its mean radius r = √(I/m) = {radius}",
+                             mass=numeral(ex.mass),
+                             radius=self._length(q["rim_radius"].value["value"])))
+        if "speed_fluctuation" in q:
+            out.append(words("a flywheel of I = {inertia} kg·m² holds the speed within C_s = "
+                             "ΔE/(I·ω²) = {cs} ({percent} % of the mean, ±{half} %)",
+                             inertia=numeral(ex.inertia),
+                             cs=numeral(q["speed_fluctuation"].value["value"]),
+                             percent=numeral(100 * q["speed_fluctuation"].value["value"]),
+                             half=numeral(50 * q["speed_fluctuation"].value["value"])))
+        for key, say in (("acceleration", "greatest acceleration {alpha} rad/s² at θ = {at}°"),
+                         ("retardation", "greatest retardation {alpha} rad/s² at θ = {at}°")):
+            if f"greatest_{key}" in q:
+                c = q[f"greatest_{key}"]
+                out.append(words(say, alpha=numeral(c.value["value"]), at=", ".join(
+                    numeral(a, ".2f") for a in c.value["angle_deg"])))
+        for theta in ex.at:
+            key = f"{math.degrees(theta):g}"
+            if f"alpha_at_{key}" in q:
+                out.append(words("at θ = {at}°: T = {torque} N·m, α = {alpha} rad/s²",
+                                 at=numeral(math.degrees(theta), "g"),
+                                 torque=numeral(q[f"T_at_{key}"].value["value"]),
+                                 alpha=numeral(q[f"alpha_at_{key}"].value["value"])))
+        failed = self.failures
+        out.append(words("every number agrees with its reference") if not failed else
+                   f"OFF: {', '.join(failed)}")
+        return out
+
+    def document(self) -> list[Section]:
+        """steps.md: how the diagram is read, numbered, then the results."""
+        ex, r = self.exercise, self.reading
+        steps = []
+        if ex.diagram is None:
+            steps.append(words("Each area times the diagram's scale ({scale} J per unit of area) "
+                               "is an energy: {energies} J.", scale=numeral(ex.energy_scale),
+                               energies=", ".join(numeral(a) for a in ex.areas)))
+        else:
+            steps.append(words("Draw T(θ) at {n} equal steps of {step}° over the cycle; its "
+                               "mean is the area under it over the cycle.",
+                               n=numeral(len(r.samples), "d"),
+                               step=numeral(math.degrees(r.step), "g")))
+            steps.append(words("The curve crosses the mean at {n} intercepts; between them "
+                               "lie the areas {energies} J.", n=numeral(len(r.intercepts), "d"),
+                               energies=", ".join(numeral(a, ".5g") for a in r.areas)))
+        steps.append(words("Add the areas in turn from the first intercept: the energy's "
+                           "highest less its lowest is the greatest fluctuation ΔE."))
+        if self.inertia and ex.diagram is not None:
+            steps.append(words("With the resistance steady at the mean, α = (T − T_mean)/I: "
+                               "greatest where T is highest over the whole cycle, most "
+                               "negative where it is lowest."))
+        return [title(ex.name, ex.description),
+                Section(phrase("heading.construction"), (numbered(steps),)),
+                Section(phrase("md.results"), (Bullets(tuple(self.lines())),))]
+
+    @property
+    def figures(self) -> dict[str, Any]:
+        """The turning-moment diagram (T(θ)), or the energy at each intercept (areas)."""
+        from tarsim.graphics.forces.flywheel_figure import energy_figure, torque_figure
+        if self.exercise.diagram is None:
+            return {"energy": energy_figure(self)}
+        return {"turning-moment": torque_figure(self)}
+
+
+def solve_flywheel(ex: FlywheelExercise) -> FlywheelSolution:
+    """Solve a flywheel exercise."""
+    return FlywheelSolution(ex)

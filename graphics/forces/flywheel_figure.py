@@ -1,0 +1,121 @@
+"""The flywheel's figures: a turning-moment diagram given as T(θ), its mean line, its areas
+shaded with their joules and the shaft's greatest acceleration and retardation marked; or,
+for a diagram given by its areas, the energy at each intercept, its highest and lowest
+marked ΔE apart."""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+from tarsim.constructions.narration import numerals, unit_words, words
+from tarsim.graphics.figure import Figure
+from tarsim.graphics.plot import PlotMark, Series, draw_line_plot
+
+__all__ = ["torque_figure", "energy_figure", "energy_fills"]
+
+
+def _short(x: float) -> str:
+    """A number for a label: four figures, but no exponent on a torque of tens of thousands."""
+    s = f"{x:.4g}"
+    return f"{x:.0f}" if "e" in s and 1 <= abs(x) < 1e9 else s
+
+
+def _signed(energy: float, unit: str) -> str:
+    """An area's label: its sign, four figures and its unit."""
+    return f"{numerals(('+' if energy > 0 else '−') + _short(abs(energy)))} {unit}"
+
+
+def _ticks(period: float) -> list[tuple[float, str]]:
+    step = 30.0 if period <= 360 else 60.0
+    return [(k * step, numerals(f"{k * step:g}")) for k in range(int(period // step) + 1)]
+
+
+def torque_figure(sol: Any) -> Figure:
+    """T against the crank angle over the cycle, with the mean and the areas."""
+    ex, r = sol.exercise, sol.reading
+    period = math.degrees(ex.cycle)
+    pts = tuple((math.degrees(t), v) for t, v in r.samples) + ((period, r.samples[0][1]),)
+    torque = unit_words("N·m")
+    series = [Series(words("turning moment"), pts),
+              Series(words("mean {value} {unit}", value=numerals(_short(r.mean)), unit=torque),
+                     ((0.0, r.mean), (period, r.mean)), "plot_curve_dashed")]
+    fills, tags = energy_fills([p[0] for p in pts[:-1]], [p[1] for p in pts[:-1]], r.mean,
+                               [math.degrees(c) for c in r.intercepts], period)
+    notes = [words("ΔE = {energy} {unit}, the greatest fluctuation of energy: the highest energy "
+                   "less the lowest, adding the areas in turn (shaded light where the driver "
+                   "gives more than the mean, dark where less)",
+                   energy=numerals(_short(r.delta_e)), unit=unit_words("J"))]
+    marks = []
+    if "greatest_acceleration" in sol.checked:
+        for key, label in (("greatest", "α max"), ("least", "α min")):
+            marks += [PlotMark(math.degrees(theta), t, label) for theta, t in sol.extremes[key]]
+        notes.append(words("α max and α min: the shaft's greatest acceleration and retardation, "
+                           "where T is highest and lowest over the whole cycle"))
+    return draw_line_plot(
+        words("Turning-moment diagram"), words("crank angle θ (°)"), f"T ({torque})", series,
+        marks, x_range=(0.0, period), x_ticks=_ticks(period), notes=notes, fills=fills,
+        tags=tags, mark_legend=words("the shaft's extremes") if marks else "",
+        subtitle=ex.name)
+
+
+def energy_figure(sol: Any) -> Figure:
+    """The energy above its value at the first intercept, at each intercept in turn."""
+    ex, r = sol.exercise, sol.reading
+    levels = [0.0]
+    for a in r.areas:
+        levels.append(levels[-1] + a)
+    pts = tuple((float(i), e) for i, e in enumerate(levels))
+    n = len(r.areas)
+    marks = [PlotMark(r.highest, levels[int(r.highest)], words("highest")),
+             PlotMark(r.lowest, levels[int(r.lowest)], words("lowest"))]
+    joule = unit_words("J")
+    tags = [((i + 0.5), (levels[i] + levels[i + 1]) / 2, _signed(a, joule))
+            for i, a in enumerate(r.areas)]
+    return draw_line_plot(
+        words("Energy at the intercepts"), words("intercept, in order"),
+        f"E ({joule})", [Series(words("energy above the first intercept's"), pts)], marks,
+        x_range=(0.0, float(n)), x_ticks=[(float(i), numerals(str(i))) for i in range(n + 1)],
+        notes=[words("ΔE = {energy} {unit}, the greatest fluctuation of energy: the highest "
+                     "energy less the lowest", energy=numerals(_short(r.delta_e)),
+                     unit=joule)],
+        tags=tags, mark_legend=words("the highest and lowest energy"), subtitle=ex.name)
+
+
+def energy_fills(degrees: list[float], torques: list[float], mean: float,
+                 cuts: list[float], period: float):
+    """Each area's outline between the curve (at ``degrees`` over a ``period``) and the
+    ``mean``, cut at the intercepts ``cuts`` (°), and its label (J)."""
+    degrees = list(degrees) + [period]
+    torques = list(torques) + [torques[0]]
+    cuts = sorted(c % period for c in cuts)
+    fills, tags = [], []
+    for k, a in enumerate(cuts):
+        b = cuts[k + 1] if k + 1 < len(cuts) else cuts[0] + period
+        pts = [(a, mean)]
+        for turn in (0.0, period):
+            pts += [(d + turn, t) for d, t in zip(degrees, torques) if a < d + turn < b]
+        pts.append((b, mean))
+        area = sum((x1 - x0) * ((y0 + y1) / 2 - mean)
+                   for (x0, y0), (x1, y1) in zip(pts, pts[1:])) * math.pi / 180
+        pieces = _split(pts, mean, period)
+        fills += [("triangle" if area > 0 else "triangle_alt", p) for p in pieces]
+        big = max(pieces, key=lambda p: p[-1][0] - p[0][0])
+        peak = max(big, key=lambda p: abs(p[1] - mean))
+        tags.append(((big[0][0] + big[-1][0]) / 2, (peak[1] + mean) / 2,
+                     _signed(area, unit_words("J"))))
+    return fills, tags
+
+
+def _split(pts, mean: float, period: float):
+    """An area's outline cut at the cycle's end: the part past it goes back to its start."""
+    inside = [p for p in pts if p[0] <= period]
+    past = [(x - period, y) for x, y in pts if x >= period]
+    out = []
+    if len(inside) > 1:
+        if past:
+            inside.append((period, past[0][1]))
+        out.append(inside + [(inside[-1][0], mean)])
+    if len(past) > 1:
+        out.append([(0.0, mean), (0.0, past[0][1])] + past)
+    return out

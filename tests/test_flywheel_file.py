@@ -1,0 +1,188 @@
+"""The flywheel as the books pose it: a turning moment given as T(θ) (a formula or a table of
+points) or by its areas with the diagram's scales, read for ΔE, C_s, the flywheel, its rim and
+the shaft's greatest acceleration and retardation, each against a closed form."""
+
+from __future__ import annotations
+
+import json
+import math
+
+import pytest
+from click.testing import CliRunner
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from tarsim.constructions.errors import InputError
+from tarsim.constructions.forces.flywheel import STEPS, Diagram, read_diagram
+from tarsim.constructions.forces.torque_formula import parse_formula
+from tarsim.exercises.catalog import load
+from tarsim.exercises.cli import cli
+from tarsim.exercises.forces.flywheel_file import parse_flywheel
+from tarsim.exercises.forces.flywheel_solution import solve_flywheel
+
+H2 = (2 * math.pi / STEPS) ** 2
+"""The drawing's step squared: between two intercepts the trapezoid rule misses the area by
+h²/12·(T′(b) − T′(a)), for a harmonic of amplitude A and order k some h²·k·A/6, so ΔE = 2A/k
+comes out within h²·k²/12 of itself; 1e-6 for k = 2, and the tests allow H2 · k²/4."""
+
+
+def _q(name):
+    return solve_flywheel(load(name)).checked
+
+
+def test_engine_harmonic_torque():
+    """T = 20000 + 9500 sin 2θ − 5700 cos 2θ, 300 rpm, C_s = 0.01: the books' closed form."""
+    q = _q("engine-harmonic-torque")
+    amplitude = math.hypot(9500, 5700)          # ΔE of A sin(2θ − φ) over a half period: A
+    omega = 300 * 2 * math.pi / 60
+    inertia = amplitude / (0.01 * omega ** 2)
+    assert q["delta_E"].value["value"] == pytest.approx(amplitude, rel=H2)
+    assert q["mean_torque"].value["value"] == pytest.approx(20000, rel=1e-12)
+    assert q["power"].value["value"] == pytest.approx(20000 * omega, rel=1e-12)
+    assert q["inertia"].value["value"] == pytest.approx(inertia, rel=H2)     # book: 1123
+    assert q["rim_mass"].value["value"] == pytest.approx(inertia / 1.0 ** 2, rel=H2)
+    # 45° from the dead centre: T − T_mean = 9500 sin 90° − 5700 cos 90° = 9500 (book 8.46)
+    assert q["alpha_at_45"].value["value"] == pytest.approx(9500 / inertia, rel=H2)
+    # α = A/I where 2θ − φ = 90° (φ = atan(5700/9500)), twice a turn
+    peak = (90 + math.degrees(math.atan2(5700, 9500))) / 2
+    assert q["greatest_acceleration"].value["value"] == pytest.approx(amplitude / inertia,
+                                                                      rel=H2)
+    assert q["greatest_acceleration"].value["angle_deg"] == pytest.approx([peak, peak + 180],
+                                                                          abs=1e-5)
+    assert q["greatest_retardation"].value["angle_deg"] == pytest.approx(
+        [peak + 90, peak + 270], abs=1e-5)
+    assert all(c.passed is not False for c in q.values())
+
+
+def test_petrol_engine_areas():
+    """Areas +295, −685, +40, −340, +960, −270 mm² at 5 N·m and 1° a mm; 36 kg at k = 150
+    mm, 1800 rpm: ΔE = (295 + 690) mm² × 5·π/180 J/mm² (the energy runs 295 above its start
+    and 690 below it), C_s = ΔE/(m·k²·ω²), the books' 0.3 %."""
+    q = _q("petrol-engine-areas")
+    delta_e = 985 * 5 * math.pi / 180
+    assert q["delta_E"].value["value"] == pytest.approx(delta_e, rel=1e-14)
+    cs = delta_e / (36 * 0.15 ** 2 * (1800 * math.pi / 30) ** 2)
+    assert q["speed_fluctuation"].value["value"] == pytest.approx(cs, rel=1e-14)
+    assert round(100 * cs, 1) == 0.3
+
+
+def test_single_cylinder_table():
+    """0 at 0°, 6000 at 90°, 0 at 180°, −1000 at 270°, straight between: the mean 1250 N·m
+    (the areas (3000 − 500)·π over 2π), the intercepts at 18.75° and 161.25°, ΔE the triangle
+    above the mean, ½·142.5°·4750 N·m; a table's points are steps, so exact to rounding."""
+    q = _q("single-cylinder-table")
+    delta_e = 0.5 * math.radians(142.5) * 4750
+    inertia = delta_e / (0.02 * (600 * math.pi / 30) ** 2)
+    assert q["mean_torque"].value["value"] == pytest.approx(1250, rel=1e-12)
+    assert q["delta_E"].value["value"] == pytest.approx(delta_e, rel=1e-12)
+    assert q["inertia"].value["value"] == pytest.approx(inertia, rel=1e-12)
+    assert q["rim_radius"].value["value"] == pytest.approx(math.sqrt(inertia / 200), rel=1e-12)
+    assert q["greatest_acceleration"].value["value"] == pytest.approx(4750 / inertia, rel=1e-12)
+    assert q["greatest_acceleration"].value["angle_deg"] == [pytest.approx(90, abs=1e-9)]
+    assert q["greatest_retardation"].value["value"] == pytest.approx(2250 / inertia, rel=1e-12)
+    assert q["greatest_retardation"].value["angle_deg"] == [pytest.approx(270, abs=1e-9)]
+
+
+TEXT = """[units]
+speed = "rpm"
+[turning_moment]
+torque = "{torque}"
+[flywheel]
+speed = 100
+inertia = 10
+"""
+
+
+def test_the_greatest_acceleration_is_the_cycle_s_not_a_local_peak():
+    """T = 100 + 50 cos θ + 40 cos 3θ has peaks of 115 near ±120° beside its greatest, 190 at
+    0°; its least is 10 at 180°, beside local troughs of 85 near ±60°."""
+    ex = parse_flywheel(TEXT.format(torque="100 + 50*cos(theta) + 40*cos(3*theta)"))
+    q = solve_flywheel(ex).checked
+    assert q["greatest_acceleration"].value["value"] == pytest.approx(90 / 10, rel=1e-9)
+    (at,) = q["greatest_acceleration"].value["angle_deg"]
+    assert min(at, 360 - at) == pytest.approx(0, abs=1e-5)
+    assert q["greatest_retardation"].value["value"] == pytest.approx(90 / 10, rel=1e-9)
+    assert q["greatest_retardation"].value["angle_deg"] == [pytest.approx(180, abs=1e-5)]
+    assert q["speed_fluctuation"].passed
+
+
+@settings(max_examples=40, deadline=None)
+@given(mean=st.floats(-1e4, 1e4), amplitude=st.floats(1.0, 1e4), k=st.integers(1, 6),
+       phase=st.floats(0, 2 * math.pi))
+def test_a_harmonic_s_delta_e_is_2a_over_k(mean, amplitude, k, phase):
+    """T = T_m + A sin(kθ + φ): the areas are ±2A/k each, and ΔE one of them."""
+    d = Diagram(lambda t: mean + amplitude * math.sin(k * t + phase), 2 * math.pi)
+    r = read_diagram(d)
+    assert r.delta_e == pytest.approx(2 * amplitude / k, rel=H2 * k * k / 4 + 1e-12)
+    assert len(r.areas) == 2 * k
+    assert r.mean == pytest.approx(mean, abs=1e-12 * (abs(mean) + amplitude))
+
+
+@pytest.mark.parametrize("torque", [
+    '__import__(\\"os\\").system(\\"true\\")', "theta.real", "abs(theta)", "x + 1",
+    "lambda: 1", "[1, 2]", "1 if theta else 2", "sin(theta, 2)", "(-8)**0.5", "9.0**9**9",
+    "1/0", "sin + 1"])
+def test_a_formula_runs_no_code_and_is_refused_in_one_line(torque):
+    with pytest.raises(InputError) as e:
+        parse_flywheel(TEXT.format(torque=torque), "t.toml")
+    message = str(e.value)
+    assert message.startswith("t.toml:4: ") and "\n" not in message and len(message) < 200
+
+
+def test_the_formula_reader_allows_the_books_arithmetic():
+    f = parse_formula("2000 + 1500*sin(3*θ) - 300*cos(2*theta)**2 / pi + -theta")
+    t = 0.7
+    assert f(t) == 2000 + 1500 * math.sin(3 * t) - 300 * math.cos(2 * t) ** 2 / math.pi - t
+
+
+@pytest.mark.parametrize("body, line, words", [
+    ("[turning_moment]\nareas = [10, -20]\ntorque_scale = 1\nangle_scale = 1\n", 2,
+     "the areas add to -10, not 0"),
+    ("[turning_moment]\nareas = [10, -10]\n", 1, "needs its scales"),
+    ("[turning_moment]\nareas = [10, 10, -20]\nenergy_scale = 1\n", 2, "other sign"),
+    ("[turning_moment]\ntorque = \"1\"\npoints = [[0, 1], [90, 2], [180, 3]]\n", 3,
+     "not torque and points"),
+    ("[turning_moment]\npoints = [[0, 1], [90, 2], [90, 3]]\n", 2, "past the one before"),
+    ("[turning_moment]\ntorque = \"1 + sin(theta)\"\n[flywheel]\nspeed_fluctuation = 0.1\n", 3,
+     "give the mean speed"),
+    ("[turning_moment]\ntorque = \"1 + sin(theta)\"\n[flywheel]\nspeed = 1\ninertia = 1\n"
+     "speed_fluctuation = 0.1\n", 5, "one of them"),
+    ("[turning_moment]\ntorque = \"1 + sin(theta)\"\n[flywheel]\nspeed = 1\n"
+     "radius_of_gyration = 1\n", 5, "needs the flywheel's mass"),
+    ("[turning_moment]\nareas = [10, -10]\nenergy_scale = 1\n[flywheel]\nat = [30]\n", 5,
+     "no T(θ) to read"),
+])
+def test_a_bad_flywheel_file_is_refused_at_its_line(body, line, words):
+    with pytest.raises(InputError) as e:
+        parse_flywheel(body, "f.toml")
+    assert str(e.value).startswith(f"f.toml:{line}: ") and words in str(e.value)
+    assert "\n" not in str(e.value)
+
+
+def test_a_flywheel_file_is_its_own_kind_not_a_mechanism(tmp_path):
+    """Such a file was read as a mechanism and refused: "the file has no [frame] table"."""
+    path = tmp_path / "wheel.toml"
+    path.write_text(TEXT.format(torque="5000 + 1500*sin(3*theta)"), encoding="utf-8")
+    out = tmp_path / "out"
+    result = CliRunner().invoke(cli, ["solve", str(path), "--no-pdf", "-o", str(out)])
+    assert result.exit_code == 0, result.output
+    q = json.loads((out / "results.json").read_text(encoding="utf-8"))["quantities"]
+    # ΔE = 2·1500/3 J, C_s = ΔE/(I·ω²)
+    cs = 1000 / (10 * (100 * math.pi / 30) ** 2)
+    assert q["speed_fluctuation"]["value"] == pytest.approx(cs, rel=H2 * 9 / 4)
+    assert (out / "turning-moment.svg").exists()
+
+
+@pytest.mark.parametrize("name", ["engine-harmonic-torque", "petrol-engine-areas",
+                                  "single-cylinder-table"])
+def test_a_flywheel_exercise_is_solved_drawn_and_said_in_persian(name, tmp_path):
+    for lang in ("en", "fa"):
+        out = tmp_path / lang
+        result = CliRunner().invoke(cli, ["solve", name, "--no-pdf", "--lang", lang, "-o",
+                                          str(out)])
+        assert result.exit_code == 0, result.output
+        svg = next(out.glob("*.svg")).read_text(encoding="utf-8")
+        if lang == "fa":
+            assert "نمودار" in svg or "انرژی" in svg
+            steps = (out / "steps.md").read_text(encoding="utf-8")
+            assert "بیشترین نوسان انرژی" in steps
