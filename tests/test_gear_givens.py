@@ -234,3 +234,88 @@ def test_a_bad_efficiency_is_refused_at_its_line(value, words):
     with pytest.raises(InputError, match=r"^t\.toml:1: ") as e:
         parse_train(text, "t.toml")
     assert words in str(e.value)
+
+
+# ----- teeth the data imply ----------------------------------------------------------------------
+def test_the_sun_s_teeth_from_its_diameter_and_the_ring_s_from_the_coaxial_condition():
+    """The bundled example: N2 = d/m = 80/4 = 20, N1 = N2 + 2·N3 = 80, so the arm turns
+    1000·N2/(N1 + N2) = 200 rpm."""
+    s = solve_train(load("teeth-implied"))
+    q = s.quantities
+    assert (q["teeth1"].exact, q["teeth2"].exact) == (80, 20)
+    assert q["teeth1"].reference == 80 and q["teeth2"].reference == 20
+    assert q["omega4"].exact == 200 and s.passed
+    assert "N1 = 80" in s.steps() and "N2 = d/m = 80/4 = 20" in s.steps()
+    heads, rows = s._table()
+    assert rows[0][1][:2] == ["(80)", "(20)"]          # found teeth, in brackets
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.integers(12, 80), st.integers(12, 60), st.sampled_from(["ring", "planet", "sun"]))
+def test_the_coaxial_condition_gives_the_one_tooth_count_left_out(sun, planet, left):
+    """N_ring = N_sun + 2·N_planet, whichever of the three is left out (the planet's only
+    where N_ring − N_sun is even: else refused as no whole number)."""
+    ring = sun + 2 * planet
+    counts = {"sun": sun, "planet": planet, "ring": ring}
+    text = simple(sun, planet, ring, find='["teeth2", "teeth3", "teeth4", "omega5"]')
+    number = {"sun": 2, "planet": 3, "ring": 4}[left]
+    text = text.replace(f"number = {number}\nteeth = {counts[left]}\n", f"number = {number}\n")
+    q = solve_train(parse_train(text, "t.toml")).quantities
+    assert [q[f"teeth{n}"].exact for n in (2, 3, 4)] == [sun, planet, ring]
+    assert q[f"teeth{number}"].reference == counts[left]
+    assert q["omega5"].exact == F(100 * sun, sun + ring)
+
+
+def test_an_odd_ring_less_sun_gives_no_whole_planet_and_is_refused():
+    text = simple(20, 20, 61).replace("number = 3\nteeth = 20\n", "number = 3\n")
+    with pytest.raises(InputError, match=r"^t\.toml:\d+: the coaxial condition .* gives gear 3 "
+                                         r"20\.5 teeth, not a whole number"):
+        parse_train(text, "t.toml")
+
+
+def test_a_reverted_train_s_last_gear_from_its_coaxial_shafts():
+    """An ordinary reverted train, 2 → 3 = 4 → 5 with 2 and 5 on one axis: N5 = N2 + N3 −
+    N4 = 20 + 60 − 25 = 55, and e = (20·25)/(60·55) = 5/33."""
+    text = """coaxial = [2, 5]
+[[gear]]
+number = 2
+teeth = 20
+[[gear]]
+number = 3
+teeth = 60
+[[gear]]
+number = 4
+teeth = 25
+[[gear]]
+number = 5
+[[shaft]]
+members = [3, 4]
+[[mesh]]
+gears = [2, 3]
+[[mesh]]
+gears = [4, 5]
+[input]
+member = 2
+[ask]
+find = ["teeth5", "omega5/omega2"]
+"""
+    q = solve_train(parse_train(text, "r.toml")).quantities
+    assert q["teeth5"].exact == 55 == q["teeth5"].reference
+    assert q["omega5/omega2"].exact == F(20 * 25, 60 * 55)
+
+
+@pytest.mark.parametrize("old, new, words", [
+    ("number = 3\nteeth = 20\n", "number = 3\n", None),
+    ("number = 2\nteeth = 40\n", "number = 2\ndiameter = 81\nmodule = 2\n",
+     "is 40.5 teeth, not a whole number"),
+    ("number = 2\nteeth = 40\n", "number = 2\nteeth = 40\ndiameter = 84\nmodule = 2\n",
+     "make a pitch diameter of 80 mm, not 84"),
+])
+def test_teeth_nothing_gives_are_refused_at_the_gear(old, new, words):
+    text = simple().replace(old, new)
+    if words is None:                    # the planet's from the ring's and the sun's: fine
+        text = text.replace("number = 4\nteeth = 80\n", "number = 4\n")
+        words = "gear 3 needs its teeth"
+    with pytest.raises(InputError) as e:
+        parse_train(text, "t.toml")
+    assert words in str(e.value) and str(e.value).startswith("t.toml:")

@@ -31,10 +31,13 @@ class Gear:
     that carries its axis (a planet), else None (a fixed axis)."""
 
     number: int
-    teeth: int
+    teeth: int | None
+    """None while the data leave it to be found (:mod:`.teeth`)."""
     module: Fraction | None = None
     carrier: int | None = None
     name: str = ""
+    diameter: Fraction | None = None
+    """The pitch diameter (m) the file gives, where it does."""
 
     @property
     def label(self) -> str:
@@ -94,6 +97,11 @@ class GearTrain:
     speed_given: bool = True
     """False where the file gives no speed (only ratios or torques are asked): the input
     then turns 1 of the file's unit, and only what does not depend on it is said."""
+    implied: tuple[Phrase, ...] = ()
+    """The steps that found the teeth the file leaves out (a diameter over its module, the
+    coaxial condition), before the speeds."""
+    implied_teeth: tuple[int, ...] = ()
+    """The gears whose teeth those steps found."""
     efficiency: Fraction = Fraction(1)
     """The share of the input's power the output takes (1: no losses)."""
     second: tuple[int, Fraction] | None = None

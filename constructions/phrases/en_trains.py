@@ -26,6 +26,10 @@ PHRASES: dict[str, str] = {
                        "(counter-clockwise +).",
     "gears.holding_two": "Member {fixed} takes the rest: T{fixed} = −(T{i} + T{o}) = {value} "
                          "N·m.",
+    "gears.teeth_diameter": "Gear {n}'s teeth from its pitch diameter and module: N{n} = d/m "
+                            "= {d}/{m} = {teeth}.",
+    "gears.teeth_coaxial": "{gear}: the coaxial condition, the two pairs equally far apart, "
+                           "{equation}, gives N{n} = {teeth}.",
     "gears.mesh_carries": "{driven} meshes {kind}ly with {driver}, so it turns {way}, "
                           "N{a}/N{b} = {na}/{nb} as fast: {turns} → {result}.",
     "gears.shaft_carries": "{member} is on one shaft with {other}: it turns alike, {turns}.",

@@ -33,6 +33,7 @@ WORDS: dict[str, str] = {
     "whole train locked, {turn}": "کل قطار قفل\u200cشده، یک دور مثبت",
     "arm {arm} held, {fixed} turned {turn}": "بازوی {arm} ثابت، {fixed} یک دور منفی",
     "total": "مجموع",
+    "teeth (found: in brackets)": "تعداد دندانه (یافته‌شده: درون پرانتز)",
     "y × row 1 + x × row 2: speed": "y × سطر 1 + x × سطر 2: سرعت",
     "arm {arm} held, {member} turned {turn}": "بازوی {arm} ثابت، {member} یک دور منفی",
     "no member fixed: two speeds given": "هیچ عضوی ثابت نیست: دو سرعت داده شده است",
@@ -88,6 +89,10 @@ PHRASES: dict[str, str] = {
                        "T{i}·(ω{h} − {eta}·ω{i})/(ω{o} − ω{h}) = {value} N·m (پادساعتگرد +).",
     "gears.holding_two": "باقی گشتاور را عضو {fixed} می‌گیرد: T{fixed} = −(T{i} + T{o}) = "
                          "{value} N·m.",
+    "gears.teeth_diameter": "تعداد دندانه‌های چرخدندهٔ {n} از قطر گام و مدول آن: N{n} = d/m "
+                            "= {d}/{m} = {teeth}.",
+    "gears.teeth_coaxial": "{gear}: شرط هم‌محوری، یعنی فاصلهٔ برابر دو جفت چرخدنده، "
+                           "{equation}، نتیجه می‌دهد N{n} = {teeth}.",
     "gears.ordinary_start": "{member}، یعنی عضو ورودی، با {speed} می‌چرخد. یک دور چرخش آن را از "
                             "طریق درگیری‌ها به عضوهای دیگر منتقل کنید:",
     "gears.mesh_carries": "{driven} با {driver} درگیری {kind} دارد، پس {way} و با سرعتی "

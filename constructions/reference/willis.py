@@ -16,7 +16,7 @@ from fractions import Fraction
 from ..errors import InputError
 from ..gears.train import GearTrain
 
-__all__ = ["willis_speeds", "willis_torques"]
+__all__ = ["willis_speeds", "willis_torques", "coaxial_teeth"]
 
 
 def willis_speeds(train: GearTrain) -> dict[int, Fraction]:
@@ -81,6 +81,35 @@ def willis_torques(train: GearTrain, speeds: dict[int, Fraction], loads: dict[in
         rows.append([Fraction(1)] * len(members) + [-t_in])
     solved = _solve(rows, len(members), train)
     return {i: t_in, **dict(zip(members, solved))}
+
+
+def coaxial_teeth(train: GearTrain, number: int) -> Fraction:
+    """Gear ``number``'s teeth as the coaxial condition fixes them, found apart from the
+    step that did: a mesh of ``number`` and another mesh that must stand as far apart (both
+    on one planet body, or across the shaft of an ordinary reverted train); the centre
+    distance is linear in the count, so a secant through N and N + 1 on train.py's own
+    distances lands on it. Returns the count, or 0 where no such pair is found."""
+    from dataclasses import replace
+
+    def related(mesh, other) -> bool:
+        return any(train.body(x) == train.body(y) and (
+            train.carried(x) if train.planetary else x != y)
+            for x in (mesh.a, mesh.b) for y in (other.a, other.b))
+
+    def gap(n: int, mesh, other) -> Fraction:
+        t = replace(train, gears=tuple(replace(g, teeth=n) if g.number == number else g
+                                       for g in train.gears))
+        return t._centre_distance(mesh) - t._centre_distance(other)
+
+    n0 = train.gear(number).teeth
+    for mesh in train.meshes:
+        for other in train.meshes:
+            if other is mesh or number not in (mesh.a, mesh.b) or not related(mesh, other):
+                continue
+            slope = gap(n0 + 1, mesh, other) - gap(n0, mesh, other)
+            if slope:
+                return n0 - gap(n0, mesh, other) / slope
+    return Fraction(0)
 
 
 def _solve(rows: list[list[Fraction]], n: int, train: GearTrain) -> list[Fraction]:

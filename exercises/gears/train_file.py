@@ -15,21 +15,23 @@ from typing import Any, ClassVar
 from tarsim.constructions.asks import symbol
 from tarsim.constructions.errors import InputError
 from tarsim.constructions.gears.involute import Involute, check_mesh
+from tarsim.constructions.gears.teeth import imply_teeth, teeth_from_diameter, unknown_teeth
 from tarsim.constructions.gears.train import Gear, GearTrain, Mesh, SpeedUnits
+from tarsim.constructions.narration import Phrase, phrase
 from tarsim.constructions.units import LENGTH_UNITS
 from ..file_numbers import RANGE, _float, in_range
 from ..toml_source import SourceMap, read_toml
 from ..names import named_in, read_names
+from .train_inputs import _POWERS, InputTables, _shown
 
 __all__ = ["TrainExercise", "parse_train"]
 
-_TOP = ("name", "names", "source", "description", "fixed", "efficiency", "units", "gear", "arm",
-        "mesh", "shaft", "input", "involute", "ask")
+_TOP = ("name", "names", "source", "description", "fixed", "efficiency", "coaxial", "units",
+        "gear", "arm", "mesh", "shaft", "input", "involute", "ask")
 MESH_ASKS = ("contact_ratio", "path_of_contact", "arc_of_contact", "pressure_angle",
              "circular_pitch", "interference", "least_teeth")
 """What the involute mesh answers (with ``[involute]``)."""
 _SPEEDS = ("rpm", "rad/s")
-_POWERS = {"W": 1, "kW": 1000}
 
 
 @dataclass(frozen=True)
@@ -68,9 +70,11 @@ def parse_train(text: str, filename: str = "<string>", exercise_id: str = "train
     return _Reader(data, SourceMap(text), filename, exercise_id).read()
 
 
-class _Reader:
+class _Reader(InputTables):
     def __init__(self, data: dict[str, Any], where: SourceMap, filename: str, eid: str):
         self.data, self.where, self.filename, self.id = data, where, filename, eid
+        self.sized_teeth: list[Phrase] = []      # the steps that found teeth by N = d/m
+        self.from_diameter: list[int] = []
 
     def fail(self, message: str, table: str | None = None, key: str | None = None,
              index: int = 0) -> InputError:
@@ -92,12 +96,14 @@ class _Reader:
         fixed = self.fixed()
         member, speed, second = self.inputs(units)
         torque, power = self.load(speed is not None)
+        implied = [g.number for g in gears if g.teeth is None]
         train = GearTrain(gears, meshes, shafts, arm, arm_name, fixed, member,
                           Fraction(1) if speed is None else speed, units, planets, torque,
                           power, self.text("name") or self.id, self.filename,
                           speed_given=speed is not None, second=second,
                           efficiency=self.efficiency())
         try:
+            train = self.teeth(train, implied)
             train.check()
         except InputError as e:
             raise self.placed(e) from None
@@ -105,6 +111,22 @@ class _Reader:
         return TrainExercise(self.id, train, self.asks(train, involute),
                              self.text("description"), involute,
                              read_names(self.data, self.where, self.filename))
+
+    def teeth(self, train: GearTrain, implied: list[int]) -> GearTrain:
+        """``train`` with the teeth the data imply (a diameter's, the coaxial condition's),
+        found as its first steps; a gear whose teeth nothing gives is refused at its line."""
+        coaxial = self.data.get("coaxial")
+        if coaxial is not None and not (isinstance(coaxial, list) and len(coaxial) == 2 and all(
+                isinstance(g, int) and g in [h.number for h in train.gears] for g in coaxial)):
+            raise self.fail("coaxial names the two gears of an ordinary train on one axis, "
+                            "coaxial = [2, 5]", key="coaxial")
+        train, steps = imply_teeth(train, tuple(coaxial) if coaxial else None)
+        for g in unknown_teeth(train):
+            raise InputError(f"gear {g} needs its teeth: give teeth = …, or its diameter with "
+                             "its module, or mesh it where the coaxial condition gives them",
+                             file=self.filename)
+        return replace(train, implied=(*self.sized_teeth, *steps),
+                       implied_teeth=(*self.from_diameter, *implied))
 
     def placed(self, error: InputError) -> InputError:
         """A check of the whole train, led by the line of the first gear it names (or of
@@ -180,12 +202,13 @@ class _Reader:
             if not isinstance(t, dict):
                 raise self.fail("each [[gear]] must be a table", "gear", index=i)
             for k in t:
-                if k not in ("number", "name", "teeth", "module", "diametral_pitch", "carrier"):
+                if k not in ("number", "name", "teeth", "module", "diametral_pitch", "carrier",
+                             "diameter"):
                     raise self.fail(f"unknown gear setting '{k}'; expected number, name, teeth, "
-                                    "module (or diametral_pitch), carrier", "gear", k, i)
-            for k in ("number", "teeth"):
-                if k not in t:
-                    raise self.fail(f"a gear needs its {k}", "gear", index=i)
+                                    "module (or diametral_pitch), diameter, carrier", "gear", k,
+                                    i)
+            if "number" not in t:
+                raise self.fail("a gear needs its number", "gear", index=i)
             n = self.integer(t["number"], "a gear's number", "gear", "number", i)
             if any(g.number == n for g in out):
                 raise self.fail(f"gear {n} is listed twice", "gear", "number", i)
@@ -210,9 +233,40 @@ class _Reader:
             name = t.get("name", "")
             if not isinstance(name, str):
                 raise self.fail("a gear's name must be text", "gear", "name", i)
-            out.append(Gear(n, self.integer(t["teeth"], "teeth", "gear", "teeth", i), module,
-                            carrier, name))
+            teeth = (self.integer(t["teeth"], "teeth", "gear", "teeth", i) if "teeth" in t
+                     else None)
+            diameter = None
+            if "diameter" in t:
+                teeth = self.diameter(t, i, n, teeth, module, units)
+                diameter = teeth * module
+            out.append(Gear(n, teeth, module, carrier, name, diameter))
         return tuple(out)
+
+    def diameter(self, t: dict[str, Any], i: int, n: int, teeth: int | None,
+                 module: Fraction | None, units: SpeedUnits) -> int:
+        """Gear ``n``'s teeth from its pitch diameter and module, N = d/m (a step of the
+        solution), or its teeth checked against them."""
+        d = self.exact(t["diameter"], "a pitch diameter", "gear", "diameter", i)
+        if module is None or d <= 0:
+            raise self.fail("a pitch diameter gives the teeth with the module: give module = "
+                            "… (or diametral_pitch), and a positive diameter", "gear",
+                            "diameter", i)
+        m = module / Fraction(repr(LENGTH_UNITS[units.length]))     # in the file's unit
+        found = teeth_from_diameter(d, m)
+        if teeth is not None and found != teeth:
+            raise self.fail(f"gear {n}: {teeth} teeth of module {float(m):g} make a pitch "
+                            f"diameter of {float(teeth * m):g} {units.length}, not "
+                            f"{float(d):g}; give one of them", "gear", "diameter", i)
+        if found.denominator != 1 or not 1 <= found <= 100_000:
+            raise self.fail(f"gear {n}'s pitch diameter over its module, {float(d):g}/"
+                            f"{float(m):g}, is {float(found):g} teeth, not a whole number: "
+                            "check the diameter and the module", "gear", "diameter", i)
+        if teeth is None:
+            self.from_diameter.append(n)
+            self.sized_teeth.append(phrase("gears.teeth_diameter", n=n, d=f"{float(d):g}",
+                                           m=f"{float(m):g}", unit=units.length,
+                                           teeth=int(found)))
+        return int(found)
 
     def arm(self) -> tuple[int | None, str, int]:
         t = self.data.get("arm")
@@ -275,87 +329,6 @@ class _Reader:
                                 "holds one still", key="fixed")
         return self.integer(v, "the fixed member", "", "fixed")
 
-    def inputs(self, units: SpeedUnits) -> tuple[int, Fraction | None,
-                                                 tuple[int, Fraction] | None]:
-        """The given speeds: ``[input]``, or two ``[[input]]`` tables where no member is
-        fixed (the arm and a gear both turning; a sun and a ring both driven). The first
-        is the input (its torque or power, if any); the second, if any, as (member,
-        speed)."""
-        raw = self.data.get("input")
-        if isinstance(raw, list):
-            if not 1 <= len(raw) <= 2:
-                raise self.fail(f"{len(raw)} [[input]] tables: a train takes one given speed "
-                                "with a fixed member, or two with none", "input", index=2)
-            if len(raw) == 2:
-                self.data["input"] = raw[0]     # the input's load is read from the first
-                member, speed = self.input(units, raw[0], 0)
-                other, more = self.input(units, raw[1], 1)
-                if speed is None or more is None:
-                    raise self.fail("two [[input]] tables each give a speed: speed = …",
-                                    "input", index=int(more is None))
-                for k in ("torque", "power"):
-                    if k in raw[1]:
-                        raise self.fail(f"give the {k} on the first [[input]], the driver",
-                                        "input", k, 1)
-                return member, speed, (other, more)
-            self.data["input"] = raw = raw[0]
-        return (*self.input(units, raw), None)
-
-    def input(self, units: SpeedUnits, t: Any, index: int = 0
-              ) -> tuple[int, Fraction | None]:
-        """The member whose speed is given (any member but the fixed one, the output's
-        shaft too), and its speed, CCW-positive; None where no speed is given (a file that
-        asks only ratios or torques needs none)."""
-        if not isinstance(t, dict) or "member" not in t:
-            raise self.fail("give the driving member and its speed: member = 2, "
-                            f"speed = 80 ({units.speed}), sense = \"cw\"", "input",
-                            index=index)
-        member = self.integer(t["member"], "the input member", "input", "member", index)
-        if "speed" not in t:
-            self.known(t, ("member", "sense", "torque", "power"), "input", index)
-            return member, None
-        speed = self.exact(t["speed"], "the input speed", "input", "speed", index)
-        sense = t.get("sense", "ccw")
-        if sense not in ("cw", "ccw"):
-            raise self.fail(f"unknown sense '{sense}'; use cw or ccw", "input", "sense", index)
-        if speed == 0 and index == 0:
-            raise self.fail("the input speed is 0: nothing turns", "input", "speed")
-        for k in t:
-            if k not in ("member", "speed", "sense", "torque", "power"):
-                raise self.fail(f"unknown input setting '{k}'; expected member, speed, sense, "
-                                "torque (N·m) or power (W)", "input", k, index)
-        return member, speed if sense == "ccw" else -speed
-
-    def load(self, speed_given: bool = True) -> tuple[Fraction | None, Fraction | None]:
-        """The input's torque (N·m) or power (W), if given: one of them, positive."""
-        t = self.data["input"]
-        given = [k for k in ("torque", "power") if k in t]
-        if len(given) > 1:
-            raise self.fail("give the input's torque or its power, not both", "input", "power")
-        if not given:
-            return None, None
-        if given[0] == "power" and not speed_given:
-            raise self.fail("the input's power gives its torque through its speed: give "
-                            "speed = … in [input] too", "input", "power")
-        v = self.exact(t[given[0]], f"the input {given[0]}", "input", given[0])
-        if v <= 0:
-            raise self.fail(f"the input {given[0]} must be positive: it drives the train "
-                            "(its sense is the input's)", "input", given[0])
-        units = self.data.get("units") or {}
-        per = _POWERS.get(units.get("power", "W"), 1) if isinstance(units, dict) else 1
-        return (v, None) if given[0] == "torque" else (None, v * per)
-
-    def efficiency(self) -> Fraction:
-        """The train's efficiency, 0 < η ≤ 1 (1, no losses, where none is given)."""
-        if "efficiency" not in self.data:
-            return Fraction(1)
-        eta = self.exact(self.data["efficiency"], "the efficiency", "", "efficiency")
-        if not 0 < eta <= 1:
-            hint = f" (a percentage? write {float(eta) / 100:g})" if 1 < eta <= 100 else ""
-            raise self.fail(f"an efficiency of {_shown(self.data['efficiency'])} is not one: "
-                            f"give it as a fraction, 0 < efficiency ≤ 1{hint}", key="efficiency")
-        return eta
-
     def involute(self, train: GearTrain) -> Involute | None:
         """The involute mesh to draw: a meshing pair, driver first, and its tooth form."""
         t = self.data.get("involute")
@@ -415,6 +388,8 @@ class _Reader:
                             "ask", "find")
         torques = tuple(f"torque{m}" for m in train.members)
         for q in find:
+            if q in tuple(f"teeth{g.number}" for g in train.gears):
+                continue
             if q in MESH_ASKS:
                 if involute is None:
                     raise self.fail(f"cannot find '{q}' without the mesh to draw: give "
@@ -426,8 +401,8 @@ class _Reader:
                                 "torque = … (N·m) or power = … (W) in [input]", "ask", "find")
             if q not in torques and (len(parts) > 2 or any(p not in every for p in parts)):
                 raise self.fail(f"cannot find '{q}' for this train; ask {', '.join(every)}, a "
-                                f"ratio such as {every[-1]}/{every[0]}, or a torque "
-                                f"{torques[-1]}", "ask", "find")
+                                f"ratio such as {every[-1]}/{every[0]}, a torque "
+                                f"{torques[-1]} or teeth{train.gears[0].number}", "ask", "find")
             if q in every and not train.speed_given:
                 raise self.fail(f"cannot find '{q}' without a speed: give speed = … "
                                 f"({train.units.speed}) in [input], or ask a ratio such as "
@@ -462,16 +437,10 @@ class _Reader:
                      if m not in still)
 
 
-def _shown(v: Any) -> str:
-    """A value the file gave, as a refusal quotes it: a long integer short (1e+07)."""
-    if isinstance(v, int) and not isinstance(v, bool) and abs(v) >= 1_000_000:
-        digits = str(abs(v))
-        return f"{'-' if v < 0 else ''}{digits[0]}.{digits[1:3]}e+{len(digits) - 1:02d}"
-    return f"'{v!r}'" if isinstance(v, float) else repr(v)     # a float quoted as written
-
-
 def ask_symbol(name: str) -> str:
     """"omega5/omega2" as the course writes it: ω5/ω2; "torque5" as T5."""
     if name.startswith("torque"):
         return f"T{name.removeprefix('torque')}"
+    if name.startswith("teeth"):
+        return f"N{name.removeprefix('teeth')}"
     return "/".join(symbol(p) for p in name.split("/"))

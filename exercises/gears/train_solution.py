@@ -24,7 +24,7 @@ from tarsim.constructions.narration import (numeral, numerals, phrase, significa
                                             words)
 from tarsim.constructions.reference.gear_mesh import (MeshReference, involute_miss, least_teeth,
                                                       mesh_reference)
-from tarsim.constructions.reference.willis import willis_speeds, willis_torques
+from tarsim.constructions.reference.willis import coaxial_teeth, willis_speeds, willis_torques
 from tarsim.graphics.gears.involute_figure import draw_involute_figure
 from tarsim.graphics.gears.kutzbach_figure import draw_kutzbach_figure
 from tarsim.graphics.gears.train_schematic import draw_train_schematic
@@ -107,6 +107,9 @@ class TrainSolution(ChapterFiles):
             if name in MESH_ASKS:
                 out[name] = self._mesh_quantity(name)
                 continue
+            if name.startswith("teeth"):
+                out[name] = self._teeth_quantity(int(name.removeprefix("teeth")))
+                continue
             if name.startswith("torque"):
                 m = int(name.removeprefix("torque"))
                 si = float(torques[m]) / (math.pi if pi else 1.0)
@@ -163,6 +166,20 @@ class TrainSolution(ChapterFiles):
                    "pressure_angle": size / got.radii["base2"]}.get(name, size)
         return TrainQuantity(name, Fraction(value), Fraction(want), value, "involute mesh",
                              allowed)
+
+    def _teeth_quantity(self, number: int) -> TrainQuantity:
+        """A gear's teeth, given or found from the data, beside the reference's: the count
+        that makes its mesh's centre distance the other pair's (train.py's distances, solved
+        by a secant on the count), or its diameter over its module in floats."""
+        train, gear = self.train, self.train.gear(number)
+        found = Fraction(gear.teeth)
+        if number not in train.implied_teeth:
+            return TrainQuantity(f"teeth{number}", found, found, float(found), "given")
+        if gear.diameter is not None:
+            ref = Fraction(round(float(gear.diameter) / float(gear.module)))
+            return TrainQuantity(f"teeth{number}", found, ref, float(found), "d/m")
+        return TrainQuantity(f"teeth{number}", found, coaxial_teeth(train, number),
+                             float(found), "coaxial condition")
 
     def _torques(self, speeds: dict[int, Fraction]) -> dict[int, Fraction]:
         return balance(self.train, speeds, self.output)
@@ -252,6 +269,11 @@ class TrainSolution(ChapterFiles):
                                       passed=q.passed, against=f"(formula: {reference})",
                                       method=q.method))
                 continue
+            if q.name.startswith("teeth"):
+                out.append(check_line(f"N{q.name.removeprefix('teeth')} = {q.exact}",
+                                      width=len(q.name) + 31, passed=q.passed,
+                                      against=f"(check: {q.reference})", method=q.method))
+                continue
             if q.name.startswith("torque"):
                 sense = "" if q.exact == 0 else (" ccw" if q.exact > 0 else " cw")
                 value = f"{torque_text(abs(q.exact), q.over_pi)} N·m{sense}"
@@ -277,7 +299,7 @@ class TrainSolution(ChapterFiles):
         """steps.md: the train, the method's steps, the drawn constructions, the table, and
         the results."""
         ex, train = self.exercise, self.train
-        method = [numbered([*self.found.steps,
+        method = [numbered([*train.implied, *self.found.steps,
                             *say_balance(self.train, self.found.speeds, self.output)])]
         if self.found.xy:
             method += [Paragraph(phrase("md.other_form")), Bullets(self.found.xy)]
@@ -315,7 +337,18 @@ class TrainSolution(ChapterFiles):
 
     def _table(self) -> tuple[list[str], list[tuple[str, list[str]]]]:
         """The table's heads and rows, as the notes set them (speeds in the file's unit), in
-        the language being spoken."""
+        the language being spoken; led by the teeth where the data implied some."""
+        heads, rows = self._speed_table()
+        train = self.train
+        if not train.implied_teeth:
+            return heads, rows
+        teeth = [("" if m == train.arm else numerals(
+            f"({train.gear(m).teeth})" if m in train.implied_teeth else
+            str(train.gear(m).teeth))) for m in train.members]
+        return heads, [(words("teeth (found: in brackets)"), teeth), *rows]
+
+    def _speed_table(self) -> tuple[list[str], list[tuple[str, list[str]]]]:
+        """The table's heads and rows of turns and speeds."""
         train, found, unit = self.train, self.found, self.train.units.speed
         heads = [_head(train, m) for m in train.members]
         speeds = [numerals(significant(float(found.speeds[m]))) for m in train.members]
@@ -354,6 +387,8 @@ class TrainSolution(ChapterFiles):
                        "Willis equation of every mesh, solved as one linear system: the same "
                        "fraction.", unit=unit_words(unit))]
         ruled = (2, 3) if self.found.table else ()
+        if self.train.implied_teeth:          # the teeth's row above the rest, ruled off
+            ruled = (1, *(r + 1 for r in ruled))
         title = (words("{name}: the tabular method", name=self.train.name) if self.found.table
                  else self.train.name)
         out = {self._stem: draw_train_table(title, heads, rows, ruled=ruled, notes=notes)}

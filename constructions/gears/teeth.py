@@ -1,0 +1,155 @@
+"""Tooth numbers the data imply, found before the speeds, as the books leave them to find.
+
+A gear may come with no teeth. Its count then follows, exactly, from
+
+- its pitch diameter and module, N = d/m (read with the file: :func:`teeth_from_diameter`);
+- the coaxial condition (:func:`imply_teeth`): the arm carries each planet body at one
+  radius, so its meshes with the gears on the main axis stand equally far from it,
+  m(N_c + N_p)/2 externally and m(N_c − N_p)/2 inside a ring: the notes' N1 = N2 + 2·N4,
+  a reverted train's N2 + N3 = N4 + N5. In an ordinary reverted train the file says which
+  two gears share an axis (``coaxial = [2, 5]``), and the same holds of its two pairs.
+
+Each count found is a step, and must come out whole and positive.
+"""
+
+from __future__ import annotations
+
+from dataclasses import replace
+from fractions import Fraction
+
+from ..errors import InputError
+from ..narration import Phrase, phrase
+from .train import GearTrain, Mesh
+
+__all__ = ["imply_teeth", "teeth_from_diameter", "unknown_teeth"]
+
+
+def teeth_from_diameter(diameter: Fraction, module: Fraction) -> Fraction:
+    """N = d/m, exact (whole for a gear; the caller refuses it otherwise)."""
+    return diameter / module
+
+
+def unknown_teeth(train: GearTrain) -> list[int]:
+    """The gears whose teeth are still unknown."""
+    return [g.number for g in train.gears if g.teeth is None]
+
+
+def imply_teeth(train: GearTrain, coaxial: tuple[int, int] | None = None
+                ) -> tuple[GearTrain, tuple[Phrase, ...]]:
+    """``train`` with every tooth count the coaxial condition gives, and its steps.
+
+    Raises
+    ------
+    InputError
+        If a count comes out broken or not positive.
+    """
+    steps: list[Phrase] = []
+    grew = True
+    while grew and unknown_teeth(train):
+        grew = False
+        for pairs in _coaxial_sets(train, coaxial):
+            found = _solve(train, pairs)
+            if found is None:
+                continue
+            number, teeth, said = found
+            train = replace(train, gears=tuple(replace(g, teeth=teeth) if g.number == number
+                                               else g for g in train.gears))
+            steps.append(phrase("gears.teeth_coaxial", gear=train.said(number, opening=True),
+                                equation=said, n=number, teeth=teeth))
+            grew = True
+            break
+    return train, tuple(steps)
+
+
+def _coaxial_sets(train: GearTrain, coaxial: tuple[int, int] | None
+                  ) -> list[list[tuple[Mesh, int]]]:
+    """Each set of meshes that must stand equally far apart, as (mesh, the gear of the
+    pair on the far axis): a planet body's meshes with the main-axis gears; and the two
+    pairs between an ordinary train's ``coaxial`` gears and one shaft."""
+    out = []
+    for body in train.bodies:
+        if not (train.planetary and train.carried(body[0])):
+            continue
+        pairs = [(mesh, c) for mesh in train.meshes for p, c in ((mesh.a, mesh.b),
+                                                                 (mesh.b, mesh.a))
+                 if p in body and not train.carried(c)]
+        if len(pairs) > 1:
+            out.append(pairs)
+    if coaxial is not None:
+        a, b = coaxial
+        near = {g: [(m, m.b if m.a == g else m.a) for m in train.meshes if g in (m.a, m.b)]
+                for g in (a, b)}
+        for ma, x in near[a]:
+            for mb, y in near[b]:
+                if y in train.body(x):
+                    out.append([(ma, a), (mb, b)])
+    return out
+
+
+def _solve(train: GearTrain, pairs: list[tuple[Mesh, int]]
+           ) -> tuple[int, int, str] | None:
+    """The one unknown count in two pairs of ``pairs`` that must stand equally far apart:
+    (gear, teeth, the equation as said); None if no two pairs leave exactly one unknown.
+    Each distance is m(N_far ± N_near)/2, linear in the count, so the two give it at once
+    (the planet's own count too, in both pairs: N_p = (N_ring − N_sun)/2)."""
+    # in length where every mesh of the set gives its module, else in modules alone
+    sized = all(_module(train, m) is not None for m, _ in pairs)
+    for i, (m1, c1) in enumerate(pairs):
+        for m2, c2 in pairs[i + 1:]:
+            missing = {g for mesh in (m1, m2) for g in (mesh.a, mesh.b)
+                       if _teeth(train, g) is None}
+            if len(missing) != 1:
+                continue
+            g = missing.pop()
+            (a1, b1), (a2, b2) = (_linear(train, m, c, g, sized) for m, c in ((m1, c1),
+                                                                              (m2, c2)))
+            if b1 == b2:
+                continue
+            teeth = (a2 - a1) / (b1 - b2)
+            said = f"{_said(train, m1, c1, sized, g)} = {_said(train, m2, c2, sized, g)}"
+            if teeth.denominator != 1 or teeth <= 0:
+                raise InputError(f"the coaxial condition {said} gives gear {g} "
+                                 f"{float(teeth):g} teeth, not a whole number of one or more: "
+                                 "check the teeth and modules given", file=train.source or None)
+            return g, int(teeth), said
+    return None
+
+
+def _linear(train: GearTrain, mesh: Mesh, far: int, unknown: int, sized: bool
+            ) -> tuple[Fraction, Fraction]:
+    """The mesh's centre distance m(N_far ± N_near)/2 (minus inside a ring, the ring on
+    the far axis) as α + β·N of the ``unknown`` gear's count."""
+    near = mesh.b if far == mesh.a else mesh.a
+    m = (_module(train, mesh) if sized else None) or Fraction(1)
+    sign = -1 if mesh.internal else 1
+    alpha, beta = Fraction(0), Fraction(0)
+    for n, k in ((far, 1), (near, sign)):
+        if n == unknown:
+            beta += k * m / 2
+        else:
+            alpha += k * m * _teeth(train, n) / 2
+    return alpha, beta
+
+
+def _teeth(train: GearTrain, number: int) -> int | None:
+    return train.gear(number).teeth
+
+
+def _module(train: GearTrain, mesh: Mesh) -> Fraction | None:
+    """The mesh's own module: either gear's (they are equal), or None where neither gives
+    one."""
+    for g in (train.gear(mesh.a), train.gear(mesh.b)):
+        if g.module is not None:
+            return g.module
+    return None
+
+
+def _said(train: GearTrain, mesh: Mesh, far: int, sized: bool, unknown: int | None = None
+          ) -> str:
+    """A pair's distance as the step writes it: "(60 + 40)/2", "(N1 − 40)/2", with its
+    module where the modules set the sizes: "2 mm·(60 + 40)/2"."""
+    near = mesh.b if far == mesh.a else mesh.a
+    sign = "−" if mesh.internal else "+"
+    text = {n: f"N{n}" if n == unknown else str(train.gear(n).teeth) for n in (far, near)}
+    scale = f"{train._length(_module(train, mesh))}·" if sized else ""
+    return f"{scale}({text[far]} {sign} {text[near]})/2"
