@@ -319,3 +319,48 @@ def test_teeth_nothing_gives_are_refused_at_the_gear(old, new, words):
     with pytest.raises(InputError) as e:
         parse_train(text, "t.toml")
     assert words in str(e.value) and str(e.value).startswith("t.toml:")
+
+
+# ----- identical planets listed as gears ---------------------------------------------------------
+def test_two_identical_planets_listed_are_two_planets_turning_alike():
+    """The bundled example: ω3 = 600·N2/(N1 + N2) = 1200/7 rpm, ω4 = ω3 − (N2/N4)(ω2 − ω3)
+    = −400 rpm; the second planet 5, solved by Willis as a gear of its own, turns so too."""
+    s = solve_train(load("two-planets-listed"))
+    q = s.quantities
+    assert q["omega3"].exact == F(1200, 7)
+    assert q["omega4"].exact == q["omega5"].exact == F(-400) == q["omega5"].reference
+    assert s.train.planets == 2 and s.exercise.twins == ((5, 4),) and s.passed
+
+
+@settings(max_examples=30, deadline=None)
+@given(st.integers(6, 40), st.integers(6, 30), st.integers(2, 4))
+def test_k_planets_listed_count_as_planets_k(half_sun, planet, k):
+    """k copies of the planet fold into planets = k, the last copy turning as the first:
+    with the ring fixed, Willis gives ω_a = ω2·N2/(N2 + N_ring) and ω_p = ω_a(1 − N_ring/N_p)."""
+    sun = 2 * half_sun * k            # sun + ring a multiple of k (the assembly condition)
+    ring = sun + 2 * planet
+    if (sun + ring) % k:
+        return
+    copies = "".join(f"[[gear]]\nnumber = {10 + i}\nteeth = {planet}\ncarrier = 5\n\n"
+                     for i in range(k - 1))
+    meshes = "".join(f"[[mesh]]\ngears = [2, {10 + i}]\n\n[[mesh]]\ngears = [{10 + i}, 4]\n"
+                     'kind = "internal"\n\n' for i in range(k - 1))
+    text = simple(sun, planet, ring, find=f'["omega5", "omega3", "omega{8 + k}"]').replace(
+        "[arm]", copies + meshes + "[arm]")
+    try:
+        s = solve_train(parse_train(text, "t.toml"))
+    except InputError as e:                  # k planets too big to fit round the sun
+        assert "do not fit round the sun" in str(e)
+        return
+    arm = F(100 * sun, sun + ring)
+    assert s.quantities["omega5"].exact == arm and s.train.planets == k
+    assert s.quantities["omega3"].exact == s.quantities[f"omega{8 + k}"].exact == \
+        arm * (1 - F(ring, planet))
+
+
+def test_a_planets_count_that_contradicts_the_copies_listed_is_refused():
+    text = open(load("two-planets-listed").train.source).read().replace(
+        "[arm]\nnumber = 3", "[arm]\nnumber = 3\nplanets = 3")
+    with pytest.raises(InputError, match=r"^p\.toml:\d+: the arm 3 lists 2 identical planets as "
+                                         r"gears but says planets = 3"):
+        parse_train(text, "p.toml")

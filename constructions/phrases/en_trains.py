@@ -30,6 +30,9 @@ PHRASES: dict[str, str] = {
                             "= {d}/{m} = {teeth}.",
     "gears.teeth_coaxial": "{gear}: the coaxial condition, the two pairs equally far apart, "
                            "{equation}, gives N{n} = {teeth}.",
+    "gears.twin": "Gear {copy} is a planet like gear {first}: the same teeth, the same meshes, "
+                  "on the same arm. It turns as gear {first} does; the two are {n} planets, "
+                  "equally spaced, and the speeds are those of one.",
     "gears.mesh_carries": "{driven} meshes {kind}ly with {driver}, so it turns {way}, "
                           "N{a}/N{b} = {na}/{nb} as fast: {turns} → {result}.",
     "gears.shaft_carries": "{member} is on one shaft with {other}: it turns alike, {turns}.",

@@ -17,6 +17,7 @@ from tarsim.constructions.errors import InputError
 from tarsim.constructions.gears.involute import Involute, check_mesh
 from tarsim.constructions.gears.teeth import imply_teeth, teeth_from_diameter, unknown_teeth
 from tarsim.constructions.gears.train import Gear, GearTrain, Mesh, SpeedUnits
+from tarsim.constructions.gears.twins import fold_twins
 from tarsim.constructions.narration import Phrase, phrase
 from tarsim.constructions.units import LENGTH_UNITS
 from ..file_numbers import RANGE, _float, in_range
@@ -47,6 +48,18 @@ class TrainExercise:
     involute: Involute | None = None
     names: tuple[tuple[str, str], ...] = ()
     """The train's name in other languages (``[names]``, :mod:`.names`)."""
+    twins: tuple[tuple[int, int], ...] = ()
+    """Identical planets listed as gears, (copy, the planet it turns as): folded into one
+    (:mod:`~tarsim.constructions.gears.twins`), asked by their own numbers."""
+
+    listed: GearTrain | None = None
+    """The train as listed, every copy a gear, where copies were folded: the Willis
+    reference solves it whole (its extra meshes must agree), so each copy's speed is
+    checked, not assumed."""
+
+    def member(self, number: int) -> int:
+        """The member of the train that a number asked stands for (a copy's planet)."""
+        return dict(self.twins).get(number, number)
 
     @property
     def name(self) -> str:
@@ -104,13 +117,20 @@ class _Reader(InputTables):
                           efficiency=self.efficiency())
         try:
             train = self.teeth(train, implied)
+            arm_table = self.data.get("arm")
+            listed = train
+            train, twins, said = fold_twins(train, isinstance(arm_table, dict)
+                                            and "planets" in arm_table)
+            train = replace(train, implied=(*train.implied, *said))
             train.check()
         except InputError as e:
             raise self.placed(e) from None
         involute = self.involute(train)
+        self.twins = dict(twins)
         return TrainExercise(self.id, train, self.asks(train, involute),
                              self.text("description"), involute,
-                             read_names(self.data, self.where, self.filename))
+                             read_names(self.data, self.where, self.filename), twins,
+                             replace(listed, planets=train.planets) if twins else None)
 
     def teeth(self, train: GearTrain, implied: list[int]) -> GearTrain:
         """``train`` with the teeth the data imply (a diameter's, the coaxial condition's),
@@ -377,7 +397,7 @@ class _Reader(InputTables):
 
     def asks(self, train: GearTrain, involute: Involute | None = None) -> tuple[str, ...]:
         t = self.data.get("ask")
-        every = tuple(f"omega{m}" for m in train.members)
+        every = tuple(f"omega{m}" for m in (*train.members, *getattr(self, "twins", {})))
         if t is None:
             return every if train.speed_given else self.ratios(train)
         find = t.get("find") if isinstance(t, dict) else None

@@ -47,7 +47,7 @@ def refuse_still_ratios(ex: TrainExercise, *speeds: dict[int, Fraction]) -> None
     for q in ex.asks:
         parts = q.split("/")
         if len(parts) == 2 and parts[1].startswith("omega"):
-            m = int(parts[1].removeprefix("omega"))
+            m = ex.member(int(parts[1].removeprefix("omega")))
             if any(s[m] == 0 for s in speeds):
                 raise InputError(f"{q} divides by the speed of {train.label(m)}, which stands "
                                  "still in this train; ask a ratio over a turning member",

@@ -116,14 +116,16 @@ class TrainSolution(ChapterFiles):
                 out[name] = TrainQuantity(name, torques[m], torques_ref[m], si,
                                           "balance of power", over_pi=pi)
                 continue
-            parts = [int(p.removeprefix("omega")) for p in name.split("/")]
+            # (a copy of a planet turns as its planet; the reference solved the copy itself)
+            listed = [int(p.removeprefix("omega")) for p in name.split("/")]
+            parts = [self.exercise.member(n) for n in listed]
             if len(parts) == 1:
-                got, ref = self.found.speeds[parts[0]], self.reference[parts[0]]
+                got, ref = self.found.speeds[parts[0]], self.reference[listed[0]]
                 out[name] = TrainQuantity(name, got, ref, float(got) * per, self.found.method)
             else:
                 a, b = parts
                 got = self.found.speeds[a] / self.found.speeds[b]
-                ref = self.reference[a] / self.reference[b]
+                ref = self.reference[listed[0]] / self.reference[listed[1]]
                 out[name] = TrainQuantity(name, got, ref, float(got), self.found.method)
         return out
 
@@ -481,7 +483,7 @@ def solve_train(ex: TrainExercise) -> TrainSolution:
     """
     found = tabulate(ex.train)
     train = ex.train
-    reference = willis_speeds(train)
+    reference = willis_speeds(ex.listed or train)
     refuse_beyond_floats(train, found.speeds)
     refuse_still_ratios(ex, found.speeds, reference)
     # the diagram lays off the input's velocity: drawn only for a speed the file gives
