@@ -273,12 +273,17 @@ def bench(quick, out_dir):
     tolerance, polygon circles, a sweep's step, the working precision); and
     runs the stiff and extreme suite (toggles, near-parallel Kennedy lines,
     centres at infinity, extreme lengths and ω, dead centres, Coriolis as
-    ω → 0). It runs from a source checkout, with the test extra installed.
+    ω → 0); and gives every other chapter its rows and extremes against
+    closed forms (nearly cancelling gear trains, cams at a 90° pressure
+    angle and a vanishing radius of curvature, force polygons near parallel
+    lines and dead centres, nearly balanced rotors, the flywheel's step). It
+    runs from a source checkout, with the test extra installed.
 
     \b
     Writes into DIR:
-      report.md        the method table, the plots' headlines, the suite
-      report/*.svg     error against run time, one plot per knob
+      report.md        the method table, the plots' headlines, the suite,
+                       the chapters' rows
+      report/*.svg     error against run time, one plot per knob and chapter
 
     \b
     Example:

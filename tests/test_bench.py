@@ -164,7 +164,7 @@ def test_bench_quick_writes_the_report_and_its_numbers_hold(tmp_path):
     text = (tmp_path / "report.md").read_text(encoding="utf-8")
     # Every linked plot is written, and small.
     links = re.findall(r"!\[[^]]*\]\((report/[^)]+\.svg)\)", text)
-    assert len(links) == 6
+    assert len(links) == 6 + 5                          # the linkages' and one per chapter
     for link in links:
         svg = tmp_path / link
         assert svg.read_text(encoding="utf-8").startswith("<?xml")
@@ -190,6 +190,14 @@ def test_bench_quick_writes_the_report_and_its_numbers_hold(tmp_path):
     assert len(stiff) >= 30
     assert all(line.split(" | ")[8] == "yes" for line in stiff)
     assert any("AB = 200 + 1e-08 mm" in line for line in stiff)
+    # Every other chapter: its heading and rows, each row's eight cells, each within.
+    part = text[text.index("## 4. Every chapter"):]
+    assert [h for h in re.findall(r"^### (.+)$", part, re.M)] == [
+        "Gear trains", "Cams", "Force polygons", "Balancing", "The flywheel"]
+    cells = [line.split(" | ") for line in part.splitlines()
+             if line.startswith("| ") and not line.startswith("| case")]
+    assert len(cells) >= 40 and all(len(c) == 8 for c in cells)
+    assert all(c[5] == "yes" for c in cells)
 
 
 @pytest.mark.parametrize("name", ["parallelogram-four-bar", "rolling-wheel",

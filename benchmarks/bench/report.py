@@ -1,6 +1,7 @@
-"""Write ``report.md`` and its plots: the method table, the error-against-time plots, the suite.
+"""Write ``report.md`` and its plots: the method table, the error-against-time plots, the suite,
+and every other chapter's rows.
 
-:func:`write_report` is what ``tarsim bench`` calls. It runs the three parts, each
+:func:`write_report` is what ``tarsim bench`` calls. It runs the four parts, each
 behind a progress bar the caller may give, and writes ``<out>/report.md`` with the
 plots in ``<out>/report/``, linked from it.
 """
@@ -17,6 +18,7 @@ from pathlib import Path
 import mpmath
 import numpy
 
+from .chapter_report import STUDIES, render_chapters, run_chapters
 from .methods import cases, method_table
 from .mpref import DPS
 from .stiff import BOUND_ULPS, run_case, stiff_cases
@@ -81,8 +83,12 @@ def write_report(out: Path, *, quick: bool = False, bar: Bar | None = None) -> P
             studies.append(run())
             b.update(1)
 
+    with bar(len(STUDIES), "every chapter's extremes") as b:
+        chapters = run_chapters(plots, quick=quick, progress=b.update)
+
     text = _render(rows, stiff_rows, studies, quick=quick, machine_line=started,
                    seconds=time.perf_counter() - t0, plots=plots.relative_to(out))
+    text += "\n" + "\n".join(render_chapters(chapters, plots.relative_to(out))) + "\n"
     path = out / "report.md"
     path.write_text(text, encoding="utf-8")
     return path
