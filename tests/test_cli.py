@@ -148,7 +148,7 @@ def test_bad_file_is_one_line_with_file_and_line(mech_file, tmp_path, edit, mess
                         "six-link-homework-3, slotted-lever-p37, velocity-homework-292, "
                         "wheel-driven-slider, wheel-round-circle, whitworth, "
                         "crank-shaper-forces, crank-shaper-inertia, engine-forces, "
-                        "engine-friction, "
+                        "engine-friction, engine-gas-pressure, "
                         "four-bar-coupler-load, four-bar-forces, compound-train, "
                         "involute-pair, planetary-q1, planetary-q2, planetary-q3, "
                         "planetary-q4, eccentric-flat-face, offset-knife-edge, "
@@ -279,7 +279,7 @@ def test_list_shows_the_bundled_examples():
                    "six-link-homework-3", "slotted-lever-p37", "velocity-homework-292",
                    "wheel-driven-slider", "wheel-round-circle", "whitworth",
                    "crank-shaper-forces", "crank-shaper-inertia", "engine-forces",
-                   "engine-friction",
+                   "engine-friction", "engine-gas-pressure",
                    "four-bar-coupler-load", "four-bar-forces", "compound-train",
                    "involute-pair", "planetary-q1", "planetary-q2", "planetary-q3",
                    "planetary-q4", "eccentric-flat-face", "offset-knife-edge",

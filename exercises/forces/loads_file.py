@@ -5,8 +5,11 @@ Masses are in kg, inertias in kg·m², forces in N and couples in N·m (CCW +); 
 lengths in the file's length unit. A mass's centre is a point of its link ("A"), "mid"
 (halfway between the link's first two points) or [x, y] in the link's own frame (its
 first point the origin, +x toward its second point or along its slot); its inertia about
-that centre defaults to a slender rod's, (1/12)·m·L², said to be assumed. Every failure is
-one line naming file:line.
+that centre is given, or as a radius of gyration k (I = m·k²), or defaults to a slender
+rod's, (1/12)·m·L², said to be assumed; a link that slides on the frame without turning (a
+piston, a ram) needs none, for its inertia couple I·α is 0. A gas force may be given as the
+books give it, a pressure on the piston's bore (or area): p·A along the line of stroke
+toward the crank. Every failure is one line naming file:line.
 """
 
 from __future__ import annotations
@@ -28,8 +31,9 @@ LOAD_TABLES = ("forces", "mass", "force", "couple")
 
 _KEYS = {"forces": ("gravity", "driver", "speed_fluctuation", "flywheel", "friction",
                     "friction_circle"),
-         "mass": ("link", "mass", "centre", "inertia", "length"),
-         "force": ("link", "point", "force", "resist", "stroke", "name"),
+         "mass": ("link", "mass", "centre", "inertia", "length", "radius_of_gyration"),
+         "force": ("link", "point", "force", "resist", "stroke", "name", "pressure", "bore",
+                   "area"),
          "couple": ("link", "moment", "name")}
 
 
@@ -114,12 +118,26 @@ def read_loads(data: dict[str, Any], mech: Mechanism, where: SourceMap,
             raise fail(f"link {n}'s mass must be positive, got {m:g} kg", "mass", "mass", i)
         centre, named = _centre(t.get("centre", "mid"), k, metre,
                                 lambda msg, i=i: fail(msg, "mass", "centre", i))
-        if "inertia" in t:
+        if "inertia" in t and "radius_of_gyration" in t:
+            raise fail(f"link {n}'s inertia is given twice: give inertia (kg·m²) or "
+                       "radius_of_gyration (I = m·k²), not both", "mass", "radius_of_gyration", i)
+        if "radius_of_gyration" in t:
+            k_g = number(t, "radius_of_gyration", "mass", "a radius of gyration", i) * metre
+            if not k_g > 0:
+                raise fail(f"link {n}'s radius of gyration must be positive, got "
+                           f"{k_g / metre:g} {mech.units.length}", "mass", "radius_of_gyration",
+                           i)
+            inertia = m * k_g ** 2
+            assumed = ""
+        elif "inertia" in t:
             inertia = _inertia(t, i, n, fail)
             if not inertia > 0:
                 raise fail(f"link {n}'s moment of inertia must be positive, got "
                            f"{inertia:g} kg·m²", "mass", "inertia", i)
             assumed = ""
+        elif "length" not in t and _translates(mech, n):
+            inertia = 0.0       # it never turns: α = 0, so I·α = 0 whatever I is
+            assumed = "it slides without turning, so its inertia couple is 0"
         else:
             if "length" in t:
                 length = number(t, "length", "mass", "the rod's length", i) * metre
@@ -148,6 +166,13 @@ def read_loads(data: dict[str, Any], mech: Mechanism, where: SourceMap,
             raise fail("a force acts at a point of its link: point = \"B\" or [x, y] in the "
                        "link's own frame", "force", "point", i)
         name = str(t.get("name", ""))
+        if "pressure" in t:
+            forces.append(_gas_force(mech, t, n, point, name, metre, i, fail))
+            continue
+        for key in ("bore", "area"):
+            if key in t:
+                raise fail(f"{key} is the piston's, for a gas pressure: give pressure = "
+                           "\"2 MPa\" with it", "force", key, i)
         if "resist" in t:
             size = number(t, "resist", "force", "a resisting force", i)
             if not size > 0 or "force" in t:
@@ -179,6 +204,103 @@ def read_loads(data: dict[str, Any], mech: Mechanism, where: SourceMap,
                    "tables with the [forces] settings", "forces")
     return Loads(tuple(masses), tuple(forces), tuple(couples), GRAVITY if gravity else 0.0,
                  friction=friction, friction_circle=circle, **wheel)
+
+
+PRESSURES = {"Pa": 1.0, "N/m²": 1.0, "N/m2": 1.0, "kPa": 1e3, "bar": 1e5, "MPa": 1e6,
+             "N/mm²": 1e6, "N/mm2": 1e6}
+"""The pressure units a gas force may be stated in, as Pa each; a plain number is in Pa."""
+
+
+def _pressure(v: Any) -> float:
+    """A pressure as the file gives it (a number in Pa, or "0.5 N/mm²", "35 bar"), in Pa.
+
+    Raises
+    ------
+    ValueError
+        Saying what is wrong, for the caller to place at its line.
+    """
+    if isinstance(v, str):
+        number, _, unit = v.strip().partition(" ")
+        unit = unit.strip()
+        if unit not in PRESSURES:
+            raise ValueError(f"a pressure's unit is one of {', '.join(PRESSURES)}: \"2 MPa\", "
+                             f"got {v!r:.40}")
+        try:
+            value = float(number)
+        except ValueError:
+            raise ValueError(f"a pressure is a number and its unit, \"2 MPa\"; got "
+                             f"{v!r:.40}") from None
+        return file_number(value, "a pressure") * PRESSURES[unit]
+    return file_number(v, "a pressure (Pa)")
+
+
+def _gas_force(mech: Mechanism, t: dict, n: int, point, name: str, metre: float, i: int,
+               fail) -> PointForce:
+    """A gas pressure on the piston's bore (or area) as a force: p·A along the line of stroke
+    toward the crank's pivot (away from it for a pressure below 0, a suction)."""
+    for key in ("force", "resist"):
+        if key in t:
+            raise fail(f"a gas force is given by its pressure or as {key}, not both",
+                       "force", key, i)
+    try:
+        p = _pressure(t["pressure"])
+    except ValueError as e:
+        raise fail(str(e), "force", "pressure", i) from None
+    if ("bore" in t) == ("area" in t):
+        raise fail("a pressure acts on the piston's bore (its diameter, bore = 100) or on its "
+                   "area (area = 7854, in the length unit squared): give one", "force",
+                   "pressure", i)
+    if "bore" in t:
+        bore = t["bore"] if isinstance(t["bore"], (int, float)) else None
+        size = file_number(bore, "the bore") * metre if bore is not None else 0.0
+        if not size > 0:
+            raise fail(f"the bore is the piston's diameter, positive, in {mech.units.length}; "
+                       f"got {t['bore']!r:.40}", "force", "bore", i)
+        area = math.pi * size * size / 4
+    else:
+        a = t["area"] if isinstance(t["area"], (int, float)) else None
+        area = file_number(a, "the area") * metre * metre if a is not None else 0.0
+        if not area > 0:
+            raise fail(f"the piston's area must be positive, in {mech.units.length}²; got "
+                       f"{t['area']!r:.40}", "force", "area", i)
+    way = _toward_crank(mech, n, point) if isinstance(point, str) else None
+    if way is None:
+        raise fail(f"a gas pressure pushes a piston along its line of stroke: {point!r} of link "
+                   f"{n} must be a point on a frame guide of a mechanism driven by a crank",
+                   "force", "pressure", i)
+    size = p * area
+    return PointForce(n, point, (size * way[0], size * way[1]), name or "gas force")
+
+
+def _toward_crank(mech: Mechanism, link: int, point: str) -> tuple[float, float] | None:
+    """The line of stroke of ``point`` (on a frame guide) turned toward the crank's pivot,
+    at the input's given angle; None where there is no such guide or pivot."""
+    import numpy as np
+
+    from tarsim.constructions.loads import stroke_axis
+    from tarsim.constructions.model import Drive
+    from tarsim.constructions.reference.turn import solve_turn
+
+    guide = next((s for s in mech.slides if s.guide_link == 1 and s.link == link
+                  and s.point == point), None)
+    crank = mech.link(mech.drive.link)
+    pivot = next((mech.frame.local(q) for q in crank.names if mech.frame.carries(q)), None)
+    if guide is None or pivot is None:
+        return None
+    drive = mech.drive
+    turn = solve_turn(mech.with_drive(Drive(drive.link, drive.angle, drive.omega or 1.0)),
+                      np.zeros(1))
+    if not turn.ok[0]:
+        return None
+    pin = tuple(float(c) for c in turn.points[point][0])
+    return stroke_axis(pivot, pin, guide.direction)
+
+
+def _translates(mech: Mechanism, link: int) -> bool:
+    """Whether ``link`` slides on the frame as a block (a piston, a ram): it keeps its angle,
+    so it never turns."""
+    return any(s.guide_link == 1 and s.link == link and s.type.turns_with_guide
+               for s in mech.slides)
 
 
 INERTIAS = (1e-15, 1e6)
