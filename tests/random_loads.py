@@ -104,7 +104,14 @@ def _loads(c: rm._Case, spec: dict[str, Any]) -> dict[str, Any]:
             t["centre"] = r.choice(["mid"] * (len(points) > 1) + list(points)
                                    + [[c.length(r.uniform(-0.2, 1.0)),
                                        c.length(r.uniform(-0.1, 0.1))]])
-            if len(points) < 2 or r.random() < 0.6:
+            blocked = any(s.get("on", 1) == 1 and s["link"] == k["number"]
+                          and s.get("kind", "block") == "block"
+                          for s in spec.get("sliders", []))
+            if blocked and len(points) < 2 and r.random() < 0.3:
+                pass            # a piston or ram: it does not turn, so needs no inertia
+            elif r.random() < 0.15:
+                t["radius_of_gyration"] = c.length(r.uniform(0.02, 0.3))
+            elif len(points) < 2 or r.random() < 0.6:
                 t["inertia"] = round(t["mass"] * c.length(r.uniform(0.05, 0.5)) ** 2 / 12, 12) \
                     or 1e-6
             masses.append(t)
@@ -114,7 +121,18 @@ def _loads(c: rm._Case, spec: dict[str, Any]) -> dict[str, Any]:
         t = {"link": k["number"], "name": r.choice(["P", "gas force", "load", ""])}
         guided = [s for s in spec.get("sliders", []) if s.get("on", 1) == 1
                   and s["link"] == k["number"]]
-        if guided and r.random() < 0.5:
+        if guided and r.random() < 0.2:
+            # a gas pressure on the piston's bore or area, as the books give it
+            t["point"] = guided[0]["point"]
+            t["pressure"] = r.choice([f"{round(r.uniform(0.1, 5), 3)} MPa",
+                                      f"{round(r.uniform(1, 50), 2)} bar",
+                                      round(r.uniform(-2e5, 3e6), 1)])
+            bore = c.length(r.uniform(0.02, 0.2))
+            if r.random() < 0.5:
+                t["bore"] = bore
+            else:
+                t["area"] = round(math.pi * bore * bore / 4, 6)
+        elif guided and r.random() < 0.5:
             t["point"] = guided[0]["point"]
             t["resist"] = round(r.uniform(10, 5000), 1)
             t["stroke"] = r.choice(["both", "slow", "fast"])

@@ -182,26 +182,12 @@ class TurningMoment:
 
     def _areas(self, r: Fluctuation):
         """Each energy area's outline (between curve and mean) and its label."""
-        degrees = [math.degrees(a) for a in self.angles] + [360.0]
-        torques = list(self.torques) + [self.torques[0]]
-        cuts = sorted(math.degrees(c) % 360.0 for c in r.intercepts)
-        fills, tags = [], []
-        for k, a in enumerate(cuts):
-            b = cuts[k + 1] if k + 1 < len(cuts) else cuts[0] + 360.0
-            pts = [(a, r.mean)]
-            for turn in (0.0, 360.0):
-                pts += [(d + turn, t) for d, t in zip(degrees, torques) if a < d + turn < b]
-            pts.append((b, r.mean))
-            area = sum((x1 - x0) * ((y0 + y1) / 2 - r.mean)
-                       for (x0, y0), (x1, y1) in zip(pts, pts[1:])) * math.pi / 180
-            pieces = _split(pts, r.mean)
-            fills += [("triangle" if area > 0 else "triangle_alt", p) for p in pieces]
-            # The label at the middle of the larger piece, halfway to its peak.
-            big = max(pieces, key=lambda p: p[-1][0] - p[0][0])
-            peak = max(big, key=lambda p: abs(p[1] - r.mean))
-            tags.append(((big[0][0] + big[-1][0]) / 2, (peak[1] + r.mean) / 2,
-                         f"{numerals(f'{area:+.4g}'.replace('-', '−'))} {unit_words('J')}"))
-        return fills, tags
+        from tarsim.graphics.forces.flywheel_figure import energy_fills
+
+        return energy_fills([math.degrees(a) for a in self.angles], list(self.torques), r.mean,
+                            [math.degrees(c) for c in r.intercepts], 360.0, lambda area: (
+                                f"{numerals(f'{area:+.4g}'.replace('-', '−'))} "
+                                f"{unit_words('J')}"))
 
     def csv(self) -> str:
         """One row a step: the angle, the torque and each joint force's size."""
@@ -318,20 +304,6 @@ def _drawn_marks(ex: Exercise) -> list[tuple[float, float, float, str]]:
         turned = (sense * (theta - drive.angle)) % (2 * math.pi)
         label = sol.position.label if sol.position else f"θ{drive.link}"
         out.append((turned, sense * q.value["value"], sense * q.reference["value"], label))
-    return out
-
-
-def _split(pts: list[tuple[float, float]], mean: float) -> list[list[tuple[float, float]]]:
-    """An area's outline cut at 360°: the part past the turn's end goes back to its start."""
-    inside = [p for p in pts if p[0] <= 360.0]
-    past = [(x - 360.0, y) for x, y in pts if x >= 360.0]
-    out = []
-    if len(inside) > 1:
-        if past:
-            inside.append((360.0, past[0][1]))
-        out.append(inside + [(inside[-1][0], mean)])
-    if len(past) > 1:
-        out.append([(0.0, mean), (0.0, past[0][1])] + past)
     return out
 
 

@@ -83,9 +83,11 @@ def energy_figure(sol: Any) -> Figure:
 
 
 def energy_fills(degrees: list[float], torques: list[float], mean: float,
-                 cuts: list[float], period: float):
+                 cuts: list[float], period: float, label=None):
     """Each area's outline between the curve (at ``degrees`` over a ``period``) and the
-    ``mean``, cut at the intercepts ``cuts`` (°), and its label (J)."""
+    ``mean``, cut at the intercepts ``cuts`` (°), and its label (J), written by ``label``
+    (its sign, four figures and J by default)."""
+    label = label or (lambda area: _signed(area, unit_words("J")))
     degrees = list(degrees) + [period]
     torques = list(torques) + [torques[0]]
     cuts = sorted(c % period for c in cuts)
@@ -103,7 +105,7 @@ def energy_fills(degrees: list[float], torques: list[float], mean: float,
         big = max(pieces, key=lambda p: p[-1][0] - p[0][0])
         peak = max(big, key=lambda p: abs(p[1] - mean))
         tags.append(((big[0][0] + big[-1][0]) / 2, (peak[1] + mean) / 2,
-                     _signed(area, unit_words("J"))))
+                     label(area)))
     return fills, tags
 
 
