@@ -364,3 +364,63 @@ def test_a_planets_count_that_contradicts_the_copies_listed_is_refused():
     with pytest.raises(InputError, match=r"^p\.toml:\d+: the arm 3 lists 2 identical planets as "
                                          r"gears but says planets = 3"):
         parse_train(text, "p.toml")
+
+
+# ----- gears of different modules on one arm ----------------------------------------------------
+def test_a_differential_of_nearly_equal_gears_is_solved_not_refused():
+    """The bundled example: 100 and 101 teeth against a 20/20 planet, 60 and 60.5 modules
+    out, no sizes given; Willis: ω3 = ω6(1 − N2·N5/(N4·N3)) = 100·(1 − 100/101) = 100/101."""
+    s = solve_train(load("differential-near-equal"))
+    assert s.quantities["omega3"].exact == F(100, 101)
+    assert s.quantities["omega3/omega6"].exact == F(1, 101) and s.passed
+    assert s.diagram is None                 # its radii disagree: the table alone
+    assert "gear 2 60 modules from the main axis and gear 3 60.5 modules" in s.steps()
+
+
+COMPOUND = """fixed = 2
+[[gear]]
+number = 2
+teeth = 40
+{m2}
+[[gear]]
+number = 3
+teeth = 20
+carrier = 6
+[[gear]]
+number = 4
+teeth = 20
+carrier = 6
+{m4}
+[[gear]]
+number = 5
+teeth = {n5}
+[[shaft]]
+members = [3, 4]
+[arm]
+number = 6
+[[mesh]]
+gears = [2, 3]
+[[mesh]]
+gears = [4, 5]
+[input]
+member = 6
+speed = 10
+[ask]
+find = ["omega5"]
+"""
+
+
+def test_each_mesh_is_held_to_the_arm_s_radius_at_its_own_module():
+    """Module 2 on the 40/20 mesh, 3 on the 20/20 one: 2(40 + 20)/2 = 60 mm = 3(20 + 20)/2,
+    so the arm carries the compound planet; ω5 = ω6(1 − N2·N4/(N3·N5)) = 10(1 − 2) = −10."""
+    s = solve_train(parse_train(COMPOUND.format(m2="module = 2", m4="module = 3", n5=20),
+                                "c.toml"))
+    assert s.quantities["omega5"].exact == -10 and s.passed
+
+
+def test_meshes_whose_own_modules_put_the_planet_at_two_radii_are_refused():
+    """3(20 + 21)/2 = 61.5 mm against 60 mm: the book's sizes do not fit one arm."""
+    with pytest.raises(InputError, match=r"^c\.toml:\d+: the arm cannot carry gear 3 and gear 4 "
+                                         r"on one axis: meshing with gear 2 puts it 60 mm from "
+                                         r"the main axis, with gear 5 61\.5 mm$"):
+        parse_train(COMPOUND.format(m2="module = 2", m4="module = 3", n5=21), "c.toml")

@@ -149,8 +149,8 @@ Q1 = (Path(bundled("gears")["planetary-q1"])).read_text(encoding="utf-8")
 
 
 @pytest.mark.parametrize("old, new, words", [
-    ("teeth = 140", "teeth = 141", ["cannot carry gear 4 (planet): meshing with gear 2 (sun) "
-                                    "puts it 50 modules", "gear 1 (ring) 50.5 modules"]),
+    # sizes not given: 50 and 50.5 modules are the book's to make good (a corrected ring)
+    ("teeth = 140", "teeth = 141", []),
     ("fixed = 1", "fixed = [1, 2]", ["2 fixed members (1, 2)"]),
     ("fixed = 1", "", ["no member is fixed"]),
     ("teeth = 60", "teeth = 60\nmodule = 2", []),             # one module given: still fits

@@ -194,6 +194,9 @@ def undrawable(train: GearTrain) -> str | None:
         train = main_axis_train(train, [])[0]
     if train.carried(train.fixed):
         return f"the fixed member {train.fixed} is carried by the arm: the arm cannot turn"
+    if train.uncoaxial(sized_too=True):     # the diagram lays radii off in modules
+        return ("a planet's meshes stand at different radii in modules (its gears differ in "
+                "module, or are corrected): the table alone solves this train")
     for mesh in train.meshes:
         a, b = train.gear(mesh.a).label, train.gear(mesh.b).label
         if train.carried(mesh.a) and train.carried(mesh.b):

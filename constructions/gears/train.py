@@ -235,29 +235,16 @@ class GearTrain:
             equally, a fixed member or input that is not a member, a planet fixed, or a
             Grübler count other than 1.
         """
-        numbers = [g.number for g in self.gears]
-        for shaft in self.shafts:
-            for m in shaft:
-                if m not in self.members:
-                    raise self._fail(f"a shaft names member {m}, which is not listed; the "
-                                     f"members are {', '.join(map(str, self.members))}")
+        self.check_names()
         for m in (self.fixed, self.input_member, self.second and self.second[0]):
             if m is not None and m not in self.members:
                 raise self._fail(f"there is no member {m}; the members are "
                                  f"{', '.join(map(str, self.members))}")
-        for g in self.gears:
-            if g.carrier is not None and g.carrier != self.arm:
-                raise self._fail(f"{g.label} is carried by member {g.carrier}, which is not "
-                                 "the arm; name the arm in [arm]")
         if self.fixed is not None and self.fixed != self.arm and self.carried(self.fixed):
             raise self._fail(f"{self.label(self.fixed)} is carried round by the arm "
                              f"{self.arm}: a planet cannot be fixed; fix the arm or a gear on "
                              "the main axis")
         for mesh in self.meshes:
-            for k in (mesh.a, mesh.b):
-                if k not in numbers:
-                    raise self._fail(f"a mesh names gear {k}, which is not listed; the gears "
-                                     f"are {', '.join(map(str, numbers))}")
             a, b = self.gear(mesh.a), self.gear(mesh.b)
             if a.module is not None and b.module is not None and a.module != b.module:
                 raise self._fail(f"{a.label} (module {self._length(a.module)}) and "
@@ -293,6 +280,25 @@ class GearTrain:
                              + ("a member turns freely: mesh it, put it on a shaft or fix it"
                                 if dof > given else "a member is held twice over"))
 
+    def check_names(self) -> None:
+        """Refuse a shaft, a mesh or a carrier that names what is not listed: the first
+        of :meth:`check`, run before the teeth are found (they look the gears up)."""
+        numbers = [g.number for g in self.gears]
+        for shaft in self.shafts:
+            for m in shaft:
+                if m not in self.members:
+                    raise self._fail(f"a shaft names member {m}, which is not listed; the "
+                                     f"members are {', '.join(map(str, self.members))}")
+        for mesh in self.meshes:
+            for k in (mesh.a, mesh.b):
+                if k not in numbers:
+                    raise self._fail(f"a mesh names gear {k}, which is not listed; the gears "
+                                     f"are {', '.join(map(str, numbers))}")
+        for g in self.gears:
+            if g.carrier is not None and g.carrier != self.arm:
+                raise self._fail(f"{g.label} is carried by member {g.carrier}, which is not "
+                                 "the arm; name the arm in [arm]")
+
     def _check_second(self) -> None:
         """Two given speeds need a free arm and two members that do not turn together."""
         m = self.second[0]
@@ -326,25 +332,60 @@ class GearTrain:
 
     def _check_coaxial(self) -> None:
         """Every planet body stands as far from the main axis by each of its meshes with a
-        gear on that axis (a reverted train: N2 + N3 = N4 + N5); equally spaced planets
-        clear one another and satisfy the assembly condition."""
+        gear on that axis (a reverted train: N2 + N3 = N4 + N5), in length, each mesh at
+        its own module, where every such mesh gives one; equally spaced planets clear one
+        another and satisfy the assembly condition. Where the sizes are not given, meshes
+        that differ in modules alone are the book's to make good (different modules, or
+        corrected teeth): :meth:`uncoaxial` names them, and they are not refused."""
+        for body, radii in self._planet_meshes():
+            lengths = [(self._mesh_length(mesh), p, c) for mesh, p, c in radii]
+            if all(r is not None for r, _, _ in lengths):
+                for (r0, p0, c0), (r, p, c) in zip(lengths, lengths[1:]):
+                    if r != r0:
+                        both = (self.gear(p0).label if p == p0 else
+                                f"{self.gear(p0).label} and {self.gear(p).label} on one axis")
+                        raise self._fail(
+                            f"the arm cannot carry {both}: meshing with {self.gear(c0).label} "
+                            f"puts it {self._length(r0)} from the main axis, with "
+                            f"{self.gear(c).label} {self._length(r)}")
+            self._check_planets(body, [(self._centre_distance(mesh), p, c)
+                                       for mesh, p, c in radii])
+
+    def _planet_meshes(self):
+        """Each planet body, with its meshes with main-axis gears as (mesh, planet gear,
+        main-axis gear)."""
         for body in self.bodies:
             if not self.carried(body[0]):
                 continue
-            radii = []
-            for mesh in self.meshes:
-                for p, c in ((mesh.a, mesh.b), (mesh.b, mesh.a)):
-                    if p in body and not self.carried(c):
-                        radii.append((self._centre_distance(mesh), p, c))
-            for (r0, p0, c0), (r, p, c) in zip(radii, radii[1:]):
-                if r != r0:
-                    both = (self.gear(p0).label if p == p0 else
-                            f"{self.gear(p0).label} and {self.gear(p).label} on one axis")
-                    raise self._fail(
-                        f"the arm cannot carry {both}: meshing with {self.gear(c0).label} puts it "
-                        f"{self._span(r0)} from the main axis, with "
-                        f"{self.gear(c).label} {self._span(r)}")
-            self._check_planets(body, radii)
+            yield body, [(mesh, p, c) for mesh in self.meshes
+                         for p, c in ((mesh.a, mesh.b), (mesh.b, mesh.a))
+                         if p in body and not self.carried(c)]
+
+    def uncoaxial(self, sized_too: bool = False) -> list[tuple[int, int, Fraction, int,
+                                                             Fraction]]:
+        """The planet meshes whose centre distances differ at :meth:`_module`'s sizes (in
+        modules unless every gear gives one) where the sizes are not all given (or, with
+        ``sized_too``, where each mesh's own module makes them agree), as (planet gear,
+        first main-axis gear, its distance, the other, its distance)."""
+        out = []
+        for _, radii in self._planet_meshes():
+            if not sized_too and all(self._mesh_length(mesh) is not None
+                                     for mesh, _, _ in radii):
+                continue
+            found = [(self._centre_distance(mesh), p, c) for mesh, p, c in radii]
+            for r, p, c in found[1:]:
+                if r != found[0][0]:
+                    out.append((p, found[0][2], found[0][0], c, r))
+        return out
+
+    def _mesh_length(self, mesh: Mesh) -> Fraction | None:
+        """The mesh's centre distance in length at its own module, m(N_a ± N_b)/2; None
+        where neither gear gives its module."""
+        a, b = self.gear(mesh.a), self.gear(mesh.b)
+        m = a.module if a.module is not None else b.module
+        if m is None:
+            return None
+        return m * (abs(a.teeth - b.teeth) if mesh.internal else a.teeth + b.teeth) / 2
 
     def _centre_distance(self, mesh: Mesh) -> Fraction:
         """Half the sum (external) or difference (internal) of the pitch diameters, m·N; in

@@ -33,6 +33,10 @@ PHRASES: dict[str, str] = {
     "gears.twin": "Gear {copy} is a planet like gear {first}: the same teeth, the same meshes, "
                   "on the same arm. It turns as gear {first} does; the two are {n} planets, "
                   "equally spaced, and the speeds are those of one.",
+    "gears.uncoaxial": "The planet meshes gear {c0} {r0} modules from the main axis "
+                       "and gear {c} {r} modules from it: with no sizes given, the book's "
+                       "gears differ in module there (or are corrected), and the speeds follow "
+                       "from the teeth alone.",
     "gears.mesh_carries": "{driven} meshes {kind}ly with {driver}, so it turns {way}, "
                           "N{a}/N{b} = {na}/{nb} as fast: {turns} → {result}.",
     "gears.shaft_carries": "{member} is on one shaft with {other}: it turns alike, {turns}.",

@@ -116,6 +116,7 @@ class _Reader(InputTables):
                           speed_given=speed is not None, second=second,
                           efficiency=self.efficiency())
         try:
+            train.check_names()
             train = self.teeth(train, implied)
             arm_table = self.data.get("arm")
             listed = train

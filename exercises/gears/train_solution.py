@@ -301,7 +301,9 @@ class TrainSolution(ChapterFiles):
         """steps.md: the train, the method's steps, the drawn constructions, the table, and
         the results."""
         ex, train = self.exercise, self.train
-        method = [numbered([*train.implied, *self.found.steps,
+        unsized = [phrase("gears.uncoaxial", c0=c0, r0=significant(float(r0)), c=c,
+                          r=significant(float(r))) for _, c0, r0, c, r in train.uncoaxial()]
+        method = [numbered([*train.implied, *unsized, *self.found.steps,
                             *say_balance(self.train, self.found.speeds, self.output)])]
         if self.found.xy:
             method += [Paragraph(phrase("md.other_form")), Bullets(self.found.xy)]
