@@ -2,8 +2,8 @@
 shaft's extremes, each number beside an independent reference.
 
 A diagram given as T(θ) is drawn at equal steps and read for its areas
-(:mod:`~tarsim.constructions.forces.flywheel`); the reference integrates T(θ) by adaptive
-quadrature and finds the intercepts by Brent's method
+(:mod:`~tarsim.constructions.forces.flywheel`); the reference integrates T(θ) by composite
+Gauss–Legendre quadrature and finds the intercepts by the Illinois method
 (:func:`~tarsim.constructions.reference.flywheel.integrated`). The drawing's straight lines
 between steps cost ΔE some h²·|T′|max/6 (the trapezoid rule's error between two intercepts,
 T′ its slope there), and that, doubled, is the tolerance; a table's points are steps, so its
@@ -34,8 +34,9 @@ from .flywheel_file import FlywheelExercise
 __all__ = ["FlywheelSolution", "solve_flywheel"]
 
 ROUNDING = 1e-10
-"""A table's reading against the quadrature's, relative to max|T|·cycle: QUADPACK's relative
-1e-13 on each of some hundred pieces, and a few thousand roundings summed."""
+"""A table's reading against the quadrature's, relative to max|T|·cycle: each of some hundred
+Gauss–Legendre panels exact to rounding on a straight piece, and a few thousand roundings
+summed."""
 
 
 def _check(value: float, reference: float, tolerance: float, method: str,
