@@ -424,3 +424,46 @@ def test_meshes_whose_own_modules_put_the_planet_at_two_radii_are_refused():
                                          r"on one axis: meshing with gear 2 puts it 60 mm from "
                                          r"the main axis, with gear 5 61\.5 mm$"):
         parse_train(COMPOUND.format(m2="module = 2", m4="module = 3", n5=21), "c.toml")
+
+
+def test_a_speed_ratio_and_a_least_count_give_the_second_pair():
+    """The bundled example: (80/20)(N5/N4) = 12, the pinion at the least 18, the wheel
+    3·18 = 54; the output 1440/12 = 120 rpm."""
+    s = solve_train(load("ratio-least-teeth"))
+    q = s.quantities
+    assert (q["teeth4"].exact, q["teeth5"].exact, q["omega5"].exact) == (18, 54, 120)
+    assert s.passed and "N4 = 18" in s.steps()
+    # 12.5 = 4·N5/N4 asks N5/N4 = 25/8: no whole wheel from 18 to 23, so 24 and 75
+    text = open(load("ratio-least-teeth").train.source).read().replace("value = 12",
+                                                                        "value = 12.5")
+    q = solve_train(parse_train(text, "r.toml")).quantities
+    assert (q["teeth4"].exact, q["teeth5"].exact) == (24, 75)
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.integers(12, 60), st.integers(12, 60), st.integers(12, 60), st.integers(1, 6))
+def test_a_speed_ratio_gives_the_one_count_left_out(n2, n3, n4, k):
+    """|ω2/ω5| = (N3/N2)(N5/N4), N5 = k·N4 left out: N5 = ratio·N2·N4/N3."""
+    n5 = k * n4
+    ratio = F(n3 * n5, n2 * n4)
+    text = open(load("ratio-least-teeth").train.source).read().replace(
+        "teeth = 20\n", f"teeth = {n2}\n").replace("teeth = 80\n", f"teeth = {n3}\n").replace(
+        'name = "pinion"', f'teeth = {n4}\nname = "pinion"').replace(
+        "value = 12", f"value = {float(ratio)!r}" if ratio.denominator in (1, 2, 4, 5, 8, 10)
+        else "value = 12")
+    if f"value = {float(ratio)!r}" not in text:
+        return                              # a ratio a decimal cannot write exactly
+    q = solve_train(parse_train(text, "r.toml")).quantities
+    assert q["teeth5"].exact == n5 == q["teeth5"].reference
+
+
+@pytest.mark.parametrize("edit, words", [
+    (("value = 12", "value = 4.0001"), "no whole counts of 18 teeth or more"),
+    (("least_teeth = 18\n", ""), "give the others, or least_teeth for a pair"),
+    (('of = "omega2/omega5"', 'of = "omega2/omega9"'), "name the ratio of two members"),
+])
+def test_a_ratio_that_cannot_give_the_teeth_is_refused(edit, words):
+    text = open(load("ratio-least-teeth").train.source).read().replace(*edit)
+    with pytest.raises(InputError) as e:
+        parse_train(text, "r.toml")
+    assert words in str(e.value) and "\n" not in str(e.value)

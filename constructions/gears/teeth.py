@@ -7,7 +7,9 @@ A gear may come with no teeth. Its count then follows, exactly, from
   radius, so its meshes with the gears on the main axis stand equally far from it,
   m(N_c + N_p)/2 externally and m(N_c − N_p)/2 inside a ring: the notes' N1 = N2 + 2·N4,
   a reverted train's N2 + N3 = N4 + N5. In an ordinary reverted train the file says which
-  two gears share an axis (``coaxial = [2, 5]``), and the same holds of its two pairs.
+  two gears share an axis (``coaxial = [2, 5]``), and the same holds of its two pairs;
+- an ordinary train's speed ratio, with a least tooth count for a pair both unknown
+  (:func:`teeth_from_ratio`).
 
 Each count found is a step, and must come out whole and positive.
 """
@@ -19,9 +21,10 @@ from fractions import Fraction
 
 from ..errors import InputError
 from ..narration import Phrase, phrase
+from .tabular import carry, fraction_text
 from .train import GearTrain, Mesh
 
-__all__ = ["imply_teeth", "teeth_from_diameter", "unknown_teeth"]
+__all__ = ["imply_teeth", "teeth_from_diameter", "teeth_from_ratio", "unknown_teeth"]
 
 
 def teeth_from_diameter(diameter: Fraction, module: Fraction) -> Fraction:
@@ -153,3 +156,71 @@ def _said(train: GearTrain, mesh: Mesh, far: int, sized: bool, unknown: int | No
     text = {n: f"N{n}" if n == unknown else str(train.gear(n).teeth) for n in (far, near)}
     scale = f"{train._length(_module(train, mesh))}·" if sized else ""
     return f"{scale}({text[far]} {sign} {text[near]})/2"
+
+
+def teeth_from_ratio(train: GearTrain, of: tuple[int, int], value: Fraction,
+                     least: int | None) -> tuple[GearTrain, tuple[Phrase, ...]]:
+    """The teeth an ordinary train's speed ratio |ω_x/ω_y| = ``value`` leaves to find: one
+    unknown gear, whose count enters the ratio as N or 1/N (an idler's cancels); or two, the
+    smaller taking the ``least`` count (one more at a time until the other comes out whole).
+
+    Raises
+    ------
+    InputError
+        If the ratio cannot fix them (a planetary train, an idler, more unknowns than it
+        gives, or a count that is not whole).
+    """
+    unknown = unknown_teeth(train)
+    if not unknown:
+        return train, ()
+    if train.planetary:
+        raise InputError("a speed ratio gives teeth in an ordinary train only: give the "
+                         "planetary train's teeth", file=train.source or None)
+    if len(unknown) == 1:
+        g = unknown[0]
+        n, said = _one_from_ratio(train, of, value, g)
+        return _with(train, g, n), (said,)
+    if len(unknown) != 2 or least is None:
+        raise InputError(f"gears {', '.join(map(str, unknown))} have no teeth and the speed "
+                         "ratio fixes one count: give the others, or least_teeth for a pair",
+                         file=train.source or None)
+    for small, big in (unknown, unknown[::-1]):
+        for n in range(least, least + 1000):
+            try:
+                m, said = _one_from_ratio(_with(train, small, n), of, value, big)
+            except InputError:
+                continue
+            if m >= n:
+                return _with(_with(train, small, n), big, m), (
+                    phrase("gears.teeth_least", g=small, least=least, teeth=n), said)
+            break
+    raise InputError(f"no whole counts of {least} teeth or more for gears {unknown[0]} and "
+                     f"{unknown[1]} give the speed ratio {float(value):g}",
+                     file=train.source or None)
+
+
+def _with(train: GearTrain, number: int, teeth: int) -> GearTrain:
+    return replace(train, gears=tuple(replace(g, teeth=teeth) if g.number == number else g
+                                      for g in train.gears))
+
+
+def _one_from_ratio(train: GearTrain, of: tuple[int, int], value: Fraction, g: int
+                    ) -> tuple[int, Phrase]:
+    """Gear ``g``'s count from |ω_x/ω_y| = ``value``: the ratio is c·N^k, k = ±1."""
+    def ratio(n: int) -> Fraction:
+        turns = carry(_with(train, g, n), {of[1]: Fraction(1)})
+        return abs(turns[of[0]])
+
+    c, twice = ratio(1), ratio(2)
+    if c == twice:
+        raise InputError(f"gear {g} is an idler of the ratio ω{of[0]}/ω{of[1]}: it cancels, "
+                         "so the ratio does not fix its teeth; give them",
+                         file=train.source or None)
+    n = value / c if twice > c else c / value
+    if n.denominator != 1 or not 1 <= n <= 100_000:
+        raise InputError(f"the speed ratio ω{of[0]}/ω{of[1]} = {float(value):g} gives gear {g} "
+                         f"{float(n):g} teeth, not a whole number: check the ratio and the "
+                         "teeth", file=train.source or None)
+    expr = f"{fraction_text(c)}·N{g}" if twice > c else f"{fraction_text(c)}/N{g}"
+    return int(n), phrase("gears.teeth_ratio", x=of[0], y=of[1], value=fraction_text(value),
+                          g=g, expr=expr, teeth=int(n))

@@ -102,6 +102,10 @@ class GearTrain:
     coaxial condition), before the speeds."""
     implied_teeth: tuple[int, ...] = ()
     """The gears whose teeth those steps found."""
+    coaxial: tuple[int, int] | None = None
+    """An ordinary reverted train's two gears on one axis, where the file names them."""
+    ratio_given: tuple[int, int, Fraction] | None = None
+    """A speed ratio |ω_x/ω_y| the file gives to find teeth by, as (x, y, value)."""
     efficiency: Fraction = Fraction(1)
     """The share of the input's power the output takes (1: no losses)."""
     second: tuple[int, Fraction] | None = None

@@ -37,6 +37,11 @@ PHRASES: dict[str, str] = {
                        "and gear {c} {r} modules from it: with no sizes given, the book's "
                        "gears differ in module there (or are corrected), and the speeds follow "
                        "from the teeth alone.",
+    "gears.teeth_ratio": "The speed ratio the book gives, |ω{x}/ω{y}| = {value}, is {expr} "
+                         "through the meshes: N{g} = {teeth}.",
+    "gears.teeth_least": "Gear {g}, the smaller of the pair, takes the least count, {least} "
+                         "teeth, or the fewest above it that make the other whole: N{g} = "
+                         "{teeth}.",
     "gears.mesh_carries": "{driven} meshes {kind}ly with {driver}, so it turns {way}, "
                           "N{a}/N{b} = {na}/{nb} as fast: {turns} → {result}.",
     "gears.shaft_carries": "{member} is on one shaft with {other}: it turns alike, {turns}.",

@@ -92,6 +92,10 @@ def coaxial_teeth(train: GearTrain, number: int) -> Fraction:
     from dataclasses import replace
 
     def related(mesh, other) -> bool:
+        if not train.planetary and (train.coaxial is None or not (
+                set(train.coaxial) & {mesh.a, mesh.b} and set(train.coaxial) & {other.a,
+                                                                                 other.b})):
+            return False            # an ordinary train's pairs, only across its named axis
         return any(train.body(x) == train.body(y) and (
             train.carried(x) if train.planetary else x != y)
             for x in (mesh.a, mesh.b) for y in (other.a, other.b))

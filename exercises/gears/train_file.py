@@ -15,7 +15,8 @@ from typing import Any, ClassVar
 from tarsim.constructions.asks import symbol
 from tarsim.constructions.errors import InputError
 from tarsim.constructions.gears.involute import Involute, check_mesh
-from tarsim.constructions.gears.teeth import imply_teeth, teeth_from_diameter, unknown_teeth
+from tarsim.constructions.gears.teeth import (imply_teeth, teeth_from_diameter,
+                                              teeth_from_ratio, unknown_teeth)
 from tarsim.constructions.gears.train import Gear, GearTrain, Mesh, SpeedUnits
 from tarsim.constructions.gears.twins import fold_twins
 from tarsim.constructions.narration import Phrase, phrase
@@ -27,8 +28,8 @@ from .train_inputs import _POWERS, InputTables, _shown
 
 __all__ = ["TrainExercise", "parse_train"]
 
-_TOP = ("name", "names", "source", "description", "fixed", "efficiency", "coaxial", "units",
-        "gear", "arm", "mesh", "shaft", "input", "involute", "ask")
+_TOP = ("name", "names", "source", "description", "fixed", "efficiency", "coaxial", "ratio",
+        "units", "gear", "arm", "mesh", "shaft", "input", "involute", "ask")
 MESH_ASKS = ("contact_ratio", "path_of_contact", "arc_of_contact", "pressure_angle",
              "circular_pitch", "interference", "least_teeth")
 """What the involute mesh answers (with ``[involute]``)."""
@@ -141,13 +142,41 @@ class _Reader(InputTables):
                 isinstance(g, int) and g in [h.number for h in train.gears] for g in coaxial)):
             raise self.fail("coaxial names the two gears of an ordinary train on one axis, "
                             "coaxial = [2, 5]", key="coaxial")
-        train, steps = imply_teeth(train, tuple(coaxial) if coaxial else None)
+        train = replace(train, coaxial=tuple(coaxial) if coaxial else None)
+        train, steps = imply_teeth(train, train.coaxial)
+        if "ratio" in self.data:
+            of, value, least = self.ratio(train)
+            train, more = teeth_from_ratio(replace(train, ratio_given=(*of, value)), of,
+                                           value, least)
+            steps = (*steps, *more)
         for g in unknown_teeth(train):
             raise InputError(f"gear {g} needs its teeth: give teeth = …, or its diameter with "
                              "its module, or mesh it where the coaxial condition gives them",
                              file=self.filename)
         return replace(train, implied=(*self.sized_teeth, *steps),
                        implied_teeth=(*self.from_diameter, *implied))
+
+    def ratio(self, train: GearTrain) -> tuple[tuple[int, int], Fraction, int | None]:
+        """``[ratio]``: a speed ratio the book gives, of = "omega2/omega6", value = 12, and
+        least_teeth for a pair it leaves both unknown."""
+        t = self.data["ratio"]
+        if not isinstance(t, dict):
+            raise self.fail('must be a table: [ratio] of = "omega2/omega6", value = 12', "ratio")
+        self.known(t, ("of", "value", "least_teeth"), "ratio")
+        parts = t.get("of", "").split("/") if isinstance(t.get("of"), str) else []
+        numbers = [p.removeprefix("omega") for p in parts]
+        if len(parts) != 2 or not all(p.startswith("omega") and n.isdigit() and int(n) in
+                                      train.members for p, n in zip(parts, numbers)):
+            raise self.fail('name the ratio of two members\' speeds: of = "omega2/omega6"',
+                            "ratio", "of")
+        if "value" not in t:
+            raise self.fail("give the ratio's value = …", "ratio")
+        value = abs(self.exact(t["value"], "the ratio", "ratio", "value"))
+        if value == 0:
+            raise self.fail("a speed ratio of 0 fixes no teeth", "ratio", "value")
+        least = (self.integer(t["least_teeth"], "the least tooth count", "ratio", "least_teeth")
+                 if "least_teeth" in t else None)
+        return (int(numbers[0]), int(numbers[1])), value, least
 
     def placed(self, error: InputError) -> InputError:
         """A check of the whole train, led by the line of the first gear it names (or of

@@ -180,8 +180,16 @@ class TrainSolution(ChapterFiles):
         if gear.diameter is not None:
             ref = Fraction(round(float(gear.diameter) / float(gear.module)))
             return TrainQuantity(f"teeth{number}", found, ref, float(found), "d/m")
-        return TrainQuantity(f"teeth{number}", found, coaxial_teeth(train, number),
-                             float(found), "coaxial condition")
+        by_axis = coaxial_teeth(train, number)
+        if by_axis or train.ratio_given is None:
+            return TrainQuantity(f"teeth{number}", found, by_axis, float(found),
+                                 "coaxial condition")
+        # the ratio the file gives, by the Willis speeds of the train with these teeth
+        x, y, value = train.ratio_given
+        speeds = self.reference
+        holds = abs(speeds[x] / speeds[y]) == value
+        return TrainQuantity(f"teeth{number}", found, found if holds else Fraction(0),
+                             float(found), "speed ratio")
 
     def _torques(self, speeds: dict[int, Fraction]) -> dict[int, Fraction]:
         return balance(self.train, speeds, self.output)
