@@ -45,6 +45,11 @@ WORDS: dict[str, str] = {
         "سرعت\u200cها بر حسب {unit}، پادساعتگرد مثبت. هر یک با معادلهٔ ویلیس همهٔ "
         "درگیری\u200cها، که با هم به\u200cصورت یک دستگاه خطی حل می\u200cشوند، کنترل شده است: "
         "همان کسر به دست می\u200cآید.",
+    "No speed is given: the rows are turns, counter-clockwise positive, and their ratios the "
+    "speed ratios, each checked by the Willis equations solved as one linear system.":
+        "سرعتی داده نشده است: سطرها تعداد دورها هستند، پادساعتگرد مثبت، و نسبت آن‌ها همان "
+        "نسبت سرعت‌هاست که هر یک با معادله‌های ویلیس، حل‌شده به‌صورت یک دستگاه خطی، کنترل "
+        "شده است.",
     # the velocity (Kutzbach) diagram
     "{name}: velocity (Kutzbach) diagram": "{name}: نمودار سرعت (کوتزباخ)",
     "{member} fixed; velocities across the radial line, ccw to the right":

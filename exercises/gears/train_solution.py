@@ -397,7 +397,10 @@ class TrainSolution(ChapterFiles):
         unit = self.train.units.speed
         notes = [words("Speeds in {unit}, counter-clockwise positive. Each is checked by the "
                        "Willis equation of every mesh, solved as one linear system: the same "
-                       "fraction.", unit=unit_words(unit))]
+                       "fraction.", unit=unit_words(unit)) if self.train.speed_given else
+                 words("No speed is given: the rows are turns, counter-clockwise positive, and "
+                       "their ratios the speed ratios, each checked by the Willis equations "
+                       "solved as one linear system.")]
         ruled = (2, 3) if self.found.table else ()
         if self.train.implied_teeth:          # the teeth's row above the rest, ruled off
             ruled = (1, *(r + 1 for r in ruled))
