@@ -312,17 +312,17 @@ class Mechanism:
 def slider_crank(m: Mechanism) -> tuple[str, str, str, int] | None:
     """The parts of a slider-crank: the crank's pivot, the crank pin, the piston pin, and the
     index of the piston's frame guide among the slides; None if the input crank drives no
-    two-point rod to a block on a frame guide. Klein's construction and the slider-crank's
-    transmission angle are drawn on them."""
+    rod (which may carry other points) to a block on a frame guide. Klein's construction
+    and the slider-crank's transmission angle are drawn on them."""
     d = m.drive.link
     crank = m.link(d)
     for i, s in enumerate(m.slides):
         if s.guide_link != 1 or s.type.key != "block":
             continue
         for k in m.links:
-            if k.number in (1, d, s.link) or s.point not in k.names or len(k.names) != 2:
+            if k.number in (1, d, s.link) or s.point not in k.names:
                 continue
-            pin = next(n for n in k.names if n != s.point)
-            if pin in crank.names and pin != crank.names[0]:
-                return crank.names[0], pin, s.point, i
+            pins = [n for n in k.names if n != s.point and n in crank.names[1:]]
+            if pins:
+                return crank.names[0], pins[0], s.point, i
     return None

@@ -29,7 +29,7 @@ from .model import Mechanism
 from .linkages.overall import GRASHOF_WHY_NOT, answer_grashof, answer_mobility, grashof_askable
 from .linkages.equivalent import answer_equivalent, equivalent_askable
 from .forces.answers import FORCES_WHY_NOT, answer as from_force_polygons, forces_askable
-from .linkages.klein import answer_klein
+from .linkages.klein import answer_klein, klein_fits
 from .linkages.positions import answer_position
 from .linkages.readings import LEAST_WHY_NOT, MU_WHY_NOT, answer_reading, mu_askable
 from .linkages.sliding import answer_sliding, sliding_askable
@@ -74,8 +74,9 @@ METHODS: tuple[Method, ...] = (
     _velocity("radius-rotation", partial(by_centres, method="radius-rotation")),
     _velocity("parallel-line", partial(by_centres, method="parallel-line")),
     _velocity("components", by_components),
-    Method("klein", {A.Velocity: expected.velocity, A.Acceleration: expected.acceleration},
-           answer_klein, stage=2, chosen_by=("klein",)),
+    Method("klein", {A.Velocity: expected.velocity, A.Acceleration: expected.acceleration,
+                     A.AngularVelocity: expected.omega, A.AngularAcceleration: expected.alpha},
+           answer_klein, stage=2, chosen_by=("klein",), when=klein_fits),
     Method("velocity polygon", {A.AngularVelocity: expected.omega, A.Velocity: expected.velocity,
                                 A.Relative: expected.relative},
            from_velocity_polygon, stage=3, chosen_by=("polygon",), when=_velocity_polygon),

@@ -203,6 +203,7 @@ def test_check_time_ratio_point_branch():
 
 
 QUICK_RETURNS = ("crank-pin-speed", "crank-shaper", "four-bar", "grashof-crank-rocker",
+                 "hinkle-four-bar", "hinkle-slider-crank",           # rods carrying a point
                  "inverted-slider-crank", "klein-slider-crank", "offset-slider-crank",
                  "piston-driven-slider-crank", "slotted-lever-p37", "velocity-homework-292")
 """The bundled mechanisms with two limit positions: their cranks turn fully and drive an

@@ -13,18 +13,25 @@ With O the crank's pivot, C the crank pin and P the piston pin:
   a_P = ω²·NO, pointing from N toward O.
 
 Both take the crank at constant speed (α = 0), as the construction does.
+
+The rod's own diagram gives the rest. CM is the rod's velocity image (V_PC = ω·CM), so a
+point D of the rod's line, CD = t·CP, has its image d on CM with Cd = t·CM, and V_D =
+ω·Od; ω of the rod is ω·CM/CP. CN is its acceleration image, so d′ on CN with Cd′ =
+t·CN gives a_D = ω²·d′O; α of the rod is ω²·QN/CP, QN being the tangential part.
 """
 
 from __future__ import annotations
+
+import math
 
 from .. import asks as A
 from ..checks import Answer, FigureSpec, vector_value
 from ..errors import InputError
 from ..model import Mechanism, slider_crank
-from ..narration import phrase
+from ..narration import Number, phrase
 from ..record import Kind, Role
 
-__all__ = ["answer_klein", "klein_parts", "KLEIN_FIGURE"]
+__all__ = ["answer_klein", "klein_parts", "klein_fits", "KLEIN_FIGURE"]
 
 KLEIN_FIGURE = FigureSpec("klein", "Klein's construction", "Klein's construction")
 """The mechanism with the velocity triangle OCM and the acceleration diagram OCQN on it."""
@@ -47,15 +54,57 @@ def klein_parts(m: Mechanism) -> tuple[str, str, str, int]:
     return parts
 
 
+def rod_of(m: Mechanism, c: str, p: str) -> int:
+    """The number of the rod: the link that carries both the crank pin and the piston pin."""
+    return next(k.number for k in m.links if c in k.names and p in k.names)
+
+
+def klein_fits(work, ask) -> bool:
+    """Whether Klein's construction answers ``ask`` where the exercise chose it: a point's
+    motion always (a point it cannot reach is refused with the reason), the rod's ω and α,
+    no other link's."""
+    if "klein" not in work.chosen:
+        return False
+    if isinstance(ask, (A.Velocity, A.Acceleration)):
+        return True
+    parts = slider_crank(work.mechanism)
+    return parts is not None and ask.link == rod_of(work.mechanism, parts[1], parts[2])
+
+
+def _along_rod(m: Mechanism, c: str, p: str, point: str) -> float:
+    """CD / CP for a point D of the rod's line (signed: negative beyond C).
+
+    Raises
+    ------
+    InputError
+        If the point is not a point of the rod, or lies off the rod's line.
+    """
+    rod = m.link(rod_of(m, c, p))
+    if point not in rod.names:
+        raise InputError(f"Klein's construction finds the motion of the piston {p} and of the "
+                         f"points of the rod ({', '.join(rod.names)}), not {point}'s; ask it "
+                         "by the polygons")
+    xy = dict(rod.points)
+    (cx, cy), (px, py), (dx, dy) = xy[c], xy[p], xy[point]
+    ux, uy = px - cx, py - cy
+    length2 = ux * ux + uy * uy
+    # off the line by more than the rounding of the link's own coordinates
+    if abs((dx - cx) * uy - (dy - cy) * ux) > 1e-12 * length2:
+        raise InputError(f"Klein's construction finds points on the rod's line {c}{p}; "
+                         f"{point} lies off it: ask it by the polygons")
+    return ((dx - cx) * ux + (dy - cy) * uy) / length2
+
+
 def answer_klein(work, ask) -> Answer:
-    """The piston's velocity (V_P) or acceleration (A_P) by Klein's construction."""
+    """The velocity (V_P) or acceleration (A_P) of the piston or of a point of the rod's
+    line, or the rod's ω or α, by Klein's construction."""
     m, asm = work.mechanism, work.assembly
     o, c, p, i = klein_parts(m)
-    if ask.point != p:
-        raise InputError(f"Klein's construction finds the piston's motion, {p}'s, not "
-                         f"{ask.point}'s; ask V_{p} or A_{p}")
+    point = getattr(ask, "point", p)
+    t = 1.0 if point == p else _along_rod(m, c, p, point)
     d = m.drive
-    if isinstance(ask, A.Acceleration) and d.alpha != 0.0:
+    second = isinstance(ask, (A.Acceleration, A.AngularAcceleration))
+    if second and d.alpha != 0.0:
         raise InputError("Klein's construction takes the crank at constant speed; this one "
                          f"has α{d.link} = {d.alpha:g} rad/s²: use the acceleration polygon")
     stroke = asm.guides[i]
@@ -63,8 +112,12 @@ def answer_klein(work, ask) -> Answer:
     if off > 1e-9 * asm.size:
         raise InputError(f"Klein's construction is drawn on an in-line slider-crank; this "
                          f"stroke passes {m.units.length_text(off)} from {o}: use the polygons")
-    ref = _draw(asm, o, c, p, stroke, acceleration=isinstance(ask, A.Acceleration))
+    ref = _draw(asm, o, c, p, stroke, acceleration=second)
     w = d.omega
+    if isinstance(ask, (A.AngularVelocity, A.AngularAcceleration)):
+        return _rod_rate(asm, ask, w, o, c, p)
+    if point != p:
+        return _rod_point(asm, ask, w, (o, c, p), point, t, ref)
     (ox, oy) = asm.xy(o)
     (x, y) = asm.output(ref).xy
     if isinstance(ask, A.Velocity):
@@ -76,6 +129,53 @@ def answer_klein(work, ask) -> Answer:
     cond = min(asm[r].conditioning for r in (ref, asm.points[c], asm.points[p]))
     refs = ("kl:OCM", ref) if isinstance(ask, A.Velocity) else ("kl:OCM", "kl:Q", "kl:NO")
     return Answer(ask, value, cond, method, refs=refs, figures=(KLEIN_FIGURE,))
+
+
+def _rod_rate(asm, ask, w: float, o: str, c: str, p: str) -> Answer:
+    """The rod's ω (ω·CM/CP, signed along CP) or α (ω²·QN/CP, signed across it), read off
+    its own diagram."""
+    (cx, cy), (px, py) = asm.xy(c), asm.xy(p)
+    ux, uy = px - cx, py - cy
+    length2 = ux * ux + uy * uy
+    if isinstance(ask, A.AngularVelocity):
+        mx, my = asm.output("kl:M").xy
+        value = w * ((mx - cx) * ux + (my - cy) * uy) / length2
+        refs, method = ("kl:OCM", "kl:M"), "Klein's construction (ω = ω₂·CM/CP)"
+    else:
+        (qx, qy), (nx, ny) = asm.output("kl:Q").xy, asm.output("kl:N").xy
+        value = w * w * ((qx - nx) * -uy + (qy - ny) * ux) / length2
+        refs, method = ("kl:Q", "kl:N", "kl:NO"), "Klein's construction (α = ω₂²·QN/CP)"
+    cond = min(asm[r].conditioning for r in (*refs, asm.points[c], asm.points[p]))
+    return Answer(ask, {"value": value + 0.0}, cond, method, refs=refs,
+                  figures=(KLEIN_FIGURE,))
+
+
+def _rod_point(asm, ask, w: float, parts: tuple[str, str, str], point: str, t: float,
+               image: str) -> Answer:
+    """A point D of the rod's line, CD = t·CP: its image on CM (velocity) or CN
+    (acceleration) at the same fraction t, laid off from C with the dividers."""
+    o, c, p = parts
+    velocity = isinstance(ask, A.Velocity)
+    x = point.lower() + ("" if velocity else "′")
+    ref = f"kl:{x}"
+    if ref not in asm:
+        end = asm.output(image).xy
+        span = math.dist(asm.xy(c), end)
+        asm.draw(ref, "lay_off", asm.points[c], image, label=x, length=t * span,
+                 phrase=phrase("klein.point_v" if velocity else "klein.point_a", c=c,
+                               point=point, x=x, o=o, p=p, ratio=Number(t, ".6g")))
+        ends = (asm.points[o], ref) if velocity else (ref, asm.points[o])   # Od; d′O
+        asm.draw(f"{ref}:O", "join", *ends, kind=Kind.LINE, role=Role.RESULT)
+    (ox, oy), (x_, y_) = asm.xy(o), asm.output(ref).xy
+    if velocity:
+        value = vector_value(-w * (y_ - oy), w * (x_ - ox))          # ω k × Od
+        method = "Klein's construction (V = ω·Od, d on CM)"
+    else:
+        value = vector_value(-w * w * (x_ - ox), -w * w * (y_ - oy))  # ω² d′O
+        method = "Klein's construction (a = ω²·d′O, d′ on CN)"
+    cond = min(asm[r].conditioning for r in (ref, image, asm.points[c]))
+    return Answer(ask, value, cond, method, refs=("kl:OCM", ref, f"{ref}:O"),
+                  figures=(KLEIN_FIGURE,))
 
 
 def _draw(asm, o: str, c: str, p: str, stroke: str, *, acceleration: bool) -> str:

@@ -121,8 +121,8 @@ class _Dyad:
         self.r = crank.span(self.o2, self.a)
         lever = [s for s in mech.slides if s.point == self.a and s.guide_link != 1
                  and not s.type.contact and _pivot(mech, s.guide_link)]
-        rods = [k for k in mech.links_at(self.a)
-                if k not in (1, d) and len(mech.link(k).names) == 2]
+        rods = [(k, b) for k in mech.links_at(self.a) if k not in (1, d)
+                for b in mech.link(k).names if b != self.a]        # a rod may carry more
         if lever:
             self.kind, self.out = "slotted lever", lever[0].guide_link
             self.o4 = _pivot(mech, self.out)
@@ -141,8 +141,7 @@ class _Dyad:
                     f"lever turns a full revolution with it (a Whitworth quick return): it has no "
                     "limit positions of its own, and those of the links it drives are not drawn")
             return
-        for k in rods:
-            b = next(n for n in mech.link(k).names if n != self.a)
+        for k, b in rods:
             self.rod, self.b, self.rod_length = k, b, mech.link(k).span(self.a, b)
             guide = [i for i, s in enumerate(mech.slides) if s.point == b and s.guide_link == 1
                      and s.type.key == "block"]

@@ -113,6 +113,11 @@ PHRASES: dict[str, str] = {
     "klein.kl": "The two circles meet at K and L.",
     "klein.join_kl": "Join K and L.",
     "klein.q": "KL cuts {c}{p} at Q.",
+    "klein.point_v": "Lay off {c}{x} = {ratio} × {c}M along {c}M, as {c}{point} = {ratio} × "
+                     "{c}{p} on the rod: {o}{x} is V_{point} turned through 90°, V_{point} = "
+                     "ω·{o}{x}.",
+    "klein.point_a": "Lay off {c}{x} = {ratio} × {c}N along {c}N, as {c}{point} = {ratio} × "
+                     "{c}{p} on the rod: a_{point} = ω²·{x}{o}, from {x} toward {o}.",
     "klein.acceleration": "It cuts the line of stroke at N: {o}{c}QN is the acceleration "
                           "polygon turned through 180°, so a_{p} = ω²·N{o}, from N toward {o} "
                           "(a_{c} = ω²·{o}{c}, aⁿ_{p}{c} = ω²·{c}Q, aᵗ_{p}{c} = ω²·QN).",

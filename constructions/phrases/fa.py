@@ -122,6 +122,10 @@ WORDS: dict[str, str] = {
     "equivalent linkage": "مکانیزم معادل",
     "Klein's construction (V = ω·OM)": "ترسیم کلاین (V = ω·OM)",
     "Klein's construction (a = ω²·NO)": "ترسیم کلاین (a = ω²·NO)",
+    "Klein's construction (V = ω·Od, d on CM)": "ترسیم کلاین (V = ω·Od، d روی CM)",
+    "Klein's construction (a = ω²·d′O, d′ on CN)": "ترسیم کلاین (a = ω²·d′O، d′ روی CN)",
+    "Klein's construction (ω = ω₂·CM/CP)": "ترسیم کلاین (ω = ω₂·CM/CP)",
+    "Klein's construction (α = ω₂²·QN/CP)": "ترسیم کلاین (α = ω₂²·QN/CP)",
     "circle diagram": "دایرهٔ کمکی",
     # the mechanism as a whole (exercises/linkages/solution_files.py: overall_text)
     "crank-rocker": "لنگ - آونگ", "double-crank": "لنگ - لنگ", "double-rocker": "آونگ - آونگ",

@@ -37,6 +37,7 @@ from pathlib import Path
 from tarsim.constructions import asks as A
 from tarsim.constructions import registry
 from tarsim.constructions.errors import InputError
+from tarsim.constructions.linkages.klein import klein_parts
 from tarsim.constructions.loads import Loads
 from tarsim.constructions.model import Drive, Mechanism
 from tarsim.constructions.units import LENGTH_UNITS
@@ -280,6 +281,11 @@ def _read_ask(ask, mech: Mechanism, where: SourceMap, filename: str, exercise_id
             close = _closest(m, registry.CHOSEN)
             hint = f"did you mean '{close}'?" if close else f"use {', '.join(registry.CHOSEN)}"
             raise fail(f"unknown velocity method '{m}'; {hint}", "methods")
+    if "klein" in methods:
+        try:
+            klein_parts(mech)
+        except InputError as e:
+            raise fail(e.message, "methods") from None
     positions = _read_positions(ask.get("at"), mech, fail)
     scales = _read_scales(ask.get("scale", []), mech, fail)
     if "space" in scales:
