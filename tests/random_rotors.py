@@ -35,9 +35,11 @@ from random_mechanisms import Lit, Outcome, run_case as _run_case   # noqa: E402
 
 __all__ = ["FAMILIES", "generate", "oracle", "places", "run_case"]
 
-FAMILIES = ("static-rotor", "two-plane-rotor", "single-cylinder", "inline-engine")
-"""A rotor balanced in one plane or in two; an engine of one cylinder, or of several in line
-with the cranks of a firing order."""
+FAMILIES = ("static-rotor", "two-plane-rotor", "open-rotor", "single-cylinder",
+            "inline-engine")
+"""A rotor balanced in one plane or in two, or by its own masses, some of their data
+unknown; an engine of one cylinder, or of several in line with the cranks of a firing
+order."""
 
 MALFORMED = 0.08
 """The share of cases broken on purpose after they are made."""
@@ -193,6 +195,52 @@ def _cancel(masses: list[dict], r: random.Random) -> None:
         m.update(mass=abs(v) / m["radius"], angle=math.degrees(cmath.phase(v)))
 
 
+def open_rotor(r: random.Random) -> dict[str, Any]:
+    """A rotor balanced already (its last two masses cancel the rest), with four of its
+    data (two in one plane) marked "?": in the textbooks' patterns (two masses' mass and
+    angle; a mass's mass, angle and plane with another's plane; a mass and three angles),
+    or any four."""
+    while True:
+        spec = rotor(r, 2)
+        masses = spec["mass"]
+        if len(masses) >= 3 and len({m.get("plane", 0.0) for m in masses}) == len(masses):
+            break
+    static = r.random() < 0.2
+    if static:                          # one plane: the force polygon alone
+        for m in masses:
+            m.pop("plane", None)
+    _cancel(masses, r) if not static else _cancel_force(masses)
+    spec.pop("balance")
+    spec["name"] = "random rotor (open)"
+    i, j = r.sample(range(len(masses)), 2)
+    others = [k for k in range(len(masses)) if k != i]
+    pattern = r.choice(["two-masses", "planes", "angles", "any"])
+    if static:
+        hide = r.choice([[(i, "mass"), (i, "angle")], [(i, "mass"), (j, "angle")],
+                         [(i, "angle"), (j, "angle")], [(i, "radius"), (j, "mass")]])
+    elif pattern == "two-masses":
+        hide = [(i, "mass"), (i, "angle"), (j, "mass"), (j, "angle")]
+    elif pattern == "planes":
+        hide = [(i, "mass"), (i, "angle"), (i, "plane"), (j, "plane")]
+    elif pattern == "angles":
+        hide = [(i, "mass"), (i, "angle")] + [(k, "angle") for k in
+                                             r.sample(others, min(2, len(others)))]
+    else:
+        keys = [(k, key) for k in range(len(masses)) for key in ("mass", "angle", "plane")]
+        hide = r.sample(keys, 4)
+    for k, key in hide:
+        masses[k][key] = "?"
+    return spec
+
+
+def _cancel_force(masses: list[dict]) -> None:
+    """Make the last mass cancel the others' force (one plane)."""
+    f = sum(m["mass"] * m["radius"] * cmath.exp(1j * _rad(m["angle"])) for m in masses[:-1])
+    if abs(f) > 0:
+        masses[-1].update(mass=abs(f) / masses[-1]["radius"],
+                          angle=math.degrees(cmath.phase(-f)))
+
+
 # ----- engines -------------------------------------------------------------------------------
 def engine(r: random.Random, cylinders: int) -> dict[str, Any]:
     """An engine: one cylinder, partly balanced, its forces asked at a crank angle; or
@@ -268,7 +316,7 @@ def _malform(r: random.Random, spec: dict[str, Any]) -> str:
     elif how == "both":
         spec["engine" if top == "rotor" else "rotor"] = {"speed": 100}
     elif how == "three-planes" and "rotor" in spec:
-        spec["balance"] = spec["balance"] + [{"name": "C", "plane": 7, "radius": 1}] * 2
+        spec["balance"] = spec.get("balance", []) + [{"name": "C", "plane": 7, "radius": 1}] * 2
     elif how == "no-balance":
         spec.pop("balance", None)
     elif how == "no-mass":
@@ -299,6 +347,8 @@ def generate(rng: random.Random, family: str | None = None) -> tuple[str, str]:
         spec = rotor(rng, 1)
     elif family == "two-plane-rotor":
         spec = rotor(rng, 2)
+    elif family == "open-rotor":
+        spec = open_rotor(rng)
     elif family == "single-cylinder":
         spec = engine(rng, 1)
     else:
@@ -331,6 +381,8 @@ def oracle(solution, text: str) -> list[str]:
     data, metre, rate = _read(text)
     doc = solution.results["quantities"]
     lines = solution.lines()
+    if "rotor" in data and any(v == "?" for m in data["mass"] for v in m.values()):
+        return _open_wrongs(data, metre, doc)
     if "rotor" in data:
         return _rotor_wrongs(data, metre, doc, lines)
     return _engine_wrongs(data, metre, rate, doc, lines)
@@ -383,6 +435,38 @@ def _rotor_wrongs(data, metre: float, doc: dict, lines: list[str]) -> list[str]:
         wrong.append(f"the balanced rotor keeps a force of {abs(left_f):.3g} kg·m")
     if lever and abs(left_c) > AGREE * c_scale:
         wrong.append(f"the balanced rotor keeps a couple of {abs(left_c):.3g} kg·m²")
+    return wrong
+
+
+def _open_wrongs(data, metre: float, doc: dict) -> list[str]:
+    """The masses with results.json's unknowns filled in must leave no force and, with
+    their planes apart, no couple: Σ m r e^{iθ} and Σ m r l e^{iθ} summed here."""
+    static = not any("plane" in m for m in data["mass"])
+    force = couple = 0j
+    f_scale = c_scale = 0.0
+    for i, m in enumerate(data["mass"]):
+        name = str(m.get("name", i + 1))
+        got = {}
+        for key in ("mass", "radius", "angle", "plane"):
+            v = m.get(key, 0.0)
+            if v == "?":
+                q = doc.get(f"{key}_{name}")
+                if q is None:
+                    return [f"results.json has no {key}_{name}"]
+                v = q["value"]
+            elif key in ("radius", "plane"):
+                v *= metre
+            got[key] = v
+        u = got["mass"] * got["radius"] * cmath.exp(1j * _rad(got["angle"]))
+        force += u
+        couple += u * got["plane"]
+        f_scale += abs(u)
+        c_scale += abs(u) * abs(got["plane"])
+    wrong = []
+    if abs(force) > AGREE * f_scale:
+        wrong.append(f"the rotor keeps a force of {abs(force):.3g} kg·m")
+    if not static and abs(couple) > AGREE * (c_scale or 1.0):
+        wrong.append(f"the rotor keeps a couple of {abs(couple):.3g} kg·m²")
     return wrong
 
 

@@ -12,6 +12,7 @@ Tolerances: sums of a few products of order 1 kg·m, 1e-12 relative.
 
 from __future__ import annotations
 
+import cmath
 import json
 import math
 from pathlib import Path
@@ -279,3 +280,122 @@ def test_revolving_masses_in_line_are_refused():
     text = Path(bundled("balancing")["inline-four"]).read_text(encoding="utf-8")
     with pytest.raises(InputError, match=r"e.toml:\d+: revolving is a single cylinder's"):
         parse_balance(text.replace("rod = 200\n", "rod = 200\nrevolving = 2\n", 1), "e.toml")
+
+
+# ----- unknowns read off the polygons ------------------------------------------------------------
+def test_unknown_planes():
+    """B, C, D: 5 kg·m at 0°, 4 at 90°, 6.3 at 195°; C 250 mm from B. By hand: A's m·r is
+    −(5 + 4i + 6.3e^{i195°}) = 1.08527 − 2.36944i (2.60613 kg·m, 294.61°), so 34.7484 kg at
+    75 mm; couples about B, a·(A's m·r) + b·(D's) = −0.25·4i, solved by Cramer's rule for
+    the planes a, b. 1e-9 relative: the drawn crossing against the algebra."""
+    q = solve_balance(load("unknown-planes")).results["quantities"]
+    a = -(5 + 4j + 6.3 * complex(math.cos(math.radians(195)), math.sin(math.radians(195))))
+    d = 6.3 * complex(math.cos(math.radians(195)), math.sin(math.radians(195)))
+    target = -0.25 * 4j
+    det = a.real * d.imag - a.imag * d.real
+    la = (target.real * d.imag - target.imag * d.real) / det
+    ld = (a.real * target.imag - a.imag * target.real) / det
+    assert q["mass_A"]["value"] == pytest.approx(abs(a) / 0.075, rel=1e-9)
+    assert q["angle_A"]["value"] == pytest.approx(math.degrees(cmath.phase(a)) % 360, abs=1e-9)
+    assert q["plane_A"]["value"] == pytest.approx(la, rel=1e-9)
+    assert q["plane_D"]["value"] == pytest.approx(ld, rel=1e-9)
+    assert (la, ld) == pytest.approx((0.375904, 0.0670433), abs=5e-7)
+
+
+def test_unknown_angles():
+    """About A's plane: 0.75 (B at 0°) + 1.2e^{iθC} + 1.08e^{iθD} = 0, so by the law of
+    cosines cos θC = (1.08² − 0.75² − 1.2²)/(2·0.75·1.2) (the crossing taken puts C below
+    B's line, θC = −117.68°); then A closes the force polygon. 1e-9: the crossing of two
+    arcs against the algebra."""
+    s = solve_balance(load("unknown-angles"))
+    assert s.passed, s.failures
+    q = s.results["quantities"]
+    tc = -math.acos((1.08 ** 2 - 0.75 ** 2 - 1.2 ** 2) / (2 * 0.75 * 1.2))
+    ec = complex(math.cos(tc), math.sin(tc))
+    ed = -(0.75 + 1.2 * ec) / 1.08
+    a = -(1.25 + 1.0 * ec + 0.6 * ed)
+    assert q["angle_C"]["value"] == pytest.approx(math.degrees(tc) % 360, abs=1e-9)
+    assert q["angle_D"]["value"] == pytest.approx(math.degrees(cmath.phase(ed)) % 360,
+                                                  abs=1e-9)
+    assert q["mass_A"]["value"] == pytest.approx(abs(a) / 0.1, rel=1e-9)
+    assert q["mass_A"]["value"] == pytest.approx(7.39932, abs=5e-5)
+    assert "mirror image" in "\n".join(s.lines())
+
+
+def test_two_unknown_masses_are_the_balancing_planes_two_planes_finds():
+    """The four-mass shaft with its balancing planes written as two masses of unknown mass
+    and angle at 100 mm: the same 249.86 kg and 331.60 kg as [[balance]] gives, by the
+    reference-plane method's closed form."""
+    text = TEXT[:TEXT.index("[[balance]]")] + "".join(
+        f'[[mass]]\nname = "{n}"\nmass = "?"\nradius = 100\nangle = "?"\nplane = {z}\n\n'
+        for n, z in (("A", 0), ("B", 900)))
+    q = solve_balance(parse_balance(text, "shaft.toml")).results["quantities"]
+    from tarsim.constructions.reference.balance import two_planes
+    in_a, in_b = two_planes(load("four-mass-shaft").rotor.masses, 0.0, 0.9)
+    assert q["mass_A"]["value"] == pytest.approx(math.hypot(*in_a) / 0.1, rel=1e-12)
+    assert q["mass_B"]["value"] == pytest.approx(math.hypot(*in_b) / 0.1, rel=1e-12)
+    assert q["angle_B"]["value"] == pytest.approx(math.degrees(math.atan2(in_b[1], in_b[0]))
+                                                  % 360, abs=1e-9)
+
+
+def test_one_plane_an_unknown_angle_and_an_unknown_mass():
+    """In one plane: 3 kg·m at 0°, 4 kg·m at an unknown angle, and a mass at 90° of unknown
+    size: the line along 90° cut by the 4 kg·m arc: 4e^{iθ} = −3 − i·s, so θ in the third
+    quadrant with cos θ = −3/4 and s = √(16 − 9) = √7 kg·m (the positive mass)."""
+    ex = parse_balance('[rotor]\nspeed = 1\n[[mass]]\nmass = 3\nradius = 1\nangle = 0\n'
+                       '[[mass]]\nmass = 4\nradius = 1\nangle = "?"\n[[mass]]\nmass = "?"\n'
+                       'radius = 1\nangle = 90\n', "one.toml")
+    q = solve_balance(ex).results["quantities"]
+    assert q["mass_3"]["value"] == pytest.approx(math.sqrt(7), rel=1e-12)
+    assert q["angle_2"]["value"] == pytest.approx(360 - math.degrees(math.acos(-0.75)),
+                                                  abs=1e-9)
+
+
+OPEN = Path(bundled("balancing")["unknown-planes"]).read_text(encoding="utf-8")
+
+
+@pytest.mark.parametrize("old, new, words", [
+    ('radius = 75', 'radius = "?"', "show only as m·r: give one of them"),
+    ('name = "B"\nmass = 50', 'name = "B"\nmass = "?"',
+     "5 unknowns, but the force and couple polygons close on two each"),
+    ('angle = 195\nplane = "?"', 'angle = 195\nplane = 400', "3 unknowns"),
+    ('angle = 0\nplane = 0', 'angle = "?"\nplane = 0', "5 unknowns"),
+    ('name = "D"\nmass = 70', 'name = "D"\nmass = "?"', "5 unknowns"),
+    ('speed = 300', 'speed = 300\n[[balance]]\nradius = 1', "leave out the [[balance]]"),
+])
+def test_a_rotor_whose_unknowns_cannot_close_is_refused_in_one_line(old, new, words):
+    assert old in OPEN
+    with pytest.raises(InputError) as e:
+        parse_balance(OPEN.replace(old, new, 1), "open.toml")
+    message = str(e.value)
+    assert "\n" not in message and message.startswith("open.toml:") and words in message, \
+        message
+
+
+def test_unknowns_tangled_in_one_polygon_are_refused():
+    """A's mass and plane, and B's and C's angles: the force polygon has three unknowns,
+    and the couple polygon cannot read m·r·l for A's two at once."""
+    text = OPEN.replace('angle = "?"\nplane = "?"', 'angle = 0\nplane = "?"', 1).replace(
+        'angle = 90', 'angle = "?"', 1).replace('angle = 195\nplane = "?"',
+                                                 'angle = "?"\nplane = 500', 1)
+    with pytest.raises(InputError, match=r"open.toml:\d+: neither polygon has just two "
+                                         r"unknowns"):
+        parse_balance(text, "open.toml")
+
+
+def test_sizes_that_cannot_reach_across_are_refused():
+    """About A's plane B gives 0.75 kg·m², C and D at most 0.12 + 0.108: no triangle."""
+    text = Path(bundled("balancing")["unknown-angles"]).read_text(encoding="utf-8")
+    text = text.replace("mass = 5\n", "mass = 0.5\n").replace("mass = 4\n", "mass = 0.4\n")
+    with pytest.raises(InputError, match=r"cannot reach across it"):
+        parse_balance(text, "open.toml")
+
+
+def test_carriers_crossing_too_shallowly_are_refused():
+    """Two unknown masses at 10° and 10.0000001°: their lines cross at 1e-7°, so a
+    rounding of 1e-12 moves the crossing by some 6e-4 of the polygon: not four figures."""
+    with pytest.raises(InputError, match=r"shallow.toml:\d+: the polygons' carriers cross too "
+                                         r"shallowly"):
+        parse_balance('[rotor]\nspeed = 1\n[[mass]]\nmass = 3\nradius = 1\nangle = 0\n'
+                      '[[mass]]\nmass = "?"\nradius = 1\nangle = 10\n[[mass]]\nmass = "?"\n'
+                      'radius = 1\nangle = 190.0000001\n', "shallow.toml")

@@ -153,8 +153,10 @@ def test_bad_file_is_one_line_with_file_and_line(mech_file, tmp_path, edit, mess
                         "involute-pair, planetary-q1, planetary-q2, planetary-q3, "
                         "planetary-q4, eccentric-flat-face, offset-knife-edge, "
                         "oscillating-roller, roller-harmonic-cycloidal, four-mass-shaft, "
-                        "four-masses-one-plane, inline-four, notes-example-1, single-cylinder, "
-                        "single-cylinder-balance-mass, engine-harmonic-torque, "
+                        "four-masses-one-plane, inline-four, notes-example-1, "
+                        "single-cylinder-balance-mass, single-cylinder, unknown-angles, "
+                        "unknown-planes, "
+                        "engine-harmonic-torque, "
                         "petrol-engine-areas, single-cylinder-table\n"),
     ("missing.toml", "Error: no such file 'missing.toml'\n"),
 ])
@@ -284,8 +286,10 @@ def test_list_shows_the_bundled_examples():
                    "involute-pair", "planetary-q1", "planetary-q2", "planetary-q3",
                    "planetary-q4", "eccentric-flat-face", "offset-knife-edge",
                    "oscillating-roller", "roller-harmonic-cycloidal", "four-mass-shaft",
-                   "four-masses-one-plane", "inline-four", "notes-example-1", "single-cylinder",
-                   "single-cylinder-balance-mass", "engine-harmonic-torque",
+                   "four-masses-one-plane", "inline-four", "notes-example-1",
+                   "single-cylinder-balance-mass", "single-cylinder", "unknown-angles",
+                   "unknown-planes",
+                   "engine-harmonic-torque",
                    "petrol-engine-areas", "single-cylinder-table"]
     assert "Four-bar crank-rocker" in result.stdout
 

@@ -22,6 +22,16 @@ PHRASES: dict[str, str] = {
                      "polygon is a point: plane {plane} needs no balancing mass.",
     "balance.balanced": "The {plane} polygon closes on itself, its last tip back on its start: "
                         "the {plane} is balanced.",
+    "balance.force.open": "The force polygon: lay off each known mᵢrᵢ head to tail, each "
+                          "parallel to its mass's radial line; what is unknown closes it.",
+    "balance.couple.open": "The couple polygon, the plane of {a} the reference (its mass "
+                           "drops out): lay off each known mᵢrᵢlᵢ head to tail, lᵢ from that "
+                           "plane; what is unknown closes it.",
+    "balance.cut": "Cut the carriers of the two unknown vectors (a line along a known "
+                   "direction, an arc of a known size) from the last tip and from the start: "
+                   "the crossing closes the polygon.",
+    "balance.found": "Read mass {mass}'s unknowns off its side: its size gives the mass (or "
+                     "radius, or the plane's distance), its direction the angle.",
     "balance.cranks": "Draw the end view of the cranks: from the shaft's centre O each "
                       "crank's line at θᵢ, and the secondary (direct) cranks at 2θᵢ.",
     "balance.engine": "The {kind} polygon: lay off each cylinder's vector along its crank at "

@@ -23,7 +23,9 @@ from dataclasses import dataclass
 from ..balancing.rotor import Engine, Mass
 
 __all__ = ["EngineSums", "balance_product", "quadrant_angle", "resultant", "single_cylinder",
-           "engine_sums", "one_axial_plane", "two_planes", "unbalanced_resultant"]
+           "engine_sums", "one_axial_plane", "open_residual", "open_rotor_roots", "polygon_roots",
+           "two_planes",
+           "unbalanced_resultant"]
 
 
 def resultant(masses: tuple[Mass, ...] | list[Mass]) -> tuple[float, float]:
@@ -123,3 +125,119 @@ def engine_sums(e: Engine, reference: float | None = None) -> EngineSums:
     twice = [2 * t for t in e.cranks]
     return EngineSums(f * size(e.cranks, ones), f * size(e.cranks, arms),
                       f / n * size(twice, ones), f / n * size(twice, arms))
+
+
+TANGENT = 1e-9
+"""How far (relative to the sizes) two carriers may miss and still be taken as touching:
+a rotor balanced with two masses along one line closes its polygon on arcs that touch,
+which rounding leaves a hair apart or across."""
+
+
+def polygon_roots(known: complex, unknown: list[tuple[float | None, float | None]]
+                  ) -> list[list[complex]]:
+    """The vectors that close a polygon whose known vectors sum to ``known``: one wholly
+    unknown (−known), or two, each given as (signed size or None, angle or None) with one
+    of the two unknown, by algebra on v₁ + v₂ = −known: two sizes by Cramer's rule, two
+    directions by the law of cosines, a size and a direction by the quadratic
+    |−known − a·e^{iθ₁}| = |s₂|. Every real root is returned (none where they miss)."""
+    target = -known
+    if len(unknown) == 1:
+        return [[target]]
+    (s1, a1), (s2, a2) = unknown
+    if a1 is None and a2 is not None:
+        return [v[::-1] for v in polygon_roots(known, [(s2, a2), (s1, a1)])]
+    if a1 is not None and a2 is not None:
+        e1, e2 = complex(math.cos(a1), math.sin(a1)), complex(math.cos(a2), math.sin(a2))
+        det = e1.real * e2.imag - e1.imag * e2.real
+        if det == 0.0:
+            return []
+        a = (target.real * e2.imag - target.imag * e2.real) / det
+        b = (e1.real * target.imag - e1.imag * target.real) / det
+        return [[a * e1, b * e2]]
+    if a1 is not None:
+        e1 = complex(math.cos(a1), math.sin(a1))
+        # |target − a·e1|² = s2²: a² − 2a·Re(target·conj e1) + |target|² − s2² = 0
+        p = (target * e1.conjugate()).real
+        disc = p * p - (abs(target) ** 2 - s2 * s2)
+        if disc < -TANGENT * (abs(target) ** 2 + s2 * s2):
+            return []
+        disc = max(disc, 0.0)                   # touching, to rounding
+        roots = (p + math.sqrt(disc), p - math.sqrt(disc))
+        return [[a * e1, target - a * e1] for a in roots]
+    d = abs(target)
+    r1, r2 = abs(s1), abs(s2)
+    slack = TANGENT * (r1 + r2 + d)
+    if d == 0.0 or d > r1 + r2 + slack or d < abs(r1 - r2) - slack:
+        return []
+    # v1 = a·u ± h·(i·u), u along the target: a by the law of cosines, h the triangle's
+    # height over d, its area by Kahan's stable Heron formula (a thin triangle's angle
+    # taken by acos would lose half its digits)
+    x, y, w = sorted((r1, r2, d), reverse=True)
+    area = 0.25 * math.sqrt(max(0.0, (x + (y + w)) * (w - (x - y)) * (w + (x - y))
+                                * (x + (y - w))))
+    h = 2.0 * area / d
+    a = ((r1 - r2) * (r1 + r2) + d * d) / (2.0 * d)
+    u = target / d
+    return [[a * u + sign * h * 1j * u, target - (a * u + sign * h * 1j * u)]
+            for sign in (1.0, -1.0)]
+
+
+def open_residual(masses) -> tuple[float, float]:
+    """|Σ mᵢrᵢ e^{iθᵢ}| (kg·m) and |Σ mᵢrᵢlᵢ e^{iθᵢ}| (kg·m², about plane 0) of masses
+    whose data are all known: a rotor in complete balance leaves both zero."""
+    fx = math.fsum(m.mass * m.radius * math.cos(m.angle) for m in masses)
+    fy = math.fsum(m.mass * m.radius * math.sin(m.angle) for m in masses)
+    cx = math.fsum(m.mass * m.radius * m.plane * math.cos(m.angle) for m in masses)
+    cy = math.fsum(m.mass * m.radius * m.plane * math.sin(m.angle) for m in masses)
+    return math.hypot(fx, fy), math.hypot(cx, cy)
+
+
+def open_rotor_roots(parts, order: list[str], z: float) -> list[dict]:
+    """Every way the rotor's unknowns (None in ``parts``, each with name, mass, radius,
+    angle, plane) close its polygons, taken in ``order`` ("force", "couple"), couples about
+    the plane at ``z``: each a dict of name → (mass, radius, angle, plane). A root with a
+    mass not positive is dropped."""
+    states = [{p.name: [p.mass, p.radius, p.angle, p.plane] for p in parts}]
+    for which in order:
+        grown = []
+        for state in states:
+            grown += _polygon_states(state, which, z)
+        states = grown
+    return [{k: tuple(v) for k, v in s.items()} for s in states]
+
+
+def _polygon_states(state: dict, which: str, z: float) -> list[dict]:
+    known, unknown = 0j, []
+    for name, (m, r, a, z_i) in state.items():
+        size = None if m is None or r is None else m * r
+        if which == "couple":
+            if z_i is not None and z_i == z:
+                continue
+            lever = None if z_i is None else z_i - z
+            size = None if size is None or lever is None else size * lever
+        if size is not None and a is not None:
+            known += size * complex(math.cos(a), math.sin(a))
+        else:
+            unknown.append((name, size, a))
+    out = []
+    for root in polygon_roots(known, [(s, a) for _, s, a in unknown]):
+        new = {k: list(v) for k, v in state.items()}
+        ok = True
+        for (name, _, _), v in zip(unknown, root):
+            m, r, a, z_i = new[name]
+            lever = 1.0 if which == "force" else (None if z_i is None else z_i - z)
+            if a is None:
+                a = math.atan2(v.imag, v.real) + (math.pi if lever is not None and lever < 0
+                                                  else 0.0)
+                a %= 2 * math.pi
+            along = v.real * math.cos(a) + v.imag * math.sin(a)
+            if m is None or r is None:
+                size = along / lever
+                ok = ok and size > 0
+                m, r = (size / r, r) if m is None else (m, size / m)
+            elif z_i is None and which == "couple":
+                z_i = z + along / (m * r)
+            new[name] = [m, r, a, z_i]
+        if ok:
+            out.append(new)
+    return out

@@ -32,6 +32,8 @@ class Balancing(Chapter):
         return next(iter(self.solve(exercise).figures.values()))
 
     def asks(self, exercise) -> str:
+        if exercise.open is not None:
+            return "the unknowns of the masses by the force and couple polygons"
         if exercise.rotor is not None:
             return ("the balancing mass by the force polygon" if len(exercise.rotor.planes) == 1
                     else "the two balancing masses by the couple and force polygons")

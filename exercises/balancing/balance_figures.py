@@ -20,6 +20,7 @@ from tarsim.graphics.balancing.balance_figures import draw_end_view, draw_polygo
 from tarsim.graphics.figure import Figure
 from tarsim.graphics.plot import PlotMark, Series, draw_line_plot
 from tarsim.graphics.train_table import draw_train_table
+from .open_rotor_solution import open_figures
 
 if TYPE_CHECKING:
     from .balance_solution import BalanceSolution
@@ -39,6 +40,8 @@ def balance_figures(s: BalanceSolution) -> dict[str, Figure]:
     unit, metre = ex.length_unit, LENGTH_UNITS[ex.length_unit]
     if ex.rotor is not None:
         return _rotor_figures(s, unit, metre)
+    if ex.open is not None:
+        return open_figures(ex.name, s.closure, ex.open, unit)
     e = ex.engine
     if len(e.cranks) == 1:
         return {"forces": _single_cylinder_plot(e, s.cylinder_balance, unit, metre)}

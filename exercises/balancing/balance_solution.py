@@ -16,6 +16,7 @@ from functools import cached_property
 from typing import Any
 
 from tarsim.constructions.balancing.engine import EnginePolygons, draw_engine, engine_kinds
+from tarsim.constructions.balancing.unknowns import Closure, close_rotor
 from tarsim.constructions.balancing.polygons import Balance, draw_balance, rounding
 from tarsim.constructions.units import LENGTH_UNITS
 from tarsim.constructions.narration import numeral, phrase, words
@@ -26,6 +27,7 @@ from ..checked import Checked
 from ..solution_folder import ChapterFiles
 from ..worked_document import Bullets, Section, said_steps, title
 from .balance_figures import angle_deg, balance_figures
+from .open_rotor_solution import open_checked, open_lines, open_misses
 from .rotor_file import BalanceExercise
 
 __all__ = ["BalanceSolution", "solve_balance"]
@@ -53,6 +55,12 @@ class BalanceSolution(ChapterFiles):
         """The rotor's polygons, drawn (None for an engine)."""
         r = self.exercise.rotor
         return draw_balance(r) if r else None
+
+    @cached_property
+    def closure(self) -> Closure | None:
+        """A self-balancing rotor's polygons, closed on its unknowns (None otherwise)."""
+        o = self.exercise.open
+        return close_rotor(o) if o else None
 
     @cached_property
     def expected(self) -> dict[str, tuple[float, float]]:
@@ -91,6 +99,8 @@ class BalanceSolution(ChapterFiles):
     @cached_property
     def misses(self) -> list[tuple[str, float]]:
         """What disagrees: (name, miss relative to the size its sums round at)."""
+        if self.closure is not None:
+            return open_misses(self.closure, self.exercise.open)
         out = []
         if self.balance is not None:
             force_scale, couple_scale, product_scale = self.scales
@@ -160,6 +170,9 @@ class BalanceSolution(ChapterFiles):
         ex = self.exercise
         if ex.engine is not None:
             return self._engine_lines()
+        if ex.open is not None:
+            return open_lines(self.closure, ex.open, ex.length_unit, self.passed,
+                              self.failures)
         out = []
         r = ex.rotor
         noise = rounding([m.mass * m.radius for m in r.masses])
@@ -289,7 +302,8 @@ class BalanceSolution(ChapterFiles):
         with their checks)."""
         ex = self.exercise
         record = self.balance.construction if self.balance else (
-            self.engine_polygons.construction if self.engine_polygons else None)
+            self.engine_polygons.construction if self.engine_polygons else (
+                self.closure.construction if self.closure else None))
         out = [title(ex.name, ex.description)]
         if record is not None:
             out.append(Section(phrase("heading.construction"), (said_steps(record),)))
@@ -303,6 +317,8 @@ class BalanceSolution(ChapterFiles):
         cylinder's, read off the closed form, stand alone)."""
         ex = self.exercise
         q: dict[str, Checked] = {}
+        if ex.open is not None:
+            return open_checked(self.closure)
         if ex.rotor is not None:
             method = "force polygon" if len(self.expected) == 1 else "couple and force polygons"
             for name, want in self.expected.items():

@@ -14,11 +14,13 @@ from dataclasses import dataclass
 from typing import Any, ClassVar
 
 from tarsim.constructions.balancing.rotor import Engine, Mass, Plane, Rotor
+from tarsim.constructions.balancing.unknowns import OpenRotor
 from tarsim.constructions.units import LENGTH_UNITS
 from ..file_numbers import radians_in_turn
 from ..toml_source import _CONTROL
 from ..names import named_in, read_names, renamed_field
 from ..table_file import SPEEDS, Tables
+from .open_rotor_file import UNKNOWN, read_open_rotor
 
 __all__ = ["BalanceExercise", "parse_balance"]
 
@@ -48,6 +50,8 @@ class BalanceExercise:
     description: str
     rotor: Rotor | None = None
     engine: Engine | None = None
+    open: OpenRotor | None = None
+    """A rotor balanced by its own masses, some of their data unknown ("?")."""
     length_unit: str = "m"
     speed_unit: str = "rad/s"
     names: tuple[tuple[str, str], ...] = ()
@@ -78,6 +82,10 @@ def parse_balance(text: str, filename: str = "<string>", exercise_id: str = "rot
                   names=read_names(data, t.where, filename))
     if "engine" in data:
         return BalanceExercise(engine=_engine(t, metre), **common)
+    if any(v == UNKNOWN for m in t.entries("mass") for v in m.values()):
+        return BalanceExercise(open=read_open_rotor(
+            t, metre, _speed(t, "rotor"),
+            lambda e, i: _name(t, e, "mass", i, str(i + 1), "mass")), **common)
     masses = _masses(t, metre, length)
     planes = _planes(t, metre)
     taken = {m.name: f"mass {m.name}" for m in masses}
