@@ -150,8 +150,11 @@ def test_bad_file_is_one_line_with_file_and_line(mech_file, tmp_path, edit, mess
                         "crank-shaper-forces, crank-shaper-inertia, engine-forces, "
                         "engine-friction, engine-gas-pressure, "
                         "four-bar-coupler-load, four-bar-forces, compound-train, "
-                        "involute-pair, planetary-q1, planetary-q2, planetary-q3, "
-                        "planetary-q4, eccentric-flat-face, offset-knife-edge, "
+                        "differential-near-equal, gearbox-power-efficiency, "
+                        "involute-pair, output-speed-given, planetary-q1, planetary-q2, "
+                        "planetary-q3, planetary-q4, ratio-least-teeth, ratio-only, "
+                        "teeth-implied, two-planets-listed, two-speeds-arm-and-sun, "
+                        "eccentric-flat-face, offset-knife-edge, "
                         "oscillating-roller, roller-harmonic-cycloidal, four-mass-shaft, "
                         "four-masses-one-plane, inline-four, notes-example-1, "
                         "single-cylinder-balance-mass, single-cylinder, unknown-angles, "
@@ -283,8 +286,11 @@ def test_list_shows_the_bundled_examples():
                    "crank-shaper-forces", "crank-shaper-inertia", "engine-forces",
                    "engine-friction", "engine-gas-pressure",
                    "four-bar-coupler-load", "four-bar-forces", "compound-train",
-                   "involute-pair", "planetary-q1", "planetary-q2", "planetary-q3",
-                   "planetary-q4", "eccentric-flat-face", "offset-knife-edge",
+                   "differential-near-equal", "gearbox-power-efficiency", "involute-pair",
+                   "output-speed-given", "planetary-q1", "planetary-q2", "planetary-q3",
+                   "planetary-q4", "ratio-least-teeth", "ratio-only", "teeth-implied",
+                   "two-planets-listed", "two-speeds-arm-and-sun",
+                   "eccentric-flat-face", "offset-knife-edge",
                    "oscillating-roller", "roller-harmonic-cycloidal", "four-mass-shaft",
                    "four-masses-one-plane", "inline-four", "notes-example-1",
                    "single-cylinder-balance-mass", "single-cylinder", "unknown-angles",
