@@ -320,6 +320,8 @@ def test_unknown_angles():
     assert q["mass_A"]["value"] == pytest.approx(abs(a) / 0.1, rel=1e-9)
     assert q["mass_A"]["value"] == pytest.approx(7.39932, abs=5e-5)
     assert "mirror image" in "\n".join(s.lines())
+    # the other crossing: C reflected in B's line, θC = +117.68°
+    assert q["angle_C"]["mirror"] == pytest.approx(-math.degrees(tc), abs=1e-9)
 
 
 def test_two_unknown_masses_are_the_balancing_planes_two_planes_finds():

@@ -286,23 +286,26 @@ def _close(out: Closure, which: str, z: float, known, unknown) -> None:
 
 def _cross(out: Closure, which: str, tag: str, panel: Panel, verb: str, inputs,
            picks: tuple[str, str], good) -> Ref:
-    """Cut two carriers, taking the first crossing that ``good`` accepts (a crossing of
-    two: the choice is told)."""
+    """Cut two carriers, taking the first crossing that ``good`` accepts; where both are,
+    the polygon closes twice (mirror images), and that is told."""
     c = out.construction
-    trial = c.scratch()
+    taken = []
     for pick in picks:
+        trial = c.scratch()
         try:
             at = trial.draw("x", verb, *inputs, pick=pick)
         except TarsimError as e:
             raise CannotClose(f"the {which} polygon cannot close: the sizes given cannot "
                               f"reach across it ({e})") from None
         if good(trial.output(at)):
-            out.mirrored.append(which)
-            return c.draw(f"{tag}:x", verb, *inputs, pick=pick, label="x", panel=panel,
-                          phrase=phrase("balance.cut"))
-        trial = c.scratch()
-    raise CannotClose(f"the {which} polygon closes only with a negative mass: no mass at "
-                      "the angle given balances it")
+            taken.append(pick)
+    if not taken:
+        raise CannotClose(f"the {which} polygon closes only with a negative mass: no mass at "
+                          "the angle given balances it")
+    if len(taken) == 2:
+        out.mirrored.append(which)
+    return c.draw(f"{tag}:x", verb, *inputs, pick=taken[0], label="x", panel=panel,
+                  phrase=phrase("balance.cut"))
 
 
 def _positive(out: Closure, which: str, z: float, name: str, tip: Ref, at) -> bool:

@@ -63,6 +63,9 @@ WORDS: dict[str, str] = {
     "force": "نیرو", "couple": "کوپل",
     "each where the algebra puts it": "هر یک همان‌جا که حل جبری نشان می‌دهد",
     ": found": ": یافته‌شده",
+    "a mass with unknowns, found": "جرمی با مجهول‌ها، یافته‌شده",
+    "a plane found": "صفحهٔ یافته‌شده",
+    "the mirror image: {found}": "قرینهٔ آینه‌ای: {found}",
     "{mass} {kg} at {radius} {unit} opposite the crank balances {share} of m_rec and all of "
     "m_rev":
         "{mass} {kg} در شعاع {radius} {unit} روبه‌روی لنگ، {share} از m_rec و همهٔ m_rev را "

@@ -44,17 +44,21 @@ def _scales(closure: Closure) -> tuple[float, float]:
             math.fsum(p.mass * p.radius * (abs(p.plane) + z) for p in ps))
 
 
-def _root(closure: Closure) -> dict | None:
-    """The reference's root nearest the drawing (None if it has none)."""
+def _roots(closure: Closure) -> list[dict]:
+    """The reference's roots, the one nearest the drawing first."""
     z = closure.reference[1] if closure.reference else 0.0
     roots = open_rotor_roots(tuple(closure.given.values()), closure.order, z)
-    if not roots:
-        return None
 
     def gap(root) -> float:
         return sum(abs(math.remainder(root[n][2] - p.angle, 2 * math.pi)) + abs(
             root[n][0] * root[n][1] - p.mass * p.radius) for n, p in closure.parts.items())
-    return min(roots, key=gap)
+    return sorted(roots, key=gap)
+
+
+def _root(closure: Closure) -> dict | None:
+    """The reference's root nearest the drawing (None if it has none)."""
+    roots = _roots(closure)
+    return roots[0] if roots else None
 
 
 def open_misses(closure: Closure, rotor: OpenRotor) -> list[tuple[str, float]]:
@@ -92,7 +96,11 @@ def _value(key: str, v: float) -> float:
 def open_checked(closure: Closure) -> dict[str, Checked]:
     """Each unknown as results.json gives it, in SI (an angle in degrees), beside the
     reference's root: ``mass_1``, ``radius_1``, ``angle_1``, ``plane_1``."""
-    root = _root(closure) or {}
+    roots = _roots(closure)
+    root = roots[0] if roots else {}
+    # The other crossing's answer, where the polygons close twice: a mirror image that
+    # balances the rotor as well (the books draw one of the two).
+    other = roots[1] if len(roots) > 1 and closure.mirrored else None
     method = " and ".join(f"{w} polygon" for w in closure.order)
     q = {}
     for name, p in closure.given.items():
@@ -101,7 +109,9 @@ def open_checked(closure: Closure) -> dict[str, Checked]:
                 got = _value(key, getattr(closure.parts[name], key))
                 ref = {"value": _value(key, root[name][i])} if name in root else None
                 unit = {"mass": "kg", "radius": "m", "angle": "deg", "plane": "m"}[key]
-                q[f"{key}_{name}"] = Checked({"value": got, "unit": unit}, ref, method=method)
+                beside = {"mirror": _value(key, other[name][i])} if other else {}
+                q[f"{key}_{name}"] = Checked({"value": got, "unit": unit}, ref, method=method,
+                                             beside=beside)
     return q
 
 
@@ -125,6 +135,11 @@ def open_lines(closure: Closure, rotor: OpenRotor, length_unit: str, passed: boo
     if closure.mirrored:
         out.append(words("two crossings close the {polygon} polygon: the other, the mirror "
                          "image, balances the rotor too", polygon=words(closure.mirrored[0])))
+        roots = _roots(closure)
+        if len(roots) > 1:
+            out.append(words("the mirror image: {found}", found=", ".join(
+                f"θ_{n} = {numeral(math.degrees(roots[1][n][2]) % 360.0, '.2f')}°"
+                for n, p in closure.given.items() if p.angle is None)))
     verdict = words("each where the algebra puts it") if passed else \
         f"OFF: {', '.join(failures)}"
     f, c = open_residual(tuple(closure.parts.values()))
@@ -145,12 +160,12 @@ def open_figures(name: str, closure: Closure, rotor: OpenRotor,
               closure.parts[p.name].radius)
              for p in closure.given.values() if p.angle is None or p.size is None]
     out = {"space": draw_end_view(c, known, words("{name}: space diagram", name=name), unit,
-                                  metre, found)}
+                                  metre, found, found_word="a mass with unknowns, found")}
     if not rotor.static:
         planes = [(p.name, p.plane, "link" if closure.given[p.name].plane is not None
                    else "normal") for p in closure.parts.values()]
         out["side"] = draw_side_view(planes, words("{name}: side view", name=name), unit,
-                                     metre)
+                                     metre, found="a plane found")
     for which in closure.order:
         tips = closure.force if which == "force" else closure.couple
         title = words("{name}: force polygon", name=name) if which == "force" else words(

@@ -147,7 +147,8 @@ def _outward(a, b, corners, by: float, *, up: bool) -> tuple[float, float]:
 
 def draw_end_view(c: Construction, masses: Sequence[tuple[str, float, str]], title: str,
                   unit: str, metre: float, found: Sequence[tuple[str, float, float]] = (),
-                  notes: Sequence[str] = ()) -> Figure:
+                  notes: Sequence[str] = (), found_word: str = "a balancing mass found"
+                  ) -> Figure:
     """The end view: the shaft's centre O and each mass (step ``P<name>``) on its radial
     line; ``masses`` gives each (name, radius in m, its label), ``found`` each balancing
     mass (label, angle in rad, radius in m), drawn dashed."""
@@ -195,7 +196,7 @@ def draw_end_view(c: Construction, masses: Sequence[tuple[str, float, str]], tit
                                     "reference radius (the short dashed one), "
                                     "counter-clockwise")],
                  per_cm=per_cm, unit=unit, notes=notes,
-                 legend=(("link", "a mass"),) + ((("normal", "a balancing mass found"),)
+                 legend=(("link", "a mass"),) + ((("normal", found_word),)
                                                  if found else ()))
     return fig
 
@@ -210,10 +211,10 @@ def _radii(c: Construction, masses, found) -> list[tuple[float, float]]:
 
 
 def draw_side_view(planes: Sequence[tuple[str, float, str]], title: str, unit: str,
-                   metre: float) -> Figure:
+                   metre: float, found: str = "a balancing plane") -> Figure:
     """The side view: the shaft and each plane at its axial position; ``planes`` gives
     each (label, position in m, style: "link" for a mass's plane, "normal" for a
-    balancing plane)."""
+    balancing plane, or the plane found, as the legend's ``found`` names it)."""
     xs = [p for _, p, _ in planes]
     lo, hi = min(xs), max(xs)
     span = hi - lo or 1.0
@@ -229,5 +230,5 @@ def draw_side_view(planes: Sequence[tuple[str, float, str]], title: str, unit: s
     draw_caption(fig, title, [words("side view: the planes along the shaft, positions in {unit}",
                                     unit=unit_words(unit))],
                  per_cm=per_cm, unit=unit,
-                 legend=(("link", "a mass's plane"), ("normal", "a balancing plane")))
+                 legend=(("link", "a mass's plane"), ("normal", found)))
     return fig
