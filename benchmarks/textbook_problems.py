@@ -92,9 +92,10 @@ def main(argv: list[str] | None = None) -> None:
             counts[outcome] = counts.get(outcome, 0) + 1
             print(f"  {outcome:<11} {what}: {detail}")
     total = sum(counts.values())
+    rest = ", ".join(f"{k} {v}" for k, v in sorted(counts.items()) if k != "stated")
     print(f"\n{counts.get('stated', 0)} of {total} asked quantities stated directly "
-          f"({100 * counts.get('stated', 0) / max(total, 1):.0f} %); " +
-          ", ".join(f"{k} {v}" for k, v in sorted(counts.items()) if k != "stated"))
+          f"({100 * counts.get('stated', 0) / max(total, 1):.0f} %)" +
+          (f"; {rest}" if rest else ""))
 
 
 if __name__ == "__main__":
