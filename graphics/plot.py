@@ -312,8 +312,8 @@ def draw_line_plot(title: str, x_label: str, y_label: str, series: Sequence[Seri
     inner = _TICK + 0.4
     _draw_marks(fig, [(px(m.x), py(m.y), m.label) for m in marks], paper_runs,
                 (left + inner, plot_top + inner, right - inner, bottom - inner))
-    for tx, ty, text in tags:
-        fig.add(Text((px(tx), py(ty)), sign_left(text), _NOTE, "middle", italic=False))
+    _draw_tags(fig, [(px(tx), py(ty), text) for tx, ty, text in tags], paper_runs,
+               (left + inner, plot_top + inner, right - inner, bottom - inner))
 
     legend = [(s.style, s.label) for s in series] if len(series) > 1 else []
     if marks and mark_legend:
@@ -367,6 +367,28 @@ def _clip_runs(points: Sequence[Point | None], x0: float, x1: float) -> list[lis
             current.append(p)
         prev = p
     return [r for r in runs if r]
+
+
+def _draw_tags(fig: Figure, tags: list[tuple[float, float, str]],
+               runs: list[tuple[Point, ...]], frame: Box) -> None:
+    """Each tag's words at its point, or moved the least (a line up or down, or to a side)
+    to keep clear of the curves, the frame and the tags before it: an energy's value set
+    at the middle of the segment it is the rise of would sit on that segment."""
+    segments = _segments(runs)
+    taken: list[Box] = []
+    h = _NOTE
+    for x, y, text in tags:
+        w = _rich_width(text, _NOTE)
+        shifts = np.array([(0.0, 0.0)] + [(0.0, k * (h + 0.8)) for k in (-1, 1, -2, 2)]
+                          + [(k * (w / 2 + 2.5), 0.0) for k in (1, -1)])
+        cx, cy = x + shifts[:, 0], y + shifts[:, 1]
+        boxes = np.stack([cx - w / 2 - 0.3, cy - h / 2 - 0.3, cx + w / 2 + 0.3,
+                          cy + h / 2 + 0.3], axis=1)
+        cost = _overlaps(boxes, taken, segments, frame) + 0.01 * np.hypot(*shifts.T)
+        k = int(np.argmin(cost))
+        fig.add(Text((float(cx[k]), float(cy[k])), sign_left(text), _NOTE, "middle",
+                     italic=False))
+        taken.append(tuple(boxes[k].tolist()))
 
 
 def _draw_marks(fig: Figure, marks: list[tuple[float, float, str]],

@@ -21,6 +21,7 @@ from tarsim.exercises.linkages.exercise_file import load_exercise
 from tarsim.exercises.linkages.sweep import pick_output, sweep_exercise
 from tarsim.exercises.linkages.sweep_files import sweep_to_files
 from tarsim.exercises.linkages.sweep_output import drive_at, evaluate
+from tarsim.graphics import figure
 from tarsim.graphics.plot import PlotMark, Series, draw_line_plot, nice_ticks
 from tests.common import four_bar_toml
 
@@ -419,3 +420,27 @@ def test_a_sweep_whose_construction_leaves_its_curve_exits_3(monkeypatch, tmp_pa
     assert result.exit_code == 3
     assert result.output.splitlines()[-1].endswith("disagree with the analytic solution beyond "
                                                    "tolerance")
+
+
+def test_a_tag_on_its_own_curve_is_moved_clear_of_it():
+    """A value set at the middle of the segment it belongs to (an energy's rise between
+    two intercepts) would be crossed by that segment: it is set a line up or down, or to a
+    side, where no curve crosses its words."""
+    pts = ((0.0, 0.0), (1.0, 10.0), (2.0, -20.0))
+    fig = draw_line_plot("E", "x", "E (J)", [Series("energy", pts)], [], x_range=(0.0, 2.0),
+                         x_ticks=[(0.0, "0"), (1.0, "1"), (2.0, "2")],
+                         tags=[(0.5, 5.0, "+10 J"), (1.5, -5.0, "−30 J")])
+    tags = [it for it in fig.items if isinstance(it, figure.Text) and it.text.endswith(" J")]
+    curve = next(it for it in fig.items if isinstance(it, figure.Path) and len(it.points) == 3)
+    assert len(tags) == 2
+    (x0, y0), (x1, y1), (x2, y2) = curve.points
+    for tag, ((ax, ay), (bx, by)) in zip(tags, (((x0, y0), (x1, y1)), ((x1, y1), (x2, y2)))):
+        # The segment's height at the tag's x, against the tag's box (3 mm words, about
+        # 2 mm wide a character): the segment passes above or below the box, or beside it.
+        half_w, half_h = 1.0 * len(tag.text), 1.5
+        left, right = tag.at[0] - half_w, tag.at[0] + half_w
+        lo, hi = max(min(ax, bx), left), min(max(ax, bx), right)
+        if lo > hi:
+            continue                                  # beside the segment
+        ys = [ay + (by - ay) * (x - ax) / (bx - ax) for x in (lo, hi)]
+        assert min(ys) > tag.at[1] + half_h or max(ys) < tag.at[1] - half_h
