@@ -15,10 +15,11 @@ from pathlib import Path
 
 import click
 
-from tarsim.constructions.errors import (CheckMismatch, TarsimError)
+from tarsim.constructions.errors import CheckMismatch
 from tarsim.constructions.narration import speaking, spoken
 
 from . import cli_common as common
+from .cli_files import list_, new
 
 __all__ = ["cli"]
 
@@ -483,28 +484,5 @@ def view(source, output, step):
                              for f in frames["failing"]][:5])
 
 
-@cli.command(name="list")
-def list_():
-    """List the bundled examples: their ids, where they come from, what they ask.
-
-    The linkages first, then the gear trains.
-
-    \b
-    Example:
-      tarsim list
-    """
-    from .catalog import everything
-    from .chapters import listing
-
-    found = everything()
-    pad = max(map(len, found), default=0) + 2
-    for name, path in found.items():
-        try:
-            shown = listing(path, name)
-        except TarsimError as e:
-            click.echo(f"{name:<{pad}}(cannot be read: {e})")
-            continue
-        click.echo(f"{name:<{pad}}{shown.title}")
-        if shown.origin:
-            click.echo(f"{'':<{pad}}from {shown.origin}")
-        click.echo(f"{'':<{pad}}asks: {shown.asks}")
+cli.add_command(list_)
+cli.add_command(new)

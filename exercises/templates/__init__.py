@@ -1,0 +1,28 @@
+"""Starting files, one for each kind of exercise: ``tarsim new linkage -o my.toml``.
+
+Each is a small, commented file that solves as it stands, so that a user edits a working
+exercise rather than writing one from the README's fragments. tests/test_templates.py
+solves every one and holds a number of each to its closed form.
+"""
+
+from __future__ import annotations
+
+from importlib import resources
+
+__all__ = ["KINDS", "template"]
+
+KINDS = {
+    "linkage": "a four-bar crank-rocker: instant centres, velocities and accelerations",
+    "train": "a planetary gear train with its ring held: each member's speed",
+    "cam": "a roller follower's cam: the motion diagrams and the profile",
+    "rotor": "masses on a shaft balanced by one mass in their plane",
+    "engine": "a single-cylinder engine's reciprocating masses, partly balanced",
+    "loads": "a horizontal engine's gas load: pin forces and the crank's torque",
+    "flywheel": "a turning moment as a formula: the flywheel that holds the speed",
+}
+"""Each kind of starting file, with what it holds."""
+
+
+def template(kind: str) -> str:
+    """The text of ``kind``'s starting file (a key of :data:`KINDS`)."""
+    return resources.files(__name__).joinpath(f"{kind}.toml").read_text(encoding="utf-8")
