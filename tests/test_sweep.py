@@ -444,3 +444,20 @@ def test_a_tag_on_its_own_curve_is_moved_clear_of_it():
             continue                                  # beside the segment
         ys = [ay + (by - ay) * (x - ax) / (bx - ax) for x in (lo, hi)]
         assert min(ys) > tag.at[1] + half_h or max(ys) < tag.at[1] - half_h
+
+
+def test_the_printed_checks_keep_their_columns_apart(tmp_path):
+    """An acceleration of millions of mm/s² is as long as its column: each row of the
+    table still splits into its six entries, at the header's columns."""
+    result = CliRunner().invoke(cli, ["sweep", "engine-forces", "-o", str(tmp_path / "out"),
+                                      "--no-pdf", "--steps", "24"])
+    assert result.exit_code == 0, result.output
+    lines = result.output.splitlines()
+    head = next(i for i, line in enumerate(lines) if line.startswith("position "))
+    starts = [lines[head].index(word) for word in ("quantity", "method", "graphical",
+                                                    "curve", "rel. error")]
+    rows = lines[head + 1:head + 4]
+    assert any("e+06" in row for row in rows)          # the long one is among them
+    for row in rows:
+        for at in starts:                              # every column starts after a gap
+            assert row[at - 2:at] == "  " and row[at] != " ", row

@@ -351,14 +351,21 @@ def _format_sweep(sw: Sweep) -> str:
     lines += [f"gap at {_plain(g)}" for g in _gaps(sw)]
     if sw.checks:
         lines.append("")
-        lines.append(f"{'position':<14}{'quantity':<10}{'method':<28}{'graphical':<18}"
-                     f"{'curve':<18}rel. error")
-        for c in sw.checks:
-            lines.append(f"{c.position:<14}{_plain(sw.output.symbol(c.key)):<10}"
-                         f"{c.method:<28}{_shown(mech, c.key, c.graphical):<18}"
-                         f"{_shown(mech, c.key, c.curve):<18}{c.rel_error:.1e}")
+        rows = [("position", "quantity", "method", "graphical", "curve", "rel. error")]
+        rows += [(c.position, _plain(sw.output.symbol(c.key)), c.method,
+                  _shown(mech, c.key, c.graphical), _shown(mech, c.key, c.curve),
+                  f"{c.rel_error:.1e}") for c in sw.checks]
+        lines += _aligned(rows)
     lines += [f"note: {n}" for n in sw.notes]
     return "\n".join(lines)
+
+
+def _aligned(rows: list[tuple[str, ...]]) -> list[str]:
+    """``rows`` as lines of columns each as wide as its widest entry, two spaces apart: a
+    long number (−1.95352e+06 mm/s²) never runs into the next column."""
+    widths = [max(len(row[i]) for row in rows) for i in range(len(rows[0]))]
+    return ["  ".join(cell.ljust(w) for cell, w in zip(row, widths)).rstrip()
+            for row in rows]
 
 
 def _plain(text: str) -> str:
