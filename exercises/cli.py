@@ -167,7 +167,7 @@ def solve(source, out_dir, angle, pdf, paper, allow_undercut, lang, digits):
       tarsim solve four-bar -o four-bar-solution
       tarsim solve crank-shaper -o shaper      # θ2 = 90° and t = 2.34 s
       tarsim solve my-exercise.toml --angle 120 --no-pdf
-      tarsim solve whitworth --paper A3          # the worked page on one sheet
+      tarsim solve whitworth --paper A3          # figures on A3 sheets (A4 by default)
       tarsim solve planetary-q1                  # the notes' planetary Q1
       tarsim solve eccentric-flat-face           # the notes' §3.20 cam
       tarsim solve notes-example-1               # 001 ch. 7 Example 1, corrected
