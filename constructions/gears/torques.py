@@ -24,7 +24,8 @@ from ..narration import Phrase, phrase, significant
 from .tabular import fraction_text
 from .train import GearTrain
 
-__all__ = ["balance", "say_balance", "per_pi", "torque_text", "holder"]
+__all__ = ["balance", "say_balance", "per_pi", "torque_text", "holder", "power_at",
+           "power_text", "say_powers"]
 
 _DIGITS = 16
 """The most digits (numerator and denominator) a torque's fraction is said with."""
@@ -70,6 +71,28 @@ def balance(train: GearTrain, speeds: dict[int, Fraction], output: int | None
     if h is not None:
         found[h] = -(t_in + t_out)
     return found
+
+
+def power_at(train: GearTrain, torque: Fraction, speed: Fraction) -> tuple[Fraction, bool]:
+    """The power (W) that flows through a member, |T·ω|, exact: (P, True) for P·π.
+
+    ``torque`` is :func:`balance`'s (over π where :func:`per_pi`) and ``speed`` in the
+    file's unit. With speeds in rpm, ω = 2π·n/60: against a torque over π the π cancels,
+    P = T·n/30 (the books' η·P_in, a fraction of the data); against a torque given in N·m
+    it stays, P = (T·n/30)·π.
+    """
+    if train.units.speed != "rpm":
+        return abs(torque * speed), False
+    return abs(torque * speed) / 30, not per_pi(train)
+
+
+def power_text(value: Fraction, times_pi: bool) -> str:
+    """A power as the steps say it, in W: "7125", "500π = 1570.8"."""
+    if not times_pi:
+        return torque_text(value, False)
+    exact = ("π" if value == 1 else f"{fraction_text(value)}π" if value.denominator == 1
+             else f"({fraction_text(value)})π")
+    return f"{exact} = {significant(float(value) * math.pi)}"
 
 
 def torque_text(value: Fraction, over_pi: bool) -> str:
@@ -119,4 +142,20 @@ def say_balance(train: GearTrain, speeds: dict[int, Fraction], output: int | Non
     if h is not None:
         out.append(phrase("gears.holding" if h == train.fixed else "gears.holding_two",
                           fixed=h, i=i, o=o, value=torque_text(torques[h], pi)))
+    return out
+
+
+def say_powers(train: GearTrain, speeds: dict[int, Fraction], output: int | None,
+               members: list[int]) -> list[Phrase]:
+    """The steps of each asked member's power, |T·ω|: into the train where T and ω agree
+    in sense (the input's), out of it where they oppose (the output's, η·P_in)."""
+    torques = balance(train, speeds, output)
+    rpm = "(2π/60)·" if train.units.speed == "rpm" else ""
+    out = []
+    for m in members:
+        value, times_pi = power_at(train, torques[m], speeds[m])
+        key = "gears.power_in" if torques[m] * speeds[m] > 0 else "gears.power_out"
+        out.append(phrase(key, m=m, rpm=rpm, w=fraction_text(abs(speeds[m])),
+                          t=torque_text(abs(torques[m]), per_pi(train)).split(" = ")[0],
+                          value=power_text(value, times_pi)))
     return out

@@ -24,6 +24,10 @@ PHRASES: dict[str, str] = {
                        "losses, {eta}·T{i}·ω{i} + T{o}·ω{o} + T{h}·ω{h} = 0, so T{o} = "
                        "T{i}·(ω{h} − {eta}·ω{i})/(ω{o} − ω{h}) = {value} N·m "
                        "(counter-clockwise +).",
+    "gears.power_in": "The power member {m} puts in: P{m} = |T{m}|·{rpm}|ω{m}| = {t} × "
+                      "{rpm}{w} = {value} W.",
+    "gears.power_out": "The power member {m} takes out: P{m} = |T{m}|·{rpm}|ω{m}| = {t} × "
+                       "{rpm}{w} = {value} W.",
     "gears.holding_two": "Member {fixed} takes the rest: T{fixed} = −(T{i} + T{o}) = {value} "
                          "N·m.",
     "gears.teeth_diameter": "Gear {n}'s teeth from its pitch diameter and module: N{n} = d/m "

@@ -92,6 +92,10 @@ PHRASES: dict[str, str] = {
                        "صفر است، T{i} + T{o} + T{h} = 0، و جمع توان‌ها نیز جز اتلاف‌ها، "
                        "{eta}·T{i}·ω{i} + T{o}·ω{o} + T{h}·ω{h} = 0، پس T{o} = "
                        "T{i}·(ω{h} − {eta}·ω{i})/(ω{o} − ω{h}) = {value} N·m (پادساعتگرد +).",
+    "gears.power_in": "توانی که عضو {m} وارد قطار می‌کند: P{m} = |T{m}|·{rpm}|ω{m}| = {t} × "
+                      "{rpm}{w} = {value} W.",
+    "gears.power_out": "توانی که عضو {m} از قطار می‌گیرد: P{m} = |T{m}|·{rpm}|ω{m}| = {t} × "
+                       "{rpm}{w} = {value} W.",
     "gears.holding_two": "باقی گشتاور را عضو {fixed} می‌گیرد: T{fixed} = −(T{i} + T{o}) = "
                          "{value} N·m.",
     "gears.teeth_diameter": "تعداد دندانه‌های چرخدندهٔ {n} از قطر گام و مدول آن: N{n} = d/m "

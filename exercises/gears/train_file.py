@@ -436,7 +436,7 @@ class _Reader(InputTables):
         if not (isinstance(find, list) and find and all(isinstance(q, str) for q in find)):
             raise self.fail('give find = [...], such as "omega4" or "omega5/omega2"',
                             "ask", "find")
-        torques = tuple(f"torque{m}" for m in train.members)
+        torques = tuple(f"{k}{m}" for k in ("torque", "power") for m in train.members)
         for q in find:
             if q in tuple(f"teeth{g.number}" for g in train.gears):
                 continue
@@ -452,7 +452,8 @@ class _Reader(InputTables):
             if q not in torques and (len(parts) > 2 or any(p not in every for p in parts)):
                 raise self.fail(f"cannot find '{q}' for this train; ask {', '.join(every)}, a "
                                 f"ratio such as {every[-1]}/{every[0]}, a torque "
-                                f"{torques[-1]} or teeth{train.gears[0].number}", "ask", "find")
+                                f"torque{train.members[-1]}, a power power{train.members[-1]} "
+                                f"or teeth{train.gears[0].number}", "ask", "find")
             if q in every and not train.speed_given:
                 raise self.fail(f"cannot find '{q}' without a speed: give speed = … "
                                 f"({train.units.speed}) in [input], or ask a ratio such as "
@@ -465,16 +466,20 @@ class _Reader(InputTables):
                                    f"on one shaft with the fixed member {train.fixed}")
                                 + "; ask a ratio over a turning member", "ask", "find")
         held = train.fixed if train.second is None else train.second[0]
-        loaded = {int(q.removeprefix("torque")) for q in find if q in torques}
+        loaded = {int(q.removeprefix("torque").removeprefix("power")) for q in find
+                  if q in torques}
         loaded -= {train.input_member, held}
         if len(loaded) > 1:
             raise self.fail(f"torques on {len(loaded)} members besides the input and the "
                             + ("fixed one" if train.second is None else "second given one")
                             + ": the balance of power gives one output's", "ask", "find")
-        if f"torque{held}" in find and not loaded:
+        if f"power{held}" in find and train.second is None:
+            raise self.fail(f"power{held} is asked of the fixed member {held}, which takes no "
+                            "power: ask the power of a turning member", "ask", "find")
+        if any(f"{k}{held}" in find for k in ("torque", "power")) and not loaded:
             raise self.fail(("the fixed member's" if train.second is None else
                              f"member {held}'s") + " holding torque needs the output's: ask "
-                            "the output's torque too", "ask", "find")
+                            "the output's torque or power too", "ask", "find")
         return tuple(find)
 
     @staticmethod
@@ -491,6 +496,8 @@ def ask_symbol(name: str) -> str:
     """"omega5/omega2" as the course writes it: ω5/ω2; "torque5" as T5."""
     if name.startswith("torque"):
         return f"T{name.removeprefix('torque')}"
+    if name.startswith("power"):
+        return f"P{name.removeprefix('power')}"
     if name.startswith("teeth"):
         return f"N{name.removeprefix('teeth')}"
     return "/".join(symbol(p) for p in name.split("/"))

@@ -41,8 +41,8 @@ def _exponent(x: Fraction) -> int:
 
 def refuse_still_ratios(ex: TrainExercise, *speeds: dict[int, Fraction]) -> None:
     """Refuse a ratio asked over a member that stands still, though not fixed (a reverted
-    train whose tooth products are equal holds its output still), and a torque asked of
-    such a member as the output (it takes no power, so the balance gives none)."""
+    train whose tooth products are equal holds its output still), and a torque or power
+    asked of such a member as the output (it takes no power, so the balance gives none)."""
     train = ex.train
     for q in ex.asks:
         parts = q.split("/")
@@ -52,9 +52,9 @@ def refuse_still_ratios(ex: TrainExercise, *speeds: dict[int, Fraction]) -> None
                 raise InputError(f"{q} divides by the speed of {train.label(m)}, which stands "
                                  "still in this train; ask a ratio over a turning member",
                                  file=train.source or None)
-        if q.startswith("torque"):
-            m = int(q.removeprefix("torque"))
+        if q.startswith(("torque", "power")):
+            m = int(q.removeprefix("torque").removeprefix("power"))
             if m not in (train.input_member, train.fixed) and any(s[m] == 0 for s in speeds):
                 raise InputError(f"{q} is asked of {train.label(m)}, which stands still in "
-                                 "this train and takes no power: ask the torque of a turning "
-                                 "member", file=train.source or None)
+                                 "this train and takes no power: ask it of a turning member",
+                                 file=train.source or None)

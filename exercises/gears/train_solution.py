@@ -19,7 +19,8 @@ from tarsim.constructions.gears.involute import InvoluteMesh, draw_involute_mesh
 from tarsim.constructions.gears.kutzbach import DRAWN, Kutzbach, draw_kutzbach, undrawable
 from tarsim.constructions.gears.tabular import TrainSpeeds, fraction_text, tabulate
 from tarsim.constructions.gears.torques import (balance, holder, input_torque, per_pi,
-                                                say_balance, torque_text)
+                                                power_at, power_text, say_balance,
+                                                say_powers, torque_text)
 from tarsim.constructions.narration import (numeral, numerals, phrase, significant, unit_words,
                                             words)
 from tarsim.constructions.reference.gear_mesh import (MeshReference, involute_miss, least_teeth,
@@ -55,6 +56,10 @@ class TrainQuantity:
     counts may agree."""
     over_pi: bool = False
     """True for a torque that is ``exact``/π (a power given, speeds in rpm)."""
+    times_pi: bool = False
+    """True for a power that is ``exact``·π (a torque given, speeds in rpm)."""
+    flow: str = ""
+    """A power's way: "in" to the train (the driver's) or "out" of it."""
 
     @property
     def passed(self) -> bool:
@@ -116,6 +121,10 @@ class TrainSolution(ChapterFiles):
                 out[name] = TrainQuantity(name, torques[m], torques_ref[m], si,
                                           "balance of power", over_pi=pi)
                 continue
+            if name.startswith("power"):
+                out[name] = self._power_quantity(int(name.removeprefix("power")), torques,
+                                                 torques_ref)
+                continue
             # (a copy of a planet turns as its planet; the reference solved the copy itself)
             listed = [int(p.removeprefix("omega")) for p in name.split("/")]
             parts = [self.exercise.member(n) for n in listed]
@@ -133,9 +142,20 @@ class TrainSolution(ChapterFiles):
     def output(self) -> int | None:
         """The member whose torque is asked besides the input's and the fixed one's."""
         t = self.train
-        return next((int(q.removeprefix("torque")) for q in self.exercise.asks
-                     if q.startswith("torque")
-                     and int(q.removeprefix("torque")) not in (t.input_member, t.fixed)), None)
+        asked = (int(q.removeprefix("torque").removeprefix("power"))
+                 for q in self.exercise.asks if q.startswith(("torque", "power")))
+        return next((m for m in asked if m not in (t.input_member, holder(t))), None)
+
+    def _power_quantity(self, m: int, torques: dict[int, Fraction],
+                        torques_ref: dict[int, Fraction]) -> TrainQuantity:
+        """Member ``m``'s power |T·ω| in W, beside the reference's torque times its Willis
+        speed."""
+        got, times_pi = power_at(self.train, torques[m], self.found.speeds[m])
+        ref, _ = power_at(self.train, torques_ref[m], self.reference[m])
+        si = float(got) * (math.pi if times_pi else 1.0)
+        flow = "in" if torques[m] * self.found.speeds[m] > 0 else "out"
+        return TrainQuantity(f"power{m}", got, ref, si, "balance of power",
+                             times_pi=times_pi, flow=flow)
 
     def _mesh_quantity(self, name: str) -> TrainQuantity:
         """A number read off the involute mesh, beside the formula's."""
@@ -293,6 +313,14 @@ class TrainSolution(ChapterFiles):
                                       f"{torque_text(q.reference, q.over_pi)})",
                                       method=q.method))
                 continue
+            if q.name.startswith("power"):
+                symbol = ask_symbol(q.name)
+                out.append(check_line(f"{symbol} = {power_text(q.exact, q.times_pi)} W "
+                                      f"{q.flow}", width=len(symbol) + 31, passed=q.passed,
+                                      against="(ΣT = 0, ΣTω = 0: "
+                                      f"{power_text(q.reference, q.times_pi)})",
+                                      method=q.method))
+                continue
             elif "/" in q.name:
                 value = f"{fraction_text(q.exact)} ({float(q.exact):.6g})"
             else:
@@ -312,7 +340,10 @@ class TrainSolution(ChapterFiles):
         unsized = [phrase("gears.uncoaxial", c0=c0, r0=significant(float(r0)), c=c,
                           r=significant(float(r))) for _, c0, r0, c, r in train.uncoaxial()]
         method = [numbered([*train.implied, *unsized, *self.found.steps,
-                            *say_balance(self.train, self.found.speeds, self.output)])]
+                            *say_balance(self.train, self.found.speeds, self.output),
+                            *say_powers(self.train, self.found.speeds, self.output,
+                                        [int(q.removeprefix("power")) for q in ex.asks
+                                         if q.startswith("power")])])]
         if self.found.xy:
             method += [Paragraph(phrase("md.other_form")), Bullets(self.found.xy)]
         out = [title(train.name, ex.description),
@@ -338,6 +369,8 @@ class TrainSolution(ChapterFiles):
             willis = _mesh_text(q.name, float(q.reference), self.mesh_reference)
         elif q.name.startswith("torque"):
             found, willis = torque_text(q.exact, q.over_pi), torque_text(q.reference, q.over_pi)
+        elif q.name.startswith("power"):
+            found, willis = power_text(q.exact, q.times_pi), power_text(q.reference, q.times_pi)
         else:
             found, willis = fraction_text(q.exact), fraction_text(q.reference)
         return (ask_symbol(q.name), found, willis, words("yes" if q.passed else "NO"),
@@ -408,7 +441,8 @@ class TrainSolution(ChapterFiles):
                  else self.train.name)
         out = {self._stem: draw_train_table(title, heads, rows, ruled=ruled, notes=notes)}
         # The shafts that leave it: the members a ratio or a torque is asked of.
-        ends = {int(n) for q in self.exercise.asks if "/" in q or q.startswith("torque")
+        ends = {int(n) for q in self.exercise.asks
+                if "/" in q or q.startswith(("torque", "power"))
                 for n in re.findall(r"\d+", q)}
         out["train"] = draw_train_schematic(self.train, self.train.name, tuple(sorted(ends)))
         if self.diagram is not None:
@@ -432,9 +466,15 @@ class TrainSolution(ChapterFiles):
                 reference["value"] = float(q.reference) / math.pi
                 entry["exact"], reference["exact"] = _plain(q.exact, True), _plain(
                     q.reference, True)
+            elif q.times_pi:                       # a power (T·n/30)·π: times π exactly
+                reference["value"] = float(q.reference) * math.pi
+                entry["exact"] = f"{_plain(q.exact)}*pi"
+                reference["exact"] = f"{_plain(q.reference)}*pi"
             elif q.name not in MESH_ASKS:          # drawn lengths and angles are not exact
                 entry["exact"] = _plain(q.exact)
                 reference["exact"] = _plain(q.reference)
+            if q.flow:
+                entry["unit"], entry["flow"] = "W", q.flow
             if speed:
                 entry["unit"] = self.train.units.speed
                 entry["rpm"] = (float(q.exact) if entry["unit"] == "rpm"

@@ -1,0 +1,133 @@
+"""Gear trains asked as the textbooks ask them: the power a member delivers (η·P_in at the
+output), and a planetary train's teeth from its speed ratio and the least tooth count. Each
+answer is held to the book's closed form: exact fractions, so a tolerance of 0."""
+
+from __future__ import annotations
+
+import json
+import math
+from fractions import Fraction
+
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from tarsim.constructions.errors import InputError
+from tarsim.exercises.catalog import load
+from tarsim.exercises.gears.train_file import parse_train
+from tarsim.exercises.gears.train_solution import solve_train
+
+F = Fraction
+
+PLANETARY = """name = "sun 2, planet 3, ring 1 fixed, arm 4"
+fixed = 1
+{top}
+[units]
+speed = "{unit}"
+
+[[gear]]
+number = 1
+{ring}
+
+[[gear]]
+number = 2
+{sun}
+
+[[gear]]
+number = 3
+{planet}
+carrier = 4
+
+[arm]
+number = 4
+
+[[mesh]]
+gears = [2, 3]
+
+[[mesh]]
+gears = [3, 1]
+kind = "internal"
+
+[input]
+{given}
+
+[ask]
+find = {find}
+"""
+
+
+def planetary(ring="teeth = 80", sun="teeth = 20", planet="teeth = 30", top="",
+              given="member = 2\nspeed = 1440\ntorque = 50", find='["power4"]', unit="rpm"):
+    return PLANETARY.format(ring=ring, sun=sun, planet=planet, top=top, given=given,
+                            find=find, unit=unit)
+
+
+# ----- the power a member puts in or takes out ----------------------------------------------------
+def test_gearbox_output_power():
+    """The textbook corpus's gear box (the bundled one): 7.5 kW in at the sun, η = 0.95, the
+    arm delivers 0.95 × 7500 = 7125 W exactly (the π of T = 30P/(πn) cancels against
+    ω = 2πn/60), and the sun puts in the 7500 W given."""
+    s = solve_train(load("gearbox-power-efficiency"))
+    p4 = s.quantities["power4"]
+    assert (p4.exact, p4.reference, p4.times_pi, p4.flow) == (F(7125), F(7125), False, "out")
+    assert p4.si == 7125.0
+
+
+def test_the_power_is_written_to_results_json(tmp_path):
+    """results.json gives the power in W, its exact fraction and its way out of the train."""
+    s = solve_train(load("gearbox-power-efficiency"))
+    s.write(tmp_path)
+    entry = json.loads((tmp_path / "results.json").read_text())["quantities"]["power4"]
+    assert (entry["value"], entry["exact"], entry["unit"], entry["flow"]) == (
+        7125.0, "7125", "W", "out")
+    assert entry["reference"]["value"] == 7125.0
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.integers(12, 60), st.integers(12, 40), st.integers(1, 3000), st.integers(1, 500),
+       st.integers(50, 100), st.sampled_from(["rpm", "rad/s"]))
+def test_the_output_power_is_the_efficiency_times_the_input_s(sun, planet, speed, torque,
+                                                               percent, unit):
+    """P_out = η·T_in·ω_in whatever the teeth; with speeds in rpm ω = 2πn/60, so the power
+    of a torque given in N·m is (T·n/30)·π, kept exact as a fraction times π."""
+    ring = sun + 2 * planet
+    eta = F(percent, 100)
+    text = planetary(f"teeth = {ring}", f"teeth = {sun}", f"teeth = {planet}",
+                     top=f"efficiency = {percent / 100}",     # read as written: η exact
+                     given=f"member = 2\nspeed = {speed}\ntorque = {torque}",
+                     find='["power4", "power2"]', unit=unit)
+    q = solve_train(parse_train(text, "t.toml")).quantities
+    p_in = F(torque * speed) / (30 if unit == "rpm" else 1)
+    assert q["power2"].exact == p_in and q["power2"].flow == "in"
+    assert q["power4"].exact == eta * p_in and q["power4"].flow == "out"
+    assert q["power4"].times_pi is (unit == "rpm")
+    # the SI value: the exact fraction, times π in rpm; a rounding or two of a float
+    want = float(eta * p_in) * (math.pi if unit == "rpm" else 1.0)
+    assert q["power4"].si == pytest.approx(want, rel=1e-15)
+    assert q["power4"].passed and q["power2"].passed
+
+
+def test_the_power_of_a_second_given_member_follows_the_balance():
+    """Sun and arm both given, no losses: the ring's power is what the sun's and the arm's
+    leave, T·ω summing to zero, each T from T2 : T1 : T4 = N2 : N1 : −(N2 + N1)."""
+    text = planetary(given="member = 2\nspeed = 1000\ntorque = 10",
+                     find='["power1", "power4"]').replace("fixed = 1\n", "")
+    text = text.replace("[input]\nmember = 2", "[[input]]\nmember = 2").replace(
+        "\n[ask]", "\n[[input]]\nmember = 4\nspeed = 100\n\n[ask]")
+    q = solve_train(parse_train(text, "t.toml")).quantities
+    w4, w2 = F(100), F(1000)
+    w1 = w4 - F(20, 80) * (w2 - w4)          # the ring: (ω1 − ω4)/(ω2 − ω4) = −N2/N1
+    t1, t4 = F(10 * 80, 20), -F(10 * 100, 20)
+    assert q["power1"].exact == abs(t1 * w1) / 30 and q["power4"].exact == abs(t4 * w4) / 30
+    assert q["power1"].times_pi and q["power4"].passed
+
+
+def test_the_fixed_member_s_power_is_refused():
+    with pytest.raises(InputError, match=r"^t\.toml:\d+: \[ask\.find\] power1 is asked of "
+                                         r"the fixed member 1, which takes no power"):
+        parse_train(planetary(find='["power4", "power1"]'), "t.toml")
+
+
+def test_a_power_needs_the_input_s_torque_or_power():
+    with pytest.raises(InputError, match=r"cannot find 'power4' without the input's torque"):
+        parse_train(planetary(given="member = 2\nspeed = 100"), "t.toml")
