@@ -18,6 +18,9 @@ The rod's own diagram gives the rest. CM is the rod's velocity image (V_PC = ω�
 point D of the rod's line, CD = t·CP, has its image d on CM with Cd = t·CM, and V_D =
 ω·Od; ω of the rod is ω·CM/CP. CN is its acceleration image, so d′ on CN with Cd′ =
 t·CN gives a_D = ω²·d′O; α of the rod is ω²·QN/CP, QN being the tangential part.
+A point D off the rod's line has its image where the rod's does: the triangle CMd on CM
+(CNd′ on CN) is similar to the rod's own CPD, so d is cut by the lines from C and M at the
+rod's angles PCD and CPD (Khurmi: "the image of a link is similar to the link").
 """
 
 from __future__ import annotations
@@ -71,13 +74,14 @@ def klein_fits(work, ask) -> bool:
     return parts is not None and ask.link == rod_of(work.mechanism, parts[1], parts[2])
 
 
-def _along_rod(m: Mechanism, c: str, p: str, point: str) -> float:
-    """CD / CP for a point D of the rod's line (signed: negative beyond C).
+def _along_rod(m: Mechanism, c: str, p: str, point: str) -> float | None:
+    """CD / CP for a point D of the rod's line (signed: negative beyond C); None for a point
+    of the rod off its line.
 
     Raises
     ------
     InputError
-        If the point is not a point of the rod, or lies off the rod's line.
+        If the point is not a point of the rod.
     """
     rod = m.link(rod_of(m, c, p))
     if point not in rod.names:
@@ -90,8 +94,7 @@ def _along_rod(m: Mechanism, c: str, p: str, point: str) -> float:
     length2 = ux * ux + uy * uy
     # off the line by more than the rounding of the link's own coordinates
     if abs((dx - cx) * uy - (dy - cy) * ux) > 1e-12 * length2:
-        raise InputError(f"Klein's construction finds points on the rod's line {c}{p}; "
-                         f"{point} lies off it: ask it by the polygons")
+        return None
     return ((dx - cx) * ux + (dy - cy) * uy) / length2
 
 
@@ -116,6 +119,8 @@ def answer_klein(work, ask) -> Answer:
     w = d.omega
     if isinstance(ask, (A.AngularVelocity, A.AngularAcceleration)):
         return _rod_rate(asm, ask, w, o, c, p)
+    if t is None:
+        return _rod_plate_point(asm, ask, w, (o, c, p), point, ref)
     if point != p:
         return _rod_point(asm, ask, w, (o, c, p), point, t, ref)
     (ox, oy) = asm.xy(o)
@@ -175,6 +180,52 @@ def _rod_point(asm, ask, w: float, parts: tuple[str, str, str], point: str, t: f
         method = "Klein's construction (a = ω²·d′O, d′ on CN)"
     cond = min(asm[r].conditioning for r in (ref, image, asm.points[c]))
     return Answer(ask, value, cond, method, refs=("kl:OCM", ref, f"{ref}:O"),
+                  figures=(KLEIN_FIGURE,))
+
+
+def _turn(asm, vertex: str, a: str, b: str) -> float:
+    """The signed angle (rad, counter-clockwise) from the ray vertex→a to vertex→b."""
+    (vx, vy), (ax, ay), (bx, by) = asm.xy(vertex), asm.xy(a), asm.xy(b)
+    ux, uy, wx, wy = ax - vx, ay - vy, bx - vx, by - vy
+    return math.atan2(ux * wy - uy * wx, ux * wx + uy * wy)
+
+
+def _rod_plate_point(asm, ask, w: float, parts: tuple[str, str, str], point: str,
+                     image: str) -> Answer:
+    """A point D of the rod off its line: its image d on the side CM (velocity) or d′ on
+    CN (acceleration) makes the triangle C·M·d similar to the rod's C·P·D, so it lies where
+    the line from C at the angle PCD to CM cuts the line from M at the angle CPD to MC.
+    When the side CM has shrunk to C (the rod does not turn) d is C itself."""
+    o, c, p = parts
+    velocity = isinstance(ask, A.Velocity)
+    x = point.lower() + ("" if velocity else "′")
+    ref, side = f"kl:{x}", "M" if velocity else "N"
+    if ref not in asm:
+        at_c, at_p = _turn(asm, c, p, point), _turn(asm, p, c, point)
+        span = math.dist(asm.xy(c), asm.output(image).xy)
+        said = phrase("klein.plate_v" if velocity else "klein.plate_a", c=c, p=p, point=point,
+                      x=x, o=o, side=side, at_c=Number(abs(math.degrees(at_c)), ".4g"),
+                      at_p=Number(abs(math.degrees(at_p)), ".4g"))
+        if span <= 1e-12 * asm.size:
+            asm.draw(ref, "mark", asm.points[c], label=x, phrase=said)
+        else:
+            asm.draw(f"{ref}:c", "rotate_about", image, asm.points[c], angle=at_c)
+            asm.draw(f"{ref}:cl", "line_through", asm.points[c], f"{ref}:c")
+            asm.draw(f"{ref}:m", "rotate_about", asm.points[c], image, angle=at_p)
+            asm.draw(f"{ref}:ml", "line_through", image, f"{ref}:m")
+            asm.draw(ref, "intersect_lines", f"{ref}:cl", f"{ref}:ml", label=x, phrase=said)
+        ends = (asm.points[o], ref) if velocity else (ref, asm.points[o])   # Od; d′O
+        asm.draw(f"{ref}:O", "join", *ends, kind=Kind.LINE, role=Role.RESULT)
+    (ox, oy), (x_, y_) = asm.xy(o), asm.output(ref).xy
+    if velocity:
+        value = vector_value(-w * (y_ - oy), w * (x_ - ox))          # ω k × Od
+        method = "Klein's construction (V = ω·Od, CMd similar to the rod)"
+    else:
+        value = vector_value(-w * w * (x_ - ox), -w * w * (y_ - oy))  # ω² d′O
+        method = "Klein's construction (a = ω²·d′O, CNd′ similar to the rod)"
+    cond = min(asm[r].conditioning for r in (ref, image, asm.points[c]))
+    return Answer(ask, value, cond, method,
+                  refs=("kl:OCM", ref, f"{ref}:O"),
                   figures=(KLEIN_FIGURE,))
 
 

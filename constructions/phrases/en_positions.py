@@ -118,6 +118,12 @@ PHRASES: dict[str, str] = {
                      "ω·{o}{x}.",
     "klein.point_a": "Lay off {c}{x} = {ratio} × {c}N along {c}N, as {c}{point} = {ratio} × "
                      "{c}{p} on the rod: a_{point} = ω²·{x}{o}, from {x} toward {o}.",
+    "klein.plate_v": "On {c}M draw {c}M{x} similar to the rod's {c}{p}{point}: from {c} at "
+                     "{at_c}° to {c}M, from M at {at_p}° to M{c}; {o}{x} is V_{point} turned "
+                     "through 90°, V_{point} = ω·{o}{x}.",
+    "klein.plate_a": "On {c}N draw {c}N{x} similar to the rod's {c}{p}{point}: from {c} at "
+                     "{at_c}° to {c}N, from N at {at_p}° to N{c}; a_{point} = ω²·{x}{o}, from "
+                     "{x} toward {o}.",
     "klein.acceleration": "It cuts the line of stroke at N: {o}{c}QN is the acceleration "
                           "polygon turned through 180°, so a_{p} = ω²·N{o}, from N toward {o} "
                           "(a_{c} = ω²·{o}{c}, aⁿ_{p}{c} = ω²·{c}Q, aᵗ_{p}{c} = ω²·QN).",

@@ -124,6 +124,10 @@ WORDS: dict[str, str] = {
     "Klein's construction (a = ω²·NO)": "ترسیم کلاین (a = ω²·NO)",
     "Klein's construction (V = ω·Od, d on CM)": "ترسیم کلاین (V = ω·Od، d روی CM)",
     "Klein's construction (a = ω²·d′O, d′ on CN)": "ترسیم کلاین (a = ω²·d′O، d′ روی CN)",
+    "Klein's construction (V = ω·Od, CMd similar to the rod)":
+        "ترسیم کلاین (V = ω·Od، مثلث روی CM متشابه با میله)",
+    "Klein's construction (a = ω²·d′O, CNd′ similar to the rod)":
+        "ترسیم کلاین (a = ω²·d′O، مثلث روی CN متشابه با میله)",
     "Klein's construction (ω = ω₂·CM/CP)": "ترسیم کلاین (ω = ω₂·CM/CP)",
     "Klein's construction (α = ω₂²·QN/CP)": "ترسیم کلاین (α = ω₂²·QN/CP)",
     "circle diagram": "دایرهٔ کمکی",
