@@ -43,7 +43,8 @@ WORDS: dict[str, str] = {
     "primary force": "نیروی اولیه", "primary couple": "کوپل اولیه",
     "secondary force": "نیروی ثانویه", "secondary couple": "کوپل ثانویه",
     "closed: balanced": "بسته: متوازن",
-    "{size} {unit} unbalanced": "{size} {unit} نامیزان",
+    "{size} {unit} unbalanced, greatest at θ₁ = {angle}°":
+        "{size} {unit} نامیزان، بیشینه در θ₁ = {angle} درجه",
     "couples about the central plane; secondary vectors along the cranks at 2θᵢ, each m·r/n":
         "کوپل\u200cها حول صفحهٔ میانی؛ بردارهای ثانویه در امتداد لنگ\u200cها با زاویهٔ 2θᵢ، "
         "هر یک m·r/n",
@@ -133,6 +134,11 @@ WORDS: dict[str, str] = {
         "جرم متعادل‌کننده روبه‌روی لنگ: B·b = (m_rev + c·m)·r = {product} kg·m، پس {mass} "
         "kg در شعاع {radius}",
     "{kind}: balanced (its polygon closes)": "{kind}: متوازن (چندضلعی آن بسته است)",
+    "{kind} greatest with crank 1 at {angle}° from the i.d.c., and every {every}° on":
+        "{kind} در بیشترین مقدار خود وقتی لنگ ۱ در {angle}° از نقطهٔ مرگ داخلی است، و هر "
+        "{every}° پس از آن",
+    "the greatest secondary force: {most} N, at θ = 0°, 90°, 180° and 270°":
+        "بیشترین نیروی ثانویه: {most} N، در θ = ۰°، ۹۰°، ۱۸۰° و ۲۷۰°",
     "{kind}: unbalanced, {left} {unit} at most (the vector sum: {value} {unit})":
         "{kind}: نامیزان، حداکثر {left} {unit} (جمع برداری: {value} {unit})",
 }

@@ -23,9 +23,8 @@ from dataclasses import dataclass
 from ..balancing.rotor import Engine, Mass
 
 __all__ = ["EngineSums", "balance_product", "quadrant_angle", "resultant", "single_cylinder",
-           "engine_sums", "one_axial_plane", "open_residual", "open_rotor_roots", "polygon_roots",
-           "two_planes",
-           "unbalanced_resultant"]
+           "engine_greatest_at", "engine_sums", "one_axial_plane", "open_residual",
+           "open_rotor_roots", "polygon_roots", "two_planes", "unbalanced_resultant"]
 
 
 def resultant(masses: tuple[Mass, ...] | list[Mass]) -> tuple[float, float]:
@@ -125,6 +124,34 @@ def engine_sums(e: Engine, reference: float | None = None) -> EngineSums:
     twice = [2 * t for t in e.cranks]
     return EngineSums(f * size(e.cranks, ones), f * size(e.cranks, arms),
                       f / n * size(twice, ones), f / n * size(twice, arms))
+
+
+def engine_greatest_at(e: Engine, reference: float | None = None) -> dict[str, float | None]:
+    """Crank 1's angle from the inner dead centre (degrees) where each unbalanced primary
+    and secondary force and couple is greatest, or None where its sum vanishes.
+
+    At a turn θ of the shaft cylinder i's primary force is m·ω²·r·cos(θ + θᵢ), so the sum is
+    Re(R·e^{iθ}) = |R|·cos(θ + arg R), R = Σ aᵢ·e^{iθᵢ} (aᵢ 1 or the arm lᵢ): greatest at
+    θ = −arg R, every 180°, with crank 1 then at θ₁ − arg R. The secondary sum is
+    |S|·cos(2θ + arg S), S = Σ aᵢ·e^{2iθᵢ}: greatest every 90° from θ = −arg S / 2. The
+    smallest such crank-1 angle, in [0°, 180°) or [0°, 90°), is returned."""
+    if reference is None:
+        reference = (min(e.planes) + max(e.planes)) / 2
+    arms = [p - reference for p in e.planes]
+    ones = [1.0] * len(e.cranks)
+    out: dict[str, float | None] = {}
+    for kind, order, weights in (("primary force", 1, ones), ("primary couple", 1, arms),
+                                 ("secondary force", 2, ones), ("secondary couple", 2, arms)):
+        x = math.fsum(a * math.cos(order * t) for t, a in zip(e.cranks, weights))
+        y = math.fsum(a * math.sin(order * t) for t, a in zip(e.cranks, weights))
+        size = math.fsum(abs(a) for a in weights)
+        if math.hypot(x, y) <= 1e-12 * size:
+            out[kind] = None
+            continue
+        period = 180.0 / order
+        out[kind] = (math.degrees(e.cranks[0]) - math.degrees(math.atan2(y, x)) / order) \
+            % period
+    return out
 
 
 TANGENT = 1e-9

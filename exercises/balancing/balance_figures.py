@@ -51,8 +51,9 @@ def balance_figures(s: BalanceSolution) -> dict[str, Figure]:
         left = p.left(kind) * e.speed ** 2
         word = "N·m" if kind.endswith("couple") else "N"
         reading = (words("closed: balanced"), "", "") if kind in p.balanced else (
-            words("{size} {unit} unbalanced", size=numerals(f"{left:.4g}"),
-                  unit=unit_words(word)), "", "")
+            words("{size} {unit} unbalanced, greatest at θ₁ = {angle}°",
+                  size=numerals(f"{left:.4g}"), unit=unit_words(word),
+                  angle=numerals(f"{s.greatest_at[kind]:.1f}")), "", "")
         out[kind.replace(" ", "-")] = draw_polygon(
             p.construction, p.tips[kind], p.closing[kind], f"{ex.name}: {words(kind)}",
             "kg·m²" if kind.endswith("couple") else "kg·m", reading,

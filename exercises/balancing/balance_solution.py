@@ -20,7 +20,8 @@ from tarsim.constructions.balancing.unknowns import Closure, close_rotor
 from tarsim.constructions.balancing.polygons import Balance, draw_balance, rounding
 from tarsim.constructions.units import LENGTH_UNITS
 from tarsim.constructions.narration import numeral, phrase, words
-from tarsim.constructions.reference.balance import (balance_product, engine_sums, one_axial_plane,
+from tarsim.constructions.reference.balance import (balance_product, engine_greatest_at,
+                                                    engine_sums, one_axial_plane,
                                                     quadrant_angle, resultant, single_cylinder,
                                                     two_planes, unbalanced_resultant)
 from ..checked import Checked
@@ -124,6 +125,46 @@ class BalanceSolution(ChapterFiles):
                 miss = abs(self.engine_polygons.left(kind) * w2 - values[kind]) / (size * w2)
                 if miss > AGREE:
                     out.append((kind, miss))
+            out += self._greatest_misses(e)
+        return out
+
+    def _greatest_misses(self, e) -> list[tuple[str, float]]:
+        """Each drawn crank angle of a greatest force or couple against the reference's
+        (a turn's fraction; both or neither where the polygon closes)."""
+        out = []
+        want = engine_greatest_at(e)
+        for kind, got in self.greatest_at.items():
+            ref = want[kind]
+            period = 180.0 if kind.startswith("primary") else 90.0
+            miss = math.inf if ref is None else abs(math.remainder(got - ref, period)) / 360.0
+            if miss > AGREE * self.greatest_growth(kind):
+                out.append((f"{kind}'s crank angle", miss))
+        return out
+
+    def greatest_growth(self, kind: str) -> float:
+        """How much a short closing side magnifies the rounding of its angle: its vectors'
+        sizes over its length."""
+        p, e = self.engine_polygons, self.exercise.engine
+        size = max(1.0, max(abs(z) for z in e.planes)) * e.reciprocating * e.crank
+        return size / p.left(kind)
+
+    @cached_property
+    def greatest_at(self) -> dict[str, float]:
+        """Crank 1's angle from the i.d.c. (degrees) where each unbalanced force or couple of
+        an in-line engine is greatest, read off its polygon's closing side: the side, from
+        the last tip to the pole, is −R of the turning resultant R, and the sum along the
+        stroke, |R|·cos(θ + arg R), is greatest at θ = −arg R (secondary: 2θ = −arg S),
+        every 180° (90°). The least such angle; none for a polygon that closes."""
+        p, e = self.engine_polygons, self.exercise.engine
+        out = {}
+        for kind in engine_kinds(e):
+            if kind in p.balanced:
+                continue
+            seg = p.construction.output(p.closing[kind])
+            (sx, sy), (ex, ey) = seg.start.xy, seg.end.xy
+            order = 1 if kind.startswith("primary") else 2
+            arg = math.degrees(math.atan2(ey - sy, ex - sx)) - 180.0
+            out[kind] = (math.degrees(e.cranks[0]) - arg / order) % (180.0 / order)
         return out
 
     def placed(self, p) -> tuple[tuple[float, float], float, float]:
@@ -252,6 +293,11 @@ class BalanceSolution(ChapterFiles):
                        words("{kind}: unbalanced, {left} {unit} at most (the vector sum: "
                              "{value} {unit})", kind=words(kind), left=numeral(left), unit=unit,
                              value=numeral(value)))
+            if not balanced:
+                out.append(words("{kind} greatest with crank 1 at {angle}° from the i.d.c., "
+                                 "and every {every}° on", kind=words(kind),
+                                 angle=numeral(self.greatest_at[kind], ".2f"),
+                                 every=numeral(180 if kind.startswith("primary") else 90)))
         return out
 
     def _cylinder_lines(self, e) -> list[str]:
@@ -276,6 +322,9 @@ class BalanceSolution(ChapterFiles):
                words("at most {along} N along (θ = 0°, 180°) and {across} N across "
                      "(θ = 90°, 270°)", along=numeral((1 - e.balanced) * f),
                      across=numeral(e.balanced * f))]
+        if e.rod is not None:
+            out.append(words("the greatest secondary force: {most} N, at θ = 0°, 90°, 180° "
+                             "and 270°", most=numeral(f / (e.rod / e.crank))))
         held = self.cylinder_balance
         if held is not None:
             product, mass, radius = held
@@ -340,6 +389,12 @@ class BalanceSolution(ChapterFiles):
                 q[kind.replace(" ", "_")] = Checked(
                     {"value": self.engine_polygons.left(kind) * ex.engine.speed ** 2},
                     {"value": value}, method=f"{kind} polygon")
+            want = engine_greatest_at(ex.engine)
+            for kind, got in self.greatest_at.items():
+                period = 180.0 if kind.startswith("primary") else 90.0
+                q[f"{kind.replace(' ', '_')}_at"] = Checked(
+                    {"value": got, "unit": "deg", "every_deg": period},
+                    {"value": want[kind]}, method=f"{kind} polygon's closing side")
         return q
 
     def _cylinder_checked(self, e) -> dict[str, Checked]:
@@ -358,8 +413,12 @@ class BalanceSolution(ChapterFiles):
             {"value": unbalanced_resultant(e, e.at)}, method="components along and across")
         # The greatest over a turn: (1 − c)·m·ω²·r at dead centre, or c·m·ω²·r across.
         c = e.balanced
-        q["unbalanced_max"] = Checked({"value": max(1 - c, c) * f, "unit": "N",
-                                       "at_deg": [0.0, 180.0] if 1 - c >= c else [90.0, 270.0]})
+        at = [0.0, 180.0] if 1 - c >= c else [90.0, 270.0]
+        q["unbalanced_max"] = Checked({"value": max(1 - c, c) * f, "unit": "N", "at_deg": at})
+        q["unbalanced_max_at"] = Checked({"value": at[0], "unit": "deg", "every_deg": 180.0})
+        if e.rod is not None:   # m·ω²·r/n where cos 2θ = ±1
+            q["secondary_max"] = Checked({"value": f / (e.rod / e.crank), "unit": "N",
+                                          "at_deg": [0.0, 90.0, 180.0, 270.0]})
         if balance_product(e) > 0:
             q["balance_mr"] = Checked({"value": balance_product(e), "unit": "kg·m"})
         held = self.cylinder_balance
@@ -383,13 +442,17 @@ class BalanceSolution(ChapterFiles):
         found, ref = (mass, math.hypot(*want) / given)
         where = {"none_needed": True} if none else {"angle_deg": angle_deg(v)}
         there = {} if none else {"angle_deg": angle_deg(want)}
+        # The angle as a quantity of its own, as the books ask "its angular position" (a
+        # plane that needs no mass has none).
+        angle = {} if none else {f"angle_{p.name}": Checked(
+            {"value": angle_deg(v), "unit": "deg"}, {"value": angle_deg(want)}, method=method)}
         if p.radius is not None:
             return {f"mass_{p.name}": Checked(
                 {"value": found, "unit": "kg", "radius": p.radius, **where},
-                {"value": ref, **there}, method=method)}
+                {"value": ref, **there}, method=method)} | angle
         return {f"radius_{p.name}": Checked(
             {"value": radius, "unit": "m", "mass": p.mass, **where},
-            {"value": ref, **there}, method=method)}
+            {"value": ref, **there}, method=method)} | angle
 
     @property
     def figures(self) -> dict[str, Any]:

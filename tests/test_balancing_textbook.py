@@ -1,0 +1,147 @@
+"""Balancing as the textbooks ask it: a balancing mass's angle, the greatest unbalanced force
+or couple of an engine and the crank angle where it comes, each held to its closed form.
+
+- Two planes between the masses (planes measured from A: X 0.1, B 0.3, C 0.4, Y 0.5, D 0.7 m;
+  A, B, C, D 200, 300, 400, 200 kg at 80, 70, 60, 80 mm, 0°, 45°, 115°, 235°): couples about
+  X by hand, then forces; the books read 184 kg at 346° in Y and 356 kg at 213° in X off
+  their drawings.
+- An in-line engine's sum along the stroke at a turn θ is Re(R·e^{iθ}), R the polygon's
+  resultant: greatest, |R|, at θ = −arg R (every 180°; the secondary's every 90° at
+  2θ = −arg S). The three-cylinder engine with cranks 0°, 120°, 240° in planes 0, a, 2a has
+  a primary couple about the centre ∝ a·(cos(θ + 240°) − cos θ) = −√3·a·sin(θ + 120°),
+  greatest at θ = 150°.
+Tolerances: sums of a handful of products of exact data, 1e-12 relative (1e-9 degree for an
+angle of a closing side a few hundred times shorter than its vectors).
+"""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from tarsim.exercises.balancing.balance_solution import solve_balance
+from tarsim.exercises.balancing.rotor_file import parse_balance
+
+TWO_PLANES = """
+[units]
+length = "mm"
+speed = "rpm"
+[rotor]
+speed = 100
+[[mass]]
+name = "A"
+mass = 200
+radius = 80
+angle = 0
+plane = 0
+[[mass]]
+name = "B"
+mass = 300
+radius = 70
+angle = 45
+plane = 300
+[[mass]]
+name = "C"
+mass = 400
+radius = 60
+angle = 115
+plane = 400
+[[mass]]
+name = "D"
+mass = 200
+radius = 80
+angle = 235
+plane = 700
+[[balance]]
+name = "X"
+plane = 100
+radius = 100
+[[balance]]
+name = "Y"
+plane = 500
+radius = 100
+"""
+
+
+def _cis(deg: float) -> complex:
+    return complex(math.cos(math.radians(deg)), math.sin(math.radians(deg)))
+
+
+def test_balancing_masses_between_the_planes_give_their_angles():
+    """(m r l)_Y = −Σ mᵢrᵢlᵢ about X, (m r)_X = −Σ mᵢrᵢ − (m r)_Y; each over 0.1 m."""
+    couple = -1.6 + 4.2 * _cis(45) + 7.2 * _cis(115) + 9.6 * _cis(235)
+    force = 16 + 21 * _cis(45) + 24 * _cis(115) + 16 * _cis(235)
+    in_y = -couple / 0.4
+    in_x = -force - in_y
+    q = solve_balance(parse_balance(TWO_PLANES, "t.toml")).results["quantities"]
+    for plane, v in (("X", in_x), ("Y", in_y)):
+        assert q[f"mass_{plane}"]["value"] == pytest.approx(abs(v) / 0.1, rel=1e-12)
+        want = math.degrees(math.atan2(v.imag, v.real)) % 360
+        assert q[f"angle_{plane}"]["value"] == pytest.approx(want, rel=1e-12)
+        assert q[f"angle_{plane}"]["unit"] == "deg"
+    assert round(q["mass_Y"]["value"]) == 184 and round(q["angle_Y"]["value"]) == 347
+    assert round(q["angle_X"]["value"]) == 213
+
+
+def _engine(cranks, planes, rod="rod = 400") -> str:
+    rows = "".join(f"[[cylinder]]\ncrank = {c}\nplane = {p}\n" for c, p in zip(cranks, planes))
+    return (f'[units]\nlength = "mm"\nspeed = "rpm"\n[engine]\nspeed = 1200\ncrank = 100\n'
+            f"{rod}\nreciprocating = 20\n{rows}")
+
+
+def test_three_cylinders_greatest_primary_couple_with_crank_1_at_150_degrees():
+    """m·r = 2 kg·m, a = 0.4 m, ω = 40π: the couples √3·a·m·ω²·r and that over n = 4; the
+    primary greatest at 150° (−√3·a·sin(θ + 120°) = ±√3·a), the secondary, ∝
+    −a·cos 2θ + a·cos(2θ + 480°) = −√3·a·sin(2θ + 60°), at 2θ + 60° = 90°: 15°."""
+    q = solve_balance(parse_balance(_engine((0, 120, 240), (0, 400, 800)), "e.toml")
+                      ).results["quantities"]
+    f = 20 * 0.1 * (40 * math.pi) ** 2
+    assert q["primary_couple"]["value"] == pytest.approx(math.sqrt(3) * 0.4 * f, rel=1e-12)
+    assert q["primary_couple_at"]["value"] == pytest.approx(150.0, abs=1e-9)
+    assert q["secondary_couple_at"]["value"] == pytest.approx(15.0, abs=1e-9)
+    assert q["primary_couple_at"]["every_deg"] == 180.0
+    assert "primary_force_at" not in q                   # its polygon closes: no greatest
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.lists(st.tuples(st.integers(0, 359), st.integers(-1000, 1000)), min_size=2,
+                max_size=6, unique_by=lambda c: c[1]))
+def test_each_greatest_is_where_the_sum_along_the_stroke_reaches_its_size(cylinders):
+    """At the crank angle given, the sum along the stroke, Σ aᵢ·cos(k·(θ + θᵢ)) with θ the
+    shaft's turn (crank 1's angle less θ₁), is ± the polygon's greatest, to rounding (the
+    sum of |aᵢ| over a million: the closing side's angle is read to its rounding)."""
+    cranks, planes = zip(*cylinders)
+    s = solve_balance(parse_balance(_engine(cranks, planes), "e.toml"))
+    q = s.results["quantities"]
+    e = s.exercise.engine
+    centre = (min(e.planes) + max(e.planes)) / 2
+    w2 = e.reciprocating * e.crank * e.speed ** 2
+    for kind in ("primary_force", "primary_couple", "secondary_force", "secondary_couple"):
+        if f"{kind}_at" not in q:
+            continue
+        k = 1 if kind.startswith("primary") else 2
+        arms = [1.0 if kind.endswith("force") else z - centre for z in e.planes]
+        turn = math.radians(q[f"{kind}_at"]["value"]) - e.cranks[0]
+        along = w2 / (1 if k == 1 else e.rod / e.crank) * math.fsum(
+            a * math.cos(k * (turn + t)) for a, t in zip(arms, e.cranks))
+        size = w2 * math.fsum(abs(a) for a in arms)
+        assert abs(along) == pytest.approx(q[kind]["value"], abs=1e-9 * size), kind
+
+
+def test_a_single_cylinder_gives_its_greatest_secondary_and_where_the_force_left_peaks():
+    """m·ω²·r/n with n = 4.5 (30 kg, 100 mm, 600 rpm); 60 % balanced leaves c·m·ω²·r across
+    the stroke, greater than (1 − c)·m·ω²·r along it, so the greatest is at 90°; 30 %
+    balanced, at 0°."""
+    text = ('[units]\nlength = "mm"\nspeed = "rpm"\n[engine]\nspeed = 600\ncrank = 100\n'
+            "rod = 450\nreciprocating = 30\nbalanced = 0.6\nat = 30\n")
+    q = solve_balance(parse_balance(text, "e.toml")).results["quantities"]
+    f = 30 * 0.1 * (20 * math.pi) ** 2
+    assert q["secondary_max"]["value"] == pytest.approx(f / 4.5, rel=1e-12)
+    assert q["unbalanced_max_at"]["value"] == 90.0
+    q = solve_balance(parse_balance(text.replace("0.6", "0.3"), "e.toml")).results["quantities"]
+    assert q["unbalanced_max_at"]["value"] == 0.0
+    assert q["unbalanced_max"]["value"] == pytest.approx(0.7 * f, rel=1e-12)
+
