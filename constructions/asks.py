@@ -266,7 +266,8 @@ class LeastVelocity(Ask):
     """The point of link ``link``'s line with the least velocity, and that velocity: the
     foot of the perpendicular from the link's instant centre I_1k. The line is ``line``,
     two of the link's points, the first the one its distance is measured from; or, with
-    None, the line all the link's points lie on (a rod, with any point carried on it)."""
+    None, the line all the link's points lie on (a rod, with any point carried on it), or
+    for a plate (points not on one line) the plate their outline bounds."""
 
     link: int
     line: tuple[str, str] | None = None
@@ -524,7 +525,7 @@ def ask_names(mech: Mechanism) -> set[str]:
     out |= {f"V_{p}/V_{q}" for p in moving for q in moving if p != q}
     out |= {f"omega{a}/omega{b}" for a in nums for b in nums if a != b and 1 not in (a, b)}
     out |= {f"ma_{n}" for n in nums if n not in (1, mech.drive.link)}
-    out |= {f"Vmin_{k.number}" for k in mech.links if k.number != 1 and on_one_line(k.points)}
+    out |= {f"Vmin_{k.number}" for k in mech.links if k.number != 1}
     out |= {LeastVelocity(k.number, (p, q)).name for k in mech.links if k.number != 1
             for p in k.names for q in k.names if p != q and "_" not in p + q}
     out |= {f"rub_{p}" for p in mech.point_names if len(mech.links_at(p)) == 2}

@@ -180,6 +180,8 @@ def reading(work, ask) -> Expected:
         # the velocity is square to the line's own motion, found without any centre.
         from .linkages.readings import least_line
 
+        if ask.line is None and not A.on_one_line(m.link(ask.link).points):
+            return _least_on_plate(work, ask)
         a, b = least_line(m, ask)
         (ax, ay), (bx, by) = kin.points[a], kin.points[b]
         va, vb = (solver.point_velocity(kin, m, ask.link, n) for n in (a, b))
@@ -210,6 +212,47 @@ def reading(work, ask) -> Expected:
                                                *kin.slide_rates[rod[2]].direction)})
     b, a, o = (kin.points[n] for n in transmission_pin(m))
     return Expected({"value": angle_at(b, a, o)})
+
+
+def _least_on_plate(work, ask: A.LeastVelocity) -> Expected:
+    """The slowest point of a plate, from the solver's velocities alone: |V(P)| = |ω|·|P −
+    P*| is least at P* = A + k × V_A / ω when P* lies in a triangle of the link's points;
+    else on the segment between two of them where the quadratic |V(A + t·(B − A))|² is
+    least for t in [0, 1] (every segment lies within the plate, and its sides are among
+    them)."""
+    m, kin, k = work.mechanism, work.kinematics, ask.link
+    names, w = m.link(k).names, kin.omegas[k]
+    xy = {n: kin.points[n] for n in names}
+    vel = {n: solver.point_velocity(kin, m, k, n) for n in names}
+    (ax, ay), (vx, vy) = xy[names[0]], vel[names[0]]
+    best = None
+    if w != 0.0:
+        star = (ax - vy / w, ay + vx / w)
+        for p, q, r in combinations(names, 3):
+            d = _area(xy[p], xy[q], xy[r])
+            parts = (_area(star, xy[q], xy[r]), _area(xy[p], star, xy[r]),
+                     _area(xy[p], xy[q], star))
+            if d != 0.0 and all(part / d >= 0.0 for part in parts):
+                best = (0.0, star)
+                break
+    if best is None:
+        for p, q in combinations(names, 2):
+            (va, vb), (pa, pb) = (vel[p], vel[q]), (xy[p], xy[q])
+            dx, dy = vb[0] - va[0], vb[1] - va[1]
+            t = min(1.0, max(0.0, -(va[0] * dx + va[1] * dy) / (dx * dx + dy * dy)))
+            speed = math.hypot(va[0] + t * dx, va[1] + t * dy)
+            if best is None or speed < best[0]:
+                best = (speed, (pa[0] + t * (pb[0] - pa[0]), pa[1] + t * (pb[1] - pa[1])))
+    speed, point = best
+    near = min(names, key=lambda n: math.dist(xy[n], point))
+    return Expected({"point": list(point), "value": speed, "from": near,
+                     "along": math.dist(xy[near], point),
+                     "floor": abs(w) * mechanism_size(kin)})
+
+
+def _area(p, q, r) -> float:
+    """Twice the signed area of the triangle pqr."""
+    return (q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0])
 
 
 def equivalent(work, ask: A.Equivalent) -> Expected:

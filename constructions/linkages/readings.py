@@ -13,6 +13,7 @@ from __future__ import annotations
 import math
 
 from .. import asks as A
+from .least_plate import nearest_on_plate
 from .centre_answers import CENTRES_FIGURE, OMEGA_FIGURE, located, ratio_by_centres
 from ..checks import Answer
 from ..errors import InputError
@@ -130,11 +131,10 @@ def normal_angle(rx: float, ry: float, dx: float, dy: float) -> float:
     return math.asin(min(1.0, along))
 
 
-LEAST_WHY_NOT = {A.LeastVelocity: "Vmin_<k> is asked of a link whose points lie on one line "
-                                   "(a rod, with any point it carries on it); of a link whose "
-                                   "points do not, name the line: Vmin_<k>_<P>_<Q>, its "
-                                   "slowest point measured from P"}
-"""Why a plate has no one line to find its slowest point on."""
+LEAST_WHY_NOT = {A.LeastVelocity: "Vmin_<k> is asked of a moving link (the frame is at rest "
+                                   "everywhere); along a line of link k, name it: "
+                                   "Vmin_<k>_<P>_<Q>, its slowest point measured from P"}
+"""Why the frame has no slowest point."""
 
 
 def least_line(m: Mechanism, ask: A.LeastVelocity) -> tuple[str, str]:
@@ -168,7 +168,8 @@ def _least_velocity(work, ask: A.LeastVelocity) -> Answer:
     distance (ω_k from the centres); its distance along the line from the line's first
     point is read with the dividers."""
     m, asm, k = work.mechanism, work.assembly, ask.link
-    a, b = least_line(m, ask)
+    plate = ask.line is None and not A.on_one_line(m.link(k).points)
+    a, b = (None, None) if plate else least_line(m, ask)
     cs = located(work)
     centre = cs.centre(1, k)
     if asm.output(centre.ref).is_at_infinity:
@@ -176,6 +177,8 @@ def _least_velocity(work, ask: A.LeastVelocity) -> Answer:
                          "infinity): every point of it has one velocity, none the least")
     d = m.drive.link
     ratio, cond, refs = ratio_by_centres(work, d, k) if k != d else (1.0, 1.0, ())
+    if plate:
+        return _least_on_plate(work, ask, centre, ratio, cond, refs)
     line, at = f"vmin:{k}:{a}:{b}:line", f"vmin:{k}:{a}:{b}"
     alone = sum(q.link == k for q in work.asked(A.LeastVelocity)) == 1
     label = f"M{k}" if alone or ask.line is None else f"M{k}{a}{b}"
@@ -194,6 +197,40 @@ def _least_velocity(work, ask: A.LeastVelocity) -> Answer:
     return Answer(ask, {"point": [foot[0] + 0.0, foot[1] + 0.0], "value": speed,
                         "from": a, "along": along + 0.0}, cond,
                   f"foot of the perpendicular from {centre.label}",
+                  refs=(at, centre.ref, *refs), figures=(OMEGA_FIGURE,))
+
+
+def _least_on_plate(work, ask: A.LeastVelocity, centre, ratio: float, cond: float,
+                    refs: tuple) -> Answer:
+    """The plate's point nearest I_1k (:mod:`.least_plate`): I_1k itself within the
+    plate, the foot of the perpendicular on the side nearest it, or a corner; its speed
+    |ω_k| times its distance from I_1k, its distance from the plate's nearest named point."""
+    m, asm, k = work.mechanism, work.assembly, ask.link
+    names = m.link(k).names
+    xy = {n: asm.xy(n) for n in names}
+    where, side = nearest_on_plate(xy, asm.output(centre.ref).xy)
+    at = f"vmin:{k}"
+    if at not in asm:
+        if where == "inside":
+            asm.draw(at, "mark", centre.ref, phrase=phrase("readings.least_inside",
+                                                            centre=centre.label, link=k))
+        elif where == "corner":
+            asm.draw(at, "mark", asm.points[side[0]], phrase=phrase(
+                "readings.least_corner", centre=centre.label, a=side[0], link=k))
+        else:
+            a, b = side
+            asm.draw(f"{at}:line", "line_through", asm.points[a], asm.points[b],
+                     phrase=phrase("readings.link_line", a=a, b=b, link=k))
+            asm.draw(at, "project_onto", centre.ref, f"{at}:line", label=f"M{k}",
+                     phrase=phrase("readings.least_side", centre=centre.label, a=a, b=b,
+                                   link=k, point=f"M{k}"))
+    foot = asm.output(at).xy
+    speed = abs(ratio * m.drive.omega) * math.dist(foot, asm.output(centre.ref).xy)
+    near = min(names, key=lambda n: math.dist(xy[n], foot))
+    cond = min(cond, located(work).conditioning(1, k), asm[at].conditioning)
+    return Answer(ask, {"point": [foot[0] + 0.0, foot[1] + 0.0], "value": speed,
+                        "from": near, "along": math.dist(xy[near], foot)}, cond,
+                  f"nearest point of the plate to {centre.label}",
                   refs=(at, centre.ref, *refs), figures=(OMEGA_FIGURE,))
 
 

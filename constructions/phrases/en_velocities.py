@@ -126,6 +126,14 @@ PHRASES: dict[str, str] = {
     "readings.least_velocity": "Drop the perpendicular from {centre} onto {a}{b}: its foot "
                                "{point} is the point of the line nearest {centre}, the slowest "
                                "of link {link}.",
+    "readings.least_side": "Of the sides of plate {link}, {a}{b} passes nearest {centre}: drop "
+                           "the perpendicular from {centre} onto it; its foot {point} is the "
+                           "plate's point nearest {centre}, the slowest of link {link}.",
+    "readings.least_corner": "No perpendicular from {centre} falls on a side of plate {link} "
+                             "nearer than its corner {a}: {a} is the slowest point of link "
+                             "{link}.",
+    "readings.least_inside": "{centre} lies within plate {link}: the plate's point there is at "
+                             "rest, the slowest of link {link}.",
     "polygon.space_line": "Draw line {a}{b} of link {link}.",
     "polygon.lines_meet": "The two lines meet at {tip}: {pole} {tip} = {symbol}_{point}.",
     "polygon.image_why": "{x} lies on line {a}{b} of link {link}, so {tip} lies on {ta} {tb} with "

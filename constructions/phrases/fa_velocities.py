@@ -120,6 +120,13 @@ PHRASES: dict[str, str] = {
     "readings.least_velocity": "از {centre} عمودی بر {a}{b} فرود آورید: پای عمود، {point}، "
                                "نزدیک‌ترین نقطهٔ این خط به {centre} و کندترین نقطهٔ میلهٔ "
                                "{link} است.",
+    "readings.least_side": "از ضلع‌های صفحهٔ {link}، ضلع {a}{b} از همه به {centre} نزدیک‌تر "
+                           "است: از {centre} عمودی بر آن فرود آورید؛ پای عمود، {point}، "
+                           "نزدیک‌ترین نقطهٔ صفحه به {centre} و کندترین نقطهٔ میلهٔ {link} است.",
+    "readings.least_corner": "هیچ عمودی از {centre} بر ضلع‌های صفحهٔ {link} نزدیک‌تر از گوشهٔ "
+                             "{a} آن نمی‌افتد: {a} کندترین نقطهٔ میلهٔ {link} است.",
+    "readings.least_inside": "{centre} درون صفحهٔ {link} است: نقطهٔ صفحه در آنجا ساکن است و "
+                             "کندترین نقطهٔ میلهٔ {link} است.",
     "polygon.space_line": "خط {a}{b} از میلهٔ {link} را رسم کنید.",
     "polygon.lines_meet": "دو خط یکدیگر را در {tip} قطع می‌کنند: {pole} {tip} = {symbol}_{point}.",
     "polygon.image_why": "{x} روی خط {a}{b} از میلهٔ {link} قرار دارد، پس {tip} روی {ta} {tb} "
