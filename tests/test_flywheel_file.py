@@ -186,3 +186,92 @@ def test_a_flywheel_exercise_is_solved_drawn_and_said_in_persian(name, tmp_path)
             assert "نمودار" in svg or "انرژی" in svg
             steps = (out / "steps.md").read_text(encoding="utf-8")
             assert "بیشترین نوسان انرژی" in steps
+
+
+HARMONIC = """[units]
+speed = "rpm"
+[turning_moment]
+torque = "8000 + 2400*sin(3*theta)"
+[flywheel]
+{flywheel}
+"""
+"""ΔE = 2·2400/3 = 1600 J, within H2·9/4 of itself as drawn."""
+
+
+@pytest.mark.parametrize("written, cs", [('"±1 %"', 0.02), ('"2 %"', 0.02), ('"+/-1.5%"', 0.03),
+                                         ('" ±0.25 % "', 0.005), ("0.02", 0.02)])
+def test_a_speed_fluctuation_is_taken_as_the_books_write_it(written, cs):
+    """"±1 %" is 1 % either way of the mean, 2 % in all; "2 %" is the total already."""
+    ex = parse_flywheel(HARMONIC.format(flywheel=f"speed = 250\nspeed_fluctuation = {written}"))
+    assert ex.speed_fluctuation == pytest.approx(cs, rel=1e-15)
+    q = solve_flywheel(ex).checked
+    omega = 250 * math.pi / 30
+    assert q["inertia"].value["value"] == pytest.approx(1600 / (cs * omega ** 2), rel=H2 * 9 / 4)
+    # ω(1 ± C_s/2): 1 % above and below the mean for ±1 %
+    assert q["speed_max"].value["value"] == pytest.approx(omega * (1 + cs / 2), rel=1e-15)
+    assert q["speed_min"].value["value"] == pytest.approx(omega * (1 - cs / 2), rel=1e-15)
+
+
+@pytest.mark.parametrize("speeds", ["speed_max = 225\nspeed_min = 200",
+                                    "speed = 212.5\nspeed_min = 200",
+                                    "speed = 212.5\nspeed_max = 225"])
+def test_the_greatest_and_least_speeds_give_the_flywheel(speeds):
+    """A speed not to rise above 225 rpm nor fall below 200: ΔE = ½·I·(ω1² − ω2²), so
+    I = 2ΔE/(ω1² − ω2²) (the books' form, the mean their average)."""
+    ex = parse_flywheel(HARMONIC.format(flywheel=speeds))
+    w1, w2 = 225 * math.pi / 30, 200 * math.pi / 30
+    assert ex.speed == pytest.approx((w1 + w2) / 2, rel=1e-15)
+    q = solve_flywheel(ex).checked
+    assert q["inertia"].value["value"] == pytest.approx(2 * 1600 / (w1 ** 2 - w2 ** 2),
+                                                        rel=H2 * 9 / 4)
+    assert q["speed_max"].value["value"] == pytest.approx(w1, rel=1e-15)
+    assert q["speed_min"].value["value"] == pytest.approx(w2, rel=1e-15)
+
+
+def test_a_given_flywheel_s_greatest_and_least_speeds_from_areas():
+    """Areas +40, −75, +65, −50, +30, −10 mm² at 100 N·m and 2° a mm: the energy runs 40
+    above its start and 35 below, ΔE = 75 mm² × 100·2π/180 J; with I = 5 kg·m² at 600 rpm,
+    ω1 − ω2 = ΔE/(I·ω) about the mean ω; sums of a few areas, so exact to rounding."""
+    ex = parse_flywheel("[units]\nspeed = \"rpm\"\n[turning_moment]\n"
+                        "areas = [40, -75, 65, -50, 30, -10]\ntorque_scale = 100\n"
+                        "angle_scale = 2\n[flywheel]\nspeed = 600\ninertia = 5\n")
+    q = solve_flywheel(ex).checked
+    delta_e, omega = 75 * 100 * math.radians(2), 20 * math.pi
+    assert q["speed_max"].value["value"] == pytest.approx(omega + delta_e / (2 * 5 * omega),
+                                                          rel=1e-14)
+    assert q["speed_min"].value["value"] == pytest.approx(omega - delta_e / (2 * 5 * omega),
+                                                          rel=1e-14)
+    assert all(c.passed for c in q.values())
+
+
+@pytest.mark.parametrize("rim, mass", [("diameter = 1.5", None), ("radius = 0.75", None),
+                                       ("mass = 200", 200.0)])
+def test_a_rim_s_section_from_its_density_and_proportions(rim, mass):
+    """A rim of cast iron (7200 kg/m³), its width 4 times its thickness: m = ρ·2πr·b·t with
+    b = 4t, so t = √(m/(4ρ·2πr)); m = I/r² for a stated radius, r = √(I/m) for a mass."""
+    ex = parse_flywheel(HARMONIC.format(flywheel=f'speed = 250\nspeed_fluctuation = "±1 %"\n'
+                                                 f"{rim}\ndensity = 7200\nwidth_to_thickness = 4"))
+    q = solve_flywheel(ex).checked
+    inertia = 1600 / (0.02 * (250 * math.pi / 30) ** 2)
+    m, r = (inertia / 0.75 ** 2, 0.75) if mass is None else (mass, math.sqrt(inertia / mass))
+    t = math.sqrt(m / (4 * 7200 * 2 * math.pi * r))
+    assert q["rim_thickness"].value["value"] == pytest.approx(t, rel=H2 * 9 / 4)
+    assert q["rim_width"].value["value"] == pytest.approx(4 * t, rel=H2 * 9 / 4)
+    assert all(c.passed for c in q.values())
+
+
+@pytest.mark.parametrize("flywheel, line, words", [
+    ('speed = 1\nspeed_fluctuation = "1 percent"', 7, "a percentage of the mean"),
+    ('speed = 1\nspeed_fluctuation = "±120 %"', 7, "below 2"),
+    ("speed_max = 2\nspeed_min = 1\nspeed_fluctuation = 0.1", 8, "no speed_fluctuation"),
+    ("speed_max = 2", 6, "two of speed, speed_max and speed_min"),
+    ("speed = 2\nspeed_min = 3", 7, "below the greatest"),
+    ("speed = 1\nspeed_fluctuation = 0.1\nradius = 1\ndensity = 7200", 9, "give them all"),
+    ("speed = 1\nspeed_fluctuation = 0.1\nradius = 1\ndiameter = 2", 9, "not both"),
+    ("speed = 1\ninertia = 3\ndensity = 7200", 8, "density is the rim's"),
+])
+def test_a_bad_rim_or_speed_is_refused_at_its_line(flywheel, line, words):
+    with pytest.raises(InputError) as e:
+        parse_flywheel(HARMONIC.format(flywheel=flywheel), "f.toml")
+    assert str(e.value).startswith(f"f.toml:{line}: ") and words in str(e.value)
+    assert "\n" not in str(e.value)

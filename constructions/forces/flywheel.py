@@ -23,7 +23,7 @@ from dataclasses import dataclass
 from ..reference.flywheel import Fluctuation, fluctuation
 
 __all__ = ["Diagram", "Reading", "STEPS", "read_diagram", "area_reading", "extreme",
-           "rim_mass", "rim_radius"]
+           "rim_mass", "rim_radius", "rim_section", "speed_limits"]
 
 STEPS = 3600
 """The steps a cycle's T(θ) is drawn at: ΔE's error from the straight lines between steps is
@@ -148,3 +148,26 @@ def rim_mass(inertia: float, radius: float) -> float:
 def rim_radius(inertia: float, mass: float) -> float:
     """A thin rim's mean radius (m) for ``inertia`` (kg·m²) and ``mass`` (kg): √(I/m)."""
     return math.sqrt(inertia / mass)
+
+
+def rim_section(mass: float, radius: float, density: float,
+                width_to_thickness: float) -> tuple[float, float]:
+    """A rectangular rim's thickness and width (m) for its ``mass`` (kg) at mean radius
+    ``radius`` (m), of ``density`` (kg/m³) and width ``width_to_thickness`` times its
+    thickness: its section is m/(ρ·2πr) = b·t with b = k·t.
+
+    >>> [round(x, 9) for x in rim_section(7200 * 2 * math.pi * 0.2, 1.0, 7200, 5.0)]
+    [0.2, 1.0]
+    """
+    thickness = math.sqrt(mass / (density * 2 * math.pi * radius) / width_to_thickness)
+    return thickness, width_to_thickness * thickness
+
+
+def speed_limits(speed: float, fluctuation: float) -> tuple[float, float]:
+    """The greatest and least speeds (rad/s) about the mean ``speed`` within C_s =
+    ``fluctuation``, the mean their average as the books take it: ω(1 ± C_s/2).
+
+    >>> speed_limits(100.0, 0.02)
+    (101.0, 99.0)
+    """
+    return speed * (1 + fluctuation / 2), speed * (1 - fluctuation / 2)

@@ -57,6 +57,12 @@ WORDS: dict[str, str] = {
     "({percent} % of the mean, ±{half} %)":
         "چرخ طیاری با I = {inertia} kg·m² سرعت را در C_s = ΔE/(I·ω²) = {cs} نگه می‌دارد "
         "({percent} ٪ میانگین، ±{half} ٪)",
+    "its section at {density} kg/m³, the width {ratio} times the thickness: b·t = m/(ρ·2πr), "
+    "t = {thickness}, b = {width}":
+        "مقطع آن با چگالی {density} kg/m³ و پهنای {ratio} برابر ضخامت: b·t = m/(ρ·2πr)، "
+        "t = {thickness}، b = {width}",
+    "the greatest and least speeds ω(1 ± C_s/2): {high} and {low} {unit}":
+        "بیشترین و کمترین سرعت ω(1 ± C_s/2): {high} و {low} {unit}",
     "every number agrees with its reference": "همهٔ اعداد با مرجع خود سازگارند",
     "Each area times the diagram's scale ({scale} J per unit of area) is an energy: "
     "{energies} J.":

@@ -15,13 +15,17 @@ The diagram is given one of three ways, as the books give it:
 ``[flywheel]`` gives the mean ``speed`` and either ``speed_fluctuation`` (C_s: the flywheel
 is found, and a rim's ``mass`` at a stated ``radius`` or its ``radius`` for a stated
 ``mass``) or the flywheel (``inertia``, or ``mass`` with ``radius_of_gyration``: C_s is
-found); ``at`` lists crank angles (degrees) whose T and α are asked. Every failure is one
-line naming file:line.
+found); ``at`` lists crank angles (degrees) whose T and α are asked. C_s may be written as the
+books write it ("±1 %", "2 %"), or given by the greatest and least speeds (two of ``speed``,
+``speed_max`` and ``speed_min``); a rim's ``diameter`` may stand for its radius, and its
+``density`` with ``width_to_thickness`` asks its section. Every failure is one line naming
+file:line.
 """
 
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import dataclass
 from typing import Any, ClassVar
 
@@ -36,7 +40,8 @@ __all__ = ["FlywheelExercise", "parse_flywheel"]
 _TOP = ("name", "names", "source", "description", "units", "turning_moment", "flywheel")
 _KEYS = {"turning_moment": ("torque", "points", "areas", "torque_scale", "angle_scale",
                             "energy_scale", "cycle"),
-         "flywheel": ("speed", "speed_fluctuation", "inertia", "mass", "radius",
+         "flywheel": ("speed", "speed_max", "speed_min", "speed_fluctuation", "inertia", "mass",
+                      "radius", "diameter", "density", "width_to_thickness",
                       "radius_of_gyration", "at")}
 
 
@@ -69,6 +74,9 @@ class FlywheelExercise:
     mass: float | None = None
     radius: float | None = None
     radius_of_gyration: float | None = None
+    density: float | None = None
+    """The rim's density (kg/m³): with ``width_to_thickness``, its section is asked."""
+    width_to_thickness: float | None = None
     at: tuple[float, ...] = ()
     """Crank angles (rad) whose T and α are asked."""
     length_unit: str = "m"
@@ -242,6 +250,63 @@ def _areas(t: Tables, tm: dict) -> dict[str, Any]:
             "energy_scale": scale}
 
 
+PERCENT = re.compile(r"\s*(±|\+/-|\+-)?\s*(\d+(?:\.\d*)?|\.\d+)\s*%\s*")
+"""A speed's fluctuation as the books write it: "±1 %" (either way of the mean, 2 % in all)
+or "3 %" (the total, (ω_max − ω_min)/ω)."""
+
+
+def _speeds(t: Tables, fw: dict, rad_s: float) -> dict[str, float]:
+    """The mean speed and C_s as ``[flywheel]`` gives them: ``speed`` and ``speed_fluctuation``
+    (a number, or "±1 %" or "2 %"), or two of the mean, greatest and least speeds, the mean
+    the average of the other two as the books take it: C_s = (ω_max − ω_min)/ω."""
+    out: dict[str, float] = {}
+    given = {k: t.number(fw, k, "flywheel", what) * rad_s
+             for k, what in (("speed", "the mean speed"), ("speed_max", "the greatest speed"),
+                             ("speed_min", "the least speed")) if k in fw}
+    for k, v in given.items():
+        if not v > 0:
+            raise t.fail(f"{k} must be positive, got {fw[k]:g}", "flywheel", k)
+    if "speed_max" in given or "speed_min" in given:
+        if len(given) != 2 or "speed_fluctuation" in fw:
+            raise t.fail("the greatest and least speeds give the mean and C_s: give two of speed, "
+                         "speed_max and speed_min, and no speed_fluctuation", "flywheel",
+                         "speed_fluctuation" if len(given) == 2 else
+                         ("speed_max" if "speed_max" in given else "speed_min"))
+        mean = given.get("speed")
+        if mean is None:
+            high, low = given["speed_max"], given["speed_min"]
+        elif "speed_max" in given:
+            high, low = given["speed_max"], 2 * mean - given["speed_max"]
+        else:
+            high, low = 2 * mean - given["speed_min"], given["speed_min"]
+        if not 0 < low < high:
+            raise t.fail("the least speed must be positive and below the greatest, the mean "
+                         "between them", "flywheel", "speed_min" if "speed_min" in given
+                         else "speed_max")
+        out["speed"] = (high + low) / 2
+        out["speed_fluctuation"] = (high - low) / out["speed"]
+        return out
+    if "speed" in given:
+        out["speed"] = given["speed"]
+    if "speed_fluctuation" in fw:
+        raw = fw["speed_fluctuation"]
+        if isinstance(raw, str):
+            m = PERCENT.fullmatch(raw)
+            if m is None:
+                raise t.fail(f"the fluctuation of speed is a number (C_s) or a percentage of the "
+                             f"mean, \"±1 %\" or \"2 %\" (the total); got {raw!r:.40}",
+                             "flywheel", "speed_fluctuation")
+            cs = float(m[2]) / 100 * (2 if m[1] else 1)
+        else:
+            cs = t.number(fw, "speed_fluctuation", "flywheel",
+                          "the coefficient of fluctuation of speed")
+        if not 0 < cs < 2:
+            raise t.fail(f"C_s = (ω_max − ω_min)/ω is positive and below 2 (a speed that "
+                         f"stops), got {cs:g}", "flywheel", "speed_fluctuation")
+        out["speed_fluctuation"] = cs
+    return out
+
+
 def _flywheel(t: Tables, metre: float, rad_s: float, diagram: dict) -> dict[str, Any]:
     """What ``[flywheel]`` gives and asks, in SI."""
     if "flywheel" not in t.data:
@@ -255,29 +320,41 @@ def _flywheel(t: Tables, metre: float, rad_s: float, diagram: dict) -> dict[str,
             raise t.fail(f"{what} must be positive, got {v:g}", "flywheel", key)
         return v * scale
 
-    if "speed" in fw:
-        out["speed"] = positive("speed", "the mean speed", rad_s)
+    out |= _speeds(t, fw, rad_s)
     ways = [k for k in ("speed_fluctuation", "inertia", "radius_of_gyration") if k in fw]
+    if "speed_fluctuation" not in fw and "speed_fluctuation" in out:
+        ways.insert(0, "speed_max" if "speed_max" in fw else "speed_min")
     if len(ways) > 1:
-        raise t.fail("give speed_fluctuation (the flywheel is found) or the flywheel (inertia, "
-                     "or mass with radius_of_gyration: its C_s is found), one of them",
-                     "flywheel", ways[1])
+        raise t.fail("give speed_fluctuation (or the greatest and least speeds: the flywheel is "
+                     "found) or the flywheel (inertia, or mass with radius_of_gyration: its C_s "
+                     "is found), one of them", "flywheel", ways[1])
     if ways and "speed" not in out:
         raise t.fail("a flywheel holds a speed: give the mean speed, speed = 300 with [units] "
                      "speed = \"rpm\"", "flywheel", None)
-    if "speed_fluctuation" in fw:
-        cs = positive("speed_fluctuation", "the coefficient of fluctuation of speed")
-        if cs >= 2:
-            raise t.fail(f"C_s = (ω_max − ω_min)/ω is below 2 (a speed that stops), got {cs:g}",
-                         "flywheel", "speed_fluctuation")
-        out["speed_fluctuation"] = cs
-        if "mass" in fw and "radius" in fw:
+    rim = [k for k in ("diameter", "density", "width_to_thickness") if k in fw]
+    if "speed_fluctuation" in out:
+        if "radius" in fw and "diameter" in fw:
+            raise t.fail("give the rim's mean radius or its diameter, not both", "flywheel",
+                         "diameter")
+        if "mass" in fw and ("radius" in fw or "diameter" in fw):
             raise t.fail("the rim's mass is found for a stated radius, or its radius for a "
-                         "stated mass: give one", "flywheel", "radius")
+                         "stated mass: give one", "flywheel",
+                         "radius" if "radius" in fw else "diameter")
         for key, what, scale in (("mass", "the rim's mass", 1.0),
-                                 ("radius", "the rim's mean radius", metre)):
+                                 ("radius", "the rim's mean radius", metre),
+                                 ("diameter", "the rim's mean diameter", metre / 2)):
             if key in fw:
-                out[key] = positive(key, what, scale)
+                out["radius" if key == "diameter" else key] = positive(key, what, scale)
+        if ("density" in fw) != ("width_to_thickness" in fw) or (
+                "density" in fw and "mass" not in out and "radius" not in out):
+            raise t.fail("a rim's section comes from its density and width_to_thickness (b/t), "
+                         "with its mass or mean radius: give them all", "flywheel",
+                         "density" if "density" in fw else "width_to_thickness")
+        if "density" in fw:
+            out["density"] = positive("density", "the rim's density (kg/m³)")
+            out["width_to_thickness"] = positive("width_to_thickness",
+                                                 "the rim's width over its thickness")
+        rim = []
     elif "inertia" in fw:
         out["inertia"] = positive("inertia", "the flywheel's moment of inertia")
     elif "radius_of_gyration" in fw:
@@ -293,6 +370,9 @@ def _flywheel(t: Tables, metre: float, rad_s: float, diagram: dict) -> dict[str,
             if key in fw:
                 raise t.fail(f"{key} is the rim's, for a flywheel found from speed_fluctuation "
                              "(or mass with radius_of_gyration); give that too", "flywheel", key)
+    if rim:
+        raise t.fail(f"{rim[0]} is the rim's, for a flywheel found from speed_fluctuation; give "
+                     "that too", "flywheel", rim[0])
     if "at" in fw:
         raw = fw["at"] if isinstance(fw["at"], list) else [fw["at"]]
         out["at"] = tuple(math.radians(t.number({"at": a}, "at", "flywheel",

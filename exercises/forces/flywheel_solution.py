@@ -21,13 +21,15 @@ from functools import cached_property
 from typing import Any
 
 from tarsim.constructions.forces.flywheel import (Reading, area_reading, extreme, read_diagram,
-                                                  rim_mass, rim_radius)
+                                                  rim_mass, rim_radius, rim_section,
+                                                  speed_limits)
 from tarsim.constructions.narration import numeral, phrase, words
 from tarsim.constructions.reference.flywheel import (Integrated, flywheel_inertia, integrated,
                                                      speed_fluctuation)
 from tarsim.constructions.units import LENGTH_UNITS
 from ..checked import Checked
 from ..solution_folder import ChapterFiles
+from ..table_file import SPEEDS
 from ..worked_document import Bullets, Section, numbered, title
 from .flywheel_file import FlywheelExercise
 
@@ -139,10 +141,21 @@ class FlywheelSolution(ChapterFiles):
             if ex.mass is not None:
                 q["rim_radius"] = _check(rim_radius(self.inertia, ex.mass), rim_radius(
                     q["inertia"].reference["value"], ex.mass), tol, "r = √(I/m)", unit="m")
+            q |= self._section(q, tol)
         elif ex.inertia is not None:
             q["speed_fluctuation"] = _check(
                 speed_fluctuation(r.delta_e, ex.speed, ex.inertia),
                 speed_fluctuation(ref_e, ex.speed, ex.inertia), tol, "C_s = ΔE/(I·ω²)")
+        if ex.speed is not None and (ex.speed_fluctuation is not None or
+                                     "speed_fluctuation" in q):
+            cs = ex.speed_fluctuation
+            c = q.get("speed_fluctuation")
+            got, want = speed_limits(ex.speed, cs if c is None else c.value["value"]), \
+                speed_limits(ex.speed, cs if c is None else c.reference["value"])
+            for key, v, w in (("speed_max", got[0], want[0]), ("speed_min", got[1], want[1])):
+                # ω·(1 ± C_s/2): C_s's error times C_s/2 over 1 ± C_s/2
+                q[key] = _check(v, w, (0.0 if c is None else c.tolerance) * (cs or 1.0),
+                                "ω(1 ± C_s/2), ω the mean of the two", unit="rad/s")
         if ref is not None and self.inertia:
             q |= self._extremes(ref)
             for theta in ex.at:
@@ -156,6 +169,27 @@ class FlywheelSolution(ChapterFiles):
                                               "α = (T − T_mean)/I", unit="rad/s²",
                                               angle_deg=math.degrees(theta))
         return q
+
+    def _section(self, q: dict[str, Checked], tol: float) -> dict[str, Checked]:
+        """A rectangular rim's thickness and width, from its mass at its radius."""
+        ex = self.exercise
+        if ex.density is None:
+            return {}
+        out = {}
+        if "rim_mass" in q:
+            got = rim_section(q["rim_mass"].value["value"], ex.radius, ex.density,
+                              ex.width_to_thickness)
+            want = rim_section(q["rim_mass"].reference["value"], ex.radius, ex.density,
+                               ex.width_to_thickness)
+        else:
+            got = rim_section(ex.mass, q["rim_radius"].value["value"], ex.density,
+                              ex.width_to_thickness)
+            want = rim_section(ex.mass, q["rim_radius"].reference["value"], ex.density,
+                               ex.width_to_thickness)
+        for k, key in enumerate(("rim_thickness", "rim_width")):
+            # t ∝ √m (or 1/√r): half the mass's relative error
+            out[key] = _check(got[k], want[k], tol, "b·t = m/(ρ·2πr), b = k·t", unit="m")
+        return out
 
     @property
     def _ref_inertia(self) -> float:
@@ -200,6 +234,10 @@ class FlywheelSolution(ChapterFiles):
         unit = self.exercise.length_unit
         return f"{numeral(v / LENGTH_UNITS[unit])} {unit}"
 
+    @property
+    def _speed_unit(self) -> float:
+        return SPEEDS[self.exercise.speed_unit]
+
     def _theta(self, theta: float) -> str:
         return numeral(math.degrees(theta) % 360 if self.exercise.cycle <= 2 * math.pi
                        else math.degrees(theta), ".2f")
@@ -236,6 +274,13 @@ class FlywheelSolution(ChapterFiles):
             out.append(words("a rim of {mass} kg: its mean radius r = √(I/m) = {radius}",
                              mass=numeral(ex.mass),
                              radius=self._length(q["rim_radius"].value["value"])))
+        if "rim_thickness" in q:
+            out.append(words("its section at {density} kg/m³, the width {ratio} times the "
+                             "thickness: b·t = m/(ρ·2πr), t = {thickness}, b = {width}",
+                             density=numeral(ex.density, "g"),
+                             ratio=numeral(ex.width_to_thickness, "g"),
+                             thickness=self._length(q["rim_thickness"].value["value"]),
+                             width=self._length(q["rim_width"].value["value"])))
         if "speed_fluctuation" in q:
             out.append(words("a flywheel of I = {inertia} kg·m² holds the speed within C_s = "
                              "ΔE/(I·ω²) = {cs} ({percent} % of the mean, ±{half} %)",
@@ -243,6 +288,11 @@ class FlywheelSolution(ChapterFiles):
                              cs=numeral(q["speed_fluctuation"].value["value"]),
                              percent=numeral(100 * q["speed_fluctuation"].value["value"]),
                              half=numeral(50 * q["speed_fluctuation"].value["value"])))
+        if "speed_max" in q:
+            out.append(words("the greatest and least speeds ω(1 ± C_s/2): {high} and {low} "
+                             "{unit}", unit=ex.speed_unit,
+                             high=numeral(q["speed_max"].value["value"] / self._speed_unit),
+                             low=numeral(q["speed_min"].value["value"] / self._speed_unit)))
         for key, say in (("acceleration", "greatest acceleration {alpha} rad/s² at θ = {at}°"),
                          ("retardation", "greatest retardation {alpha} rad/s² at θ = {at}°")):
             if f"greatest_{key}" in q:
