@@ -164,7 +164,7 @@ def test_bench_quick_writes_the_report_and_its_numbers_hold(tmp_path):
     text = (tmp_path / "report.md").read_text(encoding="utf-8")
     # Every linked plot is written, and small.
     links = re.findall(r"!\[[^]]*\]\((report/[^)]+\.svg)\)", text)
-    assert len(links) == 6 + 5                          # the linkages' and one per chapter
+    assert len(links) == 6 + 6          # the linkages' and one per chapter (two the flywheel's)
     for link in links:
         svg = tmp_path / link
         assert svg.read_text(encoding="utf-8").startswith("<?xml")
@@ -193,7 +193,8 @@ def test_bench_quick_writes_the_report_and_its_numbers_hold(tmp_path):
     # Every other chapter: its heading and rows, each row's eight cells, each within.
     part = text[text.index("## 4. Every chapter"):]
     assert [h for h in re.findall(r"^### (.+)$", part, re.M)] == [
-        "Gear trains", "Cams", "Force polygons", "Balancing", "The flywheel"]
+        "Gear trains", "Cams", "Force polygons", "Balancing", "The flywheel",
+        "The flywheel's inputs (formula, table, areas)"]
     cells = [line.split(" | ") for line in part.splitlines()
              if line.startswith("| ") and not line.startswith("| case")]
     assert len(cells) >= 40 and all(len(c) == 8 for c in cells)

@@ -2,9 +2,9 @@
 write its rows.
 
 Each study (``gear_rows``, ``cam_rows``, ``force_rows``, ``balance_rows``,
-``flywheel_rows``) measures tarsim's numbers on a chapter's stiff and extreme cases against
-closed forms, beside a tolerance justified by the case's conditioning, with median run
-times, and draws a plot.
+``flywheel_rows``, ``flywheel_input_rows``) measures tarsim's numbers on a chapter's stiff
+and extreme cases against closed forms, beside a tolerance justified by the case's
+conditioning, with median run times, and draws a plot.
 """
 
 from __future__ import annotations
@@ -14,13 +14,15 @@ from pathlib import Path
 from .balance_rows import balance_study
 from .cam_rows import cam_study
 from .chapter_rows import ChapterStudy
+from .flywheel_input_rows import flywheel_input_study
 from .flywheel_rows import flywheel_study
 from .force_rows import force_study
 from .gear_rows import gear_study
 
 __all__ = ["STUDIES", "run_chapters", "render_chapters"]
 
-STUDIES = (gear_study, cam_study, force_study, balance_study, flywheel_study)
+STUDIES = (gear_study, cam_study, force_study, balance_study, flywheel_study,
+           flywheel_input_study)
 """Each chapter's study, in the course's order."""
 
 
