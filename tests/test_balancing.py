@@ -276,9 +276,10 @@ def test_a_bad_engine_is_refused_in_one_line(old, new, words):
         message
 
 
-def test_revolving_masses_in_line_are_refused():
+def test_revolving_masses_in_line_with_no_balance_planes_are_refused():
     text = Path(bundled("balancing")["inline-four"]).read_text(encoding="utf-8")
-    with pytest.raises(InputError, match=r"e.toml:\d+: revolving is a single cylinder's"):
+    with pytest.raises(InputError, match=r"e.toml:\d+: revolving is what balance masses take: "
+                                         r"give the \[\[balance\]\] planes"):
         parse_balance(text.replace("rod = 200\n", "rod = 200\nrevolving = 2\n", 1), "e.toml")
 
 

@@ -22,6 +22,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from tarsim.constructions.errors import InputError
 from tarsim.exercises.balancing.balance_solution import solve_balance
 from tarsim.exercises.balancing.rotor_file import parse_balance
 
@@ -145,3 +146,67 @@ def test_a_single_cylinder_gives_its_greatest_secondary_and_where_the_force_left
     assert q["unbalanced_max_at"]["value"] == 0.0
     assert q["unbalanced_max"]["value"] == pytest.approx(0.7 * f, rel=1e-12)
 
+
+
+TWO_CYLINDERS = """
+[units]
+length = "mm"
+speed = "rpm"
+[engine]
+speed = 300
+crank = 150
+reciprocating = 120
+revolving = 80
+balanced = 0.6666666666666666
+[[cylinder]]
+crank = 0
+plane = 450
+[[cylinder]]
+crank = 90
+plane = 1050
+[[balance]]
+name = "A"
+plane = 0
+radius = 500
+[[balance]]
+name = "B"
+plane = 1500
+radius = 500
+"""
+
+
+def test_an_inline_engines_balance_masses_take_its_revolving_and_a_share_of_its_reciprocating():
+    """Each cylinder counts as 80 + ⅔·120 = 160 kg at 0.15 m, 24 kg·m, cranks 0° and 90° at
+    0.45 and 1.05 m from A. Couples about A: (m r)_B = −(24·0.45, 24·1.05)/1.5 = (−7.2,
+    −16.8); forces: (m r)_A = −(24, 24) − (m r)_B = (−16.8, −7.2); each mass |m r|/0.5."""
+    s = solve_balance(parse_balance(TWO_CYLINDERS, "e.toml"))
+    assert s.passed, s.failures
+    q = s.results["quantities"]
+    for plane, (x, y) in (("A", (-16.8, -7.2)), ("B", (-7.2, -16.8))):
+        assert q[f"mass_{plane}"]["value"] == pytest.approx(math.hypot(x, y) / 0.5, rel=1e-12)
+        assert q[f"angle_{plane}"]["value"] == pytest.approx(
+            math.degrees(math.atan2(y, x)) % 360, rel=1e-12)
+    # the engine's own polygons stand beside them: the primary force m·ω²·r·√2
+    assert q["primary_force"]["value"] == pytest.approx(
+        120 * 0.15 * (10 * math.pi) ** 2 * math.sqrt(2), rel=1e-12)
+    assert {"space", "couple-polygon", "force-polygon", "primary-force"} <= set(s.figures)
+
+
+@pytest.mark.parametrize("old, new, words", [
+    ("[[balance]]\nname = \"A\"\nplane = 0\nradius = 500\n[[balance]]\nname = \"B\"\n"
+     "plane = 1500\nradius = 500\n", "", "balanced is what balance masses take: give the "
+                                         "[[balance]] planes they go in"),
+    ("revolving = 80\nbalanced = 0.6666666666666666\n", "",
+     "give revolving = … or balanced = …"),
+    ("revolving = 80\n", "revolving = 80\nbalance_radius = 500\n",
+     "the balance masses of cylinders in line go in [[balance]] planes"),
+    ('name = "A"', 'name = "1"', "balancing plane 1 has the name of cylinder 1"),
+    ("[[cylinder]]\ncrank = 90\nplane = 1050\n", "", "a single cylinder's balance mass is "
+                                                     "given in [engine] as balance_radius"),
+])
+def test_an_engines_balance_masses_are_refused_in_one_line_where_they_cannot_be(old, new, words):
+    assert old in TWO_CYLINDERS
+    with pytest.raises(InputError) as e:
+        parse_balance(TWO_CYLINDERS.replace(old, new, 1), "e.toml")
+    message = str(e.value)
+    assert "\n" not in message and message.startswith("e.toml:") and words in message, message

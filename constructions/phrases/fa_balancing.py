@@ -137,6 +137,10 @@ WORDS: dict[str, str] = {
     "{kind} greatest with crank 1 at {angle}° from the i.d.c., and every {every}° on":
         "{kind} در بیشترین مقدار خود وقتی لنگ ۱ در {angle}° از نقطهٔ مرگ داخلی است، و هر "
         "{every}° پس از آن",
+    "balance masses: each cylinder's revolving mass and {share} of its reciprocating mass, "
+    "{mass} kg at the crank radius along its crank, balanced as rotating masses":
+        "جرم‌های متعادل‌کننده: جرم دوار هر سیلندر و {share} از جرم رفت‌وبرگشتی آن، {mass} kg "
+        "در شعاع لنگ و در امتداد لنگ آن، مانند جرم‌های دوار متعادل می‌شوند",
     "the greatest secondary force: {most} N, at θ = 0°, 90°, 180° and 270°":
         "بیشترین نیروی ثانویه: {most} N، در θ = ۰°، ۹۰°، ۱۸۰° و ۲۷۰°",
     "{kind}: unbalanced, {left} {unit} at most (the vector sum: {value} {unit})":

@@ -34,11 +34,14 @@ class Balancing(Chapter):
     def asks(self, exercise) -> str:
         if exercise.open is not None:
             return "the unknowns of the masses by the force and couple polygons"
-        if exercise.rotor is not None:
+        if exercise.rotor is not None and exercise.engine is None:
             return ("the balancing mass by the force polygon" if len(exercise.rotor.planes) == 1
                     else "the two balancing masses by the couple and force polygons")
         if len(exercise.engine.cranks) == 1:
             return "the primary and secondary forces, partly balanced"
+        if exercise.rotor is not None:
+            return ("the primary and secondary forces and couples by their polygons, and the "
+                    "balance masses by the couple and force polygons")
         return "the primary and secondary forces and couples by their polygons"
 
 

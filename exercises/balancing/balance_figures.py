@@ -38,13 +38,20 @@ def balance_figures(s: BalanceSolution) -> dict[str, Figure]:
     forces against crank angle (an engine's)."""
     ex = s.exercise
     unit, metre = ex.length_unit, LENGTH_UNITS[ex.length_unit]
-    if ex.rotor is not None:
-        return _rotor_figures(s, unit, metre)
     if ex.open is not None:
         return open_figures(ex.name, s.closure, ex.open, unit)
+    if ex.engine is None:
+        return _rotor_figures(s, unit, metre)
     e = ex.engine
     if len(e.cranks) == 1:
         return {"forces": _single_cylinder_plot(e, s.cylinder_balance, unit, metre)}
+    # an in-line engine's polygons, then its balance masses' where planes are given
+    return _engine_figures(s) | (_rotor_figures(s, unit, metre) if ex.rotor else {})
+
+
+def _engine_figures(s: BalanceSolution) -> dict[str, Figure]:
+    """An in-line engine's four polygons, each closing side what is left unbalanced."""
+    ex, e = s.exercise, s.exercise.engine
     out = {}
     p = s.engine_polygons
     for kind in engine_kinds(e):

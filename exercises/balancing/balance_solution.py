@@ -51,10 +51,16 @@ class BalanceSolution(ChapterFiles):
     exercise: BalanceExercise
 
     # ----- a rotor ------------------------------------------------------------------------------
+    @property
+    def rotor(self):
+        """The rotor to balance: the file's, or an in-line engine's cylinders as rotating
+        masses (their revolving masses and the fraction balanced of the reciprocating)."""
+        return self.exercise.rotor
+
     @cached_property
     def balance(self) -> Balance | None:
-        """The rotor's polygons, drawn (None for an engine)."""
-        r = self.exercise.rotor
+        """The rotor's polygons, drawn (None for an engine with no balance planes)."""
+        r = self.rotor
         return draw_balance(r) if r else None
 
     @cached_property
@@ -66,7 +72,7 @@ class BalanceSolution(ChapterFiles):
     @cached_property
     def expected(self) -> dict[str, tuple[float, float]]:
         """Each balancing plane's product by the closed form (kg·m)."""
-        r = self.exercise.rotor
+        r = self.rotor
         if len(r.planes) == 1:
             x, y = resultant(r.masses)
             return {r.planes[0].name: (-x, -y)}
@@ -88,7 +94,7 @@ class BalanceSolution(ChapterFiles):
         the balancing products included, and the size a balancing product's own rounding
         follows, the first plus the second over l_B: a product found from the couples is
         divided by the planes' distance apart."""
-        r = self.exercise.rotor
+        r = self.rotor
         ref = r.planes[0].position
         vectors = [(m.mass * m.radius, m.plane) for m in r.masses]
         vectors += [(math.hypot(*self.balance.product(p.name)), p.position) for p in r.planes]
@@ -181,7 +187,7 @@ class BalanceSolution(ChapterFiles):
     def residual(self) -> tuple[float, float]:
         """The balanced rotor's leftover force and couple (kg·m, kg·m²): its masses and the
         drawn balancing products summed; the couple about the first balancing plane."""
-        r = self.exercise.rotor
+        r = self.rotor
         vectors = [(m.mr, m.plane) for m in r.masses]
         vectors += [(self.balance.product(p.name), p.position) for p in r.planes]
         ref = r.planes[0].position
@@ -209,13 +215,25 @@ class BalanceSolution(ChapterFiles):
     def lines(self) -> list[str]:
         """What the command line prints, and steps.md lists, in the language spoken."""
         ex = self.exercise
-        if ex.engine is not None:
-            return self._engine_lines()
         if ex.open is not None:
             return open_lines(self.closure, ex.open, ex.length_unit, self.passed,
                               self.failures)
+        if ex.engine is None:
+            return self._rotor_lines()
+        out = self._engine_lines()
+        if ex.rotor is not None:
+            e = ex.engine
+            out.append(words("balance masses: each cylinder's revolving mass and {share} of its "
+                             "reciprocating mass, {mass} kg at the crank radius along its "
+                             "crank, balanced as rotating masses", share=numeral(e.balanced, "g"),
+                             mass=numeral(ex.rotor.masses[0].mass)))
+            out += self._rotor_lines()
+        return out
+
+    def _rotor_lines(self) -> list[str]:
+        """A rotor's resultant, each balancing plane's mass and the check."""
         out = []
-        r = ex.rotor
+        r = self.rotor
         noise = rounding([m.mass * m.radius for m in r.masses])
         x, y = (_quiet(v, noise) for v in resultant(r.masses))
         if x == y == 0.0:
@@ -266,7 +284,7 @@ class BalanceSolution(ChapterFiles):
 
     def _none_line(self, p) -> str:
         """Why plane ``p`` needs no mass: its polygon closes on itself."""
-        r = self.exercise.rotor
+        r = self.rotor
         if len(r.planes) == 1:
             return words("plane {plane}: no balancing mass needed, the force polygon closes on "
                          "itself (Σ mᵢrᵢ = 0)", plane=p.name)
@@ -350,12 +368,11 @@ class BalanceSolution(ChapterFiles):
         """steps.md: the construction, numbered, and the results (the lines solve prints,
         with their checks)."""
         ex = self.exercise
-        record = self.balance.construction if self.balance else (
-            self.engine_polygons.construction if self.engine_polygons else (
-                self.closure.construction if self.closure else None))
+        records = [made.construction for made in (self.engine_polygons, self.balance,
+                                                   self.closure) if made is not None]
         out = [title(ex.name, ex.description)]
-        if record is not None:
-            out.append(Section(phrase("heading.construction"), (said_steps(record),)))
+        out += [Section(phrase("heading.construction"), (said_steps(record),))
+                for record in records]
         return out + [Section(phrase("md.results"), (Bullets(tuple(self.lines())),))]
 
     # ----- numbers and figures ------------------------------------------------------------------
@@ -368,6 +385,8 @@ class BalanceSolution(ChapterFiles):
         q: dict[str, Checked] = {}
         if ex.open is not None:
             return open_checked(self.closure)
+        if ex.engine is not None:
+            q |= self._engine_checked()
         if ex.rotor is not None:
             method = "force polygon" if len(self.expected) == 1 else "couple and force polygons"
             for name, want in self.expected.items():
@@ -379,7 +398,13 @@ class BalanceSolution(ChapterFiles):
                                           {"value": [w + 0.0 for w in want]}, method=method)
             for p in ex.rotor.planes:
                 q |= self._balance_mass(p, method)
-        elif len(ex.engine.cranks) == 1:
+        return q
+
+    def _engine_checked(self) -> dict[str, Checked]:
+        """An engine's forces and couples: a single cylinder's, or the in-line polygons'."""
+        ex = self.exercise
+        q: dict[str, Checked] = {}
+        if len(ex.engine.cranks) == 1:
             q |= self._cylinder_checked(ex.engine)
         else:
             sums = engine_sums(ex.engine)

@@ -81,7 +81,8 @@ def parse_balance(text: str, filename: str = "<string>", exercise_id: str = "rot
                   length_unit=length, speed_unit=speed_unit,
                   names=read_names(data, t.where, filename))
     if "engine" in data:
-        return BalanceExercise(engine=_engine(t, metre), **common)
+        engine = _engine(t, metre)
+        return BalanceExercise(engine=engine, rotor=_engine_rotor(t, engine, metre), **common)
     if any(v == UNKNOWN for m in t.entries("mass") for v in m.values()):
         return BalanceExercise(open=read_open_rotor(
             t, metre, _speed(t, "rotor"),
@@ -243,15 +244,50 @@ def _engine(t: Tables, metre: float) -> Engine:
                   revolving, None if radius is None else radius * metre, balance)
 
 
+def _engine_rotor(t: Tables, e: Engine, metre: float) -> Rotor | None:
+    """An in-line engine's balance masses, where ``[[balance]]`` planes are given: each
+    cylinder's revolving mass and the fraction ``balanced`` of its reciprocating mass,
+    m_rev + c·m at the crank radius along its crank, balanced as rotating masses are (the
+    primary part of the reciprocating mass turns as a mass at the crank pin would)."""
+    entries = t.entries("balance")
+    if len(e.cranks) == 1:
+        if entries:
+            raise t.fail("a single cylinder's balance mass is given in [engine] as "
+                         "balance_radius = … (or balance_mass = …), opposite its crank: leave "
+                         "out the [[balance]] planes", "balance", None, 0)
+        return None
+    if not entries:
+        given = [k for k in ("balanced", "revolving") if k in _one(t, "engine")]
+        if given:
+            raise t.fail(f"{given[0]} is what balance masses take: give the [[balance]] planes "
+                         "they go in (plane, and radius or mass), or leave it out", "engine",
+                         given[0])
+        return None
+    share = e.revolving + e.balanced * e.reciprocating
+    if not share > 0:
+        raise t.fail("the [[balance]] planes balance each cylinder's revolving mass and the "
+                     "fraction balanced of its reciprocating mass: give revolving = … or "
+                     "balanced = …", "engine")
+    masses = tuple(Mass(str(i), share, e.crank, theta, z)
+                   for i, (theta, z) in enumerate(zip(e.cranks, e.planes), start=1))
+    planes = _planes(t, metre)
+    for i, p in enumerate(planes):
+        if any(m.name == p.name for m in masses):
+            raise t.fail(f"balancing plane {p.name} has the name of cylinder {p.name}: name the "
+                         "planes with letters (A, B)", "balance", "name", i)
+    return Rotor(masses, tuple(planes), e.speed)
+
+
 def _revolving(t: Tables, one: dict, cylinders: int, unit: str
                ) -> tuple[float, float | None, float | None]:
-    """A single cylinder's revolving masses (kg at the crank radius, a number or a list
-    summed: crank, crank pin, the rod's revolving part) and its balance mass's radius or
-    mass (the other is found), as the file gives them."""
-    given = [k for k in ("revolving", "balance_radius", "balance_mass") if k in one]
+    """A cylinder's revolving masses (kg at the crank radius, a number or a list summed:
+    crank, crank pin, the rod's revolving part) and a single cylinder's balance mass's
+    radius or mass (the other is found), as the file gives them."""
+    given = [k for k in ("balance_radius", "balance_mass") if k in one]
     if given and cylinders > 1:
-        raise t.fail(f"{given[0]} is a single cylinder's: cylinders in line are balanced by "
-                     "their cranks' layout; leave it out", "engine", given[0])
+        raise t.fail(f"{given[0]} is a single cylinder's: the balance masses of cylinders in "
+                     "line go in [[balance]] planes (plane, and radius or mass)", "engine",
+                     given[0])
     if "balance_radius" in one and "balance_mass" in one:
         raise t.fail("the balance mass is given at its radius (balance_radius = …) or by its "
                      "mass (balance_mass = …), not both: the other is found", "engine",
