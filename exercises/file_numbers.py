@@ -7,9 +7,12 @@ can be drawn; :func:`radians_in_turn` takes an angle of any size less whole turn
 
 from __future__ import annotations
 
+import ast
 import math
+from fractions import Fraction
 
-__all__ = ["LARGEST", "RANGE", "SIZES", "file_number", "in_range", "radians_in_turn"]
+__all__ = ["LARGEST", "RANGE", "SIZES", "arithmetic", "file_number", "in_range",
+           "radians_in_turn"]
 
 LARGEST = 1e30
 """The largest size of a number tarsim takes from a file; its reciprocal is the smallest
@@ -32,14 +35,58 @@ def _float(v: int | float) -> float:
         return math.inf
 
 
+_LONGEST = 80
+"""The most characters a number written as arithmetic may take."""
+
+_OPERATIONS = {ast.Add: Fraction.__add__, ast.Sub: Fraction.__sub__,
+               ast.Mult: Fraction.__mul__, ast.Div: Fraction.__truediv__}
+
+
+def arithmetic(text: str) -> Fraction | None:
+    """A number the way a book writes it from its data, "120/2", "2/3", "45 + 70", exactly;
+    None if ``text`` is not such sums, differences, products and quotients of numbers.
+
+    Exact, so that a gear's "2/3" stays two thirds; no names, powers or calls, so that a
+    file's text is never run.
+
+    >>> arithmetic("120/2"), arithmetic("(45 + 70) * 2"), arithmetic("2/3")
+    (Fraction(60, 1), Fraction(230, 1), Fraction(2, 3))
+    >>> arithmetic("A + 45") is None, arithmetic("1/0") is None
+    (True, True)
+    """
+    if not isinstance(text, str) or not text.strip() or len(text) > _LONGEST:
+        return None
+    try:
+        tree = ast.parse(text.strip(), mode="eval").body
+        return _value(tree)
+    except (SyntaxError, ValueError, ZeroDivisionError):
+        return None
+
+
+def _value(node: ast.AST) -> Fraction:
+    if isinstance(node, ast.Constant) and type(node.value) in (int, float):
+        return Fraction(repr(node.value)) if isinstance(node.value, float) \
+            else Fraction(node.value)
+    if isinstance(node, ast.UnaryOp) and isinstance(node.op, (ast.USub, ast.UAdd)):
+        inner = _value(node.operand)
+        return -inner if isinstance(node.op, ast.USub) else inner
+    if isinstance(node, ast.BinOp) and type(node.op) in _OPERATIONS:
+        return _OPERATIONS[type(node.op)](_value(node.left), _value(node.right))
+    raise ValueError("not arithmetic")
+
+
 def file_number(v, what: str) -> float:
     """A cam, rotor or load file's number: finite, and 0 or of a size within :data:`SIZES`.
+    Arithmetic of numbers in a string ("120/2") is taken at its value.
 
     Raises
     ------
     ValueError
         Saying what is wrong, for the caller to place at its file:line.
     """
+    exact = arithmetic(v) if isinstance(v, str) else None
+    if exact is not None:
+        v = _float(exact)
     if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v):
         raise ValueError(f"{what} must be a number, got {v!r}")
     low, high = SIZES

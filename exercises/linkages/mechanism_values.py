@@ -20,7 +20,7 @@ from tarsim.constructions.errors import InputError
 from tarsim.constructions.joints import Slide
 from tarsim.constructions.model import GivenRate, Link
 from tarsim.constructions.units import LENGTH_UNITS, Units
-from ..file_numbers import LARGEST, RANGE, _float, in_range, radians_in_turn
+from ..file_numbers import LARGEST, RANGE, _float, arithmetic, in_range, radians_in_turn
 from ..toml_source import _CONTROL, SourceMap
 
 __all__ = ["TableReader"]
@@ -119,7 +119,11 @@ class TableReader:
     def number(self, v: Any, what: str, *, size: bool = False, bounded: bool = True,
                **where) -> float:
         """A finite number, no larger than :data:`LARGEST` if ``bounded``; with ``size`` (a
-        length, a rate) none smaller than its reciprocal either, but 0."""
+        length, a rate) none smaller than its reciprocal either, but 0. Arithmetic of
+        numbers in a string ("120/2", the crank as half the stroke) is taken at its value."""
+        exact = arithmetic(v) if isinstance(v, str) else None
+        if exact is not None:
+            v = _float(exact)
         if isinstance(v, bool) or not isinstance(v, (int, float)):
             raise self.fail(f"{what} must be a number, got {v!r}", **where)
         x = _float(v)
