@@ -155,7 +155,8 @@ def test_bad_file_is_one_line_with_file_and_line(mech_file, tmp_path, edit, mess
                         "planetary-q3, planetary-q4, ratio-least-teeth, ratio-only, "
                         "teeth-implied, two-planets-listed, two-speeds-arm-and-sun, "
                         "eccentric-flat-face, offset-knife-edge, "
-                        "oscillating-roller, roller-harmonic-cycloidal, four-mass-shaft, "
+                        "oscillating-roller, roller-harmonic-cycloidal, "
+                        "valve-unequal-acceleration, four-mass-shaft, "
                         "four-masses-one-plane, inline-four, notes-example-1, "
                         "single-cylinder-balance-mass, single-cylinder, unknown-angles, "
                         "unknown-planes, "
@@ -291,7 +292,8 @@ def test_list_shows_the_bundled_examples():
                    "planetary-q4", "ratio-least-teeth", "ratio-only", "teeth-implied",
                    "two-planets-listed", "two-speeds-arm-and-sun",
                    "eccentric-flat-face", "offset-knife-edge",
-                   "oscillating-roller", "roller-harmonic-cycloidal", "four-mass-shaft",
+                   "oscillating-roller", "roller-harmonic-cycloidal",
+                   "valve-unequal-acceleration", "four-mass-shaft",
                    "four-masses-one-plane", "inline-four", "notes-example-1",
                    "single-cylinder-balance-mass", "single-cylinder", "unknown-angles",
                    "unknown-planes",

@@ -116,7 +116,7 @@ def _displacement(sol) -> tuple[float, float]:
             theta, y = d.point(ref)
             want = lift if s.kind == "dwell" else lift + motion(
                 s.law, s.lift, s.angle, theta - start, rise=s.kind == "rise",
-                blend=s.blend).y - (s.lift if s.kind == "return" else 0.0)
+                blend=s.blend, split=s.split).y - (s.lift if s.kind == "return" else 0.0)
             err, tol = abs(y - want), AGREE * sol.bounds[ref]
             if err / tol > worst[0] / worst[1]:
                 worst = (err, tol)

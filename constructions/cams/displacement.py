@@ -8,7 +8,9 @@ they meet the construction of its law:
   many equal arcs; each division projected across to its ordinate;
 - **parabolic** (uniform acceleration and retardation): the half lift on the start ordinate
   divided in the ratio 1 : 3 : 5 … (by parallels from a line marked 1, 4, 9 …), projected
-  across; the second half the same from the top, on the end ordinate;
+  across; the second half the same from the top, on the end ordinate. Split unequally, the
+  accelerating part's share of the lift (its share of the angle) is so divided over its
+  divisions, and the retarding part's over the rest;
 - **cycloidal**: a circle of radius h/2π about the start, divided into as many equal arcs;
   each division projected onto the start ordinate, and from there a parallel to the
   segment's diagonal run to its ordinate;
@@ -45,6 +47,8 @@ class Segment:
     divisions: int = 6
     blend: float = 0.25
     """A modified uniform velocity's blended fraction at each end."""
+    split: float = 0.5
+    """The fraction of a parabolic segment that accelerates, the rest retarding."""
 
 
 @dataclass
@@ -187,8 +191,12 @@ class _Segment:
         words = dict(k=self.k, half=Word("first" if part == 0 else "second"), m=counted(m),
                      where=Word("start" if part == 0 else "end"),
                      way=Word("up from the foot" if sign > 0 else "down from the top"))
-        said = (phrase("cam.blend", rise=drawn_length(abs(rise)), **words)
-                if self.s.law == "modified uniform velocity" else phrase("cam.parabolic", **words))
+        if self.s.law == "modified uniform velocity":
+            said = phrase("cam.blend", rise=drawn_length(abs(rise)), **words)
+        elif self.s.split != 0.5:
+            said = phrase("cam.parabolic_part", rise=drawn_length(abs(rise)), **words)
+        else:
+            said = phrase("cam.parabolic", **words)
         foot = self.give(f"h{part}:O", g.Point(x, y), said=said)
         top = self.give(f"h{part}:M", g.Point(x, y + sign * rise))
         ordinate = self.act(f"h{part}:ord", "line_through", foot, top)
@@ -208,10 +216,13 @@ class _Segment:
             self.out.strokes.append((marks[j - 1], heights[-1]))
         return foot, heights + [top]
 
-    def ends(self, ordinates: list[Ref], rise: float, m: int) -> list[tuple[float, Ref]]:
-        """Parabolas of ``rise`` over the first and last ``m`` divisions, each projected
-        across to its ordinates; between them, the straight run joining their ends."""
+    def ends(self, ordinates: list[Ref], rise: float, m: int,
+             last: tuple[float, int] | None = None) -> list[tuple[float, Ref]]:
+        """Parabolas of ``rise`` over the first ``m`` divisions and of ``last`` (its rise and
+        divisions, the first's unless given) over the last, each projected across to its
+        ordinates; between them, the straight run joining their ends."""
         n, angles = self.s.divisions, self.angles()
+        rise2, m2 = last or (rise, m)
         out: list[tuple[float, Ref]] = []
         foot, heights = self.parabola(0, self.x0, self.y0, 1.0 if self.h > 0 else -1.0,
                                       rise, m)
@@ -219,26 +230,32 @@ class _Segment:
         for j, hgt in enumerate(heights, start=1):
             out.append((angles[j], self.level(hgt, ordinates[j], j)))
         foot2, heights2 = self.parabola(1, self.x0 + self.width, self.y0 + self.h,
-                                        -1.0 if self.h > 0 else 1.0, rise, m)
-        if n == 2 * m:
-            heights2 = heights2[:-1]                     # the halves meet at the middle
+                                        -1.0 if self.h > 0 else 1.0, rise2, m2)
+        if n == m + m2:
+            heights2 = heights2[:-1]                     # the parts meet at an ordinate
         tail = [(angles[n - j], self.level(hgt, ordinates[n - j], n - j))
                 for j, hgt in reversed(list(enumerate(heights2, start=1)))]
-        if n > 2 * m:
+        if n > m + m2:
             run = self.act("run", "line_through", out[-1][1], tail[0][1], kind=Kind.LINE,
                            said=phrase("cam.modified", k=self.k))
             self.out.strokes.append((out[-1][1], tail[0][1]))
-            for i in range(m + 1, n - m):
+            for i in range(m + 1, n - m2):
                 out.append((angles[i], self.act(f"pt{i}", "intersect_lines", run,
                                                 ordinates[i], label=str(i))))
         return out + tail + [(angles[n], foot2)]
 
     def parabolic(self, ordinates: list[Ref]) -> list[tuple[float, Ref]]:
-        n = self.s.divisions
-        if n % 2:
+        n, k = self.s.divisions, self.s.split
+        if k == 0.5 and n % 2:
             raise InputError(f"segment {self.k}: a parabolic segment is divided into an even "
                              f"number of parts (the two halves alike), not {n}")
-        return self.ends(ordinates, abs(self.h) / 2, n // 2)
+        m = round(k * n)
+        if not (1 <= m < n and abs(m - k * n) < 1e-9):
+            raise InputError(f"segment {self.k}: its acceleration ({k:g} of the segment) must "
+                             f"end on one of its {n} divisions")
+        # The velocity is greatest where the parts meet, 2h/β, so each part's share of the
+        # lift is its share of the angle.
+        return self.ends(ordinates, abs(self.h) * k, m, (abs(self.h) * (1 - k), n - m))
 
     def modified(self, ordinates: list[Ref]) -> list[tuple[float, Ref]]:
         n, b = self.s.divisions, self.s.blend

@@ -66,7 +66,7 @@ def pieces(segments: Sequence[Any]) -> list[Piece]:
     out, start, height = [], 0.0, 0.0
     for k, s in enumerate(segments, start=1):
         dwell = s.kind == "dwell"
-        cuts = (0.0, 1.0) if dwell else law_pieces(s.law, s.blend)
+        cuts = (0.0, 1.0) if dwell else law_pieces(s.law, s.blend, s.split)
         for i, (a, b) in enumerate(zip(cuts, cuts[1:])):
             out.append(Piece(k, s, start, height, a * s.angle, b * s.angle,
                              None if dwell else i))

@@ -7,7 +7,9 @@ y″ = d²y/dθ², y‴ = d³y/dθ³ are:
 - uniform velocity: y = h·u;
 - simple harmonic: y = h/2·(1 − cos πu);
 - uniform acceleration and retardation (parabolic): y = 2h·u² to u = ½, then
-  h − 2h·(1 − u)²;
+  h − 2h·(1 − u)²; split unequally at u = k (acceleration over the first fraction k of the
+  segment), y = h·u²/k to u = k, then h − h·(1 − u)²/(1 − k): the velocity 2h/β at the
+  split whatever k, the acceleration 2h/kβ², the retardation 2h/(1 − k)β²;
 - cycloidal: y = h·(u − sin 2πu / 2π);
 - modified uniform velocity: uniform velocity V = h/(1 − b)β, its corners blended by
   parabolas (uniform acceleration V/bβ) over the first and last fraction b of the segment,
@@ -44,24 +46,26 @@ BLEND = 0.25
 """The fraction of a modified-uniform-velocity segment blended at each end, unless given."""
 
 
-def pieces(law: str, blend: float = BLEND) -> tuple[float, ...]:
+def pieces(law: str, blend: float = BLEND, split: float = 0.5) -> tuple[float, ...]:
     """The fractions of a segment that bound the pieces of its law, 0 and 1 included: y″
-    jumps between two pieces (at the middle of a parabolic segment, at the ends of a
-    modified uniform velocity's blends), and within one the law is analytic.
+    jumps between two pieces (at a parabolic segment's ``split``, its middle unless given,
+    at the ends of a modified uniform velocity's blends), and within one the law is
+    analytic.
 
     Examples
     --------
     >>> pieces("parabolic"), pieces("cycloidal")
     ((0.0, 0.5, 1.0), (0.0, 1.0))
     """
-    inner = {"parabolic": (0.5,), "modified uniform velocity": (blend, 1 - blend)}.get(law, ())
+    inner = {"parabolic": (split,), "modified uniform velocity": (blend, 1 - blend)}.get(law, ())
     return tuple(sorted({0.0, *inner, 1.0}))
 
 
 def motion(law: str, lift: float, beta: float, theta: float, *, rise: bool = True,
-           blend: float = BLEND, piece: int | None = None) -> Motion:
+           blend: float = BLEND, split: float = 0.5, piece: int | None = None) -> Motion:
     """The follower's motion ``theta`` (rad) into a segment of ``beta`` lifting ``lift``
-    (``blend``: the modified uniform velocity's blended fraction at each end).
+    (``blend``: the modified uniform velocity's blended fraction at each end; ``split``:
+    the fraction of a parabolic segment that accelerates).
 
     ``piece`` (an index into :func:`pieces`) evaluates that piece's formula whatever
     ``theta`` is, so a piece's end gives its own one-sided limit where y″ jumps; by default
@@ -91,10 +95,12 @@ def motion(law: str, lift: float, beta: float, theta: float, *, rise: bool = Tru
         m = Motion(h / 2 * (1 - math.cos(math.pi * u)), h / 2 * k * math.sin(math.pi * u),
                    h / 2 * k * k * math.cos(math.pi * u), -h / 2 * k ** 3 * math.sin(math.pi * u))
     elif law == "parabolic":
-        if (u <= 0.5) if piece is None else piece == 0:
-            m = Motion(2 * h * u * u, 4 * h * u / b, 4 * h / b ** 2, 0.0)
+        k = split
+        if (u <= k) if piece is None else piece == 0:
+            m = Motion(h * u * u / k, 2 * h * u / (k * b), 2 * h / (k * b * b), 0.0)
         else:
-            m = Motion(h - 2 * h * (1 - u) ** 2, 4 * h * (1 - u) / b, -4 * h / b ** 2, 0.0)
+            m = Motion(h - h * (1 - u) ** 2 / (1 - k), 2 * h * (1 - u) / ((1 - k) * b),
+                       -2 * h / ((1 - k) * b * b), 0.0)
     elif law == "cycloidal":
         w = 2 * math.pi * u
         m = Motion(h * (u - math.sin(w) / (2 * math.pi)), h / b * (1 - math.cos(w)),
@@ -108,17 +114,19 @@ def motion(law: str, lift: float, beta: float, theta: float, *, rise: bool = Tru
     return Motion(h - m.y, -m.y1, -m.y2, -m.y3)
 
 
-def peaks(law: str, lift: float, beta: float, blend: float = BLEND) -> tuple[float, float]:
+def peaks(law: str, lift: float, beta: float, blend: float = BLEND, split: float = 0.5
+          ) -> tuple[float, float]:
     """The textbook maxima of |y′| and |y″| over a segment (per rad, per rad²):
     uniform velocity h/β and — (infinite at the ends, given as inf); modified uniform
     velocity h/(1 − b)β and h/b(1 − b)β²; simple harmonic πh/2β and π²h/2β²; parabolic 2h/β
-    and 4h/β²; cycloidal 2h/β and 2πh/β²."""
+    and 4h/β² (split at k, 2h/β and 2h/kβ² or 2h/(1 − k)β², the shorter part's);
+    cycloidal 2h/β and 2πh/β²."""
     h, b = lift, beta
     return {"uniform velocity": (h / b, math.inf),
             "modified uniform velocity": (h / ((1 - blend) * b),
                                           h / (blend * (1 - blend) * b * b)),
             "simple harmonic": (math.pi * h / (2 * b), math.pi ** 2 * h / (2 * b * b)),
-            "parabolic": (2 * h / b, 4 * h / b ** 2),
+            "parabolic": (2 * h / b, 2 * h / (min(split, 1 - split) * b * b)),
             "cycloidal": (2 * h / b, 2 * math.pi * h / b ** 2)}[law]
 
 

@@ -92,7 +92,8 @@ def segment_motion(s, height: float, t: float, *, piece: int | None = None) -> M
     it (a piece's own formula, for its one-sided limits)."""
     if s.kind == "dwell":
         return Motion(height, 0.0, 0.0, 0.0)
-    m = motion(s.law, s.lift, s.angle, t, rise=s.kind == "rise", blend=s.blend, piece=piece)
+    m = motion(s.law, s.lift, s.angle, t, rise=s.kind == "rise", blend=s.blend,
+               split=s.split, piece=piece)
     base = height - (s.lift if s.kind == "return" else 0.0)
     return Motion(base + m.y, m.y1, m.y2, m.y3)
 

@@ -44,6 +44,9 @@ class CamExercise:
     follower: Follower = Follower()
     jerk: bool = False
     """The jerk is asked for: its diagram and each segment's peak."""
+    at: tuple[float, ...] = ()
+    """Cam angles (degrees from the first segment's start) the follower's motion is asked
+    at."""
     names: tuple[tuple[str, str], ...] = ()
     """The cam's name in other languages (``[names]``, :mod:`.names`)."""
 
@@ -102,7 +105,7 @@ def parse_cam(text: str, filename: str = "<string>", exercise_id: str = "cam",
         if not 0 < angle <= 360:
             raise fail(f"a segment's angle must be more than 0° and at most 360°, got "
                        f"{angle:g}°", "segment", "angle", i)
-        lift, law, divisions, blend = 0.0, "", 6, BLEND
+        lift, law, divisions, blend, split = 0.0, "", 6, BLEND, 0.5
         if kind != "dwell":
             lift = number(t, "lift", "segment", "a segment's lift", i)
             if lift < 0:
@@ -115,12 +118,14 @@ def parse_cam(text: str, filename: str = "<string>", exercise_id: str = "cam",
                 raise fail(f"unknown law '{law}'; the laws are {', '.join(LAWS)}", "segment",
                            "law", i)
             modified = law == "modified uniform velocity"
-            parts = t.get("divisions", 8 if modified else 6)
+            if "accelerating" in t:
+                split = _split(t, angle, law, number, fail, i)
+            parts = t.get("divisions", 8 if modified else _parts(split))
             if isinstance(parts, bool) or not isinstance(parts, int) or not 2 <= parts <= 24:
                 raise fail(f"a segment is divided into 2 to 24 equal parts, not {parts!r}",
                            "segment", "divisions", i)
             divisions = parts
-            if law == "parabolic" and parts % 2:
+            if law == "parabolic" and split == 0.5 and parts % 2:
                 raise fail(f"a parabolic segment is divided into an even number of parts (the "
                            f"two halves alike), not {parts}", "segment", "divisions", i)
             if modified:
@@ -132,13 +137,17 @@ def parse_cam(text: str, filename: str = "<string>", exercise_id: str = "cam",
                                f"{blend:g}", "segment", "blend", i)
             elif "blend" in t:
                 raise fail("only a modified uniform velocity has a blend", "segment", "blend", i)
+            if law == "parabolic" and abs(split * parts - round(split * parts)) > 1e-9:
+                raise fail(f"the acceleration must end on a division: {angle * split:g}° of "
+                           f"{angle:g}° in {parts} equal parts does not; give divisions so "
+                           "that it does", "segment", "divisions", i)
         total += angle
         height += lift if kind == "rise" else -lift
         if height < -1e-12 * max(lift, 1.0):
             raise fail(f"segment {i + 1} returns the follower below the base circle "
                        f"({height:g} {length})", "segment", "lift", i)
         segments.append(Segment(kind, math.radians(angle), lift * metre, law, divisions,
-                                blend))
+                                blend, split))
     if abs(total - 360.0) > 1e-9:
         raise fail(f"the segments add to {total:g}°, not 360°: the cam turns once",
                    key="segment")
@@ -146,17 +155,55 @@ def parse_cam(text: str, filename: str = "<string>", exercise_id: str = "cam",
         raise fail(f"the rises and returns leave the follower {height:g} {length} off the "
                    "base circle after a turn: they must balance", key="segment")
     ask = data.get("ask", {})
-    if not isinstance(ask, dict) or any(k != "jerk" for k in ask) or not isinstance(
-            ask.get("jerk", False), bool):
-        raise fail("a cam's [ask] table takes jerk = true (its diagram and peaks); the "
-                   "displacement, velocity, acceleration and profile are always drawn", "ask")
+    if not isinstance(ask, dict) or any(k not in ("jerk", "at") for k in ask) or not \
+            isinstance(ask.get("jerk", False), bool):
+        raise fail("a cam's [ask] table takes jerk = true (its diagram and peaks) and at = "
+                   "[40, 240] (the motion at those cam angles); the displacement, velocity, "
+                   "acceleration and profile are always drawn", "ask")
+    at = _angles(ask.get("at", []), fail)
     return CamExercise(exercise_id, str(data.get("name", exercise_id)),
                        str(data.get("source", "")), str(data.get("description", "")),
                        base * metre, omega, tuple(segments), length, speed, follower,
-                       ask.get("jerk", False), read_names(data, tables.where, filename))
+                       ask.get("jerk", False), at, read_names(data, tables.where, filename))
 
 
-_FOLLOWER_KEYS = ("kind", "radius", "motion", "offset", "pivot", "arm")
+def _angles(raw: Any, fail) -> tuple[float, ...]:
+    """[ask] at: the cam angles (degrees, 0 to 360 from the first segment's start) the
+    follower's motion is asked at, each once."""
+    if not isinstance(raw, list) or not all(
+            isinstance(v, (int, float)) and not isinstance(v, bool) for v in raw):
+        raise fail("at lists cam angles in degrees from the start of the first segment: "
+                   "at = [40, 240]", "ask", "at")
+    for v in raw:
+        if not 0 <= v <= 360:
+            raise fail(f"a cam angle asked at is from 0° to 360°, not {v:g}°", "ask", "at")
+    if len({f"{v:g}" for v in raw}) < len(raw):
+        raise fail("a cam angle is asked at twice", "ask", "at")
+    return tuple(float(v) for v in raw)
+
+
+def _split(t: dict[str, Any], angle: float, law: str, number, fail, i: int) -> float:
+    """A parabolic segment's accelerating fraction: ``accelerating`` gives the degrees of
+    uniform acceleration (from the segment's start), the retardation taking the rest, as
+    the books split an outstroke unequally."""
+    if law != "parabolic":
+        raise fail("only a parabolic segment (uniform acceleration and retardation) is split "
+                   "by accelerating", "segment", "accelerating", i)
+    part = number(t, "accelerating", "segment", "the degrees of acceleration", i)
+    if not 0 < part < angle:
+        raise fail(f"the acceleration lasts part of the segment's {angle:g}°, more than 0° and "
+                   f"less than all of it, not {part:g}°", "segment", "accelerating", i)
+    return part / angle
+
+
+def _parts(split: float) -> int:
+    """The fewest equal parts, six or more, that put a split on a division (six if none up
+    to 24 does: the file then gives its divisions)."""
+    return next((n for n in range(6, 25) if abs(split * n - round(split * n)) < 1e-9
+                 and (split != 0.5 or n % 2 == 0)), 6)
+
+
+_FOLLOWER_KEYS = ("kind", "radius", "diameter", "motion", "offset", "pivot", "arm")
 _KINDS = ("knife-edge", "roller", "flat-faced")
 
 
@@ -180,9 +227,15 @@ def _follower(t: dict[str, Any], base: float, metre: float, unit: str, fail) -> 
         except ValueError as e:
             raise fail(str(e), "follower", key) from None
 
-    radius = size("radius", "the roller's radius")
+    if "diameter" in t and "radius" in t:
+        raise fail("give the roller's radius or its diameter, not both", "follower",
+                   "diameter")
+    # The books give a roller by its diameter as often as by its radius.
+    radius = size("diameter", "the roller's diameter") / 2 if "diameter" in t else \
+        size("radius", "the roller's radius")
     if kind == "roller" and not radius > 0:
-        raise fail("a roller follower gives its radius: radius = 10", "follower", "radius")
+        raise fail("a roller follower gives its radius (radius = 10) or its diameter "
+                   "(diameter = 20)", "follower", "diameter" if "diameter" in t else "radius")
     if how == "translating":
         offset = size("offset", "the follower's offset")
         reach = prime_radius(base, Follower(kind, radius))

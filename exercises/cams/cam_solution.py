@@ -31,6 +31,7 @@ from ..solution_folder import ChapterFiles
 from ..worked_document import Bullets, Paragraph, Section, said_steps, title
 from .cam_file import CamExercise
 from .cam_layout import CamProfile, refuse_undercut
+from .cam_readings import CamReadings
 
 __all__ = ["CamSolution", "solve_cam"]
 
@@ -74,6 +75,12 @@ class CamSolution(ChapterFiles):
         return CamProfile(self.exercise, self.diagram)
 
     @cached_property
+    def readings(self) -> CamReadings:
+        """The motion at the asked cam angles, an arm's angular rates, a parabolic segment's
+        acceleration and retardation."""
+        return CamReadings(self.exercise)
+
+    @cached_property
     def bounds(self) -> dict[str, float]:
         """How far rounding can move each constructed point off its law, in lift (m)."""
         return lift_bounds(self.diagram, self.exercise.segments)
@@ -102,7 +109,7 @@ class CamSolution(ChapterFiles):
         for k, s in enumerate(self.exercise.segments, start=1):
             if s.kind == "dwell":
                 continue
-            v, a = peaks(s.law, s.lift, s.angle, s.blend)
+            v, a = peaks(s.law, s.lift, s.angle, s.blend, s.split)
             top = [_law_peak(s, lambda m: abs(m.y1)), _law_peak(s, lambda m: abs(m.y2)),
                    _law_peak(s, lambda m: abs(m.y3))]
             out.append(SegmentPeaks(k, s.kind, s.law, v * w, a * w * w, top[0] * w,
@@ -113,14 +120,16 @@ class CamSolution(ChapterFiles):
     @property
     def passed(self) -> bool:
         """Every constructed point on its law and every peak formula its law's."""
-        return not self.misses and all(p.passed for p in self.peaks) and self.profile.passed
+        return (not self.misses and all(p.passed for p in self.peaks) and self.profile.passed
+                and not self.readings.failures)
 
     @property
     def failures(self) -> list[str]:
         """What disagrees, by name."""
         return ([f"segment {k} point {i}" for k, i, _ in self.misses]
                 + [f"segment {p.index} peaks" for p in self.peaks if not p.passed]
-                + [f"profile station {i}" for i, _ in self.profile.survey.misses])
+                + [f"profile station {i}" for i, _ in self.profile.survey.misses]
+                + self.readings.failures)
 
     # ----- what it writes ---------------------------------------------------------------------
     def lines(self) -> list[str]:
@@ -150,7 +159,7 @@ class CamSolution(ChapterFiles):
         out.append(words("displacement diagram: {n} points constructed, {verdict}",
                          n=numeral(sum(len(c) for c in self.diagram.curves), "d"),
                          verdict=verdict))
-        return out + self.profile.lines()
+        return out + self.readings.lines() + self.profile.lines()
 
     @cached_property
     def curves(self) -> tuple[list[float], ...]:
@@ -163,7 +172,8 @@ class CamSolution(ChapterFiles):
         for s in ex.segments:
             for i in range(0, 361):
                 t = s.angle * i / 360
-                m = motion(s.law, s.lift, s.angle, t, rise=s.kind == "rise", blend=s.blend) \
+                m = motion(s.law, s.lift, s.angle, t, rise=s.kind == "rise", blend=s.blend,
+                           split=s.split) \
                     if s.kind != "dwell" else None
                 xs.append(math.degrees(start + t))
                 base = lift - (s.lift if s.kind == "return" else 0.0)
@@ -192,11 +202,12 @@ class CamSolution(ChapterFiles):
             unit=unit_words("rpm" if rpm else "rad/s"),
             sense=Word("clockwise" if ex.omega < 0 else "counter-clockwise"))
 
-        def plot(title, label, values, scale, notes=()):
+        def plot(title, label, values, scale, notes=(), which=0):
             scaled = [v * scale for v in values]
+            asked = self.readings.marks(which, scale) if which else []
             return draw_line_plot(words("{name}: " + title, name=name), words("cam angle θ (°)"),
                                   label, [Series(words(title), tuple(zip(xs, scaled)))],
-                                  self._peak_marks(xs, scaled), x_range=(0.0, 360.0),
+                                  self._peak_marks(xs, scaled) + asked, x_range=(0.0, 360.0),
                                   x_ticks=ticks, notes=notes, subtitle=speed,
                                   mark_legend=words("each segment's peak"))
         jumps = self.jumps
@@ -205,17 +216,20 @@ class CamSolution(ChapterFiles):
                                                             for j in jumps))] if jumps else []
         curve = [(math.radians(x), y) for x, y in zip(xs, ys)]
         motion_plots = ({"velocity": plot("the arm's angular velocity",
-                                          f"ω ({unit_words('rad/s')})", vs, 1 / arm),
+                                          f"ω ({unit_words('rad/s')})", vs, 1 / arm, which=1),
                          "acceleration": plot("the arm's angular acceleration",
-                                              f"α ({unit_words('rad/s²')})", accs, 1 / arm)}
+                                              f"α ({unit_words('rad/s²')})", accs, 1 / arm,
+                                              which=2)}
                         if arm else
                         {"velocity": plot("velocity", f"ẏ ({unit_words(unit + '/s')})", vs,
-                                          1.0 / ex.metre),
+                                          1.0 / ex.metre, which=1),
                          "acceleration": plot("acceleration", f"ÿ ({unit_words('m/s²')})",
-                                              accs, 1.0)})
+                                              accs, 1.0, which=2)})
         return {"displacement": draw_displacement_figure(
                     self.diagram, curve, words("{name}: displacement", name=name), unit,
-                    ex.metre, arm=arm)} | motion_plots | (
+                    ex.metre, arm=arm, asked=[(math.radians(d), r.law.y, words(
+                        "θ = {theta}°", theta=numerals(f"{d:g}"))) for d, r in
+                        self.readings.at])} | motion_plots | (
             {"jerk": plot("jerk", words("jerk ({unit})", unit=unit_words("m/s³")), jerks, 1.0,
                           spikes)} if ex.jerk else {}
         ) | self.profile.figures()
@@ -242,13 +256,13 @@ class CamSolution(ChapterFiles):
             if s.kind == "dwell":
                 return 0.0
             return motion(s.law, s.lift, s.angle, u * s.angle, rise=s.kind == "rise",
-                          blend=s.blend).y2
+                          blend=s.blend, split=s.split).y2
         big = max((abs(a) for a in self.curves[3]), default=0.0)
         out, start = [], 0.0
         for k, s in enumerate(segs):
             if abs(y2(s, 0.0) - y2(segs[k - 1], 1.0)) > 1e-9 * big:
                 out.append(start)
-            inner = {"parabolic": (0.5,),
+            inner = {"parabolic": (s.split,),
                      "modified uniform velocity": (s.blend, 1 - s.blend)}.get(s.law, ())
             out += [start + f * s.angle for f in inner if s.kind != "dwell" and f < 1]
             start += s.angle
@@ -258,7 +272,7 @@ class CamSolution(ChapterFiles):
         """steps.md: the displacement diagram's construction, then each segment's peaks (the
         lines solve prints, with their checks), then the profile."""
         ex = self.exercise
-        peaks = self.lines()[:len(self.peaks) + 1]
+        peaks = self.lines()[:len(self.peaks) + 1] + self.readings.lines()
         if self.jumps:
             peaks.append(phrase("md.jumps", jumps=", ".join(f"{numerals(f'{j:g}')}°"
                                                             for j in self.jumps)))
@@ -284,20 +298,22 @@ class CamSolution(ChapterFiles):
                 for p in self.peaks}
         if self.exercise.jerk:
             out |= {f"j_max_{p.index}": peak(p.jerk, p.jerk_sampled, p.law) for p in self.peaks}
-        return out | self.profile.checked()
+        return out | self.readings.checked(self.peaks) | self.profile.checked()
 
 
 def _y(s, theta: float) -> float:
     """A segment's lift from its start's height at ``theta`` into it."""
-    m = motion(s.law, s.lift, s.angle, theta, rise=s.kind == "rise", blend=s.blend)
+    m = motion(s.law, s.lift, s.angle, theta, rise=s.kind == "rise", blend=s.blend,
+               split=s.split)
     return m.y - (s.lift if s.kind == "return" else 0.0)
 
 
 def _law_peak(s, size) -> float:
     """The greatest ``size`` of a segment's law's motion over its pieces (each piece's own
     formula at its ends, where y″ jumps)."""
-    cuts = pieces(s.law, s.blend)
+    cuts = pieces(s.law, s.blend, s.split)
     return max(greatest(lambda t, i=i: size(motion(s.law, s.lift, s.angle, t, blend=s.blend,
+                                                   split=s.split,
                                                    piece=i)), a * s.angle, b * s.angle)
                for i, (a, b) in enumerate(zip(cuts, cuts[1:])))
 

@@ -10,6 +10,7 @@ numbered, and the curve through them (the law's, so it runs smooth between them)
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 
 from tarsim.constructions.cams.displacement import Displacement
 from tarsim.constructions.narration import numerals, unit_words, words
@@ -25,10 +26,13 @@ _UP_LEFT, _UP_RIGHT = 2.36, 0.79    # a point number's first way out (rad): up t
 
 
 def draw_displacement_figure(d: Displacement, curve: list[tuple[float, float]], title: str,
-                             unit: str, metre: float, *, arm: float = 0.0) -> Figure:
+                             unit: str, metre: float, *, arm: float = 0.0,
+                             asked: Sequence[tuple[float, float, str]] = ()) -> Figure:
     """The diagram ``d`` with the smooth ``curve`` (cam angle in rad, lift in m) through its
     points; lengths stated in ``unit`` (``metre`` metres each). For a swinging ``arm`` the
-    lift is the arc its end swings through, and the swing is stated in degrees too."""
+    lift is the arc its end swings through, and the swing is stated in degrees too.
+    ``asked`` are the points read at asked cam angles (rad, lift, label), each ringed and
+    named."""
     c = d.construction
     top = max(y for _, y in curve) or 1.0
     width = 2 * math.pi * d.per_rad
@@ -71,6 +75,12 @@ def draw_displacement_figure(d: Displacement, curve: list[tuple[float, float]], 
                 "(a swing of {angle}°)", angle=numerals(f"{math.degrees(top / arm):.4g}")),
                 2.8, "start", False))
     fig.add(Path(tuple(paper((t * d.per_rad, y)) for t, y in curve), "vector_result"))
+    for theta, y, label in asked:
+        # Ringed on the curve, its ordinate run down and named in a row under the angles.
+        x, py = paper((theta * d.per_rad, y))
+        fig.add(Path(((x, 0.0), (x, py)), "construction"))
+        fig.add(Circle((x, py), 1.2, "plot_mark"))
+        fig.add(Text((x, max(4.5, below + 3.5) + 4.5), label, 2.8, "middle", False))
     # The numbers last, each clear of every line drawn (the curve, the ordinates, the
     # construction's working lines) and nearer its own point than any other.
     placer = LabelPlacer(fig)

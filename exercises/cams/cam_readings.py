@@ -1,0 +1,136 @@
+"""A cam's readings as the books ask them, beside each segment's peaks: the follower's motion
+at a stated cam angle, a swinging arm's angular velocity and acceleration, and a parabolic
+segment's acceleration and retardation apart.
+
+Each is written to results.json in SI with its check: the motion at an angle by differences
+of the lift (:mod:`tarsim.constructions.cams.readings`), the arm's rates as the roller
+centre's peaks over the arm (the lift is the arc y = lψ, so ψ̇ = ẏ/l exactly), and the
+parabolic parts' 2h/kβ²·ω² and 2h/(1 − k)β²·ω² against the law's y″ on each piece.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from functools import cached_property
+
+from tarsim.constructions.cams.readings import AGREE, Reading, read_at
+from tarsim.constructions.narration import numeral, numerals, words
+from tarsim.constructions.reference.cam_laws import motion
+from tarsim.graphics.plot import PlotMark
+from ..checked import Checked
+from .cam_file import CamExercise
+
+__all__ = ["CamReadings"]
+
+
+@dataclass(frozen=True)
+class CamReadings:
+    """The readings of ``exercise`` beyond its peaks (see the module's docstring)."""
+
+    exercise: CamExercise
+
+    @cached_property
+    def at(self) -> list[tuple[float, Reading]]:
+        """Each asked cam angle (degrees) and the follower's motion there."""
+        return [(d, read_at(self.exercise.segments, math.radians(d))) for d in self.exercise.at]
+
+    @property
+    def failures(self) -> list[str]:
+        """The readings whose differences disagree with their law, by name."""
+        return [f"the motion at {d:g}°" for d, r in self.at if not r.passed]
+
+    def _rates(self, r: Reading) -> tuple[float, float, float]:
+        """The lift y (m), ẏ (m/s) and ÿ (m/s²) by the law; the cam at constant speed."""
+        w = abs(self.exercise.omega)
+        return r.law.y, r.law.y1 * w, r.law.y2 * w * w
+
+    def checked(self, peaks) -> dict[str, Checked]:
+        """results.json's rows: at each asked angle y, v and a (a swinging arm's ψ, ω and α,
+        in rad), an arm's greatest ω and α on each moving segment, and a parabolic
+        segment's acceleration and retardation."""
+        ex, w = self.exercise, abs(self.exercise.omega)
+        arm = ex.follower.arm if ex.follower.oscillating else 0.0
+        out: dict[str, Checked] = {}
+        for d, r in self.at:
+            y, v, a = self._rates(r)
+            by = (r.y1_diff * w, r.y2_diff * w * w)
+            scale = 1 / arm if arm else 1.0
+            names = ("psi", "omega", "alpha") if arm else ("y", "v", "a")
+            at = {"theta": math.radians(d), "segment": r.segment}
+            out[f"{names[0]}_at_{d:g}"] = Checked({"value": y * scale} | at, method="the law")
+            for name, got, diff, peak in ((names[1], v, by[0], r.peak[0] * w),
+                                          (names[2], a, by[1], r.peak[1] * w * w)):
+                out[f"{name}_at_{d:g}"] = Checked(
+                    {"value": got * scale} | at, {"value": diff * scale},
+                    rel_error=abs(got - diff) / peak if peak else 0.0,
+                    tolerance=AGREE, passed=abs(got - diff) <= AGREE * peak,
+                    method="the law; differences of its lift")
+        if arm:
+            for p in peaks:
+                out[f"omega_max_{p.index}"] = Checked(
+                    {"value": p.velocity / arm}, {"value": p.velocity_sampled / arm},
+                    method=f"{p.law} formula over the arm")
+                out[f"alpha_max_{p.index}"] = Checked(
+                    {"value": None if math.isinf(p.acceleration) else p.acceleration / arm},
+                    {"value": p.acceleration_sampled / arm},
+                    method=f"{p.law} formula over the arm")
+        for k, s in enumerate(ex.segments, start=1):
+            if s.law != "parabolic" or s.kind == "dwell":
+                continue
+            parts = (2 * s.lift / (s.split * s.angle ** 2) * w * w,
+                     2 * s.lift / ((1 - s.split) * s.angle ** 2) * w * w)
+            for name, value, piece in (("acceleration", parts[0], 0),
+                                       ("retardation", parts[1], 1)):
+                law = abs(motion(s.law, s.lift, s.angle, 0.5 * s.angle, blend=s.blend,
+                                 split=s.split, piece=piece).y2) * w * w
+                out[f"{name}_{k}"] = Checked({"value": value}, {"value": law},
+                                             method="2h/kβ²·ω², 2h/(1 − k)β²·ω²")
+        return out
+
+    def lines(self) -> list[str]:
+        """What solve prints of them: the motion at each asked angle, checked; a split
+        parabolic segment's acceleration and retardation."""
+        ex = self.exercise
+        unit, size = ex.length_unit, 1 / ex.metre
+        arm = ex.follower.arm if ex.follower.oscillating else 0.0
+        out = []
+
+        def signed(x: float) -> str:
+            return numeral(x, ".4g").replace("-", "−")
+        for d, r in self.at:
+            y, v, a = self._rates(r)
+            check = words("check ok" if r.passed else "check FAILED")
+            if arm:
+                out.append(words("at θ = {theta}° (segment {k}): ψ = {psi}°, ω = {w} rad/s, "
+                                 "α = {a} rad/s²   {check}", theta=numerals(f"{d:g}"),
+                                 k=numeral(r.segment, "d"),
+                                 psi=signed(math.degrees(y / arm)),
+                                 w=signed(v / arm), a=signed(a / arm),
+                                 check=check))
+            else:
+                out.append(words("at θ = {theta}° (segment {k}): y = {y} {unit}, v = {v} "
+                                 "{unit}/s, a = {a} m/s²   {check}", theta=numerals(f"{d:g}"),
+                                 k=numeral(r.segment, "d"), y=signed(y * size),
+                                 v=signed(v * size), a=signed(a),
+                                 unit=unit, check=check))
+        w = abs(ex.omega)
+        for k, s in enumerate(ex.segments, start=1):
+            if s.law == "parabolic" and s.kind != "dwell" and s.split != 0.5:
+                out.append(words("segment {k}: uniform acceleration {a} m/s² over {first}°, "
+                                 "retardation {r} m/s² over {rest}°", k=numeral(k, "d"),
+                                 a=numeral(2 * s.lift / (s.split * s.angle ** 2) * w * w, ".4g"),
+                                 r=numeral(2 * s.lift / ((1 - s.split) * s.angle ** 2) * w * w,
+                                           ".4g"),
+                                 first=numeral(math.degrees(s.split * s.angle), ".4g"),
+                                 rest=numeral(math.degrees((1 - s.split) * s.angle), ".4g")))
+        return out
+
+    def marks(self, which: int, scale: float) -> list[PlotMark]:
+        """The asked angles' readings on a plot: ``which`` 1 for velocity, 2 acceleration,
+        each value times ``scale`` as the plot draws it."""
+        out = []
+        for d, r in self.at:
+            value = self._rates(r)[which] * scale
+            out.append(PlotMark(d, value, words("θ = {theta}°", theta=numerals(f"{d:g}"))))
+        return out

@@ -1,0 +1,168 @@
+"""Cams as the books pose them: a roller by its diameter, uniform acceleration and
+retardation over unequal parts, the motion at a stated cam angle, a swinging arm's angular
+rates; each against its closed form."""
+
+from __future__ import annotations
+
+import json
+import math
+from pathlib import Path
+
+import pytest
+from click.testing import CliRunner
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from tarsim.constructions.cams.displacement import Segment
+from tarsim.constructions.cams.readings import read_at
+from tarsim.constructions.errors import InputError
+from tarsim.constructions.reference.cam_laws import motion, peaks
+from tarsim.exercises.cams.cam_file import parse_cam
+from tarsim.exercises.cams.cam_solution import solve_cam
+from tarsim.exercises.catalog import bundled, load
+from tarsim.exercises.cli import cli
+
+VALVE = Path(bundled("cams")["valve-unequal-acceleration"]).read_text(encoding="utf-8")
+W = 150 * 2 * math.pi / 60          # the valve cam's 150 rpm
+
+
+def test_a_roller_may_be_given_by_its_diameter():
+    """diameter = 20 is a roller of radius 10 mm: the prime circle 40 + 10 mm."""
+    ex = parse_cam(VALVE, "cam.toml")
+    assert ex.follower.radius == pytest.approx(0.010, rel=1e-15)
+
+
+@pytest.mark.parametrize("old, new, words", [
+    ("diameter = 20", "diameter = 20\nradius = 10", "the roller's radius or its diameter, not both"),
+    ("diameter = 20", "diameter = 0", "a roller follower gives its radius (radius = 10) or its "
+                                      "diameter"),
+    ("accelerating = 80 ", "accelerating = 120 ", "less than all of it, not 120°"),
+    ("accelerating = 80 ", "accelerating = 77 ", "the acceleration must end on a division: "
+                                                 "77° of 120° in 6 equal parts does not"),
+    ("law = \"simple harmonic\"", "law = \"simple harmonic\"\naccelerating = 30",
+     "only a parabolic segment (uniform acceleration and retardation) is split"),
+    ("at = [60, 180] ", "at = [60, 400] ", "a cam angle asked at is from 0° to 360°, not 400°"),
+    ("at = [60, 180] ", "at = [60, 60] ", "a cam angle is asked at twice"),
+    ("at = [60, 180] ", "at = \"60\" ", "at lists cam angles in degrees"),
+])
+def test_a_bad_book_input_is_refused_in_one_line_at_its_place(old, new, words):
+    assert old in VALVE
+    with pytest.raises(InputError) as e:
+        parse_cam(VALVE.replace(old, new, 1), "cam.toml")
+    message = str(e.value)
+    assert "\n" not in message and message.startswith("cam.toml:") and words in message, message
+
+
+def test_unequal_acceleration_and_retardation_are_the_books_closed_forms():
+    """h = 30 mm over β = 120°, accelerating over β₁ = 80°, retarding over β₂ = 40°: the
+    velocity peaks at V = 2h/β·ω where the parts meet (h = V(β₁ + β₂)/2), the acceleration
+    is V/β₁·ω = 2h/(β·β₁)·ω² and the retardation 2h/(β·β₂)·ω², twice it."""
+    s = solve_cam(load("valve-unequal-acceleration"))
+    assert s.passed and not s.misses                 # each constructed point on its law
+    h, b, b1, b2 = 0.030, math.radians(120), math.radians(80), math.radians(40)
+    q = s.results["quantities"]
+    assert q["v_max_1"]["value"] == pytest.approx(2 * h / b * W, rel=1e-14)
+    assert q["acceleration_1"]["value"] == pytest.approx(2 * h / (b * b1) * W * W, rel=1e-14)
+    assert q["retardation_1"]["value"] == pytest.approx(2 * h / (b * b2) * W * W, rel=1e-14)
+    assert q["a_max_1"]["value"] == pytest.approx(q["retardation_1"]["value"], rel=1e-14)
+    # Each part's share of the lift is its share of the angle: 20 mm by 80°.
+    assert motion("parabolic", h, b, b1, split=2 / 3).y == pytest.approx(0.020, rel=1e-14)
+    # The jump of y″ is at 80°, not at the middle.
+    assert 80.0 in s.jumps and 60.0 not in s.jumps
+
+
+def test_an_equal_split_is_the_parabolic_law_unchanged():
+    """split = ½ is the textbook's 2hu², 4hu/β, 4h/β² to the last bit (division by ½ is
+    exact), so every cam with a parabolic segment solves as it did."""
+    h, b = 0.04, 1.3
+    for u in (0.0, 0.1, 0.37, 0.5, 0.77, 1.0):
+        m = motion("parabolic", h, b, u * b)
+        y, y1, y2 = ((2 * h * u * u, 4 * h * u / b, 4 * h / b ** 2) if u <= 0.5 else
+                     (h - 2 * h * (1 - u) ** 2, 4 * h * (1 - u) / b, -4 * h / b ** 2))
+        assert (m.y, m.y1, m.y2) == pytest.approx((y, y1, y2), rel=1e-15, abs=1e-18)
+    assert peaks("parabolic", h, b) == (2 * h / b, 4 * h / b ** 2)
+
+
+def test_the_motion_at_an_asked_cam_angle_is_the_law_there(tmp_path):
+    """60° into the rise (in its acceleration, β₁ = 80°): y = h·u²/k with u = ½, k = ⅔, so
+    y = 3h/8 = 11.25 mm, ẏ = 2h·u/(kβ)·ω, ÿ = 2h/(kβ²)·ω². 180° is 30° into the simple
+    harmonic return over 90°: ẏ = −(πh/2β)·sin(π/3)·ω, ÿ = −(π²h/2β²)·cos(π/3)·ω²."""
+    out = tmp_path / "valve"
+    result = CliRunner().invoke(cli, ["solve", "valve-unequal-acceleration", "-o", str(out),
+                                      "--no-pdf"])
+    assert result.exit_code == 0, result.output
+    assert "at θ = 60° (segment 1): y = 11.25 mm, v = 337.5 mm/s" in result.output
+    q = json.loads((out / "results.json").read_text(encoding="utf-8"))["quantities"]
+    h, b, k = 0.030, math.radians(120), 2 / 3
+    assert q["y_at_60"]["value"] == pytest.approx(3 * h / 8, rel=1e-14)
+    assert q["v_at_60"]["value"] == pytest.approx(2 * h * 0.5 / (k * b) * W, rel=1e-14)
+    assert q["a_at_60"]["value"] == pytest.approx(2 * h / (k * b * b) * W * W, rel=1e-14)
+    br = math.radians(90)
+    assert q["v_at_180"]["value"] == pytest.approx(
+        -math.pi * h / (2 * br) * math.sin(math.pi / 3) * W, rel=1e-13)
+    assert q["a_at_180"]["value"] == pytest.approx(
+        -math.pi ** 2 * h / (2 * br ** 2) * math.cos(math.pi / 3) * W * W, rel=1e-13)
+    assert q["y_at_180"]["value"] == pytest.approx(h / 2 * (1 + math.cos(math.pi / 3)),
+                                                   rel=1e-14)
+    assert q["v_at_60"]["passed"] and q["a_at_180"]["passed"]
+    assert "θ = 60°" in (out / "displacement.svg").read_text(encoding="utf-8")
+
+
+def test_on_a_join_the_motion_is_the_later_segments():
+    """At 120°, the end of the rise, the dwell begins: y = h, ẏ = ÿ = 0; at 150° the
+    return begins, ÿ = −π²h/2β²·ω² (the harmonic's first value), not the dwell's 0."""
+    ex = parse_cam(VALVE, "cam.toml")
+    end = read_at(ex.segments, math.radians(120))
+    assert (end.segment, end.law.y, end.law.y1, end.law.y2) == (2, pytest.approx(0.030), 0, 0)
+    start = read_at(ex.segments, math.radians(150))
+    b = math.radians(90)
+    assert start.segment == 3
+    assert start.law.y2 == pytest.approx(-math.pi ** 2 * 0.030 / (2 * b * b), rel=1e-14)
+    assert start.passed
+
+
+def test_a_swinging_arms_angular_rates_are_the_peaks_over_the_arm():
+    """The bundled arm swings 20° in 120° cycloidally at 200 rpm: ψ̇_max = 2Ψω/β,
+    ψ̈_max = 2πΨω²/β²; back in 120° by simple harmonic motion: πΨω/2β, π²Ψω²/2β²."""
+    s = solve_cam(load("oscillating-roller"))
+    q = s.results["quantities"]
+    w, psi, b = 200 * 2 * math.pi / 60, math.radians(20), math.radians(120)
+    assert q["omega_max_1"]["value"] == pytest.approx(2 * psi * w / b, rel=1e-14)
+    assert q["alpha_max_1"]["value"] == pytest.approx(2 * math.pi * psi * w * w / b ** 2,
+                                                      rel=1e-14)
+    assert q["omega_max_3"]["value"] == pytest.approx(math.pi * psi * w / (2 * b), rel=1e-14)
+    assert q["alpha_max_3"]["value"] == pytest.approx(math.pi ** 2 * psi * w * w / (2 * b * b),
+                                                      rel=1e-14)
+
+
+def test_an_arm_asked_at_a_cam_angle_gives_its_swing_and_rates():
+    """30° into the 120° cycloidal swing of 20°: u = ¼, ψ = Ψ(u − sin 2πu/2π),
+    ψ̇ = Ψω/β·(1 − cos 2πu) = Ψω/β, ψ̈ = 2πΨω²/β²·sin 2πu = 2πΨω²/β²."""
+    text = Path(bundled("cams")["oscillating-roller"]).read_text(encoding="utf-8")
+    ex = parse_cam(text.replace("[names]", "[ask]\nat = [30]\n\n[names]"), "arm.toml")
+    q = solve_cam(ex).results["quantities"]
+    w, psi, b = 200 * 2 * math.pi / 60, math.radians(20), math.radians(120)
+    assert q["psi_at_30"]["value"] == pytest.approx(psi * (0.25 - 1 / (2 * math.pi)), rel=1e-14)
+    assert q["omega_at_30"]["value"] == pytest.approx(psi * w / b, rel=1e-14)
+    assert q["alpha_at_30"]["value"] == pytest.approx(2 * math.pi * psi * w * w / b ** 2,
+                                                      rel=1e-14)
+
+
+LAWS = st.sampled_from(["uniform velocity", "modified uniform velocity", "simple harmonic",
+                        "parabolic", "cycloidal"])
+
+
+@settings(max_examples=150, deadline=None)
+@given(LAWS, st.floats(5.0, 300.0), st.floats(1e-4, 1.0), st.floats(0.0, 1.0),
+       st.sampled_from([1 / 3, 0.5, 0.75]), st.booleans())
+def test_differences_of_the_lift_agree_with_each_law_anywhere(law, degrees, lift, u, split,
+                                                              rise):
+    """Property: at any cam angle of a segment, its law's y′ and y″ agree with second-order
+    differences of its y to 10⁻⁵ of the segment's peak (the module's bound: truncation
+    ~10⁻⁷, rounding a few 10⁻⁸), at its ends and beside a jump of y″ too. (A return's
+    heights are taken from its own foot here: the differences need only its shape.)"""
+    beta = math.radians(degrees)
+    segs = [Segment("rise" if rise else "return", beta, lift, law, split=split),
+            Segment("dwell", 2 * math.pi - beta)]
+    reading = read_at(segs, u * beta)
+    assert reading.passed, (reading.law, reading.y1_diff, reading.y2_diff)
