@@ -210,3 +210,74 @@ def test_an_engines_balance_masses_are_refused_in_one_line_where_they_cannot_be(
         parse_balance(TWO_CYLINDERS.replace(old, new, 1), "e.toml")
     message = str(e.value)
     assert "\n" not in message and message.startswith("e.toml:") and words in message, message
+
+
+THREE_MASSES = """
+[units]
+length = "mm"
+speed = "rpm"
+[rotor]
+speed = 100
+[[mass]]
+name = "1"
+mass = 8
+radius = 80
+angle = 0
+[[mass]]
+name = "2"
+mass = 12
+radius = 100
+angle = "?"
+between = [0, 180]
+[[mass]]
+name = "3"
+mass = 15
+radius = 60
+angle = "?"
+"""
+
+
+@pytest.mark.parametrize("between, sign", [("[0, 180]", 1), ("[180, 360]", -1),
+                                           ("[200, 300]", -1), ("[-90, 170]", 1)])
+def test_between_chooses_the_mirror_image_of_masses_in_balance(between, sign):
+    """A triangle of 0.64, 1.2 and 0.9 kg·m: cos θ₂ = (0.9² − 0.64² − 1.2²)/(2·0.64·1.2)
+    (law of cosines), θ₂ = ±132.596°; the 15 kg mass closes it, 0.9·e^{iθ₃} = −0.64 −
+    1.2·e^{iθ₂}. ``between`` takes the image whose θ₂ it holds; the line says so."""
+    cos2 = (0.81 - 0.4096 - 1.44) / 1.536
+    theta2 = sign * math.acos(cos2)
+    v3 = -0.64 - 1.2 * complex(math.cos(theta2), math.sin(theta2))
+    s = solve_balance(parse_balance(THREE_MASSES.replace("[0, 180]", between), "m.toml"))
+    assert s.passed, s.failures
+    q = s.results["quantities"]
+    assert q["angle_2"]["value"] == pytest.approx(math.degrees(theta2) % 360, rel=1e-9)
+    assert q["angle_3"]["value"] == pytest.approx(
+        math.degrees(math.atan2(v3.imag, v3.real)) % 360, rel=1e-9)
+    assert q["angle_2"]["mirror"] == pytest.approx(math.degrees(-theta2) % 360, rel=1e-9)
+    assert any("as its between asks" in line for line in s.lines())
+
+
+def test_with_no_between_the_rule_taken_is_said():
+    s = solve_balance(parse_balance(THREE_MASSES.replace("between = [0, 180]\n", ""), "m.toml"))
+    assert any(line.startswith("taken: the crossing left of the last tip") for line in s.lines())
+
+
+@pytest.mark.parametrize("old, new, words", [
+    ("[0, 180]", "[300, 350]", "mass 2's angle comes out 227.40° or 132.60°, none between 300° "
+                               "and 350°"),
+    ("[0, 180]", "[10, 370]", "spans no angle or the whole turn"),
+    ("[0, 180]", "180", "between is two angles, [from, to]"),
+    ('angle = "?"\nbetween', "angle = 10\nbetween", "its angle is given; leave between out"),
+])
+def test_a_between_that_cannot_be_held_is_refused_in_one_line(old, new, words):
+    assert old in THREE_MASSES
+    with pytest.raises(InputError) as e:
+        parse_balance(THREE_MASSES.replace(old, new, 1), "m.toml")
+    message = str(e.value)
+    assert "\n" not in message and message.startswith("m.toml:") and words in message, message
+
+
+def test_a_whole_rotor_refuses_between():
+    text = TWO_PLANES.replace("angle = 45\n", "angle = 45\nbetween = [0, 90]\n", 1)
+    with pytest.raises(InputError, match=r"t.toml:\d+: mass B's between chooses where an "
+                                         r"unknown angle comes out"):
+        parse_balance(text, "t.toml")

@@ -43,6 +43,16 @@ class Part:
     radius: float | None
     angle: float | None
     plane: float | None
+    between: tuple[float, float] | None = None
+    """Where an unknown angle must come out (rad, counter-clockwise from the first to the
+    second): the file's choice between the mirror images a polygon closes on."""
+
+    def admits(self, angle: float) -> bool:
+        """Whether ``angle`` (rad) lies in :attr:`between` (any angle does without one)."""
+        if self.between is None:
+            return True
+        lo, hi = self.between
+        return (angle - lo) % math.tau <= (hi - lo) % math.tau
 
     @property
     def size(self) -> float | None:
@@ -85,6 +95,11 @@ class Closure:
     reference: tuple[str, float] | None = None
     order: list[str] = field(default_factory=list)
     mirrored: list[str] = field(default_factory=list)
+    """The polygons that close on two crossings, mirror images of each other."""
+    chosen: dict[str, str] = field(default_factory=dict)
+    """Each such polygon's mass whose ``between`` chose the crossing taken; a mirrored
+    polygon missing here took the rule's (the left crossing of tip → pole, or the forward
+    one along a line)."""
 
 
 def count_unknowns(rotor: OpenRotor) -> int:
@@ -265,12 +280,13 @@ def _close(out: Closure, which: str, z: float, known, unknown) -> None:
                     kind=Kind.LINE, panel=panel)
         arc = c.draw(f"{tag}:arc:{n2}", "swing_arc", pole, radius=abs(s2), panel=panel)
         x = _cross(out, which, tag, panel, "intersect_line_circle", (la, arc),
-                   ("forward", "backward"), lambda at: _positive(out, which, z, n1, tip, at))
+                   ("forward", "backward"), lambda at: _positive(out, which, z, n1, tip, at),
+                   _sides(out, which, z, ((n2, None, pole),)))
     else:                                       # two directions of known sizes
         a = c.draw(f"{tag}:arc:{n1}", "swing_arc", tip, radius=abs(s1), panel=panel)
         b = c.draw(f"{tag}:arc:{n2}", "swing_arc", pole, radius=abs(s2), panel=panel)
         x = _cross(out, which, tag, panel, "intersect_circles", (a, b), ("left", "right"),
-                   lambda at: True)
+                   lambda at: True, _sides(out, which, z, ((n1, tip, None), (n2, None, pole))))
     if SHIFT * growth(out) > SHAKY:
         raise CannotClose("the polygons' carriers cross too shallowly (nearly parallel "
                           "lines or arcs): the data fix the unknowns to fewer than four "
@@ -285,11 +301,14 @@ def _close(out: Closure, which: str, z: float, known, unknown) -> None:
 
 
 def _cross(out: Closure, which: str, tag: str, panel: Panel, verb: str, inputs,
-           picks: tuple[str, str], good) -> Ref:
+           picks: tuple[str, str], good, sides) -> Ref:
     """Cut two carriers, taking the first crossing that ``good`` accepts; where both are,
-    the polygon closes twice (mirror images), and that is told."""
+    the polygon closes twice (mirror images), and that is told. ``sides(at)`` gives, for a
+    crossing, the masses whose angle it finds: (name, angle, whether their ``between``
+    admits it); a mass's ``between`` chooses between the mirror images, and a crossing it
+    does not admit is not taken."""
     c = out.construction
-    taken = []
+    taken, found = [], []
     for pick in picks:
         trial = c.scratch()
         try:
@@ -299,13 +318,54 @@ def _cross(out: Closure, which: str, tag: str, panel: Panel, verb: str, inputs,
                               f"reach across it ({e})") from None
         if good(trial.output(at)):
             taken.append(pick)
+            found.append(sides(trial.output(at)))
     if not taken:
         raise CannotClose(f"the {which} polygon closes only with a negative mass: no mass at "
                           "the angle given balances it")
     if len(taken) == 2:
         out.mirrored.append(which)
-    return c.draw(f"{tag}:x", verb, *inputs, pick=taken[0], label="x", panel=panel,
+    kept = [(pick, side) for pick, side in zip(taken, found) if all(ok for _, _, ok in side)]
+    if not kept:
+        name = next(n for side in found for n, _, ok in side if not ok)
+        p = out.parts[name]
+        angles = " or ".join(f"{math.degrees(a) % 360:.2f}°" for side in found
+                             for n, a, _ in side if n == name)
+        raise CannotClose(f"mass {name}'s angle comes out {angles}, none between "
+                          f"{math.degrees(p.between[0]):g}° and {math.degrees(p.between[1]):g}° "
+                          "as its between asks")
+    if len(taken) == 2 and len(kept) == 1:
+        out.chosen[which] = next(n for n, _, _ in kept[0][1] if out.parts[n].between)
+    return c.draw(f"{tag}:x", verb, *inputs, pick=kept[0][0], label="x", panel=panel,
                   phrase=phrase("balance.cut"))
+
+
+def _sides(out: Closure, which: str, z: float, vectors):
+    """For a crossing ``at``: each of ``vectors`` (name, start or None for ``at``, end or
+    None for ``at``) whose mass's angle is unknown, that angle as :func:`_read` would read
+    it, and whether the mass's ``between`` admits it."""
+    c = out.construction
+
+    def sides(at) -> list[tuple[str, float, bool]]:
+        got = []
+        for name, start, end in vectors:
+            p = out.parts[name]
+            if p.angle is not None:
+                continue
+            (x0, y0) = at.xy if start is None else c.output(start).xy
+            (x1, y1) = at.xy if end is None else c.output(end).xy
+            angle = _angle_of(out, which, z, name, (x1 - x0, y1 - y0))
+            got.append((name, angle, p.admits(angle)))
+        return got
+    return sides
+
+
+def _angle_of(out: Closure, which: str, z: float, name: str, v) -> float:
+    """The angle (rad, in [0, 2π)) of mass ``name`` whose vector in the polygon is ``v``:
+    its direction, turned half round where its couple's arm is negative."""
+    p = out.parts[name]
+    lever = 1.0 if which == "force" else (None if p.plane is None else p.plane - z)
+    turn = math.atan2(v[1], v[0]) + (math.pi if lever is not None and lever < 0 else 0.0)
+    return math.remainder(turn, 2 * math.pi) % (2 * math.pi)
 
 
 def _positive(out: Closure, which: str, z: float, name: str, tip: Ref, at) -> bool:
@@ -328,8 +388,11 @@ def _read(out: Closure, which: str, z: float, name: str, start: Ref, end: Ref) -
     p = out.parts[name]
     lever = 1.0 if which == "force" else (None if p.plane is None else p.plane - z)
     if p.angle is None:
-        turn = math.atan2(v[1], v[0]) + (math.pi if lever is not None and lever < 0 else 0.0)
-        p = replace(p, angle=math.remainder(turn, 2 * math.pi) % (2 * math.pi))
+        p = replace(p, angle=_angle_of(out, which, z, name, v))
+        if not p.admits(p.angle):
+            raise CannotClose(f"mass {name}'s angle comes out {math.degrees(p.angle):.2f}°, not "
+                              f"between {math.degrees(p.between[0]):g}° and "
+                              f"{math.degrees(p.between[1]):g}° as its between asks")
         _radial(c, name, p.angle)
     along = v[0] * math.cos(p.angle) + v[1] * math.sin(p.angle)
     if p.size is None:

@@ -61,6 +61,16 @@ WORDS: dict[str, str] = {
     "rotor too":
         "دو نقطهٔ تقاطع چندضلعی {polygon} را می‌بندند: دیگری، قرینهٔ آینه‌ای این یک، روتور را "
         "نیز متعادل می‌کند",
+    "taken: mass {name}'s angle between {lo}° and {hi}°, as its between asks":
+        "برگزیده: زاویهٔ جرم {name} میان {lo}° و {hi}°، چنان‌که between آن می‌خواهد",
+    "taken: the crossing left of the last tip → the pole; between = [from, to] on a mass "
+    "with an unknown angle takes the other":
+        "برگزیده: نقطهٔ تقاطعِ سمت چپِ نوک آخر ← نقطهٔ شروع؛ between = [from, to] روی جرمی "
+        "با زاویهٔ مجهول دیگری را برمی‌گزیند",
+    "taken: the first crossing along the line from the last tip; between = [from, to] on a "
+    "mass with an unknown angle takes the other":
+        "برگزیده: نخستین نقطهٔ تقاطع در امتداد خط از نوک آخر؛ between = [from, to] روی جرمی "
+        "با زاویهٔ مجهول دیگری را برمی‌گزیند",
     "force": "نیرو", "couple": "کوپل",
     "each where the algebra puts it": "هر یک همان‌جا که حل جبری نشان می‌دهد",
     ": found": ": یافته‌شده",

@@ -57,7 +57,7 @@ def read_open_rotor(t, metre: float, speed: float, name_of) -> OpenRotor:
             raise t.fail(f"mass {name}'s mass and radius show only as m·r: give one of them",
                          "mass", "radius", i)
         parts.append(Part(name, values["mass"], values["radius"], values["angle"],
-                          values["plane"]))
+                          values["plane"], _between(t, e, name, i, values["angle"])))
     rotor = OpenRotor(tuple(parts), speed, static)
     need = 2 if static else 4
     have = count_unknowns(rotor)
@@ -74,3 +74,26 @@ def read_open_rotor(t, metre: float, speed: float, name_of) -> OpenRotor:
     except CannotClose as e:
         raise t.fail(f"{e}", "mass", first[0], first[1]) from None
     return rotor
+
+
+def _between(t, e: dict, name: str, i: int, angle) -> tuple[float, float] | None:
+    """A mass's ``between = [from, to]`` (degrees, counter-clockwise from the first to the
+    second): where its unknown angle must come out, the file's choice of the mirror image
+    (the books' "measured counter-clockwise", their masses' order round the shaft)."""
+    if "between" not in e:
+        return None
+    v = e["between"]
+    if angle is not None:
+        raise t.fail(f"mass {name}'s between chooses where an unknown angle comes out: its "
+                     'angle is given; leave between out, or make the angle "?"', "mass",
+                     "between", i)
+    if not (isinstance(v, list) and len(v) == 2):
+        raise t.fail(f"mass {name}'s between is two angles, [from, to] in degrees "
+                     "counter-clockwise, such as [0, 180]", "mass", "between", i)
+    lo, hi = (t.number({"between": x}, "between", "mass", f"mass {name}'s between", i)
+              for x in v)
+    if (hi - lo) % 360 == 0:
+        raise t.fail(f"mass {name}'s between, [{lo:g}, {hi:g}], spans no angle or the whole "
+                     "turn: give the range its angle lies in, such as [0, 180]", "mass",
+                     "between", i)
+    return radians_in_turn(lo, "deg"), radians_in_turn(hi, "deg")

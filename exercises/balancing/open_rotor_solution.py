@@ -52,7 +52,10 @@ def _roots(closure: Closure) -> list[dict]:
     def gap(root) -> float:
         return sum(abs(math.remainder(root[n][2] - p.angle, 2 * math.pi)) + abs(
             root[n][0] * root[n][1] - p.mass * p.radius) for n, p in closure.parts.items())
-    return sorted(roots, key=gap)
+
+    def refused(root) -> bool:       # a root some mass's between does not admit goes last
+        return not all(p.admits(root[n][2]) for n, p in closure.given.items())
+    return sorted(roots, key=lambda root: (refused(root), gap(root)))
 
 
 def _root(closure: Closure) -> dict | None:
@@ -135,6 +138,7 @@ def open_lines(closure: Closure, rotor: OpenRotor, length_unit: str, passed: boo
     if closure.mirrored:
         out.append(words("two crossings close the {polygon} polygon: the other, the mirror "
                          "image, balances the rotor too", polygon=words(closure.mirrored[0])))
+        out.append(_choice(closure, closure.mirrored[0]))
         roots = _roots(closure)
         if len(roots) > 1:
             out.append(words("the mirror image: {found}", found=", ".join(
@@ -146,6 +150,21 @@ def open_lines(closure: Closure, rotor: OpenRotor, length_unit: str, passed: boo
     out.append(words("polygons closed: {verdict}; the balanced rotor's residual force "
                      "{residual} kg·m", verdict=verdict, residual=numeral(f, ".1e")))
     return out
+
+
+def _choice(closure: Closure, which: str) -> str:
+    """Which of the two crossings was taken, and why: a mass's ``between``, or the rule."""
+    name = closure.chosen.get(which)
+    if name is not None:
+        lo, hi = (numeral(math.degrees(a) % 360.0, "g") for a in closure.given[name].between)
+        return words("taken: mass {name}'s angle between {lo}° and {hi}°, as its between "
+                     "asks", name=name, lo=lo, hi=hi)
+    tag = "fp" if which == "force" else "cp"
+    if closure.construction[f"{tag}:x"].verb == "intersect_circles":
+        return words("taken: the crossing left of the last tip → the pole; between = [from, "
+                     "to] on a mass with an unknown angle takes the other")
+    return words("taken: the first crossing along the line from the last tip; between = "
+                 "[from, to] on a mass with an unknown angle takes the other")
 
 
 def open_figures(name: str, closure: Closure, rotor: OpenRotor,

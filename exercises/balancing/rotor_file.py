@@ -30,7 +30,7 @@ _NAME_LENGTH = 12
 _NAME = re.compile(rf"^[^\s\x00-\x1f\x7f-\x9f\u202a-\u202e\u2066-\u2069]{{1,{_NAME_LENGTH}}}$")
 """A mass's or a plane's name: a short word with no space or control character in it."""
 
-_KEYS = {"rotor": ("speed",), "mass": ("name", "mass", "radius", "angle", "plane"),
+_KEYS = {"rotor": ("speed",), "mass": ("name", "mass", "radius", "angle", "plane", "between"),
          "balance": ("name", "plane", "radius", "mass"),
          "engine": ("speed", "crank", "stroke", "rod", "reciprocating", "balanced", "at",
                     "revolving", "balance_radius", "balance_mass"),
@@ -148,6 +148,9 @@ def _masses(t: Tables, metre: float, length: str) -> list[Mass]:
         if any(m.name == name for m in masses):
             raise t.fail(f"two masses are named {name}: give each its own name", "mass",
                          "name", i)
+        if "between" in entry:
+            raise t.fail(f"mass {name}'s between chooses where an unknown angle comes out: give "
+                         'its angle = "?", or leave between out', "mass", "between", i)
         m = t.number(entry, "mass", "mass", f"mass {name}'s mass", i)
         r = t.number(entry, "radius", "mass", f"mass {name}'s radius", i)
         if not m > 0 or not r > 0:
