@@ -425,19 +425,21 @@ class Effort(Ask):
     """An engine's force as the textbooks name it, from the force polygons: the piston
     effort (its loads along the stroke, + toward the crank), the wall's thrust on the
     piston (the size of its push square to the stroke), the crank effort (the rod's push
-    on the crank pin square to the crank, + CCW) and the turning moment it gives (N·m,
-    CCW +)."""
+    on the crank pin square to the crank, + CCW), the turning moment it gives (N·m,
+    CCW +) and the thrust on the shaft's bearings (the push along the crank, + toward the
+    shaft)."""
 
     word: str
     order: ClassVar[int] = 9
 
     @property
     def name(self) -> str:
-        """``piston_effort``, ``wall_thrust``, ``crank_effort`` or ``turning_moment``."""
+        """``piston_effort``, ``wall_thrust``, ``crank_effort``, ``turning_moment`` or
+        ``bearing_thrust``."""
         return self.word
 
 
-EFFORTS = ("piston_effort", "wall_thrust", "crank_effort", "turning_moment")
+EFFORTS = ("piston_effort", "wall_thrust", "crank_effort", "turning_moment", "bearing_thrust")
 """The efforts an exercise may ask: the first two of a slider-crank only."""
 
 

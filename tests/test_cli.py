@@ -147,7 +147,8 @@ def test_bad_file_is_one_line_with_file_and_line(mech_file, tmp_path, edit, mess
                         "piston-driven-slider-crank, rolling-wheel, six-link-homework-1, "
                         "six-link-homework-3, slotted-lever-p37, velocity-homework-292, "
                         "wheel-driven-slider, wheel-round-circle, whitworth, "
-                        "crank-shaper-forces, crank-shaper-inertia, engine-forces, "
+                        "crank-shaper-forces, crank-shaper-inertia, "
+                        "double-acting-engine, engine-forces, "
                         "engine-friction, engine-gas-pressure, "
                         "four-bar-coupler-load, four-bar-forces, compound-train, "
                         "differential-near-equal, gearbox-power-efficiency, "
@@ -284,7 +285,8 @@ def test_list_shows_the_bundled_examples():
                    "piston-driven-slider-crank", "rolling-wheel", "six-link-homework-1",
                    "six-link-homework-3", "slotted-lever-p37", "velocity-homework-292",
                    "wheel-driven-slider", "wheel-round-circle", "whitworth",
-                   "crank-shaper-forces", "crank-shaper-inertia", "engine-forces",
+                   "crank-shaper-forces", "crank-shaper-inertia",
+                   "double-acting-engine", "engine-forces",
                    "engine-friction", "engine-gas-pressure",
                    "four-bar-coupler-load", "four-bar-forces", "compound-train",
                    "differential-near-equal", "gearbox-power-efficiency", "involute-pair",

@@ -52,13 +52,14 @@ joint. (The turning-moment diagram of ``tarsim sweep`` gives any mechanism's for
 
 def forces_askable(mech: Mechanism) -> set[str]:
     """The forces an exercise may ask of ``mech``, if the polygons draw it: its joints', the
-    driving torque, the crank effort and its turning moment, and a slider-crank's piston
+    driving torque, the crank effort, its turning moment and the bearings' thrust, and a
+    slider-crank's piston
     effort and wall thrust."""
     try:
         group = group_of(mech)
     except TarsimError:
         return set()
-    out = force_names(mech) | {"crank_effort", "turning_moment"}
+    out = force_names(mech) | {"crank_effort", "turning_moment", "bearing_thrust"}
     if isinstance(group, Dyad) and group.guide is not None:
         out |= {"piston_effort", "wall_thrust"}
     return out

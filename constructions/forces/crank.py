@@ -57,14 +57,15 @@ def _crank_effort(c, draw, out: Forces, tail: Ref, head: Ref, name: str, o: str,
     square to it: through its tail a parallel to the crank, through its head a parallel to
     the crank circle's tangent at the pin; they cross where the radial part ends and the
     tangential part, the crank effort, begins. Its moment about the pivot, effort × crank,
-    is the turning moment."""
+    is the turning moment; the radial part, read toward the shaft, is the thrust on the
+    shaft's bearings."""
     t = crank_tangent(at[o], at[a])
     (tx, ty), (hx, hy) = c.output(tail).xy, c.output(head).xy
     push = math.hypot(hx - tx, hy - ty)
     if abs((hx - tx) * t[1] - (hy - ty) * t[0]) <= NOISE * push:
         # Square to the crank already: all of it is crank effort, nothing to split off.
         cross, part, key = head, None, "force.effort_square"
-        pushed = ((hx - tx) / draw.scale, (hy - ty) / draw.scale)
+        pushed, radial = ((hx - tx) / draw.scale, (hy - ty) / draw.scale), (0.0, 0.0)
     else:
         crank = c.draw("force:line:crank", "line_through", c.points[o], c.points[a],
                        kind=Kind.LINE, panel=Panel.FORCE)
@@ -76,15 +77,19 @@ def _crank_effort(c, draw, out: Forces, tail: Ref, head: Ref, name: str, o: str,
                         kind=Kind.LINE, panel=Panel.FORCE)
         cross = c.draw("force:X:effort", "intersect_lines", radial, square, label="t",
                        panel=Panel.FORCE)
-        draw.join("radial", tail, cross, label="F_R")
+        radial = draw.read(draw.join("radial", tail, cross, label="F_R"))
         part = draw.join("effort", cross, head, label="F_T")
         pushed, key = draw.read(part), "force.effort"
     effort = pushed[0] * t[0] + pushed[1] * t[1]
     r = math.dist(at[o], at[a])
     out.efforts["crank_effort"], out.efforts["turning_moment"] = effort, effort * r
+    # the radial part read toward the shaft (the tangent turned a quarter back: pin → pivot)
+    bearing = radial[1] * t[0] - radial[0] * t[1]
+    out.efforts["bearing_thrust"] = bearing
     loads = 0.08 / draw.scale                    # the largest load, to the rounding of it
     said = c.draw("force:say:effort", "mark", cross, panel=Panel.FORCE, phrase=phrase(
         key, name=name, o=o, a=a, effort=as_said(quiet(effort, loads), "N", ".6g"),
-        moment=as_said(quiet(effort * r, loads * r), "N·m", ".6g")))
-    out.refs["crank_effort"] = out.refs["turning_moment"] = tuple(
+        moment=as_said(quiet(effort * r, loads * r), "N·m", ".6g"),
+        radial=as_said(quiet(bearing, loads), "N", ".6g")))
+    out.refs["crank_effort"] = out.refs["turning_moment"] = out.refs["bearing_thrust"] = tuple(
         r for r in (cross, part, said) if r is not None)

@@ -30,7 +30,8 @@ PHRASES: dict[str, str] = {
                     "along the crank {o}{a}, through its head a line square to it; where they "
                     "cross the radial part ends and the tangential part F_T begins. The crank "
                     "effort F_T = {effort} (CCW +), and the turning moment F_T·{o}{a} = "
-                    "{moment}.",
+                    "{moment}; the radial part, the thrust on the shaft's bearings, F_R = "
+                    "{radial} (+ toward the shaft).",
     "force.resultant": "Link {i}'s loads add to one force R = {size}: its line runs where R "
                        "alone has their moment about {b}.",
     "force.two_force": "Link {j} carries no load: a two-force member, its pins' forces run "
@@ -67,7 +68,8 @@ PHRASES: dict[str, str] = {
                          "at rest, so its friction circle gives no couple.",
     "force.effort_square": "{name}, the push on the crank pin {a}, stands square to the crank "
                            "{o}{a}: all of it is crank effort, F_T = {effort} (CCW +), and "
-                           "the turning moment F_T·{o}{a} = {moment}.",
+                           "the turning moment F_T·{o}{a} = {moment}; the bearings take no "
+                           "thrust along it, F_R = {radial}.",
     "force.the_guide": "The guide",
     "force.the_frame_guide": "The frame's guide",
     "force.the_slot": "The slot of link {link}",

@@ -466,7 +466,8 @@ def efforts(mech: Mechanism, kin: Kinematics, loads: Loads, statics: Statics
             ) -> dict[str, float]:
     """An engine's efforts by the textbook's definitions, from the Newton–Euler joint forces:
     the crank effort (the push of the link at the crank pin on the crank, square to the
-    crank, CCW +) and its turning moment; for a slider-crank also the piston effort (the
+    crank, CCW +), its turning moment and the push along the crank toward the shaft (the
+    thrust on the shaft's bearings); for a slider-crank also the piston effort (the
     piston's loads along the stroke, + toward the crank) and the size of the wall's push
     on the piston square to the stroke."""
     d = mech.drive.link
@@ -478,7 +479,9 @@ def efforts(mech: Mechanism, kin: Kinematics, loads: Loads, statics: Statics
     t = crank_tangent(kin.points[pivot], kin.points[pin])
     effort = push[0] * t[0] + push[1] * t[1]
     r = math.dist(kin.points[pivot], kin.points[pin])
-    out = {"crank_effort": effort, "turning_moment": effort * r}
+    # the push along the crank, toward the shaft: the thrust on its bearings
+    out = {"crank_effort": effort, "turning_moment": effort * r,
+           "bearing_thrust": push[1] * t[0] - push[0] * t[1]}
     guide = [s for s in mech.slides if s.guide_link == 1 and s.type.turns_with_guide]
     if len(guide) == 1:
         s = guide[0]

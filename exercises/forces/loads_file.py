@@ -33,7 +33,7 @@ _KEYS = {"forces": ("gravity", "driver", "speed_fluctuation", "flywheel", "frict
                     "friction_circle"),
          "mass": ("link", "mass", "centre", "inertia", "length", "radius_of_gyration"),
          "force": ("link", "point", "force", "resist", "stroke", "name", "pressure", "bore",
-                   "area"),
+                   "area", "rod"),
          "couple": ("link", "moment", "name")}
 
 
@@ -169,7 +169,7 @@ def read_loads(data: dict[str, Any], mech: Mechanism, where: SourceMap,
         if "pressure" in t:
             forces.append(_gas_force(mech, t, n, point, name, metre, i, fail))
             continue
-        for key in ("bore", "area"):
+        for key in ("bore", "area", "rod"):
             if key in t:
                 raise fail(f"{key} is the piston's, for a gas pressure: give pressure = "
                            "\"2 MPa\" with it", "force", key, i)
@@ -237,7 +237,8 @@ def _pressure(v: Any) -> float:
 def _gas_force(mech: Mechanism, t: dict, n: int, point, name: str, metre: float, i: int,
                fail) -> PointForce:
     """A gas pressure on the piston's bore (or area) as a force: p·A along the line of stroke
-    toward the crank's pivot (away from it for a pressure below 0, a suction)."""
+    toward the crank's pivot (away from it for a pressure below 0, a suction, or the back
+    pressure on a double-acting piston's crank side, whose rod takes π·d²/4 off the bore)."""
     for key in ("force", "resist"):
         if key in t:
             raise fail(f"a gas force is given by its pressure or as {key}, not both",
@@ -257,7 +258,20 @@ def _gas_force(mech: Mechanism, t: dict, n: int, point, name: str, metre: float,
             raise fail(f"the bore is the piston's diameter, positive, in {mech.units.length}; "
                        f"got {t['bore']!r:.40}", "force", "bore", i)
         area = math.pi * size * size / 4
+        if "rod" in t:
+            # A double-acting piston's crank side: its rod takes the middle of the bore.
+            rod = t["rod"] if isinstance(t["rod"], (int, float)) else None
+            d = file_number(rod, "the piston rod's diameter") * metre if rod is not None else 0.0
+            if not 0 < d < size:
+                raise fail(f"the piston rod's diameter is positive and less than the bore's "
+                           f"({t['bore']:g} {mech.units.length}); got {t['rod']!r:.40}",
+                           "force", "rod", i)
+            area -= math.pi * d * d / 4
     else:
+        if "rod" in t:
+            raise fail("rod is the piston rod's diameter, taken off the bore (bore = 300, rod = "
+                       "50); an area given is the area the pressure acts on already", "force",
+                       "rod", i)
         a = t["area"] if isinstance(t["area"], (int, float)) else None
         area = file_number(a, "the area") * metre * metre if a is not None else 0.0
         if not area > 0:

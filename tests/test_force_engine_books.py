@@ -1,0 +1,138 @@
+"""An engine's loads and answers as the books give and ask them: a double-acting piston's
+back pressure on the annulus its rod leaves, and the thrust on the shaft's bearings, each
+against the textbook's closed form."""
+
+from __future__ import annotations
+
+import json
+import math
+
+import pytest
+from click.testing import CliRunner
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+import tarsim
+from tarsim.constructions.errors import InputError
+from tarsim.exercises.catalog import resolve
+from tarsim.exercises.chapters import read_file
+from tarsim.exercises.cli import cli
+from tarsim.exercises.linkages.exercise_file import parse_exercise
+
+R, L, BORE, MASS = 0.06, 0.27, 0.1, 1.2
+OMEGA = 1800 * math.pi / 30
+ROD_MASS = ("[[mass]]\nlink = 3\nmass = 2.0\ncentre = [100, 0]           # from the crank pin A "
+            "toward P\nradius_of_gyration = 110    # I = m·k²\n")
+BACK = ('name = "gas force"\n', 'name = "gas force"\n[[force]]\nlink = 4\npoint = "P"\n'
+        'pressure = "-0.1 N/mm²"\nbore = 100\nrod = 30\nname = "back pressure"\n')
+
+
+def _toward_crank(theta: float) -> float:
+    """The piston's exact acceleration toward the crank at steady ω: x = r cos θ + S,
+    S = √(l² − r² sin²θ), −ẍ = ω²(r cos θ + r² cos 2θ/S + r⁴ sin²θ cos²θ/S³)."""
+    s = math.sqrt(L * L - (R * math.sin(theta)) ** 2)
+    return OMEGA ** 2 * (R * math.cos(theta) + R * R * math.cos(2 * theta) / s
+                         + R ** 4 * (math.sin(theta) * math.cos(theta)) ** 2 / s ** 3)
+
+
+def _text(deg: float = 20, **changes: str) -> str:
+    text = resolve("engine-gas-pressure").read_text(encoding="utf-8")
+    text = text.replace("angle = 20                  #", f"angle = {deg!r}                  #")
+    text = text.replace('find = ["T2", ', 'find = ["T2", "bearing_thrust", "F_23", ')
+    for old, new in changes.items():
+        assert old in text, old
+        text = text.replace(old, new)
+    return text
+
+
+def _answers(text: str) -> dict[str, float]:
+    worked = tarsim.solve(parse_exercise(text, "engine.toml"))
+    assert worked.passed
+    (sol,) = worked.positions
+    return {name: q.value["value"] for name, q in sol.quantities.items()}
+
+
+def test_a_double_acting_piston_s_rod_takes_its_area_off_the_crank_side():
+    """650 kN/m² on the 100 mm bore toward the crank, 0.1 N/mm² back on the crank side
+    round a 30 mm rod: F_L = p1·πD²/4 − p2·π(D² − d²)/4, less the reciprocating parts' m·a."""
+    got = _answers(_text(**{BACK[0]: BACK[1]}))
+    load = 650e3 * math.pi * BORE ** 2 / 4 - 0.1e6 * math.pi * (BORE ** 2 - 0.03 ** 2) / 4
+    # the polygons and the Newton–Euler reference agree with it to rounding
+    assert got["piston_effort"] == pytest.approx(load - MASS * _toward_crank(math.radians(20)),
+                                                 rel=1e-12)
+
+
+@settings(max_examples=12, deadline=None)
+@given(deg=st.floats(5, 355).filter(lambda d: abs(d - 180) > 5))
+def test_the_bearings_thrust_is_the_rod_s_push_along_the_crank(deg):
+    """A massless rod pushes along itself, F_Q = F_P/cos φ: along the crank toward the shaft
+    that is F_B = F_Q cos(θ + φ), sin φ = r sin θ/l (negative where it pulls), and square to
+    it the crank effort F_Q sin(θ + φ); together they make the rod's whole push."""
+    theta = math.radians(deg)
+    got = _answers(_text(deg, **{ROD_MASS: ""}))
+    effort = 650e3 * math.pi * BORE ** 2 / 4 - MASS * _toward_crank(theta)
+    phi = math.asin(R * math.sin(theta) / L)
+    # the crank's angle keeps a few roundings of θ, whose 1e-15 its cosine may magnify by
+    # tan(θ + φ) where it nears zero: rel 1e-10 leaves room for that at 5° from the quarter
+    assert got["bearing_thrust"] == pytest.approx(effort * math.cos(theta + phi) / math.cos(phi),
+                                                  rel=1e-10, abs=1e-9 * abs(effort))
+    assert math.hypot(got["bearing_thrust"], got["crank_effort"]) == pytest.approx(
+        got["F_23"], rel=1e-12)
+
+
+def test_the_bearings_thrust_is_drawn_and_said(tmp_path):
+    """The radial part F_R is read off the force polygon and said in steps.md, in English
+    and in Persian."""
+    path = tmp_path / "e.toml"
+    path.write_text(_text(), encoding="utf-8")
+    for lang, word in (("en", "thrust on the shaft's bearings"), ("fa", "یاتاقان")):
+        out = tmp_path / lang
+        result = CliRunner().invoke(cli, ["solve", str(path), "--no-pdf", "--lang", lang, "-o",
+                                          str(out)])
+        assert result.exit_code == 0, result.output
+        assert word in (out / "steps.md").read_text(encoding="utf-8")
+        q = json.loads((out / "results.json").read_text(encoding="utf-8"))
+        assert "bearing_thrust" in q["positions"][0]["quantities"]
+
+
+@pytest.mark.parametrize("change, key, words", [
+    ({"bore = 100\n": "bore = 100\nrod = 100\n"}, "rod", "less than the bore's"),
+    ({"bore = 100\n": "area = 7854\nrod = 20\n"}, "rod", "taken off the bore"),
+    ({'pressure = "650 kPa"        # on the bore: p·π·d²/4 toward the crank\nbore = 100\n':
+      "force = [-100, 0]\nrod = 20\n"}, "rod", "for a gas pressure"),
+])
+def test_a_bad_piston_rod_is_refused_at_its_line(change, key, words, tmp_path):
+    text = _text(**change)
+    line = next(i for i, s in enumerate(text.splitlines(), 1) if s.startswith(f"{key} ="))
+    path = tmp_path / "bad.toml"
+    path.write_text(text, encoding="utf-8")
+    with pytest.raises(InputError) as e:
+        read_file(path, "bad")
+    message = str(e.value)
+    assert message.startswith(f"{path}:{line}: ") and words in message, message
+    assert "\n" not in message
+
+
+def test_double_acting_engine():
+    """The bundled double-acting engine: 0.55 N/mm² on the 300 mm bore, 0.1 N/mm² back round
+    the 50 mm piston rod, 180 kg at 150 rpm, crank 225 mm, rod 1125 mm, 60° from the inner
+    dead centre; the rod's mass neglected, so the textbook's chain holds exactly:
+    F_P = F_L − m·a, F_T = F_P sin(θ + φ)/cos φ, F_B = F_P cos(θ + φ)/cos φ."""
+    from tarsim.exercises.catalog import load
+
+    worked = tarsim.solve(load("double-acting-engine"))
+    assert worked.passed
+    (sol,) = worked.positions
+    got = {name: q.value["value"] for name, q in sol.quantities.items()}
+    r, rod, theta, omega = 0.225, 1.125, math.radians(60), 150 * math.pi / 30
+    s = math.sqrt(rod * rod - (r * math.sin(theta)) ** 2)
+    a = omega ** 2 * (r * math.cos(theta) + r * r * math.cos(2 * theta) / s
+                      + r ** 4 * (math.sin(theta) * math.cos(theta)) ** 2 / s ** 3)
+    f_p = 0.55e6 * math.pi * 0.3 ** 2 / 4 - 0.1e6 * math.pi * (0.3 ** 2 - 0.05 ** 2) / 4 - 180 * a
+    phi = math.asin(r * math.sin(theta) / rod)
+    assert got["piston_effort"] == pytest.approx(f_p, rel=1e-12)
+    assert got["crank_effort"] == pytest.approx(f_p * math.sin(theta + phi) / math.cos(phi),
+                                                rel=1e-12)
+    assert got["bearing_thrust"] == pytest.approx(f_p * math.cos(theta + phi) / math.cos(phi),
+                                                  rel=1e-12)
+    assert got["turning_moment"] == pytest.approx(r * got["crank_effort"], rel=1e-12)
