@@ -281,3 +281,73 @@ def test_a_whole_rotor_refuses_between():
     with pytest.raises(InputError, match=r"t.toml:\d+: mass B's between chooses where an "
                                          r"unknown angle comes out"):
         parse_balance(text, "t.toml")
+
+
+FIRING = """
+[units]
+length = "mm"
+speed = "rpm"
+[engine]
+speed = 1500
+stroke = 200
+rod = 400
+reciprocating = 5
+strokes = 2
+firing_order = [1, 4, 2, 3]
+[[cylinder]]
+plane = 0
+[[cylinder]]
+plane = 300
+[[cylinder]]
+plane = 600
+[[cylinder]]
+plane = 900
+"""
+
+
+def test_a_two_stroke_four_fired_1_4_2_3_leaves_its_couples():
+    """Firing every 90°, each crank 90° behind the one fired before: 1 at 0°, 4 at 270°,
+    2 at 180°, 3 at 90°. About the centre (arms −0.45, −0.15, 0.15, 0.45 m), by hand: the
+    primary couple −0.45 + 0.15 + 0.15i − 0.45i = −0.3 − 0.3i, √2·0.3·m·ω²·r; the secondary
+    (2θ: 0, 0, 180, 180°) −0.45 − 0.15 − 0.15 − 0.45 = −1.2, over n = 4."""
+    s = solve_balance(parse_balance(FIRING, "e.toml"))
+    e = s.exercise.engine
+    assert [round(math.degrees(t), 9) for t in e.cranks] == [0, 180, 90, 270]
+    q = s.results["quantities"]
+    f = 5 * 0.1 * (50 * math.pi) ** 2
+    assert q["primary_couple"]["value"] == pytest.approx(math.sqrt(2) * 0.3 * f, rel=1e-12)
+    assert q["secondary_couple"]["value"] == pytest.approx(1.2 * f / 4, rel=1e-12)
+    assert q["primary_force"]["value"] == 0.0 and q["secondary_force"]["value"] == 0.0
+    assert s.lines()[0].startswith("firing order 1-4-2-3, 2-stroke: a cylinder fires every 90°")
+
+
+def test_a_four_stroke_six_fired_1_5_3_6_2_4_is_in_complete_balance():
+    """Every 120°: 1 and 6 at 0°, 5 and 2 at 240°, 3 and 4 at 120°, mirror images about the
+    centre, so every force and couple polygon closes (the books' six in line)."""
+    rows = "".join(f"[[cylinder]]\nplane = {100 * i}\n" for i in range(6))
+    text = (FIRING.split("[[cylinder]]")[0].replace("strokes = 2", "strokes = 4")
+            .replace("[1, 4, 2, 3]", "[1, 5, 3, 6, 2, 4]") + rows)
+    s = solve_balance(parse_balance(text, "e.toml"))
+    assert [round(math.degrees(t), 9) for t in s.exercise.engine.cranks] == [
+        0, 240, 120, 120, 240, 0]
+    q = s.results["quantities"]
+    assert all(q[k]["value"] == 0.0 for k in ("primary_force", "primary_couple",
+                                              "secondary_force", "secondary_couple"))
+
+
+@pytest.mark.parametrize("old, new, words", [
+    ("[1, 4, 2, 3]", "[1, 4, 2, 2]", "firing_order must name each of the 4 [[cylinder]] tables "
+                                     "once"),
+    ("[1, 4, 2, 3]", '"1-4-2-3"', "firing_order is the cylinders' numbers in the order"),
+    ("strokes = 2\n", "", "with a firing order, give strokes = 4"),
+    ("strokes = 2\n", "strokes = 3\n", "with a firing order, give strokes = 4"),
+    ("firing_order = [1, 4, 2, 3]\n", "", "strokes goes with firing_order"),
+    ("plane = 300", "crank = 90\nplane = 300", "cylinder 2 gives its crank and [engine] its "
+                                               "firing order"),
+])
+def test_a_firing_order_that_cannot_set_the_cranks_is_refused_in_one_line(old, new, words):
+    assert old in FIRING
+    with pytest.raises(InputError) as e:
+        parse_balance(FIRING.replace(old, new, 1), "e.toml")
+    message = str(e.value)
+    assert "\n" not in message and message.startswith("e.toml:") and words in message, message

@@ -78,3 +78,7 @@ class Engine:
     revolving: float = 0.0
     balance_radius: float | None = None
     balance_mass: float | None = None
+    firing_order: tuple[int, ...] = ()
+    """The order the cylinders fire in, where the file gives the cranks by it (empty where
+    it gives them one by one), and the engine's ``strokes`` a cycle (2 or 4)."""
+    strokes: int = 0

@@ -71,6 +71,11 @@ WORDS: dict[str, str] = {
     "mass with an unknown angle takes the other":
         "برگزیده: نخستین نقطهٔ تقاطع در امتداد خط از نوک آخر؛ between = [from, to] روی جرمی "
         "با زاویهٔ مجهول دیگری را برمی‌گزیند",
+    "firing order {order}, {strokes}-stroke: a cylinder fires every {every}°, each crank set "
+    "that far behind the one fired before it: {cranks}":
+        "ترتیب احتراق {order}، {strokes}-زمانه: هر {every}° یک سیلندر احتراق می‌کند و هر لنگ "
+        "به همان اندازه پشت لنگِ سیلندرِ پیش از خود قرار می‌گیرد: {cranks}",
+    "cylinder {number} at {angle}°": "سیلندر {number} در {angle}°",
     "force": "نیرو", "couple": "کوپل",
     "each where the algebra puts it": "هر یک همان‌جا که حل جبری نشان می‌دهد",
     ": found": ": یافته‌شده",

@@ -28,6 +28,7 @@ from ..checked import Checked
 from ..solution_folder import ChapterFiles
 from ..worked_document import Bullets, Section, said_steps, title
 from .balance_figures import angle_deg, balance_figures
+from .firing_order import firing_line
 from .open_rotor_solution import open_checked, open_lines, open_misses
 from .rotor_file import BalanceExercise
 
@@ -300,7 +301,7 @@ class BalanceSolution(ChapterFiles):
         if len(e.cranks) == 1:
             return self._cylinder_lines(e)
         sums = engine_sums(e)
-        out = []
+        out = [line for line in (firing_line(e),) if line]
         for kind, value in zip(engine_kinds(e), (sums.primary_force, sums.primary_couple,
                                                  sums.secondary_force, sums.secondary_couple)):
             unit = "N·m" if kind.endswith("couple") else "N"

@@ -20,6 +20,7 @@ from ..file_numbers import radians_in_turn
 from ..toml_source import _CONTROL
 from ..names import named_in, read_names, renamed_field
 from ..table_file import SPEEDS, Tables
+from .firing_order import firing_cranks, read_firing_order
 from .open_rotor_file import UNKNOWN, read_open_rotor
 
 __all__ = ["BalanceExercise", "parse_balance"]
@@ -33,7 +34,7 @@ _NAME = re.compile(rf"^[^\s\x00-\x1f\x7f-\x9f\u202a-\u202e\u2066-\u2069]{{1,{_NA
 _KEYS = {"rotor": ("speed",), "mass": ("name", "mass", "radius", "angle", "plane", "between"),
          "balance": ("name", "plane", "radius", "mass"),
          "engine": ("speed", "crank", "stroke", "rod", "reciprocating", "balanced", "at",
-                    "revolving", "balance_radius", "balance_mass"),
+                    "revolving", "balance_radius", "balance_mass", "firing_order", "strokes"),
          "cylinder": ("crank", "plane")}
 
 
@@ -228,8 +229,10 @@ def _engine(t: Tables, metre: float) -> Engine:
         raise t.fail(f"the balanced fraction is from 0 to 1, got {balanced:g}", "engine",
                      "balanced")
     cylinders = t.entries("cylinder") or [{"crank": 0, "plane": 0}]
-    cranks = tuple(_degrees(t.number(c, "crank", "cylinder", f"cylinder {i + 1}'s crank angle",
-                                     i, 0.0)) for i, c in enumerate(cylinders))
+    firing = read_firing_order(t, one, cylinders)
+    cranks = tuple(_degrees(d) for d in firing_cranks(*firing)) if firing else tuple(
+        _degrees(t.number(c, "crank", "cylinder", f"cylinder {i + 1}'s crank angle", i, 0.0))
+        for i, c in enumerate(cylinders))
     planes = tuple(t.number(c, "plane", "cylinder", f"cylinder {i + 1}'s plane", i, 0.0) * metre
                    for i, c in enumerate(cylinders))
     if len(cranks) == 1 and cranks[0] != 0.0:
@@ -244,7 +247,8 @@ def _engine(t: Tables, metre: float) -> Engine:
     revolving, radius, balance = _revolving(t, one, len(cranks), unit)
     return Engine(cranks, planes, crank * metre, rod, mass, _speed(t, "engine"),
                   balanced, _degrees(t.number(one, "at", "engine", "the crank angle", 0, 0.0)),
-                  revolving, None if radius is None else radius * metre, balance)
+                  revolving, None if radius is None else radius * metre, balance,
+                  *(firing or ((), 0)))
 
 
 def _engine_rotor(t: Tables, e: Engine, metre: float) -> Rotor | None:
