@@ -351,3 +351,74 @@ def test_a_firing_order_that_cannot_set_the_cranks_is_refused_in_one_line(old, n
         parse_balance(FIRING.replace(old, new, 1), "e.toml")
     message = str(e.value)
     assert "\n" not in message and message.startswith("e.toml:") and words in message, message
+
+
+LOCOMOTIVE = """
+[units]
+length = "mm"
+[engine]
+road_speed = 60
+wheel_diameter = 1800
+crank = 325
+reciprocating = 330
+revolving = 300
+balanced = 0.6666666666666666
+[[cylinder]]
+crank = 0
+plane = 450
+[[cylinder]]
+crank = 90
+plane = 1050
+[[balance]]
+name = "A"
+plane = 0
+radius = 650
+[[balance]]
+name = "B"
+plane = 1500
+radius = 650
+"""
+
+
+def test_an_uncoupled_locomotive_gives_its_hammer_blow_tractive_force_and_swaying_couple():
+    """The books' locomotive: cranks at 90°, r = 0.325 m, wheels 1.5 m apart and 1.8 m
+    across, cylinders 0.6 m apart, 330 kg reciprocating and 300 kg rotating a cylinder,
+    60 km/h, ⅔ balanced at 0.65 m. By hand: ω = (60/3.6)/0.9; each cylinder 520 kg at 0.325 m
+    (169 kg·m) gives (m r)_B = −169·(0.45, 1.05)/1.5, 198.0 kg; the hammer blow of c·m's share,
+    ⅔·330·0.325·|(0.45, 1.05)|/1.5·ω² (18.67 kN); the tractive force ±√2·(1 − c)·m·ω²·r
+    (17.34 kN) and the swaying couple ±(0.6/√2)·(1 − c)·m·ω²·r (5.20 kN·m)."""
+    s = solve_balance(parse_balance(LOCOMOTIVE, "l.toml"))
+    assert s.passed, s.failures
+    q = s.results["quantities"]
+    w = (60 / 3.6) / 0.9
+    f = (1 / 3) * 330 * 0.325 * w ** 2
+    assert s.exercise.engine.speed == pytest.approx(w, rel=1e-15)
+    assert q["mass_A"]["value"] == pytest.approx(169 * math.hypot(1.05, 0.45) / 1.5 / 0.65,
+                                                 rel=1e-12)
+    for plane in "AB":
+        assert q[f"hammer_blow_{plane}"]["value"] == pytest.approx(
+            2 / 3 * 330 * 0.325 * math.hypot(0.45, 1.05) / 1.5 * w ** 2, rel=1e-12)
+    assert q["primary_force_left"]["value"] == pytest.approx(math.sqrt(2) * f, rel=1e-12)
+    assert q["primary_couple_left"]["value"] == pytest.approx(0.6 / math.sqrt(2) * f,
+                                                              rel=1e-12)
+    assert round(q["hammer_blow_A"]["value"]) == 18674
+
+
+@pytest.mark.parametrize("old, new, words", [
+    ("wheel_diameter = 1800\n", "", "road_speed = … (km/h) with wheel_diameter = … together"),
+    ("road_speed = 60\n", "road_speed = 60\nspeed = 100\n", "not both"),
+    ("wheel_diameter = 1800", "wheel_diameter = 0", "the wheel diameter must be positive"),
+])
+def test_a_locomotives_speed_given_half_is_refused_in_one_line(old, new, words):
+    with pytest.raises(InputError) as e:
+        parse_balance(LOCOMOTIVE.replace(old, new, 1), "l.toml")
+    message = str(e.value)
+    assert "\n" not in message and message.startswith("l.toml:") and words in message, message
+
+
+def test_balance_masses_for_revolving_masses_alone_leave_no_hammer_blow():
+    """balanced = 0: the whole reciprocating mass is left, and there is no share of it in
+    the balance masses to strike the rails: no hammer blow, nothing written of it."""
+    q = solve_balance(parse_balance(LOCOMOTIVE.replace("balanced = 0.6666666666666666\n", ""),
+                                    "l.toml")).results["quantities"]
+    assert "mass_A" in q and not any(k.startswith(("hammer", "primary_force_left")) for k in q)

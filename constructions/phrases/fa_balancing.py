@@ -76,6 +76,16 @@ WORDS: dict[str, str] = {
         "ترتیب احتراق {order}، {strokes}-زمانه: هر {every}° یک سیلندر احتراق می‌کند و هر لنگ "
         "به همان اندازه پشت لنگِ سیلندرِ پیش از خود قرار می‌گیرد: {cranks}",
     "cylinder {number} at {angle}°": "سیلندر {number} در {angle}°",
+    "with {share} of the reciprocating mass balanced, {left} of it is left: the primary force "
+    "along the stroke at most {force} N (a locomotive's variation of tractive force, ±) and "
+    "the primary couple {couple} N·m (its swaying couple, ±)":
+        "با متعادل کردن {share} از جرم رفت‌وبرگشتی، {left} آن باقی می‌ماند: نیروی اولیه در "
+        "امتداد کورس حداکثر {force} N (تغییر نیروی کششِ لوکوموتیو، ±) و کوپل اولیه {couple} "
+        "N·m (کوپل نوسانی آن، ±)",
+    "hammer blow in plane {plane}: the balance mass's share for the reciprocating mass "
+    "turning, B·ω²·b = {blow} N":
+        "ضربهٔ چکشی در صفحهٔ {plane}: سهم جرم متعادل‌کننده برای جرم رفت‌وبرگشتی در حال دوران، "
+        "B·ω²·b = {blow} N",
     "force": "نیرو", "couple": "کوپل",
     "each where the algebra puts it": "هر یک همان‌جا که حل جبری نشان می‌دهد",
     ": found": ": یافته‌شده",

@@ -28,6 +28,7 @@ from ..checked import Checked
 from ..solution_folder import ChapterFiles
 from ..worked_document import Bullets, Section, said_steps, title
 from .balance_figures import angle_deg, balance_figures
+from .engine_balance import left_checked, left_lines, left_misses
 from .firing_order import firing_line
 from .open_rotor_solution import open_checked, open_lines, open_misses
 from .rotor_file import BalanceExercise
@@ -132,7 +133,7 @@ class BalanceSolution(ChapterFiles):
                 miss = abs(self.engine_polygons.left(kind) * w2 - values[kind]) / (size * w2)
                 if miss > AGREE:
                     out.append((kind, miss))
-            out += self._greatest_misses(e)
+            out += self._greatest_misses(e) + left_misses(self, AGREE)
         return out
 
     def _greatest_misses(self, e) -> list[tuple[str, float]]:
@@ -228,7 +229,7 @@ class BalanceSolution(ChapterFiles):
                              "reciprocating mass, {mass} kg at the crank radius along its "
                              "crank, balanced as rotating masses", share=numeral(e.balanced, "g"),
                              mass=numeral(ex.rotor.masses[0].mass)))
-            out += self._rotor_lines()
+            out += self._rotor_lines() + left_lines(self)
         return out
 
     def _rotor_lines(self) -> list[str]:
@@ -399,6 +400,8 @@ class BalanceSolution(ChapterFiles):
                                           {"value": [w + 0.0 for w in want]}, method=method)
             for p in ex.rotor.planes:
                 q |= self._balance_mass(p, method)
+            if ex.engine is not None:
+                q |= left_checked(self)
         return q
 
     def _engine_checked(self) -> dict[str, Checked]:

@@ -34,7 +34,8 @@ _NAME = re.compile(rf"^[^\s\x00-\x1f\x7f-\x9f\u202a-\u202e\u2066-\u2069]{{1,{_NA
 _KEYS = {"rotor": ("speed",), "mass": ("name", "mass", "radius", "angle", "plane", "between"),
          "balance": ("name", "plane", "radius", "mass"),
          "engine": ("speed", "crank", "stroke", "rod", "reciprocating", "balanced", "at",
-                    "revolving", "balance_radius", "balance_mass", "firing_order", "strokes"),
+                    "revolving", "balance_radius", "balance_mass", "firing_order", "strokes",
+                    "road_speed", "wheel_diameter"),
          "cylinder": ("crank", "plane")}
 
 
@@ -116,6 +117,24 @@ def _speed(t: Tables, table: str) -> float:
     if not v > 0:
         raise t.fail(f"the speed must be positive, got {v:g}", table, "speed")
     return v * SPEEDS[t.units("m", "rad/s")[1]]
+
+
+def _engine_speed(t: Tables, one: dict, metre: float) -> float:
+    """An engine's speed in rad/s: its ``speed``, or, as the books give a locomotive's, its
+    ``road_speed`` (km/h) on driving wheels of ``wheel_diameter``: ω = v/(D/2)."""
+    road = [k for k in ("road_speed", "wheel_diameter") if k in one]
+    if not road:
+        return _speed(t, "engine")
+    if "speed" in one or len(road) == 1:
+        raise t.fail("a locomotive's speed is speed = …, or road_speed = … (km/h) with "
+                     "wheel_diameter = … together, not both", "engine", road[0])
+    v = t.number(one, "road_speed", "engine", "the road speed")
+    d = t.number(one, "wheel_diameter", "engine", "the wheels' diameter")
+    if not (v > 0 and d > 0):
+        key = "road_speed" if not v > 0 else "wheel_diameter"
+        raise t.fail(f"the {key.replace('_', ' ')} must be positive, got "
+                     f"{v if key == 'road_speed' else d:g}", "engine", key)
+    return v / 3.6 / (d * metre / 2)
 
 
 def _text(t: Tables, key: str, default: str) -> str:
@@ -245,7 +264,7 @@ def _engine(t: Tables, metre: float) -> Engine:
                          "line need their planes apart (plane = …)", "cylinder",
                          "plane" if "plane" in cylinders[i] else None, i)
     revolving, radius, balance = _revolving(t, one, len(cranks), unit)
-    return Engine(cranks, planes, crank * metre, rod, mass, _speed(t, "engine"),
+    return Engine(cranks, planes, crank * metre, rod, mass, _engine_speed(t, one, metre),
                   balanced, _degrees(t.number(one, "at", "engine", "the crank angle", 0, 0.0)),
                   revolving, None if radius is None else radius * metre, balance,
                   *(firing or ((), 0)))

@@ -1,0 +1,101 @@
+"""What an in-line engine's balance masses leave, and what they add, as the books ask it of
+a locomotive: the primary force and couple left along the line of stroke, and the hammer
+blow.
+
+With the fraction c of each cylinder's reciprocating mass m balanced by rotating masses,
+(1 − c)·m is left reciprocating: the primary force along the stroke is at most (1 − c) times
+the whole engine's, (1 − c)·m·ω²·r·|Σ e^{iθᵢ}| (a locomotive's variation of tractive force,
+±√2·(1 − c)·m·ω²·r for cranks at 90°), and the primary couple (1 − c) times its whole
+(the swaying couple, ±(a/√2)·(1 − c)·m·ω²·r). The balance masses' share for c·m turns with
+the wheels and presses on the rails across the stroke: the hammer blow, B·ω²·b with B·b
+that share of each plane's balancing product. Every cylinder counts the same m_rev + c·m,
+so the share is c·m/(m_rev + c·m) of the product drawn; the reference balances c·m alone.
+"""
+
+from __future__ import annotations
+
+import math
+
+from tarsim.constructions.narration import numeral, words
+from tarsim.constructions.reference.balance import engine_sums, two_planes
+from tarsim.constructions.balancing.rotor import Mass
+from ..checked import Checked
+
+__all__ = ["left_checked", "left_lines", "left_misses"]
+
+
+def _share(e) -> float:
+    """The reciprocating part of each cylinder's balanced mass, c·m/(m_rev + c·m)."""
+    return e.balanced * e.reciprocating / (e.revolving + e.balanced * e.reciprocating)
+
+
+def _blows(s) -> dict[str, tuple[float, float]]:
+    """Each balancing plane's hammer blow (N): as drawn, and by the reference's two planes
+    of c·m alone (one plane: its force alone)."""
+    e, r = s.exercise.engine, s.exercise.rotor
+    alone = [Mass(m.name, e.balanced * e.reciprocating, m.radius, m.angle, m.plane)
+             for m in r.masses]
+    if len(r.planes) == 2:
+        want = dict(zip((p.name for p in r.planes),
+                        two_planes(alone, r.planes[0].position, r.planes[1].position)))
+    else:
+        want = {r.planes[0].name: (-math.fsum(m.mr[0] for m in alone),
+                                   -math.fsum(m.mr[1] for m in alone))}
+    w2 = e.speed ** 2
+    return {p.name: (_share(e) * math.hypot(*s.balance.product(p.name)) * w2,
+                     math.hypot(*want[p.name]) * w2) for p in r.planes}
+
+
+def left_checked(s) -> dict[str, Checked]:
+    """results.json's ``primary_force_left``, ``primary_couple_left`` and each plane's
+    ``hammer_blow_A``, where an in-line engine balances a fraction of its reciprocating
+    mass (none where it balances only revolving masses)."""
+    e = s.exercise.engine
+    if not e.balanced > 0:
+        return {}
+    sums = engine_sums(e)
+    left = 1.0 - e.balanced
+    w2 = e.speed ** 2
+    q = {}
+    for kind, whole in (("primary force", sums.primary_force),
+                        ("primary couple", sums.primary_couple)):
+        q[f"{kind.replace(' ', '_')}_left"] = Checked(
+            {"value": left * s.engine_polygons.left(kind) * w2,
+             "unit": "N·m" if kind.endswith("couple") else "N"},
+            {"value": left * whole}, method=f"{kind} polygon, (1 − c) of it")
+    for name, (got, want) in _blows(s).items():
+        q[f"hammer_blow_{name}"] = Checked({"value": got, "unit": "N"}, {"value": want},
+                                           method="couple and force polygons, c·m's share")
+    return q
+
+
+def left_lines(s) -> list[str]:
+    """The lines that say what the balance masses leave and add."""
+    e = s.exercise.engine
+    if not e.balanced > 0:
+        return []
+    left = 1.0 - e.balanced
+    w2 = e.speed ** 2
+    p = s.engine_polygons
+    out = [words("with {share} of the reciprocating mass balanced, {left} of it is left: the "
+                 "primary force along the stroke at most {force} N (a locomotive's variation "
+                 "of tractive force, ±) and the primary couple {couple} N·m (its swaying "
+                 "couple, ±)", share=numeral(e.balanced, "g"), left=numeral(left, "g"),
+                 force=numeral(left * p.left("primary force") * w2),
+                 couple=numeral(left * p.left("primary couple") * w2))]
+    for name, (blow, _) in _blows(s).items():
+        out.append(words("hammer blow in plane {plane}: the balance mass's share for the "
+                         "reciprocating mass turning, B·ω²·b = {blow} N", plane=name,
+                         blow=numeral(blow)))
+    return out
+
+
+def left_misses(s, agree: float) -> list[tuple[str, float]]:
+    """Each hammer blow drawn against the reference's, relative to the engine's whole
+    primary force m·ω²·r·N (the size its products round at)."""
+    e = s.exercise.engine
+    if s.exercise.rotor is None or not e.balanced > 0:
+        return []
+    size = e.reciprocating * e.crank * e.speed ** 2 * len(e.cranks)
+    return [(f"hammer blow {name}", abs(got - want) / size)
+            for name, (got, want) in _blows(s).items() if abs(got - want) > agree * size]
