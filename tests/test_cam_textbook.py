@@ -33,7 +33,8 @@ def test_a_roller_may_be_given_by_its_diameter():
 
 
 @pytest.mark.parametrize("old, new, words", [
-    ("diameter = 20", "diameter = 20\nradius = 10", "the roller's radius or its diameter, not both"),
+    ("diameter = 20", "diameter = 20\nradius = 10",
+     "the roller's radius or its diameter, not both"),
     ("diameter = 20", "diameter = 0", "a roller follower gives its radius (radius = 10) or its "
                                       "diameter"),
     ("accelerating = 80 ", "accelerating = 120 ", "less than all of it, not 120°"),
@@ -166,3 +167,91 @@ def test_differences_of_the_lift_agree_with_each_law_anywhere(law, degrees, lift
             Segment("dwell", 2 * math.pi - beta)]
     reading = read_at(segs, u * beta)
     assert reading.passed, (reading.law, reading.y1_diff, reading.y2_diff)
+
+
+BASE = Path(bundled("cams")["base-circle-for-pressure-angle"]).read_text(encoding="utf-8")
+
+
+def test_the_least_base_circle_for_a_radial_roller_is_the_books_closed_form():
+    """A radial roller (10 mm) rising 30 mm by simple harmonic motion over 90°, held to 30°:
+    R_p ≥ y′/tan 30° − y, greatest where tan πu = π/(β tan 30°) (d/du of
+    (πh/2β)·sin πu/t − h/2·(1 − cos πu) vanishing); the slower, higher return asks less."""
+    ex = parse_cam(BASE.replace("offset = 12 ", "offset = 0 "), "cam.toml")
+    h, b, t = 0.030, math.radians(90), math.tan(math.radians(30))
+    pu = math.atan2(math.pi, b * t)
+    want = math.pi * h / (2 * b) * math.sin(pu) / t - h / 2 * (1 - math.cos(pu)) - 0.010
+    # golden-section search finds the top to ~1e-8 in θ, where the value moves ~1e-16
+    assert ex.base_radius == pytest.approx(want, rel=1e-12)
+    s = solve_cam(ex)
+    assert s.steepest == pytest.approx(math.radians(30), rel=1e-12)   # the layout touches 30°
+    assert s.passed and s.results["quantities"]["base_radius"]["passed"]
+
+
+def test_an_offset_base_circle_makes_the_layout_touch_the_limit_on_the_steeper_side():
+    """12 mm offset, the cam counter-clockwise: tan φ = (y′ − e)/(s₀ + y) eases the rise and
+    steepens the return, so the return sets s₀; the layout of the cam found (by inversion,
+    knowing nothing of the formula) has its greatest pressure angle 30°, on the return, and
+    every other station under it; s₀² + e² = (r_b + r)²."""
+    from tarsim.constructions.cams.base_circle import least_prime_reach
+
+    ex = parse_cam(BASE, "cam.toml")
+    s = solve_cam(ex)
+    assert s.steepest == pytest.approx(math.radians(30), rel=1e-12)
+    assert s.profile.survey.steepest_at.segment == 3
+    s0 = least_prime_reach(ex.segments, ex.follower, 1.0, math.radians(30))
+    assert math.hypot(s0, 0.012) == pytest.approx(ex.base_radius + 0.010, rel=1e-15)
+    smaller = parse_cam(BASE.replace("pressure_angle = 30 ", "base_radius = %r " % (
+        (ex.base_radius - 1e-6) * 1000)), "cam.toml")      # a micrometre less breaks it
+    assert solve_cam(smaller).steepest > math.radians(30)
+
+
+@pytest.mark.parametrize("old, new, words", [
+    ("pressure_angle = 30 ", "pressure_angle = 30\nbase_radius = 40 ",
+     "[cam] gives the base circle one way"),
+    ("pressure_angle = 30 ", "pressure_angle = 95 ", "between 0° and 90°, not 95°"),
+    ("kind = \"roller\"\nradius = 10\n", "kind = \"flat-faced\"\n", "its pressure angle is 0"),
+    ("offset = 12 ", "motion = \"oscillating\"\npivot = [70, 0]\narm = 50 ",
+     "found for a translating follower"),
+])
+def test_a_bad_pressure_angle_cam_is_refused_in_one_line(old, new, words):
+    assert old in BASE
+    with pytest.raises(InputError) as e:
+        parse_cam(BASE.replace(old, new, 1), "cam.toml")
+    message = str(e.value)
+    assert "\n" not in message and message.startswith("cam.toml:") and words in message, message
+
+
+def test_an_eccentric_disc_under_a_flat_face_is_simple_harmonic_of_twice_its_eccentricity():
+    """A disc of radius R = 40 mm, e = 25 mm off the shaft, at 10 rad/s: the face stays
+    tangent to the disc, lifting e(1 − cos θ): v_max = eω, a_max = eω²; the profile laid
+    out by inversion is the disc itself, its radius of curvature R everywhere."""
+    s = solve_cam(load("eccentric-flat-face"))
+    assert s.exercise.disc == (40.0, 25.0) and s.exercise.base_radius == pytest.approx(0.015)
+    q = s.results["quantities"]
+    assert q["v_max_1"]["value"] == pytest.approx(0.025 * 10, rel=1e-14)
+    assert q["a_max_1"]["value"] == pytest.approx(0.025 * 100, rel=1e-14)
+    assert q["rho_min"]["value"] == pytest.approx(0.040, rel=1e-12)
+    assert q["face_width"]["value"] == pytest.approx(2 * 0.025, rel=1e-12)
+
+
+@pytest.mark.parametrize("old, new, words", [
+    ("kind = \"flat-faced\" ", "kind = \"roller\"\nradius = 5 ", "state it as a linkage"),
+    ("eccentricity = 25 ", "eccentricity = 45 ", "the eccentricity (45) must be more than 0"),
+    ("eccentricity = 25 ", "", "gives its radius (or disc_diameter) and its eccentricity"),
+    ("disc_radius = 40 ", "disc_radius = 40\ndisc_diameter = 80 ", "not both"),
+])
+def test_a_bad_eccentric_disc_is_refused_in_one_line(old, new, words):
+    text = Path(bundled("cams")["eccentric-flat-face"]).read_text(encoding="utf-8")
+    assert old in text
+    with pytest.raises(InputError) as e:
+        parse_cam(text.replace(old, new, 1), "cam.toml")
+    message = str(e.value)
+    assert "\n" not in message and message.startswith("cam.toml:") and words in message, message
+
+
+def test_an_eccentric_disc_makes_its_own_segments():
+    text = Path(bundled("cams")["eccentric-flat-face"]).read_text(encoding="utf-8")
+    with pytest.raises(InputError, match="leave out the \\[\\[segment\\]\\] tables"):
+        parse_cam(text + '\n[[segment]]\nkind = "dwell"\nangle = 360\n', "cam.toml")
+    half = parse_cam(text.replace("disc_radius = 40 ", "disc_diameter = 80 "), "cam.toml")
+    assert half.base_radius == pytest.approx(0.015, rel=1e-15)

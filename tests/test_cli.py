@@ -155,7 +155,7 @@ def test_bad_file_is_one_line_with_file_and_line(mech_file, tmp_path, edit, mess
                         "involute-pair, output-speed-given, planetary-q1, planetary-q2, "
                         "planetary-q3, planetary-q4, ratio-least-teeth, ratio-only, "
                         "teeth-implied, two-planets-listed, two-speeds-arm-and-sun, "
-                        "eccentric-flat-face, offset-knife-edge, "
+                        "base-circle-for-pressure-angle, eccentric-flat-face, offset-knife-edge, "
                         "oscillating-roller, roller-harmonic-cycloidal, "
                         "valve-unequal-acceleration, four-mass-shaft, "
                         "four-masses-one-plane, inline-four, notes-example-1, "
@@ -293,7 +293,7 @@ def test_list_shows_the_bundled_examples():
                    "output-speed-given", "planetary-q1", "planetary-q2", "planetary-q3",
                    "planetary-q4", "ratio-least-teeth", "ratio-only", "teeth-implied",
                    "two-planets-listed", "two-speeds-arm-and-sun",
-                   "eccentric-flat-face", "offset-knife-edge",
+                   "base-circle-for-pressure-angle", "eccentric-flat-face", "offset-knife-edge",
                    "oscillating-roller", "roller-harmonic-cycloidal",
                    "valve-unequal-acceleration", "four-mass-shaft",
                    "four-masses-one-plane", "inline-four", "notes-example-1",

@@ -159,6 +159,10 @@ WORDS: dict[str, str] = {
     "{rest}°": "بخش {k}: شتاب یکنواخت {a} m/s² در {first}° و کاهش سرعت یکنواخت {r} m/s² در "
                "{rest}°",
     "θ = {theta}°": "θ = {theta}°",
+    "the least base circle for a greatest pressure angle of {limit}°: {r} {unit} (the "
+    "layout's greatest: {got}°)   {check}": "کوچک‌ترین دایرهٔ پایه برای بیشترین زاویهٔ فشار "
+                                           "{limit}°: {r} {unit} (بیشترین زاویهٔ فشار در "
+                                           "ترسیم: {got}°)   {check}",
     "all on their laws": "همه بر قانون حرکت خود",
     "displacement diagram: {n} points constructed, {verdict}":
         "نمودار جابه‌جایی: {n} نقطه ترسیم شد، {verdict}",

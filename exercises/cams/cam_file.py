@@ -49,6 +49,11 @@ class CamExercise:
     at."""
     names: tuple[tuple[str, str], ...] = ()
     """The cam's name in other languages (``[names]``, :mod:`.names`)."""
+    pressure_limit: float | None = None
+    """The greatest pressure angle allowed (rad), where the base circle is found from it."""
+    disc: tuple[float, float] | None = None
+    """An eccentric disc's radius and eccentricity (the file's length unit), where the cam
+    is one."""
 
     def named_in(self, lang: str) -> CamExercise:
         """The same exercise with the cam named in ``lang``, if its file does."""
@@ -82,15 +87,113 @@ def parse_cam(text: str, filename: str = "<string>", exercise_id: str = "cam",
 
     number = tables.number
 
-    base = number(cam, "base_radius", "cam", "the base radius")
-    if not 0 < base < 1e6:
-        raise fail(f"the base radius must be positive, got {base:g}", "cam", "base_radius")
+    disc = _disc(cam, number, fail)
+    base = _base(cam, disc, number, fail)
     rate = number(cam, "speed", "cam", "the cam's speed")
     sense = cam.get("sense", "ccw")
     if sense not in ("cw", "ccw") or rate <= 0:
         raise fail("the cam turns at a positive speed, its sense cw or ccw", "cam", "sense")
     omega = rate * SPEEDS[speed] * (1 if sense == "ccw" else -1)
-    follower = _follower(data.get("follower") or {}, base * metre, metre, length, fail)
+    follower = _follower(data.get("follower") or {}, None if base is None else base * metre,
+                         metre, length, fail)
+    if disc and follower.kind != "flat-faced":
+        raise fail("an eccentric disc is taken under a flat face, whose lift is simple harmonic; "
+                   "under a knife edge or a roller it moves as a slider-crank: state it as a "
+                   "linkage", "follower", "kind")
+    segments = _disc_segments(disc, metre, data, fail) if disc else _segments(
+        data, follower, metre, length, number, fail)
+    if base is None:                       # found from the greatest pressure angle
+        base = _least_base(segments, follower, omega, cam, metre, length, fail)
+    ask = data.get("ask", {})
+    if not isinstance(ask, dict) or any(k not in ("jerk", "at") for k in ask) or not \
+            isinstance(ask.get("jerk", False), bool):
+        raise fail("a cam's [ask] table takes jerk = true (its diagram and peaks) and at = "
+                   "[40, 240] (the motion at those cam angles); the displacement, velocity, "
+                   "acceleration and profile are always drawn", "ask")
+    at = _angles(ask.get("at", []), fail)
+    return CamExercise(exercise_id, str(data.get("name", exercise_id)),
+                       str(data.get("source", "")), str(data.get("description", "")),
+                       base * metre, omega, tuple(segments), length, speed, follower,
+                       ask.get("jerk", False), at, read_names(data, tables.where, filename),
+                       pressure_limit=math.radians(cam["pressure_angle"])
+                       if "pressure_angle" in cam else None, disc=disc)
+
+
+def _disc(cam: dict[str, Any], number, fail) -> tuple[float, float] | None:
+    """An eccentric disc: its radius (or diameter) and eccentricity, in the file's unit."""
+    if "disc_diameter" in cam and "disc_radius" in cam:
+        raise fail("give the disc's radius or its diameter, not both", "cam", "disc_diameter")
+    if not any(k in cam for k in ("disc_radius", "disc_diameter", "eccentricity")):
+        return None
+    key = "disc_diameter" if "disc_diameter" in cam else "disc_radius"
+    if key not in cam or "eccentricity" not in cam:
+        raise fail("an eccentric disc gives its radius (or disc_diameter) and its "
+                   "eccentricity: disc_diameter = 80, eccentricity = 15", "cam",
+                   "eccentricity" if key in cam else "disc_radius")
+    size = number(cam, key, "cam", "the disc's " + key[5:])
+    radius = size / 2 if key == "disc_diameter" else size
+    e = number(cam, "eccentricity", "cam", "the eccentricity")
+    if not 0 < e < radius < 1e6:
+        raise fail(f"the eccentricity ({e:g}) must be more than 0 and less than the disc's "
+                   f"radius ({radius:g}), or the shaft leaves the disc", "cam", "eccentricity")
+    return radius, e
+
+
+def _base(cam: dict[str, Any], disc, number, fail) -> float | None:
+    """The base circle (the file's unit) as [cam] gives it: its radius, a disc's nearest
+    point to the shaft, or None where the greatest pressure angle asks it found."""
+    given = [k for k in ("base_radius", "pressure_angle") if k in cam] + (
+        ["disc_radius"] if disc else [])
+    if len(given) != 1:
+        raise fail("[cam] gives the base circle one way: base_radius = 40, or pressure_angle "
+                   "= 30 (the least base circle is found), or an eccentric disc's "
+                   "disc_radius and eccentricity", "cam", given[-1] if given else None)
+    if disc:
+        return disc[0] - disc[1]
+    if "pressure_angle" in cam:
+        limit = number(cam, "pressure_angle", "cam", "the greatest pressure angle")
+        if not 0 < limit < 90:
+            raise fail(f"the greatest pressure angle is between 0° and 90°, not {limit:g}°",
+                       "cam", "pressure_angle")
+        return None
+    base = number(cam, "base_radius", "cam", "the base radius")
+    if not 0 < base < 1e6:
+        raise fail(f"the base radius must be positive, got {base:g}", "cam", "base_radius")
+    return base
+
+
+def _disc_segments(disc: tuple[float, float], metre: float, data: dict[str, Any], fail
+                   ) -> list[Segment]:
+    """An eccentric disc under a flat face: the face's lift above the disc's nearest point
+    is e(1 − cos θ), simple harmonic up 2e over half a turn and down over the other."""
+    if "segment" in data:
+        raise fail("an eccentric disc makes its own motion (simple harmonic, up and down "
+                   "2e over half a turn each): leave out the [[segment]] tables", "segment")
+    lift = 2 * disc[1] * metre
+    return [Segment("rise", math.pi, lift, "simple harmonic"),
+            Segment("return", math.pi, lift, "simple harmonic")]
+
+
+def _least_base(segments: list[Segment], follower: Follower, omega: float,
+                cam: dict[str, Any], metre: float, unit: str, fail) -> float:
+    """The least base circle (the file's unit) that holds the pressure angle to [cam]'s."""
+    from tarsim.constructions.cams.base_circle import least_base_radius
+    if follower.kind == "flat-faced":
+        raise fail("a flat face square to its motion is pushed along it (its pressure angle "
+                   "is 0): give its base_radius", "cam", "pressure_angle")
+    limit = math.radians(cam["pressure_angle"])
+    base = least_base_radius(segments, follower, math.copysign(1.0, omega), limit)
+    if not base > 0:
+        raise fail(f"any base circle keeps this follower's pressure angle under "
+                   f"{cam['pressure_angle']:g}°: give base_radius instead", "cam",
+                   "pressure_angle")
+    return base / metre
+
+
+def _segments(data: dict[str, Any], follower: Follower, metre: float, length: str, number,
+              fail) -> list[Segment]:
+    """The [[segment]] tables in turn: each checked, its lift in m (an arm's swing as the arc
+    at its end), and all of them a whole turn that brings the follower back."""
     raw = data.get("segment")
     if not isinstance(raw, list) or not raw:
         raise fail("list the follower's motion as [[segment]] tables (kind, angle, lift, law)",
@@ -154,18 +257,7 @@ def parse_cam(text: str, filename: str = "<string>", exercise_id: str = "cam",
     if abs(height) > 1e-9 * max(s.lift for s in segments):
         raise fail(f"the rises and returns leave the follower {height:g} {length} off the "
                    "base circle after a turn: they must balance", key="segment")
-    ask = data.get("ask", {})
-    if not isinstance(ask, dict) or any(k not in ("jerk", "at") for k in ask) or not \
-            isinstance(ask.get("jerk", False), bool):
-        raise fail("a cam's [ask] table takes jerk = true (its diagram and peaks) and at = "
-                   "[40, 240] (the motion at those cam angles); the displacement, velocity, "
-                   "acceleration and profile are always drawn", "ask")
-    at = _angles(ask.get("at", []), fail)
-    return CamExercise(exercise_id, str(data.get("name", exercise_id)),
-                       str(data.get("source", "")), str(data.get("description", "")),
-                       base * metre, omega, tuple(segments), length, speed, follower,
-                       ask.get("jerk", False), at, read_names(data, tables.where, filename))
-
+    return segments
 
 def _angles(raw: Any, fail) -> tuple[float, ...]:
     """[ask] at: the cam angles (degrees, 0 to 360 from the first segment's start) the
@@ -207,7 +299,8 @@ _FOLLOWER_KEYS = ("kind", "radius", "diameter", "motion", "offset", "pivot", "ar
 _KINDS = ("knife-edge", "roller", "flat-faced")
 
 
-def _follower(t: dict[str, Any], base: float, metre: float, unit: str, fail) -> Follower:
+def _follower(t: dict[str, Any], base: float | None, metre: float, unit: str, fail
+              ) -> Follower:
     """The [follower] table: its kind, roller radius, and a translating line's offset or an
     oscillating arm's pivot and length (the file's length unit, from the cam centre)."""
     for k in t:
@@ -238,7 +331,8 @@ def _follower(t: dict[str, Any], base: float, metre: float, unit: str, fail) -> 
                    "(diameter = 20)", "follower", "diameter" if "diameter" in t else "radius")
     if how == "translating":
         offset = size("offset", "the follower's offset")
-        reach = prime_radius(base, Follower(kind, radius))
+        # A base circle found from the pressure angle clears the offset by its s₀.
+        reach = math.inf if base is None else prime_radius(base, Follower(kind, radius))
         if abs(offset) >= reach:
             raise fail(f"an offset of {abs(offset) / metre:g} {unit} puts the follower's line "
                        f"clear of the prime circle ({reach / metre:g} {unit})", "follower",
@@ -247,6 +341,9 @@ def _follower(t: dict[str, Any], base: float, metre: float, unit: str, fail) -> 
     if kind == "flat-faced":
         raise fail("an oscillating flat face is not laid out yet: use a roller or a knife "
                    "edge on the arm", "follower", "kind")
+    if base is None:
+        raise fail("the least base circle for a pressure angle is found for a translating "
+                   "follower: give an oscillating one's base_radius", "follower", "motion")
     pivot = t.get("pivot")
     if not isinstance(pivot, list) or len(pivot) != 2:
         raise fail("an oscillating follower gives its pivot from the cam centre: "

@@ -21,7 +21,13 @@ from tarsim.graphics.plot import PlotMark
 from ..checked import Checked
 from .cam_file import CamExercise
 
-__all__ = ["CamReadings"]
+__all__ = ["CamReadings", "BASE_AGREE"]
+
+BASE_AGREE = 1e-9
+"""How far (relative) the layout's greatest pressure angle may stand from the limit a base
+circle was found for: both greatest values are found on a flat top, where golden-section
+search's ~1e-8 in the cam angle costs ~1e-16, and the layout's products of radii round to
+a few 1e-16; 1e-9 leaves a wide margin and still fails a base off by a part in a million."""
 
 
 @dataclass(frozen=True)
@@ -87,6 +93,28 @@ class CamReadings:
                 out[f"{name}_{k}"] = Checked({"value": value}, {"value": law},
                                              method="2h/kβ²·ω², 2h/(1 − k)β²·ω²")
         return out
+
+    def base(self, steepest: float) -> Checked:
+        """The base circle found from the greatest pressure angle allowed, beside the
+        greatest the layout by inversion finds on the cam so made (``steepest``, rad)."""
+        ex = self.exercise
+        miss = abs(steepest - ex.pressure_limit)
+        return Checked({"value": ex.base_radius, "pressure_angle_limit": ex.pressure_limit},
+                       {"pressure_angle_max": steepest}, rel_error=miss / ex.pressure_limit,
+                       tolerance=BASE_AGREE, passed=miss <= BASE_AGREE * ex.pressure_limit,
+                       method="s₀ = max(|y′ − σe|/tan φ_max − y), R_p = √(s₀² + e²); the "
+                              "layout's greatest pressure angle")
+
+    def base_line(self, steepest: float) -> str:
+        """The base circle found, and the layout's greatest pressure angle on it."""
+        ex = self.exercise
+        ok = abs(steepest - ex.pressure_limit) <= BASE_AGREE * ex.pressure_limit
+        return words("the least base circle for a greatest pressure angle of {limit}°: {r} "
+                     "{unit} (the layout's greatest: {got}°)   {check}",
+                     limit=numeral(math.degrees(ex.pressure_limit), ".4g"),
+                     r=numeral(ex.base_radius / ex.metre, ".4g"), unit=ex.length_unit,
+                     got=numeral(math.degrees(steepest), ".4f"),
+                     check=words("check ok" if ok else "check FAILED"))
 
     def lines(self) -> list[str]:
         """What solve prints of them: the motion at each asked angle, checked; a split

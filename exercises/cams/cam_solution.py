@@ -31,7 +31,7 @@ from ..solution_folder import ChapterFiles
 from ..worked_document import Bullets, Paragraph, Section, said_steps, title
 from .cam_file import CamExercise
 from .cam_layout import CamProfile, refuse_undercut
-from .cam_readings import CamReadings
+from .cam_readings import BASE_AGREE, CamReadings
 
 __all__ = ["CamSolution", "solve_cam"]
 
@@ -121,7 +121,13 @@ class CamSolution(ChapterFiles):
     def passed(self) -> bool:
         """Every constructed point on its law and every peak formula its law's."""
         return (not self.misses and all(p.passed for p in self.peaks) and self.profile.passed
-                and not self.readings.failures)
+                and not self.readings.failures and not self.base_failed)
+
+    @property
+    def base_failed(self) -> bool:
+        """A base circle found from the pressure angle whose layout does not touch it."""
+        limit = self.exercise.pressure_limit
+        return limit is not None and abs(self.steepest - limit) > BASE_AGREE * limit
 
     @property
     def failures(self) -> list[str]:
@@ -129,7 +135,7 @@ class CamSolution(ChapterFiles):
         return ([f"segment {k} point {i}" for k, i, _ in self.misses]
                 + [f"segment {p.index} peaks" for p in self.peaks if not p.passed]
                 + [f"profile station {i}" for i, _ in self.profile.survey.misses]
-                + self.readings.failures)
+                + self.readings.failures + (["the base circle"] if self.base_failed else []))
 
     # ----- what it writes ---------------------------------------------------------------------
     def lines(self) -> list[str]:
@@ -159,7 +165,9 @@ class CamSolution(ChapterFiles):
         out.append(words("displacement diagram: {n} points constructed, {verdict}",
                          n=numeral(sum(len(c) for c in self.diagram.curves), "d"),
                          verdict=verdict))
-        return out + self.readings.lines() + self.profile.lines()
+        base = [self.readings.base_line(self.steepest)] \
+            if self.exercise.pressure_limit is not None else []
+        return out + self.readings.lines() + base + self.profile.lines()
 
     @cached_property
     def curves(self) -> tuple[list[float], ...]:
@@ -272,7 +280,8 @@ class CamSolution(ChapterFiles):
         """steps.md: the displacement diagram's construction, then each segment's peaks (the
         lines solve prints, with their checks), then the profile."""
         ex = self.exercise
-        peaks = self.lines()[:len(self.peaks) + 1] + self.readings.lines()
+        peaks = self.lines()[:len(self.peaks) + 1] + self.readings.lines() + (
+            [self.readings.base_line(self.steepest)] if ex.pressure_limit is not None else [])
         if self.jumps:
             peaks.append(phrase("md.jumps", jumps=", ".join(f"{numerals(f'{j:g}')}°"
                                                             for j in self.jumps)))
@@ -298,7 +307,14 @@ class CamSolution(ChapterFiles):
                 for p in self.peaks}
         if self.exercise.jerk:
             out |= {f"j_max_{p.index}": peak(p.jerk, p.jerk_sampled, p.law) for p in self.peaks}
+        if self.exercise.pressure_limit is not None:
+            out["base_radius"] = self.readings.base(self.steepest)
         return out | self.readings.checked(self.peaks) | self.profile.checked()
+
+    @property
+    def steepest(self) -> float:
+        """The greatest pressure angle the layout finds (rad, its size)."""
+        return abs(self.profile.survey.steepest.pressure_angle)
 
 
 def _y(s, theta: float) -> float:
