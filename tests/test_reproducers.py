@@ -205,7 +205,8 @@ def test_check_time_ratio_point_branch():
 QUICK_RETURNS = ("crank-pin-speed", "crank-shaper", "four-bar", "grashof-crank-rocker",
                  "hinkle-four-bar", "hinkle-slider-crank",           # rods carrying a point
                  "inverted-slider-crank", "klein-slider-crank", "offset-slider-crank",
-                 "piston-driven-slider-crank", "slotted-lever-p37", "velocity-homework-292")
+                 "piston-driven-slider-crank", "slotted-lever-p37", "velocity-homework-292",
+                 "whitworth")                                         # its ram, the lever in line
 """The bundled mechanisms with two limit positions: their cranks turn fully and drive an
 output that reverses."""
 
@@ -222,8 +223,12 @@ def test_the_quick_returns_are_every_bundled_mechanism_with_limit_positions():
         assert "limit position" in str(caught.value) or "turn fully" in str(caught.value)
 
 
-def test_a_whitworth_lever_turns_fully_so_has_no_time_ratio_of_its_own():
-    assert "time_ratio" not in registry.askable(load("whitworth").mechanism)
+def test_a_whitworth_lever_turns_fully_so_its_time_ratio_is_its_rams():
+    # the lever has no limits of its own; the ram it drives reverses with lever and rod in
+    # line, and the reference follows the ram (tests/test_whitworth_limits.py: closed form)
+    lp = draw_limit_positions(load("whitworth").mechanism)
+    assert lp.kind == "whitworth" and lp.point == "C"
+    assert "time_ratio" in registry.askable(load("whitworth").mechanism)
 
 
 def turned(mech, degrees: float):

@@ -6,7 +6,9 @@ link, and the notes (000-part2 §2.2) draw those two positions by compass:
 * a **slider-crank** or **crank-rocker**: crank and rod in line, extended (the
   rod's far end on an arc of radius AB + O2A about O2) and folded (AB − O2A);
 * a **crank and slotted lever**: the lever tangent to the crank circle, where
-  O2A ⟂ O4A; A is cut from the crank circle by the circle on O2O4 as diameter.
+  O2A ⟂ O4A; A is cut from the crank circle by the circle on O2O4 as diameter;
+* a **Whitworth quick return** (the crank longer than O2O4, the lever turning right
+  round): the lever and the rod it drives to the ram in line (:mod:`.limit_whitworth`).
 
 The rest of the chain is then carried to each limit: a point of the lever or
 rocker swings with it about its pivot, a ram pin in the lever's slot lies where
@@ -25,6 +27,7 @@ from dataclasses import dataclass
 from .. import asks as A
 from .assembly import assemble
 from .assembly_record import Assembly, point_ref
+from .limit_whitworth import secondary_rod, whitworth_pins
 from ..checks import Answer, FigureSpec, time_ratio_value
 from ..errors import InputError, NoIntersection, TarsimError
 from ..model import Mechanism
@@ -46,7 +49,7 @@ class LimitPositions:
     """The mechanism at its stated position; its construction holds the steps below."""
     steps: list[Ref]
     kind: str
-    """"slider-crank", "crank-rocker" or "slotted lever"."""
+    """"slider-crank", "crank-rocker", "slotted lever" or "whitworth"."""
     crank_angles: tuple[float, float]
     """θ of the crank (rad) at the first and second limit, A′ and A″."""
     slow: float
@@ -136,10 +139,14 @@ class _Dyad:
                                  "through the pivot")
             centres = math.dist(mech.link(1).local(self.o2), mech.link(1).local(self.o4))
             if self.r >= centres:
-                raise InputError(
-                    f"the crank {self.o2}{self.a} is no shorter than {self.o2}{self.o4}, so the "
-                    f"lever turns a full revolution with it (a Whitworth quick return): it has no "
-                    "limit positions of its own, and those of the links it drives are not drawn")
+                self.rod2 = secondary_rod(mech, self.out, self.o4, self.a)
+                if self.rod2 is None:
+                    raise InputError(
+                        f"the crank {self.o2}{self.a} is no shorter than {self.o2}{self.o4}, so "
+                        "the lever turns a full revolution with it (a Whitworth quick return): "
+                        "it has no limit positions of its own, and no rod from it drives a "
+                        "block on a frame guide")
+                self.kind = "whitworth"
             return
         for k, b in rods:
             self.rod, self.b, self.rod_length = k, b, mech.link(k).span(self.a, b)
@@ -214,13 +221,16 @@ class _Limits(_Dyad):
 
     # ----- the run ------------------------------------------------------------------------
     def run(self) -> LimitPositions:
+        rams = None
         if self.kind == "slotted lever":
             pins = self.tangent_lever()
+        elif self.kind == "whitworth":
+            pins, rams = whitworth_pins(self)
         else:
             pins = self.rod_in_line()
         angles = tuple(math.atan2(*_sub(self.xy(p), self.xy(self.P(self.o2)))[::-1]) for p in pins)
         slow_from, slow, quick = self.crank_angles(pins)
-        point, stroke, stroke_ref = self.carry_output()
+        point, stroke, stroke_ref = self.carry_output(rams)
         return LimitPositions(self.asm, self.steps, self.kind, angles, slow, quick, point,
                               stroke, stroke_ref, slow_from, self.cond * self.cancel,
                               None if self.kind == "slider-crank" else self.out)
@@ -233,7 +243,7 @@ class _Limits(_Dyad):
         """
         o2, d = self.o2, self.m.drive
         names = [self.c[p].label for p in pins]
-        if self.kind == "slotted lever":
+        if self.kind in ("slotted lever", "whitworth"):
             for i, pin in enumerate(pins):
                 self.act(f"crank{i}", "line_through", self.P(o2), pin, label=f"{o2}{names[i]}",
                          said=(phrase("limits.join_cranks", pivot=o2, a=names[0], b=names[1])
@@ -338,12 +348,15 @@ class _Limits(_Dyad):
         return pins[0], pins[1]
 
     # ----- the output at each limit ----------------------------------------------------
-    def carry_output(self):
-        """Carry the chain to the stroke point at each limit; its two places give the stroke."""
+    def carry_output(self, rams: tuple[Ref, Ref] | None = None):
+        """Carry the chain to the stroke point at each limit; its two places give the stroke
+        (a Whitworth's ram, drawn with its limits, at ``rams``)."""
         target = stroke_point(self.m)
         if target is None:
             return None, None, None
-        if self.kind == "slider-crank":
+        if rams is not None:
+            target, ends = self.rod2[2], list(rams)
+        elif self.kind == "slider-crank":
             if target != self.b:
                 return None, None, None
             ends = [f"limit:{self.b}0", f"limit:{self.b}1"]
@@ -446,8 +459,8 @@ def drawn_limits(work) -> LimitPositions:
 def answer(work, ask) -> Answer:
     """The time ratio or the stroke, read off the limit positions."""
     lp = drawn_limits(work)
-    how = ("lever tangent to the crank circle" if lp.kind == "slotted lever"
-           else "crank and rod in line")
+    how = {"slotted lever": "lever tangent to the crank circle",
+           "whitworth": "lever and rod in line"}.get(lp.kind, "crank and rod in line")
     method = f"limit positions by compass ({how})"
     if isinstance(ask, A.TimeRatio):
         if min(lp.slow, lp.quick) <= 0.0:

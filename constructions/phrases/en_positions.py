@@ -156,6 +156,14 @@ PHRASES: dict[str, str] = {
     "limits.rod_cuts_path": "With centre {x} and radius {span} = {radius} cut the path of {point} "
                             "at {end}.",
     "limits.rod": "Join {a}{b}: link {link} in that limit position.",
+    "limits.lever_in_line": "With centre {pivot} and radius {span} = {radius} draw an arc to cut "
+                            "{path} at {point}: lever and rod in line, {how}.",
+    "limits.lever_along": "Join {pivot}{point}; the lever lies along it: {end} is {pivot}{x} = "
+                          "{radius} from {pivot} toward {point}.",
+    "limits.lever_beyond": "Join {point}{pivot} and produce it beyond {pivot}: {end} is "
+                           "{pivot}{x} = {radius} from {pivot} on the far side.",
+    "limits.slot_cuts_crank": "The lever's line {pivot}{end} cuts the crank circle at {pin}: "
+                              "the crank pin in the slot.",
     "limits.swing": "With centre {pivot} swing {point} with the lever through the angle "
                     "{held}{pivot}{held_there} to {there}.",
 }

@@ -156,6 +156,15 @@ PHRASES: dict[str, str] = {
     "limits.lever": "نقطهٔ {pivot} را به {pin} وصل کنید: این خط، اهرم مماس بر دایرهٔ لنگ در "
                     "وضعیت حدی {which} آن است.",
     "limits.stroke": "طول {point}″{point}′ را اندازه بگیرید: کورس {point} برابر {length} است.",
+    "limits.lever_in_line": "به مرکز {pivot} و شعاع {span} = {radius} کمانی بزنید تا {path} را "
+                            "در {point} قطع کند: اهرم و میلهٔ رابط در یک راستا قرار دارند، {how}.",
+    "limits.lever_along": "نقطهٔ {pivot} را به {point} وصل کنید؛ اهرم روی این خط قرار دارد: "
+                          "{end} به فاصلهٔ {pivot}{x} = {radius} از {pivot} و به سمت {point} است.",
+    "limits.lever_beyond": "نقطهٔ {point} را به {pivot} وصل کنید و این خط را از {pivot} به بعد "
+                           "امتداد دهید: {end} به فاصلهٔ {pivot}{x} = {radius} از {pivot} و در "
+                           "طرف مقابل آن است.",
+    "limits.slot_cuts_crank": "خط اهرم {pivot}{end} دایرهٔ لنگ را در {pin} قطع می‌کند: پین لنگ در "
+                              "شیار.",
     "limits.produce_lever": "خط {pivot}{held} را امتداد دهید تا مسیر {point} را در {end} قطع کند.",
     "limits.rod_cuts_path": "به مرکز {x} و شعاع {span} = {radius} کمانی بزنید تا مسیر {point} "
                             "را در {end} قطع کند.",
