@@ -7,7 +7,8 @@ Each problem (one TOML file) gives the book's wording, its asked quantities and,
 each, the closed form of its answer in SI (Python arithmetic with pi, sqrt, hypot, sin,
 cos and radians, never tarsim's own number), and the tarsim exercise that states it.
 An asked quantity with no ``name`` is one tarsim cannot yet be asked (its ``why`` says
-so). Every exercise is solved as the command line solves it (``tarsim solve --no-pdf``)
+so); ``field`` reads a part results.json gives beside a name's value (a slowest point's
+distance ``along`` the link). Every exercise is solved as the command line solves it (``tarsim solve --no-pdf``)
 and each answer is read from results.json and held to its closed form (relative
 ``rel``, 1e-9 unless the problem says otherwise: an integral read off a drawing is
 held to what its step allows).
@@ -42,12 +43,14 @@ def closed_form(text: str) -> float:
                       {"__builtins__": {}, **_NAMES}))
 
 
-def _value(results: dict, name: str, position: int | None) -> float | None:
-    """``name``'s value (SI) in results.json: of the whole, or at ``position`` (from 1)."""
+def _value(results: dict, name: str, position: int | None,
+           field: str = "value") -> float | None:
+    """``name``'s value (SI) in results.json: of the whole, or at ``position`` (from 1); or
+    the part ``field`` results.json gives beside it (a slowest point's ``along``)."""
     where = results.get("quantities", {}) if position is None else \
         results["positions"][position - 1].get("quantities", {})
     entry = where.get(name)
-    return None if entry is None else float(entry["value"])
+    return None if entry is None or field not in entry else float(entry[field])
 
 
 def outcomes(path: Path) -> list[tuple[str, str, str]]:
@@ -69,7 +72,7 @@ def outcomes(path: Path) -> list[tuple[str, str, str]]:
             return out + [(a["what"], "refused", line) for a in stated]
         results = json.loads((Path(tmp) / "out" / "results.json").read_text(encoding="utf-8"))
     for a in stated:
-        got = _value(results, a["name"], a.get("position"))
+        got = _value(results, a["name"], a.get("position"), a.get("field", "value"))
         want = closed_form(a["expected"])
         if got is None:
             out.append((a["what"], "missing", a["name"]))
