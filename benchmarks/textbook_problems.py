@@ -8,8 +8,9 @@ each, the closed form of its answer in SI (Python arithmetic with pi, sqrt, hypo
 cos and radians, never tarsim's own number), and the tarsim exercise that states it.
 An asked quantity with no ``name`` is one tarsim cannot yet be asked (its ``why`` says
 so); ``field`` reads a part results.json gives beside a name's value (a slowest point's
-distance ``along`` the link). Every exercise is solved as the command line solves it (``tarsim solve --no-pdf``)
-and each answer is read from results.json and held to its closed form (relative
+distance ``along`` the link). Every exercise is solved as the command line solves it
+(``tarsim solve --no-pdf``) and each answer is read from results.json and held to its
+closed form (relative
 ``rel``, 1e-9 unless the problem says otherwise: an integral read off a drawing is
 held to what its step allows).
 
