@@ -23,6 +23,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from tarsim.constructions.errors import InputError
+from tarsim.constructions.reference.balance import vee_resultants
 from tarsim.exercises.balancing.balance_solution import solve_balance
 from tarsim.exercises.balancing.rotor_file import parse_balance
 
@@ -422,3 +423,78 @@ def test_balance_masses_for_revolving_masses_alone_leave_no_hammer_blow():
     q = solve_balance(parse_balance(LOCOMOTIVE.replace("balanced = 0.6666666666666666\n", ""),
                                     "l.toml")).results["quantities"]
     assert "mass_A" in q and not any(k.startswith(("hammer", "primary_force_left")) for k in q)
+
+
+VEE = """
+[units]
+length = "mm"
+speed = "rpm"
+[engine]
+speed = 3000
+crank = 50
+rod = 200
+reciprocating = 1.5
+vee = 90
+at = 30
+"""
+
+
+def test_a_v_twin_at_90_degrees_has_a_constant_primary_and_its_secondary_across():
+    """α = 45°: the primary 2F·cos²α·cos θ along and 2F·sin²α·sin θ across, F = m·ω²·r, so F
+    at every angle; the secondary 2(F/n)·cos α·cos 2α·cos 2θ = 0 along and
+    2(F/n)·sin α·sin 2α·sin 2θ = √2·(F/n)·sin 2θ across, greatest √2·F/n at 45°."""
+    s = solve_balance(parse_balance(VEE, "v.toml"))
+    assert s.passed, s.failures
+    q = s.results["quantities"]
+    f = 1.5 * 0.05 * (100 * math.pi) ** 2
+    assert q["primary_resultant"]["value"] == pytest.approx(f, rel=1e-12)
+    assert q["primary_max"]["value"] == pytest.approx(f, rel=1e-12)
+    assert q["primary_max"]["constant"] is True and "primary_max_at" not in q
+    assert q["secondary_resultant"]["value"] == pytest.approx(
+        math.sqrt(2) * f / 4 * math.sin(math.radians(60)), rel=1e-12)
+    assert q["secondary_max"]["value"] == pytest.approx(math.sqrt(2) * f / 4, rel=1e-12)
+    assert q["secondary_max_at"]["value"] == 45.0
+    assert set(s.figures) == {"forces"}
+
+
+def test_a_60_degree_v_has_its_greatest_primary_on_the_centre_line_and_a_constant_secondary():
+    """α = 30°: primary 1.5F·cos θ along, 0.5F·sin θ across, greatest 1.5F at 0°; secondary
+    2·cos 30°·cos 60° = 2·sin 30°·sin 60° = √3/2, so (√3/2)·F/n at every angle."""
+    q = solve_balance(parse_balance(VEE.replace("vee = 90", "vee = 60"), "v.toml")
+                      ).results["quantities"]
+    f = 1.5 * 0.05 * (100 * math.pi) ** 2
+    assert q["primary_max"]["value"] == pytest.approx(1.5 * f, rel=1e-12)
+    assert q["primary_max_at"]["value"] == 0.0
+    assert q["secondary_max"]["value"] == pytest.approx(math.sqrt(3) / 2 * f / 4, rel=1e-12)
+    assert q["secondary_max"]["constant"] is True
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.integers(1, 179), st.integers(0, 359))
+def test_a_v_engines_greatest_is_no_less_than_any_angle_gives(vee, at):
+    """The greatest resultant, read at an end of the ellipse's axes, against the resultant
+    sampled every half degree by the closed form: none above it, and one within the
+    sampling's reach (1 − cos of a quarter degree, doubled for 2θ)."""
+    s = solve_balance(parse_balance(VEE.replace("vee = 90", f"vee = {vee}")
+                                    .replace("at = 30", f"at = {at}"), "v.toml"))
+    assert s.passed, s.failures
+    q = s.results["quantities"]
+    e = s.exercise.engine
+    sampled = [vee_resultants(e, math.radians(d / 2)) for d in range(720)]
+    for k, name in enumerate(("primary", "secondary")):
+        top = max(v[k] for v in sampled)
+        most = q[f"{name}_max"]["value"]
+        assert top <= most * (1 + 1e-12)
+        assert top >= most * (1 - 4 * (1 - math.cos(math.radians(0.5))))
+
+
+@pytest.mark.parametrize("old, new, words", [
+    ("vee = 90", "vee = 180", "the V's angle between its cylinders' lines is between 0° and 180°"),
+    ("at = 30", "at = 30\n[[cylinder]]\ncrank = 0", "a V engine's two cylinders work on one crank"),
+    ("at = 30", "at = 30\nbalanced = 0.5", "balanced is not taken for a V engine"),
+])
+def test_a_v_engine_it_cannot_take_is_refused_in_one_line(old, new, words):
+    with pytest.raises(InputError) as e:
+        parse_balance(VEE.replace(old, new, 1), "v.toml")
+    message = str(e.value)
+    assert "\n" not in message and message.startswith("v.toml:") and words in message, message

@@ -78,6 +78,9 @@ class Engine:
     revolving: float = 0.0
     balance_radius: float | None = None
     balance_mass: float | None = None
+    vee: float = 0.0
+    """A V engine's angle between its two cylinders' lines (rad), both on one crank: 0 for
+    cylinders in line."""
     firing_order: tuple[int, ...] = ()
     """The order the cylinders fire in, where the file gives the cranks by it (empty where
     it gives them one by one), and the engine's ``strokes`` a cycle (2 or 4)."""

@@ -86,6 +86,17 @@ WORDS: dict[str, str] = {
     "turning, B·ω²·b = {blow} N":
         "ضربهٔ چکشی در صفحهٔ {plane}: سهم جرم متعادل‌کننده برای جرم رفت‌وبرگشتی در حال دوران، "
         "B·ω²·b = {blow} N",
+    "Resultant forces of the V engine": "نیروهای برآیند موتور V",
+    "{vee}° between the lines, θ from the centre line":
+        "{vee} درجه میان خط‌های کورس، θ از خط میانی",
+    "V engine, {vee}° between its lines, at θ = {angle}° from the centre line: the {kind} "
+    "resultant {size} N ({along} N along the centre line, {across} N across it)":
+        "موتور V با {vee}° میان خط‌های کورس، در θ = {angle}° از خط میانی: برآیند {kind} "
+        "{size} N ({along} N در امتداد خط میانی و {across} N عمود بر آن)",
+    "the {kind} resultant is {size} N at every crank angle":
+        "برآیند {kind} در هر زاویهٔ لنگ {size} N است",
+    "the greatest {kind} resultant: {size} N, first at θ = {angle}°":
+        "بیشترین برآیند {kind}: {size} N، نخست در θ = {angle}°",
     "force": "نیرو", "couple": "کوپل",
     "each where the algebra puts it": "هر یک همان‌جا که حل جبری نشان می‌دهد",
     ": found": ": یافته‌شده",

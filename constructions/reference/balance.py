@@ -24,7 +24,8 @@ from ..balancing.rotor import Engine, Mass
 
 __all__ = ["EngineSums", "balance_product", "quadrant_angle", "resultant", "single_cylinder",
            "engine_greatest_at", "engine_sums", "one_axial_plane", "open_residual",
-           "open_rotor_roots", "polygon_roots", "two_planes", "unbalanced_resultant"]
+           "open_rotor_roots", "polygon_roots", "two_planes", "unbalanced_resultant",
+           "vee_resultants"]
 
 
 def resultant(masses: tuple[Mass, ...] | list[Mass]) -> tuple[float, float]:
@@ -152,6 +153,23 @@ def engine_greatest_at(e: Engine, reference: float | None = None) -> dict[str, f
         out[kind] = (math.degrees(e.cranks[0]) - math.degrees(math.atan2(y, x)) / order) \
             % period
     return out
+
+
+def vee_resultants(e: Engine, theta: float) -> tuple[float, float | None]:
+    """A V engine's resultant primary and secondary forces (N) at θ from its centre line,
+    by the books' closed forms with α half the V's angle and F = m·ω²·r:
+    primary √((2F·cos²α·cos θ)² + (2F·sin²α·sin θ)²), secondary (F/n)·
+    √((2·cos α·cos 2α·cos 2θ)² + (2·sin α·sin 2α·sin 2θ)²); the secondary None with no rod."""
+    a = e.vee / 2
+    f = e.reciprocating * e.speed ** 2 * e.crank
+    primary = 2 * f * math.hypot(math.cos(a) ** 2 * math.cos(theta),
+                                 math.sin(a) ** 2 * math.sin(theta))
+    if e.rod is None:
+        return primary, None
+    secondary = 2 * f / (e.rod / e.crank) * math.hypot(
+        math.cos(a) * math.cos(2 * a) * math.cos(2 * theta),
+        math.sin(a) * math.sin(2 * a) * math.sin(2 * theta))
+    return primary, secondary
 
 
 TANGENT = 1e-9

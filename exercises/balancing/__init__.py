@@ -37,6 +37,8 @@ class Balancing(Chapter):
         if exercise.rotor is not None and exercise.engine is None:
             return ("the balancing mass by the force polygon" if len(exercise.rotor.planes) == 1
                     else "the two balancing masses by the couple and force polygons")
+        if exercise.engine.vee:
+            return "the resultant primary and secondary forces of a V engine's two cylinders"
         if len(exercise.engine.cranks) == 1:
             return "the primary and secondary forces, partly balanced"
         if exercise.rotor is not None:

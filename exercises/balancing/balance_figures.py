@@ -21,6 +21,7 @@ from tarsim.graphics.figure import Figure
 from tarsim.graphics.plot import PlotMark, Series, draw_line_plot
 from tarsim.graphics.train_table import draw_train_table
 from .open_rotor_solution import open_figures
+from .vee_engine import vee_figure
 
 if TYPE_CHECKING:
     from .balance_solution import BalanceSolution
@@ -43,6 +44,8 @@ def balance_figures(s: BalanceSolution) -> dict[str, Figure]:
     if ex.engine is None:
         return _rotor_figures(s, unit, metre)
     e = ex.engine
+    if e.vee:
+        return {"forces": vee_figure(e)}
     if len(e.cranks) == 1:
         return {"forces": _single_cylinder_plot(e, s.cylinder_balance, unit, metre)}
     # an in-line engine's polygons, then its balance masses' where planes are given

@@ -30,6 +30,7 @@ from ..worked_document import Bullets, Section, said_steps, title
 from .balance_figures import angle_deg, balance_figures
 from .engine_balance import left_checked, left_lines, left_misses
 from .firing_order import firing_line
+from .vee_engine import vee_checked, vee_lines, vee_misses
 from .open_rotor_solution import open_checked, open_lines, open_misses
 from .rotor_file import BalanceExercise
 
@@ -53,16 +54,11 @@ class BalanceSolution(ChapterFiles):
     exercise: BalanceExercise
 
     # ----- a rotor ------------------------------------------------------------------------------
-    @property
-    def rotor(self):
-        """The rotor to balance: the file's, or an in-line engine's cylinders as rotating
-        masses (their revolving masses and the fraction balanced of the reciprocating)."""
-        return self.exercise.rotor
-
     @cached_property
     def balance(self) -> Balance | None:
-        """The rotor's polygons, drawn (None for an engine with no balance planes)."""
-        r = self.rotor
+        """The rotor's polygons, drawn (None for an engine with no balance planes): the file's
+        rotor, or an in-line engine's cylinders as rotating masses."""
+        r = self.exercise.rotor
         return draw_balance(r) if r else None
 
     @cached_property
@@ -74,7 +70,7 @@ class BalanceSolution(ChapterFiles):
     @cached_property
     def expected(self) -> dict[str, tuple[float, float]]:
         """Each balancing plane's product by the closed form (kg·m)."""
-        r = self.rotor
+        r = self.exercise.rotor
         if len(r.planes) == 1:
             x, y = resultant(r.masses)
             return {r.planes[0].name: (-x, -y)}
@@ -96,7 +92,7 @@ class BalanceSolution(ChapterFiles):
         the balancing products included, and the size a balancing product's own rounding
         follows, the first plus the second over l_B: a product found from the couples is
         divided by the planes' distance apart."""
-        r = self.rotor
+        r = self.exercise.rotor
         ref = r.planes[0].position
         vectors = [(m.mass * m.radius, m.plane) for m in r.masses]
         vectors += [(math.hypot(*self.balance.product(p.name)), p.position) for p in r.planes]
@@ -134,7 +130,8 @@ class BalanceSolution(ChapterFiles):
                 if miss > AGREE:
                     out.append((kind, miss))
             out += self._greatest_misses(e) + left_misses(self, AGREE)
-        return out
+        e = self.exercise.engine
+        return out + (vee_misses(e) if e is not None and e.vee else [])
 
     def _greatest_misses(self, e) -> list[tuple[str, float]]:
         """Each drawn crank angle of a greatest force or couple against the reference's
@@ -189,7 +186,7 @@ class BalanceSolution(ChapterFiles):
     def residual(self) -> tuple[float, float]:
         """The balanced rotor's leftover force and couple (kg·m, kg·m²): its masses and the
         drawn balancing products summed; the couple about the first balancing plane."""
-        r = self.rotor
+        r = self.exercise.rotor
         vectors = [(m.mr, m.plane) for m in r.masses]
         vectors += [(self.balance.product(p.name), p.position) for p in r.planes]
         ref = r.planes[0].position
@@ -235,7 +232,7 @@ class BalanceSolution(ChapterFiles):
     def _rotor_lines(self) -> list[str]:
         """A rotor's resultant, each balancing plane's mass and the check."""
         out = []
-        r = self.rotor
+        r = self.exercise.rotor
         noise = rounding([m.mass * m.radius for m in r.masses])
         x, y = (_quiet(v, noise) for v in resultant(r.masses))
         if x == y == 0.0:
@@ -286,7 +283,7 @@ class BalanceSolution(ChapterFiles):
 
     def _none_line(self, p) -> str:
         """Why plane ``p`` needs no mass: its polygon closes on itself."""
-        r = self.rotor
+        r = self.exercise.rotor
         if len(r.planes) == 1:
             return words("plane {plane}: no balancing mass needed, the force polygon closes on "
                          "itself (Σ mᵢrᵢ = 0)", plane=p.name)
@@ -322,7 +319,9 @@ class BalanceSolution(ChapterFiles):
 
     def _cylinder_lines(self, e) -> list[str]:
         """A single cylinder's forces at its crank angle, what its balance mass leaves, and
-        the balance mass itself."""
+        the balance mass itself (a V engine's pair on one crank: their resultants)."""
+        if e.vee:
+            return vee_lines(e)
         prim, sec, along, across = single_cylinder(e, e.at)
         f = e.reciprocating * e.speed ** 2 * e.crank
         angle = numeral(math.degrees(e.at), "g")
@@ -408,7 +407,9 @@ class BalanceSolution(ChapterFiles):
         """An engine's forces and couples: a single cylinder's, or the in-line polygons'."""
         ex = self.exercise
         q: dict[str, Checked] = {}
-        if len(ex.engine.cranks) == 1:
+        if ex.engine.vee:
+            q |= vee_checked(ex.engine)
+        elif len(ex.engine.cranks) == 1:
             q |= self._cylinder_checked(ex.engine)
         else:
             sums = engine_sums(ex.engine)

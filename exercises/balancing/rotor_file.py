@@ -35,7 +35,7 @@ _KEYS = {"rotor": ("speed",), "mass": ("name", "mass", "radius", "angle", "plane
          "balance": ("name", "plane", "radius", "mass"),
          "engine": ("speed", "crank", "stroke", "rod", "reciprocating", "balanced", "at",
                     "revolving", "balance_radius", "balance_mass", "firing_order", "strokes",
-                    "road_speed", "wheel_diameter"),
+                    "road_speed", "wheel_diameter", "vee"),
          "cylinder": ("crank", "plane")}
 
 
@@ -117,6 +117,29 @@ def _speed(t: Tables, table: str) -> float:
     if not v > 0:
         raise t.fail(f"the speed must be positive, got {v:g}", table, "speed")
     return v * SPEEDS[t.units("m", "rad/s")[1]]
+
+
+def _vee(t: Tables, one: dict) -> float:
+    """A V engine's angle between its cylinders' lines (rad), 0 where the file gives none;
+    its two cylinders share one crank, so it takes no [[cylinder]] tables, and no balance
+    mass or firing order."""
+    if "vee" not in one:
+        return 0.0
+    v = t.number(one, "vee", "engine", "the V's angle")
+    if not 0 < v < 180:
+        raise t.fail(f"the V's angle between its cylinders' lines is between 0° and 180°, got "
+                     f"{v:g}", "engine", "vee")
+    if t.entries("cylinder"):
+        raise t.fail("a V engine's two cylinders work on one crank: leave out the [[cylinder]] "
+                     "tables", "cylinder", None, 0)
+    other = [k for k in ("balanced", "revolving", "balance_radius", "balance_mass",
+                         "firing_order", "strokes") if k in one] + (
+        ["balance"] if t.entries("balance") else [])
+    if other:
+        raise t.fail(f"{other[0]} is not taken for a V engine: its resultant forces are found "
+                     "unbalanced; leave it out", "engine" if other[0] != "balance" else "balance",
+                     other[0] if other[0] != "balance" else None)
+    return math.radians(v)
 
 
 def _engine_speed(t: Tables, one: dict, metre: float) -> float:
@@ -247,6 +270,7 @@ def _engine(t: Tables, metre: float) -> Engine:
     if not 0 <= balanced <= 1:
         raise t.fail(f"the balanced fraction is from 0 to 1, got {balanced:g}", "engine",
                      "balanced")
+    vee = _vee(t, one)
     cylinders = t.entries("cylinder") or [{"crank": 0, "plane": 0}]
     firing = read_firing_order(t, one, cylinders)
     cranks = tuple(_degrees(d) for d in firing_cranks(*firing)) if firing else tuple(
@@ -267,7 +291,7 @@ def _engine(t: Tables, metre: float) -> Engine:
     return Engine(cranks, planes, crank * metre, rod, mass, _engine_speed(t, one, metre),
                   balanced, _degrees(t.number(one, "at", "engine", "the crank angle", 0, 0.0)),
                   revolving, None if radius is None else radius * metre, balance,
-                  *(firing or ((), 0)))
+                  vee, *(firing or ((), 0)))
 
 
 def _engine_rotor(t: Tables, e: Engine, metre: float) -> Rotor | None:
