@@ -153,7 +153,8 @@ def test_bad_file_is_one_line_with_file_and_line(mech_file, tmp_path, edit, mess
                         "four-bar-coupler-load, four-bar-forces, compound-train, "
                         "differential-near-equal, gearbox-power-efficiency, "
                         "involute-pair, output-speed-given, planetary-q1, planetary-q2, "
-                        "planetary-q3, planetary-q4, ratio-least-teeth, ratio-only, "
+                        "planetary-q3, planetary-q4, planetary-ratio-least-teeth, "
+                        "ratio-least-teeth, ratio-only, "
                         "teeth-implied, two-planets-listed, two-speeds-arm-and-sun, "
                         "base-circle-for-pressure-angle, eccentric-flat-face, offset-knife-edge, "
                         "oscillating-roller, roller-harmonic-cycloidal, "
@@ -291,7 +292,8 @@ def test_list_shows_the_bundled_examples():
                    "four-bar-coupler-load", "four-bar-forces", "compound-train",
                    "differential-near-equal", "gearbox-power-efficiency", "involute-pair",
                    "output-speed-given", "planetary-q1", "planetary-q2", "planetary-q3",
-                   "planetary-q4", "ratio-least-teeth", "ratio-only", "teeth-implied",
+                   "planetary-q4", "planetary-ratio-least-teeth", "ratio-least-teeth",
+                   "ratio-only", "teeth-implied",
                    "two-planets-listed", "two-speeds-arm-and-sun",
                    "base-circle-for-pressure-angle", "eccentric-flat-face", "offset-knife-edge",
                    "oscillating-roller", "roller-harmonic-cycloidal",

@@ -13,6 +13,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from tarsim.constructions.errors import InputError
+from tarsim.constructions.narration import narrate
 from tarsim.exercises.catalog import load
 from tarsim.exercises.gears.train_file import parse_train
 from tarsim.exercises.gears.train_solution import solve_train
@@ -131,3 +132,70 @@ def test_the_fixed_member_s_power_is_refused():
 def test_a_power_needs_the_input_s_torque_or_power():
     with pytest.raises(InputError, match=r"cannot find 'power4' without the input's torque"):
         parse_train(planetary(given="member = 2\nspeed = 100"), "t.toml")
+
+
+# ----- a planetary train's teeth from its speed ratio -------------------------------------------
+def test_gears_teeth_from_ratio_planetary():
+    """The textbook corpus's problem, bundled: the carrier at 1/5 of the sun's speed with the
+    internal gear fixed, 1 + N_E/N_S = 5, so N_E = 4·N_S and N_P = (N_E − N_S)/2 = 1.5·N_S;
+    the least whole set from 16 teeth is 16, 24, 64. The sun's 100 N·m: T_C = −500 N·m, so
+    E is held by 400 N·m."""
+    s = solve_train(load("planetary-ratio-least-teeth"))
+    q = s.quantities
+    assert (q["teeth2"].exact, q["teeth3"].exact, q["teeth1"].exact) == (16, 24, 64)
+    assert q["omega4/omega2"].exact == F(1, 5)
+    assert q["torque1"].exact == 400
+    assert s.passed
+    steps = [narrate(p) for p in s.train.implied]
+    assert any("(N1 + 16)/16" in p and "N1 = 64" in p for p in steps)
+
+
+def _least_set(k: int, least: int) -> tuple[int, int, int]:
+    """The books' choice, apart from tarsim: (N_S, N_P, N_E) ∝ (2, k − 2, 2(k − 1)) for
+    ω_S/ω_C = k with E fixed, the smallest scaled to the fewest teeth ≥ ``least``."""
+    base = [2, k - 2, 2 * (k - 1)]
+    g = math.gcd(*base)
+    base = [b // g for b in base]
+    scale = -(-least // min(base))
+    return tuple(b * scale for b in base)
+
+
+@settings(max_examples=30, deadline=None)
+@given(st.integers(3, 9), st.integers(8, 30), st.integers(1, 300))
+def test_the_least_set_of_teeth_meets_the_ratio(k, least, torque):
+    """Whatever the ratio and least count, the counts are the least whole set in the ratio
+    the speed ratio and the coaxial condition fix, and the holding torque is (k − 1)·T."""
+    text = planetary("", "", "", top=f"[ratio]\nof = \"omega2/omega4\"\nvalue = {k}\n"
+                     f"least_teeth = {least}\n", given=f"member = 2\ntorque = {torque}",
+                     find='["teeth2", "teeth3", "teeth1", "torque1"]')
+    q = solve_train(parse_train(text, "t.toml")).quantities
+    sun, planet, ring = _least_set(k, least)
+    assert (q["teeth2"].exact, q["teeth3"].exact, q["teeth1"].exact) == (sun, planet, ring)
+    assert q["torque1"].exact == (k - 1) * torque
+    assert all(q[n].passed for n in q)
+
+
+def test_one_count_given_needs_no_least_count():
+    """The sun given 20 teeth: the ratio gives the ring N_E = (5 − 1)·20 = 80 whatever the
+    planet's, and the coaxial condition the planet (80 − 20)/2 = 30."""
+    text = planetary("", "teeth = 20", "", top="[ratio]\nof = \"omega2/omega4\"\nvalue = 5\n",
+                     given="member = 2", find='["teeth1", "teeth3"]')
+    q = solve_train(parse_train(text, "t.toml")).quantities
+    assert (q["teeth1"].exact, q["teeth3"].exact) == (80, 30)
+
+
+def test_a_ratio_no_planetary_teeth_can_meet_is_refused():
+    """|ω_S/ω_C| = 3/2 with E fixed asks N_E = N_S/2, smaller than the sun: the planet
+    would have fewer than none, so no counts give it."""
+    text = planetary("", "", "", top="[ratio]\nof = \"omega2/omega4\"\nvalue = 1.5\n"
+                     "least_teeth = 16\n", given="member = 2", find='["teeth1"]')
+    with pytest.raises(InputError, match=r"no whole counts of 16 teeth or more for gears "
+                                         r"1, 2, 3 give the speed ratio ω2/ω4 = 1\.5"):
+        parse_train(text, "t.toml")
+
+
+def test_unknown_planetary_teeth_without_a_least_count_are_refused():
+    text = planetary("", "", "", top="[ratio]\nof = \"omega2/omega4\"\nvalue = 5\n",
+                     given="member = 2", find='["teeth1"]')
+    with pytest.raises(InputError, match=r"give least_teeth = … in \[ratio\]"):
+        parse_train(text, "t.toml")

@@ -9,7 +9,7 @@ A gear may come with no teeth. Its count then follows, exactly, from
   a reverted train's N2 + N3 = N4 + N5. In an ordinary reverted train the file says which
   two gears share an axis (``coaxial = [2, 5]``), and the same holds of its two pairs;
 - an ordinary train's speed ratio, with a least tooth count for a pair both unknown
-  (:func:`teeth_from_ratio`).
+  (:func:`teeth_from_ratio`); a planetary train's, in :mod:`.planet_teeth`.
 
 Each count found is a step, and must come out whole and positive.
 """

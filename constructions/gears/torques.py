@@ -25,7 +25,7 @@ from .tabular import fraction_text
 from .train import GearTrain
 
 __all__ = ["balance", "say_balance", "per_pi", "torque_text", "holder", "power_at",
-           "power_text", "say_powers"]
+           "power_text", "say_powers", "implied_output"]
 
 _DIGITS = 16
 """The most digits (numerator and denominator) a torque's fraction is said with."""
@@ -40,6 +40,18 @@ def holder(train: GearTrain) -> int | None:
     """The member that holds the train against the input and the output: the fixed one,
     or the second given speed's member."""
     return train.fixed if train.second is None else train.second[0]
+
+
+def implied_output(train: GearTrain) -> int | None:
+    """The output a holding torque asked alone implies: the one body besides the input's
+    and the holder's that the arm does not carry (the arm, where the books ask "the torque
+    to hold the annulus"), named by the arm or its first member; None if there are more."""
+    h = holder(train)
+    ends = [body for body in train.bodies if not train.carried(body[0])
+            and train.input_member not in body and (h is None or h not in body)]
+    if len(ends) != 1:
+        return None
+    return train.arm if train.arm in ends[0] else ends[0][0]
 
 
 def input_torque(train: GearTrain, speeds: dict[int, Fraction]) -> Fraction | None:

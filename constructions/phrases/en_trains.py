@@ -43,6 +43,12 @@ PHRASES: dict[str, str] = {
                        "from the teeth alone.",
     "gears.teeth_ratio": "The speed ratio the book gives, |ω{x}/ω{y}| = {value}, is {expr} "
                          "through the meshes: N{g} = {teeth}.",
+    "gears.teeth_ratio_table": "The speed ratio the book gives, |ω{x}/ω{y}| = {value}, is "
+                               "{expr} by the table (the fixed member held, each mesh N or "
+                               "1/N): N{g} = {teeth}.",
+    "gears.teeth_least_set": "Gear {g}, the smallest of the gears left unknown, takes the "
+                             "least count, {least} teeth, or the fewest above it that make "
+                             "the others whole: N{g} = {teeth}.",
     "gears.teeth_least": "Gear {g}, the smaller of the pair, takes the least count, {least} "
                          "teeth, or the fewest above it that make the other whole: N{g} = "
                          "{teeth}.",

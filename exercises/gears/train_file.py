@@ -15,6 +15,8 @@ from typing import Any, ClassVar
 from tarsim.constructions.asks import symbol
 from tarsim.constructions.errors import InputError
 from tarsim.constructions.gears.involute import Involute, check_mesh
+from tarsim.constructions.gears.planet_teeth import planetary_teeth_from_ratio
+from tarsim.constructions.gears.torques import implied_output
 from tarsim.constructions.gears.teeth import (imply_teeth, teeth_from_diameter,
                                               teeth_from_ratio, unknown_teeth)
 from tarsim.constructions.gears.train import Gear, GearTrain, Mesh, SpeedUnits
@@ -146,8 +148,8 @@ class _Reader(InputTables):
         train, steps = imply_teeth(train, train.coaxial)
         if "ratio" in self.data:
             of, value, least = self.ratio(train)
-            train, more = teeth_from_ratio(replace(train, ratio_given=(*of, value)), of,
-                                           value, least)
+            by_ratio = planetary_teeth_from_ratio if train.planetary else teeth_from_ratio
+            train, more = by_ratio(replace(train, ratio_given=(*of, value)), of, value, least)
             steps = (*steps, *more)
         for g in unknown_teeth(train):
             raise InputError(f"gear {g} needs its teeth: give teeth = …, or its diameter with "
@@ -476,7 +478,8 @@ class _Reader(InputTables):
         if f"power{held}" in find and train.second is None:
             raise self.fail(f"power{held} is asked of the fixed member {held}, which takes no "
                             "power: ask the power of a turning member", "ask", "find")
-        if any(f"{k}{held}" in find for k in ("torque", "power")) and not loaded:
+        if any(f"{k}{held}" in find for k in ("torque", "power")) and not loaded \
+                and implied_output(train) is None:
             raise self.fail(("the fixed member's" if train.second is None else
                              f"member {held}'s") + " holding torque needs the output's: ask "
                             "the output's torque or power too", "ask", "find")

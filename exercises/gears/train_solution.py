@@ -18,9 +18,9 @@ from tarsim.constructions.checks import CEILING
 from tarsim.constructions.gears.involute import InvoluteMesh, draw_involute_mesh, least_teeth_drawn
 from tarsim.constructions.gears.kutzbach import DRAWN, Kutzbach, draw_kutzbach, undrawable
 from tarsim.constructions.gears.tabular import TrainSpeeds, fraction_text, tabulate
-from tarsim.constructions.gears.torques import (balance, holder, input_torque, per_pi,
-                                                power_at, power_text, say_balance,
-                                                say_powers, torque_text)
+from tarsim.constructions.gears.torques import (balance, holder, implied_output,
+                                                input_torque, per_pi, power_at, power_text,
+                                                say_balance, say_powers, torque_text)
 from tarsim.constructions.narration import (numeral, numerals, phrase, significant, unit_words,
                                             words)
 from tarsim.constructions.reference.gear_mesh import (MeshReference, involute_miss, least_teeth,
@@ -142,9 +142,12 @@ class TrainSolution(ChapterFiles):
     def output(self) -> int | None:
         """The member whose torque is asked besides the input's and the fixed one's."""
         t = self.train
-        asked = (int(q.removeprefix("torque").removeprefix("power"))
-                 for q in self.exercise.asks if q.startswith(("torque", "power")))
-        return next((m for m in asked if m not in (t.input_member, holder(t))), None)
+        asked = [int(q.removeprefix("torque").removeprefix("power"))
+                 for q in self.exercise.asks if q.startswith(("torque", "power"))]
+        named = next((m for m in asked if m not in (t.input_member, holder(t))), None)
+        if named is None and holder(t) in asked:      # the holding torque asked alone
+            return implied_output(t)
+        return named
 
     def _power_quantity(self, m: int, torques: dict[int, Fraction],
                         torques_ref: dict[int, Fraction]) -> TrainQuantity:
@@ -201,15 +204,17 @@ class TrainSolution(ChapterFiles):
             ref = Fraction(round(float(gear.diameter) / float(gear.module)))
             return TrainQuantity(f"teeth{number}", found, ref, float(found), "d/m")
         by_axis = coaxial_teeth(train, number)
-        if by_axis or train.ratio_given is None:
+        if train.ratio_given is None:
             return TrainQuantity(f"teeth{number}", found, by_axis, float(found),
                                  "coaxial condition")
-        # the ratio the file gives, by the Willis speeds of the train with these teeth
+        # the ratio the file gives, by the Willis speeds of the train with these teeth, and
+        # the coaxial condition where the count stands in it
         x, y, value = train.ratio_given
         speeds = self.reference
         holds = abs(speeds[x] / speeds[y]) == value
-        return TrainQuantity(f"teeth{number}", found, found if holds else Fraction(0),
-                             float(found), "speed ratio")
+        return TrainQuantity(f"teeth{number}", found, (by_axis or found) if holds else
+                             Fraction(0), float(found), "coaxial condition and speed ratio"
+                             if by_axis else "speed ratio")
 
     def _torques(self, speeds: dict[int, Fraction]) -> dict[int, Fraction]:
         return balance(self.train, speeds, self.output)
