@@ -163,7 +163,7 @@ def test_bad_file_is_one_line_with_file_and_line(mech_file, tmp_path, edit, mess
                         "single-cylinder-balance-mass, single-cylinder, unknown-angles, "
                         "unknown-planes, "
                         "engine-harmonic-torque, "
-                        "petrol-engine-areas, single-cylinder-table\n"),
+                        "petrol-engine-areas, punching-press, single-cylinder-table\n"),
     ("missing.toml", "Error: no such file 'missing.toml'\n"),
 ])
 def test_unknown_source_is_one_line(source, message):
@@ -302,7 +302,7 @@ def test_list_shows_the_bundled_examples():
                    "single-cylinder-balance-mass", "single-cylinder", "unknown-angles",
                    "unknown-planes",
                    "engine-harmonic-torque",
-                   "petrol-engine-areas", "single-cylinder-table"]
+                   "petrol-engine-areas", "punching-press", "single-cylinder-table"]
     assert "Four-bar crank-rocker" in result.stdout
 
 

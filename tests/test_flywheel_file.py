@@ -142,7 +142,9 @@ def test_the_formula_reader_allows_the_books_arithmetic():
     ("[turning_moment]\nareas = [10, 10, -20]\nenergy_scale = 1\n", 2, "other sign"),
     ("[turning_moment]\ntorque = \"1\"\npoints = [[0, 1], [90, 2], [180, 3]]\n", 3,
      "not torque and points"),
-    ("[turning_moment]\npoints = [[0, 1], [90, 2], [90, 3]]\n", 2, "past the one before"),
+    ("[turning_moment]\npoints = [[0, 1], [90, 2], [45, 3]]\n", 2, "past the one before"),
+    ("[turning_moment]\npoints = [[0, 1], [90, 2], [90, 3], [90, 4]]\n", 2, "the same once"),
+    ("[turning_moment]\npoints = [[0, 1], [0, 2], [90, 3]]\n", 2, "past the one before"),
     ("[turning_moment]\ntorque = \"1 + sin(theta)\"\n[flywheel]\nspeed_fluctuation = 0.1\n", 3,
      "give the mean speed"),
     ("[turning_moment]\ntorque = \"1 + sin(theta)\"\n[flywheel]\nspeed = 1\ninertia = 1\n"
@@ -174,7 +176,7 @@ def test_a_flywheel_file_is_its_own_kind_not_a_mechanism(tmp_path):
 
 
 @pytest.mark.parametrize("name", ["engine-harmonic-torque", "petrol-engine-areas",
-                                  "single-cylinder-table"])
+                                  "single-cylinder-table", "punching-press"])
 def test_a_flywheel_exercise_is_solved_drawn_and_said_in_persian(name, tmp_path):
     for lang in ("en", "fa"):
         out = tmp_path / lang
@@ -275,3 +277,122 @@ def test_a_bad_rim_or_speed_is_refused_at_its_line(flywheel, line, words):
         parse_flywheel(HARMONIC.format(flywheel=flywheel), "f.toml")
     assert str(e.value).startswith(f"f.toml:{line}: ") and words in str(e.value)
     assert "\n" not in str(e.value)
+
+
+PUNCH = """[units]
+speed = "rpm"
+[resisting_torque]
+points = [[0, 6000], [60, 6000], [60, 0], [360, 0]]
+[flywheel]
+speed = 150
+speed_fluctuation = "±3 %"
+"""
+
+
+def test_a_punch_s_resisting_torque_against_a_steady_motor():
+    """6000 N·m for a sixth of a turn and nothing for the rest, against a motor's steady
+    torque: the motor gives the mean, 1000 N·m; the flywheel gives up (6000 − 1000)·π/3
+    while the punch works and takes it back over the rest. α = (T_mean − T)/I: 1000/I for
+    the five sixths the punch rests, −5000/I while it works. A table's jumps are read at its
+    points, so all is exact to rounding."""
+    q = solve_flywheel(parse_flywheel(PUNCH)).checked
+    delta_e = 5000 * math.pi / 3
+    inertia = delta_e / (0.06 * (150 * math.pi / 30) ** 2)
+    assert q["mean_torque"].value["value"] == pytest.approx(1000, rel=1e-12)
+    assert q["power"].value["value"] == pytest.approx(1000 * 5 * math.pi, rel=1e-12)
+    assert q["delta_E"].value["value"] == pytest.approx(delta_e, rel=1e-12)
+    assert q["inertia"].value["value"] == pytest.approx(inertia, rel=1e-12)
+    assert q["greatest_acceleration"].value["value"] == pytest.approx(1000 / inertia, rel=1e-12)
+    assert q["greatest_retardation"].value["value"] == pytest.approx(5000 / inertia, rel=1e-12)
+    assert all(c.passed for c in q.values())
+    lines = solve_flywheel(parse_flywheel(PUNCH)).lines()
+    assert any("acceleration" in s and "from θ = 60.00° to 360.00°" in s for s in lines)
+    assert any("retardation" in s and "from θ = 0.00° to 60.00°" in s for s in lines)
+
+
+def test_a_machine_s_torque_over_three_turns():
+    """The books' machine: 750 N·m rising evenly to 3000 over half a turn, held a turn,
+    falling to 750 over half a turn and held a turn, 250 rpm, 500 kg at k = 600 mm. The mean
+    is 750 + 2250·540/1080 = 1875 N·m; above it from 90° to 630°, ΔE = 1125·450·π/180 J,
+    and C_s = ΔE/(m·k²·ω²) (the books' ±3.58 %)."""
+    ex = parse_flywheel("""[units]\nspeed = "rpm"\nlength = "mm"\n[resisting_torque]
+points = [[0, 750], [180, 3000], [540, 3000], [720, 750]]\ncycle = 1080
+[flywheel]\nspeed = 250\nmass = 500\nradius_of_gyration = 600\n""")
+    q = solve_flywheel(ex).checked
+    omega = 250 * math.pi / 30
+    cs = 1125 * math.radians(450) / (500 * 0.36 * omega ** 2)
+    assert q["power"].value["value"] == pytest.approx(1875 * omega, rel=1e-12)
+    assert q["speed_fluctuation"].value["value"] == pytest.approx(cs, rel=1e-12)
+    assert round(50 * cs, 2) == 3.58
+    assert all(c.passed for c in q.values())
+
+
+def _table(draw_points):
+    """A table of T over a turn as [θ°, T] lines, strictly on, a jump where two share θ."""
+    return "points = [" + ", ".join(f"[{t!r}, {v!r}]" for t, v in draw_points) + "]"
+
+
+@st.composite
+def tables(draw):
+    """Tables of 3 to 8 points over a turn, some angles given twice (a jump), and maybe a
+    last point at 360° (a jump back to the first's T)."""
+    n = draw(st.integers(3, 8))
+    angles = sorted(draw(st.lists(st.integers(1, 359), min_size=n - 1, max_size=n - 1,
+                                  unique=True)))
+    torques = st.integers(-5000, 5000)
+    out = [(0, draw(torques))]
+    for a in angles:
+        out.append((a, draw(torques)))
+        if draw(st.booleans()):
+            out.append((a, draw(torques)))             # a jump
+    if draw(st.booleans()):
+        out.append((360, draw(torques)))               # a jump back to the first at 360°
+    return out
+
+
+@settings(max_examples=60, deadline=None)
+@given(points=tables(), resisting=st.booleans())
+def test_a_table_with_jumps_is_read_exactly_and_as_the_reference_reads_it(points, resisting):
+    """A table's reading at its points (jumps and all) agrees with the quadrature and the
+    Illinois intercepts of the reference to rounding; and a resisting torque is the driving
+    torque's mirror: the same mean and ΔE, its greatest acceleration where T is least."""
+    table = "resisting_torque" if resisting else "turning_moment"
+    text = f"[units]\nspeed = \"rpm\"\n[{table}]\n{_table(points)}\n[flywheel]\nspeed = 100\n" \
+           "inertia = 10\n"
+    sol = solve_flywheel(parse_flywheel(text))
+    q = sol.checked
+    size = max(abs(v) for _, v in points) * 2 * math.pi
+    assert abs(q["delta_E"].value["value"] - sol.reference.delta_e) <= 1e-10 * size
+    if sol.reading.delta_e:
+        assert all(c.passed for c in q.values())
+        mean = sol.reading.mean
+        high = max(v for _, v in points) - mean
+        low = mean - min(v for _, v in points)
+        up, down = (low, high) if resisting else (high, low)
+        assert q["greatest_acceleration"].value["value"] == pytest.approx(up / 10, rel=1e-9)
+        assert q["greatest_retardation"].value["value"] == pytest.approx(down / 10, rel=1e-9)
+
+
+@pytest.mark.parametrize("body, line, words", [
+    ("[turning_moment]\ntorque = \"1\"\n[resisting_torque]\ntorque = \"1\"\n", 3, "one of them"),
+    ("[resisting_torque]\nareas = [1, -1]\n", 2, "unknown setting 'areas'"),
+    ("[resisting_torque]\npoints = [[0, 1], [0, 2], [0, 3]]\n", 2, "past the one before"),
+])
+def test_a_bad_resisting_torque_is_refused_at_its_line(body, line, words):
+    with pytest.raises(InputError) as e:
+        parse_flywheel(body, "f.toml")
+    assert str(e.value).startswith(f"f.toml:{line}: ") and words in str(e.value)
+    assert "\n" not in str(e.value)
+
+
+def test_punching_press():
+    """The bundled punch, as the books work it: T_motor = 6000/6, ΔE = 6000·(1 − 1/6)·2π/6,
+    I = ΔE/(C_s·ω²) with ±3 % a C_s of 0.06 at 150 rpm, the rim m = I/r² at 0.5 m."""
+    q = _q("punching-press")
+    delta_e = 6000 * (1 - 1 / 6) * 2 * math.pi / 6
+    inertia = delta_e / (0.06 * (150 * math.pi / 30) ** 2)
+    assert q["mean_torque"].value["value"] == pytest.approx(1000, rel=1e-12)
+    assert q["delta_E"].value["value"] == pytest.approx(delta_e, rel=1e-12)
+    assert q["inertia"].value["value"] == pytest.approx(inertia, rel=1e-12)
+    assert q["rim_mass"].value["value"] == pytest.approx(inertia / 0.25, rel=1e-12)
+    assert q["greatest_retardation"].value["value"] == pytest.approx(5000 / inertia, rel=1e-12)

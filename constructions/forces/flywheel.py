@@ -11,7 +11,9 @@ flywheel that holds the speed within C_s = (ω_max − ω_min)/ω has I = ΔE/(C
 mean radius r has mass I/r². The shaft, loaded by a steady resisting torque equal to the
 mean, speeds up at α = (T − T_mean)/I: its greatest acceleration and retardation are where
 T is highest and lowest over the whole cycle (the global extremes, found by a scan at every
-step and refined by golden-section search; a local peak is not the greatest).
+step and refined by golden-section search; a local peak is not the greatest). A table that
+jumps (a punch starting or stopping) is read exactly at its points instead
+(:func:`read_table`), since no drawing at equal steps holds a jump.
 """
 
 from __future__ import annotations
@@ -22,7 +24,7 @@ from dataclasses import dataclass
 
 from ..reference.flywheel import Fluctuation, fluctuation
 
-__all__ = ["Diagram", "Reading", "STEPS", "read_diagram", "area_reading", "extreme",
+__all__ = ["Diagram", "Reading", "STEPS", "read_diagram", "read_table", "area_reading", "extreme",
            "rim_mass", "rim_radius", "rim_section", "speed_limits"]
 
 STEPS = 3600
@@ -83,6 +85,58 @@ def read_diagram(d: Diagram) -> Reading:
     return Reading(r.mean, tuple(c * scale for c in r.intercepts),
                    tuple(a * scale for a in r.areas), r.delta_e * scale, r.highest * scale,
                    r.lowest * scale, step, tuple(zip(thetas, torques)))
+
+
+def read_table(points: tuple[tuple[float, float], ...], cycle: float) -> Reading:
+    """Read a table's diagram exactly, at its points: T straight between them, an angle
+    given twice a jump (a punch that starts or stops, which no drawing at equal steps
+    holds), a last point a cycle on from the first a jump back to it.
+
+    The mean is the trapezoids' sum over the cycle; the curve crosses the mean inside a
+    straight piece (at its root) or at a jump across it; the energy at each crossing is the
+    trapezoids' sum up to it. The samples are the points, each jump's two values in turn,
+    and the cycle's end (T just before it).
+
+    >>> r = read_table(((0.0, 6.0), (1.0, 6.0), (1.0, 0.0), (6.0, 0.0)), 6.0)   # a sixth at 6
+    >>> r.mean, r.delta_e, r.intercepts
+    (1.0, 5.0, (0.0, 1.0))
+    """
+    ts, vs = [t for t, _ in points], [v for _, v in points]
+    if ts[-1] < ts[0] + cycle * (1 - 1e-12):
+        ts.append(ts[0] + cycle)
+        vs.append(vs[0])
+    ts[-1] = ts[0] + cycle
+    mean = math.fsum((b - a) * (va + vb) / 2 for a, b, va, vb
+                     in zip(ts, ts[1:], vs, vs[1:])) / cycle
+    e = [v - mean for v in vs]
+    last = next((1.0 if x > 0 else -1.0 for x in reversed(e) if x != 0.0), 0.0)
+    crossings: list[tuple[float, float]] = []         # (θ, energy there)
+    energy, zero_at = 0.0, None
+    for i in range(len(ts) - 1):
+        a, b, ea, eb = ts[i], ts[i + 1], e[i], e[i + 1]
+        if ea != 0.0:
+            sign = 1.0 if ea > 0 else -1.0
+            if last and sign != last:
+                crossings.append(zero_at if zero_at is not None else (a, energy))
+            last, zero_at = sign, None
+        elif zero_at is None:
+            zero_at = (a, energy)
+        if b > a and ea * eb < 0.0:                   # across the mean inside the piece
+            r = a + ea / (ea - eb) * (b - a)
+            crossings.append((r, energy + (r - a) * ea / 2))
+            last = 1.0 if eb > 0 else -1.0
+        energy += (b - a) * (ea + eb) / 2
+    samples = tuple(zip(ts, vs))
+    if not crossings:
+        return Reading(mean, (), (), 0.0, ts[0], ts[0], 0.0, samples)
+    crossings.sort()
+    levels = [q for _, q in crossings]
+    areas = tuple(levels[k + 1] - levels[k] for k in range(len(levels) - 1)) + (
+        levels[0] + energy - levels[-1],)
+    top = max(crossings, key=lambda p: p[1])
+    bottom = min(crossings, key=lambda p: p[1])
+    return Reading(mean, tuple(t for t, _ in crossings), areas, top[1] - bottom[1], top[0],
+                   bottom[0], 0.0, samples)
 
 
 def area_reading(areas: list[float]) -> Reading:

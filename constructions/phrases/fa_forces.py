@@ -63,6 +63,33 @@ WORDS: dict[str, str] = {
         "t = {thickness}، b = {width}",
     "the greatest and least speeds ω(1 ± C_s/2): {high} and {low} {unit}":
         "بیشترین و کمترین سرعت ω(1 ± C_s/2): {high} و {low} {unit}",
+    "the machine's resisting torque averages T_mean = {mean} N·m over a cycle of {cycle}°: "
+    "the steady driving torque":
+        "میانگین گشتاور مقاوم ماشین در یک چرخهٔ {cycle}° برابر T_mean = {mean} N·m است: "
+        "گشتاور محرک ثابت",
+    "Draw the table's points joined by straight lines, each jump upright; its mean is the area "
+    "under it over the cycle.":
+        "نقطه‌های جدول را با خط‌های راست به هم وصل کنید و هر جهش را قائم رسم کنید؛ میانگین آن "
+        "مساحت زیر منحنی تقسیم بر طول چرخه است.",
+    "With the driving torque steady at the mean, α = (T_mean − T)/I: greatest where the "
+    "resisting torque is lowest over the whole cycle, most negative where it is highest.":
+        "با گشتاور محرک ثابت و برابر میانگین، α = (T_mean − T)/I: در جایی که گشتاور مقاوم در "
+        "کل چرخه کمینه است بیشترین، و جایی که بیشینه است منفی‌ترین است.",
+    "greatest acceleration {alpha} rad/s², held from θ = {start}° to {end}°":
+        "بیشترین شتاب {alpha} rad/s²، از θ = {start}° تا {end}°",
+    "greatest retardation {alpha} rad/s², held from θ = {start}° to {end}°":
+        "بیشترین کاهش شتاب {alpha} rad/s²، از θ = {start}° تا {end}°",
+    "resisting torque": "گشتاور مقاوم",
+    "Resisting-torque diagram": "نمودار گشتاور مقاوم",
+    "ΔE = {energy} {unit}, the greatest fluctuation of energy: the highest energy less the "
+    "lowest, adding the areas in turn (shaded light where the machine takes more than the "
+    "mean, dark where less)":
+        "ΔE = {energy} {unit}، بیشترین نوسان انرژی: بیشترین انرژی منهای کمترین آن، با جمع "
+        "مساحت‌ها به ترتیب (روشن جایی که ماشین بیش از میانگین می‌گیرد، تیره جایی که کمتر)",
+    "α max and α min: the shaft's greatest acceleration and retardation, where the resisting "
+    "torque is lowest and highest over the whole cycle":
+        "α max و α min: بیشترین شتاب و کاهش شتاب محور، جایی که گشتاور مقاوم در کل چرخه کمینه "
+        "و بیشینه است",
     "every number agrees with its reference": "همهٔ اعداد با مرجع خود سازگارند",
     "Each area times the diagram's scale ({scale} J per unit of area) is an energy: "
     "{energies} J.":

@@ -125,9 +125,10 @@ def integrated(torque: Callable[[float], float], cycle: float,
     at the ``kinks`` (where a table's straight lines meet, so each piece is integrated
     exactly), sharing nothing with the diagram's drawing at steps: the mean is ∫T dθ /
     cycle, the intercepts the roots of T − mean (the Illinois method in each bracket of a
-    scan), the energy at each ∫₀ (T − mean) dθ, and ΔE the highest less the lowest. T's
-    extremes are the scan's best, refined where T's central difference changes sign (and a
-    table's points, where a straight-line curve has them)."""
+    scan; at a table's jump across the mean, the jump), the energy at each ∫₀ (T − mean) dθ,
+    and ΔE the highest less the lowest. T's extremes are the scan's best, refined where T's
+    central difference changes sign (and a table's points, either side of each, where a
+    straight-line curve has them)."""
     inside = sorted(k for k in kinks if 0.0 < k < cycle)
 
     def area(a: float, b: float, f) -> float:
@@ -173,7 +174,9 @@ def integrated(torque: Callable[[float], float], cycle: float,
         if not kinks:
             t = _peak(torque, grid[k] - h, grid[k] + h, cycle)
             options.append((t, torque(t)))
-        options += [(t, torque(t)) for t in inside + ([0.0] if kinks else [])]
+        # a table's points, and the value just before each (a jump's first, at a punch)
+        options += [(t, torque(u)) for t in inside + ([0.0] if kinks else [])
+                    for u in (t, math.nextafter(t, -math.inf))]
         t, v = max(options, key=lambda p, s=sign: s * p[1])
         found.append((t % cycle, v))
     return Integrated(mean, delta_e, found[0], found[1])

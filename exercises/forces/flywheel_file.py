@@ -11,6 +11,9 @@ The diagram is given one of three ways, as the books give it:
   the diagram's scales ``torque_scale`` (N·m per length unit of the drawing) and
   ``angle_scale`` (degrees per length unit), or ``energy_scale`` (J per unit of area).
 
+A machine's torque (a punch's, a press's) against a driver steady at its mean is given the
+same way as ``[resisting_torque]`` (a formula or a table). A table may jump: an angle given
+twice, or a last point a cycle on from the first with another T.
 ``cycle`` (degrees, 360 by default) is how far the crank turns before the diagram repeats.
 ``[flywheel]`` gives the mean ``speed`` and either ``speed_fluctuation`` (C_s: the flywheel
 is found, and a rim's ``mass`` at a stated ``radius`` or its ``radius`` for a stated
@@ -37,9 +40,11 @@ from ..table_file import SPEEDS, Tables
 
 __all__ = ["FlywheelExercise", "parse_flywheel"]
 
-_TOP = ("name", "names", "source", "description", "units", "turning_moment", "flywheel")
+_TOP = ("name", "names", "source", "description", "units", "turning_moment",
+        "resisting_torque", "flywheel")
 _KEYS = {"turning_moment": ("torque", "points", "areas", "torque_scale", "angle_scale",
                             "energy_scale", "cycle"),
+         "resisting_torque": ("torque", "points", "cycle"),
          "flywheel": ("speed", "speed_max", "speed_min", "speed_fluctuation", "inertia", "mass",
                       "radius", "diameter", "density", "width_to_thickness",
                       "radius_of_gyration", "at")}
@@ -59,7 +64,11 @@ class FlywheelExercise:
     """How far the crank turns before the diagram repeats (rad)."""
     formula: Formula | None = None
     points: tuple[tuple[float, float], ...] = ()
-    """A table's (θ rad, T N·m), in order over the cycle."""
+    """A table's (θ rad, T N·m), in order over the cycle; an angle twice is a jump, and a
+    last point a cycle on from the first a jump back to it."""
+    resisting: bool = False
+    """The diagram is a machine's resisting torque, the driver steady at its mean (a punch,
+    a press); otherwise it is the driving torque, the resistance steady."""
     areas: tuple[float, ...] = ()
     """The areas as energies (J), + above the mean, in order."""
     drawn_areas: tuple[float, ...] = ()
@@ -99,19 +108,30 @@ class FlywheelExercise:
                            tuple(t for t, _ in self.points))
         return None
 
+    @property
+    def jumps(self) -> bool:
+        """Whether the table jumps (an angle given twice, or a last point a cycle on): its
+        diagram is then read at its points (:func:`~...forces.flywheel.read_table`)."""
+        ts = [t for t, _ in self.points]
+        return len(set(ts)) < len(ts) or bool(ts) and ts[-1] >= ts[0] + self.cycle * (1 - 1e-12)
+
 
 def _straight(points: tuple[tuple[float, float], ...], cycle: float):
-    """T(θ) straight between the table's points, the last joined to the first a cycle on."""
-    ts = [t for t, _ in points] + [points[0][0] + cycle]
-    vs = [v for _, v in points] + [points[0][1]]
+    """T(θ) straight between the table's points, the last joined to the first a cycle on;
+    at a jump, T is the value after it."""
+    ts = [t for t, _ in points]
+    vs = [v for _, v in points]
+    if ts[-1] < ts[0] + cycle * (1 - 1e-12):
+        ts.append(ts[0] + cycle)
+        vs.append(vs[0])
 
     def torque(theta: float) -> float:
         x = (theta - ts[0]) % cycle + ts[0]
         for i in range(len(ts) - 1):
-            if x <= ts[i + 1]:
+            if ts[i] <= x < ts[i + 1]:
                 f = (x - ts[i]) / (ts[i + 1] - ts[i])
                 return vs[i] + f * (vs[i + 1] - vs[i])
-        return vs[-1]
+        return vs[-1]           # a cycle on, rounded up from just before it: the last value
     return torque
 
 
@@ -127,32 +147,36 @@ def parse_flywheel(text: str, filename: str = "<string>", exercise_id: str = "fl
     """
     t = Tables.read(text, filename, "flywheel", _TOP, _KEYS, data)
     fail = t.fail
-    if "turning_moment" not in t.data:
+    tables = [k for k in ("turning_moment", "resisting_torque") if k in t.data]
+    if len(tables) != 1:
         raise fail("a flywheel file gives its diagram as [turning_moment] torque = \"…\", "
-                   "points = [[θ°, T], …] or areas = […] with the diagram's scales", "flywheel")
+                   "points = [[θ°, T], …] or areas = […] with the diagram's scales, or a "
+                   "machine's [resisting_torque] against a steady driver: one of them",
+                   tables[1] if tables else "flywheel")
+    (table,) = tables
     length, speed_unit = t.units("m", "rad/s")
     metre = LENGTH_UNITS[length]
-    tm = _one(t, "turning_moment")
-    cycle_deg = t.number(tm, "cycle", "turning_moment", "the cycle (degrees)", 0, 360.0)
+    tm = _one(t, table)
+    cycle_deg = t.number(tm, "cycle", table, "the cycle (degrees)", 0, 360.0)
     if not 0 < cycle_deg <= 1440:
         raise fail(f"the cycle is how far the crank turns before the diagram repeats, in "
                    f"degrees (360 a turn, 720 a four-stroke engine's), got {cycle_deg:g}",
-                   "turning_moment", "cycle")
+                   table, "cycle")
     cycle = math.radians(cycle_deg)
     given = [k for k in ("torque", "points", "areas") if k in tm]
     if len(given) != 1:
-        raise fail("[turning_moment] gives one of torque = \"…\" (a formula in theta), points = "
-                   "[[θ°, T], …] or areas = […]" + (f", not {' and '.join(given)}" if given
-                                                    else ""), "turning_moment",
+        raise fail(f"[{table}] gives one of torque = \"…\" (a formula in theta), points = "
+                   "[[θ°, T], …]" + (" or areas = […]" if table == "turning_moment" else "")
+                   + (f", not {' and '.join(given)}" if given else ""), table,
                    given[1] if len(given) > 1 else None)
-    diagram: dict[str, Any] = {}
+    diagram: dict[str, Any] = {"resisting": table == "resisting_torque"}
     if "torque" in tm:
         try:
             diagram["formula"] = parse_formula(tm["torque"])
         except ValueError as e:
-            raise fail(str(e), "turning_moment", "torque") from None
+            raise fail(str(e), table, "torque") from None
     elif "points" in tm:
-        diagram["points"] = _points(t, tm["points"], cycle_deg)
+        diagram["points"] = _points(t, tm["points"], cycle_deg, table)
     else:
         diagram.update(_areas(t, tm))
     if "areas" not in tm:
@@ -182,30 +206,41 @@ def _text(t: Tables, key: str, default: str) -> str:
     return v
 
 
-def _points(t: Tables, raw: Any, cycle_deg: float) -> tuple[tuple[float, float], ...]:
-    """A table's points, each [θ°, T N·m], in increasing θ within one cycle."""
+def _points(t: Tables, raw: Any, cycle_deg: float,
+            table: str = "turning_moment") -> tuple[tuple[float, float], ...]:
+    """A table's points, each [θ°, T N·m], in increasing θ within one cycle. An angle given
+    twice is a jump, from the first T to the second (a punch that starts or stops); a last
+    point a cycle on from the first closes the cycle, and jumps back to the first's T if it
+    differs (it is kept then, the table's last straight line ending on it)."""
     if not isinstance(raw, list) or len(raw) < 3:
         raise t.fail("points lists 3 or more [crank angle°, T N·m] pairs over the cycle",
-                     "turning_moment", "points")
-    out = []
+                     table, "points")
+    out, degrees = [], []
     for i, p in enumerate(raw):
         if not (isinstance(p, list) and len(p) == 2):
             raise t.fail(f"point {i + 1} must be [crank angle°, T N·m], got {p!r:.40}",
-                         "turning_moment", "points")
-        theta = t.number({"p": p[0]}, "p", "turning_moment", f"point {i + 1}'s angle")
-        torque = t.number({"p": p[1]}, "p", "turning_moment", f"point {i + 1}'s torque")
-        if out and not theta > math.degrees(out[-1][0]):
-            raise t.fail(f"point {i + 1}'s angle {theta:g}° must be past the one before it",
-                         "turning_moment", "points")
+                         table, "points")
+        theta = t.number({"p": p[0]}, "p", table, f"point {i + 1}'s angle")
+        torque = t.number({"p": p[1]}, "p", table, f"point {i + 1}'s torque")
+        if degrees and (theta < degrees[-1] or theta == degrees[-1] and (
+                len(degrees) > 1 and degrees[-2] == theta or i == 1)):
+            raise t.fail(f"point {i + 1}'s angle {theta:g}° must be past the one before it "
+                         "(or the same once, a jump, after the first)", table, "points")
         out.append((math.radians(theta), torque))
-    span = math.degrees(out[-1][0] - out[0][0])
+        degrees.append(theta)
+    span = degrees[-1] - degrees[0]
     if span >= cycle_deg:
-        # The point a cycle on from the first repeats it: it must say the same T.
-        if abs(span - cycle_deg) > 1e-9 * cycle_deg or out[-1][1] != out[0][1]:
+        if abs(span - cycle_deg) > 1e-9 * cycle_deg:
             raise t.fail(f"the points span {span:g}°, past the cycle of {cycle_deg:g}°: give "
-                         "one cycle (a last point a cycle on from the first repeats its T)",
-                         "turning_moment", "points")
-        out.pop()
+                         "one cycle (a last point a cycle on from the first closes it)",
+                         table, "points")
+        # The point a cycle on from the first: the same T closes the cycle as a straight
+        # line would, so it is dropped; another T is a jump back to the first's, and stays.
+        out[-1] = (out[0][0] + math.radians(cycle_deg), out[-1][1])
+        if out[-1][1] == out[0][1]:
+            out.pop()
+    if len(set(degrees) - {degrees[0] + cycle_deg}) < 2:
+        raise t.fail("points gives T at two or more crank angles in the cycle", table, "points")
     return tuple(out)
 
 

@@ -21,8 +21,8 @@ from functools import cached_property
 from typing import Any
 
 from tarsim.constructions.forces.flywheel import (Reading, area_reading, extreme, read_diagram,
-                                                  rim_mass, rim_radius, rim_section,
-                                                  speed_limits)
+                                                  read_table, rim_mass, rim_radius,
+                                                  rim_section, speed_limits)
 from tarsim.constructions.narration import numeral, phrase, words
 from tarsim.constructions.reference.flywheel import (Integrated, flywheel_inertia, integrated,
                                                      speed_fluctuation)
@@ -58,8 +58,11 @@ class FlywheelSolution(ChapterFiles):
     @cached_property
     def reading(self) -> Reading:
         """The diagram read for its areas and ΔE."""
-        d = self.exercise.diagram
-        return read_diagram(d) if d else area_reading(list(self.exercise.areas))
+        ex = self.exercise
+        if ex.points and ex.jumps:
+            return read_table(ex.points, ex.cycle)
+        d = ex.diagram
+        return read_diagram(d) if d else area_reading(list(ex.areas))
 
     @cached_property
     def reference(self) -> Integrated | None:
@@ -91,7 +94,7 @@ class FlywheelSolution(ChapterFiles):
         else:
             slope = max(abs(b - a) for a, b in zip(torques, torques[1:] + torques[:1])) / r.step
             drawn = r.step ** 2 * slope / 3
-        return (drawn + floor) / max(r.delta_e, floor)
+        return (drawn + floor) / max(r.delta_e, floor, sys.float_info.min)   # T ≡ 0: none
 
     @property
     def inertia(self) -> float | None:
@@ -103,10 +106,17 @@ class FlywheelSolution(ChapterFiles):
             return flywheel_inertia(self.reading.delta_e, ex.speed, ex.speed_fluctuation)
         return None
 
+    @property
+    def sign(self) -> float:
+        """+1 for a driving torque against a steady resistance, −1 for a machine's resisting
+        torque against a steady driver: the shaft speeds up where T − T_mean has this sign."""
+        return -1.0 if self.exercise.resisting else 1.0
+
     def alpha(self, torque: float) -> float:
-        """The shaft's angular acceleration (rad/s²) where the torque is ``torque``: (T −
-        T_mean)/I, the resistance steady at the mean."""
-        return (torque - self.reading.mean) / self.inertia
+        """The shaft's angular acceleration (rad/s²) where the diagram's torque is ``torque``:
+        (T − T_mean)/I, the resistance steady at the mean; (T_mean − T)/I for a resisting
+        torque, the driver steady at the mean."""
+        return self.sign * (torque - self.reading.mean) / self.inertia
 
     @cached_property
     def extremes(self) -> dict[str, tuple[float, float]]:
@@ -163,7 +173,8 @@ class FlywheelSolution(ChapterFiles):
                 key = f"{math.degrees(theta):g}"
                 q[f"T_at_{key}"] = Checked({"value": t, "unit": "N·m",
                                             "angle_deg": math.degrees(theta)})
-                q[f"alpha_at_{key}"] = _check(self.alpha(t), (t - ref.mean) / self._ref_inertia,
+                q[f"alpha_at_{key}"] = _check(self.alpha(t),
+                                              self.sign * (t - ref.mean) / self._ref_inertia,
                                               tol * max(r.delta_e, 1.0) / ex.cycle
                                               / max(abs(t - ref.mean), 1.0) + tol,
                                               "α = (T − T_mean)/I", unit="rad/s²",
@@ -203,12 +214,14 @@ class FlywheelSolution(ChapterFiles):
         out = {}
         ex, tol = self.exercise, self.tolerance
         size = max(abs(t) for _, t in self.reading.samples)
-        for key, places, (r_theta, r_t) in (("acceleration", self.extremes["greatest"],
-                                             ref.greatest),
-                                            ("retardation", self.extremes["least"], ref.least)):
+        high, low = ("greatest", ref.greatest), ("least", ref.least)
+        if ex.resisting:                       # the shaft speeds up where the machine eases
+            high, low = low, high
+        for key, (side, (r_theta, r_t)) in (("acceleration", high), ("retardation", low)):
+            places = self.extremes[side]
             # the place nearest the reference's, where a repeating curve has more than one
             theta, t = min(places, key=lambda p: abs(math.remainder(p[0] - r_theta, ex.cycle)))
-            a, r_a = self.alpha(t), (r_t - ref.mean) / self._ref_inertia
+            a, r_a = self.alpha(t), self.sign * (r_t - ref.mean) / self._ref_inertia
             # T at its extreme is the extreme to rounding; α is its small rest over I.
             a_tol = tol + ROUNDING * size / max(abs(t - self.reading.mean), 1.0)
             out[f"greatest_{key}"] = _check(abs(a), abs(r_a), a_tol, "α = (T − T_mean)/I over the "
@@ -217,6 +230,9 @@ class FlywheelSolution(ChapterFiles):
             # Where: at a smooth extreme θ is fixed only to some √(rounding) of T, 1e-8 of
             # the cycle; the reference's place must be one of the drawing's.
             miss = abs(math.remainder(theta - r_theta, ex.cycle))
+            if ex.diagram.kinks and any(abs(ex.diagram.torque(u) - r_t) <= ROUNDING * size
+                                        for u in (theta, math.nextafter(theta, -math.inf))):
+                miss = 0.0      # a table's extreme held along a level or at a jump: T agrees
             at = Checked({"value": math.degrees(theta), "unit": "°"},
                          {"value": math.degrees(r_theta)}, rel_error=miss / ex.cycle,
                          tolerance=1e-6, passed=miss / ex.cycle <= 1e-6,
@@ -234,6 +250,21 @@ class FlywheelSolution(ChapterFiles):
         unit = self.exercise.length_unit
         return f"{numeral(v / LENGTH_UNITS[unit])} {unit}"
 
+    def _level(self, places: list[float], value: float) -> tuple[float, float] | None:
+        """A table's extreme ``value`` (N·m) held along a level stretch between its two
+        places (°), as (start, end) going forward round the cycle; None for an extreme at
+        points."""
+        ex = self.exercise
+        if not ex.points or len(places) != 2:
+            return None
+        period = math.degrees(ex.cycle)
+        for start, end in (places, places[::-1]):
+            span = (end - start) % period
+            t = [ex.diagram.torque(math.radians(start + f * span)) for f in (0.25, 0.5, 0.75)]
+            if max(abs(v - value) for v in t) <= 1e-12 * max(abs(v) for v in t + [1.0]):
+                return start, start + span if start + span <= period else start + span - period
+        return None
+
     @property
     def _speed_unit(self) -> float:
         return SPEEDS[self.exercise.speed_unit]
@@ -246,12 +277,16 @@ class FlywheelSolution(ChapterFiles):
         """What the command line prints and steps.md lists, in the language spoken."""
         ex, r, q = self.exercise, self.reading, self.checked
         out = []
-        if ex.diagram is not None:
+        if ex.resisting:
+            out.append(words("the machine's resisting torque averages T_mean = {mean} N·m over a "
+                             "cycle of {cycle}°: the steady driving torque",
+                             mean=numeral(r.mean), cycle=numeral(math.degrees(ex.cycle), "g")))
+        elif ex.diagram is not None:
             out.append(words("mean turning moment T_mean = {mean} N·m over a cycle of {cycle}°",
                              mean=numeral(r.mean), cycle=numeral(math.degrees(ex.cycle), "g")))
-            if "power" in q:
-                out.append(words("power at the mean speed: P = T_mean·ω = {power} kW",
-                                 power=numeral(q["power"].value["value"] / 1000)))
+        if "power" in q:
+            out.append(words("power at the mean speed: P = T_mean·ω = {power} kW",
+                             power=numeral(q["power"].value["value"] / 1000)))
         if r.delta_e:
             where = (words("between θ = {low}° and {high}°", low=self._theta(r.lowest),
                            high=self._theta(r.highest)) if ex.diagram is not None else
@@ -293,12 +328,19 @@ class FlywheelSolution(ChapterFiles):
                              "{unit}", unit=ex.speed_unit,
                              high=numeral(q["speed_max"].value["value"] / self._speed_unit),
                              low=numeral(q["speed_min"].value["value"] / self._speed_unit)))
-        for key, say in (("acceleration", "greatest acceleration {alpha} rad/s² at θ = {at}°"),
-                         ("retardation", "greatest retardation {alpha} rad/s² at θ = {at}°")):
+        for key, say, held in (
+                ("acceleration", "greatest acceleration {alpha} rad/s² at θ = {at}°",
+                 "greatest acceleration {alpha} rad/s², held from θ = {start}° to {end}°"),
+                ("retardation", "greatest retardation {alpha} rad/s² at θ = {at}°",
+                 "greatest retardation {alpha} rad/s², held from θ = {start}° to {end}°")):
             if f"greatest_{key}" in q:
                 c = q[f"greatest_{key}"]
+                side = ("greatest" if (key == "acceleration") != ex.resisting else "least")
+                level = self._level(c.value["angle_deg"], self.extremes[side][0][1])
                 out.append(words(say, alpha=numeral(c.value["value"]), at=", ".join(
-                    numeral(a, ".2f") for a in c.value["angle_deg"])))
+                    numeral(a, ".2f") for a in c.value["angle_deg"])) if level is None else
+                    words(held, alpha=numeral(c.value["value"]),
+                          start=numeral(level[0], ".2f"), end=numeral(level[1], ".2f")))
         for theta in ex.at:
             key = f"{math.degrees(theta):g}"
             if f"alpha_at_{key}" in q:
@@ -319,17 +361,25 @@ class FlywheelSolution(ChapterFiles):
             steps.append(words("Each area times the diagram's scale ({scale} J per unit of area) "
                                "is an energy: {energies} J.", scale=numeral(ex.energy_scale),
                                energies=", ".join(numeral(a) for a in ex.areas)))
+        elif not r.step:
+            steps.append(words("Draw the table's points joined by straight lines, each jump "
+                               "upright; its mean is the area under it over the cycle."))
         else:
             steps.append(words("Draw T(θ) at {n} equal steps of {step}° over the cycle; its "
                                "mean is the area under it over the cycle.",
                                n=numeral(len(r.samples), "d"),
                                step=numeral(math.degrees(r.step), "g")))
+        if ex.diagram is not None:
             steps.append(words("The curve crosses the mean at {n} intercepts; between them "
                                "lie the areas {energies} J.", n=numeral(len(r.intercepts), "d"),
                                energies=", ".join(numeral(a, ".5g") for a in r.areas)))
         steps.append(words("Add the areas in turn from the first intercept: the energy's "
                            "highest less its lowest is the greatest fluctuation ΔE."))
-        if self.inertia and ex.diagram is not None:
+        if self.inertia and ex.resisting:
+            steps.append(words("With the driving torque steady at the mean, α = (T_mean − T)/I: "
+                               "greatest where the resisting torque is lowest over the whole "
+                               "cycle, most negative where it is highest."))
+        elif self.inertia and ex.diagram is not None:
             steps.append(words("With the resistance steady at the mean, α = (T − T_mean)/I: "
                                "greatest where T is highest over the whole cycle, most "
                                "negative where it is lowest."))

@@ -37,23 +37,32 @@ def torque_figure(sol: Any) -> Figure:
     period = math.degrees(ex.cycle)
     pts = tuple((math.degrees(t), v) for t, v in r.samples) + ((period, r.samples[0][1]),)
     torque = unit_words("N·m")
-    series = [Series(words("turning moment"), pts),
+    curve = words("resisting torque") if ex.resisting else words("turning moment")
+    series = [Series(curve, pts),
               Series(words("mean {value} {unit}", value=numerals(_short(r.mean)), unit=torque),
                      ((0.0, r.mean), (period, r.mean)), "plot_curve_dashed")]
     fills, tags = energy_fills([p[0] for p in pts[:-1]], [p[1] for p in pts[:-1]], r.mean,
                                [math.degrees(c) for c in r.intercepts], period)
     notes = [words("ΔE = {energy} {unit}, the greatest fluctuation of energy: the highest energy "
+                   "less the lowest, adding the areas in turn (shaded light where the machine "
+                   "takes more than the mean, dark where less)" if ex.resisting else
+                   "ΔE = {energy} {unit}, the greatest fluctuation of energy: the highest energy "
                    "less the lowest, adding the areas in turn (shaded light where the driver "
                    "gives more than the mean, dark where less)",
                    energy=numerals(_short(r.delta_e)), unit=unit_words("J"))]
     marks = []
     if "greatest_acceleration" in sol.checked:
-        for key, label in (("greatest", "α max"), ("least", "α min")):
+        labels = ("α min", "α max") if ex.resisting else ("α max", "α min")
+        for key, label in zip(("greatest", "least"), labels):
             marks += [PlotMark(math.degrees(theta), t, label) for theta, t in sol.extremes[key]]
         notes.append(words("α max and α min: the shaft's greatest acceleration and retardation, "
+                           "where the resisting torque is lowest and highest over the whole "
+                           "cycle" if ex.resisting else
+                           "α max and α min: the shaft's greatest acceleration and retardation, "
                            "where T is highest and lowest over the whole cycle"))
     return draw_line_plot(
-        words("Turning-moment diagram"), words("crank angle θ (°)"), f"T ({torque})", series,
+        words("Resisting-torque diagram") if ex.resisting else words("Turning-moment diagram"),
+        words("crank angle θ (°)"), f"T ({torque})", series,
         marks, x_range=(0.0, period), x_ticks=_ticks(period), notes=notes, fills=fills,
         tags=tags, mark_legend=words("the shaft's extremes") if marks else "",
         subtitle=ex.name)
@@ -94,10 +103,19 @@ def energy_fills(degrees: list[float], torques: list[float], mean: float,
     fills, tags = [], []
     for k, a in enumerate(cuts):
         b = cuts[k + 1] if k + 1 < len(cuts) else cuts[0] + period
-        pts = [(a, mean)]
+        # between the cuts, and at a cut that falls on a jump its value inside the area:
+        # the last at the cut it starts from, the first at the one it ends on
+        inner, start, end = [], None, None
         for turn in (0.0, period):
-            pts += [(d + turn, t) for d, t in zip(degrees, torques) if a < d + turn < b]
-        pts.append((b, mean))
+            for d, t in zip(degrees, torques):
+                if a < d + turn < b:
+                    inner.append((d + turn, t))
+                elif d + turn == a:
+                    start = (a, t)
+                elif d + turn == b and end is None:
+                    end = (b, t)
+        pts = [(a, mean)] + [p for p in (start,) if p] + inner + [p for p in (end,) if p] + \
+            [(b, mean)]
         area = sum((x1 - x0) * ((y0 + y1) / 2 - mean)
                    for (x0, y0), (x1, y1) in zip(pts, pts[1:])) * math.pi / 180
         pieces = _split(pts, mean, period)
