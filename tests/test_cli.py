@@ -159,9 +159,10 @@ def test_bad_file_is_one_line_with_file_and_line(mech_file, tmp_path, edit, mess
                         "base-circle-for-pressure-angle, eccentric-flat-face, offset-knife-edge, "
                         "oscillating-roller, roller-harmonic-cycloidal, "
                         "valve-unequal-acceleration, four-mass-shaft, "
-                        "four-masses-one-plane, inline-four, notes-example-1, "
-                        "single-cylinder-balance-mass, single-cylinder, unknown-angles, "
-                        "unknown-planes, "
+                        "four-masses-one-plane, inline-four, inline-three, locomotive, "
+                        "notes-example-1, single-cylinder-balance-mass, single-cylinder, "
+                        "three-masses-between, two-stroke-four, unknown-angles, "
+                        "unknown-planes, v-twin, "
                         "engine-harmonic-torque, "
                         "petrol-engine-areas, punching-press, single-cylinder-table\n"),
     ("missing.toml", "Error: no such file 'missing.toml'\n"),
@@ -298,9 +299,10 @@ def test_list_shows_the_bundled_examples():
                    "base-circle-for-pressure-angle", "eccentric-flat-face", "offset-knife-edge",
                    "oscillating-roller", "roller-harmonic-cycloidal",
                    "valve-unequal-acceleration", "four-mass-shaft",
-                   "four-masses-one-plane", "inline-four", "notes-example-1",
-                   "single-cylinder-balance-mass", "single-cylinder", "unknown-angles",
-                   "unknown-planes",
+                   "four-masses-one-plane", "inline-four", "inline-three", "locomotive",
+                   "notes-example-1", "single-cylinder-balance-mass", "single-cylinder",
+                   "three-masses-between", "two-stroke-four", "unknown-angles",
+                   "unknown-planes", "v-twin",
                    "engine-harmonic-torque",
                    "petrol-engine-areas", "punching-press", "single-cylinder-table"]
     assert "Four-bar crank-rocker" in result.stdout

@@ -62,7 +62,9 @@ def _engine_figures(s: BalanceSolution) -> dict[str, Figure]:
         word = "N·m" if kind.endswith("couple") else "N"
         reading = (words("closed: balanced"), "", "") if kind in p.balanced else (
             words("{size} {unit} unbalanced, greatest at θ₁ = {angle}°",
-                  size=numerals(f"{left:.4g}"), unit=unit_words(word),
+                  # four figures, and whole newtons past 9999 rather than an exponent
+                  size=numerals(f"{left:.4g}" if left < 1e4 else f"{left:.0f}"),
+                  unit=unit_words(word),
                   angle=numerals(f"{s.greatest_at[kind]:.1f}")), "", "")
         out[kind.replace(" ", "-")] = draw_polygon(
             p.construction, p.tips[kind], p.closing[kind], f"{ex.name}: {words(kind)}",
