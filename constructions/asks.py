@@ -28,8 +28,8 @@ __all__ = ["Ask", "Position", "Centre", "AngularVelocity", "Velocity", "Relative
            "Rubbing", "Equivalent",
            "Mobility",
            "GrashofClass",
-           "LengthRange", "TimeRatio", "Stroke", "CentreCount", "JointForce", "DrivingTorque",
-           "Effort", "EFFORTS",
+           "LengthRange", "TimeRatio", "Stroke", "Swing", "CentreCount", "JointForce",
+           "DrivingTorque", "Effort", "EFFORTS",
            "parse_ask", "ask_names", "on_one_line",
            "SYMBOLS", "symbol", "ordered"]
 
@@ -383,6 +383,20 @@ class Stroke(_Whole):
 
 
 @dataclass(frozen=True)
+class Swing(_Whole):
+    """The angle rocker or lever ``link`` swings through between its limit positions (its
+    angle of oscillation); a slotted lever's inclination to the line of centres beside it."""
+
+    link: int
+    order: ClassVar[int] = 5
+
+    @property
+    def name(self) -> str:
+        """``swing_4``."""
+        return f"swing_{self.link}"
+
+
+@dataclass(frozen=True)
 class CentreCount(_Whole):
     """How many instant centres there are, n(n − 1)/2, and how many of them inspection finds
     and how many Kennedy's theorem."""
@@ -457,6 +471,7 @@ _GRAMMAR: tuple[tuple[re.Pattern, callable], ...] = tuple(
         (f"equiv_{_POINT}", lambda m: Equivalent(m[1])),
         (fr"dist_{_PLAIN}_I(\d)(\d)", lambda m: Distance(m[1], (int(m[2]), int(m[3])))),
         (r"mu", lambda m: TransmissionAngle()),
+        (r"swing_(\d+)", lambda m: Swing(int(m[1]))),
         (r"I(\d)(\d)", lambda m: Centre((int(m[1]), int(m[2])))),
         (r"I(\d+),(\d+)", lambda m: Centre((int(m[1]), int(m[2])))),
         (r"omega(\d+)", lambda m: AngularVelocity(int(m[1]))),

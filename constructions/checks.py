@@ -254,6 +254,11 @@ def _relative(value: dict, ref: dict, scale: float) -> tuple[dict, dict, float]:
     return value, ref, abs(value["value"] - ref["value"]) / max(abs(ref["value"]), 1e-300)
 
 
+def _angles(value: dict, ref: dict, scale: float) -> tuple[dict, dict, float]:
+    """Angles (a lever's swing, its inclination), each beside half a turn."""
+    return value, ref, max(abs(value[k] - ref[k]) for k in ref) / math.pi
+
+
 def _exact(value: dict, ref: dict, scale: float) -> tuple[dict, dict, float]:
     """Integers that must be the same: the mobility, and at this position where it differs."""
     def here(v: dict) -> int:
@@ -310,7 +315,7 @@ _RULES: dict[type, Callable[[dict, dict, float], tuple[dict, dict, float]]] = {
     A.AngularVelocity: _rate, A.AngularAcceleration: _rate,
     A.Velocity: _vector, A.Acceleration: _vector, A.Relative: _vector, A.Coriolis: _vector,
     A.Sliding: _vector, A.AccelerationPart: _vector,
-    A.TimeRatio: _relative, A.Stroke: _relative, A.Mobility: _exact,
+    A.TimeRatio: _relative, A.Stroke: _relative, A.Swing: _angles, A.Mobility: _exact,
     A.GrashofClass: _same_class, A.LengthRange: _interval,
     A.JointForce: lambda v, r, scale: (_vector if "vector" in r else _rate)(v, r, scale),
     A.DrivingTorque: _rate,

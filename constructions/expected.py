@@ -21,6 +21,7 @@ from .linkages.coincident import taken
 from .errors import DegenerateInput, InputError
 from .linkages.limit_positions import WHY_NOT, drawn_limits
 from .joints import SlideKind
+from .model import Drive
 from .reference import solver
 from .reference.centres import MoveTogether, instant_centre, mechanism_size, shared_pin
 from .reference.limits import limit_reference
@@ -303,6 +304,33 @@ def time_ratio(work, ask: A.TimeRatio) -> Expected:
     """Slow stroke over quick stroke, between the output's reversals."""
     ref = _limits(work)
     return Expected(time_ratio_value(ref.slow, ref.quick))
+
+
+def swing(work, ask: A.Swing) -> Expected:
+    """The lever's (rocker's) swing between the reversals of its own ω, from the solver's
+    positions there; a slotted lever's inclination to the line of centres at one of them."""
+    from .linkages.limit_swing import SWING_WHY_NOT
+
+    lp = drawn_limits(work)
+    if lp.output != ask.link or lp.held is None:
+        raise InputError(SWING_WHY_NOT.format(k=ask.link))
+    m = solver.follow_branches(work.mechanism)
+    ref = limit_reference(m, link=ask.link)
+    pivot, held = lp.pivot, lp.assembly[lp.held[0]].label.rstrip("′″")
+    d = m.drive
+    dirs = []
+    for theta in ref.crank_angles:
+        kin = solver.solve(m.with_drive(Drive(d.link, theta, d.omega, 0.0)))
+        (px, py), (hx, hy) = kin.points[pivot], kin.points[held]
+        dirs.append(math.atan2(hy - py, hx - px))
+    turn = abs(dirs[1] - dirs[0]) % (2 * math.pi)
+    out = {"value": min(turn, 2 * math.pi - turn)}
+    if lp.kind == "slotted lever":
+        crank = m.link(d.link).names[0]
+        (px, py), (cx, cy) = m.link(1).local(pivot), m.link(1).local(crank)
+        tilt = abs(dirs[0] - math.atan2(cy - py, cx - px)) % (2 * math.pi)
+        out["inclination"] = min(tilt, 2 * math.pi - tilt)
+    return Expected(out)
 
 
 def stroke(work, ask: A.Stroke) -> Expected:

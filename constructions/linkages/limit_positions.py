@@ -27,6 +27,7 @@ from dataclasses import dataclass
 from .. import asks as A
 from .assembly import assemble
 from .assembly_record import Assembly, point_ref
+from .limit_swing import SWING_WHY_NOT, swing_answer
 from .limit_whitworth import secondary_rod, whitworth_pins
 from ..checks import Answer, FigureSpec, time_ratio_value
 from ..errors import InputError, NoIntersection, TarsimError
@@ -65,6 +66,10 @@ class LimitPositions:
     conditioning: float
     output: int | None = None
     """The lever or rocker the crank's dyad swings (None for a slider-crank)."""
+    pivot: str | None = None
+    """The lever's or rocker's frame pivot."""
+    held: tuple[Ref, Ref] | None = None
+    """Its point at each limit, which sets it there (None where it does not swing)."""
 
     @property
     def time_ratio(self) -> float:
@@ -231,9 +236,12 @@ class _Limits(_Dyad):
         angles = tuple(math.atan2(*_sub(self.xy(p), self.xy(self.P(self.o2)))[::-1]) for p in pins)
         slow_from, slow, quick = self.crank_angles(pins)
         point, stroke, stroke_ref = self.carry_output(rams)
+        swings = self.kind in ("crank-rocker", "slotted lever")
         return LimitPositions(self.asm, self.steps, self.kind, angles, slow, quick, point,
                               stroke, stroke_ref, slow_from, self.cond * self.cancel,
-                              None if self.kind == "slider-crank" else self.out)
+                              None if self.kind == "slider-crank" else self.out,
+                              self.o4 if swings else None,
+                              (f"limit:{self.held}0", f"limit:{self.held}1") if swings else None)
 
     def crank_angles(self, pins: tuple[Ref, Ref]) -> tuple[int, float, float]:
         """Measure at O2 the two angles the crank turns, with ω, between its limit positions.
@@ -439,6 +447,7 @@ WHY_NOT = {
                  "rolling on the frame is no crank), so it has no limit positions to draw",
     A.Stroke: "the stroke is measured on a block that slides on a frame guide, driven through "
               "the limit positions, and this mechanism has none",
+    A.Swing: SWING_WHY_NOT.format(k="<k>"),
 }
 """Why a mechanism the limit construction does not fit has no time ratio or stroke."""
 
@@ -446,9 +455,12 @@ WHY_NOT = {
 def askable(mech: Mechanism) -> set[str]:
     """The time ratio where the construction fits the crank's dyad, the stroke where it also
     drives a block on a frame guide."""
-    if limit_kind(mech) is None:
+    try:
+        dyad = _Dyad(mech)
+    except InputError:
         return set()
-    return {"time_ratio"} | ({"stroke"} if stroke_point(mech) is not None else set())
+    swing = {f"swing_{dyad.out}"} if dyad.kind in ("crank-rocker", "slotted lever") else set()
+    return {"time_ratio"} | swing | ({"stroke"} if stroke_point(mech) is not None else set())
 
 
 def drawn_limits(work) -> LimitPositions:
@@ -457,8 +469,10 @@ def drawn_limits(work) -> LimitPositions:
 
 
 def answer(work, ask) -> Answer:
-    """The time ratio or the stroke, read off the limit positions."""
+    """The time ratio, the stroke or a lever's swing, read off the limit positions."""
     lp = drawn_limits(work)
+    if isinstance(ask, A.Swing):
+        return swing_answer(work, ask, lp, LIMITS)
     how = {"slotted lever": "lever tangent to the crank circle",
            "whitworth": "lever and rod in line"}.get(lp.kind, "crank and rod in line")
     method = f"limit positions by compass ({how})"

@@ -156,6 +156,10 @@ PHRASES: dict[str, str] = {
     "limits.rod_cuts_path": "With centre {x} and radius {span} = {radius} cut the path of {point} "
                             "at {end}.",
     "limits.rod": "Join {a}{b}: link {link} in that limit position.",
+    "limits.swing_angle": "Measure the angle {a}{pivot}{b}: link {link} swings through "
+                          "{degrees}° between its limit positions.",
+    "limits.inclination": "Measure the angle {c}{pivot}{a}: at either limit the lever stands "
+                          "{degrees}° from the line of centres {pivot}{c}.",
     "limits.lever_in_line": "With centre {pivot} and radius {span} = {radius} draw an arc to cut "
                             "{path} at {point}: lever and rod in line, {how}.",
     "limits.lever_along": "Join {pivot}{point}; the lever lies along it: {end} is {pivot}{x} = "

@@ -136,6 +136,7 @@ WORDS: dict[str, str] = {
     "triple-rocker": "سه‌آونگی", "change-point": "نقطهٔ تغییر",
     "{span} = {length} only ({kind})": "{span} تنها برابر {length} ({kind})",
     "{value} ({here} at this position)": "{value} ({here} در این وضعیت)",
+    "{swing} ({tilt} from the line of centres)": "{swing} ({tilt} با خط مراکز)",
     "{value} ({inspection} by inspection, {kennedy} by Kennedy; {far} at infinity)":
         "{value} ({inspection} با مشاهده، {kennedy} با قضیهٔ کندی؛ {far} در بی‌نهایت)",
     "found": "یافته", "Willis": "ویلیس", "the same": "برابر", "yes": "بله", "NO": "خیر",

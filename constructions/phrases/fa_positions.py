@@ -156,6 +156,10 @@ PHRASES: dict[str, str] = {
     "limits.lever": "نقطهٔ {pivot} را به {pin} وصل کنید: این خط، اهرم مماس بر دایرهٔ لنگ در "
                     "وضعیت حدی {which} آن است.",
     "limits.stroke": "طول {point}″{point}′ را اندازه بگیرید: کورس {point} برابر {length} است.",
+    "limits.swing_angle": "زاویهٔ {a}{pivot}{b} را اندازه بگیرید: میلهٔ {link} میان دو وضعیت حدی "
+                          "خود به اندازهٔ {degrees}° نوسان می‌کند.",
+    "limits.inclination": "زاویهٔ {c}{pivot}{a} را اندازه بگیرید: اهرم در هر دو وضعیت حدی "
+                          "{degrees}° با خط مراکز {pivot}{c} زاویه می‌سازد.",
     "limits.lever_in_line": "به مرکز {pivot} و شعاع {span} = {radius} کمانی بزنید تا {path} را "
                             "در {point} قطع کند: اهرم و میلهٔ رابط در یک راستا قرار دارند، {how}.",
     "limits.lever_along": "نقطهٔ {pivot} را به {point} وصل کنید؛ اهرم روی این خط قرار دارد: "

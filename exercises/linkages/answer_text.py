@@ -50,6 +50,12 @@ def overall_text(name: str, v: dict, units) -> str:
                      inspection=numerals(str(v["by_inspection"])),
                      kennedy=numerals(str(v["by_kennedy"])),
                      far=numerals(str(v.get("far_centres", 0))))
+    if name.startswith("swing_"):                       # a lever's swing, its inclination
+        swing = numerals(f"{math.degrees(v['value']):.5g}°")
+        if "inclination" not in v:
+            return swing
+        return words("{swing} ({tilt} from the line of centres)", swing=swing,
+                     tilt=numerals(f"{math.degrees(v['inclination']):.5g}°"))
     if "slow_deg" in v:
         return numerals(f"{v['value']:.6g} ({v['slow_deg']:.5g}° / {v['quick_deg']:.5g}°)")
     return numerals(f"{v['value']}")
