@@ -164,7 +164,8 @@ def test_bad_file_is_one_line_with_file_and_line(mech_file, tmp_path, edit, mess
                         "three-masses-between, two-stroke-four, unknown-angles, "
                         "unknown-planes, v-twin, "
                         "engine-harmonic-torque, "
-                        "petrol-engine-areas, punching-press, single-cylinder-table\n"),
+                        "petrol-engine-areas, punch-sheared-area, punching-press, "
+                        "single-cylinder-table\n"),
     ("missing.toml", "Error: no such file 'missing.toml'\n"),
 ])
 def test_unknown_source_is_one_line(source, message):
@@ -304,7 +305,8 @@ def test_list_shows_the_bundled_examples():
                    "three-masses-between", "two-stroke-four", "unknown-angles",
                    "unknown-planes", "v-twin",
                    "engine-harmonic-torque",
-                   "petrol-engine-areas", "punching-press", "single-cylinder-table"]
+                   "petrol-engine-areas", "punch-sheared-area", "punching-press",
+                   "single-cylinder-table"]
     assert "Four-bar crank-rocker" in result.stdout
 
 

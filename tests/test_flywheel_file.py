@@ -176,7 +176,8 @@ def test_a_flywheel_file_is_its_own_kind_not_a_mechanism(tmp_path):
 
 
 @pytest.mark.parametrize("name", ["engine-harmonic-torque", "petrol-engine-areas",
-                                  "single-cylinder-table", "punching-press"])
+                                  "single-cylinder-table", "punching-press",
+                                  "punch-sheared-area"])
 def test_a_flywheel_exercise_is_solved_drawn_and_said_in_persian(name, tmp_path):
     for lang in ("en", "fa"):
         out = tmp_path / lang
@@ -396,3 +397,82 @@ def test_punching_press():
     assert q["inertia"].value["value"] == pytest.approx(inertia, rel=1e-12)
     assert q["rim_mass"].value["value"] == pytest.approx(inertia / 0.25, rel=1e-12)
     assert q["greatest_retardation"].value["value"] == pytest.approx(5000 / inertia, rel=1e-12)
+
+
+def test_a_punch_given_by_its_energy_and_times():
+    """The books' press: 15 kJ a hole, 720 holes an hour (one every 5 s), each punched in
+    2 s, the flywheel between 225 and 200 rpm with k = 0.5 m: the motor's power E/T =
+    3000 W; the flywheel gives up E·(1 − t/T) = 9000 J = ½·m·k²·(ω1² − ω2²) (the books'
+    618 kg)."""
+    ex = parse_flywheel(
+        "[units]\nspeed = \"rpm\"\n[punch]\nenergy = 15000\nholes_per_hour = 720\n"
+        "punching_time = 2\n[flywheel]\nspeed_max = 225\nspeed_min = 200\nradius = 0.5\n")
+    q = solve_flywheel(ex).checked
+    w1, w2 = 225 * math.pi / 30, 200 * math.pi / 30
+    assert q["power"].value["value"] == pytest.approx(3000, rel=1e-15)
+    assert q["delta_E"].value["value"] == pytest.approx(9000, rel=1e-15)
+    # the quadrature of the punch's torque mapped onto a turn gives both again
+    assert q["power"].passed and q["delta_E"].passed
+    assert q["rim_mass"].value["value"] == pytest.approx(2 * 9000 / (0.25 * (w1 ** 2 - w2 ** 2)),
+                                                         rel=1e-12)
+    assert round(q["rim_mass"].value["value"]) == 618
+
+
+def test_a_punch_by_its_sheared_area_and_a_rim_s_speed():
+    """7 J per mm² of sheared area, a 38 mm hole in a 32 mm plate: E = 7·π·38·32 J; a hole
+    every 10 s punched in 1 s; the rim at 25 m/s within a total of 3 %: m·v² = I·ω², so
+    m = E·(1 − 1/10)/(0.03·25²) (the books' 1283 kg), no shaft speed needed."""
+    ex = parse_flywheel(
+        "[units]\nlength = \"mm\"\n[punch]\nenergy_per_area = 7\nhole = 38\nplate = 32\n"
+        "period = 10\npunching_fraction = 0.1\n[flywheel]\nrim_speed = 25\n"
+        "speed_fluctuation = \"3 %\"\n")
+    q = solve_flywheel(ex).checked
+    energy = 7 * math.pi * 38 * 32
+    assert q["power"].value["value"] == pytest.approx(energy / 10, rel=1e-15)
+    assert q["rim_mass"].value["value"] == pytest.approx(energy * 0.9 / (0.03 * 625),
+                                                         rel=1e-14)
+    assert round(q["rim_mass"].value["value"]) == 1284
+    assert all(c.passed for c in q.values())
+
+
+def test_a_rim_s_speed_with_the_shaft_s_gives_its_radius():
+    """v = ω·r: at 250 rpm a rim at 15 m/s has r = 15/ω, and m = I/r²."""
+    ex = parse_flywheel(HARMONIC.format(flywheel='speed = 250\nspeed_fluctuation = "±1 %"\n'
+                                                 "rim_speed = 15"))
+    q = solve_flywheel(ex).checked
+    omega = 250 * math.pi / 30
+    inertia = 1600 / (0.02 * omega ** 2)
+    assert q["rim_radius"].value["value"] == pytest.approx(15 / omega, rel=1e-15)
+    assert q["rim_mass"].value["value"] == pytest.approx(inertia * (omega / 15) ** 2,
+                                                         rel=H2 * 9 / 4)
+
+
+@pytest.mark.parametrize("punch, line, words", [
+    ("energy = 1\nenergy_per_area = 2\nperiod = 5\npunching_time = 1", 5, "not energy and"),
+    ("energy_per_area = 2\nhole = 3\nperiod = 5\npunching_time = 1", 4, "plate's thickness"),
+    ("energy = 1\nperiod = 5\npunching_time = 5", 6, "less than the 5 s"),
+    ("energy = 1\nholes_per_minute = 6\nperiod = 5\npunching_time = 1", 6, "not holes_per_minute"),
+    ("energy = 1\nperiod = 5\npunching_fraction = 0.1\nhole = 3", 7, "for energy_per_area"),
+])
+def test_a_bad_punch_is_refused_at_its_line(punch, line, words):
+    with pytest.raises(InputError) as e:
+        parse_flywheel(f"[units]\nspeed = \"rpm\"\n[punch]\n{punch}\n", "f.toml")
+    assert str(e.value).startswith(f"f.toml:{line}: ") and words in str(e.value), str(e.value)
+    assert "\n" not in str(e.value)
+
+
+def test_a_rim_s_speed_with_its_radius_is_refused_at_its_line():
+    with pytest.raises(InputError) as e:
+        parse_flywheel(HARMONIC.format(flywheel="speed = 250\nspeed_fluctuation = 0.02\n"
+                                                "rim_speed = 15\nradius = 1"), "f.toml")
+    assert str(e.value).startswith("f.toml:9: ") and "leave radius out" in str(e.value)
+
+
+def test_punch_sheared_area():
+    """The bundled press: E = 7·π·38·32 J a hole, one every 10 s punched in 1 s, the rim at
+    25 m/s within 3 %: P = E/10, ΔE = 0.9·E, m = ΔE/(0.03·25²)."""
+    q = _q("punch-sheared-area")
+    energy = 7 * math.pi * 38 * 32
+    assert q["power"].value["value"] == pytest.approx(energy / 10, rel=1e-15)
+    assert q["delta_E"].value["value"] == pytest.approx(0.9 * energy, rel=1e-15)
+    assert q["rim_mass"].value["value"] == pytest.approx(0.9 * energy / 18.75, rel=1e-14)

@@ -25,7 +25,7 @@ from dataclasses import dataclass
 from ..reference.flywheel import Fluctuation, fluctuation
 
 __all__ = ["Diagram", "Reading", "STEPS", "read_diagram", "read_table", "area_reading", "extreme",
-           "rim_mass", "rim_radius", "rim_section", "speed_limits"]
+           "rim_mass", "rim_radius", "rim_section", "speed_limits", "Punch"]
 
 STEPS = 3600
 """The steps a cycle's T(θ) is drawn at: ΔE's error from the straight lines between steps is
@@ -225,3 +225,37 @@ def speed_limits(speed: float, fluctuation: float) -> tuple[float, float]:
     (101.0, 99.0)
     """
     return speed * (1 + fluctuation / 2), speed * (1 - fluctuation / 2)
+
+
+@dataclass(frozen=True)
+class Punch:
+    """A punching press as the books give it: ``energy`` (J) a hole takes, a hole every
+    ``period`` (s), each punched in ``time`` (s). The motor, steady, gives the energy evenly
+    over the period; while it punches the motor gives E·t/T and the flywheel the rest.
+
+    >>> p = Punch(15000.0, 5.0, 2.0)
+    >>> p.power, p.delta_e
+    (3000.0, 9000.0)
+    """
+
+    energy: float
+    period: float
+    time: float
+
+    @property
+    def power(self) -> float:
+        """The motor's power (W): a hole's energy over the period, E/T."""
+        return self.energy / self.period
+
+    @property
+    def delta_e(self) -> float:
+        """The flywheel's greatest fluctuation of energy (J): what the motor does not give
+        while it punches, E·(1 − t/T)."""
+        return self.energy * (1 - self.time / self.period)
+
+    def table(self) -> tuple[tuple[float, float], ...]:
+        """The punch's resisting torque over one period mapped onto a turn (θ = 2π·time/T,
+        the shaft's speed nearly steady): E/(2π·t/T) while it punches, then none."""
+        theta = 2 * math.pi * self.time / self.period
+        return ((0.0, self.energy / theta), (theta, self.energy / theta), (theta, 0.0),
+                (2 * math.pi, 0.0))

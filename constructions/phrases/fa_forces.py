@@ -90,6 +90,22 @@ WORDS: dict[str, str] = {
     "torque is lowest and highest over the whole cycle":
         "α max و α min: بیشترین شتاب و کاهش شتاب محور، جایی که گشتاور مقاوم در کل چرخه کمینه "
         "و بیشینه است",
+    "a rim whose mean speed is {speed} m/s: m = ΔE/(C_s·v²) = {mass} kg":
+        "طوقه‌ای با سرعت میانگین {speed} m/s: m = ΔE/(C_s·v²) = {mass} kg",
+    "a rim whose mean speed is {speed} m/s: its radius r = v/ω = {radius}, its mass m = I/r² = "
+    "{mass} kg":
+        "طوقه‌ای با سرعت میانگین {speed} m/s: شعاع آن r = v/ω = {radius} و جرم آن m = I/r² = "
+        "{mass} kg",
+    "a hole takes E = {energy} J in {time} s of every {period} s: the motor's power P = E/T = "
+    "{power} kW":
+        "هر سوراخ E = {energy} J را در {time} s از هر {period} s می‌گیرد: توان موتور "
+        "P = E/T = {power} kW",
+    "While it punches, the steady motor gives E·t/T = {given} J of the {energy} J a hole takes; "
+    "the flywheel gives up the rest, E·(1 − t/T) = {delta} J, and takes it back before the "
+    "next hole.":
+        "در زمان سوراخ‌کاری، موتور با گشتاور ثابت E·t/T = {given} J از {energy} J لازم برای هر "
+        "سوراخ را می‌دهد؛ باقی، E·(1 − t/T) = {delta} J، را چرخ طیار می‌دهد و پیش از سوراخ "
+        "بعدی آن را بازمی‌گیرد.",
     "every number agrees with its reference": "همهٔ اعداد با مرجع خود سازگارند",
     "Each area times the diagram's scale ({scale} J per unit of area) is an energy: "
     "{energies} J.":

@@ -16,7 +16,7 @@ class Flywheel(Chapter):
     key = "forces"
     kind = "a flywheel exercise"
     folders = ("flywheel",)
-    tables = ("turning_moment", "resisting_torque", "flywheel")
+    tables = ("turning_moment", "resisting_torque", "punch", "flywheel")
     no_angle = ("a flywheel exercise has no input angle: leave out --angle (its [flywheel] at "
                 "lists the crank angles asked)")
 

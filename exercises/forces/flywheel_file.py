@@ -32,21 +32,23 @@ import re
 from dataclasses import dataclass
 from typing import Any, ClassVar
 
-from tarsim.constructions.forces.flywheel import Diagram
+from tarsim.constructions.forces.flywheel import Diagram, Punch
 from tarsim.constructions.forces.torque_formula import Formula, parse_formula
 from tarsim.constructions.units import LENGTH_UNITS
 from ..names import named_in, read_names, renamed_field
 from ..table_file import SPEEDS, Tables
+from .punch_file import PUNCH_KEYS, read_punch
 
 __all__ = ["FlywheelExercise", "parse_flywheel"]
 
 _TOP = ("name", "names", "source", "description", "units", "turning_moment",
-        "resisting_torque", "flywheel")
+        "resisting_torque", "punch", "flywheel")
 _KEYS = {"turning_moment": ("torque", "points", "areas", "torque_scale", "angle_scale",
                             "energy_scale", "cycle"),
          "resisting_torque": ("torque", "points", "cycle"),
+         "punch": PUNCH_KEYS,
          "flywheel": ("speed", "speed_max", "speed_min", "speed_fluctuation", "inertia", "mass",
-                      "radius", "diameter", "density", "width_to_thickness",
+                      "radius", "diameter", "rim_speed", "density", "width_to_thickness",
                       "radius_of_gyration", "at")}
 
 
@@ -66,6 +68,8 @@ class FlywheelExercise:
     points: tuple[tuple[float, float], ...] = ()
     """A table's (θ rad, T N·m), in order over the cycle; an angle twice is a jump, and a
     last point a cycle on from the first a jump back to it."""
+    punch: Punch | None = None
+    """A punching press given by its energy and times; its areas are the flywheel's."""
     resisting: bool = False
     """The diagram is a machine's resisting torque, the driver steady at its mean (a punch,
     a press); otherwise it is the driving torque, the resistance steady."""
@@ -83,6 +87,9 @@ class FlywheelExercise:
     mass: float | None = None
     radius: float | None = None
     radius_of_gyration: float | None = None
+    rim_speed: float | None = None
+    """The rim's mean speed (m/s), when the books give it: its radius v/ω and mass
+    ΔE/(C_s·v²)."""
     density: float | None = None
     """The rim's density (kg/m³): with ``width_to_thickness``, its section is asked."""
     width_to_thickness: float | None = None
@@ -147,15 +154,23 @@ def parse_flywheel(text: str, filename: str = "<string>", exercise_id: str = "fl
     """
     t = Tables.read(text, filename, "flywheel", _TOP, _KEYS, data)
     fail = t.fail
-    tables = [k for k in ("turning_moment", "resisting_torque") if k in t.data]
+    tables = [k for k in ("turning_moment", "resisting_torque", "punch") if k in t.data]
     if len(tables) != 1:
         raise fail("a flywheel file gives its diagram as [turning_moment] torque = \"…\", "
                    "points = [[θ°, T], …] or areas = […] with the diagram's scales, or a "
-                   "machine's [resisting_torque] against a steady driver: one of them",
-                   tables[1] if tables else "flywheel")
+                   "machine's [resisting_torque] against a steady driver, or a [punch]: one "
+                   "of them", tables[1] if tables else "flywheel")
     (table,) = tables
     length, speed_unit = t.units("m", "rad/s")
     metre = LENGTH_UNITS[length]
+    if table == "punch":
+        diagram = read_punch(t, _one(t, "punch"))
+        wheel = _flywheel(t, metre, SPEEDS[speed_unit], diagram)
+        return FlywheelExercise(
+            id=exercise_id, name=_text(t, "name", exercise_id),
+            source=_text(t, "source", ""), description=_text(t, "description", ""),
+            cycle=2 * math.pi, length_unit=length, speed_unit=speed_unit,
+            names=read_names(t.data, t.where, filename), **diagram, **wheel)
     tm = _one(t, table)
     cycle_deg = t.number(tm, "cycle", table, "the cycle (degrees)", 0, 360.0)
     if not 0 < cycle_deg <= 1440:
@@ -363,11 +378,24 @@ def _flywheel(t: Tables, metre: float, rad_s: float, diagram: dict) -> dict[str,
         raise t.fail("give speed_fluctuation (or the greatest and least speeds: the flywheel is "
                      "found) or the flywheel (inertia, or mass with radius_of_gyration: its C_s "
                      "is found), one of them", "flywheel", ways[1])
-    if ways and "speed" not in out:
+    if ways and "speed" not in out and not ("rim_speed" in fw and "speed_fluctuation" in fw):
         raise t.fail("a flywheel holds a speed: give the mean speed, speed = 300 with [units] "
-                     "speed = \"rpm\"", "flywheel", None)
-    rim = [k for k in ("diameter", "density", "width_to_thickness") if k in fw]
+                     "speed = \"rpm\" (or the rim's speed in m/s, rim_speed = 25, for its mass "
+                     "alone)", "flywheel", None)
+    rim = [k for k in ("diameter", "rim_speed", "density", "width_to_thickness") if k in fw]
     if "speed_fluctuation" in out:
+        if "rim_speed" in fw:
+            # The rim's speed v = ω·r gives its radius, and m·v² = I·ω² its mass.
+            clash = [k for k in ("radius", "diameter", "mass") if k in fw]
+            if clash:
+                raise t.fail(f"the rim's speed fixes its radius (v/ω) and mass (ΔE/(C_s·v²)): "
+                             f"leave {clash[0]} out", "flywheel", clash[0])
+            out["rim_speed"] = positive("rim_speed", "the rim's mean speed (m/s)")
+            if "speed" in out:
+                out["radius"] = out["rim_speed"] / out["speed"]
+            elif "density" in fw:
+                raise t.fail("a rim's section needs its radius: give the mean speed too, its "
+                             "radius v/ω", "flywheel", "density")
         if "radius" in fw and "diameter" in fw:
             raise t.fail("give the rim's mean radius or its diameter, not both", "flywheel",
                          "diameter")
@@ -413,6 +441,7 @@ def _flywheel(t: Tables, metre: float, rad_s: float, diagram: dict) -> dict[str,
         out["at"] = tuple(math.radians(t.number({"at": a}, "at", "flywheel",
                                                 "a crank angle (degrees)")) for a in raw)
         if "areas" in diagram:
-            raise t.fail("a diagram given by its areas has no T(θ) to read at a crank angle: "
+            raise t.fail("a diagram given by its areas (or a punch) has no T(θ) to read at a "
+                         "crank angle: "
                          "give torque = \"…\" or points, or leave at out", "flywheel", "at")
     return out

@@ -75,10 +75,23 @@ class FlywheelSolution(ChapterFiles):
         """ΔE by the reference: quadrature, or the greatest run of neighbouring areas."""
         if self.reference is not None:
             return self.reference.delta_e
+        if self.exercise.punch is not None:
+            return self._punch_reference.delta_e
         a = self.exercise.areas
         n = len(a)
         return max(abs(math.fsum(a[(i + j) % n] for j in range(length)))
                    for i in range(n) for length in range(1, n))
+
+    @cached_property
+    def _punch_reference(self) -> Integrated:
+        """The punch's torque over a period mapped onto a turn, by the quadrature: its mean
+        is the motor's, its ΔE the flywheel's."""
+        table = self.exercise.punch.table()
+        ts = [t for t, _ in table]
+
+        def torque(theta: float) -> float:
+            return table[0][1] if theta % (2 * math.pi) < ts[1] else 0.0
+        return integrated(torque, 2 * math.pi, tuple(ts[1:-1]))
 
     @cached_property
     def tolerance(self) -> float:
@@ -102,7 +115,7 @@ class FlywheelSolution(ChapterFiles):
         ex = self.exercise
         if ex.inertia is not None:
             return ex.inertia
-        if ex.speed_fluctuation is not None and self.reading.delta_e:
+        if ex.speed_fluctuation is not None and self.reading.delta_e and ex.speed is not None:
             return flywheel_inertia(self.reading.delta_e, ex.speed, ex.speed_fluctuation)
         return None
 
@@ -136,12 +149,26 @@ class FlywheelSolution(ChapterFiles):
         if ref is not None:
             q["mean_torque"] = _check(r.mean, ref.mean, tol * max(r.delta_e, 1.0) /
                                       max(abs(ref.mean), 1.0) / ex.cycle, method, unit="N·m")
+        if ex.punch is not None:
+            # E over the period, beside the quadrature's mean torque over the turn it maps to
+            p = self._punch_reference
+            q["power"] = _check(ex.punch.power, p.mean * 2 * math.pi / ex.punch.period,
+                                1e-12, "P = E/T, a hole's energy over the period", unit="W")
+            method = "E·(1 − t/T), the motor steady"
         q["delta_E"] = _check(r.delta_e, self.reference_delta_e, tol, method, unit="J")
         if ex.speed is not None and ref is not None:
             q["power"] = _check(r.mean * ex.speed, ref.mean * ex.speed,
                                 q["mean_torque"].tolerance, method, unit="W")
         ref_e = self.reference_delta_e
-        if ex.speed_fluctuation is not None:
+        if ex.speed is None and ex.rim_speed is not None:
+            # no shaft speed: m·v² = I·ω², so the rim's mass is ΔE/(C_s·v²) all the same
+            v2cs = ex.rim_speed ** 2 * ex.speed_fluctuation
+            q["rim_mass"] = _check(r.delta_e / v2cs, ref_e / v2cs, tol, "m = ΔE/(C_s·v²)",
+                                   unit="kg")
+        elif ex.speed_fluctuation is not None:
+            if ex.rim_speed is not None:
+                q["rim_radius"] = _check(ex.radius, ex.rim_speed / ex.speed, 0.0, "r = v/ω",
+                                         unit="m")
             q["inertia"] = _check(self.inertia, flywheel_inertia(ref_e, ex.speed,
                                                                  ex.speed_fluctuation),
                                   tol, "I = ΔE/(C_s·ω²)", unit="kg·m²")
@@ -284,7 +311,13 @@ class FlywheelSolution(ChapterFiles):
         elif ex.diagram is not None:
             out.append(words("mean turning moment T_mean = {mean} N·m over a cycle of {cycle}°",
                              mean=numeral(r.mean), cycle=numeral(math.degrees(ex.cycle), "g")))
-        if "power" in q:
+        if ex.punch is not None:
+            out.append(words("a hole takes E = {energy} J in {time} s of every {period} s: the "
+                             "motor's power P = E/T = {power} kW", energy=numeral(ex.punch.energy),
+                             time=numeral(ex.punch.time, "g"),
+                             period=numeral(ex.punch.period, "g"),
+                             power=numeral(ex.punch.power / 1000)))
+        elif "power" in q:
             out.append(words("power at the mean speed: P = T_mean·ω = {power} kW",
                              power=numeral(q["power"].value["value"] / 1000)))
         if r.delta_e:
@@ -301,11 +334,20 @@ class FlywheelSolution(ChapterFiles):
             out.append(words("flywheel for C_s = {cs} at ω = {omega} rad/s: I = ΔE/(C_s·ω²) = "
                              "{inertia} kg·m²", cs=numeral(ex.speed_fluctuation, "g"),
                              omega=numeral(ex.speed), inertia=numeral(self.inertia)))
-        if "rim_mass" in q:
+        if ex.rim_speed is not None and "rim_mass" in q and ex.radius is None:
+            out.append(words("a rim whose mean speed is {speed} m/s: m = ΔE/(C_s·v²) = {mass} kg",
+                             speed=numeral(ex.rim_speed, "g"),
+                             mass=numeral(q["rim_mass"].value["value"])))
+        elif ex.rim_speed is not None and "rim_mass" in q:
+            out.append(words("a rim whose mean speed is {speed} m/s: its radius r = v/ω = "
+                             "{radius}, its mass m = I/r² = {mass} kg",
+                             speed=numeral(ex.rim_speed, "g"), radius=self._length(ex.radius),
+                             mass=numeral(q["rim_mass"].value["value"])))
+        elif "rim_mass" in q:
             out.append(words("a rim of mean radius {radius}: m = I/r² = {mass} kg",
                              radius=self._length(ex.radius),
                              mass=numeral(q["rim_mass"].value["value"])))
-        if "rim_radius" in q:
+        if "rim_radius" in q and ex.rim_speed is None:
             out.append(words("a rim of {mass} kg: its mean radius r = √(I/m) = {radius}",
                              mass=numeral(ex.mass),
                              radius=self._length(q["rim_radius"].value["value"])))
@@ -357,7 +399,13 @@ class FlywheelSolution(ChapterFiles):
         """steps.md: how the diagram is read, numbered, then the results."""
         ex, r = self.exercise, self.reading
         steps = []
-        if ex.diagram is None:
+        if ex.punch is not None:
+            steps.append(words("While it punches, the steady motor gives E·t/T = {given} J of the "
+                               "{energy} J a hole takes; the flywheel gives up the rest, "
+                               "E·(1 − t/T) = {delta} J, and takes it back before the next "
+                               "hole.", given=numeral(ex.punch.energy - ex.punch.delta_e),
+                               energy=numeral(ex.punch.energy), delta=numeral(ex.punch.delta_e)))
+        elif ex.diagram is None:
             steps.append(words("Each area times the diagram's scale ({scale} J per unit of area) "
                                "is an energy: {energies} J.", scale=numeral(ex.energy_scale),
                                energies=", ".join(numeral(a) for a in ex.areas)))

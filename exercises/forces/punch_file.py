@@ -1,0 +1,74 @@
+"""Read a punching press as the books give it (``[punch]``): the energy a hole takes (or the
+energy per unit of sheared area, with the hole's diameter and the plate's thickness), how
+often a hole is punched (``holes_per_hour``, ``holes_per_minute`` or the ``period`` in s),
+and how long the punching takes (``punching_time`` in s, or ``punching_fraction`` of the
+period). Its flywheel is asked in ``[flywheel]`` as any other's."""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+from tarsim.constructions.forces.flywheel import Punch
+from ..table_file import Tables
+
+__all__ = ["PUNCH_KEYS", "read_punch"]
+
+PUNCH_KEYS = ("energy", "energy_per_area", "hole", "plate", "holes_per_hour",
+              "holes_per_minute", "period", "punching_time", "punching_fraction")
+
+
+def _one_of(t: Tables, p: dict, keys: tuple[str, ...], what: str) -> str:
+    given = [k for k in keys if k in p]
+    if len(given) != 1:
+        raise t.fail(f"[punch] gives {what}: one of {', '.join(keys)}" +
+                     (f", not {' and '.join(given)}" if given else ""), "punch",
+                     given[1] if given else None)
+    return given[0]
+
+
+def read_punch(t: Tables, p: dict) -> dict[str, Any]:
+    """The punch's diagram as an exercise holds it: its two areas (the flywheel giving up
+    E·(1 − t/T) while it punches and taking it back), and the :class:`Punch`.
+
+    Raises
+    ------
+    InputError
+        Naming file:line and what to fix.
+    """
+    def positive(key: str, what: str) -> float:
+        v = t.number(p, key, "punch", what)
+        if not v > 0:
+            raise t.fail(f"{what} must be positive, got {v:g}", "punch", key)
+        return v
+
+    way = _one_of(t, p, ("energy", "energy_per_area"), "the energy a hole takes")
+    if way == "energy":
+        for k in ("hole", "plate"):
+            if k in p:
+                raise t.fail(f"{k} is for energy_per_area (J per unit of sheared area, π·d·t); "
+                             "energy is a hole's already", "punch", k)
+        energy = positive("energy", "a hole's energy (J)")
+    else:
+        missing = [k for k in ("hole", "plate") if k not in p]
+        if missing:
+            raise t.fail("energy_per_area needs the hole's diameter (hole = 38) and the "
+                         "plate's thickness (plate = 32), in the file's length unit",
+                         "punch", "energy_per_area")
+        # J per (length unit)² times the sheared area π·d·t, in the file's unit as it is
+        energy = (positive("energy_per_area", "the energy per unit of sheared area")
+                  * math.pi * positive("hole", "the hole's diameter")
+                  * positive("plate", "the plate's thickness"))
+    rate = _one_of(t, p, ("holes_per_hour", "holes_per_minute", "period"), "how often it punches")
+    period = {"holes_per_hour": lambda v: 3600 / v, "holes_per_minute": lambda v: 60 / v,
+              "period": lambda v: v}[rate](positive(rate, "the punching rate"))
+    part = _one_of(t, p, ("punching_time", "punching_fraction"), "how long a punching takes")
+    time = positive(part, "the punching's time") * (period if part == "punching_fraction"
+                                                     else 1.0)
+    if not time < period:
+        raise t.fail(f"a punching takes less than the {period:g} s between holes, got {time:g} s",
+                     "punch", part)
+    punch = Punch(energy, period, time)
+    return {"areas": (-punch.delta_e, punch.delta_e), "drawn_areas": (-punch.delta_e,
+                                                                     punch.delta_e),
+            "energy_scale": 1.0, "punch": punch}
