@@ -156,8 +156,9 @@ def test_bad_file_is_one_line_with_file_and_line(mech_file, tmp_path, edit, mess
                         "planetary-q3, planetary-q4, planetary-ratio-least-teeth, "
                         "ratio-least-teeth, ratio-only, "
                         "teeth-implied, two-planets-listed, two-speeds-arm-and-sun, "
-                        "base-circle-for-pressure-angle, eccentric-flat-face, offset-knife-edge, "
-                        "oscillating-roller, roller-harmonic-cycloidal, "
+                        "base-circle-for-pressure-angle, circular-arc-flat-face, "
+                        "eccentric-flat-face, offset-knife-edge, "
+                        "oscillating-roller, roller-harmonic-cycloidal, tangent-cam-roller, "
                         "valve-unequal-acceleration, four-mass-shaft, "
                         "four-masses-one-plane, inline-four, inline-three, locomotive, "
                         "notes-example-1, single-cylinder-balance-mass, single-cylinder, "
@@ -297,8 +298,9 @@ def test_list_shows_the_bundled_examples():
                    "planetary-q4", "planetary-ratio-least-teeth", "ratio-least-teeth",
                    "ratio-only", "teeth-implied",
                    "two-planets-listed", "two-speeds-arm-and-sun",
-                   "base-circle-for-pressure-angle", "eccentric-flat-face", "offset-knife-edge",
-                   "oscillating-roller", "roller-harmonic-cycloidal",
+                   "base-circle-for-pressure-angle", "circular-arc-flat-face",
+                   "eccentric-flat-face", "offset-knife-edge",
+                   "oscillating-roller", "roller-harmonic-cycloidal", "tangent-cam-roller",
                    "valve-unequal-acceleration", "four-mass-shaft",
                    "four-masses-one-plane", "inline-four", "inline-three", "locomotive",
                    "notes-example-1", "single-cylinder-balance-mass", "single-cylinder",

@@ -19,6 +19,8 @@ PHRASES: dict[str, str] = {
                      "divide half the lift on its {where} ordinate in the ratio 1 : 3 : 5 … "
                      "{way} by parallels from a line marked at 1, 4, 9 … equal steps ({m} of "
                      "them), and project each division across to its ordinate.",
+    "heading.arc_cam": "The cam's dimensions",
+    "heading.arc_motion": "The follower's motion on the flank and the nose",
     "cam.parabolic_part": "Segment {k} is uniform acceleration and retardation in unequal "
                           "parts: for its {half} part, divide its share of the lift, {rise}, on "
                           "its {where} ordinate in the ratio 1 : 3 : 5 … {way} by parallels "

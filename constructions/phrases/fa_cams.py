@@ -159,6 +159,30 @@ WORDS: dict[str, str] = {
     "{rest}°": "بخش {k}: شتاب یکنواخت {a} m/s² در {first}° و کاهش سرعت یکنواخت {r} m/s² در "
                "{rest}°",
     "θ = {theta}°": "θ = {theta}°",
+    "the nose's centre {d} from the cam's, the lift {h}, the angle of lift {alpha}°":
+        "مرکز دماغه به فاصلهٔ {d} از مرکز بادامک، خیز {h}، زاویهٔ صعود {alpha}°",
+    "the nose's radius {r}; the roller leaves the flank {phi}° after the lift begins":
+        "شعاع دماغه {r}؛ غلتک {phi}° پس از آغاز صعود از یال جدا می‌شود",
+    "the flank's radius {R}; the face leaves the flank {phi}° after the lift begins":
+        "شعاع یال {R}؛ سطح تخت پیرو {phi}° پس از آغاز صعود از یال جدا می‌شود",
+    "{what}: {name} = {value} {unit} at θ = {theta}°   {check}":
+        "{what}: {name} = {value} {unit} در θ = {theta}°   {check}",
+    "the acceleration as the lift begins": "شتاب در آغاز صعود",
+    "the greatest velocity, where the follower leaves the flank":
+        "بیشترین سرعت، جایی که پیرو از یال جدا می‌شود",
+    "the acceleration where the follower leaves the flank": "شتاب جایی که پیرو از یال جدا می‌شود",
+    "the acceleration as the follower comes onto the nose": "شتاب هنگام رسیدن پیرو به دماغه",
+    "the acceleration at the apex of the nose": "شتاب در رأس دماغه",
+    "the motion at {theta}°": "حرکت در {theta}°",
+    "the outline read at every asked angle: {ok}": "پیرامون بادامک در هر زاویهٔ خواسته‌شده: {ok}",
+    "r₁ = {r1}, r₂ = {r2}, OQ = {d}, α = {alpha}°": "r₁ = {r1}، r₂ = {r2}، OQ = {d}، α = {alpha}°",
+    "the flank's radius R = {R}": "شعاع یال R = {R}",
+    "the cam's outline": "پیرامون بادامک",
+    "the follower at the apex": "پیرو در رأس دماغه",
+    "{name}: the cam": "{name}: بادامک",
+    "{name}: lift": "{name}: خیز",
+    "lift": "خیز",
+    "the motions asked": "حرکت‌های خواسته‌شده",
     "the least base circle for a greatest pressure angle of {limit}°: {r} {unit} (the "
     "layout's greatest: {got}°)   {check}": "کوچک‌ترین دایرهٔ پایه برای بیشترین زاویهٔ فشار "
                                            "{limit}°: {r} {unit} (بیشترین زاویهٔ فشار در "
@@ -202,6 +226,8 @@ PHRASES: dict[str, str] = {
                      "کنید؛ این کار با خطوطی موازی انجام می‌شود که از خطی کمکی با علامت‌های ۱، "
                      "۴، ۹ … گام مساوی ({m} گام) رسم می‌شوند؛ سپس هر نقطهٔ تقسیم را با خطی افقی "
                      "به خط قائم نظیرش منتقل کنید.",
+    "heading.arc_cam": "ابعاد بادامک",
+    "heading.arc_motion": "حرکت پیرو روی یال و دماغهٔ بادامک",
     "cam.parabolic_part": "بخش {k} با شتاب‌گیری و کاهش سرعت یکنواخت در دو بخش نابرابر است: "
                           "برای بخش {half} آن، سهم این بخش از خیز، یعنی {rise}، را روی خط قائم "
                           "{where} به نسبت ۱ : ۳ : ۵ … {way} تقسیم کنید؛ این کار با خطوطی موازی "

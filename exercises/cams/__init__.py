@@ -23,14 +23,16 @@ class Cams(Chapter):
         return parse_cam(text, filename, exercise_id, data)
 
     def solve(self, exercise, *, allow_undercut=False):
-        from .cam_solution import solve_cam
-        return solve_cam(exercise, allow_undercut=allow_undercut)
+        from .solve import solve
+        return solve(exercise, allow_undercut=allow_undercut)
 
     def drawing(self, exercise):
         # The profile is drawn even where the follower undercuts it, the trouble ringed.
         return self.solve(exercise, allow_undercut=True).figures["profile"]
 
     def asks(self, exercise) -> str:
+        if hasattr(exercise, "cam"):
+            return "the cam's dimensions and the follower's motion on its flank and nose"
         return "the follower's motion diagrams and the profile by inversion"
 
 

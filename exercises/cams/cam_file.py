@@ -19,6 +19,7 @@ from tarsim.constructions.reference.cam_profile import Follower, arm_start, prim
 from ..file_numbers import file_number
 from ..names import named_in, read_names, renamed_field
 from ..table_file import SPEEDS, Tables
+from .arc_cam_file import ARC_KINDS, parse_arc_cam
 
 __all__ = ["CamExercise", "parse_cam"]
 
@@ -86,6 +87,11 @@ def parse_cam(text: str, filename: str = "<string>", exercise_id: str = "cam",
                    "speed = 300, sense = \"cw\"", "cam")
 
     number = tables.number
+    if "kind" in cam:                      # a cam of arcs, its motion from its outline
+        if cam["kind"] not in ARC_KINDS:
+            raise fail(f"a cam's kind is {' or '.join(ARC_KINDS)}, not {cam['kind']!r} (a cam "
+                       "given by its follower's motion leaves kind out)", "cam", "kind")
+        return parse_arc_cam(tables, exercise_id, _angles)
 
     disc = _disc(cam, number, fail)
     base = _base(cam, disc, number, fail)

@@ -1,0 +1,215 @@
+"""Read a cam made of arcs: ``[cam] kind = "circular arc"`` (under a flat face) or
+``"tangent"`` (under a roller), given as the books give them.
+
+A circular-arc cam gives its base radius, nose radius, lift and the angle of lift (the
+cam's turn from the start of the lift to the apex), or its flank's radius in place of the
+angle. A tangent cam gives its base radius and two of its nose radius, lift and angle of
+lift, or the angle between its tangential faces, 180° − 2α, in place of the angle of lift:
+its flanks' tangency to both circles fixes the third (d cos α = r₁ − r₂ with
+d = r₁ + h − r₂). Every failure is one line at its place in the file.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any, ClassVar
+
+from tarsim.constructions.cams.arc_cam import ArcCam
+from tarsim.constructions.units import LENGTH_UNITS
+from ..file_numbers import file_number
+from ..names import named_in, read_names, renamed_field
+from ..table_file import SPEEDS
+
+__all__ = ["ArcCamExercise", "parse_arc_cam", "ARC_KINDS"]
+
+ARC_KINDS = {"circular arc": "flat-faced", "tangent": "roller"}
+"""Each cam of arcs and the follower the books set on it."""
+
+_CAM_KEYS = ("kind", "base_radius", "nose_radius", "lift", "angle", "faces_angle",
+             "flank_radius", "speed", "sense")
+
+
+@dataclass(frozen=True)
+class ArcCamExercise:
+    """A cam of arcs (m, rad) turning at ``omega`` (rad/s, CCW +), with the cam angles
+    (degrees from the start of the lift) its motion is asked at."""
+
+    chapter: ClassVar[str] = "cams"
+
+    id: str
+    name: str
+    source: str
+    description: str
+    cam: ArcCam
+    omega: float
+    length_unit: str = "mm"
+    speed_unit: str = "rpm"
+    at: tuple[float, ...] = ()
+    given: tuple[str, ...] = ()
+    """Which of the cam's sizes the file gives (the rest are found)."""
+    names: tuple[tuple[str, str], ...] = ()
+
+    def named_in(self, lang: str) -> ArcCamExercise:
+        """The same exercise with the cam named in ``lang``, if its file does."""
+        return named_in(self, lang)
+
+    renamed = renamed_field
+
+    @property
+    def metre(self) -> float:
+        """Metres in one of the file's length units."""
+        return LENGTH_UNITS[self.length_unit]
+
+
+def parse_arc_cam(tables, exercise_id: str, angles) -> ArcCamExercise:
+    """The cam of arcs in ``tables`` (already read; ``angles`` reads [ask] at)."""
+    data, fail, number = tables.data, tables.fail, tables.number
+    length, speed = tables.units("mm", "rpm")
+    metre = LENGTH_UNITS[length]
+    cam = data["cam"]
+    kind = cam["kind"]
+    for k in cam:
+        if k not in _CAM_KEYS:
+            raise fail(f"unknown setting '{k}' in a {kind} cam's [cam]; expected "
+                       f"{', '.join(_CAM_KEYS)}", "cam", k)
+    if "segment" in data:
+        raise fail(f"a {kind} cam's motion comes from its arcs: leave out the [[segment]] "
+                   "tables", "segment")
+
+    def size(key: str, what: str) -> float:
+        v = number(cam, key, "cam", what)
+        if not 0 < v < 1e6:
+            raise fail(f"{what} must be positive, got {v:g}", "cam", key)
+        return v * metre
+
+    r1 = size("base_radius", "the base radius")
+    rate = number(cam, "speed", "cam", "the cam's speed")
+    sense = cam.get("sense", "ccw")
+    if sense not in ("cw", "ccw") or rate <= 0:
+        raise fail("the cam turns at a positive speed, its sense cw or ccw", "cam", "sense")
+    omega = rate * SPEEDS[speed] * (1 if sense == "ccw" else -1)
+    roller = _follower(data.get("follower") or {}, kind, metre, fail)
+    given = tuple(k for k in ("nose_radius", "lift", "angle", "faces_angle", "flank_radius")
+                  if k in cam)
+    if kind == "tangent":
+        shape = _tangent(cam, r1, size, number, fail)
+    else:
+        shape = _circular(cam, r1, size, number, fail)
+    made = ArcCam(kind, r1, *shape, roller)
+    ask = data.get("ask", {})
+    if not isinstance(ask, dict) or any(k != "at" for k in ask):
+        raise fail(f"a {kind} cam's [ask] table takes at = [20, 75] (the motion at those "
+                   "cam angles from the start of the lift)", "ask")
+    at = angles(ask.get("at", []), fail)
+    top = math.degrees(2 * made.alpha)
+    for v in at:
+        if v > top + 1e-9:
+            raise fail(f"the lift and the return take {top:.4g}° of this cam's turn: a cam angle "
+                       f"asked at is at most that, not {v:g}°", "ask", "at")
+    return ArcCamExercise(exercise_id, str(data.get("name", exercise_id)),
+                          str(data.get("source", "")), str(data.get("description", "")),
+                          made, omega, length, speed, at, given,
+                          read_names(data, tables.where, tables.filename))
+
+
+def _follower(t: dict[str, Any], kind: str, metre: float, fail) -> float:
+    """The follower the cam of ``kind`` drives: a flat face, or a roller's radius (m)."""
+    want = ARC_KINDS[kind]
+    if t.get("kind", want) != want or t.get("motion", "translating") != "translating" or \
+            t.get("offset", 0):
+        raise fail(f"a {kind} cam is worked under a {want} follower translating on a line "
+                   "through the cam's centre", "follower", "kind")
+    if want != "roller":
+        return 0.0
+    if ("radius" in t) == ("diameter" in t):
+        raise fail("a roller follower gives its radius (radius = 15) or its diameter "
+                   "(diameter = 30)", "follower", "radius")
+    key = "radius" if "radius" in t else "diameter"
+    try:
+        r = file_number(t[key], "the roller's " + key) * metre / (1 if key == "radius" else 2)
+    except ValueError as e:
+        raise fail(str(e), "follower", key) from None
+    if not r > 0:
+        raise fail(f"the roller's {key} must be positive", "follower", key)
+    return r
+
+
+def _tangent(cam: dict[str, Any], r1: float, size, number, fail
+             ) -> tuple[float, float, float]:
+    """A tangent cam's nose radius, lift and angle of lift from the two the file gives."""
+    alpha = _angle(cam, number, fail, faces=True)
+    have = [k for k in ("nose_radius", "lift") if k in cam] + (["angle"] if alpha else [])
+    if len(have) != 2:
+        raise fail("a tangent cam gives two of nose_radius, lift and angle (the angle of "
+                   "lift, or faces_angle between its flanks): its flanks' tangency fixes "
+                   "the third", "cam", "kind")
+    if alpha is None:
+        r2, h = size("nose_radius", "the nose radius"), size("lift", "the lift")
+        d = r1 + h - r2
+        if not r2 < r1:
+            raise fail("the nose is smaller than the base circle", "cam", "nose_radius")
+        alpha = math.acos((r1 - r2) / d)
+    elif "lift" in cam:
+        h = size("lift", "the lift")
+        d = h / (1 - math.cos(alpha))
+        r2 = r1 + h - d
+        if not r2 > 0:
+            raise fail(f"a lift of {h:g} m over an angle of lift of {math.degrees(alpha):g}° "
+                       "leaves no nose: give a smaller lift or a larger angle", "cam", "lift")
+    else:
+        r2 = size("nose_radius", "the nose radius")
+        if not r2 < r1:
+            raise fail("the nose is smaller than the base circle", "cam", "nose_radius")
+        h = (r1 - r2) / math.cos(alpha) + r2 - r1
+    return r2, h, alpha
+
+
+def _circular(cam: dict[str, Any], r1: float, size, number, fail
+              ) -> tuple[float, float, float]:
+    """A circular-arc cam's nose radius, lift and angle of lift (from its flank's radius
+    where the file gives that instead)."""
+    for key in ("nose_radius", "lift"):
+        if key not in cam:
+            raise fail(f"a circular arc cam gives its base_radius, nose_radius, lift and "
+                       f"angle of lift (or flank_radius): {key} is missing", "cam", "kind")
+    r2, h = size("nose_radius", "the nose radius"), size("lift", "the lift")
+    if not r2 < r1:
+        raise fail("the nose is smaller than the base circle", "cam", "nose_radius")
+    d = r1 + h - r2
+    alpha = _angle(cam, number, fail, faces=False)
+    if ("flank_radius" in cam) == (alpha is not None):
+        raise fail("a circular arc cam gives its angle of lift or its flank_radius, one of "
+                   "them", "cam", "angle")
+    if alpha is None:
+        big = size("flank_radius", "the flank's radius")
+        c = ((big - r2) ** 2 - (big - r1) ** 2 - d * d) / (2 * (big - r1) * d)
+        if not (big > r1 + h and -1 < c < 1):
+            raise fail("a flank of that radius cannot touch both the base and the nose "
+                       "circles", "cam", "flank_radius")
+        alpha = math.acos(c)
+    elif not r1 - r2 - d * math.cos(alpha) > 0:
+        raise fail(f"an angle of lift of {math.degrees(alpha):g}° is too small for convex "
+                   "arcs to join the base circle to the nose: give a larger angle or a "
+                   "smaller lift", "cam", "angle")
+    return r2, h, alpha
+
+
+def _angle(cam: dict[str, Any], number, fail, *, faces: bool) -> float | None:
+    """The angle of lift (rad) as given: ``angle``, or a tangent cam's ``faces_angle``."""
+    if "angle" in cam and "faces_angle" in cam:
+        raise fail("give the angle of lift or the faces' angle, not both", "cam", "faces_angle")
+    if "faces_angle" in cam:
+        if not faces:
+            raise fail("only a tangent cam has straight faces", "cam", "faces_angle")
+        v = number(cam, "faces_angle", "cam", "the angle between the faces")
+        if not 0 < v < 180:
+            raise fail(f"the angle between the faces is between 0° and 180°, not {v:g}°",
+                       "cam", "faces_angle")
+        return math.radians(90 - v / 2)
+    if "angle" not in cam:
+        return None
+    v = number(cam, "angle", "cam", "the angle of lift")
+    if not 0 < v < 180:
+        raise fail(f"the angle of lift is between 0° and 180°, not {v:g}°", "cam", "angle")
+    return math.radians(v)

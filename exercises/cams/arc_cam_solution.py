@@ -1,0 +1,249 @@
+"""A cam of arcs solved: its dimensions and the follower's motion as the books ask them (at
+the start of the lift, where the follower leaves the flank, at the apex, and at any asked
+cam angle), each held to the outline itself (:mod:`tarsim.constructions.reference.cam_arcs`).
+
+The reference reads the follower's place off the outline (a flat face at its support, a
+roller where the axis meets the outline grown by its radius), knowing nothing of which part
+it touches; the velocity and acceleration are second-order differences of that place, on
+the part's own side of a join. They are held to the books' formulas to 10⁻⁵ of ωd and ω²d
+(the step 10⁻⁴ rad leaves some 10⁻⁸), the flank's radius to the bisection's, and the flank
+angle to where the outline's flank meets its nose.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from functools import cached_property
+from typing import Any
+
+from tarsim.constructions.cams.arc_cam import arc_motion
+from tarsim.constructions.narration import numeral, numerals, phrase, unit_words, words
+from tarsim.constructions.reference.cam_arcs import Flat, face_place, outline, roller_place
+from tarsim.graphics.cams.arc_cam_figure import draw_arc_cam
+from tarsim.graphics.plot import PlotMark, Series, draw_line_plot
+from ..checked import Checked
+from ..solution_folder import ChapterFiles
+from ..worked_document import Bullets, Section, title
+from .arc_cam_file import ArcCamExercise
+
+__all__ = ["ArcCamSolution", "solve_arc_cam"]
+
+STEP = 1e-4
+"""The difference step in cam angle (rad)."""
+
+AGREE = 1e-5
+"""How far a formula may stand from the outline's differences, as a fraction of ωd (a
+velocity) or ω²d (an acceleration)."""
+
+
+@dataclass(frozen=True)
+class Reading:
+    """One asked motion: its name, what the books call it, the cam angle (rad from the start
+    of the lift), which of lift (0), velocity (1) or acceleration (2), the part's formula
+    used, and its value beside the outline's."""
+
+    name: str
+    what: str
+    theta: float
+    which: int
+    part: str | None
+    value: float
+    reference: float
+    scale: float
+
+    @property
+    def passed(self) -> bool:
+        """The formula agrees with the outline to :data:`AGREE` of its scale."""
+        return abs(self.value - self.reference) <= AGREE * self.scale
+
+
+@dataclass(frozen=True)
+class ArcCamSolution(ChapterFiles):
+    """A solved cam of arcs (see the module's docstring)."""
+
+    exercise: ArcCamExercise
+
+    @cached_property
+    def outline(self):
+        """The cam's outline from the tangencies alone."""
+        c = self.exercise.cam
+        return outline(c.kind, c.base, c.nose, c.d, c.alpha)
+
+    def place(self, theta: float) -> float:
+        """The follower's lift read off the outline at cam angle ``theta``."""
+        c = self.exercise.cam
+        psi = c.alpha - theta
+        if c.kind == "tangent":
+            return roller_place(self.outline, psi, c.roller) - c.base - c.roller
+        return face_place(self.outline, psi) - c.base
+
+    def _differences(self, theta: float, side: int) -> tuple[float, float, float]:
+        """The place and its first two derivatives (per rad) by second-order differences:
+        centred (``side`` 0), forward (+1) or backward (−1)."""
+        h = STEP
+        y = [self.place(theta + side * k * h if side else theta + k * h)
+             for k in ((0, 1, 2, 3) if side else (-1, 0, 1))]
+        if not side:
+            return y[1], (y[2] - y[0]) / (2 * h), (y[2] - 2 * y[1] + y[0]) / (h * h)
+        return (y[0], side * (-3 * y[0] + 4 * y[1] - y[2]) / (2 * h),
+                (2 * y[0] - 5 * y[1] + 4 * y[2] - y[3]) / (h * h))
+
+    @cached_property
+    def readings(self) -> list[Reading]:
+        """The motions the books ask, then those at the asked angles."""
+        ex, c = self.exercise, self.exercise.cam
+        w = abs(ex.omega)
+        phi, alpha = c.phi, c.alpha
+        asks = [("a_lift_start", "the acceleration as the lift begins", 0.0, 2, "flank", 1),
+                ("v_max", "the greatest velocity, where the follower leaves the flank", phi, 1,
+                 "flank", -1),
+                ("a_flank_end", "the acceleration where the follower leaves the flank", phi, 2,
+                 "flank", -1),
+                ("a_nose_start", "the acceleration as the follower comes onto the nose", phi,
+                 2, "nose", 1),
+                ("a_apex", "the acceleration at the apex of the nose", alpha, 2, "nose", 0)]
+        for d in ex.at:
+            t = math.radians(d)
+            part = arc_motion(c, t, w)[3]
+            u = 2 * alpha - t if t > alpha else t
+            ends = (0.0, phi) if part == "flank" else (phi, alpha)
+            side = 1 if u - 3 * STEP < ends[0] else -1 if u + 3 * STEP > ends[1] else 0
+            if t > alpha and side:
+                side = -side                       # the return runs the lift backwards
+            if u > alpha - 3 * STEP and part == "nose":
+                side = 0                           # the apex: the nose both sides
+            for which, name in enumerate(("y", "v", "a")):
+                asks.append((f"{name}_at_{d:g}", "", t, which, None, side))
+        out = []
+        for name, what, t, which, part, side in asks:
+            value = arc_motion(c, t, w, part)[which]
+            ref = self._differences(t, side)[which] * w ** which
+            out.append(Reading(name, what, t, which, part, value, ref,
+                               c.d * w ** which if which else c.d))
+        return out
+
+    @cached_property
+    def dimensions(self) -> dict[str, tuple[float, float | None, str]]:
+        """Each dimension (m or rad) beside the outline's own, and how the book finds it."""
+        c = self.exercise.cam
+        out = {"nose_distance": (c.d, None, "OQ = r₁ + h − r₂"),
+               "lift": (c.lift, self.place(c.alpha), "the outline's apex"),
+               "nose_radius": (c.nose, None, "as given, or d cos α = r₁ − r₂"),
+               "angle_of_lift": (c.alpha, None, "as given, or from the faces or the flank")}
+        flank = self.outline.parts[0]              # the rising flank
+        if isinstance(flank, Flat):
+            # The roller leaves the flank where its centre passes the flank's end grown out.
+            meet = (flank.b[0] + c.roller * flank.normal[0],
+                    flank.b[1] + c.roller * flank.normal[1])
+            out["flank_angle"] = (c.phi, c.alpha - math.atan2(meet[1], meet[0]),
+                                  "tan φ = d sin α/(r₁ + r)")
+        else:
+            out["flank_radius"] = (c.flank_radius, self.outline.flank_radius,
+                                   "R from the triangle OPQ")
+            out["flank_angle"] = (c.phi, c.alpha - flank.start, "sin φ = d sin α/(R − r₂)")
+        return out
+
+    @property
+    def failures(self) -> list[str]:
+        """What disagrees with the outline, by name."""
+        return [r.name for r in self.readings if not r.passed] + [
+            name for name, (v, ref, _) in self.dimensions.items()
+            if ref is not None and abs(v - ref) > 1e-9 * abs(v)]
+
+    @property
+    def checked(self) -> dict[str, Checked]:
+        """results.json: the dimensions, then each motion (SI; angles in rad)."""
+        out = {}
+        for name, (v, ref, how) in self.dimensions.items():
+            out[name] = Checked({"value": v}, None if ref is None else {"value": ref},
+                                rel_error=None if ref is None else abs(v - ref) / abs(v),
+                                tolerance=None if ref is None else 1e-9,
+                                passed=None if ref is None else abs(v - ref) <= 1e-9 * abs(v),
+                                method=how)
+        for r in self.readings:
+            out[r.name] = Checked({"value": r.value, "theta": r.theta}, {"value": r.reference},
+                                  rel_error=abs(r.value - r.reference) / r.scale,
+                                  tolerance=AGREE, passed=r.passed,
+                                  method="the book's formula; differences of the outline's "
+                                         "place")
+        return out
+
+    # ----- words --------------------------------------------------------------------------
+    def _length(self, v: float) -> str:
+        ex = self.exercise
+        return f"{numeral(v / ex.metre, '.4g')} {unit_words(ex.length_unit)}"
+
+    def lines(self) -> list[str]:
+        """What solve prints: the dimensions, then each motion, checked."""
+        ex, c = self.exercise, self.exercise.cam
+        ok = words("check ok" if not self.failures else "check FAILED")
+        out = [words("the nose's centre {d} from the cam's, the lift {h}, the angle of lift "
+                     "{alpha}°", d=self._length(c.d), h=self._length(c.lift),
+                     alpha=numeral(math.degrees(c.alpha), ".4g"))]
+        if c.kind == "tangent":
+            out.append(words("the nose's radius {r}; the roller leaves the flank {phi}° after "
+                             "the lift begins", r=self._length(c.nose),
+                             phi=numeral(math.degrees(c.phi), ".4g")))
+        else:
+            out.append(words("the flank's radius {R}; the face leaves the flank {phi}° after "
+                             "the lift begins", R=self._length(c.flank_radius),
+                             phi=numeral(math.degrees(c.phi), ".4g")))
+        unit = ex.length_unit
+        for r in self.readings:
+            value = numeral(r.value / ex.metre if r.which < 2 else r.value, ".5g").replace(
+                "-", "−")
+            said = ("{unit}", "{unit}/s", "m/s²")[r.which].format(unit=unit)
+            what = words(r.what) if r.what else words(
+                "the motion at {theta}°", theta=numeral(math.degrees(r.theta), ".4g"))
+            out.append(words("{what}: {name} = {value} {unit} at θ = {theta}°   {check}",
+                             what=what, name=r.name, value=value, unit=said,
+                             theta=numeral(math.degrees(r.theta), ".4g"),
+                             check=words("check ok" if r.passed else "check FAILED")))
+        out.append(words("the outline read at every asked angle: {ok}", ok=ok))
+        return out
+
+    def document(self):
+        """steps.md: the cam's dimensions and the follower's motion, each line checked."""
+        ex = self.exercise
+        lines = self.lines()
+        return [title(ex.name, ex.description),
+                Section(phrase("heading.arc_cam"), (Bullets(tuple(lines[:2])),), ("profile",)),
+                Section(phrase("heading.arc_motion"), (Bullets(tuple(lines[2:])),),
+                        ("displacement", "velocity", "acceleration"))]
+
+    # ----- figures ------------------------------------------------------------------------
+    @property
+    def figures(self) -> dict[str, Any]:
+        """The cam drawn to scale, then the follower's lift, velocity and acceleration over
+        the lift and the return, the asked motions marked."""
+        ex, c = self.exercise, self.exercise.cam
+        w = abs(ex.omega)
+        top = 2 * math.degrees(c.alpha)
+        xs = [top * i / 720 for i in range(721)]
+        values = [arc_motion(c, math.radians(x), w) for x in xs]
+        scale = (1 / ex.metre, 1 / ex.metre, 1.0)
+        labels = (f"y ({unit_words(ex.length_unit)})",
+                  f"ẏ ({unit_words(ex.length_unit + '/s')})", f"ÿ ({unit_words('m/s²')})")
+        step = 15 if top > 120 else 10
+        ticks = [(float(d), numerals(f"{d}")) for d in range(0, int(top) + 1, step)]
+        out = {"profile": draw_arc_cam(self.outline, c, words("{name}: the cam", name=ex.name),
+                                       ex.length_unit, ex.metre)}
+        for which, stem, heading in ((0, "displacement", "lift"), (1, "velocity", "velocity"),
+                                     (2, "acceleration", "acceleration")):
+            series = Series(words(heading), tuple((x, v[which] * scale[which])
+                                                  for x, v in zip(xs, values)))
+            seen = {(round(math.degrees(r.theta), 9), r.value) for r in self.readings
+                    if r.which == which}
+            marks = [PlotMark(x, v * scale[which], words("θ = {theta}°", theta=numeral(x, ".4g")))
+                     for x, v in sorted(seen)]
+            out[stem] = draw_line_plot(words("{name}: " + heading, name=ex.name),
+                                       words("cam angle θ (°)"), labels[which], [series], marks,
+                                       x_range=(0.0, top), x_ticks=ticks,
+                                       mark_legend=words("the motions asked"))
+        return out
+
+
+def solve_arc_cam(ex: ArcCamExercise) -> ArcCamSolution:
+    """Solve the cam of arcs ``ex``."""
+    return ArcCamSolution(ex)
