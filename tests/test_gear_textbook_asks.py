@@ -199,3 +199,95 @@ def test_unknown_planetary_teeth_without_a_least_count_are_refused():
                      given="member = 2", find='["teeth1"]')
     with pytest.raises(InputError, match=r"give least_teeth = … in \[ratio\]"):
         parse_train(text, "t.toml")
+
+
+# ----- a reverted train to design, and two shafts a given distance apart -------------------------
+def test_gears_reverted_train_design():
+    """The corpus's reverted train, bundled: N_B = 4·N_A, N_D = 3·N_C, and the shafts in line,
+    3.125·5·N_A = 2.5·4·N_C, so N_C = 25/16·N_A, whole from N_A = 32 (≥ 24): 32, 128, 50,
+    150, and 3.125 mm·(32 + 128)/2 = 250 mm between the shafts."""
+    s = solve_train(load("reverted-train-design"))
+    q = s.quantities
+    assert [q[f"teeth{n}"].exact for n in (1, 2, 3, 4)] == [32, 128, 50, 150]
+    assert q["omega4/omega1"].exact == F(1, 12)
+    assert q["centre_distance1_2"].exact == F(250, 1000)      # m, exact
+    assert s.passed
+
+
+def test_gears_parallel_shafts_teeth():
+    """The corpus's shafts 600 mm apart at 360 and 120 rpm, module 5 mm, bundled:
+    d1 + d2 = 1200 mm with d2 = 3·d1, so N1 = 300/5 = 60 and N2 = 900/5 = 180."""
+    s = solve_train(load("shafts-apart"))
+    q = s.quantities
+    assert (q["teeth1"].exact, q["teeth2"].exact, q["omega2"].exact) == (60, 180, -120)
+    assert s.passed
+
+
+TWO = """name = "a pair"
+[units]
+length = "mm"
+[[gear]]
+number = 1
+module = {module}
+{first}
+[[gear]]
+number = 2
+module = {module}
+[[mesh]]
+gears = [1, 2]
+centre_distance = {distance}
+{ratio}
+[input]
+member = 1
+speed = 100
+[ask]
+find = {find}
+"""
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.integers(8, 80), st.integers(1, 9), st.sampled_from(["1", "2.5", "4", "6"]))
+def test_a_centre_distance_and_a_ratio_give_the_pair(n1, k, module):
+    """C = m(N1 + N2)/2 with N2 = k·N1: N1 = 2C/(m(1 + k)), whatever the module; and the
+    distance asked back is C itself."""
+    m = F(module)
+    distance = m * n1 * (1 + k) / 2
+    text = TWO.format(module=module, first="", distance=float(distance),
+                      ratio=f'[ratio]\nof = "omega1/omega2"\nvalue = {k}',
+                      find='["teeth1", "teeth2", "centre_distance1_2"]')
+    q = solve_train(parse_train(text, "t.toml")).quantities
+    assert (q["teeth1"].exact, q["teeth2"].exact) == (n1, k * n1)
+    assert q["centre_distance1_2"].exact == distance / 1000        # mm → m, exact
+    assert all(x.passed for x in q.values())
+
+
+def test_one_count_from_a_centre_distance():
+    """A pinion of 20 teeth, module 4 mm, 100 mm from its wheel: N2 = 2·100/4 − 20 = 30."""
+    text = TWO.format(module=4, first="teeth = 20", distance=100, ratio="",
+                      find='["teeth2"]')
+    assert solve_train(parse_train(text, "t.toml")).quantities["teeth2"].exact == 30
+
+
+def test_a_distance_that_breaks_a_count_is_refused():
+    """A pinion of 20 teeth at 4 mm, 101 mm from its wheel: 2·101/4 − 20 = 30.5 teeth."""
+    text = TWO.format(module=4, first="teeth = 20", distance=101, ratio="", find='["teeth2"]')
+    with pytest.raises(InputError, match=r"the centre distance 101 mm = 4 mm·\(20 \+ N2\)/2 "
+                                         r"gives gear 2 30\.5 teeth"):
+        parse_train(text, "t.toml")
+
+
+def test_teeth_that_miss_the_centre_distance_are_refused():
+    """20 and 30 teeth at 4 mm stand 100 mm apart, not the 120 mm given."""
+    text = TWO.format(module=4, first="teeth = 20", distance=120, ratio="",
+                      find='["omega2"]').replace("number = 2\n", "number = 2\nteeth = 30\n")
+    with pytest.raises(InputError, match=r"stand 100 mm apart by their teeth and module, not "
+                                         r"the centre distance 120 mm given"):
+        parse_train(text, "t.toml")
+
+
+def test_a_centre_distance_is_asked_of_a_pair_in_mesh_with_a_module():
+    text = TWO.format(module=4, first="teeth = 20", distance=100, ratio="",
+                      find='["centre_distance1_3"]')
+    with pytest.raises(InputError, match=r"cannot find 'centre_distance1_3': ask the centre "
+                                         r"distance of a pair in mesh, centre_distance1_2"):
+        parse_train(text, "t.toml")

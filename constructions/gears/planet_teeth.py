@@ -1,11 +1,13 @@
-"""A planetary train's teeth from the speed ratio the book gives, and a least tooth count.
+"""A train's teeth from the speed ratios the book gives, and a least tooth count.
 
 The books design an epicyclic gear to a ratio: "the carrier turns at 1/5 of the sun's speed,
-no wheel has fewer than 16 teeth". Through the table, the ratio ω_x/ω_y is a bilinear
+no wheel has fewer than 16 teeth"; or a reverted train to its pairs' ratios and modules, or
+two shafts a given distance apart. Through the table, the ratio ω_x/ω_y is a bilinear
 (Möbius) function of any one count, (a·N + b)/(c·N + d) (each mesh's ratio is N or 1/N,
 and the table adds the arm's turn), so three trial counts fix it and the count the ratio
 asks follows at once: for the sun-and-ring train with the ring fixed, ω_s/ω_a = 1 + N_r/N_s.
-The coaxial condition (:func:`~.teeth.imply_teeth`) gives the rest. With several counts
+The coaxial condition and the centre distances given (:func:`~.teeth.imply_teeth`) give
+the rest, and a count they tie to the one tried follows it. With several counts
 unknown, the smallest takes the least count, or the fewest above it that make every
 other count whole, as the books choose it.
 """
@@ -21,12 +23,16 @@ from .tabular import fraction_text, tabulate
 from .teeth import imply_teeth, unknown_teeth
 from .train import GearTrain
 
-__all__ = ["planetary_teeth_from_ratio"]
+__all__ = ["teeth_from_ratios"]
 
-_TRIALS = (1001, 1013)
-"""Where the trial counts that fix the Möbius function are sought (any three that make a
-train do: large, so that the counts the coaxial condition takes from them stay positive,
-and a dozen, so that whole ones come among them whatever their parity)."""
+Ratio = tuple[tuple[int, int], Fraction]
+"""A speed ratio the book gives: ((x, y), |ω_x/ω_y|)."""
+
+_TRIALS = (*range(2, 14), *range(1001, 1013))
+"""The trial counts the Möbius function is fixed by (any three that make a train do): small
+ones, so that a count a given distance ties to them stays positive, then large ones, so
+that one the coaxial condition takes from them beside a ring does; a dozen of each, so
+that whole ones come among them whatever their parity."""
 _STAND_INS = ((1009, 1013), (2003, 2011))
 """Two sets of counts for the other unknowns: a count the ratio fixes alone comes out the
 same with either."""
@@ -34,11 +40,11 @@ _SEARCH = 300
 """How far above the least count the search goes before it gives up."""
 
 
-def planetary_teeth_from_ratio(train: GearTrain, of: tuple[int, int], value: Fraction,
-                               least: int | None) -> tuple[GearTrain, tuple[Phrase, ...]]:
-    """The teeth a planetary train's speed ratio |ω_x/ω_y| = ``value`` leaves to find, and
-    the steps: one count from the ratio, or, with ``least``, several, the smallest at the
-    least count and the rest by the ratio and the coaxial condition.
+def teeth_from_ratios(train: GearTrain, ratios: list[Ratio], least: int | None
+                      ) -> tuple[GearTrain, tuple[Phrase, ...]]:
+    """The teeth the speed ratios |ω_x/ω_y| leave to find, and the steps: a count from
+    each ratio, or, with ``least``, the smallest of those left at the least count and the
+    rest by the ratios, the coaxial condition and the centre distances.
 
     Raises
     ------
@@ -49,33 +55,34 @@ def planetary_teeth_from_ratio(train: GearTrain, of: tuple[int, int], value: Fra
     unknown = unknown_teeth(train)
     if not unknown:
         return train, ()
-    found = _fill(train, of, value)
+    found = _fill(train, ratios)
     if found is not None:
         return found
     if least is None:
         raise InputError(f"gears {', '.join(map(str, unknown))} have no teeth, and the speed "
-                         "ratio and the coaxial condition fix one count each: give "
-                         "least_teeth = … in [ratio], or the others' teeth",
+                         "ratios, the coaxial condition and the centre distances leave them "
+                         "open: give least_teeth = … in [ratio], or more teeth",
                          file=train.source or None)
     for n in range(least, least + _SEARCH):
         for g in unknown:
-            found = _fill(_with(train, g, n), of, value)
+            found = _fill(_with(train, g, n), ratios)
             if found is None:
                 continue
             done, steps = found
             if all(done.gear(h).teeth >= n for h in unknown):
                 return done, (phrase("gears.teeth_least_set", g=g, least=least, teeth=n),
                               *steps)
+    said = ", ".join(f"ω{x}/ω{y} = {float(v):g}" for (x, y), v in ratios)
     raise InputError(f"no whole counts of {least} teeth or more for gears "
-                     f"{', '.join(map(str, unknown))} give the speed ratio "
-                     f"ω{of[0]}/ω{of[1]} = {float(value):g}", file=train.source or None)
+                     f"{', '.join(map(str, unknown))} give the speed ratio"
+                     f"{'s' * (len(ratios) > 1)} {said}", file=train.source or None)
 
 
-def _fill(train: GearTrain, of: tuple[int, int], value: Fraction
+def _fill(train: GearTrain, ratios: list[Ratio]
           ) -> tuple[GearTrain, tuple[Phrase, ...]] | None:
-    """``train`` with every count the coaxial condition and the ratio give in turn, and the
-    steps; None where they leave a count unknown or give one that is not whole and
-    positive, or the ratio does not hold."""
+    """``train`` with every count the coaxial condition, the distances and the ratios give
+    in turn, and the steps; None where they leave a count unknown or give one that is not
+    whole and positive, or a ratio does not hold."""
     steps: list[Phrase] = []
     while True:
         try:
@@ -85,19 +92,22 @@ def _fill(train: GearTrain, of: tuple[int, int], value: Fraction
         steps += said
         unknown = unknown_teeth(train)
         if not unknown:
-            return (train, tuple(steps)) if abs(_ratio(train, of)) == value else None
-        for g in unknown:
-            got = _one(train, of, value, g)
-            if got is not None:
-                train = _with(train, g, got[0])
-                steps.append(got[1])
-                break
-        else:
+            try:
+                holds = all(abs(_ratio(train, of)) == value for of, value in ratios)
+            except (InputError, ZeroDivisionError):
+                return None
+            return (train, tuple(steps)) if holds else None
+        got = next((found for g in unknown for of, value in ratios
+                    if (found := _one(train, of, value, g)) is not None), None)
+        if got is None:
             return None
+        g, n, step = got
+        train = _with(train, g, n)
+        steps.append(step)
 
 
 def _one(train: GearTrain, of: tuple[int, int], value: Fraction, g: int
-         ) -> tuple[int, Phrase] | None:
+         ) -> tuple[int, int, Phrase] | None:
     """Gear ``g``'s count from the ratio, the counts the coaxial condition ties to it
     following it, whatever the other unknowns' counts (two sets of stand-ins must give it
     alike); None where they do not, or it is not whole."""
@@ -105,8 +115,8 @@ def _one(train: GearTrain, of: tuple[int, int], value: Fraction, g: int
     if None in answers or answers[0][0] != answers[1][0]:
         return None
     n, expr = answers[0]
-    return n, phrase("gears.teeth_ratio_table", x=of[0], y=of[1], value=fraction_text(value),
-                     g=g, expr=expr, teeth=n)
+    return g, n, phrase("gears.teeth_ratio_table", x=of[0], y=of[1],
+                        value=fraction_text(value), g=g, expr=expr, teeth=n)
 
 
 def _trial(train: GearTrain, of: tuple[int, int], g: int, n: int,
@@ -128,7 +138,7 @@ def _solve(train: GearTrain, of: tuple[int, int], value: Fraction, g: int,
     ratio as said, "(N1 + 16)/16"; None if there is none (or the ratio does not hang on
     N)."""
     samples = []
-    for n in range(_TRIALS[0], _TRIALS[1]):
+    for n in _TRIALS:
         r = _trial(train, of, g, n, stand_in)
         if r is not None:
             samples.append((Fraction(n), r))

@@ -3,6 +3,7 @@
 A gear may come with no teeth. Its count then follows, exactly, from
 
 - its pitch diameter and module, N = d/m (read with the file: :func:`teeth_from_diameter`);
+- a pair's centre distance with its module (:func:`imply_teeth`), C = m(N_a ± N_b)/2;
 - the coaxial condition (:func:`imply_teeth`): the arm carries each planet body at one
   radius, so its meshes with the gears on the main axis stand equally far from it,
   m(N_c + N_p)/2 externally and m(N_c − N_p)/2 inside a ring: the notes' N1 = N2 + 2·N4,
@@ -39,7 +40,8 @@ def unknown_teeth(train: GearTrain) -> list[int]:
 
 def imply_teeth(train: GearTrain, coaxial: tuple[int, int] | None = None
                 ) -> tuple[GearTrain, tuple[Phrase, ...]]:
-    """``train`` with every tooth count the coaxial condition gives, and its steps.
+    """``train`` with every tooth count the coaxial condition and the centre distances given
+    fix, and its steps.
 
     Raises
     ------
@@ -50,6 +52,14 @@ def imply_teeth(train: GearTrain, coaxial: tuple[int, int] | None = None
     grew = True
     while grew and unknown_teeth(train):
         grew = False
+        by_distance = _from_distance(train)
+        if by_distance is not None:
+            number, teeth, step = by_distance
+            train = replace(train, gears=tuple(replace(g, teeth=teeth) if g.number == number
+                                               else g for g in train.gears))
+            steps.append(step)
+            grew = True
+            continue
         for pairs in _coaxial_sets(train, coaxial):
             found = _solve(train, pairs)
             if found is None:
@@ -62,6 +72,42 @@ def imply_teeth(train: GearTrain, coaxial: tuple[int, int] | None = None
             grew = True
             break
     return train, tuple(steps)
+
+
+def _from_distance(train: GearTrain) -> tuple[int, int, Phrase] | None:
+    """The one unknown count of a pair whose centre distance C the file gives, with its
+    module m: N = 2C/m − N_other outside, N_other ± 2C/m inside a ring (the ring listed
+    second); None where no such pair is left.
+
+    Raises
+    ------
+    InputError
+        If the pair has no module, or the count comes out broken or not positive.
+    """
+    for mesh in train.meshes:
+        missing = [g for g in (mesh.a, mesh.b) if _teeth(train, g) is None]
+        if mesh.distance is None or len(missing) != 1:
+            continue
+        g = missing[0]
+        other = mesh.b if g == mesh.a else mesh.a
+        m = _module(train, mesh)
+        if m is None:
+            raise InputError(f"gears {mesh.a} and {mesh.b} are given a centre distance but no "
+                             "module: give the module of one of them",
+                             file=train.source or None)
+        span = 2 * mesh.distance / m
+        teeth = (span - _teeth(train, other) if not mesh.internal else
+                 _teeth(train, other) + (span if g == mesh.b else -span))
+        sign = "−" if mesh.internal else "+"
+        a, b = (f"N{n}" if n == g else str(_teeth(train, n)) for n in (mesh.a, mesh.b))
+        said = f"{train._length(mesh.distance)} = {train._length(m)}·({a} {sign} {b})/2"
+        if teeth.denominator != 1 or teeth <= 0:
+            raise InputError(f"the centre distance {said} gives gear {g} {float(teeth):g} "
+                             "teeth, not a whole number of one or more: check the distance, "
+                             "the module and the teeth", file=train.source or None)
+        return g, int(teeth), phrase("gears.teeth_distance", n=g, equation=said,
+                                     teeth=int(teeth))
+    return None
 
 
 def _coaxial_sets(train: GearTrain, coaxial: tuple[int, int] | None

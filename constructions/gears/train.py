@@ -53,6 +53,9 @@ class Mesh:
     a: int
     b: int
     internal: bool = False
+    distance: Fraction | None = None
+    """The centre distance (m) the file gives the pair, where it does: it fixes their
+    teeth with their module, m(N_a ± N_b)/2 (:mod:`.teeth`)."""
 
     @property
     def word(self) -> str:
@@ -104,8 +107,8 @@ class GearTrain:
     """The gears whose teeth those steps found."""
     coaxial: tuple[int, int] | None = None
     """An ordinary reverted train's two gears on one axis, where the file names them."""
-    ratio_given: tuple[int, int, Fraction] | None = None
-    """A speed ratio |ω_x/ω_y| the file gives to find teeth by, as (x, y, value)."""
+    ratio_given: tuple[tuple[int, int, Fraction], ...] = ()
+    """The speed ratios |ω_x/ω_y| the file gives to find teeth by, each (x, y, value)."""
     efficiency: Fraction = Fraction(1)
     """The share of the input's power the output takes (1: no losses)."""
     second: tuple[int, Fraction] | None = None
@@ -260,6 +263,11 @@ class GearTrain:
             if mesh.internal and a.teeth == b.teeth:
                 raise self._fail(f"{a.label} and {b.label} mesh internally but have the same "
                                  f"{a.teeth} teeth: a ring has more than the gear inside it")
+            if mesh.distance is not None and self._mesh_length(mesh) != mesh.distance:
+                raise self._fail(f"{a.label} and {b.label} stand "
+                                 f"{self._length(self._mesh_length(mesh))} apart by their "
+                                 f"teeth and module, not the centre distance "
+                                 f"{self._length(mesh.distance)} given: check the teeth")
         if self.fixed is not None and self.input_member in self.body(self.fixed):
             raise self._fail(f"the input, member {self.input_member}, is the fixed member; "
                              "drive another")

@@ -32,6 +32,8 @@ PHRASES: dict[str, str] = {
                          "N·m.",
     "gears.teeth_diameter": "Gear {n}'s teeth from its pitch diameter and module: N{n} = d/m "
                             "= {d}/{m} = {teeth}.",
+    "gears.teeth_distance": "Gear {n}'s teeth from its pair's centre distance and module, "
+                            "{equation}: N{n} = {teeth}.",
     "gears.teeth_coaxial": "{gear}: the coaxial condition, the two pairs equally far apart, "
                            "{equation}, gives N{n} = {teeth}.",
     "gears.twin": "Gear {copy} is a planet like gear {first}: the same teeth, the same meshes, "
@@ -44,8 +46,9 @@ PHRASES: dict[str, str] = {
     "gears.teeth_ratio": "The speed ratio the book gives, |ω{x}/ω{y}| = {value}, is {expr} "
                          "through the meshes: N{g} = {teeth}.",
     "gears.teeth_ratio_table": "The speed ratio the book gives, |ω{x}/ω{y}| = {value}, is "
-                               "{expr} by the table (the fixed member held, each mesh N or "
-                               "1/N): N{g} = {teeth}.",
+                               "{expr} through the train with N{g} unknown (each mesh N or "
+                               "1/N, a count the coaxial condition or a centre distance ties "
+                               "to N{g} written through it): N{g} = {teeth}.",
     "gears.teeth_least_set": "Gear {g}, the smallest of the gears left unknown, takes the "
                              "least count, {least} teeth, or the fewest above it that make "
                              "the others whole: N{g} = {teeth}.",

@@ -16,7 +16,20 @@ from fractions import Fraction
 from ..errors import InputError
 from ..gears.train import GearTrain
 
-__all__ = ["willis_speeds", "willis_torques", "coaxial_teeth"]
+__all__ = ["willis_speeds", "willis_torques", "coaxial_teeth", "pitch_distance"]
+
+
+def pitch_distance(train: GearTrain, a: int, b: int, internal: bool) -> Fraction | None:
+    """The distance between two meshing gears' axes from their pitch circles alone, each
+    radius N·m/2 at its own gear's module: their sum, or inside a ring their difference;
+    None where a gear gives no module."""
+    radii = []
+    for n in (a, b):
+        g = train.gear(n)
+        if g.module is None or g.teeth is None:
+            return None
+        radii.append(g.teeth * g.module / 2)
+    return abs(radii[0] - radii[1]) if internal else radii[0] + radii[1]
 
 
 def willis_speeds(train: GearTrain) -> dict[int, Fraction]:

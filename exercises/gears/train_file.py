@@ -15,7 +15,7 @@ from typing import Any, ClassVar
 from tarsim.constructions.asks import symbol
 from tarsim.constructions.errors import InputError
 from tarsim.constructions.gears.involute import Involute, check_mesh
-from tarsim.constructions.gears.planet_teeth import planetary_teeth_from_ratio
+from tarsim.constructions.gears.planet_teeth import teeth_from_ratios
 from tarsim.constructions.gears.torques import implied_output
 from tarsim.constructions.gears.teeth import (imply_teeth, teeth_from_diameter,
                                               teeth_from_ratio, unknown_teeth)
@@ -107,7 +107,7 @@ class _Reader(InputTables):
         units = self.units()
         gears = self.gears(units)
         arm, arm_name, planets = self.arm()
-        meshes = self.meshes()
+        meshes = self.meshes(units)
         shafts = self.shafts()
         fixed = self.fixed()
         member, speed, second = self.inputs(units)
@@ -147,9 +147,12 @@ class _Reader(InputTables):
         train = replace(train, coaxial=tuple(coaxial) if coaxial else None)
         train, steps = imply_teeth(train, train.coaxial)
         if "ratio" in self.data:
-            of, value, least = self.ratio(train)
-            by_ratio = planetary_teeth_from_ratio if train.planetary else teeth_from_ratio
-            train, more = by_ratio(replace(train, ratio_given=(*of, value)), of, value, least)
+            ratios, least = self.speed_ratios(train)
+            train = replace(train, ratio_given=tuple((*of, value) for of, value in ratios))
+            if train.planetary or len(ratios) > 1 or any(m.distance for m in train.meshes):
+                train, more = teeth_from_ratios(train, ratios, least)
+            else:
+                train, more = teeth_from_ratio(train, *ratios[0], least)
             steps = (*steps, *more)
         for g in unknown_teeth(train):
             raise InputError(f"gear {g} needs its teeth: give teeth = …, or its diameter with "
@@ -158,25 +161,39 @@ class _Reader(InputTables):
         return replace(train, implied=(*self.sized_teeth, *steps),
                        implied_teeth=(*self.from_diameter, *implied))
 
-    def ratio(self, train: GearTrain) -> tuple[tuple[int, int], Fraction, int | None]:
-        """``[ratio]``: a speed ratio the book gives, of = "omega2/omega6", value = 12, and
-        least_teeth for a pair it leaves both unknown."""
-        t = self.data["ratio"]
+    def speed_ratios(self, train: GearTrain
+                     ) -> tuple[list[tuple[tuple[int, int], Fraction]], int | None]:
+        """``[ratio]``, or a ``[[ratio]]`` for each pair the book gives one: the speed
+        ratios, and the least tooth count (in any of them) for counts they leave unknown."""
+        tables = self.data["ratio"]
+        tables = tables if isinstance(tables, list) else [tables]
+        found = [self.ratio(train, t, i) for i, t in enumerate(tables)]
+        leasts = [least for _, _, least in found if least is not None]
+        if len(leasts) > 1:
+            raise self.fail("give least_teeth once, in one [[ratio]]", "ratio", "least_teeth",
+                            1)
+        return [(of, value) for of, value, _ in found], (leasts[0] if leasts else None)
+
+    def ratio(self, train: GearTrain, t: Any, i: int = 0
+              ) -> tuple[tuple[int, int], Fraction, int | None]:
+        """One ``[ratio]``: a speed ratio the book gives, of = "omega2/omega6", value = 12,
+        and least_teeth for counts it leaves unknown."""
         if not isinstance(t, dict):
             raise self.fail('must be a table: [ratio] of = "omega2/omega6", value = 12', "ratio")
-        self.known(t, ("of", "value", "least_teeth"), "ratio")
+        self.known(t, ("of", "value", "least_teeth"), "ratio", i)
         parts = t.get("of", "").split("/") if isinstance(t.get("of"), str) else []
         numbers = [p.removeprefix("omega") for p in parts]
         if len(parts) != 2 or not all(p.startswith("omega") and n.isdigit() and int(n) in
                                       train.members for p, n in zip(parts, numbers)):
             raise self.fail('name the ratio of two members\' speeds: of = "omega2/omega6"',
-                            "ratio", "of")
+                            "ratio", "of", i)
         if "value" not in t:
-            raise self.fail("give the ratio's value = …", "ratio")
-        value = abs(self.exact(t["value"], "the ratio", "ratio", "value"))
+            raise self.fail("give the ratio's value = …", "ratio", index=i)
+        value = abs(self.exact(t["value"], "the ratio", "ratio", "value", i))
         if value == 0:
-            raise self.fail("a speed ratio of 0 fixes no teeth", "ratio", "value")
-        least = (self.integer(t["least_teeth"], "the least tooth count", "ratio", "least_teeth")
+            raise self.fail("a speed ratio of 0 fixes no teeth", "ratio", "value", i)
+        least = (self.integer(t["least_teeth"], "the least tooth count", "ratio",
+                                "least_teeth", i)
                  if "least_teeth" in t else None)
         return (int(numbers[0]), int(numbers[1])), value, least
 
@@ -336,21 +353,29 @@ class _Reader(InputTables):
             raise self.fail(f"member {n} is both a gear and the arm", "arm", "number")
         return n, t.get("name", ""), planets
 
-    def meshes(self) -> tuple[Mesh, ...]:
+    def meshes(self, units: SpeedUnits) -> tuple[Mesh, ...]:
         out = []
         for i, t in enumerate(self.data.get("mesh") or []):
             pair = t.get("gears") if isinstance(t, dict) else None
             if not (isinstance(pair, list) and len(pair) == 2 and all(
                     isinstance(g, int) and not isinstance(g, bool) for g in pair)):
                 raise self.fail("a mesh names its two gears, gears = [2, 4]", "mesh", "gears", i)
-            self.known(t, ("gears", "kind"), "mesh", i)
+            self.known(t, ("gears", "kind", "centre_distance"), "mesh", i)
             kind = t.get("kind", "external")
             if kind not in ("external", "internal"):
                 raise self.fail(f"unknown mesh kind '{kind}'; use external or internal",
                                 "mesh", "kind", i)
             if pair[0] == pair[1]:
                 raise self.fail(f"gear {pair[0]} cannot mesh with itself", "mesh", "gears", i)
-            out.append(Mesh(pair[0], pair[1], kind == "internal"))
+            distance = None
+            if "centre_distance" in t:
+                distance = self.exact(t["centre_distance"], "a centre distance", "mesh",
+                                      "centre_distance", i)
+                if distance <= 0:
+                    raise self.fail("a centre distance must be positive", "mesh",
+                                    "centre_distance", i)
+                distance *= Fraction(repr(LENGTH_UNITS[units.length]))
+            out.append(Mesh(pair[0], pair[1], kind == "internal", distance))
         if not out:
             raise self.fail("list the meshes as [[mesh]] tables, gears = [2, 4]", key="mesh")
         return tuple(out)
@@ -442,6 +467,9 @@ class _Reader(InputTables):
         for q in find:
             if q in tuple(f"teeth{g.number}" for g in train.gears):
                 continue
+            if q.startswith("centre_distance"):
+                self.distance_asked(train, q)
+                continue
             if q in MESH_ASKS:
                 if involute is None:
                     raise self.fail(f"cannot find '{q}' without the mesh to draw: give "
@@ -485,6 +513,20 @@ class _Reader(InputTables):
                             "the output's torque or power too", "ask", "find")
         return tuple(find)
 
+    def distance_asked(self, train: GearTrain, q: str) -> None:
+        """Refuse ``centre_distance<a>_<b>`` unless gears a and b mesh and give their
+        module (the distance is m(N_a ± N_b)/2 in length)."""
+        pair = q.removeprefix("centre_distance").split("_")
+        numbers = [int(n) for n in pair if n.isdigit()]
+        pairs = [f"centre_distance{m.a}_{m.b}" for m in train.meshes]
+        if len(numbers) != 2 or len(pair) != 2 or not any(
+                {m.a, m.b} == set(numbers) for m in train.meshes):
+            raise self.fail(f"cannot find '{q}': ask the centre distance of a pair in mesh, "
+                            f"{', '.join(pairs)}", "ask", "find")
+        if any(train.gear(n).module is None for n in numbers):
+            raise self.fail(f"{q} needs the module of gears {numbers[0]} and {numbers[1]}: "
+                            "give module = … (mm) in their [[gear]] tables", "ask", "find")
+
     @staticmethod
     def ratios(train: GearTrain) -> tuple[str, ...]:
         """What a file that gives no speed and asks nothing is told: each turning member's
@@ -503,4 +545,6 @@ def ask_symbol(name: str) -> str:
         return f"P{name.removeprefix('power')}"
     if name.startswith("teeth"):
         return f"N{name.removeprefix('teeth')}"
+    if name.startswith("centre_distance"):
+        return f"C{name.removeprefix('centre_distance')}"
     return "/".join(symbol(p) for p in name.split("/"))

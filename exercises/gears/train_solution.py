@@ -25,7 +25,8 @@ from tarsim.constructions.narration import (numeral, numerals, phrase, significa
                                             words)
 from tarsim.constructions.reference.gear_mesh import (MeshReference, involute_miss, least_teeth,
                                                       mesh_reference)
-from tarsim.constructions.reference.willis import coaxial_teeth, willis_speeds, willis_torques
+from tarsim.constructions.reference.willis import (coaxial_teeth, pitch_distance,
+                                                   willis_speeds, willis_torques)
 from tarsim.graphics.gears.involute_figure import draw_involute_figure
 from tarsim.graphics.gears.kutzbach_figure import draw_kutzbach_figure
 from tarsim.graphics.gears.train_schematic import draw_train_schematic
@@ -115,6 +116,9 @@ class TrainSolution(ChapterFiles):
             if name.startswith("teeth"):
                 out[name] = self._teeth_quantity(int(name.removeprefix("teeth")))
                 continue
+            if name.startswith("centre_distance"):
+                out[name] = self._distance_quantity(name)
+                continue
             if name.startswith("torque"):
                 m = int(name.removeprefix("torque"))
                 si = float(torques[m]) / (math.pi if pi else 1.0)
@@ -192,6 +196,15 @@ class TrainSolution(ChapterFiles):
         return TrainQuantity(name, Fraction(value), Fraction(want), value, "involute mesh",
                              allowed)
 
+    def _distance_quantity(self, name: str) -> TrainQuantity:
+        """A pair's centre distance (m) from its teeth and module, m(N_a ± N_b)/2, beside
+        the sum (or difference) of the two pitch radii, each at its own gear's module."""
+        a, b = (int(n) for n in name.removeprefix("centre_distance").split("_"))
+        mesh = next(m for m in self.train.meshes if {m.a, m.b} == {a, b})
+        got = self.train._mesh_length(mesh)
+        ref = pitch_distance(self.train, a, b, mesh.internal)
+        return TrainQuantity(name, got, ref, float(got), "teeth and module")
+
     def _teeth_quantity(self, number: int) -> TrainQuantity:
         """A gear's teeth, given or found from the data, beside the reference's: the count
         that makes its mesh's centre distance the other pair's (train.py's distances, solved
@@ -204,14 +217,16 @@ class TrainSolution(ChapterFiles):
             ref = Fraction(round(float(gear.diameter) / float(gear.module)))
             return TrainQuantity(f"teeth{number}", found, ref, float(found), "d/m")
         by_axis = coaxial_teeth(train, number)
-        if train.ratio_given is None:
+        if not train.ratio_given:
             return TrainQuantity(f"teeth{number}", found, by_axis, float(found),
                                  "coaxial condition")
-        # the ratio the file gives, by the Willis speeds of the train with these teeth, and
-        # the coaxial condition where the count stands in it
-        x, y, value = train.ratio_given
+        # the ratios the file gives, by the Willis speeds of the train with these teeth,
+        # and the coaxial condition where the count stands in it
         speeds = self.reference
-        holds = abs(speeds[x] / speeds[y]) == value
+        holds = all(abs(speeds[x] / speeds[y]) == value for x, y, value in train.ratio_given)
+        # and each centre distance the file gives the gear's pairs, by their pitch circles
+        holds = holds and all(pitch_distance(train, m.a, m.b, m.internal) == m.distance
+                              for m in train.meshes if number in (m.a, m.b) and m.distance)
         return TrainQuantity(f"teeth{number}", found, (by_axis or found) if holds else
                              Fraction(0), float(found), "coaxial condition and speed ratio"
                              if by_axis else "speed ratio")
@@ -304,6 +319,13 @@ class TrainSolution(ChapterFiles):
                                       passed=q.passed, against=f"(formula: {reference})",
                                       method=q.method))
                 continue
+            if q.name.startswith("centre_distance"):
+                symbol = ask_symbol(q.name)
+                out.append(check_line(f"{symbol} = {self.train._length(q.exact)}",
+                                      width=len(symbol) + 31, passed=q.passed,
+                                      against=f"(pitch radii: "
+                                      f"{self.train._length(q.reference)})", method=q.method))
+                continue
             if q.name.startswith("teeth"):
                 out.append(check_line(f"N{q.name.removeprefix('teeth')} = {q.exact}",
                                       width=len(q.name) + 31, passed=q.passed,
@@ -376,6 +398,8 @@ class TrainSolution(ChapterFiles):
             found, willis = torque_text(q.exact, q.over_pi), torque_text(q.reference, q.over_pi)
         elif q.name.startswith("power"):
             found, willis = power_text(q.exact, q.times_pi), power_text(q.reference, q.times_pi)
+        elif q.name.startswith("centre_distance"):
+            found, willis = self.train._length(q.exact), self.train._length(q.reference)
         else:
             found, willis = fraction_text(q.exact), fraction_text(q.reference)
         return (ask_symbol(q.name), found, willis, words("yes" if q.passed else "NO"),
@@ -480,6 +504,8 @@ class TrainSolution(ChapterFiles):
                 reference["exact"] = _plain(q.reference)
             if q.flow:
                 entry["unit"], entry["flow"] = "W", q.flow
+            if q.name.startswith("centre_distance"):
+                entry["unit"] = "m"
             if speed:
                 entry["unit"] = self.train.units.speed
                 entry["rpm"] = (float(q.exact) if entry["unit"] == "rpm"

@@ -223,11 +223,20 @@ def _span(train: GearTrain, plane: dict[int, int], number: int) -> tuple[int, in
     return min(near), max(near)
 
 
+def _coaxial_partner(train: GearTrain, number: int) -> int | None:
+    """The gear an ordinary reverted train names on one axis with ``number``, if any."""
+    if train.coaxial is None or number not in train.coaxial:
+        return None
+    a, b = train.coaxial
+    return b if number == a else a
+
+
 def _axes(train: GearTrain) -> dict[int, float]:
     """Each gear's axis above the main axis (size units): 0 on the main axis, the carrier
     radius for a planet (one in series, meshing planets alone, a centre distance beyond
     the planet it meshes); in an ordinary train (or on a planetary train's side shaft) the
-    first gear's at 0 and each next one a centre distance above the one that drives it."""
+    first gear's at 0 and each next one a centre distance above the one that drives it, but
+    a reverted train's output on its input's axis (``coaxial``)."""
     side = train.off_axis                   # a side shaft: a centre distance off the axis
     first = next((g.number for g in train.gears
                   if not (train.planetary and train.carried(g.number)) and g.number not in side),
@@ -248,8 +257,11 @@ def _axes(train: GearTrain) -> dict[int, float]:
             for a, b in ((mesh.a, mesh.b), (mesh.b, mesh.a)):
                 if a in y and b not in y:
                     ra, rb = (float(train.pitch_radius(n)) for n in (a, b))
+                    partner = _coaxial_partner(train, b)
                     if train.planetary and not train.carried(b) and b not in side:
                         y[b] = 0.0
+                    elif partner in y:        # a reverted train's output: back on the input's
+                        y[b] = y[partner]
                     else:
                         y[b] = y[a] + (abs(ra - rb) if mesh.internal else ra + rb)
                     grew = True
