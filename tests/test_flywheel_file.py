@@ -476,3 +476,33 @@ def test_punch_sheared_area():
     assert q["power"].value["value"] == pytest.approx(energy / 10, rel=1e-15)
     assert q["delta_E"].value["value"] == pytest.approx(0.9 * energy, rel=1e-15)
     assert q["rim_mass"].value["value"] == pytest.approx(0.9 * energy / 18.75, rel=1e-14)
+
+
+def test_where_the_shaft_runs_fastest_and_slowest():
+    """The energy is highest where T falls through the mean and lowest where it rises
+    through it: for the table, 161.25° and 18.75°; for T = T_m + A sin(2θ − φ), φ =
+    atan(5700/9500), at (180° + φ)/2 (and a half turn on) and φ/2; a punch's shaft is
+    fastest as the punch starts (0°) and slowest as it ends (60°)."""
+    q = _q("single-cylinder-table")
+    assert q["speed_max_at"].value["value"] == pytest.approx(161.25, abs=1e-9)
+    assert q["speed_min_at"].value["value"] == pytest.approx(18.75, abs=1e-9)
+    q = _q("engine-harmonic-torque")
+    phi = math.degrees(math.atan2(5700, 9500))
+    assert q["speed_max_at"].value["value"] % 180 == pytest.approx((180 + phi) / 2, abs=1e-6)
+    assert q["speed_min_at"].value["value"] % 180 == pytest.approx(phi / 2, abs=1e-6)
+    q = _q("punching-press")
+    assert q["speed_max_at"].value["value"] == pytest.approx(0, abs=1e-9)
+    assert q["speed_min_at"].value["value"] == pytest.approx(60, abs=1e-9)
+    assert all(c.passed for c in q.values())
+
+
+def test_the_reference_finds_an_intercept_at_the_cycle_s_start():
+    """T = 16094 + 1432 sin 4θ + 1195 sin 3θ crosses its mean at θ = 0 exactly, where the
+    energy E = 358(1 − cos 4θ) + (1195/3)(1 − cos 3θ) is least (0): the reference's scan,
+    started off 0, finds it, so its ΔE is the drawing's, and at least E(π/4) = 716 +
+    (1195/3)(1 + √½)."""
+    d = Diagram(parse_formula("16094 + 1432*sin(4*theta) + 1195*sin(3*theta)"), 2 * math.pi)
+    from tarsim.constructions.reference.flywheel import integrated
+    ref = integrated(d.torque, d.cycle)
+    assert ref.delta_e == pytest.approx(read_diagram(d).delta_e, rel=H2 * 16 / 4)
+    assert ref.delta_e >= 716 + 1195 / 3 * (1 + math.sqrt(0.5))

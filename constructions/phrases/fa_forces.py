@@ -106,6 +106,10 @@ WORDS: dict[str, str] = {
         "در زمان سوراخ‌کاری، موتور با گشتاور ثابت E·t/T = {given} J از {energy} J لازم برای هر "
         "سوراخ را می‌دهد؛ باقی، E·(1 − t/T) = {delta} J، را چرخ طیار می‌دهد و پیش از سوراخ "
         "بعدی آن را بازمی‌گیرد.",
+    "the shaft runs fastest at θ = {high}° and slowest at θ = {low}°, where the energy it "
+    "holds is highest and lowest":
+        "محور در θ = {high}° تندترین و در θ = {low}° کندترین است، جایی که انرژی آن بیشینه و "
+        "کمینه است",
     "every number agrees with its reference": "همهٔ اعداد با مرجع خود سازگارند",
     "Each area times the diagram's scale ({scale} J per unit of area) is an energy: "
     "{energies} J.":

@@ -106,11 +106,18 @@ class Integrated:
     delta_e: float
     greatest: tuple[float, float]
     least: tuple[float, float]
+    levels: tuple[tuple[float, float], ...] = ()
+    """Each intercept (rad) and the energy there, ∫₀ (T − mean) dθ (J): the speed is
+    greatest where it is highest."""
 
 
 SCAN = 7919
 """The points :func:`integrated` scans a cycle at for sign changes and extremes: a prime, so
 that no scan point is a step of the diagram's own drawing."""
+
+START = (math.sqrt(5) - 1) / 2 / 16
+"""Where :func:`integrated`'s scan starts, as a share of the cycle: an irrational one, off 0
+and off every simple fraction of the cycle where a book's curve crosses its mean."""
 
 PANELS = 64
 """Gauss–Legendre panels a whole cycle is split into (each interval its share, at least one):
@@ -130,9 +137,11 @@ def integrated(torque: Callable[[float], float], cycle: float,
     central difference changes sign (and a table's points, either side of each, where a
     straight-line curve has them)."""
     inside = sorted(k for k in kinks if 0.0 < k < cycle)
+    # the kinks over two cycles, for a scan that starts within the first and runs a cycle on
+    edges_all = sorted(set(inside + [0.0, cycle] + [k + cycle for k in inside]))
 
     def area(a: float, b: float, f) -> float:
-        edges = [a] + [k for k in inside if a < k < b] + [b]
+        edges = [a] + [k for k in edges_all if a < k < b] + [b]
         total = []
         for lo, hi in zip(edges, edges[1:]):
             n = max(1, math.ceil(PANELS * (hi - lo) / cycle))
@@ -148,7 +157,10 @@ def integrated(torque: Callable[[float], float], cycle: float,
     def excess(t: float) -> float:
         return torque(t) - mean
 
-    grid = [cycle * i / SCAN for i in range(SCAN + 1)]
+    # The scan starts off 0, where a curve often crosses its mean exactly (T = A sin kθ):
+    # there a rounded zero may show no change of sign on either side of the wrap.
+    start = START * cycle
+    grid = [start + cycle * i / SCAN for i in range(SCAN + 1)]
     values = [excess(t) for t in grid]
     roots = []
     for i in range(SCAN):
@@ -157,8 +169,9 @@ def integrated(torque: Callable[[float], float], cycle: float,
             roots.append(grid[i])
         elif a * b < 0.0:
             roots.append(_root(excess, grid[i], grid[i + 1], a, b))
+    energies = []
     if roots:
-        energies, at, total = [], 0.0, 0.0
+        at, total = start, 0.0
         for r in roots:
             total += area(at, r, excess)
             energies.append(total)
@@ -179,7 +192,8 @@ def integrated(torque: Callable[[float], float], cycle: float,
                     for u in (t, math.nextafter(t, -math.inf))]
         t, v = max(options, key=lambda p, s=sign: s * p[1])
         found.append((t % cycle, v))
-    return Integrated(mean, delta_e, found[0], found[1])
+    return Integrated(mean, delta_e, found[0], found[1],
+                      tuple((r % cycle, e) for r, e in zip(roots, energies)))
 
 
 def _root(f, a: float, b: float, fa: float, fb: float) -> float:

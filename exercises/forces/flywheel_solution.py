@@ -183,16 +183,20 @@ class FlywheelSolution(ChapterFiles):
             q["speed_fluctuation"] = _check(
                 speed_fluctuation(r.delta_e, ex.speed, ex.inertia),
                 speed_fluctuation(ref_e, ex.speed, ex.inertia), tol, "C_s = ΔE/(I·ω²)")
-        if ex.speed is not None and (ex.speed_fluctuation is not None or
-                                     "speed_fluctuation" in q):
-            cs = ex.speed_fluctuation
-            c = q.get("speed_fluctuation")
-            got, want = speed_limits(ex.speed, cs if c is None else c.value["value"]), \
-                speed_limits(ex.speed, cs if c is None else c.reference["value"])
-            for key, v, w in (("speed_max", got[0], want[0]), ("speed_min", got[1], want[1])):
-                # ω·(1 ± C_s/2): C_s's error times C_s/2 over 1 ± C_s/2
-                q[key] = _check(v, w, (0.0 if c is None else c.tolerance) * (cs or 1.0),
-                                "ω(1 ± C_s/2), ω the mean of the two", unit="rad/s")
+        c = q.get("speed_fluctuation")
+        cs = ex.speed_fluctuation if c is None else c.value["value"]
+        # below 2: a flywheel so small that the speed would stop has no least speed
+        if ex.speed is not None and cs is not None and cs < 2:
+            got = speed_limits(ex.speed, cs)
+            want = speed_limits(ex.speed, cs if c is None else c.reference["value"])
+            for key, v, w, side in (("speed_max", got[0], want[0], 1.0),
+                                    ("speed_min", got[1], want[1], -1.0)):
+                # ω·(1 ± C_s/2): C_s's relative error times (C_s/2)/(1 ± C_s/2)
+                spread = 0.0 if c is None else c.tolerance * cs / 2 / (1 + side * cs / 2)
+                q[key] = _check(v, w, spread + 1e-15, "ω(1 ± C_s/2), ω the mean of the two",
+                                unit="rad/s")
+        if ref is not None and r.delta_e:
+            q |= self._fastest(ref, tol)
         if ref is not None and self.inertia:
             q |= self._extremes(ref)
             for theta in ex.at:
@@ -227,6 +231,28 @@ class FlywheelSolution(ChapterFiles):
         for k, key in enumerate(("rim_thickness", "rim_width")):
             # t ∝ √m (or 1/√r): half the mass's relative error
             out[key] = _check(got[k], want[k], tol, "b·t = m/(ρ·2πr), b = k·t", unit="m")
+        return out
+
+    def _fastest(self, ref: Integrated, tol: float) -> dict[str, Checked]:
+        """Where the shaft runs fastest and slowest: at the intercepts where the energy the
+        flywheel holds is highest and lowest (the diagram's for a driving torque, the
+        other way round for a resisting one). The reference's energy at the intercept
+        nearest each must be its own highest (or lowest), within ΔE's tolerance: two
+        intercepts of equal energy (a curve that repeats) are both right."""
+        r, ex = self.reading, self.exercise
+        top, bottom = (r.lowest, r.highest) if ex.resisting else (r.highest, r.lowest)
+        out = {}
+        for key, theta, pick in (("speed_max_at", top, max), ("speed_min_at", bottom, min)):
+            want = pick(self.sign * e for _, e in ref.levels)     # the flywheel's energy
+            near, energy = min(ref.levels, key=lambda p: abs(math.remainder(p[0] - theta,
+                                                                             ex.cycle)))
+            miss = abs(math.remainder(near - theta, ex.cycle)) / ex.cycle
+            off = abs(energy * self.sign - want) / max(ref.delta_e, sys.float_info.min)
+            out[key] = Checked({"value": math.degrees(theta) % math.degrees(ex.cycle),
+                                "unit": "°"}, {"value": math.degrees(near)},
+                               rel_error=max(miss, off), tolerance=max(tol, 1e-6),
+                               passed=miss <= 1e-6 and off <= max(tol, 1e-9),
+                               method="the intercept of the highest (lowest) energy")
         return out
 
     @property
@@ -330,6 +356,11 @@ class FlywheelSolution(ChapterFiles):
                              energy=numeral(r.delta_e), where=where))
         else:
             out.append(words("the turning moment is steady: ΔE = 0 and no flywheel is needed"))
+        if "speed_max_at" in q:
+            out.append(words("the shaft runs fastest at θ = {high}° and slowest at θ = {low}°, "
+                             "where the energy it holds is highest and lowest",
+                             high=numeral(q["speed_max_at"].value["value"], ".2f"),
+                             low=numeral(q["speed_min_at"].value["value"], ".2f")))
         if "inertia" in q:
             out.append(words("flywheel for C_s = {cs} at ω = {omega} rad/s: I = ΔE/(C_s·ω²) = "
                              "{inertia} kg·m²", cs=numeral(ex.speed_fluctuation, "g"),
