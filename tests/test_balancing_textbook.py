@@ -498,3 +498,83 @@ def test_a_v_engine_it_cannot_take_is_refused_in_one_line(old, new, words):
         parse_balance(VEE.replace(old, new, 1), "v.toml")
     message = str(e.value)
     assert "\n" not in message and message.startswith("v.toml:") and words in message, message
+
+
+FOUR_CRANKS = """
+[units]
+length = "mm"
+speed = "rpm"
+[engine]
+speed = 240
+crank = 300
+rod = 1200
+reciprocating = 400
+[[cylinder]]
+crank = 0
+plane = 0
+[[cylinder]]
+reciprocating = "?"
+crank = "?"
+plane = 450
+[[cylinder]]
+reciprocating = "?"
+crank = "?"
+plane = 1200
+[[cylinder]]
+crank = 120
+plane = 1800
+"""
+
+
+def test_a_four_crank_engine_in_primary_balance_finds_its_inner_cranks_then_its_secondary():
+    """Outer cranks 400 kg at 0° and 120°, planes 0, 0.45, 1.2, 1.8 m. Couples about crank 2's
+    plane (r common): m₃·0.75·e^{iθ₃} = 400·0.45 − 400·1.35·e^{i120°}; forces: m₂·e^{iθ₂} =
+    −(400 + 400·e^{i120°} + m₃·e^{iθ₃}). The secondary force ω²·r/n·|Σ mᵢ·e^{2iθᵢ}| (ω = 8π,
+    n = 4), each mᵢ·e^{2iθᵢ} = (mᵢ·e^{iθᵢ})²/mᵢ."""
+    s = solve_balance(parse_balance(FOUR_CRANKS, "e.toml"))
+    assert s.passed, s.failures
+    q = s.results["quantities"]
+    c120 = complex(math.cos(math.radians(120)), math.sin(math.radians(120)))
+    v3 = (400 * 0.45 - 400 * 1.35 * c120) / 0.75
+    v2 = -(400 + 400 * c120 + v3)
+    for name, v in (("2", v2), ("3", v3)):
+        assert q[f"mass_{name}"]["value"] == pytest.approx(abs(v), rel=1e-12)
+        assert q[f"angle_{name}"]["value"] == pytest.approx(
+            math.degrees(math.atan2(v.imag, v.real)) % 360, rel=1e-12)
+    assert q["primary_force"]["value"] == 0.0 and q["primary_couple"]["value"] == 0.0
+    doubled = 400 + 400 * c120 ** 2 + v2 ** 2 / abs(v2) + v3 ** 2 / abs(v3)
+    assert q["secondary_force"]["value"] == pytest.approx(
+        (8 * math.pi) ** 2 * 0.3 / 4 * abs(doubled), rel=1e-12)
+    assert {"space", "force-polygon", "couple-polygon", "secondary-force"} <= set(s.figures)
+
+
+def test_cylinders_of_their_own_masses_sum_each_at_its_crank():
+    """Two cylinders, 10 kg at 0° and 20 kg at 90°, 0.1 m apart: the primary force
+    ω²·r·|10 + 20i| and, about the centre plane, the couple ω²·r·|−0.05·10 + 0.05·20i|."""
+    text = FOUR_CRANKS.split("[[cylinder]]")[0].replace("reciprocating = 400\n", "") + (
+        "[[cylinder]]\ncrank = 0\nplane = 0\nreciprocating = 10\n"
+        "[[cylinder]]\ncrank = 90\nplane = 100\nreciprocating = 20\n")
+    q = solve_balance(parse_balance(text, "e.toml")).results["quantities"]
+    w = (8 * math.pi) ** 2 * 0.3
+    assert q["primary_force"]["value"] == pytest.approx(w * math.hypot(10, 20), rel=1e-12)
+    assert q["primary_couple"]["value"] == pytest.approx(w * math.hypot(0.5, 1.0), rel=1e-12)
+
+
+@pytest.mark.parametrize("old, new, words", [
+    ('reciprocating = "?"\ncrank = "?"\nplane = 450', 'crank = "?"\nplane = 450',
+     "3 unknowns, but complete primary balance closes the force and couple polygons"),
+    ("reciprocating = 400\n", "reciprocating = 400\nbalanced = 0.5\n",
+     "balanced is not taken where the cylinders' unknowns"),
+])
+def test_an_engine_whose_primary_balance_cannot_close_is_refused_in_one_line(old, new, words):
+    assert old in FOUR_CRANKS
+    with pytest.raises(InputError) as e:
+        parse_balance(FOUR_CRANKS.replace(old, new, 1), "e.toml")
+    message = str(e.value)
+    assert "\n" not in message and message.startswith("e.toml:") and words in message, message
+
+
+def test_an_engine_with_every_crank_unknown_is_refused_for_want_of_a_reference():
+    rows = "".join(f'[[cylinder]]\ncrank = "?"\nplane = {100 * i}\n' for i in range(4))
+    with pytest.raises(InputError, match=r"e.toml:\d+: every crank is unknown: give one "):
+        parse_balance(FOUR_CRANKS.split("[[cylinder]]")[0] + rows, "e.toml")

@@ -1,7 +1,8 @@
 """An in-line engine's primary and secondary forces and couples, by their polygons.
 
-Each cylinder's reciprocating mass m at crank radius r gives a primary force m·ω²·r·cos θ
-along the line of stroke: the x-component of a vector m·r·ω² turning with the crank. Its
+Each cylinder's reciprocating mass m (its own, where they differ) at crank radius r gives
+a primary force m·ω²·r·cos θ along the line of stroke: the x-component of a vector m·r·ω²
+turning with the crank. Its
 secondary force m·ω²·r·cos 2θ / n is the component of one turning at twice the speed, a
 crank at 2θ of size m·r/n (the direct crank). So the primary forces cancel at every angle
 when the vectors m·r along the cranks close their polygon, and the primary couples when
@@ -63,19 +64,18 @@ def draw_engine(e: Engine, reference: float | None = None) -> EnginePolygons:
         for kind, angle in (("1", theta), ("2", 2 * theta)):
             at = c.give(f"C{kind}{i}", g.Point(math.cos(angle), math.sin(angle)), label="")
             lines[kind, i] = c.draw(f"crank{kind}{i}", "line_through", o, at, kind=Kind.LINE)
-    mr = e.reciprocating * e.crank
     n = None if e.rod is None else e.rod / e.crank
     for k, kind in enumerate(engine_kinds(e)):
         order = "1" if kind.startswith("primary") else "2"
-        size = mr if order == "1" else mr / n
+        sizes = [m * e.crank / (1.0 if order == "1" else n) for m in e.each]
         vectors = [(str(i), size * ((p - ref) if kind.endswith("couple") else 1.0),
-                    lines[order, i]) for i, p in enumerate(e.planes, start=1)]
+                    lines[order, i]) for i, (p, size) in enumerate(zip(e.planes, sizes), start=1)]
         tag = f"e{k}"
         out.tips[kind] = []
         panel = Panel.COUPLE if kind.endswith("couple") else Panel.FORCE
         # A couple's arm p − ref rounds at the size of the planes it is taken between.
         reach = [size * ((abs(p) + abs(ref)) if kind.endswith("couple") else 1.0)
-                 for p in e.planes]
+                 for p, size in zip(e.planes, sizes)]
         out.closing[kind], shut = lay_polygon(
             c, out.tips[kind], tag, panel, vectors,
             phrase("balance.engine", kind=Word(kind), order="θᵢ" if order == "1" else "2θᵢ"),

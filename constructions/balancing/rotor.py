@@ -78,6 +78,9 @@ class Engine:
     revolving: float = 0.0
     balance_radius: float | None = None
     balance_mass: float | None = None
+    masses: tuple[float, ...] = ()
+    """Each cylinder's reciprocating mass (kg) where they differ (given one by one, or found
+    by a primary balance); empty where every cylinder has ``reciprocating``."""
     vee: float = 0.0
     """A V engine's angle between its two cylinders' lines (rad), both on one crank: 0 for
     cylinders in line."""
@@ -85,3 +88,8 @@ class Engine:
     """The order the cylinders fire in, where the file gives the cranks by it (empty where
     it gives them one by one), and the engine's ``strokes`` a cycle (2 or 4)."""
     strokes: int = 0
+
+    @property
+    def each(self) -> tuple[float, ...]:
+        """Each cylinder's reciprocating mass (kg), in the cylinders' order."""
+        return self.masses or (self.reciprocating,) * len(self.cranks)

@@ -114,14 +114,14 @@ def engine_sums(e: Engine, reference: float | None = None) -> EngineSums:
     midway between the end cylinders)."""
     if reference is None:
         reference = (min(e.planes) + max(e.planes)) / 2
-    f = e.reciprocating * e.speed ** 2 * e.crank
+    f = e.speed ** 2 * e.crank
     n = math.inf if e.rod is None else e.rod / e.crank     # no rod: no secondary asked
 
     def size(angles, arms) -> float:
         return math.hypot(math.fsum(a * math.cos(t) for t, a in zip(angles, arms)),
                           math.fsum(a * math.sin(t) for t, a in zip(angles, arms)))
-    ones = [1.0] * len(e.cranks)
-    arms = [p - reference for p in e.planes]
+    ones = list(e.each)                                     # each cylinder's mass
+    arms = [m * (p - reference) for m, p in zip(e.each, e.planes)]
     twice = [2 * t for t in e.cranks]
     return EngineSums(f * size(e.cranks, ones), f * size(e.cranks, arms),
                       f / n * size(twice, ones), f / n * size(twice, arms))
@@ -138,8 +138,8 @@ def engine_greatest_at(e: Engine, reference: float | None = None) -> dict[str, f
     smallest such crank-1 angle, in [0°, 180°) or [0°, 90°), is returned."""
     if reference is None:
         reference = (min(e.planes) + max(e.planes)) / 2
-    arms = [p - reference for p in e.planes]
-    ones = [1.0] * len(e.cranks)
+    arms = [m * (p - reference) for m, p in zip(e.each, e.planes)]
+    ones = list(e.each)
     out: dict[str, float | None] = {}
     for kind, order, weights in (("primary force", 1, ones), ("primary couple", 1, arms),
                                  ("secondary force", 2, ones), ("secondary couple", 2, arms)):

@@ -32,6 +32,9 @@ class Balancing(Chapter):
         return next(iter(self.solve(exercise).figures.values()))
 
     def asks(self, exercise) -> str:
+        if exercise.open is not None and exercise.engine is not None:
+            return ("the cylinders' unknowns by their primary balance, then the secondary "
+                    "forces and couples by their polygons")
         if exercise.open is not None:
             return "the unknowns of the masses by the force and couple polygons"
         if exercise.rotor is not None and exercise.engine is None:

@@ -39,8 +39,9 @@ def balance_figures(s: BalanceSolution) -> dict[str, Figure]:
     forces against crank angle (an engine's)."""
     ex = s.exercise
     unit, metre = ex.length_unit, LENGTH_UNITS[ex.length_unit]
-    if ex.open is not None:
-        return open_figures(ex.name, s.closure, ex.open, unit)
+    if ex.open is not None:     # and an engine's polygons, where its primary balance found it
+        return open_figures(ex.name, s.closure, ex.open, unit) | (
+            _engine_figures(s) if ex.engine else {})
     if ex.engine is None:
         return _rotor_figures(s, unit, metre)
     e = ex.engine

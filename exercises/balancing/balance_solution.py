@@ -104,9 +104,7 @@ class BalanceSolution(ChapterFiles):
     @cached_property
     def misses(self) -> list[tuple[str, float]]:
         """What disagrees: (name, miss relative to the size its sums round at)."""
-        if self.closure is not None:
-            return open_misses(self.closure, self.exercise.open)
-        out = []
+        out = [] if self.closure is None else open_misses(self.closure, self.exercise.open)
         if self.balance is not None:
             force_scale, couple_scale, product_scale = self.scales
             for name, want in self.expected.items():
@@ -214,9 +212,9 @@ class BalanceSolution(ChapterFiles):
     def lines(self) -> list[str]:
         """What the command line prints, and steps.md lists, in the language spoken."""
         ex = self.exercise
-        if ex.open is not None:
+        if ex.open is not None:     # and an engine's, where its primary balance found them
             return open_lines(self.closure, ex.open, ex.length_unit, self.passed,
-                              self.failures)
+                              self.failures) + (self._engine_lines() if ex.engine else [])
         if ex.engine is None:
             return self._rotor_lines()
         out = self._engine_lines()
@@ -346,7 +344,7 @@ class BalanceSolution(ChapterFiles):
         ex = self.exercise
         q: dict[str, Checked] = {}
         if ex.open is not None:
-            return open_checked(self.closure)
+            return open_checked(self.closure) | (self._engine_checked() if ex.engine else {})
         if ex.engine is not None:
             q |= self._engine_checked()
         if ex.rotor is not None:

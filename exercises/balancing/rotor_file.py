@@ -14,12 +14,13 @@ from dataclasses import dataclass
 from typing import Any, ClassVar
 
 from tarsim.constructions.balancing.rotor import Engine, Mass, Plane, Rotor
-from tarsim.constructions.balancing.unknowns import OpenRotor
+from tarsim.constructions.balancing.unknowns import OpenRotor, close_rotor
 from tarsim.constructions.units import LENGTH_UNITS
 from ..file_numbers import radians_in_turn
 from ..toml_source import _CONTROL
 from ..names import named_in, read_names, renamed_field
 from ..table_file import SPEEDS, Tables
+from .engine_unknowns import cylinder_masses, has_unknowns, primary_balance
 from .firing_order import firing_cranks, read_firing_order
 from .open_rotor_file import UNKNOWN, read_open_rotor
 
@@ -36,7 +37,7 @@ _KEYS = {"rotor": ("speed",), "mass": ("name", "mass", "radius", "angle", "plane
          "engine": ("speed", "crank", "stroke", "rod", "reciprocating", "balanced", "at",
                     "revolving", "balance_radius", "balance_mass", "firing_order", "strokes",
                     "road_speed", "wheel_diameter", "vee"),
-         "cylinder": ("crank", "plane")}
+         "cylinder": ("crank", "plane", "reciprocating")}
 
 
 @dataclass(frozen=True)
@@ -83,8 +84,10 @@ def parse_balance(text: str, filename: str = "<string>", exercise_id: str = "rot
                   length_unit=length, speed_unit=speed_unit,
                   names=read_names(data, t.where, filename))
     if "engine" in data:
-        engine = _engine(t, metre)
-        return BalanceExercise(engine=engine, rotor=_engine_rotor(t, engine, metre), **common)
+        engine, primary = _engine(t, metre)
+        return BalanceExercise(engine=engine, open=primary,
+                               rotor=None if primary else _engine_rotor(t, engine, metre),
+                               **common)
     if any(v == UNKNOWN for m in t.entries("mass") for v in m.values()):
         return BalanceExercise(open=read_open_rotor(
             t, metre, _speed(t, "rotor"),
@@ -243,7 +246,9 @@ def _planes(t: Tables, metre: float) -> list[Plane]:
     return planes
 
 
-def _engine(t: Tables, metre: float) -> Engine:
+def _engine(t: Tables, metre: float) -> tuple[Engine, OpenRotor | None]:
+    """The engine, and, where its cylinders leave unknowns to a primary balance, the rotor
+    whose polygons find them (the engine then the one they complete)."""
     one = _one(t, "engine")
     unit = t.units("m", "rad/s")[0]
     if ("crank" in one) == ("stroke" in one):
@@ -252,7 +257,6 @@ def _engine(t: Tables, metre: float) -> Engine:
                      else None)
     key = "crank" if "crank" in one else "stroke"
     crank = t.number(one, key, "engine", f"the {key}") / (1 if key == "crank" else 2)
-    mass = t.number(one, "reciprocating", "engine", "the reciprocating mass")
     if not crank > 0:
         raise t.fail(f"the {key} must be positive, got {crank:g} {unit}", "engine", key)
     rod = None          # the primary forces need no rod; the secondary ones are its
@@ -263,15 +267,22 @@ def _engine(t: Tables, metre: float) -> Engine:
                          f"({crank:g} {unit}), or the piston cannot follow it round", "engine",
                          "rod")
         rod *= metre
-    if not mass > 0:
-        raise t.fail(f"the reciprocating mass must be positive, got {mass:g} kg", "engine",
-                     "reciprocating")
     balanced = t.number(one, "balanced", "engine", "the balanced fraction", 0, 0.0)
     if not 0 <= balanced <= 1:
         raise t.fail(f"the balanced fraction is from 0 to 1, got {balanced:g}", "engine",
                      "balanced")
     vee = _vee(t, one)
     cylinders = t.entries("cylinder") or [{"crank": 0, "plane": 0}]
+    masses = cylinder_masses(t, one, cylinders)
+    if has_unknowns(cylinders):
+        primary = primary_balance(t, one, cylinders, masses, crank * metre, metre,
+                                  _engine_speed(t, one, metre))
+        found = close_rotor(primary).parts
+        each = tuple(found[p.name].mass for p in primary.parts)
+        return Engine(tuple(found[p.name].angle for p in primary.parts),
+                      tuple(found[p.name].plane for p in primary.parts), crank * metre, rod,
+                      max(each), primary.speed, masses=each), primary
+    mass = max(masses)
     firing = read_firing_order(t, one, cylinders)
     cranks = tuple(_degrees(d) for d in firing_cranks(*firing)) if firing else tuple(
         _degrees(t.number(c, "crank", "cylinder", f"cylinder {i + 1}'s crank angle", i, 0.0))
@@ -288,10 +299,16 @@ def _engine(t: Tables, metre: float) -> Engine:
                          "line need their planes apart (plane = …)", "cylinder",
                          "plane" if "plane" in cylinders[i] else None, i)
     revolving, radius, balance = _revolving(t, one, len(cranks), unit)
+    if len(set(masses)) > 1 and (t.entries("balance") or len(cranks) == 1 or vee):
+        raise t.fail("cylinders of different reciprocating masses are taken in line, with no "
+                     "balance planes: give the mass in [engine] alone", "cylinder",
+                     "reciprocating", next(i for i, c in enumerate(cylinders)
+                                           if "reciprocating" in c))
     return Engine(cranks, planes, crank * metre, rod, mass, _engine_speed(t, one, metre),
                   balanced, _degrees(t.number(one, "at", "engine", "the crank angle", 0, 0.0)),
                   revolving, None if radius is None else radius * metre, balance,
-                  vee, *(firing or ((), 0)))
+                  tuple(masses) if len(set(masses)) > 1 else (),
+                  vee, *(firing or ((), 0))), None
 
 
 def _engine_rotor(t: Tables, e: Engine, metre: float) -> Rotor | None:
