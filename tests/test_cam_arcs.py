@@ -118,3 +118,30 @@ def test_the_books_formulas_are_the_outline_anywhere(r1, nose, lift, degrees, u,
     t = 2 * a_t * u
     place = roller_place(outline("tangent", r1, r2, d, a_t), a_t - t, cam.roller)
     assert arc_motion(cam, t, 1.0)[0] == pytest.approx(place - r1 - cam.roller, abs=1e-12 * d)
+
+
+def test_an_eccentric_disc_under_a_roller_is_a_slider_crank():
+    """A disc of 100 mm diameter, e = 20 mm off the shaft, a roller of 25 mm diameter, at
+    300 rpm: crank e, rod L = 50 + 12.5 mm. From the lowest place the roller's centre is at
+    x = e cos ψ + √(L² − e² sin²ψ), ψ = 180° − θ: ẍ = ω²e(1 − e/L) at the lowest place,
+    −ω²e(1 + e/L) at the top; 90° on, ẋ = ωe exactly (sin 2ψ = 0)."""
+    text = Path(bundled("cams")["eccentric-flat-face"]).read_text(encoding="utf-8")
+    text = (text.replace("disc_radius = 40 ", "disc_diameter = 100 ")
+            .replace("eccentricity = 25 ", "eccentricity = 20 ")
+            .replace("speed = 10 ", "speed = 300 ")
+            .replace('kind = "flat-faced" ', 'kind = "roller"\ndiameter = 25\n')
+            .replace("[names]", "[ask]\nat = [90]\n\n[names]"))
+    text = text.replace('length = "mm"\nspeed = "rad/s"', 'length = "mm"\nspeed = "rpm"')
+    ex = parse_cam(text, "cam.toml")
+    s = solve(ex)
+    q = s.results["quantities"]
+    w, e, big = 10 * math.pi, 0.020, 0.0625
+    assert q["a_lift_start"]["value"] == pytest.approx(w * w * e * (1 - e / big), rel=1e-14)
+    assert q["a_apex"]["value"] == pytest.approx(-w * w * e * (1 + e / big), rel=1e-14)
+    assert q["v_at_90"]["value"] == pytest.approx(w * e, rel=1e-14)
+    assert q["lift"]["value"] == pytest.approx(2 * e, rel=1e-14)
+    # the greatest velocity: where d/dθ of ẋ vanishes, no faster than the crank's ωe(1 + …)
+    v = q["v_max"]["value"]
+    assert v > w * e and all(arc_motion(ex.cam, math.radians(d), w)[1] <= v * (1 + 1e-12)
+                             for d in range(0, 181))
+    assert not s.failures

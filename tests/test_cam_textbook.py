@@ -235,7 +235,8 @@ def test_an_eccentric_disc_under_a_flat_face_is_simple_harmonic_of_twice_its_ecc
 
 
 @pytest.mark.parametrize("old, new, words", [
-    ("kind = \"flat-faced\" ", "kind = \"roller\"\nradius = 5 ", "state it as a linkage"),
+    ("kind = \"flat-faced\" ", "kind = \"roller\"\nradius = 5\noffset = 3 ",
+     "under a follower translating on a line through the shaft"),
     ("eccentricity = 25 ", "eccentricity = 45 ", "the eccentricity (45) must be more than 0"),
     ("eccentricity = 25 ", "", "gives its radius (or disc_diameter) and its eccentricity"),
     ("disc_radius = 40 ", "disc_radius = 40\ndisc_diameter = 80 ", "not both"),
@@ -255,3 +256,25 @@ def test_an_eccentric_disc_makes_its_own_segments():
         parse_cam(text + '\n[[segment]]\nkind = "dwell"\nangle = 360\n', "cam.toml")
     half = parse_cam(text.replace("disc_radius = 40 ", "disc_diameter = 80 "), "cam.toml")
     assert half.base_radius == pytest.approx(0.015, rel=1e-15)
+
+
+def test_each_segments_greatest_pressure_angle_and_duration():
+    """A radial roller (R_p = 40 mm) rising 30 mm by simple harmonic motion over 90°:
+    tan φ = y′/(R_p + y) is greatest where (R_p + h/2) cos πu = h/2; the return over 150°
+    where (R_p + h/2) cos πu = −h/2. Each segment lasts β/ω."""
+    text = BASE.replace("pressure_angle = 30 ", "base_radius = 30 ").replace(
+        "offset = 12 ", "offset = 0 ")
+    q = solve_cam(parse_cam(text, "cam.toml")).results["quantities"]
+    c = 0.015 / 0.055
+
+    def steepest(beta):
+        # y there: h/2 (1 − c) on the rise, h/2 (1 + cos πu) = h/2 (1 − c) on the return too
+        k = math.pi * 0.030 / (2 * math.radians(beta))
+        return math.atan2(k * math.sqrt(1 - c * c), 0.040 + 0.015 * (1 - c))
+    # golden-section search finds each top to ~1e-8 in θ, where φ moves ~1e-16
+    assert q["pressure_angle_max_1"]["value"] == pytest.approx(steepest(90), rel=1e-12)
+    assert q["pressure_angle_max_3"]["value"] == pytest.approx(steepest(150), rel=1e-12)
+    assert q["pressure_angle_max"]["value"] == q["pressure_angle_max_1"]["value"]
+    w = 200 * 2 * math.pi / 60
+    assert q["time_1"]["value"] == pytest.approx(math.radians(90) / w, rel=1e-15)
+    assert q["time_4"]["value"] == pytest.approx(math.radians(60) / w, rel=1e-15)

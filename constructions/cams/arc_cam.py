@@ -19,6 +19,11 @@ from the start of the lift to the apex), the nose centre stands d = r₁ + h −
   ẋ = ωd(sin ψ + d sin 2ψ/2√(L² − d² sin²ψ)),
   ẍ = −ω²d(cos ψ + (L²d cos 2ψ + d³ sin⁴ψ)/(L² − d² sin²ψ)^{3/2}).
 
+- **eccentric disc, roller r or knife edge (r = 0)**: the whole turn is the nose: a disc
+  of radius r₂ turning e = d off its centre drives the roller's centre as a slider-crank's
+  piston, crank e and rod r₂ + r, from the lowest place (θ = 0, r₁ = r₂ − e) to the apex
+  at α = 180°; the nose's formulas above hold with φ = 0.
+
 The motion is symmetrical about the apex: the return mirrors the lift.
 """
 
@@ -32,8 +37,8 @@ __all__ = ["ArcCam", "arc_motion"]
 
 @dataclass(frozen=True)
 class ArcCam:
-    """A symmetrical cam of arcs (m, rad): ``kind`` "circular arc" (flat face) or
-    "tangent" (``roller`` its follower's radius)."""
+    """A symmetrical cam of arcs (m, rad): ``kind`` "circular arc" (flat face),
+    "tangent" or "eccentric" (``roller`` its follower's radius, 0 for a knife edge)."""
 
     kind: str
     base: float
@@ -50,7 +55,7 @@ class ArcCam:
     @property
     def flank_radius(self) -> float:
         """A circular-arc cam's flank radius R (inf for a tangent cam's straight flank)."""
-        if self.kind == "tangent":
+        if self.kind != "circular arc":
             return math.inf
         r1, r2, d, c = self.base, self.nose, self.d, math.cos(self.alpha)
         return (r1 * r1 + d * d - r2 * r2 - 2 * r1 * d * c) / (2 * (r1 - r2 - d * c))
@@ -58,6 +63,8 @@ class ArcCam:
     @property
     def phi(self) -> float:
         """The cam's turn over which the follower stays on the flank (rad)."""
+        if self.kind == "eccentric":
+            return 0.0
         if self.kind == "tangent":
             return math.atan2(self.d * math.sin(self.alpha), self.base + self.roller)
         return math.asin(self.d * math.sin(self.alpha) / (self.flank_radius - self.nose))
@@ -93,7 +100,7 @@ def arc_motion(cam: ArcCam, theta: float, omega: float, part: str | None = None
         part = "flank"
     else:
         psi, d = cam.alpha - t, cam.d
-        if cam.kind == "tangent":
+        if cam.kind != "circular arc":
             big = cam.nose + cam.roller
             root = math.sqrt(big * big - (d * math.sin(psi)) ** 2)
             x = d * math.cos(psi) + root - cam.base - cam.roller

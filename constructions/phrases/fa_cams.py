@@ -183,6 +183,11 @@ WORDS: dict[str, str] = {
     "{name}: lift": "{name}: خیز",
     "lift": "خیز",
     "the motions asked": "حرکت‌های خواسته‌شده",
+    "the disc's centre {d} from the shaft, the disc's radius {r}: the lift {h}":
+        "مرکز دیسک به فاصلهٔ {d} از محور، شعاع دیسک {r}: خیز {h}",
+    "the acceleration at the lowest place": "شتاب در پایین‌ترین موقعیت",
+    "the greatest velocity": "بیشترین سرعت",
+    "the disc's radius {r2}, its eccentricity OQ = {d}": "شعاع دیسک {r2}، خروج از مرکز OQ = {d}",
     "the least base circle for a greatest pressure angle of {limit}°: {r} {unit} (the "
     "layout's greatest: {got}°)   {check}": "کوچک‌ترین دایرهٔ پایه برای بیشترین زاویهٔ فشار "
                                            "{limit}°: {r} {unit} (بیشترین زاویهٔ فشار در "

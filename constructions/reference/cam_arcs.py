@@ -96,8 +96,11 @@ def flank_radius(r1: float, r2: float, d: float, alpha: float) -> float:
 
 
 def outline(kind: str, r1: float, r2: float, d: float, alpha: float) -> ArcOutline:
-    """The outline of a symmetrical ``kind`` ("circular arc" or "tangent") cam: base circle
-    r₁ about O, nose r₂ about Q = (d, 0), the lift beginning α either side of the apex."""
+    """The outline of a symmetrical ``kind`` ("circular arc", "tangent" or "eccentric") cam:
+    base circle r₁ about O, nose r₂ about Q = (d, 0), the lift beginning α either side of the
+    apex; an eccentric disc is its nose alone, the whole circle."""
+    if kind == "eccentric":
+        return ArcOutline((Arc((d, 0.0), r2, 0.0, 2 * math.pi),))
     if kind == "tangent":
         nx = (r1 - r2) / d
         ny = math.sqrt(1 - nx * nx)

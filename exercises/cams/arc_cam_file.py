@@ -21,7 +21,7 @@ from ..file_numbers import file_number
 from ..names import named_in, read_names, renamed_field
 from ..table_file import SPEEDS
 
-__all__ = ["ArcCamExercise", "parse_arc_cam", "ARC_KINDS"]
+__all__ = ["ArcCamExercise", "parse_arc_cam", "eccentric_disc", "ARC_KINDS"]
 
 ARC_KINDS = {"circular arc": "flat-faced", "tangent": "roller"}
 """Each cam of arcs and the follower the books set on it."""
@@ -110,6 +110,33 @@ def parse_arc_cam(tables, exercise_id: str, angles) -> ArcCamExercise:
     return ArcCamExercise(exercise_id, str(data.get("name", exercise_id)),
                           str(data.get("source", "")), str(data.get("description", "")),
                           made, omega, length, speed, at, given,
+                          read_names(data, tables.where, tables.filename))
+
+
+def eccentric_disc(tables, exercise_id: str, disc: tuple[float, float], follower, omega: float,
+                   angles) -> ArcCamExercise:
+    """An eccentric disc (radius and eccentricity in the file's unit) under a knife edge or
+    a roller on a line through the shaft: all nose, from its lowest place (r₂ − e from the
+    shaft) through the apex at 180°."""
+    data, fail = tables.data, tables.fail
+    length, speed = tables.units("mm", "rpm")
+    metre = LENGTH_UNITS[length]
+    if follower.oscillating or follower.offset:
+        raise fail("an eccentric disc is worked under a follower translating on a line "
+                   "through the shaft", "follower", "offset" if follower.offset else "motion")
+    if "segment" in data:
+        raise fail("an eccentric disc makes its own motion: leave out the [[segment]] tables",
+                   "segment")
+    radius, e = disc[0] * metre, disc[1] * metre
+    made = ArcCam("eccentric", radius - e, radius, 2 * e, math.pi, follower.radius)
+    ask = data.get("ask", {})
+    if not isinstance(ask, dict) or any(k != "at" for k in ask):
+        raise fail("an eccentric disc's [ask] table takes at = [30, 90] (the motion at those "
+                   "cam angles from its lowest place)", "ask")
+    return ArcCamExercise(exercise_id, str(data.get("name", exercise_id)),
+                          str(data.get("source", "")), str(data.get("description", "")),
+                          made, omega, length, speed, angles(ask.get("at", []), fail),
+                          ("disc_radius", "eccentricity"),
                           read_names(data, tables.where, tables.filename))
 
 

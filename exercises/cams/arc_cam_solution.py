@@ -74,7 +74,7 @@ class ArcCamSolution(ChapterFiles):
         """The follower's lift read off the outline at cam angle ``theta``."""
         c = self.exercise.cam
         psi = c.alpha - theta
-        if c.kind == "tangent":
+        if c.kind != "circular arc":
             return roller_place(self.outline, psi, c.roller) - c.base - c.roller
         return face_place(self.outline, psi) - c.base
 
@@ -103,6 +103,10 @@ class ArcCamSolution(ChapterFiles):
                 ("a_nose_start", "the acceleration as the follower comes onto the nose", phi,
                  2, "nose", 1),
                 ("a_apex", "the acceleration at the apex of the nose", alpha, 2, "nose", 0)]
+        if c.kind == "eccentric":              # all nose: its lowest place, its greatest
+            asks = [("a_lift_start", "the acceleration at the lowest place", 0.0, 2, "nose", 0),
+                    ("v_max", "the greatest velocity", _fastest(c), 1, "nose", 0),
+                    ("a_apex", "the acceleration at the apex of the nose", alpha, 2, "nose", 0)]
         for d in ex.at:
             t = math.radians(d)
             part = arc_motion(c, t, w)[3]
@@ -132,6 +136,8 @@ class ArcCamSolution(ChapterFiles):
                "nose_radius": (c.nose, None, "as given, or d cos α = r₁ − r₂"),
                "angle_of_lift": (c.alpha, None, "as given, or from the faces or the flank")}
         flank = self.outline.parts[0]              # the rising flank
+        if c.kind == "eccentric":
+            return out
         if isinstance(flank, Flat):
             # The roller leaves the flank where its centre passes the flank's end grown out.
             meet = (flank.b[0] + c.roller * flank.normal[0],
@@ -181,7 +187,11 @@ class ArcCamSolution(ChapterFiles):
         out = [words("the nose's centre {d} from the cam's, the lift {h}, the angle of lift "
                      "{alpha}°", d=self._length(c.d), h=self._length(c.lift),
                      alpha=numeral(math.degrees(c.alpha), ".4g"))]
-        if c.kind == "tangent":
+        if c.kind == "eccentric":
+            out = [words("the disc's centre {d} from the shaft, the disc's radius {r}: the lift "
+                         "{h}", d=self._length(c.d), r=self._length(c.nose),
+                         h=self._length(c.lift))]
+        elif c.kind == "tangent":
             out.append(words("the nose's radius {r}; the roller leaves the flank {phi}° after "
                              "the lift begins", r=self._length(c.nose),
                              phi=numeral(math.degrees(c.phi), ".4g")))
@@ -207,9 +217,11 @@ class ArcCamSolution(ChapterFiles):
         """steps.md: the cam's dimensions and the follower's motion, each line checked."""
         ex = self.exercise
         lines = self.lines()
+        head = 1 if ex.cam.kind == "eccentric" else 2
         return [title(ex.name, ex.description),
-                Section(phrase("heading.arc_cam"), (Bullets(tuple(lines[:2])),), ("profile",)),
-                Section(phrase("heading.arc_motion"), (Bullets(tuple(lines[2:])),),
+                Section(phrase("heading.arc_cam"), (Bullets(tuple(lines[:head])),),
+                        ("profile",)),
+                Section(phrase("heading.arc_motion"), (Bullets(tuple(lines[head:])),),
                         ("displacement", "velocity", "acceleration"))]
 
     # ----- figures ------------------------------------------------------------------------
@@ -242,6 +254,20 @@ class ArcCamSolution(ChapterFiles):
                                        x_range=(0.0, top), x_ticks=ticks,
                                        mark_legend=words("the motions asked"))
         return out
+
+
+def _fastest(cam) -> float:
+    """Where the follower of an eccentric disc rises fastest (rad): golden-section search
+    on its velocity, which rises once and falls once over the lift (a slider-crank's piston
+    between its dead centres)."""
+    lo, hi, g = 0.0, cam.alpha, (math.sqrt(5) - 1) / 2
+    for _ in range(120):
+        a, b = hi - g * (hi - lo), lo + g * (hi - lo)
+        if arc_motion(cam, a, 1.0)[1] < arc_motion(cam, b, 1.0)[1]:
+            lo = a
+        else:
+            hi = b
+    return 0.5 * (lo + hi)
 
 
 def solve_arc_cam(ex: ArcCamExercise) -> ArcCamSolution:

@@ -19,7 +19,7 @@ from tarsim.constructions.reference.cam_profile import Follower, arm_start, prim
 from ..file_numbers import file_number
 from ..names import named_in, read_names, renamed_field
 from ..table_file import SPEEDS, Tables
-from .arc_cam_file import ARC_KINDS, parse_arc_cam
+from .arc_cam_file import ARC_KINDS, eccentric_disc, parse_arc_cam
 
 __all__ = ["CamExercise", "parse_cam"]
 
@@ -103,9 +103,9 @@ def parse_cam(text: str, filename: str = "<string>", exercise_id: str = "cam",
     follower = _follower(data.get("follower") or {}, None if base is None else base * metre,
                          metre, length, fail)
     if disc and follower.kind != "flat-faced":
-        raise fail("an eccentric disc is taken under a flat face, whose lift is simple harmonic; "
-                   "under a knife edge or a roller it moves as a slider-crank: state it as a "
-                   "linkage", "follower", "kind")
+        # Under a knife edge or a roller the disc drives a slider-crank: a cam of arcs that
+        # is all nose.
+        return eccentric_disc(tables, exercise_id, disc, follower, omega, _angles)
     segments = _disc_segments(disc, metre, data, fail) if disc else _segments(
         data, follower, metre, length, number, fail)
     if base is None:                       # found from the greatest pressure angle

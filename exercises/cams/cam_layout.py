@@ -127,6 +127,7 @@ class CamProfile:
                 method="inversion; normal to the pitch curve against the follower's motion",
                 beside={"reference": {"value": abs(m), "method": "tan φ = (y′ − σe)/(s₀ + y)"}}
                 if m is not None else {})
+            out |= self._steepest_each()
         st = s.sharpest
         out["rho_min"] = Checked({"value": st.rho, "theta": st.theta,
                                   "segment": s.sharpest_at.segment},
@@ -139,6 +140,24 @@ class CamProfile:
         out["undercut"] = Checked({"value": bool(s.undercut), "spans": [
             {"from": span.start, "to": span.end, "segment": span.segment,
              "rho": span.worst.rho, "theta": span.worst.theta} for span in s.undercut]})
+        return out
+
+    def _steepest_each(self) -> dict[str, Checked]:
+        """Each moving segment's greatest pressure angle, ``pressure_angle_max_k``, as the
+        books ask it of the outstroke and the return apart."""
+        from tarsim.constructions.cams.extremes import highest
+        s, out = self.survey, {}
+        for k, seg in enumerate(self.exercise.segments, start=1):
+            scans = [sc for sc in s.scans if sc.piece.segment == k]
+            if seg.kind == "dwell" or not scans:
+                continue
+            top = highest(scans, lambda st: abs(st.pressure_angle))
+            m = _textbook_pressure(self.exercise, k, top.station.theta)
+            out[f"pressure_angle_max_{k}"] = Checked(
+                {"value": abs(top.station.pressure_angle), "theta": top.station.theta},
+                method="inversion; normal to the pitch curve against the follower's motion",
+                beside={"reference": {"value": abs(m), "method": "tan φ = (y′ − σe)/(s₀ + y)"}}
+                if m is not None else {})
         return out
 
     # ----- figures ----------------------------------------------------------------------------

@@ -82,6 +82,7 @@ class CamReadings:
                     {"value": p.acceleration_sampled / arm},
                     method=f"{p.law} formula over the arm")
         for k, s in enumerate(ex.segments, start=1):
+            out[f"time_{k}"] = Checked({"value": s.angle / w}, method="β/ω")
             if s.law != "parabolic" or s.kind == "dwell":
                 continue
             parts = (2 * s.lift / (s.split * s.angle ** 2) * w * w,

@@ -52,25 +52,30 @@ def draw_arc_cam(cam_outline, cam, title: str, unit: str, metre: float) -> Figur
         left = name == "Q"                 # Q's label inside the nose, clear of its outline
         fig.add(Text((at[0] + (-1.5 if left else 1.5), at[1] + 4.0), name, 3.2,
                      "end" if left else "start", True))
-    # The angle of lift at O, from where the lift begins to OQ.
-    r = 0.45 * cam.base * k
-    fig.add(Path(tuple(arc_points(o, r, 0.0, cam.alpha)), "dimension"))
-    start = (math.cos(cam.alpha) * cam.base, math.sin(cam.alpha) * cam.base)
-    fig.add(Path((o, paper(start)), "construction"))
-    mid = cam.alpha / 2
-    fig.add(Text((o[0] + (r + 2.5) * math.cos(mid), o[1] - (r + 2.5) * math.sin(mid) + 1.0),
-                 "α", 3.2, "start", True))
+    if cam.kind != "eccentric":
+        # The angle of lift at O, from where the lift begins to OQ.
+        r = 0.45 * cam.base * k
+        fig.add(Path(tuple(arc_points(o, r, 0.0, cam.alpha)), "dimension"))
+        start = (math.cos(cam.alpha) * cam.base, math.sin(cam.alpha) * cam.base)
+        fig.add(Path((o, paper(start)), "construction"))
+        mid = cam.alpha / 2
+        fig.add(Text((o[0] + (r + 2.5) * math.cos(mid),
+                      o[1] - (r + 2.5) * math.sin(mid) + 1.0), "α", 3.2, "start", True))
     # The follower at the apex.
     apex = cam.d + cam.nose
-    if cam.kind == "tangent":
+    if cam.kind != "circular arc" and cam.roller > 0:
         fig.add(Circle(paper((apex + cam.roller, 0.0)), cam.roller * k, "reference"))
+    elif cam.kind != "circular arc":           # a knife edge at the apex
+        fig.add(Path((paper((apex, 0.0)), paper((apex + 0.4 * cam.base, 0.0))), "reference"))
     else:
         fig.add(Path((paper((apex, -0.6 * cam.base)), paper((apex, 0.6 * cam.base))),
                      "reference"))
-    lines = [words("r₁ = {r1}, r₂ = {r2}, OQ = {d}, α = {alpha}°", r1=_size(cam.base, metre, unit),
+    lines = [words("the disc's radius {r2}, its eccentricity OQ = {d}", r2=_size(
+        cam.nose, metre, unit), d=_size(cam.d, metre, unit))] if cam.kind == "eccentric" else [
+        words("r₁ = {r1}, r₂ = {r2}, OQ = {d}, α = {alpha}°", r1=_size(cam.base, metre, unit),
                    r2=_size(cam.nose, metre, unit), d=_size(cam.d, metre, unit),
                    alpha=numerals(f"{math.degrees(cam.alpha):.4g}"))]
-    if cam.kind != "tangent":
+    if cam.kind == "circular arc":
         lines.append(words("the flank's radius R = {R}", R=_size(cam.flank_radius, metre, unit)))
     draw_caption(fig, title, lines, per_cm=per_cm, unit=unit,
                  legend=(("link", "the cam's outline"),
