@@ -29,7 +29,7 @@ __all__ = ["Ask", "Position", "Centre", "AngularVelocity", "Velocity", "Relative
            "Mobility",
            "GrashofClass",
            "LengthRange", "TimeRatio", "Stroke", "Swing", "CentreCount", "JointForce",
-           "DrivingTorque", "Effort", "EFFORTS",
+           "DrivingTorque", "Effort", "EFFORTS", "MOMENTS",
            "parse_ask", "ask_names", "on_one_line",
            "SYMBOLS", "symbol", "ordered"]
 
@@ -440,21 +440,25 @@ class Effort(Ask):
     effort (its loads along the stroke, + toward the crank), the wall's thrust on the
     piston (the size of its push square to the stroke), the crank effort (the rod's push
     on the crank pin square to the crank, + CCW), the turning moment it gives (N·m,
-    CCW +) and the thrust on the shaft's bearings (the push along the crank, + toward the
-    shaft)."""
+    CCW +), the thrust on the shaft's bearings (the push along the crank, + toward the
+    shaft) and the rod's correction couple (N·m: :mod:`~.forces.equivalent`)."""
 
     word: str
     order: ClassVar[int] = 9
 
     @property
     def name(self) -> str:
-        """``piston_effort``, ``wall_thrust``, ``crank_effort``, ``turning_moment`` or
-        ``bearing_thrust``."""
+        """``piston_effort``, ``wall_thrust``, ``crank_effort``, ``turning_moment``,
+        ``bearing_thrust`` or ``correction_couple``."""
         return self.word
 
 
-EFFORTS = ("piston_effort", "wall_thrust", "crank_effort", "turning_moment", "bearing_thrust")
-"""The efforts an exercise may ask: the first two of a slider-crank only."""
+EFFORTS = ("piston_effort", "wall_thrust", "crank_effort", "turning_moment", "bearing_thrust",
+           "correction_couple")
+"""The efforts an exercise may ask: the first two and the last of a slider-crank only."""
+
+MOMENTS = ("turning_moment", "correction_couple")
+"""The efforts that are moments (N·m), the rest forces (N)."""
 
 
 _POINT = r"([A-Za-z][A-Za-z0-9_']*)"

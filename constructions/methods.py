@@ -210,7 +210,7 @@ class Work:
             biggest = max([math.hypot(*j.force) for j in _statics(self).joints]
                           + [load_scale(m, self.kinematics, self.loads, size)])
             moment = (isinstance(ask, A.DrivingTorque) or getattr(ask, "letter", "") == "T"
-                      or getattr(ask, "word", "") == "turning_moment")
+                      or getattr(ask, "word", "") in A.MOMENTS)
             return biggest * (mechanism_size(self.kinematics) if moment else 1.0)
         return 1.0
 

@@ -136,3 +136,24 @@ def test_double_acting_engine():
     assert got["bearing_thrust"] == pytest.approx(f_p * math.cos(theta + phi) / math.cos(phi),
                                                   rel=1e-12)
     assert got["turning_moment"] == pytest.approx(r * got["crank_effort"], rel=1e-12)
+
+
+@settings(max_examples=12, deadline=None)
+@given(deg=st.floats(5, 355).filter(lambda d: abs(d - 180) > 5))
+def test_the_rod_s_correction_couple_is_the_books(deg):
+    """engine-gas-pressure's rod, 2 kg, G 100 mm from the crank pin of a 270 mm rod, k =
+    110 mm: its two masses at the pins have I = m·GA·GP about G, so the correction couple
+    is (m·GA·GP − m·k²)·α_rod, α_rod = ω²·r sin θ (l² − r²)/S³ exactly (CCW +, the crank
+    turning CCW), S = √(l² − r² sin²θ)."""
+    theta = math.radians(deg)
+    got = _answers(_text(deg))                # the bundled file asks correction_couple
+    s = math.sqrt(L * L - (R * math.sin(theta)) ** 2)
+    alpha = OMEGA ** 2 * R * math.sin(theta) * (L * L - R * R) / s ** 3
+    # the rod's α off the acceleration polygon carries a few roundings of its size
+    assert got["correction_couple"] == pytest.approx(
+        (2.0 * 0.1 * 0.17 - 2.0 * 0.11 ** 2) * alpha, rel=1e-9)
+
+
+def test_a_massless_rod_needs_no_correction_couple():
+    got = _answers(_text(**{ROD_MASS: ""}))
+    assert got["correction_couple"] == 0.0

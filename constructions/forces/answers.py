@@ -13,6 +13,7 @@ from ..checks import Answer, FigureSpec, vector_value
 from ..errors import TarsimError
 from ..model import Mechanism
 from ..record import Panel
+from .equivalent import correction_couple, rod_of
 from .groups import Dyad, group_of
 from .polygons import drawn_forces
 from .result import Forces
@@ -62,6 +63,8 @@ def forces_askable(mech: Mechanism) -> set[str]:
     out = force_names(mech) | {"crank_effort", "turning_moment", "bearing_thrust"}
     if isinstance(group, Dyad) and group.guide is not None:
         out |= {"piston_effort", "wall_thrust"}
+        if rod_of(mech) is not None:
+            out.add("correction_couple")
     return out
 
 
@@ -89,6 +92,11 @@ def answer(work, ask) -> Answer:
     c = work.assembly
     if isinstance(ask, A.DrivingTorque):
         value = {"value": forces.torque}
+    elif isinstance(ask, A.Effort) and ask.word == "correction_couple":
+        # the rod's α off the acceleration polygon, with its mass split between its pins
+        rod = rod_of(work.mechanism)[0]
+        alpha = drawn_acceleration_polygon(work).rates.get(rod, 0.0)
+        value = {"value": correction_couple(work.mechanism, work.loads, alpha)}
     elif isinstance(ask, A.Effort):
         value = {"value": forces.efforts[ask.word]}
     elif ask.letter == "T":

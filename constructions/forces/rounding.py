@@ -203,7 +203,7 @@ def read_conditioning(work, forces, ask) -> float:
     scale = max([made_of(work.loads, motion, size=size, a_in=mech.input_acceleration)]
                 + [math.hypot(*v) for v in forces.joints.values()])
     moment = isinstance(ask, A.DrivingTorque) or ask.name.startswith("T_") \
-        or ask.name == "turning_moment"
+        or ask.name in A.MOMENTS
     return min(1.0, EPS * scale * (size if moment else 1.0) / rounding)
 
 

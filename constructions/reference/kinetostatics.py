@@ -489,4 +489,21 @@ def efforts(mech: Mechanism, kin: Kinematics, loads: Loads, statics: Statics
         piston = [f for _, f, _ in _loads_on(kin, mech, loads, s.link)]
         out["piston_effort"] = math.fsum(f[0] * u[0] + f[1] * u[1] for f in piston)
         out["wall_thrust"] = abs(statics.pushes[mech.slides.index(s)])
+        out["correction_couple"] = _correction(mech, kin, loads, pin, s.point, d)
     return out
+
+
+def _correction(mech: Mechanism, kin: Kinematics, loads: Loads, pin: str, gudgeon: str,
+                crank: int) -> float:
+    """The rod's correction couple, its two-mass system built whole: the rod's mass split
+    between the pins by the lever rule, m_A = m·GP/AP and m_P = m·GA/AP, whose moment of
+    inertia about G, m_A·GA² + m_P·GP², the rod's own I_G falls short of; that difference
+    times the rod's α (0 where the crank pin's rod has no mass)."""
+    rods = [k for k in mech.links_at(pin) if k != crank and gudgeon in mech.link(k).names]
+    m = loads.mass_of(rods[0]) if rods else None
+    if m is None:
+        return 0.0
+    g = world_point(kin, mech, rods[0], m.centre)
+    ga, gp = math.dist(g, kin.points[pin]), math.dist(g, kin.points[gudgeon])
+    share_a, share_p = m.mass * gp / (ga + gp), m.mass * ga / (ga + gp)
+    return (share_a * ga * ga + share_p * gp * gp - m.inertia) * kin.alphas[rods[0]]

@@ -10,8 +10,9 @@ from __future__ import annotations
 
 import math
 
-from tarsim.constructions.asks import (EFFORTS, Distance, Equivalent, MechanicalAdvantage, Ratio,
-                                       Rubbing, TransmissionAngle, parse_ask, symbol)
+from tarsim.constructions.asks import (EFFORTS, MOMENTS, Distance, Equivalent,
+                                       MechanicalAdvantage, Ratio, Rubbing, TransmissionAngle,
+                                       parse_ask, symbol)
 from tarsim.constructions.checks import Quantity
 from tarsim.constructions.linkages.velocity_drawing import method_words
 from tarsim.constructions.narration import numerals, speaking, words
@@ -112,7 +113,7 @@ def show(v: dict, units, name: str = "", figures: int = 6) -> str:
         w = v["value"]                                  # a couple or the driving torque
         return f"{_num(w, spec)} N·m{_sense(w)}"
     if name in EFFORTS:                                 # an engine's effort, signed
-        return f"{_num(v['value'], spec)} {'N·m' if name == 'turning_moment' else 'N'}"
+        return f"{_num(v['value'], spec)} {'N·m' if name in MOMENTS else 'N'}"
     if "vector" in v:
         per = "/s²" if name.startswith("A") else "/s"     # A_B, A_cor_B, An_B/A, A_slide_B
         return pointing(f"{_num(v['value'] / s, spec)} {units.length}{per}")
