@@ -578,3 +578,21 @@ def test_an_engine_with_every_crank_unknown_is_refused_for_want_of_a_reference()
     rows = "".join(f'[[cylinder]]\ncrank = "?"\nplane = {100 * i}\n' for i in range(4))
     with pytest.raises(InputError, match=r"e.toml:\d+: every crank is unknown: give one "):
         parse_balance(FOUR_CRANKS.split("[[cylinder]]")[0] + rows, "e.toml")
+
+
+@pytest.mark.parametrize("given, share", [('"60 %"', 0.6), ('"2/3"', 2 / 3), ("0.25", 0.25),
+                                          ('"100%"', 1.0)])
+def test_the_balanced_fraction_is_taken_as_the_books_give_it(given, share):
+    """A percentage is its number over 100, a fraction its quotient: both exact to the
+    last bit of the float the division gives."""
+    text = ('[units]\nlength = "mm"\nspeed = "rpm"\n[engine]\nspeed = 600\ncrank = 100\n'
+            f"reciprocating = 30\nbalanced = {given}\n")
+    assert parse_balance(text, "e.toml").engine.balanced == share
+
+
+def test_a_balanced_percentage_past_the_whole_is_refused():
+    text = ('[units]\nlength = "mm"\nspeed = "rpm"\n[engine]\nspeed = 600\ncrank = 100\n'
+            'reciprocating = 30\nbalanced = "120 %"\n')
+    with pytest.raises(InputError, match=r"e.toml:\d+: the balanced fraction is from 0 to 1, "
+                                         r"got 1.2"):
+        parse_balance(text, "e.toml")

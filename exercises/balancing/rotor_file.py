@@ -122,6 +122,16 @@ def _speed(t: Tables, table: str) -> float:
     return v * SPEEDS[t.units("m", "rad/s")[1]]
 
 
+def _share(t: Tables, one: dict) -> float:
+    """The fraction ``balanced`` of the reciprocating mass, as the books give it: a number,
+    a fraction ("2/3") or a percentage ("60 %")."""
+    v = one.get("balanced", 0.0)
+    if isinstance(v, str) and v.strip().endswith("%"):
+        return t.number({"balanced": v.strip()[:-1]}, "balanced", "engine",
+                        "the balanced percentage") / 100
+    return t.number(one, "balanced", "engine", "the balanced fraction", 0, 0.0)
+
+
 def _vee(t: Tables, one: dict) -> float:
     """A V engine's angle between its cylinders' lines (rad), 0 where the file gives none;
     its two cylinders share one crank, so it takes no [[cylinder]] tables, and no balance
@@ -267,7 +277,7 @@ def _engine(t: Tables, metre: float) -> tuple[Engine, OpenRotor | None]:
                          f"({crank:g} {unit}), or the piston cannot follow it round", "engine",
                          "rod")
         rod *= metre
-    balanced = t.number(one, "balanced", "engine", "the balanced fraction", 0, 0.0)
+    balanced = _share(t, one)
     if not 0 <= balanced <= 1:
         raise t.fail(f"the balanced fraction is from 0 to 1, got {balanced:g}", "engine",
                      "balanced")
