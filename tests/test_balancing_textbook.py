@@ -596,3 +596,22 @@ def test_a_balanced_percentage_past_the_whole_is_refused():
     with pytest.raises(InputError, match=r"e.toml:\d+: the balanced fraction is from 0 to 1, "
                                          r"got 1.2"):
         parse_balance(text, "e.toml")
+
+
+def test_an_inline_engines_forces_at_a_crank_angle_are_the_cylinders_cos_terms():
+    """Three cylinders, cranks 0°, 120°, 240°, planes 0, 0.4, 0.8 m, crank 1 at 45° from the
+    i.d.c.: the primary couple about the centre F·(−0.4·cos 45° + 0.4·cos 285°) and the
+    secondary F/n·(−0.4·cos 90° + 0.4·cos 570°), F = 20·0.1·(40π)²; the forces cancel."""
+    text = _engine((0, 120, 240), (0, 400, 800)).replace("[engine]", "[engine]\nat = 45")
+    s = solve_balance(parse_balance(text, "e.toml"))
+    assert s.passed, s.failures
+    q = s.results["quantities"]
+    f = 20 * 0.1 * (40 * math.pi) ** 2
+    c = [math.cos(math.radians(d)) for d in (45, 285, 90, 570)]
+    assert q["primary_couple_at_theta"]["value"] == pytest.approx(f * 0.4 * (c[1] - c[0]),
+                                                                  rel=1e-12)
+    assert q["secondary_couple_at_theta"]["value"] == pytest.approx(f / 4 * 0.4 * (c[3] - c[2]),
+                                                                    rel=1e-12)
+    assert q["primary_force_at_theta"]["value"] == 0.0
+    no_at = solve_balance(parse_balance(_engine((0, 120, 240), (0, 400, 800)), "e.toml"))
+    assert not any(k.endswith("_at_theta") for k in no_at.results["quantities"])

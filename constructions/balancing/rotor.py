@@ -78,6 +78,9 @@ class Engine:
     revolving: float = 0.0
     balance_radius: float | None = None
     balance_mass: float | None = None
+    at_given: bool = False
+    """Whether the file asks the forces at ``at`` (an in-line engine's crank 1 from the
+    i.d.c.; a single cylinder's are asked at 0° without it)."""
     masses: tuple[float, ...] = ()
     """Each cylinder's reciprocating mass (kg) where they differ (given one by one, or found
     by a primary balance); empty where every cylinder has ``reciprocating``."""

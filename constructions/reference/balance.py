@@ -23,7 +23,7 @@ from dataclasses import dataclass
 from ..balancing.rotor import Engine, Mass
 
 __all__ = ["EngineSums", "balance_product", "quadrant_angle", "resultant", "single_cylinder",
-           "engine_greatest_at", "engine_sums", "one_axial_plane", "open_residual",
+           "engine_along", "engine_greatest_at", "engine_sums", "one_axial_plane", "open_residual",
            "open_rotor_roots", "polygon_roots", "two_planes", "unbalanced_resultant",
            "vee_resultants"]
 
@@ -125,6 +125,26 @@ def engine_sums(e: Engine, reference: float | None = None) -> EngineSums:
     twice = [2 * t for t in e.cranks]
     return EngineSums(f * size(e.cranks, ones), f * size(e.cranks, arms),
                       f / n * size(twice, ones), f / n * size(twice, arms))
+
+
+def engine_along(e: Engine, theta: float, reference: float | None = None) -> dict[str, float]:
+    """Each primary and secondary force and couple along the line of stroke (N, N·m) with
+    crank 1 at ``theta`` (rad) from the inner dead centre: Σ aᵢ·mᵢ·ω²·r·cos(θ − θ₁ + θᵢ), the
+    secondary's Σ aᵢ·mᵢ·ω²·r·cos 2(θ − θ₁ + θᵢ)/n (aᵢ 1, or the arm from the central plane)."""
+    if reference is None:
+        reference = (min(e.planes) + max(e.planes)) / 2
+    turn = theta - e.cranks[0]
+    f = e.speed ** 2 * e.crank
+    out = {}
+    for kind, k in (("primary force", 1), ("primary couple", 1), ("secondary force", 2),
+                    ("secondary couple", 2)):
+        if k == 2 and e.rod is None:
+            continue
+        arms = [1.0 if kind.endswith("force") else z - reference for z in e.planes]
+        share = f / (1.0 if k == 1 else e.rod / e.crank)
+        out[kind] = share * math.fsum(a * m * math.cos(k * (turn + t))
+                                      for a, m, t in zip(arms, e.each, e.cranks))
+    return out
 
 
 def engine_greatest_at(e: Engine, reference: float | None = None) -> dict[str, float | None]:

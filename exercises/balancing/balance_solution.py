@@ -27,6 +27,7 @@ from ..checked import Checked
 from ..solution_folder import ChapterFiles
 from ..worked_document import Bullets, Section, said_steps, title
 from .balance_figures import angle_deg, balance_figures
+from .engine_angle import at_checked, at_lines, at_misses
 from .engine_balance import left_checked, left_lines, left_misses
 from .firing_order import firing_line
 from .single_cylinder import cylinder_balance, cylinder_checked, cylinder_lines
@@ -127,7 +128,7 @@ class BalanceSolution(ChapterFiles):
                 miss = abs(self.engine_polygons.left(kind) * w2 - values[kind]) / (size * w2)
                 if miss > AGREE:
                     out.append((kind, miss))
-            out += self._greatest_misses(e) + left_misses(self, AGREE)
+            out += self._greatest_misses(e) + left_misses(self, AGREE) + at_misses(self, AGREE)
         e = self.exercise.engine
         return out + (vee_misses(e) if e is not None and e.vee else [])
 
@@ -313,7 +314,7 @@ class BalanceSolution(ChapterFiles):
                                  "and every {every}° on", kind=words(kind),
                                  angle=numeral(self.greatest_at[kind], ".2f"),
                                  every=numeral(180 if kind.startswith("primary") else 90)))
-        return out
+        return out + at_lines(self)
 
     def _cylinder_lines(self, e) -> list[str]:
         """A single cylinder's lines (a V engine's pair on one crank: their resultants)."""
@@ -378,6 +379,7 @@ class BalanceSolution(ChapterFiles):
                 q[kind.replace(" ", "_")] = Checked(
                     {"value": self.engine_polygons.left(kind) * ex.engine.speed ** 2},
                     {"value": value}, method=f"{kind} polygon")
+            q |= at_checked(self)
             want = engine_greatest_at(ex.engine)
             for kind, got in self.greatest_at.items():
                 period = 180.0 if kind.startswith("primary") else 90.0

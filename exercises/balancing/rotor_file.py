@@ -291,7 +291,9 @@ def _engine(t: Tables, metre: float) -> tuple[Engine, OpenRotor | None]:
         each = tuple(found[p.name].mass for p in primary.parts)
         return Engine(tuple(found[p.name].angle for p in primary.parts),
                       tuple(found[p.name].plane for p in primary.parts), crank * metre, rod,
-                      max(each), primary.speed, masses=each), primary
+                      max(each), primary.speed, at=_degrees(t.number(
+                          one, "at", "engine", "the crank angle", 0, 0.0)),
+                      at_given="at" in one, masses=each), primary
     mass = max(masses)
     firing = read_firing_order(t, one, cylinders)
     cranks = tuple(_degrees(d) for d in firing_cranks(*firing)) if firing else tuple(
@@ -317,7 +319,7 @@ def _engine(t: Tables, metre: float) -> tuple[Engine, OpenRotor | None]:
     return Engine(cranks, planes, crank * metre, rod, mass, _engine_speed(t, one, metre),
                   balanced, _degrees(t.number(one, "at", "engine", "the crank angle", 0, 0.0)),
                   revolving, None if radius is None else radius * metre, balance,
-                  tuple(masses) if len(set(masses)) > 1 else (),
+                  "at" in one, tuple(masses) if len(set(masses)) > 1 else (),
                   vee, *(firing or ((), 0))), None
 
 
