@@ -506,3 +506,21 @@ def test_the_reference_finds_an_intercept_at_the_cycle_s_start():
     ref = integrated(d.torque, d.cycle)
     assert ref.delta_e == pytest.approx(read_diagram(d).delta_e, rel=H2 * 16 / 4)
     assert ref.delta_e >= 716 + 1195 / 3 * (1 + math.sqrt(0.5))
+
+
+def test_the_coefficient_of_fluctuation_of_energy_and_the_energy_stored():
+    """C_E = ΔE over the work done in a cycle: for T = 20000 + 9500 sin 2θ − 5700 cos 2θ,
+    √(9500² + 5700²)/(20000·2π); for the punch, 5000·π/3 of the 6000·π/3 a turn takes
+    (5/6). The flywheel stores ½·I·ω² at the mean speed, I = ΔE/(C_s·ω²): ΔE/(2·C_s)."""
+    q = _q("engine-harmonic-torque")
+    amplitude = math.hypot(9500, 5700)
+    assert q["energy_fluctuation"].value["value"] == pytest.approx(
+        amplitude / (20000 * 2 * math.pi), rel=H2)
+    assert q["kinetic_energy"].value["value"] == pytest.approx(amplitude / (2 * 0.01), rel=H2)
+    q = _q("punching-press")
+    assert q["energy_fluctuation"].value["value"] == pytest.approx(5 / 6, rel=1e-12)
+    assert q["kinetic_energy"].value["value"] == pytest.approx(5000 * math.pi / 3 / 0.12,
+                                                               rel=1e-12)
+    assert _q("punch-sheared-area")["energy_fluctuation"].value["value"] == pytest.approx(
+        0.9, rel=1e-14)
+    assert all(c.passed for c in q.values())

@@ -157,3 +157,18 @@ def test_the_rod_s_correction_couple_is_the_books(deg):
 def test_a_massless_rod_needs_no_correction_couple():
     got = _answers(_text(**{ROD_MASS: ""}))
     assert got["correction_couple"] == 0.0
+
+
+@settings(max_examples=12, deadline=None)
+@given(deg=st.floats(5, 355).filter(lambda d: abs(d - 180) > 5))
+def test_the_reciprocating_parts_inertia_force_is_the_books(deg):
+    """F_I = m·a toward the crank, a = ω²(r cos θ + r² cos 2θ/S + r⁴ sin²θ cos²θ/S³) exactly
+    (the books' ω²r(cos θ + cos 2θ/n) to first order), and the piston effort is the gas
+    force less it: F_P = F_L − F_I."""
+    theta = math.radians(deg)
+    got = _answers(_text(deg).replace('find = ["T2", ', 'find = ["inertia_force", "T2", '))
+    # a passes through 0 near the quarter: there it is held to the rounding of m·ω²·r
+    assert got["inertia_force"] == pytest.approx(MASS * _toward_crank(theta), rel=1e-12,
+                                                 abs=1e-12 * MASS * OMEGA ** 2 * R)
+    assert got["piston_effort"] == pytest.approx(
+        650e3 * math.pi * BORE ** 2 / 4 - got["inertia_force"], rel=1e-12)

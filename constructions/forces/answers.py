@@ -62,7 +62,7 @@ def forces_askable(mech: Mechanism) -> set[str]:
         return set()
     out = force_names(mech) | {"crank_effort", "turning_moment", "bearing_thrust"}
     if isinstance(group, Dyad) and group.guide is not None:
-        out |= {"piston_effort", "wall_thrust"}
+        out |= {"piston_effort", "wall_thrust", "inertia_force"}
         if rod_of(mech) is not None:
             out.add("correction_couple")
     return out

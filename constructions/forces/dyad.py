@@ -244,7 +244,12 @@ def _piston_effort(c, out: Forces, sh: Dyad, at, loads, wall: Vec, refs) -> None
     piston = vector_sum(f for _, f, _, _ in loads)
     out.efforts["piston_effort"] = piston[0] * u[0] + piston[1] * u[1]
     out.efforts["wall_thrust"] = abs(-wall[0] * sh.guide[1] + wall[1] * sh.guide[0])
+    # the reciprocating parts' m·a toward the crank, which the piston effort loses
+    fi = next((f for _, f, _, name in loads if name == f"Fi{sh.j}"), (0.0, 0.0))
+    out.efforts["inertia_force"] = -(fi[0] * u[0] + fi[1] * u[1])
     said = c.draw("force:say:piston", "mark", refs[0], panel=Panel.FORCE, phrase=phrase(
         "force.piston", j=sh.j, effort=as_said(out.efforts["piston_effort"], "N", ".6g"),
-        thrust=as_said(out.efforts["wall_thrust"], "N", ".6g")))
-    out.refs["piston_effort"] = out.refs["wall_thrust"] = (*refs, said)
+        thrust=as_said(out.efforts["wall_thrust"], "N", ".6g"),
+        inertia=as_said(out.efforts["inertia_force"], "N", ".6g")))
+    out.refs["piston_effort"] = out.refs["wall_thrust"] = out.refs["inertia_force"] = (
+        *refs, said)

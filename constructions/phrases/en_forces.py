@@ -24,8 +24,9 @@ PHRASES: dict[str, str] = {
     "force.lever": "Link {l}'s polygon: its loads, the block's push and the ram's, closed by "
                    "the frame's force at {p}.",
     "force.piston": "The piston {j}'s effort, its loads along the line of stroke toward the "
-                    "crank: F_P = {effort}. The wall's thrust on it, the part of the guide's "
-                    "push square to the stroke: F_N = {thrust}.",
+                    "crank: F_P = {effort}, the reciprocating parts' inertia force F_I = "
+                    "{inertia} (m·a toward the crank) taken off. The wall's thrust on it, the "
+                    "part of the guide's push square to the stroke: F_N = {thrust}.",
     "force.effort": "Split {name}, the push on the crank pin {a}: through its tail a line "
                     "along the crank {o}{a}, through its head a line square to it; where they "
                     "cross the radial part ends and the tangential part F_T begins. The crank "

@@ -110,6 +110,10 @@ WORDS: dict[str, str] = {
     "holds is highest and lowest":
         "محور در θ = {high}° تندترین و در θ = {low}° کندترین است، جایی که انرژی آن بیشینه و "
         "کمینه است",
+    "the coefficient of fluctuation of energy C_E = ΔE/(work done in a cycle) = {ce}":
+        "ضریب نوسان انرژی C_E = ΔE/(کار انجام‌شده در یک چرخه) = {ce}",
+    "the flywheel stores ½·I·ω² = {energy} J at the mean speed":
+        "چرخ طیار در سرعت میانگین ½·I·ω² = {energy} J انرژی ذخیره می‌کند",
     "every number agrees with its reference": "همهٔ اعداد با مرجع خود سازگارند",
     "Each area times the diagram's scale ({scale} J per unit of area) is an energy: "
     "{energies} J.":
@@ -174,7 +178,8 @@ PHRASES: dict[str, str] = {
     "force.lever": "چندضلعی میلهٔ {l}: بارهای آن، نیروی لغزنده و نیروی رام، که با نیروی قاب در "
                    "{p} بسته می‌شود.",
     "force.piston": "نیروی مؤثر پیستون {j}، یعنی مجموع بارهای آن در امتداد خط کورس به سمت لنگ: "
-                    "F_P = {effort}. رانش دیوارهٔ سیلندر بر آن، یعنی مؤلفهٔ نیروی راهنما که "
+                    "F_P = {effort}، پس از کسر نیروی اینرسی قطعات رفت‌وبرگشتی F_I = {inertia} "
+                    "(m·a به سمت لنگ). رانش دیوارهٔ سیلندر بر آن، یعنی مؤلفهٔ نیروی راهنما که "
                     "عمود بر امتداد کورس است: F_N = {thrust}.",
     "force.effort": "{name}، یعنی نیروی وارد بر لولای لنگ {a}، را تجزیه کنید: از ابتدای آن خطی "
                     "در امتداد لنگ {o}{a} و از انتهای آن خطی عمود بر آن رسم کنید؛ در محل تلاقی "

@@ -489,6 +489,10 @@ def efforts(mech: Mechanism, kin: Kinematics, loads: Loads, statics: Statics
         piston = [f for _, f, _ in _loads_on(kin, mech, loads, s.link)]
         out["piston_effort"] = math.fsum(f[0] * u[0] + f[1] * u[1] for f in piston)
         out["wall_thrust"] = abs(statics.pushes[mech.slides.index(s)])
+        m = loads.mass_of(s.link)
+        a = (point_acceleration(kin, mech, s.link, world_point(kin, mech, s.link, m.centre))
+             if m is not None else (0.0, 0.0))
+        out["inertia_force"] = (m.mass if m is not None else 0.0) * (a[0] * u[0] + a[1] * u[1])
         out["correction_couple"] = _correction(mech, kin, loads, pin, s.point, d)
     return out
 

@@ -195,6 +195,7 @@ class FlywheelSolution(ChapterFiles):
                 spread = 0.0 if c is None else c.tolerance * cs / 2 / (1 + side * cs / 2)
                 q[key] = _check(v, w, spread + 1e-15, "ω(1 ± C_s/2), ω the mean of the two",
                                 unit="rad/s")
+        q |= self._energies(q, tol)
         if ref is not None and r.delta_e:
             q |= self._fastest(ref, tol)
         if ref is not None and self.inertia:
@@ -231,6 +232,31 @@ class FlywheelSolution(ChapterFiles):
         for k, key in enumerate(("rim_thickness", "rim_width")):
             # t ∝ √m (or 1/√r): half the mass's relative error
             out[key] = _check(got[k], want[k], tol, "b·t = m/(ρ·2πr), b = k·t", unit="m")
+        return out
+
+    def _energies(self, q: dict[str, Checked], tol: float) -> dict[str, Checked]:
+        """The coefficient of fluctuation of energy, ΔE over the work done in a cycle (the
+        mean torque times the cycle, or a punch's energy a hole), and the energy the
+        flywheel stores at the mean speed, ½·I·ω²."""
+        ex, r, ref = self.exercise, self.reading, self.reference
+        out = {}
+        if ex.punch is not None:
+            work, ref_work = ex.punch.energy, self._punch_reference.mean * 2 * math.pi
+        elif ref is not None and r.mean > 0:
+            work, ref_work = r.mean * ex.cycle, ref.mean * ex.cycle
+        else:
+            work = ref_work = 0.0
+        if work > 0 and ref_work > 0:
+            # ΔE's error and the mean's (each within ΔE's tolerance of ΔE) over the work
+            out["energy_fluctuation"] = _check(
+                r.delta_e / work, self.reference_delta_e / ref_work,
+                tol * (1 + r.delta_e / work), "C_E = ΔE/(work done in a cycle)")
+        if self.inertia and ex.speed is not None:
+            i_ref = (q["inertia"].reference["value"] if "inertia" in q else self.inertia)
+            out["kinetic_energy"] = _check(self.inertia * ex.speed ** 2 / 2,
+                                           i_ref * ex.speed ** 2 / 2,
+                                           q["inertia"].tolerance if "inertia" in q else 0.0,
+                                           "½·I·ω² at the mean speed", unit="J")
         return out
 
     def _fastest(self, ref: Integrated, tol: float) -> dict[str, Checked]:
@@ -356,6 +382,12 @@ class FlywheelSolution(ChapterFiles):
                              energy=numeral(r.delta_e), where=where))
         else:
             out.append(words("the turning moment is steady: ΔE = 0 and no flywheel is needed"))
+        if "energy_fluctuation" in q:
+            out.append(words("the coefficient of fluctuation of energy C_E = ΔE/(work done in a "
+                             "cycle) = {ce}", ce=numeral(q["energy_fluctuation"].value["value"])))
+        if "kinetic_energy" in q:
+            out.append(words("the flywheel stores ½·I·ω² = {energy} J at the mean speed",
+                             energy=numeral(q["kinetic_energy"].value["value"])))
         if "speed_max_at" in q:
             out.append(words("the shaft runs fastest at θ = {high}° and slowest at θ = {low}°, "
                              "where the energy it holds is highest and lowest",
