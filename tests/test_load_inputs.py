@@ -76,7 +76,8 @@ def test_a_massless_rod_gives_the_books_crank_effort(tmp_path):
 
 
 @pytest.mark.parametrize("given", ['pressure = "0.65 N/mm²"', 'pressure = "6.5 bar"',
-                                   "pressure = 650000", 'pressure = "0.65 MPa"'])
+                                   "pressure = 650000", 'pressure = "0.65 MPa"',
+                                   'pressure = "650 kN/m²"', 'pressure = "0.65 MN/m2"'])
 @pytest.mark.parametrize("on", ["bore = 100", f"area = {math.pi * 100 ** 2 / 4!r}"])
 def test_a_pressure_in_any_unit_on_a_bore_or_an_area_is_one_force(given, on, tmp_path):
     text = _text(**{'pressure = "650 kPa"': given, "bore = 100": on})

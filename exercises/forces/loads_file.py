@@ -206,8 +206,8 @@ def read_loads(data: dict[str, Any], mech: Mechanism, where: SourceMap,
                  friction=friction, friction_circle=circle, **wheel)
 
 
-PRESSURES = {"Pa": 1.0, "N/m²": 1.0, "N/m2": 1.0, "kPa": 1e3, "bar": 1e5, "MPa": 1e6,
-             "N/mm²": 1e6, "N/mm2": 1e6}
+PRESSURES = {"Pa": 1.0, "N/m²": 1.0, "N/m2": 1.0, "kPa": 1e3, "kN/m²": 1e3, "kN/m2": 1e3,
+             "bar": 1e5, "MPa": 1e6, "MN/m²": 1e6, "MN/m2": 1e6, "N/mm²": 1e6, "N/mm2": 1e6}
 """The pressure units a gas force may be stated in, as Pa each; a plain number is in Pa."""
 
 
