@@ -291,3 +291,79 @@ def test_a_centre_distance_is_asked_of_a_pair_in_mesh_with_a_module():
     with pytest.raises(InputError, match=r"cannot find 'centre_distance1_3': ask the centre "
                                          r"distance of a pair in mesh, centre_distance1_2"):
         parse_train(text, "t.toml")
+
+
+# ----- bevel gears: a car's differential -----------------------------------------------------
+def test_gears_car_differential():
+    """The corpus's car on a turn, bundled: the crown at 1000·12/60 = 200 rpm, and the axle
+    gears either side of the bevel pinion turn opposite ways relative to the cage, so
+    ω_P + ω_Q = 2·ω_crown: ω_P = 400 − 210 = 190 rpm."""
+    s = solve_train(load("car-differential"))
+    q = s.quantities
+    assert (q["omega2"].exact, q["omega3"].exact) == (200, 190)
+    assert s.passed and s.diagram is None
+
+
+DIFFERENTIAL = """name = "bevel differential"
+{fixed}
+[[gear]]
+number = 3
+teeth = {p}
+[[gear]]
+number = 4
+teeth = {q}
+[[gear]]
+number = 5
+teeth = {pinion}
+carrier = 6
+[arm]
+number = 6
+[[mesh]]
+gears = [3, 5]
+kind = "bevel"
+[[mesh]]
+gears = [5, 4]
+kind = "bevel"
+{given}
+[ask]
+find = {find}
+"""
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.integers(10, 60), st.integers(10, 60), st.integers(8, 30),
+       st.integers(-2000, 2000).filter(bool), st.integers(-2000, 2000))
+def test_the_side_gears_turn_opposite_ways_relative_to_the_cage(p, q, pinion, cage, wheel):
+    """Willis for a bevel differential: N_P(ω_P − ω_c) = −N_Q(ω_Q − ω_c), the pinion's teeth
+    cancelling; with equal side gears ω_P + ω_Q = 2ω_c."""
+    text = DIFFERENTIAL.format(fixed="", p=p, q=q, pinion=pinion, find='["omega3"]',
+                               given=f"[[input]]\nmember = 6\nspeed = {cage}\n"
+                                     f"[[input]]\nmember = 4\nspeed = {wheel}")
+    s = solve_train(parse_train(text, "t.toml"))
+    assert s.quantities["omega3"].exact == cage - F(q, p) * (wheel - cage)
+    assert s.passed
+
+
+def test_a_fixed_side_gear_doubles_the_cage_s_speed():
+    """One side gear held, equal side gears: ω_Q = ω_c − (ω_P − ω_c) = 2ω_c; no velocity
+    diagram (the pinion's axis is square to the main axis)."""
+    text = DIFFERENTIAL.format(fixed="fixed = 3", p=20, q=20, pinion=12, find='["omega4"]',
+                               given="[input]\nmember = 6\nspeed = 100")
+    s = solve_train(parse_train(text, "t.toml"))
+    assert s.quantities["omega4"].exact == 200 and s.diagram is None
+
+
+def test_a_bevel_planet_s_speed_is_refused():
+    text = DIFFERENTIAL.format(fixed="fixed = 3", p=20, q=20, pinion=12, find='["omega5"]',
+                               given="[input]\nmember = 6\nspeed = 100")
+    with pytest.raises(InputError, match=r"cannot find 'omega5': gear 5 is a bevel planet"):
+        parse_train(text, "t.toml")
+
+
+def test_a_third_bevel_mesh_on_a_planet_is_refused():
+    text = DIFFERENTIAL.format(fixed="fixed = 3", p=20, q=20, pinion=12, find='["omega4"]',
+                               given="[input]\nmember = 6\nspeed = 100").replace(
+        "[[mesh]]\ngears = [5, 4]", "[[mesh]]\ngears = [5, 7]\nkind = \"bevel\"\n"
+        "[[mesh]]\ngears = [5, 4]").replace("[arm]", "[[gear]]\nnumber = 7\nteeth = 20\n[arm]")
+    with pytest.raises(InputError, match=r"gear 5 has a third bevel mesh"):
+        parse_train(text, "t.toml")

@@ -190,6 +190,9 @@ def undrawable(train: GearTrain) -> str | None:
         return "an ordinary train has no velocity diagram: its axes stand still"
     if train.fixed in train.off_axis:
         return "the fixed member turns on a side shaft, off the radial line"
+    if any(mesh.bevel for mesh in train.meshes):
+        return ("a bevel gear turns about an axis square to the main axis, off the plane of "
+                "the velocity diagram: the table alone solves this train")
     if train.off_axis:                    # the diagram draws the main axis and the planets
         train = main_axis_train(train, [])[0]
     if train.carried(train.fixed):

@@ -104,15 +104,16 @@ def carry(train: GearTrain, start: dict[int, Fraction], held: tuple[int, ...] = 
             for a, b in ((mesh.a, mesh.b), (mesh.b, mesh.a)):
                 if a in out and b not in out:
                     ga, gb = train.gear(a), train.gear(b)
-                    ratio = Fraction(ga.teeth, gb.teeth) * (1 if mesh.internal else -1)
+                    ratio = Fraction(ga.teeth, gb.teeth) * mesh.sign
                     out[b] = out[a] * ratio
                     if via is not None:
                         via[b] = (a, mesh)
                     steps.append(phrase(
-                        "gears.mesh_carries", driven=train.said(b, opening=True),
+                        "gears.bevel_carries" if mesh.bevel else "gears.mesh_carries",
+                        driven=train.said(b, opening=True),
                         driver=train.said(a),
                         kind=Word(mesh.word),
-                        way=Word("the same way" if mesh.internal else "the other way"),
+                        way=Word("the same way" if mesh.sign > 0 else "the other way"),
                         a=a, b=b, na=ga.teeth, nb=gb.teeth, turns=said(out[a]),
                         result=said(out[b])))
                     for k in train.body(b):
@@ -301,7 +302,7 @@ def _train_value(train: GearTrain, first: int, last: int,
         if mesh is not None:
             drivers.insert(0, prev)
             driven.insert(0, m)
-            external += not mesh.internal
+            external += mesh.sign < 0
         m = prev
     idlers = [g for g in driven if g in drivers]
     return phrase("gears.train_value", last=last, first=first,

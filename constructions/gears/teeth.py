@@ -121,7 +121,7 @@ def _coaxial_sets(train: GearTrain, coaxial: tuple[int, int] | None
             continue
         pairs = [(mesh, c) for mesh in train.meshes for p, c in ((mesh.a, mesh.b),
                                                                  (mesh.b, mesh.a))
-                 if p in body and not train.carried(c)]
+                 if p in body and not train.carried(c) and not mesh.bevel]
         if len(pairs) > 1:
             out.append(pairs)
     if coaxial is not None:

@@ -56,11 +56,23 @@ class Mesh:
     distance: Fraction | None = None
     """The centre distance (m) the file gives the pair, where it does: it fixes their
     teeth with their module, m(N_a ± N_b)/2 (:mod:`.teeth`)."""
+    bevel: int = 0
+    """For a bevel pair, the sense one gear turns the other in, +1 or −1 (0: a spur pair).
+    A bevel planet's axis is square to the main axis, so the two gears it meshes there turn
+    opposite ways relative to the arm (a differential): its first bevel mesh is taken +1,
+    its second −1; a bevel pair on fixed axes +1, each turning the way the book calls
+    forward."""
+
+    @property
+    def sign(self) -> int:
+        """The sense the mesh turns ``b`` in for a turn of ``a``: −1 external, +1 internal,
+        a bevel pair's own."""
+        return self.bevel or (1 if self.internal else -1)
 
     @property
     def word(self) -> str:
-        """"internal" or "external", as a step says the mesh."""
-        return "internal" if self.internal else "external"
+        """"internal", "external" or "bevel", as a step says the mesh."""
+        return "bevel" if self.bevel else "internal" if self.internal else "external"
 
 
 @dataclass(frozen=True, slots=True)
@@ -227,7 +239,8 @@ class GearTrain:
                               phrase("gears.planets", n=self.planets),
                               fixed=phrase("gears.fixed") if self.fixed == self.arm else None))
         for m in self.meshes:
-            out.append(phrase("gears.meshes", a=m.a, b=m.b, kind=Word(m.word)))
+            out.append(phrase("gears.meshes_bevel", a=m.a, b=m.b) if m.bevel else
+                       phrase("gears.meshes", a=m.a, b=m.b, kind=Word(m.word)))
         return out
 
     # ----- the checks ---------------------------------------------------------------------
@@ -371,7 +384,7 @@ class GearTrain:
                 continue
             yield body, [(mesh, p, c) for mesh in self.meshes
                          for p, c in ((mesh.a, mesh.b), (mesh.b, mesh.a))
-                         if p in body and not self.carried(c)]
+                         if p in body and not self.carried(c) and not mesh.bevel]
 
     def uncoaxial(self, sized_too: bool = False) -> list[tuple[int, int, Fraction, int,
                                                              Fraction]]:

@@ -57,6 +57,11 @@ PHRASES: dict[str, str] = {
                          "{teeth}.",
     "gears.mesh_carries": "{driven} meshes {kind}ly with {driver}, so it turns {way}, "
                           "N{a}/N{b} = {na}/{nb} as fast: {turns} → {result}.",
+    "gears.bevel_carries": "{driven} meshes with {driver} through bevel teeth, their axes "
+                           "square, so it is taken to turn {way} (on fixed axes each the way "
+                           "the book calls forward; about a bevel planet the gears either "
+                           "side turn opposite ways relative to the arm), N{a}/N{b} = "
+                           "{na}/{nb} as fast: {turns} → {result}.",
     "gears.shaft_carries": "{member} is on one shaft with {other}: it turns alike, {turns}.",
     "gears.fixed": ", fixed",
     "gears.one_planet": "one planet",
@@ -146,6 +151,7 @@ PHRASES: dict[str, str] = {
     "gears.arm": "The arm {arm} turns about the main axis and carries the planets' pin "
                  "({planets}){fixed}.",
     "gears.meshes": "Gears {a} and {b} mesh {kind}ly.",
+    "gears.meshes_bevel": "Gears {a} and {b} mesh through bevel teeth, their axes square.",
     "gears.locked": "Row 1: lock the whole train, {arm} with it, and turn it +1 "
                     "(counter-clockwise): every member turns +1.",
     "gears.held": "Row 2: hold {arm} and turn {fixed}, the fixed member, −1 turn:",

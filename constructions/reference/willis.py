@@ -57,7 +57,7 @@ def willis_speeds(train: GearTrain) -> dict[int, Fraction]:
         if carrier is None:
             carrier = next((train.arm for m in train.body(mesh.a) + train.body(mesh.b)
                             if m != train.arm and train.gear(m).carrier is not None), None)
-        sign = 1 if mesh.internal else -1
+        sign = mesh.sign          # −1 external, +1 internal, a bevel pair's own
         terms = {mesh.a: Fraction(a.teeth), mesh.b: Fraction(-sign * b.teeth)}
         if carrier is not None:
             terms[carrier] = terms.get(carrier, Fraction(0)) - a.teeth + sign * b.teeth

@@ -107,7 +107,7 @@ class _Reader(InputTables):
         units = self.units()
         gears = self.gears(units)
         arm, arm_name, planets = self.arm()
-        meshes = self.meshes(units)
+        meshes = self.meshes(units, gears)
         shafts = self.shafts()
         fixed = self.fixed()
         member, speed, second = self.inputs(units)
@@ -353,7 +353,7 @@ class _Reader(InputTables):
             raise self.fail(f"member {n} is both a gear and the arm", "arm", "number")
         return n, t.get("name", ""), planets
 
-    def meshes(self, units: SpeedUnits) -> tuple[Mesh, ...]:
+    def meshes(self, units: SpeedUnits, gears: tuple[Gear, ...]) -> tuple[Mesh, ...]:
         out = []
         for i, t in enumerate(self.data.get("mesh") or []):
             pair = t.get("gears") if isinstance(t, dict) else None
@@ -362,8 +362,8 @@ class _Reader(InputTables):
                 raise self.fail("a mesh names its two gears, gears = [2, 4]", "mesh", "gears", i)
             self.known(t, ("gears", "kind", "centre_distance"), "mesh", i)
             kind = t.get("kind", "external")
-            if kind not in ("external", "internal"):
-                raise self.fail(f"unknown mesh kind '{kind}'; use external or internal",
+            if kind not in ("external", "internal", "bevel"):
+                raise self.fail(f"unknown mesh kind '{kind}'; use external, internal or bevel",
                                 "mesh", "kind", i)
             if pair[0] == pair[1]:
                 raise self.fail(f"gear {pair[0]} cannot mesh with itself", "mesh", "gears", i)
@@ -375,9 +375,32 @@ class _Reader(InputTables):
                     raise self.fail("a centre distance must be positive", "mesh",
                                     "centre_distance", i)
                 distance *= Fraction(repr(LENGTH_UNITS[units.length]))
-            out.append(Mesh(pair[0], pair[1], kind == "internal", distance))
+            out.append(Mesh(pair[0], pair[1], kind == "internal", distance,
+                            -1 if kind == "bevel" else 0))
         if not out:
             raise self.fail("list the meshes as [[mesh]] tables, gears = [2, 4]", key="mesh")
+        return self.bevel_senses(out, gears)
+
+    def bevel_senses(self, meshes: list[Mesh], gears: tuple[Gear, ...]) -> tuple[Mesh, ...]:
+        """A bevel planet's meshes with the gears beside it: the first listed +1, the
+        second −1, so the two turn opposite ways relative to the arm (a differential); a
+        third is refused. A bevel pair on fixed axes, square to each other, turns +1: each
+        turns in the sense the book takes as its forward one (a propeller shaft and the
+        crown it drives)."""
+        carried = {g.number for g in gears if g.carrier is not None}
+        seen: dict[int, int] = {}
+        out = []
+        for i, mesh in enumerate(meshes):
+            planet = next((g for g in (mesh.a, mesh.b) if g in carried), None)
+            if mesh.bevel and planet is not None:
+                seen[planet] = seen.get(planet, 0) + 1
+                if seen[planet] > 2:
+                    raise self.fail(f"gear {planet} has a third bevel mesh: a bevel planet "
+                                    "meshes the two gears either side of it", "mesh", "kind", i)
+                mesh = replace(mesh, bevel=1 if seen[planet] == 1 else -1)
+            elif mesh.bevel:                # on fixed axes: the senses as the book takes them
+                mesh = replace(mesh, bevel=1)
+            out.append(mesh)
         return tuple(out)
 
     def shafts(self) -> tuple[tuple[int, ...], ...]:
@@ -484,6 +507,14 @@ class _Reader(InputTables):
                                 f"ratio such as {every[-1]}/{every[0]}, a torque "
                                 f"torque{train.members[-1]}, a power power{train.members[-1]} "
                                 f"or teeth{train.gears[0].number}", "ask", "find")
+            square = [m for m in parts if m in every and any(
+                mesh.bevel and train.carried(int(m.removeprefix("omega"))) and int(
+                    m.removeprefix("omega")) in (mesh.a, mesh.b) for mesh in train.meshes)]
+            if square:
+                raise self.fail(f"cannot find '{q}': gear {square[0].removeprefix('omega')} is a "
+                                "bevel planet, turning about an axis square to the main axis, "
+                                "so its speed is no speed along it; ask a main-axis member's",
+                                "ask", "find")
             if q in every and not train.speed_given:
                 raise self.fail(f"cannot find '{q}' without a speed: give speed = … "
                                 f"({train.units.speed}) in [input], or ask a ratio such as "
