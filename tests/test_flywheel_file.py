@@ -524,3 +524,20 @@ def test_the_coefficient_of_fluctuation_of_energy_and_the_energy_stored():
     assert _q("punch-sheared-area")["energy_fluctuation"].value["value"] == pytest.approx(
         0.9, rel=1e-14)
     assert all(c.passed for c in q.values())
+
+
+def test_a_rim_that_gives_part_of_the_flywheel_s_inertia():
+    """The hub and arms give a tenth of I: the rim's mass at r is 0.9·I/r², its radius for a
+    mass √(0.9·I/m)."""
+    for rim, want in (("radius = 0.75", lambda i: 0.9 * i / 0.75 ** 2),
+                      ("mass = 200", lambda i: math.sqrt(0.9 * i / 200))):
+        ex = parse_flywheel(HARMONIC.format(flywheel='speed = 250\nspeed_fluctuation = "±1 %"\n'
+                                                     f"{rim}\nrim_share = 0.9"))
+        q = solve_flywheel(ex).checked
+        inertia = 1600 / (0.02 * (250 * math.pi / 30) ** 2)
+        key = "rim_mass" if "radius" in rim else "rim_radius"
+        assert q[key].value["value"] == pytest.approx(want(inertia), rel=H2 * 9 / 4)
+    with pytest.raises(InputError) as e:
+        parse_flywheel(HARMONIC.format(flywheel="speed = 1\nspeed_fluctuation = 0.1\n"
+                                                "radius = 1\nrim_share = 1.5"), "f.toml")
+    assert str(e.value).startswith("f.toml:9: ") and "at most 1" in str(e.value)

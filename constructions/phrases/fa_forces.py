@@ -114,6 +114,9 @@ WORDS: dict[str, str] = {
         "ضریب نوسان انرژی C_E = ΔE/(کار انجام‌شده در یک چرخه) = {ce}",
     "the flywheel stores ½·I·ω² = {energy} J at the mean speed":
         "چرخ طیار در سرعت میانگین ½·I·ω² = {energy} J انرژی ذخیره می‌کند",
+    "a rim of mean radius {radius} that gives {share} of I: m = {share}·I/r² = {mass} kg":
+        "طوقه‌ای به شعاع میانگین {radius} که {share} از I را می‌دهد: m = {share}·I/r² = "
+        "{mass} kg",
     "every number agrees with its reference": "همهٔ اعداد با مرجع خود سازگارند",
     "Each area times the diagram's scale ({scale} J per unit of area) is an energy: "
     "{energies} J.":

@@ -48,7 +48,8 @@ _KEYS = {"turning_moment": ("torque", "points", "areas", "torque_scale", "angle_
          "resisting_torque": ("torque", "points", "cycle"),
          "punch": PUNCH_KEYS,
          "flywheel": ("speed", "speed_max", "speed_min", "speed_fluctuation", "inertia", "mass",
-                      "radius", "diameter", "rim_speed", "density", "width_to_thickness",
+                      "radius", "diameter", "rim_speed", "rim_share", "density",
+                      "width_to_thickness",
                       "radius_of_gyration", "at")}
 
 
@@ -87,6 +88,8 @@ class FlywheelExercise:
     mass: float | None = None
     radius: float | None = None
     radius_of_gyration: float | None = None
+    rim_share: float = 1.0
+    """The part of the flywheel's I its rim gives, the hub and arms the rest."""
     rim_speed: float | None = None
     """The rim's mean speed (m/s), when the books give it: its radius v/ω and mass
     ΔE/(C_s·v²)."""
@@ -382,7 +385,8 @@ def _flywheel(t: Tables, metre: float, rad_s: float, diagram: dict) -> dict[str,
         raise t.fail("a flywheel holds a speed: give the mean speed, speed = 300 with [units] "
                      "speed = \"rpm\" (or the rim's speed in m/s, rim_speed = 25, for its mass "
                      "alone)", "flywheel", None)
-    rim = [k for k in ("diameter", "rim_speed", "density", "width_to_thickness") if k in fw]
+    rim = [k for k in ("diameter", "rim_speed", "rim_share", "density", "width_to_thickness")
+           if k in fw]
     if "speed_fluctuation" in out:
         if "rim_speed" in fw:
             # The rim's speed v = ω·r gives its radius, and m·v² = I·ω² its mass.
@@ -413,6 +417,12 @@ def _flywheel(t: Tables, metre: float, rad_s: float, diagram: dict) -> dict[str,
             raise t.fail("a rim's section comes from its density and width_to_thickness (b/t), "
                          "with its mass or mean radius: give them all", "flywheel",
                          "density" if "density" in fw else "width_to_thickness")
+        if "rim_share" in fw:
+            out["rim_share"] = positive("rim_share", "the rim's share of the flywheel's I")
+            if out["rim_share"] > 1 or "rim_speed" in out:
+                raise t.fail("rim_share is the part of I the rim gives (0.9 when the hub and arms "
+                             "give a tenth), at most 1, with a radius or a mass, not rim_speed",
+                             "flywheel", "rim_share")
         if "density" in fw:
             out["density"] = positive("density", "the rim's density (kg/m³)")
             out["width_to_thickness"] = positive("width_to_thickness",

@@ -172,12 +172,15 @@ class FlywheelSolution(ChapterFiles):
             q["inertia"] = _check(self.inertia, flywheel_inertia(ref_e, ex.speed,
                                                                  ex.speed_fluctuation),
                                   tol, "I = ΔE/(C_s·ω²)", unit="kg·m²")
+            # the rim's share of I (the hub and arms the rest), all of it unless the file says
+            share = ex.rim_share
+            rim, rim_ref = share * self.inertia, share * q["inertia"].reference["value"]
             if ex.radius is not None:
-                q["rim_mass"] = _check(rim_mass(self.inertia, ex.radius), rim_mass(
-                    q["inertia"].reference["value"], ex.radius), tol, "m = I/r²", unit="kg")
+                q["rim_mass"] = _check(rim_mass(rim, ex.radius), rim_mass(rim_ref, ex.radius),
+                                       tol, "m = I/r²", unit="kg")
             if ex.mass is not None:
-                q["rim_radius"] = _check(rim_radius(self.inertia, ex.mass), rim_radius(
-                    q["inertia"].reference["value"], ex.mass), tol, "r = √(I/m)", unit="m")
+                q["rim_radius"] = _check(rim_radius(rim, ex.mass), rim_radius(rim_ref, ex.mass),
+                                         tol, "r = √(I/m)", unit="m")
             q |= self._section(q, tol)
         elif ex.inertia is not None:
             q["speed_fluctuation"] = _check(
@@ -405,6 +408,11 @@ class FlywheelSolution(ChapterFiles):
             out.append(words("a rim whose mean speed is {speed} m/s: its radius r = v/ω = "
                              "{radius}, its mass m = I/r² = {mass} kg",
                              speed=numeral(ex.rim_speed, "g"), radius=self._length(ex.radius),
+                             mass=numeral(q["rim_mass"].value["value"])))
+        elif "rim_mass" in q and ex.rim_share != 1.0:
+            out.append(words("a rim of mean radius {radius} that gives {share} of I: m = "
+                             "{share}·I/r² = {mass} kg", radius=self._length(ex.radius),
+                             share=numeral(ex.rim_share, "g"),
                              mass=numeral(q["rim_mass"].value["value"])))
         elif "rim_mass" in q:
             out.append(words("a rim of mean radius {radius}: m = I/r² = {mass} kg",
