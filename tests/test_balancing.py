@@ -145,10 +145,15 @@ def test_a_bad_rotor_is_refused_in_one_line(old, new, words):
         message
 
 
-def test_a_rotor_with_no_balancing_plane_is_refused():
+def test_a_rotor_with_no_balancing_plane_gives_its_out_of_balance_force():
+    """With no [[balance]] the rotor is not balanced but asked its out-of-balance force:
+    |Σ mᵢrᵢ e^{iθᵢ}|·ω², the resultant the balancing product would be the opposite of."""
     cut = TEXT[:TEXT.index("[[balance]]")]
-    with pytest.raises(InputError, match=r"rotor.toml:\d+: name a balancing plane"):
-        parse_balance(cut, "rotor.toml")
+    ex = parse_balance(cut, "rotor.toml")
+    q = solve_balance(ex).results["quantities"]
+    x, y = resultant(ex.rotor.masses)
+    assert q["unbalanced_force"]["value"] == pytest.approx(
+        math.hypot(x, y) * ex.rotor.speed ** 2, rel=1e-12)
 
 
 def test_solve_writes_the_polygons_table_and_steps(tmp_path):

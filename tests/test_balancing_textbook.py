@@ -615,3 +615,58 @@ def test_an_inline_engines_forces_at_a_crank_angle_are_the_cylinders_cos_terms()
     assert q["primary_force_at_theta"]["value"] == 0.0
     no_at = solve_balance(parse_balance(_engine((0, 120, 240), (0, 400, 800)), "e.toml"))
     assert not any(k.endswith("_at_theta") for k in no_at.results["quantities"])
+
+
+ECCENTRICS = """
+[units]
+length = "mm"
+speed = "rpm"
+[rotor]
+speed = 600
+[[mass]]
+name = "1"
+mass = 0.8
+radius = 12
+angle = 0
+plane = 0
+[[mass]]
+name = "2"
+mass = 0.8
+radius = 18
+angle = 120
+plane = 60
+[[mass]]
+name = "3"
+mass = 0.8
+radius = 12
+angle = 240
+plane = 120
+"""
+
+
+@pytest.mark.parametrize("about, arms", [(None, (-0.06, 0.0, 0.06)), ("0", (0.0, 0.06, 0.12))])
+def test_a_rotor_with_no_balancing_plane_gives_its_out_of_balance_force_and_couple(about, arms):
+    """Three eccentrics 120° apart, 0.8 kg at 12, 18 and 12 mm, planes 60 mm apart, 600 rpm:
+    Σ m r e^{iθ} = 0.0096 + 0.0144·e^{i120°} + 0.0096·e^{i240°}, and the couple Σ m r l e^{iθ}
+    about the middle plane (the default) or plane 0 (about = 0); each × (20π)²."""
+    text = ECCENTRICS if about is None else ECCENTRICS.replace("speed = 600",
+                                                               f"speed = 600\nabout = {about}")
+    s = solve_balance(parse_balance(text, "r.toml"))
+    assert s.passed, s.failures
+    q = s.results["quantities"]
+    w2 = (20 * math.pi) ** 2
+    mr = (0.0096, 0.0144, 0.0096)
+    cis = [_cis(a) for a in (0, 120, 240)]
+    force = sum(m * c for m, c in zip(mr, cis))
+    couple = sum(m * a * c for m, a, c in zip(mr, arms, cis))
+    assert q["unbalanced_force"]["value"] == pytest.approx(abs(force) * w2, rel=1e-12)
+    assert q["unbalanced_force"]["angle_deg"] == pytest.approx(
+        math.degrees(math.atan2(force.imag, force.real)) % 360, rel=1e-12)
+    assert q["unbalanced_couple"]["value"] == pytest.approx(abs(couple) * w2, rel=1e-12)
+    assert {"space", "side", "force-polygon", "couple-polygon"} == set(s.figures)
+
+
+def test_about_with_balancing_planes_is_refused():
+    text = TWO_PLANES.replace("speed = 100", "speed = 100\nabout = 0")
+    with pytest.raises(InputError, match=r"t.toml:\d+: about is where an out-of-balance couple "):
+        parse_balance(text, "t.toml")

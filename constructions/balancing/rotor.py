@@ -46,11 +46,15 @@ class Plane:
 
 @dataclass(frozen=True)
 class Rotor:
-    """Masses on a shaft turning at ``speed`` (rad/s), and its balancing planes."""
+    """Masses on a shaft turning at ``speed`` (rad/s), and its balancing planes (none where
+    its out-of-balance force and couple are asked)."""
 
     masses: tuple[Mass, ...]
     planes: tuple[Plane, ...]
     speed: float
+    about: float | None = None
+    """Where no balancing plane is given, the plane (m) its out-of-balance couple is taken
+    about (None: midway between the outermost masses)."""
 
 
 @dataclass(frozen=True)

@@ -22,6 +22,9 @@ PHRASES: dict[str, str] = {
                      "polygon is a point: plane {plane} needs no balancing mass.",
     "balance.balanced": "The {plane} polygon closes on itself, its last tip back on its start: "
                         "the {plane} is balanced.",
+    "balance.couple.about": "The couple polygon about the reference plane: lay off each "
+                            "mᵢrᵢlᵢ, lᵢ from that plane, head to tail, each parallel to its "
+                            "mass's radial line (the other way where lᵢ < 0).",
     "balance.force.open": "The force polygon: lay off each known mᵢrᵢ head to tail, each "
                           "parallel to its mass's radial line; what is unknown closes it.",
     "balance.couple.open": "The couple polygon, the plane of {a} the reference (its mass "

@@ -99,6 +99,16 @@ WORDS: dict[str, str] = {
         "بیشترین برآیند {kind}: {size} N، نخست در θ = {angle}°",
     "with crank 1 at {angle}° from the i.d.c., along the line of stroke: {values}":
         "با لنگ ۱ در {angle}° از نقطهٔ مرگ داخلی، در امتداد خط کورس: {values}",
+    "out of balance: the {which} {size} {unit} at {angle}° ({product} {units} × ω², ω = "
+    "{speed} rad/s)":
+        "نامیزانی: {which} {size} {unit} با زاویهٔ {angle}° ({product} {units} × ω²، ω = "
+        "{speed} rad/s)",
+    "no out-of-balance {which}: its polygon closes on itself":
+        "{which} نامیزانی ندارد: چندضلعی آن خودبه‌خود بسته است",
+    "couples about the plane at {place}": "کوپل‌ها حول صفحه‌ای در {place}",
+    "polygons closed: {verdict}": "چندضلعی‌ها بسته شدند: {verdict}",
+    "{name}: couple polygon about the plane at {place} {unit}":
+        "{name}: چندضلعی کوپل حول صفحه‌ای در {place} {unit}",
     "force": "نیرو", "couple": "کوپل",
     "each where the algebra puts it": "هر یک همان‌جا که حل جبری نشان می‌دهد",
     ": found": ": یافته‌شده",
@@ -207,6 +217,9 @@ PHRASES: dict[str, str] = {
                      "ندارد.",
     "balance.balanced": "چندضلعی {plane} خودبه‌خود بسته است و نوک آخرین بردار بر نقطهٔ شروع "
                         "آن می‌افتد: {plane} متوازن است.",
+    "balance.couple.about": "چندضلعی کوپل حول صفحهٔ مرجع: هر mᵢrᵢlᵢ را، که lᵢ فاصله از آن "
+                            "صفحه است، پشت سر هم جدا کنید؛ هر بردار موازی خط شعاعی جرم خود، و "
+                            "هر جا lᵢ < 0 باشد در جهت مخالف آن.",
     "balance.force.open": "چندضلعی نیرو: هر mᵢrᵢ معلوم را پشت سر هم جدا کنید، هر یک موازی "
                           "خط شعاعی جرم خود؛ مجهول‌ها چندضلعی را می‌بندند.",
     "balance.couple.open": "چندضلعی کوپل، با صفحهٔ {a} به‌عنوان صفحهٔ مرجع (جرم آن حذف "

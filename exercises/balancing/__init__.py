@@ -37,6 +37,8 @@ class Balancing(Chapter):
                     "forces and couples by their polygons")
         if exercise.open is not None:
             return "the unknowns of the masses by the force and couple polygons"
+        if exercise.rotor is not None and not exercise.rotor.planes:
+            return "the out-of-balance force and couple by the force and couple polygons"
         if exercise.rotor is not None and exercise.engine is None:
             return ("the balancing mass by the force polygon" if len(exercise.rotor.planes) == 1
                     else "the two balancing masses by the couple and force polygons")

@@ -21,6 +21,7 @@ from tarsim.graphics.figure import Figure
 from tarsim.graphics.plot import PlotMark, Series, draw_line_plot
 from tarsim.graphics.train_table import draw_train_table
 from .open_rotor_solution import open_figures
+from .rotor_unbalance import unbalance_figures
 from .vee_engine import vee_figure
 
 if TYPE_CHECKING:
@@ -42,6 +43,8 @@ def balance_figures(s: BalanceSolution) -> dict[str, Figure]:
     if ex.open is not None:     # and an engine's polygons, where its primary balance found it
         return open_figures(ex.name, s.closure, ex.open, unit) | (
             _engine_figures(s) if ex.engine else {})
+    if ex.engine is None and s.unbalance is not None:
+        return unbalance_figures(ex.name, ex.rotor, s.unbalance, unit, metre)
     if ex.engine is None:
         return _rotor_figures(s, unit, metre)
     e = ex.engine

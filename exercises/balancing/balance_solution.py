@@ -18,6 +18,7 @@ from typing import Any
 from tarsim.constructions.balancing.engine import EnginePolygons, draw_engine, engine_kinds
 from tarsim.constructions.balancing.unknowns import Closure, close_rotor
 from tarsim.constructions.balancing.polygons import Balance, draw_balance, rounding
+from tarsim.constructions.balancing.unbalance import Unbalance
 from tarsim.constructions.units import LENGTH_UNITS
 from tarsim.constructions.narration import numeral, phrase, words
 from tarsim.constructions.reference.balance import (engine_greatest_at, engine_sums,
@@ -33,6 +34,8 @@ from .firing_order import firing_line
 from .single_cylinder import cylinder_balance, cylinder_checked, cylinder_lines
 from .vee_engine import vee_checked, vee_lines, vee_misses
 from .open_rotor_solution import open_checked, open_lines, open_misses
+from .rotor_unbalance import (unbalance, unbalance_checked, unbalance_lines,
+                              unbalance_misses)
 from .rotor_file import BalanceExercise
 
 __all__ = ["BalanceSolution", "solve_balance"]
@@ -60,7 +63,13 @@ class BalanceSolution(ChapterFiles):
         """The rotor's polygons, drawn (None for an engine with no balance planes): the file's
         rotor, or an in-line engine's cylinders as rotating masses."""
         r = self.exercise.rotor
-        return draw_balance(r) if r else None
+        return draw_balance(r) if r and r.planes else None
+
+    @cached_property
+    def unbalance(self) -> Unbalance | None:
+        """A rotor's out-of-balance polygons, where it has no balancing plane."""
+        r = self.exercise.rotor
+        return unbalance(r) if r and not r.planes else None
 
     @cached_property
     def closure(self) -> Closure | None:
@@ -106,6 +115,8 @@ class BalanceSolution(ChapterFiles):
     def misses(self) -> list[tuple[str, float]]:
         """What disagrees: (name, miss relative to the size its sums round at)."""
         out = [] if self.closure is None else open_misses(self.closure, self.exercise.open)
+        if self.unbalance is not None:
+            out += unbalance_misses(self.exercise.rotor, self.unbalance)
         if self.balance is not None:
             force_scale, couple_scale, product_scale = self.scales
             for name, want in self.expected.items():
@@ -229,9 +240,15 @@ class BalanceSolution(ChapterFiles):
         return out
 
     def _rotor_lines(self) -> list[str]:
-        """A rotor's resultant, each balancing plane's mass and the check."""
-        out = []
+        """A rotor's resultant, each balancing plane's mass and the check (with no plane,
+        its out-of-balance force and couple)."""
         r = self.exercise.rotor
+        if self.unbalance is not None:
+            verdict = words("each where the vector sum puts it") if self.passed else \
+                f"OFF: {', '.join(self.failures)}"
+            return unbalance_lines(r, self.unbalance, self._length) + [
+                words("polygons closed: {verdict}", verdict=verdict)]
+        out = []
         noise = rounding([m.mass * m.radius for m in r.masses])
         x, y = (_quiet(v, noise) for v in resultant(r.masses))
         if x == y == 0.0:
@@ -330,7 +347,8 @@ class BalanceSolution(ChapterFiles):
         with their checks)."""
         ex = self.exercise
         records = [made.construction for made in (self.engine_polygons, self.balance,
-                                                   self.closure) if made is not None]
+                                                   self.closure, self.unbalance)
+                   if made is not None]
         out = [title(ex.name, ex.description)]
         out += [Section(phrase("heading.construction"), (said_steps(record),))
                 for record in records]
@@ -348,6 +366,8 @@ class BalanceSolution(ChapterFiles):
             return open_checked(self.closure) | (self._engine_checked() if ex.engine else {})
         if ex.engine is not None:
             q |= self._engine_checked()
+        if self.unbalance is not None:
+            return unbalance_checked(ex.rotor, self.unbalance)
         if ex.rotor is not None:
             method = "force polygon" if len(self.expected) == 1 else "couple and force polygons"
             for name, want in self.expected.items():

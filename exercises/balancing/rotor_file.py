@@ -32,7 +32,8 @@ _NAME_LENGTH = 12
 _NAME = re.compile(rf"^[^\s\x00-\x1f\x7f-\x9f\u202a-\u202e\u2066-\u2069]{{1,{_NAME_LENGTH}}}$")
 """A mass's or a plane's name: a short word with no space or control character in it."""
 
-_KEYS = {"rotor": ("speed",), "mass": ("name", "mass", "radius", "angle", "plane", "between"),
+_KEYS = {"rotor": ("speed", "about"),
+         "mass": ("name", "mass", "radius", "angle", "plane", "between"),
          "balance": ("name", "plane", "radius", "mass"),
          "engine": ("speed", "crank", "stroke", "rod", "reciprocating", "balanced", "at",
                     "revolving", "balance_radius", "balance_mass", "firing_order", "strokes",
@@ -93,15 +94,28 @@ def parse_balance(text: str, filename: str = "<string>", exercise_id: str = "rot
             t, metre, _speed(t, "rotor"),
             lambda e, i: _name(t, e, "mass", i, str(i + 1), "mass")), **common)
     masses = _masses(t, metre, length)
-    planes = _planes(t, metre)
+    planes = _planes(t, metre) if t.entries("balance") else []
     taken = {m.name: f"mass {m.name}" for m in masses}
     for i, p in enumerate(planes):
         if p.name in taken:
             raise fail(f"balancing plane {p.name} has the name of {taken[p.name]}: give each "
                        "mass and plane its own name", "balance", "name", i)
         taken[p.name] = f"plane {p.name}"
-    return BalanceExercise(rotor=Rotor(tuple(masses), tuple(planes), _speed(t, "rotor")),
-                           **common)
+    return BalanceExercise(rotor=Rotor(tuple(masses), tuple(planes), _speed(t, "rotor"),
+                                       _about(t, planes, metre)), **common)
+
+
+def _about(t: Tables, planes: list, metre: float) -> float | None:
+    """``[rotor] about``: the plane an out-of-balance couple is taken about, where no
+    balancing plane is given (a balance takes its couples about plane A)."""
+    one = _one(t, "rotor")
+    if "about" not in one:
+        return None
+    if planes:
+        raise t.fail("about is where an out-of-balance couple is taken, with no [[balance]] "
+                     "planes; a balance takes its couples about plane A: leave it out",
+                     "rotor", "about")
+    return t.number(one, "about", "rotor", "the reference plane") * metre
 
 
 def _one(t: Tables, table: str) -> dict:
