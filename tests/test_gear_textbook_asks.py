@@ -367,3 +367,16 @@ def test_a_third_bevel_mesh_on_a_planet_is_refused():
         "[[mesh]]\ngears = [5, 4]").replace("[arm]", "[[gear]]\nnumber = 7\nteeth = 20\n[arm]")
     with pytest.raises(InputError, match=r"gear 5 has a third bevel mesh"):
         parse_train(text, "t.toml")
+
+
+def test_a_compound_bevel_planet_is_refused():
+    """Humpage's gear's compound planet: which side of its spindle each main-axis gear
+    stands (so the sense of each bevel mesh) is not in the file; refused, not guessed."""
+    text = DIFFERENTIAL.format(fixed="fixed = 3", p=20, q=20, pinion=12, find='["omega4"]',
+                               given="[input]\nmember = 6\nspeed = 100").replace(
+        "[[mesh]]\ngears = [5, 4]", "[[mesh]]\ngears = [7, 4]").replace(
+        "[arm]", "[[gear]]\nnumber = 7\nteeth = 20\ncarrier = 6\n[[shaft]]\nmembers = [5, 7]"
+        "\n[arm]")
+    with pytest.raises(InputError, match=r"which side of the spindle each main-axis gear "
+                                         r"stands cannot be told"):
+        parse_train(text, "t.toml")

@@ -353,6 +353,14 @@ class _Reader(InputTables):
             raise self.fail(f"member {n} is both a gear and the arm", "arm", "number")
         return n, t.get("name", ""), planets
 
+    def compound_bevel(self, planet: int, meshes: list[Mesh]) -> bool:
+        """True where a gear on ``planet``'s shaft has bevel meshes of its own (a
+        Humpage's gear's compound bevel planet)."""
+        spindle = {m for shaft in self.data.get("shaft") or [] if isinstance(shaft, dict)
+                   for m in (shaft.get("members") or []) if planet in (shaft.get("members")
+                                                                        or [])} - {planet}
+        return any(mesh.bevel and {mesh.a, mesh.b} & spindle for mesh in meshes)
+
     def meshes(self, units: SpeedUnits, gears: tuple[Gear, ...]) -> tuple[Mesh, ...]:
         out = []
         for i, t in enumerate(self.data.get("mesh") or []):
@@ -392,6 +400,11 @@ class _Reader(InputTables):
         out = []
         for i, mesh in enumerate(meshes):
             planet = next((g for g in (mesh.a, mesh.b) if g in carried), None)
+            if mesh.bevel and planet is not None and self.compound_bevel(planet, meshes):
+                raise self.fail(f"gear {planet}'s bevel meshes and another gear's on its "
+                                "spindle: which side of the spindle each main-axis gear "
+                                "stands cannot be told from the file; a bevel planet is one "
+                                "gear meshing the gears either side of it", "mesh", "kind", i)
             if mesh.bevel and planet is not None:
                 seen[planet] = seen.get(planet, 0) + 1
                 if seen[planet] > 2:
