@@ -405,6 +405,20 @@ def test_an_uncoupled_locomotive_gives_its_hammer_blow_tractive_force_and_swayin
     assert round(q["hammer_blow_A"]["value"]) == 18674
 
 
+def test_a_locomotives_wheels_lift_where_the_hammer_blow_reaches_the_dead_load():
+    """P = 40 kN on each wheel: B·ω²·b = P at ω = √(P/(B·b)), B·b = ⅔·330·0.325·|(0.45,
+    1.05)|/1.5 kg·m; on 1.8 m wheels v = ω·0.9 m/s, ×3.6 km/h (87.81 km/h)."""
+    text = LOCOMOTIVE.replace("wheel_diameter = 1800\n", "wheel_diameter = 1800\n"
+                                                         "dead_load = 40000\n")
+    q = solve_balance(parse_balance(text, "l.toml")).results["quantities"]
+    w = math.sqrt(40000 / (2 / 3 * 330 * 0.325 * math.hypot(0.45, 1.05) / 1.5))
+    assert q["lift_speed"]["value"] == pytest.approx(w, rel=1e-12)
+    assert q["lift_road_speed"]["value"] == pytest.approx(w * 0.9 * 3.6, rel=1e-12)
+    assert round(q["lift_road_speed"]["value"], 2) == 87.81
+    with pytest.raises(InputError, match=r"l.toml:\d+: dead_load is what a hammer blow lifts"):
+        parse_balance(text.replace("balanced = 0.6666666666666666\n", ""), "l.toml")
+
+
 @pytest.mark.parametrize("old, new, words", [
     ("wheel_diameter = 1800\n", "", "road_speed = … (km/h) with wheel_diameter = … together"),
     ("road_speed = 60\n", "road_speed = 60\nspeed = 100\n", "not both"),

@@ -82,6 +82,10 @@ class Engine:
     revolving: float = 0.0
     balance_radius: float | None = None
     balance_mass: float | None = None
+    wheel: float | None = None
+    """A locomotive's driving wheels' diameter (m), where its speed is given on them."""
+    dead_load: float | None = None
+    """The dead load on each driving wheel (N), against which the hammer blow lifts it."""
     at_given: bool = False
     """Whether the file asks the forces at ``at`` (an in-line engine's crank 1 from the
     i.d.c.; a single cylinder's are asked at 0° without it)."""

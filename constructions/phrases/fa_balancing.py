@@ -109,6 +109,11 @@ WORDS: dict[str, str] = {
     "polygons closed: {verdict}": "چندضلعی‌ها بسته شدند: {verdict}",
     "{name}: couple polygon about the plane at {place} {unit}":
         "{name}: چندضلعی کوپل حول صفحه‌ای در {place} {unit}",
+    "the wheel lifts off the rail where the hammer blow reaches the dead load of {load} N: at "
+    "ω = {speed} rad/s":
+        "چرخ آنجا از ریل بلند می‌شود که ضربهٔ چکشی به بار مردهٔ {load} N برسد: در ω = {speed} "
+        "rad/s",
+    ", {road} km/h on the wheels": "، {road} km/h روی چرخ‌ها",
     "force": "نیرو", "couple": "کوپل",
     "each where the algebra puts it": "هر یک همان‌جا که حل جبری نشان می‌دهد",
     ": found": ": یافته‌شده",

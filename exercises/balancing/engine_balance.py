@@ -66,6 +66,32 @@ def left_checked(s) -> dict[str, Checked]:
     for name, (got, want) in _blows(s).items():
         q[f"hammer_blow_{name}"] = Checked({"value": got, "unit": "N"}, {"value": want},
                                            method="couple and force polygons, c·m's share")
+    return q | _lift_checked(s)
+
+
+def _lift(s) -> tuple[float, float] | None:
+    """The speed (rad/s) at which the greatest hammer blow equals the dead load on a wheel,
+    ω = √(P/(B·b)): as drawn, and by the reference's B·b (None with no load given)."""
+    e = s.exercise.engine
+    if e.dead_load is None:
+        return None
+    w2 = e.speed ** 2
+    got, want = (max(v[i] for v in _blows(s).values()) / w2 for i in (0, 1))
+    return math.sqrt(e.dead_load / got), math.sqrt(e.dead_load / want)
+
+
+def _lift_checked(s) -> dict[str, Checked]:
+    """``lift_speed`` (rad/s) and, on wheels of a given diameter, ``lift_road_speed``
+    (km/h, v = ω·D/2)."""
+    lift, e = _lift(s), s.exercise.engine
+    if lift is None:
+        return {}
+    method = "√(dead load / the greatest B·b of c·m)"
+    q = {"lift_speed": Checked({"value": lift[0], "unit": "rad/s"}, {"value": lift[1]},
+                               method=method)}
+    if e.wheel is not None:
+        q["lift_road_speed"] = Checked({"value": lift[0] * e.wheel / 2 * 3.6, "unit": "km/h"},
+                                       {"value": lift[1] * e.wheel / 2 * 3.6}, method=method)
     return q
 
 
@@ -87,6 +113,14 @@ def left_lines(s) -> list[str]:
         out.append(words("hammer blow in plane {plane}: the balance mass's share for the "
                          "reciprocating mass turning, B·ω²·b = {blow} N", plane=name,
                          blow=numeral(blow)))
+    lift = _lift(s)
+    if lift is not None:
+        out.append(words("the wheel lifts off the rail where the hammer blow reaches the dead "
+                         "load of {load} N: at ω = {speed} rad/s", load=numeral(e.dead_load),
+                         speed=numeral(lift[0])) + (words(", {road} km/h on the wheels",
+                                                          road=numeral(lift[0] * e.wheel / 2
+                                                                       * 3.6))
+                                                    if e.wheel is not None else ""))
     return out
 
 

@@ -37,7 +37,7 @@ _KEYS = {"rotor": ("speed", "about"),
          "balance": ("name", "plane", "radius", "mass"),
          "engine": ("speed", "crank", "stroke", "rod", "reciprocating", "balanced", "at",
                     "revolving", "balance_radius", "balance_mass", "firing_order", "strokes",
-                    "road_speed", "wheel_diameter", "vee"),
+                    "road_speed", "wheel_diameter", "vee", "dead_load"),
          "cylinder": ("crank", "plane", "reciprocating")}
 
 
@@ -167,6 +167,25 @@ def _vee(t: Tables, one: dict) -> float:
                      "unbalanced; leave it out", "engine" if other[0] != "balance" else "balance",
                      other[0] if other[0] != "balance" else None)
     return math.radians(v)
+
+
+def _wheel(t: Tables, one: dict, metre: float, cylinders: int
+           ) -> tuple[float | None, float | None]:
+    """A locomotive's wheel diameter (m) and the dead load on each driving wheel (N), where
+    the file gives them; the load only where balance masses in the wheels strike the rails."""
+    wheel = t.number(one, "wheel_diameter", "engine", "the wheels' diameter") * metre \
+        if "wheel_diameter" in one else None
+    if "dead_load" not in one:
+        return wheel, None
+    load = t.number(one, "dead_load", "engine", "the dead load on a wheel")
+    if not load > 0:
+        raise t.fail(f"the dead load on a wheel must be positive, got {load:g} N", "engine",
+                     "dead_load")
+    if cylinders < 2 or not t.entries("balance") or "balanced" not in one:
+        raise t.fail("dead_load is what a hammer blow lifts a wheel against: it goes with "
+                     "[[balance]] planes (the wheels) and a fraction balanced", "engine",
+                     "dead_load")
+    return wheel, load
 
 
 def _engine_speed(t: Tables, one: dict, metre: float) -> float:
@@ -333,7 +352,8 @@ def _engine(t: Tables, metre: float) -> tuple[Engine, OpenRotor | None]:
     return Engine(cranks, planes, crank * metre, rod, mass, _engine_speed(t, one, metre),
                   balanced, _degrees(t.number(one, "at", "engine", "the crank angle", 0, 0.0)),
                   revolving, None if radius is None else radius * metre, balance,
-                  "at" in one, tuple(masses) if len(set(masses)) > 1 else (),
+                  *_wheel(t, one, metre, len(cranks)), "at" in one,
+                  tuple(masses) if len(set(masses)) > 1 else (),
                   vee, *(firing or ((), 0))), None
 
 
