@@ -684,3 +684,18 @@ def test_about_with_balancing_planes_is_refused():
     text = TWO_PLANES.replace("speed = 100", "speed = 100\nabout = 0")
     with pytest.raises(InputError, match=r"t.toml:\d+: about is where an out-of-balance couple "):
         parse_balance(text, "t.toml")
+
+
+def test_a_rod_given_by_its_ratio_to_the_crank_gives_the_secondary_force_its_share():
+    """n = l/r = 4.5 as the books give it: the same engine as rod = 450 mm on a 100 mm
+    crank, the greatest secondary m·ω²·r/n."""
+    text = ('[units]\nlength = "mm"\nspeed = "rpm"\n[engine]\nspeed = 600\ncrank = 100\n'
+            "rod_ratio = 4.5\nreciprocating = 30\nat = 30\n")
+    q = solve_balance(parse_balance(text, "e.toml")).results["quantities"]
+    assert q["secondary_max"]["value"] == pytest.approx(30 * 0.1 * (20 * math.pi) ** 2 / 4.5,
+                                                        rel=1e-12)
+    for bad, words in (("rod_ratio = 4.5", "must be more than 1"),
+                       ("rod_ratio = 4.5\nrod = 450", "not both")):
+        with pytest.raises(InputError, match=words):
+            parse_balance(text.replace("rod_ratio = 4.5", bad.replace("4.5", "0.5")
+                                       if "more" in words else bad), "e.toml")

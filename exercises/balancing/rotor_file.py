@@ -37,7 +37,7 @@ _KEYS = {"rotor": ("speed", "about"),
          "balance": ("name", "plane", "radius", "mass"),
          "engine": ("speed", "crank", "stroke", "rod", "reciprocating", "balanced", "at",
                     "revolving", "balance_radius", "balance_mass", "firing_order", "strokes",
-                    "road_speed", "wheel_diameter", "vee", "dead_load"),
+                    "road_speed", "wheel_diameter", "vee", "dead_load", "rod_ratio"),
          "cylinder": ("crank", "plane", "reciprocating")}
 
 
@@ -303,6 +303,16 @@ def _engine(t: Tables, metre: float) -> tuple[Engine, OpenRotor | None]:
     if not crank > 0:
         raise t.fail(f"the {key} must be positive, got {crank:g} {unit}", "engine", key)
     rod = None          # the primary forces need no rod; the secondary ones are its
+    if "rod" in one and "rod_ratio" in one:
+        raise t.fail("the connecting rod is given by its length (rod = …) or by its ratio to "
+                     "the crank (rod_ratio = n), not both", "engine", "rod_ratio")
+    if "rod_ratio" in one:          # the books' n = l/r, "the obliquity ratio"
+        n = t.number(one, "rod_ratio", "engine", "the connecting rod's ratio to the crank")
+        if not n > 1:
+            raise t.fail(f"the connecting rod's ratio to the crank, n = l/r, must be more than "
+                         f"1, or the piston cannot follow it round; got {n:g}", "engine",
+                         "rod_ratio")
+        rod = n * crank * metre
     if "rod" in one:
         rod = t.number(one, "rod", "engine", "the connecting rod's length")
         if not rod > crank:
