@@ -439,9 +439,9 @@ class Effort(Ask):
     """An engine's force as the textbooks name it, from the force polygons: the piston
     effort (its loads along the stroke, + toward the crank), the wall's thrust on the
     piston (the size of its push square to the stroke), the reciprocating parts' inertia
-    force (their m·a toward the crank, which the piston effort loses), the crank effort (the rod's push
-    on the crank pin square to the crank, + CCW), the turning moment it gives (N·m,
-    CCW +), the thrust on the shaft's bearings (the push along the crank, + toward the
+    force (their m·a toward the crank, which the piston effort loses), the crank effort
+    (the rod's push on the crank pin square to the crank, + CCW), the turning moment it
+    gives (N·m, CCW +), the thrust on the shaft's bearings (the push along the crank, + toward the
     shaft) and the rod's correction couple (N·m: :mod:`~.forces.equivalent`)."""
 
     word: str

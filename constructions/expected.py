@@ -358,7 +358,7 @@ def joint_force(work, ask: A.JointForce) -> Expected:
 def effort(work, ask: A.Effort) -> Expected:
     """An engine's effort by its textbook definition, from the same equations' joint
     forces and the loads' closed forms."""
-    from .reference.kinetostatics import efforts
+    from .reference.engine_efforts import efforts
 
     return Expected({"value": efforts(work.reference, work.kinematics, work.loads,
                                       _statics(work))[ask.word]})

@@ -26,13 +26,13 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import InputError
-from ..loads import (Loads, crank_tangent, leaning, made_of, near_rest, near_rest_refusal,
-                     resting_speed, stroke_axis)
+from ..loads import (Loads, leaning, made_of, near_rest, near_rest_refusal,
+                     resting_speed)
 from ..model import Mechanism
 from .joint_equations import JOINT_EQUATIONS
 from .solver import Kinematics, point_acceleration, point_velocity
 
-__all__ = ["JointForce", "Statics", "balance", "efforts", "load_scale", "power_torque",
+__all__ = ["JointForce", "Statics", "balance", "load_scale", "loads_on", "power_torque",
            "torque_rounding", "world_point"]
 
 
@@ -91,7 +91,7 @@ def _cross(r: tuple[float, float], f: tuple[float, float]) -> float:
     return r[0] * f[1] - r[1] * f[0]
 
 
-def _loads_on(kin: Kinematics, mech: Mechanism, loads: Loads, link: int
+def loads_on(kin: Kinematics, mech: Mechanism, loads: Loads, link: int
               ) -> list[tuple[tuple[float, float], tuple[float, float], float]]:
     """Every known load on ``link`` as (where, force, couple): its weight and inertia
     force at G with its inertia couple −Iα, and the external forces and couples."""
@@ -327,7 +327,7 @@ def _solve(mech: Mechanism, kin: Kinematics, loads: Loads, sides: dict[int, floa
     b = np.zeros(3 * len(moving))
     for link in moving:
         r = row[link]
-        for at, f, mz in _loads_on(kin, mech, loads, link):
+        for at, f, mz in loads_on(kin, mech, loads, link):
             b[r:r + 3] -= (f[0], f[1], _cross(arm(link, at), f) + mz)
         b[r + 2] -= couples.get(link, 0.0)
     _refuse_redundancy(a, columns, mech)
@@ -443,7 +443,7 @@ def _power(mech: Mechanism, kin: Kinematics, loads: Loads, statics: Statics | No
     for k in mech.links:
         if k.number == 1:
             continue
-        for at, f, mz in _loads_on(kin, mech, loads, k.number):
+        for at, f, mz in loads_on(kin, mech, loads, k.number):
             v = point_velocity(kin, mech, k.number, at)
             w = kin.omegas[k.number]
             terms.append(f[0] * v[0] + f[1] * v[1] + mz * w)
@@ -460,54 +460,3 @@ def _power(mech: Mechanism, kin: Kinematics, loads: Loads, statics: Statics | No
         terms.append(-math.fsum(lost))
         sizes += lost
     return math.fsum(terms), math.fsum(sizes)
-
-
-def efforts(mech: Mechanism, kin: Kinematics, loads: Loads, statics: Statics
-            ) -> dict[str, float]:
-    """An engine's efforts by the textbook's definitions, from the Newton–Euler joint forces:
-    the crank effort (the push of the link at the crank pin on the crank, square to the
-    crank, CCW +), its turning moment and the push along the crank toward the shaft (the
-    thrust on the shaft's bearings); for a slider-crank also the piston effort (the
-    piston's loads along the stroke, + toward the crank) and the size of the wall's push
-    on the piston square to the stroke."""
-    d = mech.drive.link
-    pivot, pin = mech.link(d).names[:2]
-    (rod,) = [k for k in mech.links_at(pin) if k != d]
-    push = statics.joint(f"F_{min(d, rod)}{max(d, rod)}").force    # of the lower on the higher
-    if d < rod:
-        push = (-push[0], -push[1])                                  # of the rod on the crank
-    t = crank_tangent(kin.points[pivot], kin.points[pin])
-    effort = push[0] * t[0] + push[1] * t[1]
-    r = math.dist(kin.points[pivot], kin.points[pin])
-    # the push along the crank, toward the shaft: the thrust on its bearings
-    out = {"crank_effort": effort, "turning_moment": effort * r,
-           "bearing_thrust": push[1] * t[0] - push[0] * t[1]}
-    guide = [s for s in mech.slides if s.guide_link == 1 and s.type.turns_with_guide]
-    if len(guide) == 1:
-        s = guide[0]
-        u = stroke_axis(kin.points[pivot], kin.points[s.point], s.direction)
-        piston = [f for _, f, _ in _loads_on(kin, mech, loads, s.link)]
-        out["piston_effort"] = math.fsum(f[0] * u[0] + f[1] * u[1] for f in piston)
-        out["wall_thrust"] = abs(statics.pushes[mech.slides.index(s)])
-        m = loads.mass_of(s.link)
-        a = (point_acceleration(kin, mech, s.link, world_point(kin, mech, s.link, m.centre))
-             if m is not None else (0.0, 0.0))
-        out["inertia_force"] = (m.mass if m is not None else 0.0) * (a[0] * u[0] + a[1] * u[1])
-        out["correction_couple"] = _correction(mech, kin, loads, pin, s.point, d)
-    return out
-
-
-def _correction(mech: Mechanism, kin: Kinematics, loads: Loads, pin: str, gudgeon: str,
-                crank: int) -> float:
-    """The rod's correction couple, its two-mass system built whole: the rod's mass split
-    between the pins by the lever rule, m_A = m·GP/AP and m_P = m·GA/AP, whose moment of
-    inertia about G, m_A·GA² + m_P·GP², the rod's own I_G falls short of; that difference
-    times the rod's α (0 where the crank pin's rod has no mass)."""
-    rods = [k for k in mech.links_at(pin) if k != crank and gudgeon in mech.link(k).names]
-    m = loads.mass_of(rods[0]) if rods else None
-    if m is None:
-        return 0.0
-    g = world_point(kin, mech, rods[0], m.centre)
-    ga, gp = math.dist(g, kin.points[pin]), math.dist(g, kin.points[gudgeon])
-    share_a, share_p = m.mass * gp / (ga + gp), m.mass * ga / (ga + gp)
-    return (share_a * ga * ga + share_p * gp * gp - m.inertia) * kin.alphas[rods[0]]

@@ -23,14 +23,11 @@ from typing import Any
 from tarsim.constructions.forces.flywheel import (Reading, area_reading, extreme, read_diagram,
                                                   read_table, rim_mass, rim_radius,
                                                   rim_section, speed_limits)
-from tarsim.constructions.narration import numeral, phrase, words
 from tarsim.constructions.reference.flywheel import (Integrated, flywheel_inertia, integrated,
                                                      speed_fluctuation)
-from tarsim.constructions.units import LENGTH_UNITS
 from ..checked import Checked
 from ..solution_folder import ChapterFiles
-from ..table_file import SPEEDS
-from ..worked_document import Bullets, Section, numbered, title
+from ..worked_document import Section
 from .flywheel_file import FlywheelExercise
 
 __all__ = ["FlywheelSolution", "solve_flywheel"]
@@ -328,183 +325,15 @@ class FlywheelSolution(ChapterFiles):
         return [k for k, c in self.checked.items() if c.passed is False]
 
     # ----- words -------------------------------------------------------------------------------
-    def _length(self, v: float) -> str:
-        unit = self.exercise.length_unit
-        return f"{numeral(v / LENGTH_UNITS[unit])} {unit}"
-
-    def _level(self, places: list[float], value: float) -> tuple[float, float] | None:
-        """A table's extreme ``value`` (N·m) held along a level stretch between its two
-        places (°), as (start, end) going forward round the cycle; None for an extreme at
-        points."""
-        ex = self.exercise
-        if not ex.points or len(places) != 2:
-            return None
-        period = math.degrees(ex.cycle)
-        for start, end in (places, places[::-1]):
-            span = (end - start) % period
-            t = [ex.diagram.torque(math.radians(start + f * span)) for f in (0.25, 0.5, 0.75)]
-            if max(abs(v - value) for v in t) <= 1e-12 * max(abs(v) for v in t + [1.0]):
-                return start, start + span if start + span <= period else start + span - period
-        return None
-
-    @property
-    def _speed_unit(self) -> float:
-        return SPEEDS[self.exercise.speed_unit]
-
-    def _theta(self, theta: float) -> str:
-        return numeral(math.degrees(theta) % 360 if self.exercise.cycle <= 2 * math.pi
-                       else math.degrees(theta), ".2f")
-
     def lines(self) -> list[str]:
         """What the command line prints and steps.md lists, in the language spoken."""
-        ex, r, q = self.exercise, self.reading, self.checked
-        out = []
-        if ex.resisting:
-            out.append(words("the machine's resisting torque averages T_mean = {mean} N·m over a "
-                             "cycle of {cycle}°: the steady driving torque",
-                             mean=numeral(r.mean), cycle=numeral(math.degrees(ex.cycle), "g")))
-        elif ex.diagram is not None:
-            out.append(words("mean turning moment T_mean = {mean} N·m over a cycle of {cycle}°",
-                             mean=numeral(r.mean), cycle=numeral(math.degrees(ex.cycle), "g")))
-        if ex.punch is not None:
-            out.append(words("a hole takes E = {energy} J in {time} s of every {period} s: the "
-                             "motor's power P = E/T = {power} kW", energy=numeral(ex.punch.energy),
-                             time=numeral(ex.punch.time, "g"),
-                             period=numeral(ex.punch.period, "g"),
-                             power=numeral(ex.punch.power / 1000)))
-        elif "power" in q:
-            out.append(words("power at the mean speed: P = T_mean·ω = {power} kW",
-                             power=numeral(q["power"].value["value"] / 1000)))
-        if r.delta_e:
-            where = (words("between θ = {low}° and {high}°", low=self._theta(r.lowest),
-                           high=self._theta(r.highest)) if ex.diagram is not None else
-                     words("the energy highest after area {high} and lowest after area {low}",
-                           high=numeral(r.highest or len(r.areas), "g"),
-                           low=numeral(r.lowest or len(r.areas), "g")))
-            out.append(words("greatest fluctuation of energy ΔE = {energy} J, {where}",
-                             energy=numeral(r.delta_e), where=where))
-        else:
-            out.append(words("the turning moment is steady: ΔE = 0 and no flywheel is needed"))
-        if "energy_fluctuation" in q:
-            out.append(words("the coefficient of fluctuation of energy C_E = ΔE/(work done in a "
-                             "cycle) = {ce}", ce=numeral(q["energy_fluctuation"].value["value"])))
-        if "kinetic_energy" in q:
-            out.append(words("the flywheel stores ½·I·ω² = {energy} J at the mean speed",
-                             energy=numeral(q["kinetic_energy"].value["value"])))
-        if "speed_max_at" in q:
-            out.append(words("the shaft runs fastest at θ = {high}° and slowest at θ = {low}°, "
-                             "where the energy it holds is highest and lowest",
-                             high=numeral(q["speed_max_at"].value["value"], ".2f"),
-                             low=numeral(q["speed_min_at"].value["value"], ".2f")))
-        if "inertia" in q:
-            out.append(words("flywheel for C_s = {cs} at ω = {omega} rad/s: I = ΔE/(C_s·ω²) = "
-                             "{inertia} kg·m²", cs=numeral(ex.speed_fluctuation, "g"),
-                             omega=numeral(ex.speed), inertia=numeral(self.inertia)))
-        if ex.rim_speed is not None and "rim_mass" in q and ex.radius is None:
-            out.append(words("a rim whose mean speed is {speed} m/s: m = ΔE/(C_s·v²) = {mass} kg",
-                             speed=numeral(ex.rim_speed, "g"),
-                             mass=numeral(q["rim_mass"].value["value"])))
-        elif ex.rim_speed is not None and "rim_mass" in q:
-            out.append(words("a rim whose mean speed is {speed} m/s: its radius r = v/ω = "
-                             "{radius}, its mass m = I/r² = {mass} kg",
-                             speed=numeral(ex.rim_speed, "g"), radius=self._length(ex.radius),
-                             mass=numeral(q["rim_mass"].value["value"])))
-        elif "rim_mass" in q and ex.rim_share != 1.0:
-            out.append(words("a rim of mean radius {radius} that gives {share} of I: m = "
-                             "{share}·I/r² = {mass} kg", radius=self._length(ex.radius),
-                             share=numeral(ex.rim_share, "g"),
-                             mass=numeral(q["rim_mass"].value["value"])))
-        elif "rim_mass" in q:
-            out.append(words("a rim of mean radius {radius}: m = I/r² = {mass} kg",
-                             radius=self._length(ex.radius),
-                             mass=numeral(q["rim_mass"].value["value"])))
-        if "rim_radius" in q and ex.rim_speed is None:
-            out.append(words("a rim of {mass} kg: its mean radius r = √(I/m) = {radius}",
-                             mass=numeral(ex.mass),
-                             radius=self._length(q["rim_radius"].value["value"])))
-        if "rim_thickness" in q:
-            out.append(words("its section at {density} kg/m³, the width {ratio} times the "
-                             "thickness: b·t = m/(ρ·2πr), t = {thickness}, b = {width}",
-                             density=numeral(ex.density, "g"),
-                             ratio=numeral(ex.width_to_thickness, "g"),
-                             thickness=self._length(q["rim_thickness"].value["value"]),
-                             width=self._length(q["rim_width"].value["value"])))
-        if "speed_fluctuation" in q:
-            out.append(words("a flywheel of I = {inertia} kg·m² holds the speed within C_s = "
-                             "ΔE/(I·ω²) = {cs} ({percent} % of the mean, ±{half} %)",
-                             inertia=numeral(ex.inertia),
-                             cs=numeral(q["speed_fluctuation"].value["value"]),
-                             percent=numeral(100 * q["speed_fluctuation"].value["value"]),
-                             half=numeral(50 * q["speed_fluctuation"].value["value"])))
-        if "speed_max" in q:
-            out.append(words("the greatest and least speeds ω(1 ± C_s/2): {high} and {low} "
-                             "{unit}", unit=ex.speed_unit,
-                             high=numeral(q["speed_max"].value["value"] / self._speed_unit),
-                             low=numeral(q["speed_min"].value["value"] / self._speed_unit)))
-        for key, say, held in (
-                ("acceleration", "greatest acceleration {alpha} rad/s² at θ = {at}°",
-                 "greatest acceleration {alpha} rad/s², held from θ = {start}° to {end}°"),
-                ("retardation", "greatest retardation {alpha} rad/s² at θ = {at}°",
-                 "greatest retardation {alpha} rad/s², held from θ = {start}° to {end}°")):
-            if f"greatest_{key}" in q:
-                c = q[f"greatest_{key}"]
-                side = ("greatest" if (key == "acceleration") != ex.resisting else "least")
-                level = self._level(c.value["angle_deg"], self.extremes[side][0][1])
-                out.append(words(say, alpha=numeral(c.value["value"]), at=", ".join(
-                    numeral(a, ".2f") for a in c.value["angle_deg"])) if level is None else
-                    words(held, alpha=numeral(c.value["value"]),
-                          start=numeral(level[0], ".2f"), end=numeral(level[1], ".2f")))
-        for theta in ex.at:
-            key = f"{math.degrees(theta):g}"
-            if f"alpha_at_{key}" in q:
-                out.append(words("at θ = {at}°: T = {torque} N·m, α = {alpha} rad/s²",
-                                 at=numeral(math.degrees(theta), "g"),
-                                 torque=numeral(q[f"T_at_{key}"].value["value"]),
-                                 alpha=numeral(q[f"alpha_at_{key}"].value["value"])))
-        failed = self.failures
-        out.append(words("every number agrees with its reference") if not failed else
-                   f"OFF: {', '.join(failed)}")
-        return out
+        from .flywheel_words import lines
+        return lines(self)
 
     def document(self) -> list[Section]:
         """steps.md: how the diagram is read, numbered, then the results."""
-        ex, r = self.exercise, self.reading
-        steps = []
-        if ex.punch is not None:
-            steps.append(words("While it punches, the steady motor gives E·t/T = {given} J of the "
-                               "{energy} J a hole takes; the flywheel gives up the rest, "
-                               "E·(1 − t/T) = {delta} J, and takes it back before the next "
-                               "hole.", given=numeral(ex.punch.energy - ex.punch.delta_e),
-                               energy=numeral(ex.punch.energy), delta=numeral(ex.punch.delta_e)))
-        elif ex.diagram is None:
-            steps.append(words("Each area times the diagram's scale ({scale} J per unit of area) "
-                               "is an energy: {energies} J.", scale=numeral(ex.energy_scale),
-                               energies=", ".join(numeral(a) for a in ex.areas)))
-        elif not r.step:
-            steps.append(words("Draw the table's points joined by straight lines, each jump "
-                               "upright; its mean is the area under it over the cycle."))
-        else:
-            steps.append(words("Draw T(θ) at {n} equal steps of {step}° over the cycle; its "
-                               "mean is the area under it over the cycle.",
-                               n=numeral(len(r.samples), "d"),
-                               step=numeral(math.degrees(r.step), "g")))
-        if ex.diagram is not None:
-            steps.append(words("The curve crosses the mean at {n} intercepts; between them "
-                               "lie the areas {energies} J.", n=numeral(len(r.intercepts), "d"),
-                               energies=", ".join(numeral(a, ".5g") for a in r.areas)))
-        steps.append(words("Add the areas in turn from the first intercept: the energy's "
-                           "highest less its lowest is the greatest fluctuation ΔE."))
-        if self.inertia and ex.resisting:
-            steps.append(words("With the driving torque steady at the mean, α = (T_mean − T)/I: "
-                               "greatest where the resisting torque is lowest over the whole "
-                               "cycle, most negative where it is highest."))
-        elif self.inertia and ex.diagram is not None:
-            steps.append(words("With the resistance steady at the mean, α = (T − T_mean)/I: "
-                               "greatest where T is highest over the whole cycle, most "
-                               "negative where it is lowest."))
-        return [title(ex.name, ex.description),
-                Section(phrase("heading.construction"), (numbered(steps),)),
-                Section(phrase("md.results"), (Bullets(tuple(self.lines())),))]
+        from .flywheel_words import document
+        return document(self)
 
     @property
     def figures(self) -> dict[str, Any]:
