@@ -326,6 +326,11 @@ points = [[0, 750], [180, 3000], [540, 3000], [720, 750]]\ncycle = 1080
     assert q["speed_fluctuation"].value["value"] == pytest.approx(cs, rel=1e-12)
     assert round(50 * cs, 2) == 3.58
     assert all(c.passed for c in q.values())
+    # α = ±1125/I, held along the table's two levels, found at their ends (its points)
+    lines = solve_flywheel(ex).lines()
+    assert any("acceleration" in s and "from θ = 720.00° to 1080.00°" in s for s in lines)
+    assert any("retardation" in s and "from θ = 180.00° to 540.00°" in s for s in lines)
+    assert q["greatest_acceleration"].value["value"] == pytest.approx(1125 / 180, rel=1e-12)
 
 
 def _table(draw_points):

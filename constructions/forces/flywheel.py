@@ -159,16 +159,27 @@ def extreme(d: Diagram, samples: tuple[tuple[float, float], ...],
     each peak of the scan (a step beyond both its neighbours), refined by golden-section
     search over the steps beside it (a table's peaks are at its points, which are steps),
     and every one within rounding of the best, in order of θ (a curve that repeats within
-    its cycle, T = A sin 2θ over a turn, has its greatest twice)."""
-    n = len(samples)
-    v = [sign * t for _, t in samples]
-    peaks = [k for k in range(n) if v[k] >= v[k - 1] and v[k] >= v[(k + 1) % n]
-             and (v[k] > v[k - 1] or v[k] > v[(k + 1) % n])] or [max(range(n), key=v.__getitem__)]
-    found = [samples[k] if d.kinks else _refined(d, samples, k, sign) for k in peaks]
-    best = max(sign * t for _, t in found)
+    its cycle, T = A sin 2θ over a turn, has its greatest twice). A table's straight lines
+    have their extremes at its points: each point, either side of it (a jump), is a place,
+    so a level stretch at the extreme is found at both its ends."""
     size = max(abs(t) for _, t in samples)
-    same = [(th % d.cycle, t) for th, t in found if sign * t >= best - 1e-9 * size]
-    return sorted(same)
+    if d.kinks:
+        found = [(k, d.torque(u)) for k in d.kinks for u in (k, math.nextafter(k, -math.inf))]
+    else:
+        n = len(samples)
+        v = [sign * t for _, t in samples]
+        peaks = [k for k in range(n) if v[k] >= v[k - 1] and v[k] >= v[(k + 1) % n]
+                 and (v[k] > v[k - 1] or v[k] > v[(k + 1) % n])] or [
+                     max(range(n), key=v.__getitem__)]
+        found = [_refined(d, samples, k, sign) for k in peaks]
+    best = max(sign * t for _, t in found)
+    same = {}
+    for th, t in found:
+        if sign * t >= best - 1e-9 * size:
+            key = th % d.cycle
+            # a point a cycle on is the first again; one place once
+            same.setdefault(round(key / d.cycle, 12) % 1.0, (key, t))
+    return sorted(same.values())
 
 
 def _refined(d: Diagram, samples, k: int, sign: float) -> tuple[float, float]:
