@@ -380,3 +380,21 @@ def test_a_compound_bevel_planet_is_refused():
     with pytest.raises(InputError, match=r"which side of the spindle each main-axis gear "
                                          r"stands cannot be told"):
         parse_train(text, "t.toml")
+
+
+# ----- the velocity diagram with no speed given ---------------------------------------------
+def test_the_velocity_diagram_with_no_speed_gives_the_ratios(tmp_path):
+    """ratio-only gives no speed: the diagram is drawn for the sun at 1 rpm and each
+    slope over the sun's is a speed ratio, ω4/ω2 = N2/(N1 + N2) = 20/100, read within the
+    drawing's rounding; results.json gives the reading beside the ratio, and the figure
+    names each line by its ratio."""
+    s = solve_train(load("ratio-only"))
+    assert s.diagram is not None and s.passed and not s.diagram_misses
+    read = s.diagram.said(4) / s.diagram.said(2)
+    beside = s.diagram_ratio(4, 2)
+    assert abs(read - 0.2) <= beside["tolerance"] < 1e-6      # a drawing's rounding, no more
+    s.write(tmp_path)
+    entry = json.loads((tmp_path / "results.json").read_text())["quantities"]["omega4/omega2"]
+    assert entry["velocity_diagram"]["value"] == pytest.approx(0.2, abs=beside["tolerance"])
+    svg = (tmp_path / "kutzbach.svg").read_text()
+    assert "ω₄/ω₂ = 0.2<" in svg and "ω₂/ω₂ = 1<" in svg

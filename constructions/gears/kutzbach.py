@@ -457,6 +457,17 @@ class _Diagram:
         for body, ref in k.lines.items():
             w = k.said(body[0])
             rate = w / self.t.units.per_rad_s
+            if not self.t.speed_given:         # drawn for the input at 1: a ratio
+                i = self.t.input_member
+                self.c.draw(f"kz:read:{body[0]}", "mark", self.k.through[body][-1]
+                            if ref != "kz:radial" else "kz:O", panel=Panel.VELOCITY,
+                            role=Role.RESULT, phrase=phrase(
+                                "kutzbach.read_ratio", member=_names(body), i=i,
+                                omega=Number(abs(w)), unit=self.t.units.speed,
+                                sense=phrase("gears.sense", sense=Word("ccw" if w > 0 else
+                                                                       "cw")) if w else None,
+                                ratio=significant(w / k.said(i))))
+                continue
             self.c.draw(f"kz:read:{body[0]}", "mark", self.k.through[body][-1]
                         if ref != "kz:radial" else "kz:O", panel=Panel.VELOCITY,
                         role=Role.RESULT, phrase=phrase(

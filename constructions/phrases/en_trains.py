@@ -103,6 +103,9 @@ PHRASES: dict[str, str] = {
                             "{q}.",
     "kutzbach.centre": "The planets' centre, at R, moves with the arm: it is where the line of "
                        "{known} crosses that level.",
+    "kutzbach.read_ratio": "Read ω{member} = Δv/Δr, the slope of its line: {omega} rad/s"
+                           "{sense}, drawn for the input at 1 {unit} (no speed is given): "
+                           "over the input's slope, ω{member}/ω{i} = {ratio}.",
     "kutzbach.read": "Read ω{member} = Δv/Δr, the slope of its line: {omega} rad/s{sense}, "
                      "{speed}.",
     "kutzbach.input_planet": "{member} turns {omega} rad/s {sense} about {pitch}, its pitch "

@@ -57,6 +57,9 @@ WORDS: dict[str, str] = {
     "{member} fixed; velocities across the radial line, ccw to the right":
         "{member} ثابت است؛ سرعت\u200cها عمود بر خط شعاعی، پادساعتگرد به سمت راست",
     "each member's ω is the slope Δv/Δr of its line": "ω هر عضو، شیب Δv/Δr خط آن است",
+    "no speed given: drawn for {member} at 1 {unit}, each slope over its slope is a speed "
+    "ratio": "سرعتی داده نشده: برای {member} با 1 {unit} رسم شده و شیب هر خط بر شیب آن، یک "
+             "نسبت سرعت است",
     # the involute mesh
     "to {centre}": "به سوی {centre}",
     "module {module} {mm}, {z1} and {z2} teeth, pressure angle {angle}°":
@@ -174,6 +177,9 @@ PHRASES: dict[str, str] = {
                             "می‌گذرد.",
     "kutzbach.centre": "مرکز چرخدنده‌های سیاره‌ای، در R، همراه بازو حرکت می‌کند: سرعت آن در محل "
                        "برخورد خط {known} با همان تراز به دست می‌آید.",
+    "kutzbach.read_ratio": "ω{member} = Δv/Δr را از شیب خط آن بخوانید: {omega} rad/s{sense}، "
+                           "که برای ورودی با 1 {unit} رسم شده است (سرعتی داده نشده): بر "
+                           "شیب ورودی، ω{member}/ω{i} = {ratio}.",
     "kutzbach.read": "ω{member} = Δv/Δr، یعنی شیب خط آن را بخوانید: {omega} rad/s{sense}، {speed}.",
     "kutzbach.input_planet": "{member} با سرعت زاویه‌ای {omega} rad/s {sense} حول {pitch} "
                              "می‌چرخد، یعنی نقطهٔ گام آن با عضو ثابت که ساکن است: در {name} "

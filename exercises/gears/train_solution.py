@@ -285,6 +285,18 @@ class TrainSolution(ChapterFiles):
         miss = abs(k.omegas[member] - float(self.found.speeds[member]) * per) / fastest
         return miss, min(k.rounding(member, fastest) / fastest, CEILING)
 
+    def diagram_ratio(self, a: int, b: int) -> dict[str, float]:
+        """ω_a/ω_b read off the velocity diagram as its two slopes' ratio, how far it lies
+        from the table's, and how far the two slopes' roundings let it (each ω off by its
+        rounding of the fastest: |δω_a|/|ω_b| + |ω_a/ω_b|·|δω_b|/|ω_b|)."""
+        k, per = self.diagram, self.train.units.per_rad_s
+        fastest = max(abs(float(self.found.speeds[m])) for m in k.omegas) * per
+        w_a, w_b = (float(self.found.speeds[m]) * per for m in (a, b))
+        read = k.said(a) / k.said(b)
+        allowed = (self.diagram_check(a)[1] + abs(w_a / w_b) * self.diagram_check(b)[1]) * \
+            fastest / abs(w_b)
+        return {"value": read, "rel_error": abs(read - w_a / w_b), "tolerance": allowed}
+
     @property
     def diagram_misses(self) -> list[int]:
         """The members whose ω the velocity diagram reads away from the table's, beyond
@@ -519,6 +531,11 @@ class TrainSolution(ChapterFiles):
                 miss, allowed = self.diagram_check(int(m))     # not a side shaft's gear
                 beside["velocity_diagram"] = {"value": self.diagram.said(int(m)),
                                               "rel_error": miss, "tolerance": allowed}
+            parts = [int(p.removeprefix("omega")) for p in q.name.split("/")
+                     if p.startswith("omega")]
+            if self.diagram is not None and len(parts) == 2 and all(
+                    p in self.diagram.omegas for p in parts):
+                beside["velocity_diagram"] = self.diagram_ratio(*parts)
             out[q.name] = Checked(entry, reference, rel_error=q.rel_error, method=q.method,
                                   beside=beside)
         return out
@@ -570,9 +587,10 @@ def solve_train(ex: TrainExercise) -> TrainSolution:
     reference = willis_speeds(ex.listed or train)
     refuse_beyond_floats(train, found.speeds)
     refuse_still_ratios(ex, found.speeds, reference)
-    # the diagram lays off the input's velocity: drawn only for a speed the file gives
-    # (nor with two given speeds: it is drawn from a fixed member's line)
-    drawable = (found.table is not None and train.speed_given and train.second is None
+    # the diagram lays off the input's velocity: with no speed given, for the input at 1
+    # of the file's unit, its slopes' ratios the speed ratios (not with two given speeds:
+    # it is drawn from a fixed member's line)
+    drawable = (found.table is not None and train.second is None
                 and undrawable(train) is None)
     diagram = draw_kutzbach(train, found.speeds) if drawable else None
     mesh = ref = None

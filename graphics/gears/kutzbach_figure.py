@@ -79,8 +79,14 @@ def draw_kutzbach_figure(train: GearTrain, k: Kutzbach, title: str,
         w = k.said(body[0]) / train.units.per_rad_s        # nil to the drawing's rounding
         sense = "" if w == 0 else " " + words("ccw" if w > 0 else "cw")
         names = ", ".join(subscript(f"ω{m}") for m in body)
-        named.append((f"{names} = {numeral(abs(w), '.4g')} {unit_words(train.units.speed)}"
-                      f"{sense}", lo, end))
+        if train.speed_given:
+            named.append((f"{names} = {numeral(abs(w), '.4g')} "
+                          f"{unit_words(train.units.speed)}{sense}", lo, end))
+        else:                    # drawn for the input at 1: each slope over the input's
+            i = train.input_member
+            ratio = k.said(body[0]) / k.said(i)
+            names = ", ".join(subscript(f"ω{m}") + "/" + subscript(f"ω{i}") for m in body)
+            named.append((f"{names} = {numeral(ratio, '.4g').replace('-', '−')}", lo, end))
     dots: list[tuple[float, float]] = []
     for ref, p in points.items():
         if ref.startswith("kz:r:") or any(abs(p[0] - q[0]) + abs(p[1] - q[1]) < 0.1
@@ -102,7 +108,11 @@ def draw_kutzbach_figure(train: GearTrain, k: Kutzbach, title: str,
     draw_caption(fig, words("{name}: velocity (Kutzbach) diagram", name=train.name),
                  [words("{member} fixed; velocities across the radial line, ccw to the right",
                         member=member_words(train, train.fixed)),
-                  words("each member's ω is the slope Δv/Δr of its line")],
+                  words("each member's ω is the slope Δv/Δr of its line")
+                  if train.speed_given else
+                  words("no speed given: drawn for {member} at 1 {unit}, each slope over "
+                        "its slope is a speed ratio", member=member_words(
+                            train, train.input_member), unit=unit_words(train.units.speed))],
                  per_cm=k.per_cm, unit=k.unit, scale_name="Radius scale",
                  second=("Velocity scale", k.velocity_per_cm, f"{k.unit}/s"), notes=notes)
     return fig
