@@ -398,3 +398,36 @@ def test_the_velocity_diagram_with_no_speed_gives_the_ratios(tmp_path):
     assert entry["velocity_diagram"]["value"] == pytest.approx(0.2, abs=beside["tolerance"])
     svg = (tmp_path / "kutzbach.svg").read_text()
     assert "ω₄/ω₂ = 0.2<" in svg and "ω₂/ω₂ = 1<" in svg
+
+
+def test_the_velocity_diagram_with_two_given_speeds():
+    """The sun at 200 rpm ccw and the arm at 100 rpm cw: their two lines through O give the
+    planet's line (through the sun's pitch point and the arm's C) and the ring's; the ring
+    reads ω4 = ω5 − (N2/N4)(ω2 − ω5) = −100 − (30/70)·300 = −1600/7 rpm, within the
+    drawing's rounding."""
+    s = solve_train(load("two-speeds-arm-and-sun"))
+    assert s.diagram is not None and s.passed and not s.diagram_misses
+    per = 2 * math.pi / 60
+    miss, allowed = s.diagram_check(4)
+    assert abs(s.diagram.said(4) / per + F(1600, 7)) <= 1e-6 and miss <= allowed < 1e-6
+
+
+@settings(max_examples=30, deadline=None)
+@given(st.integers(12, 60), st.integers(12, 40), st.integers(-3000, 3000).filter(bool),
+       st.integers(-3000, 3000).filter(bool))
+def test_a_sun_and_a_ring_driven_read_the_arm_off_the_diagram(sun, planet, w_sun, w_ring):
+    """No member fixed, the sun and the ring driven: the arm's line reads ω_a = (N_s·ω_s +
+    N_r·ω_r)/(N_s + N_r) off the diagram, to its rounding (each line drawn at the paper's
+    scale: a few parts in a million of the fastest at most)."""
+    ring = sun + 2 * planet
+    text = planetary(f"teeth = {ring}", f"teeth = {sun}", f"teeth = {planet}",
+                     given=f"member = 2\nspeed = {w_sun}", find='["omega4"]').replace(
+        "fixed = 1\n", "").replace("[input]", "[[input]]").replace(
+        "\n[ask]", f"\n[[input]]\nmember = 1\nspeed = {w_ring}\n\n[ask]")
+    s = solve_train(parse_train(text, "t.toml"))
+    want = F(sun * w_sun + ring * w_ring, sun + ring)
+    assert s.quantities["omega4"].exact == want
+    assert s.diagram is not None
+    miss, allowed = s.diagram_check(4)
+    assert miss <= allowed <= 1e-3
+    assert s.passed

@@ -186,7 +186,9 @@ def _plan(train: GearTrain, radii) -> tuple[int, tuple[int, int] | None, bool] |
 def undrawable(train: GearTrain) -> str | None:
     """Why ``train`` has no velocity diagram (an ordinary train, planets meshing each other,
     a gear on an axis of its own, no line to start from), or None if it has one."""
-    if not train.planetary or train.fixed is None or train.arm in train.body(train.fixed):
+    two = train.fixed is None and train.second is not None
+    if not train.planetary or (train.fixed is None and not two) or (
+            train.fixed is not None and train.arm in train.body(train.fixed)):
         return "an ordinary train has no velocity diagram: its axes stand still"
     if train.fixed in train.off_axis:
         return "the fixed member turns on a side shaft, off the radial line"
@@ -195,7 +197,10 @@ def undrawable(train: GearTrain) -> str | None:
                 "the velocity diagram: the table alone solves this train")
     if train.off_axis:                    # the diagram draws the main axis and the planets
         train = main_axis_train(train, [])[0]
-    if train.carried(train.fixed):
+    if two and any(train.carried(m) for m in (train.input_member, train.second[0])):
+        return ("a given speed is a planet's, and its line needs a point at rest: the table "
+                "alone solves this train")
+    if not two and train.carried(train.fixed):
         return f"the fixed member {train.fixed} is carried by the arm: the arm cannot turn"
     if train.uncoaxial(sized_too=True):     # the diagram lays radii off in modules
         return ("a planet's meshes stand at different radii in modules (its gears differ in "
@@ -209,7 +214,10 @@ def undrawable(train: GearTrain) -> str | None:
             return (f"the velocity diagram runs along one radial line, and {a} and {b} both "
                     "turn on fixed axes, one off the main axis: the table alone solves "
                     "this train")
-    if _plan(train, carrier_radii(train)) is None:
+    radii = carrier_radii(train)
+    if (two and not _reaches(train, {train.body(train.input_member),
+                                     train.body(train.second[0])}, radii)) or (
+            not two and _plan(train, radii) is None):
         return ("the velocity diagram cannot reach every member from the fixed one and "
                 "the input: the table alone solves this train")
     return None
@@ -232,8 +240,12 @@ def draw_kutzbach(train: GearTrain, sizes: dict[int, Fraction]) -> Kutzbach:
     if train.off_axis:
         train = main_axis_train(train, side)[0]
     radii = carrier_radii(train)
-    member, about, trial = _plan(train, radii)
     w = float(train.input_speed) * train.units.per_rad_s
+    if train.fixed is None:       # two given speeds: two lines through O, the rest from them
+        m2, w2 = train.second[0], float(train.second[1]) * train.units.per_rad_s
+        return _Diagram(train, sizes, radii, _Start(train.input_member, w), side,
+                        _Start(m2, w2)).run()
+    member, about, trial = _plan(train, radii)
     if not trial:
         return _Diagram(train, sizes, radii, _Start(member, w, about), side).run()
     # Drawn first at a trial speed of ``member``: every velocity scales with it, so the
@@ -253,8 +265,10 @@ _ROOM = (90.0, 110.0)
 
 class _Diagram:
     def __init__(self, train: GearTrain, sizes: dict[int, Fraction], radii, start: _Start,
-                 side: list[Phrase] = ()):
+                 side: list[Phrase] = (), second: _Start | None = None):
         self.t, self.radii, self.start, self.side = train, radii, start, side
+        self.second = second
+        """The second given member's start, where no member is fixed."""
         self.metre = 1.0 if train.sized else 1e-3
         distinct = list(dict.fromkeys(radii.values()))
         self.arm_r = distinct[0]
@@ -312,16 +326,22 @@ class _Diagram:
                panel=Panel.VELOCITY)
         c.give("kz:across", g.Line(0.0, 1.0, 0.0), label="", kind=Kind.LINE,
                panel=Panel.VELOCITY)
-        fixed = t.body(t.fixed)
-        self.k.lines[fixed] = "kz:radial"
-        self.act("kz:fixed", "mark", "kz:O", said=phrase("kutzbach.fixed",
-                                                        member=t.said(t.fixed, opening=True)))
+        if self.second is None:
+            self.k.lines[t.body(t.fixed)] = "kz:radial"
+            self.act("kz:fixed", "mark", "kz:O", said=phrase(
+                "kutzbach.fixed", member=t.said(t.fixed, opening=True)))
+        else:
+            self.act("kz:two", "mark", "kz:O", said=phrase(
+                "kutzbach.two_given", a=t.said(self.start.member),
+                b=t.said(self.second.member)))
         for k, said in enumerate(self.side):      # off the radial line: by the tooth ratios
             self.act(f"kz:side:{k}", "mark", "kz:O", said=said)
         if self.start.about is None:
-            self.draw_start()
+            self.draw_start(self.start)
         else:
             self.draw_planet_start()
+        if self.second is not None:
+            self.draw_start(self.second)
         while len(self.k.lines) < len(t.bodies):
             if not self.next_line():
                 raise InputError("the velocity diagram cannot reach every member from the "
@@ -336,9 +356,9 @@ class _Diagram:
             return "R", self.arm_r
         return f"r{m}", self.t.pitch_radius(m)
 
-    def draw_start(self) -> None:
-        """The start member's velocity laid off at its radius, and its line through O."""
-        t, s = self.t, self.start
+    def draw_start(self, s: _Start) -> None:
+        """A start member's velocity laid off at its radius, and its line through O."""
+        t = self.t
         m, w = s.member, s.omega
         if s.trial is not None:
             per = t.units.per_rad_s

@@ -103,6 +103,8 @@ PHRASES: dict[str, str] = {
                             "{q}.",
     "kutzbach.centre": "The planets' centre, at R, moves with the arm: it is where the line of "
                        "{known} crosses that level.",
+    "kutzbach.two_given": "No member is fixed: the two given speeds each give a line through "
+                          "O, {a}'s and {b}'s, and every other line follows from them.",
     "kutzbach.read_ratio": "Read ω{member} = Δv/Δr, the slope of its line: {omega} rad/s"
                            "{sense}, drawn for the input at 1 {unit} (no speed is given): "
                            "over the input's slope, ω{member}/ω{i} = {ratio}.",

@@ -57,6 +57,9 @@ WORDS: dict[str, str] = {
     "{member} fixed; velocities across the radial line, ccw to the right":
         "{member} ثابت است؛ سرعت\u200cها عمود بر خط شعاعی، پادساعتگرد به سمت راست",
     "each member's ω is the slope Δv/Δr of its line": "ω هر عضو، شیب Δv/Δr خط آن است",
+    "no member fixed: {a} and {b} given; velocities across the radial line, ccw to the "
+    "right": "هیچ عضوی ثابت نیست: {a} و {b} داده شده‌اند؛ سرعت‌ها عمود بر خط شعاعی، "
+             "پادساعتگرد به راست",
     "no speed given: drawn for {member} at 1 {unit}, each slope over its slope is a speed "
     "ratio": "سرعتی داده نشده: برای {member} با 1 {unit} رسم شده و شیب هر خط بر شیب آن، یک "
              "نسبت سرعت است",
@@ -177,6 +180,8 @@ PHRASES: dict[str, str] = {
                             "می‌گذرد.",
     "kutzbach.centre": "مرکز چرخدنده‌های سیاره‌ای، در R، همراه بازو حرکت می‌کند: سرعت آن در محل "
                        "برخورد خط {known} با همان تراز به دست می‌آید.",
+    "kutzbach.two_given": "هیچ عضوی ثابت نیست: هر یک از دو سرعت داده‌شده، خطی از O می‌دهد، "
+                          "خط {a} و خط {b}، و خط‌های دیگر از آن‌ها به دست می‌آیند.",
     "kutzbach.read_ratio": "ω{member} = Δv/Δr را از شیب خط آن بخوانید: {omega} rad/s{sense}، "
                            "که برای ورودی با 1 {unit} رسم شده است (سرعتی داده نشده): بر "
                            "شیب ورودی، ω{member}/ω{i} = {ratio}.",

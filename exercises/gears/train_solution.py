@@ -588,10 +588,8 @@ def solve_train(ex: TrainExercise) -> TrainSolution:
     refuse_beyond_floats(train, found.speeds)
     refuse_still_ratios(ex, found.speeds, reference)
     # the diagram lays off the input's velocity: with no speed given, for the input at 1
-    # of the file's unit, its slopes' ratios the speed ratios (not with two given speeds:
-    # it is drawn from a fixed member's line)
-    drawable = (found.table is not None and train.second is None
-                and undrawable(train) is None)
+    # of the file's unit, its slopes' ratios the speed ratios; with two given speeds, both
+    drawable = found.table is not None and undrawable(train) is None
     diagram = draw_kutzbach(train, found.speeds) if drawable else None
     mesh = ref = None
     if ex.involute is not None:

@@ -107,7 +107,11 @@ def draw_kutzbach_figure(train: GearTrain, k: Kutzbach, title: str,
     placer.place("O", (0.0, 0.0), prefer=-1.57, gap=1.5, size=3.2)
     draw_caption(fig, words("{name}: velocity (Kutzbach) diagram", name=train.name),
                  [words("{member} fixed; velocities across the radial line, ccw to the right",
-                        member=member_words(train, train.fixed)),
+                        member=member_words(train, train.fixed)) if train.fixed is not None
+                  else words("no member fixed: {a} and {b} given; velocities across the "
+                             "radial line, ccw to the right", a=member_words(
+                                 train, train.input_member), b=member_words(
+                                 train, train.second[0])),
                   words("each member's ω is the slope Δv/Δr of its line")
                   if train.speed_given else
                   words("no speed given: drawn for {member} at 1 {unit}, each slope over "
