@@ -83,7 +83,8 @@ def test_a_flank_radius_given_for_the_angle_gives_the_same_cam():
     ("arc", "kind = \"circular arc\"", "kind = \"convex\"", "a cam's kind is circular arc or "
                                                            "tangent, not 'convex'"),
     ("tangent", "lift = 15\n", "", "gives two of nose_radius, lift and angle"),
-    ("tangent", "faces_angle = 60 ", "faces_angle = 60\nangle = 60 ", "not both"),
+    ("tangent", "faces_angle = 60 ", "faces_angle = 60\nangle = 60 ",
+     "not angle and faces_angle"),
     ("tangent", "diameter = 20", "diameter = 20\nradius = 10", "gives its radius"),
     ("tangent", "lift = 15\n", "lift = 15\nwidth = 3\n", "unknown setting 'width'"),
 ])
@@ -145,3 +146,32 @@ def test_an_eccentric_disc_under_a_roller_is_a_slider_crank():
     assert v > w * e and all(arc_motion(ex.cam, math.radians(d), w)[1] <= v * (1 + 1e-12)
                              for d in range(0, 181))
     assert not s.failures
+
+
+def test_the_angle_of_action_is_twice_the_angle_of_lift():
+    ex = parse_cam(ARC.replace("angle = 60 ", "action_angle = 120 "), "cam.toml")
+    assert ex.cam.alpha == pytest.approx(math.radians(60), rel=1e-15)
+    with pytest.raises(InputError, match="not angle and action_angle"):
+        parse_cam(ARC.replace("angle = 60 ", "angle = 60\naction_angle = 120 "), "cam.toml")
+
+
+def test_the_spring_holds_the_follower_against_its_greatest_retardation():
+    """A circular-arc cam's retardation on the nose, ω²d cos(α − θ), is greatest at the apex:
+    the spring force m·ω²d. A tangent cam's may be greatest where the roller comes onto the
+    nose (here 35.6 m/s² there against 31.6 at the apex): m times the greatest, found
+    anywhere on the nose."""
+    s = solve(parse_cam(ARC.replace('kind = "flat-faced"', 'kind = "flat-faced"\nmass = 1.5'),
+                        "cam.toml"))
+    w = 500 * 2 * math.pi / 60
+    q = s.results["quantities"]
+    assert q["spring_force"]["value"] == pytest.approx(1.5 * w * w * 0.040, rel=1e-12)
+    tangent = parse_cam(TANGENT.replace("faces_angle = 60 ", "faces_angle = 90 ")
+                        .replace("lift = 15\n", "nose_radius = 6\n")
+                        .replace("diameter = 20", "radius = 15\nmass = 2")
+                        .replace("speed = 150", "speed = 180"), "cam.toml")
+    t = solve(tangent)
+    w = 6 * math.pi
+    worst = max(-arc_motion(tangent.cam, tangent.cam.phi + (tangent.cam.alpha - tangent.cam.phi)
+                            * i / 2000, w, "nose")[2] for i in range(2001))
+    assert t.results["quantities"]["spring_force"]["value"] == pytest.approx(2 * worst, rel=1e-9)
+    assert not t.failures

@@ -187,6 +187,10 @@ WORDS: dict[str, str] = {
         "مرکز دیسک به فاصلهٔ {d} از محور، شعاع دیسک {r}: خیز {h}",
     "the acceleration at the lowest place": "شتاب در پایین‌ترین موقعیت",
     "the greatest velocity": "بیشترین سرعت",
+    "the spring must hold the follower ({m} kg) to the nose against its greatest retardation, "
+    "at θ = {theta}°: at least {force} N": "فنر باید پیرو ({m} کیلوگرم) را در برابر بیشترین "
+                                           "کاهش سرعتش، در θ = {theta}°، روی دماغه نگه دارد: "
+                                           "دست‌کم {force} N",
     "the disc's radius {r2}, its eccentricity OQ = {d}": "شعاع دیسک {r2}، خروج از مرکز OQ = {d}",
     "the least base circle for a greatest pressure angle of {limit}°: {r} {unit} (the "
     "layout's greatest: {got}°)   {check}": "کوچک‌ترین دایرهٔ پایه برای بیشترین زاویهٔ فشار "

@@ -26,8 +26,8 @@ __all__ = ["ArcCamExercise", "parse_arc_cam", "eccentric_disc", "ARC_KINDS"]
 ARC_KINDS = {"circular arc": "flat-faced", "tangent": "roller"}
 """Each cam of arcs and the follower the books set on it."""
 
-_CAM_KEYS = ("kind", "base_radius", "nose_radius", "lift", "angle", "faces_angle",
-             "flank_radius", "speed", "sense")
+_CAM_KEYS = ("kind", "base_radius", "nose_radius", "lift", "angle", "action_angle",
+             "faces_angle", "flank_radius", "speed", "sense")
 
 
 @dataclass(frozen=True)
@@ -49,6 +49,9 @@ class ArcCamExercise:
     given: tuple[str, ...] = ()
     """Which of the cam's sizes the file gives (the rest are found)."""
     names: tuple[tuple[str, str], ...] = ()
+    mass: float = 0.0
+    """The follower's mass (kg), where the file gives it: the spring must hold it to the
+    nose against its greatest retardation."""
 
     def named_in(self, lang: str) -> ArcCamExercise:
         """The same exercise with the cam named in ``lang``, if its file does."""
@@ -90,7 +93,8 @@ def parse_arc_cam(tables, exercise_id: str, angles) -> ArcCamExercise:
         raise fail("the cam turns at a positive speed, its sense cw or ccw", "cam", "sense")
     omega = rate * SPEEDS[speed] * (1 if sense == "ccw" else -1)
     roller = _follower(data.get("follower") or {}, kind, metre, fail)
-    given = tuple(k for k in ("nose_radius", "lift", "angle", "faces_angle", "flank_radius")
+    given = tuple(k for k in ("nose_radius", "lift", "angle", "action_angle", "faces_angle",
+                              "flank_radius")
                   if k in cam)
     if kind == "tangent":
         shape = _tangent(cam, r1, size, number, fail)
@@ -110,7 +114,8 @@ def parse_arc_cam(tables, exercise_id: str, angles) -> ArcCamExercise:
     return ArcCamExercise(exercise_id, str(data.get("name", exercise_id)),
                           str(data.get("source", "")), str(data.get("description", "")),
                           made, omega, length, speed, at, given,
-                          read_names(data, tables.where, tables.filename))
+                          read_names(data, tables.where, tables.filename),
+                          mass=_mass(data.get("follower") or {}, number, fail))
 
 
 def eccentric_disc(tables, exercise_id: str, disc: tuple[float, float], follower, omega: float,
@@ -138,6 +143,16 @@ def eccentric_disc(tables, exercise_id: str, disc: tuple[float, float], follower
                           made, omega, length, speed, angles(ask.get("at", []), fail),
                           ("disc_radius", "eccentricity"),
                           read_names(data, tables.where, tables.filename))
+
+
+def _mass(t: dict[str, Any], number, fail) -> float:
+    """The follower's mass (kg) and its parts', where [follower] gives it; 0 where not."""
+    if "mass" not in t:
+        return 0.0
+    m = number(t, "mass", "follower", "the follower's mass")
+    if not 0 < m < 1e9:
+        raise fail(f"the follower's mass must be positive, got {m:g} kg", "follower", "mass")
+    return m
 
 
 def _follower(t: dict[str, Any], kind: str, metre: float, fail) -> float:
@@ -224,8 +239,16 @@ def _circular(cam: dict[str, Any], r1: float, size, number, fail
 
 def _angle(cam: dict[str, Any], number, fail, *, faces: bool) -> float | None:
     """The angle of lift (rad) as given: ``angle``, or a tangent cam's ``faces_angle``."""
-    if "angle" in cam and "faces_angle" in cam:
-        raise fail("give the angle of lift or the faces' angle, not both", "cam", "faces_angle")
+    given = [k for k in ("angle", "action_angle", "faces_angle") if k in cam]
+    if len(given) > 1:
+        raise fail(f"give one of the angle of lift, the angle of action and the faces' angle, "
+                   f"not {' and '.join(given)}", "cam", given[-1])
+    if "action_angle" in cam:              # the lift and the return: twice the angle of lift
+        v = number(cam, "action_angle", "cam", "the angle of action")
+        if not 0 < v < 360:
+            raise fail(f"the angle of action is between 0° and 360°, not {v:g}°", "cam",
+                       "action_angle")
+        return math.radians(v / 2)
     if "faces_angle" in cam:
         if not faces:
             raise fail("only a tangent cam has straight faces", "cam", "faces_angle")

@@ -150,10 +150,26 @@ class ArcCamSolution(ChapterFiles):
             out["flank_angle"] = (c.phi, c.alpha - flank.start, "sin φ = d sin α/(R − r₂)")
         return out
 
+    @cached_property
+    def spring(self) -> tuple[float, float, float] | None:
+        """Where the follower's retardation is greatest on the nose (rad), the spring force
+        that holds it there, m × that retardation (N), and the same from the outline's
+        differences; None where the file gives no mass."""
+        ex, c = self.exercise, self.exercise.cam
+        if not ex.mass:
+            return None
+        w = abs(ex.omega)
+        theta = _golden(lambda t: -arc_motion(c, t, w, "nose")[2], c.phi, c.alpha)
+        side = 1 if theta - 3 * STEP < c.phi else 0
+        return (theta, -ex.mass * arc_motion(c, theta, w, "nose")[2],
+                -ex.mass * self._differences(theta, side)[2] * w * w)
+
     @property
     def failures(self) -> list[str]:
         """What disagrees with the outline, by name."""
-        return [r.name for r in self.readings if not r.passed] + [
+        spring = self.spring
+        return (["spring_force"] if spring and abs(spring[1] - spring[2]) > AGREE * spring[1]
+                else []) + [r.name for r in self.readings if not r.passed] + [
             name for name, (v, ref, _) in self.dimensions.items()
             if ref is not None and abs(v - ref) > 1e-9 * abs(v)]
 
@@ -167,6 +183,13 @@ class ArcCamSolution(ChapterFiles):
                                 tolerance=None if ref is None else 1e-9,
                                 passed=None if ref is None else abs(v - ref) <= 1e-9 * abs(v),
                                 method=how)
+        if self.spring is not None:
+            theta, force, ref = self.spring
+            out["spring_force"] = Checked(
+                {"value": force, "theta": theta}, {"value": ref},
+                rel_error=abs(force - ref) / force, tolerance=AGREE,
+                passed=abs(force - ref) <= AGREE * force,
+                method="m × the greatest retardation on the nose; differences of the place")
         for r in self.readings:
             out[r.name] = Checked({"value": r.value, "theta": r.theta}, {"value": r.reference},
                                   rel_error=abs(r.value - r.reference) / r.scale,
@@ -210,6 +233,12 @@ class ArcCamSolution(ChapterFiles):
                              what=what, name=r.name, value=value, unit=said,
                              theta=numeral(math.degrees(r.theta), ".4g"),
                              check=words("check ok" if r.passed else "check FAILED")))
+        if self.spring is not None:
+            theta, force, _ = self.spring
+            out.append(words("the spring must hold the follower ({m} kg) to the nose against "
+                             "its greatest retardation, at θ = {theta}°: at least {force} N",
+                             m=numeral(ex.mass, "g"), theta=numeral(math.degrees(theta), ".4g"),
+                             force=numeral(force, ".5g")))
         out.append(words("the outline read at every asked angle: {ok}", ok=ok))
         return out
 
@@ -257,13 +286,18 @@ class ArcCamSolution(ChapterFiles):
 
 
 def _fastest(cam) -> float:
-    """Where the follower of an eccentric disc rises fastest (rad): golden-section search
-    on its velocity, which rises once and falls once over the lift (a slider-crank's piston
-    between its dead centres)."""
-    lo, hi, g = 0.0, cam.alpha, (math.sqrt(5) - 1) / 2
+    """Where the follower of an eccentric disc rises fastest (rad): its velocity rises once
+    and falls once over the lift (a slider-crank's piston between its dead centres)."""
+    return _golden(lambda t: arc_motion(cam, t, 1.0)[1], 0.0, cam.alpha)
+
+
+def _golden(f, lo: float, hi: float) -> float:
+    """Where ``f`` is greatest on [lo, hi] by golden-section search, ``f`` rising at most
+    once and falling at most once there (an end, where it only falls or only rises)."""
+    g = (math.sqrt(5) - 1) / 2
     for _ in range(120):
         a, b = hi - g * (hi - lo), lo + g * (hi - lo)
-        if arc_motion(cam, a, 1.0)[1] < arc_motion(cam, b, 1.0)[1]:
+        if f(a) < f(b):
             lo = a
         else:
             hi = b
