@@ -431,3 +431,39 @@ def test_a_sun_and_a_ring_driven_read_the_arm_off_the_diagram(sun, planet, w_sun
     miss, allowed = s.diagram_check(4)
     assert miss <= allowed <= 1e-3
     assert s.passed
+
+
+# ----- a planet held from turning: the sun-and-planet gear ----------------------------------
+def test_gears_sun_and_planet_watt():
+    """The corpus's sun-and-planet gear, bundled: the planet (48) held from turning, the
+    crank at 40 rpm: ω_sun = 40·(1 + 48/32) = 100 rpm."""
+    s = solve_train(load("sun-and-planet"))
+    assert s.quantities["omega1"].exact == 100 and s.quantities["omega1/omega3"].exact == F(5, 2)
+    assert s.passed
+
+
+@settings(max_examples=30, deadline=None)
+@given(st.integers(12, 80), st.integers(12, 80), st.integers(-500, 500).filter(bool))
+def test_a_held_planet_turns_the_sun_at_one_plus_the_ratio(sun, planet, crank):
+    """With the planet held, Willis relative to the arm gives ω_s = ω_a(1 + N_p/N_s)."""
+    text = f"""name = "held planet"
+fixed = 2
+[[gear]]
+number = 1
+teeth = {sun}
+[[gear]]
+number = 2
+teeth = {planet}
+carrier = 3
+[arm]
+number = 3
+[[mesh]]
+gears = [1, 2]
+[input]
+member = 3
+speed = {crank}
+[ask]
+find = ["omega1"]
+"""
+    s = solve_train(parse_train(text, "t.toml"))
+    assert s.quantities["omega1"].exact == crank * (1 + F(planet, sun)) and s.passed

@@ -232,7 +232,9 @@ class GearTrain:
                               teeth=g.teeth, where=where,
                               shaft=phrase("gears.one_shaft", others=", ".join(map(str, others)))
                               if others else None,
-                              fixed=phrase("gears.fixed") if self.fixed == g.number else None))
+                              fixed=(phrase("gears.held_planet") if self.carried(g.number)
+                                     else phrase("gears.fixed")) if self.fixed == g.number
+                              else None))
         if self.arm is not None:
             out.append(phrase("gears.arm", arm=self.arm,
                               planets=phrase("gears.one_planet") if self.planets == 1 else
@@ -260,10 +262,6 @@ class GearTrain:
             if m is not None and m not in self.members:
                 raise self._fail(f"there is no member {m}; the members are "
                                  f"{', '.join(map(str, self.members))}")
-        if self.fixed is not None and self.fixed != self.arm and self.carried(self.fixed):
-            raise self._fail(f"{self.label(self.fixed)} is carried round by the arm "
-                             f"{self.arm}: a planet cannot be fixed; fix the arm or a gear on "
-                             "the main axis")
         for mesh in self.meshes:
             a, b = self.gear(mesh.a), self.gear(mesh.b)
             if a.module is not None and b.module is not None and a.module != b.module:

@@ -64,6 +64,8 @@ PHRASES: dict[str, str] = {
                            "{na}/{nb} as fast: {turns} → {result}.",
     "gears.shaft_carries": "{member} is on one shaft with {other}: it turns alike, {turns}.",
     "gears.fixed": ", fixed",
+    "gears.held_planet": ", held from turning (fast to a rod that keeps its direction, as in "
+                         "the sun-and-planet gear) while the arm carries it round",
     "gears.one_planet": "one planet",
     "gears.planets": "{n} planets, equally spaced",
     "gears.speed": "{value} {unit}{sense}",

@@ -142,6 +142,8 @@ PHRASES: dict[str, str] = {
                            "{na}/{nb} برابرِ آن می‌چرخد: {turns} → {result}.",
     "gears.shaft_carries": "{member} با {other} روی یک محور قرار دارد: همانند آن می‌چرخد، {turns}.",
     "gears.fixed": "، ثابت",
+    "gears.held_planet": "، که از چرخش بازداشته شده (به میله‌ای بسته شده که جهتش را نگه می‌دارد، "
+                         "چنان‌که در چرخدندهٔ خورشید و سیاره) و بازو آن را می‌گرداند",
     "gears.one_planet": "یک چرخ سیاره\u200cای",
     "gears.planets": "{n} چرخ سیاره\u200cای با فاصلهٔ برابر",
     "gears.speed": "{value} {unit}{sense}",
