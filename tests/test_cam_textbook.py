@@ -278,3 +278,24 @@ def test_each_segments_greatest_pressure_angle_and_duration():
     w = 200 * 2 * math.pi / 60
     assert q["time_1"]["value"] == pytest.approx(math.radians(90) / w, rel=1e-15)
     assert q["time_4"]["value"] == pytest.approx(math.radians(60) / w, rel=1e-15)
+
+
+def test_a_flat_faces_least_base_circle_keeps_the_profiles_curvature():
+    """Under a flat face the profile's radius is r_b + y + y″. A cycloidal rise of 25 mm over
+    90°: y + y″ is least where cos w = −1/(4π²/β² − 1) = −1/15 (w = 2πu, sin w < 0), so
+    r_b = ρ − (y + y″) there; the layout then finds its least radius ρ."""
+    text = BASE.replace("pressure_angle = 30 ", "rho_min = 5 ").replace(
+        'kind = "roller"\nradius = 10\noffset = 12 ', 'kind = "flat-faced"')
+    text = text.replace("lift = 30\nlaw = \"simple harmonic\"", "lift = 25\nlaw = \"cycloidal\"",
+                        1).replace("lift = 30", "lift = 25")
+    ex = parse_cam(text, "cam.toml")
+    w = math.atan2(-math.sqrt(1 - 1 / 225), -1 / 15) + 2 * math.pi
+    h, b = 0.025, math.radians(90)
+    least = h * (w / (2 * math.pi) - math.sin(w) / (2 * math.pi)) \
+        + 2 * math.pi * h / b ** 2 * math.sin(w)
+    assert ex.base_radius == pytest.approx(0.005 - least, rel=1e-12)
+    s = solve_cam(ex)
+    assert s.profile.survey.sharpest.rho == pytest.approx(0.005, rel=1e-9)
+    assert s.results["quantities"]["base_radius"]["passed"] and s.passed
+    with pytest.raises(InputError, match="rho_min sizes the base circle under a translating flat"):
+        parse_cam(BASE.replace("pressure_angle = 30 ", "rho_min = 5 "), "cam.toml")

@@ -24,7 +24,7 @@ from typing import Any
 from ..reference.cam_profile import Follower
 from .extremes import greatest, pieces
 
-__all__ = ["least_prime_reach", "least_base_radius"]
+__all__ = ["least_prime_reach", "least_base_radius", "least_flat_base"]
 
 
 def least_prime_reach(segments: Sequence[Any], f: Follower, sigma: float, limit: float
@@ -36,6 +36,28 @@ def least_prime_reach(segments: Sequence[Any], f: Follower, sigma: float, limit:
         def need(x: float, p=p) -> float:
             m = p.motion(x)
             return abs(m.y1 - sigma * f.offset) / t - m.y
+        out = max(out, greatest(need, p.t0, p.t1))
+    return out
+
+
+def least_flat_base(segments: Sequence[Any], rho: float) -> float:
+    """The least base circle (m) whose profile under a flat face curves nowhere tighter than
+    ``rho``: the profile's radius there is r_b + y + y″, so r_b is the greatest of
+    ρ − y − y″ round the turn (found piece by piece, y″ jumping only between pieces).
+
+    Examples
+    --------
+    >>> from tarsim.constructions.cams.displacement import Segment
+    >>> segs = [Segment("rise", math.pi, 1.0, "simple harmonic"),
+    ...         Segment("return", math.pi, 1.0, "simple harmonic")]
+    >>> round(least_flat_base(segs, 0.0), 12)      # y + y″ = ½(1 − cos θ) + ½ cos θ = ½
+    -0.5
+    """
+    out = -math.inf
+    for p in pieces(segments):
+        def need(x: float, p=p) -> float:
+            m = p.motion(x)
+            return rho - m.y - m.y2
         out = max(out, greatest(need, p.t0, p.t1))
     return out
 

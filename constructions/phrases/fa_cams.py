@@ -187,6 +187,10 @@ WORDS: dict[str, str] = {
         "مرکز دیسک به فاصلهٔ {d} از محور، شعاع دیسک {r}: خیز {h}",
     "the acceleration at the lowest place": "شتاب در پایین‌ترین موقعیت",
     "the greatest velocity": "بیشترین سرعت",
+    "the least base circle for a least radius of curvature of {limit}: {r} {unit} (the "
+    "layout's least: {got})   {check}": "کوچک‌ترین دایرهٔ پایه برای کمترین شعاع انحنای {limit}: "
+                                        "{r} {unit} (کمترین شعاع انحنا در ترسیم: {got})   "
+                                        "{check}",
     "the spring must hold the follower ({m} kg) to the nose against its greatest retardation, "
     "at θ = {theta}°: at least {force} N": "فنر باید پیرو ({m} کیلوگرم) را در برابر بیشترین "
                                            "کاهش سرعتش، در θ = {theta}°، روی دماغه نگه دارد: "

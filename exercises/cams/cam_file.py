@@ -52,6 +52,9 @@ class CamExercise:
     """The cam's name in other languages (``[names]``, :mod:`.names`)."""
     pressure_limit: float | None = None
     """The greatest pressure angle allowed (rad), where the base circle is found from it."""
+    curvature_limit: float | None = None
+    """A flat face's profile's least radius of curvature allowed (m), where the base circle
+    is found from it."""
     disc: tuple[float, float] | None = None
     """An eccentric disc's radius and eccentricity (the file's length unit), where the cam
     is one."""
@@ -122,7 +125,8 @@ def parse_cam(text: str, filename: str = "<string>", exercise_id: str = "cam",
                        base * metre, omega, tuple(segments), length, speed, follower,
                        ask.get("jerk", False), at, read_names(data, tables.where, filename),
                        pressure_limit=math.radians(cam["pressure_angle"])
-                       if "pressure_angle" in cam else None, disc=disc)
+                       if "pressure_angle" in cam else None, disc=disc,
+                       curvature_limit=cam["rho_min"] * metre if "rho_min" in cam else None)
 
 
 def _disc(cam: dict[str, Any], number, fail) -> tuple[float, float] | None:
@@ -148,12 +152,13 @@ def _disc(cam: dict[str, Any], number, fail) -> tuple[float, float] | None:
 def _base(cam: dict[str, Any], disc, number, fail) -> float | None:
     """The base circle (the file's unit) as [cam] gives it: its radius, a disc's nearest
     point to the shaft, or None where the greatest pressure angle asks it found."""
-    given = [k for k in ("base_radius", "pressure_angle") if k in cam] + (
+    given = [k for k in ("base_radius", "pressure_angle", "rho_min") if k in cam] + (
         ["disc_radius"] if disc else [])
     if len(given) != 1:
         raise fail("[cam] gives the base circle one way: base_radius = 40, or pressure_angle "
-                   "= 30 (the least base circle is found), or an eccentric disc's "
-                   "disc_radius and eccentricity", "cam", given[-1] if given else None)
+                   "= 30 or (a flat face's) rho_min = 5 (the least base circle is found), or "
+                   "an eccentric disc's disc_radius and eccentricity", "cam",
+                   given[-1] if given else None)
     if disc:
         return disc[0] - disc[1]
     if "pressure_angle" in cam:
@@ -161,6 +166,12 @@ def _base(cam: dict[str, Any], disc, number, fail) -> float | None:
         if not 0 < limit < 90:
             raise fail(f"the greatest pressure angle is between 0° and 90°, not {limit:g}°",
                        "cam", "pressure_angle")
+        return None
+    if "rho_min" in cam:
+        rho = number(cam, "rho_min", "cam", "the least radius of curvature")
+        if not 0 <= rho < 1e6:
+            raise fail(f"the least radius of curvature is 0 (a point) or more, not {rho:g}",
+                       "cam", "rho_min")
         return None
     base = number(cam, "base_radius", "cam", "the base radius")
     if not 0 < base < 1e6:
@@ -182,8 +193,19 @@ def _disc_segments(disc: tuple[float, float], metre: float, data: dict[str, Any]
 
 def _least_base(segments: list[Segment], follower: Follower, omega: float,
                 cam: dict[str, Any], metre: float, unit: str, fail) -> float:
-    """The least base circle (the file's unit) that holds the pressure angle to [cam]'s."""
-    from tarsim.constructions.cams.base_circle import least_base_radius
+    """The least base circle (the file's unit) that holds the pressure angle to [cam]'s, or
+    a flat face's profile's curvature to its rho_min."""
+    from tarsim.constructions.cams.base_circle import least_base_radius, least_flat_base
+    if "rho_min" in cam:
+        if follower.kind != "flat-faced" or follower.oscillating:
+            raise fail("rho_min sizes the base circle under a translating flat face (its "
+                       "profile's radius r_b + y + y″); give a roller's or knife edge's "
+                       "base_radius", "cam", "rho_min")
+        base = least_flat_base(segments, cam["rho_min"] * metre)
+        if not base > 0:
+            raise fail(f"any base circle keeps this profile's radius of curvature over "
+                       f"{cam['rho_min']:g} {unit}: give base_radius instead", "cam", "rho_min")
+        return base / metre
     if follower.kind == "flat-faced":
         raise fail("a flat face square to its motion is pushed along it (its pressure angle "
                    "is 0): give its base_radius", "cam", "pressure_angle")

@@ -95,21 +95,38 @@ class CamReadings:
                                              method="2h/kβ²·ω², 2h/(1 − k)β²·ω²")
         return out
 
-    def base(self, steepest: float) -> Checked:
-        """The base circle found from the greatest pressure angle allowed, beside the
-        greatest the layout by inversion finds on the cam so made (``steepest``, rad)."""
+    def base(self, found: float) -> Checked:
+        """The base circle found from the greatest pressure angle allowed (or a flat face's
+        least radius of curvature), beside what the layout by inversion finds on the cam so
+        made (``found``: its greatest pressure angle in rad, or its profile's least radius
+        in m)."""
         ex = self.exercise
-        miss = abs(steepest - ex.pressure_limit)
+        if ex.pressure_limit is None:
+            miss, scale = abs(found - ex.curvature_limit), ex.curvature_limit + ex.base_radius
+            return Checked({"value": ex.base_radius, "rho_limit": ex.curvature_limit},
+                           {"rho_min": found}, rel_error=miss / scale, tolerance=BASE_AGREE,
+                           passed=miss <= BASE_AGREE * scale,
+                           method="r_b = max(ρ − y − y″); the layout's least radius")
+        miss = abs(found - ex.pressure_limit)
         return Checked({"value": ex.base_radius, "pressure_angle_limit": ex.pressure_limit},
-                       {"pressure_angle_max": steepest}, rel_error=miss / ex.pressure_limit,
+                       {"pressure_angle_max": found}, rel_error=miss / ex.pressure_limit,
                        tolerance=BASE_AGREE, passed=miss <= BASE_AGREE * ex.pressure_limit,
                        method="s₀ = max(|y′ − σe|/tan φ_max − y), R_p = √(s₀² + e²); the "
                               "layout's greatest pressure angle")
 
-    def base_line(self, steepest: float) -> str:
-        """The base circle found, and the layout's greatest pressure angle on it."""
+    def base_line(self, found: float) -> str:
+        """The base circle found, and what the layout finds on it."""
         ex = self.exercise
-        ok = abs(steepest - ex.pressure_limit) <= BASE_AGREE * ex.pressure_limit
+        ok = self.base(found).passed
+        if ex.pressure_limit is None:
+            return words("the least base circle for a least radius of curvature of {limit}: "
+                         "{r} {unit} (the layout's least: {got})   {check}",
+                         limit=f"{numeral(ex.curvature_limit / ex.metre, '.4g')} "
+                               f"{ex.length_unit}",
+                         r=numeral(ex.base_radius / ex.metre, ".4g"), unit=ex.length_unit,
+                         got=f"{numeral(found / ex.metre, '.6g')} {ex.length_unit}",
+                         check=words("check ok" if ok else "check FAILED"))
+        steepest = found
         return words("the least base circle for a greatest pressure angle of {limit}°: {r} "
                      "{unit} (the layout's greatest: {got}°)   {check}",
                      limit=numeral(math.degrees(ex.pressure_limit), ".4g"),

@@ -31,7 +31,7 @@ from ..solution_folder import ChapterFiles
 from ..worked_document import Bullets, Paragraph, Section, said_steps, title
 from .cam_file import CamExercise
 from .cam_layout import CamProfile, refuse_undercut
-from .cam_readings import BASE_AGREE, CamReadings
+from .cam_readings import CamReadings
 
 __all__ = ["CamSolution", "solve_cam"]
 
@@ -124,10 +124,23 @@ class CamSolution(ChapterFiles):
                 and not self.readings.failures and not self.base_failed)
 
     @property
+    def sized(self) -> bool:
+        """The base circle was found, from a pressure angle or a flat face's curvature."""
+        ex = self.exercise
+        return ex.pressure_limit is not None or ex.curvature_limit is not None
+
+    @property
+    def found(self) -> float:
+        """What the layout finds of the rule that sized the base circle: its greatest
+        pressure angle (rad), or a flat face's profile's least radius (m)."""
+        if self.exercise.pressure_limit is not None:
+            return self.steepest
+        return self.profile.survey.sharpest.rho
+
+    @property
     def base_failed(self) -> bool:
-        """A base circle found from the pressure angle whose layout does not touch it."""
-        limit = self.exercise.pressure_limit
-        return limit is not None and abs(self.steepest - limit) > BASE_AGREE * limit
+        """A base circle found from a rule whose layout does not meet it."""
+        return self.sized and not self.readings.base(self.found).passed
 
     @property
     def failures(self) -> list[str]:
@@ -165,8 +178,7 @@ class CamSolution(ChapterFiles):
         out.append(words("displacement diagram: {n} points constructed, {verdict}",
                          n=numeral(sum(len(c) for c in self.diagram.curves), "d"),
                          verdict=verdict))
-        base = [self.readings.base_line(self.steepest)] \
-            if self.exercise.pressure_limit is not None else []
+        base = [self.readings.base_line(self.found)] if self.sized else []
         return out + self.readings.lines() + base + self.profile.lines()
 
     @cached_property
@@ -281,7 +293,7 @@ class CamSolution(ChapterFiles):
         lines solve prints, with their checks), then the profile."""
         ex = self.exercise
         peaks = self.lines()[:len(self.peaks) + 1] + self.readings.lines() + (
-            [self.readings.base_line(self.steepest)] if ex.pressure_limit is not None else [])
+            [self.readings.base_line(self.found)] if self.sized else [])
         if self.jumps:
             peaks.append(phrase("md.jumps", jumps=", ".join(f"{numerals(f'{j:g}')}°"
                                                             for j in self.jumps)))
@@ -307,8 +319,8 @@ class CamSolution(ChapterFiles):
                 for p in self.peaks}
         if self.exercise.jerk:
             out |= {f"j_max_{p.index}": peak(p.jerk, p.jerk_sampled, p.law) for p in self.peaks}
-        if self.exercise.pressure_limit is not None:
-            out["base_radius"] = self.readings.base(self.steepest)
+        if self.sized:
+            out["base_radius"] = self.readings.base(self.found)
         return out | self.readings.checked(self.peaks) | self.profile.checked()
 
     @property
