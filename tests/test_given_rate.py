@@ -29,10 +29,11 @@ def test_the_piston_driven_slider_crank_gives_back_its_pistons_motion():
 
 def test_a_couplers_omega_and_alpha_drive_the_crank():
     text = (SHAPER.replace("omega = 10", "omega = { link = 3, value = 2, alpha = 5 }")
-            .replace('find = ["centres", "omega3", "V_C", "V_D", "Vmin_3_B_C"]',
+            .replace('find = ["centres", "omega3", "V_C", "V_D", "Vmin_3_B_C", "Vmin_3"]',
                      'find = ["omega2", "omega3", "alpha3", "V_C"]')
             .replace('methods = ["radius-rotation", "parallel-line", "components"]',
                      'methods = ["polygon"]'))
+    assert 'find = ["omega2", "omega3", "alpha3", "V_C"]' in text
     sol = solve_exercise(parse_exercise(text, "given.toml", "given"))
     q = sol.quantities
     assert q["omega3"].value["value"] == pytest.approx(2.0, rel=1e-12)
