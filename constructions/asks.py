@@ -439,7 +439,8 @@ class Effort(Ask):
     """An engine's force as the textbooks name it, from the force polygons: the piston
     effort (its loads along the stroke, + toward the crank), the wall's thrust on the
     piston (the size of its push square to the stroke), the reciprocating parts' inertia
-    force (their m·a toward the crank, which the piston effort loses), the crank effort
+    force (their m·a toward the crank, which the piston effort loses), the crank speed at
+    which that inertia grows to the rest of the piston's load (rad/s), the crank effort
     (the rod's push on the crank pin square to the crank, + CCW), the turning moment it
     gives (N·m, CCW +), the thrust on the shaft's bearings (the push along the crank, + toward the
     shaft) and the rod's correction couple (N·m: :mod:`~.forces.equivalent`)."""
@@ -449,17 +450,18 @@ class Effort(Ask):
 
     @property
     def name(self) -> str:
-        """``piston_effort``, ``wall_thrust``, ``inertia_force``, ``crank_effort``,
-        ``turning_moment``, ``bearing_thrust`` or ``correction_couple``."""
+        """``piston_effort``, ``wall_thrust``, ``inertia_force``, ``reversal_speed``,
+        ``crank_effort``, ``turning_moment``, ``bearing_thrust`` or ``correction_couple``."""
         return self.word
 
 
-EFFORTS = ("piston_effort", "wall_thrust", "inertia_force", "crank_effort", "turning_moment",
-           "bearing_thrust", "correction_couple")
-"""The efforts an exercise may ask: the first three and the last of a slider-crank only."""
+EFFORTS = ("piston_effort", "wall_thrust", "inertia_force", "reversal_speed", "crank_effort",
+           "turning_moment", "bearing_thrust", "correction_couple")
+"""The efforts an exercise may ask: the first four and the last of a slider-crank only."""
 
 MOMENTS = ("turning_moment", "correction_couple")
-"""The efforts that are moments (N·m), the rest forces (N)."""
+"""The efforts that are moments (N·m); reversal_speed is a speed (rad/s), the rest forces
+(N)."""
 
 
 _POINT = r"([A-Za-z][A-Za-z0-9_']*)"

@@ -200,6 +200,8 @@ class Work:
             return mechanism_size(self.kinematics)
         if isinstance(ask, A.LengthRange):
             return max(grashof_class(m).lengths)
+        if isinstance(ask, A.Effort) and ask.word == "reversal_speed":
+            return abs(d.omega)                 # a speed, beside the crank's
         if isinstance(ask, (A.JointForce, A.DrivingTorque, A.Effort)):
             # Beside the largest joint force, or the loads it is made of if they are more
             # (times the mechanism's size, for a moment).

@@ -13,7 +13,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 import tarsim
-from tarsim.constructions.errors import InputError
+from tarsim.constructions.errors import InputError, TarsimError
 from tarsim.exercises.catalog import resolve
 from tarsim.exercises.chapters import read_file
 from tarsim.exercises.cli import cli
@@ -172,3 +172,25 @@ def test_the_reciprocating_parts_inertia_force_is_the_books(deg):
                                                  abs=1e-12 * MASS * OMEGA ** 2 * R)
     assert got["piston_effort"] == pytest.approx(
         650e3 * math.pi * BORE ** 2 / 4 - got["inertia_force"], rel=1e-12)
+
+
+@settings(max_examples=10, deadline=None)
+@given(deg=st.floats(5, 60))
+def test_the_speed_that_reverses_the_gudgeon_pin_s_load(deg):
+    """Near the inner dead centre the piston's inertia pulls against the gas: the effort
+    F_L − m·ω²·c (a = ω²·c toward the crank, c = r cos θ + r² cos 2θ/S + r⁴ sin²θ cos²θ/S³)
+    falls to zero at ω_r = √(F_L/(m·c)), the books' speed above which the load reverses."""
+    theta = math.radians(deg)
+    got = _answers(_text(deg).replace('find = ["T2", ', 'find = ["reversal_speed", "T2", '))
+    c = _toward_crank(theta) / OMEGA ** 2
+    assert got["reversal_speed"] == pytest.approx(
+        math.sqrt(650e3 * math.pi * BORE ** 2 / 4 / (MASS * c)), rel=1e-12)
+
+
+def test_no_speed_reverses_a_load_its_inertia_adds_to():
+    """At 120° the piston speeds away from the crank: its inertia pushes with the gas, and
+    the ask is refused in one line saying so."""
+    with pytest.raises(TarsimError) as e:
+        _answers(_text(120).replace('find = ["T2", ', 'find = ["reversal_speed", "T2", '))
+    assert "θ2 = 120°" in str(e.value) and "no speed reverses" in str(e.value)
+    assert "\n" not in str(e.value)

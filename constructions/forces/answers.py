@@ -13,7 +13,7 @@ from ..checks import Answer, FigureSpec, vector_value
 from ..errors import TarsimError
 from ..model import Mechanism
 from ..record import Panel
-from .equivalent import correction_couple, rod_of
+from .equivalent import correction_couple, reversal_speed, rod_of
 from .groups import Dyad, group_of
 from .polygons import drawn_forces
 from .result import Forces
@@ -62,7 +62,7 @@ def forces_askable(mech: Mechanism) -> set[str]:
         return set()
     out = force_names(mech) | {"crank_effort", "turning_moment", "bearing_thrust"}
     if isinstance(group, Dyad) and group.guide is not None:
-        out |= {"piston_effort", "wall_thrust", "inertia_force"}
+        out |= {"piston_effort", "wall_thrust", "inertia_force", "reversal_speed"}
         if rod_of(mech) is not None:
             out.add("correction_couple")
     return out
@@ -97,6 +97,9 @@ def answer(work, ask) -> Answer:
         rod = rod_of(work.mechanism)[0]
         alpha = drawn_acceleration_polygon(work).rates.get(rod, 0.0)
         value = {"value": correction_couple(work.mechanism, work.loads, alpha)}
+    elif isinstance(ask, A.Effort) and ask.word == "reversal_speed":
+        value = {"value": reversal_speed(work.mechanism, forces.efforts["piston_effort"],
+                                         forces.efforts["inertia_force"])}
     elif isinstance(ask, A.Effort):
         value = {"value": forces.efforts[ask.word]}
     elif ask.letter == "T":

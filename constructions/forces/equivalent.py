@@ -9,10 +9,11 @@ from __future__ import annotations
 
 import math
 
+from ..errors import TarsimError
 from ..loads import Loads
 from ..model import Mechanism
 
-__all__ = ["correction_couple", "rod_of"]
+__all__ = ["correction_couple", "reversal_speed", "rod_of"]
 
 
 def rod_of(mech: Mechanism) -> tuple[int, str, str] | None:
@@ -54,3 +55,32 @@ def _couple(mech, loads: Loads, rod: int, pin: str, gudgeon: str, alpha: float) 
     ga = math.dist(m.centre, link.local(pin))
     gp = math.dist(m.centre, link.local(gudgeon))
     return (m.mass * ga * gp - m.inertia) * alpha
+
+
+def reversal_speed(mech: Mechanism, effort: float, inertia: float) -> float:
+    """The crank speed (rad/s) at which the piston effort falls to zero at this crank angle,
+    the gudgeon pin's load reversing above it: the reciprocating parts' inertia force grows
+    as ω² at a steady crank speed while the rest of the piston's load, F_P + F_I, stays, so
+    ω_r = |ω|·√((F_P + F_I)/F_I).
+
+    Raises
+    ------
+    TarsimError
+        Where the crank speeds up (the inertia is then not m·a ∝ ω²), or the rest of the
+        load and the inertia push opposite ways (no speed reverses the load).
+
+    >>> from types import SimpleNamespace as S
+    >>> round(reversal_speed(S(drive=S(omega=-10.0, alpha=0.0)), 300.0, 100.0), 12)  # √4·10
+    20.0
+    """
+    d = mech.drive
+    rest = effort + inertia
+    if d.alpha != 0.0:
+        raise TarsimError(f"reversal_speed: the reciprocating parts' inertia grows as ω² only at "
+                          f"a steady crank speed, but α{d.link} = {d.alpha:g} is given: leave "
+                          "it out")
+    if inertia == 0.0 or rest / inertia <= 0.0:
+        raise TarsimError(f"reversal_speed at θ{d.link} = {mech.units.angle_brief(d.angle)}: the "
+                          "reciprocating parts' inertia and the rest of the piston's load push "
+                          "opposite ways along the stroke, so no speed reverses the load")
+    return abs(d.omega) * math.sqrt(rest / inertia)

@@ -49,6 +49,11 @@ def efforts(mech: Mechanism, kin: Kinematics, loads: Loads, statics: Statics
              if m is not None else (0.0, 0.0))
         out["inertia_force"] = (m.mass if m is not None else 0.0) * (a[0] * u[0] + a[1] * u[1])
         out["correction_couple"] = _correction(mech, kin, loads, pin, s.point, d)
+        # ω² scales the inertia alone: F_P(ω_r) = rest − F_I·(ω_r/ω)² = 0
+        rest = out["piston_effort"] + out["inertia_force"]
+        if out["inertia_force"] and rest / out["inertia_force"] > 0:
+            omega = kin.omegas[d]
+            out["reversal_speed"] = math.sqrt(omega * omega * rest / out["inertia_force"])
     return out
 
 
