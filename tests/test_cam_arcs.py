@@ -175,3 +175,16 @@ def test_the_spring_holds_the_follower_against_its_greatest_retardation():
                             * i / 2000, w, "nose")[2] for i in range(2001))
     assert t.results["quantities"]["spring_force"]["value"] == pytest.approx(2 * worst, rel=1e-9)
     assert not t.failures
+
+
+def test_the_greatest_acceleration_on_the_flank_and_retardation_on_the_nose():
+    """A circular-arc flank accelerates most as the lift begins (ω²(R − r₁) cos θ falls),
+    its nose retards most at the apex; a tangent cam's straight flank most where it ends
+    ((2 − cos²θ)/cos³θ grows), and here its nose where the roller comes onto it."""
+    q = solve(load("circular-arc-flat-face")).results["quantities"]
+    assert q["a_flank_max"]["value"] == pytest.approx(q["a_lift_start"]["value"], rel=1e-14)
+    assert q["a_nose_max"]["value"] == pytest.approx(q["a_apex"]["value"], rel=1e-14)
+    q = solve(load("tangent-cam-roller")).results["quantities"]
+    assert q["a_flank_max"]["value"] == pytest.approx(q["a_flank_end"]["value"], rel=1e-12)
+    assert q["a_nose_max"]["value"] == pytest.approx(q["a_nose_start"]["value"], rel=1e-12)
+    assert q["a_nose_max"]["value"] < q["a_apex"]["value"] < 0

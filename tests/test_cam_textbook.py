@@ -22,6 +22,8 @@ from tarsim.exercises.cams.cam_solution import solve_cam
 from tarsim.exercises.catalog import bundled, load
 from tarsim.exercises.cli import cli
 
+CAM = Path(bundled("cams")["roller-harmonic-cycloidal"]).read_text(encoding="utf-8")
+
 VALVE = Path(bundled("cams")["valve-unequal-acceleration"]).read_text(encoding="utf-8")
 W = 150 * 2 * math.pi / 60          # the valve cam's 150 rpm
 
@@ -299,3 +301,32 @@ def test_a_flat_faces_least_base_circle_keeps_the_profiles_curvature():
     assert s.results["quantities"]["base_radius"]["passed"] and s.passed
     with pytest.raises(InputError, match="rho_min sizes the base circle under a translating flat"):
         parse_cam(BASE.replace("pressure_angle = 30 ", "rho_min = 5 "), "cam.toml")
+
+
+def test_a_dwell_may_take_the_rest_of_the_turn():
+    """"Dwell for the rest of the revolution": the segment whose angle is "rest" takes 360°
+    less the others' (here 360 − 120 − 30 − 90 = 120°), the same cam as one stating it."""
+    text = VALVE.replace("angle = 120\n\n[ask]", 'angle = "rest"\n\n[ask]')
+    assert text != VALVE
+    ex = parse_cam(text, "cam.toml")
+    assert ex.segments == parse_cam(VALVE, "cam.toml").segments
+    for bad, words in (('angle = 30\n', 'angle = "rest"\n'), ):
+        with pytest.raises(InputError, match="only one segment may take the rest"):
+            parse_cam(text.replace(bad, words, 1), "cam.toml")
+
+
+def test_undercut_asked_draws_the_cam_and_says_so():
+    """[ask] undercut = true: a roller larger than a convex stretch of the pitch curve is
+    reported (results.json's undercut true, its spans) rather than refused."""
+    # A rise of 40 mm in 40°: the pitch curve's nose is some 20 mm round, the roller 20 mm.
+    text = (CAM.replace("angle = 120\nlift = 40", "angle = 40\nlift = 40")
+            .replace("angle = 30", "angle = 110").replace("radius = 10 ", "radius = 20 ")
+            .replace("jerk = true", "undercut = true"))
+    with pytest.raises(InputError, match="undercuts the cam"):
+        solve_cam(parse_cam(text.replace("undercut = true", ""), "cam.toml"))
+    from tarsim.exercises.cams.solve import solve
+    s = solve(parse_cam(text, "cam.toml"))
+    q = s.results["quantities"]["undercut"]
+    assert q["value"] is True and q["spans"]
+    # each span's worst radius is under the roller's: ρ < r is what undercuts
+    assert all(span["rho"] < 0.020 for span in q["spans"])

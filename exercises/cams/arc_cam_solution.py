@@ -107,6 +107,7 @@ class ArcCamSolution(ChapterFiles):
             asks = [("a_lift_start", "the acceleration at the lowest place", 0.0, 2, "nose", 0),
                     ("v_max", "the greatest velocity", _fastest(c), 1, "nose", 0),
                     ("a_apex", "the acceleration at the apex of the nose", alpha, 2, "nose", 0)]
+        asks += self._greatest(w)
         for d in ex.at:
             t = math.radians(d)
             part = arc_motion(c, t, w)[3]
@@ -125,6 +126,21 @@ class ArcCamSolution(ChapterFiles):
             ref = self._differences(t, side)[which] * w ** which
             out.append(Reading(name, what, t, which, part, value, ref,
                                c.d * w ** which if which else c.d))
+        return out
+
+    def _greatest(self, w: float) -> list[tuple]:
+        """The greatest acceleration on the flank (where it has one) and the greatest
+        retardation on the nose, as the books ask them, each where the part's formula finds
+        it and differenced on that part's side."""
+        c = self.exercise.cam
+        out = []
+        parts = ([("a_flank_max", "the greatest acceleration on the flank", "flank", 0.0, c.phi,
+                   1.0)] if c.phi > 0 else []) + [
+            ("a_nose_max", "the greatest retardation on the nose", "nose", c.phi, c.alpha, -1.0)]
+        for name, what, part, lo, hi, sign in parts:
+            t = _golden(lambda t, p=part, s=sign: s * arc_motion(c, t, w, p)[2], lo, hi)
+            side = 1 if t - 3 * STEP < lo else -1 if t + 3 * STEP > hi and part == "flank" else 0
+            out.append((name, what, t, 2, part, side))
         return out
 
     @cached_property
@@ -292,16 +308,29 @@ def _fastest(cam) -> float:
 
 
 def _golden(f, lo: float, hi: float) -> float:
-    """Where ``f`` is greatest on [lo, hi] by golden-section search, ``f`` rising at most
-    once and falling at most once there (an end, where it only falls or only rises)."""
-    g = (math.sqrt(5) - 1) / 2
+    """Where ``f`` is greatest on [lo, hi]: the best of 400 equal samples, then
+    golden-section search between its neighbours (so a greatest at an end, or a lesser
+    hump elsewhere, is not mistaken for it)."""
+    n = 400
+    xs = [lo + (hi - lo) * i / n for i in range(n + 1)]
+    best = max(range(n + 1), key=lambda i: f(xs[i]))
+    top = _refine(f, xs[max(best - 1, 0)], xs[min(best + 1, n)])
+    return top if f(top) >= f(xs[best]) else xs[best]
+
+
+def _refine(f, lo: float, hi: float) -> float:
+    """Golden-section search for the greatest of ``f`` on [lo, hi], where it rises at most
+    once and falls at most once (an end, where it only falls or only rises)."""
+    g, lo0, hi0 = (math.sqrt(5) - 1) / 2, lo, hi
     for _ in range(120):
         a, b = hi - g * (hi - lo), lo + g * (hi - lo)
         if f(a) < f(b):
             lo = a
         else:
             hi = b
-    return 0.5 * (lo + hi)
+    mid, span = 0.5 * (lo + hi), hi0 - lo0
+    # An end, where the greatest is one, said as that end rather than a rounding off it.
+    return lo0 if mid - lo0 < 1e-12 * span else hi0 if hi0 - mid < 1e-12 * span else mid
 
 
 def solve_arc_cam(ex: ArcCamExercise) -> ArcCamSolution:

@@ -52,6 +52,9 @@ class CamExercise:
     """The cam's name in other languages (``[names]``, :mod:`.names`)."""
     pressure_limit: float | None = None
     """The greatest pressure angle allowed (rad), where the base circle is found from it."""
+    undercut_asked: bool = False
+    """The file asks whether the follower undercuts: the cam is solved and drawn even if it
+    does, the trouble ringed, as --allow-undercut draws it."""
     curvature_limit: float | None = None
     """A flat face's profile's least radius of curvature allowed (m), where the base circle
     is found from it."""
@@ -114,11 +117,12 @@ def parse_cam(text: str, filename: str = "<string>", exercise_id: str = "cam",
     if base is None:                       # found from the greatest pressure angle
         base = _least_base(segments, follower, omega, cam, metre, length, fail)
     ask = data.get("ask", {})
-    if not isinstance(ask, dict) or any(k not in ("jerk", "at") for k in ask) or not \
-            isinstance(ask.get("jerk", False), bool):
-        raise fail("a cam's [ask] table takes jerk = true (its diagram and peaks) and at = "
-                   "[40, 240] (the motion at those cam angles); the displacement, velocity, "
-                   "acceleration and profile are always drawn", "ask")
+    if not isinstance(ask, dict) or any(k not in ("jerk", "at", "undercut") for k in ask) or \
+            not all(isinstance(ask.get(k, False), bool) for k in ("jerk", "undercut")):
+        raise fail("a cam's [ask] table takes jerk = true (its diagram and peaks), at = "
+                   "[40, 240] (the motion at those cam angles) and undercut = true (whether "
+                   "the follower undercuts, drawn even where it does); the displacement, "
+                   "velocity, acceleration and profile are always drawn", "ask")
     at = _angles(ask.get("at", []), fail)
     return CamExercise(exercise_id, str(data.get("name", exercise_id)),
                        str(data.get("source", "")), str(data.get("description", "")),
@@ -126,7 +130,8 @@ def parse_cam(text: str, filename: str = "<string>", exercise_id: str = "cam",
                        ask.get("jerk", False), at, read_names(data, tables.where, filename),
                        pressure_limit=math.radians(cam["pressure_angle"])
                        if "pressure_angle" in cam else None, disc=disc,
-                       curvature_limit=cam["rho_min"] * metre if "rho_min" in cam else None)
+                       curvature_limit=cam["rho_min"] * metre if "rho_min" in cam else None,
+                       undercut_asked=ask.get("undercut", False))
 
 
 def _disc(cam: dict[str, Any], number, fail) -> tuple[float, float] | None:
@@ -218,6 +223,23 @@ def _least_base(segments: list[Segment], follower: Follower, omega: float,
     return base / metre
 
 
+def _rest(raw: list, number, fail) -> float:
+    """The angle of the one segment whose angle is "rest" (as the books say "dwell for the
+    rest of the revolution"): 360° less the others'; 0 where none is."""
+    rests = [i for i, t in enumerate(raw) if isinstance(t, dict) and t.get("angle") == "rest"]
+    if not rests:
+        return 0.0
+    if len(rests) > 1:
+        raise fail("only one segment may take the rest of the turn", "segment", "angle",
+                   rests[1])
+    taken = sum(number(t, "angle", "segment", "a segment's angle", i)
+                for i, t in enumerate(raw) if i != rests[0] and isinstance(t, dict))
+    if not taken < 360:
+        raise fail(f"the other segments take {taken:g}°, leaving no rest of the turn",
+                   "segment", "angle", rests[0])
+    return 360.0 - taken
+
+
 def _segments(data: dict[str, Any], follower: Follower, metre: float, length: str, number,
               fail) -> list[Segment]:
     """The [[segment]] tables in turn: each checked, its lift in m (an arm's swing as the arc
@@ -227,12 +249,14 @@ def _segments(data: dict[str, Any], follower: Follower, metre: float, length: st
         raise fail("list the follower's motion as [[segment]] tables (kind, angle, lift, law)",
                    key="segment")
     segments, total, height = [], 0.0, 0.0
+    rest = _rest(raw, number, fail)
     for i, t in enumerate(raw):
         kind = t.get("kind") if isinstance(t, dict) else None
         if kind not in ("rise", "dwell", "return"):
             raise fail(f"a segment is a rise, a dwell or a return, not {kind!r}", "segment",
                        "kind", i)
-        angle = number(t, "angle", "segment", "a segment's angle", i)
+        angle = rest if t.get("angle") == "rest" else \
+            number(t, "angle", "segment", "a segment's angle", i)
         if not 0 < angle <= 360:
             raise fail(f"a segment's angle must be more than 0° and at most 360°, got "
                        f"{angle:g}°", "segment", "angle", i)

@@ -22,7 +22,7 @@ def solve(exercise: Any, *, allow_undercut: bool = False) -> Any:
 @solve.register
 def _(exercise: CamExercise, *, allow_undercut: bool = False) -> Any:
     from .cam_solution import solve_cam
-    return solve_cam(exercise, allow_undercut=allow_undercut)
+    return solve_cam(exercise, allow_undercut=allow_undercut or exercise.undercut_asked)
 
 
 @solve.register
