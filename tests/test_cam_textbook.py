@@ -330,3 +330,11 @@ def test_undercut_asked_draws_the_cam_and_says_so():
     assert q["value"] is True and q["spans"]
     # each span's worst radius is under the roller's: ρ < r is what undercuts
     assert all(span["rho"] < 0.020 for span in q["spans"])
+
+
+def test_the_whole_lift_is_the_greatest_height_the_rises_reach():
+    """An eccentric disc's face rises 2e = 50 mm; a swinging arm's lift is its swing, 20°."""
+    assert solve_cam(load("eccentric-flat-face")).results["quantities"]["lift"]["value"] == \
+        pytest.approx(0.050, rel=1e-15)
+    assert solve_cam(load("oscillating-roller")).results["quantities"]["lift"]["value"] == \
+        pytest.approx(math.radians(20), rel=1e-15)

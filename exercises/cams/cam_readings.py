@@ -81,6 +81,14 @@ class CamReadings:
                     {"value": None if math.isinf(p.acceleration) else p.acceleration / arm},
                     {"value": p.acceleration_sampled / arm},
                     method=f"{p.law} formula over the arm")
+        heights = [0.0]
+        for s in ex.segments:
+            heights.append(heights[-1] + (s.lift if s.kind == "rise" else
+                                          -s.lift if s.kind == "return" else 0.0))
+        top = max(heights)
+        # The follower's whole lift (an arm's swing, in rad): what an eccentric disc's 2e is.
+        out["lift"] = Checked({"value": top / arm if arm else top},
+                              method="the greatest height the rises reach")
         for k, s in enumerate(ex.segments, start=1):
             out[f"time_{k}"] = Checked({"value": s.angle / w}, method="β/ω")
             if s.law != "parabolic" or s.kind == "dwell":
