@@ -77,8 +77,10 @@ def test_a_flank_radius_given_for_the_angle_gives_the_same_cam():
     ("arc", "angle = 60 ", "angle = 60\nflank_radius = 75 ", "one of them"),
     ("arc", "nose_radius = 10\n", "", "nose_radius is missing"),
     ("arc", "angle = 60 ", "angle = 10 ", "too small for convex arcs"),
-    ("arc", "kind = \"flat-faced\"", "kind = \"roller\"\nradius = 5",
-     "worked under a flat-faced follower"),
+    ("arc", "kind = \"flat-faced\"", "kind = \"flat-faced\"\noffset = 5",
+     "translating on a line through the cam's centre"),
+    ("tangent", "kind = \"roller\"\ndiameter = 20", "kind = \"flat-faced\"",
+     "worked under a roller or knife-edge follower"),
     ("arc", "at = [30] ", "at = [130] ", "at most that, not 130°"),
     ("arc", "kind = \"circular arc\"", "kind = \"convex\"", "a cam's kind is circular arc or "
                                                            "tangent, not 'convex'"),
@@ -110,10 +112,14 @@ def test_the_books_formulas_are_the_outline_anywhere(r1, nose, lift, degrees, u,
     alpha = math.radians(degrees)
     theta = 2 * alpha * u
     if r1 - r2 - d * math.cos(alpha) > 1e-3 * r1:            # arcs can join base and nose
-        cam = ArcCam("circular arc", r1, r2, h, alpha)
+        cam = ArcCam("circular arc", r1, r2, h, alpha, flat=True)
         assert cam.flank_radius == pytest.approx(flank_radius(r1, r2, d, alpha), rel=1e-10)
-        place = face_place(outline("circular arc", r1, r2, d, alpha), alpha - theta) - r1
+        shape = outline("circular arc", r1, r2, d, alpha)
+        place = face_place(shape, alpha - theta) - r1
         assert arc_motion(cam, theta, 1.0)[0] == pytest.approx(place, abs=1e-12 * d)
+        on = ArcCam("circular arc", r1, r2, h, alpha, roller * r1)     # a roller on it
+        place = roller_place(shape, alpha - theta, on.roller) - r1 - on.roller
+        assert arc_motion(on, theta, 1.0)[0] == pytest.approx(place, abs=1e-12 * d)
     a_t = math.acos((r1 - r2) / d)                            # the tangent cam of r₁, r₂, h
     cam = ArcCam("tangent", r1, r2, h, a_t, roller * r1)
     t = 2 * a_t * u
@@ -188,3 +194,17 @@ def test_the_greatest_acceleration_on_the_flank_and_retardation_on_the_nose():
     assert q["a_flank_max"]["value"] == pytest.approx(q["a_flank_end"]["value"], rel=1e-12)
     assert q["a_nose_max"]["value"] == pytest.approx(q["a_nose_start"]["value"], rel=1e-12)
     assert q["a_nose_max"]["value"] < q["a_apex"]["value"] < 0
+
+
+def test_a_roller_on_a_circular_arc_cam_rides_its_flank_as_a_slider_crank():
+    """The roller's centre stays R + r from the flank's centre P, which turns on a crank
+    OP = R − r₁ pointing away: as the lift begins ẍ = ω²k(1 − k/L), k = R − r₁, L = R + r;
+    on the nose, a crank OQ = d with the rod r₂ + r: −ω²d(1 + d/(r₂ + r)) at the apex."""
+    ex = parse_cam(ARC.replace('kind = "flat-faced"', 'kind = "roller"\nradius = 8'), "cam.toml")
+    s = solve(ex)
+    q = s.results["quantities"]
+    w, r1, d, big = 500 * 2 * math.pi / 60, 0.040, 0.040, 0.075
+    k, rod = big - r1, big + 0.008
+    assert q["a_lift_start"]["value"] == pytest.approx(w * w * k * (1 - k / rod), rel=1e-13)
+    assert q["a_apex"]["value"] == pytest.approx(-w * w * d * (1 + d / 0.018), rel=1e-13)
+    assert q["flank_angle"]["passed"] and not s.failures

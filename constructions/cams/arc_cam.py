@@ -19,6 +19,12 @@ from the start of the lift to the apex), the nose centre stands d = r₁ + h −
   ẋ = ωd(sin ψ + d sin 2ψ/2√(L² − d² sin²ψ)),
   ẍ = −ω²d(cos ψ + (L²d cos 2ψ + d³ sin⁴ψ)/(L² − d² sin²ψ)^{3/2}).
 
+- **circular arc, roller r (or knife edge, r = 0)**: on the flank the roller's centre is a
+  slider-crank's piston, the crank OP = R − r₁ pointing away and the rod R + r: with
+  k = R − r₁, L = R + r, S = √(L² − k² sin²θ), x = S − k cos θ − (r₁ + r),
+  ẋ = ωk sin θ(1 − k cos θ/S), ẍ = ω²k(cos θ − k(S² cos 2θ + k² sin²θ cos²θ)/S³); it leaves
+  the flank where its centre passes J = Q + (r₂ + r)·n, n the normal where flank meets nose
+  (φ = α − the angle of OJ); on the nose, as under a tangent cam's roller.
 - **eccentric disc, roller r or knife edge (r = 0)**: the whole turn is the nose: a disc
   of radius r₂ turning e = d off its centre drives the roller's centre as a slider-crank's
   piston, crank e and rod r₂ + r, from the lowest place (θ = 0, r₁ = r₂ − e) to the apex
@@ -37,8 +43,9 @@ __all__ = ["ArcCam", "arc_motion"]
 
 @dataclass(frozen=True)
 class ArcCam:
-    """A symmetrical cam of arcs (m, rad): ``kind`` "circular arc" (flat face),
-    "tangent" or "eccentric" (``roller`` its follower's radius, 0 for a knife edge)."""
+    """A symmetrical cam of arcs (m, rad): ``kind`` "circular arc", "tangent" or
+    "eccentric", under a flat face (``flat``) or a roller (``roller`` its radius, 0 for a
+    knife edge)."""
 
     kind: str
     base: float
@@ -46,6 +53,7 @@ class ArcCam:
     lift: float
     alpha: float
     roller: float = 0.0
+    flat: bool = False
 
     @property
     def d(self) -> float:
@@ -67,7 +75,13 @@ class ArcCam:
             return 0.0
         if self.kind == "tangent":
             return math.atan2(self.d * math.sin(self.alpha), self.base + self.roller)
-        return math.asin(self.d * math.sin(self.alpha) / (self.flank_radius - self.nose))
+        if self.flat:
+            return math.asin(self.d * math.sin(self.alpha) / (self.flank_radius - self.nose))
+        big, a = self.flank_radius, self.alpha
+        p = (-(big - self.base) * math.cos(a), -(big - self.base) * math.sin(a))
+        gamma = math.atan2(-p[1], self.d - p[0])
+        reach = self.nose + self.roller
+        return a - math.atan2(reach * math.sin(gamma), self.d + reach * math.cos(gamma))
 
 
 def arc_motion(cam: ArcCam, theta: float, omega: float, part: str | None = None
@@ -94,13 +108,20 @@ def arc_motion(cam: ArcCam, theta: float, omega: float, part: str | None = None
         if cam.kind == "tangent":
             k, c, s = cam.base + cam.roller, math.cos(t), math.sin(t)
             x, v, a = k * (1 - c) / c, w * k * s / c ** 2, w * w * k * (2 - c * c) / c ** 3
-        else:
+        elif cam.flat:
             k = cam.flank_radius - cam.base
             x, v, a = k * (1 - math.cos(t)), w * k * math.sin(t), w * w * k * math.cos(t)
+        else:
+            k, big = cam.flank_radius - cam.base, cam.flank_radius + cam.roller
+            c, s = math.cos(t), math.sin(t)
+            root = math.sqrt(big * big - (k * s) ** 2)
+            x = root - k * c - cam.base - cam.roller
+            v = w * k * s * (1 - k * c / root)
+            a = w * w * k * (c - k * (root ** 2 * math.cos(2 * t) + (k * s * c) ** 2) / root ** 3)
         part = "flank"
     else:
         psi, d = cam.alpha - t, cam.d
-        if cam.kind != "circular arc":
+        if not cam.flat:
             big = cam.nose + cam.roller
             root = math.sqrt(big * big - (d * math.sin(psi)) ** 2)
             x = d * math.cos(psi) + root - cam.base - cam.roller

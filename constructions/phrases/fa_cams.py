@@ -187,6 +187,8 @@ WORDS: dict[str, str] = {
         "مرکز دیسک به فاصلهٔ {d} از محور، شعاع دیسک {r}: خیز {h}",
     "the acceleration at the lowest place": "شتاب در پایین‌ترین موقعیت",
     "the greatest velocity": "بیشترین سرعت",
+    "the flank's radius {R}; the roller leaves the flank {phi}° after the lift begins":
+        "شعاع یال {R}؛ غلتک {phi}° پس از آغاز صعود از یال جدا می‌شود",
     "the greatest acceleration on the flank": "بیشترین شتاب روی یال",
     "the greatest retardation on the nose": "بیشترین کاهش سرعت روی دماغه",
     "the least base circle for a least radius of curvature of {limit}: {r} {unit} (the "

@@ -23,8 +23,9 @@ from ..table_file import SPEEDS
 
 __all__ = ["ArcCamExercise", "parse_arc_cam", "eccentric_disc", "ARC_KINDS"]
 
-ARC_KINDS = {"circular arc": "flat-faced", "tangent": "roller"}
-"""Each cam of arcs and the follower the books set on it."""
+ARC_KINDS = {"circular arc": ("flat-faced", "roller", "knife-edge"),
+             "tangent": ("roller", "knife-edge")}
+"""Each cam of arcs and the followers the books set on it (the first unless said)."""
 
 _CAM_KEYS = ("kind", "base_radius", "nose_radius", "lift", "angle", "action_angle",
              "faces_angle", "flank_radius", "speed", "sense")
@@ -92,7 +93,7 @@ def parse_arc_cam(tables, exercise_id: str, angles) -> ArcCamExercise:
     if sense not in ("cw", "ccw") or rate <= 0:
         raise fail("the cam turns at a positive speed, its sense cw or ccw", "cam", "sense")
     omega = rate * SPEEDS[speed] * (1 if sense == "ccw" else -1)
-    roller = _follower(data.get("follower") or {}, kind, metre, fail)
+    roller, flat = _follower(data.get("follower") or {}, kind, metre, fail)
     given = tuple(k for k in ("nose_radius", "lift", "angle", "action_angle", "faces_angle",
                               "flank_radius")
                   if k in cam)
@@ -100,7 +101,7 @@ def parse_arc_cam(tables, exercise_id: str, angles) -> ArcCamExercise:
         shape = _tangent(cam, r1, size, number, fail)
     else:
         shape = _circular(cam, r1, size, number, fail)
-    made = ArcCam(kind, r1, *shape, roller)
+    made = ArcCam(kind, r1, *shape, roller, flat)
     ask = data.get("ask", {})
     if not isinstance(ask, dict) or any(k != "at" for k in ask):
         raise fail(f"a {kind} cam's [ask] table takes at = [20, 75] (the motion at those "
@@ -155,15 +156,17 @@ def _mass(t: dict[str, Any], number, fail) -> float:
     return m
 
 
-def _follower(t: dict[str, Any], kind: str, metre: float, fail) -> float:
-    """The follower the cam of ``kind`` drives: a flat face, or a roller's radius (m)."""
-    want = ARC_KINDS[kind]
-    if t.get("kind", want) != want or t.get("motion", "translating") != "translating" or \
+def _follower(t: dict[str, Any], kind: str, metre: float, fail) -> tuple[float, bool]:
+    """The follower the cam of ``kind`` drives: its roller's radius (m; 0 for a knife edge
+    or a flat face) and whether it is a flat face."""
+    allowed = ARC_KINDS[kind]
+    want = t.get("kind", allowed[0])
+    if want not in allowed or t.get("motion", "translating") != "translating" or \
             t.get("offset", 0):
-        raise fail(f"a {kind} cam is worked under a {want} follower translating on a line "
-                   "through the cam's centre", "follower", "kind")
+        raise fail(f"a {kind} cam is worked under a {' or '.join(allowed)} follower "
+                   "translating on a line through the cam's centre", "follower", "kind")
     if want != "roller":
-        return 0.0
+        return 0.0, want == "flat-faced"
     if ("radius" in t) == ("diameter" in t):
         raise fail("a roller follower gives its radius (radius = 15) or its diameter "
                    "(diameter = 30)", "follower", "radius")
@@ -174,7 +177,7 @@ def _follower(t: dict[str, Any], kind: str, metre: float, fail) -> float:
         raise fail(str(e), "follower", key) from None
     if not r > 0:
         raise fail(f"the roller's {key} must be positive", "follower", key)
-    return r
+    return r, False
 
 
 def _tangent(cam: dict[str, Any], r1: float, size, number, fail

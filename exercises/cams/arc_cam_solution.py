@@ -74,7 +74,7 @@ class ArcCamSolution(ChapterFiles):
         """The follower's lift read off the outline at cam angle ``theta``."""
         c = self.exercise.cam
         psi = c.alpha - theta
-        if c.kind != "circular arc":
+        if not c.flat:
             return roller_place(self.outline, psi, c.roller) - c.base - c.roller
         return face_place(self.outline, psi) - c.base
 
@@ -163,7 +163,15 @@ class ArcCamSolution(ChapterFiles):
         else:
             out["flank_radius"] = (c.flank_radius, self.outline.flank_radius,
                                    "R from the triangle OPQ")
-            out["flank_angle"] = (c.phi, c.alpha - flank.start, "sin φ = d sin α/(R − r₂)")
+            if c.flat:
+                out["flank_angle"] = (c.phi, c.alpha - flank.start,
+                                      "sin φ = d sin α/(R − r₂)")
+            else:
+                # The roller leaves the flank where its centre passes the join grown out.
+                reach = c.nose + c.roller
+                meet = (c.d + reach * math.cos(flank.start), reach * math.sin(flank.start))
+                out["flank_angle"] = (c.phi, c.alpha - math.atan2(meet[1], meet[0]),
+                                      "φ = α − the angle of OJ, J the join grown by r")
         return out
 
     @cached_property
@@ -236,6 +244,8 @@ class ArcCamSolution(ChapterFiles):
                              phi=numeral(math.degrees(c.phi), ".4g")))
         else:
             out.append(words("the flank's radius {R}; the face leaves the flank {phi}° after "
+                             "the lift begins" if c.flat else
+                             "the flank's radius {R}; the roller leaves the flank {phi}° after "
                              "the lift begins", R=self._length(c.flank_radius),
                              phi=numeral(math.degrees(c.phi), ".4g")))
         unit = ex.length_unit

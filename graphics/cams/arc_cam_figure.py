@@ -63,9 +63,9 @@ def draw_arc_cam(cam_outline, cam, title: str, unit: str, metre: float) -> Figur
                       o[1] - (r + 2.5) * math.sin(mid) + 1.0), "α", 3.2, "start", True))
     # The follower at the apex.
     apex = cam.d + cam.nose
-    if cam.kind != "circular arc" and cam.roller > 0:
+    if not cam.flat and cam.roller > 0:
         fig.add(Circle(paper((apex + cam.roller, 0.0)), cam.roller * k, "reference"))
-    elif cam.kind != "circular arc":           # a knife edge at the apex
+    elif not cam.flat:                         # a knife edge at the apex
         fig.add(Path((paper((apex, 0.0)), paper((apex + 0.4 * cam.base, 0.0))), "reference"))
     else:
         fig.add(Path((paper((apex, -0.6 * cam.base)), paper((apex, 0.6 * cam.base))),
