@@ -15,11 +15,9 @@ from typing import Any, ClassVar
 from tarsim.constructions.asks import symbol
 from tarsim.constructions.errors import InputError
 from tarsim.constructions.gears.involute import Involute, check_mesh
-from tarsim.constructions.gears.planet_teeth import teeth_from_ratios
+from tarsim.constructions.gears.teeth import teeth_from_diameter
 from tarsim.constructions.gears.torques import implied_output
-from tarsim.constructions.gears.teeth import (imply_teeth, teeth_from_diameter,
-                                              teeth_from_ratio, unknown_teeth)
-from tarsim.constructions.gears.train import Gear, GearTrain, Mesh, SpeedUnits
+from tarsim.constructions.gears.train import Gear, GearTrain, SpeedUnits
 from tarsim.constructions.gears.twins import fold_twins
 from tarsim.constructions.narration import Phrase, phrase
 from tarsim.constructions.units import LENGTH_UNITS
@@ -27,6 +25,8 @@ from ..file_numbers import RANGE, _float, in_range
 from ..toml_source import SourceMap, read_toml
 from ..names import named_in, read_names
 from .train_inputs import _POWERS, InputTables, _shown
+from .train_meshes import MeshTables
+from .train_teeth import TeethTables
 
 __all__ = ["TrainExercise", "parse_train"]
 
@@ -86,7 +86,7 @@ def parse_train(text: str, filename: str = "<string>", exercise_id: str = "train
     return _Reader(data, SourceMap(text), filename, exercise_id).read()
 
 
-class _Reader(InputTables):
+class _Reader(InputTables, MeshTables, TeethTables):
     def __init__(self, data: dict[str, Any], where: SourceMap, filename: str, eid: str):
         self.data, self.where, self.filename, self.id = data, where, filename, eid
         self.sized_teeth: list[Phrase] = []      # the steps that found teeth by N = d/m
@@ -135,67 +135,6 @@ class _Reader(InputTables):
                              self.text("description"), involute,
                              read_names(self.data, self.where, self.filename), twins,
                              replace(listed, planets=train.planets) if twins else None)
-
-    def teeth(self, train: GearTrain, implied: list[int]) -> GearTrain:
-        """``train`` with the teeth the data imply (a diameter's, the coaxial condition's),
-        found as its first steps; a gear whose teeth nothing gives is refused at its line."""
-        coaxial = self.data.get("coaxial")
-        if coaxial is not None and not (isinstance(coaxial, list) and len(coaxial) == 2 and all(
-                isinstance(g, int) and g in [h.number for h in train.gears] for g in coaxial)):
-            raise self.fail("coaxial names the two gears of an ordinary train on one axis, "
-                            "coaxial = [2, 5]", key="coaxial")
-        train = replace(train, coaxial=tuple(coaxial) if coaxial else None)
-        train, steps = imply_teeth(train, train.coaxial)
-        if "ratio" in self.data:
-            ratios, least = self.speed_ratios(train)
-            train = replace(train, ratio_given=tuple((*of, value) for of, value in ratios))
-            if train.planetary or len(ratios) > 1 or any(m.distance for m in train.meshes):
-                train, more = teeth_from_ratios(train, ratios, least)
-            else:
-                train, more = teeth_from_ratio(train, *ratios[0], least)
-            steps = (*steps, *more)
-        for g in unknown_teeth(train):
-            raise InputError(f"gear {g} needs its teeth: give teeth = …, or its diameter with "
-                             "its module, or mesh it where the coaxial condition gives them",
-                             file=self.filename)
-        return replace(train, implied=(*self.sized_teeth, *steps),
-                       implied_teeth=(*self.from_diameter, *implied))
-
-    def speed_ratios(self, train: GearTrain
-                     ) -> tuple[list[tuple[tuple[int, int], Fraction]], int | None]:
-        """``[ratio]``, or a ``[[ratio]]`` for each pair the book gives one: the speed
-        ratios, and the least tooth count (in any of them) for counts they leave unknown."""
-        tables = self.data["ratio"]
-        tables = tables if isinstance(tables, list) else [tables]
-        found = [self.ratio(train, t, i) for i, t in enumerate(tables)]
-        leasts = [least for _, _, least in found if least is not None]
-        if len(leasts) > 1:
-            raise self.fail("give least_teeth once, in one [[ratio]]", "ratio", "least_teeth",
-                            1)
-        return [(of, value) for of, value, _ in found], (leasts[0] if leasts else None)
-
-    def ratio(self, train: GearTrain, t: Any, i: int = 0
-              ) -> tuple[tuple[int, int], Fraction, int | None]:
-        """One ``[ratio]``: a speed ratio the book gives, of = "omega2/omega6", value = 12,
-        and least_teeth for counts it leaves unknown."""
-        if not isinstance(t, dict):
-            raise self.fail('must be a table: [ratio] of = "omega2/omega6", value = 12', "ratio")
-        self.known(t, ("of", "value", "least_teeth"), "ratio", i)
-        parts = t.get("of", "").split("/") if isinstance(t.get("of"), str) else []
-        numbers = [p.removeprefix("omega") for p in parts]
-        if len(parts) != 2 or not all(p.startswith("omega") and n.isdigit() and int(n) in
-                                      train.members for p, n in zip(parts, numbers)):
-            raise self.fail('name the ratio of two members\' speeds: of = "omega2/omega6"',
-                            "ratio", "of", i)
-        if "value" not in t:
-            raise self.fail("give the ratio's value = …", "ratio", index=i)
-        value = abs(self.exact(t["value"], "the ratio", "ratio", "value", i))
-        if value == 0:
-            raise self.fail("a speed ratio of 0 fixes no teeth", "ratio", "value", i)
-        least = (self.integer(t["least_teeth"], "the least tooth count", "ratio",
-                                "least_teeth", i)
-                 if "least_teeth" in t else None)
-        return (int(numbers[0]), int(numbers[1])), value, least
 
     def placed(self, error: InputError) -> InputError:
         """A check of the whole train, led by the line of the first gear it names (or of
@@ -352,83 +291,6 @@ class _Reader(InputTables):
         if any(isinstance(g, dict) and g.get("number") == n for g in gears):
             raise self.fail(f"member {n} is both a gear and the arm", "arm", "number")
         return n, t.get("name", ""), planets
-
-    def compound_bevel(self, planet: int, meshes: list[Mesh]) -> bool:
-        """True where a gear on ``planet``'s shaft has bevel meshes of its own (a
-        Humpage's gear's compound bevel planet)."""
-        spindle = {m for shaft in self.data.get("shaft") or [] if isinstance(shaft, dict)
-                   for m in (shaft.get("members") or []) if planet in (shaft.get("members")
-                                                                        or [])} - {planet}
-        return any(mesh.bevel and {mesh.a, mesh.b} & spindle for mesh in meshes)
-
-    def meshes(self, units: SpeedUnits, gears: tuple[Gear, ...]) -> tuple[Mesh, ...]:
-        out = []
-        for i, t in enumerate(self.data.get("mesh") or []):
-            pair = t.get("gears") if isinstance(t, dict) else None
-            if not (isinstance(pair, list) and len(pair) == 2 and all(
-                    isinstance(g, int) and not isinstance(g, bool) for g in pair)):
-                raise self.fail("a mesh names its two gears, gears = [2, 4]", "mesh", "gears", i)
-            self.known(t, ("gears", "kind", "centre_distance"), "mesh", i)
-            kind = t.get("kind", "external")
-            if kind not in ("external", "internal", "bevel"):
-                raise self.fail(f"unknown mesh kind '{kind}'; use external, internal or bevel",
-                                "mesh", "kind", i)
-            if pair[0] == pair[1]:
-                raise self.fail(f"gear {pair[0]} cannot mesh with itself", "mesh", "gears", i)
-            distance = None
-            if "centre_distance" in t:
-                distance = self.exact(t["centre_distance"], "a centre distance", "mesh",
-                                      "centre_distance", i)
-                if distance <= 0:
-                    raise self.fail("a centre distance must be positive", "mesh",
-                                    "centre_distance", i)
-                distance *= Fraction(repr(LENGTH_UNITS[units.length]))
-            out.append(Mesh(pair[0], pair[1], kind == "internal", distance,
-                            -1 if kind == "bevel" else 0))
-        if not out:
-            raise self.fail("list the meshes as [[mesh]] tables, gears = [2, 4]", key="mesh")
-        return self.bevel_senses(out, gears)
-
-    def bevel_senses(self, meshes: list[Mesh], gears: tuple[Gear, ...]) -> tuple[Mesh, ...]:
-        """A bevel planet's meshes with the gears beside it: the first listed +1, the
-        second −1, so the two turn opposite ways relative to the arm (a differential); a
-        third is refused. A bevel pair on fixed axes, square to each other, turns +1: each
-        turns in the sense the book takes as its forward one (a propeller shaft and the
-        crown it drives)."""
-        carried = {g.number for g in gears if g.carrier is not None}
-        seen: dict[int, int] = {}
-        out = []
-        for i, mesh in enumerate(meshes):
-            planet = next((g for g in (mesh.a, mesh.b) if g in carried), None)
-            if mesh.bevel and planet is not None and self.compound_bevel(planet, meshes):
-                raise self.fail(f"gear {planet}'s bevel meshes and another gear's on its "
-                                "spindle: which side of the spindle each main-axis gear "
-                                "stands cannot be told from the file; a bevel planet is one "
-                                "gear meshing the gears either side of it", "mesh", "kind", i)
-            if mesh.bevel and planet is not None:
-                seen[planet] = seen.get(planet, 0) + 1
-                if seen[planet] > 2:
-                    raise self.fail(f"gear {planet} has a third bevel mesh: a bevel planet "
-                                    "meshes the two gears either side of it", "mesh", "kind", i)
-                mesh = replace(mesh, bevel=1 if seen[planet] == 1 else -1)
-            elif mesh.bevel:                # on fixed axes: the senses as the book takes them
-                mesh = replace(mesh, bevel=1)
-            out.append(mesh)
-        return tuple(out)
-
-    def shafts(self) -> tuple[tuple[int, ...], ...]:
-        out = []
-        for i, t in enumerate(self.data.get("shaft") or []):
-            members = t.get("members") if isinstance(t, dict) else None
-            if not (isinstance(members, list) and len(members) >= 2 and all(
-                    isinstance(m, int) and not isinstance(m, bool) for m in members)):
-                raise self.fail("a shaft names the members that turn together, members = "
-                                "[3, 4]", "shaft", "members", i)
-            self.known(t, ("members",), "shaft", i)
-            if len(set(members)) < len(members):
-                raise self.fail("a shaft names a member twice", "shaft", "members", i)
-            out.append(tuple(members))
-        return tuple(out)
 
     def fixed(self) -> int | None:
         v = self.data.get("fixed")

@@ -15,18 +15,16 @@ from functools import cached_property
 from typing import Any
 
 from tarsim.constructions.checks import CEILING
-from tarsim.constructions.gears.involute import InvoluteMesh, draw_involute_mesh, least_teeth_drawn
-from tarsim.constructions.gears.kutzbach import DRAWN, Kutzbach, draw_kutzbach, undrawable
+from tarsim.constructions.gears.involute import InvoluteMesh, draw_involute_mesh
+from tarsim.constructions.gears.kutzbach import Kutzbach, draw_kutzbach, undrawable
 from tarsim.constructions.gears.tabular import TrainSpeeds, fraction_text, tabulate
 from tarsim.constructions.gears.torques import (balance, holder, implied_output,
-                                                input_torque, per_pi, power_at, power_text,
+                                                input_torque, per_pi, power_text,
                                                 say_balance, say_powers, torque_text)
 from tarsim.constructions.narration import (numeral, numerals, phrase, significant, unit_words,
                                             words)
-from tarsim.constructions.reference.gear_mesh import (MeshReference, involute_miss, least_teeth,
-                                                      mesh_reference)
-from tarsim.constructions.reference.willis import (coaxial_teeth, pitch_distance,
-                                                   willis_speeds, willis_torques)
+from tarsim.constructions.reference.gear_mesh import MeshReference, involute_miss, mesh_reference
+from tarsim.constructions.reference.willis import willis_speeds, willis_torques
 from tarsim.graphics.gears.involute_figure import draw_involute_figure
 from tarsim.graphics.gears.kutzbach_figure import draw_kutzbach_figure
 from tarsim.graphics.gears.train_schematic import draw_train_schematic
@@ -35,57 +33,14 @@ from ..checked import Checked, check_line
 from ..solution_folder import ChapterFiles
 from ..worked_document import Bullets, Paragraph, Section, Table, numbered, said_steps, title
 from .train_file import MESH_ASKS, TrainExercise, ask_symbol
+from .train_quantities import QuantityParts, TrainQuantity
 from .train_refusals import refuse_beyond_floats, refuse_still_ratios
 
 __all__ = ["TrainSolution", "solve_train"]
 
 
 @dataclass(frozen=True)
-class TrainQuantity:
-    """One asked speed or ratio: exact by the method and by Willis, and in SI."""
-
-    name: str
-    exact: Fraction
-    reference: Fraction
-    si: float
-    method: str
-    tolerance: float = 0.0
-    """0 for an exact quantity (a speed, a ratio, a count); a drawn length, angle or ratio
-    agrees within this, in its own units: a few roundings of the drawing's size."""
-    matched: bool = True
-    """False when what the number counts differs (the interference's gears), though the
-    counts may agree."""
-    over_pi: bool = False
-    """True for a torque that is ``exact``/π (a power given, speeds in rpm)."""
-    times_pi: bool = False
-    """True for a power that is ``exact``·π (a torque given, speeds in rpm)."""
-    flow: str = ""
-    """A power's way: "in" to the train (the driver's) or "out" of it."""
-
-    @property
-    def passed(self) -> bool:
-        """True when the method's value is the reference's (within a drawing's rounding)."""
-        if not self.matched:
-            return False
-        if not self.tolerance:
-            return self.exact == self.reference
-        return abs(float(self.exact) - float(self.reference)) <= self.tolerance
-
-    @property
-    def rel_error(self) -> float:
-        """0 when the two are one; else how far apart, relative (1 for things counted that
-        differ)."""
-        if not self.matched:
-            return 1.0
-        if self.exact == self.reference:
-            return 0.0
-        size = abs(self.reference) if self.tolerance and self.reference else max(
-            abs(self.reference), 1)
-        return float(abs(self.exact - self.reference) / size)
-
-
-@dataclass(frozen=True)
-class TrainSolution(ChapterFiles):
+class TrainSolution(ChapterFiles, QuantityParts):
     """A solved gear train (see :func:`solve_train`)."""
 
     exercise: TrainExercise
@@ -152,84 +107,6 @@ class TrainSolution(ChapterFiles):
         if named is None and holder(t) in asked:      # the holding torque asked alone
             return implied_output(t)
         return named
-
-    def _power_quantity(self, m: int, torques: dict[int, Fraction],
-                        torques_ref: dict[int, Fraction]) -> TrainQuantity:
-        """Member ``m``'s power |T·ω| in W, beside the reference's torque times its Willis
-        speed."""
-        got, times_pi = power_at(self.train, torques[m], self.found.speeds[m])
-        ref, _ = power_at(self.train, torques_ref[m], self.reference[m])
-        si = float(got) * (math.pi if times_pi else 1.0)
-        flow = "in" if torques[m] * self.found.speeds[m] > 0 else "out"
-        return TrainQuantity(f"power{m}", got, ref, si, "balance of power",
-                             times_pi=times_pi, flow=flow)
-
-    def _mesh_quantity(self, name: str) -> TrainQuantity:
-        """A number read off the involute mesh, beside the formula's."""
-        got, ref = self.mesh, self.mesh_reference
-        if name == "least_teeth":
-            d = self.exercise.involute
-            a, b = sorted((self.train.gear(d.pinion), self.train.gear(d.wheel)),
-                          key=lambda g: g.teeth)
-            ratio = b.teeth / a.teeth
-            drawn = least_teeth_drawn(float(a.module), ratio, d)
-            return TrainQuantity(name, Fraction(drawn), Fraction(least_teeth(ratio,
-                                 d.pressure_angle, d.addendum)), float(drawn),
-                                 "involute mesh, drawn with fewer teeth until clear")
-        if name == "interference":
-            # The gears that interfere, counted; compared as the gears themselves.
-            a, b = Fraction(len(got.interference)), Fraction(len(ref.interference))
-            return TrainQuantity(name, a, b, float(a), "involute mesh",
-                                 matched=got.interference == ref.interference)
-        attr = {"contact_ratio": "contact_ratio", "path_of_contact": "path",
-                "arc_of_contact": "arc", "pressure_angle": "pressure_angle",
-                "circular_pitch": "circular_pitch"}[name]
-        value, want = getattr(got, attr), getattr(ref, attr)
-        # Drawn on coordinates of the centre distance's size: a length is good to a few
-        # thousand roundings of it (the path is a difference of two such lengths), the
-        # contact ratio to that over the base pitch, the arc over cos φ′, an angle to that
-        # over the radii it is measured on.
-        size = DRAWN * math.dist(*got.centres.values())
-        allowed = {"contact_ratio": size / got.base_pitch,
-                   "arc_of_contact": size / math.cos(got.pressure_angle),
-                   "pressure_angle": size / got.radii["base2"]}.get(name, size)
-        return TrainQuantity(name, Fraction(value), Fraction(want), value, "involute mesh",
-                             allowed)
-
-    def _distance_quantity(self, name: str) -> TrainQuantity:
-        """A pair's centre distance (m) from its teeth and module, m(N_a ± N_b)/2, beside
-        the sum (or difference) of the two pitch radii, each at its own gear's module."""
-        a, b = (int(n) for n in name.removeprefix("centre_distance").split("_"))
-        mesh = next(m for m in self.train.meshes if {m.a, m.b} == {a, b})
-        got = self.train._mesh_length(mesh)
-        ref = pitch_distance(self.train, a, b, mesh.internal)
-        return TrainQuantity(name, got, ref, float(got), "teeth and module")
-
-    def _teeth_quantity(self, number: int) -> TrainQuantity:
-        """A gear's teeth, given or found from the data, beside the reference's: the count
-        that makes its mesh's centre distance the other pair's (train.py's distances, solved
-        by a secant on the count), or its diameter over its module in floats."""
-        train, gear = self.train, self.train.gear(number)
-        found = Fraction(gear.teeth)
-        if number not in train.implied_teeth:
-            return TrainQuantity(f"teeth{number}", found, found, float(found), "given")
-        if gear.diameter is not None:
-            ref = Fraction(round(float(gear.diameter) / float(gear.module)))
-            return TrainQuantity(f"teeth{number}", found, ref, float(found), "d/m")
-        by_axis = coaxial_teeth(train, number)
-        if not train.ratio_given:
-            return TrainQuantity(f"teeth{number}", found, by_axis, float(found),
-                                 "coaxial condition")
-        # the ratios the file gives, by the Willis speeds of the train with these teeth,
-        # and the coaxial condition where the count stands in it
-        speeds = self.reference
-        holds = all(abs(speeds[x] / speeds[y]) == value for x, y, value in train.ratio_given)
-        # and each centre distance the file gives the gear's pairs, by their pitch circles
-        holds = holds and all(pitch_distance(train, m.a, m.b, m.internal) == m.distance
-                              for m in train.meshes if number in (m.a, m.b) and m.distance)
-        return TrainQuantity(f"teeth{number}", found, (by_axis or found) if holds else
-                             Fraction(0), float(found), "coaxial condition and speed ratio"
-                             if by_axis else "speed ratio")
 
     def _torques(self, speeds: dict[int, Fraction]) -> dict[int, Fraction]:
         return balance(self.train, speeds, self.output)
