@@ -467,3 +467,13 @@ find = ["omega1"]
 """
     s = solve_train(parse_train(text, "t.toml"))
     assert s.quantities["omega1"].exact == crank * (1 + F(planet, sun)) and s.passed
+
+
+def test_a_ring_s_teeth_from_its_centre_distance():
+    """A pinion of 30 teeth inside an annulus, module 2 mm, axes 50 mm apart: the ring
+    listed second, C = m(N_ring − N)/2 gives N_ring = 30 + 2·50/2 = 80."""
+    text = TWO.format(module=2, first="teeth = 30", distance=50, ratio="",
+                      find='["teeth2", "omega2"]').replace(
+        'gears = [1, 2]', 'gears = [1, 2]\nkind = "internal"')
+    q = solve_train(parse_train(text, "t.toml")).quantities
+    assert q["teeth2"].exact == 80 and q["omega2"].exact == F(100 * 30, 80)
