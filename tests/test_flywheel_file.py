@@ -202,7 +202,8 @@ torque = "8000 + 2400*sin(3*theta)"
 
 
 @pytest.mark.parametrize("written, cs", [('"±1 %"', 0.02), ('"2 %"', 0.02), ('"+/-1.5%"', 0.03),
-                                         ('" ±0.25 % "', 0.005), ("0.02", 0.02)])
+                                         ('" ±0.25 % "', 0.005), ("0.02", 0.02),
+                                         ('"1/50"', 0.02)])
 def test_a_speed_fluctuation_is_taken_as_the_books_write_it(written, cs):
     """"±1 %" is 1 % either way of the mean, 2 % in all; "2 %" is the total already."""
     ex = parse_flywheel(HARMONIC.format(flywheel=f"speed = 250\nspeed_fluctuation = {written}"))

@@ -32,6 +32,7 @@ import re
 from dataclasses import dataclass
 from typing import Any, ClassVar
 
+from tarsim.constructions.errors import InputError
 from tarsim.constructions.forces.flywheel import Diagram, Punch
 from tarsim.constructions.forces.torque_formula import Formula, parse_formula
 from tarsim.constructions.units import LENGTH_UNITS
@@ -343,16 +344,19 @@ def _speeds(t: Tables, fw: dict, rad_s: float) -> dict[str, float]:
         out["speed"] = given["speed"]
     if "speed_fluctuation" in fw:
         raw = fw["speed_fluctuation"]
-        if isinstance(raw, str):
-            m = PERCENT.fullmatch(raw)
-            if m is None:
-                raise t.fail(f"the fluctuation of speed is a number (C_s) or a percentage of the "
-                             f"mean, \"±1 %\" or \"2 %\" (the total); got {raw!r:.40}",
-                             "flywheel", "speed_fluctuation")
+        m = PERCENT.fullmatch(raw) if isinstance(raw, str) else None
+        if m is not None:
             cs = float(m[2]) / 100 * (2 if m[1] else 1)
         else:
-            cs = t.number(fw, "speed_fluctuation", "flywheel",
-                          "the coefficient of fluctuation of speed")
+            try:
+                cs = t.number(fw, "speed_fluctuation", "flywheel",
+                              "the coefficient of fluctuation of speed")
+            except InputError:
+                if not isinstance(raw, str):
+                    raise
+                raise t.fail(f"the fluctuation of speed is a number (C_s) or a percentage of "
+                             f"the mean, \"±1 %\" or \"2 %\" (the total); got {raw!r:.40}",
+                             "flywheel", "speed_fluctuation") from None
         if not 0 < cs < 2:
             raise t.fail(f"C_s = (ω_max − ω_min)/ω is positive and below 2 (a speed that "
                          f"stops), got {cs:g}", "flywheel", "speed_fluctuation")
