@@ -894,8 +894,8 @@ HOSTILE: dict[str, dict[str, bytes]] = {
         "units-key": edited('length = "mm"', 'length = "mm"\ntime = "s"').encode(),
     },
     "wrong-types": {
-        "string-length": edited("O2A = 100", 'O2A = "100"').encode(),
-        "string-angle": edited("angle = 60", 'angle = "60"').encode(),
+        "string-length": edited("O2A = 100", 'O2A = "100 mm"').encode(),
+        "string-angle": edited("angle = 60", 'angle = "60°"').encode(),
         "bool-omega": edited("omega = 10", "omega = true").encode(),
         "array-frame": ("frame = [[0, 0], [300, 0]]\n"
                         + edited("[frame]\nO2 = [0, 0]\nO4 = [300, 0]\n", "")).encode(),

@@ -223,7 +223,7 @@ def test_a_collinear_plate_point_needs_no_side():
     # lengths
     ("AB = 250", "AB = -250", 20, ["link 3", "must be a positive length", "-250"]),
     ("O4B = 200", "O4B = 0", 25, ["link 4", "must be a positive length", "got 0"]),
-    ("O2A = 100", 'O2A = "100"', 15, ["must be a number"]),
+    ("O2A = 100", 'O2A = "100 mm"', 15, ["must be a number"]),
     ("lengths = { AB = 250 }", "lengths = { ABB = 250 }", 20, ["did you mean 'AB'?"]),
     ("lengths = { AB = 250 }", "# no lengths", 17, ["link 3 needs the length AB"]),
     # names of links and points
