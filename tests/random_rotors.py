@@ -198,8 +198,8 @@ def _cancel(masses: list[dict], r: random.Random) -> None:
 def open_rotor(r: random.Random) -> dict[str, Any]:
     """A rotor balanced already (its last two masses cancel the rest), with four of its
     data (two in one plane) marked "?": in the textbooks' patterns (two masses' mass and
-    angle; a mass's mass, angle and plane with another's plane; a mass and three angles),
-    or any four."""
+    angle; a mass's mass, angle and plane with another's plane, or with another's mass; a
+    mass and three angles), or any four."""
     while True:
         spec = rotor(r, 2)
         masses = spec["mass"]
@@ -214,7 +214,7 @@ def open_rotor(r: random.Random) -> dict[str, Any]:
     spec["name"] = "random rotor (open)"
     i, j = r.sample(range(len(masses)), 2)
     others = [k for k in range(len(masses)) if k != i]
-    pattern = r.choice(["two-masses", "planes", "angles", "any"])
+    pattern = r.choice(["two-masses", "planes", "plane-and-angle", "angles", "any"])
     if static:
         hide = r.choice([[(i, "mass"), (i, "angle")], [(i, "mass"), (j, "angle")],
                          [(i, "angle"), (j, "angle")], [(i, "radius"), (j, "mass")]])
@@ -222,6 +222,8 @@ def open_rotor(r: random.Random) -> dict[str, Any]:
         hide = [(i, "mass"), (i, "angle"), (j, "mass"), (j, "angle")]
     elif pattern == "planes":
         hide = [(i, "mass"), (i, "angle"), (i, "plane"), (j, "plane")]
+    elif pattern == "plane-and-angle":  # the couple polygon closes on i's m·r·l first
+        hide = [(i, "mass"), (i, "angle"), (i, "plane"), (j, "mass")]
     elif pattern == "angles":
         hide = [(i, "mass"), (i, "angle")] + [(k, "angle") for k in
                                              r.sample(others, min(2, len(others)))]

@@ -381,14 +381,34 @@ def test_a_rotor_whose_unknowns_cannot_close_is_refused_in_one_line(old, new, wo
 
 
 def test_unknowns_tangled_in_one_polygon_are_refused():
-    """A's mass and plane, and B's and C's angles: the force polygon has three unknowns,
-    and the couple polygon cannot read m·r·l for A's two at once."""
+    """A's mass and plane (its angle 0), C's mass and angle: the force polygon has three
+    unknowns, and about any known plane the couple polygon has one (C's plane: A's m·r·l,
+    which cannot close two equations alone) or three."""
+    text = OPEN.replace('angle = "?"\nplane = "?"', 'angle = 0\nplane = "?"', 1).replace(
+        'mass = 80\nradius = 50\nangle = 90', 'mass = "?"\nradius = 50\nangle = "?"', 1).replace(
+        'angle = 195\nplane = "?"', 'angle = 195\nplane = 500', 1)
+    with pytest.raises(InputError, match=r"open.toml:\d+: neither polygon has just two "
+                                         r"unknowns .*\(A \(mass, plane\); C \(mass, angle\)\)"):
+        parse_balance(text, "open.toml")
+
+
+def test_a_mass_and_plane_unknown_with_a_known_angle_close_the_couple_polygon_as_m_r_l():
+    """A's mass and plane (angle 0), C's and D's angles (planes 250 and 500 mm): about C's
+    plane A's m·r·l along 0° and D's 0.567 kg·m² of unknown direction close the couple
+    polygon, then the force polygon gives A's m·r and C's angle. Every mass comes out on
+    the 0°–180° line: B 5 and A m_A·0.075 at 0°, C 4 and D 6.3 kg·m at 180° balance the
+    force if m_A·0.075 = 5.3, and the couples about B if 5.3·l_A = 4·0.25 + 6.3·0.5."""
     text = OPEN.replace('angle = "?"\nplane = "?"', 'angle = 0\nplane = "?"', 1).replace(
         'angle = 90', 'angle = "?"', 1).replace('angle = 195\nplane = "?"',
                                                  'angle = "?"\nplane = 500', 1)
-    with pytest.raises(InputError, match=r"open.toml:\d+: neither polygon has just two "
-                                         r"unknowns"):
-        parse_balance(text, "open.toml")
+    s = solve_balance(parse_balance(text, "open.toml"))
+    assert s.passed, s.failures
+    q = s.results["quantities"]
+    # 1e-9: crossings of lines and arcs meeting square, against sums of order 1
+    assert q["mass_A"]["value"] == pytest.approx(5.3 / 0.075, rel=1e-9)
+    assert q["plane_A"]["value"] == pytest.approx((4 * 0.25 + 6.3 * 0.5) / 5.3, rel=1e-9)
+    assert q["angle_C"]["value"] == pytest.approx(180.0, abs=1e-9)
+    assert q["angle_D"]["value"] == pytest.approx(180.0, abs=1e-9)
 
 
 def test_sizes_that_cannot_reach_across_are_refused():

@@ -17,6 +17,7 @@ angle of a closing side a few hundred times shorter than its vectors).
 from __future__ import annotations
 
 import math
+from pathlib import Path
 
 import pytest
 from hypothesis import given, settings
@@ -26,6 +27,7 @@ from tarsim.constructions.errors import InputError
 from tarsim.constructions.reference.balance import vee_resultants
 from tarsim.exercises.balancing.balance_solution import solve_balance
 from tarsim.exercises.balancing.rotor_file import parse_balance
+from tarsim.exercises.catalog import bundled, load
 
 TWO_PLANES = """
 [units]
@@ -699,3 +701,76 @@ def test_a_rod_given_by_its_ratio_to_the_crank_gives_the_secondary_force_its_sha
         with pytest.raises(InputError, match=words):
             parse_balance(text.replace("rod_ratio = 4.5", bad.replace("4.5", "0.5")
                                        if "more" in words else bad), "e.toml")
+
+
+# ----- a mass's m·r and plane read as one in the couple polygon ------------------------------
+def test_b1_four_masses_unknowns():
+    """The books' shaft A, B, C, D in complete balance, A's mass and D's mass, angle and
+    plane unknown, no speed given. By hand, couples about A's plane (B 0.1 m, C 0.3 m from
+    it): D's m·r·l closes them, −(18·0.06·0.1 + 12.5·0.06·0.3·e^{i100°}), which gives D's
+    angle; the forces then have two sizes along 190° and θ_D, by Cramer's rule; l_D is
+    |m·r·l|/(m_D·0.08). 1e-9: lines meeting at 62.7°, sums of order 1 (the books' 9.669 kg,
+    7.911 kg, 366.7 mm and 252.72° to their rounding)."""
+    s = solve_balance(load("unknown-plane-and-angle"))
+    assert s.passed, s.failures
+    q = s.results["quantities"]
+    couple = -(18 * 0.06 * 0.1 + 12.5 * 0.06 * 0.3 * _cis(100))
+    theta = math.atan2(couple.imag, couple.real)
+    target = -(18 * 0.06 + 12.5 * 0.06 * _cis(100))
+    ea, ed = 0.08 * _cis(190), 0.08 * complex(math.cos(theta), math.sin(theta))
+    det = ea.real * ed.imag - ea.imag * ed.real
+    m_a = (target.real * ed.imag - target.imag * ed.real) / det
+    m_d = (ea.real * target.imag - ea.imag * target.real) / det
+    assert q["mass_A"]["value"] == pytest.approx(m_a, rel=1e-9)
+    assert q["mass_D"]["value"] == pytest.approx(m_d, rel=1e-9)
+    assert q["angle_D"]["value"] == pytest.approx(math.degrees(theta) % 360, abs=1e-9)
+    assert q["plane_D"]["value"] == pytest.approx(abs(couple) / (m_d * 0.08), rel=1e-9)
+    # the books' figures, each to half its last digit
+    for got, book, half in ((q["mass_A"]["value"], 9.669, 5e-4), (q["mass_D"]["value"], 7.911,
+                            5e-4), (q["plane_D"]["value"] * 1000, 366.7, 0.05),
+                            (q["angle_D"]["value"], 252.72, 5e-3)):
+        assert abs(got - book) <= half, (got, book)
+    assert s.exercise.open.speed is None
+
+
+@pytest.mark.parametrize("flip", [1, -1])
+def test_a_plane_found_behind_the_reference_turns_the_angle_half_round(flip):
+    """The shaft above mirrored along its axis (B and C at −100 and −300 mm): D's m·r·l
+    about A points the other way, its angle read to a half turn; the force polygon gives
+    m_D along that line negative, so D is at 252.72° again, its plane −366.7 mm. Its mass,
+    angle and plane agree with the unmirrored file's to 1e-9."""
+    text = Path(bundled("balancing")["unknown-plane-and-angle"]).read_text(encoding="utf-8")
+    text = text.replace("plane = 100\n", f"plane = {100 * flip}\n").replace(
+        'plane = "100 + 200"', f"plane = {300 * flip}")
+    q = solve_balance(parse_balance(text, "f.toml")).results["quantities"]
+    base = solve_balance(load("unknown-plane-and-angle")).results["quantities"]
+    assert q["angle_D"]["value"] == pytest.approx(base["angle_D"]["value"], abs=1e-9)
+    assert q["mass_D"]["value"] == pytest.approx(base["mass_D"]["value"], rel=1e-9)
+    assert q["plane_D"]["value"] == pytest.approx(flip * base["plane_D"]["value"], rel=1e-9)
+
+
+def test_a_known_m_r_with_its_plane_and_angle_unknown_is_refused():
+    """D's mass given, its angle and plane not, with A's mass and angle: the couple polygon
+    about A would read |l_D| and θ_D to a half turn that nothing settles (D's force vector
+    is then known but for its sign), so it is refused, naming the masses."""
+    text = Path(bundled("balancing")["unknown-plane-and-angle"]).read_text(encoding="utf-8")
+    text = text.replace('angle = 190                # B to A', 'angle = "?"').replace(
+        'mass = "?"                 # found: 7.911 kg', "mass = 7.911")
+    with pytest.raises(InputError, match=r"r.toml:\d+: neither polygon has just two unknowns"):
+        parse_balance(text, "r.toml")
+
+
+def test_a_rotor_needs_no_speed_where_nothing_asked_is_a_force():
+    """Balancing planes ask masses alone: the four-mass shaft without its speed gives the
+    same masses; with no planes the out-of-balance force is m·r·ω², refused in one line
+    that names the speed to add."""
+    with_speed = solve_balance(parse_balance(TWO_PLANES, "t.toml")).results["quantities"]
+    without = solve_balance(parse_balance(TWO_PLANES.replace("speed = 100\n", "", 1),
+                                          "t.toml")).results["quantities"]
+    for name in ("mass_X", "mass_Y", "angle_X", "angle_Y"):
+        assert without[name]["value"] == with_speed[name]["value"]
+    with pytest.raises(InputError) as e:
+        parse_balance(ECCENTRICS.replace("speed = 600\n", "", 1), "r.toml")
+    message = str(e.value)
+    assert "\n" not in message and message.startswith("r.toml:") and \
+        "needs speed = …" in message, message

@@ -164,7 +164,7 @@ def test_bad_file_is_one_line_with_file_and_line(mech_file, tmp_path, edit, mess
                         "four-masses-one-plane, inline-four, inline-three, locomotive, "
                         "notes-example-1, single-cylinder-balance-mass, single-cylinder, "
                         "three-masses-between, two-stroke-four, unknown-angles, "
-                        "unknown-planes, v-twin, "
+                        "unknown-plane-and-angle, unknown-planes, v-twin, "
                         "engine-harmonic-torque, "
                         "petrol-engine-areas, punch-sheared-area, punching-press, "
                         "single-cylinder-table\n"),
@@ -308,7 +308,7 @@ def test_list_shows_the_bundled_examples():
                    "four-masses-one-plane", "inline-four", "inline-three", "locomotive",
                    "notes-example-1", "single-cylinder-balance-mass", "single-cylinder",
                    "three-masses-between", "two-stroke-four", "unknown-angles",
-                   "unknown-planes", "v-twin",
+                   "unknown-plane-and-angle", "unknown-planes", "v-twin",
                    "engine-harmonic-torque",
                    "petrol-engine-areas", "punch-sheared-area", "punching-press",
                    "single-cylinder-table"]

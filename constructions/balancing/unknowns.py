@@ -19,6 +19,12 @@ The couple polygon is taken about a known plane of a mass with unknowns, which d
 mass out of it (the reference-plane method); the polygons are drawn in whichever order
 leaves each two unknowns. What is found is read off: a mass (or radius) from its vector's
 size, an angle from its direction, a plane from its couple vector's size over m·r.
+
+A mass whose m·r and plane are both unknown shows in the couple polygon as one size,
+m·r·(l − z), as the books take it ("the couple polygon closes on m_D·r_D·l_D"): read off
+there (with its direction, where that is unknown too, to a half turn: l − z may be
+negative), then m·r from the force polygon, which settles the half turn by its sign, and
+the plane l = z + (m·r·(l − z))/(m·r).
 """
 
 from __future__ import annotations
@@ -100,6 +106,15 @@ class Closure:
     """Each such polygon's mass whose ``between`` chose the crossing taken; a mirrored
     polygon missing here took the rule's (the left crossing of tip → pole, or the forward
     one along a line)."""
+    moments: dict[str, float] = field(default_factory=dict)
+    """A mass's m·r·(l − z) read off the couple polygon (kg·m², signed along its angle)
+    where its m·r and plane were both unknown: the force polygon's m·r splits it."""
+    loose: set[str] = field(default_factory=set)
+    """The masses whose angle the couple polygon read to a half turn (m·r and plane
+    unknown too): the sign of m·r along it in the force polygon settles it."""
+    turned: set[str] = field(default_factory=set)
+    """Of :attr:`loose`, those the force polygon turned half round: their radial line
+    points away from them."""
 
 
 def count_unknowns(rotor: OpenRotor) -> int:
@@ -136,12 +151,12 @@ def close_rotor(rotor: OpenRotor) -> Closure:
             left = [f"{p.name} ({', '.join(p.unknowns())})" for p in out.parts.values()
                     if p.unknowns() and not (rotor.static and p.unknowns() == ("plane",))]
             raise CannotClose(f"neither polygon has just two unknowns to close on "
-                              f"({'; '.join(left)}): each polygon closes on two, and one "
-                              "mass's m·r and plane are not read off at once")
+                              f"({'; '.join(left)}): each closes on two, a mass's m·r and "
+                              "plane counting as one in the couple polygon (m·r·l)")
     for p in out.parts.values():
         if f"P{p.name}" not in c:
-            c.draw(f"P{p.name}", "lay_off", "O", f"radial{p.name}", length=p.radius,
-                   label=p.name)
+            c.draw(f"P{p.name}", "lay_off", "O", f"radial{p.name}",
+                   length=-p.radius if p.name in out.turned else p.radius, label=p.name)
     return out
 
 
@@ -200,8 +215,7 @@ def _vectors(out: Closure, which: str, z: float):
             continue
         if p.plane is not None and p.plane == z:
             continue                            # in the reference plane: no couple
-        if p.size is None and p.plane is None:
-            return None                         # m·r·l: neither alone can be read off
+        # m·r·(l − z) is one unknown size where m·r or l is (both: read as the product)
         size = None if p.size is None or p.plane is None else p.size * (p.plane - z)
         vs.append((p.name, size, p.angle))
     return vs
@@ -234,9 +248,13 @@ def _try_polygon(out: Closure, which: str, rotor: OpenRotor) -> bool:
 
 
 def _readable(out: Closure, unknown) -> bool:
-    """A couple vector wholly unknown can be read only as m·r and θ at a known plane."""
-    return all(not (v[1] is None and v[2] is None) or out.parts[v[0]].plane is not None
-               for v in unknown)
+    """A couple vector wholly unknown can be read as m·r and θ at a known plane, or as
+    m·r·(l − z) and θ (to a half turn) where m·r and l are both unknown; not as l and θ
+    for a known m·r, whose half turn nothing settles."""
+    def readable(name: str) -> bool:
+        p = out.parts[name]
+        return p.plane is not None or p.size is None
+    return all(not (v[1] is None and v[2] is None) or readable(v[0]) for v in unknown)
 
 
 def _close(out: Closure, which: str, z: float, known, unknown) -> None:
@@ -260,7 +278,7 @@ def _close(out: Closure, which: str, z: float, known, unknown) -> None:
     if len(unknown) == 1:                       # the closing side is the vector
         (name, _, _), = unknown
         c.draw(f"{tag}:v:{name}", "join", tip, pole, panel=panel, role=Role.RESULT,
-               phrase=phrase("balance.found", mass=name))
+               phrase=_found(out, which, name))
         out.closing[which] = f"{tag}:v:{name}"
         out.last[which] = name
         _read(out, which, z, name, tip, pole)
@@ -293,11 +311,22 @@ def _close(out: Closure, which: str, z: float, known, unknown) -> None:
                           "figures; state the problem with better-spread masses")
     for name, start, end in ((n1, tip, x), (n2, x, pole)):
         c.draw(f"{tag}:v:{name}", "join", start, end, panel=panel, role=Role.RESULT,
-               phrase=phrase("balance.found", mass=name))
+               phrase=_found(out, which, name))
         _read(out, which, z, name, start, end)
     tips.append((n1, x))                        # the closing side, x to the pole, is n2
     out.closing[which] = f"{tag}:v:{n2}"
     out.last[which] = n2
+
+
+def _found(out: Closure, which: str, name: str):
+    """What reading ``name``'s side says: its unknowns, or, where its m·r and plane are both
+    unknown, the couple polygon's product and the force polygon's split of it."""
+    p = out.parts[name]
+    if which == "couple" and p.size is None and p.plane is None:
+        return phrase("balance.found.product", mass=name)
+    if which == "force" and name in out.moments:
+        return phrase("balance.found.split", mass=name)
+    return phrase("balance.found", mass=name)
 
 
 def _cross(out: Closure, which: str, tag: str, panel: Panel, verb: str, inputs,
@@ -374,8 +403,8 @@ def _positive(out: Closure, which: str, z: float, name: str, tip: Ref, at) -> bo
     p = out.parts[name]
     x0, y0 = out.construction.output(tip).xy
     along = (at.xy[0] - x0) * math.cos(p.angle) + (at.xy[1] - y0) * math.sin(p.angle)
-    if which == "couple" and p.plane is None:
-        return True
+    if (which == "couple" and p.plane is None) or name in out.loose:
+        return True                             # a plane either side; a half turn open
     lever = 1.0 if which == "force" else p.plane - z
     return along * lever > 0
 
@@ -387,14 +416,26 @@ def _read(out: Closure, which: str, z: float, name: str, start: Ref, end: Ref) -
     v = (x1 - x0, y1 - y0)
     p = out.parts[name]
     lever = 1.0 if which == "force" else (None if p.plane is None else p.plane - z)
+    product = which == "couple" and p.size is None and p.plane is None
     if p.angle is None:
         p = replace(p, angle=_angle_of(out, which, z, name, v))
-        if not p.admits(p.angle):
-            raise CannotClose(f"mass {name}'s angle comes out {math.degrees(p.angle):.2f}°, not "
-                              f"between {math.degrees(p.between[0]):g}° and "
-                              f"{math.degrees(p.between[1]):g}° as its between asks")
+        if product:
+            out.loose.add(name)                 # l − z may be negative: a half turn open
+        else:
+            _admitted(p)
         _radial(c, name, p.angle)
     along = v[0] * math.cos(p.angle) + v[1] * math.sin(p.angle)
+    if product:
+        out.moments[name] = along
+        out.parts[name] = p
+        return
+    if name in out.loose and along < 0:         # the force polygon settles the half turn
+        p = replace(p, angle=(p.angle + math.pi) % (2 * math.pi))
+        out.moments[name] = -out.moments[name]
+        out.turned.add(name)
+        along = -along
+    if name in out.loose:
+        _admitted(p)
     if p.size is None:
         size = along / lever
         if not size > 0:
@@ -402,6 +443,16 @@ def _read(out: Closure, which: str, z: float, name: str, start: Ref, end: Ref) -
                               f"{which} polygon: no mass at the angle given balances it")
         p = replace(p, mass=size / p.radius) if p.mass is None else replace(
             p, radius=size / p.mass)
+        if name in out.moments:                 # the couple polygon's m·r·(l − z) split
+            p = replace(p, plane=out.reference[1] + out.moments[name] / size)
     elif p.plane is None and which == "couple":
         p = replace(p, plane=z + along / p.size)
     out.parts[name] = p
+
+
+def _admitted(p: Part) -> None:
+    """Refuse an angle found outside the mass's ``between``."""
+    if not p.admits(p.angle):
+        raise CannotClose(f"mass {p.name}'s angle comes out {math.degrees(p.angle):.2f}°, not "
+                          f"between {math.degrees(p.between[0]):g}° and "
+                          f"{math.degrees(p.between[1]):g}° as its between asks")

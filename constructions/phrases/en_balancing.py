@@ -35,6 +35,12 @@ PHRASES: dict[str, str] = {
                    "the crossing closes the polygon.",
     "balance.found": "Read mass {mass}'s unknowns off its side: its size gives the mass (or "
                      "radius, or the plane's distance), its direction the angle.",
+    "balance.found.product": "Read mass {mass}'s m·r·l off its side (its m·r and plane both "
+                             "unknown): its size is the product, its direction the angle, "
+                             "to a half turn the force polygon settles.",
+    "balance.found.split": "Read mass {mass}'s m·r off its side, its sense settling the half "
+                           "turn; its plane is the couple polygon's m·r·l over it: "
+                           "l = (m·r·l)/(m·r).",
     "balance.cranks": "Draw the end view of the cranks: from the shaft's centre O each "
                       "crank's line at θᵢ, and the secondary (direct) cranks at 2θᵢ.",
     "balance.engine": "The {kind} polygon: lay off each cylinder's vector along its crank at "

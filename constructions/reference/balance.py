@@ -261,19 +261,24 @@ def open_rotor_roots(parts, order: list[str], z: float) -> list[dict]:
     """Every way the rotor's unknowns (None in ``parts``, each with name, mass, radius,
     angle, plane) close its polygons, taken in ``order`` ("force", "couple"), couples about
     the plane at ``z``: each a dict of name → (mass, radius, angle, plane). A root with a
-    mass not positive is dropped."""
-    states = [{p.name: [p.mass, p.radius, p.angle, p.plane] for p in parts}]
+    mass not positive is dropped.
+
+    A mass whose m·r and plane are both unknown takes from the couple polygon the product
+    m·r·(l − z) (and its angle, where unknown, to a half turn), from the force polygon its
+    m·r, signed along that angle (a negative one turns the angle half round), and so its
+    plane; each state carries the product and whether the half turn is open."""
+    states = [{p.name: [p.mass, p.radius, p.angle, p.plane, None, False] for p in parts}]
     for which in order:
         grown = []
         for state in states:
             grown += _polygon_states(state, which, z)
         states = grown
-    return [{k: tuple(v) for k, v in s.items()} for s in states]
+    return [{k: tuple(v[:4]) for k, v in s.items()} for s in states]
 
 
 def _polygon_states(state: dict, which: str, z: float) -> list[dict]:
     known, unknown = 0j, []
-    for name, (m, r, a, z_i) in state.items():
+    for name, (m, r, a, z_i, _, _) in state.items():
         size = None if m is None or r is None else m * r
         if which == "couple":
             if z_i is not None and z_i == z:
@@ -289,20 +294,28 @@ def _polygon_states(state: dict, which: str, z: float) -> list[dict]:
         new = {k: list(v) for k, v in state.items()}
         ok = True
         for (name, _, _), v in zip(unknown, root):
-            m, r, a, z_i = new[name]
+            m, r, a, z_i, moment, loose = new[name]
             lever = 1.0 if which == "force" else (None if z_i is None else z_i - z)
+            product = which == "couple" and (m is None or r is None) and z_i is None
             if a is None:
                 a = math.atan2(v.imag, v.real) + (math.pi if lever is not None and lever < 0
                                                   else 0.0)
                 a %= 2 * math.pi
+                loose = product
             along = v.real * math.cos(a) + v.imag * math.sin(a)
-            if m is None or r is None:
+            if product:
+                moment = along
+            elif m is None or r is None:
+                if loose and along < 0:
+                    a, along, moment = (a + math.pi) % (2 * math.pi), -along, -moment
                 size = along / lever
                 ok = ok and size > 0
                 m, r = (size / r, r) if m is None else (m, size / m)
+                if moment is not None:
+                    z_i = z + moment / size
             elif z_i is None and which == "couple":
                 z_i = z + along / (m * r)
-            new[name] = [m, r, a, z_i]
+            new[name] = [m, r, a, z_i, moment, loose]
         if ok:
             out.append(new)
     return out

@@ -254,6 +254,11 @@ class BalanceSolution(ChapterFiles):
         if x == y == 0.0:
             out.append(words("ΣF_x = ΣF_y = 0 (kg·m): the masses' forces cancel, with no "
                              "resultant"))
+        elif r.speed is None:                   # no speed given: the product alone
+            out.append(words("ΣF_x = {x}ω², ΣF_y = {y}ω² (kg·m): the resultant {size} kg·m at "
+                             "{angle}°", x=numeral(x), y=numeral(y),
+                             size=numeral(math.hypot(x, y)),
+                             angle=numeral(quadrant_angle(x, y), ".2f")))
         else:
             out.append(words("ΣF_x = {x}ω², ΣF_y = {y}ω² (kg·m): the resultant {size} kg·m at "
                              "{angle}° ({force} N at ω = {speed} rad/s)", x=numeral(x),

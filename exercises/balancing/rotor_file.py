@@ -91,7 +91,7 @@ def parse_balance(text: str, filename: str = "<string>", exercise_id: str = "rot
                                **common)
     if any(v == UNKNOWN for m in t.entries("mass") for v in m.values()):
         return BalanceExercise(open=read_open_rotor(
-            t, metre, _speed(t, "rotor"),
+            t, metre, _speed(t, "rotor", needed=False),
             lambda e, i: _name(t, e, "mass", i, str(i + 1), "mass")), **common)
     masses = _masses(t, metre, length)
     planes = _planes(t, metre) if t.entries("balance") else []
@@ -101,7 +101,9 @@ def parse_balance(text: str, filename: str = "<string>", exercise_id: str = "rot
             raise fail(f"balancing plane {p.name} has the name of {taken[p.name]}: give each "
                        "mass and plane its own name", "balance", "name", i)
         taken[p.name] = f"plane {p.name}"
-    return BalanceExercise(rotor=Rotor(tuple(masses), tuple(planes), _speed(t, "rotor"),
+    # with no balancing plane the out-of-balance force (N) and couple (N·m) are asked
+    speed = _speed(t, "rotor", needed=not planes)
+    return BalanceExercise(rotor=Rotor(tuple(masses), tuple(planes), speed,
                                        _about(t, planes, metre)), **common)
 
 
@@ -127,9 +129,16 @@ def _one(t: Tables, table: str) -> dict:
     return entries[0]
 
 
-def _speed(t: Tables, table: str) -> float:
-    """``[table]``'s speed in rad/s, positive."""
+def _speed(t: Tables, table: str, needed: bool = True) -> float | None:
+    """``[table]``'s speed in rad/s, positive; None where it is left out and nothing asked
+    needs it (``needed``: a force in N, m·r·ω²), refused in one line where something does."""
     one = _one(t, table)
+    if "speed" not in one and not needed:
+        return None
+    if "speed" not in one:
+        raise t.fail(f"[{table}] needs speed = … (rpm with [units] speed = \"rpm\", else "
+                     "rad/s): the out-of-balance force (N) and couple (N·m) are m·r·ω²",
+                     table, None)
     v = t.number(one, "speed", table, "the speed")
     if not v > 0:
         raise t.fail(f"the speed must be positive, got {v:g}", table, "speed")
