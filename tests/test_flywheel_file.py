@@ -547,3 +547,22 @@ def test_a_rim_that_gives_part_of_the_flywheel_s_inertia():
         parse_flywheel(HARMONIC.format(flywheel="speed = 1\nspeed_fluctuation = 0.1\n"
                                                 "radius = 1\nrim_share = 1.5"), "f.toml")
     assert str(e.value).startswith("f.toml:9: ") and "at most 1" in str(e.value)
+
+
+def test_f3_punch_speeds():
+    """The books' press by its radius of gyration: between 225 and 200 rpm with k = 0.5 m the
+    flywheel is found, and k is where its mass sits, m = 2ΔE/(k²·(ω1² − ω2²)) with ΔE =
+    15000·(1 − 2/5) (the books' 618 kg); with its mass too it is over-given, refused."""
+    text = ("[units]\nspeed = \"rpm\"\nlength = \"m\"\n[punch]\nenergy = 15000\n"
+            "holes_per_hour = 720\npunching_time = 2\n[flywheel]\nspeed_max = 225\n"
+            "speed_min = 200\nradius_of_gyration = 0.5\n")
+    q = solve_flywheel(parse_flywheel(text)).checked
+    w1, w2 = 225 * math.pi / 30, 200 * math.pi / 30
+    # ΔE and I are sums and quotients of exact data: a few roundings of 1e-16 each
+    assert q["rim_mass"].value["value"] == pytest.approx(2 * 9000 / (0.25 * (w1 ** 2 - w2 ** 2)),
+                                                         rel=1e-12)
+    for extra, line in (("mass = 600", 11), ("radius = 0.5", 12)):
+        with pytest.raises(InputError) as e:
+            parse_flywheel(text + extra + "\n", "f.toml")
+        assert str(e.value).startswith(f"f.toml:{line}: "), str(e.value)
+        assert "\n" not in str(e.value)

@@ -51,6 +51,8 @@ WORDS: dict[str, str] = {
         "چرخ طیار برای C_s = {cs} در ω = {omega} rad/s: I = ΔE/(C_s·ω²) = {inertia} kg·m²",
     "a rim of mean radius {radius}: m = I/r² = {mass} kg":
         "طوقه‌ای به شعاع میانگین {radius}: m = I/r² = {mass} kg",
+    "a flywheel whose radius of gyration is {radius}: its mass m = I/k² = {mass} kg":
+        "چرخ طیاری با شعاع ژیراسیون {radius}: جرم آن m = I/k² = {mass} kg",
     "a rim of {mass} kg: its mean radius r = √(I/m) = {radius}":
         "طوقه‌ای به جرم {mass} kg: شعاع میانگین آن r = √(I/m) = {radius}",
     "a flywheel of I = {inertia} kg·m² holds the speed within C_s = ΔE/(I·ω²) = {cs} "

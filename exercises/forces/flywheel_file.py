@@ -17,7 +17,8 @@ twice, or a last point a cycle on from the first with another T.
 ``cycle`` (degrees, 360 by default) is how far the crank turns before the diagram repeats.
 ``[flywheel]`` gives the mean ``speed`` and either ``speed_fluctuation`` (C_s: the flywheel
 is found, and a rim's ``mass`` at a stated ``radius`` or its ``radius`` for a stated
-``mass``) or the flywheel (``inertia``, or ``mass`` with ``radius_of_gyration``: C_s is
+``mass``; a ``radius_of_gyration`` alone is where its mass sits) or the flywheel (``inertia``,
+or ``mass`` with ``radius_of_gyration``: C_s is
 found); ``at`` lists crank angles (degrees) whose T and α are asked. C_s may be written as the
 books write it ("±1 %", "2 %"), or given by the greatest and least speeds (two of ``speed``,
 ``speed_max`` and ``speed_min``); a rim's ``diameter`` may stand for its radius, and its
@@ -378,6 +379,17 @@ def _flywheel(t: Tables, metre: float, rad_s: float, diagram: dict) -> dict[str,
         return v * scale
 
     out |= _speeds(t, fw, rad_s)
+    if "speed_fluctuation" in out and "radius_of_gyration" in fw and "mass" not in fw:
+        # The books' "its radius of gyration is 0.5 m" with C_s: the flywheel is found, and
+        # k is where its mass sits, m = I/k², as a rim's at its mean radius.
+        clash = [k for k in ("radius", "diameter", "rim_speed", "rim_share") if k in fw]
+        if clash:
+            raise t.fail(f"the radius of gyration places the flywheel's mass (m = I/k²): "
+                         f"leave {clash[0]} out", "flywheel", clash[0])
+        out["radius_of_gyration"] = positive("radius_of_gyration", "the radius of gyration",
+                                             metre)
+        out["radius"] = out["radius_of_gyration"]
+        fw = {k: v for k, v in fw.items() if k != "radius_of_gyration"}
     ways = [k for k in ("speed_fluctuation", "inertia", "radius_of_gyration") if k in fw]
     if "speed_fluctuation" not in fw and "speed_fluctuation" in out:
         ways.insert(0, "speed_max" if "speed_max" in fw else "speed_min")

@@ -98,6 +98,10 @@ def lines(sol) -> list[str]:
                          "{radius}, its mass m = I/r² = {mass} kg",
                          speed=numeral(ex.rim_speed, "g"), radius=_length(sol, ex.radius),
                          mass=numeral(q["rim_mass"].value["value"])))
+    elif "rim_mass" in q and ex.radius_of_gyration is not None:
+        out.append(words("a flywheel whose radius of gyration is {radius}: its mass m = I/k² "
+                         "= {mass} kg", radius=_length(sol, ex.radius),
+                         mass=numeral(q["rim_mass"].value["value"])))
     elif "rim_mass" in q and ex.rim_share != 1.0:
         out.append(words("a rim of mean radius {radius} that gives {share} of I: m = "
                          "{share}·I/r² = {mass} kg", radius=_length(sol, ex.radius),
