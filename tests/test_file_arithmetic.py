@@ -65,3 +65,9 @@ def test_a_bad_expression_is_named_at_its_line(tmp_path):
     line = next(i for i, t in enumerate(text.splitlines(), 1) if "200/x" in t)
     assert f"bad.toml:{line}:" in run.output and "'200/x'" in run.output
     assert "Traceback" not in run.output and not (tmp_path / "o").exists()
+
+
+def test_a_gear_speed_written_as_a_quotient_stays_exact(tmp_path):
+    plain = _solved(tmp_path, "train", "speed = 1000", "speed = 1000")
+    quotient = _solved(tmp_path, "train", "speed = 1000", 'speed = "3000/3"')
+    assert quotient == plain        # exact fractions through the train: the same answers

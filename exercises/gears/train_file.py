@@ -21,7 +21,7 @@ from tarsim.constructions.gears.train import Gear, GearTrain, SpeedUnits
 from tarsim.constructions.gears.twins import fold_twins
 from tarsim.constructions.narration import Phrase, phrase
 from tarsim.constructions.units import LENGTH_UNITS
-from ..file_numbers import RANGE, _float, in_range
+from ..file_numbers import RANGE, _float, arithmetic, in_range
 from ..toml_source import SourceMap, read_toml
 from ..names import named_in, read_names
 from .train_inputs import _POWERS, InputTables, _shown
@@ -194,11 +194,15 @@ class _Reader(InputTables, MeshTables, TeethTables):
         return v
 
     def exact(self, v: Any, what: str, table: str, key: str, index: int = 0) -> Fraction:
-        """A number as written: an integer, or a decimal taken at its digits."""
-        if isinstance(v, bool) or not isinstance(v, (int, float)):
+        """A number as written: an integer, a decimal taken at its digits, or arithmetic
+        of them in a string ("2/3", "1440/4") at its exact value."""
+        exact = arithmetic(v) if isinstance(v, str) else None
+        if exact is None and (isinstance(v, bool) or not isinstance(v, (int, float))):
             raise self.fail(f"{what} must be a number, got {_shown(v)}", table, key, index)
-        if not in_range(_float(v)):
+        if not in_range(_float(exact if exact is not None else v)):
             raise self.fail(f"{what} must be {RANGE}, got {_shown(v)}", table, key, index)
+        if exact is not None:
+            return exact
         return Fraction(repr(v)) if isinstance(v, float) else Fraction(v)
 
     def gears(self, units: SpeedUnits) -> tuple[Gear, ...]:
