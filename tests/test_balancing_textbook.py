@@ -483,6 +483,29 @@ def test_a_60_degree_v_has_its_greatest_primary_on_the_centre_line_and_a_constan
     assert q["primary_max_at"]["value"] == 0.0
     assert q["secondary_max"]["value"] == pytest.approx(math.sqrt(3) / 2 * f / 4, rel=1e-12)
     assert q["secondary_max"]["constant"] is True
+    assert q["secondary_min"]["value"] == pytest.approx(math.sqrt(3) / 2 * f / 4, rel=1e-12)
+    assert q["secondary_min"]["constant"] is True and "secondary_min_at" not in q
+
+
+def test_b3_vtwin60():
+    """The books' 60° V-twin, 1.5 kg a cylinder, stroke 100 mm, rod 250 mm, 2500 rpm, asked
+    its greatest and least primary and secondary forces and where they come: the primary's
+    tip runs round an ellipse of semi-axes 2F·cos²30° = 1.5F (along, θ = 0°) and
+    2F·sin²30° = 0.5F (across, θ = 90°), F = m·ω²·r; the secondary (√3/2)·F/n at every
+    angle. 1e-12: a few roundings of two products."""
+    text = ('[units]\nlength = "mm"\nspeed = "rpm"\n[engine]\nspeed = 2500\nstroke = 100\n'
+            "rod = 250\nreciprocating = 1.5\nvee = 60\nat = 0\n")
+    s = solve_balance(parse_balance(text, "b3.toml"))
+    assert s.passed, s.failures
+    q = s.results["quantities"]
+    f = 1.5 * 0.05 * (2500 * math.pi / 30) ** 2
+    assert q["primary_max"]["value"] == pytest.approx(1.5 * f, rel=1e-12)
+    assert q["primary_max_at"]["value"] == 0.0
+    assert q["primary_min"]["value"] == pytest.approx(0.5 * f, rel=1e-12)
+    assert q["primary_min_at"]["value"] == 90.0
+    assert q["primary_min_at"]["every_deg"] == 180.0
+    assert q["secondary_min"]["value"] == pytest.approx(math.sqrt(3) / 2 * f / 5, rel=1e-12)
+    assert "the least primary resultant" in "\n".join(s.lines())
 
 
 @settings(max_examples=40, deadline=None)
@@ -502,6 +525,15 @@ def test_a_v_engines_greatest_is_no_less_than_any_angle_gives(vee, at):
         most = q[f"{name}_max"]["value"]
         assert top <= most * (1 + 1e-12)
         assert top >= most * (1 - 4 * (1 - math.cos(math.radians(0.5))))
+        # the least likewise, from below: none under it (to the rounding of the sums, at
+        # the size of the greatest), one within the sampling's reach of the greatest
+        bottom = min(v[k] for v in sampled)
+        least = q[f"{name}_min"]["value"]
+        assert bottom >= least - 1e-12 * most
+        assert bottom <= least + most * 4 * (1 - math.cos(math.radians(0.5)))
+        if f"{name}_min_at" in q:
+            assert vee_resultants(e, math.radians(q[f"{name}_min_at"]["value"]))[k] == \
+                pytest.approx(least, abs=1e-12 * most)
 
 
 @pytest.mark.parametrize("old, new, words", [

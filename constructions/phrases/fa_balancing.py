@@ -97,6 +97,8 @@ WORDS: dict[str, str] = {
         "برآیند {kind} در هر زاویهٔ لنگ {size} N است",
     "the greatest {kind} resultant: {size} N, first at θ = {angle}°":
         "بیشترین برآیند {kind}: {size} N، نخست در θ = {angle}°",
+    "the least {kind} resultant: {size} N, first at θ = {angle}°":
+        "کمترین برآیند {kind}: {size} N، نخست در θ = {angle}°",
     "with crank 1 at {angle}° from the i.d.c., along the line of stroke: {values}":
         "با لنگ ۱ در {angle}° از نقطهٔ مرگ داخلی، در امتداد خط کورس: {values}",
     "out of balance: the {which} {size} {unit} at {angle}° ({product} {units} × ω², ω = "
