@@ -443,7 +443,8 @@ class Effort(Ask):
     which that inertia grows to the rest of the piston's load (rad/s), the crank effort
     (the rod's push on the crank pin square to the crank, + CCW), the turning moment it
     gives (N·m, CCW +), the thrust on the shaft's bearings (the push along the crank, + toward the
-    shaft) and the rod's correction couple (N·m: :mod:`~.forces.equivalent`)."""
+    shaft), the rod's correction couple (N·m: :mod:`~.forces.equivalent`) and the flywheel's
+    angular acceleration (T − T_mean)/I (rad/s², + speeding up)."""
 
     word: str
     order: ClassVar[int] = 9
@@ -451,13 +452,16 @@ class Effort(Ask):
     @property
     def name(self) -> str:
         """``piston_effort``, ``wall_thrust``, ``inertia_force``, ``reversal_speed``,
-        ``crank_effort``, ``turning_moment``, ``bearing_thrust`` or ``correction_couple``."""
+        ``crank_effort``, ``turning_moment``, ``bearing_thrust``, ``correction_couple`` or
+        ``flywheel_alpha``."""
         return self.word
 
 
 EFFORTS = ("piston_effort", "wall_thrust", "inertia_force", "reversal_speed", "crank_effort",
-           "turning_moment", "bearing_thrust", "correction_couple")
-"""The efforts an exercise may ask: the first four and the last of a slider-crank only."""
+           "turning_moment", "bearing_thrust", "correction_couple", "flywheel_alpha")
+"""The efforts an exercise may ask: the first four and correction_couple of a slider-crank
+only; flywheel_alpha, the flywheel's α (rad/s²) against a mean resisting torque, where
+[forces] gives the flywheel and the engine's power or that torque."""
 
 MOMENTS = ("turning_moment", "correction_couple")
 """The efforts that are moments (N·m); reversal_speed is a speed (rad/s), the rest forces

@@ -92,6 +92,20 @@ class Mass:
     assumed: str = ""
     centre_name: str = ""
     """How the file named the centre: a point ("A"), "mid" or ""."""
+    swing: tuple[float, float, str] | None = None
+    """A pendulum test the inertia comes from: its period (s), the distance h (m) from the
+    point of suspension to G, and that point as the file names it."""
+
+
+def pendulum_radius(period: float, h: float, g: float = GRAVITY) -> float:
+    """The radius of gyration about G (m) of a body that swings as a compound pendulum with
+    ``period`` (s) hung ``h`` (m) from G: T = 2π·√((k² + h²)/(g·h)), so k = √(g·h·T²/(4π²)
+    − h²); 0 where the period is too short for a body hung there.
+
+    >>> round(pendulum_radius(22 / 8, 1.2), 9)           # the books' rod, h = 2 − 0.8 m
+    0.902800416
+    """
+    return math.sqrt(max(g * h * period ** 2 / (4 * math.pi ** 2) - h * h, 0.0))
 
 
 @dataclass(frozen=True)
@@ -132,6 +146,9 @@ class Loads:
     """The coefficient C_s a flywheel is to hold the speed within, if given."""
     flywheel: float | None = None
     """A flywheel's inertia (kg·m²) whose C_s is asked, if given."""
+    resisting: float | None = None
+    """The mean resisting torque (N·m) the engine works against, given or its power over ω:
+    with ``flywheel``, the flywheel's α at the position is (T − T_mean)/I."""
     friction: float = 0.0
     """μ at every sliding pair: a slide's push leans φ = atan μ off the normal to its guide,
     against the sliding (0: frictionless)."""

@@ -213,6 +213,8 @@ class Work:
                           + [load_scale(m, self.kinematics, self.loads, size)])
             moment = (isinstance(ask, A.DrivingTorque) or getattr(ask, "letter", "") == "T"
                       or getattr(ask, "word", "") in A.MOMENTS)
+            if getattr(ask, "word", "") == "flywheel_alpha":     # a moment over the flywheel
+                return max(biggest * size, self.loads.resisting) / self.loads.flywheel
             return biggest * (mechanism_size(self.kinematics) if moment else 1.0)
         return 1.0
 

@@ -116,7 +116,7 @@ def test_a_piston_needs_no_inertia(tmp_path):
     ({"bore = 100": "bore = -100"}, "bore", "the bore is the piston's diameter"),
     ({'point = "P"\npressure': 'point = [0, 0]\npressure'}, "pressure", "frame guide"),
     ({"radius_of_gyration = 110    # I = m·k²": "radius_of_gyration = 110\ninertia = 1"},
-     "radius_of_gyration", "not both"),
+     "radius_of_gyration", "given twice"),
     ({"radius_of_gyration = 110    # I = m·k²": "radius_of_gyration = 0"},
      "radius_of_gyration", "positive"),
 ])

@@ -60,7 +60,8 @@ def forces_askable(mech: Mechanism) -> set[str]:
         group = group_of(mech)
     except TarsimError:
         return set()
-    out = force_names(mech) | {"crank_effort", "turning_moment", "bearing_thrust"}
+    out = force_names(mech) | {"crank_effort", "turning_moment", "bearing_thrust",
+                               "flywheel_alpha"}
     if isinstance(group, Dyad) and group.guide is not None:
         out |= {"piston_effort", "wall_thrust", "inertia_force", "reversal_speed"}
         if rod_of(mech) is not None:
@@ -90,6 +91,7 @@ def answer(work, ask) -> Answer:
     """
     forces = drawn_forces(work)
     c = work.assembly
+    read_as = ask               # whose rounding the answer carries
     if isinstance(ask, A.DrivingTorque):
         value = {"value": forces.torque}
     elif isinstance(ask, A.Effort) and ask.word == "correction_couple":
@@ -100,6 +102,13 @@ def answer(work, ask) -> Answer:
     elif isinstance(ask, A.Effort) and ask.word == "reversal_speed":
         value = {"value": reversal_speed(work.mechanism, forces.efforts["piston_effort"],
                                          forces.efforts["inertia_force"])}
+    elif isinstance(ask, A.Effort) and ask.word == "flywheel_alpha":
+        if "flywheel_alpha" not in forces.efforts:
+            raise TarsimError("flywheel_alpha is (T − T_mean)/I: give [forces] flywheel = 136.8 "
+                              "(kg·m²) and the engine's power = 22000 (W) or its mean_torque "
+                              "(N·m)")
+        value = {"value": forces.efforts[ask.word]}
+        read_as = A.Effort("turning_moment")    # T's rounding over a given I and T_mean
     elif isinstance(ask, A.Effort):
         value = {"value": forces.efforts[ask.word]}
     elif ask.letter == "T":
@@ -110,6 +119,6 @@ def answer(work, ask) -> Answer:
     if work.has("acceleration polygon"):
         cond *= drawn_acceleration_polygon(work).worst()
     cond = min(cond / _amplification(forces, work.assembly.size),
-               read_conditioning(work, forces, ask))
+               read_conditioning(work, forces, read_as))
     return Answer(ask, value, cond, "force polygons", refs=forces.every,
                   figures=(LOADS, FORCES, BODIES), panel=Panel.FORCE)

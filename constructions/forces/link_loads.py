@@ -16,7 +16,7 @@ from .. import geometry as g
 from ..linkages.acceleration_polygon import drawn_acceleration_polygon
 from ..checks import quiet
 from ..errors import TarsimError
-from ..loads import Loads, near_rest, near_rest_refusal
+from ..loads import Loads, near_rest, near_rest_refusal, pendulum_radius
 from ..narration import Word, phrase
 from ..record import Construction, Kind, Panel
 from ..linkages.velocity_polygon import drawn_velocity_polygon
@@ -79,6 +79,8 @@ def inertia_loads(work, loads: Loads, at) -> dict[int, tuple[Vec, float]]:
         alpha = mech.drive.alpha if m.link == mech.drive.link else ap.rates.get(m.link, 0.0)
         ref = image_base(mech, ap.tips, m.link)
         k_tip = ap.tips[ref] if ref in ap.tips else ap.pole
+        if m.swing is not None:
+            _say_pendulum(c, m, c.points[ref])
         r = (g_at[0] - at[ref][0], g_at[1] - at[ref][1])
         size = math.hypot(*r)
         if size == 0.0:
@@ -113,6 +115,17 @@ def inertia_loads(work, loads: Loads, at) -> dict[int, tuple[Vec, float]]:
         a_g = ap.between(ap.pole, image)
         out[m.link] = ((-m.mass * a_g[0], -m.mass * a_g[1]), -m.inertia * alpha)
     return out
+
+
+def _say_pendulum(c, m, at) -> None:
+    """The step that finds a link's inertia from its pendulum test: hung h from G it swings
+    as a compound pendulum, T = 2π·√((k² + h²)/(g·h)), so k² = g·h·T²/(4π²) − h²."""
+    period, h, about = m.swing
+    k = pendulum_radius(period, h)
+    c.draw(f"force:say:pendulum{m.link}", "mark", at, phrase=phrase(
+        "force.pendulum", link=m.link, about=about, period=as_said(period, "s", ".6g"),
+        h=as_said(h * 1e3, "mm", ".6g"), k=as_said(k * 1e3, "mm", ".6g"),
+        inertia=as_said(m.inertia, "kg·m²", ".6g")))
 
 
 def _offset(m, alpha: float, normal: Vec, tangential: Vec):

@@ -29,7 +29,7 @@ from ..narration import Quantity, phrase
 from ..record import Construction, Panel
 from ..scales import nice
 from .crank import crank_polygon
-from .drafting import Drafter
+from .drafting import Drafter, as_said
 from .dyad import dyad_polygon
 from .groups import Dyad, Lever, group_of, lever_span
 from .lever import lever_polygons
@@ -85,7 +85,25 @@ def draw_forces(work) -> Forces:
         size=size, driver=mech.drive.link)
     out = _analyse(c, mech, group, at, known, scale, slip)
     out.inertia, out.loads, out.rounding = inertia, known, rounding
+    if loads.flywheel is not None and loads.resisting is not None:
+        _flywheel_alpha(c, mech, loads, out)
     return out
+
+
+def _flywheel_alpha(c, mech: Mechanism, loads: Loads, out: Forces) -> None:
+    """The flywheel's angular acceleration here, the turning moment along the rotation less
+    the mean resisting torque, over its I: α = (T − T_mean)/I, + where the shaft speeds up."""
+    along = out.efforts["turning_moment"] * (-1.0 if mech.drive.omega < 0 else 1.0)
+    alpha = (along - loads.resisting) / loads.flywheel
+    out.efforts["flywheel_alpha"] = alpha
+    said = c.draw("force:say:flywheel", "mark", out.refs["turning_moment"][0],
+                  panel=Panel.FORCE, phrase=phrase(
+                      "force.flywheel", inertia=as_said(loads.flywheel, "kg·m²", ".6g"),
+                      mean=as_said(loads.resisting, "N·m", ".6g"),
+                      torque=as_said(along, "N·m", ".6g"),
+                      alpha=as_said(alpha, "rad/s²", ".6g")))
+    out.refs["flywheel_alpha"] = (*out.refs["turning_moment"], said)
+    out.every = (*out.every, said)
 
 
 def _analyse(c, mech: Mechanism, group, at, known, scale: float, slip) -> Forces:

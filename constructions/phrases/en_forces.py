@@ -6,6 +6,14 @@ from __future__ import annotations
 __all__ = ["PHRASES"]
 
 PHRASES: dict[str, str] = {
+    "force.pendulum": "Link {link}, hung from {about} (h = {h} from G{link} to it), swings "
+                      "as a compound pendulum in T = {period}: T = 2π·√((k² + h²)/(g·h)), so "
+                      "its radius of gyration about G{link} is k = √(g·h·T²/(4π²) − h²) = {k} "
+                      "and I = m·k² = {inertia}.",
+    "force.flywheel": "The flywheel, I = {inertia}, against the mean resisting torque "
+                      "T_mean = {mean}: its angular acceleration α = (T − T_mean)/I = "
+                      "{alpha}, T = {torque} the turning moment along the rotation (+ the "
+                      "shaft speeding up).",
     "force.centre": "Mark link {link}'s centre of mass G{link} and join it to {k}.",
     "force.image": "On the acceleration polygon, from {start} lay off the normal part "
                    "ω²·{k}G{link} = {n} toward {k}, then the tangential part α·{k}G{link} = "

@@ -37,6 +37,9 @@ def efforts(mech: Mechanism, kin: Kinematics, loads: Loads, statics: Statics
     # the push along the crank, toward the shaft: the thrust on its bearings
     out = {"crank_effort": effort, "turning_moment": effort * r,
            "bearing_thrust": push[1] * t[0] - push[0] * t[1]}
+    if loads.flywheel is not None and loads.resisting is not None:
+        along = effort * r * (-1.0 if kin.omegas[d] < 0 else 1.0)
+        out["flywheel_alpha"] = (along - loads.resisting) / loads.flywheel
     guide = [s for s in mech.slides if s.guide_link == 1 and s.type.turns_with_guide]
     if len(guide) == 1:
         s = guide[0]

@@ -5,11 +5,14 @@ Masses are in kg, inertias in kg·m², forces in N and couples in N·m (CCW +); 
 lengths in the file's length unit. A mass's centre is a point of its link ("A"), "mid"
 (halfway between the link's first two points) or [x, y] in the link's own frame (its
 first point the origin, +x toward its second point or along its slot); its inertia about
-that centre is given, or as a radius of gyration k (I = m·k²), or defaults to a slender
+that centre is given, or as a radius of gyration k (I = m·k²), or by a pendulum test
+(``oscillations``, :mod:`.pendulum`), or defaults to a slender
 rod's, (1/12)·m·L², said to be assumed; a link that slides on the frame without turning (a
 piston, a ram) needs none, for its inertia couple I·α is 0. A gas force may be given as the
 books give it, a pressure on the piston's bore (or area): p·A along the line of stroke
-toward the crank. Every failure is one line naming file:line.
+toward the crank. ``[forces]`` may give the engine's ``power`` (W) or ``mean_torque`` (N·m)
+with its ``flywheel`` (kg·m², or ``{ mass, radius_of_gyration }``): the flywheel's α at the
+position is then (T − T_mean)/I. Every failure is one line naming file:line.
 """
 
 from __future__ import annotations
@@ -23,6 +26,7 @@ from tarsim.constructions.units import LENGTH_UNITS
 from ..file_numbers import file_number
 from ..table_file import Tables
 from ..toml_source import SourceMap
+from .pendulum import pendulum_inertia
 
 __all__ = ["LOAD_TABLES", "read_loads"]
 
@@ -30,8 +34,9 @@ LOAD_TABLES = ("forces", "mass", "force", "couple")
 """The top-level tables this module reads; the mechanism reader leaves them alone."""
 
 _KEYS = {"forces": ("gravity", "driver", "speed_fluctuation", "flywheel", "friction",
-                    "friction_circle"),
-         "mass": ("link", "mass", "centre", "inertia", "length", "radius_of_gyration"),
+                    "friction_circle", "power", "mean_torque"),
+         "mass": ("link", "mass", "centre", "inertia", "length", "radius_of_gyration",
+                  "oscillations"),
          "force": ("link", "point", "force", "resist", "stroke", "name", "pressure", "bore",
                    "area", "rod"),
          "couple": ("link", "moment", "name")}
@@ -72,15 +77,25 @@ def read_loads(data: dict[str, Any], mech: Mechanism, where: SourceMap,
         raise fail(f"the driver must be the input link ({mech.drive.link}), whose motion is "
                    f"given; got {driver!r}", "forces", "driver")
     wheel = {}
+    if isinstance(settings.get("flywheel"), dict):
+        wheel["flywheel"] = _flywheel_of(settings["flywheel"], metre, tables)
     for key, what in (("speed_fluctuation", "a coefficient of speed fluctuation"),
                       ("flywheel", "a flywheel's inertia (kg·m²)")):
-        if key in settings:
+        if key in settings and key not in wheel:
             wheel[key] = number(settings, key, "forces", what, 0)
             if not wheel[key] > 0:
                 raise fail(f"{what} must be positive, got {wheel[key]:g}", "forces", key)
     if len(wheel) > 1:
         raise fail("give speed_fluctuation (the flywheel is found) or flywheel (its C_s is "
                    "found), not both", "forces", "flywheel")
+    resisting = _resisting(settings, mech, tables)
+    if resisting is not None:
+        if "flywheel" not in wheel:
+            key = "power" if "power" in settings else "mean_torque"
+            raise fail(f"{key} gives the flywheel's acceleration (T − T_mean)/I: give its "
+                       "flywheel = 136.8 (kg·m²) or { mass = 380, radius_of_gyration = 600 }",
+                       "forces", key)
+        wheel["resisting"] = resisting
     if wheel and not mech.drive.omega:
         key = next(iter(wheel))
         raise fail(f"a flywheel holds a speed, but link {mech.drive.link}'s ω is 0 in [input]: "
@@ -118,10 +133,17 @@ def read_loads(data: dict[str, Any], mech: Mechanism, where: SourceMap,
             raise fail(f"link {n}'s mass must be positive, got {m:g} kg", "mass", "mass", i)
         centre, named = _centre(t.get("centre", "mid"), k, metre,
                                 lambda msg, i=i: fail(msg, "mass", "centre", i))
-        if "inertia" in t and "radius_of_gyration" in t:
-            raise fail(f"link {n}'s inertia is given twice: give inertia (kg·m²) or "
-                       "radius_of_gyration (I = m·k²), not both", "mass", "radius_of_gyration", i)
-        if "radius_of_gyration" in t:
+        given = [key for key in ("inertia", "radius_of_gyration", "oscillations") if key in t]
+        if len(given) > 1:
+            raise fail(f"link {n}'s inertia is given twice: give inertia (kg·m²), "
+                       "radius_of_gyration (I = m·k²) or oscillations, one of them", "mass",
+                       given[1], i)
+        swing = None
+        if "oscillations" in t:
+            inertia, assumed, swing = pendulum_inertia(t["oscillations"], k, m, centre, metre,
+                                                lambda msg, i=i: fail(msg, "mass",
+                                                                      "oscillations", i))
+        elif "radius_of_gyration" in t:
             k_g = number(t, "radius_of_gyration", "mass", "a radius of gyration", i) * metre
             if not k_g > 0:
                 raise fail(f"link {n}'s radius of gyration must be positive, got "
@@ -150,7 +172,7 @@ def read_loads(data: dict[str, Any], mech: Mechanism, where: SourceMap,
                 raise fail("a slender rod's length must be positive", "mass", "length", i)
             inertia = m * length ** 2 / 12
             assumed = f"slender rod (1/12)·m·L², L = {length / metre:g} {mech.units.length}"
-        masses.append(Mass(n, m, centre, inertia, assumed, named))
+        masses.append(Mass(n, m, centre, inertia, assumed, named, swing))
     forces = []
     for i, t in enumerate(entries("force")):
         n = link(t, "force", i)
@@ -320,6 +342,43 @@ def _translates(mech: Mechanism, link: int) -> bool:
 INERTIAS = (1e-15, 1e6)
 """The moments of inertia (kg·m²) a file may give: a link a few millimetres long has some
 1e-9, so the range runs well below a length's or a mass's."""
+
+
+def _flywheel_of(raw: dict, metre: float, tables: Tables) -> float:
+    """A flywheel's I (kg·m²) given as the books give it, { mass = 380, radius_of_gyration =
+    600 } (k in the file's length unit): m·k²."""
+    if set(raw) != {"mass", "radius_of_gyration"}:
+        raise tables.fail("flywheel is its inertia (kg·m²) or { mass = 380, "
+                          "radius_of_gyration = 600 }, k in the file's length unit, I = m·k²",
+                          "forces", "flywheel")
+    m = tables.number(raw, "mass", "forces", "the flywheel's mass")
+    k = tables.number(raw, "radius_of_gyration", "forces", "its radius of gyration") * metre
+    if not (m > 0 and k > 0):
+        raise tables.fail(f"the flywheel's mass and radius of gyration must be positive, got "
+                          f"{m:g} and {k / metre:g}", "forces", "flywheel")
+    return m * k * k
+
+
+def _resisting(settings: dict, mech: Mechanism, tables: Tables) -> float | None:
+    """The mean resisting torque (N·m) [forces] gives, as ``mean_torque`` or the engine's
+    ``power`` (W) at the input's speed, P/|ω|; None where it gives neither."""
+    given = [k for k in ("power", "mean_torque") if k in settings]
+    if not given:
+        return None
+    if len(given) > 1:
+        raise tables.fail("give the engine's power (W) or the mean resisting torque (N·m), "
+                          "not both: T_mean = P/ω", "forces", "mean_torque")
+    key = given[0]
+    v = tables.number(settings, key, "forces", "the engine's power (W)" if key == "power"
+                      else "the mean resisting torque (N·m)")
+    if not v > 0:
+        raise tables.fail(f"{key} must be positive, got {v:g}", "forces", key)
+    if key == "mean_torque":
+        return v
+    if not mech.drive.omega:
+        raise tables.fail(f"the power gives the mean torque P/ω, but link {mech.drive.link}'s "
+                          "ω is 0 in [input]: give its speed", "forces", "power")
+    return v / abs(mech.drive.omega)
 
 
 def _inertia(t: dict, i: int, link: int, fail) -> float:

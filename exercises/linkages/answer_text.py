@@ -113,7 +113,8 @@ def show(v: dict, units, name: str = "", figures: int = 6) -> str:
         w = v["value"]                                  # a couple or the driving torque
         return f"{_num(w, spec)} N·m{_sense(w)}"
     if name in EFFORTS:                                 # an engine's effort, signed
-        unit = "N·m" if name in MOMENTS else "rad/s" if name == "reversal_speed" else "N"
+        unit = "N·m" if name in MOMENTS else "rad/s" if name == "reversal_speed" else \
+            "rad/s²" if name == "flywheel_alpha" else "N"
         return f"{_num(v['value'], spec)} {unit}"
     if "vector" in v:
         per = "/s²" if name.startswith("A") else "/s"     # A_B, A_cor_B, An_B/A, A_slide_B
