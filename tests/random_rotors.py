@@ -372,9 +372,20 @@ def _rad(degrees: float) -> float:
 
 
 def _read(text: str) -> tuple[dict[str, Any], float, float]:
+    """The file's tables, a number written as a string ("12", which tarsim reads as its
+    value) taken as the number, with its length and speed units' sizes."""
     data = tomllib.loads(text)
+    for table in ("rotor", "engine", "mass", "balance", "cylinder"):
+        rows = data.get(table, [])
+        for row in [rows] if isinstance(rows, dict) else rows:
+            for k, v in row.items():
+                if k != "name" and isinstance(v, str) and _NUMBER.fullmatch(v.strip()):
+                    row[k] = float(v)
     units = data.get("units", {})
     return data, _METRE[units.get("length", "m")], _RATE[units.get("speed", "rad/s")]
+
+
+_NUMBER = re.compile(r"[-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?")
 
 
 def oracle(solution, text: str) -> list[str]:
