@@ -194,3 +194,57 @@ def test_no_speed_reverses_a_load_its_inertia_adds_to():
         _answers(_text(120).replace('find = ["T2", ', 'find = ["reversal_speed", "T2", '))
     assert "θ2 = 120°" in str(e.value) and "no speed reverses" in str(e.value)
     assert "\n" not in str(e.value)
+
+
+def _engine(slider: str, assembly: str, crank: str) -> str:
+    """The bundled horizontal engine with its line of stroke, its piston's side and its
+    [input] crank angle changed."""
+    return _text(**{"angle = 0\n[input]": f"{slider}\n[input]",
+                    'P = "forward"': f"P = {assembly}",
+                    "angle = 20                  # past the inner dead centre (the crank toward "
+                    "the piston)\nomega = 188.49555921538757": crank})
+
+
+@pytest.mark.parametrize("slider, assembly, crank, degrees", [
+    # the books' vertical engines: the piston above, the crank 40° past the t.d.c. (90°)
+    ("angle = 90", '"forward"', 'angle = 40\nfrom = "t.d.c."\nomega = -300', 90 - 40),
+    ("angle = 90", '"forward"', 'angle = 40\nfrom = "top dead centre"\nomega = 300', 90 + 40),
+    ("angle = 90", '"forward"', 'angle = 20\nfrom = "b.d.c."\nomega = -300', 270 - 20),
+    # a horizontal engine whose piston lies to the left of the shaft (−x): the i.d.c. is 180°
+    ("angle = 0", '"backward"', 'angle = 30\nfrom = "i.d.c."\nomega = 300', 180 + 30),
+    ("angle = 0", "[-300, 0]", 'angle = 30\nfrom = "idc"\nomega = 300', 180 + 30),
+    # the line given pointing down at a piston above: the piston's side, not the line's sense
+    ("angle = -90", '"backward"', 'angle = 40\nfrom = "t.d.c."\nomega = -300', 90 - 40),
+])
+def test_a_crank_angle_from_a_dead_centre(slider, assembly, crank, degrees):
+    """The books' crank angle "θ from the t.d.c. (i.d.c.)", turned the way ω turns from the
+    crank lying along the line of stroke toward the piston, is θ2 from +x; and the piston's
+    speed there is the in-line slider-crank's ω·r·|sin θ + r sin 2θ/(2S)|, θ from the
+    dead centre (S = √(l² − r² sin²θ))."""
+    ex = parse_exercise(_engine(slider, assembly, crank), "engine.toml")
+    angle = math.degrees(ex.mechanism.drive.angle) % 360
+    assert angle == pytest.approx(degrees, abs=1e-12)     # the data's degrees, rounded once
+    theta = math.radians(float(crank.split("\n")[0].split("=")[1]))
+    if "b.d.c." in crank:
+        theta += math.pi
+    s = math.sqrt(L * L - (R * math.sin(theta)) ** 2)
+    speed = 300 * (R * math.sin(theta) + R * R * math.sin(2 * theta) / (2 * s))   # rad/s
+    worked = tarsim.solve(parse_exercise(_engine(slider, assembly, crank).replace(
+        'find = ["T2", ', 'find = ["V_P", "T2", '), "engine.toml"))
+    (sol,) = worked.positions
+    # a velocity polygon's rounding, some 1e-15 of the crank pin's speed
+    assert sol.quantities["V_P"].value["value"] == pytest.approx(abs(speed), rel=1e-12)
+
+
+@pytest.mark.parametrize("slider, crank, words", [
+    ('angle = 90\nthrough = "O"', 'angle = 40\nfrom = "top"\nomega = 300',
+     "names the dead centre"),
+    ("angle = 90\nthrough = [10, 0]", 'angle = 40\nfrom = "t.d.c."\nomega = 300',
+     "passes 10 mm from the crank's pivot O"),
+])
+def test_a_bad_dead_centre_is_refused_at_its_line(slider, crank, words):
+    with pytest.raises(InputError) as e:
+        parse_exercise(_engine(slider, '"forward"', crank).replace('through = "O"\n', "", 1),
+                       "engine.toml")
+    assert str(e.value).startswith("engine.toml:") and words in str(e.value), str(e.value)
+    assert "\n" not in str(e.value)

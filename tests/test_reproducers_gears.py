@@ -138,3 +138,19 @@ def test_inf_gear_kutzbach_sun_at_rest(tmp_path):
     # the check can fail: ω3 read a billionth of the fastest off, far past the rounding
     k.omegas[3] = 1e-9 * fastest
     assert s.diagram_misses == [3] and not s.passed
+
+
+def test_check3_gear_reverted_modules_least_teeth(tmp_path):
+    """A reverted train, A (20) → B (60) at module 4, C → D at module 5 with D on A's axis
+    and |ω3/ω4| = N4/N3 = 3: 4·(20 + 60)/2 = 160 mm = 5·(N3 + 3·N3)/2, so N3 = 16, N4 = 48,
+    and ω4 = 1440·(20·16)/(60·48) = 160 rpm, A's sense (two external meshes). The least
+    count 1 once took N3 = 1, N4 = 3, the coaxial condition left out (check FAILED, exit 3)."""
+    name = "check3-gear-reverted-modules-least-teeth"
+    s = tarsim.solve(tarsim.load(path(name)))
+    q = s.quantities
+    assert (q["teeth3"].exact, q["teeth4"].exact) == (16, 48)
+    assert q["teeth3"].reference == 16 and q["teeth4"].reference == 48
+    assert q["omega4"].exact == 160 and s.passed
+    result = CliRunner().invoke(cli, ["solve", path(name), "-o", str(tmp_path / "out"),
+                                      "--no-pdf"])
+    assert result.exit_code == 0, result.output

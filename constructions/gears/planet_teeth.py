@@ -20,7 +20,7 @@ from fractions import Fraction
 from ..errors import InputError
 from ..narration import Phrase, phrase
 from .tabular import fraction_text, tabulate
-from .teeth import imply_teeth, unknown_teeth
+from .teeth import coaxial_misfit, imply_teeth, unknown_teeth
 from .train import GearTrain
 
 __all__ = ["teeth_from_ratios"]
@@ -57,6 +57,13 @@ def teeth_from_ratios(train: GearTrain, ratios: list[Ratio], least: int | None
         return train, ()
     found = _fill(train, ratios)
     if found is not None:
+        done, _ = found
+        few = [g for g in unknown if least is not None and done.gear(g).teeth < least]
+        if few:
+            raise InputError(f"the speed ratios and the coaxial condition give gear {few[0]} "
+                             f"{done.gear(few[0]).teeth} teeth, fewer than least_teeth = "
+                             f"{least}: check the ratios and the teeth given, or lower it",
+                             file=train.source or None)
         return found
     if least is None:
         raise InputError(f"gears {', '.join(map(str, unknown))} have no teeth, and the speed "
@@ -96,6 +103,7 @@ def _fill(train: GearTrain, ratios: list[Ratio]
                 holds = all(abs(_ratio(train, of)) == value for of, value in ratios)
             except (InputError, ZeroDivisionError):
                 return None
+            holds = holds and coaxial_misfit(train, train.coaxial) is None
             return (train, tuple(steps)) if holds else None
         got = next((found for g in unknown for of, value in ratios
                     if (found := _one(train, of, value, g)) is not None), None)

@@ -25,7 +25,8 @@ from ..narration import Phrase, phrase
 from .tabular import carry, fraction_text
 from .train import GearTrain, Mesh
 
-__all__ = ["imply_teeth", "teeth_from_diameter", "teeth_from_ratio", "unknown_teeth"]
+__all__ = ["coaxial_misfit", "imply_teeth", "teeth_from_diameter", "teeth_from_ratio",
+           "unknown_teeth"]
 
 
 def teeth_from_diameter(diameter: Fraction, module: Fraction) -> Fraction:
@@ -161,6 +162,28 @@ def _solve(train: GearTrain, pairs: list[tuple[Mesh, int]]
                                  f"{float(teeth):g} teeth, not a whole number of one or more: "
                                  "check the teeth and modules given", file=train.source or None)
             return g, int(teeth), said
+    return None
+
+
+def coaxial_misfit(train: GearTrain, coaxial: tuple[int, int] | None) -> str | None:
+    """The first pair of meshes ``coaxial`` (an ordinary train's two gears on one axis)
+    sets equally far apart that stand at different distances with every count known, as
+    said ("4 mm·(20 + 60)/2 ≠ 5 mm·(1 + 3)/2"); None where each such pair agrees. In length
+    where every mesh of the pair gives its module, else in modules alone, and then only
+    where the two meshes share one module or none is given (pairs of unstated different
+    modules are the book's to make good)."""
+    if coaxial is None:
+        return None
+    for pairs in _coaxial_sets(train, coaxial):
+        if train.planetary or any(_teeth(train, g) is None for mesh, _ in pairs
+                                  for g in (mesh.a, mesh.b)):
+            continue
+        sized = all(_module(train, m) is not None for m, _ in pairs)
+        if not sized and any(_module(train, m) is not None for m, _ in pairs):
+            continue
+        (a1, _), (a2, _) = (_linear(train, m, c, 0, sized) for m, c in pairs)
+        if a1 != a2:
+            return " ≠ ".join(_said(train, m, c, sized) for m, c in pairs)
     return None
 
 

@@ -138,7 +138,9 @@ class _Reader(InputTables, MeshTables, TeethTables):
 
     def placed(self, error: InputError) -> InputError:
         """A check of the whole train, led by the line of the first gear it names (or of
-        the arm, or the input)."""
+        the arm, or the input); one the reader placed at its own key keeps its line."""
+        if error.line is not None:
+            return error
         gears = [g.get("number") if isinstance(g, dict) else None
                  for g in self.data.get("gear") or []]
         m = re.search(r"\bgears? (\d+)", error.message)

@@ -11,7 +11,8 @@ from typing import Any
 
 from tarsim.constructions.errors import InputError
 from tarsim.constructions.gears.planet_teeth import teeth_from_ratios
-from tarsim.constructions.gears.teeth import imply_teeth, teeth_from_ratio, unknown_teeth
+from tarsim.constructions.gears.teeth import (coaxial_misfit, imply_teeth, teeth_from_ratio,
+                                               unknown_teeth)
 from tarsim.constructions.gears.train import GearTrain
 
 __all__ = ["TeethTables"]
@@ -33,11 +34,18 @@ class TeethTables:
         if "ratio" in self.data:
             ratios, least = self.speed_ratios(train)
             train = replace(train, ratio_given=tuple((*of, value) for of, value in ratios))
-            if train.planetary or len(ratios) > 1 or any(m.distance for m in train.meshes):
+            # the coaxial condition or a distance ties counts together: the table's way
+            if (train.planetary or len(ratios) > 1 or train.coaxial
+                    or any(m.distance for m in train.meshes)):
                 train, more = teeth_from_ratios(train, ratios, least)
             else:
                 train, more = teeth_from_ratio(train, *ratios[0], least)
             steps = (*steps, *more)
+        misfit = coaxial_misfit(train, train.coaxial)
+        if misfit is not None:
+            raise self.fail(f"gears {train.coaxial[0]} and {train.coaxial[1]} are not on one "
+                            f"axis: their pairs stand {misfit} apart; check the teeth and "
+                            "modules, or leave coaxial out", key="coaxial")
         for g in unknown_teeth(train):
             raise InputError(f"gear {g} needs its teeth: give teeth = …, or its diameter with "
                              "its module, or mesh it where the coaxial condition gives them",

@@ -3,7 +3,10 @@
 ``[input]`` names the input link and its angle, and gives its motion as that link's ω
 and α, or as another member's: a point's speed along a frame guide, the speed of a
 point of the input link itself (ω·r about its pivot, in the sense given), or another link's
-ω (:class:`~tarsim.constructions.model.GivenRate`).
+ω (:class:`~tarsim.constructions.model.GivenRate`). An engine's crank angle may be given as
+the books give it, from a dead centre (``from = "t.d.c."``): turned that far, in the sense
+ω turns, from the crank lying along the line of stroke toward the piston (or away from it,
+the outer or bottom dead centre).
 """
 
 from __future__ import annotations
@@ -11,6 +14,7 @@ from __future__ import annotations
 import math
 
 from tarsim.constructions.model import Drive, GivenRate
+from ..file_numbers import radians_in_turn
 from .mechanism_values import TableReader
 
 __all__ = ["read_input"]
@@ -22,8 +26,8 @@ def read_input(r: TableReader) -> Drive:
     t = r.table("input", True)
     where = {"table": "input"}
     for k in t:
-        if k not in ("link", "angle", "omega", "alpha", "speed"):
-            raise r.unknown(k, ("link", "angle", "omega", "alpha", "speed"),
+        if k not in ("link", "angle", "omega", "alpha", "speed", "from"):
+            raise r.unknown(k, ("link", "angle", "omega", "alpha", "speed", "from"),
                             "input setting", key=k, **where)
     if "link" not in t:
         raise r.fail("must name the input link, e.g. link = 2", **where)
@@ -33,6 +37,9 @@ def read_input(r: TableReader) -> Drive:
     if "angle" not in t:
         raise r.fail(f"[input] needs the angle of link {link}", **where)
     angle = r.angle(t["angle"], "angle", key="angle", **where)
+    if "from" in t:
+        turned = r.number(t["angle"], "angle", bounded=False, key="angle", **where)
+        angle = _from_dead_centre(r, t, link, turned, where)
     r.given = _read_given(r, t, link, where)
     if r.given is not None:
         # The input's own rates follow from the member given; 1 rad/s stands in for now.
@@ -109,3 +116,55 @@ def _about_pivot(r: TableReader, link: int, point: str, where: dict) -> None:
     if point in pivots:
         raise r.fail(f"{point} is link {link}'s frame pivot, at rest: give the speed of "
                      f"another of its points", key="speed", **where)
+
+
+DEAD_CENTRES = {**dict.fromkeys(("t.d.c.", "tdc", "i.d.c.", "idc", "top dead centre",
+                                 "inner dead centre", "dead centre"), 0.0),
+                **dict.fromkeys(("b.d.c.", "bdc", "o.d.c.", "odc", "bottom dead centre",
+                                 "outer dead centre"), math.pi)}
+"""The dead centres a crank angle may be given from: the crank along the line of stroke
+toward the piston (the top or inner), or away from it (the bottom or outer)."""
+
+
+def _from_dead_centre(r: TableReader, t: dict, link: int, turned: float, where: dict) -> float:
+    """The crank's angle from +x (rad), for ``turned`` (in [units] angle) from the dead
+    centre ``t["from"]`` in the sense ω turns (counter-clockwise unless ω is a negative
+    number): the line of stroke is the one slider's on the frame, through the crank's
+    pivot, toward the piston as [assembly] places it ("forward" along the slider's angle,
+    "backward" against it)."""
+    said = t["from"]
+    if not isinstance(said, str) or said.strip().lower() not in DEAD_CENTRES:
+        raise r.fail(f"from names the dead centre the angle is turned from, \"t.d.c.\" (or "
+                     f"\"i.d.c.\", the crank toward the piston) or \"b.d.c.\" (\"o.d.c.\"); "
+                     f"got {said!r:.40}", key="from", **where)
+    guides = [s for s in r.slides if s.guide_link == 1 and s.contact is None]
+    pivots = [n for n in r.links[link].names if n in r.links[1].names]
+    if len(guides) != 1 or not pivots:
+        raise r.fail(f"an angle from a dead centre is along the line of stroke: link {link} "
+                     f"turns about a frame pivot and one slider runs on the frame; here "
+                     f"{len(guides)} do, so give the angle from +x", key="from", **where)
+    (s,), (ox, oy) = guides, r.links[1].local(pivots[0])
+    (tx, ty), (dx, dy) = s.through, s.direction
+    size = max(math.hypot(tx - ox, ty - oy), r.units.metres)
+    off = abs((ox - tx) * dy - (oy - ty) * dx)
+    if off > 1e-9 * size:
+        raise r.fail(f"the line of stroke passes {off / r.units.metres:.6g} {r.units.length} "
+                     f"from the crank's pivot {pivots[0]}: its dead centres are not along it, "
+                     f"so give the angle from +x", key="from", **where)
+    branch = (r.d.get("assembly") or {}).get(s.point, "forward")
+    if isinstance(branch, list) and len(branch) == 2:
+        near = [r.number(v, "a near point's coordinate", key="from", **where) * r.units.metres
+                for v in branch]
+        back = (near[0] - ox) * dx + (near[1] - oy) * dy < 0
+    else:
+        back = branch == "backward"
+    omega = t.get("omega", 0.0)
+    omega = omega.get("value", 0.0) if isinstance(omega, dict) else omega
+    sense = -1.0 if isinstance(omega, (int, float)) and omega < 0 else 1.0
+    # in degrees, the line's angle to the rounding of its direction, so 90° − 40° is 50°
+    toward = math.degrees(math.atan2(dy, dx))
+    toward = round(toward, 9) if abs(toward - round(toward, 9)) < 1e-12 else toward
+    toward += (180.0 if back else 0.0) + math.degrees(DEAD_CENTRES[said.strip().lower()])
+    per = 1.0 if r.units.angle == "deg" else math.pi / 180
+    return radians_in_turn(toward + sense * turned / per, "deg")
+
