@@ -216,7 +216,8 @@ def test_solve_writes_the_table_steps_and_exact_results(tmp_path):
     q = doc["quantities"]["omega5/omega2"]
     assert (q["exact"], q["reference"]["exact"], q["rel_error"]) == ("1/36", "1/36", 0.0)
     w5 = doc["quantities"]["omega5"]
-    assert w5["exact"] == "50" and w5["unit"] == "rpm" and w5["rpm"] == 50.0
+    assert w5["exact"] == "50" and w5["exact_unit"] == "rpm" and w5["rpm"] == 50.0
+    assert w5["unit"] == "rad/s"
     assert w5["value"] == pytest.approx(50 * 2 * 3.141592653589793 / 60, rel=1e-15)
     steps = (out / "steps.md").read_text(encoding="utf-8")
     assert "Row 2: hold the arm 6 and turn gear 1 (fixed ring), the fixed member, −1" in steps

@@ -395,10 +395,10 @@ class TrainSolution(ChapterFiles, QuantityParts):
                 entry["unit"], entry["flow"] = "W", q.flow
             if q.name.startswith("centre_distance"):
                 entry["unit"] = "m"
-            if speed:
-                entry["unit"] = self.train.units.speed
-                entry["rpm"] = (float(q.exact) if entry["unit"] == "rpm"
-                                else q.si * 60 / (2 * math.pi))
+            if speed:                              # the value in rad/s, exact as the file's
+                unit = self.train.units.speed
+                entry["unit"], entry["exact_unit"] = "rad/s", unit
+                entry["rpm"] = float(q.exact) if unit == "rpm" else q.si * 60 / (2 * math.pi)
             if q.name == "interference":
                 entry["gears"] = list(self.mesh.interference)
                 reference["gears"] = list(self.mesh_reference.interference)
