@@ -806,3 +806,30 @@ def test_a_rotor_needs_no_speed_where_nothing_asked_is_a_force():
     message = str(e.value)
     assert "\n" not in message and message.startswith("r.toml:") and \
         "needs speed = …" in message, message
+
+
+@pytest.mark.parametrize("between, root", [("[0, 180]", -1), ("[180, 360]", 1)])
+def test_between_on_a_mass_read_to_a_half_turn_chooses_its_crossing(between, root):
+    """The shaft with A's mass 20 kg and its angle unknown: D's m·r·l about A fixes D's line
+    (252.72°), and A's 1.6 kg·m arc about the pole, which holds the last tip inside it, cuts
+    that line either side of the tip: x² − 2x·Re(T·e^{−iθ}) + |T|² − 1.6² = 0 for D's signed
+    m·r along 252.72°, one root each sign. D's between takes the negative root (D at
+    72.72°, its plane behind A) or the positive; l_D = |m·r·l|/x. 1e-9: a line cut by an
+    arc at some 50°."""
+    text = Path(bundled("balancing")["unknown-plane-and-angle"]).read_text(encoding="utf-8")
+    text = text.replace('mass = "?"                 # found: 9.669 kg', "mass = 20").replace(
+        'angle = 190                # B to A', 'angle = "?"').replace(
+        'angle = "?"                # found: 252.72°', f'angle = "?"\nbetween = {between}')
+    s = solve_balance(parse_balance(text, "d.toml"))
+    assert s.passed, s.failures
+    q = s.results["quantities"]
+    couple = -(18 * 0.06 * 0.1 + 12.5 * 0.06 * 0.3 * _cis(100))
+    line = couple / abs(couple)
+    target = -(18 * 0.06 + 12.5 * 0.06 * _cis(100))
+    p = (target * line.conjugate()).real
+    x = p + root * math.sqrt(p * p - (abs(target) ** 2 - 1.6 ** 2))
+    assert q["mass_D"]["value"] == pytest.approx(abs(x) / 0.08, rel=1e-9)
+    assert q["angle_D"]["value"] == pytest.approx(
+        (math.degrees(math.atan2(line.imag, line.real)) + (180 if x < 0 else 0)) % 360, abs=1e-9)
+    assert q["plane_D"]["value"] == pytest.approx(abs(couple) / x, rel=1e-9)
+    assert "as its between asks" in "\n".join(s.lines())

@@ -299,7 +299,7 @@ def _close(out: Closure, which: str, z: float, known, unknown) -> None:
         arc = c.draw(f"{tag}:arc:{n2}", "swing_arc", pole, radius=abs(s2), panel=panel)
         x = _cross(out, which, tag, panel, "intersect_line_circle", (la, arc),
                    ("forward", "backward"), lambda at: _positive(out, which, z, n1, tip, at),
-                   _sides(out, which, z, ((n2, None, pole),)))
+                   _sides(out, which, z, ((n1, tip, None), (n2, None, pole))))
     else:                                       # two directions of known sizes
         a = c.draw(f"{tag}:arc:{n1}", "swing_arc", tip, radius=abs(s1), panel=panel)
         b = c.draw(f"{tag}:arc:{n2}", "swing_arc", pole, radius=abs(s2), panel=panel)
@@ -370,19 +370,23 @@ def _cross(out: Closure, which: str, tag: str, panel: Panel, verb: str, inputs,
 
 def _sides(out: Closure, which: str, z: float, vectors):
     """For a crossing ``at``: each of ``vectors`` (name, start or None for ``at``, end or
-    None for ``at``) whose mass's angle is unknown, that angle as :func:`_read` would read
-    it, and whether the mass's ``between`` admits it."""
+    None for ``at``) whose mass's angle is unknown (or known to a half turn), that angle as
+    :func:`_read` would read it, and whether the mass's ``between`` admits it."""
     c = out.construction
 
     def sides(at) -> list[tuple[str, float, bool]]:
         got = []
         for name, start, end in vectors:
             p = out.parts[name]
-            if p.angle is not None:
+            if p.angle is not None and name not in out.loose:
                 continue
             (x0, y0) = at.xy if start is None else c.output(start).xy
             (x1, y1) = at.xy if end is None else c.output(end).xy
-            angle = _angle_of(out, which, z, name, (x1 - x0, y1 - y0))
+            if p.angle is None:
+                angle = _angle_of(out, which, z, name, (x1 - x0, y1 - y0))
+            else:                               # the half turn its sense along it gives
+                along = (x1 - x0) * math.cos(p.angle) + (y1 - y0) * math.sin(p.angle)
+                angle = p.angle if along >= 0 else (p.angle + math.pi) % (2 * math.pi)
             got.append((name, angle, p.admits(angle)))
         return got
     return sides
