@@ -49,8 +49,9 @@ from ..names import named_in, read_names
 
 if TYPE_CHECKING:
     from ..grading.drafting import Drafting
-from ..file_numbers import RANGE, _float, in_range, radians_in_turn
+from ..file_numbers import RANGE, _float, arithmetic, in_range, radians_in_turn
 from .mechanism_file import _Reader
+from .travel_positions import TRAVEL_KEYS, crank_angle_at_travel
 from ..toml_source import SourceMap, read_source, read_toml
 
 __all__ = ["Exercise", "Position", "load_exercise", "parse_exercise", "asks_of"]
@@ -334,9 +335,16 @@ def _read_positions(at, mech: Mechanism, fail) -> tuple[Position, ...]:
     deg = mech.units.angle != "rad"
     out = []
     for p in at:
-        if len(p) != 1 or next(iter(p)) not in ("angle", "time"):
-            raise fail(f"each position in at gives one of angle or time, got {p}", "at")
+        if len(p) != 1 or next(iter(p)) not in ("angle", "time", *TRAVEL_KEYS):
+            raise fail("each position in at gives one of angle, time, stroke (the share of "
+                       f"the stroke the piston has travelled) or travel, got {p}", "at")
         (key, value), = p.items()
+        exact = arithmetic(value) if isinstance(value, str) else None
+        if exact is not None:
+            value = _float(exact)
+        if key in TRAVEL_KEYS:
+            out.append(_by_travel(mech, key, value, deg, fail))
+            continue
         if isinstance(value, bool) or not isinstance(value, (int, float)):
             raise fail(f"{key} in at must be a number, got {value!r:.40}", "at")
         if key == "time" and mech.given is not None:
@@ -372,6 +380,30 @@ def _read_positions(at, mech: Mechanism, fail) -> tuple[Position, ...]:
     if len(set(slugs)) != len(slugs):
         raise fail("at lists the same position twice", "at")
     return tuple(out)
+
+
+def _by_travel(mech: Mechanism, key: str, value, deg: bool, fail) -> Position:
+    """``{ stroke = "1/4" }`` or ``{ travel = 75 }``: the crank where the piston has moved
+    that share of its stroke (or that length) from the inner dead centre."""
+    if isinstance(value, bool) or not isinstance(value, (int, float)) or not (
+            math.isfinite(value) and value >= 0):
+        what = "a share of the stroke, 0 to 1 (\"1/4\")" if key == "stroke" else \
+            f"a length in {mech.units.length}, not below 0"
+        raise fail(f"{key} in at is {what}, got {value!r:.40}", "at")
+    if key == "stroke" and value > 1:
+        raise fail(f"stroke in at is the share of the stroke travelled, 0 to 1 (\"1/4\"), "
+                   f"got {value:g}", "at")
+    d = mech.drive
+    try:
+        angle, moved, _ = crank_angle_at_travel(
+            mech, share=value if key == "stroke" else None,
+            travel=value * mech.units.metres if key == "travel" else None)
+    except ValueError as e:
+        raise fail(str(e), "at") from None
+    shown = f"{value:g} of the stroke" if key == "stroke" else ""
+    label = (f"{significant(moved / mech.units.metres)} {mech.units.length} from the i.d.c."
+             f"{' (' + shown + ')' if shown else ''}, θ{d.link} = {_angle_text(angle, deg)}")
+    return Position(replace(d, angle=angle), label, f"{key}-{value:g}")
 
 
 def _read_scales(given, mech: Mechanism, fail) -> dict[str, float]:
