@@ -208,6 +208,16 @@ class GearTrain:
                     main.update(self.body(b))
         return tuple(m for m in self.members if m not in main and not self.carried(m))
 
+    def square(self, member: int) -> bool:
+        """True for a gear turning about an axis square to the main axis: a bevel planet
+        spinning on the arm, or a gear on a side shaft meshing the main axis through bevel
+        teeth (a car's pinion). Its turns are no turns about the main axis."""
+        if not self.planetary or member == self.arm or not (
+                self.carried(member) or member in self.off_axis):
+            return False
+        body = set(self.body(member))
+        return any(m.bevel and {m.a, m.b} & body for m in self.meshes)
+
     def mobility(self) -> tuple[int, int, int, int]:
         """Grübler's count ``(dof, n, f1, f2)``: the bodies and the frame (the fixed member
         is the frame, or the housing when no member is fixed) are the links; each moving

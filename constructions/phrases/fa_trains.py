@@ -38,6 +38,24 @@ WORDS: dict[str, str] = {
     "teeth (found: in brackets)": "تعداد دندانه (یافته‌شده: درون پرانتز)",
     "y × row 1 + x × row 2: speed": "y × سطر 1 + x × سطر 2: سرعت",
     "arm {arm} held, {member} turned {turn}": "بازوی {arm} ثابت، {member} یک دور منفی",
+    # a blank column's footnote (exercises/gears/square_axes.py)
+    "{mark} Gear {gear} spins about its own axis, square to the main axis, as the arm {arm} "
+    "carries it round: its spin is no turn about the main axis, so its cells are blank.":
+        "{mark} چرخدندهٔ {gear} حول محور خود، عمود بر محور اصلی، می\u200cچرخد و بازوی {arm} "
+        "آن را حول محور اصلی می\u200cگرداند: چرخش آن دوری حول محور اصلی نیست، پس "
+        "خانه\u200cهایش خالی است.",
+    "{mark} Gear {gear} turns on a fixed axis of its own, square to the main axis, meshing "
+    "gear {mate} through bevel teeth: the table, of turns about the main axis, leaves its "
+    "cells blank.":
+        "{mark} چرخدندهٔ {gear} حول محور ثابت خود، عمود بر محور اصلی، می\u200cچرخد و با "
+        "چرخدندهٔ {mate} درگیری مخروطی دارد: جدولِ دورها حول محور اصلی خانه\u200cهای آن را "
+        "خالی می\u200cگذارد.",
+    "{mark} Gear {gear} turns at {speed} {unit} on a fixed axis of its own, square to the "
+    "main axis, meshing gear {mate} through bevel teeth: the table, of turns about the main "
+    "axis, leaves its cells blank.":
+        "{mark} چرخدندهٔ {gear} با {speed} {unit} حول محور ثابت خود، عمود بر محور اصلی، "
+        "می\u200cچرخد و با چرخدندهٔ {mate} درگیری مخروطی دارد: جدولِ دورها حول محور اصلی "
+        "خانه\u200cهای آن را خالی می\u200cگذارد.",
     "no member fixed: two speeds given": "هیچ عضوی ثابت نیست: دو سرعت داده شده است",
     "× {scale} {unit}: speed": "× {scale} {unit}: سرعت",
     "turns per turn of {member} (ccw +)": "دور به ازای یک دور {member} (پادساعتگرد +)",

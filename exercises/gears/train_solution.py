@@ -32,6 +32,7 @@ from tarsim.graphics.train_table import draw_train_table
 from ..checked import Checked, check_line
 from ..solution_folder import ChapterFiles
 from ..worked_document import Bullets, Paragraph, Section, Table, numbered, said_steps, title
+from .square_axes import square_mark, square_notes
 from .train_file import MESH_ASKS, TrainExercise, ask_symbol
 from .train_quantities import QuantityParts, TrainQuantity
 from .train_refusals import refuse_beyond_floats, refuse_still_ratios
@@ -272,7 +273,8 @@ class TrainSolution(ChapterFiles, QuantityParts):
                 out.append(Section(phrase(key), (said_steps(drawn.construction),), (stem,)))
         heads, rows = self._table()
         out.append(Section(blocks=(Table(("", *heads), tuple((name, *cells)
-                                                             for name, cells in rows)),)))
+                                                             for name, cells in rows)),
+                                   *map(Paragraph, self._square_notes))))
         return out + [Section(phrase("md.results"), (Table(
             tuple(words(c) for c in ("quantity", "found", "Willis", "the same", "method")),
             tuple(self._result_row(q) for q in self.quantities.values())),))]
@@ -313,9 +315,13 @@ class TrainSolution(ChapterFiles, QuantityParts):
     def _speed_table(self) -> tuple[list[str], list[tuple[str, list[str]]]]:
         """The table's heads and rows of turns and speeds."""
         train, found, unit = self.train, self.found, self.train.units.speed
-        heads = [_head(train, m) for m in train.members]
-        speeds = [numerals(significant(float(found.speeds[m]))) for m in train.members]
         t = found.table
+        # a gear turning about an axis square to the main axis has no cell in a table of
+        # turns about it: blank, a footnote saying why (:func:`.square_axes.square_notes`)
+        heads = [_head(train, m) + (square_mark(train, m) if t is not None else "")
+                 for m in train.members]
+        speeds = ["" if t is not None and train.square(m) else
+                  numerals(significant(float(found.speeds[m]))) for m in train.members]
         if t is None:
             if not train.speed_given:      # the speeds for one turn of the input: its ratios
                 return heads, [(words("turns per turn of {member} (ccw +)",
@@ -324,8 +330,8 @@ class TrainSolution(ChapterFiles, QuantityParts):
 
         def row(turns: dict[int, Fraction]) -> list[str]:
             # a gear on a side shaft has no place in the table: its cell is blank
-            return [numerals(fraction_text(turns[m], True)) if m in turns else ""
-                    for m in train.members]
+            return [numerals(fraction_text(turns[m], True))
+                    if m in turns and not train.square(m) else "" for m in train.members]
 
         if t.weights is not None:         # two given speeds: y × row 1 + x × row 2
             return heads, [
@@ -342,6 +348,11 @@ class TrainSolution(ChapterFiles, QuantityParts):
                       unit=unit_words(unit)), speeds)] if train.speed_given else [])]
 
     @property
+    def _square_notes(self) -> list[str]:
+        """The table's footnotes on its blank columns (none without a table)."""
+        return square_notes(self.train, self.found.speeds) if self.found.table else []
+
+    @property
     def figures(self) -> dict[str, Any]:
         """Each figure by its file stem: the table (or the speeds of an ordinary train)."""
         heads, rows = self._table()
@@ -352,6 +363,7 @@ class TrainSolution(ChapterFiles, QuantityParts):
                  words("No speed is given: the rows are turns, counter-clockwise positive, and "
                        "their ratios the speed ratios, each checked by the Willis equations "
                        "solved as one linear system.")]
+        notes += self._square_notes
         ruled = (2, 3) if self.found.table else ()
         if self.train.implied_teeth:          # the teeth's row above the rest, ruled off
             ruled = (1, *(r + 1 for r in ruled))

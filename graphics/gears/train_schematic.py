@@ -10,6 +10,9 @@ The input's shaft and those of the members a ratio or torque is asked of leave a
 axis, the first plane's to the left and the last's to the right. The fixed member is
 hatched to the ground: a ring by its rims, a sun by its face.
 
+A gear turning square to the main axis (a bevel planet, a pinion on a square side shaft)
+and the gears it meshes are drawn as bevel gears (:mod:`.bevel_view`), the arm as the cage.
+
 The file gives no axial places, so gears in mesh share a plane and each further gear on a
 shaft takes the next; radii are to scale (in modules where no gear gives its module), the
 planes are not.
@@ -24,6 +27,7 @@ from ..figure import Figure, Path
 from ..labels import LabelPlacer
 from ..scales import draw_caption, nice_per_cm
 from ..symbols import draw_hatched_band
+from .bevel_view import bevel_view, draw_bevels
 
 __all__ = ["draw_train_schematic"]
 
@@ -47,7 +51,11 @@ def draw_train_schematic(train: GearTrain, title: str, outputs: tuple[int, ...] 
     mm = 10.0 / per_cm
     fig = Figure(0.0, 0.0, title=title)
     placer = LabelPlacer(fig)
-    xs = [p * _PLANE for p in plane.values()]
+    bevel = bevel_view(train, {m: p * _PLANE for m, p in plane.items()},
+                       lambda g: radius[g] * mm)
+    xs = [p * _PLANE for m, p in plane.items() if bevel is None or m not in bevel.x]
+    if bevel is not None:                 # a bevel gear's place and its radius either side
+        xs += [x + s * radius[g] * mm for g, x in bevel.x.items() for s in (1, -1)]
     left, right = min(xs) - _SHAFT, max(xs) + _FACE + _SHAFT
     for y in sorted({-axis[m] * mm for m in axis} if not train.planetary else {0.0}):
         fig.add(Path(((left - 4.0, y), (right + 4.0, y)), "reference"))   # the axes
@@ -60,7 +68,16 @@ def draw_train_schematic(train: GearTrain, title: str, outputs: tuple[int, ...] 
         fig.add(Path(pts, "link", closed=True))
         placer.block_path([*pts, pts[0]], 0.6)
 
+    if bevel is not None:
+        draw_bevels(fig, train, bevel, lambda g: radius[g] * mm,
+                    lambda pts: placer.block_path(pts, 0.6), labels)
+        for g in fixed & set(bevel.toward):       # a fixed bevel gear: its web held
+            back = radius[g] * mm - abs(bevel.web(g) - bevel.x[g])
+            draw_hatched_band(fig, (bevel.web(g), -back), (bevel.web(g), back),
+                              (-bevel.toward[g], 0.0), depth=2.5)
     for g in train.gears:
+        if bevel is not None and g.number in bevel.x:
+            continue
         first, last = _span(train, plane, g.number)
         x, r, y = first * _PLANE, radius[g.number] * mm, -axis[g.number] * mm
         face = (last - first) * _PLANE + _FACE
@@ -84,8 +101,11 @@ def draw_train_schematic(train: GearTrain, title: str, outputs: tuple[int, ...] 
             draw_hatched_band(fig, (x, y - r), (x, y + r), (-1.0, 0.0), depth=2.5)
         labels.append((str(g.number), (x + face, y - 0.5 * r)))
     _shafts(train, fig, plane, axis, mm, (left, right), rings,
-            (train.input_member, *((train.second[0],) if train.second else ()), *outputs))
-    if train.arm is not None and train.planetary:
+            (train.input_member, *((train.second[0],) if train.second else ()), *outputs),
+            bevel)
+    if bevel is not None and bevel.planets:
+        _cage(train, fig, bevel, plane, labels)
+    elif train.arm is not None and train.planetary:
         xa = plane[train.arm] * _PLANE + _FACE / 2
         # A pin for each carrier radius the planets stand at (two planets in series on the
         # arm stand at two), all on the arm's one bar.
@@ -125,10 +145,30 @@ def _is_ring(train: GearTrain, number: int) -> bool:
         train.gear(m.a).teeth, train.gear(m.b).teeth) for m in train.meshes)
 
 
+def _cage(train: GearTrain, fig: Figure, bevel, plane: dict[int, int],
+          labels: list[tuple[str, tuple[float, float]]]) -> None:
+    """The arm as a differential's cage: from the web of the gear on its hub (or its own
+    hub) out past the bevel planets' backs and across to their spindles."""
+    hub = [m for m in train.body(train.arm) if m != train.arm]
+    start = (bevel.web(hub[0]) if hub and hub[0] in bevel.toward
+             else plane[hub[0]] * _PLANE + _FACE if hub else plane[train.arm] * _PLANE)
+    far = max(bevel.cage(p) for p in bevel.planets)
+    end = max(bevel.x[p] for p in bevel.planets)
+    for s in (1.0, -1.0):
+        fig.add(Path(((start, s * far), (end, s * far)), "link"))
+    if not hub:
+        fig.add(Path(((start, far), (start, -far)), "link"))
+    if train.fixed is not None and train.arm in train.body(train.fixed):
+        draw_hatched_band(fig, (start, -far), (start, far), (-1.0, 0.0))
+    labels.append((str(train.arm), (0.5 * (start + min(bevel.x[p] for p in bevel.planets)),
+                                    -far)))
+
+
 def _shafts(train: GearTrain, fig: Figure, plane, axis, mm: float, span: tuple[float, float],
-            rings: set[int], ends: tuple[int, ...]) -> None:
+            rings: set[int], ends: tuple[int, ...], bevel=None) -> None:
     """The shafts: a compound gear's between its planes, and those of ``ends`` (the input
-    and the outputs) out along the main axis."""
+    and the outputs) out along the main axis (a bevel gear's from its web, a gear's on a
+    square side shaft with its bevel teeth)."""
     for body in train.bodies:
         gears = [m for m in body if m != train.arm]
         if len(gears) > 1:                          # gears on one shaft: joined between planes
@@ -143,16 +183,21 @@ def _shafts(train: GearTrain, fig: Figure, plane, axis, mm: float, span: tuple[f
     leaving = sorted({train.body(m)[0] for m in ends
                       if not (train.fixed is not None and m in train.body(train.fixed))
                       and not (train.planetary and train.carried(m))
+                      and not train.square(m)
                       and (m == train.arm or not train.planetary
                            or axis.get(m, 0.0) == 0.0 or m in train.off_axis)},
                      key=lambda m: plane[m])
     for k, m in enumerate(leaving[:1] + leaving[1:][-1:]):
-        x, y = plane[m] * _PLANE, -axis.get(m, 0.0) * mm
-        if k == 0 and (len(leaving) > 1 or m == train.arm):
+        x, y, face = plane[m] * _PLANE, -axis.get(m, 0.0) * mm, _FACE
+        left = k == 0 and (len(leaving) > 1 or m == train.arm)
+        if bevel is not None and m in bevel.toward:     # from its web, away from its teeth
+            x, face = bevel.web(m), 0.0
+            left = bevel.toward[m] > 0
+        if left:
             fig.add(Path(((span[0], y), (x + (_FACE / 2 if m == train.arm else 0.0), y)),
                          "link"))
         else:
-            start = x + _FACE + (3.0 if m in rings else 0.0)
+            start = x + face + (3.0 if m in rings else 0.0)
             fig.add(Path(((start, y), (span[1], y)), "link"))
 
 
