@@ -22,9 +22,10 @@ MODULES = ("1", "1.25", "1.5", "2", "2.5", "3", "3.125", "4", "5", "6", "8", "10
 
 
 def reverted(m1: str, m2: str, teeth: dict[int, int], ratios: list[tuple[str, F]],
-             least: int | None = None, find: str = '"teeth1", "teeth2", "teeth3", "teeth4"'
-             ) -> str:
-    """The train's file, the counts in ``teeth`` given, each ratio a ``[[ratio]]``."""
+             least: int | None = None, find: str = '"teeth1", "teeth2", "teeth3", "teeth4"',
+             distance: F | None = None) -> str:
+    """The train's file, the counts in ``teeth`` given, each ratio a ``[[ratio]]``, and
+    the first pair's centre ``distance`` if given."""
     gears = "".join(f"[[gear]]\nnumber = {n}\nmodule = {m}\n"
                     + (f"teeth = {teeth[n]}\n" if n in teeth else "")
                     for n, m in ((1, m1), (2, m1), (3, m2), (4, m2)))
@@ -32,7 +33,9 @@ def reverted(m1: str, m2: str, teeth: dict[int, int], ratios: list[tuple[str, F]
                      + (f"least_teeth = {least}\n" if least is not None and i == 0 else "")
                      for i, (of, v) in enumerate(ratios))
     return (f'coaxial = [1, 4]\n[units]\nlength = "mm"\n{gears}[[shaft]]\nmembers = [2, 3]\n'
-            f"[[mesh]]\ngears = [1, 2]\n[[mesh]]\ngears = [3, 4]\n{tables}"
+            "[[mesh]]\ngears = [1, 2]\n" + (f'centre_distance = "{distance}"\n' if distance
+                                           else "")
+            + f"[[mesh]]\ngears = [3, 4]\n{tables}"
             f"[input]\nmember = 1\nspeed = 1440\n[ask]\nfind = [{find}]\n")
 
 
@@ -63,18 +66,20 @@ def holds(m1: str, m2: str, n: dict[int, int], ratios: list[tuple[str, F]]) -> b
 
 
 @settings(max_examples=60, deadline=None)
-@given(trains(), st.sampled_from(["second pair", "whole train", "one pinion"]))
+@given(trains(), st.sampled_from(["second pair", "whole train", "one pinion", "distance"]))
 def test_the_coaxial_condition_and_the_ratios_fix_the_counts_left_out(train, left):
     """The first pair given and the second's ratio (or the whole train's), or only the
-    first pinion with both pairs' ratios: the counts are the one solution, N₃ = m₁(N₁ +
-    N₂)/(m₂(1 + N₄/N₃)) and the rest, which the generated train is."""
+    first pinion, or the shafts' distance m₁(N₁ + N₂)/2, with both pairs' ratios: the counts
+    are the one solution, N₃ = m₁(N₁ + N₂)/(m₂(1 + N₄/N₃)) and the rest, which the
+    generated train is."""
     m1, m2, n = train
-    ratios = {"second pair": [("omega3/omega4", F(n[4], n[3]))],
+    both = [("omega1/omega2", F(n[2], n[1])), ("omega3/omega4", F(n[4], n[3]))]
+    ratios = {"second pair": both[1:],
               "whole train": [("omega1/omega4", F(n[2] * n[4], n[1] * n[3]))],
-              "one pinion": [("omega1/omega2", F(n[2], n[1])),
-                             ("omega3/omega4", F(n[4], n[3]))]}[left]
-    given_teeth = {1: n[1]} if left == "one pinion" else {1: n[1], 2: n[2]}
-    found = counts(reverted(m1, m2, given_teeth, ratios))
+              "one pinion": both, "distance": both}[left]
+    given_teeth = {"one pinion": {1: n[1]}, "distance": {}}.get(left, {1: n[1], 2: n[2]})
+    distance = F(m1) * (n[1] + n[2]) / 2 if left == "distance" else None
+    found = counts(reverted(m1, m2, given_teeth, ratios, distance=distance))
     assert found == n and holds(m1, m2, found, ratios)
 
 
@@ -133,3 +138,21 @@ def test_teeth_given_that_put_the_coaxial_gears_apart_are_refused(m2, teeth, wor
     assert said.startswith("r.toml:1: [coaxial] gears 1 and 4 are not on one axis")
     assert words in said
     assert "\n" not in said and len(said) < 200
+
+
+@pytest.mark.parametrize("teeth, ratios, least, words", [
+    # 4·80/6 = 53⅓ = N₃ + N₄: no whole pair, whatever the ratio
+    ({1: 20, 2: 60}, [("omega3/omega4", F(3))], None,
+     "the speed ratio ω3/ω4 = 3, the coaxial condition and the centre distances give gears "
+     "3, 4 no whole counts"),
+    # the whole train's ratio alone leaves how it splits between the pairs open
+    ({}, [("omega1/omega4", F(9))], 20, "leave them open: give each pair's ratio"),
+    # each pair's ratio and the coaxial condition leave the size open
+    ({}, [("omega1/omega2", F(4)), ("omega3/omega4", F(3))], None,
+     "leave them open: give least_teeth"),
+])
+def test_counts_the_data_cannot_give_are_refused_saying_why(teeth, ratios, least, words):
+    text = reverted("4", "6", teeth, ratios, least)
+    with pytest.raises(InputError) as e:
+        parse_train(text, "r.toml")
+    assert words in str(e.value) and "\n" not in str(e.value) and len(str(e.value)) < 220

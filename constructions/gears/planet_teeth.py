@@ -20,7 +20,7 @@ from fractions import Fraction
 from ..errors import InputError
 from ..narration import Phrase, phrase
 from .tabular import fraction_text, tabulate
-from .teeth import coaxial_misfit, imply_teeth, unknown_teeth
+from .teeth import coaxial_misfit, coaxial_ties, imply_teeth, unknown_teeth
 from .train import GearTrain
 
 __all__ = ["teeth_from_ratios"]
@@ -65,11 +65,21 @@ def teeth_from_ratios(train: GearTrain, ratios: list[Ratio], least: int | None
                              f"{least}: check the ratios and the teeth given, or lower it",
                              file=train.source or None)
         return found
-    if least is None:
-        raise InputError(f"gears {', '.join(map(str, unknown))} have no teeth, and the speed "
-                         "ratios, the coaxial condition and the centre distances leave them "
-                         "open: give least_teeth = … in [ratio], or more teeth",
+    said = ", ".join(f"ω{x}/ω{y} = {float(v):g}" for (x, y), v in ratios)
+    gears = ", ".join(map(str, unknown))
+    # each ratio and each tie fixes one count, the least count one more
+    spare = len(unknown) - len(ratios) - coaxial_ties(train) - (least is not None)
+    if least is None and spare <= 0:
+        raise InputError(f"the speed ratio{'s' * (len(ratios) > 1)} {said}, the coaxial "
+                         f"condition and the centre distances give gears {gears} no whole "
+                         "counts: check the ratios, the teeth and the modules",
                          file=train.source or None)
+    if least is None or spare > 0:
+        raise InputError(f"gears {gears} have no teeth, and the speed ratios, the coaxial "
+                         "condition and the centre distances leave them open: give "
+                         + ("each pair's ratio in a [[ratio]] of its own, or more teeth"
+                            if least is not None else "least_teeth = … in [ratio], or more "
+                            "teeth"), file=train.source or None)
     for n in range(least, least + _SEARCH):
         for g in unknown:
             found = _fill(_with(train, g, n), ratios)
@@ -79,9 +89,8 @@ def teeth_from_ratios(train: GearTrain, ratios: list[Ratio], least: int | None
             if all(done.gear(h).teeth >= n for h in unknown):
                 return done, (phrase("gears.teeth_least_set", g=g, least=least, teeth=n),
                               *steps)
-    said = ", ".join(f"ω{x}/ω{y} = {float(v):g}" for (x, y), v in ratios)
     raise InputError(f"no whole counts of {least} teeth or more for gears "
-                     f"{', '.join(map(str, unknown))} give the speed ratio"
+                     f"{gears} give the speed ratio"
                      f"{'s' * (len(ratios) > 1)} {said}", file=train.source or None)
 
 

@@ -25,8 +25,8 @@ from ..narration import Phrase, phrase
 from .tabular import carry, fraction_text
 from .train import GearTrain, Mesh
 
-__all__ = ["coaxial_misfit", "imply_teeth", "teeth_from_diameter", "teeth_from_ratio",
-           "unknown_teeth"]
+__all__ = ["coaxial_misfit", "coaxial_ties", "imply_teeth", "teeth_from_diameter",
+           "teeth_from_ratio", "unknown_teeth"]
 
 
 def teeth_from_diameter(diameter: Fraction, module: Fraction) -> Fraction:
@@ -185,6 +185,16 @@ def coaxial_misfit(train: GearTrain, coaxial: tuple[int, int] | None) -> str | N
         if a1 != a2:
             return " ≠ ".join(_said(train, m, c, sized) for m, c in pairs)
     return None
+
+
+def coaxial_ties(train: GearTrain) -> int:
+    """How many equations among the unknown counts the coaxial condition and the centre
+    distances give: one for each mesh beyond the first of a set that must stand equally far
+    apart, and one for each distance given, where an unknown count stands in it."""
+    unknown = set(unknown_teeth(train))
+    ties = sum(len(pairs) - 1 for pairs in _coaxial_sets(train, train.coaxial)
+               if unknown & {g for mesh, _ in pairs for g in (mesh.a, mesh.b)})
+    return ties + sum(1 for m in train.meshes if m.distance and unknown & {m.a, m.b})
 
 
 def _linear(train: GearTrain, mesh: Mesh, far: int, unknown: int, sized: bool
