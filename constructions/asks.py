@@ -452,14 +452,16 @@ class Effort(Ask):
     @property
     def name(self) -> str:
         """``piston_effort``, ``wall_thrust``, ``inertia_force``, ``reversal_speed``,
-        ``crank_effort``, ``turning_moment``, ``bearing_thrust``, ``correction_couple`` or
-        ``flywheel_alpha``."""
+        ``crank_effort``, ``turning_moment``, ``bearing_thrust``, ``correction_couple``,
+        ``flywheel_alpha`` or ``rod_radius_of_gyration``."""
         return self.word
 
 
 EFFORTS = ("piston_effort", "wall_thrust", "inertia_force", "reversal_speed", "crank_effort",
-           "turning_moment", "bearing_thrust", "correction_couple", "flywheel_alpha")
-"""The efforts an exercise may ask: the first four and correction_couple of a slider-crank
+           "turning_moment", "bearing_thrust", "correction_couple", "flywheel_alpha",
+           "rod_radius_of_gyration")
+"""The efforts an exercise may ask: the first four, correction_couple and the rod's radius of
+gyration about G (m, from its mass: a pendulum test's, or its given I) of a slider-crank
 only; flywheel_alpha, the flywheel's α (rad/s²) against a mean resisting torque, where
 [forces] gives the flywheel and the engine's power or that torque."""
 

@@ -202,6 +202,8 @@ class Work:
             return max(grashof_class(m).lengths)
         if isinstance(ask, A.Effort) and ask.word == "reversal_speed":
             return abs(d.omega)                 # a speed, beside the crank's
+        if isinstance(ask, A.Effort) and ask.word == "rod_radius_of_gyration":
+            return mechanism_size(self.kinematics)          # a length
         if isinstance(ask, (A.JointForce, A.DrivingTorque, A.Effort)):
             # Beside the largest joint force, or the loads it is made of if they are more
             # (times the mechanism's size, for a moment).

@@ -46,7 +46,7 @@ omega = 200
 [assembly]
 P = "forward"
 [ask]
-find = ["T2", "turning_moment"]
+find = ["T2", "turning_moment", "rod_radius_of_gyration"]
 methods = ["polygon"]
 [forces]
 gravity = false
@@ -153,9 +153,12 @@ def test_e3b_try_pendulum(tmp_path):
         "{inertia}", 'oscillations = { count = 8, seconds = 22, about = "P" }'), "swung")
     assert f"k = √(g·h·T²/(4π²) − h²) = {k * 1e3:.6g} mm" in steps
     assert f"I = m·k² = {250 * k * k:.6g} kg·m²" in steps
+    # k² is a difference of two terms of 0.8 and 1.4 m²: a few ulps of them, relative to k²
+    assert swung["rod_radius_of_gyration"] == pytest.approx(k, rel=1e-14)
     given_k, _ = _quantities(tmp_path, VERTICAL.replace("{inertia}",
                                                             f"radius_of_gyration = {k * 1e3!r}"),
                              "given")
+    assert given_k["rod_radius_of_gyration"] == pytest.approx(k, rel=1e-14)
     # the same I to its last few ulps (k in mm, squared), so the same torque to rounding
     assert swung["T2"] == pytest.approx(given_k["T2"], rel=1e-12)
     # the period alone, or hung from a knife edge at the same place given as a point
@@ -227,3 +230,9 @@ def test_the_flywheel_slows_where_the_turning_moment_falls_short(tmp_path):
 def test_a_bad_flywheel_load_is_refused_in_one_line(forces, words, tmp_path):
     line = _refused(tmp_path, GAS.replace("{forces}", forces))
     assert words in line, line
+
+
+def test_a_rod_with_no_inertia_has_no_radius_of_gyration(tmp_path):
+    line = _refused(tmp_path, GAS.replace("{forces}", "").replace(
+        '"flywheel_alpha"]', '"rod_radius_of_gyration"]'))
+    assert "give the rod a [[mass]]" in line, line

@@ -65,7 +65,7 @@ def forces_askable(mech: Mechanism) -> set[str]:
     if isinstance(group, Dyad) and group.guide is not None:
         out |= {"piston_effort", "wall_thrust", "inertia_force", "reversal_speed"}
         if rod_of(mech) is not None:
-            out.add("correction_couple")
+            out |= {"correction_couple", "rod_radius_of_gyration"}
     return out
 
 
@@ -102,6 +102,12 @@ def answer(work, ask) -> Answer:
     elif isinstance(ask, A.Effort) and ask.word == "reversal_speed":
         value = {"value": reversal_speed(work.mechanism, forces.efforts["piston_effort"],
                                          forces.efforts["inertia_force"])}
+    elif isinstance(ask, A.Effort) and ask.word == "rod_radius_of_gyration":
+        m = work.loads.mass_of(rod_of(work.mechanism)[0])
+        if m is None or m.inertia == 0.0:
+            raise TarsimError("rod_radius_of_gyration is the connecting rod's √(I/m) about G: "
+                              "give the rod a [[mass]] with its inertia (or a pendulum test)")
+        value = {"value": math.sqrt(m.inertia / m.mass)}
     elif isinstance(ask, A.Effort) and ask.word == "flywheel_alpha":
         if "flywheel_alpha" not in forces.efforts:
             raise TarsimError("flywheel_alpha is (T − T_mean)/I: give [forces] flywheel = 136.8 "

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import math
 
-from ..loads import Loads, crank_tangent, stroke_axis
+from ..loads import GRAVITY, Loads, crank_tangent, stroke_axis
 from ..model import Mechanism
 from .kinetostatics import Statics, loads_on, world_point
 from .solver import Kinematics, point_acceleration
@@ -52,6 +52,15 @@ def efforts(mech: Mechanism, kin: Kinematics, loads: Loads, statics: Statics
              if m is not None else (0.0, 0.0))
         out["inertia_force"] = (m.mass if m is not None else 0.0) * (a[0] * u[0] + a[1] * u[1])
         out["correction_couple"] = _correction(mech, kin, loads, pin, s.point, d)
+        rod = [k for k in mech.links_at(pin) if k != d and s.point in mech.link(k).names]
+        m = loads.mass_of(rod[0]) if rod else None
+        if m is not None and m.swing is not None:
+            # the pendulum about its point of suspension: m·g·h·T²/(4π²) = I_P = m·(k² + h²)
+            period, h, _ = m.swing
+            k2 = GRAVITY * h * period ** 2 / (4 * math.pi ** 2) - h * h
+            out["rod_radius_of_gyration"] = math.sqrt(k2)
+        elif m is not None and m.inertia > 0.0:
+            out["rod_radius_of_gyration"] = math.sqrt(m.inertia / m.mass)
         # ω² scales the inertia alone: F_P(ω_r) = rest − F_I·(ω_r/ω)² = 0
         rest = out["piston_effort"] + out["inertia_force"]
         if out["inertia_force"] and rest / out["inertia_force"] > 0:

@@ -112,6 +112,8 @@ def show(v: dict, units, name: str = "", figures: int = 6) -> str:
     if name.startswith("T") and name[1:2] in "_0123456789" and name != "T":
         w = v["value"]                                  # a couple or the driving torque
         return f"{_num(w, spec)} N·m{_sense(w)}"
+    if name == "rod_radius_of_gyration":                # a length about the rod's G
+        return f"{_num(v['value'] / s, spec)} {units.length}"
     if name in EFFORTS:                                 # an engine's effort, signed
         unit = "N·m" if name in MOMENTS else "rad/s" if name == "reversal_speed" else \
             "rad/s²" if name == "flywheel_alpha" else "N"
