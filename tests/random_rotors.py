@@ -396,9 +396,37 @@ def oracle(solution, text: str) -> list[str]:
     lines = solution.lines()
     if "rotor" in data and any(v == "?" for m in data["mass"] for v in m.values()):
         return _open_wrongs(data, metre, doc)
+    if "rotor" in data and not data.get("balance"):
+        return _unbalance_wrongs(data, metre, rate, doc)
     if "rotor" in data:
         return _rotor_wrongs(data, metre, doc, lines)
     return _engine_wrongs(data, metre, rate, doc, lines)
+
+
+def _unbalance_wrongs(data, metre: float, rate: float, doc: dict) -> list[str]:
+    """A rotor with no balancing plane: its out-of-balance force |Σ m r| ω² and couple
+    |Σ m r (l − l₀)| ω², l₀ midway between the outermost masses (or the file's about)."""
+    w2 = (data["rotor"]["speed"] * rate) ** 2
+    planes = [m.get("plane", 0.0) * metre for m in data["mass"]]
+    l0 = data["rotor"]["about"] * metre if "about" in data["rotor"] else \
+        (min(planes) + max(planes)) / 2
+    mr = [m["mass"] * m["radius"] * metre * cmath.exp(1j * _rad(m["angle"]))
+          for m in data["mass"]]
+    force = abs(sum(mr)) * w2
+    couple = abs(sum(v * (z - l0) for v, z in zip(mr, planes))) * w2
+    f_scale = sum(abs(v) for v in mr) * w2
+    c_scale = sum(abs(v) * (abs(z) + abs(l0)) for v, z in zip(mr, planes)) * w2
+    wrong = []
+    for name, want, scale in (("unbalanced_force", force, f_scale),
+                              ("unbalanced_couple", couple, c_scale)):
+        q = doc.get(name)
+        if name == "unbalanced_couple" and q is None and max(planes) == min(planes):
+            continue                          # one plane: no couple to give
+        if q is None:
+            wrong.append(f"results.json has no {name}")
+        elif abs(q["value"] - want) > AGREE * scale:
+            wrong.append(f"{name} = {q['value']:.9g}, the closed form {want:.9g}")
+    return wrong
 
 
 def _rotor_wrongs(data, metre: float, doc: dict, lines: list[str]) -> list[str]:

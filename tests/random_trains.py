@@ -439,14 +439,18 @@ def _pose(r: random.Random, t: Train, family: str) -> None:
 
 
 def _degenerate(r: random.Random, t: Train) -> None:
-    """Make a case that must be refused: a ratio over the fixed member, a planet or a gear
-    of an ordinary train held, the input held."""
+    """Make a case that must be refused: a ratio over the fixed member, a gear of an
+    ordinary train held, the input held (or, answered, a planet held from turning)."""
     spec = t.spec
     how = r.choice(("over-fixed", "fixed-planet", "fixed-gear", "input-fixed", "fixed-side"))
     if how == "over-fixed" and "fixed" in spec:
         spec["ask"]["find"].append(f"omega{spec['input']['member']}/omega{spec['fixed']}")
     elif how == "fixed-planet" and _carried(spec):
+        # a planet held from turning (Watt's sun and planet) is a train like any other:
+        # the oracle's Willis turns hold it at 0; only its input held with it is refused
         spec["fixed"] = r.choice(sorted(_carried(spec)))
+        if spec["input"]["member"] not in _body(spec, spec["fixed"]):
+            return
     elif how == "fixed-gear" and t.arm is None:
         spec["fixed"] = r.choice(t.members)
     elif how == "fixed-side" and t.side and "fixed" in spec:
@@ -612,9 +616,11 @@ def contradictions(doc: dict[str, Any], o: dict[str, Any]) -> list[str]:
         if Fraction(q["exact"]) != want:
             bad.append(f"{name} = {q['exact']}, the closed form gives {want}")
         if "velocity_diagram" in q:
-            # read as a slope off drawn lines: a few roundings of the fastest's size (rad/s)
-            per = 2 * math.pi / 60 if q.get("unit") == "rpm" else 1.0
-            if abs(q["velocity_diagram"]["value"] - q["value"]) > 1e-9 * float(max(speeds)) * per:
+            # read as a slope off drawn lines: a few roundings of the fastest's size (rad/s),
+            # or of a ratio's own size (two slopes' quotient)
+            per = 2 * math.pi / 60 if q.get("exact_unit", q.get("unit")) == "rpm" else 1.0
+            size = max(abs(q["value"]), 1.0) if "/" in name else float(max(speeds)) * per
+            if abs(q["velocity_diagram"]["value"] - q["value"]) > 1e-9 * size:
                 bad.append(f"{name} by the velocity diagram = {q['velocity_diagram']['value']!r}")
     return bad
 
