@@ -32,6 +32,8 @@ _NAME_LENGTH = 12
 _NAME = re.compile(rf"^[^\s\x00-\x1f\x7f-\x9f\u202a-\u202e\u2066-\u2069]{{1,{_NAME_LENGTH}}}$")
 """A mass's or a plane's name: a short word with no space or control character in it."""
 
+_UNITS = ("length", "speed")
+"""The units a balancing file states; masses are always kg and weights N."""
 _KEYS = {"rotor": ("speed", "about"),
          "mass": ("name", "mass", "radius", "angle", "plane", "between"),
          "balance": ("name", "plane", "radius", "mass"),
@@ -79,6 +81,10 @@ def parse_balance(text: str, filename: str = "<string>", exercise_id: str = "rot
     if not isinstance(data.get("units", {}), dict):
         raise fail('units is a table: [units] length = "mm", speed = "rpm"', key="units")
     length, speed_unit = t.units("m", "rad/s")
+    for key in data.get("units", {}):
+        if key not in _UNITS:
+            raise fail(f"unknown setting '{key}' in [units]; expected {', '.join(_UNITS)} "
+                       "(masses are in kg, weights in N)", "units", key)
     metre = LENGTH_UNITS[length]
     common = dict(id=exercise_id, name=_text(t, "name", exercise_id),
                   source=_text(t, "source", ""), description=_text(t, "description", ""),
