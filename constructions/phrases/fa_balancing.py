@@ -140,6 +140,12 @@ WORDS: dict[str, str] = {
     "plane {plane}: balancing m·r = {size} kg·m at {angle}°, so {mass} kg at {radius}":
         "صفحهٔ {plane}: m·r متعادل‌کننده = {size} kg·m با زاویهٔ {angle}°، یعنی جرم {mass} "
         "kg در شعاع {radius}",
+    "the weights are in N: each mass is m = W/g, g = {g} m/s², and each balancing mass is "
+    "given back as its weight W = m·g":
+        "وزن‌ها بر حسب N‌اند: جرم هر یک m = W/g است، با g = {g} m/s²، و هر جرم متعادل‌کننده "
+        "با وزن آن، W = m·g، داده می‌شود",
+    "plane {plane}: the balance weight {weight} N at {radius}":
+        "صفحهٔ {plane}: وزن متعادل‌کننده {weight} N در شعاع {radius}",
     "2-1, between": "۲-۱، میان", "2-2, outside": "۲-۲، بیرون از",
     "the masses lie in one axial plane: one mass of m·r = {size} kg·m at {angle}° in the plane "
     "at {place} balances force and couple together (the notes' case {case} the masses' planes: "

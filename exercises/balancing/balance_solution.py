@@ -37,6 +37,7 @@ from .open_rotor_solution import open_checked, open_lines, open_misses
 from .rotor_unbalance import (unbalance, unbalance_checked, unbalance_lines,
                               unbalance_misses)
 from .rotor_file import BalanceExercise
+from .rotor_weights import weight_checked, weight_line, weights_line
 
 __all__ = ["BalanceSolution", "solve_balance"]
 
@@ -248,7 +249,7 @@ class BalanceSolution(ChapterFiles):
                 f"OFF: {', '.join(self.failures)}"
             return unbalance_lines(r, self.unbalance, self._length) + [
                 words("polygons closed: {verdict}", verdict=verdict)]
-        out = []
+        out = [weights_line()] if self.exercise.weights else []
         noise = rounding([m.mass * m.radius for m in r.masses])
         x, y = (_quiet(v, noise) for v in resultant(r.masses))
         if x == y == 0.0:
@@ -275,6 +276,8 @@ class BalanceSolution(ChapterFiles):
                              "kg at {radius}", plane=p.name, size=numeral(math.hypot(*v)),
                              angle=numeral(angle_deg(v), ".2f"), mass=numeral(mass),
                              radius=self._length(radius)))
+            if self.exercise.weights:
+                out.append(weight_line(p.name, mass, self._length(radius)))
         if len(r.planes) == 1 and len({m.plane for m in r.masses}) > 1:
             arms = [(m, m.plane - r.planes[0].position) for m in r.masses]
             couple = math.hypot(*(math.fsum(m.mr[i] * arm for m, arm in arms) for i in (0, 1)))
@@ -430,9 +433,11 @@ class BalanceSolution(ChapterFiles):
         angle = {} if none else {f"angle_{p.name}": Checked(
             {"value": angle_deg(v), "unit": "deg"}, {"value": angle_deg(want)}, method=method)}
         if p.radius is not None:
+            weight = weight_checked(p.name, found, ref, where, there, method) \
+                if self.exercise.weights else {}
             return {f"mass_{p.name}": Checked(
                 {"value": found, "unit": "kg", "radius": p.radius, **where},
-                {"value": ref, **there}, method=method)} | angle
+                {"value": ref, **there}, method=method)} | weight | angle
         return {f"radius_{p.name}": Checked(
             {"value": radius, "unit": "m", "mass": p.mass, **where},
             {"value": ref, **there}, method=method)} | angle

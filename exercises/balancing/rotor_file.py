@@ -23,6 +23,7 @@ from ..table_file import SPEEDS, Tables
 from .engine_unknowns import cylinder_masses, has_unknowns, primary_balance
 from .firing_order import firing_cranks, read_firing_order
 from .open_rotor_file import UNKNOWN, read_open_rotor
+from .rotor_weights import GRAVITY, mass_or_weight, refuse_weights
 
 __all__ = ["BalanceExercise", "parse_balance"]
 
@@ -35,8 +36,8 @@ _NAME = re.compile(rf"^[^\s\x00-\x1f\x7f-\x9f\u202a-\u202e\u2066-\u2069]{{1,{_NA
 _UNITS = ("length", "speed")
 """The units a balancing file states; masses are always kg and weights N."""
 _KEYS = {"rotor": ("speed", "about"),
-         "mass": ("name", "mass", "radius", "angle", "plane", "between"),
-         "balance": ("name", "plane", "radius", "mass"),
+         "mass": ("name", "mass", "weight", "radius", "angle", "plane", "between"),
+         "balance": ("name", "plane", "radius", "mass", "weight"),
          "engine": ("speed", "crank", "stroke", "rod", "reciprocating", "balanced", "at",
                     "revolving", "balance_radius", "balance_mass", "firing_order", "strokes",
                     "road_speed", "wheel_diameter", "vee", "dead_load", "rod_ratio"),
@@ -62,6 +63,8 @@ class BalanceExercise:
     speed_unit: str = "rad/s"
     names: tuple[tuple[str, str], ...] = ()
     """The rotor's or engine's name in other languages (``[names]``, :mod:`.names`)."""
+    weights: bool = False
+    """The file gives its masses as weights in N (:mod:`.rotor_weights`)."""
 
     def named_in(self, lang: str) -> BalanceExercise:
         """The same exercise with its rotor or engine named in ``lang``, if its file does."""
@@ -84,18 +87,20 @@ def parse_balance(text: str, filename: str = "<string>", exercise_id: str = "rot
     for key in data.get("units", {}):
         if key not in _UNITS:
             raise fail(f"unknown setting '{key}' in [units]; expected {', '.join(_UNITS)} "
-                       "(masses are in kg, weights in N)", "units", key)
+                       "(masses are in kg; a weight in N is weight = …)", "units", key)
     metre = LENGTH_UNITS[length]
     common = dict(id=exercise_id, name=_text(t, "name", exercise_id),
                   source=_text(t, "source", ""), description=_text(t, "description", ""),
                   length_unit=length, speed_unit=speed_unit,
                   names=read_names(data, t.where, filename))
     if "engine" in data:
+        refuse_weights(t, "in an engine's file")
         engine, primary = _engine(t, metre)
         return BalanceExercise(engine=engine, open=primary,
                                rotor=None if primary else _engine_rotor(t, engine, metre),
                                **common)
     if any(v == UNKNOWN for m in t.entries("mass") for v in m.values()):
+        refuse_weights(t, "where the masses hold unknowns")
         return BalanceExercise(open=read_open_rotor(
             t, metre, _speed(t, "rotor", needed=False),
             lambda e, i: _name(t, e, "mass", i, str(i + 1), "mass")), **common)
@@ -109,8 +114,9 @@ def parse_balance(text: str, filename: str = "<string>", exercise_id: str = "rot
         taken[p.name] = f"plane {p.name}"
     # with no balancing plane the out-of-balance force (N) and couple (N·m) are asked
     speed = _speed(t, "rotor", needed=not planes)
+    weights = any("weight" in e for table in ("mass", "balance") for e in t.entries(table))
     return BalanceExercise(rotor=Rotor(tuple(masses), tuple(planes), speed,
-                                       _about(t, planes, metre)), **common)
+                                       _about(t, planes, metre)), weights=weights, **common)
 
 
 def _about(t: Tables, planes: list, metre: float) -> float | None:
@@ -255,11 +261,13 @@ def _masses(t: Tables, metre: float, length: str) -> list[Mass]:
         if "between" in entry:
             raise t.fail(f"mass {name}'s between chooses where an unknown angle comes out: give "
                          'its angle = "?", or leave between out', "mass", "between", i)
-        m = t.number(entry, "mass", "mass", f"mass {name}'s mass", i)
+        m, weight = mass_or_weight(t, entry, "mass", i, f"mass {name}")
         r = t.number(entry, "radius", "mass", f"mass {name}'s radius", i)
         if not m > 0 or not r > 0:
-            raise t.fail(f"mass {name} needs a positive mass and radius, got {m:g} kg at "
-                         f"{r:g} {length}", "mass", "mass" if not m > 0 else "radius", i)
+            what = "weight" if weight else "mass"
+            raise t.fail(f"mass {name} needs a positive {what} and radius, got "
+                         f"{m * (GRAVITY if weight else 1):g} {'N' if weight else 'kg'} at "
+                         f"{r:g} {length}", "mass", what if not m > 0 else "radius", i)
         masses.append(Mass(name, m, r * metre,
                            _degrees(t.number(entry, "angle", "mass", f"mass {name}'s angle", i)),
                            t.number(entry, "plane", "mass", f"mass {name}'s plane", i,
@@ -284,19 +292,21 @@ def _planes(t: Tables, metre: float) -> list[Plane]:
         if any(p.name == name for p in planes):
             raise t.fail(f"two balancing planes are named {name}: give each its own name",
                          "balance", "name", i)
-        radius, mass = entry.get("radius"), entry.get("mass")
-        if (radius is None) == (mass is None):
+        given = [k for k in ("radius", "mass", "weight") if k in entry]
+        if len(given) != 1:
             raise t.fail(f"balancing plane {name} gives the radius its mass goes at, or the "
-                         "mass (the other is found): radius = 0.1", "balance", None, i)
-        key = "radius" if radius is not None else "mass"
+                         "mass (or its weight in N; the other is found): radius = 0.1",
+                         "balance", given[-1] if len(given) > 1 else None, i)
+        key = given[0]
         v = t.number(entry, key, "balance", f"plane {name}'s {key}", i)
         if not v > 0:
             raise t.fail(f"balancing plane {name}'s {key} must be positive, got {v:g}",
                          "balance", key, i)
+        mass = mass_or_weight(t, entry, "balance", i, f"balancing plane {name}")[0] \
+            if key != "radius" else None
         planes.append(Plane(name, t.number(entry, "plane", "balance",
                                            f"plane {name}'s position", i, 0.0) * metre,
-                            v * metre if key == "radius" else None,
-                            v if key == "mass" else None))
+                            v * metre if key == "radius" else None, mass))
     if len(planes) == 2 and planes[0].position == planes[1].position:
         raise t.fail(f"the balancing planes {planes[0].name} and {planes[1].name} stand at the "
                      "same axial position: two planes must be apart to hold a couple",
