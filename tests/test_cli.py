@@ -154,7 +154,8 @@ def test_bad_file_is_one_line_with_file_and_line(mech_file, tmp_path, edit, mess
                         "differential-near-equal, gearbox-power-efficiency, "
                         "involute-pair, output-speed-given, planetary-q1, planetary-q2, "
                         "planetary-q3, planetary-q4, planetary-ratio-least-teeth, "
-                        "ratio-least-teeth, ratio-only, reverted-train-design, shafts-apart, "
+                        "ratio-least-teeth, ratio-only, reverted-train-design, "
+                        "reverted-two-modules, shafts-apart, "
                         "sun-and-planet, "
                         "teeth-implied, two-planets-listed, two-speeds-arm-and-sun, "
                         "base-circle-for-pressure-angle, circular-arc-flat-face, "
@@ -298,7 +299,8 @@ def test_list_shows_the_bundled_examples():
                    "differential-near-equal", "gearbox-power-efficiency", "involute-pair",
                    "output-speed-given", "planetary-q1", "planetary-q2", "planetary-q3",
                    "planetary-q4", "planetary-ratio-least-teeth", "ratio-least-teeth",
-                   "ratio-only", "reverted-train-design", "shafts-apart", "sun-and-planet",
+                   "ratio-only", "reverted-train-design", "reverted-two-modules", "shafts-apart",
+                   "sun-and-planet",
                    "teeth-implied",
                    "two-planets-listed", "two-speeds-arm-and-sun",
                    "base-circle-for-pressure-angle", "circular-arc-flat-face",
