@@ -92,9 +92,10 @@ class Mass:
     assumed: str = ""
     centre_name: str = ""
     """How the file named the centre: a point ("A"), "mid" or ""."""
-    swing: tuple[float, float, str] | None = None
+    swing: tuple[float, float, str, bool] | None = None
     """A pendulum test the inertia comes from: its period (s), the distance h (m) from the
-    point of suspension to G, and that point as the file names it."""
+    point of suspension to G, that point as the file names it, and whether it hung on a
+    knife edge in that pin's bore."""
 
 
 def pendulum_radius(period: float, h: float, g: float = GRAVITY) -> float:

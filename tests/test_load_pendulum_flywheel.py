@@ -166,6 +166,15 @@ def test_e3b_try_pendulum(tmp_path):
         again, _ = _quantities(tmp_path, VERTICAL.replace("{inertia}", inertia), "again")
         assert again["T2"] == pytest.approx(given_k["T2"], rel=1e-12)
 
+    # on a knife edge in the small end's 80 mm bore, h = 1.2 + 0.04 m
+    h = 1.24
+    edge = math.sqrt(GRAVITY * h * (22 / 8) ** 2 / (4 * math.pi ** 2) - h * h)
+    knife, steps = _quantities(tmp_path, VERTICAL.replace(
+        "{inertia}", 'oscillations = { count = 8, seconds = 22, about = "P", bore = 80 }'),
+        "knife")
+    assert knife["rod_radius_of_gyration"] == pytest.approx(edge, rel=1e-14)
+    assert "hung on a knife edge in the bore at P" in steps and "h = 1240 mm" in steps
+
 
 @pytest.mark.parametrize("inertia, words", [
     ('oscillations = { count = 8, seconds = 22, about = "Q" }', "no point 'Q'"),
@@ -175,6 +184,7 @@ def test_e3b_try_pendulum(tmp_path):
     ('oscillations = { count = 8, seconds = 22, about = [800, 0] }', "from its centre"),
     ('oscillations = { count = 0, seconds = 22, about = "P" }', "must be positive"),
     ('oscillations = { count = 8, seconds = 22, about = "P", at = 1 }', "unknown setting 'at'"),
+    ('oscillations = { count = 8, seconds = 22, about = [0, 0], bore = 80 }', "about = \"P\""),
     ('radius_of_gyration = 900\noscillations = { period = 2.75, about = "P" }', "twice"),
 ])
 def test_a_bad_pendulum_is_refused_at_its_line(inertia, words, tmp_path):

@@ -120,11 +120,12 @@ def inertia_loads(work, loads: Loads, at) -> dict[int, tuple[Vec, float]]:
 def _say_pendulum(c, m, at) -> None:
     """The step that finds a link's inertia from its pendulum test: hung h from G it swings
     as a compound pendulum, T = 2π·√((k² + h²)/(g·h)), so k² = g·h·T²/(4π²) − h²."""
-    period, h, about = m.swing
+    period, h, about, knife = m.swing
     k = pendulum_radius(period, h)
     c.draw(f"force:say:pendulum{m.link}", "mark", at, phrase=phrase(
-        "force.pendulum", link=m.link, about=about, period=as_said(period, "s", ".6g"),
-        h=as_said(h * 1e3, "mm", ".6g"), k=as_said(k * 1e3, "mm", ".6g"),
+        "force.pendulum_knife" if knife else "force.pendulum", link=m.link, about=about,
+        period=as_said(period, "s", ".6g"), h=as_said(h * 1e3, "mm", ".6g"),
+        k=as_said(k * 1e3, "mm", ".6g"),
         inertia=as_said(m.inertia, "kg·m²", ".6g")))
 
 

@@ -10,6 +10,11 @@ PHRASES: dict[str, str] = {
                       "as a compound pendulum in T = {period}: T = 2π·√((k² + h²)/(g·h)), so "
                       "its radius of gyration about G{link} is k = √(g·h·T²/(4π²) − h²) = {k} "
                       "and I = m·k² = {inertia}.",
+    "force.pendulum_knife": "Link {link}, hung on a knife edge in the bore at {about}, swings "
+                            "about the bore's top (h = {h} from G{link}, the pin's distance "
+                            "and half the bore) as a compound pendulum in T = {period}: T = "
+                            "2π·√((k² + h²)/(g·h)), so its radius of gyration about G{link} is "
+                            "k = √(g·h·T²/(4π²) − h²) = {k} and I = m·k² = {inertia}.",
     "force.flywheel": "The flywheel, I = {inertia}, against the mean resisting torque "
                       "T_mean = {mean}: its angular acceleration α = (T − T_mean)/I = "
                       "{alpha}, T = {torque} the turning moment along the rotation (+ the "

@@ -56,7 +56,7 @@ def efforts(mech: Mechanism, kin: Kinematics, loads: Loads, statics: Statics
         m = loads.mass_of(rod[0]) if rod else None
         if m is not None and m.swing is not None:
             # the pendulum about its point of suspension: m·g·h·T²/(4π²) = I_P = m·(k² + h²)
-            period, h, _ = m.swing
+            period, h, _, _ = m.swing
             k2 = GRAVITY * h * period ** 2 / (4 * math.pi ** 2) - h * h
             out["rod_radius_of_gyration"] = math.sqrt(k2)
         elif m is not None and m.inertia > 0.0:

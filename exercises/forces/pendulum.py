@@ -3,9 +3,11 @@
 
 Hung from a point P a distance h from its centre of mass G, a link swings as a compound
 pendulum of period T = 2π·√((k² + h²)/(g·h)), k its radius of gyration about G; so
-k² = g·h·T²/(4π²) − h² and I_G = m·k². The point of suspension is a point of the link (a
-pin's bore, a knife edge there) or [x, y] in the link's own frame; g is 9.81 m/s² whether
-or not the file's weights are drawn, for the test was made on the earth.
+k² = g·h·T²/(4π²) − h² and I_G = m·k². The point of suspension is a point of the link (the
+pin it hangs from) or [x, y] in the link's own frame; hung on a knife edge in a pin's
+``bore`` (its diameter), it swings about the bore's top, half the bore farther from G. g
+is 9.81 m/s² whether or not the file's weights are drawn, for the test was made on the
+earth.
 """
 
 from __future__ import annotations
@@ -18,16 +20,16 @@ from ..file_numbers import file_number
 
 __all__ = ["OSCILLATION_KEYS", "pendulum_inertia"]
 
-OSCILLATION_KEYS = ("count", "seconds", "period", "about")
+OSCILLATION_KEYS = ("count", "seconds", "period", "about", "bore")
 
 
 def pendulum_inertia(raw: Any, link, mass: float, centre: tuple[float, float], metre: float,
                      fail: Callable[[str], Exception]
-                     ) -> tuple[float, str, tuple[float, float, str]]:
+                     ) -> tuple[float, str, tuple[float, float, str, bool]]:
     """Link ``link``'s I about its centre ``centre`` (its own frame, m) from ``oscillations
     = { count = 8, seconds = 22, about = "P" }`` (or ``period = 2.75``, s), and the words
     that say how: k from the compound pendulum, I = m·k²; and the test (T s, h m, the
-    point as named) for its step.
+    point as named, whether on a knife edge in its bore) for its step.
 
     Raises
     ------
@@ -78,6 +80,12 @@ def pendulum_inertia(raw: Any, link, mass: float, centre: tuple[float, float], m
         raise fail("about is the point the link hangs from: a point of it (\"P\", the "
                    "gudgeon pin) or [x, y] in its own frame")
     h = math.dist(point, centre)
+    if "bore" in raw:
+        if not isinstance(about, str):
+            raise fail("bore is the diameter of the pin's bore the knife edge is in: hang it "
+                       "about a point of the link, about = \"P\"")
+        # the knife edge bears on the top of the bore, G hanging below the pin's centre
+        h += positive("bore", "the bore's diameter") * metre / 2
     if not h > 0:
         raise fail(f"{link.label} hangs from its centre of mass at {said}: a pendulum swings "
                    "about a point off it")
@@ -87,4 +95,5 @@ def pendulum_inertia(raw: Any, link, mass: float, centre: tuple[float, float], m
         raise fail(f"a body hung {h / metre:g} from its centre swings in at least "
                    f"2π·√(h/g) = {least:.4g} s, but the period is {period:.4g} s")
     return mass * k * k, (f"k = √(g·h·T²/(4π²) − h²) = {k / metre:.6g}, hung from {said}, "
-                          f"h = {h / metre:.6g}, T = {period:.6g} s"), (period, h, said)
+                          f"h = {h / metre:.6g}, T = {period:.6g} s"), (period, h, said,
+                                                                         "bore" in raw)
