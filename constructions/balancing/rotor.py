@@ -55,6 +55,9 @@ class Rotor:
     about: float | None = None
     """Where no balancing plane is given, the plane (m) its out-of-balance couple is taken
     about (None: midway between the outermost masses)."""
+    bearings: tuple[tuple[str, float], ...] = ()
+    """Where no balancing plane is given, two bearings (name, position in m) whose
+    out-of-balance forces are asked."""
 
 
 @dataclass(frozen=True)

@@ -146,6 +146,14 @@ WORDS: dict[str, str] = {
         "با وزن آن، W = m·g، داده می‌شود",
     "plane {plane}: the balance weight {weight} N at {radius}":
         "صفحهٔ {plane}: وزن متعادل‌کننده {weight} N در شعاع {radius}",
+    "plane {plane}: the out-of-balance force on a bearing there, m·r·ω² = {force} N at "
+    "{angle}° (ω = {speed} rad/s)":
+        "صفحهٔ {plane}: نیروی نامیزان روی یاتاقانی در آن، m·r·ω² = {force} N با زاویهٔ "
+        "{angle}° (ω = {speed} rad/s)",
+    "bearing {name} at {place}: the out-of-balance force {force} N at {angle}°, the force and "
+    "the couple shared between the bearings by moments":
+        "یاتاقان {name} در {place}: نیروی نامیزان {force} N با زاویهٔ {angle}°؛ نیرو و کوپل "
+        "با گشتاورگیری میان یاتاقان‌ها تقسیم شده‌اند",
     "2-1, between": "۲-۱، میان", "2-2, outside": "۲-۲، بیرون از",
     "the masses lie in one axial plane: one mass of m·r = {size} kg·m at {angle}° in the plane "
     "at {place} balances force and couple together (the notes' case {case} the masses' planes: "

@@ -38,6 +38,8 @@ from .rotor_unbalance import (unbalance, unbalance_checked, unbalance_lines,
                               unbalance_misses)
 from .rotor_file import BalanceExercise
 from .rotor_weights import weight_checked, weight_line, weights_line
+from .bearing_forces import (bearing_checked, bearing_lines, bearing_misses,
+                             plane_force_checked, plane_force_lines)
 
 __all__ = ["BalanceSolution", "solve_balance"]
 
@@ -118,6 +120,7 @@ class BalanceSolution(ChapterFiles):
         out = [] if self.closure is None else open_misses(self.closure, self.exercise.open)
         if self.unbalance is not None:
             out += unbalance_misses(self.exercise.rotor, self.unbalance)
+            out += bearing_misses(self.exercise.rotor, self.unbalance)
         if self.balance is not None:
             force_scale, couple_scale, product_scale = self.scales
             for name, want in self.expected.items():
@@ -247,7 +250,8 @@ class BalanceSolution(ChapterFiles):
         if self.unbalance is not None:
             verdict = words("each where the vector sum puts it") if self.passed else \
                 f"OFF: {', '.join(self.failures)}"
-            return unbalance_lines(r, self.unbalance, self._length) + [
+            return unbalance_lines(r, self.unbalance, self._length) + bearing_lines(
+                r, self.unbalance, self._length) + [
                 words("polygons closed: {verdict}", verdict=verdict)]
         out = [weights_line()] if self.exercise.weights else []
         noise = rounding([m.mass * m.radius for m in r.masses])
@@ -278,6 +282,7 @@ class BalanceSolution(ChapterFiles):
                              radius=self._length(radius)))
             if self.exercise.weights:
                 out.append(weight_line(p.name, mass, self._length(radius)))
+        out += plane_force_lines(self)
         if len(r.planes) == 1 and len({m.plane for m in r.masses}) > 1:
             arms = [(m, m.plane - r.planes[0].position) for m in r.masses]
             couple = math.hypot(*(math.fsum(m.mr[i] * arm for m, arm in arms) for i in (0, 1)))
@@ -375,7 +380,8 @@ class BalanceSolution(ChapterFiles):
         if ex.engine is not None:
             q |= self._engine_checked()
         if self.unbalance is not None:
-            return unbalance_checked(ex.rotor, self.unbalance)
+            return unbalance_checked(ex.rotor, self.unbalance) | bearing_checked(
+                ex.rotor, self.unbalance)
         if ex.rotor is not None:
             method = "force polygon" if len(self.expected) == 1 else "couple and force polygons"
             for name, want in self.expected.items():
@@ -387,6 +393,7 @@ class BalanceSolution(ChapterFiles):
                                           {"value": [w + 0.0 for w in want]}, method=method)
             for p in ex.rotor.planes:
                 q |= self._balance_mass(p, method)
+            q |= plane_force_checked(self)
             if ex.engine is not None:
                 q |= left_checked(self)
         return q

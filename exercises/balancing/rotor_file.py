@@ -35,7 +35,7 @@ _NAME = re.compile(rf"^[^\s\x00-\x1f\x7f-\x9f\u202a-\u202e\u2066-\u2069]{{1,{_NA
 
 _UNITS = ("length", "speed")
 """The units a balancing file states; masses are always kg and weights N."""
-_KEYS = {"rotor": ("speed", "about"),
+_KEYS = {"rotor": ("speed", "about", "bearings"),
          "mass": ("name", "mass", "weight", "radius", "angle", "plane", "between"),
          "balance": ("name", "plane", "radius", "mass", "weight"),
          "engine": ("speed", "crank", "stroke", "rod", "reciprocating", "balanced", "at",
@@ -116,7 +116,9 @@ def parse_balance(text: str, filename: str = "<string>", exercise_id: str = "rot
     speed = _speed(t, "rotor", needed=not planes)
     weights = any("weight" in e for table in ("mass", "balance") for e in t.entries(table))
     return BalanceExercise(rotor=Rotor(tuple(masses), tuple(planes), speed,
-                                       _about(t, planes, metre)), weights=weights, **common)
+                                       _about(t, planes, metre),
+                                       _bearings(t, planes, metre, taken)),
+                           weights=weights, **common)
 
 
 def _about(t: Tables, planes: list, metre: float) -> float | None:
@@ -130,6 +132,33 @@ def _about(t: Tables, planes: list, metre: float) -> float | None:
                      "planes; a balance takes its couples about plane A: leave it out",
                      "rotor", "about")
     return t.number(one, "about", "rotor", "the reference plane") * metre
+
+
+def _bearings(t: Tables, planes: list, metre: float, taken: dict[str, str]
+              ) -> tuple[tuple[str, float], ...]:
+    """``[rotor] bearings = { L = 0, R = 800 }``: the two bearings of a rotor with no
+    balancing plane, whose out-of-balance forces are asked (a balance's planes give theirs)."""
+    one = _one(t, "rotor")
+    if "bearings" not in one:
+        return ()
+    given = one["bearings"]
+    if planes:
+        raise t.fail("bearings are asked their forces on a rotor with no [[balance]] planes; a "
+                     "balance gives each plane's force (force_A): leave them out", "rotor",
+                     "bearings")
+    if not (isinstance(given, dict) and len(given) == 2):
+        raise t.fail("bearings names the rotor's two bearings and their planes: bearings = "
+                     f"{{ L = 0, R = 800 }}, got {given!r:.40}", "rotor", "bearings")
+    out = []
+    for name in given:
+        if not _NAME.match(name) or name in taken:
+            raise t.fail(f"bearing {name!r:.20} needs a short name of its own, not a mass's",
+                         "rotor", "bearings")
+        out.append((name, t.number(given, name, "rotor", f"bearing {name}'s plane") * metre))
+    if out[0][1] == out[1][1]:
+        raise t.fail("the two bearings stand at the same axial position: they must be apart to "
+                     "share a couple", "rotor", "bearings")
+    return tuple(out)
 
 
 def _one(t: Tables, table: str) -> dict:
