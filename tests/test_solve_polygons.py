@@ -129,7 +129,7 @@ def test_time_positions_follow_the_input_motion():
 
 @pytest.mark.parametrize("at, words", [
     ('"90"', "at must be a list of positions"),
-    ("[{ angel = 90 }]", "gives one of angle or time"),
+    ("[{ angel = 90 }]", "gives one of angle, time, stroke"),
     ('[{ time = "soon" }]', "time in at must be a number"),
     ("[{ angle = 90 }, { angle = 90 }]", "the same position twice"),
 ])
