@@ -51,7 +51,9 @@ def _value(results: dict, name: str, position: int | None,
     where = results.get("quantities", {}) if position is None else \
         results["positions"][position - 1].get("quantities", {})
     entry = where.get(name)
-    return None if entry is None or field not in entry else float(entry[field])
+    if entry is None or entry.get(field) is None:     # absent, or null (an infinite peak)
+        return None
+    return float(entry[field])
 
 
 def outcomes(path: Path) -> list[tuple[str, str, str]]:
