@@ -21,6 +21,7 @@ from hypothesis import strategies as st
 from tarsim.constructions.errors import InputError
 from tarsim.exercises.balancing.balance_solution import solve_balance
 from tarsim.exercises.balancing.rotor_file import parse_balance
+from tarsim.exercises.catalog import bundled, load
 
 ROTOR = """
 [units]
@@ -236,3 +237,10 @@ def test_bearings_beside_balancing_planes_are_refused():
     text = (SHAFT + PLANES).replace("speed = 200", "speed = 200\nbearings = { L = 0, R = 800 }")
     with pytest.raises(InputError, match=r"^shaft.toml:7: bearings are asked"):
         parse_balance(text, "shaft.toml")
+
+
+def test_an_engines_balance_planes_give_no_bearing_force():
+    """An engine's balance planes are its wheels: their hammer blow is asked, not a bearing's
+    load, so no force_A."""
+    q = solve_balance(load(bundled("balancing")["locomotive"])).results["quantities"]
+    assert "hammer_blow_A" in q and not any(k.startswith("force_") for k in q)

@@ -161,11 +161,11 @@ def test_bad_file_is_one_line_with_file_and_line(mech_file, tmp_path, edit, mess
                         "base-circle-for-pressure-angle, circular-arc-flat-face, "
                         "eccentric-flat-face, offset-knife-edge, "
                         "oscillating-roller, roller-harmonic-cycloidal, tangent-cam-roller, "
-                        "valve-unequal-acceleration, four-mass-shaft, "
+                        "valve-unequal-acceleration, bearing-forces, four-mass-shaft, "
                         "four-masses-one-plane, inline-four, inline-three, locomotive, "
                         "notes-example-1, single-cylinder-balance-mass, single-cylinder, "
                         "three-masses-between, two-stroke-four, unknown-angles, "
-                        "unknown-plane-and-angle, unknown-planes, v-twin, "
+                        "unknown-plane-and-angle, unknown-planes, v-twin, weights-one-plane, "
                         "engine-harmonic-torque, "
                         "petrol-engine-areas, punch-sheared-area, punching-press, "
                         "single-cylinder-table\n"),
@@ -306,11 +306,12 @@ def test_list_shows_the_bundled_examples():
                    "base-circle-for-pressure-angle", "circular-arc-flat-face",
                    "eccentric-flat-face", "offset-knife-edge",
                    "oscillating-roller", "roller-harmonic-cycloidal", "tangent-cam-roller",
-                   "valve-unequal-acceleration", "four-mass-shaft",
+                   "valve-unequal-acceleration", "bearing-forces", "four-mass-shaft",
                    "four-masses-one-plane", "inline-four", "inline-three", "locomotive",
                    "notes-example-1", "single-cylinder-balance-mass", "single-cylinder",
                    "three-masses-between", "two-stroke-four", "unknown-angles",
                    "unknown-plane-and-angle", "unknown-planes", "v-twin",
+                   "weights-one-plane",
                    "engine-harmonic-torque",
                    "petrol-engine-areas", "punch-sheared-area", "punching-press",
                    "single-cylinder-table"]

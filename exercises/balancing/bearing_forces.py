@@ -40,9 +40,10 @@ def _loads(s) -> dict[str, tuple[float, float]]:
 
 
 def plane_force_lines(s) -> list[str]:
-    """A two-plane balance's force on a bearing in each plane, where the speed is given."""
+    """A two-plane balance's force on a bearing in each plane, where the speed is given (a
+    rotor's: an engine's balance planes are its wheels, whose hammer blow is asked)."""
     r = s.exercise.rotor
-    if len(r.planes) != 2 or r.speed is None:
+    if len(r.planes) != 2 or r.speed is None or s.exercise.engine is not None:
         return []
     return [words("plane {plane}: the out-of-balance force on a bearing there, m·r·ω² = {force} "
                   "N at {angle}° (ω = {speed} rad/s)", plane=name,
@@ -53,7 +54,7 @@ def plane_force_lines(s) -> list[str]:
 def plane_force_checked(s) -> dict[str, Checked]:
     """``force_<plane>`` (N): each plane's balancing product × ω², beside the closed form's."""
     r = s.exercise.rotor
-    if len(r.planes) != 2 or r.speed is None:
+    if len(r.planes) != 2 or r.speed is None or s.exercise.engine is not None:
         return {}
     w2 = r.speed ** 2
     return {f"force_{name}": Checked(
