@@ -90,6 +90,18 @@ def test_three_weights_one_plane_give_the_balance_weight_in_n():
     assert any("balance weight 24.6661 N" in line for line in s.lines())
 
 
+def test_a_file_of_weights_is_drawn_in_n():
+    """The end view and the table give each weight as the file did (60 N, not 6.116 kg), and
+    the balance weight found, 24.67 N (|Σ Wᵢrᵢ e^{iθᵢ}|/0.2 to the table's 4 figures)."""
+    figures = solve_balance(parse_balance(WEIGHTS, "weights.toml")).figures
+    table = [t.text for t in figures["table"].items if hasattr(t, "text")]
+    assert "W (N)" in table and "60" in table and "m (kg)" not in table
+    assert f"{abs(_sum_of_weights()) / 0.2:.4g}" in table
+    assert "m = W/g, g = 9.81 m/s²" in table
+    space = [t.text for t in figures["space"].items if hasattr(t, "text")]
+    assert "1: 60 N at 150 mm, 0°" in space
+
+
 def test_a_stated_balance_weight_gives_its_radius():
     """A balance weight of 20 N goes at r_B = |Σ Wᵢrᵢ e^{iθᵢ}|/20."""
     text = WEIGHTS.replace("radius = 200", "weight = 20")

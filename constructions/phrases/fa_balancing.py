@@ -24,6 +24,7 @@ WORDS: dict[str, str] = {
     "dashed one), counter-clockwise":
         "نمای انتهایی: هر جرم روی خط شعاعی خود؛ زاویه\u200cها از شعاع مرجع (خط\u200cچین "
         "کوتاه)، پادساعتگرد",
+    "m = W/g, g = {g} m/s²": "m = W/g، g = {g} m/s²",
     "a mass": "یک جرم", "a balancing mass found": "جرم متعادل\u200cکنندهٔ به\u200cدست\u200cآمده",
     "side view: the planes along the shaft, positions in {unit}":
         "نمای جانبی: صفحه\u200cها در امتداد محور، موقعیت\u200cها بر حسب {unit}",

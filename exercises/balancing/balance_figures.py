@@ -22,6 +22,7 @@ from tarsim.graphics.plot import PlotMark, Series, draw_line_plot
 from tarsim.graphics.train_table import draw_train_table
 from .open_rotor_solution import open_figures
 from .rotor_unbalance import unbalance_figures
+from .rotor_weights import GRAVITY
 from .vee_engine import vee_figure
 
 if TYPE_CHECKING:
@@ -81,16 +82,18 @@ def _engine_figures(s: BalanceSolution) -> dict[str, Figure]:
 
 def _rotor_figures(s: BalanceSolution, unit: str, metre: float) -> dict[str, Figure]:
     ex, r, b = s.exercise, s.exercise.rotor, s.balance
-    masses = [(m.name, m.radius, _mass_words(m.name, f"{m.mass:g}", f"{m.radius / metre:g}",
-                                             unit, f"{math.degrees(m.angle):g}"))
+    g = GRAVITY if ex.weights else 1.0      # a file of weights is drawn in N, as it gave them
+    masses = [(m.name, m.radius, _mass_words(m.name, f"{m.mass * g:.6g}", f"{m.radius / metre:g}",
+                                             unit, f"{math.degrees(m.angle):g}", ex.weights))
               for m in r.masses]
     found = []
     for p in r.planes:
         if p.name in b.none:        # no mass to draw, and a zero product has no angle
             continue
         v, mass, radius = s.placed(p)
-        found.append((_mass_words(p.name, f"{mass:.4g}", f"{radius / metre:.4g}", unit,
-                                  f"{angle_deg(v):.2f}"), math.atan2(v[1], v[0]), radius))
+        found.append((_mass_words(p.name, f"{mass * g:.4g}", f"{radius / metre:.4g}", unit,
+                                  f"{angle_deg(v):.2f}", ex.weights), math.atan2(v[1], v[0]),
+                       radius))
     out = {"space": draw_end_view(b.construction, masses,
                                   words("{name}: space diagram", name=ex.name),
                                   unit, metre, found)}
@@ -125,12 +128,14 @@ def _table(s: BalanceSolution, unit: str, metre: float) -> Figure:
     two = len(r.planes) == 2
     flat = not two and len({m.plane for m in r.masses} | {ref}) == 1   # one plane: no l
     length, kg = unit_words(unit), unit_words("kg")
-    heads = [f"m ({kg})", f"r ({length})", "θ"] + ([] if flat else [f"l ({length})"]) + [
+    g = GRAVITY if s.exercise.weights else 1.0      # weights in N, as the file gave them
+    heads = [f"W ({unit_words('N')})" if s.exercise.weights else f"m ({kg})", f"r ({length})",
+             "θ"] + ([] if flat else [f"l ({length})"]) + [
         f"m·r ({unit_words('kg·m')})"] + ([f"m·r·l ({unit_words('kg·m²')})"] if two else [])
     rows = []
     for m in r.masses:
         rows.append((m.name, [numerals(t) for t in [
-            f"{m.mass:g}", f"{m.radius / metre:g}", f"{math.degrees(m.angle):g}°"]
+            f"{m.mass * g:.6g}", f"{m.radius / metre:g}", f"{math.degrees(m.angle):g}°"]
             + ([] if flat else [f"{(m.plane - ref) / metre:g}"])
             + [f"{m.mass * m.radius:.4g}"] + (
             [f"{m.mass * m.radius * (m.plane - ref):.4g}"] if two else [])]))
@@ -139,10 +144,10 @@ def _table(s: BalanceSolution, unit: str, metre: float) -> Figure:
         v, mass, radius = s.placed(p)
         size = math.hypot(*v)
         if p in none:       # the given mass or radius stands, the rest is nothing found
-            cells = [f"{mass:.4g}" if p.mass else "—",
+            cells = [f"{mass * g:.4g}" if p.mass else "—",
                      f"{radius / metre:.4g}" if p.radius else "—", "—"]
         else:
-            cells = [f"{mass:.4g}", f"{radius / metre:.4g}", f"{angle_deg(v):.2f}°"]
+            cells = [f"{mass * g:.4g}", f"{radius / metre:.4g}", f"{angle_deg(v):.2f}°"]
         rows.append((p.name, [numerals(t) for t in cells
                               + ([] if flat else [f"{(p.position - ref) / metre:g}"])
                               + [f"{size:.4g}"]
@@ -150,6 +155,8 @@ def _table(s: BalanceSolution, unit: str, metre: float) -> Figure:
     notes = [("" if flat else words("l from the reference plane {plane}; ",
                                     plane=r.planes[0].name))
              + words("the rows under the rule are the balancing masses found")]
+    if s.exercise.weights:
+        notes.append(words("m = W/g, g = {g} m/s²", g=numerals(f"{GRAVITY:g}")))
     notes += [words("plane {plane} needs no balancing mass: its polygon closes on itself",
                     plane=p.name) for p in none]
     return draw_train_table(words("{name}: the table", name=s.exercise.name), heads, rows,
@@ -195,11 +202,14 @@ def _single_cylinder_plot(e, held, unit: str, metre: float) -> Figure:
                           mark_legend=words("at θ = {angle}°", angle=numerals(f"{at:g}")))
 
 
-def _mass_words(name: str, mass: str, radius: str, unit: str, angle: str) -> str:
-    """A mass as the end view names it, "A: 200 kg at 300 mm, 45°", in the language being
-    spoken (the numbers come formatted)."""
+def _mass_words(name: str, mass: str, radius: str, unit: str, angle: str,
+                weight: bool = False) -> str:
+    """A mass as the end view names it, "A: 200 kg at 300 mm, 45°" (its weight, "60 N",
+    where the file gives weights), in the language being spoken (the numbers come
+    formatted)."""
     return words("{name}: {mass} {kg} at {radius} {unit}, {angle}°", name=name,
-                 mass=numerals(mass), kg=unit_words("kg"), radius=numerals(radius),
+                 mass=numerals(mass), kg=unit_words("N" if weight else "kg"),
+                 radius=numerals(radius),
                  unit=unit_words(unit), angle=numerals(angle))
 
 
