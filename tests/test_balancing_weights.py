@@ -256,3 +256,14 @@ def test_an_engines_balance_planes_give_no_bearing_force():
     load, so no force_A."""
     q = solve_balance(load(bundled("balancing")["locomotive"])).results["quantities"]
     assert "hammer_blow_A" in q and not any(k.startswith("force_") for k in q)
+
+
+def test_an_unbalanced_rotor_of_weights_gives_its_force_in_n():
+    """With no balancing plane, |Σ Wᵢrᵢ e^{iθᵢ}|·ω²/g (N) at 10 rad/s, each weight named in N
+    on the end view."""
+    text = WEIGHTS[:WEIGHTS.index("[[balance]]")].replace("[rotor]", "[rotor]\nspeed = 10")
+    s = solve_balance(parse_balance(text, "weights.toml"))
+    assert s.results["quantities"]["unbalanced_force"]["value"] == pytest.approx(
+        abs(_sum_of_weights()) * 100 / 9.81, rel=1e-12)
+    space = [t.text for t in s.figures["space"].items if hasattr(t, "text")]
+    assert "2: 80 N at 100 mm, 90°" in space

@@ -45,7 +45,8 @@ def balance_figures(s: BalanceSolution) -> dict[str, Figure]:
         return open_figures(ex.name, s.closure, ex.open, unit) | (
             _engine_figures(s) if ex.engine else {})
     if ex.engine is None and s.unbalance is not None:
-        return unbalance_figures(ex.name, ex.rotor, s.unbalance, unit, metre)
+        return unbalance_figures(ex.name, ex.rotor, s.unbalance, unit, metre,
+                                 GRAVITY if ex.weights else None)
     if ex.engine is None:
         return _rotor_figures(s, unit, metre)
     e = ex.engine

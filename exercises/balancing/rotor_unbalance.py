@@ -97,11 +97,13 @@ def unbalance_lines(r, u: Unbalance, length) -> list[str]:
     return out
 
 
-def unbalance_figures(name: str, r, u: Unbalance, unit: str, metre: float) -> dict[str, Figure]:
-    """The end view, the side view (planes apart) and the polygons."""
+def unbalance_figures(name: str, r, u: Unbalance, unit: str, metre: float,
+                      g: float | None = None) -> dict[str, Figure]:
+    """The end view, the side view (planes apart) and the polygons; ``g`` where the file
+    gives weights, each then named in N as it was given."""
     masses = [(m.name, m.radius, words("{name}: {mass} {kg} at {radius} {unit}, {angle}°",
-                                       name=m.name, mass=numerals(f"{m.mass:g}"),
-                                       kg=unit_words("kg"),
+                                       name=m.name, mass=numerals(f"{m.mass * (g or 1):.6g}"),
+                                       kg=unit_words("N" if g else "kg"),
                                        radius=numerals(f"{m.radius / metre:g}"),
                                        unit=unit_words(unit),
                                        angle=numerals(f"{math.degrees(m.angle):g}")))
