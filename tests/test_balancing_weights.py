@@ -87,7 +87,7 @@ def test_three_weights_one_plane_give_the_balance_weight_in_n():
     assert q["angle_B"]["value"] == pytest.approx(
         math.degrees(cmath.phase(-total)) % 360, abs=1e-9)
     assert any("g = 9.81 m/s²" in line for line in s.lines())
-    assert any("balance weight 24.6661 N" in line for line in s.lines())
+    assert "the balance weight in plane B: 24.6661 N at 200 mm" in s.lines()
 
 
 def test_a_file_of_weights_is_drawn_in_n():
@@ -267,3 +267,12 @@ def test_an_unbalanced_rotor_of_weights_gives_its_force_in_n():
         abs(_sum_of_weights()) * 100 / 9.81, rel=1e-12)
     space = [t.text for t in s.figures["space"].items if hasattr(t, "text")]
     assert "2: 80 N at 100 mm, 90°" in space
+
+
+def test_a_planes_own_line_stays_one():
+    """The balancing mass's line is the one line that begins "plane L:" (the random rotors'
+    oracle reads it so); the weight and the bearing's force are said on lines of their own."""
+    text = (SHAFT + PLANES).replace("mass = 4", "weight = 39.24")
+    lines = solve_balance(parse_balance(text, "shaft.toml")).lines()
+    assert [ln for ln in lines if ln.startswith("plane L:")] == [
+        next(ln for ln in lines if ln.startswith("plane L: balancing m·r"))]

@@ -145,11 +145,11 @@ WORDS: dict[str, str] = {
     "given back as its weight W = m·g":
         "وزن‌ها بر حسب N‌اند: جرم هر یک m = W/g است، با g = {g} m/s²، و هر جرم متعادل‌کننده "
         "با وزن آن، W = m·g، داده می‌شود",
-    "plane {plane}: the balance weight {weight} N at {radius}":
-        "صفحهٔ {plane}: وزن متعادل‌کننده {weight} N در شعاع {radius}",
-    "plane {plane}: the out-of-balance force on a bearing there, m·r·ω² = {force} N at "
+    "the balance weight in plane {plane}: {weight} N at {radius}":
+        "وزن متعادل‌کننده در صفحهٔ {plane}: {weight} N در شعاع {radius}",
+    "the out-of-balance force on a bearing in plane {plane}: m·r·ω² = {force} N at "
     "{angle}° (ω = {speed} rad/s)":
-        "صفحهٔ {plane}: نیروی نامیزان روی یاتاقانی در آن، m·r·ω² = {force} N با زاویهٔ "
+        "نیروی نامیزان روی یاتاقانی در صفحهٔ {plane}: m·r·ω² = {force} N با زاویهٔ "
         "{angle}° (ω = {speed} rad/s)",
     "bearing {name} at {place}: the out-of-balance force {force} N at {angle}°, the force and "
     "the couple shared between the bearings by moments":

@@ -45,7 +45,7 @@ def plane_force_lines(s) -> list[str]:
     r = s.exercise.rotor
     if len(r.planes) != 2 or r.speed is None or s.exercise.engine is not None:
         return []
-    return [words("plane {plane}: the out-of-balance force on a bearing there, m·r·ω² = {force} "
+    return [words("the out-of-balance force on a bearing in plane {plane}: m·r·ω² = {force} "
                   "N at {angle}° (ω = {speed} rad/s)", plane=name,
                   force=numeral(math.hypot(*v) * r.speed ** 2), angle=numeral(_angle(v), ".2f"),
                   speed=numeral(r.speed)) for name, v in _loads(s).items()]

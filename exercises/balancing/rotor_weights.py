@@ -47,7 +47,7 @@ def weights_line() -> str:
 
 def weight_line(plane: str, mass: float, radius: str) -> str:
     """A balancing mass found, said as the books ask it, a balance weight in N."""
-    return words("plane {plane}: the balance weight {weight} N at {radius}", plane=plane,
+    return words("the balance weight in plane {plane}: {weight} N at {radius}", plane=plane,
                  weight=numeral(mass * GRAVITY), radius=radius)
 
 
