@@ -12,7 +12,9 @@ piston, a ram) needs none, for its inertia couple I·α is 0. A gas force may be
 books give it, a pressure on the piston's bore (or area): p·A along the line of stroke
 toward the crank. ``[forces]`` may give the engine's ``power`` (W) or ``mean_torque`` (N·m)
 with its ``flywheel`` (kg·m², or ``{ mass, radius_of_gyration }``): the flywheel's α at the
-position is then (T − T_mean)/I. Every failure is one line naming file:line.
+position is then (T − T_mean)/I. A pressure that changes with the position is a list,
+``pressure = ["0.45 N/mm²", "0.3 N/mm²"]``, one for each of ``[ask] at``'s positions in order
+(:func:`pressures_per_position`). Every failure is one line naming file:line.
 """
 
 from __future__ import annotations
@@ -28,7 +30,7 @@ from ..table_file import Tables
 from ..toml_source import SourceMap
 from .pendulum import pendulum_inertia
 
-__all__ = ["LOAD_TABLES", "read_loads"]
+__all__ = ["LOAD_TABLES", "pressures_per_position", "read_loads"]
 
 LOAD_TABLES = ("forces", "mass", "force", "couple")
 """The top-level tables this module reads; the mechanism reader leaves them alone."""
@@ -42,9 +44,33 @@ _KEYS = {"forces": ("gravity", "driver", "speed_fluctuation", "flywheel", "frict
          "couple": ("link", "moment", "name")}
 
 
+def pressures_per_position(data: dict[str, Any], where: SourceMap, filename: str,
+                           positions: int) -> int:
+    """How many positions the file's pressures are given for: 0 if every pressure is one
+    number, else the positions' count, each list of pressures holding one per position.
+
+    Raises
+    ------
+    InputError
+        Naming file:line: a list whose length is not the count of ``[ask] at``'s positions.
+    """
+    tables = Tables(data, where, filename, _KEYS)
+    lists = [(i, t["pressure"]) for i, t in enumerate(tables.entries("force"))
+             if isinstance(t.get("pressure"), list)]
+    for i, given in lists:
+        if not positions or len(given) != positions:
+            raise tables.fail(
+                "a pressure per position is matched to [ask] at's positions in order: "
+                + (f"{len(given)} pressures here, {positions} positions there; give as many"
+                   if positions else "list them there, at = [{ angle = 30 }, …]"),
+                "force", "pressure", i)
+    return positions if lists else 0
+
+
 def read_loads(data: dict[str, Any], mech: Mechanism, where: SourceMap,
-               filename: str) -> Loads | None:
-    """The loads the file gives (None if it gives none).
+               filename: str, position: int = 0) -> Loads | None:
+    """The loads the file gives (None if it gives none), at the ``position``-th of ``[ask]
+    at``'s positions where a pressure is given per position.
 
     Raises
     ------
@@ -189,6 +215,8 @@ def read_loads(data: dict[str, Any], mech: Mechanism, where: SourceMap,
                        "link's own frame", "force", "point", i)
         name = str(t.get("name", ""))
         if "pressure" in t:
+            if isinstance(t["pressure"], list):
+                t = {**t, "pressure": t["pressure"][position]}
             forces.append(_gas_force(mech, t, n, point, name, metre, i, fail))
             continue
         for key in ("bore", "area", "rod"):

@@ -44,7 +44,7 @@ from tarsim.constructions.units import LENGTH_UNITS
 from tarsim.constructions.narration import significant
 from tarsim.constructions.scales import Stated
 
-from ..forces.loads_file import LOAD_TABLES, read_loads
+from ..forces.loads_file import LOAD_TABLES, pressures_per_position, read_loads
 from ..names import named_in, read_names
 
 if TYPE_CHECKING:
@@ -100,6 +100,9 @@ class Exercise:
     """The sheet the figures are set on (``graphics.paper.PAPERS``): their scales are chosen
     to fill it."""
     loads: Loads | None = None
+    loads_at: tuple[Loads, ...] = ()
+    """The loads at each position, where a pressure is given per position (``loads`` the
+    first's); empty where they are the same at every position."""
     lang: str = "en"
     """The language its steps are written in (``lang = "fa"`` in the file)."""
     names: tuple[tuple[str, str], ...] = ()
@@ -115,7 +118,10 @@ class Exercise:
 
     def at(self, position: Position) -> Exercise:
         """The same exercise at one of its positions (and only that one)."""
-        return replace(self, mechanism=self.mechanism.with_drive(position.drive), positions=())
+        loads = (self.loads_at[self.positions.index(position)] if self.loads_at
+                 else self.loads)
+        return replace(self, mechanism=self.mechanism.with_drive(position.drive), positions=(),
+                       loads=loads, loads_at=())
 
     def named_in(self, lang: str) -> Exercise:
         """The same exercise with its mechanism named in ``lang``, if its file does
@@ -219,7 +225,11 @@ def parse_exercise(text: str, filename: str = "<string>", exercise_id: str = "ex
     data.pop("names", None)
     mech = _Reader(data, where, filename).mechanism()
     ex = _read_ask(ask, mech, where, filename, exercise_id)
+    count = pressures_per_position(loading, where, filename, len(ex.positions))
     loads = read_loads(loading, mech, where, filename)
+    if count:
+        ex = replace(ex, loads_at=tuple(read_loads(loading, mech, where, filename, k)
+                                        for k in range(count)))
     if loads is not None:
         ex = replace(ex, loads=loads)
     elif any(isinstance(a, (A.JointForce, A.DrivingTorque)) for a in ex.asks):
