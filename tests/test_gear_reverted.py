@@ -156,3 +156,19 @@ def test_counts_the_data_cannot_give_are_refused_saying_why(teeth, ratios, least
     with pytest.raises(InputError) as e:
         parse_train(text, "r.toml")
     assert words in str(e.value) and "\n" not in str(e.value) and len(str(e.value)) < 220
+
+
+@pytest.mark.parametrize("coaxial", ["[1, 2]", "[2, 3]", "[1, 3]"])
+def test_coaxial_gears_that_end_no_two_pairs_on_a_shaft_are_refused(coaxial):
+    """A meshing pair, one shaft's two gears, or a gear and its pair's layshaft gear stand
+    no two pairs equally far apart: the condition could not be used, so it is refused."""
+    text = reverted("4", "5", {1: 20, 2: 60}, [("omega3/omega4", F(3))]).replace(
+        "coaxial = [1, 4]", f"coaxial = {coaxial}")
+    with pytest.raises(InputError) as e:
+        parse_train(text, "r.toml")
+    assert str(e.value) == (f"r.toml:1: [coaxial] coaxial = {coaxial} names gears that end no "
+                            "two pairs joined by a shaft: name a reverted train's input and "
+                            "output gears, coaxial = [1, 4]")
+    # named the other way round, the train's ends are as good
+    text = text.replace(f"coaxial = {coaxial}", "coaxial = [4, 1]")
+    assert counts(text) == {1: 20, 2: 60, 3: 16, 4: 48}

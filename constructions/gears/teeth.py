@@ -25,7 +25,7 @@ from ..narration import Phrase, phrase
 from .tabular import carry, fraction_text
 from .train import GearTrain, Mesh
 
-__all__ = ["coaxial_misfit", "coaxial_ties", "imply_teeth", "teeth_from_diameter",
+__all__ = ["coaxial_misfit", "coaxial_pairs", "coaxial_ties", "imply_teeth", "teeth_from_diameter",
            "teeth_from_ratio", "unknown_teeth"]
 
 
@@ -125,15 +125,18 @@ def _coaxial_sets(train: GearTrain, coaxial: tuple[int, int] | None
                  if p in body and not train.carried(c) and not mesh.bevel]
         if len(pairs) > 1:
             out.append(pairs)
-    if coaxial is not None:
-        a, b = coaxial
-        near = {g: [(m, m.b if m.a == g else m.a) for m in train.meshes if g in (m.a, m.b)]
-                for g in (a, b)}
-        for ma, x in near[a]:
-            for mb, y in near[b]:
-                if y in train.body(x):
-                    out.append([(ma, a), (mb, b)])
-    return out
+    return out + (coaxial_pairs(train, coaxial) if coaxial is not None else [])
+
+
+def coaxial_pairs(train: GearTrain, coaxial: tuple[int, int]) -> list[list[tuple[Mesh, int]]]:
+    """The pairs an ordinary train's ``coaxial`` gears a and b end, joined by one shaft, as
+    [(a's mesh, a), (b's mesh, b)]: the two that must stand equally far apart (none where
+    the two gears end no such pairs)."""
+    a, b = coaxial
+    near = {g: [(m, m.b if m.a == g else m.a) for m in train.meshes if g in (m.a, m.b)]
+            for g in (a, b)}
+    return [[(ma, a), (mb, b)] for ma, x in near[a] for mb, y in near[b]
+            if y in train.body(x) and a not in train.body(x) and b not in train.body(y)]
 
 
 def _solve(train: GearTrain, pairs: list[tuple[Mesh, int]]

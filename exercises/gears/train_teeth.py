@@ -11,8 +11,8 @@ from typing import Any
 
 from tarsim.constructions.errors import InputError
 from tarsim.constructions.gears.planet_teeth import teeth_from_ratios
-from tarsim.constructions.gears.teeth import (coaxial_misfit, imply_teeth, teeth_from_ratio,
-                                               unknown_teeth)
+from tarsim.constructions.gears.teeth import (coaxial_misfit, coaxial_pairs, imply_teeth,
+                                               teeth_from_ratio, unknown_teeth)
 from tarsim.constructions.gears.train import GearTrain
 
 __all__ = ["TeethTables"]
@@ -30,6 +30,10 @@ class TeethTables:
             raise self.fail("coaxial names the two gears of an ordinary train on one axis, "
                             "coaxial = [2, 5]", key="coaxial")
         train = replace(train, coaxial=tuple(coaxial) if coaxial else None)
+        if coaxial and not train.planetary and not coaxial_pairs(train, train.coaxial):
+            raise self.fail(f"coaxial = [{coaxial[0]}, {coaxial[1]}] names gears that end no two "
+                            "pairs joined by a shaft: name a reverted train's input and output "
+                            "gears, coaxial = [1, 4]", key="coaxial")
         train, steps = imply_teeth(train, train.coaxial)
         if "ratio" in self.data:
             ratios, least = self.speed_ratios(train)
