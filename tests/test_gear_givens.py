@@ -9,7 +9,7 @@ import json
 from fractions import Fraction
 
 import pytest
-from hypothesis import given, settings
+from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
 from tarsim.constructions.errors import InputError
@@ -210,10 +210,11 @@ def test_a_decimal_power_keeps_its_torques_fractions_of_its_digits():
 @settings(max_examples=40, deadline=None)
 @given(st.integers(12, 60), st.integers(12, 40), st.integers(-3000, 3000).filter(bool),
        st.integers(-3000, 3000), st.integers(1, 500))
+@example(sun=12, planet=12, w2=1, w5=0, torque=1)   # the arm given at rest holds the train
 def test_two_speeds_share_the_torque_as_the_teeth_do(sun, planet, w2, w5, torque):
     """With no losses a simple epicyclic's torques stand as T2 : T4 : T5 = N2 : N4 :
     −(N2 + N4), whatever its speeds: the sun driven by T, the ring takes T·N4/N2 and the arm
-    the rest."""
+    the rest (given at rest too, holding the train as a fixed arm would)."""
     ring = sun + 2 * planet
     text = two(2, w2, 5, w5, sun, planet, ring, find='["torque4", "torque5"]')
     text = text.replace(f"speed = {w2}", f"speed = {w2}\ntorque = {torque}", 1)

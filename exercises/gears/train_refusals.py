@@ -42,7 +42,8 @@ def _exponent(x: Fraction) -> int:
 def refuse_still_ratios(ex: TrainExercise, *speeds: dict[int, Fraction]) -> None:
     """Refuse a ratio asked over a member that stands still, though not fixed (a reverted
     train whose tooth products are equal holds its output still), and a torque or power
-    asked of such a member as the output (it takes no power, so the balance gives none)."""
+    asked of such a member as the output (it takes no power, so the balance gives none);
+    a member given at rest holds the train, as a fixed one does, and ΣT = 0 gives its."""
     train = ex.train
     for q in ex.asks:
         parts = q.split("/")
@@ -54,7 +55,8 @@ def refuse_still_ratios(ex: TrainExercise, *speeds: dict[int, Fraction]) -> None
                                  file=train.source or None)
         if q.startswith(("torque", "power")):
             m = int(q.removeprefix("torque").removeprefix("power"))
-            if m not in (train.input_member, train.fixed) and any(s[m] == 0 for s in speeds):
+            held = (train.input_member, train.fixed, train.second and train.second[0])
+            if m not in held and any(s[m] == 0 for s in speeds):
                 raise InputError(f"{q} is asked of {train.label(m)}, which stands still in "
                                  "this train and takes no power: ask it of a turning member",
                                  file=train.source or None)
