@@ -252,6 +252,8 @@ class Punch:
     energy: float
     period: float
     time: float
+    by_power: bool = False
+    """The period was found from the motor's power given, E/P: the holes a minute are asked."""
 
     @property
     def power(self) -> float:

@@ -98,6 +98,15 @@ WORDS: dict[str, str] = {
     "{mass} kg":
         "طوقه‌ای با سرعت میانگین {speed} m/s: شعاع آن r = v/ω = {radius} و جرم آن m = I/r² = "
         "{mass} kg",
+    "a motor of {power} kW gives a hole's E = {energy} J in T = E/P = {period} s, the hole "
+    "taking {time} s: {rate} holes a minute":
+        "موتوری با توان {power} kW انرژی E = {energy} J هر سوراخ را در T = E/P = {period} s "
+        "می‌دهد و سوراخ‌کاری {time} s طول می‌کشد: {rate} سوراخ در دقیقه",
+    "a flywheel of I = {inertia} kg·m² giving up ΔE = ½·I·(ω1² − ω2²): the greatest speed "
+    "{high} {unit}, the least {low} {unit}; their mean {mean} {unit}, C_s = (ω1 − ω2)/ω = {cs}":
+        "چرخ طیاری با I = {inertia} kg·m² که ΔE = ½·I·(ω1² − ω2²) را پس می‌دهد: بیشترین "
+        "سرعت {high} {unit}، کمترین {low} {unit}؛ میانگین آن دو {mean} {unit}، "
+        "C_s = (ω1 − ω2)/ω = {cs}",
     "a hole takes E = {energy} J in {time} s of every {period} s: the motor's power P = E/T = "
     "{power} kW":
         "هر سوراخ E = {energy} J را در {time} s از هر {period} s می‌گیرد: توان موتور "

@@ -15,12 +15,13 @@ A machine's torque (a punch's, a press's) against a driver steady at its mean is
 same way as ``[resisting_torque]`` (a formula or a table). A table may jump: an angle given
 twice, or a last point a cycle on from the first with another T.
 ``cycle`` (degrees, 360 by default) is how far the crank turns before the diagram repeats.
-``[flywheel]`` gives the mean ``speed`` and either ``speed_fluctuation`` (C_s: the flywheel
-is found, and a rim's ``mass`` at a stated ``radius`` or its ``radius`` for a stated
-``mass``; a ``radius_of_gyration`` alone is where its mass sits) or the flywheel (``inertia``,
-or ``mass`` with ``radius_of_gyration``: C_s is
-found); ``at`` lists crank angles (degrees) whose T and α are asked. C_s may be written as the
-books write it ("±1 %", "2 %"), or given by the greatest and least speeds (two of ``speed``,
+``[flywheel]`` gives the mean ``speed`` (or one of ``speed_max`` and ``speed_min`` alone,
+with the flywheel: the other from ΔE = ½I(ω1² − ω2²)) and either ``speed_fluctuation``
+(C_s: the flywheel is found, and a rim's ``mass`` at a stated ``radius`` or its ``radius``
+for a stated ``mass``; a ``radius_of_gyration`` alone is where its mass sits) or the flywheel
+(``inertia``, or ``mass`` with ``radius_of_gyration``: C_s is found); ``at`` lists crank
+angles (degrees) whose T and α are asked. C_s may be written as the books write it ("±1 %",
+"2 %"), or given by the greatest and least speeds (two of ``speed``,
 ``speed_max`` and ``speed_min``); a rim's ``diameter`` may stand for its radius, and its
 ``density`` with ``width_to_thickness`` asks its section. Every failure is one line naming
 file:line.
@@ -85,6 +86,11 @@ class FlywheelExercise:
     speed: float | None = None
     """The mean speed (rad/s)."""
     speed_fluctuation: float | None = None
+    speed_max: float | None = None
+    """The greatest speed given alone (rad/s), as the books give a press's speed before it
+    punches: the least follows from the flywheel and ΔE."""
+    speed_min: float | None = None
+    """The least speed given alone (rad/s): the greatest follows as ``speed_max``'s least."""
     inertia: float | None = None
     """The flywheel's moment of inertia (kg·m²), when given."""
     mass: float | None = None
@@ -321,6 +327,15 @@ def _speeds(t: Tables, fw: dict, rad_s: float) -> dict[str, float]:
     for k, v in given.items():
         if not v > 0:
             raise t.fail(f"{k} must be positive, got {fw[k]:g}", "flywheel", k)
+    if len(given) == 1 and "speed" not in given and "speed_fluctuation" not in fw:
+        # The books' "300 rpm before riveting": one extreme alone, with the flywheel given,
+        # the other follows from the energy it gives up, ΔE = ½·I·(ω1² − ω2²).
+        (key,) = given
+        if not ("inertia" in fw or "radius_of_gyration" in fw and "mass" in fw):
+            raise t.fail(f"{key} alone needs the flywheel (inertia, or mass with "
+                         "radius_of_gyration): the other speed follows from ΔE = ½I(ω1² − ω2²);"
+                         " or give two of speed, speed_max and speed_min", "flywheel", key)
+        return dict(given)
     if "speed_max" in given or "speed_min" in given:
         if len(given) != 2 or "speed_fluctuation" in fw:
             raise t.fail("the greatest and least speeds give the mean and C_s: give two of speed, "
@@ -397,7 +412,9 @@ def _flywheel(t: Tables, metre: float, rad_s: float, diagram: dict) -> dict[str,
         raise t.fail("give speed_fluctuation (or the greatest and least speeds: the flywheel is "
                      "found) or the flywheel (inertia, or mass with radius_of_gyration: its C_s "
                      "is found), one of them", "flywheel", ways[1])
-    if ways and "speed" not in out and not ("rim_speed" in fw and "speed_fluctuation" in fw):
+    extreme = "speed_max" in out or "speed_min" in out
+    if ways and "speed" not in out and not extreme and not ("rim_speed" in fw
+                                                            and "speed_fluctuation" in fw):
         raise t.fail("a flywheel holds a speed: give the mean speed, speed = 300 with [units] "
                      "speed = \"rpm\" (or the rim's speed in m/s, rim_speed = 25, for its mass "
                      "alone)", "flywheel", None)

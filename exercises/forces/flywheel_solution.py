@@ -25,6 +25,7 @@ from tarsim.constructions.forces.flywheel import (Reading, area_reading, extreme
                                                   rim_section, speed_limits)
 from tarsim.constructions.reference.flywheel import (Integrated, flywheel_inertia, integrated,
                                                      speed_fluctuation)
+from tarsim.constructions.errors import InputError
 from ..checked import Checked
 from ..solution_folder import ChapterFiles
 from ..worked_document import Section
@@ -152,6 +153,12 @@ class FlywheelSolution(ChapterFiles):
             q["power"] = _check(ex.punch.power, p.mean * 2 * math.pi / ex.punch.period,
                                 1e-12, "P = E/T, a hole's energy over the period", unit="W")
             method = "E·(1 − t/T), the motor steady"
+            if ex.punch.by_power:
+                # the holes a minute the power given keeps up with: 60·P/E, E by quadrature
+                q["holes_per_minute"] = _check(60 / ex.punch.period,
+                                               60 * ex.punch.power / (p.mean * 2 * math.pi),
+                                               1e-12, "60·P/E, a hole every E/P",
+                                               unit="1/min")
         q["delta_E"] = _check(r.delta_e, self.reference_delta_e, tol, method, unit="J")
         if ex.speed is not None and ref is not None:
             q["power"] = _check(r.mean * ex.speed, ref.mean * ex.speed,
@@ -179,6 +186,8 @@ class FlywheelSolution(ChapterFiles):
                 q["rim_radius"] = _check(rim_radius(rim, ex.mass), rim_radius(rim_ref, ex.mass),
                                          tol, "r = √(I/m)", unit="m")
             q |= self._section(q, tol)
+        elif ex.inertia is not None and ex.speed is None:
+            q |= self._other_speed(tol)
         elif ex.inertia is not None:
             q["speed_fluctuation"] = _check(
                 speed_fluctuation(r.delta_e, ex.speed, ex.inertia),
@@ -212,6 +221,45 @@ class FlywheelSolution(ChapterFiles):
                                               "α = (T − T_mean)/I", unit="rad/s²",
                                               angle_deg=math.degrees(theta))
         return q
+
+    def _other_speed(self, tol: float) -> dict[str, Checked]:
+        """One extreme speed given alone: the other from ΔE = ½·I·(ω1² − ω2²), as the books
+        find a press's speed after it punches from its speed before; the mean is then the
+        two's average and C_s = (ω1 − ω2)/ω.
+
+        Raises
+        ------
+        InputError
+            Where the flywheel is too small to give up ΔE from the greatest speed.
+        """
+        ex = self.exercise
+        given = ex.speed_max if ex.speed_max is not None else ex.speed_min
+        side = -1.0 if ex.speed_max is not None else 1.0
+
+        def other(delta_e: float) -> float:
+            square = given ** 2 + side * 2 * delta_e / ex.inertia
+            if not square > 0:
+                raise InputError(
+                    f"a flywheel of I = {ex.inertia:.6g} kg·m² holds ½·I·ω1² = "
+                    f"{ex.inertia * given ** 2 / 2:.6g} J at the greatest speed, less than the "
+                    f"ΔE = {delta_e:.6g} J it must give up: it would stop; give a larger one")
+            return math.sqrt(square)
+        got, want = other(self.reading.delta_e), other(self.reference_delta_e)
+        # ω2² = ω1² − 2ΔE/I: ΔE's relative error times 2ΔE/(I·ω2²)/2 in ω2
+        spread = tol * self.reference_delta_e / (ex.inertia * want ** 2) + 1e-15
+        key = "speed_min" if ex.speed_max is not None else "speed_max"
+        out = {key: _check(got, want, spread, "ΔE = ½·I·(ω1² − ω2²)", unit="rad/s")}
+        high, low = (given, got) if side < 0 else (got, given)
+        ref_high, ref_low = (given, want) if side < 0 else (want, given)
+        out["speed"] = _check((high + low) / 2, (ref_high + ref_low) / 2, spread,
+                              "ω = (ω1 + ω2)/2", unit="rad/s")
+        out["speed_fluctuation"] = _check(2 * (high - low) / (high + low),
+                                          2 * (ref_high - ref_low) / (ref_high + ref_low),
+                                          # the found speed's error over ω1 − ω2
+                                          spread * 2 * high * low / ((high + low) * (high - low))
+                                          + 1e-15,
+                                          "C_s = (ω1 − ω2)/ω")
+        return out
 
     def _section(self, q: dict[str, Checked], tol: float) -> dict[str, Checked]:
         """A rectangular rim's thickness and width, from its mass at its radius."""

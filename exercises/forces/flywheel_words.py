@@ -55,7 +55,13 @@ def lines(sol) -> list[str]:
     elif ex.diagram is not None:
         out.append(words("mean turning moment T_mean = {mean} N·m over a cycle of {cycle}°",
                          mean=numeral(r.mean), cycle=numeral(math.degrees(ex.cycle), "g")))
-    if ex.punch is not None:
+    if ex.punch is not None and ex.punch.by_power:
+        out.append(words("a motor of {power} kW gives a hole's E = {energy} J in T = E/P = "
+                         "{period} s, the hole taking {time} s: {rate} holes a minute",
+                         power=numeral(ex.punch.power / 1000), energy=numeral(ex.punch.energy),
+                         period=numeral(ex.punch.period), time=numeral(ex.punch.time, "g"),
+                         rate=numeral(q["holes_per_minute"].value["value"])))
+    elif ex.punch is not None:
         out.append(words("a hole takes E = {energy} J in {time} s of every {period} s: the "
                          "motor's power P = E/T = {power} kW", energy=numeral(ex.punch.energy),
                          time=numeral(ex.punch.time, "g"),
@@ -122,14 +128,25 @@ def lines(sol) -> list[str]:
                          ratio=numeral(ex.width_to_thickness, "g"),
                          thickness=_length(sol, q["rim_thickness"].value["value"]),
                          width=_length(sol, q["rim_width"].value["value"])))
-    if "speed_fluctuation" in q:
+    if "speed" in q:
+        unit = _speed_unit(sol)
+        high, low = ((ex.speed_max, q["speed_min"].value["value"]) if ex.speed_max is not None
+                     else (q["speed_max"].value["value"], ex.speed_min))
+        out.append(words("a flywheel of I = {inertia} kg·m² giving up ΔE = ½·I·(ω1² − ω2²): "
+                         "the greatest speed {high} {unit}, the least {low} {unit}; their "
+                         "mean {mean} {unit}, C_s = (ω1 − ω2)/ω = {cs}",
+                         inertia=numeral(ex.inertia), unit=ex.speed_unit,
+                         high=numeral(high / unit), low=numeral(low / unit),
+                         mean=numeral(q["speed"].value["value"] / unit),
+                         cs=numeral(q["speed_fluctuation"].value["value"])))
+    elif "speed_fluctuation" in q:
         out.append(words("a flywheel of I = {inertia} kg·m² holds the speed within C_s = "
                          "ΔE/(I·ω²) = {cs} ({percent} % of the mean, ±{half} %)",
                          inertia=numeral(ex.inertia),
                          cs=numeral(q["speed_fluctuation"].value["value"]),
                          percent=numeral(100 * q["speed_fluctuation"].value["value"]),
                          half=numeral(50 * q["speed_fluctuation"].value["value"])))
-    if "speed_max" in q:
+    if "speed_max" in q and "speed" not in q:     # not the one found from the other
         out.append(words("the greatest and least speeds ω(1 ± C_s/2): {high} and {low} "
                          "{unit}", unit=ex.speed_unit,
                          high=numeral(q["speed_max"].value["value"] / _speed_unit(sol)),

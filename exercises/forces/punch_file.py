@@ -1,21 +1,25 @@
 """Read a punching press as the books give it (``[punch]``): the energy a hole takes (or the
 energy per unit of sheared area, with the hole's diameter and the plate's thickness), how
-often a hole is punched (``holes_per_hour``, ``holes_per_minute`` or the ``period`` in s),
+often a hole is punched (``holes_per_hour``, ``holes_per_minute`` or the ``period`` in s; or
+the motor's ``power``, a hole every E/P),
 and how long the punching takes (``punching_time`` in s, or ``punching_fraction`` of the
 period). Its flywheel is asked in ``[flywheel]`` as any other's."""
 
 from __future__ import annotations
 
 import math
+import re
 from typing import Any
 
+from tarsim.constructions.errors import InputError
 from tarsim.constructions.forces.flywheel import Punch
+from ..file_numbers import file_number
 from ..table_file import Tables
 
 __all__ = ["PUNCH_KEYS", "read_punch"]
 
 PUNCH_KEYS = ("energy", "energy_per_area", "hole", "plate", "holes_per_hour",
-              "holes_per_minute", "period", "punching_time", "punching_fraction")
+              "holes_per_minute", "period", "power", "punching_time", "punching_fraction")
 
 
 def _one_of(t: Tables, p: dict, keys: tuple[str, ...], what: str) -> str:
@@ -59,16 +63,39 @@ def read_punch(t: Tables, p: dict) -> dict[str, Any]:
         energy = (positive("energy_per_area", "the energy per unit of sheared area")
                   * math.pi * positive("hole", "the hole's diameter")
                   * positive("plate", "the plate's thickness"))
-    rate = _one_of(t, p, ("holes_per_hour", "holes_per_minute", "period"), "how often it punches")
-    period = {"holes_per_hour": lambda v: 3600 / v, "holes_per_minute": lambda v: 60 / v,
-              "period": lambda v: v}[rate](positive(rate, "the punching rate"))
+    rate = _one_of(t, p, ("holes_per_hour", "holes_per_minute", "period", "power"),
+                   "how often it punches (or the motor's power: a hole every E/P)")
+    if rate == "power":
+        period = energy / _power(t, p)
+    else:
+        period = {"holes_per_hour": lambda v: 3600 / v, "holes_per_minute": lambda v: 60 / v,
+                  "period": lambda v: v}[rate](positive(rate, "the punching rate"))
     part = _one_of(t, p, ("punching_time", "punching_fraction"), "how long a punching takes")
     time = positive(part, "the punching's time") * (period if part == "punching_fraction"
                                                      else 1.0)
     if not time < period:
         raise t.fail(f"a punching takes less than the {period:g} s between holes, got {time:g} s",
                      "punch", part)
-    punch = Punch(energy, period, time)
+    punch = Punch(energy, period, time, rate == "power")
     return {"areas": (-punch.delta_e, punch.delta_e), "drawn_areas": (-punch.delta_e,
                                                                      punch.delta_e),
             "energy_scale": 1.0, "punch": punch}
+
+
+POWERS = {"W": 1.0, "kW": 1e3, "MW": 1e6}
+_POWER = re.compile(r"\s*(.+?)\s*(W|kW|MW)\s*")
+
+
+def _power(t: Tables, p: dict) -> float:
+    """The motor's power in W: a number (W) or "3 kW" as the books write it."""
+    raw = p["power"]
+    m = _POWER.fullmatch(raw) if isinstance(raw, str) else None
+    try:
+        v = (file_number(m[1], "the motor's power") * POWERS[m[2]] if m
+             else t.number(p, "power", "punch", "the motor's power (W)"))
+    except (InputError, ValueError):
+        raise t.fail(f"the motor's power is a number in W or \"3 kW\"; got {raw!r:.40}",
+                     "punch", "power") from None
+    if not v > 0:
+        raise t.fail(f"the motor's power must be positive, got {raw!r:.40}", "punch", "power")
+    return v
