@@ -303,7 +303,7 @@ def _gas_force(mech: Mechanism, t: dict, n: int, point, name: str, metre: float,
                    "pressure", i)
     if "bore" in t:
         bore = t["bore"] if isinstance(t["bore"], (int, float)) else None
-        size = file_number(bore, "the bore") * metre if bore is not None else 0.0
+        size = _sized(bore, "the bore", "bore", i, fail) * metre if bore is not None else 0.0
         if not size > 0:
             raise fail(f"the bore is the piston's diameter, positive, in {mech.units.length}; "
                        f"got {t['bore']!r:.40}", "force", "bore", i)
@@ -311,7 +311,8 @@ def _gas_force(mech: Mechanism, t: dict, n: int, point, name: str, metre: float,
         if "rod" in t:
             # A double-acting piston's crank side: its rod takes the middle of the bore.
             rod = t["rod"] if isinstance(t["rod"], (int, float)) else None
-            d = file_number(rod, "the piston rod's diameter") * metre if rod is not None else 0.0
+            d = _sized(rod, "the piston rod's diameter", "rod", i, fail) * metre \
+                if rod is not None else 0.0
             if not 0 < d < size:
                 raise fail(f"the piston rod's diameter is positive and less than the bore's "
                            f"({t['bore']:g} {mech.units.length}); got {t['rod']!r:.40}",
@@ -323,7 +324,7 @@ def _gas_force(mech: Mechanism, t: dict, n: int, point, name: str, metre: float,
                        "50); an area given is the area the pressure acts on already", "force",
                        "rod", i)
         a = t["area"] if isinstance(t["area"], (int, float)) else None
-        area = file_number(a, "the area") * metre * metre if a is not None else 0.0
+        area = _sized(a, "the area", "area", i, fail) * metre * metre if a is not None else 0.0
         if not area > 0:
             raise fail(f"the piston's area must be positive, in {mech.units.length}²; got "
                        f"{t['area']!r:.40}", "force", "area", i)
@@ -334,6 +335,14 @@ def _gas_force(mech: Mechanism, t: dict, n: int, point, name: str, metre: float,
                    "force", "pressure", i)
     size = p * area
     return PointForce(n, point, (size * way[0], size * way[1]), name or "gas force")
+
+
+def _sized(v, what: str, key: str, i: int, fail) -> float:
+    """A piston's bore, rod or area as :func:`file_number` takes it, refused at its line."""
+    try:
+        return file_number(v, what)
+    except ValueError as e:
+        raise fail(str(e), "force", key, i) from None
 
 
 def _toward_crank(mech: Mechanism, link: int, point: str) -> tuple[float, float] | None:
