@@ -67,19 +67,20 @@ def _text(at: str = 'at = [{ angle = 30 }, { angle = 150 }]',
     return ENGINE.replace("AT", at).replace("PRESSURE", pressure)
 
 
-def _turning_moment(theta_deg: float, pressure: float) -> float:
-    """T = F_P·r·sin(θ + φ)/cos φ, F_P = p·πD²/4 − m·a, a the piston's exact acceleration
-    toward the crank at steady ω, sin φ = r sin θ/l."""
+def _turning_moment(theta_deg: float, pressure: float, gas: float | None = None) -> float:
+    """T = F_P·r·sin(θ + φ)/cos φ, F_P = p·πD²/4 (or ``gas`` N toward the crank) − m·a, a the
+    piston's exact acceleration toward the crank at steady ω, sin φ = r sin θ/l."""
     t = math.radians(theta_deg)
     s = math.sqrt(L * L - (R * math.sin(t)) ** 2)
     a = OMEGA ** 2 * (R * math.cos(t) + R * R * math.cos(2 * t) / s
                       + R ** 4 * math.sin(t) ** 2 * math.cos(t) ** 2 / s ** 3)
-    effort = pressure * math.pi * BORE ** 2 / 4 - MASS * a
+    effort = (pressure * math.pi * BORE ** 2 / 4 if gas is None else gas) - MASS * a
     phi = math.asin(R * math.sin(t) / L)
     return effort * R * math.sin(t + phi) / math.cos(phi)
 
 
 def _run(tmp_path, text: str):
+    tmp_path.mkdir(parents=True, exist_ok=True)
     path = tmp_path / "e.toml"
     path.write_text(text, encoding="utf-8")
     return CliRunner().invoke(cli, ["solve", str(path), "--no-pdf", "-o", str(tmp_path / "e")])
@@ -109,11 +110,38 @@ def test_the_same_pressure_list_in_another_order_swaps_the_moments(tmp_path):
     assert got[1] == pytest.approx(_turning_moment(150, 0.45e6), rel=1e-9)
 
 
+def _moments(tmp_path, text: str) -> list[float]:
+    result = _run(tmp_path, text)
+    assert result.exit_code == 0, result.output
+    positions = json.loads((tmp_path / "e" / "results.json").read_text())["positions"]
+    return [p["quantities"]["turning_moment"]["value"] for p in positions]
+
+
+def test_a_force_per_position(tmp_path):
+    """force = [[-1000, 0], [-3000, 0]]: 1000 N toward the crank at 30°, 3000 N at 150°."""
+    got = _moments(tmp_path, _text(pressure="force = [[-1000, 0], [-3000, 0]]")
+                   .replace("bore = 400", ""))
+    assert got[0] == pytest.approx(_turning_moment(30, 0, 1000), rel=1e-9)
+    assert got[1] == pytest.approx(_turning_moment(150, 0, 3000), rel=1e-9)
+
+
+def test_a_resisting_force_per_position_is_each_position_s_own(tmp_path):
+    """resist = [1000, 3000] gives at each position what resist = 1000 (or 3000) alone does."""
+    listed = _moments(tmp_path / "a", _text(pressure="resist = [1000, 3000]")
+                      .replace("bore = 400", ""))
+    alone = [_moments(tmp_path / f"b{k}", _text(pressure=f"resist = {v}")
+                      .replace("bore = 400", ""))[k] for k, v in enumerate((1000, 3000))]
+    assert listed == pytest.approx(alone, rel=1e-12)
+    # and the resistance counts: without it the moments differ by its own r·sin(θ+φ)/cos φ
+    assert abs(listed[1] - _turning_moment(150, 0)) > 100
+
+
 @pytest.mark.parametrize("at, pressure, words", [
     ('at = [{ angle = 30 }, { angle = 150 }, { angle = 90 }]', None,
-     "2 pressures here, 3 positions there"),
+     "2 given here, 3 positions there"),
     ('', None, "list them there"),
-    (None, 'pressure = []', "0 pressures here, 2 positions there"),
+    (None, 'pressure = []', "0 given here, 2 positions there"),
+    (None, 'resist = [1000]', "a resist per position"),
     (None, 'pressure = ["0.45 N/mm²", "a lot"]', "pressure"),
 ])
 def test_a_pressure_list_that_does_not_match_the_positions_is_refused(at, pressure, words,
@@ -124,3 +152,14 @@ def test_a_pressure_list_that_does_not_match_the_positions_is_refused(at, pressu
     (line,) = result.output.strip().splitlines()
     assert line.startswith("Error: ") and "e.toml:" in line and words in line, line
     assert not (tmp_path / "e").exists()
+
+
+def test_a_turn_swept_refuses_a_pressure_per_position(tmp_path):
+    """The turning moment round the turn has no pressure between the listed positions: it is
+    refused in one line, not drawn with the first's."""
+    path = tmp_path / "e.toml"
+    path.write_text(_text(), encoding="utf-8")
+    result = CliRunner().invoke(cli, ["sweep", str(path), "-o", str(tmp_path / "s")])
+    assert result.exit_code == 1
+    (line,) = result.output.strip().splitlines()
+    assert line.startswith("Error: ") and "a pressure given per position" in line, line

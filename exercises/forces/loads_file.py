@@ -12,9 +12,10 @@ piston, a ram) needs none, for its inertia couple I·α is 0. A gas force may be
 books give it, a pressure on the piston's bore (or area): p·A along the line of stroke
 toward the crank. ``[forces]`` may give the engine's ``power`` (W) or ``mean_torque`` (N·m)
 with its ``flywheel`` (kg·m², or ``{ mass, radius_of_gyration }``): the flywheel's α at the
-position is then (T − T_mean)/I. A pressure that changes with the position is a list,
-``pressure = ["0.45 N/mm²", "0.3 N/mm²"]``, one for each of ``[ask] at``'s positions in order
-(:func:`pressures_per_position`). Every failure is one line naming file:line.
+position is then (T − T_mean)/I. A pressure (or ``resist``, or ``force``) that changes with
+the position is a list, ``pressure = ["0.45 N/mm²", "0.3 N/mm²"]``, one for each of ``[ask]
+at``'s positions in order (:func:`pressures_per_position`). Every failure is one line
+naming file:line.
 """
 
 from __future__ import annotations
@@ -55,16 +56,27 @@ def pressures_per_position(data: dict[str, Any], where: SourceMap, filename: str
         Naming file:line: a list whose length is not the count of ``[ask] at``'s positions.
     """
     tables = Tables(data, where, filename, _KEYS)
-    lists = [(i, t["pressure"]) for i, t in enumerate(tables.entries("force"))
-             if isinstance(t.get("pressure"), list)]
-    for i, given in lists:
+    lists = [(i, key, t[key]) for i, t in enumerate(tables.entries("force"))
+             for key in _PER_POSITION if _per_position(t, key)]
+    for i, key, given in lists:
         if not positions or len(given) != positions:
             raise tables.fail(
-                "a pressure per position is matched to [ask] at's positions in order: "
-                + (f"{len(given)} pressures here, {positions} positions there; give as many"
+                f"a {key} per position is matched to [ask] at's positions in order: "
+                + (f"{len(given)} given here, {positions} positions there; give as many"
                    if positions else "list them there, at = [{ angle = 30 }, …]"),
-                "force", "pressure", i)
+                "force", key, i)
     return positions if lists else 0
+
+
+_PER_POSITION = ("pressure", "resist", "force")
+"""A [[force]]'s settings that may be a list, one for each of [ask] at's positions."""
+
+
+def _per_position(t: dict, key: str) -> bool:
+    """Whether ``t`` gives ``key`` per position: a list of them (a force's, of [x, y] pairs;
+    an empty list counts, to be refused as no match)."""
+    v = t.get(key)
+    return isinstance(v, list) and (key != "force" or not v or isinstance(v[0], list))
 
 
 def read_loads(data: dict[str, Any], mech: Mechanism, where: SourceMap,
@@ -214,9 +226,8 @@ def read_loads(data: dict[str, Any], mech: Mechanism, where: SourceMap,
             raise fail("a force acts at a point of its link: point = \"B\" or [x, y] in the "
                        "link's own frame", "force", "point", i)
         name = str(t.get("name", ""))
+        t = {**t, **{key: t[key][position] for key in _PER_POSITION if _per_position(t, key)}}
         if "pressure" in t:
-            if isinstance(t["pressure"], list):
-                t = {**t, "pressure": t["pressure"][position]}
             forces.append(_gas_force(mech, t, n, point, name, metre, i, fail))
             continue
         for key in ("bore", "area", "rod"):

@@ -215,6 +215,10 @@ def turning_moment(ex: Exercise, steps: int = 360,
         the linkage may go on in either assembly, and the branch the file names by a side
         is the other one, so the steps are no one motion's.
     """
+    if ex.loads_at:
+        raise InputError("a pressure given per position loads the engine at [ask] at's "
+                         "positions alone: a turning moment round the turn needs one pressure "
+                         "for every position", file=ex.mechanism.source or None)
     mech, loads = ex.mechanism, ex.loads
     drive = mech.drive
     sense = 1.0 if drive.omega >= 0 else -1.0
