@@ -52,9 +52,13 @@ def test_flywheel_riveting_motor_power():
     assert all(c.passed for c in q.values())
 
 
-@pytest.mark.parametrize("power", ['"3 kW"', "3000", '"3000 W"', '"0.003 MW"', '"6/2 kW"'])
-def test_a_motor_s_power_in_any_unit_gives_the_same_rate(power):
-    q = _q(RIVETING.replace('"3 kW"', power))
+@pytest.mark.parametrize("power, unit", [('"3 kW"', ""), ("3000", ""), ('"3000 W"', ""),
+                                         ('"0.003 MW"', ""), ('"6/2 kW"', ""),
+                                         ("3", 'power = "kW"'), ('"3 kW"', 'power = "MW"')])
+def test_a_motor_s_power_in_any_unit_gives_the_same_rate(power, unit):
+    """A plain number is in [units] power (W unless it says); a string says its own unit."""
+    q = _q(RIVETING.replace('"3 kW"', power).replace('speed = "rpm"',
+                                                     f'speed = "rpm"\n{unit}'))
     assert q["holes_per_minute"].value["value"] == pytest.approx(18, rel=1e-14)
 
 
@@ -100,6 +104,8 @@ def test_the_found_speed_holds_the_energy_balance(energy, power, share, rpm, ine
     ("mass = 150\nradius_of_gyration = 0.6", "", "speed_max alone needs the flywheel"),
     ("speed_max = 300", "speed_max = 50", "it would stop"),
     ('power = "3 kW"', 'power = "20 kW"', "a punching takes less than"),
+    ('speed = "rpm"', 'speed = "rpm"\npower = "hp"', "[units] takes length, speed"),
+    ('speed = "rpm"', 'speed = "rpm"\nforce = "kN"', "not force = 'kN'"),
 ])
 def test_a_bad_riveting_machine_is_refused_in_one_line(old, new, words):
     with pytest.raises(InputError) as e:

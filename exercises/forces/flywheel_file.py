@@ -40,7 +40,7 @@ from tarsim.constructions.forces.torque_formula import Formula, parse_formula
 from tarsim.constructions.units import LENGTH_UNITS
 from ..names import named_in, read_names, renamed_field
 from ..table_file import SPEEDS, Tables
-from .punch_file import PUNCH_KEYS, read_punch
+from .punch_file import POWERS, PUNCH_KEYS, read_punch
 
 __all__ = ["FlywheelExercise", "parse_flywheel"]
 
@@ -173,6 +173,12 @@ def parse_flywheel(text: str, filename: str = "<string>", exercise_id: str = "fl
                    "of them", tables[1] if tables else "flywheel")
     (table,) = tables
     length, speed_unit = t.units("m", "rad/s")
+    for key, unit in t.data.get("units", {}).items():
+        # a unit it would not read is refused, lest "kW" leave a power read as W
+        if key not in ("length", "speed") and not (key == "power" and unit in POWERS
+                                                   and table == "punch"):
+            raise fail("a flywheel file's [units] takes length, speed and, for a [punch]'s "
+                       f"motor, power (W, kW or MW); not {key} = {unit!r:.20}", "units", key)
     metre = LENGTH_UNITS[length]
     if table == "punch":
         diagram = read_punch(t, _one(t, "punch"))

@@ -87,12 +87,14 @@ _POWER = re.compile(r"\s*(.+?)\s*(W|kW|MW)\s*")
 
 
 def _power(t: Tables, p: dict) -> float:
-    """The motor's power in W: a number (W) or "3 kW" as the books write it."""
+    """The motor's power in W: a number in [units] power (W unless it says "kW") or "3 kW"
+    as the books write it."""
     raw = p["power"]
     m = _POWER.fullmatch(raw) if isinstance(raw, str) else None
     try:
         v = (file_number(m[1], "the motor's power") * POWERS[m[2]] if m
-             else t.number(p, "power", "punch", "the motor's power (W)"))
+             else t.number(p, "power", "punch", "the motor's power")
+             * POWERS[t.data.get("units", {}).get("power", "W")])
     except (InputError, ValueError):
         raise t.fail(f"the motor's power is a number in W or \"3 kW\"; got {raw!r:.40}",
                      "punch", "power") from None
