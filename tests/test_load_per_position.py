@@ -142,6 +142,8 @@ def test_a_resisting_force_per_position_is_each_position_s_own(tmp_path):
     ('', None, "list them there"),
     (None, 'pressure = []', "0 given here, 2 positions there"),
     (None, 'resist = [1000]', "a resist per position"),
+    ('at = [{ angle = 30, pressure = "0.45 N/mm²" }]', None,
+     "a pressure that changes with the position is a list in its [[force]]"),
     (None, 'pressure = ["0.45 N/mm²", "a lot"]', "pressure"),
 ])
 def test_a_pressure_list_that_does_not_match_the_positions_is_refused(at, pressure, words,

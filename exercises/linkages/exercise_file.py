@@ -345,6 +345,11 @@ def _read_positions(at, mech: Mechanism, fail) -> tuple[Position, ...]:
     deg = mech.units.angle != "rad"
     out = []
     for p in at:
+        loads = [k for k in p if k in ("pressure", "force", "resist")]
+        if loads:
+            raise fail(f"a {loads[0]} that changes with the position is a list in its "
+                       f"[[force]], one per position in at: {loads[0]} = [first's, second's, …]",
+                       "at")
         if len(p) != 1 or next(iter(p)) not in ("angle", "time", *TRAVEL_KEYS):
             raise fail("each position in at gives one of angle, time, stroke (the share of "
                        f"the stroke the piston has travelled) or travel, got {p}", "at")
