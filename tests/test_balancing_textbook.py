@@ -422,7 +422,7 @@ def test_a_locomotives_wheels_lift_where_the_hammer_blow_reaches_the_dead_load()
 
 
 @pytest.mark.parametrize("old, new, words", [
-    ("wheel_diameter = 1800\n", "", "road_speed = … (km/h) with wheel_diameter = … together"),
+    ("wheel_diameter = 1800\n", "", "give their wheel_diameter with it"),
     ("road_speed = 60\n", "road_speed = 60\nspeed = 100\n", "not both"),
     ("wheel_diameter = 1800", "wheel_diameter = 0", "the wheel diameter must be positive"),
 ])
@@ -833,3 +833,33 @@ def test_between_on_a_mass_read_to_a_half_turn_chooses_its_crossing(between, roo
         (math.degrees(math.atan2(line.imag, line.real)) + (180 if x < 0 else 0)) % 360, abs=1e-9)
     assert q["plane_D"]["value"] == pytest.approx(abs(couple) / x, rel=1e-9)
     assert "as its between asks" in "\n".join(s.lines())
+
+
+@pytest.mark.parametrize("change, words", [
+    ({"speed = 600\n": ""}, "[engine] needs speed = …"),
+    ({"speed = 600\n": "road_speed = 60\n"}, "give their wheel_diameter with it"),
+    ({"speed = 600\n": "speed = 600\nroad_speed = 60\nwheel_diameter = 1800\n"}, "not both"),
+])
+def test_an_engine_s_speed_missing_or_given_twice_is_named(change, words):
+    """Each way an engine's speed can be wrong says which, at the line that makes it so:
+    none at all, a road speed with no wheels to turn it into the cranks' speed, both."""
+    from tarsim.exercises.templates import template
+
+    text = template("engine")
+    for old, new in change.items():
+        text = text.replace(old, new, 1)
+    with pytest.raises(InputError) as e:
+        parse_balance(text, "e.toml")
+    assert str(e.value).startswith("e.toml:") and words in str(e.value), str(e.value)
+
+
+def test_a_wheel_diameter_beside_the_speed_is_the_wheels_size():
+    from tarsim.exercises.templates import template
+
+    text = template("engine")
+    plain = solve_balance(parse_balance(text, "e.toml")).results["quantities"]
+    sized = solve_balance(parse_balance(text.replace("speed = 600\n",
+                                                     "speed = 600\nwheel_diameter = 1800\n", 1),
+                                        "e.toml")).results["quantities"]
+    assert sized["balance_mass"]["value"] == plain["balance_mass"]["value"] == pytest.approx(
+        (15 + 0.5 * 30) * 0.100 / 0.120, rel=1e-12)

@@ -177,9 +177,10 @@ def _speed(t: Tables, table: str, needed: bool = True) -> float | None:
     if "speed" not in one and not needed:
         return None
     if "speed" not in one:
+        why = "the out-of-balance force (N) and couple (N·m) are m·r·ω²" if table == "rotor" \
+            else "or a locomotive's road_speed: its forces (N) and couples (N·m) are m·r·ω²"
         raise t.fail(f"[{table}] needs speed = … (rpm with [units] speed = \"rpm\", else "
-                     "rad/s): the out-of-balance force (N) and couple (N·m) are m·r·ω²",
-                     table, None)
+                     f"rad/s){',' if table != 'rotor' else ':'} {why}", table, None)
     v = t.number(one, "speed", table, "the speed")
     if not v > 0:
         raise t.fail(f"the speed must be positive, got {v:g}", table, "speed")
@@ -241,12 +242,14 @@ def _wheel(t: Tables, one: dict, metre: float, cylinders: int
 def _engine_speed(t: Tables, one: dict, metre: float) -> float:
     """An engine's speed in rad/s: its ``speed``, or, as the books give a locomotive's, its
     ``road_speed`` (km/h) on driving wheels of ``wheel_diameter``: ω = v/(D/2)."""
-    road = [k for k in ("road_speed", "wheel_diameter") if k in one]
-    if not road:
+    if "road_speed" not in one:           # a wheel_diameter alone sizes the wheels (a lift)
         return _speed(t, "engine")
-    if "speed" in one or len(road) == 1:
+    if "speed" in one:
         raise t.fail("a locomotive's speed is speed = …, or road_speed = … (km/h) with "
-                     "wheel_diameter = … together, not both", "engine", road[0])
+                     "wheel_diameter = …, not both", "engine", "road_speed")
+    if "wheel_diameter" not in one:
+        raise t.fail("road_speed (km/h) gives the cranks' speed on the driving wheels: give "
+                     "their wheel_diameter with it", "engine", "road_speed")
     v = t.number(one, "road_speed", "engine", "the road speed")
     d = t.number(one, "wheel_diameter", "engine", "the wheels' diameter")
     if not (v > 0 and d > 0):
