@@ -52,6 +52,9 @@ PHRASES: dict[str, str] = {
     "gears.teeth_least_set": "Gear {g}, the smallest of the gears left unknown, takes the "
                              "least count, {least} teeth, or the fewest above it that make "
                              "the others whole: N{g} = {teeth}.",
+    "gears.equal_steps": "The book shares |ω{x}/ω{y}| = {value} in {k} equal steps, one a "
+                         "pair between them: each pair's ratio is {value}^(1/{k}) = {root} "
+                         "({pairs}).",
     "gears.teeth_least": "Gear {g}, the smaller of the pair, takes the least count, {least} "
                          "teeth, or the fewest above it that make the other whole: N{g} = "
                          "{teeth}.",

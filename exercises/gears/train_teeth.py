@@ -1,6 +1,7 @@
 """The teeth a gear-train file leaves out, found before the speeds: by the diameters, the
 coaxial condition and the centre distances, and by the speed ratios ``[ratio]`` (or one
-``[[ratio]]`` a pair) with a least tooth count; read by :class:`~.train_file._Reader`,
+``[[ratio]]`` a pair, or one in equal steps) with a least tooth count, a compound train's
+pair by pair; read by :class:`~.train_file._Reader`,
 whose ``fail``, ``exact``, ``integer`` and ``known`` they use."""
 
 from __future__ import annotations
@@ -10,7 +11,9 @@ from fractions import Fraction
 from typing import Any
 
 from tarsim.constructions.errors import InputError
+from tarsim.constructions.gears.pair_teeth import equal_steps, is_pair, pair_teeth
 from tarsim.constructions.gears.planet_teeth import teeth_from_ratios
+from tarsim.constructions.narration import Phrase
 from tarsim.constructions.gears.teeth import (coaxial_misfit, coaxial_pairs, imply_teeth,
                                                teeth_from_ratio, unknown_teeth)
 from tarsim.constructions.gears.train import GearTrain
@@ -36,8 +39,11 @@ class TeethTables:
                             "gears, coaxial = [1, 4]", key="coaxial")
         train, steps = imply_teeth(train, train.coaxial)
         if "ratio" in self.data:
-            ratios, least = self.speed_ratios(train)
+            found, shared = self.speed_ratios(train)
+            ratios = [(of, value) for of, value, _ in found]
             train = replace(train, ratio_given=tuple((*of, value) for of, value in ratios))
+            train, least, paired = self.pairs_designed(train, found)
+            steps = (*steps, *shared, *paired)
             # the coaxial condition or a distance ties counts together: the table's way
             if (train.planetary or len(ratios) > 1 or train.coaxial
                     or any(m.distance for m in train.meshes)):
@@ -58,17 +64,58 @@ class TeethTables:
                        implied_teeth=(*self.from_diameter, *implied))
 
     def speed_ratios(self, train: GearTrain
-                     ) -> tuple[list[tuple[tuple[int, int], Fraction]], int | None]:
+                     ) -> tuple[list[tuple[tuple[int, int], Fraction, int | None]],
+                                tuple[Phrase, ...]]:
         """``[ratio]``, or a ``[[ratio]]`` for each pair the book gives one: the speed
-        ratios, and the least tooth count (in any of them) for counts they leave unknown."""
+        ratios, each with its least tooth count; a ratio in equal steps adds its pairs'
+        ratios (each with its least count), and the steps that share it."""
         tables = self.data["ratio"]
         tables = tables if isinstance(tables, list) else [tables]
-        found = [self.ratio(train, t, i) for i, t in enumerate(tables)]
-        leasts = [least for _, _, least in found if least is not None]
-        if len(leasts) > 1:
-            raise self.fail("give least_teeth once, in one [[ratio]]", "ratio", "least_teeth",
-                            1)
-        return [(of, value) for of, value, _ in found], (leasts[0] if leasts else None)
+        found, said = [], []
+        for i, t in enumerate(tables):
+            of, value, least = self.ratio(train, t, i)
+            found.append((of, value, None if "steps" in t else least))
+            if "steps" in t:
+                if t["steps"] != "equal":
+                    raise self.fail('steps = "equal" shares the ratio equally among the pairs '
+                                    f"between the two members, got {t['steps']!r}", "ratio",
+                                    "steps", i)
+                try:
+                    pairs, step = equal_steps(train, of, value)
+                except InputError as e:
+                    raise self.fail(e.message, "ratio", "steps", i) from None
+                found += [(p, root, least) for p, root in pairs]
+                said.append(step)
+        return found, tuple(said)
+
+    def pairs_designed(self, train: GearTrain,
+                       found: list[tuple[tuple[int, int], Fraction, int | None]]
+                       ) -> tuple[GearTrain, int | None, tuple[Phrase, ...]]:
+        """``train`` with the teeth of each pair whose own ratio gives its least count, as a
+        compound train is designed pair by pair (one least count in a reverted train, tied
+        by the coaxial condition or a distance, is the whole train's); the least count left
+        for the rest, and the steps."""
+        leasts = [(of, value, least) for of, value, least in found if least is not None]
+        tied = train.coaxial or any(m.distance for m in train.meshes)
+        if train.planetary or len(found) < 2 or (len(leasts) < 2 and tied):
+            return train, (leasts[0][2] if leasts else None), ()
+        if len(leasts) > 1 and not all(is_pair(train, of) for of, _, _ in leasts):
+            raise self.fail("give least_teeth once, or in each pair's own [[ratio]], of = "
+                            '"omega2/omega3" naming two gears that mesh', "ratio",
+                            "least_teeth", 0)
+        steps: tuple[Phrase, ...] = ()
+        for of, value, least in leasts:
+            if is_pair(train, of):
+                train, more = pair_teeth(train, of, value, least)
+                steps = (*steps, *more)
+        for (x, y), value, least in found:
+            if least is None and is_pair(train, (x, y)) and train.gear(x).teeth is None \
+                    and train.gear(y).teeth is None:
+                raise InputError(f"gears {x} and {y} have no teeth, and their ratio ω{x}/ω{y} "
+                                 f"= {float(value):g} fixes one count: give least_teeth in its "
+                                 "[[ratio]] too, or one count", file=self.filename)
+        left = [least for of, _, least in leasts if not is_pair(train, of)]
+        return train, (left[0] if left else None), steps
 
     def ratio(self, train: GearTrain, t: Any, i: int = 0
               ) -> tuple[tuple[int, int], Fraction, int | None]:
@@ -76,7 +123,7 @@ class TeethTables:
         and least_teeth for counts it leaves unknown."""
         if not isinstance(t, dict):
             raise self.fail('must be a table: [ratio] of = "omega2/omega6", value = 12', "ratio")
-        self.known(t, ("of", "value", "least_teeth"), "ratio", i)
+        self.known(t, ("of", "value", "least_teeth", "steps"), "ratio", i)
         parts = t.get("of", "").split("/") if isinstance(t.get("of"), str) else []
         numbers = [p.removeprefix("omega") for p in parts]
         if len(parts) != 2 or not all(p.startswith("omega") and n.isdigit() and int(n) in
