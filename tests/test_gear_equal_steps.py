@@ -84,6 +84,9 @@ STEPS_LINE = equal(2, F(40)).splitlines().index('steps = "equal"') + 1
     (equal(2, F(40)), f"c.toml:{STEPS_LINE}: [ratio.steps] ω2/ω5 = 40 in 2 equal steps "
                       "needs each pair 6.32456"),
     (equal(2, F(36)).replace('"equal"', '"even"'), 'steps = "equal" shares the ratio'),
+    # the overall ratio alone, steps left out: the refusal names the way to say them
+    (equal(2, F(36)).replace('steps = "equal"\n', ""),
+     'least_teeth for a pair, or steps = "equal" to share the ratio among the pairs'),
     # a least count in one pair's ratio leaves the other pair open
     (compound(2, '[[ratio]]\nof = "omega2/omega3"\nvalue = 6\nleast_teeth = 16\n'
                  '[[ratio]]\nof = "omega4/omega5"\nvalue = 6\n'),

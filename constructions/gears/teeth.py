@@ -264,7 +264,9 @@ def teeth_from_ratio(train: GearTrain, of: tuple[int, int], value: Fraction,
         return _with(train, g, n), (said,)
     if len(unknown) != 2 or least is None:
         raise InputError(f"gears {', '.join(map(str, unknown))} have no teeth and the speed "
-                         "ratio fixes one count: give the others, or least_teeth for a pair",
+                         "ratio fixes one count: give the others, or least_teeth for a pair"
+                         + (', or steps = "equal" to share the ratio among the pairs'
+                            if len(unknown) > 2 else ""),
                          file=train.source or None)
     for small, big in (unknown, unknown[::-1]):
         for n in range(least, least + 1000):
