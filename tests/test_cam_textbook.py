@@ -252,6 +252,31 @@ def test_a_bad_eccentric_disc_is_refused_in_one_line(old, new, words):
     assert "\n" not in message and message.startswith("cam.toml:") and words in message, message
 
 
+def test_a_cam_may_be_given_by_its_least_diameter():
+    """base_diameter = 80 is the base circle of radius 40 mm, on a cam of segments and on a
+    cam of arcs alike: the same exercise as base_radius = 40."""
+    by_radius = parse_cam(VALVE, "cam.toml")
+    by_diameter = parse_cam(VALVE.replace("base_radius = 40", "base_diameter = 80"), "cam.toml")
+    assert by_diameter.base_radius == pytest.approx(0.040, rel=1e-15)
+    assert by_diameter == by_radius
+    arc = Path(bundled("cams")["circular-arc-flat-face"]).read_text(encoding="utf-8")
+    halved = parse_cam(arc.replace("base_radius = 40 ", "base_diameter = 80 "), "cam.toml")
+    assert halved.cam == parse_cam(arc, "cam.toml").cam
+    assert halved.cam.base == pytest.approx(0.040, rel=1e-15)
+
+
+@pytest.mark.parametrize("name", ["valve-unequal-acceleration", "circular-arc-flat-face"])
+def test_a_base_circle_given_by_radius_and_diameter_both_is_refused(name):
+    text = Path(bundled("cams")[name]).read_text(encoding="utf-8")
+    with pytest.raises(InputError) as e:
+        parse_cam(text.replace("base_radius = 40", "base_radius = 40\nbase_diameter = 80", 1),
+                  "cam.toml")
+    line = next(i for i, t in enumerate(text.splitlines(), 1) if t.startswith("base_radius"))
+    message = str(e.value)             # at the diameter's line, under the radius's
+    assert "\n" not in message and message.startswith(f"cam.toml:{line + 1}:"), message
+    assert "base circle's radius or its diameter, not both" in message, message
+
+
 def test_an_eccentric_disc_makes_its_own_segments():
     text = Path(bundled("cams")["eccentric-flat-face"]).read_text(encoding="utf-8")
     with pytest.raises(InputError, match="leave out the \\[\\[segment\\]\\] tables"):

@@ -27,8 +27,8 @@ ARC_KINDS = {"circular arc": ("flat-faced", "roller", "knife-edge"),
              "tangent": ("roller", "knife-edge")}
 """Each cam of arcs and the followers the books set on it (the first unless said)."""
 
-_CAM_KEYS = ("kind", "base_radius", "nose_radius", "lift", "angle", "action_angle",
-             "faces_angle", "flank_radius", "speed", "sense")
+_CAM_KEYS = ("kind", "base_radius", "base_diameter", "nose_radius", "lift", "angle",
+             "action_angle", "faces_angle", "flank_radius", "speed", "sense")
 
 
 @dataclass(frozen=True)
@@ -87,7 +87,8 @@ def parse_arc_cam(tables, exercise_id: str, angles) -> ArcCamExercise:
             raise fail(f"{what} must be positive, got {v:g}", "cam", key)
         return v * metre
 
-    r1 = size("base_radius", "the base radius")
+    key = base_key(cam, fail) or "base_radius"
+    r1 = size(key, "the base " + key[5:]) / (2 if key == "base_diameter" else 1)
     rate = number(cam, "speed", "cam", "the cam's speed")
     sense = cam.get("sense", "ccw")
     if sense not in ("cw", "ccw") or rate <= 0:
@@ -117,6 +118,16 @@ def parse_arc_cam(tables, exercise_id: str, angles) -> ArcCamExercise:
                           made, omega, length, speed, at, given,
                           read_names(data, tables.where, tables.filename),
                           mass=_mass(data.get("follower") or {}, number, fail))
+
+
+def base_key(cam: dict[str, Any], fail) -> str | None:
+    """Which of ``base_radius`` and ``base_diameter`` [cam] gives its base circle by (the
+    books give a cam's least diameter as often as its radius), None if neither; both are
+    refused at the diameter's line."""
+    if "base_radius" in cam and "base_diameter" in cam:
+        raise fail("give the base circle's radius or its diameter, not both", "cam",
+                   "base_diameter")
+    return next((k for k in ("base_diameter", "base_radius") if k in cam), None)
 
 
 def eccentric_disc(tables, exercise_id: str, disc: tuple[float, float], follower, omega: float,

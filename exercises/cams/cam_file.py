@@ -19,7 +19,7 @@ from tarsim.constructions.reference.cam_profile import Follower, arm_start, prim
 from ..file_numbers import file_number
 from ..names import named_in, read_names, renamed_field
 from ..table_file import SPEEDS, Tables
-from .arc_cam_file import ARC_KINDS, eccentric_disc, parse_arc_cam
+from .arc_cam_file import ARC_KINDS, base_key, eccentric_disc, parse_arc_cam
 
 __all__ = ["CamExercise", "parse_cam"]
 
@@ -157,10 +157,12 @@ def _disc(cam: dict[str, Any], number, fail) -> tuple[float, float] | None:
 def _base(cam: dict[str, Any], disc, number, fail) -> float | None:
     """The base circle (the file's unit) as [cam] gives it: its radius, a disc's nearest
     point to the shaft, or None where the greatest pressure angle asks it found."""
-    given = [k for k in ("base_radius", "pressure_angle", "rho_min") if k in cam] + (
+    key = base_key(cam, fail)
+    given = [k for k in (key, "pressure_angle", "rho_min") if k in cam] + (
         ["disc_radius"] if disc else [])
     if len(given) != 1:
-        raise fail("[cam] gives the base circle one way: base_radius = 40, or pressure_angle "
+        raise fail("[cam] gives the base circle one way: base_radius = 40 (or base_diameter "
+                   "= 80), or pressure_angle "
                    "= 30 or (a flat face's) rho_min = 5 (the least base circle is found), or "
                    "an eccentric disc's disc_radius and eccentricity", "cam",
                    given[-1] if given else None)
@@ -178,10 +180,10 @@ def _base(cam: dict[str, Any], disc, number, fail) -> float | None:
             raise fail(f"the least radius of curvature is 0 (a point) or more, not {rho:g}",
                        "cam", "rho_min")
         return None
-    base = number(cam, "base_radius", "cam", "the base radius")
+    base = number(cam, key, "cam", "the base " + key[5:])
     if not 0 < base < 1e6:
-        raise fail(f"the base radius must be positive, got {base:g}", "cam", "base_radius")
-    return base
+        raise fail(f"the base {key[5:]} must be positive, got {base:g}", "cam", key)
+    return base / 2 if key == "base_diameter" else base
 
 
 def _disc_segments(disc: tuple[float, float], metre: float, data: dict[str, Any], fail
