@@ -102,6 +102,9 @@ class Engine:
     """The order the cylinders fire in, where the file gives the cranks by it (empty where
     it gives them one by one), and the engine's ``strokes`` a cycle (2 or 4)."""
     strokes: int = 0
+    radial: int = 0
+    """A radial engine's number of cylinders, their lines evenly round the crank shaft and
+    every rod on one crank: 0 for cylinders in line or a V."""
 
     @property
     def each(self) -> tuple[float, ...]:

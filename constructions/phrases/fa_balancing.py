@@ -102,6 +102,20 @@ WORDS: dict[str, str] = {
         "کمترین برآیند {kind}: {size} N، نخست در θ = {angle}°",
     "with crank 1 at {angle}° from the i.d.c., along the line of stroke: {values}":
         "با لنگ ۱ در {angle}° از نقطهٔ مرگ داخلی، در امتداد خط کورس: {values}",
+    "Resultant forces of the radial engine": "نیروهای برآیند موتور شعاعی",
+    "{count} cylinders {pitch}° apart, θ from cylinder 1's line":
+        "{count} سیلندر با {pitch} درجه فاصله، θ از خط سیلندر ۱",
+    "radial engine, {count} cylinders {pitch}° apart on one crank, at θ = {angle}° from "
+    "cylinder 1's line: the {kind} resultant {size} N ({along} N along that line, {across} N "
+    "across it)":
+        "موتور شعاعی با {count} سیلندر به فاصلهٔ {pitch}° روی یک لنگ، در θ = {angle}° از خط "
+        "سیلندر ۱: برآیند {kind} {size} N ({along} N در امتداد آن خط و {across} N عمود بر آن)",
+    "the {kind} resultant points {direction}° from cylinder 1's line: {sense}":
+        "برآیند {kind} در {direction}° از خط سیلندر ۱ است: {sense}",
+    "along the crank, turning with it (the direct cranks)":
+        "در امتداد لنگ و همراه آن در گردش (لنگ‌های مستقیم)",
+    "at −2θ, turning at twice the crank's speed against it (the reverse cranks)":
+        "در −2θ، با دو برابر سرعت لنگ و در خلاف جهت آن در گردش (لنگ‌های معکوس)",
     "out of balance: the {which} {size} {unit} at {angle}° ({product} {units} × ω², ω = "
     "{speed} rad/s)":
         "نامیزانی: {which} {size} {unit} با زاویهٔ {angle}° ({product} {units} × ω²، ω = "

@@ -25,7 +25,7 @@ from ..balancing.rotor import Engine, Mass
 __all__ = ["EngineSums", "balance_product", "quadrant_angle", "resultant", "single_cylinder",
            "engine_along", "engine_greatest_at", "engine_sums", "one_axial_plane", "open_residual",
            "open_rotor_roots", "polygon_roots", "two_planes", "unbalanced_resultant",
-           "vee_resultants"]
+           "vee_resultants", "radial_along_lines", "radial_constants"]
 
 
 def resultant(masses: tuple[Mass, ...] | list[Mass]) -> tuple[float, float]:
@@ -190,6 +190,35 @@ def vee_resultants(e: Engine, theta: float) -> tuple[float, float | None]:
         math.cos(a) * math.cos(2 * a) * math.cos(2 * theta),
         math.sin(a) * math.sin(2 * a) * math.sin(2 * theta))
     return primary, secondary
+
+
+def radial_along_lines(e: Engine, theta: float
+                       ) -> tuple[tuple[float, float], tuple[float, float] | None]:
+    """A radial engine's resultant primary and secondary forces (N, along and across
+    cylinder 1's line) with the crank at θ from cylinder 1's line, summed over the cylinders
+    along their own lines at φᵢ = 360°·i/n: m·ω²·r·cos(θ − φᵢ) and m·ω²·r·cos 2(θ − φᵢ)/n
+    along (cos φᵢ, sin φᵢ), the secondary None with no rod."""
+    f = e.reciprocating * e.speed ** 2 * e.crank
+    lines = [2 * math.pi * i / e.radial for i in range(e.radial)]
+
+    def total(size: float, k: int) -> tuple[float, float]:
+        return (math.fsum(size * math.cos(k * (theta - p)) * math.cos(p) for p in lines),
+                math.fsum(size * math.cos(k * (theta - p)) * math.sin(p) for p in lines))
+    return total(f, 1), None if e.rod is None else total(f / (e.rod / e.crank), 2)
+
+
+def radial_constants(e: Engine) -> tuple[float, float | None]:
+    """A radial engine's primary and secondary resultants (N), of one size at every crank
+    angle for n ≥ 3 cylinders: Σ cos(θ − φᵢ)·e^{iφᵢ} = (n/2)·e^{iθ} + ½·e^{−iθ}·Σ e^{2iφᵢ},
+    the last sum 0 unless n divides 2, so the primary is (n/2)·m·ω²·r; likewise
+    Σ cos 2(θ − φᵢ)·e^{iφᵢ} = ½·e^{2iθ}·Σ e^{−iφᵢ} + ½·e^{−2iθ}·Σ e^{3iφᵢ}, the first 0 and
+    the second n where n divides 3, so the secondary is (3/2)·m·ω²·r/n for three cylinders
+    and 0 for more; the secondary None with no rod."""
+    f = e.reciprocating * e.speed ** 2 * e.crank
+    primary = e.radial / 2 * f
+    if e.rod is None:
+        return primary, None
+    return primary, (1.5 * f / (e.rod / e.crank) if e.radial == 3 else 0.0)
 
 
 TANGENT = 1e-9

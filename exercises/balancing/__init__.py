@@ -42,6 +42,9 @@ class Balancing(Chapter):
         if exercise.rotor is not None and exercise.engine is None:
             return ("the balancing mass by the force polygon" if len(exercise.rotor.planes) == 1
                     else "the two balancing masses by the couple and force polygons")
+        if exercise.engine.radial:
+            return ("the resultant primary and secondary forces of a radial engine's cylinders "
+                    "by direct and reverse cranks")
         if exercise.engine.vee:
             return "the resultant primary and secondary forces of a V engine's two cylinders"
         if len(exercise.engine.cranks) == 1:

@@ -24,6 +24,7 @@ from .open_rotor_solution import open_figures
 from .rotor_unbalance import unbalance_figures
 from .rotor_weights import GRAVITY
 from .vee_engine import vee_figure
+from .radial_engine import radial_figure
 
 if TYPE_CHECKING:
     from .balance_solution import BalanceSolution
@@ -50,6 +51,8 @@ def balance_figures(s: BalanceSolution) -> dict[str, Figure]:
     if ex.engine is None:
         return _rotor_figures(s, unit, metre)
     e = ex.engine
+    if e.radial:
+        return {"forces": radial_figure(e)}
     if e.vee:
         return {"forces": vee_figure(e)}
     if len(e.cranks) == 1:

@@ -33,6 +33,7 @@ from .engine_balance import left_checked, left_lines, left_misses
 from .firing_order import firing_line
 from .single_cylinder import cylinder_balance, cylinder_checked, cylinder_lines
 from .vee_engine import vee_checked, vee_lines, vee_misses
+from .radial_engine import radial_checked, radial_lines, radial_misses
 from .open_rotor_solution import open_checked, open_lines, open_misses
 from .rotor_unbalance import (unbalance, unbalance_checked, unbalance_lines,
                               unbalance_misses)
@@ -145,6 +146,8 @@ class BalanceSolution(ChapterFiles):
                     out.append((kind, miss))
             out += self._greatest_misses(e) + left_misses(self, AGREE) + at_misses(self, AGREE)
         e = self.exercise.engine
+        if e is not None and e.radial:
+            return out + radial_misses(e)
         return out + (vee_misses(e) if e is not None and e.vee else [])
 
     def _greatest_misses(self, e) -> list[tuple[str, float]]:
@@ -353,6 +356,8 @@ class BalanceSolution(ChapterFiles):
     @property
     def cylinder_balance(self) -> tuple[float, float, float] | None:
         """A single cylinder's balance mass (see :func:`.single_cylinder.cylinder_balance`)."""
+        if e.radial:
+            return radial_lines(e)
         return cylinder_balance(self.exercise.engine)
 
     def document(self) -> list[Section]:
@@ -402,7 +407,9 @@ class BalanceSolution(ChapterFiles):
         """An engine's forces and couples: a single cylinder's, or the in-line polygons'."""
         ex = self.exercise
         q: dict[str, Checked] = {}
-        if ex.engine.vee:
+        if ex.engine.radial:
+            q |= radial_checked(ex.engine)
+        elif ex.engine.vee:
             q |= vee_checked(ex.engine)
         elif len(ex.engine.cranks) == 1:
             q |= cylinder_checked(ex.engine)

@@ -22,6 +22,7 @@ from ..names import named_in, read_names, renamed_field
 from ..table_file import SPEEDS, Tables
 from .engine_unknowns import cylinder_masses, has_unknowns, primary_balance
 from .firing_order import firing_cranks, read_firing_order
+from .one_crank_file import read_radial, read_vee
 from .open_rotor_file import UNKNOWN, read_open_rotor
 from .rotor_weights import GRAVITY, mass_or_weight, refuse_weights
 
@@ -40,7 +41,8 @@ _KEYS = {"rotor": ("speed", "about", "bearings"),
          "balance": ("name", "plane", "radius", "mass", "weight"),
          "engine": ("speed", "crank", "stroke", "rod", "reciprocating", "balanced", "at",
                     "revolving", "balance_radius", "balance_mass", "firing_order", "strokes",
-                    "road_speed", "wheel_diameter", "vee", "dead_load", "rod_ratio"),
+                    "road_speed", "wheel_diameter", "vee", "radial", "dead_load",
+                    "rod_ratio"),
          "cylinder": ("crank", "plane", "reciprocating")}
 
 
@@ -195,29 +197,6 @@ def _share(t: Tables, one: dict) -> float:
         return t.number({"balanced": v.strip()[:-1]}, "balanced", "engine",
                         "the balanced percentage") / 100
     return t.number(one, "balanced", "engine", "the balanced fraction", 0, 0.0)
-
-
-def _vee(t: Tables, one: dict) -> float:
-    """A V engine's angle between its cylinders' lines (rad), 0 where the file gives none;
-    its two cylinders share one crank, so it takes no [[cylinder]] tables, and no balance
-    mass or firing order."""
-    if "vee" not in one:
-        return 0.0
-    v = t.number(one, "vee", "engine", "the V's angle")
-    if not 0 < v < 180:
-        raise t.fail(f"the V's angle between its cylinders' lines is between 0° and 180°, got "
-                     f"{v:g}", "engine", "vee")
-    if t.entries("cylinder"):
-        raise t.fail("a V engine's two cylinders work on one crank: leave out the [[cylinder]] "
-                     "tables", "cylinder", None, 0)
-    other = [k for k in ("balanced", "revolving", "balance_radius", "balance_mass",
-                         "firing_order", "strokes") if k in one] + (
-        ["balance"] if t.entries("balance") else [])
-    if other:
-        raise t.fail(f"{other[0]} is not taken for a V engine: its resultant forces are found "
-                     "unbalanced; leave it out", "engine" if other[0] != "balance" else "balance",
-                     other[0] if other[0] != "balance" else None)
-    return math.radians(v)
 
 
 def _wheel(t: Tables, one: dict, metre: float, cylinders: int
@@ -381,7 +360,8 @@ def _engine(t: Tables, metre: float) -> tuple[Engine, OpenRotor | None]:
     if not 0 <= balanced <= 1:
         raise t.fail(f"the balanced fraction is from 0 to 1, got {balanced:g}", "engine",
                      "balanced")
-    vee = _vee(t, one)
+    vee = read_vee(t, one)
+    radial = read_radial(t, one)
     cylinders = t.entries("cylinder") or [{"crank": 0, "plane": 0}]
     masses = cylinder_masses(t, one, cylinders)
     if has_unknowns(cylinders):
@@ -411,7 +391,8 @@ def _engine(t: Tables, metre: float) -> tuple[Engine, OpenRotor | None]:
                          "line need their planes apart (plane = …)", "cylinder",
                          "plane" if "plane" in cylinders[i] else None, i)
     revolving, radius, balance = _revolving(t, one, len(cranks), unit)
-    if len(set(masses)) > 1 and (t.entries("balance") or len(cranks) == 1 or vee):
+    if len(set(masses)) > 1 and (t.entries("balance") or len(cranks) == 1 or vee
+                                 or radial):
         raise t.fail("cylinders of different reciprocating masses are taken in line, with no "
                      "balance planes: give the mass in [engine] alone", "cylinder",
                      "reciprocating", next(i for i, c in enumerate(cylinders)
@@ -421,7 +402,7 @@ def _engine(t: Tables, metre: float) -> tuple[Engine, OpenRotor | None]:
                   revolving, None if radius is None else radius * metre, balance,
                   *_wheel(t, one, metre, len(cranks)), "at" in one,
                   tuple(masses) if len(set(masses)) > 1 else (),
-                  vee, *(firing or ((), 0))), None
+                  vee, *(firing or ((), 0)), radial=radial), None
 
 
 def _engine_rotor(t: Tables, e: Engine, metre: float) -> Rotor | None:
