@@ -24,6 +24,14 @@ WORDS: dict[str, str] = {
     "dashed one), counter-clockwise":
         "نمای انتهایی: هر جرم روی خط شعاعی خود؛ زاویه\u200cها از شعاع مرجع (خط\u200cچین "
         "کوتاه)، پادساعتگرد",
+    "end view: each mass on its radial line, angles from the reference radius (the short "
+    "dashed one), clockwise":
+        "نمای انتهایی: هر جرم روی خط شعاعی خود؛ زاویه\u200cها از شعاع مرجع (خط\u200cچین "
+        "کوتاه)، ساعتگرد",
+    "angles are measured clockwise from the reference radius, as the file gives them, and "
+    "every angle found is read the same way":
+        "زاویه\u200cها، چنان که پرونده می\u200cدهد، ساعتگرد از شعاع مرجع اندازه گرفته "
+        "می\u200cشوند و هر زاویهٔ یافته\u200cشده نیز همین\u200cگونه خوانده می\u200cشود",
     "m = W/g, g = {g} m/s²": "m = W/g، g = {g} m/s²",
     "a mass": "یک جرم", "a balancing mass found": "جرم متعادل\u200cکنندهٔ به\u200cدست\u200cآمده",
     "side view: the planes along the shaft, positions in {unit}":
@@ -94,14 +102,6 @@ WORDS: dict[str, str] = {
     "resultant {size} N ({along} N along the centre line, {across} N across it)":
         "موتور V با {vee}° میان خط‌های کورس، در θ = {angle}° از خط میانی: برآیند {kind} "
         "{size} N ({along} N در امتداد خط میانی و {across} N عمود بر آن)",
-    "the {kind} resultant is {size} N at every crank angle":
-        "برآیند {kind} در هر زاویهٔ لنگ {size} N است",
-    "the greatest {kind} resultant: {size} N, first at θ = {angle}°":
-        "بیشترین برآیند {kind}: {size} N، نخست در θ = {angle}°",
-    "the least {kind} resultant: {size} N, first at θ = {angle}°":
-        "کمترین برآیند {kind}: {size} N، نخست در θ = {angle}°",
-    "with crank 1 at {angle}° from the i.d.c., along the line of stroke: {values}":
-        "با لنگ ۱ در {angle}° از نقطهٔ مرگ داخلی، در امتداد خط کورس: {values}",
     "Resultant forces of the radial engine": "نیروهای برآیند موتور شعاعی",
     "{count} cylinders {pitch}° apart, θ from cylinder 1's line":
         "{count} سیلندر با {pitch} درجه فاصله، θ از خط سیلندر ۱",
@@ -116,6 +116,14 @@ WORDS: dict[str, str] = {
         "در امتداد لنگ و همراه آن در گردش (لنگ‌های مستقیم)",
     "at −2θ, turning at twice the crank's speed against it (the reverse cranks)":
         "در −2θ، با دو برابر سرعت لنگ و در خلاف جهت آن در گردش (لنگ‌های معکوس)",
+    "the {kind} resultant is {size} N at every crank angle":
+        "برآیند {kind} در هر زاویهٔ لنگ {size} N است",
+    "the greatest {kind} resultant: {size} N, first at θ = {angle}°":
+        "بیشترین برآیند {kind}: {size} N، نخست در θ = {angle}°",
+    "the least {kind} resultant: {size} N, first at θ = {angle}°":
+        "کمترین برآیند {kind}: {size} N، نخست در θ = {angle}°",
+    "with crank 1 at {angle}° from the i.d.c., along the line of stroke: {values}":
+        "با لنگ ۱ در {angle}° از نقطهٔ مرگ داخلی، در امتداد خط کورس: {values}",
     "out of balance: the {which} {size} {unit} at {angle}° ({product} {units} × ω², ω = "
     "{speed} rad/s)":
         "نامیزانی: {which} {size} {unit} با زاویهٔ {angle}° ({product} {units} × ω²، ω = "

@@ -43,11 +43,11 @@ def balance_figures(s: BalanceSolution) -> dict[str, Figure]:
     ex = s.exercise
     unit, metre = ex.length_unit, LENGTH_UNITS[ex.length_unit]
     if ex.open is not None:     # and an engine's polygons, where its primary balance found it
-        return open_figures(ex.name, s.closure, ex.open, unit) | (
+        return open_figures(ex.name, s.closure, ex.open, unit, ex.clockwise) | (
             _engine_figures(s) if ex.engine else {})
     if ex.engine is None and s.unbalance is not None:
         return unbalance_figures(ex.name, ex.rotor, s.unbalance, unit, metre,
-                                 GRAVITY if ex.weights else None)
+                                 GRAVITY if ex.weights else None, ex.clockwise)
     if ex.engine is None:
         return _rotor_figures(s, unit, metre)
     e = ex.engine
@@ -100,7 +100,7 @@ def _rotor_figures(s: BalanceSolution, unit: str, metre: float) -> dict[str, Fig
                        radius))
     out = {"space": draw_end_view(b.construction, masses,
                                   words("{name}: space diagram", name=ex.name),
-                                  unit, metre, found)}
+                                  unit, metre, found, clockwise=ex.clockwise)}
     if len(r.planes) == 2 or len({m.plane for m in r.masses}) > 1:
         planes = [(f"{m.name}", m.plane, "link") for m in r.masses]
         planes += [(p.name, p.position, "normal") for p in r.planes]
@@ -117,13 +117,15 @@ def _rotor_figures(s: BalanceSolution, unit: str, metre: float) -> dict[str, Fig
             words("{name}: couple polygon (reference plane {plane})", name=ex.name,
                   plane=r.planes[0].name), "kg·m²",
             ("(m r l)", bname, _none_words() if bname in b.none else _size_words(
-                f"{math.hypot(*v):.4g}", "kg·m²", f"{angle_deg(v):.1f}")))
+                f"{math.hypot(*v):.4g}", "kg·m²", f"{angle_deg(v):.1f}")),
+            clockwise=ex.clockwise)
     a = r.planes[0].name
     v = b.product(a)
     out["force-polygon"] = draw_polygon(
         b.construction, b.force, b.closing[a], words("{name}: force polygon", name=ex.name),
         "kg·m", ("(m r)", a, _none_words() if a in b.none else _size_words(
-            f"{math.hypot(*v):.4g}", "kg·m", f"{angle_deg(v):.1f}")))
+            f"{math.hypot(*v):.4g}", "kg·m", f"{angle_deg(v):.1f}")),
+        clockwise=ex.clockwise)
     return out
 
 def _table(s: BalanceSolution, unit: str, metre: float) -> Figure:

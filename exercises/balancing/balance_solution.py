@@ -11,7 +11,7 @@ closing side against the sum of its cylinders' vectors.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from functools import cached_property
 from typing import Any
 
@@ -230,6 +230,11 @@ class BalanceSolution(ChapterFiles):
 
     def lines(self) -> list[str]:
         """What the command line prints, and steps.md lists, in the language spoken."""
+        return ([words("angles are measured clockwise from the reference radius, as the file "
+                       "gives them, and every angle found is read the same way")]
+                if self.exercise.clockwise else []) + self._lines()
+
+    def _lines(self) -> list[str]:
         ex = self.exercise
         if ex.open is not None:     # and an engine's, where its primary balance found them
             return open_lines(self.closure, ex.open, ex.length_unit, self.passed,
@@ -351,13 +356,13 @@ class BalanceSolution(ChapterFiles):
 
     def _cylinder_lines(self, e) -> list[str]:
         """A single cylinder's lines (a V engine's pair on one crank: their resultants)."""
+        if e.radial:
+            return radial_lines(e)
         return vee_lines(e) if e.vee else cylinder_lines(e, self._length)
 
     @property
     def cylinder_balance(self) -> tuple[float, float, float] | None:
         """A single cylinder's balance mass (see :func:`.single_cylinder.cylinder_balance`)."""
-        if e.radial:
-            return radial_lines(e)
         return cylinder_balance(self.exercise.engine)
 
     def document(self) -> list[Section]:
@@ -377,7 +382,16 @@ class BalanceSolution(ChapterFiles):
     def checked(self) -> dict[str, Checked]:
         """results.json's quantities, in SI: a rotor's balancing products beside the closed
         form; an engine's unbalanced forces and couples beside their vector sums (a single
-        cylinder's, read off the closed form, stand alone)."""
+        cylinder's, read off the closed form, stand alone). Where the file measures its
+        angles clockwise, each quantity with an angle says so, ``"sense": "cw"``."""
+        q = self._checked()
+        if not self.exercise.clockwise:
+            return q
+        return {k: replace(c, value={**c.value, "sense": "cw"})
+                if "angle_deg" in c.value or c.value.get("unit") == "deg" else c
+                for k, c in q.items()}
+
+    def _checked(self) -> dict[str, Checked]:
         ex = self.exercise
         q: dict[str, Checked] = {}
         if ex.open is not None:

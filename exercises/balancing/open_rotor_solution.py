@@ -168,8 +168,9 @@ def _choice(closure: Closure, which: str) -> str:
 
 
 def open_figures(name: str, closure: Closure, rotor: OpenRotor,
-                 length_unit: str) -> dict[str, Figure]:
-    """The end view (the found masses dashed), the side view, and the polygons."""
+                 length_unit: str, clockwise: bool = False) -> dict[str, Figure]:
+    """The end view (the found masses dashed), the side view, and the polygons (their
+    angles ``clockwise`` where the file's are)."""
     metre = LENGTH_UNITS[length_unit]
     unit = length_unit
     c = closure.construction
@@ -179,7 +180,8 @@ def open_figures(name: str, closure: Closure, rotor: OpenRotor,
               closure.parts[p.name].radius)
              for p in closure.given.values() if p.angle is None or p.size is None]
     out = {"space": draw_end_view(c, known, words("{name}: space diagram", name=name), unit,
-                                  metre, found, found_word="a mass with unknowns, found")}
+                                  metre, found, found_word="a mass with unknowns, found",
+                                  clockwise=clockwise)}
     if not rotor.static:
         planes = [(p.name, p.plane, "link" if closure.given[p.name].plane is not None
                    else "normal") for p in closure.parts.values()]
@@ -192,7 +194,7 @@ def open_figures(name: str, closure: Closure, rotor: OpenRotor,
             plane=closure.reference[0])
         out[f"{which}-polygon"] = draw_polygon(
             c, tips, closure.closing[which], title, "kg·m" if which == "force" else "kg·m²",
-            (closure.last[which], "", words(": found")))
+            (closure.last[which], "", words(": found")), clockwise=clockwise)
     return out
 
 

@@ -36,7 +36,7 @@ _NAME = re.compile(rf"^[^\s\x00-\x1f\x7f-\x9f\u202a-\u202e\u2066-\u2069]{{1,{_NA
 
 _UNITS = ("length", "speed")
 """The units a balancing file states; masses are always kg and weights N."""
-_KEYS = {"rotor": ("speed", "about", "bearings"),
+_KEYS = {"rotor": ("speed", "about", "bearings", "angles"),
          "mass": ("name", "mass", "weight", "radius", "angle", "plane", "between"),
          "balance": ("name", "plane", "radius", "mass", "weight"),
          "engine": ("speed", "crank", "stroke", "rod", "reciprocating", "balanced", "at",
@@ -67,6 +67,10 @@ class BalanceExercise:
     """The rotor's or engine's name in other languages (``[names]``, :mod:`.names`)."""
     weights: bool = False
     """The file gives its masses as weights in N (:mod:`.rotor_weights`)."""
+    clockwise: bool = False
+    """The file measures its angles clockwise (``[rotor] angles = "cw"``), as some books do.
+    The rotor is then solved as its mirror image, in which every angle given and found reads
+    counter-clockwise: the sizes are the same, and each angle found is the clockwise one."""
 
     def named_in(self, lang: str) -> BalanceExercise:
         """The same exercise with its rotor or engine named in ``lang``, if its file does."""
@@ -94,7 +98,7 @@ def parse_balance(text: str, filename: str = "<string>", exercise_id: str = "rot
     common = dict(id=exercise_id, name=_text(t, "name", exercise_id),
                   source=_text(t, "source", ""), description=_text(t, "description", ""),
                   length_unit=length, speed_unit=speed_unit,
-                  names=read_names(data, t.where, filename))
+                  names=read_names(data, t.where, filename), clockwise=_clockwise(t))
     if "engine" in data:
         refuse_weights(t, "in an engine's file")
         engine, primary = _engine(t, metre)
@@ -161,6 +165,18 @@ def _bearings(t: Tables, planes: list, metre: float, taken: dict[str, str]
         raise t.fail("the two bearings stand at the same axial position: they must be apart to "
                      "share a couple", "rotor", "bearings")
     return tuple(out)
+
+
+def _clockwise(t: Tables) -> bool:
+    """``[rotor] angles``: "ccw" (counter-clockwise, the default) or "cw", the sense the
+    file's angles, and so its answers, are measured in."""
+    if "rotor" not in t.data:
+        return False
+    sense = _one(t, "rotor").get("angles", "ccw")
+    if sense not in ("ccw", "cw"):
+        raise t.fail(f'angles gives the sense the angles are measured in, "ccw" (counter-'
+                     f'clockwise, the default) or "cw", got {sense!r:.20}', "rotor", "angles")
+    return sense == "cw"
 
 
 def _one(t: Tables, table: str) -> dict:

@@ -98,9 +98,10 @@ def unbalance_lines(r, u: Unbalance, length) -> list[str]:
 
 
 def unbalance_figures(name: str, r, u: Unbalance, unit: str, metre: float,
-                      g: float | None = None) -> dict[str, Figure]:
+                      g: float | None = None, clockwise: bool = False) -> dict[str, Figure]:
     """The end view, the side view (planes apart) and the polygons; ``g`` where the file
-    gives weights, each then named in N as it was given."""
+    gives weights, each then named in N as it was given; ``clockwise`` where its angles
+    are."""
     masses = [(m.name, m.radius, words("{name}: {mass} {kg} at {radius} {unit}, {angle}°",
                                        name=m.name, mass=numerals(f"{m.mass * (g or 1):.6g}"),
                                        kg=unit_words("N" if g else "kg"),
@@ -109,7 +110,8 @@ def unbalance_figures(name: str, r, u: Unbalance, unit: str, metre: float,
                                        angle=numerals(f"{math.degrees(m.angle):g}")))
               for m in r.masses]
     out = {"space": draw_end_view(u.construction, masses,
-                                  words("{name}: space diagram", name=name), unit, metre, [])}
+                                  words("{name}: space diagram", name=name), unit, metre, [],
+                                  clockwise=clockwise)}
     if "couple" in u.closing:
         out["side"] = draw_side_view([(m.name, m.plane, "link") for m in r.masses],
                                      words("{name}: side view", name=name), unit, metre)
@@ -127,5 +129,5 @@ def unbalance_figures(name: str, r, u: Unbalance, unit: str, metre: float,
             per, ("−R", "", words(" = {size} {unit} at {angle}°",
                                   size=numerals(f"{math.hypot(*v):.4g}"),
                                   unit=unit_words(per),
-                                  angle=numerals(f"{back:.1f}"))))
+                                  angle=numerals(f"{back:.1f}"))), clockwise=clockwise)
     return out

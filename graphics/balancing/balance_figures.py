@@ -29,10 +29,11 @@ _MASS = 1.6       # radius (mm) of a mass's circle in the end view
 
 def draw_polygon(c: Construction, tips: Sequence[tuple[str, Ref]], closing: Ref, title: str,
                  unit: str, reading: tuple[str, str, str], notes: Sequence[str] = (),
-                 names: dict[str, str] | None = None) -> Figure:
+                 names: dict[str, str] | None = None, clockwise: bool = False) -> Figure:
     """The polygon whose tips are ``tips`` in order from its pole, closed by ``closing``;
     its sizes in ``unit`` per drawing unit, the closing side read as ``reading`` (text,
-    subscript, and the words after it: "(m r)", "A", " = 1.39 kg·m at 3.9°")."""
+    subscript, and the words after it: "(m r)", "A", " = 1.39 kg·m at 3.9°"); with
+    ``clockwise`` its angles are drawn clockwise (the construction's mirror image)."""
     names = names or {}
     start = c[closing].inputs[1]
     points = [c.output(start).xy] + [c.output(r).xy for _, r in tips]
@@ -41,8 +42,10 @@ def draw_polygon(c: Construction, tips: Sequence[tuple[str, Ref]], closing: Ref,
     per_cm = nice_per_cm(extent, _ROOM)
     k = 10.0 / per_cm
 
+    up = 1.0 if clockwise else -1.0      # paper y runs down: counter-clockwise is −y
+
     def paper(xy) -> tuple[float, float]:
-        return xy[0] * k, -xy[1] * k
+        return xy[0] * k, up * xy[1] * k
 
     fig = Figure(0.0, 0.0, title=title)
     centre = [paper(p) for p in points]          # the corners, to keep words outside
@@ -147,11 +150,13 @@ def _outward(a, b, corners, by: float, *, up: bool) -> tuple[float, float]:
 
 def draw_end_view(c: Construction, masses: Sequence[tuple[str, float, str]], title: str,
                   unit: str, metre: float, found: Sequence[tuple[str, float, float]] = (),
-                  notes: Sequence[str] = (), found_word: str = "a balancing mass found"
-                  ) -> Figure:
+                  notes: Sequence[str] = (), found_word: str = "a balancing mass found",
+                  clockwise: bool = False) -> Figure:
     """The end view: the shaft's centre O and each mass (step ``P<name>``) on its radial
     line; ``masses`` gives each (name, radius in m, its label), ``found`` each balancing
-    mass (label, angle in rad, radius in m), drawn dashed."""
+    mass (label, angle in rad, radius in m), drawn dashed; with ``clockwise`` the angles
+    run clockwise (the construction's mirror image)."""
+    up = 1.0 if clockwise else -1.0      # paper y runs down: counter-clockwise is −y
     reach = max([r for _, r, _ in masses] + [r for _, _, r in found]) or 1.0
     per_cm = nice_per_cm(2.4 * reach / metre, _ROOM * 0.8)
     k = 10.0 / (per_cm * metre)
@@ -165,7 +170,8 @@ def draw_end_view(c: Construction, masses: Sequence[tuple[str, float, str]], tit
              a) for i, a in enumerate(rays)]
     width, at = max(gaps)
     mid = at + width / 2
-    fig.add(Text((4.2 * math.cos(mid), -4.2 * math.sin(mid) + 1.0), "O", 3.0, "middle", True))
+    fig.add(Text((4.2 * math.cos(mid), up * 4.2 * math.sin(mid) + 1.0), "O", 3.0, "middle",
+                 True))
     # The 0° radius, short; where a mass lies along it, run on past that mass's circle so
     # it shows, and kept clear of the names.
     on_it = [r * k for r, a in radii if abs(math.remainder(a, 2 * math.pi)) < math.radians(2.0)]
@@ -174,7 +180,7 @@ def draw_end_view(c: Construction, masses: Sequence[tuple[str, float, str]], tit
     taken: list = [(max(on_it) + _MASS, -0.6, length, 0.6)] if on_it else []
     for name, _, label in masses:
         x, y = c.output(f"P{name}").xy
-        at = (x * k, -y * k)
+        at = (x * k, up * y * k)
         fig.add(Path(((0.0, 0.0), at), "link"))
         fig.add(Circle(at, _MASS, "pin"))
         d = math.hypot(*at) or 1.0
@@ -184,15 +190,18 @@ def draw_end_view(c: Construction, masses: Sequence[tuple[str, float, str]], tit
                               else "middle", False), taken, keep=True,
                          step=(1.5 * out[0], 1.5 * out[1] or 1.5)))
     for label, angle, radius in found:
-        at = (radius * k * math.cos(angle), -radius * k * math.sin(angle))
+        at = (radius * k * math.cos(angle), up * radius * k * math.sin(angle))
         fig.add(Path(((0.0, 0.0), at), "normal"))
         fig.add(Circle(at, _MASS, "badge"))
-        out = (math.cos(angle), -math.sin(angle))
+        out = (math.cos(angle), up * math.sin(angle))
         fig.add(clear_of(Text((at[0] + 4.5 * out[0], at[1] + 4.5 * out[1] + 1.0), label,
                               2.8, "start" if out[0] > 0.2 else "end" if out[0] < -0.2
                               else "middle", False), taken, keep=True,
                          step=(1.5 * out[0], 1.5 * out[1] or 1.5)))
     draw_caption(fig, title, [words("end view: each mass on its radial line, angles from the "
+                                    "reference radius (the short dashed one), "
+                                    "clockwise") if clockwise else
+                              words("end view: each mass on its radial line, angles from the "
                                     "reference radius (the short dashed one), "
                                     "counter-clockwise")],
                  per_cm=per_cm, unit=unit, notes=notes,
