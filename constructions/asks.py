@@ -28,7 +28,8 @@ __all__ = ["Ask", "Position", "Centre", "AngularVelocity", "Velocity", "Relative
            "Rubbing", "Equivalent",
            "Mobility",
            "GrashofClass",
-           "LengthRange", "TimeRatio", "Stroke", "Swing", "CentreCount", "JointForce",
+           "LengthRange", "TimeRatio", "Stroke", "Swing", "StrokeEvent", "CentreCount",
+           "JointForce",
            "DrivingTorque", "Effort", "EFFORTS", "MOMENTS",
            "parse_ask", "ask_names", "on_one_line",
            "SYMBOLS", "symbol", "ordered"]
@@ -397,6 +398,23 @@ class Swing(_Whole):
 
 
 @dataclass(frozen=True)
+class StrokeEvent(Ask):
+    """Over a turn of the crank at steady speed, of the block ``point`` on a frame guide:
+    ``A_P_zero`` where its acceleration is 0 on the out-stroke (from the dead centre where
+    it stands farthest from the crank shaft), ``V_P_max`` its greatest speed and where."""
+
+    point: str
+    letter: str = "A"
+    scope: ClassVar[str] = "mechanism"
+    order: ClassVar[int] = 5
+
+    @property
+    def name(self) -> str:
+        """``A_P_zero`` or ``V_P_max``."""
+        return f"{self.letter}_{self.point}_{'zero' if self.letter == 'A' else 'max'}"
+
+
+@dataclass(frozen=True)
 class CentreCount(_Whole):
     """How many instant centres there are, n(n − 1)/2, and how many of them inspection finds
     and how many Kennedy's theorem."""
@@ -485,6 +503,8 @@ _GRAMMAR: tuple[tuple[re.Pattern, callable], ...] = tuple(
         (fr"dist_{_PLAIN}_I(\d)(\d)", lambda m: Distance(m[1], (int(m[2]), int(m[3])))),
         (r"mu", lambda m: TransmissionAngle()),
         (r"swing_(\d+)", lambda m: Swing(int(m[1]))),
+        (f"A_{_PLAIN}_zero", lambda m: StrokeEvent(m[1], "A")),
+        (f"V_{_PLAIN}_max", lambda m: StrokeEvent(m[1], "V")),
         (r"I(\d)(\d)", lambda m: Centre((int(m[1]), int(m[2])))),
         (r"I(\d+),(\d+)", lambda m: Centre((int(m[1]), int(m[2])))),
         (r"omega(\d+)", lambda m: AngularVelocity(int(m[1]))),

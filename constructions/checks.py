@@ -308,6 +308,17 @@ def _interval(value: dict, ref: dict, scale: float) -> tuple[dict, dict, float]:
     return value, ref, err if math.isfinite(err) else 1.0
 
 
+def _stroke_event(value: dict, ref: dict, scale: float) -> tuple[dict, dict, float]:
+    """A zero acceleration's angles (degrees) beside half a turn; a greatest speed relative
+    to itself, and where it is beside half a turn."""
+    if "zeros" in ref:
+        if len(value["zeros"]) != len(ref["zeros"]):
+            return value, ref, 1.0
+        return value, ref, max(abs(v - r) for v, r in zip(value["zeros"], ref["zeros"])) / 180
+    return value, ref, max(abs(value["value"] - ref["value"]) / max(ref["value"], 1e-300),
+                           abs(value["angle"] - ref["angle"]) / 180)
+
+
 _RULES: dict[type, Callable[[dict, dict, float], tuple[dict, dict, float]]] = {
     A.Position: _point, A.CentreCount: _counts, A.Ratio: _rate, A.MechanicalAdvantage: _rate,
     A.Distance: _rate, A.TransmissionAngle: _rate, A.LeastVelocity: _point_and_speed,
@@ -316,6 +327,7 @@ _RULES: dict[type, Callable[[dict, dict, float], tuple[dict, dict, float]]] = {
     A.Velocity: _vector, A.Acceleration: _vector, A.Relative: _vector, A.Coriolis: _vector,
     A.Sliding: _vector, A.AccelerationPart: _vector,
     A.TimeRatio: _relative, A.Stroke: _relative, A.Swing: _angles, A.Mobility: _exact,
+    A.StrokeEvent: _stroke_event,
     A.GrashofClass: _same_class, A.LengthRange: _interval,
     A.JointForce: lambda v, r, scale: (_vector if "vector" in r else _rate)(v, r, scale),
     A.DrivingTorque: _rate,

@@ -333,6 +333,14 @@ def swing(work, ask: A.Swing) -> Expected:
     return Expected(out)
 
 
+def stroke_event(work, ask: A.StrokeEvent) -> Expected:
+    """The block's acceleration zeros found by the scalar solver, one position at a time."""
+    from .linkages.stroke_events import event_value
+    from .reference.stroke_events import bisected_zeros, stroke_events
+
+    return Expected(event_value(stroke_events(work.mechanism, ask.point, bisected_zeros), ask))
+
+
 def stroke(work, ask: A.Stroke) -> Expected:
     """The block's travel between its two reversals."""
     point = drawn_limits(work).point

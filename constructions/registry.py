@@ -33,6 +33,8 @@ from .linkages.klein import answer_klein, klein_fits
 from .linkages.positions import answer_position
 from .linkages.readings import LEAST_WHY_NOT, MU_WHY_NOT, answer_reading, mu_askable
 from .linkages.sliding import answer_sliding, sliding_askable
+from .linkages.stroke_events import (STROKE_EVENT_WHY_NOT, answer_stroke_event,
+                                     stroke_event_askable)
 from .linkages.transmission import answer_omega as by_transmission, transmission_links
 from .linkages.velocity_by_centres import answer_velocity as by_centres
 from .linkages.velocity_by_components import answer_velocity as by_components
@@ -97,6 +99,8 @@ METHODS: tuple[Method, ...] = (
     Method("limit positions", {A.TimeRatio: expected.time_ratio, A.Stroke: expected.stroke,
                                A.Swing: expected.swing},
            from_limits, stage=7, askable=limits_askable, why_not=LIMITS_WHY_NOT),
+    Method("stroke events", {A.StrokeEvent: expected.stroke_event}, answer_stroke_event,
+           stage=7, askable=stroke_event_askable, why_not=STROKE_EVENT_WHY_NOT),
     Method("circle diagram (count)", {A.CentreCount: expected.centre_count}, answer_count,
            stage=8),
     Method("equivalent linkage", {A.Equivalent: expected.equivalent}, answer_equivalent,

@@ -58,6 +58,7 @@ PHRASES: dict[str, str] = {
     "md.columns": "| quantity | construction | analytic | relative error | method |",
     "md.whole": "The mechanism as a whole",
     "md.whole_columns": "| quantity | answer | check | relative error | method |",
+    "stroke.events": "a turn at steady speed, its zeros narrowed to the last bit",
     "overall.grubler": "Grübler: 3({n} − 1) − 2·{f1} − {f2}",
     "overall.meeting": "{grubler}; at this position {points} is where two assemblies meet (a "
                        "change point), so the mobility is momentarily {here}",

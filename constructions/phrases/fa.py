@@ -137,6 +137,8 @@ WORDS: dict[str, str] = {
     "{span} = {length} only ({kind})": "{span} تنها برابر {length} ({kind})",
     "{value} ({here} at this position)": "{value} ({here} در این وضعیت)",
     "{swing} ({tilt} from the line of centres)": "{swing} ({tilt} با خط مراکز)",
+    "{angle} from the dead centre (crank at {crank})": "{angle} از نقطهٔ مرگ (لنگ در {crank})",
+    "{speed} at {where}": "{speed} در {where}",
     "{value} ({inspection} by inspection, {kennedy} by Kennedy; {far} at infinity)":
         "{value} ({inspection} با مشاهده، {kennedy} با قضیهٔ کندی؛ {far} در بی‌نهایت)",
     "found": "یافته", "Willis": "ویلیس", "the same": "برابر", "yes": "بله", "NO": "خیر",
@@ -188,6 +190,7 @@ PHRASES: dict[str, str] = {
     "md.columns": "| کمیت | ترسیم | تحلیلی | خطای نسبی | روش |",
     "md.whole": "مکانیزم به‌صورت کل",
     "md.whole_columns": "| کمیت | پاسخ | کنترل | خطای نسبی | روش |",
+    "stroke.events": "یک دور با سرعت ثابت، صفرهایش تا آخرین بیت تنگ شده",
     "overall.grubler": "گروبلر: 3({n} − 1) − 2·{f1} − {f2}",
     "overall.meeting": "{grubler}؛ در این وضعیت، {points} جایی است که دو حالت مونتاژ مکانیزم "
                        "به هم می‌رسند (نقطهٔ تغییر)، پس درجهٔ آزادی در این لحظه {here} است",

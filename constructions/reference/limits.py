@@ -20,7 +20,7 @@ from .solver import SingularPosition, follow_branches, solve
 from ..errors import AssemblyError, InputError
 from ..model import Drive, Mechanism
 
-__all__ = ["LimitReference", "limit_reference", "section_zero"]
+__all__ = ["LimitReference", "limit_reference", "section_zero", "turn_zeros"]
 
 SAMPLES = 360
 """Crank angles sampled to bracket the reversals: far more than a linkage's two."""
@@ -86,15 +86,7 @@ def limit_reference(mech: Mechanism, *, point: str | None = None,
             raise refused(float(angles[first]), turn.refusal(first))
         return turn.omegas[link] if slide is None else turn.slide_velocities[slide]
 
-    thetas = [d.angle + sense * 2 * math.pi * k / SAMPLES for k in range(SAMPLES + 1)]
-    speeds = speeds_at(np.asarray(thetas[:-1])).tolist()        # the scan, at once
-    speeds.append(speeds[0])     # a turn on is the same position: a reversal at the start,
-    zeros = []                   # rounded two ways, is then seen once, not missed or twice
-    for k in range(SAMPLES):
-        if speeds[k] == 0.0:
-            zeros.append(thetas[k])
-        elif speeds[k] * speeds[k + 1] < 0.0:
-            zeros.append(section_zero(speeds_at, thetas[k], thetas[k + 1], speeds[k]))
+    zeros = turn_zeros(speeds_at, d.angle, sense)
     if len(zeros) != 2:
         output = f"the block {point}" if point is not None else mech.link(link).label
         raise InputError(f"{output} reverses {len(zeros)} times in a turn of link {d.link}, "
@@ -103,6 +95,22 @@ def limit_reference(mech: Mechanism, *, point: str | None = None,
     slow, quick = max(first, 2 * math.pi - first), min(first, 2 * math.pi - first)
     stroke = abs(state(zeros[1])[1] - state(zeros[0])[1]) if slide is not None else None
     return LimitReference((zeros[0], zeros[1]), slow, quick, stroke)
+
+
+def turn_zeros(f, start: float, sense: float, samples: int = SAMPLES) -> list[float]:
+    """The angles of a turn from ``start`` (rad, the way ``sense`` turns) where ``f`` is 0,
+    in turn order: ``f`` (an array of angles to its values, solved together) is scanned at
+    ``samples`` steps and each change of sign narrowed by :func:`section_zero`."""
+    thetas = [start + sense * 2 * math.pi * k / samples for k in range(samples + 1)]
+    values = np.asarray(f(np.asarray(thetas[:-1]))).tolist()     # the scan, at once
+    values.append(values[0])     # a turn on is the same position: a zero at the start,
+    zeros = []                   # rounded two ways, is then seen once, not missed or twice
+    for k in range(samples):
+        if values[k] == 0.0:
+            zeros.append(thetas[k])
+        elif values[k] * values[k + 1] < 0.0:
+            zeros.append(section_zero(f, thetas[k], thetas[k + 1], values[k]))
+    return zeros
 
 
 def section_zero(f, lo: float, hi: float, f_lo: float, parts: int = 32) -> float:

@@ -51,6 +51,17 @@ def overall_text(name: str, v: dict, units) -> str:
                      inspection=numerals(str(v["by_inspection"])),
                      kennedy=numerals(str(v["by_kennedy"])),
                      far=numerals(str(v.get("far_centres", 0))))
+    if "crank_angle" in v:                              # A_P_zero, V_P_max: where in the turn
+        def deg(x: float) -> str:
+            return numerals(f"{x:.6g}°")
+
+        where = words("{angle} from the dead centre (crank at {crank})",
+                      angle=deg(v["value" if "zeros" in v else "angle"]),
+                      crank=deg(v["crank_angle"]))
+        if "zeros" in v:
+            return where
+        return words("{speed} at {where}", speed=numerals(
+            f"{v['value'] / units.metres:.6g} {units.length}/s"), where=where)
     if name.startswith("swing_"):                       # a lever's swing, its inclination
         swing = numerals(f"{math.degrees(v['value']):.5g}°")
         if "inclination" not in v:
@@ -157,7 +168,12 @@ def answer_line(name: str, q: Quantity, units, *, whole: bool = False) -> str:
         else:
             label = {"dof": "DOF", "grashof": "Grashof class",
                      "n_centres": "instant centres"}.get(name, name.replace("_", " "))
-            answer = f"{label} = {overall_text(name, q.value, units)}"
+            if name.endswith(("_zero", "_max")) and "crank_angle" in q.value:
+                label = name[:-5] + " = 0 at" if name.endswith("_zero") else \
+                    "greatest " + name[:-4] + " ="     # A_P = 0 at …, greatest V_P = …
+                answer = f"{label} {overall_text(name, q.value, units)}"
+            else:
+                answer = f"{label} = {overall_text(name, q.value, units)}"
     return check_line(answer, width=36, passed=q.rel_error <= q.tolerance,
                       against=f"{q.rel_error:.1e}", method=method_words(q.method),
                       failed=f"check FAILED (tolerance {q.tolerance:.1e})")
