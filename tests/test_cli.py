@@ -150,7 +150,8 @@ def test_bad_file_is_one_line_with_file_and_line(mech_file, tmp_path, edit, mess
                         "crank-shaper-forces, crank-shaper-inertia, "
                         "double-acting-engine, engine-forces, "
                         "engine-friction, engine-gas-pressure, "
-                        "four-bar-coupler-load, four-bar-forces, car-differential, compound-train, "
+                        "four-bar-coupler-load, four-bar-forces, car-differential, "
+                        "compound-equal-steps, compound-train, "
                         "differential-near-equal, gearbox-power-efficiency, "
                         "involute-pair, output-speed-given, planetary-q1, planetary-q2, "
                         "planetary-q3, planetary-q4, planetary-ratio-least-teeth, "
@@ -296,7 +297,7 @@ def test_list_shows_the_bundled_examples():
                    "double-acting-engine", "engine-forces",
                    "engine-friction", "engine-gas-pressure",
                    "four-bar-coupler-load", "four-bar-forces", "car-differential",
-                   "compound-train",
+                   "compound-equal-steps", "compound-train",
                    "differential-near-equal", "gearbox-power-efficiency", "involute-pair",
                    "output-speed-given", "planetary-q1", "planetary-q2", "planetary-q3",
                    "planetary-q4", "planetary-ratio-least-teeth", "ratio-least-teeth",

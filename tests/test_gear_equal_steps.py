@@ -10,6 +10,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from tarsim.constructions.errors import InputError
+from tarsim.exercises.catalog import load
 from tarsim.exercises.gears.train_file import parse_train
 from tarsim.exercises.gears.train_solution import solve_train
 
@@ -46,6 +47,13 @@ def test_the_book_s_36_to_1_in_two_equal_steps():
     assert q["centre_distance2_3"].exact == F(168, 1000)       # m
     assert q["omega5"].exact == 40 and s.passed
     assert "36^(1/2) = 6" in s.steps()
+
+
+def test_the_bundled_compound_equal_steps_is_the_book_s_problem():
+    """The bundled example states the same problem: 16, 96, 16, 96, 168 mm, 40 rpm."""
+    q = solve_train(load("compound-equal-steps")).quantities
+    assert [q[f"teeth{n}"].exact for n in range(2, 6)] == [16, 96, 16, 96]
+    assert q["centre_distance4_5"].exact == F(168, 1000) and q["omega5"].exact == 40
 
 
 def test_each_pair_s_own_ratio_with_its_least_count_gives_the_same():
