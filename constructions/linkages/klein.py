@@ -169,18 +169,8 @@ def _rod_point(asm, ask, w: float, parts: tuple[str, str, str], point: str, t: f
         asm.draw(ref, "lay_off", asm.points[c], image, label=x, length=t * span,
                  phrase=phrase("klein.point_v" if velocity else "klein.point_a", c=c,
                                point=point, x=x, o=o, p=p, ratio=Number(t, ".6g")))
-        ends = (asm.points[o], ref) if velocity else (ref, asm.points[o])   # Od; d′O
-        asm.draw(f"{ref}:O", "join", *ends, kind=Kind.LINE, role=Role.RESULT)
-    (ox, oy), (x_, y_) = asm.xy(o), asm.output(ref).xy
-    if velocity:
-        value = vector_value(-w * (y_ - oy), w * (x_ - ox))          # ω k × Od
-        method = "Klein's construction (V = ω·Od, d on CM)"
-    else:
-        value = vector_value(-w * w * (x_ - ox), -w * w * (y_ - oy))  # ω² d′O
-        method = "Klein's construction (a = ω²·d′O, d′ on CN)"
-    cond = min(asm[r].conditioning for r in (ref, image, asm.points[c]))
-    return Answer(ask, value, cond, method, refs=("kl:OCM", ref, f"{ref}:O"),
-                  figures=(KLEIN_FIGURE,))
+        _join_to_o(asm, ref, o, velocity)
+    return _read_image(asm, ask, w, ref, image, o, c, "d on CM" if velocity else "d′ on CN")
 
 
 def _turn(asm, vertex: str, a: str, b: str) -> float:
@@ -214,18 +204,30 @@ def _rod_plate_point(asm, ask, w: float, parts: tuple[str, str, str], point: str
             asm.draw(f"{ref}:m", "rotate_about", asm.points[c], image, angle=at_p)
             asm.draw(f"{ref}:ml", "line_through", image, f"{ref}:m")
             asm.draw(ref, "intersect_lines", f"{ref}:cl", f"{ref}:ml", label=x, phrase=said)
-        ends = (asm.points[o], ref) if velocity else (ref, asm.points[o])   # Od; d′O
-        asm.draw(f"{ref}:O", "join", *ends, kind=Kind.LINE, role=Role.RESULT)
+        _join_to_o(asm, ref, o, velocity)
+    return _read_image(asm, ask, w, ref, image, o, c,
+                       "CMd similar to the rod" if velocity else "CNd′ similar to the rod")
+
+
+def _join_to_o(asm, ref: str, o: str, velocity: bool) -> None:
+    """Join a point's image to O: Od is its velocity's line, d′O its acceleration's."""
+    ends = (asm.points[o], ref) if velocity else (ref, asm.points[o])
+    asm.draw(f"{ref}:O", "join", *ends, kind=Kind.LINE, role=Role.RESULT)
+
+
+def _read_image(asm, ask, w: float, ref: str, image: str, o: str, c: str,
+                where: str) -> Answer:
+    """A rod point's velocity ω k × Od, or acceleration ω²·d′O, read off its image ``ref``
+    (``where`` says how the image was found, for the method's words)."""
     (ox, oy), (x_, y_) = asm.xy(o), asm.output(ref).xy
-    if velocity:
-        value = vector_value(-w * (y_ - oy), w * (x_ - ox))          # ω k × Od
-        method = "Klein's construction (V = ω·Od, CMd similar to the rod)"
+    if isinstance(ask, A.Velocity):
+        value = vector_value(-w * (y_ - oy), w * (x_ - ox))
+        method = f"Klein's construction (V = ω·Od, {where})"
     else:
-        value = vector_value(-w * w * (x_ - ox), -w * w * (y_ - oy))  # ω² d′O
-        method = "Klein's construction (a = ω²·d′O, CNd′ similar to the rod)"
+        value = vector_value(-w * w * (x_ - ox), -w * w * (y_ - oy))
+        method = f"Klein's construction (a = ω²·d′O, {where})"
     cond = min(asm[r].conditioning for r in (ref, image, asm.points[c]))
-    return Answer(ask, value, cond, method,
-                  refs=("kl:OCM", ref, f"{ref}:O"),
+    return Answer(ask, value, cond, method, refs=("kl:OCM", ref, f"{ref}:O"),
                   figures=(KLEIN_FIGURE,))
 
 
