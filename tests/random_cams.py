@@ -28,6 +28,8 @@ from typing import Any
 
 import numpy as np
 
+from tarsim.exercises.file_numbers import arithmetic
+
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 from random_mechanisms import _NONFINITE, Lit, Outcome, _nonfinite  # noqa: E402
@@ -285,6 +287,10 @@ class Extremes:
 
 def _read(text: str) -> dict[str, Any]:
     data = tomllib.loads(text)
+    for table in [data.get("cam", {}), data.get("follower", {}), *data.get("segment", [])]:
+        for k, v in table.items():        # "12" is the number tarsim reads it as
+            if isinstance(v, str) and arithmetic(v) is not None:
+                table[k] = float(arithmetic(v))
     metre = _METRE[data.get("units", {}).get("length", "mm")]
     c, f = data["cam"], data.get("follower", {})
     sigma = 1.0 if c.get("sense", "ccw") == "ccw" else -1.0
