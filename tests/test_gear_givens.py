@@ -274,6 +274,61 @@ def test_an_odd_ring_less_sun_gives_no_whole_planet_and_is_refused():
         parse_train(text, "t.toml")
 
 
+SERIES = """name = "ring A, planets B and C in series, sun D"
+fixed = 1
+[[gear]]
+number = 1
+teeth = {n1}
+[[gear]]
+number = 2
+teeth = {n2}
+carrier = 5
+[[gear]]
+number = 3
+teeth = {n3}
+carrier = 5
+[[gear]]
+number = 4
+teeth = {n4}
+[arm]
+number = 5
+[[mesh]]
+gears = [2, 1]
+kind = "internal"
+[[mesh]]
+gears = [2, 3]
+[[mesh]]
+gears = [3, 4]
+[input]
+member = 5
+speed = 100
+[ask]
+find = ["teeth1", "teeth2", "teeth3", "teeth4", "omega3"]
+"""
+
+
+@settings(max_examples=30, deadline=None)
+@example(40, 30, 25, 3)                   # the books' idler planet: N_C = (150 − 40 − 50)/2
+@given(st.integers(12, 60), st.integers(12, 40), st.integers(12, 40), st.sampled_from([1, 2,
+                                                                                        3, 4]))
+def test_the_coaxial_condition_through_planets_in_series_gives_the_count_left_out(
+        sun, idler, planet, left):
+    """Sun D, planet C, planet B, ring A in series on one arm: N_A = N_D + 2·N_C + 2·N_B,
+    whichever of the four is left out; the reference finds it from the carrier radii, and
+    ω_C − ω_a = −(N_A/N_C)(0 − ω_a) with A fixed (exact fractions: tolerance 0)."""
+    ring = sun + 2 * idler + 2 * planet
+    counts = {1: ring, 2: planet, 3: idler, 4: sun}
+    text = SERIES.format(**{f"n{n}": ("…" if n == left else c) for n, c in counts.items()})
+    text = text.replace("teeth = …\n", "")
+    s = solve_train(parse_train(text, "t.toml"))
+    q = s.quantities
+    assert [q[f"teeth{n}"].exact for n in (1, 2, 3, 4)] == [ring, planet, idler, sun]
+    assert q[f"teeth{left}"].reference == counts[left]
+    assert q["omega3"].exact == 100 + F(ring, idler) * 100 and s.passed
+    assert "through the planets in series" in s.steps() and f"N{left} = {counts[left]}" in \
+        s.steps()
+
+
 def test_a_reverted_train_s_last_gear_from_its_coaxial_shafts():
     """An ordinary reverted train, 2 → 3 = 4 → 5 with 2 and 5 on one axis: N5 = N2 + N3 −
     N4 = 20 + 60 − 25 = 55, and e = (20·25)/(60·55) = 5/33."""

@@ -9,6 +9,9 @@ A gear may come with no teeth. Its count then follows, exactly, from
   m(N_c + N_p)/2 externally and m(N_c − N_p)/2 inside a ring: the notes' N1 = N2 + 2·N4,
   a reverted train's N2 + N3 = N4 + N5. In an ordinary reverted train the file says which
   two gears share an axis (``coaxial = [2, 5]``), and the same holds of its two pairs;
+  through planets in series (sun, planet, idler planet, ring, all on one arm) the last
+  planet's centre stands as far out along the chain as in from the ring:
+  N_ring = N_sun + 2·N_c + 2·N_b (:func:`_chains`);
 - an ordinary train's speed ratio, with a least tooth count for a pair both unknown
   (:func:`teeth_from_ratio`); a planetary train's, in :mod:`.planet_teeth`.
 
@@ -72,7 +75,76 @@ def imply_teeth(train: GearTrain, coaxial: tuple[int, int] | None = None
                                 equation=said, n=number, teeth=teeth))
             grew = True
             break
+        else:
+            for outward, ring in _chains(train):
+                found = _solve_chain(train, outward, ring)
+                if found is not None:
+                    number, teeth, said = found
+                    train = _with(train, number, teeth)
+                    steps.append(phrase("gears.teeth_chain", gear=train.said(number,
+                                                                             opening=True),
+                                        equation=said, n=number, teeth=teeth))
+                    grew = True
+                    break
     return train, tuple(steps)
+
+
+def _chains(train: GearTrain) -> list[tuple[list[tuple[Mesh, int]], tuple[Mesh, int]]]:
+    """Each chain of two or more single planets in series from a gear on the main axis
+    (externally) to a ring (internally): the meshes outward, each as (mesh, the gear nearer
+    the axis), and the ring's (mesh, ring). The chain is taken along one radius, as the
+    books draw it, so the last planet's carrier radius is the sum of the distances out."""
+    if not train.planetary:
+        return []
+
+    def single(g: int) -> bool:
+        return train.carried(g) and len(train.body(g)) == 1
+
+    out = []
+
+    def walk(path: list[tuple[Mesh, int]], at: int, seen: set[int]) -> None:
+        for mesh in train.meshes:
+            if at not in (mesh.a, mesh.b) or mesh.bevel:
+                continue
+            other = mesh.b if mesh.a == at else mesh.a
+            if other in seen:
+                continue
+            if single(other) and not mesh.internal:
+                walk([*path, (mesh, at)], other, seen | {other})
+            elif mesh.internal and not train.carried(other) and len(path) > 1:
+                out.append((path, (mesh, other)))
+
+    for mesh in train.meshes:
+        for sun, p in ((mesh.a, mesh.b), (mesh.b, mesh.a)):
+            if not mesh.internal and not mesh.bevel and not train.carried(sun) and single(p):
+                walk([(mesh, sun)], p, {sun, p})
+    return out
+
+
+def _solve_chain(train: GearTrain, outward: list[tuple[Mesh, int]], ring: tuple[Mesh, int]
+                 ) -> tuple[int, int, str] | None:
+    """The one unknown count of a chain of planets in series: Σ m(N_near + N_far)/2 out
+    from the axis = m(N_ring − N_last)/2, linear in the count (a planet's stands in two
+    terms); None unless exactly one count is unknown."""
+    legs = [*outward, ring]
+    missing = {g for mesh, _ in legs for g in (mesh.a, mesh.b) if _teeth(train, g) is None}
+    if len(missing) != 1:
+        return None
+    g = missing.pop()
+    sized = all(_module(train, m) is not None for m, _ in legs)
+    terms = [_linear(train, m, c, g, sized) for m, c in outward]
+    a1, b1 = sum(a for a, _ in terms), sum(b for _, b in terms)
+    a2, b2 = _linear(train, *ring, g, sized)
+    if b1 == b2:
+        return None
+    teeth = (a2 - a1) / (b1 - b2)
+    said = (" + ".join(_said(train, m, c, sized, g) for m, c in outward)
+            + f" = {_said(train, *ring, sized, g)}")
+    if teeth.denominator != 1 or teeth <= 0:
+        raise InputError(f"the coaxial condition through the planets in series, {said}, "
+                         f"gives gear {g} {float(teeth):g} teeth, not a whole number of one "
+                         "or more: check the teeth and modules given", file=train.source or None)
+    return g, int(teeth), said
 
 
 def _from_distance(train: GearTrain) -> tuple[int, int, Phrase] | None:
@@ -197,6 +269,8 @@ def coaxial_ties(train: GearTrain) -> int:
     unknown = set(unknown_teeth(train))
     ties = sum(len(pairs) - 1 for pairs in _coaxial_sets(train, train.coaxial)
                if unknown & {g for mesh, _ in pairs for g in (mesh.a, mesh.b)})
+    ties += sum(1 for outward, ring in _chains(train)
+                if unknown & {g for mesh, _ in [*outward, ring] for g in (mesh.a, mesh.b)})
     return ties + sum(1 for m in train.meshes if m.distance and unknown & {m.a, m.b})
 
 

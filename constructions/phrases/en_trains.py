@@ -36,6 +36,9 @@ PHRASES: dict[str, str] = {
                             "{equation}: N{n} = {teeth}.",
     "gears.teeth_coaxial": "{gear}: the coaxial condition, the two pairs equally far apart, "
                            "{equation}, gives N{n} = {teeth}.",
+    "gears.teeth_chain": "{gear}: the coaxial condition through the planets in series, the "
+                         "last planet's centre as far out along its chain as in from the "
+                         "ring, {equation}, gives N{n} = {teeth}.",
     "gears.twin": "Gear {copy} is a planet like gear {first}: the same teeth, the same meshes, "
                   "on the same arm. It turns as gear {first} does; the two are {n} planets, "
                   "equally spaced, and the speeds are those of one.",

@@ -109,8 +109,12 @@ def coaxial_teeth(train: GearTrain, number: int) -> Fraction:
                 set(train.coaxial) & {mesh.a, mesh.b} and set(train.coaxial) & {other.a,
                                                                                  other.b})):
             return False            # an ordinary train's pairs, only across its named axis
+        def partner(m, g):
+            return m.b if g == m.a else m.a
+
         return any(train.body(x) == train.body(y) and (
-            train.carried(x) if train.planetary else x != y)
+            train.carried(x) and not train.carried(partner(mesh, x))
+            and not train.carried(partner(other, y)) if train.planetary else x != y)
             for x in (mesh.a, mesh.b) for y in (other.a, other.b))
 
     def gap(n: int, mesh, other) -> Fraction:
@@ -126,7 +130,46 @@ def coaxial_teeth(train: GearTrain, number: int) -> Fraction:
             slope = gap(n0 + 1, mesh, other) - gap(n0, mesh, other)
             if slope:
                 return n0 - gap(n0, mesh, other) / slope
-    return Fraction(0)
+    return _series_teeth(train, number) if train.planetary else Fraction(0)
+
+
+def _series_teeth(train: GearTrain, number: int) -> Fraction:
+    """Gear ``number``'s teeth where planets in series carry it: each planet's carrier
+    radius, the sum of the pitch radii out from the main axis along its chain, is the ring's
+    radius less its own for the planet that meshes the ring; a secant through N and N + 1
+    on train.py's own distances, as :func:`coaxial_teeth`. 0 where no such chain holds it."""
+    from dataclasses import replace
+
+    def radii(t: GearTrain) -> dict[int, Fraction]:
+        """Each carried gear's distance from the axis, reached gear by gear from the
+        main-axis gears it meshes externally."""
+        out: dict[int, Fraction] = {}
+        todo = [(m, a, b) for m in t.meshes if not m.internal
+                for a, b in ((m.a, m.b), (m.b, m.a)) if not t.carried(a) and t.carried(b)]
+        while todo:
+            mesh, a, b = todo.pop(0)
+            if b in out:
+                continue
+            out[b] = out.get(a, Fraction(0)) + t._centre_distance(mesh)
+            todo += [(m, b, c) for m in t.meshes if not m.internal and b in (m.a, m.b)
+                     for c in (m.a if m.b == b else m.b,) if t.carried(c) and c not in out]
+        return out
+
+    def gap(n: int) -> Fraction | None:
+        t = replace(train, gears=tuple(replace(g, teeth=n) if g.number == number else g
+                                       for g in train.gears))
+        r = radii(t)
+        for m in t.meshes:
+            for ring, p in ((m.a, m.b), (m.b, m.a)):
+                if m.internal and not t.carried(ring) and p in r and len(t.body(p)) == 1:
+                    return r[p] - t._centre_distance(m)
+        return None
+
+    n0 = train.gear(number).teeth
+    g0, g1 = gap(n0), gap(n0 + 1)
+    if g0 is None or g1 is None or g1 == g0:
+        return Fraction(0)
+    return n0 - g0 / (g1 - g0)
 
 
 def _solve(rows: list[list[Fraction]], n: int, train: GearTrain) -> list[Fraction]:
