@@ -381,7 +381,9 @@ def test_a_table_with_jumps_is_read_exactly_and_as_the_reference_reads_it(points
 
 
 @pytest.mark.parametrize("body, line, words", [
-    ("[turning_moment]\ntorque = \"1\"\n[resisting_torque]\ntorque = \"1\"\n", 3, "one of them"),
+    ("[turning_moment]\ntorque = \"1\"\n[punch]\nenergy = 1\n", 3, "one of them"),
+    ("[turning_moment]\npoints = [[0, 1], [90, 2], [180, 1]]\n[resisting_torque]\n"
+     "torque = \"1\"\n", 2, "each as torque"),
     ("[resisting_torque]\nareas = [1, -1]\n", 2, "unknown setting 'areas'"),
     ("[resisting_torque]\npoints = [[0, 1], [0, 2], [0, 3]]\n", 2, "past the one before"),
 ])

@@ -12,7 +12,9 @@ The diagram is given one of three ways, as the books give it:
   ``angle_scale`` (degrees per length unit), or ``energy_scale`` (J per unit of area).
 
 A machine's torque (a punch's, a press's) against a driver steady at its mean is given the
-same way as ``[resisting_torque]`` (a formula or a table). A table may jump: an angle given
+same way as ``[resisting_torque]`` (a formula or a table); an engine's ``[turning_moment]``
+formula beside a machine's ``[resisting_torque]`` formula, their means equal, drives the
+flywheel by the net T − R. A table may jump: an angle given
 twice, or a last point a cycle on from the first with another T.
 ``cycle`` (degrees, 360 by default) is how far the crank turns before the diagram repeats.
 ``[flywheel]`` gives the mean ``speed`` (or one of ``speed_max`` and ``speed_min`` alone,
@@ -37,6 +39,7 @@ from typing import Any, ClassVar
 from tarsim.constructions.errors import InputError
 from tarsim.constructions.forces.flywheel import Diagram, Punch
 from tarsim.constructions.forces.torque_formula import Formula, parse_formula
+from tarsim.constructions.reference.flywheel import integrated
 from tarsim.constructions.units import LENGTH_UNITS
 from ..names import named_in, read_names, renamed_field
 from ..table_file import SPEEDS, Tables
@@ -69,6 +72,11 @@ class FlywheelExercise:
     cycle: float
     """How far the crank turns before the diagram repeats (rad)."""
     formula: Formula | None = None
+    machine: Formula | None = None
+    """The machine's resisting torque R(θ), when the engine's T(θ) is given beside it: the
+    net T − R drives the flywheel."""
+    machine_mean: float = 0.0
+    """R's mean over the cycle (N·m): the diagram is T − R + R_mean, its mean the engine's."""
     points: tuple[tuple[float, float], ...] = ()
     """A table's (θ rad, T N·m), in order over the cycle; an angle twice is a jump, and a
     last point a cycle on from the first a jump back to it."""
@@ -119,6 +127,9 @@ class FlywheelExercise:
     @property
     def diagram(self) -> Diagram | None:
         """T(θ) over the cycle; None for a diagram given by its areas."""
+        if self.machine is not None:
+            engine, machine, mean = self.formula, self.machine, self.machine_mean
+            return Diagram(lambda theta: engine(theta) - machine(theta) + mean, self.cycle)
         if self.formula is not None:
             return Diagram(self.formula, self.cycle)
         if self.points:
@@ -166,6 +177,8 @@ def parse_flywheel(text: str, filename: str = "<string>", exercise_id: str = "fl
     t = Tables.read(text, filename, "flywheel", _TOP, _KEYS, data)
     fail = t.fail
     tables = [k for k in ("turning_moment", "resisting_torque", "punch") if k in t.data]
+    if tables == ["turning_moment", "resisting_torque"]:
+        return _engine_and_machine(t, filename, exercise_id)
     if len(tables) != 1:
         raise fail("a flywheel file gives its diagram as [turning_moment] torque = \"…\", "
                    "points = [[θ°, T], …] or areas = […] with the diagram's scales, or a "
@@ -217,6 +230,52 @@ def parse_flywheel(text: str, filename: str = "<string>", exercise_id: str = "fl
                 raise fail(f"{k} is a scale of a diagram given by its areas; a diagram given as "
                            "T(θ) needs none: remove it", "turning_moment", k)
     wheel = _flywheel(t, metre, SPEEDS[speed_unit], diagram)
+    return FlywheelExercise(
+        id=exercise_id, name=_text(t, "name", exercise_id), source=_text(t, "source", ""),
+        description=_text(t, "description", ""), cycle=cycle, length_unit=length,
+        speed_unit=speed_unit, names=read_names(t.data, t.where, filename), **diagram, **wheel)
+
+
+def _engine_and_machine(t: Tables, filename: str, exercise_id: str) -> FlywheelExercise:
+    """An engine's turning moment T(θ) and a machine's resisting torque R(θ), each a formula:
+    the net T − R drives the flywheel, so the exercise is read as the diagram T − R + R_mean
+    (its areas those of T − R, its mean the engine's). Over a cycle the two must do equal
+    work: their means must agree."""
+    formulas = {}
+    for table in ("turning_moment", "resisting_torque"):
+        tm = _one(t, table)
+        extra = [k for k in tm if k not in ("torque", "cycle")]
+        if "torque" not in tm or extra:
+            raise t.fail("an engine's [turning_moment] beside a machine's [resisting_torque] "
+                         "gives each as torque = \"…\" (a formula in theta) and cycle alone",
+                         table, extra[0] if extra else None)
+        try:
+            formulas[table] = parse_formula(tm["torque"])
+        except ValueError as e:
+            raise t.fail(str(e), table, "torque") from None
+    cycles = [t.number(_one(t, k), "cycle", k, "the cycle (degrees)", 0, 360.0)
+              for k in formulas]
+    if cycles[0] != cycles[1] or not 0 < cycles[0] <= 1440:
+        raise t.fail(f"the engine's and the machine's torques repeat over one cycle, in degrees "
+                     f"(360 a turn, at most 1440): got {cycles[0]:g} and {cycles[1]:g}",
+                     "resisting_torque", "cycle")
+    cycle = math.radians(cycles[0])
+    engine, machine = formulas["turning_moment"], formulas["resisting_torque"]
+    means = [integrated(f, cycle).mean for f in (engine, machine)]
+    size = max(abs(f(k * cycle / 360)) for f in (engine, machine) for k in range(360))
+    # The quadrature is exact to rounding on a book's harmonics; the books' means are
+    # written to their last figure, so a difference past rounding is a different mean.
+    if abs(means[0] - means[1]) > 1e-9 * max(size, 1.0):
+        raise t.fail(f"the engine's mean torque {means[0]:.6g} N·m differs from the machine's "
+                     f"{means[1]:.6g} N·m: over a cycle they must balance", "resisting_torque",
+                     "torque")
+    length, speed_unit = t.units("m", "rad/s")
+    for key in t.data.get("units", {}):
+        if key not in ("length", "speed"):
+            raise t.fail(f"a flywheel file's [units] takes length and speed; not {key}",
+                         "units", key)
+    diagram = {"formula": engine, "machine": machine, "machine_mean": means[1]}
+    wheel = _flywheel(t, LENGTH_UNITS[length], SPEEDS[speed_unit], diagram)
     return FlywheelExercise(
         id=exercise_id, name=_text(t, "name", exercise_id), source=_text(t, "source", ""),
         description=_text(t, "description", ""), cycle=cycle, length_unit=length,
