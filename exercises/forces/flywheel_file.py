@@ -32,17 +32,16 @@ file:line.
 from __future__ import annotations
 
 import math
-import re
 from dataclasses import dataclass
 from typing import Any, ClassVar
 
-from tarsim.constructions.errors import InputError
 from tarsim.constructions.forces.flywheel import Diagram, Punch
 from tarsim.constructions.forces.torque_formula import Formula, parse_formula
 from tarsim.constructions.reference.flywheel import integrated
 from tarsim.constructions.units import LENGTH_UNITS
 from ..names import named_in, read_names, renamed_field
 from ..table_file import SPEEDS, Tables
+from .flywheel_wheel import read_wheel
 from .punch_file import POWERS, PUNCH_KEYS, read_punch
 
 __all__ = ["FlywheelExercise", "parse_flywheel"]
@@ -376,180 +375,8 @@ def _areas(t: Tables, tm: dict) -> dict[str, Any]:
             "energy_scale": scale}
 
 
-PERCENT = re.compile(r"\s*(±|\+/-|\+-)?\s*(\d+(?:\.\d*)?|\.\d+)\s*%\s*")
-"""A speed's fluctuation as the books write it: "±1 %" (either way of the mean, 2 % in all)
-or "3 %" (the total, (ω_max − ω_min)/ω)."""
-
-
-def _speeds(t: Tables, fw: dict, rad_s: float) -> dict[str, float]:
-    """The mean speed and C_s as ``[flywheel]`` gives them: ``speed`` and ``speed_fluctuation``
-    (a number, or "±1 %" or "2 %"), or two of the mean, greatest and least speeds, the mean
-    the average of the other two as the books take it: C_s = (ω_max − ω_min)/ω."""
-    out: dict[str, float] = {}
-    given = {k: t.number(fw, k, "flywheel", what) * rad_s
-             for k, what in (("speed", "the mean speed"), ("speed_max", "the greatest speed"),
-                             ("speed_min", "the least speed")) if k in fw}
-    for k, v in given.items():
-        if not v > 0:
-            raise t.fail(f"{k} must be positive, got {fw[k]:g}", "flywheel", k)
-    if len(given) == 1 and "speed" not in given and "speed_fluctuation" not in fw:
-        # The books' "300 rpm before riveting": one extreme alone, with the flywheel given,
-        # the other follows from the energy it gives up, ΔE = ½·I·(ω1² − ω2²).
-        (key,) = given
-        if not ("inertia" in fw or "radius_of_gyration" in fw and "mass" in fw):
-            raise t.fail(f"{key} alone needs the flywheel (inertia, or mass with "
-                         "radius_of_gyration): the other speed follows from ΔE = ½I(ω1² − ω2²);"
-                         " or give two of speed, speed_max and speed_min", "flywheel", key)
-        return dict(given)
-    if "speed_max" in given or "speed_min" in given:
-        if len(given) != 2 or "speed_fluctuation" in fw:
-            raise t.fail("the greatest and least speeds give the mean and C_s: give two of speed, "
-                         "speed_max and speed_min, and no speed_fluctuation", "flywheel",
-                         "speed_fluctuation" if len(given) == 2 else
-                         ("speed_max" if "speed_max" in given else "speed_min"))
-        mean = given.get("speed")
-        if mean is None:
-            high, low = given["speed_max"], given["speed_min"]
-        elif "speed_max" in given:
-            high, low = given["speed_max"], 2 * mean - given["speed_max"]
-        else:
-            high, low = 2 * mean - given["speed_min"], given["speed_min"]
-        if not 0 < low < high:
-            raise t.fail("the least speed must be positive and below the greatest, the mean "
-                         "between them", "flywheel", "speed_min" if "speed_min" in given
-                         else "speed_max")
-        out["speed"] = (high + low) / 2
-        out["speed_fluctuation"] = (high - low) / out["speed"]
-        return out
-    if "speed" in given:
-        out["speed"] = given["speed"]
-    if "speed_fluctuation" in fw:
-        raw = fw["speed_fluctuation"]
-        m = PERCENT.fullmatch(raw) if isinstance(raw, str) else None
-        if m is not None:
-            cs = float(m[2]) / 100 * (2 if m[1] else 1)
-        else:
-            try:
-                cs = t.number(fw, "speed_fluctuation", "flywheel",
-                              "the coefficient of fluctuation of speed")
-            except InputError:
-                if not isinstance(raw, str):
-                    raise
-                raise t.fail(f"the fluctuation of speed is a number (C_s) or a percentage of "
-                             f"the mean, \"±1 %\" or \"2 %\" (the total); got {raw!r:.40}",
-                             "flywheel", "speed_fluctuation") from None
-        if not 0 < cs < 2:
-            raise t.fail(f"C_s = (ω_max − ω_min)/ω is positive and below 2 (a speed that "
-                         f"stops), got {cs:g}", "flywheel", "speed_fluctuation")
-        out["speed_fluctuation"] = cs
-    return out
-
-
 def _flywheel(t: Tables, metre: float, rad_s: float, diagram: dict) -> dict[str, Any]:
-    """What ``[flywheel]`` gives and asks, in SI."""
+    """What ``[flywheel]`` gives and asks, in SI (none where the file has no such table)."""
     if "flywheel" not in t.data:
         return {}
-    fw = _one(t, "flywheel")
-    out: dict[str, Any] = {}
-
-    def positive(key: str, what: str, scale: float = 1.0) -> float:
-        v = t.number(fw, key, "flywheel", what)
-        if not v > 0:
-            raise t.fail(f"{what} must be positive, got {v:g}", "flywheel", key)
-        return v * scale
-
-    out |= _speeds(t, fw, rad_s)
-    if "speed_fluctuation" in out and "radius_of_gyration" in fw and "mass" not in fw:
-        # The books' "its radius of gyration is 0.5 m" with C_s: the flywheel is found, and
-        # k is where its mass sits, m = I/k², as a rim's at its mean radius.
-        clash = [k for k in ("radius", "diameter", "rim_speed", "rim_share") if k in fw]
-        if clash:
-            raise t.fail(f"the radius of gyration places the flywheel's mass (m = I/k²): "
-                         f"leave {clash[0]} out", "flywheel", clash[0])
-        out["radius_of_gyration"] = positive("radius_of_gyration", "the radius of gyration",
-                                             metre)
-        out["radius"] = out["radius_of_gyration"]
-        fw = {k: v for k, v in fw.items() if k != "radius_of_gyration"}
-    ways = [k for k in ("speed_fluctuation", "inertia", "radius_of_gyration") if k in fw]
-    if "speed_fluctuation" not in fw and "speed_fluctuation" in out:
-        ways.insert(0, "speed_max" if "speed_max" in fw else "speed_min")
-    if len(ways) > 1:
-        raise t.fail("give speed_fluctuation (or the greatest and least speeds: the flywheel is "
-                     "found) or the flywheel (inertia, or mass with radius_of_gyration: its C_s "
-                     "is found), one of them", "flywheel", ways[1])
-    extreme = "speed_max" in out or "speed_min" in out
-    if ways and "speed" not in out and not extreme and not ("rim_speed" in fw
-                                                            and "speed_fluctuation" in fw):
-        raise t.fail("a flywheel holds a speed: give the mean speed, speed = 300 with [units] "
-                     "speed = \"rpm\" (or the rim's speed in m/s, rim_speed = 25, for its mass "
-                     "alone)", "flywheel", None)
-    rim = [k for k in ("diameter", "rim_speed", "rim_share", "density", "width_to_thickness")
-           if k in fw]
-    if "speed_fluctuation" in out:
-        if "rim_speed" in fw:
-            # The rim's speed v = ω·r gives its radius, and m·v² = I·ω² its mass.
-            clash = [k for k in ("radius", "diameter", "mass") if k in fw]
-            if clash:
-                raise t.fail(f"the rim's speed fixes its radius (v/ω) and mass (ΔE/(C_s·v²)): "
-                             f"leave {clash[0]} out", "flywheel", clash[0])
-            out["rim_speed"] = positive("rim_speed", "the rim's mean speed (m/s)")
-            if "speed" in out:
-                out["radius"] = out["rim_speed"] / out["speed"]
-            elif "density" in fw:
-                raise t.fail("a rim's section needs its radius: give the mean speed too, its "
-                             "radius v/ω", "flywheel", "density")
-        if "radius" in fw and "diameter" in fw:
-            raise t.fail("give the rim's mean radius or its diameter, not both", "flywheel",
-                         "diameter")
-        if "mass" in fw and ("radius" in fw or "diameter" in fw):
-            raise t.fail("the rim's mass is found for a stated radius, or its radius for a "
-                         "stated mass: give one", "flywheel",
-                         "radius" if "radius" in fw else "diameter")
-        for key, what, scale in (("mass", "the rim's mass", 1.0),
-                                 ("radius", "the rim's mean radius", metre),
-                                 ("diameter", "the rim's mean diameter", metre / 2)):
-            if key in fw:
-                out["radius" if key == "diameter" else key] = positive(key, what, scale)
-        if ("density" in fw) != ("width_to_thickness" in fw) or (
-                "density" in fw and "mass" not in out and "radius" not in out):
-            raise t.fail("a rim's section comes from its density and width_to_thickness (b/t), "
-                         "with its mass or mean radius: give them all", "flywheel",
-                         "density" if "density" in fw else "width_to_thickness")
-        if "rim_share" in fw:
-            out["rim_share"] = positive("rim_share", "the rim's share of the flywheel's I")
-            if out["rim_share"] > 1 or "rim_speed" in out:
-                raise t.fail("rim_share is the part of I the rim gives (0.9 when the hub and arms "
-                             "give a tenth), at most 1, with a radius or a mass, not rim_speed",
-                             "flywheel", "rim_share")
-        if "density" in fw:
-            out["density"] = positive("density", "the rim's density (kg/m³)")
-            out["width_to_thickness"] = positive("width_to_thickness",
-                                                 "the rim's width over its thickness")
-        rim = []
-    elif "inertia" in fw:
-        out["inertia"] = positive("inertia", "the flywheel's moment of inertia")
-    elif "radius_of_gyration" in fw:
-        if "mass" not in fw:
-            raise t.fail("a radius of gyration k needs the flywheel's mass: I = m·k²",
-                         "flywheel", "radius_of_gyration")
-        out["mass"] = positive("mass", "the flywheel's mass")
-        out["radius_of_gyration"] = positive("radius_of_gyration", "the radius of gyration",
-                                             metre)
-        out["inertia"] = out["mass"] * out["radius_of_gyration"] ** 2
-    else:
-        for key in ("mass", "radius"):
-            if key in fw:
-                raise t.fail(f"{key} is the rim's, for a flywheel found from speed_fluctuation "
-                             "(or mass with radius_of_gyration); give that too", "flywheel", key)
-    if rim:
-        raise t.fail(f"{rim[0]} is the rim's, for a flywheel found from speed_fluctuation; give "
-                     "that too", "flywheel", rim[0])
-    if "at" in fw:
-        raw = fw["at"] if isinstance(fw["at"], list) else [fw["at"]]
-        out["at"] = tuple(math.radians(t.number({"at": a}, "at", "flywheel",
-                                                "a crank angle (degrees)")) for a in raw)
-        if "areas" in diagram:
-            raise t.fail("a diagram given by its areas (or a punch) has no T(θ) to read at a "
-                         "crank angle: "
-                         "give torque = \"…\" or points, or leave at out", "flywheel", "at")
-    return out
+    return read_wheel(t, _one(t, "flywheel"), metre, rad_s, diagram)
