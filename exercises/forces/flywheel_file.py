@@ -191,15 +191,9 @@ def parse_flywheel(text: str, filename: str = "<string>", exercise_id: str = "fl
                                                    and table == "punch"):
             raise fail("a flywheel file's [units] takes length, speed and, for a [punch]'s "
                        f"motor, power (W, kW or MW); not {key} = {unit!r:.20}", "units", key)
-    metre = LENGTH_UNITS[length]
     if table == "punch":
-        diagram = read_punch(t, _one(t, "punch"))
-        wheel = _flywheel(t, metre, SPEEDS[speed_unit], diagram)
-        return FlywheelExercise(
-            id=exercise_id, name=_text(t, "name", exercise_id),
-            source=_text(t, "source", ""), description=_text(t, "description", ""),
-            cycle=2 * math.pi, length_unit=length, speed_unit=speed_unit,
-            names=read_names(t.data, t.where, filename), **diagram, **wheel)
+        return _exercise(t, filename, exercise_id, 2 * math.pi, length, speed_unit,
+                         read_punch(t, _one(t, "punch")))
     tm = _one(t, table)
     cycle_deg = t.number(tm, "cycle", table, "the cycle (degrees)", 0, 360.0)
     if not 0 < cycle_deg <= 1440:
@@ -228,11 +222,7 @@ def parse_flywheel(text: str, filename: str = "<string>", exercise_id: str = "fl
             if k in tm:
                 raise fail(f"{k} is a scale of a diagram given by its areas; a diagram given as "
                            "T(θ) needs none: remove it", "turning_moment", k)
-    wheel = _flywheel(t, metre, SPEEDS[speed_unit], diagram)
-    return FlywheelExercise(
-        id=exercise_id, name=_text(t, "name", exercise_id), source=_text(t, "source", ""),
-        description=_text(t, "description", ""), cycle=cycle, length_unit=length,
-        speed_unit=speed_unit, names=read_names(t.data, t.where, filename), **diagram, **wheel)
+    return _exercise(t, filename, exercise_id, cycle, length, speed_unit, diagram)
 
 
 def _engine_and_machine(t: Tables, filename: str, exercise_id: str) -> FlywheelExercise:
@@ -273,7 +263,14 @@ def _engine_and_machine(t: Tables, filename: str, exercise_id: str) -> FlywheelE
         if key not in ("length", "speed"):
             raise t.fail(f"a flywheel file's [units] takes length and speed; not {key}",
                          "units", key)
-    diagram = {"formula": engine, "machine": machine, "machine_mean": means[1]}
+    return _exercise(t, filename, exercise_id, cycle, length, speed_unit,
+                     {"formula": engine, "machine": machine, "machine_mean": means[1]})
+
+
+def _exercise(t: Tables, filename: str, exercise_id: str, cycle: float, length: str,
+              speed_unit: str, diagram: dict[str, Any]) -> FlywheelExercise:
+    """The exercise of ``diagram`` (however the file gave it) with its texts, names and
+    what its ``[flywheel]`` table gives and asks."""
     wheel = _flywheel(t, LENGTH_UNITS[length], SPEEDS[speed_unit], diagram)
     return FlywheelExercise(
         id=exercise_id, name=_text(t, "name", exercise_id), source=_text(t, "source", ""),
