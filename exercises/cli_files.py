@@ -10,7 +10,7 @@ import click
 from tarsim.constructions.errors import TarsimError
 
 from . import cli_common as common
-from .templates import KINDS, template
+from .templates import FOLDERS, KINDS, folder, template
 
 __all__ = ["list_", "new"]
 
@@ -54,10 +54,11 @@ def _listing_kinds(fn):
 
 @click.command()
 @click.argument("kind", type=click.Choice(list(KINDS)), metavar="KIND")
-@click.option("-o", "--output", type=click.Path(dir_okay=False, allow_dash=True),
+@click.option("-o", "--output", type=click.Path(allow_dash=True),
               default=None, metavar="FILE",
-              help="Where to write it (default: my-KIND.toml here; - for the terminal).")
-@click.option("--force", is_flag=True, help="Replace FILE if it exists.")
+              help="Where to write it (default: my-KIND.toml here, class/ for the class; "
+                   "- for the terminal).")
+@click.option("--force", is_flag=True, help="Replace FILE (the class's folder) if it exists.")
 @common.fails_cleanly
 @_listing_kinds
 def new(kind, output, force):
@@ -75,9 +76,24 @@ def new(kind, output, force):
     Example:
       tarsim new linkage -o my-linkage.toml     # then: tarsim solve my-linkage.toml
       tarsim new cam -o -            # print it instead
+      tarsim new class -o class      # then: tarsim grade crank-shaper class --position 2
     """
     from tarsim.graphics.atomic_files import RenderError, write_text
 
+    if kind in FOLDERS:
+        out = Path(output or kind)
+        if output == "-" or (out.exists() and not out.is_dir()):
+            raise RenderError(f"the {kind} is a folder of drawings: give -o FOLDER")
+        if out.is_dir() and any(out.iterdir()) and not force:
+            raise RenderError(f"'{out}' holds files already: give another -o FOLDER, or "
+                              "--force to write into it")
+        # each drawing on its own, as a student's file comes: grade reads a folder that
+        # tarsim wrote as a whole (its manifest) as output, never as drawings to grade
+        out.mkdir(parents=True, exist_ok=True)
+        written = [write_text(out / name, data) for name, data in folder(kind).items()]
+        click.echo(f"wrote {len(written)} drawings to {out}/: grade them with  "
+                   f"tarsim grade crank-shaper {out} --position 2 -o graded")
+        return
     text = template(kind)
     if output == "-":
         click.echo(text, nl=False)

@@ -30,7 +30,8 @@ def _solved(tmp_path, kind):
 
 
 def test_every_kind_has_a_file_and_a_closed_form_below():
-    assert set(KINDS) == {"linkage", "train", "cam", "rotor", "engine", "loads", "flywheel"}
+    assert set(KINDS) == {"linkage", "train", "cam", "rotor", "engine", "loads", "flywheel",
+                          "class"}
 
 
 def test_linkage_template_is_the_four_bar_of_its_comments(tmp_path):
@@ -125,3 +126,42 @@ def test_new_refuses_to_replace_a_file_without_force(tmp_path):
 def test_new_to_the_terminal_prints_the_file():
     shown = CliRunner().invoke(cli, ["new", "rotor", "-o", "-"])
     assert shown.exit_code == 0 and "[[balance]]" in shown.output
+
+
+# The class's drawings are five of the grading corpus's (tests/data/grading/class), each
+# with the verdicts its key gives for the slips it was drawn with.
+_CLASS = {"ali.svg": "inkscape/inkscape-001.svg", "sara.svg": "libreoffice/libreoffice-012.svg",
+          "reza.svg": "cad/cad-024.svg", "maryam.svg": "geogebra/geogebra-006.svg",
+          "nima.svg": "hand/hand-003.svg"}
+
+
+@pytest.mark.slow
+def test_the_class_grades_as_its_drawings_were_drawn(tmp_path):
+    from pathlib import Path
+    data = Path(__file__).parent / "data" / "grading" / "class"
+    key = json.loads((data / "key.json").read_text(encoding="utf-8"))["files"]
+    runner = CliRunner()
+    made = runner.invoke(cli, ["new", "class", "-o", str(tmp_path / "class")])
+    assert made.exit_code == 0, made.output
+    assert sorted(p.name for p in (tmp_path / "class").iterdir()) == sorted(_CLASS)
+    for name, source in _CLASS.items():   # the very files the key describes
+        assert (tmp_path / "class" / name).read_bytes() == (data / source).read_bytes()
+    graded = runner.invoke(cli, ["grade", "crank-shaper", str(tmp_path / "class"),
+                                 "--position", "2", "-o", str(tmp_path / "graded")])
+    assert graded.exit_code == 0, graded.output
+    for name, source in _CLASS.items():
+        grade = json.loads((tmp_path / "graded" / Path(name).stem / "grade.json")
+                           .read_text(encoding="utf-8"))
+        verdicts = {item["name"]: item["verdict"] for item in grade["items"]}
+        expected = key[source]["items"]
+        assert {k: verdicts.get(k) for k in expected} == expected, name
+
+
+def test_the_class_is_a_folder_not_a_page(tmp_path):
+    runner = CliRunner()
+    result = runner.invoke(cli, ["new", "class", "-o", "-"])
+    assert result.exit_code == 1 and "give -o FOLDER" in result.output
+    (tmp_path / "class").mkdir()
+    (tmp_path / "class" / "mine.svg").write_text("<svg/>")
+    again = runner.invoke(cli, ["new", "class", "-o", str(tmp_path / "class")])
+    assert again.exit_code == 1 and "holds files already" in again.output

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from importlib import resources
 
-__all__ = ["KINDS", "template"]
+__all__ = ["KINDS", "FOLDERS", "template", "folder"]
 
 KINDS = {
     "linkage": "a four-bar crank-rocker: instant centres, velocities and accelerations",
@@ -19,10 +19,28 @@ KINDS = {
     "engine": "a single-cylinder engine's reciprocating masses, partly balanced",
     "loads": "a horizontal engine's gas load: pin forces and the crank's torque",
     "flywheel": "a turning moment as a formula: the flywheel that holds the speed",
+    "class": "a folder of five students' drawings of the crank-shaper's polygons, to grade",
 }
 """Each kind of starting file, with what it holds."""
+
+FOLDERS = {"class"}
+"""The kinds that are a folder of files rather than one file."""
 
 
 def template(kind: str) -> str:
     """The text of ``kind``'s starting file (a key of :data:`KINDS`)."""
     return resources.files(__name__).joinpath(f"{kind}.toml").read_text(encoding="utf-8")
+
+
+def folder(kind: str) -> dict[str, bytes]:
+    """The files of ``kind``'s starting folder (a member of :data:`FOLDERS`), by name.
+
+    The class is five drawings of the crank-shaper's polygons at its position 2, as
+    Inkscape, LibreOffice Draw, a CAD program and GeoGebra export them, and one drawn by
+    hand and traced: one right throughout, the others with a student's usual slips (a Coriolis
+    component reversed, every velocity reversed, a vector a few per cent long, a tip left
+    out), so that a first ``tarsim grade`` shows each verdict.
+    """
+    files = resources.files(__name__).joinpath(kind)
+    return {f.name: f.read_bytes() for f in sorted(files.iterdir(), key=lambda f: f.name)
+            if f.name.endswith(".svg")}
