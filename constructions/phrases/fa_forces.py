@@ -136,6 +136,12 @@ WORDS: dict[str, str] = {
     "over the cycle.":
         "T(θ) را در {n} گام برابر {step}° در طول چرخه رسم کنید؛ میانگین آن مساحت زیر منحنی "
         "تقسیم بر طول چرخه است.",
+    "The drawn areas give ΔE = {drawn} J. To the data's precision, the intercepts are the "
+    "roots of T(θ) − T_mean found on the formula, and each area is T − T_mean integrated "
+    "between two of them by Gauss–Legendre quadrature.":
+        "مساحت‌های رسم‌شده ΔE = {drawn} J می‌دهند. با دقت خود داده‌ها، نقاط تقاطع ریشه‌های "
+        "T(θ) − T_mean‌اند که روی خود فرمول یافته می‌شوند، و هر مساحت انتگرال T − T_mean "
+        "میان دو نقطهٔ تقاطع همسایه به روش گاوس–لژاندر است.",
     "The curve crosses the mean at {n} intercepts; between them lie the areas {energies} J.":
         "منحنی خط میانگین را در {n} نقطه قطع می‌کند؛ میان آن‌ها مساحت‌های {energies} J "
         "قرار دارند.",

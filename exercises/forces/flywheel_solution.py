@@ -1,15 +1,17 @@
 """A flywheel exercise solved: its turning-moment diagram read for ΔE, the flywheel and the
 shaft's extremes, each number beside an independent reference.
 
-A diagram given as T(θ) is drawn at equal steps and read for its areas
-(:mod:`~tarsim.constructions.forces.flywheel`); the reference integrates T(θ) by composite
-Gauss–Legendre quadrature and finds the intercepts by the Illinois method
-(:func:`~tarsim.constructions.reference.flywheel.integrated`). The drawing's straight lines
+A diagram given as a formula T(θ) is read to the data's precision, its intercepts by
+bisection on the formula and each loop by adaptive Gauss–Legendre quadrature
+(:mod:`~tarsim.constructions.forces.flywheel_exact`); a table of straight pieces by its
+trapezoids (:func:`~tarsim.constructions.forces.flywheel.read_table`). The reference
+integrates T(θ) by fixed composite Gauss–Legendre quadrature and finds the intercepts by the
+Illinois method (:func:`~tarsim.constructions.reference.flywheel.integrated`). The formula's
+drawing at equal steps stays the graphical answer (``delta_E_drawn``): its straight lines
 between steps cost ΔE some h²·|T′|max/6 (the trapezoid rule's error between two intercepts,
-T′ its slope there), and that, doubled, is the tolerance; a table's points are steps, so its
-diagram is drawn exactly and only rounding is left. A diagram given by its areas is read by
-their running sum; the reference is the greatest sum of a run of neighbouring areas round the
-cycle, which is ΔE by another road.
+T′ its slope there), and that, doubled, is its tolerance. A diagram given by its areas is
+read by their running sum; the reference is the greatest sum of a run of neighbouring areas
+round the cycle, which is ΔE by another road.
 """
 
 from __future__ import annotations
@@ -23,6 +25,7 @@ from typing import Any
 from tarsim.constructions.forces.flywheel import (Reading, area_reading, extreme, read_diagram,
                                                   read_table, rim_mass, rim_radius,
                                                   rim_section, speed_limits)
+from tarsim.constructions.forces.flywheel_exact import exact_reading
 from tarsim.constructions.reference.flywheel import (Integrated, flywheel_inertia, integrated,
                                                      speed_fluctuation)
 from tarsim.constructions.errors import InputError
@@ -37,6 +40,14 @@ ROUNDING = 1e-10
 """A table's reading against the quadrature's, relative to max|T|·cycle: each of some hundred
 Gauss–Legendre panels exact to rounding on a straight piece, and a few thousand roundings
 summed."""
+
+QUADRATURE = 1e-9
+"""A formula's reading against the reference's, relative to ΔE. Both integrate a smooth T by
+Gauss–Legendre to rounding (the error of n nodes falls as h²ⁿ: a book's dozen harmonics are
+done in a few panels) and put the intercepts to the last bit; an intercept off by δθ costs
+its two areas only δθ²·|T′|/2, T − T_mean being zero there. Agreement to some 1e-13 is
+expected; 1e-9 leaves room for a formula sharp enough (sin(θ)**8) that the reference's fixed
+64 panels hold it to fewer figures, and is still a thousand times finer than the drawing."""
 
 
 def _check(value: float, reference: float, tolerance: float, method: str,
@@ -57,10 +68,18 @@ class FlywheelSolution(ChapterFiles):
     def reading(self) -> Reading:
         """The diagram read for its areas and ΔE."""
         ex = self.exercise
-        if ex.points and ex.jumps:
+        if ex.points:
             return read_table(ex.points, ex.cycle)
         d = ex.diagram
-        return read_diagram(d) if d else area_reading(list(ex.areas))
+        return exact_reading(d) if d else area_reading(list(ex.areas))
+
+    @cached_property
+    def drawing(self) -> Reading | None:
+        """A formula's diagram drawn at equal steps and read off the drawing, the graphical
+        answer set beside the exact one; None for a table (its drawing is its trapezoids)
+        or areas."""
+        ex = self.exercise
+        return read_diagram(ex.diagram) if ex.formula is not None else None
 
     @cached_property
     def reference(self) -> Integrated | None:
@@ -97,15 +116,20 @@ class FlywheelSolution(ChapterFiles):
         ex, r = self.exercise, self.reading
         if ex.diagram is None:
             return 1e-12 * len(ex.areas)        # sums of a few numbers, each rounded once
-        torques = [t for _, t in r.samples]
-        size = max(abs(t) for t in torques) * ex.cycle
+        size = max(abs(t) for _, t in r.samples) * ex.cycle
         floor = ROUNDING * size
-        if ex.diagram.kinks:
-            drawn = 0.0
-        else:
-            slope = max(abs(b - a) for a, b in zip(torques, torques[1:] + torques[:1])) / r.step
-            drawn = r.step ** 2 * slope / 3
-        return (drawn + floor) / max(r.delta_e, floor, sys.float_info.min)   # T ≡ 0: none
+        quadrature = QUADRATURE if ex.formula is not None else 0.0
+        return quadrature + floor / max(r.delta_e, floor, sys.float_info.min)   # T ≡ 0: none
+
+    @cached_property
+    def drawn_tolerance(self) -> float:
+        """The drawing's ΔE against the exact one, relative to ΔE: the straight lines between
+        steps h apart cost each area some h²·|T′|max/6 at either end, doubled."""
+        d, r = self.drawing, self.reading
+        torques = [t for _, t in d.samples]
+        slope = max(abs(b - a) for a, b in zip(torques, torques[1:] + torques[:1])) / d.step
+        floor = ROUNDING * max(abs(t) for t in torques) * self.exercise.cycle
+        return (d.step ** 2 * slope / 3 + floor) / max(r.delta_e, floor, sys.float_info.min)
 
     @property
     def inertia(self) -> float | None:
@@ -143,7 +167,9 @@ class FlywheelSolution(ChapterFiles):
         ex, r, tol = self.exercise, self.reading, self.tolerance
         ref = self.reference
         q: dict[str, Checked] = {}
-        method = "turning-moment diagram" if ex.diagram else "areas of the diagram"
+        method = ("intercepts by bisection on T(θ), each loop by Gauss–Legendre"
+                  if ex.formula is not None else "turning-moment diagram" if ex.diagram
+                  else "areas of the diagram")
         if ref is not None:
             q["mean_torque"] = _check(r.mean, ref.mean, tol * max(r.delta_e, 1.0) /
                                       max(abs(ref.mean), 1.0) / ex.cycle, method, unit="N·m")
@@ -160,6 +186,9 @@ class FlywheelSolution(ChapterFiles):
                                                1e-12, "60·P/E, a hole every E/P",
                                                unit="1/min")
         q["delta_E"] = _check(r.delta_e, self.reference_delta_e, tol, method, unit="J")
+        if self.drawing is not None:
+            q["delta_E_drawn"] = _check(self.drawing.delta_e, r.delta_e, self.drawn_tolerance,
+                                        "the drawn areas against the exact ones", unit="J")
         if ex.speed is not None and ref is not None:
             q["power"] = _check(r.mean * ex.speed, ref.mean * ex.speed,
                                 q["mean_torque"].tolerance, method, unit="W")

@@ -199,6 +199,11 @@ def document(sol) -> list[Section]:
                            "mean is the area under it over the cycle.",
                            n=numeral(len(r.samples), "d"),
                            step=numeral(math.degrees(r.step), "g")))
+    if sol.drawing is not None:
+        steps.append(words("The drawn areas give ΔE = {drawn} J. To the data's precision, the "
+                           "intercepts are the roots of T(θ) − T_mean found on the formula, "
+                           "and each area is T − T_mean integrated between two of them by "
+                           "Gauss–Legendre quadrature.", drawn=numeral(sol.drawing.delta_e)))
     if ex.diagram is not None:
         steps.append(words("The curve crosses the mean at {n} intercepts; between them "
                            "lie the areas {energies} J.", n=numeral(len(r.intercepts), "d"),

@@ -1,0 +1,121 @@
+"""A turning moment given as a formula or a table is read to the data's own precision: the
+intercepts by root-finding on the formula, each loop by quadrature (a table's by its
+trapezoids), the drawing at equal steps kept beside it as the graphical answer."""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from tarsim.constructions.forces.flywheel import Diagram, read_table
+from tarsim.constructions.forces.flywheel_exact import exact_reading, loop_area
+from tarsim.constructions.forces.torque_formula import parse_formula
+from tarsim.exercises.forces.flywheel_file import parse_flywheel
+from tarsim.exercises.forces.flywheel_solution import solve_flywheel
+
+QUADRATURE = 1e-9
+"""16-point Gauss–Legendre on a loop of a smooth T converges to rounding within a few panel
+doublings (its error falls as h³²), and the intercepts are narrowed to the last bit, an
+intercept off by δθ costing its areas δθ²·|T′|/2 only. What is left is rounding: the mean's
+(some 1e-16 of a) over the cycle, against a ΔE of b ≥ a/1000 here, below 1e-12 of ΔE;
+1e-9 is a thousand times that, and a thousand times finer than the drawing at 0.1° steps
+(which misses b by 1e-6 of it: the check below fails on the drawn number)."""
+
+
+@settings(max_examples=60, deadline=None)
+@given(a=st.floats(0.0, 1e5), b=st.floats(1.0, 1e4), k=st.sampled_from([1, 2, 3, 4]))
+def test_harmonic_delta_e_is_its_amplitude(a, b, k):
+    """T = a + b·sin kθ over a turn: 2k loops of ±∫ b sin kθ over half a period, 2b/k each;
+    the energy swings between two levels 2b/k apart, so ΔE = 2b/k (b itself for sin 2θ)."""
+    d = Diagram(parse_formula(f"{a!r} + {b!r}*sin({k}*theta)"), 2 * math.pi)
+    r = exact_reading(d)
+    assert r.delta_e == pytest.approx(2 * b / k, rel=QUADRATURE)
+    assert r.mean == pytest.approx(a, rel=1e-12, abs=1e-12 * b)
+    assert len(r.areas) == 2 * k
+    for area in r.areas:
+        assert abs(area) == pytest.approx(2 * b / k, rel=QUADRATURE)
+
+
+def test_loop_area_closed_forms():
+    """∫₀^π sin = 2 and ∫₀^1 θ⁷ = 1/8, each to a few roundings (16 nodes integrate a
+    polynomial of degree 31 exactly; sin converges in a panel or two)."""
+    assert loop_area(math.sin, 0.0, math.pi) == pytest.approx(2.0, rel=1e-14)
+    assert loop_area(lambda t: t ** 7, 0.0, 1.0) == pytest.approx(0.125, rel=1e-14)
+
+
+def test_formula_not_repeating_on_its_own():
+    """T = 1000 + 500 sin(θ/2) is given for one turn and repeats from there: its mean is
+    1000 + 1000/π; it crosses it where sin(θ/2) = 2/π, at θ = 2u and 2π − 2u; the loop
+    between is 500·2·(cos u − cos(π − u)) − (1000/π)·(2π − 4u), the other its negative."""
+    r = exact_reading(Diagram(parse_formula("1000 + 500*sin(theta/2)"), 2 * math.pi))
+    excess = 1000 / math.pi
+    u = math.asin(excess / 500)                   # θ/2 at the first intercept
+    loop = 1000 * (math.cos(u) - math.cos(math.pi - u)) - excess * (2 * math.pi - 4 * u)
+    assert r.mean == pytest.approx(1000 + excess, rel=1e-12)
+    # an intercept is narrowed to the last bit of θ
+    assert r.intercepts == pytest.approx((2 * u, 2 * math.pi - 2 * u), rel=1e-12)
+    assert r.areas == pytest.approx((loop, -loop), rel=QUADRATURE)
+    assert r.delta_e == pytest.approx(loop, rel=QUADRATURE)
+
+
+F2 = '''
+name = "Engine T = 15000 + 6000 sin 2θ driving a steady load: flywheel rim"
+[units]
+speed = "rpm"
+length = "m"
+[turning_moment]
+torque = "15000 + 6000*sin(2*theta)"
+cycle = 360
+[flywheel]
+speed = 240
+speed_fluctuation = "±1 %"
+diameter = 1.5
+density = 7200
+width_to_thickness = 2
+'''
+
+
+def test_f2_sin2theta_rim():
+    """The books' T = 15000 + 6000 sin 2θ at 240 rpm within ±1 %, a rim of 1.5 m: ΔE = 6000 J
+    exactly (the drawing's 5999.99 J only beside it), I = ΔE/(C_s·ω²), m = I/r², the section
+    t = √(m/(ρ·2πr·2)), and α = 6000/I at 45° and 225°."""
+    sol = solve_flywheel(parse_flywheel(F2))
+    q = sol.checked
+    omega = 240 * 2 * math.pi / 60
+    inertia = 6000 / (0.02 * omega ** 2)
+    mass = inertia / 0.75 ** 2
+    thickness = math.sqrt(mass / (7200 * 2 * math.pi * 0.75) / 2)
+    # each is ΔE times exact factors: ΔE's QUADRATURE, and a few roundings
+    assert q["delta_E"].value["value"] == pytest.approx(6000, rel=QUADRATURE)
+    assert f"{q['delta_E'].value['value']:.6g}" == "6000"
+    assert q["inertia"].value["value"] == pytest.approx(inertia, rel=QUADRATURE)
+    assert q["rim_mass"].value["value"] == pytest.approx(mass, rel=QUADRATURE)
+    assert q["rim_thickness"].value["value"] == pytest.approx(thickness, rel=QUADRATURE)
+    assert q["rim_width"].value["value"] == pytest.approx(2 * thickness, rel=QUADRATURE)
+    assert q["greatest_acceleration"].value["value"] == pytest.approx(6000 / inertia,
+                                                                       rel=QUADRATURE)
+    assert q["greatest_acceleration"].value["angle_deg"] == pytest.approx([45, 225], abs=1e-6)
+    # the drawing at 0.1° steps: each loop's trapezoids miss h²/12·|ΔT′| = h²/12·2·12000,
+    # 6.1e-3 J per loop beside 6000 J; its ΔE is below the exact one by about that
+    drawn = q["delta_E_drawn"]
+    h = math.radians(0.1)
+    assert drawn.reference["value"] == pytest.approx(6000, rel=QUADRATURE)
+    assert 6000 - drawn.value["value"] == pytest.approx(h ** 2 / 12 * 24000, rel=0.01)
+    assert drawn.passed and not q["delta_E"].value["value"] == drawn.value["value"]
+    assert all(c.passed is not False for c in q.values())
+
+
+def test_table_of_straight_pieces_is_its_trapezoids():
+    """A table (0°, 0), (90°, 400), (180°, 0), (360°, 0) of straight pieces: mean 100 N·m
+    (the triangle ½·π·400 over 2π); it crosses 100 at 22.5° and 157.5°, and above it lies
+    the triangle of base 135° = 3π/4 and height 300, ½·(3π/4)·300 = 112.5π J; ΔE is that,
+    to rounding."""
+    pts = tuple((math.radians(a), t) for a, t in ((0, 0.0), (90, 400.0), (180, 0.0)))
+    r = read_table(pts, 2 * math.pi)
+    assert r.mean == pytest.approx(100.0, rel=1e-14)
+    assert [math.degrees(c) for c in r.intercepts] == pytest.approx([22.5, 157.5], rel=1e-13)
+    assert r.delta_e == pytest.approx(112.5 * math.pi, rel=1e-13)
+    assert r.areas == pytest.approx((112.5 * math.pi, -112.5 * math.pi), rel=1e-13)
