@@ -176,21 +176,15 @@ def parse_flywheel(text: str, filename: str = "<string>", exercise_id: str = "fl
     t = Tables.read(text, filename, "flywheel", _TOP, _KEYS, data)
     fail = t.fail
     tables = [k for k in ("turning_moment", "resisting_torque", "punch") if k in t.data]
+    length, speed_unit = _units(t, "punch" in tables)
     if tables == ["turning_moment", "resisting_torque"]:
-        return _engine_and_machine(t, filename, exercise_id)
+        return _engine_and_machine(t, filename, exercise_id, length, speed_unit)
     if len(tables) != 1:
         raise fail("a flywheel file gives its diagram as [turning_moment] torque = \"…\", "
                    "points = [[θ°, T], …] or areas = […] with the diagram's scales, or a "
                    "machine's [resisting_torque] against a steady driver, or a [punch]: one "
                    "of them", tables[1] if tables else "flywheel")
     (table,) = tables
-    length, speed_unit = t.units("m", "rad/s")
-    for key, unit in t.data.get("units", {}).items():
-        # a unit it would not read is refused, lest "kW" leave a power read as W
-        if key not in ("length", "speed") and not (key == "power" and unit in POWERS
-                                                   and table == "punch"):
-            raise fail("a flywheel file's [units] takes length, speed and, for a [punch]'s "
-                       f"motor, power (W, kW or MW); not {key} = {unit!r:.20}", "units", key)
     if table == "punch":
         return _exercise(t, filename, exercise_id, 2 * math.pi, length, speed_unit,
                          read_punch(t, _one(t, "punch")))
@@ -225,7 +219,21 @@ def parse_flywheel(text: str, filename: str = "<string>", exercise_id: str = "fl
     return _exercise(t, filename, exercise_id, cycle, length, speed_unit, diagram)
 
 
-def _engine_and_machine(t: Tables, filename: str, exercise_id: str) -> FlywheelExercise:
+def _units(t: Tables, punch: bool) -> tuple[str, str]:
+    """The file's length and speed units. A unit it would not read is refused, lest "kW"
+    leave a power read as W: [units] takes length and speed, and power (W, kW or MW) for a
+    [punch]'s motor."""
+    units = t.units("m", "rad/s")
+    for key, unit in t.data.get("units", {}).items():
+        if key not in ("length", "speed") and not (key == "power" and unit in POWERS
+                                                   and punch):
+            raise t.fail("a flywheel file's [units] takes length, speed and, for a [punch]'s "
+                         f"motor, power (W, kW or MW); not {key} = {unit!r:.20}", "units", key)
+    return units
+
+
+def _engine_and_machine(t: Tables, filename: str, exercise_id: str, length: str,
+                        speed_unit: str) -> FlywheelExercise:
     """An engine's turning moment T(θ) and a machine's resisting torque R(θ), each a formula:
     the net T − R drives the flywheel, so the exercise is read as the diagram T − R + R_mean
     (its areas those of T − R, its mean the engine's). Over a cycle the two must do equal
@@ -258,11 +266,6 @@ def _engine_and_machine(t: Tables, filename: str, exercise_id: str) -> FlywheelE
         raise t.fail(f"the engine's mean torque {means[0]:.6g} N·m differs from the machine's "
                      f"{means[1]:.6g} N·m: over a cycle they must balance", "resisting_torque",
                      "torque")
-    length, speed_unit = t.units("m", "rad/s")
-    for key in t.data.get("units", {}):
-        if key not in ("length", "speed"):
-            raise t.fail(f"a flywheel file's [units] takes length and speed; not {key}",
-                         "units", key)
     return _exercise(t, filename, exercise_id, cycle, length, speed_unit,
                      {"formula": engine, "machine": machine, "machine_mean": means[1]})
 
