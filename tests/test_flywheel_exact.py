@@ -7,12 +7,14 @@ from __future__ import annotations
 import math
 
 import pytest
+from click.testing import CliRunner
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from tarsim.constructions.forces.flywheel import Diagram, read_table
 from tarsim.constructions.forces.flywheel_exact import exact_reading, loop_area
 from tarsim.constructions.forces.torque_formula import parse_formula
+from tarsim.exercises.cli import cli
 from tarsim.exercises.forces.flywheel_file import parse_flywheel
 from tarsim.exercises.forces.flywheel_solution import solve_flywheel
 
@@ -119,3 +121,57 @@ def test_table_of_straight_pieces_is_its_trapezoids():
     assert [math.degrees(c) for c in r.intercepts] == pytest.approx([22.5, 157.5], rel=1e-13)
     assert r.delta_e == pytest.approx(112.5 * math.pi, rel=1e-13)
     assert r.areas == pytest.approx((112.5 * math.pi, -112.5 * math.pi), rel=1e-13)
+
+
+F3 = '''
+name = "F3: machine torque (5000 + 500 sin t) driven by an engine of (5000 + 600 sin 2t)"
+[units]
+speed = "rpm"
+length = "m"
+[turning_moment]
+torque = "5000 + 600*sin(2*theta)"
+cycle = 360
+[resisting_torque]
+torque = "5000 + 500*sin(theta)"
+cycle = 360
+[flywheel]
+speed = 150
+mass = 500
+radius_of_gyration = 0.4
+'''
+
+
+def test_f3_engine_and_machine(tmp_path):
+    """The engine's 5000 + 600 sin 2θ against the machine's 5000 + 500 sin θ: the excess
+    600 sin 2θ − 500 sin θ has the energy E = −300 cos 2θ + 500 cos θ, whose extremes are at
+    sin θ = 0 or cos θ = 5/12: E = 200, −800 and 4850/12, so ΔE = 14450/12 J exactly. The
+    excess is greatest where 2400c² − 500c − 1200 = 0 (c = cos θ), c = (500 − √11770000)/4800,
+    at θ = 232.37° (its least at 127.63°), α = excess/I with I = 500·0.4². The figure draws
+    what it is, the excess T_e − T_m beside the two given torques, in English and Persian."""
+    path = tmp_path / "f3.toml"
+    path.write_text(F3, encoding="utf-8")
+    q = solve_flywheel(parse_flywheel(F3)).checked
+    assert q["delta_E"].value["value"] == pytest.approx(14450 / 12, rel=QUADRATURE)
+    c = (500 - math.sqrt(500 ** 2 + 4 * 2400 * 1200)) / 4800
+    theta = 2 * math.pi - math.acos(c)
+    excess = 600 * math.sin(2 * theta) - 500 * math.sin(theta)
+    # T at its extreme is the extreme to rounding; its place to some √(rounding) of the cycle
+    assert q["greatest_acceleration"].value["value"] == pytest.approx(excess / 80, rel=1e-12)
+    assert q["greatest_acceleration"].value["angle_deg"] == pytest.approx(
+        [math.degrees(theta)], abs=1e-5)
+    assert q["greatest_retardation"].value["angle_deg"] == pytest.approx(
+        [360 - math.degrees(theta)], abs=1e-5)
+    svgs = {}
+    for lang in ("en", "fa"):
+        out = tmp_path / lang
+        result = CliRunner().invoke(cli, ["solve", str(path), "--no-pdf", "--lang", lang,
+                                          "-o", str(out)])
+        assert result.exit_code == 0, result.output
+        svgs[lang] = (out / "turning-moment.svg").read_text(encoding="utf-8")
+    assert "<title>Excess-torque diagram</title>" in svgs["en"]
+    for label in ("excess torque T", "engine's turning moment T", "machine's resisting torque T"):
+        assert label in svgs["en"]
+    assert ">turning moment<" not in svgs["en"]
+    for label in ("نمودار گشتاور اضافی", "گشتاور اضافی", "گشتاور چرخشی موتور",
+                  "گشتاور مقاوم ماشین"):
+        assert label in svgs["fa"]

@@ -161,6 +161,20 @@ WORDS: dict[str, str] = {
         "α max و α min: بیشترین شتاب و کاهش شتاب محور، جایی که T در کل چرخه بیشینه و "
         "کمینه است",
     "highest": "بیشینه", "lowest": "کمینه",
+    "excess torque T_e − T_m": "گشتاور اضافی T_e − T_m",
+    "engine's turning moment T_e": "گشتاور چرخشی موتور T_e",
+    "machine's resisting torque T_m": "گشتاور مقاوم ماشین T_m",
+    "Excess-torque diagram": "نمودار گشتاور اضافی",
+    "ΔE = {energy} {unit}, the greatest fluctuation of energy: the highest energy less the "
+    "lowest, adding the areas of T_e − T_m in turn (shaded light where the engine gives more "
+    "than the machine takes, dark where less)":
+        "ΔE = {energy} {unit}، بیشترین نوسان انرژی: بیشترین انرژی منهای کمترین آن، با جمع "
+        "مساحت‌های T_e − T_m به ترتیب (روشن جایی که موتور بیش از نیاز ماشین می‌دهد، تیره "
+        "جایی که کمتر)",
+    "α max and α min: the shaft's greatest acceleration and retardation, where T_e − T_m is "
+    "highest and lowest over the whole cycle":
+        "α max و α min: بیشترین شتاب و کاهش شتاب محور، جایی که T_e − T_m در کل چرخه بیشینه و "
+        "کمینه است",
     "the highest and lowest energy": "بیشترین و کمترین انرژی",
     "the shaft's extremes": "بیشینه و کمینهٔ شتاب محور",
     "energy above the first intercept's": "انرژی نسبت به نخستین تقاطع",

@@ -1,5 +1,6 @@
 """The flywheel's figures: a turning-moment diagram given as T(θ), its mean line, its areas
-shaded with their joules and the shaft's greatest acceleration and retardation marked; or,
+shaded with their joules and the shaft's greatest acceleration and retardation marked (for
+an engine against a machine, the excess T_e − T_m beside the two torques given); or,
 for a diagram given by its areas, the energy at each intercept, its highest and lowest
 marked ΔE apart."""
 
@@ -33,7 +34,10 @@ def _ticks(period: float) -> list[tuple[float, str]]:
 
 def torque_figure(sol: Any) -> Figure:
     """T against the crank angle over the cycle, with the mean and the areas."""
-    ex, r = sol.exercise, sol.reading
+    ex = sol.exercise
+    if ex.machine is not None:
+        return _excess_figure(sol)
+    r = sol.reading
     period = math.degrees(ex.cycle)
     pts = tuple((math.degrees(t), v) for t, v in r.samples) + ((period, r.samples[0][1]),)
     torque = unit_words("N·m")
@@ -63,6 +67,46 @@ def torque_figure(sol: Any) -> Figure:
     return draw_line_plot(
         words("Resisting-torque diagram") if ex.resisting else words("Turning-moment diagram"),
         words("crank angle θ (°)"), f"T ({torque})", series,
+        marks, x_range=(0.0, period), x_ticks=_ticks(period), notes=notes, fills=fills,
+        tags=tags, mark_legend=words("the shaft's extremes") if marks else "",
+        subtitle=ex.name)
+
+
+def _excess_figure(sol: Any) -> Figure:
+    """An engine's turning moment T_e and a machine's resisting torque T_m, both given, and
+    what drives the flywheel, the excess T_e − T_m about its mean of 0, its areas shaded."""
+    ex, r = sol.exercise, sol.reading
+    period = math.degrees(ex.cycle)
+    thetas = [t for t, _ in r.samples] + [ex.cycle]
+    degrees = [math.degrees(t) for t in thetas]
+    shift = ex.machine_mean                  # the reading's diagram is T_e − T_m + its mean
+    excess = [v - shift for _, v in r.samples]
+    excess.append(excess[0])
+    torque = unit_words("N·m")
+    series = [Series(words("excess torque T_e − T_m"), tuple(zip(degrees, excess))),
+              Series(words("engine's turning moment T_e"),
+                     tuple((d, ex.formula(t)) for d, t in zip(degrees, thetas)),
+                     "plot_curve_dotted"),
+              Series(words("machine's resisting torque T_m"),
+                     tuple((d, ex.machine(t)) for d, t in zip(degrees, thetas)),
+                     "plot_curve_dash_dot"),
+              Series(words("mean {value} {unit}", value=numerals("0"), unit=torque),
+                     ((0.0, 0.0), (period, 0.0)), "plot_curve_dashed")]
+    fills, tags = energy_fills(degrees[:-1], excess[:-1], 0.0,
+                               [math.degrees(c) for c in r.intercepts], period)
+    notes = [words("ΔE = {energy} {unit}, the greatest fluctuation of energy: the highest energy "
+                   "less the lowest, adding the areas of T_e − T_m in turn (shaded light where "
+                   "the engine gives more than the machine takes, dark where less)",
+                   energy=numerals(_short(r.delta_e)), unit=unit_words("J"))]
+    marks = []
+    if "greatest_acceleration" in sol.checked:
+        for key, label in (("greatest", "α max"), ("least", "α min")):
+            marks += [PlotMark(math.degrees(theta), t - shift, label)
+                      for theta, t in sol.extremes[key]]
+        notes.append(words("α max and α min: the shaft's greatest acceleration and retardation, "
+                           "where T_e − T_m is highest and lowest over the whole cycle"))
+    return draw_line_plot(
+        words("Excess-torque diagram"), words("crank angle θ (°)"), f"T ({torque})", series,
         marks, x_range=(0.0, period), x_ticks=_ticks(period), notes=notes, fills=fills,
         tags=tags, mark_legend=words("the shaft's extremes") if marks else "",
         subtitle=ex.name)
