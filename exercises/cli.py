@@ -109,13 +109,21 @@ def check(source, angle):
 @common.angle
 @click.option("--pdf/--no-pdf", default=True, show_default=True,
               help="Also write a PDF of each figure (needs libcairo2).")
+@click.option("--format", "formats", type=click.Choice(["svg", "pdf", "png"],
+                                                        case_sensitive=False),
+              multiple=True, metavar="[svg|pdf|png]",
+              help="What to write beside each figure's SVG (always written), once for each: "
+                   "pdf (the default), png, or both. PDF and PNG need libcairo2.")
+@click.option("--dpi", type=click.IntRange(50, 1200), default=200, show_default=True,
+              help="The PNGs' resolution; each PNG states it, so it is placed at its true "
+                   "size in mm.")
 @common.paper
 @click.option("--allow-undercut", is_flag=True,
               help="A cam whose roller undercuts it, or whose flat face meets a concave "
                    "profile: draw it with the trouble ringed instead of refusing it.")
 @common.speaks
 @common.fails_cleanly
-def solve(source, out_dir, angle, pdf, paper, allow_undercut, lang, digits):
+def solve(source, out_dir, angle, pdf, formats, dpi, paper, allow_undercut, lang, digits):
     """Solve an exercise by graphical construction and check every number.
 
     FILE is a mechanism file whose [ask] table names what to find (see the
@@ -128,7 +136,8 @@ def solve(source, out_dir, angle, pdf, paper, allow_undercut, lang, digits):
     with the independent analytic solver.
 
     \b
-    Writes into DIR (each figure as .svg, and as .pdf unless --no-pdf):
+    Writes into DIR (each figure as .svg, and as .pdf unless --no-pdf, or
+    as --format asks: --format png --dpi 300 for a slide's PNGs):
       centres, circle-diagram, V_<P>-<method>
                      the instant centres and each velocity construction
       worked         space diagram, velocity and acceleration polygons and
@@ -167,6 +176,7 @@ def solve(source, out_dir, angle, pdf, paper, allow_undercut, lang, digits):
       tarsim solve four-bar -o four-bar-solution
       tarsim solve crank-shaper -o shaper      # θ2 = 90° and t = 2.34 s
       tarsim solve my-exercise.toml --angle 120 --no-pdf
+      tarsim solve four-bar --format png --dpi 300   # SVG and PNG, no PDF
       tarsim solve whitworth --paper A3          # figures on A3 sheets (A4 by default)
       tarsim solve planetary-q1                  # the notes' planetary Q1
       tarsim solve eccentric-flat-face           # the notes' §3.20 cam
@@ -185,8 +195,11 @@ def solve(source, out_dir, angle, pdf, paper, allow_undercut, lang, digits):
         out = Path(out_dir or f"{ex.id}-solution")
         with output_folder(out):      # a folder that cannot be written fails before the solve
             solved = chapter.solve(ex, allow_undercut=allow_undercut)
+            formats = {f.lower() for f in formats} or {"pdf"}
+            pdf = pdf and "pdf" in formats
             reason = cairo_missing() if pdf else None
-            written = solved.write(out, pdf=pdf and reason is None)
+            png = dpi if "png" in formats else None   # asked by name: refused without cairo
+            written = solved.write(out, pdf=pdf and reason is None, png_dpi=png)
     with speaking("en"):              # the terminal's lines are English
         common.report(solved, written, out, reason)
 

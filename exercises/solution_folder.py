@@ -18,7 +18,8 @@ from typing import Any
 
 from tarsim.constructions.errors import CheckMismatch
 from tarsim.constructions.narration import spoken
-from tarsim.graphics.export import RenderError, cairo_missing, figure_pdf, write_folder
+from tarsim.graphics.export import (RenderError, cairo_missing, figure_pdf, figure_pngs,
+                                    write_folder)
 from tarsim.graphics.figure import Figure
 from tarsim.graphics.svg import to_svg
 from tarsim.graphics.workers import draw_each
@@ -31,10 +32,11 @@ __all__ = ["ChapterFiles", "write_solution"]
 
 def write_solution(files: dict[str, str], out_dir: str | Path, *, pdf: bool = True,
                    figures: dict[str, Figure] | None = None,
-                   made: dict[str, bytes] | None = None) -> list[Path]:
+                   made: dict[str, bytes] | None = None,
+                   png_dpi: float | None = None) -> list[Path]:
     """Write the rendered files into ``out_dir`` (made if missing), with a PDF of each of
-    ``figures`` (by its PDF's name; a page a sheet), all or nothing (see
-    :func:`~tarsim.graphics.export.write_folder`).
+    ``figures`` (by its PDF's name; a page a sheet) and, at ``png_dpi``, a PNG of each
+    sheet, all or nothing (see :func:`~tarsim.graphics.export.write_folder`).
 
     ``solution.pdf`` has those figures as its pages, in order. A figure whose PDF is
     already ``made`` (by its name) is not drawn again. The previous solution's files in
@@ -44,14 +46,22 @@ def write_solution(files: dict[str, str], out_dir: str | Path, *, pdf: bool = Tr
     ------
     RenderError
         If the folder cannot be made or written, holds a file of one of these names that
-        tarsim did not write, or PDF is asked and libcairo2 is missing (checked before
-        anything is written).
+        tarsim did not write, or PDF or PNG is asked and libcairo2 is missing (checked
+        before anything is written).
     """
-    pdfs = {}
-    if pdf and figures:
+    pdfs: dict[str, bytes] = {}
+    if (pdf or png_dpi) and figures:
         missing = cairo_missing()   # loaded here once, for every worker to inherit
         if missing:
             raise RenderError(missing)
+    if png_dpi and figures:
+        jobs = [partial(figure_pngs, fig, name.removesuffix(".pdf"), png_dpi)
+                for name, fig in figures.items()]
+        # a PNG costs about its pixels: an A4 sheet at 200 dpi some 0.1 s
+        for drawn in draw_each(jobs, [len(fig.sheets or [fig]) * 100.0
+                                      for fig in figures.values()]):
+            pdfs.update(drawn)
+    if pdf and figures:
         made = made or {}
         sheets = {name: fig.sheets or [fig] for name, fig in figures.items()}
         todo = [name for name in sheets if name not in made]
@@ -59,7 +69,7 @@ def write_solution(files: dict[str, str], out_dir: str | Path, *, pdf: bool = Tr
         # A sheet's PDF costs some 1 ms and 0.04 ms an item (measured on the bundled ones).
         drawn = dict(zip(todo, draw_each(jobs, [sum(1.0 + 0.04 * len(s.items)
                                                     for s in sheets[name]) for name in todo])))
-        pdfs = {name: made.get(name) or drawn[name] for name in sheets}
+        pdfs.update({name: made.get(name) or drawn[name] for name in sheets})
         pdfs["solution.pdf"] = figure_pdf([s for name in sheets for s in sheets[name]])
     return write_folder({**files, **pdfs}, out_dir)
 
@@ -106,8 +116,9 @@ class ChapterFiles:
         if self.failures:
             raise CheckMismatch(self.failures)
 
-    def write(self, folder: str | Path, *, pdf: bool = True) -> list[Path]:
-        """Write the files into ``folder`` (with a PDF of each figure when ``pdf``), all or
-        nothing."""
-        return write_solution(self.files(), folder, pdf=pdf,
+    def write(self, folder: str | Path, *, pdf: bool = True,
+              png_dpi: float | None = None) -> list[Path]:
+        """Write the files into ``folder`` (with a PDF of each figure when ``pdf``, a PNG of
+        each at ``png_dpi``), all or nothing."""
+        return write_solution(self.files(), folder, pdf=pdf, png_dpi=png_dpi,
                               figures={f"{stem}.pdf": fig for stem, fig in self.figures.items()})

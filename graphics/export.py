@@ -9,6 +9,8 @@ too.
 
 from __future__ import annotations
 
+import struct
+import zlib
 from pathlib import Path
 
 from .atomic_files import (MANIFEST, RenderError, check_folder, output_folder, write_folder,
@@ -19,7 +21,8 @@ from .rtl import for_cairo
 from .svg import to_svg
 
 __all__ = ["RenderError", "FORMATS", "MANIFEST", "write_figure", "write_text", "write_folder",
-           "check_folder", "output_folder", "svg_to", "cairo_missing", "figure_pdf"]
+           "check_folder", "output_folder", "svg_to", "cairo_missing", "figure_pdf",
+           "figure_pngs"]
 
 FORMATS = ("svg", "pdf", "png")
 
@@ -53,8 +56,28 @@ def svg_to(svg: str, fmt: str, *, dpi: float = 200.0) -> bytes:
     if fmt == "pdf":
         return _dated(cairosvg.surface.PDFSurface).convert(bytestring=data)
     if fmt == "png":
-        return cairosvg.svg2png(bytestring=data, dpi=dpi, background_color="white")
+        return with_dpi(cairosvg.svg2png(bytestring=data, dpi=dpi, background_color="white"),
+                        dpi)
     raise RenderError(f"cannot convert to '{fmt}'; choose one of {', '.join(FORMATS)}")
+
+
+def with_dpi(png: bytes, dpi: float) -> bytes:
+    """``png`` with its resolution stated (a pHYs chunk, in pixels a metre), so that a
+    program placing it knows its true size: cairosvg draws at ``dpi`` but does not say so."""
+    per_metre = round(dpi / 0.0254)
+    body = b"pHYs" + struct.pack(">IIB", per_metre, per_metre, 1)
+    chunk = struct.pack(">I", 9) + body + struct.pack(">I", zlib.crc32(body))
+    end_of_header = 8 + 8 + 13 + 4           # the signature, then IHDR's length, type, data, CRC
+    return png[:end_of_header] + chunk + png[end_of_header:]
+
+
+def figure_pngs(fig: Figure, stem: str, dpi: float) -> dict[str, bytes]:
+    """A PNG of each sheet of ``fig`` at ``dpi``, its true size stated: ``stem.png`` for a
+    figure of one sheet, ``stem-1.png``, ``stem-2.png`` … for a page that runs on."""
+    sheets = fig.sheets or [fig]
+    names = [f"{stem}.png"] if len(sheets) == 1 else [f"{stem}-{i}.png"
+                                                      for i in range(1, len(sheets) + 1)]
+    return {name: svg_to(to_svg(sheet), "png", dpi=dpi) for name, sheet in zip(names, sheets)}
 
 
 def figure_pdf(pages: list[Figure]) -> bytes:

@@ -165,11 +165,11 @@ class WorkedSolution:
                                              self.overall.quantities)
         return files
 
-    def write(self, folder: str | Path, *, pdf: bool = True, lang: str | None = None
-              ) -> list[Path]:
+    def write(self, folder: str | Path, *, pdf: bool = True, lang: str | None = None,
+              png_dpi: float | None = None) -> list[Path]:
         """Write every file into ``folder`` (made if missing), with a PDF of each figure when
-        ``pdf`` and steps.md in ``lang``, as :func:`write_solution` does; return the paths
-        written.
+        ``pdf``, a PNG of each at ``png_dpi``, and steps.md in ``lang``, as
+        :func:`write_solution` does; return the paths written.
 
         Raises
         ------
@@ -183,7 +183,7 @@ class WorkedSolution:
                 raise RenderError(missing)
             self.pages = self._drawn(pdf=True)
         made = {f"{f.stem}.pdf": f.pdf for f in self.pages if f.pdf}
-        return write_solution(self.files(lang), folder, pdf=pdf, made=made,
+        return write_solution(self.files(lang), folder, pdf=pdf, made=made, png_dpi=png_dpi,
                               figures={f"{f.stem}.pdf": f.figure for f in self.pages})
 
     def view(self, step_deg: float = 0.5):
