@@ -156,7 +156,7 @@ def test_bad_file_is_one_line_with_file_and_line(mech_file, tmp_path, edit, mess
                         "involute-pair, output-speed-given, planetary-q1, planetary-q2, "
                         "planetary-q3, planetary-q4, planetary-ratio-least-teeth, "
                         "ratio-least-teeth, ratio-only, reverted-train-design, "
-                        "reverted-two-modules, shafts-apart, "
+                        "reverted-two-modules, shafts-about-circular-pitch, shafts-apart, "
                         "sun-and-planet, "
                         "teeth-implied, two-planets-listed, two-speeds-arm-and-sun, "
                         "base-circle-for-pressure-angle, circular-arc-flat-face, "
@@ -301,7 +301,8 @@ def test_list_shows_the_bundled_examples():
                    "differential-near-equal", "gearbox-power-efficiency", "involute-pair",
                    "output-speed-given", "planetary-q1", "planetary-q2", "planetary-q3",
                    "planetary-q4", "planetary-ratio-least-teeth", "ratio-least-teeth",
-                   "ratio-only", "reverted-train-design", "reverted-two-modules", "shafts-apart",
+                   "ratio-only", "reverted-train-design", "reverted-two-modules",
+                   "shafts-about-circular-pitch", "shafts-apart",
                    "sun-and-planet",
                    "teeth-implied",
                    "two-planets-listed", "two-speeds-arm-and-sun",

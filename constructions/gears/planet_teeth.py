@@ -72,7 +72,9 @@ def teeth_from_ratios(train: GearTrain, ratios: list[Ratio], least: int | None
     if least is None and spare <= 0:
         raise InputError(f"the speed ratio{'s' * (len(ratios) > 1)} {said}, the coaxial "
                          f"condition and the centre distances give gears {gears} no whole "
-                         "counts: check the ratios, the teeth and the modules",
+                         "counts: check the ratios, the teeth and the modules"
+                         + (", or say centre_distance = { about = … }" if any(
+                             m.distance for m in train.meshes) else ""),
                          file=train.source or None)
     if least is None or spare > 0:
         raise InputError(f"gears {gears} have no teeth, and the speed ratios, the coaxial "

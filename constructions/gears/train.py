@@ -38,6 +38,9 @@ class Gear:
     name: str = ""
     diameter: Fraction | None = None
     """The pitch diameter (m) the file gives, where it does."""
+    circular_pitch: Fraction | None = None
+    """The circular pitch p = π·m (m, exact) where the file gives it: ``module`` is then
+    p/π at the float value of π, and a distance p·N/(2π) is said over π exactly."""
 
     @property
     def label(self) -> str:
@@ -56,6 +59,12 @@ class Mesh:
     distance: Fraction | None = None
     """The centre distance (m) the file gives the pair, where it does: it fixes their
     teeth with their module, m(N_a ± N_b)/2 (:mod:`.teeth`)."""
+    about: Fraction | None = None
+    """The approximate centre distance (m) the book gives, "about 600 mm apart": the pair's
+    teeth are designed to it and to their ratio, and stand at the exact distance their
+    whole counts give (:mod:`.about_distance`)."""
+    least: int | None = None
+    """The least count the book allows the smaller gear designed to ``about``, if any."""
     bevel: int = 0
     """For a bevel pair, the sense one gear turns the other in, +1 or −1 (0: a spur pair).
     A bevel planet's axis is square to the main axis, so the two gears it meshes there turn

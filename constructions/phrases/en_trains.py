@@ -58,6 +58,12 @@ PHRASES: dict[str, str] = {
     "gears.equal_steps": "The book shares |ω{x}/ω{y}| = {value} in {k} equal steps, one a "
                          "pair between them: each pair's ratio is {value}^(1/{k}) = {root} "
                          "({pairs}).",
+    "gears.about_teeth": "Gears {a} and {b} stand about {about} apart and |ω{x}/ω{y}| = "
+                         "{value}: d{g} {sign} d{s} = 2·{about} with d{g} = {k}·d{s}, so d{s} "
+                         "= {d}, and N{s} = {count}: {rounded}.",
+    "gears.about_up": "take the next whole count up, N{n} = {teeth}",
+    "gears.about_least": "the least count, {least}, is more than that: N{n} = {least}",
+    "gears.about_exact": "Gears {a} and {b} then stand exactly {equation} = {distance} apart.",
     "gears.teeth_least": "Gear {g}, the smaller of the pair, takes the least count, {least} "
                          "teeth, or the fewest above it that make the other whole: N{g} = "
                          "{teeth}.",

@@ -148,6 +148,8 @@ WORDS: dict[str, str] = {
     "pitch circle": "دایرهٔ گام", "base circle": "دایرهٔ پایه", "addendum circle": "دایرهٔ سر",
     "root circle": "دایرهٔ ریشه", "no angular acceleration": "بی\u200cشتاب زاویه\u200cای",
     "train value": "مقدار قطار",
+    "approximate distance and speed ratio": "فاصلهٔ تقریبی و نسبت سرعت",
+    "teeth and circular pitch": "دندانه‌ها و گام محیطی",
     # the interactive page (tarsim view)
     "figure": "شکل", "play": "پخش",
     "download this frame (SVG)": "بارگیری این قاب (SVG)", "Kennedy lines": "خطوط کندی",

@@ -36,6 +36,7 @@ WORDS: dict[str, str] = {
     "arm {arm} held, {fixed} turned {turn}": "بازوی {arm} ثابت، {fixed} یک دور منفی",
     "total": "مجموع",
     "teeth (found: in brackets)": "تعداد دندانه (یافته‌شده: درون پرانتز)",
+    "circular pitch ({unit})": "گام محیطی ({unit})",
     "y × row 1 + x × row 2: speed": "y × سطر 1 + x × سطر 2: سرعت",
     "arm {arm} held, {member} turned {turn}": "بازوی {arm} ثابت، {member} یک دور منفی",
     # a blank column's footnote (exercises/gears/square_axes.py)
@@ -152,6 +153,13 @@ PHRASES: dict[str, str] = {
     "gears.equal_steps": "کتاب |ω{x}/ω{y}| = {value} را در {k} گام برابر، یک گام برای هر "
                          "جفت میان آن دو، تقسیم می‌کند: نسبت هر جفت {value}^(1/{k}) = {root} "
                          "است ({pairs}).",
+    "gears.about_teeth": "مرکزهای چرخدنده‌های {a} و {b} حدود {about} از هم فاصله دارند و "
+                         "|ω{x}/ω{y}| = {value}: d{g} {sign} d{s} = 2·{about} و d{g} = "
+                         "{k}·d{s}، پس d{s} = {d} و N{s} = {count}: {rounded}.",
+    "gears.about_up": "عدد صحیح بعدی رو به بالا گرفته می‌شود، N{n} = {teeth}",
+    "gears.about_least": "کمترین تعداد دندانه، {least}، از آن بیشتر است: N{n} = {least}",
+    "gears.about_exact": "پس فاصلهٔ دقیق مرکزهای چرخدنده‌های {a} و {b} برابر {equation} = "
+                         "{distance} است.",
     "gears.teeth_least": "چرخدندهٔ {g}، کوچک‌تر آن جفت، کمترین تعداد دندانه یعنی {least} را "
                          "می‌گیرد، یا کمترین تعداد بالاتر از آن که دندانه‌های دیگری را درست کند: "
                          "N{g} = {teeth}.",

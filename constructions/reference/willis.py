@@ -11,12 +11,14 @@ tabular method but the train itself.
 
 from __future__ import annotations
 
+import math
 from fractions import Fraction
 
 from ..errors import InputError
 from ..gears.train import GearTrain
 
-__all__ = ["willis_speeds", "willis_torques", "coaxial_teeth", "pitch_distance"]
+__all__ = ["willis_speeds", "willis_torques", "coaxial_teeth", "pitch_distance",
+           "pitch_distance_times_pi", "teeth_to_about"]
 
 
 def pitch_distance(train: GearTrain, a: int, b: int, internal: bool) -> Fraction | None:
@@ -30,6 +32,31 @@ def pitch_distance(train: GearTrain, a: int, b: int, internal: bool) -> Fraction
             return None
         radii.append(g.teeth * g.module / 2)
     return abs(radii[0] - radii[1]) if internal else radii[0] + radii[1]
+
+
+def pitch_distance_times_pi(train: GearTrain, a: int, b: int, internal: bool
+                            ) -> Fraction | None:
+    """π times the distance between two meshing gears' axes, from their pitch circles at
+    their circular pitches: each radius N·p/(2π), so π·r = N·p/2 exactly; None unless both
+    gears give a circular pitch."""
+    gears = [train.gear(n) for n in (a, b)]
+    if any(g.circular_pitch is None or g.teeth is None for g in gears):
+        return None
+    ra, rb = (g.teeth * g.circular_pitch / 2 for g in gears)
+    return abs(ra - rb) if internal else ra + rb
+
+
+def teeth_to_about(about: float, pitch: float, ratio: float, internal: bool,
+                   least: int | None) -> tuple[int, int]:
+    """The counts (smaller, larger) a pair designed to an approximate centre distance takes,
+    in floats: the smaller gear's circumference over the circular pitch, π·d/p with
+    d = 2a/(k ± 1), taken up to the next whole count (or ``least``), the larger k times it
+    (rounded: the caller compares it with the design's)."""
+    k = max(ratio, 1 / ratio)
+    d = 2 * about / (k - 1 if internal else k + 1)
+    # a count under 1e5 is good to ~1e-11 in floats: one within 1e-9 of a whole one is it
+    n = max(math.ceil(math.pi * d / pitch - 1e-9), least or 1)
+    return n, round(n * k)
 
 
 def willis_speeds(train: GearTrain) -> dict[int, Fraction]:

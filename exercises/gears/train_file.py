@@ -7,6 +7,7 @@ method's fractions are the notes' own. Every failure is one line naming file:lin
 
 from __future__ import annotations
 
+import math
 import re
 from dataclasses import dataclass, replace
 from fractions import Fraction
@@ -36,6 +37,8 @@ MESH_ASKS = ("contact_ratio", "path_of_contact", "arc_of_contact", "pressure_ang
              "circular_pitch", "interference", "least_teeth")
 """What the involute mesh answers (with ``[involute]``)."""
 _SPEEDS = ("rpm", "rad/s")
+_PITCHES = ("module", "diametral_pitch", "circular_pitch")
+"""The three ways a gear's tooth size is given: m, P = 1 in/m, p = π·m."""
 
 
 @dataclass(frozen=True)
@@ -216,32 +219,16 @@ class _Reader(InputTables, MeshTables, TeethTables):
             if not isinstance(t, dict):
                 raise self.fail("each [[gear]] must be a table", "gear", index=i)
             for k in t:
-                if k not in ("number", "name", "teeth", "module", "diametral_pitch", "carrier",
-                             "diameter"):
+                if k not in ("number", "name", "teeth", *_PITCHES, "carrier", "diameter"):
                     raise self.fail(f"unknown gear setting '{k}'; expected number, name, teeth, "
-                                    "module (or diametral_pitch), diameter, carrier", "gear", k,
-                                    i)
+                                    "module (or diametral_pitch, circular_pitch), diameter, "
+                                    "carrier", "gear", k, i)
             if "number" not in t:
                 raise self.fail("a gear needs its number", "gear", index=i)
             n = self.integer(t["number"], "a gear's number", "gear", "number", i)
             if any(g.number == n for g in out):
                 raise self.fail(f"gear {n} is listed twice", "gear", "number", i)
-            module = None
-            if "module" in t and "diametral_pitch" in t:
-                raise self.fail("give a gear's module or its diametral pitch, not both", "gear",
-                                "diametral_pitch", i)
-            if "diametral_pitch" in t:     # P teeth per inch of pitch diameter: m = 1 in / P
-                pitch = self.exact(t["diametral_pitch"], "a diametral pitch", "gear",
-                                   "diametral_pitch", i)
-                if pitch <= 0:
-                    raise self.fail("a diametral pitch must be positive", "gear",
-                                    "diametral_pitch", i)
-                module = Fraction(254, 10000) / pitch
-            if "module" in t:
-                module = self.exact(t["module"], "a module", "gear", "module", i)
-                if module <= 0:
-                    raise self.fail("a module must be positive", "gear", "module", i)
-                module *= Fraction(repr(LENGTH_UNITS[units.length]))
+            module, pitch = self.module(t, i, units)
             carrier = (self.integer(t["carrier"], "a carrier", "gear", "carrier", i)
                        if "carrier" in t else None)
             name = t.get("name", "")
@@ -253,8 +240,31 @@ class _Reader(InputTables, MeshTables, TeethTables):
             if "diameter" in t:
                 teeth = self.diameter(t, i, n, teeth, module, units)
                 diameter = teeth * module
-            out.append(Gear(n, teeth, module, carrier, name, diameter))
+            out.append(Gear(n, teeth, module, carrier, name, diameter, pitch))
         return tuple(out)
+
+    def module(self, t: dict[str, Any], i: int, units: SpeedUnits
+               ) -> tuple[Fraction | None, Fraction | None]:
+        """A gear's module (m) by one of the three ways the books size teeth: its module m,
+        its diametral pitch P (teeth per inch of diameter, m = 1 in/P) or its circular pitch
+        p (the pitch circle's arc a tooth, m = p/π); and the circular pitch (m), where given.
+        """
+        given = [k for k in _PITCHES if k in t]
+        if len(given) > 1:
+            raise self.fail(f"give a gear's {' or its '.join(k.replace('_', ' ') for k in given)}"
+                            ", not both", "gear", given[1], i)
+        if not given:
+            return None, None
+        key = given[0]
+        value = self.exact(t[key], f"a {key.replace('_', ' ')}", "gear", key, i)
+        if value <= 0:
+            raise self.fail(f"a {key.replace('_', ' ')} must be positive", "gear", key, i)
+        if key == "diametral_pitch":     # P teeth per inch of pitch diameter: m = 1 in / P
+            return Fraction(254, 10000) / value, None
+        value *= Fraction(repr(LENGTH_UNITS[units.length]))
+        if key == "circular_pitch":      # p = π·m: m at the float value of π
+            return value / Fraction(math.pi), value
+        return value, None
 
     def diameter(self, t: dict[str, Any], i: int, n: int, teeth: int | None,
                  module: Fraction | None, units: SpeedUnits) -> int:
@@ -263,7 +273,7 @@ class _Reader(InputTables, MeshTables, TeethTables):
         d = self.exact(t["diameter"], "a pitch diameter", "gear", "diameter", i)
         if module is None or d <= 0:
             raise self.fail("a pitch diameter gives the teeth with the module: give module = "
-                            "… (or diametral_pitch), and a positive diameter", "gear",
+                            "… (or a pitch), and a positive diameter", "gear",
                             "diameter", i)
         m = module / Fraction(repr(LENGTH_UNITS[units.length]))     # in the file's unit
         found = teeth_from_diameter(d, m)
@@ -437,7 +447,8 @@ class _Reader(InputTables, MeshTables, TeethTables):
                             f"{', '.join(pairs)}", "ask", "find")
         if any(train.gear(n).module is None for n in numbers):
             raise self.fail(f"{q} needs the module of gears {numbers[0]} and {numbers[1]}: "
-                            "give module = … (mm) in their [[gear]] tables", "ask", "find")
+                            "give module = … (mm) or circular_pitch = … in their [[gear]] "
+                            "tables", "ask", "find")
 
     @staticmethod
     def ratios(train: GearTrain) -> tuple[str, ...]:

@@ -40,19 +40,39 @@ class MeshTables:
                                 "mesh", "kind", i)
             if pair[0] == pair[1]:
                 raise self.fail(f"gear {pair[0]} cannot mesh with itself", "mesh", "gears", i)
-            distance = None
-            if "centre_distance" in t:
-                distance = self.exact(t["centre_distance"], "a centre distance", "mesh",
-                                      "centre_distance", i)
-                if distance <= 0:
-                    raise self.fail("a centre distance must be positive", "mesh",
-                                    "centre_distance", i)
-                distance *= Fraction(repr(LENGTH_UNITS[units.length]))
-            out.append(Mesh(pair[0], pair[1], kind == "internal", distance,
-                            -1 if kind == "bevel" else 0))
+            distance, about = self.centre_distance(t, i, units, pair, gears)
+            out.append(Mesh(pair[0], pair[1], kind == "internal", distance, about,
+                            bevel=-1 if kind == "bevel" else 0))
         if not out:
             raise self.fail("list the meshes as [[mesh]] tables, gears = [2, 4]", key="mesh")
         return self.bevel_senses(out, gears)
+
+    def centre_distance(self, t: dict, i: int, units: SpeedUnits, pair: list[int],
+                        gears: tuple[Gear, ...]) -> tuple[Fraction | None, Fraction | None]:
+        """A ``[[mesh]]``'s centre distance (m), exact, ``centre_distance = 600``, or
+        approximate, ``centre_distance = { about = 600 }`` (the teeth designed to it), as
+        (exact, about). A circular pitch puts whole teeth p(N_a ± N_b)/(2π) apart, never a
+        whole distance, so it takes the approximate one."""
+        if "centre_distance" not in t:
+            return None, None
+        v = t["centre_distance"]
+        about = isinstance(v, dict)
+        if about:
+            if set(v) != {"about"}:
+                raise self.fail("an approximate centre distance says it: centre_distance = "
+                                "{ about = 600 }", "mesh", "centre_distance", i)
+            v = v["about"]
+        distance = self.exact(v, "a centre distance", "mesh", "centre_distance", i)
+        if distance <= 0:
+            raise self.fail("a centre distance must be positive", "mesh", "centre_distance", i)
+        pitched = [g.number for g in gears if g.number in pair and g.circular_pitch]
+        if pitched and not about:
+            raise self.fail(f"gear {pitched[0]}'s circular pitch puts whole teeth p(N{pair[0]} "
+                            f"± N{pair[1]})/(2π) apart, never exactly {float(distance):g} "
+                            f"{units.length}: give centre_distance = {{ about = "
+                            f"{float(distance):g} }}", "mesh", "centre_distance", i)
+        distance *= Fraction(repr(LENGTH_UNITS[units.length]))
+        return (None, distance) if about else (distance, None)
 
     def bevel_senses(self, meshes: list[Mesh], gears: tuple[Gear, ...]) -> tuple[Mesh, ...]:
         """A bevel planet's meshes with the gears beside it: the first listed +1, the

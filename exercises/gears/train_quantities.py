@@ -11,9 +11,13 @@ from fractions import Fraction
 
 from tarsim.constructions.gears.involute import least_teeth_drawn
 from tarsim.constructions.gears.kutzbach import DRAWN
+from tarsim.constructions.gears.train import Mesh
+from tarsim.constructions.narration import numerals, unit_words, words
 from tarsim.constructions.gears.torques import power_at
 from tarsim.constructions.reference.gear_mesh import least_teeth
-from tarsim.constructions.reference.willis import coaxial_teeth, pitch_distance
+from tarsim.constructions.units import LENGTH_UNITS
+from tarsim.constructions.reference.willis import (coaxial_teeth, pitch_distance,
+                                                    pitch_distance_times_pi, teeth_to_about)
 
 __all__ = ["TrainQuantity", "QuantityParts"]
 
@@ -114,9 +118,34 @@ class QuantityParts:
         the sum (or difference) of the two pitch radii, each at its own gear's module."""
         a, b = (int(n) for n in name.removeprefix("centre_distance").split("_"))
         mesh = next(m for m in self.train.meshes if {m.a, m.b} == {a, b})
+        times_pi = pitch_distance_times_pi(self.train, a, b, mesh.internal)
+        if times_pi is not None:        # p(N_a ± N_b)/(2π): over π exactly
+            ga, gb = self.train.gear(a), self.train.gear(b)
+            got = ga.circular_pitch * (abs(ga.teeth - gb.teeth) if mesh.internal else
+                                       ga.teeth + gb.teeth) / 2
+            return TrainQuantity(name, got, times_pi, float(got) / math.pi,
+                                 "teeth and circular pitch", over_pi=True)
         got = self.train._mesh_length(mesh)
         ref = pitch_distance(self.train, a, b, mesh.internal)
         return TrainQuantity(name, got, ref, float(got), "teeth and module")
+
+    def _pitches(self, name: str) -> dict[str, float]:
+        """results.json's circular pitch of a distance's pair (m), and its module p/π, where
+        the file sizes the teeth by it, as the book asks them; else nothing."""
+        a = int(name.removeprefix("centre_distance").split("_")[0])
+        p = self.train.gear(a).circular_pitch
+        return {} if p is None else {"circular_pitch": float(p), "module": float(p) / math.pi}
+
+    def _pitch_row(self) -> list[tuple[str, list[str]]]:
+        """The table's row of the circular pitches the file sizes teeth by, under the
+        teeth found by them (none where no gear gives one)."""
+        train = self.train
+        scale = LENGTH_UNITS[train.units.length]
+        cells = ["" if m == train.arm or train.gear(m).circular_pitch is None else
+                 numerals(f"{float(train.gear(m).circular_pitch) / scale:g}")
+                 for m in train.members]
+        return [(words("circular pitch ({unit})", unit=unit_words(train.units.length)),
+                 cells)] if any(cells) else []
 
     def _teeth_quantity(self, number: int) -> TrainQuantity:
         """A gear's teeth, given or found from the data, beside the reference's: the count
@@ -140,6 +169,24 @@ class QuantityParts:
         # and each centre distance the file gives the gear's pairs, by their pitch circles
         holds = holds and all(pitch_distance(train, m.a, m.b, m.internal) == m.distance
                               for m in train.meshes if number in (m.a, m.b) and m.distance)
+        about = next((m for m in train.meshes if m.about and number in (m.a, m.b)), None)
+        if about is not None:           # designed to an approximate distance: redesigned
+            return TrainQuantity(f"teeth{number}", found, Fraction(
+                self._about_reference(about, number)) if holds else Fraction(0),
+                float(found), "approximate distance and speed ratio")
         return TrainQuantity(f"teeth{number}", found, (by_axis or found) if holds else
                              Fraction(0), float(found), "coaxial condition and speed ratio"
                              if by_axis else "speed ratio")
+
+    def _about_reference(self, mesh: Mesh, number: int) -> int:
+        """Gear ``number``'s count by the reference's own design of its pair to the
+        approximate centre distance, in floats from the circular pitch (π·m where a module
+        is given), the ratio and the least count of the file's [ratio]."""
+        train = self.train
+        ga, gb = train.gear(mesh.a), train.gear(mesh.b)
+        pitch = ga.circular_pitch or gb.circular_pitch
+        pitch = float(pitch) if pitch else math.pi * float(ga.module or gb.module)
+        ratio = next(float(v) for x, y, v in train.ratio_given if {x, y} == {mesh.a, mesh.b})
+        small, large = teeth_to_about(float(mesh.about), pitch, ratio, mesh.internal,
+                                      mesh.least)
+        return small if train.gear(number).teeth == min(ga.teeth, gb.teeth) else large

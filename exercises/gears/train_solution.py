@@ -211,10 +211,11 @@ class TrainSolution(ChapterFiles, QuantityParts):
                 continue
             if q.name.startswith("centre_distance"):
                 symbol = ask_symbol(q.name)
-                out.append(check_line(f"{symbol} = {self.train._length(q.exact)}",
-                                      width=len(symbol) + 31, passed=q.passed,
-                                      against=f"(pitch radii: "
-                                      f"{self.train._length(q.reference)})", method=q.method))
+                found, radii = (self.train._length(x / Fraction(math.pi) if q.over_pi else x)
+                                for x in (q.exact, q.reference))
+                out.append(check_line(f"{symbol} = {found}", width=len(symbol) + 31,
+                                      passed=q.passed, against=f"(pitch radii: {radii})",
+                                      method=q.method))
                 continue
             if q.name.startswith("teeth"):
                 out.append(check_line(f"N{q.name.removeprefix('teeth')} = {q.exact}",
@@ -290,7 +291,8 @@ class TrainSolution(ChapterFiles, QuantityParts):
         elif q.name.startswith("power"):
             found, willis = power_text(q.exact, q.times_pi), power_text(q.reference, q.times_pi)
         elif q.name.startswith("centre_distance"):
-            found, willis = self.train._length(q.exact), self.train._length(q.reference)
+            found, willis = (self.train._length(x / Fraction(math.pi) if q.over_pi else x)
+                             for x in (q.exact, q.reference))
         else:
             found, willis = fraction_text(q.exact), fraction_text(q.reference)
         return (ask_symbol(q.name), found, willis, words("yes" if q.passed else "NO"),
@@ -310,7 +312,7 @@ class TrainSolution(ChapterFiles, QuantityParts):
         teeth = [("" if m == train.arm else numerals(
             f"({train.gear(m).teeth})" if m in train.implied_teeth else
             str(train.gear(m).teeth))) for m in train.members]
-        return heads, [(words("teeth (found: in brackets)"), teeth), *rows]
+        return heads, [(words("teeth (found: in brackets)"), teeth), *self._pitch_row(), *rows]
 
     def _speed_table(self) -> tuple[list[str], list[tuple[str, list[str]]]]:
         """The table's heads and rows of turns and speeds."""
@@ -366,7 +368,8 @@ class TrainSolution(ChapterFiles, QuantityParts):
         notes += self._square_notes
         ruled = (2, 3) if self.found.table else ()
         if self.train.implied_teeth:          # the teeth's row above the rest, ruled off
-            ruled = (1, *(r + 1 for r in ruled))
+            lead = 1 + len(self._pitch_row())
+            ruled = (lead, *(r + lead for r in ruled))
         title = (words("{name}: the tabular method", name=self.train.name) if self.found.table
                  else self.train.name)
         out = {self._stem: draw_train_table(title, heads, rows, ruled=ruled, notes=notes)}
@@ -407,6 +410,7 @@ class TrainSolution(ChapterFiles, QuantityParts):
                 entry["unit"], entry["flow"] = "W", q.flow
             if q.name.startswith("centre_distance"):
                 entry["unit"] = "m"
+                entry.update(self._pitches(q.name))
             if speed:                              # the value in rad/s, exact as the file's
                 unit = self.train.units.speed
                 entry["unit"], entry["exact_unit"] = "rad/s", unit

@@ -11,6 +11,7 @@ from fractions import Fraction
 from typing import Any
 
 from tarsim.constructions.errors import InputError
+from tarsim.constructions.gears.about_distance import about_design
 from tarsim.constructions.gears.pair_teeth import equal_steps, is_pair, pair_teeth
 from tarsim.constructions.gears.planet_teeth import teeth_from_ratios
 from tarsim.constructions.narration import Phrase
@@ -42,8 +43,9 @@ class TeethTables:
             found, shared = self.speed_ratios(train)
             ratios = [(of, value) for of, value, _ in found]
             train = replace(train, ratio_given=tuple((*of, value) for of, value in ratios))
+            train, about = self.about_designed(train, found)
             train, least, paired = self.pairs_designed(train, found)
-            steps = (*steps, *shared, *paired)
+            steps = (*steps, *shared, *about, *paired)
             # the coaxial condition or a distance ties counts together: the table's way
             if (train.planetary or len(ratios) > 1 or train.coaxial
                     or any(m.distance for m in train.meshes)):
@@ -51,6 +53,8 @@ class TeethTables:
             else:
                 train, more = teeth_from_ratio(train, *ratios[0], least)
             steps = (*steps, *more)
+        if "ratio" not in self.data:     # an approximate distance with no ratio
+            self.about_designed(train, [])
         misfit = coaxial_misfit(train, train.coaxial)
         if misfit is not None:
             raise self.fail(f"gears {train.coaxial[0]} and {train.coaxial[1]} are not on one "
@@ -62,6 +66,22 @@ class TeethTables:
                              file=self.filename)
         return replace(train, implied=(*self.sized_teeth, *steps),
                        implied_teeth=(*self.from_diameter, *implied))
+
+    def about_designed(self, train: GearTrain,
+                       found: list[tuple[tuple[int, int], Fraction, int | None]]
+                       ) -> tuple[GearTrain, tuple[Phrase, ...]]:
+        """``train`` with each pair given an approximate centre distance designed to it
+        (:func:`~tarsim.constructions.gears.about_distance.about_design`), refused at the
+        mesh's line."""
+        steps: list[Phrase] = []
+        for i, mesh in enumerate(train.meshes):
+            if mesh.about is not None:
+                try:
+                    train, said = about_design(train, mesh, found)
+                except InputError as e:
+                    raise self.fail(e.message, "mesh", "centre_distance", i) from None
+                steps += said
+        return train, tuple(steps)
 
     def speed_ratios(self, train: GearTrain
                      ) -> tuple[list[tuple[tuple[int, int], Fraction, int | None]],
