@@ -31,7 +31,7 @@ def _solved(tmp_path, kind):
 
 def test_every_kind_has_a_file_and_a_closed_form_below():
     assert set(KINDS) == {"linkage", "train", "cam", "rotor", "engine", "loads", "flywheel",
-                          "class"}
+                          "class", "rod"}
 
 
 def test_linkage_template_is_the_four_bar_of_its_comments(tmp_path):
@@ -165,3 +165,13 @@ def test_the_class_is_a_folder_not_a_page(tmp_path):
     (tmp_path / "class" / "mine.svg").write_text("<svg/>")
     again = runner.invoke(cli, ["new", "class", "-o", str(tmp_path / "class")])
     assert again.exit_code == 1 and "holds files already" in again.output
+
+
+def test_rod_template_is_the_books_rod_of_its_comments(tmp_path):
+    # 2 kg, 250 mm between the pins, G 100 mm from P, k = 110 mm, α = 23000 rad/s² cw:
+    # l2 = k²/l1 = 121 mm, m·l2/(l1 + l2) at P, (m·l1·l3 − m·k²)·α = 133.4 N·m cw. A few
+    # products and quotients of decimals: agreement to 1e-12.
+    q = _solved(tmp_path, "rod")
+    assert q["l2"] == pytest.approx(0.121, rel=1e-12)
+    assert q["mass_at_P"] == pytest.approx(2 * 121 / 221, rel=1e-12)
+    assert q["correction_couple"] == pytest.approx(-133.4, rel=1e-12)

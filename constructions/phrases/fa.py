@@ -9,7 +9,7 @@ algorithm sets Persian digits.
 
 from __future__ import annotations
 
-from . import (fa_balancing, fa_cams, fa_forces, fa_grading, fa_positions, fa_trains,
+from . import (fa_balancing, fa_cams, fa_forces, fa_grading, fa_positions, fa_rod, fa_trains,
                fa_velocities)
 
 __all__ = ["PHRASES", "WORDS", "UNITS", "digits", "capitalized", "DIGITS", "DIRECTION"]
@@ -229,5 +229,5 @@ PHRASES: dict[str, str] = {
 # Each chapter's phrases and its figures' words, kept in a module of the chapter's own.
 for _chapter in (fa_positions, fa_velocities, fa_trains, fa_cams, fa_balancing, fa_forces):
     PHRASES.update(_chapter.PHRASES)
-for _chapter in (fa_trains, fa_balancing, fa_cams, fa_forces, fa_grading):
+for _chapter in (fa_trains, fa_balancing, fa_cams, fa_forces, fa_grading, fa_rod):
     WORDS.update(_chapter.WORDS)

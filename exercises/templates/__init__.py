@@ -19,6 +19,7 @@ KINDS = {
     "engine": "a single-cylinder engine's reciprocating masses, partly balanced",
     "loads": "a horizontal engine's gas load: pin forces and the crank's torque",
     "flywheel": "a turning moment as a formula: the flywheel that holds the speed",
+    "rod": "a connecting rod alone: its equivalent masses and correction couple",
     "class": "a folder of five students' drawings of the crank-shaper's polygons, to grade",
 }
 """Each kind of starting file, with what it holds."""
