@@ -30,6 +30,7 @@ from tarsim.exercises.catalog import load
 from tarsim.exercises.cli import cli
 from tarsim.exercises.forces.rod_file import parse_rod
 from tarsim.exercises.forces.rod_solution import solve_rod
+from tarsim.exercises.linkages.exercise_file import parse_exercise
 
 HERE = Path(__file__).parent / "reproducers"
 REL = 1e-12
@@ -70,6 +71,26 @@ def test_e3_rod_equivalent():
     assert q["correction_couple"] == pytest.approx(-133.4, rel=REL)  # clockwise, α's sense
     assert sol.checked["correction_couple"].value["sense"] == "cw"
     assert not sol.failures
+
+
+def test_e3b_ask_equivalent():
+    """A linkage file asking the rod's equivalent system is pointed to a [rod] file, and
+    told the forces it may ask, as asks.EFFORTS registers them."""
+    from tarsim.constructions.asks import EFFORTS
+
+    path = HERE / "e3b-ask-equivalent.toml"
+    with pytest.raises(InputError) as e:
+        parse_exercise(path.read_text(encoding="utf-8"), str(path))
+    message = str(e.value)
+    assert "cannot find 'equivalent_system'" in message and "[rod] file" in message
+    assert "equivalent_masses" in message and "\n" not in message
+    for name in ("correction_couple", "turning_moment", "piston_effort"):
+        assert name in message
+    # A name near no rod's ask still hears of the forces, after the kinematic names.
+    text = path.read_text(encoding="utf-8").replace('"equivalent_system"', '"torque_xyz"')
+    with pytest.raises(InputError, match=r'"stroke"; or a force it answers: piston_effort'):
+        parse_exercise(text, str(path))
+    assert all(name in EFFORTS for name in ("correction_couple", "turning_moment"))
 
 
 def test_one_mass_at_the_crank_pin_stands_the_other_beyond_g_toward_the_gudgeon_pin():

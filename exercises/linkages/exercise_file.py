@@ -278,12 +278,7 @@ def _read_ask(ask, mech: Mechanism, where: SourceMap, filename: str, exercise_id
         if q not in valid and why is not None:
             raise fail(f"cannot find '{q}' for this mechanism: {why}", "find")
         if q not in valid:
-            close = _closest(q, sorted(valid))
-            hint = (f"did you mean '{close}'?" if close
-                    else 'use "centres", "I<i><j>", "omega<n>", "alpha<n>", "V_<point>", '
-                         '"A_<point>", "V_<point>/<point>", "A_cor_<point>", "dof", '
-                         '"grashof", "range_<XY>", "time_ratio" or "stroke"')
-            raise fail(f"cannot find '{q}' for this mechanism; {hint}", "find")
+            raise fail(f"cannot find '{q}' for this mechanism; {_find_hint(q, valid)}", "find")
     methods = ask.get("methods", ["radius-rotation"])
     if not (isinstance(methods, list) and methods and all(isinstance(m, str) for m in methods)):
         raise fail('methods must be a list such as ["radius-rotation", "components"]', "methods")
@@ -465,6 +460,25 @@ def _fits(kind: str, text: str, per_cm: float, mech: Mechanism, fail) -> None:
 
 def _angle_text(angle: float, deg: bool) -> str:
     return (f"{math.degrees(angle):.6g}°" if deg else f"{angle:.6g} rad").replace("-", "−")
+
+
+def _find_hint(q: str, valid: set[str]) -> str:
+    """What to ask instead of ``q``: the valid name nearest it; else the kinematic names,
+    and the forces this mechanism answers as :data:`~tarsim.constructions.asks.EFFORTS`
+    registers them; and a rod's equivalent system where ``q`` is near a [rod] file's ask."""
+    from ..forces.rod_file import ROD_ASKS
+
+    close = _closest(q, sorted(valid))
+    if close:
+        return f"did you mean '{close}'?"
+    forces = [e for e in A.EFFORTS if e in valid]
+    also = f"; or a force it answers: {', '.join(forces)}" if forces else ""
+    if difflib.get_close_matches(q, ROD_ASKS, n=1, cutoff=0.5):
+        return (f"a connecting rod given alone is a [rod] file (tarsim new rod), which asks "
+                f"{', '.join(ROD_ASKS)}{also}")
+    return ('use "centres", "I<i><j>", "omega<n>", "alpha<n>", "V_<point>", "A_<point>", '
+            '"V_<point>/<point>", "A_cor_<point>", "dof", "grashof", "range_<XY>", '
+            f'"time_ratio" or "stroke"{also}')
 
 
 def _closest(got: str, valid) -> str | None:
