@@ -175,3 +175,20 @@ def test_f3_engine_and_machine(tmp_path):
     for label in ("نمودار گشتاور اضافی", "گشتاور اضافی", "گشتاور چرخشی موتور",
                   "گشتاور مقاوم ماشین"):
         assert label in svgs["fa"]
+
+
+def test_a_formula_repeats_over_its_cycle():
+    """T = 1000 + 500 sin(θ/2) given over a turn repeats from there: it is least, 1000 N·m,
+    at θ = 0 (the cycle's end), not below it just past 360° where sin(θ/2) would turn
+    negative; the shaft's greatest retardation is (T_mean − 1000)/I = (1000/π)/I there, and
+    the reference, reading the same repeating diagram, agrees."""
+    sol = solve_flywheel(parse_flywheel('[units]\nspeed = "rpm"\n[turning_moment]\n'
+                                        'torque = "1000 + 500*sin(theta/2)"\n[flywheel]\n'
+                                        'speed = 300\nspeed_fluctuation = 0.02\n'))
+    q = sol.checked
+    inertia = q["inertia"].value["value"]
+    # T's least is exact (T(0) = 1000 to the last bit); the mean and I to QUADRATURE
+    assert q["greatest_retardation"].value["value"] == pytest.approx(1000 / math.pi / inertia,
+                                                                      rel=QUADRATURE)
+    assert q["greatest_retardation"].value["angle_deg"] == [0.0]
+    assert sol.failures == []

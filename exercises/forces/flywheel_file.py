@@ -126,11 +126,16 @@ class FlywheelExercise:
     @property
     def diagram(self) -> Diagram | None:
         """T(θ) over the cycle; None for a diagram given by its areas."""
+        cycle = self.cycle
+        # A formula is the diagram over one cycle, repeated: sin(θ/2) over a turn is not
+        # periodic by itself, and a search about θ = 0 must find the cycle's end there.
         if self.machine is not None:
             engine, machine, mean = self.formula, self.machine, self.machine_mean
-            return Diagram(lambda theta: engine(theta) - machine(theta) + mean, self.cycle)
+            return Diagram(lambda theta: engine(theta % cycle) - machine(theta % cycle) + mean,
+                           cycle)
         if self.formula is not None:
-            return Diagram(self.formula, self.cycle)
+            formula = self.formula
+            return Diagram(lambda theta: formula(theta % cycle), cycle)
         if self.points:
             return Diagram(_straight(self.points, self.cycle), self.cycle,
                            tuple(t for t, _ in self.points))
