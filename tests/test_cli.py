@@ -164,7 +164,8 @@ def test_bad_file_is_one_line_with_file_and_line(mech_file, tmp_path, edit, mess
                         "oscillating-roller, roller-harmonic-cycloidal, tangent-cam-roller, "
                         "valve-unequal-acceleration, bearing-forces, four-mass-shaft, "
                         "four-masses-one-plane, inline-four, inline-three, locomotive, "
-                        "notes-example-1, radial-three, single-cylinder-balance-mass, "
+                        "notes-example-1, outside-locomotive, radial-three, "
+                        "single-cylinder-balance-mass, "
                         "single-cylinder, "
                         "three-masses-between, two-stroke-four, unknown-angles, "
                         "unknown-plane-and-angle, unknown-planes, v-twin, weights-one-plane, "
@@ -311,7 +312,8 @@ def test_list_shows_the_bundled_examples():
                    "oscillating-roller", "roller-harmonic-cycloidal", "tangent-cam-roller",
                    "valve-unequal-acceleration", "bearing-forces", "four-mass-shaft",
                    "four-masses-one-plane", "inline-four", "inline-three", "locomotive",
-                   "notes-example-1", "radial-three", "single-cylinder-balance-mass",
+                   "notes-example-1", "outside-locomotive", "radial-three",
+                   "single-cylinder-balance-mass",
                    "single-cylinder",
                    "three-masses-between", "two-stroke-four", "unknown-angles",
                    "unknown-plane-and-angle", "unknown-planes", "v-twin",

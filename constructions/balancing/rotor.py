@@ -79,7 +79,9 @@ class Engine:
     crank: float
     rod: float | None
     reciprocating: float
-    speed: float
+    speed: float | None
+    """The speed (rad/s); None where the file gives none and asks only what needs none (a
+    locomotive's balance masses), or the lift speed found where ``at_lift``."""
     balanced: float = 0.0
     at: float = 0.0
     revolving: float = 0.0
@@ -102,6 +104,9 @@ class Engine:
     """The order the cylinders fire in, where the file gives the cranks by it (empty where
     it gives them one by one), and the engine's ``strokes`` a cycle (2 or 4)."""
     strokes: int = 0
+    at_lift: bool = False
+    """Whether ``speed`` is the lift speed found, the file giving none: a locomotive's
+    forces and couples are then asked at the speed at which its wheels lift."""
     radial: int = 0
     """A radial engine's number of cylinders, their lines evenly round the crank shaft and
     every rod on one crank: 0 for cylinders in line or a V."""

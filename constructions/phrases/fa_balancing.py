@@ -239,6 +239,28 @@ WORDS: dict[str, str] = {
         "بیشترین نیروی ثانویه: {most} N، در θ = ۰°، ۹۰°، ۱۸۰° و ۲۷۰°",
     "{kind}: unbalanced, {left} {unit} at most (the vector sum: {value} {unit})":
         "{kind}: نامیزان، حداکثر {left} {unit} (جمع برداری: {value} {unit})",
+    "{kind}: unbalanced, {left} {unit} × ω² at most (no speed given)":
+        "{kind}: نامیزان، حداکثر {left} {unit} × ω² (سرعتی داده نشده)",
+    "no speed is given: every force and couple below is at the lift speed found, ω = {speed} "
+    "rad/s":
+        "سرعتی داده نشده است: همهٔ نیروها و کوپل‌های زیر در سرعتِ یافته‌شدهٔ بلند شدن چرخ‌اند، "
+        "ω = {speed} rad/s",
+    "no speed is given: the balance masses need none (m·r); each force and couple is given × "
+    "ω² (kg·m, kg·m²), as a rotor's resultant is, and none in N":
+        "سرعتی داده نشده است: جرم‌های متعادل‌کننده به آن نیازی ندارند (m·r)؛ هر نیرو و کوپل "
+        "مانند برآیند یک روتور × ω² داده می‌شود (kg·m، kg·m²) و هیچ‌کدام بر حسب N نیست",
+    "ω = {speed} rad/s (read as rad/s; write [units] speed = \"rpm\" for rpm)":
+        "ω = {speed} rad/s (بر حسب rad/s خوانده شد؛ برای rpm بنویسید [units] speed = \"rpm\")",
+    "with {share} of the reciprocating mass balanced, {left} of it is left; no speed is given, "
+    "so the variation of tractive force, the swaying couple and the hammer blow (each m·r·ω²) "
+    "are left out: give speed = … or road_speed = … for them":
+        "با متعادل کردن {share} از جرم رفت‌وبرگشتی، {left} آن باقی می‌ماند؛ سرعتی داده نشده "
+        "است، پس تغییر نیروی کشش، کوپل نوسانی و ضربهٔ چکشی (هر یک m·r·ω²) آورده نمی‌شوند: "
+        "برای آن‌ها speed = … یا road_speed = … بدهید",
+    "at the lift speed found, ω = {speed} rad/s":
+        "در سرعتِ یافته‌شدهٔ بلند شدن چرخ، ω = {speed} rad/s",
+    "no speed given: the closing side is m·r (× ω²)":
+        "سرعتی داده نشده: ضلع بستن m·r است (× ω²)",
 }
 
 PHRASES: dict[str, str] = {

@@ -67,8 +67,10 @@ def _engine_figures(s: BalanceSolution) -> dict[str, Figure]:
     out = {}
     p = s.engine_polygons
     for kind in engine_kinds(e):
-        left = p.left(kind) * e.speed ** 2
-        word = "N·m" if kind.endswith("couple") else "N"
+        # with no speed given the polygon's own m·r (× ω²) is what is left
+        left = p.left(kind) * (1.0 if e.speed is None else e.speed ** 2)
+        word = ("N·m" if kind.endswith("couple") else "N") if e.speed is not None else (
+            "kg·m²" if kind.endswith("couple") else "kg·m")
         reading = (words("closed: balanced"), "", "") if kind in p.balanced else (
             words("{size} {unit} unbalanced, greatest at θ₁ = {angle}°",
                   # four figures, and whole newtons past 9999 rather than an exponent
@@ -79,10 +81,19 @@ def _engine_figures(s: BalanceSolution) -> dict[str, Figure]:
             p.construction, p.tips[kind], p.closing[kind], f"{ex.name}: {words(kind)}",
             "kg·m²" if kind.endswith("couple") else "kg·m", reading,
             notes=[words("couples about the central plane; secondary vectors along the "
-                         "cranks at 2θᵢ, each m·r/n")],
+                         "cranks at 2θᵢ, each m·r/n")] + _speed_notes(e),
             names={str(i): words("cyl. {number}", number=str(i)) for i in
                    range(1, len(e.cranks) + 1)})
     return out
+
+def _speed_notes(e) -> list[str]:
+    """The speed a polygon's reading is taken at, where the file gives none: the lift speed
+    found, or none (the reading then m·r, × ω²)."""
+    if e.at_lift:
+        return [words("at the lift speed found, ω = {speed} rad/s",
+                      speed=numerals(f"{e.speed:.6g}"))]
+    return [words("no speed given: the closing side is m·r (× ω²)")] if e.speed is None else []
+
 
 def _rotor_figures(s: BalanceSolution, unit: str, metre: float) -> dict[str, Figure]:
     ex, r, b = s.exercise, s.exercise.rotor, s.balance

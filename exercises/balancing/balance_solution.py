@@ -29,7 +29,8 @@ from ..solution_folder import ChapterFiles
 from ..worked_document import Bullets, Section, said_steps, title
 from .balance_figures import angle_deg, balance_figures
 from .engine_angle import at_checked, at_lines, at_misses
-from .engine_balance import left_checked, left_lines, left_misses
+from .engine_balance import left_checked, left_lines, left_misses, lift_speed
+from .engine_speed import speed_lines
 from .firing_order import firing_line
 from .single_cylinder import cylinder_balance, cylinder_checked, cylinder_lines
 from .vee_engine import vee_checked, vee_lines, vee_misses
@@ -48,6 +49,12 @@ AGREE = 1e-12
 """How near (relative to the sizes of the vectors summed, :meth:`BalanceSolution.scales`) a
 closing side must come to its sum: a few roundings of the vectors laid off, for up to a
 thousand of them."""
+
+
+def _per_omega(e):
+    """The engine, turning at 1 rad/s where no speed is given: its forces are then its
+    polygons' m·r (kg·m), what the checks compare free of ω."""
+    return e if e.speed is not None else replace(e, speed=1.0)
 
 
 def _quiet(x: float, noise: float) -> float:
@@ -135,8 +142,8 @@ class BalanceSolution(ChapterFiles):
                 out.append(("the balanced rotor", miss))
         if self.engine_polygons is not None:
             e = self.exercise.engine
-            sums = engine_sums(e)
-            w2 = e.speed ** 2
+            sums = engine_sums(_per_omega(e))
+            w2 = _per_omega(e).speed ** 2
             values = dict(zip(engine_kinds(e), (sums.primary_force, sums.primary_couple,
                                                 sums.secondary_force, sums.secondary_couple)))
             size = e.reciprocating * e.crank * max(1.0, max(abs(p) for p in e.planes))
@@ -232,7 +239,7 @@ class BalanceSolution(ChapterFiles):
         """What the command line prints, and steps.md lists, in the language spoken."""
         return ([words("angles are measured clockwise from the reference radius, as the file "
                        "gives them, and every angle found is read the same way")]
-                if self.exercise.clockwise else []) + self._lines()
+                if self.exercise.clockwise else []) + speed_lines(self.exercise) + self._lines()
 
     def _lines(self) -> list[str]:
         ex = self.exercise
@@ -335,18 +342,24 @@ class BalanceSolution(ChapterFiles):
         e = self.exercise.engine
         if len(e.cranks) == 1:
             return self._cylinder_lines(e)
-        sums = engine_sums(e)
+        sums = engine_sums(_per_omega(e))
         out = [line for line in (firing_line(e),) if line]
         for kind, value in zip(engine_kinds(e), (sums.primary_force, sums.primary_couple,
                                                  sums.secondary_force, sums.secondary_couple)):
             unit = "N·m" if kind.endswith("couple") else "N"
-            left = self.engine_polygons.left(kind) * e.speed ** 2
             balanced = kind in self.engine_polygons.balanced
-            out.append(words("{kind}: balanced (its polygon closes)", kind=words(kind))
-                       if balanced else
-                       words("{kind}: unbalanced, {left} {unit} at most (the vector sum: "
-                             "{value} {unit})", kind=words(kind), left=numeral(left), unit=unit,
-                             value=numeral(value)))
+            if balanced:
+                out.append(words("{kind}: balanced (its polygon closes)", kind=words(kind)))
+            elif e.speed is None:
+                out.append(words("{kind}: unbalanced, {left} {unit} × ω² at most (no speed "
+                                 "given)", kind=words(kind),
+                                 left=numeral(self.engine_polygons.left(kind)),
+                                 unit="kg·m²" if kind.endswith("couple") else "kg·m"))
+            else:
+                out.append(words("{kind}: unbalanced, {left} {unit} at most (the vector sum: "
+                                 "{value} {unit})", kind=words(kind),
+                                 left=numeral(self.engine_polygons.left(kind) * e.speed ** 2),
+                                 unit=unit, value=numeral(value)))
             if not balanced:
                 out.append(words("{kind} greatest with crank 1 at {angle}° from the i.d.c., "
                                  "and every {every}° on", kind=words(kind),
@@ -385,6 +398,12 @@ class BalanceSolution(ChapterFiles):
         cylinder's, read off the closed form, stand alone). Where the file measures its
         angles clockwise, each quantity with an angle says so, ``"sense": "cw"``."""
         q = self._checked()
+        e = self.exercise.engine
+        if e is not None and e.at_lift:     # every force and couple is at the lift speed
+            forces = {kind.replace(" ", "_") for kind in engine_kinds(e)}
+            q = {k: replace(c, value={**c.value, "at_lift_speed": e.speed})
+                 if k in forces or c.value.get("unit") in ("N", "N·m") else c
+                 for k, c in q.items()}
         if not self.exercise.clockwise:
             return q
         return {k: replace(c, value={**c.value, "sense": "cw"})
@@ -428,10 +447,12 @@ class BalanceSolution(ChapterFiles):
         elif len(ex.engine.cranks) == 1:
             q |= cylinder_checked(ex.engine)
         else:
-            sums = engine_sums(ex.engine)
+            sums = engine_sums(_per_omega(ex.engine))
             for kind, value in zip(engine_kinds(ex.engine), (
                     sums.primary_force, sums.primary_couple, sums.secondary_force,
                     sums.secondary_couple)):
+                if ex.engine.speed is None:     # m·r·ω²: none with no speed
+                    continue
                 q[kind.replace(" ", "_")] = Checked(
                     {"value": self.engine_polygons.left(kind) * ex.engine.speed ** 2},
                     {"value": value}, method=f"{kind} polygon")
@@ -478,5 +499,15 @@ class BalanceSolution(ChapterFiles):
 
 
 def solve_balance(ex: BalanceExercise) -> BalanceSolution:
-    """Solve a balancing exercise by its polygons."""
-    return BalanceSolution(ex)
+    """Solve a balancing exercise by its polygons. A locomotive given no speed but a dead
+    load on its wheels is solved again at the lift speed its balance masses give, as the
+    books ask its swaying couple "at the speed found"."""
+    s = BalanceSolution(ex)
+    e = ex.engine
+    if e is None or e.speed is not None or ex.rotor is None:
+        return s
+    lift = lift_speed(s)
+    if lift is None:
+        return s
+    return BalanceSolution(replace(ex, engine=replace(e, speed=lift, at_lift=True),
+                                   rotor=replace(ex.rotor, speed=lift)))

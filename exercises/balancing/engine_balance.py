@@ -21,7 +21,7 @@ from tarsim.constructions.reference.balance import engine_sums, two_planes
 from tarsim.constructions.balancing.rotor import Mass
 from ..checked import Checked
 
-__all__ = ["left_checked", "left_lines", "left_misses"]
+__all__ = ["left_checked", "left_lines", "left_misses", "lift_speed"]
 
 
 def _share(e) -> float:
@@ -32,6 +32,13 @@ def _share(e) -> float:
 def _blows(s) -> dict[str, tuple[float, float]]:
     """Each balancing plane's hammer blow (N): as drawn, and by the reference's two planes
     of c·m alone (one plane: its force alone)."""
+    w2 = s.exercise.engine.speed ** 2
+    return {name: (got * w2, want * w2) for name, (got, want) in _products(s).items()}
+
+
+def _products(s) -> dict[str, tuple[float, float]]:
+    """Each balancing plane's B·b (kg·m), the share of its product for c·m, free of ω: as
+    drawn, and by the reference's two planes of c·m alone (one plane: its force alone)."""
     e, r = s.exercise.engine, s.exercise.rotor
     alone = [Mass(m.name, e.balanced * e.reciprocating, m.radius, m.angle, m.plane)
              for m in r.masses]
@@ -41,9 +48,8 @@ def _blows(s) -> dict[str, tuple[float, float]]:
     else:
         want = {r.planes[0].name: (-math.fsum(m.mr[0] for m in alone),
                                    -math.fsum(m.mr[1] for m in alone))}
-    w2 = e.speed ** 2
-    return {p.name: (_share(e) * math.hypot(*s.balance.product(p.name)) * w2,
-                     math.hypot(*want[p.name]) * w2) for p in r.planes}
+    return {p.name: (_share(e) * math.hypot(*s.balance.product(p.name)),
+                     math.hypot(*want[p.name])) for p in r.planes}
 
 
 def left_checked(s) -> dict[str, Checked]:
@@ -51,7 +57,7 @@ def left_checked(s) -> dict[str, Checked]:
     ``hammer_blow_A``, where an in-line engine balances a fraction of its reciprocating
     mass (none where it balances only revolving masses)."""
     e = s.exercise.engine
-    if not e.balanced > 0:
+    if not e.balanced > 0 or e.speed is None:       # each is m·r·ω²: none with no speed
         return {}
     sums = engine_sums(e)
     left = 1.0 - e.balanced
@@ -75,9 +81,15 @@ def _lift(s) -> tuple[float, float] | None:
     e = s.exercise.engine
     if e.dead_load is None:
         return None
-    w2 = e.speed ** 2
-    got, want = (max(v[i] for v in _blows(s).values()) / w2 for i in (0, 1))
+    got, want = (max(v[i] for v in _products(s).values()) for i in (0, 1))
     return math.sqrt(e.dead_load / got), math.sqrt(e.dead_load / want)
+
+
+def lift_speed(s) -> float | None:
+    """The lift speed as drawn (rad/s), where the file gives a dead load on the wheels: a
+    locomotive with no speed given has its forces and couples asked at it."""
+    lift = _lift(s)
+    return None if lift is None else lift[0]
 
 
 def _lift_checked(s) -> dict[str, Checked]:
@@ -101,6 +113,12 @@ def left_lines(s) -> list[str]:
     if not e.balanced > 0:
         return []
     left = 1.0 - e.balanced
+    if e.speed is None:
+        return [words("with {share} of the reciprocating mass balanced, {left} of it is left; "
+                      "no speed is given, so the variation of tractive force, the swaying "
+                      "couple and the hammer blow (each m·r·ω²) are left out: give speed = … "
+                      "or road_speed = … for them", share=numeral(e.balanced, "g"),
+                      left=numeral(left, "g"))]
     w2 = e.speed ** 2
     p = s.engine_polygons
     out = [words("with {share} of the reciprocating mass balanced, {left} of it is left: the "
@@ -125,11 +143,11 @@ def left_lines(s) -> list[str]:
 
 
 def left_misses(s, agree: float) -> list[tuple[str, float]]:
-    """Each hammer blow drawn against the reference's, relative to the engine's whole
-    primary force m·ω²·r·N (the size its products round at)."""
+    """Each hammer blow's B·b drawn against the reference's, relative to the engine's whole
+    primary m·r·N (the size its products round at); free of ω, so checked with no speed."""
     e = s.exercise.engine
     if s.exercise.rotor is None or not e.balanced > 0:
         return []
-    size = e.reciprocating * e.crank * e.speed ** 2 * len(e.cranks)
+    size = e.reciprocating * e.crank * len(e.cranks)
     return [(f"hammer blow {name}", abs(got - want) / size)
-            for name, (got, want) in _blows(s).items() if abs(got - want) > agree * size]
+            for name, (got, want) in _products(s).items() if abs(got - want) > agree * size]

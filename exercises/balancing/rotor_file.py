@@ -63,6 +63,9 @@ class BalanceExercise:
     """A rotor balanced by its own masses, some of their data unknown ("?")."""
     length_unit: str = "m"
     speed_unit: str = "rad/s"
+    speed_default: bool = False
+    """The [engine] speed is given with no ``[units] speed``, so read as rad/s (the default),
+    and the lines say so."""
     names: tuple[tuple[str, str], ...] = ()
     """The rotor's or engine's name in other languages (``[names]``, :mod:`.names`)."""
     weights: bool = False
@@ -98,6 +101,8 @@ def parse_balance(text: str, filename: str = "<string>", exercise_id: str = "rot
     common = dict(id=exercise_id, name=_text(t, "name", exercise_id),
                   source=_text(t, "source", ""), description=_text(t, "description", ""),
                   length_unit=length, speed_unit=speed_unit,
+                  speed_default="speed" not in data.get("units", {}) and isinstance(
+                      data.get("engine"), dict) and "speed" in data["engine"],
                   names=read_names(data, t.where, filename), clockwise=_clockwise(t))
     if "engine" in data:
         refuse_weights(t, "in an engine's file")
@@ -234,9 +239,18 @@ def _wheel(t: Tables, one: dict, metre: float, cylinders: int
     return wheel, load
 
 
-def _engine_speed(t: Tables, one: dict, metre: float) -> float:
+def _engine_speed(t: Tables, one: dict, metre: float, optional: bool = False
+                  ) -> float | None:
     """An engine's speed in rad/s: its ``speed``, or, as the books give a locomotive's, its
-    ``road_speed`` (km/h) on driving wheels of ``wheel_diameter``: ω = v/(D/2)."""
+    ``road_speed`` (km/h) on driving wheels of ``wheel_diameter``: ω = v/(D/2). None where
+    neither is given and the engine is ``optional`` about it: a locomotive whose balance
+    masses (m·r, free of ω) and lift speed are asked, the speed being the unknown."""
+    if "speed" not in one and "road_speed" not in one:
+        if optional:
+            return None
+        raise t.fail("[engine] needs speed = … (rpm with [units] speed = \"rpm\", else rad/s) "
+                     "or road_speed = … (km/h) with wheel_diameter: its forces (N) and couples "
+                     "(N·m) are m·r·ω²", "engine", None)
     if "road_speed" not in one:           # a wheel_diameter alone sizes the wheels (a lift)
         return _speed(t, "engine")
     if "speed" in one:
@@ -413,7 +427,14 @@ def _engine(t: Tables, metre: float) -> tuple[Engine, OpenRotor | None]:
                      "balance planes: give the mass in [engine] alone", "cylinder",
                      "reciprocating", next(i for i, c in enumerate(cylinders)
                                            if "reciprocating" in c))
-    return Engine(cranks, planes, crank * metre, rod, mass, _engine_speed(t, one, metre),
+    # balance planes find their masses free of ω: a locomotive's speed may be the unknown
+    optional = len(cranks) > 1 and bool(t.entries("balance")) and not (vee or radial)
+    if optional and "at" in one and not {"speed", "road_speed", "dead_load"} & set(one):
+        raise t.fail("at asks the forces at a crank angle, m·r·ω², and no lift speed stands "
+                     "in for the speed: give speed = … or road_speed = … (km/h) with "
+                     "wheel_diameter", "engine", "at")
+    return Engine(cranks, planes, crank * metre, rod, mass,
+                  _engine_speed(t, one, metre, optional),
                   balanced, _degrees(t.number(one, "at", "engine", "the crank angle", 0, 0.0)),
                   revolving, None if radius is None else radius * metre, balance,
                   *_wheel(t, one, metre, len(cranks)), "at" in one,
