@@ -199,11 +199,10 @@ def _speed(t: Tables, table: str, needed: bool = True) -> float | None:
     one = _one(t, table)
     if "speed" not in one and not needed:
         return None
-    if "speed" not in one:
-        why = "the out-of-balance force (N) and couple (N·m) are m·r·ω²" if table == "rotor" \
-            else "or a locomotive's road_speed: its forces (N) and couples (N·m) are m·r·ω²"
+    if "speed" not in one:      # an engine's is asked for by _engine_speed, with road_speed
         raise t.fail(f"[{table}] needs speed = … (rpm with [units] speed = \"rpm\", else "
-                     f"rad/s){',' if table != 'rotor' else ':'} {why}", table, None)
+                     "rad/s): the out-of-balance force (N) and couple (N·m) are m·r·ω²",
+                     table, None)
     v = t.number(one, "speed", table, "the speed")
     if not v > 0:
         raise t.fail(f"the speed must be positive, got {v:g}", table, "speed")
