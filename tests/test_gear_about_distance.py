@@ -165,7 +165,7 @@ def test_circular_pitch_with_teeth_given():
                           "N2 = 105 or 112"]),
     ({"value": "3", "mesh": "centre_distance = { about = 600 }",
       "size": "circular_pitch = 25\nmodule = 8"}, ["module or its circular pitch, not both"]),
-    ({"mesh": "centre_distance = { abut = 600 }"}, ["centre_distance = { about = 600 }"]),
+    ({"mesh": "centre_distance = { abut = 600 }"}, ["centre_distance = { about = … }"]),
     ({"mesh": "centre_distance = { about = -600 }"}, ["must be positive"]),
     ({"size": "circular_pitch = 0"}, ["circular pitch must be positive"]),
     ({"size": 'circular_pitch = "x"'}, ["circular pitch must be a number"]),

@@ -59,8 +59,9 @@ class MeshTables:
         about = isinstance(v, dict)
         if about:
             if set(v) != {"about"}:
-                raise self.fail("an approximate centre distance says it: centre_distance = "
-                                "{ about = 600 }", "mesh", "centre_distance", i)
+                raise self.fail("an approximate centre distance is written centre_distance = "
+                                "{ about = … } (in the file's length unit)", "mesh",
+                                "centre_distance", i)
             v = v["about"]
         distance = self.exact(v, "a centre distance", "mesh", "centre_distance", i)
         if distance <= 0:
