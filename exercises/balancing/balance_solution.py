@@ -30,7 +30,7 @@ from ..worked_document import Bullets, Section, said_steps, title
 from .balance_figures import angle_deg, balance_figures
 from .engine_angle import at_checked, at_lines, at_misses
 from .engine_balance import left_checked, left_lines, left_misses, lift_speed
-from .engine_speed import speed_lines
+from .engine_speed import at_lift_tagged, per_omega, speed_lines
 from .firing_order import firing_line
 from .single_cylinder import cylinder_balance, cylinder_checked, cylinder_lines
 from .vee_engine import vee_checked, vee_lines, vee_misses
@@ -49,12 +49,6 @@ AGREE = 1e-12
 """How near (relative to the sizes of the vectors summed, :meth:`BalanceSolution.scales`) a
 closing side must come to its sum: a few roundings of the vectors laid off, for up to a
 thousand of them."""
-
-
-def _per_omega(e):
-    """The engine, turning at 1 rad/s where no speed is given: its forces are then its
-    polygons' m·r (kg·m), what the checks compare free of ω."""
-    return e if e.speed is not None else replace(e, speed=1.0)
 
 
 def _quiet(x: float, noise: float) -> float:
@@ -142,8 +136,8 @@ class BalanceSolution(ChapterFiles):
                 out.append(("the balanced rotor", miss))
         if self.engine_polygons is not None:
             e = self.exercise.engine
-            sums = engine_sums(_per_omega(e))
-            w2 = _per_omega(e).speed ** 2
+            sums = engine_sums(per_omega(e))
+            w2 = per_omega(e).speed ** 2
             values = dict(zip(engine_kinds(e), (sums.primary_force, sums.primary_couple,
                                                 sums.secondary_force, sums.secondary_couple)))
             size = e.reciprocating * e.crank * max(1.0, max(abs(p) for p in e.planes))
@@ -342,7 +336,7 @@ class BalanceSolution(ChapterFiles):
         e = self.exercise.engine
         if len(e.cranks) == 1:
             return self._cylinder_lines(e)
-        sums = engine_sums(_per_omega(e))
+        sums = engine_sums(per_omega(e))
         out = [line for line in (firing_line(e),) if line]
         for kind, value in zip(engine_kinds(e), (sums.primary_force, sums.primary_couple,
                                                  sums.secondary_force, sums.secondary_couple)):
@@ -398,12 +392,7 @@ class BalanceSolution(ChapterFiles):
         cylinder's, read off the closed form, stand alone). Where the file measures its
         angles clockwise, each quantity with an angle says so, ``"sense": "cw"``."""
         q = self._checked()
-        e = self.exercise.engine
-        if e is not None and e.at_lift:     # every force and couple is at the lift speed
-            forces = {kind.replace(" ", "_") for kind in engine_kinds(e)}
-            q = {k: replace(c, value={**c.value, "at_lift_speed": e.speed})
-                 if k in forces or c.value.get("unit") in ("N", "N·m") else c
-                 for k, c in q.items()}
+        q = at_lift_tagged(q, self.exercise.engine)
         if not self.exercise.clockwise:
             return q
         return {k: replace(c, value={**c.value, "sense": "cw"})
@@ -447,7 +436,7 @@ class BalanceSolution(ChapterFiles):
         elif len(ex.engine.cranks) == 1:
             q |= cylinder_checked(ex.engine)
         else:
-            sums = engine_sums(_per_omega(ex.engine))
+            sums = engine_sums(per_omega(ex.engine))
             for kind, value in zip(engine_kinds(ex.engine), (
                     sums.primary_force, sums.primary_couple, sums.secondary_force,
                     sums.secondary_couple)):

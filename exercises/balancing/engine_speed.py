@@ -10,9 +10,29 @@ that speed, and the lines say so first.
 
 from __future__ import annotations
 
-from tarsim.constructions.narration import numeral, words
+from dataclasses import replace
 
-__all__ = ["speed_lines"]
+from tarsim.constructions.balancing.engine import engine_kinds
+from tarsim.constructions.narration import numeral, words
+from ..checked import Checked
+
+__all__ = ["at_lift_tagged", "per_omega", "speed_lines"]
+
+
+def per_omega(e):
+    """The engine, turning at 1 rad/s where no speed is given: its forces are then its
+    polygons' m·r (kg·m), what the checks compare free of ω."""
+    return e if e.speed is not None else replace(e, speed=1.0)
+
+
+def at_lift_tagged(q: dict[str, Checked], e) -> dict[str, Checked]:
+    """results.json's quantities, each force and couple (N, N·m) marked ``at_lift_speed``
+    (rad/s) where the engine's speed is the lift speed found, the file giving none."""
+    if e is None or not e.at_lift:
+        return q
+    forces = {kind.replace(" ", "_") for kind in engine_kinds(e)}
+    return {k: replace(c, value={**c.value, "at_lift_speed": e.speed})
+            if k in forces or c.value.get("unit") in ("N", "N·m") else c for k, c in q.items()}
 
 
 def speed_lines(ex) -> list[str]:

@@ -22,6 +22,7 @@ from ..names import named_in, read_names, renamed_field
 from ..table_file import SPEEDS, Tables
 from .engine_unknowns import cylinder_masses, has_unknowns, primary_balance
 from .firing_order import firing_cranks, read_firing_order
+from .locomotive_file import engine_speed, read_wheel
 from .one_crank_file import read_radial, read_vee
 from .open_rotor_file import UNKNOWN, read_open_rotor
 from .rotor_weights import GRAVITY, mass_or_weight, refuse_weights
@@ -219,54 +220,6 @@ def _share(t: Tables, one: dict) -> float:
     return t.number(one, "balanced", "engine", "the balanced fraction", 0, 0.0)
 
 
-def _wheel(t: Tables, one: dict, metre: float, cylinders: int
-           ) -> tuple[float | None, float | None]:
-    """A locomotive's wheel diameter (m) and the dead load on each driving wheel (N), where
-    the file gives them; the load only where balance masses in the wheels strike the rails."""
-    wheel = t.number(one, "wheel_diameter", "engine", "the wheels' diameter") * metre \
-        if "wheel_diameter" in one else None
-    if "dead_load" not in one:
-        return wheel, None
-    load = t.number(one, "dead_load", "engine", "the dead load on a wheel")
-    if not load > 0:
-        raise t.fail(f"the dead load on a wheel must be positive, got {load:g} N", "engine",
-                     "dead_load")
-    if cylinders < 2 or not t.entries("balance") or "balanced" not in one:
-        raise t.fail("dead_load is what a hammer blow lifts a wheel against: it goes with "
-                     "[[balance]] planes (the wheels) and a fraction balanced", "engine",
-                     "dead_load")
-    return wheel, load
-
-
-def _engine_speed(t: Tables, one: dict, metre: float, optional: bool = False
-                  ) -> float | None:
-    """An engine's speed in rad/s: its ``speed``, or, as the books give a locomotive's, its
-    ``road_speed`` (km/h) on driving wheels of ``wheel_diameter``: ω = v/(D/2). None where
-    neither is given and the engine is ``optional`` about it: a locomotive whose balance
-    masses (m·r, free of ω) and lift speed are asked, the speed being the unknown."""
-    if "speed" not in one and "road_speed" not in one:
-        if optional:
-            return None
-        raise t.fail("[engine] needs speed = … (rpm with [units] speed = \"rpm\", else rad/s) "
-                     "or road_speed = … (km/h) with wheel_diameter: its forces (N) and couples "
-                     "(N·m) are m·r·ω²", "engine", None)
-    if "road_speed" not in one:           # a wheel_diameter alone sizes the wheels (a lift)
-        return _speed(t, "engine")
-    if "speed" in one:
-        raise t.fail("a locomotive's speed is speed = …, or road_speed = … (km/h) with "
-                     "wheel_diameter = …, not both", "engine", "road_speed")
-    if "wheel_diameter" not in one:
-        raise t.fail("road_speed (km/h) gives the cranks' speed on the driving wheels: give "
-                     "their wheel_diameter with it", "engine", "road_speed")
-    v = t.number(one, "road_speed", "engine", "the road speed")
-    d = t.number(one, "wheel_diameter", "engine", "the wheels' diameter")
-    if not (v > 0 and d > 0):
-        key = "road_speed" if not v > 0 else "wheel_diameter"
-        raise t.fail(f"the {key.replace('_', ' ')} must be positive, got "
-                     f"{v if key == 'road_speed' else d:g}", "engine", key)
-    return v / 3.6 / (d * metre / 2)
-
-
 def _text(t: Tables, key: str, default: str) -> str:
     """A free text of the file (its name, source or description): a string with no control
     character in it."""
@@ -395,7 +348,7 @@ def _engine(t: Tables, metre: float) -> tuple[Engine, OpenRotor | None]:
     masses = cylinder_masses(t, one, cylinders)
     if has_unknowns(cylinders):
         primary = primary_balance(t, one, cylinders, masses, crank * metre, metre,
-                                  _engine_speed(t, one, metre))
+                                  engine_speed(t, one, metre, _speed))
         found = close_rotor(primary).parts
         each = tuple(found[p.name].mass for p in primary.parts)
         return Engine(tuple(found[p.name].angle for p in primary.parts),
@@ -433,10 +386,10 @@ def _engine(t: Tables, metre: float) -> tuple[Engine, OpenRotor | None]:
                      "in for the speed: give speed = … or road_speed = … (km/h) with "
                      "wheel_diameter", "engine", "at")
     return Engine(cranks, planes, crank * metre, rod, mass,
-                  _engine_speed(t, one, metre, optional),
+                  engine_speed(t, one, metre, _speed, optional),
                   balanced, _degrees(t.number(one, "at", "engine", "the crank angle", 0, 0.0)),
                   revolving, None if radius is None else radius * metre, balance,
-                  *_wheel(t, one, metre, len(cranks)), "at" in one,
+                  *read_wheel(t, one, metre, len(cranks)), "at" in one,
                   tuple(masses) if len(set(masses)) > 1 else (),
                   vee, *(firing or ((), 0)), radial=radial), None
 
