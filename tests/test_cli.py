@@ -171,7 +171,7 @@ def test_bad_file_is_one_line_with_file_and_line(mech_file, tmp_path, edit, mess
                         "unknown-plane-and-angle, unknown-planes, v-twin, weights-one-plane, "
                         "engine-harmonic-torque, "
                         "petrol-engine-areas, punch-sheared-area, punching-press, "
-                        "single-cylinder-table\n"),
+                        "single-cylinder-table, rod-equivalent-masses\n"),
     ("missing.toml", "Error: no such file 'missing.toml'\n"),
 ])
 def test_unknown_source_is_one_line(source, message):
@@ -320,7 +320,7 @@ def test_list_shows_the_bundled_examples():
                    "weights-one-plane",
                    "engine-harmonic-torque",
                    "petrol-engine-areas", "punch-sheared-area", "punching-press",
-                   "single-cylinder-table"]
+                   "single-cylinder-table", "rod-equivalent-masses"]
     assert "Four-bar crank-rocker" in result.stdout
 
 

@@ -15,7 +15,7 @@ class Flywheel(Chapter):
     """The flywheel chapter (see :class:`~..chapters.Chapter`)."""
 
     key = "forces"
-    kind = "a flywheel exercise"
+    kind = "a flywheel or connecting rod exercise"
     folders = ("flywheel", "rod")
     tables = ("turning_moment", "resisting_torque", "punch", "flywheel", "rod")
     no_angle = ("a flywheel or connecting rod exercise has no input angle: leave out --angle "

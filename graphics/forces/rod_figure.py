@@ -112,7 +112,8 @@ def rod_figure(sol: Any) -> Figure:
             # then turns "l1 = 120 mm" about
             fig.add(Text((mid[0], mid[1] - 2.0), measure, 2.8, italic=False))
             fig.add(Text((mid[0], mid[1] + 2.8), symbol, 3.0))
-    fig.add(Path(((g, 3.0), (g, y + 3.0)), "reference"))
+    if rows:
+        fig.add(Path(((g, 3.0), (g, y + 3.0)), "reference"))
     lines = [words("m = {mass} kg, k = {k}", mass=numeral(rod.mass, "g"),
                    k=length(math.sqrt(rod.inertia / rod.mass)))
              if rod.inertia > 0 else words("m = {mass} kg", mass=numeral(rod.mass, "g"))]
