@@ -29,6 +29,7 @@ from tarsim.constructions.narration import Phrase
 from tarsim.constructions.record import Construction, Panel, Role, Slice, slice
 from tarsim.constructions.linkages.velocity_polygon import draw_velocity_polygon
 from tarsim.graphics.figure import Circle, Path, Text
+from tarsim.graphics.linkages.lanes import LANE
 from tarsim.graphics.linkages.polygon_panel import POLYGON_BOX, draw_polygon_panel
 from tarsim.graphics.svg import to_svg
 from tarsim.graphics.typeset import typeset
@@ -277,12 +278,14 @@ def test_every_vector_measures_true_and_its_head_is_at_its_tip(which):
             10.0 * step.output.length / scale / mech.units.metres / n, rel=1e-9)
         u = ((b[0] - a[0]) / math.dist(a, b), (b[1] - a[1]) / math.dist(a, b))
         # A head has its point at the tip and its base behind it, toward the tail
-        # (several arrows may end at one tip: one of them is this one's).
+        # (several arrows may end at one tip: one of them is this one's), or at the tip
+        # moved into a lane square to the arrow (the Coriolis component at B, along A_B4).
+        tips = [(b[0] - k * LANE * u[1], b[1] + k * LANE * u[0]) for k in range(-4, 5)]
         ok = []
-        for head in (h for h in heads if math.dist(h[0], b) < PAPER):
+        for head, tip in ((h, t) for h in heads for t in tips if math.dist(h[0], t) < PAPER):
             back = ((head[1][0] + head[3][0]) / 2, (head[1][1] + head[3][1]) / 2)
-            ok.append((b[0] - back[0]) * u[0] + (b[1] - back[1]) * u[1] > 1.0
-                      and abs((b[0] - back[0]) * u[1] - (b[1] - back[1]) * u[0]) < 1e-6)
+            ok.append((tip[0] - back[0]) * u[0] + (tip[1] - back[1]) * u[1] > 1.0
+                      and abs((tip[0] - back[0]) * u[1] - (tip[1] - back[1]) * u[0]) < 1e-6)
         assert any(ok), step.id
 
 

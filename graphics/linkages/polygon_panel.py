@@ -43,6 +43,7 @@ from tarsim.constructions.record import Panel, Ref, Role, Slice, Step
 
 from ..figure import Circle, Figure, Path, View, arc_points, span_line
 from ..labels import LabelPlacer
+from .lanes import lanes, moved
 from .polygon_labels import CROSSABLE, HERE, ZERO, label_points, label_vectors, number_lines
 from ..scales import draw_caption, nice_per_cm
 from ..symbols import draw_arrow, unit
@@ -61,7 +62,6 @@ _LONE = 10.0        # a line through one point runs this far either side, mm
 _DOT = 1.0          # the pole's dot's radius, mm: it shows among the result arrows met there
 _ROOM = 16.0        # labels stay within this much of the polygon, mm
 _SAME = 1e-9        # relative slack for "lies on" and "coincides"
-_LANE = 3.0         # mm between collinear arrows drawn side by side (:func:`_lanes`)
 _HEAVY = {"head": 3.2, "width": 1.6}    # an absolute vector's arrowhead, mm
 _LIGHT = {"head": 2.8, "width": 1.4}    # a component's
 
@@ -279,23 +279,18 @@ class _PolygonPanel:
 
     def vectors(self) -> list[tuple[Step, tuple[float, float], tuple[float, float]]]:
         """Each segment step with its paper tail and tip as drawn: in its lane
-        (:func:`_lanes`), beside the points it joins if arrows overlap there."""
+        (:func:`.lanes.lanes`), beside the points it joins if arrows overlap there."""
         return [(s, *self.drawn[s.id][:2]) for s in self.steps if s.id in self.drawn]
 
     def lay_vectors(self) -> None:
-        """Give each vector its lane: collinear arrows that would cover one another are
-        drawn side by side, each true in length and direction, a leader from each end it
-        leaves to the point it stands for."""
+        """Give each vector its lane: arrows that would cover one another (collinear, or a
+        short one along a longer) are drawn side by side, each true in length and
+        direction, a leader from each end it leaves to the point it stands for."""
         steps = [s for s in self.steps if isinstance(s.output, g.Segment)]
         ends = [(self.view(s.output.start.xy), self.view(s.output.end.xy)) for s in steps]
-        lanes = _lanes(ends, [s.role is not Role.CONSTRUCTION for s in steps])
-        self.drawn = {}
-        for s, (a, b), lane in zip(steps, ends, lanes):
-            n = (0.0, 0.0)
-            if lane and math.dist(a, b) >= ZERO:
-                u = unit((b[0] - a[0], b[1] - a[1]))
-                n = (-u[1] * lane * _LANE, u[0] * lane * _LANE)
-            self.drawn[s.id] = ((a[0] + n[0], a[1] + n[1]), (b[0] + n[0], b[1] + n[1]), a, b)
+        drawn_in = lanes(ends, [s.role is not Role.CONSTRUCTION for s in steps])
+        self.drawn = {s.id: (*moved(seg, lane), *seg)
+                      for s, seg, lane in zip(steps, ends, drawn_in)}
 
     def draw_vectors(self) -> None:
         """Arrows with the head at the tip: absolute vectors heavy, components light; one
@@ -345,51 +340,6 @@ class _PolygonPanel:
             if step.role is Role.GIVEN or not any(math.dist(at, e) <= HERE for e in ends):
                 self.fig.add(Circle(at, _DOT, "dot", steps=(step.id,)))
                 self.placer.block(SPoint(at).buffer(_DOT + 0.5))
-
-
-def _lanes(ends: list[tuple[tuple[float, float], tuple[float, float]]],
-           heavy: list[bool]) -> list[int]:
-    """The lane of each arrow ``(tail, tip)``: 0 on its points, ±1, ±2 … :data:`_LANE` mm to
-    either side.
-
-    Two arrows on one carrier clash where they overlap, unless one lies within the other
-    from a common tail and the same way (V_A₄ within V_B₄, both from o_v, a textbook's
-    own drawing) or they are one and the same arrow; and where they meet head to head,
-    their heads stacked on one point. A polygon that collapses onto a line
-    (the crank-shaper's at θ₂ = 90°) has arrows running back over one another with heads
-    meeting: each goes to the nearest lane where it clashes with none, the absolute
-    vectors (``heavy``) and the longest placed first, so they keep to their points.
-
-    >>> _lanes([((0, 0), (0, 90)), ((0, 90), (0, 24)), ((0, 0), (0, 30)), ((0, 31), (0, 0))],
-    ...        [True, False, True, False])
-    [0, 1, 0, -1]
-    """
-    def clash(i: int, j: int) -> bool:
-        (a, b), (p, q) = ends[i], ends[j]
-        n = math.dist(a, b)
-        if n < ZERO or math.dist(p, q) < ZERO:
-            return False
-        d = ((b[0] - a[0]) / n, (b[1] - a[1]) / n)
-        if any(abs((e[0] - a[0]) * d[1] - (e[1] - a[1]) * d[0]) > 0.05 for e in (p, q)):
-            return False                                  # not on one carrier
-        s, t = (((e[0] - a[0]) * d[0] + (e[1] - a[1]) * d[1]) for e in (p, q))
-        if math.dist(b, q) < 0.05 and t < s:
-            return True                                   # head to head: the heads meet
-        if min(max(s, t), n) - max(min(s, t), 0.0) <= 0.5:
-            return False                                  # end to end, or apart
-        same_way = t > s
-        if same_way and (abs(s) < 0.05 or (math.dist(a, p) < 0.05 and math.dist(b, q) < 0.05)):
-            return False                                  # nested from one tail, or one arrow
-        return True
-
-    order = sorted(range(len(ends)), key=lambda i: (not heavy[i], -math.dist(*ends[i])))
-    lane = [0] * len(ends)
-    for k, i in enumerate(order):
-        for candidate in (0, 1, -1, 2, -2, 3, -3, 4, -4):
-            if not any(lane[j] == candidate and clash(i, j) for j in order[:k]):
-                lane[i] = candidate
-                break
-    return lane
 
 
 def _under_dot(a: tuple[float, float], b: tuple[float, float], dot: tuple[float, float], *,
