@@ -31,7 +31,7 @@ __all__ = ["cli"]
 def cli(verbose):
     """Graphical kinematics of planar mechanisms, drawn as textbook figures.
 
-    FILE is a mechanism or gear-train file (TOML, see the README) or the id
+    FILE is an exercise file (TOML, see docs/howto/) or the id
     of a bundled example; `tarsim list` shows the bundled ones.
 
     \b
@@ -126,9 +126,9 @@ def check(source, angle):
 def solve(source, out_dir, angle, pdf, formats, dpi, paper, allow_undercut, lang, digits):
     """Solve an exercise by graphical construction and check every number.
 
-    FILE is a mechanism file whose [ask] table names what to find (see the
-    README), or a bundled id. Instant centres come from inspection and
-    Kennedy's theorem (the circle diagram); angular velocities from the
+    FILE is a mechanism file whose [ask] table names what to find (see
+    docs/howto/linkages.md), or a bundled id. Instant centres come from
+    inspection and Kennedy's theorem (the circle diagram); angular velocities from the
     centres; point velocities by radius rotation, parallel lines or
     components; relative velocities, accelerations, α and Coriolis
     components from the velocity and acceleration polygons. Each

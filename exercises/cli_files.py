@@ -65,8 +65,8 @@ def new(kind, output, force):
     """Write a commented starting file of KIND that solves as it stands.
 
     Solve it at once to see what it gives, then change its numbers and
-    what it asks; each key is explained beside it, and the README's
-    chapter sections give the rest.
+    what it asks; each key is explained beside it, and the guides in
+    docs/howto/ give the rest.
 
     \b
     KIND is one of:

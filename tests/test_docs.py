@@ -1,8 +1,8 @@
-"""The README teaches what the software does: its Python example runs, its commands exist.
+"""The guides teach what the software does: the Python example runs, every command is shown.
 
-The README's Python API section is run as a doctest in a fresh folder, so a
-changed API, a changed number or a missing file shows here. Every command has
-``--help`` text with an example, and an example in the README.
+The Python API page's example (docs/reference/api.md) is run as a doctest in a fresh
+folder, so a changed API, a changed number or a missing file shows here. Every command
+has ``--help`` text with an example, and an example in the README or a guide.
 """
 
 from __future__ import annotations
@@ -16,22 +16,19 @@ from click.testing import CliRunner
 
 from tarsim.exercises.cli import cli
 
-README = (Path(__file__).resolve().parents[1] / "README.md").read_text(encoding="utf-8")
-
-
-def _section(heading: str) -> str:
-    start = README.index(f"\n## {heading}\n")
-    end = README.find("\n## ", start + 1)
-    return README[start:end if end >= 0 else None]
+ROOT = Path(__file__).resolve().parents[1]
+API = (ROOT / "docs" / "reference" / "api.md").read_text(encoding="utf-8")
+PAGES = "\n".join(p.read_text(encoding="utf-8")
+                  for p in [ROOT / "README.md", *sorted((ROOT / "docs").rglob("*.md"))])
 
 
 @pytest.mark.slow
 def test_the_python_api_example_runs_as_written(tmp_path, monkeypatch):
-    blocks = re.findall(r"```pycon\n(.*?)```", _section("Python API"), re.S)
-    assert blocks, "the Python API section shows an interactive example"
+    blocks = re.findall(r"```pycon\n(.*?)```", API, re.S)
+    assert blocks, "the Python API page shows an interactive example"
     monkeypatch.chdir(tmp_path)
     parser = doctest.DocTestParser()
-    test = parser.get_doctest("\n".join(blocks), {}, "README Python API", "README.md", 0)
+    test = parser.get_doctest("\n".join(blocks), {}, "Python API", "docs/reference/api.md", 0)
     assert len(test.examples) >= 8
     runner = doctest.DocTestRunner(optionflags=doctest.ELLIPSIS)
     report = []
@@ -46,4 +43,5 @@ def test_every_command_teaches_with_an_example(command):
     result = CliRunner().invoke(cli, [command, "--help"])
     assert result.exit_code == 0
     assert "Example:" in result.output, f"tarsim {command} --help shows no example"
-    assert re.search(rf"^tarsim {command}\b", README, re.M), f"the README has no `tarsim {command}`"
+    assert re.search(rf"^(\$ )?tarsim {command}\b", PAGES, re.M), \
+        f"neither the README nor a guide shows `tarsim {command}`"

@@ -1,6 +1,6 @@
 """Read a cam exercise (TOML with ``[cam]`` and ``[[segment]]`` tables).
 
-The format is documented in the README ("Cams"). Angles are in degrees, lifts and radii in
+The format is documented in docs/howto/cams.md. Angles are in degrees, lifts and radii in
 the file's length unit, the cam's speed in rpm or rad/s. Every failure is one line naming
 file:line: segments that do not add to 360°, a negative lift, a cam that does not come back
 to its base circle, a law the diagram does not draw.

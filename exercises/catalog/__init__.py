@@ -63,11 +63,11 @@ def resolve(name: str) -> Path:
 def load(source: str | Path):
     """Read the exercise ``source`` names: a TOML file's path, or a bundled id.
 
-    An exercise file is a mechanism file with an ``[ask]`` table (see the
-    README); without one it asks for every centre and each link's ω. A file of another
-    chapter (:mod:`..chapters`) says so by its tables: ``[[gear]]`` a gear train, ``[cam]``
-    a cam, ``[rotor]`` or ``[engine]`` a balancing exercise. Its id is the file's stem, or
-    the bundled id.
+    An exercise file is a mechanism file with an ``[ask]`` table (see
+    docs/howto/linkages.md); without one it asks for every centre and each link's ω. A
+    file of another chapter (:mod:`..chapters`) says so by its tables: ``[[gear]]`` a gear
+    train, ``[cam]`` a cam, ``[rotor]`` or ``[engine]`` a balancing exercise. Its id is
+    the file's stem, or the bundled id.
 
     Raises
     ------

@@ -1,6 +1,6 @@
 """Read a gear-train exercise (TOML with ``[[gear]]`` tables) into the exact model.
 
-The format is documented in the README ("Gear trains"). Tooth counts are whole numbers and
+The format is documented in docs/howto/gears.md. Tooth counts are whole numbers and
 speeds and modules are read exactly (a decimal as written, ``0.5`` as 1/2), so the tabular
 method's fractions are the notes' own. Every failure is one line naming file:line.
 """

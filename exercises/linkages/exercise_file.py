@@ -234,7 +234,7 @@ def parse_exercise(text: str, filename: str = "<string>", exercise_id: str = "ex
         ex = replace(ex, loads=loads)
     elif any(isinstance(a, (A.JointForce, A.DrivingTorque)) for a in ex.asks):
         raise InputError("forces are asked, but the file gives no loads: add [[mass]], "
-                         "[[force]] or [[couple]] tables (see the README)", file=filename,
+                         "[[force]] or [[couple]] tables (see docs/howto/forces.md)", file=filename,
                          line=where.key("find", "ask") or where.header("ask"), key="ask.find")
     if grading is not None:
         from ..grading.drafting import read_drafting

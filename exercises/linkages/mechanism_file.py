@@ -1,6 +1,6 @@
 """Read a mechanism file (TOML) into the SI model, with errors that say file:line.
 
-The format is documented in the README. Lengths are keyed by the two point names
+The format is documented in docs/howto/linkages.md. Lengths are keyed by the two point names
 run together, as a textbook writes them (``O2A = 100``, ``AB = 250``).
 
 It reads the top level and the ``[assembly]`` branches here, and the other tables by
