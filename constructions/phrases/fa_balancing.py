@@ -42,6 +42,7 @@ WORDS: dict[str, str] = {
     "head to tail, each parallel to its radial line":
         "پشت سر هم، هر یک موازی خط شعاعی خود",
     "the vectors": "بردارها", "the closing side": "ضلع بسته\u200cکننده",
+    "m·r scale": "مقیاس m·r", "m·r·l scale": "مقیاس m·r·l",
     "l from the reference plane {plane}; ": "l از صفحهٔ مرجع {plane}؛ ",
     "the rows under the rule are the balancing masses found":
         "سطرهای زیر خط، جرم\u200cهای متعادل\u200cکنندهٔ به\u200cدست\u200cآمده\u200cاند",

@@ -77,9 +77,14 @@ def _engine_figures(s: BalanceSolution) -> dict[str, Figure]:
                   size=numerals(f"{left:.4g}" if left < 1e4 else f"{left:.0f}"),
                   unit=unit_words(word),
                   angle=numerals(f"{s.greatest_at[kind]:.1f}")), "", "")
+        # drawn to the unit its reading is given in, its m·r (m·r·l) scale stated beside
+        own = "kg·m²" if kind.endswith("couple") else "kg·m"
+        drawn = dict(unit=own) if e.speed is None else dict(
+            unit=word, per=e.speed ** 2,
+            also=("m·r·l scale" if kind.endswith("couple") else "m·r scale", own))
         out[kind.replace(" ", "-")] = draw_polygon(
             p.construction, p.tips[kind], p.closing[kind], f"{ex.name}: {words(kind)}",
-            "kg·m²" if kind.endswith("couple") else "kg·m", reading,
+            reading=reading, **drawn,
             notes=[words("couples about the central plane; secondary vectors along the "
                          "cranks at 2θᵢ, each m·r/n")] + _speed_notes(e),
             names={str(i): words("cyl. {number}", number=str(i)) for i in

@@ -17,6 +17,7 @@ from tarsim.constructions.narration import numerals, right_to_left, unit_words, 
 from tarsim.constructions.record import Construction, Ref
 from ..figure import Circle, Figure, Path, Text, clear_of, text_width
 from ..labels import LabelPlacer, paper_angle
+from ..linkages.lanes import lanes, moved
 from ..scales import draw_caption, nice_per_cm
 from ..symbols import draw_arrow
 
@@ -25,22 +26,33 @@ __all__ = ["draw_polygon", "draw_end_view", "draw_side_view"]
 _ROOM = 120.0     # paper (mm) the polygon's or view's extent is fitted to
 _REFERENCE_PAST = 8.0   # mm the 0° radius runs past a mass's circle that lies along it
 _MASS = 1.6       # radius (mm) of a mass's circle in the end view
+_LANE = 6.0       # mm between vectors on one line drawn side by side: room for a name
+                  # between two lanes, nearer its own arrow than the next
 
 
 def draw_polygon(c: Construction, tips: Sequence[tuple[str, Ref]], closing: Ref, title: str,
                  unit: str, reading: tuple[str, str, str], notes: Sequence[str] = (),
-                 names: dict[str, str] | None = None, clockwise: bool = False) -> Figure:
+                 names: dict[str, str] | None = None, clockwise: bool = False,
+                 per: float = 1.0, also: tuple[str, str] | None = None) -> Figure:
     """The polygon whose tips are ``tips`` in order from its pole, closed by ``closing``;
-    its sizes in ``unit`` per drawing unit, the closing side read as ``reading`` (text,
-    subscript, and the words after it: "(m r)", "A", " = 1.39 kg·m at 3.9°"); with
-    ``clockwise`` its angles are drawn clockwise (the construction's mirror image)."""
+    its sizes in ``unit``, ``per`` of it to the construction's unit, the closing side read
+    as ``reading`` (text, subscript, and the words after it: "(m r)", "A", " = 1.39 kg·m
+    at 3.9°"); with ``clockwise`` its angles are drawn clockwise (the construction's
+    mirror image). ``also`` (a scale's name, the construction's unit) states the
+    construction's own scale beside it: an engine's m·r drawn to the newtons its reading
+    is given in.
+
+    Vectors on one line that would cover one another (a polygon folded flat, or closing
+    over its own sides) are drawn side by side in lanes, as the linkage polygons draw
+    them, each true in length and direction with a leader back to its points.
+    """
     names = names or {}
     start = c[closing].inputs[1]
     points = [c.output(start).xy] + [c.output(r).xy for _, r in tips]
     xs, ys = [x for x, _ in points], [y for _, y in points]
     extent = max(max(xs) - min(xs), max(ys) - min(ys), 1e-12)
-    per_cm = nice_per_cm(extent, _ROOM)
-    k = 10.0 / per_cm
+    per_cm = nice_per_cm(extent * per, _ROOM)
+    k = 10.0 * per / per_cm
 
     up = 1.0 if clockwise else -1.0      # paper y runs down: counter-clockwise is −y
 
@@ -51,19 +63,29 @@ def draw_polygon(c: Construction, tips: Sequence[tuple[str, Ref]], closing: Ref,
     centre = [paper(p) for p in points]          # the corners, to keep words outside
     pole = paper(points[0])
     fig.add(Circle(pole, 0.7, "dot"))
-    names_at = []                                # (name, tail, tip, the side out)
+    sides = []                                   # (name, tail, tip, the side out)
     prev = pole
     for turn, ((name, _), xy) in enumerate(zip(tips, points[1:])):
         tip = paper(xy)
         if math.dist(prev, tip) > 0.3:
-            draw_arrow(fig, prev, tip, "vector")
             # a flat polygon retraces its own line: its names go above and below in turn
-            names_at.append((names.get(name, name), prev, tip,
-                             _outward(prev, tip, centre, 1.0, up=turn % 2 == 0)))
+            sides.append((names.get(name, name), prev, tip,
+                          _outward(prev, tip, centre, 1.0, up=turn % 2 == 0)))
         prev = tip
     closes = math.dist(prev, pole) > 0.3
+    ends = [(a, b) for _, a, b, _ in sides] + ([(prev, pole)] if closes else [])
+    drawn_in = lanes(ends, [False] * len(sides) + [True] * closes, step=_LANE)
+    names_at = []
+    for i, ((name, a, b, side), lane) in enumerate(zip(sides, drawn_in)):
+        if not lane:
+            side = _clear_side(i, ends, drawn_in, side)
+        tail, tip, side = _in_lane(fig, a, b, lane, side)
+        draw_arrow(fig, tail, tip, "vector")
+        names_at.append((name, tail, tip, side))
     if closes:
-        draw_arrow(fig, prev, pole, "vector_result")
+        tail, tip, closing_side = _in_lane(fig, prev, pole, drawn_in[-1],
+                                           _outward(prev, pole, centre, 1.0, up=False))
+        draw_arrow(fig, tail, tip, "vector_result")
     # Every name is set clear of the drawn polygon and of the names set before it, each
     # beside its own arrow: a flat polygon's arrows lie on one line, over one another.
     placer = LabelPlacer(fig)
@@ -76,8 +98,8 @@ def draw_polygon(c: Construction, tips: Sequence[tuple[str, Ref]], closing: Ref,
         placer.place(name, mid, prefer=paper_angle(side), spread=math.pi / 2, size=2.8,
                      italic=False, gap=1.2, rings=(1.0, 1.6, 2.4, 3.4, 4.6), own=(tail, tip))
     if closes:
-        mid = ((prev[0] + pole[0]) / 2, (prev[1] + pole[1]) / 2)
-        _place_reading(placer, mid, reading, _outward(prev, pole, centre, 1.0, up=False))
+        mid = ((tail[0] + tip[0]) / 2, (tail[1] + tip[1]) / 2)
+        _place_reading(placer, mid, reading, closing_side)
     else:
         _place_reading(placer, pole, reading, (0.0, 1.0))       # under the names
     # A polygon that closes on itself has no closing side to point to.
@@ -85,8 +107,44 @@ def draw_polygon(c: Construction, tips: Sequence[tuple[str, Ref]], closing: Ref,
         if closes else words("head to tail, each parallel to its radial line")
     legend = (("vector", "the vectors"),) + ((("vector_result", "the closing side"),)
                                             if closes else ())
-    draw_caption(fig, title, [said], per_cm=per_cm, unit=unit, legend=legend, notes=notes)
+    draw_caption(fig, title, [said], per_cm=per_cm, unit=unit, legend=legend, notes=notes,
+                 second=(also[0], per_cm / per, also[1]) if also else None)
     return fig
+
+
+def _clear_side(i: int, ends, lanes: Sequence[int], side: tuple[float, float]):
+    """The side for the name of arrow ``i``, left on its points: away from the arrows moved
+    into lanes beside it (on its carrier and overlapping it), if they are all on one side."""
+    (a, b) = ends[i]
+    n = math.dist(a, b)
+    u = ((b[0] - a[0]) / n, (b[1] - a[1]) / n)
+    beside = set()
+    for (p, q), lane in zip(ends, lanes):
+        if not lane or any(abs((e[0] - a[0]) * u[1] - (e[1] - a[1]) * u[0]) > 0.05
+                           for e in (p, q)):
+            continue
+        s, t = sorted(((e[0] - a[0]) * u[0] + (e[1] - a[1]) * u[1]) for e in (p, q))
+        if min(t, n) - max(s, 0.0) > 0.5:
+            v = ((q[0] - p[0]) / math.dist(p, q), (q[1] - p[1]) / math.dist(p, q))
+            beside.add(1 if (-v[1] * u[1] + v[0] * u[0]) * lane > 0 else -1)
+    if len(beside) != 1:
+        return side
+    away = -beside.pop()                  # in lanes of a's own normal's sign: the other way
+    return (-u[1] * away, u[0] * away)
+
+
+def _in_lane(fig: Figure, a: tuple[float, float], b: tuple[float, float], lane: int,
+             side: tuple[float, float]):
+    """The arrow a → b moved into ``lane`` (:func:`.lanes.moved`), with a leader from each
+    moved end back to its point; its tail, tip and the side its name goes (its lane's, away
+    from the line, when it is moved)."""
+    if not lane:
+        return a, b, side
+    tail, tip = moved((a, b), lane, _LANE)
+    for true, end in ((a, tail), (b, tip)):
+        fig.add(Path((true, end), "leader"))
+    n = math.dist(a, tail)
+    return tail, tip, ((tail[0] - a[0]) / n, (tail[1] - a[1]) / n)
 
 
 def _place_reading(placer: LabelPlacer, at: tuple[float, float],
@@ -95,7 +153,7 @@ def _place_reading(placer: LabelPlacer, at: tuple[float, float],
     texts = _reading((0.0, 0.0), reading)
     x0, y0, x1, y1 = _bounds(texts)
     (cx, cy), _ = placer.spot(x1 - x0, y1 - y0, at, prefer=paper_angle(side), gap=1.6,
-                              rings=(1.0, 1.6, 2.3, 3.2, 4.5, 6.0))
+                              rings=(1.0, 1.6, 2.3, 3.2, 4.5, 6.0, 8.5, 12.0, 17.0))
     dx, dy = cx - (x0 + x1) / 2, cy - (y0 + y1) / 2
     for t in texts:
         placer.fig.add(replace(t, at=(t.at[0] + dx, t.at[1] + dy)))
