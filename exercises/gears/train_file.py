@@ -296,6 +296,10 @@ class _Reader(InputTables, MeshTables, TeethTables):
         t = self.data.get("arm")
         if t is None:
             return None, "", 1
+        if isinstance(t, list):
+            raise self.fail("a train here has one arm, [arm] number = …; a train of "
+                            "two arms (a two-stage epicyclic) is solved a stage a file, the "
+                            "first stage's output speed and torque the second's input", "arm")
         if not isinstance(t, dict) or "number" not in t:
             raise self.fail("the arm needs its number, e.g. number = 3", "arm")
         self.known(t, ("number", "name", "planets"), "arm")
