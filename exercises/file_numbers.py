@@ -42,49 +42,54 @@ _OPERATIONS = {ast.Add: Fraction.__add__, ast.Sub: Fraction.__sub__,
                ast.Mult: Fraction.__mul__, ast.Div: Fraction.__truediv__}
 
 
-def arithmetic(text: str) -> Fraction | None:
+def arithmetic(text: str, *, pi: bool = False) -> Fraction | None:
     """A number the way a book writes it from its data, "120/2", "2/3", "45 + 70", exactly;
     None if ``text`` is not such sums, differences, products and quotients of numbers.
 
     Exact, so that a gear's "2/3" stays two thirds; no names, powers or calls, so that a
-    file's text is never run.
+    file's text is never run. With ``pi``, where the number is taken as a float anyway (a
+    cam's "2*pi" rad/s), ``pi`` or ``π`` stands for π.
 
     >>> arithmetic("120/2"), arithmetic("(45 + 70) * 2"), arithmetic("2/3")
     (Fraction(60, 1), Fraction(230, 1), Fraction(2, 3))
-    >>> arithmetic("A + 45") is None, arithmetic("1/0") is None
-    (True, True)
+    >>> arithmetic("A + 45") is None, arithmetic("1/0") is None, arithmetic("2*pi") is None
+    (True, True, True)
+    >>> float(arithmetic("2*pi", pi=True)) == 2 * math.pi
+    True
     """
     if not isinstance(text, str) or not text.strip() or len(text) > _LONGEST:
         return None
     try:
         tree = ast.parse(text.strip(), mode="eval").body
-        return _value(tree)
+        return _value(tree, pi)
     except (SyntaxError, ValueError, ZeroDivisionError):
         return None
 
 
-def _value(node: ast.AST) -> Fraction:
+def _value(node: ast.AST, pi: bool) -> Fraction:
     if isinstance(node, ast.Constant) and type(node.value) in (int, float):
         return Fraction(repr(node.value)) if isinstance(node.value, float) \
             else Fraction(node.value)
+    if pi and isinstance(node, ast.Name) and node.id in ("pi", "π"):
+        return Fraction(math.pi)
     if isinstance(node, ast.UnaryOp) and isinstance(node.op, (ast.USub, ast.UAdd)):
-        inner = _value(node.operand)
+        inner = _value(node.operand, pi)
         return -inner if isinstance(node.op, ast.USub) else inner
     if isinstance(node, ast.BinOp) and type(node.op) in _OPERATIONS:
-        return _OPERATIONS[type(node.op)](_value(node.left), _value(node.right))
+        return _OPERATIONS[type(node.op)](_value(node.left, pi), _value(node.right, pi))
     raise ValueError("not arithmetic")
 
 
 def file_number(v, what: str) -> float:
     """A cam, rotor or load file's number: finite, and 0 or of a size within :data:`SIZES`.
-    Arithmetic of numbers in a string ("120/2") is taken at its value.
+    Arithmetic of numbers in a string ("120/2", "2*pi") is taken at its value.
 
     Raises
     ------
     ValueError
         Saying what is wrong, for the caller to place at its file:line.
     """
-    exact = arithmetic(v) if isinstance(v, str) else None
+    exact = arithmetic(v, pi=True) if isinstance(v, str) else None
     if exact is not None:
         v = _float(exact)
     if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v):

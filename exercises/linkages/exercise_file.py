@@ -349,7 +349,7 @@ def _read_positions(at, mech: Mechanism, fail) -> tuple[Position, ...]:
             raise fail("each position in at gives one of angle, time, stroke (the share of "
                        f"the stroke the piston has travelled) or travel, got {p}", "at")
         (key, value), = p.items()
-        exact = arithmetic(value) if isinstance(value, str) else None
+        exact = arithmetic(value, pi=True) if isinstance(value, str) else None
         if exact is not None:
             value = _float(exact)
         if key in TRAVEL_KEYS:
