@@ -150,6 +150,7 @@ WORDS: dict[str, str] = {
     "train value": "مقدار قطار",
     "approximate distance and speed ratio": "فاصلهٔ تقریبی و نسبت سرعت",
     "teeth and circular pitch": "دندانه‌ها و گام محیطی",
+    "the pairs' distances added": "جمع فاصله‌های جفت‌ها",
     # the interactive page (tarsim view)
     "figure": "شکل", "play": "پخش",
     "download this frame (SVG)": "بارگیری این قاب (SVG)", "Kennedy lines": "خطوط کندی",

@@ -15,6 +15,7 @@ from typing import Any, ClassVar
 
 from tarsim.constructions.asks import symbol
 from tarsim.constructions.errors import InputError
+from tarsim.constructions.gears.chain import mesh_chain
 from tarsim.constructions.gears.involute import Involute, check_mesh
 from tarsim.constructions.gears.teeth import teeth_from_diameter
 from tarsim.constructions.gears.torques import implied_output
@@ -445,12 +446,17 @@ class _Reader(InputTables, MeshTables, TeethTables):
         pair = q.removeprefix("centre_distance").split("_")
         numbers = [int(n) for n in pair if n.isdigit()]
         pairs = [f"centre_distance{m.a}_{m.b}" for m in train.meshes]
-        if len(numbers) != 2 or len(pair) != 2 or not any(
-                {m.a, m.b} == set(numbers) for m in train.meshes):
+        gears = {g.number for g in train.gears}
+        if len(numbers) != 2 or len(pair) != 2 or not set(numbers) <= gears or not any(
+                {m.a, m.b} == set(numbers) for m in train.meshes) and mesh_chain(
+                train, *numbers) is None:
             raise self.fail(f"cannot find '{q}': ask the centre distance of a pair in mesh, "
-                            f"{', '.join(pairs)}", "ask", "find")
+                            f"{', '.join(pairs)}, or of a simple train's two gears joined "
+                            "through idlers", "ask", "find")
+        chain = mesh_chain(train, *numbers) or ()
+        numbers = sorted({n for m in chain for n in (m.a, m.b)} | set(numbers))
         if any(train.gear(n).module is None for n in numbers):
-            raise self.fail(f"{q} needs the module of gears {numbers[0]} and {numbers[1]}: "
+            raise self.fail(f"{q} needs the module of gears {', '.join(map(str, numbers))}: "
                             "give module = … (mm) or circular_pitch = … in their [[gear]] "
                             "tables", "ask", "find")
 

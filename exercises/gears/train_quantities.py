@@ -9,6 +9,7 @@ import math
 from dataclasses import dataclass
 from fractions import Fraction
 
+from tarsim.constructions.gears.chain import mesh_chain
 from tarsim.constructions.gears.involute import least_teeth_drawn
 from tarsim.constructions.gears.kutzbach import DRAWN
 from tarsim.constructions.gears.train import Mesh
@@ -117,7 +118,9 @@ class QuantityParts:
         """A pair's centre distance (m) from its teeth and module, m(N_a ± N_b)/2, beside
         the sum (or difference) of the two pitch radii, each at its own gear's module."""
         a, b = (int(n) for n in name.removeprefix("centre_distance").split("_"))
-        mesh = next(m for m in self.train.meshes if {m.a, m.b} == {a, b})
+        mesh = next((m for m in self.train.meshes if {m.a, m.b} == {a, b}), None)
+        if mesh is None:                # a simple train's ends, its gears in one line
+            return self._chain_distance(name, mesh_chain(self.train, a, b))
         times_pi = pitch_distance_times_pi(self.train, a, b, mesh.internal)
         if times_pi is not None:        # p(N_a ± N_b)/(2π): over π exactly
             ga, gb = self.train.gear(a), self.train.gear(b)
@@ -128,6 +131,22 @@ class QuantityParts:
         got = self.train._mesh_length(mesh)
         ref = pitch_distance(self.train, a, b, mesh.internal)
         return TrainQuantity(name, got, ref, float(got), "teeth and module")
+
+    def _chain_distance(self, name: str, chain) -> TrainQuantity:
+        """The distance between a simple train's two end gears, the gears in one line as the
+        books draw them: the pairs' distances added along the chain of idlers, beside the
+        pitch diameters of the idlers and the end gears' radii added (each exact, or each
+        over π where the teeth are sized by a circular pitch)."""
+        train = self.train
+        if all(pitch_distance_times_pi(train, m.a, m.b, False) is not None for m in chain):
+            got = sum((train.gear(m.a).circular_pitch * (train.gear(m.a).teeth
+                       + train.gear(m.b).teeth) / 2 for m in chain), Fraction(0))
+            ref = sum(pitch_distance_times_pi(train, m.a, m.b, False) for m in chain)
+            return TrainQuantity(name, got, ref, float(got) / math.pi,
+                                 "the pairs' distances added", over_pi=True)
+        got = sum((train._mesh_length(m) for m in chain), Fraction(0))
+        ref = sum(pitch_distance(train, m.a, m.b, False) for m in chain)
+        return TrainQuantity(name, got, ref, float(got), "the pairs' distances added")
 
     def _pitches(self, name: str) -> dict[str, float]:
         """results.json's circular pitch of a distance's pair (m), and its module p/π, where
