@@ -20,6 +20,7 @@ from tarsim.constructions.narration import speaking, spoken
 
 from . import cli_common as common
 from .cli_files import list_, new
+from .cli_handout import handout
 
 __all__ = ["cli"]
 
@@ -499,3 +500,4 @@ def view(source, output, step):
 
 cli.add_command(list_)
 cli.add_command(new)
+cli.add_command(handout)

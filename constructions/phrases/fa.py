@@ -9,8 +9,8 @@ algorithm sets Persian digits.
 
 from __future__ import annotations
 
-from . import (fa_balancing, fa_cams, fa_forces, fa_grading, fa_positions, fa_rod, fa_trains,
-               fa_velocities)
+from . import (fa_balancing, fa_cams, fa_forces, fa_grading, fa_handout, fa_positions, fa_rod,
+               fa_trains, fa_velocities)
 
 __all__ = ["PHRASES", "WORDS", "UNITS", "digits", "capitalized", "DIGITS", "DIRECTION"]
 
@@ -230,5 +230,5 @@ PHRASES: dict[str, str] = {
 # Each chapter's phrases and its figures' words, kept in a module of the chapter's own.
 for _chapter in (fa_positions, fa_velocities, fa_trains, fa_cams, fa_balancing, fa_forces):
     PHRASES.update(_chapter.PHRASES)
-for _chapter in (fa_trains, fa_balancing, fa_cams, fa_forces, fa_grading, fa_rod):
+for _chapter in (fa_trains, fa_balancing, fa_cams, fa_forces, fa_grading, fa_rod, fa_handout):
     WORDS.update(_chapter.WORDS)

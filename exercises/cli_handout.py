@@ -1,0 +1,72 @@
+"""``tarsim handout``: the problem sheet an instructor hands out before the solution.
+
+A command of its own rather than an option of ``solve``: ``solve`` solves and checks, and
+its options (PNG, an undercut cam, the exit status of a failed check) say nothing of a
+sheet with no answer on it; the sheet goes to a folder of its own, so that a solution's
+folder keeps the solution alone; and ``tarsim --help`` then lists it on a line of its own,
+where an instructor looking for it finds it.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import click
+
+from tarsim.constructions.narration import speaking, spoken
+
+from . import cli_common as common
+
+__all__ = ["handout"]
+
+
+@click.command()
+@common.source
+@click.option("-o", "--output", "out_dir", type=click.Path(), default=None, metavar="DIR",
+              help="Folder for handout.svg and handout.pdf (default: <id>-handout/ here).")
+@common.angle
+@click.option("--pdf/--no-pdf", default=True, show_default=True,
+              help="Also write handout.pdf, a page a sheet (needs libcairo2).")
+@common.paper
+@common.speaks
+@common.fails_cleanly
+def handout(source, out_dir, angle, pdf, paper, lang, digits):
+    """Write the problem sheet of FILE: the exercise as given, with no answer.
+
+    The sheet holds the mechanism drawn to scale at its input position
+    with its data (the fixed points, every link's lengths, the frame's
+    guides, θ2, ω2 and α2), what is asked in the course's words and
+    symbols (with the methods the file names), and an empty frame for
+    each polygon to be drawn: at the scale the solution draws it at (the
+    exercise's, when it states one), with its scale statement and bar,
+    the pole marked, sized to hold the polygon. No centre, vector or
+    number the solution finds is on it; a position given by a time is
+    given by its time alone. Linkages have a sheet; another chapter's
+    file is refused, naming those that have one.
+
+    \b
+    Writes into DIR:
+      handout.svg    the sheets, one under another
+      handout.pdf    a page a sheet (unless --no-pdf)
+
+    \b
+    Example:
+      tarsim handout crank-shaper -o shaper-handout
+      tarsim handout four-bar --lang fa -o four-bar-handout-fa
+      tarsim handout my-linkage.toml --paper A3 --no-pdf
+    """
+    from tarsim.graphics.export import cairo_missing, output_folder, write_folder
+
+    from .handout import handout as problem_sheet
+
+    loaded, chapter = common.loaded(source, angle)
+    reason = cairo_missing() if pdf else None
+    with speaking(common.language(lang, digits, loaded)):
+        ex = chapter.set_up(loaded.named_in(spoken()), paper=paper, angle=common.finite(angle))
+        out = Path(out_dir or f"{ex.id}-handout")
+        with output_folder(out):
+            files = problem_sheet(ex, chapter).files(pdf=pdf and reason is None)
+            written = write_folder(files, out)
+    click.echo(f"wrote {', '.join(p.name for p in written)} to {out}/")
+    if reason:
+        click.echo(f"PDF skipped: {reason}", err=True)

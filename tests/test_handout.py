@@ -1,0 +1,146 @@
+"""The problem sheet (``tarsim handout``): the exercise as given, what is asked, empty frames
+at the solution's scales, and none of the answers."""
+
+from __future__ import annotations
+
+import json
+import math
+import re
+import tomllib
+
+import pytest
+from click.testing import CliRunner
+
+from tarsim.constructions.asks import Centre
+from tarsim.constructions.narration import speaking
+from tarsim.exercises.catalog import load, resolve
+from tarsim.exercises.chapters import chapter_of
+from tarsim.exercises.cli import cli
+from tarsim.exercises.handout import handout
+from tarsim.exercises.linkages.solution_files import solve_worked
+from tarsim.graphics.handout import FRAME_MARGIN, FRAME_STYLE
+from tarsim.graphics.svg import to_svg
+from tarsim.graphics.typeset import typeset
+
+_PERSIAN = str.maketrans("۰۱۲۳۴۵۶۷۸۹٫", "0123456789.")
+_NUMBER = re.compile(r"\d+(?:\.\d+)?")
+
+
+def _sheet(name: str, lang: str):
+    ex = load(name)
+    chapter = chapter_of(ex)
+    with speaking(lang):
+        ex = chapter.set_up(ex.named_in(lang), paper="A4")
+        return ex, handout(ex, chapter)
+
+
+def _texts(svg: str) -> list[str]:
+    """Every <text>'s words, its tspans joined, in Latin digits."""
+    out = []
+    for m in re.finditer(r"<text\b[^>]*>(.*?)</text>", svg, re.S):
+        out.append(re.sub(r"<[^>]+>", "", m.group(1)).translate(_PERSIAN))
+    return out
+
+
+def _numbers_in(value, key: str = "") -> list[float]:
+    """Every number of a results.json part, but the checks' own (error, tolerance,
+    conditioning); a vector's angle too, for a figure prints "232.9 mm/s at 0°"."""
+    if key in ("rel_error", "tolerance", "conditioning", "passed"):
+        return []
+    if isinstance(value, bool):
+        return []
+    if isinstance(value, (int, float)):
+        return [float(value)]
+    if isinstance(value, dict):
+        return [x for k, v in value.items() for x in _numbers_in(v, k)]
+    if isinstance(value, list):
+        out = [x for v in value for x in _numbers_in(v)]
+        if key == "vector" and len(value) == 2:
+            out.append(math.degrees(math.atan2(value[1], value[0])))
+        return out
+    return []
+
+
+def _given(name: str) -> set[float]:
+    """Every number the exercise file writes: the sheet must print these."""
+    data = tomllib.loads(resolve(name).read_text())
+    return {abs(float(x)) for x in _numbers_in(data)}
+
+
+def _renderings(x: float) -> set[str]:
+    """``x`` (SI) as a figure could print it in the file's units (mm, mm/s, mm/s², or as
+    it is: rad/s, a ratio, degrees), at 3 to 5 significant figures, the figures' 4 among
+    them (Units.length_drawn)."""
+    return {f"{abs(v):.{k}g}" for v in (x, 1000.0 * x) for k in (3, 4, 5)}
+
+
+@pytest.mark.parametrize("lang", ["en", "fa"])
+@pytest.mark.parametrize("name", ["crank-shaper", "four-bar"])
+def test_the_sheet_holds_the_data_and_the_asks_and_no_answer(name, lang):
+    ex, sheet = _sheet(name, lang)
+    svg = to_svg(sheet.figure)
+    texts = _texts(svg)
+    words = " ".join(texts)
+    tokens = set(_NUMBER.findall(words))
+    given = _given(name)
+    # Every dimension and input the file gives is printed (as the file writes it: 180, 500).
+    for x in given:
+        assert f"{x:g}" in tokens, f"{x:g} of {name}'s file is not on its sheet"
+    # Every asked quantity by its symbol; the centres by their count.
+    items = sheet.figure.items
+    symbols = {(t.text, t.sub) for t in items if hasattr(t, "sub")}
+    for ask in ex.asks:
+        if ask.scope == "position" and not isinstance(ask, Centre):
+            assert typeset(ask.symbol) in symbols, ask.symbol
+    centres = sum(isinstance(a, Centre) for a in ex.asks)
+    assert f"({centres} " in words
+    # None of the answers: no number results.json gives (at the precision the figures print
+    # it, in the file's units) is among the sheet's numbers. A number the file itself gives
+    # is printed by design (I23 of the crank-shaper is at (0, 180), O2A = 180), and 0 marks
+    # every scale bar's start, so these two are not answers to be hidden.
+    with speaking("en"):
+        results = solve_worked(ex).results
+    found = {r for x in _numbers_in(results) if abs(x) > 1e-9
+             and not any(math.isclose(abs(x) * k, g, rel_tol=1e-6) for g in given
+                         for k in (1.0, 1000.0))
+             for r in _renderings(x)} & tokens
+    assert not found, f"answers on {name}'s sheet: {sorted(found)}"
+
+
+def test_the_frames_are_at_the_stated_scale_and_hold_the_polygon():
+    ex, sheet = _sheet("crank-shaper", "en")
+    svg = to_svg(sheet.figure)
+    texts = _texts(svg)
+    # The exercise states 3 cm = 18 cm/s: each velocity frame says so, as the worked page does.
+    assert texts.count("Velocity scale 3 cm = 18 cm/s") == 2 + 1   # two frames, the diagram
+    frames = [p for p in sheet.figure.items if getattr(p, "style", "") == FRAME_STYLE]
+    # A velocity and an acceleration polygon at each of two positions.
+    assert len(frames) == 4
+    with speaking("en"):
+        results = solve_worked(ex).results
+    v_b = results["positions"][0]["quantities"]["V_B"]["reference"]["value"]   # m/s
+    # At θ2 = 90° every velocity is horizontal (the crank upright, the lever on O2O4) and
+    # V_B = 232.9 mm/s is the longest, V_A = 180 mm/s under it: the frame is V_B long at
+    # 60 mm/s a cm, with 8 mm to spare each side, and holds no height but its margins.
+    first = next(f for f in frames if abs(max(y for _, y in f.points)
+                                          - min(y for _, y in f.points)
+                                          - 2 * FRAME_MARGIN) < 1e-9)
+    xs = [x for x, _ in first.points]
+    assert max(xs) - min(xs) - 2 * FRAME_MARGIN == pytest.approx(v_b * 1000 / 60 * 10,
+                                                                  rel=1e-9)   # float sums
+
+
+def test_other_chapters_are_refused_by_name(tmp_path):
+    got = CliRunner().invoke(cli, ["handout", "planetary-q1", "-o", str(tmp_path / "h")])
+    assert got.exit_code == 1
+    assert got.output == ("Error: planetary-q1 is a gear train, which has no problem sheet "
+                          "yet: tarsim handout writes one for linkages exercises\n")
+    assert not (tmp_path / "h").exists()
+
+
+def test_the_command_writes_the_sheet(tmp_path):
+    got = CliRunner().invoke(cli, ["handout", "four-bar", "-o", str(tmp_path), "--no-pdf"])
+    assert got.exit_code == 0, got.output
+    assert got.output == f"wrote handout.svg to {tmp_path}/\n"
+    assert "Four-bar crank-rocker: problem sheet" in (tmp_path / "handout.svg").read_text()
+    assert json.loads((tmp_path / ".tarsim-manifest.json").read_text())
