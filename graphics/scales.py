@@ -138,14 +138,15 @@ def _legend_rows(legend: Sequence[tuple[str, str]], room: float
     return rows
 
 
-def draw_caption(fig: Figure, heading: str, lines: Sequence[str], *, per_cm: float, unit: str,
-                 legend: Sequence[tuple[str, str]] = (), notes: Sequence[str] = (),
+def draw_caption(fig: Figure, heading: str, lines: Sequence[str], *, per_cm: float | None,
+                 unit: str, legend: Sequence[tuple[str, str]] = (), notes: Sequence[str] = (),
                  margin: float = 8.0, scale_name: str = "Scale",
                  second: tuple[str, float, str] | None = None) -> None:
     """Move the drawing in from a ``margin`` and set the caption under it; size the page.
 
     Left: the bold ``heading`` and ``lines``. Right: the scale statement, which
-    ``scale_name`` opens ("Velocity scale 1 cm = 5 mm/s"), and its bar; then, if given,
+    ``scale_name`` opens ("Velocity scale 1 cm = 5 mm/s"), and its bar (none when ``per_cm``
+    is None: panels that state scales of their own); then, if given,
     a ``second`` scale (name, per cm, unit) and its bar, as for the velocities drawn on
     a space diagram. Under both: a ``legend`` of (style, name) line samples, then
     ``notes``. In a right-to-left language the caption is mirrored: heading, lines, legend
@@ -159,13 +160,13 @@ def draw_caption(fig: Figure, heading: str, lines: Sequence[str], *, per_cm: flo
     fig.shift(margin - x0, margin - y0)
     fig.drawing = (x1 - x0, y1 - y0)
     head = _heading(heading)
-    scales = [(words(scale_name), per_cm, unit)] + ([(words(second[0]), *second[1:])]
-                                                    if second else [])
+    scales = ([] if per_cm is None else [(words(scale_name), per_cm, unit)]) + (
+        [(words(second[0]), *second[1:])] if second else [])
     legend = [(style, words(name)) for style, name in legend]
     texts = [f"{name} {scale_text(per, u)}" for name, per, u in scales]
     left = max([head.width] + [text_width(t, 3.2) for t in lines])
     right = max([text_width(t, 3.2) for t in texts]
-                + [bar_room(per, u) for _, per, u in scales])
+                + [bar_room(per, u) for _, per, u in scales], default=0.0)
     legend_w = max((sum(18.0 + text_width(name, 2.8) for _, name in row)
                     for row in _legend_rows(legend, max(x1 - x0, left + right + 8.0,
                                                         _LEGEND_ROW))), default=0.0)
@@ -190,7 +191,7 @@ def draw_caption(fig: Figure, heading: str, lines: Sequence[str], *, per_cm: flo
         x = bar_x + right if reads.rtl else bar_x
         fig.add(Text((x, top + 3.0 + 13.0 * k), text, 3.2, anchor, italic=False))
         draw_scale_bar(fig, (bar_x, top + 8.0 + 13.0 * k), per, u)
-    y = max(y + 5.2, top + 15.0 + 13.0 * (len(scales) - 1))
+    y = max(y + 5.2, top + 15.0 + 13.0 * (len(scales) - 1) if scales else 0.0)
     for row in _legend_rows(legend, width - 2 * margin):
         x = edge
         for style, name in row:

@@ -20,6 +20,27 @@ WORDS: dict[str, str] = {
     "a force": "نیرو", "a closing side": "ضلع بسته\u200cکننده",
     "a line of known direction": "خط با راستای معلوم",
     "link {link}": "میلهٔ {link}", "links {i}, {j}": "میله\u200cهای {i} و {j}",
+    # the key to the names on a force figure (graphics/forces/force_key.py)
+    "the force of link i on link j": "نیروی میلهٔ i بر میلهٔ j",
+    "its part square to link j": "مؤلفهٔ آن عمود بر میلهٔ j",
+    "its part along link j": "مؤلفهٔ آن در امتداد میلهٔ j",
+    "the inertia force of link k": "نیروی اینرسی میلهٔ k",
+    "the inertia couple of link k": "کوپل اینرسی میلهٔ k",
+    "the friction couple of link i on link j at their pin":
+        "کوپل اصطکاک میلهٔ i بر میلهٔ j در لولای آن\u200cها",
+    "the weight of link k": "وزن میلهٔ k",
+    "the force given on link k": "نیروی داده\u200cشده بر میلهٔ k",
+    "the couple of link i on link j": "کوپل میلهٔ i بر میلهٔ j",
+    "the torque that drives link k": "گشتاور محرک میلهٔ k",
+    "the push on the crank pin's part along the crank":
+        "مؤلفهٔ نیروی وارد بر لولای لنگ در امتداد لنگ",
+    "its part square to the crank: the crank effort": "مؤلفهٔ آن عمود بر لنگ: نیروی مؤثر لنگ",
+    "where the push on the crank pin parts along the crank and square to it":
+        "محل تجزیهٔ نیروی وارد بر لولای لنگ در امتداد لنگ و عمود بر آن",
+    "where the two lines that close a polygon cross":
+        "محل تلاقی دو خطی که چندضلعی را می\u200cبندند",
+    "where a three-force member's lines of action meet": "محل تلاقی خطوط عمل عضو سه\u200cنیرویی",
+    "a load the exercise gives": "باری که مسئله می\u200cدهد",
     # the free bodies
     "each link alone with every force on it; its forces add to nothing":
         "هر میله به\u200cتنهایی با همهٔ نیروهای وارد بر آن؛ برآیند نیروهای آن صفر است",

@@ -1,6 +1,7 @@
-"""The force polygons as a textbook prints them: each load an arrow head to tail at the
-force scale, the two lines that close a polygon crossing at x, and a polygon closed by its
-last side drawn heavy (the frame's force on the crank, the crank's on a block).
+"""The force polygons as a textbook prints them: each link's polygon in a panel of its own at
+a force scale that fits it, stated on the panel; each load an arrow head to tail, the two
+lines that close a polygon crossing at x, and a polygon closed by its last side drawn heavy
+(the frame's force on the crank, the crank's on a block); under them a key to every name.
 """
 
 from __future__ import annotations
@@ -12,36 +13,118 @@ from collections.abc import Sequence
 from tarsim.constructions import geometry as g
 from tarsim.constructions.narration import words
 from tarsim.constructions.record import Construction, Panel, Role
-from ..figure import Circle, Figure, Path
+from tarsim.constructions.scales import nice
+from ..figure import Circle, Figure, Path, Text
 from ..labels import LabelPlacer
-from ..scales import draw_caption, nice_per_cm
+from ..scales import draw_caption, nice_per_cm, scale_text
 from ..symbols import draw_arrow
+from .force_key import draw_key
 
 __all__ = ["draw_force_figure", "in_lane", "runs_along", "typeset_force"]
 
-_ROOM = (240.0, 150.0)   # paper (mm) the polygons are fitted to: across, up
+_PANEL = (150.0, 110.0)
+"""The most paper (mm) one polygon takes, across and up: two stand side by side on a
+landscape sheet."""
+
+_LONGEST = 40.0
+"""Paper (mm) a polygon's longest side is drawn at least where its panel allows: a side of
+a few millimetres shows neither its direction nor its length."""
+
+_ROW = 240.0
+"""The widest a row of polygons runs (mm) before the next row starts."""
+
+_GAP = 14.0
+"""Paper (mm) between two polygons' panels, and between rows."""
 
 
 def draw_force_figure(c: Construction, scale: float, title: str,
                       notes: Sequence[str] = ()) -> Figure:
-    """The FORCE panel of ``c``, drawn at ``scale`` drawing metres per newton."""
+    """The FORCE panel of ``c`` (drawn at ``scale`` drawing metres per newton), each link's
+    polygon in a panel of its own at a force scale that fits it, stated on the panel: one
+    scale for all would draw a block's few newtons as a dot beside a lever's hundreds."""
     steps = [s for s in c if s.panel is Panel.FORCE]
-    joins = [s for s in steps if s.verb == "join"]
+    panels = [_draw_polygon(c, mark, group, scale) for mark, group in _polygons(steps)]
+    fig = Figure(0.0, 0.0, title=title)
+    x = y = row_height = 0.0
+    for panel in (p for p in panels if p is not None):
+        x0, y0, x1, y1 = panel.bounds()
+        if x > 0.0 and x + (x1 - x0) > _ROW:
+            x, y, row_height = 0.0, y + row_height + _GAP, 0.0
+        panel.shift(x - x0, y - y0)
+        fig.items += panel.items
+        x += (x1 - x0) + _GAP
+        row_height = max(row_height, y1 - y0)
+    draw_caption(fig, title, [words("each link's loads head to tail; a polygon closed by two "
+                                    "lines crossing at x, or by its heavy closing side")],
+                 per_cm=None, unit="N", legend=(("vector", "a force"),
+                                                ("vector_result", "a closing side"),
+                                                ("construction", "a line of known "
+                                                                 "direction")),
+                 notes=notes)
+    draw_key(fig, [t for t in fig.items if isinstance(t, Text) and t.owner])
+    return fig
+
+
+def _polygons(steps) -> list:
+    """The FORCE steps in polygons, each (its titled mark, its steps): a polygon runs from
+    the mark naming its links to the next such mark."""
+    out: list = []
+    for s in steps:
+        if s.verb == "mark" and s.label:
+            out.append((s, []))
+        elif out:
+            out[-1][1].append(s)
+    return out
+
+
+def polygon_scale(longest: float, across: float, up: float) -> float:
+    """The force scale (N a paper cm, 1, 2 or 5 × 10^k) of a polygon whose longest side is
+    ``longest`` newtons and which spans ``across`` by ``up``: its longest side
+    :data:`_LONGEST` mm at least, unless the polygon would then outgrow :data:`_PANEL`.
+
+    >>> polygon_scale(0.98, 0.98, 0.98), polygon_scale(45.0, 20.0, 45.0)
+    (0.2, 10.0)
+    """
+    per_cm = nice(longest * 10.0 / _LONGEST, up=False)
+    return max(per_cm, nice_per_cm(across, _PANEL[0]), nice_per_cm(up, _PANEL[1]))
+
+
+def _draw_polygon(c: Construction, mark, group, scale: float) -> Figure | None:
+    """One polygon at a scale of its own, its title and scale over it; None if it draws
+    nothing."""
+    joins = [s for s in group if s.verb == "join"]
+    if not joins:
+        return None
     ends = [p for s in joins for p in (s.output.start.xy, s.output.end.xy)]
     xs, ys = [x for x, _ in ends], [y for _, y in ends]
-    across = max(max(xs) - min(xs), 1e-12) / scale                        # newtons
-    up = max(max(ys) - min(ys), 1e-12) / scale
-    per_cm = max(nice_per_cm(across, _ROOM[0]), nice_per_cm(up, _ROOM[1]))
+    longest = max(math.dist(s.output.start.xy, s.output.end.xy) for s in joins) / scale
+    per_cm = polygon_scale(max(longest, 1e-300), max(max(xs) - min(xs), 1e-300) / scale,
+                           max(max(ys) - min(ys), 1e-300) / scale)
     k = 10.0 / (per_cm * scale)                                          # paper mm a drawing m
+    left, top = min(xs), max(ys)
 
     def paper(xy) -> tuple[float, float]:
-        return xy[0] * k, -xy[1] * k
+        return (xy[0] - left) * k, (top - xy[1]) * k
 
-    fig = Figure(0.0, 0.0, title=title)
+    fig = Figure(0.0, 0.0)
+    with fig.for_steps(mark.id):
+        _draw_sides(fig, c, group, paper)
+        origin = paper(c.output(mark.inputs[0]).xy)
+        x0, y0, _, _ = fig.bounds()
+        fig.add(Text((min(x0, origin[0]), y0 - 10.0), _polygon_title(mark.label), 3.0,
+                     "start", False, "bold"))
+        fig.add(Text((min(x0, origin[0]), y0 - 5.0),
+                     f"{words('Force scale')} {scale_text(per_cm, 'N')}", 2.8, "start", False))
+    return fig
+
+
+def _draw_sides(fig: Figure, c: Construction, group, paper) -> None:
+    """A polygon's forces head to tail, the lines that close it and where they cross, each
+    force named beside its own shaft."""
     # Each closing line runs from the tip it is drawn through to a little past the crossing
     # it makes, not across the whole sheet.
-    crossings = [paper(s.output.xy) for s in steps if s.verb == "intersect_lines"]
-    for s in steps:
+    crossings = [paper(s.output.xy) for s in group if s.verb == "intersect_lines"]
+    for s in group:
         if s.verb == "parallel_through" and isinstance(s.output, g.Line) and crossings:
             start = paper(c.output(s.inputs[0]).xy)
             cross = min(crossings, key=lambda x: math.dist(x, start))
@@ -53,7 +136,9 @@ def draw_force_figure(c: Construction, scale: float, title: str,
             fig.add(Path(((start[0] - 5.0 * u[0], start[1] - 5.0 * u[1]),
                           (cross[0] + 5.0 * u[0], cross[1] + 5.0 * u[1])), "construction"))
     named, drawn = [], []
-    for s in joins:
+    for s in group:
+        if s.verb != "join":
+            continue
         a, b = paper(s.output.start.xy), paper(s.output.end.xy)
         if math.dist(a, b) < 0.3:
             continue
@@ -70,21 +155,11 @@ def draw_force_figure(c: Construction, scale: float, title: str,
         draw_arrow(fig, a, b, "vector_result" if s.role is Role.RESULT else "vector")
         if s.label and math.dist(a, b) > 1.5:      # a shorter one is named in the steps
             named.append((a, b, (s.label,)))
-    crosses = [(paper(s.output.xy), s.label or "x") for s in steps
+    crosses = [(paper(s.output.xy), s.label or "x") for s in group
                if s.verb == "intersect_lines"]
     for at, _ in crosses:
         fig.add(Circle(at, 0.7, "dot"))
-    titles = [(paper(c.output(s.inputs[0]).xy), _polygon_title(s.label)) for s in steps
-              if s.verb == "mark" and s.label]
-    _name_forces(fig, named, crosses, titles)
-    draw_caption(fig, title, [words("each link's loads head to tail; a polygon closed by two "
-                                    "lines crossing at x, or by its heavy closing side")],
-                 per_cm=per_cm, unit="N", legend=(("vector", "a force"),
-                                                  ("vector_result", "a closing side"),
-                                                  ("construction", "a line of known "
-                                                                   "direction")),
-                 notes=notes, scale_name="Force scale")
-    return fig
+    _name_forces(fig, named, crosses)
 
 
 def _polygon_title(label: str) -> str:
@@ -137,17 +212,13 @@ def runs_along(a, b, p, q, within: float = 0.8) -> bool:
     return min(t[1], n) - max(t[0], 0.0) > 1.0
 
 
-def _name_forces(fig: Figure, named, crosses, titles=()) -> None:
-    """Name each force beside its own shaft, the shortest first (they have least room), each
-    crossing by its letter, and each polygon by its links at its start, every name clear of
-    every line, head and other name."""
+def _name_forces(fig: Figure, named, crosses) -> None:
+    """Name each force beside its own shaft, the shortest first (they have least room), and
+    each crossing by its letter, every name clear of every line, head and other name."""
     placer = LabelPlacer(fig)
     placer.block_drawn()
     placer.name_vectors((a, b) for a, b, _ in named)
     placer.name_points([at for at, _ in crosses])
-    for at, title in titles:
-        placer.place(title, at, size=3.0, italic=False, prefer=(3 * math.pi / 4, math.pi),
-                     gap=3.0)
     for a, b, label in sorted(named, key=lambda v: math.dist(v[0], v[1])):
         n = math.dist(a, b)
         normal = math.atan2((b[0] - a[0]) / n, (b[1] - a[1]) / n)   # square to it, on paper
