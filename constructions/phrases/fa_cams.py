@@ -18,6 +18,7 @@ WORDS: dict[str, str] = {
         "زاویهٔ بادامک در راستای افقی و کمانی که انتهای بازو می‌پیماید رو به بالا "
         "({arm} {unit} × زاویهٔ نوسان)",
     "(a swing of {angle}°)": "(نوسانی به اندازهٔ {angle}°)",
+    "Lift scale": "مقیاس خیز", "Cam angle scale": "مقیاس زاویهٔ بادامک",
     "displacement": "جابه‌جایی",
     "construction lines": "خطوط ترسیم",
     "ordinates": "خطوط قائم",
@@ -46,7 +47,7 @@ WORDS: dict[str, str] = {
     "prime circle": "دایرهٔ گام",
     "offset circle": "دایرهٔ انحراف",
     "pivot circle": "دایرهٔ لولا",
-    "the arm at each station": "بازوی پیرو در هر موقعیت",
+    "the arc of the arm's end at each station": "کمان انتهای بازو در هر موقعیت",
     "the follower's line at each station": "خط حرکت پیرو در هر موقعیت",
     "the roller at each station": "غلتک در هر موقعیت",
     "the face at each station": "سطح پیرو در هر موقعیت",

@@ -1,7 +1,10 @@
 """The cam's profile laid out by inversion, as a textbook prints it.
 
 To scale about the cam's centre O: the base circle, the prime, offset or pivot circle,
-each station's follower line (or arm) numbered at its rest point, the follower drawn at
+each station's follower line numbered at its rest point (an oscillating arm's station
+numbered at its pivot, with the arc the arm's end swings through there, from the prime
+circle to the roller's centre, as a textbook swings it; not the arm itself, whose lines
+would cross one another over the profile), the follower drawn at
 each station (the knife edge's point, the roller's circle, a stretch of the face), the
 pitch curve and, inked heavy, the profile. The cam's turning is shown by an arrow at O,
 the steepest pressure angle by the normal n and the follower's path there, and
@@ -16,7 +19,7 @@ from collections.abc import Sequence
 from tarsim.constructions.cams.inversion import Layout
 from tarsim.constructions.cams.survey import Survey
 from tarsim.constructions.narration import numerals, words
-from ..figure import Circle, Figure, Path, Text
+from ..figure import Circle, Figure, Path, Text, arc_points
 from ..labels import LabelPlacer, paper_angle
 from ..scales import draw_caption, nice_per_cm
 from ..symbols import draw_arrow, draw_turning_arrow, mark_angle
@@ -25,6 +28,10 @@ __all__ = ["draw_cam_layout"]
 
 _ROOM = 150.0          # paper (mm) the cam's greatest reach across is fitted to
 _WINDOW = 1.0          # the curves are drawn within this many _ROOMs of O each way
+
+_CLEAR = 5.0           # mm round O that the follower's lines leave clear for its name
+_FACE = 10.0           # mm a flat face reaches at least either side of the follower's line
+_ARC_PAST = 3.0        # mm an arm's arc runs past its rest point and its roller's centre
 
 _CIRCLE_STYLE = {"base": "dimension", "prime": "reference", "offset": "reference",
                  "pivot": "kennedy"}
@@ -56,10 +63,13 @@ def draw_cam_layout(layout: Layout, s: Survey, title: str, unit: str, metre: flo
         if f.oscillating:
             start = paper(c.output(p.pivot).xy)
             fig.add(Circle(start, 0.5, "dot"))
+            fig.add(Path(_arm_arc(start, rest, trace), "compass"))
         else:
             start = o if not f.offset or f.kind == "flat-faced" else \
                 paper(c.output(p.axis).anchor())
-        fig.add(Path((start, _beyond(start, trace, past)), "construction"))
+            # a line from O stops short of it, leaving O and its name clear
+            root = _beyond(trace, o, -_CLEAR) if start == o else start
+            fig.add(Path((root, _beyond(start, trace, past)), "construction"))
         fig.add(Circle(rest, 0.45, "dot"))
         if f.oscillating:                         # beyond the arm's pivot
             tag, way = start, (start[0] - o[0], start[1] - o[1])
@@ -78,8 +88,12 @@ def draw_cam_layout(layout: Layout, s: Survey, title: str, unit: str, metre: flo
             else:
                 along = c.output(p.follower).direction
                 d = (along[0], -along[1])
-            fig.add(Path(((trace[0] - 4.0 * d[0], trace[1] - 4.0 * d[1]),
-                          (trace[0] + (run + 4.0) * d[0], trace[1] + (run + 4.0) * d[1])),
+            # At least _FACE each side of the follower's line: a face touching on that line
+            # lies along the profile's tangent, and a stub of it would hide under the
+            # profile (an eccentric's at its highest and lowest stations).
+            back, ahead = _FACE, max(run + 4.0, _FACE)
+            fig.add(Path(((trace[0] - back * d[0], trace[1] - back * d[1]),
+                          (trace[0] + ahead * d[0], trace[1] + ahead * d[1])),
                          "node_circle"))
         fig.add(Circle(trace, 0.55, "dot"))
     if f.kind != "flat-faced":
@@ -87,7 +101,6 @@ def draw_cam_layout(layout: Layout, s: Survey, title: str, unit: str, metre: flo
                     "normal" if f.kind == "roller" else "link")
     _draw_curve(fig, [paper(st.profile) for st in s.stations], "link")
     fig.add(Circle(o, 0.8, "dot"))
-    fig.add(Text((2.0, 4.5), "O", 3.0, "start", False))
     sense = 1.0 if s.sigma > 0 else -1.0
     base = c.output(layout.circles["base"]).radius * k
     inner = max(abs(f.offset) * k, 0.0)
@@ -99,6 +112,9 @@ def draw_cam_layout(layout: Layout, s: Survey, title: str, unit: str, metre: flo
     # (the pressure angle's arrows and arc too).
     placer = LabelPlacer(fig)
     placer.block_drawn()
+    # O in the widest gap between the lines about it, within the clear round it.
+    placer.place("O", o, prefer=_widest_gap(fig, o), spread=math.pi, gap=0.6, size=3.0,
+                 italic=False)
     for text, at, way in numbers:
         placer.place(text, at, prefer=way, spread=1.0, gap=1.2, size=2.6, italic=False)
     for st in _ringed(s):
@@ -113,8 +129,8 @@ def draw_cam_layout(layout: Layout, s: Survey, title: str, unit: str, metre: flo
     for name in layout.circles:
         if name != "base":
             legend.append((_CIRCLE_STYLE[name], f"{name} circle"))
-    legend.append(("construction", "the arm at each station" if f.oscillating
-                   else "the follower's line at each station"))
+    legend.append(("compass", "the arc of the arm's end at each station") if f.oscillating
+                  else ("construction", "the follower's line at each station"))
     if f.kind != "knife-edge":
         legend.append(("node_circle", "the roller at each station" if f.kind == "roller"
                        else "the face at each station"))
@@ -191,6 +207,36 @@ def _ringed(s: Survey, most: int = 6):
                   or span.start <= st.theta + 2 * math.pi <= span.end]
         out += inside[:: max(1, len(inside) // most)] + [span.worst]
     return out
+
+
+def _arm_arc(pivot: tuple[float, float], rest: tuple[float, float],
+             trace: tuple[float, float]) -> tuple[tuple[float, float], ...]:
+    """The arc the arm's end swings through at one station, as a textbook draws it: about
+    the station's ``pivot``, from the roller's centre at rest on the prime circle to its
+    centre there (``trace``), and :data:`_ARC_PAST` beyond each (paper mm, y down)."""
+    r = math.dist(pivot, rest)
+    a = math.atan2(-(rest[1] - pivot[1]), rest[0] - pivot[0])
+    b = math.atan2(-(trace[1] - pivot[1]), trace[0] - pivot[0])
+    sweep = math.remainder(b - a, 2 * math.pi)
+    way = 1.0 if sweep >= 0 else -1.0
+    past = _ARC_PAST / r
+    return tuple(arc_points(pivot, r, a - way * past, sweep + 2 * way * past))
+
+
+def _widest_gap(fig: Figure, o: tuple[float, float]) -> float:
+    """The paper angle (rad, y up) mid-way across the widest gap between the lines drawn
+    from near ``o``, where its name stands clear of them."""
+    rays = sorted({round(math.atan2(-(q[1] - o[1]), q[0] - o[0]) % (2 * math.pi), 9)
+                   for item in fig.items if isinstance(item, Path) and len(item.points) == 2
+                   and item.style == "construction"
+                   and math.dist(item.points[0], o) <= _CLEAR + 1e-6
+                   for q in item.points[1:]})
+    if not rays:
+        return math.radians(-60.0)
+    gaps = [((rays[(i + 1) % len(rays)] - a) % (2 * math.pi) or 2 * math.pi, a)
+            for i, a in enumerate(rays)]
+    width, at = max(gaps)
+    return at + width / 2
 
 
 def _unit(v: tuple[float, float]) -> tuple[float, float]:

@@ -1,10 +1,11 @@
 """The follower's displacement diagram as a textbook draws it: the construction inked.
 
-Cam angle runs across and lift up, both to scale. The figure draws the base line with the
-cam angle every 30°, each ordinate up to the curve, the working lines the construction
-inked (projections across, the divided line and its parallels, the runs along the
-diagonal) and its arcs (the semicircles, the cycloid's circles), the constructed points
-numbered, and the curve through them (the law's, so it runs smooth between them).
+Cam angle runs across and lift up, both to scale, each scale stated (the cam angle's in
+degrees a centimetre). The figure draws the base line with the cam angle every 30°, each
+ordinate up to the curve, the working lines the construction inked (projections across,
+the divided line and its parallels, the runs along the diagonal) and its arcs (the
+semicircles, the cycloid's circles), the constructed points numbered, and the curve
+through them (the law's, so it runs smooth between them).
 """
 
 from __future__ import annotations
@@ -94,7 +95,8 @@ def draw_displacement_figure(d: Displacement, curve: list[tuple[float, float]], 
                                   "cam angle across, the arc the arm's end swings up ({arm} "
                                   "{unit} × the swing)", arm=numerals(f"{arm / metre:g}"),
                                   unit=unit_words(unit))],
-                 per_cm=per_cm, unit=unit,
+                 per_cm=per_cm, unit=unit, scale_name="Lift scale",
+                 second=("Cam angle scale", 360.0 / (right / 10.0), "°"),
                  legend=(("vector_result", "displacement"), ("construction",
                                                              "construction lines"),
                          ("reference", "ordinates")))
