@@ -154,7 +154,7 @@ def test_what_cannot_be_found_is_refused_at_the_ask(extra, where, said):
     (("centre = 100", "centre = 250"), "not between the pins"),
     (("alpha = 23000", "alpha = -23000"), "write alpha's size alone"),
     (('alpha_sense = "cw"', 'alpha_sense = "left"'), 'alpha_sense is "cw" or "ccw"'),
-    (("radius_of_gyration = 110", "radius_of_gyration = 110\ninertia = 0.02"), "not both"),
+    (("radius_of_gyration = 110", "radius_of_gyration = 110\ninertia = 0.02"), "one of them"),
     (("mass = 2", "mass = 0"), "the rod's mass (kg) must be positive"),
     (("centre = 100", 'centre = 100\ncentre_from = "B"'), "centre_from is one of the rod's"),
 ])
@@ -207,3 +207,33 @@ def test_the_rods_steps_speak_persian():
         fig = solve_rod(ex).figures["rod"]
     texts = " ".join(getattr(t, "text", "") for t in fig.items)
     assert "سیستم دینامیکی معادل" in texts and "کوپل تصحیح" in texts
+
+
+def test_en3_rod_pendulum(tmp_path):
+    """The books' 40 kg rod, 1 m between centres, G 650 mm from the small end, hung on a knife
+    edge at the top of its 60 mm small-end bore, 35 oscillations in 60 s."""
+    path = Path(__file__).parent / "reproducers" / "en3-rod-pendulum.toml"
+    run = CliRunner().invoke(cli, ["solve", str(path), "-o", str(tmp_path / "o"), "--no-pdf"])
+    assert run.exit_code == 0, run.output
+    q = {k: v["value"] for k, v in json.loads(
+        (tmp_path / "o" / "results.json").read_text())["quantities"].items()}
+    g, T, h, m = 9.81, 60 / 35, 0.650 + 0.030, 40.0          # h to the bore's top
+    k = math.sqrt(g * h * T * T / (4 * math.pi ** 2) - h * h)
+    l1, l3 = 0.650, 0.350
+    # a few roundings of numbers of the data's size: 1e-12 relative
+    assert q["rod_radius_of_gyration"] == pytest.approx(k, rel=1e-12)
+    assert q["rod_inertia"] == pytest.approx(m * k * k, rel=1e-12)
+    assert q["l2"] == pytest.approx(k * k / l1, rel=1e-12)
+    assert q["mass_at_P"] == pytest.approx(m * (k * k / l1) / (l1 + k * k / l1), rel=1e-12)
+    assert (q["pin_mass_P"], q["pin_mass_A"]) == pytest.approx((14.0, 26.0), rel=1e-12)
+    assert q["correction_couple"] == pytest.approx(-(m * l1 * l3 - m * k * k) * 5000, rel=1e-12)
+    assert q["pendulum_period"] == pytest.approx(T, rel=1e-15)
+    assert round(k * 1000, 3) == 184.864                   # the book's 184.86 mm
+
+
+def test_a_rod_takes_one_of_k_inertia_and_a_pendulum_test(tmp_path):
+    from tarsim.exercises.forces.rod_file import parse_rod
+    text = ('[rod]\nmass = 2\nlength = 250\ncentre = 100\nradius_of_gyration = 110\n'
+            'oscillations = { count = 8, seconds = 22, about = "P" }\n')
+    with pytest.raises(InputError, match=r"f.toml:6: .*one of them"):
+        parse_rod(text, "f.toml")

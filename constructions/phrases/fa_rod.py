@@ -24,6 +24,15 @@ WORDS: dict[str, str] = {
     "from it, and G {gp} from {p} ({ga} from {a}).":
         "خط مراکز میلهٔ رابط را به مقیاس رسم کنید: گژن‌پین {p}، پین لنگ {a} به فاصلهٔ {length} "
         "از آن، و G به فاصلهٔ {gp} از {p} ({ga} از {a}).",
+    "Hung from {about}, G {h} below, it swings once in T = {t} s: as a compound pendulum "
+    "T = 2π·√((k² + h²)/(g·h)), so k = √(g·h·T²/(4π²) − h²).":
+        "آویخته از {about}، با G به فاصلهٔ {h} زیر آن، هر نوسان را در T = {t} ثانیه می‌زند: "
+        "چون آونگ مرکب T = 2π·√((k² + h²)/(g·h))، پس k = √(g·h·T²/(4π²) − h²).",
+    "Hung from {about} on a knife edge in its bore, G {h} below, it swings once in T = {t} s: "
+    "as a compound pendulum T = 2π·√((k² + h²)/(g·h)), so k = √(g·h·T²/(4π²) − h²).":
+        "آویخته از {about} روی لبهٔ چاقویی در سوراخ آن، با G به فاصلهٔ {h} زیر آن، هر نوسان را "
+        "در T = {t} ثانیه می‌زند: چون آونگ مرکب T = 2π·√((k² + h²)/(g·h))، پس "
+        "k = √(g·h·T²/(4π²) − h²).",
     "The rod's moment of inertia about G: I_G = m·k² = {i} kg·m², k = {k}.":
         "ممان اینرسی میله حول G: I_G = m·k² = {i} kg·m²، k = {k}.",
     "With one mass at {pin}, l1 = G{pin} = {l1}; the other stands at l2 = k²/l1 = {l2} on the "

@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["two_masses", "second_point", "second_moment"]
+__all__ = ["two_masses", "second_point", "second_moment", "pendulum_period"]
 
 
 def two_masses(mass: float, x1: float, x2: float) -> tuple[float, float]:
@@ -50,3 +50,13 @@ def second_moment(masses: tuple[float, float], points: tuple[float, float]) -> f
     0.03
     """
     return float(sum(m * x * x for m, x in zip(masses, points)))
+
+
+def pendulum_period(radius_of_gyration: float, h: float, g: float = 9.81) -> float:
+    """The period (s) of a body of ``radius_of_gyration`` about G hung ``h`` (m) from G: a
+    compound pendulum's, equal to a simple one of length (k² + h²)/h, 2π·√((k² + h²)/(g·h)).
+
+    >>> round(pendulum_period(0.0, 1.0), 9) == round(2 * 3.141592653589793 / 9.81 ** 0.5, 9)
+    True
+    """
+    return 2.0 * float(np.pi) * float(np.sqrt((radius_of_gyration ** 2 + h * h) / (g * h)))

@@ -13,7 +13,9 @@ length = 250                # between the centres of the gudgeon pin and the cra
 ends = ["P", "A"]           # the gudgeon pin's name and the crank pin's (these by default)
 centre = 100                # G's distance from the pin centre_from names
 centre_from = "P"           # the gudgeon pin by default
-radius_of_gyration = 110    # k about G; or inertia = 0.0242 (kg·m²)
+radius_of_gyration = 110    # k about G; or inertia = 0.0242 (kg·m²), or a pendulum
+                            # test: oscillations = { count = 35, seconds = 60, about = "P",
+                            # bore = 60 } (hung on a knife edge in P's bore)
 alpha = 23000               # rad/s², the rod's angular acceleration
 alpha_sense = "cw"          # or "ccw"; without it, alpha is + counter-clockwise
 one_mass_at = "P"           # the pin the equivalent system's first mass is at
@@ -35,6 +37,7 @@ from tarsim.constructions.forces.equivalent import RodLine
 from tarsim.constructions.units import LENGTH_UNITS
 from ..names import named_in, read_names, renamed_field
 from ..table_file import Tables
+from .pendulum import pendulum_inertia
 
 __all__ = ["ROD_ASKS", "RodExercise", "parse_rod"]
 
@@ -49,7 +52,7 @@ _NEEDS_INERTIA = ("equivalent_masses", "equivalent_inertia", "correction_couple"
 
 _TOP = ("name", "names", "source", "description", "units", "rod", "ask")
 _KEYS = {"rod": ("mass", "length", "ends", "centre", "centre_from", "radius_of_gyration",
-                 "inertia", "alpha", "alpha_sense", "one_mass_at"),
+                 "inertia", "oscillations", "alpha", "alpha_sense", "one_mass_at"),
          "ask": ("find",)}
 
 
@@ -78,6 +81,9 @@ class RodExercise:
     """The rod's angular acceleration (rad/s², + counter-clockwise)."""
     length_unit: str = "mm"
     names: tuple[tuple[str, str], ...] = ()
+    pendulum: tuple[float, float, str, bool] | None = None
+    """The pendulum test I_G came from: its period (s), G's distance below the point of
+    suspension (m), the pin it hung from, and whether on a knife edge in its bore."""
 
     @property
     def second(self) -> str:
@@ -148,11 +154,17 @@ def parse_rod(text: str, filename: str = "<string>", exercise_id: str = "rod",
         raise t.fail(f"G stands {c:g} {length_unit} from {centre_from}, not between the pins "
                      f"{length:g} {length_unit} apart: give centre < length", "rod", "centre")
     centre = c if centre_from == ends[0] else length - c
-    if "inertia" in r and "radius_of_gyration" in r:
-        raise t.fail("give the rod's radius_of_gyration about G or its inertia, not both",
-                     "rod", "inertia")
-    inertia = 0.0
-    if "radius_of_gyration" in r:
+    given = [key for key in ("radius_of_gyration", "inertia", "oscillations") if key in r]
+    if len(given) > 1:
+        raise t.fail("give the rod's radius_of_gyration about G, its inertia or a pendulum "
+                     "test (oscillations), one of them", "rod", given[1])
+    inertia, pendulum = 0.0, None
+    if "oscillations" in r:
+        hung = _Hung(ends, length * metre)
+        inertia, _, pendulum = pendulum_inertia(
+            r["oscillations"], hung, mass, (centre * metre, 0.0), metre,
+            lambda message: t.fail(message, "rod", "oscillations"))
+    elif "radius_of_gyration" in r:
         k = positive("radius_of_gyration", f"the radius of gyration about G ({length_unit})")
         inertia = mass * (k * metre) ** 2
     elif "inertia" in r:
@@ -178,7 +190,24 @@ def parse_rod(text: str, filename: str = "<string>", exercise_id: str = "rod",
     name = _text(t, "name", exercise_id)
     return RodExercise(exercise_id, name, _text(t, "source", ""), _text(t, "description", ""),
                        rod, "inertia" in r, ends, centre_from, one, find, alpha,
-                       length_unit, read_names(t.data, t.where, filename))
+                       length_unit, read_names(t.data, t.where, filename), pendulum)
+
+
+@dataclass(frozen=True)
+class _Hung:
+    """The rod as a pendulum test sees it (:func:`~.pendulum.pendulum_inertia`): its two pins
+    on its line of centres, the gudgeon pin at 0."""
+
+    names: tuple[str, str]
+    length: float
+
+    label = "the rod"
+
+    def carries(self, point: str) -> bool:
+        return point in self.names
+
+    def local(self, point: str) -> tuple[float, float]:
+        return (0.0 if point == self.names[0] else self.length, 0.0)
 
 
 def _read_find(t: Tables, has_inertia: bool, alpha: float | None) -> tuple[str, ...]:

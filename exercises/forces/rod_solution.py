@@ -23,8 +23,8 @@ from typing import Any
 from tarsim.constructions.forces.equivalent import (Equivalent, equivalent_masses, pin_masses,
                                                     rod_couple)
 from tarsim.constructions.narration import numeral, phrase, words
-from tarsim.constructions.reference.rod_equivalent import (second_moment, second_point,
-                                                           two_masses)
+from tarsim.constructions.reference.rod_equivalent import (pendulum_period, second_moment,
+                                                           second_point, two_masses)
 from tarsim.constructions.units import LENGTH_UNITS
 from ..checked import Checked
 from ..solution_folder import ChapterFiles
@@ -104,13 +104,20 @@ class RodSolution(ChapterFiles):
             out["equivalent_inertia"] = _check(self.pins_inertia, ref_inertia,
                                                "Σ m·x² of the two pin masses", unit="kg·m²")
             out["rod_inertia"] = Checked({"value": rod.inertia, "unit": "kg·m²"},
-                                         method="given" if ex.given_inertia else "m·k²")
+                                         method="given" if ex.given_inertia else
+                                         "pendulum test" if ex.pendulum else "m·k²")
         if "correction_couple" in ex.find:
             ref = (ref_inertia - rod.inertia) * ex.alpha
             out["correction_couple"] = _check(
                 self.couple, ref, "(Σ m·x² of the pin masses − I_G)·α",
                 scale=ref_inertia * abs(ex.alpha), unit="N·m",
                 sense="ccw" if self.couple > 0 else "cw" if self.couple < 0 else "none")
+        if ex.pendulum is not None:      # k found from the period gives the period back
+            period, h, _, _ = ex.pendulum
+            k = math.sqrt(rod.inertia / rod.mass)
+            out["pendulum_period"] = _check(period, pendulum_period(k, h),
+                                            "compound pendulum, 2π·√((k² + h²)/(g·h))",
+                                            unit="s")
         if "rod_radius_of_gyration" in ex.find:
             x2 = second_point(rod.mass, x_p, rod.inertia)
             ref = math.sqrt(second_moment(two_masses(rod.mass, x_p, x2), (x_p, x2)) / rod.mass)

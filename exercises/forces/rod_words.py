@@ -16,6 +16,12 @@ def steps(sol) -> list[str]:
                  "{a} {length} from it, and G {gp} from {p} ({ga} from {a}).", p=p, a=a,
                  length=sol.length(rod.length), gp=sol.length(rod.to_gudgeon),
                  ga=sol.length(rod.to_crank))]
+    if ex.pendulum is not None and ex.find != ("pin_masses",):
+        period, h, about, bore = ex.pendulum
+        out.append(words("Hung from {about}" + (" on a knife edge in its bore" if bore else "")
+                         + ", G {h} below, it swings once in T = {t} s: as a compound "
+                         "pendulum T = 2π·√((k² + h²)/(g·h)), so k = √(g·h·T²/(4π²) − h²).",
+                         about=about, h=sol.length(h), t=numeral(period)))
     if ex.find != ("pin_masses",):
         out.append(words("The rod's moment of inertia about G: I_G = m·k² = {i} kg·m², k = "
                          "{k}.", i=numeral(rod.inertia),
