@@ -108,3 +108,27 @@ def test_a_four_bar_has_no_stroke_to_travel(tmp_path):
     path.write_text(text, encoding="utf-8")
     run = CliRunner().invoke(cli, ["solve", str(path), "-o", str(tmp_path / "o"), "--no-pdf"])
     assert run.exit_code == 1 and "needs a crank driving a block" in run.output, run.output
+
+
+def test_en2_vertical_travel(tmp_path):
+    """A vertical engine (r 80, l 320 mm), the piston 40 mm down from the t.d.c.: the angle
+    the crank has turned from the t.d.c. is asked, and the position is said from the t.d.c."""
+    from pathlib import Path
+    path = Path(__file__).parent / "reproducers" / "en2-vertical-travel.toml"
+    run = CliRunner().invoke(cli, ["solve", str(path), "-o", str(tmp_path / "o"), "--no-pdf"])
+    assert run.exit_code == 0, run.output
+    position = json.loads((tmp_path / "o" / "results.json").read_text())["positions"][0]
+    turned = position["turned_from_dead_centre"]
+    r, rod = 80.0, 320.0
+
+    def travel(t):           # the piston's travel from the t.d.c., the crank turned t
+        return r * (1 - math.cos(t)) + rod - math.sqrt(rod * rod - (r * math.sin(t)) ** 2)
+
+    lo, hi = 0.0, math.pi    # travel rises over the out-stroke: bisect it to the last bit
+    for _ in range(200):
+        mid = (lo + hi) / 2
+        lo, hi = (mid, hi) if travel(mid) < 40.0 else (lo, mid)
+    # the section search stops within a few ulps of the crank angle
+    assert turned["value"] == pytest.approx(lo, abs=1e-12)
+    assert turned["from"] == "t.d.c." and "from the t.d.c." in position["position"]
+    assert "the crank 54.3147° past it" in position["position"]

@@ -51,7 +51,7 @@ if TYPE_CHECKING:
     from ..grading.drafting import Drafting
 from ..file_numbers import RANGE, _float, arithmetic, in_range, radians_in_turn
 from .mechanism_file import _Reader
-from .travel_positions import TRAVEL_KEYS, crank_angle_at_travel
+from .travel_positions import TRAVEL_KEYS, crank_angle_at_travel, dead_centre_word
 from ..toml_source import SourceMap, read_source, read_toml
 
 __all__ = ["Exercise", "Position", "load_exercise", "parse_exercise", "asks_of"]
@@ -72,6 +72,9 @@ class Position:
     """As the figures and steps.md say it: "θ2 = 90°" or "t = 2.34 s (θ2 = −44.07°)"."""
     slug: str
     """As file names carry it: "theta2-90" or "t-2.34s"."""
+    turned: tuple[float, str] | None = None
+    """For a position by the piston's travel: the angle (rad) the crank has turned from
+    the dead centre the travel is measured from, and that centre's name ("t.d.c.")."""
 
 
 @dataclass(frozen=True)
@@ -405,15 +408,17 @@ def _by_travel(mech: Mechanism, key: str, value, deg: bool, fail) -> Position:
                    f"got {value:g}", "at")
     d = mech.drive
     try:
-        angle, moved, _ = crank_angle_at_travel(
+        angle, moved, _, turned = crank_angle_at_travel(
             mech, share=value if key == "stroke" else None,
             travel=value * mech.units.metres if key == "travel" else None)
     except ValueError as e:
         raise fail(str(e), "at") from None
     shown = f"{value:g} of the stroke" if key == "stroke" else ""
-    label = (f"{significant(moved / mech.units.metres)} {mech.units.length} from the i.d.c."
-             f"{' (' + shown + ')' if shown else ''}, θ{d.link} = {_angle_text(angle, deg)}")
-    return Position(replace(d, angle=angle), label, f"{key}-{value:g}")
+    centre = dead_centre_word(mech)
+    label = (f"{significant(moved / mech.units.metres)} {mech.units.length} from the {centre}"
+             f"{' (' + shown + ')' if shown else ''}, the crank {_angle_text(turned, deg)} past "
+             f"it, θ{d.link} = {_angle_text(angle, deg)}")
+    return Position(replace(d, angle=angle), label, f"{key}-{value:g}", (turned, centre))
 
 
 def _read_scales(given, mech: Mechanism, fail) -> dict[str, float]:

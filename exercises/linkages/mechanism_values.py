@@ -120,7 +120,8 @@ class TableReader:
                **where) -> float:
         """A finite number, no larger than :data:`LARGEST` if ``bounded``; with ``size`` (a
         length, a rate) none smaller than its reciprocal either, but 0. Arithmetic of
-        numbers in a string ("120/2", the crank as half the stroke; "10*pi") is taken at its value."""
+        numbers in a string ("120/2", the crank as half the stroke; "10*pi") is taken at
+        its value."""
         exact = arithmetic(v, pi=True) if isinstance(v, str) else None
         if exact is not None:
             v = _float(exact)

@@ -53,6 +53,9 @@ def _position(s: Solution) -> dict[str, Any]:
                   "omega": d.omega,
                   "alpha": d.alpha, "alpha_given": d.alpha_given},
         **({"position": s.position.label} if s.position else {}),
+        **({"turned_from_dead_centre": {"value": s.position.turned[0], "unit": "rad",
+                                        "from": s.position.turned[1]}}
+           if s.position and s.position.turned else {}),
         "quantities": {name: checked(q, s.exercise.mechanism).entry()
                        for name, q in s.quantities.items()},
         "notes": s.notes_in("en"),            # data, not prose: one language

@@ -24,17 +24,18 @@ from tarsim.constructions.reference.limits import limit_reference, section_zero
 from tarsim.constructions.reference.solver import solve_positions
 from tarsim.constructions.reference.turn import solve_turn
 
-__all__ = ["TRAVEL_KEYS", "crank_angle_at_travel"]
+__all__ = ["TRAVEL_KEYS", "crank_angle_at_travel", "dead_centre_word"]
 
 TRAVEL_KEYS = ("stroke", "travel")
 """``at``'s keys for a position by the piston's travel: a share of the stroke, or a length."""
 
 
 def crank_angle_at_travel(mech: Mechanism, *, share: float | None = None,
-                          travel: float | None = None) -> tuple[float, float, float]:
+                          travel: float | None = None) -> tuple[float, float, float, float]:
     """The crank angle (rad) on the out-stroke where the piston has travelled ``share`` of
     its stroke (or ``travel`` metres) from the inner dead centre; with the travel and the
-    stroke (m).
+    stroke (m), and the angle (rad) the crank has turned from the inner dead centre, as the
+    books ask it ("the angle turned by the crank from the t.d.c.").
 
     Raises
     ------
@@ -77,8 +78,16 @@ def crank_angle_at_travel(mech: Mechanism, *, share: float | None = None,
         return np.abs(place(thetas) - start) - wanted
 
     if wanted <= 0.0:
-        return inner % math.tau, wanted, stroke
+        return inner % math.tau, wanted, stroke, 0.0
     if wanted >= stroke:
-        return outer % math.tau, wanted, stroke
+        return outer % math.tau, wanted, stroke, span
     theta = section_zero(short, inner, inner + sense * span, -wanted)
-    return theta % math.tau, wanted, stroke
+    return theta % math.tau, wanted, stroke, (sense * (theta - inner)) % math.tau
+
+
+def dead_centre_word(mech: Mechanism) -> str:
+    """How the books name the dead centre a piston's travel starts from: the top dead centre
+    of a vertical engine (its line of stroke within a degree of upright), else the inner."""
+    point = stroke_point(mech)
+    slide = next(s for s in mech.slides if s.point == point and s.guide_link == 1)
+    return "t.d.c." if abs(slide.direction[0]) < math.sin(math.radians(1)) else "i.d.c."
