@@ -21,6 +21,7 @@ from tarsim.constructions.narration import spoken
 from tarsim.graphics.export import (RenderError, cairo_missing, figure_pdf, figure_pngs,
                                     write_folder)
 from tarsim.graphics.figure import Figure
+from tarsim.graphics.paper import on_sheet, paper
 from tarsim.graphics.svg import to_svg
 from tarsim.graphics.workers import draw_each
 
@@ -104,9 +105,17 @@ class ChapterFiles:
         """results.json's document: every quantity in SI beside its reference."""
         return results_document(self.exercise.id, self.checked)
 
+    def sheets(self) -> dict[str, Figure]:
+        """Each figure by its file stem, centred on a sheet of the exercise's paper (A4
+        unless it says), upright or turned, as its SVG and PDF print it: a page a printer
+        takes, the figure at its own size."""
+        sheet = paper(getattr(self.exercise, "paper", "A4"))
+        return {stem: fig if fig.sheets else on_sheet(fig, sheet)
+                for stem, fig in self.figures.items()}
+
     def files(self) -> dict[str, str]:
         """Every file as text, by name."""
-        files = {f"{stem}.svg": to_svg(fig) for stem, fig in self.figures.items()}
+        files = {f"{stem}.svg": to_svg(fig) for stem, fig in self.sheets().items()}
         files["steps.md"] = self.steps()
         files["results.json"] = results_text(self.results)
         return files
@@ -121,4 +130,4 @@ class ChapterFiles:
         """Write the files into ``folder`` (with a PDF of each figure when ``pdf``, a PNG of
         each at ``png_dpi``), all or nothing."""
         return write_solution(self.files(), folder, pdf=pdf, png_dpi=png_dpi,
-                              figures={f"{stem}.pdf": fig for stem, fig in self.figures.items()})
+                              figures={f"{stem}.pdf": fig for stem, fig in self.sheets().items()})

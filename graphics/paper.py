@@ -4,6 +4,9 @@ A figure is drawn at its scale first, then set on the sheet, upright or turned,
 whichever holds it, and centred there; the page is the sheet itself, so a figure
 printed at 100 % measures true with a ruler. The drawing areas its scales are chosen
 for (:func:`room`) grow with the sheet, so a bigger sheet draws the mechanism bigger.
+A figure no sheet of the paper asked for holds (one drawn at a scale the exercise
+states) is set on the smallest bigger standard sheet that holds it (:func:`grown`):
+every page a printer takes.
 """
 
 from __future__ import annotations
@@ -14,7 +17,8 @@ from tarsim.constructions.errors import InputError
 from tarsim.constructions.scales import ROOM
 from .figure import Figure, _shifted
 
-__all__ = ["Paper", "PAPERS", "paper", "room", "on_sheet", "sheet_size"]
+__all__ = ["Paper", "PAPERS", "BIGGER", "paper", "room", "on_sheet", "sheet_size", "grown",
+           "standard", "sheet_name"]
 
 
 @dataclass(frozen=True)
@@ -34,6 +38,13 @@ class Paper:
 PAPERS = {p.name: p for p in (Paper("A4", 210.0, 297.0), Paper("A3", 297.0, 420.0),
                               Paper("letter", 215.9, 279.4))}
 """The sheets a figure may be set on, by name."""
+
+BIGGER = {"A4": ("A3", "A2", "A1", "A0"), "A3": ("A2", "A1", "A0"),
+          "letter": ("tabloid", "A2", "A1", "A0")}
+"""The standard sheets, smallest first, a figure too big for a paper is set on instead."""
+
+_GROWN = {p.name: p for p in (Paper("A2", 420.0, 594.0), Paper("A1", 594.0, 841.0),
+                              Paper("A0", 841.0, 1189.0), Paper("tabloid", 279.4, 431.8))}
 
 _BASE = PAPERS["A4"]
 
@@ -74,10 +85,49 @@ def sheet_size(fig: Figure, sheet: Paper) -> tuple[float, float] | None:
     return max(sizes, key=lambda s: min(s[0] - fig.width, s[1] - fig.height), default=None)
 
 
+def grown(fig: Figure, sheet: Paper) -> Paper:
+    """``sheet`` if it holds ``fig``, else the smallest standard sheet bigger than it that
+    does (:data:`BIGGER`): a figure is never shrunk, its page grows a sheet size.
+
+    >>> grown(Figure(228.0, 236.0), PAPERS["A4"]).name
+    'A3'
+    """
+    bigger = [PAPERS.get(name) or _GROWN[name] for name in BIGGER.get(sheet.name, BIGGER["A4"])]
+    for each in (sheet, *bigger):
+        if sheet_size(fig, each) is not None:
+            return each
+    return each
+
+
+def sheet_name(width: float, height: float) -> str:
+    """The name of the standard sheet ``width`` × ``height`` mm is, either way up (its size
+    in mm if none is).
+
+    >>> sheet_name(420.0, 297.0), sheet_name(100.0, 50.0)
+    ('A3', '100 × 50 mm')
+    """
+    for sheet in (*PAPERS.values(), *_GROWN.values()):
+        if sorted((round(width, 1), round(height, 1))) == sorted((sheet.width, sheet.height)):
+            return sheet.name
+    return f"{width:.0f} × {height:.0f} mm"
+
+
+def standard(width: float, height: float, sheet: Paper) -> tuple[float, float]:
+    """The page, upright or turned, of the smallest standard sheet from ``sheet`` up
+    (:func:`grown`) that holds ``width`` × ``height`` mm.
+
+    >>> standard(298.7, 210.0, PAPERS["A4"])
+    (420.0, 297.0)
+    """
+    return sheet_size(Figure(width, height), grown(Figure(width, height), sheet)) or (
+        width, height)
+
+
 def on_sheet(fig: Figure, sheet: Paper) -> Figure:
     """``fig`` centred on ``sheet`` (upright or turned, :func:`sheet_size`), the page the
-    sheet; a figure neither way holds keeps its own page (it is never shrunk)."""
-    size = sheet_size(fig, sheet)
+    sheet; a figure neither way holds is set on the smallest bigger standard sheet that
+    holds it (:func:`grown`: it is never shrunk)."""
+    size = sheet_size(fig, grown(fig, sheet))
     if size is None:
         return fig
     dx, dy = (size[0] - fig.width) / 2, (size[1] - fig.height) / 2

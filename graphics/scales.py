@@ -14,6 +14,7 @@ from tarsim.constructions.scales import Stated, nice_per_cm
 
 from .figure import Figure, Path, Text, text_width, wrap_text
 from .rtl import reading
+from .wrapping import wrap_formulas
 
 __all__ = ["nice_per_cm", "scale_text", "paper_ratio", "bar_room", "draw_scale_bar", "number_text",
            "draw_caption"]
@@ -66,13 +67,8 @@ def scale_text(per_cm: float, unit: str) -> str:
 
 def _statement(paper_cm: str, amount: float, unit: str) -> str:
     """"k cm = N unit" in the language being spoken (the amount in its digits)."""
-    return (f"{numerals(paper_cm)} {unit_words('cm')} = {numerals(number_text(amount))}"
-            f"{_after(unit)}")
-
-
-def _after(unit: str) -> str:
-    """A unit as it follows its number: after a space, the degree sign set close ("30°")."""
-    return unit if unit == "°" else f" {unit_words(unit)}"
+    return (f"{numerals(paper_cm)} {unit_words('cm')} = {numerals(number_text(amount))} "
+            f"{unit_words(unit)}")
 
 
 def _bar(per_cm: float, unit: str) -> tuple[int, float, str]:
@@ -109,7 +105,7 @@ def draw_scale_bar(fig: Figure, at: tuple[float, float], per_cm: float, unit: st
         fig.add(Path(((xa, y0 - h / 2), (xb, y0 - h / 2), (xb, y0 + h / 2), (xa, y0 + h / 2)),
                      style, closed=True))
     for i in ticks:
-        label = numerals(number_text(per_cm * i)) + (_after(unit) if i == cm else "")
+        label = numerals(number_text(per_cm * i)) + (f" {unit_words(unit)}" if i == cm else "")
         fig.add(Text((x0 + 10.0 * i, y0 + h / 2 + 2.4), label, size=2.6,
                      anchor="middle" if i < cm else "start", italic=False))
     return 10.0 * cm
@@ -123,6 +119,15 @@ def _heading(text: str) -> Text:
     return Text((0.0, 0.0), text[:m.start(2) - 1], 3.6, "start", italic=False, weight="bold",
                 sub=m.group(2), tail=text[m.end(2):])
 
+
+_CAPTION_ROW = 174.0
+"""The widest a caption runs (mm) unless its drawing is wider: an A4 sheet upright holds
+it within its margins (190 mm), with the caption's own (2 × 8 mm). A longer heading or
+line is wrapped, never inside a formula (:func:`~tarsim.graphics.wrapping.wrap_formulas`),
+so that a caption never makes its figure wider than the drawing and a sheet."""
+
+_TEXT_COLUMN = 90.0
+"""The narrowest a caption's heading and lines are wrapped to (mm)."""
 
 _LEGEND_ROW = 160.0
 """The widest a legend's row runs (mm) before it wraps, unless the drawing is wider."""
@@ -143,15 +148,26 @@ def _legend_rows(legend: Sequence[tuple[str, str]], room: float
     return rows
 
 
-def draw_caption(fig: Figure, heading: str, lines: Sequence[str], *, per_cm: float | None,
-                 unit: str, legend: Sequence[tuple[str, str]] = (), notes: Sequence[str] = (),
+def _wrapped(heading: str, lines: Sequence[str], room: float
+             ) -> tuple[list[Text], list[str]]:
+    """The heading's lines (bold, each its first ``X_Y`` subscripted) and the lines under
+    it, each wrapped to ``room`` mm where it is wider."""
+    heads = ([heading] if _heading(heading).width <= room else
+             wrap_formulas(heading, 3.6, room, measure=lambda t: _heading(t).width))
+    return ([_heading(h) for h in heads],
+            [part for line in lines
+             for part in ([line] if text_width(line, 3.2) <= room else
+                          wrap_formulas(line, 3.2, room))])
+
+
+def draw_caption(fig: Figure, heading: str, lines: Sequence[str], *, per_cm: float, unit: str,
+                 legend: Sequence[tuple[str, str]] = (), notes: Sequence[str] = (),
                  margin: float = 8.0, scale_name: str = "Scale",
                  second: tuple[str, float, str] | None = None) -> None:
     """Move the drawing in from a ``margin`` and set the caption under it; size the page.
 
     Left: the bold ``heading`` and ``lines``. Right: the scale statement, which
-    ``scale_name`` opens ("Velocity scale 1 cm = 5 mm/s"), and its bar (none when ``per_cm``
-    is None: panels that state scales of their own); then, if given,
+    ``scale_name`` opens ("Velocity scale 1 cm = 5 mm/s"), and its bar; then, if given,
     a ``second`` scale (name, per cm, unit) and its bar, as for the velocities drawn on
     a space diagram. Under both: a ``legend`` of (style, name) line samples, then
     ``notes``. In a right-to-left language the caption is mirrored: heading, lines, legend
@@ -164,14 +180,15 @@ def draw_caption(fig: Figure, heading: str, lines: Sequence[str], *, per_cm: flo
     x0, y0, x1, y1 = fig.bounds()
     fig.shift(margin - x0, margin - y0)
     fig.drawing = (x1 - x0, y1 - y0)
-    head = _heading(heading)
-    scales = ([] if per_cm is None else [(words(scale_name), per_cm, unit)]) + (
-        [(words(second[0]), *second[1:])] if second else [])
+    scales = [(words(scale_name), per_cm, unit)] + ([(words(second[0]), *second[1:])]
+                                                    if second else [])
     legend = [(style, words(name)) for style, name in legend]
     texts = [f"{name} {scale_text(per, u)}" for name, per, u in scales]
-    left = max([head.width] + [text_width(t, 3.2) for t in lines])
     right = max([text_width(t, 3.2) for t in texts]
-                + [bar_room(per, u) for _, per, u in scales], default=0.0)
+                + [bar_room(per, u) for _, per, u in scales])
+    heads, lines = _wrapped(heading, lines, max(max(x1 - x0, _CAPTION_ROW) - right - 8.0,
+                                                _TEXT_COLUMN))
+    left = max([h.width for h in heads] + [text_width(t, 3.2) for t in lines])
     legend_w = max((sum(18.0 + text_width(name, 2.8) for _, name in row)
                     for row in _legend_rows(legend, max(x1 - x0, left + right + 8.0,
                                                         _LEGEND_ROW))), default=0.0)
@@ -186,8 +203,10 @@ def draw_caption(fig: Figure, heading: str, lines: Sequence[str], *, per_cm: flo
     # The reading edge a text line starts from: the left margin, or the right one.
     edge, anchor, way = reads.x(margin), reads.anchor, reads.way
     top = y1 - y0 + 2 * margin
-    y = top + 3.0
-    fig.add(Text((edge, y), head.text, head.size, anchor, False, "bold", head.sub, head.tail))
+    y = top + 3.0 - 4.6
+    for head in heads:
+        y += 4.6
+        fig.add(Text((edge, y), head.text, head.size, anchor, False, "bold", head.sub, head.tail))
     for text in lines:
         y += 5.2
         fig.add(Text((edge, y), text, 3.2, anchor, italic=False))
@@ -196,7 +215,7 @@ def draw_caption(fig: Figure, heading: str, lines: Sequence[str], *, per_cm: flo
         x = bar_x + right if reads.rtl else bar_x
         fig.add(Text((x, top + 3.0 + 13.0 * k), text, 3.2, anchor, italic=False))
         draw_scale_bar(fig, (bar_x, top + 8.0 + 13.0 * k), per, u)
-    y = max(y + 5.2, top + 15.0 + 13.0 * (len(scales) - 1) if scales else 0.0)
+    y = max(y + 5.2, top + 15.0 + 13.0 * (len(scales) - 1))
     for row in _legend_rows(legend, width - 2 * margin):
         x = edge
         for style, name in row:

@@ -82,8 +82,10 @@ def test_a_figure_is_centred_on_the_sheet_that_holds_it():
     placed = on_sheet(fig, PAPERS["A4"])
     assert (placed.width, placed.height) == (297.0, 210.0)      # wide: on its side
     assert placed.items[0].at == pytest.approx((148.5, 105.0))
-    big = Figure(300.0, 300.0)
-    assert on_sheet(big, PAPERS["A4"]) is big                  # never shrunk
+    big = on_sheet(Figure(300.0, 300.0, [Text((150.0, 150.0), "x")]), PAPERS["A4"])
+    # Never shrunk: set on the smallest standard sheet that holds it (A3 is 297 mm wide).
+    assert (big.width, big.height) == (420.0, 594.0)
+    assert big.items[0].at == pytest.approx((210.0, 297.0))
 
 
 def test_an_unknown_paper_is_refused_naming_those_there_are():
@@ -94,10 +96,15 @@ def test_an_unknown_paper_is_refused_naming_those_there_are():
     assert "'B5' is not one of" in result.output
 
 
-def test_solve_says_which_figure_its_stated_scale_puts_past_the_sheet(tmp_path):
-    result = run("solve", "crank-shaper", "-o", tmp_path / "cs", "--no-pdf")
+def test_solve_says_which_figure_its_stated_scale_puts_on_a_bigger_sheet(tmp_path):
+    # The crank-shaper at twice the books' scale (14 cm = 500 mm): its drawing, some
+    # 150 × 340 mm, no A4 sheet holds, either way up; an A3 sheet does.
+    text = (bundled()["crank-shaper"].read_text(encoding="utf-8")
+            .replace('"7 cm = 500 mm"', '"14 cm = 500 mm"'))
+    (tmp_path / "big.toml").write_text(text, encoding="utf-8")
+    result = run("solve", tmp_path / "big.toml", "-o", tmp_path / "cs", "--no-pdf")
     assert result.exit_code == 0, result.output
-    assert re.search(r"note: centres-t-2\.34s at the exercise's scale is \d+ × \d+ mm, more "
-                     r"than A4 holds", result.output)
-    a3 = run("solve", "crank-shaper", "-o", tmp_path / "a3", "--no-pdf", "--paper", "A3")
-    assert a3.exit_code == 0 and "exercise's scale is" not in a3.output
+    assert re.search(r"note: centres-t-2\.34s at the exercise's scale is more than A4 holds: "
+                     r"it is set on A3 \(297 × 420 mm\)", result.output), result.output
+    svg = (tmp_path / "cs" / "centres-t-2.34s.svg").read_text(encoding="utf-8")
+    assert 'width="297mm" height="420mm"' in svg or 'height="420mm"' in svg

@@ -28,7 +28,7 @@ from tarsim.graphics.figure import Figure
 from tarsim.graphics.figure_kinds import FigureOrder, comes_last, plan_figure
 from tarsim.graphics.svg import stacked_svg, to_svg
 from tarsim.graphics.workers import draw_each
-from tarsim.graphics.paper import paper, room
+from tarsim.graphics.paper import paper, room, sheet_name
 
 from ..solution_folder import write_solution
 from ..worked_document import Section, markdown, title
@@ -213,8 +213,8 @@ class WorkedSolution:
             out += [f"note: {note}" for note in sol.notes]
         at = ("at the exercise's scale" if ex.mechanism.scale
               else "even at the coarsest scale it is drawn at")
-        out += [f"note: {stem} {at} is {w:.0f} × {h:.0f} mm, more than {ex.paper} holds; its "
-                "page is that size (--paper A3 may hold it)"
+        out += [f"note: {stem} {at} is more than {ex.paper} holds: it is set on "
+                f"{sheet_name(w, h)} ({w:.0f} × {h:.0f} mm)"
                 for stem, (w, h) in self.oversize().items()]
         return out
 

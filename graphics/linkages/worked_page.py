@@ -22,7 +22,9 @@ from tarsim.constructions.narration import right_to_left, words
 
 from ..figure import Figure, Path, Text, text_width, wrap_text
 from ..rtl import is_rtl, reading
+from ..paper import Paper, standard
 from ..typeset import typeset
+from ..wrapping import wrap_formulas
 
 __all__ = ["compose_worked_page", "compose_worked_sheets", "holds_panel", "A3"]
 
@@ -111,16 +113,35 @@ def compose_worked_sheets(title: str, panels: Sequence[Figure], table: Sequence[
     """
     results = _results(panels, table, notes)
     items: list[Figure] = [*panels, results]
-    sheets, i = [], 0
+    later = words("{title} (continued)", title=title)
+    groups, i = [], 0
     while i < len(items):
-        j, size = _most_held(items[i:], sheet)
-        head = title if not sheets else words("{title} (continued)", title=title)
-        group = items[i:i + j]
-        last = i + j == len(items)
-        sheets.append(_sheet(head, group[:-1] if last else group, results if last else None,
-                             size))
+        j, size = _most_held(items[i:], sheet, title if not groups else later)
+        groups.append((items[i:i + j], size))
         i += j
+    groups = _balanced(groups, sheet, later)
+    sheets = []
+    for k, (group, size) in enumerate(groups):
+        last = k == len(groups) - 1
+        sheets.append(_sheet(title if not k else later, group[:-1] if last else group,
+                             results if last else None, size))
     return sheets
+
+
+def _balanced(groups: list[tuple[list[Figure], tuple[float, float]]],
+              sheet: tuple[float, float], title: str
+              ) -> list[tuple[list[Figure], tuple[float, float]]]:
+    """``groups`` with a results table left alone on the last sheet given the panels
+    before it that sheet also holds (the last of the sheet before, while that keeps one):
+    a table stands beside a figure where one fits, not on a sheet of its own."""
+    while len(groups) > 1 and len(groups[-1][0]) == 1 and len(groups[-2][0]) > 1:
+        moved = [groups[-2][0][-1], *groups[-1][0]]
+        j, size = _most_held(moved, sheet, title)
+        if j < len(moved):
+            break
+        before, at = groups[-2]
+        groups = [*groups[:-2], (before[:-1], at), (moved, size)]
+    return groups
 
 
 def _results(panels: Sequence[Figure], table: Sequence[Sequence[str]],
@@ -135,9 +156,21 @@ def _results(panels: Sequence[Figure], table: Sequence[Sequence[str]],
     return _draw_results(table, notes)
 
 
-def _room(size: tuple[float, float]) -> tuple[float, float]:
-    """What a sheet of ``size`` holds under its title, within its margins."""
-    return size[0] - 2 * _MARGIN, size[1] - _MARGIN - 2.0 * _TITLE - _MARGIN
+def _title_lines(title: str, size: tuple[float, float]) -> list[str]:
+    """The page's title broken to the width of a sheet of ``size`` within its margins,
+    never inside a formula."""
+    return wrap_formulas(title, _TITLE, size[0] - 2 * _MARGIN,
+                         measure=lambda t: Text((0.0, 0.0), t, _TITLE, weight="bold").width)
+
+
+def _top(title: str, size: tuple[float, float]) -> float:
+    """Where the panels start on a sheet of ``size``: under its title's lines."""
+    return _MARGIN + (len(_title_lines(title, size)) + 1) * _TITLE
+
+
+def _room(size: tuple[float, float], title: str = "") -> tuple[float, float]:
+    """What a sheet of ``size`` holds under its ``title``, within its margins."""
+    return size[0] - 2 * _MARGIN, size[1] - _top(title, size) - _MARGIN
 
 
 def holds_panel(sheet: tuple[float, float], panel: Figure) -> bool:
@@ -147,7 +180,7 @@ def holds_panel(sheet: tuple[float, float], panel: Figure) -> bool:
                for r in (_room((max(sheet), min(sheet))), _room((min(sheet), max(sheet)))))
 
 
-def _most_held(items: Sequence[Figure], sheet: tuple[float, float]
+def _most_held(items: Sequence[Figure], sheet: tuple[float, float], title: str = ""
                ) -> tuple[int, tuple[float, float]]:
     """How many of ``items`` (panels, the results last) one sheet holds, the most first,
     and the sheet's size, on its side or upright: landscape first, as panels sit side by
@@ -159,7 +192,7 @@ def _most_held(items: Sequence[Figure], sheet: tuple[float, float]
         panels = group[:-1] if ends else group
         foot = (group[-1].width, group[-1].height) if ends else (0.0, 0.0)
         for size in sizes:
-            room = _room(size)
+            room = _room(size, title)
             _, (w, h) = _choose_layout([(p.width, p.height) for p in panels] or [(0.0, 0.0)],
                                        foot, room)
             if w <= room[0] + 1e-9 and h <= room[1] + 1e-9:
@@ -169,17 +202,21 @@ def _most_held(items: Sequence[Figure], sheet: tuple[float, float]
 
 def _sheet(title: str, panels: Sequence[Figure], results: Figure | None,
            size: tuple[float, float]) -> Figure:
-    """One sheet of ``size`` (grown if it must be): the title, the panels framed, then the
-    results if given."""
-    top = _MARGIN + 2.0 * _TITLE
+    """One sheet of ``size`` (grown to the smallest standard sheet that holds them if it
+    must be, :func:`~tarsim.graphics.paper.standard`): the title, the panels framed, then
+    the results if given."""
+    top = _top(title, size)
     foot = (results.width, results.height) if results is not None else (0.0, 0.0)
     sizes = [(p.width, p.height) for p in panels] or [(0.0, 0.0)]
-    spots, (w, h) = _choose_layout(sizes, foot, _room(size))
-    page = Figure(round(max(size[0], w + 2 * _MARGIN), 1),
-                  round(max(size[1], top + h + _MARGIN), 1), title=title)
+    spots, (w, h) = _choose_layout(sizes, foot, _room(size, title))
+    needs = (w + 2 * _MARGIN, top + h + _MARGIN)
+    if needs[0] > size[0] + 1e-9 or needs[1] > size[1] + 1e-9:
+        size = standard(*needs, Paper("", min(size), max(size)))
+    page = Figure(size[0], size[1], title=title)
     reads = reading(page.width)
-    page.add(Text((reads.x(_MARGIN), _MARGIN + _TITLE / 2), title, _TITLE, reads.anchor,
-                  italic=False, weight="bold"))
+    for k, line in enumerate(_title_lines(title, size)):
+        page.add(Text((reads.x(_MARGIN), _MARGIN + _TITLE / 2 + k * _TITLE), line, _TITLE,
+                      reads.anchor, italic=False, weight="bold"))
     if reads.rtl:     # read from the right: the first panel stands at the top right
         spots = [(w - x - p[0], y) for (x, y), p in zip(spots, sizes + [foot])]
     for panel, (x, y) in zip(panels, spots):
@@ -198,17 +235,23 @@ def _choose_layout(sizes: list[tuple[float, float]], foot: tuple[float, float],
 
     Every split of the panels, in order, into rows (each read left to right) or
     into columns (each read down) is tried. The results come last: at the end of
-    the last row, or under everything. The layout that grows the page least past
-    ``room`` wins (none, if it fits); of those, the one whose shape suits the
-    room best (it would fit the smallest copy of the room), then the most
-    compact. Returns the top-left corner of each panel, then of the results.
+    the last row, under the last panel (beside a taller one), or under everything.
+    The layout that grows the page least past ``room`` wins (none, if it fits); of
+    those, the one whose shape suits the room best (it would fit the smallest copy of
+    the room), then the most compact. Returns the top-left corner of each panel, then
+    of the results.
     """
     best = None
-    for across in (True, False):
-        items = sizes + [foot] if across else sizes
+    for across, under in ((True, False), (True, True), (False, False)):
+        items = sizes + [foot] if across and not under else sizes
         for cuts in product((False, True), repeat=len(items) - 1):
             spots, extent = _shelves(items, _split(list(range(len(items))), cuts), across)
-            if not across:          # the results under the columns, flush left
+            if under:               # the results under the last panel, in the room a
+                x, y = spots[-1]    # taller one beside it leaves
+                below = y + sizes[-1][1] + _GAP
+                spots.append((x, below))
+                extent = (max(extent[0], x + foot[0]), max(extent[1], below + foot[1]))
+            elif not across:        # the results under the columns, flush left
                 below = extent[1] + (_GAP if foot[1] > 0 else 0.0)
                 spots.append((0.0, below))
                 extent = (max(extent[0], foot[0]), below + foot[1])
