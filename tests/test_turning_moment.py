@@ -256,3 +256,23 @@ def test_a_parallelogram_s_turn_is_refused_where_its_pivots_line_up(a, g, phi, o
     sense = 1.0 if omega > 0 else -1.0
     ahead = min((sense * (phi + k * 180.0 - theta)) % 360.0 for k in (0, 1))
     assert math.remainder(at - (theta + sense * ahead), 360.0) == pytest.approx(0.0, abs=2e-3)
+
+
+@pytest.mark.slow
+def test_solve_and_sweep_sign_a_torque_one_way(tmp_path):
+    """T2 and the turning moment are both CCW +, each with its sense said; the sweep's T2
+    at the exercise's angle is solve's, sign and all (engine-forces: the piston's load turns
+    the crank CCW, so the torque that holds it steady is CW)."""
+    from tarsim.exercises.cli import cli
+    solved = CliRunner().invoke(cli, ["solve", "engine-forces", "-o", str(tmp_path / "s"),
+                                      "--no-pdf"]).output
+    swept = CliRunner().invoke(cli, ["sweep", "engine-forces", "-o", str(tmp_path / "w"),
+                                     "--no-pdf"]).output
+    t2 = re.search(r"^T2 = (−?[\d.]+) N·m \((cw|ccw)\)", solved, re.M)
+    moment = re.search(r"^turning_moment = (−?[\d.]+) N·m \((cw|ccw)\)", solved, re.M)
+    by_sweep = re.search(r"^T2 by the force polygons at .*?: (−?[\d.]+) N·m \((cw|ccw)\)",
+                         swept, re.M)
+    assert t2 and moment and by_sweep
+    assert (t2[2], moment[2]) == ("cw", "ccw")
+    assert by_sweep.groups() == t2.groups()
+    assert "-" not in by_sweep[0]                 # a true minus, as every table prints it

@@ -128,10 +128,10 @@ class TurningMoment:
             cs = speed_fluctuation(r.delta_e, self.omega, loads.flywheel)
             out.append(f"a flywheel of {loads.flywheel:g} kg·m² holds the speed within "
                        f"C_s = ΔE/(I·ω²) = {cs:.6g}")
-        for _, drawn, curve, label in self.marks:
-            out.append(f"T by the force polygons at {label}: {drawn:.6g} N·m, the curve's "
-                       f"{curve:.6g} N·m (relative error "
-                       f"{abs(drawn - curve) / max(abs(curve), 1e-300):.1e})")
+        for _, drawn, curve, label in self.marks:      # signed as solve's T2: CCW +
+            out.append(f"T{self.exercise.mechanism.drive.link} by the force polygons at "
+                       f"{label}: {_torque(drawn)}, the curve's {_torque(curve)} (relative "
+                       f"error {abs(drawn - curve) / max(abs(curve), 1e-300):.1e})")
         verdict = "agrees" if self.power_miss <= POWER_AGREE else "DISAGREES"
         out.append(f"driving torque by the balance of power {verdict} at every step "
                    f"(worst {self.power_miss:.1e} of the greatest torque)")
@@ -322,3 +322,9 @@ def moment_files(tm: TurningMoment, *, pdf: bool = False) -> dict[str, str | byt
     if pdf:
         files["turning-moment.pdf"] = figure_pdf([fig])
     return files
+
+
+def _torque(t: float) -> str:
+    """A driving torque as solve prints T2: a true minus, CCW +, and its sense."""
+    text = f"{t:.6g}".replace("-", "−")
+    return f"{text} N·m" + (f" ({'ccw' if t > 0 else 'cw'})" if t else "")

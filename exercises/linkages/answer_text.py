@@ -128,7 +128,9 @@ def show(v: dict, units, name: str = "", figures: int = 6) -> str:
     if name in EFFORTS:                                 # an engine's effort, signed
         unit = "N·m" if name in MOMENTS else "rad/s" if name == "reversal_speed" else \
             "rad/s²" if name == "flywheel_alpha" else "N"
-        return f"{_num(v['value'], spec)} {unit}"
+        # a moment is signed as T2 is, CCW +, and says its sense the same way
+        sense = _sense(v["value"]) if name in MOMENTS else ""
+        return f"{_num(v['value'], spec)} {unit}{sense}"
     if "vector" in v:
         per = "/s²" if name.startswith("A") else "/s"     # A_B, A_cor_B, An_B/A, A_slide_B
         return pointing(f"{_num(v['value'] / s, spec)} {units.length}{per}")
