@@ -122,9 +122,10 @@ def check(source, angle):
 @click.option("--allow-undercut", is_flag=True,
               help="A cam whose roller undercuts it, or whose flat face meets a concave "
                    "profile: draw it with the trouble ringed instead of refusing it.")
+@common.hide
 @common.speaks
 @common.fails_cleanly
-def solve(source, out_dir, angle, pdf, formats, dpi, paper, allow_undercut, lang, digits):
+def solve(source, out_dir, angle, pdf, formats, dpi, paper, allow_undercut, hide, lang, digits):
     """Solve an exercise by graphical construction and check every number.
 
     FILE is a mechanism file whose [ask] table names what to find (see
@@ -183,15 +184,17 @@ def solve(source, out_dir, angle, pdf, formats, dpi, paper, allow_undercut, lang
       tarsim solve eccentric-flat-face           # the notes' §3.20 cam
       tarsim solve notes-example-1               # 001 ch. 7 Example 1, corrected
       tarsim solve crank-shaper --lang fa        # figures and steps.md in Persian
+      tarsim solve crank-shaper --hide answers,badges,checks   # clean figures for a slide
 
     The exit status is 3 if any constructed number disagrees with the analytic
     one beyond the tolerance its conditioning allows (the files are written all
     the same, so the disagreement can be seen); 1 for bad input.
     """
     from tarsim.graphics.export import cairo_missing, output_folder
+    from tarsim.graphics.hiding import hiding
 
     loaded, chapter = common.loaded(source, angle)
-    with speaking(common.language(lang, digits, loaded)):
+    with speaking(common.language(lang, digits, loaded)), hiding(hide):
         ex = chapter.set_up(loaded.named_in(spoken()), paper=paper, angle=common.finite(angle))
         out = Path(out_dir or f"{ex.id}-solution")
         with output_folder(out):      # a folder that cannot be written fails before the solve

@@ -14,7 +14,7 @@ from tarsim.constructions.errors import (AssemblyError, CheckMismatch, GeometryE
                                          IllConditioned, InputError, TarsimError)
 
 __all__ = ["EXIT_CHECK_FAILED", "fails_cleanly", "linkage", "loaded", "finite", "source",
-           "paper", "speaks", "language", "angle", "bar", "report"]
+           "paper", "speaks", "language", "angle", "hide", "bar", "report"]
 
 
 EXIT_CHECK_FAILED = 3
@@ -125,6 +125,24 @@ def language(lang: str | None, digits: str, loaded) -> str:
     lang = lang or getattr(loaded, "lang", "en")
     return "fa_latn" if lang == "fa" and digits == "latin" else lang
 
+
+def _hidden_parts(ctx, param, value: str):
+    """``--hide`` as the parts it names, a name none of them refused as a usage error."""
+    from tarsim.graphics.hiding import parts_to_hide
+
+    try:
+        return parts_to_hide(value or "")
+    except TarsimError as e:
+        raise click.BadParameter(str(e)) from None
+
+
+hide = click.option("--hide", default="", metavar="PARTS", callback=_hidden_parts,
+                    help="Leave parts out of every figure, for a clean one on a slide or in a "
+                         "book (comma-separated): answers (the results table's construction "
+                         "and analytic columns, the stroke and time ratio under the limit "
+                         "positions), badges (the circled step numbers; every label stays "
+                         "where it stood), checks (the table's construction, analytic and "
+                         "relative-error columns). Example: --hide answers,badges,checks.")
 
 angle = click.option("--angle", type=float, default=None, metavar="ANGLE",
                       help="Input angle to use instead of the file's, in the file's angle unit.")

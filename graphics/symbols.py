@@ -11,6 +11,7 @@ import math
 from shapely.geometry import LineString, MultiLineString, Polygon
 
 from .figure import Circle, Figure, Path, Text, arc_points
+from .hiding import hidden
 
 __all__ = [
     "PIN_RADIUS",
@@ -253,6 +254,9 @@ def badge_radius(number: int) -> float:
 
 
 def draw_badge(fig: Figure, at: tuple[float, float], number: int) -> None:
-    """A step number in a small circle, as a worked construction numbers its acts."""
+    """A step number in a small circle, as a worked construction numbers its acts; none
+    where the badges are hidden (:mod:`.hiding`), the labels standing where they stood."""
+    if "badges" in hidden():
+        return
     fig.add(Circle(at, badge_radius(number), "badge"))
     fig.add(Text(at, str(number), 2.1 if number < 10 else 1.95, italic=False))

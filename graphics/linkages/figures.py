@@ -15,6 +15,7 @@ from .worked_page import compose_worked_sheets, holds_panel
 from ..figure import Figure, stack_pages
 from ..figure_kinds import FigureOrder, FigurePlan, figure_kind
 from ..fitting import fit, held_by
+from ..hiding import hidden, shown_columns
 from ..paper import on_sheet, room
 
 __all__ = ["CIRCLE"]
@@ -37,7 +38,9 @@ def _positions(order: FigureOrder) -> FigurePlan:
 
 @figure_kind("limits")
 def _limits(order: FigureOrder) -> FigurePlan:
-    return _space(order, order.shown(), order.under(Panel.SPACE))
+    # Its notes state the stroke and the time ratio found: answers, which may be hidden.
+    return _space(order, order.shown(),
+                  [] if "answers" in hidden() else order.under(Panel.SPACE))
 
 
 def _space(order: FigureOrder, shown: Slice, notes: list[str]) -> FigurePlan:
@@ -97,7 +100,7 @@ def _worked_page(order: FigureOrder) -> FigurePlan:
         drawn.append(dict(panel=panel, scale=poly.scale, units=order.mechanism.units,
                           title=order.said(heading), notes=order.under(panel), per_cm=stated))
         panels.append((heading, panel, shown))
-    table = order.table()
+    table = shown_columns(order.table())
     upright = (sheet.width, sheet.height)
 
     def draw() -> Figure:

@@ -28,6 +28,7 @@ from tarsim.constructions.record import Role, Step
 
 from .diagram_slides import block_centre
 from ..figure import Circle
+from ..hiding import hidden
 from .scene_lines import DOT
 from ..symbols import draw_arrow, draw_arrowhead, draw_dimension, draw_turning_arrow, unit
 from ..typeset import subscript, typeset, typeset_span
@@ -72,7 +73,8 @@ def draw_measures(scene: _Scene) -> None:
                 continue
             centre, radius = scene.angle_arc(step)
             at = draw_turning_arrow(scene.fig, centre, radius, out.start, out.sweep, "dimension")
-            text = f"{numerals(f'{out.degrees:.2f}')}° {words(step.label)}".strip()
+            degrees = "" if "answers" in hidden() else f"{numerals(f'{out.degrees:.2f}')}°"
+            text = f"{degrees} {words(step.label)}".strip()
             scene.label(text, at, [step], prefer=out.start + out.sweep / 2, gap=1.6, size=3.2)
 
 
@@ -113,8 +115,8 @@ def _draw_dimension(scene: _Scene, step: Step, out: Dimension) -> None:
     for end in (a, b):          # and its extension lines, out past the line
         scene.placer.block_path([end, (end[0] + (offset + 1.6) * n[0],
                                        end[1] + (offset + 1.6) * n[1])], 0.3)
-    text = (f"{typeset_span(words(step.label))} "
-            f"{measure_words(scene.m.units.length_drawn(out.length))}").strip()
+    length = "" if "answers" in hidden() else measure_words(scene.m.units.length_drawn(out.length))
+    text = f"{typeset_span(words(step.label))} {length}".strip()
     scene.label(text, at, [step], prefer=math.atan2(-n[1], n[0]), gap=1.0, size=3.4)
     scene.placer.page = page
 
