@@ -44,6 +44,9 @@ WORDS: dict[str, str] = {
     # the free bodies
     "each link alone with every force on it; its forces add to nothing":
         "هر میله به\u200cتنهایی با همهٔ نیروهای وارد بر آن؛ برآیند نیروهای آن صفر است",
+    "a force, at its body's force scale": "نیرو، با مقیاس نیروی همان میله",
+    "a force too small for that scale, drawn 10 mm long":
+        "نیرویی کوچک\u200cتر از آن مقیاس، به طول ۱۰ میلی\u200cمتر رسم\u200cشده",
     # the loads on the space diagram
     "a load": "بار",
     "an inertia force and couple as one force, offset h from G":

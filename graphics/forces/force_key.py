@@ -68,7 +68,7 @@ def draw_key(fig: Figure, names: Sequence[Text], margin: float = 8.0) -> None:
         return
     reads = reading(fig.width)
     room = fig.width - 2 * margin
-    y, used = fig.height + 1.5, room
+    y, used = fig.height - 1.0 - _ROW, room      # its first row a legend row below the last
     for letter, sub, tail, meaning in entries:
         symbol = Text((0.0, 0.0), letter, _SIZE, "start", True, sub=sub, tail=tail)
         w = symbol.width + 2.0 + text_width(meaning, _SIZE) + 7.0

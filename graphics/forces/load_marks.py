@@ -68,14 +68,21 @@ def keep_clear(placer: LabelPlacer, arrows: list[Arrow], turns: list[Turn]) -> N
 
 
 def name_loads(placer: LabelPlacer, arrows: list[Arrow], turns: list[Turn], size: float,
-               farther: tuple[float, ...]) -> None:
-    """Name each force beside its head, ahead of it, and each couple beside its arc, out
-    from its centre; ``farther`` rings when nothing near is clear."""
+               farther: tuple[float, ...], along: bool = False) -> None:
+    """Name each force beside its head, ahead of it (or, ``along``, beside the outer part of
+    its shaft where its head is crowded: arrows that meet at a joint leave little room
+    ahead of each), and each couple beside its arc, out from its centre; ``farther`` rings
+    when nothing near is clear."""
     for tail, head, name, said in arrows:
         text, sub, tail_text = typeset_force(name)
         ahead = math.atan2(tail[1] - head[1], head[0] - tail[0])   # the arrow's paper angle
-        placer.place_numbered(text, head, [], sub=sub, tail=tail_text + said, size=size,
-                              gap=1.0, prefer=ahead, spread=math.pi / 2, own=(tail, head),
+        anchors, prefer = head, ahead
+        if along:
+            anchors = [head] + [(tail[0] + t * (head[0] - tail[0]),
+                                 tail[1] + t * (head[1] - tail[1])) for t in (0.7, 0.5)]
+            prefer = (ahead, ahead + math.pi / 2, ahead - math.pi / 2)
+        placer.place_numbered(text, anchors, [], sub=sub, tail=tail_text + said, size=size,
+                              gap=1.0, prefer=prefer, spread=math.pi / 2, own=(tail, head),
                               farther=farther)
     for centre, mid, name, said, _ in turns:
         text, sub, tail_text = typeset_force(name)
