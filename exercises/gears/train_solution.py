@@ -205,7 +205,7 @@ class TrainSolution(ChapterFiles, QuantityParts):
             if q.name in MESH_ASKS:
                 value = _mesh_text(q.name, float(q.exact), self.mesh)
                 reference = _mesh_text(q.name, float(q.reference), self.mesh_reference)
-                out.append(check_line(f"{q.name} = {value}", width=len(q.name) + 33,
+                out.append(check_line(f"{q.name} = {value}", width=36,
                                       passed=q.passed, against=f"(formula: {reference})",
                                       method=q.method))
                 continue
@@ -213,20 +213,20 @@ class TrainSolution(ChapterFiles, QuantityParts):
                 symbol = ask_symbol(q.name)
                 found, radii = (self.train._length(x / Fraction(math.pi) if q.over_pi else x)
                                 for x in (q.exact, q.reference))
-                out.append(check_line(f"{symbol} = {found}", width=len(symbol) + 31,
+                out.append(check_line(f"{symbol} = {found}", width=36,
                                       passed=q.passed, against=f"(pitch radii: {radii})",
                                       method=q.method))
                 continue
             if q.name.startswith("teeth"):
                 out.append(check_line(f"N{q.name.removeprefix('teeth')} = {q.exact}",
-                                      width=len(q.name) + 31, passed=q.passed,
+                                      width=36, passed=q.passed,
                                       against=f"(check: {q.reference})", method=q.method))
                 continue
             if q.name.startswith("torque"):
                 sense = "" if q.exact == 0 else (" ccw" if q.exact > 0 else " cw")
                 value = f"{torque_text(abs(q.exact), q.over_pi)} N·m{sense}"
                 symbol = ask_symbol(q.name)
-                out.append(check_line(f"{symbol} = {value}", width=len(symbol) + 31,
+                out.append(check_line(f"{symbol} = {value}", width=36,
                                       passed=q.passed, against="(ΣT = 0, ΣTω = 0: "
                                       f"{torque_text(q.reference, q.over_pi)})",
                                       method=q.method))
@@ -234,18 +234,18 @@ class TrainSolution(ChapterFiles, QuantityParts):
             if q.name.startswith("power"):
                 symbol = ask_symbol(q.name)
                 out.append(check_line(f"{symbol} = {power_text(q.exact, q.times_pi)} W "
-                                      f"{q.flow}", width=len(symbol) + 31, passed=q.passed,
+                                      f"{q.flow}", width=36, passed=q.passed,
                                       against="(ΣT = 0, ΣTω = 0: "
                                       f"{power_text(q.reference, q.times_pi)})",
                                       method=q.method))
                 continue
             elif "/" in q.name:
-                value = f"{fraction_text(q.exact)} ({float(q.exact):.6g})"
+                value = f"{fraction_text(q.exact)} ({_signed(q.exact)})"
             else:
                 sense = "" if q.exact == 0 else (" ccw" if q.exact > 0 else " cw")
-                value = f"{fraction_text(abs(q.exact))} {unit}{sense} ({float(q.exact):.6g})"
+                value = f"{fraction_text(abs(q.exact))} {unit}{sense} ({_signed(q.exact)})"
             symbol = ask_symbol(q.name)
-            out.append(check_line(f"{symbol} = {value}", width=len(symbol) + 31,
+            out.append(check_line(f"{symbol} = {value}", width=36,
                                   passed=q.passed,
                                   against=f"(Willis: {fraction_text(q.reference)})",
                                   method=q.method))
@@ -492,3 +492,8 @@ def solve_train(ex: TrainExercise) -> TrainSolution:
         ref = mesh_reference(float(a.module), (a.teeth, b.teeth), (a.number, b.number),
                              d.pressure_angle, d.addendum, d.centre_distance)
     return TrainSolution(ex, found, reference, diagram, mesh, ref)
+
+
+def _signed(x) -> str:
+    """An exact speed or ratio as a decimal, with a true minus as every table prints it."""
+    return f"{float(x):.6g}".replace("-", "−")
