@@ -18,6 +18,7 @@ from tarsim.constructions.joints import Arc, Slide, contact_arc, contact_slide
 from tarsim.constructions.model import Link, Mechanism
 from tarsim.constructions.reference.solver import follow_branches
 from .mechanism_input import read_input
+from .extremes import through_extremes
 from .mechanism_joints import read_contact, read_slider
 from .mechanism_links import read_frame, read_links
 from .mechanism_values import TableReader
@@ -106,6 +107,7 @@ class _Reader(TableReader):
         self.links = {k.number: k for k in [frame] + read_links(self, frame)}
         slides: list[Slide] = []
         arcs: list[Arc] = []
+        self.extremes: list[tuple[int, str, dict]] = []   # guides laid through extremes
         for i, t in enumerate(self.list_of("slider")):
             joint = read_slider(self, i, t)
             (arcs if isinstance(joint, Arc) else slides).append(joint)
@@ -127,6 +129,8 @@ class _Reader(TableReader):
         mech = Mechanism(mech_links, drive, tuple(slides), branches, self.units,
                          name, self.file, tuple(arcs), given=self.given,
                          origin=(ox * self.units.metres + 0.0, oy * self.units.metres + 0.0))
+        if self.extremes:
+            mech = through_extremes(mech, self.extremes, self.fail)
         mech = follow_branches(mech)
         dof, n, f1, f2 = mech.mobility()
         if dof != 1:

@@ -50,7 +50,9 @@ def read_slider(r: TableReader, i: int, t: dict[str, Any]) -> Slide | Arc:
                       **where) * r.units.metres
     if on == 1:
         through = t.get("through")
-        if isinstance(through, str):
+        if isinstance(through, dict):     # placed once the mechanism stands: extremes.py
+            base = _extremes_point(r, through, link, where)
+        elif isinstance(through, str):
             if through not in r.links[1].names:
                 raise r.unknown(through, r.links[1].names, "frame point",
                                 key="through", **where)
@@ -70,6 +72,23 @@ def read_slider(r: TableReader, i: int, t: dict[str, Any]) -> Slide | Arc:
             raise r.fail(f"a slot on moving link {on} runs along its axis; give only "
                          "offset, not " + k, key=k, **where)
     return Slide(SlideKind(kind), link, point, on, (0.0, offset), (1.0, 0.0))
+
+
+def _extremes_point(r: TableReader, through: dict, link: int, where: dict
+                    ) -> tuple[float, float]:
+    """``through = { extremes = "Q" }``: the guide is laid through the two places a point Q
+    of another link reaches at its link's limit positions, as the books lay a shaper's ram
+    line "through the extreme positions of Q". Only checked here; the line is placed once
+    the rest of the mechanism stands (:mod:`.extremes`), so (0, 0) holds its place."""
+    if set(through) != {"extremes"} or not isinstance(through["extremes"], str):
+        raise r.fail('through a point\'s extreme positions is written through = { extremes = '
+                     '"Q" }', key="through", **where)
+    q = through["extremes"]
+    if not any(q in k.names for n, k in r.links.items() if n not in (1, link)):
+        raise r.fail(f"through = {{ extremes = \"{q}\" }} needs a point {q} of a moving link "
+                     f"other than link {link}", key="through", **where)
+    r.extremes.append((link, q, where))
+    return (0.0, 0.0)
 
 
 def _curved_guide(r: TableReader, kind: str, link: int, point: str, on: int, t: dict[str, Any],
