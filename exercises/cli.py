@@ -235,7 +235,9 @@ def sweep(source, out_dir, of, steps, pdf, lang, digits):
     them gives each one's distance from the curve. Where the velocity is zero
     the position is extreme (the stroke of a ram, the swing of a lever); where
     the acceleration is zero the velocity peaks: both are found to the
-    solver's precision, not the step's.
+    solver's precision, not the step's. This is a linkage's: a cam, a gear
+    train, a rotor or engine and a flywheel give their answers over a turn (the
+    greatest values and where they come) from `tarsim solve`.
 
     A file with loads ([[mass]], [[force]], [[couple]]) gets the turning-moment
     diagram too: the driving torque round the turn from every link's Newton–Euler
