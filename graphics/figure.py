@@ -48,6 +48,7 @@ STYLES: dict[str, Style] = {
     "block": Style(width=0.45, fill="#fff", join="miter", cap="butt"),
     "guide": Style(width=0.4, cap="butt"),
     "construction": Style(width=0.18, dash=(3.0, 1.0, 0.6, 1.0)),
+    "centre_line": Style(width=0.45, dash=(6.0, 1.2, 0.8, 1.2), cap="butt"),   # chain, thick
     # Scene layers (graphics.scene): each kind of working line reads differently in
     # black and grey alone.
     "kennedy": Style(width=0.2, dash=(4.0, 1.0, 0.7, 1.0)),

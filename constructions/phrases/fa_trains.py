@@ -90,8 +90,12 @@ WORDS: dict[str, str] = {
         "مسیر تماس AB = {path} {mm}، نسبت تماس {ratio}",
     "pitch circles": "دایره\u200cهای گام", "base circles": "دایره\u200cهای مبنا",
     "addendum and root circles": "دایره\u200cهای ادندم و ریشه", "line of action": "خط عمل",
-    "line of centres, common tangent": "خط\u200cالمرکزین، مماس مشترک",
-    "path of contact": "مسیر تماس", "tooth profiles": "پروفیل\u200cهای دندانه",
+    "line of centres": "خط\u200cالمرکزین", "common tangent": "مماس مشترک",
+    "path of contact": "مسیر تماس", "arc of contact": "کمان تماس",
+    "teeth, each flank an involute of its base circle":
+        "دندانه\u200cها، هر پهلو اینولوت دایرهٔ مبنای خود",
+    "pitch circle {gear}": "دایرهٔ گام {gear}", "base circle {gear}": "دایرهٔ مبنای {gear}",
+    "addendum circle {gear}": "دایرهٔ ادندم {gear}",
     # a mesh's results (exercises/gears/train_solution.py)
     "involute mesh": "درگیری اینولوت",
     "involute mesh, drawn with fewer teeth until clear":
