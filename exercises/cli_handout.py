@@ -35,11 +35,12 @@ def handout(source, out_dir, angle, pdf, paper, lang, digits):
 
     The sheet holds the mechanism drawn to scale at its input position
     with its data (the fixed points, every link's lengths, the frame's
-    guides, θ2, ω2 and α2), what is asked in the course's words and
-    symbols (with the methods the file names), and an empty frame for
-    each polygon to be drawn: at the scale the solution draws it at (the
-    exercise's, when it states one), with its scale statement and bar,
-    the pole marked, sized to hold the polygon. No centre, vector or
+    guides, θ2, ω2 and α2, and its loads: masses, forces, couples), what
+    is asked in the course's words and symbols (with the methods the file
+    names), and an empty frame for each polygon to be drawn (velocity,
+    acceleration, each link's force polygon): at the scale the solution
+    draws it at (the exercise's, when it states one), with its scale
+    statement and bar, the pole marked, sized to hold the polygon. No centre, vector or
     number the solution finds is on it; a position given by a time is
     given by its time alone. Linkages have a sheet; another chapter's
     file is refused, naming those that have one.

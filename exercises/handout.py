@@ -29,6 +29,8 @@ from tarsim.graphics.handout import Line, compose_handout, draw_empty_polygon, d
 from tarsim.graphics.paper import paper, room
 from tarsim.graphics.typeset import subscript, typeset, typeset_span
 
+from .handout_loads import force_frames, force_words, given_loads
+
 __all__ = ["Handout", "handout", "HANDOUTS"]
 
 
@@ -157,7 +159,7 @@ def _given(ex) -> list[Line]:
     alpha = f"α{d.link}"
     out.append(Line(_math(f"{alpha} = {_number(d.alpha)} rad/s²") if d.alpha_given
                     else words("{alpha} not given: taken as 0", alpha=_math(alpha))))
-    return out
+    return out + given_loads(ex.loads, _math, _number)
 
 
 def _asked(ex, worked) -> list[Line]:
@@ -185,9 +187,13 @@ def _asked(ex, worked) -> list[Line]:
 def _ask_line(ask, methods: list[str]) -> Line:
     """One asked quantity: its symbol (a true subscript), what it is, and the methods it is
     found by when more than one is asked."""
+    force = force_words(ask)
+    if force is not None and not force[1]:          # an effort, asked by its words alone
+        return Line(force[0])
     template = _ASKED.get(type(ask))
     fields = {k: numerals(str(getattr(ask, k))) for k in ("link", "point") if hasattr(ask, k)}
-    said = words(", ") + words(template, **fields) if template else ""
+    said = (words(", ") + (force[0] if force else words(template, **fields))
+            if force or template else "")
     if len(methods) > 1:
         said += f" ({words('by {methods}', methods=words(', ').join(methods))})"
     return Line(said, symbol=typeset(ask.symbol))
@@ -212,6 +218,12 @@ def _frames(sol, sheet) -> list[Figure]:
     from .linkages.solution_files import figure_parts
 
     units, where = sol.exercise.mechanism.units, sol.position
+
+    def titled(heading: str) -> str:
+        if where is None:
+            return heading
+        return words("{what} at {where}", what=heading, where=_math(where.label.split(" (")[0]))
+
     out = []
     polygons = {}
     for _, _, parts in figure_parts(sol):
@@ -228,13 +240,10 @@ def _frames(sol, sheet) -> list[Figure]:
         o = sol.assembly[poly.pole].output.xy
         xs, ys = [(p[0] - o[0]) * mm for p in points], [(o[1] - p[1]) * mm for p in points]
         reach = (max(0.0, -min(xs)), max(0.0, -min(ys)), max(0.0, max(xs)), max(0.0, max(ys)))
-        title = words(heading)
-        if where is not None and len(sol.exercise.positions or ()) != 1:
-            title = words("{what} at {where}", what=title, where=_math(where.label.split(" (")[0]))
-        out.append(draw_empty_polygon(title, reach=reach, per_cm=per_cm,
+        out.append(draw_empty_polygon(titled(words(heading)), reach=reach, per_cm=per_cm,
                                       unit=units.length + per_time, scale_name=scale_name,
                                       pole=("o", pole)))
-    return out
+    return out + force_frames(sol, titled)
 
 
 def _finite(step) -> list[tuple[float, float]]:
