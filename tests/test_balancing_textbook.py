@@ -853,13 +853,14 @@ def test_an_engine_s_speed_missing_or_given_twice_is_named(change, words):
     assert str(e.value).startswith("e.toml:") and words in str(e.value), str(e.value)
 
 
-def test_a_wheel_diameter_beside_the_speed_is_the_wheels_size():
+def test_a_wheel_diameter_beside_the_speed_alone_is_refused_as_unused():
+    """A wheel diameter turns a road speed into the cranks' speed, or a lift speed into km/h:
+    beside a speed alone nothing uses it, and a setting read and dropped is refused."""
     from tarsim.exercises.templates import template
 
-    text = template("engine")
-    plain = solve_balance(parse_balance(text, "e.toml")).results["quantities"]
-    sized = solve_balance(parse_balance(text.replace("speed = 600\n",
-                                                     "speed = 600\nwheel_diameter = 1800\n", 1),
-                                        "e.toml")).results["quantities"]
-    assert sized["balance_mass"]["value"] == plain["balance_mass"]["value"] == pytest.approx(
-        (15 + 0.5 * 30) * 0.100 / 0.120, rel=1e-12)
+    text = template("engine").replace("speed = 600\n", "speed = 600\nwheel_diameter = 1800\n",
+                                      1)
+    with pytest.raises(InputError) as e:
+        parse_balance(text, "e.toml")
+    assert str(e.value).startswith("e.toml:") and "wheel_diameter goes with road_speed" in str(
+        e.value), str(e.value)

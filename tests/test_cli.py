@@ -162,7 +162,8 @@ def test_bad_file_is_one_line_with_file_and_line(mech_file, tmp_path, edit, mess
                         "base-circle-for-pressure-angle, circular-arc-flat-face, "
                         "eccentric-flat-face, offset-knife-edge, "
                         "oscillating-roller, roller-harmonic-cycloidal, tangent-cam-roller, "
-                        "valve-unequal-acceleration, bearing-forces, four-mass-shaft, "
+                        "valve-unequal-acceleration, bearing-forces, coupled-locomotive, "
+                        "four-mass-shaft, "
                         "four-masses-one-plane, inline-four, inline-three, locomotive, "
                         "notes-example-1, outside-locomotive, radial-three, "
                         "single-cylinder-balance-mass, "
@@ -310,7 +311,8 @@ def test_list_shows_the_bundled_examples():
                    "base-circle-for-pressure-angle", "circular-arc-flat-face",
                    "eccentric-flat-face", "offset-knife-edge",
                    "oscillating-roller", "roller-harmonic-cycloidal", "tangent-cam-roller",
-                   "valve-unequal-acceleration", "bearing-forces", "four-mass-shaft",
+                   "valve-unequal-acceleration", "bearing-forces", "coupled-locomotive",
+                   "four-mass-shaft",
                    "four-masses-one-plane", "inline-four", "inline-three", "locomotive",
                    "notes-example-1", "outside-locomotive", "radial-three",
                    "single-cylinder-balance-mass",

@@ -110,6 +110,15 @@ class Engine:
     radial: int = 0
     """A radial engine's number of cylinders, their lines evenly round the crank shaft and
     every rod on one crank: 0 for cylinders in line or a V."""
+    coupled: int = 1
+    """How many pairs of coupled wheels share the balanced fraction of the reciprocating
+    mass equally, the driving wheels among them (1: the driving wheels take it all)."""
+
+    @property
+    def balanced_each(self) -> float:
+        """The fraction of each cylinder's reciprocating mass one pair of coupled wheels
+        balances, ``balanced`` shared equally among the ``coupled`` pairs."""
+        return self.balanced / self.coupled
 
     @property
     def each(self) -> tuple[float, ...]:

@@ -262,6 +262,22 @@ WORDS: dict[str, str] = {
         "در سرعتِ یافته‌شدهٔ بلند شدن چرخ، ω = {speed} rad/s",
     "no speed given: the closing side is m·r (× ω²)":
         "سرعتی داده نشده: ضلع بستن m·r است (× ω²)",
+    # a coupled locomotive: the driving and the trailing wheels
+    "{name} {mass} kg at {radius}, {angle}°":
+        "{name}: {mass} kg در شعاع {radius}، زاویهٔ {angle} درجه",
+    "the {share} of the reciprocating mass balanced is shared equally among {pairs} pairs of "
+    "coupled wheels: {each} of it in the driving wheels and in each other pair":
+        "{share} متعادل‌شدهٔ جرم رفت‌وبرگشتی به‌طور مساوی میان {pairs} جفت چرخ کوپل‌شده تقسیم "
+        "می‌شود: {each} آن در چرخ‌های محرک و در هر جفت دیگر",
+    "with them, the revolving masses on cranks of their own: {masses}":
+        "همراه آن‌ها، جرم‌های دوار روی لنگ‌های خودشان: {masses}",
+    "{name}, trailing wheels": "{name}، چرخ‌های دنباله‌رو",
+    "the trailing wheels: {share} of each cylinder's reciprocating mass, {mass} kg at the crank "
+    "radius along its crank, balanced in the same planes":
+        "چرخ‌های دنباله‌رو: {share} از جرم رفت‌وبرگشتی هر سیلندر، {mass} kg در شعاع لنگ و در "
+        "امتداد لنگ آن، در همان صفحه‌ها متعادل می‌شود",
+    ", with the masses on each pair of coupled wheels: {masses}":
+        "، همراه جرم‌های روی هر جفت چرخ کوپل‌شده: {masses}",
 }
 
 PHRASES: dict[str, str] = {

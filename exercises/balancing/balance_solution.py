@@ -28,6 +28,8 @@ from ..checked import Checked
 from ..solution_folder import ChapterFiles
 from ..worked_document import Bullets, Section, said_steps, title
 from .balance_figures import angle_deg, balance_figures
+from .coupled_wheels import (trailing_checked, trailing_figures, trailing_lines,
+                             trailing_misses, trailing_records, wheel_lines)
 from .engine_angle import at_checked, at_lines, at_misses
 from .engine_balance import left_checked, left_lines, left_misses, lift_speed
 from .engine_speed import at_lift_tagged, per_omega, speed_lines
@@ -146,6 +148,7 @@ class BalanceSolution(ChapterFiles):
                 if miss > AGREE:
                     out.append((kind, miss))
             out += self._greatest_misses(e) + left_misses(self, AGREE) + at_misses(self, AGREE)
+        out += trailing_misses(self)
         e = self.exercise.engine
         if e is not None and e.radial:
             return out + radial_misses(e)
@@ -244,13 +247,8 @@ class BalanceSolution(ChapterFiles):
             return self._rotor_lines()
         out = self._engine_lines()
         if ex.rotor is not None:
-            e = ex.engine
-            out.append(words("balance masses: each cylinder's revolving mass and {share} of its "
-                             "reciprocating mass, {mass} kg at the crank radius along its "
-                             "crank, balanced as rotating masses", share=numeral(e.balanced, "g"),
-                             mass=numeral(ex.rotor.masses[0].mass)))
-            out += self._rotor_lines() + left_lines(self)
-        return out
+            out += wheel_lines(self) + self._rotor_lines() + left_lines(self)
+        return out + trailing_lines(self)
 
     def _rotor_lines(self) -> list[str]:
         """A rotor's resultant, each balancing plane's mass and the check (with no plane,
@@ -378,7 +376,7 @@ class BalanceSolution(ChapterFiles):
         ex = self.exercise
         records = [made.construction for made in (self.engine_polygons, self.balance,
                                                    self.closure, self.unbalance)
-                   if made is not None]
+                   if made is not None] + trailing_records(self)
         out = [title(ex.name, ex.description)]
         out += [Section(phrase("heading.construction"), (said_steps(record),))
                 for record in records]
@@ -422,7 +420,7 @@ class BalanceSolution(ChapterFiles):
                 q |= self._balance_mass(p, method)
             q |= plane_force_checked(self)
             if ex.engine is not None:
-                q |= left_checked(self)
+                q |= left_checked(self) | trailing_checked(self)
         return q
 
     def _engine_checked(self) -> dict[str, Checked]:
@@ -484,7 +482,7 @@ class BalanceSolution(ChapterFiles):
     def figures(self) -> dict[str, Any]:
         """The space diagram, the table and the polygons (a rotor's); the polygons or the
         forces against crank angle (an engine's)."""
-        return balance_figures(self)
+        return balance_figures(self) | trailing_figures(self)
 
 
 def solve_balance(ex: BalanceExercise) -> BalanceSolution:
@@ -499,4 +497,5 @@ def solve_balance(ex: BalanceExercise) -> BalanceSolution:
     if lift is None:
         return s
     return BalanceSolution(replace(ex, engine=replace(e, speed=lift, at_lift=True),
-                                   rotor=replace(ex.rotor, speed=lift)))
+                                   rotor=replace(ex.rotor, speed=lift),
+                                   trailing=ex.trailing and replace(ex.trailing, speed=lift)))

@@ -18,15 +18,18 @@ import math
 
 from tarsim.constructions.narration import numeral, words
 from tarsim.constructions.reference.balance import engine_sums, two_planes
-from tarsim.constructions.balancing.rotor import Mass
+from tarsim.constructions.balancing.polygons import draw_balance
+from tarsim.constructions.balancing.rotor import Mass, Rotor
 from ..checked import Checked
 
 __all__ = ["left_checked", "left_lines", "left_misses", "lift_speed"]
 
 
 def _share(e) -> float:
-    """The reciprocating part of each cylinder's balanced mass, c·m/(m_rev + c·m)."""
-    return e.balanced * e.reciprocating / (e.revolving + e.balanced * e.reciprocating)
+    """The reciprocating part of each cylinder's balanced mass, c·m/(m_rev + c·m) (c the
+    share of one pair of coupled wheels)."""
+    c = e.balanced_each
+    return c * e.reciprocating / (e.revolving + c * e.reciprocating)
 
 
 def _blows(s) -> dict[str, tuple[float, float]]:
@@ -38,18 +41,24 @@ def _blows(s) -> dict[str, tuple[float, float]]:
 
 def _products(s) -> dict[str, tuple[float, float]]:
     """Each balancing plane's B·b (kg·m), the share of its product for c·m, free of ω: as
-    drawn, and by the reference's two planes of c·m alone (one plane: its force alone)."""
+    drawn, and by the reference's two planes of c·m alone (one plane: its force alone).
+    Where other revolving masses (coupling rods) share the wheels, the product is no
+    multiple of c·m's, and c·m's own polygons are drawn for it."""
     e, r = s.exercise.engine, s.exercise.rotor
-    alone = [Mass(m.name, e.balanced * e.reciprocating, m.radius, m.angle, m.plane)
-             for m in r.masses]
+    alone = [Mass(str(i), e.balanced_each * e.reciprocating, e.crank, theta, z)
+             for i, (theta, z) in enumerate(zip(e.cranks, e.planes), start=1)]
     if len(r.planes) == 2:
         want = dict(zip((p.name for p in r.planes),
                         two_planes(alone, r.planes[0].position, r.planes[1].position)))
     else:
         want = {r.planes[0].name: (-math.fsum(m.mr[0] for m in alone),
                                    -math.fsum(m.mr[1] for m in alone))}
-    return {p.name: (_share(e) * math.hypot(*s.balance.product(p.name)),
-                     math.hypot(*want[p.name])) for p in r.planes}
+    if len(r.masses) == len(alone):     # the cylinders alone: c·m's share of the product
+        drawn = {p.name: _share(e) * math.hypot(*s.balance.product(p.name)) for p in r.planes}
+    else:
+        b = draw_balance(Rotor(tuple(alone), r.planes, e.speed))
+        drawn = {p.name: math.hypot(*b.product(p.name)) for p in r.planes}
+    return {p.name: (drawn[p.name], math.hypot(*want[p.name])) for p in r.planes}
 
 
 def left_checked(s) -> dict[str, Checked]:

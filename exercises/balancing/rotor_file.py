@@ -24,8 +24,10 @@ from .engine_unknowns import cylinder_masses, has_unknowns, primary_balance
 from .firing_order import firing_cranks, read_firing_order
 from .locomotive_file import engine_speed, read_wheel
 from .one_crank_file import read_radial, read_vee
+from .engine_wheels import read_coupled, wheel_rotors
 from .open_rotor_file import UNKNOWN, read_open_rotor
 from .rotor_weights import GRAVITY, mass_or_weight, refuse_weights
+from .unused_settings import refuse_idle_wheel, refuse_unused
 
 __all__ = ["BalanceExercise", "parse_balance"]
 
@@ -38,12 +40,12 @@ _NAME = re.compile(rf"^[^\s\x00-\x1f\x7f-\x9f\u202a-\u202e\u2066-\u2069]{{1,{_NA
 _UNITS = ("length", "speed")
 """The units a balancing file states; masses are always kg and weights N."""
 _KEYS = {"rotor": ("speed", "about", "bearings", "angles"),
-         "mass": ("name", "mass", "weight", "radius", "angle", "plane", "between"),
+         "mass": ("name", "mass", "weight", "radius", "angle", "plane", "between", "wheels"),
          "balance": ("name", "plane", "radius", "mass", "weight"),
          "engine": ("speed", "crank", "stroke", "rod", "reciprocating", "balanced", "at",
                     "revolving", "balance_radius", "balance_mass", "firing_order", "strokes",
                     "road_speed", "wheel_diameter", "vee", "radial", "dead_load",
-                    "rod_ratio"),
+                    "rod_ratio", "coupled"),
          "cylinder": ("crank", "plane", "reciprocating")}
 
 
@@ -75,6 +77,10 @@ class BalanceExercise:
     """The file measures its angles clockwise (``[rotor] angles = "cw"``), as some books do.
     The rotor is then solved as its mirror image, in which every angle given and found reads
     counter-clockwise: the sizes are the same, and each angle found is the clockwise one."""
+    trailing: Rotor | None = None
+    """A coupled locomotive's other coupled wheels (``[engine] coupled``), balanced in the
+    same planes as the driving wheels' ``rotor``: their share of the reciprocating mass and
+    the masses on each pair (:mod:`.engine_wheels`)."""
 
     def named_in(self, lang: str) -> BalanceExercise:
         """The same exercise with its rotor or engine named in ``lang``, if its file does."""
@@ -108,14 +114,18 @@ def parse_balance(text: str, filename: str = "<string>", exercise_id: str = "rot
     if "engine" in data:
         refuse_weights(t, "in an engine's file")
         engine, primary = _engine(t, metre)
-        return BalanceExercise(engine=engine, open=primary,
-                               rotor=None if primary else _engine_rotor(t, engine, metre),
+        driving, trailing = (None, None) if primary else wheel_rotors(
+            t, _one(t, "engine"), engine, metre, lambda: _planes(t, metre),
+            lambda e, i: _name(t, e, "mass", i, f"m{i + 1}", "mass"))
+        return BalanceExercise(engine=engine, open=primary, rotor=driving, trailing=trailing,
                                **common)
     if any(v == UNKNOWN for m in t.entries("mass") for v in m.values()):
         refuse_weights(t, "where the masses hold unknowns")
+        refuse_unused(t, "open")
         return BalanceExercise(open=read_open_rotor(
             t, metre, _speed(t, "rotor", needed=False),
             lambda e, i: _name(t, e, "mass", i, str(i + 1), "mass")), **common)
+    refuse_unused(t, "rotor")
     masses = _masses(t, metre, length)
     planes = _planes(t, metre) if t.entries("balance") else []
     taken = {m.name: f"mass {m.name}" for m in masses}
@@ -345,10 +355,13 @@ def _engine(t: Tables, metre: float) -> tuple[Engine, OpenRotor | None]:
     vee = read_vee(t, one)
     radial = read_radial(t, one)
     cylinders = t.entries("cylinder") or [{"crank": 0, "plane": 0}]
+    refuse_unused(t, "one crank" if vee or radial else "unknowns" if has_unknowns(cylinders)
+                  else "single" if len(cylinders) == 1 else "in line", one)
     masses = cylinder_masses(t, one, cylinders)
     if has_unknowns(cylinders):
         primary = primary_balance(t, one, cylinders, masses, crank * metre, metre,
                                   engine_speed(t, one, metre, _speed))
+        refuse_idle_wheel(t, one)
         found = close_rotor(primary).parts
         each = tuple(found[p.name].mass for p in primary.parts)
         return Engine(tuple(found[p.name].angle for p in primary.parts),
@@ -385,47 +398,14 @@ def _engine(t: Tables, metre: float) -> tuple[Engine, OpenRotor | None]:
         raise t.fail("at asks the forces at a crank angle, m·r·ω², and no lift speed stands "
                      "in for the speed: give speed = … or road_speed = … (km/h) with "
                      "wheel_diameter", "engine", "at")
-    return Engine(cranks, planes, crank * metre, rod, mass,
-                  engine_speed(t, one, metre, _speed, optional),
+    speed = engine_speed(t, one, metre, _speed, optional)
+    refuse_idle_wheel(t, one)
+    return Engine(cranks, planes, crank * metre, rod, mass, speed,
                   balanced, _degrees(t.number(one, "at", "engine", "the crank angle", 0, 0.0)),
                   revolving, None if radius is None else radius * metre, balance,
                   *read_wheel(t, one, metre, len(cranks)), "at" in one,
                   tuple(masses) if len(set(masses)) > 1 else (),
-                  vee, *(firing or ((), 0)), radial=radial), None
-
-
-def _engine_rotor(t: Tables, e: Engine, metre: float) -> Rotor | None:
-    """An in-line engine's balance masses, where ``[[balance]]`` planes are given: each
-    cylinder's revolving mass and the fraction ``balanced`` of its reciprocating mass,
-    m_rev + c·m at the crank radius along its crank, balanced as rotating masses are (the
-    primary part of the reciprocating mass turns as a mass at the crank pin would)."""
-    entries = t.entries("balance")
-    if len(e.cranks) == 1:
-        if entries:
-            raise t.fail("a single cylinder's balance mass is given in [engine] as "
-                         "balance_radius = … (or balance_mass = …), opposite its crank: leave "
-                         "out the [[balance]] planes", "balance", None, 0)
-        return None
-    if not entries:
-        given = [k for k in ("balanced", "revolving") if k in _one(t, "engine")]
-        if given:
-            raise t.fail(f"{given[0]} is what balance masses take: give the [[balance]] planes "
-                         "they go in (plane, and radius or mass), or leave it out", "engine",
-                         given[0])
-        return None
-    share = e.revolving + e.balanced * e.reciprocating
-    if not share > 0:
-        raise t.fail("the [[balance]] planes balance each cylinder's revolving mass and the "
-                     "fraction balanced of its reciprocating mass: give revolving = … or "
-                     "balanced = …", "engine")
-    masses = tuple(Mass(str(i), share, e.crank, theta, z)
-                   for i, (theta, z) in enumerate(zip(e.cranks, e.planes), start=1))
-    planes = _planes(t, metre)
-    for i, p in enumerate(planes):
-        if any(m.name == p.name for m in masses):
-            raise t.fail(f"balancing plane {p.name} has the name of cylinder {p.name}: name the "
-                         "planes with letters (A, B)", "balance", "name", i)
-    return Rotor(masses, tuple(planes), e.speed)
+                  vee, *(firing or ((), 0)), radial=radial, coupled=read_coupled(t, one)), None
 
 
 def _revolving(t: Tables, one: dict, cylinders: int, unit: str
