@@ -165,7 +165,8 @@ def test_bad_file_is_one_line_with_file_and_line(mech_file, tmp_path, edit, mess
                         "valve-unequal-acceleration, bearing-forces, coupled-locomotive, "
                         "four-mass-shaft, "
                         "four-masses-one-plane, inline-four, inline-three, locomotive, "
-                        "notes-example-1, outside-locomotive, radial-three, "
+                        "notes-example-1, outside-locomotive, primary-balance-unknowns, "
+                        "radial-three, "
                         "single-cylinder-balance-mass, "
                         "single-cylinder, "
                         "three-masses-between, two-stroke-four, unknown-angles, "
@@ -314,7 +315,8 @@ def test_list_shows_the_bundled_examples():
                    "valve-unequal-acceleration", "bearing-forces", "coupled-locomotive",
                    "four-mass-shaft",
                    "four-masses-one-plane", "inline-four", "inline-three", "locomotive",
-                   "notes-example-1", "outside-locomotive", "radial-three",
+                   "notes-example-1", "outside-locomotive", "primary-balance-unknowns",
+                   "radial-three",
                    "single-cylinder-balance-mass",
                    "single-cylinder",
                    "three-masses-between", "two-stroke-four", "unknown-angles",

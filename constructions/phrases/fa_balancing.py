@@ -262,6 +262,10 @@ WORDS: dict[str, str] = {
         "در سرعتِ یافته‌شدهٔ بلند شدن چرخ، ω = {speed} rad/s",
     "no speed given: the closing side is m·r (× ω²)":
         "سرعتی داده نشده: ضلع بستن m·r است (× ω²)",
+    "no speed is given: the masses and angles found need none (m·r); each force and couple "
+    "is given × ω² (kg·m, kg·m²), and none in N":
+        "سرعتی داده نشده است: جرم‌ها و زاویه‌های یافته‌شده به آن نیازی ندارند (m·r)؛ هر نیرو و "
+        "کوپل × ω² داده می‌شود (kg·m، kg·m²) و هیچ‌یک بر حسب N نیست",
     # a coupled locomotive: the driving and the trailing wheels
     "{name} {mass} kg at {radius}, {angle}°":
         "{name}: {mass} kg در شعاع {radius}، زاویهٔ {angle} درجه",

@@ -46,6 +46,9 @@ def speed_lines(ex) -> list[str]:
             if e.wheel is not None else ""
         return [words("no speed is given: every force and couple below is at the lift speed "
                       "found, ω = {speed} rad/s", speed=numeral(e.speed)) + road]
+    if e.speed is None and ex.open is not None:
+        return [words("no speed is given: the masses and angles found need none (m·r); each "
+                      "force and couple is given × ω² (kg·m, kg·m²), and none in N")]
     if e.speed is None:
         return [words("no speed is given: the balance masses need none (m·r); each force and "
                       "couple is given × ω² (kg·m, kg·m²), as a rotor's resultant is, and none "

@@ -359,8 +359,12 @@ def _engine(t: Tables, metre: float) -> tuple[Engine, OpenRotor | None]:
                   else "single" if len(cylinders) == 1 else "in line", one)
     masses = cylinder_masses(t, one, cylinders)
     if has_unknowns(cylinders):
+        # the masses and angles found are free of ω: the speed is asked only by the forces
+        if "at" in one and not {"speed", "road_speed"} & set(one):
+            raise t.fail("at asks the forces at a crank angle, m·r·ω²: give speed = …, or "
+                         "leave at out for the masses and angles alone", "engine", "at")
         primary = primary_balance(t, one, cylinders, masses, crank * metre, metre,
-                                  engine_speed(t, one, metre, _speed))
+                                  engine_speed(t, one, metre, _speed, optional=True))
         refuse_idle_wheel(t, one)
         found = close_rotor(primary).parts
         each = tuple(found[p.name].mass for p in primary.parts)
