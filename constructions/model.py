@@ -122,6 +122,10 @@ class Mechanism:
     """Where the file's axes put this model's (0, 0), in metres: a file is read about its
     frame's first point, so that its numbers do not depend on how far from the file's origin
     it stands (:meth:`in_file_axes`)."""
+    angle_from: tuple[float, float, str] | None = None
+    """The dead centre the file turns its input angles from, where [input] names one
+    ("t.d.c."): its direction (degrees from +x), the sense the crank turns (+1 CCW, −1 CW) and
+    its name, so that every angle of the file (its [ask] at, --angle) is read as [input]'s."""
 
     def __post_init__(self) -> None:
         numbers = [k.number for k in self.links]

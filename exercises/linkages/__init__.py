@@ -25,10 +25,11 @@ class Linkages(Chapter):
 
     def set_up(self, exercise, *, paper, angle=None):
         if angle is not None:                 # one angle, instead of the file's positions
-            from ..file_numbers import radians_in_turn
+            from .mechanism_input import file_angle
 
-            mech = exercise.mechanism
-            drive = replace(mech.drive, angle=radians_in_turn(angle, mech.units.angle))
+            mech = exercise.mechanism        # turned as [input]'s angle is, from its centre
+            drive = replace(mech.drive, angle=file_angle(mech.angle_from, angle,
+                                                         mech.units.angle))
             exercise = replace(exercise, mechanism=mech.with_drive(drive), positions=())
         return replace(exercise, paper=paper)
 

@@ -51,6 +51,7 @@ if TYPE_CHECKING:
     from ..grading.drafting import Drafting
 from ..file_numbers import RANGE, _float, arithmetic, in_range, radians_in_turn
 from .mechanism_file import _Reader
+from .mechanism_input import file_angle
 from .travel_positions import TRAVEL_KEYS, crank_angle_at_travel, dead_centre_word
 from ..toml_source import SourceMap, read_source, read_toml
 
@@ -367,10 +368,13 @@ def _read_positions(at, mech: Mechanism, fail) -> tuple[Position, ...]:
         if not (in_range(_float(value)) if key == "time" else math.isfinite(_float(value))):
             want = RANGE if key == "time" else "finite"
             raise fail(f"{key} in at must be a number {want}, got {value!r:.40}", "at")
-        if key == "angle":
-            angle = radians_in_turn(value, mech.units.angle)
+        if key == "angle":          # turned as [input]'s: from +x, or from its dead centre
+            angle = file_angle(mech.angle_from, value, mech.units.angle)
             drive = replace(d, angle=angle)
             label = f"θ{d.link} = {_angle_text(angle, deg)}"
+            if mech.angle_from is not None:
+                label = (f"{_angle_text(radians_in_turn(value, mech.units.angle), deg)} from "
+                         f"the {mech.angle_from[2]}, " + label)
             slug = f"theta{d.link}-{value:g}"
         else:
             turned = d.omega * value + 0.5 * d.alpha * value * value

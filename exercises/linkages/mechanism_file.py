@@ -128,7 +128,8 @@ class _Reader(TableReader):
         ox, oy = self.file_origin
         mech = Mechanism(mech_links, drive, tuple(slides), branches, self.units,
                          name, self.file, tuple(arcs), given=self.given,
-                         origin=(ox * self.units.metres + 0.0, oy * self.units.metres + 0.0))
+                         origin=(ox * self.units.metres + 0.0, oy * self.units.metres + 0.0),
+                         angle_from=self.angle_from)
         if self.extremes:
             mech = through_extremes(mech, self.extremes, self.fail)
         mech = follow_branches(mech)

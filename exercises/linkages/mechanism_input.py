@@ -37,9 +37,11 @@ def read_input(r: TableReader) -> Drive:
     if "angle" not in t:
         raise r.fail(f"[input] needs the angle of link {link}", **where)
     angle = r.angle(t["angle"], "angle", key="angle", **where)
+    r.angle_from = None
     if "from" in t:
         turned = r.number(t["angle"], "angle", bounded=False, key="angle", **where)
-        angle = _from_dead_centre(r, t, link, turned, where)
+        r.angle_from = _dead_centre(r, t, link, where)
+        angle = file_angle(r.angle_from, turned, r.units.angle)
     r.given = _read_given(r, t, link, where)
     if r.given is not None:
         # The input's own rates follow from the member given; 1 rad/s stands in for now.
@@ -126,12 +128,23 @@ DEAD_CENTRES = {**dict.fromkeys(("t.d.c.", "tdc", "i.d.c.", "idc", "top dead cen
 toward the piston (the top or inner), or away from it (the bottom or outer)."""
 
 
-def _from_dead_centre(r: TableReader, t: dict, link: int, turned: float, where: dict) -> float:
-    """The crank's angle from +x (rad), for ``turned`` (in [units] angle) from the dead
-    centre ``t["from"]`` in the sense ω turns (counter-clockwise unless ω is a negative
-    number): the line of stroke is the one slider's on the frame, through the crank's
-    pivot, toward the piston as [assembly] places it ("forward" along the slider's angle,
-    "backward" against it)."""
+def file_angle(angle_from: tuple[float, float, str] | None, turned: float, unit: str) -> float:
+    """An input angle as the file gives it (in ``unit``, "deg" or "rad") as the crank's
+    angle from +x (rad): turned from the dead centre ``angle_from`` names in the sense the
+    crank turns, where [input] names one (:func:`_dead_centre`), else from +x."""
+    if angle_from is None:
+        return radians_in_turn(turned, unit)
+    toward, sense, _ = angle_from
+    per = 1.0 if unit == "deg" else math.pi / 180
+    return radians_in_turn(toward + sense * turned / per, "deg")
+
+
+def _dead_centre(r: TableReader, t: dict, link: int, where: dict) -> tuple[float, float, str]:
+    """The dead centre ``t["from"]`` names: its direction from the crank's pivot (degrees
+    from +x), the sense ω turns (+1 counter-clockwise unless ω is a negative number), and
+    its name as the file writes it: the line of stroke is the one slider's on the frame,
+    through the crank's pivot, toward the piston as [assembly] places it ("forward" along
+    the slider's angle, "backward" against it)."""
     said = t["from"]
     if not isinstance(said, str) or said.strip().lower() not in DEAD_CENTRES:
         raise r.fail(f"from names the dead centre the angle is turned from, \"t.d.c.\" (or "
@@ -165,6 +178,5 @@ def _from_dead_centre(r: TableReader, t: dict, link: int, turned: float, where: 
     toward = math.degrees(math.atan2(dy, dx))
     toward = round(toward, 9) if abs(toward - round(toward, 9)) < 1e-12 else toward
     toward += (180.0 if back else 0.0) + math.degrees(DEAD_CENTRES[said.strip().lower()])
-    per = 1.0 if r.units.angle == "deg" else math.pi / 180
-    return radians_in_turn(toward + sense * turned / per, "deg")
+    return toward, sense, said.strip()
 
