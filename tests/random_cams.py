@@ -180,7 +180,7 @@ def _malform(r: random.Random, spec: dict[str, Any]) -> str:
     elif how == "negative-lift":
         t["lift"] = -t["lift"]
     elif how == "unknown-law":
-        t["law"] = r.choice(["harmonic", "cubic", "", "Cycloidal"])
+        t["law"] = r.choice(["cubic", "", "polynomial", "sine"])   # "SHM", "Cycloidal" are read
     elif how == "odd-parabolic":
         t["law"], t["divisions"] = "parabolic", r.choice([3, 5, 7])
         t.pop("blend", None)

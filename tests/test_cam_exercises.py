@@ -55,7 +55,7 @@ def test_the_follower_rises_during_the_rise_whichever_way_the_cam_turns():
     ("kind = \"dwell\"\nangle = 30", "kind = \"pause\"\nangle = 30",
      ["a segment is a rise, a dwell or a return, not 'pause'"]),
     # the follower
-    ("kind = \"roller\"", "kind = \"mushroom\"", ["a follower is knife-edge, roller"]),
+    ("kind = \"roller\"", "kind = \"spherical\"", ["a follower is knife-edge, roller"]),
     ("radius = 10 ", "radius = 0 ", ["a roller follower gives its radius"]),
     ("radius = 10 ", "radius = 10\noffset = 60 ", ["puts the follower's line clear of the "
                                                    "prime circle (50 mm)"]),

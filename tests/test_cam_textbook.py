@@ -40,8 +40,10 @@ def test_a_roller_may_be_given_by_its_diameter():
     ("diameter = 20", "diameter = 0", "a roller follower gives its radius (radius = 10) or its "
                                       "diameter"),
     ("accelerating = 80 ", "accelerating = 120 ", "less than all of it, not 120°"),
-    ("accelerating = 80 ", "accelerating = 77 ", "the acceleration must end on a division: "
-                                                 "77° of 120° in 6 equal parts does not"),
+    ("accelerating = 80 ", "accelerating = 77 ", "the acceleration ends 77° into the "
+                                                 "segment's 120°, on no division of 2 to 24"),
+    ("accelerating = 80 ", "accelerating = 45\ndivisions = 6 ",
+     "the acceleration must end on a division: 45° of 120° in 6 equal parts does not"),
     ("law = \"simple harmonic\"", "law = \"simple harmonic\"\naccelerating = 30",
      "only a parabolic segment (uniform acceleration and retardation) is split"),
     ("at = [60, 180] ", "at = [60, 400] ", "a cam angle asked at is from 0° to 360°, not 400°"),

@@ -20,6 +20,7 @@ from tarsim.constructions.units import LENGTH_UNITS
 from ..file_numbers import file_number
 from ..names import named_in, read_names, renamed_field
 from ..table_file import SPEEDS
+from .cam_settings import book_follower, refuse_unknown
 
 __all__ = ["ArcCamExercise", "parse_arc_cam", "eccentric_disc", "ARC_KINDS"]
 
@@ -29,6 +30,11 @@ ARC_KINDS = {"circular arc": ("flat-faced", "roller", "knife-edge"),
 
 _CAM_KEYS = ("kind", "base_radius", "base_diameter", "nose_radius", "lift", "angle",
              "action_angle", "faces_angle", "flank_radius", "speed", "sense")
+
+
+_FOLLOWER_KEYS = ("kind", "radius", "diameter", "mass", "motion", "offset")
+"""A cam of arcs' [follower] (motion and offset only as the books set it: translating on a
+line through the cam's centre)."""
 
 
 @dataclass(frozen=True)
@@ -73,10 +79,7 @@ def parse_arc_cam(tables, exercise_id: str, angles) -> ArcCamExercise:
     metre = LENGTH_UNITS[length]
     cam = data["cam"]
     kind = cam["kind"]
-    for k in cam:
-        if k not in _CAM_KEYS:
-            raise fail(f"unknown setting '{k}' in a {kind} cam's [cam]; expected "
-                       f"{', '.join(_CAM_KEYS)}", "cam", k)
+    refuse_unknown(cam, _CAM_KEYS, f"a {kind} cam's [cam]", fail, "cam")
     if "segment" in data:
         raise fail(f"a {kind} cam's motion comes from its arcs: leave out the [[segment]] "
                    "tables", "segment")
@@ -99,14 +102,20 @@ def parse_arc_cam(tables, exercise_id: str, angles) -> ArcCamExercise:
                               "flank_radius")
                   if k in cam)
     if kind == "tangent":
+        if "flank_radius" in cam:          # read as nothing, it would leave another cam
+            raise fail("a tangent cam's flanks are straight: flank_radius is a circular arc "
+                       "cam's; leave it out", "cam", "flank_radius")
         shape = _tangent(cam, r1, size, number, fail)
     else:
         shape = _circular(cam, r1, size, number, fail)
     made = ArcCam(kind, r1, *shape, roller, flat)
     ask = data.get("ask", {})
-    if not isinstance(ask, dict) or any(k != "at" for k in ask):
-        raise fail(f"a {kind} cam's [ask] table takes at = [20, 75] (the motion at those "
-                   "cam angles from the start of the lift)", "ask")
+    takes = (f"a {kind} cam's [ask] table takes at = [20, 75] (the motion at those cam angles "
+             "from the start of the lift)")
+    if isinstance(ask, dict):
+        refuse_unknown(ask, ("at",), "[ask]", fail, "ask", otherwise=takes)
+    if not isinstance(ask, dict):
+        raise fail(takes, "ask")
     at = angles(ask.get("at", []), fail)
     top = math.degrees(2 * made.alpha)
     for v in at:
@@ -147,9 +156,12 @@ def eccentric_disc(tables, exercise_id: str, disc: tuple[float, float], follower
     radius, e = disc[0] * metre, disc[1] * metre
     made = ArcCam("eccentric", radius - e, radius, 2 * e, math.pi, follower.radius)
     ask = data.get("ask", {})
-    if not isinstance(ask, dict) or any(k != "at" for k in ask):
-        raise fail("an eccentric disc's [ask] table takes at = [30, 90] (the motion at those "
-                   "cam angles from its lowest place)", "ask")
+    takes = ("an eccentric disc's [ask] table takes at = [30, 90] (the motion at those cam "
+             "angles from its lowest place)")
+    if isinstance(ask, dict):
+        refuse_unknown(ask, ("at",), "[ask]", fail, "ask", otherwise=takes)
+    if not isinstance(ask, dict):
+        raise fail(takes, "ask")
     return ArcCamExercise(exercise_id, str(data.get("name", exercise_id)),
                           str(data.get("source", "")), str(data.get("description", "")),
                           made, omega, length, speed, angles(ask.get("at", []), fail),
@@ -171,12 +183,17 @@ def _follower(t: dict[str, Any], kind: str, metre: float, fail) -> tuple[float, 
     """The follower the cam of ``kind`` drives: its roller's radius (m; 0 for a knife edge
     or a flat face) and whether it is a flat face."""
     allowed = ARC_KINDS[kind]
-    want = t.get("kind", allowed[0])
+    refuse_unknown(t, _FOLLOWER_KEYS, "[follower]", fail, "follower")
+    want = book_follower(t.get("kind", allowed[0]))
     if want not in allowed or t.get("motion", "translating") != "translating" or \
             t.get("offset", 0):
         raise fail(f"a {kind} cam is worked under a {' or '.join(allowed)} follower "
                    "translating on a line through the cam's centre", "follower", "kind")
     if want != "roller":
+        size = next((k for k in ("radius", "diameter") if k in t), None)
+        if size:
+            raise fail(f"{size} is a roller's, not a {want} follower's: leave it out, or make "
+                       "the follower a roller", "follower", size)
         return 0.0, want == "flat-faced"
     if ("radius" in t) == ("diameter" in t):
         raise fail("a roller follower gives its radius (radius = 15) or its diameter "

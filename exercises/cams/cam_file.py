@@ -20,9 +20,12 @@ from ..file_numbers import file_number
 from ..names import named_in, read_names, renamed_field
 from ..table_file import SPEEDS, Tables
 from .arc_cam_file import ARC_KINDS, base_key, eccentric_disc, parse_arc_cam
+from .cam_settings import (CAM_KEYS, FOLLOWER_KEYS, FOLLOWER_KINDS, SEGMENT_KEYS, UNIT_KEYS,
+                           book_follower, book_law, refuse_unknown)
 
 __all__ = ["CamExercise", "parse_cam"]
 
+_ASK_KEYS = ("jerk", "at", "undercut")
 _TOP = ("name", "names", "source", "description", "units", "cam", "follower", "segment", "ask")
 
 
@@ -85,6 +88,8 @@ def parse_cam(text: str, filename: str = "<string>", exercise_id: str = "cam",
     tables already parsed from it, spares a second parse."""
     tables = Tables.read(text, filename, "cam", _TOP, {}, data)
     data, fail = tables.data, tables.fail
+    if isinstance(data.get("units"), dict):
+        refuse_unknown(data["units"], UNIT_KEYS, "[units]", fail, "units")
     length, speed = tables.units("mm", "rpm")
     metre = LENGTH_UNITS[length]
     cam = data.get("cam")
@@ -98,6 +103,7 @@ def parse_cam(text: str, filename: str = "<string>", exercise_id: str = "cam",
             raise fail(f"a cam's kind is {' or '.join(ARC_KINDS)}, not {cam['kind']!r} (a cam "
                        "given by its follower's motion leaves kind out)", "cam", "kind")
         return parse_arc_cam(tables, exercise_id, _angles)
+    refuse_unknown(cam, CAM_KEYS, "[cam]", fail, "cam")
 
     disc = _disc(cam, number, fail)
     base = _base(cam, disc, number, fail)
@@ -117,12 +123,15 @@ def parse_cam(text: str, filename: str = "<string>", exercise_id: str = "cam",
     if base is None:                       # found from the greatest pressure angle
         base = _least_base(segments, follower, omega, cam, metre, length, fail)
     ask = data.get("ask", {})
-    if not isinstance(ask, dict) or any(k not in ("jerk", "at", "undercut") for k in ask) or \
+    takes = ("a cam's [ask] table takes jerk = true (its diagram and peaks), at = [40, 240] "
+             "(the motion at those cam angles) and undercut = true (whether the follower "
+             "undercuts, drawn even where it does); the displacement, velocity, acceleration "
+             "and profile are always drawn")
+    if isinstance(ask, dict):
+        refuse_unknown(ask, _ASK_KEYS, "[ask]", fail, "ask", otherwise=takes)
+    if not isinstance(ask, dict) or \
             not all(isinstance(ask.get(k, False), bool) for k in ("jerk", "undercut")):
-        raise fail("a cam's [ask] table takes jerk = true (its diagram and peaks), at = "
-                   "[40, 240] (the motion at those cam angles) and undercut = true (whether "
-                   "the follower undercuts, drawn even where it does); the displacement, "
-                   "velocity, acceleration and profile are always drawn", "ask")
+        raise fail(takes, "ask")
     at = _angles(ask.get("at", []), fail)
     return CamExercise(exercise_id, str(data.get("name", exercise_id)),
                        str(data.get("source", "")), str(data.get("description", "")),
@@ -257,6 +266,9 @@ def _segments(data: dict[str, Any], follower: Follower, metre: float, length: st
         if kind not in ("rise", "dwell", "return"):
             raise fail(f"a segment is a rise, a dwell or a return, not {kind!r}", "segment",
                        "kind", i)
+        refuse_unknown(t, SEGMENT_KEYS, f"[[segment]] {i + 1}", fail, "segment", i)
+        if kind == "dwell":
+            _refuse_moving(t, fail, i)
         angle = rest if t.get("angle") == "rest" else \
             number(t, "angle", "segment", "a segment's angle", i)
         if not 0 < angle <= 360:
@@ -270,12 +282,13 @@ def _segments(data: dict[str, Any], follower: Follower, metre: float, length: st
                            "size, its kind the way", "segment", "lift", i)
             if follower.oscillating:               # the arm's swing, as the arc at its end
                 lift = math.radians(lift) * follower.arm / metre
-            law = t.get("law", "simple harmonic")
-            if law not in LAWS:
-                raise fail(f"unknown law '{law}'; the laws are {', '.join(LAWS)}", "segment",
-                           "law", i)
+            law = book_law(t.get("law", "simple harmonic"))
+            if law is None:
+                raise fail(f"unknown law {t['law']!r}; the laws are {', '.join(LAWS)} (or as "
+                           "the books say them: SHM, uniform acceleration and retardation, …)",
+                           "segment", "law", i)
             modified = law == "modified uniform velocity"
-            if "accelerating" in t:
+            if "accelerating" in t or "acceleration_ratio" in t:
                 split = _split(t, angle, law, number, fail, i)
             parts = t.get("divisions", 8 if modified else _parts(split))
             if isinstance(parts, bool) or not isinstance(parts, int) or not 2 <= parts <= 24:
@@ -294,6 +307,13 @@ def _segments(data: dict[str, Any], follower: Follower, metre: float, length: st
                                f"{blend:g}", "segment", "blend", i)
             elif "blend" in t:
                 raise fail("only a modified uniform velocity has a blend", "segment", "blend", i)
+            if law == "parabolic" and not any(abs(split * n - round(split * n)) < 1e-9
+                                               for n in range(2, 25)):
+                key = "accelerating" if "accelerating" in t else "acceleration_ratio"
+                raise fail(f"the acceleration ends {angle * split:.6g}° into the segment's "
+                           f"{angle:g}°, on no division of 2 to 24 equal parts, where the "
+                           f"diagram's construction ends it: give a {key} that does",
+                           "segment", key, i)
             if law == "parabolic" and abs(split * parts - round(split * parts)) > 1e-9:
                 raise fail(f"the acceleration must end on a division: {angle * split:g}° of "
                            f"{angle:g}° in {parts} equal parts does not; give divisions so "
@@ -329,17 +349,40 @@ def _angles(raw: Any, fail) -> tuple[float, ...]:
 
 
 def _split(t: dict[str, Any], angle: float, law: str, number, fail, i: int) -> float:
-    """A parabolic segment's accelerating fraction: ``accelerating`` gives the degrees of
+    """A parabolic segment's accelerating fraction k: ``accelerating`` gives the degrees of
     uniform acceleration (from the segment's start), the retardation taking the rest, as
-    the books split an outstroke unequally."""
+    the books split an outstroke unequally; or ``acceleration_ratio`` gives the book's
+    "the acceleration is r times the retardation". The velocity is 2h/β where the parts
+    meet, so the acceleration 2h/kβ² and the retardation 2h/(1 − k)β² stand in the ratio
+    (1 − k)/k = r: k = 1/(1 + r)."""
+    key = "accelerating" if "accelerating" in t else "acceleration_ratio"
     if law != "parabolic":
-        raise fail("only a parabolic segment (uniform acceleration and retardation) is split "
-                   "by accelerating", "segment", "accelerating", i)
+        raise fail(f"only a parabolic segment (uniform acceleration and retardation) is split "
+                   f"by {key}", "segment", key, i)
+    if key == "accelerating" and "acceleration_ratio" in t:
+        raise fail("give the degrees of acceleration or the acceleration_ratio, not both",
+                   "segment", "acceleration_ratio", i)
+    if key == "acceleration_ratio":
+        ratio = number(t, key, "segment", "the acceleration over the retardation", i)
+        if not 1e-6 < ratio < 1e6:
+            raise fail(f"the acceleration_ratio is the acceleration over the retardation, a "
+                       f"positive number (2 where it is twice the retardation), not {ratio:g}",
+                       "segment", key, i)
+        return 1 / (1 + ratio)
     part = number(t, "accelerating", "segment", "the degrees of acceleration", i)
     if not 0 < part < angle:
         raise fail(f"the acceleration lasts part of the segment's {angle:g}°, more than 0° and "
                    f"less than all of it, not {part:g}°", "segment", "accelerating", i)
     return part / angle
+
+
+def _refuse_moving(t: dict[str, Any], fail, i: int) -> None:
+    """Refuse, at its line, a setting of motion in a dwell, which holds the follower still
+    (a lift there would be dropped, the rest of the turn read without it)."""
+    for k in t:
+        if k not in ("kind", "angle"):
+            raise fail(f"a dwell holds the follower still: {k} is a rise's or a return's; "
+                       "leave it out, or make the segment a rise or a return", "segment", k, i)
 
 
 def _parts(split: float) -> int:
@@ -349,24 +392,20 @@ def _parts(split: float) -> int:
                  and (split != 0.5 or n % 2 == 0)), 6)
 
 
-_FOLLOWER_KEYS = ("kind", "radius", "diameter", "motion", "offset", "pivot", "arm")
-_KINDS = ("knife-edge", "roller", "flat-faced")
-
-
 def _follower(t: dict[str, Any], base: float | None, metre: float, unit: str, fail
               ) -> Follower:
     """The [follower] table: its kind, roller radius, and a translating line's offset or an
     oscillating arm's pivot and length (the file's length unit, from the cam centre)."""
-    for k in t:
-        if k not in _FOLLOWER_KEYS:
-            raise fail(f"unknown setting '{k}' in [follower]; expected "
-                       f"{', '.join(_FOLLOWER_KEYS)}", "follower", k)
-    kind, how = t.get("kind", "knife-edge"), t.get("motion", "translating")
-    if kind not in _KINDS:
-        raise fail(f"a follower is {', '.join(_KINDS)}, not {kind!r}", "follower", "kind")
+    refuse_unknown(t, FOLLOWER_KEYS, "[follower]", fail, "follower")
+    kind, how = book_follower(t.get("kind", "knife-edge")), t.get("motion", "translating")
+    if kind is None:
+        raise fail(f"a follower is {', '.join(FOLLOWER_KINDS)} (or as the books say them: "
+                   f"knife edge, flat-face, flat, mushroom), not {t['kind']!r}", "follower",
+                   "kind")
     if how not in ("translating", "oscillating"):
         raise fail(f"a follower is translating or oscillating, not {how!r}", "follower",
                    "motion")
+    _refuse_unused(t, kind, how, fail)
 
     def size(key: str, what: str) -> float:
         try:
@@ -420,3 +459,19 @@ def _follower(t: dict[str, Any], base: float | None, metre: float, unit: str, fa
     except ValueError as e:
         raise fail(str(e), "follower", "pivot") from None
     return f
+
+
+def _refuse_unused(t: dict[str, Any], kind: str, how: str, fail) -> None:
+    """Refuse, at its line, a [follower] setting this follower has no use for: a size on a
+    follower with no roller, a pivot or arm on one that does not swing, an offset on one
+    that does (each would be dropped and another follower's cam solved)."""
+    unused = {"radius": kind != "roller", "diameter": kind != "roller",
+              "pivot": how != "oscillating", "arm": how != "oscillating",
+              "offset": how == "oscillating"}
+    for k in t:
+        if unused.get(k):
+            whose = ("a roller's" if k in ("radius", "diameter") else
+                     "a translating follower's" if k == "offset" else
+                     'an oscillating follower\'s (motion = "oscillating")')
+            raise fail(f"{k} is {whose}, not a {how} {kind} follower's: leave it out, or "
+                       "give the follower it belongs to", "follower", k)
