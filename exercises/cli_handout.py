@@ -42,8 +42,11 @@ def handout(source, out_dir, angle, pdf, paper, lang, digits):
     draws it at (the exercise's, when it states one), with its scale
     statement and bar, the pole marked, sized to hold the polygon. No centre, vector or
     number the solution finds is on it; a position given by a time is
-    given by its time alone. Linkages have a sheet; another chapter's
-    file is refused, naming those that have one.
+    given by its time alone. A gear train's sheet has the train drawn
+    with its teeth, the input and what is asked, and the tabular method's
+    table (an ordinary train's row of speeds) with its rows named and
+    every cell empty. Another chapter's file is refused, naming those that
+    have a sheet.
 
     \b
     Writes into DIR:
@@ -54,6 +57,7 @@ def handout(source, out_dir, angle, pdf, paper, lang, digits):
     Example:
       tarsim handout crank-shaper -o shaper-handout
       tarsim handout four-bar --lang fa -o four-bar-handout-fa
+      tarsim handout planetary-q1 -o q1-handout
       tarsim handout my-linkage.toml --paper A3 --no-pdf
     """
     from tarsim.graphics.export import cairo_missing, output_folder, write_folder

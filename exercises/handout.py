@@ -15,21 +15,22 @@ linkages have one (the course's main exercises), the other chapters are refused 
 from __future__ import annotations
 
 import math
-import re
 from collections.abc import Callable
 from dataclasses import dataclass
 
 from tarsim.constructions import asks as A
 from tarsim.constructions import geometry as g
 from tarsim.constructions.errors import InputError
-from tarsim.constructions.narration import numerals, right_to_left, unit_words, words
+from tarsim.constructions.narration import numerals, unit_words, words
 from tarsim.constructions.record import Panel, Slice
 from tarsim.graphics.figure import Figure, stack_pages
 from tarsim.graphics.handout import Line, compose_handout, draw_empty_polygon, draw_statement
 from tarsim.graphics.paper import paper, room
-from tarsim.graphics.typeset import subscript, typeset, typeset_span
+from tarsim.graphics.typeset import typeset
 
+from .handout_chapters import gear_sheets
 from .handout_loads import force_frames, force_words, given_loads
+from .handout_text import math_text, number
 
 __all__ = ["Handout", "handout", "HANDOUTS"]
 
@@ -67,10 +68,13 @@ def handout(exercise, chapter) -> Handout:
     TarsimError
         If the exercise cannot be solved (the sheet's frames are sized by its solution).
     """
+    from .chapters import chapters
+
     make = HANDOUTS.get(chapter.key)
     if make is None:
+        kinds = " or ".join(c.kind for c in chapters() if c.key in HANDOUTS)
         raise InputError(f"{exercise.id} is {chapter.kind}, which has no problem sheet yet: "
-                         f"tarsim handout writes one for {', '.join(HANDOUTS)} exercises")
+                         f"tarsim handout writes one for {kinds}")
     return Handout(exercise.id, make(exercise))
 
 
@@ -138,12 +142,12 @@ def _given(ex) -> list[Line]:
     out = [Line(words("Given"), heading=True)]
     frame = next(k for k in m.links if k.number == 1)
     if frame.names:
-        points = words(", ").join(_math(f"{p} {_xy(frame.local(p), m)}") for p in frame.names)
+        points = words(", ").join(math_text(f"{p} {_xy(frame.local(p), m)}") for p in frame.names)
         out.append(Line(words("fixed points: {points}", points=points) + f" {mm}"))
     for k in sorted(m.links, key=lambda k: k.number):
         if k.number == 1 or len(k.names) < 2:
             continue
-        spans = words(", ").join(_math(f"{p}{q} = {_number(k.span(p, q) / u.metres)}")
+        spans = words(", ").join(math_text(f"{p}{q} = {number(k.span(p, q) / u.metres)}")
                                  + f" {mm}" for i, p in enumerate(k.names)
                                  for q in k.names[i + 1:])
         out.append(Line(words("link {link}: {spans}", link=numerals(str(k.number)),
@@ -152,14 +156,14 @@ def _given(ex) -> list[Line]:
         if s.guide_link == 1 and s.contact is None:
             angle = math.degrees(math.atan2(s.direction[1], s.direction[0]))
             out.append(Line(words("{point} slides on the line through {through} at {angle}",
-                                  point=s.point, through=f"{_math(_xy(s.through, m))} {mm}",
-                                  angle=_math(f"{_number(angle)}°"))))
-    out.append(Line(_math(_input_words(m))))
+                                  point=s.point, through=f"{math_text(_xy(s.through, m))} {mm}",
+                                  angle=math_text(f"{number(angle)}°"))))
+    out.append(Line(math_text(_input_words(m))))
     d = m.drive
     alpha = f"α{d.link}"
-    out.append(Line(_math(f"{alpha} = {_number(d.alpha)} rad/s²") if d.alpha_given
-                    else words("{alpha} not given: taken as 0", alpha=_math(alpha))))
-    return out + given_loads(ex.loads, _math, _number)
+    out.append(Line(math_text(f"{alpha} = {number(d.alpha)} rad/s²") if d.alpha_given
+                    else words("{alpha} not given: taken as 0", alpha=math_text(alpha))))
+    return out + given_loads(ex.loads)
 
 
 def _asked(ex, worked) -> list[Line]:
@@ -173,8 +177,8 @@ def _asked(ex, worked) -> list[Line]:
         return out
     wheres = [sol.position.label.split(" (")[0] for sol in worked.positions if sol.position]
     if wheres:
-        out.append(Line(words("at {where}:", where=words(" and ").join(_math(w) for w in wheres)),
-                        heading=True))
+        both = words(" and ").join(math_text(w) for w in wheres)
+        out.append(Line(words("at {where}:", where=both), heading=True))
     sol = worked.positions[0]
     centres = [a for a in sol.exercise.asks if isinstance(a, A.Centre)]
     if centres:
@@ -222,7 +226,7 @@ def _frames(sol, sheet) -> list[Figure]:
     def titled(heading: str) -> str:
         if where is None:
             return heading
-        return words("{what} at {where}", what=heading, where=_math(where.label.split(" (")[0]))
+        return words("{what} at {where}", what=heading, where=math_text(where.label.split(" (")[0]))
 
     out = []
     polygons = {}
@@ -261,29 +265,11 @@ def _input_words(m) -> str:
     return input_caption(m)
 
 
-_GREEK_INDEX = re.compile(r"(?<=[α-ω])\d+")
-"""A link's number after θ, ω or α, set as a subscript (θ₂) as the figures set it."""
-
-
-def _math(text: str) -> str:
-    """A formula or a point as the figures set it (each number after a letter a subscript,
-    the spoken language's digits), kept left to right inside a right-to-left line."""
-    text = numerals(_GREEK_INDEX.sub(lambda k: subscript(k.group(0)), typeset_span(text)))
-    return f"\u202a{text}\u202c" if right_to_left() else text
-
-
 def _xy(p: tuple[float, float], m) -> str:
     """A frame point in the file's axes and length unit: "(0, −500)"."""
     k = m.units.metres
-    return f"({_number((p[0] + m.origin[0]) / k)}, {_number((p[1] + m.origin[1]) / k)})"
+    return f"({number((p[0] + m.origin[0]) / k)}, {number((p[1] + m.origin[1]) / k)})"
 
 
-def _number(x: float) -> str:
-    """A given number as the file would write it: six significant figures, a true minus."""
-    from tarsim.constructions.narration import significant
-
-    return significant(x + 0.0).replace("-", "−")
-
-
-HANDOUTS: dict[str, Callable] = {"linkages": _linkage_sheets}
+HANDOUTS: dict[str, Callable] = {"linkages": _linkage_sheets, "gears": gear_sheets}
 """Each chapter's problem sheet, by the chapter's key."""

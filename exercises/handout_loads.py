@@ -12,6 +12,8 @@ from tarsim.constructions.record import Panel
 from tarsim.graphics.figure import Figure
 from tarsim.graphics.handout import Line, draw_empty_polygon
 
+from .handout_text import math_text, number
+
 __all__ = ["given_loads", "force_words", "force_frames"]
 
 _EFFORTS = {
@@ -27,11 +29,10 @@ _EFFORTS = {
 """An engine's efforts as the course names them (:data:`~tarsim.constructions.asks.EFFORTS`)."""
 
 
-def given_loads(loads, math_text, number) -> list[Line]:
+def given_loads(loads) -> list[Line]:
     """The loads' lines: each link's mass, its centre and moment of inertia as given (or the
     rule assumed for it), each force and couple, gravity, the speed's fluctuation, a
-    flywheel, friction. ``math_text`` sets a formula as the sheet does, ``number`` a given
-    number."""
+    flywheel, friction."""
     if loads is None:
         return []
     out = [Line(words("Loads"), heading=True)]
@@ -47,7 +48,7 @@ def given_loads(loads, math_text, number) -> list[Line]:
             parts.append(words("{g} at {xy} mm in the link's axes", g=g,
                                xy=math_text(f"({number(m.centre[0] * 1e3)}, "
                                             f"{number(m.centre[1] * 1e3)})")))
-        parts.append(_assumed(m.assumed, k, math_text) if m.assumed
+        parts.append(_assumed(m.assumed, k) if m.assumed
                      else math_text(f"I{k} = {number(m.inertia)}") + " kg·m²")
         out.append(Line(words(", ").join(parts)))
     for f in loads.forces:
@@ -78,7 +79,7 @@ def given_loads(loads, math_text, number) -> list[Line]:
     return out
 
 
-def _assumed(rule: str, link: int, math_text) -> str:
+def _assumed(rule: str, link: int) -> str:
     """The rule a moment of inertia is taken by ("slender rod (1/12)·m·L², L = 180 mm"), its
     words in the language spoken and its formula as written."""
     word, _, formula = rule.partition(" (")

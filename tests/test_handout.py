@@ -35,11 +35,14 @@ def _sheet(name: str, lang: str):
         return ex, handout(ex, chapter)
 
 
-def _texts(svg: str) -> list[str]:
-    """Every <text>'s words, its tspans joined, in Latin digits."""
+def _texts(svg: str, *, ticks: bool = True) -> list[str]:
+    """Every <text>'s words, its tspans joined, in Latin digits; without a scale bar's tick
+    numbers (set at 2.6 mm, :func:`~tarsim.graphics.scales.draw_scale_bar`) unless
+    ``ticks``: they are the scale's multiples, 0, 100, 200, whatever the answers are."""
     out = []
-    for m in re.finditer(r"<text\b[^>]*>(.*?)</text>", svg, re.S):
-        out.append(re.sub(r"<[^>]+>", "", m.group(1)).translate(_PERSIAN))
+    for m in re.finditer(r"<text\b([^>]*)>(.*?)</text>", svg, re.S):
+        if ticks or 'font-size="2.6"' not in m.group(1):
+            out.append(re.sub(r"<[^>]+>", "", m.group(2)).translate(_PERSIAN))
     return out
 
 
@@ -136,11 +139,28 @@ def test_the_frames_are_at_the_stated_scale_and_hold_the_polygon():
 
 
 def test_other_chapters_are_refused_by_name(tmp_path):
-    got = CliRunner().invoke(cli, ["handout", "planetary-q1", "-o", str(tmp_path / "h")])
+    got = CliRunner().invoke(cli, ["handout", "punching-press", "-o", str(tmp_path / "h")])
     assert got.exit_code == 1
-    assert got.output == ("Error: planetary-q1 is a gear train, which has no problem sheet "
-                          "yet: tarsim handout writes one for linkages exercises\n")
+    assert got.output == ("Error: punching-press is a flywheel or connecting rod exercise, "
+                          "which has no problem sheet yet: tarsim handout writes one for a "
+                          "linkage or a gear train\n")
     assert not (tmp_path / "h").exists()
+
+
+@pytest.mark.parametrize("lang", ["en", "fa"])
+@pytest.mark.parametrize("name", ["planetary-q1", "compound-train"])
+def test_a_gear_trains_sheet_holds_its_teeth_and_no_speed_found(name, lang):
+    ex, sheet = _sheet(name, lang)
+    tokens = set(_NUMBER.findall(" ".join(_texts(to_svg(sheet.figure), ticks=False))))
+    given = _given(name)
+    for x in given:
+        assert f"{x:g}" in tokens, f"{x:g} of {name}'s file is not on its sheet"
+    with speaking("en"):
+        results = chapter_of(ex).solve(ex).results
+    found = {r for x in _numbers_in(results) if abs(x) > 1e-9
+             and not any(math.isclose(abs(x), g, rel_tol=1e-6) for g in given)
+             for r in _renderings(x)} & tokens
+    assert not found, f"answers on {name}'s sheet: {sorted(found)}"
 
 
 def test_the_command_writes_the_sheet(tmp_path):
@@ -149,3 +169,18 @@ def test_the_command_writes_the_sheet(tmp_path):
     assert got.output == f"wrote handout.svg to {tmp_path}/\n"
     assert "Four-bar crank-rocker: problem sheet" in (tmp_path / "handout.svg").read_text()
     assert json.loads((tmp_path / ".tarsim-manifest.json").read_text())
+
+
+def test_the_sheets_words_change_no_other_figures():
+    """fa_handout's words are the sheet's own: one of another module's keys would change
+    that module's figures, for fa.WORDS takes the last."""
+    from pathlib import Path
+
+    from tarsim.constructions.phrases import (fa_balancing, fa_cams, fa_forces, fa_grading,
+                                              fa_handout, fa_rod, fa_trains)
+
+    for module in (fa_balancing, fa_cams, fa_forces, fa_grading, fa_rod, fa_trains):
+        assert not set(fa_handout.WORDS) & set(module.WORDS), module.__name__
+    source = (Path(fa_handout.__file__).parent / "fa.py").read_text(encoding="utf-8")
+    for key in fa_handout.WORDS:     # nor one fa.py sets itself
+        assert f'"{key}"' not in source, key

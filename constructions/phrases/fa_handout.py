@@ -34,7 +34,6 @@ WORDS: dict[str, str] = {
     "{g} at {xy} mm in the link's axes": "{g} در {xy} میلی‌متر در محورهای خود میله",
     "slender rod": "میلهٔ باریک",
     "{name} at {point}: {size} N": "{name} در {point}: {size} N",
-    "a force": "یک نیرو",
     "against the motion": "در خلاف جهت حرکت",
     "at {angle}": "با زاویهٔ {angle}",
     "a couple on link {link}: {moment} N·m": "یک کوپل روی میلهٔ {link}: {moment} N·m",
@@ -56,5 +55,14 @@ WORDS: dict[str, str] = {
     "the rod's radius of gyration about G": "شعاع ژیراسیون میلهٔ رابط حول G",
     "{what}, {links}": "{what}، {links}",
     "Force polygon": "چندضلعی نیرو",
+    # a gear train's
+    "the train": "قطار",
+    "the table to fill in": "جدولی برای پر کردن",
+    "on arm {arm}": "روی بازوی {arm}",
+    "arm {arm}": "بازوی {arm}",
+    "member {member} fixed": "عضو {member} ثابت",
+    "meshes: {meshes}": "درگیری‌ها: {meshes}",
+    "member {member} turns at {speed}": "عضو {member} با سرعت {speed} می‌چرخد",
+    "gears {gears} on one shaft": "چرخ‌دنده‌های {gears} روی یک محور",
 }
 """The problem sheet's words as Persian says them."""
