@@ -20,6 +20,8 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
+from shapely.geometry import Polygon, box
+from shapely.ops import nearest_points, unary_union
 
 from tarsim.constructions.narration import numerals
 from tarsim.constructions.scales import nice
@@ -30,8 +32,8 @@ from .plot_spots import MARK_R as _MARK_R
 from .rtl import is_rtl, reading
 from .rtl_runs import lay_runs, sign_left
 
-__all__ = ["Series", "PlotMark", "nice_ticks", "tick_text", "rich_text", "draw_line_plot",
-           "CURVE_STYLES"]
+__all__ = ["Series", "PlotMark", "nice_ticks", "smallest_shown", "tick_text", "rich_text",
+           "draw_line_plot", "CURVE_STYLES"]
 
 CURVE_STYLES = ("plot_curve", "plot_curve_dashed", "plot_curve_dotted", "plot_curve_dash_dot")
 """Curve styles in the order series take them: solid black, dashed black, dotted grey,
@@ -96,6 +98,27 @@ def nice_ticks(lo: float, hi: float, count: int = 6) -> list[float]:
     step = nice((hi - lo) / max(count, 1))
     first, last = math.floor(lo / step + 1e-9), math.ceil(hi / step - 1e-9)
     return [float(f"{i * step:.12g}") + 0.0 for i in range(first, last + 1)]
+
+
+_PEN = 0.1
+"""Paper (mm) below which two heights on a plot read as one: a printer's and an eye's
+resolution, under half the width of the thinnest curve drawn."""
+
+
+def smallest_shown(lo: float, hi: float, *, include_zero: bool = True) -> float:
+    """The least height a plot of values from ``lo`` to ``hi`` shows apart from another:
+    what :data:`_PEN` of its plotting box stands for on its y axis (the axis as
+    :func:`draw_line_plot` ticks it). A value nearer 0 than this is drawn on the zero line.
+
+    Examples
+    --------
+    >>> round(smallest_shown(-383.0, 383.0), 4)           # ticks −400 … 400 over 82 mm
+    0.9756
+    """
+    if include_zero:
+        lo, hi = min(lo, 0.0), max(hi, 0.0)
+    ticks = nice_ticks(lo, hi)
+    return (ticks[-1] - ticks[0]) / _PLOT_H * _PEN
 
 
 def tick_text(value: float, step: float) -> str:
@@ -189,7 +212,7 @@ def draw_line_plot(title: str, x_label: str, y_label: str, series: Sequence[Seri
                    notes: Sequence[str] = (), mark_legend: str = "",
                    include_zero: bool = True, y_ticks: Sequence[float] = (),
                    fills: Sequence[tuple[str, Sequence[Point]]] = (),
-                   tags: Sequence[tuple[float, float, str]] = ()) -> Figure:
+                   tags: Sequence[tuple] = ()) -> Figure:
     """Draw ``series`` against x in a framed plot, with ``marks`` as labelled open circles.
 
     Parameters
@@ -221,7 +244,11 @@ def draw_line_plot(title: str, x_label: str, y_label: str, series: Sequence[Seri
         Areas shaded under the curves, each (style, its outline in data coordinates):
         the energy areas of a turning-moment diagram.
     tags
-        Words set centred at data points (x, y): each area's value.
+        Words set centred at data points (x, y): each area's value. A tag may carry the
+        outline of what it names, (x, y, words, outlines), each outline in data
+        coordinates (an area wrapped across the plot's end is two): its words then stand
+        inside it where they fit, else beside it with a leader into it, never on another
+        tag's outline.
 
     Returns
     -------
@@ -313,7 +340,9 @@ def draw_line_plot(title: str, x_label: str, y_label: str, series: Sequence[Seri
     inner = _TICK + 0.4
     _draw_marks(fig, [(px(m.x), py(m.y), m.label) for m in marks], paper_runs,
                 (left + inner, plot_top + inner, right - inner, bottom - inner))
-    _draw_tags(fig, [(px(tx), py(ty), text) for tx, ty, text in tags], paper_runs,
+    _draw_tags(fig, [(px(t[0]), py(t[1]), t[2],
+                      [[(px(a), py(b)) for a, b in o] for o in (t[3] if len(t) > 3 else ())])
+                     for t in tags], paper_runs,
                (left + inner, plot_top + inner, right - inner, bottom - inner))
 
     legend = [(s.style, s.label) for s in series] if len(series) > 1 else []
@@ -370,15 +399,19 @@ def _clip_runs(points: Sequence[Point | None], x0: float, x1: float) -> list[lis
     return [r for r in runs if r]
 
 
-def _draw_tags(fig: Figure, tags: list[tuple[float, float, str]],
+def _draw_tags(fig: Figure, tags: list[tuple[float, float, str, list]],
                runs: list[tuple[Point, ...]], frame: Box) -> None:
     """Each tag's words at its point, or moved the least (a line up or down, or to a side)
     to keep clear of the curves, the frame and the tags before it: an energy's value set
-    at the middle of the segment it is the rise of would sit on that segment."""
+    at the middle of the segment it is the rise of would sit on that segment. A tag with
+    outlines (an area) stands inside them where its words fit, else beside them, clear of
+    every other tag's outline, with a leader into its own."""
     segments = spots.segments(runs)
+    shapes = [unary_union([Polygon(o).buffer(0) for o in outlines if len(o) > 2])
+              if outlines else None for _, _, _, outlines in tags]
     taken: list[Box] = []
     h = _NOTE
-    for x, y, text in tags:
+    for n, (x, y, text, _) in enumerate(tags):
         w = _rich_width(text, _NOTE)
         shifts = np.array([(0.0, 0.0)] + [(0.0, k * (h + 0.8)) for k in (-1, 1, -2, 2)]
                           + [(k * (w / 2 + 2.5), 0.0) for k in (1, -1)])
@@ -386,10 +419,59 @@ def _draw_tags(fig: Figure, tags: list[tuple[float, float, str]],
         boxes = np.stack([cx - w / 2 - 0.3, cy - h / 2 - 0.3, cx + w / 2 + 0.3,
                           cy + h / 2 + 0.3], axis=1)
         cost = spots.overlaps(boxes, taken, segments, frame) + 0.01 * np.hypot(*shifts.T)
-        k = int(np.argmin(cost))
-        fig.add(Text((float(cx[k]), float(cy[k])), sign_left(text), _NOTE, "middle",
-                     italic=False))
-        taken.append(tuple(boxes[k].tolist()))
+        own = shapes[n]
+        leader = None
+        if own is not None and not own.is_empty:
+            others = [o for j, o in enumerate(shapes) if j != n and o is not None]
+            cost += np.array([0.0 if own.contains(box(*b)) else 1.0 for b in boxes])
+            if cost.min() >= 1.0:
+                boxes, cost, leader = _beside(own, others, w, h, taken, segments, frame)
+        i = int(np.argmin(cost))
+        b = boxes[i]
+        if leader is not None:
+            start, end = leader[i]
+            fig.line(start, end, "plot_leader")
+        fig.add(Text((float(b[0] + b[2]) / 2, float(b[1] + b[3]) / 2), sign_left(text),
+                     _NOTE, "middle", italic=False))
+        taken.append(tuple(b.tolist()))
+
+
+_BESIDE = (1.5, 3.0, 5.0, 8.0, 12.0)
+"""How far (mm) beside an area too thin to hold its words they are tried, nearest first."""
+
+
+def _beside(own, others, w: float, h: float, taken: list[Box], segments, frame: Box):
+    """Boxes for words ``w`` × ``h`` beside the area ``own`` (above, below and to its
+    sides, ever farther), their costs (the curves, frame and words they cover, any other
+    area, and how far they stand) and each one's leader from its edge into the area."""
+    x0, y0, x1, y1 = own.bounds
+    inside = own.representative_point()
+    mid = ((x0 + x1) / 2, (y0 + y1) / 2)
+    centres = []
+    for d in _BESIDE:
+        centres += [(mid[0], y0 - d - h / 2), (mid[0], y1 + d + h / 2),
+                    (x1 + d + w / 2, mid[1]), (x0 - d - w / 2, mid[1]),
+                    (x1 + d + w / 2, y0 - d - h / 2), (x0 - d - w / 2, y0 - d - h / 2),
+                    (x1 + d + w / 2, y1 + d + h / 2), (x0 - d - w / 2, y1 + d + h / 2)]
+    c = np.array(centres)
+    boxes = np.stack([c[:, 0] - w / 2 - 0.3, c[:, 1] - h / 2 - 0.3, c[:, 0] + w / 2 + 0.3,
+                      c[:, 1] + h / 2 + 0.3], axis=1)
+    cost = spots.overlaps(boxes, taken, segments, frame)
+    leaders = []
+    for k, b in enumerate(boxes):
+        shape = box(*b)
+        cost[k] += sum(shape.intersection(o).area > 0.01 for o in others)
+        cost[k] += 2.0 * (shape.intersection(own).area > 0.01)
+        cost[k] += 0.02 * shape.distance(own)
+        # from a gap off the words' own box (ink, not the room kept round it) into the area
+        cx, cy = (b[0] + b[2]) / 2, (b[1] + b[3]) / 2
+        near, far = nearest_points(box(cx - w / 2, cy - 0.375 * h, cx + w / 2, cy + 0.375 * h),
+                                   inside)
+        d = max(math.hypot(far.x - near.x, far.y - near.y), 1e-9)
+        gap = min(0.3, d / 2) / d
+        leaders.append(((near.x + gap * (far.x - near.x), near.y + gap * (far.y - near.y)),
+                        (far.x, far.y)))
+    return boxes, cost, leaders
 
 
 def _draw_marks(fig: Figure, marks: list[tuple[float, float, str]],

@@ -276,3 +276,79 @@ def test_solve_and_sweep_sign_a_torque_one_way(tmp_path):
     assert (t2[2], moment[2]) == ("cw", "ccw")
     assert by_sweep.groups() == t2.groups()
     assert "-" not in by_sweep[0]                 # a true minus, as every table prints it
+
+
+@pytest.fixture(scope="module")
+def engine_diagram():
+    """engine-forces' diagram round 360 steps, as `tarsim sweep engine-forces` draws it:
+    two loops of 600 J, one wrapped across 360°/0°, and two slivers of −0.48 J and +1.03 J
+    a quarter of a millimetre thick by 310°–335°."""
+    tm = turning_moment(load_exercise(FORCES["engine-forces"]), 360)
+    return tm, tm.figure()
+
+
+def test_each_area_is_labelled_once_inside_its_loop_or_beside_it_with_a_leader(
+        engine_diagram):
+    """Each of the 4 areas has one label (the wrapped one too): inside its own loop where
+    its words fit, else beside it with a leader from the words' box into the loop; no
+    label on another loop (more than 0.01 mm², a graze) or on another label. The slivers'
+    labels stood 2 mm off theirs with nothing joining them."""
+    from shapely.geometry import Point, Polygon, box
+    from shapely.ops import unary_union
+
+    from tarsim.graphics.figure import Path as Stroke, Text
+
+    tm, fig = engine_diagram
+    _, tags = tm._areas(tm.reading)
+    assert len(tags) == len(tm.reading.areas) == 4
+    fills = [p for p in fig.items if isinstance(p, Stroke) and p.style.startswith("triangle")]
+    loops, k = [], 0
+    for tag in tags:                   # the figure's outlines, in the order drawn, by area
+        loops.append(unary_union([Polygon(p.points).buffer(0)
+                                  for p in fills[k:k + len(tag[3])]]))
+        k += len(tag[3])
+    assert k == len(fills)
+    leaders = [p.points for p in fig.items if isinstance(p, Stroke) and p.style == "plot_leader"]
+    words = {t.text: box(*t.box()) for t in fig.items if isinstance(t, Text)
+             and t.text.endswith(" J") and t.text[:1] in "+−"}
+    assert sorted(words) == sorted(tag[2] for tag in tags)       # each area labelled once
+    for n, tag in enumerate(tags):
+        mine, loop = words[tag[2]], loops[n]
+        if not loop.contains(mine):
+            # the leader starts at the words (a gap of 0.3 mm, as a mark's does) and ends
+            # inside the loop
+            assert any(mine.exterior.distance(Point(a)) < 0.5 and loop.distance(Point(b))
+                       < 1e-6 for a, b in leaders), tag[2]
+        for j, other in enumerate(loops):
+            if j != n:
+                assert mine.intersection(other).area <= 0.01, (tag[2], tags[j][2])
+        for text, theirs in words.items():
+            if text != tag[2]:
+                assert not mine.intersects(theirs), (tag[2], text)
+
+
+def test_the_position_drawn_is_marked_with_its_value(engine_diagram):
+    """The force polygons' position on the curve is named with its angle: θ2 = 40°, the
+    file's [input] angle, where it read θ2 alone."""
+    from tarsim.graphics.figure import Text
+
+    _, fig = engine_diagram
+    assert [t.text for t in fig.items if isinstance(t, Text) and t.text.startswith("θ2")
+            and t.size < 3.0] == ["θ2 = 40°"]
+
+
+@pytest.mark.parametrize("offset, said", [(0.01, "mean 0 N·m"), (5.0, "mean 5 N·m")])
+def test_a_mean_the_drawing_cannot_show_off_zero_is_stated_as_0(engine_diagram, offset, said):
+    """engine-forces' torque moved up by 0.01 N·m has that mean, beyond its rounding, but on
+    a diagram of ±400 N·m over 82 mm a tenth of a millimetre is 0.98 N·m: its mean line
+    cannot be drawn off zero, and is stated as 0; one of 5 N·m can, and is stated."""
+    import copy
+
+    from tarsim.graphics.figure import Text
+
+    tm = copy.copy(engine_diagram[0])
+    tm.torques = [t + offset for t in tm.torques]
+    assert tm.reading.mean == pytest.approx(offset, rel=1e-6)
+    fig = tm.figure()
+    assert [t.text for t in fig.items if isinstance(t, Text) and t.text.startswith("mean")] \
+        == [said]

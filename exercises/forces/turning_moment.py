@@ -28,7 +28,7 @@ from tarsim.constructions.reference.flywheel import (Fluctuation, fluctuation, f
                                                      speed_fluctuation)
 from tarsim.constructions.reference.kinetostatics import balance, power_torque, torque_rounding
 from tarsim.graphics.figure import Figure
-from tarsim.graphics.plot import PlotMark, Series, draw_line_plot
+from tarsim.graphics.plot import PlotMark, Series, draw_line_plot, smallest_shown
 from ..linkages.exercise_file import Exercise
 
 __all__ = ["POWER_AGREE", "TurningMoment", "moment_files", "turning_moment"]
@@ -150,9 +150,9 @@ class TurningMoment:
                        omega=numerals(f"{self.omega:.4g}"), unit=unit_words("rad/s"))]
         torque = unit_words("N·m")
         if r is not None:
-            series.append(Series(words("mean {value} {unit}", value=numerals(f"{r.mean:.4g}"),
-                                       unit=torque), ((0.0, r.mean), (360.0, r.mean)),
-                                 "plot_curve_dashed"))
+            series.append(Series(words("mean {value} {unit}", value=numerals(
+                f"{self._mean_shown(r.mean):.4g}"), unit=torque), ((0.0, r.mean), (360.0, r.mean)),
+                "plot_curve_dashed"))
             fills, tags = self._areas(r)
             notes.append(words("ΔE = {energy} {unit}, the greatest fluctuation of energy: the "
                                "highest energy less the lowest, adding the areas in turn (shaded "
@@ -161,7 +161,7 @@ class TurningMoment:
                                unit=unit_words("J")))
         ticks = [(k * 30.0, numerals(f"{k * 30}")) for k in range(13)]
         name = self.exercise.mechanism.name
-        marks = [PlotMark(math.degrees(turned), drawn, label.split(" (")[0])
+        marks = [PlotMark(math.degrees(turned), drawn, _said_value(label.split(" (")[0]))
                  for turned, drawn, _, label in self.marks]
         if r is not None:           # where the energy is highest and lowest, on this axis
             notes.append(words("The energy is lowest at {low}° turned (θ = {theta_low}°) and "
@@ -179,6 +179,13 @@ class TurningMoment:
             mark_legend=words("by the force polygons") if marks else "",
             subtitle=words("{name}: the driving torque, positive {sense}", name=name,
                            sense=Word(self.turning)))
+
+    def _mean_shown(self, mean: float) -> float:
+        """The mean as the diagram states it: 0 where its line would stand nearer the zero
+        line than the drawing shows (a mean of 1e-14 N·m is the rounding of no net work,
+        and one of 0.01 N·m on a diagram of ±400 N·m cannot be drawn off zero either)."""
+        ys = [t for t in self.torques if t is not None] + [t for _, t, _, _ in self.marks]
+        return 0.0 if abs(mean) < smallest_shown(min(ys), max(ys)) else mean
 
     def _areas(self, r: Fluctuation):
         """Each energy area's outline (between curve and mean) and its label."""
@@ -201,6 +208,13 @@ class TurningMoment:
                       for n in names]
             rows.append(",".join(cells))
         return "\n".join(rows) + "\n"
+
+
+def _said_value(label: str) -> str:
+    """A position's name with its value in the digits of the language being spoken, as the
+    axes give theirs: "θ2 = ۴۰°" (the symbol's own digit kept)."""
+    name, equals, value = label.partition(" = ")
+    return name + equals + numerals(value)
 
 
 def turning_moment(ex: Exercise, steps: int = 360,
@@ -306,7 +320,10 @@ def _drawn_marks(ex: Exercise) -> list[tuple[float, float, float, str]]:
             continue        # not asked, or a position that speeds up: off the steady curve
         theta = sol.assembly.mechanism.drive.angle
         turned = (sense * (theta - drive.angle)) % (2 * math.pi)
-        label = sol.position.label if sol.position else f"θ{drive.link}"
+        # a position of its own is named with its value ("t = 2.34 s"), the file's own angle
+        # by it ("θ2 = 40°")
+        label = sol.position.label if sol.position else \
+            f"θ{drive.link} = {math.degrees(theta) % 360:.6g}°"
         out.append((turned, sense * q.value["value"], sense * q.reference["value"], label))
     return out
 

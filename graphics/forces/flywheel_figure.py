@@ -139,7 +139,8 @@ def energy_fills(degrees: list[float], torques: list[float], mean: float,
                  cuts: list[float], period: float, label=None):
     """Each area's outline between the curve (at ``degrees`` over a ``period``) and the
     ``mean``, cut at the intercepts ``cuts`` (°), and its label (J), written by ``label``
-    (its sign, four figures and J by default)."""
+    (its sign, four figures and J by default), with the area's outlines (two for one
+    wrapped across the period's end, labelled once) so that the plot sets it inside them."""
     label = label or (lambda area: _signed(area, unit_words("J")))
     degrees = list(degrees) + [period]
     torques = list(torques) + [torques[0]]
@@ -167,7 +168,7 @@ def energy_fills(degrees: list[float], torques: list[float], mean: float,
         big = max(pieces, key=lambda p: p[-1][0] - p[0][0])
         peak = max(big, key=lambda p: abs(p[1] - mean))
         tags.append(((big[0][0] + big[-1][0]) / 2, (peak[1] + mean) / 2,
-                     label(area)))
+                     label(area), pieces))
     return fills, tags
 
 
