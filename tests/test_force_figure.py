@@ -94,16 +94,19 @@ def test_each_force_is_named_beside_its_own_arrow_in_its_own_polygon(shaper):
         assert t.steps == own.steps != (), (t.text, t.sub)
 
 
-def test_every_name_drawn_is_in_the_key(shaper):
-    """F_R, F_T, t and x (and each kind of load: F_ij, W_k, F_ik) are keyed under the
-    figure, by their own letter and subscript."""
-    fig, _ = shaper
-    drawn = [t for t in fig.items if isinstance(t, Text) and t.owner]
-    bottom = max(y for t in drawn for _, y in t.owner)
-    key = {(t.text, t.sub) for t in fig.items if isinstance(t, Text) and t.at[1] > bottom
+@pytest.mark.parametrize("at, keyed", [
+    ("forces-t-2.34s", {("F", "R"), ("F", "T"), ("t", ""), ("x", ""), ("F", "ij"),
+                        ("W", "k"), ("F", "ik")}),
+    # F_32 is all crank effort at θ2 = 90°: one arrow named "F_32 = F_T", F_T keyed all the same
+    ("forces-theta2-90", {("F", "T"), ("t", ""), ("x", ""), ("F", "ij"), ("W", "k")})])
+def test_every_name_drawn_is_in_the_key(solved, at, keyed):
+    """F_R, F_T, t and x, and each kind of load (F_ij, W_k, F_ik), are keyed under the
+    figure's legend, each by its own letter and subscript."""
+    fig = solved(SHAPER).figures[at]
+    (legend,) = [t.at[1] for t in fig.items if isinstance(t, Text) and t.text == "a force"]
+    key = {(t.text, t.sub) for t in fig.items if isinstance(t, Text) and t.at[1] > legend
            and t.italic}
-    assert {("F", "R"), ("F", "T"), ("t", ""), ("x", ""), ("F", "ij"), ("W", "k"),
-            ("F", "ik")} <= key
+    assert keyed <= key
 
 
 def _gap(box, a, b) -> float:

@@ -61,7 +61,8 @@ def draw_force_figure(c: Construction, scale: float, title: str,
                                                 ("construction", "a line of known "
                                                                  "direction")),
                  notes=notes)
-    draw_key(fig, [t for t in fig.items if isinstance(t, Text) and t.owner])
+    draw_key(fig, [t for t in fig.items if isinstance(t, Text)
+                   and (t.owner or t.text.startswith("= "))])    # names, and second names
     return fig
 
 

@@ -53,8 +53,9 @@ def key_entries(names: Sequence[Text]) -> list[tuple[str, str, str, str]]:
 def _kind(name: Text) -> int | None:
     """Which of :data:`_KINDS` a drawn name is, if any."""
     tail = name.tail.split(" = ")[0].rstrip("′")
+    text = name.text.removeprefix("= ")          # a second name of one arrow: "F₃₂ = F_T"
     for k, (letter, sub, end, *_) in enumerate(_KINDS):
-        if name.text == letter and tail == end and (
+        if text == letter and tail == end and (
                 re.fullmatch(sub, name.sub) if sub else not name.sub):
             return k
     return None
