@@ -45,7 +45,9 @@ def handout(source, out_dir, angle, pdf, paper, lang, digits):
     given by its time alone. A gear train's sheet has the train drawn
     with its teeth, the input and what is asked, and the tabular method's
     table (an ordinary train's row of speeds) with its rows named and
-    every cell empty. Another chapter's file is refused, naming those that
+    every cell empty; a rotor's has its side view, its table with the
+    masses given and the products left empty, and the force (and couple)
+    polygon's frame. Another chapter's file is refused, naming those that
     have a sheet.
 
     \b
@@ -58,6 +60,7 @@ def handout(source, out_dir, angle, pdf, paper, lang, digits):
       tarsim handout crank-shaper -o shaper-handout
       tarsim handout four-bar --lang fa -o four-bar-handout-fa
       tarsim handout planetary-q1 -o q1-handout
+      tarsim handout four-mass-shaft -o rotor-handout
       tarsim handout my-linkage.toml --paper A3 --no-pdf
     """
     from tarsim.graphics.export import cairo_missing, output_folder, write_folder

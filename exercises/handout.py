@@ -28,7 +28,7 @@ from tarsim.graphics.handout import Line, compose_handout, draw_empty_polygon, d
 from tarsim.graphics.paper import paper, room
 from tarsim.graphics.typeset import typeset
 
-from .handout_chapters import gear_sheets
+from .handout_chapters import gear_sheets, rotor_sheets
 from .handout_loads import force_frames, force_words, given_loads
 from .handout_text import math_text, number
 
@@ -72,7 +72,8 @@ def handout(exercise, chapter) -> Handout:
 
     make = HANDOUTS.get(chapter.key)
     if make is None:
-        kinds = " or ".join(c.kind for c in chapters() if c.key in HANDOUTS)
+        kinds = [c.kind for c in chapters() if c.key in HANDOUTS]
+        kinds = " or ".join([", ".join(kinds[:-1]), kinds[-1]] if len(kinds) > 1 else kinds)
         raise InputError(f"{exercise.id} is {chapter.kind}, which has no problem sheet yet: "
                          f"tarsim handout writes one for {kinds}")
     return Handout(exercise.id, make(exercise))
@@ -271,5 +272,6 @@ def _xy(p: tuple[float, float], m) -> str:
     return f"({number((p[0] + m.origin[0]) / k)}, {number((p[1] + m.origin[1]) / k)})"
 
 
-HANDOUTS: dict[str, Callable] = {"linkages": _linkage_sheets, "gears": gear_sheets}
+HANDOUTS: dict[str, Callable] = {"linkages": _linkage_sheets, "gears": gear_sheets,
+                                  "balancing": rotor_sheets}
 """Each chapter's problem sheet, by the chapter's key."""

@@ -1,6 +1,7 @@
 """The problem sheets of the chapters besides the linkages (:mod:`.handout`): a gear train
-drawn with its data and its table's rows left empty; each sheet with what is asked, and no
-answer.
+drawn with its data and its table's rows left empty; a rotor's masses in its table, the
+products left empty, and an empty frame for each polygon; each sheet with what is asked,
+and no answer.
 
 Each maker solves the exercise as ``tarsim solve`` does, for the sheet's figures are drawn
 as the solution's are (the train at its scale, the table's rows as the notes set them), but
@@ -9,7 +10,10 @@ puts on it nothing the solve found.
 
 from __future__ import annotations
 
+import math
+
 from tarsim.constructions.asks import symbol
+from tarsim.constructions.units import LENGTH_UNITS
 from tarsim.constructions.narration import numerals, unit_words, words
 from tarsim.graphics.figure import Figure
 from tarsim.graphics.handout import Line, compose_handout, draw_statement
@@ -17,7 +21,7 @@ from tarsim.graphics.paper import paper
 
 from .handout_text import math_text, number
 
-__all__ = ["gear_sheets"]
+__all__ = ["gear_sheets", "rotor_sheets"]
 
 
 def _asked(asks) -> list[Line]:
@@ -95,3 +99,133 @@ def _given_train(train) -> list[Line]:
             str(train.input_member)), speed=math_text(number(abs(float(train.input_speed))))
             + f" {unit_words(train.units.speed)} {sense}")))
     return out
+
+
+def rotor_sheets(ex) -> list[Figure]:
+    """A rotor's sheet: its side view (two planes), the data and what is asked, its table with
+    the masses given and every product and balancing mass left empty, and an empty frame
+    for the force polygon (and the couple polygon) at the scale the solution draws it at.
+
+    Raises
+    ------
+    InputError
+        For an engine's file, or a rotor with an unknown besides the balancing masses (an
+        angle or a plane to find): those have no sheet yet.
+    """
+    from tarsim.constructions.errors import InputError
+    from tarsim.graphics.balancing.balance_figures import draw_side_view
+
+    from .chapters import chapter_of
+
+    r = ex.rotor
+    if r is None or ex.open is not None or ex.weights:
+        raise InputError(f"{ex.id}: a problem sheet is written for a rotor whose masses are all "
+                         "given in kg and whose balancing masses are asked; this one has none "
+                         "yet")
+    s = chapter_of(ex).solve(ex)
+    unit, metre = ex.length_unit, LENGTH_UNITS[ex.length_unit]
+    name = s.exercise.name
+    panels = []
+    two = len(r.planes) == 2
+    if two or len({m.plane for m in r.masses}) > 1:
+        planes = [(m.name, m.plane, "link") for m in r.masses]
+        planes += [(p.name, p.position, "normal") for p in r.planes]
+        panels.append(draw_side_view(planes, words("{name}: side view", name=name), unit, metre))
+    panels.append(draw_statement(_given_rotor(ex, unit, metre) + _asked_rotor(r)))
+    panels.append(_rotor_table(ex, unit, metre))
+    b = s.balance
+    polygons = []
+    if two and any(m.plane != r.planes[0].position for m in r.masses):
+        couple = words("{name}: couple polygon (reference plane {plane})", name=name,
+                       plane=r.planes[0].name)
+        polygons.append((couple, b.couple, b.closing[f"{r.planes[1].name}·l"], "kg·m²"))
+    polygons.append((words("{name}: force polygon", name=name), b.force,
+                     b.closing[r.planes[0].name], "kg·m"))
+    panels += [_empty_balance_polygon(b.construction, *p) for p in polygons]
+    sheet = paper("A4")
+    return compose_handout(words("{name}: {what}", name=name, what=words("problem sheet")),
+                           panels, sheet=(sheet.width, sheet.height))
+
+
+def _given_rotor(ex, unit: str, metre: float) -> list[Line]:
+    """The masses as the file gives them, the balancing planes, the speed."""
+    r = ex.rotor
+    out = [Line(words("Given"), heading=True)]
+    mm = unit_words(unit)
+    for m in r.masses:
+        out.append(Line(words("mass {name}: {mass} kg at {radius}, {angle}, plane at {plane}",
+                              name=m.name, mass=math_text(number(m.mass)),
+                              radius=math_text(number(m.radius / metre)) + f" {mm}",
+                              angle=math_text(f"{number(math.degrees(m.angle))}°"),
+                              plane=math_text(number(m.plane / metre)) + f" {mm}")))
+    for p in r.planes:
+        held = (words("its mass at {radius}", radius=math_text(number(p.radius / metre))
+                      + f" {mm}") if p.radius is not None
+                else words("its mass {mass} kg", mass=math_text(number(p.mass))))
+        out.append(Line(words("balancing plane {name} at {plane}, {held}", name=p.name,
+                              plane=math_text(number(p.position / metre)) + f" {mm}",
+                              held=held)))
+    if r.speed:
+        rpm = ex.speed_unit == "rpm"
+        speed = r.speed * 30 / math.pi if rpm else r.speed
+        out.append(Line(words("speed {speed}", speed=math_text(number(speed))
+                              + f" {unit_words('rpm' if rpm else 'rad/s')}")))
+    return out
+
+
+def _asked_rotor(r) -> list[Line]:
+    """The balancing masses asked, one a plane: its mass (or its radius, where the file
+    gives the mass) and its angle."""
+    out = [Line(words("Find"), heading=True)]
+    for p in r.planes:
+        out.append(Line(words("in plane {name}: the balancing mass and its angle", name=p.name)
+                        if p.radius is not None else
+                        words("in plane {name}: the given mass's radius and its angle",
+                              name=p.name)))
+    return out
+
+
+def _rotor_table(ex, unit: str, metre: float) -> Figure:
+    """The rotor's table as the solution sets it (m, r, θ, l, m·r, m·r·l), the given cells
+    filled and every product, and what the balancing planes' masses are to be, empty."""
+    from tarsim.graphics.train_table import draw_train_table
+
+    r = ex.rotor
+    ref = r.planes[0].position
+    two = len(r.planes) == 2
+    flat = not two and len({m.plane for m in r.masses} | {ref}) == 1
+    length, kg = unit_words(unit), unit_words("kg")
+    heads = [f"m ({kg})", f"r ({length})", "θ"] + ([] if flat else [f"l ({length})"]) + [
+        f"m·r ({unit_words('kg·m')})"] + ([f"m·r·l ({unit_words('kg·m²')})"] if two else [])
+    empty = [""] * (2 if two else 1)
+    rows = [(m.name, [numerals(number(m.mass)), numerals(number(m.radius / metre)),
+                      numerals(f"{number(math.degrees(m.angle))}°")]
+             + ([] if flat else [numerals(number((m.plane - ref) / metre))]) + empty)
+            for m in r.masses]
+    rows += [(p.name, [numerals(number(p.mass)) if p.mass is not None else "",
+                       numerals(number(p.radius / metre)) if p.radius is not None else "", ""]
+              + ([] if flat else [numerals(number((p.position - ref) / metre))]) + empty)
+             for p in r.planes]
+    return draw_train_table(words("{name}: {what}", name=ex.name,
+                                  what=words("the table to fill in")), heads, rows,
+                            ruled=[len(r.masses)])
+
+
+def _empty_balance_polygon(c, title: str, tips, closing, unit: str) -> Figure:
+    """An empty frame for a rotor's polygon, at the scale the solution draws it at (the
+    1-2-5 scale that fits it in its room), its pole marked where its first side starts."""
+    from tarsim.graphics.balancing.balance_figures import _ROOM
+    from tarsim.graphics.handout import draw_empty_polygon
+    from tarsim.graphics.scales import nice_per_cm
+
+    start = c[closing].inputs[1]
+    points = [c.output(start).xy] + [c.output(ref).xy for _, ref in tips]
+    xs, ys = [x for x, _ in points], [y for _, y in points]
+    per_cm = nice_per_cm(max(max(xs) - min(xs), max(ys) - min(ys), 1e-12), _ROOM)
+    k = 10.0 / per_cm                                 # paper mm a unit of the polygon
+    o = points[0]
+    across, up = [(x - o[0]) * k for x in xs], [(o[1] - y) * k for y in ys]
+    reach = (max(0.0, -min(across)), max(0.0, -min(up)), max(0.0, max(across)),
+             max(0.0, max(up)))
+    return draw_empty_polygon(title, reach=reach, per_cm=per_cm, unit=unit, scale_name="Scale",
+                              pole=("o", ""))

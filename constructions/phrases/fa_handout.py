@@ -64,5 +64,16 @@ WORDS: dict[str, str] = {
     "meshes: {meshes}": "درگیری‌ها: {meshes}",
     "member {member} turns at {speed}": "عضو {member} با سرعت {speed} می‌چرخد",
     "gears {gears} on one shaft": "چرخ‌دنده‌های {gears} روی یک محور",
+    # a rotor's
+    "mass {name}: {mass} kg at {radius}, {angle}, plane at {plane}":
+        "جرم {name}: {mass} kg در شعاع {radius}، زاویهٔ {angle}، صفحه در {plane}",
+    "its mass at {radius}": "جرم آن در شعاع {radius}",
+    "its mass {mass} kg": "جرم آن {mass} kg",
+    "balancing plane {name} at {plane}, {held}": "صفحهٔ بالانس {name} در {plane}، {held}",
+    "speed {speed}": "سرعت {speed}",
+    "in plane {name}: the balancing mass and its angle":
+        "در صفحهٔ {name}: جرم بالانس و زاویهٔ آن",
+    "in plane {name}: the given mass's radius and its angle":
+        "در صفحهٔ {name}: شعاع جرم داده‌شده و زاویهٔ آن",
 }
 """The problem sheet's words as Persian says them."""
