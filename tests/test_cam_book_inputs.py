@@ -1,6 +1,6 @@
 """A cam file as the books state the problem: every setting known or refused at its line, the
 books' names for followers and laws, an outstroke split by "the acceleration is r times the
-retardation".
+retardation", the prime circle and each segment's greatest pressure angle said.
 
 Every number asserted is a closed form of the book's data, or a value worked by hand from
 the book's statement (the reproducers' sources); never what tarsim printed.
@@ -257,3 +257,48 @@ def test_the_templates_comments_name_only_what_it_accepts():
     laws = [re.sub(r"\s*\(and retardation\)", "", n) for n in laws]
     assert len(laws) >= 6 and all(book_law(n) for n in laws), laws
     assert {book_law(n) for n in laws} == set(LAWS)
+
+
+# ----- the prime circle and each segment's pressure angle ------------------------------------
+def test_c3_prime_circle_is_said_and_written(tmp_path):
+    """C3 (Norton): the least base circle for 30° under a 12.5 mm roller; the prime circle,
+    43.7736 mm by hand, is the base circle and the roller."""
+    out, q = solved(HERE / "c3-base-circle-pressure-angle.toml", tmp_path)
+    assert q["prime_radius"]["value"] == pytest.approx(q["base_radius"]["value"] + 0.0125,
+                                                       rel=1e-15)
+    assert q["prime_radius"]["value"] == pytest.approx(0.0437736, rel=1e-6)
+    assert q["prime_radius"]["passed"] is True
+    assert "the prime circle: radius 43.7736 mm (the base circle's 31.2736 mm and the " \
+           "roller's 12.5 mm)" in out
+
+
+def test_a_given_base_circles_prime_circle_is_base_and_roller():
+    """The bundled roller cam: base 40 mm, roller 10 mm; a knife edge has no prime row."""
+    from tarsim.exercises.cams.cam_solution import solve_cam
+    q = solve_cam(load("roller-harmonic-cycloidal")).checked
+    assert q["prime_radius"].value["value"] == pytest.approx(0.050, rel=1e-15)
+    assert q["prime_radius"].reference["value"] == pytest.approx(0.050, rel=1e-12)
+    assert "prime_radius" not in solve_cam(load("offset-knife-edge")).checked
+
+
+def test_c2_offset_knife_uv(tmp_path):
+    """C2: a knife edge 12 mm off a 40 mm base circle, the cam ccw; a uniform-velocity rise of
+    30 mm in 90°, a parabolic return in 120°. tan φ = (y′ − σe)/(s₀ + y), s₀ = √(40² − 12²):
+    on the rise y′ = h/β throughout, steepest at y = 0 (10.538° by hand); on the return
+    |y′| + e over s₀ + y grows to the middle, where y′ = −2h/β and y = h/2."""
+    out, q = solved(HERE / "c2-offset-knife-uv.toml", tmp_path)
+    h, e, s0 = 30.0, 12.0, math.sqrt(40 ** 2 - 12 ** 2)
+    rise = math.atan((h / (math.pi / 2) - e) / s0)
+    back = math.atan((2 * h / (2 * math.pi / 3) + e) / (s0 + h / 2))
+    # Both lie at a piece's end, where the survey evaluates the closed form itself: a few
+    # roundings of a sine and a square root.
+    for k, want in ((1, rise), (3, back)):
+        row = q[f"pressure_angle_max_{k}"]
+        assert row["value"] == pytest.approx(want, rel=1e-9)
+        assert row["unit"] == "rad" and row["deg"] == pytest.approx(math.degrees(want),
+                                                                    rel=1e-9)
+    assert math.degrees(rise) == pytest.approx(10.538, abs=5e-4)      # the hand value
+    assert f"segment 1 (rise): greatest pressure angle {math.degrees(rise):.2f}° at θ = " \
+           "0.00°" in out
+    assert f"segment 3 (return): greatest pressure angle {math.degrees(back):.2f}°" in out
+    assert q["pressure_angle_max"]["deg"] == pytest.approx(math.degrees(back), rel=1e-9)

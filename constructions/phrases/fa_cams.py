@@ -210,6 +210,10 @@ WORDS: dict[str, str] = {
         "نمودار جابه‌جایی: {n} نقطه ترسیم شد، {verdict}",
     "pressure angle: greatest {angle}° at θ = {theta}° (segment {k})":
         "زاویهٔ فشار: بیشینه {angle}° در θ = {theta}° (بخش {k})",
+    "segment {k} ({kind}): greatest pressure angle {angle}° at θ = {theta}°":
+        "بخش {k} ({kind}): بیشترین زاویهٔ فشار {angle}° در θ = {theta}°",
+    "the prime circle: radius {rp} (the base circle's {rb} and the roller's {r})":
+        "دایرهٔ گام: شعاع {rp} (شعاع دایرهٔ پایه {rb} به‌علاوهٔ شعاع غلتک {r})",
     " (over the 30° a translating follower is usually held to)":
         " (بیش از ۳۰°، که زاویهٔ فشار پیروِ انتقالی معمولاً زیر آن نگه داشته می‌شود)",
     "the profile's least radius of curvature: {rho} at θ = {theta}° (segment {k})":

@@ -18,7 +18,8 @@ from tarsim.constructions.cams.inversion import Layout, lay_out_profile
 from tarsim.constructions.cams.rounding import lift_bounds
 from tarsim.constructions.cams.survey import Survey, Undercut, survey
 from tarsim.constructions.errors import InputError
-from tarsim.constructions.narration import numeral, numerals, phrase, unit_words, words
+from tarsim.constructions.reference.cam_profile import Station
+from tarsim.constructions.narration import Word, numeral, numerals, phrase, unit_words, words
 from tarsim.graphics.cams.cam_layout_figure import draw_cam_layout
 from tarsim.graphics.figure import Figure
 from tarsim.graphics.train_table import draw_train_table
@@ -70,6 +71,14 @@ class CamProfile:
 
         def length(v: float) -> str:
             return numerals(_signed(self.length_text(v)))
+        if f.kind == "roller":
+            ex = self.exercise
+
+            def full(v: float) -> str:                  # as the peaks are printed
+                return f"{numeral(v / ex.metre, '.6g')} {ex.length_unit}"
+            out.append(words("the prime circle: radius {rp} (the base circle's {rb} and the "
+                             "roller's {r})", rp=full(ex.base_radius + f.radius),
+                             rb=full(ex.base_radius), r=full(f.radius)))
         if f.kind != "flat-faced":
             at = s.steepest_at
             steep = abs(math.degrees(at.station.pressure_angle))
@@ -78,6 +87,11 @@ class CamProfile:
                              k=numeral(at.segment, "d")) + (
                 words(" (over the 30° a translating follower is usually held to)")
                 if steep > 30 and not f.oscillating else ""))
+            out += [words("segment {k} ({kind}): greatest pressure angle {angle}° at θ = "
+                          "{theta}°", k=numeral(k, "d"), kind=Word(kind),
+                          angle=numeral(math.degrees(abs(top.pressure_angle)), ".2f"),
+                          theta=deg(top.theta))
+                    for k, kind, top in self.steepest_each]
         at = s.sharpest_at
         out.append(words("the profile's least radius of curvature: {rho} at θ = {theta}° "
                          "(segment {k})" if f.kind == "flat-faced" else
@@ -122,12 +136,14 @@ class CamProfile:
             # The textbook's value follows the method here, as results.json has always
             # written it.
             out["pressure_angle_max"] = Checked(
-                {"value": abs(st.pressure_angle), "theta": st.theta,
-                 "segment": s.steepest_at.segment},
+                _angle(st.pressure_angle) | {"theta": st.theta,
+                                             "segment": s.steepest_at.segment},
                 method="inversion; normal to the pitch curve against the follower's motion",
                 beside={"reference": {"value": abs(m), "method": "tan φ = (y′ − σe)/(s₀ + y)"}}
                 if m is not None else {})
             out |= self._steepest_each()
+        if f.kind == "roller":
+            out["prime_radius"] = self._prime()
         st = s.sharpest
         out["rho_min"] = Checked({"value": st.rho, "theta": st.theta,
                                   "segment": s.sharpest_at.segment},
@@ -142,19 +158,43 @@ class CamProfile:
              "rho": span.worst.rho, "theta": span.worst.theta} for span in s.undercut]})
         return out
 
-    def _steepest_each(self) -> dict[str, Checked]:
-        """Each moving segment's greatest pressure angle, ``pressure_angle_max_k``, as the
-        books ask it of the outstroke and the return apart."""
+    @cached_property
+    def steepest_each(self) -> list[tuple[int, str, Station]]:
+        """Each moving segment's station of greatest pressure angle, found between samples,
+        as (segment from 1, its kind, the station): the books ask it of the outstroke and
+        the return apart."""
         from tarsim.constructions.cams.extremes import highest
-        s, out = self.survey, {}
+        out = []
         for k, seg in enumerate(self.exercise.segments, start=1):
-            scans = [sc for sc in s.scans if sc.piece.segment == k]
-            if seg.kind == "dwell" or not scans:
-                continue
-            top = highest(scans, lambda st: abs(st.pressure_angle))
-            m = _textbook_pressure(self.exercise, k, top.station.theta)
+            scans = [sc for sc in self.survey.scans if sc.piece.segment == k]
+            if seg.kind != "dwell" and scans:
+                out.append((k, seg.kind,
+                            highest(scans, lambda st: abs(st.pressure_angle)).station))
+        return out
+
+    def _prime(self) -> Checked:
+        """The prime circle's radius, r_b + r, beside the nearest the layout's roller
+        centres come to the cam's centre: the stations at no lift stand on the prime circle,
+        and the lift only takes the roller away. The acts round to a few parts in 10¹⁶ of
+        the layout's size; 10⁻¹² of the radius leaves a wide margin and still fails a roller
+        left out or counted twice."""
+        ex, layout = self.exercise, self.layout
+        want = ex.base_radius + ex.follower.radius
+        c = layout.construction
+        near = min(math.hypot(*c.output(p.trace).xy) for p in layout.places)
+        miss = abs(near - want) / want
+        return Checked({"value": want}, {"value": near}, rel_error=miss, tolerance=_PRIME,
+                       passed=miss <= _PRIME, method="r_b + r; the layout's nearest roller "
+                       "centre to the cam's centre")
+
+    def _steepest_each(self) -> dict[str, Checked]:
+        """Each moving segment's greatest pressure angle, ``pressure_angle_max_k``, in
+        results.json's rows."""
+        out = {}
+        for k, _, top in self.steepest_each:
+            m = _textbook_pressure(self.exercise, k, top.theta)
             out[f"pressure_angle_max_{k}"] = Checked(
-                {"value": abs(top.station.pressure_angle), "theta": top.station.theta},
+                _angle(top.pressure_angle) | {"theta": top.theta},
                 method="inversion; normal to the pitch curve against the follower's motion",
                 beside={"reference": {"value": abs(m), "method": "tan φ = (y′ − σe)/(s₀ + y)"}}
                 if m is not None else {})
@@ -215,6 +255,17 @@ class CamProfile:
         # flush right).
         return draw_train_table(words("{name}: " + what + " and curvature", name=ex.name),
                                 heads, rows, notes=notes)
+
+
+_PRIME = 1e-12
+"""How far (relative) the layout's nearest roller centre may stand from r_b + r (see
+:meth:`CamProfile._prime`)."""
+
+
+def _angle(angle: float) -> dict[str, float | str]:
+    """A pressure angle's size as results.json gives it: in rad (SI, the contract), with its
+    degrees beside it, as the books ask it."""
+    return {"value": abs(angle), "unit": "rad", "deg": math.degrees(abs(angle))}
 
 
 def _degrees(angle: float) -> str:
