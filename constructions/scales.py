@@ -22,7 +22,7 @@ from .linkages.assembly_record import Assembly
 from .errors import TarsimError
 
 __all__ = ["nice", "nice_per_cm", "Scales", "Stated", "choose_scales", "space_per_cm",
-           "velocity_per_cm", "readable_per_cm", "SHORTEST_MM",
+           "velocity_per_cm", "readable_per_cm", "SHORTEST_MM", "READABLE_MM",
            "drawing_extent", "face_ends", "ROOM", "FACE_REACH"]
 
 ROOM = (150.0, 130.0)
@@ -37,9 +37,15 @@ _VECTOR_MM = (20.0, 35.0)   # the input's speed is drawn this long on the space 
 SHORTEST_MM = 8.0
 """The shortest vector a velocity construction draws, on paper (mm), where it can."""
 
-LONGEST_MM = (30.0, 0.5)
+LONGEST_MM = (75.0, 0.5)
 """The longest vector on the space diagram: this many mm, or this part of the diagram's
 larger side, whichever is longer."""
+
+READABLE_MM = 30.0
+"""The longest vector a velocity construction draws is at least this long on paper (mm),
+where it can be: a construction of components whose longest arrow is 2 cm fits in one,
+its perpendiculars and tips crowded together. A nice scale puts it below 75 mm
+(:data:`LONGEST_MM`), as 1-2-5 steps are at most 2.5 apart."""
 
 
 def nice(raw: float, *, up: bool = True) -> float:
@@ -216,13 +222,16 @@ def readable_per_cm(speed: float, others: Sequence[float], longest: float) -> fl
 
     ``speed`` is the input's (unit/s), drawn at least 20 mm long; ``others`` are the
     magnitudes of every other vector a method may draw, the shortest of which is
-    drawn at least :data:`SHORTEST_MM` long; none may pass ``longest`` (mm). The
+    drawn at least :data:`SHORTEST_MM` long and the longest at least
+    :data:`READABLE_MM`; none may pass ``longest`` (mm). The
     largest N that does all this is taken, so the construction is no bigger than it
     need be. Where a vector is too short beside the longest for both, the longest is
     drawn ``longest`` mm long; with no other vector, this is :func:`velocity_per_cm`.
 
-    >>> readable_per_cm(360.0, [360.0, 92.0], 60.0)        # 36 mm, the shortest 9.2 mm
+    >>> readable_per_cm(360.0, [360.0, 92.0], 80.0)        # 36 mm, the shortest 9.2 mm
     100.0
+    >>> readable_per_cm(1000.0, [1000.0, 800.0], 80.0)     # 50 mm: at 500, only 20 mm
+    200.0
     >>> readable_per_cm(360.0, [360.0, 10.0], 60.0)        # 10 mm/s cannot be 8 mm here
     100.0
     """
@@ -230,7 +239,8 @@ def readable_per_cm(speed: float, others: Sequence[float], longest: float) -> fl
     if not others:
         return velocity_per_cm(speed)
     high = max(max(others), speed)
-    readable = nice(10.0 * min(min(others) / SHORTEST_MM, speed / _VECTOR_MM[0]), up=False)
+    readable = nice(10.0 * min(min(others) / SHORTEST_MM, speed / _VECTOR_MM[0],
+                               high / READABLE_MM), up=False)
     roomy = nice(10.0 * high / longest)
     return readable if readable >= roomy else roomy
 

@@ -12,7 +12,7 @@ import math
 import pytest
 from shapely.geometry import LineString, Polygon
 
-from tarsim.graphics.figure import Path
+from tarsim.graphics.figure import Path, Text
 from tarsim.graphics.linkages.lanes import LANE, lanes, moved, runs_along
 
 APART = 1.5     # mm of paper between a short arrow's shaft and a longer one it runs along:
@@ -94,3 +94,84 @@ def test_a_lane_that_would_cross_another_arrow_gives_way_to_the_other_side():
 def test_runs_along_measures_the_shared_stretch():
     assert runs_along((10.0, 0.3), (20.0, -0.2), (0.0, 0.0), (30.0, 0.0)) == (10.0, 20.0)
     assert runs_along((10.0, 1.6), (20.0, 0.0), (0.0, 0.0), (30.0, 0.0)) is None
+
+
+# ----- components along a link, on the space diagram ----------------------------------------
+OFF_LINK = 1.0      # mm of paper a component arrow stands off a link it runs along: a link is
+                    # drawn 0.5 mm thick and an arrowhead 1.4 mm wide, so at less it is hidden
+READABLE = 30.0     # mm: the longest arrow of a velocity construction, at least
+
+_ALONG_A_LINK = {
+    # Hinkle §5-3 and the four-bar: V_B′ laid off along link 3 (or the plate's edge BE).
+    ("four-bar", "V_B-components"): ("vector",),
+    ("hinkle-four-bar", "V_E-components"): ("vector",),
+    # The offset slider-crank's V_B lies along rod 3, nearly level, from B.
+    ("offset-slider-crank", "V_B-parallel-line"): ("vector", "vector_result"),
+}
+
+
+def _links(fig):
+    """Every straight edge of a link or plate drawn, on paper."""
+    return [(it.points[k], it.points[(k + 1) % len(it.points)]) for it in fig.items
+            if isinstance(it, Path) and it.style in ("link", "plate")
+            for k in range(len(it.points) - (0 if it.closed else 1))]
+
+
+def _off_link(arrow, link) -> float | None:
+    """How near the arrow comes to the link over the stretch of the link's line both cover
+    (more than a millimetre of it), for an arrow within ALONG_DEG of the link; else None."""
+    (p, q), (a, b) = link, arrow
+    n = math.dist(p, q)
+    if n == 0.0 or _angle(arrow, link) >= ALONG_DEG:
+        return None
+    u = ((q[0] - p[0]) / n, (q[1] - p[1]) / n)
+    s, t = ((x[0] - p[0]) * u[0] + (x[1] - p[1]) * u[1] for x in (a, b))
+    o, w = ((x[0] - p[0]) * u[1] - (x[1] - p[1]) * u[0] for x in (a, b))
+    lo, hi = max(min(s, t), 0.0), min(max(s, t), n)
+    if hi - lo <= 1.0:
+        return None
+    at = [o + (w - o) * (x - s) / (t - s) for x in (lo, hi)]   # offset, linear along it
+    return min(abs(v) for v in at) if at[0] * at[1] > 0 else 0.0
+
+
+def _vectors(fig, styles):
+    heads = [it.points[0] for it in fig.items if isinstance(it, Path) and it.style == "arrowhead"]
+    out = []
+    for it in fig.items:
+        if isinstance(it, Path) and it.style in styles:
+            tip = min(heads, key=lambda h: math.dist(h, it.points[-1]))  # shaft stops in head
+            out.append((it, (it.points[0], tip)))
+    return out
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("exercise_id, stem", _ALONG_A_LINK)
+def test_no_component_arrow_lies_on_a_link_and_the_construction_reads(solved, exercise_id,
+                                                                      stem):
+    fig = solved(exercise_id).figures[stem]
+    links = _links(fig)
+    near = [(it.steps, round(d, 2)) for it, arrow in _vectors(fig, _ALONG_A_LINK[exercise_id,
+                                                                                  stem])
+            for link in links if (d := _off_link(arrow, link)) is not None and d < OFF_LINK]
+    assert near == []
+    longest = max(math.dist(*arrow) for _, arrow in _vectors(fig, ("vector", "vector_result")))
+    assert longest >= READABLE
+
+
+@pytest.mark.slow
+def test_a_component_moved_off_its_link_is_named_on_its_own_side(solved):
+    """V_B′ of the four-bar, beside link 3: its name stands on the side it was moved to,
+    not across the link."""
+    fig = solved("four-bar").figures["V_B-components"]
+    ((it, (a, b)),) = [(it, arrow) for it, arrow in _vectors(fig, ("vector",))
+                       if it.steps == ("cm:B:along-arrow@A",)]
+    (link,) = [ln for ln in _links(fig) if _off_link((a, b), ln) is not None]
+    (name,) = [t for t in fig.items if isinstance(t, Text) and t.owner
+               and math.dist(t.owner[0], it.points[0]) < 1e-6]
+    (p, q) = link
+    n = math.dist(p, q)
+
+    def side(x):
+        return ((x[0] - p[0]) * (q[1] - p[1]) - (x[1] - p[1]) * (q[0] - p[0])) / n
+    x0, y0, x1, y1 = name.box()
+    assert side(a) * side(((x0 + x1) / 2, (y0 + y1) / 2)) > 0

@@ -1,6 +1,7 @@
 """A velocity construction on the space diagram is drawn big enough to read: the nice scale
-that draws the input at least 20 mm long and the shortest vector at least 8 mm, unless the
-longest would then pass its room (constructions/scales.readable_per_cm)."""
+that draws the input at least 20 mm long, the shortest vector at least 8 mm and the longest
+at least 30 mm, unless the longest would then pass its room
+(constructions/scales.readable_per_cm)."""
 
 from __future__ import annotations
 
@@ -9,7 +10,7 @@ import math
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from tarsim.constructions.scales import SHORTEST_MM, nice, readable_per_cm
+from tarsim.constructions.scales import READABLE_MM, SHORTEST_MM, nice, readable_per_cm
 from tarsim.exercises.catalog import load
 from tarsim.exercises.linkages.solution_files import solve_worked
 from tarsim.graphics.figure import Path
@@ -32,11 +33,13 @@ def test_the_scale_is_the_largest_nice_one_that_reads_or_else_the_roomiest(speed
     mm = [10.0 * v / n for v in others]
     high = max(max(mm), 10.0 * speed / n)
     assert high <= longest * (1 + 1e-9)                  # nothing passes its room
-    readable = min(mm) >= SHORTEST_MM * (1 - 1e-9) and 10.0 * speed / n >= 20.0 * (1 - 1e-9)
+    readable = min(mm) >= SHORTEST_MM * (1 - 1e-9) and 10.0 * speed / n >= 20.0 * (1 - 1e-9) \
+        and high >= READABLE_MM * (1 - 1e-9)
     up = nice(n * 1.01)                                  # the next nice scale up
     if readable:
         # No coarser nice scale still reads: the construction is no bigger than it need be.
-        assert min(10.0 * v / up for v in others) < SHORTEST_MM or 10.0 * speed / up < 20.0
+        assert min(10.0 * v / up for v in others) < SHORTEST_MM or 10.0 * speed / up < 20.0 \
+            or high * n / up < READABLE_MM
     else:
         # Too short beside the longest: the longest fills its room, within one nice step.
         down = nice(n * 0.99, up=False)

@@ -95,10 +95,15 @@ class _Diagram:
         draw_blocks(self)
         self.draw_pins()
         draw_input(self)
+        self.plan_marks()
         label_links(self)
         label_points(self)
         self.fit_page()
         return self.fig
+
+    def plan_marks(self) -> None:
+        """Take the room of what a figure draws over the mechanism after naming it (nothing
+        here; a scene's vectors), so that the names keep clear of it."""
 
     def fit_page(self) -> None:
         """Size the page to the drawing plus margins, and set the caption under it."""

@@ -56,6 +56,7 @@ def draw_input(diagram: _Diagram) -> None:
     diagram.fig.line(centre, ref_end, "reference")
     diagram.placer.block_segment(centre, ref_end, 0.3)
     mid = mark_angle(diagram.fig, centre, 8.0, 0.0, theta)
+    diagram.placer.block_path(arc_points(centre, 8.0, 0.0, theta), 0.2)    # its name beside it
     half = theta / 2
     diagram.placer.place(f"θ{subscript(str(d.link))}", mid, prefer=half, gap=1.2, size=3.2)
     if d.omega == 0.0:

@@ -51,13 +51,14 @@ def runs_along(a, b, p, q, *, within: float = ALONG) -> tuple[float, float] | No
     return max(s, 0.0), min(t, n)
 
 
-def _clash(one: Segment, other: Segment) -> bool:
+def _clash(one: Segment, other: Segment, nested: bool = True) -> bool:
     """Whether two arrows ``(tail, tip)`` drawn where they are would hide one another.
 
     The shorter is measured against the longer's line. They clash where they share more
-    than :data:`_OVERLAP` of it, unless one lies within the other from a common tail and
-    the same way (V_A₄ within V_B₄, both from o_v: a textbook's own drawing), or they are
-    one and the same arrow; and where they meet head to head, their heads stacked.
+    than :data:`_OVERLAP` of it, unless (``nested``) one lies within the other from a
+    common tail and the same way (V_A₄ within V_B₄, both from o_v: a textbook's own
+    drawing), or they are one and the same arrow; and where they meet head to head,
+    their heads stacked.
     """
     if math.dist(*one) < _TOUCH or math.dist(*other) < _TOUCH:
         return False
@@ -76,7 +77,7 @@ def _clash(one: Segment, other: Segment) -> bool:
         return False                                  # end to end, or apart
     # Nested from one tail the same way, or one arrow over another (A^n_A/C over A_A
     # where A_C is a quarter millimetre): a textbook's own drawing, named once.
-    return not (t > s and math.dist(a, p) < _SAME)
+    return not (nested and t > s and math.dist(a, p) < _SAME)
 
 
 def moved(seg: Segment, lane: int, step: float = LANE) -> Segment:
@@ -102,7 +103,7 @@ def _crosses(seg: Segment, other: Segment) -> bool:
 
 
 def lanes(ends: Sequence[Segment], heavy: Sequence[bool], *,
-          fixed: Sequence[Segment] = (), step: float = LANE) -> list[int]:
+          fixed: Sequence[Segment] = (), step: float = LANE, nested: bool = True) -> list[int]:
     """The lane of each arrow ``(tail, tip)``: 0 on its points, ±1, ±2 … ``step`` mm to
     either side (+ to the arrow's left on a y-up sheet, its right on paper, y down).
 
@@ -115,8 +116,11 @@ def lanes(ends: Sequence[Segment], heavy: Sequence[bool], *,
     goes to the nearest lane where it clashes with none, the absolute vectors
     (``heavy``) and the longest placed first, so they keep to their points. ``fixed``
     segments (the links of a space diagram) stay where they are: an arrow along one
-    clashes with it wherever they share its line. Of the two lanes at one distance, one
-    that moves an arrow across another arrow is taken only when the other does too.
+    clashes with it wherever they share its line. With ``nested`` False an arrow within
+    another from a common tail takes a lane of its own too: a polygon drawn head to tail
+    (a balancing polygon's sides) has no pole its arrows share. Of the two lanes at one
+    distance, one that moves an arrow across another arrow is taken only when the other
+    does too.
 
     >>> lanes([((0, 0), (0, 90)), ((0, 90), (0, 24)), ((0, 0), (0, 30)), ((0, 31), (0, 0))],
     ...       [True, False, True, False])
@@ -135,7 +139,7 @@ def lanes(ends: Sequence[Segment], heavy: Sequence[bool], *,
             return False
         for j in placed:
             other = moved(ends[j], lane[j], step)
-            if lane[j] == candidate and _clash(ends[i], ends[j]):
+            if lane[j] == candidate and _clash(ends[i], ends[j], nested):
                 return False
             if strict and candidate and _crosses(seg, other):
                 return False
@@ -144,14 +148,35 @@ def lanes(ends: Sequence[Segment], heavy: Sequence[bool], *,
     for k, i in enumerate(order):
         placed = order[:k]
         # The nearest lane, clear of every other arrow if one at that distance is.
-        lane[i] = next((c for n in range(5) for strict in (True, False) for c in {n, -n}
+        lane[i] = next((c for n in range(5) for strict in (True, False) for c in (n, -n)
                         if clear(i, c, placed, strict)), 0)
     return lane
 
 
 def _clash_fixed(seg: Segment, link: Segment) -> bool:
-    """Whether an arrow lies along a link's line over more than half a millimetre."""
-    if math.dist(*seg) < _TOUCH:
+    """Whether an arrow lies along a link: within :data:`ALONG` of its line, beside the
+    link, over more than half the arrow's length (V_B leaving B 5° off the plate's edge
+    BE is lost in the edge for its first half, though its head stands clear).
+
+    >>> _clash_fixed(((0.0, 0.0), (30.0, 2.7)), ((0.0, 0.0), (35.0, 0.0)))
+    True
+    >>> _clash_fixed(((0.0, 0.0), (-20.0, 0.0)), ((0.0, 0.0), (35.0, 0.0)))   # beyond its end
+    False
+    """
+    (a, b), (p, q) = seg, link
+    n, m = math.dist(a, b), math.dist(p, q)
+    if n < _TOUCH or m < _TOUCH:
         return False
-    shared = runs_along(*seg, *link)
-    return shared is not None and shared[1] - shared[0] > _OVERLAP
+    u = ((q[0] - p[0]) / m, (q[1] - p[1]) / m)
+    s0, s1 = ((x[0] - p[0]) * u[0] + (x[1] - p[1]) * u[1] for x in (a, b))
+    o0, o1 = ((x[0] - p[0]) * u[1] - (x[1] - p[1]) * u[0] for x in (a, b))
+    # The share of the arrow (0 at its tail, 1 at its tip) beside the link and near its line.
+    lo, hi = 0.0, 1.0
+    for v0, v1, low, high in ((s0, s1, 0.0, m), (o0, o1, -ALONG, ALONG)):
+        if abs(v1 - v0) < 1e-12:
+            if not low <= v0 <= high:
+                return False
+            continue
+        t0, t1 = sorted(((low - v0) / (v1 - v0), (high - v0) / (v1 - v0)))
+        lo, hi = max(lo, t0), min(hi, t1)
+    return (hi - lo) * n > max(_OVERLAP, 0.5 * n)

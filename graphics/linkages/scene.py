@@ -53,7 +53,7 @@ from ..paper_points import centroid
 from ..scales import draw_caption
 from .scene_lines import LINE_KINDS, SAME, draw_working, plan_circle, plan_far, plan_line
 from .scene_marks import (draw_arc_heads, draw_far, draw_infinities, draw_measures, draw_points,
-                          draw_vectors, number_lines)
+                          draw_vectors, number_lines, plan_vectors)
 
 __all__ = ["draw_scene", "FRAME_CAP", "FRAME_MIN"]
 
@@ -143,6 +143,7 @@ class _Scene(_Diagram):
         self.kinds: list[str] = []
         self.overlay: Overlay | None = None
         self.namer = self.over = None
+        self.vector_lanes: list[tuple[Step, tuple, int]] = []   # by plan_marks
 
     # ----- planning, before the diagram places its own labels ------------------------------
     def layout(self) -> None:
@@ -249,6 +250,11 @@ class _Scene(_Diagram):
         """The points the scene's steps mark, on paper: a guide runs past those on it."""
         return [self.view(s.output.xy) for s in self.steps if isinstance(s.output, g.Point)
                 and not s.output.is_at_infinity and s.draws]
+
+    def plan_marks(self) -> None:
+        """Put each vector in its lane, beside a link it would lie along, and take its room
+        before the mechanism's points are named."""
+        plan_vectors(self)
 
     # ----- over the diagram, then the caption ---------------------------------------------
     def fit_page(self) -> None:

@@ -27,8 +27,9 @@ from tarsim.constructions.narration import measure_words, numerals, words
 from tarsim.constructions.record import Role, Step
 
 from .diagram_slides import block_centre
-from ..figure import Circle
+from ..figure import Circle, Path
 from ..hiding import hidden
+from .lanes import lanes, moved
 from .scene_lines import DOT
 from ..symbols import draw_arrow, draw_arrowhead, draw_dimension, draw_turning_arrow, unit
 from ..typeset import subscript, typeset, typeset_span
@@ -36,8 +37,8 @@ from ..typeset import subscript, typeset, typeset_span
 if TYPE_CHECKING:
     from .scene import _Scene
 
-__all__ = ["draw_arc_heads", "draw_measures", "draw_vectors", "draw_infinities", "draw_points",
-           "draw_far", "number_lines"]
+__all__ = ["draw_arc_heads", "draw_measures", "plan_vectors", "draw_vectors", "draw_infinities",
+           "draw_points", "draw_far", "number_lines"]
 
 GRAZE = 0.5
 """Area (mm²) of a dimension line's clearance an obstacle may take and not be crossed."""
@@ -121,32 +122,71 @@ def _draw_dimension(scene: _Scene, step: Step, out: Dimension) -> None:
     scene.placer.page = page
 
 
-def draw_vectors(scene: _Scene) -> None:
-    """Draw each vector on the page, heavier for a result, its label beside its shaft."""
+def plan_vectors(scene: _Scene) -> None:
+    """Give each vector its lane and take the room it will be drawn in.
+
+    A vector that would lie along a link (a component laid off along the rod it
+    belongs to) or along another vector is drawn in a lane beside it
+    (:func:`.lanes.lanes`), true in length and direction, with a leader from each end
+    to its point. Its shaft, head and leaders are taken before the mechanism's points are
+    named, so a pin's name does not stand where the arrow moved to."""
     drawn = [s for s in scene.steps if isinstance(s.output, g.Segment)
              and s.id not in scene.off_page]
-    scene.placer.name_vectors((scene.view(s.output.start.xy), scene.view(s.output.end.xy))
-                              for s in drawn if s.label)
-    for step in drawn:
+    ends = [(scene.view(s.output.start.xy), scene.view(s.output.end.xy)) for s in drawn]
+    links = [(it.points[k], it.points[(k + 1) % len(it.points)]) for it in scene.fig.items
+             if isinstance(it, Path) and it.style in ("link", "plate", "block")
+             for k in range(len(it.points) - (0 if it.closed else 1))]
+    lane = lanes(ends, [s.role is not Role.CONSTRUCTION for s in drawn], fixed=links)
+    scene.vector_lanes = list(zip(drawn, ends, lane))
+    for _, true, k in scene.vector_lanes:
+        a, b = moved(true, k)
+        if k and math.dist(a, b) >= 0.5:
+            scene.placer.block_path([a, b], 1.6)
+            scene.placer.block_head(b, a)
+            for end, point in zip((a, b), true):
+                if math.dist(end, point) > 0.5:
+                    scene.placer.block_path([point, end], 0.3)
+
+
+def draw_vectors(scene: _Scene) -> None:
+    """Draw each vector on the page in its lane (:func:`plan_vectors`), heavier for a
+    result, and name it beside its shaft: on its lane's side, if moved into one."""
+    scene.placer.name_vectors(moved(seg, k) for s, seg, k in scene.vector_lanes if s.label)
+    # Every arrow and leader first, then the names, each clear of them all.
+    for step, seg, k in scene.vector_lanes:
         with scene.fig.for_steps(step.id):
-            _draw_vector(scene, step)
+            _draw_vector(scene, step, seg, k)
+    for step, seg, k in scene.vector_lanes:
+        with scene.fig.for_steps(step.id):
+            _name_vector(scene, step, moved(seg, k), k)
 
 
-def _draw_vector(scene: _Scene, step: Step) -> None:
-    out = step.output
-    a, b = scene.view(out.start.xy), scene.view(out.end.xy)
-    text, sub = typeset(step.label) if step.label else ("", "")
+def _draw_vector(scene: _Scene, step: Step, true, lane: int) -> None:
+    a, b = moved(true, lane)
     if math.dist(a, b) < 0.5:
-        scene.label(f"{text}{sub} = 0" if text else "", a, [step])
         return
     result = step.role is Role.RESULT
     draw_arrow(scene.fig, a, b, "vector_result" if result else "vector",
                head=3.2 if result else 2.8, width=1.6 if result else 1.4)
+    for end, point in zip((a, b), true):
+        if math.dist(end, point) > 0.5:
+            scene.fig.add(Path((point, end), "leader"))
+
+
+def _name_vector(scene: _Scene, step: Step, drawn, lane: int) -> None:
+    a, b = drawn
+    text, sub = typeset(step.label) if step.label else ("", "")
+    if math.dist(a, b) < 0.5:
+        scene.label(f"{text}{sub} = 0" if text else "", a, [step])
+        return
     d = unit((b[0] - a[0], b[1] - a[1]))
-    normal = math.atan2(d[0], d[1])     # the paper normal (−dy, dx) as a paper angle
+    normal = math.atan2(d[0], d[1])     # the paper normal (dy, −dx) as a paper angle
+    # Moved into a lane, (−dy, dx) a lane, it is named on that side, away from what it
+    # was moved off, unless that side is taken.
+    sides = (normal, normal + math.pi) if lane <= 0 else (normal + math.pi, normal)
     anchors = [(a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]))
                for t in (0.6, 0.45, 0.75, 0.3, 0.9)]
-    scene.label(text, anchors, [step], sub=sub, prefer=(normal, normal + math.pi),
+    scene.label(text, anchors, [step], sub=sub, prefer=sides,
                 spread=math.pi / 3, gap=1.2, size=3.6, own=(a, b) if text else None)
 
 
@@ -181,11 +221,16 @@ def draw_points(scene: _Scene) -> None:
 
 
 def draw_infinities(scene: _Scene) -> None:
-    """A centre at infinity: a two-headed arrow across its guide, marked "I₁₄ → ∞"."""
-    for step in scene.steps:
+    """A centre at infinity: a two-headed arrow across its guide, marked "I₁₄ → ∞", clear
+    of the vectors drawn (a velocity turned at a slider's block runs up beside it)."""
+    infinite = [s for s in scene.steps if isinstance(s.output, g.Point)
+                and s.output.is_at_infinity]
+    if infinite:
+        for _, true, k in scene.vector_lanes:
+            if not k:       # one moved into a lane is taken already
+                scene.placer.block_path(list(true), 1.0)
+    for step in infinite:
         out = step.output
-        if not isinstance(out, g.Point) or not out.is_at_infinity:
-            continue
         at, along, clear = _infinity_anchor(scene, step)
         u = unit(scene.view.direction(out.direction))
         along = along or (-u[1], u[0])
