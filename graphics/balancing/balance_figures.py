@@ -74,7 +74,7 @@ def draw_polygon(c: Construction, tips: Sequence[tuple[str, Ref]], closing: Ref,
         prev = tip
     closes = math.dist(prev, pole) > 0.3
     ends = [(a, b) for _, a, b, _ in sides] + ([(prev, pole)] if closes else [])
-    drawn_in = lanes(ends, [False] * len(sides) + [True] * closes, step=_LANE)
+    drawn_in = lanes(ends, [False] * len(sides) + [True] * closes, step=_LANE, nested=False)
     names_at = []
     for i, ((name, a, b, side), lane) in enumerate(zip(sides, drawn_in)):
         if not lane:
@@ -126,11 +126,21 @@ def _clear_side(i: int, ends, lanes: Sequence[int], side: tuple[float, float]):
         s, t = sorted(((e[0] - a[0]) * u[0] + (e[1] - a[1]) * u[1]) for e in (p, q))
         if min(t, n) - max(s, 0.0) > 0.5:
             v = ((q[0] - p[0]) / math.dist(p, q), (q[1] - p[1]) / math.dist(p, q))
-            beside.add(1 if (-v[1] * u[1] + v[0] * u[0]) * lane > 0 else -1)
+            # moved lane·(−v_y, v_x): on the side of a's normal (−u_y, u_x) that v·u says
+            beside.add(1 if (v[0] * u[0] + v[1] * u[1]) * _way(p, q, lane) > 0 else -1)
     if len(beside) != 1:
         return side
     away = -beside.pop()                  # in lanes of a's own normal's sign: the other way
     return (-u[1] * away, u[0] * away)
+
+
+def _way(a: tuple[float, float], b: tuple[float, float], lane: int) -> int:
+    """``lane`` as :func:`.lanes.moved` takes it for the arrow a → b: lanes are counted on
+    one side of a carrier whichever way its arrows run (so that arrows running back along
+    it, given lanes 1 and −1, stand on two sides of it, not one), its left as it runs
+    rightwards on the paper (or down it)."""
+    dx, dy = b[0] - a[0], b[1] - a[1]
+    return lane if dx > 1e-9 or (abs(dx) <= 1e-9 and dy > 0) else -lane
 
 
 def _in_lane(fig: Figure, a: tuple[float, float], b: tuple[float, float], lane: int,
@@ -140,7 +150,7 @@ def _in_lane(fig: Figure, a: tuple[float, float], b: tuple[float, float], lane: 
     from the line, when it is moved)."""
     if not lane:
         return a, b, side
-    tail, tip = moved((a, b), lane, _LANE)
+    tail, tip = moved((a, b), _way(a, b, lane), _LANE)
     for true, end in ((a, tail), (b, tip)):
         fig.add(Path((true, end), "leader"))
     n = math.dist(a, tail)
