@@ -334,7 +334,7 @@ def test_two_unknown_masses_are_the_balancing_planes_two_planes_finds():
     """The four-mass shaft with its balancing planes written as two masses of unknown mass
     and angle at 100 mm: the same 249.86 kg and 331.60 kg as [[balance]] gives, by the
     reference-plane method's closed form."""
-    text = TEXT[:TEXT.index("[[balance]]")] + "".join(
+    text = TEXT[:TEXT.index("[[balance]]")].replace("speed = 300\n", "", 1) + "".join(
         f'[[mass]]\nname = "{n}"\nmass = "?"\nradius = 100\nangle = "?"\nplane = {z}\n\n'
         for n, z in (("A", 0), ("B", 900)))
     q = solve_balance(parse_balance(text, "shaft.toml")).results["quantities"]
@@ -350,7 +350,7 @@ def test_one_plane_an_unknown_angle_and_an_unknown_mass():
     """In one plane: 3 kg·m at 0°, 4 kg·m at an unknown angle, and a mass at 90° of unknown
     size: the line along 90° cut by the 4 kg·m arc: 4e^{iθ} = −3 − i·s, so θ in the third
     quadrant with cos θ = −3/4 and s = √(16 − 9) = √7 kg·m (the positive mass)."""
-    ex = parse_balance('[rotor]\nspeed = 1\n[[mass]]\nmass = 3\nradius = 1\nangle = 0\n'
+    ex = parse_balance('[rotor]\n[[mass]]\nmass = 3\nradius = 1\nangle = 0\n'
                        '[[mass]]\nmass = 4\nradius = 1\nangle = "?"\n[[mass]]\nmass = "?"\n'
                        'radius = 1\nangle = 90\n', "one.toml")
     q = solve_balance(ex).results["quantities"]
@@ -369,7 +369,7 @@ OPEN = Path(bundled("balancing")["unknown-planes"]).read_text(encoding="utf-8")
     ('angle = 195\nplane = "?"', 'angle = 195\nplane = 400', "3 unknowns"),
     ('angle = 0\nplane = 0', 'angle = "?"\nplane = 0', "5 unknowns"),
     ('name = "D"\nmass = 70', 'name = "D"\nmass = "?"', "5 unknowns"),
-    ('speed = 300', 'speed = 300\n[[balance]]\nradius = 1', "leave out the [[balance]]"),
+    ('[[mass]]', '[[balance]]\nradius = 1\n[[mass]]', "leave out the [[balance]]"),
 ])
 def test_a_rotor_whose_unknowns_cannot_close_is_refused_in_one_line(old, new, words):
     assert old in OPEN
@@ -424,6 +424,6 @@ def test_carriers_crossing_too_shallowly_are_refused():
     rounding of 1e-12 moves the crossing by some 6e-4 of the polygon: not four figures."""
     with pytest.raises(InputError, match=r"shallow.toml:\d+: the polygons' carriers cross too "
                                          r"shallowly"):
-        parse_balance('[rotor]\nspeed = 1\n[[mass]]\nmass = 3\nradius = 1\nangle = 0\n'
+        parse_balance('[rotor]\n[[mass]]\nmass = 3\nradius = 1\nangle = 0\n'
                       '[[mass]]\nmass = "?"\nradius = 1\nangle = 10\n[[mass]]\nmass = "?"\n'
                       'radius = 1\nangle = 190.0000001\n', "shallow.toml")

@@ -188,6 +188,8 @@ def test_a_setting_an_engine_does_not_use_is_refused_at_its_line(engine, crank2,
      'radius = 1\n', "wheels puts a locomotive's revolving mass"),
     ('[rotor]\nabout = 0\n[[mass]]\nmass = 1\nradius = 1\nangle = 0\n[[mass]]\nmass = "?"\n'
      'radius = 1\nangle = "?"\n', "about is for a rotor's out-of-balance"),
+    ('[rotor]\nspeed = 300\n[[mass]]\nmass = 1\nradius = 1\nangle = 0\n[[mass]]\nmass = "?"\n'
+     'radius = 1\nangle = "?"\n', "speed is not taken for a rotor whose masses hold unknowns"),
 ])
 def test_a_setting_a_rotor_does_not_use_is_refused_at_its_line(text, says):
     with pytest.raises(InputError) as e:

@@ -218,9 +218,7 @@ def test_an_engines_balance_masses_are_refused_in_one_line_where_they_cannot_be(
 THREE_MASSES = """
 [units]
 length = "mm"
-speed = "rpm"
 [rotor]
-speed = 100
 [[mass]]
 name = "1"
 mass = 8

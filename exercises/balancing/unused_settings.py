@@ -46,6 +46,10 @@ def refuse_unused(t: Tables, kind: str, one: dict | None = None) -> None:
                 raise t.fail(f"{key} is for a rotor's out-of-balance force and couple; not "
                              f"taken for {what}, which balances itself: leave it out",
                              "rotor", key)
+        if "speed" in rotor:
+            raise t.fail(f"speed is not taken for {what}: it balances itself, and its masses, "
+                         "angles and planes found need none (nothing asked is a force); leave "
+                         "it out", "rotor", "speed")
         return
     if one is None:
         return
