@@ -47,8 +47,10 @@ def handout(source, out_dir, angle, pdf, paper, lang, digits):
     table (an ordinary train's row of speeds) with its rows named and
     every cell empty; a rotor's has its side view, its table with the
     masses given and the products left empty, and the force (and couple)
-    polygon's frame. Another chapter's file is refused, naming those that
-    have a sheet.
+    polygon's frame; a cam's has its base circle with the follower at the
+    start, its segments, and the displacement diagram's axes, empty, at
+    the solution's scales. Another chapter's file (a flywheel, a rod, an
+    engine) is refused, naming those that have a sheet.
 
     \b
     Writes into DIR:
@@ -61,6 +63,7 @@ def handout(source, out_dir, angle, pdf, paper, lang, digits):
       tarsim handout four-bar --lang fa -o four-bar-handout-fa
       tarsim handout planetary-q1 -o q1-handout
       tarsim handout four-mass-shaft -o rotor-handout
+      tarsim handout offset-knife-edge -o cam-handout
       tarsim handout my-linkage.toml --paper A3 --no-pdf
     """
     from tarsim.graphics.export import cairo_missing, output_folder, write_folder

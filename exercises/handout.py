@@ -28,7 +28,7 @@ from tarsim.graphics.handout import Line, compose_handout, draw_empty_polygon, d
 from tarsim.graphics.paper import paper, room
 from tarsim.graphics.typeset import typeset
 
-from .handout_chapters import gear_sheets, rotor_sheets
+from .handout_chapters import cam_sheets, gear_sheets, rotor_sheets
 from .handout_loads import force_frames, force_words, given_loads
 from .handout_text import math_text, number
 
@@ -273,5 +273,5 @@ def _xy(p: tuple[float, float], m) -> str:
 
 
 HANDOUTS: dict[str, Callable] = {"linkages": _linkage_sheets, "gears": gear_sheets,
-                                  "balancing": rotor_sheets}
+                                  "cams": cam_sheets, "balancing": rotor_sheets}
 """Each chapter's problem sheet, by the chapter's key."""

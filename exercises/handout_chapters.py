@@ -21,7 +21,7 @@ from tarsim.graphics.paper import paper
 
 from .handout_text import math_text, number
 
-__all__ = ["gear_sheets", "rotor_sheets"]
+__all__ = ["gear_sheets", "rotor_sheets", "cam_sheets"]
 
 
 def _asked(asks) -> list[Line]:
@@ -229,3 +229,77 @@ def _empty_balance_polygon(c, title: str, tips, closing, unit: str) -> Figure:
              max(0.0, max(up)))
     return draw_empty_polygon(title, reach=reach, per_cm=per_cm, unit=unit, scale_name="Scale",
                               pole=("o", ""))
+
+
+def cam_sheets(ex) -> list[Figure]:
+    """A cam's sheet: the base circle with the follower at the start of the turn, the data
+    (the base circle, the follower, the speed, each segment as given), what is asked, and the
+    displacement diagram's axes, empty, at the scales the solution draws it at."""
+    from tarsim.graphics.handout_cam import draw_base_circle, draw_empty_displacement
+
+    from .chapters import chapter_of
+
+    s = chapter_of(ex).solve(ex)
+    f, unit, metre = ex.follower, ex.length_unit, ex.metre
+    top = max(s.curves[1]) if s.curves[1] else max(g.lift for g in ex.segments)
+    spans = [(words(g.kind), g.angle) for g in ex.segments]
+    axes = draw_empty_displacement(words("{name}: {what}", name=ex.name,
+                                         what=words("the displacement diagram to draw")),
+                                   lift=top, segments=spans, per_rad=s.diagram.per_rad,
+                                   unit=unit, metre=metre)
+    circle = draw_base_circle(words("{name}: {what}", name=ex.name, what=words("base circle")),
+                              base=ex.base_radius, offset=f.offset, roller=f.radius,
+                              flat=f.kind == "flat-face",
+                              pivot=f.pivot if f.oscillating else None, arm=f.arm,
+                              unit=unit, metre=metre)
+    statement = draw_statement(_given_cam(ex) + _asked_cam(ex))
+    sheet = paper("A4")
+    return compose_handout(words("{name}: {what}", name=ex.name, what=words("problem sheet")),
+                           [circle, statement, axes], sheet=(sheet.width, sheet.height))
+
+
+def _given_cam(ex) -> list[Line]:
+    """The cam as its file gives it: base circle, follower, speed, and each segment."""
+    f, mm = ex.follower, unit_words(ex.length_unit)
+
+    def length(x: float) -> str:
+        return math_text(number(x / ex.metre)) + f" {mm}"
+
+    out = [Line(words("Given"), heading=True),
+           Line(words("base circle radius {r}", r=length(ex.base_radius)))]
+    said = words("follower: {kind}", kind=words(f.kind))
+    if f.radius:
+        said += words(", ") + words("roller radius {r}", r=length(f.radius))
+    if f.offset:
+        said += words(", ") + words("offset {e}", e=length(f.offset))
+    if f.oscillating:
+        said += words(", ") + words("arm {arm}, pivot at {xy}", arm=length(f.arm), xy=math_text(
+            f"({number(f.pivot[0] / ex.metre)}, {number(f.pivot[1] / ex.metre)})") + f" {mm}")
+    out.append(Line(said))
+    rpm = ex.speed_unit == "rpm"
+    speed = abs(ex.omega) * 30 / math.pi if rpm else abs(ex.omega)
+    out.append(Line(words("the cam turns at {speed}", speed=math_text(number(speed))
+                          + f" {unit_words('rpm' if rpm else 'rad/s')} "
+                          + words("cw" if ex.omega < 0 else "ccw"))))
+    for g in ex.segments:
+        said = f"{words(g.kind)} {math_text(number(math.degrees(g.angle)) + '°')}"
+        if g.kind != "dwell":        # an arm's lift is the swing its file gives, in degrees
+            lift = (math_text(f"{number(math.degrees(g.lift / f.arm))}°") if f.oscillating
+                    else length(g.lift))
+            said += words(", ") + lift + words(", ") + words(g.law)
+            if g.law == "modified uniform velocity":
+                said += words(", ") + words("blended over {blend} of it at each end",
+                                            blend=math_text(number(g.blend)))
+            said += words(", ") + words("in {n} divisions", n=numerals(str(g.divisions)))
+        out.append(Line(said))
+    return out
+
+
+def _asked_cam(ex) -> list[Line]:
+    out = [Line(words("Find"), heading=True),
+           Line(words("the displacement diagram, by construction")),
+           Line(words("the cam's profile, by inversion")),
+           Line(words("the follower's greatest velocity and acceleration"))]
+    out += [Line(words("the follower's lift at {theta}", theta=math_text(f"θ = {number(d)}°")))
+            for d in ex.at]
+    return out

@@ -75,5 +75,25 @@ WORDS: dict[str, str] = {
         "در صفحهٔ {name}: جرم بالانس و زاویهٔ آن",
     "in plane {name}: the given mass's radius and its angle":
         "در صفحهٔ {name}: شعاع جرم داده‌شده و زاویهٔ آن",
+    # a cam's
+    "the displacement diagram to draw": "نمودار جابه‌جایی برای رسم",
+    "cam angle across, lift up; draw the displacement here":
+        "زاویهٔ بادامک در افق، خیز در قائم؛ نمودار جابه‌جایی را اینجا رسم کنید",
+    "the base circle and the follower at the start": "دایرهٔ پایه و پیرو در آغاز دور",
+    "pivot": "محور لولا",
+    "base circle radius {r}": "شعاع دایرهٔ پایه {r}",
+    "follower: {kind}": "پیرو: {kind}",
+    "roller radius {r}": "شعاع غلتک {r}",
+    "offset {e}": "خروج از محور {e}",
+    "arm {arm}, pivot at {xy}": "بازوی {arm}، لولا در {xy}",
+    "the cam turns at {speed}": "بادامک با سرعت {speed} می‌چرخد",
+    "the displacement diagram, by construction": "نمودار جابه‌جایی، با ترسیم",
+    "the cam's profile, by inversion": "پروفیل بادامک، به روش وارونگی",
+    "the follower's greatest velocity and acceleration": "بیشینهٔ سرعت و شتاب پیرو",
+    "the follower's lift at {theta}": "خیز پیرو در {theta}",
+    "dwell": "سکون",
+    "blended over {blend} of it at each end": "با {blend} آن در هر سر هموار شده",
+    "in {n} divisions": "در {n} بخش",
+    "flat-face": "تخت",
 }
 """The problem sheet's words as Persian says them."""
