@@ -18,7 +18,7 @@ from .kennedy import locate_centres
 from ..record import Ref
 
 __all__ = ["located", "answer_centre", "answer_count", "answer_omega", "ratio_by_centres",
-           "CENTRES_FIGURE", "OMEGA_FIGURE", "CIRCLE_FIGURE"]
+           "CENTRES_FIGURE", "ASKED_FIGURE", "OMEGA_FIGURE", "CIRCLE_FIGURE"]
 
 
 def _spread(cs: Centres, i: int, j: int) -> float:
@@ -56,8 +56,10 @@ def answer_centre(work, ask: A.Centre) -> Answer:
     c, p = cs.centre(*ask.pair), cs.point(*ask.pair)
     value = ({"at_infinity": True, "direction": list(p.direction)} if p.is_at_infinity
              else {"point": list(p.xy)})
+    every = sum(isinstance(a, A.Centre) for a in work.asks) >= len(cs.found)
     return Answer(ask, value, cs.conditioning(*ask.pair), _RULE_WORDS[c.rule], refs=(c.ref,),
-                  figures=(CENTRES_FIGURE, CIRCLE_FIGURE), found=p, holds_always=c.primary)
+                  figures=(CENTRES_FIGURE if every else ASKED_FIGURE, CIRCLE_FIGURE), found=p,
+                  holds_always=c.primary)
 
 
 def answer_count(work, ask: A.CentreCount) -> Answer:
@@ -113,6 +115,10 @@ def ratio_by_centres(work, i: int, j: int) -> tuple[float, float, tuple[Ref, ...
 
 
 CENTRES_FIGURE = FigureSpec("centres", "Instant centres", "instant centres", notes=True)
+ASKED_FIGURE = FigureSpec("centres", "The instant centres asked", "the instant centres asked",
+                          notes=True)
+"""The centres figure when only some centres are asked: it shows those and the centres they
+are found from (10 of the 15 of velocity-homework-292, for I15 and I25), not every one."""
 OMEGA_FIGURE = FigureSpec("centres", "Centres for the angular velocities",
                           "centres for the angular velocities", notes=True)
 CIRCLE_FIGURE = FigureSpec("circle-diagram", "Circle diagram", kind="circle diagram")

@@ -52,7 +52,8 @@ WORDS: dict[str, str] = {
     "velocity": "سرعت", "acceleration": "شتاب", "slow": "کند", "quick": "تند",
     "fast": "تند", "extended": "در امتداد هم", "folded": "روی هم",
     # figure and section headings (steps.md)
-    "Instant centres": "مراکز آنی", "Centres for the angular velocities":
+    "Instant centres": "مراکز آنی", "The instant centres asked": "مراکز آنی خواسته\u200cشده",
+    "Centres for the angular velocities":
         "مراکز آنی برای سرعت\u200cهای زاویه\u200cای",
     "Circle diagram": "دایرهٔ کمکی", "Equivalent linkage": "مکانیزم معادل",
     "Force polygons": "چندضلعی\u200cهای نیرو", "Free bodies": "نمودارهای جسم آزاد",
@@ -114,7 +115,8 @@ WORDS: dict[str, str] = {
     "any point (no relative motion)": "هر نقطه (بی\u200cحرکت نسبی)",
     "at infinity, direction ({dx}, {dy})": "در بی\u200cنهایت، در راستای ({dx}, {dy})",
     # what a figure shows, after the mechanism's name in its title
-    "instant centres": "مراکز آنی", "space diagram": "نمودار فضایی",
+    "instant centres": "مراکز آنی", "the instant centres asked": "مراکز آنی خواسته\u200cشده",
+    "space diagram": "نمودار فضایی",
     "worked solution": "حل کامل", "limit positions": "وضعیت\u200cهای حدی",
     "loads": "بارها", "free bodies": "نمودارهای جسم آزاد",
     "space diagram with the loads": "نمودار فضایی با بارها",
