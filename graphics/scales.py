@@ -160,14 +160,15 @@ def _wrapped(heading: str, lines: Sequence[str], room: float
                           wrap_formulas(line, 3.2, room))])
 
 
-def draw_caption(fig: Figure, heading: str, lines: Sequence[str], *, per_cm: float, unit: str,
-                 legend: Sequence[tuple[str, str]] = (), notes: Sequence[str] = (),
+def draw_caption(fig: Figure, heading: str, lines: Sequence[str], *, per_cm: float | None,
+                 unit: str, legend: Sequence[tuple[str, str]] = (), notes: Sequence[str] = (),
                  margin: float = 8.0, scale_name: str = "Scale",
                  second: tuple[str, float, str] | None = None) -> None:
     """Move the drawing in from a ``margin`` and set the caption under it; size the page.
 
     Left: the bold ``heading`` and ``lines``. Right: the scale statement, which
-    ``scale_name`` opens ("Velocity scale 1 cm = 5 mm/s"), and its bar; then, if given,
+    ``scale_name`` opens ("Velocity scale 1 cm = 5 mm/s"), and its bar (none when ``per_cm``
+    is None: panels that state scales of their own); then, if given,
     a ``second`` scale (name, per cm, unit) and its bar, as for the velocities drawn on
     a space diagram. Under both: a ``legend`` of (style, name) line samples, then
     ``notes``. In a right-to-left language the caption is mirrored: heading, lines, legend
@@ -180,12 +181,12 @@ def draw_caption(fig: Figure, heading: str, lines: Sequence[str], *, per_cm: flo
     x0, y0, x1, y1 = fig.bounds()
     fig.shift(margin - x0, margin - y0)
     fig.drawing = (x1 - x0, y1 - y0)
-    scales = [(words(scale_name), per_cm, unit)] + ([(words(second[0]), *second[1:])]
-                                                    if second else [])
+    scales = ([] if per_cm is None else [(words(scale_name), per_cm, unit)]) + (
+        [(words(second[0]), *second[1:])] if second else [])
     legend = [(style, words(name)) for style, name in legend]
     texts = [f"{name} {scale_text(per, u)}" for name, per, u in scales]
     right = max([text_width(t, 3.2) for t in texts]
-                + [bar_room(per, u) for _, per, u in scales])
+                + [bar_room(per, u) for _, per, u in scales], default=0.0)
     heads, lines = _wrapped(heading, lines, max(max(x1 - x0, _CAPTION_ROW) - right - 8.0,
                                                 _TEXT_COLUMN))
     left = max([h.width for h in heads] + [text_width(t, 3.2) for t in lines])
@@ -215,7 +216,7 @@ def draw_caption(fig: Figure, heading: str, lines: Sequence[str], *, per_cm: flo
         x = bar_x + right if reads.rtl else bar_x
         fig.add(Text((x, top + 3.0 + 13.0 * k), text, 3.2, anchor, italic=False))
         draw_scale_bar(fig, (bar_x, top + 8.0 + 13.0 * k), per, u)
-    y = max(y + 5.2, top + 15.0 + 13.0 * (len(scales) - 1))
+    y = max(y + 5.2, top + 15.0 + 13.0 * (len(scales) - 1) if scales else 0.0)
     for row in _legend_rows(legend, width - 2 * margin):
         x = edge
         for style, name in row:
