@@ -3,7 +3,8 @@ every force an arrow named beside it at its body's own force scale, and a force 
 for that scale drawn dashed at a stated length instead of being listed as too small.
 
 The crank-shaper at t = 2.34 s is the case: its loads run from 0.018 N (the block's inertia)
-to 44 N (the lever's weight) on bodies whose largest force runs from 0.98 N to 44 N, each body at its own scale (the largest force 45 mm at most).
+to 44 N (the lever's weight) on bodies whose largest force runs from 0.98 N to 44 N, each
+body at its own scale (its largest force 45 mm at most).
 """
 
 from __future__ import annotations
