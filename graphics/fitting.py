@@ -4,8 +4,10 @@ The solve chooses each figure's space scale for the room a sheet leaves a drawin
 (:func:`~tarsim.graphics.paper.room`), before anything is drawn; only the drawing knows
 how much its labels, symbols and caption add. A figure the sheet does not hold at that
 scale is drawn a nice step (1, 2, 5 × 10ᵏ) coarser, and one it holds may be drawn a step
-finer, to fill it (:func:`chosen_scale` gives the rule). A scale the exercise states is kept: its
-figure is drawn once, on a bigger page if it must be.
+finer, to fill it (:func:`chosen_scale` gives the rule). Growing, the steps are the
+course's (1, 2, 2.5, 4, 5 × 10ᵏ, :func:`finer`): from 5 the next 1-2-5 step draws 2.5 times
+as big, which a sheet often cannot hold where it holds 1.25 or 2 times as big. A scale the
+exercise states is kept: its figure is drawn once, on a bigger page if it must be.
 
 The rule is followed on drafts (:mod:`~tarsim.graphics.drafts`): the figure drawn whole
 with its labels placed as on a blank page, in a quarter to a third of the drawing's
@@ -23,6 +25,7 @@ is foretold: a coarser step that cannot be held even so is not drafted.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable
 
 from tarsim.constructions.scales import nice
@@ -31,17 +34,23 @@ from .drafts import drafting
 from .figure import Figure
 from .paper import Paper, sheet_size
 
-__all__ = ["fit", "chosen_scale", "foretold", "held_by", "COARSER", "FINER", "TRIED"]
+__all__ = ["fit", "chosen_scale", "foretold", "held_by", "finer", "COARSER", "FINER", "TRIED",
+           "DRAFTING"]
 
 COARSER = 3
 """The most nice steps coarser a figure the sheet refuses is drawn at."""
 
-FINER = 2
-"""The most nice steps finer a figure the sheet holds is grown to."""
+FINER = 4
+"""The most drafting steps finer a figure the sheet holds is grown to (:func:`finer`)."""
+
+DRAFTING = (1.0, 2.0, 2.5, 4.0, 5.0)
+"""The scales a figure grows by, × 10ᵏ to the centimetre: 2.5 beside the 1-2-5 steps, as
+a drawing office's 1:2.5 and 1:25 stand beside 1:2 and 1:5, and 4, as the course's slotted
+lever is drawn at "1 cm = 4 cm" (lecture notes, part 2, exercise P-37)."""
 
 TRIED = 0.8
-"""A finer step is tried only if the sheet holds this share of the figure grown whole:
-only the drawing grows, not its caption."""
+"""A finer step is tried only if the sheet holds this share of the figure foretold at it
+(:func:`foretold`): its labels, which keep their size, may still take it past the sheet."""
 
 Holds = Callable[[Figure], bool]
 Draw = Callable[[float], Figure]
@@ -91,10 +100,11 @@ def chosen_scale(size: Draw, per_cm: float, holds: Holds, *, grow: bool = False)
     """The scale the rule chooses for a figure whose size at a scale is ``size``.
 
     The rule, step by step: a figure ``holds`` refuses is taken a nice step coarser, up
-    to :data:`COARSER` times, until it is held (the last, held or not). One held at its
-    first scale is, with ``grow``, taken a nice step finer while it is still held, up to
-    :data:`FINER` times, so the drawing fills its sheet; a step is tried only if
-    :data:`TRIED` of the figure grown whole is held.
+    to :data:`COARSER` times, until it is held (the last, held or not), then as far back
+    by the drafting steps between (:func:`finer`) as it is still held. One held at its
+    first scale is, with ``grow``, taken a drafting step finer (:func:`finer`) while it is
+    still held, up to :data:`FINER` times, so the drawing fills its sheet; a step is tried
+    only if :data:`TRIED` of the figure foretold at it is held.
 
     A coarser step the figure cannot be held at, as :func:`foretold` from the last size
     looked at, is passed by unlooked at. Growing is not foretold: the most a finer figure
@@ -103,7 +113,7 @@ def chosen_scale(size: Draw, per_cm: float, holds: Holds, *, grow: bool = False)
     """
     fig = size(per_cm)
     if not holds(fig):
-        return _coarser(size, fig, per_cm, holds)
+        return _between(size, _coarser(size, fig, per_cm, holds), holds)
     return _finer(size, fig, per_cm, holds) if grow else per_cm
 
 
@@ -128,10 +138,34 @@ def _coarser(size: Draw, fig: Figure, at: float, holds: Holds) -> float:
     return at
 
 
+def _between(size: Draw, at: float, holds: Holds) -> float:
+    """The finest drafting scale (:func:`finer`) between ``at``, a nice step the figure was
+    taken coarser to, and the nice step before it, which was refused, that still holds it:
+    from a refused 1 cm = 20 mm, 50 is tried at 40 and 25 too."""
+    refused = nice(at * 0.99, up=False)
+    while (step := finer(at)) > refused * (1 + 1e-9):
+        if not holds(size(step)):
+            break
+        at = step
+    return at
+
+
+def finer(per_cm: float) -> float:
+    """The next drafting scale (:data:`DRAFTING`) finer than ``per_cm``: less to the
+    centimetre, so the figure is drawn bigger.
+
+    >>> finer(50.0), finer(40.0), finer(25.0), finer(20.0), finer(0.1)
+    (40.0, 25.0, 20.0, 10.0, 0.05)
+    """
+    k = math.floor(math.log10(per_cm)) + 1
+    ladder = [m * 10.0 ** e for e in (k - 2, k - 1, k) for m in DRAFTING]
+    return float(f"{max(v for v in ladder if v < per_cm * (1 - 1e-9)):.12g}")
+
+
 def _finer(size: Draw, fig: Figure, at: float, holds: Holds) -> float:
-    """The scale grown to by finer steps while each is tried and held."""
+    """The scale grown to by finer drafting steps while each is tried and held."""
     for _ in range(FINER):
-        per_cm = nice(at * 0.99, up=False)
+        per_cm = finer(at)
         if not holds(_grown(fig, at, per_cm)):
             break
         bigger = size(per_cm)
@@ -142,10 +176,12 @@ def _finer(size: Draw, fig: Figure, at: float, holds: Holds) -> float:
 
 
 def _grown(fig: Figure, at: float, per_cm: float) -> Figure:
-    """:data:`TRIED` of ``fig`` (drawn at ``at``) grown whole to ``per_cm``: the test a
-    finer step passes to be tried."""
-    k = TRIED * at / per_cm
-    return Figure(fig.width * k, fig.height * k)
+    """:data:`TRIED` of ``fig`` (drawn at ``at``) as :func:`foretold` at ``per_cm``, its
+    drawing grown and its caption kept: the test a finer step passes to be tried. Grown
+    whole, a figure whose caption is a large part of it was not tried at a step its sheet
+    holds (the Grashof double-crank's mechanism at 1 cm = 5 mm)."""
+    grown = foretold(fig, at, per_cm)
+    return Figure(grown.width * TRIED, grown.height * TRIED)
 
 
 def foretold(fig: Figure, at: float, per_cm: float) -> Figure:

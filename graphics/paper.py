@@ -18,7 +18,7 @@ from tarsim.constructions.scales import ROOM
 from .figure import Figure, _shifted
 
 __all__ = ["Paper", "PAPERS", "BIGGER", "paper", "room", "on_sheet", "sheet_size", "grown",
-           "standard", "sheet_name"]
+           "standard", "sheet_name", "filled", "MARGIN"]
 
 
 @dataclass(frozen=True)
@@ -97,6 +97,23 @@ def grown(fig: Figure, sheet: Paper) -> Paper:
         if sheet_size(fig, each) is not None:
             return each
     return each
+
+
+MARGIN = 10.0
+"""The white a printer may leave round a sheet (mm): what is left is the sheet's usable area."""
+
+
+def filled(page: Figure) -> float:
+    """How much of its sheet's usable area (the sheet less :data:`MARGIN` round it) a page
+    fills: the box of all its ink over that area.
+
+    >>> from tarsim.graphics.figure import Path
+    >>> square = Path(((10.0, 10.0), (148.5, 10.0), (148.5, 200.0), (10.0, 200.0)), "link")
+    >>> round(filled(Figure(297.0, 210.0, [square])), 2)    # the left half, margin to margin
+    0.5
+    """
+    x0, y0, x1, y1 = page.bounds()
+    return (x1 - x0) * (y1 - y0) / ((page.width - 2 * MARGIN) * (page.height - 2 * MARGIN))
 
 
 def sheet_name(width: float, height: float) -> str:

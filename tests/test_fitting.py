@@ -13,7 +13,7 @@ from tarsim.constructions.scales import nice
 from tarsim.exercises.linkages.solution_files import solve_worked
 from tarsim.graphics import drafts, workers
 from tarsim.graphics.figure import Figure
-from tarsim.graphics.fitting import COARSER, fit, foretold, held_by
+from tarsim.graphics.fitting import COARSER, finer, fit, foretold, held_by
 from tarsim.graphics.forces import figures as force_figures
 from tarsim.graphics.linkages import figures as linkage_figures
 from tarsim.graphics.occupancy import Occupancy
@@ -24,24 +24,30 @@ A4 = held_by(PAPERS["A4"])
 
 
 def _step_by_step(draw, per_cm, holds, *, grow):
-    """The rule :func:`fit` states, drawing every step it looks at (three coarser at most;
-    two finer, each tried if four fifths of the figure grown whole is held): the figure
-    and its scale."""
+    """The rule :func:`fit` states, drawing every step it looks at (three 1-2-5 steps
+    coarser at most, then back by the course's steps between while held; four of the
+    course's steps finer, each tried if four fifths of the figure foretold at it is held):
+    the figure and its scale."""
     fig, first = draw(per_cm), per_cm
     for _ in range(3):
         if holds(fig):
             break
         per_cm = nice(per_cm * 1.01)
         fig = draw(per_cm)
-    for _ in range(2 if grow and per_cm == first and holds(fig) else 0):
-        finer = nice(per_cm * 0.99, up=False)
-        k = 0.8 * per_cm / finer
-        if not holds(Figure(fig.width * k, fig.height * k)):
+    if per_cm != first and holds(fig):
+        refused = nice(per_cm * 0.99, up=False)
+        while finer(per_cm) > refused * (1 + 1e-9) and holds(draw(finer(per_cm))):
+            per_cm = finer(per_cm)
+            fig = draw(per_cm)
+    for _ in range(4 if grow and per_cm == first and holds(fig) else 0):
+        step = finer(per_cm)
+        ahead = foretold(fig, per_cm, step)
+        if not holds(Figure(ahead.width * 0.8, ahead.height * 0.8)):
             break
-        bigger = draw(finer)
+        bigger = draw(step)
         if not holds(bigger):
             break
-        fig, per_cm = bigger, finer
+        fig, per_cm = bigger, step
     return fig, per_cm
 
 
@@ -72,16 +78,17 @@ def _coarsest(per_cm: float) -> float:
     return per_cm
 
 
-def test_a_figure_four_times_too_big_is_drafted_twice_and_drawn_once_at_the_step_it_fits():
+def test_a_figure_four_times_too_big_is_drawn_once_at_the_finest_step_it_fits():
     # At 1 cm = 10 mm the drawing is 900 × 600 mm: at 20 it is 450 × 300 (466 × 356 with
     # margins and caption: no A4 holds it), at 50 it is 180 × 120 (196 × 176: A4 on its
     # side, 297 × 210, holds it). The forecast from the first draft says 20 cannot be
-    # held, so 10 and 50 are drafted, and the figure is drawn at 50 alone.
+    # held, so 10 and 50 are drafted; then the course's steps between, 40 (225 × 150:
+    # 241 × 206, held) and 25 (360 × 240, not), and the figure is drawn at 40 alone.
     draw, drawn = _figure(900.0, 600.0, at=10.0, caption=(100.0, 40.0))
     draft, drafted = _figure(900.0, 600.0, at=10.0, caption=(100.0, 40.0))
     fig = fit(draw, 10.0, A4, draft=draft)
-    assert drafted == [10.0, 50.0] and drawn == [50.0]
-    assert (fig.width, fig.height) == (196.0, 176.0)
+    assert drafted == [10.0, 50.0, 40.0, 25.0] and drawn == [40.0]
+    assert (fig.width, fig.height) == (241.0, 206.0)
 
 
 def test_a_stated_scale_is_drawn_once_however_big_and_not_drafted():

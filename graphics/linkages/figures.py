@@ -20,8 +20,9 @@ from ..paper import on_sheet, room
 
 __all__ = ["CIRCLE"]
 
-CIRCLE = 50.0
-"""The circle diagram's radius on A4 (mm), grown with the sheet."""
+CIRCLE = 76.0
+"""The circle diagram's radius on A4 (mm), grown with the sheet: the diagram has no
+scale, so it is drawn to fill half its sheet, as every figure does (tests/test_sheet_fill.py)."""
 
 
 @figure_kind("scene")

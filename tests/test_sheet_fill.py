@@ -1,0 +1,117 @@
+"""Every figure fills at least half its sheet's usable area (the box of its ink over the
+sheet less a 10 mm margin round it, :func:`~tarsim.graphics.paper.filled`), or is listed
+here with the reason it does not. A figure is drawn at the finest of the course's scales
+(1, 2, 2.5, 4, 5 × 10ᵏ to the centimetre) its sheet holds; the circle diagram, which has
+no scale, is drawn to fill the floor."""
+
+from __future__ import annotations
+
+import pytest
+
+from tarsim import solve
+from tarsim.constructions.narration import speaking
+from tarsim.exercises.catalog import everything, load
+from tarsim.graphics.figure import Figure, Path
+from tarsim.graphics.paper import filled
+
+FLOOR = 0.5
+"""The least share of its sheet's usable area a figure fills."""
+
+OWN_SIZE = ("drawn at a size of its own (a table's type, a plot's axes, a gear's or a cam's "
+            "scale chosen for its chapter), set whole on its sheet")
+VELOCITIES = ("its velocities are drawn on the space diagram at a scale of their own, tied to "
+              "the space scale the solve chose, which is therefore not grown")
+NEXT_STEP = "the next finer of the course's scales draws it bigger than its sheet holds"
+STATED = "drawn at the scale its exercise states"
+FORCES = ("force polygons at the force scales they state, or loads and free bodies at the "
+          "space scale the solve chose (not grown: their force arrows keep their own scale)")
+SHEET = "a worked page's sheet: the next panel or the results table does not fit beside these"
+
+EXCEPTIONS: dict[tuple[str, str], str] = {
+    # Measured 2026-11-29: the next step's size on A4 given where it was checked.
+    ("hinkle-slider-crank", "centres"): NEXT_STEP + " (1 cm = 5 mm: 378 × 164 mm)",
+    ("offset-slider-crank", "centres"): NEXT_STEP + " (1 cm = 5 cm: 328 × 183 mm)",
+    ("offset-slider-crank", "limits"): NEXT_STEP + " (1 cm = 5 cm: 328 × 183 mm)",
+    ("parallelogram-four-bar", "centres"): NEXT_STEP + " (1 cm = 10 mm: 387 × 144 mm)",
+    ("six-link-homework-3", "centres"): NEXT_STEP + " (1 cm = 25 mm: 219 × 221 mm)",
+    ("wheel-round-circle", "centres"): NEXT_STEP + " (1 cm = 10 mm: 296 × 261 mm)",
+    ("grashof-crank-rocker", "limits"): NEXT_STEP + " (1 cm = 5 mm: 324 × 236 mm)",
+    ("slotted-lever-p37", "limits"): STATED + " (1 cm = 4 cm)",
+    ("klein-slider-crank", "klein"): STATED + " (1 cm = 35 mm)",
+    ("crank-shaper", "worked"): SHEET,
+    ("rolling-wheel", "worked"): SHEET,
+    **{(e, s): VELOCITIES for e, stems in {
+        "hinkle-four-bar": ("V_B-components", "V_D-components", "V_E-components"),
+        "hinkle-slider-crank": ("V_C-components", "V_C-parallel-line", "V_C-radius-rotation",
+                                "V_D-components"),
+        "offset-slider-crank": ("V_B-parallel-line", "V_B-radius-rotation"),
+        "parallelogram-four-bar": ("V_B-components",),
+        "rolling-wheel": ("V_B-components", "V_B-parallel-line", "V_B-radius-rotation",
+                          "V_M-components"),
+        "wheel-driven-slider": ("V_A-components", "V_A-parallel-line", "V_A-radius-rotation",
+                                "V_B-radius-rotation"),
+    }.items() for s in stems},
+    **{(e, "forces"): FORCES for e in ("crank-shaper-forces", "crank-shaper-inertia",
+                                       "double-acting-engine", "engine-forces", "engine-friction",
+                                       "engine-gas-pressure", "four-bar-coupler-load",
+                                       "four-bar-forces")},
+    **{(e, "loads"): FORCES for e in ("double-acting-engine", "engine-forces", "engine-friction",
+                                      "engine-gas-pressure", "four-bar-coupler-load")},
+    **{(e, "free-bodies"): FORCES for e in ("double-acting-engine", "engine-forces",
+                                            "four-bar-coupler-load")},
+}
+"""The linkages' figures below the floor, by (exercise, figure stem without its position)."""
+
+
+def _stem(stem: str) -> str:
+    """A figure's stem without the position it is drawn at ("forces-t-2.34s" → "forces")."""
+    for tail in ("-t-", "-theta2-"):
+        stem = stem.split(tail)[0]
+    return stem
+
+
+def fills(lang: str) -> dict[tuple[str, str, int], tuple[float, str | None]]:
+    """Each bundled figure's sheets' fill, by (exercise, stem, sheet), with the reason it may
+    fall short: its chapter's own size, or an entry of :data:`EXCEPTIONS`."""
+    out = {}
+    for exercise_id in everything():
+        with speaking(lang):
+            done = solve(load(exercise_id))
+            own = hasattr(done, "sheets")          # a chapter whose figures keep their size
+            figures = done.sheets() if own else done.figures
+            for stem, fig in figures.items():
+                why = OWN_SIZE if own else EXCEPTIONS.get((exercise_id, _stem(stem)))
+                for k, s in enumerate(fig.sheets or [fig]):
+                    out[(exercise_id, stem, k)] = (filled(s), why)
+    return out
+
+
+def test_the_fill_is_the_inks_box_over_the_usable_area():
+    half = Figure(210.0, 297.0, [Path(((10.0, 10.0), (200.0, 10.0), (200.0, 148.5),
+                                       (10.0, 148.5)), "link", closed=True)])
+    assert filled(half) == pytest.approx(0.5, abs=1e-9)
+
+
+@pytest.mark.slow
+def test_every_figure_fills_half_its_sheet_or_says_why():
+    # Before: the four-bar's centres filled 0.32 of A4 (1 cm = 50 mm; 40 and 25 untried),
+    # the circle diagrams 0.30, the parallelogram four-bar's centres 0.19, the Grashof
+    # double-crank's mechanism 0.26.
+    short, stale = [], set(EXCEPTIONS)
+    for lang in ("en", "fa"):
+        for (exercise_id, stem, k), (share, why) in fills(lang).items():
+            if share < FLOOR:
+                stale.discard((exercise_id, _stem(stem)))
+                if why is None:
+                    short.append((lang, exercise_id, stem, k, round(share, 2)))
+    assert not short, short
+    # Each exception still falls short in one language at least: the list only shrinks.
+    assert not stale, sorted(stale)
+
+
+@pytest.mark.slow
+def test_the_figures_the_review_named_fill_half_their_sheet():
+    got = fills("en")
+    for key in (("four-bar", "centres", 0), ("four-bar", "circle-diagram", 0),
+                ("grashof-double-crank", "mechanism", 0), ("rolling-wheel", "centres", 0)):
+        assert got[key][0] >= FLOOR, (key, got[key][0])
