@@ -168,6 +168,16 @@ def test_another_chapters_sheet_holds_its_data_and_no_answer(name, lang):
     assert not found, f"answers on {name}'s sheet: {sorted(found)}"
 
 
+@pytest.mark.parametrize("name", ["inline-four", "unknown-angles"])
+def test_an_engine_or_a_rotor_with_other_unknowns_is_refused(tmp_path, name):
+    got = CliRunner().invoke(cli, ["handout", name, "-o", str(tmp_path / "h")])
+    assert got.exit_code == 1
+    assert got.output == (f"Error: {name}: a problem sheet is written for a rotor whose masses "
+                          "are all given in kg and whose balancing masses are asked; this one "
+                          "has none yet\n")
+    assert not (tmp_path / "h").exists()
+
+
 def test_the_command_writes_the_sheet(tmp_path):
     got = CliRunner().invoke(cli, ["handout", "four-bar", "-o", str(tmp_path), "--no-pdf"])
     assert got.exit_code == 0, got.output
