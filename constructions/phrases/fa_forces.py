@@ -209,6 +209,45 @@ WORDS: dict[str, str] = {
         "بیشترین شتاب {alpha} rad/s² در θ = {at}°",
     "greatest retardation {alpha} rad/s² at θ = {at}°":
         "بیشترین کاهش شتاب {alpha} rad/s² در θ = {at}°",
+    # a flywheel with no diagram, an engine by its power, strokes and cylinders
+    # (exercises/forces/flywheel_words.py, graphics/forces/flywheel_figure.py)
+    "between the greatest and least speeds, {high} and {low} {unit}: the mean ω = (ω1 + ω2)/2 "
+    "= {mean} {unit}, C_s = (ω1 − ω2)/ω = {cs}":
+        "میان بیشترین و کمترین سرعت، {high} و {low} {unit}: میانگین ω = (ω1 + ω2)/2 = {mean} "
+        "{unit}، C_s = (ω1 − ω2)/ω = {cs}",
+    "the greatest fluctuation of energy is given: ΔE = {energy} J":
+        "بیشترین نوسان انرژی داده شده است: ΔE = {energy} J",
+    "the engine's {power} kW do W = P·t = {work} J in a cycle of {cycle}° (t = {time} s at "
+    "the mean speed); ΔE = C_E·W = {ce} × {work} J = {energy} J":
+        "موتور با {power} kW در یک چرخهٔ {cycle}° کار W = P·t = {work} J انجام می‌دهد "
+        "(t = {time} s در سرعت میانگین)؛ ΔE = C_E·W = {ce} × {work} J = {energy} J",
+    "a flywheel of I = {inertia} kg·m² between {high} and {low} {unit}: ΔE = ½·I·(ω1² − ω2²) "
+    "= I·ω²·C_s = {energy} J":
+        "چرخ طیاری با I = {inertia} kg·m² میان {high} و {low} {unit}: ΔE = ½·I·(ω1² − ω2²) "
+        "= I·ω²·C_s = {energy} J",
+    "At {power} kW the engine does P·t = {work} J in a cycle of {cycle}°, t = cycle/ω; shared "
+    "in the ratio given, its strokes' works are {works} J.":
+        "موتور با {power} kW در یک چرخهٔ {cycle}° کار P·t = {work} J انجام می‌دهد، "
+        "t = cycle/ω؛ این کار به نسبت داده‌شده میان کورس‌ها بخش می‌شود: "
+        "{works} J.",
+    "Each stroke's diagram is a triangle on its base of {span}°, its apex at mid-stroke 2W/s "
+    "high so that its area is its work W: {heights} N·m.":
+        "نمودار هر کورس مثلثی بر قاعدهٔ {span}° است با رأسی در میانهٔ کورس به ارتفاع 2W/s، "
+        "تا مساحتش کار آن W باشد: {heights} N·m.",
+    "Add the {n} cylinders' diagrams, each set behind the first by {lags}°: T(θ) = "
+    "ΣT₁(θ − φ).":
+        "نمودارهای {n} سیلندر را جمع کنید، هر یک به اندازهٔ {lags}° پس از نخستین: T(θ) = "
+        "ΣT₁(θ − φ).",
+    "The flywheel's energy against its speed": "انرژی چرخ طیار بر حسب سرعت آن",
+    "speed ({unit})": "سرعت ({unit})",
+    "½·I·ω², I = {inertia} kg·m²": "½·I·ω²، I = {inertia} kg·m²",
+    "{name} = {energy} {unit}": "{name} = {energy} {unit}",
+    "ΔE = ½·I·(ω1² − ω2²) = {energy} {unit}: the energy the flywheel gives up from its "
+    "greatest speed ω1 to its least ω2":
+        "ΔE = ½·I·(ω1² − ω2²) = {energy} {unit}: انرژی‌ای که چرخ طیار از بیشترین "
+        "سرعتش ω1 تا کمترین آن ω2 پس می‌دهد",
+    "the greatest and least speeds": "بیشترین و کمترین سرعت",
+    "one cylinder's, {n} added": "نمودار یک سیلندر، {n} تا جمع شده",
     # the bundled exercises' loads, by the names their files give them
     "gas force": "نیروی گاز", "cutting force": "نیروی برش", "load torque": "گشتاور بار",
     "steam on the cover side": "بخار در سمت درپوش", "back pressure": "پس‌فشار",

@@ -20,8 +20,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["Fluctuation", "Integrated", "fluctuation", "flywheel_inertia", "integrated",
-           "speed_fluctuation"]
+__all__ = ["Fluctuation", "Integrated", "energy_between", "fluctuation", "flywheel_inertia",
+           "integrated", "speed_fluctuation"]
 
 
 @dataclass(frozen=True)
@@ -90,6 +90,16 @@ def _energy(start: float, step: float, excess: list[float]):
 def flywheel_inertia(delta_e: float, omega: float, cs: float) -> float:
     """The flywheel (kg·m²) that keeps the speed within C_s of its mean ω: ΔE/(C_s·ω²)."""
     return delta_e / (cs * omega * omega)
+
+
+def energy_between(inertia: float, high: float, low: float) -> float:
+    """The energy (J) a flywheel of ``inertia`` gives up from ``high`` to ``low`` (rad/s):
+    ½·I·(ω1² − ω2²), the kinetic energies' difference.
+
+    >>> energy_between(2.0, 3.0, 1.0)
+    8.0
+    """
+    return inertia * (high * high - low * low) / 2
 
 
 def speed_fluctuation(delta_e: float, omega: float, inertia: float) -> float:

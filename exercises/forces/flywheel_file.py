@@ -41,7 +41,8 @@ from tarsim.constructions.reference.flywheel import integrated
 from tarsim.constructions.units import LENGTH_UNITS
 from ..names import named_in, read_names, renamed_field
 from ..table_file import SPEEDS, Tables
-from .flywheel_wheel import read_wheel
+from .flywheel_engine import ENGINE_KEYS, read_engine, summed
+from .flywheel_wheel import read_given_wheel, read_wheel
 from .punch_file import POWERS, PUNCH_KEYS, read_punch
 
 __all__ = ["FlywheelExercise", "parse_flywheel"]
@@ -49,13 +50,13 @@ __all__ = ["FlywheelExercise", "parse_flywheel"]
 _TOP = ("name", "names", "source", "description", "units", "turning_moment",
         "resisting_torque", "punch", "flywheel")
 _KEYS = {"turning_moment": ("torque", "points", "areas", "torque_scale", "angle_scale",
-                            "energy_scale", "cycle"),
+                            "energy_scale", "cycle", *ENGINE_KEYS),
          "resisting_torque": ("torque", "points", "cycle"),
          "punch": PUNCH_KEYS,
          "flywheel": ("speed", "speed_max", "speed_min", "speed_fluctuation", "inertia", "mass",
                       "radius", "diameter", "rim_speed", "rim_share", "density",
                       "width_to_thickness",
-                      "radius_of_gyration", "at")}
+                      "radius_of_gyration", "at", "delta_E")}
 
 
 @dataclass(frozen=True)
@@ -113,6 +114,21 @@ class FlywheelExercise:
     width_to_thickness: float | None = None
     at: tuple[float, ...] = ()
     """Crank angles (rad) whose T and α are asked."""
+    delta_e_given: float | None = None
+    """ΔE given (J), a file with no diagram: the flywheel or C_s is found from it."""
+    power: float | None = None
+    """The engine's power given (W): its work a cycle, P·cycle/ω, with ``energy_coefficient``
+    or shared among its ``strokes``."""
+    energy_coefficient: float | None = None
+    """C_E given: ΔE = C_E × the work done in a cycle."""
+    strokes: tuple[float, ...] = ()
+    """Each stroke's work (J), the cycle shared equally, each a triangle in the ``points``."""
+    phases: tuple[float, ...] = ()
+    """Each cylinder's lag behind the first (rad), the diagram the sum of theirs; () one."""
+    single: tuple[tuple[float, float], ...] = ()
+    """One cylinder's table, before the cylinders' are added (``points`` is the sum)."""
+    extremes_given: tuple[float, float] | None = None
+    """The greatest and least speeds (rad/s) C_s was found from, where the file gave them."""
     length_unit: str = "m"
     speed_unit: str = "rad/s"
     names: tuple[tuple[str, str], ...] = ()
@@ -133,6 +149,10 @@ class FlywheelExercise:
             engine, machine, mean = self.formula, self.machine, self.machine_mean
             return Diagram(lambda theta: engine(theta % cycle) - machine(theta % cycle) + mean,
                            cycle)
+        if self.formula is not None and self.phases:
+            formula, phases = self.formula, self.phases
+            return Diagram(lambda theta: math.fsum(formula((theta - lag) % cycle)
+                                                   for lag in phases), cycle)
         if self.formula is not None:
             formula = self.formula
             return Diagram(lambda theta: formula(theta % cycle), cycle)
@@ -184,6 +204,8 @@ def parse_flywheel(text: str, filename: str = "<string>", exercise_id: str = "fl
     length, speed_unit = _units(t, "punch" in tables)
     if tables == ["turning_moment", "resisting_torque"]:
         return _engine_and_machine(t, filename, exercise_id, length, speed_unit)
+    if not tables and "flywheel" in t.data:
+        return _exercise(t, filename, exercise_id, 2 * math.pi, length, speed_unit, {})
     if len(tables) != 1:
         raise fail("a flywheel file gives its diagram as [turning_moment] torque = \"…\", "
                    "points = [[θ°, T], …] or areas = […] with the diagram's scales, or a "
@@ -200,6 +222,12 @@ def parse_flywheel(text: str, filename: str = "<string>", exercise_id: str = "fl
                    f"degrees (360 a turn, 720 a four-stroke engine's), got {cycle_deg:g}",
                    table, "cycle")
     cycle = math.radians(cycle_deg)
+    engine = (read_engine(t, tm, cycle_deg, SPEEDS[speed_unit])
+              if table == "turning_moment" else {})
+    if "energy_coefficient" in engine:
+        return _exercise(t, filename, exercise_id, cycle, length, speed_unit, engine)
+    if "strokes" in engine:
+        tm = tm | {"points": None}          # the strokes' triangles are the table
     given = [k for k in ("torque", "points", "areas") if k in tm]
     if len(given) != 1:
         raise fail(f"[{table}] gives one of torque = \"…\" (a formula in theta), points = "
@@ -212,10 +240,15 @@ def parse_flywheel(text: str, filename: str = "<string>", exercise_id: str = "fl
             diagram["formula"] = parse_formula(tm["torque"])
         except ValueError as e:
             raise fail(str(e), table, "torque") from None
+    elif "strokes" in engine:
+        diagram["points"] = engine["points"]
     elif "points" in tm:
         diagram["points"] = _points(t, tm["points"], cycle_deg, table)
     else:
         diagram.update(_areas(t, tm))
+    diagram |= {k: engine[k] for k in ("power", "strokes") if k in engine}
+    if "phases" in engine:
+        diagram |= _cylinders(t, diagram, engine["phases"], cycle)
     if "areas" not in tm:
         for k in ("torque_scale", "angle_scale", "energy_scale"):
             if k in tm:
@@ -224,14 +257,36 @@ def parse_flywheel(text: str, filename: str = "<string>", exercise_id: str = "fl
     return _exercise(t, filename, exercise_id, cycle, length, speed_unit, diagram)
 
 
+def _cylinders(t: Tables, diagram: dict, phases: tuple[float, ...],
+               cycle: float) -> dict[str, Any]:
+    """The cylinders' diagrams added: a table's sum as a table (one cylinder's kept for the
+    figure), a formula's as its phases."""
+    if "areas" in diagram:
+        raise t.fail("cylinders add diagrams given as T(θ), a formula or points; a diagram "
+                     "given by its areas cannot be set off by a crank angle", "turning_moment",
+                     "cylinders" if "cylinders" in t.data["turning_moment"] else "phases")
+    if "formula" in diagram:
+        return {"phases": phases}
+    one = diagram["points"]
+    ts = [a for a, _ in one]
+    if len(set(ts)) < len(ts) or ts[-1] >= ts[0] + cycle * (1 - 1e-12):
+        raise t.fail("cylinders add tables that run straight between their points; one that "
+                     "jumps (an angle twice, or a last point a cycle on) is not added: give "
+                     "the summed table", "turning_moment", "points")
+    return {"points": summed(one, _straight(one, cycle), phases, cycle), "single": one,
+            "phases": phases}
+
+
 def _units(t: Tables, punch: bool) -> tuple[str, str]:
     """The file's length and speed units. A unit it would not read is refused, lest "kW"
     leave a power read as W: [units] takes length and speed, and power (W, kW or MW) for a
     [punch]'s motor."""
     units = t.units("m", "rad/s")
+    tm = t.data.get("turning_moment")
+    powered = punch or isinstance(tm, dict) and "power" in tm
     for key, unit in t.data.get("units", {}).items():
         if key not in ("length", "speed") and not (key == "power" and unit in POWERS
-                                                   and punch):
+                                                   and powered):
             raise t.fail("a flywheel file's [units] takes length, speed and, for a [punch]'s "
                          f"motor, power (W, kW or MW); not {key} = {unit!r:.20}", "units", key)
     return units
@@ -381,7 +436,29 @@ def _areas(t: Tables, tm: dict) -> dict[str, Any]:
 
 
 def _flywheel(t: Tables, metre: float, rad_s: float, diagram: dict) -> dict[str, Any]:
-    """What ``[flywheel]`` gives and asks, in SI (none where the file has no such table)."""
+    """What ``[flywheel]`` gives and asks, in SI (none where the file has no such table).
+    With no diagram, ΔE is given (``delta_E``, or C_E with the power), or found from the
+    flywheel and its speeds."""
     if "flywheel" not in t.data:
         return {}
-    return read_wheel(t, _one(t, "flywheel"), metre, rad_s, diagram)
+    fw = _one(t, "flywheel")
+    drawn = any(k in diagram for k in ("formula", "points", "areas", "punch"))
+    if "delta_E" in fw and (drawn or "energy_coefficient" in diagram):
+        raise t.fail("delta_E is given where no diagram gives it; here ΔE is found: leave it "
+                     "out", "flywheel", "delta_E")
+    if drawn:
+        return read_wheel(t, fw, metre, rad_s, diagram)
+    if "delta_E" not in fw and "energy_coefficient" not in diagram:
+        return read_given_wheel(t, fw, metre, rad_s)
+    out = read_wheel(t, fw, metre, rad_s, diagram)
+    if "inertia" not in out and "speed_fluctuation" not in out:
+        raise t.fail("with ΔE known, give speed_fluctuation (or the greatest and least speeds: "
+                     "the flywheel is found) or the flywheel (inertia, or mass with "
+                     "radius_of_gyration: its C_s is found)", "flywheel", None)
+    if "energy_coefficient" in diagram:
+        return out
+    delta_e = t.number(fw, "delta_E", "flywheel", "the greatest fluctuation of energy (J)")
+    if not delta_e > 0:
+        raise t.fail(f"delta_E is the greatest fluctuation of energy, positive, got {delta_e:g}",
+                     "flywheel", "delta_E")
+    return out | {"delta_e_given": delta_e}

@@ -26,11 +26,13 @@ from tarsim.constructions.forces.flywheel import (Reading, area_reading, extreme
                                                   read_table, rim_mass, rim_radius,
                                                   rim_section, speed_limits)
 from tarsim.constructions.forces.flywheel_exact import exact_reading
-from tarsim.constructions.reference.flywheel import (Integrated, flywheel_inertia, integrated,
+from tarsim.constructions.reference.flywheel import (Integrated, energy_between,
+                                                     flywheel_inertia, integrated,
                                                      speed_fluctuation)
 from tarsim.constructions.errors import InputError
 from ..checked import Checked
 from ..solution_folder import ChapterFiles
+from ..table_file import SPEEDS
 from ..worked_document import Section
 from .flywheel_file import FlywheelExercise
 
@@ -58,6 +60,13 @@ def _check(value: float, reference: float, tolerance: float, method: str,
                    tolerance=tolerance, passed=error <= tolerance, method=method)
 
 
+def _rpm(omega: float) -> float:
+    """``omega`` (rad/s) in rpm beside it in results.json, as a gear train's speeds are: to 12
+    figures, so that the books' 606 rpm is not 606.0000000000001 from the round trip through
+    rad/s (a file's data carry a few figures; 12 keep every one and drop the rounding)."""
+    return float(f"{omega / SPEEDS['rpm']:.12g}")
+
+
 @dataclass(frozen=True)
 class FlywheelSolution(ChapterFiles):
     """A solved flywheel exercise (see :func:`solve_flywheel`)."""
@@ -70,8 +79,34 @@ class FlywheelSolution(ChapterFiles):
         ex = self.exercise
         if ex.points:
             return read_table(ex.points, ex.cycle)
+        if self.drawn is False:
+            mean = ex.power / ex.speed if ex.power is not None else 0.0
+            return Reading(mean, (), (), self.given[0], 0.0, 0.0)
         d = ex.diagram
         return exact_reading(d) if d else area_reading(list(ex.areas))
+
+    @property
+    def drawn(self) -> bool:
+        """Whether the file gives a diagram (T(θ), its areas or a punch): else ΔE is given,
+        C_E's share of the work a cycle, or the flywheel's between its two speeds."""
+        ex = self.exercise
+        return ex.diagram is not None or bool(ex.areas)
+
+    @cached_property
+    def given(self) -> tuple[float, float, str]:
+        """With no diagram: ΔE, its reference and how it is found. C_E's share of the power
+        over the time a cycle takes, P·cycle/ω, beside the mean torque P/ω over the cycle's
+        angle; the flywheel's I·ω²·C_s beside ½·I·(ω1² − ω2²) at the two speeds."""
+        ex = self.exercise
+        if ex.delta_e_given is not None:
+            return ex.delta_e_given, ex.delta_e_given, "ΔE given"
+        if ex.energy_coefficient is not None:
+            ce = ex.energy_coefficient
+            return (ce * ex.power * (ex.cycle / ex.speed), ce * (ex.power / ex.speed) * ex.cycle,
+                    "ΔE = C_E·P·t, t = cycle/ω the time a cycle takes")
+        high, low = ex.extremes_given or speed_limits(ex.speed, ex.speed_fluctuation)
+        return (ex.inertia * ex.speed ** 2 * ex.speed_fluctuation,
+                energy_between(ex.inertia, high, low), "ΔE = I·ω²·C_s = ½·I·(ω1² − ω2²)")
 
     @cached_property
     def drawing(self) -> Reading | None:
@@ -92,6 +127,8 @@ class FlywheelSolution(ChapterFiles):
         """ΔE by the reference: quadrature, or the greatest run of neighbouring areas."""
         if self.reference is not None:
             return self.reference.delta_e
+        if not self.drawn:
+            return self.given[1]
         if self.exercise.punch is not None:
             return self._punch_reference.delta_e
         a = self.exercise.areas
@@ -115,7 +152,8 @@ class FlywheelSolution(ChapterFiles):
         """ΔE's and the mean's tolerance, relative to ΔE (see the module's docstring)."""
         ex, r = self.exercise, self.reading
         if ex.diagram is None:
-            return 1e-12 * len(ex.areas)        # sums of a few numbers, each rounded once
+            # sums of a few numbers, each rounded once (a file with no diagram: a product)
+            return 1e-12 * max(len(ex.areas), 1)
         size = max(abs(t) for _, t in r.samples) * ex.cycle
         floor = ROUNDING * size
         quadrature = QUADRATURE if ex.formula is not None else 0.0
@@ -140,6 +178,11 @@ class FlywheelSolution(ChapterFiles):
         if ex.speed_fluctuation is not None and self.reading.delta_e and ex.speed is not None:
             return flywheel_inertia(self.reading.delta_e, ex.speed, ex.speed_fluctuation)
         return None
+
+    @property
+    def per_speed_unit(self) -> float:
+        """rad/s in a unit of the file's speed (1 for rad/s, 2π/60 for rpm)."""
+        return SPEEDS[self.exercise.speed_unit]
 
     @property
     def sign(self) -> float:
@@ -169,7 +212,12 @@ class FlywheelSolution(ChapterFiles):
         q: dict[str, Checked] = {}
         method = ("intercepts by bisection on T(θ), each loop by Gauss–Legendre"
                   if ex.formula is not None else "turning-moment diagram" if ex.diagram
-                  else "areas of the diagram")
+                  else "areas of the diagram" if self.drawn else self.given[2])
+        if ex.energy_coefficient is not None:
+            # the work a cycle: P over the time a cycle takes, beside T_mean over its angle
+            q["work_per_cycle"] = _check(ex.power * (ex.cycle / ex.speed),
+                                         ex.power / ex.speed * ex.cycle, 1e-15,
+                                         "W = P·t, t = cycle/ω", unit="J")
         if ref is not None:
             q["mean_torque"] = _check(r.mean, ref.mean, tol * max(r.delta_e, 1.0) /
                                       max(abs(ref.mean), 1.0) / ex.cycle, method, unit="N·m")
@@ -198,6 +246,11 @@ class FlywheelSolution(ChapterFiles):
             v2cs = ex.rim_speed ** 2 * ex.speed_fluctuation
             q["rim_mass"] = _check(r.delta_e / v2cs, ref_e / v2cs, tol, "m = ΔE/(C_s·v²)",
                                    unit="kg")
+        elif ex.speed_fluctuation is not None and ex.inertia is not None:
+            # the flywheel and its speeds given: ΔE is what is asked; I as the data make it
+            how = ("I = m·k²" if ex.radius_of_gyration is not None else "I = m·r²"
+                   if ex.mass is not None else "given")
+            q["inertia"] = Checked({"value": ex.inertia, "unit": "kg·m²"}, method=how)
         elif ex.speed_fluctuation is not None:
             if ex.rim_speed is not None:
                 q["rim_radius"] = _check(ex.radius, ex.rim_speed / ex.speed, 0.0, "r = v/ω",
@@ -221,6 +274,16 @@ class FlywheelSolution(ChapterFiles):
             q["speed_fluctuation"] = _check(
                 speed_fluctuation(r.delta_e, ex.speed, ex.inertia),
                 speed_fluctuation(ref_e, ex.speed, ex.inertia), tol, "C_s = ΔE/(I·ω²)")
+        if ex.extremes_given is not None:
+            high, low = ex.extremes_given
+            # C_s from the two speeds, beside 2(ω1 − ω2)/(ω1 + ω2): a few roundings
+            q["speed"] = _check(ex.speed, math.fsum(ex.extremes_given) / 2, 1e-15,
+                                "ω = (ω1 + ω2)/2", unit="rad/s",
+                                rpm=_rpm(ex.speed))
+            q["speed_fluctuation"] = _check(ex.speed_fluctuation,
+                                            2 * (high - low) / (high + low),
+                                            4e-16 * (high + low) / (high - low),
+                                            "C_s = (ω1 − ω2)/ω")
         c = q.get("speed_fluctuation")
         cs = ex.speed_fluctuation if c is None else c.value["value"]
         # below 2: a flywheel so small that the speed would stop has no least speed
@@ -232,7 +295,7 @@ class FlywheelSolution(ChapterFiles):
                 # ω·(1 ± C_s/2): C_s's relative error times (C_s/2)/(1 ± C_s/2)
                 spread = 0.0 if c is None else c.tolerance * cs / 2 / (1 + side * cs / 2)
                 q[key] = _check(v, w, spread + 1e-15, "ω(1 ± C_s/2), ω the mean of the two",
-                                unit="rad/s")
+                                unit="rad/s", rpm=_rpm(v))
         q |= self._energies(q, tol)
         if ref is not None and r.delta_e:
             q |= self._fastest(ref, tol)
@@ -277,11 +340,12 @@ class FlywheelSolution(ChapterFiles):
         # ω2² = ω1² − 2ΔE/I: ΔE's relative error times 2ΔE/(I·ω2²)/2 in ω2
         spread = tol * self.reference_delta_e / (ex.inertia * want ** 2) + 1e-15
         key = "speed_min" if ex.speed_max is not None else "speed_max"
-        out = {key: _check(got, want, spread, "ΔE = ½·I·(ω1² − ω2²)", unit="rad/s")}
+        out = {key: _check(got, want, spread, "ΔE = ½·I·(ω1² − ω2²)", unit="rad/s",
+                           rpm=_rpm(got))}
         high, low = (given, got) if side < 0 else (got, given)
         ref_high, ref_low = (given, want) if side < 0 else (want, given)
         out["speed"] = _check((high + low) / 2, (ref_high + ref_low) / 2, spread,
-                              "ω = (ω1 + ω2)/2", unit="rad/s")
+                              "ω = (ω1 + ω2)/2", unit="rad/s", rpm=_rpm((high + low) / 2))
         out["speed_fluctuation"] = _check(2 * (high - low) / (high + low),
                                           2 * (ref_high - ref_low) / (ref_high + ref_low),
                                           # the found speed's error over ω1 − ω2
@@ -329,10 +393,11 @@ class FlywheelSolution(ChapterFiles):
                 r.delta_e / work, self.reference_delta_e / ref_work,
                 tol * (1 + r.delta_e / work), "C_E = ΔE/(work done in a cycle)")
         if self.inertia and ex.speed is not None:
-            i_ref = (q["inertia"].reference["value"] if "inertia" in q else self.inertia)
+            found = "inertia" in q and q["inertia"].reference is not None
+            i_ref = q["inertia"].reference["value"] if found else self.inertia
             out["kinetic_energy"] = _check(self.inertia * ex.speed ** 2 / 2,
                                            i_ref * ex.speed ** 2 / 2,
-                                           q["inertia"].tolerance if "inertia" in q else 0.0,
+                                           q["inertia"].tolerance if found else 0.0,
                                            "½·I·ω² at the mean speed", unit="J")
         return out
 
@@ -415,7 +480,10 @@ class FlywheelSolution(ChapterFiles):
     @property
     def figures(self) -> dict[str, Any]:
         """The turning-moment diagram (T(θ)), or the energy at each intercept (areas)."""
-        from tarsim.graphics.forces.flywheel_figure import energy_figure, torque_figure
+        from tarsim.graphics.forces.flywheel_figure import (energy_figure, speed_figure,
+                                                            torque_figure)
+        if not self.drawn:
+            return {"energy": speed_figure(self)}
         if self.exercise.diagram is None:
             return {"energy": energy_figure(self)}
         return {"turning-moment": torque_figure(self)}

@@ -13,7 +13,7 @@ from tarsim.constructions.errors import InputError
 
 from ..table_file import Tables
 
-__all__ = ["PERCENT", "speeds", "read_wheel"]
+__all__ = ["PERCENT", "speeds", "read_given_wheel", "read_wheel"]
 
 
 PERCENT = re.compile(r"\s*(±|\+/-|\+-)?\s*(\d+(?:\.\d*)?|\.\d+)\s*%\s*")
@@ -60,6 +60,7 @@ def speeds(t: Tables, fw: dict, rad_s: float) -> dict[str, float]:
                          else "speed_max")
         out["speed"] = (high + low) / 2
         out["speed_fluctuation"] = (high - low) / out["speed"]
+        out["extremes_given"] = (high, low)
         return out
     if "speed" in given:
         out["speed"] = given["speed"]
@@ -82,6 +83,49 @@ def speeds(t: Tables, fw: dict, rad_s: float) -> dict[str, float]:
             raise t.fail(f"C_s = (ω_max − ω_min)/ω is positive and below 2 (a speed that "
                          f"stops), got {cs:g}", "flywheel", "speed_fluctuation")
         out["speed_fluctuation"] = cs
+    return out
+
+
+_GIVEN = ("speed", "speed_max", "speed_min", "speed_fluctuation", "inertia", "mass",
+          "radius_of_gyration", "radius", "diameter")
+"""What ``[flywheel]`` may hold with no diagram and no ΔE: the flywheel and its speeds."""
+
+
+def read_given_wheel(t: Tables, fw: dict, metre: float, rad_s: float) -> dict[str, Any]:
+    """A file with no diagram and no ΔE: the flywheel given (``inertia``, ``mass`` with
+    ``radius_of_gyration``, or a rim's ``mass`` at its mean ``radius`` or ``diameter``) and
+    the speeds it runs between, for ΔE = ½·I·(ω1² − ω2²), as the books' simplest flywheel
+    is posed; in SI."""
+    out = speeds(t, fw, rad_s)
+    if "speed" not in out or "speed_fluctuation" not in out:
+        raise t.fail("a flywheel file with no diagram gives the flywheel with its greatest and "
+                     "least speeds (or the mean and speed_fluctuation), ΔE itself (delta_E = "
+                     "…, J), or [turning_moment] power with energy_fluctuation (C_E)",
+                     "flywheel", None)
+    extra = [k for k in fw if k not in _GIVEN]
+    if extra:
+        raise t.fail(f"{extra[0]} needs ΔE from a diagram (or delta_E); with the flywheel and "
+                     "its speeds alone, ΔE and C_s are what is found", "flywheel", extra[0])
+
+    def positive(key: str, what: str, scale: float = 1.0) -> float:
+        v = t.number(fw, key, "flywheel", what)
+        if not v > 0:
+            raise t.fail(f"{what} must be positive, got {v:g}", "flywheel", key)
+        return v * scale
+    ways = [k for k in ("inertia", "radius_of_gyration", "radius", "diameter") if k in fw]
+    if len(ways) != 1 or ("inertia" in fw) == ("mass" in fw):
+        raise t.fail("give the flywheel once: inertia (kg·m²), or mass with radius_of_gyration,"
+                     " or a rim's mass with its mean radius (or diameter)", "flywheel",
+                     ways[1] if len(ways) > 1 else None)
+    (way,) = ways
+    if way == "inertia":
+        out["inertia"] = positive("inertia", "the flywheel's moment of inertia")
+        return out
+    out["mass"] = positive("mass", "the flywheel's mass")
+    k = positive(way, "the radius of gyration" if way == "radius_of_gyration" else
+                 "the rim's mean radius", metre / (2 if way == "diameter" else 1))
+    out["radius_of_gyration" if way == "radius_of_gyration" else "radius"] = k
+    out["inertia"] = out["mass"] * k * k
     return out
 
 
@@ -187,7 +231,7 @@ def read_wheel(t: Tables, fw: dict, metre: float, rad_s: float,
         raw = fw["at"] if isinstance(fw["at"], list) else [fw["at"]]
         out["at"] = tuple(math.radians(t.number({"at": a}, "at", "flywheel",
                                                 "a crank angle (degrees)")) for a in raw)
-        if "areas" in diagram:
+        if "formula" not in diagram and "points" not in diagram:
             raise t.fail("a diagram given by its areas (or a punch) has no T(θ) to read at a "
                          "crank angle: "
                          "give torque = \"…\" or points, or leave at out", "flywheel", "at")

@@ -70,7 +70,9 @@ def lines(sol) -> list[str]:
     elif "power" in q:
         out.append(words("power at the mean speed: P = T_mean·ω = {power} kW",
                          power=numeral(q["power"].value["value"] / 1000)))
-    if r.delta_e:
+    if not sol.drawn:
+        out.append(_given(sol))
+    elif r.delta_e:
         where = (words("between θ = {low}° and {high}°", low=_theta(sol, r.lowest),
                        high=_theta(sol, r.highest)) if ex.diagram is not None else
                  words("the energy highest after area {high} and lowest after area {low}",
@@ -91,7 +93,15 @@ def lines(sol) -> list[str]:
                          "where the energy it holds is highest and lowest",
                          high=numeral(q["speed_max_at"].value["value"], ".2f"),
                          low=numeral(q["speed_min_at"].value["value"], ".2f")))
-    if "inertia" in q:
+    if ex.extremes_given is not None:
+        high, low = ex.extremes_given
+        out.append(words("between the greatest and least speeds, {high} and {low} {unit}: the "
+                         "mean ω = (ω1 + ω2)/2 = {mean} {unit}, C_s = (ω1 − ω2)/ω = {cs}",
+                         unit=ex.speed_unit, high=numeral(high / _speed_unit(sol)),
+                         low=numeral(low / _speed_unit(sol)),
+                         mean=numeral(ex.speed / _speed_unit(sol)),
+                         cs=numeral(ex.speed_fluctuation)))
+    if "inertia" in q and q["inertia"].reference is not None:
         out.append(words("flywheel for C_s = {cs} at ω = {omega} rad/s: I = ΔE/(C_s·ω²) = "
                          "{inertia} kg·m²", cs=numeral(ex.speed_fluctuation, "g"),
                          omega=numeral(ex.speed), inertia=numeral(sol.inertia)))
@@ -128,7 +138,7 @@ def lines(sol) -> list[str]:
                          ratio=numeral(ex.width_to_thickness, "g"),
                          thickness=_length(sol, q["rim_thickness"].value["value"]),
                          width=_length(sol, q["rim_width"].value["value"])))
-    if "speed" in q:
+    if "speed" in q and ex.speed is None:
         unit = _speed_unit(sol)
         high, low = ((ex.speed_max, q["speed_min"].value["value"]) if ex.speed_max is not None
                      else (q["speed_max"].value["value"], ex.speed_min))
@@ -139,7 +149,7 @@ def lines(sol) -> list[str]:
                          high=numeral(high / unit), low=numeral(low / unit),
                          mean=numeral(q["speed"].value["value"] / unit),
                          cs=numeral(q["speed_fluctuation"].value["value"])))
-    elif "speed_fluctuation" in q:
+    elif "speed_fluctuation" in q and ex.extremes_given is None:
         out.append(words("a flywheel of I = {inertia} kg·m² holds the speed within C_s = "
                          "ΔE/(I·ω²) = {cs} ({percent} % of the mean, ±{half} %)",
                          inertia=numeral(ex.inertia),
@@ -177,10 +187,62 @@ def lines(sol) -> list[str]:
     return out
 
 
+def _given(sol) -> str:
+    """How a file with no diagram gives ΔE: given, C_E's share of the work a cycle, or the
+    flywheel's energy between its two speeds."""
+    ex, energy = sol.exercise, numeral(sol.reading.delta_e)
+    if ex.delta_e_given is not None:
+        return words("the greatest fluctuation of energy is given: ΔE = {energy} J",
+                     energy=energy)
+    if ex.energy_coefficient is not None:
+        return words("the engine's {power} kW do W = P·t = {work} J in a cycle of {cycle}° "
+                     "(t = {time} s at the mean speed); ΔE = C_E·W = {ce} × {work} J = "
+                     "{energy} J", power=numeral(ex.power / 1000),
+                     work=numeral(sol.checked["work_per_cycle"].value["value"]),
+                     cycle=numeral(math.degrees(ex.cycle), "g"),
+                     time=numeral(ex.cycle / ex.speed), ce=numeral(ex.energy_coefficient, "g"),
+                     energy=energy)
+    high, low = ex.extremes_given or (sol.checked["speed_max"].value["value"],
+                                      sol.checked["speed_min"].value["value"])
+    unit = _speed_unit(sol)
+    return words("a flywheel of I = {inertia} kg·m² between {high} and {low} {unit}: ΔE = "
+                 "½·I·(ω1² − ω2²) = I·ω²·C_s = {energy} J", inertia=numeral(ex.inertia),
+                 high=numeral(high / unit), low=numeral(low / unit), unit=ex.speed_unit,
+                 energy=energy)
+
+
+def _engine_steps(sol) -> list[str]:
+    """The steps that make the diagram of an engine given by its strokes or cylinders."""
+    ex, steps = sol.exercise, []
+    if ex.strokes and ex.power is not None:
+        steps.append(words("At {power} kW the engine does P·t = {work} J in a cycle of "
+                           "{cycle}°, t = cycle/ω; shared in the ratio given, its strokes' "
+                           "works are {works} J.", power=numeral(ex.power / 1000),
+                           work=numeral(math.fsum(ex.strokes)),
+                           cycle=numeral(math.degrees(ex.cycle), "g"),
+                           works=", ".join(numeral(w, ".6g") for w in ex.strokes)))
+    if ex.strokes:
+        steps.append(words("Each stroke's diagram is a triangle on its base of {span}°, its "
+                           "apex at mid-stroke 2W/s high so that its area is its work W: "
+                           "{heights} N·m.", span=numeral(math.degrees(ex.cycle)
+                                                          / len(ex.strokes), "g"),
+                           heights=", ".join(numeral(2 * w / (ex.cycle / len(ex.strokes)),
+                                                     ".6g") for w in ex.strokes)))
+    if ex.phases:
+        steps.append(words("Add the {n} cylinders' diagrams, each set behind the first by "
+                           "{lags}°: T(θ) = ΣT₁(θ − φ).", n=numeral(len(ex.phases), "d"),
+                           lags=", ".join(numeral(math.degrees(p), "g") for p in ex.phases)))
+    return steps
+
+
 def document(sol) -> list[Section]:
     """steps.md: how the diagram is read, numbered, then the results."""
     ex, r = sol.exercise, sol.reading
-    steps = []
+    steps = _engine_steps(sol)
+    if not sol.drawn:
+        return [title(ex.name, ex.description),
+                Section(phrase("heading.construction"), (numbered([_given(sol)]),)),
+                Section(phrase("md.results"), (Bullets(tuple(lines(sol))),))]
     if ex.punch is not None:
         steps.append(words("While it punches, the steady motor gives E·t/T = {given} J of the "
                            "{energy} J a hole takes; the flywheel gives up the rest, "

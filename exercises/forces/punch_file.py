@@ -16,7 +16,7 @@ from tarsim.constructions.forces.flywheel import Punch
 from ..file_numbers import file_number
 from ..table_file import Tables
 
-__all__ = ["PUNCH_KEYS", "read_punch"]
+__all__ = ["PUNCH_KEYS", "read_power", "read_punch"]
 
 PUNCH_KEYS = ("energy", "energy_per_area", "hole", "plate", "holes_per_hour",
               "holes_per_minute", "period", "power", "punching_time", "punching_fraction")
@@ -66,7 +66,7 @@ def read_punch(t: Tables, p: dict) -> dict[str, Any]:
     rate = _one_of(t, p, ("holes_per_hour", "holes_per_minute", "period", "power"),
                    "how often it punches (or the motor's power: a hole every E/P)")
     if rate == "power":
-        period = energy / _power(t, p)
+        period = energy / read_power(t, p)
     else:
         period = {"holes_per_hour": lambda v: 3600 / v, "holes_per_minute": lambda v: 60 / v,
                   "period": lambda v: v}[rate](positive(rate, "the punching rate"))
@@ -86,18 +86,19 @@ POWERS = {"W": 1.0, "kW": 1e3, "MW": 1e6}
 _POWER = re.compile(r"\s*(.+?)\s*(W|kW|MW)\s*")
 
 
-def _power(t: Tables, p: dict) -> float:
-    """The motor's power in W: a number in [units] power (W unless it says "kW") or "3 kW"
+def read_power(t: Tables, p: dict, table: str = "punch",
+               what: str = "the motor's power") -> float:
+    """``p``'s power in W: a number in [units] power (W unless it says "kW") or "3 kW"
     as the books write it."""
     raw = p["power"]
     m = _POWER.fullmatch(raw) if isinstance(raw, str) else None
     try:
-        v = (file_number(m[1], "the motor's power") * POWERS[m[2]] if m
-             else t.number(p, "power", "punch", "the motor's power")
+        v = (file_number(m[1], what) * POWERS[m[2]] if m
+             else t.number(p, "power", table, what)
              * POWERS[t.data.get("units", {}).get("power", "W")])
     except (InputError, ValueError):
-        raise t.fail(f"the motor's power is a number in W or \"3 kW\"; got {raw!r:.40}",
-                     "punch", "power") from None
+        raise t.fail(f"{what} is a number in W or \"3 kW\"; got {raw!r:.40}",
+                     table, "power") from None
     if not v > 0:
-        raise t.fail(f"the motor's power must be positive, got {raw!r:.40}", "punch", "power")
+        raise t.fail(f"{what} must be positive, got {raw!r:.40}", table, "power")
     return v

@@ -2,7 +2,8 @@
 shaded with their joules and the shaft's greatest acceleration and retardation marked (for
 an engine against a machine, the excess T_e − T_m beside the two torques given); or,
 for a diagram given by its areas, the energy at each intercept, its highest and lowest
-marked ΔE apart."""
+marked ΔE apart; or, for a flywheel given with no diagram, its energy ½·I·ω² against its
+speed, the greatest and least speeds marked ΔE apart."""
 
 from __future__ import annotations
 
@@ -11,9 +12,9 @@ from typing import Any
 
 from tarsim.constructions.narration import numerals, unit_words, words
 from tarsim.graphics.figure import Figure
-from tarsim.graphics.plot import PlotMark, Series, draw_line_plot
+from tarsim.graphics.plot import PlotMark, Series, draw_line_plot, nice_ticks
 
-__all__ = ["torque_figure", "energy_figure", "energy_fills"]
+__all__ = ["torque_figure", "energy_figure", "energy_fills", "speed_figure"]
 
 
 def _short(x: float) -> str:
@@ -45,6 +46,10 @@ def torque_figure(sol: Any) -> Figure:
     series = [Series(curve, pts),
               Series(words("mean {value} {unit}", value=numerals(_short(r.mean)), unit=torque),
                      ((0.0, r.mean), (period, r.mean)), "plot_curve_dashed")]
+    if ex.single:                   # one cylinder's diagram, the curve the sum of them
+        one = [(math.degrees(t), v) for t, v in ex.single] + [(period, ex.single[0][1])]
+        series.append(Series(words("one cylinder's, {n} added", n=numerals(str(len(ex.phases)))),
+                             tuple(one), "plot_curve_dotted"))
     fills, tags = energy_fills([p[0] for p in pts[:-1]], [p[1] for p in pts[:-1]], r.mean,
                                [math.degrees(c) for c in r.intercepts], period)
     notes = [words("ΔE = {energy} {unit}, the greatest fluctuation of energy: the highest energy "
@@ -133,6 +138,38 @@ def energy_figure(sol: Any) -> Figure:
                      "energy less the lowest", energy=numerals(_short(r.delta_e)),
                      unit=joule)],
         tags=tags, mark_legend=words("the highest and lowest energy"), subtitle=ex.name)
+
+
+def speed_figure(sol: Any) -> Figure:
+    """The flywheel's energy ½·I·ω² against its speed (in the file's unit), its greatest and
+    least speeds marked: the energy between them is ΔE."""
+    ex, q = sol.exercise, sol.checked
+    per = sol.per_speed_unit               # rad/s in the file's unit of speed
+    high, low = q["speed_max"].value["value"], q["speed_min"].value["value"]
+    inertia = sol.inertia
+    margin = high - low
+    start, end = max(low - 2 * margin, 0.0) / per, (high + 2 * margin) / per
+    n = 120
+    pts = tuple((x, inertia * (x * per) ** 2 / 2 / 1000)
+                for x in (start + (end - start) * k / n for k in range(n + 1)))
+    kilojoule = unit_words("kJ")
+    speed = unit_words(ex.speed_unit)
+    marks = [PlotMark(w / per, inertia * w * w / 2 / 1000, label)
+             for w, label in ((high, "ω1"), (low, "ω2"))]
+    ticks = [(x, numerals(_short(x))) for x in nice_ticks(start, end) if start <= x <= end]
+    return draw_line_plot(
+        words("The flywheel's energy against its speed"), words("speed ({unit})", unit=speed),
+        f"E ({kilojoule})", [Series(words("½·I·ω², I = {inertia} kg·m²",
+                                          inertia=numerals(_short(inertia))), pts),
+                             *(Series(words("{name} = {energy} {unit}", name=name,
+                                            energy=numerals(_short(e)), unit=kilojoule),
+                                      ((start, e), (end, e)), "plot_curve_dashed")
+                               for name, e in (("E1", marks[0].y), ("E2", marks[1].y)))],
+        marks, x_range=(start, end), x_ticks=ticks, include_zero=False,
+        notes=[words("ΔE = ½·I·(ω1² − ω2²) = {energy} {unit}: the energy the flywheel gives "
+                     "up from its greatest speed ω1 to its least ω2",
+                     energy=numerals(_short(sol.reading.delta_e)), unit=unit_words("J"))],
+        mark_legend=words("the greatest and least speeds"), subtitle=ex.name)
 
 
 def energy_fills(degrees: list[float], torques: list[float], mean: float,
