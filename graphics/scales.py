@@ -12,8 +12,9 @@ from collections.abc import Sequence
 from tarsim.constructions.narration import numerals, significant, spoken, unit_words, words
 from tarsim.constructions.scales import Stated, nice_per_cm
 
-from .figure import Figure, Path, Text, text_width, wrap_text
+from .figure import Figure, Path, Text, text_width
 from .rtl import reading
+from .typeset import spoken_numbers
 from .wrapping import wrap_formulas
 
 __all__ = ["nice_per_cm", "scale_text", "paper_ratio", "bar_room", "draw_scale_bar", "number_text",
@@ -175,8 +176,10 @@ def draw_caption(fig: Figure, heading: str, lines: Sequence[str], *, per_cm: flo
     and notes align right and the scales stand at the left (a bar still reads left to
     right, as its numbers do). The scale and legend names are said in the language being
     spoken (:func:`~tarsim.constructions.narration.words`); the heading, lines and notes
-    come already said. The drawing's own size is kept as the figure's ``drawing``, from
-    which :func:`~tarsim.graphics.fitting.fit` foretells its size at another scale.
+    come already said, their numbers set in the spoken language's digits
+    (:func:`~tarsim.graphics.typeset.spoken_numbers`). The drawing's own size is kept as
+    the figure's ``drawing``, from which :func:`~tarsim.graphics.fitting.fit` foretells its
+    size at another scale.
     """
     x0, y0, x1, y1 = fig.bounds()
     fig.shift(margin - x0, margin - y0)
@@ -187,6 +190,8 @@ def draw_caption(fig: Figure, heading: str, lines: Sequence[str], *, per_cm: flo
     texts = [f"{name} {scale_text(per, u)}" for name, per, u in scales]
     right = max([text_width(t, 3.2) for t in texts]
                 + [bar_room(per, u) for _, per, u in scales], default=0.0)
+    heading, lines = spoken_numbers(heading), [spoken_numbers(t) for t in lines]
+    notes = [spoken_numbers(t) for t in notes]
     heads, lines = _wrapped(heading, lines, max(max(x1 - x0, _CAPTION_ROW) - right - 8.0,
                                                 _TEXT_COLUMN))
     left = max([h.width for h in heads] + [text_width(t, 3.2) for t in lines])
@@ -197,7 +202,7 @@ def draw_caption(fig: Figure, heading: str, lines: Sequence[str], *, per_cm: flo
     # shrink the drawing), but never narrower than a column that reads well.
     width = max(x1 - x0, left + right + 8.0, legend_w) + 2 * margin
     notes = [line for note in notes
-             for line in wrap_text(note, 3.0, max(width - 2 * margin, _NOTE_COLUMN))]
+             for line in wrap_formulas(note, 3.0, max(width - 2 * margin, _NOTE_COLUMN))]
     width = max(width, max([text_width(n, 3.0) for n in notes], default=0.0) + 2 * margin)
     fig.shift((width - (x1 - x0) - 2 * margin) / 2, 0.0)
     reads = reading(width)

@@ -10,7 +10,9 @@ from __future__ import annotations
 
 import re
 
-__all__ = ["typeset", "subscript", "typeset_span"]
+from tarsim.constructions.narration import numerals
+
+__all__ = ["typeset", "subscript", "typeset_span", "spoken_numbers"]
 
 _SUBSCRIPT = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
 _TRAILING = re.compile(r"^(.*?[^\d,])([\d,]+)([′″]*)$")
@@ -61,6 +63,25 @@ def typeset_span(label: str) -> str:
 
 
 _NAMED = re.compile(r"(?<=[A-Za-z])\d+")
+
+_NUMBER = re.compile(r"(?<![\w.])[0-9]+(?:\.[0-9]+)?(?:e[−+-]?[0-9]+)?")
+"""A number standing alone ("2.34", "−44.0721" after its sign), not a name's digits
+("θ2", "O2A", "I13")."""
+
+
+def spoken_numbers(text: str) -> str:
+    """``text`` with each number in it set in the digits of the language being spoken, a
+    name's digits kept: a Persian figure's title and caption then use the digits its table
+    does ("t = ۲٫۳۴ s", "θ2 = ۶۰°"), one system a figure.
+
+    >>> from tarsim.constructions.narration import speaking
+    >>> with speaking("fa"):
+    ...     spoken_numbers("at t = 2.34 s (θ2 = −44.0721°), O2A = 100 mm")
+    'at t = ۲٫۳۴ s (θ2 = −۴۴٫۰۷۲۱°), O2A = ۱۰۰ mm'
+    >>> spoken_numbers("t = 2.34 s")
+    't = 2.34 s'
+    """
+    return _NUMBER.sub(lambda m: numerals(m.group(0)), text)
 
 
 def _digits_down(name: str) -> str:

@@ -5,6 +5,7 @@ inside a formula; a worked page's results table stands beside a figure where one
 
 from __future__ import annotations
 
+import re
 from dataclasses import replace
 
 import pytest
@@ -96,3 +97,24 @@ def test_a_formula_is_never_broken_across_lines():
         assert " ".join(lines) == text
         assert any("t = 2.34 s" in line for line in lines), lines
         assert any("(θ2 = −44.0721°)" in line for line in lines), lines
+
+
+_LATIN_NUMBER = re.compile(r"(?<![\w.])[0-9]")
+"""A Latin digit opening a number, not a name's ("θ2", "O2A" and "I13" keep theirs)."""
+
+
+@pytest.mark.parametrize("stem", ["worked-t-2.34s", "centres-t-2.34s",
+                                  "V_B-radius-rotation-t-2.34s"])
+def test_a_persian_figures_titles_and_captions_use_its_tables_digits(stem):
+    # Today: "t = 2.34 s (θ2 = −44.0721°)" in the title and the caption of a figure whose
+    # table reads "۱۸۹٫۲".
+    (first, *_) = pages("crank-shaper", "fa")[stem]
+    said = [t for t in first.items if isinstance(t, Text)
+            and (t.weight == "bold" or t.size == 3.2) and " = " in t.text]
+    assert said
+    latin = [t.text for t in said if _LATIN_NUMBER.search(t.text + t.tail)]
+    assert not latin, latin
+    assert any("۲٫۳۴" in t.text or "۴۴٫۰۷۲۱" in t.text for t in said)
+    # and English keeps its own
+    (en, *_) = pages("crank-shaper", "en")[stem]
+    assert any("2.34" in t.text or "44.0721" in t.text for t in en.items if isinstance(t, Text))

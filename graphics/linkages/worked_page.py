@@ -20,10 +20,10 @@ from itertools import product
 from tarsim.constructions.errors import TarsimError
 from tarsim.constructions.narration import right_to_left, words
 
-from ..figure import Figure, Path, Text, text_width, wrap_text
+from ..figure import Figure, Path, Text, text_width
 from ..rtl import is_rtl, reading
 from ..paper import Paper, standard
-from ..typeset import typeset
+from ..typeset import spoken_numbers, typeset
 from ..wrapping import wrap_formulas
 
 __all__ = ["compose_worked_page", "compose_worked_sheets", "holds_panel", "A3"]
@@ -92,7 +92,7 @@ def compose_worked_page(title: str, panels: Sequence[Figure], table: Sequence[Se
     [(10.0, 20.0), (66.0, 20.0)]
     """
     results = _results(panels, table, notes)
-    return _sheet(title, panels, results, A3)
+    return _sheet(spoken_numbers(title), panels, results, A3)
 
 
 def compose_worked_sheets(title: str, panels: Sequence[Figure], table: Sequence[Sequence[str]],
@@ -111,6 +111,7 @@ def compose_worked_sheets(title: str, panels: Sequence[Figure], table: Sequence[
     >>> [(s.width, s.height) for s in sheets]          # A4 on its side: a square a sheet
     [(297.0, 210.0), (297.0, 210.0)]
     """
+    title = spoken_numbers(title)
     results = _results(panels, table, notes)
     items: list[Figure] = [*panels, results]
     later = words("{title} (continued)", title=title)
@@ -342,7 +343,8 @@ def _draw_results(table: Sequence[Sequence[str]], notes: Sequence[str]) -> Figur
     """Draw the results table and the notes under it as a figure of their own (origin top-left)."""
     fig = Figure(0.0, 0.0)
     y = _draw_table(fig, table, (0.0, 0.5 * _ROW)) + (2.0 if notes else 0.0) if table else 0.0
-    lines = [line for note in notes for line in wrap_text(note, _NOTE, _NOTE_WIDTH)]
+    lines = [line for note in notes
+             for line in wrap_formulas(spoken_numbers(note), _NOTE, _NOTE_WIDTH)]
     widths = _column_widths(table)
     fig.width = max([sum(widths) + _PAD * max(len(widths) - 1, 0)]
                     + [text_width(n, _NOTE) for n in lines])
