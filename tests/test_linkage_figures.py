@@ -40,3 +40,18 @@ def test_a_centres_figure_is_titled_for_the_centres_it_shows(solved, exercise_id
     fig = solved(exercise_id).figures["centres"]
     assert len(_centres_named(fig)) == shown
     assert _title(fig).endswith(says)
+
+
+def test_the_ground_a_wheel_rolls_on_and_its_sliders_guide_are_drawn_once(solved):
+    """The wheel-driven slider's B slides on the floor its wheel rolls on: every hatched
+    guide of each figure lies on one line, where the wheel touches it (it was drawn again
+    2.5 mm lower, under B's block), and B's block stands on it."""
+    for stem, fig in solved("wheel-driven-slider").figures.items():
+        guides = [it.points for it in fig.items if isinstance(it, Path) and it.style == "guide"]
+        if not guides:
+            continue
+        heights = {round(y, 2) for pts in guides for _, y in pts}
+        assert max(heights) - min(heights) < 0.01, stem       # the floor is level
+        (block,) = [it.points for it in fig.items if isinstance(it, Path)
+                    and it.style == "block"]
+        assert max(y for _, y in block) == pytest.approx(min(heights), abs=0.01), stem

@@ -16,6 +16,7 @@ from typing import TYPE_CHECKING
 
 from shapely.geometry import MultiPoint
 
+from tarsim.constructions import geometry as g
 from tarsim.constructions.joints import Arc, Slide
 
 from ..figure import Path, arc_points
@@ -77,9 +78,14 @@ def block_lift(diagram: _Diagram, s: Slide) -> tuple[tuple[float, float], float]
 
     A flat-faced follower's block point lies on its face; centred there, the
     block would cover the face and the cam. It is drawn standing on the face
-    instead, as the follower's stem, which the rigid link allows.
+    instead, as the follower's stem, which the rigid link allows. A block sliding on
+    the ground a wheel rolls on stands on that ground, its point on the ground's line,
+    so the ground is drawn once, at one height (:func:`_ground_under`).
     """
     d = unit(diagram.view.direction(diagram.asm.guide(diagram.m.slides.index(s)).direction))
+    up = _ground_under(diagram, s)
+    if up is not None:
+        return up, _BLOCK[1] / 2
     for k in diagram.contacts:
         if k.slide.guide_link != s.link or k.slide.contact.face.through != s.point:
             continue
@@ -91,6 +97,25 @@ def block_lift(diagram: _Diagram, s: Slide) -> tuple[tuple[float, float], float]
         lift = _BLOCK[0] / 2 + _BLOCK[1] / 2 * math.sqrt(1.0 - along * along) / abs(along)
         return (d if along > 0 else (-d[0], -d[1])), lift
     return d, 0.0
+
+
+def _ground_under(diagram: _Diagram, s: Slide) -> tuple[float, float] | None:
+    """The paper direction from the ground up to a block whose frame guide is the ground a
+    wheel rolls on (the wheel-driven slider's B sliding on the floor the wheel rolls on),
+    else None."""
+    if s.guide_link != 1:
+        return None
+    line = diagram.asm.guide(diagram.m.slides.index(s))
+    for k in diagram.contacts:
+        if not (symbol_of(k.slide).ground and k.slide.guide_link == 1):
+            continue
+        face = diagram.asm.guide(diagram.m.slides.index(k.slide))
+        (a, b), (c, e) = unit(line.direction), unit(face.direction)
+        tol = 1e-9 * max(diagram.asm.size, 1e-300)
+        if abs(a * e - b * c) <= 1e-9 and abs(line.signed_distance(g.Point(*k.point))) <= tol:
+            n = diagram.view.direction(k.away)
+            return (-n[0], -n[1])
+    return None
 
 
 def block_centre(diagram: _Diagram, s: Slide) -> tuple[float, float]:
@@ -124,6 +149,9 @@ def draw_frame_guides(diagram: _Diagram) -> None:
         half = max(22.0, 0.5 * diagram.travel(s.point, d))
         # A block standing on a face has its guide above the face only.
         u, lift = block_lift(diagram, s)
+        up = _ground_under(diagram, s)
+        if up is not None:      # standing on the ground: its guide is the ground's line
+            side, u, lift = (-up[0], -up[1]), d, 0.0
         lo, hi = (-half, half) if lift == 0.0 else (1.0 - _BLOCK[0] / 2, half + _BLOCK[0])
         if lift == 0.0:
             # The guide runs past every marked place of the block on it (a limit point).
