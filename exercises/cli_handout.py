@@ -76,7 +76,7 @@ def handout(source, out_dir, angle, pdf, paper, lang, digits):
         ex = chapter.set_up(loaded.named_in(spoken()), paper=paper, angle=common.finite(angle))
         out = Path(out_dir or f"{ex.id}-handout")
         with output_folder(out):
-            files = problem_sheet(ex, chapter).files(pdf=pdf and reason is None)
+            files = problem_sheet(ex, chapter, paper_name=paper).files(pdf=pdf and reason is None)
             written = write_folder(files, out)
     click.echo(f"wrote {', '.join(p.name for p in written)} to {out}/")
     if reason:

@@ -8,8 +8,10 @@ solve found is put on the sheet: no centre, no vector, no number that is a resul
 position given by a time is stated by its time alone, for the crank's angle there is the
 first thing the student works out.
 
-Each chapter that has a handout registers its maker in :data:`HANDOUTS` by its key; the
-linkages have one (the course's main exercises), the other chapters are refused by name.
+Each chapter that has a sheet registers its maker in :data:`HANDOUTS` by its key: the
+linkages (the course's main exercises, :func:`_linkage_sheets`), and the gear trains, cams
+and rotors (:mod:`.handout_chapters`); a flywheel's or a rod's file is refused, naming
+those that have one.
 """
 
 from __future__ import annotations
@@ -58,8 +60,9 @@ class Handout:
         return out
 
 
-def handout(exercise, chapter) -> Handout:
-    """The problem sheet of ``exercise``, a ``chapter``'s, in the language being spoken.
+def handout(exercise, chapter, *, paper_name: str = "A4") -> Handout:
+    """The problem sheet of ``exercise``, a ``chapter``'s, in the language being spoken, on
+    sheets of ``paper_name`` (A4, A3, letter).
 
     Raises
     ------
@@ -76,7 +79,8 @@ def handout(exercise, chapter) -> Handout:
         kinds = " or ".join([", ".join(kinds[:-1]), kinds[-1]] if len(kinds) > 1 else kinds)
         raise InputError(f"{exercise.id} is {chapter.kind}, which has no problem sheet yet: "
                          f"tarsim handout writes one for {kinds}")
-    return Handout(exercise.id, make(exercise))
+    sheet = paper(paper_name)
+    return Handout(exercise.id, make(exercise, (sheet.width, sheet.height)))
 
 
 # ----- linkages ------------------------------------------------------------------------------
@@ -106,10 +110,11 @@ _WHOLE: dict[type, str] = {
 """How the sheet asks what is found of the mechanism as a whole, which it names by words."""
 
 
-def _linkage_sheets(ex) -> list[Figure]:
+def _linkage_sheets(ex, upright: tuple[float, float]) -> list[Figure]:
     """The mechanism at its [input] position, the statement, then each position's empty
-    polygons, on as few sheets as hold them."""
+    polygons, on as few sheets of ``upright`` (mm) as hold them."""
     from tarsim.constructions.linkages.assembly import assemble
+    from tarsim.constructions.scales import space_per_cm
     from tarsim.graphics.fitting import fit
     from tarsim.graphics.linkages.worked_page import holds_panel
     from tarsim.graphics.linkages.scene import draw_scene
@@ -118,10 +123,11 @@ def _linkage_sheets(ex) -> list[Figure]:
 
     worked = solve_worked(ex)            # read for the frames' sizes and scales, never shown
     m, sheet = ex.mechanism, paper(ex.paper)
-    upright = (sheet.width, sheet.height)
     given = Slice(assemble(m), ())
     first = worked.positions[0].work if worked.positions else worked.overall.work
-    space = first.scales.space if first is not None else None
+    # The solution's space scale, so that a drawing on the sheet lies over its figures.
+    space = (first.scales.space if first is not None
+             else space_per_cm(given.construction, room(sheet)))
     velocity = next((s for sol in worked.positions for a in sol.answers for s in a.figures
                      if s.velocity_scale), None)
     mechanism = fit(lambda per_cm: draw_scene(

@@ -17,7 +17,6 @@ from tarsim.constructions.units import LENGTH_UNITS
 from tarsim.constructions.narration import numerals, unit_words, words
 from tarsim.graphics.figure import Figure
 from tarsim.graphics.handout import Line, compose_handout, draw_statement
-from tarsim.graphics.paper import paper
 
 from .handout_text import math_text, number
 
@@ -29,7 +28,7 @@ def _asked(asks) -> list[Line]:
     return [Line(words("Find"), heading=True)] + [Line(math_text(symbol(a))) for a in asks]
 
 
-def gear_sheets(ex) -> list[Figure]:
+def gear_sheets(ex, sheet: tuple[float, float]) -> list[Figure]:
     """A gear train's sheet: the train in side view as the solution draws it, the data (each
     gear's teeth and its size, the arm, the member held, the meshes, the input), what is
     asked, and the tabular method's table (or an ordinary train's row of speeds) with every
@@ -54,10 +53,9 @@ def gear_sheets(ex) -> list[Figure]:
     drawing = draw_train_schematic(train, words("{name}: {what}", name=train.name,
                                                 what=words("the train")))
     statement = draw_statement(_given_train(train) + _asked(ex.asks))
-    sheet = paper("A4")
     return compose_handout(words("{name}: {what}", name=train.name,
                                  what=words("problem sheet")),
-                           [drawing, statement, table], sheet=(sheet.width, sheet.height))
+                           [drawing, statement, table], sheet=sheet)
 
 
 def _fraction(x) -> str:
@@ -101,7 +99,7 @@ def _given_train(train) -> list[Line]:
     return out
 
 
-def rotor_sheets(ex) -> list[Figure]:
+def rotor_sheets(ex, sheet: tuple[float, float]) -> list[Figure]:
     """A rotor's sheet: its side view (two planes), the data and what is asked, its table with
     the masses given and every product and balancing mass left empty, and an empty frame
     for the force polygon (and the couple polygon) at the scale the solution draws it at.
@@ -142,9 +140,8 @@ def rotor_sheets(ex) -> list[Figure]:
     polygons.append((words("{name}: force polygon", name=name), b.force,
                      b.closing[r.planes[0].name], "kg·m"))
     panels += [_empty_balance_polygon(b.construction, *p) for p in polygons]
-    sheet = paper("A4")
     return compose_handout(words("{name}: {what}", name=name, what=words("problem sheet")),
-                           panels, sheet=(sheet.width, sheet.height))
+                           panels, sheet=sheet)
 
 
 def _given_rotor(ex, unit: str, metre: float) -> list[Line]:
@@ -231,7 +228,7 @@ def _empty_balance_polygon(c, title: str, tips, closing, unit: str) -> Figure:
                               pole=("o", ""))
 
 
-def cam_sheets(ex) -> list[Figure]:
+def cam_sheets(ex, sheet: tuple[float, float]) -> list[Figure]:
     """A cam's sheet: the base circle with the follower at the start of the turn, the data
     (the base circle, the follower, the speed, each segment as given), what is asked, and the
     displacement diagram's axes, empty, at the scales the solution draws it at."""
@@ -247,15 +244,14 @@ def cam_sheets(ex) -> list[Figure]:
                                          what=words("the displacement diagram to draw")),
                                    lift=top, segments=spans, per_rad=s.diagram.per_rad,
                                    unit=unit, metre=metre)
-    circle = draw_base_circle(words("{name}: {what}", name=ex.name, what=words("base circle")),
+    circle = draw_base_circle(words("{name}: {what}", name=ex.name, what=_cam_term("base circle")),
                               base=ex.base_radius, offset=f.offset, roller=f.radius,
                               flat=f.kind == "flat-face",
                               pivot=f.pivot if f.oscillating else None, arm=f.arm,
                               unit=unit, metre=metre)
     statement = draw_statement(_given_cam(ex) + _asked_cam(ex))
-    sheet = paper("A4")
     return compose_handout(words("{name}: {what}", name=ex.name, what=words("problem sheet")),
-                           [circle, statement, axes], sheet=(sheet.width, sheet.height))
+                           [circle, statement, axes], sheet=sheet)
 
 
 def _given_cam(ex) -> list[Line]:
@@ -303,3 +299,9 @@ def _asked_cam(ex) -> list[Line]:
     out += [Line(words("the follower's lift at {theta}", theta=math_text(f"θ = {number(d)}°")))
             for d in ex.at]
     return out
+
+
+def _cam_term(text: str) -> str:
+    """A term as a cam's figures say it where a gear's say it otherwise (a base circle)."""
+    said = words(f"cam: {text}")
+    return words(text) if said == f"cam: {text}" else said
