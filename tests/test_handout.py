@@ -178,6 +178,14 @@ def test_an_engine_or_a_rotor_with_other_unknowns_is_refused(tmp_path, name):
     assert not (tmp_path / "h").exists()
 
 
+def test_a_cam_given_by_its_arcs_is_refused(tmp_path):
+    got = CliRunner().invoke(cli, ["handout", "tangent-cam-roller", "-o", str(tmp_path / "h")])
+    assert got.exit_code == 1
+    assert got.output == ("Error: tangent-cam-roller: a problem sheet is written for a cam "
+                          "given by its follower's motion; a cam given by its arcs has none "
+                          "yet\n")
+
+
 def test_the_command_writes_the_sheet(tmp_path):
     got = CliRunner().invoke(cli, ["handout", "four-bar", "-o", str(tmp_path), "--no-pdf"])
     assert got.exit_code == 0, got.output
