@@ -168,7 +168,7 @@ def test_bad_file_is_one_line_with_file_and_line(mech_file, tmp_path, edit, mess
                         "notes-example-1, outside-locomotive, primary-balance-unknowns, "
                         "radial-three, "
                         "single-cylinder-balance-mass, "
-                        "single-cylinder, "
+                        "single-cylinder, static-balance-couple-left, "
                         "three-masses-between, two-stroke-four, unknown-angles, "
                         "unknown-plane-and-angle, unknown-planes, v-twin, weights-one-plane, "
                         "engine-harmonic-torque, "
@@ -318,7 +318,7 @@ def test_list_shows_the_bundled_examples():
                    "notes-example-1", "outside-locomotive", "primary-balance-unknowns",
                    "radial-three",
                    "single-cylinder-balance-mass",
-                   "single-cylinder",
+                   "single-cylinder", "static-balance-couple-left",
                    "three-masses-between", "two-stroke-four", "unknown-angles",
                    "unknown-plane-and-angle", "unknown-planes", "v-twin",
                    "weights-one-plane",

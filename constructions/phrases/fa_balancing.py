@@ -186,10 +186,15 @@ WORDS: dict[str, str] = {
         "{angle}° در صفحه‌ای به فاصلهٔ {place}، نیرو و کوپل را با هم متعادل می‌کند "
         "(حالت {case} صفحه‌های جرم‌ها در جزوه: گشتاورگیری حول صفحهٔ هر جرم آن را "
         "معین می‌کند)",
-    "at {place} one plane balances the forces only: a couple of {couple} kg·m² (× ω²) is left, "
-    "for a second plane to take":
+    "at {place} one plane balances the forces only: a couple of {couple} kg·m² (× ω²) at "
+    "{angle}° is left, for a second plane to take":
         "یک صفحه در {place} تنها نیروها را متعادل می‌کند: کوپلی به اندازهٔ {couple} kg·m² "
-        "(× ω²) باقی می‌ماند که صفحهٔ دومی باید آن را بگیرد",
+        "(× ω²) با زاویهٔ {angle} درجه باقی می‌ماند که صفحهٔ دومی باید آن را بگیرد",
+    "at {place} one plane balances the forces only: a couple of {couple} N·m at {angle}° (at "
+    "ω = {speed} rad/s) is left, for a second plane to take":
+        "یک صفحه در {place} تنها نیروها را متعادل می‌کند: کوپلی به اندازهٔ {couple} N·m با "
+        "زاویهٔ {angle} درجه (در ω = {speed} rad/s) باقی می‌ماند که صفحهٔ دومی باید آن را "
+        "بگیرد",
     "ΣF_x = ΣF_y = 0 (kg·m): the masses' forces cancel, with no resultant":
         "ΣF_x = ΣF_y = ۰ (kg·m): نیروهای جرم‌ها یکدیگر را خنثی می‌کنند و برآیندی ندارند",
     "plane {plane}: no balancing mass needed, the force polygon closes on itself (Σ mᵢrᵢ = 0)":

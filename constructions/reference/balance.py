@@ -22,10 +22,11 @@ from dataclasses import dataclass
 
 from ..balancing.rotor import Engine, Mass
 
-__all__ = ["EngineSums", "balance_product", "quadrant_angle", "resultant", "single_cylinder",
-           "engine_along", "engine_greatest_at", "engine_sums", "one_axial_plane", "open_residual",
-           "open_rotor_roots", "polygon_roots", "two_planes", "unbalanced_resultant",
-           "vee_resultants", "radial_along_lines", "radial_constants"]
+__all__ = ["EngineSums", "balance_product", "couple_about", "quadrant_angle", "resultant",
+           "single_cylinder", "engine_along", "engine_greatest_at", "engine_sums",
+           "one_axial_plane", "open_residual", "open_rotor_roots", "polygon_roots",
+           "two_planes", "unbalanced_resultant", "vee_resultants", "radial_along_lines",
+           "radial_constants"]
 
 
 def resultant(masses: tuple[Mass, ...] | list[Mass]) -> tuple[float, float]:
@@ -52,6 +53,13 @@ def two_planes(masses, a: float, b: float) -> tuple[tuple[float, float], tuple[f
     in_b = (-couple[0] / lever, -couple[1] / lever)
     sx, sy = resultant(masses)
     return (-sx - in_b[0], -sy - in_b[1]), in_b
+
+
+def couple_about(masses, z: float) -> tuple[float, float]:
+    """Σ mᵢrᵢ(zᵢ − z) e^{iθᵢ} (kg·m² vector, × ω² a couple): the masses' couple about the
+    plane at ``z``, what a static balance there leaves (its own mass adds none about it)."""
+    total = sum(complex(*m.mr) * (m.plane - z) for m in masses)
+    return total.real, total.imag
 
 
 def one_axial_plane(masses) -> tuple[tuple[float, float], float] | None:

@@ -28,6 +28,7 @@ from ..checked import Checked
 from ..solution_folder import ChapterFiles
 from ..worked_document import Bullets, Section, said_steps, title
 from .balance_figures import angle_deg, balance_figures
+from .couple_left import couple_left_checked, couple_left_line
 from .coupled_wheels import (trailing_checked, trailing_figures, trailing_lines,
                              trailing_misses, trailing_records, wheel_lines)
 from .engine_angle import at_checked, at_lines, at_misses
@@ -291,8 +292,6 @@ class BalanceSolution(ChapterFiles):
                 out.append(weight_line(p.name, mass, self._length(radius)))
         out += plane_force_lines(self)
         if len(r.planes) == 1 and len({m.plane for m in r.masses}) > 1:
-            arms = [(m, m.plane - r.planes[0].position) for m in r.masses]
-            couple = math.hypot(*(math.fsum(m.mr[i] * arm for m, arm in arms) for i in (0, 1)))
             single = one_axial_plane(r.masses)
             if single is not None:
                 v, place = single
@@ -305,11 +304,7 @@ class BalanceSolution(ChapterFiles):
                                  "moments about each mass's plane fix it)",
                                  size=numeral(math.hypot(*v)), angle=numeral(angle_deg(v), ".2f"),
                                  place=self._length(place), case=case))
-            if couple > rounding([m.mass * m.radius * (abs(m.plane) + abs(r.planes[0].position))
-                                  for m in r.masses]):
-                out.append(words("at {place} one plane balances the forces only: a couple of "
-                                 "{couple} kg·m² (× ω²) is left, for a second plane to take",
-                                 place=self._length(r.planes[0].position), couple=numeral(couple)))
+        out += couple_left_line(self)
         verdict = words("each where the vector sum puts it") if self.passed else \
             f"OFF: {', '.join(self.failures)}"
         out.append(words("polygons closed: {verdict}; the balanced rotor's residual force "
@@ -418,7 +413,7 @@ class BalanceSolution(ChapterFiles):
                                           {"value": [w + 0.0 for w in want]}, method=method)
             for p in ex.rotor.planes:
                 q |= self._balance_mass(p, method)
-            q |= plane_force_checked(self)
+            q |= plane_force_checked(self) | couple_left_checked(self)
             if ex.engine is not None:
                 q |= left_checked(self) | trailing_checked(self)
         return q
