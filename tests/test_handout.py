@@ -186,6 +186,34 @@ def test_a_cam_given_by_its_arcs_is_refused(tmp_path):
                           "yet\n")
 
 
+def test_every_bundled_sheet_is_within_its_paper():
+    """Each sheet of every bundled exercise's handout is an A4 sheet, upright or on its side,
+    or the exercise is refused in one line (a cam of arcs, an engine, a rotor with other
+    unknowns); the sheet never grows past its paper."""
+    from tarsim.constructions.errors import TarsimError
+    from tarsim.exercises.catalog import everything
+    from tarsim.exercises.handout import HANDOUTS
+
+    sheets = refused = 0
+    for name in everything():
+        ex = load(name)
+        chapter = chapter_of(ex)
+        if chapter.key not in HANDOUTS:
+            continue
+        try:
+            with speaking("en"):
+                made = handout(chapter.set_up(ex, paper="A4"), chapter)
+        except TarsimError as e:
+            assert "\n" not in str(e) and "has none yet" in str(e), name
+            refused += 1
+            continue
+        for s in made.sheets:
+            assert (s.width, s.height) in ((210.0, 297.0), (297.0, 210.0)), (name, s.width,
+                                                                              s.height)
+        sheets += len(made.sheets)
+    assert sheets >= 100 and refused <= 16      # 64 exercises have a sheet, over 2 sheets
+
+
 def test_the_command_writes_the_sheet(tmp_path):
     got = CliRunner().invoke(cli, ["handout", "four-bar", "-o", str(tmp_path), "--no-pdf"])
     assert got.exit_code == 0, got.output
