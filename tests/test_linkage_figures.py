@@ -55,3 +55,14 @@ def test_the_ground_a_wheel_rolls_on_and_its_sliders_guide_are_drawn_once(solved
         (block,) = [it.points for it in fig.items if isinstance(it, Path)
                     and it.style == "block"]
         assert max(y for _, y in block) == pytest.approx(min(heights), abs=0.01), stem
+
+
+@pytest.mark.parametrize("stem", ["V_B-radius-rotation", "V_B-parallel-line"])
+def test_a_velocity_carried_to_a_pin_is_named_for_the_pin(solved, stem):
+    """The wheel-driven slider's V_C is carried to I23, the pin A, before B's is found: the
+    arrow at A is V_A, as the reader knows the point, not V_I23."""
+    fig = solved("wheel-driven-slider").figures[stem]
+    names = [t.text + (t.sub or "") for t in fig.items if isinstance(t, Text)
+             and t.text.startswith("V") and not t.text.startswith("Velocity")]
+    assert sorted(names) == ["VA", "VB", "VC"]
+    assert not [n for n in names if _CENTRE.search(n)]

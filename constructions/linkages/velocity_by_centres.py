@@ -133,10 +133,19 @@ class _Method:
                          phrase=phrase("velocity.erect_perpendicular", at=lab_ij))
         t_tip = self.draw("tip:t", "intersect_lines", perp, tip,
                           phrase=phrase("velocity.meets_gauge_at_tip", link=i, centre=lab_ij))
-        v_t = self.draw("V:t", "join", ij, t_tip, label=vector_label(lab_ij),
+        v_t = self.draw("V:t", "join", ij, t_tip, label=vector_label(self.named(i, j)),
                         phrase=phrase("velocity.transfer_point", centre=lab_ij,
                                       speed=self.speed(ij, t_tip), i=i, j=j))
         return ij, v_t
+
+    def named(self, i: int, j: int) -> str:
+        """What the transfer point I_ij is called on the figure: the pin's own name where
+        links i and j are pinned there (V_A, not V_I23, for the pin A), else the centre's."""
+        if self.cs.centre(i, j).rule == "pin":
+            shared = [n for n in self.m.link(i).names if n in self.m.link(j).names]
+            if len(shared) == 1:
+                return shared[0]
+        return pair_label(i, j)
 
     def equal_omega(self, i: int, j: int, known: str, v_known: Ref) -> tuple[Ref, Ref]:
         """Carry the known velocity to link j when I_ij is at infinity (notes §2.5): the two
