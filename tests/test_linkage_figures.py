@@ -66,3 +66,30 @@ def test_a_velocity_carried_to_a_pin_is_named_for_the_pin(solved, stem):
              and t.text.startswith("V") and not t.text.startswith("Velocity")]
     assert sorted(names) == ["VA", "VB", "VC"]
     assert not [n for n in names if _CENTRE.search(n)]
+
+
+@pytest.mark.parametrize("exercise_id", ["hinkle-four-bar", "hinkle-slider-crank"])
+def test_every_arrow_at_the_edge_names_the_far_centre_it_runs_to(solved, exercise_id):
+    """Hinkle's I13 lies 923 mm off: the line through A and the line through B each end in
+    an arrow at the page's edge. Each is named: the text nearest its tip names a centre,
+    and every far centre is named at as many arrows as lines run to it (one arrow, the one
+    named with its distance, was all a reader could place)."""
+    from shapely.geometry import Point, box
+
+    fig = solved(exercise_id).figures["centres"]
+    heads = [it.points[0] for it in fig.items if isinstance(it, Path) and it.style == "arrowhead"]
+    tips = [min(heads, key=lambda h: math.dist(h, it.points[-1])) for it in fig.items
+            if isinstance(it, Path) and it.style == "edge_arrow"]
+    assert len(tips) >= 2
+    long = [t for t in fig.items if isinstance(t, Text) and t.text.startswith("to I")]
+    centres = {_CENTRE.search(t.text)[0] for t in long}
+    far = long + [t for t in fig.items if isinstance(t, Text) and t.text in centres]
+
+    def gap(t, tip):
+        return box(*t.box()).distance(Point(tip))
+    for tip in tips:
+        # A name within 10 mm (the long one reads on past its step badge), nearer this
+        # arrow than any other arrow at the edge.
+        mine = [t for t in far if gap(t, tip) < 10.0
+                and all(gap(t, tip) <= gap(t, other) for other in tips)]
+        assert mine, tip

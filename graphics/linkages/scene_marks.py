@@ -297,6 +297,13 @@ def _draw_far(scene: _Scene, step: Step, p: tuple[float, float], arrows: list) -
     scene.label(text, [tip, tail], [step, *riders], prefer=(ahead, ahead + math.pi / 2,
                                                             ahead - math.pi / 2),
                 gap=1.0, size=3.2, spread=math.pi / 2)
+    # Every other line running to it ends in an arrow of its own: named too, so that no
+    # arrow at the edge points nowhere and the named one is not taken for another line's.
+    for tail, tip in arrows[1:] if step.label else ():
+        ahead = math.atan2(tail[1] - tip[1], tip[0] - tail[0])
+        scene.label(name, [tip, tail], [], prefer=(ahead, ahead + math.pi / 2,
+                                                   ahead - math.pi / 2),
+                    gap=1.0, size=3.2, spread=math.pi / 2, own=tip)
     scene.placer.page = page
 
 
