@@ -187,9 +187,13 @@ def _asked(ex, worked) -> list[Line]:
         both = words(" and ").join(math_text(w) for w in wheres)
         out.append(Line(words("at {where}:", where=both), heading=True))
     sol = worked.positions[0]
+    # The centres by their names: their count may be asked (n_centres), so it is not said.
     centres = [a for a in sol.exercise.asks if isinstance(a, A.Centre)]
-    if centres:
-        out.append(Line(words("the instant centres ({n} of them)", n=numerals(str(len(centres))))))
+    if "centres" in ex.find:
+        out.append(Line(words("every instant centre")))
+    elif centres:
+        out.append(Line(words("the instant centres {names}", names=words(", ").join(
+            math_text(a.name) for a in centres))))
     out += [_ask_line(a, _methods(sol, a)) for a in sol.exercise.asks
             if a.scope == "position" and not isinstance(a, A.Centre)]
     return out

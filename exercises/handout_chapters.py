@@ -244,15 +244,18 @@ def cam_sheets(ex, sheet: tuple[float, float]) -> list[Figure]:
     s = chapter_of(ex).solve(ex)
     f, unit, metre = ex.follower, ex.length_unit, ex.metre
     top = max(s.curves[1]) if s.curves[1] else max(g.lift for g in ex.segments)
-    spans = [(words(g.kind), g.angle) for g in ex.segments]
+    # A disc turning off its centre is given as the disc: its motion and lift are answers.
+    spans = [] if ex.disc else [(words(g.kind), g.angle) for g in ex.segments]
     axes = draw_empty_displacement(words("{name}: {what}", name=ex.name,
                                          what=words("the displacement diagram to draw")),
                                    lift=top, segments=spans, per_rad=s.diagram.per_rad,
-                                   unit=unit, metre=metre)
-    circle = draw_base_circle(words("{name}: {what}", name=ex.name, what=_cam_term("base circle")),
+                                   unit=unit, metre=metre, lift_given=not ex.disc)
+    circle = draw_base_circle(words("{name}: {what}", name=ex.name, what=_cam_term("base circle")
+                                    if not ex.disc else words("the disc")),
                               base=ex.base_radius, offset=f.offset, roller=f.radius,
-                              flat=f.kind == "flat-face",
+                              flat=f.kind == "flat-faced",
                               pivot=f.pivot if f.oscillating else None, arm=f.arm,
+                              disc=tuple(v * metre for v in ex.disc) if ex.disc else None,
                               unit=unit, metre=metre)
     statement = draw_statement(_given_cam(ex) + _asked_cam(ex))
     return compose_handout(words("{name}: {what}", name=ex.name, what=words("problem sheet")),
@@ -267,7 +270,9 @@ def _given_cam(ex) -> list[Line]:
         return math_text(number(x / ex.metre)) + f" {mm}"
 
     out = [Line(words("Given"), heading=True),
-           Line(words("base circle radius {r}", r=length(ex.base_radius)))]
+           Line(words("a disc of radius {r} turning {e} off its centre",
+                      r=length(ex.disc[0] * ex.metre), e=length(ex.disc[1] * ex.metre))
+                if ex.disc else words("base circle radius {r}", r=length(ex.base_radius)))]
     said = words("follower: {kind}", kind=words(f.kind))
     if f.radius:
         said += words(", ") + words("roller radius {r}", r=length(f.radius))
@@ -282,7 +287,7 @@ def _given_cam(ex) -> list[Line]:
     out.append(Line(words("the cam turns at {speed}", speed=math_text(number(speed))
                           + f" {unit_words('rpm' if rpm else 'rad/s')} "
                           + words("cw" if ex.omega < 0 else "ccw"))))
-    for g in ex.segments:
+    for g in () if ex.disc else ex.segments:
         said = f"{words(g.kind)} {math_text(number(math.degrees(g.angle)) + '°')}"
         if g.kind != "dwell":        # an arm's lift is the swing its file gives, in degrees
             lift = (math_text(f"{number(math.degrees(g.lift / f.arm))}°") if f.oscillating

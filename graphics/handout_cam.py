@@ -20,7 +20,8 @@ DISPLACEMENT_ROOM = (165.0, 60.0)
 
 
 def draw_empty_displacement(title: str, *, lift: float, segments: Sequence[tuple[str, float]],
-                            per_rad: float, unit: str, metre: float) -> Figure:
+                            per_rad: float, unit: str, metre: float,
+                            lift_given: bool = True) -> Figure:
     """Draw the displacement diagram's axes with nothing on them: the base line over a turn,
     the cam angle every 30°, the lift axis up to the greatest lift (a dashed line across
     there), and each segment's span named ("rise 120°"), at the scales the solution's
@@ -38,6 +39,9 @@ def draw_empty_displacement(title: str, *, lift: float, segments: Sequence[tuple
         Drawing metres a radian of cam angle, as the solution's construction lays it off.
     unit, metre
         The length unit the lift is stated in, and its size in metres.
+    lift_given
+        Whether the file gives the lift (a segment's), so that the axis may state it; a
+        disc's lift is found, and the axis is drawn to hold it but not numbered.
 
     Raises
     ------
@@ -66,9 +70,10 @@ def draw_empty_displacement(title: str, *, lift: float, segments: Sequence[tuple
     fig = Figure(0.0, 0.0, title=title)
     fig.add(Path(((0.0, 0.0), (right, 0.0)), "link"))
     fig.add(Path(((0.0, 0.0), (0.0, -top - 4.0)), "dimension"))
-    fig.add(Path(((0.0, -top), (right, -top)), "reference"))
-    fig.add(Text((-1.5, -top), numerals(f"{lift / metre:g}") + f" {unit_words(unit)}", 2.8,
-                 "end", False))
+    if lift_given:
+        fig.add(Path(((0.0, -top), (right, -top)), "reference"))
+        fig.add(Text((-1.5, -top), numerals(f"{lift / metre:g}") + f" {unit_words(unit)}",
+                     2.8, "end", False))
     for deg in range(0, 361, 30):
         x = math.radians(deg) * per_rad * k
         fig.add(Path(((x, 0.0), (x, 1.5)), "dimension"))
@@ -91,12 +96,14 @@ def draw_empty_displacement(title: str, *, lift: float, segments: Sequence[tuple
 
 def draw_base_circle(title: str, *, base: float, offset: float, roller: float, flat: bool,
                      pivot: tuple[float, float] | None, unit: str, metre: float,
-                     arm: float = 0.0, room: float = 110.0) -> Figure:
+                     arm: float = 0.0, disc: tuple[float, float] | None = None,
+                     room: float = 110.0) -> Figure:
     """Draw the base circle about the cam's centre O and the follower at the start of the
     turn (its line of stroke ``offset`` to the right, a roller of radius ``roller`` on the
     circle, or a flat face across its top; an oscillating ``arm`` from its pivot to the
     roller on the circle, above the line of centres), at a 1-2-5 scale that fits ``room``
-    mm. Lengths in metres.
+    mm; a ``disc`` (its radius and the distance its centre stands off the shaft) is drawn
+    itself, its centre below O, the flat face on its top. Lengths in metres.
 
     Examples
     --------
@@ -106,11 +113,16 @@ def draw_base_circle(title: str, *, base: float, offset: float, roller: float, f
     >>> round(circle.radius, 9)                # 50 mm at 1 cm = 20 mm
     25.0
     """
-    reach = max(base + 2 * roller, abs(offset) + roller, *(abs(v) for v in pivot or ())) * 1.3
+    reach = max(base + 2 * roller, abs(offset) + roller, *(abs(v) for v in pivot or ()),
+                sum(disc or ())) * 1.3
     per_cm = nice_per_cm(2 * reach / metre, room)
     k = 10.0 / (per_cm * metre)
     fig = Figure(0.0, 0.0, title=title)
-    fig.add(Circle((0.0, 0.0), base * k, "link"))
+    if disc is not None:
+        fig.add(Circle((0.0, disc[1] * k), disc[0] * k, "link"))
+        fig.add(Circle((0.0, disc[1] * k), 0.8, "dot"))
+    else:
+        fig.add(Circle((0.0, 0.0), base * k, "link"))
     fig.add(Circle((0.0, 0.0), 0.8, "dot"))
     fig.add(Text((-2.0, 3.0), "O", 3.5, "end"))
     span = reach * k
@@ -135,7 +147,8 @@ def draw_base_circle(title: str, *, base: float, offset: float, roller: float, f
         fig.add(Path(((x, -height), (x, -span)), "link"))
         if roller:
             fig.add(Circle((x, -height), roller * k, "link"))
-    draw_caption(fig, title, [words("the base circle and the follower at the start")],
+    draw_caption(fig, title, [words("the disc and the follower at the start") if disc else
+                              words("the base circle and the follower at the start")],
                  per_cm=per_cm, unit=unit)
     return fig
 

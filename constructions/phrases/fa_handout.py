@@ -16,7 +16,8 @@ WORDS: dict[str, str] = {
     "{alpha} not given: taken as 0": "{alpha} داده نشده است: صفر گرفته می‌شود",
     "at {where}:": "در {where}:",
     " and ": " و ",
-    "the instant centres ({n} of them)": "مراکز آنی ({n} مرکز)",
+    "the instant centres {names}": "مراکز آنی {names}",
+    "every instant centre": "همهٔ مراکز آنی",
     "the instant centre": "مرکز آنی",
     "the angular velocity of link {link}": "سرعت زاویه‌ای میلهٔ {link}",
     "the velocity of {point}": "سرعت نقطهٔ {point}",
@@ -94,6 +95,9 @@ WORDS: dict[str, str] = {
     "dwell": "سکون",
     "blended over {blend} of it at each end": "با {blend} آن در هر سر هموار شده",
     "in {n} divisions": "در {n} بخش",
-    "flat-face": "تخت",
+    "a disc of radius {r} turning {e} off its centre":
+        "دیسکی به شعاع {r} که با فاصلهٔ {e} از مرکزش می‌چرخد",
+    "the disc": "دیسک",
+    "the disc and the follower at the start": "دیسک و پیرو در آغاز دور",
 }
 """The problem sheet's words as Persian says them."""
