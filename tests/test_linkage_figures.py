@@ -93,3 +93,21 @@ def test_every_arrow_at_the_edge_names_the_far_centre_it_runs_to(solved, exercis
         mine = [t for t in far if gap(t, tip) < 10.0
                 and all(gap(t, tip) <= gap(t, other) for other in tips)]
         assert mine, tip
+
+
+def test_a_centres_figure_numbers_only_the_centres_found_by_kennedy(solved):
+    """Homework 3's Watt-I six-bar: 15 centres, 7 at its pins by inspection, 8 by Kennedy,
+    each from two Kennedy lines. It carried 31 circled numbers; the pins and the lines are
+    found by what they are and what they join, so the 8 Kennedy centres alone are numbered,
+    each badge beside its centre's name."""
+    from tarsim.graphics.figure import Circle
+
+    fig = solved("six-link-homework-3").figures["centres"]
+    badges = [c for c in fig.items if isinstance(c, Circle) and c.style == "badge"]
+    assert len(badges) == 8
+    names = [t for t in fig.items if isinstance(t, Text) and _CENTRE.fullmatch(t.text)]
+    for b in badges:
+        nearest = min(names, key=lambda t: math.dist(b.centre, ((t.box()[0] + t.box()[2]) / 2,
+                                                               (t.box()[1] + t.box()[3]) / 2)))
+        x0, y0, x1, y1 = nearest.box()
+        assert min(abs(b.centre[0] - x1), abs(b.centre[0] - x0)) < 4.0    # right beside it

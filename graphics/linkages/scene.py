@@ -41,6 +41,7 @@ from shapely.geometry import box
 
 from tarsim.constructions import geometry as g
 from tarsim.constructions.linkages.assembly_record import Assembly
+from tarsim.constructions.linkages.centres import Centre
 from tarsim.constructions.errors import TarsimError
 from tarsim.constructions.measures import Angle, Dimension
 from tarsim.constructions.record import Kind, Panel, Ref, Slice, Step
@@ -274,8 +275,9 @@ class _Scene(_Diagram):
         self.caption()
 
     def label(self, text: str, anchor, steps: Sequence[Step] = (), **kw) -> None:
-        """A label with the circled numbers of its steps, placed as one."""
-        numbers = [self.numbers[s.id] for s in steps if s.id in self.numbers]
+        """A label with the circled numbers of its steps that need one, placed as one."""
+        numbers = [self.numbers[s.id] for s in steps if s.id in self.numbers
+                   and _needs_number(s)]
         self.placer.place_numbered(text, anchor, numbers, **kw)
 
     def angle_arc(self, step: Step) -> tuple[tuple[float, float], float]:
@@ -310,6 +312,23 @@ class _Scene(_Diagram):
 
 
 # ----- small helpers ---------------------------------------------------------------------------
+def _needs_number(s: Step) -> bool:
+    """Whether a step's circled number helps a reader find it on the figure: a Kennedy line
+    is found by the two centres it joins and a centre found by inspection (a pin, a
+    block's guide, a contact) by the mechanism, so neither is numbered there (steps.md
+    numbers every step); a centre found by Kennedy's theorem keeps the number of the step
+    it was found at, as the order it was found in.
+
+    >>> from types import SimpleNamespace as N
+    >>> _needs_number(N(kind=Kind.KENNEDY_LINE, about=None)), _needs_number(
+    ...     N(kind=Kind.LINE, about=None))
+    (False, True)
+    """
+    if s.kind is Kind.KENNEDY_LINE:
+        return False
+    return not (isinstance(s.about, Centre) and s.about.order == 0)
+
+
 def _finite_points(s: Step) -> list[tuple[float, float]]:
     """The finite points a step puts on the page (a mechanism point is the diagram's)."""
     out = s.output
