@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import math
 import pathlib
+import re
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass, field, replace
@@ -163,11 +164,10 @@ class Text:
     def width(self) -> float:
         """Approximate advance width on paper, the subscript and tail included."""
         bold = 1.1 if self.weight == "bold" else 1.0
-        if is_rtl(self.text + self.sub + self.tail):    # each part at its own face's width
+        if is_rtl(self.text + self.sub + self.tail):    # all of it in DejaVu Sans, as set
             parts = ((self.text, self.size), (self.sub, SUB_SIZE * self.size),
                      (self.tail, self.size))
-            return sum(text_width(t, s, bold=bold > 1.0) * (1.0 if is_rtl(t) else bold)
-                       for t, s in parts)
+            return sum(_rtl_width(t, bold > 1.0) * s for t, s in parts if t)
         return bold * (text_width(self.text, self.size) + text_width(self.sub, SUB_SIZE * self.size)
                        + text_width(self.tail, self.size))
 
@@ -237,10 +237,11 @@ def _rtl_width(text: str, bold: bool) -> float:
     """Width (em) of a right-to-left label as it is drawn: its letters joined (each in the
     presentation form it takes beside its neighbours) and set in DejaVu Sans, whose
     advances are read from the font (:mod:`.sans_advances`)."""
-    from .sans_advances import ADVANCE, BOLD
+    from .sans_advances import ADVANCE, BOLD, HINTING
 
     table = BOLD if bold else ADVANCE
-    return sum(table.get(ch, 0.62) for ch in joined(text))
+    # A run of spaces is set as one, by the PDF and by a browser alike.
+    return sum(table.get(ch, 0.62) for ch in re.sub(" +", " ", joined(text))) * (1.0 + HINTING)
 
 
 def wrap_text(text: str, size: float, width: float, *, indent: str = "",
