@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from tarsim.constructions import asks as A
 from tarsim.constructions import geometry as g
@@ -123,7 +123,9 @@ def _linkage_sheets(ex, upright: tuple[float, float]) -> list[Figure]:
 
     worked = solve_worked(ex)            # read for the frames' sizes and scales, never shown
     m, sheet = ex.mechanism, paper(ex.paper)
-    given = Slice(assemble(m), ())
+    # An input given by another member's motion is drawn at ω = 1 by the solution: the sheet
+    # draws no ω it was not given (the statement gives the motion as the file does).
+    given = Slice(assemble(replace(m, drive=replace(m.drive, omega=0.0)) if m.given else m), ())
     first = worked.positions[0].work if worked.positions else worked.overall.work
     # The solution's space scale, so that a drawing on the sheet lies over its figures.
     space = (first.scales.space if first is not None
@@ -165,12 +167,40 @@ def _given(ex) -> list[Line]:
             out.append(Line(words("{point} slides on the line through {through} at {angle}",
                                   point=s.point, through=f"{math_text(_xy(s.through, m))} {mm}",
                                   angle=math_text(f"{number(angle)}°"))))
-    out.append(Line(math_text(_input_words(m))))
     d = m.drive
+    if m.given is not None:
+        out.append(Line(math_text(_input_words(replace(m, drive=replace(d, omega=0.0))))))
+        out.append(_given_rate(m))
+        return out + given_loads(ex.loads)
+    out.append(Line(math_text(_input_words(m))))
     alpha = f"α{d.link}"
     out.append(Line(math_text(f"{alpha} = {number(d.alpha)} rad/s²") if d.alpha_given
                     else words("{alpha} not given: taken as 0", alpha=math_text(alpha))))
     return out + given_loads(ex.loads)
+
+
+def _given_rate(m) -> Line:
+    """The input's motion as the file gives it, by another member's: "V_A = 1000 mm/s cw,
+    its rate of change 5000 mm/s² cw" (a point on a guide: signed along the guide)."""
+    r, u = m.given, m.units
+    turning = r.kind != "speed"          # a turning member's sense; a guide's runs along it
+    if r.kind == "omega":
+        symbol, value, per, rate_per = f"ω{r.target}", r.value, "rad/s", "rad/s²"
+        rate = r.second
+    else:
+        symbol, value = f"V_{r.target}", r.value / u.metres
+        per, rate_per = unit_words(u.length + "/s"), unit_words(u.length + "/s²")
+        rate = r.second / u.metres
+
+    def said(x: float, unit: str) -> str:
+        if not turning:
+            return math_text(number(x)) + f" {unit}"
+        return math_text(number(abs(x))) + f" {unit} " + words("ccw" if x > 0 else "cw")
+
+    text = " = " + said(value, per)
+    if r.second_given:
+        text += words(", ") + words("its rate of change {rate}", rate=said(rate, rate_per))
+    return Line(text, symbol=typeset(symbol))
 
 
 def _asked(ex, worked) -> list[Line]:

@@ -74,8 +74,12 @@ def _given_train(train) -> list[Line]:
             said += f" ({words(g.name)})"
         if g.number not in implied and g.teeth:
             said += ": " + math_text(f"N{g.number} = {g.teeth}")
-        if g.module:
+        if g.circular_pitch:             # its module follows from it: not said
+            said += words(", ") + math_text(f"p = {number(g.circular_pitch * 1e3)}") + " mm"
+        elif g.module:
             said += words(", ") + math_text(f"m = {number(g.module * 1e3)}") + " mm"
+        if g.diameter:
+            said += words(", ") + math_text(f"d = {number(g.diameter * 1e3)}") + " mm"
         if g.carrier:
             said += words(", ") + words("on arm {arm}", arm=numerals(str(g.carrier)))
         out.append(Line(said))
@@ -91,11 +95,25 @@ def _given_train(train) -> list[Line]:
                               + (f" ({words('internal')})" if m.internal else "")
                               for m in train.meshes)
     out.append(Line(words("meshes: {meshes}", meshes=meshes)))
-    if train.speed_given and train.input_speed is not None:
-        sense = words("ccw" if train.input_speed > 0 else "cw")
+    for m in train.meshes:
+        if m.distance or m.about:
+            out.append(Line(words("gears {a} and {b} {d} apart", a=numerals(str(m.a)),
+                                  b=numerals(str(m.b)), d=math_text(number(
+                                      float(m.distance or m.about) * 1e3)) + " mm")
+                            + (" " + words("(about)") if m.about else "")))
+    turning = [(train.input_member, train.input_speed)] if (
+        train.speed_given and train.input_speed is not None) else []
+    for member, speed in turning + ([train.second] if train.second else []):
+        sense = words("ccw" if speed > 0 else "cw")
         out.append(Line(words("member {member} turns at {speed}", member=numerals(
-            str(train.input_member)), speed=math_text(number(abs(float(train.input_speed))))
+            str(member)), speed=math_text(number(abs(float(speed))))
             + f" {unit_words(train.units.speed)} {sense}")))
+    if train.input_power:
+        out.append(Line(math_text(f"P = {number(train.input_power / 1e3)}") + " kW"))
+    if train.input_torque:
+        out.append(Line(math_text(f"T = {number(float(train.input_torque))}") + " N·m"))
+    if train.efficiency != 1:
+        out.append(Line(math_text(f"η = {number(float(train.efficiency))}")))
     return out
 
 

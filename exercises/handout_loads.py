@@ -59,9 +59,8 @@ def given_loads(loads) -> list[Line]:
                      size=math_text(number(size)))
         if f.resist:
             said += " " + words("against the motion")
-        elif f.force != (0.0, 0.0):
-            said += " " + words("at {angle}", angle=math_text(
-                f"{number(math.degrees(math.atan2(f.force[1], f.force[0])))}°"))
+        elif f.force != (0.0, 0.0):      # as the file gives it: its components
+            said += " " + math_text(f"({number(f.force[0])}, {number(f.force[1])}) N")
         out.append(Line(said))
     for c in loads.couples:
         out.append(Line(words("a couple on link {link}: {moment} N·m", link=math_text(str(c.link)),

@@ -100,7 +100,8 @@ def _answers_on(svg: str, results: dict, given: set[float], *, ticks: bool = Tru
 
 
 @pytest.mark.parametrize("lang", ["en", "fa"])
-@pytest.mark.parametrize("name", ["crank-shaper", "four-bar", "crank-shaper-forces"])
+@pytest.mark.parametrize("name", ["crank-shaper", "four-bar", "crank-shaper-forces",
+                                  "crank-pin-speed"])
 def test_the_sheet_holds_the_data_and_the_asks_and_no_answer(name, lang):
     ex, sheet = _sheet(name, lang)
     svg = to_svg(sheet.figure)
@@ -133,6 +134,16 @@ def test_the_sheet_holds_the_data_and_the_asks_and_no_answer(name, lang):
         results = solve_worked(ex).results
     found = _answers_on(svg, results, given)
     assert not found, f"answers on {name}'s sheet: {sorted(found)}"
+
+
+def test_an_input_given_by_a_points_speed_is_given_so_and_no_omega_drawn():
+    """The solution draws a crank driven by its pin's speed at ω2 = 1 rad/s and scales the
+    polygons after: the sheet gives V_A as the file does and draws no ω2 it was not given."""
+    _, sheet = _sheet("crank-pin-speed", "en")
+    texts = _texts(to_svg(sheet.figure))
+    assert " = 1000 mm/s cw, its rate of change 5000 mm/s² cw" in texts
+    assert not [t for t in texts if "ω₂" in t]
+    assert ("V", "A") in {(t.text, t.sub) for t in sheet.figure.items if hasattr(t, "sub")}
 
 
 def test_the_frames_are_at_the_stated_scale_and_hold_the_polygon():

@@ -65,6 +65,9 @@ WORDS: dict[str, str] = {
     "meshes: {meshes}": "درگیری‌ها: {meshes}",
     "member {member} turns at {speed}": "عضو {member} با سرعت {speed} می‌چرخد",
     "gears {gears} on one shaft": "چرخ‌دنده‌های {gears} روی یک محور",
+    "gears {a} and {b} {d} apart": "چرخ‌دنده‌های {a} و {b} به فاصلهٔ {d} از هم",
+    "(about)": "(تقریبی)",
+    "its rate of change {rate}": "آهنگ تغییر آن {rate}",
     # a rotor's
     "mass {name}: {mass} kg at {radius}, {angle}, plane at {plane}":
         "جرم {name}: {mass} kg در شعاع {radius}، زاویهٔ {angle}، صفحه در {plane}",
