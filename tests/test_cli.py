@@ -160,7 +160,8 @@ def test_bad_file_is_one_line_with_file_and_line(mech_file, tmp_path, edit, mess
                         "sun-and-planet, "
                         "teeth-implied, two-planets-listed, two-speeds-arm-and-sun, "
                         "base-circle-for-pressure-angle, circular-arc-flat-face, "
-                        "eccentric-flat-face, offset-knife-edge, "
+                        "eccentric-flat-face, knife-edge-acceleration-ratio, "
+                        "offset-knife-edge, "
                         "oscillating-roller, roller-harmonic-cycloidal, tangent-cam-roller, "
                         "valve-unequal-acceleration, bearing-forces, coupled-locomotive, "
                         "four-mass-shaft, "
@@ -310,7 +311,7 @@ def test_list_shows_the_bundled_examples():
                    "teeth-implied",
                    "two-planets-listed", "two-speeds-arm-and-sun",
                    "base-circle-for-pressure-angle", "circular-arc-flat-face",
-                   "eccentric-flat-face", "offset-knife-edge",
+                   "eccentric-flat-face", "knife-edge-acceleration-ratio", "offset-knife-edge",
                    "oscillating-roller", "roller-harmonic-cycloidal", "tangent-cam-roller",
                    "valve-unequal-acceleration", "bearing-forces", "coupled-locomotive",
                    "four-mass-shaft",
