@@ -172,9 +172,11 @@ def test_bad_file_is_one_line_with_file_and_line(mech_file, tmp_path, edit, mess
                         "single-cylinder, static-balance-couple-left, "
                         "three-masses-between, two-stroke-four, unknown-angles, "
                         "unknown-plane-and-angle, unknown-planes, v-twin, weights-one-plane, "
-                        "engine-harmonic-torque, "
+                        "engine-harmonic-torque, flywheel-between-speeds, "
+                        "four-stroke-triangles, "
                         "petrol-engine-areas, punch-sheared-area, punching-press, "
-                        "single-cylinder-table, rod-equivalent-masses\n"),
+                        "single-cylinder-table, steam-engine-energy-coefficient, "
+                        "three-cylinder-triangles, rod-equivalent-masses\n"),
     ("missing.toml", "Error: no such file 'missing.toml'\n"),
 ])
 def test_unknown_source_is_one_line(source, message):
@@ -323,9 +325,10 @@ def test_list_shows_the_bundled_examples():
                    "three-masses-between", "two-stroke-four", "unknown-angles",
                    "unknown-plane-and-angle", "unknown-planes", "v-twin",
                    "weights-one-plane",
-                   "engine-harmonic-torque",
+                   "engine-harmonic-torque", "flywheel-between-speeds", "four-stroke-triangles",
                    "petrol-engine-areas", "punch-sheared-area", "punching-press",
-                   "single-cylinder-table", "rod-equivalent-masses"]
+                   "single-cylinder-table", "steam-engine-energy-coefficient",
+                   "three-cylinder-triangles", "rod-equivalent-masses"]
     assert "Four-bar crank-rocker" in result.stdout
 
 

@@ -151,15 +151,20 @@ def test_four_stroke_triangles():
 
 
 def test_three_cylinder_triangles():
-    """The bundled three-cylinder engine: 0 at 0°, 150 at 90°, 0 at 180°, none on the
-    return, 120° apart: 100 N·m with a triangle to 150 N·m between 60° and 120°, T_mean =
-    112.5, ΔE = ½·(π/4)·37.5 = 75π/16, α max = 37.5/0.288; phases = [0, 120, 240] and a
-    formula's cylinders give the same."""
+    """The bundled three-cylinder engine: 0 at 0°, 150 at 75°, 0 at 180°, none on the
+    return, 120° apart: each third of a turn the sum runs 600/7 + 4θ/7 to 120 at 60°, 2θ to
+    150 at 75°, 150·(180 − θ)/105 back to 600/7 at 120°; T_mean = 3·(½·180·150)/360 =
+    112.5 crosses it at 46.875° and 101.25°, and the area above, three trapezoids (0, 7.5,
+    37.5, 0 N·m at 46.875°, 60°, 75°, 101.25°), is ΔE = 878.90625° N·m; α max = 37.5/0.288,
+    the greatest retardation (112.5 − 600/7)/0.288; phases = [0, 120, 240] give the same."""
     ex = load("three-cylinder-triangles")
     q = _q(ex)
     assert q["mean_torque"] == pytest.approx(112.5, rel=EXACT)
-    assert q["delta_E"] == pytest.approx(75 * math.pi / 16, rel=EXACT)
+    above = 13.125 * 7.5 / 2 + 15 * (7.5 + 37.5) / 2 + 26.25 * 37.5 / 2
+    assert above == 878.90625
+    assert q["delta_E"] == pytest.approx(math.radians(above), rel=EXACT)
     assert q["greatest_acceleration"] == pytest.approx(37.5 / 0.288, rel=EXACT)
+    assert q["greatest_retardation"] == pytest.approx((112.5 - 600 / 7) / 0.288, rel=EXACT)
     text = (HERE.parent.parent / "exercises" / "catalog" / "flywheel" /
             "three-cylinder-triangles.toml").read_text(encoding="utf-8")
     phased = parse_flywheel(text.replace("cylinders = 3", "phases = [0, 120, 240]"), "p.toml")
