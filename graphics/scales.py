@@ -68,8 +68,13 @@ def scale_text(per_cm: float, unit: str) -> str:
 
 def _statement(paper_cm: str, amount: float, unit: str) -> str:
     """"k cm = N unit" in the language being spoken (the amount in its digits)."""
-    return (f"{numerals(paper_cm)} {unit_words('cm')} = {numerals(number_text(amount))} "
-            f"{unit_words(unit)}")
+    return (f"{numerals(paper_cm)} {unit_words('cm')} = {numerals(number_text(amount))}"
+            f"{_after(unit)}")
+
+
+def _after(unit: str) -> str:
+    """A unit as it follows its number: after a space, the degree sign set close ("30°")."""
+    return unit if unit == "°" else f" {unit_words(unit)}"
 
 
 def _bar(per_cm: float, unit: str) -> tuple[int, float, str]:
@@ -106,7 +111,7 @@ def draw_scale_bar(fig: Figure, at: tuple[float, float], per_cm: float, unit: st
         fig.add(Path(((xa, y0 - h / 2), (xb, y0 - h / 2), (xb, y0 + h / 2), (xa, y0 + h / 2)),
                      style, closed=True))
     for i in ticks:
-        label = numerals(number_text(per_cm * i)) + (f" {unit_words(unit)}" if i == cm else "")
+        label = numerals(number_text(per_cm * i)) + (_after(unit) if i == cm else "")
         fig.add(Text((x0 + 10.0 * i, y0 + h / 2 + 2.4), label, size=2.6,
                      anchor="middle" if i < cm else "start", italic=False))
     return 10.0 * cm
