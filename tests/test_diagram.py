@@ -192,7 +192,8 @@ def test_trailing_digits_are_subscripts():
 def test_caption_states_name_input_and_scale(drawn):
     m = drawn.mech
     texts = drawn.texts
-    assert m.name in texts
+    # the name stands whole, or wrapped to the sheet at its spaces, line after line
+    assert m.name in texts or m.name in " ".join(texts)
     (params,) = [t for t in texts if t.startswith("θ₂ = ")]
     d = m.drive
     # ω in the file's unit: rad/s, or rpm (60 / 2π of them to the rad/s)

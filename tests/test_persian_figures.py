@@ -186,8 +186,9 @@ def test_the_ezafe_survives_the_pdf_routes_shaping():
     assert unicodedata.name(shown[mark + 1]).startswith("ARABIC LETTER HEH")   # its letter
 
 
-LATIN_ALLOWED = {"rad", "rpm", "tan", "rel"}
-"""Latin words a Persian figure keeps: unit symbols and formulas' own (tan φ, v_rel)."""
+LATIN_ALLOWED = {"rad", "rpm", "tan", "rel", "Fij", "Tij", "Fik", "Mik", "Mfij"}
+"""Latin words a Persian figure keeps: unit symbols, formulas' own (tan φ, v_rel), and the
+force key's general symbols F_ij, T_ij, F_ik, M_ik and M_f,ij (a letter, its subscripts)."""
 
 
 @pytest.mark.slow

