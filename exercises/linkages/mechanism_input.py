@@ -6,7 +6,9 @@ point of the input link itself (ω·r about its pivot, in the sense given), or a
 ω (:class:`~tarsim.constructions.model.GivenRate`). An engine's crank angle may be given as
 the books give it, from a dead centre (``from = "t.d.c."``): turned that far, in the sense
 ω turns, from the crank lying along the line of stroke toward the piston (or away from it,
-the outer or bottom dead centre).
+the outer or bottom dead centre). A crank between two frame pivots, as a slotted lever's, may
+be turned from its line of centres (``from = "line of centres produced"``, the books' "OC
+produced": the crank beyond its pivot, away from the other).
 """
 
 from __future__ import annotations
@@ -40,7 +42,8 @@ def read_input(r: TableReader) -> Drive:
     r.angle_from = None
     if "from" in t:
         turned = r.number(t["angle"], "angle", bounded=False, key="angle", **where)
-        r.angle_from = _dead_centre(r, t, link, where)
+        r.angle_from = (_line_of_centres if _said(t) in LINES_OF_CENTRES
+                        else _dead_centre)(r, t, link, where)
         angle = file_angle(r.angle_from, turned, r.units.angle)
     r.given = _read_given(r, t, link, where)
     if r.given is not None:
@@ -128,6 +131,48 @@ DEAD_CENTRES = {**dict.fromkeys(("t.d.c.", "tdc", "i.d.c.", "idc", "top dead cen
 toward the piston (the top or inner), or away from it (the bottom or outer)."""
 
 
+LINES_OF_CENTRES = {**dict.fromkeys(("line of centres", "line of centers"), math.pi),
+                    **dict.fromkeys(("line of centres produced", "line of centers produced"),
+                                    0.0)}
+"""The directions along the line of centres a crank angle may be given from: toward the
+other frame pivot, or produced beyond the crank's own pivot, away from it (the books' "OC
+produced", O the other pivot and C the crank's)."""
+
+
+def _said(t: dict) -> str | None:
+    """``t["from"]`` as a key of :data:`DEAD_CENTRES` or :data:`LINES_OF_CENTRES`."""
+    said = t.get("from")
+    return said.strip().lower() if isinstance(said, str) else None
+
+
+def _sense(t: dict) -> float:
+    """The sense ω turns, +1 counter-clockwise unless [input] gives ω as a negative number."""
+    omega = t.get("omega", 0.0)
+    omega = omega.get("value", 0.0) if isinstance(omega, dict) else omega
+    return -1.0 if isinstance(omega, (int, float)) and omega < 0 else 1.0
+
+
+def _line_of_centres(r: TableReader, t: dict, link: int,
+                     where: dict) -> tuple[float, float, str]:
+    """The line of centres ``t["from"]`` names, as :func:`_dead_centre` gives a dead centre:
+    the line from the crank's frame pivot to the one other frame point a moving link turns
+    about (a slotted lever's fulcrum), toward it or produced away from it."""
+    pivots = [n for n in r.links[link].names if n in r.links[1].names]
+    others = sorted({n for k, lk in r.links.items() if k not in (1, link) for n in lk.names
+                     if n in r.links[1].names} - set(pivots))
+    if len(pivots) != 1 or len(others) != 1:
+        raise r.fail(f"a line of centres joins the crank's pivot to one other: link {link} "
+                     f"turns about {', '.join(pivots) or 'none'}, the others about "
+                     f"{', '.join(others) or 'none'}; give the angle from +x",
+                     key="from", **where)
+    (cx, cy), (ox, oy) = r.links[1].local(pivots[0]), r.links[1].local(others[0])
+    # in degrees, the line's angle to the rounding of its direction, so 90° − 120° is −30°
+    toward = math.degrees(math.atan2(cy - oy, cx - ox))
+    toward = round(toward, 9) if abs(toward - round(toward, 9)) < 1e-12 else toward
+    said = t["from"].strip()
+    return toward + math.degrees(LINES_OF_CENTRES[_said(t)]), _sense(t), said
+
+
 def file_angle(angle_from: tuple[float, float, str] | None, turned: float, unit: str) -> float:
     """An input angle as the file gives it (in ``unit``, "deg" or "rad") as the crank's
     angle from +x (rad): turned from the dead centre ``angle_from`` names in the sense the
@@ -146,10 +191,10 @@ def _dead_centre(r: TableReader, t: dict, link: int, where: dict) -> tuple[float
     through the crank's pivot, toward the piston as [assembly] places it ("forward" along
     the slider's angle, "backward" against it)."""
     said = t["from"]
-    if not isinstance(said, str) or said.strip().lower() not in DEAD_CENTRES:
-        raise r.fail(f"from names the dead centre the angle is turned from, \"t.d.c.\" (or "
-                     f"\"i.d.c.\", the crank toward the piston) or \"b.d.c.\" (\"o.d.c.\"); "
-                     f"got {said!r:.40}", key="from", **where)
+    if _said(t) not in DEAD_CENTRES:
+        raise r.fail(f"from names where the angle is turned from, \"t.d.c.\" (or \"i.d.c.\", "
+                     f"the crank toward the piston), \"b.d.c.\" (\"o.d.c.\") or \"line of "
+                     f"centres (produced)\"; got {said!r:.40}", key="from", **where)
     guides = [s for s in r.slides if s.guide_link == 1 and s.contact is None]
     pivots = [n for n in r.links[link].names if n in r.links[1].names]
     if len(guides) != 1 or not pivots:
@@ -163,7 +208,8 @@ def _dead_centre(r: TableReader, t: dict, link: int, where: dict) -> tuple[float
     if off > 1e-9 * size:
         raise r.fail(f"the line of stroke passes {off / r.units.metres:.6g} {r.units.length} "
                      f"from the crank's pivot {pivots[0]}: its dead centres are not along it, "
-                     f"so give the angle from +x", key="from", **where)
+                     f"so give the angle from +x (or from its \"line of centres\")",
+                     key="from", **where)
     branch = (r.d.get("assembly") or {}).get(s.point, "forward")
     if isinstance(branch, list) and len(branch) == 2:
         near = [r.number(v, "a near point's coordinate", key="from", **where) * r.units.metres
@@ -171,9 +217,7 @@ def _dead_centre(r: TableReader, t: dict, link: int, where: dict) -> tuple[float
         back = (near[0] - ox) * dx + (near[1] - oy) * dy < 0
     else:
         back = branch == "backward"
-    omega = t.get("omega", 0.0)
-    omega = omega.get("value", 0.0) if isinstance(omega, dict) else omega
-    sense = -1.0 if isinstance(omega, (int, float)) and omega < 0 else 1.0
+    sense = _sense(t)
     # in degrees, the line's angle to the rounding of its direction, so 90° − 40° is 50°
     toward = math.degrees(math.atan2(dy, dx))
     toward = round(toward, 9) if abs(toward - round(toward, 9)) < 1e-12 else toward
