@@ -170,6 +170,10 @@ WORDS: dict[str, str] = {
         "با وزن آن، W = m·g، داده می‌شود",
     "the balance weight in plane {plane}: {weight} N at {radius}":
         "وزن متعادل‌کننده در صفحهٔ {plane}: {weight} N در شعاع {radius}",
+    "mass {name} is a solid disc of density {density} kg/m³, {diameter} in diameter and "
+    "{thickness} thick: m = ρ·πd²/4·t = {mass} kg":
+        "جرم {name} دیسکی توپر با چگالی {density} kg/m³، قطر {diameter} و ضخامت {thickness} "
+        "است: m = ρ·πd²/4·t = {mass} kg",
     "the out-of-balance force on a bearing in plane {plane}: m·r·ω² = {force} N at "
     "{angle}° (ω = {speed} rad/s)":
         "نیروی نامیزان روی یاتاقانی در صفحهٔ {plane}: m·r·ω² = {force} N با زاویهٔ "

@@ -42,6 +42,7 @@ from .open_rotor_solution import open_checked, open_lines, open_misses
 from .rotor_unbalance import (unbalance, unbalance_checked, unbalance_lines,
                               unbalance_misses)
 from .rotor_file import BalanceExercise
+from .rotor_discs import disc_lines
 from .rotor_weights import weight_checked, weight_line, weights_line
 from .bearing_forces import (bearing_checked, bearing_lines, bearing_misses,
                              plane_force_checked, plane_force_lines)
@@ -258,10 +259,12 @@ class BalanceSolution(ChapterFiles):
         if self.unbalance is not None:
             verdict = words("each where the vector sum puts it") if self.passed else \
                 f"OFF: {', '.join(self.failures)}"
-            return unbalance_lines(r, self.unbalance, self._length) + bearing_lines(
+            return disc_lines(self.exercise.discs, self._length) + unbalance_lines(
+                r, self.unbalance, self._length) + bearing_lines(
                 r, self.unbalance, self._length) + [
                 words("polygons closed: {verdict}", verdict=verdict)]
-        out = [weights_line()] if self.exercise.weights else []
+        out = disc_lines(self.exercise.discs, self._length)
+        out += [weights_line()] if self.exercise.weights else []
         noise = rounding([m.mass * m.radius for m in r.masses])
         x, y = (_quiet(v, noise) for v in resultant(r.masses))
         if x == y == 0.0:

@@ -26,6 +26,7 @@ from .locomotive_file import engine_speed, read_wheel
 from .one_crank_file import read_radial, read_vee
 from .engine_wheels import read_coupled, wheel_rotors
 from .open_rotor_file import UNKNOWN, read_open_rotor
+from .rotor_discs import Disc, read_disc, refuse_discs
 from .rotor_weights import GRAVITY, mass_or_weight, refuse_weights
 from .unused_settings import refuse_idle_wheel, refuse_unused
 
@@ -40,7 +41,8 @@ _NAME = re.compile(rf"^[^\s\x00-\x1f\x7f-\x9f\u202a-\u202e\u2066-\u2069]{{1,{_NA
 _UNITS = ("length", "speed")
 """The units a balancing file states; masses are always kg and weights N."""
 _KEYS = {"rotor": ("speed", "about", "bearings", "angles"),
-         "mass": ("name", "mass", "weight", "radius", "angle", "plane", "between", "wheels"),
+         "mass": ("name", "mass", "weight", "density", "diameter", "thickness", "radius", "angle",
+                  "plane", "between", "wheels"),
          "balance": ("name", "plane", "radius", "mass", "weight"),
          "engine": ("speed", "crank", "stroke", "rod", "reciprocating", "balanced", "at",
                     "revolving", "balance_radius", "balance_mass", "firing_order", "strokes",
@@ -73,6 +75,8 @@ class BalanceExercise:
     """The rotor's or engine's name in other languages (``[names]``, :mod:`.names`)."""
     weights: bool = False
     """The file gives its masses as weights in N (:mod:`.rotor_weights`)."""
+    discs: tuple[Disc, ...] = ()
+    """The masses the file gives as solid discs, by density and size (:mod:`.rotor_discs`)."""
     clockwise: bool = False
     """The file measures its angles clockwise (``[rotor] angles = "cw"``), as some books do.
     The rotor is then solved as its mirror image, in which every angle given and found reads
@@ -113,6 +117,7 @@ def parse_balance(text: str, filename: str = "<string>", exercise_id: str = "rot
                   names=read_names(data, t.where, filename), clockwise=_clockwise(t))
     if "engine" in data:
         refuse_weights(t, "in an engine's file")
+        refuse_discs(t, "in an engine's file")
         engine, primary = _engine(t, metre)
         driving, trailing = (None, None) if primary else wheel_rotors(
             t, _one(t, "engine"), engine, metre, lambda: _planes(t, metre),
@@ -121,12 +126,14 @@ def parse_balance(text: str, filename: str = "<string>", exercise_id: str = "rot
                                **common)
     if any(v == UNKNOWN for m in t.entries("mass") for v in m.values()):
         refuse_weights(t, "where the masses hold unknowns")
+        refuse_discs(t, "where the masses hold unknowns")
         refuse_unused(t, "open")
         return BalanceExercise(open=read_open_rotor(
             t, metre, _speed(t, "rotor", needed=False),
             lambda e, i: _name(t, e, "mass", i, str(i + 1), "mass")), **common)
     refuse_unused(t, "rotor")
-    masses = _masses(t, metre, length)
+    discs: list[Disc] = []
+    masses = _masses(t, metre, length, discs)
     planes = _planes(t, metre) if t.entries("balance") else []
     taken = {m.name: f"mass {m.name}" for m in masses}
     for i, p in enumerate(planes):
@@ -140,7 +147,7 @@ def parse_balance(text: str, filename: str = "<string>", exercise_id: str = "rot
     return BalanceExercise(rotor=Rotor(tuple(masses), tuple(planes), speed,
                                        _about(t, planes, metre),
                                        _bearings(t, planes, metre, taken)),
-                           weights=weights, **common)
+                           weights=weights, discs=tuple(discs), **common)
 
 
 def _about(t: Tables, planes: list, metre: float) -> float | None:
@@ -254,7 +261,8 @@ def _name(t: Tables, entry: dict, table: str, i: int, default: str, what: str) -
     return v
 
 
-def _masses(t: Tables, metre: float, length: str) -> list[Mass]:
+def _masses(t: Tables, metre: float, length: str, discs: list[Disc]) -> list[Mass]:
+    """The rotor's masses; each given as a disc is added to ``discs`` too."""
     masses: list[Mass] = []
     for i, entry in enumerate(t.entries("mass")):
         name = _name(t, entry, "mass", i, str(i + 1), "mass")
@@ -264,7 +272,11 @@ def _masses(t: Tables, metre: float, length: str) -> list[Mass]:
         if "between" in entry:
             raise t.fail(f"mass {name}'s between chooses where an unknown angle comes out: give "
                          'its angle = "?", or leave between out', "mass", "between", i)
-        m, weight = mass_or_weight(t, entry, "mass", i, f"mass {name}")
+        disc = read_disc(t, entry, i, name, metre)
+        if disc is not None:
+            discs.append(disc)
+        m, weight = (disc.mass, False) if disc else mass_or_weight(t, entry, "mass", i,
+                                                                   f"mass {name}")
         r = t.number(entry, "radius", "mass", f"mass {name}'s radius", i)
         if not m > 0 or not r > 0:
             what = "weight" if weight else "mass"
