@@ -30,6 +30,16 @@ PHRASES: dict[str, str] = {
                        "{rpm}{w} = {value} W.",
     "gears.holding_two": "Member {fixed} takes the rest: T{fixed} = −(T{i} + T{o}) = {value} "
                          "N·m.",
+    "gears.road_car": "The car runs at v = {kmh} km/h = {v} m/s round a curve of mean radius "
+                      "R = {R} {unit}, its track t = {t} {unit} and its road wheels {d} {unit} "
+                      "across (r = {r} m): it turns about the curve's centre at v/R, so a road "
+                      "wheel whose path has radius ρ rolls at v·ρ/R.",
+    "gears.road_outer": "The outer road wheel, on member {n}, runs round R + t/2 = {path} "
+                        "{unit}: ω{n} = v·(R + t/2)/(R·r) {about}{w} {speed} {sense}, the first "
+                        "given speed.",
+    "gears.road_inner": "The inner road wheel, on member {n}, runs round R − t/2 = {path} "
+                        "{unit}: ω{n} = v·(R − t/2)/(R·r) {about}{w} {speed} {sense}, the second "
+                        "given speed.",
     "gears.teeth_diameter": "Gear {n}'s teeth from its pitch diameter and module: N{n} = d/m "
                             "= {d}/{m} = {teeth}.",
     "gears.teeth_distance": "Gear {n}'s teeth from its pair's centre distance and module, "

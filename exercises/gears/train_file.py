@@ -33,7 +33,7 @@ from .train_teeth import TeethTables
 __all__ = ["TrainExercise", "parse_train"]
 
 _TOP = ("name", "names", "source", "description", "fixed", "efficiency", "coaxial", "ratio",
-        "units", "gear", "arm", "mesh", "shaft", "input", "involute", "ask")
+        "units", "gear", "arm", "mesh", "shaft", "input", "road", "involute", "ask")
 MESH_ASKS = ("contact_ratio", "path_of_contact", "arc_of_contact", "pressure_angle",
              "circular_pitch", "interference", "least_teeth")
 """What the involute mesh answers (with ``[involute]``)."""
@@ -95,6 +95,7 @@ class _Reader(InputTables, MeshTables, TeethTables):
         self.data, self.where, self.filename, self.id = data, where, filename, eid
         self.sized_teeth: list[Phrase] = []      # the steps that found teeth by N = d/m
         self.from_diameter: list[int] = []
+        self.road_said: list[Phrase] = []        # the road wheels' speeds from [road]
 
     def fail(self, message: str, table: str | None = None, key: str | None = None,
              index: int = 0) -> InputError:
@@ -129,7 +130,7 @@ class _Reader(InputTables, MeshTables, TeethTables):
             listed = train
             train, twins, said = fold_twins(train, isinstance(arm_table, dict)
                                             and "planets" in arm_table)
-            train = replace(train, implied=(*train.implied, *said))
+            train = replace(train, implied=(*self.road_said, *train.implied, *said))
             train.check()
         except InputError as e:
             raise self.placed(e) from None

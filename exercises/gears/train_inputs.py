@@ -1,5 +1,6 @@
 """The given speeds and loads of a gear-train file: ``[input]`` (or two ``[[input]]``
-tables), the input's torque or power, and the train's efficiency; read by
+tables, or a car's ``[road]``, :mod:`.road_wheels`), the input's torque or power, and the
+train's efficiency; read by
 :class:`~.train_file._Reader`, whose ``fail``, ``integer``, ``exact`` and ``known`` they
 use."""
 
@@ -9,6 +10,7 @@ from fractions import Fraction
 from typing import Any
 
 from tarsim.constructions.gears.train import SpeedUnits
+from .road_wheels import RoadTables
 
 __all__ = ["InputTables"]
 
@@ -16,7 +18,7 @@ _POWERS = {"W": 1, "kW": 1000}
 """The power units a file may state, in W."""
 
 
-class InputTables:
+class InputTables(RoadTables):
     """The reader's part for the given speeds and loads."""
 
     def inputs(self, units: SpeedUnits) -> tuple[int, Fraction | None,
@@ -24,7 +26,11 @@ class InputTables:
         """The given speeds: ``[input]``, or two ``[[input]]`` tables where no member is
         fixed (the arm and a gear both turning; a sun and a ring both driven). The first
         is the input (its torque or power, if any); the second, if any, as (member,
-        speed)."""
+        speed). A ``[road]`` gives the two road wheels' as the two."""
+        if "road" in self.data:
+            given = self.road(units)
+            self.data["input"] = {}             # no load: the wheels' speeds alone
+            return given
         raw = self.data.get("input")
         if isinstance(raw, list):
             if not 1 <= len(raw) <= 2:
@@ -56,7 +62,7 @@ class InputTables:
                             index=index)
         member = self.integer(t["member"], "the input member", "input", "member", index)
         if "speed" not in t:
-            self.known(t, ("member", "sense", "torque", "power"), "input", index)
+            self.known(t, ("member", "speed", "sense", "torque", "power"), "input", index)
             return member, None
         speed = self.exact(t["speed"], "the input speed", "input", "speed", index)
         sense = t.get("sense", "ccw")
