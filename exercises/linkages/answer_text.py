@@ -130,6 +130,8 @@ def show(v: dict, units, name: str = "", figures: int = 6) -> str:
             "rad/s²" if name == "flywheel_alpha" else "N"
         # a moment is signed as T2 is, CCW +, and says its sense the same way
         sense = _sense(v["value"]) if name in MOMENTS else ""
+        if name == "reversal_speed":                    # a speed, with the books' rpm
+            sense = f" ({_num(v['value'] * 60 / math.tau, spec)} rpm)"
         return f"{_num(v['value'], spec)} {unit}{sense}"
     if "vector" in v:
         per = "/s²" if name.startswith("A") else "/s"     # A_B, A_cor_B, An_B/A, A_slide_B

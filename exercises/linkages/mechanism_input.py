@@ -192,8 +192,8 @@ def _dead_centre(r: TableReader, t: dict, link: int, where: dict) -> tuple[float
     the slider's angle, "backward" against it)."""
     said = t["from"]
     if _said(t) not in DEAD_CENTRES:
-        raise r.fail(f"from names where the angle is turned from, \"t.d.c.\" (or \"i.d.c.\", "
-                     f"the crank toward the piston), \"b.d.c.\" (\"o.d.c.\") or \"line of "
+        raise r.fail(f"from names the dead centre the angle is turned from, \"t.d.c.\" (or "
+                     f"\"i.d.c.\", the crank toward the piston) or \"b.d.c.\", or a \"line of "
                      f"centres (produced)\"; got {said!r:.40}", key="from", **where)
     guides = [s for s in r.slides if s.guide_link == 1 and s.contact is None]
     pivots = [n for n in r.links[link].names if n in r.links[1].names]

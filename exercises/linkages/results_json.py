@@ -56,10 +56,17 @@ def _position(s: Solution) -> dict[str, Any]:
         **({"turned_from_dead_centre": {"value": s.position.turned[0], "unit": "rad",
                                         "from": s.position.turned[1]}}
            if s.position and s.position.turned else {}),
-        "quantities": {name: checked(q, s.exercise.mechanism).entry()
+        "quantities": {name: _with_rpm(name, checked(q, s.exercise.mechanism).entry())
                        for name, q in s.quantities.items()},
         "notes": s.notes_in("en"),            # data, not prose: one language
     }
+
+
+def _with_rpm(name: str, entry: dict[str, Any]) -> dict[str, Any]:
+    """An engine's reversal speed with its rpm beside its rad/s, as the books ask it."""
+    if name == "reversal_speed":
+        entry["rpm"] = entry["value"] * 60 / math.tau
+    return entry
 
 
 def checked(q: Quantity, mech: Mechanism) -> Checked:
