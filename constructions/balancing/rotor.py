@@ -113,6 +113,15 @@ class Engine:
     coupled: int = 1
     """How many pairs of coupled wheels share the balanced fraction of the reciprocating
     mass equally, the driving wheels among them (1: the driving wheels take it all)."""
+    hammer_blow: float | None = None
+    """The greatest hammer blow allowed on a driving wheel (N), where the books ask the speed
+    at which it is reached: found as a dead load's lift speed is, but no wheel lifts."""
+
+    @property
+    def speed_load(self) -> float | None:
+        """The load (N) whose speed is found: the dead load a blow lifts the wheel against,
+        or the greatest hammer blow allowed; None where neither is given."""
+        return self.dead_load if self.dead_load is not None else self.hammer_blow
 
     @property
     def balanced_each(self) -> float:

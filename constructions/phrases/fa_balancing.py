@@ -139,6 +139,9 @@ WORDS: dict[str, str] = {
     "ω = {speed} rad/s":
         "چرخ آنجا از ریل بلند می‌شود که ضربهٔ چکشی به بار مردهٔ {load} N برسد: در ω = {speed} "
         "rad/s",
+    "the hammer blow reaches the greatest allowed, {load} N, at ω = {speed} rad/s":
+        "ضربهٔ چکشی در ω = {speed} rad/s به بیشترین مقدار مجاز، {load} N، می‌رسد",
+    ": the greatest speed": ": بیشترین سرعت",
     ", {road} km/h on the wheels": "، {road} km/h روی چرخ‌ها",
     "force": "نیرو", "couple": "کوپل",
     "each where the algebra puts it": "هر یک همان‌جا که حل جبری نشان می‌دهد",
@@ -255,6 +258,10 @@ WORDS: dict[str, str] = {
     "rad/s":
         "سرعتی داده نشده است: همهٔ نیروها و کوپل‌های زیر در سرعتِ یافته‌شدهٔ بلند شدن چرخ‌اند، "
         "ω = {speed} rad/s",
+    "no speed is given: every force and couple below is at the speed found where the hammer "
+    "blow reaches the greatest allowed, ω = {speed} rad/s":
+        "سرعتی داده نشده است: همهٔ نیروها و کوپل‌های زیر در سرعتی یافته‌شده‌اند که ضربهٔ چکشی "
+        "در آن به بیشترین مقدار مجاز می‌رسد، ω = {speed} rad/s",
     "no speed is given: the balance masses need none (m·r); each force and couple is given × "
     "ω² (kg·m, kg·m²), as a rotor's resultant is, and none in N":
         "سرعتی داده نشده است: جرم‌های متعادل‌کننده به آن نیازی ندارند (m·r)؛ هر نیرو و کوپل "
@@ -269,6 +276,8 @@ WORDS: dict[str, str] = {
         "برای آن‌ها speed = … یا road_speed = … بدهید",
     "at the lift speed found, ω = {speed} rad/s":
         "در سرعتِ یافته‌شدهٔ بلند شدن چرخ، ω = {speed} rad/s",
+    "at the speed of the greatest hammer blow allowed, ω = {speed} rad/s":
+        "در سرعت بیشترین ضربهٔ چکشی مجاز، ω = {speed} rad/s",
     "no speed given: the closing side is m·r (× ω²)":
         "سرعتی داده نشده: ضلع بستن m·r است (× ω²)",
     "no speed is given: the masses and angles found need none (m·r); each force and couple "

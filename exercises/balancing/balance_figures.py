@@ -94,6 +94,9 @@ def _engine_figures(s: BalanceSolution) -> dict[str, Figure]:
 def _speed_notes(e) -> list[str]:
     """The speed a polygon's reading is taken at, where the file gives none: the lift speed
     found, or none (the reading then m·r, × ω²)."""
+    if e.at_lift and e.dead_load is None:
+        return [words("at the speed of the greatest hammer blow allowed, ω = {speed} rad/s",
+                      speed=numerals(f"{e.speed:.6g}"))]
     if e.at_lift:
         return [words("at the lift speed found, ω = {speed} rad/s",
                       speed=numerals(f"{e.speed:.6g}"))]

@@ -86,12 +86,13 @@ def left_checked(s) -> dict[str, Checked]:
 
 def _lift(s) -> tuple[float, float] | None:
     """The speed (rad/s) at which the greatest hammer blow equals the dead load on a wheel,
-    ω = √(P/(B·b)): as drawn, and by the reference's B·b (None with no load given)."""
-    e = s.exercise.engine
-    if e.dead_load is None:
+    or the greatest blow allowed, ω = √(P/(B·b)): as drawn, and by the reference's B·b
+    (None with no load given)."""
+    load = s.exercise.engine.speed_load
+    if load is None:
         return None
     got, want = (max(v[i] for v in _products(s).values()) for i in (0, 1))
-    return math.sqrt(e.dead_load / got), math.sqrt(e.dead_load / want)
+    return math.sqrt(load / got), math.sqrt(load / want)
 
 
 def lift_speed(s) -> float | None:
@@ -103,16 +104,20 @@ def lift_speed(s) -> float | None:
 
 def _lift_checked(s) -> dict[str, Checked]:
     """``lift_speed`` (rad/s) and, on wheels of a given diameter, ``lift_road_speed``
-    (km/h, v = ω·D/2)."""
+    (km/h, v = ω·D/2); ``speed_at_hammer_blow`` and ``road_speed_at_hammer_blow`` where the
+    load is the greatest hammer blow allowed, not a dead load."""
     lift, e = _lift(s), s.exercise.engine
     if lift is None:
         return {}
-    method = "√(dead load / the greatest B·b of c·m)"
-    q = {"lift_speed": Checked({"value": lift[0], "unit": "rad/s"}, {"value": lift[1]},
-                               method=method)}
+    blow = e.dead_load is None
+    method = f"√({'hammer blow allowed' if blow else 'dead load'} / the greatest B·b of c·m)"
+    speed, road = ("speed_at_hammer_blow", "road_speed_at_hammer_blow") if blow else \
+        ("lift_speed", "lift_road_speed")
+    q = {speed: Checked({"value": lift[0], "unit": "rad/s"}, {"value": lift[1]},
+                        method=method)}
     if e.wheel is not None:
-        q["lift_road_speed"] = Checked({"value": lift[0] * e.wheel / 2 * 3.6, "unit": "km/h"},
-                                       {"value": lift[1] * e.wheel / 2 * 3.6}, method=method)
+        q[road] = Checked({"value": lift[0] * e.wheel / 2 * 3.6, "unit": "km/h"},
+                          {"value": lift[1] * e.wheel / 2 * 3.6}, method=method)
     return q
 
 
@@ -142,12 +147,16 @@ def left_lines(s) -> list[str]:
                          blow=numeral(blow)))
     lift = _lift(s)
     if lift is not None:
-        out.append(words("the wheel lifts off the rail where the hammer blow reaches the dead "
-                         "load of {load} N: at ω = {speed} rad/s", load=numeral(e.dead_load),
-                         speed=numeral(lift[0])) + (words(", {road} km/h on the wheels",
-                                                          road=numeral(lift[0] * e.wheel / 2
-                                                                       * 3.6))
-                                                    if e.wheel is not None else ""))
+        road = words(", {road} km/h on the wheels", road=numeral(lift[0] * e.wheel / 2 * 3.6)) \
+            if e.wheel is not None else ""
+        if e.dead_load is not None:
+            out.append(words("the wheel lifts off the rail where the hammer blow reaches the "
+                             "dead load of {load} N: at ω = {speed} rad/s",
+                             load=numeral(e.dead_load), speed=numeral(lift[0])) + road)
+        else:
+            out.append(words("the hammer blow reaches the greatest allowed, {load} N, at ω = "
+                             "{speed} rad/s", load=numeral(e.hammer_blow),
+                             speed=numeral(lift[0])) + road + words(": the greatest speed"))
     return out
 
 

@@ -31,7 +31,8 @@ def at_lift_tagged(q: dict[str, Checked], e) -> dict[str, Checked]:
     if e is None or not e.at_lift:
         return q
     forces = {kind.replace(" ", "_") for kind in engine_kinds(e)}
-    return {k: replace(c, value={**c.value, "at_lift_speed": e.speed})
+    tag = "at_lift_speed" if e.dead_load is not None else "at_hammer_blow_speed"
+    return {k: replace(c, value={**c.value, tag: e.speed})
             if k in forces or c.value.get("unit") in ("N", "N·m") else c for k, c in q.items()}
 
 
@@ -44,6 +45,10 @@ def speed_lines(ex) -> list[str]:
     if e.at_lift:
         road = words(", {road} km/h on the wheels", road=numeral(e.speed * e.wheel / 2 * 3.6)) \
             if e.wheel is not None else ""
+        if e.dead_load is None:
+            return [words("no speed is given: every force and couple below is at the speed "
+                          "found where the hammer blow reaches the greatest allowed, ω = "
+                          "{speed} rad/s", speed=numeral(e.speed)) + road]
         return [words("no speed is given: every force and couple below is at the lift speed "
                       "found, ω = {speed} rad/s", speed=numeral(e.speed)) + road]
     if e.speed is None and ex.open is not None:

@@ -1,7 +1,8 @@
-"""A locomotive's file: its driving wheels' diameter and dead load, and the engine's speed
-as the books give it, ``speed``, a ``road_speed`` (km/h) on wheels of ``wheel_diameter``,
-or none where the speed is the unknown (the balance masses need none, and a dead load gives
-the lift speed). Every failure is one line naming file:line."""
+"""A locomotive's file: its driving wheels' diameter, their dead load or the greatest hammer
+blow allowed, and the engine's speed as the books give it, ``speed``, a ``road_speed``
+(km/h) on wheels of ``wheel_diameter``, or none where the speed is the unknown (the balance
+masses need none, and a dead load or a hammer blow's limit gives the speed).
+Every failure is one line naming file:line."""
 
 from __future__ import annotations
 
@@ -9,7 +10,7 @@ from collections.abc import Callable
 
 from ..table_file import Tables
 
-__all__ = ["engine_speed", "read_wheel"]
+__all__ = ["engine_speed", "read_blow_limit", "read_wheel"]
 
 
 def read_wheel(t: Tables, one: dict, metre: float, cylinders: int
@@ -18,17 +19,39 @@ def read_wheel(t: Tables, one: dict, metre: float, cylinders: int
     the file gives them; the load only where balance masses in the wheels strike the rails."""
     wheel = t.number(one, "wheel_diameter", "engine", "the wheels' diameter") * metre \
         if "wheel_diameter" in one else None
-    if "dead_load" not in one:
-        return wheel, None
-    load = t.number(one, "dead_load", "engine", "the dead load on a wheel")
+    return wheel, _load(t, one, "dead_load", cylinders)
+
+
+def read_blow_limit(t: Tables, one: dict, cylinders: int) -> float | None:
+    """The greatest hammer blow allowed on a wheel (N), ``hammer_blow``, where the books ask
+    the speed at which it is reached ("the hammer blow is not to exceed 30 kN"): the same
+    ω = √(P/(B·b)) as a dead load's lift, but no wheel lifts. A file gives one or the other."""
+    if "hammer_blow" in one and "dead_load" in one:
+        raise t.fail("hammer_blow (the greatest blow allowed) and dead_load (the load a blow "
+                     "lifts the wheel against) each find one speed: give one, not both",
+                     "engine", "hammer_blow")
+    return _load(t, one, "hammer_blow", cylinders)
+
+
+_LOADS = {"dead_load": ("the dead load on a wheel", "dead_load is what a hammer blow lifts a "
+                        "wheel against"),
+          "hammer_blow": ("the greatest hammer blow allowed", "hammer_blow is the greatest "
+                          "blow the balance masses may strike the rails with")}
+
+
+def _load(t: Tables, one: dict, key: str, cylinders: int) -> float | None:
+    """``key``'s load on a wheel (N), positive, in a file whose balance planes (the wheels)
+    balance a fraction of the reciprocating mass; None where it is not given."""
+    if key not in one:
+        return None
+    what, why = _LOADS[key]
+    load = t.number(one, key, "engine", what)
     if not load > 0:
-        raise t.fail(f"the dead load on a wheel must be positive, got {load:g} N", "engine",
-                     "dead_load")
+        raise t.fail(f"{what} must be positive, got {load:g} N", "engine", key)
     if cylinders < 2 or not t.entries("balance") or "balanced" not in one:
-        raise t.fail("dead_load is what a hammer blow lifts a wheel against: it goes with "
-                     "[[balance]] planes (the wheels) and a fraction balanced", "engine",
-                     "dead_load")
-    return wheel, load
+        raise t.fail(f"{why}: it goes with [[balance]] planes (the wheels) and a fraction "
+                     "balanced", "engine", key)
+    return load
 
 
 def engine_speed(t: Tables, one: dict, metre: float, speed: Callable[[Tables, str], float],

@@ -22,7 +22,7 @@ from ..names import named_in, read_names, renamed_field
 from ..table_file import SPEEDS, Tables
 from .engine_unknowns import cylinder_masses, has_unknowns, primary_balance
 from .firing_order import firing_cranks, read_firing_order
-from .locomotive_file import engine_speed, read_wheel
+from .locomotive_file import engine_speed, read_blow_limit, read_wheel
 from .one_crank_file import read_radial, read_vee
 from .engine_wheels import read_coupled, wheel_rotors
 from .open_rotor_file import UNKNOWN, read_open_rotor
@@ -46,7 +46,7 @@ _KEYS = {"rotor": ("speed", "about", "bearings", "angles"),
          "balance": ("name", "plane", "radius", "mass", "weight"),
          "engine": ("speed", "crank", "stroke", "rod", "reciprocating", "balanced", "at",
                     "revolving", "balance_radius", "balance_mass", "firing_order", "strokes",
-                    "road_speed", "wheel_diameter", "vee", "radial", "dead_load",
+                    "road_speed", "wheel_diameter", "vee", "radial", "dead_load", "hammer_blow",
                     "rod_ratio", "coupled"),
          "cylinder": ("crank", "plane", "reciprocating")}
 
@@ -410,7 +410,8 @@ def _engine(t: Tables, metre: float) -> tuple[Engine, OpenRotor | None]:
                                            if "reciprocating" in c))
     # balance planes find their masses free of ω: a locomotive's speed may be the unknown
     optional = len(cranks) > 1 and bool(t.entries("balance")) and not (vee or radial)
-    if optional and "at" in one and not {"speed", "road_speed", "dead_load"} & set(one):
+    if optional and "at" in one and not {"speed", "road_speed", "dead_load",
+                                         "hammer_blow"} & set(one):
         raise t.fail("at asks the forces at a crank angle, m·r·ω², and no lift speed stands "
                      "in for the speed: give speed = … or road_speed = … (km/h) with "
                      "wheel_diameter", "engine", "at")
@@ -421,7 +422,8 @@ def _engine(t: Tables, metre: float) -> tuple[Engine, OpenRotor | None]:
                   revolving, None if radius is None else radius * metre, balance,
                   *read_wheel(t, one, metre, len(cranks)), "at" in one,
                   tuple(masses) if len(set(masses)) > 1 else (),
-                  vee, *(firing or ((), 0)), radial=radial, coupled=read_coupled(t, one)), None
+                  vee, *(firing or ((), 0)), radial=radial, coupled=read_coupled(t, one),
+                  hammer_blow=read_blow_limit(t, one, len(cranks))), None
 
 
 def _revolving(t: Tables, one: dict, cylinders: int, unit: str

@@ -57,8 +57,9 @@ def refuse_unused(t: Tables, kind: str, one: dict | None = None) -> None:
         raise t.fail(f"[[mass]] tables are revolving masses balanced in an in-line engine's "
                      f"[[balance]] planes (a locomotive's wheels); not taken for {what}: "
                      "leave them out", "mass", None, 0)
-    refused = {"single": ("coupled",), "one crank": ("coupled", "dead_load"),
-               "unknowns": ("coupled", "dead_load", "strokes"), "in line": ()}[kind]
+    refused = {"single": ("coupled",), "one crank": ("coupled", "dead_load", "hammer_blow"),
+               "unknowns": ("coupled", "dead_load", "hammer_blow", "strokes"),
+               "in line": ()}[kind]
     for key in refused:
         if key in one:
             raise t.fail(f"{key} is not taken for {what}: leave it out", "engine", key)
@@ -68,7 +69,8 @@ def refuse_idle_wheel(t: Tables, one: dict) -> None:
     """Refuse a ``wheel_diameter`` nothing uses: it turns a road speed into the cranks'
     speed, or a lift speed into km/h. Asked once the speed is read, so a file with no
     speed hears first that it needs one."""
-    if "wheel_diameter" in one and not {"road_speed", "dead_load"} & set(one):
+    if "wheel_diameter" in one and not {"road_speed", "dead_load", "hammer_blow"} & set(one):
         raise t.fail("wheel_diameter goes with road_speed (km/h), the speed on the wheels, or "
-                     "with dead_load, the lift speed in km/h: give one, or leave it out",
+                     "with dead_load or hammer_blow, the speed found in km/h: give one, or "
+                     "leave it out",
                      "engine", "wheel_diameter")
