@@ -21,7 +21,6 @@ from collections.abc import Callable
 from dataclasses import dataclass, replace
 
 from tarsim.constructions import asks as A
-from tarsim.constructions import geometry as g
 from tarsim.constructions.errors import InputError
 from tarsim.constructions.narration import numerals, unit_words, words
 from tarsim.constructions.record import Panel, Slice
@@ -258,7 +257,7 @@ def _frames(sol, sheet) -> list[Figure]:
     """An empty frame for each polygon the position draws, at the scale its worked page
     states (the exercise's, or the one that fits the polygon), big enough to hold the
     polygon drawn from its pole where the solution's stands."""
-    from tarsim.graphics.linkages.polygon_panel import POLYGON_BOX, _per_cm
+    from tarsim.graphics.linkages.polygon_panel import POLYGON_BOX, _per_cm, finite_points
 
     from .linkages.solution_files import figure_parts
 
@@ -278,7 +277,7 @@ def _frames(sol, sheet) -> list[Figure]:
     for panel, shown in polygons.items():
         heading, scale_name, pole, per_time, field = _POLYGONS[panel]
         poly = sol.work.made(f"{field} polygon")
-        points = [p for s in shown.steps(panel) for p in _finite(s)] or [(0.0, 0.0)]
+        points = [p for s in shown.steps(panel) for p in finite_points(s)] or [(0.0, 0.0)]
         stated = getattr(sol.work.scales, f"{field}_polygon")
         per_cm = stated or _per_cm(points, poly.scale, units, room(sheet, POLYGON_BOX))
         mm = 10.0 / (per_cm * units.metres * poly.scale)     # paper mm a drawing metre
@@ -291,13 +290,6 @@ def _frames(sol, sheet) -> list[Figure]:
     return out + force_frames(sol, titled)
 
 
-def _finite(step) -> list[tuple[float, float]]:
-    out = step.output
-    if isinstance(out, g.Point):
-        return [] if out.is_at_infinity else [out.xy]
-    if isinstance(out, g.Segment):
-        return [out.start.xy, out.end.xy]
-    return []
 
 
 def _input_words(m) -> str:

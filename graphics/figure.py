@@ -20,7 +20,7 @@ from .rtl import is_rtl, joined
 __all__ = ["Style", "STYLES", "View", "Path", "Circle", "Text", "Figure", "FONT", "text_width",
            "wrap_text",
            "SUB_SIZE", "SUB_DROP", "arc_points", "clip_line", "ray_to_edge", "span_line",
-           "stack_pages", "stack_layout", "PAGE_GAP"]
+           "stack_pages", "stack_layout", "PAGE_GAP", "shelve"]
 
 FONT = "DejaVu Serif"
 """One family that covers Latin, Greek, subscripts and ⊥ ∥ ∞ (cairosvg has no fallback)."""
@@ -468,6 +468,23 @@ def stack_layout(pages: list[Figure], gap: float = PAGE_GAP
         tops.append(tops[-1] + page.height + gap)
     height = sum(p.height for p in pages) + gap * (len(pages) - 1)
     return max(p.width for p in pages), height, tops
+
+
+def shelve(panels: list[Figure], row: float, gap: float, title: str = "") -> Figure:
+    """Lay ``panels`` left to right in rows no wider than ``row`` (mm), a new row below the
+    tallest of the last, ``gap`` between them: one figure of each at its own scale (a force
+    polygon or a free body each to a scale that fits it)."""
+    fig = Figure(0.0, 0.0, title=title)
+    x = y = row_height = 0.0
+    for panel in panels:
+        x0, y0, x1, y1 = panel.bounds()
+        if x > 0.0 and x + (x1 - x0) > row:
+            x, y, row_height = 0.0, y + row_height + gap, 0.0
+        panel.shift(x - x0, y - y0)
+        fig.items += panel.items
+        x += (x1 - x0) + gap
+        row_height = max(row_height, y1 - y0)
+    return fig
 
 
 def stack_pages(pages: list[Figure], gap: float = PAGE_GAP) -> Figure:

@@ -14,7 +14,7 @@ from tarsim.constructions import geometry as g
 from tarsim.constructions.narration import words
 from tarsim.constructions.record import Construction, Panel, Role
 from tarsim.constructions.scales import nice
-from ..figure import Circle, Figure, Path, Text
+from ..figure import Circle, Figure, Path, Text, shelve
 from ..labels import LabelPlacer
 from ..scales import draw_caption, nice_per_cm, scale_text
 from ..symbols import draw_arrow
@@ -44,16 +44,7 @@ def draw_force_figure(c: Construction, scale: float, title: str,
     scale for all would draw a block's few newtons as a dot beside a lever's hundreds."""
     steps = [s for s in c if s.panel is Panel.FORCE]
     panels = [_draw_polygon(c, mark, group, scale) for mark, group in _polygons(steps)]
-    fig = Figure(0.0, 0.0, title=title)
-    x = y = row_height = 0.0
-    for panel in (p for p in panels if p is not None):
-        x0, y0, x1, y1 = panel.bounds()
-        if x > 0.0 and x + (x1 - x0) > _ROW:
-            x, y, row_height = 0.0, y + row_height + _GAP, 0.0
-        panel.shift(x - x0, y - y0)
-        fig.items += panel.items
-        x += (x1 - x0) + _GAP
-        row_height = max(row_height, y1 - y0)
+    fig = shelve([p for p in panels if p is not None], _ROW, _GAP, title)
     draw_caption(fig, title, [words("each link's loads head to tail; a polygon closed by two "
                                     "lines crossing at x, or by its heavy closing side")],
                  per_cm=None, unit="N", legend=(("vector", "a force"),

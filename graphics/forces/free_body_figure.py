@@ -16,7 +16,7 @@ import math
 
 from tarsim.constructions.checks import NOISE
 from tarsim.constructions.narration import words
-from ..figure import Figure, Path, Text
+from ..figure import Figure, Path, Text, shelve
 from .force_figure import in_lane, runs_along
 from .force_key import draw_key
 from ..labels import LabelPlacer
@@ -47,16 +47,7 @@ def draw_free_bodies(mech, at: dict, bodies: dict, title: str, unit: str) -> Fig
     k_space = 10.0 / (per_cm * metre)                  # paper mm a metre
     biggest = max([math.hypot(*f) for b in bodies.values() for _, f, _, _ in b] + [1e-300])
     drawn = [_draw_body(mech, link, at, bodies[link], k_space, biggest) for link in links]
-    fig = Figure(0.0, 0.0, title=title)
-    x = y = row_height = 0.0
-    for body in drawn:
-        x0, y0, x1, y1 = body.bounds()
-        if x > 0.0 and x + (x1 - x0) > _ROW:
-            x, y, row_height = 0.0, y + row_height + _GAP, 0.0
-        body.shift(x - x0, y - y0)
-        fig.items += body.items
-        x += (x1 - x0) + _GAP
-        row_height = max(row_height, y1 - y0)
+    fig = shelve(drawn, _ROW, _GAP, title)
     legend = [("vector", "a force, at its body's force scale")]
     if any(isinstance(t, Path) and t.style == "vector_dashed" for t in fig.items):
         legend.append(("vector_dashed", "a force too small for that scale, drawn 10 mm long"))

@@ -48,7 +48,7 @@ from .polygon_labels import CROSSABLE, HERE, ZERO, label_points, label_vectors, 
 from ..scales import draw_caption, nice_per_cm
 from ..symbols import draw_arrow, unit
 
-__all__ = ["draw_polygon_panel", "POLYGON_BOX", "QUANTITIES"]
+__all__ = ["draw_polygon_panel", "POLYGON_BOX", "QUANTITIES", "finite_points"]
 
 POLYGON_BOX = (120.0, 110.0)
 """The paper (mm, wide × high) a polygon is scaled to fill, at most."""
@@ -140,7 +140,7 @@ def draw_polygon_panel(shown: Slice, *, panel: Panel, scale: float, units: Units
     if per_cm is not None and not (math.isfinite(per_cm) and per_cm > 0.0):
         raise TarsimError(f"a stated polygon scale must be a positive number, got {per_cm}")
     steps = shown.steps(panel)
-    if not any(_finite_points(s) for s in steps):
+    if not any(finite_points(s) for s in steps):
         raise TarsimError(f"nothing to draw: no point or vector of the {panel} polygon is "
                           "among the steps asked for")
     return _PolygonPanel(steps, shown.numbers(panel), panel, float(scale), units,
@@ -148,7 +148,7 @@ def draw_polygon_panel(shown: Slice, *, panel: Panel, scale: float, units: Units
 
 
 # ----- what the steps put on paper ----------------------------------------------------------
-def _finite_points(step: Step) -> list[tuple[float, float]]:
+def finite_points(step: Step) -> list[tuple[float, float]]:
     """Return the finite points a step marks: a point, or the two ends of a vector."""
     out = step.output
     if isinstance(out, g.Point):
@@ -186,7 +186,7 @@ class _PolygonPanel:
         self.panel = panel
         self.scale = scale
         self.units = units
-        self.world = list(dict.fromkeys(p for s in steps for p in _finite_points(s)))
+        self.world = list(dict.fromkeys(p for s in steps for p in finite_points(s)))
         xs, ys = zip(*self.world)
         # The yardstick of "lies on" and "coincides": the panel's reach from the origin.
         self.size = max(1.0, max(xs) - min(xs), max(ys) - min(ys),
