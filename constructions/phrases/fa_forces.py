@@ -118,10 +118,14 @@ WORDS: dict[str, str] = {
         "و بیشینه است",
     "a rim whose mean speed is {speed} m/s: m = ΔE/(C_s·v²) = {mass} kg":
         "طوقه‌ای با سرعت میانگین {speed} m/s: m = ΔE/(C_s·v²) = {mass} kg",
-    "a rim whose mean speed is {speed} m/s: its radius r = v/ω = {radius}, its mass m = I/r² = "
-    "{mass} kg":
-        "طوقه‌ای با سرعت میانگین {speed} m/s: شعاع آن r = v/ω = {radius} و جرم آن m = I/r² = "
-        "{mass} kg",
+    "a rim whose mean speed is {speed} m/s: its radius r = v/ω = {radius}, its mass m = "
+    "{share}/r² = {mass} kg":
+        "طوقه‌ای با سرعت میانگین {speed} m/s: شعاع آن r = v/ω = {radius} و جرم آن m = "
+        "{share}/r² = {mass} kg",
+    "a rim whose hoop stress is {stress} MPa at {density} kg/m³: its speed v = √(σ/ρ) = "
+    "{speed} m/s":
+        "طوقه‌ای با تنش محیطی {stress} MPa و چگالی {density} kg/m³: سرعت آن v = √(σ/ρ) = "
+        "{speed} m/s",
     "a motor of {power} kW gives a hole's E = {energy} J in T = E/P = {period} s, the hole "
     "taking {time} s: {rate} holes a minute":
         "موتوری با توان {power} kW انرژی E = {energy} J هر سوراخ را در T = E/P = {period} s "

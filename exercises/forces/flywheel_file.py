@@ -55,7 +55,7 @@ _KEYS = {"turning_moment": ("torque", "points", "areas", "torque_scale", "angle_
          "punch": PUNCH_KEYS,
          "flywheel": ("speed", "speed_max", "speed_min", "speed_fluctuation", "inertia", "mass",
                       "radius", "diameter", "rim_speed", "rim_share", "density",
-                      "width_to_thickness",
+                      "width_to_thickness", "hoop_stress",
                       "radius_of_gyration", "at", "delta_E")}
 
 
@@ -109,6 +109,8 @@ class FlywheelExercise:
     rim_speed: float | None = None
     """The rim's mean speed (m/s), when the books give it: its radius v/ω and mass
     ΔE/(C_s·v²)."""
+    hoop_stress: float | None = None
+    """The rim's allowable hoop stress σ (Pa), when the books size it so: v = √(σ/ρ)."""
     density: float | None = None
     """The rim's density (kg/m³): with ``width_to_thickness``, its section is asked."""
     width_to_thickness: float | None = None

@@ -252,6 +252,11 @@ class FlywheelSolution(ChapterFiles):
                    if ex.mass is not None else "given")
             q["inertia"] = Checked({"value": ex.inertia, "unit": "kg·m²"}, method=how)
         elif ex.speed_fluctuation is not None:
+            if ex.hoop_stress is not None:
+                # σ = ρ·v² for a thin rim: v, beside σ/(ρ·v) (five roundings of 1.1e-16)
+                v = ex.rim_speed
+                q["rim_speed"] = _check(v, ex.hoop_stress / (ex.density * v), 6e-16,
+                                        "v = √(σ/ρ)", unit="m/s")
             if ex.rim_speed is not None:
                 q["rim_radius"] = _check(ex.radius, ex.rim_speed / ex.speed, 0.0, "r = v/ω",
                                          unit="m")
@@ -357,7 +362,7 @@ class FlywheelSolution(ChapterFiles):
     def _section(self, q: dict[str, Checked], tol: float) -> dict[str, Checked]:
         """A rectangular rim's thickness and width, from its mass at its radius."""
         ex = self.exercise
-        if ex.density is None:
+        if ex.density is None or ex.width_to_thickness is None:
             return {}
         out = {}
         if "rim_mass" in q:

@@ -10,10 +10,55 @@ import re
 from typing import Any
 
 from tarsim.constructions.errors import InputError
+from tarsim.constructions.units import LENGTH_UNITS
 
 from ..table_file import Tables
+from .loads_file import PRESSURES
 
-__all__ = ["PERCENT", "speeds", "read_given_wheel", "read_wheel"]
+__all__ = ["PERCENT", "speeds", "read_given_wheel", "read_length", "read_wheel"]
+
+_WITH_UNIT = re.compile(r"\s*([-+]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][-+]?\d+)?)\s*(\S+)\s*")
+"""A number and its unit as the books write them: "0.6 m", "600 mm", "6 MPa"."""
+
+
+def read_length(t: Tables, d: dict, key: str, table: str, what: str, metre: float) -> float:
+    """``d[key]``, a positive length in metres: a number in the file's length unit (``metre``
+    m each), or text with its own unit ("0.6 m", "600 mm"), as a book mixes a punch's
+    holes in mm with its flywheel's radius in m."""
+    raw = d[key]
+    if isinstance(raw, str):
+        m = _WITH_UNIT.fullmatch(raw)
+        if m is None or m[2] not in LENGTH_UNITS:
+            raise t.fail(f"{what} is a number in the file's length unit or a length with its "
+                         f"unit ({', '.join(LENGTH_UNITS)}): \"0.6 m\"; got {raw!r:.40}",
+                         table, key)
+        v, size = float(m[1]), LENGTH_UNITS[m[2]]
+    else:
+        v, size = t.number(d, key, table, what), metre
+    if not v > 0 or not math.isfinite(v):
+        raise t.fail(f"{what} must be positive, got {raw!r:.40}", table, key)
+    return v * size
+
+
+def _stress(t: Tables, fw: dict) -> float:
+    """The rim's allowable hoop stress in Pa: a number in Pa, or "6 MPa" as the books give
+    it (any unit a gas pressure takes)."""
+    raw = fw["hoop_stress"]
+    m = _WITH_UNIT.fullmatch(raw) if isinstance(raw, str) else None
+    if isinstance(raw, str) and (m is None or m[2] not in PRESSURES):
+        raise t.fail(f"the hoop stress is a number in Pa or a stress with its unit "
+                     f"({', '.join(PRESSURES)}): \"6 MPa\"; got {raw!r:.40}",
+                     "flywheel", "hoop_stress")
+    if m is None and (isinstance(raw, bool) or not isinstance(raw, (int, float))):
+        raise t.fail(f"the hoop stress is a number in Pa or \"6 MPa\"; got {raw!r:.40}",
+                     "flywheel", "hoop_stress")
+    # a number is in Pa, so a book's 6e6 is past a plain number's 1e6: read as it stands,
+    # below 1e10 Pa (10 GPa, past any metal's strength)
+    v = float(m[1]) * PRESSURES[m[2]] if m else float(raw)
+    if not 0 < v < 1e10:
+        raise t.fail(f"the hoop stress must be positive and below 1e10 Pa, got {raw!r:.40}",
+                     "flywheel", "hoop_stress")
+    return v
 
 
 PERCENT = re.compile(r"\s*(±|\+/-|\+-)?\s*(\d+(?:\.\d*)?|\.\d+)\s*%\s*")
@@ -107,11 +152,11 @@ def read_given_wheel(t: Tables, fw: dict, metre: float, rad_s: float) -> dict[st
         raise t.fail(f"{extra[0]} needs ΔE from a diagram (or delta_E); with the flywheel and "
                      "its speeds alone, ΔE and C_s are what is found", "flywheel", extra[0])
 
-    def positive(key: str, what: str, scale: float = 1.0) -> float:
+    def positive(key: str, what: str) -> float:
         v = t.number(fw, key, "flywheel", what)
         if not v > 0:
             raise t.fail(f"{what} must be positive, got {v:g}", "flywheel", key)
-        return v * scale
+        return v
     ways = [k for k in ("inertia", "radius_of_gyration", "radius", "diameter") if k in fw]
     if len(ways) != 1 or ("inertia" in fw) == ("mass" in fw):
         raise t.fail("give the flywheel once: inertia (kg·m²), or mass with radius_of_gyration,"
@@ -122,8 +167,9 @@ def read_given_wheel(t: Tables, fw: dict, metre: float, rad_s: float) -> dict[st
         out["inertia"] = positive("inertia", "the flywheel's moment of inertia")
         return out
     out["mass"] = positive("mass", "the flywheel's mass")
-    k = positive(way, "the radius of gyration" if way == "radius_of_gyration" else
-                 "the rim's mean radius", metre / (2 if way == "diameter" else 1))
+    k = read_length(t, fw, way, "flywheel", "the radius of gyration" if way ==
+                    "radius_of_gyration" else "the rim's mean radius", metre) / (
+                        2 if way == "diameter" else 1)
     out["radius_of_gyration" if way == "radius_of_gyration" else "radius"] = k
     out["inertia"] = out["mass"] * k * k
     return out
@@ -135,22 +181,23 @@ def read_wheel(t: Tables, fw: dict, metre: float, rad_s: float,
     turning moment was given (one given by its areas has no T(θ) to read at an angle)."""
     out: dict[str, Any] = {}
 
-    def positive(key: str, what: str, scale: float = 1.0) -> float:
+    def positive(key: str, what: str) -> float:
         v = t.number(fw, key, "flywheel", what)
         if not v > 0:
             raise t.fail(f"{what} must be positive, got {v:g}", "flywheel", key)
-        return v * scale
+        return v
 
     out |= speeds(t, fw, rad_s)
     if "speed_fluctuation" in out and "radius_of_gyration" in fw and "mass" not in fw:
         # The books' "its radius of gyration is 0.5 m" with C_s: the flywheel is found, and
         # k is where its mass sits, m = I/k², as a rim's at its mean radius.
-        clash = [k for k in ("radius", "diameter", "rim_speed", "rim_share") if k in fw]
+        clash = [k for k in ("radius", "diameter", "rim_speed", "rim_share", "hoop_stress")
+                 if k in fw]
         if clash:
             raise t.fail(f"the radius of gyration places the flywheel's mass (m = I/k²): "
                          f"leave {clash[0]} out", "flywheel", clash[0])
-        out["radius_of_gyration"] = positive("radius_of_gyration", "the radius of gyration",
-                                             metre)
+        out["radius_of_gyration"] = read_length(t, fw, "radius_of_gyration", "flywheel",
+                                                "the radius of gyration", metre)
         out["radius"] = out["radius_of_gyration"]
         fw = {k: v for k, v in fw.items() if k != "radius_of_gyration"}
     ways = [k for k in ("speed_fluctuation", "inertia", "radius_of_gyration") if k in fw]
@@ -161,26 +208,40 @@ def read_wheel(t: Tables, fw: dict, metre: float, rad_s: float,
                      "found) or the flywheel (inertia, or mass with radius_of_gyration: its C_s "
                      "is found), one of them", "flywheel", ways[1])
     extreme = "speed_max" in out or "speed_min" in out
-    if ways and "speed" not in out and not extreme and not ("rim_speed" in fw
-                                                            and "speed_fluctuation" in fw):
+    rimmed = "rim_speed" in fw or "hoop_stress" in fw
+    if ways and "speed" not in out and not extreme and not (rimmed and "speed_fluctuation" in fw):
         raise t.fail("a flywheel holds a speed: give the mean speed, speed = 300 with [units] "
                      "speed = \"rpm\" (or the rim's speed in m/s, rim_speed = 25, for its mass "
                      "alone)", "flywheel", None)
-    rim = [k for k in ("diameter", "rim_speed", "rim_share", "density", "width_to_thickness")
-           if k in fw]
+    rim = [k for k in ("diameter", "rim_speed", "rim_share", "density", "width_to_thickness",
+                       "hoop_stress") if k in fw]
     if "speed_fluctuation" in out:
-        if "rim_speed" in fw:
+        if "hoop_stress" in fw:
+            # The books' "the hoop stress is not to exceed 6 MPa": a thin rim's stress is
+            # ρ·v², so its speed is v = √(σ/ρ), and its radius v/ω as a rim_speed's.
+            clash = [k for k in ("rim_speed", "radius", "diameter", "mass") if k in fw]
+            if clash:
+                raise t.fail(f"the hoop stress fixes the rim's speed √(σ/ρ) and so its radius "
+                             f"(v/ω) and mass: leave {clash[0]} out", "flywheel", clash[0])
+            if "density" not in fw:
+                raise t.fail("the hoop stress σ gives the rim's speed v = √(σ/ρ) with its "
+                             "density: give density (kg/m³)", "flywheel", "hoop_stress")
+            out["hoop_stress"] = _stress(t, fw)
+            out["density"] = positive("density", "the rim's density (kg/m³)")
+            out["rim_speed"] = math.sqrt(out["hoop_stress"] / out["density"])
+        if "rim_speed" in fw or "hoop_stress" in fw:
             # The rim's speed v = ω·r gives its radius, and m·v² = I·ω² its mass.
             clash = [k for k in ("radius", "diameter", "mass") if k in fw]
             if clash:
                 raise t.fail(f"the rim's speed fixes its radius (v/ω) and mass (ΔE/(C_s·v²)): "
                              f"leave {clash[0]} out", "flywheel", clash[0])
-            out["rim_speed"] = positive("rim_speed", "the rim's mean speed (m/s)")
+            if "hoop_stress" not in fw:
+                out["rim_speed"] = positive("rim_speed", "the rim's mean speed (m/s)")
             if "speed" in out:
                 out["radius"] = out["rim_speed"] / out["speed"]
-            elif "density" in fw:
+            elif "width_to_thickness" in fw:
                 raise t.fail("a rim's section needs its radius: give the mean speed too, its "
-                             "radius v/ω", "flywheel", "density")
+                             "radius v/ω", "flywheel", "width_to_thickness")
         if "radius" in fw and "diameter" in fw:
             raise t.fail("give the rim's mean radius or its diameter, not both", "flywheel",
                          "diameter")
@@ -188,23 +249,24 @@ def read_wheel(t: Tables, fw: dict, metre: float, rad_s: float,
             raise t.fail("the rim's mass is found for a stated radius, or its radius for a "
                          "stated mass: give one", "flywheel",
                          "radius" if "radius" in fw else "diameter")
-        for key, what, scale in (("mass", "the rim's mass", 1.0),
-                                 ("radius", "the rim's mean radius", metre),
-                                 ("diameter", "the rim's mean diameter", metre / 2)):
+        if "mass" in fw:
+            out["mass"] = positive("mass", "the rim's mass")
+        for key, what, half in (("radius", "the rim's mean radius", 1),
+                                ("diameter", "the rim's mean diameter", 2)):
             if key in fw:
-                out["radius" if key == "diameter" else key] = positive(key, what, scale)
-        if ("density" in fw) != ("width_to_thickness" in fw) or (
+                out["radius"] = read_length(t, fw, key, "flywheel", what, metre) / half
+        if ("density" in fw) != ("width_to_thickness" in fw) and "hoop_stress" not in fw or (
                 "density" in fw and "mass" not in out and "radius" not in out):
             raise t.fail("a rim's section comes from its density and width_to_thickness (b/t), "
                          "with its mass or mean radius: give them all", "flywheel",
                          "density" if "density" in fw else "width_to_thickness")
         if "rim_share" in fw:
             out["rim_share"] = positive("rim_share", "the rim's share of the flywheel's I")
-            if out["rim_share"] > 1 or "rim_speed" in out:
+            if out["rim_share"] > 1 or "rim_speed" in out and "speed" not in out:
                 raise t.fail("rim_share is the part of I the rim gives (0.9 when the hub and arms "
-                             "give a tenth), at most 1, with a radius or a mass, not rim_speed",
-                             "flywheel", "rim_share")
-        if "density" in fw:
+                             "give a tenth), at most 1, with a radius, a mass, or a rim speed "
+                             "with the mean speed", "flywheel", "rim_share")
+        if "density" in fw and "width_to_thickness" in fw:
             out["density"] = positive("density", "the rim's density (kg/m³)")
             out["width_to_thickness"] = positive("width_to_thickness",
                                                  "the rim's width over its thickness")
@@ -216,8 +278,8 @@ def read_wheel(t: Tables, fw: dict, metre: float, rad_s: float,
             raise t.fail("a radius of gyration k needs the flywheel's mass: I = m·k²",
                          "flywheel", "radius_of_gyration")
         out["mass"] = positive("mass", "the flywheel's mass")
-        out["radius_of_gyration"] = positive("radius_of_gyration", "the radius of gyration",
-                                             metre)
+        out["radius_of_gyration"] = read_length(t, fw, "radius_of_gyration", "flywheel",
+                                                "the radius of gyration", metre)
         out["inertia"] = out["mass"] * out["radius_of_gyration"] ** 2
     else:
         for key in ("mass", "radius"):

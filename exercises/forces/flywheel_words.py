@@ -110,10 +110,16 @@ def lines(sol) -> list[str]:
                          speed=numeral(ex.rim_speed, "g"),
                          mass=numeral(q["rim_mass"].value["value"])))
     elif ex.rim_speed is not None and "rim_mass" in q:
+        if ex.hoop_stress is not None:
+            out.append(words("a rim whose hoop stress is {stress} MPa at {density} kg/m³: its "
+                             "speed v = √(σ/ρ) = {speed} m/s", stress=numeral(
+                                 ex.hoop_stress / 1e6, "g"), density=numeral(ex.density, "g"),
+                             speed=numeral(ex.rim_speed)))
+        share = "I" if ex.rim_share == 1.0 else f"{numeral(ex.rim_share, 'g')}·I"
         out.append(words("a rim whose mean speed is {speed} m/s: its radius r = v/ω = "
-                         "{radius}, its mass m = I/r² = {mass} kg",
+                         "{radius}, its mass m = {share}/r² = {mass} kg",
                          speed=numeral(ex.rim_speed, "g"), radius=_length(sol, ex.radius),
-                         mass=numeral(q["rim_mass"].value["value"])))
+                         share=share, mass=numeral(q["rim_mass"].value["value"])))
     elif "rim_mass" in q and ex.radius_of_gyration is not None:
         out.append(words("a flywheel whose radius of gyration is {radius}: its mass m = I/k² "
                          "= {mass} kg", radius=_length(sol, ex.radius),
