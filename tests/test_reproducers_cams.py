@@ -26,7 +26,9 @@ from tarsim.constructions.cams.rounding import join_bound, lift_bounds
 from tarsim.constructions.cams.survey import survey
 from tarsim.constructions.reference.cam_laws import LAWS
 from tarsim.constructions.reference.cam_profile import follower_motion
+from tarsim.exercises.cams.cam_file import parse_cam
 from tarsim.exercises.cams.cam_solution import solve_cam
+from tarsim.exercises.cams.solve import solve as solve_any
 from tarsim.exercises.cli import cli
 from tests.random_cams import extremes
 
@@ -269,3 +271,57 @@ def test_a_station_meant_for_a_join_reads_the_closed_form_within_its_join_bound(
     # lift from the height rounds it by a rounding of the lift.
     got = follower_motion(segs, theta).y
     assert abs(got - lift) <= join_bound(segs, theta) + 2.2e-16 * lift
+
+
+# ----- a tangent cam's knife edge coming onto a small nose -----------------------------------
+def tangent_nose_start(r1: float, r2: float, lift: float, roller: float, w: float) -> float:
+    """The follower's acceleration as it comes onto a tangent cam's nose, by the closed form
+    −ω²·OQ·[cos u + (cos²u − sin²u)/R + sin²u cos²u/R³], R = √(n² − sin²u), n = (r₂ + r)/OQ
+    (a slider-crank of crank OQ = r₁ + h − r₂ and rod r₂ + r), u = α − φ the nose's turn
+    from the apex there, cos α = (r₁ − r₂)/OQ and tan φ = OQ sin α/(r₁ + r)."""
+    oq = r1 + lift - r2
+    alpha = math.acos((r1 - r2) / oq)
+    u = alpha - math.atan2(oq * math.sin(alpha), r1 + roller)
+    c, s = math.cos(u), math.sin(u)
+    big = math.sqrt(((r2 + roller) / oq) ** 2 - s * s)
+    return -w * w * oq * (c + (c * c - s * s) / big + s * s * c * c / big ** 3)
+
+
+def test_C5_tangent_knife(tmp_path):  # noqa: N802 (named after its file)
+    """A tangent cam under a knife edge (r₁ 25, r₂ 8, h 12 mm, 600 rpm): the acceleration as
+    the follower comes onto the nose, −1126.353115 m/s², is right, and the outline's exact
+    rates agree with it, so the run ends with exit 0 (differences at the join once gave
+    −1126.34963 and failed the check)."""
+    result, out = solve("C5-tangent-knife", tmp_path=tmp_path)
+    assert result.exit_code == 0, result.output
+    assert "check FAILED" not in result.output
+    got = json.loads((out / "results.json").read_text(encoding="utf-8"))["quantities"]
+    exact = tangent_nose_start(0.025, 0.008, 0.012, 0.0, 600 * math.pi / 30)
+    # Both are the same slider-crank in double precision: 10⁻⁹ leaves 10⁴ ulps of room.
+    assert got["a_nose_start"]["value"] == pytest.approx(exact, rel=1e-9)
+    assert exact == pytest.approx(-1126.353115, abs=5e-7)      # the hand value, to its digits
+    assert got["a_nose_start"]["passed"] and got["a_nose_max"]["passed"]
+
+
+@settings(max_examples=30, deadline=None)
+@given(st.floats(10, 60), st.floats(0.1, 0.9), st.floats(0.05, 2.0), st.floats(0.05, 1.5),
+       st.sampled_from(["knife-edge", "roller"]), st.floats(0.0, 0.999))
+def test_no_check_fails_on_a_tangent_cam(r1, nose, lift, roller, follower, at):
+    """Property: on any tangent cam (nose 0.1 to 0.9 of r₁, lift 0.05 to 2 r₁), under a knife
+    edge or a roller up to 1.5 r₁, every motion the books ask and one asked anywhere on the
+    lift pass their check, and the acceleration as the follower comes onto the nose is the
+    closed form's to 10⁻⁹ of ω²·OQ (the check's own tolerance, 10⁴ ulps)."""
+    r = roller * r1 if follower == "roller" else 0.0
+    radius = f"radius = {r!r}\n" if follower == "roller" else ""
+    where = 2 * math.degrees(math.acos((r1 - nose * r1) / (r1 + lift * r1 - nose * r1))) * at
+    text = (f'name = "tangent"\n[units]\nlength = "mm"\nspeed = "rpm"\n[cam]\n'
+            f'kind = "tangent"\nbase_radius = {r1!r}\nnose_radius = {nose * r1!r}\n'
+            f'lift = {lift * r1!r}\nspeed = 600\n[follower]\nkind = "{follower}"\n{radius}'
+            f'[ask]\nat = [{math.floor(where * 1e6) / 1e6!r}]\n')
+    q = solve_any(parse_cam(text, "cam.toml")).results["quantities"]
+    failed = [k for k, v in q.items() if v.get("passed") is False]
+    assert not failed, failed
+    w = 20 * math.pi
+    oq = (r1 + lift * r1 - nose * r1) / 1000
+    exact = tangent_nose_start(r1 / 1000, nose * r1 / 1000, lift * r1 / 1000, r / 1000, w)
+    assert abs(q["a_nose_start"]["value"] - exact) <= 1e-9 * w * w * oq
