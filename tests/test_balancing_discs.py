@@ -70,6 +70,10 @@ def test_b2b_eccentrics_balanced():
         assert q[f"mass_{name}"].value["value"] == pytest.approx(abs(v) / 0.060, rel=REL)
         assert q[f"angle_{name}"].value["value"] == pytest.approx(
             math.degrees(cmath.phase(v)) % 360, abs=1e-7)
+        assert q[f"force_{name}"].value["value"] == pytest.approx(abs(v) * OMEGA ** 2,
+                                                                  rel=REL)
+    # L and M are balance masses, not bearings: no force is said to be on a bearing
+    assert not any("bearing" in line for line in s.lines())
     assert abs(at_l) / 0.060 == pytest.approx(0.0684005, abs=5e-8)   # the book's answers
     assert math.degrees(cmath.phase(at_l)) % 360 == pytest.approx(241.945, abs=5e-4)
     assert math.degrees(cmath.phase(at_m)) % 360 == pytest.approx(358.055, abs=5e-4)

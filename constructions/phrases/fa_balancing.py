@@ -181,6 +181,10 @@ WORDS: dict[str, str] = {
     "{angle}° (ω = {speed} rad/s)":
         "نیروی نامیزان روی یاتاقانی در صفحهٔ {plane}: m·r·ω² = {force} N با زاویهٔ "
         "{angle}° (ω = {speed} rad/s)",
+    "the out-of-balance force in plane {plane}, the masses' force and couple shared between "
+    "the two planes: m·r·ω² = {force} N at {angle}° (ω = {speed} rad/s)":
+        "نیروی نامیزان در صفحهٔ {plane}، نیرو و کوپل جرم‌ها میان دو صفحه تقسیم شده: m·r·ω² = "
+        "{force} N با زاویهٔ {angle}° (ω = {speed} rad/s)",
     "bearing {name} at {place}: the out-of-balance force {force} N at {angle}°, the force and "
     "the couple shared between the bearings by moments":
         "یاتاقان {name} در {place}: نیروی نامیزان {force} N با زاویهٔ {angle}°؛ نیرو و کوپل "

@@ -2,8 +2,9 @@
 bearings", "the out-of-balance forces at the bearings"), in N where the speed is given.
 
 - A rotor balanced in two planes: each plane's balancing product turning at ω, m·r·ω², is
-  the out-of-balance force a bearing in that plane carries before the masses are added,
-  opposite the balancing mass (``force_A``).
+  the out-of-balance force the masses put on that plane before the balance masses are
+  added, opposite the balancing mass (``force_A``); said to be on a bearing only where the
+  file says the plane is a bearing's (``[[balance]] bearing = true``).
 - A rotor with no balancing plane, its bearings named in ``[rotor] bearings = { L = 0,
   R = 800 }``: the out-of-balance force R and couple C read off its polygons are shared
   between the bearings by moments about one of them, F_R = ω²·C_L/(z_R − z_L) with
@@ -39,14 +40,22 @@ def _loads(s) -> dict[str, tuple[float, float]]:
             for p in s.exercise.rotor.planes if p.name not in s.balance.none}
 
 
+_ON = {True: "the out-of-balance force on a bearing in plane {plane}: m·r·ω² = {force} N at "
+             "{angle}° (ω = {speed} rad/s)",
+       False: "the out-of-balance force in plane {plane}, the masses' force and couple shared "
+              "between the two planes: m·r·ω² = {force} N at {angle}° (ω = {speed} rad/s)"}
+"""Each plane's force, on a bearing where the file says the plane is a bearing's."""
+
+
 def plane_force_lines(s) -> list[str]:
-    """A two-plane balance's force on a bearing in each plane, where the speed is given (a
-    rotor's: an engine's balance planes are its wheels, whose hammer blow is asked)."""
+    """A two-plane balance's force in each plane, where the speed is given (a rotor's: an
+    engine's balance planes are its wheels, whose hammer blow is asked), said to be on a
+    bearing where the file names the plane a bearing's."""
     r = s.exercise.rotor
     if len(r.planes) != 2 or r.speed is None or s.exercise.engine is not None:
         return []
-    return [words("the out-of-balance force on a bearing in plane {plane}: m·r·ω² = {force} "
-                  "N at {angle}° (ω = {speed} rad/s)", plane=name,
+    bearings = s.exercise.bearing_planes
+    return [words(_ON[name in bearings], plane=name,
                   force=numeral(math.hypot(*v) * r.speed ** 2), angle=numeral(_angle(v), ".2f"),
                   speed=numeral(r.speed)) for name, v in _loads(s).items()]
 

@@ -43,7 +43,7 @@ _UNITS = ("length", "speed")
 _KEYS = {"rotor": ("speed", "about", "bearings", "angles"),
          "mass": ("name", "mass", "weight", "density", "diameter", "thickness", "radius", "angle",
                   "plane", "between", "wheels"),
-         "balance": ("name", "plane", "radius", "mass", "weight"),
+         "balance": ("name", "plane", "radius", "mass", "weight", "bearing"),
          "engine": ("speed", "crank", "stroke", "rod", "reciprocating", "balanced", "at",
                     "revolving", "balance_radius", "balance_mass", "firing_order", "strokes",
                     "road_speed", "wheel_diameter", "vee", "radial", "dead_load", "hammer_blow",
@@ -77,6 +77,9 @@ class BalanceExercise:
     """The file gives its masses as weights in N (:mod:`.rotor_weights`)."""
     discs: tuple[Disc, ...] = ()
     """The masses the file gives as solid discs, by density and size (:mod:`.rotor_discs`)."""
+    bearing_planes: tuple[str, ...] = ()
+    """The [[balance]] planes the file says are bearings' (``bearing = true``): the force on
+    each is then said to be on a bearing, and on a plane elsewhere."""
     clockwise: bool = False
     """The file measures its angles clockwise (``[rotor] angles = "cw"``), as some books do.
     The rotor is then solved as its mirror image, in which every angle given and found reads
@@ -118,6 +121,7 @@ def parse_balance(text: str, filename: str = "<string>", exercise_id: str = "rot
     if "engine" in data:
         refuse_weights(t, "in an engine's file")
         refuse_discs(t, "in an engine's file")
+        _bearing_planes(t, "an engine's wheels")
         engine, primary = _engine(t, metre)
         driving, trailing = (None, None) if primary else wheel_rotors(
             t, _one(t, "engine"), engine, metre, lambda: _planes(t, metre),
@@ -147,7 +151,8 @@ def parse_balance(text: str, filename: str = "<string>", exercise_id: str = "rot
     return BalanceExercise(rotor=Rotor(tuple(masses), tuple(planes), speed,
                                        _about(t, planes, metre),
                                        _bearings(t, planes, metre, taken)),
-                           weights=weights, discs=tuple(discs), **common)
+                           weights=weights, discs=tuple(discs),
+                           bearing_planes=_bearing_planes(t, None, planes), **common)
 
 
 def _about(t: Tables, planes: list, metre: float) -> float | None:
@@ -187,6 +192,25 @@ def _bearings(t: Tables, planes: list, metre: float, taken: dict[str, str]
     if out[0][1] == out[1][1]:
         raise t.fail("the two bearings stand at the same axial position: they must be apart to "
                      "share a couple", "rotor", "bearings")
+    return tuple(out)
+
+
+def _bearing_planes(t: Tables, refused: str | None, planes: list | None = None
+                    ) -> tuple[str, ...]:
+    """The names of the [[balance]] planes the file says are bearings' (``bearing = true``),
+    read in a rotor's balance; refused, saying ``refused``, where none is read."""
+    out = []
+    for i, entry in enumerate(t.entries("balance")):
+        if "bearing" not in entry:
+            continue
+        if refused is not None:
+            raise t.fail(f"bearing = true says a balancing plane is a bearing's, asked its force; "
+                         f"not taken for {refused}: leave it out", "balance", "bearing", i)
+        if not isinstance(entry["bearing"], bool):
+            raise t.fail(f"bearing says whether the plane is a bearing's: true or false, got "
+                         f"{entry['bearing']!r:.20}", "balance", "bearing", i)
+        if entry["bearing"]:
+            out.append(planes[i].name)
     return tuple(out)
 
 
