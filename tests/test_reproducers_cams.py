@@ -301,6 +301,16 @@ def test_C5_tangent_knife(tmp_path):  # noqa: N802 (named after its file)
     assert got["a_nose_start"]["value"] == pytest.approx(exact, rel=1e-9)
     assert exact == pytest.approx(-1126.353115, abs=5e-7)      # the hand value, to its digits
     assert got["a_nose_start"]["passed"] and got["a_nose_max"]["passed"]
+    # The follower leaves the flank at tan φ = OQ sin α/r₁ (no roller): 43.22°, said of the
+    # knife edge the file gives, in English and in Persian.
+    alpha = math.acos(17 / 29)
+    phi = math.degrees(math.atan2(29 * math.sin(alpha), 25))
+    assert f"the knife edge leaves the flank {phi:.4g}° after" in result.output
+    assert "roller" not in result.output
+    result, out = solve("C5-tangent-knife", "--lang", "fa", tmp_path=tmp_path / "fa")
+    steps = (out / "steps.md").read_text(encoding="utf-8")
+    assert "لبهٔ نوک‌تیز پیرو ۴۳٫۲۲° پس از آغاز صعود از یال جدا می‌شود" in steps
+    assert "غلتک" not in steps
 
 
 @settings(max_examples=30, deadline=None)

@@ -164,6 +164,10 @@ WORDS: dict[str, str] = {
         "مرکز دماغه به فاصلهٔ {d} از مرکز بادامک، خیز {h}، زاویهٔ صعود {alpha}°",
     "the nose's radius {r}; the roller leaves the flank {phi}° after the lift begins":
         "شعاع دماغه {r}؛ غلتک {phi}° پس از آغاز صعود از یال جدا می‌شود",
+    "the nose's radius {r}; the knife edge leaves the flank {phi}° after the lift begins":
+        "شعاع دماغه {r}؛ لبهٔ نوک‌تیز پیرو {phi}° پس از آغاز صعود از یال جدا می‌شود",
+    "the flank's radius {R}; the knife edge leaves the flank {phi}° after the lift begins":
+        "شعاع یال {R}؛ لبهٔ نوک‌تیز پیرو {phi}° پس از آغاز صعود از یال جدا می‌شود",
     "the flank's radius {R}; the face leaves the flank {phi}° after the lift begins":
         "شعاع یال {R}؛ سطح تخت پیرو {phi}° پس از آغاز صعود از یال جدا می‌شود",
     "{what}: {name} = {value} {unit} at θ = {theta}°   {check}":

@@ -237,15 +237,9 @@ class ArcCamSolution(ChapterFiles):
             out = [words("the disc's centre {d} from the shaft, the disc's radius {r}: the lift "
                          "{h}", d=self._length(c.d), r=self._length(c.nose),
                          h=self._length(c.lift))]
-        elif c.kind == "tangent":
-            out.append(words("the nose's radius {r}; the roller leaves the flank {phi}° after "
-                             "the lift begins", r=self._length(c.nose),
-                             phi=numeral(math.degrees(c.phi), ".4g")))
         else:
-            out.append(words("the flank's radius {R}; the face leaves the flank {phi}° after "
-                             "the lift begins" if c.flat else
-                             "the flank's radius {R}; the roller leaves the flank {phi}° after "
-                             "the lift begins", R=self._length(c.flank_radius),
+            out.append(words(_LEAVES[c.kind == "tangent", _who(c)], r=self._length(c.nose),
+                             R=self._length(c.flank_radius),
                              phi=numeral(math.degrees(c.phi), ".4g")))
         unit = ex.length_unit
         for r in self.readings:
@@ -308,6 +302,26 @@ class ArcCamSolution(ChapterFiles):
                                        x_range=(0.0, top), x_ticks=ticks,
                                        mark_legend=words("the motions asked"))
         return out
+
+
+_LEAVES = {
+    (True, "roller"): "the nose's radius {r}; the roller leaves the flank {phi}° after the lift "
+                      "begins",
+    (True, "knife edge"): "the nose's radius {r}; the knife edge leaves the flank {phi}° after "
+                          "the lift begins",
+    (False, "face"): "the flank's radius {R}; the face leaves the flank {phi}° after the lift "
+                     "begins",
+    (False, "roller"): "the flank's radius {R}; the roller leaves the flank {phi}° after the "
+                       "lift begins",
+    (False, "knife edge"): "the flank's radius {R}; the knife edge leaves the flank {phi}° after "
+                           "the lift begins"}
+"""Where the follower leaves the flank, said of the follower the file gives (a tangent cam's
+nose radius, or a circular-arc cam's flank radius, first)."""
+
+
+def _who(cam) -> str:
+    """The follower as the steps name it: a face, a roller or a knife edge (no roller)."""
+    return "face" if cam.flat else "roller" if cam.roller else "knife edge"
 
 
 def _fastest(cam) -> float:
