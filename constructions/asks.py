@@ -461,8 +461,9 @@ class Effort(Ask):
     which that inertia grows to the rest of the piston's load (rad/s), the crank effort
     (the rod's push on the crank pin square to the crank, + CCW), the turning moment it
     gives (N·m, CCW +), the thrust on the shaft's bearings (the push along the crank, + toward the
-    shaft), the rod's correction couple (N·m: :mod:`~.forces.equivalent`) and the flywheel's
-    angular acceleration (T − T_mean)/I (rad/s², + speeding up)."""
+    shaft), the rod's correction couple (N·m: :mod:`~.forces.equivalent`), the turning
+    moment of the reciprocating parts' or the rod's inertia loads alone (N·m) and the
+    flywheel's angular acceleration (T − T_mean)/I (rad/s², + speeding up)."""
 
     word: str
     order: ClassVar[int] = 9
@@ -471,19 +472,23 @@ class Effort(Ask):
     def name(self) -> str:
         """``piston_effort``, ``wall_thrust``, ``inertia_force``, ``reversal_speed``,
         ``crank_effort``, ``turning_moment``, ``bearing_thrust``, ``correction_couple``,
-        ``flywheel_alpha`` or ``rod_radius_of_gyration``."""
+        ``flywheel_alpha``, ``rod_radius_of_gyration``, ``inertia_torque_reciprocating`` or
+        ``inertia_torque_rod``."""
         return self.word
 
 
 EFFORTS = ("piston_effort", "wall_thrust", "inertia_force", "reversal_speed", "crank_effort",
            "turning_moment", "bearing_thrust", "correction_couple", "flywheel_alpha",
-           "rod_radius_of_gyration")
-"""The efforts an exercise may ask: the first four, correction_couple and the rod's radius of
-gyration about G (m, from its mass: a pendulum test's, or its given I) of a slider-crank
-only; flywheel_alpha, the flywheel's α (rad/s²) against a mean resisting torque, where
-[forces] gives the flywheel and the engine's power or that torque."""
+           "rod_radius_of_gyration", "inertia_torque_reciprocating", "inertia_torque_rod")
+"""The efforts an exercise may ask: the first four, correction_couple, the rod's radius of
+gyration about G (m, from its mass: a pendulum test's, or its given I) and the inertia
+torque on the crankshaft split as the books split it, of the reciprocating parts and of the
+rod (N·m, CCW +, each part's inertia loads alone), of a slider-crank only; flywheel_alpha,
+the flywheel's α (rad/s²) against a mean resisting torque, where [forces] gives the
+flywheel and the engine's power or that torque."""
 
-MOMENTS = ("turning_moment", "correction_couple")
+MOMENTS = ("turning_moment", "correction_couple", "inertia_torque_reciprocating",
+           "inertia_torque_rod")
 """The efforts that are moments (N·m); reversal_speed is a speed (rad/s), the rest forces
 (N)."""
 

@@ -25,6 +25,8 @@ _EFFORTS = {
     "correction_couple": "the correction couple",
     "flywheel_alpha": "the flywheel's angular acceleration",
     "rod_radius_of_gyration": "the rod's radius of gyration about G",
+    "inertia_torque_reciprocating": "the inertia torque of the reciprocating parts",
+    "inertia_torque_rod": "the inertia torque of the connecting rod",
 }
 """An engine's efforts as the course names them (:data:`~tarsim.constructions.asks.EFFORTS`)."""
 

@@ -15,7 +15,7 @@ from ..model import Mechanism
 from ..record import Panel
 from .equivalent import correction_couple, reversal_speed, rod_of
 from .groups import Dyad, group_of
-from .polygons import drawn_forces
+from .polygons import drawn_forces, inertia_torque
 from .result import Forces
 from .rounding import read_conditioning
 
@@ -63,9 +63,10 @@ def forces_askable(mech: Mechanism) -> set[str]:
     out = force_names(mech) | {"crank_effort", "turning_moment", "bearing_thrust",
                                "flywheel_alpha"}
     if isinstance(group, Dyad) and group.guide is not None:
-        out |= {"piston_effort", "wall_thrust", "inertia_force", "reversal_speed"}
+        out |= {"piston_effort", "wall_thrust", "inertia_force", "reversal_speed",
+                "inertia_torque_reciprocating"}
         if rod_of(mech) is not None:
-            out |= {"correction_couple", "rod_radius_of_gyration"}
+            out |= {"correction_couple", "rod_radius_of_gyration", "inertia_torque_rod"}
     return out
 
 
@@ -102,6 +103,15 @@ def answer(work, ask) -> Answer:
     elif isinstance(ask, A.Effort) and ask.word == "reversal_speed":
         value = {"value": reversal_speed(work.mechanism, forces.efforts["piston_effort"],
                                          forces.efforts["inertia_force"])}
+    elif isinstance(ask, A.Effort) and ask.word.startswith("inertia_torque_"):
+        # one part's inertia loads alone through the same polygons: the piston, or the rod
+        part = group_of(work.mechanism).j if ask.word.endswith("reciprocating") \
+            else rod_of(work.mechanism)[0]
+        if work.loads.mass_of(part) is None:
+            raise TarsimError(f"{ask.word} is the turning moment of link {part}'s inertia "
+                              f"loads alone: give link {part} a [[mass]]")
+        value = {"value": inertia_torque(work, part)}
+        read_as = A.Effort("turning_moment")    # the turning moment's rounding
     elif isinstance(ask, A.Effort) and ask.word == "rod_radius_of_gyration":
         m = work.loads.mass_of(rod_of(work.mechanism)[0])
         if m is None or m.inertia == 0.0:

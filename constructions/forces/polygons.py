@@ -38,7 +38,7 @@ from .result import Forces, free_bodies
 from .rounding import answer_roundings, load_roundings
 from .sliding import dyad_slides, lever_slides, link_rates, pin_rests, pin_roundings, say_resting
 
-__all__ = ["draw_forces", "drawn_forces"]
+__all__ = ["draw_forces", "drawn_forces", "inertia_torque"]
 
 
 def draw_forces(work) -> Forces:
@@ -225,3 +225,23 @@ def _pin_couples(known, pins, sizes, rates, at, rho: float, still: dict[int, flo
 def drawn_forces(work) -> Forces:
     """The position's force polygons, drawn once."""
     return work.shared("forces", lambda: draw_forces(work))
+
+
+def inertia_torque(work, link: int) -> float:
+    """The turning moment on the crankshaft of ``link``'s inertia loads alone (N·m, CCW +),
+    as the books split the inertia torque between the reciprocating parts and the rod: the
+    same polygons drawn again, on a scratch sheet at the same scale, with only that link's
+    inertia force and couple (no weight, gas or friction) — what that part asks of the crank.
+    ``link`` has a mass (0 without one)."""
+    def part() -> float:
+        forces, mech = drawn_forces(work), work.mechanism
+        c = work.assembly
+        at = {name: c.point(name).xy for name in mech.point_names}
+        known = {k: [ld for ld in ls if ld[3] == f"Fi{link}"] if k == link else []
+                 for k, ls in forces.loads.items()}
+        sheet = c.scratch()                 # the drawing so far, without its polygons
+        sheet.steps = {k: st for k, st in c.steps.items() if not k.startswith("force:")}
+        found = _analyse(sheet, mech, group_of(mech), at, known, forces.scale, None)
+        return found.efforts["turning_moment"]
+
+    return work.shared(f"inertia torque {link}", part)

@@ -54,6 +54,8 @@ WORDS: dict[str, str] = {
     "the correction couple": "کوپل تصحیح",
     "the flywheel's angular acceleration": "شتاب زاویه‌ای چرخ لنگر",
     "the rod's radius of gyration about G": "شعاع ژیراسیون میلهٔ رابط حول G",
+    "the inertia torque of the reciprocating parts": "گشتاور اینرسی قطعات رفت‌وبرگشتی",
+    "the inertia torque of the connecting rod": "گشتاور اینرسی میلهٔ رابط",
     "{what}, {links}": "{what}، {links}",
     "Force polygon": "چندضلعی نیرو",
     # a gear train's

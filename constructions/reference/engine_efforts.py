@@ -10,7 +10,7 @@ import math
 
 from ..loads import GRAVITY, Loads, crank_tangent, stroke_axis
 from ..model import Mechanism
-from .kinetostatics import Statics, loads_on, world_point
+from .kinetostatics import Statics, loads_on, power_torque, world_point
 from .solver import Kinematics, point_acceleration
 
 __all__ = ["efforts"]
@@ -61,6 +61,14 @@ def efforts(mech: Mechanism, kin: Kinematics, loads: Loads, statics: Statics
             out["rod_radius_of_gyration"] = math.sqrt(k2)
         elif m is not None and m.inertia > 0.0:
             out["rod_radius_of_gyration"] = math.sqrt(m.inertia / m.mass)
+        # the inertia torque split as the books split it, each part's inertia loads alone
+        # by the balance of power: their power over ω is what they turn the crank with
+        for word, part in (("inertia_torque_reciprocating", s.link),
+                           ("inertia_torque_rod", rod[0] if rod else None)):
+            m = loads.mass_of(part) if part is not None else None
+            if m is not None:
+                alone = Loads(masses=(m,), gravity=0.0)
+                out[word] = -power_torque(mech, kin, alone)
         # ω² scales the inertia alone: F_P(ω_r) = rest − F_I·(ω_r/ω)² = 0
         rest = out["piston_effort"] + out["inertia_force"]
         if out["inertia_force"] and rest / out["inertia_force"] > 0:
