@@ -153,8 +153,10 @@ def test_the_steps_say_how_each_given_speed_came_in_english_and_persian():
     (ROAD.format(v=60, R=0.75, t=1.5, d=0.8), "curve radius of 0.75 m is not more than half "
                                               "the track"),
     (ROAD.format(v=60, R=0.5, t=1.5, d=0.8), "is not more than half the track"),
-    (ROAD.format(v=60, R=50, t=1.5, d=0.8).replace("track = 1.5\n", ""), "[road] needs track"),
-    (ROAD.format(v=60, R=50, t=1.5, d=0.8).replace("inner = 4\n", ""), "[road] needs inner"),
+    (ROAD.format(v=60, R=50, t=1.5, d=0.8).replace("track = 1.5\n", ""),
+     "[road] track is missing"),
+    (ROAD.format(v=60, R=50, t=1.5, d=0.8).replace("inner = 4\n", ""),
+     "[road] inner is missing"),
     (ROAD.format(v=60, R=50, t=1.5, d=0.8).replace("inner = 4", "inner = 3"),
      "outer and inner are both member 3"),
     (ROAD.format(v=0, R=50, t=1.5, d=0.8), "road_speed must be positive"),
@@ -167,3 +169,13 @@ def test_road_data_that_cannot_hold_are_refused_in_one_line(road, words):
         parse_train(differential(road), "car.toml")
     assert words in str(e.value) and str(e.value).startswith("car.toml:")
     assert "\n" not in str(e.value) and len(str(e.value)) < 220
+
+
+def test_road_data_put_in_input_are_sent_to_road():
+    """The trial's first try, road_speed in [[input]], is refused naming [road]."""
+    text = differential("[[input]]\nmember = 3\nroad_speed = 54\n[[input]]\nmember = 4\n"
+                        "speed = 300\n")
+    with pytest.raises(InputError) as e:
+        parse_train(text, "car.toml")
+    assert "road_speed is the road's: give a car on a curve as [road]" in str(e.value)
+    assert str(e.value).startswith("car.toml:") and "\n" not in str(e.value)

@@ -21,9 +21,12 @@ from tarsim.constructions.gears.train import SpeedUnits
 from tarsim.constructions.narration import Phrase, Word, phrase, significant
 from tarsim.constructions.units import LENGTH_UNITS
 
-__all__ = ["RoadTables", "wheel_speed"]
+__all__ = ["ROAD_KEYS", "RoadTables", "wheel_speed"]
 
 _KEYS = ("road_speed", "curve_radius", "track", "wheel_diameter", "outer", "inner", "sense")
+ROAD_KEYS = _KEYS[:-1]
+"""The road's own settings (``sense`` is an input's too): found in ``[input]``, they are
+sent to ``[road]``."""
 _FIGURES = 10
 """An rpm speed, v/(2π·r) turns a second, has π in it, and a gear train's numbers are exact
 fractions: it is taken at ten significant figures, far below the four a book states."""
@@ -69,7 +72,7 @@ class RoadTables:
         self.known(t, _KEYS, "road")
         for k in _KEYS[:-1]:
             if k not in t:
-                raise self.fail(f"[road] needs {k} too: road_speed (km/h); curve_radius, "
+                raise self.fail(f"{k} is missing: road_speed (km/h); curve_radius, "
                                 f"track, wheel_diameter ({units.length}); outer and inner, "
                                 "the members carrying the road wheels", "road")
         data = {k: self.exact(t[k], f"the road's {k}", "road", k) for k in _KEYS[:4]}
@@ -82,8 +85,9 @@ class RoadTables:
             raise self.fail(f"outer and inner are both member {outer}: name the two members "
                             "that carry the road wheels (the two axle gears)", "road", "inner")
         if data["curve_radius"] <= data["track"] / 2:
-            raise self.fail(f"a curve radius of {float(data['curve_radius']):g} {units.length} "
-                            f"is not more than half the track ({float(data['track'] / 2):g}): "
+            unit = units.length
+            raise self.fail(f"a curve radius of {float(data['curve_radius']):g} {unit} is not "
+                            f"more than half the track ({float(data['track'] / 2):g} {unit}): "
                             "the inner wheel would not go round; give the mean radius",
                             "road", "curve_radius")
         sense = t.get("sense", "ccw")

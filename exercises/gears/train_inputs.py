@@ -10,7 +10,7 @@ from fractions import Fraction
 from typing import Any
 
 from tarsim.constructions.gears.train import SpeedUnits
-from .road_wheels import RoadTables
+from .road_wheels import ROAD_KEYS, RoadTables
 
 __all__ = ["InputTables"]
 
@@ -56,6 +56,11 @@ class InputTables(RoadTables):
         """The member whose speed is given (any member but the fixed one, the output's
         shaft too), and its speed, CCW-positive; None where no speed is given (a file that
         asks only ratios or torques needs none)."""
+        road = [k for k in t if k in ROAD_KEYS] if isinstance(t, dict) else []
+        if road:
+            raise self.fail(f"{road[0]} is the road's: give a car on a curve as [road] "
+                            "(road_speed, curve_radius, track, wheel_diameter, outer, inner) "
+                            "in place of [input]", "input", road[0], index)
         if not isinstance(t, dict) or "member" not in t:
             raise self.fail("give the driving member and its speed: member = 2, "
                             f"speed = 80 ({units.speed}), sense = \"cw\"", "input",
