@@ -159,7 +159,7 @@ def test_the_bundled_ratio_cam_is_its_closed_forms():
     (CAM, "sense = \"cw\"", "base", "did you mean 'base_radius'?"),
     (CAM, "radius = 10 ", "radious", "did you mean 'radius'?"),
     (CAM, 'law = "simple harmonic"', "acceleraton_ratio", "did you mean 'acceleration_ratio'?"),
-    (CAM, 'law = "simple harmonic"', "colour", "expected kind, angle, lift, law"),
+    (CAM, 'law = "simple harmonic"', "colour", "expected kind, angle, time, lift, law"),
     (CAM, "jerk = true", "jerks", "did you mean 'jerk'?"),
     (CAM, "jerk = true", "torque", "a cam's [ask] table takes jerk = true"),
     (ARC, "lift = 15", "nose_radios", "did you mean 'nose_radius'?"),

@@ -49,6 +49,8 @@ class Segment:
     """A modified uniform velocity's blended fraction at each end."""
     split: float = 0.5
     """The fraction of a parabolic segment that accelerates, the rest retarding."""
+    time: float | None = None
+    """The time (s) the file gave the segment by, its angle found at the cam's speed."""
 
 
 @dataclass

@@ -164,6 +164,9 @@ WORDS: dict[str, str] = {
         "مرکز دماغه به فاصلهٔ {d} از مرکز بادامک، خیز {h}، زاویهٔ صعود {alpha}°",
     "the nose's radius {r}; the roller leaves the flank {phi}° after the lift begins":
         "شعاع دماغه {r}؛ غلتک {phi}° پس از آغاز صعود از یال جدا می‌شود",
+    "segment {k} is given by its time, {t} s: at {n} {unit} the cam turns β = ωt = {angle}° in "
+    "it": "بخش {k} با زمانش داده شده است، {t} ثانیه: بادامک با سرعت {n} {unit} در این مدت "
+          "β = ωt = {angle}° می‌چرخد",
     "the nose's radius {r}; the knife edge leaves the flank {phi}° after the lift begins":
         "شعاع دماغه {r}؛ لبهٔ نوک‌تیز پیرو {phi}° پس از آغاز صعود از یال جدا می‌شود",
     "the flank's radius {R}; the knife edge leaves the flank {phi}° after the lift begins":

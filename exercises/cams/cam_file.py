@@ -22,6 +22,7 @@ from ..table_file import SPEEDS, Tables
 from .arc_cam_file import ARC_KINDS, base_key, eccentric_disc, parse_arc_cam
 from .cam_settings import (CAM_KEYS, FOLLOWER_KEYS, FOLLOWER_KINDS, SEGMENT_KEYS, UNIT_KEYS,
                            book_follower, book_law, refuse_unknown)
+from .segment_angles import degrees_per_second, refuse_untimed_speed, rest_angle, segment_angle
 
 __all__ = ["CamExercise", "parse_cam"]
 
@@ -107,6 +108,7 @@ def parse_cam(text: str, filename: str = "<string>", exercise_id: str = "cam",
 
     disc = _disc(cam, number, fail)
     base = _base(cam, disc, number, fail)
+    refuse_untimed_speed(cam, data.get("segment"), fail)
     rate = number(cam, "speed", "cam", "the cam's speed")
     sense = cam.get("sense", "ccw")
     if sense not in ("cw", "ccw") or rate <= 0:
@@ -119,7 +121,7 @@ def parse_cam(text: str, filename: str = "<string>", exercise_id: str = "cam",
         # is all nose.
         return eccentric_disc(tables, exercise_id, disc, follower, omega, _angles)
     segments = _disc_segments(disc, metre, data, fail) if disc else _segments(
-        data, follower, metre, length, number, fail)
+        data, follower, metre, length, number, fail, degrees_per_second(rate, speed))
     if base is None:                       # found from the greatest pressure angle
         base = _least_base(segments, follower, omega, cam, metre, length, fail)
     ask = data.get("ask", {})
@@ -234,46 +236,34 @@ def _least_base(segments: list[Segment], follower: Follower, omega: float,
     return base / metre
 
 
-def _rest(raw: list, number, fail) -> float:
-    """The angle of the one segment whose angle is "rest" (as the books say "dwell for the
-    rest of the revolution"): 360° less the others'; 0 where none is."""
-    rests = [i for i, t in enumerate(raw) if isinstance(t, dict) and t.get("angle") == "rest"]
-    if not rests:
-        return 0.0
-    if len(rests) > 1:
-        raise fail("only one segment may take the rest of the turn", "segment", "angle",
-                   rests[1])
-    taken = sum(number(t, "angle", "segment", "a segment's angle", i)
-                for i, t in enumerate(raw) if i != rests[0] and isinstance(t, dict))
-    if not taken < 360:
-        raise fail(f"the other segments take {taken:g}°, leaving no rest of the turn",
-                   "segment", "angle", rests[0])
-    return 360.0 - taken
-
-
 def _segments(data: dict[str, Any], follower: Follower, metre: float, length: str, number,
-              fail) -> list[Segment]:
+              fail, turn: float) -> list[Segment]:
     """The [[segment]] tables in turn: each checked, its lift in m (an arm's swing as the arc
-    at its end), and all of them a whole turn that brings the follower back."""
+    at its end), its angle in degrees or its time at the cam's ``turn`` (degrees a second),
+    and all of them a whole turn that brings the follower back. A setting no segment knows
+    is refused first, before an angle missing for it is."""
     raw = data.get("segment")
     if not isinstance(raw, list) or not raw:
         raise fail("list the follower's motion as [[segment]] tables (kind, angle, lift, law)",
                    key="segment")
+    for i, t in enumerate(raw):
+        if isinstance(t, dict):
+            refuse_unknown(t, SEGMENT_KEYS, f"[[segment]] {i + 1}", fail, "segment", i)
     segments, total, height = [], 0.0, 0.0
-    rest = _rest(raw, number, fail)
+    rest = rest_angle(raw, turn, number, fail)
     for i, t in enumerate(raw):
         kind = t.get("kind") if isinstance(t, dict) else None
         if kind not in ("rise", "dwell", "return"):
             raise fail(f"a segment is a rise, a dwell or a return, not {kind!r}", "segment",
                        "kind", i)
-        refuse_unknown(t, SEGMENT_KEYS, f"[[segment]] {i + 1}", fail, "segment", i)
         if kind == "dwell":
             _refuse_moving(t, fail, i)
-        angle = rest if t.get("angle") == "rest" else \
-            number(t, "angle", "segment", "a segment's angle", i)
+        angle, time = (rest, None) if t.get("angle") == "rest" else \
+            segment_angle(t, i, turn, number, fail)
         if not 0 < angle <= 360:
+            timed = f" ({time:g} s at the cam's speed)" if time else ""
             raise fail(f"a segment's angle must be more than 0° and at most 360°, got "
-                       f"{angle:g}°", "segment", "angle", i)
+                       f"{angle:g}°{timed}", "segment", "time" if time else "angle", i)
         lift, law, divisions, blend, split = 0.0, "", 6, BLEND, 0.5
         if kind != "dwell":
             lift = number(t, "lift", "segment", "a segment's lift", i)
@@ -324,7 +314,7 @@ def _segments(data: dict[str, Any], follower: Follower, metre: float, length: st
             raise fail(f"segment {i + 1} returns the follower below the base circle "
                        f"({height:g} {length})", "segment", "lift", i)
         segments.append(Segment(kind, math.radians(angle), lift * metre, law, divisions,
-                                blend, split))
+                                blend, split, time))
     if abs(total - 360.0) > 1e-9:
         raise fail(f"the segments add to {total:g}°, not 360°: the cam turns once",
                    key="segment")
@@ -380,7 +370,7 @@ def _refuse_moving(t: dict[str, Any], fail, i: int) -> None:
     """Refuse, at its line, a setting of motion in a dwell, which holds the follower still
     (a lift there would be dropped, the rest of the turn read without it)."""
     for k in t:
-        if k not in ("kind", "angle"):
+        if k not in ("kind", "angle", "time"):
             raise fail(f"a dwell holds the follower still: {k} is a rise's or a return's; "
                        "leave it out, or make the segment a rise or a return", "segment", k, i)
 

@@ -29,9 +29,9 @@ CAM_KEYS = ("base_radius", "base_diameter", "pressure_angle", "rho_min", "disc_r
 FOLLOWER_KEYS = ("kind", "radius", "diameter", "motion", "offset", "pivot", "arm")
 """A ``[follower]`` under a cam given by its follower's motion."""
 
-SEGMENT_KEYS = ("kind", "angle", "lift", "law", "divisions", "blend", "accelerating",
+SEGMENT_KEYS = ("kind", "angle", "time", "lift", "law", "divisions", "blend", "accelerating",
                 "acceleration_ratio")
-"""A ``[[segment]]`` of the follower's motion."""
+"""A ``[[segment]]`` of the follower's motion (its ``time`` in s in its angle's place)."""
 
 UNIT_KEYS = ("length", "speed")
 """A cam file's ``[units]``."""
@@ -93,6 +93,11 @@ def book_law(name: Any) -> str | None:
     return law if law in LAWS else None
 
 
+_BOOK_NAMES = {"duration": "time", "seconds": "time", "period": "time", "interval": "time"}
+"""Settings the books' words suggest, each read as the known one it means for the hint
+("rises in 0.05 s": a segment's duration is its ``time``)."""
+
+
 def refuse_unknown(t: dict[str, Any], keys: tuple[str, ...], where: str, fail,
                    table: str, index: int = 0, otherwise: str = "") -> None:
     """Refuse the first setting of ``t`` not in ``keys`` at its line (``table``'s
@@ -106,7 +111,9 @@ def refuse_unknown(t: dict[str, Any], keys: tuple[str, ...], where: str, fail,
     """
     for k in t:
         if k not in keys:
-            close = difflib.get_close_matches(str(k), keys, n=1, cutoff=0.6) or [
+            book = _BOOK_NAMES.get(str(k))
+            close = [book] if book in keys else difflib.get_close_matches(
+                str(k), keys, n=1, cutoff=0.6) or [
                 known for known in keys if known.startswith(f"{k}_")]
             if not close and otherwise:
                 raise fail(otherwise, table, k, index)

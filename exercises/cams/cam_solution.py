@@ -292,7 +292,14 @@ class CamSolution(ChapterFiles):
         """steps.md: the displacement diagram's construction, then each segment's peaks (the
         lines solve prints, with their checks), then the profile."""
         ex = self.exercise
-        peaks = self.lines()[:len(self.peaks) + 1] + self.readings.lines() + (
+        rpm = ex.speed_unit == "rpm"
+        rate = abs(ex.omega) * 60 / (2 * math.pi) if rpm else abs(ex.omega)
+        timed = [words("segment {k} is given by its time, {t} s: at {n} {unit} the cam turns "
+                       "β = ωt = {angle}° in it", k=numerals(str(k)), t=numeral(s.time, "g"),
+                       n=numeral(rate, ".6g"), unit=unit_words(ex.speed_unit),
+                       angle=numeral(math.degrees(s.angle), ".6g"))
+                 for k, s in enumerate(ex.segments, 1) if s.time]
+        peaks = timed + self.lines()[:len(self.peaks) + 1] + self.readings.lines() + (
             [self.readings.base_line(self.found)] if self.sized else [])
         if self.jumps:
             peaks.append(phrase("md.jumps", jumps=", ".join(f"{numerals(f'{j:g}')}°"
