@@ -243,10 +243,15 @@ class Punch:
     """A punching press as the books give it: ``energy`` (J) a hole takes, a hole every
     ``period`` (s), each punched in ``time`` (s). The motor, steady, gives the energy evenly
     over the period; while it punches the motor gives E·t/T and the flywheel the rest.
+    Where friction takes a share of the work (the books' "frictional losses are 1/5 of the
+    work done in punching"), the hole takes ``supply`` times its punching work, and the
+    motor and flywheel give that.
 
     >>> p = Punch(15000.0, 5.0, 2.0)
     >>> p.power, p.delta_e
     (3000.0, 9000.0)
+    >>> Punch(15000.0, 5.0, 2.0, supply=1.2).delta_e
+    10800.0
     """
 
     energy: float
@@ -254,21 +259,32 @@ class Punch:
     time: float
     by_power: bool = False
     """The period was found from the motor's power given, E/P: the holes a minute are asked."""
+    supply: float = 1.0
+    """The energy supplied per joule of punching work: 1 + the losses' share, or 1/η."""
+    losses: float | None = None
+    """The losses' share of the punching work, where the file gives it."""
+    efficiency: float | None = None
+    """The punch's efficiency η, where the file gives it."""
+
+    @property
+    def supplied(self) -> float:
+        """The energy a hole takes with its losses (J): E·(1 + losses), or E/η."""
+        return self.energy * self.supply
 
     @property
     def power(self) -> float:
-        """The motor's power (W): a hole's energy over the period, E/T."""
-        return self.energy / self.period
+        """The motor's power (W): a hole's energy, its losses with it, over the period."""
+        return self.supplied / self.period
 
     @property
     def delta_e(self) -> float:
         """The flywheel's greatest fluctuation of energy (J): what the motor does not give
-        while it punches, E·(1 − t/T)."""
-        return self.energy * (1 - self.time / self.period)
+        while it punches, E·(1 − t/T), E with its losses."""
+        return self.supplied * (1 - self.time / self.period)
 
     def table(self) -> tuple[tuple[float, float], ...]:
         """The punch's resisting torque over one period mapped onto a turn (θ = 2π·time/T,
         the shaft's speed nearly steady): E/(2π·t/T) while it punches, then none."""
         theta = 2 * math.pi * self.time / self.period
-        return ((0.0, self.energy / theta), (theta, self.energy / theta), (theta, 0.0),
+        return ((0.0, self.supplied / theta), (theta, self.supplied / theta), (theta, 0.0),
                 (2 * math.pi, 0.0))

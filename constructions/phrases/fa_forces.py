@@ -135,6 +135,16 @@ WORDS: dict[str, str] = {
         "چرخ طیاری با I = {inertia} kg·m² که ΔE = ½·I·(ω1² − ω2²) را پس می‌دهد: بیشترین "
         "سرعت {high} {unit}، کمترین {low} {unit}؛ میانگین آن دو {mean} {unit}، "
         "C_s = (ω1 − ω2)/ω = {cs}",
+    "a flywheel of {mass} kg at {radius} from the axis: I = m·{k}² = {inertia} kg·m²":
+        "چرخ طیاری به جرم {mass} kg در فاصلهٔ {radius} از محور: I = m·{k}² = {inertia} kg·m²",
+    "a hole's punching work {work} J at an efficiency of {eta}: the motor and flywheel give "
+    "E = {work} J/η = {energy} J a hole":
+        "کار سوراخ‌کاری هر سوراخ {work} J با بازده {eta}: موتور و چرخ طیار برای هر سوراخ "
+        "E = {work} J/η = {energy} J می‌دهند",
+    "a hole's punching work {work} J and the frictional losses, {share} of it: the motor and "
+    "flywheel give E = {work} J × {supply} = {energy} J a hole":
+        "کار سوراخ‌کاری هر سوراخ {work} J و اتلاف اصطکاکی، {share} آن: موتور و چرخ طیار "
+        "برای هر سوراخ E = {work} J × {supply} = {energy} J می‌دهند",
     "a hole takes E = {energy} J in {time} s of every {period} s: the motor's power P = E/T = "
     "{power} kW":
         "هر سوراخ E = {energy} J را در {time} s از هر {period} s می‌گیرد: توان موتور "

@@ -25,8 +25,9 @@ for a stated ``mass``; a ``radius_of_gyration`` alone is where its mass sits) or
 angles (degrees) whose T and α are asked. C_s may be written as the books write it ("±1 %",
 "2 %"), or given by the greatest and least speeds (two of ``speed``,
 ``speed_max`` and ``speed_min``); a rim's ``diameter`` may stand for its radius, and its
-``density`` with ``width_to_thickness`` asks its section. Every failure is one line naming
-file:line.
+``density`` with ``width_to_thickness`` asks its section, or with its allowable
+``hoop_stress`` sets its speed √(σ/ρ). A length may carry its own unit ("0.6 m"). Every
+failure is one line naming file:line.
 """
 
 from __future__ import annotations
@@ -216,7 +217,7 @@ def parse_flywheel(text: str, filename: str = "<string>", exercise_id: str = "fl
     (table,) = tables
     if table == "punch":
         return _exercise(t, filename, exercise_id, 2 * math.pi, length, speed_unit,
-                         read_punch(t, _one(t, "punch")))
+                         read_punch(t, _one(t, "punch"), LENGTH_UNITS[length]))
     tm = _one(t, table)
     cycle_deg = t.number(tm, "cycle", table, "the cycle (degrees)", 0, 360.0)
     if not 0 < cycle_deg <= 1440:

@@ -30,6 +30,7 @@ from tarsim.constructions.reference.flywheel import (Integrated, energy_between,
                                                      flywheel_inertia, integrated,
                                                      speed_fluctuation)
 from tarsim.constructions.errors import InputError
+from tarsim.constructions.units import LENGTH_UNITS
 from ..checked import Checked
 from ..solution_folder import ChapterFiles
 from ..table_file import SPEEDS
@@ -226,6 +227,11 @@ class FlywheelSolution(ChapterFiles):
             p = self._punch_reference
             q["power"] = _check(ex.punch.power, p.mean * 2 * math.pi / ex.punch.period,
                                 1e-12, "P = E/T, a hole's energy over the period", unit="W")
+            if ex.punch.supply != 1.0:
+                # the work with its losses, beside the quadrature's over the turn
+                q["energy_supplied"] = _check(
+                    ex.punch.supplied, p.mean * 2 * math.pi, 1e-12,
+                    "E/η" if ex.punch.efficiency is not None else "E·(1 + losses)", unit="J")
             method = "E·(1 − t/T), the motor steady"
             if ex.punch.by_power:
                 # the holes a minute the power given keeps up with: 60·P/E, E by quadrature
@@ -375,6 +381,14 @@ class FlywheelSolution(ChapterFiles):
                               ex.width_to_thickness)
             want = rim_section(ex.mass, q["rim_radius"].reference["value"], ex.density,
                                ex.width_to_thickness)
+        radius = ex.radius if "rim_mass" in q else q["rim_radius"].value["value"]
+        if not got[0] < 2 * radius:
+            # a rim of mean radius r reaches in to r − t/2: one t ≥ 2r has no bore, no rim
+            unit = ex.length_unit
+            raise InputError(
+                f"a rim of mean radius {radius / LENGTH_UNITS[unit]:.6g} {unit} would be "
+                f"t = {got[0] / LENGTH_UNITS[unit]:.6g} {unit} thick, past its mean diameter: "
+                "no rim holds that mass; is the radius in the right unit?")
         for k, key in enumerate(("rim_thickness", "rim_width")):
             # t ∝ √m (or 1/√r): half the mass's relative error
             out[key] = _check(got[k], want[k], tol, "b·t = m/(ρ·2πr), b = k·t", unit="m")
@@ -387,7 +401,7 @@ class FlywheelSolution(ChapterFiles):
         ex, r, ref = self.exercise, self.reading, self.reference
         out = {}
         if ex.punch is not None:
-            work, ref_work = ex.punch.energy, self._punch_reference.mean * 2 * math.pi
+            work, ref_work = ex.punch.supplied, self._punch_reference.mean * 2 * math.pi
         elif ref is not None and r.mean > 0:
             work, ref_work = r.mean * ex.cycle, ref.mean * ex.cycle
         else:

@@ -21,23 +21,28 @@ _WITH_UNIT = re.compile(r"\s*([-+]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][-+]?\d+)?)\s*(
 """A number and its unit as the books write them: "0.6 m", "600 mm", "6 MPa"."""
 
 
-def read_length(t: Tables, d: dict, key: str, table: str, what: str, metre: float) -> float:
-    """``d[key]``, a positive length in metres: a number in the file's length unit (``metre``
-    m each), or text with its own unit ("0.6 m", "600 mm"), as a book mixes a punch's
-    holes in mm with its flywheel's radius in m."""
+def read_length(t: Tables, d: dict, key: str, table: str, what: str, metre: float,
+                into: float = 1.0) -> float:
+    """``d[key]``, a positive length in units of ``into`` m (metres unless told): a number
+    in the file's length unit (``metre`` m each), or text with its own unit ("0.6 m",
+    "600 mm"), as a book mixes a punch's holes in mm with its flywheel's radius in m. A
+    length already in the unit asked is returned as given, not rounded through metres."""
     raw = d[key]
-    if isinstance(raw, str):
-        m = _WITH_UNIT.fullmatch(raw)
-        if m is None or m[2] not in LENGTH_UNITS:
+    m = _WITH_UNIT.fullmatch(raw) if isinstance(raw, str) else None
+    if m is not None and m[2] in LENGTH_UNITS:
+        v, size = t.number({key: m[1]}, key, table, what), LENGTH_UNITS[m[2]]
+    else:
+        try:
+            v, size = t.number(d, key, table, what), metre
+        except InputError:
+            if not isinstance(raw, str):
+                raise
             raise t.fail(f"{what} is a number in the file's length unit or a length with its "
                          f"unit ({', '.join(LENGTH_UNITS)}): \"0.6 m\"; got {raw!r:.40}",
-                         table, key)
-        v, size = float(m[1]), LENGTH_UNITS[m[2]]
-    else:
-        v, size = t.number(d, key, table, what), metre
+                         table, key) from None
     if not v > 0 or not math.isfinite(v):
         raise t.fail(f"{what} must be positive, got {raw!r:.40}", table, key)
-    return v * size
+    return v if size == into else v * size / into
 
 
 def _stress(t: Tables, fw: dict) -> float:

@@ -55,21 +55,42 @@ def lines(sol) -> list[str]:
     elif ex.diagram is not None:
         out.append(words("mean turning moment T_mean = {mean} N·m over a cycle of {cycle}°",
                          mean=numeral(r.mean), cycle=numeral(math.degrees(ex.cycle), "g")))
+    if ex.punch is not None and ex.punch.efficiency is not None:
+        out.append(words("a hole's punching work {work} J at an efficiency of {eta}: the "
+                         "motor and flywheel give E = {work} J/η = {energy} J a hole",
+                         work=numeral(ex.punch.energy), eta=numeral(ex.punch.efficiency, "g"),
+                         energy=numeral(ex.punch.supplied)))
+    elif ex.punch is not None and ex.punch.losses is not None:
+        out.append(words("a hole's punching work {work} J and the frictional losses, {share} "
+                         "of it: the motor and flywheel give E = {work} J × {supply} = "
+                         "{energy} J a hole", work=numeral(ex.punch.energy),
+                         share=numeral(ex.punch.losses, "g"),
+                         supply=numeral(ex.punch.supply, "g"),
+                         energy=numeral(ex.punch.supplied)))
     if ex.punch is not None and ex.punch.by_power:
         out.append(words("a motor of {power} kW gives a hole's E = {energy} J in T = E/P = "
                          "{period} s, the hole taking {time} s: {rate} holes a minute",
-                         power=numeral(ex.punch.power / 1000), energy=numeral(ex.punch.energy),
+                         power=numeral(ex.punch.power / 1000),
+                         energy=numeral(ex.punch.supplied),
                          period=numeral(ex.punch.period), time=numeral(ex.punch.time, "g"),
                          rate=numeral(q["holes_per_minute"].value["value"])))
     elif ex.punch is not None:
         out.append(words("a hole takes E = {energy} J in {time} s of every {period} s: the "
-                         "motor's power P = E/T = {power} kW", energy=numeral(ex.punch.energy),
+                         "motor's power P = E/T = {power} kW", energy=numeral(ex.punch.supplied),
                          time=numeral(ex.punch.time, "g"),
                          period=numeral(ex.punch.period, "g"),
                          power=numeral(ex.punch.power / 1000)))
     elif "power" in q:
         out.append(words("power at the mean speed: P = T_mean·ω = {power} kW",
                          power=numeral(q["power"].value["value"] / 1000)))
+    k = ex.radius_of_gyration if ex.radius_of_gyration is not None else ex.radius
+    if ex.mass is not None and ex.inertia is not None and k is not None:
+        # the flywheel given by its mass and where it sits: the length said in its unit, so
+        # that a radius in the wrong unit shows where it is used
+        out.append(words("a flywheel of {mass} kg at {radius} from the axis: I = m·{k}² = "
+                         "{inertia} kg·m²", mass=numeral(ex.mass), radius=_length(sol, k),
+                         k="k" if ex.radius_of_gyration is not None else "r",
+                         inertia=numeral(ex.inertia)))
     if not sol.drawn:
         out.append(_given(sol))
     elif r.delta_e:
@@ -253,8 +274,8 @@ def document(sol) -> list[Section]:
         steps.append(words("While it punches, the steady motor gives E·t/T = {given} J of the "
                            "{energy} J a hole takes; the flywheel gives up the rest, "
                            "E·(1 − t/T) = {delta} J, and takes it back before the next "
-                           "hole.", given=numeral(ex.punch.energy - ex.punch.delta_e),
-                           energy=numeral(ex.punch.energy), delta=numeral(ex.punch.delta_e)))
+                           "hole.", given=numeral(ex.punch.supplied - ex.punch.delta_e),
+                           energy=numeral(ex.punch.supplied), delta=numeral(ex.punch.delta_e)))
     elif ex.diagram is None:
         steps.append(words("Each area times the diagram's scale ({scale} J per unit of area) "
                            "is an energy: {energies} J.", scale=numeral(ex.energy_scale),
