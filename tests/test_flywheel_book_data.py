@@ -252,3 +252,18 @@ def test_the_length_is_said_where_it_is_used():
         done = runner.invoke(cli, ["solve", "r.toml", "-o", "out2", "--no-pdf"])
         assert done.exit_code == 0, done.output
         assert "a flywheel of 150 kg at 600 mm from the axis: I = m·k² = 54 kg·m²" in done.output
+
+
+def test_rim_speed_takes_its_share():
+    """A rim's speed given with the mean speed places the rim (r = v/ω), so the hub and arms
+    may take their share of I as with a radius: m = 0.9·I/r², the hoop stress's rim when
+    v = √(6e6/7200)."""
+    v = math.sqrt(6e6 / 7200)
+    by_speed = _q(_text(f"speed = 500\nspeed_fluctuation = 0.02\nrim_speed = {v!r}\n"
+                        "rim_share = 0.9\n"))
+    by_stress = _q(_text('speed = 500\nspeed_fluctuation = 0.02\nhoop_stress = "6 MPa"\n'
+                         "density = 7200\nrim_share = 0.9\n"))
+    r = v / (500 * RPM)
+    inertia = 800 * math.pi / (0.02 * (500 * RPM) ** 2)
+    assert by_speed["rim_mass"] == pytest.approx(0.9 * inertia / r ** 2, rel=EXACT)
+    assert by_stress["rim_mass"] == pytest.approx(by_speed["rim_mass"], rel=EXACT)
