@@ -211,6 +211,10 @@ def open_rotor(r: random.Random) -> dict[str, Any]:
             m.pop("plane", None)
     _cancel(masses, r) if not static else _cancel_force(masses)
     spec.pop("balance")
+    # the unknowns are the masses' own, which need no speed: a rotor that balances itself
+    # refuses one given (and a couple's axis or bearings), as nothing would use them
+    spec["rotor"] = {k: v for k, v in spec.get("rotor", {}).items()
+                     if k not in ("speed", "about", "bearings")}
     spec["name"] = "random rotor (open)"
     i, j = r.sample(range(len(masses)), 2)
     others = [k for k in range(len(masses)) if k != i]
