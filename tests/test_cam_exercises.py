@@ -159,6 +159,8 @@ def test_the_jerk_is_given_when_asked_and_its_infinite_spikes_named():
     assert rise.passed and back.passed                    # the formulas match the sampled law
     assert s.jumps == [0.0, 120.0]
     assert s.results["quantities"]["j_max_3"]["value"] == pytest.approx(2728.748, rel=1e-6)
+    # printed in the file's length unit, as v_max and a_max are (mm/s³ here, not m/s³)
+    assert any("j_max = 2.09292e+06 mm/s³" in line for line in s.lines())
     knife = solve_cam(load("offset-knife-edge"))
     assert knife.jumps == [0.0, 60.0, 120.0, 150.0, 180.0, 240.0, 270.0]
     assert "jerk" not in knife.figures and "j_max_1" not in knife.results["quantities"]

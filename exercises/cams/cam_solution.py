@@ -163,7 +163,7 @@ class CamSolution(ChapterFiles):
                 f"{numeral(p.acceleration * size)} {unit}/s²"
             if ex.jerk:
                 a += ", j_max = " + (words("∞ (where ÿ jumps)") if math.isinf(p.jerk) else
-                                     f"{numeral(p.jerk)} m/s³")
+                                     f"{numeral(p.jerk * size)} {unit}/s³")
             arm = ex.follower.arm if ex.follower.oscillating else 0.0
             swing = words(" (the arm: {w} rad/s, {a} rad/s²)", w=numeral(p.velocity / arm),
                           a="∞" if math.isinf(p.acceleration) else

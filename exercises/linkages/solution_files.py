@@ -205,7 +205,8 @@ class WorkedSolution:
         out = [answer_line(name, q, units, whole=True)
                for name, q in self.overall.quantities.items()]
         for sol in self.positions:
-            if len(self.positions) > 1:
+            # a position found from the file's data (a piston's travel) is an answer too
+            if len(self.positions) > 1 or (sol.position and sol.position.turned):
                 out.append(f"at {sol.position.label}:")
             out += [answer_line(name, qq.in_file_axes(ex.mechanism), units)
                     for name, q in sol.quantities.items()
