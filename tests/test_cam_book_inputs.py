@@ -93,6 +93,9 @@ def test_c5_unequal_ratio(tmp_path):
     """The book's problem with the split worked by hand, accelerating = 50."""
     _, q = solved(HERE / "c5-unequal-ratio.toml", tmp_path)
     _c5_closed_forms(q)
+    # the book's own statement, the acceleration twice the retardation
+    assert q["acceleration_1"]["value"] == pytest.approx(2 * q["retardation_1"]["value"],
+                                                         rel=TIGHT)
 
 
 def test_c5_naive_ratio_key(tmp_path):
