@@ -106,7 +106,7 @@ def force_frames(sol, title) -> list[Figure]:
     """An empty frame for each link's force polygon at a position, at the force scale the
     solution's panel states, sized to hold the polygon, its first point marked."""
     from tarsim.constructions.forces.polygons import drawn_forces
-    from tarsim.graphics.forces.force_figure import _polygon_title, _polygons, polygon_scale
+    from tarsim.graphics.forces.force_figure import _polygon_title, _polygons, polygon_fit
 
     if not sol.work.has("forces"):
         return []
@@ -116,11 +116,7 @@ def force_frames(sol, title) -> list[Figure]:
         joins = [s for s in group if s.verb == "join"]
         if not joins:
             continue
-        ends = [p for s in joins for p in (s.output.start.xy, s.output.end.xy)]
-        xs, ys = [x for x, _ in ends], [y for _, y in ends]
-        longest = max(math.dist(s.output.start.xy, s.output.end.xy) for s in joins) / scale
-        per_cm = polygon_scale(max(longest, 1e-300), max(max(xs) - min(xs), 1e-300) / scale,
-                               max(max(ys) - min(ys), 1e-300) / scale)
+        xs, ys, per_cm = polygon_fit(joins, scale)
         mm = 10.0 / (per_cm * scale)                     # paper mm a drawing metre
         o = c.output(mark.inputs[0]).xy
         across, up = [(x - o[0]) * mm for x in xs], [(o[1] - y) * mm for y in ys]

@@ -81,17 +81,25 @@ def polygon_scale(longest: float, across: float, up: float) -> float:
     return max(per_cm, nice_per_cm(across, _PANEL[0]), nice_per_cm(up, _PANEL[1]))
 
 
+def polygon_fit(joins, scale: float) -> tuple[list[float], list[float], float]:
+    """A force polygon's sides' ends (drawing m, across and up) and the 1-2-5 force scale
+    (N a paper cm) that fits it (:func:`polygon_scale`): the panel draws it so, and the
+    problem sheet sizes its empty frame to the same."""
+    ends = [p for s in joins for p in (s.output.start.xy, s.output.end.xy)]
+    xs, ys = [x for x, _ in ends], [y for _, y in ends]
+    longest = max(math.dist(s.output.start.xy, s.output.end.xy) for s in joins) / scale
+    per_cm = polygon_scale(max(longest, 1e-300), max(max(xs) - min(xs), 1e-300) / scale,
+                           max(max(ys) - min(ys), 1e-300) / scale)
+    return xs, ys, per_cm
+
+
 def _draw_polygon(c: Construction, mark, group, scale: float) -> Figure | None:
     """One polygon at a scale of its own, its title and scale over it; None if it draws
     nothing."""
     joins = [s for s in group if s.verb == "join"]
     if not joins:
         return None
-    ends = [p for s in joins for p in (s.output.start.xy, s.output.end.xy)]
-    xs, ys = [x for x, _ in ends], [y for _, y in ends]
-    longest = max(math.dist(s.output.start.xy, s.output.end.xy) for s in joins) / scale
-    per_cm = polygon_scale(max(longest, 1e-300), max(max(xs) - min(xs), 1e-300) / scale,
-                           max(max(ys) - min(ys), 1e-300) / scale)
+    xs, ys, per_cm = polygon_fit(joins, scale)
     k = 10.0 / (per_cm * scale)                                          # paper mm a drawing m
     left, top = min(xs), max(ys)
 
