@@ -6,8 +6,8 @@ as it would be, every label where it stood:
 
 * ``badges``: the circled step numbers (:func:`~.symbols.draw_badge`);
 * ``answers``: the numbers the solution found, as the figures print them: the results
-  table's construction and analytic columns, and the stroke and time ratio stated under
-  the limit positions;
+  table's construction and analytic columns, the stroke and time ratio stated under the
+  limit positions, and the other chapters' found numbers (:func:`shown_answer`);
 * ``checks``: the results table's check, its construction, analytic and relative-error
   columns, leaving each quantity and the method that found it.
 
@@ -25,7 +25,7 @@ from contextlib import contextmanager
 from tarsim.constructions.errors import TarsimError
 from tarsim.constructions.narration import words
 
-__all__ = ["HIDEABLE", "hiding", "hidden", "parts_to_hide", "shown_columns"]
+__all__ = ["HIDEABLE", "hiding", "hidden", "parts_to_hide", "shown_answer", "shown_columns"]
 
 HIDEABLE = ("answers", "badges", "checks")
 """What may be hidden, by the names ``--hide`` takes."""
@@ -72,6 +72,26 @@ def hiding(parts: frozenset[str]) -> Iterator[frozenset[str]]:
 def hidden() -> frozenset[str]:
     """What the figures being drawn hide (nothing unless inside :func:`hiding`)."""
     return _HIDDEN
+
+
+def shown_answer(text: str, blank: str = "") -> str:
+    """``text``, a number the solution found, or ``blank`` where answers are hidden.
+
+    A table's cell or a figure's reading keeps its place empty, so the sheet shows where
+    the student writes the answer; inside a sentence, ``blank="…"`` keeps the gap seen.
+    The chapters whose figures print answers outside a results table (the gear trains'
+    speeds, the cams' table, the balancing masses found) pass each such number through
+    here.
+
+    Examples
+    --------
+    >>> shown_answer("−187.5")
+    '−187.5'
+    >>> with hiding(frozenset({"answers"})):
+    ...     shown_answer("−187.5")
+    ''
+    """
+    return blank if "answers" in _HIDDEN else text
 
 
 def shown_columns(table: Sequence[Sequence[str]]) -> list[tuple[str, ...]]:

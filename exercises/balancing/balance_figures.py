@@ -18,6 +18,7 @@ from tarsim.constructions.reference.balance import single_cylinder, unbalanced_r
 from tarsim.constructions.units import LENGTH_UNITS
 from tarsim.graphics.balancing.balance_figures import draw_end_view, draw_polygon, draw_side_view
 from tarsim.graphics.figure import Figure
+from tarsim.graphics.hiding import shown_answer
 from tarsim.graphics.plot import PlotMark, Series, draw_line_plot
 from tarsim.graphics.train_table import draw_train_table
 from .open_rotor_solution import open_figures
@@ -114,9 +115,9 @@ def _rotor_figures(s: BalanceSolution, unit: str, metre: float) -> dict[str, Fig
         if p.name in b.none:        # no mass to draw, and a zero product has no angle
             continue
         v, mass, radius = s.placed(p)
-        found.append((_mass_words(p.name, f"{mass * g:.4g}", f"{radius / metre:.4g}", unit,
-                                  f"{angle_deg(v):.2f}", ex.weights), math.atan2(v[1], v[0]),
-                       radius))
+        found.append((shown_answer(_mass_words(p.name, f"{mass * g:.4g}", f"{radius / metre:.4g}",
+                                               unit, f"{angle_deg(v):.2f}", ex.weights))
+                       or p.name, math.atan2(v[1], v[0]), radius))
     out = {"space": draw_end_view(b.construction, masses,
                                   words("{name}: space diagram", name=ex.name),
                                   unit, metre, found, clockwise=ex.clockwise)}
@@ -135,15 +136,15 @@ def _rotor_figures(s: BalanceSolution, unit: str, metre: float) -> dict[str, Fig
             b.construction, b.couple, b.closing[f"{bname}·l"],
             words("{name}: couple polygon (reference plane {plane})", name=ex.name,
                   plane=r.planes[0].name), "kg·m²",
-            ("(m r l)", bname, _none_words() if bname in b.none else _size_words(
-                f"{math.hypot(*v):.4g}", "kg·m²", f"{angle_deg(v):.1f}")),
+            ("(m r l)", bname, _none_words() if bname in b.none else shown_answer(_size_words(
+                f"{math.hypot(*v):.4g}", "kg·m²", f"{angle_deg(v):.1f}"))),
             clockwise=ex.clockwise)
     a = r.planes[0].name
     v = b.product(a)
     out["force-polygon"] = draw_polygon(
         b.construction, b.force, b.closing[a], words("{name}: force polygon", name=ex.name),
-        "kg·m", ("(m r)", a, _none_words() if a in b.none else _size_words(
-            f"{math.hypot(*v):.4g}", "kg·m", f"{angle_deg(v):.1f}")),
+        "kg·m", ("(m r)", a, _none_words() if a in b.none else shown_answer(_size_words(
+            f"{math.hypot(*v):.4g}", "kg·m", f"{angle_deg(v):.1f}"))),
         clockwise=ex.clockwise)
     return out
 
@@ -171,12 +172,15 @@ def _table(s: BalanceSolution, unit: str, metre: float) -> Figure:
         if p in none:       # the given mass or radius stands, the rest is nothing found
             cells = [f"{mass * g:.4g}" if p.mass else "—",
                      f"{radius / metre:.4g}" if p.radius else "—", "—"]
-        else:
-            cells = [f"{mass * g:.4g}", f"{radius / metre:.4g}", f"{angle_deg(v):.2f}°"]
+        else:               # the given mass or radius stands, the rest was found
+            cells = [f"{mass * g:.4g}" if p.mass else shown_answer(f"{mass * g:.4g}"),
+                     f"{radius / metre:.4g}" if p.radius else shown_answer(
+                         f"{radius / metre:.4g}"), shown_answer(f"{angle_deg(v):.2f}°")]
         rows.append((p.name, [numerals(t) for t in cells
                               + ([] if flat else [f"{(p.position - ref) / metre:g}"])
-                              + [f"{size:.4g}"]
-                              + ([f"{size * (p.position - ref):.4g}"] if two else [])]))
+                              + [shown_answer(f"{size:.4g}")]
+                              + ([shown_answer(f"{size * (p.position - ref):.4g}")]
+                                 if two else [])]))
     notes = [("" if flat else words("l from the reference plane {plane}; ",
                                     plane=r.planes[0].name))
              + words("the rows under the rule are the balancing masses found")]

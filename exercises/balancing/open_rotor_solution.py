@@ -18,6 +18,7 @@ from tarsim.constructions.reference.balance import open_residual, open_rotor_roo
 from tarsim.constructions.units import LENGTH_UNITS
 from tarsim.graphics.balancing.balance_figures import draw_end_view, draw_polygon, draw_side_view
 from tarsim.graphics.figure import Figure
+from tarsim.graphics.hiding import shown_answer
 from ..checked import Checked
 
 __all__ = ["open_checked", "open_figures", "open_lines", "open_misses", "tolerance"]
@@ -176,8 +177,8 @@ def open_figures(name: str, closure: Closure, rotor: OpenRotor,
     c = closure.construction
     known = [(p.name, closure.parts[p.name].radius, _label(closure.parts[p.name], unit, metre))
              for p in closure.given.values() if p.angle is not None and p.size is not None]
-    found = [(_label(closure.parts[p.name], unit, metre), closure.parts[p.name].angle,
-              closure.parts[p.name].radius)
+    found = [(_label(closure.parts[p.name], unit, metre, p.unknowns()),
+              closure.parts[p.name].angle, closure.parts[p.name].radius)
              for p in closure.given.values() if p.angle is None or p.size is None]
     out = {"space": draw_end_view(c, known, words("{name}: space diagram", name=name), unit,
                                   metre, found, found_word="a mass with unknowns, found",
@@ -198,8 +199,13 @@ def open_figures(name: str, closure: Closure, rotor: OpenRotor,
     return out
 
 
-def _label(p, unit: str, metre: float) -> str:
+def _label(p, unit: str, metre: float, found: tuple[str, ...] = ()) -> str:
+    """A mass as the end view names it; what was ``found`` of it ("mass", "angle"…) is
+    left blank where the answers are hidden."""
+    def told(what: str, text: str) -> str:
+        return shown_answer(text, "…") if what in found else text
     return words("{name}: {mass} {kg} at {radius} {unit}, {angle}°", name=p.name,
-                 mass=numerals(f"{p.mass:.4g}"), kg=unit_words("kg"),
-                 radius=numerals(f"{p.radius / metre:.4g}"), unit=unit_words(unit),
-                 angle=numerals(f"{math.degrees(p.angle) % 360.0:.4g}"))
+                 mass=told("mass", numerals(f"{p.mass:.4g}")), kg=unit_words("kg"),
+                 radius=told("radius", numerals(f"{p.radius / metre:.4g}")),
+                 unit=unit_words(unit),
+                 angle=told("angle", numerals(f"{math.degrees(p.angle) % 360.0:.4g}")))

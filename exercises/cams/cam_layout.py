@@ -22,6 +22,7 @@ from tarsim.constructions.reference.cam_profile import Station
 from tarsim.constructions.narration import Word, numeral, numerals, phrase, unit_words, words
 from tarsim.graphics.cams.cam_layout_figure import draw_cam_layout
 from tarsim.graphics.figure import Figure
+from tarsim.graphics.hiding import shown_answer
 from tarsim.graphics.train_table import draw_train_table
 from ..checked import Checked
 from ..worked_document import Bullets, Section, numbered
@@ -231,11 +232,12 @@ class CamProfile:
         rows = []
         for p, st in zip(self.layout.places, self.survey.places):
             lift = (f"{math.degrees(p.lift / f.arm):.4g}" if f.oscillating else length(p.lift))
+            # the station and its angle are the drawing's grid; the rest is found
             rows.append(("", [numerals(c) for c in (
-                str(p.number), f"{math.degrees(p.theta):.4g}°", lift,
-                length(st.face_offset) if flat
-                else _signed(f"{math.degrees(st.pressure_angle):.2f}") + "°",
-                "∞" if math.isinf(st.rho) else length(st.rho))]))
+                str(p.number), f"{math.degrees(p.theta):.4g}°", *map(shown_answer, (
+                    lift, length(st.face_offset) if flat
+                    else _signed(f"{math.degrees(st.pressure_angle):.2f}") + "°",
+                    "∞" if math.isinf(st.rho) else length(st.rho))))]))
         notes = []
         if any(st.rho < 0 for st in self.survey.places):
             notes.append(words("ρ < {zero}: the curve is concave there.", zero=numerals("0")))

@@ -25,6 +25,7 @@ from tarsim.constructions.errors import IllConditioned
 from tarsim.constructions.narration import Word, numeral, numerals, phrase, unit_words, words
 from tarsim.constructions.reference.cam_laws import jerk_peak, motion, peaks, pieces
 from tarsim.graphics.cams.displacement_figure import draw_displacement_figure
+from tarsim.graphics.hiding import shown_answer
 from tarsim.graphics.plot import PlotMark, Series, draw_line_plot
 from ..checked import Checked
 from ..solution_folder import ChapterFiles
@@ -262,7 +263,7 @@ class CamSolution(ChapterFiles):
             if s.kind != "dwell":
                 inside = [(abs(v), x, v) for x, v in zip(xs, values) if start <= x <= end]
                 _, x, v = max(inside)
-                marks.append(PlotMark(x, v, numerals(f"{v:.4g}".replace("-", "−"))))
+                marks.append(PlotMark(x, v, shown_answer(numerals(f"{v:.4g}".replace("-", "−")))))
             start = end
         return marks
 

@@ -28,6 +28,7 @@ from tarsim.constructions.reference.willis import willis_speeds, willis_torques
 from tarsim.graphics.gears.involute_figure import draw_involute_figure
 from tarsim.graphics.gears.kutzbach_figure import draw_kutzbach_figure
 from tarsim.graphics.gears.train_schematic import draw_train_schematic
+from tarsim.graphics.hiding import shown_answer
 from tarsim.graphics.train_table import draw_train_table
 from ..checked import Checked, check_line
 from ..solution_folder import ChapterFiles
@@ -309,9 +310,9 @@ class TrainSolution(ChapterFiles, QuantityParts):
         train = self.train
         if not train.implied_teeth:
             return heads, rows
-        teeth = [("" if m == train.arm else numerals(
-            f"({train.gear(m).teeth})" if m in train.implied_teeth else
-            str(train.gear(m).teeth))) for m in train.members]
+        teeth = [("" if m == train.arm else shown_answer(numerals(f"({train.gear(m).teeth})"))
+                  if m in train.implied_teeth else numerals(str(train.gear(m).teeth)))
+                 for m in train.members]
         return heads, [(words("teeth (found: in brackets)"), teeth), *self._pitch_row(), *rows]
 
     def _speed_table(self) -> tuple[list[str], list[tuple[str, list[str]]]]:
@@ -322,8 +323,11 @@ class TrainSolution(ChapterFiles, QuantityParts):
         # turns about it: blank, a footnote saying why (:func:`.square_axes.square_notes`)
         heads = [_head(train, m) + (square_mark(train, m) if t is not None else "")
                  for m in train.members]
+        given = {train.input_member, train.fixed, train.second and train.second[0]}
         speeds = ["" if t is not None and train.square(m) else
-                  numerals(significant(float(found.speeds[m]))) for m in train.members]
+                  (str if m in given else shown_answer)(
+                      numerals(significant(float(found.speeds[m]))))
+                  for m in train.members]
         if t is None:
             if not train.speed_given:      # the speeds for one turn of the input: its ratios
                 return heads, [(words("turns per turn of {member} (ccw +)",
@@ -332,17 +336,19 @@ class TrainSolution(ChapterFiles, QuantityParts):
 
         def row(turns: dict[int, Fraction]) -> list[str]:
             # a gear on a side shaft has no place in the table: its cell is blank
-            return [numerals(fraction_text(turns[m], True))
+            return [shown_answer(numerals(fraction_text(turns[m], True)))
                     if m in turns and not train.square(m) else "" for m in train.members]
 
+        locked = [numerals(fraction_text(t.locked[m], True))
+                  if m in t.locked and not train.square(m) else "" for m in train.members]
         if t.weights is not None:         # two given speeds: y × row 1 + x × row 2
             return heads, [
-                (words("whole train locked, {turn}", turn=numerals("+1")), row(t.locked)),
+                (words("whole train locked, {turn}", turn=numerals("+1")), locked),
                 (words("arm {arm} held, {member} turned {turn}", arm=str(train.arm),
                        member=str(t.turned), turn=numerals("−1")), row(t.held)),
                 (words("y × row 1 + x × row 2: speed"), speeds)]
         return heads, [
-            (words("whole train locked, {turn}", turn=numerals("+1")), row(t.locked)),
+            (words("whole train locked, {turn}", turn=numerals("+1")), locked),
             (words("arm {arm} held, {fixed} turned {turn}", arm=str(train.arm),
                    fixed=str(train.fixed), turn=numerals("−1")), row(t.held)),
             (words("total"), row(t.total)),

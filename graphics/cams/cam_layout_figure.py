@@ -20,6 +20,7 @@ from tarsim.constructions.cams.inversion import Layout
 from tarsim.constructions.cams.survey import Survey
 from tarsim.constructions.narration import numerals, words
 from ..figure import Circle, Figure, Path, Text, arc_points
+from ..hiding import shown_answer
 from ..labels import LabelPlacer, paper_angle
 from ..scales import draw_caption, nice_per_cm
 from ..symbols import draw_arrow, draw_turning_arrow, mark_angle
@@ -168,10 +169,11 @@ def _mark_steepest(fig: Figure, s: Survey, paper, k: float) -> None:
     # The reading beyond the arc, on the side away from the cam.
     out = _unit((mid[0] - at[0], mid[1] - at[1]))
     spot = (at[0] + (length + 4.0) * out[0], at[1] + (length + 4.0) * out[1])
-    fig.add(Text(spot, words("φ max = {phi}° at θ = {theta}°",
-                             phi=numerals(f"{abs(math.degrees(st.pressure_angle)):.1f}"),
-                             theta=numerals(f"{math.degrees(st.theta):.4g}")), 2.8,
-                 "start" if out[0] >= 0 else "end", False))
+    reading = words("φ max = {phi}° at θ = {theta}°",
+                    phi=numerals(f"{abs(math.degrees(st.pressure_angle)):.1f}"),
+                    theta=numerals(f"{math.degrees(st.theta):.4g}"))
+    if shown_answer(reading):
+        fig.add(Text(spot, reading, 2.8, "start" if out[0] >= 0 else "end", False))
 
 
 def _draw_curve(fig: Figure, points: list[tuple[float, float]], style: str) -> None:

@@ -19,6 +19,7 @@ from tarsim.constructions.gears.involute import InvoluteMesh
 from tarsim.constructions.gears.train import GearTrain
 from tarsim.constructions.narration import numerals, unit_words, words
 from ..figure import Circle, Figure, Path
+from ..hiding import shown_answer
 from ..labels import LabelPlacer, paper_angle
 from ..scales import draw_caption, nice_per_cm
 from ..symbols import draw_arrowhead, mark_angle
@@ -160,9 +161,10 @@ def draw_involute_figure(train: GearTrain, mesh: InvoluteMesh, title: str) -> Fi
                         module=numerals(f"{float(pa.module) * 1e3:g}"), mm=unit_words("mm"),
                         z1=numerals(str(pa.teeth)), z2=numerals(str(wa.teeth)),
                         angle=numerals(f"{math.degrees(mesh.pressure_angle):.4g}")),
-                  words("path of contact AB = {path} {mm}, contact ratio {ratio}",
-                        path=numerals(f"{mesh.path * 1e3:.4g}"), mm=unit_words("mm"),
-                        ratio=numerals(f"{mesh.contact_ratio:.4g}"))],
+                  *[line for line in [shown_answer(words(
+                      "path of contact AB = {path} {mm}, contact ratio {ratio}",
+                      path=numerals(f"{mesh.path * 1e3:.4g}"), mm=unit_words("mm"),
+                      ratio=numerals(f"{mesh.contact_ratio:.4g}")))] if line]],
                  per_cm=per_cm, unit="mm",
                  legend=(("construction", "pitch circles"), ("reference", "base circles"),
                          ("gauge", "addendum and root circles"),
