@@ -42,7 +42,6 @@ WORDS: dict[str, str] = {
     "head to tail, each parallel to its radial line":
         "پشت سر هم، هر یک موازی خط شعاعی خود",
     "the vectors": "بردارها", "the closing side": "ضلع بسته\u200cکننده",
-    "m·r scale": "مقیاس m·r", "m·r·l scale": "مقیاس m·r·l",
     "l from the reference plane {plane}; ": "l از صفحهٔ مرجع {plane}؛ ",
     "the rows under the rule are the balancing masses found":
         "سطرهای زیر خط، جرم\u200cهای متعادل\u200cکنندهٔ به\u200cدست\u200cآمده\u200cاند",
@@ -59,6 +58,8 @@ WORDS: dict[str, str] = {
         "کوپل\u200cها حول صفحهٔ میانی؛ بردارهای ثانویه در امتداد لنگ\u200cها با زاویهٔ 2θᵢ، "
         "هر یک m·r/n",
     "cyl. {number}": "سیلندر {number}",
+    "each vector {product}·ω²": "هر بردار {product}·ω²",
+    "each vector {product}·ω², ω = {speed} rad/s": "هر بردار {product}·ω²، ω = {speed} rad/s",
     # a single cylinder: its forces against crank angle
     "Unbalanced forces": "نیروهای نامیزان",
     "crank angle θ (°)": "زاویهٔ لنگ θ (°)",

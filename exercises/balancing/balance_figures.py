@@ -78,19 +78,31 @@ def _engine_figures(s: BalanceSolution) -> dict[str, Figure]:
                   size=numerals(f"{left:.4g}" if left < 1e4 else f"{left:.0f}"),
                   unit=unit_words(word),
                   angle=numerals(f"{s.greatest_at[kind]:.1f}")), "", "")
-        # drawn to the unit its reading is given in, its m·r (m·r·l) scale stated beside
+        # drawn to the unit its reading is given in, at a round scale of that unit: its
+        # m·r (m·r·l) scale, that over ω², would be round only for a round ω²
         own = "kg·m²" if kind.endswith("couple") else "kg·m"
-        drawn = dict(unit=own) if e.speed is None else dict(
-            unit=word, per=e.speed ** 2,
-            also=("m·r·l scale" if kind.endswith("couple") else "m·r scale", own))
+        drawn = dict(unit=own) if e.speed is None else dict(unit=word, per=e.speed ** 2)
         out[kind.replace(" ", "-")] = draw_polygon(
             p.construction, p.tips[kind], p.closing[kind], f"{ex.name}: {words(kind)}",
             reading=reading, **drawn,
             notes=[words("couples about the central plane; secondary vectors along the "
-                         "cranks at 2θᵢ, each m·r/n")] + _speed_notes(e),
-            names={str(i): words("cyl. {number}", number=str(i)) for i in
+                         "cranks at 2θᵢ, each m·r/n")] + _drawn_notes(e, kind)
+            + _speed_notes(e),
+            names={str(i): words("cyl. {number}", number=numerals(str(i))) for i in
                    range(1, len(e.cranks) + 1)})
     return out
+
+def _drawn_notes(e, kind: str) -> list[str]:
+    """What a polygon drawn in newtons (newton-metres) lays off for each cylinder: its
+    m·r (m·r·l) times ω², at the speed given (the lift speed's note says its own)."""
+    if e.speed is None:
+        return []
+    product = "m·r·l" if kind.endswith("couple") else "m·r"
+    if e.at_lift:
+        return [words("each vector {product}·ω²", product=product)]
+    return [words("each vector {product}·ω², ω = {speed} rad/s", product=product,
+                  speed=numerals(f"{e.speed:.6g}"))]
+
 
 def _speed_notes(e) -> list[str]:
     """The speed a polygon's reading is taken at, where the file gives none: the lift speed

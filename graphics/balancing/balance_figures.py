@@ -33,14 +33,13 @@ _LANE = 6.0       # mm between vectors on one line drawn side by side: room for 
 def draw_polygon(c: Construction, tips: Sequence[tuple[str, Ref]], closing: Ref, title: str,
                  unit: str, reading: tuple[str, str, str], notes: Sequence[str] = (),
                  names: dict[str, str] | None = None, clockwise: bool = False,
-                 per: float = 1.0, also: tuple[str, str] | None = None) -> Figure:
+                 per: float = 1.0) -> Figure:
     """The polygon whose tips are ``tips`` in order from its pole, closed by ``closing``;
     its sizes in ``unit``, ``per`` of it to the construction's unit, the closing side read
     as ``reading`` (text, subscript, and the words after it: "(m r)", "A", " = 1.39 kg·m
     at 3.9°"); with ``clockwise`` its angles are drawn clockwise (the construction's
-    mirror image). ``also`` (a scale's name, the construction's unit) states the
-    construction's own scale beside it: an engine's m·r drawn to the newtons its reading
-    is given in.
+    mirror image). An engine's m·r is drawn to the newtons its reading is given in, ``per``
+    = ω², at a round scale of newtons.
 
     Vectors on one line that would cover one another (a polygon folded flat, or closing
     over its own sides) are drawn side by side in lanes, as the linkage polygons draw
@@ -107,8 +106,7 @@ def draw_polygon(c: Construction, tips: Sequence[tuple[str, Ref]], closing: Ref,
         if closes else words("head to tail, each parallel to its radial line")
     legend = (("vector", "the vectors"),) + ((("vector_result", "the closing side"),)
                                             if closes else ())
-    draw_caption(fig, title, [said], per_cm=per_cm, unit=unit, legend=legend, notes=notes,
-                 second=(also[0], per_cm / per, also[1]) if also else None)
+    draw_caption(fig, title, [said], per_cm=per_cm, unit=unit, legend=legend, notes=notes)
     return fig
 
 
