@@ -1,0 +1,229 @@
+/* tarsim serve: the page's state, its talk with the server, and the worked solution shown
+   as the server sends it (figures, readout, results beside the analytic check, steps).
+   Every edit writes the exercise file from the model and asks /api/solve; the page itself
+   computes nothing of the mechanism's motion. */
+"use strict";
+const App = (() => {
+  const app = {
+    model: Model.empty(), raw: null, tool: "select", selected: null, error: null, lang: "en",
+    shown: null, solution: null, figure: null, angle: null, seq: 0, timer: null, ctrl: null,
+  };
+  const t = k => WORDS[app.lang][k] ?? WORDS.en[k] ?? k;
+  const $ = id => document.getElementById(id);
+  const esc = s => String(s).replace(/[&<>"]/g, c => ({ "&": "&amp;", "<": "&lt;", ">": "&gt;", '"': "&quot;" })[c]);
+  const minus = s => s.replace(/^-/, "−").replace(/e\+?(-?)(\d+)$/, (_, s, d) => `×10^${s}${d}`);
+  const sig = (x, n = 4) => minus(String(Number(Number(x).toPrecision(n))));
+
+  /** Every point's place to draw: the frame's, then where the server last put each moving
+      point (at the angle shown), else where the user drew it. */
+  app.positions = () => {
+    const m = app.model, out = {};
+    for (const p of Model.points(m)) {
+      const xy = Model.isFrame(m, p) ? m.ex.frame[p] : app.shown?.[p] ?? m.sketch[p];
+      if (xy) out[p] = xy;
+    }
+    return out;
+  };
+  app.select = (what, changed = false) => {
+    app.selected = what ?? null;
+    if (changed) app.changed(); else { Editor.draw(); Panel.render(); }
+  };
+  app.changed = () => { app.error = null; Editor.draw(); Panel.render(); schedule(150); };
+  app.dragging = () => { app.shown = null; };
+  app.dropShown = () => { app.shown = null; };
+  app.setAngle = x => { app.angle = x; showAngle(); };
+
+  function fileAngle() { return Number(app.model.ex.input?.angle ?? 0); }
+  function showAngle() {
+    const a = app.angle ?? fileAngle();
+    const wrapped = ((a + 180) % 360 + 360) % 360 - 180;
+    $("angle").value = wrapped; $("angle-out").value = `${sig(a, 5)}°`;
+  }
+
+  // --- solving ------------------------------------------------------------------------------
+  function schedule(ms) {
+    clearTimeout(app.timer);
+    document.body.dataset.state = "pending";         // an edit not yet answered
+    app.timer = setTimeout(solve, ms);
+  }
+  function text() { return app.raw ?? Model.toToml(app.model); }
+
+  async function solve() {
+    if (!app.raw) {
+      const why = !app.model.ex.link.length ? "hint_empty" : Model.ready(app.model);
+      $("hint").textContent = why ? t(why) : "";
+      if (why) { state("idle"); return; }
+    }
+    const seq = ++app.seq;
+    app.ctrl?.abort(); app.ctrl = new AbortController();
+    const body = { toml: text(), lang: app.lang, figures: true };
+    const override = app.angle !== null && Math.abs(app.angle - fileAngle()) > 1e-9;
+    if (override) body.angle = app.angle;
+    state("solving");
+    const t0 = performance.now();
+    let res, data;
+    try {
+      res = await fetch("api/solve", { method: "POST", headers: { "Content-Type": "application/json" },
+                                       body: JSON.stringify(body), signal: app.ctrl.signal });
+      data = await res.json();
+    } catch (e) {
+      if (e.name === "AbortError") return;
+      if (seq === app.seq) { app.error = { text: t("offline"), where: {} }; state("error"); redraw(); }
+      return;
+    }
+    if (seq !== app.seq) return;
+    if (!res.ok) {
+      app.error = { text: data.error ?? res.statusText, where: whereOf(data) };
+      state("error"); redraw(); return;
+    }
+    app.error = null; app.solution = data;
+    if (data.points && !app.raw) {
+      app.shown = data.points;
+      if (!override) for (const [p, xy] of Object.entries(data.points)) if (!Model.isFrame(app.model, p)) app.model.sketch[p] = xy;
+    }
+    state("solved", performance.now() - t0);
+    redraw(); showSolution();
+  }
+
+  /** Where the error is: the server's "where", else the link or point its line names. */
+  function whereOf(data) {
+    if (data.where && Object.keys(data.where).length) return data.where;
+    const l = /\blink (\d+)/.exec(data.error ?? ""), p = /\bpoint ([A-Za-z][A-Za-z0-9_']*)/.exec(data.error ?? "");
+    return l ? { link: Number(l[1]) } : p ? { joint: p[1] } : {};
+  }
+
+  function state(s, ms) {
+    document.body.dataset.state = s;
+    const st = $("status");
+    st.className = s === "error" ? "bad" : "";
+    st.textContent = s === "solving" ? t("solving") : s === "solved" ? `${t("solved")} (${Math.round(ms)} ms)` :
+      s === "error" ? "⚠" : "";
+    $("solution").classList.toggle("stale", s === "error");
+    if (s === "error" && app.solution) $("solution").title = t("stale");
+  }
+
+  function redraw() { Editor.draw(); Panel.render(); }
+
+  // --- the solution -------------------------------------------------------------------------
+  function showSolution() {
+    const s = app.solution; if (!s) return;
+    const figs = s.figures ?? [];
+    if (!figs.some(f => f.name === app.figure)) app.figure = figs.find(f => /components|radius|polygon/.test(f.name))?.name ?? figs[0]?.name;
+    $("fig-tabs").innerHTML = figs.map(f => `<button type="button" data-fig="${esc(f.name)}" class="${f.name === app.figure ? "on" : ""}">${esc(f.title || f.name)}</button>`).join("");
+    $("fig-tabs").querySelectorAll("button").forEach(b => b.onclick = () => { app.figure = b.dataset.fig; showSolution(); });
+    const fig = figs.find(f => f.name === app.figure);
+    if (fig) $("figure").innerHTML = fig.svg;
+    readout(s);
+    $("table").innerHTML = `<tr><th>${t("quantity")}</th><th>${t("construction")}</th><th>${t("analytic")}</th><th>${t("rel_error")}</th><th>${t("unit")}</th></tr>` +
+      (s.table ?? []).map(r => {
+        const e = Number(r.error), ok = !(e > 1e-6);
+        return `<tr><td>${esc(r.quantity)}</td><td>${cell(r.construction)}</td><td>${cell(r.analytic)}</td>` +
+          `<td class="${ok ? "ok" : "off"}">${Number.isFinite(e) ? e.toExponential(1) : ""} ${ok ? "✓" : "✗"}</td><td>${esc(r.unit ?? "")}</td></tr>`;
+      }).join("");
+    $("steps").innerHTML = s.steps ?? "";
+  }
+  const cell = v => Array.isArray(v) ? `(${v.map(x => cell(x)).join(", ")})` : typeof v === "number" ? sig(v, 6) : esc(v ?? "");
+
+  function readout(s) {
+    const items = [];
+    for (const [n, w] of Object.entries(s.omega ?? {})) {
+      items.push(`<span data-q="omega${n}">ω${n} = ${sig(w)} rad/s${w ? ` <b>(${t(w > 0 ? "ccw" : "cw")})</b>` : ""}</span>`);
+    }
+    for (const [n, a] of Object.entries(s.alpha ?? {})) items.push(`<span data-q="alpha${n}">α${n} = ${sig(a)} rad/s²</span>`);
+    const asked = (app.raw ? [] : app.model.ex.ask?.find ?? []).filter(f => /^V_[^/]+$/.test(f)).map(f => f.slice(2));
+    const pts = asked.length ? asked : Object.keys(s.velocities ?? {}).filter(p => !Model.isFrame(app.model, p));
+    for (const p of pts) {
+      const v = s.velocities?.[p]; if (!v) continue;
+      items.push(`<span data-q="V_${esc(p)}">V_${esc(p)} = ${sig(v.magnitude)} ${esc(v.unit ?? "mm/s")}` +
+        (v.angle_deg !== undefined ? ` <b>∠ ${sig(v.angle_deg, 4)}°</b>` : "") + "</span>");
+    }
+    $("readout").innerHTML = `<span><b>${esc(t("readout"))} θ = ${sig(s.angle ?? fileAngle(), 5)}°</b></span>` + items.join("");
+  }
+
+  // --- files --------------------------------------------------------------------------------
+  async function exercises() {
+    let list;
+    try { list = await (await fetch("api/exercises")).json(); } catch { return; }
+    const groups = {};
+    for (const b of list.bundled ?? []) (groups[b.chapter ?? ""] ??= []).push(b);
+    $("open").innerHTML = `<option value="">${t("open")}…</option>` +
+      Object.entries(groups).map(([ch, xs]) => `<optgroup label="${esc(t("bundled"))}: ${esc(ch)}">` +
+        xs.map(b => `<option value="id:${esc(b.id)}">${esc(b.title || b.id)}</option>`).join("") + "</optgroup>").join("") +
+      (list.files?.length ? `<optgroup label="${esc(t("folder"))}">` + list.files.map(f => `<option value="file:${esc(f)}">${esc(f)}</option>`).join("") + "</optgroup>" : "");
+  }
+
+  async function open(value) {
+    const [kind, ref] = [value.slice(0, value.indexOf(":")), value.slice(value.indexOf(":") + 1)];
+    const res = await fetch(`api/exercise?${kind}=${encodeURIComponent(ref)}`);
+    const data = await res.json();
+    if (!res.ok) { app.error = { text: data.error, where: {} }; state("error"); redraw(); return; }
+    load(data.toml);
+  }
+
+  function load(toml) {
+    let m = null;
+    try { m = Model.fromToml(toml); } catch { m = null; }
+    app.raw = m ? null : toml;
+    app.model = m ?? Model.empty();
+    app.selected = null; app.shown = null; app.error = null; app.solution = null; app.angle = null;
+    $("name").value = app.raw ? (/^name\s*=\s*"(.*)"/m.exec(toml)?.[1] ?? "") : app.model.ex.name ?? "";
+    $("name").disabled = !!app.raw;
+    $("hint").textContent = "";
+    showAngle();
+    ["fig-tabs", "figure", "table", "steps", "readout"].forEach(id => { $(id).innerHTML = ""; });
+    Editor.fit(); redraw();
+    schedule(0);
+  }
+
+  async function download(what) {
+    const body = { toml: text(), lang: app.lang, what };
+    if (app.angle !== null && Math.abs(app.angle - fileAngle()) > 1e-9 && what !== "toml") body.angle = app.angle;
+    if (["svg", "pdf", "png"].includes(what)) body.figure = app.figure;
+    const res = await fetch("api/download", { method: "POST", headers: { "Content-Type": "application/json" }, body: JSON.stringify(body) });
+    if (!res.ok) {
+      const d = await res.json().catch(() => ({}));
+      app.error = { text: d.error ?? res.statusText, where: whereOf(d) }; state("error"); redraw(); return;
+    }
+    const name = /filename\*?=(?:UTF-8'')?"?([^";]+)"?/.exec(res.headers.get("Content-Disposition") ?? "")?.[1] ?? `tarsim.${what}`;
+    const url = URL.createObjectURL(await res.blob());
+    const a = document.createElement("a");
+    a.href = url; a.download = decodeURIComponent(name); document.body.appendChild(a); a.click(); a.remove();
+    setTimeout(() => URL.revokeObjectURL(url), 5000);
+    $("downloads").open = false;
+  }
+
+  // --- language -----------------------------------------------------------------------------
+  function words() {
+    document.documentElement.lang = app.lang;
+    document.documentElement.dir = app.lang === "fa" ? "rtl" : "ltr";
+    document.title = t("app");
+    document.querySelectorAll("[data-w]").forEach(e => { e.textContent = t(e.dataset.w); });
+    Editor.toolbar(t);
+    exercises();
+  }
+
+  function start() {
+    Editor.init(app); Panel.init(app, t);
+    words();
+    $("lang").onclick = () => { app.lang = app.lang === "en" ? "fa" : "en"; words(); redraw(); schedule(0); };
+    $("new").onclick = fresh;
+    $("open").onchange = e => { if (e.target.value) open(e.target.value); e.target.value = ""; };
+    $("name").onchange = e => { if (!app.raw) { app.model.ex.name = e.target.value; app.changed(); } };
+    $("angle").oninput = e => { app.angle = Number(e.target.value); $("angle-out").value = `${sig(app.angle, 5)}°`; schedule(60); };
+    $("reset-angle").onclick = () => { app.angle = null; showAngle(); schedule(0); };
+    document.querySelectorAll("#downloads [data-what]").forEach(b => b.onclick = () => download(b.dataset.what));
+    const q = new URLSearchParams(location.search);
+    if (q.get("id")) open("id:" + q.get("id")); else if (q.get("file")) open("file:" + q.get("file")); else fresh();
+  }
+  function fresh() {
+    app.raw = null; app.model = Model.empty(); app.selected = null; app.shown = null; app.error = null;
+    app.solution = null; app.angle = null;
+    $("name").value = app.model.ex.name; $("name").disabled = false;
+    ["fig-tabs", "figure", "table", "steps", "readout"].forEach(id => { $(id).innerHTML = ""; });
+    showAngle(); Editor.fit(); redraw(); solve();
+  }
+
+  return { app, start, load, toml: text, pageXY: xy => Editor.pageXY(xy) };
+})();
+window.tarsimApp = App;
+document.addEventListener("DOMContentLoaded", App.start);

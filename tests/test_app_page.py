@@ -1,0 +1,240 @@
+"""The app page of ``tarsim serve``, in a real browser: Debian's chromium driven by
+playwright, against the real server started on a free port in a folder of its own.
+
+A four-bar is built by clicks and typed lengths only, from an empty mechanism; the page's
+readout is held to the numbers `tarsim solve` gives for the file the page downloads; a
+link made too short shows the server's one line beside that link, and the app comes back
+when it is fixed. The README's screenshot of the app is the one taken here.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import re
+import subprocess
+import sys
+import tomllib
+from pathlib import Path
+
+import pytest
+from click.testing import CliRunner
+
+from tarsim.exercises.cli import cli
+
+pytest.importorskip("starlette", reason="tarsim serve needs the serve extra")
+pytest.importorskip("tarsim.exercises.serve", reason="tarsim serve is not in this tree")
+pytestmark = pytest.mark.slow
+
+ROOT = Path(__file__).resolve().parents[1]
+SHOT = ROOT / "docs" / "img" / "app.png"
+"""The README's and the app guide's screenshot, written when ``TARSIM_WRITE_SHOTS=1``."""
+
+
+@pytest.fixture(scope="module")
+def server(tmp_path_factory):
+    """``tarsim serve`` on a free port (it prints the one it took), in an empty folder."""
+    folder = tmp_path_factory.mktemp("served")
+    proc = subprocess.Popen([sys.executable, "-m", "tarsim", "serve", "--no-browser", "--port", "0",
+                             str(folder)], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                            text=True)
+    line = proc.stdout.readline()
+    url = re.search(r"http://\S+/", line)
+    if url is None:
+        proc.kill()
+        pytest.fail(f"tarsim serve did not start: {line}{proc.stderr.read()}")
+    yield url.group(0)
+    proc.terminate()
+    proc.wait(timeout=10)
+
+
+@pytest.fixture()
+def page(browser, server):
+    """The app, opened empty; every request it makes and every script error kept."""
+    p = browser.new_page(viewport={"width": 1400, "height": 900}, accept_downloads=True)
+    p.requests, p.errors = [], []
+    p.on("request", lambda r: p.requests.append(r.url))
+    p.on("pageerror", lambda e: p.errors.append(str(e)))
+    p.on("console", lambda m: p.errors.append(m.text) if m.type == "error" else None)
+    p.goto(server)
+    until(p, "document.body.dataset.state !== undefined")
+    yield p
+    # A refusal is the server's 422: the browser logs the status, the page shows the line.
+    assert [e for e in p.errors if "422" not in e] == []
+    assert all(u.startswith(server) for u in p.requests)     # nothing leaves for the network
+    p.close()
+
+
+# --- driving the page ---------------------------------------------------------------------
+
+def until(page, js, seconds=60):
+    """Waits until ``js`` is true in the page. (wait_for_function evaluates its text with
+    eval, which the page's Content-Security-Policy forbids; evaluate does not.)"""
+    for _ in range(int(seconds / 0.05)):
+        if page.evaluate(js):
+            return
+        page.wait_for_timeout(50)
+    pytest.fail(f"the page never came to {js}")
+
+
+def click_at(page, xy):
+    """A click on the paper at the mechanism's point ``xy`` (file units)."""
+    x, y = page.evaluate("xy => tarsimApp.pageXY(xy)", list(xy))
+    page.mouse.click(x, y)
+
+
+def positions(page) -> dict[str, list[float]]:
+    return page.evaluate("tarsimApp.app.positions()")
+
+
+def tool(page, name):
+    page.click(f'#tools [data-tool="{name}"]')
+
+
+def settled(page) -> str:
+    """Waits for the page's last edit to be answered; its state, "solved" or "error"."""
+    until(page, "['solved', 'error', 'idle'].includes(document.body.dataset.state)")
+    return page.evaluate("document.body.dataset.state")
+
+
+def click_link(page, number):
+    """Selects link ``number`` by clicking the middle of its bar."""
+    pts = page.evaluate(f"tarsimApp.app.model.ex.link.find(l => l.number === {number}).points")
+    pos = positions(page)
+    a, b = pos[pts[0]], pos[pts[1]]
+    click_at(page, ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2))
+
+
+def type_into(page, selector, value):
+    page.fill(selector, str(value))
+    page.press(selector, "Enter")
+
+
+def build_four_bar(page):
+    """The four-bar O2A 100, AB 250, O4B 200, O2O4 300 mm at θ2 = 60°, ω2 = 10 rad/s, by
+    clicks on the paper and numbers typed in the panel."""
+    page.click("#new")
+    tool(page, "select")
+    tool(page, "ground")
+    click_at(page, (0, 0))
+    click_at(page, (300, 0))
+    tool(page, "pin")
+    click_at(page, (50, 90))                    # roughly: the lengths are typed below
+    click_at(page, (270, 210))
+    tool(page, "link")
+    for a, b in [("O2", "A"), ("A", "B"), ("B", "O3")]:
+        pos = positions(page)
+        click_at(page, pos[a])
+        click_at(page, pos[b])
+    tool(page, "select")
+    for number, length in [(2, 100), (3, 250), (4, 200)]:
+        click_link(page, number)
+        type_into(page, "#l-len-0", length)
+    type_into(page, "#i-angle", 60)
+    type_into(page, "#i-omega", 10)
+
+
+def readout(page) -> dict[str, float]:
+    """The readout's numbers by name (ω3, V_B, …), as the page prints them."""
+    text = page.inner_text("#readout").replace("−", "-")
+    return {name: float(v) for name, v in re.findall(r"([ωα]\d+|V_\w+) = (-?[\d.]+)", text)}
+
+
+# --- the tests ----------------------------------------------------------------------------
+
+def test_a_four_bar_built_by_clicking_reads_and_downloads_as_solve_gives_it(page, tmp_path):
+    build_four_bar(page)
+    assert settled(page) == "solved"
+    got = readout(page)
+    # The page prints four significant figures: half a unit in the last is its rounding.
+    assert got["ω3"] == pytest.approx(-2.578, abs=5e-4)
+    assert got["V_B"] == pytest.approx(583.2, abs=0.05)
+    assert got["ω2"] == 10
+    # The links got the names the books give them: O4 is link 4's pivot.
+    toml = page.evaluate("tarsimApp.toml()")
+    ex = tomllib.loads(toml)
+    assert ex["frame"] == {"O2": [0, 0], "O4": [300, 0]}
+    assert [(k["points"], k["lengths"]) for k in ex["link"]] == [
+        (["O2", "A"], {"O2A": 100}), (["A", "B"], {"AB": 250}), (["O4", "B"], {"O4B": 200})]
+
+    page.click("#downloads summary")
+    with page.expect_download() as down:
+        page.click('#downloads [data-what="toml"]')
+    path = tmp_path / down.value.suggested_filename
+    down.value.save_as(path)
+    assert path.suffix == ".toml" and path.read_text(encoding="utf-8") == toml
+
+    out = tmp_path / "solved"
+    result = CliRunner().invoke(cli, ["solve", str(path), "-o", str(out), "--no-pdf"])
+    assert result.exit_code == 0, result.output
+    q = json.loads((out / "results.json").read_text())["positions"][0]["quantities"]
+    assert q["omega3"]["value"] == pytest.approx(got["ω3"], abs=5e-4)
+    assert q["V_B"]["value"] * 1000 == pytest.approx(got["V_B"], abs=0.05)    # m/s to mm/s
+    assert q["omega3"]["value"] == pytest.approx(-2.5784648, abs=1e-7)     # the bundled four-bar's
+
+    # The table beside the check shows solve's own numbers, in full.
+    table = page.inner_text("#table").replace("−", "-")
+    assert "-2.57846" in table and "583.192" in table
+    page.wait_for_timeout(300)
+    shot = page.screenshot()
+    assert shot[:8] == b"\x89PNG\r\n\x1a\n"
+    if os.environ.get("TARSIM_WRITE_SHOTS") == "1":
+        SHOT.parent.mkdir(parents=True, exist_ok=True)
+        SHOT.write_bytes(shot)
+
+
+def test_a_link_too_short_shows_the_servers_line_beside_it_and_the_app_comes_back(page):
+    build_four_bar(page)
+    assert settled(page) == "solved"
+    click_link(page, 3)
+    type_into(page, "#l-len-0", 50)
+    assert settled(page) == "error"
+    bubble = page.locator("#bubble")
+    line = bubble.inner_text()
+    assert "link 3" in line and "cannot reach" in line and "\n" not in line.strip()
+    # Beside that link: the bubble's box starts within 60 px of the link's drawn middle.
+    box = bubble.bounding_box()
+    pos = positions(page)
+    mid = page.evaluate("xy => tarsimApp.pageXY(xy)",
+                        [(pos["A"][0] + pos["B"][0]) / 2, (pos["A"][1] + pos["B"][1]) / 2])
+    assert box["x"] - 60 < mid[0] < box["x"] + box["width"] + 60
+    assert abs(box["y"] - mid[1]) < 60
+    # The link is drawn in the error's colour, and its row and its panel say the same line.
+    assert page.get_attribute('#editor line[data-link="3"]', "stroke") == "var(--hot)"
+    assert page.get_attribute('#editor line[data-link="2"]', "stroke") != "var(--hot)"
+    assert "cannot reach" in page.inner_text('#parts li[data-link="3"]')
+    assert "cannot reach" in page.inner_text("#props .err")
+    assert page.locator('#parts li[data-link="2"] .err').count() == 0
+
+    type_into(page, "#l-len-0", 250)
+    assert settled(page) == "solved"
+    assert bubble.is_hidden()
+    assert readout(page)["ω3"] == pytest.approx(-2.578, abs=5e-4)
+    assert page.get_attribute('#editor line[data-link="3"]', "stroke") != "var(--hot)"
+
+
+def test_turning_the_input_solves_again_at_each_angle(page):
+    build_four_bar(page)
+    assert settled(page) == "solved"
+    seen = {}
+    for angle in (60, 120, -30):
+        page.eval_on_selector(
+            "#angle", "(e, a) => { e.value = a; e.dispatchEvent(new Event('input')); }", angle)
+        assert settled(page) == "solved"
+        seen[angle] = readout(page)["ω3"]
+        assert f"θ = {angle}°".replace("-", "−") in page.inner_text("#readout")
+    assert seen[60] == pytest.approx(-2.578, abs=5e-4)
+    assert len(set(seen.values())) == 3            # each angle its own ω3
+    # The file keeps its own angle: the slider asks the server at another.
+    assert tomllib.loads(page.evaluate("tarsimApp.toml()"))["input"]["angle"] == 60
+
+
+def test_the_page_reads_and_writes_every_bundled_file_as_python_reads_it(page):
+    """The page keeps an opened exercise as its TOML's data and writes it back: the data
+    must be what tomllib reads, file by file (an integer-valued float may come back an
+    integer, which the exercise format reads alike)."""
+    catalog = ROOT / "exercises" / "catalog"
+    for path in sorted(catalog.rglob("*.toml")):
+        text = path.read_text(encoding="utf-8")
+        back = page.evaluate("t => TOML.write(TOML.parse(t))", text)
+        assert tomllib.loads(back) == tomllib.loads(text), path.name
