@@ -59,6 +59,12 @@ WORDS: dict[str, str] = {
         "هر یک m·r/n",
     "cyl. {number}": "سیلندر {number}",
     "each vector {product}·ω²": "هر بردار {product}·ω²",
+    # the end view of the cranks beside a polygon; an angle after a number said in درجه
+    "end view of the cranks, at θᵢ": "نمای انتهایی لنگ\u200cها، با زاویهٔ θᵢ",
+    "end view of the secondary cranks, at 2θᵢ":
+        "نمای انتهایی لنگ\u200cهای ثانویه، با زاویهٔ 2θᵢ",
+    "{cranks}: {angle}°": "{cranks}: {angle} درجه",
+    "i.d.c.": "نقطهٔ مرگ داخلی",
     "each vector {product}·ω², ω = {speed} rad/s": "هر بردار {product}·ω²، ω = {speed} rad/s",
     # a single cylinder: its forces against crank angle
     "Unbalanced forces": "نیروهای نامیزان",

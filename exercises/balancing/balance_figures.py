@@ -17,6 +17,7 @@ from tarsim.constructions.narration import numerals, unit_words, words
 from tarsim.constructions.reference.balance import single_cylinder, unbalanced_resultant
 from tarsim.constructions.units import LENGTH_UNITS
 from tarsim.graphics.balancing.balance_figures import draw_end_view, draw_polygon, draw_side_view
+from tarsim.graphics.balancing.crank_view import CrankView
 from tarsim.graphics.figure import Figure
 from tarsim.graphics.hiding import shown_answer
 from tarsim.graphics.plot import PlotMark, Series, draw_line_plot
@@ -89,8 +90,22 @@ def _engine_figures(s: BalanceSolution) -> dict[str, Figure]:
                          "cranks at 2θᵢ, each m·r/n")] + _drawn_notes(e, kind)
             + _speed_notes(e),
             names={str(i): words("cyl. {number}", number=numerals(str(i))) for i in
-                   range(1, len(e.cranks) + 1)})
+                   range(1, len(e.cranks) + 1)},
+            cranks=_crank_view(p.construction, len(e.cranks), kind.startswith("primary")))
     return out
+
+
+def _crank_view(c, count: int, primary: bool) -> CrankView:
+    """The end view of the cranks (at θᵢ) or of the secondary cranks (at 2θᵢ) a polygon's
+    vectors are laid along: step 1's, C1ᵢ and C2ᵢ."""
+    order = "1" if primary else "2"
+    return CrankView(
+        words("end view of the cranks, at θᵢ") if primary else
+        words("end view of the secondary cranks, at 2θᵢ"),
+        tuple((str(i), math.atan2(c.output(f"C{order}{i}").xy[1],
+                                  c.output(f"C{order}{i}").xy[0]))
+              for i in range(1, count + 1)))
+
 
 def _drawn_notes(e, kind: str) -> list[str]:
     """What a polygon drawn in newtons (newton-metres) lays off for each cylinder: its

@@ -20,6 +20,7 @@ from ..labels import LabelPlacer, paper_angle
 from ..linkages.lanes import lanes, moved
 from ..scales import draw_caption, nice_per_cm
 from ..symbols import draw_arrow
+from .crank_view import CrankView, draw_crank_view
 
 __all__ = ["draw_polygon", "draw_end_view", "draw_side_view"]
 
@@ -33,13 +34,14 @@ _LANE = 6.0       # mm between vectors on one line drawn side by side: room for 
 def draw_polygon(c: Construction, tips: Sequence[tuple[str, Ref]], closing: Ref, title: str,
                  unit: str, reading: tuple[str, str, str], notes: Sequence[str] = (),
                  names: dict[str, str] | None = None, clockwise: bool = False,
-                 per: float = 1.0) -> Figure:
+                 per: float = 1.0, cranks: CrankView | None = None) -> Figure:
     """The polygon whose tips are ``tips`` in order from its pole, closed by ``closing``;
     its sizes in ``unit``, ``per`` of it to the construction's unit, the closing side read
     as ``reading`` (text, subscript, and the words after it: "(m r)", "A", " = 1.39 kg·m
     at 3.9°"); with ``clockwise`` its angles are drawn clockwise (the construction's
     mirror image). An engine's m·r is drawn to the newtons its reading is given in, ``per``
-    = ω², at a round scale of newtons.
+    = ω², at a round scale of newtons; ``cranks``, the end view of its cranks that its
+    vectors are laid along, is set beside it (:func:`.crank_view.draw_crank_view`).
 
     Vectors on one line that would cover one another (a polygon folded flat, or closing
     over its own sides) are drawn side by side in lanes, as the linkage polygons draw
@@ -102,6 +104,8 @@ def draw_polygon(c: Construction, tips: Sequence[tuple[str, Ref]], closing: Ref,
     else:
         _place_reading(placer, pole, reading, (0.0, 1.0))       # under the names
     # A polygon that closes on itself has no closing side to point to.
+    if cranks is not None:
+        draw_crank_view(fig, cranks)
     said = words("head to tail, each parallel to its radial line; the heavy side closes it") \
         if closes else words("head to tail, each parallel to its radial line")
     legend = (("vector", "the vectors"),) + ((("vector_result", "the closing side"),)
