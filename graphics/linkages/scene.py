@@ -38,6 +38,7 @@ import math
 from collections.abc import Callable, Sequence
 
 from shapely.geometry import box
+from shapely.ops import unary_union
 
 from tarsim.constructions import geometry as g
 from tarsim.constructions.linkages.assembly_record import Assembly
@@ -48,7 +49,7 @@ from tarsim.constructions.record import Kind, Panel, Ref, Slice, Step
 
 from .diagram import _Diagram
 from .diagram_labels import input_caption
-from ..figure import Figure, Path, View
+from ..figure import Circle, Figure, Path, View
 from ..labels import LabelPlacer
 from ..paper_points import centroid
 from ..scales import draw_caption
@@ -254,7 +255,14 @@ class _Scene(_Diagram):
 
     def plan_marks(self) -> None:
         """Put each vector in its lane, beside a link it would lie along, and take its room
-        before the mechanism's points are named."""
+        before the mechanism's points are named. A wheel drawn past the frame of the points
+        (its rim reaches beyond its pins) is page too: a label may stand beside it."""
+        wheels = [box(c.centre[0] - c.radius, c.centre[1] - c.radius, c.centre[0] + c.radius,
+                      c.centre[1] + c.radius) for c in self.fig.items
+                  if isinstance(c, Circle) and c.style == "link"]
+        if wheels:
+            self.placer.page = unary_union([self.clip_box, *wheels]).envelope.buffer(
+                4.0, join_style="mitre")
         plan_vectors(self)
 
     # ----- over the diagram, then the caption ---------------------------------------------
