@@ -60,6 +60,14 @@ class LabelPlacer:
         self._tree = None
         self.ink.paint(geom, weight)
 
+    def unblock(self, since: int) -> None:
+        """Free the room of every obstacle blocked since there were ``since`` of them: a
+        label taken back to be set again elsewhere."""
+        for geom, weight in zip(self.obstacles[since:], self.weights[since:]):
+            self.ink.paint(geom, -weight)
+        del self.obstacles[since:], self.keys[since:], self.weights[since:]
+        self._tree = None
+
     def name_points(self, points) -> None:
         """Register points that are (or will be) labelled on this page: a point's label must
         stand nearer its own point than any of these."""

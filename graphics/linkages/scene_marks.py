@@ -14,6 +14,7 @@
 from __future__ import annotations
 
 import math
+from functools import partial
 from typing import TYPE_CHECKING
 
 from shapely.geometry import LineString
@@ -28,6 +29,7 @@ from tarsim.constructions.record import Role, Step
 
 from .diagram_slides import block_centre
 from ..figure import Circle, Path
+from .name_leaders import place_led
 from ..hiding import hidden
 from .lanes import lanes, moved
 from .scene_lines import DOT
@@ -216,8 +218,9 @@ def draw_points(scene: _Scene) -> None:
         away = (at[0] - scene.centre[0], at[1] - scene.centre[1])
         prefer = math.atan2(-away[1], away[0]) if math.hypot(*away) > 1e-6 else math.pi / 4
         with scene.fig.for_steps(*ids):
-            scene.label(" ≡ ".join(names), at, grp, prefer=prefer, gap=2.2 if pin else 1.2,
-                        own=at if names else None)
+            place_led(scene.fig, scene.placer, at, partial(
+                scene.label, " ≡ ".join(names), at, grp, prefer=prefer,
+                gap=2.2 if pin else 1.2, own=at if names else None, beside=True))
 
 
 def draw_infinities(scene: _Scene) -> None:
