@@ -9,9 +9,9 @@ position given by a time is stated by its time alone, for the crank's angle ther
 first thing the student works out.
 
 Each chapter that has a sheet registers its maker in :data:`HANDOUTS` by its key: the
-linkages (the course's main exercises, :func:`_linkage_sheets`), and the gear trains, cams
-and rotors (:mod:`.handout_chapters`); a flywheel's or a rod's file is refused, naming
-those that have one.
+linkages (the course's main exercises, :func:`_linkage_sheets`), the gear trains, cams
+and rotors (:mod:`.handout_chapters`), and the flywheels and connecting rods
+(:mod:`.handout_flywheel`); a chapter with none is refused, naming those that have one.
 """
 
 from __future__ import annotations
@@ -30,6 +30,7 @@ from tarsim.graphics.paper import paper, room
 from tarsim.graphics.typeset import typeset
 
 from .handout_chapters import cam_sheets, gear_sheets, rotor_sheets
+from .handout_flywheel import flywheel_sheets
 from .handout_loads import force_frames, force_words, given_loads
 from .handout_text import math_text, number
 
@@ -305,5 +306,6 @@ def _xy(p: tuple[float, float], m) -> str:
 
 
 HANDOUTS: dict[str, Callable] = {"linkages": _linkage_sheets, "gears": gear_sheets,
-                                  "cams": cam_sheets, "balancing": rotor_sheets}
+                                  "cams": cam_sheets, "balancing": rotor_sheets,
+                                  "forces": flywheel_sheets}
 """Each chapter's problem sheet, by the chapter's key."""

@@ -265,6 +265,9 @@ class Punch:
     """The losses' share of the punching work, where the file gives it."""
     efficiency: float | None = None
     """The punch's efficiency η, where the file gives it."""
+    given: tuple[tuple[str, float | str], ...] = ()
+    """Its data as the file writes them (``("hole", 38)``, ``("power", "3 kW")``), in the
+    file's units, for a problem sheet to state the energy per area where E is found."""
 
     @property
     def supplied(self) -> float:

@@ -3,6 +3,8 @@ data as given and the quantities asked."""
 
 from __future__ import annotations
 
+from .fa_handout_chapters import WORDS as _CHAPTERS
+
 __all__ = ["WORDS"]
 
 WORDS: dict[str, str] = {
@@ -106,3 +108,5 @@ WORDS: dict[str, str] = {
     "the disc and the follower at the start": "دیسک و پیرو در آغاز دور",
 }
 """The problem sheet's words as Persian says them."""
+
+WORDS |= _CHAPTERS

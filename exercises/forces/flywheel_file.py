@@ -92,6 +92,9 @@ class FlywheelExercise:
     """The areas as the file gives them, in the drawing's units of area."""
     energy_scale: float = 0.0
     """J per unit of the drawing's area."""
+    area_scales: tuple[float, float] | None = None
+    """The drawing's torque scale (N·m a length unit) and angle scale (degrees a length unit)
+    where the file gives them, not its energy_scale."""
     speed: float | None = None
     """The mean speed (rad/s)."""
     speed_fluctuation: float | None = None
@@ -434,8 +437,11 @@ def _areas(t: Tables, tm: dict) -> dict[str, Any]:
                      f"line and below it are equal (those above add to "
                      f"{math.fsum(a for a in drawn if a > 0):g}, below to "
                      f"{math.fsum(a for a in drawn if a < 0):g})", "turning_moment", "areas")
+    scales = (None if "energy_scale" in tm else
+              (t.number(tm, "torque_scale", "turning_moment", "the torque scale"),
+               t.number(tm, "angle_scale", "turning_moment", "the angle scale")))
     return {"areas": tuple(a * scale for a in drawn), "drawn_areas": drawn,
-            "energy_scale": scale}
+            "energy_scale": scale, "area_scales": scales}
 
 
 def _flywheel(t: Tables, metre: float, rad_s: float, diagram: dict) -> dict[str, Any]:

@@ -98,7 +98,8 @@ def read_punch(t: Tables, p: dict, metre: float) -> dict[str, Any]:
     if not time < period:
         raise t.fail(f"a punching takes less than the {period:g} s between holes, got {time:g} s",
                      "punch", part)
-    punch = Punch(energy, period, time, rate == "power", supply, losses, efficiency)
+    punch = Punch(energy, period, time, rate == "power", supply, losses, efficiency,
+                  tuple((k, p[k]) for k in PUNCH_KEYS if k in p))
     return {"areas": (-punch.delta_e, punch.delta_e), "drawn_areas": (-punch.delta_e,
                                                                      punch.delta_e),
             "energy_scale": 1.0, "punch": punch}

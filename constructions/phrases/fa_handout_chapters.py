@@ -1,0 +1,99 @@
+"""Persian words of the problem sheets of the flywheel, the connecting rod, the cams given by
+their arcs, the rotors with unknowns and the engines (:mod:`~tarsim.exercises.handout`)."""
+
+from __future__ import annotations
+
+__all__ = ["WORDS"]
+
+WORDS: dict[str, str] = {
+    # a flywheel's
+    "draw the mean line and the areas here": "خط میانگین و مساحت‌ها را اینجا رسم کنید",
+    "one cylinder's turning moment": "گشتاور چرخشی یک سیلندر",
+    "the strokes' triangles": "مثلث‌های کورس‌ها",
+    "T, in the least stroke's peak": "T، بر حسب قلهٔ کوچک‌ترین کورس",
+    "each stroke's triangle is drawn to its work's ratio":
+        "مثلث هر کورس به نسبت کار آن رسم شده است",
+    "the diagram repeats every {cycle}": "نمودار هر {cycle} تکرار می‌شود",
+    "the resisting torque steady": "گشتاور مقاوم ثابت",
+    "the machine's resisting torque as drawn, the driver's steady":
+        "گشتاور مقاوم ماشین چنان‌که رسم شده، گشتاور محرک ثابت",
+    "the areas above (+) and below (−) the mean line, in order: {areas}":
+        "مساحت‌های بالای (+) و زیر (−) خط میانگین، به ترتیب: {areas}",
+    "a unit of the drawing's area is {e} J": "هر واحد مساحت نمودار {e} J است",
+    "drawn at 1 {unit} = {torque} and 1 {unit} = {angle}":
+        "رسم‌شده با ۱ {unit} = {torque} و ۱ {unit} = {angle}",
+    "θ in radians": "θ بر حسب رادیان",
+    "T at the crank angles (θ, N·m): {points}, straight between":
+        "T در زاویه‌های لنگ (θ، N·m): {points}، میان آن‌ها خط راست",
+    "{n} cylinders, set equally over the cycle": "{n} سیلندر، یکسان در طول چرخه",
+    "{n} cylinders, each lagging the first by {phases}":
+        "{n} سیلندر، هر یک به اندازهٔ {phases} پس از نخستین",
+    "the strokes' works in the ratio {ratio}, each a triangle":
+        "کار کورس‌ها به نسبت {ratio}، هر یک مثلثی",
+    "the engine's power {p}": "توان موتور {p}",
+    "coefficient of fluctuation of energy {ce}": "ضریب نوسان انرژی {ce}",
+    "a cycle of {cycle}": "چرخه‌ای به اندازهٔ {cycle}",
+    "mean speed {speed}": "سرعت میانگین {speed}",
+    "greatest speed {speed}": "بیشترین سرعت {speed}",
+    "least speed {speed}": "کمترین سرعت {speed}",
+    "flywheel of {mass} kg": "چرخ طیاری به جرم {mass} kg",
+    "radius of gyration {k}": "شعاع ژیراسیون {k}",
+    "the rim's mean radius {r} (its diameter {d})": "شعاع میانگین طوقه {r} (قطر آن {d})",
+    "the rim gives {share} of I": "طوقه {share} از I را می‌دهد",
+    "the rim's mean speed {v}": "سرعت میانگین طوقه {v}",
+    "the rim's allowable hoop stress {s}": "تنش محیطی مجاز طوقه {s}",
+    "density {rho}": "چگالی {rho}",
+    "the rim's section {n} times as wide as it is thick":
+        "پهنای مقطع طوقه {n} برابر ضخامت آن",
+    "the energy a hole takes {v}": "انرژی هر سوراخ {v}",
+    "the energy per unit of sheared area {v}": "انرژی بر واحد سطح برش {v}",
+    "the hole's diameter {v}": "قطر سوراخ {v}",
+    "the plate's thickness {v}": "ضخامت ورق {v}",
+    "{v} holes an hour": "{v} سوراخ در ساعت",
+    "{v} holes a minute": "{v} سوراخ در دقیقه",
+    "a hole every {v}": "هر {v} یک سوراخ",
+    "the motor's power {v}": "توان موتور {v}",
+    "each punching takes {v}": "هر سوراخ‌کاری {v} طول می‌کشد",
+    "each punching takes {v} of the time between holes":
+        "هر سوراخ‌کاری {v} از زمان میان دو سوراخ طول می‌کشد",
+    "frictional losses {v} of the punching work": "تلفات اصطکاکی {v} از کار سوراخ‌کاری",
+    "the punch's efficiency {v}": "بازده پرس {v}",
+    "the mean torque": "گشتاور میانگین",
+    "the mean torque and the power": "گشتاور میانگین و توان",
+    "the work done in a cycle": "کار انجام‌شده در یک چرخه",
+    "the greatest fluctuation of energy ΔE": "بیشترین نوسان انرژی ΔE",
+    "the power": "توان",
+    "the energy the motor and flywheel supply a hole":
+        "انرژی‌ای که موتور و چرخ طیار به هر سوراخ می‌دهند",
+    "the flywheel's moment of inertia I": "ممان اینرسی چرخ طیار I",
+    "the rim's mass": "جرم طوقه",
+    "the rim's mass and its section": "جرم طوقه و مقطع آن",
+    "the rim's mean radius": "شعاع میانگین طوقه",
+    "the rim's mean speed": "سرعت میانگین طوقه",
+    "the rim's section: its thickness and width": "مقطع طوقه: ضخامت و پهنای آن",
+    "the mean speed": "سرعت میانگین",
+    "the coefficient of fluctuation of speed Cs": "ضریب نوسان سرعت Cs",
+    "the greatest and least speeds, and where each is":
+        "بیشترین و کمترین سرعت، و جای هر یک",
+    "the coefficient of fluctuation of energy CE": "ضریب نوسان انرژی CE",
+    "the energy the flywheel stores at its mean speed":
+        "انرژی ذخیره‌شده در چرخ طیار در سرعت میانگین",
+    "where the speed is greatest and least": "جایی که سرعت بیشترین و کمترین است",
+    "the shaft's greatest acceleration and retardation, and where":
+        "بیشترین شتاب و کاهش شتاب محور، و جای آن‌ها",
+    "the turning moment and the shaft's acceleration at {theta}":
+        "گشتاور چرخشی و شتاب محور در {theta}",
+    # a connecting rod's
+    "mass {m} kg": "جرم {m} kg",
+    "{l} between the pins' centres": "{l} میان مرکزهای دو پین",
+    "radius of gyration about G: {k}": "شعاع ژیراسیون حول G: {k}",
+    "hung from {pin}, it swings with a period of {t} s":
+        "آویخته از {pin}، با دورهٔ {t} s نوسان می‌کند",
+    "the rod's angular acceleration {alpha}": "شتاب زاویه‌ای میلهٔ رابط {alpha}",
+    "the equivalent dynamical system, one mass at {pin}":
+        "سیستم دینامیکی معادل، یک جرم در {pin}",
+    "the two masses at the pins {p} and {a}": "دو جرم در پین‌های {p} و {a}",
+    "their moment of inertia about G, against the rod's":
+        "ممان اینرسی آن‌ها حول G، در برابر ممان اینرسی میله",
+}
+"""These sheets' words as Persian says them."""
