@@ -21,6 +21,7 @@ from tarsim.constructions.narration import speaking, spoken
 from . import cli_common as common
 from .cli_files import list_, new
 from .cli_handout import handout
+from .cli_serve import serve
 
 __all__ = ["cli"]
 
@@ -506,3 +507,4 @@ def view(source, output, step):
 cli.add_command(list_)
 cli.add_command(new)
 cli.add_command(handout)
+cli.add_command(serve)

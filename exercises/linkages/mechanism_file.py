@@ -52,16 +52,17 @@ def load_mechanism(path: str | Path) -> Mechanism:
     return parse_mechanism(read_source(path), str(path))
 
 
-def line_of(error: AssemblyError, path: str | Path) -> int | None:
+def line_of(error: AssemblyError, path: str | Path, text: str | None = None) -> int | None:
     """The line of the file at ``path`` where what ``error`` says is stated, or None.
 
     A dead point is the input's angle; a missing or unfit branch, the point's key in
     [assembly] (or that table, or with none the first [[link]] that lists the point);
     anything else about a link, that link's [[link]] table. Assembly errors arise after
-    the file is read, so it is read again to find the line.
+    the file is read, so it is read again to find the line, unless its ``text`` is given
+    (a file sent to ``tarsim serve``, which is on no disk).
     """
     try:
-        text = read_source(path)
+        text = read_source(path) if text is None else text
         data = read_toml(text, str(path))
     except InputError:
         return None
