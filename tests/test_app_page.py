@@ -91,10 +91,15 @@ def tool(page, name):
     page.click(f'#tools [data-tool="{name}"]')
 
 
-def settled(page) -> str:
-    """Waits for the page's last edit to be answered; its state, "solved" or "error"."""
-    until(page, "['solved', 'error', 'idle'].includes(document.body.dataset.state)")
-    return page.evaluate("document.body.dataset.state")
+def settled(page, seconds=60) -> str:
+    """Waits for the page's last edit to be answered; its state then: "solved", "error", or
+    "idle" (nothing to ask yet). An edit puts it at "pending" at once."""
+    for _ in range(int(seconds / 0.05)):
+        state = page.evaluate("document.body.dataset.state")
+        if state in ("solved", "error", "idle"):
+            return state
+        page.wait_for_timeout(50)
+    pytest.fail(f"the page's last edit was never answered: {state}")
 
 
 def click_link(page, number):
@@ -238,3 +243,63 @@ def test_the_page_reads_and_writes_every_bundled_file_as_python_reads_it(page):
         text = path.read_text(encoding="utf-8")
         back = page.evaluate("t => TOML.write(TOML.parse(t))", text)
         assert tomllib.loads(back) == tomllib.loads(text), path.name
+
+
+def test_a_slider_crank_built_with_the_block_tool_gives_the_pistons_speed(page):
+    """O2A 100, AB 300 mm, B on a guide along x through O2, θ2 = 45°, ω2 = 10 rad/s: the
+    piston's speed by hand is rω·sin θ + r²ω·sin θ cos θ / √(l² − r² sin²θ) = 707.107 +
+    171.499 = 878.606 mm/s."""
+    page.click("#new")
+    tool(page, "ground")
+    click_at(page, (0, 0))
+    tool(page, "pin")
+    click_at(page, (70, 70))
+    click_at(page, (360, 0))
+    tool(page, "link")
+    for a, b in [("O2", "A"), ("A", "B")]:
+        pos = positions(page)
+        click_at(page, pos[a])
+        click_at(page, pos[b])
+    tool(page, "block")
+    click_at(page, positions(page)["B"])
+    type_into(page, "#s-ty", 0)                 # the guide through O2's height, along x
+    type_into(page, "#s-angle", 0)
+    tool(page, "select")
+    for number, length in [(2, 100), (3, 300)]:
+        click_link(page, number)
+        type_into(page, "#l-len-0", length)
+    type_into(page, "#i-angle", 45)
+    assert settled(page) == "solved"
+    assert readout(page)["V_B"] == pytest.approx(878.606, abs=0.05)   # printed to 4 figures
+    ex = tomllib.loads(page.evaluate("tarsimApp.toml()"))
+    assert ex["slider"] == [{"link": 4, "point": "B", "on": 1, "through": [360, 0], "angle": 0}]
+    assert ex["assembly"] == {"B": "forward"}
+
+
+def test_a_bundled_exercise_opens_drawn_where_the_server_puts_it(page):
+    page.select_option("#open", "id:offset-slider-crank")
+    assert settled(page) == "solved"
+    until(page, "tarsimApp.app.positions().B !== undefined")
+    pos = positions(page)
+    # 30 cm crank at 45°: A is where the server put it, in the file's cm.
+    assert pos["A"] == pytest.approx([30 * 0.5 ** 0.5, 30 * 0.5 ** 0.5], abs=1e-9)
+    assert pos["B"][1] == pytest.approx(20)     # on its guide, 20 cm above O2
+    assert page.locator("#fig-tabs button").count() >= 2
+    assert page.locator("#figure svg").count() == 1
+    assert "time_ratio" in page.inner_text("#table")
+
+
+def test_the_page_speaks_persian_right_to_left(page):
+    build_four_bar(page)
+    assert settled(page) == "solved"
+    page.click("#lang")
+    assert settled(page) == "solved"
+    assert page.evaluate("document.documentElement.dir") == "rtl"
+    assert page.inner_text('#tools [data-tool="ground"]') == "لولای زمین"
+    assert re.search("[\u0600-\u06ff]", page.inner_text("#steps"))     # the server's Persian
+    assert re.search("[\u0600-\u06ff]", page.inner_text("#figure"))
+    assert readout(page)["ω3"] == pytest.approx(-2.578, abs=5e-4)
+    missing = page.evaluate("Object.keys(WORDS.en).filter(k => !(k in WORDS.fa))")
+    assert missing == []
+    if os.environ.get("TARSIM_WRITE_SHOTS") == "1":
+        page.screenshot(path=str(SHOT.with_name("app-fa.png")))

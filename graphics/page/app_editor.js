@@ -1,6 +1,6 @@
 /* tarsim serve: the mechanism drawn on paper, and the tools that build it by clicking.
    World coordinates are the file's (its length unit, y up); the view maps them to the
-   screen. A click is snapped to the grid's minor step; exact numbers are typed in the
+   screen. A click is snapped to a tenth of the grid's step; exact numbers are typed in the
    property panel (app_panel.js). */
 "use strict";
 const Editor = (() => {
@@ -18,7 +18,7 @@ const Editor = (() => {
     wheel: '<circle cx="9" cy="8" r="6" fill="none" stroke="currentColor" stroke-width="1.8"/><circle cx="9" cy="8" r="1.3" fill="currentColor"/><path d="M1 15h16" stroke="currentColor" stroke-width="1.6"/>',
     delete: '<path d="M4 4l10 10M14 4L4 14" stroke="currentColor" stroke-width="2.2" stroke-linecap="round"/>',
   };
-  let app, svg, view = { s: 1.2, cx: 200, cy: 80 }, pending = null, drag = null;
+  let app, svg, view = { s: 1.1, cx: 150, cy: 90 }, pending = null, drag = null;
 
   function init(a) {
     app = a; svg = document.getElementById("editor");
@@ -76,7 +76,7 @@ const Editor = (() => {
     const raw = 60 / view.s, p = 10 ** Math.floor(Math.log10(raw));
     return [1, 2, 5, 10].map(k => k * p).find(v => v >= raw);
   }
-  const minor = () => gridStep() / 5;
+  const minor = () => gridStep() / 10;
   function snap(xy) {
     if (!document.getElementById("snap")?.checked) return xy;
     const g = minor();
@@ -84,7 +84,7 @@ const Editor = (() => {
   }
   function fit() {
     const pts = Object.values(app.positions());
-    if (!pts.length) { view = { s: 1.2, cx: 200, cy: 80 }; return; }
+    if (!pts.length) { view = { s: 1.1, cx: 150, cy: 90 }; return; }
     const xs = pts.map(p => p[0]), ys = pts.map(p => p[1]);
     const [w, h] = size();
     const bw = Math.max(...xs) - Math.min(...xs) || 100, bh = Math.max(...ys) - Math.min(...ys) || 100;
@@ -193,6 +193,7 @@ const Editor = (() => {
     const m = app.model, pos = app.positions(), sel = app.selected ?? {}, bad = app.error?.where ?? {};
     const [w, h] = size();
     svg.setAttribute("viewBox", `0 0 ${w} ${h}`);
+    svg.setAttribute("direction", "ltr");
     svg.replaceChildren();
     grid(w, h);
     const g = el("g", {}, svg);

@@ -185,14 +185,14 @@ const Panel = (() => {
     };
     const len = l => Object.entries(l.lengths ?? {}).map(([k, v]) => `${esc(k)} = ${v}`).join(", ");
     let h = `<h2>${t("parts")}</h2><h3>${t("links")}</h3><ul>` +
-      m.ex.link.map(l => row({ link: l.number }, `<b>${l.number}</b> ${esc(l.name ?? "")} ${esc(l.points.join("–"))}` +
-        `${len(l) ? " · " + len(l) + " " + unit() : ""}${m.ex.input.link === l.number ? " · ω" + l.number : ""}` +
+      m.ex.link.map(l => row({ link: l.number }, `<b>${l.number}</b> ${esc(l.name ?? "")} <bdi dir="ltr">${esc(l.points.join("–"))}` +
+        `${len(l) ? " · " + len(l) + " " + unit() : ""}${m.ex.input.link === l.number ? " · ω" + l.number : ""}</bdi>` +
         (w.link === l.number ? `<div class="err" data-error>${esc(app.error.text)}</div>` : ""), Editor.colour(l.number))).join("") + "</ul>";
     if (m.ex.slider?.length) h += `<h3>${t("sliders")}</h3><ul>` + m.ex.slider.map((s, i) =>
       row({ slider: i }, `${esc(s.point)} · ${t("number")} ${s.link} ${t("on")} ${s.on}${s.kind === "pin" ? " (" + t("kind_pin") + ")" : ""}`)).join("") + "</ul>";
     if (m.ex.contact?.length) h += `<h3>${t("contacts")}</h3><ul>` + m.ex.contact.map((c, i) =>
       row({ contact: i }, `${esc(c.circle.centre)} · r = ${c.circle.radius} ${unit()}`)).join("") + "</ul>";
-    const joint = w.joint && !Object.keys(sel).includes("point") ? `<div class="err" data-error>${esc(w.joint)}: ${esc(app.error.text)}</div>` : "";
+    const joint = w.joint && !w.link && !Object.keys(sel).includes("point") ? `<div class="err" data-error>${esc(w.joint)}: ${esc(app.error.text)}</div>` : "";
     h += joint;
     const box = document.getElementById("parts");
     box.innerHTML = h;
@@ -225,9 +225,10 @@ const Panel = (() => {
 
   function ask() {
     const m = app.model, a = (m.ex.ask ??= {}), find = a.find ?? [], methods = a.methods ?? [];
-    const offered = ["centres"];
-    for (const l of m.ex.link) if (l.points.length > 1) offered.push("omega" + l.number, "alpha" + l.number);
-    for (const p of Model.movingPoints(m)) offered.push("V_" + p, "A_" + p);
+    const turning = m.ex.link.map(l => l.number);
+    const pts = Model.movingPoints(m).filter(p => m.ex.link.some(l => l.points.includes(p)));
+    const offered = ["centres", ...turning.map(n => "omega" + n), ...turning.map(n => "alpha" + n),
+                     ...pts.map(p => "V_" + p), ...pts.map(p => "A_" + p)];
     offered.push(...Model.FIND_WIDE);
     const extra = find.filter(f => !offered.includes(f));
     const label = f => f === "centres" ? t("centres") : f.replace(/^omega(\d+)$/, "ω$1").replace(/^alpha(\d+)$/, "α$1");

@@ -12,7 +12,8 @@ const App = (() => {
   const $ = id => document.getElementById(id);
   const esc = s => String(s).replace(/[&<>"]/g, c => ({ "&": "&amp;", "<": "&lt;", ">": "&gt;", '"': "&quot;" })[c]);
   const minus = s => s.replace(/^-/, "−").replace(/e\+?(-?)(\d+)$/, (_, s, d) => `×10^${s}${d}`);
-  const sig = (x, n = 4) => minus(String(Number(Number(x).toPrecision(n))));
+  // Rounding's leftovers (α = −3e−18 rad/s² of a link that does not turn) read as 0.
+  const sig = (x, n = 4) => minus(String(Math.abs(x) < 1e-9 ? 0 : Number(Number(x).toPrecision(n))));
 
   /** Every point's place to draw: the frame's, then where the server last put each moving
       point (at the angle shown), else where the user drew it. */
@@ -52,13 +53,20 @@ const App = (() => {
     if (!app.raw) {
       const why = !app.model.ex.link.length ? "hint_empty" : Model.ready(app.model);
       $("hint").textContent = why ? t(why) : "";
-      if (why) { state("idle"); return; }
+      $("hint").classList.toggle("big", why === "hint_empty");
+      if (why) {
+        state("idle");
+        if (!app.solution) $("figure").innerHTML = `<p class="placeholder">${esc(t("no_solution"))}</p>`;
+        return;
+      }
     }
     const seq = ++app.seq;
     app.ctrl?.abort(); app.ctrl = new AbortController();
-    const body = { toml: text(), lang: app.lang, figures: true };
+    const body = { toml: text(), lang: app.lang, figures: true, ...app.source };
     const override = app.angle !== null && Math.abs(app.angle - fileAngle()) > 1e-9;
-    if (override) body.angle = app.angle;
+    // At another angle: that position alone, without what belongs to no one position (the
+    // time ratio, the stroke), which turning the input does not change.
+    if (override) Object.assign(body, { angle: app.angle, whole: false });
     state("solving");
     const t0 = performance.now();
     let res, data;
@@ -77,12 +85,49 @@ const App = (() => {
       state("error"); redraw(); return;
     }
     app.error = null; app.solution = data;
-    if (data.points && !app.raw) {
-      app.shown = data.points;
-      if (!override) for (const [p, xy] of Object.entries(data.points)) if (!Model.isFrame(app.model, p)) app.model.sketch[p] = xy;
-    }
-    state("solved", performance.now() - t0);
+    const ms = performance.now() - t0, first = !app.shown;
+    place(data.points ?? await located(body, seq), override);
+    if (seq !== app.seq) return;
+    if (first && offPaper()) Editor.fit();
+    state("solved", ms);
     redraw(); showSolution();
+  }
+
+  /** The moving points where the server put them: the sketch follows at the file's own
+      angle (so a near point stays on its branch), the drawing at any angle. */
+  function place(points, override) {
+    if (!points || app.raw) return;
+    app.shown = points;
+    if (!override) for (const [p, xy] of Object.entries(points)) if (!Model.isFrame(app.model, p)) app.model.sketch[p] = xy;
+  }
+
+  /** Where the server places each moving point (pos_P, in metres in results.json), asked
+      of the same file without its figures, for a server that does not send "points". */
+  async function located(body, seq) {
+    const m = app.model, names = Model.movingPoints(m).filter(p => m.ex.link.some(l => l.points.includes(p)));
+    if (!names.length) return null;
+    const ex = structuredClone(m.ex);
+    ex.ask = { find: names.map(p => "pos_" + p) };
+    const copy = Model.fromToml(TOML.write(ex));
+    copy.nearPoints = m.nearPoints; copy.sketch = m.sketch;
+    try {
+      const res = await fetch("api/solve", { method: "POST", headers: { "Content-Type": "application/json" },
+        body: JSON.stringify({ ...body, toml: Model.toToml(copy), figures: false, whole: false }) });
+      if (!res.ok || seq !== app.seq) return null;
+      const q = (await res.json()).results?.positions?.[0]?.quantities ?? {};
+      const per = { mm: 1e-3, cm: 1e-2, m: 1, in: 0.0254, ft: 0.3048 }[m.ex.units?.length ?? "mm"] ?? 1e-3;
+      const out = {};
+      for (const p of names) if (q["pos_" + p]?.point) out[p] = q["pos_" + p].point.map(v => v / per);
+      return out;
+    } catch { return null; }
+  }
+
+  function offPaper() {
+    const svg = $("editor"), r = svg.getBoundingClientRect();
+    return Object.values(app.positions()).some(xy => {
+      const [x, y] = Editor.pageXY(xy);
+      return x < r.left + 20 || x > r.right - 20 || y < r.top + 40 || y > r.bottom - 20;
+    });
   }
 
   /** Where the error is: the server's "where", else the link or point its line names. */
@@ -108,20 +153,36 @@ const App = (() => {
   function showSolution() {
     const s = app.solution; if (!s) return;
     const figs = s.figures ?? [];
-    if (!figs.some(f => f.name === app.figure)) app.figure = figs.find(f => /components|radius|polygon/.test(f.name))?.name ?? figs[0]?.name;
-    $("fig-tabs").innerHTML = figs.map(f => `<button type="button" data-fig="${esc(f.name)}" class="${f.name === app.figure ? "on" : ""}">${esc(f.title || f.name)}</button>`).join("");
+    if (!figs.some(f => f.name === app.figure)) {       // the same figure at the new position
+      app.figure = (figs.find(f => base(f.name) === base(app.figure ?? "")) ??
+                    figs.find(f => /components|radius|polygon/.test(f.name)) ?? figs[0])?.name;
+    }
+    const titles = figs.map(f => f.title || f.name);
+    const label = (f, k) => titles.indexOf(titles[k]) === titles.lastIndexOf(titles[k]) ? titles[k]
+      : `${titles[k]} · ${position(f.name) ?? f.name}`;
+    $("fig-tabs").innerHTML = figs.map((f, k) => `<button type="button" data-fig="${esc(f.name)}" title="${esc(f.name)}" class="${f.name === app.figure ? "on" : ""}">${esc(label(f, k))}</button>`).join("");
     $("fig-tabs").querySelectorAll("button").forEach(b => b.onclick = () => { app.figure = b.dataset.fig; showSolution(); });
     const fig = figs.find(f => f.name === app.figure);
     if (fig) $("figure").innerHTML = fig.svg;
     readout(s);
-    $("table").innerHTML = `<tr><th>${t("quantity")}</th><th>${t("construction")}</th><th>${t("analytic")}</th><th>${t("rel_error")}</th><th>${t("unit")}</th></tr>` +
+    $("table").innerHTML = `<tr><th>${t("quantity")}</th><th>${t("construction")}</th><th>${t("analytic")}</th><th>${t("rel_error")}</th></tr>` +
       (s.table ?? []).map(r => {
-        const e = Number(r.error), ok = !(e > 1e-6);
-        return `<tr><td>${esc(r.quantity)}</td><td>${cell(r.construction)}</td><td>${cell(r.analytic)}</td>` +
-          `<td class="${ok ? "ok" : "off"}">${Number.isFinite(e) ? e.toExponential(1) : ""} ${ok ? "✓" : "✗"}</td><td>${esc(r.unit ?? "")}</td></tr>`;
+        const e = r.error === null || r.error === undefined ? NaN : Number(r.error);
+        const ok = typeof r.passed === "boolean" ? r.passed : !(e > 1e-6);
+        return `<tr><td>${esc(symbol(r.quantity))}${r.position ? ` <small>${esc(r.position)}</small>` : ""}</td>` +
+          `<td>${cell(r.construction)}</td><td>${cell(r.analytic)}</td>` +
+          `<td class="${ok ? "ok" : "off"}">${Number.isFinite(e) ? e.toExponential(1) : ""} ${ok ? "✓" : "✗"}</td></tr>`;
       }).join("");
     $("steps").innerHTML = s.steps ?? "";
   }
+  // A figure of one of several positions is named for it: V_B-radius-rotation-theta2-90.
+  const AT = /-(?:theta(\d+)-(-?[\d.]+)|t-(-?[\d.]+)s)$/;
+  const base = name => name.replace(AT, "");
+  const position = name => {
+    const m = AT.exec(name);
+    return m && (m[1] ? `θ${m[1]} = ${minus(m[2])}°` : `t = ${m[3]} s`);
+  };
+  const symbol = q => q.replace(/\bomega(\d)/g, "ω$1").replace(/\balpha(\d)/g, "α$1");
   const cell = v => Array.isArray(v) ? `(${v.map(x => cell(x)).join(", ")})` : typeof v === "number" ? sig(v, 6) : esc(v ?? "");
 
   function readout(s) {
@@ -153,14 +214,16 @@ const App = (() => {
   }
 
   async function open(value) {
+    document.body.dataset.state = "pending";
     const [kind, ref] = [value.slice(0, value.indexOf(":")), value.slice(value.indexOf(":") + 1)];
     const res = await fetch(`api/exercise?${kind}=${encodeURIComponent(ref)}`);
     const data = await res.json();
     if (!res.ok) { app.error = { text: data.error, where: {} }; state("error"); redraw(); return; }
-    load(data.toml);
+    load(data.toml, kind === "id" ? { id: ref } : { file: ref });
   }
 
-  function load(toml) {
+  function load(toml, source = {}) {
+    app.source = source;
     let m = null;
     try { m = Model.fromToml(toml); } catch { m = null; }
     app.raw = m ? null : toml;
@@ -176,7 +239,7 @@ const App = (() => {
   }
 
   async function download(what) {
-    const body = { toml: text(), lang: app.lang, what };
+    const body = { toml: text(), lang: app.lang, what, ...app.source };
     if (app.angle !== null && Math.abs(app.angle - fileAngle()) > 1e-9 && what !== "toml") body.angle = app.angle;
     if (["svg", "pdf", "png"].includes(what)) body.figure = app.figure;
     const res = await fetch("api/download", { method: "POST", headers: { "Content-Type": "application/json" }, body: JSON.stringify(body) });
@@ -199,6 +262,8 @@ const App = (() => {
     document.title = t("app");
     document.querySelectorAll("[data-w]").forEach(e => { e.textContent = t(e.dataset.w); });
     Editor.toolbar(t);
+    const first = $("open").options[0];
+    if (first) first.textContent = `${t("open")}…`; else $("open").innerHTML = `<option value="">${esc(t("open"))}…</option>`;
     exercises();
   }
 
@@ -216,7 +281,7 @@ const App = (() => {
     if (q.get("id")) open("id:" + q.get("id")); else if (q.get("file")) open("file:" + q.get("file")); else fresh();
   }
   function fresh() {
-    app.raw = null; app.model = Model.empty(); app.selected = null; app.shown = null; app.error = null;
+    app.source = {}; app.raw = null; app.model = Model.empty(); app.selected = null; app.shown = null; app.error = null;
     app.solution = null; app.angle = null;
     $("name").value = app.model.ex.name; $("name").disabled = false;
     ["fig-tabs", "figure", "table", "steps", "readout"].forEach(id => { $(id).innerHTML = ""; });

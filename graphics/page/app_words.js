@@ -34,7 +34,10 @@ const WORDS = {
     download: "download", toml: "exercise (TOML)", svg: "figure (SVG)", pdf: "figure (PDF)",
     png: "figure (PNG)", steps_md: "steps (Markdown)",
     solving: "solving…", solved: "solved", stale: "the last good solution, before the error",
-    hint_empty: "Place two ground pivots and two pins, join them into links, then type the lengths.",
+    hint_empty: "1. ground pivot: click two places on the paper. 2. pin: click where the moving joints go. " +
+      "3. link: click one point, then another. 4. select a link and type its length. " +
+      "Or open a bundled exercise above.",
+    no_solution: "The worked solution comes here: each figure, the results beside the analytic check, the numbered steps.",
     hint_input: "Choose the input link: a link that turns about a ground pivot.",
     hint_pivot: "The input link must turn about a ground pivot: make its first point a ground pivot.",
     radius_rotation: "radius rotation", parallel_line: "parallel lines", components: "components",
@@ -74,7 +77,10 @@ const WORDS = {
     download: "بارگیری", toml: "تمرین (TOML)", svg: "شکل (SVG)", pdf: "شکل (PDF)",
     png: "شکل (PNG)", steps_md: "مراحل (Markdown)",
     solving: "در حال حل…", solved: "حل شد", stale: "آخرین حلِ درست، پیش از خطا",
-    hint_empty: "دو لولای زمین و دو لولا بگذارید، آن‌ها را با میله‌ها به هم بپیوندید و طول‌ها را بنویسید.",
+    hint_empty: "۱. لولای زمین: دو جا روی کاغذ کلیک کنید. ۲. لولا: جای مفصل‌های متحرک را کلیک کنید. " +
+      "۳. میله: یک نقطه و سپس نقطهٔ دیگر را کلیک کنید. ۴. میله‌ای را برگزینید و طولش را بنویسید. " +
+      "یا یکی از تمرین‌های همراه را از بالا باز کنید.",
+    no_solution: "حل گام‌به‌گام این‌جا می‌آید: هر شکل، نتایج در کنار پاسخ تحلیلی، و مراحل شماره‌دار.",
     hint_input: "میلهٔ ورودی را برگزینید: میله‌ای که گرد یک لولای زمین می‌چرخد.",
     hint_pivot: "میلهٔ ورودی باید گرد یک لولای زمین بچرخد: نخستین نقطه‌اش را لولای زمین کنید.",
     radius_rotation: "دوران شعاع", parallel_line: "خطوط موازی", components: "مؤلفه‌ها",
