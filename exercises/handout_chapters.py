@@ -252,13 +252,12 @@ def cam_sheets(ex, sheet: tuple[float, float]) -> list[Figure]:
     displacement diagram's axes, empty, at the scales the solution draws it at."""
     from tarsim.graphics.handout_cam import draw_base_circle, draw_empty_displacement
 
-    from tarsim.constructions.errors import InputError
-
     from .chapters import chapter_of
 
-    if getattr(ex, "follower", None) is None:
-        raise InputError(f"{ex.id}: a problem sheet is written for a cam given by its "
-                         "follower's motion; a cam given by its arcs has none yet")
+    if getattr(ex, "follower", None) is None:        # a cam given by its arcs
+        from .handout_arc_cam import arc_cam_sheets
+
+        return arc_cam_sheets(ex, sheet)
     s = chapter_of(ex).solve(ex)
     f, unit, metre = ex.follower, ex.length_unit, ex.metre
     top = max(s.curves[1]) if s.curves[1] else max(g.lift for g in ex.segments)

@@ -13,7 +13,7 @@ from tarsim.constructions.narration import numerals, unit_words, words
 from .figure import Circle, Figure, Path, Text, text_width
 from .scales import draw_caption, nice_per_cm
 
-__all__ = ["draw_empty_displacement", "draw_base_circle", "DISPLACEMENT_ROOM"]
+__all__ = ["draw_empty_displacement", "draw_base_circle", "draw_given_arcs", "DISPLACEMENT_ROOM"]
 
 DISPLACEMENT_ROOM = (165.0, 60.0)
 """Paper (mm) a turn and the greatest lift are fitted to, as the solution's diagram is."""
@@ -166,3 +166,69 @@ def _arm_end(pivot: tuple[float, float], arm: float, reach: float
     first = (a * ux - h * uy, a * uy + h * ux)
     second = (a * ux + h * uy, a * uy - h * ux)
     return max(first, second, key=lambda p: p[1])
+
+
+def draw_given_arcs(title: str, cam, given: Sequence[str], *, unit: str,
+                    metre: float) -> Figure:
+    """Draw a cam of arcs as its file gives it, laid as the solution lays it (the axis of
+    symmetry OQ along x, at the scale the solution's outline is drawn at): the base circle,
+    the lift laid off along the axis to the apex, the nose where its radius is given (inside
+    the apex), the angle of lift from the axis where it is given, and the follower at the
+    apex; no flank, and no size the construction finds.
+
+    Parameters
+    ----------
+    title
+        The caption's heading.
+    cam
+        The :class:`~tarsim.constructions.cams.arc_cam.ArcCam` (m, rad).
+    given
+        The file's keys for the sizes it gives (``"nose_radius"``, ``"angle"``, …).
+    unit, metre
+        The length unit the sizes are stated in, and its size in metres.
+
+    Examples
+    --------
+    >>> from tarsim.constructions.cams.arc_cam import ArcCam
+    >>> cam = ArcCam("circular arc", 0.04, 0.01, 0.01, math.pi / 3, flat=True)
+    >>> fig = draw_given_arcs("Cam", cam, ("nose_radius", "lift", "angle"), unit="mm",
+    ...                       metre=1e-3)
+    >>> sorted(round(c.radius, 6) for c in fig.items if getattr(c, "style", "") == "link")
+    [10.0, 40.0]
+    """
+    from .cams.arc_cam_figure import _ROOM
+    from .symbols import draw_dimension, mark_angle
+
+    reach = cam.d + cam.nose + 2 * cam.roller          # as the solution's outline is fitted
+    per_cm = nice_per_cm(2 * reach / metre, _ROOM)
+    k = 10.0 / (per_cm * metre)
+    apex = (cam.base + cam.lift) * k
+    fig = Figure(0.0, 0.0, title=title)
+    fig.add(Circle((0.0, 0.0), cam.base * k, "link"))
+    fig.add(Circle((0.0, 0.0), 0.6, "dot"))
+    fig.add(Text((-1.5, 4.0), "O", 3.2, "end"))
+    fig.add(Path(((-cam.base * k * 1.15, 0.0), (apex + 2 * cam.roller * k + 6.0, 0.0)),
+                 "construction"))
+    fig.add(Circle((apex, 0.0), 0.6, "dot"))
+    mid = draw_dimension(fig, (cam.base * k, 0.0), (apex, 0.0), (0.0, 1.0),
+                         offset=cam.base * k * 0.35)
+    fig.add(Text((mid[0], mid[1] + 4.2), "h", 3.2))
+    if "nose_radius" in given:
+        fig.add(Circle((cam.d * k, 0.0), cam.nose * k, "link"))
+        fig.add(Circle((cam.d * k, 0.0), 0.6, "dot"))
+        fig.add(Text((cam.d * k - 1.5, -2.0), "Q", 3.2, "end"))
+    if {"angle", "action_angle"} & set(given):
+        r = cam.base * k
+        fig.add(Path(((0.0, 0.0), (r * math.cos(cam.alpha), -r * math.sin(cam.alpha))),
+                     "construction"))
+        at = mark_angle(fig, (0.0, 0.0), 0.45 * r, 0.0, cam.alpha)
+        fig.add(Text((at[0] + 2.0, at[1]), "α", 3.2, "start"))
+    if cam.flat:
+        fig.add(Path(((apex, -0.6 * cam.base * k), (apex, 0.6 * cam.base * k)), "reference"))
+    elif cam.roller > 0:
+        fig.add(Circle((apex + cam.roller * k, 0.0), cam.roller * k, "reference"))
+    else:
+        fig.add(Path(((apex, 0.0), (apex + 0.4 * cam.base * k, 0.0)), "reference"))
+    draw_caption(fig, title, [words("the base circle, the lift and the follower at the apex")],
+                 per_cm=per_cm, unit=unit)
+    return fig

@@ -217,14 +217,6 @@ def test_an_engine_or_a_rotor_with_other_unknowns_is_refused(tmp_path, name):
     assert not (tmp_path / "h").exists()
 
 
-def test_a_cam_given_by_its_arcs_is_refused(tmp_path):
-    got = CliRunner().invoke(cli, ["handout", "tangent-cam-roller", "-o", str(tmp_path / "h")])
-    assert got.exit_code == 1
-    assert got.output == ("Error: tangent-cam-roller: a problem sheet is written for a cam "
-                          "given by its follower's motion; a cam given by its arcs has none "
-                          "yet\n")
-
-
 def test_every_bundled_sheet_is_within_its_paper_and_holds_no_answer():
     """Each sheet of every bundled exercise's handout is an A4 sheet, upright or on its side,
     and prints none of the numbers its solution finds (:func:`_answers_on`), or the exercise

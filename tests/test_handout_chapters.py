@@ -35,3 +35,16 @@ def _holds_data_and_no_answer(name: str, lang: str, *, skip=()):
 @pytest.mark.parametrize("name", FLYWHEELS)
 def test_a_flywheels_sheet_holds_its_data_and_no_answer(name, lang):
     _holds_data_and_no_answer(name, lang)
+
+
+@pytest.mark.parametrize("lang", ["en", "fa"])
+@pytest.mark.parametrize("name", ["circular-arc-flat-face", "tangent-cam-roller"])
+def test_a_cam_of_arcs_sheet_draws_what_is_given_and_no_answer(name, lang):
+    """The base circle and the nose (where its radius is given) are drawn at the solution's
+    scale: the circular arc's r1 = 40 and r2 = 10 mm at 1 cm = 10 mm are circles of 40 and
+    10 mm; the tangent cam's nose is found, so only its base circle (30 mm at 1 cm = 20 mm)
+    is drawn, its roller (10 mm) dashed at the apex."""
+    ex, sheet = _holds_data_and_no_answer(name, lang)
+    circles = sorted(round(c.radius, 6) for c in sheet.figure.items
+                     if type(c).__name__ == "Circle" and c.style == "link")
+    assert circles == ([10.0, 40.0] if name == "circular-arc-flat-face" else [15.0])

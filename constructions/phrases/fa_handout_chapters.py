@@ -95,5 +95,36 @@ WORDS: dict[str, str] = {
     "the two masses at the pins {p} and {a}": "دو جرم در پین‌های {p} و {a}",
     "their moment of inertia about G, against the rod's":
         "ممان اینرسی آن‌ها حول G، در برابر ممان اینرسی میله",
+    # a cam of arcs'
+    "the cam": "بادامک",
+    "the base circle, the lift and the follower at the apex":
+        "دایرهٔ پایه، خیز و پیرو در رأس",
+    "a {kind} cam": "بادامک {kind}",
+    "tangent": "مماسی",
+    "circular arc": "کمان دایره‌ای",
+    "eccentric": "خارج از مرکز",
+    "nose radius {r}": "شعاع دماغه {r}",
+    "lift {h}": "خیز {h}",
+    "angle of lift {a}": "زاویهٔ خیز {a}",
+    "angle of action {a}": "زاویهٔ عمل {a}",
+    "the angle between the tangential faces {a}": "زاویهٔ میان دو وجه مماسی {a}",
+    "flank radius {r}": "شعاع پهلو {r}",
+    "on a line through the cam's centre": "روی خطی که از مرکز بادامک می‌گذرد",
+    "the follower's mass {m} kg": "جرم پیرو {m} kg",
+    "the nose's distance OQ from the cam's centre": "فاصلهٔ مرکز دماغه OQ از مرکز بادامک",
+    "the nose's radius r₂": "شعاع دماغه r₂",
+    "the angle of lift α": "زاویهٔ خیز α",
+    "the flank's radius R": "شعاع پهلو R",
+    "the cam's turn φ while the follower is on the flank":
+        "چرخش بادامک φ در مدتی که پیرو روی پهلوست",
+    "the follower's acceleration at the beginning of the lift": "شتاب پیرو در آغاز خیز",
+    "the follower's greatest velocity": "بیشترین سرعت پیرو",
+    "its acceleration at the end of the flank": "شتاب آن در پایان پهلو",
+    "its acceleration at the start of the nose": "شتاب آن در آغاز دماغه",
+    "its acceleration at the apex": "شتاب آن در رأس",
+    "its greatest acceleration on the flank and on the nose":
+        "بیشترین شتاب آن روی پهلو و روی دماغه",
+    "its lift, velocity and acceleration {theta} after the lift begins":
+        "خیز، سرعت و شتاب آن {theta} پس از آغاز خیز",
 }
 """These sheets' words as Persian says them."""
