@@ -89,6 +89,10 @@ def test_solve_gives_the_four_bars_numbers_and_solves_results(client, tmp_path):
     assert got["velocities"]["A"]["magnitude"] == pytest.approx(1000.0, rel=1e-12)  # ω2·O2A
     assert "O2" not in got["velocities"]           # a frame pivot does not move
     assert got["accelerations"]["A"]["unit"] == "mm/s²"
+    # where the points stand, in the file's mm and axes: A at 100 mm and 60°, I23's place
+    assert got["points"]["O4"] == [300.0, 0.0]
+    assert got["points"]["A"] == pytest.approx([50.0, 86.60254], abs=1e-5)
+    assert got["points"]["B"] == pytest.approx([273.679, 198.261], abs=5e-4)   # I34's
     # The record is results.json as tarsim solve writes it, number for number.
     out = _cli_solve(tmp_path, "four-bar")
     assert got["results"] == json.loads((out / "results.json").read_text(encoding="utf-8"))
@@ -241,6 +245,12 @@ def test_the_page_is_one_document(client):
     assert page.lstrip().startswith("<!DOCTYPE html>")
     assert "__JS__" not in page and "__CSS__" not in page
     assert "<script src=" not in page and "<link " not in page     # nothing fetched
+    try:
+        from tarsim.graphics.app_page import app_html
+    except ImportError:         # before the page is installed: a page that says what is served
+        assert "/api/solve" in page
+    else:
+        assert page == app_html()
 
 
 def test_whole_false_leaves_out_only_the_mechanisms_own_answers(client):

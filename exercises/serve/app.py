@@ -77,7 +77,8 @@ def make_app(folder: str | Path = ".", *, limit: int = MOST_BYTES,
             data, name = await _solving(download_file, asked, what, body.get("figure"))
         else:
             raise Refused(f'"what" is toml, svg, pdf, png or steps; got {what!r:.40}', 400)
-        return Response(data, media_type=_TYPES[PurePosixPath(name).suffix],
+        kind = _TYPES.get(PurePosixPath(name).suffix, "application/octet-stream")
+        return Response(data, media_type=kind,
                         headers={"Content-Disposition": _attachment(name)})
 
     async def save(request: Request) -> Response:

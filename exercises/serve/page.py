@@ -1,14 +1,10 @@
-"""The app page ``GET /`` answers: one self-contained HTML document, its styles and script
-inline, as ``tarsim view``'s page is.
-
-The page is graphics/page/app.html with app.css and the app's scripts set in it. Where
-the graphics layer gives the page whole (``tarsim.graphics.app_page.app_html``), that is
-what is served; before the page is there, a short page says what the server answers.
-"""
+"""The app page ``GET /`` answers: one self-contained HTML document, its styles and scripts
+inline, as the graphics layer makes it (``tarsim.graphics.app_page.app_html``); where that
+is not installed, a short page that says what the server answers."""
 
 from __future__ import annotations
 
-from importlib import import_module, resources
+from importlib import import_module
 
 __all__ = ["app_page"]
 
@@ -24,20 +20,7 @@ _PLACEHOLDER = """<!DOCTYPE html>
 def app_page() -> str:
     """The app's page as one HTML document (a short placeholder if it is not installed)."""
     try:
-        maker = import_module("tarsim.graphics.app_page").app_html
+        make = import_module("tarsim.graphics.app_page").app_html
     except (ImportError, AttributeError):
-        maker = None
-    if maker is not None:
-        return maker()
-    folder = resources.files("tarsim.graphics") / "page"
-    html = folder / "app.html"
-    if not html.is_file():
         return _PLACEHOLDER
-    css = folder / "app.css"
-    # The scripts of the page, the app's own last: its parts are defined before it runs.
-    scripts = sorted((p for p in folder.iterdir() if p.name.startswith("app")
-                      and p.name.endswith(".js")), key=lambda p: (p.name == "app.js", p.name))
-    return (html.read_text(encoding="utf-8")
-            .replace("__CSS__", css.read_text(encoding="utf-8") if css.is_file() else "")
-            .replace("__JS__", "\n".join(p.read_text(encoding="utf-8") for p in scripts)
-                     .replace("</script", "<\\/script")))
+    return make()

@@ -164,18 +164,21 @@ def figures(solved) -> list[tuple[str, str, str, Any]]:
 
 
 def readout(ex, solved) -> dict[str, Any]:
-    """The input's angle, each moving link's ω and α (rad/s, rad/s², counter-clockwise
-    positive) and each moving point's velocity and acceleration in the file's units, from
-    the analytic solver at the first position; empty for a chapter without a linkage."""
-    empty = {"angle": None, "omega": {}, "alpha": {}, "velocities": {}, "accelerations": {}}
+    """The input's angle, where each point stands (the file's units and axes), each moving
+    link's ω and α (rad/s, rad/s², counter-clockwise positive) and each moving point's
+    velocity and acceleration in the file's units, from the analytic solver at the first
+    position; empty for a chapter without a linkage."""
+    empty = {"angle": None, "points": {}, "omega": {}, "alpha": {}, "velocities": {},
+             "accelerations": {}}
     positions = getattr(solved, "positions", None)
     if positions is None:
         return empty
     try:
-        kin = positions[0].kinematics if positions else _kinematics(ex.mechanism)
+        kin, mech = _first_position(ex, positions)
     except TarsimError:                 # nothing asked at a position that can be assembled
         return empty
-    mech = positions[0].exercise.mechanism if positions else ex.mechanism
+    if kin is None:
+        return empty
     units = mech.units
     fixed = {name for name, _ in mech.frame.points}
 
@@ -185,19 +188,35 @@ def readout(ex, solved) -> dict[str, Any]:
                     "x": xy[0] / units.metres, "y": xy[1] / units.metres}
                 for p, xy in field.items() if p not in fixed}
 
+    def placed(xy: tuple[float, float]) -> list[float]:
+        x, y = mech.in_file_axes(xy)
+        return [x / units.metres, y / units.metres]
+
     return {"angle": float(f"{math.degrees(mech.drive.angle):.12g}"),   # as results.json
+            "points": {p: placed(xy) for p, xy in kin.points.items()},
             "omega": {str(k): w for k, w in kin.omegas.items() if k != 1},
             "alpha": {str(k): a for k, a in kin.alphas.items() if k != 1},
             "velocities": vectors(kin.velocities, "/s"),
             "accelerations": vectors(kin.accelerations, "/s²")}
 
 
-def _kinematics(mech):
+def _first_position(ex, positions):
+    """The analytic solution at the exercise's first position and the mechanism there; with
+    nothing asked at a position, at the file's own (None where the input's rates are given
+    by another member, which only a position's solve converts).
+
+    Raises
+    ------
+    TarsimError
+        If the mechanism cannot be assembled there.
+    """
+    if positions:
+        return positions[0].kinematics, positions[0].exercise.mechanism
+    if ex.mechanism.given is not None:
+        return None, None
     from tarsim.constructions.reference.solver import solve
 
-    if mech.given is not None:          # the input's rates given by another member
-        raise TarsimError("no position solved")
-    return solve(mech)
+    return solve(ex.mechanism), ex.mechanism
 
 
 def table(ex, solved) -> list[dict[str, Any]]:
