@@ -61,7 +61,7 @@ def serve(folder, host, port, no_browser):
     url = f"http://{_shown(host)}:{sock.getsockname()[1]}/"
     # A page of another site reaching this server by a name of its own is refused.
     hosts = None if ":" in host or host == "0.0.0.0" else [host, *_LOCAL[:2]]
-    app = make_app(Path(folder), hosts=hosts)
+    app = make_app(Path(folder), hosts=hosts, warm=True)
     click.echo(f"tarsim serve: {url} (serving {Path(folder).resolve()}; Ctrl+C stops it)")
     if not no_browser:
         import webbrowser

@@ -266,3 +266,17 @@ def test_whole_false_leaves_out_only_the_mechanisms_own_answers(client):
     rocker = everything()["grashof-crank-rocker"].read_text(encoding="utf-8")
     kept = client.post("/api/solve", json={"toml": rocker, "figures": False, "whole": False})
     assert "grashof" in kept.json()["results"]["quantities"]
+
+
+def test_a_warm_app_lists_the_bundled_exercises_as_it_starts(folder):
+    import threading
+
+    from tarsim.exercises.serve import app as served
+
+    for warm, listed in ((False, 0), (True, 1)):
+        served._bundled.cache_clear()
+        with TestClient(make_app(folder, warm=warm)):
+            for t in threading.enumerate():
+                if t.name == "tarsim-warm-up":
+                    t.join(timeout=120)
+            assert served._bundled.cache_info().currsize == listed

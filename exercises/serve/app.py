@@ -9,6 +9,8 @@ answers JSON; a :class:`~tarsim.constructions.errors.TarsimError` is answered as
 
 from __future__ import annotations
 
+import threading
+from contextlib import asynccontextmanager
 from functools import cache
 from pathlib import Path, PurePosixPath
 from typing import Any
@@ -34,10 +36,12 @@ __all__ = ["make_app"]
 
 
 def make_app(folder: str | Path = ".", *, limit: int = MOST_BYTES,
-             hosts: list[str] | None = None) -> Starlette:
+             hosts: list[str] | None = None, warm: bool = False) -> Starlette:
     """The app serving ``folder``: it reads and writes there only, takes request bodies of
     ``limit`` bytes at most, and answers only requests to one of ``hosts`` (a page of
-    another site reaching the server by a name of its own is refused; None: any).
+    another site reaching the server by a name of its own is refused; None: any). With
+    ``warm``, it lists the bundled exercises and solves one as it starts, in a thread of
+    its own, so that the page's first answers do not wait for the solver to load.
 
     Raises
     ------
@@ -100,13 +104,32 @@ def make_app(folder: str | Path = ".", *, limit: int = MOST_BYTES,
               Route("/api/download", _answering(download), methods=["POST"]),
               Route("/api/save", _answering(save), methods=["POST"])]
     middleware = [Middleware(TrustedHostMiddleware, allowed_hosts=hosts)] if hosts else []
-    app = Starlette(routes=routes, middleware=middleware)
+    app = Starlette(routes=routes, middleware=middleware, lifespan=_warmed if warm else None)
     app.state.folder = served
     return app
 
 
 _TYPES = {".toml": "application/toml", ".svg": "image/svg+xml", ".pdf": "application/pdf",
           ".png": "image/png", ".md": "text/markdown; charset=utf-8"}
+
+
+@asynccontextmanager
+async def _warmed(app):
+    """The app's life, begun by warming it up in the background (:func:`_warm_up`)."""
+    threading.Thread(target=_warm_up, name="tarsim-warm-up", daemon=True).start()
+    yield
+
+
+def _warm_up() -> None:
+    """List the bundled exercises and solve the four-bar with its figures: what the page
+    asks first, its modules loaded and its listing kept."""
+    from ..catalog import everything
+
+    try:
+        _bundled()
+        answer(Asked(everything()["four-bar"].read_text(encoding="utf-8"), "four-bar.toml"))
+    except TarsimError:         # a bundled exercise that fails is its own tests' to say
+        pass
 
 
 def _attachment(name: str) -> str:
