@@ -38,7 +38,6 @@ EXCEPTIONS: dict[tuple[str, str], str] = {
     ("grashof-crank-rocker", "limits"): NEXT_STEP + " (1 cm = 5 mm: 324 × 236 mm)",
     ("slotted-lever-p37", "limits"): STATED + " (1 cm = 4 cm)",
     ("klein-slider-crank", "klein"): STATED + " (1 cm = 35 mm)",
-    ("crank-shaper", "worked"): SHEET,
     ("rolling-wheel", "worked"): SHEET,
     **{(e, s): VELOCITIES for e, stems in {
         "hinkle-four-bar": ("V_B-components", "V_D-components", "V_E-components"),

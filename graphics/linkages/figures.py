@@ -79,6 +79,21 @@ def _circle_diagram(order: FigureOrder) -> FigurePlan:
         every, title=order.mechanism.name, radius=radius), order.sheet))
 
 
+def _polygon_regrow(shown: Slice, how: dict, drawn: Figure):
+    """A polygon panel drawn again, from the scale ``drawn`` was fitted to its room at, at
+    the finest of the course's scales a sheet holds (:func:`fit`); None for one at the
+    scale the exercise states, which is kept."""
+    if how["per_cm"] is not None:
+        return None
+    paper_per_metre = drawn.views[how["panel"].value].scale   # paper mm a drawing metre
+    per_cm = float(f"{10.0 / (paper_per_metre * how['units'].metres * how['scale']):.12g}")
+
+    def draw(per_cm: float) -> Figure:
+        return draw_polygon_panel(shown, **{**how, "per_cm": per_cm})
+
+    return lambda holds: fit(draw, per_cm, holds, grow=True)
+
+
 @figure_kind("polygons", last=True)
 def _worked_page(order: FigureOrder) -> FigurePlan:
     """The space diagram, the polygons and the results table on one page.
@@ -104,14 +119,21 @@ def _worked_page(order: FigureOrder) -> FigurePlan:
     table = shown_columns(order.table())
     upright = (sheet.width, sheet.height)
 
+    def scene(per_cm: float) -> Figure:
+        return draw_scene(Slice(c, ()), title=order.title("space diagram"), per_cm=per_cm)
+
     def draw() -> Figure:
-        space = fit(lambda per_cm: draw_scene(
-            Slice(c, ()), title=order.title("space diagram"), per_cm=per_cm),
-            work.scales.space, lambda fig: holds_panel(upright, fig), fixed=order.stated)
+        space = fit(scene, work.scales.space, lambda fig: holds_panel(upright, fig),
+                    fixed=order.stated)
         figures = [space] + [draw_polygon_panel(shown, room=room(sheet, POLYGON_BOX), **how)
                              for (_, _, shown), how in zip(panels, drawn)]
+        # A panel alone on a run-on sheet is drawn again at the finest scale it holds.
+        regrow = [lambda holds: fit(scene, work.scales.space, holds, fixed=order.stated,
+                                    grow=True)]
+        regrow += [_polygon_regrow(shown, how, fig)
+                   for (_, _, shown), how, fig in zip(panels, drawn, figures[1:])]
         sheets = compose_worked_sheets(order.title("worked solution"), figures, table,
-                                       order.under(Panel.SPACE), sheet=upright)
+                                       order.under(Panel.SPACE), sheet=upright, regrow=regrow)
         return sheets[0] if len(sheets) == 1 else stack_pages(sheets)
 
     return FigurePlan(draw, None, tuple(panels))

@@ -8,14 +8,20 @@ rows or columns, the most compact one that fits the sheet is taken, and if none
 fits, the smallest page that holds them (the page grows, the panels never shrink).
 The results table and the notes follow under the panels. On a sheet too small for
 them all (A4), they run on over as many sheets as they need
-(:func:`compose_worked_sheets`), each holding as many as it can, in order.
+(:func:`compose_worked_sheets`), each holding as many as it can, in order. A panel that
+stands alone on a sheet after the first is drawn again at the finest of the course's
+scales that sheet holds (its scale stated anew), so that a run-on sheet is not left mostly
+white. A right-to-left page reads from the right: its panels stand from the right margin.
 """
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import replace
 from itertools import product
+
+from shapely import STRtree
+from shapely.geometry import LineString, box
 
 from tarsim.constructions.errors import TarsimError
 from tarsim.constructions.narration import right_to_left, words
@@ -26,7 +32,7 @@ from ..paper import Paper, standard
 from ..typeset import spoken_numbers, typeset
 from ..wrapping import wrap_formulas
 
-__all__ = ["compose_worked_page", "compose_worked_sheets", "holds_panel", "A3"]
+__all__ = ["compose_worked_page", "compose_worked_sheets", "holds_panel", "A3", "Regrow"]
 
 A3 = (420.0, 297.0)
 """An A3 landscape sheet, mm: the page a worked solution is kept to when it fits."""
@@ -41,6 +47,10 @@ _NOTE = 3.2         # note text size, mm
 _NOTE_WIDTH = 250.0  # the longest line of a note, mm: a long one runs on over lines
 
 Box = tuple[float, float, float, float]
+
+Regrow = Callable[[Callable[[Figure], bool]], Figure]
+"""A panel drawn again for a sheet it stands on alone: given whether a drawing of it is
+held there, the panel at the finest scale held (:func:`~tarsim.graphics.fitting.fit`)."""
 
 
 # ----- the public function ----------------------------------------------------------------
@@ -96,13 +106,15 @@ def compose_worked_page(title: str, panels: Sequence[Figure], table: Sequence[Se
 
 
 def compose_worked_sheets(title: str, panels: Sequence[Figure], table: Sequence[Sequence[str]],
-                          notes: Sequence[str] = (), sheet: tuple[float, float] = A3
-                          ) -> list[Figure]:
+                          notes: Sequence[str] = (), sheet: tuple[float, float] = A3,
+                          regrow: Sequence[Regrow | None] = ()) -> list[Figure]:
     """The panels and the results of :func:`compose_worked_page` over as few sheets of
     ``sheet`` (width, height in mm, upright; each may be turned) as hold them, in order:
     each sheet takes as many of what is left as it holds, the results last. A panel no
     sheet holds has a grown sheet of its own. Every sheet after the first is titled
-    "(continued)".
+    "(continued)". A panel alone on a sheet after the first (the results beside it or
+    not) whose ``regrow`` (by its place in ``panels``; None or missing: kept) is given is
+    drawn again as big as that sheet, upright or turned, holds it (:func:`_regrown`).
 
     >>> square = Figure(150.0, 150.0, [Path(((0.0, 0.0), (150.0, 150.0)), "link")])
     >>> sheets = compose_worked_sheets("Two panels", [square, square],
@@ -124,9 +136,57 @@ def compose_worked_sheets(title: str, panels: Sequence[Figure], table: Sequence[
     sheets = []
     for k, (group, size) in enumerate(groups):
         last = k == len(groups) - 1
-        sheets.append(_sheet(title if not k else later, group[:-1] if last else group,
-                             results if last else None, size))
+        drawn = group[:-1] if last else group
+        if k and len(drawn) == 1:
+            at = next(i for i, p in enumerate(panels) if p is drawn[0])
+            again = regrow[at] if at < len(regrow) else None
+            if again is not None:
+                drawn, size = _regrown(again, drawn[0], results if last else None, sheet,
+                                       later, size)
+        sheets.append(_sheet(title if not k else later, drawn, results if last else None,
+                             size))
     return sheets
+
+
+def _regrown(again: Regrow, panel: Figure, results: Figure | None, sheet: tuple[float, float],
+             title: str, size: tuple[float, float]
+             ) -> tuple[list[Figure], tuple[float, float]]:
+    """A lone ``panel`` (with ``results`` beside or under it, if given) drawn ``again`` as
+    big as a sheet of ``sheet``, on its side or upright, holds it under ``title``: the
+    bigger of the two, or ``panel`` on its sheet of ``size`` where neither draws it
+    bigger."""
+    foot = (results.width, results.height) if results is not None else (0.0, 0.0)
+    best, at = panel, size
+    for each in ((max(sheet), min(sheet)), (min(sheet), max(sheet))):
+        room = _room(each, title)
+
+        def holds(fig: Figure, room=room) -> bool:
+            _, (w, h) = _choose_layout([(fig.width, fig.height)], foot, room)
+            return w <= room[0] + 1e-9 and h <= room[1] + 1e-9
+
+        fig = again(holds)
+        if holds(fig) and fig.width * fig.height > best.width * best.height + 1e-6 and \
+                _labels_on_lines(fig) <= _labels_on_lines(panel):
+            best, at = fig, each
+    return [best], at
+
+
+def _labels_on_lines(fig: Figure) -> int:
+    """How many of ``fig``'s texts lie over one of its lines (an open path), by more than
+    a graze (0.05 mm²): a panel drawn bigger whose labels its placer found less room for
+    is not taken for the one it replaces."""
+    strokes = [LineString(p.points).buffer(0.1) for p in fig.items
+               if isinstance(p, Path) and not p.closed and len(p.points) >= 2]
+    if not strokes:
+        return 0
+    tree = STRtree(strokes)
+    out = 0
+    for t in fig.items:
+        if isinstance(t, Text) and t.text.strip():
+            label = box(*t.box())
+            out += any(label.intersection(strokes[i]).area > 0.05
+                       for i in tree.query(label))
+    return out
 
 
 def _balanced(groups: list[tuple[list[Figure], tuple[float, float]]],
@@ -218,8 +278,9 @@ def _sheet(title: str, panels: Sequence[Figure], results: Figure | None,
     for k, line in enumerate(_title_lines(title, size)):
         page.add(Text((reads.x(_MARGIN), _MARGIN + _TITLE / 2 + k * _TITLE), line, _TITLE,
                       reads.anchor, italic=False, weight="bold"))
-    if reads.rtl:     # read from the right: the first panel stands at the top right
-        spots = [(w - x - p[0], y) for (x, y), p in zip(spots, sizes + [foot])]
+    if reads.rtl:     # read from the right: the first panel stands at the top right,
+        across = size[0] - 2 * _MARGIN     # from the right margin
+        spots = [(across - x - p[0], y) for (x, y), p in zip(spots, sizes + [foot])]
     for panel, (x, y) in zip(panels, spots):
         _place_panel(page, panel, (_MARGIN + x, top + y), frame=True)
     if results is not None:

@@ -1,0 +1,135 @@
+"""A worked page run on over several sheets (graphics/linkages/worked_page.py): a panel
+alone on a run-on sheet is drawn again as big as that sheet holds it, at one of the
+course's scales, stated truly; and a right-to-left page sets its panels from the right
+margin, as it reads."""
+
+from __future__ import annotations
+
+import re
+from dataclasses import replace
+
+import pytest
+
+from tarsim import solve
+from tarsim.constructions.narration import speaking
+from tarsim.exercises.catalog import load
+from tarsim.graphics.figure import Figure, Path
+from tarsim.graphics.fitting import DRAFTING
+from tarsim.graphics.linkages.worked_page import compose_worked_sheets
+from tarsim.graphics.paper import MARGIN
+
+A4 = (210.0, 297.0)
+TABLE = [("quantity", "construction"), ("V_B", "1 m/s")]
+
+
+def square(side: float) -> Figure:
+    """A panel ``side`` mm square, its ink its whole box."""
+    return Figure(side, side, [Path(((0.0, 0.0), (side, 0.0), (side, side), (0.0, side)),
+                                    "link", closed=True)])
+
+
+def frames(page: Figure) -> list[tuple[float, float, float, float]]:
+    """Each panel's frame on ``page``, as (x0, y0, x1, y1) mm."""
+    out = []
+    for p in page.items:
+        if getattr(p, "style", "") == "frame":
+            xs, ys = zip(*p.points)
+            out.append((min(xs), min(ys), max(xs), max(ys)))
+    return out
+
+
+def grows_to(holds) -> Figure:
+    """A square panel grown by 10 mm steps while ``holds`` takes it (a stand-in for a
+    panel drawn again at finer scales)."""
+    side = 100.0
+    while holds(square(side + 10.0)):
+        side += 10.0
+    return square(side)
+
+
+def test_a_lone_panel_on_a_run_on_sheet_is_drawn_again_to_fill_it():
+    # Two 180 mm panels on A4: each takes a sheet. Before, the second stayed 100 mm
+    # square on its sheet (a sixth of its usable area); now it is drawn 180 mm, as the
+    # first is, the results table beside or under it.
+    sheets = compose_worked_sheets("Two panels", [square(180.0), square(100.0)], TABLE,
+                                   sheet=A4, regrow=[None, grows_to])
+    assert len(sheets) == 2
+    (x0, y0, x1, y1), = frames(sheets[1])
+    usable = (sheets[1].width - 2 * MARGIN) * (sheets[1].height - 2 * MARGIN)
+    assert x1 - x0 >= 180.0 - 1e-9 and y1 - y0 >= 180.0 - 1e-9
+    assert (x1 - x0) * (y1 - y0) / usable >= 0.5
+    x0, y0, x1, y1 = sheets[1].bounds()     # and it all stays on its sheet
+    assert x0 >= 0.0 and y0 >= 0.0 and x1 <= sheets[1].width and y1 <= sheets[1].height
+
+
+def test_a_panel_without_a_way_to_be_drawn_again_keeps_its_size():
+    sheets = compose_worked_sheets("Two panels", [square(180.0), square(100.0)], TABLE,
+                                   sheet=A4)
+    (x0, y0, x1, y1), = frames(sheets[1])
+    assert (x1 - x0, y1 - y0) == pytest.approx((100.0, 100.0))
+
+
+@pytest.mark.parametrize("lang, edge", [("en", "left"), ("fa", "right")])
+def test_a_right_to_left_page_sets_its_panels_from_the_right_margin(lang, edge):
+    # Before, a Persian page mirrored its panels within their own extent, so a narrow
+    # run-on panel stood at the left margin, as an English one does.
+    with speaking(lang):
+        sheets = compose_worked_sheets("Two panels", [square(180.0), square(100.0)], TABLE,
+                                       sheet=A4)
+    page = sheets[-1]                    # the 100 mm panel alone, the results beside it
+    (x0, _, x1, _), = frames(page)
+    if edge == "right":
+        assert x1 == pytest.approx(page.width - MARGIN)
+    else:
+        assert x0 == pytest.approx(MARGIN)
+    assert x1 - x0 == pytest.approx(100.0)
+
+
+def test_a_right_to_left_page_reads_its_panels_from_the_right():
+    with speaking("fa"):
+        page, = compose_worked_sheets("Two panels", [square(60.0), square(40.0)], TABLE,
+                                      sheet=A4)
+    first, second = frames(page)
+    assert first[2] == pytest.approx(page.width - MARGIN)       # the first at the right
+    assert second[2] <= first[0] + 1e-9                          # the second to its left
+
+
+def _acceleration_scale(page: Figure) -> float:
+    """The acceleration polygon's stated N of "1 cm = N mm/s²" on ``page``."""
+    text = next(t.text for t in page.items if "Acceleration scale" in getattr(t, "text", ""))
+    return float(re.search(r"1 cm = ([\d.]+)", text).group(1))
+
+
+def whitworth(paper: str, lang: str = "en") -> list[Figure]:
+    with speaking(lang):
+        return solve(replace(load("whitworth"), paper=paper)).figures["worked"].sheets
+
+
+def test_whitworths_run_on_acceleration_polygon_fills_its_a3_sheet_at_a_true_scale():
+    # Before: on A3, the acceleration polygon stood alone on the second sheet at its A4
+    # size, 125 × 102 mm, its sheet 0.30 full, at 1 cm = 40 mm/s².
+    first, second = whitworth("A3")
+    (x0, y0, x1, y1), = frames(second)
+    usable = (second.width - 2 * MARGIN) * (second.height - 2 * MARGIN)
+    assert (x1 - x0) * (y1 - y0) / usable >= 0.35, (x1 - x0, y1 - y0)
+    # a drafting step (1, 2, 2.5, 4, 5 × 10ᵏ), finer than the one the polygon was fitted at
+    n = _acceleration_scale(second)
+    mantissa = n / 10 ** int(f"{n:e}".split("e")[1])
+    assert any(abs(mantissa - d) < 1e-9 for d in DRAFTING), n
+    assert n < 40.0
+    # stated truly: its paper mm a drawing metre times its stated N is the same on every
+    # sheet it is drawn on (10 mm stand for N), here A4's, drawn at a scale of its own
+    other = next(s for s in whitworth("A4") if "acceleration" in s.views)
+    assert _acceleration_scale(other) != n
+    assert second.views["acceleration"].scale * n == pytest.approx(
+        other.views["acceleration"].scale * _acceleration_scale(other), rel=1e-9)
+    x0, y0, x1, y1 = second.bounds()
+    assert x0 >= 0.0 and y0 >= 0.0 and x1 <= second.width and y1 <= second.height
+
+
+def test_whitworths_persian_run_on_sheet_stands_at_the_right_margin():
+    # Before: on A4 its lone polygon and table stood 49 to 177 mm across a 297 mm sheet.
+    sheets = whitworth("A4", "fa")
+    for page in sheets:
+        x1 = max(f[2] for f in frames(page))
+        assert x1 == pytest.approx(page.width - MARGIN), (page.width, x1)
