@@ -206,7 +206,9 @@ def test_another_chapter_is_solved_as_solve_solves_it(client, tmp_path):
     assert {f["name"] for f in got["figures"]} == {p.stem for p in out.glob("*.svg")} - {
         "solution"}
     r = client.post("/api/solve", json={"toml": text, "angle": 30})
-    assert r.status_code == 422 and "--angle" in r.json()["error"]
+    said = CliRunner().invoke(cli, ["solve", "planetary-q1", "--angle", "30"], prog_name="tarsim")
+    assert r.status_code == 422 and said.exit_code == 1
+    assert r.json()["error"] == said.output.strip().removeprefix("Error: ")
 
 
 def test_download_gives_solves_files(client, tmp_path):

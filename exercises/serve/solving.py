@@ -16,7 +16,7 @@ from dataclasses import dataclass, replace
 from pathlib import PurePosixPath
 from typing import Any
 
-from tarsim.constructions.errors import InputError, TarsimError
+from tarsim.constructions.errors import TarsimError
 from tarsim.constructions.narration import LANGUAGES, Word, narrate, render, speaking, spoken
 
 from ..chapters import Chapter, chapter_for
@@ -115,7 +115,7 @@ def solved_in(asked: Asked) -> tuple[str, Any, Any, Chapter]:
     """
     loaded, chapter = read_exercise(asked.toml, asked.name)
     if asked.angle is not None and chapter.no_angle:
-        raise InputError(chapter.no_angle)
+        raise Refused(chapter.no_angle, 422)          # as solve --angle refuses it
     lang = asked.lang or getattr(loaded, "lang", "en")
     with speaking(lang):
         angle = asked.angle
