@@ -119,7 +119,7 @@ def build_four_bar(page):
     """The four-bar O2A 100, AB 250, O4B 200, O2O4 300 mm at θ2 = 60°, ω2 = 10 rad/s, by
     clicks on the paper and numbers typed in the panel."""
     page.click("#new")
-    tool(page, "select")
+    type_into(page, "#name", "Four-bar")
     tool(page, "ground")
     click_at(page, (0, 0))
     click_at(page, (300, 0))
@@ -180,6 +180,7 @@ def test_a_four_bar_built_by_clicking_reads_and_downloads_as_solve_gives_it(page
     # The table beside the check shows solve's own numbers, in full.
     table = page.inner_text("#table").replace("−", "-")
     assert "-2.57846" in table and "583.192" in table
+    page.click("#fit")                          # the mechanism as large as the paper holds
     page.wait_for_timeout(300)
     shot = page.screenshot()
     assert shot[:8] == b"\x89PNG\r\n\x1a\n"
@@ -216,6 +217,15 @@ def test_a_link_too_short_shows_the_servers_line_beside_it_and_the_app_comes_bac
     assert bubble.is_hidden()
     assert readout(page)["ω3"] == pytest.approx(-2.578, abs=5e-4)
     assert page.get_attribute('#editor line[data-link="3"]', "stroke") != "var(--hot)"
+
+    # A name misspelt in what to find: the line stands under the find box, not on a link.
+    type_into(page, "#a-more", "omgea4")
+    assert settled(page) == "error"
+    assert "did you mean 'omega4'" in page.inner_text("#ask-box .err")
+    assert page.locator("#parts .err").count() == 0
+    type_into(page, "#a-more", "")
+    assert settled(page) == "solved"
+    assert page.locator("#ask-box .err").count() == 0
 
 
 def test_turning_the_input_solves_again_at_each_angle(page):

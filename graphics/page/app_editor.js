@@ -307,7 +307,9 @@ const Editor = (() => {
     const defs = el("defs", {}, svg);
     const mk = el("marker", { id: "arrow", viewBox: "0 0 10 10", refX: 8, refY: 5, markerWidth: 7, markerHeight: 7, orient: "auto-start-reverse" }, defs);
     el("path", { d: "M0,0 L10,5 L0,10 z", fill: colour(l.number) }, mk);
-    const t = el("text", { x: pt(1.1)[0] + 4, y: pt(1.1)[1] - 4, "font-size": 12, fill: colour(l.number) }, g);
+    const tip = pt(ccw ? a1 + 0.45 : a0 - 0.45);
+    const t = el("text", { x: tip[0], y: tip[1] + 4, "font-size": 12, fill: colour(l.number),
+                           "text-anchor": ccw ? "end" : "start" }, g);
     t.textContent = "ω" + l.number;
   }
 

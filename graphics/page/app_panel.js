@@ -26,7 +26,8 @@ const Panel = (() => {
 
   function errorFor(what) {
     const w = app.error?.where ?? {};
-    const hitIt = Object.entries(what).every(([k, v]) => w[k] === v) && Object.keys(w).length;
+    const hitIt = Object.entries(what).every(([k, v]) => v instanceof RegExp ? v.test(w[k] ?? "") : w[k] === v) &&
+      Object.keys(w).length;
     return hitIt ? `<div class="err" data-error>${esc(app.error.text)}</div>` : "";
   }
 
@@ -215,7 +216,7 @@ const Panel = (() => {
       field("i-alpha", typeof i.alpha === "number" ? i.alpha : 0, `${t("alpha")}${i.link}`, "rad/s²");
     h += select("u-length", ["mm", "cm", "m", "in"].map(k => [k, k]), u.length ?? "mm", `${t("units")}`);
     const box = document.getElementById("input-box");
-    box.innerHTML = h + errorFor({ field: "input.angle" }) + errorFor({ field: "input.omega" });
+    box.innerHTML = h + (app.error?.where?.link ? "" : errorFor({ field: /^input/ }));
     on("i-link", v => { if (v) { i.link = Number(v); Model.autoFind(m); } });
     on("i-angle", v => { const x = num(v); if (x !== null) { i.angle = x; app.setAngle(x); } });
     on("i-omega", v => { const x = num(v); if (x !== null) i.omega = x; });
@@ -238,7 +239,7 @@ const Panel = (() => {
       `<h3>${t("methods")}</h3><div class="checks" id="a-methods">` + Model.METHODS.map(k =>
         `<label><input type="checkbox" value="${k}"${methods.includes(k) ? " checked" : ""}> ${t(k.replace(/-/g, "_"))}</label>`).join("") + "</div>";
     const box = document.getElementById("ask-box");
-    box.innerHTML = h + errorFor({ field: "ask.find" }) + errorFor({ field: "ask.methods" });
+    box.innerHTML = h + errorFor({ field: /^ask/ });
     const collect = () => {
       m.autoFind = false;
       const picked = [...box.querySelectorAll("#a-find input:checked")].map(e => e.value);

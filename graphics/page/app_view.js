@@ -163,7 +163,7 @@ const App = (() => {
     $("fig-tabs").innerHTML = figs.map((f, k) => `<button type="button" data-fig="${esc(f.name)}" title="${esc(f.name)}" class="${f.name === app.figure ? "on" : ""}">${esc(label(f, k))}</button>`).join("");
     $("fig-tabs").querySelectorAll("button").forEach(b => b.onclick = () => { app.figure = b.dataset.fig; showSolution(); });
     const fig = figs.find(f => f.name === app.figure);
-    if (fig) $("figure").innerHTML = fig.svg;
+    if (fig) { $("figure").innerHTML = fig.svg; inked($("figure").querySelector("svg")); }
     readout(s);
     $("table").innerHTML = `<tr><th>${t("quantity")}</th><th>${t("construction")}</th><th>${t("analytic")}</th><th>${t("rel_error")}</th></tr>` +
       (s.table ?? []).map(r => {
@@ -175,6 +175,24 @@ const App = (() => {
       }).join("");
     $("steps").innerHTML = s.steps ?? "";
   }
+  /** The figure shown by its ink: the sheet's margins and empty paper cut off, so the
+      drawing fills the column (a download keeps the whole sheet, true to scale). */
+  function inked(svg) {
+    const box = svg?.viewBox?.baseVal;
+    if (!box || !box.width) return;
+    let [x0, y0, x1, y1] = [Infinity, Infinity, -Infinity, -Infinity];
+    for (const c of svg.children) {
+      if (typeof c.getBBox !== "function") continue;
+      const b = c.getBBox();
+      if (!b.width && !b.height || b.width >= .95 * box.width && b.height >= .95 * box.height) continue;
+      x0 = Math.min(x0, b.x); y0 = Math.min(y0, b.y); x1 = Math.max(x1, b.x + b.width); y1 = Math.max(y1, b.y + b.height);
+    }
+    if (!(x1 > x0 && y1 > y0)) return;
+    const pad = 0.02 * Math.max(x1 - x0, y1 - y0);
+    svg.setAttribute("viewBox", `${x0 - pad} ${y0 - pad} ${x1 - x0 + 2 * pad} ${y1 - y0 + 2 * pad}`);
+    svg.removeAttribute("width"); svg.removeAttribute("height");
+  }
+
   // A figure of one of several positions is named for it: V_B-radius-rotation-theta2-90.
   const AT = /-(?:theta(\d+)-(-?[\d.]+)|t-(-?[\d.]+)s)$/;
   const base = name => name.replace(AT, "");
