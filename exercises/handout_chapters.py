@@ -122,22 +122,23 @@ def rotor_sheets(ex, sheet: tuple[float, float]) -> list[Figure]:
     the masses given and every product and balancing mass left empty, and an empty frame
     for the force polygon (and the couple polygon) at the scale the solution draws it at.
 
-    Raises
-    ------
-    InputError
-        For an engine's file, or a rotor with an unknown besides the balancing masses (an
-        angle or a plane to find): those have no sheet yet.
+    A rotor with unknowns besides its balancing masses has its own
+    (:func:`~.handout_rotors.open_rotor_sheets`), as an engine has
+    (:func:`~.handout_engines.engine_sheets`).
     """
-    from tarsim.constructions.errors import InputError
     from tarsim.graphics.balancing.balance_figures import draw_side_view
 
     from .chapters import chapter_of
 
     r = ex.rotor
-    if r is None or ex.open is not None or ex.weights:
-        raise InputError(f"{ex.id}: a problem sheet is written for a rotor whose masses are all "
-                         "given in kg and whose balancing masses are asked; this one has none "
-                         "yet")
+    if ex.open is not None:
+        from .handout_rotors import open_rotor_sheets
+
+        return open_rotor_sheets(ex, sheet)
+    if r is None:
+        from .handout_engines import engine_sheets
+
+        return engine_sheets(ex, sheet)
     s = chapter_of(ex).solve(ex)
     unit, metre = ex.length_unit, LENGTH_UNITS[ex.length_unit]
     name = s.exercise.name
@@ -147,7 +148,7 @@ def rotor_sheets(ex, sheet: tuple[float, float]) -> list[Figure]:
         planes = [(m.name, m.plane, "link") for m in r.masses]
         planes += [(p.name, p.position, "normal") for p in r.planes]
         panels.append(draw_side_view(planes, words("{name}: side view", name=name), unit, metre))
-    panels.append(draw_statement(_given_rotor(ex, unit, metre) + _asked_rotor(r)))
+    panels.append(draw_statement(_given_rotor(ex, unit, metre) + _asked_rotor(r, ex.weights)))
     panels.append(_rotor_table(ex, unit, metre))
     b = s.balance
     polygons = []
@@ -167,16 +168,19 @@ def _given_rotor(ex, unit: str, metre: float) -> list[Line]:
     r = ex.rotor
     out = [Line(words("Given"), heading=True)]
     mm = unit_words(unit)
+    said = ("weight {name}: {mass} N at {radius}, {angle}, plane at {plane}" if ex.weights
+            else "mass {name}: {mass} kg at {radius}, {angle}, plane at {plane}")
     for m in r.masses:
-        out.append(Line(words("mass {name}: {mass} kg at {radius}, {angle}, plane at {plane}",
-                              name=m.name, mass=math_text(number(m.mass)),
+        out.append(Line(words(said, name=m.name, mass=math_text(number(_held(ex, m.mass))),
                               radius=math_text(number(m.radius / metre)) + f" {mm}",
                               angle=math_text(f"{number(math.degrees(m.angle))}°"),
                               plane=math_text(number(m.plane / metre)) + f" {mm}")))
     for p in r.planes:
-        held = (words("its mass at {radius}", radius=math_text(number(p.radius / metre))
-                      + f" {mm}") if p.radius is not None
-                else words("its mass {mass} kg", mass=math_text(number(p.mass))))
+        held = (words("its weight at {radius}" if ex.weights else "its mass at {radius}",
+                      radius=math_text(number(p.radius / metre)) + f" {mm}")
+                if p.radius is not None else
+                words("its weight {mass} N" if ex.weights else "its mass {mass} kg",
+                      mass=math_text(number(_held(ex, p.mass)))))
         out.append(Line(words("balancing plane {name} at {plane}, {held}", name=p.name,
                               plane=math_text(number(p.position / metre)) + f" {mm}",
                               held=held)))
@@ -188,12 +192,21 @@ def _given_rotor(ex, unit: str, metre: float) -> list[Line]:
     return out
 
 
-def _asked_rotor(r) -> list[Line]:
+def _held(ex, mass: float) -> float:
+    """A mass as its file gives it: in kg, or its weight in N where the file gives weights."""
+    from .balancing.rotor_weights import GRAVITY
+
+    return mass * GRAVITY if ex.weights else mass
+
+
+def _asked_rotor(r, weights: bool = False) -> list[Line]:
     """The balancing masses asked, one a plane: its mass (or its radius, where the file
-    gives the mass) and its angle."""
+    gives the mass) and its angle; a balance weight where the file gives weights."""
     out = [Line(words("Find"), heading=True)]
     for p in r.planes:
-        out.append(Line(words("in plane {name}: the balancing mass and its angle", name=p.name)
+        out.append(Line(words("in plane {name}: the balance weight and its angle", name=p.name)
+                        if p.radius is not None and weights else
+                        words("in plane {name}: the balancing mass and its angle", name=p.name)
                         if p.radius is not None else
                         words("in plane {name}: the given mass's radius and its angle",
                               name=p.name)))
@@ -210,14 +223,17 @@ def _rotor_table(ex, unit: str, metre: float) -> Figure:
     two = len(r.planes) == 2
     flat = not two and len({m.plane for m in r.masses} | {ref}) == 1
     length, kg = unit_words(unit), unit_words("kg")
-    heads = [f"m ({kg})", f"r ({length})", "θ"] + ([] if flat else [f"l ({length})"]) + [
-        f"m·r ({unit_words('kg·m')})"] + ([f"m·r·l ({unit_words('kg·m²')})"] if two else [])
+    held, mr, mrl = (("W (N)", f"W·r ({unit_words('N·m')})", f"W·r·l ({unit_words('N·m²')})")
+                  if ex.weights else (f"m ({kg})", f"m·r ({unit_words('kg·m')})",
+                                      f"m·r·l ({unit_words('kg·m²')})"))
+    heads = [held, f"r ({length})", "θ"] + ([] if flat else [f"l ({length})"]) + [mr] + (
+        [mrl] if two else [])
     empty = [""] * (2 if two else 1)
-    rows = [(m.name, [numerals(number(m.mass)), numerals(number(m.radius / metre)),
+    rows = [(m.name, [numerals(number(_held(ex, m.mass))), numerals(number(m.radius / metre)),
                       numerals(f"{number(math.degrees(m.angle))}°")]
              + ([] if flat else [numerals(number((m.plane - ref) / metre))]) + empty)
             for m in r.masses]
-    rows += [(p.name, [numerals(number(p.mass)) if p.mass is not None else "",
+    rows += [(p.name, [numerals(number(_held(ex, p.mass))) if p.mass is not None else "",
                        numerals(number(p.radius / metre)) if p.radius is not None else "", ""]
               + ([] if flat else [numerals(number((p.position - ref) / metre))]) + empty)
              for p in r.planes]

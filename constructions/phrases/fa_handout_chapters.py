@@ -126,5 +126,24 @@ WORDS: dict[str, str] = {
         "بیشترین شتاب آن روی پهلو و روی دماغه",
     "its lift, velocity and acceleration {theta} after the lift begins":
         "خیز، سرعت و شتاب آن {theta} پس از آغاز خیز",
+    # a rotor's with unknowns, or weights
+    "not drawn, its radial line to be found: {names}":
+        "رسم‌نشده، خط شعاعی آن باید یافته شود: {names}",
+    "the angle of {name} between {lo} and {hi}, counter-clockwise":
+        "زاویهٔ {name} میان {lo} و {hi}، پادساعتگرد",
+    "for the rotor in static balance": "برای بالانس ایستای روتور",
+    "for the rotor in complete balance (force and couple)":
+        "برای بالانس کامل روتور (نیرو و کوپل)",
+    "mass {name}: {what}": "جرم {name}: {what}",
+    "its mass": "جرم آن",
+    "its radius": "شعاع آن",
+    "its angle": "زاویهٔ آن",
+    "its plane": "صفحهٔ آن",
+    "weight {name}: {mass} N at {radius}, {angle}, plane at {plane}":
+        "وزنهٔ {name}: {mass} N در شعاع {radius}، زاویهٔ {angle}، صفحه در {plane}",
+    "its weight at {radius}": "وزنهٔ آن در شعاع {radius}",
+    "its weight {mass} N": "وزنهٔ آن {mass} N",
+    "in plane {name}: the balance weight and its angle":
+        "در صفحهٔ {name}: وزنهٔ بالانس و زاویهٔ آن",
 }
 """These sheets' words as Persian says them."""

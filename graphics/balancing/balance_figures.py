@@ -234,8 +234,8 @@ def draw_end_view(c: Construction, masses: Sequence[tuple[str, float, str]], tit
     fig.add(Circle((0.0, 0.0), 0.9, "dot"))
     # "O" in the widest gap between the radial lines (the 0° one among them).
     radii = _radii(c, masses, found)
-    rays = sorted([0.0] + [a % (2 * math.pi) for _, a in radii])
-    # Two rays along one line leave no gap between them; one ray alone, the whole turn.
+    rays = sorted({0.0} | {a % (2 * math.pi) for _, a in radii})
+    # One ray alone (every mass on the reference radius) leaves the whole turn.
     gaps = [((rays[(i + 1) % len(rays)] - a) % (2 * math.pi) if len(rays) > 1 else 2 * math.pi,
              a) for i, a in enumerate(rays)]
     width, at = max(gaps)
@@ -309,5 +309,6 @@ def draw_side_view(planes: Sequence[tuple[str, float, str]], title: str, unit: s
     draw_caption(fig, title, [words("side view: the planes along the shaft, positions in {unit}",
                                     unit=unit_words(unit))],
                  per_cm=per_cm, unit=unit,
-                 legend=(("link", "a mass's plane"), ("normal", found)))
+                 legend=(("link", "a mass's plane"),) + ((("normal", found),) if any(
+                     style != "link" for _, _, style in planes) else ()))
     return fig
