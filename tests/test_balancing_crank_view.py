@@ -15,6 +15,7 @@ from tarsim.constructions.narration import speaking
 from tarsim.exercises.catalog import load
 from tarsim.graphics.balancing.crank_view import RADIUS
 from tarsim.graphics.figure import Path, Text
+from tarsim.graphics.hiding import hiding
 from tarsim import solve
 
 ENGINES = ("inline-four", "inline-three", "two-stroke-four", "locomotive",
@@ -97,3 +98,14 @@ def test_the_view_stands_beside_the_polygon_on_the_reading_side(solved, engine):
         if lang == "fa":                 # Persian digits, the angle said in درجه
             assert labels and all(re.fullmatch(r"[۰-۹، ]+: [۰-۹٫]+ درجه", t) for t in labels), \
                 labels
+
+
+def test_a_crank_angle_the_solution_found_is_an_answer_hidden_with_them():
+    """The primary balance's cranks 2 and 4 and its third cylinder are found: with answers
+    hidden their radii are numbered only, crank 1's given angle still said."""
+    with hiding(frozenset({"answers"})):
+        fig = solve(load("primary-balance-unknowns")).figures["primary-force"]
+    tips = {r[1] for r in _cranks(fig)}
+    labels = sorted(t.text for t in fig.items if isinstance(t, Text) and t.owner
+                    and t.owner[0] in tips)
+    assert labels == ["1: 0°", "2", "3", "4"]

@@ -91,20 +91,23 @@ def _engine_figures(s: BalanceSolution) -> dict[str, Figure]:
             + _speed_notes(e),
             names={str(i): words("cyl. {number}", number=numerals(str(i))) for i in
                    range(1, len(e.cranks) + 1)},
-            cranks=_crank_view(p.construction, len(e.cranks), kind.startswith("primary")))
+            cranks=_crank_view(p.construction, len(e.cranks), kind.startswith("primary"),
+                               frozenset(q.name for q in ex.open.parts if q.angle is None)
+                               if ex.open is not None else frozenset()))
     return out
 
 
-def _crank_view(c, count: int, primary: bool) -> CrankView:
+def _crank_view(c, count: int, primary: bool, found: frozenset[str]) -> CrankView:
     """The end view of the cranks (at θᵢ) or of the secondary cranks (at 2θᵢ) a polygon's
-    vectors are laid along: step 1's, C1ᵢ and C2ᵢ."""
+    vectors are laid along: step 1's, C1ᵢ and C2ᵢ; ``found``, the cylinders whose angles
+    a primary balance found."""
     order = "1" if primary else "2"
     return CrankView(
         words("end view of the cranks, at θᵢ") if primary else
         words("end view of the secondary cranks, at 2θᵢ"),
         tuple((str(i), math.atan2(c.output(f"C{order}{i}").xy[1],
                                   c.output(f"C{order}{i}").xy[0]))
-              for i in range(1, count + 1)))
+              for i in range(1, count + 1)), found)
 
 
 def _drawn_notes(e, kind: str) -> list[str]:

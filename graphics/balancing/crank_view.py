@@ -16,6 +16,7 @@ from dataclasses import dataclass
 
 from tarsim.constructions.narration import numerals, right_to_left, words
 from ..figure import Circle, Figure, Path, Text
+from ..hiding import shown_answer
 
 __all__ = ["CrankView", "draw_crank_view", "RADIUS"]
 
@@ -32,10 +33,12 @@ _SAME = math.radians(0.5)   # cranks closer than this are drawn as one radius
 @dataclass(frozen=True)
 class CrankView:
     """What the view shows: its heading and each crank's (cylinder number, angle in rad,
-    counter-clockwise from the reference line)."""
+    counter-clockwise from the reference line); the cylinders whose angles the solution
+    found (``found``), an answer ``--hide answers`` leaves out."""
 
     heading: str
     cranks: tuple[tuple[str, float], ...]
+    found: frozenset[str] = frozenset()
 
 
 def _groups(cranks: Sequence[tuple[str, float]]) -> list[tuple[list[str], float]]:
@@ -53,12 +56,14 @@ def _groups(cranks: Sequence[tuple[str, float]]) -> list[tuple[list[str], float]
     return out
 
 
-def _label(names: Sequence[str], angle: float) -> str:
-    """A radius's label, "1, 4: 0°", in the spoken language."""
+def _label(names: Sequence[str], angle: float, found: frozenset[str]) -> str:
+    """A radius's label, "1, 4: 0°", in the spoken language; its number alone where its
+    angle was found and answers are hidden."""
     joined = ("، " if right_to_left() else ", ").join(numerals(n) for n in names)
     degrees = math.degrees(angle) % 360.0
-    return words("{cranks}: {angle}°", cranks=joined,
+    said = words("{cranks}: {angle}°", cranks=joined,
                  angle=numerals(f"{degrees:.1f}".removesuffix(".0")))
+    return shown_answer(said, joined) if found.intersection(names) else said
 
 
 def _view(view: CrankView) -> Figure:
@@ -79,7 +84,7 @@ def _view(view: CrankView) -> Figure:
         else:
             at = (tip[0] + 2.6 * u[0], tip[1] + (2.6 + _LABEL / 2) * u[1])
         anchor = "start" if u[0] > 0.2 else "end" if u[0] < -0.2 else "middle"
-        fig.add(Text(at, _label(names, a), _LABEL, anchor, False, owner=(tip,)))
+        fig.add(Text(at, _label(names, a, view.found), _LABEL, anchor, False, owner=(tip,)))
     fig.add(Circle((0.0, 0.0), 0.8, "dot"))
     # the radii and the reference line, each direction once
     rays = sorted({0.0} | {a for _, a in groups})
