@@ -39,6 +39,10 @@ EXCEPTIONS: dict[tuple[str, str], str] = {
     ("slotted-lever-p37", "limits"): STATED + " (1 cm = 4 cm)",
     ("klein-slider-crank", "klein"): STATED + " (1 cm = 35 mm)",
     ("rolling-wheel", "worked"): SHEET,
+    # Its Persian results stand alone on the third sheet (0.46), set from the right margin
+    # under a title that is too: before, measured from that title to the table at the
+    # left margin, the box of its ink was the sheet's width.
+    ("klein-slider-crank", "worked"): SHEET,
     **{(e, s): VELOCITIES for e, stems in {
         "hinkle-four-bar": ("V_B-components", "V_D-components", "V_E-components"),
         "hinkle-slider-crank": ("V_C-components", "V_C-parallel-line", "V_C-radius-rotation",
