@@ -326,9 +326,28 @@ const Editor = (() => {
     } else if (w.joint && pos[w.joint]) at = screen(pos[w.joint]);
     const [W, H] = size();
     if (!at) { b.style.left = "8px"; b.style.top = "2.2em"; return; }
-    const bw = Math.min(b.offsetWidth || 300, W - 16);
-    b.style.left = Math.max(8, Math.min(W - bw - 8, at[0] - bw / 2)) + "px";
-    b.style.top = (at[1] + 22 + 60 < H ? at[1] + 22 : Math.max(4, at[1] - 22 - (b.offsetHeight || 40))) + "px";
+    // Near the part, where it hides the least of the drawing: below, above, right or left
+    // of it, nearest first; a point hidden counts as much as 10 px of a link.
+    const [bw, bh] = [Math.min(b.offsetWidth || 300, W - 16), b.offsetHeight || 40];
+    const clampX = x => Math.max(8, Math.min(W - bw - 8, x)), clampY = y => Math.max(4, Math.min(H - bh - 4, y));
+    const places = [];
+    for (const d of [22, 60, 110]) {
+      places.push([clampX(at[0] - bw / 2), clampY(at[1] + d)], [clampX(at[0] - bw / 2), clampY(at[1] - d - bh)],
+                  [clampX(at[0] + d), clampY(at[1] - bh / 2)], [clampX(at[0] - d - bw), clampY(at[1] - bh / 2)]);
+    }
+    const marks = Object.values(pos).flatMap(p => { const [x, y] = screen(p); return [[x, y, 10], [x + 14, y - 12, 10]]; });
+    for (const l of app.model.ex.link) {
+      const xy = l.points.map(p => pos[p]).filter(Boolean).map(screen);
+      for (let i = 1; i < xy.length; i++) {
+        const n = Math.ceil(Math.hypot(xy[i][0] - xy[0][0], xy[i][1] - xy[0][1]) / 10);
+        for (let k = 0; k <= n; k++) marks.push([xy[0][0] + (xy[i][0] - xy[0][0]) * k / n, xy[0][1] + (xy[i][1] - xy[0][1]) * k / n, 1]);
+      }
+    }
+    const hidden = ([x, y]) => marks.reduce((sum, [px, py, w]) =>
+      sum + (px > x - 8 && px < x + bw + 8 && py > y - 8 && py < y + bh + 8 ? w : 0), 0);
+    let best = places[0], least = Infinity;
+    for (const p of places) { const h = hidden(p); if (h < least) { least = h; best = p; } }
+    b.style.left = best[0] + "px"; b.style.top = best[1] + "px";
   }
 
   return { init, toolbar, setTool, draw, fit, pageXY, colour, view: () => view };
