@@ -242,9 +242,12 @@ def _rotor_table(ex, unit: str, metre: float) -> Figure:
                             ruled=[len(r.masses)])
 
 
-def _empty_balance_polygon(c, title: str, tips, closing, unit: str) -> Figure:
+def _empty_balance_polygon(c, title: str, tips, closing, unit: str, *, per: float = 1.0,
+                           cranks=None) -> Figure:
     """An empty frame for a rotor's polygon, at the scale the solution draws it at (the
-    1-2-5 scale that fits it in its room), its pole marked where its first side starts."""
+    1-2-5 scale that fits it in its room), its pole marked where its first side starts; an
+    engine's drawn in N (N·m), ``per`` (ω²) of them to the construction's kg·m, with the
+    end view of its ``cranks`` beside it."""
     from tarsim.graphics.balancing.balance_figures import _ROOM
     from tarsim.graphics.handout import draw_empty_polygon
     from tarsim.graphics.scales import nice_per_cm
@@ -252,14 +255,14 @@ def _empty_balance_polygon(c, title: str, tips, closing, unit: str) -> Figure:
     start = c[closing].inputs[1]
     points = [c.output(start).xy] + [c.output(ref).xy for _, ref in tips]
     xs, ys = [x for x, _ in points], [y for _, y in points]
-    per_cm = nice_per_cm(max(max(xs) - min(xs), max(ys) - min(ys), 1e-12), _ROOM)
-    k = 10.0 / per_cm                                 # paper mm a unit of the polygon
+    per_cm = nice_per_cm(max(max(xs) - min(xs), max(ys) - min(ys), 1e-12) * per, _ROOM)
+    k = 10.0 * per / per_cm                           # paper mm a unit of the polygon
     o = points[0]
     across, up = [(x - o[0]) * k for x in xs], [(o[1] - y) * k for y in ys]
     reach = (max(0.0, -min(across)), max(0.0, -min(up)), max(0.0, max(across)),
              max(0.0, max(up)))
     return draw_empty_polygon(title, reach=reach, per_cm=per_cm, unit=unit, scale_name="Scale",
-                              pole=("o", ""))
+                              pole=("o", ""), cranks=cranks)
 
 
 def cam_sheets(ex, sheet: tuple[float, float]) -> list[Figure]:

@@ -202,8 +202,8 @@ def _diagram_lines(ex) -> list[Line]:
                                                       "the driver's steady")))
     elif ex.areas:
         out.append(Line(repeats))
-        areas = words(", ").join(math_text(("+" if a > 0 else "") + number(a))
-                                 for a in ex.drawn_areas)
+        areas = words(", ").join(math_text(f"A{i + 1} = " + ("+" if a > 0 else "") + number(a))
+                                 for i, a in enumerate(ex.drawn_areas))
         out.append(Line(words("the areas above (+) and below (−) the mean line, in order: "
                               "{areas}", areas=areas)))
         length = unit_words(ex.length_unit)
@@ -226,10 +226,10 @@ def _diagram_lines(ex) -> list[Line]:
         out.append(Line(math_text(f"Tm = {_formula(ex.machine.text)}") + f" {unit_words('N·m')}"))
     table = ex.single or (() if ex.strokes else ex.points)
     if table:
-        said = words(", ").join(math_text(f"({number(math.degrees(t))}°, {number(v)})")
-                                for t, v in table)
-        out.append(Line(words("T at the crank angles (θ, N·m): {points}, straight between",
-                              points=said)))
+        # a point a line: a right-to-left line would set a list of them out of order
+        out.append(Line(words("T at the crank angles given, straight between:")))
+        out += [Line(math_text(f"T({number(math.degrees(t))}°) = {number(v)}")
+                     + f" {unit_words('N·m')}") for t, v in table]
     if ex.phases and len(ex.phases) > 1:
         n = len(ex.phases)
         even = all(math.isclose(p, k * ex.cycle / n, abs_tol=1e-9)
@@ -242,9 +242,10 @@ def _diagram_lines(ex) -> list[Line]:
                                   for p in ex.phases))))
     if ex.strokes:
         least = min(abs(w) for w in ex.strokes if w)
-        ratio = " : ".join(number(w / least) for w in ex.strokes)
+        ratio = words(", ").join(math_text(f"W{i + 1} = {number(w / least)}")
+                                 for i, w in enumerate(ex.strokes))
         out.append(Line(words("the strokes' works in the ratio {ratio}, each a triangle",
-                              ratio=math_text(ratio))))
+                              ratio=ratio)))
     return out
 
 

@@ -106,7 +106,7 @@ def draw_statement(lines: Sequence[Line], *, width: float | None = None) -> Figu
 
 def draw_empty_polygon(title: str, *, reach: tuple[float, float, float, float],
                        per_cm: float, unit: str, scale_name: str,
-                       pole: tuple[str, str]) -> Figure:
+                       pole: tuple[str, str], cranks=None) -> Figure:
     """Draw the empty frame a polygon is to be drawn in, at its scale, its pole marked.
 
     Parameters
@@ -125,6 +125,10 @@ def draw_empty_polygon(title: str, *, reach: tuple[float, float, float, float],
         What opens the scale statement ("Velocity scale").
     pole
         The pole's name as text and subscript: ``("o", "v")``.
+    cranks
+        An engine's :class:`~.balancing.crank_view.CrankView`, set beside the frame as the
+        solution sets it beside its polygon (the cranks' directions the polygon is laid
+        along); None for none.
 
     Returns
     -------
@@ -158,6 +162,10 @@ def draw_empty_polygon(title: str, *, reach: tuple[float, float, float, float],
     fig.add(Path(((x0, y0), (x1, y0), (x1, y1), (x0, y1)), FRAME_STYLE, closed=True))
     fig.add(Circle((0.0, 0.0), _POLE, "dot"))
     fig.add(Text((2.0, -2.6), pole[0], 3.5, "start", sub=pole[1]))
+    if cranks is not None:
+        from .balancing.crank_view import draw_crank_view
+
+        draw_crank_view(fig, cranks)
     draw_caption(fig, title, [], per_cm=per_cm, unit=unit, scale_name=scale_name)
     return fig
 

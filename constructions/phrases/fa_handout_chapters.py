@@ -23,8 +23,8 @@ WORDS: dict[str, str] = {
     "drawn at 1 {unit} = {torque} and 1 {unit} = {angle}":
         "رسم‌شده با ۱ {unit} = {torque} و ۱ {unit} = {angle}",
     "θ in radians": "θ بر حسب رادیان",
-    "T at the crank angles (θ, N·m): {points}, straight between":
-        "T در زاویه‌های لنگ (θ، N·m): {points}، میان آن‌ها خط راست",
+    "T at the crank angles given, straight between:":
+        "T در زاویه‌های لنگ داده‌شده، میان آن‌ها خط راست:",
     "{n} cylinders, set equally over the cycle": "{n} سیلندر، یکسان در طول چرخه",
     "{n} cylinders, each lagging the first by {phases}":
         "{n} سیلندر، هر یک به اندازهٔ {phases} پس از نخستین",
@@ -145,5 +145,44 @@ WORDS: dict[str, str] = {
     "its weight {mass} N": "وزنهٔ آن {mass} N",
     "in plane {name}: the balance weight and its angle":
         "در صفحهٔ {name}: وزنهٔ بالانس و زاویهٔ آن",
+    # an engine's
+    "the cylinders and the crank": "سیلندرها و لنگ",
+    "the cylinders' lines and the crank, θ from {reference}; directions only":
+        "خط سیلندرها و لنگ، θ از {reference}؛ تنها جهت‌ها",
+    "cylinder 1's line": "خط سیلندر ۱",
+    "the centre line": "خط میانی",
+    "the line of stroke": "خط کورس",
+    "crank radius {r} (stroke {s})": "شعاع لنگ {r} (کورس {s})",
+    "connecting rod {l}": "میلهٔ رابط {l}",
+    "reciprocating masses {masses} kg": "جرم‌های رفت‌وبرگشتی {masses} kg",
+    "reciprocating mass {m} kg a cylinder": "جرم رفت‌وبرگشتی {m} kg برای هر سیلندر",
+    "revolving mass at the crank radius {m} kg": "جرم دوار در شعاع لنگ {m} kg",
+    "{c} of the reciprocating mass balanced": "{c} از جرم رفت‌وبرگشتی بالانس شده",
+    "the balance mass at radius {b}": "جرم بالانس در شعاع {b}",
+    "the balance mass {m} kg": "جرم بالانس {m} kg",
+    "{n} cylinders, their lines evenly round the crank shaft":
+        "{n} سیلندر، خط‌هایشان یکنواخت گرد میل‌لنگ",
+    "two cylinders, their lines {angle} apart": "دو سیلندر، خط‌هایشان با زاویهٔ {angle} از هم",
+    "cylinder {i}: plane at {plane}": "سیلندر {i}: صفحه در {plane}",
+    "cylinder {i}: crank at {angle}, plane at {plane}":
+        "سیلندر {i}: لنگ با زاویهٔ {angle}، صفحه در {plane}",
+    "a {n}-stroke engine, firing order {order}": "موتور {n}زمانه، ترتیب احتراق {order}",
+    "the crank at {theta}": "لنگ در {theta}",
+    "the cranks' angles from the firing order": "زاویهٔ لنگ‌ها از ترتیب احتراق",
+    "couples about the central plane": "کوپل‌ها حول صفحهٔ میانی",
+    "the unbalanced primary force": "نیروی اولیهٔ بالانس‌نشده",
+    "the unbalanced primary couple": "کوپل اولیهٔ بالانس‌نشده",
+    "the unbalanced secondary force": "نیروی ثانویهٔ بالانس‌نشده",
+    "the unbalanced secondary couple": "کوپل ثانویهٔ بالانس‌نشده",
+    "the crank angle at which each unbalanced one is greatest":
+        "زاویهٔ لنگی که هر یک از بالانس‌نشده‌ها در آن بیشترین است",
+    "the resultant primary force, its greatest and least":
+        "برایند نیروی اولیه، بیشترین و کمترین آن",
+    "the resultant secondary force, its greatest and least, and where":
+        "برایند نیروی ثانویه، بیشترین و کمترین آن، و جای آن‌ها",
+    "the unbalanced force along and across the line of stroke, and their resultant":
+        "نیروی بالانس‌نشده در راستای خط کورس و عمود بر آن، و برایند آن‌ها",
+    "the greatest unbalanced force, and where": "بیشترین نیروی بالانس‌نشده، و جای آن",
+    "the balance mass": "جرم بالانس",
 }
 """These sheets' words as Persian says them."""
