@@ -32,8 +32,9 @@ SHOT = ROOT / "docs" / "img" / "app.png"
 
 
 @pytest.fixture(scope="module")
-def server(tmp_path_factory):
-    """``tarsim serve`` on a free port (it prints the one it took), in an empty folder."""
+def served(tmp_path_factory):
+    """``tarsim serve`` on a free port (it prints the one it took), in a folder holding one
+    exercise, mine/lever.toml: its address and the folder."""
     folder = tmp_path_factory.mktemp("served")
     lever = (ROOT / "exercises" / "catalog" / "inverted-slider-crank.toml").read_text("utf-8")
     (folder / "mine").mkdir()
@@ -46,9 +47,14 @@ def server(tmp_path_factory):
     if url is None:
         proc.kill()
         pytest.fail(f"tarsim serve did not start: {line}{proc.stderr.read()}")
-    yield url.group(0)
+    yield url.group(0), folder
     proc.terminate()
     proc.wait(timeout=10)
+
+
+@pytest.fixture(scope="module")
+def server(served):
+    return served[0]
 
 
 @pytest.fixture()
@@ -62,8 +68,9 @@ def page(browser, server):
     p.goto(server)
     until(p, "document.body.dataset.state !== undefined")
     yield p
-    # A refusal is the server's 422: the browser logs the status, the page shows the line.
-    assert [e for e in p.errors if "422" not in e] == []
+    # A refusal (422, or 409 for a save over a file the app did not write): the browser
+    # logs the status, the page shows the line or asks.
+    assert [e for e in p.errors if "422" not in e and "409" not in e] == []
     assert all(u.startswith(server) for u in p.requests)     # nothing leaves for the network
     p.close()
 
@@ -309,7 +316,7 @@ def test_a_slider_crank_built_with_the_block_tool_gives_the_pistons_speed(page):
     assert ex["assembly"] == {"B": "forward"}
 
 
-def test_a_bundled_exercise_opens_drawn_where_the_server_puts_it(page):
+def test_a_bundled_exercise_opens_drawn_where_the_server_puts_it(page, served):
     page.select_option("#open", "id:offset-slider-crank")
     assert settled(page) == "solved"
     until(page, "tarsimApp.app.positions().B !== undefined")
@@ -326,6 +333,21 @@ def test_a_bundled_exercise_opens_drawn_where_the_server_puts_it(page):
     assert settled(page) == "solved"
     assert page.input_value("#name").startswith("Crank and oscillating slotted lever")
     assert readout(page)["ω4"] == pytest.approx(-0.4134, abs=5e-5)
+
+    # Saved back over it, a length changed: the server asks before replacing a file it did
+    # not write, and the page asks the user (both dialogs accepted here).
+    click_link(page, 2)
+    type_into(page, "#l-len-0", 130)
+    assert settled(page) == "solved"
+    asked = []
+    page.on("dialog", lambda d: (asked.append(d.type), d.accept(d.default_value)))
+    page.click("#downloads summary")
+    page.click("#save")
+    until(page, "document.getElementById('status').textContent.startsWith('saved')")
+    assert asked == ["prompt", "confirm"]
+    saved = tomllib.loads((served[1] / "mine" / "lever.toml").read_text(encoding="utf-8"))
+    assert saved["link"][0]["lengths"] == {"O2A": 130}
+    assert saved == tomllib.loads(page.evaluate("tarsimApp.toml()"))
 
 
 def test_the_page_speaks_persian_right_to_left(page):

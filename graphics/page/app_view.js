@@ -86,8 +86,7 @@ const App = (() => {
     }
     app.error = null; app.solution = data;
     const ms = performance.now() - t0, first = !app.shown;
-    place(data.points ?? await located(body, seq), override);
-    if (seq !== app.seq) return;
+    place(data.points, override);
     if (first && offPaper()) Editor.fit();
     state("solved", ms);
     redraw(); showSolution();
@@ -99,27 +98,6 @@ const App = (() => {
     if (!points || app.raw) return;
     app.shown = points;
     if (!override) for (const [p, xy] of Object.entries(points)) if (!Model.isFrame(app.model, p)) app.model.sketch[p] = xy;
-  }
-
-  /** Where the server places each moving point (pos_P, in metres in results.json), asked
-      of the same file without its figures, for a server that does not send "points". */
-  async function located(body, seq) {
-    const m = app.model, names = Model.movingPoints(m).filter(p => m.ex.link.some(l => l.points.includes(p)));
-    if (!names.length) return null;
-    const ex = structuredClone(m.ex);
-    ex.ask = { find: names.map(p => "pos_" + p) };
-    const copy = Model.fromToml(TOML.write(ex));
-    copy.nearPoints = m.nearPoints; copy.sketch = m.sketch;
-    try {
-      const res = await fetch("api/solve", { method: "POST", headers: { "Content-Type": "application/json" },
-        body: JSON.stringify({ ...body, toml: Model.toToml(copy), figures: false, whole: false }) });
-      if (!res.ok || seq !== app.seq) return null;
-      const q = (await res.json()).results?.positions?.[0]?.quantities ?? {};
-      const per = { mm: 1e-3, cm: 1e-2, m: 1, in: 0.0254, ft: 0.3048 }[m.ex.units?.length ?? "mm"] ?? 1e-3;
-      const out = {};
-      for (const p of names) if (q["pos_" + p]?.point) out[p] = q["pos_" + p].point.map(v => v / per);
-      return out;
-    } catch { return null; }
   }
 
   function offPaper() {
@@ -273,6 +251,23 @@ const App = (() => {
     $("downloads").open = false;
   }
 
+  /** Saves the exercise in the served folder (the server writes nowhere else), asking
+      before it replaces a file the app did not write. */
+  async function save() {
+    $("downloads").open = false;
+    const name = prompt(t("save_as"), app.source.file ?? `${(app.source.id ?? "my-linkage")}.toml`);
+    if (!name) return;
+    const send = overwrite => fetch("api/save", { method: "POST", headers: { "Content-Type": "application/json" },
+      body: JSON.stringify({ file: name, toml: text(), overwrite }) });
+    let res = await send(false);
+    if (res.status === 409 && confirm(`${name} ${t("overwrite")}`)) res = await send(true);
+    const d = await res.json().catch(() => ({}));
+    if (!res.ok) { app.error = { text: d.error ?? res.statusText, where: {} }; state("error"); redraw(); return; }
+    app.source = { file: d.file ?? name };
+    $("status").textContent = `${t("saved")}: ${d.file ?? name}`;
+    exercises();
+  }
+
   // --- language -----------------------------------------------------------------------------
   function words() {
     document.documentElement.lang = app.lang;
@@ -295,6 +290,7 @@ const App = (() => {
     $("angle").oninput = e => { app.angle = Number(e.target.value); $("angle-out").value = `${sig(app.angle, 5)}°`; schedule(60); };
     $("reset-angle").onclick = () => { app.angle = null; showAngle(); schedule(0); };
     document.querySelectorAll("#downloads [data-what]").forEach(b => b.onclick = () => download(b.dataset.what));
+    $("save").onclick = save;
     const q = new URLSearchParams(location.search);
     if (q.get("id")) open("id:" + q.get("id")); else if (q.get("file")) open("file:" + q.get("file")); else fresh();
   }

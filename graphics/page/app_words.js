@@ -32,7 +32,9 @@ const WORDS = {
     readout: "at this angle", quantity: "quantity", construction: "construction",
     analytic: "analytic", rel_error: "error", unit: "unit",
     download: "download", toml: "exercise (TOML)", svg: "figure (SVG)", pdf: "figure (PDF)",
-    png: "figure (PNG)", steps_md: "steps (Markdown)",
+    png: "figure (PNG)", steps_md: "steps (Markdown)", save: "save in the folder…",
+    save_as: "Save the exercise in the served folder as:", overwrite: "is not a file this app wrote. Replace it?",
+    saved: "saved",
     solving: "solving…", solved: "solved", stale: "the last good solution, before the error",
     hint_empty: "1. ground pivot: click two places on the paper. 2. pin: click where the moving joints go. " +
       "3. link: click one point, then another. 4. select a link and type its length. " +
@@ -75,7 +77,9 @@ const WORDS = {
     readout: "در این زاویه", quantity: "کمیت", construction: "ترسیمی",
     analytic: "تحلیلی", rel_error: "خطا", unit: "یکا",
     download: "بارگیری", toml: "تمرین (TOML)", svg: "شکل (SVG)", pdf: "شکل (PDF)",
-    png: "شکل (PNG)", steps_md: "مراحل (Markdown)",
+    png: "شکل (PNG)", steps_md: "مراحل (Markdown)", save: "ذخیره در پوشه…",
+    save_as: "تمرین با این نام در پوشهٔ سرور ذخیره شود:", overwrite: "پرونده‌ای نیست که این برنامه نوشته باشد. جایگزین شود؟",
+    saved: "ذخیره شد",
     solving: "در حال حل…", solved: "حل شد", stale: "آخرین حلِ درست، پیش از خطا",
     hint_empty: "۱. لولای زمین: دو جا روی کاغذ کلیک کنید. ۲. لولا: جای مفصل‌های متحرک را کلیک کنید. " +
       "۳. میله: یک نقطه و سپس نقطهٔ دیگر را کلیک کنید. ۴. میله‌ای را برگزینید و طولش را بنویسید. " +
