@@ -47,10 +47,20 @@ def handout(source, out_dir, angle, pdf, paper, lang, digits):
     table (an ordinary train's row of speeds) with its rows named and
     every cell empty; a rotor's has its side view, its table with the
     masses given and the products left empty, and the force (and couple)
-    polygon's frame; a cam's has its base circle with the follower at the
-    start, its segments, and the displacement diagram's axes, empty, at
-    the solution's scales. Another chapter's file (a flywheel, a rod, an
-    engine) is refused, naming those that have a sheet.
+    polygon's frame; a rotor with unknowns has its end view with each
+    radial line given (an unknown mass a gap, a mass whose angle is asked
+    left out), its table's unknown cells empty and what is asked of each
+    mass; an engine has its cylinders' data, the end view of its cranks
+    beside an empty frame for each polygon (a single-cylinder, V or
+    radial engine: its lines of stroke and its crank); a cam's has its
+    base circle with the follower at the start, its segments, and the
+    displacement diagram's axes, empty, at the solution's scales (a cam
+    of arcs: its base circle, lift, nose and angle of lift as given); a
+    flywheel's has its T(θ) as the file gives it on the solution's axes,
+    with no mean line and no area (one given by numbers alone: its data),
+    and a connecting rod's the rod along its line of centres with P, G
+    and A; each with what is asked in the course's words. Every bundled
+    exercise has a sheet.
 
     \b
     Writes into DIR:
@@ -64,6 +74,8 @@ def handout(source, out_dir, angle, pdf, paper, lang, digits):
       tarsim handout planetary-q1 -o q1-handout
       tarsim handout four-mass-shaft -o rotor-handout
       tarsim handout offset-knife-edge -o cam-handout
+      tarsim handout punching-press -o press-handout
+      tarsim handout inline-three --lang fa -o engine-handout-fa
       tarsim handout my-linkage.toml --paper A3 --no-pdf
     """
     from tarsim.graphics.export import cairo_missing, output_folder, write_folder
