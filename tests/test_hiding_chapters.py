@@ -99,3 +99,46 @@ def test_an_involute_pairs_path_and_contact_ratio_leave_its_caption():
     assert "path of contact AB = 48.27 mm, contact ratio 1.635" in shown
     assert not [t for t in bare if "contact ratio" in t]
     assert "module 10 mm, 20 and 40 teeth, pressure angle 20°" in bare
+
+
+def test_a_flywheels_mean_areas_and_energy_leave_its_diagram():
+    # punching-press: T_mean = 1000 N·m (the motor's, asked), the two areas ±5236 J, ΔE
+    shown = _texts("punching-press", "turning-moment")
+    bare = _texts("punching-press", "turning-moment", ANSWERS)
+    assert {"+5236 J", "−5236 J", "mean 1000 N·m"} <= set(shown)
+    assert not [t for t in bare if "5236" in t or "1000 N" in t]
+    assert "mean … N·m" in bare
+    assert {"0", "6000"} <= set(bare)                 # the given torque's axis stays
+
+
+def test_a_flywheel_given_by_its_speeds_keeps_them_and_hides_the_energies():
+    shown = _texts("flywheel-between-speeds", "energy")
+    bare = _texts("flywheel-between-speeds", "energy", ANSWERS)
+    assert "E1 = 789.6 kJ" in shown                   # ½·3600·(200·2π/60)² = 789.6 kJ
+    assert not [t for t in bare if "789.6" in t or "758.3" in t or "31267" in t]
+    assert {"E1 = … kJ", "E2 = … kJ"} <= set(bare)
+
+
+def test_a_rods_equivalent_masses_and_couple_leave_its_figure():
+    shown = _texts("rod-equivalent-masses", "rod")
+    bare = _texts("rod-equivalent-masses", "rod", ANSWERS)
+    # 3 kg × 140.833/260.833 = 1.62 kg at P; l2 = k²/l1 = 130²/120 = 140.833 mm
+    assert {"1.62 kg", "1.38 kg", "140.833 mm", "1.8 kg", "1.2 kg"} <= set(shown)
+    assert not {"1.62 kg", "1.38 kg", "140.833 mm", "1.8 kg", "1.2 kg"} & set(bare)
+    assert not [t for t in bare if t.startswith("correction couple")]
+    assert {"120 mm", "180 mm", "m = 3 kg, k = 130 mm"} <= set(bare)   # the rod as given
+
+
+def test_an_engines_unbalanced_reading_leaves_its_polygon():
+    shown = _texts("inline-four", "secondary-force")
+    bare = _texts("inline-four", "secondary-force", ANSWERS)
+    assert [t for t in shown if "unbalanced" in t]
+    assert not [t for t in bare if "unbalanced" in t]
+
+
+def test_the_loads_too_small_to_draw_are_named_without_their_sizes():
+    shown = _texts("crank-shaper-forces", "loads-theta2-90")
+    bare = _texts("crank-shaper-forces", "loads-theta2-90", ANSWERS)
+    assert [t for t in shown if "Fi2 = 0.107 N on link 2" in t]
+    note = " ".join(t for t in bare if "on link" in t or "Too small" in t)
+    assert "Fi2 = … on link 2" in note and "0.107" not in note

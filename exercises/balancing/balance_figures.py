@@ -74,11 +74,11 @@ def _engine_figures(s: BalanceSolution) -> dict[str, Figure]:
         word = ("N·m" if kind.endswith("couple") else "N") if e.speed is not None else (
             "kg·m²" if kind.endswith("couple") else "kg·m")
         reading = (words("closed: balanced"), "", "") if kind in p.balanced else (
-            words("{size} {unit} unbalanced, greatest at θ₁ = {angle}°",
+            shown_answer(words("{size} {unit} unbalanced, greatest at θ₁ = {angle}°",
                   # four figures, and whole newtons past 9999 rather than an exponent
                   size=numerals(f"{left:.4g}" if left < 1e4 else f"{left:.0f}"),
                   unit=unit_words(word),
-                  angle=numerals(f"{s.greatest_at[kind]:.1f}")), "", "")
+                  angle=numerals(f"{s.greatest_at[kind]:.1f}"))), "", "")
         # drawn to the unit its reading is given in, at a round scale of that unit: its
         # m·r (m·r·l) scale, that over ω², would be round only for a round ω²
         own = "kg·m²" if kind.endswith("couple") else "kg·m"

@@ -12,6 +12,7 @@ from typing import Any
 
 from tarsim.constructions.narration import numerals, unit_words, words
 from tarsim.graphics.figure import Figure
+from tarsim.graphics.hiding import shown_answer
 from tarsim.graphics.plot import PlotMark, Series, draw_line_plot, nice_ticks
 
 __all__ = ["torque_figure", "energy_figure", "energy_fills", "speed_figure"]
@@ -44,7 +45,8 @@ def torque_figure(sol: Any) -> Figure:
     torque = unit_words("N·m")
     curve = words("resisting torque") if ex.resisting else words("turning moment")
     series = [Series(curve, pts),
-              Series(words("mean {value} {unit}", value=numerals(_short(r.mean)), unit=torque),
+              Series(words("mean {value} {unit}", value=shown_answer(numerals(_short(r.mean)), "…"),
+                           unit=torque),
                      ((0.0, r.mean), (period, r.mean)), "plot_curve_dashed")]
     if ex.single:                   # one cylinder's diagram, the curve the sum of them
         one = [(math.degrees(t), v) for t, v in ex.single] + [(period, ex.single[0][1])]
@@ -58,7 +60,7 @@ def torque_figure(sol: Any) -> Figure:
                    "ΔE = {energy} {unit}, the greatest fluctuation of energy: the highest energy "
                    "less the lowest, adding the areas in turn (shaded light where the driver "
                    "gives more than the mean, dark where less)",
-                   energy=numerals(_short(r.delta_e)), unit=unit_words("J"))]
+                   energy=shown_answer(numerals(_short(r.delta_e)), "…"), unit=unit_words("J"))]
     marks = []
     if "greatest_acceleration" in sol.checked:
         labels = ("α min", "α max") if ex.resisting else ("α max", "α min")
@@ -102,7 +104,7 @@ def _excess_figure(sol: Any) -> Figure:
     notes = [words("ΔE = {energy} {unit}, the greatest fluctuation of energy: the highest energy "
                    "less the lowest, adding the areas of T_e − T_m in turn (shaded light where "
                    "the engine gives more than the machine takes, dark where less)",
-                   energy=numerals(_short(r.delta_e)), unit=unit_words("J"))]
+                   energy=shown_answer(numerals(_short(r.delta_e)), "…"), unit=unit_words("J"))]
     marks = []
     if "greatest_acceleration" in sol.checked:
         for key, label in (("greatest", "α max"), ("least", "α min")):
@@ -128,15 +130,15 @@ def energy_figure(sol: Any) -> Figure:
     marks = [PlotMark(r.highest, levels[int(r.highest)], words("highest")),
              PlotMark(r.lowest, levels[int(r.lowest)], words("lowest"))]
     joule = unit_words("J")
-    tags = [((i + 0.5), (levels[i] + levels[i + 1]) / 2, _signed(a, joule))
+    tags = [((i + 0.5), (levels[i] + levels[i + 1]) / 2, shown_answer(_signed(a, joule)))
             for i, a in enumerate(r.areas)]
     return draw_line_plot(
         words("Energy at the intercepts"), words("intercept, in order"),
         f"E ({joule})", [Series(words("energy above the first intercept's"), pts)], marks,
         x_range=(0.0, float(n)), x_ticks=[(float(i), numerals(str(i))) for i in range(n + 1)],
         notes=[words("ΔE = {energy} {unit}, the greatest fluctuation of energy: the highest "
-                     "energy less the lowest", energy=numerals(_short(r.delta_e)),
-                     unit=joule)],
+                     "energy less the lowest",
+                     energy=shown_answer(numerals(_short(r.delta_e)), "…"), unit=joule)],
         tags=tags, mark_legend=words("the highest and lowest energy"), subtitle=ex.name)
 
 
@@ -160,15 +162,18 @@ def speed_figure(sol: Any) -> Figure:
     return draw_line_plot(
         words("The flywheel's energy against its speed"), words("speed ({unit})", unit=speed),
         f"E ({kilojoule})", [Series(words("½·I·ω², I = {inertia} kg·m²",
-                                          inertia=numerals(_short(inertia))), pts),
+                                          inertia=shown_answer(numerals(_short(inertia)), "…")),
+                                    pts),
                              *(Series(words("{name} = {energy} {unit}", name=name,
-                                            energy=numerals(_short(e)), unit=kilojoule),
+                                            energy=shown_answer(numerals(_short(e)), "…"),
+                                            unit=kilojoule),
                                       ((start, e), (end, e)), "plot_curve_dashed")
                                for name, e in (("E1", marks[0].y), ("E2", marks[1].y)))],
         marks, x_range=(start, end), x_ticks=ticks, include_zero=False,
         notes=[words("ΔE = ½·I·(ω1² − ω2²) = {energy} {unit}: the energy the flywheel gives "
                      "up from its greatest speed ω1 to its least ω2",
-                     energy=numerals(_short(sol.reading.delta_e)), unit=unit_words("J"))],
+                     energy=shown_answer(numerals(_short(sol.reading.delta_e)), "…"),
+                     unit=unit_words("J"))],
         mark_legend=words("the greatest and least speeds"), subtitle=ex.name)
 
 
@@ -205,7 +210,7 @@ def energy_fills(degrees: list[float], torques: list[float], mean: float,
         big = max(pieces, key=lambda p: p[-1][0] - p[0][0])
         peak = max(big, key=lambda p: abs(p[1] - mean))
         tags.append(((big[0][0] + big[-1][0]) / 2, (peak[1] + mean) / 2,
-                     label(area), pieces))
+                     shown_answer(label(area)), pieces))
     return fills, tags
 
 

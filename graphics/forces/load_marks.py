@@ -10,6 +10,7 @@ from shapely.geometry import Point as SPoint
 
 from tarsim.constructions.narration import numerals, unit_words, words
 from ..figure import Figure
+from ..hiding import shown_answer
 from .force_figure import typeset_force
 from ..labels import LabelPlacer
 from ..symbols import draw_turning_arrow
@@ -47,7 +48,8 @@ def too_small(items: list[tuple[str, float, str, int]]) -> list[str]:
     if not items:
         return []
     said = [words("{name} = {size} on link {link}", name=said_name(name),
-                  size=amount(size, ".3g", unit), link=link) for name, size, unit, link in items]
+                  size=shown_answer(amount(size, ".3g", unit), "…"), link=link)
+            for name, size, unit, link in items]
     return [words("Too small to draw: {items}.", items=words(", ").join(said))]
 
 

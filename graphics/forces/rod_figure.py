@@ -13,6 +13,7 @@ from tarsim.constructions.narration import measure_words, numeral, words
 from tarsim.constructions.scales import nice_per_cm
 from tarsim.constructions.units import LENGTH_UNITS
 from tarsim.graphics.figure import Circle, Figure, Path, Text
+from tarsim.graphics.hiding import shown_answer
 from tarsim.graphics.scales import draw_caption
 from tarsim.graphics.symbols import draw_dimension, draw_pin
 
@@ -88,7 +89,7 @@ def rod_figure(sol: Any) -> Figure:
         rows.append((words("equivalent dynamical system"),
                      [(pin_x, e.at_pin, ex.one_mass_at), (x_d, e.beyond, ex.second)],
                      [(pin_x, rod.centre, "l1", length(e.l1)),
-                      (rod.centre, x_d, "l2", length(e.l2))]))
+                      (rod.centre, x_d, "l2", shown_answer(length(e.l2), "…"))]))
     if {"pin_masses", "equivalent_inertia", "correction_couple"} & set(ex.find):
         mp, ma = sol.at_pins
         rows.append((words("two masses at the pins"),
@@ -104,7 +105,8 @@ def rod_figure(sol: Any) -> Figure:
         label = Text((0.0, y + 1.0), name, 3.2, italic=False)
         fig.add(Text((x(lo) - 8.0 - label.width / 2, y + 1.0), name, 3.2, italic=False))
         for s, m, point in masses:
-            _mass_dot(fig, (x(s), y), m, biggest, measure_words(f"{m:.4g} kg"), point)
+            _mass_dot(fig, (x(s), y), m, biggest, shown_answer(measure_words(f"{m:.4g} kg"), "…"),
+                      point)
         for s0, s1, symbol, measure in dims:
             a0, a1 = sorted((x(s0), x(s1)))
             mid = draw_dimension(fig, (a0, y), (a1, y), (0.0, 1.0), offset=12.0)
@@ -118,7 +120,8 @@ def rod_figure(sol: Any) -> Figure:
                    k=length(math.sqrt(rod.inertia / rod.mass)))
              if rod.inertia > 0 else words("m = {mass} kg", mass=numeral(rod.mass, "g"))]
     if "correction_couple" in ex.find:
-        lines.append(words("correction couple {couple} N·m {sense}",
-                           couple=numeral(abs(sol.couple)), sense=sol.sense(sol.couple)))
+        lines += [line for line in [shown_answer(words(
+            "correction couple {couple} N·m {sense}", couple=numeral(abs(sol.couple)),
+            sense=sol.sense(sol.couple)))] if line]
     draw_caption(fig, title, lines, per_cm=per_cm, unit=unit, scale_name="Scale")
     return fig
