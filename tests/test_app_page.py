@@ -268,6 +268,8 @@ def test_turning_the_input_solves_again_at_each_angle(page):
         assert settled(page) == "solved"
         seen[angle] = readout(page)["ω3"]
         assert f"θ = {angle}°".replace("-", "−") in page.inner_text("#readout")
+        # The construction shown is redrawn there: its caption states the angle.
+        assert f"= {angle}°".replace("-", "−") in page.inner_text("#figure")
     assert seen[60] == pytest.approx(-2.578, abs=5e-4)
     assert len(set(seen.values())) == 3            # each angle its own ω3
     # The file keeps its own angle: the slider asks the server at another.

@@ -42,14 +42,18 @@ const App = (() => {
   }
 
   // --- solving ------------------------------------------------------------------------------
-  function schedule(ms) {
-    clearTimeout(app.timer);
+  /** Asks the server ``ms`` after the last edit. Turning the input asks twice: at once
+      without figures (the readout and the drawing follow the slider), then with them once
+      the slider rests, so the chosen construction is redrawn at that angle. */
+  function schedule(ms, quickFirst = false) {
+    clearTimeout(app.timer); clearTimeout(app.quick);
     document.body.dataset.state = "pending";         // an edit not yet answered
-    app.timer = setTimeout(solve, ms);
+    if (quickFirst) app.quick = setTimeout(() => solve(false), ms);
+    app.timer = setTimeout(() => solve(true), quickFirst ? ms + 220 : ms);
   }
   function text() { return app.raw ?? Model.toToml(app.model); }
 
-  async function solve() {
+  async function solve(figures = true) {
     if (!app.raw) {
       const why = !app.model.ex.link.length ? "hint_empty" : Model.ready(app.model);
       $("hint").textContent = why ? t(why) : "";
@@ -62,12 +66,12 @@ const App = (() => {
     }
     const seq = ++app.seq;
     app.ctrl?.abort(); app.ctrl = new AbortController();
-    const body = { toml: text(), lang: app.lang, figures: true, ...app.source };
+    const body = { toml: text(), lang: app.lang, figures, ...app.source };
     const override = app.angle !== null && Math.abs(app.angle - fileAngle()) > 1e-9;
     // At another angle: that position alone, without what belongs to no one position (the
     // time ratio, the stroke), which turning the input does not change.
     if (override) Object.assign(body, { angle: app.angle, whole: false });
-    state("solving");
+    if (figures) state("solving");
     const t0 = performance.now();
     let res, data;
     try {
@@ -80,6 +84,10 @@ const App = (() => {
       return;
     }
     if (seq !== app.seq) return;
+    if (!figures) {                    // the quick answer: the figures' answer follows
+      if (res.ok) { place(data.points, override); Editor.draw(); readout(data); }
+      return;
+    }
     if (!res.ok) {
       app.error = { text: data.error ?? res.statusText, where: whereOf(data) };
       state("error"); redraw(); return;
@@ -230,6 +238,7 @@ const App = (() => {
     $("hint").textContent = "";
     showAngle();
     ["fig-tabs", "figure", "table", "steps", "readout"].forEach(id => { $(id).innerHTML = ""; });
+    $("figure").innerHTML = `<p class="placeholder">${esc(t("solving"))}</p>`;
     Editor.fit(); redraw();
     schedule(0);
   }
@@ -287,7 +296,7 @@ const App = (() => {
     $("new").onclick = fresh;
     $("open").onchange = e => { if (e.target.value) open(e.target.value); e.target.value = ""; };
     $("name").onchange = e => { if (!app.raw) { app.model.ex.name = e.target.value; app.changed(); } };
-    $("angle").oninput = e => { app.angle = Number(e.target.value); $("angle-out").value = `${sig(app.angle, 5)}°`; schedule(60); };
+    $("angle").oninput = e => { app.angle = Number(e.target.value); $("angle-out").value = `${sig(app.angle, 5)}°`; schedule(30, true); };
     $("reset-angle").onclick = () => { app.angle = null; showAngle(); schedule(0); };
     document.querySelectorAll("#downloads [data-what]").forEach(b => b.onclick = () => download(b.dataset.what));
     $("save").onclick = save;
