@@ -16,7 +16,7 @@ from tarsim.constructions.errors import (AssemblyError, GeometryError, IllCondit
                                          InputError, TarsimError)
 from tarsim.graphics.atomic_files import RenderError
 
-__all__ = ["Refused", "status_of", "refusal", "placed"]
+__all__ = ["Refused", "status_of", "refusal", "placed", "where"]
 
 _LINK = re.compile(r"^link (\d+)\b")
 """How an InputError's key names a numbered [[link]] table: "link 3, lengths"."""
