@@ -26,6 +26,8 @@ from tarsim.exercises.linkages.exercise_file import parse_exercise
 from tarsim.exercises.linkages.results_json import results_json
 from tarsim.exercises.linkages.solution import solve_positions
 from tarsim.exercises.linkages.view import view_data
+from tarsim.exercises.linkages.view_figures import solved_at
+from tarsim.graphics.paper import paper, room
 from tarsim.graphics.view_page import ViewPage, view_html
 
 from tests.common import four_bar_toml
@@ -246,18 +248,23 @@ def _results(angle: float) -> dict:
 
 
 _READ = """() => {
-  const D = tarsimView.data;
-  return {names: D.names, frame: tarsimView.state.frame, scales: D.scales,
-          figures: D.figures.map(f => ({stem: f.stem, items: f.drawn.en.items,
-                                        views: f.drawn.en.views})),
-          first: D.frames[0].at,
+  const D = tarsimView.data, k = tarsimView.state.frame;
+  const shown = d => (k !== 0 && d.turning) || d;
+  return {names: D.names, frame: k, scales: D.scales,
+          figures: D.figures.map(f => ({stem: f.stem, items: shown(f.drawn.en).items,
+                                        views: shown(f.drawn.en).views,
+                                        first: shown(f.drawn.en).named || D.frames[0].at,
+                                        angle: shown(f.drawn.en).angle ?? D.input.angle,
+                                        fit: f.fit ? f.fit.at : null})),
           dom: [...document.querySelectorAll('#sheet [data-i]')].map(e => ({
             cx: e.getAttribute('cx'), cy: e.getAttribute('cy'), d: e.getAttribute('d'),
             transform: e.getAttribute('transform'),
             shown: getComputedStyle(e).display !== 'none'}))};
 }"""
-"""What a test reads back of the page: the data the figure was drawn from, and what the
-browser drew of it, element by element."""
+"""What a test reads back of the page: the data the figure shown was drawn from (while the
+input turns, each figure as drawn farther on, its named points there and the input's
+angle, and each frame's polygon scales), and what the browser drew of it, element by
+element."""
 
 
 def _standing(figure: dict, first: dict, view: str, style: str | None, kind: str):
@@ -282,9 +289,10 @@ def test_dragging_the_crank_draws_what_solve_finds_at_that_angle(page, angle):
     """Drag the crank pin round to θ2 on the page, then read back what the browser drew,
     turned back into world units by the figure's view: each pin stands where the analytic
     solver puts its joint; each instant centre's name has moved with its centre from where
-    results.json puts it at 90° to where it puts it at θ2; and, on the worked page, the
-    velocity polygon's arrow to b runs from the pole's dot to results.json's V_B. All to
-    what the page writes: a coordinate to half a micrometre of paper."""
+    results.json puts it at the angle of the drawing the page turns to where it puts it at
+    θ2; and, on the worked page, the velocity polygon's arrow to b runs from the pole's dot
+    to results.json's V_B at the frame's own scale. All to what the page writes: a
+    coordinate to half a micrometre of paper."""
     from tarsim.constructions.reference import solver
 
     page.select_option("#figure", "0")                          # the centres
@@ -309,13 +317,13 @@ def test_dragging_the_crank_draws_what_solve_finds_at_that_angle(page, angle):
         return ((float(x) - vx) / s, -(float(y) - vy) / s)
 
     joints = solver.solve(_at(angle).mechanism).points
-    pins = [(i, names[a]) for i, a in _standing(figure, read["first"], "space", "pin", "c")]
+    pins = [(i, names[a]) for i, a in _standing(figure, figure["first"], "space", "pin", "c")]
     assert len(pins) >= 3
     for i, name in pins:
         assert read["dom"][i]["shown"]
         assert math.dist(world(read["dom"][i]["cx"], read["dom"][i]["cy"]), joints[name]) <= near
     now = _reference(angle)
-    then = _reference(90.0)
+    then = _reference(math.degrees(figure["angle"]) % 360)   # the drawing the page turns
     compared, centres = 0, 0
     for i, item in enumerate(figure["items"]):
         more = item[3] if len(item) > 3 else {}
@@ -335,12 +343,12 @@ def test_dragging_the_crank_draws_what_solve_finds_at_that_angle(page, angle):
     page.select_option("#figure", str(worked))
     read = page.evaluate(_READ)
     figure, tips = read["figures"][worked], read["names"]["velocity"]
-    sv, px, py = figure["views"]["velocity"]
-    head = next(i for i, a in _standing(figure, read["first"], "velocity", "arrowhead", "z")
+    sv = figure["fit"]["velocity"][6 * read["frame"]]      # the frame's own scale, mm a m
+    head = next(i for i, a in _standing(figure, figure["first"], "velocity", "arrowhead", "z")
                 if tips[a] == "B")
-    first = read["first"]["velocity"]
+    first = figure["first"]["velocity"]
     o = tips.index("pole")                      # a pivot's tip is the pole: its dot's too
-    pole = next(i for i, a in _standing(figure, read["first"], "velocity", "dot", "c")
+    pole = next(i for i, a in _standing(figure, figure["first"], "velocity", "dot", "c")
                 if first[2 * a:2 * a + 2] == first[2 * o:2 * o + 2])
     tip = tuple(map(float, read["dom"][head]["d"][1:].split(" ")[0].split(",")))
     dot = (float(read["dom"][pole]["cx"]), float(read["dom"][pole]["cy"]))
@@ -462,3 +470,70 @@ def test_the_command_counts_the_frames_a_crank_can_reach(tmp_path):
     assert result.exit_code == 0, result.output
     assert (f"72 frames: {drawn} checked, {72 - drawn} out of reach or beyond the "
             "construction, 0 failing their check)") in result.output
+
+
+@pytest.fixture(scope="module")
+def turned():
+    """``turned(name)``: the page's data for a bundled exercise, a frame every 10°, and
+    the exercise solved at its own position, once per module."""
+    cache: dict[str, tuple[dict, object]] = {}
+
+    def get(name: str):
+        if name not in cache:
+            ex = load(name)
+            home = solve_positions(replace(ex, positions=ex.positions[:1]),
+                                   room=room(paper(ex.paper)))[0]
+            cache[name] = view_data(ex, step_deg=10.0), home
+        return cache[name]
+    return get
+
+
+_ASKED = {"crank-shaper": ("rr:B:rot:k", "rr:B:tip:k", "rr:B:tip:t", "rr:B:tip"),
+          "four-bar": ("rr:B:rot:d", "rr:B:tip:d", "pl:B:turn:t", "pl:B:cut", "cm:A:foot@A-B",
+                       "cm:B:along@A")}
+"""Points each exercise's asked constructions stand on: the crank-shaper's V_B by radius
+rotation (A swung onto the line of centres, V_A there, V_I25, V_B at B) and the
+four-bar's by radius rotation (B swung onto the line of centres and its velocity there),
+parallel lines (V_A turned onto its radius, the parallel's cut) and components (the foot
+of V_A's component along AB, laid off again at B)."""
+
+
+@pytest.mark.parametrize("name", sorted(_ASKED))
+def test_every_frame_sends_the_points_the_asked_construction_stands_on(turned, name):
+    """Each frame the mechanism can be assembled at sends the points the asked
+    constructions stand on, and every point a primitive of the drawing the page turns
+    stands on (but an instant centre, which may run to infinity): none is left out, so no
+    primitive is left at the first position's place or hidden where tarsim constructs
+    it."""
+    data, _ = turned(name)
+    names = data["names"]
+    assert set(_ASKED[name]) <= set(names["space"])
+    frames = [f for f in data["frames"] if "at" in f]
+    assert len(frames) == len(data["frames"]) == 36
+    stands = set()
+    for figure in data["figures"]:
+        for drawing in figure["drawn"].values():
+            for item in drawing.get("turning", drawing)["items"]:
+                more = item[3] if len(item) > 3 else {}
+                for view, triples in (more[k] for k in ("m", "a") if k in more):
+                    stands |= {(view, k) for k in triples
+                               if k >= 0 and not re.fullmatch(r"I\d+", names[view][k])}
+    assert {("space", names["space"].index(ref)) for ref in _ASKED[name]} <= stands
+    for f in frames:
+        missing = [names[view][k] for view, k in stands if f["at"][view][2 * k] is None]
+        assert missing == [], (math.degrees(f["angle"]), missing)
+
+
+@pytest.mark.parametrize("name", sorted(_ASKED))
+def test_a_frame_s_construction_is_tarsim_s_own_at_that_angle(turned, name):
+    """The points of the asked constructions a frame sends are where tarsim's solve at
+    that frame's angle puts them (its record, at the page's scales): both are the same
+    exact construction, so they agree to the page's rounding, 1e-7 m in x and in y."""
+    data, home = turned(name)
+    where = room(paper(load(name).paper))
+    for f in data["frames"][5::11]:
+        there = solved_at(home, f["angle"], where)
+        at = f["at"]["space"]
+        for ref in _ASKED[name]:
+            k = data["names"]["space"].index(ref)
+            assert math.dist(at[2 * k:2 * k + 2], there.assembly.output(ref).xy) <= 1.5e-7, ref

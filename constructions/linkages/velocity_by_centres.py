@@ -29,7 +29,7 @@ from .centre_answers import located
 from .centres import Centres, pair_label
 from ..errors import DegenerateInput, TarsimError
 from ..narration import Quantity, phrase
-from ..record import Kind, Ref, Role
+from ..record import Derived, Kind, Ref, Role
 from ..checks import Answer
 from .velocity_drawing import (VelocityResult, answer, draw_input_velocity, vector_label,
                                velocity_result)
@@ -49,6 +49,42 @@ def velocity_by_parallel_lines(asm: Assembly, centres: Centres, point: str, *,
                                scale: float, link: int | None = None) -> VelocityResult:
     """Find V of ``point`` by the parallel-line method (Hinkle Fig 5.3, notes §2.7)."""
     return _Method(asm, centres, "parallel-line", "pl", scale).run(point, link)
+
+
+# ----- what the constructions read off their own drawing (:class:`~..record.Derived`), so
+# that a replay at another position of the input (:mod:`..replay`) reads it again ---------
+def known_length(output, centre: Ref, p: Ref, v: Ref) -> dict[str, float]:
+    """The known speed ``v`` (a vector at ``p``) laid off signed: + if it turns
+    counter-clockwise about ``centre``, − if clockwise, as read off the figure."""
+    (cx, cy), (px, py) = output(centre).xy, output(p).xy
+    vx, vy = output(v).vector
+    sense = 1.0 if (px - cx) * vy - (py - cy) * vx >= 0 else -1.0
+    return {"length": sense * output(v).length}
+
+
+def speed_of(output, v: Ref) -> dict[str, float]:
+    """The length of the vector ``v``, laid off again elsewhere."""
+    return {"length": output(v).length}
+
+
+def angle_back(output, centre: Ref, point: Ref, swung: Ref) -> dict[str, float]:
+    """The angle that turns ``swung`` (the point swung onto the line of centres) back
+    about ``centre`` to ``point``."""
+    (cx, cy), (dx, dy), (ax, ay) = output(centre).xy, output(point).xy, output(swung).xy
+    return {"angle": math.atan2(dy - cy, dx - cx) - math.atan2(ay - cy, ax - cx)}
+
+
+def quarter_toward(output, t: Ref, centre: Ref, v: Ref) -> dict[str, float]:
+    """The quarter turn that lays the velocity ``v`` at ``t`` onto its radius toward
+    ``centre``."""
+    (tx, ty), (cx, cy) = output(t).xy, output(centre).xy
+    vx, vy = output(v).vector
+    return {"angle": math.copysign(math.pi / 2, vx * (cy - ty) - vy * (cx - tx))}
+
+
+def quarter_back(output, t: Ref, centre: Ref, v: Ref) -> dict[str, float]:
+    """The quarter turn back the other way (:func:`quarter_toward`)."""
+    return {"angle": -quarter_toward(output, t, centre, v)["angle"]}
 
 
 class _Method:
@@ -193,21 +229,14 @@ class _Method:
         at = self.draw("rot:k", "intersect_line_circle", loc, arc, pick="forward",
                        label=f"{known}′")
         perp = self.draw("perp:k", "perpendicular_through", at, loc)
-        sense = self.sense_of(centre, p, v_known)
         tip = self.draw("tip:k", "lay_off", at, perp,
-                        length=sense * self.c.output(v_known).length,
+                        derived=Derived(known_length, (centre, p, v_known)),
+                        **known_length(self.c.output, centre, p, v_known),
                         phrase=phrase("velocity.lay_off_known", point=known,
                                       speed=self.speed(*self.c[v_known].inputs)))
         return self.draw("gauge:i", "line_through", centre, tip, label=f"gauge line of link {link}",
                          kind=Kind.GAUGE_LINE,
                          phrase=phrase("velocity.gauge_line", link=link, centre=lab_c))
-
-    def sense_of(self, centre: Ref, p: Ref, v: Ref) -> float:
-        """+1 if V at ``p`` turns counter-clockwise about ``centre``, else −1 (read off the
-        figure)."""
-        (cx, cy), (px, py) = self.c.output(centre).xy, self.c.output(p).xy
-        vx, vy = self.c.output(v).vector
-        return 1.0 if (px - cx) * vy - (py - cy) * vx >= 0 else -1.0
 
     # ----- on link j ---------------------------------------------------------------
     def on_link(self, j: int, t: Ref, v_t: Ref, point: str, transfer_label: str) -> Ref:
@@ -217,7 +246,8 @@ class _Method:
         if self.is_infinite(j1):
             along = self.draw("dir", "line_through", t, self.tip_of(v_t))
             par = self.draw("par", "parallel_through", target, along)
-            tip = self.draw("tip", "lay_off", target, par, length=self.c.output(v_t).length,
+            tip = self.draw("tip", "lay_off", target, par, derived=Derived(speed_of, (v_t,)),
+                            **speed_of(self.c.output, v_t),
                             phrase=phrase("velocity.translates", link=j, centre=pair_label(1, j),
                                           known=transfer_label, point=point))
             return self.result(point, tip, label)
@@ -269,10 +299,9 @@ class _Method:
                          phrase=phrase("velocity.erect_perpendicular", at=f"{point}′"))
         tip = self.draw("tip:d", "intersect_lines", perp, gauge,
                         phrase=phrase("velocity.meets_gauge_length", link=j, point=point))
-        (cx, cy), (dx, dy), (ax, ay) = (self.c.output(j1).xy, self.c.output(target).xy,
-                                        self.c.output(at).xy)
-        back = math.atan2(dy - cy, dx - cx) - math.atan2(ay - cy, ax - cx)
-        tip_back = self.draw("back", "rotate_about", tip, j1, angle=back,
+        tip_back = self.draw("back", "rotate_about", tip, j1,
+                             derived=Derived(angle_back, (j1, target, at)),
+                             **angle_back(self.c.output, j1, target, at),
                              phrase=phrase("velocity.rotate_back", centre=lab, point=point))
         return self.result(point, tip_back, label)
 
@@ -284,10 +313,9 @@ class _Method:
         # inherits its conditioning. Its length laid off as a bare number would drop the
         # transfer's, which is where the digits go when I_ij stands close to I_1i (a short
         # crank beside a long frame: I25 0.031 mm from O2 in a drawing 100 mm across).
-        (tx, ty), (cx, cy) = self.c.output(t).xy, self.c.output(j1).xy
-        vx, vy = self.c.output(v_t).vector
-        turned_by = math.copysign(math.pi / 2, vx * (cy - ty) - vy * (cx - tx))
-        turned = self.draw("turn:t", "rotate_about", self.tip_of(v_t), t, angle=turned_by,
+        turned = self.draw("turn:t", "rotate_about", self.tip_of(v_t), t,
+                           derived=Derived(quarter_toward, (t, j1, v_t)),
+                           **quarter_toward(self.c.output, t, j1, v_t),
                            phrase=phrase("velocity.turn_known", centre=lab))
         self.turned.append(self.draw("turned:t", "join", t, turned,
                                      phrase=phrase("velocity.turned_arrow")))
@@ -302,7 +330,9 @@ class _Method:
         self.turned.append(self.draw("turned", "join", target, cut,
                                      phrase=phrase("velocity.turned_found", point=point)))
         # The known velocity was turned onto its radius by ±90°; turn back the other way.
-        tip = self.draw("back", "rotate_about", cut, target, angle=-turned_by,
+        tip = self.draw("back", "rotate_about", cut, target,
+                        derived=Derived(quarter_back, (t, j1, v_t)),
+                        **quarter_back(self.c.output, t, j1, v_t),
                         phrase=phrase("velocity.turn_back", point=point, centre=lab))
         return self.result(point, tip, label)
 

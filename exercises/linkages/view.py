@@ -37,8 +37,10 @@ from tarsim.graphics.paper import paper, room
 from tarsim.graphics.workers import draw_each
 from .exercise_file import Exercise
 from tarsim.constructions.linkages.given_rate import convert
-from .view_figures import PageFigures
-from .view_frames import FRAME_CHECK, Template, constructed, frame_outcomes, truth_of_turn
+from .view_figures import PageFigures, solved_at
+from .view_fit import frame_fits
+from .view_frames import (FRAME_CHECK, Template, constructed, construction_points,
+                          frame_outcomes, truth_of_turn)
 
 __all__ = ["view_data", "frame_outcomes", "FRAME_CHECK"]
 
@@ -67,7 +69,14 @@ def view_data(ex: Exercise, *, step_deg: float = 0.5,
     angles = [mech.drive.angle + sense * math.radians(step_deg) * k for k in range(n)]
     scales = _scales(mech, sol)
     names = _names(mech, scales)
-    template = Template.chosen(mech, angles, scales, names)
+    core = {view: len(points) for view, points in names.items()}
+    for view, refs in construction_points(sol).items():
+        names[view] += refs
+
+    def solved(angle: float):
+        return sol if angle == angles[0] else solved_at(sol, angle, where)
+
+    template = Template.chosen(mech, angles, scales, names, solved)
     turn = solve_turn(mech, angles)
 
     def frames_of(ks: range) -> list[dict]:
@@ -75,7 +84,8 @@ def view_data(ex: Exercise, *, step_deg: float = 0.5,
         for k in ks:
             f = template.frame(angles[k], truth_of_turn(turn, k)) \
                 if template is not None and turn.ok[k] else None
-            out.append(f if f is not None else constructed(mech, angles[k], scales, names))
+            out.append(f if f is not None else constructed(mech, angles[k], scales, names,
+                                                           solved))
         return out
 
     chunks = [range(k, n, _CHUNKS) for k in range(_CHUNKS)]
@@ -96,6 +106,12 @@ def view_data(ex: Exercise, *, step_deg: float = 0.5,
         progress(n)
     figures = pages.figures(done[_CHUNKS:-1])
     plot, marks = done[-1]
+    names = _pruned(names, core, frames, figures)
+    for f in figures:
+        turning = f["drawn"][_PAGE_LANGUAGES[0]].get("turning")
+        if turning is not None and turning.get("panels"):
+            f["fit"] = frame_fits(turning["panels"], frames, scales, mech.units,
+                                  _PAGE_LANGUAGES)
     used = {it[1] for f in figures for d in f["drawn"].values() for it in d["items"]
             if it[1]}
     return {
@@ -144,13 +160,46 @@ def _scales(mech: Mechanism, sol) -> dict[str, float]:
 
 def _names(mech: Mechanism, scales: dict[str, float]) -> dict[str, list[str]]:
     """The named points of each view, in the order every frame sends them: the joints and
-    the instant centres; each polygon's tips and its pole."""
+    the instant centres; each polygon's tips and its pole. The points the exercise's own
+    constructions stand on follow them, by their refs
+    (:func:`~.view_frames.construction_points`)."""
     asm = assemble(mech)
     vp = draw_velocity_polygon(asm, scales["v"])
     ap = draw_acceleration_polygon(asm, vp, scales["a"])
     cs = locate_centres(assemble(mech))
     return {"space": list(mech.point_names) + [c.label for c in cs.primaries + cs.secondaries],
             "velocity": list(vp.tips) + ["pole"], "acceleration": list(ap.tips) + ["pole"]}
+
+
+def _pruned(names: dict[str, list[str]], core: dict[str, int], frames: list[dict],
+            figures: list[dict]) -> dict[str, list[str]]:
+    """``names`` with the points of the constructions no figure's primitive stands on
+    left out, and the frames, the primitives' anchors and the drawings' own named points
+    with them: the first ``core`` names of each view (the joints, centres and polygon
+    tips) are always sent."""
+    drawings = [d for f in figures for home in f["drawn"].values()
+                for d in (home, home.get("turning")) if d is not None]
+    stands = [more[key] for d in drawings for it in d["items"]
+              if len(it) > 3 and (more := it[3]) for key in ("m", "a") if key in more]
+    keep = {view: set(range(n)) for view, n in core.items()}
+    for view, triples in stands:
+        keep[view].update(k for k in triples if k >= 0)
+    kept = {view: sorted(keep[view]) for view in names}
+    new = {view: {k: i for i, k in enumerate(ks)} for view, ks in kept.items()}
+    for view, triples in stands:
+        triples[:] = [new[view][k] if k >= 0 else k for k in triples]
+
+    def flat(at: dict[str, list]) -> dict[str, list]:
+        return {view: [v for k in kept[view] for v in xy[2 * k:2 * k + 2]]
+                for view, xy in at.items()}
+
+    for f in frames:
+        if "at" in f:
+            f["at"] = flat(f["at"])
+    for d in drawings:
+        if "named" in d:
+            d["named"] = flat(d["named"])
+    return {view: [names[view][k] for k in ks] for view, ks in kept.items()}
 
 
 def _drag(mech: Mechanism, names: dict[str, list[str]]) -> dict[str, Any]:

@@ -20,23 +20,26 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
+from copy import copy
 from dataclasses import replace
 from functools import partial
 from typing import Any
 
+from tarsim.constructions import geometry as g
 from tarsim.constructions.errors import TarsimError
 from tarsim.constructions.linkages.assembly import assemble
 from tarsim.constructions.linkages.kennedy import locate_centres
-from tarsim.constructions.narration import narrate, speaking
+from tarsim.constructions.narration import narrate, speaking, words
 from tarsim.constructions.record import Panel, Role, Slice
 from tarsim.graphics.figure import Circle, Figure, Path, Text
-from tarsim.graphics.figure_anchors import Named, anchors
+from tarsim.graphics.figure_anchors import EXACT, Named, anchors
 from tarsim.graphics.figure_data import figure_data, number
 from tarsim.graphics.linkages.scene import draw_scene
 from .exercise_file import Exercise
 from .solution import Overall, Solution, solve_positions
+from .view_frames import _flat
 
-__all__ = ["PageFigures", "named_points", "NEXT", "FAR"]
+__all__ = ["PageFigures", "named_points", "solved_at", "NEXT", "FAR"]
 
 NEXT = 0.05
 """Degrees further on the input turns for the second drawing a figure's primitives are
@@ -44,9 +47,12 @@ matched against: little enough that every label and symbol is chosen as at the p
 itself, enough that the links turn by more than rounding."""
 
 FAR = 15.0
-"""Degrees further on for a third drawing, in the first language only (the symbols are
-drawn alike in every language): it tells what turns with a link that stands still at the
-exercise's position (a slotted lever at its limit) from what does not turn."""
+"""Degrees further on for a third drawing: it tells what turns with a link that stands
+still at the exercise's position (a slotted lever at its limit) from what does not turn.
+It is also the drawing the page turns (:func:`_turning`): at the exercise's own position a
+construction may have collapsed (a point already on the line it is swung onto, two lines
+drawn as one), and what is drawn there cannot say how it moves; FAR on it stands apart.
+That drawing is matched against its own drawings a little and FAR further on."""
 
 _LAYERS = {"kennedy": "kennedy", "working": "construction", "compass": "construction",
            "gauge": "construction", "normal": "construction", "construction": "construction"}
@@ -57,8 +63,9 @@ class PageFigures:
     """The figures of ``sol`` (the exercise ``ex`` solved at its first position) that
     number steps, as the page shows them; the mechanism alone if none does.
 
-    Each is drawn at the position, a little on and farther on, by :meth:`jobs` (to be run
-    beside the frames, on every core), and then serialised by :meth:`figures`. ``names``
+    Each is drawn at the position, a little on and :data:`FAR` on, and the drawing FAR on
+    again a little and FAR further on, by :meth:`jobs` (to be run beside the frames, on
+    every core), and then serialised by :meth:`figures`. ``names``
     are the named points of each view the frames send, ``sense`` the way the input turns
     (±1), ``room`` the drawing's room the solution chose its scales for.
     """
@@ -66,12 +73,14 @@ class PageFigures:
     def __init__(self, ex: Exercise, sol: Solution, names: dict[str, list[str]], sense: float,
                  room: tuple[float, float], languages: tuple[str, ...]):
         self.ex, self.languages = ex, languages
-        self.sols = [sol, *(_further(sol, sense * step, room) for step in (NEXT, FAR))]
+        self.sols = [sol, *(_further(sol, sense * step, room)
+                            for step in (NEXT, FAR, FAR + NEXT, 2 * FAR))]
         self.named = [named_points(s, names) if s is not None else None for s in self.sols]
         # What each job draws: a language and a drawing (at the position, a little on,
-        # farther on: that one in the first language only, for it serves them all).
+        # FAR on and a little further; 2·FAR on in the first language only, for it tells
+        # the symbols apart, which are drawn alike in every language).
         self.todo = [(lang, k) for lang in languages for k, s in enumerate(self.sols)
-                     if s is not None and (k < 2 or lang == languages[0])]
+                     if s is not None and (k < 4 or lang == languages[0])]
 
     def jobs(self) -> list[Callable[[], dict[str, Figure]]]:
         """A job for each drawing: it returns the figures by stem."""
@@ -84,19 +93,25 @@ class PageFigures:
         drawn: dict[str, dict[str, list]] = {}
         for (lang, k), figs in zip(self.todo, done):
             for stem, fig in figs.items():
-                drawn.setdefault(stem, {}).setdefault(lang, [None] * 3)[k] = fig
+                drawn.setdefault(stem, {}).setdefault(lang, [None] * 5)[k] = fig
         first = self.languages[0]
         for by_lang in drawn.values():
             for lang in self.languages[1:]:
-                by_lang.setdefault(lang, [None] * 3)[2] = by_lang.get(first, [None] * 3)[2]
+                by_lang.setdefault(lang, [None] * 5)[4] = by_lang.get(first, [None] * 5)[4]
         out = []
         for stem, heading, parts in figure_parts(self.sols[0]):
             by_lang = drawn.get(stem, {})
             if any(by_lang.get(lang, [None])[0] is None for lang in self.languages) or \
                     not any(shown.numbered(panel) for _, panel, shown in parts):
                 continue
-            out.append(_figure(stem, heading, parts, by_lang, self.named, self.languages))
+            out.append(_figure(stem, heading, parts, by_lang, self.named, self.languages,
+                               _angle(self.sols[2])))
         return out or [_bare(self.sols, self.named, self.languages)]
+
+
+def _angle(sol: Solution | None) -> float | None:
+    """The input's angle (rad) ``sol`` is drawn at; None for no solution."""
+    return None if sol is None else sol.exercise.mechanism.drive.angle
 
 
 def _figures_in(ex: Exercise, sol: Solution, lang: str) -> dict[str, Figure]:
@@ -109,7 +124,8 @@ def _figures_in(ex: Exercise, sol: Solution, lang: str) -> dict[str, Figure]:
 
 def named_points(sol: Solution, names: dict[str, list[str]]) -> Named:
     """The named points of each view where ``sol`` draws them: its joints and the instant
-    centres, and its polygons' poles and tips, in the order of ``names``."""
+    centres, its polygons' poles and tips, and the points of its constructions named by
+    their refs, in the order of ``names``."""
     asm = sol.assembly
     space = {n: asm.xy(n) for n in asm.mechanism.point_names}
     try:
@@ -119,14 +135,22 @@ def named_points(sol: Solution, names: dict[str, list[str]]) -> Named:
             space[c.label] = None if p.is_at_infinity else p.xy
     except TarsimError:                      # Kennedy cannot reach them here
         pass
-    out = {"space": [space.get(n) for n in names["space"]]}
+    out = {"space": [space.get(n, _built(asm, n)) for n in names["space"]]}
     for view, poly in (("velocity", sol.velocity_polygon),
                        ("acceleration", sol.acceleration_polygon)):
         if poly is not None:
             at = {n: asm.output(ref).xy for n, ref in poly.tips.items()}
             at["pole"] = asm.output(poly.pole).xy
-            out[view] = [at.get(n) for n in names[view]]
+            out[view] = [at.get(n, _built(asm, n)) for n in names[view]]
     return out
+
+
+def _built(asm, ref: str) -> tuple[float, float] | None:
+    """The point a step of ``asm``'s record made, by its ref (a name the frames send for
+    a point of the exercise's own constructions); None if the record has no such point
+    there, or it is at infinity."""
+    out = asm.output(ref) if ref in asm else None
+    return out.xy if isinstance(out, g.Point) and not out.is_at_infinity else None
 
 
 def _pages(ex: Exercise, sol: Solution) -> list:
@@ -139,21 +163,32 @@ def _pages(ex: Exercise, sol: Solution) -> list:
 
 def _further(sol: Solution, degrees: float, room) -> Solution | None:
     """``sol``'s exercise solved with its input turned ``degrees`` on (or back, where it
-    cannot go on); None where it can go neither way."""
+    cannot go on), as :func:`solved_at`; None where it can go neither way."""
     drive = sol.exercise.mechanism.drive
     for way in (1.0, -1.0):
-        m = sol.exercise.mechanism.with_drive(
-            replace(drive, angle=drive.angle + way * math.radians(degrees)))
-        try:
-            return solve_positions(replace(sol.exercise, mechanism=m, positions=()),
-                                   room=room)[0]
-        except TarsimError:
-            continue
+        out = solved_at(sol, drive.angle + way * math.radians(degrees), room)
+        if out is not None:
+            return out
     return None
 
 
-def _figure(stem: str, heading: str, parts: list, by_lang: dict, named, languages
-            ) -> dict[str, Any]:
+def solved_at(sol: Solution, angle: float, room) -> Solution | None:
+    """``sol``'s exercise solved with its input at ``angle`` (rad), its space diagram and
+    the velocities drawn on it at ``sol``'s scales, so that its drawing and its record
+    are ``sol``'s at another angle; None where it cannot be."""
+    ex, scales = sol.exercise, sol.work.scales
+    m = replace(ex.mechanism, scale=scales.space).with_drive(
+        replace(ex.mechanism.drive, angle=angle))
+    try:
+        return solve_positions(replace(ex, mechanism=m, positions=(),
+                                       velocity_per_cm=ex.velocity_per_cm or scales.velocity),
+                               room=room)[0]
+    except TarsimError:
+        return None
+
+
+def _figure(stem: str, heading: str, parts: list, by_lang: dict, named, languages,
+            angle: float | None) -> dict[str, Any]:
     """One figure: its parts' numbered steps in every language, and its drawing in each."""
     from .solution_files import heading_in
 
@@ -173,7 +208,105 @@ def _figure(stem: str, heading: str, parts: list, by_lang: dict, named, language
                       for n, s in shown.numbered(panel)]})
     return {"stem": stem, "heading": {lang: heading_in(heading, lang) for lang in languages},
             "parts": out_parts,
-            "drawn": {lang: _drawn(figs, named, steps) for lang, figs in by_lang.items()}}
+            "drawn": {lang: _both(figs, named, steps, lang, angle)
+                      for lang, figs in by_lang.items()}}
+
+
+def _both(figs: list[Figure | None], named: list, steps: dict[str, list[int]], lang: str,
+          angle: float | None) -> dict[str, Any]:
+    """A figure at the exercise's position, with its drawing FAR on as ``turning``:
+    ``figs`` and ``named`` are the five drawings in ``lang`` and their named points
+    (:class:`PageFigures`), ``angle`` the input's there (rad)."""
+    out = _drawn(figs[:3], named[:3], steps)
+    turning = _turning(figs[0], figs[2:], named[2:], lang, angle)
+    if turning is not None:
+        out["turning"] = turning
+    return out
+
+
+def _turning(home: Figure, figs: list[Figure | None], named: list, lang: str,
+             angle: float) -> dict[str, Any] | None:
+    """The figure drawn :data:`FAR` on (``figs[0]``, then it a little and FAR further on),
+    as the page shows it while the input turns: moved so that its space diagram stands
+    where ``home`` draws it, each primitive with what it stands on, and the named points
+    it stands on there (``named``: ``named[0]``'s, as a frame sends them), and the input's
+    ``angle`` there. None if it cannot be drawn there."""
+    if figs[0] is None or named[0] is None:
+        return None
+    fig = copy(figs[0])
+    a, b = home.views.get("space"), fig.views.get("space")
+    if a is not None and b is not None and math.isclose(a.scale, b.scale, rel_tol=1e-9):
+        fig.shift(a.origin[0] - b.origin[0], a.origin[1] - b.origin[1])
+    out = _drawn([fig, *figs[1:]], named, {})
+    out["named"] = {view: _flat(points) for view, points in named[0].items()}
+    out["angle"] = angle
+    with speaking(lang):
+        panels = _panels(fig, named[0], out["items"])
+    if panels:
+        out["panels"] = panels
+    return out
+
+
+def _panels(fig: Figure, named, items: list[list]) -> dict[str, list[float]]:
+    """Each polygon panel of ``fig`` (the frame round a velocity or acceleration polygon)
+    as the page redraws it at each frame's scale: ``[x0, y0, width, height, caption]``
+    (paper mm), the frame as drawn and the height of the caption band at its foot. The
+    frame (``fr``) and its caption (``f``: the view whose panel it is; ``sc``: the scale
+    statement, said again at each frame's scale) keep to the panel, which grows or
+    shrinks downward with its polygon; the rest of the panel moves with the polygon or,
+    as the scale bar, is hidden."""
+    out = {}
+    for view, word in (("velocity", "Velocity scale"), ("acceleration", "Acceleration scale")):
+        v, points = fig.views.get(view), (named or {}).get(view)
+        if v is None or not points or points[-1] is None:
+            continue
+        pole = v(points[-1])
+        frames = [(k, _box(it.points)) for k, it in enumerate(fig.items)
+                  if isinstance(it, Path) and it.style == "frame"
+                  and _inside(pole, _box(it.points))]
+        if not frames:
+            continue
+        k, box = min(frames, key=lambda f: (f[1][2] - f[1][0]) * (f[1][3] - f[1][1]))
+        statement = next((j for j, it in enumerate(fig.items) if isinstance(it, Text)
+                          and it.text.startswith(words(word)) and _inside(it.at, box)), None)
+        if statement is None:
+            continue
+        top = min(it.at[1] - it.size for it in fig.items
+                  if isinstance(it, Text) and _inside(it.at, box)
+                  and abs(it.at[1] - fig.items[statement].at[1]) < 1e-6)
+        for j, it in enumerate(fig.items):
+            if not _inside(_points_of(it)[0], box):
+                continue
+            more = dict(items[j][3]) if len(items[j]) > 3 and items[j][3] else {}
+            if j == k:
+                more.update(f=view, fr=1)
+            elif isinstance(it, Text) and abs(it.at[1] - fig.items[statement].at[1]) < 1e-6:
+                more.update(f=view, **({"sc": view} if j == statement else {}))
+            elif "m" in more and more["m"][0] == view:
+                continue
+            else:                         # the scale bar: of the drawing's own scale
+                more.pop("m", None)
+            if j == k or "f" in more:
+                more.pop("m", None)
+            items[j] = items[j][:3] + ([more] if more else [])
+        out[view] = [number(box[0]), number(box[1]), number(box[2] - box[0]),
+                     number(box[3] - box[1]), number(box[3] - top + 5.0)]
+    return out
+
+
+def _box(points) -> tuple[float, float, float, float]:
+    xs, ys = [p[0] for p in points], [p[1] for p in points]
+    return min(xs), min(ys), max(xs), max(ys)
+
+
+def _inside(p: tuple[float, float], box: tuple[float, float, float, float]) -> bool:
+    return box[0] <= p[0] <= box[2] and box[1] <= p[1] <= box[3]
+
+
+def _points_of(item: Path | Circle | Text) -> tuple[tuple[float, float], ...]:
+    if isinstance(item, Path):
+        return item.points
+    return (item.centre,) if isinstance(item, Circle) else (item.at,)
 
 
 def _bare(sols: list[Solution], named, languages) -> dict[str, Any]:
@@ -189,7 +322,7 @@ def _bare(sols: list[Solution], named, languages) -> dict[str, Any]:
     drawn = {}
     for lang in languages:
         with speaking(lang):
-            drawn[lang] = _drawn([draw(s, lang) for s in sols], named, {})
+            drawn[lang] = _both([draw(s, lang) for s in sols], named, {}, lang, _angle(sols[2]))
     return {"stem": "mechanism", "parts": [], "drawn": drawn,
             "heading": {lang: heading_in("The mechanism", lang) for lang in languages}}
 
@@ -207,6 +340,9 @@ def _drawn(figs: list[Figure | None], named: list, steps: dict[str, list[int]]
     more, badge = [], None
     for item, stand in zip(fig.items, stands):
         extra: dict[str, Any] = {}
+        swing = _swing(item, fig, named[0])
+        if swing is not None:
+            extra["a"], stand = swing, None
         tags = sorted({tuple(steps[s]) for s in item.steps if s in steps})
         if tags:
             extra["s"] = [v for tag in tags for v in tag]
@@ -220,6 +356,34 @@ def _drawn(figs: list[Figure | None], named: list, steps: dict[str, list[int]]
         badge = item if isinstance(item, Circle) and item.style == "badge" else None
         more.append(extra or None)
     return figure_data(fig, more)
+
+
+def _swing(item: Path | Circle | Text, fig: Figure, named) -> list | None:
+    """A compass arc from one named point to another about a third, as ``[view, [C, S,
+    E]]`` (their indices in the view's named points): the page draws it again from S to
+    E about C at each frame, the shorter way, as the figure draws an arc through two
+    points. None for any other primitive."""
+    if not (isinstance(item, Path) and item.style == "compass" and len(item.points) > 2):
+        return None
+    for view, points in (named or {}).items():
+        v = fig.views.get(view)
+        if v is None:
+            continue
+        paper = [v(p) if p is not None else None for p in points]
+
+        def at(xy, paper=paper) -> int | None:
+            return next((k for k, p in enumerate(paper)
+                         if p is not None and math.dist(p, xy) <= EXACT), None)
+
+        s, e = at(item.points[0]), at(item.points[-1])
+        if s is None or e is None or paper[s] == paper[e]:
+            continue
+        r = math.dist(paper[s], item.points[1])
+        for c, p in enumerate(paper):
+            if p is not None and all(abs(math.dist(p, q) - math.dist(p, paper[s])) <= EXACT
+                                     for q in (*item.points, paper[e])) and r > 0:
+                return [view, [c, s, e]]
+    return None
 
 
 def _layer(item: Path | Circle | Text, badge: Circle | None) -> str | None:

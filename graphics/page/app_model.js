@@ -36,7 +36,7 @@ const Model = (() => {
     for (const k of ["slider", "contact"]) if (!ex[k]?.length) delete ex[k];
     const inputPoints = new Set(link(m, ex.input?.link)?.points ?? []);
     for (const p of m.nearPoints) {
-      if (!isFrame(m, p) && !inputPoints.has(p) && m.sketch[p] && m.ex.link.some(l => l.points.includes(p))) {
+      if (!isFrame(m, p) && !inputPoints.has(p) && m.sketch[p] && movingPoints(m).includes(p)) {
         (ex.assembly ??= {})[p] = m.sketch[p].map(v => round(v, 2));
       }
     }

@@ -19,7 +19,13 @@ document.querySelectorAll("[data-layer]").forEach(box => { S.layers[box.dataset.
 
 // ----- the chosen figure and its steps -----------------------------------------------------
 function figure() { return D.figures[S.fig]; }
-function drawn() { const f = figure(); return f.drawn[S.lang] || f.drawn.en; }
+/* The drawing shown: the figure at the exercise's position, or, while the input turns
+   (any frame but the first), the same figure drawn farther on (its ``turning``), which
+   stands apart where a construction collapses at the exercise's own position. */
+function drawn() {
+  const f = figure(), d = f.drawn[S.lang] || f.drawn.en;
+  return S.frame !== 0 && d.turning ? d.turning : d;
+}
 
 /* The numbered steps, in the order steps.md lists them: {part, n, said}. */
 function numbered() {
@@ -96,10 +102,11 @@ function build() {
   S.items = d.items.map((item, k) => {
     const [kind, , g, more = {}] = item, el = els[k];
     const at = kind === "t" ? more.at : kind === "c" ? g.slice(0, 2) : g;
-    return {el, kind, g, tags: more.s, move: more.m, at,
+    return {el, kind, g, tags: more.s, move: more.m, at, arc: more.a, fixed: more.f, sc: more.sc,
+            frame: more.fr,
             base: kind === "p" || kind === "z" ? el.getAttribute("d") : null};
   });
-  S.shown = {fig: S.fig, lang: S.lang};
+  S.shown = {fig: S.fig, lang: S.lang, turning: S.frame !== 0};
   if (!S.boxes[S.fig]) {             // the drawing, a little white round it
     const [x0, y0, x1, y1] = d.box, m = 0.03 * Math.max(x1 - x0, y1 - y0);
     S.boxes[S.fig] = [x0 - m, y0 - m, x1 - x0 + 2 * m, y1 - y0 + 2 * m];
@@ -107,35 +114,105 @@ function build() {
 }
 
 // ----- turning: each primitive moved with the named points it stands on ----------------------
+/* A frame's named points of a view on the paper of the drawing shown: a polygon the
+   drawing turns with its panel at the frame's own scale (the figure's ``fit``, chosen
+   by tarsim for that frame), its middle at the middle of its panel above the caption. */
 function paperPoints(frame, view) {
-  const v = drawn().views[view], xy = frame.at && frame.at[view];
+  const d = drawn(), v = d.views[view], xy = frame.at && frame.at[view];
   if (!v || !xy) return null;
+  let [s, ox, oy] = v;
+  const fit = frameFit(frame, view);
+  if (fit) {
+    const [x0, y0, , , caption] = d.panels[view];
+    s = fit[0]; ox = x0 + fit[4] / 2 - s * fit[1]; oy = y0 + (fit[5] - caption) / 2 + s * fit[2];
+  }
+  return onSheet(xy, [s, ox, oy]);
+}
+
+/* Where the drawing shown put its own named points (the first frame's, for a drawing at
+   the exercise's position). */
+function ownPoints(view) {
+  const d = drawn(), v = d.views[view], xy = d.named ? d.named[view] : D.frames[0].at[view];
+  return v && xy ? onSheet(xy, v) : null;
+}
+
+function onSheet(xy, [s, ox, oy]) {
   const out = [];
   for (let i = 0; i < xy.length; i += 2)
-    out.push(xy[i] === null ? null : [v[1] + v[0] * xy[i], v[2] - v[0] * xy[i + 1]]);
+    out.push(xy[i] === null ? null : [ox + s * xy[i], oy - s * xy[i + 1]]);
+  return out;
+}
+
+/* The frame's scale of a polygon panel of the turning drawing: [mm a world unit, the
+   world point at the polygon's middle, its statement's index, the panel's width and
+   height]; null if it has none. */
+function frameFit(frame, view) {
+  const d = drawn(), fit = figure().fit;
+  if (!fit || !fit.at[view] || !d.panels || !d.panels[view] || d !== (figure().drawn[S.lang] || figure().drawn.en).turning) return null;
+  const k = frame === D.frames[S.frame] ? S.frame : D.frames.indexOf(frame);
+  const out = fit.at[view].slice(6 * k, 6 * k + 6);
+  return out[0] === null ? null : out;
+}
+
+/* A polygon panel's frame and caption at the frame's scale: the frame grown or shrunk
+   round the polygon, the caption at its foot, the scale statement said anew. */
+function restate(it, frame) {
+  const fit = frameFit(frame, it.fixed);
+  if (!fit) return;
+  const [x0, y0, , h0] = drawn().panels[it.fixed];
+  if (it.frame) {
+    const [x1, y1] = [x0 + fit[4], y0 + fit[5]];
+    it.el.setAttribute("d", `M${num(x0)},${num(y0)} L${num(x1)},${num(y0)} L${num(x1)},${num(y1)} L${num(x0)},${num(y1)} Z`);
+    return;
+  }
+  it.el.setAttribute("transform", `translate(0,${num(fit[5] - h0)})`);
+  const text = it.el.querySelector("text");
+  if (!it.sc || !text) return;
+  const said = figure().fit.said[it.sc][fit[3]];
+  text.textContent = said[S.lang] || said.en;
+  it.el.querySelectorAll("text").forEach((t, i) => { if (i) t.remove(); });
+}
+
+/* An arc about C from S to E, the shorter way, in n chords (as the figure draws an arc
+   swung from one point to another). */
+function swing(C, S, E, n) {
+  if (!C || !S || !E) return null;
+  const r = Math.hypot(S[0] - C[0], S[1] - C[1]), a = Math.atan2(S[1] - C[1], S[0] - C[0]);
+  let t = Math.atan2(E[1] - C[1], E[0] - C[0]) - a;
+  t = Math.atan2(Math.sin(t), Math.cos(t));
+  const out = [];
+  for (let i = 0; i <= n; i++) out.push(C[0] + r * Math.cos(a + t * i / n), C[1] + r * Math.sin(a + t * i / n));
   return out;
 }
 
 function moveTo(frame) {
   const here = S.frame === 0, cache = {}, start = {};
   // A figure none of whose primitives moves stands as it is, dimmed.
-  const still = !here && frame.at && !S.items.some(it => it.move);
+  const still = !here && frame.at && !S.items.some(it => it.move || it.arc);
   sheet().classList.toggle("away", still);
   if (still) { S.items.forEach(restore); return; }
-  const pts = (f, view, memo) => (view in memo ? memo[view] : (memo[view] = paperPoints(f, view)));
+  const now = view => (view in cache ? cache[view] : (cache[view] = paperPoints(frame, view)));
+  const own = view => (view in start ? start[view] : (start[view] = ownPoints(view)));
   for (const it of S.items) {
     it.el.classList.remove("still", "lost");
     if (here) { restore(it); continue; }
+    if (it.fixed && frame.at) { restore(it); restate(it, frame); continue; }
+    if (it.arc && frame.at) {
+      const [view, [c, s, e]] = it.arc, at = now(view), xy = at && swing(at[c], at[s], at[e], it.g.length / 2 - 1);
+      if (xy) place(it, xy); else it.el.classList.add("lost");
+      continue;
+    }
     if (!it.move || !frame.at) { it.el.classList.add(frame.at ? "still" : "lost"); continue; }
-    const [view, b] = it.move, now = pts(frame, view, cache), was = pts(D.frames[0], view, start);
-    const moved = now && was && carry(it.at, b, now, was);
+    const [view, b] = it.move, was = own(view);
+    const moved = now(view) && was && carry(it.at, b, now(view), was);
     if (!moved) { it.el.classList.add("lost"); continue; }
     place(it, moved);
   }
 }
 
-/* The points ``at`` (x, y in turn) carried from the first frame's named points ``was`` to
-   ``now``: each by its [P, Q, R]; null if one of them is missing. */
+/* The points ``at`` (x, y in turn) carried from the named points ``was`` the drawing
+   stands on to the frame's ``now``: each by its [P, Q, R]; null if one of them is
+   missing. */
 function carry(at, b, now, was) {
   const out = [];
   for (let i = 0; i < at.length; i += 2) {
@@ -172,7 +249,8 @@ function sheet() { return document.querySelector("#sheet svg"); }
 
 function draw() {
   const t0 = performance.now();
-  if (!S.shown || S.shown.fig !== S.fig || S.shown.lang !== S.lang) build();
+  if (!S.shown || S.shown.fig !== S.fig || S.shown.lang !== S.lang
+      || S.shown.turning !== (S.frame !== 0)) build();
   const svg = sheet(), f = D.frames[S.frame], box = S.boxes[S.fig];
   svg.setAttribute("viewBox", box.map(num).join(" "));
   for (const layer of Object.keys(S.layers)) svg.classList.toggle(`hide-${layer}`, !S.layers[layer]);
