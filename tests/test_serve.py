@@ -282,3 +282,20 @@ def test_a_warm_app_lists_the_bundled_exercises_as_it_starts(folder):
                 if t.name == "tarsim-warm-up":
                     t.join(timeout=120)
             assert served._bundled.cache_info().currsize == listed
+
+
+def test_figures_named_are_drawn_alone_with_their_steps(client, tmp_path):
+    out = _cli_solve(tmp_path, "four-bar")
+    got = client.post("/api/solve", json={"toml": FOUR_BAR, "figures": ["V_B-components"]}).json()
+    assert [f["name"] for f in got["figures"]] == ["V_B-components"]
+    assert got["figures"][0]["svg"] == (out / "V_B-components.svg").read_text(encoding="utf-8")
+    assert got["figure_names"] == ["centres", "circle-diagram", "V_B-radius-rotation",
+                                   "V_B-parallel-line", "V_B-components"]
+    # its steps alone, numbered as steps.md numbers them; the results whole
+    assert "<h2>V_B by components (<code>V_B-components.svg</code>)</h2>" in got["steps"]
+    assert "Instant centres" not in got["steps"]
+    whole = client.post("/api/solve", json={"toml": FOUR_BAR}).json()
+    assert got["results"] == whole["results"] and got["table"] == whole["table"]
+    assert whole["figure_names"] == [f["name"] for f in whole["figures"]]
+    r = client.post("/api/solve", json={"toml": FOUR_BAR, "figures": [1]})
+    assert r.status_code == 400 and '"figures"' in r.json()["error"]

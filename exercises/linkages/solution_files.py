@@ -95,6 +95,9 @@ class WorkedSolution:
     exercise: Exercise
     overall: Overall
     positions: list[Solution]
+    only: frozenset[str] | None = None
+    """The stems of the figures to draw (None: every one): a page showing one figure asks
+    for that one alone as the input turns, and steps.md then narrates it alone."""
 
     @cached_property
     def pages(self) -> list[SolutionFigure]:
@@ -102,14 +105,22 @@ class WorkedSolution:
         stems ending in the position's slug when there are several: ``worked-t-2.34s``)."""
         return self._drawn(pdf=False)
 
-    def _drawn(self, *, pdf: bool) -> list[SolutionFigure]:
-        """The figures drawn, each written as SVG and (with ``pdf``) converted to PDF by the
-        worker that drew it: a figure's whole making in one job, shared out over the cores
-        at once."""
+    def stems(self) -> list[str]:
+        """Every figure's stem, in order, whether or not it is drawn (:attr:`only`)."""
+        return [s.stem for s in self._sketches()]
+
+    def _sketches(self) -> list[_Sketch]:
         sketches = _overall_figures(self.exercise, self.overall)
         for sol in self.positions:
             suffix = f"-{sol.position.slug}" if len(self.positions) > 1 else ""
             sketches += _figures(sol, suffix)
+        return sketches
+
+    def _drawn(self, *, pdf: bool) -> list[SolutionFigure]:
+        """The figures drawn, each written as SVG and (with ``pdf``) converted to PDF by the
+        worker that drew it: a figure's whole making in one job, shared out over the cores
+        at once."""
+        sketches = [s for s in self._sketches() if self.only is None or s.stem in self.only]
         lang = spoken()       # each worker draws in the language the solution is asked in
         drawn = draw_each([partial(_drawn_in, lang, s.draw, pdf) for s in sketches],
                           [s.weight for s in sketches])

@@ -3,6 +3,7 @@ each made as ``tarsim solve`` makes it."""
 
 from __future__ import annotations
 
+from dataclasses import replace
 from pathlib import PurePosixPath
 
 from tarsim.constructions.narration import speaking
@@ -30,14 +31,17 @@ def download_file(asked: Asked, what: str, figure: object = None) -> tuple[bytes
     TarsimError
         As ``tarsim solve`` raises it for the file.
     """
+    if what != "steps" and isinstance(figure, str):
+        asked = replace(asked, figures=(figure,))          # that figure alone is drawn
     lang, ex, solved, _ = solved_in(asked)
     with speaking(lang):
         if what == "steps":
             return solved.steps().encode("utf-8"), f"{PurePosixPath(asked.name).stem}-steps.md"
-        drawn = {stem: (svg, fig) for stem, _, svg, fig in figures(solved)}
+        drawn = {stem: (svg, fig) for stem, _, svg, fig in figures(solved, asked.figures)}
         if figure not in drawn:
+            names = solved.stems() if hasattr(solved, "stems") else [f[0] for f in figures(solved)]
             raise Refused(f"no figure '{str(figure):.60}' in this solution; it draws "
-                          f"{', '.join(drawn) or 'none'}", 404)
+                          f"{', '.join(names) or 'none'}", 404)
         svg, fig = drawn[figure]
         if what == "svg":
             return svg.encode("utf-8"), f"{figure}.svg"

@@ -41,7 +41,8 @@ class Asked:
     lang: str | None = None
     angle: float | None = None
     """The input's angle in degrees, measured as the file's [input] angle is (``--angle``)."""
-    figures: bool = True
+    figures: bool | tuple[str, ...] = True
+    """Draw the figures (and steps): all of them, none, or those named (their stems)."""
     whole: bool = True
     """False leaves out what is asked of the mechanism as a whole (DOF, Grashof class, time
     ratio, stroke), where something is asked at the position too: what turning the input
@@ -82,11 +83,18 @@ class Asked:
         name = name or (f"{key}.toml" if key else UNSAVED)
         flags = {k: body.get(k, d) for k, d in (("figures", True), ("whole", True),
                                                 ("allow_undercut", False))}
+        if isinstance(flags["figures"], list) and all(isinstance(f, str)
+                                                      for f in flags["figures"]):
+            flags["figures"] = tuple(flags["figures"])
         for k, v in flags.items():
-            if not isinstance(v, bool):
-                raise Refused(f'"{k}" is true or false; got {v!r:.40}', 400)
+            if not isinstance(v, bool) and not (k == "figures" and isinstance(v, tuple)):
+                raise Refused(f'"{k}" is true or false{_NAMES if k == "figures" else ""}; '
+                              f'got {v!r:.40}', 400)
         return cls(toml, name, lang, None if angle is None else float(angle), paper=paper,
                    **flags)
+
+
+_NAMES = ', or the names of the figures to draw (["worked"])'
 
 
 def read_exercise(text: str, name: str) -> tuple[Any, Chapter]:
@@ -125,7 +133,10 @@ def solved_in(asked: Asked) -> tuple[str, Any, Any, Chapter]:
         ex = chapter.set_up(loaded.named_in(spoken()), paper=asked.paper, angle=angle)
         if not asked.whole and getattr(ex, "position_asks", ()):    # (none: all are kept)
             ex = replace(ex, asks=ex.position_asks)
-        return lang, ex, chapter.solve(ex, allow_undercut=asked.allow_undercut), chapter
+        solved = chapter.solve(ex, allow_undercut=asked.allow_undercut)
+        if isinstance(asked.figures, tuple) and hasattr(solved, "only"):
+            solved = replace(solved, only=frozenset(asked.figures))    # the others not drawn
+        return lang, ex, solved, chapter
 
 
 def answer(asked: Asked) -> dict[str, Any]:
@@ -142,17 +153,22 @@ def answer(asked: Asked) -> dict[str, Any]:
                                "chapter": chapter.key, **readout(ex, solved),
                                "results": solved.results, "table": table(ex, solved)}
         if asked.figures:
+            drawn = figures(solved, asked.figures)
             out["steps"] = steps_html(solved.steps())
             out["figures"] = [{"name": stem, "title": title, "svg": svg}
-                              for stem, title, svg, _ in figures(solved)]
+                              for stem, title, svg, _ in drawn]
         else:
             out["steps"], out["figures"] = None, []
+        # every figure the solution has, drawn or not (another chapter's: those drawn)
+        out["figure_names"] = (solved.stems() if hasattr(solved, "stems")
+                               else [f["name"] for f in out["figures"]])
     return out
 
 
-def figures(solved) -> list[tuple[str, str, str, Any]]:
-    """Each figure of ``solved`` as ``solve`` writes it: its stem, its heading in the
-    language spoken, its SVG, and the figure (with its sheets, for a PDF or PNG)."""
+def figures(solved, only: bool | tuple[str, ...] = True) -> list[tuple[str, str, str, Any]]:
+    """Each figure of ``solved`` as ``solve`` writes it (those ``only`` names, if it names
+    some): its stem, its heading in the language spoken, its SVG, and the figure (with its
+    sheets, for a PDF or PNG). A linkage's solution draws only those it is asked for."""
     if hasattr(solved, "pages"):                                 # a linkage's
         from ..linkages.worked_steps import heading_in
 
@@ -160,7 +176,8 @@ def figures(solved) -> list[tuple[str, str, str, Any]]:
                 for f in solved.pages]
     from tarsim.graphics.svg import to_svg
 
-    return [(stem, fig.title or stem, to_svg(fig), fig) for stem, fig in solved.sheets().items()]
+    return [(stem, fig.title or stem, to_svg(fig), fig) for stem, fig in solved.sheets().items()
+            if not isinstance(only, tuple) or stem in only]
 
 
 def readout(ex, solved) -> dict[str, Any]:
