@@ -361,6 +361,13 @@ def test_the_page_speaks_persian_right_to_left(page):
     assert page.inner_text('#tools [data-tool="ground"]') == "لولای زمین"
     assert re.search("[\u0600-\u06ff]", page.inner_text("#steps"))     # the server's Persian
     assert re.search("[\u0600-\u06ff]", page.inner_text("#figure"))
+    # The figure sets each run's direction itself, as tarsim solve writes it: the page's
+    # own must not reach its text (its caption's runs would fall on one another).
+    texts = page.evaluate("[...document.querySelectorAll('#figure svg text')].map(t => "
+                          "[getComputedStyle(t).direction, "
+                          "t.closest('[direction]')?.getAttribute('direction') ?? 'ltr'])")
+    assert texts and all(got == asked for got, asked in texts)
+    assert {asked for _, asked in texts} == {"ltr", "rtl"}
     assert readout(page)["ω3"] == pytest.approx(-2.578, abs=5e-4)
     missing = page.evaluate("Object.keys(WORDS.en).filter(k => !(k in WORDS.fa))")
     assert missing == []

@@ -146,7 +146,10 @@ const Editor = (() => {
         if (p === pending) return;
         const l = Model.addLink(m, pending, p);
         pending = null;
-        return app.select({ link: l.number }, true);
+        app.select({ link: l.number }, true);
+        const len = document.getElementById("l-len-0");     // the length, ready to be typed
+        len?.focus(); len?.select();
+        return;
       }
       case "block":
         if (moving) { Model.addBlock(m, h.point); return app.select({ slider: m.ex.slider.length - 1 }, true); }

@@ -300,6 +300,14 @@ const App = (() => {
     $("reset-angle").onclick = () => { app.angle = null; showAngle(); schedule(0); };
     document.querySelectorAll("#downloads [data-what]").forEach(b => b.onclick = () => download(b.dataset.what));
     $("save").onclick = save;
+    $("figure").onclick = e => {            // a closer look at the figure, and back
+      const f = $("figure"), r = f.getBoundingClientRect();
+      const at = [(e.clientX - r.left) / r.width, (e.clientY - r.top) / r.height];
+      f.classList.toggle("zoomed");
+      if (f.classList.contains("zoomed")) {
+        f.scrollLeft = at[0] * f.scrollWidth - r.width / 2; f.scrollTop = at[1] * f.scrollHeight - f.clientHeight / 2;
+      }
+    };
     const q = new URLSearchParams(location.search);
     if (q.get("id")) open("id:" + q.get("id")); else if (q.get("file")) open("file:" + q.get("file")); else fresh();
   }
