@@ -10,6 +10,7 @@ when it is fixed. The README's screenshot of the app is the one taken here.
 from __future__ import annotations
 
 import json
+import math
 import os
 import re
 import subprocess
@@ -274,6 +275,28 @@ def test_turning_the_input_solves_again_at_each_angle(page):
     assert len(set(seen.values())) == 3            # each angle its own ω3
     # The file keeps its own angle: the slider asks the server at another.
     assert tomllib.loads(page.evaluate("tarsimApp.toml()"))["input"]["angle"] == 60
+
+    # The crank's pin dragged round its pivot turns the input as the slider does.
+    tool(page, "select")
+    start = page.evaluate("xy => tarsimApp.pageXY(xy)", positions(page)["A"])
+    to = page.evaluate("xy => tarsimApp.pageXY(xy)", [100 * math.cos(math.radians(120)),
+                                                      100 * math.sin(math.radians(120))])
+    page.mouse.move(*start)
+    page.mouse.down()
+    page.mouse.move(*to, steps=5)
+    page.mouse.up()
+    assert settled(page) == "solved"
+    assert page.input_value("#angle") == "120"
+    assert readout(page)["ω3"] == seen[120]
+    assert positions(page)["A"] == pytest.approx([-50, 86.6025], abs=1e-4)   # where solve puts it
+
+    # The play button turns it on its own, 3° a step, until pressed again.
+    page.click("#play")
+    page.wait_for_timeout(700)
+    page.click("#play")
+    assert settled(page) == "solved"
+    turned = float(page.input_value("#angle"))
+    assert turned > 120 and (turned - 120) % 3 == 0
 
 
 def test_the_page_reads_and_writes_every_bundled_file_as_python_reads_it(page):

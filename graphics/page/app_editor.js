@@ -175,6 +175,14 @@ const Editor = (() => {
       view.cx = cx - (e.clientX - x0) / view.s; view.cy = cy + (e.clientY - y0) / view.s; draw(); return;
     }
     const m = app.model, xy = snap(world(e)).map(v => Model.round(v, 3));
+    const crank = Model.link(m, m.ex.input?.link);
+    if (app.solution && !app.error && !m.ex.input.from && crank?.points[1] === drag.point &&
+        Model.isFrame(m, crank.points[0])) {
+      // The input's moving end, once solved, turns the input as the slider does.
+      const [px, py] = m.ex.frame[crank.points[0]], [x, y] = world(e);
+      app.turn(Math.round(Math.atan2(y - py, x - px) * 180 / Math.PI));
+      return;
+    }
     if (Model.isFrame(m, drag.point)) m.ex.frame[drag.point] = xy;
     m.sketch[drag.point] = xy; drag.moved = true;
     app.dragging(drag.point); draw();

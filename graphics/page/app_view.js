@@ -33,6 +33,8 @@ const App = (() => {
   app.dragging = () => { app.shown = null; };
   app.dropShown = () => { app.shown = null; };
   app.setAngle = x => { app.angle = x; showAngle(); };
+  /** Turns the input to ``deg`` (the slider, the play button, the crank dragged). */
+  app.turn = deg => { app.angle = deg; showAngle(); schedule(30, true); };
 
   function fileAngle() { return Number(app.model.ex.input?.angle ?? 0); }
   function showAngle() {
@@ -284,6 +286,7 @@ const App = (() => {
     document.title = t("app");
     document.querySelectorAll("[data-w]").forEach(e => { e.textContent = t(e.dataset.w); });
     Editor.toolbar(t);
+    $("play").title = t("play");
     const first = $("open").options[0];
     if (first) first.textContent = `${t("open")}…`; else $("open").innerHTML = `<option value="">${esc(t("open"))}…</option>`;
     exercises();
@@ -296,7 +299,12 @@ const App = (() => {
     $("new").onclick = fresh;
     $("open").onchange = e => { if (e.target.value) open(e.target.value); e.target.value = ""; };
     $("name").onchange = e => { if (!app.raw) { app.model.ex.name = e.target.value; app.changed(); } };
-    $("angle").oninput = e => { app.angle = Number(e.target.value); $("angle-out").value = `${sig(app.angle, 5)}°`; schedule(30, true); };
+    $("angle").oninput = e => app.turn(Number(e.target.value));
+    $("play").onclick = () => {            // the input turning on its own, 3° a step
+      if (app.playing) { clearInterval(app.playing); app.playing = null; }
+      else app.playing = setInterval(() => app.turn(((app.angle ?? fileAngle()) + 3 + 180) % 360 - 180), 150);
+      $("play").textContent = app.playing ? "⏸" : "▶";
+    };
     $("reset-angle").onclick = () => { app.angle = null; showAngle(); schedule(0); };
     document.querySelectorAll("#downloads [data-what]").forEach(b => b.onclick = () => download(b.dataset.what));
     $("save").onclick = save;
