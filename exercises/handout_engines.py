@@ -27,16 +27,21 @@ _ASKED = (
      "the crank angle at which each unbalanced one is greatest"),
     (("primary_resultant", "primary_max", "primary_min"),
      "the resultant primary force, its greatest and least"),
-    (("secondary_resultant", "secondary_max", "secondary_min", "secondary_max_at",
-      "secondary_min_at"), "the resultant secondary force, its greatest and least, and where"),
+    (("secondary_resultant", "secondary_min", "secondary_max_at", "secondary_min_at"),
+     "the resultant secondary force, its greatest and least, and where"),
     (("unbalanced_along", "unbalanced_across", "unbalanced_resultant"),
      "the unbalanced force along and across the line of stroke, and their resultant"),
+    (("secondary_max",), "the greatest secondary force"),
     (("unbalanced_max", "unbalanced_max_at"),
      "the greatest unbalanced force, and where"),
     (("balance_mr", "balance_mass", "balance_radius"), "the balance mass"),
 )
 """How the sheet asks an engine's results (by their keys in results.json), several keys
-one line."""
+one line, each key by the first line that holds it."""
+
+_ALSO = {"secondary_resultant": {"secondary_max"}}
+"""What a line asks besides its own keys: a V's or a radial's resultant secondary force
+with its greatest (a single cylinder's greatest is asked alone)."""
 
 
 def engine_sheets(ex, sheet: tuple[float, float]) -> list[Figure]:
@@ -175,7 +180,11 @@ def _asked_engine(sol) -> list[Line]:
     """What the solve finds, each group of results asked once in the course's words."""
     keys = set(sol.results.get("quantities", {}))
     out = [Line(words("Find"), heading=True)]
-    out += [Line(words(said)) for group, said in _ASKED if keys.intersection(group)]
+    covered: set[str] = set()
+    for group, said in _ASKED:            # a key asked once, by the first line that holds it
+        if keys.intersection(group) - covered:
+            out.append(Line(words(said)))
+            covered |= set(group) | _ALSO.get(group[0], set())
     e = sol.exercise.engine
     if e.firing_order:
         out.insert(1, Line(words("the cranks' angles from the firing order")))

@@ -56,7 +56,8 @@ def open_rotor_sheets(ex, sheet: tuple[float, float]) -> list[Figure]:
             panels.append(draw_side_view(planes, words("{name}: side view", name=name), unit,
                                          metre))
     # the statement and the table under the end view: the views and they fill one sheet
-    panels[1:1] = [draw_statement(_given_parts(ex, unit, metre) + _asked_parts(rotor)),
+    panels[1:1] = [draw_statement(_given_parts(ex, unit, metre)
+                                  + _asked_parts(rotor, engine=ex.engine is not None)),
                    _parts_table(ex, unit, metre)]
     for which in closure.order:
         tips = closure.force if which == "force" else closure.couple
@@ -102,11 +103,12 @@ def _given_parts(ex, unit: str, metre: float) -> list[Line]:
     return out
 
 
-def _asked_parts(rotor) -> list[Line]:
+def _asked_parts(rotor, *, engine: bool = False) -> list[Line]:
     """Each mass's unknowns, for the rotor to be in complete balance (static alone where
-    its masses are in one plane)."""
+    its masses are in one plane; an engine's cylinders, in primary balance)."""
     out = [Line(words("Find"), heading=True),
-           Line(words("for the rotor in static balance") if rotor.static
+           Line(words("for the engine in primary balance (force and couple)") if engine
+                else words("for the rotor in static balance") if rotor.static
                 else words("for the rotor in complete balance (force and couple)"))]
     for p in rotor.parts:
         unknown = p.unknowns()

@@ -15,8 +15,8 @@ from .scales import draw_caption
 
 __all__ = ["draw_engine_layout"]
 
-_CRANK = 15.0     # the crank's length in the layout, mm: it gives directions only
-_LINE = 34.0      # a line of stroke's length from O, mm
+_CRANK = 22.0     # the crank's length in the layout, mm: it gives directions only
+_LINE = 48.0      # a line of stroke's length from O, mm
 
 
 def draw_engine_layout(title: str, lines: Sequence[tuple[str, float]],

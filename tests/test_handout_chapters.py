@@ -162,3 +162,16 @@ def test_every_bundled_exercise_has_a_persian_sheet_within_its_paper():
         for s in made.sheets:
             assert (s.width, s.height) in ((210.0, 297.0), (297.0, 210.0)), (name, s.width,
                                                                               s.height)
+
+
+def test_each_result_of_an_engine_is_asked_once():
+    """A single cylinder's greatest secondary force (666.2 N at 1800 rpm) is asked as that,
+    not as a V's resultant; primary-balance-unknowns is asked its engine's primary
+    balance, not a rotor's."""
+    _, sheet = _sheet("single-cylinder", "en")
+    texts = _texts(to_svg(sheet.figure))
+    assert "the greatest secondary force" in texts
+    assert not [t for t in texts if t.startswith("the resultant secondary")]
+    _, sheet = _sheet("primary-balance-unknowns", "en")
+    texts = _texts(to_svg(sheet.figure))
+    assert "for the engine in primary balance (force and couple)" in texts

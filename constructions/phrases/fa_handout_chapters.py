@@ -132,6 +132,8 @@ WORDS: dict[str, str] = {
     "the angle of {name} between {lo} and {hi}, counter-clockwise":
         "زاویهٔ {name} میان {lo} و {hi}، پادساعتگرد",
     "for the rotor in static balance": "برای بالانس ایستای روتور",
+    "for the engine in primary balance (force and couple)":
+        "برای بالانس اولیهٔ موتور (نیرو و کوپل)",
     "for the rotor in complete balance (force and couple)":
         "برای بالانس کامل روتور (نیرو و کوپل)",
     "mass {name}: {what}": "جرم {name}: {what}",
@@ -184,5 +186,6 @@ WORDS: dict[str, str] = {
         "نیروی بالانس‌نشده در راستای خط کورس و عمود بر آن، و برایند آن‌ها",
     "the greatest unbalanced force, and where": "بیشترین نیروی بالانس‌نشده، و جای آن",
     "the balance mass": "جرم بالانس",
+    "the greatest secondary force": "بیشترین نیروی ثانویه",
 }
 """These sheets' words as Persian says them."""
