@@ -12,7 +12,7 @@ and that chapter reads the tables already parsed.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from functools import cache
 from importlib import import_module
 from pathlib import Path
@@ -57,8 +57,9 @@ class Chapter:
 
     def set_up(self, exercise: Any, *, paper: str, angle: float | None = None) -> Any:
         """The exercise as a command asks it: set on ``paper``, its input at ``angle`` (in
-        the file's angle unit) if given. A chapter without an input angle ignores both."""
-        return exercise
+        the file's angle unit) if given. A chapter without an input angle ignores
+        ``angle``; its figures are drawn for ``paper``."""
+        return replace(exercise, paper=paper)
 
     def solve(self, exercise: Any, *, allow_undercut: bool = False) -> Any:
         """The solution, with ``write(folder, pdf=…)``, ``lines()`` for the terminal and

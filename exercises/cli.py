@@ -72,10 +72,10 @@ def draw(source, output, angle, paper, lang, digits):
       tarsim draw four-bar -o four-bar-fa.pdf --lang fa
     """
     from tarsim.graphics.export import write_figure
-    from tarsim.graphics.paper import on_sheet, paper as sheet
+    from tarsim.graphics.paper import drawn_on, on_sheet, paper as sheet
 
     loaded, chapter = common.loaded(source, angle)
-    with speaking(common.language(lang, digits, loaded)):
+    with speaking(common.language(lang, digits, loaded)), drawn_on(sheet(paper)):
         ex = chapter.set_up(loaded.named_in(spoken()), paper=paper, angle=common.finite(angle))
         fig = on_sheet(chapter.drawing(ex), sheet(paper))
         click.echo(f"wrote {write_figure(fig, output)}")
@@ -181,6 +181,7 @@ def solve(source, out_dir, angle, pdf, formats, dpi, paper, allow_undercut, hide
       tarsim solve my-exercise.toml --angle 120 --no-pdf
       tarsim solve four-bar --format png --dpi 300   # SVG and PNG, no PDF
       tarsim solve whitworth --paper A3          # figures on A3 sheets (A4 by default)
+      tarsim solve eccentric-flat-face --paper A3   # a cam's figures drawn for A3
       tarsim solve planetary-q1                  # the notes' planetary Q1
       tarsim solve eccentric-flat-face           # the notes' §3.20 cam
       tarsim solve notes-example-1               # 001 ch. 7 Example 1, corrected

@@ -103,9 +103,11 @@ def finite(angle: float | None) -> float | None:
 source = click.argument("source", metavar="FILE")
 paper = click.option("--paper", type=click.Choice(["A4", "A3", "letter"], case_sensitive=False),
                       default="A4", show_default=True,
-                      help="Sheet to set each figure on; its scales are chosen to fill it. A "
-                           "figure drawn at a scale the exercise states keeps it, on a bigger "
-                           "page if it must.")
+                      help="Sheet to set each figure on, in every chapter; its scales are "
+                           "chosen to fill it (the finest of 1, 2, 2.5, 4, 5 × 10ᵏ it holds) "
+                           "and a plot is drawn as wide as it. A figure drawn at a scale the "
+                           "exercise states keeps it, on a bigger page if it must. Example: "
+                           "--paper A3.")
 
 
 def speaks(fn):

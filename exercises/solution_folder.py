@@ -21,7 +21,7 @@ from tarsim.constructions.narration import spoken
 from tarsim.graphics.export import (RenderError, cairo_missing, figure_pdf, figure_pngs,
                                     write_folder)
 from tarsim.graphics.figure import Figure
-from tarsim.graphics.paper import on_sheet, paper
+from tarsim.graphics.paper import drawn_on, on_sheet, paper
 from tarsim.graphics.svg import to_svg
 from tarsim.graphics.workers import draw_each
 
@@ -106,16 +106,20 @@ class ChapterFiles:
         return results_document(self.exercise.id, self.checked)
 
     def sheets(self) -> dict[str, Figure]:
-        """Each figure by its file stem, centred on a sheet of the exercise's paper (A4
-        unless it says), upright or turned, as its SVG and PDF print it: a page a printer
-        takes, the figure at its own size."""
+        """Each figure by its file stem, drawn for a sheet of the exercise's paper (A4
+        unless it is set on another: ``--paper``) at the finest of its scales the sheet
+        holds (:func:`~tarsim.graphics.fitting.to_sheet`) and centred on it, upright or
+        turned, as its SVG and PDF print it: a page a printer takes."""
         sheet = paper(getattr(self.exercise, "paper", "A4"))
+        with drawn_on(sheet):
+            figures = self.figures
         return {stem: fig if fig.sheets else on_sheet(fig, sheet)
-                for stem, fig in self.figures.items()}
+                for stem, fig in figures.items()}
 
-    def files(self) -> dict[str, str]:
-        """Every file as text, by name."""
-        files = {f"{stem}.svg": to_svg(fig) for stem, fig in self.sheets().items()}
+    def files(self, sheets: Mapping[str, Figure] | None = None) -> dict[str, str]:
+        """Every file as text, by name (the figures' from ``sheets``, if drawn already)."""
+        sheets = self.sheets() if sheets is None else sheets
+        files = {f"{stem}.svg": to_svg(fig) for stem, fig in sheets.items()}
         files["steps.md"] = self.steps()
         files["results.json"] = results_text(self.results)
         return files
@@ -129,5 +133,6 @@ class ChapterFiles:
               png_dpi: float | None = None) -> list[Path]:
         """Write the files into ``folder`` (with a PDF of each figure when ``pdf``, a PNG of
         each at ``png_dpi``), all or nothing."""
-        return write_solution(self.files(), folder, pdf=pdf, png_dpi=png_dpi,
-                              figures={f"{stem}.pdf": fig for stem, fig in self.sheets().items()})
+        sheets = self.sheets()
+        return write_solution(self.files(sheets), folder, pdf=pdf, png_dpi=png_dpi,
+                              figures={f"{stem}.pdf": fig for stem, fig in sheets.items()})

@@ -31,11 +31,14 @@ from collections.abc import Callable
 from tarsim.constructions.scales import nice
 
 from .drafts import drafting
-from .figure import Figure
-from .paper import Paper, sheet_size
+from shapely import STRtree
+from shapely.geometry import LineString, box
 
-__all__ = ["fit", "chosen_scale", "foretold", "held_by", "finer", "COARSER", "FINER", "TRIED",
-           "DRAFTING"]
+from .figure import Figure, Path, Text
+from .paper import Paper, sheet_drawn_on, sheet_size
+
+__all__ = ["fit", "chosen_scale", "foretold", "held_by", "finer", "to_sheet", "labels_on_lines",
+           "COARSER", "FINER", "TRIED", "DRAFTING"]
 
 COARSER = 3
 """The most nice steps coarser a figure the sheet refuses is drawn at."""
@@ -198,6 +201,61 @@ def foretold(fig: Figure, at: float, per_cm: float) -> Figure:
     k = at / per_cm
     w, h = fig.drawing or (fig.width, fig.height)
     return Figure(fig.width + w * (k - 1), fig.height + h * (k - 1))
+
+
+def to_sheet(draw: Draw, per_cm: float) -> Figure:
+    """``draw`` at ``per_cm``, the scale a figure of its own chose; or, where figures are
+    :func:`~tarsim.graphics.paper.drawn_on` a sheet, :func:`fit` to that sheet: grown by
+    the drafting steps while it holds the figure, or coarser where it does not. A figure
+    grown whose labels lie over more of its lines (:func:`labels_on_lines`) than at
+    ``per_cm`` is taken back a step at a time till they do not.
+
+    A gear train's, a cam's, a rotor's figure is drawn this way, so ``--paper A3`` draws
+    it as big as A3 holds it, as a linkage's is."""
+    sheet = sheet_drawn_on()
+    if sheet is None:
+        return draw(per_cm)
+    holds = held_by(sheet)
+    at = chosen_scale(_drafted(draw), per_cm, holds, grow=True)
+    if at >= per_cm * (1 - 1e-9):       # not grown: as the rule draws it
+        return fit(draw, per_cm, holds, grow=True)
+    base = draw(per_cm)
+    crossed = labels_on_lines(base)
+    while at < per_cm * (1 - 1e-9):
+        fig = draw(at)
+        if holds(fig) and labels_on_lines(fig) <= crossed:
+            return fig
+        at = _coarser_step(at)
+    return base
+
+
+def _coarser_step(per_cm: float) -> float:
+    """The next drafting scale coarser than ``per_cm`` (the inverse of :func:`finer`).
+
+    >>> _coarser_step(10.0), _coarser_step(40.0), _coarser_step(25.0)
+    (20.0, 50.0, 40.0)
+    """
+    k = math.floor(math.log10(per_cm))
+    ladder = [m * 10.0 ** e for e in (k, k + 1) for m in DRAFTING]
+    return float(f"{min(v for v in ladder if v > per_cm * (1 + 1e-9)):.12g}")
+
+
+def labels_on_lines(fig: Figure) -> int:
+    """How many of ``fig``'s texts lie over one of its lines (an open path), by more than
+    a graze (0.05 mm²): a figure drawn bigger whose labels its placer found less room for
+    is not taken for the one it replaces."""
+    strokes = [LineString(p.points).buffer(0.1) for p in fig.items
+               if isinstance(p, Path) and not p.closed and len(p.points) >= 2]
+    if not strokes:
+        return 0
+    tree = STRtree(strokes)
+    out = 0
+    for t in fig.items:
+        if isinstance(t, Text) and t.text.strip():
+            label = box(*t.box())
+            out += any(label.intersection(strokes[i]).area > 0.05
+                       for i in tree.query(label))
+    return out
 
 
 def held_by(sheet: Paper) -> Holds:

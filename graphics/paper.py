@@ -7,10 +7,17 @@ for (:func:`room`) grow with the sheet, so a bigger sheet draws the mechanism bi
 A figure no sheet of the paper asked for holds (one drawn at a scale the exercise
 states) is set on the smallest bigger standard sheet that holds it (:func:`grown`):
 every page a printer takes.
+
+A chapter that draws its figures without a sheet in mind (a gear train's, a cam's, a
+rotor's, a flywheel's) draws them :func:`drawn_on` the sheet they are to be printed on:
+each figure then fits its scale to that sheet (:func:`~tarsim.graphics.fitting.to_sheet`).
 """
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from contextlib import contextmanager
+from contextvars import ContextVar
 from dataclasses import dataclass
 
 from tarsim.constructions.errors import InputError
@@ -18,7 +25,7 @@ from tarsim.constructions.scales import ROOM
 from .figure import Figure, _shifted
 
 __all__ = ["Paper", "PAPERS", "BIGGER", "paper", "room", "on_sheet", "sheet_size", "grown",
-           "standard", "sheet_name", "filled", "MARGIN"]
+           "standard", "sheet_name", "filled", "MARGIN", "drawn_on", "sheet_drawn_on"]
 
 
 @dataclass(frozen=True)
@@ -97,6 +104,24 @@ def grown(fig: Figure, sheet: Paper) -> Paper:
         if sheet_size(fig, each) is not None:
             return each
     return each
+
+
+_DRAWN_ON: ContextVar[Paper | None] = ContextVar("drawn_on", default=None)
+
+
+@contextmanager
+def drawn_on(sheet: Paper) -> Iterator[None]:
+    """Draw the figures made within for ``sheet``: each fitted to it, not to A4's room."""
+    token = _DRAWN_ON.set(sheet)
+    try:
+        yield
+    finally:
+        _DRAWN_ON.reset(token)
+
+
+def sheet_drawn_on() -> Paper | None:
+    """The sheet figures are being drawn for (:func:`drawn_on`), if one is."""
+    return _DRAWN_ON.get()
 
 
 MARGIN = 10.0

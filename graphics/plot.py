@@ -27,6 +27,7 @@ from tarsim.constructions.narration import numerals
 from tarsim.constructions.scales import nice
 
 from .figure import Circle, Figure, Path, Text, text_width, wrap_text
+from .paper import MARGIN, sheet_drawn_on
 from . import plot_spots as spots
 from .plot_spots import MARK_R as _MARK_R
 from .rtl import is_rtl, reading
@@ -49,6 +50,8 @@ _LABEL = 3.4          # axis labels, mm
 _NUMBER = 2.9         # tick numbers, mm
 _MARK_TEXT = 2.7      # a mark's label, mm
 _NOTE = 3.0           # notes under the plot, mm
+_ASPECT = 0.6         # a plotting box grown for its sheet is at most this tall to its width
+_GRID = 0.3           # what a label across a grid line costs (a curve: 1; a ring out: 0.05)
 
 Point = tuple[float, float]
 Box = tuple[float, float, float, float]
@@ -231,7 +234,8 @@ def draw_line_plot(title: str, x_label: str, y_label: str, series: Sequence[Seri
                    notes: Sequence[str] = (), mark_legend: str = "",
                    include_zero: bool = True, y_ticks: Sequence[float] = (),
                    fills: Sequence[tuple[str, Sequence[Point]]] = (),
-                   tags: Sequence[tuple] = ()) -> Figure:
+                   tags: Sequence[tuple] = (), size: tuple[float, float] | None = None
+                   ) -> Figure:
     """Draw ``series`` against x in a framed plot, with ``marks`` as labelled open circles.
 
     Parameters
@@ -268,11 +272,15 @@ def draw_line_plot(title: str, x_label: str, y_label: str, series: Sequence[Seri
         coordinates (an area wrapped across the plot's end is two): its words then stand
         inside it where they fit, else beside it with a leader into it, never on another
         tag's outline.
+    size
+        The page's width and the plotting box's height (mm); by default 170 and 82 mm,
+        or, drawn for a sheet (:func:`~tarsim.graphics.paper.drawn_on`), as wide as the
+        sheet on its side holds within its margins and as tall as it then holds.
 
     Returns
     -------
     Figure
-        A page 170 mm wide.
+        A page 170 mm wide (by default).
 
     Raises
     ------
@@ -288,6 +296,13 @@ def draw_line_plot(title: str, x_label: str, y_label: str, series: Sequence[Seri
     >>> fig.width, sum(1 for t in fig.items if isinstance(t, Text) and t.text == "top")
     (170.0, 1)
     """
+    if size is None:
+        args = dict(title=title, x_label=x_label, y_label=y_label, series=series, marks=marks,
+                    x_range=x_range, x_ticks=x_ticks, subtitle=subtitle, notes=notes,
+                    mark_legend=mark_legend, include_zero=include_zero, y_ticks=y_ticks,
+                    fills=fills, tags=tags)
+        return _sized(lambda at: draw_line_plot(**args, size=at))
+    width, box_h = size
     x0, x1 = x_range
     runs = [(s, _clip_runs(s.points, x0, x1)) for s in series]
     ys = [p[1] for _, rs in runs for r in rs for p in r] + [m.y for m in marks]
@@ -302,10 +317,10 @@ def draw_line_plot(title: str, x_label: str, y_label: str, series: Sequence[Seri
     y_texts = [numerals(tick_text(v, step)) for v in yt]
     # Right to left (Persian), the headings, legend and notes start from the right margin;
     # the axes stay as they are, the input's angle running left to right.
-    reads = reading(_WIDTH)
+    reads = reading(width)
     edge, anchor = reads.x(_MARGIN), reads.anchor
 
-    fig = Figure(_WIDTH, 0.0)
+    fig = Figure(width, 0.0)
     top = _MARGIN + _TITLE * 0.5
     _add_text(fig, (edge, top), title, _TITLE, anchor, weight="bold")
     if subtitle:
@@ -313,9 +328,9 @@ def draw_line_plot(title: str, x_label: str, y_label: str, series: Sequence[Seri
         _add_text(fig, (edge, top), subtitle, _SUBTITLE, anchor)
     number_w = max(text_width(t, _NUMBER) for t in y_texts)
     left = _MARGIN + number_w + 2.5
-    right = _WIDTH - _MARGIN - 2.0
+    right = width - _MARGIN - 2.0
     plot_top = top + _SUBTITLE + 9.0
-    bottom = plot_top + _PLOT_H
+    bottom = plot_top + box_h
     _add_text(fig, (left - 1.0, plot_top - 4.2), y_label, _LABEL, italic=False)
 
     def px(x: float) -> float:
@@ -324,12 +339,10 @@ def draw_line_plot(title: str, x_label: str, y_label: str, series: Sequence[Seri
     def py(y: float) -> float:
         return bottom - (y - y0) / (y1 - y0) * (bottom - plot_top)
 
-    for x, _ in x_ticks:
-        if x0 < x < x1:
-            fig.line((px(x), plot_top), (px(x), bottom), "plot_grid")
-    for y in yt[1:-1]:
-        if y != 0.0:
-            fig.line((left, py(y)), (right, py(y)), "plot_grid")
+    grid = [((px(x), plot_top), (px(x), bottom)) for x, _ in x_ticks if x0 < x < x1]
+    grid += [((left, py(y)), (right, py(y))) for y in yt[1:-1] if y != 0.0]
+    for a, b in grid:
+        fig.line(a, b, "plot_grid")
     if y0 < 0.0 < y1:
         fig.line((left, py(0.0)), (right, py(0.0)), "plot_zero")
     fig.add(Path(((left, plot_top), (right, plot_top), (right, bottom), (left, bottom)),
@@ -363,20 +376,20 @@ def draw_line_plot(title: str, x_label: str, y_label: str, series: Sequence[Seri
     # A mark's label keeps inside the ticks, off the frame and the ticks' ends.
     inner = _TICK + 0.4
     _draw_marks(fig, [(px(m.x), py(m.y), m.label) for m in marks], paper_runs,
-                (left + inner, plot_top + inner, right - inner, bottom - inner))
+                (left + inner, plot_top + inner, right - inner, bottom - inner), grid)
     _draw_tags(fig, [(px(t[0]), py(t[1]), t[2],
                       [[(px(a), py(b)) for a, b in o] for o in (t[3] if len(t) > 3 else ())])
                      for t in tags], paper_runs,
-               (left + inner, plot_top + inner, right - inner, bottom - inner))
+               (left + inner, plot_top + inner, right - inner, bottom - inner), grid)
 
     legend = [(s.style, s.label) for s in series] if len(series) > 1 else []
     if marks and mark_legend:
         legend.append(("plot_mark", mark_legend))
-    x = _WIDTH
+    x = width
     for style, label in legend:
         w = 18.0 + _rich_width(label, _NOTE)
-        if x + w > _WIDTH - _MARGIN + 6.0:
-            x, y = _MARGIN, y + 6.5 if x == _WIDTH else y + 5.0
+        if x + w > width - _MARGIN + 6.0:
+            x, y = _MARGIN, y + 6.5 if x == width else y + 5.0
         at = reads.x            # each sample from the reading edge: x is how far it has gone
         if style == "plot_mark":
             fig.add(Circle((at(x + 5.0), y), _MARK_R, style))
@@ -386,13 +399,27 @@ def draw_line_plot(title: str, x_label: str, y_label: str, series: Sequence[Seri
             _add_text(fig, (at(x + 12.0), y), label, _NOTE, anchor)
         x += w
     for note in notes:
-        for line in wrap_text(note, _NOTE, _WIDTH - 2 * _MARGIN, indent="  ",
+        for line in wrap_text(note, _NOTE, width - 2 * _MARGIN, indent="  ",
                               measure=_rich_width):
             y += 5.0
             _add_text(fig, (edge, y), line, _NOTE, anchor)
     fig.height = round(y + _MARGIN, 1)
     fig.title = title.replace("_", "")
     return fig
+
+
+def _sized(draw) -> Figure:
+    """A plot ``draw`` makes at a size (page width, plotting box height), at the size that
+    fills the sheet figures are drawn on (:func:`~tarsim.graphics.paper.drawn_on`), within
+    its margins, on its side: its headings, legend and notes keep their size; by default
+    170 mm wide, its box 82 mm high."""
+    sheet = sheet_drawn_on()
+    if sheet is None:
+        return draw((_WIDTH, _PLOT_H))
+    wide = max(sheet.width, sheet.height) - 2 * MARGIN
+    high = min(sheet.width, sheet.height) - 2 * MARGIN
+    words = draw((wide, _PLOT_H)).height - _PLOT_H      # all but the box, at that width
+    return draw((wide, max(_PLOT_H, min(high - words, _ASPECT * wide))))
 
 
 def _clip_runs(points: Sequence[Point | None], x0: float, x1: float) -> list[list[Point]]:
@@ -423,8 +450,18 @@ def _clip_runs(points: Sequence[Point | None], x0: float, x1: float) -> list[lis
     return [r for r in runs if r]
 
 
+def _on_grid(boxes: np.ndarray, grid: Sequence[tuple[Point, Point]]) -> np.ndarray:
+    """:data:`_GRID` for each grid line each of ``boxes`` lies across: a label is set off
+    the light grid where it can be, as off a curve, but not at any cost."""
+    if not grid:
+        return np.zeros(len(boxes))
+    lines = spots.segments([tuple(g) for g in grid])
+    return _GRID * spots.overlaps(boxes, [], lines, (-math.inf, -math.inf, math.inf, math.inf))
+
+
 def _draw_tags(fig: Figure, tags: list[tuple[float, float, str, list]],
-               runs: list[tuple[Point, ...]], frame: Box) -> None:
+               runs: list[tuple[Point, ...]], frame: Box,
+               grid: Sequence[tuple[Point, Point]] = ()) -> None:
     """Each tag's words at its point, or moved the least (a line up or down, or to a side)
     to keep clear of the curves, the frame and the tags before it: an energy's value set
     at the middle of the segment it is the rise of would sit on that segment. A tag with
@@ -442,7 +479,8 @@ def _draw_tags(fig: Figure, tags: list[tuple[float, float, str, list]],
         cx, cy = x + shifts[:, 0], y + shifts[:, 1]
         boxes = np.stack([cx - w / 2 - 0.3, cy - h / 2 - 0.3, cx + w / 2 + 0.3,
                           cy + h / 2 + 0.3], axis=1)
-        cost = spots.overlaps(boxes, taken, segments, frame) + 0.01 * np.hypot(*shifts.T)
+        cost = spots.overlaps(boxes, taken, segments, frame) + 0.01 * np.hypot(*shifts.T) \
+            + _on_grid(boxes, grid)
         own = shapes[n]
         leader = None
         if own is not None and not own.is_empty:
@@ -499,7 +537,8 @@ def _beside(own, others, w: float, h: float, taken: list[Box], segments, frame: 
 
 
 def _draw_marks(fig: Figure, marks: list[tuple[float, float, str]],
-                runs: list[tuple[Point, ...]], frame: Box) -> None:
+                runs: list[tuple[Point, ...]], frame: Box,
+                grid: Sequence[tuple[Point, Point]] = ()) -> None:
     """Open circles at the marks; each label at the nearest clear spot round its circle,
     within ``frame``.
 
@@ -523,7 +562,7 @@ def _draw_marks(fig: Figure, marks: list[tuple[float, float, str]],
         boxes = np.stack([cx - w / 2 - 0.3, cy - h / 2 - 0.3, cx + w / 2 + 0.3, cy + h / 2 + 0.3],
                          axis=1)
         leaders = spots.leaders(x, y, boxes, ring)
-        cost = spots.overlaps(boxes, taken, segments, frame) + 0.05 * ring
+        cost = spots.overlaps(boxes, taken, segments, frame) + 0.05 * ring + _on_grid(boxes, grid)
         # A leader across a curve reads as part of it: it costs as the box crossing one;
         # one through another mark's circle points at that mark.
         cost += spots.crossed(*leaders, segments)

@@ -1,8 +1,8 @@
 """Every figure fills at least half its sheet's usable area (the box of its ink over the
 sheet less a 10 mm margin round it, :func:`~tarsim.graphics.paper.filled`), or is listed
 here with the reason it does not. A figure is drawn at the finest of the course's scales
-(1, 2, 2.5, 4, 5 × 10ᵏ to the centimetre) its sheet holds; the circle diagram, which has
-no scale, is drawn to fill the floor."""
+(1, 2, 2.5, 4, 5 × 10ᵏ to the centimetre) its sheet holds, in every chapter; the circle
+diagram and the plots, which have no scale, are drawn to fill the floor."""
 
 from __future__ import annotations
 
@@ -17,8 +17,15 @@ from tarsim.graphics.paper import filled
 FLOOR = 0.5
 """The least share of its sheet's usable area a figure fills."""
 
-OWN_SIZE = ("drawn at a size of its own (a table's type, a plot's axes, a gear's or a cam's "
-            "scale chosen for its chapter), set whole on its sheet")
+TABLE = ("a table: its type is set at the size it is read at, and a sheet is not filled by "
+         "setting it bigger")
+SIDE = ("a rotor's side view: the planes along the shaft to scale, each drawn 24 mm tall at "
+        "any scale, a strip the next finer step runs past the sheet's length")
+STRIP = ("a strip to scale along its length (a cam's turn across at its lift's scale, a rod "
+         "and its masses along it): the next finer step runs past the sheet's length")
+KUTZBACH = ("a velocity diagram's two scales, radius and velocity, grow together, only by as "
+            "much as leaves both drafting scales (2, 2.5, 4, 5 or 10 times), and the least "
+            "such growth is more than A4 holds")
 VELOCITIES = ("its velocities are drawn on the space diagram at a scale of their own, tied to "
               "the space scale the solve chose, which is therefore not grown")
 NEXT_STEP = "the next finer of the course's scales draws it bigger than its sheet holds"
@@ -62,8 +69,54 @@ EXCEPTIONS: dict[tuple[str, str], str] = {
                                       "engine-gas-pressure", "four-bar-coupler-load")},
     **{(e, "free-bodies"): FORCES for e in ("double-acting-engine", "engine-forces",
                                             "four-bar-coupler-load")},
+    **{(e, s): TABLE for s, ids in {
+        "table": ("car-differential", "differential-near-equal", "gearbox-power-efficiency",
+                  "output-speed-given", "planetary-q1", "planetary-q2", "planetary-q3",
+                  "planetary-q4", "planetary-ratio-least-teeth", "ratio-only", "sun-and-planet",
+                  "teeth-implied", "two-planets-listed", "two-speeds-arm-and-sun",
+                  "bearing-forces", "coupled-locomotive", "four-mass-shaft",
+                  "four-masses-one-plane", "locomotive", "notes-example-1",
+                  "outside-locomotive", "static-balance-couple-left", "weights-one-plane"),
+        "table-trailing": ("coupled-locomotive",),
+        "train-value": ("compound-equal-steps", "compound-train", "involute-pair",
+                        "ratio-least-teeth", "reverted-train-design", "reverted-two-modules",
+                        "shafts-about-circular-pitch", "shafts-apart"),
+        "profile-table": ("base-circle-for-pressure-angle", "eccentric-flat-face",
+                          "knife-edge-acceleration-ratio", "offset-knife-edge",
+                          "oscillating-roller", "roller-harmonic-cycloidal",
+                          "valve-unequal-acceleration"),
+    }.items() for e in ids},
+    **{(e, "side"): SIDE for e in ("bearing-forces", "coupled-locomotive", "four-mass-shaft",
+                                   "locomotive", "outside-locomotive", "primary-balance-unknowns",
+                                   "static-balance-couple-left", "unknown-angles",
+                                   "unknown-plane-and-angle", "unknown-planes")},
+    ("coupled-locomotive", "side-trailing"): SIDE,
+    **{(e, "displacement"): STRIP for e in (
+        "base-circle-for-pressure-angle", "eccentric-flat-face", "knife-edge-acceleration-ratio",
+        "offset-knife-edge", "oscillating-roller", "roller-harmonic-cycloidal",
+        "valve-unequal-acceleration")},
+    ("rod-equivalent-masses", "rod"): STRIP,
+    **{(e, "kutzbach"): KUTZBACH for e in ("gearbox-power-efficiency", "output-speed-given",
+                                          "teeth-implied", "two-planets-listed",
+                                          "two-speeds-arm-and-sun")},
+    # The gear trains', cams' and rotors' drawings at the course's scales, on A4.
+    ("ratio-least-teeth", "train"): NEXT_STEP,
+    ("roller-harmonic-cycloidal", "profile"): NEXT_STEP,
+    **{(e, s): NEXT_STEP for s, ids in {
+        "space": ("bearing-forces", "coupled-locomotive", "four-mass-shaft", "locomotive",
+                  "outside-locomotive", "three-masses-between", "unknown-plane-and-angle",
+                  "unknown-planes"),
+        "space-trailing": ("coupled-locomotive",),
+        "force-polygon": ("coupled-locomotive", "notes-example-1", "static-balance-couple-left",
+                          "unknown-angles"),
+        "couple-polygon": ("outside-locomotive", "primary-balance-unknowns"),
+        "primary-force": ("inline-four", "primary-balance-unknowns"),
+        "primary-couple": ("inline-four", "inline-three"),
+        "secondary-force": ("inline-four", "two-stroke-four"),
+        "secondary-couple": ("inline-four", "inline-three", "two-stroke-four"),
+    }.items() for e in ids},
 }
-"""The linkages' figures below the floor, by (exercise, figure stem without its position)."""
+"""The figures below the floor, by (exercise, figure stem without its position)."""
 
 
 def _stem(stem: str) -> str:
@@ -75,15 +128,15 @@ def _stem(stem: str) -> str:
 
 def fills(lang: str) -> dict[tuple[str, str, int], tuple[float, str | None]]:
     """Each bundled figure's sheets' fill, by (exercise, stem, sheet), with the reason it may
-    fall short: its chapter's own size, or an entry of :data:`EXCEPTIONS`."""
+    fall short: an entry of :data:`EXCEPTIONS`."""
     out = {}
     for exercise_id in everything():
         with speaking(lang):
             done = solve(load(exercise_id))
-            own = hasattr(done, "sheets")          # a chapter whose figures keep their size
-            figures = done.sheets() if own else done.figures
+            # a gear train's, a cam's, a rotor's figures are drawn for their sheet there
+            figures = done.sheets() if hasattr(done, "sheets") else done.figures
             for stem, fig in figures.items():
-                why = OWN_SIZE if own else EXCEPTIONS.get((exercise_id, _stem(stem)))
+                why = EXCEPTIONS.get((exercise_id, _stem(stem)))
                 for k, s in enumerate(fig.sheets or [fig]):
                     out[(exercise_id, stem, k)] = (filled(s), why)
     return out

@@ -88,6 +88,9 @@ class BalanceExercise:
     """A coupled locomotive's other coupled wheels (``[engine] coupled``), balanced in the
     same planes as the driving wheels' ``rotor``: their share of the reciprocating mass and
     the masses on each pair (:mod:`.engine_wheels`)."""
+    paper: str = "A4"
+    """The sheet its figures are drawn for and set on (``graphics.paper.PAPERS``),
+    as ``--paper`` sets it."""
 
     def named_in(self, lang: str) -> BalanceExercise:
         """The same exercise with its rotor or engine named in ``lang``, if its file does."""

@@ -59,6 +59,9 @@ class ArcCamExercise:
     mass: float = 0.0
     """The follower's mass (kg), where the file gives it: the spring must hold it to the
     nose against its greatest retardation."""
+    paper: str = "A4"
+    """The sheet its figures are drawn for and set on (``graphics.paper.PAPERS``),
+    as ``--paper`` sets it."""
 
     def named_in(self, lang: str) -> ArcCamExercise:
         """The same exercise with the cam named in ``lang``, if its file does."""

@@ -65,6 +65,9 @@ class CamExercise:
     disc: tuple[float, float] | None = None
     """An eccentric disc's radius and eccentricity (the file's length unit), where the cam
     is one."""
+    paper: str = "A4"
+    """The sheet its figures are drawn for and set on (``graphics.paper.PAPERS``),
+    as ``--paper`` sets it."""
 
     def named_in(self, lang: str) -> CamExercise:
         """The same exercise with the cam named in ``lang``, if its file does."""

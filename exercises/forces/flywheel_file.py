@@ -138,6 +138,9 @@ class FlywheelExercise:
     length_unit: str = "m"
     speed_unit: str = "rad/s"
     names: tuple[tuple[str, str], ...] = ()
+    paper: str = "A4"
+    """The sheet its figures are drawn for and set on (``graphics.paper.PAPERS``),
+    as ``--paper`` sets it."""
 
     def named_in(self, lang: str) -> FlywheelExercise:
         """The same exercise named in ``lang``, if its file does."""

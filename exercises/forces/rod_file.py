@@ -84,6 +84,9 @@ class RodExercise:
     pendulum: tuple[float, float, str, bool] | None = None
     """The pendulum test I_G came from: its period (s), G's distance below the point of
     suspension (m), the pin it hung from, and whether on a knife edge in its bore."""
+    paper: str = "A4"
+    """The sheet its figures are drawn for and set on (``graphics.paper.PAPERS``),
+    as ``--paper`` sets it."""
 
     @property
     def second(self) -> str:

@@ -63,6 +63,9 @@ class TrainExercise:
     """The train as listed, every copy a gear, where copies were folded: the Willis
     reference solves it whole (its extra meshes must agree), so each copy's speed is
     checked, not assumed."""
+    paper: str = "A4"
+    """The sheet its figures are drawn for and set on (``graphics.paper.PAPERS``),
+    as ``--paper`` sets it."""
 
     def member(self, number: int) -> int:
         """The member of the train that a number asked stands for (a copy's planet)."""

@@ -16,6 +16,7 @@ from dataclasses import replace
 from tarsim.constructions.narration import numerals, right_to_left, unit_words, words
 from tarsim.constructions.record import Construction, Ref
 from ..figure import Circle, Figure, Path, Text, clear_of, text_width
+from ..fitting import to_sheet
 from ..labels import LabelPlacer, paper_angle
 from ..linkages.lanes import lanes, moved
 from ..scales import draw_caption, nice_per_cm
@@ -34,7 +35,8 @@ _LANE = 6.0       # mm between vectors on one line drawn side by side: room for 
 def draw_polygon(c: Construction, tips: Sequence[tuple[str, Ref]], closing: Ref, title: str,
                  unit: str, reading: tuple[str, str, str], notes: Sequence[str] = (),
                  names: dict[str, str] | None = None, clockwise: bool = False,
-                 per: float = 1.0, cranks: CrankView | None = None) -> Figure:
+                 per: float = 1.0, cranks: CrankView | None = None,
+                 per_cm: float | None = None) -> Figure:
     """The polygon whose tips are ``tips`` in order from its pole, closed by ``closing``;
     its sizes in ``unit``, ``per`` of it to the construction's unit, the closing side read
     as ``reading`` (text, subscript, and the words after it: "(m r)", "A", " = 1.39 kg·m
@@ -45,14 +47,19 @@ def draw_polygon(c: Construction, tips: Sequence[tuple[str, Ref]], closing: Ref,
 
     Vectors on one line that would cover one another (a polygon folded flat, or closing
     over its own sides) are drawn side by side in lanes, as the linkage polygons draw
-    them, each true in length and direction with a leader back to its points.
+    them, each true in length and direction with a leader back to its points. It is drawn
+    at ``per_cm``, by default the nice scale that fits its room, fitted to the sheet it is
+    drawn on.
     """
+    given = dict(locals())          # every argument, to draw it again at another scale
     names = names or {}
     start = c[closing].inputs[1]
     points = [c.output(start).xy] + [c.output(r).xy for _, r in tips]
     xs, ys = [x for x, _ in points], [y for _, y in points]
     extent = max(max(xs) - min(xs), max(ys) - min(ys), 1e-12)
-    per_cm = nice_per_cm(extent * per, _ROOM)
+    if per_cm is None:
+        return to_sheet(lambda at: draw_polygon(**{**given, "per_cm": at}),
+                        nice_per_cm(extent * per, _ROOM))
     k = 10.0 * per / per_cm
 
     up = 1.0 if clockwise else -1.0      # paper y runs down: counter-clockwise is −y
@@ -221,14 +228,18 @@ def _outward(a, b, corners, by: float, *, up: bool) -> tuple[float, float]:
 def draw_end_view(c: Construction, masses: Sequence[tuple[str, float, str]], title: str,
                   unit: str, metre: float, found: Sequence[tuple[str, float, float]] = (),
                   notes: Sequence[str] = (), found_word: str = "a balancing mass found",
-                  clockwise: bool = False) -> Figure:
+                  clockwise: bool = False, per_cm: float | None = None) -> Figure:
     """The end view: the shaft's centre O and each mass (step ``P<name>``) on its radial
     line; ``masses`` gives each (name, radius in m, its label), ``found`` each balancing
     mass (label, angle in rad, radius in m), drawn dashed; with ``clockwise`` the angles
-    run clockwise (the construction's mirror image)."""
+    run clockwise (the construction's mirror image). At ``per_cm``, by default the scale
+    that fits its room, fitted to the sheet it is drawn on."""
     up = 1.0 if clockwise else -1.0      # paper y runs down: counter-clockwise is −y
     reach = max([r for _, r, _ in masses] + [r for _, _, r in found]) or 1.0
-    per_cm = nice_per_cm(2.4 * reach / metre, _ROOM * 0.8)
+    if per_cm is None:
+        return to_sheet(lambda at: draw_end_view(c, masses, title, unit, metre, found, notes,
+                                                 found_word, clockwise, at),
+                        nice_per_cm(2.4 * reach / metre, _ROOM * 0.8))
     k = 10.0 / (per_cm * metre)
     fig = Figure(0.0, 0.0, title=title)
     fig.add(Circle((0.0, 0.0), 0.9, "dot"))
@@ -290,14 +301,19 @@ def _radii(c: Construction, masses, found) -> list[tuple[float, float]]:
 
 
 def draw_side_view(planes: Sequence[tuple[str, float, str]], title: str, unit: str,
-                   metre: float, found: str = "a balancing plane") -> Figure:
+                   metre: float, found: str = "a balancing plane",
+                   per_cm: float | None = None) -> Figure:
     """The side view: the shaft and each plane at its axial position; ``planes`` gives
     each (label, position in m, style: "link" for a mass's plane, "normal" for a
-    balancing plane, or the plane found, as the legend's ``found`` names it)."""
+    balancing plane, or the plane found, as the legend's ``found`` names it). At
+    ``per_cm``, by default the scale that fits its room, fitted to the sheet it is drawn
+    on."""
     xs = [p for _, p, _ in planes]
     lo, hi = min(xs), max(xs)
     span = hi - lo or 1.0
-    per_cm = nice_per_cm(span / metre, _ROOM)
+    if per_cm is None:
+        return to_sheet(lambda at: draw_side_view(planes, title, unit, metre, found, at),
+                        nice_per_cm(span / metre, _ROOM))
     k = 10.0 / (per_cm * metre)
     fig = Figure(0.0, 0.0, title=title)
     fig.add(Path(((lo * k - 8.0, 0.0), (hi * k + 8.0, 0.0)), "link"))

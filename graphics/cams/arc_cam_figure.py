@@ -11,6 +11,7 @@ import math
 
 from tarsim.constructions.narration import numerals, unit_words, words
 from ..figure import Circle, Figure, Path, Text, arc_points
+from ..fitting import to_sheet
 from ..scales import draw_caption, nice_per_cm
 
 __all__ = ["draw_arc_cam"]
@@ -18,11 +19,15 @@ __all__ = ["draw_arc_cam"]
 _ROOM = 120.0          # paper (mm) the cam's reach across is fitted to
 
 
-def draw_arc_cam(cam_outline, cam, title: str, unit: str, metre: float) -> Figure:
+def draw_arc_cam(cam_outline, cam, title: str, unit: str, metre: float,
+                 per_cm: float | None = None) -> Figure:
     """The outline ``cam_outline`` of ``cam`` (an :class:`~tarsim.constructions.cams.
-    arc_cam.ArcCam`); lengths stated in ``unit`` (``metre`` metres each)."""
+    arc_cam.ArcCam`); lengths stated in ``unit`` (``metre`` metres each), at ``per_cm``
+    (by default the scale that fits its room, fitted to the sheet it is drawn on)."""
     reach = cam.d + cam.nose + 2 * cam.roller
-    per_cm = nice_per_cm(2 * reach / metre, _ROOM)
+    if per_cm is None:
+        return to_sheet(lambda at: draw_arc_cam(cam_outline, cam, title, unit, metre, at),
+                        nice_per_cm(2 * reach / metre, _ROOM))
     k = 10.0 / (per_cm * metre)
 
     def paper(xy) -> tuple[float, float]:

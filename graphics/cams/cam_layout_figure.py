@@ -21,6 +21,7 @@ from tarsim.constructions.cams.survey import Survey
 from tarsim.constructions.narration import numerals, words
 from ..figure import Circle, Figure, Path, Text, arc_points
 from ..hiding import shown_answer
+from ..fitting import to_sheet
 from ..labels import LabelPlacer, paper_angle
 from ..scales import draw_caption, nice_per_cm
 from ..symbols import draw_arrow, draw_turning_arrow, mark_angle
@@ -28,7 +29,8 @@ from ..symbols import draw_arrow, draw_turning_arrow, mark_angle
 __all__ = ["draw_cam_layout"]
 
 _ROOM = 150.0          # paper (mm) the cam's greatest reach across is fitted to
-_WINDOW = 1.0          # the curves are drawn within this many _ROOMs of O each way
+_WINDOW = 1.0          # the curves are drawn within this many _ROOMs of O each way (the
+                       # room grown as the figure is, drawn for a bigger sheet)
 
 _CLEAR = 5.0           # mm round O that the follower's lines leave clear for its name
 _FACE = 10.0           # mm a flat face reaches at least either side of the follower's line
@@ -41,14 +43,18 @@ others dashed, the pivot circle apart from the prime circle its arms reach."""
 
 
 def draw_cam_layout(layout: Layout, s: Survey, title: str, unit: str, metre: float,
-                    notes: Sequence[str] = ()) -> Figure:
+                    notes: Sequence[str] = (), per_cm: float | None = None) -> Figure:
     """The layout ``layout`` with the closed-form curves of ``s``; lengths stated in
-    ``unit`` (``metre`` metres each)."""
+    ``unit`` (``metre`` metres each), at ``per_cm`` (by default the scale that fits its
+    room, fitted to the sheet it is drawn on)."""
     c, f = layout.construction, layout.follower
     reach = max(max(math.hypot(*st.pitch) for st in s.stations) + f.radius,
                 math.hypot(*f.pivot) + f.arm if f.oscillating else 0.0)
-    per_cm = nice_per_cm(2 * reach / metre, _ROOM)
+    if per_cm is None:
+        return to_sheet(lambda at: draw_cam_layout(layout, s, title, unit, metre, notes, at),
+                        nice_per_cm(2 * reach / metre, _ROOM))
     k = 10.0 / (per_cm * metre)
+    window = _WINDOW * max(_ROOM, 2 * reach * k)
 
     def paper(xy) -> tuple[float, float]:
         return xy[0] * k, -xy[1] * k
@@ -83,7 +89,7 @@ def draw_cam_layout(layout: Layout, s: Survey, title: str, unit: str, metre: flo
             fig.add(Circle(trace, f.radius * k, "node_circle"))
         elif f.kind == "flat-faced":
             # The face from its foot past the touch, a few mm beyond each.
-            run = min(abs(st.face_offset) * k, _WINDOW * _ROOM)
+            run = min(abs(st.face_offset) * k, window)
             if run > 1e-9:
                 d = _unit((st.profile[0] - st.pitch[0], st.pitch[1] - st.profile[1]))
             else:
@@ -98,9 +104,9 @@ def draw_cam_layout(layout: Layout, s: Survey, title: str, unit: str, metre: flo
                          "node_circle"))
         fig.add(Circle(trace, 0.55, "dot"))
     if f.kind != "flat-faced":
-        _draw_curve(fig, [paper(st.pitch) for st in s.stations],
+        _draw_curve(fig, [paper(st.pitch) for st in s.stations], window,
                     "normal" if f.kind == "roller" else "link")
-    _draw_curve(fig, [paper(st.profile) for st in s.stations], "link")
+    _draw_curve(fig, [paper(st.profile) for st in s.stations], window, "link")
     fig.add(Circle(o, 0.8, "dot"))
     sense = 1.0 if s.sigma > 0 else -1.0
     base = c.output(layout.circles["base"]).radius * k
@@ -120,7 +126,7 @@ def draw_cam_layout(layout: Layout, s: Survey, title: str, unit: str, metre: flo
         placer.place(text, at, prefer=way, spread=1.0, gap=1.2, size=2.6, italic=False)
     for st in _ringed(s):
         at = paper(st.profile)                   # or, where it runs off far, its trace point
-        fig.add(Circle(at if max(map(abs, at)) <= _WINDOW * _ROOM else paper(st.pitch), 2.2,
+        fig.add(Circle(at if max(map(abs, at)) <= window else paper(st.pitch), 2.2,
                        "normal"))
     legend = [("link", _cam_term("profile (the pitch curve)" if f.kind == "knife-edge"
                                  else "profile")),
@@ -176,11 +182,12 @@ def _mark_steepest(fig: Figure, s: Survey, paper, k: float) -> None:
         fig.add(Text(spot, reading, 2.8, "start" if out[0] >= 0 else "end", False))
 
 
-def _draw_curve(fig: Figure, points: list[tuple[float, float]], style: str) -> None:
+def _draw_curve(fig: Figure, points: list[tuple[float, float]], edge: float,
+                style: str) -> None:
     """A closed curve through ``points`` (paper mm), as far as it stays near the cam: an
     undercut profile's loops, or a flat face's touch on a steep segment, can run off
-    far beyond the sheet, and are drawn to where they leave the window about O."""
-    edge = _WINDOW * _ROOM
+    far beyond the sheet, and are drawn to where they leave the window about O (``edge``
+    mm from it each way)."""
     inside = [max(abs(x), abs(y)) <= edge for x, y in points]
     if all(inside):
         fig.add(Path(tuple(points), style, closed=True))

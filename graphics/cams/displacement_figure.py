@@ -16,6 +16,7 @@ from collections.abc import Sequence
 from tarsim.constructions.cams.displacement import Displacement
 from tarsim.constructions.narration import numerals, unit_words, words
 from ..figure import Circle, Figure, Path, Text, arc_points
+from ..fitting import to_sheet
 from ..labels import LabelPlacer
 from ..scales import draw_caption, nice_per_cm
 from ..symbols import draw_dimension
@@ -28,7 +29,8 @@ _UP_LEFT, _UP_RIGHT = 2.36, 0.79    # a point number's first way out (rad): up t
 
 def draw_displacement_figure(d: Displacement, curve: list[tuple[float, float]], title: str,
                              unit: str, metre: float, *, arm: float = 0.0,
-                             asked: Sequence[tuple[float, float, str]] = ()) -> Figure:
+                             asked: Sequence[tuple[float, float, str]] = (),
+                             per_cm: float | None = None) -> Figure:
     """The diagram ``d`` with the smooth ``curve`` (cam angle in rad, lift in m) through its
     points; lengths stated in ``unit`` (``metre`` metres each). For a swinging ``arm`` the
     lift is the arc its end swings through, and the swing is stated in degrees too.
@@ -37,7 +39,10 @@ def draw_displacement_figure(d: Displacement, curve: list[tuple[float, float]], 
     c = d.construction
     top = max(y for _, y in curve) or 1.0
     width = 2 * math.pi * d.per_rad
-    per_cm = max(nice_per_cm(width / metre, _ROOM[0]), nice_per_cm(top / metre, _ROOM[1]))
+    if per_cm is None:          # the scale that fits A4's room, fitted to the sheet
+        return to_sheet(lambda at: draw_displacement_figure(
+            d, curve, title, unit, metre, arm=arm, asked=asked, per_cm=at),
+            max(nice_per_cm(width / metre, _ROOM[0]), nice_per_cm(top / metre, _ROOM[1])))
     k = 10.0 / (per_cm * metre)                    # paper mm per drawing metre
 
     def paper(xy) -> tuple[float, float]:

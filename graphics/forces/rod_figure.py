@@ -14,6 +14,7 @@ from tarsim.constructions.scales import nice_per_cm
 from tarsim.constructions.units import LENGTH_UNITS
 from tarsim.graphics.figure import Circle, Figure, Path, Text
 from tarsim.graphics.hiding import shown_answer
+from tarsim.graphics.fitting import to_sheet
 from tarsim.graphics.scales import draw_caption
 from tarsim.graphics.symbols import draw_dimension, draw_pin
 
@@ -48,8 +49,9 @@ def _centre_mark(fig: Figure, at: tuple[float, float]) -> None:
         fig.add(Path(tuple(pts), "dot", closed=True))
 
 
-def rod_figure(sol: Any) -> Figure:
-    """The rod and the masses that stand for it, to scale."""
+def rod_figure(sol: Any, per_cm: float | None = None) -> Figure:
+    """The rod and the masses that stand for it, at ``per_cm`` (by default the scale that
+    fits its room, fitted to the sheet it is drawn on)."""
     ex, rod = sol.exercise, sol.exercise.rod
     unit = ex.length_unit
     metre = LENGTH_UNITS[unit]
@@ -59,7 +61,8 @@ def rod_figure(sol: Any) -> Figure:
     if e is not None:
         x_d = rod.centre - e.l2 if ex.crank_first else rod.centre + e.l2
     lo, hi = min(0.0, x_d if x_d is not None else 0.0), max(rod.length, x_d or 0.0)
-    per_cm = nice_per_cm((hi - lo) / metre, _LONGEST)
+    if per_cm is None:
+        return to_sheet(lambda at: rod_figure(sol, at), nice_per_cm((hi - lo) / metre, _LONGEST))
     k = 10.0 / (per_cm * metre)                        # paper mm a metre
 
     def x(s: float) -> float:

@@ -19,6 +19,7 @@ from tarsim.constructions.gears.involute import InvoluteMesh
 from tarsim.constructions.gears.train import GearTrain
 from tarsim.constructions.narration import numerals, unit_words, words
 from ..figure import Circle, Figure, Path
+from ..fitting import to_sheet
 from ..hiding import shown_answer
 from ..labels import LabelPlacer, paper_angle
 from ..scales import draw_caption, nice_per_cm
@@ -65,8 +66,10 @@ def mesh_teeth(mesh: InvoluteMesh) -> dict[int, Teeth]:
     return out
 
 
-def draw_involute_figure(train: GearTrain, mesh: InvoluteMesh, title: str) -> Figure:
-    """The mesh zone of ``mesh`` at a nice scale, with its caption."""
+def draw_involute_figure(train: GearTrain, mesh: InvoluteMesh, title: str,
+                         per_cm: float | None = None) -> Figure:
+    """The mesh zone of ``mesh`` at ``per_cm`` (by default the nice scale that fits its
+    room, fitted to the sheet it is drawn on), with its caption."""
     c = mesh.construction
     teeth = mesh_teeth(mesh)
     outlines = {n: t.outline(_SHOWN) for n, t in teeth.items()}
@@ -77,7 +80,10 @@ def draw_involute_figure(train: GearTrain, mesh: InvoluteMesh, title: str) -> Fi
     pad = 0.06 * max(x1 - x0, y1 - y0)
     x0, x1, y0, y1 = x0 - pad, x1 + pad, y0 - pad, y1 + pad
     # The line of centres (world x) upright on the paper: world y runs across.
-    per_cm = max(nice_per_cm((y1 - y0) * 1e3, _ROOM[0]), nice_per_cm((x1 - x0) * 1e3, _ROOM[1]))
+    if per_cm is None:
+        return to_sheet(lambda at: draw_involute_figure(train, mesh, title, at),
+                        max(nice_per_cm((y1 - y0) * 1e3, _ROOM[0]),
+                            nice_per_cm((x1 - x0) * 1e3, _ROOM[1])))
     k = 10.0 / per_cm * 1e3                       # paper mm per metre
 
     def paper(xy) -> tuple[float, float]:

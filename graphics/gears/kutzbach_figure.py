@@ -9,24 +9,52 @@ scale and velocities across at the velocity scale, both stated with their bars.
 
 from __future__ import annotations
 
+import math
+
 from tarsim.constructions import geometry as g
 from tarsim.constructions.gears.kutzbach import Kutzbach
 from tarsim.constructions.gears.train import GearTrain
 from tarsim.constructions.narration import numeral, unit_words, words
 from ..figure import Circle, Figure, Path
+from ..fitting import DRAFTING, held_by
 from ..labels import LabelPlacer
+from ..paper import sheet_drawn_on
 from ..scales import draw_caption
 from ..typeset import subscript
 
 __all__ = ["draw_kutzbach_figure", "member_words"]
 
 _OVER = 8.0        # how far (mm) a line runs past the points it was drawn through
+_GROWN = (10.0, 5.0, 4.0, 2.5, 2.0)
+"""How many times as big a diagram drawn for a sheet may be tried, the biggest first: at
+one that leaves both its scales drafting scales (:data:`~tarsim.graphics.fitting.DRAFTING`)."""
+
+
+def drafting(per_cm: float) -> bool:
+    """Whether ``per_cm`` is a drafting scale, 1, 2, 2.5, 4 or 5 × 10ᵏ.
+
+    >>> drafting(2.5), drafting(12.5), drafting(0.4)
+    (True, False, True)
+    """
+    k = math.floor(math.log10(per_cm))
+    return any(math.isclose(per_cm, m * 10.0 ** k, rel_tol=1e-9) for m in DRAFTING)
 
 
 def draw_kutzbach_figure(train: GearTrain, k: Kutzbach, title: str,
-                         notes: tuple[str, ...] = ()) -> Figure:
-    """The diagram ``k`` of ``train`` on a page, with its caption and both scales."""
-    mm = 10.0 / (k.per_cm * k.stated)          # paper mm per drawing metre
+                         notes: tuple[str, ...] = (), grown: float | None = None) -> Figure:
+    """The diagram ``k`` of ``train`` on a page, with its caption and both scales, drawn
+    ``grown`` times as big as ``k``'s scales say (each scale then that many times finer);
+    by default as many of :data:`_GROWN` times as the sheet it is drawn on holds, else 1."""
+    if grown is None:
+        sheet = sheet_drawn_on()
+        for times in _GROWN if sheet is not None else ():
+            if not (drafting(k.per_cm / times) and drafting(k.velocity_per_cm / times)):
+                continue
+            fig = draw_kutzbach_figure(train, k, title, notes, times)
+            if held_by(sheet)(fig):
+                return fig
+        return draw_kutzbach_figure(train, k, title, notes, 1.0)
+    mm = 10.0 * grown / (k.per_cm * k.stated)          # paper mm per drawing metre
 
     def paper(p: g.Point) -> tuple[float, float]:
         x, y = p.xy
@@ -117,8 +145,9 @@ def draw_kutzbach_figure(train: GearTrain, k: Kutzbach, title: str,
                   words("no speed given: drawn for {member} at 1 {unit}, each slope over "
                         "its slope is a speed ratio", member=member_words(
                             train, train.input_member), unit=unit_words(train.units.speed))],
-                 per_cm=k.per_cm, unit=k.unit, scale_name="Radius scale",
-                 second=("Velocity scale", k.velocity_per_cm, f"{k.unit}/s"), notes=notes)
+                 per_cm=k.per_cm / grown, unit=k.unit, scale_name="Radius scale",
+                 second=("Velocity scale", k.velocity_per_cm / grown, f"{k.unit}/s"),
+                 notes=notes)
     return fig
 
 

@@ -24,6 +24,7 @@ from tarsim.constructions.gears.train import GearTrain
 from tarsim.constructions.units import LENGTH_UNITS
 from tarsim.constructions.narration import words
 from ..figure import Figure, Path
+from ..fitting import to_sheet
 from ..labels import LabelPlacer
 from ..scales import draw_caption, nice_per_cm
 from ..symbols import draw_hatched_band
@@ -38,16 +39,20 @@ _ROOM = 55.0       # mm the farthest pitch line is drawn out to, at most
 _SHAFT = 14.0      # mm a shaft runs past the outermost plane
 
 
-def draw_train_schematic(train: GearTrain, title: str, outputs: tuple[int, ...] = ()) -> Figure:
-    """The side view of ``train``, with its caption and radius scale; the input's shaft and
-    those of ``outputs`` leave the drawing along the main axis."""
+def draw_train_schematic(train: GearTrain, title: str, outputs: tuple[int, ...] = (),
+                         per_cm: float | None = None) -> Figure:
+    """The side view of ``train``, with its caption and radius scale ``per_cm`` (by default
+    the nice scale that fits its room, fitted to the sheet it is drawn on); the input's
+    shaft and those of ``outputs`` leave the drawing along the main axis."""
     plane = _planes(train)
     unit = train.units.length if train.sized else "modules"
     per_unit = 1.0 / LENGTH_UNITS[unit] if train.sized else 1.0
     radius = {g.number: float(train.pitch_radius(g.number)) * per_unit for g in train.gears}
     axis = {m: y * per_unit for m, y in _axes(train).items()}
     reach = max(abs(axis[m]) + r for m, r in radius.items())
-    per_cm = nice_per_cm(reach, _ROOM)
+    if per_cm is None:
+        return to_sheet(lambda at: draw_train_schematic(train, title, outputs, at),
+                        nice_per_cm(reach, _ROOM))
     mm = 10.0 / per_cm
     fig = Figure(0.0, 0.0, title=title)
     placer = LabelPlacer(fig)

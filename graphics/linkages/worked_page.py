@@ -20,13 +20,11 @@ from collections.abc import Callable, Sequence
 from dataclasses import replace
 from itertools import product
 
-from shapely import STRtree
-from shapely.geometry import LineString, box
-
 from tarsim.constructions.errors import TarsimError
 from tarsim.constructions.narration import right_to_left, words
 
 from ..figure import Figure, Path, Text, text_width
+from ..fitting import labels_on_lines
 from ..rtl import is_rtl, reading
 from ..paper import Paper, standard
 from ..typeset import spoken_numbers, typeset
@@ -166,27 +164,9 @@ def _regrown(again: Regrow, panel: Figure, results: Figure | None, sheet: tuple[
 
         fig = again(holds)
         if holds(fig) and fig.width * fig.height > best.width * best.height + 1e-6 and \
-                _labels_on_lines(fig) <= _labels_on_lines(panel):
+                labels_on_lines(fig) <= labels_on_lines(panel):
             best, at = fig, each
     return [best], at
-
-
-def _labels_on_lines(fig: Figure) -> int:
-    """How many of ``fig``'s texts lie over one of its lines (an open path), by more than
-    a graze (0.05 mm²): a panel drawn bigger whose labels its placer found less room for
-    is not taken for the one it replaces."""
-    strokes = [LineString(p.points).buffer(0.1) for p in fig.items
-               if isinstance(p, Path) and not p.closed and len(p.points) >= 2]
-    if not strokes:
-        return 0
-    tree = STRtree(strokes)
-    out = 0
-    for t in fig.items:
-        if isinstance(t, Text) and t.text.strip():
-            label = box(*t.box())
-            out += any(label.intersection(strokes[i]).area > 0.05
-                       for i in tree.query(label))
-    return out
 
 
 def _balanced(groups: list[tuple[list[Figure], tuple[float, float]]],
