@@ -3,7 +3,8 @@
 The page is its data (:func:`~tarsim.exercises.linkages.view.view_data`, as JSON), a stylesheet
 and a script, all inline: no network, no CDN, no server, so it opens from disk in any
 current browser and its Content-Security-Policy forbids it to fetch anything. The
-script (``page/view.js``) draws no figure of its own: it writes the figures' primitives
+script (``page/view.js``, with ``page/view_numbers.js`` for the readout and the curve)
+draws no figure of its own: it writes the figures' primitives
 as the SVG writer does (:mod:`.figure_data`) and moves them with the named points each
 frame gives (:mod:`.figure_anchors`).
 """
@@ -31,7 +32,7 @@ def view_html(data: dict[str, Any]) -> str:
     return (_asset("view.html")
             .replace("__TITLE__", _escape(title))
             .replace("__CSS__", _asset("view.css"))
-            .replace("__JS__", _asset("view.js"))
+            .replace("__JS__", _asset("view_numbers.js") + _asset("view.js"))
             .replace("__DATA__", payload))
 
 

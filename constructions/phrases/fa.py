@@ -157,6 +157,7 @@ WORDS: dict[str, str] = {
     # the interactive page (tarsim view)
     "figure": "شکل", "play": "پخش",
     "download this frame (SVG)": "بارگیری این قاب (SVG)", "Kennedy lines": "خطوط کندی",
+    "reset view": "بازگشت به نمای نخست",
     "labels": "برچسب\u200cها", "step numbers": "شمارهٔ مراحل",
     # a graded drawing's overlay
     "correct": "درست", "wrong magnitude": "اندازهٔ نادرست", "wrong direction": "راستای نادرست",

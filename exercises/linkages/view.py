@@ -39,6 +39,8 @@ from .exercise_file import Exercise
 from tarsim.constructions.linkages.given_rate import convert
 from .view_figures import PageFigures, solved_at
 from .view_fit import frame_fits
+from .view_paper import home_points
+from .view_readout import plotted, readout
 from .view_frames import (FRAME_CHECK, Template, constructed, construction_points,
                           frame_outcomes, truth_of_turn)
 
@@ -91,9 +93,8 @@ def view_data(ex: Exercise, *, step_deg: float = 0.5,
     chunks = [range(k, n, _CHUNKS) for k in range(_CHUNKS)]
     pages = PageFigures(first, sol, names, sense, where, _PAGE_LANGUAGES)
     drawings = pages.jobs()
-    def curve() -> tuple[dict, list]:
-        sweep = sweep_exercise(first, n)
-        return _plot(sweep), _marks(sweep)
+    def curve() -> list:
+        return _marks(sweep_exercise(first, n))
 
     # The frames, the figures' drawings and the output's curve share the cores, the
     # longest first.
@@ -105,7 +106,7 @@ def view_data(ex: Exercise, *, step_deg: float = 0.5,
     if progress is not None:
         progress(n)
     figures = pages.figures(done[_CHUNKS:-1])
-    plot, marks = done[-1]
+    marks = done[-1]
     names = _pruned(names, core, frames, figures)
     for f in figures:
         turning = f["drawn"][_PAGE_LANGUAGES[0]].get("turning")
@@ -128,7 +129,9 @@ def view_data(ex: Exercise, *, step_deg: float = 0.5,
         "figures": figures,
         "ui": {lang: _ui(lang) for lang in _PAGE_LANGUAGES},
         "frames": frames,
-        "plot": plot,
+        "plot": plotted(first, mech, turn),
+        "readout": readout(first, mech, turn),
+        "home": home_points(mech, names),
         "marks": marks,
     }
 
@@ -216,8 +219,8 @@ _PAGE_LANGUAGES = ("en", "fa")
 assert set(_PAGE_LANGUAGES) <= set(LANGUAGES)
 
 
-_UI = ("figure", "play", "download this frame (SVG)", "Kennedy lines", "construction lines",
-       "labels", "step numbers")
+_UI = ("figure", "play", "download this frame (SVG)", "reset view", "Kennedy lines",
+       "construction lines", "labels", "step numbers", "cw", "ccw", "{what} at {where}")
 """The page's own words (its controls and layers), said from the catalogue."""
 
 _LOST = "instant centres"
@@ -227,17 +230,6 @@ _LOST = "instant centres"
 def _ui(lang: str) -> dict[str, str]:
     with speaking(lang):
         return {**{w: words(w) for w in _UI}, "lost": words(_LOST)}
-
-
-def _plot(sweep) -> dict[str, Any]:
-    """The output's velocity round the turn (the analytic curve the sweep gives), for the
-    page's plot and its cursor."""
-    from .sweep import KEYS
-
-    key = KEYS[sweep.output.kind][1][0]          # the speed, signed along a guide or not
-    return {"symbol": sweep.output.symbol(key), "key": key,
-            "unit": "rad/s" if sweep.output.kind == "link" else "m/s",
-            "values": [round(s.values[key], 9) if s.values else None for s in sweep.samples]}
 
 
 def _marks(sweep) -> list[dict[str, Any]]:

@@ -38,6 +38,7 @@ from tarsim.graphics.linkages.scene import draw_scene
 from .exercise_file import Exercise
 from .solution import Overall, Solution, solve_positions
 from .view_frames import _flat
+from .view_paper import mark_paper
 
 __all__ = ["PageFigures", "named_points", "solved_at", "NEXT", "FAR"]
 
@@ -355,7 +356,7 @@ def _drawn(figs: list[Figure | None], named: list, steps: dict[str, list[int]]
                 extra["at"] = [number(item.at[0]), number(item.at[1])]
         badge = item if isinstance(item, Circle) and item.style == "badge" else None
         more.append(extra or None)
-    return figure_data(fig, more)
+    return mark_paper(figure_data(fig, more), figs[1])
 
 
 def _swing(item: Path | Circle | Text, fig: Figure, named) -> list | None:
