@@ -83,7 +83,11 @@ const Editor = (() => {
     return xy.map(v => Math.round(v / g) * g);
   }
   function fit() {
-    const pts = Object.values(app.positions());
+    const pos = app.positions(), pts = Object.values(pos);
+    for (const c of app.model.ex.contact ?? []) {          // a wheel's whole circle
+      const [x, y] = pos[c.circle.centre] ?? [NaN, NaN], r = c.circle.radius;
+      if (Number.isFinite(x)) pts.push([x - r, y - r], [x + r, y + r]);
+    }
     if (!pts.length) { view = { s: 1.1, cx: 150, cy: 90 }; return; }
     const xs = pts.map(p => p[0]), ys = pts.map(p => p[1]);
     const [w, h] = size();

@@ -36,7 +36,7 @@ const Model = (() => {
     for (const k of ["slider", "contact"]) if (!ex[k]?.length) delete ex[k];
     const inputPoints = new Set(link(m, ex.input?.link)?.points ?? []);
     for (const p of m.nearPoints) {
-      if (!isFrame(m, p) && !inputPoints.has(p) && m.sketch[p] && movingPoints(m).includes(p)) {
+      if (!isFrame(m, p) && !inputPoints.has(p) && m.sketch[p] && m.ex.link.some(l => l.points.includes(p))) {
         (ex.assembly ??= {})[p] = m.sketch[p].map(v => round(v, 2));
       }
     }
@@ -211,13 +211,10 @@ const Model = (() => {
     m.ex.ask.find = find;
   }
 
-  /** Can it be sent to the server yet? A linkage needs an input link turning about a frame
-      point; until then the page says what is missing rather than asking. */
+  /** Can it be sent to the server yet? Not before the input names a link; until then the
+      page says what is missing rather than asking (the server judges all the rest). */
   function ready(m) {
-    const l = link(m, m.ex.input?.link);
-    if (!l) return "hint_input";
-    if (!isFrame(m, l.points[0])) return "hint_pivot";
-    return null;
+    return link(m, m.ex.input?.link) ? null : "hint_input";
   }
 
   return { empty, fromToml, toToml, addGround, addPin, addLink, addBlock, addWheel, rename,

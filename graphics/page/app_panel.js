@@ -206,13 +206,19 @@ const Panel = (() => {
   // --- the input and the asks ---------------------------------------------------------------
   function input() {
     const m = app.model, i = m.ex.input;
-    const pivoted = m.ex.link.filter(l => Model.isFrame(m, l.points[0]));
+    // Any link may be the input (a crank about a frame pivot, or a wheel rolling on the frame).
+    const pivoted = m.ex.link.filter(l => l.points.length > 1);
     const u = m.ex.units ?? {};
     let h = `<h2>${t("input")}</h2>` +
       select("i-link", pivoted.length ? pivoted.map(l => [l.number, `${l.number} (${l.points.join("–")})`]) : [["", "—"]], i.link, t("input_link"));
     const omega = typeof i.omega === "number" ? i.omega : "";
+    // The input's rates may be given by another member (speed = {point, value}, omega =
+    // {link, value}): shown as the file gives them, and kept.
+    const given = i.speed ?? (typeof i.omega === "object" ? i.omega : null);
     h += field("i-angle", i.angle ?? 0, `${t("theta")}${i.link}`, angleUnit()) +
-      field("i-omega", omega, `${t("omega")}${i.link}`, u.angular_velocity ?? "rad/s", "number", typeof i.omega === "number" || i.omega === undefined ? "" : "disabled") +
+      (given ? `<p class="given">${t("given")}: <bdi dir="ltr">${esc(i.speed ? "speed" : "omega")} = { ${
+        esc(Object.entries(given).map(([k, v]) => `${k} = ${JSON.stringify(v)}`).join(", "))} }</bdi></p>`
+             : field("i-omega", omega, `${t("omega")}${i.link}`, u.angular_velocity ?? "rad/s")) +
       field("i-alpha", typeof i.alpha === "number" ? i.alpha : 0, `${t("alpha")}${i.link}`, "rad/s²");
     h += select("u-length", ["mm", "cm", "m", "in"].map(k => [k, k]), u.length ?? "mm", `${t("units")}`);
     const box = document.getElementById("input-box");

@@ -111,8 +111,13 @@ const App = (() => {
   }
 
   function offPaper() {
-    const svg = $("editor"), r = svg.getBoundingClientRect();
-    return Object.values(app.positions()).some(xy => {
+    const svg = $("editor"), r = svg.getBoundingClientRect(), pos = app.positions();
+    const pts = Object.values(pos);
+    for (const c of app.model.ex.contact ?? []) {
+      const xy = pos[c.circle.centre];
+      if (xy) pts.push([xy[0] - c.circle.radius, xy[1]], [xy[0] + c.circle.radius, xy[1]]);
+    }
+    return pts.some(xy => {
       const [x, y] = Editor.pageXY(xy);
       return x < r.left + 20 || x > r.right - 20 || y < r.top + 40 || y > r.bottom - 20;
     });
