@@ -12,8 +12,10 @@
 
 const D = JSON.parse(document.getElementById("data").textContent);
 const HOT = "#c62828";
+const HOME_REACH = 0.25;      // how far beyond the drawing, of its size, the opening view looks
+const HOME_NAME = 8;          // paper mm round a point the frames take: its symbol and name
 const S = {lang: "en", fig: 0, step: 0, frame: 0, playing: null, drag: null, shown: null,
-           layers: {}, boxes: {}, times: [], items: []};
+           layers: {}, boxes: {}, homes: {}, fitted: {}, times: [], items: []};
 // The layers a reader may hide, as the page's boxes name them (a primitive's ``l``).
 document.querySelectorAll("[data-layer]").forEach(box => { S.layers[box.dataset.layer] = box.checked; });
 
@@ -103,14 +105,51 @@ function build() {
     const [kind, , g, more = {}] = item, el = els[k];
     const at = kind === "t" ? more.at : kind === "c" ? g.slice(0, 2) : g;
     return {el, kind, g, tags: more.s, move: more.m, at, arc: more.a, fixed: more.f, sc: more.sc,
-            frame: more.fr,
+            frame: more.fr, paper: more.p,
             base: kind === "p" || kind === "z" ? el.getAttribute("d") : null};
   });
   S.shown = {fig: S.fig, lang: S.lang, turning: S.frame !== 0};
-  if (!S.boxes[S.fig]) {             // the drawing, a little white round it
-    const [x0, y0, x1, y1] = d.box, m = 0.03 * Math.max(x1 - x0, y1 - y0);
-    S.boxes[S.fig] = [x0 - m, y0 - m, x1 - x0 + 2 * m, y1 - y0 + 2 * m];
+  // The figure's home: all that each drawing of it (at the position, and turning) draws.
+  const key = `${S.fig} ${S.lang}`, was = S.homes[key], mine = home(svg, d);
+  S.homes[key] = was ? [Math.min(was[0], mine[0]), Math.min(was[1], mine[1]),
+                        Math.max(was[0] + was[2], mine[0] + mine[2]) - Math.min(was[0], mine[0]),
+                        Math.max(was[1] + was[3], mine[1] + mine[3]) - Math.min(was[1], mine[1])] : mine;
+  // the figure's view, until the reader zooms or pans it: its home in the language shown
+  if (!S.boxes[S.fig] || S.fitted[S.fig]) { S.boxes[S.fig] = S.homes[key].slice(); S.fitted[S.fig] = true; }
+}
+
+/* The view a figure opens in and the reset button goes back to: all it draws at the
+   exercise's position, as the browser sets its words (a Persian caption runs wider than
+   the box the figure was laid out in), and where the frames take the points D.home names
+   (the mechanism's joints) with room for their names, a little white round it all, so
+   that no label is cut at the panel's edge. */
+function home(svg, d) {
+  let [x0, y0, x1, y1] = d.box;
+  const grow = (a, b, c, e) => {
+    x0 = Math.min(x0, a); y0 = Math.min(y0, b); x1 = Math.max(x1, c); y1 = Math.max(y1, e);
+  };
+  const all = svg.getBBox();
+  if (all.width || all.height) grow(all.x, all.y, all.x + all.width, all.y + all.height);
+  // A point a frame takes beyond a quarter of the drawing's size round it is left to the
+  // reader to pan to.
+  const reach = HOME_REACH * Math.max(x1 - x0, y1 - y0);
+  const [r0, s0, r1, s1] = [x0 - reach, y0 - reach, x1 + reach, y1 + reach];
+  const f0 = figure().drawn[S.lang] || figure().drawn.en;
+  for (const drawing of [f0, f0.turning]) {
+    const v = drawing && D.home && drawing.views[D.home.view];
+    if (!v) continue;
+    for (const f of D.frames) {
+      const xy = f.at && f.at[D.home.view];
+      for (const k of xy ? D.home.points : []) {
+        if (xy[2 * k] === null) continue;
+        const x = v[1] + v[0] * xy[2 * k], y = v[2] - v[0] * xy[2 * k + 1];
+        if (x >= r0 && x <= r1 && y >= s0 && y <= s1)
+          grow(x - HOME_NAME, y - HOME_NAME, x + HOME_NAME, y + HOME_NAME);
+      }
+    }
   }
+  const m = 0.03 * Math.max(x1 - x0, y1 - y0);
+  return [x0 - m, y0 - m, x1 - x0 + 2 * m, y1 - y0 + 2 * m];
 }
 
 // ----- turning: each primitive moved with the named points it stands on ----------------------
@@ -253,7 +292,10 @@ function draw() {
       || S.shown.turning !== (S.frame !== 0)) build();
   const svg = sheet(), f = D.frames[S.frame], box = S.boxes[S.fig];
   svg.setAttribute("viewBox", box.map(num).join(" "));
-  for (const layer of Object.keys(S.layers)) svg.classList.toggle(`hide-${layer}`, !S.layers[layer]);
+  // Step numbers number the steps, which are drawn at the exercise's position: while the
+  // input turns they are hidden, and never stand over a name carried another way.
+  for (const layer of Object.keys(S.layers))
+    svg.classList.toggle(`hide-${layer}`, !S.layers[layer] || (layer === "numbers" && S.frame !== 0));
   const turning = S.frame !== 0;
   for (const it of S.items) {
     it.el.classList.remove("later", "done", "cur");
@@ -298,55 +340,6 @@ function drawSteps() {
   stepper.max = Math.max(0, list.length - 1);
   stepper.value = Math.max(0, S.step);
   ol.querySelector("li.current")?.scrollIntoView({block: "nearest"});
-}
-
-function drawReadout(f) {
-  const deg = ((f.angle * 180 / Math.PI) % 360 + 360) % 360;
-  const fa = S.lang === "fa";
-  let state;
-  if (!f.at) state = `<span class="bad">${fa ? "سرهم نمی‌شود" : "cannot be assembled"}: ${esc(f.why)}</span>`;
-  else if (!f.ok) state = `<span class="bad">${fa ? "وارسی نادرست" : "check failed"}: ${esc(f.why)}</span>`;
-  else state = fa ? "✓ با حل تحلیلی وارسی شد" : "✓ checked against the analytic solution";
-  const steps = S.frame === 0 ? "" : (fa ? " — مراحل در وضعیت خود تمرین رسم می‌شوند: برای بازگشت روی یک مرحله کلیک کنید"
-                                        : " — the steps are drawn at the exercise's own position: click a step to go back");
-  const lost = f.lost ? ` — ${esc((D.ui[S.lang] || D.ui.en).lost)}: ${esc(f.lost)}` : "";
-  const value = f.at && D.plot.values[S.frame] !== null
-    ? ` — ${esc(D.plot.symbol)} = ${D.plot.values[S.frame].toPrecision(4)} ${esc(D.plot.unit)}` : "";
-  document.getElementById("readout").innerHTML =
-    `${esc(D.input.symbol)} = ${deg.toFixed(1)}° (${fa ? "قاب" : "frame"} ${S.frame + 1}/${D.frames.length})${value} ${state}${lost}${steps}`;
-  document.getElementById("angle").value = S.frame;
-}
-
-// ----- the output's curve ------------------------------------------------------------------
-function drawPlot() {
-  const svg = document.getElementById("plot"), box = svg.getBoundingClientRect();
-  const w = box.width || 800, h = box.height || 100, vals = D.plot.values, n = vals.length;
-  svg.setAttribute("viewBox", `0 0 ${w} ${h}`);
-  const ok = vals.filter(x => x !== null), lo = Math.min(0, ...ok), hi = Math.max(0, ...ok);
-  // x as the slider's thumb stands (its track inset by half a thumb at each end)
-  const y = x => h - 14 - (x - lo) / ((hi - lo) || 1) * (h - 28), x = k => 8 + k / (n - 1) * (w - 16);
-  let d = "", pen = "M";
-  vals.forEach((val, k) => { if (val === null) { pen = "M"; return; }
-                             d += `${pen}${num(x(k))},${num(y(val))} `; pen = "L"; });
-  const marks = D.marks.map(m => `<line x1="${num(x(markFrame(m)))}" x2="${num(x(markFrame(m)))}" y1="4" y2="${h - 10}" stroke="${m.kind === "dead" ? HOT : "#999"}" stroke-dasharray="3 3"/>`).join("");
-  svg.innerHTML = `<line x1="40" x2="${w - 10}" y1="${num(y(0))}" y2="${num(y(0))}" stroke="#ccc"/>${marks}`
-    + `<path d="${d}" fill="none" stroke="#111" stroke-width="1.5"/>`
-    + `<text x="${w - 6}" y="14" text-anchor="end" style="font:italic 12px 'DejaVu Serif'">${esc(D.plot.symbol)} (${esc(D.plot.unit)})</text>`
-    + `<text x="12" y="${num(y(hi) + 4)}" style="font:11px 'DejaVu Sans'">${hi.toPrecision(3)}</text>`
-    + `<text x="12" y="${num(y(lo))}" style="font:11px 'DejaVu Sans'">${lo.toPrecision(3)}</text>`
-    + `<line id="cursor" y1="4" y2="${h - 10}" stroke="${HOT}" stroke-width="1.5"/>`;
-  S.plotX = x;
-  drawCursor();
-}
-
-function drawCursor() {
-  const c = document.getElementById("cursor");
-  if (c && S.plotX) { const x = S.plotX(S.frame); c.setAttribute("x1", x); c.setAttribute("x2", x); }
-}
-
-function markFrame(m) {
-  const n = D.frames.length, t = (m.angle - D.input.angle) / D.input.step;
-  return ((Math.round(t) % n) + n) % n;
 }
 
 // ----- input -------------------------------------------------------------------------------
@@ -410,6 +403,7 @@ function pointer() {
       return;
     }
     const {x, y, box, k} = S.drag;
+    S.fitted[S.fig] = false;
     S.boxes[S.fig] = [box[0] - (e.clientX - x) * k, box[1] - (e.clientY - y) * k, box[2], box[3]];
     draw();
   });
@@ -417,19 +411,26 @@ function pointer() {
   svg.addEventListener("wheel", e => {
     e.preventDefault();
     const [x, y] = onPaper(e), z = Math.exp(e.deltaY / 500), box = S.boxes[S.fig];
+    S.fitted[S.fig] = false;
     S.boxes[S.fig] = [x - (x - box[0]) * z, y - (y - box[1]) * z, box[2] * z, box[3] * z];
     draw();
   }, {passive: false});
 }
 
-/* The figure as shown, as a file: what is hidden left out, each primitive as written. */
+/* The figure as shown, as a file: what is hidden left out, each primitive as written.
+   A turned frame keeps the figure's paper too (its title, caption, scale bars and
+   legend, which the page shows at the exercise's position only), its caption saying the
+   frame's angle. */
 function download() {
-  const d = drawn(), svg = sheet(), parts = [];
+  const d = drawn(), svg = sheet(), parts = [], turned = S.frame !== 0;
   for (const it of S.items) {
-    if (getComputedStyle(it.el).display === "none") continue;
+    const paper = turned && it.paper;
+    if (!paper && getComputedStyle(it.el).display === "none") continue;
     const el = it.el.cloneNode(true);
     el.removeAttribute("class"); el.removeAttribute("data-i");
     if (it.el.classList.contains("done")) el.setAttribute("opacity", ".35");
+    if (paper && it.paper === "angle") el.querySelectorAll("text, tspan").forEach(t => {
+      for (const node of t.childNodes) if (node.nodeType === 3) node.data = atAngle(node.data); });
     parts.push(el.outerHTML);
   }
   const text = `<svg xmlns="http://www.w3.org/2000/svg" width="${d.w}mm" height="${d.h}mm" viewBox="0 0 ${d.w} ${d.h}">`
@@ -443,13 +444,35 @@ function download() {
   return text;
 }
 
+/* ``text`` with the input's angle said at the frame shown: "θ₂ = 90°" at θ2 = 40° is
+   "θ₂ = 40°", in the text's own digits (the pattern exercises/linkages/view_paper.py
+   marks such a text by). */
+const ANGLE = /(θ[₀-₉0-9]+ = )([−\-0-9.۰-۹٫]+)(°)/g;
+function atAngle(text) {
+  const plain = D.input.symbol, sub = plain.replace(/[0-9]/g, c => "₀₁₂₃₄₅₆₇₈₉"[c]);
+  const deg = ((D.frames[S.frame].angle * 180 / Math.PI) % 360 + 360) % 360;
+  const said = String(Number(deg.toFixed(2)));
+  return text.replace(ANGLE, (all, head, value, tail) => {
+    if (head !== `${sub} = ` && head !== `${plain} = `) return all;
+    const fa = /[۰-۹]/.test(value);
+    return head + (fa ? said.replace(/[0-9]/g, c => "۰۱۲۳۴۵۶۷۸۹"[c]).replace(".", "٫") : said) + tail;
+  });
+}
+
+/* Back to the view the figure opened in: its zoom and pan undone. */
+function resetView() {
+  S.boxes[S.fig] = S.homes[`${S.fig} ${S.lang}`].slice();
+  S.fitted[S.fig] = true;
+  draw();
+}
+
 function start() {
   document.getElementById("title").textContent = D.title[S.lang] || D.title.en;
   const sel = document.getElementById("figure");
   const options = () => D.figures.map((f, i) =>
     `<option value="${i}"${i === S.fig ? " selected" : ""}>${esc(f.heading[S.lang] || f.heading.en)}</option>`).join("");
   sel.innerHTML = options();
-  sel.addEventListener("change", () => { S.fig = +sel.value; S.step = numbered().length - 1; draw(); });
+  sel.addEventListener("change", () => { S.fig = +sel.value; S.step = 0; draw(); });
   const lang = document.getElementById("lang");
   lang.hidden = !D.figures.some(f => f.drawn.fa);
   lang.addEventListener("click", () => {
@@ -459,6 +482,7 @@ function start() {
     document.getElementById("title").dir = S.lang === "fa" ? "rtl" : "ltr";
     sel.innerHTML = options();
     draw();
+    drawPlot();
   });
   document.getElementById("first").onclick = () => setStep(-1);
   document.getElementById("prev").onclick = () => setStep(S.step - 1);
@@ -490,15 +514,16 @@ function start() {
     `<span class="${m.kind}" title="${m.kind === "dead" ? esc(m.why || "dead point") : "limit position"}"`
     + ` style="left:calc(7px + ${(markFrame(m) / Math.max(1, D.frames.length - 1)).toFixed(5)} * (100% - 16px))"></span>`).join("");
   document.getElementById("download").onclick = download;
+  document.getElementById("reset").onclick = resetView;
   pointer();
   window.addEventListener("resize", () => { draw(); drawPlot(); });
-  S.step = numbered().length - 1;
+  S.step = 0;                         // step 1: a construction is read from its start
   draw();
   drawPlot();
 }
 
 /* For tests and benchmarks: set a frame or a step, find a named point on the page and a
    place in a view's world, and the time each redraw took. */
-window.tarsimView = {setFrame, setStep, screen, world, download, data: D, state: S,
+window.tarsimView = {setFrame, setStep, screen, world, download, resetView, data: D, state: S,
                      frameTimes: () => S.times.slice()};
 start();
