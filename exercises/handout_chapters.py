@@ -139,6 +139,10 @@ def rotor_sheets(ex, sheet: tuple[float, float]) -> list[Figure]:
         from .handout_engines import engine_sheets
 
         return engine_sheets(ex, sheet)
+    if not r.planes:                                 # its out-of-balance asked
+        from .handout_rotors import unbalance_sheets
+
+        return unbalance_sheets(ex, sheet)
     s = chapter_of(ex).solve(ex)
     unit, metre = ex.length_unit, LENGTH_UNITS[ex.length_unit]
     name = s.exercise.name
@@ -213,14 +217,15 @@ def _asked_rotor(r, weights: bool = False) -> list[Line]:
     return out
 
 
-def _rotor_table(ex, unit: str, metre: float) -> Figure:
+def _rotor_table(ex, unit: str, metre: float, reference: float | None = None) -> Figure:
     """The rotor's table as the solution sets it (m, r, θ, l, m·r, m·r·l), the given cells
-    filled and every product, and what the balancing planes' masses are to be, empty."""
+    filled and every product, and what the balancing planes' masses are to be, empty; l
+    from the first balancing plane, or from ``reference`` (m) where there is none."""
     from tarsim.graphics.train_table import draw_train_table
 
     r = ex.rotor
-    ref = r.planes[0].position
-    two = len(r.planes) == 2
+    ref = r.planes[0].position if r.planes else reference
+    two = len(r.planes) == 2 or (not r.planes and len({m.plane for m in r.masses}) > 1)
     flat = not two and len({m.plane for m in r.masses} | {ref}) == 1
     length, kg = unit_words(unit), unit_words("kg")
     held, mr, mrl = (("W (N)", f"W·r ({unit_words('N·m')})", f"W·r·l ({unit_words('N·m²')})")

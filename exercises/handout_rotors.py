@@ -20,7 +20,7 @@ from tarsim.graphics.handout import Line, compose_handout, draw_statement
 
 from .handout_text import math_text, number
 
-__all__ = ["open_rotor_sheets"]
+__all__ = ["open_rotor_sheets", "unbalance_sheets"]
 
 _UNKNOWN = {"mass": "its mass", "radius": "its radius", "angle": "its angle",
             "plane": "its plane"}
@@ -139,3 +139,53 @@ def _parts_table(ex, unit: str, metre: float) -> Figure:
              + [""] * (1 if rotor.static else 2)) for p in rotor.parts]
     return draw_train_table(words("{name}: {what}", name=ex.name,
                                   what=words("the table to fill in")), heads, rows)
+
+
+def unbalance_sheets(ex, sheet: tuple[float, float]) -> list[Figure]:
+    """A rotor with no balancing plane, its out-of-balance force and couple (and the loads on
+    its bearings) asked: its end view and side view as the solution draws them (every mass
+    given), the statement, its table with the products empty, and an empty frame for each
+    polygon at the solution's scale."""
+    from tarsim.graphics.balancing.balance_figures import draw_end_view, draw_side_view
+
+    from .balancing.rotor_unbalance import about
+    from .chapters import chapter_of
+    from .handout_chapters import _empty_balance_polygon, _given_rotor, _held, _rotor_table
+
+    sol = chapter_of(ex).solve(ex)
+    r, u, name = ex.rotor, sol.unbalance, sol.exercise.name
+    unit, metre = ex.length_unit, LENGTH_UNITS[ex.length_unit]
+    held = "N" if ex.weights else "kg"
+    masses = [(m.name, m.radius, words("{name}: {mass} {kg} at {radius} {unit}, {angle}°",
+                                       name=m.name, mass=numerals(number(_held(ex, m.mass))),
+                                       kg=unit_words(held),
+                                       radius=numerals(number(m.radius / metre)),
+                                       unit=unit_words(unit),
+                                       angle=numerals(number(math.degrees(m.angle)))))
+              for m in r.masses]
+    panels = [draw_end_view(u.construction, masses, words("{name}: space diagram", name=name),
+                            unit, metre)]
+    asked = [Line(words("Find"), heading=True), Line(words("the out-of-balance force"))]
+    if "couple" in u.closing:
+        asked.append(Line(words("the out-of-balance couple about the plane at {place}",
+                                place=math_text(number(about(r) / metre))
+                                + f" {unit_words(unit)}")))
+    asked += [Line(words("the load on bearing {name}", name=b)) for b, _ in r.bearings]
+    bearings = [Line(words("bearing {name} at {plane}", name=b, plane=math_text(
+        number(x / metre)) + f" {unit_words(unit)}")) for b, x in r.bearings]
+    panels.append(draw_statement(_given_rotor(ex, unit, metre) + bearings + asked))
+    panels.append(_rotor_table(ex, unit, metre, reference=about(r)))
+    if "couple" in u.closing:
+        panels.insert(1, draw_side_view([(m.name, m.plane, "link") for m in r.masses]
+                                        + [(b, x, "normal") for b, x in r.bearings],
+                                        words("{name}: side view", name=name), unit, metre,
+                                        found="a bearing"))
+    for which in u.closing:
+        panels.append(_empty_balance_polygon(
+            u.construction, words("{name}: force polygon", name=name) if which == "force"
+            else words("{name}: couple polygon about the plane at {place} {unit}", name=name,
+                       place=numerals(number(about(r) / metre)), unit=unit_words(unit)),
+            u.tips[which], u.closing[which], "kg·m" if which == "force" else "kg·m²"))
+    return compose_handout(words("{name}: {what}", name=name, what=words("problem sheet")),
+                           panels, sheet=sheet)
+

@@ -187,5 +187,10 @@ WORDS: dict[str, str] = {
     "the greatest unbalanced force, and where": "بیشترین نیروی بالانس‌نشده، و جای آن",
     "the balance mass": "جرم بالانس",
     "the greatest secondary force": "بیشترین نیروی ثانویه",
+    "the out-of-balance force": "نیروی نامتعادل",
+    "the out-of-balance couple about the plane at {place}": "کوپل نامتعادل حول صفحهٔ {place}",
+    "the load on bearing {name}": "بار روی یاتاقان {name}",
+    "bearing {name} at {plane}": "یاتاقان {name} در {plane}",
+    "a bearing": "یک یاتاقان",
 }
 """These sheets' words as Persian says them."""
