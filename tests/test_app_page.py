@@ -457,3 +457,20 @@ def test_a_pivot_dragged_and_a_link_deleted_are_solved_again(page):
     assert ex["ask"]["find"] == ["centres", "omega3", "V_B"]
     line = page.inner_text("#bubble")
     assert "2 degrees of freedom" in line and page.is_visible("#bubble")
+
+
+def test_a_gear_train_opens_as_its_file_typed_in_and_is_solved_as_it_is_typed(page):
+    """Another chapter's exercise has no linkage to draw: its file is edited as text, solved
+    on each pause in typing, a bad number refused in the server's line over the text."""
+    page.select_option("#open", "id:planetary-q1")
+    assert settled(page) == "solved"
+    assert page.is_visible("#source") and not page.is_visible("#paper")
+    assert page.locator("#figure svg").count() == 1
+    assert "-0.75" in page.inner_text("#table").replace("−", "-")       # ω4/ω2 = −3/4
+    text = page.input_value("#source")
+    page.fill("#source", text.replace("teeth = 60", "teeth = -60", 1))
+    assert settled(page) == "error"
+    assert page.is_visible("#raw-note.err") and "\n" not in page.inner_text("#raw-note")
+    page.fill("#source", text)
+    assert settled(page) == "solved"
+    assert not page.is_visible("#raw-note.err")

@@ -140,7 +140,12 @@ const App = (() => {
     if (s === "error" && app.solution) $("solution").title = t("stale");
   }
 
-  function redraw() { Editor.draw(); Panel.render(); }
+  function redraw() {
+    Editor.draw(); Panel.render();
+    const note = $("raw-note");                // another chapter's file: its error over it
+    note.textContent = app.error ? `⚠ ${app.error.text}` : t("raw_note");
+    note.classList.toggle("err", !!app.error);
+  }
 
   // --- the solution -------------------------------------------------------------------------
   function showSolution() {
@@ -209,6 +214,7 @@ const App = (() => {
       items.push(`<span data-q="V_${esc(p)}">V_${esc(p)} = ${sig(v.magnitude)} ${esc(v.unit ?? "mm/s")}` +
         (v.angle_deg !== undefined ? ` <b>∠ ${sig(v.angle_deg, 4)}°</b>` : "") + "</span>");
     }
+    if (s.angle === null || s.angle === undefined) { $("readout").innerHTML = ""; return; }
     $("readout").innerHTML = `<span><b>${esc(t("readout"))} θ = ${sig(s.angle ?? fileAngle(), 5)}°</b></span>` + items.join("");
   }
 
@@ -238,6 +244,8 @@ const App = (() => {
     let m = null;
     try { m = Model.fromToml(toml); } catch { m = null; }
     app.raw = m ? null : toml;
+    document.body.classList.toggle("raw", !!app.raw);
+    $("source").value = app.raw ?? "";
     app.model = m ?? Model.empty();
     app.selected = null; app.shown = null; app.error = null; app.solution = null; app.angle = null;
     $("name").value = app.raw ? (/^name\s*=\s*"(.*)"/m.exec(toml)?.[1] ?? "") : app.model.ex.name ?? "";
@@ -313,6 +321,7 @@ const App = (() => {
     $("reset-angle").onclick = () => { app.angle = null; showAngle(); schedule(0); };
     document.querySelectorAll("#downloads [data-what]").forEach(b => b.onclick = () => download(b.dataset.what));
     $("save").onclick = save;
+    $("source").oninput = e => { app.raw = e.target.value; schedule(400); };
     $("figure").onclick = e => {            // a closer look at the figure, and back
       const f = $("figure"), r = f.getBoundingClientRect();
       const at = [(e.clientX - r.left) / r.width, (e.clientY - r.top) / r.height];
@@ -325,7 +334,7 @@ const App = (() => {
     if (q.get("id")) open("id:" + q.get("id")); else if (q.get("file")) open("file:" + q.get("file")); else fresh();
   }
   function fresh() {
-    app.source = {}; app.raw = null; app.model = Model.empty(); app.selected = null; app.shown = null; app.error = null;
+    app.source = {}; app.raw = null; document.body.classList.remove("raw"); app.model = Model.empty(); app.selected = null; app.shown = null; app.error = null;
     app.solution = null; app.angle = null;
     $("name").value = app.model.ex.name; $("name").disabled = false;
     ["fig-tabs", "figure", "table", "steps", "readout"].forEach(id => { $(id).innerHTML = ""; });

@@ -45,6 +45,7 @@ const WORDS = {
     polygon: "velocity polygon", line_of_transmission: "line of transmission", klein: "Klein",
     centres: "instant centres", ccw: "ccw", cw: "cw",
     offline: "The server does not answer: is tarsim serve still running?",
+    raw_note: "Not a linkage: the paper builds linkages. Edit this exercise's file here; it is solved as you type.",
   },
   fa: {
     app: "ترسیم — ساختن مکانیزم", open: "باز کردن", new: "تازه", lang: "English",
@@ -89,5 +90,6 @@ const WORDS = {
     polygon: "چندضلعی سرعت", line_of_transmission: "خط انتقال", klein: "کلاین",
     centres: "مراکز آنی", ccw: "پادساعتگرد", cw: "ساعتگرد",
     offline: "سرور پاسخ نمی‌دهد: آیا tarsim serve هنوز در کار است؟",
+    raw_note: "این تمرین سازوکار میله‌ای نیست: کاغذ برای ساختن مکانیزم‌های میله‌ای است. پروندهٔ تمرین را این‌جا ویرایش کنید؛ با هر تغییر دوباره حل می‌شود.",
   },
 };
