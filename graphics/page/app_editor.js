@@ -365,5 +365,5 @@ const Editor = (() => {
     b.style.left = best[0] + "px"; b.style.top = best[1] + "px";
   }
 
-  return { init, toolbar, setTool, draw, fit, pageXY, colour, view: () => view };
+  return { init, toolbar, setTool, draw, fit, pageXY, colour };
 })();

@@ -258,5 +258,5 @@ const Panel = (() => {
     box.querySelectorAll("input").forEach(e => e.addEventListener("change", collect));
   }
 
-  return { init, render, num };
+  return { init, render };
 })();

@@ -49,13 +49,15 @@ const App = (() => {
       the slider rests, so the chosen construction is redrawn at that angle. */
   function schedule(ms, quickFirst = false) {
     clearTimeout(app.timer); clearTimeout(app.quick);
-    document.body.dataset.state = "pending";         // an edit not yet answered
+    app.unasked = true;                              // an edit not yet sent
+    document.body.dataset.state = "pending";
     if (quickFirst) app.quick = setTimeout(() => solve(false), ms);
     app.timer = setTimeout(() => solve(true), quickFirst ? ms + 220 : ms);
   }
   function text() { return app.raw ?? Model.toToml(app.model); }
 
   async function solve(figures = true) {
+    if (figures) app.unasked = false;
     if (!app.raw) {
       const why = !app.model.ex.link.length ? "hint_empty" : Model.ready(app.model);
       $("hint").textContent = why ? t(why) : "";
@@ -131,11 +133,13 @@ const App = (() => {
   }
 
   function state(s, ms) {
-    document.body.dataset.state = s;
+    // An answer that comes while a newer edit waits to be sent is shown, but the page is
+    // not "solved" until that edit is answered too.
+    document.body.dataset.state = app.unasked ? "pending" : s;
     const st = $("status");
     st.className = s === "error" ? "bad" : "";
-    st.textContent = s === "solving" ? t("solving") : s === "solved" ? `${t("solved")} (${Math.round(ms)} ms)` :
-      s === "error" ? "⚠" : "";
+    st.textContent = s === "solving" ? t("solving") : s === "solved" ? `✓ ${t("solved")}` : s === "error" ? "⚠" : "";
+    st.title = s === "solved" ? `${Math.round(ms)} ms` : "";
     $("solution").classList.toggle("stale", s === "error");
     if (s === "error" && app.solution) $("solution").title = t("stale");
   }
@@ -231,11 +235,11 @@ const App = (() => {
   }
 
   async function open(value) {
-    document.body.dataset.state = "pending";
+    app.unasked = true; document.body.dataset.state = "pending";
     const [kind, ref] = [value.slice(0, value.indexOf(":")), value.slice(value.indexOf(":") + 1)];
     const res = await fetch(`api/exercise?${kind}=${encodeURIComponent(ref)}`);
     const data = await res.json();
-    if (!res.ok) { app.error = { text: data.error, where: {} }; state("error"); redraw(); return; }
+    if (!res.ok) { app.unasked = false; app.error = { text: data.error, where: {} }; state("error"); redraw(); return; }
     load(data.toml, kind === "id" ? { id: ref } : { file: ref });
   }
 
@@ -298,6 +302,7 @@ const App = (() => {
     document.documentElement.dir = app.lang === "fa" ? "rtl" : "ltr";
     document.title = t("app");
     document.querySelectorAll("[data-w]").forEach(e => { e.textContent = t(e.dataset.w); });
+    document.querySelectorAll("[data-t]").forEach(e => { e.title = t(e.dataset.t); });
     Editor.toolbar(t);
     $("play").title = t("play");
     const first = $("open").options[0];
@@ -341,7 +346,7 @@ const App = (() => {
     showAngle(); Editor.fit(); redraw(); solve();
   }
 
-  return { app, start, load, toml: text, pageXY: xy => Editor.pageXY(xy) };
+  return { app, start, toml: text, pageXY: xy => Editor.pageXY(xy) };
 })();
 window.tarsimApp = App;
 document.addEventListener("DOMContentLoaded", App.start);

@@ -115,7 +115,10 @@ function build() {
                         Math.max(was[0] + was[2], mine[0] + mine[2]) - Math.min(was[0], mine[0]),
                         Math.max(was[1] + was[3], mine[1] + mine[3]) - Math.min(was[1], mine[1])] : mine;
   // the figure's view, until the reader zooms or pans it: its home in the language shown
-  if (!S.boxes[S.fig] || S.fitted[S.fig]) { S.boxes[S.fig] = S.homes[key].slice(); S.fitted[S.fig] = true; }
+  // (kept as it is when the drawing turning takes over, so that the crank being dragged
+  // stays under the pointer)
+  if (!S.boxes[S.fig] || (S.fitted[S.fig] && !S.shown.turning)) {
+    S.boxes[S.fig] = S.homes[key].slice(); S.fitted[S.fig] = true; }
 }
 
 /* The view a figure opens in and the reset button goes back to: all it draws at the
