@@ -175,7 +175,8 @@ _OVER = """() => {
   for (const c of [...document.querySelectorAll('#sheet circle.s-badge')].filter(shown))
     for (const n of names) {
       const [a, b] = [box(c), box(n)];
-      if (Math.min(a[2], b[2]) - Math.max(a[0], b[0]) > 0.3 && Math.min(a[3], b[3]) - Math.max(a[1], b[1]) > 0.3)
+      const across = Math.min(a[2], b[2]) - Math.max(a[0], b[0]);
+      if (across > 0.3 && Math.min(a[3], b[3]) - Math.max(a[1], b[1]) > 0.3)
         out.push(n.textContent);
     }
   return out;
