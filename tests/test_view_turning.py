@@ -175,3 +175,17 @@ def test_a_frame_s_scale_is_a_nice_one_and_said_in_persian(page):
             n = float(re.search(r"= ([\d.]+)", statement["en"]).group(1))
             assert re.fullmatch(r"1 cm", re.search(r"(\d+ cm) =", statement["en"]).group(1))
             assert f"{n / 10 ** math.floor(math.log10(n)):.9g}" in ("1", "2", "5")
+
+
+def test_what_stands_on_nothing_is_hidden_while_turning(page):
+    """Turned to θ2 = 342.5°, the worked solution shows no caption of the drawing it turns
+    (drawn at 75°: its sheets' titles, its angle, its results table), placed by the
+    drawing's extent and true at 75° alone; the polygons' own captions stay, said at the
+    frame's scale."""
+    index = page.evaluate("tarsimView.data.figures.findIndex(f => f.stem === 'worked')")
+    page.select_option("#figure", str(index))
+    assert any("worked solution" in (it["text"] or "") for it in page.evaluate(_SHOWN))
+    _turn(page, 342.5)
+    shown = [it["text"] for it in page.evaluate(_SHOWN) if it["shown"] and it["text"]]
+    assert not [t for t in shown if "worked solution" in t or "75°" in t or "analytic" in t]
+    assert {"Velocity polygon", "Acceleration polygon"} <= set(shown)

@@ -40,7 +40,7 @@ from .solution import Overall, Solution, solve_positions
 from .view_frames import _flat
 from .view_paper import mark_paper
 
-__all__ = ["PageFigures", "named_points", "solved_at", "NEXT", "FAR"]
+__all__ = ["PageFigures", "named_points", "solved_at", "NEXT", "FAR", "AFAR"]
 
 NEXT = 0.05
 """Degrees further on the input turns for the second drawing a figure's primitives are
@@ -241,11 +241,38 @@ def _turning(home: Figure, figs: list[Figure | None], named: list, lang: str,
     out = _drawn([fig, *figs[1:]], named, {})
     out["named"] = {view: _flat(points) for view, points in named[0].items()}
     out["angle"] = angle
+    _afar(out["items"], fig, named[0])
     with speaking(lang):
         panels = _panels(fig, named[0], out["items"])
     if panels:
         out["panels"] = panels
     return out
+
+
+AFAR = 30.0
+"""How far (paper mm) from the named point it stands on a primitive of the drawing the
+page turns may be drawn. A name, a symbol or a line's overhang stands within some
+millimetres of its point; what stands farther (a caption, a legend, a scale bar) is
+placed by the drawing's extent, which moves with one point or another, and belongs to
+the position it is drawn at alone: it is hidden while the input turns."""
+
+
+def _afar(items: list[list], fig: Figure, named) -> None:
+    """Leave what stands on nothing (:data:`AFAR` or more from its point) standing on
+    nothing: ``items`` as :func:`~tarsim.graphics.figure_data.figure_data` writes
+    ``fig``'s, ``named`` its named points by view."""
+    for item in items:
+        more = item[3] if len(item) > 3 else None
+        if not more or "m" not in more:
+            continue
+        view, triples = more["m"]
+        v, points = fig.views[view], named[view]
+        at = more["at"] if item[0] == "t" else item[2][:2] if item[0] == "c" else item[2]
+        for i, xy in enumerate(zip(at[::2], at[1::2])):
+            p = points[triples[0 if len(triples) == 3 else 3 * i]]
+            if p is None or math.dist(xy, v(p)) > AFAR:
+                more.pop("m")
+                break
 
 
 def _panels(fig: Figure, named, items: list[list]) -> dict[str, list[float]]:
