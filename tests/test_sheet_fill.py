@@ -109,7 +109,7 @@ EXCEPTIONS: dict[tuple[str, str], str] = {
         "space-trailing": ("coupled-locomotive",),
         "force-polygon": ("coupled-locomotive", "notes-example-1", "static-balance-couple-left",
                           "unknown-angles"),
-        "couple-polygon": ("outside-locomotive", "primary-balance-unknowns"),
+        "couple-polygon": ("primary-balance-unknowns",),
         "primary-force": ("inline-four", "primary-balance-unknowns"),
         "primary-couple": ("inline-four", "inline-three"),
         "secondary-force": ("inline-four", "two-stroke-four"),

@@ -16,6 +16,7 @@ from dataclasses import replace
 from tarsim.constructions.narration import numerals, right_to_left, unit_words, words
 from tarsim.constructions.record import Construction, Ref
 from ..figure import Circle, Figure, Path, Text, clear_of, text_width
+from ..drafts import label_placer
 from ..fitting import to_sheet
 from ..labels import LabelPlacer, paper_angle
 from ..linkages.lanes import lanes, moved
@@ -96,7 +97,7 @@ def draw_polygon(c: Construction, tips: Sequence[tuple[str, Ref]], closing: Ref,
         draw_arrow(fig, tail, tip, "vector_result")
     # Every name is set clear of the drawn polygon and of the names set before it, each
     # beside its own arrow: a flat polygon's arrows lie on one line, over one another.
-    placer = LabelPlacer(fig)
+    placer = label_placer(fig)   # drafting: as on a blank page
     placer.block_drawn()
     first, last = paper(points[1]), paper(points[-1])
     away = (2 * pole[0] - first[0] - last[0], 2 * pole[1] - first[1] - last[1])

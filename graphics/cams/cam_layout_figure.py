@@ -20,9 +20,10 @@ from tarsim.constructions.cams.inversion import Layout
 from tarsim.constructions.cams.survey import Survey
 from tarsim.constructions.narration import numerals, words
 from ..figure import Circle, Figure, Path, Text, arc_points
+from ..drafts import label_placer
 from ..hiding import shown_answer
 from ..fitting import to_sheet
-from ..labels import LabelPlacer, paper_angle
+from ..labels import paper_angle
 from ..scales import draw_caption, nice_per_cm
 from ..symbols import draw_arrow, draw_turning_arrow, mark_angle
 
@@ -117,7 +118,7 @@ def draw_cam_layout(layout: Layout, s: Survey, title: str, unit: str, metre: flo
     _mark_steepest(fig, s, paper, k)
     # The station numbers last, each out along its own line and clear of every line drawn
     # (the pressure angle's arrows and arc too).
-    placer = LabelPlacer(fig)
+    placer = label_placer(fig)   # drafting: as on a blank page
     placer.block_drawn()
     # O in the widest gap between the lines about it, within the clear round it.
     placer.place("O", o, prefer=_widest_gap(fig, o), spread=math.pi, gap=0.6, size=3.0,

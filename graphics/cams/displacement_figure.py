@@ -16,8 +16,8 @@ from collections.abc import Sequence
 from tarsim.constructions.cams.displacement import Displacement
 from tarsim.constructions.narration import numerals, unit_words, words
 from ..figure import Circle, Figure, Path, Text, arc_points
+from ..drafts import label_placer
 from ..fitting import to_sheet
-from ..labels import LabelPlacer
 from ..scales import draw_caption, nice_per_cm
 from ..symbols import draw_dimension
 
@@ -89,7 +89,7 @@ def draw_displacement_figure(d: Displacement, curve: list[tuple[float, float]], 
         fig.add(Text((x, max(4.5, below + 3.5) + 4.5), label, 2.8, "middle", False))
     # The numbers last, each clear of every line drawn (the curve, the ordinates, the
     # construction's working lines) and nearer its own point than any other.
-    placer = LabelPlacer(fig)
+    placer = label_placer(fig)   # drafting: as on a blank page
     placer.block_drawn()
     placer.name_points(at for _, at, _ in numbers)
     for text, at, prefer in numbers:

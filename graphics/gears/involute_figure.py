@@ -19,6 +19,7 @@ from tarsim.constructions.gears.involute import InvoluteMesh
 from tarsim.constructions.gears.train import GearTrain
 from tarsim.constructions.narration import numerals, unit_words, words
 from ..figure import Circle, Figure, Path
+from ..drafts import label_placer
 from ..fitting import to_sheet
 from ..hiding import shown_answer
 from ..labels import LabelPlacer, paper_angle
@@ -93,7 +94,7 @@ def draw_involute_figure(train: GearTrain, mesh: InvoluteMesh, title: str,
         return x0 <= xy[0] <= x1 and y0 <= xy[1] <= y1
 
     fig = Figure(0.0, 0.0, title=title)
-    placer = LabelPlacer(fig)
+    placer = label_placer(fig)   # drafting: as on a blank page
     names = {n: c["O2" if i == 0 else "O3"].label for i, n in enumerate(mesh.centres)}
     ends: dict[str, list] = {}            # each circle's arcs, from either end
     for ref, radius in mesh.radii.items():

@@ -24,8 +24,8 @@ from tarsim.constructions.gears.train import GearTrain
 from tarsim.constructions.units import LENGTH_UNITS
 from tarsim.constructions.narration import words
 from ..figure import Figure, Path
+from ..drafts import label_placer
 from ..fitting import to_sheet
-from ..labels import LabelPlacer
 from ..scales import draw_caption, nice_per_cm
 from ..symbols import draw_hatched_band
 from .bevel_view import bevel_view, draw_bevels
@@ -55,7 +55,7 @@ def draw_train_schematic(train: GearTrain, title: str, outputs: tuple[int, ...] 
                         nice_per_cm(reach, _ROOM))
     mm = 10.0 / per_cm
     fig = Figure(0.0, 0.0, title=title)
-    placer = LabelPlacer(fig)
+    placer = label_placer(fig)   # drafting: as on a blank page
     bevel = bevel_view(train, {m: p * _PLANE for m, p in plane.items()},
                        lambda g: radius[g] * mm)
     xs = [p * _PLANE for m, p in plane.items() if bevel is None or m not in bevel.x]
