@@ -120,10 +120,15 @@ def lead(fig: Figure, placer: LabelPlacer, own, name: Text, always: bool = False
     step number or arrowhead: of those, the one that crosses the fewest shafts and lines
     (a thin working line of a polygon aside), then the shortest. Returns whether the name
     stands by what it names or is led to."""
-    mark, starts = _marked(fig, as_shape(own))
+    shape = as_shape(own)
+    mark, starts = _marked(fig, shape)
     edge = box(*name.box())
     if edge.distance(mark) <= NEAR and not always:
         return True
+    if len(shape) == 2:     # and from the shaft's point nearest the name, short of its head
+        shaft = LineString(shape)
+        t = min(shaft.project(edge.centroid), max(shaft.length - 3.0, 0.0))
+        starts = [shaft.interpolate(t).coords[0], *starts]
     # Its own step numbers too: a leader to a name runs past them, not through.
     badges = [SPoint(c.centre).buffer(c.radius + 0.2) for c in fig.items
               if isinstance(c, Circle) and c.style == "badge"]
