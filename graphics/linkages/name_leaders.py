@@ -35,8 +35,8 @@ NEAR = 3.5
 as a mechanism's own names stand from their pins (two of their gaps and a little more)."""
 
 CLEAN = 0.0
-"""What a name may lie over (mm², past a graze) and still stand where it was set: nothing, a
-thin working line aside; not another label, an arrowhead, a shaft or a link."""
+"""What a name may lie over (mm², past a graze) and still stand where it was set: nothing but
+the lines it may cross (``crossable``); not another label, an arrowhead, a shaft or a link."""
 
 _GAP = 0.4          # white between a leader's ends and the mark and the name it joins, mm
 _TRIES = 48         # points round a name's box a leader may end at
@@ -45,7 +45,6 @@ _SHAFT = 0.8        # an arrow's half width, its head's, mm: a vector's mark abo
 _THIN = 0.5         # what a leader may cross uncounted: a polygon's working lines (0.02)
 _AROUND = 1.5       # mm: an arrowhead this near a point's mark or a shaft is by it
 _GRAZE = 0.05       # mm²: a name sharing no more than this with a thing only touches it
-_CROSSABLE = ("working", "hatch")    # lines a name may cross: working lines, hatching
 
 
 def mark_of(fig: Figure, at: tuple[float, float]):
@@ -59,7 +58,7 @@ def mark_of(fig: Figure, at: tuple[float, float]):
 
 
 def place_led(fig: Figure, placer: LabelPlacer, own, place, *,
-              keep_near: bool = False) -> None:
+              keep_near: bool = False, crossable: tuple[str, ...] = ("hatch",)) -> None:
     """Name ``own``, a point or a vector (tail and tip), by ``place(**kw)``, which sets the
     name (the first text it adds) as its caller sets it, with a leader where it stands off
     (:func:`lead`).
@@ -94,7 +93,7 @@ def place_led(fig: Figure, placer: LabelPlacer, own, place, *,
             break
         if waive:
             name = _own(fig, name, shape)
-        covers, off = _covered(fig, items), _off(fig, shape, name)
+        covers, off = _covered(fig, items, crossable), _off(fig, shape, name)
         first = (covers, off) if first is None else first
         # Set again, it must stand clearer than it first did; and where it first stood clear
         # (only no leader reached it), not much farther off.
@@ -221,10 +220,11 @@ def _astray(placer: LabelPlacer, name: Text) -> bool:
     return bool(placer._astray(np.array([[(x0 + x1) / 2, (y0 + y1) / 2]]), owned)[0])
 
 
-def _covered(fig: Figure, since: int) -> float:
+def _covered(fig: Figure, since: int, crossable: tuple[str, ...]) -> float:
     """The area (mm²) by which the label set since ``since`` items (its name and step
     numbers) lies over what was drawn before it: another label, an arrowhead, or a line
-    other than a thin working line (which a name may cross), each past a graze."""
+    of a style not ``crossable`` (a polygon's names may cross its thin working lines, a
+    space diagram's a ground's hatching), each past a graze."""
     new, old = fig.items[since:], fig.items[:since]
     mine = _marks_of_labels(new)
     if not mine:
@@ -237,7 +237,7 @@ def _covered(fig: Figure, since: int) -> float:
     drawn = _marks_of_labels(old) + [
         Polygon(p.points) if p.closed else LineString(p.points).buffer(0.1)
         for p in old if isinstance(p, Path) and len(p.points) >= 2
-        and (p.style == "arrowhead" or (not p.closed and p.style not in _CROSSABLE))]
+        and (p.style == "arrowhead" or (not p.closed and p.style not in crossable))]
     total = 0.0
     for d in drawn:
         if d.intersects(near):

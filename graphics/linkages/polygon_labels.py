@@ -48,6 +48,7 @@ _CROSSING = 20.0 * CROSSABLE    # a point's name crosses this much (20 mm², two
                     # lines under a label) before it stands off in a farther ring, where a
                     # reader would take it for another point's
 _SHORT = 8.0        # mm: an arrow shorter than this may have its name round its ends
+CROSSED = ("working",)   # the lines a polygon's names may cross: its thin working lines
 
 
 def _numbered(polygon: _PolygonPanel, steps: Iterable[Step]) -> list[int]:
@@ -85,7 +86,7 @@ def label_points(polygon: _PolygonPanel) -> None:
                 polygon.placer.place_numbered, text, at, _numbered(polygon, grp), sub=sub,
                 tail=tail, prefer=_free_direction(at, rays, polygon.centre), gap=1.0,
                 size=3.8, farther=_FARTHER, crossing=_CROSSING, own=at if names else None,
-                beside=True), keep_near=True)
+                beside=True), keep_near=True, crossable=CROSSED)
 
 
 def label_vectors(polygon: _PolygonPanel) -> None:
@@ -148,7 +149,8 @@ def _label_vector(polygon: _PolygonPanel, group: list, drawn: list) -> None:
     place_led(polygon.fig, polygon.placer, own, partial(
         polygon.placer.place_numbered, text, anchors, numbers, sub=sub, also=tuple(names[1:]),
         prefer=(normal, normal + math.pi), spread=spread, gap=1.0, size=3.4, rings=_NEAR,
-        farther=_FARTHER, crossing=_ON_LABEL if dot else 0.0, own=own if text else None))
+        farther=_FARTHER, crossing=_ON_LABEL if dot else 0.0, own=own if text else None),
+        crossable=CROSSED)
 
 
 def number_lines(polygon: _PolygonPanel) -> None:
