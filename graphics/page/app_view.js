@@ -75,6 +75,9 @@ const App = (() => {
     // At another angle: that position alone, without what belongs to no one position (the
     // time ratio, the stroke), which turning the input does not change.
     if (override) Object.assign(body, { angle: app.angle, whole: false });
+    // The quick answer to an edit is the position's alone, in a few milliseconds; what is
+    // asked of the mechanism as a whole comes with the figures' answer that follows.
+    else if (!figures) body.whole = false;
     if (figures) state("solving");
     const t0 = performance.now();
     let res, data;
