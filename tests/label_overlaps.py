@@ -76,20 +76,12 @@ def strays(fig: Figure, tol: float = 0.05) -> list[tuple[str, tuple, tuple]]:
     than ``tol`` mm, its box to the point, or to the vector's shaft): (name, its own, the
     nearer one). A label's own is its text's ``owner``: a point, or a vector's tail and tip;
     two within half a millimetre of one another are one, and a vector within another's
-    shaft (V_A₄ within V_B₄ from one pole) has no rival in it. A label a leader joins to
-    its own (one end by its box, the other by its point or shaft) is read for its own."""
+    shaft (V_A₄ within V_B₄ from one pole) has no rival in it."""
     named = [t for t in fig.items if isinstance(t, Text) and t.owner is not None]
     shapes = {t.owner for t in named}
-    leaders = [(Point(p.points[0]), Point(p.points[-1])) for p in fig.items
-               if isinstance(p, Stroke) and p.style == "plot_leader"]
 
     def geometry(shape):
         return Point(shape[0]) if len(shape) == 1 else LineString(shape)
-
-    def led(b, own) -> bool:
-        """A leader runs from by ``own`` (a pin's circle off) to by the box ``b``."""
-        return any(b.distance(by_box) < 0.6 and geometry(own).distance(by_own) < 2.0
-                   for e, f in leaders for by_box, by_own in ((e, f), (f, e)))
 
     def holds(other, own):
         """``other`` is ``own``, or (a vector) its shaft holds all of ``own``'s."""
@@ -97,8 +89,6 @@ def strays(fig: Figure, tol: float = 0.05) -> list[tuple[str, tuple, tuple]]:
     out = []
     for t in named:
         b = box(*t.box())
-        if led(b, t.owner):
-            continue
         mine = b.distance(geometry(t.owner))
         for other in shapes:
             if len(other) == len(t.owner) and not holds(other, t.owner) and \

@@ -10,7 +10,6 @@ stands away from the mechanism's middle, and a contact's P off its common normal
 from __future__ import annotations
 
 import math
-from functools import partial
 from typing import TYPE_CHECKING
 
 from shapely.geometry import MultiPoint
@@ -20,7 +19,7 @@ from tarsim.constructions.narration import significant, words
 
 from .diagram_slides import block_centre, block_lift
 from .joint_symbols import symbol_of
-from .name_leaders import place_led
+from .name_leaders import lead
 from ..figure import Text, arc_points
 from ..paper_points import centroid, difference, farthest_pair
 from ..symbols import draw_turning_arrow, mark_angle, unit
@@ -135,9 +134,9 @@ def label_points(diagram: _Diagram) -> None:
     for name, at in diagram.paper.items():
         away = difference(at, centre)
         prefer = math.atan2(-away[1], away[0]) if math.hypot(*away) > 1e-6 else math.pi / 4
-        place_led(diagram.fig, diagram.placer, at, partial(
-            diagram.placer.place, subscript(name), at, prefer=prefer, gap=2.0, size=3.6,
-            own=at))
+        text = diagram.placer.place(subscript(name), at, prefer=prefer, gap=2.0, size=3.6,
+                                    own=at)
+        lead(diagram.fig, diagram.placer, at, text)
     # P goes beside the contact, off the common normal that runs through it; between
     # two circles, out along the tangent in the gap that opens between them.
     for point, normal, spread, rings in (

@@ -19,14 +19,12 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterable
-from functools import partial
 from typing import TYPE_CHECKING
 
 from tarsim.constructions import geometry as g
 from tarsim.constructions.record import Step
 
 from ..labels import LABEL
-from .name_leaders import place_led
 from ..symbols import unit
 from ..typeset import typeset
 
@@ -48,7 +46,6 @@ _CROSSING = 20.0 * CROSSABLE    # a point's name crosses this much (20 mm², two
                     # lines under a label) before it stands off in a farther ring, where a
                     # reader would take it for another point's
 _SHORT = 8.0        # mm: an arrow shorter than this may have its name round its ends
-CROSSED = ("working",)   # the lines a polygon's names may cross: its thin working lines
 
 
 def _numbered(polygon: _PolygonPanel, steps: Iterable[Step]) -> list[int]:
@@ -82,11 +79,12 @@ def label_points(polygon: _PolygonPanel) -> None:
         text, sub, tail = _joined(names) if names else ("", "", "")
         rays = polygon.rays_at(at)
         with polygon.fig.for_steps(*(s.id for s in grp)):
-            place_led(polygon.fig, polygon.placer, at, partial(
-                polygon.placer.place_numbered, text, at, _numbered(polygon, grp), sub=sub,
-                tail=tail, prefer=_free_direction(at, rays, polygon.centre), gap=1.0,
-                size=3.8, farther=_FARTHER, crossing=_CROSSING, own=at if names else None,
-                beside=True), keep_near=True, crossable=CROSSED)
+            polygon.placer.place_numbered(text, at, _numbered(polygon, grp), sub=sub,
+                                          tail=tail,
+                                          prefer=_free_direction(at, rays, polygon.centre),
+                                          gap=1.0, size=3.8, farther=_FARTHER,
+                                          crossing=_CROSSING, own=at if names else None,
+                                          beside=True)
 
 
 def label_vectors(polygon: _PolygonPanel) -> None:
@@ -144,13 +142,12 @@ def _label_vector(polygon: _PolygonPanel, group: list, drawn: list) -> None:
     # So short an arrow is found by its name only beside it: farther rings only
     # where every spot beside it covers another label.
     dot = math.dist(a, b) < _TINY
-    own = _middle(a, b) if dot else (a, b)
-    # A name set off where the short arrows crowd is led to its arrow (:mod:`.name_leaders`).
-    place_led(polygon.fig, polygon.placer, own, partial(
-        polygon.placer.place_numbered, text, anchors, numbers, sub=sub, also=tuple(names[1:]),
-        prefer=(normal, normal + math.pi), spread=spread, gap=1.0, size=3.4, rings=_NEAR,
-        farther=_FARTHER, crossing=_ON_LABEL if dot else 0.0, own=own if text else None),
-        crossable=CROSSED)
+    polygon.placer.place_numbered(text, anchors, numbers, sub=sub, also=tuple(names[1:]),
+                                  prefer=(normal, normal + math.pi), spread=spread,
+                                  gap=1.0, size=3.4, rings=_NEAR, farther=_FARTHER,
+                                  crossing=_ON_LABEL if dot else 0.0,
+                                  own=None if not text else _middle(a, b) if dot
+                                  else (a, b))
 
 
 def number_lines(polygon: _PolygonPanel) -> None:

@@ -188,9 +188,8 @@ def _name_vector(scene: _Scene, step: Step, drawn, lane: int) -> None:
     sides = (normal, normal + math.pi) if lane <= 0 else (normal + math.pi, normal)
     anchors = [(a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]))
                for t in (0.6, 0.45, 0.75, 0.3, 0.9)]
-    place_led(scene.fig, scene.placer, (a, b), partial(
-        scene.label, text, anchors, [step], sub=sub, prefer=sides, spread=math.pi / 3,
-        gap=1.2, size=3.6, own=(a, b) if text else None))
+    scene.label(text, anchors, [step], sub=sub, prefer=sides,
+                spread=math.pi / 3, gap=1.2, size=3.6, own=(a, b) if text else None)
 
 
 def draw_points(scene: _Scene) -> None:
