@@ -31,10 +31,11 @@ WIDTH = 1000
 """Pixels across a PNG, at most: enough to read the labels, small enough to keep."""
 
 SHOWN = ("four-bar", "whitworth", "six-link-homework-3", "crank-shaper-forces", "planetary-q4",
-         "involute-pair", "inline-four", "roller-harmonic-cycloidal", "crank-shaper")
+         "involute-pair", "inline-four", "roller-harmonic-cycloidal", "crank-shaper",
+         "punching-press")
 """The exercises whose main figure the gallery shows, a chapter's best or two."""
 
-SHEETS = ("four-bar", "crank-shaper", "planetary-q1")
+SHEETS = ("four-bar", "crank-shaper", "planetary-q1", "punching-press")
 """The exercises whose problem sheet stands beside their solution."""
 
 ORDER = ("klein", "worked", "V_", "centres", "limits", "mechanism", "loads", "mesh", "kutzbach",
