@@ -143,9 +143,10 @@ hide = click.option("--hide", default="", metavar="PARTS", callback=_hidden_part
                          "book (comma-separated): answers (the results table's construction "
                          "and analytic columns, the stroke and time ratio under the limit "
                          "positions; a train's speeds, a cam's table and peaks, a balancing "
-                         "mass found, left as gaps to fill), badges (the circled step "
-                         "numbers; every label stays where it stood), checks (the table's "
-                         "construction, analytic and relative-error columns). "
+                         "mass found, a flywheel's energies, left as gaps to fill), badges "
+                         "(the circled step numbers; every label stays where it stood), "
+                         "checks (the table's construction, analytic and relative-error "
+                         "columns). "
                          "Example: --hide answers,badges,checks.")
 
 angle = click.option("--angle", type=float, default=None, metavar="ANGLE",
