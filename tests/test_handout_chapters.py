@@ -17,24 +17,27 @@ FLYWHEELS = ["engine-harmonic-torque", "flywheel-between-speeds", "four-stroke-t
              "three-cylinder-triangles", "rod-equivalent-masses"]
 
 
-def _holds_data_and_no_answer(name: str, lang: str, *, skip=()):
+def _data_and_answers(name: str, lang: str, *, skip=()):
+    """The sheet of ``name`` in ``lang``: the numbers its file gives, those of them missing
+    from the sheet, and the numbers its solution finds that stand on it."""
     ex, sheet = _sheet(name, lang)
     svg = _without_ticks(to_svg(sheet.figure))
     tokens = set(_NUMBER.findall(" ".join(_texts(svg, ticks=False))))
     given = _given(name) - set(skip)
-    for x in given:
-        assert f"{x:g}" in tokens, f"{x:g} of {name}'s file is not on its sheet"
+    missing = sorted(f"{x:g}" for x in given if f"{x:g}" not in tokens)
     with speaking("en"):
         results = chapter_of(ex).solve(ex).results
     found = _answers_on(svg, results, given, ticks=False)
-    assert not found, f"answers on {name}'s sheet: {sorted(found)}"
-    return ex, sheet
+    return sheet, given, missing, sorted(found)
 
 
 @pytest.mark.parametrize("lang", ["en", "fa"])
 @pytest.mark.parametrize("name", FLYWHEELS)
 def test_a_flywheels_sheet_holds_its_data_and_no_answer(name, lang):
-    _holds_data_and_no_answer(name, lang)
+    _, given, missing, found = _data_and_answers(name, lang)
+    assert given, f"{name}'s file gives no number to look for"
+    assert not missing, f"{missing} of {name}'s file not on its sheet"
+    assert not found, f"answers on {name}'s sheet: {found}"
 
 
 @pytest.mark.parametrize("lang", ["en", "fa"])
@@ -44,7 +47,8 @@ def test_a_cam_of_arcs_sheet_draws_what_is_given_and_no_answer(name, lang):
     scale: the circular arc's r1 = 40 and r2 = 10 mm at 1 cm = 10 mm are circles of 40 and
     10 mm; the tangent cam's nose is found, so only its base circle (30 mm at 1 cm = 20 mm)
     is drawn, its roller (10 mm) dashed at the apex."""
-    ex, sheet = _holds_data_and_no_answer(name, lang)
+    sheet, _, missing, found = _data_and_answers(name, lang)
+    assert not missing and not found, (missing, found)
     circles = sorted(round(c.radius, 6) for c in sheet.figure.items
                      if type(c).__name__ == "Circle" and c.style == "link")
     assert circles == ([10.0, 40.0] if name == "circular-arc-flat-face" else [15.0])
@@ -57,7 +61,10 @@ ROTORS = ["unknown-angles", "unknown-plane-and-angle", "unknown-planes",
 @pytest.mark.parametrize("lang", ["en", "fa"])
 @pytest.mark.parametrize("name", ROTORS)
 def test_a_rotor_with_unknowns_sheet_holds_its_data_and_no_answer(name, lang):
-    _holds_data_and_no_answer(name, lang)
+    _, given, missing, found = _data_and_answers(name, lang)
+    assert given, f"{name}'s file gives no number to look for"
+    assert not missing, f"{missing} of {name}'s file not on its sheet"
+    assert not found, f"answers on {name}'s sheet: {found}"
 
 
 def test_a_mass_with_an_unknown_angle_is_left_out_of_the_end_view_and_its_plane_of_the_side():
@@ -106,7 +113,10 @@ ENGINES = ["inline-four", "inline-three", "radial-three", "single-cylinder",
 @pytest.mark.parametrize("lang", ["en", "fa"])
 @pytest.mark.parametrize("name", ENGINES)
 def test_an_engines_sheet_holds_its_data_and_no_answer(name, lang):
-    _holds_data_and_no_answer(name, lang)
+    _, given, missing, found = _data_and_answers(name, lang)
+    assert given, f"{name}'s file gives no number to look for"
+    assert not missing, f"{missing} of {name}'s file not on its sheet"
+    assert not found, f"answers on {name}'s sheet: {found}"
 
 
 def test_an_in_line_engine_has_its_cranks_beside_an_empty_frame_for_each_polygon():
