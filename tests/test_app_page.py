@@ -113,6 +113,16 @@ def settled(page, seconds=60) -> str:
     pytest.fail(f"the page's last edit was never answered: {state}")
 
 
+def join(page, pairs):
+    """Joins each pair of points into a link with the link tool, clicking the one, then the
+    other, where the page has them now (a new link may move the points it joins)."""
+    tool(page, "link")
+    for a, b in pairs:
+        pos = positions(page)
+        click_at(page, pos[a])
+        click_at(page, pos[b])
+
+
 def click_link(page, number):
     """Selects link ``number`` by clicking the middle of its bar."""
     pts = page.evaluate(f"tarsimApp.app.model.ex.link.find(l => l.number === {number}).points")
@@ -137,11 +147,7 @@ def build_four_bar(page):
     tool(page, "pin")
     click_at(page, (50, 90))                    # roughly: the lengths are typed below
     click_at(page, (270, 210))
-    tool(page, "link")
-    for a, b in [("O2", "A"), ("A", "B"), ("B", "O3")]:
-        pos = positions(page)
-        click_at(page, pos[a])
-        click_at(page, pos[b])
+    join(page, [("O2", "A"), ("A", "B"), ("B", "O3")])
     tool(page, "select")
     for number, length in [(2, 100), (3, 250), (4, 200)]:
         click_link(page, number)
@@ -320,11 +326,7 @@ def test_a_slider_crank_built_with_the_block_tool_gives_the_pistons_speed(page):
     tool(page, "pin")
     click_at(page, (70, 70))
     click_at(page, (360, 0))
-    tool(page, "link")
-    for a, b in [("O2", "A"), ("A", "B")]:
-        pos = positions(page)
-        click_at(page, pos[a])
-        click_at(page, pos[b])
+    join(page, [("O2", "A"), ("A", "B")])
     tool(page, "block")
     click_at(page, positions(page)["B"])
     type_into(page, "#s-ty", 0)                 # the guide through O2's height, along x
@@ -409,11 +411,7 @@ def test_a_block_in_a_lever_slot_built_with_the_slot_tool_turns_the_lever_as_the
     tool(page, "pin")
     click_at(page, (80, 80))
     click_at(page, (-60, 150))
-    tool(page, "link")
-    for a, b in [("O2", "A"), ("O3", "B")]:
-        pos = positions(page)
-        click_at(page, pos[a])
-        click_at(page, pos[b])
+    join(page, [("O2", "A"), ("O3", "B")])
     tool(page, "slot")
     pos = positions(page)
     click_at(page, pos["A"])                     # the block's point, then the slotted link
