@@ -10,6 +10,7 @@ not taken for a name in the white. A name within :data:`NEAR` of its mark needs 
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 
 from shapely import get_coordinates
 from shapely.geometry import LineString, MultiPoint, Polygon, box
@@ -20,7 +21,7 @@ from ..figure import Circle, Figure, Path, Text
 from ..labels import LABEL, LabelPlacer
 from ..symbols import unit
 
-__all__ = ["NEAR", "lead", "mark_of", "place_led"]
+__all__ = ["NEAR", "lead", "lead_last_to_shaft", "lead_to_shaft", "mark_of", "place_led"]
 
 NEAR = 3.5
 """Paper (mm) a point's name stands off its mark at most, unless a leader joins them: as far
@@ -29,6 +30,8 @@ as a mechanism's own names stand from their pins (two of their gaps and a little
 _GAP = 0.4          # white between a leader's ends and the mark and the name it joins, mm
 _TRIES = 48         # points round a name's box a leader may end at
 _AGAIN = 3          # times a name no leader reaches is set again
+_HEAD = 3.0         # mm of an arrow's shaft by its head, from which no leader starts
+_STARTS = 12        # points along a shaft a leader to its name may start from
 
 
 def mark_of(fig: Figure, at: tuple[float, float]):
@@ -101,6 +104,58 @@ def lead(fig: Figure, placer: LabelPlacer, at: tuple[float, float], name: Text) 
     edge = box(*name.box())
     if edge.distance(mark) <= NEAR:
         return True
+    return _led(fig, placer, at, mark, edge)
+
+
+def lead_to_shaft(fig: Figure, placer: LabelPlacer, shaft: tuple[tuple[float, float], ...],
+                  name: Text, avoid: Sequence = (), claimed: Sequence = ()) -> bool:
+    """Draw a leader to an arrow's ``name`` standing more than :data:`NEAR` off its
+    ``shaft`` (tail, tip), from the shaft's point nearest the name, short of its head (a
+    leader from the head would be read for the tip's); as :func:`lead` does for a point,
+    crossing none of the shapes ``avoid`` either (the name's own step numbers), its ends
+    in none of ``claimed``."""
+    line, edge = LineString(shaft), box(*name.box())
+    if edge.distance(line) <= NEAR:
+        return True
+    # From the shaft's point nearest the name, else from the next nearest one a leader
+    # reaches past the heads and names crowding there.
+    reach = max(line.length - _HEAD, 0.0)
+    along = {min(line.project(edge.centroid), reach),
+             *(reach * k / _STARTS for k in range(_STARTS + 1))}
+    starts = sorted((line.interpolate(t).coords[0] for t in along),
+                    key=lambda p: edge.distance(SPoint(p)))
+    return any(_led(fig, placer, at, SPoint(at), edge, avoid, claimed) for at in starts)
+
+
+def lead_last_to_shaft(fig: Figure, placer: LabelPlacer, shaft: tuple[tuple[float, float], ...],
+                       since: int) -> None:
+    """Lead to its arrow the name of ``shaft`` set among ``fig``'s items from ``since`` on
+    (:func:`lead_to_shaft`), where one was set: the first text there that names a thing."""
+    name = next((t for t in fig.items[since:] if isinstance(t, Text) and t.owner), None)
+    if name is not None:
+        badges = [SPoint(c.centre).buffer(c.radius) for c in fig.items[since:]
+                  if isinstance(c, Circle)]
+        lead_to_shaft(fig, placer, shaft, name, avoid=badges, claimed=_claims(fig))
+
+
+def _claims(fig: Figure) -> list:
+    """Round each point's name on ``fig``, the white nearer it than its own point: a
+    leader ending there would be taken for the point that name names (a reader, and the
+    grader, take a name for the mark nearest it)."""
+    out = []
+    for t in fig.items:
+        if isinstance(t, Text) and t.owner is not None and len(t.owner) == 1 \
+                and isinstance(t.owner[0], tuple):
+            name = box(*t.box())
+            out.append(name.buffer(name.distance(SPoint(t.owner[0]))))
+    return out
+
+
+def _led(fig: Figure, placer: LabelPlacer, at: tuple[float, float], mark, edge,
+         avoid: Sequence = (), claimed: Sequence = ()) -> bool:
+    """A leader from ``mark`` (about ``at``) to the nearest point of the box ``edge`` it
+    reaches crossing no other name or arrowhead, nor a shape of ``avoid``, its ends in
+    none of ``claimed`` (:func:`lead`); whether one was drawn."""
     near = nearest_points(edge, SPoint(at))[0]
     ends = sorted({(near.x, near.y), *(edge.exterior.interpolate(k / _TRIES, normalized=True)
                                        .coords[0] for k in range(_TRIES))},
@@ -111,8 +166,12 @@ def lead(fig: Figure, placer: LabelPlacer, at: tuple[float, float], name: Text) 
         rim = max((math.dist(at, q) for q in out.tolist()), default=0.0)
         start = (at[0] + (rim + _GAP) * d[0], at[1] + (rim + _GAP) * d[1])
         end = (to[0] - _GAP * d[0], to[1] - _GAP * d[1])
-        if math.dist(start, end) > 0.5 and not _covers_label(
-                placer, LineString([start, end]).buffer(0.15), edge):
+        stroke = LineString([start, end]).buffer(0.15)
+        # (not along its own name's edge either, where it would be read as underlining)
+        if math.dist(start, end) > 0.5 and not stroke.intersects(edge) \
+                and not _covers_label(placer, stroke, edge) \
+                and not any(stroke.intersects(a) for a in avoid) \
+                and not any(c.contains(SPoint(e)) for c in claimed for e in (start, end)):
             fig.add(Path((start, end), "plot_leader"))
             placer.block_path([start, end], 0.3)
             return True

@@ -27,6 +27,7 @@ from tarsim.constructions.record import Step
 from ..labels import LABEL
 from ..symbols import unit
 from ..typeset import typeset
+from .name_leaders import lead_last_to_shaft
 
 if TYPE_CHECKING:
     from .polygon_panel import _PolygonPanel
@@ -142,12 +143,15 @@ def _label_vector(polygon: _PolygonPanel, group: list, drawn: list) -> None:
     # So short an arrow is found by its name only beside it: farther rings only
     # where every spot beside it covers another label.
     dot = math.dist(a, b) < _TINY
+    before = len(polygon.fig.items)
     polygon.placer.place_numbered(text, anchors, numbers, sub=sub, also=tuple(names[1:]),
                                   prefer=(normal, normal + math.pi), spread=spread,
                                   gap=1.0, size=3.4, rings=_NEAR, farther=_FARTHER,
                                   crossing=_ON_LABEL if dot else 0.0,
                                   own=None if not text else _middle(a, b) if dot
                                   else (a, b))
+    if not dot:     # a name set off in a farther ring, where short arrows crowd, is led to
+        lead_last_to_shaft(polygon.fig, polygon.placer, (a, b), before)
 
 
 def number_lines(polygon: _PolygonPanel) -> None:

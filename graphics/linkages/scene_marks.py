@@ -29,7 +29,7 @@ from tarsim.constructions.record import Role, Step
 
 from .diagram_slides import block_centre
 from ..figure import Circle, Path
-from .name_leaders import place_led
+from .name_leaders import lead_last_to_shaft, place_led
 from ..hiding import hidden
 from .lanes import lanes, moved
 from .scene_lines import DOT
@@ -188,8 +188,10 @@ def _name_vector(scene: _Scene, step: Step, drawn, lane: int) -> None:
     sides = (normal, normal + math.pi) if lane <= 0 else (normal + math.pi, normal)
     anchors = [(a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]))
                for t in (0.6, 0.45, 0.75, 0.3, 0.9)]
+    before = len(scene.fig.items)
     scene.label(text, anchors, [step], sub=sub, prefer=sides,
                 spread=math.pi / 3, gap=1.2, size=3.6, own=(a, b) if text else None)
+    lead_last_to_shaft(scene.fig, scene.placer, (a, b), before)
 
 
 def draw_points(scene: _Scene) -> None:
