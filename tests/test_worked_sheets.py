@@ -16,7 +16,7 @@ from tarsim.exercises.catalog import load
 from tarsim.graphics.figure import Figure, Path
 from tarsim.graphics.fitting import DRAFTING
 from tarsim.graphics.linkages.worked_page import compose_worked_sheets
-from tarsim.graphics.paper import MARGIN
+from tarsim.graphics.paper import MARGIN, filled
 
 A4 = (210.0, 297.0)
 TABLE = [("quantity", "construction"), ("V_B", "1 m/s")]
@@ -133,3 +133,34 @@ def test_whitworths_persian_run_on_sheet_stands_at_the_right_margin():
     for page in sheets:
         x1 = max(f[2] for f in frames(page))
         assert x1 == pytest.approx(page.width - MARGIN), (page.width, x1)
+
+
+def _space_scale(page: Figure) -> float:
+    """The space diagram's stated N of "Scale 1 cm = N mm" on ``page``."""
+    text = next(t.text for t in page.items if getattr(t, "text", "").startswith("Scale 1 cm"))
+    return float(re.search(r"1 cm = ([\d.]+) mm", text).group(1))
+
+
+def worked(exercise_id: str, paper: str) -> list[Figure]:
+    return solve(replace(load(exercise_id), paper=paper)).figures["worked"].sheets
+
+
+@pytest.mark.parametrize("exercise_id, a4, a3", [("inverted-slider-crank", 40.0, 20.0),
+                                                 ("wheel-driven-slider", 50.0, 25.0)])
+def test_the_space_diagram_grows_into_the_room_beside_the_velocity_polygon(exercise_id, a4,
+                                                                           a3):
+    """Each page stays on two A3 sheets, as at 1 cm = 50 mm."""
+    # Before, the space diagram kept the scale the solve chose for A4 on an A3 sheet
+    # (1 cm = 50 mm: inverted-slider-crank's first A3 sheet 0.44 full): now it is drawn
+    # at the finest drafting step at which the first sheet still holds it and the
+    # velocity polygon, on no more sheets than before.
+    small, big = worked(exercise_id, "A4"), worked(exercise_id, "A3")
+    assert (_space_scale(small[0]), _space_scale(big[0])) == (a4, a3)
+    assert len(big) == 2 and "velocity" in big[0].views
+    # stated truly: paper mm a drawing metre times N is 10 mm, the scale bar's centimetre
+    for page in (small[0], big[0]):
+        assert page.views["space"].scale * _space_scale(page) / 1000.0 == pytest.approx(10.0)
+    first = big[0]
+    (x0, y0, x1, y1) = first.bounds()
+    assert x0 >= 0.0 and y0 >= 0.0 and x1 <= first.width and y1 <= first.height
+    assert filled(first) >= 0.5

@@ -11,10 +11,10 @@ from tarsim.constructions.record import Kind, Panel, Slice, slice
 from .circle_diagram import draw_circle_diagram
 from .polygon_panel import POLYGON_BOX, draw_polygon_panel
 from .scene import draw_scene
-from .worked_page import compose_worked_sheets, holds_panel
+from .worked_page import compose_worked_sheets, holds_panel, holds_together
 from ..figure import Figure, stack_pages
 from ..figure_kinds import FigureOrder, FigurePlan, figure_kind
-from ..fitting import fit, held_by
+from ..fitting import fit, held_by, labels_on_lines
 from ..hiding import hidden, shown_columns
 from ..paper import on_sheet, room
 
@@ -94,6 +94,25 @@ def _polygon_regrow(shown: Slice, how: dict, drawn: Figure):
     return lambda holds: fit(draw, per_cm, holds, grow=True)
 
 
+def _grown_beside(scene, figures: list[Figure], per_cm: float, sheet: tuple[float, float],
+                  title: str) -> Figure:
+    """The space diagram ``figures[0]`` drawn again at the finest of the course's scales at
+    which its sheet still holds it and the first polygon (an A3 sheet, or a small
+    mechanism, has room to spare beside them); itself where none does, or where the bigger
+    one's labels find less room. Its caller takes it where the page runs on over no more
+    sheets."""
+    space, first = figures[0], figures[1]
+    if not holds_together(sheet, [space, first], title):
+        return space
+    grown = fit(scene, per_cm, lambda fig: holds_together(sheet, [fig, first], title),
+                grow=True)
+    if grown.width * grown.height > space.width * space.height + 1e-6 and \
+            holds_together(sheet, [grown, first], title) and \
+            labels_on_lines(grown) <= labels_on_lines(space):
+        return grown
+    return space
+
+
 @figure_kind("polygons", last=True)
 def _worked_page(order: FigureOrder) -> FigurePlan:
     """The space diagram, the polygons and the results table on one page.
@@ -122,6 +141,8 @@ def _worked_page(order: FigureOrder) -> FigurePlan:
     def scene(per_cm: float) -> Figure:
         return draw_scene(Slice(c, ()), title=order.title("space diagram"), per_cm=per_cm)
 
+    title = order.title("worked solution")
+
     def draw() -> Figure:
         space = fit(scene, work.scales.space, lambda fig: holds_panel(upright, fig),
                     fixed=order.stated)
@@ -132,8 +153,17 @@ def _worked_page(order: FigureOrder) -> FigurePlan:
                                     grow=True)]
         regrow += [_polygon_regrow(shown, how, fig)
                    for (_, _, shown), how, fig in zip(panels, drawn, figures[1:])]
-        sheets = compose_worked_sheets(order.title("worked solution"), figures, table,
-                                       order.under(Panel.SPACE), sheet=upright, regrow=regrow)
+
+        def composed(figures: list[Figure]) -> list[Figure]:
+            return compose_worked_sheets(title, figures, table, order.under(Panel.SPACE),
+                                         sheet=upright, regrow=regrow)
+
+        sheets = composed(figures)
+        grown = space if order.stated else _grown_beside(scene, figures, work.scales.space,
+                                                         upright, title)
+        if grown is not space:      # taken where it sets the page on no more sheets
+            bigger = composed([grown, *figures[1:]])
+            sheets = bigger if len(bigger) <= len(sheets) else sheets
         return sheets[0] if len(sheets) == 1 else stack_pages(sheets)
 
     return FigurePlan(draw, None, tuple(panels))

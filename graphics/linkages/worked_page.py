@@ -30,7 +30,8 @@ from ..paper import Paper, standard
 from ..typeset import spoken_numbers, typeset
 from ..wrapping import wrap_formulas
 
-__all__ = ["compose_worked_page", "compose_worked_sheets", "holds_panel", "A3", "Regrow"]
+__all__ = ["compose_worked_page", "compose_worked_sheets", "holds_panel", "holds_together",
+           "A3", "Regrow"]
 
 A3 = (420.0, 297.0)
 """An A3 landscape sheet, mm: the page a worked solution is kept to when it fits."""
@@ -219,6 +220,14 @@ def holds_panel(sheet: tuple[float, float], panel: Figure) -> bool:
     title: a worked page's panel drawn too big for it is drawn again smaller."""
     return any(panel.width <= r[0] + 1e-9 and panel.height <= r[1] + 1e-9
                for r in (_room((max(sheet), min(sheet))), _room((min(sheet), max(sheet)))))
+
+
+def holds_together(sheet: tuple[float, float], panels: Sequence[Figure], title: str = ""
+                   ) -> bool:
+    """Whether one sheet of ``sheet`` (mm, upright; it may be turned) holds every one of
+    ``panels`` under ``title``: a worked page's space diagram is drawn bigger only while
+    the polygon beside it still shares its sheet."""
+    return _most_held([*panels, Figure(0.0, 0.0)], sheet, title)[0] == len(panels) + 1
 
 
 def _most_held(items: Sequence[Figure], sheet: tuple[float, float], title: str = ""
