@@ -30,6 +30,7 @@ _ROOM = 120.0     # paper (mm) the polygon's or view's extent is fitted to
 _REFERENCE_PAST = 8.0   # mm the 0° radius runs past a mass's circle that lies along it
 _MASS = 1.6       # radius (mm) of a mass's circle in the end view
 _LANE = 6.0       # mm between vectors on one line drawn side by side: room for a name
+_LEADING = 4.2   # mm between the two lines of a closing side's size broken after its comma
                   # between two lanes, nearer its own arrow than the next
 
 
@@ -169,15 +170,37 @@ def _in_lane(fig: Figure, a: tuple[float, float], b: tuple[float, float], lane: 
 
 def _place_reading(placer: LabelPlacer, at: tuple[float, float],
                    reading: tuple[str, str, str], side: tuple[float, float]) -> None:
-    """The closing side's size set clear of everything, beside ``at`` on ``side``."""
-    texts = _reading((0.0, 0.0), reading)
-    x0, y0, x1, y1 = _bounds(texts)
-    (cx, cy), _ = placer.spot(x1 - x0, y1 - y0, at, prefer=paper_angle(side), gap=1.6,
+    """The closing side's size set clear of everything, beside ``at`` on ``side``: on one
+    line, or broken after its comma where one line finds no clear spot (a long reading
+    by a steep closing side crosses the vectors beside it)."""
+    best = None
+    for texts in _readings(reading):
+        x0, y0, x1, y1 = _bounds(texts)
+        c, cost = placer.spot(x1 - x0, y1 - y0, at, prefer=paper_angle(side), gap=1.6,
                               rings=(1.0, 1.6, 2.3, 3.2, 4.5, 6.0, 8.5, 12.0, 17.0))
+        if best is None or cost < best[0] - 1e-9:
+            best = cost, c, texts, (x0, y0, x1, y1)
+        if cost <= 1e-9:
+            break
+    _, (cx, cy), texts, (x0, y0, x1, y1) = best
     dx, dy = cx - (x0 + x1) / 2, cy - (y0 + y1) / 2
     for t in texts:
         placer.fig.add(replace(t, at=(t.at[0] + dx, t.at[1] + dy)))
     placer.block_label((x0 + dx, y0 + dy, x1 + dx, y1 + dy))
+
+
+def _readings(reading: tuple[str, str, str]) -> list[list[Text]]:
+    """The closing side's size as one line, then, where its words have a comma, as two
+    lines broken after it, each centred."""
+    out = [_reading((0.0, 0.0), reading)]
+    text, sub, tail = reading
+    head, comma, rest = next(((text[:k], text[k], text[k + 1:]) for k, ch in enumerate(text)
+                              if ch in ",،"), ("", "", ""))
+    if comma and not sub and not tail:
+        lines = (head + comma, rest.strip())
+        out.append([Text((0.0, (k - 0.5) * _LEADING), line, 3.0, "middle", False, "normal")
+                    for k, line in enumerate(lines)])
+    return out
 
 
 def _bounds(texts: Sequence[Text]) -> tuple[float, float, float, float]:
