@@ -71,16 +71,20 @@ def test_the_space_diagram_beside_the_polygon_is_told_from_it(tmp_path):
 
 
 @pytest.mark.parametrize("anchor", ["start", "end"])
-def test_a_results_tables_column_is_no_label_of_the_sheet(tmp_path, anchor):
+@pytest.mark.parametrize("run_on", [(), (1, 2)])
+def test_a_results_tables_column_is_no_label_of_the_sheet(tmp_path, anchor, run_on):
     """A results table beside the drawing lists I₁₂, ω₃, I₁₃, … one under another at a
     steady pitch, flush left as an English page sets it or flush right (text-anchor end) as
     a right-to-left one does, where names of different widths start at different places:
     neither column is read as the space diagram's centres, so every centre is still graded
-    from the diagram and nothing is said to be near no point."""
+    from the diagram and nothing is said to be near no point. A row whose words run on
+    over a second line (``run_on``: the rows after which the next stands two pitches
+    down; the narrow table of a lone polygon's sheet) leaves its column a table's still."""
     sol = solve_positions(FOUR_BAR)[0]
     names = ["I₁₂", "ω₃", "I₁₃", "ω₄", "I₂₃", "α₃", "I₂₄", "α₄"]
-    table = "".join(f'<text x="200" y="{300 + 5.6 * k:.2f}" font-size="3.2" '
-                    f'text-anchor="{anchor}">{name}</text>' for k, name in enumerate(names))
+    rows = [k + sum(1 for r in run_on if r < k) for k in range(len(names))]
+    table = "".join(f'<text x="200" y="{300 + 5.6 * row:.2f}" font-size="3.2" '
+                    f'text-anchor="{anchor}">{name}</text>' for row, name in zip(rows, names))
     svg = _sheet((centres_drawing(sol), 0.0), (drawing(sol, Style()), 120.0), extra=table)
     g, items = _graded(tmp_path, svg, FOUR_BAR)
     assert len([n for n in items if n.startswith("I")]) >= 5

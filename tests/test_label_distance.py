@@ -108,15 +108,15 @@ def test_names_stand_by_their_arrows(name):
 
 
 def test_the_rolling_wheels_crowded_arrows_are_led_to():
-    """The wheel round a circle: where five arrows meet at m′, Aᵗ_M/P's name stands 13 mm
-    below it and A_M's 6 mm off its shaft; each is led to, from its own shaft short of the
-    head, and a leader crosses no name."""
+    """The wheel round a circle: where five arrows meet at m′, the short Aᵗ_M/C and Aᵗ_M/P
+    have their names set off below it; each is led to, from its own shaft short of the
+    head, and no leader crosses a name."""
     fig = _figures("wheel-round-circle")["worked"]
     named = {t.text + t.sub: t for t in fig.items if isinstance(t, Text)
              and t.owner is not None and len(t.owner) == 2 and isinstance(t.owner[0], tuple)}
     leaders = [LineString(p.points) for p in fig.items
                if isinstance(p, Path) and p.style == "plot_leader"]
-    for n in ("AᵗM/P", "AM"):
+    for n in ("AᵗM/C", "AᵗM/P"):
         shaft, label = LineString(named[n].owner), box(*named[n].box())
         assert label.distance(shaft) > NEAR
         (leader,) = [ln for ln in leaders if label.distance(ln) < TOUCH]

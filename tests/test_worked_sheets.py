@@ -15,7 +15,7 @@ from tarsim.constructions.narration import speaking
 from tarsim.exercises.catalog import load
 from tarsim.graphics.figure import Figure, Path
 from tarsim.graphics.fitting import DRAFTING
-from tarsim.graphics.linkages.worked_page import compose_worked_sheets
+from tarsim.graphics.linkages.worked_page import _draw_results, compose_worked_sheets
 from tarsim.graphics.paper import MARGIN, filled
 
 A4 = (210.0, 297.0)
@@ -164,3 +164,40 @@ def test_the_space_diagram_grows_into_the_room_beside_the_velocity_polygon(exerc
     (x0, y0, x1, y1) = first.bounds()
     assert x0 >= 0.0 and y0 >= 0.0 and x1 <= first.width and y1 <= first.height
     assert filled(first) >= 0.5
+
+
+def test_a_lone_polygon_is_drawn_bigger_above_a_table_whose_long_words_run_on():
+    # Before, the wheel round a circle's acceleration polygon stood at 1 cm = 500 mm/s²,
+    # 127 × 106 mm on a landscape sheet, the table under it: its 213 mm ("inspection
+    # (rolling contact: the contact point)") is wider than an upright A4 holds (190 mm).
+    # Now the table's long words run on over two lines and the polygon is drawn at
+    # 1 cm = 200 mm/s² above it, upright: 2.5 times as big, where its short arrows crowd.
+    first, second = worked("wheel-round-circle", "A4")
+    assert (second.width, second.height) == (210.0, 297.0)
+    assert _acceleration_scale(second) == 200.0
+    (x0, y0, x1, y1), = frames(second)
+    assert (x1 - x0) * (y1 - y0) / ((210.0 - 2 * MARGIN) * (297.0 - 2 * MARGIN)) >= 0.35
+    texts = [t for t in second.items if getattr(t, "text", "")]
+    broken = [t.text for t in texts if t.text.startswith("inspection (rolling")]
+    assert broken == ["inspection (rolling contact: the"]
+    assert any(t.text == "contact point)" for t in texts)
+    x0, y0, x1, y1 = second.bounds()
+    assert x0 >= 0.0 and y0 >= 0.0 and x1 <= second.width and y1 <= second.height
+
+
+def test_a_narrow_table_keeps_its_numbers_whole():
+    # The words of a method run on; a quantity's name and a column of numbers never do,
+    # and a run-on row leaves them blank.
+    table = [("quantity", "method", "relative error"),
+             ("V_B", "inspection (rolling contact: the contact point)", "1.2e-16"),
+             ("ω3", "velocity polygon", "4.4e-17")]
+    rows: dict[float, list[str]] = {}
+    for t in _draw_results(table, (), narrow=True).items:
+        if getattr(t, "text", ""):
+            rows.setdefault(round(t.at[1], 3), []).append(t.text + (t.sub or ""))
+    assert list(rows.values()) == [["quantity", "method", "relative error"],
+                                   ["VB", "inspection (rolling contact: the", "1.2e-16"],
+                                   ["contact point)"],
+                                   ["ω₃", "velocity polygon", "4.4e-17"]]
+    wide = _draw_results(table, ())
+    assert _draw_results(table, (), narrow=True).width < wide.width

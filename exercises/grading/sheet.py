@@ -78,7 +78,8 @@ def _rings(drawing: Drawing) -> dict[int, int]:
 
 def _table_columns(labels: list[Label]) -> set[int]:
     """Labels standing in a table's column: :data:`COLUMN` or more aligned one under
-    another at a steady pitch, as a results table lists its quantities: flush left, or
+    another at a steady pitch (or a few pitches, below a row whose words run on over more
+    lines), as a results table lists its quantities: flush left, or
     flush right as a right-to-left page sets them (its end read where the text is
     anchored, its letters' width taken off to find its start, and put back)."""
     by_x: dict[tuple[str, int], list[int]] = {}
@@ -89,16 +90,31 @@ def _table_columns(labels: list[Label]) -> set[int]:
     for column in by_x.values():
         column.sort(key=lambda k: labels[k].at[1])
         run = [column[0]] if column else []
+        row = 0.0           # the run's row pitch: its least step yet
         for a, b in zip(column, column[1:]):
             pitch = labels[b].at[1] - labels[a].at[1]
-            first = labels[run[1]].at[1] - labels[run[0]].at[1] if len(run) > 1 else pitch
-            if 0.0 < pitch <= 12.0 and abs(pitch - first) <= 0.05 * first:
+            steady = 0.0 < pitch <= _RUN_ON * 12.0 and (
+                not row or _rows(pitch, row) or _rows(row, pitch))
+            if steady:
                 run.append(b)
+                row = min(row, pitch) if row else pitch
             else:
                 out |= set(run) if len(run) >= COLUMN else set()
-                run = [b]
+                run, row = [b], 0.0
         out |= set(run) if len(run) >= COLUMN else set()
     return out
+
+
+_RUN_ON = 3
+"""The most lines a table's row runs on over (its words broken to keep the table narrow):
+its next quantity stands that many of the column's pitch below."""
+
+
+def _rows(step: float, pitch: float) -> bool:
+    """Whether ``step`` is a whole number of rows of ``pitch``, one to :data:`_RUN_ON`, to
+    within 5 % of a row."""
+    n = round(step / pitch)
+    return 1 <= n <= _RUN_ON and abs(step - n * pitch) <= 0.05 * pitch
 
 
 def _names_point(text: str, points: set[str]) -> bool:

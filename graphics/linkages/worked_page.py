@@ -44,6 +44,7 @@ _ROW = 5.6          # table row pitch, mm
 _PAD = 6.0          # white between table columns, mm
 _NOTE = 3.2         # note text size, mm
 _NOTE_WIDTH = 250.0  # the longest line of a note, mm: a long one runs on over lines
+_WORDS = 50.0       # the widest a table's words stand in a narrow table, mm
 
 Box = tuple[float, float, float, float]
 
@@ -140,34 +141,38 @@ def compose_worked_sheets(title: str, panels: Sequence[Figure], table: Sequence[
             at = next(i for i, p in enumerate(panels) if p is drawn[0])
             again = regrow[at] if at < len(regrow) else None
             if again is not None:
-                drawn, size = _regrown(again, drawn[0], results if last else None, sheet,
-                                       later, size)
+                shown = [results, _draw_results(table, notes, narrow=True)] if last else [None]
+                drawn, size, foot = _regrown(again, drawn[0], shown, sheet, later, size)
+                results = foot if last else results
         sheets.append(_sheet(title if not k else later, drawn, results if last else None,
                              size))
     return sheets
 
 
-def _regrown(again: Regrow, panel: Figure, results: Figure | None, sheet: tuple[float, float],
-             title: str, size: tuple[float, float]
-             ) -> tuple[list[Figure], tuple[float, float]]:
-    """A lone ``panel`` (with ``results`` beside or under it, if given) drawn ``again`` as
-    big as a sheet of ``sheet``, on its side or upright, holds it under ``title``: the
-    bigger of the two, or ``panel`` on its sheet of ``size`` where neither draws it
-    bigger."""
-    foot = (results.width, results.height) if results is not None else (0.0, 0.0)
-    best, at = panel, size
-    for each in ((max(sheet), min(sheet)), (min(sheet), max(sheet))):
+def _regrown(again: Regrow, panel: Figure, results: Sequence[Figure | None],
+             sheet: tuple[float, float], title: str, size: tuple[float, float]
+             ) -> tuple[list[Figure], tuple[float, float], Figure | None]:
+    """A lone ``panel`` (with the results beside or under it, if given: set as ``results``
+    offers, wide then narrow) drawn ``again`` as big as a sheet of ``sheet``, on its side
+    or upright, holds it under ``title``: the biggest, with the results it was held with,
+    or ``panel`` on its sheet of ``size`` with the first results where none draws it
+    bigger. An upright sheet narrower than a wide table may hold the panel drawn bigger
+    above the table with its long words run on over two lines."""
+    best, at, kept = panel, size, results[0]
+    for each, foot_fig in product(((max(sheet), min(sheet)), (min(sheet), max(sheet))),
+                                  results):
         room = _room(each, title)
+        foot = (foot_fig.width, foot_fig.height) if foot_fig is not None else (0.0, 0.0)
 
-        def holds(fig: Figure, room=room) -> bool:
+        def holds(fig: Figure, room=room, foot=foot) -> bool:
             _, (w, h) = _choose_layout([(fig.width, fig.height)], foot, room)
             return w <= room[0] + 1e-9 and h <= room[1] + 1e-9
 
         fig = again(holds)
         if holds(fig) and fig.width * fig.height > best.width * best.height + 1e-6 and \
                 labels_on_lines(fig) <= labels_on_lines(panel):
-            best, at = fig, each
-    return [best], at
+            best, at, kept = fig, each, foot_fig
+    return [best], at, kept
 
 
 def _balanced(groups: list[tuple[list[Figure], tuple[float, float]]],
@@ -375,7 +380,7 @@ def _cell(text: str, first: bool, bold: bool) -> Text:
 
 def _numeric(table: Sequence[Sequence[str]], k: int) -> bool:
     """Tell whether column ``k`` holds numbers (set flush right) rather than words."""
-    return k > 0 and all(row[k][:1] in _DIGITS and row[k] for row in table[1:])
+    return k > 0 and all(row[k][:1] in _DIGITS and row[k] for row in table[1:] if row[0])
 
 
 _DIGITS = "0123456789۰۱۲۳۴۵۶۷۸۹-−+."
@@ -389,8 +394,12 @@ def _column_widths(table: Sequence[Sequence[str]]) -> list[float]:
             for k in range(len(table[0]))]
 
 
-def _draw_results(table: Sequence[Sequence[str]], notes: Sequence[str]) -> Figure:
-    """Draw the results table and the notes under it as a figure of their own (origin top-left)."""
+def _draw_results(table: Sequence[Sequence[str]], notes: Sequence[str],
+                  narrow: bool = False) -> Figure:
+    """Draw the results table and the notes under it as a figure of their own (origin
+    top-left); ``narrow``, its long words run on over lines (:func:`_narrowed`)."""
+    if narrow:
+        table = _narrowed(table)
     fig = Figure(0.0, 0.0)
     y = _draw_table(fig, table, (0.0, 0.5 * _ROW)) + (2.0 if notes else 0.0) if table else 0.0
     lines = [line for note in notes
@@ -405,6 +414,31 @@ def _draw_results(table: Sequence[Sequence[str]], notes: Sequence[str]) -> Figur
         y += 1.4 * _NOTE
     fig.height = y
     return fig
+
+
+def _narrowed(table: Sequence[Sequence[str]]) -> list[list[str]]:
+    """``table`` with each word cell wider than :data:`_WORDS` run on over the rows after
+    its own, broken between words (a method's "(rolling contact: the contact point)"); the
+    quantity and the columns of numbers are never broken."""
+    out = [list(table[0])]
+    for row in table[1:]:
+        runs = [[text] if k == 0 or _numeric(table, k) or _cell(text, False, False).width
+                <= _WORDS else _broken(text) for k, text in enumerate(row)]
+        out += [[run[j] if j < len(run) else "" for run in runs]
+                for j in range(max(map(len, runs)))]
+    return out
+
+
+def _broken(text: str) -> list[str]:
+    """``text`` broken between words into lines no wider than :data:`_WORDS` where it can
+    be (a word wider stands alone)."""
+    lines: list[str] = []
+    for word in text.split(" "):
+        if lines and _cell(f"{lines[-1]} {word}", False, False).width <= _WORDS:
+            lines[-1] += f" {word}"
+        else:
+            lines.append(word)
+    return lines
 
 
 def _draw_table(page: Figure, table: Sequence[Sequence[str]], at: tuple[float, float]) -> float:
