@@ -107,6 +107,23 @@ def test_names_stand_by_their_arrows(name):
             f"{name}/{stem}"
 
 
+@pytest.mark.parametrize("name", list(bundled()))
+def test_no_leader_crosses_another_name(name):
+    """A leader runs from what a name names to that name, crossing no other: not another
+    point's or arrow's name, nor its own name's second part ("Aⁿ_A₂ = A_A₂", whose leader
+    ran through "= A_A₂" on the crank-shaper's θ₂ = 90° page)."""
+    for stem, fig in _figures(name).items():
+        texts = [(t.text + t.sub, box(*t.box())) for t in fig.items
+                 if isinstance(t, Text) and t.text.strip()]
+        for p in fig.items:
+            if not (isinstance(p, Path) and p.style == "plot_leader"):
+                continue
+            ln = LineString(p.points)
+            own = min(texts, key=lambda tb: min(tb[1].distance(Point(e)) for e in p.points))
+            crossed = [n for n, b in texts if b is not own[1] and ln.intersection(b).length > 0.05]
+            assert crossed == [], (f"{name}/{stem}", own[0], crossed)
+
+
 def test_the_rolling_wheels_crowded_arrows_are_led_to():
     """The wheel round a circle: where five arrows meet at m′, the short Aᵗ_M/C and Aᵗ_M/P
     have their names set off below it; each is led to, from its own shaft short of the

@@ -201,3 +201,17 @@ def test_a_narrow_table_keeps_its_numbers_whole():
                                    ["ω₃", "velocity polygon", "4.4e-17"]]
     wide = _draw_results(table, ())
     assert _draw_results(table, (), narrow=True).width < wide.width
+
+
+def test_the_crank_shapers_collapsed_polygon_at_90_degrees_is_drawn_upright_and_bigger():
+    # Its acceleration polygon lies on one line (θ₂ = 90°), alone on the second sheet.
+    # Before, drawn again bigger, the leader to "Aⁿ_A₂ = A_A₂" ran through its "= A_A₂",
+    # one more label over a line than the smaller drawing had, so the sheet kept the
+    # polygon at 1 cm = 20 mm/s², a quarter of a landscape sheet. Now the leader passes
+    # its own name's parts and the polygon is drawn upright at 1 cm = 10 mm/s².
+    sheets = solve(load("crank-shaper")).figures["worked-theta2-90"].sheets
+    second = sheets[1]
+    assert (second.width, second.height) == (210.0, 297.0)
+    assert _acceleration_scale(second) == 10.0
+    (x0, y0, x1, y1), = frames(second)
+    assert (y1 - y0) >= 0.8 * (297.0 - 2 * MARGIN)

@@ -132,10 +132,11 @@ def lead_last_to_shaft(fig: Figure, placer: LabelPlacer, shaft: tuple[tuple[floa
     """Lead to its arrow the name of ``shaft`` set among ``fig``'s items from ``since`` on
     (:func:`lead_to_shaft`), where one was set: the first text there that names a thing."""
     name = next((t for t in fig.items[since:] if isinstance(t, Text) and t.owner), None)
-    if name is not None:
-        badges = [SPoint(c.centre).buffer(c.radius) for c in fig.items[since:]
-                  if isinstance(c, Circle)]
-        lead_to_shaft(fig, placer, shaft, name, avoid=badges, claimed=_claims(fig))
+    if name is not None:    # past its own step numbers and the names after it ("= A_A₂")
+        own = [SPoint(c.centre).buffer(c.radius) for c in fig.items[since:]
+               if isinstance(c, Circle)]
+        own += [box(*t.box()) for t in fig.items[since:] if isinstance(t, Text) and t is not name]
+        lead_to_shaft(fig, placer, shaft, name, avoid=own, claimed=_claims(fig))
 
 
 def _claims(fig: Figure) -> list:
