@@ -204,11 +204,11 @@ def test_a_narrow_table_keeps_its_numbers_whole():
 
 
 def test_the_crank_shapers_collapsed_polygon_at_90_degrees_is_drawn_upright_and_bigger():
-    # Its acceleration polygon lies on one line (θ₂ = 90°), alone on the second sheet.
-    # Before, drawn again bigger, the leader to "Aⁿ_A₂ = A_A₂" ran through its "= A_A₂",
-    # one more label over a line than the smaller drawing had, so the sheet kept the
-    # polygon at 1 cm = 20 mm/s², a quarter of a landscape sheet. Now the leader passes
-    # its own name's parts and the polygon is drawn upright at 1 cm = 10 mm/s².
+    # Its acceleration polygon lies on one line (θ₂ = 90°), alone on the second sheet,
+    # drawn again bigger. A leader to "Aⁿ_A₂ = A_A₂" that ran through its own "= A_A₂"
+    # would be one more label over a line than the smaller drawing has, and the sheet
+    # would keep the polygon at 1 cm = 20 mm/s², a quarter of a landscape sheet: the
+    # leader passes its own name's parts, and the polygon stands upright at 10 mm/s².
     sheets = solve(load("crank-shaper")).figures["worked-theta2-90"].sheets
     second = sheets[1]
     assert (second.width, second.height) == (210.0, 297.0)
