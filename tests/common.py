@@ -7,9 +7,14 @@ CCW-positive from +x.
 
 from __future__ import annotations
 
+from pathlib import Path
+
+from click.testing import CliRunner
+
 from tarsim.constructions.joints import Slide, SlideKind
 from tarsim.constructions.model import Drive, Link, Mechanism
 from tarsim.constructions.units import Units
+from tarsim.exercises.cli import cli
 from tarsim.graphics.figure import Circle, Text
 
 __all__ = ["four_bar", "offset_slider_crank", "crank_shaper", "slotted_lever_p37", "scotch_yoke"]
@@ -177,3 +182,11 @@ def badge_numbers(fig) -> list[int]:
     """The circled step numbers on a figure, in ascending order."""
     centres = [it.centre for it in fig.items if isinstance(it, Circle) and it.style == "badge"]
     return sorted(int(t.text) for t in fig.items if isinstance(t, Text) and t.at in centres)
+
+
+def written_view(page: Path, step: str, exercise: str = "crank-shaper") -> Path:
+    """``page``, the page ``tarsim view EXERCISE --step STEP`` writes there, as a user
+    would write it; the command must succeed."""
+    result = CliRunner().invoke(cli, ["view", exercise, "--step", step, "-o", str(page)])
+    assert result.exit_code == 0, result.output
+    return page

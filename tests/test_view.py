@@ -30,7 +30,7 @@ from tarsim.exercises.linkages.view_figures import solved_at
 from tarsim.graphics.paper import paper, room
 from tarsim.graphics.view_page import ViewPage, view_html
 
-from tests.common import four_bar_toml
+from tests.common import four_bar_toml, written_view
 from tests.figure_leaves import PAGE_LEAVES, SVG, as_tuples, svg_leaves
 
 # One worker runs the whole file (--dist loadfile), so chromium is opened and the pages
@@ -43,10 +43,7 @@ def shaper(tmp_path_factory, solved):
     """The crank-shaper's page written by the command, a frame every 2.5° (every angle the
     tests turn to; the default 0.5° is the notebook test's), and its steps.md as `tarsim
     solve` writes it, in both languages."""
-    out = tmp_path_factory.mktemp("view")
-    page = out / "shaper.html"
-    result = CliRunner().invoke(cli, ["view", "crank-shaper", "--step", "2.5", "-o", str(page)])
-    assert result.exit_code == 0, result.output
+    page = written_view(tmp_path_factory.mktemp("view") / "shaper.html", "2.5")
     worked = solved("crank-shaper")
     return page, {lang: worked.steps(lang) for lang in ("en", "fa")}
 

@@ -18,6 +18,7 @@ from click.testing import CliRunner
 
 from tarsim.exercises.cli import cli
 
+from tests.common import written_view
 from tests.figure_leaves import SVG
 
 pytestmark = pytest.mark.slow
@@ -28,9 +29,7 @@ def made(tmp_path_factory):
     """The crank-shaper's page, a frame every 2.5°, and its results.json as `tarsim solve`
     writes it."""
     out = tmp_path_factory.mktemp("controls")
-    page = out / "shaper.html"
-    result = CliRunner().invoke(cli, ["view", "crank-shaper", "--step", "2.5", "-o", str(page)])
-    assert result.exit_code == 0, result.output
+    page = written_view(out / "shaper.html", "2.5")
     result = CliRunner().invoke(cli, ["solve", "crank-shaper", "--no-pdf", "-o", str(out / "s")])
     assert result.exit_code == 0, result.output
     return page, json.loads((out / "s" / "results.json").read_text(encoding="utf-8"))

@@ -5,9 +5,8 @@ at its spaces, at any width of the list, in a real browser (Debian's chromium)."
 from __future__ import annotations
 
 import pytest
-from click.testing import CliRunner
 
-from tarsim.exercises.cli import cli
+from tests.common import written_view
 
 _BROKEN = """() => {
   const out = [], pick = document.querySelector('#figure');
@@ -26,10 +25,7 @@ _BROKEN = """() => {
 
 @pytest.fixture(scope="module")
 def shaper(tmp_path_factory):
-    out = tmp_path_factory.mktemp("view") / "shaper.html"
-    result = CliRunner().invoke(cli, ["view", "crank-shaper", "--step", "10", "-o", str(out)])
-    assert result.exit_code == 0, result.output
-    return out
+    return written_view(tmp_path_factory.mktemp("view") / "shaper.html", "10")
 
 
 @pytest.mark.slow

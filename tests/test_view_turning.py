@@ -13,13 +13,13 @@ import re
 from dataclasses import replace
 
 import pytest
-from click.testing import CliRunner
 
 from tarsim.exercises.catalog import load
-from tarsim.exercises.cli import cli
 from tarsim.exercises.linkages.solution import solve_positions
 from tarsim.exercises.linkages.view_figures import solved_at
 from tarsim.graphics.paper import paper, room
+
+from tests.common import written_view
 
 pytestmark = pytest.mark.slow
 
@@ -35,10 +35,7 @@ laid off at B."""
 @pytest.fixture(scope="module")
 def shaper(tmp_path_factory):
     """The crank-shaper's page as the command writes it, a frame every 2.5°."""
-    page = tmp_path_factory.mktemp("turning") / "shaper.html"
-    result = CliRunner().invoke(cli, ["view", "crank-shaper", "--step", "2.5", "-o", str(page)])
-    assert result.exit_code == 0, result.output
-    return page
+    return written_view(tmp_path_factory.mktemp("turning") / "shaper.html", "2.5")
 
 
 @pytest.fixture()
