@@ -30,8 +30,8 @@ _ROOM = 120.0     # paper (mm) the polygon's or view's extent is fitted to
 _REFERENCE_PAST = 8.0   # mm the 0° radius runs past a mass's circle that lies along it
 _MASS = 1.6       # radius (mm) of a mass's circle in the end view
 _LANE = 6.0       # mm between vectors on one line drawn side by side: room for a name
-_LEADING = 4.2   # mm between the two lines of a closing side's size broken after its comma
                   # between two lanes, nearer its own arrow than the next
+_LEADING = 4.2    # mm between the two lines of a closing side's size broken after its comma
 
 
 def draw_polygon(c: Construction, tips: Sequence[tuple[str, Ref]], closing: Ref, title: str,
