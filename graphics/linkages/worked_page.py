@@ -418,27 +418,16 @@ def _draw_results(table: Sequence[Sequence[str]], notes: Sequence[str],
 
 def _narrowed(table: Sequence[Sequence[str]]) -> list[list[str]]:
     """``table`` with each word cell wider than :data:`_WORDS` run on over the rows after
-    its own, broken between words (a method's "(rolling contact: the contact point)"); the
-    quantity and the columns of numbers are never broken."""
+    its own, broken between words, never inside a formula (a method's "(rolling contact:
+    the contact point)"); the quantity and the columns of numbers are never broken."""
     out = [list(table[0])]
     for row in table[1:]:
-        runs = [[text] if k == 0 or _numeric(table, k) or _cell(text, False, False).width
-                <= _WORDS else _broken(text) for k, text in enumerate(row)]
+        runs = [[text] if k == 0 or _numeric(table, k) else
+                wrap_formulas(text, _CELL, _WORDS, measure=lambda t: _cell(t, False, False).width)
+                for k, text in enumerate(row)]
         out += [[run[j] if j < len(run) else "" for run in runs]
                 for j in range(max(map(len, runs)))]
     return out
-
-
-def _broken(text: str) -> list[str]:
-    """``text`` broken between words into lines no wider than :data:`_WORDS` where it can
-    be (a word wider stands alone)."""
-    lines: list[str] = []
-    for word in text.split(" "):
-        if lines and _cell(f"{lines[-1]} {word}", False, False).width <= _WORDS:
-            lines[-1] += f" {word}"
-        else:
-            lines.append(word)
-    return lines
 
 
 def _draw_table(page: Figure, table: Sequence[Sequence[str]], at: tuple[float, float]) -> float:
